@@ -1,0 +1,289 @@
+/*
+ * NavLink: engine-agnostic navigation with generated jump and drop links.
+ *
+ * The one C header a host includes. It compiles as C11 and as C++; every type is blittable
+ * (fixed-width integers, floats, pointers), so C#, Rust and Python bind it as is.
+ *
+ * Conventions (docs/c-api.md explains them with examples):
+ * - Functions return an nl_status. On failure they write nothing to their outputs, change no state,
+ *   and leave a message naming the failing argument in the calling thread's last error
+ *   (nl_get_last_error_message) and, if the world has one, pass it to the world's log callback.
+ * - Objects are referred to by ids passed by value: {index1, generation}; the all-zero id is null.
+ *   An id whose object was removed is stale: using it returns NL_STATUS_INVALID_HANDLE, never crashes.
+ * - Input pointers are borrowed for the duration of the call and copied where NavLink keeps the
+ *   data; output pointers are caller-owned buffers. Each function says which.
+ * - Unless a function says otherwise, all functions that take a world are safe to call from several
+ *   threads at once on the same world; nl_world_destroy must not race with any other call on it.
+ * - Structs that may grow start with `uint32_t size`; fill them from the nl_default_*_def()
+ *   functions, which set it, then change the fields you need.
+ */
+#ifndef NAVLINK_NAVLINK_H
+#define NAVLINK_NAVLINK_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "navlink/export.h"
+#include "navlink/version.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* ---------------------------------------------------------------------------------------------
+ * Version
+ * ------------------------------------------------------------------------------------------- */
+
+/** Semantic version of the library. */
+typedef struct nl_version {
+    int32_t major;
+    int32_t minor;
+    int32_t patch;
+} nl_version;
+
+/** The version of the loaded library; equals NL_VERSION_MAJOR/MINOR/PATCH of the header it was
+ *  built with. A host compares it with its own header's macros to detect a mismatched library.
+ *  Thread-safe; never fails. */
+NL_API nl_version nl_get_version(void);
+
+/* ---------------------------------------------------------------------------------------------
+ * Status
+ *
+ * A status has a kind part (success, failure, in progress) in the top bits and detail bits below,
+ * as Detour's dtStatus: a success may carry NL_STATUS_PARTIAL_RESULT, a failure carries the reason.
+ * ------------------------------------------------------------------------------------------- */
+
+typedef uint32_t nl_status;
+
+#define NL_STATUS_FAILURE 0x80000000u     /**< The call failed; the detail bits say why. */
+#define NL_STATUS_SUCCESS 0x40000000u     /**< The call succeeded. */
+#define NL_STATUS_IN_PROGRESS 0x20000000u /**< Work was accepted and is not finished yet. */
+#define NL_STATUS_DETAIL_MASK 0x0fffffffu
+
+#define NL_STATUS_INVALID_ARGUMENT 0x00000001u /**< An argument is null, out of range or not finite. */
+#define NL_STATUS_INVALID_HANDLE 0x00000002u   /**< An id is null, stale, or from another world. */
+#define NL_STATUS_BUFFER_TOO_SMALL 0x00000004u /**< An output buffer is too small; the count says how many were needed. */
+#define NL_STATUS_OUT_OF_MEMORY 0x00000008u    /**< An allocation failed; nothing was changed. */
+#define NL_STATUS_CANCELLED 0x00000010u        /**< The work was cancelled by the host. */
+#define NL_STATUS_PARTIAL_RESULT 0x00000020u   /**< Success with a result that is not complete. */
+#define NL_STATUS_NOT_FOUND 0x00000040u        /**< The thing asked for does not exist (a file, a point on a mesh). */
+#define NL_STATUS_INTERNAL_ERROR 0x00000080u   /**< A bug or a failure inside a dependency; please report it. */
+#define NL_STATUS_IO_ERROR 0x00000100u         /**< A file could not be read or written. */
+#define NL_STATUS_PARSE_ERROR 0x00000200u      /**< A file or string is malformed (OBJ, JSON). */
+#define NL_STATUS_VERSION_MISMATCH 0x00000400u /**< A plugin or file version is not supported. */
+
+/** Nonzero if the status is a success (possibly with detail bits such as PARTIAL_RESULT). */
+#define NL_SUCCEEDED(status) (((status) & NL_STATUS_SUCCESS) != 0u)
+/** Nonzero if the status is a failure. */
+#define NL_FAILED(status) (((status) & NL_STATUS_FAILURE) != 0u)
+
+/** A short static English description of a status, e.g. "failure: invalid argument".
+ *  The string is owned by the library and lives as long as it is loaded. Thread-safe. */
+NL_API const char* nl_status_string(nl_status status);
+
+/** The status returned by the most recent nl_* call on the calling thread (nl_status_string,
+ *  nl_get_version and these two functions excluded). Thread-safe; the record is per thread. */
+NL_API nl_status nl_get_last_status(void);
+
+/** The message of the most recent nl_* call on the calling thread: empty if it succeeded, else one
+ *  line naming the function and the failing argument, e.g.
+ *  "nl_mesh_add: def->indices[7] = 120 is out of range (vertex_count = 64)".
+ *  Borrowed: valid until the next nl_* call on this thread. Never null. Thread-safe. */
+NL_API const char* nl_get_last_error_message(void);
+
+/* ---------------------------------------------------------------------------------------------
+ * World: the root object. It owns everything; no globals.
+ * ------------------------------------------------------------------------------------------- */
+
+typedef struct nl_world nl_world;
+
+/** Log levels passed to the log callback. */
+typedef uint32_t nl_log_level;
+#define NL_LOG_ERROR 0u
+#define NL_LOG_WARNING 1u
+#define NL_LOG_INFO 2u
+#define NL_LOG_DEBUG 3u
+
+/** A log callback. `message` is borrowed for the duration of the call. It is called on the thread
+ *  that made the failing call, which may be any host thread or a NavLink worker: it must be
+ *  thread-safe and must not call back into the same world. */
+typedef void nl_log_fn(void* user, nl_log_level level, nl_status status, const char* message);
+
+/** Pass as worker_count to use one worker per hardware thread. */
+#define NL_WORKERS_AUTO (-1)
+
+/** How to create a world. Get one from nl_default_world_def(). */
+typedef struct nl_world_def {
+    uint32_t size;           /**< sizeof(nl_world_def); set by nl_default_world_def(). */
+    int32_t worker_count;    /**< Threads NavLink may use for batch work, the calling thread
+                                  included. NL_WORKERS_AUTO (default): one per hardware thread;
+                                  0 or 1: everything runs on the calling thread. */
+    nl_log_fn* log_fn;       /**< Optional. Receives every error (and, by log_level, more). */
+    void* log_user;          /**< Passed back to log_fn as `user`; borrowed, never dereferenced. */
+    nl_log_level log_level;  /**< Most verbose level passed to log_fn. Default NL_LOG_WARNING. */
+} nl_world_def;
+
+/** A def with every field at its default. Thread-safe; never fails. */
+NL_API nl_world_def nl_default_world_def(void);
+
+/** Creates a world. `def` is borrowed (NULL means all defaults); `*out_world` receives the new world,
+ *  owned by the caller until nl_world_destroy.
+ *  Returns NL_STATUS_SUCCESS, or a failure with INVALID_ARGUMENT (null out_world, size of def too
+ *  small, worker_count < -1), OUT_OF_MEMORY or INTERNAL_ERROR (Embree could not start).
+ *  Thread-safe. */
+NL_API nl_status nl_world_create(const nl_world_def* def, nl_world** out_world);
+
+/** Destroys a world and everything it owns; every id from it becomes invalid. NULL is ignored.
+ *  Must not run at the same time as any other call on this world. */
+NL_API void nl_world_destroy(nl_world* world);
+
+/** The number of threads the world uses for batch work (1 when everything runs on the caller).
+ *  Returns 0 for a null world. Thread-safe. */
+NL_API int32_t nl_world_get_worker_count(const nl_world* world);
+
+/* ---------------------------------------------------------------------------------------------
+ * Level geometry: collision meshes the world queries with rays (held in an Embree scene).
+ * ------------------------------------------------------------------------------------------- */
+
+/** A registered mesh. Zero-initialised is the null id. */
+typedef struct nl_mesh_id {
+    uint32_t index1;     /**< Slot index + 1; 0 means null. */
+    uint32_t generation; /**< Incremented each time the slot is reused. */
+} nl_mesh_id;
+
+/** Mesh flags. */
+#define NL_MESH_MOVABLE 0x00000001u /**< The mesh will move: it is held as an Embree instance, so
+                                         nl_mesh_set_transform costs a refit of the top level only.
+                                         Without it a transform change re-uploads the vertices. */
+
+/** Describes a triangle mesh to register. Get one from nl_default_mesh_def(). */
+typedef struct nl_mesh_def {
+    uint32_t size;                 /**< sizeof(nl_mesh_def); set by nl_default_mesh_def(). */
+    const float* vertices;         /**< vertex_count positions, x y z floats each; borrowed. */
+    uint32_t vertex_count;
+    uint32_t vertex_stride;        /**< Bytes from one vertex to the next; 0 means 12 (packed). */
+    const uint32_t* indices;       /**< triangle_count * 3 vertex indices; borrowed. */
+    uint32_t triangle_count;
+    uint32_t flags;                /**< NL_MESH_* flags. */
+    const float* transform;        /**< Optional 4x4 affine matrix, 16 floats, column-major
+                                        (translation in elements 12, 13, 14); NULL = identity. Borrowed. */
+    uint64_t user_data;            /**< Returned by nl_mesh_get_info; never interpreted. */
+} nl_mesh_def;
+
+/** A def with no geometry, identity transform and no flags. Thread-safe; never fails. */
+NL_API nl_mesh_def nl_default_mesh_def(void);
+
+/** Registers a triangle mesh. Vertices, indices and transform are copied: the caller's arrays may be
+ *  freed when the call returns. Triangles with repeated indices or (almost) zero area are skipped and
+ *  counted (nl_mesh_info.degenerate_triangle_count); everything else about the input must be valid or
+ *  nothing is registered. `*out_id` receives the id.
+ *  Returns SUCCESS, or a failure with INVALID_ARGUMENT (null pointer, zero counts, a stride below 12,
+ *  a non-finite coordinate, an index out of range, a non-affine or singular transform, unknown
+ *  flags, every triangle degenerate), OUT_OF_MEMORY or INTERNAL_ERROR.
+ *  Thread-safe; waits for ray queries in flight on this world to finish. */
+NL_API nl_status nl_mesh_add(nl_world* world, const nl_mesh_def* def, nl_mesh_id* out_id);
+
+/** Loads a Wavefront OBJ file (positions and faces; polygons are fan-triangulated; Y is up; other
+ *  statements are ignored) and registers it as one mesh. `path` is a borrowed NUL-terminated UTF-8
+ *  path. `def` is optional (NULL = defaults): its flags, transform and user_data apply; its vertex
+ *  and index fields must be empty.
+ *  Returns SUCCESS, or a failure with INVALID_ARGUMENT, NOT_FOUND | IO_ERROR (cannot open),
+ *  PARSE_ERROR (malformed file, with the line), OUT_OF_MEMORY or INTERNAL_ERROR.
+ *  Thread-safe, as nl_mesh_add. */
+NL_API nl_status nl_mesh_add_obj_file(nl_world* world, const char* path, const nl_mesh_def* def,
+                                      nl_mesh_id* out_id);
+
+/** As nl_mesh_add_obj_file, from `length` bytes of OBJ text in memory (borrowed, not necessarily
+ *  NUL-terminated). */
+NL_API nl_status nl_mesh_add_obj_memory(nl_world* world, const char* data, size_t length,
+                                        const nl_mesh_def* def, nl_mesh_id* out_id);
+
+/** Removes a mesh. Returns SUCCESS, or INVALID_HANDLE for a null or stale id.
+ *  Thread-safe; waits for ray queries in flight on this world to finish. */
+NL_API nl_status nl_mesh_remove(nl_world* world, nl_mesh_id mesh);
+
+/** Moves a mesh: `transform` (16 floats, column-major, affine, invertible; borrowed) replaces the
+ *  mesh's transform. Cheap for NL_MESH_MOVABLE meshes; otherwise the vertices are re-uploaded.
+ *  Returns SUCCESS, or INVALID_HANDLE, or INVALID_ARGUMENT (null, non-finite, non-affine, singular).
+ *  Thread-safe; waits for ray queries in flight on this world to finish. */
+NL_API nl_status nl_mesh_set_transform(nl_world* world, nl_mesh_id mesh, const float* transform);
+
+/** Nonzero if `mesh` refers to a mesh registered in `world` and not removed. Thread-safe. */
+NL_API int32_t nl_mesh_is_valid(const nl_world* world, nl_mesh_id mesh);
+
+/** What a registered mesh holds. */
+typedef struct nl_mesh_info {
+    uint32_t size;                      /**< Set by the caller to sizeof(nl_mesh_info). */
+    uint32_t vertex_count;
+    uint32_t triangle_count;            /**< Triangles kept (degenerate ones excluded). */
+    uint32_t degenerate_triangle_count; /**< Triangles skipped as degenerate. */
+    uint32_t flags;
+    float transform[16];                /**< Column-major. */
+    float bounds_min[3];                /**< World-space bounds under the current transform. */
+    float bounds_max[3];
+    uint64_t user_data;
+} nl_mesh_info;
+
+/** Fills `*out_info` (caller-owned; its `size` field must be set to sizeof(nl_mesh_info)).
+ *  Returns SUCCESS, INVALID_HANDLE or INVALID_ARGUMENT. Thread-safe. */
+NL_API nl_status nl_mesh_get_info(const nl_world* world, nl_mesh_id mesh, nl_mesh_info* out_info);
+
+/** Lists the ids of all registered meshes into `out_ids` (caller-owned, `capacity` entries; may be
+ *  NULL when capacity is 0). `*out_count` receives the number of meshes in every case, so a first call
+ *  with capacity 0 sizes the buffer. Returns SUCCESS, or a failure with BUFFER_TOO_SMALL (nothing is
+ *  written to out_ids) or INVALID_ARGUMENT. Thread-safe. */
+NL_API nl_status nl_world_get_meshes(const nl_world* world, nl_mesh_id* out_ids, uint32_t capacity,
+                                     uint32_t* out_count);
+
+/* ---------------------------------------------------------------------------------------------
+ * Ray queries, in batches, parallel over the world's workers.
+ * ------------------------------------------------------------------------------------------- */
+
+/** A ray from `origin` along `direction` (any nonzero length; normalised internally), up to
+ *  `max_distance` metres (> 0; INFINITY allowed). */
+typedef struct nl_ray {
+    float origin[3];
+    float direction[3];
+    float max_distance;
+} nl_ray;
+
+/** The closest hit of a ray. */
+typedef struct nl_ray_hit {
+    float distance;      /**< Metres from the origin along the normalised direction. */
+    float point[3];      /**< World-space hit point. */
+    float normal[3];     /**< Unit geometric normal in world space, by the triangle's winding
+                              (counter-clockwise = front); not flipped toward the ray. */
+    nl_mesh_id mesh;     /**< The mesh hit. */
+    uint32_t triangle;   /**< Index of the triangle in the mesh's input (before degenerate ones
+                              were skipped). */
+    uint8_t hit;         /**< 1 if the ray hit something; else 0 and the other fields are zero. */
+    uint8_t reserved[3];
+} nl_ray_hit;
+
+/** Casts `count` rays and writes the closest hit of each to `out_hits` (caller-owned, `count`
+ *  entries). `rays` is borrowed. count == 0 succeeds and writes nothing.
+ *  Returns SUCCESS, or INVALID_ARGUMENT (null pointer; a ray with a non-finite origin, a zero or
+ *  non-finite direction, or max_distance <= 0 or NaN: its index is named, nothing is written).
+ *  Thread-safe: many threads may query at once; mesh edits wait for queries in flight. */
+NL_API nl_status nl_world_cast_rays(nl_world* world, const nl_ray* rays, uint32_t count,
+                                    nl_ray_hit* out_hits);
+
+/** A straight segment between two points. */
+typedef struct nl_segment {
+    float from[3];
+    float to[3];
+} nl_segment;
+
+/** Tests `count` segments for any geometry between their ends (occlusion) and writes 1 (blocked)
+ *  or 0 (clear) per segment to `out_blocked` (caller-owned, `count` bytes). A zero-length segment
+ *  is clear. `segments` is borrowed.
+ *  Returns SUCCESS, or INVALID_ARGUMENT (null pointer, a non-finite coordinate: its index is named).
+ *  Thread-safe, as nl_world_cast_rays. */
+NL_API nl_status nl_world_segments_blocked(nl_world* world, const nl_segment* segments,
+                                           uint32_t count, uint8_t* out_blocked);
+
+#ifdef __cplusplus
+} /* extern "C" */
+#endif
+
+#endif /* NAVLINK_NAVLINK_H */

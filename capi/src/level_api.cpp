@@ -1,0 +1,216 @@
+#include <cmath>
+#include <cstring>
+#include <vector>
+
+#include "entry_guard.h"
+#include "io/obj_reader.h"
+#include "world.h"
+
+using nl::ErrorCode;
+using nl::fail;
+using nl::capi::deref;
+using nl::capi::guarded;
+using nl::capi::require;
+
+namespace {
+
+nl::Handle to_handle(nl_mesh_id id) { return nl::Handle{id.index1, id.generation}; }
+nl_mesh_id to_id(nl::Handle h) { return nl_mesh_id{h.index1, h.generation}; }
+
+nl::Transform read_transform(const float* m, const char* name) {
+    if (!m) return nl::Transform::Identity();
+    return nl::validate_transform(Eigen::Map<const Eigen::Matrix4f>(m), name);
+}
+
+// Checks the def's envelope; fields that hold geometry are checked by the caller that reads them.
+void check_def(const nl_mesh_def* def) {
+    if (def) nl::capi::require_size(def->size, sizeof(nl_mesh_def), "def");
+}
+
+nl::TriangleMesh read_def_geometry(const nl_mesh_def& def) {
+    require(def.vertices, "def->vertices");
+    require(def.indices, "def->indices");
+    if (def.vertex_count == 0) fail(ErrorCode::InvalidArgument, "def->vertex_count is 0");
+    if (def.triangle_count == 0) fail(ErrorCode::InvalidArgument, "def->triangle_count is 0");
+    const uint32_t stride = def.vertex_stride == 0 ? 3 * sizeof(float) : def.vertex_stride;
+    if (stride < 3 * sizeof(float))
+        fail(ErrorCode::InvalidArgument, "def->vertex_stride is ", def.vertex_stride, " (at least 12 bytes, or 0)");
+
+    nl::TriangleMesh mesh;
+    mesh.vertices.resize(def.vertex_count);
+    const auto* bytes = reinterpret_cast<const unsigned char*>(def.vertices);
+    for (uint32_t i = 0; i < def.vertex_count; ++i) {
+        float xyz[3];
+        std::memcpy(xyz, bytes + size_t(i) * stride, sizeof xyz);  // the host's stride need not keep floats aligned
+        mesh.vertices[i] = nl::Vec3(xyz[0], xyz[1], xyz[2]);
+    }
+    mesh.triangles.resize(def.triangle_count);
+    std::memcpy(mesh.triangles.data(), def.indices, size_t(def.triangle_count) * 3 * sizeof(uint32_t));
+    return mesh;
+}
+
+nl_mesh_id add_mesh(nl_world& world, const nl::TriangleMesh& mesh, const nl_mesh_def& def) {
+    const nl::Transform transform = read_transform(def.transform, "def->transform");
+    return to_id(world.level->add_mesh(mesh, transform, def.flags, def.user_data));
+}
+
+// Options of an OBJ load: the def without geometry.
+nl_mesh_def obj_options(const nl_mesh_def* def) {
+    check_def(def);
+    if (!def) return nl_default_mesh_def();
+    if (def->vertices || def->indices || def->vertex_count || def->triangle_count)
+        fail(ErrorCode::InvalidArgument, "def carries geometry; for an OBJ load only flags, transform and user_data apply");
+    return *def;
+}
+
+void write(nl_ray_hit& out, const nl::RayHit& hit) {
+    out = nl_ray_hit{};
+    if (!hit.hit) return;
+    out.hit = 1;
+    out.distance = hit.distance;
+    Eigen::Map<nl::Vec3>(out.point) = hit.point;
+    Eigen::Map<nl::Vec3>(out.normal) = hit.normal;
+    out.mesh = to_id(hit.mesh);
+    out.triangle = hit.triangle;
+}
+
+nl::Vec3 finite_point(const float* p, const char* array, uint32_t index, const char* field) {
+    const nl::Vec3 v(p[0], p[1], p[2]);
+    if (!v.allFinite()) fail(ErrorCode::InvalidArgument, array, "[", index, "].", field, " is not finite");
+    return v;
+}
+
+}  // namespace
+
+extern "C" {
+
+NL_API nl_mesh_def nl_default_mesh_def(void) {
+    nl_mesh_def def{};
+    def.size = sizeof(nl_mesh_def);
+    return def;
+}
+
+NL_API nl_status nl_mesh_add(nl_world* world, const nl_mesh_def* def, nl_mesh_id* out_id) {
+    return guarded("nl_mesh_add", world, [&] {
+        nl_world& w = deref(world);
+        require(def, "def");
+        require(out_id, "out_id");
+        check_def(def);
+        *out_id = add_mesh(w, read_def_geometry(*def), *def);
+    });
+}
+
+NL_API nl_status nl_mesh_add_obj_file(nl_world* world, const char* path, const nl_mesh_def* def,
+                                      nl_mesh_id* out_id) {
+    return guarded("nl_mesh_add_obj_file", world, [&] {
+        nl_world& w = deref(world);
+        require(path, "path");
+        require(out_id, "out_id");
+        const nl_mesh_def options = obj_options(def);
+        *out_id = add_mesh(w, nl::read_obj_file(path), options);
+    });
+}
+
+NL_API nl_status nl_mesh_add_obj_memory(nl_world* world, const char* data, size_t length,
+                                        const nl_mesh_def* def, nl_mesh_id* out_id) {
+    return guarded("nl_mesh_add_obj_memory", world, [&] {
+        nl_world& w = deref(world);
+        if (length > 0) require(data, "data");
+        require(out_id, "out_id");
+        const nl_mesh_def options = obj_options(def);
+        *out_id = add_mesh(w, nl::read_obj_text(std::string_view(data ? data : "", length)), options);
+    });
+}
+
+NL_API nl_status nl_mesh_remove(nl_world* world, nl_mesh_id mesh) {
+    return guarded("nl_mesh_remove", world, [&] { deref(world).level->remove_mesh(to_handle(mesh)); });
+}
+
+NL_API nl_status nl_mesh_set_transform(nl_world* world, nl_mesh_id mesh, const float* transform) {
+    return guarded("nl_mesh_set_transform", world, [&] {
+        nl_world& w = deref(world);
+        require(transform, "transform");
+        w.level->set_transform(to_handle(mesh), read_transform(transform, "transform"));
+    });
+}
+
+NL_API int32_t nl_mesh_is_valid(const nl_world* world, nl_mesh_id mesh) {
+    int32_t valid = 0;
+    guarded("nl_mesh_is_valid", world, [&] { valid = deref(world).level->contains(to_handle(mesh)) ? 1 : 0; });
+    return valid;
+}
+
+NL_API nl_status nl_mesh_get_info(const nl_world* world, nl_mesh_id mesh, nl_mesh_info* out_info) {
+    return guarded("nl_mesh_get_info", world, [&] {
+        const nl_world& w = deref(world);
+        require(out_info, "out_info");
+        nl::capi::require_size(out_info->size, sizeof(nl_mesh_info), "out_info");
+        const nl::MeshInfo info = w.level->info(to_handle(mesh));
+        nl_mesh_info out{};
+        out.size = sizeof(nl_mesh_info);
+        out.vertex_count = info.vertex_count;
+        out.triangle_count = info.triangle_count;
+        out.degenerate_triangle_count = info.degenerate_triangle_count;
+        out.flags = info.flags;
+        Eigen::Map<Eigen::Matrix4f>(out.transform) = info.transform.matrix();
+        Eigen::Map<nl::Vec3>(out.bounds_min) = info.bounds.min;
+        Eigen::Map<nl::Vec3>(out.bounds_max) = info.bounds.max;
+        out.user_data = info.user_data;
+        *out_info = out;
+    });
+}
+
+NL_API nl_status nl_world_get_meshes(const nl_world* world, nl_mesh_id* out_ids, uint32_t capacity,
+                                     uint32_t* out_count) {
+    return guarded("nl_world_get_meshes", world, [&] {
+        const nl_world& w = deref(world);
+        require(out_count, "out_count");
+        if (capacity > 0) require(out_ids, "out_ids");
+        const std::vector<nl::Handle> meshes = w.level->meshes();
+        *out_count = static_cast<uint32_t>(meshes.size());
+        if (meshes.size() > capacity)
+            fail(ErrorCode::BufferTooSmall, "capacity is ", capacity, " but there are ", meshes.size(), " meshes");
+        for (size_t i = 0; i < meshes.size(); ++i) out_ids[i] = to_id(meshes[i]);
+    });
+}
+
+NL_API nl_status nl_world_cast_rays(nl_world* world, const nl_ray* rays, uint32_t count, nl_ray_hit* out_hits) {
+    return guarded("nl_world_cast_rays", world, [&] {
+        nl_world& w = deref(world);
+        if (count == 0) return;
+        require(rays, "rays");
+        require(out_hits, "out_hits");
+        std::vector<nl::Ray> batch(count);
+        for (uint32_t i = 0; i < count; ++i) {
+            const nl_ray& r = rays[i];
+            const nl::Vec3 direction = finite_point(r.direction, "rays", i, "direction");
+            const float length = direction.norm();
+            if (!(length > 0.0f) || !std::isfinite(length))
+                fail(ErrorCode::InvalidArgument, "rays[", i, "].direction has zero or overflowing length");
+            if (!(r.max_distance > 0.0f))
+                fail(ErrorCode::InvalidArgument, "rays[", i, "].max_distance is ", r.max_distance, " (must be > 0)");
+            batch[i] = nl::Ray{finite_point(r.origin, "rays", i, "origin"), direction / length, r.max_distance};
+        }
+        std::vector<nl::RayHit> hits(count);
+        w.level->cast_rays(batch.data(), count, hits.data());
+        for (uint32_t i = 0; i < count; ++i) write(out_hits[i], hits[i]);
+    });
+}
+
+NL_API nl_status nl_world_segments_blocked(nl_world* world, const nl_segment* segments, uint32_t count,
+                                           uint8_t* out_blocked) {
+    return guarded("nl_world_segments_blocked", world, [&] {
+        nl_world& w = deref(world);
+        if (count == 0) return;
+        require(segments, "segments");
+        require(out_blocked, "out_blocked");
+        std::vector<nl::Segment> batch(count);
+        for (uint32_t i = 0; i < count; ++i) {
+            batch[i] = nl::Segment{finite_point(segments[i].from, "segments", i, "from"),
+                                   finite_point(segments[i].to, "segments", i, "to")};
+        }
+        w.level->segments_blocked(batch.data(), count, out_blocked);
+    });
+}
+
+}  // extern "C"

@@ -1,0 +1,63 @@
+#include <thread>
+
+#include "entry_guard.h"
+#include "world.h"
+
+using nl::ErrorCode;
+using nl::fail;
+using nl::capi::guarded;
+
+namespace {
+
+int resolve_worker_count(int32_t requested) {
+    if (requested == NL_WORKERS_AUTO) return static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    return std::max(1, static_cast<int>(requested));
+}
+
+}  // namespace
+
+extern "C" {
+
+NL_API nl_world_def nl_default_world_def(void) {
+    nl_world_def def{};
+    def.size = sizeof(nl_world_def);
+    def.worker_count = NL_WORKERS_AUTO;
+    def.log_fn = nullptr;
+    def.log_user = nullptr;
+    def.log_level = NL_LOG_WARNING;
+    return def;
+}
+
+NL_API nl_status nl_world_create(const nl_world_def* def, nl_world** out_world) {
+    return guarded("nl_world_create", nullptr, [&] {
+        nl::capi::require(out_world, "out_world");
+        nl_world_def settings = nl_default_world_def();
+        if (def) {
+            nl::capi::require_size(def->size, sizeof(nl_world_def), "def");
+            settings = *def;
+            settings.size = sizeof(nl_world_def);
+        }
+        if (settings.worker_count < NL_WORKERS_AUTO)
+            fail(ErrorCode::InvalidArgument, "def->worker_count is ", settings.worker_count,
+                 " (use NL_WORKERS_AUTO, 0 or a positive count)");
+        if (settings.log_level > NL_LOG_DEBUG)
+            fail(ErrorCode::InvalidArgument, "def->log_level is ", settings.log_level, " (at most NL_LOG_DEBUG)");
+        auto world = std::make_unique<nl_world>();
+        world->def = settings;
+        world->tasks = nl::make_tbb_task_system(resolve_worker_count(settings.worker_count));
+        world->level = std::make_unique<nl::Level>(*world->tasks);
+        *out_world = world.release();
+    });
+}
+
+NL_API void nl_world_destroy(nl_world* world) {
+    guarded("nl_world_destroy", nullptr, [&] { delete world; });
+}
+
+NL_API int32_t nl_world_get_worker_count(const nl_world* world) {
+    int32_t count = 0;
+    guarded("nl_world_get_worker_count", world, [&] { count = nl::capi::deref(world).tasks->thread_count(); });
+    return count;
+}
+
+}  // extern "C"

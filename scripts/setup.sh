@@ -1,0 +1,29 @@
+#!/usr/bin/env bash
+# Installs every Debian package NavLink's build, samples, bindings and tests need.
+# Idempotent: packages already present are skipped, and apt-get update runs at most once per call.
+set -euo pipefail
+
+packages=(
+  build-essential cmake pkg-config ninja-build
+  libembree-dev libtbb-dev libeigen3-dev nlohmann-json3-dev doctest-dev libtinyobjloader-dev
+  librecast-dev libsdl2-dev libstb-dev
+  mono-devel python3
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$p")
+  fi
+done
+
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "setup: all ${#packages[@]} packages present"
+  exit 0
+fi
+
+sudo_cmd=()
+if [ "$(id -u)" -ne 0 ]; then sudo_cmd=(sudo); fi
+echo "setup: installing ${missing[*]}"
+"${sudo_cmd[@]}" apt-get update -qq
+DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"

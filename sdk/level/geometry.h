@@ -1,0 +1,34 @@
+// Plain geometry values shared by the level, the navmesh and link generation.
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace nl {
+
+using Vec3 = Eigen::Vector3f;
+using Transform = Eigen::Affine3f;
+using Triangle = std::array<uint32_t, 3>;
+
+// Triangles over shared vertices, in the mesh's own (object) space.
+struct TriangleMesh {
+    std::vector<Vec3> vertices;
+    std::vector<Triangle> triangles;
+};
+
+struct Aabb {
+    Vec3 min = Vec3::Constant(std::numeric_limits<float>::infinity());
+    Vec3 max = Vec3::Constant(-std::numeric_limits<float>::infinity());
+
+    void grow(const Vec3& p) {
+        min = min.cwiseMin(p);
+        max = max.cwiseMax(p);
+    }
+    bool empty() const { return (min.array() > max.array()).any(); }
+};
+
+}  // namespace nl

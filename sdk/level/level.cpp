@@ -1,0 +1,329 @@
+#include "level/level.h"
+
+#include <algorithm>
+#include <mutex>
+
+#include "util/error.h"
+
+namespace nl {
+namespace {
+
+void set_instance_transform(RTCGeometry instance, const Transform& t) {
+    const Eigen::Matrix4f m = t.matrix();  // column-major, as Embree's FLOAT4X4_COLUMN_MAJOR
+    rtcSetGeometryTransform(instance, 0, RTC_FORMAT_FLOAT4X4_COLUMN_MAJOR, m.data());
+    rtcCommitGeometry(instance);
+}
+
+Aabb bounds_of(const TriangleMesh& mesh, const Transform& t) {
+    Aabb box;
+    for (const Vec3& v : mesh.vertices) box.grow(t * v);
+    return box;
+}
+
+template <typename Owner>
+void store_owner(std::vector<Owner>& table, unsigned id, Owner owner) {
+    if (table.size() <= id) table.resize(id + 1);
+    table[id] = owner;
+}
+
+}  // namespace
+
+Level::Level(TaskSystem& tasks) : tasks_(tasks) {
+    device_ = rtcNewDevice(nullptr);
+    if (!device_) fail(ErrorCode::Internal, "Embree device could not be created (error ", rtcGetDeviceError(nullptr), ")");
+    top_ = rtcNewScene(device_);
+    static_scene_ = rtcNewScene(device_);
+    // Robust traversal: link clearance tests must not leak through cracks between triangles.
+    rtcSetSceneFlags(static_scene_, RTC_SCENE_FLAG_ROBUST);
+    rtcSetSceneFlags(top_, RTC_SCENE_FLAG_ROBUST | RTC_SCENE_FLAG_DYNAMIC);
+    rtcSetSceneBuildQuality(top_, RTC_BUILD_QUALITY_LOW);
+
+    RTCGeometry group = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_INSTANCE);
+    rtcSetGeometryInstancedScene(group, static_scene_);
+    set_instance_transform(group, Transform::Identity());
+    static_instance_ = rtcAttachGeometry(top_, group);
+    rtcReleaseGeometry(group);  // the top scene keeps it alive
+    store_owner(instance_owner_, static_instance_, InstanceOwner{true, {}});
+    static_dirty_ = true;
+    check_embree("creating the scene");
+}
+
+Level::~Level() {
+    meshes_.for_each([](Handle, const Mesh& m) {
+        rtcReleaseGeometry(m.geometry);
+        if (m.instance) rtcReleaseGeometry(m.instance);
+        if (m.own_scene) rtcReleaseScene(m.own_scene);
+    });
+    rtcReleaseScene(top_);
+    rtcReleaseScene(static_scene_);
+    rtcReleaseDevice(device_);
+}
+
+void Level::check_embree(const char* what) const {
+    const RTCError e = rtcGetDeviceError(device_);
+    if (e == RTC_ERROR_NONE) return;
+    if (e == RTC_ERROR_OUT_OF_MEMORY) fail(ErrorCode::OutOfMemory, "out of memory while ", what);
+    fail(ErrorCode::Internal, "Embree error ", static_cast<int>(e), " while ", what);
+}
+
+Handle Level::add_mesh(const TriangleMesh& input, const Transform& transform, uint32_t flags,
+                       uint64_t user_data) {
+    if (flags & ~kMeshKnownFlags) fail(ErrorCode::InvalidArgument, "flags has unknown bits 0x", std::hex, flags & ~kMeshKnownFlags);
+    ValidatedTriangles valid = validate_mesh(input);
+
+    Mesh mesh;
+    mesh.object.vertices = input.vertices;
+    mesh.object.triangles = std::move(valid.kept);
+    mesh.input_index = std::move(valid.input_index);
+    mesh.degenerate_count = valid.degenerate_count;
+    mesh.flags = flags;
+    mesh.user_data = user_data;
+    mesh.transform = transform;
+    mesh.world_bounds = bounds_of(mesh.object, transform);
+
+    std::unique_lock lock(mutex_);
+    try {
+        if (flags & kMeshMovable) attach_movable(mesh);
+        else upload_static(mesh);
+        check_embree("registering a mesh");
+    } catch (...) {
+        detach(mesh);
+        throw;
+    }
+    const Handle h = meshes_.insert(std::move(mesh));
+    Mesh& stored = *meshes_.find(h);
+    if (stored.flags & kMeshMovable) store_owner(instance_owner_, stored.instance_id, InstanceOwner{false, h});
+    else store_owner(static_geometry_owner_, stored.geometry_id, h);
+    return h;
+}
+
+void Level::upload_static(Mesh& mesh) {
+    // Static meshes are stored in world space, so traversal needs no instance transform for them.
+    const auto vertex_count = mesh.object.vertices.size();
+    const auto triangle_count = mesh.object.triangles.size();
+    RTCGeometry g = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
+    if (!g) check_embree("creating a triangle geometry");
+    mesh.geometry = g;
+    auto* vb = static_cast<float*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+                                                           3 * sizeof(float), vertex_count));
+    auto* ib = static_cast<unsigned*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                                              3 * sizeof(unsigned), triangle_count));
+    if (!vb || !ib) check_embree("allocating mesh buffers");
+    for (size_t i = 0; i < vertex_count; ++i) {
+        Eigen::Map<Vec3>(vb + 3 * i) = mesh.transform * mesh.object.vertices[i];
+    }
+    std::copy_n(mesh.object.triangles.front().data(), 3 * triangle_count, ib);
+    rtcCommitGeometry(g);
+    mesh.geometry_id = rtcAttachGeometry(static_scene_, g);
+    static_dirty_ = true;
+}
+
+void Level::attach_movable(Mesh& mesh) {
+    mesh.own_scene = rtcNewScene(device_);
+    rtcSetSceneFlags(mesh.own_scene, RTC_SCENE_FLAG_ROBUST);
+    RTCGeometry g = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
+    if (!mesh.own_scene || !g) check_embree("creating a movable mesh");
+    mesh.geometry = g;
+    const auto vertex_count = mesh.object.vertices.size();
+    const auto triangle_count = mesh.object.triangles.size();
+    auto* vb = static_cast<float*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+                                                           3 * sizeof(float), vertex_count));
+    auto* ib = static_cast<unsigned*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                                              3 * sizeof(unsigned), triangle_count));
+    if (!vb || !ib) check_embree("allocating mesh buffers");
+    std::copy_n(mesh.object.vertices.front().data(), 3 * vertex_count, vb);
+    std::copy_n(mesh.object.triangles.front().data(), 3 * triangle_count, ib);
+    rtcCommitGeometry(g);
+    mesh.geometry_id = rtcAttachGeometry(mesh.own_scene, g);
+    tasks_.execute([&] { rtcCommitScene(mesh.own_scene); });
+
+    mesh.instance = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_INSTANCE);
+    if (!mesh.instance) check_embree("creating an instance");
+    rtcSetGeometryInstancedScene(mesh.instance, mesh.own_scene);
+    set_instance_transform(mesh.instance, mesh.transform);
+    mesh.normal_to_world = mesh.transform.linear().inverse().transpose();
+    mesh.instance_id = rtcAttachGeometry(top_, mesh.instance);
+    top_dirty_ = true;
+}
+
+void Level::detach(Mesh& mesh) {
+    if (mesh.instance) {
+        if (mesh.instance_id != RTC_INVALID_GEOMETRY_ID) rtcDetachGeometry(top_, mesh.instance_id);
+        rtcReleaseGeometry(mesh.instance);
+        top_dirty_ = true;
+    } else if (mesh.geometry && mesh.geometry_id != RTC_INVALID_GEOMETRY_ID) {
+        rtcDetachGeometry(static_scene_, mesh.geometry_id);
+        static_dirty_ = true;
+    }
+    if (mesh.geometry) rtcReleaseGeometry(mesh.geometry);
+    if (mesh.own_scene) rtcReleaseScene(mesh.own_scene);
+    mesh.geometry = mesh.instance = nullptr;
+    mesh.own_scene = nullptr;
+}
+
+void Level::remove_mesh(Handle h) {
+    std::unique_lock lock(mutex_);
+    Mesh* mesh = meshes_.find(h);
+    if (!mesh) fail(ErrorCode::InvalidHandle, "mesh {", h.index1, ", ", h.generation, "} is null or was removed");
+    detach(*mesh);
+    meshes_.erase(h);
+}
+
+void Level::set_transform(Handle h, const Transform& transform) {
+    std::unique_lock lock(mutex_);
+    Mesh* mesh = meshes_.find(h);
+    if (!mesh) fail(ErrorCode::InvalidHandle, "mesh {", h.index1, ", ", h.generation, "} is null or was removed");
+    mesh->transform = transform;
+    mesh->world_bounds = bounds_of(mesh->object, transform);
+    if (mesh->instance) {
+        mesh->normal_to_world = transform.linear().inverse().transpose();
+        set_instance_transform(mesh->instance, transform);
+        top_dirty_ = true;
+    } else {
+        auto* vb = static_cast<float*>(rtcGetGeometryBufferData(mesh->geometry, RTC_BUFFER_TYPE_VERTEX, 0));
+        for (size_t i = 0; i < mesh->object.vertices.size(); ++i) {
+            Eigen::Map<Vec3>(vb + 3 * i) = transform * mesh->object.vertices[i];
+        }
+        rtcUpdateGeometryBuffer(mesh->geometry, RTC_BUFFER_TYPE_VERTEX, 0);
+        rtcCommitGeometry(mesh->geometry);
+        static_dirty_ = true;
+    }
+    check_embree("moving a mesh");
+}
+
+bool Level::contains(Handle h) const {
+    std::shared_lock lock(mutex_);
+    return meshes_.find(h) != nullptr;
+}
+
+MeshInfo Level::info(Handle h) const {
+    std::shared_lock lock(mutex_);
+    const Mesh* mesh = meshes_.find(h);
+    if (!mesh) fail(ErrorCode::InvalidHandle, "mesh {", h.index1, ", ", h.generation, "} is null or was removed");
+    MeshInfo out;
+    out.vertex_count = static_cast<uint32_t>(mesh->object.vertices.size());
+    out.triangle_count = static_cast<uint32_t>(mesh->object.triangles.size());
+    out.degenerate_triangle_count = mesh->degenerate_count;
+    out.flags = mesh->flags;
+    out.transform = mesh->transform;
+    out.bounds = mesh->world_bounds;
+    out.user_data = mesh->user_data;
+    return out;
+}
+
+std::vector<Handle> Level::meshes() const {
+    std::shared_lock lock(mutex_);
+    std::vector<Handle> out;
+    out.reserve(meshes_.size());
+    meshes_.for_each([&](Handle h, const Mesh&) { out.push_back(h); });
+    return out;
+}
+
+TriangleMesh Level::world_triangles() const {
+    std::shared_lock lock(mutex_);
+    TriangleMesh out;
+    meshes_.for_each([&](Handle, const Mesh& m) {
+        const auto base = static_cast<uint32_t>(out.vertices.size());
+        for (const Vec3& v : m.object.vertices) out.vertices.push_back(m.transform * v);
+        for (const Triangle& t : m.object.triangles) out.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
+    });
+    return out;
+}
+
+std::shared_lock<std::shared_mutex> Level::lock_committed() const {
+    for (;;) {
+        std::shared_lock shared(mutex_);
+        if (!static_dirty_ && !top_dirty_) return shared;
+        shared.unlock();
+        std::unique_lock exclusive(mutex_);
+        if (static_dirty_) {
+            tasks_.execute([&] { rtcCommitScene(static_scene_); });
+            rtcCommitGeometry(rtcGetGeometry(top_, static_instance_));
+            static_dirty_ = false;
+            top_dirty_ = true;
+        }
+        if (top_dirty_) {
+            tasks_.execute([&] { rtcCommitScene(top_); });
+            top_dirty_ = false;
+        }
+        check_embree("building the scene");
+    }
+}
+
+RayHit Level::resolve_hit(const RTCRayHit& rh, const Ray& ray) const {
+    RayHit hit;
+    if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return hit;
+    const InstanceOwner& owner = instance_owner_[rh.hit.instID[0]];
+    const Handle h = owner.is_static_group ? static_geometry_owner_[rh.hit.geomID] : owner.mesh;
+    const Mesh& mesh = *meshes_.find(h);
+    Vec3 normal(rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z);
+    if (!owner.is_static_group) normal = mesh.normal_to_world * normal;
+    hit.hit = true;
+    hit.distance = rh.ray.tfar;
+    hit.point = ray.origin + ray.direction * rh.ray.tfar;
+    hit.normal = normal.normalized();
+    hit.mesh = h;
+    hit.triangle = mesh.input_index.empty() ? rh.hit.primID : mesh.input_index[rh.hit.primID];
+    return hit;
+}
+
+void Level::cast_rays(const Ray* rays, uint32_t count, RayHit* out) const {
+    const auto lock = lock_committed();
+    tasks_.parallel_for(count, 512, [&](uint32_t begin, uint32_t end) {
+        RTCIntersectContext context;
+        rtcInitIntersectContext(&context);
+        for (uint32_t i = begin; i < end; ++i) {
+            const Ray& ray = rays[i];
+            RTCRayHit rh;
+            rh.ray.org_x = ray.origin.x();
+            rh.ray.org_y = ray.origin.y();
+            rh.ray.org_z = ray.origin.z();
+            rh.ray.dir_x = ray.direction.x();
+            rh.ray.dir_y = ray.direction.y();
+            rh.ray.dir_z = ray.direction.z();
+            rh.ray.tnear = 0.0f;
+            rh.ray.tfar = ray.max_distance;
+            rh.ray.time = 0.0f;
+            rh.ray.mask = ~0u;
+            rh.ray.id = i;
+            rh.ray.flags = 0;
+            rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+            rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+            rtcIntersect1(top_, &context, &rh);
+            out[i] = resolve_hit(rh, ray);
+        }
+    });
+}
+
+void Level::segments_blocked(const Segment* segments, uint32_t count, uint8_t* out_blocked) const {
+    const auto lock = lock_committed();
+    tasks_.parallel_for(count, 512, [&](uint32_t begin, uint32_t end) {
+        RTCIntersectContext context;
+        rtcInitIntersectContext(&context);
+        for (uint32_t i = begin; i < end; ++i) {
+            const Vec3 delta = segments[i].to - segments[i].from;
+            if (delta.squaredNorm() == 0.0f) {
+                out_blocked[i] = 0;
+                continue;
+            }
+            RTCRay ray;
+            ray.org_x = segments[i].from.x();
+            ray.org_y = segments[i].from.y();
+            ray.org_z = segments[i].from.z();
+            ray.dir_x = delta.x();
+            ray.dir_y = delta.y();
+            ray.dir_z = delta.z();
+            ray.tnear = 0.0f;
+            ray.tfar = 1.0f;
+            ray.time = 0.0f;
+            ray.mask = ~0u;
+            ray.id = i;
+            ray.flags = 0;
+            rtcOccluded1(top_, &context, &ray);
+            // Embree marks an occluded ray by setting tfar to -inf.
+            out_blocked[i] = ray.tfar < 0.0f ? 1 : 0;
+        }
+    });
+}
+
+}  // namespace nl

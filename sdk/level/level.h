@@ -1,0 +1,125 @@
+// The level: the host's collision geometry in Embree, answering batched ray and occlusion queries.
+//
+// Two-level scene: the top scene holds only instances. All static meshes share one child scene behind
+// an identity instance; each movable mesh has a child scene of its own, so moving it changes one
+// instance transform and the top level is refit over a handful of instances, not rebuilt over every
+// triangle.
+#pragma once
+
+#include <embree3/rtcore.h>
+
+#include <cstdint>
+#include <shared_mutex>
+#include <vector>
+
+#include "level/geometry.h"
+#include "level/mesh_validation.h"
+#include "util/handle.h"
+#include "util/task_system.h"
+
+namespace nl {
+
+enum MeshFlags : uint32_t {
+    kMeshMovable = 1u << 0,
+    kMeshKnownFlags = kMeshMovable,
+};
+
+struct MeshInfo {
+    uint32_t vertex_count = 0;
+    uint32_t triangle_count = 0;
+    uint32_t degenerate_triangle_count = 0;
+    uint32_t flags = 0;
+    Transform transform = Transform::Identity();
+    Aabb bounds;
+    uint64_t user_data = 0;
+};
+
+// Direction must be unit length; max_distance > 0 (may be infinite).
+struct Ray {
+    Vec3 origin;
+    Vec3 direction;
+    float max_distance;
+};
+
+struct RayHit {
+    bool hit = false;
+    float distance = 0.0f;
+    Vec3 point = Vec3::Zero();
+    Vec3 normal = Vec3::Zero();
+    Handle mesh;
+    uint32_t triangle = 0;  // index in the mesh's input triangles
+};
+
+struct Segment {
+    Vec3 from;
+    Vec3 to;
+};
+
+class Level {
+public:
+    explicit Level(TaskSystem& tasks);
+    ~Level();
+    Level(const Level&) = delete;
+    Level& operator=(const Level&) = delete;
+
+    // Edits: each validates first and changes nothing when it throws.
+    Handle add_mesh(const TriangleMesh& mesh, const Transform& transform, uint32_t flags, uint64_t user_data);
+    void remove_mesh(Handle mesh);
+    void set_transform(Handle mesh, const Transform& transform);
+
+    bool contains(Handle mesh) const;
+    MeshInfo info(Handle mesh) const;
+    std::vector<Handle> meshes() const;
+
+    // World-space triangles of every mesh under its current transform (for reference checks, builders).
+    TriangleMesh world_triangles() const;
+
+    // Batched queries, parallel over the task system; out spans must have rays.size() entries.
+    void cast_rays(const Ray* rays, uint32_t count, RayHit* out) const;
+    void segments_blocked(const Segment* segments, uint32_t count, uint8_t* out_blocked) const;
+
+private:
+    struct Mesh {
+        TriangleMesh object;                // object-space vertices, kept triangles
+        std::vector<uint32_t> input_index;  // kept triangle -> input triangle; empty = identity
+        uint32_t degenerate_count = 0;
+        uint32_t flags = 0;
+        uint64_t user_data = 0;
+        Transform transform = Transform::Identity();
+        Eigen::Matrix3f normal_to_world = Eigen::Matrix3f::Identity();  // movable meshes only
+        Aabb world_bounds;
+        RTCGeometry geometry = nullptr;     // triangles, in static_scene_ or own_scene
+        unsigned geometry_id = RTC_INVALID_GEOMETRY_ID;
+        RTCScene own_scene = nullptr;       // movable only
+        RTCGeometry instance = nullptr;     // movable only
+        unsigned instance_id = RTC_INVALID_GEOMETRY_ID;
+    };
+    struct InstanceOwner {
+        bool is_static_group = false;
+        Handle mesh;  // for movable meshes
+    };
+
+    void upload_static(Mesh& mesh);
+    void attach_movable(Mesh& mesh);
+    void detach(Mesh& mesh);
+    // Takes a shared lock on a committed scene; commits pending edits first.
+    std::shared_lock<std::shared_mutex> lock_committed() const;
+    void check_embree(const char* what) const;
+    RayHit resolve_hit(const RTCRayHit& rh, const Ray& ray) const;
+
+    TaskSystem& tasks_;
+    RTCDevice device_ = nullptr;
+    RTCScene top_ = nullptr;
+    RTCScene static_scene_ = nullptr;
+    unsigned static_instance_ = RTC_INVALID_GEOMETRY_ID;
+
+    SlotMap<Mesh> meshes_;
+    std::vector<Handle> static_geometry_owner_;  // by geomID in static_scene_
+    std::vector<InstanceOwner> instance_owner_;  // by geomID in top_
+
+    mutable std::shared_mutex mutex_;
+    mutable bool static_dirty_ = false;
+    mutable bool top_dirty_ = true;
+};
+
+}  // namespace nl

@@ -1,0 +1,74 @@
+#include "level/mesh_validation.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+#include "util/error.h"
+
+namespace nl {
+
+bool is_degenerate(const Vec3& a, const Vec3& b, const Vec3& c) {
+    const Vec3 ab = b - a, bc = c - b, ca = a - c;
+    const float longest_sq = std::max({ab.squaredNorm(), bc.squaredNorm(), ca.squaredNorm()});
+    // |ab x ac| = 2 * area; relative to the longest edge squared it is the sine of the widest angle's
+    // complement: a needle thinner than ~1e-7 of its length has no usable normal.
+    return ab.cross(-ca).norm() <= 1e-7f * longest_sq || longest_sq == 0.0f;
+}
+
+ValidatedTriangles validate_mesh(const TriangleMesh& mesh) {
+    if (mesh.vertices.empty()) fail(ErrorCode::InvalidArgument, "vertex_count is 0");
+    if (mesh.triangles.empty()) fail(ErrorCode::InvalidArgument, "triangle_count is 0");
+    if (mesh.vertices.size() > UINT32_MAX || mesh.triangles.size() > UINT32_MAX / 3)
+        fail(ErrorCode::InvalidArgument, "mesh is larger than 2^32 vertices or indices");
+
+    static const char axis[] = {'x', 'y', 'z'};
+    for (size_t i = 0; i < mesh.vertices.size(); ++i) {
+        for (int k = 0; k < 3; ++k) {
+            if (!std::isfinite(mesh.vertices[i][k]))
+                fail(ErrorCode::InvalidArgument, "vertices[", i, "].", axis[k], " is not finite (",
+                     mesh.vertices[i][k], ")");
+        }
+    }
+
+    const auto vertex_count = static_cast<uint32_t>(mesh.vertices.size());
+    ValidatedTriangles out;
+    out.kept.reserve(mesh.triangles.size());
+    for (size_t t = 0; t < mesh.triangles.size(); ++t) {
+        const Triangle& tri = mesh.triangles[t];
+        for (int k = 0; k < 3; ++k) {
+            if (tri[k] >= vertex_count)
+                fail(ErrorCode::InvalidArgument, "indices[", t * 3 + k, "] = ", tri[k],
+                     " is out of range (vertex_count = ", vertex_count, ")");
+        }
+        const bool repeated = tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2];
+        if (repeated || is_degenerate(mesh.vertices[tri[0]], mesh.vertices[tri[1]], mesh.vertices[tri[2]])) {
+            if (out.degenerate_count++ == 0) {
+                // Until now every triangle was kept, so kept[i] came from input i.
+                out.input_index.resize(t);
+                std::iota(out.input_index.begin(), out.input_index.end(), 0u);
+            }
+            continue;
+        }
+        if (out.degenerate_count > 0) out.input_index.push_back(static_cast<uint32_t>(t));
+        out.kept.push_back(tri);
+    }
+    if (out.kept.empty())
+        fail(ErrorCode::InvalidArgument, "all ", mesh.triangles.size(), " triangles are degenerate");
+    return out;
+}
+
+Transform validate_transform(const Eigen::Matrix4f& m, const char* name) {
+    if (!m.allFinite()) fail(ErrorCode::InvalidArgument, name, " has a non-finite element");
+    if (m(3, 0) != 0.0f || m(3, 1) != 0.0f || m(3, 2) != 0.0f || m(3, 3) != 1.0f)
+        fail(ErrorCode::InvalidArgument, name, " is not affine (its last row must be 0 0 0 1)");
+    const float det = m.topLeftCorner<3, 3>().determinant();
+    const float scale = m.topLeftCorner<3, 3>().cwiseAbs().maxCoeff();
+    if (!(std::fabs(det) > 1e-12f * scale * scale * scale))
+        fail(ErrorCode::InvalidArgument, name, " is singular (determinant ", det, ")");
+    Transform t;
+    t.matrix() = m;
+    return t;
+}
+
+}  // namespace nl
