@@ -1,0 +1,133 @@
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <functional>
+#include <limits>
+
+#include "io/obj_reader.h"
+#include "level/mesh_validation.h"
+#include "util/error.h"
+
+using nl::ErrorCode;
+using nl::TriangleMesh;
+using nl::Vec3;
+
+namespace {
+
+TriangleMesh quad() {
+    TriangleMesh m;
+    m.vertices = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 0, 1), Vec3(0, 0, 1)};
+    m.triangles = {{0, 2, 1}, {0, 3, 2}};
+    return m;
+}
+
+ErrorCode code_of(const std::function<void()>& fn) {
+    try {
+        fn();
+    } catch (const nl::Error& e) {
+        return e.code();
+    }
+    FAIL("expected an nl::Error");
+    return ErrorCode::Internal;
+}
+
+std::string message_of(const std::function<void()>& fn) {
+    try {
+        fn();
+    } catch (const nl::Error& e) {
+        return e.what();
+    }
+    return "";
+}
+
+}  // namespace
+
+TEST_CASE("validation keeps good triangles and maps kept ones back to their input index") {
+    TriangleMesh m = quad();
+    m.vertices.push_back(Vec3(2, 0, 0));
+    m.triangles.insert(m.triangles.begin() + 1, {0, 1, 4});  // collinear: zero area
+    m.triangles.push_back({1, 1, 2});                         // repeated index
+    const nl::ValidatedTriangles v = nl::validate_mesh(m);
+    CHECK(v.degenerate_count == 2);
+    REQUIRE(v.kept.size() == 2);
+    REQUIRE(v.input_index.size() == 2);
+    CHECK(v.input_index[0] == 0);
+    CHECK(v.input_index[1] == 2);
+}
+
+TEST_CASE("validation with no degenerate triangle leaves the index map empty (identity)") {
+    const nl::ValidatedTriangles v = nl::validate_mesh(quad());
+    CHECK(v.degenerate_count == 0);
+    CHECK(v.input_index.empty());
+    CHECK(v.kept.size() == 2);
+}
+
+TEST_CASE("validation names the bad value") {
+    TriangleMesh m = quad();
+    m.vertices[2].y() = std::numeric_limits<float>::quiet_NaN();
+    CHECK(code_of([&] { nl::validate_mesh(m); }) == ErrorCode::InvalidArgument);
+    CHECK(message_of([&] { nl::validate_mesh(m); }).find("vertices[2].y") != std::string::npos);
+
+    m = quad();
+    m.vertices[1].x() = std::numeric_limits<float>::infinity();
+    CHECK(message_of([&] { nl::validate_mesh(m); }).find("vertices[1].x") != std::string::npos);
+
+    m = quad();
+    m.triangles[1][2] = 4;
+    CHECK(message_of([&] { nl::validate_mesh(m); }).find("indices[5] = 4 is out of range") != std::string::npos);
+
+    m = quad();
+    m.triangles = {{0, 1, 1}};
+    CHECK(message_of([&] { nl::validate_mesh(m); }).find("degenerate") != std::string::npos);
+
+    CHECK(code_of([] { nl::validate_mesh(TriangleMesh{}); }) == ErrorCode::InvalidArgument);
+}
+
+TEST_CASE("transforms must be finite, affine and invertible") {
+    Eigen::Matrix4f m = Eigen::Matrix4f::Identity();
+    m(0, 3) = 5.0f;
+    CHECK(nl::validate_transform(m, "t").translation().x() == 5.0f);
+    Eigen::Matrix4f projective = m;
+    projective(3, 2) = 1.0f;
+    CHECK(message_of([&] { nl::validate_transform(projective, "t"); }).find("not affine") != std::string::npos);
+    Eigen::Matrix4f flat = Eigen::Matrix4f::Identity();
+    flat(1, 1) = 0.0f;
+    CHECK(message_of([&] { nl::validate_transform(flat, "t"); }).find("singular") != std::string::npos);
+    Eigen::Matrix4f nan = Eigen::Matrix4f::Identity();
+    nan(2, 0) = std::numeric_limits<float>::quiet_NaN();
+    CHECK(code_of([&] { nl::validate_transform(nan, "t"); }) == ErrorCode::InvalidArgument);
+}
+
+TEST_CASE("OBJ: polygons are fan-triangulated, other statements ignored") {
+    const char* text =
+        "# comment\n"
+        "mtllib missing.mtl\n"
+        "o thing\n"
+        "v 0 0 0\nv 1 0 0\nv 1 0 1\nv 0 0 1\nv 0.5 0 1.5\n"
+        "vn 0 1 0\n"
+        "usemtl stone\n"
+        "f 1//1 2//1 3//1 4//1 5//1\n"
+        "f 1 2 3\n";
+    const TriangleMesh m = nl::read_obj_text(text);
+    CHECK(m.vertices.size() == 5);
+    REQUIRE(m.triangles.size() == 4);
+    CHECK(m.triangles[0] == nl::Triangle{0, 1, 2});
+    CHECK(m.triangles[1] == nl::Triangle{0, 2, 3});
+    CHECK(m.triangles[2] == nl::Triangle{0, 3, 4});
+    CHECK(m.triangles[3] == nl::Triangle{0, 1, 2});
+}
+
+TEST_CASE("OBJ: negative (relative) indices resolve to earlier vertices") {
+    const TriangleMesh m = nl::read_obj_text("v 0 0 0\nv 1 0 0\nv 0 0 1\nf -3 -2 -1\n");
+    REQUIRE(m.triangles.size() == 1);
+    CHECK(m.triangles[0] == nl::Triangle{0, 1, 2});
+}
+
+TEST_CASE("OBJ: malformed files are parse errors with the reason") {
+    CHECK(code_of([] { nl::read_obj_text(""); }) == ErrorCode::Parse);
+    CHECK(code_of([] { nl::read_obj_text("v 0 0 0\nv 1 0 0\nv 0 0 1\n"); }) == ErrorCode::Parse);
+    CHECK(code_of([] { nl::read_obj_text("v 0 0 0\nv 1 0 0\nv 0 0 1\nf 1 2 9\n"); }) == ErrorCode::Parse);
+    CHECK(code_of([] { nl::read_obj_text("v 0 0 0\nv 1 0 0\nv 0 0 1\nf 1 2 0\n"); }) == ErrorCode::Parse);
+    CHECK(code_of([] { nl::read_obj_text("v 0 0 0\nf -5 -6 -7\n"); }) == ErrorCode::Parse);
+    CHECK(code_of([] { nl::read_obj_file("/nonexistent/level.obj"); }) == ErrorCode::NotFound);
+}
