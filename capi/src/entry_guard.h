@@ -3,6 +3,8 @@
 // at the ABI boundary.
 #pragma once
 
+#include <algorithm>
+#include <cstring>
 #include <new>
 #include <string>
 
@@ -40,11 +42,28 @@ inline void require(const void* pointer, const char* name) {
     if (!pointer) fail(ErrorCode::InvalidArgument, name, " is null");
 }
 
-// Throws InvalidArgument unless a growable struct's caller-set size covers at least `minimum`.
-inline void require_size(uint32_t size, size_t minimum, const char* name) {
-    if (size < minimum)
-        fail(ErrorCode::InvalidArgument, name, "->size is ", size, ", expected at least ", minimum,
+// Growable structs: a caller built against an older header passes a smaller `size`. Fields it does
+// not have keep their defaults; `first_version_size` is where the struct's first release ended
+// (offsetof + sizeof of its last field then), which is all the library can require.
+template <typename T>
+T read_growable(const T& in, T defaults, size_t first_version_size, const char* name) {
+    if (in.size < first_version_size)
+        fail(ErrorCode::InvalidArgument, name, "->size is ", in.size, ", expected at least ", first_version_size,
              " (initialise it from its nl_default_* function or with sizeof)");
+    std::memcpy(&defaults, &in, std::min<size_t>(in.size, sizeof(T)));
+    defaults.size = static_cast<uint32_t>(sizeof(T));
+    return defaults;
+}
+
+// Writes an output struct into as many bytes as the caller's struct has (its `size`, kept as is).
+template <typename T>
+void write_growable(T* out, const T& value, size_t first_version_size, const char* name) {
+    if (out->size < first_version_size)
+        fail(ErrorCode::InvalidArgument, name, "->size is ", out->size, ", expected at least ", first_version_size,
+             " (set it to sizeof)");
+    const uint32_t caller_size = out->size;
+    std::memcpy(out, &value, std::min<size_t>(caller_size, sizeof(T)));
+    out->size = caller_size;
 }
 
 }  // namespace nl::capi

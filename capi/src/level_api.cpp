@@ -1,4 +1,5 @@
 #include <cmath>
+#include <cstddef>
 #include <cstring>
 #include <vector>
 
@@ -14,6 +15,10 @@ using nl::capi::require;
 
 namespace {
 
+constexpr size_t kMeshDefFirstSize = offsetof(nl_mesh_def, user_data) + sizeof(uint64_t);
+constexpr size_t kMeshInfoFirstSize = offsetof(nl_mesh_info, user_data) + sizeof(uint64_t);
+static_assert(NL_COORDINATE_LIMIT == nl::kCoordinateLimit, "header and core disagree on the coordinate limit");
+
 nl::Handle to_handle(nl_mesh_id id) { return nl::Handle{id.index1, id.generation}; }
 nl_mesh_id to_id(nl::Handle h) { return nl_mesh_id{h.index1, h.generation}; }
 
@@ -22,9 +27,8 @@ nl::Transform read_transform(const float* m, const char* name) {
     return nl::validate_transform(Eigen::Map<const Eigen::Matrix4f>(m), name);
 }
 
-// Checks the def's envelope; fields that hold geometry are checked by the caller that reads them.
-void check_def(const nl_mesh_def* def) {
-    if (def) nl::capi::require_size(def->size, sizeof(nl_mesh_def), "def");
+nl_mesh_def read_def(const nl_mesh_def& def) {
+    return nl::capi::read_growable(def, nl_default_mesh_def(), kMeshDefFirstSize, "def");
 }
 
 nl::TriangleMesh read_def_geometry(const nl_mesh_def& def) {
@@ -51,16 +55,16 @@ nl::TriangleMesh read_def_geometry(const nl_mesh_def& def) {
 
 nl_mesh_id add_mesh(nl_world& world, const nl::TriangleMesh& mesh, const nl_mesh_def& def) {
     const nl::Transform transform = read_transform(def.transform, "def->transform");
-    return to_id(world.level->add_mesh(mesh, transform, def.flags, def.user_data));
+    return to_id(world.level->add_mesh(mesh, transform, def.flags, def.user_data, "def->"));
 }
 
 // Options of an OBJ load: the def without geometry.
-nl_mesh_def obj_options(const nl_mesh_def* def) {
-    check_def(def);
-    if (!def) return nl_default_mesh_def();
-    if (def->vertices || def->indices || def->vertex_count || def->triangle_count)
+nl_mesh_def obj_options(const nl_mesh_def* in) {
+    if (!in) return nl_default_mesh_def();
+    const nl_mesh_def def = read_def(*in);
+    if (def.vertices || def.indices || def.vertex_count || def.triangle_count)
         fail(ErrorCode::InvalidArgument, "def carries geometry; for an OBJ load only flags, transform and user_data apply");
-    return *def;
+    return def;
 }
 
 void write(nl_ray_hit& out, const nl::RayHit& hit) {
@@ -74,10 +78,23 @@ void write(nl_ray_hit& out, const nl::RayHit& hit) {
     out.triangle = hit.triangle;
 }
 
-nl::Vec3 finite_point(const float* p, const char* array, uint32_t index, const char* field) {
+nl::Vec3 read_point(const float* p, const char* array, uint32_t index, const char* field) {
     const nl::Vec3 v(p[0], p[1], p[2]);
     if (!v.allFinite()) fail(ErrorCode::InvalidArgument, array, "[", index, "].", field, " is not finite");
+    if (!nl::within_coordinate_limit(v))
+        fail(ErrorCode::InvalidArgument, array, "[", index, "].", field, " is beyond the coordinate limit of +-",
+             NL_COORDINATE_LIMIT, " m");
     return v;
+}
+
+// Unit direction of any finite nonzero vector: scaled by its largest component first, so neither
+// 1e-30 nor 3e38 underflows or overflows on the way.
+nl::Vec3 read_direction(const float* p, uint32_t index) {
+    const nl::Vec3 v(p[0], p[1], p[2]);
+    if (!v.allFinite()) fail(ErrorCode::InvalidArgument, "rays[", index, "].direction is not finite");
+    const float largest = v.cwiseAbs().maxCoeff();
+    if (!(largest > 0.0f)) fail(ErrorCode::InvalidArgument, "rays[", index, "].direction is zero");
+    return (v / largest).normalized();
 }
 
 }  // namespace
@@ -95,8 +112,8 @@ NL_API nl_status nl_mesh_add(nl_world* world, const nl_mesh_def* def, nl_mesh_id
         nl_world& w = deref(world);
         require(def, "def");
         require(out_id, "out_id");
-        check_def(def);
-        *out_id = add_mesh(w, read_def_geometry(*def), *def);
+        const nl_mesh_def settings = read_def(*def);
+        *out_id = add_mesh(w, read_def_geometry(settings), settings);
     });
 }
 
@@ -144,7 +161,6 @@ NL_API nl_status nl_mesh_get_info(const nl_world* world, nl_mesh_id mesh, nl_mes
     return guarded("nl_mesh_get_info", world, [&] {
         const nl_world& w = deref(world);
         require(out_info, "out_info");
-        nl::capi::require_size(out_info->size, sizeof(nl_mesh_info), "out_info");
         const nl::MeshInfo info = w.level->info(to_handle(mesh));
         nl_mesh_info out{};
         out.size = sizeof(nl_mesh_info);
@@ -156,7 +172,7 @@ NL_API nl_status nl_mesh_get_info(const nl_world* world, nl_mesh_id mesh, nl_mes
         Eigen::Map<nl::Vec3>(out.bounds_min) = info.bounds.min;
         Eigen::Map<nl::Vec3>(out.bounds_max) = info.bounds.max;
         out.user_data = info.user_data;
-        *out_info = out;
+        nl::capi::write_growable(out_info, out, kMeshInfoFirstSize, "out_info");
     });
 }
 
@@ -183,13 +199,9 @@ NL_API nl_status nl_world_cast_rays(nl_world* world, const nl_ray* rays, uint32_
         std::vector<nl::Ray> batch(count);
         for (uint32_t i = 0; i < count; ++i) {
             const nl_ray& r = rays[i];
-            const nl::Vec3 direction = finite_point(r.direction, "rays", i, "direction");
-            const float length = direction.norm();
-            if (!(length > 0.0f) || !std::isfinite(length))
-                fail(ErrorCode::InvalidArgument, "rays[", i, "].direction has zero or overflowing length");
             if (!(r.max_distance > 0.0f))
                 fail(ErrorCode::InvalidArgument, "rays[", i, "].max_distance is ", r.max_distance, " (must be > 0)");
-            batch[i] = nl::Ray{finite_point(r.origin, "rays", i, "origin"), direction / length, r.max_distance};
+            batch[i] = nl::Ray{read_point(r.origin, "rays", i, "origin"), read_direction(r.direction, i), r.max_distance};
         }
         std::vector<nl::RayHit> hits(count);
         w.level->cast_rays(batch.data(), count, hits.data());
@@ -206,8 +218,8 @@ NL_API nl_status nl_world_segments_blocked(nl_world* world, const nl_segment* se
         require(out_blocked, "out_blocked");
         std::vector<nl::Segment> batch(count);
         for (uint32_t i = 0; i < count; ++i) {
-            batch[i] = nl::Segment{finite_point(segments[i].from, "segments", i, "from"),
-                                   finite_point(segments[i].to, "segments", i, "to")};
+            batch[i] = nl::Segment{read_point(segments[i].from, "segments", i, "from"),
+                                   read_point(segments[i].to, "segments", i, "to")};
         }
         w.level->segments_blocked(batch.data(), count, out_blocked);
     });

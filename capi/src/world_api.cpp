@@ -1,3 +1,5 @@
+#include <atomic>
+#include <cstddef>
 #include <thread>
 
 #include "entry_guard.h"
@@ -8,6 +10,15 @@ using nl::fail;
 using nl::capi::guarded;
 
 namespace {
+
+constexpr size_t kWorldDefFirstSize = offsetof(nl_world_def, log_level) + sizeof(nl_log_level);
+
+// Each world tags the ids it issues, so an id from another live world is refused, not obeyed.
+// The counter hands out tags and holds no world state.
+uint32_t next_world_tag() {
+    static std::atomic<uint32_t> counter{0};
+    return counter.fetch_add(1, std::memory_order_relaxed) % 4095u + 1u;
+}
 
 int resolve_worker_count(int32_t requested) {
     if (requested == NL_WORKERS_AUTO) return static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
@@ -31,12 +42,8 @@ NL_API nl_world_def nl_default_world_def(void) {
 NL_API nl_status nl_world_create(const nl_world_def* def, nl_world** out_world) {
     return guarded("nl_world_create", nullptr, [&] {
         nl::capi::require(out_world, "out_world");
-        nl_world_def settings = nl_default_world_def();
-        if (def) {
-            nl::capi::require_size(def->size, sizeof(nl_world_def), "def");
-            settings = *def;
-            settings.size = sizeof(nl_world_def);
-        }
+        const nl_world_def settings =
+            def ? nl::capi::read_growable(*def, nl_default_world_def(), kWorldDefFirstSize, "def") : nl_default_world_def();
         if (settings.worker_count < NL_WORKERS_AUTO)
             fail(ErrorCode::InvalidArgument, "def->worker_count is ", settings.worker_count,
                  " (use NL_WORKERS_AUTO, 0 or a positive count)");
@@ -45,7 +52,7 @@ NL_API nl_status nl_world_create(const nl_world_def* def, nl_world** out_world) 
         auto world = std::make_unique<nl_world>();
         world->def = settings;
         world->tasks = nl::make_tbb_task_system(resolve_worker_count(settings.worker_count));
-        world->level = std::make_unique<nl::Level>(*world->tasks);
+        world->level = std::make_unique<nl::Level>(*world->tasks, next_world_tag());
         *out_world = world.release();
     });
 }

@@ -28,7 +28,7 @@ void store_owner(std::vector<Owner>& table, unsigned id, Owner owner) {
 
 }  // namespace
 
-Level::Level(TaskSystem& tasks) : tasks_(tasks) {
+Level::Level(TaskSystem& tasks, uint32_t handle_tag) : tasks_(tasks), meshes_(handle_tag) {
     device_ = rtcNewDevice(nullptr);
     if (!device_) fail(ErrorCode::Internal, "Embree device could not be created (error ", rtcGetDeviceError(nullptr), ")");
     top_ = rtcNewScene(device_);
@@ -66,10 +66,20 @@ void Level::check_embree(const char* what) const {
     fail(ErrorCode::Internal, "Embree error ", static_cast<int>(e), " while ", what);
 }
 
+namespace {
+
+void check_placement(const Aabb& world_bounds) {
+    if (!within_coordinate_limit(world_bounds.min) || !within_coordinate_limit(world_bounds.max))
+        fail(ErrorCode::InvalidArgument, "the transform places the mesh beyond the coordinate limit of +-",
+             kCoordinateLimit, " m");
+}
+
+}  // namespace
+
 Handle Level::add_mesh(const TriangleMesh& input, const Transform& transform, uint32_t flags,
-                       uint64_t user_data) {
+                       uint64_t user_data, const char* field_prefix) {
     if (flags & ~kMeshKnownFlags) fail(ErrorCode::InvalidArgument, "flags has unknown bits 0x", std::hex, flags & ~kMeshKnownFlags);
-    ValidatedTriangles valid = validate_mesh(input);
+    ValidatedTriangles valid = validate_mesh(input, field_prefix);
 
     Mesh mesh;
     mesh.object.vertices = input.vertices;
@@ -80,6 +90,7 @@ Handle Level::add_mesh(const TriangleMesh& input, const Transform& transform, ui
     mesh.user_data = user_data;
     mesh.transform = transform;
     mesh.world_bounds = bounds_of(mesh.object, transform);
+    check_placement(mesh.world_bounds);
 
     std::unique_lock lock(mutex_);
     try {
@@ -141,7 +152,7 @@ void Level::attach_movable(Mesh& mesh) {
     if (!mesh.instance) check_embree("creating an instance");
     rtcSetGeometryInstancedScene(mesh.instance, mesh.own_scene);
     set_instance_transform(mesh.instance, mesh.transform);
-    mesh.normal_to_world = mesh.transform.linear().inverse().transpose();
+    mesh.normal_to_world = normal_matrix(mesh.transform);
     mesh.instance_id = rtcAttachGeometry(top_, mesh.instance);
     top_dirty_ = true;
 }
@@ -173,10 +184,12 @@ void Level::set_transform(Handle h, const Transform& transform) {
     std::unique_lock lock(mutex_);
     Mesh* mesh = meshes_.find(h);
     if (!mesh) fail(ErrorCode::InvalidHandle, "mesh {", h.index1, ", ", h.generation, "} is null or was removed");
+    const Aabb bounds = bounds_of(mesh->object, transform);
+    check_placement(bounds);
     mesh->transform = transform;
-    mesh->world_bounds = bounds_of(mesh->object, transform);
+    mesh->world_bounds = bounds;
     if (mesh->instance) {
-        mesh->normal_to_world = transform.linear().inverse().transpose();
+        mesh->normal_to_world = normal_matrix(transform);
         set_instance_transform(mesh->instance, transform);
         top_dirty_ = true;
     } else {

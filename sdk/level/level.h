@@ -57,13 +57,16 @@ struct Segment {
 
 class Level {
 public:
-    explicit Level(TaskSystem& tasks);
+    // Handles this level issues carry `handle_tag`, so handles of another level (world) are refused.
+    explicit Level(TaskSystem& tasks, uint32_t handle_tag = 0);
     ~Level();
     Level(const Level&) = delete;
     Level& operator=(const Level&) = delete;
 
     // Edits: each validates first and changes nothing when it throws.
-    Handle add_mesh(const TriangleMesh& mesh, const Transform& transform, uint32_t flags, uint64_t user_data);
+    // `field_prefix` names the input's fields in error messages ("def->").
+    Handle add_mesh(const TriangleMesh& mesh, const Transform& transform, uint32_t flags, uint64_t user_data,
+                    const char* field_prefix = "");
     void remove_mesh(Handle mesh);
     void set_transform(Handle mesh, const Transform& transform);
 

@@ -16,12 +16,25 @@ struct ValidatedTriangles {
     uint32_t degenerate_count = 0;
 };
 
-// Throws InvalidArgument naming the first non-finite coordinate or out-of-range index, or when every
-// triangle is degenerate. Messages name fields as the C ABI does ("vertices[3].y", "indices[7]").
-ValidatedTriangles validate_mesh(const TriangleMesh& mesh);
+// Coordinates beyond this (metres) are refused everywhere: Embree asserts on values near 1.8e18, and
+// float precision is already coarser than a metre past 1e7, so nothing meaningful lives out there.
+constexpr float kCoordinateLimit = 1.0e9f;
 
-// Throws InvalidArgument unless `m` is finite, affine (last row 0 0 0 1) and invertible.
+inline bool within_coordinate_limit(const Vec3& v) {
+    return (v.array().abs() <= kCoordinateLimit).all();  // false for NaN too
+}
+
+// Throws InvalidArgument naming the first bad coordinate or out-of-range index, or when every
+// triangle is degenerate. `field_prefix` names the fields as the caller knows them ("def->" gives
+// "def->vertices[3].y", "def->indices[7]").
+ValidatedTriangles validate_mesh(const TriangleMesh& mesh, const char* field_prefix = "");
+
+// Throws InvalidArgument unless `m` is finite, affine (last row 0 0 0 1) and well conditioned.
 Transform validate_transform(const Eigen::Matrix4f& m, const char* name);
+
+// Maps object-space normals to world space, keeping the winding's orientation under mirroring
+// (the cofactor matrix: det(L) * L^-T, up to a positive scale).
+Eigen::Matrix3f normal_matrix(const Transform& t);
 
 bool is_degenerate(const Vec3& a, const Vec3& b, const Vec3& c);
 

@@ -20,10 +20,18 @@ struct Handle {
 };
 
 // Stores values in reusable slots. A removed slot's generation is bumped, so an old handle to it is
-// recognised as stale instead of reaching the slot's next occupant.
+// recognised as stale instead of reaching the slot's next occupant. The top bits of every generation
+// carry the owner's tag, so a handle from another owner (another world) is refused as well.
 template <typename T>
 class SlotMap {
 public:
+    static constexpr uint32_t kTagBits = 12;
+    static constexpr uint32_t kCounterBits = 32 - kTagBits;
+    static constexpr uint32_t kCounterMask = (1u << kCounterBits) - 1;
+
+    // Only the low kTagBits bits of `tag` are used.
+    explicit SlotMap(uint32_t tag = 0) : tag_bits_((tag & ((1u << kTagBits) - 1)) << kCounterBits) {}
+
     Handle insert(T value) {
         uint32_t index;
         if (!free_.empty()) {
@@ -36,7 +44,7 @@ public:
         Slot& slot = slots_[index];
         slot.value.emplace(std::move(value));
         ++live_;
-        return Handle{index + 1, slot.generation};
+        return Handle{index + 1, generation_of(slot)};
     }
 
     T* find(Handle h) noexcept {
@@ -49,7 +57,7 @@ public:
         Slot* slot = slot_of(h);
         if (!slot) return false;
         slot->value.reset();
-        ++slot->generation;
+        slot->counter = (slot->counter + 1) & kCounterMask;
         free_.push_back(h.index1 - 1);
         --live_;
         return true;
@@ -57,7 +65,7 @@ public:
 
     // Handle of the occupied slot at `index`; used to map back from internal indices.
     Handle handle_at(uint32_t index) const noexcept {
-        return Handle{index + 1, slots_[index].generation};
+        return Handle{index + 1, generation_of(slots_[index])};
     }
 
     template <typename Fn>
@@ -72,18 +80,21 @@ public:
 private:
     struct Slot {
         std::optional<T> value;
-        uint32_t generation = 1;
+        uint32_t counter = 1;
     };
+
+    uint32_t generation_of(const Slot& slot) const noexcept { return tag_bits_ | slot.counter; }
 
     Slot* slot_of(Handle h) noexcept {
         if (h.index1 == 0 || h.index1 > slots_.size()) return nullptr;
         Slot& slot = slots_[h.index1 - 1];
-        return slot.value && slot.generation == h.generation ? &slot : nullptr;
+        return slot.value && generation_of(slot) == h.generation ? &slot : nullptr;
     }
 
     std::vector<Slot> slots_;
     std::vector<uint32_t> free_;
     uint32_t live_ = 0;
+    uint32_t tag_bits_;
 };
 
 }  // namespace nl

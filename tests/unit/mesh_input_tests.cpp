@@ -130,4 +130,39 @@ TEST_CASE("OBJ: malformed files are parse errors with the reason") {
     CHECK(code_of([] { nl::read_obj_text("v 0 0 0\nv 1 0 0\nv 0 0 1\nf 1 2 0\n"); }) == ErrorCode::Parse);
     CHECK(code_of([] { nl::read_obj_text("v 0 0 0\nf -5 -6 -7\n"); }) == ErrorCode::Parse);
     CHECK(code_of([] { nl::read_obj_file("/nonexistent/level.obj"); }) == ErrorCode::NotFound);
+    CHECK(code_of([] { nl::read_obj_file("/"); }) == ErrorCode::Io);
+}
+
+TEST_CASE("OBJ: numbers tinyobjloader would read as 0 are refused, with the line") {
+    const char* tail = "v 1 0 0\nv 0 0 1\nf 1 2 3\n";
+    for (const char* bad : {"v abc 0 0\n", "v nan 0 0\n", "v inf 0 0\n", "v 0 0\n", "v 1e39 0 0\n"}) {
+        CAPTURE(bad);
+        CHECK(code_of([&] { nl::read_obj_text(std::string(bad) + tail); }) == ErrorCode::Parse);
+    }
+    CHECK(message_of([&] { nl::read_obj_text(std::string("# level\nv 0 0 0\nv x 0 0\n") + tail); }).find(":3:") !=
+          std::string::npos);
+    CHECK(code_of([] { nl::read_obj_text("v 0 0 0\nv 1 0 0\nv 0 0 1\nf 1 2 4294967297\n"); }) == ErrorCode::Parse);
+    CHECK(code_of([] { nl::read_obj_text("v 0 0 0\nv 1 0 0\nv 0 0 1\nf 1 2 three\n"); }) == ErrorCode::Parse);
+    CHECK(code_of([] { nl::read_obj_text("v 0 0 0\nv 1 0 0\nv 0 0 1\nf 1 2\n"); }) == ErrorCode::Parse);
+    // Texture and normal parts after the position index are not our business.
+    CHECK(nl::read_obj_text("v 0 0 0\nv 1 0 0\nv 0 0 1\nvt 0 0\nf 1/1 2/1 3/1\n").triangles.size() == 1);
+}
+
+TEST_CASE("coordinates beyond the limit are refused, and huge scales are not mistaken for singular") {
+    TriangleMesh m = quad();
+    m.vertices[3].z() = 2e9f;
+    CHECK(message_of([&] { nl::validate_mesh(m, "def->"); }).find("def->vertices[3].z") != std::string::npos);
+    Eigen::Matrix4f big = Eigen::Matrix4f::Identity() * 1e13f;
+    big(3, 3) = 1.0f;
+    CHECK_NOTHROW(nl::validate_transform(big, "t"));
+}
+
+TEST_CASE("the normal matrix keeps the winding's orientation under mirroring") {
+    nl::Transform mirror = nl::Transform::Identity();
+    mirror.scale(Vec3(-1, 1, 1));
+    // Winding +Y in object space, mirrored in x: the world-space triangle winds the other way.
+    const Vec3 a(0, 0, 0), b(0, 0, 1), c(1, 0, 0);
+    const Vec3 world_normal = ((mirror * b) - (mirror * a)).cross((mirror * c) - (mirror * a)).normalized();
+    const Vec3 object_normal = (b - a).cross(c - a).normalized();
+    CHECK(((nl::normal_matrix(mirror) * object_normal).normalized() - world_normal).norm() < 1e-6f);
 }

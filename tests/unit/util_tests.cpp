@@ -50,3 +50,14 @@ TEST_CASE("task system: an exception in a body reaches the caller") {
                                         }),
                     std::runtime_error);
 }
+
+TEST_CASE("slot map: handles from a map with another tag are refused") {
+    nl::SlotMap<int> mine(1), theirs(2);
+    const nl::Handle a = mine.insert(1);
+    const nl::Handle b = theirs.insert(2);
+    CHECK(a.index1 == b.index1);
+    CHECK(mine.find(b) == nullptr);
+    CHECK(theirs.find(a) == nullptr);
+    CHECK_FALSE(mine.erase(b));
+    CHECK(mine.size() == 1);
+}

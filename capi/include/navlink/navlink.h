@@ -15,7 +15,10 @@
  * - Unless a function says otherwise, all functions that take a world are safe to call from several
  *   threads at once on the same world; nl_world_destroy must not race with any other call on it.
  * - Structs that may grow start with `uint32_t size`; fill them from the nl_default_*_def()
- *   functions, which set it, then change the fields you need.
+ *   functions, which set it, then change the fields you need. A library newer than the header a host
+ *   was built with reads only the `size` bytes the host has and gives later fields their defaults.
+ * - Coordinates are metres; every position passed in must be finite and within
+ *   +-NL_COORDINATE_LIMIT, or the call fails with NL_STATUS_INVALID_ARGUMENT.
  */
 #ifndef NAVLINK_NAVLINK_H
 #define NAVLINK_NAVLINK_H
@@ -90,6 +93,10 @@ NL_API nl_status nl_get_last_status(void);
  *  "nl_mesh_add: def->indices[7] = 120 is out of range (vertex_count = 64)".
  *  Borrowed: valid until the next nl_* call on this thread. Never null. Thread-safe. */
 NL_API const char* nl_get_last_error_message(void);
+
+/** Largest coordinate magnitude accepted anywhere, in metres. Far beyond any playable space (float
+ *  precision is coarser than a metre past 1e7); it keeps every computation inside float range. */
+#define NL_COORDINATE_LIMIT 1.0e9f
 
 /* ---------------------------------------------------------------------------------------------
  * World: the root object. It owns everything; no globals.
@@ -178,8 +185,9 @@ NL_API nl_mesh_def nl_default_mesh_def(void);
  *  counted (nl_mesh_info.degenerate_triangle_count); everything else about the input must be valid or
  *  nothing is registered. `*out_id` receives the id.
  *  Returns SUCCESS, or a failure with INVALID_ARGUMENT (null pointer, zero counts, a stride below 12,
- *  a non-finite coordinate, an index out of range, a non-affine or singular transform, unknown
- *  flags, every triangle degenerate), OUT_OF_MEMORY or INTERNAL_ERROR.
+ *  a coordinate not finite or beyond NL_COORDINATE_LIMIT before or after the transform, an index out
+ *  of range, a non-affine or singular transform, unknown flags, every triangle degenerate),
+ *  OUT_OF_MEMORY or INTERNAL_ERROR.
  *  Thread-safe; waits for ray queries in flight on this world to finish. */
 NL_API nl_status nl_mesh_add(nl_world* world, const nl_mesh_def* def, nl_mesh_id* out_id);
 
@@ -187,8 +195,10 @@ NL_API nl_status nl_mesh_add(nl_world* world, const nl_mesh_def* def, nl_mesh_id
  *  statements are ignored) and registers it as one mesh. `path` is a borrowed NUL-terminated UTF-8
  *  path. `def` is optional (NULL = defaults): its flags, transform and user_data apply; its vertex
  *  and index fields must be empty.
- *  Returns SUCCESS, or a failure with INVALID_ARGUMENT, NOT_FOUND | IO_ERROR (cannot open),
- *  PARSE_ERROR (malformed file, with the line), OUT_OF_MEMORY or INTERNAL_ERROR.
+ *  Returns SUCCESS, or a failure with INVALID_ARGUMENT, NOT_FOUND (no such file), IO_ERROR (a
+ *  directory, no permission, a read error), PARSE_ERROR (malformed: a number that is not a finite
+ *  float, a face index that is 0, past the last vertex or not an integer, no faces; the line is
+ *  named), OUT_OF_MEMORY or INTERNAL_ERROR.
  *  Thread-safe, as nl_mesh_add. */
 NL_API nl_status nl_mesh_add_obj_file(nl_world* world, const char* path, const nl_mesh_def* def,
                                       nl_mesh_id* out_id);
@@ -198,7 +208,7 @@ NL_API nl_status nl_mesh_add_obj_file(nl_world* world, const char* path, const n
 NL_API nl_status nl_mesh_add_obj_memory(nl_world* world, const char* data, size_t length,
                                         const nl_mesh_def* def, nl_mesh_id* out_id);
 
-/** Removes a mesh. Returns SUCCESS, or INVALID_HANDLE for a null or stale id.
+/** Removes a mesh. Returns SUCCESS, or INVALID_HANDLE for a null, stale or another world's id.
  *  Thread-safe; waits for ray queries in flight on this world to finish. */
 NL_API nl_status nl_mesh_remove(nl_world* world, nl_mesh_id mesh);
 
@@ -224,8 +234,9 @@ typedef struct nl_mesh_info {
     uint64_t user_data;
 } nl_mesh_info;
 
-/** Fills `*out_info` (caller-owned; its `size` field must be set to sizeof(nl_mesh_info)).
- *  Returns SUCCESS, INVALID_HANDLE or INVALID_ARGUMENT. Thread-safe. */
+/** Fills `*out_info` (caller-owned; set its `size` field to sizeof(nl_mesh_info) first: the library
+ *  writes that many bytes at most). Returns SUCCESS, INVALID_HANDLE (null, stale or another world's
+ *  id) or INVALID_ARGUMENT. Thread-safe. */
 NL_API nl_status nl_mesh_get_info(const nl_world* world, nl_mesh_id mesh, nl_mesh_info* out_info);
 
 /** Lists the ids of all registered meshes into `out_ids` (caller-owned, `capacity` entries; may be
@@ -261,9 +272,11 @@ typedef struct nl_ray_hit {
 } nl_ray_hit;
 
 /** Casts `count` rays and writes the closest hit of each to `out_hits` (caller-owned, `count`
- *  entries). `rays` is borrowed. count == 0 succeeds and writes nothing.
- *  Returns SUCCESS, or INVALID_ARGUMENT (null pointer; a ray with a non-finite origin, a zero or
- *  non-finite direction, or max_distance <= 0 or NaN: its index is named, nothing is written).
+ *  entries). `rays` is borrowed. count == 0 succeeds and writes nothing. A ray that starts on a surface
+ *  hits it at distance 0: start probes slightly off the surface they leave.
+ *  Returns SUCCESS, or INVALID_ARGUMENT (null pointer; a ray with an origin not finite or beyond
+ *  NL_COORDINATE_LIMIT, a zero or non-finite direction, or max_distance <= 0 or NaN: its index is
+ *  named, nothing is written).
  *  Thread-safe: many threads may query at once; mesh edits wait for queries in flight. */
 NL_API nl_status nl_world_cast_rays(nl_world* world, const nl_ray* rays, uint32_t count,
                                     nl_ray_hit* out_hits);
@@ -275,9 +288,11 @@ typedef struct nl_segment {
 } nl_segment;
 
 /** Tests `count` segments for any geometry between their ends (occlusion) and writes 1 (blocked)
- *  or 0 (clear) per segment to `out_blocked` (caller-owned, `count` bytes). A zero-length segment
- *  is clear. `segments` is borrowed.
- *  Returns SUCCESS, or INVALID_ARGUMENT (null pointer, a non-finite coordinate: its index is named).
+ *  or 0 (clear) per segment to `out_blocked` (caller-owned, `count` bytes). Ends are included: a
+ *  segment that starts or ends exactly on a surface is blocked, so pull the ends back by a small
+ *  margin to ignore the floor a test stands on. A zero-length segment is clear. `segments` is borrowed.
+ *  Returns SUCCESS, or INVALID_ARGUMENT (null pointer, a coordinate not finite or beyond
+ *  NL_COORDINATE_LIMIT: its index is named).
  *  Thread-safe, as nl_world_cast_rays. */
 NL_API nl_status nl_world_segments_blocked(nl_world* world, const nl_segment* segments,
                                            uint32_t count, uint8_t* out_blocked);

@@ -1,0 +1,215 @@
+#!/usr/bin/env bash
+# Installs the built project into a fresh prefix under the build tree and uses it as a host would:
+#   1. the installed libnavlink.so exports only nl_* and has the SONAME libnavlink.so.0;
+#   2. a CMake project finds it with find_package(NavLink <major.minor> CONFIG REQUIRED), builds, runs;
+#   3. a plain `cc $(pkg-config --cflags --libs navlink)` build does the same.
+# The consumer sees only the installed headers, never the source tree's.
+#
+# Usage: run_install_test.sh <build-dir> <cmake-command> <source-dir>
+# Quiet on success; on failure prints what failed and the output of the failing step.
+set -uo pipefail
+
+if [ $# -ne 3 ]; then
+  echo "usage: $0 <build-dir> <cmake-command> <source-dir>" >&2
+  exit 2
+fi
+build=$(cd "$1" && pwd -P) || exit 2
+cmake=$2
+source=$(cd "$3" && pwd -P) || exit 2
+
+work=$build/tests/install/work
+prefix=$work/prefix
+log=$work/step.log
+failures=0
+
+# Runs a step quietly; on failure reports it with its output and counts it.
+step() {
+  local what=$1
+  shift
+  local rc=0
+  "$@" >"$log" 2>&1 || rc=$?
+  if [ "$rc" -ne 0 ]; then
+    echo "FAILED: $what (exit code $rc)"
+    echo "  command: $*"
+    sed 's/^/  | /' "$log" | tail -n 40
+    failures=$((failures + 1))
+    return 1
+  fi
+  return 0
+}
+
+fail() {
+  echo "FAILED: $*"
+  failures=$((failures + 1))
+}
+
+finish() {
+  if [ "$failures" -ne 0 ]; then
+    echo "install test: $failures check(s) failed (work directory kept: $work)"
+    exit 1
+  fi
+  rm -rf "$work"
+  exit 0
+}
+
+# A fresh prefix every run: nothing from an earlier install may satisfy this one.
+rm -rf "$work" || { echo "FAILED: cannot clean $work"; exit 1; }
+mkdir -p "$work" || { echo "FAILED: cannot create $work"; exit 1; }
+
+step "cmake --install into $prefix" "$cmake" --install "$build" --prefix "$prefix" || finish
+
+# Where GNUInstallDirs put the library (lib, lib64 or lib/<multiarch>): the one holding navlink.pc.
+pc=$(find "$prefix" -name navlink.pc -path '*/pkgconfig/*' | head -n 1)
+if [ -z "$pc" ]; then
+  fail "no navlink.pc installed under $prefix"
+  finish
+fi
+libdir=$(dirname "$(dirname "$pc")")
+
+for f in include/navlink/navlink.h include/navlink/export.h include/navlink/version.h; do
+  [ -f "$prefix/$f" ] || fail "$f is not installed"
+done
+[ -f "$libdir/cmake/NavLink/NavLinkConfig.cmake" ] || fail "NavLinkConfig.cmake is not in $libdir/cmake/NavLink"
+[ -f "$libdir/cmake/NavLink/NavLinkConfigVersion.cmake" ] || fail "NavLinkConfigVersion.cmake is not installed"
+
+# --- The installed library --------------------------------------------------------------------
+lib=$libdir/libnavlink.so
+if [ ! -e "$lib" ]; then
+  fail "libnavlink.so is not in $libdir"
+  finish
+fi
+[ -L "$lib" ] || fail "libnavlink.so is not a symlink (to the versioned library)"
+[ -e "$libdir/libnavlink.so.0" ] || fail "libnavlink.so.0 is not installed"
+real=$(readlink -f "$lib")
+
+soname=$(readelf -d "$real" 2>/dev/null | sed -n 's/.*(SONAME).*\[\(.*\)\].*/\1/p')
+[ "$soname" = "libnavlink.so.0" ] || fail "SONAME is '$soname', expected libnavlink.so.0"
+
+if step "nm -D --defined-only $real" nm -D --defined-only "$real"; then
+  # "address type name[@version]"; a named version node in the version script shows up as an absolute
+  # (A) symbol, which is not an export. Everything else must be nl_*.
+  symbols=$(awk 'NF >= 3 && $2 != "A" { print $3 }' "$log")
+  if [ -z "$symbols" ]; then
+    fail "the library exports no symbols"
+  else
+    stray=$(printf '%s\n' "$symbols" | sed 's/@.*//' | grep -v '^nl_' | sort -u)
+    if [ -n "$stray" ]; then
+      fail "the library exports symbols other than nl_*:"
+      printf '%s\n' "$stray" | head -n 20 | sed 's/^/  | /'
+    fi
+    printf '%s\n' "$symbols" | grep -q '^nl_get_version$' || fail "nl_get_version is not exported"
+  fi
+fi
+
+# Relocatable: nothing installed may point back into the build or source tree.
+if grep -rIlF -e "$build" -e "$source" "$prefix" >"$log" 2>/dev/null; then
+  fail "installed files refer to the build or source tree:"
+  sed 's/^/  | /' "$log"
+fi
+if readelf -d "$real" 2>/dev/null | grep -E 'R(UN)?PATH' | grep -qF -e "$build" -e "$source"; then
+  fail "the installed library has an RPATH/RUNPATH into the build or source tree"
+fi
+
+# The version the consumers ask for: the installed one, from the installed header.
+version_of() { sed -n "s/^#define NL_VERSION_$1 \([0-9][0-9]*\).*/\1/p" "$prefix/include/navlink/version.h"; }
+major=$(version_of MAJOR)
+minor=$(version_of MINOR)
+patch=$(version_of PATCH)
+if [ -z "$major" ] || [ -z "$minor" ] || [ -z "$patch" ]; then
+  fail "cannot read the version from the installed version.h"
+  finish
+fi
+
+# A sanitized build's library needs the sanitizer runtime in the consumer too.
+sanitize=$(sed -n 's/^NAVLINK_SANITIZE:[A-Z]*=//p' "$build/CMakeCache.txt" 2>/dev/null | tr ';' ',')
+san_flags=()
+if [ -n "$sanitize" ]; then
+  san_flags=("-fsanitize=$sanitize" -fno-omit-frame-pointer)
+fi
+
+# The consumer's sources are copied out of the tree, so nothing next to them can be included by accident.
+consumer_src=$work/consumer-src
+mkdir -p "$consumer_src"
+cp "$source/tests/install/consumer/CMakeLists.txt" "$source/tests/install/consumer/consumer.c" "$consumer_src/"
+
+# Only the installed copy: no package registries, no system prefixes ahead of ours.
+cmake_common=(-DCMAKE_PREFIX_PATH="$prefix" -DCMAKE_FIND_USE_PACKAGE_REGISTRY=OFF
+              -DCMAKE_FIND_USE_SYSTEM_PACKAGE_REGISTRY=OFF -DCMAKE_BUILD_TYPE=Release
+              -DCMAKE_EXPORT_COMPILE_COMMANDS=ON)
+if [ ${#san_flags[@]} -gt 0 ]; then
+  cmake_common+=(-DCMAKE_C_FLAGS="${san_flags[*]}" -DCMAKE_EXE_LINKER_FLAGS="${san_flags[*]}")
+fi
+
+# Checks that a consumer binary loads the installed library, not the build tree's.
+check_loads_installed() {
+  local binary=$1 how=$2
+  shift 2
+  local resolved
+  resolved=$(env "$@" ldd "$binary" 2>/dev/null | awk '/libnavlink\.so/ { print $3 }')
+  case "$resolved" in
+    "$libdir"/*) ;;
+    *) fail "$how consumer resolves libnavlink.so to '$resolved', not into $libdir" ;;
+  esac
+}
+
+# --- (a) CMake: find_package(NavLink major.minor CONFIG REQUIRED) -------------------------------
+cm_build=$work/cmake-consumer
+if step "configure the CMake consumer (find_package(NavLink $major.$minor))" \
+    "$cmake" -S "$consumer_src" -B "$cm_build" -DNAVLINK_CONSUMER_VERSION="$major.$minor" "${cmake_common[@]}"; then
+  found=$(sed -n 's/^NavLink_DIR:PATH=//p' "$cm_build/CMakeCache.txt")
+  [ "$found" = "$libdir/cmake/NavLink" ] || fail "find_package found NavLink in '$found', not in $libdir/cmake/NavLink"
+  if step "build the CMake consumer" "$cmake" --build "$cm_build"; then
+    # Every include directory of the consumer's compile lies in the prefix.
+    includes=$(tr ' ' '\n' <"$cm_build/compile_commands.json" | sed -n -e 's/^-I//p' -e '/^-isystem$/{n;p;}' | sort -u)
+    [ -n "$includes" ] || fail "the CMake consumer compiles without any include directory from the package"
+    for dir in $includes; do
+      case "$dir" in
+        "$prefix"/*) ;;
+        *) fail "the CMake consumer compiles with the include directory $dir, outside $prefix" ;;
+      esac
+    done
+    if step "run the CMake consumer" "$cm_build/consumer"; then
+      grep -q "^NavLink $major\.$minor\.$patch: hit" "$log" || fail "the CMake consumer printed: $(cat "$log")"
+    fi
+    check_loads_installed "$cm_build/consumer" "the CMake"
+  fi
+fi
+
+# A newer minor (or major, from 1.0 on) than the installed one must be refused by the version file.
+if [ "$major" -eq 0 ]; then newer="0.$((minor + 1))"; else newer="$((major + 1)).0"; fi
+if "$cmake" -S "$consumer_src" -B "$work/cmake-consumer-newer" -DNAVLINK_CONSUMER_VERSION="$newer" \
+    "${cmake_common[@]}" >"$log" 2>&1; then
+  fail "find_package(NavLink $newer) accepted the installed $major.$minor.$patch"
+fi
+
+# --- (b) pkg-config -----------------------------------------------------------------------------
+export PKG_CONFIG_PATH=$libdir/pkgconfig
+unset PKG_CONFIG_SYSROOT_DIR
+if step "pkg-config --modversion navlink" pkg-config --modversion navlink; then
+  [ "$(cat "$log")" = "$major.$minor.$patch" ] || fail "pkg-config says version '$(cat "$log")', expected $major.$minor.$patch"
+fi
+if step "pkg-config --cflags --libs navlink" pkg-config --cflags --libs navlink; then
+  read -r -a pc_flags <"$log"
+  # The flags must lead into the prefix (the .pc file is relocatable) and nowhere else in the project.
+  for flag in "${pc_flags[@]}"; do
+    case "$flag" in
+      -I*|-L*)
+        dir=$(cd "${flag:2}" 2>/dev/null && pwd -P)
+        case "$dir" in
+          "$prefix"/*) ;;
+          *) fail "pkg-config flag $flag does not lead into $prefix" ;;
+        esac ;;
+    esac
+  done
+  pc_bin=$work/pkgconfig-consumer
+  if step "build the consumer with cc \$(pkg-config --cflags --libs navlink)" \
+      cc -std=c11 -Wall -Wextra -pedantic -Werror "${san_flags[@]}" "$consumer_src/consumer.c" -o "$pc_bin" \
+      "${pc_flags[@]}" -lm; then
+    if step "run the pkg-config consumer (LD_LIBRARY_PATH=$libdir)" env LD_LIBRARY_PATH="$libdir" "$pc_bin"; then
+      grep -q "^NavLink $major\.$minor\.$patch: hit" "$log" || fail "the pkg-config consumer printed: $(cat "$log")"
+    fi
+    check_loads_installed "$pc_bin" "the pkg-config" LD_LIBRARY_PATH="$libdir"
+  fi
+fi
+
+finish
