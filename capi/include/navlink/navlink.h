@@ -297,6 +297,234 @@ typedef struct nl_segment {
 NL_API nl_status nl_world_segments_blocked(nl_world* world, const nl_segment* segments,
                                            uint32_t count, uint8_t* out_blocked);
 
+/* ---------------------------------------------------------------------------------------------
+ * Navmeshes: walkable polygons for one agent type. A world holds several (one per agent type),
+ * handed over by the host (its engine's navmesh) or built from the level by a builder plugin.
+ * A navmesh never changes once added: replace it by adding a new one and removing the old.
+ * ------------------------------------------------------------------------------------------- */
+
+/** A navmesh in a world. Zero-initialised is the null id. */
+typedef struct nl_navmesh_id {
+    uint32_t index1;
+    uint32_t generation;
+} nl_navmesh_id;
+
+/** Most corners a navmesh polygon may have. */
+#define NL_MAX_POLYGON_VERTICES 16
+
+/** No polygon: a boundary edge's neighbour, a point that found no polygon. */
+#define NL_NO_POLYGON 0xffffffffu
+
+/** The body a navmesh is made for. */
+typedef struct nl_agent_type {
+    float radius;    /**< Metres the navmesh keeps from walls (0.6 by default). */
+    float height;    /**< Headroom needed, metres (2.0). */
+    float max_climb; /**< Highest step walked up without a link, metres (0.9). */
+    float max_slope; /**< Steepest walkable slope, degrees (45). */
+} nl_agent_type;
+
+/** Recast's usual agent: radius 0.6, height 2.0, climb 0.9, slope 45. Thread-safe; never fails. */
+NL_API nl_agent_type nl_default_agent_type(void);
+
+/** A navmesh handed over by the host. Get one from nl_default_navmesh_def(). */
+typedef struct nl_navmesh_def {
+    uint32_t size;                        /**< sizeof(nl_navmesh_def); set by nl_default_navmesh_def(). */
+    const float* vertices;                /**< x y z per vertex, world space; borrowed. */
+    uint32_t vertex_count;
+    uint32_t vertex_stride;               /**< Bytes between vertices; 0 means 12. */
+    const uint32_t* indices;              /**< Polygon corners, polygon after polygon; borrowed. */
+    const uint8_t* polygon_vertex_counts; /**< Corners of each polygon (3..NL_MAX_POLYGON_VERTICES);
+                                               NULL means every polygon is a triangle. Borrowed. */
+    uint32_t polygon_count;
+    const uint8_t* areas;                 /**< Optional area id per polygon; NULL means area 0. Borrowed. */
+    float weld_tolerance;                 /**< Vertices closer than this (metres) become one, so polygons
+                                               that only touch (Unity repeats vertices per triangle) are
+                                               connected. Default 0.001; 0 welds exact duplicates only. */
+    nl_agent_type agent;                  /**< The agent type this navmesh was made for. */
+    /* Optional height detail, as Recast's detail mesh: triangles over each polygon with the surface's
+       real heights, used for point location. All NULL/0 means the polygons are the surface. */
+    const float* detail_vertices;         /**< x y z per detail vertex; borrowed. */
+    uint32_t detail_vertex_count;
+    const uint32_t* detail_triangles;     /**< 3 indices into detail_vertices per triangle; borrowed. */
+    const uint32_t* detail_triangle_starts; /**< polygon_count + 1 offsets: polygon p's detail triangles
+                                                 are [starts[p], starts[p + 1]). Borrowed. */
+} nl_navmesh_def;
+
+/** A def with no geometry, weld tolerance 0.001 and the default agent type. Thread-safe. */
+NL_API nl_navmesh_def nl_default_navmesh_def(void);
+
+/** Adds a navmesh from the host's polygons; everything is copied. The polygons are cleaned up as a
+ *  host's navmesh usually needs: coincident vertices are welded (weld_tolerance); polygons wound
+ *  clockwise seen from above are turned over so that every normal points up; polygons that welding
+ *  collapses or that have no area are dropped; an edge shared by three or more polygons connects none
+ *  of them. nl_navmesh_get_info counts each repair. Adjacency (portals) and boundary edges are built.
+ *  Returns SUCCESS, or a failure with INVALID_ARGUMENT (null pointer, zero counts, a coordinate not
+ *  finite or beyond NL_COORDINATE_LIMIT, an index out of range, a polygon with fewer than 3 or more
+ *  than NL_MAX_POLYGON_VERTICES corners, a polygon not convex seen from above (navmesh polygons are
+ *  2.5D: convex in x-z, heights free, as Recast's), a negative or NaN
+ *  tolerance or agent field, bad detail data, every polygon degenerate: the item is named and nothing
+ *  is added), OUT_OF_MEMORY. Thread-safe. */
+NL_API nl_status nl_navmesh_add(nl_world* world, const nl_navmesh_def* def, nl_navmesh_id* out_id);
+
+/** Removes a navmesh. Queries already running on it finish on their own copy.
+ *  Returns SUCCESS or INVALID_HANDLE. Thread-safe. */
+NL_API nl_status nl_navmesh_remove(nl_world* world, nl_navmesh_id navmesh);
+
+/** Nonzero if `navmesh` is a navmesh of `world`. Thread-safe. */
+NL_API int32_t nl_navmesh_is_valid(const nl_world* world, nl_navmesh_id navmesh);
+
+/** Sizes of a navmesh and what was repaired when it was added. */
+typedef struct nl_navmesh_info {
+    uint32_t size;                     /**< Set by the caller to sizeof(nl_navmesh_info). */
+    uint32_t vertex_count;             /**< After welding. */
+    uint32_t polygon_count;            /**< Polygons kept. */
+    uint32_t portal_count;             /**< Edges shared by exactly two polygons. */
+    uint32_t boundary_edge_count;      /**< Edges owned by exactly one polygon. */
+    uint32_t welded_vertex_count;      /**< Input vertices merged into another. */
+    uint32_t flipped_polygon_count;    /**< Polygons turned over to face up. */
+    uint32_t dropped_polygon_count;    /**< Degenerate polygons dropped. */
+    uint32_t non_manifold_edge_count;  /**< Edges shared by three or more polygons (connect none). */
+    nl_agent_type agent;
+    float bounds_min[3];
+    float bounds_max[3];
+} nl_navmesh_info;
+
+/** Fills `*out_info` (caller-owned; set its `size` first). Returns SUCCESS, INVALID_HANDLE or
+ *  INVALID_ARGUMENT. Thread-safe. */
+NL_API nl_status nl_navmesh_get_info(const nl_world* world, nl_navmesh_id navmesh, nl_navmesh_info* out_info);
+
+/** Copies the navmesh's vertices (x y z each, after welding) into `out_xyz` (caller-owned, room for
+ *  `capacity` vertices, i.e. 3 * capacity floats). `*out_count` always receives the vertex count.
+ *  Returns SUCCESS, or a failure with BUFFER_TOO_SMALL (nothing written), INVALID_HANDLE or
+ *  INVALID_ARGUMENT. Thread-safe. */
+NL_API nl_status nl_navmesh_get_vertices(const nl_world* world, nl_navmesh_id navmesh, float* out_xyz,
+                                         uint32_t capacity, uint32_t* out_count);
+
+/** One polygon: corners counter-clockwise seen from above, and the neighbour across each edge. */
+typedef struct nl_nav_polygon {
+    uint32_t vertex_count;
+    uint32_t vertices[NL_MAX_POLYGON_VERTICES];   /**< Indices into the navmesh's vertices. */
+    uint32_t neighbours[NL_MAX_POLYGON_VERTICES]; /**< Polygon across edge i (corner i to i + 1), or
+                                                       NL_NO_POLYGON for a boundary or non-manifold edge. */
+    uint32_t area;
+    float normal[3];                              /**< Unit, pointing up. */
+    float centre[3];                              /**< Average of the corners. */
+} nl_nav_polygon;
+
+/** Fills `*out_polygon` (caller-owned) with polygon `polygon` (0 .. polygon_count - 1). Returns SUCCESS,
+ *  INVALID_HANDLE, or INVALID_ARGUMENT (null pointer, polygon out of range). Thread-safe. */
+NL_API nl_status nl_navmesh_get_polygon(const nl_world* world, nl_navmesh_id navmesh, uint32_t polygon,
+                                        nl_nav_polygon* out_polygon);
+
+/** An edge of the navmesh's outline: owned by exactly one polygon. Jump and drop links start here. */
+typedef struct nl_boundary_edge {
+    float start[3];   /**< Corners in the polygon's counter-clockwise order. */
+    float end[3];
+    float outward[3]; /**< Unit, in the polygon's plane, perpendicular to the edge, away from the polygon. */
+    float normal[3];  /**< The polygon's unit surface normal. */
+    uint32_t polygon;
+    uint32_t edge;    /**< The polygon's edge index: from corner `edge` to corner `edge + 1`. */
+} nl_boundary_edge;
+
+/** Copies the boundary edges into `out_edges` (caller-owned, `capacity` entries); `*out_count` always
+ *  receives how many there are. Returns SUCCESS, or a failure with BUFFER_TOO_SMALL (nothing
+ *  written), INVALID_HANDLE or INVALID_ARGUMENT. Thread-safe. */
+NL_API nl_status nl_navmesh_get_boundary_edges(const nl_world* world, nl_navmesh_id navmesh,
+                                               nl_boundary_edge* out_edges, uint32_t capacity,
+                                               uint32_t* out_count);
+
+/** Where a point lies on a navmesh. */
+typedef struct nl_nav_point {
+    float point[3];   /**< Closest point on the navmesh surface (detail heights when present). */
+    float distance;   /**< From the query point to `point`, metres. */
+    uint32_t polygon; /**< The polygon holding `point`, or NL_NO_POLYGON when none was in the box. */
+    uint8_t found;    /**< 1 if a polygon was found within the search box, else 0. */
+    uint8_t reserved[3];
+} nl_nav_point;
+
+/** For each of `count` points (x y z each in `points`, borrowed), finds the closest point of the
+ *  navmesh among the polygons that overlap the box `point +- half_extents` (3 floats, each > 0) and
+ *  writes it to `out` (caller-owned, `count` entries). Ties go to the lower polygon index, so the
+ *  answer never depends on thread count. count == 0 succeeds.
+ *  Returns SUCCESS (points not found have found = 0), or a failure with INVALID_HANDLE or
+ *  INVALID_ARGUMENT (null pointer, a point not finite or beyond NL_COORDINATE_LIMIT: its index is
+ *  named; half_extents not positive and finite). Thread-safe; parallel over the world's workers. */
+NL_API nl_status nl_navmesh_find_nearest(const nl_world* world, nl_navmesh_id navmesh, const float* points,
+                                         uint32_t count, const float* half_extents, nl_nav_point* out);
+
+/** Lists the world's navmeshes into `out_ids` (two-call pattern as nl_world_get_meshes). */
+NL_API nl_status nl_world_get_navmeshes(const nl_world* world, nl_navmesh_id* out_ids, uint32_t capacity,
+                                        uint32_t* out_count);
+
+/* ---------------------------------------------------------------------------------------------
+ * Building navmeshes from the level with a navmesh-builder plugin (the Recast builder is built in).
+ * ------------------------------------------------------------------------------------------- */
+
+/** How to build a navmesh. Get one from nl_default_navmesh_build_def(). */
+typedef struct nl_navmesh_build_def {
+    uint32_t size;              /**< sizeof(nl_navmesh_build_def). */
+    const char* builder;        /**< Name of a navmesh-builder plugin, NUL-terminated; NULL = "recast". */
+    nl_agent_type agent;        /**< The agent type to build for. */
+    const void* settings;       /**< Optional builder-specific settings struct starting with
+                                     `uint32_t size` (nl_recast_settings for "recast"); borrowed. */
+    const char* settings_json;  /**< Optional settings as a JSON object (UTF-8, `settings_json_length`
+                                     bytes), applied over `settings` or the defaults; borrowed. */
+    size_t settings_json_length;
+} nl_navmesh_build_def;
+
+/** Builder "recast", default agent type, default settings. Thread-safe; never fails. */
+NL_API nl_navmesh_build_def nl_default_navmesh_build_def(void);
+
+/** Builds a navmesh from every mesh registered in the world (under their current transforms) and adds
+ *  it as nl_navmesh_add would. Returns SUCCESS, or a failure with NOT_FOUND (no builder of that name,
+ *  or no walkable surface in the level), INVALID_ARGUMENT (bad agent or settings, the field named),
+ *  PARSE_ERROR (malformed settings JSON), OUT_OF_MEMORY, INTERNAL_ERROR (the builder failed).
+ *  Thread-safe; long-running (tens of milliseconds per thousand triangles). */
+NL_API nl_status nl_navmesh_build(nl_world* world, const nl_navmesh_build_def* def, nl_navmesh_id* out_id);
+
+/* ---------------------------------------------------------------------------------------------
+ * Plugins (plugins/include/navlink/plugin.h has the plugin side of the ABI).
+ * ------------------------------------------------------------------------------------------- */
+
+/** A plugin loaded in a world. Zero-initialised is the null id. */
+typedef struct nl_plugin_id {
+    uint32_t index1;
+    uint32_t generation;
+} nl_plugin_id;
+
+/** Plugin kinds (bits of nl_plugin_description.kinds). */
+#define NL_PLUGIN_NAVMESH_BUILDER 0x1u
+#define NL_PLUGIN_LINK_KIND 0x2u
+#define NL_PLUGIN_PATH_MODIFIER 0x4u
+
+/** Loads a plugin from a shared library (`path`, borrowed NUL-terminated UTF-8) into the world: finds
+ *  its entry symbol, negotiates the ABI version and registers what it provides. The library stays
+ *  loaded until the world is destroyed.
+ *  Returns SUCCESS, or a failure with NOT_FOUND (no such file, or no entry symbol: the message says
+ *  which), IO_ERROR (the file is not a loadable library; the loader's message is included),
+ *  VERSION_MISMATCH (the plugin speaks no ABI version this library does), INVALID_ARGUMENT (a plugin
+ *  with that name is already loaded, or the plugin described itself wrongly). Thread-safe. */
+NL_API nl_status nl_plugin_load(nl_world* world, const char* path, nl_plugin_id* out_id);
+
+/** What a loaded plugin is. Strings are owned by the world and live until it is destroyed. */
+typedef struct nl_plugin_description {
+    uint32_t size;          /**< Set by the caller to sizeof(nl_plugin_description). */
+    uint32_t abi_version;   /**< The ABI version agreed with the plugin. */
+    uint32_t kinds;         /**< NL_PLUGIN_* bits. */
+    uint32_t builtin;       /**< 1 for plugins compiled into the library. */
+    const char* name;
+    const char* version;
+    const char* description;
+} nl_plugin_description;
+
+/** Describes a plugin. Returns SUCCESS, INVALID_HANDLE or INVALID_ARGUMENT. Thread-safe. */
+NL_API nl_status nl_plugin_get_description(const nl_world* world, nl_plugin_id plugin,
+                                           nl_plugin_description* out_description);
+
+/** Lists the world's plugins, built-in ones first (two-call pattern as nl_world_get_meshes). */
+NL_API nl_status nl_world_get_plugins(const nl_world* world, nl_plugin_id* out_ids, uint32_t capacity,
+                                      uint32_t* out_count);
+
 #ifdef __cplusplus
 } /* extern "C" */
 #endif

@@ -1,0 +1,45 @@
+/*
+ * Settings of the built-in Recast navmesh builder (builder name "recast"), with Recast's usual
+ * defaults (those of RecastDemo's solo mesh). Pass a filled struct as nl_navmesh_build_def.settings,
+ * or the same fields as JSON in settings_json (keys as the field names below).
+ */
+#ifndef NAVLINK_RECAST_H
+#define NAVLINK_RECAST_H
+
+#include "navlink/navlink.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/** How Recast partitions the walkable area into regions. */
+#define NL_RECAST_PARTITION_WATERSHED 0u /**< Best polygons; slowest (the default). */
+#define NL_RECAST_PARTITION_MONOTONE 1u  /**< Fastest; long thin polygons. */
+#define NL_RECAST_PARTITION_LAYERS 2u    /**< Between the two; good for tiles. */
+
+typedef struct nl_recast_settings {
+    uint32_t size;                    /**< sizeof(nl_recast_settings); set by nl_default_recast_settings(). */
+    float cell_size;                  /**< Voxel width, metres (0.3). */
+    float cell_height;                /**< Voxel height, metres (0.2). */
+    float region_min_size;            /**< Smallest region kept, in cells per side (8). */
+    float region_merge_size;          /**< Regions smaller than this merge with neighbours, cells per side (20). */
+    float edge_max_length;            /**< Longest polygon edge along walls, metres (12); 0 = no limit. */
+    float edge_max_error;             /**< Contour simplification error, cells (1.3). */
+    uint32_t vertices_per_polygon;    /**< 3..6 (6). */
+    float detail_sample_distance;     /**< Detail mesh sample spacing, cells (6); < 0.9 disables. */
+    float detail_sample_max_error;    /**< Detail mesh height error, cells of cell_height (1). */
+    uint32_t partition;               /**< NL_RECAST_PARTITION_* (watershed). */
+    uint8_t filter_low_hanging_obstacles;     /**< 1 (default): walk over obstacles lower than max_climb. */
+    uint8_t filter_ledge_spans;               /**< 1 (default): no walkable spans at ledges. */
+    uint8_t filter_walkable_low_height_spans; /**< 1 (default): no spans with less headroom than height. */
+    uint8_t reserved;
+} nl_recast_settings;
+
+/** Recast's usual defaults. Thread-safe; never fails. */
+NL_API nl_recast_settings nl_default_recast_settings(void);
+
+#ifdef __cplusplus
+} /* extern "C" */
+#endif
+
+#endif /* NAVLINK_RECAST_H */

@@ -1,0 +1,91 @@
+/*
+ * NavLink plugin ABI: what a plugin library exports and what the host offers it.
+ *
+ * A plugin exports one function, `nl_plugin_entry` (NL_PLUGIN_ENTRY_SYMBOL), of type
+ * nl_plugin_entry_fn. The host calls it once with the highest ABI version it speaks and a table of host
+ * functions; the plugin fills an nl_plugin_info with the version it will speak (at most the host's),
+ * its name and what it provides, or refuses with NL_STATUS_VERSION_MISMATCH. Versions are negotiated
+ * downward, as Vulkan layers do: a newer host still loads an older plugin.
+ *
+ * Plugins compiled into the host program are registered with nl_plugin_register instead of loaded.
+ * All plugin functions may be called from any thread and concurrently; a plugin guards its own state.
+ */
+#ifndef NAVLINK_PLUGIN_H
+#define NAVLINK_PLUGIN_H
+
+#include "navlink/navlink.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/** The plugin ABI version this header describes. */
+#define NL_PLUGIN_ABI_VERSION 1u
+
+/** The name of the entry function a plugin library exports. */
+#define NL_PLUGIN_ENTRY_SYMBOL "nl_plugin_entry"
+
+/** Functions the host offers a plugin. `context` is passed back as the first argument of each. Valid
+ *  for as long as the plugin is loaded. */
+typedef struct nl_plugin_host {
+    uint32_t size;        /**< sizeof(nl_plugin_host) of the host. */
+    uint32_t abi_version; /**< The host's highest ABI version. */
+    void* context;
+
+    /** Logs through the world's log callback. */
+    void (*log)(void* context, nl_log_level level, const char* message);
+
+    /** Gives the reason of the failure the plugin is about to return, naming the bad setting or input
+     *  (e.g. "settings_json: cell_size must be > 0"); the host makes it the failing call's last error
+     *  message. The host copies `message`. */
+    void (*set_error)(void* context, const char* message);
+
+    /** Copies the world-space triangles of every registered mesh (under current transforms): vertex
+     *  positions into `vertices` (room for `vertex_capacity` vertices, 3 floats each) and 3 indices per
+     *  triangle into `indices` (room for `triangle_capacity` triangles). The counts are always written;
+     *  BUFFER_TOO_SMALL (nothing copied) when either buffer is short, so call once with capacity 0. */
+    nl_status (*get_level_triangles)(void* context, float* vertices, uint32_t vertex_capacity,
+                                     uint32_t* out_vertex_count, uint32_t* indices, uint32_t triangle_capacity,
+                                     uint32_t* out_triangle_count);
+} nl_plugin_host;
+
+/** Receives a built navmesh; the host copies it before returning. */
+typedef nl_status nl_navmesh_sink_fn(void* sink_context, const nl_navmesh_def* navmesh);
+
+/** What a navmesh-builder plugin provides. */
+typedef struct nl_navmesh_builder {
+    /** Builds a navmesh for def->agent from the host's level triangles, with the builder's settings
+     *  (def->settings and/or def->settings_json), and hands it to `sink` exactly once on success.
+     *  Returns what the sink returned, or its own failure (NOT_FOUND: no walkable surface;
+     *  INVALID_ARGUMENT / PARSE_ERROR: bad settings, the field named through host->set_error). */
+    nl_status (*build)(void* plugin_state, const nl_plugin_host* host, const nl_navmesh_build_def* def,
+                       nl_navmesh_sink_fn* sink, void* sink_context);
+} nl_navmesh_builder;
+
+/** What a plugin tells the host about itself. The host zero-fills it and sets `size` first. */
+typedef struct nl_plugin_info {
+    uint32_t size;                 /**< Set by the host to sizeof(nl_plugin_info). */
+    uint32_t abi_version;          /**< Set by the plugin: the version it will speak, <= the host's. */
+    const char* name;              /**< Unique within a world, e.g. "recast". Static storage. */
+    const char* version;           /**< The plugin's own version. Static storage. */
+    const char* description;       /**< One line. Static storage. */
+    uint32_t kinds;                /**< NL_PLUGIN_* bits: which of the tables below are filled. */
+    void* state;                   /**< The plugin's own state, passed to its functions. */
+    void (*destroy)(void* state);  /**< Called once when the world is destroyed; may be NULL. */
+    nl_navmesh_builder navmesh_builder;
+} nl_plugin_info;
+
+/** The entry function a plugin exports. Returns SUCCESS after filling `out_info`, or
+ *  NL_STATUS_FAILURE | NL_STATUS_VERSION_MISMATCH when it speaks no version <= host_abi_version. */
+typedef nl_status nl_plugin_entry_fn(uint32_t host_abi_version, const nl_plugin_host* host,
+                                     nl_plugin_info* out_info);
+
+/** Registers a plugin compiled into the host program, through its entry function. Errors as
+ *  nl_plugin_load, without the file ones. Thread-safe. */
+NL_API nl_status nl_plugin_register(nl_world* world, nl_plugin_entry_fn* entry, nl_plugin_id* out_id);
+
+#ifdef __cplusplus
+} /* extern "C" */
+#endif
+
+#endif /* NAVLINK_PLUGIN_H */
