@@ -7,6 +7,7 @@
 #include <cstring>
 #include <new>
 #include <string>
+#include <vector>
 
 #include "navlink/navlink.h"
 #include "util/error.h"
@@ -19,6 +20,9 @@ nl_status to_status(ErrorCode code) noexcept;
 
 // Records the outcome of the current call on this thread (and logs failures through `world`).
 nl_status record(const char* function, const nl_world* world, nl_status status, const char* message) noexcept;
+
+// Sends a message to the world's log callback if it wants that level.
+void log(const nl_world* world, nl_log_level level, nl_status status, const std::string& message) noexcept;
 inline nl_status record_success() noexcept { return record(nullptr, nullptr, NL_STATUS_SUCCESS, ""); }
 
 template <typename Body>
@@ -40,6 +44,20 @@ nl_status guarded(const char* function, const nl_world* world, Body&& body) noex
 // Throws InvalidArgument naming `name` when `pointer` is null.
 inline void require(const void* pointer, const char* name) {
     if (!pointer) fail(ErrorCode::InvalidArgument, name, " is null");
+}
+
+// The two-call list pattern: a NULL buffer asks only for the count (a success); a buffer with too
+// little capacity is BUFFER_TOO_SMALL, with the count still written so the caller can grow it.
+template <typename Item, typename Out, typename Convert>
+void list_into(const std::vector<Item>& items, Out* out, uint32_t capacity, uint32_t* out_count, const char* out_name,
+               Convert&& convert) {
+    require(out_count, "out_count");
+    if (!out && capacity > 0) fail(ErrorCode::InvalidArgument, out_name, " is null but capacity is ", capacity);
+    *out_count = static_cast<uint32_t>(items.size());
+    if (!out) return;
+    if (items.size() > capacity)
+        fail(ErrorCode::BufferTooSmall, "capacity is ", capacity, " but ", items.size(), " entries are needed");
+    for (size_t i = 0; i < items.size(); ++i) out[i] = convert(items[i]);
 }
 
 // Growable structs: a caller built against an older header passes a smaller `size`. Fields it does

@@ -53,9 +53,16 @@ nl::TriangleMesh read_def_geometry(const nl_mesh_def& def) {
     return mesh;
 }
 
-nl_mesh_id add_mesh(nl_world& world, const nl::TriangleMesh& mesh, const nl_mesh_def& def) {
+nl_mesh_id add_mesh(nl_world& world, const nl::TriangleMesh& mesh, const nl_mesh_def& def, const char* function) {
     const nl::Transform transform = read_transform(def.transform, "def->transform");
-    return to_id(world.level->add_mesh(mesh, transform, def.flags, def.user_data, "def->"));
+    const nl::Handle h = world.level->add_mesh(mesh, transform, def.flags, def.user_data, "def->");
+    const nl::MeshInfo info = world.level->info(h);
+    if (info.degenerate_triangle_count > 0) {
+        nl::capi::log(&world, NL_LOG_WARNING, NL_STATUS_SUCCESS,
+                      nl::concat(function, ": skipped ", info.degenerate_triangle_count, " degenerate triangles of ",
+                                 info.degenerate_triangle_count + info.triangle_count));
+    }
+    return to_id(h);
 }
 
 // Options of an OBJ load: the def without geometry.
@@ -113,7 +120,7 @@ NL_API nl_status nl_mesh_add(nl_world* world, const nl_mesh_def* def, nl_mesh_id
         require(def, "def");
         require(out_id, "out_id");
         const nl_mesh_def settings = read_def(*def);
-        *out_id = add_mesh(w, read_def_geometry(settings), settings);
+        *out_id = add_mesh(w, read_def_geometry(settings), settings, "nl_mesh_add");
     });
 }
 
@@ -124,7 +131,7 @@ NL_API nl_status nl_mesh_add_obj_file(nl_world* world, const char* path, const n
         require(path, "path");
         require(out_id, "out_id");
         const nl_mesh_def options = obj_options(def);
-        *out_id = add_mesh(w, nl::read_obj_file(path), options);
+        *out_id = add_mesh(w, nl::read_obj_file(path), options, "nl_mesh_add_obj_file");
     });
 }
 
@@ -135,7 +142,7 @@ NL_API nl_status nl_mesh_add_obj_memory(nl_world* world, const char* data, size_
         if (length > 0) require(data, "data");
         require(out_id, "out_id");
         const nl_mesh_def options = obj_options(def);
-        *out_id = add_mesh(w, nl::read_obj_text(std::string_view(data ? data : "", length)), options);
+        *out_id = add_mesh(w, nl::read_obj_text(std::string_view(data ? data : "", length)), options, "nl_mesh_add_obj_memory");
     });
 }
 
@@ -179,14 +186,7 @@ NL_API nl_status nl_mesh_get_info(const nl_world* world, nl_mesh_id mesh, nl_mes
 NL_API nl_status nl_world_get_meshes(const nl_world* world, nl_mesh_id* out_ids, uint32_t capacity,
                                      uint32_t* out_count) {
     return guarded("nl_world_get_meshes", world, [&] {
-        const nl_world& w = deref(world);
-        require(out_count, "out_count");
-        if (capacity > 0) require(out_ids, "out_ids");
-        const std::vector<nl::Handle> meshes = w.level->meshes();
-        *out_count = static_cast<uint32_t>(meshes.size());
-        if (meshes.size() > capacity)
-            fail(ErrorCode::BufferTooSmall, "capacity is ", capacity, " but there are ", meshes.size(), " meshes");
-        for (size_t i = 0; i < meshes.size(); ++i) out_ids[i] = to_id(meshes[i]);
+        nl::capi::list_into(deref(world).level->meshes(), out_ids, capacity, out_count, "out_ids", to_id);
     });
 }
 

@@ -92,6 +92,12 @@ Handle Level::add_mesh(const TriangleMesh& input, const Transform& transform, ui
     mesh.world_bounds = bounds_of(mesh.object, transform);
     check_placement(mesh.world_bounds);
 
+    try {
+        if (flags & kMeshMovable) prepare_movable(mesh);
+    } catch (...) {
+        detach(mesh);
+        throw;
+    }
     std::unique_lock lock(mutex_);
     try {
         if (flags & kMeshMovable) attach_movable(mesh);
@@ -129,7 +135,7 @@ void Level::upload_static(Mesh& mesh) {
     static_dirty_ = true;
 }
 
-void Level::attach_movable(Mesh& mesh) {
+void Level::prepare_movable(Mesh& mesh) {
     mesh.own_scene = rtcNewScene(device_);
     rtcSetSceneFlags(mesh.own_scene, RTC_SCENE_FLAG_ROBUST);
     RTCGeometry g = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
@@ -147,7 +153,10 @@ void Level::attach_movable(Mesh& mesh) {
     rtcCommitGeometry(g);
     mesh.geometry_id = rtcAttachGeometry(mesh.own_scene, g);
     tasks_.execute([&] { rtcCommitScene(mesh.own_scene); });
+    check_embree("building a movable mesh");
+}
 
+void Level::attach_movable(Mesh& mesh) {
     mesh.instance = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_INSTANCE);
     if (!mesh.instance) check_embree("creating an instance");
     rtcSetGeometryInstancedScene(mesh.instance, mesh.own_scene);
@@ -243,7 +252,7 @@ TriangleMesh Level::world_triangles() const {
     return out;
 }
 
-std::shared_lock<std::shared_mutex> Level::lock_committed() const {
+std::shared_lock<SharedMutex> Level::lock_committed() const {
     for (;;) {
         std::shared_lock shared(mutex_);
         if (!static_dirty_ && !top_dirty_) return shared;
@@ -272,7 +281,7 @@ RayHit Level::resolve_hit(const RTCRayHit& rh, const Ray& ray) const {
     Vec3 normal(rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z);
     if (!owner.is_static_group) normal = mesh.normal_to_world * normal;
     hit.hit = true;
-    hit.distance = rh.ray.tfar;
+    hit.distance = rh.ray.tfar + 0.0f;  // a ray starting on a surface reports +0, not -0
     hit.point = ray.origin + ray.direction * rh.ray.tfar;
     hit.normal = normal.normalized();
     hit.mesh = h;

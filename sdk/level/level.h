@@ -15,6 +15,7 @@
 #include "level/geometry.h"
 #include "level/mesh_validation.h"
 #include "util/handle.h"
+#include "util/shared_mutex.h"
 #include "util/task_system.h"
 
 namespace nl {
@@ -103,10 +104,12 @@ private:
     };
 
     void upload_static(Mesh& mesh);
+    // Builds a movable mesh's own scene and BVH; needs no lock, so queries keep running meanwhile.
+    void prepare_movable(Mesh& mesh);
     void attach_movable(Mesh& mesh);
     void detach(Mesh& mesh);
     // Takes a shared lock on a committed scene; commits pending edits first.
-    std::shared_lock<std::shared_mutex> lock_committed() const;
+    std::shared_lock<SharedMutex> lock_committed() const;
     void check_embree(const char* what) const;
     RayHit resolve_hit(const RTCRayHit& rh, const Ray& ray) const;
 
@@ -120,7 +123,7 @@ private:
     std::vector<Handle> static_geometry_owner_;  // by geomID in static_scene_
     std::vector<InstanceOwner> instance_owner_;  // by geomID in top_
 
-    mutable std::shared_mutex mutex_;
+    mutable SharedMutex mutex_;
     mutable bool static_dirty_ = false;
     mutable bool top_dirty_ = true;
 };

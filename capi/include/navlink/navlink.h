@@ -5,8 +5,9 @@
  * (fixed-width integers, floats, pointers), so C#, Rust and Python bind it as is.
  *
  * Conventions (docs/c-api.md explains them with examples):
- * - Functions return an nl_status. On failure they write nothing to their outputs, change no state,
- *   and leave a message naming the failing argument in the calling thread's last error
+ * - Functions return an nl_status. On failure they write nothing to their outputs (except the count
+ *   of a list that did not fit), change no state, and leave a message naming the failing argument
+ *   in the calling thread's last error
  *   (nl_get_last_error_message) and, if the world has one, pass it to the world's log callback.
  * - Objects are referred to by ids passed by value: {index1, generation}; the all-zero id is null.
  *   An id whose object was removed is stale: using it returns NL_STATUS_INVALID_HANDLE, never crashes.
@@ -84,8 +85,9 @@ typedef uint32_t nl_status;
  *  The string is owned by the library and lives as long as it is loaded. Thread-safe. */
 NL_API const char* nl_status_string(nl_status status);
 
-/** The status returned by the most recent nl_* call on the calling thread (nl_status_string,
- *  nl_get_version and these two functions excluded). Thread-safe; the record is per thread. */
+/** The status returned by the most recent nl_* call on the calling thread that returns a status or
+ *  takes a world (nl_status_string, nl_get_version, the nl_default_* functions and these two do not
+ *  touch the record). Thread-safe; the record is per thread. */
 NL_API nl_status nl_get_last_status(void);
 
 /** The message of the most recent nl_* call on the calling thread: empty if it succeeded, else one
@@ -127,7 +129,8 @@ typedef struct nl_world_def {
                                   0 or 1: everything runs on the calling thread. */
     nl_log_fn* log_fn;       /**< Optional. Receives every error (and, by log_level, more). */
     void* log_user;          /**< Passed back to log_fn as `user`; borrowed, never dereferenced. */
-    nl_log_level log_level;  /**< Most verbose level passed to log_fn. Default NL_LOG_WARNING. */
+    nl_log_level log_level;  /**< Most verbose level passed to log_fn. Default NL_LOG_WARNING: errors,
+                                  and warnings such as repaired input (skipped degenerate triangles). */
 } nl_world_def;
 
 /** A def with every field at its default. Thread-safe; never fails. */
@@ -239,10 +242,11 @@ typedef struct nl_mesh_info {
  *  id) or INVALID_ARGUMENT. Thread-safe. */
 NL_API nl_status nl_mesh_get_info(const nl_world* world, nl_mesh_id mesh, nl_mesh_info* out_info);
 
-/** Lists the ids of all registered meshes into `out_ids` (caller-owned, `capacity` entries; may be
- *  NULL when capacity is 0). `*out_count` receives the number of meshes in every case, so a first call
- *  with capacity 0 sizes the buffer. Returns SUCCESS, or a failure with BUFFER_TOO_SMALL (nothing is
- *  written to out_ids) or INVALID_ARGUMENT. Thread-safe. */
+/** Lists the ids of all registered meshes (the two-call pattern of every list): with out_ids NULL,
+ *  only `*out_count` is written (the number of meshes) and the call succeeds; with a buffer
+ *  (caller-owned, `capacity` entries) the ids are copied, or, if they do not fit, the call fails with
+ *  BUFFER_TOO_SMALL, copies nothing and still writes `*out_count`. INVALID_ARGUMENT for a null
+ *  world or out_count. Thread-safe. */
 NL_API nl_status nl_world_get_meshes(const nl_world* world, nl_mesh_id* out_ids, uint32_t capacity,
                                      uint32_t* out_count);
 
@@ -394,9 +398,8 @@ typedef struct nl_navmesh_info {
 NL_API nl_status nl_navmesh_get_info(const nl_world* world, nl_navmesh_id navmesh, nl_navmesh_info* out_info);
 
 /** Copies the navmesh's vertices (x y z each, after welding) into `out_xyz` (caller-owned, room for
- *  `capacity` vertices, i.e. 3 * capacity floats). `*out_count` always receives the vertex count.
- *  Returns SUCCESS, or a failure with BUFFER_TOO_SMALL (nothing written), INVALID_HANDLE or
- *  INVALID_ARGUMENT. Thread-safe. */
+ *  `capacity` vertices, i.e. 3 * capacity floats), with the two-call pattern of nl_world_get_meshes.
+ *  Returns SUCCESS, or a failure with BUFFER_TOO_SMALL, INVALID_HANDLE or INVALID_ARGUMENT. Thread-safe. */
 NL_API nl_status nl_navmesh_get_vertices(const nl_world* world, nl_navmesh_id navmesh, float* out_xyz,
                                          uint32_t capacity, uint32_t* out_count);
 
@@ -426,9 +429,9 @@ typedef struct nl_boundary_edge {
     uint32_t edge;    /**< The polygon's edge index: from corner `edge` to corner `edge + 1`. */
 } nl_boundary_edge;
 
-/** Copies the boundary edges into `out_edges` (caller-owned, `capacity` entries); `*out_count` always
- *  receives how many there are. Returns SUCCESS, or a failure with BUFFER_TOO_SMALL (nothing
- *  written), INVALID_HANDLE or INVALID_ARGUMENT. Thread-safe. */
+/** Copies the boundary edges into `out_edges` (caller-owned, `capacity` entries), with the two-call
+ *  pattern of nl_world_get_meshes. Returns SUCCESS, or a failure with BUFFER_TOO_SMALL, INVALID_HANDLE
+ *  or INVALID_ARGUMENT. Thread-safe. */
 NL_API nl_status nl_navmesh_get_boundary_edges(const nl_world* world, nl_navmesh_id navmesh,
                                                nl_boundary_edge* out_edges, uint32_t capacity,
                                                uint32_t* out_count);

@@ -1,0 +1,101 @@
+// A navmesh: convex (seen from above) polygons facing up, their adjacency, outline and surface
+// detail, in flat arrays. Immutable once built, so any number of threads may read it and a query
+// can keep its own reference (shared_ptr) while the world replaces it.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "level/geometry.h"
+#include "navmesh/polygon_grid.h"
+
+namespace nl {
+
+constexpr uint32_t kNoPolygon = 0xffffffffu;
+constexpr uint32_t kMaxPolygonVertices = 16;
+
+struct AgentType {
+    float radius = 0.6f;
+    float height = 2.0f;
+    float max_climb = 0.9f;
+    float max_slope = 45.0f;  // degrees
+};
+
+struct BoundaryEdge {
+    Vec3 start;    // in the polygon's counter-clockwise order
+    Vec3 end;
+    Vec3 outward;  // unit, in the polygon's plane, away from it
+    Vec3 normal;   // the polygon's unit normal
+    uint32_t polygon;
+    uint32_t edge;  // from corner `edge` to corner `edge + 1`
+};
+
+// What the builder repaired, for the host to see.
+struct NavMeshRepairs {
+    uint32_t welded_vertices = 0;
+    uint32_t flipped_polygons = 0;
+    uint32_t dropped_polygons = 0;
+    uint32_t non_manifold_edges = 0;
+};
+
+struct NavPoint {
+    bool found = false;
+    Vec3 point = Vec3::Zero();
+    float distance = 0.0f;
+    uint32_t polygon = kNoPolygon;
+};
+
+class NavMesh {
+public:
+    uint32_t polygon_count() const { return static_cast<uint32_t>(first_corner_.size() - 1); }
+    uint32_t corner_count(uint32_t p) const { return first_corner_[p + 1] - first_corner_[p]; }
+    // Vertex index of corner `k` of polygon `p`.
+    uint32_t corner(uint32_t p, uint32_t k) const { return corners_[first_corner_[p] + k]; }
+    // Polygon across the edge from corner k to k + 1, or kNoPolygon.
+    uint32_t neighbour(uint32_t p, uint32_t k) const { return neighbours_[first_corner_[p] + k]; }
+    const Vec3& vertex(uint32_t v) const { return vertices_[v]; }
+    uint32_t vertex_count() const { return static_cast<uint32_t>(vertices_.size()); }
+    uint8_t area(uint32_t p) const { return areas_[p]; }
+    const Vec3& normal(uint32_t p) const { return normals_[p]; }
+    Vec3 centre(uint32_t p) const;
+    const Aabb& polygon_bounds(uint32_t p) const { return polygon_bounds_[p]; }
+
+    const std::vector<BoundaryEdge>& boundary_edges() const { return boundary_edges_; }
+    uint32_t portal_count() const { return portal_count_; }
+    const AgentType& agent() const { return agent_; }
+    const Aabb& bounds() const { return bounds_; }
+    const NavMeshRepairs& repairs() const { return repairs_; }
+
+    // Closest point on the surface of the polygons overlapping `point +- half_extents`.
+    NavPoint find_nearest(const Vec3& point, const Vec3& half_extents) const;
+    // The same by visiting every polygon: the reference the grid is tested against.
+    NavPoint find_nearest_brute_force(const Vec3& point, const Vec3& half_extents) const;
+    // Closest point on polygon p's surface (its detail triangles, or its own fan).
+    Vec3 closest_point_on_polygon(uint32_t p, const Vec3& point) const;
+
+    size_t memory_bytes() const;
+
+private:
+    friend class NavMeshBuilder;
+
+    std::vector<Vec3> vertices_;
+    std::vector<uint32_t> first_corner_;  // polygon_count + 1 offsets into corners_ / neighbours_
+    std::vector<uint32_t> corners_;
+    std::vector<uint32_t> neighbours_;
+    std::vector<uint8_t> areas_;
+    std::vector<Vec3> normals_;
+    std::vector<Aabb> polygon_bounds_;
+    // Surface: detail triangles (indices into detail_vertices_) per polygon, when the source had them.
+    std::vector<Vec3> detail_vertices_;
+    std::vector<Triangle> detail_triangles_;
+    std::vector<uint32_t> first_detail_triangle_;  // empty when there is no detail
+    std::vector<BoundaryEdge> boundary_edges_;
+    PolygonGrid grid_;
+    uint32_t portal_count_ = 0;
+    AgentType agent_;
+    Aabb bounds_;
+    NavMeshRepairs repairs_;
+};
+
+}  // namespace nl

@@ -1,0 +1,288 @@
+#include "navmesh/navmesh_builder.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+#include "level/mesh_validation.h"
+#include "navmesh/vertex_welder.h"
+#include "util/error.h"
+
+namespace nl {
+
+class NavMeshBuilder {
+public:
+    NavMeshBuilder(const NavMeshInput& input, const char* prefix) : in_(input), prefix_(prefix) {}
+
+    std::shared_ptr<const NavMesh> build() {
+        validate();
+        weld();
+        make_polygons();
+        connect();
+        finish();
+        return std::move(mesh_);
+    }
+
+private:
+    uint32_t input_polygon_count() const {
+        return in_.polygon_sizes.empty() ? static_cast<uint32_t>(in_.indices.size() / 3)
+                                         : static_cast<uint32_t>(in_.polygon_sizes.size());
+    }
+
+    void validate() const {
+        static const char axis[] = {'x', 'y', 'z'};
+        if (in_.vertices.empty()) fail(ErrorCode::InvalidArgument, prefix_, "vertex_count is 0");
+        if (in_.indices.empty()) fail(ErrorCode::InvalidArgument, prefix_, "polygon_count is 0");
+        for (size_t i = 0; i < in_.vertices.size(); ++i) {
+            for (int k = 0; k < 3; ++k) {
+                const float value = in_.vertices[i][k];
+                if (!std::isfinite(value) || std::fabs(value) > kCoordinateLimit)
+                    fail(ErrorCode::InvalidArgument, prefix_, "vertices[", i, "].", axis[k], " = ", value,
+                         " is not finite or beyond the coordinate limit");
+            }
+        }
+        if (in_.polygon_sizes.empty() && in_.indices.size() % 3 != 0)
+            fail(ErrorCode::InvalidArgument, prefix_, "indices has ", in_.indices.size(), " entries, not 3 per triangle");
+        size_t expected = 0;
+        for (size_t p = 0; p < in_.polygon_sizes.size(); ++p) {
+            const uint32_t n = in_.polygon_sizes[p];
+            if (n < 3 || n > kMaxPolygonVertices)
+                fail(ErrorCode::InvalidArgument, prefix_, "polygon_vertex_counts[", p, "] = ", n, " (must be 3..",
+                     kMaxPolygonVertices, ")");
+            expected += n;
+        }
+        if (!in_.polygon_sizes.empty() && expected != in_.indices.size())
+            fail(ErrorCode::InvalidArgument, prefix_, "indices has ", in_.indices.size(), " entries but the polygon sizes add up to ",
+                 expected);
+        for (size_t i = 0; i < in_.indices.size(); ++i) {
+            if (in_.indices[i] >= in_.vertices.size())
+                fail(ErrorCode::InvalidArgument, prefix_, "indices[", i, "] = ", in_.indices[i],
+                     " is out of range (vertex_count = ", in_.vertices.size(), ")");
+        }
+        if (!in_.areas.empty() && in_.areas.size() != input_polygon_count())
+            fail(ErrorCode::InvalidArgument, prefix_, "areas has ", in_.areas.size(), " entries for ", input_polygon_count(),
+                 " polygons");
+        if (!(in_.weld_tolerance >= 0.0f && in_.weld_tolerance <= 1.0f))
+            fail(ErrorCode::InvalidArgument, prefix_, "weld_tolerance is ", in_.weld_tolerance, " (must be 0..1 m)");
+        validate_agent(in_.agent, (std::string(prefix_) + "agent.").c_str());
+        validate_detail();
+    }
+
+    void validate_detail() const {
+        if (in_.detail_starts.empty()) {
+            if (!in_.detail_indices.empty() || !in_.detail_vertices.empty())
+                fail(ErrorCode::InvalidArgument, prefix_, "detail triangles are given without detail_triangle_starts");
+            return;
+        }
+        if (in_.detail_starts.size() != input_polygon_count() + 1)
+            fail(ErrorCode::InvalidArgument, prefix_, "detail_triangle_starts needs polygon_count + 1 = ",
+                 input_polygon_count() + 1, " entries");
+        const uint32_t triangles = static_cast<uint32_t>(in_.detail_indices.size() / 3);
+        if (in_.detail_starts.front() != 0 || in_.detail_starts.back() != triangles)
+            fail(ErrorCode::InvalidArgument, prefix_, "detail_triangle_starts must run from 0 to the detail triangle count");
+        for (size_t p = 0; p + 1 < in_.detail_starts.size(); ++p) {
+            if (in_.detail_starts[p + 1] <= in_.detail_starts[p])
+                fail(ErrorCode::InvalidArgument, prefix_, "detail_triangle_starts[", p + 1,
+                     "]: every polygon needs at least one detail triangle, in order");
+        }
+        for (size_t i = 0; i < in_.detail_vertices.size(); ++i) {
+            if (!within_coordinate_limit(in_.detail_vertices[i]))
+                fail(ErrorCode::InvalidArgument, prefix_, "detail_vertices[", i, "] is not finite or beyond the coordinate limit");
+        }
+        for (size_t i = 0; i < in_.detail_indices.size(); ++i) {
+            if (in_.detail_indices[i] >= in_.detail_vertices.size())
+                fail(ErrorCode::InvalidArgument, prefix_, "detail_triangles[", i, "] = ", in_.detail_indices[i],
+                     " is out of range (detail_vertex_count = ", in_.detail_vertices.size(), ")");
+        }
+    }
+
+    // Welded vertices, renumbered densely in input order.
+    void weld() {
+        const std::vector<uint32_t> representative = weld_vertices(in_.vertices, in_.weld_tolerance);
+        remap_.assign(in_.vertices.size(), kNoPolygon);
+        for (uint32_t i = 0; i < representative.size(); ++i) {
+            if (representative[i] != i) {
+                ++mesh_->repairs_.welded_vertices;
+                continue;
+            }
+            remap_[i] = static_cast<uint32_t>(mesh_->vertices_.size());
+            mesh_->vertices_.push_back(in_.vertices[i]);
+        }
+        for (uint32_t i = 0; i < representative.size(); ++i) remap_[i] = remap_[representative[i]];
+    }
+
+    void make_polygons() {
+        NavMesh& m = *mesh_;
+        m.first_corner_.push_back(0);
+        const bool has_detail = !in_.detail_starts.empty();
+        if (has_detail) m.first_detail_triangle_.push_back(0);
+        std::vector<uint32_t> detail_vertex_remap(in_.detail_vertices.size(), kNoPolygon);
+
+        size_t offset = 0;
+        const uint32_t count = input_polygon_count();
+        std::vector<uint32_t> ring;
+        for (uint32_t p = 0; p < count; ++p) {
+            const uint32_t n = in_.polygon_sizes.empty() ? 3u : in_.polygon_sizes[p];
+            ring.clear();
+            for (uint32_t k = 0; k < n; ++k) {
+                const uint32_t v = remap_[in_.indices[offset + k]];
+                if (ring.empty() || ring.back() != v) ring.push_back(v);
+            }
+            offset += n;
+            while (ring.size() > 1 && ring.front() == ring.back()) ring.pop_back();
+
+            const Vec3 normal = ring.size() >= 3 ? newell_normal(ring) : Vec3::Zero();
+            // Half the normal's y is the area seen from above: none means nothing to walk on.
+            if (ring.size() < 3 || std::fabs(normal.y()) <= 2e-9f) {
+                ++m.repairs_.dropped_polygons;
+                continue;
+            }
+            if (normal.y() < 0.0f) {
+                std::reverse(ring.begin(), ring.end());
+                ++m.repairs_.flipped_polygons;
+            }
+            check_convex_from_above(ring, p);
+
+            Aabb box;
+            for (uint32_t v : ring) {
+                m.corners_.push_back(v);
+                box.grow(m.vertices_[v]);
+            }
+            m.first_corner_.push_back(static_cast<uint32_t>(m.corners_.size()));
+            m.areas_.push_back(in_.areas.empty() ? 0 : in_.areas[p]);
+            m.normals_.push_back((normal.y() < 0.0f ? -normal : normal).normalized());
+            if (has_detail) {
+                for (uint32_t t = in_.detail_starts[p]; t < in_.detail_starts[p + 1]; ++t) {
+                    Triangle tri;
+                    for (int k = 0; k < 3; ++k) {
+                        uint32_t& to = detail_vertex_remap[in_.detail_indices[3 * t + k]];
+                        if (to == kNoPolygon) {
+                            to = static_cast<uint32_t>(m.detail_vertices_.size());
+                            m.detail_vertices_.push_back(in_.detail_vertices[in_.detail_indices[3 * t + k]]);
+                        }
+                        tri[k] = to;
+                        box.grow(m.detail_vertices_[to]);
+                    }
+                    m.detail_triangles_.push_back(tri);
+                }
+                m.first_detail_triangle_.push_back(static_cast<uint32_t>(m.detail_triangles_.size()));
+            }
+            m.polygon_bounds_.push_back(box);
+        }
+        if (m.polygon_count() == 0)
+            fail(ErrorCode::InvalidArgument, "all ", count, " polygons of ", prefix_, "indices are degenerate");
+    }
+
+    Vec3 newell_normal(const std::vector<uint32_t>& ring) const {
+        const Vec3& origin = mesh_->vertices_[ring[0]];
+        Vec3 n = Vec3::Zero();
+        for (size_t k = 1; k + 1 < ring.size(); ++k)
+            n += (mesh_->vertices_[ring[k]] - origin).cross(mesh_->vertices_[ring[k + 1]] - origin);
+        return n;
+    }
+
+    // Navmesh polygons are 2.5D: convex in x-z, heights free (Recast's are not planar).
+    void check_convex_from_above(const std::vector<uint32_t>& ring, uint32_t p) const {
+        const size_t n = ring.size();
+        double turning = 0.0;
+        for (size_t k = 0; k < n; ++k) {
+            const Vec3& a = mesh_->vertices_[ring[k]];
+            const Vec3& b = mesh_->vertices_[ring[(k + 1) % n]];
+            const Vec3& c = mesh_->vertices_[ring[(k + 2) % n]];
+            const double e1x = b.x() - a.x(), e1z = b.z() - a.z(), e2x = c.x() - b.x(), e2z = c.z() - b.z();
+            // With the normal up, every corner of a convex polygon turns the same way: (e1 x e2).y >= 0.
+            const double cross_y = e1z * e2x - e1x * e2z;
+            const double lengths = std::sqrt((e1x * e1x + e1z * e1z) * (e2x * e2x + e2z * e2z));
+            if (cross_y < -1e-4 * lengths)
+                fail(ErrorCode::InvalidArgument, prefix_, "polygon ", p, " is not convex seen from above (at corner ",
+                     (k + 1) % n, ")");
+            turning += std::atan2(cross_y, e1x * e2x + e1z * e2z);
+        }
+        // A star (self-crossing) polygon turns every corner the same way but winds twice.
+        constexpr double kTwoPi = 6.283185307179586;
+        if (std::fabs(turning) > kTwoPi + 0.1)
+            fail(ErrorCode::InvalidArgument, prefix_, "polygon ", p, " crosses itself");
+    }
+
+    // Portals, boundary edges and non-manifold edges, from the edges sorted by their vertex pair.
+    void connect() {
+        NavMesh& m = *mesh_;
+        struct EdgeRef {
+            uint64_t key;
+            uint32_t slot;  // index into corners_ of the edge's first corner
+            uint32_t polygon;
+        };
+        std::vector<EdgeRef> edges;
+        edges.reserve(m.corners_.size());
+        for (uint32_t p = 0; p < m.polygon_count(); ++p) {
+            const uint32_t n = m.corner_count(p);
+            for (uint32_t k = 0; k < n; ++k) {
+                const uint32_t a = m.corner(p, k), b = m.corner(p, (k + 1) % n);
+                const uint64_t key = (uint64_t(std::min(a, b)) << 32) | std::max(a, b);
+                edges.push_back({key, m.first_corner_[p] + k, p});
+            }
+        }
+        std::sort(edges.begin(), edges.end(), [](const EdgeRef& x, const EdgeRef& y) {
+            return x.key != y.key ? x.key < y.key : x.slot < y.slot;
+        });
+        m.neighbours_.assign(m.corners_.size(), kNoPolygon);
+        for (size_t i = 0; i < edges.size();) {
+            size_t j = i;
+            while (j < edges.size() && edges[j].key == edges[i].key) ++j;
+            if (j - i == 2) {
+                m.neighbours_[edges[i].slot] = edges[i + 1].polygon;
+                m.neighbours_[edges[i + 1].slot] = edges[i].polygon;
+                ++m.portal_count_;
+            } else if (j - i > 2) {
+                ++m.repairs_.non_manifold_edges;  // no neighbours, not an outline either
+            } else {
+                boundary_slots_.push_back(edges[i].slot);
+            }
+            i = j;
+        }
+        std::sort(boundary_slots_.begin(), boundary_slots_.end());
+    }
+
+    void finish() {
+        NavMesh& m = *mesh_;
+        uint32_t p = 0;
+        for (uint32_t slot : boundary_slots_) {
+            while (m.first_corner_[p + 1] <= slot) ++p;
+            const uint32_t k = slot - m.first_corner_[p];
+            const Vec3& a = m.vertex(m.corner(p, k));
+            const Vec3& b = m.vertex(m.corner(p, (k + 1) % m.corner_count(p)));
+            const Vec3 n = m.normals_[p];
+            // The polygon lies left of a -> b seen from above, so right (outward) is edge x normal.
+            const Vec3 outward = (b - a).cross(n).normalized();
+            m.boundary_edges_.push_back(BoundaryEdge{a, b, outward, n, p, k});
+        }
+        for (const Aabb& box : m.polygon_bounds_) {
+            m.bounds_.grow(box.min);
+            m.bounds_.grow(box.max);
+        }
+        m.agent_ = in_.agent;
+        m.grid_.build(m.polygon_bounds_, m.bounds_);
+    }
+
+    const NavMeshInput& in_;
+    const char* prefix_;
+    std::shared_ptr<NavMesh> mesh_ = std::make_shared<NavMesh>();
+    std::vector<uint32_t> remap_;
+    std::vector<uint32_t> boundary_slots_;
+};
+
+void validate_agent(const AgentType& a, const char* prefix) {
+    auto check = [&](float value, const char* name, bool ok) {
+        if (!ok || !std::isfinite(value)) fail(ErrorCode::InvalidArgument, prefix, name, " is ", value);
+    };
+    check(a.radius, "radius", a.radius >= 0.0f && a.radius <= 100.0f);
+    check(a.height, "height", a.height > 0.0f && a.height <= 100.0f);
+    check(a.max_climb, "max_climb", a.max_climb >= 0.0f && a.max_climb <= 100.0f);
+    check(a.max_slope, "max_slope", a.max_slope >= 0.0f && a.max_slope < 90.0f);
+}
+
+std::shared_ptr<const NavMesh> build_navmesh(const NavMeshInput& input, const char* field_prefix) {
+    return NavMeshBuilder(input, field_prefix).build();
+}
+
+}  // namespace nl

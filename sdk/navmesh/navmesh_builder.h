@@ -1,0 +1,30 @@
+// Turns a host's (or a builder plugin's) polygons into a NavMesh: validates, welds, orients,
+// connects, finds the outline, indexes.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "navmesh/navmesh.h"
+
+namespace nl {
+
+struct NavMeshInput {
+    std::vector<Vec3> vertices;
+    std::vector<uint32_t> indices;        // polygon corners, polygon after polygon
+    std::vector<uint8_t> polygon_sizes;   // corners per polygon; empty means all triangles
+    std::vector<uint8_t> areas;           // per polygon; empty means area 0
+    float weld_tolerance = 0.001f;
+    AgentType agent;
+    std::vector<Vec3> detail_vertices;
+    std::vector<uint32_t> detail_indices;  // 3 per detail triangle
+    std::vector<uint32_t> detail_starts;   // polygon_count + 1 offsets in triangles; empty = no detail
+};
+
+// Throws InvalidArgument naming the bad item (fields prefixed with `field_prefix`, e.g. "def->") and
+// adds nothing anywhere: the result is a new, complete navmesh or an exception.
+std::shared_ptr<const NavMesh> build_navmesh(const NavMeshInput& input, const char* field_prefix = "");
+
+void validate_agent(const AgentType& agent, const char* field_prefix);
+
+}  // namespace nl
