@@ -17,9 +17,14 @@ struct nl_world;
 namespace nl::capi {
 
 nl_status to_status(ErrorCode code) noexcept;
+// The error code of a failure status (the most specific detail bit), for failures a plugin returns.
+ErrorCode to_error_code(nl_status status) noexcept;
 
 // Records the outcome of the current call on this thread (and logs failures through `world`).
 nl_status record(const char* function, const nl_world* world, nl_status status, const char* message) noexcept;
+
+// Validates and adds a navmesh from a def (nl_navmesh_add, and the builders' sink). Throws.
+nl_navmesh_id add_navmesh(nl_world& world, const nl_navmesh_def& def, const char* function);
 
 // Sends a message to the world's log callback if it wants that level.
 void log(const nl_world* world, nl_log_level level, nl_status status, const std::string& message) noexcept;
@@ -48,16 +53,24 @@ inline void require(const void* pointer, const char* name) {
 
 // The two-call list pattern: a NULL buffer asks only for the count (a success); a buffer with too
 // little capacity is BUFFER_TOO_SMALL, with the count still written so the caller can grow it.
+// `write_all` fills the buffer once it is known to be large enough.
+template <typename WriteAll>
+void list_into(size_t count, const void* out, uint32_t capacity, uint32_t* out_count, const char* out_name,
+               WriteAll&& write_all) {
+    require(out_count, "out_count");
+    if (!out && capacity > 0) fail(ErrorCode::InvalidArgument, out_name, " is null but capacity is ", capacity);
+    *out_count = static_cast<uint32_t>(count);
+    if (!out) return;
+    if (count > capacity) fail(ErrorCode::BufferTooSmall, "capacity is ", capacity, " but ", count, " entries are needed");
+    write_all();
+}
+
 template <typename Item, typename Out, typename Convert>
 void list_into(const std::vector<Item>& items, Out* out, uint32_t capacity, uint32_t* out_count, const char* out_name,
                Convert&& convert) {
-    require(out_count, "out_count");
-    if (!out && capacity > 0) fail(ErrorCode::InvalidArgument, out_name, " is null but capacity is ", capacity);
-    *out_count = static_cast<uint32_t>(items.size());
-    if (!out) return;
-    if (items.size() > capacity)
-        fail(ErrorCode::BufferTooSmall, "capacity is ", capacity, " but ", items.size(), " entries are needed");
-    for (size_t i = 0; i < items.size(); ++i) out[i] = convert(items[i]);
+    list_into(items.size(), out, capacity, out_count, out_name, [&] {
+        for (size_t i = 0; i < items.size(); ++i) out[i] = convert(items[i]);
+    });
 }
 
 // Growable structs: a caller built against an older header passes a smaller `size`. Fields it does

@@ -34,6 +34,16 @@ nl_status to_status(ErrorCode code) noexcept {
     return NL_STATUS_INTERNAL_ERROR;
 }
 
+ErrorCode to_error_code(nl_status status) noexcept {
+    static const ErrorCode codes[] = {ErrorCode::InvalidHandle, ErrorCode::InvalidArgument, ErrorCode::BufferTooSmall,
+                                      ErrorCode::OutOfMemory,   ErrorCode::Cancelled,       ErrorCode::NotFound,
+                                      ErrorCode::Io,            ErrorCode::Parse,           ErrorCode::VersionMismatch};
+    for (ErrorCode code : codes) {
+        if (status & to_status(code)) return code;
+    }
+    return ErrorCode::Internal;
+}
+
 nl_status record(const char* function, const nl_world* world, nl_status status, const char* message) noexcept {
     LastCall& last = last_call;
     last.status = status;

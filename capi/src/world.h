@@ -5,12 +5,19 @@
 
 #include "level/level.h"
 #include "navlink/navlink.h"
+#include "navmesh/navmesh_registry.h"
+#include "plugin_registry.h"
 #include "util/task_system.h"
 
+// Members are destroyed in reverse order: plugins go first (their destroy functions may still use
+// the world), the task system last.
 struct nl_world {
     nl_world_def def;
+    uint32_t handle_tag = 0;
     std::unique_ptr<nl::TaskSystem> tasks;
     std::unique_ptr<nl::Level> level;
+    std::unique_ptr<nl::NavMeshRegistry> navmeshes;
+    std::unique_ptr<nl::capi::PluginRegistry> plugins;
 };
 
 namespace nl::capi {

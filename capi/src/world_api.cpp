@@ -52,7 +52,11 @@ NL_API nl_status nl_world_create(const nl_world_def* def, nl_world** out_world) 
         auto world = std::make_unique<nl_world>();
         world->def = settings;
         world->tasks = nl::make_tbb_task_system(resolve_worker_count(settings.worker_count));
-        world->level = std::make_unique<nl::Level>(*world->tasks, next_world_tag());
+        world->handle_tag = next_world_tag();
+        world->level = std::make_unique<nl::Level>(*world->tasks, world->handle_tag);
+        world->navmeshes = std::make_unique<nl::NavMeshRegistry>(world->handle_tag);
+        world->plugins = std::make_unique<nl::capi::PluginRegistry>(*world, world->handle_tag);
+        nl::capi::register_builtin_plugins(*world->plugins);
         *out_world = world.release();
     });
 }

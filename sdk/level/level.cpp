@@ -184,7 +184,7 @@ void Level::detach(Mesh& mesh) {
 void Level::remove_mesh(Handle h) {
     std::unique_lock lock(mutex_);
     Mesh* mesh = meshes_.find(h);
-    if (!mesh) fail(ErrorCode::InvalidHandle, "mesh {", h.index1, ", ", h.generation, "} is null or was removed");
+    if (!mesh) fail_stale("mesh", h);
     detach(*mesh);
     meshes_.erase(h);
 }
@@ -192,7 +192,7 @@ void Level::remove_mesh(Handle h) {
 void Level::set_transform(Handle h, const Transform& transform) {
     std::unique_lock lock(mutex_);
     Mesh* mesh = meshes_.find(h);
-    if (!mesh) fail(ErrorCode::InvalidHandle, "mesh {", h.index1, ", ", h.generation, "} is null or was removed");
+    if (!mesh) fail_stale("mesh", h);
     const Aabb bounds = bounds_of(mesh->object, transform);
     check_placement(bounds);
     mesh->transform = transform;
@@ -221,7 +221,7 @@ bool Level::contains(Handle h) const {
 MeshInfo Level::info(Handle h) const {
     std::shared_lock lock(mutex_);
     const Mesh* mesh = meshes_.find(h);
-    if (!mesh) fail(ErrorCode::InvalidHandle, "mesh {", h.index1, ", ", h.generation, "} is null or was removed");
+    if (!mesh) fail_stale("mesh", h);
     MeshInfo out;
     out.vertex_count = static_cast<uint32_t>(mesh->object.vertices.size());
     out.triangle_count = static_cast<uint32_t>(mesh->object.triangles.size());

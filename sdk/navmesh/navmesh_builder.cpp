@@ -253,7 +253,11 @@ private:
             const Vec3& b = m.vertex(m.corner(p, (k + 1) % m.corner_count(p)));
             const Vec3 n = m.normals_[p];
             // The polygon lies left of a -> b seen from above, so right (outward) is edge x normal.
-            const Vec3 outward = (b - a).cross(n).normalized();
+            // Recast's polygons are not planar: the normal is first tilted to be square to the edge,
+            // so that outward is exactly across the edge and on the outer side.
+            const Vec3 edge = b - a;
+            const Vec3 square_normal = n - edge * (n.dot(edge) / edge.squaredNorm());
+            const Vec3 outward = edge.cross(square_normal).normalized();
             m.boundary_edges_.push_back(BoundaryEdge{a, b, outward, n, p, k});
         }
         for (const Aabb& box : m.polygon_bounds_) {

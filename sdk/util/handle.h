@@ -6,6 +6,8 @@
 #include <utility>
 #include <vector>
 
+#include "util/error.h"
+
 namespace nl {
 
 struct Handle {
@@ -18,6 +20,11 @@ struct Handle {
     }
     friend bool operator!=(Handle a, Handle b) noexcept { return !(a == b); }
 };
+
+// Throws InvalidHandle for a handle that a slot map did not recognise; `what` names its kind.
+[[noreturn]] inline void fail_stale(const char* what, Handle h) {
+    fail(ErrorCode::InvalidHandle, what, " {", h.index1, ", ", h.generation, "} is null, removed or from another world");
+}
 
 // Stores values in reusable slots. A removed slot's generation is bumped, so an old handle to it is
 // recognised as stale instead of reaching the slot's next occupant. The top bits of every generation

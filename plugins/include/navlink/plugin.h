@@ -37,7 +37,7 @@ typedef struct nl_plugin_host {
 
     /** Gives the reason of the failure the plugin is about to return, naming the bad setting or input
      *  (e.g. "settings_json: cell_size must be > 0"); the host makes it the failing call's last error
-     *  message. The host copies `message`. */
+     *  message. The host copies `message`. Call it from the thread that called into the plugin. */
     void (*set_error)(void* context, const char* message);
 
     /** Copies the world-space triangles of every registered mesh (under current transforms): vertex

@@ -1,0 +1,228 @@
+#include <cstddef>
+#include <cstring>
+
+#include "entry_guard.h"
+#include "navmesh/navmesh_builder.h"
+#include "world.h"
+
+using nl::ErrorCode;
+using nl::fail;
+using nl::capi::deref;
+using nl::capi::guarded;
+using nl::capi::require;
+
+namespace {
+
+constexpr size_t kNavMeshDefFirstSize = offsetof(nl_navmesh_def, detail_triangle_starts) + sizeof(const uint32_t*);
+constexpr size_t kNavMeshInfoFirstSize = offsetof(nl_navmesh_info, bounds_max) + 3 * sizeof(float);
+static_assert(NL_MAX_POLYGON_VERTICES == nl::kMaxPolygonVertices, "header and core disagree");
+static_assert(NL_NO_POLYGON == nl::kNoPolygon, "header and core disagree");
+
+nl::Handle to_handle(nl_navmesh_id id) { return nl::Handle{id.index1, id.generation}; }
+nl_navmesh_id to_id(nl::Handle h) { return nl_navmesh_id{h.index1, h.generation}; }
+
+nl::AgentType to_agent(const nl_agent_type& a) { return nl::AgentType{a.radius, a.height, a.max_climb, a.max_slope}; }
+nl_agent_type to_c(const nl::AgentType& a) { return nl_agent_type{a.radius, a.height, a.max_climb, a.max_slope}; }
+
+void copy_point(float* out, const nl::Vec3& v) { Eigen::Map<nl::Vec3>{out} = v; }
+
+nl::NavMeshInput read_navmesh_def(const nl_navmesh_def& def) {
+    require(def.vertices, "def->vertices");
+    require(def.indices, "def->indices");
+    if (def.vertex_count == 0) fail(ErrorCode::InvalidArgument, "def->vertex_count is 0");
+    if (def.polygon_count == 0) fail(ErrorCode::InvalidArgument, "def->polygon_count is 0");
+    const uint32_t stride = def.vertex_stride == 0 ? 3 * sizeof(float) : def.vertex_stride;
+    if (stride < 3 * sizeof(float))
+        fail(ErrorCode::InvalidArgument, "def->vertex_stride is ", def.vertex_stride, " (at least 12 bytes, or 0)");
+
+    nl::NavMeshInput in;
+    in.vertices.resize(def.vertex_count);
+    const auto* bytes = reinterpret_cast<const unsigned char*>(def.vertices);
+    for (uint32_t i = 0; i < def.vertex_count; ++i) {
+        float xyz[3];
+        std::memcpy(xyz, bytes + size_t(i) * stride, sizeof xyz);
+        in.vertices[i] = nl::Vec3(xyz[0], xyz[1], xyz[2]);
+    }
+    size_t index_count = size_t(def.polygon_count) * 3;
+    if (def.polygon_vertex_counts) {
+        in.polygon_sizes.assign(def.polygon_vertex_counts, def.polygon_vertex_counts + def.polygon_count);
+        index_count = 0;
+        for (uint8_t n : in.polygon_sizes) index_count += n;
+    }
+    in.indices.assign(def.indices, def.indices + index_count);
+    if (def.areas) in.areas.assign(def.areas, def.areas + def.polygon_count);
+    in.weld_tolerance = def.weld_tolerance;
+    in.agent = to_agent(def.agent);
+
+    const bool any_detail = def.detail_vertices || def.detail_triangles || def.detail_triangle_starts;
+    if (any_detail) {
+        require(def.detail_vertices, "def->detail_vertices");
+        require(def.detail_triangles, "def->detail_triangles");
+        require(def.detail_triangle_starts, "def->detail_triangle_starts");
+        in.detail_starts.assign(def.detail_triangle_starts, def.detail_triangle_starts + def.polygon_count + 1);
+        in.detail_vertices.resize(def.detail_vertex_count);
+        for (uint32_t i = 0; i < def.detail_vertex_count; ++i)
+            in.detail_vertices[i] = Eigen::Map<const nl::Vec3>(def.detail_vertices + 3 * size_t(i));
+        in.detail_indices.assign(def.detail_triangles, def.detail_triangles + size_t(in.detail_starts.back()) * 3);
+    }
+    return in;
+}
+
+}  // namespace
+
+namespace nl::capi {
+
+// Shared by nl_navmesh_add and the builders' sink: both hand over an nl_navmesh_def.
+nl_navmesh_id add_navmesh(nl_world& world, const nl_navmesh_def& def, const char* function) {
+    const nl_navmesh_def settings = read_growable(def, nl_default_navmesh_def(), kNavMeshDefFirstSize, "def");
+    std::shared_ptr<const nl::NavMesh> navmesh = nl::build_navmesh(read_navmesh_def(settings), "def->");
+    const nl::NavMeshRepairs& r = navmesh->repairs();
+    if (r.flipped_polygons || r.dropped_polygons || r.non_manifold_edges) {
+        log(&world, NL_LOG_WARNING, NL_STATUS_SUCCESS,
+            nl::concat(function, ": repaired the navmesh: ", r.flipped_polygons, " polygons turned to face up, ",
+                       r.dropped_polygons, " degenerate polygons dropped, ", r.non_manifold_edges,
+                       " edges shared by 3+ polygons left unconnected"));
+    }
+    return to_id(world.navmeshes->add(std::move(navmesh)));
+}
+
+}  // namespace nl::capi
+
+extern "C" {
+
+NL_API nl_agent_type nl_default_agent_type(void) { return to_c(nl::AgentType{}); }
+
+NL_API nl_navmesh_def nl_default_navmesh_def(void) {
+    nl_navmesh_def def{};
+    def.size = sizeof(nl_navmesh_def);
+    def.weld_tolerance = 0.001f;
+    def.agent = nl_default_agent_type();
+    return def;
+}
+
+NL_API nl_status nl_navmesh_add(nl_world* world, const nl_navmesh_def* def, nl_navmesh_id* out_id) {
+    return guarded("nl_navmesh_add", world, [&] {
+        nl_world& w = deref(world);
+        require(def, "def");
+        require(out_id, "out_id");
+        *out_id = nl::capi::add_navmesh(w, *def, "nl_navmesh_add");
+    });
+}
+
+NL_API nl_status nl_navmesh_remove(nl_world* world, nl_navmesh_id navmesh) {
+    return guarded("nl_navmesh_remove", world, [&] { deref(world).navmeshes->remove(to_handle(navmesh)); });
+}
+
+NL_API int32_t nl_navmesh_is_valid(const nl_world* world, nl_navmesh_id navmesh) {
+    int32_t valid = 0;
+    guarded("nl_navmesh_is_valid", world, [&] { valid = deref(world).navmeshes->contains(to_handle(navmesh)) ? 1 : 0; });
+    return valid;
+}
+
+NL_API nl_status nl_navmesh_get_info(const nl_world* world, nl_navmesh_id navmesh, nl_navmesh_info* out_info) {
+    return guarded("nl_navmesh_get_info", world, [&] {
+        const auto mesh = deref(world).navmeshes->get(to_handle(navmesh));
+        require(out_info, "out_info");
+        nl_navmesh_info info{};
+        info.size = sizeof info;
+        info.vertex_count = mesh->vertex_count();
+        info.polygon_count = mesh->polygon_count();
+        info.portal_count = mesh->portal_count();
+        info.boundary_edge_count = static_cast<uint32_t>(mesh->boundary_edges().size());
+        info.welded_vertex_count = mesh->repairs().welded_vertices;
+        info.flipped_polygon_count = mesh->repairs().flipped_polygons;
+        info.dropped_polygon_count = mesh->repairs().dropped_polygons;
+        info.non_manifold_edge_count = mesh->repairs().non_manifold_edges;
+        info.agent = to_c(mesh->agent());
+        copy_point(info.bounds_min, mesh->bounds().min);
+        copy_point(info.bounds_max, mesh->bounds().max);
+        nl::capi::write_growable(out_info, info, kNavMeshInfoFirstSize, "out_info");
+    });
+}
+
+NL_API nl_status nl_navmesh_get_vertices(const nl_world* world, nl_navmesh_id navmesh, float* out_xyz,
+                                         uint32_t capacity, uint32_t* out_count) {
+    return guarded("nl_navmesh_get_vertices", world, [&] {
+        const auto mesh = deref(world).navmeshes->get(to_handle(navmesh));
+        nl::capi::list_into(mesh->vertex_count(), out_xyz, capacity, out_count, "out_xyz", [&] {
+            for (uint32_t i = 0; i < mesh->vertex_count(); ++i) copy_point(out_xyz + 3 * size_t(i), mesh->vertex(i));
+        });
+    });
+}
+
+NL_API nl_status nl_navmesh_get_polygon(const nl_world* world, nl_navmesh_id navmesh, uint32_t polygon,
+                                        nl_nav_polygon* out_polygon) {
+    return guarded("nl_navmesh_get_polygon", world, [&] {
+        const auto mesh = deref(world).navmeshes->get(to_handle(navmesh));
+        require(out_polygon, "out_polygon");
+        if (polygon >= mesh->polygon_count())
+            fail(ErrorCode::InvalidArgument, "polygon ", polygon, " is out of range (polygon_count = ", mesh->polygon_count(), ")");
+        nl_nav_polygon out{};
+        out.vertex_count = mesh->corner_count(polygon);
+        for (uint32_t k = 0; k < out.vertex_count; ++k) {
+            out.vertices[k] = mesh->corner(polygon, k);
+            out.neighbours[k] = mesh->neighbour(polygon, k);
+        }
+        for (uint32_t k = out.vertex_count; k < NL_MAX_POLYGON_VERTICES; ++k) out.neighbours[k] = NL_NO_POLYGON;
+        out.area = mesh->area(polygon);
+        copy_point(out.normal, mesh->normal(polygon));
+        copy_point(out.centre, mesh->centre(polygon));
+        *out_polygon = out;
+    });
+}
+
+NL_API nl_status nl_navmesh_get_boundary_edges(const nl_world* world, nl_navmesh_id navmesh,
+                                               nl_boundary_edge* out_edges, uint32_t capacity, uint32_t* out_count) {
+    return guarded("nl_navmesh_get_boundary_edges", world, [&] {
+        const auto mesh = deref(world).navmeshes->get(to_handle(navmesh));
+        nl::capi::list_into(mesh->boundary_edges(), out_edges, capacity, out_count, "out_edges", [](const nl::BoundaryEdge& e) {
+            nl_boundary_edge out{};
+            copy_point(out.start, e.start);
+            copy_point(out.end, e.end);
+            copy_point(out.outward, e.outward);
+            copy_point(out.normal, e.normal);
+            out.polygon = e.polygon;
+            out.edge = e.edge;
+            return out;
+        });
+    });
+}
+
+NL_API nl_status nl_navmesh_find_nearest(const nl_world* world, nl_navmesh_id navmesh, const float* points,
+                                         uint32_t count, const float* half_extents, nl_nav_point* out) {
+    return guarded("nl_navmesh_find_nearest", world, [&] {
+        const nl_world& w = deref(world);
+        const auto mesh = w.navmeshes->get(to_handle(navmesh));
+        require(half_extents, "half_extents");
+        const nl::Vec3 extents(half_extents[0], half_extents[1], half_extents[2]);
+        if (!(extents.array() > 0.0f).all() || !nl::within_coordinate_limit(extents))
+            fail(ErrorCode::InvalidArgument, "half_extents must be positive and finite");
+        if (count == 0) return;
+        require(points, "points");
+        require(out, "out");
+        for (uint32_t i = 0; i < count; ++i) {
+            if (!nl::within_coordinate_limit(Eigen::Map<const nl::Vec3>(points + 3 * size_t(i))))
+                fail(ErrorCode::InvalidArgument, "points[", i, "] is not finite or beyond the coordinate limit");
+        }
+        w.tasks->parallel_for(count, 256, [&](uint32_t begin, uint32_t end) {
+            for (uint32_t i = begin; i < end; ++i) {
+                const nl::NavPoint p = mesh->find_nearest(Eigen::Map<const nl::Vec3>(points + 3 * size_t(i)), extents);
+                nl_nav_point r{};
+                r.found = p.found ? 1 : 0;
+                r.polygon = p.polygon;
+                r.distance = p.distance;
+                copy_point(r.point, p.point);
+                out[i] = r;
+            }
+        });
+    });
+}
+
+NL_API nl_status nl_world_get_navmeshes(const nl_world* world, nl_navmesh_id* out_ids, uint32_t capacity,
+                                        uint32_t* out_count) {
+    return guarded("nl_world_get_navmeshes", world, [&] {
+        nl::capi::list_into(deref(world).navmeshes->handles(), out_ids, capacity, out_count, "out_ids", to_id);
+    });
+}
+
+}  // extern "C"

@@ -1,0 +1,39 @@
+#include "host_log_context.h"
+
+#include <cstddef>
+
+namespace nl::recast {
+namespace {
+
+// True if a host table of `host.size` bytes has the member ending at `end`.
+bool host_has(const nl_plugin_host& host, size_t end) { return host.size >= end; }
+
+}  // namespace
+
+void host_log(const nl_plugin_host& host, nl_log_level level, const char* message) noexcept {
+    if (host_has(host, offsetof(nl_plugin_host, log) + sizeof host.log) && host.log)
+        host.log(host.context, level, message);
+}
+
+void host_set_error(const nl_plugin_host& host, const char* message) noexcept {
+    if (host_has(host, offsetof(nl_plugin_host, set_error) + sizeof host.set_error) && host.set_error)
+        host.set_error(host.context, message);
+}
+
+HostLogContext::HostLogContext(const nl_plugin_host& host) : rcContext(true), host_(host) {
+    enableTimer(false);  // Recast's timers are RecastDemo's profiling; nothing here reads them
+}
+
+void HostLogContext::doLog(rcLogCategory category, const char* message, int length) {
+    if (category == RC_LOG_PROGRESS) return;
+    try {
+        std::string text(message, length > 0 ? static_cast<size_t>(length) : 0);
+        if (category == RC_LOG_ERROR) last_error_ = text;
+        const std::string line = "recast: " + text;
+        host_log(host_, category == RC_LOG_ERROR ? NL_LOG_ERROR : NL_LOG_WARNING, line.c_str());
+    } catch (...) {
+        // Out of memory while logging: drop the message, Recast's own return value still reports it.
+    }
+}
+
+}  // namespace nl::recast

@@ -1,0 +1,32 @@
+// A Recast build context that forwards Recast's warnings and errors to the host's log and keeps the
+// last error, so that a failed step can be reported with Recast's own reason. One per build.
+#pragma once
+
+#include <string>
+
+#include <Recast.h>
+
+#include "navlink/plugin.h"
+
+namespace nl::recast {
+
+class HostLogContext : public rcContext {
+public:
+    explicit HostLogContext(const nl_plugin_host& host);
+
+    // Recast's last error message in this build, or "".
+    const std::string& last_error() const { return last_error_; }
+
+protected:
+    void doLog(rcLogCategory category, const char* message, int length) override;
+
+private:
+    const nl_plugin_host& host_;
+    std::string last_error_;
+};
+
+// Calls host.log / host.set_error when the host's table has them; never throws.
+void host_log(const nl_plugin_host& host, nl_log_level level, const char* message) noexcept;
+void host_set_error(const nl_plugin_host& host, const char* message) noexcept;
+
+}  // namespace nl::recast

@@ -1,0 +1,68 @@
+#include "level_triangles.h"
+
+#include <climits>
+#include <cstddef>
+#include <cmath>
+
+#include "build_failure.h"
+
+namespace nl::recast {
+namespace {
+
+// The level may grow between the counting call and the copying call (another thread adds a mesh);
+// then the copy is BUFFER_TOO_SMALL and is tried again with the new counts, a few times.
+constexpr int kAttempts = 8;
+
+void check(const LevelTriangles& level) {
+    const size_t vertex_count = level.vertices.size() / 3;
+    for (size_t i = 0; i < level.vertices.size(); ++i) {
+        if (!std::isfinite(level.vertices[i]))
+            fail(NL_STATUS_INVALID_ARGUMENT, "level vertex ", i / 3, " has a coordinate that is not finite");
+    }
+    for (size_t i = 0; i < level.indices.size(); ++i) {
+        if (level.indices[i] >= vertex_count)
+            fail(NL_STATUS_INTERNAL_ERROR, "get_level_triangles gave index ", level.indices[i], " of triangle ", i / 3,
+                 " but only ", vertex_count, " vertices");
+    }
+}
+
+}  // namespace
+
+LevelTriangles fetch_level_triangles(const nl_plugin_host& host) {
+    if (host.size < offsetof(nl_plugin_host, get_level_triangles) + sizeof host.get_level_triangles ||
+        !host.get_level_triangles)
+        fail(NL_STATUS_INVALID_ARGUMENT, "the host offers no get_level_triangles");
+
+    uint32_t vertex_count = 0;
+    uint32_t triangle_count = 0;
+    nl_status status = host.get_level_triangles(host.context, nullptr, 0, &vertex_count, nullptr, 0, &triangle_count);
+    LevelTriangles level;
+    uint32_t vertex_capacity = 0;
+    uint32_t triangle_capacity = 0;
+    for (int attempt = 0; attempt < kAttempts; ++attempt) {
+        if (NL_FAILED(status) && !(status & NL_STATUS_BUFFER_TOO_SMALL))
+            fail(status & NL_STATUS_DETAIL_MASK, "get_level_triangles failed (status 0x", std::hex, status, ")");
+        if (vertex_count > INT_MAX / 3 || triangle_count > INT_MAX / 3)
+            fail(NL_STATUS_INVALID_ARGUMENT, "the level has ", vertex_count, " vertices and ", triangle_count,
+                 " triangles; Recast takes at most ", INT_MAX / 3, " of each");
+        if (attempt > 0 && NL_SUCCEEDED(status)) {
+            if (vertex_count > vertex_capacity || triangle_count > triangle_capacity)
+                fail(NL_STATUS_INTERNAL_ERROR, "get_level_triangles succeeded with counts beyond the capacities");
+            level.vertices.resize(size_t{vertex_count} * 3);
+            level.indices.resize(size_t{triangle_count} * 3);
+            check(level);
+            return level;
+        }
+        if (triangle_count == 0 && NL_SUCCEEDED(status)) return level;  // an empty level
+        level.vertices.assign(size_t{vertex_count} * 3, 0.0f);
+        level.indices.assign(size_t{triangle_count} * 3, 0u);
+        vertex_capacity = vertex_count;
+        triangle_capacity = triangle_count;
+        status = host.get_level_triangles(host.context, level.vertices.data(), vertex_capacity, &vertex_count,
+                                          level.indices.data(), triangle_capacity, &triangle_count);
+    }
+    fail(NL_STATUS_INTERNAL_ERROR, "the level kept changing while its triangles were copied (", kAttempts,
+         " attempts)");
+}
+
+}  // namespace nl::recast

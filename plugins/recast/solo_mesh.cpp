@@ -1,0 +1,180 @@
+#include "solo_mesh.h"
+
+#include <algorithm>
+#include <climits>
+#include <cmath>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "build_failure.h"
+
+namespace nl::recast {
+namespace {
+
+// Recast's limits: polygon-mesh vertices are unsigned short grid coordinates, rcErodeWalkableArea
+// compares distances in an unsigned char holding twice the radius, compact spans keep at most 255
+// cells of headroom, and the span array of the grid is allocated whole.
+constexpr double kMaxGridSide = 65535.0;
+constexpr double kMaxGridCells = double(1 << 27);
+constexpr int kMaxErodeRadius = 127;
+constexpr int kMaxWalkableHeight = 255;
+constexpr float kNoDetailSampling = 1e30f;
+
+std::string describe(const nl_agent_type& a) {
+    std::ostringstream out;
+    out << "agent radius " << a.radius << " m, height " << a.height << " m, max climb " << a.max_climb
+        << " m, max slope " << a.max_slope << " degrees";
+    return out.str();
+}
+
+[[noreturn]] void no_walkable_surface(const nl_agent_type& agent, const std::string& why) {
+    fail(NL_STATUS_NOT_FOUND, "no walkable surface for ", describe(agent), ": ", why);
+}
+
+// Fails naming `step` when a Recast step returned false; Recast's own "Out of memory" becomes
+// OUT_OF_MEMORY, anything else INTERNAL_ERROR.
+void require_step(bool ok, const char* step, const HostLogContext& context) {
+    if (ok) return;
+    const std::string& why = context.last_error();
+    const bool out_of_memory = why.find("Out of memory") != std::string::npos || why.find("out of memory") != std::string::npos;
+    fail(out_of_memory ? NL_STATUS_OUT_OF_MEMORY : NL_STATUS_INTERNAL_ERROR, "Recast step ", step, " failed",
+         why.empty() ? "" : ": ", why);
+}
+
+template <typename T, typename Ptr = std::unique_ptr<T, RecastDeleter>>
+Ptr require_allocated(T* p, const char* what) {
+    if (!p) fail(NL_STATUS_OUT_OF_MEMORY, "out of memory allocating Recast's ", what);
+    return Ptr(p);
+}
+
+}  // namespace
+
+rcConfig make_config(const nl_recast_settings& s, const nl_agent_type& agent, const float* bmin, const float* bmax) {
+    rcConfig cfg;
+    std::memset(&cfg, 0, sizeof cfg);
+    cfg.cs = s.cell_size;
+    cfg.ch = s.cell_height;
+    cfg.walkableSlopeAngle = agent.max_slope;
+
+    const double height_cells = std::ceil(double(agent.height) / cfg.ch);
+    if (height_cells > kMaxWalkableHeight)
+        fail(NL_STATUS_INVALID_ARGUMENT, "agent.height of ", agent.height, " m is ", height_cells,
+             " cells of cell_height ", cfg.ch, " m; Recast handles at most ", kMaxWalkableHeight,
+             " (raise cell_height)");
+    cfg.walkableHeight = static_cast<int>(height_cells);
+    // A climb beyond the heightfield's height is no different from one of its full height.
+    cfg.walkableClimb = static_cast<int>(std::min(std::floor(double(agent.max_climb) / cfg.ch), double(RC_SPAN_MAX_HEIGHT)));
+    const double radius_cells = std::ceil(double(agent.radius) / cfg.cs);
+    if (radius_cells > kMaxErodeRadius)
+        fail(NL_STATUS_INVALID_ARGUMENT, "agent.radius of ", agent.radius, " m is ", radius_cells,
+             " cells of cell_size ", cfg.cs, " m; Recast erodes at most ", kMaxErodeRadius, " (raise cell_size)");
+    cfg.walkableRadius = static_cast<int>(radius_cells);
+
+    cfg.maxEdgeLen = static_cast<int>(std::min(double(s.edge_max_length) / cfg.cs, double(INT_MAX)));
+    cfg.maxSimplificationError = s.edge_max_error;
+    cfg.minRegionArea = static_cast<int>(rcSqr(s.region_min_size));
+    cfg.mergeRegionArea = static_cast<int>(rcSqr(s.region_merge_size));
+    cfg.maxVertsPerPoly = static_cast<int>(s.vertices_per_polygon);
+    // RecastDemo passes 0 to disable sampling, but Recast's buildPolyDetail then leaves the polygon's
+    // hull empty and triangulateHull reads garbage (recastnavigation issue #650, still in Debian's
+    // 1.5.1+git20210215: a crash). A distance longer than any edge does what 0 means: the outline
+    // only, each edge in one piece, no interior samples.
+    cfg.detailSampleDist = s.detail_sample_distance < 0.9f ? kNoDetailSampling : cfg.cs * s.detail_sample_distance;
+    cfg.detailSampleMaxError = cfg.ch * s.detail_sample_max_error;
+
+    rcVcopy(cfg.bmin, bmin);
+    rcVcopy(cfg.bmax, bmax);
+    const double width = (double(bmax[0]) - bmin[0]) / cfg.cs + 0.5;
+    const double depth = (double(bmax[2]) - bmin[2]) / cfg.cs + 0.5;
+    if (width > kMaxGridSide || depth > kMaxGridSide || width * depth > kMaxGridCells)
+        fail(NL_STATUS_INVALID_ARGUMENT, "cell_size ", cfg.cs, " m makes a grid of ", std::floor(width), " x ",
+             std::floor(depth), " cells over the level; Recast's solo mesh takes at most ", kMaxGridSide,
+             " per side and ", kMaxGridCells, " in all (raise cell_size)");
+    const double layers = (double(bmax[1]) - bmin[1]) / cfg.ch;
+    if (layers > RC_SPAN_MAX_HEIGHT)
+        fail(NL_STATUS_INVALID_ARGUMENT, "cell_height ", cfg.ch, " m makes the level ", std::ceil(layers),
+             " cells tall; Recast's heightfield holds at most ", RC_SPAN_MAX_HEIGHT, " (raise cell_height)");
+    rcCalcGridSize(cfg.bmin, cfg.bmax, cfg.cs, &cfg.width, &cfg.height);
+    return cfg;
+}
+
+SoloMesh build_solo_mesh(HostLogContext& ctx, const LevelTriangles& level, const nl_recast_settings& s,
+                         const nl_agent_type& agent) {
+    const int nverts = level.vertex_count();
+    const int ntris = level.triangle_count();
+    if (ntris == 0) no_walkable_surface(agent, "the level has no triangles");
+    const float* verts = level.vertices.data();
+    // Recast takes int indices; uint32_t indices below INT_MAX (checked on fetch) read the same.
+    const int* tris = reinterpret_cast<const int*>(level.indices.data());
+
+    float bmin[3];
+    float bmax[3];
+    rcCalcBounds(verts, nverts, bmin, bmax);
+    const rcConfig cfg = make_config(s, agent, bmin, bmax);
+
+    // Which triangles are flat enough to walk on.
+    std::vector<unsigned char> areas(static_cast<size_t>(ntris), RC_NULL_AREA);
+    rcMarkWalkableTriangles(&ctx, cfg.walkableSlopeAngle, verts, nverts, tris, ntris, areas.data());
+    if (std::none_of(areas.begin(), areas.end(), [](unsigned char a) { return a != RC_NULL_AREA; }))
+        no_walkable_surface(agent, "no triangle of the level is flatter than max slope");
+    if (cfg.width < 1 || cfg.height < 1) no_walkable_surface(agent, "the level is narrower than one cell");
+
+    // Voxelise.
+    HeightfieldPtr solid = require_allocated(rcAllocHeightfield(), "heightfield");
+    require_step(rcCreateHeightfield(&ctx, *solid, cfg.width, cfg.height, cfg.bmin, cfg.bmax, cfg.cs, cfg.ch),
+                 "rcCreateHeightfield", ctx);
+    require_step(rcRasterizeTriangles(&ctx, verts, nverts, tris, areas.data(), ntris, *solid, cfg.walkableClimb),
+                 "rcRasterizeTriangles", ctx);
+    std::vector<unsigned char>().swap(areas);
+
+    // Remove spans no agent could stand on, as configured.
+    if (s.filter_low_hanging_obstacles) rcFilterLowHangingWalkableObstacles(&ctx, cfg.walkableClimb, *solid);
+    if (s.filter_ledge_spans) rcFilterLedgeSpans(&ctx, cfg.walkableHeight, cfg.walkableClimb, *solid);
+    if (s.filter_walkable_low_height_spans) rcFilterWalkableLowHeightSpans(&ctx, cfg.walkableHeight, *solid);
+
+    // Compact the walkable spans, keep the agent's radius from walls.
+    CompactHeightfieldPtr chf = require_allocated(rcAllocCompactHeightfield(), "compact heightfield");
+    require_step(rcBuildCompactHeightfield(&ctx, cfg.walkableHeight, cfg.walkableClimb, *solid, *chf),
+                 "rcBuildCompactHeightfield", ctx);
+    solid.reset();
+    if (chf->spanCount == 0) no_walkable_surface(agent, "no walkable span has the agent's headroom");
+    require_step(rcErodeWalkableArea(&ctx, cfg.walkableRadius, *chf), "rcErodeWalkableArea", ctx);
+
+    // Partition into regions.
+    switch (s.partition) {
+    case NL_RECAST_PARTITION_MONOTONE:
+        require_step(rcBuildRegionsMonotone(&ctx, *chf, 0, cfg.minRegionArea, cfg.mergeRegionArea),
+                     "rcBuildRegionsMonotone", ctx);
+        break;
+    case NL_RECAST_PARTITION_LAYERS:
+        require_step(rcBuildLayerRegions(&ctx, *chf, 0, cfg.minRegionArea), "rcBuildLayerRegions", ctx);
+        break;
+    default:
+        require_step(rcBuildDistanceField(&ctx, *chf), "rcBuildDistanceField", ctx);
+        require_step(rcBuildRegions(&ctx, *chf, 0, cfg.minRegionArea, cfg.mergeRegionArea), "rcBuildRegions", ctx);
+        break;
+    }
+
+    // Trace and simplify the region outlines.
+    ContourSetPtr cset = require_allocated(rcAllocContourSet(), "contour set");
+    require_step(rcBuildContours(&ctx, *chf, cfg.maxSimplificationError, cfg.maxEdgeLen, *cset), "rcBuildContours",
+                 ctx);
+    if (cset->nconts == 0)
+        no_walkable_surface(agent, "every walkable region was eroded by the radius or smaller than region_min_size");
+
+    // Convex polygons, and the detail triangles with the surface's real heights.
+    SoloMesh out;
+    out.polygons = require_allocated(rcAllocPolyMesh(), "polygon mesh");
+    require_step(rcBuildPolyMesh(&ctx, *cset, cfg.maxVertsPerPoly, *out.polygons), "rcBuildPolyMesh", ctx);
+    cset.reset();
+    if (out.polygons->npolys == 0)
+        no_walkable_surface(agent, "Recast made no polygon from the walkable regions' outlines");
+    out.detail = require_allocated(rcAllocPolyMeshDetail(), "detail mesh");
+    require_step(rcBuildPolyMeshDetail(&ctx, *out.polygons, *chf, cfg.detailSampleDist, cfg.detailSampleMaxError,
+                                       *out.detail),
+                 "rcBuildPolyMeshDetail", ctx);
+    return out;
+}
+
+}  // namespace nl::recast
