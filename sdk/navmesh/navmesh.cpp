@@ -1,8 +1,8 @@
 #include "navmesh/navmesh.h"
 
+#include <algorithm>
 #include <limits>
 
-#include "navmesh/closest_point.h"
 
 namespace nl {
 
@@ -13,25 +13,64 @@ Vec3 NavMesh::centre(uint32_t p) const {
     return sum / static_cast<float>(n);
 }
 
+bool NavMesh::over_polygon(uint32_t p, float x, float z) const {
+    const uint32_t n = corner_count(p);
+    for (uint32_t k = 0; k < n; ++k) {
+        const Vec3& a = vertex(corner(p, k));
+        const Vec3& b = vertex(corner(p, (k + 1) % n));
+        // Counter-clockwise seen from above: the inside is left of every edge.
+        if ((b.z() - a.z()) * (x - a.x()) - (b.x() - a.x()) * (z - a.z()) < 0.0f) return false;
+    }
+    return true;
+}
+
+float NavMesh::surface_height(uint32_t p, float x, float z) const {
+    // The surface triangle whose x-z projection holds (x, z); on a shared edge any of them gives the
+    // same height. Rounding may leave (x, z) just outside all of them: take the least outside.
+    float best_margin = -std::numeric_limits<float>::infinity(), best_height = vertex(corner(p, 0)).y();
+    auto consider = [&](const Vec3& a, const Vec3& b, const Vec3& c) {
+        const float area = (b.x() - a.x()) * (c.z() - a.z()) - (c.x() - a.x()) * (b.z() - a.z());
+        if (area == 0.0f) return false;
+        const float u = ((b.x() - x) * (c.z() - z) - (c.x() - x) * (b.z() - z)) / area;
+        const float v = ((c.x() - x) * (a.z() - z) - (a.x() - x) * (c.z() - z)) / area;
+        const float w = 1.0f - u - v;
+        const float margin = std::min({u, v, w});
+        if (margin > best_margin) {
+            best_margin = margin;
+            const float cu = std::max(u, 0.0f), cv = std::max(v, 0.0f), cw = std::max(w, 0.0f);
+            best_height = (cu * a.y() + cv * b.y() + cw * c.y()) / (cu + cv + cw);
+        }
+        return margin >= 0.0f;
+    };
+    if (!first_detail_triangle_.empty()) {
+        for (uint32_t t = first_detail_triangle_[p]; t < first_detail_triangle_[p + 1]; ++t) {
+            const Triangle& tri = detail_triangles_[t];
+            if (consider(detail_vertices_[tri[0]], detail_vertices_[tri[1]], detail_vertices_[tri[2]])) break;
+        }
+    } else {
+        const Vec3& origin = vertex(corner(p, 0));
+        for (uint32_t k = 1; k + 1 < corner_count(p); ++k) {
+            if (consider(origin, vertex(corner(p, k)), vertex(corner(p, k + 1)))) break;
+        }
+    }
+    return best_height;
+}
+
 Vec3 NavMesh::closest_point_on_polygon(uint32_t p, const Vec3& point) const {
+    if (over_polygon(p, point.x(), point.z())) return Vec3(point.x(), surface_height(p, point.x(), point.z()), point.z());
     Vec3 best = Vec3::Zero();
     float best_distance = std::numeric_limits<float>::infinity();
-    auto consider = [&](const Vec3& a, const Vec3& b, const Vec3& c) {
-        const Vec3 q = closest_point_on_triangle(point, a, b, c);
+    const uint32_t n = corner_count(p);
+    for (uint32_t k = 0; k < n; ++k) {
+        const Vec3& a = vertex(corner(p, k));
+        const Vec3 ab = vertex(corner(p, (k + 1) % n)) - a;
+        const float t = std::clamp((point - a).dot(ab) / ab.squaredNorm(), 0.0f, 1.0f);
+        const Vec3 q = a + t * ab;
         const float d = (q - point).squaredNorm();
         if (d < best_distance) {
             best_distance = d;
             best = q;
         }
-    };
-    if (!first_detail_triangle_.empty()) {
-        for (uint32_t t = first_detail_triangle_[p]; t < first_detail_triangle_[p + 1]; ++t) {
-            const Triangle& tri = detail_triangles_[t];
-            consider(detail_vertices_[tri[0]], detail_vertices_[tri[1]], detail_vertices_[tri[2]]);
-        }
-    } else {
-        const Vec3& origin = vertex(corner(p, 0));
-        for (uint32_t k = 1; k + 1 < corner_count(p); ++k) consider(origin, vertex(corner(p, k)), vertex(corner(p, k + 1)));
     }
     return best;
 }
@@ -50,6 +89,12 @@ struct Nearest {
     NavPoint best;
 
     void consider(uint32_t p) {
+        // Nothing in a box farther than the best hit can beat it (equal distance may: lower index).
+        if (best.found) {
+            const Aabb& box = mesh.polygon_bounds(p);
+            const float box_distance = (point.cwiseMax(box.min).cwiseMin(box.max) - point).norm();
+            if (box_distance > best.distance) return;
+        }
         const Vec3 q = mesh.closest_point_on_polygon(p, point);
         const float d = (q - point).norm();
         if (!best.found || d < best.distance || (d == best.distance && p < best.polygon)) best = NavPoint{true, q, d, p};

@@ -71,8 +71,12 @@ public:
     NavPoint find_nearest(const Vec3& point, const Vec3& half_extents) const;
     // The same by visiting every polygon: the reference the grid is tested against.
     NavPoint find_nearest_brute_force(const Vec3& point, const Vec3& half_extents) const;
-    // Closest point on polygon p's surface (its detail triangles, or its own fan).
+    // As Detour: over the polygon (seen from above), the surface point straight below or above
+    // `point`, at the detail height; elsewhere the nearest point of the polygon's outline.
     Vec3 closest_point_on_polygon(uint32_t p, const Vec3& point) const;
+    bool over_polygon(uint32_t p, float x, float z) const;
+    // Height of polygon p's surface (detail triangles, or its own fan) at (x, z) over it.
+    float surface_height(uint32_t p, float x, float z) const;
 
     size_t memory_bytes() const;
 

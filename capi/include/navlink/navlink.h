@@ -438,7 +438,9 @@ NL_API nl_status nl_navmesh_get_boundary_edges(const nl_world* world, nl_navmesh
 
 /** Where a point lies on a navmesh. */
 typedef struct nl_nav_point {
-    float point[3];   /**< Closest point on the navmesh surface (detail heights when present). */
+    float point[3];   /**< The navmesh point for the query: straight below or above it when it is
+                           over a polygon (at the surface's detail height when given), else the
+                           nearest point of a polygon's outline. */
     float distance;   /**< From the query point to `point`, metres. */
     uint32_t polygon; /**< The polygon holding `point`, or NL_NO_POLYGON when none was in the box. */
     uint8_t found;    /**< 1 if a polygon was found within the search box, else 0. */
