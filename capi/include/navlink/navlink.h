@@ -324,7 +324,9 @@ typedef struct nl_agent_type {
     float radius;    /**< Metres the navmesh keeps from walls (0.6 by default). */
     float height;    /**< Headroom needed, metres (2.0). */
     float max_climb; /**< Highest step walked up without a link, metres (0.9). */
-    float max_slope; /**< Steepest walkable slope, degrees (45). */
+    float max_slope; /**< Steepest walkable slope, degrees (45). Recast also refuses a step
+                          between neighbouring cells higher than max_climb, so a slope can be
+                          unwalkable below max_slope when its cells rise faster than that. */
 } nl_agent_type;
 
 /** Recast's usual agent: radius 0.6, height 2.0, climb 0.9, slope 45. Thread-safe; never fails. */
@@ -345,8 +347,10 @@ typedef struct nl_navmesh_def {
                                                that only touch (Unity repeats vertices per triangle) are
                                                connected. Default 0.001; 0 welds exact duplicates only. */
     nl_agent_type agent;                  /**< The agent type this navmesh was made for. */
-    /* Optional height detail, as Recast's detail mesh: triangles over each polygon with the surface's
-       real heights, used for point location. All NULL/0 means the polygons are the surface. */
+    /* Optional height detail, as Recast's detail mesh: triangles over each polygon that follow the
+       surface more closely than the polygon does, used for point location. All NULL/0 means the
+       polygons are the surface. (Recast's, like Detour's, sit up to two cell heights above the
+       floor: voxel tops are rounded up.) */
     const float* detail_vertices;         /**< x y z per detail vertex; borrowed. */
     uint32_t detail_vertex_count;
     const uint32_t* detail_triangles;     /**< 3 indices into detail_vertices per triangle; borrowed. */
@@ -473,7 +477,9 @@ typedef struct nl_navmesh_build_def {
     const void* settings;       /**< Optional builder-specific settings struct starting with
                                      `uint32_t size` (nl_recast_settings for "recast"); borrowed. */
     const char* settings_json;  /**< Optional settings as a JSON object (UTF-8, `settings_json_length`
-                                     bytes), applied over `settings` or the defaults; borrowed. */
+                                     bytes), applied over `settings` or the defaults; borrowed. NULL
+                                     means none (length must then be 0); an empty string is not a
+                                     JSON object (PARSE_ERROR). */
     size_t settings_json_length;
 } nl_navmesh_build_def;
 
@@ -497,7 +503,7 @@ typedef struct nl_plugin_id {
     uint32_t generation;
 } nl_plugin_id;
 
-/** Plugin kinds (bits of nl_plugin_description.kinds). */
+/** Plugin kinds (bits of nl_plugin_description.kinds and nl_plugin_info.kinds). */
 #define NL_PLUGIN_NAVMESH_BUILDER 0x1u
 #define NL_PLUGIN_LINK_KIND 0x2u
 #define NL_PLUGIN_PATH_MODIFIER 0x4u

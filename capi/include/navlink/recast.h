@@ -1,7 +1,12 @@
 /*
  * Settings of the built-in Recast navmesh builder (builder name "recast"), with Recast's usual
  * defaults (those of RecastDemo's solo mesh). Pass a filled struct as nl_navmesh_build_def.settings,
- * or the same fields as JSON in settings_json (keys as the field names below).
+ * or the same fields as JSON in settings_json: keys as the field names below (but `size` and
+ * `reserved`), "partition" also as "watershed", "monotone" or "layers", the filters as booleans.
+ *
+ * Recast's own limits, refused with INVALID_ARGUMENT naming the setting to change: agent height at
+ * most 255 cell heights, radius at most 127 cell sizes, the level at most 65,535 cells per side and
+ * 2^27 cells in all, and at most 8,191 cell heights tall.
  */
 #ifndef NAVLINK_RECAST_H
 #define NAVLINK_RECAST_H
@@ -26,13 +31,14 @@ typedef struct nl_recast_settings {
     float edge_max_length;            /**< Longest polygon edge along walls, metres (12); 0 = no limit. */
     float edge_max_error;             /**< Contour simplification error, cells (1.3). */
     uint32_t vertices_per_polygon;    /**< 3..6 (6). */
-    float detail_sample_distance;     /**< Detail mesh sample spacing, cells (6); < 0.9 disables. */
+    float detail_sample_distance;     /**< Detail mesh sample spacing, cells (6); 0 <= value < 0.9: no
+                                           samples inside polygons (the outline only). */
     float detail_sample_max_error;    /**< Detail mesh height error, cells of cell_height (1). */
     uint32_t partition;               /**< NL_RECAST_PARTITION_* (watershed). */
     uint8_t filter_low_hanging_obstacles;     /**< 1 (default): walk over obstacles lower than max_climb. */
     uint8_t filter_ledge_spans;               /**< 1 (default): no walkable spans at ledges. */
     uint8_t filter_walkable_low_height_spans; /**< 1 (default): no spans with less headroom than height. */
-    uint8_t reserved;
+    uint8_t reserved;                         /**< Set to 0; ignored. */
 } nl_recast_settings;
 
 /** Recast's usual defaults. Thread-safe; never fails. */

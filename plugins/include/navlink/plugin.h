@@ -43,7 +43,9 @@ typedef struct nl_plugin_host {
     /** Copies the world-space triangles of every registered mesh (under current transforms): vertex
      *  positions into `vertices` (room for `vertex_capacity` vertices, 3 floats each) and 3 indices per
      *  triangle into `indices` (room for `triangle_capacity` triangles). The counts are always written;
-     *  BUFFER_TOO_SMALL (nothing copied) when either buffer is short, so call once with capacity 0. */
+     *  BUFFER_TOO_SMALL (nothing copied) when either buffer is short. The count-only call (capacities
+     *  0, buffers may be NULL) succeeds. The level may change between two calls: retry on
+     *  BUFFER_TOO_SMALL. */
     nl_status (*get_level_triangles)(void* context, float* vertices, uint32_t vertex_capacity,
                                      uint32_t* out_vertex_count, uint32_t* indices, uint32_t triangle_capacity,
                                      uint32_t* out_triangle_count);
