@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "entry_guard.h"
+#include "host_input.h"
 #include "io/obj_reader.h"
 #include "world.h"
 
@@ -19,8 +20,8 @@ constexpr size_t kMeshDefFirstSize = offsetof(nl_mesh_def, user_data) + sizeof(u
 constexpr size_t kMeshInfoFirstSize = offsetof(nl_mesh_info, user_data) + sizeof(uint64_t);
 static_assert(NL_COORDINATE_LIMIT == nl::kCoordinateLimit, "header and core disagree on the coordinate limit");
 
-nl::Handle to_handle(nl_mesh_id id) { return nl::Handle{id.index1, id.generation}; }
-nl_mesh_id to_id(nl::Handle h) { return nl_mesh_id{h.index1, h.generation}; }
+using nl::capi::to_handle;
+using nl::capi::to_id;
 
 nl::Transform read_transform(const float* m, const char* name) {
     if (!m) return nl::Transform::Identity();
@@ -32,22 +33,10 @@ nl_mesh_def read_def(const nl_mesh_def& def) {
 }
 
 nl::TriangleMesh read_def_geometry(const nl_mesh_def& def) {
-    require(def.vertices, "def->vertices");
-    require(def.indices, "def->indices");
-    if (def.vertex_count == 0) fail(ErrorCode::InvalidArgument, "def->vertex_count is 0");
-    if (def.triangle_count == 0) fail(ErrorCode::InvalidArgument, "def->triangle_count is 0");
-    const uint32_t stride = def.vertex_stride == 0 ? 3 * sizeof(float) : def.vertex_stride;
-    if (stride < 3 * sizeof(float))
-        fail(ErrorCode::InvalidArgument, "def->vertex_stride is ", def.vertex_stride, " (at least 12 bytes, or 0)");
-
     nl::TriangleMesh mesh;
-    mesh.vertices.resize(def.vertex_count);
-    const auto* bytes = reinterpret_cast<const unsigned char*>(def.vertices);
-    for (uint32_t i = 0; i < def.vertex_count; ++i) {
-        float xyz[3];
-        std::memcpy(xyz, bytes + size_t(i) * stride, sizeof xyz);  // the host's stride need not keep floats aligned
-        mesh.vertices[i] = nl::Vec3(xyz[0], xyz[1], xyz[2]);
-    }
+    mesh.vertices = nl::capi::read_vertices(def.vertices, def.vertex_count, def.vertex_stride, "def->");
+    require(def.indices, "def->indices");
+    if (def.triangle_count == 0) fail(ErrorCode::InvalidArgument, "def->triangle_count is 0");
     mesh.triangles.resize(def.triangle_count);
     std::memcpy(mesh.triangles.data(), def.indices, size_t(def.triangle_count) * 3 * sizeof(uint32_t));
     return mesh;
@@ -62,7 +51,7 @@ nl_mesh_id add_mesh(nl_world& world, const nl::TriangleMesh& mesh, const nl_mesh
                       nl::concat(function, ": skipped ", info.degenerate_triangle_count, " degenerate triangles of ",
                                  info.degenerate_triangle_count + info.triangle_count));
     }
-    return to_id(h);
+    return to_id<nl_mesh_id>(h);
 }
 
 // Options of an OBJ load: the def without geometry.
@@ -81,7 +70,7 @@ void write(nl_ray_hit& out, const nl::RayHit& hit) {
     out.distance = hit.distance;
     Eigen::Map<nl::Vec3>(out.point) = hit.point;
     Eigen::Map<nl::Vec3>(out.normal) = hit.normal;
-    out.mesh = to_id(hit.mesh);
+    out.mesh = to_id<nl_mesh_id>(hit.mesh);
     out.triangle = hit.triangle;
 }
 
@@ -186,7 +175,7 @@ NL_API nl_status nl_mesh_get_info(const nl_world* world, nl_mesh_id mesh, nl_mes
 NL_API nl_status nl_world_get_meshes(const nl_world* world, nl_mesh_id* out_ids, uint32_t capacity,
                                      uint32_t* out_count) {
     return guarded("nl_world_get_meshes", world, [&] {
-        nl::capi::list_into(deref(world).level->meshes(), out_ids, capacity, out_count, "out_ids", to_id);
+        nl::capi::list_into(deref(world).level->meshes(), out_ids, capacity, out_count, "out_ids", to_id<nl_mesh_id>);
     });
 }
 

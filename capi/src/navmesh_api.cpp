@@ -2,6 +2,7 @@
 #include <cstring>
 
 #include "entry_guard.h"
+#include "host_input.h"
 #include "navmesh/navmesh_builder.h"
 #include "world.h"
 
@@ -18,8 +19,8 @@ constexpr size_t kNavMeshInfoFirstSize = offsetof(nl_navmesh_info, bounds_max) +
 static_assert(NL_MAX_POLYGON_VERTICES == nl::kMaxPolygonVertices, "header and core disagree");
 static_assert(NL_NO_POLYGON == nl::kNoPolygon, "header and core disagree");
 
-nl::Handle to_handle(nl_navmesh_id id) { return nl::Handle{id.index1, id.generation}; }
-nl_navmesh_id to_id(nl::Handle h) { return nl_navmesh_id{h.index1, h.generation}; }
+using nl::capi::to_handle;
+using nl::capi::to_id;
 
 nl::AgentType to_agent(const nl_agent_type& a) { return nl::AgentType{a.radius, a.height, a.max_climb, a.max_slope}; }
 nl_agent_type to_c(const nl::AgentType& a) { return nl_agent_type{a.radius, a.height, a.max_climb, a.max_slope}; }
@@ -27,22 +28,10 @@ nl_agent_type to_c(const nl::AgentType& a) { return nl_agent_type{a.radius, a.he
 void copy_point(float* out, const nl::Vec3& v) { Eigen::Map<nl::Vec3>{out} = v; }
 
 nl::NavMeshInput read_navmesh_def(const nl_navmesh_def& def) {
-    require(def.vertices, "def->vertices");
-    require(def.indices, "def->indices");
-    if (def.vertex_count == 0) fail(ErrorCode::InvalidArgument, "def->vertex_count is 0");
-    if (def.polygon_count == 0) fail(ErrorCode::InvalidArgument, "def->polygon_count is 0");
-    const uint32_t stride = def.vertex_stride == 0 ? 3 * sizeof(float) : def.vertex_stride;
-    if (stride < 3 * sizeof(float))
-        fail(ErrorCode::InvalidArgument, "def->vertex_stride is ", def.vertex_stride, " (at least 12 bytes, or 0)");
-
     nl::NavMeshInput in;
-    in.vertices.resize(def.vertex_count);
-    const auto* bytes = reinterpret_cast<const unsigned char*>(def.vertices);
-    for (uint32_t i = 0; i < def.vertex_count; ++i) {
-        float xyz[3];
-        std::memcpy(xyz, bytes + size_t(i) * stride, sizeof xyz);
-        in.vertices[i] = nl::Vec3(xyz[0], xyz[1], xyz[2]);
-    }
+    in.vertices = nl::capi::read_vertices(def.vertices, def.vertex_count, def.vertex_stride, "def->");
+    require(def.indices, "def->indices");
+    if (def.polygon_count == 0) fail(ErrorCode::InvalidArgument, "def->polygon_count is 0");
     size_t index_count = size_t(def.polygon_count) * 3;
     if (def.polygon_vertex_counts) {
         in.polygon_sizes.assign(def.polygon_vertex_counts, def.polygon_vertex_counts + def.polygon_count);
@@ -83,7 +72,7 @@ nl_navmesh_id add_navmesh(nl_world& world, const nl_navmesh_def& def, const char
                        r.dropped_polygons, " degenerate polygons dropped, ", r.non_manifold_edges,
                        " edges shared by 3+ polygons left unconnected"));
     }
-    return to_id(world.navmeshes->add(std::move(navmesh)));
+    return to_id<nl_navmesh_id>(world.navmeshes->add(std::move(navmesh)));
 }
 
 }  // namespace nl::capi
@@ -221,7 +210,7 @@ NL_API nl_status nl_navmesh_find_nearest(const nl_world* world, nl_navmesh_id na
 NL_API nl_status nl_world_get_navmeshes(const nl_world* world, nl_navmesh_id* out_ids, uint32_t capacity,
                                         uint32_t* out_count) {
     return guarded("nl_world_get_navmeshes", world, [&] {
-        nl::capi::list_into(deref(world).navmeshes->handles(), out_ids, capacity, out_count, "out_ids", to_id);
+        nl::capi::list_into(deref(world).navmeshes->handles(), out_ids, capacity, out_count, "out_ids", to_id<nl_navmesh_id>);
     });
 }
 

@@ -3,6 +3,7 @@
 #include <exception>
 
 #include "entry_guard.h"
+#include "host_input.h"
 #include "navlink/plugin.h"
 #include "navlink/recast.h"
 #include "recast_builder.h"
@@ -19,8 +20,8 @@ namespace {
 constexpr size_t kBuildDefFirstSize = offsetof(nl_navmesh_build_def, settings_json_length) + sizeof(size_t);
 constexpr size_t kDescriptionFirstSize = offsetof(nl_plugin_description, description) + sizeof(const char*);
 
-nl::Handle to_handle(nl_plugin_id id) { return nl::Handle{id.index1, id.generation}; }
-nl_plugin_id to_id(nl::Handle h) { return nl_plugin_id{h.index1, h.generation}; }
+using nl::capi::to_handle;
+using nl::capi::to_id;
 
 // What a builder hands back through the sink: the navmesh added, or why it could not be.
 struct BuildSink {
@@ -119,7 +120,7 @@ NL_API nl_status nl_plugin_load(nl_world* world, const char* path, nl_plugin_id*
         nl_world& w = deref(world);
         require(path, "path");
         require(out_id, "out_id");
-        *out_id = to_id(w.plugins->load(path));
+        *out_id = to_id<nl_plugin_id>(w.plugins->load(path));
     });
 }
 
@@ -128,7 +129,7 @@ NL_API nl_status nl_plugin_register(nl_world* world, nl_plugin_entry_fn* entry, 
         nl_world& w = deref(world);
         require(reinterpret_cast<const void*>(entry), "entry");
         require(out_id, "out_id");
-        *out_id = to_id(w.plugins->add(entry, nullptr, false, "registered by the host"));
+        *out_id = to_id<nl_plugin_id>(w.plugins->add(entry, nullptr, false, "registered by the host"));
     });
 }
 
@@ -152,7 +153,7 @@ NL_API nl_status nl_plugin_get_description(const nl_world* world, nl_plugin_id p
 NL_API nl_status nl_world_get_plugins(const nl_world* world, nl_plugin_id* out_ids, uint32_t capacity,
                                       uint32_t* out_count) {
     return guarded("nl_world_get_plugins", world, [&] {
-        nl::capi::list_into(deref(world).plugins->handles(), out_ids, capacity, out_count, "out_ids", to_id);
+        nl::capi::list_into(deref(world).plugins->handles(), out_ids, capacity, out_count, "out_ids", to_id<nl_plugin_id>);
     });
 }
 

@@ -1,0 +1,42 @@
+// Reading what the host hands over: ids by value and strided vertex arrays.
+#pragma once
+
+#include <cstring>
+#include <vector>
+
+#include "level/geometry.h"
+#include "util/error.h"
+#include "util/handle.h"
+
+namespace nl::capi {
+
+// Every nl_*_id is {index1, generation}, as a core Handle.
+template <typename Id>
+Handle to_handle(Id id) {
+    return Handle{id.index1, id.generation};
+}
+
+template <typename Id>
+Id to_id(Handle h) {
+    return Id{h.index1, h.generation};
+}
+
+// Copies `count` positions that start every `stride` bytes (0 = packed). The host's stride need not
+// keep floats aligned, hence the byte copies. `prefix` names the def in messages ("def->").
+inline std::vector<Vec3> read_vertices(const float* vertices, uint32_t count, uint32_t stride, const char* prefix) {
+    if (!vertices) fail(ErrorCode::InvalidArgument, prefix, "vertices is null");
+    if (count == 0) fail(ErrorCode::InvalidArgument, prefix, "vertex_count is 0");
+    const uint32_t step = stride == 0 ? 3 * sizeof(float) : stride;
+    if (step < 3 * sizeof(float))
+        fail(ErrorCode::InvalidArgument, prefix, "vertex_stride is ", stride, " (at least 12 bytes, or 0)");
+    std::vector<Vec3> out(count);
+    const auto* bytes = reinterpret_cast<const unsigned char*>(vertices);
+    for (uint32_t i = 0; i < count; ++i) {
+        float xyz[3];
+        std::memcpy(xyz, bytes + size_t(i) * step, sizeof xyz);
+        out[i] = Vec3(xyz[0], xyz[1], xyz[2]);
+    }
+    return out;
+}
+
+}  // namespace nl::capi
