@@ -1,0 +1,31 @@
+// Step 1 of link generation: the navmesh's boundary edges become take-off samples. Short edges that
+// touch are grouped (a ragged ledge is one ledge) and represented by the member facing most like the
+// group; long edges get a sample every `sample_spacing`.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "links/link_settings.h"
+#include "navmesh/navmesh.h"
+
+namespace nl {
+
+struct EdgeSample {
+    Vec3 point;         // on the navmesh edge
+    Vec3 outward;       // horizontal unit direction away from the navmesh
+    Vec3 normal;        // the surface normal at the edge
+    uint32_t polygon;   // the polygon the edge belongs to
+    uint32_t edge;      // index of the (representative) boundary edge
+};
+
+struct EdgeSampling {
+    std::vector<EdgeSample> samples;
+    uint32_t edges = 0;           // boundary edges considered
+    uint32_t groups = 0;          // groups of short edges kept
+    uint32_t dropped_edges = 0;   // short edges in groups too small, or with no horizontal outward
+};
+
+EdgeSampling sample_edges(const NavMesh& mesh, const LinkSettings& settings);
+
+}  // namespace nl

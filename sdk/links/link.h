@@ -1,0 +1,44 @@
+// A link: a traversal the navmesh cannot express by walking (a jump across a gap, a drop off a
+// ledge, a manual or plugin-defined move), with what it physically asks of an agent.
+#pragma once
+
+#include <cstdint>
+
+#include "level/geometry.h"
+
+namespace nl {
+
+enum class LinkKind : uint32_t {
+    Jump = 1,
+    Drop = 2,
+    Manual = 3,
+    // Kinds from plugins start here.
+    FirstPluginKind = 256,
+};
+
+// What taking the link asks of an agent, in its forward direction (start to end). Going the other
+// way over a bidirectional link swaps rise and drop.
+struct LinkRequirements {
+    float gap = 0.0f;              // horizontal distance between the ends
+    float rise = 0.0f;             // how far the end is above the start (0 if below)
+    float drop = 0.0f;             // how far the end is below the start (0 if above)
+    float clearance_width = 0.0f;  // widest body found clear along the link
+    uint64_t abilities = 0;        // ability bits the agent must have (plugin kinds)
+};
+
+struct Link {
+    LinkKind kind = LinkKind::Manual;
+    Vec3 start = Vec3::Zero();
+    Vec3 end = Vec3::Zero();
+    Vec3 apex = Vec3::Zero();  // top of a jump's arc; for other kinds the higher end
+    bool bidirectional = false;
+    bool generated = false;
+    bool enabled = true;
+    float cost_modifier = 1.0f;
+    uint64_t user_data = 0;
+    LinkRequirements requires;
+    uint32_t start_polygon = 0xffffffffu;
+    uint32_t end_polygon = 0xffffffffu;
+};
+
+}  // namespace nl

@@ -1,0 +1,54 @@
+// Link generation for one navmesh against the level's geometry:
+//   edges -> samples -> take-off points -> jump candidates (spatial grid) and drop probes
+//   -> constraints -> agent-volume clearance (batched Embree occlusion) -> merge.
+// Deterministic: the same navmesh, level and settings give the same links in the same order,
+// whatever the thread count.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "level/level.h"
+#include "links/link.h"
+#include "links/link_settings.h"
+#include "navmesh/navmesh.h"
+#include "util/function_ref.h"
+#include "util/task_system.h"
+
+namespace nl {
+
+// Answers a level designer's "why is there no link here?": what each stage saw and refused.
+struct BakeReport {
+    uint32_t edges = 0;              // boundary edges of the navmesh
+    uint32_t groups = 0;             // groups of short edges
+    uint32_t samples = 0;            // take-off samples on edges
+    uint32_t takeoff_points = 0;     // samples that really hang over a drop or gap
+    uint32_t jump_candidates = 0;    // edge pairs within reach, tested further
+    uint32_t drop_candidates = 0;    // landings found below take-off points, tested further
+    uint32_t jump_links = 0;
+    uint32_t drop_links = 0;
+    // Rejections, by reason.
+    uint32_t rejected_wall = 0;          // take-off point inside a wall
+    uint32_t rejected_not_ledge = 0;     // walkable ground a step below the take-off point
+    uint32_t rejected_distance = 0;      // too far, too close, or a drop too deep or too shallow
+    uint32_t rejected_rise = 0;          // a jump higher than max_jump_up
+    uint32_t rejected_angle = 0;         // not facing the other edge, or too steep
+    uint32_t rejected_no_landing = 0;    // no navmesh where the agent would land
+    uint32_t rejected_clearance = 0;     // the agent's body would hit geometry on the way
+    uint32_t rejected_duplicate = 0;     // the same traversal as a link already kept
+    uint64_t rays_cast = 0;              // rays and occlusion segments sent to Embree
+    double milliseconds_edges = 0, milliseconds_takeoff = 0, milliseconds_jumps = 0, milliseconds_drops = 0,
+           milliseconds_merge = 0, milliseconds_total = 0;
+};
+
+// How jump candidates are found: the spatial grid, or every pair (the slow reference tests use).
+enum class CandidateSearch { SpatialGrid, AllPairs };
+
+// Called between and within stages with the fraction done (0..1) and the stage's name; returning
+// false cancels the bake (generate_links then throws Cancelled).
+using BakeProgress = FunctionRef<bool(float fraction, const char* stage)>;
+
+std::vector<Link> generate_links(const NavMesh& navmesh, const Level& level, TaskSystem& tasks, const LinkSettings& settings,
+                                 CandidateSearch search, BakeReport& report, BakeProgress progress);
+
+}  // namespace nl

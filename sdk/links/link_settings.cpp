@@ -1,0 +1,46 @@
+#include "links/link_settings.h"
+
+#include <cmath>
+
+#include "util/error.h"
+
+namespace nl {
+namespace {
+
+void check(bool ok, float value, const char* prefix, const char* field, const char* rule) {
+    if (!ok || !std::isfinite(value)) fail(ErrorCode::InvalidArgument, prefix, field, " is ", value, " (", rule, ")");
+}
+
+}  // namespace
+
+void validate(const LinkSettings& s, const char* p) {
+    check(s.min_edge_length >= 0.0f, s.min_edge_length, p, "min_edge_length", "must be >= 0");
+    if (s.min_group_size < 1 || s.max_group_size < s.min_group_size || s.max_group_size > 1000)
+        fail(ErrorCode::InvalidArgument, p, "min_group_size ", s.min_group_size, " and max_group_size ", s.max_group_size,
+             " must satisfy 1 <= min <= max <= 1000");
+    check(s.sample_spacing >= 0.05f, s.sample_spacing, p, "sample_spacing", "must be >= 0.05 m");
+    check(s.falloff_distance > 0.0f && s.falloff_distance <= 10.0f, s.falloff_distance, p, "falloff_distance", "must be in (0, 10] m");
+    check(s.max_link_distance > 0.0f && s.max_link_distance <= 100.0f, s.max_link_distance, p, "max_link_distance", "must be in (0, 100] m");
+    check(s.min_link_distance >= 0.0f && s.min_link_distance < s.max_link_distance, s.min_link_distance, p,
+          "min_link_distance", "must be >= 0 and below max_link_distance");
+    check(s.short_link_distance >= 0.0f, s.short_link_distance, p, "short_link_distance", "must be >= 0");
+    check(s.max_jump_up >= 0.0f, s.max_jump_up, p, "max_jump_up", "must be >= 0");
+    check(s.jump_arc_height > 0.0f && s.jump_arc_height <= 50.0f, s.jump_arc_height, p, "jump_arc_height", "must be in (0, 50] m");
+    for (const auto& [value, name] : {std::pair{s.strict_forward_angle, "strict_forward_angle"},
+                                      std::pair{s.permissive_forward_angle, "permissive_forward_angle"},
+                                      std::pair{s.strict_incline_angle, "strict_incline_angle"},
+                                      std::pair{s.permissive_incline_angle, "permissive_incline_angle"}})
+        check(value >= 0.0f && value <= 90.0f, value, p, name, "must be in [0, 90] degrees");
+    check(s.max_drop_distance > 0.0f && s.max_drop_distance <= 1000.0f, s.max_drop_distance, p, "max_drop_distance",
+          "must be in (0, 1000] m");
+    if (s.drop_angles.size() > 16) fail(ErrorCode::InvalidArgument, p, "drop_angles has ", s.drop_angles.size(), " entries (at most 16)");
+    for (size_t i = 0; i < s.drop_angles.size(); ++i)
+        check(std::fabs(s.drop_angles[i]) <= 90.0f, s.drop_angles[i], p, "drop_angles[i]", "must be in [-90, 90] degrees");
+    check(s.drop_steepness >= 10.0f && s.drop_steepness <= 90.0f, s.drop_steepness, p, "drop_steepness", "must be in [10, 90] degrees");
+    check(s.merge_distance >= 0.0f, s.merge_distance, p, "merge_distance", "must be >= 0");
+    check(s.clearance_margin >= 0.0f && s.clearance_margin < 0.5f, s.clearance_margin, p, "clearance_margin", "must be in [0, 0.5)");
+    if (s.arc_segments < 2 || s.arc_segments > 64)
+        fail(ErrorCode::InvalidArgument, p, "arc_segments is ", s.arc_segments, " (must be 2..64)");
+}
+
+}  // namespace nl
