@@ -4,12 +4,14 @@
 #pragma once
 
 #include <algorithm>
+#include <memory>
 #include <cstring>
 #include <new>
 #include <string>
 #include <vector>
 
 #include "navlink/navlink.h"
+#include "navmesh/navmesh.h"
 #include "util/error.h"
 
 struct nl_world;
@@ -23,8 +25,9 @@ ErrorCode to_error_code(nl_status status) noexcept;
 // Records the outcome of the current call on this thread (and logs failures through `world`).
 nl_status record(const char* function, const nl_world* world, nl_status status, const char* message) noexcept;
 
-// Validates and adds a navmesh from a def (nl_navmesh_add, and the builders' sink). Throws.
-nl_navmesh_id add_navmesh(nl_world& world, const nl_navmesh_def& def, const char* function);
+// Validates and builds a navmesh from a def (nl_navmesh_add, and the builders' sink), logging the
+// repairs. Throws; adds nothing to the world.
+std::shared_ptr<const NavMesh> navmesh_from_def(const nl_world& world, const nl_navmesh_def& def, const char* function);
 
 // Sends a message to the world's log callback if it wants that level.
 void log(const nl_world* world, nl_log_level level, nl_status status, const std::string& message) noexcept;

@@ -15,6 +15,7 @@ using nl::capi::require;
 namespace {
 
 constexpr size_t kNavMeshDefFirstSize = offsetof(nl_navmesh_def, detail_triangle_starts) + sizeof(const uint32_t*);
+constexpr uint32_t kMaxCorners = NL_MAX_POLYGON_VERTICES;
 constexpr size_t kNavMeshInfoFirstSize = offsetof(nl_navmesh_info, bounds_max) + 3 * sizeof(float);
 static_assert(NL_MAX_POLYGON_VERTICES == nl::kMaxPolygonVertices, "header and core disagree");
 static_assert(NL_NO_POLYGON == nl::kNoPolygon, "header and core disagree");
@@ -36,23 +37,32 @@ nl::NavMeshInput read_navmesh_def(const nl_navmesh_def& def) {
     if (def.polygon_vertex_counts) {
         in.polygon_sizes.assign(def.polygon_vertex_counts, def.polygon_vertex_counts + def.polygon_count);
         index_count = 0;
-        for (uint8_t n : in.polygon_sizes) index_count += n;
+        // Checked before they size the read of the indices.
+        for (size_t p = 0; p < in.polygon_sizes.size(); ++p) {
+            const uint32_t n = in.polygon_sizes[p];
+            if (n < 3 || n > kMaxCorners)
+                fail(ErrorCode::InvalidArgument, "def->polygon_vertex_counts[", p, "] = ", n, " (must be 3..", kMaxCorners, ")");
+            index_count += n;
+        }
     }
     in.indices.assign(def.indices, def.indices + index_count);
     if (def.areas) in.areas.assign(def.areas, def.areas + def.polygon_count);
     in.weld_tolerance = def.weld_tolerance;
     in.agent = to_agent(def.agent);
 
-    const bool any_detail = def.detail_vertices || def.detail_triangles || def.detail_triangle_starts;
+    const bool any_detail = def.detail_vertices || def.detail_triangles || def.detail_triangle_starts ||
+                            def.detail_vertex_count || def.detail_triangle_count;
     if (any_detail) {
         require(def.detail_vertices, "def->detail_vertices");
         require(def.detail_triangles, "def->detail_triangles");
         require(def.detail_triangle_starts, "def->detail_triangle_starts");
+        if (def.detail_vertex_count == 0 || def.detail_triangle_count == 0)
+            fail(ErrorCode::InvalidArgument, "def->detail_vertex_count and def->detail_triangle_count must be > 0 with detail");
         in.detail_starts.assign(def.detail_triangle_starts, def.detail_triangle_starts + def.polygon_count + 1);
         in.detail_vertices.resize(def.detail_vertex_count);
         for (uint32_t i = 0; i < def.detail_vertex_count; ++i)
             in.detail_vertices[i] = Eigen::Map<const nl::Vec3>(def.detail_vertices + 3 * size_t(i));
-        in.detail_indices.assign(def.detail_triangles, def.detail_triangles + size_t(in.detail_starts.back()) * 3);
+        in.detail_indices.assign(def.detail_triangles, def.detail_triangles + size_t(def.detail_triangle_count) * 3);
     }
     return in;
 }
@@ -62,7 +72,7 @@ nl::NavMeshInput read_navmesh_def(const nl_navmesh_def& def) {
 namespace nl::capi {
 
 // Shared by nl_navmesh_add and the builders' sink: both hand over an nl_navmesh_def.
-nl_navmesh_id add_navmesh(nl_world& world, const nl_navmesh_def& def, const char* function) {
+std::shared_ptr<const NavMesh> navmesh_from_def(const nl_world& world, const nl_navmesh_def& def, const char* function) {
     const nl_navmesh_def settings = read_growable(def, nl_default_navmesh_def(), kNavMeshDefFirstSize, "def");
     std::shared_ptr<const nl::NavMesh> navmesh = nl::build_navmesh(read_navmesh_def(settings), "def->");
     const nl::NavMeshRepairs& r = navmesh->repairs();
@@ -72,7 +82,7 @@ nl_navmesh_id add_navmesh(nl_world& world, const nl_navmesh_def& def, const char
                        r.dropped_polygons, " degenerate polygons dropped, ", r.non_manifold_edges,
                        " edges shared by 3+ polygons left unconnected"));
     }
-    return to_id<nl_navmesh_id>(world.navmeshes->add(std::move(navmesh)));
+    return navmesh;
 }
 
 }  // namespace nl::capi
@@ -94,7 +104,7 @@ NL_API nl_status nl_navmesh_add(nl_world* world, const nl_navmesh_def* def, nl_n
         nl_world& w = deref(world);
         require(def, "def");
         require(out_id, "out_id");
-        *out_id = nl::capi::add_navmesh(w, *def, "nl_navmesh_add");
+        *out_id = to_id<nl_navmesh_id>(w.navmeshes->add(nl::capi::navmesh_from_def(w, *def, "nl_navmesh_add")));
     });
 }
 

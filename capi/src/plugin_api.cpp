@@ -23,19 +23,23 @@ constexpr size_t kDescriptionFirstSize = offsetof(nl_plugin_description, descrip
 using nl::capi::to_handle;
 using nl::capi::to_id;
 
-// What a builder hands back through the sink: the navmesh added, or why it could not be.
+// What a builder hands back through the sink: the navmesh, validated and built but not yet added
+// (only a builder that then succeeds gets it added), or why it was refused.
 struct BuildSink {
     nl_world* world = nullptr;
     int calls = 0;
-    nl_navmesh_id id{};
+    std::shared_ptr<const nl::NavMesh> navmesh;
     std::exception_ptr error;
 
-    static nl_status receive(void* context, const nl_navmesh_def* navmesh) {
+    static nl_status receive(void* context, const nl_navmesh_def* def) {
         auto& self = *static_cast<BuildSink*>(context);
-        if (++self.calls > 1) return NL_STATUS_FAILURE | NL_STATUS_INVALID_ARGUMENT;
+        if (++self.calls > 1) {
+            nl::capi::take_plugin_error();
+            return NL_STATUS_FAILURE | NL_STATUS_INVALID_ARGUMENT;
+        }
         try {
-            require(navmesh, "navmesh");
-            self.id = nl::capi::add_navmesh(*self.world, *navmesh, "nl_navmesh_build");
+            require(def, "navmesh");
+            self.navmesh = nl::capi::navmesh_from_def(*self.world, *def, "nl_navmesh_build");
             return NL_STATUS_SUCCESS;
         } catch (const nl::Error& e) {
             self.error = std::current_exception();
@@ -98,18 +102,21 @@ NL_API nl_status nl_navmesh_build(nl_world* world, const nl_navmesh_build_def* d
                                                                     &BuildSink::receive, &sink);
         const std::string reason = nl::capi::take_plugin_error();
         if (sink.error) {
+            // The builder's output, not the caller's arguments, was wrong.
             try {
                 std::rethrow_exception(sink.error);
             } catch (const nl::Error& e) {
-                fail(e.code(), "builder '", name, "' made a navmesh that was refused: ", e.what());
+                if (e.code() == ErrorCode::OutOfMemory) throw;
+                fail(ErrorCode::Internal, "builder '", name, "' made a navmesh that was refused: ", e.what());
             }
         }
+        if (sink.calls > 1) fail(ErrorCode::Internal, "builder '", name, "' handed over ", sink.calls, " navmeshes, not one");
         if (NL_FAILED(status)) {
             throw nl::Error(nl::capi::to_error_code(status),
                             nl::concat("builder '", name, "': ", reason.empty() ? nl_status_string(status) : reason));
         }
-        if (sink.calls != 1) fail(ErrorCode::Internal, "builder '", name, "' succeeded without handing over a navmesh");
-        *out_id = sink.id;
+        if (sink.calls == 0) fail(ErrorCode::Internal, "builder '", name, "' succeeded without handing over a navmesh");
+        *out_id = to_id<nl_navmesh_id>(w.navmeshes->add(std::move(sink.navmesh)));
         const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
         nl::capi::log(&w, NL_LOG_INFO, NL_STATUS_SUCCESS, nl::concat("nl_navmesh_build: '", name, "' built a navmesh in ", ms, " ms"));
     });

@@ -90,8 +90,9 @@ Handle PluginRegistry::add(nl_plugin_entry_fn* entry, void* library, bool builti
         if (status & NL_STATUS_VERSION_MISMATCH)
             fail(ErrorCode::VersionMismatch, "plugin ", origin, " speaks no plugin ABI version <= ", NL_PLUGIN_ABI_VERSION,
                  reason.empty() ? "" : ": ", reason);
-        fail(ErrorCode::Internal, "plugin ", origin, " refused to start (", nl_status_string(status), ")",
-             reason.empty() ? "" : ": ", reason);
+        throw Error(to_error_code(status) == ErrorCode::OutOfMemory ? ErrorCode::OutOfMemory : ErrorCode::Internal,
+                    concat("plugin ", origin, " refused to start (", nl_status_string(status), ")",
+                           reason.empty() ? "" : ": ", reason));
     }
     const nl_plugin_info& info = plugin->info;
     auto release = [&] {

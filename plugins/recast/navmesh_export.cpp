@@ -75,6 +75,7 @@ nl_navmesh_def NavMeshExport::def(const nl_agent_type& agent) const {
     d.detail_vertices = detail_vertices_.data();
     d.detail_vertex_count = static_cast<uint32_t>(detail_vertices_.size() / 3);
     d.detail_triangles = detail_triangles_.data();
+    d.detail_triangle_count = static_cast<uint32_t>(detail_triangles_.size() / 3);
     d.detail_triangle_starts = detail_triangle_starts_.data();
     return d;
 }

@@ -38,13 +38,16 @@ void PolygonGrid::build(const std::vector<Aabb>& bounds, const Aabb& all) {
     for (uint32_t p = 0; p < count; ++p) for_cells(bounds[p], [&](size_t c) { cell_polygons_[fill[c]++] = p; });
 }
 
-int PolygonGrid::cell_x(float x) const {
-    return std::clamp(static_cast<int>(std::floor((x - origin_x_) * inverse_cell_)), 0, columns_ - 1);
-}
+namespace {
 
-int PolygonGrid::cell_z(float z) const {
-    return std::clamp(static_cast<int>(std::floor((z - origin_z_) * inverse_cell_)), 0, rows_ - 1);
-}
+// Clamped before the conversion: a search box far larger than the grid must not overflow an int.
+int clamp_cell(double cell, int count) { return static_cast<int>(std::clamp(std::floor(cell), 0.0, double(count - 1))); }
+
+}  // namespace
+
+int PolygonGrid::cell_x(float x) const { return clamp_cell((double(x) - origin_x_) * inverse_cell_, columns_); }
+
+int PolygonGrid::cell_z(float z) const { return clamp_cell((double(z) - origin_z_) * inverse_cell_, rows_); }
 
 void PolygonGrid::visit(const Vec3& lo, const Vec3& hi, const std::vector<Aabb>& bounds,
                         FunctionRef<void(uint32_t)> fn) const {

@@ -1,5 +1,6 @@
 #include "navmesh/vertex_welder.h"
 
+#include <algorithm>
 #include <cmath>
 #include <unordered_map>
 
@@ -27,7 +28,9 @@ std::vector<uint32_t> weld_vertices(const std::vector<Vec3>& vertices, float tol
     std::vector<uint32_t> representative(count);
     // Cells as wide as the tolerance: a vertex's matches lie in its own cell or the 26 around it.
     // With tolerance 0 only exact duplicates weld, found in the vertex's own (tiny) cell.
-    const double cell = tolerance > 0.0f ? tolerance : 1e-6;
+    // Never finer than a micrometre: within the coordinate limit the cell keys then stay far inside
+    // int64 (1e9 m / 1e-6 m = 1e15), and float positions are coarser than that anyway.
+    const double cell = std::max(double(tolerance), 1e-6);
     const double tolerance_sq = double(tolerance) * tolerance;
     std::unordered_map<CellKey, std::vector<uint32_t>, CellHash> cells;
     cells.reserve(count);

@@ -10,7 +10,7 @@
 /* fork() and waitpid() isolate the cases that may crash the process; strict C11 otherwise. */
 #define _POSIX_C_SOURCE 200809L
 
-#include <navlink/navlink.h>
+#include "c_api_test.h"
 
 #include <math.h>
 #include <pthread.h>
@@ -23,14 +23,14 @@
 #include <unistd.h>
 
 /* ---------------------------------------------------------------------------------------------
- * Checks
+ * Checks (declared in c_api_test.h, shared with the other files of this test)
  * ------------------------------------------------------------------------------------------- */
 
-static int g_passed;
-static int g_failed;
-static const char* g_section = "";
+int g_passed;
+int g_failed;
+const char* g_section = "";
 
-static int check_at(int ok, const char* file, int line, const char* what, ...) {
+int check_at(int ok, const char* file, int line, const char* what, ...) {
     if (ok) {
         ++g_passed;
         return 1;
@@ -48,22 +48,14 @@ static int check_at(int ok, const char* file, int line, const char* what, ...) {
     return 0;
 }
 
-#define CHECK(cond) check_at((cond) != 0, __FILE__, __LINE__, "%s", #cond)
-#define CHECK_MSG(cond, ...) check_at((cond) != 0, __FILE__, __LINE__, __VA_ARGS__)
-
-/* A success: the status is exactly SUCCESS and the last message is empty. */
-#define CHECK_OK(status) check_ok_at((status), #status, __FILE__, __LINE__)
-static int check_ok_at(nl_status got, const char* expr, const char* file, int line) {
+int check_ok_at(nl_status got, const char* expr, const char* file, int line) {
     return check_at(got == NL_STATUS_SUCCESS && nl_get_last_status() == NL_STATUS_SUCCESS &&
                         nl_get_last_error_message()[0] == '\0',
                     file, line, "%s returned 0x%08x (%s): %s", expr, (unsigned)got, nl_status_string(got),
                     nl_get_last_error_message());
 }
 
-/* A failure with `detail`, whose message contains `needle`. */
-#define CHECK_FAIL(status, detail, needle) check_fail_at((status), (detail), (needle), #status, __FILE__, __LINE__)
-static int check_fail_at(nl_status got, nl_status detail, const char* needle, const char* expr, const char* file,
-                         int line) {
+int check_fail_at(nl_status got, nl_status detail, const char* needle, const char* expr, const char* file, int line) {
     const nl_status expected = NL_STATUS_FAILURE | detail;
     const char* message = nl_get_last_error_message();
     return check_at(got == expected && nl_get_last_status() == expected && message != NULL &&
@@ -72,17 +64,10 @@ static int check_fail_at(nl_status got, nl_status detail, const char* needle, co
                     expr, (unsigned)got, nl_status_string(got), (unsigned)expected, nl_status_string(expected),
                     needle);
 }
-#define CHECK_INVALID(status, needle) CHECK_FAIL((status), NL_STATUS_INVALID_ARGUMENT, (needle))
 
-#define CHECK_NEAR(a, b, tol) check_near_at((double)(a), (double)(b), (double)(tol), #a, #b, __FILE__, __LINE__)
-static int check_near_at(double a, double b, double tol, const char* ea, const char* eb, const char* file, int line) {
+int check_near_at(double a, double b, double tol, const char* ea, const char* eb, const char* file, int line) {
     return check_at(fabs(a - b) <= tol, file, line, "%s = %.9g, expected %s = %.9g (tolerance %g)", ea, a, eb, b, tol);
 }
-
-/* A check with a sentence saying what the library must do. */
-#define CHECK_THAT(cond, what) check_at((cond) != 0, __FILE__, __LINE__, "%s", (what))
-
-#define TOL 1e-5f
 
 /* ---------------------------------------------------------------------------------------------
  * Scenes
@@ -116,7 +101,7 @@ static nl_mesh_def floor_def(void) {
     return def;
 }
 
-static nl_world* make_world(int32_t workers) {
+nl_world* make_world(int32_t workers) {
     nl_world_def def = nl_default_world_def();
     nl_world* world = NULL;
     def.worker_count = workers;
@@ -156,7 +141,7 @@ static nl_ray_hit cast_down(nl_world* world, float x, float z) {
     return h;
 }
 
-static int all_bytes(const void* p, size_t n, unsigned char value) {
+int all_bytes(const void* p, size_t n, unsigned char value) {
     const unsigned char* b = (const unsigned char*)p;
     size_t i;
     for (i = 0; i < n; ++i) {
@@ -1695,6 +1680,7 @@ int main(int argc, char** argv) {
 
     /* First, while this process has no threads (fork() copies only the calling thread). */
     test_isolated();
+    test_navmesh_isolated();
     test_version_and_status();
     test_world();
     test_mesh_add_and_info();
@@ -1712,6 +1698,7 @@ int main(int argc, char** argv) {
     test_threads();
     test_null_world_everywhere();
     test_edges();
+    test_navmesh_all();
     if (argc > 1 && argv[1][0] != '\0') {
         test_dungeon(argv[1]);
     } else {

@@ -1,10 +1,14 @@
-/* Compile check: <navlink/navlink.h> must build as strict C11 (-std=c11 -Wall -Wextra -pedantic -Werror)
- * and every function it declares must be exported by libnavlink.so (this program takes the address of
- * each one, so a declared but missing symbol fails the link). Running it checks the version agreement. */
+/* Compile check: <navlink/navlink.h>, <navlink/recast.h> and <navlink/plugin.h> must build as strict C11
+ * (-std=c11 -Wall -Wextra -pedantic -Werror) and every function they declare must be exported by
+ * libnavlink.so (this program takes the address of each one, so a declared but missing symbol fails the
+ * link). Running it checks the version agreement. */
 #include <navlink/navlink.h>
+#include <navlink/plugin.h>
+#include <navlink/recast.h>
 
 #include <stddef.h>
 #include <stdio.h>
+#include <string.h>
 
 /* The layouts bindings (C#, Rust, Python) mirror field by field. A change here is an ABI break. */
 _Static_assert(offsetof(nl_world_def, size) == 0, "nl_world_def starts with size");
@@ -32,6 +36,102 @@ _Static_assert(offsetof(nl_mesh_info, transform) == 20 && offsetof(nl_mesh_info,
                    offsetof(nl_mesh_info, bounds_max) == 96 && offsetof(nl_mesh_info, user_data) == 112,
                "nl_mesh_info on LP64");
 #endif
+
+/* Navmeshes. Structs without a size field are fixed forever: every offset and the size. */
+_Static_assert(sizeof(nl_navmesh_id) == 8 && offsetof(nl_navmesh_id, generation) == 4, "nl_navmesh_id");
+_Static_assert(sizeof(nl_plugin_id) == 8 && offsetof(nl_plugin_id, generation) == 4, "nl_plugin_id");
+_Static_assert(NL_MAX_POLYGON_VERTICES == 16, "NL_MAX_POLYGON_VERTICES");
+_Static_assert(NL_NO_POLYGON == 0xffffffffu, "NL_NO_POLYGON");
+_Static_assert(offsetof(nl_agent_type, radius) == 0 && offsetof(nl_agent_type, height) == 4 &&
+                   offsetof(nl_agent_type, max_climb) == 8 && offsetof(nl_agent_type, max_slope) == 12 &&
+                   sizeof(nl_agent_type) == 16,
+               "nl_agent_type is four floats");
+_Static_assert(offsetof(nl_nav_polygon, vertex_count) == 0 && offsetof(nl_nav_polygon, vertices) == 4 &&
+                   offsetof(nl_nav_polygon, neighbours) == 68 && offsetof(nl_nav_polygon, area) == 132 &&
+                   offsetof(nl_nav_polygon, normal) == 136 && offsetof(nl_nav_polygon, centre) == 148 &&
+                   sizeof(nl_nav_polygon) == 160,
+               "nl_nav_polygon layout");
+_Static_assert(offsetof(nl_boundary_edge, start) == 0 && offsetof(nl_boundary_edge, end) == 12 &&
+                   offsetof(nl_boundary_edge, outward) == 24 && offsetof(nl_boundary_edge, normal) == 36 &&
+                   offsetof(nl_boundary_edge, polygon) == 48 && offsetof(nl_boundary_edge, edge) == 52 &&
+                   sizeof(nl_boundary_edge) == 56,
+               "nl_boundary_edge layout");
+_Static_assert(offsetof(nl_nav_point, point) == 0 && offsetof(nl_nav_point, distance) == 12 &&
+                   offsetof(nl_nav_point, polygon) == 16 && offsetof(nl_nav_point, found) == 20 &&
+                   offsetof(nl_nav_point, reserved) == 21 && sizeof(nl_nav_point) == 24,
+               "nl_nav_point layout");
+_Static_assert(offsetof(nl_navmesh_builder, build) == 0, "nl_navmesh_builder");
+/* Structs with a size field grow at their end: only today's offsets are fixed. */
+_Static_assert(offsetof(nl_navmesh_def, size) == 0 && offsetof(nl_navmesh_build_def, size) == 0 &&
+                   offsetof(nl_navmesh_info, size) == 0 && offsetof(nl_plugin_description, size) == 0 &&
+                   offsetof(nl_recast_settings, size) == 0 && offsetof(nl_plugin_host, size) == 0 &&
+                   offsetof(nl_plugin_info, size) == 0,
+               "growable structs start with size");
+_Static_assert(offsetof(nl_navmesh_info, vertex_count) == 4 && offsetof(nl_navmesh_info, polygon_count) == 8 &&
+                   offsetof(nl_navmesh_info, portal_count) == 12 &&
+                   offsetof(nl_navmesh_info, boundary_edge_count) == 16 &&
+                   offsetof(nl_navmesh_info, welded_vertex_count) == 20 &&
+                   offsetof(nl_navmesh_info, flipped_polygon_count) == 24 &&
+                   offsetof(nl_navmesh_info, dropped_polygon_count) == 28 &&
+                   offsetof(nl_navmesh_info, non_manifold_edge_count) == 32 && offsetof(nl_navmesh_info, agent) == 36 &&
+                   offsetof(nl_navmesh_info, bounds_min) == 52 && offsetof(nl_navmesh_info, bounds_max) == 64,
+               "nl_navmesh_info");
+_Static_assert(offsetof(nl_recast_settings, cell_size) == 4 && offsetof(nl_recast_settings, cell_height) == 8 &&
+                   offsetof(nl_recast_settings, region_min_size) == 12 &&
+                   offsetof(nl_recast_settings, region_merge_size) == 16 &&
+                   offsetof(nl_recast_settings, edge_max_length) == 20 &&
+                   offsetof(nl_recast_settings, edge_max_error) == 24 &&
+                   offsetof(nl_recast_settings, vertices_per_polygon) == 28 &&
+                   offsetof(nl_recast_settings, detail_sample_distance) == 32 &&
+                   offsetof(nl_recast_settings, detail_sample_max_error) == 36 &&
+                   offsetof(nl_recast_settings, partition) == 40 &&
+                   offsetof(nl_recast_settings, filter_low_hanging_obstacles) == 44 &&
+                   offsetof(nl_recast_settings, filter_ledge_spans) == 45 &&
+                   offsetof(nl_recast_settings, filter_walkable_low_height_spans) == 46 &&
+                   offsetof(nl_recast_settings, reserved) == 47,
+               "nl_recast_settings");
+#if UINTPTR_MAX == 0xffffffffffffffffu
+_Static_assert(offsetof(nl_navmesh_def, vertices) == 8 && offsetof(nl_navmesh_def, vertex_count) == 16 &&
+                   offsetof(nl_navmesh_def, vertex_stride) == 20 && offsetof(nl_navmesh_def, indices) == 24 &&
+                   offsetof(nl_navmesh_def, polygon_vertex_counts) == 32 &&
+                   offsetof(nl_navmesh_def, polygon_count) == 40 && offsetof(nl_navmesh_def, areas) == 48 &&
+                   offsetof(nl_navmesh_def, weld_tolerance) == 56 && offsetof(nl_navmesh_def, agent) == 60 &&
+                   offsetof(nl_navmesh_def, detail_vertices) == 80 &&
+                   offsetof(nl_navmesh_def, detail_vertex_count) == 88 &&
+                   offsetof(nl_navmesh_def, detail_triangles) == 96 &&
+                   offsetof(nl_navmesh_def, detail_triangle_count) == 104 &&
+                   offsetof(nl_navmesh_def, detail_triangle_starts) == 112,
+               "nl_navmesh_def on LP64");
+_Static_assert(offsetof(nl_navmesh_build_def, builder) == 8 && offsetof(nl_navmesh_build_def, agent) == 16 &&
+                   offsetof(nl_navmesh_build_def, settings) == 32 &&
+                   offsetof(nl_navmesh_build_def, settings_json) == 40 &&
+                   offsetof(nl_navmesh_build_def, settings_json_length) == 48,
+               "nl_navmesh_build_def on LP64");
+_Static_assert(offsetof(nl_plugin_description, abi_version) == 4 && offsetof(nl_plugin_description, kinds) == 8 &&
+                   offsetof(nl_plugin_description, builtin) == 12 && offsetof(nl_plugin_description, name) == 16 &&
+                   offsetof(nl_plugin_description, version) == 24 &&
+                   offsetof(nl_plugin_description, description) == 32,
+               "nl_plugin_description on LP64");
+_Static_assert(offsetof(nl_plugin_host, abi_version) == 4 && offsetof(nl_plugin_host, context) == 8 &&
+                   offsetof(nl_plugin_host, log) == 16 && offsetof(nl_plugin_host, set_error) == 24 &&
+                   offsetof(nl_plugin_host, get_level_triangles) == 32,
+               "nl_plugin_host on LP64");
+_Static_assert(offsetof(nl_plugin_info, abi_version) == 4 && offsetof(nl_plugin_info, name) == 8 &&
+                   offsetof(nl_plugin_info, version) == 16 && offsetof(nl_plugin_info, description) == 24 &&
+                   offsetof(nl_plugin_info, kinds) == 32 && offsetof(nl_plugin_info, state) == 40 &&
+                   offsetof(nl_plugin_info, destroy) == 48 && offsetof(nl_plugin_info, navmesh_builder) == 56,
+               "nl_plugin_info on LP64");
+#endif
+
+/* Plugins and the Recast builder's constants. */
+_Static_assert(NL_PLUGIN_ABI_VERSION == 1u, "NL_PLUGIN_ABI_VERSION");
+_Static_assert((NL_PLUGIN_NAVMESH_BUILDER & NL_PLUGIN_LINK_KIND) == 0u &&
+                   (NL_PLUGIN_NAVMESH_BUILDER & NL_PLUGIN_PATH_MODIFIER) == 0u &&
+                   (NL_PLUGIN_LINK_KIND & NL_PLUGIN_PATH_MODIFIER) == 0u,
+               "plugin kinds are distinct bits");
+_Static_assert(NL_RECAST_PARTITION_WATERSHED == 0u && NL_RECAST_PARTITION_MONOTONE == 1u &&
+                   NL_RECAST_PARTITION_LAYERS == 2u,
+               "Recast partitions");
 
 /* Every status bit is distinct and inside its part of the word. */
 _Static_assert((NL_STATUS_FAILURE & NL_STATUS_SUCCESS) == 0u, "kinds are distinct");
@@ -71,7 +171,46 @@ struct api_table {
     nl_status (*world_cast_rays)(nl_world*, const nl_ray*, uint32_t, nl_ray_hit*);
     nl_status (*world_segments_blocked)(nl_world*, const nl_segment*, uint32_t, uint8_t*);
     nl_log_fn* log;
+    /* Navmeshes */
+    nl_agent_type (*default_agent_type)(void);
+    nl_navmesh_def (*default_navmesh_def)(void);
+    nl_status (*navmesh_add)(nl_world*, const nl_navmesh_def*, nl_navmesh_id*);
+    nl_status (*navmesh_remove)(nl_world*, nl_navmesh_id);
+    int32_t (*navmesh_is_valid)(const nl_world*, nl_navmesh_id);
+    nl_status (*navmesh_get_info)(const nl_world*, nl_navmesh_id, nl_navmesh_info*);
+    nl_status (*navmesh_get_vertices)(const nl_world*, nl_navmesh_id, float*, uint32_t, uint32_t*);
+    nl_status (*navmesh_get_polygon)(const nl_world*, nl_navmesh_id, uint32_t, nl_nav_polygon*);
+    nl_status (*navmesh_get_boundary_edges)(const nl_world*, nl_navmesh_id, nl_boundary_edge*, uint32_t, uint32_t*);
+    nl_status (*navmesh_find_nearest)(const nl_world*, nl_navmesh_id, const float*, uint32_t, const float*,
+                                      nl_nav_point*);
+    nl_status (*world_get_navmeshes)(const nl_world*, nl_navmesh_id*, uint32_t, uint32_t*);
+    /* Building */
+    nl_navmesh_build_def (*default_navmesh_build_def)(void);
+    nl_status (*navmesh_build)(nl_world*, const nl_navmesh_build_def*, nl_navmesh_id*);
+    nl_recast_settings (*default_recast_settings)(void);
+    /* Plugins */
+    nl_status (*plugin_load)(nl_world*, const char*, nl_plugin_id*);
+    nl_status (*plugin_get_description)(const nl_world*, nl_plugin_id, nl_plugin_description*);
+    nl_status (*world_get_plugins)(const nl_world*, nl_plugin_id*, uint32_t, uint32_t*);
+    nl_status (*plugin_register)(nl_world*, nl_plugin_entry_fn*, nl_plugin_id*);
+    /* The plugin side's function types */
+    nl_plugin_entry_fn* entry;
+    nl_navmesh_sink_fn* sink;
 };
+
+/* A plugin entry and a sink as a C plugin would write them (typed by the header's function types). */
+static nl_status plugin_entry(uint32_t host_abi_version, const nl_plugin_host* host, nl_plugin_info* out_info) {
+    (void)host_abi_version;
+    (void)host;
+    (void)out_info;
+    return NL_STATUS_FAILURE | NL_STATUS_VERSION_MISMATCH;
+}
+
+static nl_status navmesh_sink(void* sink_context, const nl_navmesh_def* navmesh) {
+    (void)sink_context;
+    (void)navmesh;
+    return NL_STATUS_SUCCESS;
+}
 
 int main(void) {
     const struct api_table api = {
@@ -81,7 +220,16 @@ int main(void) {
         nl_mesh_remove,         nl_mesh_set_transform, nl_mesh_is_valid,     nl_mesh_get_info,
         nl_world_get_meshes,    nl_world_cast_rays,    nl_world_segments_blocked,
         log_sink,
+        nl_default_agent_type,  nl_default_navmesh_def, nl_navmesh_add,      nl_navmesh_remove,
+        nl_navmesh_is_valid,    nl_navmesh_get_info,    nl_navmesh_get_vertices, nl_navmesh_get_polygon,
+        nl_navmesh_get_boundary_edges, nl_navmesh_find_nearest, nl_world_get_navmeshes,
+        nl_default_navmesh_build_def, nl_navmesh_build, nl_default_recast_settings,
+        nl_plugin_load,         nl_plugin_get_description, nl_world_get_plugins, nl_plugin_register,
+        plugin_entry,           navmesh_sink,
     };
+    const nl_navmesh_id null_navmesh = {0u, 0u};
+    nl_plugin_info info;
+    nl_plugin_host host;
     const nl_mesh_id null_id = {0u, 0u};
     const nl_version v = api.get_version();
     if (v.major != NL_VERSION_MAJOR || v.minor != NL_VERSION_MINOR || v.patch != NL_VERSION_PATCH) {
@@ -89,5 +237,20 @@ int main(void) {
                 NL_VERSION_PATCH, (int)v.major, (int)v.minor, (int)v.patch);
         return 1;
     }
-    return api.mesh_is_valid(NULL, null_id) == 0 && NL_FAILED(api.get_last_status()) ? 0 : 1;
+    if (api.mesh_is_valid(NULL, null_id) != 0 || !NL_FAILED(api.get_last_status())) return 1;
+    if (api.navmesh_is_valid(NULL, null_navmesh) != 0 || !NL_FAILED(api.get_last_status())) return 1;
+    /* The defaults set their sizes; the plugin-side types are usable from C. */
+    if (api.default_navmesh_def().size != sizeof(nl_navmesh_def) ||
+        api.default_navmesh_build_def().size != sizeof(nl_navmesh_build_def) ||
+        api.default_recast_settings().size != sizeof(nl_recast_settings) || api.default_agent_type().height <= 0.0f)
+        return 1;
+    memset(&info, 0, sizeof info);
+    memset(&host, 0, sizeof host);
+    info.size = sizeof info;
+    host.size = sizeof host;
+    return api.entry(NL_PLUGIN_ABI_VERSION, &host, &info) == (NL_STATUS_FAILURE | NL_STATUS_VERSION_MISMATCH) &&
+                   api.sink(NULL, NULL) == NL_STATUS_SUCCESS && api.plugin_register != NULL &&
+                   strcmp(NL_PLUGIN_ENTRY_SYMBOL, "nl_plugin_entry") == 0
+               ? 0
+               : 1;
 }

@@ -1,7 +1,9 @@
-// Compile check: <navlink/navlink.h> must build as C++ (-Wall -Wextra -pedantic -Werror), with every
-// declaration inside extern "C" (the link fails on a mangled name) and every struct trivially copyable
-// and standard-layout (blittable for bindings).
+// Compile check: <navlink/navlink.h>, <navlink/recast.h> and <navlink/plugin.h> must build as C++
+// (-Wall -Wextra -pedantic -Werror), with every declaration inside extern "C" (the link fails on a
+// mangled name) and every struct trivially copyable and standard-layout (blittable for bindings).
 #include <navlink/navlink.h>
+#include <navlink/plugin.h>
+#include <navlink/recast.h>
 
 #include <cstdio>
 #include <type_traits>
@@ -21,7 +23,37 @@ static_assert(blittable<nl_mesh_info>(), "nl_mesh_info");
 static_assert(blittable<nl_ray>(), "nl_ray");
 static_assert(blittable<nl_ray_hit>(), "nl_ray_hit");
 static_assert(blittable<nl_segment>(), "nl_segment");
+static_assert(blittable<nl_navmesh_id>(), "nl_navmesh_id");
+static_assert(blittable<nl_agent_type>(), "nl_agent_type");
+static_assert(blittable<nl_navmesh_def>(), "nl_navmesh_def");
+static_assert(blittable<nl_navmesh_info>(), "nl_navmesh_info");
+static_assert(blittable<nl_nav_polygon>(), "nl_nav_polygon");
+static_assert(blittable<nl_boundary_edge>(), "nl_boundary_edge");
+static_assert(blittable<nl_nav_point>(), "nl_nav_point");
+static_assert(blittable<nl_navmesh_build_def>(), "nl_navmesh_build_def");
+static_assert(blittable<nl_plugin_id>(), "nl_plugin_id");
+static_assert(blittable<nl_plugin_description>(), "nl_plugin_description");
+static_assert(blittable<nl_recast_settings>(), "nl_recast_settings");
+static_assert(blittable<nl_plugin_host>(), "nl_plugin_host");
+static_assert(blittable<nl_navmesh_builder>(), "nl_navmesh_builder");
+static_assert(blittable<nl_plugin_info>(), "nl_plugin_info");
+static_assert(sizeof(nl_nav_polygon) == 160 && sizeof(nl_boundary_edge) == 56 && sizeof(nl_nav_point) == 24 &&
+                  sizeof(nl_agent_type) == 16,
+              "fixed structs have the same size in C++ as in C");
 static_assert(std::is_same<nl_status, uint32_t>::value, "nl_status is uint32_t");
+
+// Functions the plugin side of the ABI is written as, in C++.
+nl_status plugin_entry(uint32_t, const nl_plugin_host*, nl_plugin_info*) {
+    return NL_STATUS_FAILURE | NL_STATUS_VERSION_MISMATCH;
+}
+nl_status navmesh_sink(void*, const nl_navmesh_def*) { return NL_STATUS_SUCCESS; }
+
+// True if every function pointer is set (taking each address makes the linker resolve it).
+bool all_set() { return true; }
+template <typename F, typename... Rest>
+bool all_set(F* f, Rest*... rest) {
+    return f != nullptr && all_set(rest...);
+}
 
 void log_sink(void*, nl_log_level, nl_status, const char*) {}
 
@@ -30,9 +62,22 @@ void log_sink(void*, nl_log_level, nl_status, const char*) {}
 int main() {
     nl_log_fn* log = log_sink;
     (void)log;
+    nl_plugin_entry_fn* entry = plugin_entry;
+    nl_navmesh_sink_fn* sink = navmesh_sink;
+    (void)sink;
+    // extern "C" linkage of the navmesh and plugin functions: a mangled declaration fails the link.
+    if (!all_set(&nl_default_agent_type, &nl_default_navmesh_def, &nl_navmesh_add, &nl_navmesh_remove,
+                 &nl_navmesh_is_valid, &nl_navmesh_get_info, &nl_navmesh_get_vertices, &nl_navmesh_get_polygon,
+                 &nl_navmesh_get_boundary_edges, &nl_navmesh_find_nearest, &nl_world_get_navmeshes,
+                 &nl_default_navmesh_build_def, &nl_navmesh_build, &nl_default_recast_settings, &nl_plugin_load,
+                 &nl_plugin_get_description, &nl_world_get_plugins, &nl_plugin_register))
+        return 1;
     nl_world_def def = nl_default_world_def();
     def.worker_count = 1;
     nl_world* world = nullptr;
+    nl_plugin_info info{};
+    info.size = sizeof info;
+    if (entry(NL_PLUGIN_ABI_VERSION, nullptr, &info) != (NL_STATUS_FAILURE | NL_STATUS_VERSION_MISMATCH)) return 1;
     if (NL_FAILED(nl_world_create(&def, &world))) {
         std::fprintf(stderr, "nl_world_create: %s\n", nl_get_last_error_message());
         return 1;

@@ -145,7 +145,7 @@ nl_status capture(void* context, const nl_navmesh_def* def) {
         m.detail_starts.assign(def->detail_triangle_starts, def->detail_triangle_starts + def->polygon_count + 1);
         m.detail_vertices.assign(def->detail_vertices, def->detail_vertices + size_t{def->detail_vertex_count} * 3);
         m.detail_triangles.assign(def->detail_triangles,
-                                  def->detail_triangles + size_t{m.detail_starts.back()} * 3);
+                                  def->detail_triangles + size_t{def->detail_triangle_count} * 3);
     }
     return state->status;
 }

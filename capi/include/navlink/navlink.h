@@ -343,9 +343,10 @@ typedef struct nl_navmesh_def {
                                                NULL means every polygon is a triangle. Borrowed. */
     uint32_t polygon_count;
     const uint8_t* areas;                 /**< Optional area id per polygon; NULL means area 0. Borrowed. */
-    float weld_tolerance;                 /**< Vertices closer than this (metres) become one, so polygons
-                                               that only touch (Unity repeats vertices per triangle) are
-                                               connected. Default 0.001; 0 welds exact duplicates only. */
+    float weld_tolerance;                 /**< Vertices closer than this (metres, 0..1) become one, so
+                                               polygons that only touch (Unity repeats vertices per
+                                               triangle) are connected. Default 0.001; 0 welds exact
+                                               duplicates only. */
     nl_agent_type agent;                  /**< The agent type this navmesh was made for. */
     /* Optional height detail, as Recast's detail mesh: triangles over each polygon that follow the
        surface more closely than the polygon does, used for point location. All NULL/0 means the
@@ -354,8 +355,10 @@ typedef struct nl_navmesh_def {
     const float* detail_vertices;         /**< x y z per detail vertex; borrowed. */
     uint32_t detail_vertex_count;
     const uint32_t* detail_triangles;     /**< 3 indices into detail_vertices per triangle; borrowed. */
+    uint32_t detail_triangle_count;
     const uint32_t* detail_triangle_starts; /**< polygon_count + 1 offsets: polygon p's detail triangles
-                                                 are [starts[p], starts[p + 1]). Borrowed. */
+                                                 are [starts[p], starts[p + 1]); starts[polygon_count]
+                                                 must equal detail_triangle_count. Borrowed. */
 } nl_navmesh_def;
 
 /** A def with no geometry, weld tolerance 0.001 and the default agent type. Thread-safe. */
@@ -418,8 +421,11 @@ typedef struct nl_nav_polygon {
     float centre[3];                              /**< Average of the corners. */
 } nl_nav_polygon;
 
-/** Fills `*out_polygon` (caller-owned) with polygon `polygon` (0 .. polygon_count - 1). Returns SUCCESS,
- *  INVALID_HANDLE, or INVALID_ARGUMENT (null pointer, polygon out of range). Thread-safe. */
+/** Fills `*out_polygon` (caller-owned) with polygon `polygon` (0 .. polygon_count - 1). Polygons keep
+ *  the order they were given in, less the dropped ones; a polygon's corners start at its first given
+ *  corner (reversed when it was turned over). Entries past vertex_count are 0 (vertices) and
+ *  NL_NO_POLYGON (neighbours). Returns SUCCESS, INVALID_HANDLE, or INVALID_ARGUMENT (null pointer,
+ *  polygon out of range). Thread-safe. */
 NL_API nl_status nl_navmesh_get_polygon(const nl_world* world, nl_navmesh_id navmesh, uint32_t polygon,
                                         nl_nav_polygon* out_polygon);
 
@@ -490,6 +496,8 @@ NL_API nl_navmesh_build_def nl_default_navmesh_build_def(void);
  *  it as nl_navmesh_add would. Returns SUCCESS, or a failure with NOT_FOUND (no builder of that name,
  *  or no walkable surface in the level), INVALID_ARGUMENT (bad agent or settings, the field named),
  *  PARSE_ERROR (malformed settings JSON), OUT_OF_MEMORY, INTERNAL_ERROR (the builder failed).
+ *  A builder's output that nl_navmesh_add would refuse is INTERNAL_ERROR (a builder bug), with
+ *  the reason; nothing is added unless the builder succeeds.
  *  Thread-safe; long-running (tens of milliseconds per thousand triangles). */
 NL_API nl_status nl_navmesh_build(nl_world* world, const nl_navmesh_build_def* def, nl_navmesh_id* out_id);
 
