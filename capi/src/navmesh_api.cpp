@@ -109,7 +109,11 @@ NL_API nl_status nl_navmesh_add(nl_world* world, const nl_navmesh_def* def, nl_n
 }
 
 NL_API nl_status nl_navmesh_remove(nl_world* world, nl_navmesh_id navmesh) {
-    return guarded("nl_navmesh_remove", world, [&] { deref(world).navmeshes->remove(to_handle(navmesh)); });
+    return guarded("nl_navmesh_remove", world, [&] {
+        nl_world& w = deref(world);
+        w.navmeshes->remove(to_handle(navmesh));
+        w.links->remove_navmesh(to_handle(navmesh));
+    });
 }
 
 NL_API int32_t nl_navmesh_is_valid(const nl_world* world, nl_navmesh_id navmesh) {

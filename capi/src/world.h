@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "level/level.h"
+#include "links/link_store.h"
 #include "navlink/navlink.h"
 #include "navmesh/navmesh_registry.h"
 #include "plugin_registry.h"
@@ -17,6 +18,7 @@ struct nl_world {
     std::unique_ptr<nl::TaskSystem> tasks;
     std::unique_ptr<nl::Level> level;
     std::unique_ptr<nl::NavMeshRegistry> navmeshes;
+    std::unique_ptr<nl::LinkStore> links;
     std::unique_ptr<nl::capi::PluginRegistry> plugins;
 };
 

@@ -36,7 +36,7 @@ struct Link {
     bool enabled = true;
     float cost_modifier = 1.0f;
     uint64_t user_data = 0;
-    LinkRequirements requires;
+    LinkRequirements requirements;
     uint32_t start_polygon = 0xffffffffu;
     uint32_t end_polygon = 0xffffffffu;
 };

@@ -236,19 +236,19 @@ private:
 
     // The widest body (up to twice the agent's) that passes each already-clear path.
     void measure_clearance(const std::vector<std::vector<Vec3>>& paths, std::vector<Link>& links) {
-        for (Link& l : links) l.requires.clearance_width = 2.0f * body_.radius;
+        for (Link& l : links) l.requirements.clearance_width = 2.0f * body_.radius;
         for (float scale : {1.5f, 2.0f}) {
             std::vector<size_t> still;
             std::vector<std::vector<Vec3>> wider;
             for (size_t i = 0; i < links.size(); ++i) {
-                if (links[i].requires.clearance_width >= 2.0f * body_.radius * (scale - 0.5f) - 1e-6f) {
+                if (links[i].requirements.clearance_width >= 2.0f * body_.radius * (scale - 0.5f) - 1e-6f) {
                     still.push_back(i);
                     wider.push_back(paths[i]);
                 }
             }
             const std::vector<bool> ok = clear(wider, body_.radius * scale);
             for (size_t k = 0; k < still.size(); ++k)
-                if (ok[k]) links[still[k]].requires.clearance_width = 2.0f * body_.radius * scale;
+                if (ok[k]) links[still[k]].requirements.clearance_width = 2.0f * body_.radius * scale;
         }
     }
 
@@ -325,7 +325,7 @@ private:
         for (size_t i : passed) score[i] = squareness(i);
         std::stable_sort(passed.begin(), passed.end(), [&](size_t x, size_t y) {
             if (score[x] != score[y]) return score[x] > score[y];
-            if (links[x].requires.gap != links[y].requires.gap) return links[x].requires.gap < links[y].requires.gap;
+            if (links[x].requirements.gap != links[y].requirements.gap) return links[x].requirements.gap < links[y].requirements.gap;
             return ends[x] < ends[y];
         });
         std::unordered_map<uint64_t, bool> taken;  // (take-off point, edge across) already linked
@@ -409,9 +409,9 @@ private:
 
     static void set_requirements(Link& l) {
         const Vec3 d = l.end - l.start;
-        l.requires.gap = Vec3(d.x(), 0.0f, d.z()).norm();
-        l.requires.rise = std::max(0.0f, d.y());
-        l.requires.drop = std::max(0.0f, -d.y());
+        l.requirements.gap = Vec3(d.x(), 0.0f, d.z()).norm();
+        l.requirements.rise = std::max(0.0f, d.y());
+        l.requirements.drop = std::max(0.0f, -d.y());
     }
 
     std::vector<Link> keep_clear(std::vector<Link> candidates, const std::vector<std::vector<Vec3>>& paths) {

@@ -90,10 +90,10 @@ TEST_CASE("a 2 m gap gets a bidirectional jump; nothing else is generated") {
         CHECK(l.bidirectional);
         CHECK(crosses_gap(l, 2.0f));
         // Navmesh edges sit an agent radius back from the rim on both sides.
-        CHECK(l.requires.gap == doctest::Approx(2.0f + 2 * 0.6f).epsilon(0.15));
-        CHECK(l.requires.rise < 0.3f);
+        CHECK(l.requirements.gap == doctest::Approx(2.0f + 2 * 0.6f).epsilon(0.15));
+        CHECK(l.requirements.rise < 0.3f);
         CHECK(l.apex.y() > std::max(l.start.y(), l.end.y()) + 0.9f);
-        CHECK(l.requires.clearance_width >= 1.2f - 1e-4f);
+        CHECK(l.requirements.clearance_width >= 1.2f - 1e-4f);
     }
     // A 10 m edge sampled every metre, merged within 0.6 m: several jumps, not one per sample pair.
     CHECK(jumps.size() >= 3);
@@ -132,8 +132,8 @@ TEST_CASE("a 3 m ledge gets a one-way drop; a ledge deeper than max_drop_distanc
     for (const Link& l : drops) {
         CHECK_FALSE(l.bidirectional);
         CHECK(l.start.y() > l.end.y() + 2.5f);
-        CHECK(l.requires.drop == doctest::Approx(l.start.y() - l.end.y()));
-        CHECK(l.requires.rise == 0.0f);
+        CHECK(l.requirements.drop == doctest::Approx(l.start.y() - l.end.y()));
+        CHECK(l.requirements.rise == 0.0f);
     }
     CHECK(b.of(LinkKind::Jump).empty());
 

@@ -377,7 +377,7 @@ NL_API nl_navmesh_def nl_default_navmesh_def(void);
  *  is added), OUT_OF_MEMORY. Thread-safe. */
 NL_API nl_status nl_navmesh_add(nl_world* world, const nl_navmesh_def* def, nl_navmesh_id* out_id);
 
-/** Removes a navmesh. Queries already running on it finish on their own copy.
+/** Removes a navmesh and its links. Queries already running on it finish on their own copy.
  *  Returns SUCCESS or INVALID_HANDLE. Thread-safe. */
 NL_API nl_status nl_navmesh_remove(nl_world* world, nl_navmesh_id navmesh);
 
@@ -500,6 +500,193 @@ NL_API nl_navmesh_build_def nl_default_navmesh_build_def(void);
  *  the reason; nothing is added unless the builder succeeds.
  *  Thread-safe; long-running (tens of milliseconds per thousand triangles). */
 NL_API nl_status nl_navmesh_build(nl_world* world, const nl_navmesh_build_def* def, nl_navmesh_id* out_id);
+
+/* ---------------------------------------------------------------------------------------------
+ * Links: jumps, drops and manual traversals, each belonging to a navmesh. Generated links are
+ * replaced by each generation; manual links are never touched by it.
+ * ------------------------------------------------------------------------------------------- */
+
+/** A link in a world. Zero-initialised is the null id. */
+typedef struct nl_link_id {
+    uint32_t index1;
+    uint32_t generation;
+} nl_link_id;
+
+/** Link kinds. Plugin kinds are numbered from NL_LINK_FIRST_PLUGIN_KIND. */
+typedef uint32_t nl_link_kind;
+#define NL_LINK_JUMP 1u   /**< Edge to edge across a gap, along a parabolic arc. */
+#define NL_LINK_DROP 2u   /**< Off an edge down to the floor below. */
+#define NL_LINK_MANUAL 3u /**< Placed by the host. */
+#define NL_LINK_FIRST_PLUGIN_KIND 256u
+
+/** What taking a link asks of an agent, going from its start to its end. Going the other way over
+ *  a bidirectional link swaps rise and drop. */
+typedef struct nl_link_requirements {
+    float gap;             /**< Horizontal distance between the ends, metres. */
+    float rise;            /**< How far the end is above the start (0 if below). */
+    float drop;            /**< How far the end is below the start (0 if above). */
+    float clearance_width; /**< Widest body found clear along the link (0: not measured). */
+    uint64_t abilities;    /**< Ability bits the agent must have (plugin kinds). */
+} nl_link_requirements;
+
+/** A link as the world holds it. */
+typedef struct nl_link {
+    nl_link_id id;
+    nl_navmesh_id navmesh;
+    nl_link_kind kind;
+    float start[3];
+    float end[3];
+    float apex[3];             /**< Top of a jump's arc; for other kinds the higher end. */
+    uint8_t bidirectional;
+    uint8_t generated;         /**< 1 if made by nl_navmesh_generate_links. */
+    uint8_t enabled;
+    uint8_t reserved;
+    float cost_modifier;       /**< Multiplies the link's traversal cost (>= 0; 1 by default). */
+    uint64_t user_data;
+    nl_link_requirements requirements;
+    uint32_t start_polygon;    /**< Navmesh polygons under the ends (NL_NO_POLYGON if unknown). */
+    uint32_t end_polygon;
+} nl_link;
+
+/** A link to add, or the new state of one to update. Get one from nl_default_link_def(). */
+typedef struct nl_link_def {
+    uint32_t size;             /**< sizeof(nl_link_def). */
+    nl_link_kind kind;         /**< NL_LINK_MANUAL by default. */
+    float start[3];
+    float end[3];
+    uint8_t bidirectional;     /**< 0 by default. */
+    uint8_t enabled;           /**< 1 by default. */
+    uint8_t reserved[2];
+    float cost_modifier;       /**< 1 by default; >= 0. */
+    uint64_t user_data;
+    nl_link_requirements requirements; /**< gap, rise and drop are computed from the ends when all
+                                            three are 0. */
+} nl_link_def;
+
+/** A manual link from (0,0,0) to (0,0,0), one-way, enabled, cost modifier 1. Thread-safe. */
+NL_API nl_link_def nl_default_link_def(void);
+
+/** Adds a link to a navmesh. Its ends must each lie within 1 m of the navmesh (they are kept as given;
+ *  the polygons under them are recorded). Returns SUCCESS, or a failure with INVALID_HANDLE (navmesh),
+ *  INVALID_ARGUMENT (null pointer, a coordinate not finite or beyond the limit, an end off the navmesh,
+ *  a negative cost modifier or requirement, size too small). Thread-safe. */
+NL_API nl_status nl_link_add(nl_world* world, nl_navmesh_id navmesh, const nl_link_def* def, nl_link_id* out_id);
+
+/** Replaces a link's fields with `def`'s (any link, generated ones too: to disable one, for instance).
+ *  It stays on its navmesh and keeps whether it was generated; a generation replaces generated links,
+ *  edited or not. Errors as nl_link_add, and INVALID_HANDLE for the link. Thread-safe. */
+NL_API nl_status nl_link_update(nl_world* world, nl_link_id link, const nl_link_def* def);
+
+/** Removes a link. Returns SUCCESS or INVALID_HANDLE. Thread-safe. */
+NL_API nl_status nl_link_remove(nl_world* world, nl_link_id link);
+
+/** Nonzero if `link` is a link of `world`. Thread-safe. */
+NL_API int32_t nl_link_is_valid(const nl_world* world, nl_link_id link);
+
+/** Fills `*out_link` (caller-owned). Returns SUCCESS, INVALID_HANDLE or INVALID_ARGUMENT. Thread-safe. */
+NL_API nl_status nl_link_get(const nl_world* world, nl_link_id link, nl_link* out_link);
+
+/** Lists a navmesh's links, in the order they were added (two-call pattern as nl_world_get_meshes).
+ *  Thread-safe: the list is one consistent moment even while other threads edit. */
+NL_API nl_status nl_navmesh_get_links(const nl_world* world, nl_navmesh_id navmesh, nl_link* out_links,
+                                      uint32_t capacity, uint32_t* out_count);
+
+/** Removes the navmesh's generated links; manual ones stay. `out_removed` (optional) receives how many
+ *  went. Returns SUCCESS or INVALID_HANDLE. Thread-safe. */
+NL_API nl_status nl_navmesh_remove_generated_links(nl_world* world, nl_navmesh_id navmesh, uint32_t* out_removed);
+
+/** How links are generated (docs/link-generation.md explains each). Get one from
+ *  nl_default_link_settings(); defaults work with Recast's default agent on the shared levels. */
+typedef struct nl_link_settings {
+    uint32_t size;                  /**< sizeof(nl_link_settings). */
+    float min_edge_length;          /**< Shorter boundary edges are grouped with those they touch (0.4 m). */
+    uint32_t min_group_size;        /**< Groups of fewer short edges are dropped (2). */
+    uint32_t max_group_size;        /**< Longer chains of short edges are split (8). */
+    float sample_spacing;           /**< Take-off samples along a long edge (1 m). */
+    float falloff_distance;         /**< How far past an edge the ground must fall away (1.5 m). */
+    float max_link_distance;        /**< Longest jump, end to end (4 m). */
+    float min_link_distance;        /**< Shorter gaps are walked, not jumped (0.3 m). */
+    float short_link_distance;      /**< Shorter links use the permissive angles (2 m). */
+    float max_jump_up;              /**< Highest rise of a jump; drops this low work both ways (1.5 m). */
+    float jump_arc_height;          /**< Arc apex above the higher end (1 m). */
+    float strict_forward_angle;     /**< Between a link and an edge's outward direction, degrees (35). */
+    float permissive_forward_angle; /**< The same for short links (60). */
+    float strict_incline_angle;     /**< Between a link and the take-off surface, degrees (45). */
+    float permissive_incline_angle; /**< The same for short links (70). */
+    float max_drop_distance;        /**< Deepest drop (5 m). */
+    float drop_angles[16];          /**< Rotations of the outward direction probed for drops, degrees. */
+    uint32_t drop_angle_count;      /**< Entries used in drop_angles (3: 0, -30, 30). */
+    float drop_steepness;           /**< Landing probes fall this steeply, degrees below horizontal (60). */
+    float merge_distance;           /**< Links with both ends this close are one (0.6 m). */
+    float clearance_margin;         /**< Fraction of a path left out of the clearance test at each end (0.1). */
+    uint32_t arc_segments;          /**< Pieces of a jump arc in the clearance test (12). */
+} nl_link_settings;
+
+/** The defaults. Thread-safe; never fails. */
+NL_API nl_link_settings nl_default_link_settings(void);
+
+/** Applies a JSON object's keys (the field names above; drop_angles as an array) to `*settings`
+ *  (caller-owned, in and out) and validates the result. On failure `*settings` is unchanged.
+ *  Returns SUCCESS, or a failure with PARSE_ERROR (malformed JSON, with the position) or
+ *  INVALID_ARGUMENT (an unknown key, a wrong type or value: the key is named). Thread-safe. */
+NL_API nl_status nl_link_settings_from_json(const char* json, size_t length, nl_link_settings* settings);
+
+/** What a bake did: answers "why is there no link here?". */
+typedef struct nl_bake_report {
+    uint32_t size;               /**< Set by the caller to sizeof(nl_bake_report). */
+    uint32_t edges;              /**< Boundary edges of the navmesh. */
+    uint32_t groups;             /**< Groups of short edges. */
+    uint32_t samples;            /**< Take-off samples on edges. */
+    uint32_t takeoff_points;     /**< Samples that hang over a drop or gap. */
+    uint32_t jump_candidates;    /**< Edge pairs that met the distance, rise and angle limits. */
+    uint32_t drop_candidates;    /**< Landings found below take-off points. */
+    uint32_t jump_links;
+    uint32_t drop_links;
+    uint32_t rejected_wall;        /**< Take-off point inside a wall. */
+    uint32_t rejected_not_ledge;   /**< Walkable ground a step below the edge: no ledge there. */
+    uint32_t rejected_distance;    /**< Too far, too close, a drop too deep or too shallow. */
+    uint32_t rejected_rise;        /**< A jump higher than max_jump_up. */
+    uint32_t rejected_angle;       /**< Not facing the other edge, or too steep. */
+    uint32_t rejected_no_landing;  /**< No navmesh where the agent would land. */
+    uint32_t rejected_clearance;   /**< The body would hit geometry on the way. */
+    uint32_t rejected_duplicate;   /**< The same traversal as a link already kept. */
+    uint64_t rays_cast;            /**< Rays and occlusion segments sent to Embree. */
+    double milliseconds_edges;
+    double milliseconds_takeoff;
+    double milliseconds_jumps;
+    double milliseconds_drops;
+    double milliseconds_merge;
+    double milliseconds_total;
+} nl_bake_report;
+
+/** Bake progress: `fraction` done (0..1) and the stage's name (borrowed for the call). Return 0 to
+ *  cancel the bake. Called on the thread that called nl_navmesh_generate_links. */
+typedef int32_t nl_progress_fn(void* user, float fraction, const char* stage);
+
+/** Generates the navmesh's jump and drop links against the level geometry and replaces its generated
+ *  links with them; manual links are untouched. `settings` is borrowed (NULL = defaults); `progress`
+ *  is optional (`user` is passed back to it); `out_report` is optional (caller-owned, `size` set).
+ *  Returns SUCCESS, or a failure with INVALID_HANDLE, INVALID_ARGUMENT (a setting, named),
+ *  CANCELLED (progress returned 0: the navmesh's links are as they were), OUT_OF_MEMORY.
+ *  Thread-safe; parallel over the world's workers; the result does not depend on their number. */
+NL_API nl_status nl_navmesh_generate_links(nl_world* world, nl_navmesh_id navmesh, const nl_link_settings* settings,
+                                           nl_progress_fn* progress, void* user, nl_bake_report* out_report);
+
+/** Writes the navmesh's links as JSON (schema "navlink-links" version 1, docs/link-generation.md)
+ *  into `buffer` (caller-owned, `capacity` bytes, NUL-terminated on success). `*out_length` always
+ *  receives the length without the NUL; a NULL buffer only measures (two-call pattern). Returns
+ *  SUCCESS, or a failure with BUFFER_TOO_SMALL (capacity must exceed the length), INVALID_HANDLE or
+ *  INVALID_ARGUMENT. Thread-safe. */
+NL_API nl_status nl_navmesh_save_links_json(const nl_world* world, nl_navmesh_id navmesh, char* buffer,
+                                            size_t capacity, size_t* out_length);
+
+/** Replaces all of the navmesh's links with those in `json` (`length` bytes, borrowed); new ids are
+ *  given. `out_count` (optional) receives how many were loaded. On failure nothing changes.
+ *  Returns SUCCESS, or a failure with PARSE_ERROR, VERSION_MISMATCH (another format or version),
+ *  INVALID_ARGUMENT (a field missing or wrong, named by its path, e.g. "links[3].start"),
+ *  INVALID_HANDLE. Thread-safe. */
+NL_API nl_status nl_navmesh_load_links_json(nl_world* world, nl_navmesh_id navmesh, const char* json, size_t length,
+                                            uint32_t* out_count);
 
 /* ---------------------------------------------------------------------------------------------
  * Plugins (plugins/include/navlink/plugin.h has the plugin side of the ABI).

@@ -1,0 +1,341 @@
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstring>
+#include <string>
+
+#include "entry_guard.h"
+#include "host_input.h"
+#include "io/link_json.h"
+#include "links/link_generator.h"
+#include "world.h"
+
+using nl::ErrorCode;
+using nl::fail;
+using nl::capi::deref;
+using nl::capi::guarded;
+using nl::capi::require;
+using nl::capi::to_handle;
+using nl::capi::to_id;
+
+namespace {
+
+constexpr size_t kLinkDefFirstSize = offsetof(nl_link_def, requirements) + sizeof(nl_link_requirements);
+constexpr size_t kSettingsFirstSize = offsetof(nl_link_settings, arc_segments) + sizeof(uint32_t);
+constexpr size_t kReportFirstSize = offsetof(nl_bake_report, milliseconds_total) + sizeof(double);
+constexpr size_t kMaxDropAngles = sizeof(nl_link_settings::drop_angles) / sizeof(float);
+constexpr float kEndReach = 1.0f;  // how far a manual link's end may be from its navmesh
+
+void copy_point(float* out, const nl::Vec3& v) { Eigen::Map<nl::Vec3>{out} = v; }
+
+nl::LinkSettings to_core(const nl_link_settings& c) {
+    nl::LinkSettings s;
+    s.min_edge_length = c.min_edge_length;
+    s.min_group_size = c.min_group_size;
+    s.max_group_size = c.max_group_size;
+    s.sample_spacing = c.sample_spacing;
+    s.falloff_distance = c.falloff_distance;
+    s.max_link_distance = c.max_link_distance;
+    s.min_link_distance = c.min_link_distance;
+    s.short_link_distance = c.short_link_distance;
+    s.max_jump_up = c.max_jump_up;
+    s.jump_arc_height = c.jump_arc_height;
+    s.strict_forward_angle = c.strict_forward_angle;
+    s.permissive_forward_angle = c.permissive_forward_angle;
+    s.strict_incline_angle = c.strict_incline_angle;
+    s.permissive_incline_angle = c.permissive_incline_angle;
+    s.max_drop_distance = c.max_drop_distance;
+    if (c.drop_angle_count > kMaxDropAngles)
+        fail(ErrorCode::InvalidArgument, "settings->drop_angle_count is ", c.drop_angle_count, " (at most ", kMaxDropAngles, ")");
+    s.drop_angles.assign(c.drop_angles, c.drop_angles + c.drop_angle_count);
+    s.drop_steepness = c.drop_steepness;
+    s.merge_distance = c.merge_distance;
+    s.clearance_margin = c.clearance_margin;
+    s.arc_segments = c.arc_segments;
+    return s;
+}
+
+nl_link_settings to_c(const nl::LinkSettings& s) {
+    nl_link_settings c{};
+    c.size = sizeof c;
+    c.min_edge_length = s.min_edge_length;
+    c.min_group_size = s.min_group_size;
+    c.max_group_size = s.max_group_size;
+    c.sample_spacing = s.sample_spacing;
+    c.falloff_distance = s.falloff_distance;
+    c.max_link_distance = s.max_link_distance;
+    c.min_link_distance = s.min_link_distance;
+    c.short_link_distance = s.short_link_distance;
+    c.max_jump_up = s.max_jump_up;
+    c.jump_arc_height = s.jump_arc_height;
+    c.strict_forward_angle = s.strict_forward_angle;
+    c.permissive_forward_angle = s.permissive_forward_angle;
+    c.strict_incline_angle = s.strict_incline_angle;
+    c.permissive_incline_angle = s.permissive_incline_angle;
+    c.max_drop_distance = s.max_drop_distance;
+    c.drop_angle_count = static_cast<uint32_t>(std::min(s.drop_angles.size(), kMaxDropAngles));
+    std::copy_n(s.drop_angles.begin(), c.drop_angle_count, c.drop_angles);
+    c.drop_steepness = s.drop_steepness;
+    c.merge_distance = s.merge_distance;
+    c.clearance_margin = s.clearance_margin;
+    c.arc_segments = s.arc_segments;
+    return c;
+}
+
+nl_link to_c(const nl::StoredLink& stored, nl::Handle navmesh) {
+    const nl::Link& l = stored.link;
+    nl_link c{};
+    c.id = to_id<nl_link_id>(stored.id);
+    c.navmesh = to_id<nl_navmesh_id>(navmesh);
+    c.kind = static_cast<nl_link_kind>(l.kind);
+    copy_point(c.start, l.start);
+    copy_point(c.end, l.end);
+    copy_point(c.apex, l.apex);
+    c.bidirectional = l.bidirectional;
+    c.generated = l.generated;
+    c.enabled = l.enabled;
+    c.cost_modifier = l.cost_modifier;
+    c.user_data = l.user_data;
+    c.requirements = nl_link_requirements{l.requirements.gap, l.requirements.rise, l.requirements.drop,
+                                          l.requirements.clearance_width, l.requirements.abilities};
+    c.start_polygon = l.start_polygon;
+    c.end_polygon = l.end_polygon;
+    return c;
+}
+
+nl::Vec3 read_end(const float* p, const char* name) {
+    const nl::Vec3 v(p[0], p[1], p[2]);
+    if (!nl::within_coordinate_limit(v)) fail(ErrorCode::InvalidArgument, "def->", name, " is not finite or beyond the limit");
+    return v;
+}
+
+// A host's link def as a core link on `mesh`: both ends must be near the navmesh.
+nl::Link link_from_def(const nl_link_def& in, const nl::NavMesh& mesh) {
+    const nl_link_def def = nl::capi::read_growable(in, nl_default_link_def(), kLinkDefFirstSize, "def");
+    const nl::LinkKind kind = static_cast<nl::LinkKind>(def.kind);
+    if (kind != nl::LinkKind::Jump && kind != nl::LinkKind::Drop && kind != nl::LinkKind::Manual &&
+        def.kind < NL_LINK_FIRST_PLUGIN_KIND)
+        fail(ErrorCode::InvalidArgument, "def->kind is ", def.kind, " (NL_LINK_* or a plugin kind >= 256)");
+    if (!(def.cost_modifier >= 0.0f) || !std::isfinite(def.cost_modifier))
+        fail(ErrorCode::InvalidArgument, "def->cost_modifier is ", def.cost_modifier, " (must be finite and >= 0)");
+    const nl_link_requirements& r = def.requirements;
+    for (const auto& [value, name] : {std::pair{r.gap, "gap"}, std::pair{r.rise, "rise"}, std::pair{r.drop, "drop"},
+                                      std::pair{r.clearance_width, "clearance_width"}})
+        if (!(value >= 0.0f) || !std::isfinite(value))
+            fail(ErrorCode::InvalidArgument, "def->requirements.", name, " is ", value, " (must be finite and >= 0)");
+
+    nl::Link l;
+    l.kind = kind;
+    l.start = read_end(def.start, "start");
+    l.end = read_end(def.end, "end");
+    l.apex = l.start.y() > l.end.y() ? l.start : l.end;
+    l.bidirectional = def.bidirectional != 0;
+    l.enabled = def.enabled != 0;
+    l.cost_modifier = def.cost_modifier;
+    l.user_data = def.user_data;
+    l.requirements = nl::LinkRequirements{r.gap, r.rise, r.drop, r.clearance_width, r.abilities};
+    if (r.gap == 0.0f && r.rise == 0.0f && r.drop == 0.0f) {
+        const nl::Vec3 d = l.end - l.start;
+        l.requirements.gap = nl::Vec3(d.x(), 0.0f, d.z()).norm();
+        l.requirements.rise = std::max(0.0f, d.y());
+        l.requirements.drop = std::max(0.0f, -d.y());
+    }
+    const nl::Vec3 reach = nl::Vec3::Constant(kEndReach);
+    const nl::NavPoint start = mesh.find_nearest(l.start, reach), end = mesh.find_nearest(l.end, reach);
+    if (!start.found || start.distance > kEndReach)
+        fail(ErrorCode::InvalidArgument, "def->start is not within ", kEndReach, " m of the navmesh");
+    if (!end.found || end.distance > kEndReach)
+        fail(ErrorCode::InvalidArgument, "def->end is not within ", kEndReach, " m of the navmesh");
+    l.start_polygon = start.polygon;
+    l.end_polygon = end.polygon;
+    return l;
+}
+
+nl_bake_report to_c(const nl::BakeReport& r) {
+    nl_bake_report c{};
+    c.size = sizeof c;
+    c.edges = r.edges;
+    c.groups = r.groups;
+    c.samples = r.samples;
+    c.takeoff_points = r.takeoff_points;
+    c.jump_candidates = r.jump_candidates;
+    c.drop_candidates = r.drop_candidates;
+    c.jump_links = r.jump_links;
+    c.drop_links = r.drop_links;
+    c.rejected_wall = r.rejected_wall;
+    c.rejected_not_ledge = r.rejected_not_ledge;
+    c.rejected_distance = r.rejected_distance;
+    c.rejected_rise = r.rejected_rise;
+    c.rejected_angle = r.rejected_angle;
+    c.rejected_no_landing = r.rejected_no_landing;
+    c.rejected_clearance = r.rejected_clearance;
+    c.rejected_duplicate = r.rejected_duplicate;
+    c.rays_cast = r.rays_cast;
+    c.milliseconds_edges = r.milliseconds_edges;
+    c.milliseconds_takeoff = r.milliseconds_takeoff;
+    c.milliseconds_jumps = r.milliseconds_jumps;
+    c.milliseconds_drops = r.milliseconds_drops;
+    c.milliseconds_merge = r.milliseconds_merge;
+    c.milliseconds_total = r.milliseconds_total;
+    return c;
+}
+
+std::vector<nl::Link> links_of(const nl::LinkSnapshot& snapshot) {
+    std::vector<nl::Link> out;
+    out.reserve(snapshot.size());
+    for (const nl::StoredLink& s : snapshot) out.push_back(s.link);
+    return out;
+}
+
+}  // namespace
+
+extern "C" {
+
+NL_API nl_link_def nl_default_link_def(void) {
+    nl_link_def def{};
+    def.size = sizeof def;
+    def.kind = NL_LINK_MANUAL;
+    def.enabled = 1;
+    def.cost_modifier = 1.0f;
+    return def;
+}
+
+NL_API nl_status nl_link_add(nl_world* world, nl_navmesh_id navmesh, const nl_link_def* def, nl_link_id* out_id) {
+    return guarded("nl_link_add", world, [&] {
+        nl_world& w = deref(world);
+        const auto mesh = w.navmeshes->get(to_handle(navmesh));
+        require(def, "def");
+        require(out_id, "out_id");
+        nl::Link link = link_from_def(*def, *mesh);
+        link.generated = false;
+        *out_id = to_id<nl_link_id>(w.links->add(to_handle(navmesh), link));
+    });
+}
+
+NL_API nl_status nl_link_update(nl_world* world, nl_link_id link, const nl_link_def* def) {
+    return guarded("nl_link_update", world, [&] {
+        nl_world& w = deref(world);
+        const nl::Handle navmesh = w.links->get(to_handle(link)).first;
+        require(def, "def");
+        w.links->update(to_handle(link), link_from_def(*def, *w.navmeshes->get(navmesh)));
+    });
+}
+
+NL_API nl_status nl_link_remove(nl_world* world, nl_link_id link) {
+    return guarded("nl_link_remove", world, [&] { deref(world).links->remove(to_handle(link)); });
+}
+
+NL_API int32_t nl_link_is_valid(const nl_world* world, nl_link_id link) {
+    int32_t valid = 0;
+    guarded("nl_link_is_valid", world, [&] { valid = deref(world).links->contains(to_handle(link)) ? 1 : 0; });
+    return valid;
+}
+
+NL_API nl_status nl_link_get(const nl_world* world, nl_link_id link, nl_link* out_link) {
+    return guarded("nl_link_get", world, [&] {
+        const auto [navmesh, stored] = deref(world).links->get(to_handle(link));
+        require(out_link, "out_link");
+        *out_link = to_c(nl::StoredLink{to_handle(link), stored}, navmesh);
+    });
+}
+
+NL_API nl_status nl_navmesh_get_links(const nl_world* world, nl_navmesh_id navmesh, nl_link* out_links,
+                                      uint32_t capacity, uint32_t* out_count) {
+    return guarded("nl_navmesh_get_links", world, [&] {
+        const nl_world& w = deref(world);
+        const nl::Handle mesh = to_handle(navmesh);
+        w.navmeshes->get(mesh);  // refuses stale ids
+        const auto snapshot = w.links->snapshot(mesh);
+        nl::capi::list_into(*snapshot, out_links, capacity, out_count, "out_links",
+                            [&](const nl::StoredLink& s) { return to_c(s, mesh); });
+    });
+}
+
+NL_API nl_status nl_navmesh_remove_generated_links(nl_world* world, nl_navmesh_id navmesh, uint32_t* out_removed) {
+    return guarded("nl_navmesh_remove_generated_links", world, [&] {
+        nl_world& w = deref(world);
+        w.navmeshes->get(to_handle(navmesh));
+        const uint32_t removed = w.links->remove_generated(to_handle(navmesh));
+        if (out_removed) *out_removed = removed;
+    });
+}
+
+NL_API nl_link_settings nl_default_link_settings(void) { return to_c(nl::LinkSettings{}); }
+
+NL_API nl_status nl_link_settings_from_json(const char* json, size_t length, nl_link_settings* settings) {
+    return guarded("nl_link_settings_from_json", nullptr, [&] {
+        require(settings, "settings");
+        if (length > 0) require(json, "json");
+        nl::LinkSettings s = to_core(nl::capi::read_growable(*settings, nl_default_link_settings(), kSettingsFirstSize, "settings"));
+        nl::apply_settings_json(std::string_view(json ? json : "", length), s);
+        if (s.drop_angles.size() > kMaxDropAngles)
+            fail(ErrorCode::InvalidArgument, "settings.drop_angles has more than ", kMaxDropAngles, " entries");
+        nl::capi::write_growable(settings, to_c(s), kSettingsFirstSize, "settings");
+    });
+}
+
+NL_API nl_status nl_navmesh_generate_links(nl_world* world, nl_navmesh_id navmesh, const nl_link_settings* settings,
+                                           nl_progress_fn* progress, void* user, nl_bake_report* out_report) {
+    return guarded("nl_navmesh_generate_links", world, [&] {
+        nl_world& w = deref(world);
+        const nl::Handle handle = to_handle(navmesh);
+        const auto mesh = w.navmeshes->get(handle);
+        const nl::LinkSettings s =
+            settings ? to_core(nl::capi::read_growable(*settings, nl_default_link_settings(), kSettingsFirstSize, "settings"))
+                     : nl::LinkSettings{};
+        if (out_report && out_report->size < kReportFirstSize)
+            fail(ErrorCode::InvalidArgument, "out_report->size is ", out_report->size, " (set it to sizeof)");
+        nl::BakeReport report;
+        const std::vector<nl::Link> links = nl::generate_links(
+            *mesh, *w.level, *w.tasks, s, nl::CandidateSearch::SpatialGrid, report,
+            [&](float fraction, const char* stage) { return !progress || progress(user, fraction, stage) != 0; });
+        w.links->replace_generated(handle, links);
+        if (out_report) nl::capi::write_growable(out_report, to_c(report), kReportFirstSize, "out_report");
+    });
+}
+
+NL_API nl_status nl_navmesh_save_links_json(const nl_world* world, nl_navmesh_id navmesh, char* buffer, size_t capacity,
+                                            size_t* out_length) {
+    return guarded("nl_navmesh_save_links_json", world, [&] {
+        const nl_world& w = deref(world);
+        w.navmeshes->get(to_handle(navmesh));
+        require(out_length, "out_length");
+        if (!buffer && capacity > 0) fail(ErrorCode::InvalidArgument, "buffer is null but capacity is ", capacity);
+        const std::string json = nl::links_to_json(links_of(*w.links->snapshot(to_handle(navmesh))));
+        *out_length = json.size();
+        if (!buffer) return;
+        if (json.size() >= capacity)
+            fail(ErrorCode::BufferTooSmall, "capacity is ", capacity, " but ", json.size() + 1, " bytes are needed");
+        std::memcpy(buffer, json.c_str(), json.size() + 1);
+    });
+}
+
+NL_API nl_status nl_navmesh_load_links_json(nl_world* world, nl_navmesh_id navmesh, const char* json, size_t length,
+                                            uint32_t* out_count) {
+    return guarded("nl_navmesh_load_links_json", world, [&] {
+        nl_world& w = deref(world);
+        const nl::Handle handle = to_handle(navmesh);
+        const auto mesh = w.navmeshes->get(handle);
+        if (length > 0) require(json, "json");
+        std::vector<nl::Link> links = nl::links_from_json(std::string_view(json ? json : "", length));
+        // The polygons under the ends: the saved ones while they still hold the ends (the file may
+        // come from another build of the navmesh), else located again.
+        auto polygon_under = [&](const nl::Vec3& p, uint32_t saved) {
+            if (saved < mesh->polygon_count()) {
+                // Seen from above: detail heights may sit a voxel above the polygon's own corners.
+                const nl::Vec3 q = mesh->closest_point_on_polygon(saved, p);
+                if (nl::Vec3(q.x() - p.x(), 0.0f, q.z() - p.z()).norm() < 0.05f && std::fabs(q.y() - p.y()) < kEndReach)
+                    return saved;
+            }
+            return mesh->find_nearest(p, nl::Vec3::Constant(kEndReach)).polygon;
+        };
+        for (nl::Link& l : links) {
+            l.start_polygon = polygon_under(l.start, l.start_polygon);
+            l.end_polygon = polygon_under(l.end, l.end_polygon);
+        }
+        w.links->replace_all(handle, links);
+        if (out_count) *out_count = static_cast<uint32_t>(links.size());
+    });
+}
+
+}  // extern "C"

@@ -1,0 +1,223 @@
+#include "io/link_json.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+#include "level/mesh_validation.h"
+#include "util/error.h"
+
+namespace nl {
+namespace {
+
+using Json = nlohmann::json;
+
+Json point(const Vec3& v) { return Json::array({v.x(), v.y(), v.z()}); }
+
+Json parse(std::string_view text, const char* what) {
+    try {
+        return Json::parse(text.begin(), text.end());
+    } catch (const Json::parse_error& e) {
+        fail(ErrorCode::Parse, what, ": ", e.what());
+    }
+}
+
+// Reads fields with their path in every message.
+class Reader {
+public:
+    Reader(const Json& object, std::string path) : object_(object), path_(std::move(path)) {
+        if (!object_.is_object()) fail(ErrorCode::InvalidArgument, path_, " is not a JSON object");
+    }
+
+    const Json* find(const char* key) const {
+        const auto it = object_.find(key);
+        return it == object_.end() ? nullptr : &*it;
+    }
+    const Json& at(const char* key) const {
+        const Json* value = find(key);
+        if (!value) fail(ErrorCode::InvalidArgument, path_, ".", key, " is missing");
+        return *value;
+    }
+    float number(const char* key, float fallback, bool required = false) const {
+        const Json* value = required ? &at(key) : find(key);
+        if (!value) return fallback;
+        if (!value->is_number() || !std::isfinite(value->get<double>()))
+            fail(ErrorCode::InvalidArgument, path_, ".", key, " must be a finite number");
+        return value->get<float>();
+    }
+    bool flag(const char* key, bool fallback) const {
+        const Json* value = find(key);
+        if (!value) return fallback;
+        if (!value->is_boolean()) fail(ErrorCode::InvalidArgument, path_, ".", key, " must be true or false");
+        return value->get<bool>();
+    }
+    uint64_t whole(const char* key, uint64_t fallback) const {
+        const Json* value = find(key);
+        if (!value) return fallback;
+        if (!value->is_number_unsigned()) fail(ErrorCode::InvalidArgument, path_, ".", key, " must be a whole number >= 0");
+        return value->get<uint64_t>();
+    }
+    Vec3 point(const char* key, bool required) const {
+        const Json* value = required ? &at(key) : find(key);
+        if (!value) return Vec3::Zero();
+        if (!value->is_array() || value->size() != 3)
+            fail(ErrorCode::InvalidArgument, path_, ".", key, " must be an array of 3 numbers");
+        Vec3 v;
+        for (int k = 0; k < 3; ++k) {
+            if (!(*value)[k].is_number()) fail(ErrorCode::InvalidArgument, path_, ".", key, "[", k, "] must be a number");
+            v[k] = (*value)[k].get<float>();
+        }
+        if (!within_coordinate_limit(v))
+            fail(ErrorCode::InvalidArgument, path_, ".", key, " is not finite or beyond the coordinate limit");
+        return v;
+    }
+    const std::string& path() const { return path_; }
+
+private:
+    const Json& object_;
+    std::string path_;
+};
+
+LinkKind kind_from(const Json& value, const std::string& path) {
+    if (value.is_string()) {
+        const std::string name = value.get<std::string>();
+        if (name == "jump") return LinkKind::Jump;
+        if (name == "drop") return LinkKind::Drop;
+        if (name == "manual") return LinkKind::Manual;
+    } else if (value.is_number_unsigned() && value.get<uint64_t>() >= uint64_t(LinkKind::FirstPluginKind) &&
+               value.get<uint64_t>() <= UINT32_MAX) {
+        return static_cast<LinkKind>(value.get<uint32_t>());
+    }
+    fail(ErrorCode::InvalidArgument, path, ".kind must be \"jump\", \"drop\", \"manual\" or a plugin kind number >= 256");
+}
+
+}  // namespace
+
+const char* link_kind_name(LinkKind kind) {
+    switch (kind) {
+        case LinkKind::Jump: return "jump";
+        case LinkKind::Drop: return "drop";
+        case LinkKind::Manual: return "manual";
+        default: return "plugin";
+    }
+}
+
+std::string links_to_json(const std::vector<Link>& links) {
+    Json list = Json::array();
+    for (const Link& l : links) {
+        Json kind = l.kind < LinkKind::FirstPluginKind ? Json(link_kind_name(l.kind)) : Json(uint32_t(l.kind));
+        list.push_back({{"kind", kind},
+                        {"start", point(l.start)},
+                        {"end", point(l.end)},
+                        {"apex", point(l.apex)},
+                        {"bidirectional", l.bidirectional},
+                        {"cost_modifier", l.cost_modifier},
+                        {"generated", l.generated},
+                        {"enabled", l.enabled},
+                        {"user_data", l.user_data},
+                        {"start_polygon", l.start_polygon},
+                        {"end_polygon", l.end_polygon},
+                        {"requires",
+                         {{"gap", l.requirements.gap},
+                          {"rise", l.requirements.rise},
+                          {"drop", l.requirements.drop},
+                          {"clearance_width", l.requirements.clearance_width},
+                          {"abilities", l.requirements.abilities}}}});
+    }
+    return Json{{"format", "navlink-links"}, {"version", kLinkFileVersion}, {"links", list}}.dump(1);
+}
+
+std::vector<Link> links_from_json(std::string_view text) {
+    const Json document = parse(text, "links JSON");
+    const Reader top(document, "links JSON");
+    const Json& format = top.at("format");
+    if (!format.is_string() || format.get<std::string>() != "navlink-links")
+        fail(ErrorCode::VersionMismatch, "links JSON: format is not \"navlink-links\"");
+    const uint64_t version = top.whole("version", 0);
+    if (version != uint64_t(kLinkFileVersion))
+        fail(ErrorCode::VersionMismatch, "links JSON: version ", version, " is not supported (this library reads ", kLinkFileVersion, ")");
+    const Json& list = top.at("links");
+    if (!list.is_array()) fail(ErrorCode::InvalidArgument, "links JSON: links must be an array");
+
+    std::vector<Link> links;
+    for (size_t i = 0; i < list.size(); ++i) {
+        const Reader r(list[i], "links[" + std::to_string(i) + "]");
+        Link l;
+        l.kind = kind_from(r.at("kind"), r.path());
+        l.start = r.point("start", true);
+        l.end = r.point("end", true);
+        l.apex = r.find("apex") ? r.point("apex", true) : Vec3(l.start.y() > l.end.y() ? l.start : l.end);
+        l.bidirectional = r.flag("bidirectional", false);
+        l.cost_modifier = r.number("cost_modifier", 1.0f);
+        if (l.cost_modifier < 0.0f) fail(ErrorCode::InvalidArgument, r.path(), ".cost_modifier must be >= 0");
+        l.generated = r.flag("generated", false);
+        l.enabled = r.flag("enabled", true);
+        l.user_data = r.whole("user_data", 0);
+        // The navmesh's polygons under the ends when saved; the loader checks they still fit.
+        l.start_polygon = static_cast<uint32_t>(std::min<uint64_t>(r.whole("start_polygon", UINT32_MAX), UINT32_MAX));
+        l.end_polygon = static_cast<uint32_t>(std::min<uint64_t>(r.whole("end_polygon", UINT32_MAX), UINT32_MAX));
+        if (const Json* requirements = r.find("requires")) {
+            const Reader q(*requirements, r.path() + ".requirements");
+            l.requirements.gap = q.number("gap", 0.0f);
+            l.requirements.rise = q.number("rise", 0.0f);
+            l.requirements.drop = q.number("drop", 0.0f);
+            l.requirements.clearance_width = q.number("clearance_width", 0.0f);
+            l.requirements.abilities = q.whole("abilities", 0);
+            if (l.requirements.gap < 0 || l.requirements.rise < 0 || l.requirements.drop < 0 || l.requirements.clearance_width < 0)
+                fail(ErrorCode::InvalidArgument, r.path(), ".requirements: distances must be >= 0");
+        }
+        links.push_back(l);
+    }
+    return links;
+}
+
+void apply_settings_json(std::string_view text, LinkSettings& s) {
+    const Json document = parse(text, "settings JSON");
+    const Reader r(document, "settings");
+    float* const floats[] = {&s.min_edge_length,          &s.sample_spacing,         &s.falloff_distance,
+                             &s.max_link_distance,        &s.min_link_distance,      &s.short_link_distance,
+                             &s.max_jump_up,              &s.jump_arc_height,        &s.strict_forward_angle,
+                             &s.permissive_forward_angle, &s.strict_incline_angle,   &s.permissive_incline_angle,
+                             &s.max_drop_distance,        &s.drop_steepness,         &s.merge_distance,
+                             &s.clearance_margin};
+    const char* const float_names[] = {"min_edge_length",          "sample_spacing",       "falloff_distance",
+                                       "max_link_distance",        "min_link_distance",    "short_link_distance",
+                                       "max_jump_up",              "jump_arc_height",      "strict_forward_angle",
+                                       "permissive_forward_angle", "strict_incline_angle", "permissive_incline_angle",
+                                       "max_drop_distance",        "drop_steepness",       "merge_distance",
+                                       "clearance_margin"};
+    unsigned* const wholes[] = {&s.min_group_size, &s.max_group_size, &s.arc_segments};
+    const char* const whole_names[] = {"min_group_size", "max_group_size", "arc_segments"};
+
+    for (const auto& [key, value] : document.items()) {
+        bool known = false;
+        for (size_t i = 0; i < std::size(floats) && !known; ++i) {
+            if (key == float_names[i]) {
+                *floats[i] = r.number(float_names[i], 0.0f, true);
+                known = true;
+            }
+        }
+        for (size_t i = 0; i < std::size(wholes) && !known; ++i) {
+            if (key == whole_names[i]) {
+                const uint64_t v = r.whole(whole_names[i], 0);
+                if (v > 100000) fail(ErrorCode::InvalidArgument, "settings.", key, " is too large");
+                *wholes[i] = static_cast<unsigned>(v);
+                known = true;
+            }
+        }
+        if (!known && key == "drop_angles") {
+            if (!value.is_array()) fail(ErrorCode::InvalidArgument, "settings.drop_angles must be an array of numbers");
+            s.drop_angles.clear();
+            for (size_t i = 0; i < value.size(); ++i) {
+                if (!value[i].is_number()) fail(ErrorCode::InvalidArgument, "settings.drop_angles[", i, "] must be a number");
+                s.drop_angles.push_back(value[i].get<float>());
+            }
+            known = true;
+        }
+        if (!known) fail(ErrorCode::InvalidArgument, "settings.", key, " is not a link generation setting");
+    }
+    validate(s, "settings.");
+}
+
+}  // namespace nl

@@ -1,0 +1,29 @@
+// Links and link settings as JSON (schema in docs/link-generation.md):
+//   {"format": "navlink-links", "version": 1, "links": [{"kind": "jump", "start": [x, y, z], ...}]}
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "links/link.h"
+#include "links/link_settings.h"
+
+namespace nl {
+
+constexpr int kLinkFileVersion = 1;
+
+std::string links_to_json(const std::vector<Link>& links);
+
+// Throws Parse (malformed JSON, with the parser's position), VersionMismatch (another format or a
+// newer version) or InvalidArgument (a field missing, of the wrong type or out of range, named by its
+// path, e.g. "links[3].start[1]").
+std::vector<Link> links_from_json(std::string_view text);
+
+// Applies the keys of a JSON object to `settings` (keys are LinkSettings' field names; unknown keys
+// are refused so a typo is not silently ignored), then validates the result.
+void apply_settings_json(std::string_view text, LinkSettings& settings);
+
+const char* link_kind_name(LinkKind kind);
+
+}  // namespace nl

@@ -1,0 +1,115 @@
+#include "links/link_store.h"
+
+#include <algorithm>
+
+namespace nl {
+
+Handle LinkStore::add(Handle navmesh, const Link& link) {
+    std::unique_lock lock(mutex_);
+    const Handle id = links_.insert(Entry{navmesh, link});
+    by_navmesh_[key(navmesh)].push_back(id);
+    publish(navmesh);
+    return id;
+}
+
+void LinkStore::update(Handle id, const Link& link) {
+    std::unique_lock lock(mutex_);
+    Entry* entry = links_.find(id);
+    if (!entry) fail_stale("link", id);
+    const bool generated = entry->link.generated;
+    entry->link = link;
+    entry->link.generated = generated;
+    publish(entry->navmesh);
+}
+
+void LinkStore::remove(Handle id) {
+    std::unique_lock lock(mutex_);
+    Entry* entry = links_.find(id);
+    if (!entry) fail_stale("link", id);
+    const Handle navmesh = entry->navmesh;
+    auto& ids = by_navmesh_[key(navmesh)];
+    ids.erase(std::find(ids.begin(), ids.end(), id));
+    links_.erase(id);
+    publish(navmesh);
+}
+
+std::pair<Handle, Link> LinkStore::get(Handle id) const {
+    std::shared_lock lock(mutex_);
+    const Entry* entry = links_.find(id);
+    if (!entry) fail_stale("link", id);
+    return {entry->navmesh, entry->link};
+}
+
+bool LinkStore::contains(Handle id) const {
+    std::shared_lock lock(mutex_);
+    return links_.find(id) != nullptr;
+}
+
+void LinkStore::erase_where(Handle navmesh, bool generated_only) {
+    auto& ids = by_navmesh_[key(navmesh)];
+    std::vector<Handle> kept;
+    for (Handle id : ids) {
+        if (generated_only && !links_.find(id)->link.generated) kept.push_back(id);
+        else links_.erase(id);
+    }
+    ids = std::move(kept);
+}
+
+std::vector<Handle> LinkStore::replace_generated(Handle navmesh, const std::vector<Link>& generated) {
+    std::unique_lock lock(mutex_);
+    erase_where(navmesh, true);
+    std::vector<Handle> ids;
+    ids.reserve(generated.size());
+    auto& list = by_navmesh_[key(navmesh)];
+    for (const Link& l : generated) {
+        Link copy = l;
+        copy.generated = true;
+        ids.push_back(links_.insert(Entry{navmesh, copy}));
+        list.push_back(ids.back());
+    }
+    publish(navmesh);
+    return ids;
+}
+
+std::vector<Handle> LinkStore::replace_all(Handle navmesh, const std::vector<Link>& links) {
+    std::unique_lock lock(mutex_);
+    erase_where(navmesh, false);
+    std::vector<Handle> ids;
+    auto& list = by_navmesh_[key(navmesh)];
+    for (const Link& l : links) {
+        ids.push_back(links_.insert(Entry{navmesh, l}));
+        list.push_back(ids.back());
+    }
+    publish(navmesh);
+    return ids;
+}
+
+uint32_t LinkStore::remove_generated(Handle navmesh) {
+    std::unique_lock lock(mutex_);
+    const size_t before = by_navmesh_[key(navmesh)].size();
+    erase_where(navmesh, true);
+    publish(navmesh);
+    return static_cast<uint32_t>(before - by_navmesh_[key(navmesh)].size());
+}
+
+void LinkStore::remove_navmesh(Handle navmesh) {
+    std::unique_lock lock(mutex_);
+    erase_where(navmesh, false);
+    by_navmesh_.erase(key(navmesh));
+    snapshots_.erase(key(navmesh));
+}
+
+void LinkStore::publish(Handle navmesh) {
+    auto snapshot = std::make_shared<LinkSnapshot>();
+    for (Handle id : by_navmesh_[key(navmesh)]) snapshot->push_back(StoredLink{id, links_.find(id)->link});
+    snapshots_[key(navmesh)] = std::move(snapshot);
+}
+
+std::shared_ptr<const LinkSnapshot> LinkStore::snapshot(Handle navmesh) const {
+    std::shared_lock lock(mutex_);
+    const auto it = snapshots_.find(key(navmesh));
+    if (it == snapshots_.end()) return std::make_shared<const LinkSnapshot>();
+    return it->second;
+}
+
+}  // namespace nl
