@@ -7,7 +7,7 @@
 #include "entry_guard.h"
 #include "host_input.h"
 #include "io/link_json.h"
-#include "links/link_generator.h"
+#include "links/link_bake.h"
 #include "world.h"
 
 using nl::ErrorCode;
@@ -180,6 +180,11 @@ nl_bake_report to_c(const nl::BakeReport& r) {
     return c;
 }
 
+// The host's progress callback as the core's (no callback: never cancel).
+auto progress_of(nl_progress_fn* progress, void* user) {
+    return [progress, user](float fraction, const char* stage) { return !progress || progress(user, fraction, stage) != 0; };
+}
+
 std::vector<nl::Link> links_of(const nl::LinkSnapshot& snapshot) {
     std::vector<nl::Link> out;
     out.reserve(snapshot.size());
@@ -285,10 +290,35 @@ NL_API nl_status nl_navmesh_generate_links(nl_world* world, nl_navmesh_id navmes
                      : nl::LinkSettings{};
         if (out_report && out_report->size < kReportFirstSize)
             fail(ErrorCode::InvalidArgument, "out_report->size is ", out_report->size, " (set it to sizeof)");
+        auto bake = std::make_shared<nl::LinkBake>(mesh, s, nl::CandidateSearch::SpatialGrid);
         nl::BakeReport report;
-        const std::vector<nl::Link> links = nl::generate_links(
-            *mesh, *w.level, *w.tasks, s, nl::CandidateSearch::SpatialGrid, report,
-            [&](float fraction, const char* stage) { return !progress || progress(user, fraction, stage) != 0; });
+        const std::vector<nl::Link> links = bake->run(*w.level, *w.tasks, report, progress_of(progress, user));
+        w.links->replace_generated(handle, links);
+        w.bakes->set(handle, std::move(bake));
+        if (out_report) nl::capi::write_growable(out_report, to_c(report), kReportFirstSize, "out_report");
+    });
+}
+
+NL_API nl_status nl_navmesh_update_links_in_box(nl_world* world, nl_navmesh_id navmesh, const float* box_min,
+                                                const float* box_max, nl_progress_fn* progress, void* user,
+                                                nl_bake_report* out_report) {
+    return guarded("nl_navmesh_update_links_in_box", world, [&] {
+        nl_world& w = deref(world);
+        const nl::Handle handle = to_handle(navmesh);
+        const auto mesh = w.navmeshes->get(handle);
+        require(box_min, "box_min");
+        require(box_max, "box_max");
+        nl::Aabb box;
+        box.min = nl::Vec3(box_min[0], box_min[1], box_min[2]);
+        box.max = nl::Vec3(box_max[0], box_max[1], box_max[2]);
+        if (!nl::within_coordinate_limit(box.min) || !nl::within_coordinate_limit(box.max) || box.empty())
+            fail(ErrorCode::InvalidArgument, "box_min and box_max must be finite, within the limit, and min <= max");
+        if (out_report && out_report->size < kReportFirstSize)
+            fail(ErrorCode::InvalidArgument, "out_report->size is ", out_report->size, " (set it to sizeof)");
+        const std::shared_ptr<nl::LinkBake> bake = w.bakes->get(handle);
+        if (!bake) fail(ErrorCode::NotFound, "the navmesh's links were never generated: call nl_navmesh_generate_links first");
+        nl::BakeReport report;
+        const std::vector<nl::Link> links = bake->update(box, *w.level, *w.tasks, report, progress_of(progress, user));
         w.links->replace_generated(handle, links);
         if (out_report) nl::capi::write_growable(out_report, to_c(report), kReportFirstSize, "out_report");
     });

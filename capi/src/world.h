@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "level/level.h"
+#include "links/link_bake.h"
 #include "links/link_store.h"
 #include "navlink/navlink.h"
 #include "navmesh/navmesh_registry.h"
@@ -19,6 +20,7 @@ struct nl_world {
     std::unique_ptr<nl::Level> level;
     std::unique_ptr<nl::NavMeshRegistry> navmeshes;
     std::unique_ptr<nl::LinkStore> links;
+    std::unique_ptr<nl::LinkBakes> bakes;  // each navmesh's last bake, for nl_navmesh_update_links_in_box
     std::unique_ptr<nl::capi::PluginRegistry> plugins;
 };
 

@@ -56,6 +56,7 @@ NL_API nl_status nl_world_create(const nl_world_def* def, nl_world** out_world) 
         world->level = std::make_unique<nl::Level>(*world->tasks, world->handle_tag);
         world->navmeshes = std::make_unique<nl::NavMeshRegistry>(world->handle_tag);
         world->links = std::make_unique<nl::LinkStore>(world->handle_tag);
+        world->bakes = std::make_unique<nl::LinkBakes>();
         world->plugins = std::make_unique<nl::capi::PluginRegistry>(*world, world->handle_tag);
         nl::capi::register_builtin_plugins(*world->plugins);
         *out_world = world.release();

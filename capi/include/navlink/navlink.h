@@ -672,6 +672,18 @@ typedef int32_t nl_progress_fn(void* user, float fraction, const char* stage);
 NL_API nl_status nl_navmesh_generate_links(nl_world* world, nl_navmesh_id navmesh, const nl_link_settings* settings,
                                            nl_progress_fn* progress, void* user, nl_bake_report* out_report);
 
+/** Regenerates only what level geometry inside the box [box_min, box_max] (3 floats each, borrowed)
+ *  can have changed since the navmesh's last generation: call it after meshes were added, removed or
+ *  moved there; the box must hold every change (for a moved mesh, its bounds before and after).
+ *  Probes and sweeps that touch the box are cast again, everything else is reused, and the result
+ *  equals what nl_navmesh_generate_links with the same settings would give now. The navmesh itself
+ *  must be the same (a rebuilt navmesh is a new one: generate its links in full).
+ *  Returns SUCCESS, or a failure with NOT_FOUND (never generated), INVALID_HANDLE, INVALID_ARGUMENT
+ *  (a null, non-finite or inverted box), CANCELLED (nothing changed). Thread-safe. */
+NL_API nl_status nl_navmesh_update_links_in_box(nl_world* world, nl_navmesh_id navmesh, const float* box_min,
+                                                const float* box_max, nl_progress_fn* progress, void* user,
+                                                nl_bake_report* out_report);
+
 /** Writes the navmesh's links as JSON (schema "navlink-links" version 1, docs/link-generation.md)
  *  into `buffer` (caller-owned, `capacity` bytes, NUL-terminated on success). `*out_length` always
  *  receives the length without the NUL; a NULL buffer only measures (two-call pattern). Returns

@@ -1,0 +1,583 @@
+#include "links/link_bake.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <unordered_set>
+
+#include "links/clearance.h"
+#include "util/error.h"
+
+namespace nl {
+namespace {
+
+constexpr float kDegrees = 3.14159265358979f / 180.0f;
+constexpr float kProbeLift = 0.5f;  // probes start this far above the navmesh: clear of the floor,
+                                    // and below any ceiling (the navmesh has agent height above it)
+constexpr float kRimStep = 0.25f;   // spacing of the probes that look for the rim past an edge
+constexpr float kPad = 1e-3f;       // bounds are padded: a surface exactly on them still counts
+
+struct Stopwatch {
+    std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
+    double lap() {
+        const auto now = std::chrono::steady_clock::now();
+        const double ms = std::chrono::duration<double, std::milli>(now - start).count();
+        start = now;
+        return ms;
+    }
+};
+
+uint64_t pair_key(uint32_t a, uint32_t b) { return (uint64_t(a) << 32) | b; }
+
+Aabb bounds_of(std::initializer_list<Vec3> points) {
+    Aabb box;
+    for (const Vec3& p : points) box.grow(p);
+    return box;
+}
+
+bool touches(const Aabb& a, const Aabb* box) {
+    if (!box) return true;  // a full bake recomputes everything
+    return (a.min.array() - kPad <= box->max.array()).all() && (a.max.array() + kPad >= box->min.array()).all();
+}
+
+void set_requirements(Link& l) {
+    const Vec3 d = l.end - l.start;
+    l.requirements.gap = Vec3(d.x(), 0.0f, d.z()).norm();
+    l.requirements.rise = std::max(0.0f, d.y());
+    l.requirements.drop = std::max(0.0f, -d.y());
+}
+
+// One bake or update: fills `next` from the old cache and new rays.
+class Baker {
+public:
+    Baker(const NavMesh& mesh, const EdgeSampling& sampling, const LinkSettings& s, CandidateSearch search,
+          const LinkBake::Cache& old, const Aabb* box, const Level& level, TaskSystem& tasks, BakeReport& report,
+          BakeProgress progress)
+        : mesh_(mesh), samples_(sampling.samples), s_(s), search_(search), old_(old), box_(box), level_(level),
+          tasks_(tasks), report_(report), progress_(progress), body_{mesh.agent().radius, mesh.agent().height} {}
+
+    std::vector<Link> run(LinkBake::Cache& next) {
+        Stopwatch stage;
+        step(0.05f, "take-off points");
+        probe_takeoffs(next);
+        report_.milliseconds_takeoff = stage.lap();
+        step(0.15f, "jumps");
+        find_jumps(next);
+        report_.milliseconds_jumps = stage.lap();
+        step(0.55f, "drops");
+        find_drops(next);
+        report_.milliseconds_drops = stage.lap();
+        step(0.95f, "merge");
+        std::vector<Link> links = select(next);
+        report_.milliseconds_merge = stage.lap();
+        return links;
+    }
+
+private:
+    void step(float fraction, const char* stage) {
+        if (!progress_(fraction, stage)) fail(ErrorCode::Cancelled, "the bake was cancelled during '", stage, "'");
+    }
+
+    std::vector<RayHit> cast(const std::vector<Ray>& rays) {
+        std::vector<RayHit> hits(rays.size());
+        level_.cast_rays(rays.data(), static_cast<uint32_t>(rays.size()), hits.data());
+        report_.rays_cast += rays.size();
+        return hits;
+    }
+
+    std::vector<uint8_t> blocked(const std::vector<Segment>& segments) {
+        std::vector<uint8_t> out(segments.size());
+        level_.segments_blocked(segments.data(), static_cast<uint32_t>(segments.size()), out.data());
+        report_.rays_cast += segments.size();
+        return out;
+    }
+
+    // Take-off points: samples past whose edge the ground falls away (the rim: the first probe, every
+    // kRimStep out to falloff_distance, with no ground within a step below), with nothing solid
+    // between the edge and the rim. Recast leaves its edges 0.6 to 0.9 m inside the rim, depending
+    // on how the voxel grid falls, so the rim is searched for, not assumed.
+    void probe_takeoffs(LinkBake::Cache& next) {
+        next.takeoffs.resize(samples_.size());
+        std::vector<uint32_t> redo;
+        for (uint32_t i = 0; i < samples_.size(); ++i) {
+            if (old_.takeoffs.size() == samples_.size() && !touches(old_.takeoffs[i].bounds, box_)) next.takeoffs[i] = old_.takeoffs[i];
+            else redo.push_back(i);
+        }
+        const float probe = std::min(kProbeLift, 0.5f * body_.height);
+        std::vector<Ray> ground_rays;
+        for (uint32_t i : redo) ground_rays.push_back(Ray{samples_[i].point + Vec3(0, probe, 0), Vec3(0, -1, 0), probe + 1.5f});
+        const std::vector<RayHit> ground = cast(ground_rays);
+
+        const auto steps = static_cast<uint32_t>(std::ceil(s_.falloff_distance / kRimStep));
+        const float climb = mesh_.agent().max_climb;
+        std::vector<Ray> below;
+        for (size_t k = 0; k < redo.size(); ++k) {
+            const EdgeSample& e = samples_[redo[k]];
+            LinkBake::TakeoffState& t = next.takeoffs[redo[k]];
+            t = LinkBake::TakeoffState{};
+            // Correction for navmeshes that sit above the floor (Recast's rounds up) or sink into it.
+            t.ground_y = ground[k].hit ? ground[k].point.y() : e.point.y();
+            t.bounds = bounds_of({e.point + Vec3(0, probe, 0), e.point - Vec3(0, 1.5f, 0)});
+            for (uint32_t j = 1; j <= steps; ++j) {
+                const Vec3 out = e.point + e.outward * std::min(j * kRimStep, s_.falloff_distance);
+                const Vec3 top(out.x(), t.ground_y + probe, out.z());
+                below.push_back(Ray{top, Vec3(0, -1, 0), probe + climb + 0.05f});
+                t.bounds.grow(top);
+                t.bounds.grow(top - Vec3(0, probe + climb + 0.05f, 0));
+            }
+        }
+        const std::vector<RayHit> step_below = cast(below);
+
+        std::vector<Segment> walls;
+        std::vector<uint32_t> ledges;
+        const Vec3 chest(0, std::min(0.5f * body_.height, 1.0f), 0);
+        for (size_t k = 0; k < redo.size(); ++k) {
+            LinkBake::TakeoffState& t = next.takeoffs[redo[k]];
+            const EdgeSample& e = samples_[redo[k]];
+            t.rim = -1.0f;
+            for (uint32_t j = 1; j <= steps && t.rim < 0.0f; ++j)
+                if (!step_below[k * steps + j - 1].hit) t.rim = std::min(j * kRimStep, s_.falloff_distance);
+            if (t.rim < 0.0f) {
+                t.rejected = 2;
+                continue;
+            }
+            const Vec3 foot(e.point.x(), t.ground_y, e.point.z());
+            walls.push_back(Segment{foot + chest, foot + e.outward * t.rim + chest});
+            t.bounds.grow(walls.back().from);
+            t.bounds.grow(walls.back().to);
+            ledges.push_back(redo[k]);
+        }
+        const std::vector<uint8_t> wall = blocked(walls);
+        for (size_t k = 0; k < ledges.size(); ++k) {
+            LinkBake::TakeoffState& t = next.takeoffs[ledges[k]];
+            t.valid = !wall[k];
+            t.rejected = wall[k] ? 1 : 0;
+        }
+    }
+
+    // The pairs of take-off points within max_link_distance, each once (i < j), in order.
+    std::vector<std::pair<uint32_t, uint32_t>> nearby_pairs(const std::vector<uint32_t>& valid) const {
+        std::vector<std::pair<uint32_t, uint32_t>> pairs;
+        const float reach = s_.max_link_distance;
+        if (search_ == CandidateSearch::AllPairs) {
+            for (size_t x = 0; x < valid.size(); ++x)
+                for (size_t y = x + 1; y < valid.size(); ++y)
+                    if ((samples_[valid[x]].point - samples_[valid[y]].point).norm() <= reach) pairs.emplace_back(valid[x], valid[y]);
+            return pairs;
+        }
+        // Cells as wide as the reach: a partner is in the 27 cells around a point.
+        struct Key {
+            int64_t x, y, z;
+            bool operator==(const Key& o) const { return x == o.x && y == o.y && z == o.z; }
+        };
+        struct Hash {
+            size_t operator()(const Key& k) const { return size_t(k.x * 73856093) ^ size_t(k.y * 19349663) ^ size_t(k.z * 83492791); }
+        };
+        auto key = [&](const Vec3& p) {
+            return Key{int64_t(std::floor(p.x() / reach)), int64_t(std::floor(p.y() / reach)), int64_t(std::floor(p.z() / reach))};
+        };
+        std::unordered_map<Key, std::vector<uint32_t>, Hash> cells;
+        for (uint32_t i : valid) cells[key(samples_[i].point)].push_back(i);
+        for (uint32_t i : valid) {
+            const Vec3& p = samples_[i].point;
+            const Key k = key(p);
+            const size_t first = pairs.size();
+            for (int64_t dz = -1; dz <= 1; ++dz)
+                for (int64_t dy = -1; dy <= 1; ++dy)
+                    for (int64_t dx = -1; dx <= 1; ++dx) {
+                        const auto it = cells.find(Key{k.x + dx, k.y + dy, k.z + dz});
+                        if (it == cells.end()) continue;
+                        for (uint32_t j : it->second)
+                            if (j > i && (samples_[j].point - p).norm() <= reach) pairs.emplace_back(i, j);
+                    }
+            std::sort(pairs.begin() + first, pairs.end());
+        }
+        return pairs;
+    }
+
+    // The constraints that need no ray: distance, rise, facing, incline. Both directions at once:
+    // every one of them is symmetric in the two ends.
+    bool jump_constraints_hold(const EdgeSample& a, const EdgeSample& b) {
+        const Vec3 d = b.point - a.point;
+        const Vec3 flat(d.x(), 0.0f, d.z());
+        const float distance = d.norm(), gap = flat.norm();
+        if (gap < s_.min_link_distance || distance > s_.max_link_distance) {
+            ++report_.rejected_distance;
+            return false;
+        }
+        if (std::fabs(d.y()) > s_.max_jump_up) {
+            ++report_.rejected_rise;
+            return false;
+        }
+        const bool is_short = distance < s_.short_link_distance;
+        const float forward = std::cos((is_short ? s_.permissive_forward_angle : s_.strict_forward_angle) * kDegrees);
+        const float incline = std::sin((is_short ? s_.permissive_incline_angle : s_.strict_incline_angle) * kDegrees);
+        const Vec3 heading = flat / gap, direction = d / distance;
+        if (a.outward.dot(heading) < forward || b.outward.dot(-heading) < forward ||
+            std::fabs(direction.dot(a.normal)) > incline || std::fabs(direction.dot(b.normal)) > incline) {
+            ++report_.rejected_angle;
+            return false;
+        }
+        return true;
+    }
+
+    // Sweeps each path with the agent's body and, where clear, with wider ones (up to twice as
+    // wide), in one occlusion batch per width.
+    std::vector<LinkBake::Sweep> sweep(const std::vector<const std::vector<Vec3>*>& paths) {
+        std::vector<LinkBake::Sweep> out(paths.size());
+        std::vector<size_t> still(paths.size());
+        for (size_t i = 0; i < paths.size(); ++i) {
+            still[i] = i;
+            Aabb& b = out[i].bounds;
+            for (const Vec3& p : *paths[i]) b.grow(p);
+            const float widest = 2.0f * body_.radius;
+            b.min -= Vec3(widest, 0.0f, widest);
+            b.max += Vec3(widest, body_.height, widest);
+        }
+        for (float scale : {1.0f, 1.5f, 2.0f}) {
+            std::vector<std::vector<Segment>> per_path(still.size());
+            tasks_.parallel_for(static_cast<uint32_t>(still.size()), 64, [&](uint32_t begin, uint32_t end) {
+                for (uint32_t k = begin; k < end; ++k)
+                    append_body_sweep(*paths[still[k]], Body{body_.radius * scale, body_.height}, s_.clearance_margin, per_path[k]);
+            });
+            std::vector<Segment> all;
+            std::vector<size_t> first(still.size() + 1, 0);
+            for (size_t k = 0; k < still.size(); ++k) first[k + 1] = first[k] + per_path[k].size();
+            all.reserve(first.back());
+            for (const auto& segments : per_path) all.insert(all.end(), segments.begin(), segments.end());
+            const std::vector<uint8_t> hit = blocked(all);
+            std::vector<size_t> passed;
+            for (size_t k = 0; k < still.size(); ++k) {
+                if (std::any_of(hit.begin() + first[k], hit.begin() + first[k + 1], [](uint8_t h) { return h != 0; })) continue;
+                out[still[k]].clear = true;
+                out[still[k]].width = 2.0f * body_.radius * scale;
+                passed.push_back(still[k]);
+            }
+            still = std::move(passed);
+        }
+        return out;
+    }
+
+    bool on_navmesh(const Vec3& point) const {
+        const NavPoint p = mesh_.find_nearest(point, Vec3(0.1f, 0.5f, 0.1f));
+        return p.found && p.distance < 0.3f;
+    }
+
+    // Jump candidates: the geometry-free constraints over every pair (cheap, so always redone), then
+    // the arc sweep, reused from the old cache unless geometry in the box could have changed it.
+    void find_jumps(LinkBake::Cache& next) {
+        std::vector<uint32_t> valid;
+        for (uint32_t i = 0; i < samples_.size(); ++i)
+            if (next.takeoffs[i].valid) valid.push_back(i);
+        report_.takeoff_points = static_cast<uint32_t>(valid.size());
+        const auto pairs = nearby_pairs(valid);
+        std::vector<uint64_t> redo;
+        std::vector<std::vector<Vec3>> arcs;
+        for (size_t k = 0; k < pairs.size(); ++k) {
+            if ((k & 1023) == 0) step(0.15f + 0.2f * float(k) / pairs.size(), "jumps");
+            const auto [a, b] = pairs[k];
+            if (!jump_constraints_hold(samples_[a], samples_[b])) continue;
+            if (!on_navmesh(samples_[b].point)) {
+                ++report_.rejected_no_landing;
+                continue;
+            }
+            const uint64_t key = pair_key(a, b);
+            const auto cached = old_.jumps.find(key);
+            if (cached != old_.jumps.end() && !touches(cached->second.sweep.bounds, box_)) {
+                next.jumps.emplace(key, cached->second);
+                continue;
+            }
+            const JumpArc arc = jump_arc(samples_[a].point, samples_[b].point, s_.jump_arc_height, s_.arc_segments);
+            LinkBake::JumpCandidate c;
+            c.a = a;
+            c.b = b;
+            c.link.kind = LinkKind::Jump;
+            c.link.start = samples_[a].point;
+            c.link.end = samples_[b].point;
+            c.link.apex = arc.apex;
+            c.link.bidirectional = true;  // every jump constraint holds both ways
+            c.link.generated = true;
+            c.link.start_polygon = samples_[a].polygon;
+            c.link.end_polygon = samples_[b].polygon;
+            set_requirements(c.link);
+            next.jumps.emplace(key, c);
+            redo.push_back(key);
+            arcs.push_back(arc.points);
+        }
+        report_.jump_candidates = static_cast<uint32_t>(next.jumps.size());
+        step(0.35f, "jump clearance");
+        std::vector<const std::vector<Vec3>*> paths;
+        for (const auto& arc : arcs) paths.push_back(&arc);
+        const std::vector<LinkBake::Sweep> swept = sweep(paths);
+        for (size_t k = 0; k < redo.size(); ++k) next.jumps[redo[k]].sweep = swept[k];
+    }
+
+    // Drops: probes down from past the rim along rotated outward directions, then the fall's sweep.
+    void find_drops(LinkBake::Cache& next) {
+        const float steep = s_.drop_steepness * kDegrees;
+        const float reach = (s_.max_drop_distance + kProbeLift + 1.0f) / std::sin(steep);
+        const auto angles = static_cast<uint32_t>(s_.drop_angles.size());
+        std::vector<Ray> probes;
+        std::vector<uint64_t> probed;
+        for (uint32_t i = 0; i < samples_.size(); ++i) {
+            const LinkBake::TakeoffState& t = next.takeoffs[i];
+            if (!t.valid) continue;
+            const bool takeoff_same = old_.takeoffs.size() == samples_.size() && old_.takeoffs[i].valid &&
+                                      old_.takeoffs[i].rim == t.rim;
+            for (uint32_t angle = 0; angle < angles; ++angle) {
+                const uint64_t key = pair_key(i, angle);
+                const auto cached = old_.drops.find(key);
+                if (takeoff_same && cached != old_.drops.end() && !touches(cached->second.bounds, box_)) {
+                    next.drops.emplace(key, cached->second);
+                    continue;
+                }
+                const EdgeSample& e = samples_[i];
+                const Eigen::AngleAxisf turn(s_.drop_angles[angle] * kDegrees, Vec3::UnitY());
+                const Vec3 heading = turn * e.outward;
+                // Past the rim (found straight out; a turned probe starts as far out, plus a margin).
+                const Vec3 falloff = e.point + heading * (t.rim + 0.2f);
+                const Vec3 direction = (heading * std::cos(steep) + Vec3(0, -std::sin(steep), 0)).normalized();
+                probes.push_back(Ray{falloff + Vec3(0, kProbeLift, 0), direction, reach});
+                LinkBake::DropProbe d;
+                d.fall = {e.point, Vec3(falloff.x(), e.point.y(), falloff.z())};
+                next.drops.emplace(key, d);
+                probed.push_back(key);
+            }
+        }
+        const std::vector<RayHit> hits = cast(probes);
+        step(0.7f, "drops");
+
+        const Vec3 landing_box(std::max(body_.radius * 1.5f, 0.3f), 1.0f, std::max(body_.radius * 1.5f, 0.3f));
+        std::vector<uint64_t> to_sweep;
+        for (size_t k = 0; k < probed.size(); ++k) {
+            LinkBake::DropProbe& d = next.drops[probed[k]];
+            const uint32_t i = static_cast<uint32_t>(probed[k] >> 32);
+            const Ray& probe = probes[k];
+            d.bounds = bounds_of({probe.origin, probe.origin + probe.direction * (hits[k].hit ? hits[k].distance : reach)});
+            d.outcome = 1;
+            if (!hits[k].hit) continue;
+            const NavPoint landing = mesh_.find_nearest(hits[k].point, landing_box);
+            if (!landing.found || landing.polygon == samples_[i].polygon) continue;
+            const float drop = samples_[i].point.y() - landing.point.y();
+            if (drop <= mesh_.agent().max_climb || drop > s_.max_drop_distance) {
+                d.outcome = 2;
+                continue;
+            }
+            d.outcome = 0;
+            Link& l = d.link;
+            l.kind = LinkKind::Drop;
+            l.start = samples_[i].point;
+            l.end = landing.point;
+            l.apex = l.start;
+            l.bidirectional = drop <= s_.max_jump_up;  // low enough to jump back up
+            l.generated = true;
+            l.start_polygon = samples_[i].polygon;
+            l.end_polygon = landing.polygon;
+            set_requirements(l);
+            // Walk out over the edge, fall, land.
+            d.fall.push_back(Vec3(landing.point.x(), l.start.y(), landing.point.z()));
+            d.fall.push_back(landing.point);
+            to_sweep.push_back(probed[k]);
+        }
+        // Landed probes that were not probed again keep their sweep unless the box touches it.
+        const std::unordered_set<uint64_t> fresh(probed.begin(), probed.end());
+        for (const auto& [key, d] : next.drops) {
+            if (d.outcome == 0 && !fresh.count(key) && touches(d.sweep.bounds, box_)) to_sweep.push_back(key);
+        }
+        std::sort(to_sweep.begin(), to_sweep.end());
+        step(0.8f, "drop clearance");
+        std::vector<const std::vector<Vec3>*> paths;
+        for (uint64_t key : to_sweep) paths.push_back(&next.drops[key].fall);
+        const std::vector<LinkBake::Sweep> swept = sweep(paths);
+        for (size_t k = 0; k < to_sweep.size(); ++k) next.drops[to_sweep[k]].sweep = swept[k];
+    }
+
+    // No rays from here on: over everything cached, so an update gives what a full bake would.
+    std::vector<Link> select(const LinkBake::Cache& c) {
+        for (const auto& t : c.takeoffs) {
+            if (t.rejected == 1) ++report_.rejected_wall;
+            if (t.rejected == 2) ++report_.rejected_not_ledge;
+        }
+        std::vector<Link> links = straightest_jumps(c);
+        std::vector<uint64_t> drop_keys;
+        for (const auto& [key, d] : c.drops) drop_keys.push_back(key);
+        std::sort(drop_keys.begin(), drop_keys.end());
+        for (uint64_t key : drop_keys) {
+            const LinkBake::DropProbe& d = c.drops.at(key);
+            if (d.outcome == 1) ++report_.rejected_no_landing;
+            else if (d.outcome == 2) ++report_.rejected_distance;
+            else if (!d.sweep.clear) ++report_.rejected_clearance;
+            else {
+                links.push_back(d.link);
+                links.back().requirements.clearance_width = d.sweep.width;
+            }
+        }
+        report_.drop_candidates = 0;
+        for (const auto& entry : c.drops) report_.drop_candidates += entry.second.outcome == 0;
+        links = merge(std::move(links));
+        for (const Link& l : links) (l.kind == LinkKind::Jump ? report_.jump_links : report_.drop_links)++;
+        return links;
+    }
+
+    // A take-off point faces a whole edge across a gap: of its clear jumps to that edge, only the
+    // most head-on one is a distinct traversal (the others cross it diagonally). Best first: facing
+    // both edges most squarely, then shortest, then by take-off order.
+    std::vector<Link> straightest_jumps(const LinkBake::Cache& c) {
+        std::vector<const LinkBake::JumpCandidate*> clear;
+        for (const auto& [key, j] : c.jumps) {
+            if (j.sweep.clear) clear.push_back(&j);
+            else ++report_.rejected_clearance;
+        }
+        auto squareness = [&](const LinkBake::JumpCandidate& j) {
+            Vec3 heading = j.link.end - j.link.start;
+            heading.y() = 0.0f;
+            heading.normalize();
+            return std::min(samples_[j.a].outward.dot(heading), samples_[j.b].outward.dot(-heading));
+        };
+        std::vector<std::pair<float, const LinkBake::JumpCandidate*>> ranked;
+        for (const auto* j : clear) ranked.emplace_back(squareness(*j), j);
+        std::sort(ranked.begin(), ranked.end(), [](const auto& x, const auto& y) {
+            if (x.first != y.first) return x.first > y.first;
+            if (x.second->link.requirements.gap != y.second->link.requirements.gap)
+                return x.second->link.requirements.gap < y.second->link.requirements.gap;
+            return std::make_pair(x.second->a, x.second->b) < std::make_pair(y.second->a, y.second->b);
+        });
+        std::unordered_map<uint64_t, bool> taken;  // (take-off point, edge across) already linked
+        std::vector<const LinkBake::JumpCandidate*> kept;
+        for (const auto& [score, j] : ranked) {
+            const uint64_t from_a = pair_key(j->a, samples_[j->b].edge), from_b = pair_key(j->b, samples_[j->a].edge);
+            if (taken[from_a] || taken[from_b]) {
+                ++report_.rejected_duplicate;
+                continue;
+            }
+            taken[from_a] = taken[from_b] = true;
+            kept.push_back(j);
+        }
+        std::sort(kept.begin(), kept.end(), [](const auto* x, const auto* y) { return std::make_pair(x->a, x->b) < std::make_pair(y->a, y->b); });
+        std::vector<Link> links;
+        for (const auto* j : kept) {
+            links.push_back(j->link);
+            links.back().requirements.clearance_width = j->sweep.width;
+        }
+        return links;
+    }
+
+    // One link per traversal. Jumps come first, so a drop that repeats a jump goes; within a kind, a
+    // fixed order of positions decides, so the result does not depend on thread count.
+    std::vector<Link> merge(std::vector<Link> links) {
+        auto order = [](const Link& l) {
+            return std::make_tuple(static_cast<uint32_t>(l.kind), l.start.x(), l.start.z(), l.start.y(), l.end.x(), l.end.z(), l.end.y());
+        };
+        std::stable_sort(links.begin(), links.end(), [&](const Link& a, const Link& b) { return order(a) < order(b); });
+        const float r = s_.merge_distance;
+        auto same_traversal = [&](const Link& a, const Link& b) {
+            if ((a.start - b.start).norm() <= r && (a.end - b.end).norm() <= r) return true;
+            return (a.bidirectional || b.bidirectional) && (a.start - b.end).norm() <= r && (a.end - b.start).norm() <= r;
+        };
+        struct Key {
+            int64_t x, z;
+            bool operator==(const Key& o) const { return x == o.x && z == o.z; }
+        };
+        struct Hash {
+            size_t operator()(const Key& k) const { return size_t(k.x * 73856093) ^ size_t(k.z * 19349663); }
+        };
+        const float cell = std::max(r, 1e-3f);
+        auto key = [&](const Vec3& p) { return Key{int64_t(std::floor(p.x() / cell)), int64_t(std::floor(p.z() / cell))}; };
+        // Kept links indexed by the cells of both their ends, so either orientation is found.
+        std::unordered_map<Key, std::vector<uint32_t>, Hash> by_end;
+        std::vector<Link> kept;
+        for (const Link& l : links) {
+            bool duplicate = false;
+            const Key k = key(l.start);
+            for (int64_t dz = -1; dz <= 1 && !duplicate; ++dz)
+                for (int64_t dx = -1; dx <= 1 && !duplicate; ++dx) {
+                    const auto it = by_end.find(Key{k.x + dx, k.z + dz});
+                    if (it == by_end.end()) continue;
+                    for (uint32_t j : it->second)
+                        if (same_traversal(kept[j], l)) {
+                            duplicate = true;
+                            break;
+                        }
+                }
+            if (duplicate) {
+                ++report_.rejected_duplicate;
+                continue;
+            }
+            const auto index = static_cast<uint32_t>(kept.size());
+            by_end[key(l.start)].push_back(index);
+            if (!(key(l.end) == key(l.start))) by_end[key(l.end)].push_back(index);
+            kept.push_back(l);
+        }
+        return kept;
+    }
+
+    const NavMesh& mesh_;
+    const std::vector<EdgeSample>& samples_;
+    const LinkSettings& s_;
+    CandidateSearch search_;
+    const LinkBake::Cache& old_;
+    const Aabb* box_;
+    const Level& level_;
+    TaskSystem& tasks_;
+    BakeReport& report_;
+    BakeProgress progress_;
+    Body body_;
+};
+
+}  // namespace
+
+LinkBake::LinkBake(std::shared_ptr<const NavMesh> navmesh, const LinkSettings& settings, CandidateSearch search)
+    : navmesh_(std::move(navmesh)), settings_(settings), search_(search) {
+    validate(settings_, "settings->");
+}
+
+std::vector<Link> LinkBake::run(const Level& level, TaskSystem& tasks, BakeReport& report, BakeProgress progress) {
+    std::lock_guard lock(mutex_);
+    return bake(nullptr, level, tasks, report, progress);
+}
+
+std::vector<Link> LinkBake::update(const Aabb& box, const Level& level, TaskSystem& tasks, BakeReport& report,
+                                   BakeProgress progress) {
+    std::lock_guard lock(mutex_);
+    return bake(baked_ ? &box : nullptr, level, tasks, report, progress);
+}
+
+std::vector<Link> LinkBake::bake(const Aabb* box, const Level& level, TaskSystem& tasks, BakeReport& report,
+                                 BakeProgress progress) {
+    Stopwatch total, stage;
+    report = BakeReport{};
+    if (!progress(0.0f, "edges")) fail(ErrorCode::Cancelled, "the bake was cancelled during 'edges'");
+    if (!baked_) sampling_ = sample_edges(*navmesh_, settings_);
+    report.edges = sampling_.edges;
+    report.groups = sampling_.groups;
+    report.samples = static_cast<uint32_t>(sampling_.samples.size());
+    report.milliseconds_edges = stage.lap();
+
+    const Cache empty;
+    Cache next;
+    std::vector<Link> links =
+        Baker(*navmesh_, sampling_, settings_, search_, baked_ ? cache_ : empty, box, level, tasks, report, progress).run(next);
+    if (!progress(1.0f, "done")) fail(ErrorCode::Cancelled, "the bake was cancelled at its end");
+    cache_ = std::move(next);  // only a bake that finished replaces the cache
+    baked_ = true;
+    report.milliseconds_total = total.lap();
+    return links;
+}
+
+void LinkBakes::set(Handle navmesh, std::shared_ptr<LinkBake> bake) {
+    std::lock_guard lock(mutex_);
+    bakes_[key(navmesh)] = std::move(bake);
+}
+
+std::shared_ptr<LinkBake> LinkBakes::get(Handle navmesh) const {
+    std::lock_guard lock(mutex_);
+    const auto it = bakes_.find(key(navmesh));
+    return it == bakes_.end() ? nullptr : it->second;
+}
+
+void LinkBakes::remove(Handle navmesh) {
+    std::lock_guard lock(mutex_);
+    bakes_.erase(key(navmesh));
+}
+
+}  // namespace nl

@@ -1,0 +1,89 @@
+// A bake of one navmesh's links that remembers what every ray looked at, so that after the level
+// changes inside a box only the probes and sweeps whose bounds touch that box are cast again.
+//
+// Stages: samples (navmesh only) -> take-off probes -> jump candidates (geometry-free constraints,
+// recomputed every time: cheap) with their arc sweeps -> drop probes with their fall sweeps ->
+// selection and merge (no rays, over everything cached). Because the last two steps always run over
+// the whole cache, an update gives exactly the links a full bake would.
+#pragma once
+
+#include <memory>
+#include <mutex>
+#include <unordered_map>
+#include <vector>
+
+#include "links/edge_samples.h"
+#include "links/link_generator.h"
+
+namespace nl {
+
+class LinkBake {
+public:
+    LinkBake(std::shared_ptr<const NavMesh> navmesh, const LinkSettings& settings, CandidateSearch search);
+
+    // Casts everything.
+    std::vector<Link> run(const Level& level, TaskSystem& tasks, BakeReport& report, BakeProgress progress);
+    // Casts again what geometry inside `box` can have changed. Throws (Cancelled, ...) leaving the
+    // bake as it was.
+    std::vector<Link> update(const Aabb& box, const Level& level, TaskSystem& tasks, BakeReport& report,
+                             BakeProgress progress);
+
+    const NavMesh& navmesh() const { return *navmesh_; }
+
+    struct TakeoffState {
+        bool valid = false;
+        uint8_t rejected = 0;  // 1: wall between the edge and the rim, 2: no rim (ground a step below)
+        float ground_y = 0.0f;
+        float rim = 0.0f;
+        Aabb bounds;           // everything its probes touched
+    };
+    struct Sweep {
+        bool clear = false;
+        float width = 0.0f;    // widest body found clear (2, 3 or 4 agent radii)
+        Aabb bounds;           // the widest sweep's reach
+    };
+    struct JumpCandidate {
+        uint32_t a = 0, b = 0;  // take-off samples
+        Link link;
+        Sweep sweep;
+    };
+    struct DropProbe {
+        uint8_t outcome = 0;    // 0: landed, 1: no landing, 2: too shallow or too deep
+        Aabb bounds;            // the probe ray
+        Link link;
+        std::vector<Vec3> fall;
+        Sweep sweep;
+    };
+    struct Cache {
+        std::vector<TakeoffState> takeoffs;                 // by sample
+        std::unordered_map<uint64_t, JumpCandidate> jumps;  // by (a, b)
+        std::unordered_map<uint64_t, DropProbe> drops;      // by (sample, angle)
+    };
+
+private:
+    std::vector<Link> bake(const Aabb* box, const Level& level, TaskSystem& tasks, BakeReport& report,
+                           BakeProgress progress);
+
+    std::shared_ptr<const NavMesh> navmesh_;
+    LinkSettings settings_;
+    CandidateSearch search_;
+    EdgeSampling sampling_;
+    Cache cache_;
+    bool baked_ = false;
+    std::mutex mutex_;  // one bake or update at a time
+};
+
+// The last bake of each navmesh of a world, kept for updates.
+class LinkBakes {
+public:
+    void set(Handle navmesh, std::shared_ptr<LinkBake> bake);
+    std::shared_ptr<LinkBake> get(Handle navmesh) const;  // null if the navmesh was never baked
+    void remove(Handle navmesh);
+
+private:
+    static uint64_t key(Handle h) { return (uint64_t(h.index1) << 32) | h.generation; }
+    mutable std::mutex mutex_;
+    std::unordered_map<uint64_t, std::shared_ptr<LinkBake>> bakes_;
+};
+
+}  // namespace nl

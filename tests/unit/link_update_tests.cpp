@@ -1,0 +1,165 @@
+// Updating links after the level changes in a box gives exactly what a full generation gives, and
+// casts far fewer rays.
+#include <doctest/doctest.h>
+#include <navlink/navlink.h>
+
+#include <string>
+#include <vector>
+
+#include "level_generator.h"
+
+using nl::levelgen::Box;
+
+namespace {
+
+struct Scene {
+    nl_world* world = nullptr;
+    nl_navmesh_id navmesh{};
+    nl::levelgen::GeneratedLevel level = nl::levelgen::generate_default_level(4);
+
+    Scene() {
+        REQUIRE(nl_world_create(nullptr, &world) == NL_STATUS_SUCCESS);
+        add_boxes(level, 0);
+        const nl_navmesh_build_def build = nl_default_navmesh_build_def();
+        REQUIRE(nl_navmesh_build(world, &build, &navmesh) == NL_STATUS_SUCCESS);
+        nl_bake_report report = bake_full();
+        full_rays = report.rays_cast;
+    }
+    ~Scene() { nl_world_destroy(world); }
+
+    nl_mesh_id add_boxes(const nl::levelgen::GeneratedLevel& boxes, uint32_t flags) {
+        nl_mesh_def def = nl_default_mesh_def();
+        def.vertices = boxes.positions.data();
+        def.vertex_count = boxes.vertex_count();
+        def.indices = boxes.indices.data();
+        def.triangle_count = boxes.triangle_count();
+        def.flags = flags;
+        nl_mesh_id id{};
+        REQUIRE(nl_mesh_add(world, &def, &id) == NL_STATUS_SUCCESS);
+        return id;
+    }
+    nl_bake_report bake_full() {
+        nl_bake_report report{};
+        report.size = sizeof report;
+        REQUIRE(nl_navmesh_generate_links(world, navmesh, nullptr, nullptr, nullptr, &report) == NL_STATUS_SUCCESS);
+        return report;
+    }
+    nl_bake_report update(const Box& box) {
+        nl_bake_report report{};
+        report.size = sizeof report;
+        REQUIRE_MESSAGE(nl_navmesh_update_links_in_box(world, navmesh, box.min, box.max, nullptr, nullptr, &report) ==
+                            NL_STATUS_SUCCESS,
+                        nl_get_last_error_message());
+        return report;
+    }
+    std::vector<nl_link> links() const {
+        uint32_t count = 0;
+        nl_navmesh_get_links(world, navmesh, nullptr, 0, &count);
+        std::vector<nl_link> out(count);
+        REQUIRE(nl_navmesh_get_links(world, navmesh, out.data(), count, &count) == NL_STATUS_SUCCESS);
+        return out;
+    }
+    // Updates in `box`, then checks the result against a full generation of the same state.
+    void check_update_equals_full(const Box& box, const std::string& what) {
+        INFO(what);
+        const nl_bake_report partial = update(box);
+        const auto updated = links();
+        const nl_bake_report full = bake_full();
+        const auto reference = links();
+        REQUIRE(updated.size() == reference.size());
+        for (size_t i = 0; i < updated.size(); ++i) {
+            CHECK(updated[i].kind == reference[i].kind);
+            CHECK(updated[i].bidirectional == reference[i].bidirectional);
+            CHECK(updated[i].requirements.clearance_width == reference[i].requirements.clearance_width);
+            for (int k = 0; k < 3; ++k) {
+                CHECK(updated[i].start[k] == reference[i].start[k]);
+                CHECK(updated[i].end[k] == reference[i].end[k]);
+            }
+        }
+        CHECK(partial.jump_links == full.jump_links);
+        CHECK(partial.drop_links == full.drop_links);
+        CHECK(partial.rejected_clearance == full.rejected_clearance);
+        CHECK(partial.rejected_wall == full.rejected_wall);
+        MESSAGE(what, ": update cast ", partial.rays_cast, " rays, a full generation ", full.rays_cast);
+        CHECK(partial.rays_cast * 3 < full.rays_cast);
+    }
+
+    uint64_t full_rays = 0;
+};
+
+Box grown(const Box& b, float by) {
+    return Box{{b.min[0] - by, b.min[1] - by, b.min[2] - by}, {b.max[0] + by, b.max[1] + by, b.max[2] + by}};
+}
+
+}  // namespace
+
+TEST_CASE("a wall put across a gap, then taken away: updates equal full generations") {
+    Scene s;
+    const size_t before = s.links().size();
+    // The first gap lies between the first two platforms (boxes 0 and 1 of the default level).
+    const float gap_start = s.level.boxes[0].max[0], gap_end = s.level.boxes[1].min[0];
+    const float middle = 0.5f * (gap_start + gap_end);
+    nl::levelgen::GeneratedLevel wall;
+    const Box wall_box{{middle - 0.2f, -6.0f, -0.5f}, {middle + 0.2f, 4.0f, 6.5f}};
+    wall.add_box(wall_box);
+    const nl_mesh_id id = s.add_boxes(wall, 0);
+    // An update that does not look where the wall is keeps the jumps through it: the box matters.
+    const Box elsewhere{{-30, -30, -30}, {-29, -29, -29}};
+    s.update(elsewhere);
+    CHECK(s.links().size() == before);
+    s.check_update_equals_full(wall_box, "wall added");
+    CHECK(s.links().size() < before);  // the jumps over that gap are gone
+
+    REQUIRE(nl_mesh_remove(s.world, id) == NL_STATUS_SUCCESS);
+    s.check_update_equals_full(wall_box, "wall removed");
+    CHECK(s.links().size() == before);
+}
+
+TEST_CASE("a movable crate moved along a platform edge: the update over both places equals a full generation") {
+    Scene s;
+    const Box& platform = s.level.boxes[1];
+    nl::levelgen::GeneratedLevel crate;
+    const Box at_origin{{-0.6f, 0.0f, -0.6f}, {0.6f, 1.8f, 0.6f}};
+    crate.add_box(at_origin);
+    float before[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, platform.min[0] + 0.3f, platform.max[1], 1.5f, 1};
+    float after[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, platform.min[0] + 0.3f, platform.max[1], 4.5f, 1};
+    nl_mesh_def def = nl_default_mesh_def();
+    def.vertices = crate.positions.data();
+    def.vertex_count = crate.vertex_count();
+    def.indices = crate.indices.data();
+    def.triangle_count = crate.triangle_count();
+    def.flags = NL_MESH_MOVABLE;
+    def.transform = before;
+    nl_mesh_id id{};
+    REQUIRE(nl_mesh_add(s.world, &def, &id) == NL_STATUS_SUCCESS);
+    const Box first{{before[12] - 0.6f, before[13], before[14] - 0.6f}, {before[12] + 0.6f, before[13] + 1.8f, before[14] + 0.6f}};
+    s.check_update_equals_full(first, "crate placed");
+
+    REQUIRE(nl_mesh_set_transform(s.world, id, after) == NL_STATUS_SUCCESS);
+    const Box both{{first.min[0], first.min[1], first.min[2]}, {first.max[0], first.max[1], after[14] + 0.6f}};
+    s.check_update_equals_full(both, "crate moved");
+}
+
+TEST_CASE("an update needs a prior generation and a proper box; a far-away change casts almost nothing") {
+    Scene s;
+    nl::levelgen::GeneratedLevel far;
+    const Box far_box{{200, 0, 200}, {201, 1, 201}};
+    far.add_box(far_box);
+    s.add_boxes(far, 0);
+    const nl_bake_report report = s.update(grown(far_box, 0.1f));
+    CHECK(report.rays_cast == 0);
+    CHECK(report.jump_links + report.drop_links == s.links().size());
+
+    const float bad_min[3] = {1, 1, 1}, bad_max[3] = {0, 0, 0};
+    CHECK(nl_navmesh_update_links_in_box(s.world, s.navmesh, bad_min, bad_max, nullptr, nullptr, nullptr) ==
+          (NL_STATUS_FAILURE | NL_STATUS_INVALID_ARGUMENT));
+    CHECK(nl_navmesh_update_links_in_box(s.world, s.navmesh, nullptr, bad_max, nullptr, nullptr, nullptr) ==
+          (NL_STATUS_FAILURE | NL_STATUS_INVALID_ARGUMENT));
+
+    // A navmesh never generated: nothing to update.
+    nl_navmesh_id other{};
+    const nl_navmesh_build_def build = nl_default_navmesh_build_def();
+    REQUIRE(nl_navmesh_build(s.world, &build, &other) == NL_STATUS_SUCCESS);
+    CHECK(nl_navmesh_update_links_in_box(s.world, other, far_box.min, far_box.max, nullptr, nullptr, nullptr) ==
+          (NL_STATUS_FAILURE | NL_STATUS_NOT_FOUND));
+}
