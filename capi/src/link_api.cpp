@@ -7,6 +7,7 @@
 #include "entry_guard.h"
 #include "host_input.h"
 #include "io/link_json.h"
+#include <nlohmann/json.hpp>
 #include "links/link_bake.h"
 #include "world.h"
 
@@ -21,7 +22,7 @@ using nl::capi::to_id;
 namespace {
 
 constexpr size_t kLinkDefFirstSize = offsetof(nl_link_def, requirements) + sizeof(nl_link_requirements);
-constexpr size_t kSettingsFirstSize = offsetof(nl_link_settings, arc_segments) + sizeof(uint32_t);
+constexpr size_t kSettingsFirstSize = offsetof(nl_link_settings, plugin_settings_json_length) + sizeof(size_t);
 constexpr size_t kReportFirstSize = offsetof(nl_bake_report, milliseconds_total) + sizeof(double);
 constexpr size_t kMaxDropAngles = sizeof(nl_link_settings::drop_angles) / sizeof(float);
 constexpr float kEndReach = 1.0f;  // how far a manual link's end may be from its navmesh
@@ -162,6 +163,7 @@ nl_bake_report to_c(const nl::BakeReport& r) {
     c.drop_candidates = r.drop_candidates;
     c.jump_links = r.jump_links;
     c.drop_links = r.drop_links;
+    c.plugin_links = r.plugin_links;
     c.rejected_wall = r.rejected_wall;
     c.rejected_not_ledge = r.rejected_not_ledge;
     c.rejected_distance = r.rejected_distance;
@@ -178,6 +180,68 @@ nl_bake_report to_c(const nl::BakeReport& r) {
     c.milliseconds_merge = r.milliseconds_merge;
     c.milliseconds_total = r.milliseconds_total;
     return c;
+}
+
+// What a link-kind plugin hands back through the sink: its links, validated as manual links are.
+struct PluginLinkSink {
+    const nl::NavMesh* mesh = nullptr;
+    nl_link_kind kind = 0;
+    std::vector<nl::Link> links;
+    std::string error;
+
+    static nl_status receive(void* context, const nl_link_def* def) {
+        auto& self = *static_cast<PluginLinkSink*>(context);
+        try {
+            require(def, "link");
+            if (def->kind != self.kind)
+                fail(ErrorCode::InvalidArgument, "def->kind is ", def->kind, ", not the plugin's kind ", self.kind);
+            nl::Link link = link_from_def(*def, *self.mesh);
+            link.generated = true;
+            self.links.push_back(link);
+            return NL_STATUS_SUCCESS;
+        } catch (const std::exception& e) {
+            if (self.error.empty()) self.error = e.what();
+            return NL_STATUS_FAILURE | NL_STATUS_INVALID_ARGUMENT;
+        }
+    }
+};
+
+// The links of every loaded link-kind plugin for a navmesh, with each plugin's own settings taken
+// from the JSON object keyed by kind name. Throws Internal naming a plugin that failed.
+std::vector<nl::Link> plugin_links(nl_world& w, nl_navmesh_id navmesh, const nl::NavMesh& mesh,
+                                   const nl_link_settings* settings, uint32_t& count) {
+    nlohmann::json all = nlohmann::json::object();
+    if (settings && settings->plugin_settings_json) {
+        try {
+            all = nlohmann::json::parse(settings->plugin_settings_json,
+                                        settings->plugin_settings_json + settings->plugin_settings_json_length);
+        } catch (const nlohmann::json::parse_error& e) {
+            fail(ErrorCode::Parse, "settings->plugin_settings_json: ", e.what());
+        }
+        if (!all.is_object()) fail(ErrorCode::InvalidArgument, "settings->plugin_settings_json must be a JSON object");
+    }
+    std::vector<nl::Link> out;
+    for (const nl::capi::Plugin* plugin : w.plugins->link_kinds()) {
+        const nl_link_kind_provider& provider = plugin->info.link_kind;
+        std::string own;
+        if (const auto it = all.find(provider.kind_name); it != all.end()) own = it->dump();
+        PluginLinkSink sink;
+        sink.mesh = &mesh;
+        sink.kind = provider.kind;
+        nl::capi::take_plugin_error();
+        const nl_status status = provider.generate(plugin->info.state, &w.plugins->host(), navmesh,
+                                                   own.empty() ? nullptr : own.c_str(), own.size(),
+                                                   &PluginLinkSink::receive, &sink);
+        const std::string reason = nl::capi::take_plugin_error();
+        if (!sink.error.empty())
+            fail(ErrorCode::Internal, "link-kind plugin '", plugin->name, "' proposed a link that was refused: ", sink.error);
+        if (NL_FAILED(status))
+            throw nl::Error(nl::capi::to_error_code(status),
+                            nl::concat("link-kind plugin '", plugin->name, "': ", reason.empty() ? nl_status_string(status) : reason));
+        out.insert(out.end(), sink.links.begin(), sink.links.end());
+    }
+    count = static_cast<uint32_t>(out.size());
+    return out;
 }
 
 // The host's progress callback as the core's (no callback: never cancel).
@@ -292,9 +356,13 @@ NL_API nl_status nl_navmesh_generate_links(nl_world* world, nl_navmesh_id navmes
             fail(ErrorCode::InvalidArgument, "out_report->size is ", out_report->size, " (set it to sizeof)");
         auto bake = std::make_shared<nl::LinkBake>(mesh, s, nl::CandidateSearch::SpatialGrid);
         nl::BakeReport report;
-        const std::vector<nl::Link> links = bake->run(*w.level, *w.tasks, report, progress_of(progress, user));
+        std::vector<nl::Link> links = bake->run(*w.level, *w.tasks, report, progress_of(progress, user));
+        const std::vector<nl::Link> extra = plugin_links(w, navmesh, *mesh, settings, report.plugin_links);
+        links.insert(links.end(), extra.begin(), extra.end());
         w.links->replace_generated(handle, links);
-        w.bakes->set(handle, std::move(bake));
+        w.bakes->set(handle, std::move(bake), settings && settings->plugin_settings_json
+                                                  ? std::string(settings->plugin_settings_json, settings->plugin_settings_json_length)
+                                                  : std::string());
         if (out_report) nl::capi::write_growable(out_report, to_c(report), kReportFirstSize, "out_report");
     });
 }
@@ -318,7 +386,14 @@ NL_API nl_status nl_navmesh_update_links_in_box(nl_world* world, nl_navmesh_id n
         const std::shared_ptr<nl::LinkBake> bake = w.bakes->get(handle);
         if (!bake) fail(ErrorCode::NotFound, "the navmesh's links were never generated: call nl_navmesh_generate_links first");
         nl::BakeReport report;
-        const std::vector<nl::Link> links = bake->update(box, *w.level, *w.tasks, report, progress_of(progress, user));
+        std::vector<nl::Link> links = bake->update(box, *w.level, *w.tasks, report, progress_of(progress, user));
+        // The plugin settings of the generation being updated.
+        const std::string plugin_json = w.bakes->plugin_settings(handle);
+        nl_link_settings plugin_settings = nl_default_link_settings();
+        plugin_settings.plugin_settings_json = plugin_json.empty() ? nullptr : plugin_json.c_str();
+        plugin_settings.plugin_settings_json_length = plugin_json.size();
+        const std::vector<nl::Link> extra = plugin_links(w, navmesh, *mesh, &plugin_settings, report.plugin_links);
+        links.insert(links.end(), extra.begin(), extra.end());
         w.links->replace_generated(handle, links);
         if (out_report) nl::capi::write_growable(out_report, to_c(report), kReportFirstSize, "out_report");
     });

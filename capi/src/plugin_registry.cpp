@@ -46,10 +46,32 @@ nl_status host_get_level_triangles(void* context, float* vertices, uint32_t vert
     }
 }
 
+nl_status host_boundary_edges(void* context, nl_navmesh_id navmesh, nl_boundary_edge* out, uint32_t capacity,
+                               uint32_t* count) {
+    return nl_navmesh_get_boundary_edges(&world_of(context), navmesh, out, capacity, count);
+}
+nl_status host_navmesh_info(void* context, nl_navmesh_id navmesh, nl_navmesh_info* out) {
+    return nl_navmesh_get_info(&world_of(context), navmesh, out);
+}
+nl_status host_find_nearest(void* context, nl_navmesh_id navmesh, const float* points, uint32_t count,
+                            const float* half_extents, nl_nav_point* out) {
+    return nl_navmesh_find_nearest(&world_of(context), navmesh, points, count, half_extents, out);
+}
+nl_status host_cast_rays(void* context, const nl_ray* rays, uint32_t count, nl_ray_hit* hits) {
+    return nl_world_cast_rays(&world_of(context), rays, count, hits);
+}
+nl_status host_segments_blocked(void* context, const nl_segment* segments, uint32_t count, uint8_t* blocked) {
+    return nl_world_segments_blocked(&world_of(context), segments, count, blocked);
+}
+
 void check_description(const nl_plugin_info& info, const std::string& origin) {
     if (!info.name || !*info.name) fail(ErrorCode::InvalidArgument, "plugin ", origin, " has no name");
     if ((info.kinds & NL_PLUGIN_NAVMESH_BUILDER) && !info.navmesh_builder.build)
         fail(ErrorCode::InvalidArgument, "plugin '", info.name, "' says it builds navmeshes but gives no build function");
+    if ((info.kinds & NL_PLUGIN_LINK_KIND) &&
+        (!info.link_kind.generate || !info.link_kind.kind_name || info.link_kind.kind < NL_LINK_FIRST_PLUGIN_KIND))
+        fail(ErrorCode::InvalidArgument, "plugin '", info.name,
+             "' says it provides a link kind but its kind is below NL_LINK_FIRST_PLUGIN_KIND or has no name or generate function");
     if (info.kinds & ~(NL_PLUGIN_NAVMESH_BUILDER | NL_PLUGIN_LINK_KIND | NL_PLUGIN_PATH_MODIFIER))
         fail(ErrorCode::InvalidArgument, "plugin '", info.name, "' has unknown kinds 0x", std::hex, info.kinds);
 }
@@ -69,6 +91,11 @@ PluginRegistry::PluginRegistry(nl_world& world, uint32_t handle_tag) : plugins_(
     host_.log = host_log;
     host_.set_error = host_set_error;
     host_.get_level_triangles = host_get_level_triangles;
+    host_.navmesh_get_boundary_edges = host_boundary_edges;
+    host_.navmesh_get_info = host_navmesh_info;
+    host_.navmesh_find_nearest = host_find_nearest;
+    host_.cast_rays = host_cast_rays;
+    host_.segments_blocked = host_segments_blocked;
 }
 
 PluginRegistry::~PluginRegistry() {
@@ -111,8 +138,13 @@ Handle PluginRegistry::add(nl_plugin_entry_fn* entry, void* library, bool builti
 
         std::unique_lock lock(mutex_);
         for (Handle h : order_) {
-            if ((*plugins_.find(h))->name == plugin->name)
+            const Plugin& other = **plugins_.find(h);
+            if (other.name == plugin->name)
                 fail(ErrorCode::InvalidArgument, "a plugin named '", plugin->name, "' is already loaded");
+            if ((info.kinds & NL_PLUGIN_LINK_KIND) && (other.info.kinds & NL_PLUGIN_LINK_KIND) &&
+                other.info.link_kind.kind == info.link_kind.kind)
+                fail(ErrorCode::InvalidArgument, "plugin '", plugin->name, "' claims link kind ", info.link_kind.kind,
+                     ", which plugin '", other.name, "' has");
         }
         const Handle h = plugins_.insert(std::move(plugin));
         order_.push_back(h);
@@ -158,6 +190,16 @@ const Plugin* PluginRegistry::find_navmesh_builder(const std::string& name) cons
         if (p.name == name && (p.info.kinds & NL_PLUGIN_NAVMESH_BUILDER)) return &p;
     }
     return nullptr;
+}
+
+std::vector<const Plugin*> PluginRegistry::link_kinds() const {
+    std::shared_lock lock(mutex_);
+    std::vector<const Plugin*> out;
+    for (Handle h : order_) {
+        const Plugin& p = **plugins_.find(h);
+        if (p.info.kinds & NL_PLUGIN_LINK_KIND) out.push_back(&p);
+    }
+    return out;
 }
 
 std::vector<Handle> PluginRegistry::handles() const {

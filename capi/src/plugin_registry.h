@@ -37,6 +37,7 @@ public:
 
     const Plugin& get(Handle h) const;
     const Plugin* find_navmesh_builder(const std::string& name) const;
+    std::vector<const Plugin*> link_kinds() const;  // in registration order
     std::vector<Handle> handles() const;
     const nl_plugin_host& host() const { return host_; }
 

@@ -158,7 +158,7 @@ std::vector<Link> links_from_json(std::string_view text) {
         l.start_polygon = static_cast<uint32_t>(std::min<uint64_t>(r.whole("start_polygon", UINT32_MAX), UINT32_MAX));
         l.end_polygon = static_cast<uint32_t>(std::min<uint64_t>(r.whole("end_polygon", UINT32_MAX), UINT32_MAX));
         if (const Json* requirements = r.find("requires")) {
-            const Reader q(*requirements, r.path() + ".requirements");
+            const Reader q(*requirements, r.path() + ".requires");
             l.requirements.gap = q.number("gap", 0.0f);
             l.requirements.rise = q.number("rise", 0.0f);
             l.requirements.drop = q.number("drop", 0.0f);

@@ -155,15 +155,16 @@ private:
         }
     }
 
-    // The pairs of take-off points within max_link_distance, each once (i < j), in order.
-    std::vector<std::pair<uint32_t, uint32_t>> nearby_pairs(const std::vector<uint32_t>& valid) const {
-        std::vector<std::pair<uint32_t, uint32_t>> pairs;
-        const float reach = s_.max_link_distance;
+    // Calls visit(i, j) for every pair of take-off points (i < j, in order) within twice
+    // max_link_distance: the pairs beyond max_link_distance are only looked at so the report can say
+    // that two facing edges were too far apart.
+    void for_each_nearby_pair(const std::vector<uint32_t>& valid, FunctionRef<void(uint32_t, uint32_t)> visit) const {
+        const float reach = 2.0f * s_.max_link_distance;
         if (search_ == CandidateSearch::AllPairs) {
             for (size_t x = 0; x < valid.size(); ++x)
                 for (size_t y = x + 1; y < valid.size(); ++y)
-                    if ((samples_[valid[x]].point - samples_[valid[y]].point).norm() <= reach) pairs.emplace_back(valid[x], valid[y]);
-            return pairs;
+                    if ((samples_[valid[x]].point - samples_[valid[y]].point).norm() <= reach) visit(valid[x], valid[y]);
+            return;
         }
         // Cells as wide as the reach: a partner is in the 27 cells around a point.
         struct Key {
@@ -178,21 +179,22 @@ private:
         };
         std::unordered_map<Key, std::vector<uint32_t>, Hash> cells;
         for (uint32_t i : valid) cells[key(samples_[i].point)].push_back(i);
+        std::vector<uint32_t> partners;
         for (uint32_t i : valid) {
             const Vec3& p = samples_[i].point;
             const Key k = key(p);
-            const size_t first = pairs.size();
+            partners.clear();
             for (int64_t dz = -1; dz <= 1; ++dz)
                 for (int64_t dy = -1; dy <= 1; ++dy)
                     for (int64_t dx = -1; dx <= 1; ++dx) {
                         const auto it = cells.find(Key{k.x + dx, k.y + dy, k.z + dz});
                         if (it == cells.end()) continue;
                         for (uint32_t j : it->second)
-                            if (j > i && (samples_[j].point - p).norm() <= reach) pairs.emplace_back(i, j);
+                            if (j > i && (samples_[j].point - p).norm() <= reach) partners.push_back(j);
                     }
-            std::sort(pairs.begin() + first, pairs.end());
+            std::sort(partners.begin(), partners.end());
+            for (uint32_t j : partners) visit(i, j);
         }
-        return pairs;
     }
 
     // The constraints that need no ray: distance, rise, facing, incline. Both directions at once:
@@ -201,7 +203,15 @@ private:
         const Vec3 d = b.point - a.point;
         const Vec3 flat(d.x(), 0.0f, d.z());
         const float distance = d.norm(), gap = flat.norm();
-        if (gap < s_.min_link_distance || distance > s_.max_link_distance) {
+        const bool is_short = distance < s_.short_link_distance;
+        const float forward = std::cos((is_short ? s_.permissive_forward_angle : s_.strict_forward_angle) * kDegrees);
+        const bool facing = gap > 0.0f && a.outward.dot(flat / gap) >= forward && b.outward.dot(-flat / gap) >= forward;
+        if (distance > s_.max_link_distance) {
+            // Only edges that face each other are worth reporting as too far apart.
+            if (facing) ++report_.rejected_distance;
+            return false;
+        }
+        if (gap < s_.min_link_distance) {
             ++report_.rejected_distance;
             return false;
         }
@@ -209,12 +219,9 @@ private:
             ++report_.rejected_rise;
             return false;
         }
-        const bool is_short = distance < s_.short_link_distance;
-        const float forward = std::cos((is_short ? s_.permissive_forward_angle : s_.strict_forward_angle) * kDegrees);
         const float incline = std::sin((is_short ? s_.permissive_incline_angle : s_.strict_incline_angle) * kDegrees);
-        const Vec3 heading = flat / gap, direction = d / distance;
-        if (a.outward.dot(heading) < forward || b.outward.dot(-heading) < forward ||
-            std::fabs(direction.dot(a.normal)) > incline || std::fabs(direction.dot(b.normal)) > incline) {
+        const Vec3 direction = d / distance;
+        if (!facing || std::fabs(direction.dot(a.normal)) > incline || std::fabs(direction.dot(b.normal)) > incline) {
             ++report_.rejected_angle;
             return false;
         }
@@ -270,22 +277,21 @@ private:
         for (uint32_t i = 0; i < samples_.size(); ++i)
             if (next.takeoffs[i].valid) valid.push_back(i);
         report_.takeoff_points = static_cast<uint32_t>(valid.size());
-        const auto pairs = nearby_pairs(valid);
         std::vector<uint64_t> redo;
         std::vector<std::vector<Vec3>> arcs;
-        for (size_t k = 0; k < pairs.size(); ++k) {
-            if ((k & 1023) == 0) step(0.15f + 0.2f * float(k) / pairs.size(), "jumps");
-            const auto [a, b] = pairs[k];
-            if (!jump_constraints_hold(samples_[a], samples_[b])) continue;
+        size_t visited = 0;
+        for_each_nearby_pair(valid, [&](uint32_t a, uint32_t b) {
+            if ((++visited & 4095) == 0) step(0.15f + 0.2f * float(a) / samples_.size(), "jumps");
+            if (!jump_constraints_hold(samples_[a], samples_[b])) return;
             if (!on_navmesh(samples_[b].point)) {
                 ++report_.rejected_no_landing;
-                continue;
+                return;
             }
             const uint64_t key = pair_key(a, b);
             const auto cached = old_.jumps.find(key);
             if (cached != old_.jumps.end() && !touches(cached->second.sweep.bounds, box_)) {
                 next.jumps.emplace(key, cached->second);
-                continue;
+                return;
             }
             const JumpArc arc = jump_arc(samples_[a].point, samples_[b].point, s_.jump_arc_height, s_.arc_segments);
             LinkBake::JumpCandidate c;
@@ -303,7 +309,7 @@ private:
             next.jumps.emplace(key, c);
             redo.push_back(key);
             arcs.push_back(arc.points);
-        }
+        });
         report_.jump_candidates = static_cast<uint32_t>(next.jumps.size());
         step(0.35f, "jump clearance");
         std::vector<const std::vector<Vec3>*> paths;
@@ -564,15 +570,21 @@ std::vector<Link> LinkBake::bake(const Aabb* box, const Level& level, TaskSystem
     return links;
 }
 
-void LinkBakes::set(Handle navmesh, std::shared_ptr<LinkBake> bake) {
+void LinkBakes::set(Handle navmesh, std::shared_ptr<LinkBake> bake, std::string plugin_settings_json) {
     std::lock_guard lock(mutex_);
-    bakes_[key(navmesh)] = std::move(bake);
+    bakes_[key(navmesh)] = Entry{std::move(bake), std::move(plugin_settings_json)};
 }
 
 std::shared_ptr<LinkBake> LinkBakes::get(Handle navmesh) const {
     std::lock_guard lock(mutex_);
     const auto it = bakes_.find(key(navmesh));
-    return it == bakes_.end() ? nullptr : it->second;
+    return it == bakes_.end() ? nullptr : it->second.bake;
+}
+
+std::string LinkBakes::plugin_settings(Handle navmesh) const {
+    std::lock_guard lock(mutex_);
+    const auto it = bakes_.find(key(navmesh));
+    return it == bakes_.end() ? std::string() : it->second.plugin_settings_json;
 }
 
 void LinkBakes::remove(Handle navmesh) {

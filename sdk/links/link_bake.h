@@ -9,6 +9,7 @@
 
 #include <memory>
 #include <mutex>
+#include <string>
 #include <unordered_map>
 #include <vector>
 
@@ -73,17 +74,22 @@ private:
     std::mutex mutex_;  // one bake or update at a time
 };
 
-// The last bake of each navmesh of a world, kept for updates.
+// The last bake of each navmesh of a world, kept for updates, with the plugin settings it ran with.
 class LinkBakes {
 public:
-    void set(Handle navmesh, std::shared_ptr<LinkBake> bake);
+    void set(Handle navmesh, std::shared_ptr<LinkBake> bake, std::string plugin_settings_json);
     std::shared_ptr<LinkBake> get(Handle navmesh) const;  // null if the navmesh was never baked
+    std::string plugin_settings(Handle navmesh) const;
     void remove(Handle navmesh);
 
 private:
+    struct Entry {
+        std::shared_ptr<LinkBake> bake;
+        std::string plugin_settings_json;
+    };
     static uint64_t key(Handle h) { return (uint64_t(h.index1) << 32) | h.generation; }
     mutable std::mutex mutex_;
-    std::unordered_map<uint64_t, std::shared_ptr<LinkBake>> bakes_;
+    std::unordered_map<uint64_t, Entry> bakes_;
 };
 
 }  // namespace nl

@@ -27,6 +27,7 @@ struct BakeReport {
     uint32_t drop_candidates = 0;    // landings found below take-off points, tested further
     uint32_t jump_links = 0;
     uint32_t drop_links = 0;
+    uint32_t plugin_links = 0;  // filled by the caller that runs link-kind plugins
     // Rejections, by reason.
     uint32_t rejected_wall = 0;          // take-off point inside a wall
     uint32_t rejected_not_ledge = 0;     // walkable ground a step below the take-off point

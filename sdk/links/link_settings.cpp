@@ -1,6 +1,7 @@
 #include "links/link_settings.h"
 
 #include <cmath>
+#include <string>
 
 #include "util/error.h"
 
@@ -34,8 +35,10 @@ void validate(const LinkSettings& s, const char* p) {
     check(s.max_drop_distance > 0.0f && s.max_drop_distance <= 1000.0f, s.max_drop_distance, p, "max_drop_distance",
           "must be in (0, 1000] m");
     if (s.drop_angles.size() > 16) fail(ErrorCode::InvalidArgument, p, "drop_angles has ", s.drop_angles.size(), " entries (at most 16)");
-    for (size_t i = 0; i < s.drop_angles.size(); ++i)
-        check(std::fabs(s.drop_angles[i]) <= 90.0f, s.drop_angles[i], p, "drop_angles[i]", "must be in [-90, 90] degrees");
+    for (size_t i = 0; i < s.drop_angles.size(); ++i) {
+        const std::string name = "drop_angles[" + std::to_string(i) + "]";
+        check(std::fabs(s.drop_angles[i]) <= 90.0f, s.drop_angles[i], p, name.c_str(), "must be in [-90, 90] degrees");
+    }
     check(s.drop_steepness >= 10.0f && s.drop_steepness <= 90.0f, s.drop_steepness, p, "drop_steepness", "must be in [10, 90] degrees");
     check(s.merge_distance >= 0.0f, s.merge_distance, p, "merge_distance", "must be >= 0");
     check(s.clearance_margin >= 0.0f && s.clearance_margin < 0.5f, s.clearance_margin, p, "clearance_margin", "must be in [0, 0.5)");

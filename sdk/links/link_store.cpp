@@ -4,8 +4,13 @@
 
 namespace nl {
 
+void LinkStore::require_live(Handle navmesh) const {
+    if (retired_.count(key(navmesh))) fail_stale("navmesh", navmesh);
+}
+
 Handle LinkStore::add(Handle navmesh, const Link& link) {
     std::unique_lock lock(mutex_);
+    require_live(navmesh);
     const Handle id = links_.insert(Entry{navmesh, link});
     by_navmesh_[key(navmesh)].push_back(id);
     publish(navmesh);
@@ -57,6 +62,7 @@ void LinkStore::erase_where(Handle navmesh, bool generated_only) {
 
 std::vector<Handle> LinkStore::replace_generated(Handle navmesh, const std::vector<Link>& generated) {
     std::unique_lock lock(mutex_);
+    require_live(navmesh);
     erase_where(navmesh, true);
     std::vector<Handle> ids;
     ids.reserve(generated.size());
@@ -73,6 +79,7 @@ std::vector<Handle> LinkStore::replace_generated(Handle navmesh, const std::vect
 
 std::vector<Handle> LinkStore::replace_all(Handle navmesh, const std::vector<Link>& links) {
     std::unique_lock lock(mutex_);
+    require_live(navmesh);
     erase_where(navmesh, false);
     std::vector<Handle> ids;
     auto& list = by_navmesh_[key(navmesh)];
@@ -97,6 +104,7 @@ void LinkStore::remove_navmesh(Handle navmesh) {
     erase_where(navmesh, false);
     by_navmesh_.erase(key(navmesh));
     snapshots_.erase(key(navmesh));
+    retired_.insert(key(navmesh));
 }
 
 void LinkStore::publish(Handle navmesh) {

@@ -7,6 +7,7 @@
 #include <mutex>
 #include <shared_mutex>
 #include <unordered_map>
+#include <unordered_set>
 #include <vector>
 
 #include "links/link.h"
@@ -58,6 +59,10 @@ private:
     SlotMap<Entry> links_;
     std::unordered_map<uint64_t, std::vector<Handle>> by_navmesh_;
     std::unordered_map<uint64_t, std::shared_ptr<const LinkSnapshot>> snapshots_;
+    // Navmeshes removed from the world: a bake that finishes after the removal must not store links
+    // for them. Handles are never reused (generations), so the set only grows with removals.
+    std::unordered_set<uint64_t> retired_;
+    void require_live(Handle navmesh) const;
 };
 
 }  // namespace nl

@@ -2091,9 +2091,9 @@ static void test_plugins_registered(void) {
         CHECK(out.index1 == 77u);
     }
 
-    /* A plugin that provides no builder is registered, but is no builder. */
-    CHECK_OK(nl_plugin_register(world, entry_links_only, &links));
-    CHECK(describe(world, links).kinds == NL_PLUGIN_LINK_KIND);
+    /* A plugin that says it provides a link kind but fills no link-kind table is refused; it is
+       no builder either. */
+    CHECK_INVALID(nl_plugin_register(world, entry_links_only, &links), "link kind");
     def.builder = "c-test-links";
     CHECK_BUILD_FAILS(world, &def, NL_STATUS_NOT_FOUND, "c-test-links");
     {
@@ -2104,7 +2104,7 @@ static void test_plugins_registered(void) {
                    "nl_navmesh_build: an unknown builder's message lists the builders there are");
     }
     CHECK_OK(nl_plugin_register(world, entry_builder_two, &second));
-    CHECK(plugin_count(world) == 4);
+    CHECK(plugin_count(world) == 3);
 
     /* The description's strings are the world's: still there, unchanged, after all of that. */
     CHECK(strcmp(name, "c-test-builder") == 0);

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <string>
 #include <vector>
 
@@ -167,4 +168,97 @@ TEST_CASE("a plugin compiled into the host registers directly, and its errors re
         CHECK(destroyed == 0);
     }
     CHECK(destroyed == 1);  // the world's destruction released the plugin
+}
+
+namespace {
+
+// A 2.5 m block standing on a wide floor: too high to step, low enough to climb.
+struct BlockScene {
+    nl_world* world = nullptr;
+    nl_navmesh_id navmesh{};
+    BlockScene() {
+        REQUIRE(nl_world_create(nullptr, &world) == NL_STATUS_SUCCESS);
+        nl::levelgen::GeneratedLevel level;
+        level.add_box({{-10, -1, -10}, {20, 0, 20}});
+        level.add_box({{0, 0, 0}, {6, 2.5f, 10}});
+        nl_mesh_def def = nl_default_mesh_def();
+        def.vertices = level.positions.data();
+        def.vertex_count = level.vertex_count();
+        def.indices = level.indices.data();
+        def.triangle_count = level.triangle_count();
+        nl_mesh_id mesh{};
+        REQUIRE(nl_mesh_add(world, &def, &mesh) == NL_STATUS_SUCCESS);
+        const nl_navmesh_build_def build = nl_default_navmesh_build_def();
+        REQUIRE(nl_navmesh_build(world, &build, &navmesh) == NL_STATUS_SUCCESS);
+    }
+    ~BlockScene() { nl_world_destroy(world); }
+    std::string generate_error;  // the last error message right after the last generation
+
+    std::vector<nl_link> generate(const char* plugin_json, nl_status expected = NL_STATUS_SUCCESS) {
+        nl_link_settings settings = nl_default_link_settings();
+        settings.plugin_settings_json = plugin_json;
+        settings.plugin_settings_json_length = plugin_json ? std::strlen(plugin_json) : 0;
+        nl_bake_report report{};
+        report.size = sizeof report;
+        CHECK_MESSAGE(nl_navmesh_generate_links(world, navmesh, &settings, nullptr, nullptr, &report) == expected,
+                      nl_get_last_error_message());
+        generate_error = nl_get_last_error_message();
+        uint32_t count = 0;
+        nl_navmesh_get_links(world, navmesh, nullptr, 0, &count);
+        std::vector<nl_link> links(count);
+        nl_navmesh_get_links(world, navmesh, links.data(), count, &count);
+        return links;
+    }
+};
+
+std::vector<nl_link> of_kind(const std::vector<nl_link>& links, nl_link_kind kind) {
+    std::vector<nl_link> out;
+    for (const nl_link& l : links)
+        if (l.kind == kind) out.push_back(l);
+    return out;
+}
+
+}  // namespace
+
+TEST_CASE("the climb link kind, loaded as a plugin, links the foot of a wall to its top") {
+    BlockScene s;
+    CHECK(of_kind(s.generate(nullptr), NL_LINK_FIRST_PLUGIN_KIND).empty());  // not loaded yet
+
+    nl_plugin_id climb{};
+    REQUIRE_MESSAGE(nl_plugin_load(s.world, CLIMB_PLUGIN_PATH, &climb) == NL_STATUS_SUCCESS, last_error());
+    const nl_plugin_description d = describe(s.world, climb);
+    CHECK(d.kinds == NL_PLUGIN_LINK_KIND);
+
+    const auto links = s.generate(nullptr);
+    const auto climbs = of_kind(links, NL_LINK_FIRST_PLUGIN_KIND);
+    REQUIRE(!climbs.empty());
+    CHECK(!of_kind(links, NL_LINK_DROP).empty());  // the built-in kinds are still generated
+    for (const nl_link& l : climbs) {
+        CHECK(l.generated == 1);
+        CHECK(l.bidirectional == 1);
+        CHECK(l.requirements.abilities == 1u);
+        CHECK(l.start[1] < 0.6f);   // on the floor
+        CHECK(l.end[1] > 2.3f);     // on top of the block
+        CHECK(l.requirements.rise == doctest::Approx(l.end[1] - l.start[1]));
+        CHECK(l.cost_modifier == 2.0f);
+        // The top end lies over the block.
+        CHECK(l.end[0] > 0.0f);
+        CHECK(l.end[0] < 6.0f);
+    }
+    // Four sides of a 6 x 10 m block, sampled every metre: about 30 climbs.
+    CHECK(climbs.size() >= 20);
+
+    // Settings reach the plugin: a lower limit than the block has no climb; another ability bit.
+    CHECK(of_kind(s.generate("{\"climb\": {\"max_height\": 2.0}}"), NL_LINK_FIRST_PLUGIN_KIND).empty());
+    for (const nl_link& l : of_kind(s.generate("{\"climb\": {\"ability_bit\": 3}}"), NL_LINK_FIRST_PLUGIN_KIND))
+        CHECK(l.requirements.abilities == 8u);
+
+    // A bad plugin setting fails the generation with the plugin's reason; the links stay as they were.
+    const size_t before = s.generate(nullptr).size();
+    s.generate("{\"climb\": {\"max_hieght\": 2}}", NL_STATUS_FAILURE | NL_STATUS_INVALID_ARGUMENT);
+    CHECK(s.generate_error.find("max_hieght") != std::string::npos);
+    CHECK(s.generate_error.find("link-kind plugin 'climb'") != std::string::npos);
+    uint32_t count = 0;
+    nl_navmesh_get_links(s.world, s.navmesh, nullptr, 0, &count);
+    CHECK(count == before);
 }

@@ -620,6 +620,10 @@ typedef struct nl_link_settings {
     float merge_distance;           /**< Links with both ends this close are one (0.6 m). */
     float clearance_margin;         /**< Fraction of a path left out of the clearance test at each end (0.1). */
     uint32_t arc_segments;          /**< Pieces of a jump arc in the clearance test (12). */
+    const char* plugin_settings_json;   /**< Optional JSON object of link-kind plugins' settings, one
+                                             object per kind name: {"climb": {"max_height": 3}}.
+                                             Borrowed for the call; NULL = none. */
+    size_t plugin_settings_json_length;
 } nl_link_settings;
 
 /** The defaults. Thread-safe; never fails. */
@@ -642,6 +646,7 @@ typedef struct nl_bake_report {
     uint32_t drop_candidates;    /**< Landings found below take-off points. */
     uint32_t jump_links;
     uint32_t drop_links;
+    uint32_t plugin_links;         /**< Links of kinds from link-kind plugins. */
     uint32_t rejected_wall;        /**< Take-off point inside a wall. */
     uint32_t rejected_not_ledge;   /**< Walkable ground a step below the edge: no ledge there. */
     uint32_t rejected_distance;    /**< Too far, too close, a drop too deep or too shallow. */
@@ -663,8 +668,10 @@ typedef struct nl_bake_report {
  *  cancel the bake. Called on the thread that called nl_navmesh_generate_links. */
 typedef int32_t nl_progress_fn(void* user, float fraction, const char* stage);
 
-/** Generates the navmesh's jump and drop links against the level geometry and replaces its generated
- *  links with them; manual links are untouched. `settings` is borrowed (NULL = defaults); `progress`
+/** Generates the navmesh's jump and drop links against the level geometry, and the links of every
+ *  loaded link-kind plugin, and replaces its generated links with them; manual links are untouched.
+ *  A plugin's refused link (a wrong kind, an end off the navmesh) fails the call with INTERNAL_ERROR
+ *  and the plugin's name. `settings` is borrowed (NULL = defaults); `progress`
  *  is optional (`user` is passed back to it); `out_report` is optional (caller-owned, `size` set).
  *  Returns SUCCESS, or a failure with INVALID_HANDLE, INVALID_ARGUMENT (a setting, named),
  *  CANCELLED (progress returned 0: the navmesh's links are as they were), OUT_OF_MEMORY.
@@ -676,8 +683,9 @@ NL_API nl_status nl_navmesh_generate_links(nl_world* world, nl_navmesh_id navmes
  *  can have changed since the navmesh's last generation: call it after meshes were added, removed or
  *  moved there; the box must hold every change (for a moved mesh, its bounds before and after).
  *  Probes and sweeps that touch the box are cast again, everything else is reused, and the result
- *  equals what nl_navmesh_generate_links with the same settings would give now. The navmesh itself
- *  must be the same (a rebuilt navmesh is a new one: generate its links in full).
+ *  equals what nl_navmesh_generate_links with the same settings would give now. Link-kind plugins
+ *  keep no cache: their links are generated again in full. The navmesh itself must be the same (a
+ *  rebuilt navmesh is a new one: generate its links in full).
  *  Returns SUCCESS, or a failure with NOT_FOUND (never generated), INVALID_HANDLE, INVALID_ARGUMENT
  *  (a null, non-finite or inverted box), CANCELLED (nothing changed). Thread-safe. */
 NL_API nl_status nl_navmesh_update_links_in_box(nl_world* world, nl_navmesh_id navmesh, const float* box_min,

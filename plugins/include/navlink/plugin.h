@@ -49,6 +49,16 @@ typedef struct nl_plugin_host {
     nl_status (*get_level_triangles)(void* context, float* vertices, uint32_t vertex_capacity,
                                      uint32_t* out_vertex_count, uint32_t* indices, uint32_t triangle_capacity,
                                      uint32_t* out_triangle_count);
+
+    /* The world's queries, for link-kind plugins; each behaves as the nl_* function of the same name
+       in navlink.h, on the world the plugin is loaded in. */
+    nl_status (*navmesh_get_boundary_edges)(void* context, nl_navmesh_id navmesh, nl_boundary_edge* out_edges,
+                                            uint32_t capacity, uint32_t* out_count);
+    nl_status (*navmesh_get_info)(void* context, nl_navmesh_id navmesh, nl_navmesh_info* out_info);
+    nl_status (*navmesh_find_nearest)(void* context, nl_navmesh_id navmesh, const float* points, uint32_t count,
+                                      const float* half_extents, nl_nav_point* out);
+    nl_status (*cast_rays)(void* context, const nl_ray* rays, uint32_t count, nl_ray_hit* out_hits);
+    nl_status (*segments_blocked)(void* context, const nl_segment* segments, uint32_t count, uint8_t* out_blocked);
 } nl_plugin_host;
 
 /** Receives a built navmesh; the host copies it before returning. */
@@ -64,6 +74,22 @@ typedef struct nl_navmesh_builder {
                        nl_navmesh_sink_fn* sink, void* sink_context);
 } nl_navmesh_builder;
 
+/** Receives one generated link; the host validates and copies it before returning. */
+typedef nl_status nl_link_sink_fn(void* sink_context, const nl_link_def* link);
+
+/** What a link-kind plugin provides: links of a kind of its own, generated with the built-in ones by
+ *  nl_navmesh_generate_links (and again in full by nl_navmesh_update_links_in_box). */
+typedef struct nl_link_kind_provider {
+    nl_link_kind kind;      /**< >= NL_LINK_FIRST_PLUGIN_KIND; unique in the world. */
+    const char* kind_name;  /**< e.g. "climb". Static storage. */
+    /** Proposes links of this kind for `navmesh`, each through `sink` (whose def's kind must be this
+     *  kind). `settings_json` is the object under the kind's name in the generation's plugin settings
+     *  (NULL when there is none). Returns SUCCESS, or a failure whose reason goes to host->set_error. */
+    nl_status (*generate)(void* plugin_state, const nl_plugin_host* host, nl_navmesh_id navmesh,
+                          const char* settings_json, size_t settings_json_length, nl_link_sink_fn* sink,
+                          void* sink_context);
+} nl_link_kind_provider;
+
 /** What a plugin tells the host about itself. The host zero-fills it and sets `size` first. */
 typedef struct nl_plugin_info {
     uint32_t size;                 /**< Set by the host to sizeof(nl_plugin_info). */
@@ -75,6 +101,7 @@ typedef struct nl_plugin_info {
     void* state;                   /**< The plugin's own state, passed to its functions. */
     void (*destroy)(void* state);  /**< Called once when the world is destroyed; may be NULL. */
     nl_navmesh_builder navmesh_builder;
+    nl_link_kind_provider link_kind;  /**< When kinds has NL_PLUGIN_LINK_KIND. */
 } nl_plugin_info;
 
 /** The entry function a plugin exports. Returns SUCCESS after filling `out_info`, or
