@@ -335,11 +335,16 @@ NL_API nl_status nl_link_settings_from_json(const char* json, size_t length, nl_
     return guarded("nl_link_settings_from_json", nullptr, [&] {
         require(settings, "settings");
         if (length > 0) require(json, "json");
-        nl::LinkSettings s = to_core(nl::capi::read_growable(*settings, nl_default_link_settings(), kSettingsFirstSize, "settings"));
+        const nl_link_settings given = nl::capi::read_growable(*settings, nl_default_link_settings(), kSettingsFirstSize, "settings");
+        nl::LinkSettings s = to_core(given);
         nl::apply_settings_json(std::string_view(json ? json : "", length), s);
         if (s.drop_angles.size() > kMaxDropAngles)
             fail(ErrorCode::InvalidArgument, "settings.drop_angles has more than ", kMaxDropAngles, " entries");
-        nl::capi::write_growable(settings, to_c(s), kSettingsFirstSize, "settings");
+        nl_link_settings out = to_c(s);
+        // The plugins' settings are the host's pointer, not the JSON's business.
+        out.plugin_settings_json = given.plugin_settings_json;
+        out.plugin_settings_json_length = given.plugin_settings_json_length;
+        nl::capi::write_growable(settings, out, kSettingsFirstSize, "settings");
     });
 }
 

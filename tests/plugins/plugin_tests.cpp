@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "level_generator.h"
+#include "generated_level_c.h"
 
 namespace {
 
@@ -40,13 +40,7 @@ nl_plugin_description describe(nl_world* world, nl_plugin_id id) {
 // The default level, and how many of its triangles face up within the default max slope.
 uint32_t add_default_level(nl_world* world) {
     const auto level = nl::levelgen::generate_default_level(3);
-    nl_mesh_def def = nl_default_mesh_def();
-    def.vertices = level.positions.data();
-    def.vertex_count = level.vertex_count();
-    def.indices = level.indices.data();
-    def.triangle_count = level.triangle_count();
-    nl_mesh_id id{};
-    REQUIRE(nl_mesh_add(world, &def, &id) == NL_STATUS_SUCCESS);
+    REQUIRE(nl::test::add_generated_level(world, level) == NL_STATUS_SUCCESS);
     uint32_t up = 0;
     for (uint32_t t = 0; t < level.triangle_count(); ++t) {
         const float* a = &level.positions[3 * level.indices[3 * t]];
@@ -181,13 +175,7 @@ struct BlockScene {
         nl::levelgen::GeneratedLevel level;
         level.add_box({{-10, -1, -10}, {20, 0, 20}});
         level.add_box({{0, 0, 0}, {6, 2.5f, 10}});
-        nl_mesh_def def = nl_default_mesh_def();
-        def.vertices = level.positions.data();
-        def.vertex_count = level.vertex_count();
-        def.indices = level.indices.data();
-        def.triangle_count = level.triangle_count();
-        nl_mesh_id mesh{};
-        REQUIRE(nl_mesh_add(world, &def, &mesh) == NL_STATUS_SUCCESS);
+        REQUIRE(nl::test::add_generated_level(world, level) == NL_STATUS_SUCCESS);
         const nl_navmesh_build_def build = nl_default_navmesh_build_def();
         REQUIRE(nl_navmesh_build(world, &build, &navmesh) == NL_STATUS_SUCCESS);
     }

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "level_generator.h"
+#include "generated_level_c.h"
 
 namespace {
 
@@ -17,14 +17,7 @@ struct Fixture {
 
     Fixture() {
         REQUIRE(nl_world_create(nullptr, &world) == NL_STATUS_SUCCESS);
-        const auto level = nl::levelgen::generate_default_level(2);
-        nl_mesh_def def = nl_default_mesh_def();
-        def.vertices = level.positions.data();
-        def.vertex_count = level.vertex_count();
-        def.indices = level.indices.data();
-        def.triangle_count = level.triangle_count();
-        nl_mesh_id mesh{};
-        REQUIRE(nl_mesh_add(world, &def, &mesh) == NL_STATUS_SUCCESS);
+        REQUIRE(nl::test::add_generated_level(world, nl::levelgen::generate_default_level(2)) == NL_STATUS_SUCCESS);
         const nl_navmesh_build_def build = nl_default_navmesh_build_def();
         REQUIRE_MESSAGE(nl_navmesh_build(world, &build, &navmesh) == NL_STATUS_SUCCESS, nl_get_last_error_message());
     }

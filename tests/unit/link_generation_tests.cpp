@@ -5,7 +5,7 @@
 
 #include <sstream>
 
-#include "level_generator.h"
+#include "generated_level_c.h"
 #include "links/link_generator.h"
 #include "world.h"
 
@@ -48,13 +48,7 @@ Baked bake(const std::vector<Box>& boxes, const nl::LinkSettings& settings = {},
     def.worker_count = threads;
     nl_world* world = nullptr;
     REQUIRE(nl_world_create(&def, &world) == NL_STATUS_SUCCESS);
-    nl_mesh_def mesh = nl_default_mesh_def();
-    mesh.vertices = level.positions.data();
-    mesh.vertex_count = level.vertex_count();
-    mesh.indices = level.indices.data();
-    mesh.triangle_count = level.triangle_count();
-    nl_mesh_id mesh_id{};
-    REQUIRE(nl_mesh_add(world, &mesh, &mesh_id) == NL_STATUS_SUCCESS);
+    REQUIRE(nl::test::add_generated_level(world, level) == NL_STATUS_SUCCESS);
     const nl_navmesh_build_def build = nl_default_navmesh_build_def();
     nl_navmesh_id navmesh{};
     REQUIRE_MESSAGE(nl_navmesh_build(world, &build, &navmesh) == NL_STATUS_SUCCESS, nl_get_last_error_message());

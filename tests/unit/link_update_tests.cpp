@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "level_generator.h"
+#include "generated_level_c.h"
 
 using nl::levelgen::Box;
 
@@ -28,14 +28,8 @@ struct Scene {
     ~Scene() { nl_world_destroy(world); }
 
     nl_mesh_id add_boxes(const nl::levelgen::GeneratedLevel& boxes, uint32_t flags) {
-        nl_mesh_def def = nl_default_mesh_def();
-        def.vertices = boxes.positions.data();
-        def.vertex_count = boxes.vertex_count();
-        def.indices = boxes.indices.data();
-        def.triangle_count = boxes.triangle_count();
-        def.flags = flags;
         nl_mesh_id id{};
-        REQUIRE(nl_mesh_add(world, &def, &id) == NL_STATUS_SUCCESS);
+        REQUIRE(nl::test::add_generated_level(world, boxes, flags, nullptr, &id) == NL_STATUS_SUCCESS);
         return id;
     }
     nl_bake_report bake_full() {
@@ -123,15 +117,8 @@ TEST_CASE("a movable crate moved along a platform edge: the update over both pla
     crate.add_box(at_origin);
     float before[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, platform.min[0] + 0.3f, platform.max[1], 1.5f, 1};
     float after[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, platform.min[0] + 0.3f, platform.max[1], 4.5f, 1};
-    nl_mesh_def def = nl_default_mesh_def();
-    def.vertices = crate.positions.data();
-    def.vertex_count = crate.vertex_count();
-    def.indices = crate.indices.data();
-    def.triangle_count = crate.triangle_count();
-    def.flags = NL_MESH_MOVABLE;
-    def.transform = before;
     nl_mesh_id id{};
-    REQUIRE(nl_mesh_add(s.world, &def, &id) == NL_STATUS_SUCCESS);
+    REQUIRE(nl::test::add_generated_level(s.world, crate, NL_MESH_MOVABLE, before, &id) == NL_STATUS_SUCCESS);
     const Box first{{before[12] - 0.6f, before[13], before[14] - 0.6f}, {before[12] + 0.6f, before[13] + 1.8f, before[14] + 0.6f}};
     s.check_update_equals_full(first, "crate placed");
 
