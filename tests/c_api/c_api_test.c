@@ -1676,6 +1676,9 @@ static void test_isolated(void) {
                 "nl_world_segments_blocked: ends at +-3e38 are refused, not a crash");
 }
 
+/* Links: generation, the link store, JSON (c_api_links_test.c). */
+void test_links_all(void);
+
 int main(int argc, char** argv) {
 
     /* First, while this process has no threads (fork() copies only the calling thread). */
@@ -1699,6 +1702,7 @@ int main(int argc, char** argv) {
     test_null_world_everywhere();
     test_edges();
     test_navmesh_all();
+    test_links_all();
     if (argc > 1 && argv[1][0] != '\0') {
         test_dungeon(argv[1]);
     } else {

@@ -123,6 +123,78 @@ _Static_assert(offsetof(nl_plugin_info, abi_version) == 4 && offsetof(nl_plugin_
                "nl_plugin_info on LP64");
 #endif
 
+/* Links. nl_link_id, nl_link_requirements and nl_link have no size field: fixed forever. */
+_Static_assert(sizeof(nl_link_id) == 8 && offsetof(nl_link_id, index1) == 0 && offsetof(nl_link_id, generation) == 4,
+               "nl_link_id");
+_Static_assert(sizeof(nl_link_kind) == 4, "nl_link_kind is a uint32");
+_Static_assert(NL_LINK_JUMP == 1u && NL_LINK_DROP == 2u && NL_LINK_MANUAL == 3u && NL_LINK_FIRST_PLUGIN_KIND == 256u,
+               "link kinds");
+_Static_assert(offsetof(nl_link_requirements, gap) == 0 && offsetof(nl_link_requirements, rise) == 4 &&
+                   offsetof(nl_link_requirements, drop) == 8 && offsetof(nl_link_requirements, clearance_width) == 12 &&
+                   offsetof(nl_link_requirements, abilities) == 16 && sizeof(nl_link_requirements) == 24,
+               "nl_link_requirements layout");
+_Static_assert(offsetof(nl_link, id) == 0 && offsetof(nl_link, navmesh) == 8 && offsetof(nl_link, kind) == 16 &&
+                   offsetof(nl_link, start) == 20 && offsetof(nl_link, end) == 32 && offsetof(nl_link, apex) == 44 &&
+                   offsetof(nl_link, bidirectional) == 56 && offsetof(nl_link, generated) == 57 &&
+                   offsetof(nl_link, enabled) == 58 && offsetof(nl_link, reserved) == 59 &&
+                   offsetof(nl_link, cost_modifier) == 60 && offsetof(nl_link, user_data) == 64 &&
+                   offsetof(nl_link, requirements) == 72 && offsetof(nl_link, start_polygon) == 96 &&
+                   offsetof(nl_link, end_polygon) == 100 && sizeof(nl_link) == 104,
+               "nl_link layout (no hidden padding)");
+/* Growable link structs: only today's offsets are fixed. */
+_Static_assert(offsetof(nl_link_def, size) == 0 && offsetof(nl_link_def, kind) == 4 && offsetof(nl_link_def, start) == 8 &&
+                   offsetof(nl_link_def, end) == 20 && offsetof(nl_link_def, bidirectional) == 32 &&
+                   offsetof(nl_link_def, enabled) == 33 && offsetof(nl_link_def, reserved) == 34 &&
+                   offsetof(nl_link_def, cost_modifier) == 36 && offsetof(nl_link_def, user_data) == 40 &&
+                   offsetof(nl_link_def, requirements) == 48,
+               "nl_link_def");
+_Static_assert(offsetof(nl_link_settings, size) == 0 && offsetof(nl_link_settings, min_edge_length) == 4 &&
+                   offsetof(nl_link_settings, min_group_size) == 8 && offsetof(nl_link_settings, max_group_size) == 12 &&
+                   offsetof(nl_link_settings, sample_spacing) == 16 &&
+                   offsetof(nl_link_settings, falloff_distance) == 20 &&
+                   offsetof(nl_link_settings, max_link_distance) == 24 &&
+                   offsetof(nl_link_settings, min_link_distance) == 28 &&
+                   offsetof(nl_link_settings, short_link_distance) == 32 &&
+                   offsetof(nl_link_settings, max_jump_up) == 36 && offsetof(nl_link_settings, jump_arc_height) == 40 &&
+                   offsetof(nl_link_settings, strict_forward_angle) == 44 &&
+                   offsetof(nl_link_settings, permissive_forward_angle) == 48 &&
+                   offsetof(nl_link_settings, strict_incline_angle) == 52 &&
+                   offsetof(nl_link_settings, permissive_incline_angle) == 56 &&
+                   offsetof(nl_link_settings, max_drop_distance) == 60 &&
+                   offsetof(nl_link_settings, drop_angles) == 64 &&
+                   sizeof(((nl_link_settings*)0)->drop_angles) == 16 * sizeof(float) &&
+                   offsetof(nl_link_settings, drop_angle_count) == 128 &&
+                   offsetof(nl_link_settings, drop_steepness) == 132 &&
+                   offsetof(nl_link_settings, merge_distance) == 136 &&
+                   offsetof(nl_link_settings, clearance_margin) == 140 &&
+                   offsetof(nl_link_settings, arc_segments) == 144,
+               "nl_link_settings");
+_Static_assert(offsetof(nl_bake_report, size) == 0 && offsetof(nl_bake_report, edges) == 4 &&
+                   offsetof(nl_bake_report, groups) == 8 && offsetof(nl_bake_report, samples) == 12 &&
+                   offsetof(nl_bake_report, takeoff_points) == 16 && offsetof(nl_bake_report, jump_candidates) == 20 &&
+                   offsetof(nl_bake_report, drop_candidates) == 24 && offsetof(nl_bake_report, jump_links) == 28 &&
+                   offsetof(nl_bake_report, drop_links) == 32 && offsetof(nl_bake_report, plugin_links) == 36 &&
+                   offsetof(nl_bake_report, rejected_wall) == 40 &&
+                   offsetof(nl_bake_report, rejected_not_ledge) == 44 &&
+                   offsetof(nl_bake_report, rejected_distance) == 48 && offsetof(nl_bake_report, rejected_rise) == 52 &&
+                   offsetof(nl_bake_report, rejected_angle) == 56 &&
+                   offsetof(nl_bake_report, rejected_no_landing) == 60 &&
+                   offsetof(nl_bake_report, rejected_clearance) == 64 &&
+                   offsetof(nl_bake_report, rejected_duplicate) == 68 && offsetof(nl_bake_report, rays_cast) == 72 &&
+                   offsetof(nl_bake_report, milliseconds_edges) == 80 &&
+                   offsetof(nl_bake_report, milliseconds_takeoff) == 88 &&
+                   offsetof(nl_bake_report, milliseconds_jumps) == 96 &&
+                   offsetof(nl_bake_report, milliseconds_drops) == 104 &&
+                   offsetof(nl_bake_report, milliseconds_merge) == 112 &&
+                   offsetof(nl_bake_report, milliseconds_total) == 120,
+               "nl_bake_report (no hidden padding)");
+#if UINTPTR_MAX == 0xffffffffffffffffu
+/* On LP64 the pointer after arc_segments leaves 4 bytes of padding at 148. */
+_Static_assert(offsetof(nl_link_settings, plugin_settings_json) == 152 &&
+                   offsetof(nl_link_settings, plugin_settings_json_length) == 160,
+               "nl_link_settings on LP64");
+#endif
+
 /* Plugins and the Recast builder's constants. */
 _Static_assert(NL_PLUGIN_ABI_VERSION == 1u, "NL_PLUGIN_ABI_VERSION");
 _Static_assert((NL_PLUGIN_NAVMESH_BUILDER & NL_PLUGIN_LINK_KIND) == 0u &&
@@ -193,10 +265,35 @@ struct api_table {
     nl_status (*plugin_get_description)(const nl_world*, nl_plugin_id, nl_plugin_description*);
     nl_status (*world_get_plugins)(const nl_world*, nl_plugin_id*, uint32_t, uint32_t*);
     nl_status (*plugin_register)(nl_world*, nl_plugin_entry_fn*, nl_plugin_id*);
+    /* Links */
+    nl_link_def (*default_link_def)(void);
+    nl_status (*link_add)(nl_world*, nl_navmesh_id, const nl_link_def*, nl_link_id*);
+    nl_status (*link_update)(nl_world*, nl_link_id, const nl_link_def*);
+    nl_status (*link_remove)(nl_world*, nl_link_id);
+    int32_t (*link_is_valid)(const nl_world*, nl_link_id);
+    nl_status (*link_get)(const nl_world*, nl_link_id, nl_link*);
+    nl_status (*navmesh_get_links)(const nl_world*, nl_navmesh_id, nl_link*, uint32_t, uint32_t*);
+    nl_status (*navmesh_remove_generated_links)(nl_world*, nl_navmesh_id, uint32_t*);
+    nl_link_settings (*default_link_settings)(void);
+    nl_status (*link_settings_from_json)(const char*, size_t, nl_link_settings*);
+    nl_status (*navmesh_generate_links)(nl_world*, nl_navmesh_id, const nl_link_settings*, nl_progress_fn*, void*,
+                                        nl_bake_report*);
+    nl_status (*navmesh_update_links_in_box)(nl_world*, nl_navmesh_id, const float*, const float*, nl_progress_fn*,
+                                             void*, nl_bake_report*);
+    nl_status (*navmesh_save_links_json)(const nl_world*, nl_navmesh_id, char*, size_t, size_t*);
+    nl_status (*navmesh_load_links_json)(nl_world*, nl_navmesh_id, const char*, size_t, uint32_t*);
+    nl_progress_fn* progress;
     /* The plugin side's function types */
     nl_plugin_entry_fn* entry;
     nl_navmesh_sink_fn* sink;
 };
+
+/* A bake progress callback as a host writes it. */
+static int32_t bake_progress(void* user, float fraction, const char* stage) {
+    (void)user;
+    (void)stage;
+    return fraction <= 1.0f;
+}
 
 /* A plugin entry and a sink as a C plugin would write them (typed by the header's function types). */
 static nl_status plugin_entry(uint32_t host_abi_version, const nl_plugin_host* host, nl_plugin_info* out_info) {
@@ -225,8 +322,14 @@ int main(void) {
         nl_navmesh_get_boundary_edges, nl_navmesh_find_nearest, nl_world_get_navmeshes,
         nl_default_navmesh_build_def, nl_navmesh_build, nl_default_recast_settings,
         nl_plugin_load,         nl_plugin_get_description, nl_world_get_plugins, nl_plugin_register,
+        nl_default_link_def,    nl_link_add,            nl_link_update,      nl_link_remove,
+        nl_link_is_valid,       nl_link_get,            nl_navmesh_get_links, nl_navmesh_remove_generated_links,
+        nl_default_link_settings, nl_link_settings_from_json, nl_navmesh_generate_links,
+        nl_navmesh_update_links_in_box, nl_navmesh_save_links_json, nl_navmesh_load_links_json,
+        bake_progress,
         plugin_entry,           navmesh_sink,
     };
+    const nl_link_id null_link = {0u, 0u};
     const nl_navmesh_id null_navmesh = {0u, 0u};
     nl_plugin_info info;
     nl_plugin_host host;
@@ -239,6 +342,11 @@ int main(void) {
     }
     if (api.mesh_is_valid(NULL, null_id) != 0 || !NL_FAILED(api.get_last_status())) return 1;
     if (api.navmesh_is_valid(NULL, null_navmesh) != 0 || !NL_FAILED(api.get_last_status())) return 1;
+    if (api.link_is_valid(NULL, null_link) != 0 || !NL_FAILED(api.get_last_status())) return 1;
+    /* The link defaults set their sizes. */
+    if (api.default_link_def().size != sizeof(nl_link_def) ||
+        api.default_link_settings().size != sizeof(nl_link_settings) || api.progress(NULL, 1.0f, "done") != 1)
+        return 1;
     /* The defaults set their sizes; the plugin-side types are usable from C. */
     if (api.default_navmesh_def().size != sizeof(nl_navmesh_def) ||
         api.default_navmesh_build_def().size != sizeof(nl_navmesh_build_def) ||

@@ -37,6 +37,15 @@ static_assert(blittable<nl_recast_settings>(), "nl_recast_settings");
 static_assert(blittable<nl_plugin_host>(), "nl_plugin_host");
 static_assert(blittable<nl_navmesh_builder>(), "nl_navmesh_builder");
 static_assert(blittable<nl_plugin_info>(), "nl_plugin_info");
+static_assert(blittable<nl_link_id>(), "nl_link_id");
+static_assert(blittable<nl_link_requirements>(), "nl_link_requirements");
+static_assert(blittable<nl_link>(), "nl_link");
+static_assert(blittable<nl_link_def>(), "nl_link_def");
+static_assert(blittable<nl_link_settings>(), "nl_link_settings");
+static_assert(blittable<nl_bake_report>(), "nl_bake_report");
+static_assert(sizeof(nl_link) == 104 && sizeof(nl_link_requirements) == 24 && sizeof(nl_link_id) == 8,
+              "fixed link structs have the same size in C++ as in C");
+static_assert(std::is_same<nl_link_kind, uint32_t>::value, "nl_link_kind is uint32_t");
 static_assert(sizeof(nl_nav_polygon) == 160 && sizeof(nl_boundary_edge) == 56 && sizeof(nl_nav_point) == 24 &&
                   sizeof(nl_agent_type) == 16,
               "fixed structs have the same size in C++ as in C");
@@ -56,6 +65,7 @@ bool all_set(F* f, Rest*... rest) {
 }
 
 void log_sink(void*, nl_log_level, nl_status, const char*) {}
+int32_t bake_progress(void*, float, const char*) { return 1; }
 
 }  // namespace
 
@@ -72,6 +82,14 @@ int main() {
                  &nl_default_navmesh_build_def, &nl_navmesh_build, &nl_default_recast_settings, &nl_plugin_load,
                  &nl_plugin_get_description, &nl_world_get_plugins, &nl_plugin_register))
         return 1;
+    // ... and of the link functions.
+    if (!all_set(&nl_default_link_def, &nl_link_add, &nl_link_update, &nl_link_remove, &nl_link_is_valid, &nl_link_get,
+                 &nl_navmesh_get_links, &nl_navmesh_remove_generated_links, &nl_default_link_settings,
+                 &nl_link_settings_from_json, &nl_navmesh_generate_links, &nl_navmesh_update_links_in_box,
+                 &nl_navmesh_save_links_json, &nl_navmesh_load_links_json))
+        return 1;
+    nl_progress_fn* progress = bake_progress;
+    if (progress(nullptr, 0.5f, "jumps") != 1) return 1;
     nl_world_def def = nl_default_world_def();
     def.worker_count = 1;
     nl_world* world = nullptr;
