@@ -32,8 +32,7 @@ void append_body_sweep(const std::vector<Vec3>& path, const Body& body, float ma
     Vec3 heading = path.back() - path.front();
     heading.y() = 0.0f;
     const Vec3 side = heading.norm() > 1e-4f ? Vec3(-heading.z(), 0.0f, heading.x()).normalized() : Vec3::UnitX();
-    const float heights[] = {std::min(0.3f, 0.25f * body.height), 0.5f * body.height, body.height - 0.1f};
-    const float lateral[] = {-body.radius, 0.0f, body.radius};
+    const float heights[kSweepHeights] = {std::min(0.3f, 0.25f * body.height), 0.5f * body.height, body.height - 0.1f};
 
     float walked = 0.0f;
     for (size_t i = 1; i < path.size(); ++i) {
@@ -45,8 +44,8 @@ void append_body_sweep(const std::vector<Vec3>& path, const Body& body, float ma
         const Vec3 p = a + (b - a) * ((from - (walked - length)) / length);
         const Vec3 q = a + (b - a) * ((to - (walked - length)) / length);
         for (float y : heights) {
-            for (float x : lateral) {
-                const Vec3 offset = side * x + Vec3(0.0f, y, 0.0f);
+            for (float x : kSweepOffsets) {
+                const Vec3 offset = side * (x * body.radius) + Vec3(0.0f, y, 0.0f);
                 out.push_back(Segment{p + offset, q + offset});
                 out.push_back(Segment{q + offset, p + offset});
             }

@@ -20,13 +20,18 @@ struct JumpArc {
 };
 JumpArc jump_arc(const Vec3& start, const Vec3& end, float apex_above, unsigned pieces);
 
-// Appends the segments that sweep `body` along `path` (feet on the path), leaving out `margin` of the
-// path's length at each end (take-off and landing touch the floor). Three heights (near the feet, the
-// middle, the head) by three lateral offsets (left edge, centre, right edge), each in both
-// directions, so that a surface met from either side blocks.
-void append_body_sweep(const std::vector<Vec3>& path, const Body& body, float margin, std::vector<Segment>& out);
+// Lateral offsets of the sweep lines, in agent radii: the centre line, then the two sides of bodies
+// 1, 1.5 and 2 radii wide, so that one batch tells the widest body that fits.
+constexpr float kSweepOffsets[] = {0.0f, -1.0f, 1.0f, -1.5f, 1.5f, -2.0f, 2.0f};
+constexpr unsigned kSweepOffsetCount = sizeof(kSweepOffsets) / sizeof(kSweepOffsets[0]);
+constexpr unsigned kSweepHeights = 3;
+// Segments per kept piece of path: heights x offsets x both directions.
+constexpr unsigned kSegmentsPerPiece = kSweepHeights * kSweepOffsetCount * 2;
 
-// Number of segments append_body_sweep adds per piece of path it keeps.
-constexpr unsigned kSegmentsPerPiece = 18;
+// Appends the segments that sweep an agent-sized body along `path` (feet on the path), leaving out
+// `margin` of the path's length at each end (take-off and landing touch the floor): three heights
+// (near the feet, the middle, the head) by the kSweepOffsets lines, each in both directions, so that
+// a surface met from either side blocks. Segment k of a piece uses offset (k / 2) % kSweepOffsetCount.
+void append_body_sweep(const std::vector<Vec3>& path, const Body& body, float margin, std::vector<Segment>& out);
 
 }  // namespace nl

@@ -228,39 +228,41 @@ private:
         return true;
     }
 
-    // Sweeps each path with the agent's body and, where clear, with wider ones (up to twice as
-    // wide), in one occlusion batch per width.
+    // Sweeps each path with the agent's body and bodies 1.5 and 2 times as wide, in one occlusion
+    // batch: a path is clear if the agent's lines are, and as wide as the widest body whose lines
+    // (and every narrower body's) are.
     std::vector<LinkBake::Sweep> sweep(const std::vector<const std::vector<Vec3>*>& paths) {
         std::vector<LinkBake::Sweep> out(paths.size());
-        std::vector<size_t> still(paths.size());
-        for (size_t i = 0; i < paths.size(); ++i) {
-            still[i] = i;
-            Aabb& b = out[i].bounds;
-            for (const Vec3& p : *paths[i]) b.grow(p);
-            const float widest = 2.0f * body_.radius;
-            b.min -= Vec3(widest, 0.0f, widest);
-            b.max += Vec3(widest, body_.height, widest);
-        }
-        for (float scale : {1.0f, 1.5f, 2.0f}) {
-            std::vector<std::vector<Segment>> per_path(still.size());
-            tasks_.parallel_for(static_cast<uint32_t>(still.size()), 64, [&](uint32_t begin, uint32_t end) {
-                for (uint32_t k = begin; k < end; ++k)
-                    append_body_sweep(*paths[still[k]], Body{body_.radius * scale, body_.height}, s_.clearance_margin, per_path[k]);
-            });
-            std::vector<Segment> all;
-            std::vector<size_t> first(still.size() + 1, 0);
-            for (size_t k = 0; k < still.size(); ++k) first[k + 1] = first[k] + per_path[k].size();
-            all.reserve(first.back());
-            for (const auto& segments : per_path) all.insert(all.end(), segments.begin(), segments.end());
-            const std::vector<uint8_t> hit = blocked(all);
-            std::vector<size_t> passed;
-            for (size_t k = 0; k < still.size(); ++k) {
-                if (std::any_of(hit.begin() + first[k], hit.begin() + first[k + 1], [](uint8_t h) { return h != 0; })) continue;
-                out[still[k]].clear = true;
-                out[still[k]].width = 2.0f * body_.radius * scale;
-                passed.push_back(still[k]);
+        std::vector<std::vector<Segment>> per_path(paths.size());
+        tasks_.parallel_for(static_cast<uint32_t>(paths.size()), 64, [&](uint32_t begin, uint32_t end) {
+            for (uint32_t i = begin; i < end; ++i) {
+                append_body_sweep(*paths[i], body_, s_.clearance_margin, per_path[i]);
+                Aabb& b = out[i].bounds;
+                for (const Vec3& p : *paths[i]) b.grow(p);
+                const float widest = 2.0f * body_.radius;
+                b.min -= Vec3(widest, 0.0f, widest);
+                b.max += Vec3(widest, body_.height, widest);
             }
-            still = std::move(passed);
+        });
+        std::vector<size_t> first(paths.size() + 1, 0);
+        for (size_t i = 0; i < paths.size(); ++i) first[i + 1] = first[i] + per_path[i].size();
+        std::vector<Segment> all(first.back());
+        tasks_.parallel_for(static_cast<uint32_t>(paths.size()), 256, [&](uint32_t begin, uint32_t end) {
+            for (uint32_t i = begin; i < end; ++i) std::copy(per_path[i].begin(), per_path[i].end(), all.begin() + first[i]);
+        });
+        const std::vector<uint8_t> hit = blocked(all);
+        for (size_t i = 0; i < paths.size(); ++i) {
+            bool offset_blocked[kSweepOffsetCount] = {};
+            for (size_t k = first[i]; k < first[i + 1]; ++k)
+                if (hit[k]) offset_blocked[((k - first[i]) / 2) % kSweepOffsetCount] = true;
+            // Offsets pair up by width: {0}, {-1, 1}, {-1.5, 1.5}, {-2, 2} radii.
+            if (offset_blocked[0] || offset_blocked[1] || offset_blocked[2]) continue;
+            out[i].clear = true;
+            out[i].width = 2.0f * body_.radius;
+            if (offset_blocked[3] || offset_blocked[4]) continue;
+            out[i].width = 3.0f * body_.radius;
+            if (offset_blocked[5] || offset_blocked[6]) continue;
+            out[i].width = 4.0f * body_.radius;
         }
         return out;
     }
