@@ -673,7 +673,8 @@ typedef int32_t nl_progress_fn(void* user, float fraction, const char* stage);
  *  A plugin's refused link (a wrong kind, an end off the navmesh) fails the call with INTERNAL_ERROR
  *  and the plugin's name. `settings` is borrowed (NULL = defaults); `progress`
  *  is optional (`user` is passed back to it); `out_report` is optional (caller-owned, `size` set).
- *  Returns SUCCESS, or a failure with INVALID_HANDLE, INVALID_ARGUMENT (a setting, named),
+ *  Returns SUCCESS, or a failure with INVALID_HANDLE (also when the navmesh was removed while the
+ *  links were being generated: nothing is stored), INVALID_ARGUMENT (a setting, named),
  *  CANCELLED (progress returned 0: the navmesh's links are as they were), OUT_OF_MEMORY.
  *  Thread-safe; parallel over the world's workers; the result does not depend on their number. */
 NL_API nl_status nl_navmesh_generate_links(nl_world* world, nl_navmesh_id navmesh, const nl_link_settings* settings,
