@@ -188,6 +188,7 @@ struct PluginLinkSink {
     nl_link_kind kind = 0;
     std::vector<nl::Link> links;
     std::string error;
+    bool out_of_memory = false;
 
     static nl_status receive(void* context, const nl_link_def* def) {
         auto& self = *static_cast<PluginLinkSink*>(context);
@@ -199,6 +200,9 @@ struct PluginLinkSink {
             link.generated = true;
             self.links.push_back(link);
             return NL_STATUS_SUCCESS;
+        } catch (const std::bad_alloc&) {
+            self.out_of_memory = true;
+            return NL_STATUS_FAILURE | NL_STATUS_OUT_OF_MEMORY;
         } catch (const std::exception& e) {
             if (self.error.empty()) self.error = e.what();
             return NL_STATUS_FAILURE | NL_STATUS_INVALID_ARGUMENT;
@@ -206,20 +210,23 @@ struct PluginLinkSink {
     }
 };
 
-// The links of every loaded link-kind plugin for a navmesh, with each plugin's own settings taken
-// from the JSON object keyed by kind name. Throws Internal naming a plugin that failed.
-std::vector<nl::Link> plugin_links(nl_world& w, nl_navmesh_id navmesh, const nl::NavMesh& mesh,
-                                   const nl_link_settings* settings, uint32_t& count) {
-    nlohmann::json all = nlohmann::json::object();
-    if (settings && settings->plugin_settings_json) {
-        try {
-            all = nlohmann::json::parse(settings->plugin_settings_json,
-                                        settings->plugin_settings_json + settings->plugin_settings_json_length);
-        } catch (const nlohmann::json::parse_error& e) {
-            fail(ErrorCode::Parse, "settings->plugin_settings_json: ", e.what());
-        }
-        if (!all.is_object()) fail(ErrorCode::InvalidArgument, "settings->plugin_settings_json must be a JSON object");
+// The plugins' settings, checked before any ray is cast: a JSON object (or none).
+nlohmann::json plugin_settings_of(const std::string& text) {
+    if (text.empty()) return nlohmann::json::object();
+    nlohmann::json all;
+    try {
+        all = nlohmann::json::parse(text);
+    } catch (const nlohmann::json::parse_error& e) {
+        fail(ErrorCode::Parse, "settings->plugin_settings_json: ", e.what());
     }
+    if (!all.is_object()) fail(ErrorCode::InvalidArgument, "settings->plugin_settings_json must be a JSON object");
+    return all;
+}
+
+// The links of every loaded link-kind plugin for a navmesh, each plugin given the object under its
+// kind name in `all`. Throws Internal naming a plugin that failed.
+std::vector<nl::Link> plugin_links(nl_world& w, nl_navmesh_id navmesh, const nl::NavMesh& mesh,
+                                   const nlohmann::json& all, uint32_t& count) {
     std::vector<nl::Link> out;
     for (const nl::capi::Plugin* plugin : w.plugins->link_kinds()) {
         const nl_link_kind_provider& provider = plugin->info.link_kind;
@@ -233,6 +240,7 @@ std::vector<nl::Link> plugin_links(nl_world& w, nl_navmesh_id navmesh, const nl:
                                                    own.empty() ? nullptr : own.c_str(), own.size(),
                                                    &PluginLinkSink::receive, &sink);
         const std::string reason = nl::capi::take_plugin_error();
+        if (sink.out_of_memory) throw std::bad_alloc();
         if (!sink.error.empty())
             fail(ErrorCode::Internal, "link-kind plugin '", plugin->name, "' proposed a link that was refused: ", sink.error);
         if (NL_FAILED(status))
@@ -359,15 +367,19 @@ NL_API nl_status nl_navmesh_generate_links(nl_world* world, nl_navmesh_id navmes
                      : nl::LinkSettings{};
         if (out_report && out_report->size < kReportFirstSize)
             fail(ErrorCode::InvalidArgument, "out_report->size is ", out_report->size, " (set it to sizeof)");
+        const std::string plugin_json = settings && settings->plugin_settings_json
+                                            ? std::string(settings->plugin_settings_json, settings->plugin_settings_json_length)
+                                            : std::string();
+        const nlohmann::json plugin_settings = plugin_settings_of(plugin_json);
         auto bake = std::make_shared<nl::LinkBake>(mesh, s, nl::CandidateSearch::SpatialGrid);
+        const auto serializer = w.bakes->serializer(handle);
+        std::lock_guard one_at_a_time(*serializer);
         nl::BakeReport report;
         std::vector<nl::Link> links = bake->run(*w.level, *w.tasks, report, progress_of(progress, user));
-        const std::vector<nl::Link> extra = plugin_links(w, navmesh, *mesh, settings, report.plugin_links);
+        const std::vector<nl::Link> extra = plugin_links(w, navmesh, *mesh, plugin_settings, report.plugin_links);
         links.insert(links.end(), extra.begin(), extra.end());
         w.links->replace_generated(handle, links);
-        w.bakes->set(handle, std::move(bake), settings && settings->plugin_settings_json
-                                                  ? std::string(settings->plugin_settings_json, settings->plugin_settings_json_length)
-                                                  : std::string());
+        w.bakes->set(handle, nl::LinkBakes::Entry{std::move(bake), plugin_json});
         if (out_report) nl::capi::write_growable(out_report, to_c(report), kReportFirstSize, "out_report");
     });
 }
@@ -388,16 +400,15 @@ NL_API nl_status nl_navmesh_update_links_in_box(nl_world* world, nl_navmesh_id n
             fail(ErrorCode::InvalidArgument, "box_min and box_max must be finite, within the limit, and min <= max");
         if (out_report && out_report->size < kReportFirstSize)
             fail(ErrorCode::InvalidArgument, "out_report->size is ", out_report->size, " (set it to sizeof)");
-        const std::shared_ptr<nl::LinkBake> bake = w.bakes->get(handle);
-        if (!bake) fail(ErrorCode::NotFound, "the navmesh's links were never generated: call nl_navmesh_generate_links first");
+        const auto serializer = w.bakes->serializer(handle);
+        std::lock_guard one_at_a_time(*serializer);
+        // The bake and the plugin settings of the generation being updated, read together.
+        const nl::LinkBakes::Entry last = w.bakes->get(handle);
+        if (!last.bake) fail(ErrorCode::NotFound, "the navmesh's links were never generated: call nl_navmesh_generate_links first");
         nl::BakeReport report;
-        std::vector<nl::Link> links = bake->update(box, *w.level, *w.tasks, report, progress_of(progress, user));
-        // The plugin settings of the generation being updated.
-        const std::string plugin_json = w.bakes->plugin_settings(handle);
-        nl_link_settings plugin_settings = nl_default_link_settings();
-        plugin_settings.plugin_settings_json = plugin_json.empty() ? nullptr : plugin_json.c_str();
-        plugin_settings.plugin_settings_json_length = plugin_json.size();
-        const std::vector<nl::Link> extra = plugin_links(w, navmesh, *mesh, &plugin_settings, report.plugin_links);
+        std::vector<nl::Link> links = last.bake->update(box, *w.level, *w.tasks, report, progress_of(progress, user));
+        const std::vector<nl::Link> extra =
+            plugin_links(w, navmesh, *mesh, plugin_settings_of(last.plugin_settings_json), report.plugin_links);
         links.insert(links.end(), extra.begin(), extra.end());
         w.links->replace_generated(handle, links);
         if (out_report) nl::capi::write_growable(out_report, to_c(report), kReportFirstSize, "out_report");

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "level/mesh_validation.h"
 #include "util/error.h"
@@ -42,8 +43,8 @@ public:
     float number(const char* key, float fallback, bool required = false) const {
         const Json* value = required ? &at(key) : find(key);
         if (!value) return fallback;
-        if (!value->is_number() || !std::isfinite(value->get<double>()))
-            fail(ErrorCode::InvalidArgument, path_, ".", key, " must be a finite number");
+        if (!value->is_number() || !(std::fabs(value->get<double>()) <= std::numeric_limits<float>::max()))
+            fail(ErrorCode::InvalidArgument, path_, ".", key, " must be a finite number within float range");
         return value->get<float>();
     }
     bool flag(const char* key, bool fallback) const {
@@ -65,7 +66,8 @@ public:
             fail(ErrorCode::InvalidArgument, path_, ".", key, " must be an array of 3 numbers");
         Vec3 v;
         for (int k = 0; k < 3; ++k) {
-            if (!(*value)[k].is_number()) fail(ErrorCode::InvalidArgument, path_, ".", key, "[", k, "] must be a number");
+            if (!(*value)[k].is_number() || !(std::fabs((*value)[k].get<double>()) <= kCoordinateLimit))
+                fail(ErrorCode::InvalidArgument, path_, ".", key, "[", k, "] must be a number within the coordinate limit");
             v[k] = (*value)[k].get<float>();
         }
         if (!within_coordinate_limit(v))

@@ -32,7 +32,8 @@ void append_body_sweep(const std::vector<Vec3>& path, const Body& body, float ma
     Vec3 heading = path.back() - path.front();
     heading.y() = 0.0f;
     const Vec3 side = heading.norm() > 1e-4f ? Vec3(-heading.z(), 0.0f, heading.x()).normalized() : Vec3::UnitX();
-    const float heights[kSweepHeights] = {std::min(0.3f, 0.25f * body.height), 0.5f * body.height, body.height - 0.1f};
+    const float heights[kSweepHeights] = {std::min(0.3f, 0.25f * body.height), 0.5f * body.height,
+                                          std::max(0.5f * body.height, body.height - 0.1f)};
 
     float walked = 0.0f;
     for (size_t i = 1; i < path.size(); ++i) {

@@ -10,7 +10,7 @@ namespace {
 bool horizontal_outward(const BoundaryEdge& e, Vec3& out) {
     out = Vec3(e.outward.x(), 0.0f, e.outward.z());
     const float length = out.norm();
-    if (length < 1e-3f) return false;  // a vertical polygon's edge has no outside to jump from
+    if (!(length >= 1e-3f)) return false;  // a vertical polygon's edge has no outside (or a NaN one)
     out /= length;
     return true;
 }

@@ -159,7 +159,8 @@ private:
     // max_link_distance: the pairs beyond max_link_distance are only looked at so the report can say
     // that two facing edges were too far apart.
     void for_each_nearby_pair(const std::vector<uint32_t>& valid, FunctionRef<void(uint32_t, uint32_t)> visit) const {
-        const float reach = 2.0f * s_.max_link_distance;
+        // Never finer than a centimetre: cell keys stay far inside int64 within the coordinate limit.
+        const float reach = std::max(2.0f * s_.max_link_distance, 0.01f);
         if (search_ == CandidateSearch::AllPairs) {
             for (size_t x = 0; x < valid.size(); ++x)
                 for (size_t y = x + 1; y < valid.size(); ++y)
@@ -172,7 +173,9 @@ private:
             bool operator==(const Key& o) const { return x == o.x && y == o.y && z == o.z; }
         };
         struct Hash {
-            size_t operator()(const Key& k) const { return size_t(k.x * 73856093) ^ size_t(k.y * 19349663) ^ size_t(k.z * 83492791); }
+            size_t operator()(const Key& k) const {
+                return size_t(uint64_t(k.x) * 73856093u ^ uint64_t(k.y) * 19349663u ^ uint64_t(k.z) * 83492791u);
+            }
         };
         auto key = [&](const Vec3& p) {
             return Key{int64_t(std::floor(p.x() / reach)), int64_t(std::floor(p.y() / reach)), int64_t(std::floor(p.z() / reach))};
@@ -487,9 +490,9 @@ private:
             bool operator==(const Key& o) const { return x == o.x && z == o.z; }
         };
         struct Hash {
-            size_t operator()(const Key& k) const { return size_t(k.x * 73856093) ^ size_t(k.z * 19349663); }
+            size_t operator()(const Key& k) const { return size_t(uint64_t(k.x) * 73856093u ^ uint64_t(k.z) * 19349663u); }
         };
-        const float cell = std::max(r, 1e-3f);
+        const float cell = std::max(r, 0.01f);
         auto key = [&](const Vec3& p) { return Key{int64_t(std::floor(p.x() / cell)), int64_t(std::floor(p.z() / cell))}; };
         // Kept links indexed by the cells of both their ends, so either orientation is found.
         std::unordered_map<Key, std::vector<uint32_t>, Hash> by_end;
@@ -572,26 +575,30 @@ std::vector<Link> LinkBake::bake(const Aabb* box, const Level& level, TaskSystem
     return links;
 }
 
-void LinkBakes::set(Handle navmesh, std::shared_ptr<LinkBake> bake, std::string plugin_settings_json) {
+std::shared_ptr<std::mutex> LinkBakes::serializer(Handle navmesh) {
     std::lock_guard lock(mutex_);
-    bakes_[key(navmesh)] = Entry{std::move(bake), std::move(plugin_settings_json)};
+    auto& m = serializers_[key(navmesh)];
+    if (!m) m = std::make_shared<std::mutex>();
+    return m;
 }
 
-std::shared_ptr<LinkBake> LinkBakes::get(Handle navmesh) const {
+void LinkBakes::set(Handle navmesh, Entry entry) {
     std::lock_guard lock(mutex_);
-    const auto it = bakes_.find(key(navmesh));
-    return it == bakes_.end() ? nullptr : it->second.bake;
+    if (retired_.count(key(navmesh))) return;
+    bakes_[key(navmesh)] = std::move(entry);
 }
 
-std::string LinkBakes::plugin_settings(Handle navmesh) const {
+LinkBakes::Entry LinkBakes::get(Handle navmesh) const {
     std::lock_guard lock(mutex_);
     const auto it = bakes_.find(key(navmesh));
-    return it == bakes_.end() ? std::string() : it->second.plugin_settings_json;
+    return it == bakes_.end() ? Entry{} : it->second;
 }
 
 void LinkBakes::remove(Handle navmesh) {
     std::lock_guard lock(mutex_);
     bakes_.erase(key(navmesh));
+    serializers_.erase(key(navmesh));
+    retired_.insert(key(navmesh));
 }
 
 }  // namespace nl

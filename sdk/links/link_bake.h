@@ -11,6 +11,7 @@
 #include <mutex>
 #include <string>
 #include <unordered_map>
+#include <unordered_set>
 #include <vector>
 
 #include "links/edge_samples.h"
@@ -77,19 +78,27 @@ private:
 // The last bake of each navmesh of a world, kept for updates, with the plugin settings it ran with.
 class LinkBakes {
 public:
-    void set(Handle navmesh, std::shared_ptr<LinkBake> bake, std::string plugin_settings_json);
-    std::shared_ptr<LinkBake> get(Handle navmesh) const;  // null if the navmesh was never baked
-    std::string plugin_settings(Handle navmesh) const;
-    void remove(Handle navmesh);
-
-private:
     struct Entry {
         std::shared_ptr<LinkBake> bake;
         std::string plugin_settings_json;
     };
+
+    // Generations and updates of one navmesh run one at a time, from reading its bake to storing its
+    // links, so a later one never loses to an earlier one. Hold the returned mutex for that span.
+    // (A progress callback must not start another on the same navmesh: it would wait for itself.)
+    std::shared_ptr<std::mutex> serializer(Handle navmesh);
+
+    // Ignored for a removed navmesh: a generation that finishes after the removal keeps nothing.
+    void set(Handle navmesh, Entry entry);
+    Entry get(Handle navmesh) const;  // empty if the navmesh was never baked
+    void remove(Handle navmesh);
+
+private:
     static uint64_t key(Handle h) { return (uint64_t(h.index1) << 32) | h.generation; }
     mutable std::mutex mutex_;
     std::unordered_map<uint64_t, Entry> bakes_;
+    std::unordered_map<uint64_t, std::shared_ptr<std::mutex>> serializers_;
+    std::unordered_set<uint64_t> retired_;
 };
 
 }  // namespace nl

@@ -11,8 +11,10 @@ void LinkStore::require_live(Handle navmesh) const {
 Handle LinkStore::add(Handle navmesh, const Link& link) {
     std::unique_lock lock(mutex_);
     require_live(navmesh);
+    auto& ids = by_navmesh_[key(navmesh)];
+    ids.reserve(ids.size() + 1);  // allocate before inserting: a failure must leave no orphan
     const Handle id = links_.insert(Entry{navmesh, link});
-    by_navmesh_[key(navmesh)].push_back(id);
+    ids.push_back(id);
     publish(navmesh);
     return id;
 }
@@ -53,6 +55,7 @@ bool LinkStore::contains(Handle id) const {
 void LinkStore::erase_where(Handle navmesh, bool generated_only) {
     auto& ids = by_navmesh_[key(navmesh)];
     std::vector<Handle> kept;
+    kept.reserve(ids.size());  // nothing below may throw once links are being erased
     for (Handle id : ids) {
         if (generated_only && !links_.find(id)->link.generated) kept.push_back(id);
         else links_.erase(id);
@@ -93,6 +96,7 @@ std::vector<Handle> LinkStore::replace_all(Handle navmesh, const std::vector<Lin
 
 uint32_t LinkStore::remove_generated(Handle navmesh) {
     std::unique_lock lock(mutex_);
+    require_live(navmesh);
     const size_t before = by_navmesh_[key(navmesh)].size();
     erase_where(navmesh, true);
     publish(navmesh);

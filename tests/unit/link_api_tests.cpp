@@ -208,6 +208,12 @@ TEST_CASE("links round-trip through JSON; bad files are refused and change nothi
     CHECK(nl_navmesh_load_links_json(f.world, f.navmesh, bad_point.data(), bad_point.size(), &loaded) ==
           (NL_STATUS_FAILURE | NL_STATUS_INVALID_ARGUMENT));
     CHECK(last_error().find("links[0].start") != std::string::npos);
+    const std::string huge_cost =
+        "{\"format\": \"navlink-links\", \"version\": 1, \"links\": [{\"kind\": \"manual\", \"start\": [0, 0, 0], "
+        "\"end\": [1, 0, 1], \"cost_modifier\": 1e39}]}";
+    CHECK(nl_navmesh_load_links_json(f.world, f.navmesh, huge_cost.data(), huge_cost.size(), &loaded) ==
+          (NL_STATUS_FAILURE | NL_STATUS_INVALID_ARGUMENT));  // beyond float: would become infinite
+    CHECK(last_error().find("links[0].cost_modifier") != std::string::npos);
     CHECK(f.links().size() == before.size());  // nothing changed by the failures
 }
 

@@ -675,7 +675,10 @@ typedef int32_t nl_progress_fn(void* user, float fraction, const char* stage);
  *  is optional (`user` is passed back to it); `out_report` is optional (caller-owned, `size` set).
  *  Returns SUCCESS, or a failure with INVALID_HANDLE (also when the navmesh was removed while the
  *  links were being generated: nothing is stored), INVALID_ARGUMENT (a setting, named),
- *  CANCELLED (progress returned 0: the navmesh's links are as they were), OUT_OF_MEMORY.
+ *  PARSE_ERROR (malformed plugin_settings_json, found before any work), CANCELLED (progress
+ *  returned 0: the navmesh's links are as they were), OUT_OF_MEMORY.
+ *  Generations and updates of one navmesh run one after the other; a progress callback must not
+ *  start another on the same navmesh (it would wait for itself). Other navmeshes are independent.
  *  Thread-safe; parallel over the world's workers; the result does not depend on their number. */
 NL_API nl_status nl_navmesh_generate_links(nl_world* world, nl_navmesh_id navmesh, const nl_link_settings* settings,
                                            nl_progress_fn* progress, void* user, nl_bake_report* out_report);
