@@ -25,8 +25,6 @@ JumpArc jump_arc(const Vec3& start, const Vec3& end, float apex_above, unsigned 
 constexpr float kSweepOffsets[] = {0.0f, -1.0f, 1.0f, -1.5f, 1.5f, -2.0f, 2.0f};
 constexpr unsigned kSweepOffsetCount = sizeof(kSweepOffsets) / sizeof(kSweepOffsets[0]);
 constexpr unsigned kSweepHeights = 3;
-// Segments per kept piece of path: heights x offsets x both directions.
-constexpr unsigned kSegmentsPerPiece = kSweepHeights * kSweepOffsetCount * 2;
 
 // Appends the segments that sweep an agent-sized body along `path` (feet on the path), leaving out
 // `margin` of the path's length at each end (take-off and landing touch the floor): three heights

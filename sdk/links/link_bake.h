@@ -30,8 +30,6 @@ public:
     std::vector<Link> update(const Aabb& box, const Level& level, TaskSystem& tasks, BakeReport& report,
                              BakeProgress progress);
 
-    const NavMesh& navmesh() const { return *navmesh_; }
-
     struct TakeoffState {
         bool valid = false;
         uint8_t rejected = 0;  // 1: wall between the edge and the rim, 2: no rim (ground a step below)

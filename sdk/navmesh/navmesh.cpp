@@ -121,11 +121,4 @@ NavPoint NavMesh::find_nearest_brute_force(const Vec3& point, const Vec3& half_e
     return nearest.best;
 }
 
-size_t NavMesh::memory_bytes() const {
-    auto bytes = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
-    return sizeof(*this) + bytes(vertices_) + bytes(first_corner_) + bytes(corners_) + bytes(neighbours_) +
-           bytes(areas_) + bytes(normals_) + bytes(polygon_bounds_) + bytes(detail_vertices_) +
-           bytes(detail_triangles_) + bytes(first_detail_triangle_) + bytes(boundary_edges_) + grid_.memory_bytes();
-}
-
 }  // namespace nl

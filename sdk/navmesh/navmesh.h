@@ -78,8 +78,6 @@ public:
     // Height of polygon p's surface (detail triangles, or its own fan) at (x, z) over it.
     float surface_height(uint32_t p, float x, float z) const;
 
-    size_t memory_bytes() const;
-
 private:
     friend class NavMeshBuilder;
 
