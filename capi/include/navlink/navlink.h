@@ -131,6 +131,10 @@ typedef struct nl_world_def {
     void* log_user;          /**< Passed back to log_fn as `user`; borrowed, never dereferenced. */
     nl_log_level log_level;  /**< Most verbose level passed to log_fn. Default NL_LOG_WARNING: errors,
                                   and warnings such as repaired input (skipped degenerate triangles). */
+    int32_t path_worker_count; /**< Threads that plan queued path requests (nl_path_request), apart
+                                    from batch work. NL_WORKERS_AUTO (default): one per hardware
+                                    thread; 0: no threads, the host runs the queue with
+                                    nl_path_process (a game loop with a frame budget). */
 } nl_world_def;
 
 /** A def with every field at its default. Thread-safe; never fails. */
@@ -711,6 +715,189 @@ NL_API nl_status nl_navmesh_save_links_json(const nl_world* world, nl_navmesh_id
  *  INVALID_HANDLE. Thread-safe. */
 NL_API nl_status nl_navmesh_load_links_json(nl_world* world, nl_navmesh_id navmesh, const char* json, size_t length,
                                             uint32_t* out_count);
+
+/* ---------------------------------------------------------------------------------------------
+ * Paths: A* over a navmesh's polygons and links, filtered per request by what the agent's body can
+ * do, then string-pulled into points that say how each segment is travelled (walk, jump, drop...).
+ * Requests read an immutable snapshot of the navmesh and its links taken when they are made: editing
+ * links meanwhile never blocks nor disturbs them (docs/pathfinding.md).
+ * ------------------------------------------------------------------------------------------- */
+
+/** A queued path request. Zero-initialised is the null ticket. */
+typedef struct nl_path_ticket {
+    uint32_t index1;
+    uint32_t generation;
+} nl_path_ticket;
+
+/** What an agent's body can do. A link is usable only if the agent meets all of its requirements:
+ *  gap <= max_jump_distance, rise <= max_jump_height, drop <= max_drop_height, clearance_width
+ *  (when measured) >= 2 * radius, and every ability bit it asks for. Going the other way over a
+ *  bidirectional link swaps rise and drop. A drop taken downward is a step off the edge, not a
+ *  jump: its gap is not held against max_jump_distance. */
+typedef struct nl_agent_capabilities {
+    float max_jump_distance; /**< Widest horizontal gap jumped, metres (default 0: no jumps). */
+    float max_jump_height;   /**< Highest rise jumped up, metres (default 0). */
+    float max_drop_height;   /**< Deepest drop taken, metres (default 0: no drops). */
+    float radius;            /**< Body radius, metres (default 0.6). Where it exceeds the radius the
+                                  navmesh was built for (nl_agent_type.radius), the path keeps the
+                                  difference away from the navmesh's outline, and portals that leave
+                                  less room are not crossed. */
+    uint64_t abilities;      /**< Ability bits the agent has (default 0), for plugin link kinds. */
+} nl_agent_capabilities;
+
+/** A walker: radius 0.6, no jumps, no drops, no abilities. Thread-safe; never fails. */
+NL_API nl_agent_capabilities nl_default_agent_capabilities(void);
+
+/** Pass as an area cost to keep the agent out of that area. */
+#define NL_AREA_EXCLUDED 0.0f
+
+/** How a path request ended. */
+typedef uint32_t nl_path_outcome;
+#define NL_PATH_PENDING 0u            /**< Queued or being planned. */
+#define NL_PATH_COMPLETE 1u           /**< The path reaches the goal. */
+#define NL_PATH_PARTIAL 2u            /**< The goal is out of reach (or max_nodes ran out); the path
+                                           leads to the reachable point nearest to it. */
+#define NL_PATH_NO_PATH 3u            /**< The goal is out of reach and accept_partial was 0. */
+#define NL_PATH_START_OFF_NAVMESH 4u  /**< No polygon within search_half_extents of the start. */
+#define NL_PATH_GOAL_OFF_NAVMESH 5u   /**< No polygon within search_half_extents of the goal. */
+#define NL_PATH_CANCELLED 6u          /**< Cancelled or released before it finished, or the world was
+                                           destroyed first. */
+#define NL_PATH_FAILED 7u             /**< Could not run (out of memory, an internal error); the
+                                           result's `status` says why. */
+
+/** Called exactly once when a queued request finishes (nl_path_outcome says how), from the thread
+ *  that finished it: a NavLink path worker, the thread in nl_path_process, the thread that cancelled a
+ *  request that had not started, or the thread destroying the world. It may call nl_path_poll,
+ *  nl_path_get_result and nl_path_release for `ticket`, and submit new requests; it must be quick
+ *  (it holds up a worker) and must not destroy the world. */
+typedef void nl_path_callback(void* user, nl_path_ticket ticket, nl_path_outcome outcome);
+
+/** One path request. Get one from nl_default_path_request_def(). */
+typedef struct nl_path_request_def {
+    uint32_t size;                 /**< sizeof(nl_path_request_def). */
+    nl_navmesh_id navmesh;         /**< The agent type's navmesh. */
+    float start[3];
+    float goal[3];
+    float search_half_extents[3];  /**< Start and goal snap to the navmesh within this box around them
+                                        (default 2, 4, 2 m); each > 0. */
+    nl_agent_capabilities agent;
+    const float* area_costs;       /**< Optional, borrowed (copied): cost per metre walked in area i,
+                                        for i < area_cost_count; other areas cost 1. Each finite and
+                                        >= 0; NL_AREA_EXCLUDED (0) keeps the agent out. */
+    uint32_t area_cost_count;      /**< At most 256. */
+    float link_cost;               /**< Extra cost each time a link is taken, metres (default 0; >= 0).
+                                        A link costs its length times its cost_modifier, plus this. */
+    uint32_t max_nodes;            /**< Most polygons the search may visit; 0 (default): no limit. */
+    uint8_t accept_partial;        /**< 1 (default): when the goal cannot be reached, the path leads
+                                        to the reachable point nearest to it (NL_PATH_PARTIAL);
+                                        0: the outcome is NL_PATH_NO_PATH. */
+    uint8_t reserved[3];
+    nl_path_callback* callback;    /**< Optional, for nl_path_request only. */
+    void* user;                    /**< Passed back to callback; borrowed, never dereferenced. */
+} nl_path_request_def;
+
+/** A request from (0,0,0) to (0,0,0) on the null navmesh for a default walker: set navmesh, start,
+ *  goal and agent. Thread-safe; never fails. */
+NL_API nl_path_request_def nl_default_path_request_def(void);
+
+/** How the agent moves from one path point to the next: walking, or the kind of the link taken
+ *  (NL_LINK_JUMP, NL_LINK_DROP, NL_LINK_MANUAL or a plugin kind). */
+typedef uint32_t nl_segment_kind;
+#define NL_SEGMENT_WALK 0u
+
+/** One point of a path. */
+typedef struct nl_path_point {
+    float position[3];
+    uint32_t polygon;        /**< Navmesh polygon at the point. */
+    nl_segment_kind segment; /**< How the agent goes on from here to the next point (NL_SEGMENT_WALK
+                                  at the last point). A drop climbed back up its bidirectional link
+                                  is a jump: NL_LINK_JUMP, with `reversed` set. */
+    nl_link_id link;         /**< The link of that segment; null for walking. */
+    float apex[3];           /**< A jump's highest point, to prepare the jump; for other links the
+                                  higher end; for walking the point itself. */
+    uint8_t reversed;        /**< 1 if the link is taken from its end to its start. */
+    uint8_t reserved[3];
+} nl_path_point;
+
+/** What a finished request found. */
+typedef struct nl_path_result {
+    uint32_t size;            /**< Set by the caller to sizeof(nl_path_result). */
+    nl_path_outcome outcome;
+    nl_status status;         /**< For NL_PATH_FAILED: why; NL_STATUS_SUCCESS otherwise. */
+    uint32_t point_count;     /**< Points in the path (0 unless COMPLETE or PARTIAL). */
+    uint32_t links_used;      /**< Link segments in the path. */
+    uint32_t nodes_visited;   /**< Polygons the search touched. */
+    uint8_t out_of_nodes;     /**< 1 if max_nodes stopped the search. */
+    uint8_t reserved[3];
+    float length;             /**< Metres, along the straight segments between points. */
+    float cost;               /**< The search's cost of the path (area costs, link costs). */
+    float start[3];           /**< The start snapped to the navmesh. */
+    float goal[3];            /**< The goal snapped to the navmesh (where the path ends if COMPLETE). */
+} nl_path_result;
+
+/** Plans a path now, on the calling thread, and writes the result to `*out_result` (caller-owned,
+ *  `size` set) and its points to `out_points` (caller-owned, `capacity` entries; may be NULL with
+ *  capacity 0 to learn the count; `*out_count` receives the point count). For tools and tests; a
+ *  game uses nl_path_request. `def` is borrowed; its callback is ignored.
+ *  Returns SUCCESS when the search ran, whatever it found (PARTIAL_RESULT is set for NL_PATH_PARTIAL;
+ *  read the outcome), or a failure with INVALID_HANDLE (navmesh), INVALID_ARGUMENT (null pointer, a
+ *  coordinate not finite, a negative capability or cost, size too small: named), BUFFER_TOO_SMALL
+ *  (the result is written, the points are not), OUT_OF_MEMORY. Thread-safe. */
+NL_API nl_status nl_path_find(nl_world* world, const nl_path_request_def* def, nl_path_result* out_result,
+                              nl_path_point* out_points, uint32_t capacity, uint32_t* out_count);
+
+/** Queues a path request and returns at once with its ticket in `*out_ticket`. The request reads the
+ *  navmesh and links as they are now. `def` is borrowed and copied. Path workers plan it (or
+ *  nl_path_process when path_worker_count is 0); poll the ticket or receive the callback, read the
+ *  result, then release the ticket. Every accepted request finishes exactly once.
+ *  Returns SUCCESS, or a failure with INVALID_HANDLE (navmesh), INVALID_ARGUMENT (as nl_path_find),
+ *  OUT_OF_MEMORY; on failure no ticket is made and the callback is never called. Thread-safe. */
+NL_API nl_status nl_path_request(nl_world* world, const nl_path_request_def* def, nl_path_ticket* out_ticket);
+
+/** Writes the request's outcome (NL_PATH_PENDING while it runs) to `*out_outcome`.
+ *  Returns SUCCESS, or a failure with INVALID_HANDLE (null, released or foreign ticket) or
+ *  INVALID_ARGUMENT. Thread-safe. */
+NL_API nl_status nl_path_poll(const nl_world* world, nl_path_ticket ticket, nl_path_outcome* out_outcome);
+
+/** Copies a finished request's result and points, as nl_path_find. Can be called any number of times
+ *  until the ticket is released. Returns SUCCESS (with PARTIAL_RESULT for NL_PATH_PARTIAL),
+ *  NL_STATUS_IN_PROGRESS (not finished; nothing written), or a failure with INVALID_HANDLE,
+ *  INVALID_ARGUMENT or BUFFER_TOO_SMALL (result written, points not). Thread-safe. */
+NL_API nl_status nl_path_get_result(const nl_world* world, nl_path_ticket ticket, nl_path_result* out_result,
+                                    nl_path_point* out_points, uint32_t capacity, uint32_t* out_count);
+
+/** Asks a request to stop. A request not started yet finishes at once as NL_PATH_CANCELLED (its
+ *  callback runs on this thread); a running one stops at its next check (within about a hundred
+ *  polygons) unless it finishes first; a finished one is unchanged.
+ *  Returns SUCCESS or INVALID_HANDLE. Thread-safe. */
+NL_API nl_status nl_path_cancel(nl_world* world, nl_path_ticket ticket);
+
+/** Frees a request's result; the ticket becomes invalid. Releasing an unfinished request cancels it;
+ *  its callback still runs once. Returns SUCCESS or INVALID_HANDLE. Thread-safe. */
+NL_API nl_status nl_path_release(nl_world* world, nl_path_ticket ticket);
+
+/** Plans queued requests on the calling thread until the queue is empty, `max_requests` were planned
+ *  (0: no limit) or `max_milliseconds` passed (checked between requests; <= 0: no limit). The way a
+ *  host with path_worker_count 0 runs the queue in its frame; with workers it helps them.
+ *  `out_processed` (optional) receives how many requests finished here. Returns SUCCESS or
+ *  INVALID_ARGUMENT (NaN budget). Thread-safe. */
+NL_API nl_status nl_path_process(nl_world* world, uint32_t max_requests, double max_milliseconds,
+                                 uint32_t* out_processed);
+
+/** Counters of a world's path queue. */
+typedef struct nl_path_queue_stats {
+    uint32_t size;         /**< Set by the caller to sizeof(nl_path_queue_stats). */
+    uint32_t workers;      /**< Path worker threads. */
+    uint32_t queued;       /**< Requests waiting. */
+    uint32_t running;      /**< Requests being planned. */
+    uint32_t unreleased;   /**< Tickets not released yet (finished or not). */
+    uint32_t reserved;
+    uint64_t submitted;    /**< Requests accepted since the world was created. */
+    uint64_t finished;     /**< Requests finished (any outcome). */
+} nl_path_queue_stats;
+
+/** Fills `*out_stats` (caller-owned, `size` set). Returns SUCCESS or INVALID_ARGUMENT. Thread-safe. */
+NL_API nl_status nl_path_get_queue_stats(const nl_world* world, nl_path_queue_stats* out_stats);
 
 /* ---------------------------------------------------------------------------------------------
  * Plugins (plugins/include/navlink/plugin.h has the plugin side of the ABI).
