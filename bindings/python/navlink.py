@@ -688,6 +688,11 @@ class World:
             if self._log_key is not None:
                 _lookup(self._log_key, remove=True)
 
+    def __del__(self):
+        # A world dropped without close(): nothing else can be using it any more.
+        if getattr(self, "_pointer", None) is not None and lib is not None:
+            self.close()
+
     def __enter__(self):
         return self
 
@@ -777,7 +782,7 @@ class World:
         d = lib.nl_default_navmesh_build_def()
         d.agent = agent if agent is not None else default_agent_type()
         d.builder = builder.encode() if builder is not None else None
-        d.settings = ctypes.cast(byref(recast), c_void_p) if recast is not None else None
+        d.settings = ctypes.addressof(recast) if recast is not None else None
         if settings_json is not None:
             data = settings_json.encode()
             d.settings_json, d.settings_json_length = data, len(data)

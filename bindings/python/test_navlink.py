@@ -212,6 +212,14 @@ class NavmeshTest(NavLinkTestCase):
             self.assertTrue(found[1].found == 1 and abs(found[1].point[0]) >= 1.5)
             self.assertTrue(found[2].found == 0 and found[2].polygon == nl.NO_POLYGON)
             self.assertEqual(world.navmeshes(), [navmesh])
+            # The settings struct reaches the builder: 3 corners per polygon turn the quads into triangles.
+            triangles = nl.default_recast_settings()
+            triangles.vertices_per_polygon = 3
+            triangulated = world.build_navmesh(recast=triangles)
+            count = world.navmesh_info(triangulated).polygon_count
+            self.assertTrue(all(world.polygon(triangulated, i).vertex_count == 3 for i in range(count)))
+            self.assertTrue(any(world.polygon(navmesh, i).vertex_count > 3 for i in range(info.polygon_count)))
+            world.remove_navmesh(triangulated)
             self.assertFails(nl.STATUS_PARSE_ERROR, "settings", world.build_navmesh, settings_json="{oops")
             self.assertFails(nl.STATUS_NOT_FOUND, "nope", world.build_navmesh, builder="nope")
             world.remove_navmesh(navmesh)

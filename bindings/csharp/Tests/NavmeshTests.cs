@@ -43,6 +43,16 @@ namespace NavLink.Tests
                     check.That(found[2].Found == 0 && found[2].Polygon == Limits.NoPolygon, "(0 0 30) is nowhere near");
 
                     check.That(world.GetNavmeshes().SequenceEqual(new[] { navmesh }), "the world lists its navmesh");
+
+                    // The settings struct reaches the builder: 3 corners per polygon turn the platforms' quads into triangles.
+                    RecastSettings triangles = World.DefaultRecastSettings();
+                    triangles.VerticesPerPolygon = 3;
+                    NavmeshId triangulated = world.BuildNavmesh(World.DefaultAgentType(), triangles);
+                    uint polygons = world.GetNavmeshInfo(triangulated).PolygonCount;
+                    check.That(Enumerable.Range(0, (int)polygons).All(i => world.GetPolygon(triangulated, (uint)i).VertexCount == 3) &&
+                               Enumerable.Range(0, (int)info.PolygonCount).Any(i => world.GetPolygon(navmesh, (uint)i).VertexCount > 3),
+                               "vertices_per_polygon 3: triangles only (the default has larger polygons)");
+                    world.RemoveNavmesh(triangulated);
                     check.Throws(StatusBits.ParseError, "settings", () => world.BuildNavmesh(World.DefaultAgentType(), null, "{oops"),
                                  "malformed settings JSON");
                     check.Throws(StatusBits.NotFound, "nope", () => world.BuildNavmesh(World.DefaultAgentType(), null, null, "nope"),

@@ -7,7 +7,8 @@ use std::os::raw::c_void;
 use std::ptr::NonNull;
 
 /// Receives every failure of a call on the world (and, by `log_level`, warnings...): level, status,
-/// message. Called on the failing thread, which may be a NavLink worker, hence `Send + Sync`.
+/// message. Called on the failing thread, which may be a NavLink worker, hence `Send + Sync`; it must not
+/// call into the same world (navlink.h).
 pub type LogFn = dyn Fn(u32, u32, &str) + Send + Sync;
 
 /// How to create a world (`nl_world_def`).

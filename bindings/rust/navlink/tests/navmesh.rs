@@ -31,6 +31,17 @@ fn navmesh_from_the_level() {
     assert!(found[2].found == 0 && found[2].polygon == NO_POLYGON);
 
     assert_eq!(world.navmeshes().unwrap(), vec![navmesh]);
+
+    // The settings struct reaches the builder: 3 corners per polygon turn the platforms' quads into triangles.
+    let triangles = NavmeshBuild {
+        recast: Some(navlink::RecastSettings { vertices_per_polygon: 3, ..default_recast_settings() }),
+        ..NavmeshBuild::new(default_agent_type())
+    };
+    let triangulated = world.build_navmesh(&triangles).unwrap();
+    let polygons = world.navmesh_info(triangulated).unwrap().polygon_count;
+    assert!((0..polygons).all(|i| world.polygon(triangulated, i).unwrap().vertex_count == 3));
+    assert!((0..info.polygon_count).any(|i| world.polygon(navmesh, i).unwrap().vertex_count > 3));
+    world.remove_navmesh(triangulated).unwrap();
     let bad_json = NavmeshBuild { settings_json: Some("{oops"), ..NavmeshBuild::new(default_agent_type()) };
     assert_fails(world.build_navmesh(&bad_json), status::PARSE_ERROR, "settings");
     let unknown = NavmeshBuild { builder: Some("nope"), ..NavmeshBuild::new(default_agent_type()) };
