@@ -15,6 +15,8 @@
 #include <thread>
 #include <vector>
 
+#include "cell_navmesh.h"
+
 namespace {
 
 constexpr int kSubmitters = 4;
@@ -40,35 +42,18 @@ void on_done(void* user, nl_path_ticket, nl_path_outcome outcome) {
     slot.completions.fetch_add(1, std::memory_order_release);
 }
 
-// Cells at y = 0; column kSide / 2 is a gap only links cross (when they exist and are enabled).
+// kSide x kSide cells at y = 0; column kSide / 2 is a gap only links cross (when they exist and are
+// enabled).
 nl_navmesh_id add_navmesh(nl_world* world) {
-    std::vector<float> vertices;
-    std::vector<uint32_t> indices;
-    std::vector<uint8_t> counts;
-    for (int r = 0; r < kSide; ++r) {
-        for (int c = 0; c < kSide; ++c) {
-            if (c == kSide / 2) continue;
-            const float x0 = float(c), z0 = float(r);
-            for (const auto& [x, z] : {std::pair{x0, z0}, {x0, z0 + 1}, {x0 + 1, z0 + 1}, {x0 + 1, z0}}) {
-                indices.push_back(uint32_t(vertices.size() / 3));
-                vertices.insert(vertices.end(), {x, 0.0f, z});
-            }
-            counts.push_back(4);
-        }
-    }
-    nl_navmesh_def def = nl_default_navmesh_def();
-    def.vertices = vertices.data();
-    def.vertex_count = uint32_t(vertices.size() / 3);
-    def.indices = indices.data();
-    def.polygon_vertex_counts = counts.data();
-    def.polygon_count = uint32_t(counts.size());
-    def.agent.radius = 0.0f;
+    std::vector<std::string> rows(kSide, std::string(kSide, '.'));
+    for (std::string& row : rows) row[kSide / 2] = '#';
+    const nl::test::CellNavmesh cells(rows, 0.0f);
     nl_navmesh_id id{};
-    if (nl_navmesh_add(world, &def, &id) != NL_STATUS_SUCCESS) fail(std::string("nl_navmesh_add: ") + nl_get_last_error_message());
+    if (nl_navmesh_add(world, &cells.def, &id) != NL_STATUS_SUCCESS) fail(std::string("nl_navmesh_add: ") + nl_get_last_error_message());
     return id;
 }
 
-// Adds, edits and removes jump links across the wall until told to stop.
+// Adds, edits and removes jump links across the gap until told to stop.
 void edit_links(nl_world* world, nl_navmesh_id navmesh, const std::atomic<bool>& stop, int& edits) {
     std::mt19937 rng(7);
     std::uniform_int_distribution<int> row(2, kSide - 3);
