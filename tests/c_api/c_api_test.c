@@ -1703,6 +1703,7 @@ int main(int argc, char** argv) {
     test_edges();
     test_navmesh_all();
     test_links_all();
+    test_paths_all();
     if (argc > 1 && argv[1][0] != '\0') {
         test_dungeon(argv[1]);
     } else {

@@ -50,4 +50,10 @@ void test_navmesh_isolated(void);
 /* Everything else. */
 void test_navmesh_all(void);
 
+/* ---------------------------------------------------------------------------------------------
+ * Paths, synchronous and queued (c_api_path_test.c). Creates threads: call after the forked cases.
+ * ------------------------------------------------------------------------------------------- */
+
+void test_paths_all(void);
+
 #endif /* NAVLINK_C_API_TEST_H */
