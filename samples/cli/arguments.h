@@ -1,0 +1,45 @@
+// Command-line arguments of one navlink command: positional arguments, options with a value
+// ("--out FILE" or "--out=FILE") and flags ("--json"). Anything not declared is refused.
+#pragma once
+
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace nl::cli {
+
+struct OptionSpec {
+    std::string name;   // without the dashes: "out"
+    bool takes_value;   // "--out FILE" vs "--json"
+};
+
+class Arguments {
+public:
+    // Parses argv[first..argc). Throws SampleError ("unknown option '--x'", "--out needs a value",
+    // "--out given twice") naming `command`.
+    Arguments(const std::string& command, int argc, char** argv, int first, const std::vector<OptionSpec>& options);
+
+    const std::vector<std::string>& positional() const { return positional_; }
+    bool has(const std::string& name) const { return values_.count(name) != 0; }
+    std::optional<std::string> value(const std::string& name) const;
+    // The value of an option the command cannot do without; throws SampleError if absent.
+    std::string required(const std::string& name) const;
+    // Throws unless there are exactly `count` positional arguments (`what` names them for the message).
+    void expect_positional(size_t count, const std::string& what) const;
+    bool wants_help() const { return help_; }
+
+private:
+    std::string command_;
+    std::vector<std::string> positional_;
+    std::map<std::string, std::string> values_;
+    bool help_ = false;
+};
+
+// Parses "X,Y,Z" into three finite floats; throws SampleError naming `option` otherwise.
+void parse_point(const std::string& text, const std::string& option, float out[3]);
+
+// Parses a whole number in [lo, hi]; throws SampleError naming `option` otherwise.
+long parse_whole_number(const std::string& text, const std::string& option, long lo, long hi);
+
+}  // namespace nl::cli
