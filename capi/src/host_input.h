@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "level/geometry.h"
+#include "level/mesh_validation.h"
 #include "util/error.h"
 #include "util/handle.h"
 
@@ -19,6 +20,17 @@ Handle to_handle(Id id) {
 template <typename Id>
 Id to_id(Handle h) {
     return Id{h.index1, h.generation};
+}
+
+// A position the host passed (3 floats), refused when not finite or beyond the coordinate limit;
+// `name` parts spell the field for the message ("rays", "[", 3, "].origin").
+template <typename... Name>
+Vec3 read_position(const float* p, const Name&... name) {
+    const Vec3 v(p[0], p[1], p[2]);
+    if (!v.allFinite()) fail(ErrorCode::InvalidArgument, name..., " is not finite");
+    if (!within_coordinate_limit(v))
+        fail(ErrorCode::InvalidArgument, name..., " is beyond the coordinate limit of +-", kCoordinateLimit, " m");
+    return v;
 }
 
 // Copies `count` positions that start every `stride` bytes (0 = packed). The host's stride need not

@@ -75,12 +75,7 @@ void write(nl_ray_hit& out, const nl::RayHit& hit) {
 }
 
 nl::Vec3 read_point(const float* p, const char* array, uint32_t index, const char* field) {
-    const nl::Vec3 v(p[0], p[1], p[2]);
-    if (!v.allFinite()) fail(ErrorCode::InvalidArgument, array, "[", index, "].", field, " is not finite");
-    if (!nl::within_coordinate_limit(v))
-        fail(ErrorCode::InvalidArgument, array, "[", index, "].", field, " is beyond the coordinate limit of +-",
-             NL_COORDINATE_LIMIT, " m");
-    return v;
+    return nl::capi::read_position(p, array, "[", index, "].", field);
 }
 
 // Unit direction of any finite nonzero vector: scaled by its largest component first, so neither

@@ -104,11 +104,7 @@ nl_link to_c(const nl::StoredLink& stored, nl::Handle navmesh) {
     return c;
 }
 
-nl::Vec3 read_end(const float* p, const char* name) {
-    const nl::Vec3 v(p[0], p[1], p[2]);
-    if (!nl::within_coordinate_limit(v)) fail(ErrorCode::InvalidArgument, "def->", name, " is not finite or beyond the limit");
-    return v;
-}
+nl::Vec3 read_end(const float* p, const char* name) { return nl::capi::read_position(p, "def->", name); }
 
 // A host's link def as a core link on `mesh`: both ends must be near the navmesh.
 nl::Link link_from_def(const nl_link_def& in, const nl::NavMesh& mesh) {

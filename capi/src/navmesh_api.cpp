@@ -114,6 +114,7 @@ NL_API nl_status nl_navmesh_remove(nl_world* world, nl_navmesh_id navmesh) {
         w.navmeshes->remove(to_handle(navmesh));
         w.links->remove_navmesh(to_handle(navmesh));
         w.bakes->remove(to_handle(navmesh));
+        w.path_graphs->forget(to_handle(navmesh));
     });
 }
 

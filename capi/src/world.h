@@ -8,11 +8,14 @@
 #include "links/link_store.h"
 #include "navlink/navlink.h"
 #include "navmesh/navmesh_registry.h"
+#include "path/path_graph_cache.h"
+#include "path/path_queue.h"
 #include "plugin_registry.h"
 #include "util/task_system.h"
 
-// Members are destroyed in reverse order: plugins go first (their destroy functions may still use
-// the world), the task system last.
+// Members are destroyed in reverse order: the path queue goes first (its workers stop, requests still
+// queued finish as cancelled), then plugins (their destroy functions may still use the world), the
+// task system last.
 struct nl_world {
     nl_world_def def;
     uint32_t handle_tag = 0;
@@ -22,6 +25,8 @@ struct nl_world {
     std::unique_ptr<nl::LinkStore> links;
     std::unique_ptr<nl::LinkBakes> bakes;  // each navmesh's last bake, for nl_navmesh_update_links_in_box
     std::unique_ptr<nl::capi::PluginRegistry> plugins;
+    std::unique_ptr<nl::PathGraphCache> path_graphs;
+    std::unique_ptr<nl::PathQueue> paths;
 };
 
 namespace nl::capi {

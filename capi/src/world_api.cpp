@@ -36,6 +36,7 @@ NL_API nl_world_def nl_default_world_def(void) {
     def.log_fn = nullptr;
     def.log_user = nullptr;
     def.log_level = NL_LOG_WARNING;
+    def.path_worker_count = NL_WORKERS_AUTO;
     return def;
 }
 
@@ -46,6 +47,9 @@ NL_API nl_status nl_world_create(const nl_world_def* def, nl_world** out_world) 
             def ? nl::capi::read_growable(*def, nl_default_world_def(), kWorldDefFirstSize, "def") : nl_default_world_def();
         if (settings.worker_count < NL_WORKERS_AUTO)
             fail(ErrorCode::InvalidArgument, "def->worker_count is ", settings.worker_count,
+                 " (use NL_WORKERS_AUTO, 0 or a positive count)");
+        if (settings.path_worker_count < NL_WORKERS_AUTO)
+            fail(ErrorCode::InvalidArgument, "def->path_worker_count is ", settings.path_worker_count,
                  " (use NL_WORKERS_AUTO, 0 or a positive count)");
         if (settings.log_level > NL_LOG_DEBUG)
             fail(ErrorCode::InvalidArgument, "def->log_level is ", settings.log_level, " (at most NL_LOG_DEBUG)");
@@ -59,6 +63,9 @@ NL_API nl_status nl_world_create(const nl_world_def* def, nl_world** out_world) 
         world->bakes = std::make_unique<nl::LinkBakes>();
         world->plugins = std::make_unique<nl::capi::PluginRegistry>(*world, world->handle_tag);
         nl::capi::register_builtin_plugins(*world->plugins);
+        world->path_graphs = std::make_unique<nl::PathGraphCache>();
+        const int path_workers = settings.path_worker_count == 0 ? 0 : resolve_worker_count(settings.path_worker_count);
+        world->paths = std::make_unique<nl::PathQueue>(world->handle_tag, static_cast<unsigned>(path_workers));
         *out_world = world.release();
     });
 }

@@ -13,6 +13,13 @@ Vec3 NavMesh::centre(uint32_t p) const {
     return sum / static_cast<float>(n);
 }
 
+size_t NavMesh::memory_bytes() const {
+    auto bytes = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
+    return bytes(vertices_) + bytes(first_corner_) + bytes(corners_) + bytes(neighbours_) + bytes(areas_) +
+           bytes(on_outline_) + bytes(normals_) + bytes(polygon_bounds_) + bytes(detail_vertices_) +
+           bytes(detail_triangles_) + bytes(first_detail_triangle_) + bytes(boundary_edges_) + grid_.memory_bytes();
+}
+
 bool NavMesh::over_polygon(uint32_t p, float x, float z) const {
     const uint32_t n = corner_count(p);
     for (uint32_t k = 0; k < n; ++k) {

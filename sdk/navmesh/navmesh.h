@@ -61,6 +61,10 @@ public:
     Vec3 centre(uint32_t p) const;
     const Aabb& polygon_bounds(uint32_t p) const { return polygon_bounds_[p]; }
 
+    // True for a vertex on the navmesh's outline (a corner of a boundary or non-manifold edge):
+    // a body wider than the navmesh's agent must keep away from it.
+    bool on_outline(uint32_t v) const { return on_outline_[v] != 0; }
+
     const std::vector<BoundaryEdge>& boundary_edges() const { return boundary_edges_; }
     uint32_t portal_count() const { return portal_count_; }
     const AgentType& agent() const { return agent_; }
@@ -75,6 +79,8 @@ public:
     // `point`, at the detail height; elsewhere the nearest point of the polygon's outline.
     Vec3 closest_point_on_polygon(uint32_t p, const Vec3& point) const;
     bool over_polygon(uint32_t p, float x, float z) const;
+    // Heap bytes held, for comparing memory with other navmesh formats.
+    size_t memory_bytes() const;
     // Height of polygon p's surface (detail triangles, or its own fan) at (x, z) over it.
     float surface_height(uint32_t p, float x, float z) const;
 
@@ -86,6 +92,7 @@ private:
     std::vector<uint32_t> corners_;
     std::vector<uint32_t> neighbours_;
     std::vector<uint8_t> areas_;
+    std::vector<uint8_t> on_outline_;  // per vertex
     std::vector<Vec3> normals_;
     std::vector<Aabb> polygon_bounds_;
     // Surface: detail triangles (indices into detail_vertices_) per polygon, when the source had them.

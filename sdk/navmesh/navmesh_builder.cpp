@@ -226,6 +226,7 @@ private:
             return x.key != y.key ? x.key < y.key : x.slot < y.slot;
         });
         m.neighbours_.assign(m.corners_.size(), kNoPolygon);
+        m.on_outline_.assign(m.vertices_.size(), 0);
         for (size_t i = 0; i < edges.size();) {
             size_t j = i;
             while (j < edges.size() && edges[j].key == edges[i].key) ++j;
@@ -233,9 +234,14 @@ private:
                 m.neighbours_[edges[i].slot] = edges[i + 1].polygon;
                 m.neighbours_[edges[i + 1].slot] = edges[i].polygon;
                 ++m.portal_count_;
-            } else if (j - i > 2) {
-                ++m.repairs_.non_manifold_edges;  // no neighbours, not an outline either
             } else {
+                // A boundary edge, or one of three or more polygons (it connects none): the walkable surface ends.
+                m.on_outline_[static_cast<uint32_t>(edges[i].key >> 32)] = 1;
+                m.on_outline_[static_cast<uint32_t>(edges[i].key)] = 1;
+            }
+            if (j - i > 2) {
+                ++m.repairs_.non_manifold_edges;  // no neighbours, not an outline either
+            } else if (j - i == 1) {
                 boundary_slots_.push_back(edges[i].slot);
             }
             i = j;

@@ -20,6 +20,10 @@ public:
     void visit(const Vec3& lo, const Vec3& hi, const std::vector<Aabb>& polygon_bounds,
                FunctionRef<void(uint32_t)> visit) const;
 
+    size_t memory_bytes() const {
+        return (cell_start_.capacity() + cell_polygons_.capacity()) * sizeof(uint32_t);
+    }
+
 private:
     int cell_x(float x) const;
     int cell_z(float z) const;

@@ -1,0 +1,229 @@
+// nl_path_*: path requests, synchronous and queued, over the core's planner and queue.
+#include <cmath>
+#include <cstddef>
+
+#include "entry_guard.h"
+#include "host_input.h"
+#include "path/path_planner.h"
+#include "world.h"
+
+using nl::ErrorCode;
+using nl::fail;
+using nl::capi::deref;
+using nl::capi::guarded;
+using nl::capi::require;
+using nl::capi::to_handle;
+using nl::capi::to_id;
+
+namespace {
+
+constexpr size_t kRequestFirstSize = offsetof(nl_path_request_def, user) + sizeof(void*);
+constexpr size_t kResultFirstSize = offsetof(nl_path_result, goal) + 3 * sizeof(float);
+constexpr size_t kStatsFirstSize = offsetof(nl_path_queue_stats, finished) + sizeof(uint64_t);
+constexpr uint32_t kMaxAreaCosts = 256;
+
+static_assert(uint32_t(nl::PathOutcome::Failed) == NL_PATH_FAILED && uint32_t(nl::PathOutcome::Partial) == NL_PATH_PARTIAL,
+              "core and header disagree on path outcomes");
+
+float read_amount(float value, const char* name) {
+    if (!std::isfinite(value) || value < 0.0f) fail(ErrorCode::InvalidArgument, "def->", name, " is ", value, " (finite, >= 0)");
+    return value;
+}
+
+nl::PathQuery read_query(const nl_path_request_def& def) {
+    nl::PathQuery q;
+    q.start = nl::capi::read_position(def.start, "def->start");
+    q.goal = nl::capi::read_position(def.goal, "def->goal");
+    q.search_half_extents = nl::capi::read_position(def.search_half_extents, "def->search_half_extents");
+    if (!(q.search_half_extents.array() > 0.0f).all())
+        fail(ErrorCode::InvalidArgument, "def->search_half_extents must be > 0 in each axis");
+    q.agent.max_jump_distance = read_amount(def.agent.max_jump_distance, "agent.max_jump_distance");
+    q.agent.max_jump_height = read_amount(def.agent.max_jump_height, "agent.max_jump_height");
+    q.agent.max_drop_height = read_amount(def.agent.max_drop_height, "agent.max_drop_height");
+    q.agent.radius = read_amount(def.agent.radius, "agent.radius");
+    q.agent.abilities = def.agent.abilities;
+    if (def.area_cost_count > kMaxAreaCosts)
+        fail(ErrorCode::InvalidArgument, "def->area_cost_count is ", def.area_cost_count, " (at most ", kMaxAreaCosts, ")");
+    if (def.area_cost_count > 0) require(def.area_costs, "def->area_costs");
+    q.area_costs.assign(def.area_costs, def.area_costs + def.area_cost_count);
+    for (uint32_t i = 0; i < def.area_cost_count; ++i) {
+        if (!std::isfinite(q.area_costs[i]) || q.area_costs[i] < 0.0f)
+            fail(ErrorCode::InvalidArgument, "def->area_costs[", i, "] is ", q.area_costs[i], " (finite, >= 0)");
+    }
+    q.link_cost = read_amount(def.link_cost, "link_cost");
+    q.max_nodes = def.max_nodes;
+    q.accept_partial = def.accept_partial != 0;
+    return q;
+}
+
+struct Request {
+    nl_path_request_def def;
+    nl::PathQuery query;
+    std::shared_ptr<const nl::PathGraph> graph;
+};
+
+// Validates a request and takes the snapshot it will read: the navmesh and its links as they are now.
+Request read_request(nl_world& w, const nl_path_request_def* in) {
+    require(in, "def");
+    Request r;
+    r.def = nl::capi::read_growable(*in, nl_default_path_request_def(), kRequestFirstSize, "def");
+    r.query = read_query(r.def);
+    const nl::Handle navmesh = to_handle(r.def.navmesh);
+    r.graph = w.path_graphs->get(navmesh, w.navmeshes->get(navmesh), w.links->snapshot(navmesh));
+    return r;
+}
+
+nl_path_point to_c(const nl::PathPoint& p) {
+    nl_path_point c{};
+    Eigen::Map<nl::Vec3>(c.position) = p.position;
+    c.polygon = p.polygon;
+    c.segment = p.segment;
+    c.link = to_id<nl_link_id>(p.link);
+    Eigen::Map<nl::Vec3>(c.apex) = p.apex;
+    c.reversed = p.reversed ? 1 : 0;
+    return c;
+}
+
+nl_path_result to_c(const nl::PathResult& r) {
+    nl_path_result c{};
+    c.size = sizeof(nl_path_result);
+    c.outcome = static_cast<nl_path_outcome>(r.outcome);
+    c.status = r.outcome == nl::PathOutcome::Failed
+                   ? NL_STATUS_FAILURE | nl::capi::to_status(static_cast<ErrorCode>(r.failure))
+                   : NL_STATUS_SUCCESS;
+    c.point_count = static_cast<uint32_t>(r.points.size());
+    c.links_used = r.links_used;
+    c.nodes_visited = r.nodes_visited;
+    c.out_of_nodes = r.out_of_nodes ? 1 : 0;
+    c.length = r.length;
+    c.cost = r.cost;
+    Eigen::Map<nl::Vec3>(c.start) = r.start;
+    Eigen::Map<nl::Vec3>(c.goal) = r.goal;
+    return c;
+}
+
+// Writes the result, then the points with the two-call pattern (the result stays written when the
+// points do not fit, so the caller learns the count and the outcome in one call).
+void write_result(const nl::PathResult& r, nl_path_result* out_result, nl_path_point* out_points, uint32_t capacity,
+                  uint32_t* out_count) {
+    require(out_result, "out_result");
+    require(out_count, "out_count");
+    if (!out_points && capacity > 0) fail(ErrorCode::InvalidArgument, "out_points is null but capacity is ", capacity);
+    nl::capi::write_growable(out_result, to_c(r), kResultFirstSize, "out_result");
+    nl::capi::list_into(r.points, out_points, capacity, out_count, "out_points", [](const nl::PathPoint& p) { return to_c(p); });
+}
+
+// The status of a call that returned a result: partial paths carry PARTIAL_RESULT, as Detour's do.
+nl_status with_detail(nl_status status, bool partial) {
+    if (!NL_SUCCEEDED(status) || !partial) return status;
+    return nl::capi::record(nullptr, nullptr, status | NL_STATUS_PARTIAL_RESULT, "");
+}
+
+}  // namespace
+
+extern "C" {
+
+NL_API nl_agent_capabilities nl_default_agent_capabilities(void) {
+    const nl::AgentCapabilities core;
+    return nl_agent_capabilities{core.max_jump_distance, core.max_jump_height, core.max_drop_height, core.radius,
+                                 core.abilities};
+}
+
+NL_API nl_path_request_def nl_default_path_request_def(void) {
+    const nl::PathQuery core;
+    nl_path_request_def def{};
+    def.size = sizeof(nl_path_request_def);
+    for (int i = 0; i < 3; ++i) def.search_half_extents[i] = core.search_half_extents[i];
+    def.agent = nl_default_agent_capabilities();
+    def.link_cost = core.link_cost;
+    def.max_nodes = core.max_nodes;
+    def.accept_partial = core.accept_partial ? 1 : 0;
+    return def;
+}
+
+NL_API nl_status nl_path_find(nl_world* world, const nl_path_request_def* def, nl_path_result* out_result,
+                              nl_path_point* out_points, uint32_t capacity, uint32_t* out_count) {
+    bool partial = false;
+    const nl_status status = guarded("nl_path_find", world, [&] {
+        require(out_result, "out_result");
+        const Request request = read_request(deref(world), def);
+        const nl::PathResult result = nl::plan_path(*request.graph, request.query);
+        partial = result.outcome == nl::PathOutcome::Partial;
+        write_result(result, out_result, out_points, capacity, out_count);
+    });
+    return with_detail(status, partial);
+}
+
+NL_API nl_status nl_path_request(nl_world* world, const nl_path_request_def* def, nl_path_ticket* out_ticket) {
+    return guarded("nl_path_request", world, [&] {
+        require(out_ticket, "out_ticket");
+        nl_world& w = deref(world);
+        Request request = read_request(w, def);
+        nl::PathCallback callback;
+        if (nl_path_callback* const c_callback = request.def.callback) {
+            void* const user = request.def.user;
+            callback = [c_callback, user](nl::Handle ticket, nl::PathOutcome outcome) {
+                c_callback(user, to_id<nl_path_ticket>(ticket), static_cast<nl_path_outcome>(outcome));
+            };
+        }
+        const nl::Handle ticket = w.paths->submit(std::move(request.graph), std::move(request.query), std::move(callback));
+        *out_ticket = to_id<nl_path_ticket>(ticket);
+    });
+}
+
+NL_API nl_status nl_path_poll(const nl_world* world, nl_path_ticket ticket, nl_path_outcome* out_outcome) {
+    return guarded("nl_path_poll", world, [&] {
+        require(out_outcome, "out_outcome");
+        *out_outcome = static_cast<nl_path_outcome>(deref(world).paths->poll(to_handle(ticket)));
+    });
+}
+
+NL_API nl_status nl_path_get_result(const nl_world* world, nl_path_ticket ticket, nl_path_result* out_result,
+                                    nl_path_point* out_points, uint32_t capacity, uint32_t* out_count) {
+    bool finished = false, partial = false;
+    const nl_status status = guarded("nl_path_get_result", world, [&] {
+        require(out_result, "out_result");
+        require(out_count, "out_count");
+        finished = deref(world).paths->read(to_handle(ticket), [&](const nl::PathResult& result) {
+            partial = result.outcome == nl::PathOutcome::Partial;
+            write_result(result, out_result, out_points, capacity, out_count);
+        });
+    });
+    if (NL_SUCCEEDED(status) && !finished) return nl::capi::record(nullptr, nullptr, NL_STATUS_IN_PROGRESS, "");
+    return with_detail(status, partial);
+}
+
+NL_API nl_status nl_path_cancel(nl_world* world, nl_path_ticket ticket) {
+    return guarded("nl_path_cancel", world, [&] { deref(world).paths->cancel(to_handle(ticket)); });
+}
+
+NL_API nl_status nl_path_release(nl_world* world, nl_path_ticket ticket) {
+    return guarded("nl_path_release", world, [&] { deref(world).paths->release(to_handle(ticket)); });
+}
+
+NL_API nl_status nl_path_process(nl_world* world, uint32_t max_requests, double max_milliseconds,
+                                 uint32_t* out_processed) {
+    return guarded("nl_path_process", world, [&] {
+        if (std::isnan(max_milliseconds)) fail(ErrorCode::InvalidArgument, "max_milliseconds is NaN");
+        const uint32_t processed = deref(world).paths->process(max_requests, max_milliseconds);
+        if (out_processed) *out_processed = processed;
+    });
+}
+
+NL_API nl_status nl_path_get_queue_stats(const nl_world* world, nl_path_queue_stats* out_stats) {
+    return guarded("nl_path_get_queue_stats", world, [&] {
+        require(out_stats, "out_stats");
+        const nl::PathQueueStats s = deref(world).paths->stats();
+        nl_path_queue_stats c{};
+        c.size = sizeof(c);
+        c.workers = s.workers;
+        c.queued = s.queued;
+        c.running = s.running;
+        c.unreleased = s.unreleased;
+        c.submitted = s.submitted;
+        c.finished = s.finished;
+        nl::capi::write_growable(out_stats, c, kStatsFirstSize, "out_stats");
+    });
+}
+
+}  // extern "C"

@@ -1,0 +1,48 @@
+// What a search reads: one navmesh and one moment of its links, with the links indexed by the
+// polygon they leave from. Immutable, so any number of searches share it; an edit to the links makes
+// the next request build a new one while running searches keep theirs.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+
+#include "links/link_store.h"
+#include "navmesh/navmesh.h"
+
+namespace nl {
+
+// A way out of a polygon over a link: link index in the snapshot, and which way it is taken.
+struct LinkExit {
+    uint32_t link;
+    uint32_t reversed;  // 1: from the link's end to its start
+};
+
+class PathGraph {
+public:
+    PathGraph(std::shared_ptr<const NavMesh> navmesh, std::shared_ptr<const LinkSnapshot> links);
+
+    const NavMesh& navmesh() const { return *navmesh_; }
+    const std::shared_ptr<const NavMesh>& navmesh_ptr() const { return navmesh_; }
+    const std::shared_ptr<const LinkSnapshot>& links_ptr() const { return links_; }
+    const StoredLink& link(uint32_t index) const { return (*links_)[index]; }
+
+    // The enabled links leaving polygon p, as [begin, end).
+    const LinkExit* exits_begin(uint32_t p) const { return first_exit_.empty() ? nullptr : &exits_[first_exit_[p]]; }
+    const LinkExit* exits_end(uint32_t p) const { return first_exit_.empty() ? nullptr : &exits_[first_exit_[p + 1]]; }
+
+    // The smallest cost per metre a link offers (its cost modifier), so the heuristic stays below
+    // any real cost; 1 without links.
+    float cheapest_link_per_metre() const { return cheapest_link_per_metre_; }
+
+    // Heap bytes of the link index (the navmesh counts its own).
+    size_t link_index_bytes() const;
+
+private:
+    std::shared_ptr<const NavMesh> navmesh_;
+    std::shared_ptr<const LinkSnapshot> links_;
+    std::vector<uint32_t> first_exit_;  // polygon_count + 1 offsets into exits_; empty without links
+    std::vector<LinkExit> exits_;
+    float cheapest_link_per_metre_ = 1.0f;
+};
+
+}  // namespace nl

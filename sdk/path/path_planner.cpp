@@ -1,0 +1,116 @@
+#include "path/path_planner.h"
+
+#include <algorithm>
+
+#include "path/corridor_search.h"
+#include "path/string_pulling.h"
+
+namespace nl {
+namespace {
+
+// Turns a corridor into path points, stretch by stretch: a walk through portals, then a link, then
+// the next walk from where the link lands.
+class PathAssembler {
+public:
+    PathAssembler(const PathGraph& graph, const PathQuery& query, const CorridorSearch& corridor, PathResult& result)
+        : graph_(graph), mesh_(graph.navmesh()), corridor_(corridor), result_(result),
+          margin_(std::max(0.0f, query.agent.radius - mesh_.agent().radius)) {}
+
+    void assemble(const Vec3& start, const Vec3& end) {
+        const std::vector<CorridorStep>& steps = corridor_.steps;
+        Vec3 walk_start = start;
+        size_t first = 0;
+        for (size_t i = 1; i < steps.size(); ++i) {
+            if (!steps[i].by_link()) continue;
+            const StoredLink& stored = graph_.link(steps[i].link());
+            const Link& link = stored.link;
+            const bool reversed = steps[i].reversed();
+            walk(first, i - 1, walk_start, reversed ? link.end : link.start);
+            PathPoint& takeoff = result_.points.back();
+            takeoff.segment = reversed && link.kind == LinkKind::Drop ? uint32_t(LinkKind::Jump) : uint32_t(link.kind);
+            takeoff.link = stored.id;
+            takeoff.apex = link.apex;
+            takeoff.reversed = reversed;
+            ++result_.links_used;
+            walk_start = reversed ? link.start : link.end;
+            first = i;
+        }
+        walk(first, steps.size() - 1, walk_start, end);
+        for (size_t i = 1; i < result_.points.size(); ++i)
+            result_.length += (result_.points[i].position - result_.points[i - 1].position).norm();
+    }
+
+private:
+    // Walks from `from` in steps[first] to `to` in steps[last] through the portals between them.
+    void walk(size_t first, size_t last, const Vec3& from, const Vec3& to) {
+        portals_.clear();
+        for (size_t i = first + 1; i <= last; ++i) {
+            PortalSpan span;
+            portal_span(mesh_, corridor_.steps[i - 1].polygon, corridor_.steps[i].edge(), margin_, span);
+            portals_.push_back(span);
+        }
+        pulled_.clear();
+        pull_string(from, to, portals_, pulled_);
+        for (const PulledPoint& pulled : pulled_) {
+            const size_t step = first + std::min<size_t>(pulled.portal, last - first);
+            const PathPoint point{pulled.position, corridor_.steps[step].polygon, kSegmentWalk, Handle{}, pulled.position, false};
+            // A link landing where the next one takes off, or a walk of no length, adds no point.
+            if (!result_.points.empty() && result_.points.back().position == point.position &&
+                result_.points.back().segment == kSegmentWalk) {
+                continue;
+            }
+            result_.points.push_back(point);
+        }
+    }
+
+    const PathGraph& graph_;
+    const NavMesh& mesh_;
+    const CorridorSearch& corridor_;
+    PathResult& result_;
+    const float margin_;
+    std::vector<PortalSpan> portals_;
+    std::vector<PulledPoint> pulled_;
+};
+
+}  // namespace
+
+PathResult plan_path(const PathGraph& graph, const PathQuery& query, const std::atomic<bool>* cancel) {
+    const NavMesh& mesh = graph.navmesh();
+    PathResult result;
+    const NavPoint start = mesh.find_nearest(query.start, query.search_half_extents);
+    if (!start.found) {
+        result.outcome = PathOutcome::StartOffNavMesh;
+        return result;
+    }
+    const NavPoint goal = mesh.find_nearest(query.goal, query.search_half_extents);
+    result.start = start.point;
+    if (!goal.found) {
+        result.outcome = PathOutcome::GoalOffNavMesh;
+        return result;
+    }
+    result.goal = goal.point;
+
+    const CorridorSearch corridor = find_corridor(graph, query, start, goal, cancel);
+    result.nodes_visited = corridor.nodes_visited;
+    result.out_of_nodes = corridor.out_of_nodes;
+    if (corridor.cancelled) {
+        result.outcome = PathOutcome::Cancelled;
+        return result;
+    }
+    if (!corridor.reached_goal && !query.accept_partial) {
+        result.outcome = PathOutcome::NoPath;
+        return result;
+    }
+    Vec3 end = goal.point;
+    result.cost = corridor.cost;
+    if (!corridor.reached_goal) {
+        const uint32_t last = corridor.steps.back().polygon;
+        end = mesh.closest_point_on_polygon(last, goal.point);
+        result.cost += (end - corridor.last_position).norm() * query.area_cost(mesh.area(last));
+    }
+    PathAssembler(graph, query, corridor, result).assemble(start.point, end);
+    result.outcome = corridor.reached_goal ? PathOutcome::Complete : PathOutcome::Partial;
+    return result;
+}
+
+}  // namespace nl

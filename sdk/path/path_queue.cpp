@@ -1,0 +1,208 @@
+#include "path/path_queue.h"
+
+#include <chrono>
+#include <new>
+
+#include "path/path_planner.h"
+#include "util/error.h"
+
+namespace nl {
+namespace {
+
+PathResult failed(ErrorCode code) {
+    PathResult result;
+    result.outcome = PathOutcome::Failed;
+    result.failure = static_cast<uint32_t>(code);
+    return result;
+}
+
+PathResult cancelled() {
+    PathResult result;
+    result.outcome = PathOutcome::Cancelled;
+    return result;
+}
+
+}  // namespace
+
+PathQueue::PathQueue(uint32_t handle_tag, unsigned workers) : tickets_(handle_tag) {
+    try {
+        for (unsigned i = 0; i < workers; ++i) workers_.emplace_back([this] { work(); });
+    } catch (...) {
+        {
+            std::lock_guard lock(mutex_);
+            stopping_ = true;
+        }
+        wake_.notify_all();
+        for (std::thread& worker : workers_) worker.join();
+        throw;
+    }
+}
+
+PathQueue::~PathQueue() {
+    {
+        std::lock_guard lock(mutex_);
+        stopping_ = true;
+    }
+    wake_.notify_all();
+    for (std::thread& worker : workers_) worker.join();
+    std::unique_lock lock(mutex_);
+    while (!queue_.empty()) {
+        const Handle h = queue_.front();
+        queue_.pop_front();
+        Ticket* ticket = tickets_.find(h);
+        if (!ticket || ticket->running || ticket->result.outcome != PathOutcome::Pending) continue;
+        --queued_;
+        finish(lock, h, cancelled());
+    }
+}
+
+Handle PathQueue::submit(std::shared_ptr<const PathGraph> graph, PathQuery query, PathCallback callback) {
+    auto job = std::make_shared<Job>();
+    job->graph = std::move(graph);
+    job->query = std::move(query);
+    job->callback = std::move(callback);
+    Handle h;
+    {
+        std::lock_guard lock(mutex_);
+        h = tickets_.insert(Ticket{std::move(job), PathResult{}, false, false});
+        try {
+            queue_.push_back(h);
+        } catch (...) {
+            tickets_.erase(h);  // not accepted: no ticket, no callback
+            throw;
+        }
+        ++queued_;
+        ++submitted_;
+    }
+    wake_.notify_one();
+    return h;
+}
+
+PathQueue::Ticket& PathQueue::find(Handle ticket) {
+    Ticket* found = tickets_.find(ticket);
+    if (!found) fail_stale("path ticket", ticket);
+    return *found;
+}
+
+const PathQueue::Ticket& PathQueue::find(Handle ticket) const { return const_cast<PathQueue*>(this)->find(ticket); }
+
+PathOutcome PathQueue::poll(Handle ticket) const {
+    std::lock_guard lock(mutex_);
+    return find(ticket).result.outcome;
+}
+
+bool PathQueue::read(Handle ticket, FunctionRef<void(const PathResult&)> read) const {
+    std::lock_guard lock(mutex_);
+    const Ticket& t = find(ticket);
+    if (t.result.outcome == PathOutcome::Pending) return false;
+    read(t.result);
+    return true;
+}
+
+void PathQueue::cancel(Handle ticket) {
+    std::unique_lock lock(mutex_);
+    Ticket& t = find(ticket);
+    if (t.result.outcome != PathOutcome::Pending) return;
+    if (t.running) {
+        t.job->cancel.store(true, std::memory_order_relaxed);
+        return;
+    }
+    --queued_;
+    finish(lock, ticket, cancelled());
+}
+
+void PathQueue::release(Handle ticket) {
+    std::unique_lock lock(mutex_);
+    Ticket& t = find(ticket);
+    if (t.result.outcome != PathOutcome::Pending) {
+        tickets_.erase(ticket);
+        return;
+    }
+    t.released = true;  // the ticket goes when the request finishes
+    if (t.running) {
+        t.job->cancel.store(true, std::memory_order_relaxed);
+        return;
+    }
+    --queued_;
+    finish(lock, ticket, cancelled());
+}
+
+void PathQueue::work() {
+    std::unique_lock lock(mutex_);
+    for (;;) {
+        wake_.wait(lock, [&] { return stopping_ || queued_ > 0; });
+        if (stopping_) return;
+        run_next(lock);
+    }
+}
+
+bool PathQueue::run_next(std::unique_lock<std::mutex>& lock) {
+    while (!queue_.empty()) {
+        const Handle h = queue_.front();
+        queue_.pop_front();
+        Ticket* ticket = tickets_.find(h);
+        if (!ticket || ticket->running || ticket->result.outcome != PathOutcome::Pending) continue;
+        ticket->running = true;
+        --queued_;
+        ++running_;
+        const std::shared_ptr<Job> job = ticket->job;
+        lock.unlock();
+        PathResult result;
+        try {
+            result = plan_path(*job->graph, job->query, &job->cancel);
+        } catch (const std::bad_alloc&) {
+            result = failed(ErrorCode::OutOfMemory);
+        } catch (const Error& e) {
+            result = failed(e.code());
+        } catch (...) {
+            result = failed(ErrorCode::Internal);
+        }
+        lock.lock();
+        --running_;
+        finish(lock, h, std::move(result));
+        return true;
+    }
+    return false;
+}
+
+void PathQueue::finish(std::unique_lock<std::mutex>& lock, Handle h, PathResult result) {
+    Ticket& ticket = *tickets_.find(h);  // unfinished tickets are never erased
+    const PathOutcome outcome = result.outcome;
+    const PathCallback callback = std::move(ticket.job->callback);
+    ticket.running = false;
+    ticket.result = std::move(result);
+    ticket.job.reset();  // lets go of the snapshot now, not at release
+    if (ticket.released) tickets_.erase(h);
+    ++finished_;
+    if (!callback) return;
+    lock.unlock();
+    callback(h, outcome);
+    lock.lock();
+}
+
+uint32_t PathQueue::process(uint32_t max_requests, double max_milliseconds) {
+    using Clock = std::chrono::steady_clock;
+    const auto begin = Clock::now();
+    auto out_of_time = [&] {
+        return max_milliseconds > 0.0 &&
+               std::chrono::duration<double, std::milli>(Clock::now() - begin).count() >= max_milliseconds;
+    };
+    std::unique_lock lock(mutex_);
+    uint32_t done = 0;
+    while ((max_requests == 0 || done < max_requests) && !out_of_time() && run_next(lock)) ++done;
+    return done;
+}
+
+PathQueueStats PathQueue::stats() const {
+    std::lock_guard lock(mutex_);
+    PathQueueStats s;
+    s.workers = static_cast<uint32_t>(workers_.size());
+    s.queued = queued_;
+    s.running = running_;
+    s.unreleased = tickets_.size();
+    s.submitted = submitted_;
+    s.finished = finished_;
+    return s;
+}
+
+}  // namespace nl

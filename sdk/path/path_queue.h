@@ -1,0 +1,94 @@
+// Queued path requests: a ticket per request, worker threads (or the host's own calls) planning
+// them, and a completion callback. Every accepted request finishes exactly once, whether it is
+// planned, cancelled, released early or still queued when the queue is destroyed.
+#pragma once
+
+#include <atomic>
+#include <condition_variable>
+#include <cstdint>
+#include <deque>
+#include <functional>
+#include <memory>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+#include "path/path_graph.h"
+#include "path/path_query.h"
+#include "util/function_ref.h"
+#include "util/handle.h"
+
+namespace nl {
+
+// Called once per request when it finishes, outside the queue's lock.
+using PathCallback = std::function<void(Handle ticket, PathOutcome outcome)>;
+
+struct PathQueueStats {
+    uint32_t workers = 0;
+    uint32_t queued = 0;
+    uint32_t running = 0;
+    uint32_t unreleased = 0;
+    uint64_t submitted = 0;
+    uint64_t finished = 0;
+};
+
+class PathQueue {
+public:
+    // `workers` threads plan requests; with 0 only process() does.
+    PathQueue(uint32_t handle_tag, unsigned workers);
+    // Stops the workers after their current request; requests still queued finish as Cancelled.
+    ~PathQueue();
+    PathQueue(const PathQueue&) = delete;
+    PathQueue& operator=(const PathQueue&) = delete;
+
+    Handle submit(std::shared_ptr<const PathGraph> graph, PathQuery query, PathCallback callback);
+
+    // Throw InvalidHandle for an unknown ticket.
+    PathOutcome poll(Handle ticket) const;
+    // Calls `read` with the result under the queue's lock and returns true, or returns false while
+    // the request is pending.
+    bool read(Handle ticket, FunctionRef<void(const PathResult&)> read) const;
+    void cancel(Handle ticket);
+    void release(Handle ticket);
+
+    // Plans queued requests on the calling thread; returns how many it finished.
+    uint32_t process(uint32_t max_requests, double max_milliseconds);
+
+    PathQueueStats stats() const;
+
+private:
+    struct Job {
+        std::shared_ptr<const PathGraph> graph;
+        PathQuery query;
+        PathCallback callback;
+        std::atomic<bool> cancel{false};
+    };
+    struct Ticket {
+        std::shared_ptr<Job> job;
+        PathResult result;  // outcome Pending until finished
+        bool running = false;
+        bool released = false;
+    };
+
+    void work();
+    // Takes the next queued request and plans it; false if none was queued. Called with `lock` held;
+    // returns with it held.
+    bool run_next(std::unique_lock<std::mutex>& lock);
+    // Records the outcome and calls the callback with the lock released.
+    void finish(std::unique_lock<std::mutex>& lock, Handle ticket, PathResult result);
+    Ticket& find(Handle ticket);
+    const Ticket& find(Handle ticket) const;
+
+    mutable std::mutex mutex_;
+    std::condition_variable wake_;
+    SlotMap<Ticket> tickets_;
+    std::deque<Handle> queue_;  // may hold tickets cancelled or released since: skipped
+    uint32_t queued_ = 0;
+    uint32_t running_ = 0;
+    uint64_t submitted_ = 0;
+    uint64_t finished_ = 0;
+    bool stopping_ = false;
+    std::vector<std::thread> workers_;
+};
+
+}  // namespace nl

@@ -1,0 +1,40 @@
+// The part of a portal (an edge shared by two polygons) a body can pass through: a body wider than
+// the navmesh's agent keeps the difference away from outline corners, the way Recast erodes the
+// navmesh by the agent radius. Used by the search (which portals are open) and by string pulling
+// (where the path may bend), so both agree.
+#pragma once
+
+#include <cmath>
+
+#include "navmesh/navmesh.h"
+
+namespace nl {
+
+struct PortalSpan {
+    Vec3 left;
+    Vec3 right;
+};
+
+// The opening from polygon p across its edge k (corner k to k + 1), seen walking out of p: left and
+// right as the walker sees them. False if `margin` leaves no room.
+inline bool portal_span(const NavMesh& mesh, uint32_t p, uint32_t k, float margin, PortalSpan& span) {
+    const uint32_t n = mesh.corner_count(p);
+    const uint32_t a = mesh.corner(p, k), b = mesh.corner(p, k + 1 == n ? 0 : k + 1);
+    // Corners run counter-clockwise seen from above (x right, z up), so walking out across a -> b,
+    // a is on the left.
+    span.left = mesh.vertex(a);
+    span.right = mesh.vertex(b);
+    if (margin <= 0.0f) return true;
+    const bool left_on_outline = mesh.on_outline(a), right_on_outline = mesh.on_outline(b);
+    if (!left_on_outline && !right_on_outline) return true;
+    const Vec3 across = span.right - span.left;
+    const float width = std::sqrt(across.x() * across.x() + across.z() * across.z());
+    const float needed = margin * (float(left_on_outline) + float(right_on_outline));
+    if (width <= needed) return false;
+    const Vec3 step = across * (margin / width);
+    if (left_on_outline) span.left += step;
+    if (right_on_outline) span.right -= step;
+    return true;
+}
+
+}  // namespace nl

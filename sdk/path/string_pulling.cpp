@@ -1,0 +1,75 @@
+#include "path/string_pulling.h"
+
+namespace nl {
+namespace {
+
+// Twice the signed area of triangle a b c in x-z, with Detour's sign (dtTriArea2D), so that the
+// funnel below reads as Detour's: positive when c is on the walker's left looking along a -> b.
+float area2(const Vec3& a, const Vec3& b, const Vec3& c) {
+    const float abx = b.x() - a.x(), abz = b.z() - a.z();
+    const float acx = c.x() - a.x(), acz = c.z() - a.z();
+    return acx * abz - abx * acz;
+}
+
+bool same_xz(const Vec3& a, const Vec3& b) {
+    const float dx = a.x() - b.x(), dz = a.z() - b.z();
+    return dx * dx + dz * dz < 1e-12f;
+}
+
+}  // namespace
+
+void pull_string(const Vec3& start, const Vec3& end, const std::vector<PortalSpan>& portals,
+                 std::vector<PulledPoint>& out) {
+    const uint32_t count = static_cast<uint32_t>(portals.size()) + 2;
+    auto left_of = [&](uint32_t i) -> const Vec3& {
+        return i == 0 ? start : i + 1 == count ? end : portals[i - 1].left;
+    };
+    auto right_of = [&](uint32_t i) -> const Vec3& {
+        return i == 0 ? start : i + 1 == count ? end : portals[i - 1].right;
+    };
+
+    out.push_back({start, 0});
+    Vec3 apex = start, left = start, right = start;
+    uint32_t apex_index = 0, left_index = 0, right_index = 0;
+    for (uint32_t i = 1; i < count; ++i) {
+        const Vec3& next_left = left_of(i);
+        const Vec3& next_right = right_of(i);
+        // Narrow the funnel from the right, unless that crosses the left side: then the left side's
+        // end is a corner and the funnel restarts from it.
+        if (area2(apex, right, next_right) <= 0.0f) {
+            if (same_xz(apex, right) || area2(apex, left, next_right) > 0.0f) {
+                right = next_right;
+                right_index = i;
+            } else {
+                apex = left;
+                apex_index = left_index;
+                out.push_back({apex, apex_index});
+                left = right = apex;
+                left_index = right_index = apex_index;
+                i = apex_index;
+                continue;
+            }
+        }
+        if (area2(apex, left, next_left) >= 0.0f) {
+            if (same_xz(apex, left) || area2(apex, right, next_left) < 0.0f) {
+                left = next_left;
+                left_index = i;
+            } else {
+                apex = right;
+                apex_index = right_index;
+                out.push_back({apex, apex_index});
+                left = right = apex;
+                left_index = right_index = apex_index;
+                i = apex_index;
+                continue;
+            }
+        }
+    }
+    if (!same_xz(out.back().position, end) || out.size() == 1) {
+        out.push_back({end, count - 1});
+    } else {
+        out.back() = {end, count - 1};
+    }
+}
+
+}  // namespace nl
