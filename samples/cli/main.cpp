@@ -27,6 +27,8 @@ int main(int argc, char** argv) {
     const std::string command = argv[1];
     try {
         if (command == "bake") return nl::cli::run_bake(argc, argv);
+        if (command == "path") return nl::cli::run_path(argc, argv);
+        if (command == "demo") return nl::cli::run_demo(argc, argv);
         if (command == "level") return nl::cli::run_level(argc, argv);
         throw nl::samples::SampleError("unknown command '" + command + "' (see navlink --help)");
     } catch (const nl::samples::SampleError& e) {

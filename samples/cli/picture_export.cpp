@@ -15,6 +15,7 @@ void write_picture(const samples::Level& level, const samples::NavmeshContents& 
     scene.title = request.title;
     picture::ViewSettings view;
     view.oblique = request.oblique;
+    view.height = 0;  // as tall as the level needs
     picture::write_png(scene, view, request.path);
 }
 

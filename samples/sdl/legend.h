@@ -9,6 +9,7 @@
 namespace nl::picture {
 
 constexpr float kLegendWidth = 430.0f;
+constexpr float kLegendMinHeight = 560.0f;  // tall enough for three paths and two points
 
 void draw_legend(Canvas& canvas, const Scene& scene, const ViewSettings& view, const Camera& camera);
 

@@ -10,7 +10,9 @@
 
 namespace nl::picture {
 
-void write_png(const Scene& scene, const ViewSettings& view, const std::string& path) {
+void write_png(const Scene& scene, const ViewSettings& requested, const std::string& path) {
+    ViewSettings view = requested;
+    if (view.height <= 0) view.height = fitted_height(scene, view);
     // RGBA32 is bytes R, G, B, A in memory on any machine: what stbi_write_png expects.
     std::unique_ptr<SDL_Surface, decltype(&SDL_FreeSurface)> surface(
         SDL_CreateRGBSurfaceWithFormat(0, view.width, view.height, 32, SDL_PIXELFORMAT_RGBA32), SDL_FreeSurface);

@@ -8,6 +8,7 @@
 
 namespace nl::picture {
 
+// A view height of 0 or less fits the picture to the level (fitted_height).
 // Throws nl::samples::SampleError naming the file when it cannot be written.
 void write_png(const Scene& scene, const ViewSettings& view, const std::string& path);
 

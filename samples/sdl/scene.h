@@ -50,7 +50,7 @@ struct Layers {
 
 struct ViewSettings {
     int width = 1600;
-    int height = 1000;
+    int height = 1000;     // PNG files: 0 fits the height to the level
     bool oblique = false;  // false: straight down; true: from the south, 55 degrees down
     Layers layers;
 };

@@ -160,15 +160,27 @@ std::vector<SDL_FPoint> projected(const Camera& camera, const std::vector<Point3
     return out;
 }
 
-void draw_links(Canvas& canvas, const Camera& camera, const samples::NavmeshContents& nav) {
-    for (const nl_link& link : nav.links) {
-        const auto curve = projected(camera, traversal_curve(link.kind, link.start, link.end, link.apex));
-        const Rgba color = link.enabled ? palette::link_kind(link.kind) : mix(palette::link_kind(link.kind), palette::kBackground, 0.6f);
-        canvas.polyline(curve, 4.0f, palette::kShadow);
-        canvas.polyline(curve, 2.0f, color);
-        canvas.dot(curve.front(), 3.0f, color);
-        if (link.bidirectional) canvas.dot(curve.back(), 3.0f, color);
-        else canvas.arrow_head(curve[curve.size() - 3], curve.back(), 10.0f, color);
+void draw_links(Canvas& canvas, const Camera& camera, const samples::NavmeshContents& nav, bool behind_paths) {
+    // Drops first, jumps over them: there are fewer jumps and they cross gaps drops only fall into.
+    // Under paths the links step back (thinner, fainter) so the routes read first.
+    const float width = behind_paths ? 1.5f : 2.0f;
+    const uint8_t alpha = behind_paths ? 150 : 255;
+    for (nl_link_kind pass : {NL_LINK_DROP, NL_LINK_FIRST_PLUGIN_KIND, NL_LINK_MANUAL, NL_LINK_JUMP}) {
+        for (const nl_link& link : nav.links) {
+            const bool plugin = link.kind >= NL_LINK_FIRST_PLUGIN_KIND;
+            if (plugin ? pass != NL_LINK_FIRST_PLUGIN_KIND : link.kind != pass) continue;
+            const auto curve = projected(camera, traversal_curve(link.kind, link.start, link.end, link.apex));
+            Rgba color = palette::link_kind(link.kind);
+            if (!link.enabled) color = mix(color, palette::kBackground, 0.6f);
+            color.a = alpha;
+            Rgba shadow = palette::kShadow;
+            shadow.a = static_cast<uint8_t>(shadow.a * alpha / 255);
+            canvas.polyline(curve, width + 2.0f, shadow);
+            canvas.polyline(curve, width, color);
+            canvas.dot(curve.front(), width + 1.0f, color);
+            if (link.bidirectional) canvas.dot(curve.back(), width + 1.0f, color);
+            else canvas.arrow_head(curve[curve.size() - 3], curve.back(), 4.0f + 3.0f * width, color);
+        }
     }
 }
 
@@ -201,6 +213,21 @@ void draw_points(Canvas& canvas, const Camera& camera, const Scene& scene) {
 
 }  // namespace
 
+int fitted_height(const Scene& scene, const ViewSettings& view) {
+    // The map at the width available, with its proportions, but never shorter than the legend.
+    ViewSettings tall = view;
+    tall.height = 100000;
+    const SDL_FRect area = map_area(tall);
+    const float* lo = scene.level->info.bounds_min;
+    const float* hi = scene.level->info.bounds_max;
+    const float pitch = (view.oblique ? kObliquePitch : 90.0f) * static_cast<float>(M_PI) / 180.0f;
+    const float width = std::max(hi[0] - lo[0], 1e-3f);
+    const float depth = (hi[2] - lo[2]) * std::sin(pitch) + (hi[1] - lo[1]) * std::fabs(std::cos(pitch));
+    const float map_height = area.w * depth / width;
+    const float needed = kTitleHeight + 2 * kMargin + map_height;
+    return static_cast<int>(std::ceil(std::clamp(needed, view.layers.legend ? kLegendMinHeight : 200.0f, 4.0f * view.width)));
+}
+
 Camera scene_camera(const Scene& scene, const ViewSettings& view) {
     return Camera(scene.level->info.bounds_min, scene.level->info.bounds_max, map_area(view),
                   view.oblique ? kObliquePitch : 90.0f);
@@ -215,7 +242,8 @@ void draw_scene(SDL_Renderer* renderer, const Scene& scene, const ViewSettings& 
     if (view.layers.level) collect_level(scene, camera, surfaces);
     if (scene.navmesh) collect_navmesh(scene, camera, view.layers, surfaces);
     draw_surfaces(canvas, surfaces);
-    if (scene.navmesh && view.layers.links) draw_links(canvas, camera, *scene.navmesh);
+    if (scene.navmesh && view.layers.links)
+        draw_links(canvas, camera, *scene.navmesh, view.layers.paths && !scene.paths.empty());
     if (view.layers.paths) draw_paths(canvas, camera, scene);
     draw_points(canvas, camera, scene);
 
