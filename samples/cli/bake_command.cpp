@@ -15,7 +15,7 @@
 namespace nl::cli {
 
 int run_bake(int argc, char** argv) {
-    const Arguments args("bake", argc, argv, 2,
+    const samples::Arguments args("navlink bake", "bake", argc, argv, 2,
                          {{"out", true}, {"navmesh", true}, {"agent", true}, {"settings", true}, {"png", true},
                           {"oblique", false}});
     if (args.wants_help()) {

@@ -19,14 +19,14 @@
 namespace nl::cli {
 
 int run_demo(int argc, char** argv) {
-    const Arguments args("demo", argc, argv, 2, {{"seed", true}, {"out-dir", true}, {"oblique", false}});
+    const samples::Arguments args("navlink demo", "demo", argc, argv, 2, {{"seed", true}, {"out-dir", true}, {"oblique", false}});
     if (args.wants_help()) {
         std::fputs(kDemoHelp, stdout);
         return 0;
     }
     args.expect_positional(0, "");
     const auto seed = static_cast<uint32_t>(
-        args.has("seed") ? parse_whole_number(*args.value("seed"), "--seed", 0, 4294967295L) : 1);
+        args.has("seed") ? samples::parse_whole_number(*args.value("seed"), "--seed", 0, 4294967295L) : 1);
     const std::string dir = args.value("out-dir").value_or(".");
 
     const levelgen::GeneratedLevel generated = levelgen::generate_default_level(seed);

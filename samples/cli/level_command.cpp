@@ -10,7 +10,7 @@
 namespace nl::cli {
 
 int run_level(int argc, char** argv) {
-    const Arguments args("level", argc, argv, 2, {{"out", true}, {"seed", true}});
+    const samples::Arguments args("navlink level", "level", argc, argv, 2, {{"out", true}, {"seed", true}});
     if (args.wants_help()) {
         std::fputs(kLevelHelp, stdout);
         return 0;
@@ -18,7 +18,7 @@ int run_level(int argc, char** argv) {
     args.expect_positional(0, "");
     const std::string out = args.required("out");
     const auto seed = static_cast<uint32_t>(
-        args.has("seed") ? parse_whole_number(*args.value("seed"), "--seed", 0, 4294967295L) : 1);
+        args.has("seed") ? samples::parse_whole_number(*args.value("seed"), "--seed", 0, 4294967295L) : 1);
     const levelgen::GeneratedLevel level = levelgen::generate_default_level(seed);
     samples::write_text_file(out, level.to_obj());
     std::printf("wrote %s: generated default level (seed %u), %u triangles\n", out.c_str(), seed, level.triangle_count());

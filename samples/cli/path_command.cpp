@@ -17,7 +17,7 @@
 namespace nl::cli {
 
 int run_path(int argc, char** argv) {
-    const Arguments args("path", argc, argv, 2,
+    const samples::Arguments args("navlink path", "path", argc, argv, 2,
                          {{"links", true}, {"from", true}, {"to", true}, {"agent", true}, {"navmesh", true},
                           {"settings", true}, {"json", false}, {"png", true}, {"oblique", false}});
     if (args.wants_help()) {
@@ -27,8 +27,8 @@ int run_path(int argc, char** argv) {
     args.expect_positional(1, "LEVEL.obj");
     const std::string links_path = args.required("links");
     float from[3], to[3];
-    parse_point(args.required("from"), "--from", from);
-    parse_point(args.required("to"), "--to", to);
+    samples::parse_point(args.required("from"), "--from", from);
+    samples::parse_point(args.required("to"), "--to", to);
     const samples::AgentProfile agent =
         args.has("agent") ? samples::read_agent_file(*args.value("agent")) : samples::default_agent_profile();
     const samples::GenerationSettings settings = args.has("settings")

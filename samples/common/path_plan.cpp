@@ -35,6 +35,21 @@ PlannedPath find_path(nl_world* world, nl_navmesh_id navmesh, const float start[
     return path;
 }
 
+PlannedPath queued_result(const nl_world* world, nl_path_ticket ticket) {
+    PlannedPath path;
+    path.result.size = sizeof path.result;
+    path.points.resize(256);
+    uint32_t count = 0;
+    nl_status status = nl_path_get_result(world, ticket, &path.result, path.points.data(), 256, &count);
+    if (NL_FAILED(status) && (status & NL_STATUS_BUFFER_TOO_SMALL)) {
+        path.points.resize(count);
+        status = nl_path_get_result(world, ticket, &path.result, path.points.data(), count, &count);
+    }
+    check(status, "reading a path result");
+    path.points.resize(count);
+    return path;
+}
+
 std::vector<PathSegment> path_segments(const PlannedPath& path) {
     std::vector<PathSegment> out;
     for (size_t i = 0; i + 1 < path.points.size(); ++i) {

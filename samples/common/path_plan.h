@@ -30,6 +30,10 @@ PlannedPath find_path(nl_world* world, nl_navmesh_id navmesh, const float start[
 nl_path_request_def path_request(nl_navmesh_id navmesh, const float start[3], const float goal[3],
                                  const nl_agent_capabilities& agent);
 
+// The result of a finished queued request (nl_path_get_result, two calls when the path is long).
+// The ticket stays valid: release it with nl_path_release. Throws SampleError.
+PlannedPath queued_result(const nl_world* world, nl_path_ticket ticket);
+
 std::vector<PathSegment> path_segments(const PlannedPath& path);
 
 // "complete", "partial", "no path", "start off navmesh", ...

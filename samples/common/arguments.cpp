@@ -6,13 +6,11 @@
 
 #include "sample_error.h"
 
-namespace nl::cli {
+namespace nl::samples {
 
-using nl::samples::SampleError;
-
-Arguments::Arguments(const std::string& command, int argc, char** argv, int first,
+Arguments::Arguments(const std::string& program, const std::string& command, int argc, char** argv, int first,
                      const std::vector<OptionSpec>& options)
-    : command_(command) {
+    : command_(command), program_(program) {
     for (int i = first; i < argc; ++i) {
         const std::string arg = argv[i];
         if (arg == "--help" || arg == "-h") {
@@ -21,7 +19,7 @@ Arguments::Arguments(const std::string& command, int argc, char** argv, int firs
         }
         if (arg.size() < 2 || arg.compare(0, 2, "--") != 0 || arg == "--") {
             if (!arg.empty() && arg[0] == '-' && arg.size() > 1 && !std::isdigit(static_cast<unsigned char>(arg[1])))
-                throw SampleError(command_ + ": unknown option '" + arg + "' (see navlink " + command_ + " --help)");
+                throw SampleError(command_ + ": unknown option '" + arg + "' (see " + program_ + " --help)");
             positional_.push_back(arg);
             continue;
         }
@@ -30,7 +28,7 @@ Arguments::Arguments(const std::string& command, int argc, char** argv, int firs
         const OptionSpec* spec = nullptr;
         for (const OptionSpec& o : options)
             if (o.name == name) spec = &o;
-        if (!spec) throw SampleError(command_ + ": unknown option '--" + name + "' (see navlink " + command_ + " --help)");
+        if (!spec) throw SampleError(command_ + ": unknown option '--" + name + "' (see " + program_ + " --help)");
         if (values_.count(name)) throw SampleError(command_ + ": --" + name + " given twice");
         if (!spec->takes_value) {
             if (equals != std::string::npos) throw SampleError(command_ + ": --" + name + " takes no value");
@@ -53,14 +51,14 @@ std::optional<std::string> Arguments::value(const std::string& name) const {
 
 std::string Arguments::required(const std::string& name) const {
     const auto it = values_.find(name);
-    if (it == values_.end()) throw SampleError(command_ + ": --" + name + " is required (see navlink " + command_ + " --help)");
+    if (it == values_.end()) throw SampleError(command_ + ": --" + name + " is required (see " + program_ + " --help)");
     return it->second;
 }
 
 void Arguments::expect_positional(size_t count, const std::string& what) const {
-    if (positional_.size() < count) throw SampleError(command_ + ": missing " + what + " (see navlink " + command_ + " --help)");
+    if (positional_.size() < count) throw SampleError(command_ + ": missing " + what + " (see " + program_ + " --help)");
     if (positional_.size() > count)
-        throw SampleError(command_ + ": unexpected argument '" + positional_[count] + "' (see navlink " + command_ + " --help)");
+        throw SampleError(command_ + ": unexpected argument '" + positional_[count] + "' (see " + program_ + " --help)");
 }
 
 void parse_point(const std::string& text, const std::string& option, float out[3]) {
@@ -85,4 +83,4 @@ long parse_whole_number(const std::string& text, const std::string& option, long
     return value;
 }
 
-}  // namespace nl::cli
+}  // namespace nl::samples

@@ -1,4 +1,4 @@
-// Command-line arguments of one navlink command: positional arguments, options with a value
+// Command-line arguments of one sample command: positional arguments, options with a value
 // ("--out FILE" or "--out=FILE") and flags ("--json"). Anything not declared is refused.
 #pragma once
 
@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-namespace nl::cli {
+namespace nl::samples {
 
 struct OptionSpec {
     std::string name;   // without the dashes: "out"
@@ -16,9 +16,11 @@ struct OptionSpec {
 
 class Arguments {
 public:
-    // Parses argv[first..argc). Throws SampleError ("unknown option '--x'", "--out needs a value",
-    // "--out given twice") naming `command`.
-    Arguments(const std::string& command, int argc, char** argv, int first, const std::vector<OptionSpec>& options);
+    // Parses argv[first..argc). Throws SampleError ("bake: unknown option '--x' (see navlink bake
+    // --help)", "bake: --out needs a value", ...): messages start with `command` and point to
+    // `program` --help.
+    Arguments(const std::string& program, const std::string& command, int argc, char** argv, int first,
+              const std::vector<OptionSpec>& options);
 
     const std::vector<std::string>& positional() const { return positional_; }
     bool has(const std::string& name) const { return values_.count(name) != 0; }
@@ -31,6 +33,7 @@ public:
 
 private:
     std::string command_;
+    std::string program_;
     std::vector<std::string> positional_;
     std::map<std::string, std::string> values_;
     bool help_ = false;
@@ -42,4 +45,4 @@ void parse_point(const std::string& text, const std::string& option, float out[3
 // Parses a whole number in [lo, hi]; throws SampleError naming `option` otherwise.
 long parse_whole_number(const std::string& text, const std::string& option, long lo, long hi);
 
-}  // namespace nl::cli
+}  // namespace nl::samples
