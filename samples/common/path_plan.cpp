@@ -90,7 +90,8 @@ LinkCounts count_links(const PlannedPath& path) {
         const nl_segment_kind kind = path.points[i].segment;
         if (kind == NL_LINK_JUMP) ++counts.jumps;
         else if (kind == NL_LINK_DROP) ++counts.drops;
-        else if (kind != NL_SEGMENT_WALK) ++counts.other;
+        else if (kind == NL_LINK_MANUAL) ++counts.manual;
+        else if (kind != NL_SEGMENT_WALK) ++counts.plugin;
     }
     return counts;
 }
@@ -104,7 +105,8 @@ std::string describe_links(const LinkCounts& c) {
     };
     add(c.jumps, "jump", "jumps");
     add(c.drops, "drop", "drops");
-    add(c.other, "other link", "other links");
+    add(c.manual, "manual link", "manual links");
+    add(c.plugin, "plugin link", "plugin links");
     return out.empty() ? "no links" : out;
 }
 

@@ -43,11 +43,11 @@ const char* segment_name(nl_segment_kind kind);
 
 // The links a path takes, counted by kind.
 struct LinkCounts {
-    uint32_t jumps = 0, drops = 0, other = 0;
+    uint32_t jumps = 0, drops = 0, manual = 0, plugin = 0;
 };
 LinkCounts count_links(const PlannedPath& path);
 
-// "2 jumps, 1 drop" (or "no links").
+// "2 jumps, 1 drop, 1 manual link" (or "no links").
 std::string describe_links(const LinkCounts& counts);
 
 }  // namespace nl::samples

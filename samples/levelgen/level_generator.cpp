@@ -148,6 +148,10 @@ GeneratedLevel generate_default_level(uint32_t seed) {
     const Box& last = level.boxes[3];
     level.markers.push_back({"start", {first.min[0] + 2.0f, first.max[1], 3.0f}});
     level.markers.push_back({"goal", {0.5f * (last.min[0] + last.max[0]) + 1.0f, last.max[1], 3.5f}});
+    // Where a host could hang a ladder (a manual link): from the lower floor up the west side of the
+    // last platform's stair landing, a shortcut past the last flight of stairs.
+    level.markers.push_back({"ladder_bottom", {last.min[0] - 0.8f, floor_y, -2.5f}});
+    level.markers.push_back({"ladder_top", {last.min[0] + 1.5f, last.max[1], -2.5f}});
     return level;
 }
 

@@ -50,7 +50,8 @@ struct GeneratedLevel {
 // drop from, a stair route around (stairs from the lower floor to the first, second and last
 // platforms), a wall that blocks one side of the second jump, a low ceiling over one side of the first
 // gap and a narrow corridor on the lower floor. Markers "start" (on the first platform) and "goal" (on
-// the last) are the demo's route. `seed` varies sizes and heights within ranges that keep every
+// the last) are the demo's route; "ladder_bottom" and "ladder_top" a place for a ladder (a manual
+// link) from the lower floor to the last platform's stair landing. `seed` varies sizes and heights within ranges that keep every
 // feature present.
 GeneratedLevel generate_default_level(uint32_t seed);
 

@@ -81,12 +81,10 @@ void collect_level(const Scene& scene, const Camera& camera, std::vector<Surface
         const float length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
         if (length < 1e-12f) continue;
         for (float& c : n) c /= length;
-        // Seen from the front only (levels from other tools are not always closed or consistently
-        // wound, so faces towards the viewer of either winding are kept when they face up).
+        // Front faces only: a ceiling seen from above is its back, so enclosed levels (tunnels,
+        // rooms) show their floors; and walls seen edge-on from straight above are left out.
         const float facing = -(n[0] * view[0] + n[1] * view[1] + n[2] * view[2]);
-        if (facing < 0.02f && !(n[1] < -0.5f && -facing > 0.5f)) continue;
-        if (n[1] < -0.5f)
-            for (float& c : n) c = -c;  // a face wound the wrong way round: light it as the up side
+        if (facing < 0.02f) continue;
         const float lambert = std::max(0.0f, n[0] * light[0] + n[1] * light[1] + n[2] * light[2]);
         pieces.clear();
         subdivide(p[0], p[1], p[2], max_edge, 6, pieces);
