@@ -20,9 +20,13 @@ std::string one_line(std::string text) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    if (argc < 2 || !std::strcmp(argv[1], "--help") || !std::strcmp(argv[1], "-h") || !std::strcmp(argv[1], "help")) {
-        std::fputs(nl::cli::kMainHelp, argc < 2 ? stderr : stdout);
-        return argc < 2 ? 2 : 0;
+    if (argc < 2) {
+        std::fprintf(stderr, "navlink: missing command: demo, bake, path or level (see navlink --help)\n");
+        return 2;
+    }
+    if (!std::strcmp(argv[1], "--help") || !std::strcmp(argv[1], "-h") || !std::strcmp(argv[1], "help")) {
+        std::fputs(nl::cli::kMainHelp, stdout);
+        return 0;
     }
     const std::string command = argv[1];
     try {

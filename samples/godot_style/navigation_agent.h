@@ -14,7 +14,7 @@
 #include "agent_profile.h"
 #include "node.h"
 #include "path_plan.h"
-#include "signal.h"
+#include "godot_signal.h"
 #include "traversal.h"
 
 namespace nl::godot_style {
