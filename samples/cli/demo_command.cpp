@@ -45,7 +45,7 @@ int run_demo(int argc, char** argv) {
     std::printf("  route:   from (%.1f, %.1f, %.1f) on the first platform to (%.1f, %.1f, %.1f) on the last\n\n",
                 start[0], start[1], start[2], goal[0], goal[1], goal[2]);
 
-    std::printf("%-13s %7s %7s %7s | %-9s %7s  %-16s %s\n", "agent", "jump", "up", "drop", "outcome", "length", "links",
+    std::printf("%-13s %7s %7s %7s | %-9s %7s  %-16s %s\n", "agent", "across", "up", "down", "outcome", "length", "links",
                 "route (metres)");
     std::vector<picture::PathLayer> layers;
     bool all_complete = true;

@@ -36,6 +36,8 @@ bool handle_key(SDL_Keycode key, ViewerSession& session, ViewSettings& view) {
     case SDLK_g: l.legend = !l.legend; break;
     case SDLK_o: view.oblique = !view.oblique; break;
     case SDLK_s:
+        session.wait_for_paths();  // save what was asked for, not a picture mid-planning
+        session.update();
         write_png(session.scene(), view, "viewer.png");
         std::printf("wrote viewer.png\n");
         break;
