@@ -15,9 +15,9 @@
 namespace nl::cli {
 
 int run_bake(int argc, char** argv) {
-    const samples::Arguments args("navlink bake", "bake", argc, argv, 2,
-                         {{"out", true}, {"navmesh", true}, {"agent", true}, {"settings", true}, {"png", true},
-                          {"oblique", false}});
+    const samples::Arguments args(
+        "navlink bake", "bake", argc, argv, 2,
+        {{"out", true}, {"navmesh", true}, {"agent", true}, {"settings", true}, {"png", true}, {"oblique", false}});
     if (args.wants_help()) {
         std::fputs(kBakeHelp, stdout);
         return 0;
@@ -38,7 +38,8 @@ int run_bake(int argc, char** argv) {
     const samples::NavmeshContents contents = samples::read_navmesh_contents(level.world(), level.navmesh());
     std::printf("level: %s (%u triangles)\n", level.level().name.c_str(), level.level().info.triangle_count);
     std::printf("navmesh: %zu polygons, %zu boundary edges (%s)\n", contents.polygons.size(),
-                contents.boundary_edges.size(), args.has("navmesh") ? args.value("navmesh")->c_str() : "built by recast");
+                contents.boundary_edges.size(),
+                args.has("navmesh") ? args.value("navmesh")->c_str() : "built by recast");
     print_bake_report(stdout, report, contents.links, level.times());
     std::printf("wrote %s\n", out.c_str());
     if (const auto png = args.value("png")) {

@@ -22,10 +22,14 @@ void print_bake_report(std::FILE* out, const nl_bake_report& r, const std::vecto
         const char* reason;
         uint32_t count;
     } rejected[] = {
-        {"wall between edge and rim", r.rejected_wall}, {"not a ledge", r.rejected_not_ledge},
-        {"distance", r.rejected_distance},              {"rise", r.rejected_rise},
-        {"angle", r.rejected_angle},                    {"no landing", r.rejected_no_landing},
-        {"clearance", r.rejected_clearance},            {"duplicate", r.rejected_duplicate},
+        {"wall between edge and rim", r.rejected_wall},
+        {"not a ledge", r.rejected_not_ledge},
+        {"distance", r.rejected_distance},
+        {"rise", r.rejected_rise},
+        {"angle", r.rejected_angle},
+        {"no landing", r.rejected_no_landing},
+        {"clearance", r.rejected_clearance},
+        {"duplicate", r.rejected_duplicate},
     };
     for (const auto& item : rejected) std::fprintf(out, "  %-26s %8u\n", item.reason, item.count);
     std::fprintf(out, "time (ms):\n");
@@ -33,9 +37,10 @@ void print_bake_report(std::FILE* out, const nl_bake_report& r, const std::vecto
         const char* stage;
         double ms;
     } stages[] = {
-        {"level load", times.load_ms},     {"navmesh", times.navmesh_ms},       {"link edges", r.milliseconds_edges},
-        {"take-off points", r.milliseconds_takeoff}, {"jumps", r.milliseconds_jumps}, {"drops", r.milliseconds_drops},
-        {"merge", r.milliseconds_merge},   {"links total", r.milliseconds_total},
+        {"level load", times.load_ms},        {"navmesh", times.navmesh_ms},
+        {"link edges", r.milliseconds_edges}, {"take-off points", r.milliseconds_takeoff},
+        {"jumps", r.milliseconds_jumps},      {"drops", r.milliseconds_drops},
+        {"merge", r.milliseconds_merge},      {"links total", r.milliseconds_total},
     };
     for (const auto& item : stages) std::fprintf(out, "  %-26s %8.1f\n", item.stage, item.ms);
     std::fprintf(out, "  %-26s %8llu\n", "rays cast", static_cast<unsigned long long>(r.rays_cast));

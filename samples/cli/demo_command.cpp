@@ -19,14 +19,14 @@
 namespace nl::cli {
 
 int run_demo(int argc, char** argv) {
-    const samples::Arguments args("navlink demo", "demo", argc, argv, 2, {{"seed", true}, {"out-dir", true}, {"oblique", false}});
+    const samples::Arguments args("navlink demo", "demo", argc, argv, 2,
+                                  {{"seed", true}, {"out-dir", true}, {"oblique", false}});
     if (args.wants_help()) {
         std::fputs(kDemoHelp, stdout);
         return 0;
     }
     args.expect_positional(0, "");
-    const auto seed = static_cast<uint32_t>(
-        args.has("seed") ? samples::parse_whole_number(*args.value("seed"), "--seed", 0, 4294967295L) : 1);
+    const auto seed = static_cast<uint32_t>(args.whole_number("seed", 0, 4294967295L, 1));
     const std::string dir = args.value("out-dir").value_or(".");
 
     const levelgen::GeneratedLevel generated = levelgen::generate_default_level(seed);
@@ -39,19 +39,21 @@ int run_demo(int argc, char** argv) {
     const float* start = generated.marker("start")->position;
     const float* goal = generated.marker("goal")->position;
     std::printf("NavLink demo: %s, %u triangles\n", level.level().name.c_str(), level.level().info.triangle_count);
-    std::printf("  navmesh: %zu polygons, built by recast in %.0f ms\n", contents.polygons.size(), level.times().navmesh_ms);
+    std::printf("  navmesh: %zu polygons, built by recast in %.0f ms\n", contents.polygons.size(),
+                level.times().navmesh_ms);
     std::printf("  links:   %u jumps and %u drops (up to %.1f m long), generated in %.0f ms\n", report.jump_links,
                 report.drop_links, settings.max_link_distance, report.milliseconds_total);
     std::printf("  route:   from (%.1f, %.1f, %.1f) on the first platform to (%.1f, %.1f, %.1f) on the last\n\n",
                 start[0], start[1], start[2], goal[0], goal[1], goal[2]);
 
-    std::printf("%-13s %7s %7s %7s | %-9s %7s  %-16s %s\n", "agent", "across", "up", "down", "outcome", "length", "links",
-                "route (metres)");
+    std::printf("%-13s %7s %7s %7s | %-9s %7s  %-16s %s\n", "agent", "across", "up", "down", "outcome", "length",
+                "links", "route (metres)");
     std::vector<picture::PathLayer> layers;
     bool all_complete = true;
     for (size_t i = 0; i < agents.size(); ++i) {
         const samples::AgentProfile& a = agents[i];
-        const samples::PlannedPath path = samples::find_path(level.world(), level.navmesh(), start, goal, a.capabilities);
+        const samples::PlannedPath path =
+            samples::find_path(level.world(), level.navmesh(), start, goal, a.capabilities);
         const std::string links = samples::describe_links(samples::count_links(path));
         std::printf("%-13s %5.1f m %5.1f m %5.1f m | %-9s %5.1f m  %-16s %s\n", a.name.c_str(),
                     a.capabilities.max_jump_distance, a.capabilities.max_jump_height, a.capabilities.max_drop_height,

@@ -18,8 +18,15 @@ namespace nl::cli {
 
 int run_path(int argc, char** argv) {
     const samples::Arguments args("navlink path", "path", argc, argv, 2,
-                         {{"links", true}, {"from", true}, {"to", true}, {"agent", true}, {"navmesh", true},
-                          {"settings", true}, {"json", false}, {"png", true}, {"oblique", false}});
+                                  {{"links", true},
+                                   {"from", true},
+                                   {"to", true},
+                                   {"agent", true},
+                                   {"navmesh", true},
+                                   {"settings", true},
+                                   {"json", false},
+                                   {"png", true},
+                                   {"oblique", false}});
     if (args.wants_help()) {
         std::fputs(kPathHelp, stdout);
         return 0;
@@ -48,8 +55,8 @@ int run_path(int argc, char** argv) {
         request.path = *png;
         request.oblique = args.has("oblique");
         request.title = "navlink path " + level.level().name;
-        picture::PathLayer layer{agent.name + ": " + samples::outcome_name(path.result.outcome), picture::palette::agent(1),
-                                 path.points};
+        picture::PathLayer layer{agent.name + ": " + samples::outcome_name(path.result.outcome),
+                                 picture::palette::agent(1), path.points};
         write_picture(level.level(), contents, {layer}, request,
                       {{"from", {from[0], from[1], from[2]}, picture::palette::kText},
                        {"to", {to[0], to[1], to[2]}, picture::palette::kText}});

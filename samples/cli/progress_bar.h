@@ -8,8 +8,8 @@ namespace nl::cli {
 
 class ProgressBar {
 public:
-    ProgressBar();  // decides once whether stdout is a terminal
-    ~ProgressBar(); // ends the line if one was drawn
+    ProgressBar();   // decides once whether stdout is a terminal
+    ~ProgressBar();  // ends the line if one was drawn
 
     // An nl_progress_fn; `user` is the ProgressBar. Never cancels.
     static int32_t callback(void* user, float fraction, const char* stage);

@@ -21,7 +21,8 @@ void read_number(const Json& object, const char* key, float lo, bool lo_open, fl
     if (it == object.end()) return;
     const std::string range = std::string(lo_open ? "> " : ">= ") + Json(lo).dump() +
                               (std::isinf(hi) ? std::string() : " and <= " + Json(hi).dump());
-    if (!it->is_number()) throw SampleError(source + ": " + key + " must be a number " + range + " (got " + it->dump() + ")");
+    if (!it->is_number())
+        throw SampleError(source + ": " + key + " must be a number " + range + " (got " + it->dump() + ")");
     const double value = it->get<double>();
     if (!std::isfinite(value) || value < lo || (lo_open && value == lo) || value > hi)
         throw SampleError(source + ": " + key + " must be a number " + range + " (got " + it->dump() + ")");
@@ -51,8 +52,15 @@ AgentProfile parse_agent_json(const std::string& text, const std::string& source
         throw SampleError(source + ": not valid JSON: " + e.what());
     }
     if (!json.is_object()) throw SampleError(source + ": an agent must be a JSON object");
-    static const char* const known[] = {"name", "radius", "height", "max_climb", "max_slope", "max_jump_distance",
-                                        "max_jump_height", "max_drop_height", "abilities"};
+    static const char* const known[] = {"name",
+                                        "radius",
+                                        "height",
+                                        "max_climb",
+                                        "max_slope",
+                                        "max_jump_distance",
+                                        "max_jump_height",
+                                        "max_drop_height",
+                                        "abilities"};
     for (const auto& item : json.items()) {
         bool found = false;
         for (const char* k : known) found = found || item.key() == k;
@@ -74,7 +82,8 @@ AgentProfile parse_agent_json(const std::string& text, const std::string& source
     read_number(json, "max_drop_height", 0.0f, false, inf, source, profile.capabilities.max_drop_height);
     if (const auto it = json.find("abilities"); it != json.end()) {
         if (!it->is_number_unsigned())
-            throw SampleError(source + ": abilities must be a whole number >= 0 (ability bits; got " + it->dump() + ")");
+            throw SampleError(source + ": abilities must be a whole number >= 0 (ability bits; got " + it->dump() +
+                              ")");
         profile.capabilities.abilities = it->get<uint64_t>();
     }
     profile.capabilities.radius = profile.body.radius;

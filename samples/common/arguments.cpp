@@ -55,10 +55,17 @@ std::string Arguments::required(const std::string& name) const {
     return it->second;
 }
 
+long Arguments::whole_number(const std::string& name, long lo, long hi, long fallback) const {
+    const auto it = values_.find(name);
+    return it == values_.end() ? fallback : parse_whole_number(it->second, "--" + name, lo, hi);
+}
+
 void Arguments::expect_positional(size_t count, const std::string& what) const {
-    if (positional_.size() < count) throw SampleError(command_ + ": missing " + what + " (see " + program_ + " --help)");
+    if (positional_.size() < count)
+        throw SampleError(command_ + ": missing " + what + " (see " + program_ + " --help)");
     if (positional_.size() > count)
-        throw SampleError(command_ + ": unexpected argument '" + positional_[count] + "' (see " + program_ + " --help)");
+        throw SampleError(command_ + ": unexpected argument '" + positional_[count] + "' (see " + program_ +
+                          " --help)");
 }
 
 void parse_point(const std::string& text, const std::string& option, float out[3]) {

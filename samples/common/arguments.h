@@ -10,8 +10,8 @@
 namespace nl::samples {
 
 struct OptionSpec {
-    std::string name;   // without the dashes: "out"
-    bool takes_value;   // "--out FILE" vs "--json"
+    std::string name;  // without the dashes: "out"
+    bool takes_value;  // "--out FILE" vs "--json"
 };
 
 class Arguments {
@@ -27,6 +27,9 @@ public:
     std::optional<std::string> value(const std::string& name) const;
     // The value of an option the command cannot do without; throws SampleError if absent.
     std::string required(const std::string& name) const;
+    // The value of a whole-number option in [lo, hi], or `fallback` when it is absent; throws
+    // SampleError naming the option when it is not a whole number in range.
+    long whole_number(const std::string& name, long lo, long hi, long fallback) const;
     // Throws unless there are exactly `count` positional arguments (`what` names them for the message).
     void expect_positional(size_t count, const std::string& what) const;
     bool wants_help() const { return help_; }

@@ -28,7 +28,8 @@ GenerationSettings parse_generation_settings(const std::string& text, const std:
     for (const char* key : {"recast", "plugins"}) {
         const auto it = json.find(key);
         if (it == json.end()) continue;
-        if (!it->is_object()) throw SampleError(source + ": " + key + " must be a JSON object (got " + it->dump() + ")");
+        if (!it->is_object())
+            throw SampleError(source + ": " + key + " must be a JSON object (got " + it->dump() + ")");
         (std::string(key) == "recast" ? settings.recast_json : settings.plugins_json) = it->dump();
         json.erase(it);
     }

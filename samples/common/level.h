@@ -13,9 +13,9 @@
 namespace nl::samples {
 
 struct Level {
-    std::string name;                  // the file, or "generated default level (seed N)"
-    std::vector<float> positions;      // x y z per vertex
-    std::vector<uint32_t> triangles;   // 3 indices per triangle
+    std::string name;                       // the file, or "generated default level (seed N)"
+    std::vector<float> positions;           // x y z per vertex
+    std::vector<uint32_t> triangles;        // 3 indices per triangle
     std::vector<levelgen::Marker> markers;  // a generated level's named points
     nl_mesh_id mesh{};
     nl_mesh_info info{};

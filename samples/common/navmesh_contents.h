@@ -9,7 +9,7 @@
 namespace nl::samples {
 
 struct NavmeshContents {
-    std::vector<float> vertices;                // x y z per vertex
+    std::vector<float> vertices;  // x y z per vertex
     std::vector<nl_nav_polygon> polygons;
     std::vector<nl_boundary_edge> boundary_edges;
     std::vector<nl_link> links;

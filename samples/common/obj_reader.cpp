@@ -22,8 +22,8 @@ uint32_t corner_index(const std::string& token, uint32_t vertex_count, const std
     if (first.empty() || *end != '\0') malformed(name, line, "face corner '" + token + "' is not a vertex index");
     const long index = value > 0 ? value - 1 : static_cast<long>(vertex_count) + value;  // negative: relative
     if (value == 0 || index < 0 || index >= static_cast<long>(vertex_count))
-        malformed(name, line, "face corner '" + token + "' refers to no vertex (" + std::to_string(vertex_count) +
-                                  " so far)");
+        malformed(name, line,
+                  "face corner '" + token + "' refers to no vertex (" + std::to_string(vertex_count) + " so far)");
     return static_cast<uint32_t>(index);
 }
 
@@ -60,7 +60,8 @@ ObjPolygons parse_obj(const std::string& text, const std::string& name, uint32_t
                 char* end = nullptr;
                 if (!(words >> token)) malformed(name, number, "a vertex needs three coordinates");
                 c = std::strtof(token.c_str(), &end);
-                if (*end != '\0' || !std::isfinite(c)) malformed(name, number, "'" + token + "' is not a finite number");
+                if (*end != '\0' || !std::isfinite(c))
+                    malformed(name, number, "'" + token + "' is not a finite number");
             }
             obj.positions.insert(obj.positions.end(), xyz, xyz + 3);
         } else if (keyword == "f") {
@@ -72,8 +73,9 @@ ObjPolygons parse_obj(const std::string& text, const std::string& name, uint32_t
             }
             if (count < 3) malformed(name, number, "a face needs at least three corners");
             if (count > max_corners)
-                malformed(name, number, "a face has " + std::to_string(count) + " corners (at most " +
-                                            std::to_string(max_corners) + ")");
+                malformed(
+                    name, number,
+                    "a face has " + std::to_string(count) + " corners (at most " + std::to_string(max_corners) + ")");
             obj.corner_counts.push_back(static_cast<uint8_t>(count));
         }
     }

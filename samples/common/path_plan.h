@@ -15,10 +15,10 @@ struct PlannedPath {
 };
 
 struct PathSegment {
-    nl_segment_kind kind;     // NL_SEGMENT_WALK or the link's kind
+    nl_segment_kind kind;  // NL_SEGMENT_WALK or the link's kind
     const nl_path_point* from;
     const nl_path_point* to;
-    float length;             // straight distance between the two points
+    float length;  // straight distance between the two points
 };
 
 // Plans from `start` to `goal` for `agent`. Throws SampleError if the call fails (not when the

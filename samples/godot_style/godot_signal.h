@@ -1,5 +1,6 @@
-// A Godot-style signal (named so as not to shadow the system <signal.h>): callables connected to it run, in order, when it is emitted. Everything runs
-// on the scene tree's thread (results from NavLink's path workers arrive through call_deferred).
+// A Godot-style signal (named so as not to shadow the system <signal.h>): callables connected to it run, in order, when
+// it is emitted. Everything runs on the scene tree's thread (results from NavLink's path workers arrive through
+// call_deferred).
 #pragma once
 
 #include <functional>

@@ -30,9 +30,9 @@ void connect_printing(NavigationAgent* agent, const SceneTree& tree) {
                     nl::samples::describe_links(nl::samples::count_links(p)).c_str());
     });
     agent->link_reached.connect([name, &tree](const TakenLink& t) {
-        std::printf("%6.2f s  %-13s takes a %s link%s: gap %.1f m, rise %.1f m, drop %.1f m\n", tree.time(), name.c_str(),
-                    nl::samples::segment_name(t.link.kind), t.reversed ? " backwards" : "", t.link.requirements.gap,
-                    t.reversed ? t.link.requirements.drop : t.link.requirements.rise,
+        std::printf("%6.2f s  %-13s takes a %s link%s: gap %.1f m, rise %.1f m, drop %.1f m\n", tree.time(),
+                    name.c_str(), nl::samples::segment_name(t.link.kind), t.reversed ? " backwards" : "",
+                    t.link.requirements.gap, t.reversed ? t.link.requirements.drop : t.link.requirements.rise,
                     t.reversed ? t.link.requirements.rise : t.link.requirements.drop);
     });
     agent->target_reached.connect([agent, &tree] {
@@ -41,7 +41,8 @@ void connect_printing(NavigationAgent* agent, const SceneTree& tree) {
                     p[0], p[1], p[2], agent->distance_travelled());
     });
     agent->navigation_failed.connect([name, &tree](nl_path_outcome outcome) {
-        std::printf("%6.2f s  %-13s cannot get there: %s\n", tree.time(), name.c_str(), nl::samples::outcome_name(outcome));
+        std::printf("%6.2f s  %-13s cannot get there: %s\n", tree.time(), name.c_str(),
+                    nl::samples::outcome_name(outcome));
     });
 }
 
@@ -56,18 +57,13 @@ int main(int argc, char** argv) {
             return 0;
         }
         args.expect_positional(0, "");
-        const auto seed = static_cast<uint32_t>(
-            args.has("seed") ? nl::samples::parse_whole_number(*args.value("seed"), "--seed", 0, 4294967295L) : 1);
-        const long remove_at = args.has("remove-ladder-at")
-                                   ? nl::samples::parse_whole_number(*args.value("remove-ladder-at"), "--remove-ladder-at", 0, 1000)
-                                   : -1;
-
-        const auto workers = static_cast<int32_t>(
-            args.has("path-workers") ? nl::samples::parse_whole_number(*args.value("path-workers"), "--path-workers", 0, 64) : 0);
+        const auto seed = static_cast<uint32_t>(args.whole_number("seed", 0, 4294967295L, 1));
+        const long remove_at = args.whole_number("remove-ladder-at", 0, 1000, -1);
+        const auto workers = static_cast<int32_t>(args.whole_number("path-workers", 0, 64, 0));
         DemoScene scene = build_demo_scene(seed, workers);
         const nl_bake_report& bake = scene.region->bake_report();
-        std::printf("scene: region 'Level' (%u jump and %u drop links baked), link 'Ladder', %zu agents\n", bake.jump_links,
-                    bake.drop_links, scene.agents.size());
+        std::printf("scene: region 'Level' (%u jump and %u drop links baked), link 'Ladder', %zu agents\n",
+                    bake.jump_links, bake.drop_links, scene.agents.size());
         for (NavigationAgent* agent : scene.agents) connect_printing(agent, *scene.tree);
 
         auto all_done = [&] {
@@ -85,7 +81,8 @@ int main(int argc, char** argv) {
         scene.tree->run_until(all_done, delta, 120.0);
         int arrived = 0;
         for (NavigationAgent* a : scene.agents) arrived += a->arrived();
-        std::printf("%d of %zu agents arrived in %.1f s of scene time\n", arrived, scene.agents.size(), scene.tree->time());
+        std::printf("%d of %zu agents arrived in %.1f s of scene time\n", arrived, scene.agents.size(),
+                    scene.tree->time());
         return arrived == static_cast<int>(scene.agents.size()) ? 0 : 1;
     } catch (const nl::samples::SampleError& e) {
         std::fprintf(stderr, "navlink-godot-style: %s\n", e.what());

@@ -97,7 +97,8 @@ void NavigationAgent::process(double delta) {
         position_ = next;
         segment_peak_ = std::max(segment_peak_, position_[1]);
         if (segment_time_ < motion_->duration()) break;
-        if (path_.points[segment_].segment != NL_SEGMENT_WALK && !taken_.empty()) taken_.back().peak_height = segment_peak_;
+        if (path_.points[segment_].segment != NL_SEGMENT_WALK && !taken_.empty())
+            taken_.back().peak_height = segment_peak_;
         ++segment_;
         motion_.reset();
         begin_segment();

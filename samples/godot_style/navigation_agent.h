@@ -37,10 +37,10 @@ public:
 
     void set_target_position(const Vec3& target);
 
-    Signal<const samples::PlannedPath&> path_ready;    // a path arrived and is being followed
-    Signal<const TakenLink&> link_reached;             // about to take a link
-    Signal<> target_reached;                           // at the end of a complete path
-    Signal<nl_path_outcome> navigation_failed;         // no complete path to the target
+    Signal<const samples::PlannedPath&> path_ready;  // a path arrived and is being followed
+    Signal<const TakenLink&> link_reached;           // about to take a link
+    Signal<> target_reached;                         // at the end of a complete path
+    Signal<nl_path_outcome> navigation_failed;       // no complete path to the target
 
     const samples::AgentProfile& profile() const { return profile_; }
     const Vec3& position() const { return position_; }
@@ -66,10 +66,10 @@ private:
     Body body_;
     Vec3 position_;
     std::optional<Vec3> target_;
-    nl_path_ticket ticket_{};       // the request in flight, if any
+    nl_path_ticket ticket_{};                                // the request in flight, if any
     std::shared_ptr<int> alive_ = std::make_shared<int>(0);  // deferred results skip a freed agent
     samples::PlannedPath path_;
-    size_t segment_ = 0;            // index of the point the current segment starts at
+    size_t segment_ = 0;  // index of the point the current segment starts at
     std::optional<SegmentMotion> motion_;
     double segment_time_ = 0.0;
     float segment_peak_ = 0.0f;

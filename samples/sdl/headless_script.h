@@ -10,8 +10,9 @@
 
 namespace nl::picture {
 
-// Writes DIR/frame_NN.png for every step and prints one line per frame. Returns the exit status
-// (1 if a scripted click found no surface or a path did not complete).
+// Writes DIR/frame_NN.png for every step and prints one line per frame, with each agent's outcome.
+// Returns the exit status: 1 if a scripted click found no surface or picked another place than the
+// one drawn under it (an unreachable destination is an outcome, not a failure).
 int run_headless_script(ViewerSession& session, ViewSettings view, const std::string& dir);
 
 }  // namespace nl::picture

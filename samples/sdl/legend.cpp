@@ -76,7 +76,8 @@ void draw_legend(Canvas& canvas, const Scene& scene, const ViewSettings& view, c
     }
     w.y() += kLine;
     w.note(format("height: y = %.1f m (dark) to %.1f m (light)", lo, hi));
-    w.note(std::to_string(scene.level->triangle_count()) + " triangles, " + (view.oblique ? "oblique view" : "top-down view"));
+    w.note(std::to_string(scene.level->triangle_count()) + " triangles, " +
+           (view.oblique ? "oblique view" : "top-down view"));
 
     if (scene.navmesh) {
         w.heading("NAVMESH");

@@ -35,7 +35,7 @@ struct Scene {
     const samples::Level* level = nullptr;              // required
     const samples::NavmeshContents* navmesh = nullptr;  // optional
     std::vector<PathLayer> paths;
-    std::vector<ScenePoint> points;                     // start, goal, ...
+    std::vector<ScenePoint> points;  // start, goal, ...
     std::string title;
 };
 

@@ -223,7 +223,8 @@ int fitted_height(const Scene& scene, const ViewSettings& view) {
     const float depth = (hi[2] - lo[2]) * std::sin(pitch) + (hi[1] - lo[1]) * std::fabs(std::cos(pitch));
     const float map_height = area.w * depth / width;
     const float needed = kTitleHeight + 2 * kMargin + map_height;
-    return static_cast<int>(std::ceil(std::clamp(needed, view.layers.legend ? kLegendMinHeight : 200.0f, 4.0f * view.width)));
+    return static_cast<int>(
+        std::ceil(std::clamp(needed, view.layers.legend ? kLegendMinHeight : 200.0f, 4.0f * view.width)));
 }
 
 Camera scene_camera(const Scene& scene, const ViewSettings& view) {

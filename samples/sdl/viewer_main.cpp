@@ -37,27 +37,28 @@ bool display_available() {
 
 int main(int argc, char** argv) {
     try {
-        const nl::samples::Arguments args("navlink-viewer", "navlink-viewer", argc, argv, 1,
-                                          {{"links", true}, {"seed", true}, {"oblique", false}, {"headless", false},
-                                           {"frames", true}});
+        const nl::samples::Arguments args(
+            "navlink-viewer", "navlink-viewer", argc, argv, 1,
+            {{"links", true}, {"seed", true}, {"oblique", false}, {"headless", false}, {"frames", true}});
         if (args.wants_help()) {
             std::printf("%s%s", kHelp, nl::picture::kViewerKeys);
             return 0;
         }
         if (args.positional().size() > 1)
-            throw nl::samples::SampleError("unexpected argument '" + args.positional()[1] + "' (see navlink-viewer --help)");
+            throw nl::samples::SampleError("unexpected argument '" + args.positional()[1] +
+                                           "' (see navlink-viewer --help)");
         nl::picture::ViewerOptions options;
         if (!args.positional().empty()) options.level_path = args.positional()[0];
         options.links_path = args.value("links");
-        if (args.has("seed"))
-            options.seed = static_cast<uint32_t>(nl::samples::parse_whole_number(*args.value("seed"), "--seed", 0, 4294967295L));
+        options.seed = static_cast<uint32_t>(args.whole_number("seed", 0, 4294967295L, 1));
         nl::picture::ViewSettings view;
         view.oblique = args.has("oblique");
 
         nl::picture::ViewerSession session(options);
         const bool headless = args.has("headless") || !display_available();
-        const int status = headless ? nl::picture::run_headless_script(session, view, args.value("frames").value_or("."))
-                                    : nl::picture::run_interactive_viewer(session, view);
+        const int status = headless
+                               ? nl::picture::run_headless_script(session, view, args.value("frames").value_or("."))
+                               : nl::picture::run_interactive_viewer(session, view);
         SDL_Quit();
         return status;
     } catch (const nl::samples::SampleError& e) {

@@ -40,7 +40,18 @@ ViewerSession::ViewerSession(const ViewerOptions& options) : agents_(samples::de
         const float* c = contents_.polygons[0].centre;
         start_ = {c[0], c[1], c[2]};
     }
-    if (const levelgen::Marker* m = generated.marker("goal")) set_destination({m->position[0], m->position[1], m->position[2]});
+    // Send the agents to the level's goal marker, or to the polygon farthest from the start.
+    if (const levelgen::Marker* m = generated.marker("goal")) {
+        set_destination({m->position[0], m->position[1], m->position[2]});
+    } else if (!contents_.polygons.empty()) {
+        const nl_nav_polygon* farthest = &contents_.polygons[0];
+        auto distance2 = [this](const float* c) {
+            return (c[0] - start_[0]) * (c[0] - start_[0]) + (c[2] - start_[2]) * (c[2] - start_[2]);
+        };
+        for (const nl_nav_polygon& p : contents_.polygons)
+            if (distance2(p.centre) > distance2(farthest->centre)) farthest = &p;
+        set_destination({farthest->centre[0], farthest->centre[1], farthest->centre[2]});
+    }
 }
 
 ViewerSession::~ViewerSession() { cancel_pending(); }
@@ -143,20 +154,15 @@ Scene ViewerSession::scene() const {
         char label[112];
         std::snprintf(label, sizeof label, "%s: %.1f m, %s%s%s", agents_[i].name.c_str(), p.result.length,
                       samples::describe_links(samples::count_links(p)).c_str(),
-                      p.result.outcome == NL_PATH_COMPLETE ? "" : "; ", 
+                      p.result.outcome == NL_PATH_COMPLETE ? "" : "; ",
                       p.result.outcome == NL_PATH_COMPLETE ? "" : samples::outcome_name(p.result.outcome));
         scene.paths.push_back({label, palette::agent(i), p.points});
     }
     scene.points.push_back({"start", {start_[0], start_[1], start_[2]}, palette::kText});
     if (destination_)
-        scene.points.push_back({"destination", {(*destination_)[0], (*destination_)[1], (*destination_)[2]}, palette::kText});
+        scene.points.push_back(
+            {"destination", {(*destination_)[0], (*destination_)[1], (*destination_)[2]}, palette::kText});
     return scene;
-}
-
-bool ViewerSession::all_complete() const {
-    for (const auto& path : paths_)
-        if (path && path->result.outcome != NL_PATH_COMPLETE) return false;
-    return !waiting();
 }
 
 std::optional<ViewerSession::Point> ViewerSession::destination() const { return destination_; }

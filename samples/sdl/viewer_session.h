@@ -51,8 +51,6 @@ public:
     Scene scene() const;  // borrows this session's level and navmesh
     const std::vector<samples::AgentProfile>& agents() const { return agents_; }
     size_t current_agent() const { return current_; }
-    // True when every path planned for the current start and destination reaches it.
-    bool all_complete() const;
     const Point& start() const { return start_; }
     std::optional<Point> destination() const;
     // One line about the current state, for the title bar and the console.

@@ -92,8 +92,10 @@ TEST_CASE("navlink bake on the generated level: links file, report and picture a
     const auto& p3 = files.level.boxes[3];
     for (const auto& l : links.at("links")) {
         if (l.at("kind") != "drop") continue;
-        const bool from_p2 = x_of(l.at("start")) < p2.max[0] && std::fabs(l.at("start").at(1).get<float>() - p2.max[1]) < 0.5f;
-        const bool onto_p3 = x_of(l.at("end")) > p3.min[0] && std::fabs(l.at("end").at(1).get<float>() - p3.max[1]) < 0.5f;
+        const bool from_p2 =
+            x_of(l.at("start")) < p2.max[0] && std::fabs(l.at("start").at(1).get<float>() - p2.max[1]) < 0.5f;
+        const bool onto_p3 =
+            x_of(l.at("end")) > p3.min[0] && std::fabs(l.at("end").at(1).get<float>() - p3.max[1]) < 0.5f;
         if (from_p2 && onto_p3) {
             ++onto_last;
             CHECK(l.at("bidirectional") == false);  // 2 m and more: too high to jump back up
@@ -117,7 +119,8 @@ TEST_CASE("navlink bake reads settings and agent files: longer links jump the se
 
     // A thinner body: its navmesh reaches closer to the rims, so the same gap is a shorter jump.
     write_agent(files.dir + "/thin.json", R"({"name": "thin", "radius": 0.3})");
-    REQUIRE(navlink({"bake", "level.obj", "--agent", "thin.json", "--out", "thin.json.links"}, files.dir).exit_code == 0);
+    REQUIRE(navlink({"bake", "level.obj", "--agent", "thin.json", "--out", "thin.json.links"}, files.dir).exit_code ==
+            0);
     REQUIRE(navlink({"bake", "level.obj", "--out", "default.links"}, files.dir).exit_code == 0);
     auto shortest_gap = [&](const std::string& file) {
         float best = 1e9f;
@@ -133,8 +136,10 @@ TEST_CASE("navlink path --json: each demo agent's route is complete, continuous 
     nl::test::write_file(files.dir + "/gen.json", R"({"max_link_distance": 6.5})");
     REQUIRE(navlink({"bake", "level.obj", "--settings", "gen.json", "--out", "links.json"}, files.dir).exit_code == 0);
     const json links = nl::test::parse_json_file(files.dir + "/links.json").at("links");
-    write_agent(files.dir + "/walker.json", R"({"name": "walker", "max_jump_distance": 0, "max_jump_height": 0, "max_drop_height": 0})");
-    write_agent(files.dir + "/short.json", R"({"max_jump_distance": 3.8, "max_jump_height": 1.0, "max_drop_height": 0})");
+    write_agent(files.dir + "/walker.json",
+                R"({"name": "walker", "max_jump_distance": 0, "max_jump_height": 0, "max_drop_height": 0})");
+    write_agent(files.dir + "/short.json",
+                R"({"max_jump_distance": 3.8, "max_jump_height": 1.0, "max_drop_height": 0})");
     write_agent(files.dir + "/long.json", R"({"max_jump_distance": 6, "max_jump_height": 1.5, "max_drop_height": 4})");
     const std::string from = "2,0,3", to = "33.91,-1.03,3.5";  // the level's start and goal markers
 
@@ -187,8 +192,8 @@ TEST_CASE("navlink path --json: each demo agent's route is complete, continuous 
     CHECK(paths["short"].at("length").get<float>() > paths["long"].at("length").get<float>());
 
     // The text form says the same, and names the links taken.
-    const ProgramRun text = navlink({"path", "level.obj", "--links", "links.json", "--from", from, "--to", to, "--agent",
-                                     "long.json", "--png", "path.png"},
+    const ProgramRun text = navlink({"path", "level.obj", "--links", "links.json", "--from", from, "--to", to,
+                                     "--agent", "long.json", "--png", "path.png"},
                                     files.dir);
     CHECK(text.exit_code == 0);
     CHECK(text.out.find("path: complete") != std::string::npos);
@@ -199,7 +204,8 @@ TEST_CASE("navlink path --json: each demo agent's route is complete, continuous 
 TEST_CASE("navlink path exits 1 when the goal cannot be reached, and says why") {
     GeneratedLevelFiles files("path_unreachable");
     REQUIRE(navlink({"bake", "level.obj", "--out", "links.json"}, files.dir).exit_code == 0);
-    nl::test::write_file(files.dir + "/walker.json", R"({"max_jump_distance": 0, "max_drop_height": 0, "max_jump_height": 0})");
+    nl::test::write_file(files.dir + "/walker.json",
+                         R"({"max_jump_distance": 0, "max_drop_height": 0, "max_jump_height": 0})");
     // The third platform: reached only by the long jump, so a walker gets as near as it can.
     const auto& p2 = files.level.boxes[2];
     const std::string on_p2 = std::to_string(0.5f * (p2.min[0] + p2.max[0])) + "," + std::to_string(p2.max[1]) + ",3";
@@ -208,7 +214,8 @@ TEST_CASE("navlink path exits 1 when the goal cannot be reached, and says why") 
                              files.dir);
     CHECK(run.exit_code == 1);
     CHECK(json::parse(run.out).at("outcome") == "partial");
-    run = navlink({"path", "level.obj", "--links", "links.json", "--from", "2,0,3", "--to", "500,0,500", "--json"}, files.dir);
+    run = navlink({"path", "level.obj", "--links", "links.json", "--from", "2,0,3", "--to", "500,0,500", "--json"},
+                  files.dir);
     CHECK(run.exit_code == 1);
     CHECK(json::parse(run.out).at("outcome") == "goal off navmesh");
 }
@@ -220,7 +227,8 @@ TEST_CASE("navlink demo prints a route for each of its three agents and writes i
     std::smatch m;
     for (const char* agent : {"walker", "short jumper", "long jumper"}) {
         INFO(agent);
-        REQUIRE(std::regex_search(run.out, m, std::regex(std::string("\n") + agent + R"( .*\| complete +[0-9.]+ m +(.*))")));
+        REQUIRE(std::regex_search(run.out, m,
+                                  std::regex(std::string("\n") + agent + R"( .*\| complete +[0-9.]+ m +(.*))")));
     }
     CHECK(std::regex_search(run.out, std::regex(R"(\nwalker .*no links +walk [0-9.]+\n)")));  // walks all the way
     CHECK(std::regex_search(run.out, std::regex(R"(\nlong jumper .*\d+ jumps?, 1 drop)")));

@@ -54,8 +54,7 @@ bool neighbouring_centres(const std::string& level, float a[3], float b[3]) {
 
 json path_json(const std::string& dir, const std::string& level, const std::string& from, const std::string& to,
                int expected_exit) {
-    const ProgramRun run =
-        navlink({"path", level, "--links", "links.json", "--from", from, "--to", to, "--json"}, dir);
+    const ProgramRun run = navlink({"path", level, "--links", "links.json", "--from", from, "--to", to, "--json"}, dir);
     INFO(run.err);
     CHECK(run.exit_code == expected_exit);
     return json::parse(run.out);
@@ -103,7 +102,8 @@ TEST_CASE("navlink bake and path on every shared level") {
                 for (int k = 0; k < 3; ++k) sum += std::pow(p.at(k).get<float>() - q.at(k).get<float>(), 2.0f);
                 return std::sqrt(sum);
             };
-            const float via_link = distance(path.at("start"), link.at("start")) + distance(link.at("start"), link.at("end")) +
+            const float via_link = distance(path.at("start"), link.at("start")) +
+                                   distance(link.at("start"), link.at("end")) +
                                    distance(link.at("end"), path.at("goal"));
             CHECK(path.at("length").get<float>() <= via_link + 0.01f);
             break;  // one per level keeps the test quick; the generated level's tests go further
