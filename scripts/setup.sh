@@ -9,6 +9,9 @@ packages=(
   librecast-dev libsdl2-dev libstb-dev
   mono-devel python3
 )
+# The Rust binding's test needs cargo; a toolchain from rustup (not a Debian package) serves as well, so
+# Debian's cargo (with its rustc) is added only when no cargo is on the PATH.
+if ! command -v cargo >/dev/null 2>&1; then packages+=(cargo); fi
 
 missing=()
 for p in "${packages[@]}"; do

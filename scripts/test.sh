@@ -13,8 +13,8 @@ configure_and_build() {
 }
 
 start=$(date +%s)
-echo "== release build and tests"
-configure_and_build "$root/build" -DCMAKE_BUILD_TYPE=RelWithDebInfo
+echo "== release build and tests (with the C#, Rust and Python binding tests)"
+configure_and_build "$root/build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DNAVLINK_BUILD_BINDINGS=ON
 ctest --test-dir "$root/build" --output-on-failure
 
 echo "== sanitizer build (address;undefined) and tests"

@@ -133,7 +133,7 @@ NL_API nl_status nl_navmesh_get_info(const nl_world* world, nl_navmesh_id navmes
         info.vertex_count = mesh->vertex_count();
         info.polygon_count = mesh->polygon_count();
         info.portal_count = mesh->portal_count();
-        info.boundary_edge_count = static_cast<uint32_t>(mesh->boundary_edges().size());
+        info.boundary_edge_count = mesh->boundary_edge_count();
         info.welded_vertex_count = mesh->repairs().welded_vertices;
         info.flipped_polygon_count = mesh->repairs().flipped_polygons;
         info.dropped_polygon_count = mesh->repairs().dropped_polygons;

@@ -147,7 +147,8 @@ NL_API nl_status nl_path_find(nl_world* world, const nl_path_request_def* def, n
     const nl_status status = guarded("nl_path_find", world, [&] {
         require(out_result, "out_result");
         const Request request = read_request(deref(world), def);
-        const nl::PathResult result = nl::plan_path(*request.graph, request.query);
+        thread_local nl::PathResult result;  // reused: a synchronous search allocates nothing once warm
+        nl::plan_path(*request.graph, request.query, nullptr, result);
         partial = result.outcome == nl::PathOutcome::Partial;
         write_result(result, out_result, out_points, capacity, out_count);
     });

@@ -24,7 +24,7 @@ std::pair<uint32_t, uint32_t> vertices_of(const NavMesh& m, const BoundaryEdge& 
 
 EdgeSampling sample_edges(const NavMesh& mesh, const LinkSettings& s) {
     EdgeSampling out;
-    const auto& edges = mesh.boundary_edges();
+    const std::vector<BoundaryEdge> edges = mesh.boundary_edges();
     out.edges = static_cast<uint32_t>(edges.size());
 
     std::vector<uint32_t> short_edges;

@@ -120,7 +120,11 @@ void LinkStore::publish(Handle navmesh) {
 std::shared_ptr<const LinkSnapshot> LinkStore::snapshot(Handle navmesh) const {
     std::shared_lock lock(mutex_);
     const auto it = snapshots_.find(key(navmesh));
-    if (it == snapshots_.end()) return std::make_shared<const LinkSnapshot>();
+    if (it == snapshots_.end()) {
+        // Shared by every navmesh without links: path requests ask for it each time.
+        static const auto empty = std::make_shared<const LinkSnapshot>();
+        return empty;
+    }
     return it->second;
 }
 

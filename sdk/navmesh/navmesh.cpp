@@ -1,6 +1,7 @@
 #include "navmesh/navmesh.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 
@@ -13,11 +14,32 @@ Vec3 NavMesh::centre(uint32_t p) const {
     return sum / static_cast<float>(n);
 }
 
+BoundaryEdge NavMesh::boundary_edge(uint32_t i) const {
+    const auto [p, k] = boundary_[i];
+    const Vec3& a = vertex(corner(p, k));
+    const Vec3& b = vertex(corner(p, (k + 1) % corner_count(p)));
+    const Vec3& n = normals_[p];
+    // The polygon lies left of a -> b seen from above, so right (outward) is edge x normal.
+    // Recast's polygons are not planar: the normal is first tilted to be square to the edge,
+    // so that outward is exactly across the edge and on the outer side.
+    const Vec3 edge = b - a;
+    const Vec3 square_normal = n - edge * (n.dot(edge) / edge.squaredNorm());
+    const Vec3 outward = edge.cross(square_normal).normalized();
+    return BoundaryEdge{a, b, outward, n, p, k};
+}
+
+std::vector<BoundaryEdge> NavMesh::boundary_edges() const {
+    std::vector<BoundaryEdge> edges;
+    edges.reserve(boundary_.size());
+    for (uint32_t i = 0; i < boundary_edge_count(); ++i) edges.push_back(boundary_edge(i));
+    return edges;
+}
+
 size_t NavMesh::memory_bytes() const {
     auto bytes = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
     return bytes(vertices_) + bytes(first_corner_) + bytes(corners_) + bytes(neighbours_) + bytes(areas_) +
            bytes(on_outline_) + bytes(normals_) + bytes(polygon_bounds_) + bytes(detail_vertices_) +
-           bytes(detail_triangles_) + bytes(first_detail_triangle_) + bytes(boundary_edges_) + grid_.memory_bytes();
+           bytes(detail_triangles_) + bytes(first_detail_triangle_) + bytes(boundary_) + grid_.memory_bytes();
 }
 
 bool NavMesh::over_polygon(uint32_t p, float x, float z) const {
@@ -88,23 +110,31 @@ bool overlaps(const Aabb& b, const Vec3& lo, const Vec3& hi) {
     return (b.min.array() <= hi.array()).all() && (b.max.array() >= lo.array()).all();
 }
 
-// Keeps the nearest candidate; equal distances go to the lower polygon index, so the answer does not
-// depend on the order polygons are visited in.
+// Keeps the best candidate: as Detour's findNearestPoly, a polygon straight below or above the
+// point within the agent's climb counts as touching it (an agent standing there is on that floor,
+// even when the rim of a ledge beside it is nearer); other polygons rank by distance. Equal ranks
+// go to the lower polygon index, so the answer does not depend on the order polygons are visited in.
 struct Nearest {
     const NavMesh& mesh;
     const Vec3& point;
     NavPoint best;
+    float best_rank = 0.0f;
 
     void consider(uint32_t p) {
-        // Nothing in a box farther than the best hit can beat it (equal distance may: lower index).
+        // Nothing in a box farther than the best rank can beat it (equal may: lower index).
         if (best.found) {
             const Aabb& box = mesh.polygon_bounds(p);
             const float box_distance = (point.cwiseMax(box.min).cwiseMin(box.max) - point).norm();
-            if (box_distance > best.distance) return;
+            if (box_distance - mesh.agent().max_climb > best_rank) return;
         }
         const Vec3 q = mesh.closest_point_on_polygon(p, point);
         const float d = (q - point).norm();
-        if (!best.found || d < best.distance || (d == best.distance && p < best.polygon)) best = NavPoint{true, q, d, p};
+        const bool over = q.x() == point.x() && q.z() == point.z();
+        const float rank = over ? std::max(0.0f, std::fabs(q.y() - point.y()) - mesh.agent().max_climb) : d;
+        if (!best.found || rank < best_rank || (rank == best_rank && p < best.polygon)) {
+            best = NavPoint{true, q, d, p};
+            best_rank = rank;
+        }
     }
 };
 

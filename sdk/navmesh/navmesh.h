@@ -54,6 +54,9 @@ public:
     uint32_t corner(uint32_t p, uint32_t k) const { return corners_[first_corner_[p] + k]; }
     // Polygon across the edge from corner k to k + 1, or kNoPolygon.
     uint32_t neighbour(uint32_t p, uint32_t k) const { return neighbours_[first_corner_[p] + k]; }
+    // Polygon p's corner_count(p) vertex indices and neighbours, for loops over its edges.
+    const uint32_t* corners_of(uint32_t p) const { return &corners_[first_corner_[p]]; }
+    const uint32_t* neighbours_of(uint32_t p) const { return &neighbours_[first_corner_[p]]; }
     const Vec3& vertex(uint32_t v) const { return vertices_[v]; }
     uint32_t vertex_count() const { return static_cast<uint32_t>(vertices_.size()); }
     uint8_t area(uint32_t p) const { return areas_[p]; }
@@ -65,13 +68,19 @@ public:
     // a body wider than the navmesh's agent must keep away from it.
     bool on_outline(uint32_t v) const { return on_outline_[v] != 0; }
 
-    const std::vector<BoundaryEdge>& boundary_edges() const { return boundary_edges_; }
+    // The outline, in polygon order. Stored as (polygon, edge) pairs and described on demand: the
+    // description is seven times larger and only link generation and tools ask for it.
+    uint32_t boundary_edge_count() const { return static_cast<uint32_t>(boundary_.size()); }
+    BoundaryEdge boundary_edge(uint32_t i) const;
+    std::vector<BoundaryEdge> boundary_edges() const;
     uint32_t portal_count() const { return portal_count_; }
     const AgentType& agent() const { return agent_; }
     const Aabb& bounds() const { return bounds_; }
     const NavMeshRepairs& repairs() const { return repairs_; }
 
-    // Closest point on the surface of the polygons overlapping `point +- half_extents`.
+    // The navmesh point for `point` among the polygons overlapping `point +- half_extents`: on the
+    // polygon straight below or above it within the agent's max_climb if there is one (as Detour's
+    // findNearestPoly), else the closest.
     NavPoint find_nearest(const Vec3& point, const Vec3& half_extents) const;
     // The same by visiting every polygon: the reference the grid is tested against.
     NavPoint find_nearest_brute_force(const Vec3& point, const Vec3& half_extents) const;
@@ -99,7 +108,11 @@ private:
     std::vector<Vec3> detail_vertices_;
     std::vector<Triangle> detail_triangles_;
     std::vector<uint32_t> first_detail_triangle_;  // empty when there is no detail
-    std::vector<BoundaryEdge> boundary_edges_;
+    struct EdgeRef {
+        uint32_t polygon;
+        uint32_t edge;
+    };
+    std::vector<EdgeRef> boundary_;
     PolygonGrid grid_;
     uint32_t portal_count_ = 0;
     AgentType agent_;

@@ -254,17 +254,7 @@ private:
         uint32_t p = 0;
         for (uint32_t slot : boundary_slots_) {
             while (m.first_corner_[p + 1] <= slot) ++p;
-            const uint32_t k = slot - m.first_corner_[p];
-            const Vec3& a = m.vertex(m.corner(p, k));
-            const Vec3& b = m.vertex(m.corner(p, (k + 1) % m.corner_count(p)));
-            const Vec3 n = m.normals_[p];
-            // The polygon lies left of a -> b seen from above, so right (outward) is edge x normal.
-            // Recast's polygons are not planar: the normal is first tilted to be square to the edge,
-            // so that outward is exactly across the edge and on the outer side.
-            const Vec3 edge = b - a;
-            const Vec3 square_normal = n - edge * (n.dot(edge) / edge.squaredNorm());
-            const Vec3 outward = edge.cross(square_normal).normalized();
-            m.boundary_edges_.push_back(BoundaryEdge{a, b, outward, n, p, k});
+            m.boundary_.push_back(NavMesh::EdgeRef{p, slot - m.first_corner_[p]});
         }
         for (const Aabb& box : m.polygon_bounds_) {
             m.bounds_.grow(box.min);
@@ -272,6 +262,10 @@ private:
         }
         m.agent_ = in_.agent;
         m.grid_.build(m.polygon_bounds_, m.bounds_);
+        // A navmesh lives long and is never edited: give back what the building left spare.
+        auto fit = [](auto&... arrays) { (arrays.shrink_to_fit(), ...); };
+        fit(m.vertices_, m.first_corner_, m.corners_, m.neighbours_, m.areas_, m.on_outline_, m.normals_,
+            m.polygon_bounds_, m.detail_vertices_, m.detail_triangles_, m.first_detail_triangle_, m.boundary_);
     }
 
     const NavMeshInput& in_;

@@ -12,9 +12,11 @@ namespace nl {
 namespace {
 
 constexpr uint32_t kNone = 0xffffffffu;
+constexpr uint32_t kStraightenDepth = 1;
 
 struct SearchNode {
     Vec3 position;  // where the corridor enters the polygon
+    PortalSpan entry_span;  // the portal it enters by (unset for the start and links)
     float g;        // cost from the start to `position` (to the goal point for the goal polygon)
     float f;        // g + heuristic
     uint32_t parent;
@@ -31,7 +33,8 @@ struct SearchScratch {
     uint32_t epoch = 0;
 
     uint32_t begin(uint32_t polygons) {
-        if (nodes.size() < polygons) nodes.resize(polygons, SearchNode{Vec3::Zero(), 0, 0, kNone, kNone, 0, kNone});
+        if (nodes.size() < polygons)
+            nodes.resize(polygons, SearchNode{Vec3::Zero(), {Vec3::Zero(), Vec3::Zero()}, 0, 0, kNone, kNone, 0, kNone});
         open.clear();
         if (++epoch == 0) {  // wrapped: old stamps could look current
             for (SearchNode& n : nodes) n.epoch = 0;
@@ -108,22 +111,40 @@ private:
     SearchNode* nodes_;
 };
 
-// Where the corridor crosses a portal: where the straight line from `from` towards `goal` meets it,
-// or the portal's nearer end when that line passes outside. Straighter than Detour's edge midpoints,
-// so the search ranks corridors closer to their string-pulled length.
-Vec3 crossing_point(const PortalSpan& span, const Vec3& from, const Vec3& goal) {
-    const Vec3 e = span.right - span.left;
-    const float dx = goal.x() - from.x(), dz = goal.z() - from.z();
-    const float denominator = e.x() * dz - e.z() * dx;
-    float t;
-    if (std::fabs(denominator) > 1e-12f) {
-        const float wx = from.x() - span.left.x(), wz = from.z() - span.left.z();
-        t = (wx * dz - wz * dx) / denominator;
-    } else {
-        const float length2 = e.x() * e.x() + e.z() * e.z();
-        t = length2 > 0.0f ? ((from.x() - span.left.x()) * e.x() + (from.z() - span.left.z()) * e.z()) / length2 : 0.0f;
-    }
-    return span.left + std::clamp(t, 0.0f, 1.0f) * e;
+// Where the corridor crosses a portal: the portal's point nearest to the straight line from `from`
+// to the goal (in 3D: on stairs and ramps the line seen from above points nowhere useful), kept a
+// tenth of the portal away from its ends. Estimates the string-pulled length of a corridor better
+// than Detour's edge midpoints, so the search ranks corridors closer to how long they really are.
+constexpr float kPortalEndMargin = 0.1f;
+
+// The line from `from` to the goal, with what every portal of one expansion shares.
+struct LineToGoal {
+    Vec3 from;
+    Vec3 direction;  // goal - from
+    float length2;   // direction . direction
+
+    LineToGoal(const Vec3& from_point, const Vec3& goal) : from(from_point), direction(goal - from_point), length2(direction.dot(direction)) {}
+};
+
+Vec3 crossing_point(const PortalSpan& span, const LineToGoal& line) {
+    const Vec3 e = span.right - span.left, w = span.left - line.from;
+    const float ee = e.dot(e), ed = e.dot(line.direction), ew = e.dot(w), dw = line.direction.dot(w);
+    const float denominator = ee * line.length2 - ed * ed;
+    const float t = denominator > 1e-12f ? (ed * dw - line.length2 * ew) / denominator : 0.5f;  // parallel: the middle
+    return span.left + std::clamp(t, kPortalEndMargin, 1.0f - kPortalEndMargin) * e;
+}
+
+// True if the segment a -> b (seen from above) passes through the span. Compares the intersection's
+// parameters as fractions without dividing.
+bool crosses(const Vec3& a, const Vec3& b, const PortalSpan& span) {
+    const float dx = b.x() - a.x(), dz = b.z() - a.z();
+    const float ex = span.right.x() - span.left.x(), ez = span.right.z() - span.left.z();
+    float denominator = ex * dz - ez * dx;
+    const float wx = a.x() - span.left.x(), wz = a.z() - span.left.z();
+    float along_span = wx * dz - wz * dx, along_segment = wx * ez - wz * ex;
+    if (denominator < 0.0f) denominator = -denominator, along_span = -along_span, along_segment = -along_segment;
+    return denominator > 1e-12f && along_span >= 0.0f && along_span <= denominator && along_segment >= 0.0f &&
+           along_segment <= denominator;
 }
 
 float heuristic_scale(const PathGraph& graph, const PathQuery& query) {
@@ -136,8 +157,8 @@ float heuristic_scale(const PathGraph& graph, const PathQuery& query) {
 
 }  // namespace
 
-CorridorSearch find_corridor(const PathGraph& graph, const PathQuery& query, const NavPoint& start,
-                             const NavPoint& goal, const std::atomic<bool>* cancel) {
+void find_corridor(const PathGraph& graph, const PathQuery& query, const NavPoint& start, const NavPoint& goal,
+                   const std::atomic<bool>* cancel, CorridorSearch& result) {
     const NavMesh& mesh = graph.navmesh();
     SearchScratch& scratch = thread_scratch();
     const uint32_t epoch = scratch.begin(mesh.polygon_count());
@@ -147,11 +168,14 @@ CorridorSearch find_corridor(const PathGraph& graph, const PathQuery& query, con
     const float h_scale = heuristic_scale(graph, query);
     const Vec3 goal_point = goal.point;
 
-    CorridorSearch result;
+    result.steps.clear();
+    result.reached_goal = result.out_of_nodes = result.cancelled = false;
+    result.nodes_visited = 0;
     uint32_t best = start.polygon;  // nearest to the goal so far, for a partial path
     float best_distance = (goal_point - start.point).norm();
 
-    auto relax = [&](uint32_t q, uint32_t parent, uint32_t entry, const Vec3& position, float g) {
+    auto relax = [&](uint32_t q, uint32_t parent, uint32_t entry, const Vec3& position, float g,
+                     const PortalSpan* span) __attribute__((always_inline)) {
         SearchNode& n = nodes[q];
         if (n.epoch != epoch) {
             if (query.max_nodes != 0 && result.nodes_visited >= query.max_nodes) {
@@ -165,6 +189,7 @@ CorridorSearch find_corridor(const PathGraph& graph, const PathQuery& query, con
             return;
         }
         n.position = position;
+        if (span) n.entry_span = *span;
         n.g = g;
         n.parent = parent;
         n.entry = entry;
@@ -181,7 +206,29 @@ CorridorSearch find_corridor(const PathGraph& graph, const PathQuery& query, con
         }
     };
 
-    relax(start.polygon, kNone, CorridorStep::kStart, start.point, 0.0f);
+    // Theta*-style: the cost to `crossing` straight from an earlier node, when the straight line
+    // stays inside the corridor (passes through every portal between), up to kStraightenDepth
+    // portals back. A corridor's cost then follows its string-pulled length instead of zigzagging
+    // from portal to portal.
+    auto straightened_cost = [&](uint32_t p, const Vec3& crossing, float cost_here) {
+        float best_cost = std::numeric_limits<float>::infinity();
+        uint32_t last = p;  // the line from nodes[last].parent must pass the portals p ... last entered by
+        for (uint32_t depth = 0; depth < kStraightenDepth; ++depth) {
+            const SearchNode& later = nodes[last];
+            if (later.parent == kNone || later.entry >= CorridorStep::kLinkBit) break;
+            if (query.area_cost(mesh.area(later.parent)) != cost_here) break;
+            const SearchNode& anchor = nodes[later.parent];
+            for (uint32_t x = p;; x = nodes[x].parent) {
+                if (!crosses(anchor.position, crossing, nodes[x].entry_span)) return best_cost;
+                if (x == last) break;
+            }
+            best_cost = std::min(best_cost, anchor.g + (crossing - anchor.position).norm() * cost_here);
+            last = later.parent;
+        }
+        return best_cost;
+    };
+
+    relax(start.polygon, kNone, CorridorStep::kStart, start.point, 0.0f, nullptr);
     if (start.polygon == goal.polygon) {
         nodes[start.polygon].g = (goal_point - start.point).norm() * query.area_cost(mesh.area(start.polygon));
     }
@@ -189,7 +236,7 @@ CorridorSearch find_corridor(const PathGraph& graph, const PathQuery& query, con
     while (!open.empty()) {
         if ((++expansions & 63u) == 0 && cancel && cancel->load(std::memory_order_relaxed)) {
             result.cancelled = true;
-            return result;
+            return;
         }
         const uint32_t p = open.pop();
         if (p == goal.polygon) {
@@ -203,17 +250,20 @@ CorridorSearch find_corridor(const PathGraph& graph, const PathQuery& query, con
         const float cost_here = query.area_cost(mesh.area(p));
 
         const uint32_t corners = mesh.corner_count(p);
+        const uint32_t* const neighbours = mesh.neighbours_of(p);
+        const LineToGoal line(here, goal_point);
         for (uint32_t k = 0; k < corners; ++k) {
-            const uint32_t q = mesh.neighbour(p, k);
+            const uint32_t q = neighbours[k];
             if (q == kNoPolygon || q == came_from) continue;
             const float cost_there = query.area_cost(mesh.area(q));
             if (cost_there <= 0.0f) continue;
             PortalSpan span;
             if (!portal_span(mesh, p, k, margin, span)) continue;
-            const Vec3 crossing = crossing_point(span, here, goal_point);
+            const Vec3 crossing = crossing_point(span, line);
             float g = g_here + (crossing - here).norm() * cost_here;
+            g = std::min(g, straightened_cost(p, crossing, cost_here));
             if (q == goal.polygon) g += (goal_point - crossing).norm() * cost_there;
-            relax(q, p, k, crossing, g);
+            relax(q, p, k, crossing, g, &span);
         }
         for (const LinkExit* exit = graph.exits_begin(p); exit != graph.exits_end(p); ++exit) {
             const Link& link = graph.link(exit->link).link;
@@ -226,7 +276,7 @@ CorridorSearch find_corridor(const PathGraph& graph, const PathQuery& query, con
             float g = g_here + (from - here).norm() * cost_here + (to - from).norm() * link.cost_modifier + query.link_cost;
             if (q == goal.polygon) g += (goal_point - to).norm() * cost_there;
             const uint32_t entry = CorridorStep::kLinkBit | exit->link | (exit->reversed ? CorridorStep::kReversedBit : 0u);
-            relax(q, p, entry, to, g);
+            relax(q, p, entry, to, g, nullptr);
         }
     }
 
@@ -239,7 +289,6 @@ CorridorSearch find_corridor(const PathGraph& graph, const PathQuery& query, con
         result.steps.push_back(CorridorStep{p, nodes[p].entry});
     }
     std::reverse(result.steps.begin(), result.steps.end());
-    return result;
 }
 
 }  // namespace nl

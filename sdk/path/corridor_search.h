@@ -37,10 +37,10 @@ struct CorridorSearch {
     Vec3 last_position = Vec3::Zero(); // where the search entered the last polygon
 };
 
-// Searches from `start` to `goal` (both located on graph's navmesh). A set `cancel` stops the search
-// within 64 expansions. Uses per-thread scratch memory: no allocation after a thread's first search
-// on a navmesh of this size, apart from the steps.
-CorridorSearch find_corridor(const PathGraph& graph, const PathQuery& query, const NavPoint& start,
-                             const NavPoint& goal, const std::atomic<bool>* cancel);
+// Searches from `start` to `goal` (both located on graph's navmesh) into `out`, whose steps' memory
+// is reused. A set `cancel` stops the search within 64 expansions. Uses per-thread scratch memory:
+// no allocation after a thread's first searches on a navmesh of this size.
+void find_corridor(const PathGraph& graph, const PathQuery& query, const NavPoint& start, const NavPoint& goal,
+                   const std::atomic<bool>* cancel, CorridorSearch& out);
 
 }  // namespace nl

@@ -18,6 +18,7 @@ public:
 
     void assemble(const Vec3& start, const Vec3& end) {
         const std::vector<CorridorStep>& steps = corridor_.steps;
+        result_.points.reserve(steps.size() + 2);
         Vec3 walk_start = start;
         size_t first = 0;
         for (size_t i = 1; i < steps.size(); ++i) {
@@ -68,38 +69,46 @@ private:
     const CorridorSearch& corridor_;
     PathResult& result_;
     const float margin_;
-    std::vector<PortalSpan> portals_;
-    std::vector<PulledPoint> pulled_;
+    // Per thread and reused: a request allocates only its result.
+    static thread_local std::vector<PortalSpan> portals_;
+    static thread_local std::vector<PulledPoint> pulled_;
 };
+
+thread_local std::vector<PortalSpan> PathAssembler::portals_;
+thread_local std::vector<PulledPoint> PathAssembler::pulled_;
 
 }  // namespace
 
-PathResult plan_path(const PathGraph& graph, const PathQuery& query, const std::atomic<bool>* cancel) {
+void plan_path(const PathGraph& graph, const PathQuery& query, const std::atomic<bool>* cancel, PathResult& result) {
     const NavMesh& mesh = graph.navmesh();
-    PathResult result;
+    std::vector<PathPoint> points = std::move(result.points);
+    points.clear();
+    result = PathResult{};
+    result.points = std::move(points);
     const NavPoint start = mesh.find_nearest(query.start, query.search_half_extents);
     if (!start.found) {
         result.outcome = PathOutcome::StartOffNavMesh;
-        return result;
+        return;
     }
     const NavPoint goal = mesh.find_nearest(query.goal, query.search_half_extents);
     result.start = start.point;
     if (!goal.found) {
         result.outcome = PathOutcome::GoalOffNavMesh;
-        return result;
+        return;
     }
     result.goal = goal.point;
 
-    const CorridorSearch corridor = find_corridor(graph, query, start, goal, cancel);
+    thread_local CorridorSearch corridor;
+    find_corridor(graph, query, start, goal, cancel, corridor);
     result.nodes_visited = corridor.nodes_visited;
     result.out_of_nodes = corridor.out_of_nodes;
     if (corridor.cancelled) {
         result.outcome = PathOutcome::Cancelled;
-        return result;
+        return;
     }
     if (!corridor.reached_goal && !query.accept_partial) {
         result.outcome = PathOutcome::NoPath;
-        return result;
+        return;
     }
     Vec3 end = goal.point;
     result.cost = corridor.cost;
@@ -110,7 +119,6 @@ PathResult plan_path(const PathGraph& graph, const PathQuery& query, const std::
     }
     PathAssembler(graph, query, corridor, result).assemble(start.point, end);
     result.outcome = corridor.reached_goal ? PathOutcome::Complete : PathOutcome::Partial;
-    return result;
 }
 
 }  // namespace nl

@@ -9,8 +9,9 @@
 
 namespace nl {
 
-// Never throws for an unreachable goal or an end off the navmesh (the outcome says so); throws
-// only for out-of-memory or an internal error. A set `cancel` makes the outcome Cancelled.
-PathResult plan_path(const PathGraph& graph, const PathQuery& query, const std::atomic<bool>* cancel = nullptr);
+// Plans into `out` (its points' memory is reused). Never throws for an unreachable goal or an end off
+// the navmesh (the outcome says so); throws only for out-of-memory or an internal error. A set
+// `cancel` makes the outcome Cancelled.
+void plan_path(const PathGraph& graph, const PathQuery& query, const std::atomic<bool>* cancel, PathResult& out);
 
 }  // namespace nl

@@ -149,7 +149,7 @@ bool PathQueue::run_next(std::unique_lock<std::mutex>& lock) {
         lock.unlock();
         PathResult result;
         try {
-            result = plan_path(*job->graph, job->query, &job->cancel);
+            plan_path(*job->graph, job->query, &job->cancel, result);
         } catch (const std::bad_alloc&) {
             result = failed(ErrorCode::OutOfMemory);
         } catch (const Error& e) {

@@ -44,8 +44,9 @@ std::string check_navmesh(const NavMesh& m) {
         return (problem << "edges do not add up: " << edges << " slots", problem.str());
     if (non_manifold_slots > 0 && m.repairs().non_manifold_edges == 0) return "non-manifold edges were not counted";
 
-    for (size_t i = 0; i < m.boundary_edges().size(); ++i) {
-        const BoundaryEdge& e = m.boundary_edges()[i];
+    const std::vector<BoundaryEdge> outline = m.boundary_edges();
+    for (size_t i = 0; i < outline.size(); ++i) {
+        const BoundaryEdge& e = outline[i];
         const uint32_t a = m.corner(e.polygon, e.edge), b = m.corner(e.polygon, (e.edge + 1) % m.corner_count(e.polygon));
         if (owners[{std::min(a, b), std::max(a, b)}] != 1) return (problem << "boundary edge " << i << " has other owners", problem.str());
         if (m.vertex(a) != e.start || m.vertex(b) != e.end) return (problem << "boundary edge " << i << " ends differ from its polygon's", problem.str());

@@ -461,10 +461,12 @@ typedef struct nl_nav_point {
     uint8_t reserved[3];
 } nl_nav_point;
 
-/** For each of `count` points (x y z each in `points`, borrowed), finds the closest point of the
- *  navmesh among the polygons that overlap the box `point +- half_extents` (3 floats, each > 0) and
- *  writes it to `out` (caller-owned, `count` entries). Ties go to the lower polygon index, so the
- *  answer never depends on thread count. count == 0 succeeds.
+/** For each of `count` points (x y z each in `points`, borrowed), finds its navmesh point among the
+ *  polygons that overlap the box `point +- half_extents` (3 floats, each > 0) and writes it to `out`
+ *  (caller-owned, `count` entries). As Detour's findNearestPoly, a polygon straight below or above
+ *  the point within the navmesh agent's max_climb wins (an agent standing there is on that floor,
+ *  even when the rim of a ledge beside it is nearer); otherwise the closest point wins. Ties go to
+ *  the lower polygon index, so the answer never depends on thread count. count == 0 succeeds.
  *  Returns SUCCESS (points not found have found = 0), or a failure with INVALID_HANDLE or
  *  INVALID_ARGUMENT (null pointer, a point not finite or beyond NL_COORDINATE_LIMIT: its index is
  *  named; half_extents not positive and finite). Thread-safe; parallel over the world's workers. */

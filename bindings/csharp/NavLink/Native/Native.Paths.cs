@@ -1,0 +1,41 @@
+using System;
+using System.Runtime.InteropServices;
+
+namespace NavLink
+{
+    public static unsafe partial class Native
+    {
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        public static extern AgentCapabilities nl_default_agent_capabilities();
+
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        public static extern PathRequestDef nl_default_path_request_def();
+
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        public static extern uint nl_path_find(IntPtr world, PathRequestDef* def, PathResultInfo* outResult,
+                                               PathPoint* outPoints, uint capacity, uint* outCount);
+
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        public static extern uint nl_path_request(IntPtr world, PathRequestDef* def, PathTicket* outTicket);
+
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        public static extern uint nl_path_poll(IntPtr world, PathTicket ticket, PathOutcome* outOutcome);
+
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        public static extern uint nl_path_get_result(IntPtr world, PathTicket ticket, PathResultInfo* outResult,
+                                                     PathPoint* outPoints, uint capacity, uint* outCount);
+
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        public static extern uint nl_path_cancel(IntPtr world, PathTicket ticket);
+
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        public static extern uint nl_path_release(IntPtr world, PathTicket ticket);
+
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        public static extern uint nl_path_process(IntPtr world, uint maxRequests, double maxMilliseconds,
+                                                  uint* outProcessed);
+
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        public static extern uint nl_path_get_queue_stats(IntPtr world, PathQueueStats* outStats);
+    }
+}

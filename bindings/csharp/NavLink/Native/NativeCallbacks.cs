@@ -1,0 +1,64 @@
+using System;
+using System.Runtime.InteropServices;
+
+namespace NavLink
+{
+    // The header's callback types as Cdecl delegates. Unity's IL2CPP accepts only delegates made from
+    // static methods marked [AOT.MonoPInvokeCallback(typeof(TheDelegate))], with the context passed through
+    // the `user` pointer (a GCHandle as IntPtr), as World does. Keep each delegate instance alive (a static
+    // field) for as long as native code may call it: the GC does not see native references.
+    public static class NativeCallbacks
+    {
+        /// <summary>nl_log_fn.</summary>
+        [UnmanagedFunctionPointer(CallingConvention.Cdecl)]
+        public delegate void LogFn(IntPtr user, uint level, uint status, IntPtr message);
+
+        /// <summary>nl_progress_fn: return 0 to cancel.</summary>
+        [UnmanagedFunctionPointer(CallingConvention.Cdecl)]
+        public delegate int ProgressFn(IntPtr user, float fraction, IntPtr stage);
+
+        /// <summary>nl_path_callback.</summary>
+        [UnmanagedFunctionPointer(CallingConvention.Cdecl)]
+        public delegate void PathCallback(IntPtr user, PathTicket ticket, PathOutcome outcome);
+
+        /// <summary>nl_plugin_entry_fn (hostAbiVersion, const nl_plugin_host*, nl_plugin_info*).</summary>
+        [UnmanagedFunctionPointer(CallingConvention.Cdecl)]
+        public delegate uint PluginEntryFn(uint hostAbiVersion, IntPtr host, IntPtr outInfo);
+
+        /// <summary>nl_navmesh_builder.build (state, const nl_plugin_host*, const nl_navmesh_build_def*,
+        /// nl_navmesh_sink_fn*, sink_context).</summary>
+        [UnmanagedFunctionPointer(CallingConvention.Cdecl)]
+        public delegate uint NavmeshBuildFn(IntPtr state, IntPtr host, IntPtr def, IntPtr sink, IntPtr sinkContext);
+
+        /// <summary>nl_navmesh_sink_fn (sink_context, const nl_navmesh_def*).</summary>
+        [UnmanagedFunctionPointer(CallingConvention.Cdecl)]
+        public delegate uint NavmeshSinkFn(IntPtr sinkContext, IntPtr navmesh);
+
+        /// <summary>nl_link_kind_provider.generate.</summary>
+        [UnmanagedFunctionPointer(CallingConvention.Cdecl)]
+        public delegate uint LinkGenerateFn(IntPtr state, IntPtr host, NavmeshId navmesh, IntPtr settingsJson,
+                                            UIntPtr settingsJsonLength, IntPtr sink, IntPtr sinkContext);
+
+        /// <summary>nl_link_sink_fn (sink_context, const nl_link_def*).</summary>
+        [UnmanagedFunctionPointer(CallingConvention.Cdecl)]
+        public delegate uint LinkSinkFn(IntPtr sinkContext, IntPtr link);
+
+        /// <summary>nl_plugin_info.destroy.</summary>
+        [UnmanagedFunctionPointer(CallingConvention.Cdecl)]
+        public delegate void PluginDestroyFn(IntPtr state);
+
+        /// <summary>nl_plugin_host.log.</summary>
+        [UnmanagedFunctionPointer(CallingConvention.Cdecl)]
+        public delegate void HostLogFn(IntPtr context, uint level, IntPtr message);
+
+        /// <summary>nl_plugin_host.set_error.</summary>
+        [UnmanagedFunctionPointer(CallingConvention.Cdecl)]
+        public delegate void HostSetErrorFn(IntPtr context, IntPtr message);
+
+        /// <summary>nl_plugin_host.get_level_triangles.</summary>
+        [UnmanagedFunctionPointer(CallingConvention.Cdecl)]
+        public unsafe delegate uint HostGetLevelTrianglesFn(IntPtr context, float* vertices, uint vertexCapacity,
+                                                            uint* outVertexCount, uint* indices, uint triangleCapacity,
+                                                            uint* outTriangleCount);
+    }
+}

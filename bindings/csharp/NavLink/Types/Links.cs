@@ -1,0 +1,114 @@
+using System;
+using System.Runtime.InteropServices;
+
+namespace NavLink
+{
+    /// <summary>nl_link_requirements: what taking a link asks of an agent.</summary>
+    [StructLayout(LayoutKind.Sequential)]
+    public struct LinkRequirements
+    {
+        public float Gap;
+        public float Rise;
+        public float Drop;
+        public float ClearanceWidth;
+        public ulong Abilities;
+    }
+
+    /// <summary>nl_link: a link as the world holds it.</summary>
+    [StructLayout(LayoutKind.Sequential)]
+    public struct Link
+    {
+        public LinkId Id;
+        public NavmeshId Navmesh;
+        public uint Kind;
+        public Vec3 Start;
+        public Vec3 End;
+        public Vec3 Apex;
+        public byte Bidirectional;
+        public byte Generated;
+        public byte Enabled;
+        public byte Reserved;
+        public float CostModifier;
+        public ulong UserData;
+        public LinkRequirements Requirements;
+        public uint StartPolygon;
+        public uint EndPolygon;
+    }
+
+    /// <summary>nl_link_def: a link to add or the new state of one. Get one from Native.nl_default_link_def().</summary>
+    [StructLayout(LayoutKind.Sequential)]
+    public unsafe struct LinkDef
+    {
+        public uint Size;
+        public uint Kind;
+        public Vec3 Start;
+        public Vec3 End;
+        public byte Bidirectional;
+        public byte Enabled;
+        public fixed byte Reserved[2];
+        public float CostModifier;
+        public ulong UserData;
+        public LinkRequirements Requirements;
+    }
+
+    /// <summary>nl_link_settings. PluginSettingsJson is a UTF-8 pointer borrowed for the call.</summary>
+    [StructLayout(LayoutKind.Sequential)]
+    public unsafe struct LinkSettings
+    {
+        public uint Size;
+        public float MinEdgeLength;
+        public uint MinGroupSize;
+        public uint MaxGroupSize;
+        public float SampleSpacing;
+        public float FalloffDistance;
+        public float MaxLinkDistance;
+        public float MinLinkDistance;
+        public float ShortLinkDistance;
+        public float MaxJumpUp;
+        public float JumpArcHeight;
+        public float StrictForwardAngle;
+        public float PermissiveForwardAngle;
+        public float StrictInclineAngle;
+        public float PermissiveInclineAngle;
+        public float MaxDropDistance;
+        public fixed float DropAngles[16];
+        public uint DropAngleCount;
+        public float DropSteepness;
+        public float MergeDistance;
+        public float ClearanceMargin;
+        public uint ArcSegments;
+        public IntPtr PluginSettingsJson;
+        public UIntPtr PluginSettingsJsonLength;
+    }
+
+    /// <summary>nl_bake_report. Set Size before asking.</summary>
+    [StructLayout(LayoutKind.Sequential)]
+    public struct BakeReport
+    {
+        public uint Size;
+        public uint Edges;
+        public uint Groups;
+        public uint Samples;
+        public uint TakeoffPoints;
+        public uint JumpCandidates;
+        public uint DropCandidates;
+        public uint JumpLinks;
+        public uint DropLinks;
+        public uint PluginLinks;
+        public uint RejectedWall;
+        public uint RejectedNotLedge;
+        public uint RejectedDistance;
+        public uint RejectedRise;
+        public uint RejectedAngle;
+        public uint RejectedNoLanding;
+        public uint RejectedClearance;
+        public uint RejectedDuplicate;
+        public ulong RaysCast;
+        public double MillisecondsEdges;
+        public double MillisecondsTakeoff;
+        public double MillisecondsJumps;
+        public double MillisecondsDrops;
+        public double MillisecondsMerge;
+        public double MillisecondsTotal;
+    }
+}

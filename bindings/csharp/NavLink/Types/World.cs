@@ -1,0 +1,26 @@
+using System;
+using System.Runtime.InteropServices;
+
+namespace NavLink
+{
+    /// <summary>nl_version.</summary>
+    [StructLayout(LayoutKind.Sequential)]
+    public struct NavLinkVersion
+    {
+        public int Major, Minor, Patch;
+        public override string ToString() { return Major + "." + Minor + "." + Patch; }
+    }
+
+    /// <summary>nl_world_def. Get one from Native.nl_default_world_def(); LogFn is a function pointer
+    /// (Marshal.GetFunctionPointerForDelegate of a static NativeCallbacks.LogFn).</summary>
+    [StructLayout(LayoutKind.Sequential)]
+    public struct WorldDef
+    {
+        public uint Size;
+        public int WorkerCount;
+        public IntPtr LogFn;
+        public IntPtr LogUser;
+        public uint LogLevel;
+        public int PathWorkerCount;
+    }
+}

@@ -1,0 +1,162 @@
+using System;
+using System.Runtime.InteropServices;
+using System.Text;
+
+namespace NavLink
+{
+    public sealed partial class World
+    {
+        /// <summary>A manual one-way link, enabled, cost modifier 1: set Start and End.</summary>
+        public static LinkDef DefaultLinkDef() { return Native.nl_default_link_def(); }
+
+        public static LinkSettings DefaultLinkSettings() { return Native.nl_default_link_settings(); }
+
+        /// <summary>Applies a JSON object's keys to settings (defaults when null) and validates them.</summary>
+        public static unsafe LinkSettings LinkSettingsFromJson(string json, LinkSettings? baseSettings = null)
+        {
+            LinkSettings settings = baseSettings ?? Native.nl_default_link_settings();
+            byte[] utf8 = Encoding.UTF8.GetBytes(json ?? "");
+            byte empty = 0;
+            fixed (byte* j = utf8)
+                Status.Check(Native.nl_link_settings_from_json(utf8.Length == 0 ? &empty : j, (UIntPtr)utf8.Length,
+                                                               &settings));
+            return settings;
+        }
+
+        public unsafe LinkId AddLink(NavmeshId navmesh, LinkDef def)
+        {
+            LinkId id;
+            using (var w = Enter()) Status.Check(Native.nl_link_add(w.Pointer, navmesh, &def, &id));
+            return id;
+        }
+
+        public unsafe void UpdateLink(LinkId link, LinkDef def)
+        {
+            using (var w = Enter()) Status.Check(Native.nl_link_update(w.Pointer, link, &def));
+        }
+
+        public void RemoveLink(LinkId link)
+        {
+            using (var w = Enter()) Status.Check(Native.nl_link_remove(w.Pointer, link));
+        }
+
+        public bool IsValid(LinkId link)
+        {
+            using (var w = Enter()) return Native.nl_link_is_valid(w.Pointer, link) != 0;
+        }
+
+        public Link GetLink(LinkId link)
+        {
+            Link result;
+            if (!TryGetLink(link, out result))
+                throw new NavLinkException(Native.nl_get_last_status(), Status.LastErrorMessage());
+            return result;
+        }
+
+        /// <summary>False for a null, stale or foreign id.</summary>
+        public unsafe bool TryGetLink(LinkId link, out Link result)
+        {
+            Link found;
+            uint status;
+            using (var w = Enter()) status = Native.nl_link_get(w.Pointer, link, &found);
+            if (StatusBits.Failed(status) && (status & StatusBits.InvalidHandle) != 0u)
+            {
+                result = default(Link);
+                return false;
+            }
+            Status.Check(status);
+            result = found;
+            return true;
+        }
+
+        /// <summary>The navmesh's links (generated and manual) in the order they were added.</summary>
+        public unsafe Link[] GetLinks(NavmeshId navmesh)
+        {
+            using (var w = Enter())
+            {
+                IntPtr world = w.Pointer;
+                return ListTwoCall<Link>((buffer, capacity, count) =>
+                    Native.nl_navmesh_get_links(world, navmesh, (Link*)buffer, capacity, count));
+            }
+        }
+
+        /// <summary>Removes the generated links; returns how many went.</summary>
+        public unsafe uint RemoveGeneratedLinks(NavmeshId navmesh)
+        {
+            uint removed;
+            using (var w = Enter()) Status.Check(Native.nl_navmesh_remove_generated_links(w.Pointer, navmesh, &removed));
+            return removed;
+        }
+
+        /// <summary>Generates the navmesh's jump and drop links (replacing the generated ones).
+        /// progress returning false cancels (NavLinkException with Cancelled); an exception thrown by
+        /// progress cancels the bake and is rethrown here.</summary>
+        public unsafe BakeReport GenerateLinks(NavmeshId navmesh, LinkSettings? settings = null,
+                                               ProgressHandler progress = null, string pluginSettingsJson = null)
+        {
+            LinkSettings s = settings ?? Native.nl_default_link_settings();
+            byte[] json = pluginSettingsJson == null ? null : Encoding.UTF8.GetBytes(pluginSettingsJson);
+            BakeReport report = default(BakeReport);
+            report.Size = (uint)sizeof(BakeReport);
+            byte empty = 0;
+            fixed (byte* j = json)
+            {
+                if (json != null)
+                {
+                    s.PluginSettingsJson = json.Length == 0 ? (IntPtr)(&empty) : (IntPtr)j;
+                    s.PluginSettingsJsonLength = (UIntPtr)json.Length;
+                }
+                using (var scope = new ProgressScope(progress))
+                using (var w = Enter())
+                    scope.Check(Native.nl_navmesh_generate_links(w.Pointer, navmesh, &s, scope.Function, scope.User,
+                                                                 &report));
+            }
+            return report;
+        }
+
+        /// <summary>Regenerates only what geometry changes inside [boxMin, boxMax] can have affected.</summary>
+        public unsafe BakeReport UpdateLinksInBox(NavmeshId navmesh, Vec3 boxMin, Vec3 boxMax, ProgressHandler progress = null)
+        {
+            BakeReport report = default(BakeReport);
+            report.Size = (uint)sizeof(BakeReport);
+            using (var scope = new ProgressScope(progress))
+            using (var w = Enter())
+                scope.Check(Native.nl_navmesh_update_links_in_box(w.Pointer, navmesh, (float*)&boxMin, (float*)&boxMax,
+                                                                  scope.Function, scope.User, &report));
+            return report;
+        }
+
+        /// <summary>The navmesh's links as JSON (schema "navlink-links" version 1).</summary>
+        public unsafe string SaveLinksJson(NavmeshId navmesh)
+        {
+            using (var w = Enter())
+            {
+                while (true)
+                {
+                    UIntPtr length;
+                    Status.Check(Native.nl_navmesh_save_links_json(w.Pointer, navmesh, null, UIntPtr.Zero, &length));
+                    var buffer = new byte[(ulong)length + 1];
+                    uint status;
+                    fixed (byte* b = buffer)
+                        status = Native.nl_navmesh_save_links_json(w.Pointer, navmesh, b, (UIntPtr)buffer.Length, &length);
+                    if (StatusBits.Failed(status) && (status & StatusBits.BufferTooSmall) != 0u) continue;  // links changed
+                    Status.Check(status);
+                    return Encoding.UTF8.GetString(buffer, 0, (int)(ulong)length);
+                }
+            }
+        }
+
+        /// <summary>Replaces all of the navmesh's links with those in json; returns how many were loaded.</summary>
+        public unsafe uint LoadLinksJson(NavmeshId navmesh, string json)
+        {
+            byte[] utf8 = Encoding.UTF8.GetBytes(json ?? "");
+            uint count;
+            byte empty = 0;
+            fixed (byte* j = utf8)
+            using (var w = Enter())
+                Status.Check(Native.nl_navmesh_load_links_json(w.Pointer, navmesh, utf8.Length == 0 ? &empty : j,
+                                                               (UIntPtr)utf8.Length, &count));
+            return count;
+        }
+    }
+}

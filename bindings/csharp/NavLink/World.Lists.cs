@@ -1,0 +1,36 @@
+using System;
+using System.Runtime.InteropServices;
+
+namespace NavLink
+{
+    public sealed partial class World
+    {
+        private unsafe delegate uint ListFn(IntPtr buffer, uint capacity, uint* count);
+
+        // The header's two-call pattern: ask the count, then fill a buffer of that size. The list can grow
+        // between the two calls (another thread adds to it): BUFFER_TOO_SMALL then, and we ask again.
+        private static unsafe T[] ListTwoCall<T>(ListFn list) where T : struct
+        {
+            while (true)
+            {
+                uint count = 0;
+                Status.Check(list(IntPtr.Zero, 0, &count));
+                var items = new T[count];
+                if (count == 0) return items;
+                GCHandle pin = GCHandle.Alloc(items, GCHandleType.Pinned);
+                try
+                {
+                    uint status = list(pin.AddrOfPinnedObject(), count, &count);
+                    if (StatusBits.Failed(status) && (status & StatusBits.BufferTooSmall) != 0u) continue;
+                    Status.Check(status);
+                }
+                finally
+                {
+                    pin.Free();
+                }
+                if (count < items.Length) Array.Resize(ref items, (int)count);
+                return items;
+            }
+        }
+    }
+}

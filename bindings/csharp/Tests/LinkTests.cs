@@ -1,0 +1,115 @@
+using System;
+using System.Collections.Generic;
+using System.Linq;
+using NavLink;
+
+namespace NavLink.Tests
+{
+    // Link generation on the gap level, manual links, JSON, progress callbacks.
+    internal static class LinkTests
+    {
+        public static void Run(Checks check)
+        {
+            check.Run("generated jump links", () =>
+            {
+                using (var world = new World())
+                {
+                    TestLevels.AddGapLevel(world);
+                    NavmeshId navmesh = world.BuildNavmesh(World.DefaultAgentType());
+                    var fractions = new List<float>();
+                    int caller = System.Threading.Thread.CurrentThread.ManagedThreadId, otherThread = 0;
+                    BakeReport report = world.GenerateLinks(navmesh, null, (fraction, stage) =>
+                    {
+                        fractions.Add(fraction);
+                        if (System.Threading.Thread.CurrentThread.ManagedThreadId != caller) ++otherThread;
+                        return true;
+                    });
+                    Link[] links = world.GetLinks(navmesh);
+                    check.That(report.JumpLinks >= 5 && report.DropLinks == 0 && links.Length == report.JumpLinks,
+                               report.JumpLinks + " jumps, " + report.DropLinks + " drops, " + links.Length + " links listed");
+                    check.That(links.All(l => l.Kind == LinkKind.Jump && l.Generated == 1 && l.Bidirectional == 1 &&
+                                             l.Navmesh.Equals(navmesh)), "all generated bidirectional jumps");
+                    check.That(links.All(l => l.Requirements.Gap >= 3.1f && l.Requirements.Gap <= 3.9f &&
+                                             Math.Abs(l.Requirements.Gap - l.Start.HorizontalDistance(l.End)) < 1e-3f),
+                               "gaps 3.1-3.9 m, the ends' horizontal distance");
+                    check.That(links.All(l => Math.Min(l.Start.X, l.End.X) < -1 && Math.Max(l.Start.X, l.End.X) > 1),
+                               "one end on each platform");
+                    check.That(links.All(l => l.Apex.Y > Math.Max(l.Start.Y, l.End.Y)), "a jump's apex is above its ends");
+                    check.That(fractions.Count >= 2 && fractions.Last() == 1.0f && otherThread == 0,
+                               "progress: " + fractions.Count + " calls on the caller's thread, ending at 1");
+
+                    // Settings from JSON: a max_link_distance below the gap leaves nothing to jump.
+                    LinkSettings shortJumps = World.LinkSettingsFromJson("{\"max_link_distance\": 3}");
+                    check.Near(shortJumps.MaxLinkDistance, 3, 0, "max_link_distance from JSON");
+                    BakeReport none = world.GenerateLinks(navmesh, shortJumps);
+                    check.That(none.JumpLinks == 0 && none.RejectedDistance > 0 && world.GetLinks(navmesh).Length == 0,
+                               "max_link_distance 3: no jumps, " + none.RejectedDistance + " rejected for distance");
+                    check.Throws(StatusBits.InvalidArgument, "max_link_dist", () => World.LinkSettingsFromJson("{\"max_link_dist\": 3}"),
+                                 "an unknown settings key");
+
+                    // Cancelling from progress leaves the links as they were; an exception cancels and comes back.
+                    world.GenerateLinks(navmesh);
+                    int before = world.GetLinks(navmesh).Length;
+                    check.Throws(StatusBits.Cancelled, "", () => world.GenerateLinks(navmesh, null, (f, s) => false), "a cancelled bake");
+                    check.That(world.GetLinks(navmesh).Length == before, "a cancelled bake changes nothing");
+                    try
+                    {
+                        world.GenerateLinks(navmesh, null, (f, s) => { throw new InvalidOperationException("boom"); });
+                        check.That(false, "a throwing progress callback fails the bake");
+                    }
+                    catch (NavLinkException e)
+                    {
+                        check.That(e.Has(StatusBits.Cancelled) && e.InnerException is InvalidOperationException,
+                                   "the callback's exception comes back as the inner exception");
+                    }
+
+                    // A wall in the gap: the update in its box removes every jump, as a full generation would.
+                    TestLevels.AddBox(world, -0.1f, -20, -6, 0.1f, 6, 6);
+                    BakeReport walled = world.UpdateLinksInBox(navmesh, new Vec3(-0.2f, -21, -7), new Vec3(0.2f, 7, 7));
+                    check.That(walled.JumpLinks == 0 && world.GetLinks(navmesh).Length == 0,
+                               "after the wall: " + walled.JumpLinks + " jumps (" + walled.RejectedClearance + " refused for clearance)");
+                    check.That(world.RemoveGeneratedLinks(navmesh) == 0, "nothing generated is left to remove");
+                }
+            });
+
+            check.Run("manual links and JSON", () =>
+            {
+                using (var world = new World())
+                {
+                    TestLevels.AddGapLevel(world);
+                    NavmeshId navmesh = world.BuildNavmesh(World.DefaultAgentType());
+                    world.GenerateLinks(navmesh);
+                    int generated = world.GetLinks(navmesh).Length;
+
+                    LinkDef def = World.DefaultLinkDef();
+                    check.That(def.Kind == LinkKind.Manual && def.Enabled == 1 && def.CostModifier == 1, "default link def");
+                    def.Start = new Vec3(-5, 0, 4);
+                    def.End = new Vec3(5, 0, 4);
+                    def.UserData = 7;
+                    LinkId manual = world.AddLink(navmesh, def);
+                    Link got = world.GetLink(manual);
+                    check.That(got.Kind == LinkKind.Manual && got.Generated == 0 && got.UserData == 7 &&
+                               Math.Abs(got.Requirements.Gap - 10) < 1e-4f, "the manual link, its gap computed: " + got.Requirements.Gap);
+                    def.Enabled = 0;
+                    world.UpdateLink(manual, def);
+                    check.That(world.GetLink(manual).Enabled == 0, "updated: disabled");
+
+                    check.That(world.RemoveGeneratedLinks(navmesh) == generated && world.GetLinks(navmesh).Length == 1,
+                               "removing the generated links keeps the manual one");
+                    world.GenerateLinks(navmesh);
+                    string json = world.SaveLinksJson(navmesh);
+                    check.That(json.Contains("navlink-links"), "the JSON names its schema");
+                    check.That(world.LoadLinksJson(navmesh, json) == generated + 1, "loading the JSON back gives every link");
+                    check.That(!world.IsValid(manual), "loaded links get new ids: the old one is stale");
+                    Link stale;
+                    check.That(!world.TryGetLink(manual, out stale), "TryGetLink of a stale link is false");
+                    check.Throws(StatusBits.InvalidHandle, "nl_link_remove", () => world.RemoveLink(manual), "removing a stale link");
+                    check.Throws(StatusBits.ParseError, "nl_navmesh_load_links_json", () => world.LoadLinksJson(navmesh, "[1,"),
+                                 "malformed links JSON");
+                    def.End = new Vec3(0, 0, 0);  // over the gap: off the navmesh
+                    check.Throws(StatusBits.InvalidArgument, "def->end", () => world.AddLink(navmesh, def), "a link ending off the navmesh");
+                }
+            });
+        }
+    }
+}

@@ -1,0 +1,200 @@
+using System;
+using System.Linq;
+using System.Threading;
+using NavLink;
+
+namespace NavLink.Tests
+{
+    // Path requests on the gap level for two bodies: a walker (no jumps) cannot cross the gap, a jumper
+    // must jump it. Synchronous (nl_path_find), queued with worker threads and callbacks, and queued
+    // with no workers (nl_path_process, polling, cancelling).
+    internal static class PathTests
+    {
+        public static void Run(Checks check)
+        {
+            check.Run("paths: walker and jumper (nl_path_find)", () =>
+            {
+                using (var world = new World())
+                {
+                    NavmeshId navmesh = BakeGapLevel(world);
+                    PathResult jumper = world.FindPath(new PathQuery(navmesh, TestLevels.WestPoint, TestLevels.EastPoint, TestLevels.Jumper()));
+                    CheckJumperAcross(check, world, jumper, "jumper");
+
+                    PathResult walker = world.FindPath(new PathQuery(navmesh, TestLevels.WestPoint, TestLevels.EastPoint, TestLevels.Walker()));
+                    CheckWalkerStopsAtGap(check, walker, "walker");
+
+                    var noPartial = new PathQuery(navmesh, TestLevels.WestPoint, TestLevels.EastPoint, TestLevels.Walker()) { AcceptPartial = false };
+                    PathResult none = world.FindPath(noPartial);
+                    check.That(none.Outcome == PathOutcome.NoPath && none.Points.Length == 0,
+                               "walker without accept_partial: " + none.Outcome + ", " + none.Points.Length + " points");
+
+                    // A jumper whose jump is shorter than the gap is filtered out of every link.
+                    AgentCapabilities shortJumper = TestLevels.Jumper();
+                    shortJumper.MaxJumpDistance = 3.0f;
+                    PathResult tooShort = world.FindPath(new PathQuery(navmesh, TestLevels.WestPoint, TestLevels.EastPoint, shortJumper));
+                    check.That(tooShort.Outcome == PathOutcome.Partial && tooShort.LinksUsed == 0,
+                               "a 3 m jumper over a 3.6 m gap: " + tooShort.Outcome + ", " + tooShort.LinksUsed + " links");
+
+                    PathResult stroll = world.FindPath(new PathQuery(navmesh, new Vec3(-9, 0, -3), new Vec3(-3, 0, 3), TestLevels.Walker()));
+                    check.That(stroll.Outcome == PathOutcome.Complete && stroll.LinksUsed == 0 &&
+                               stroll.Points.All(p => p.Segment == LinkKind.Walk) && stroll.Points.Length >= 2,
+                               "a walk on one platform: " + stroll.Outcome + ", " + stroll.Points.Length + " points");
+                    check.That(stroll.Length >= 8.48f && stroll.Length < 8.6f, "straight across the platform: " + stroll.Length + " m");
+
+                    PathResult offStart = world.FindPath(new PathQuery(navmesh, new Vec3(0, -10, 30), TestLevels.EastPoint, TestLevels.Jumper()));
+                    check.That(offStart.Outcome == PathOutcome.StartOffNavmesh, "a start far from the navmesh: " + offStart.Outcome);
+                    PathResult offGoal = world.FindPath(new PathQuery(navmesh, TestLevels.WestPoint, new Vec3(0, -10, 30), TestLevels.Jumper()));
+                    check.That(offGoal.Outcome == PathOutcome.GoalOffNavmesh, "a goal far from the navmesh: " + offGoal.Outcome);
+                }
+            });
+
+            check.Run("paths: queued, with path workers and callbacks", () =>
+            {
+                using (var world = new World())
+                {
+                    NavmeshId navmesh = BakeGapLevel(world);
+                    var outcomes = new PathOutcome[2];
+                    var calls = new int[2];
+                    using (var done = new CountdownEvent(2))
+                    {
+                        PathTicket walker = world.RequestPath(new PathQuery(navmesh, TestLevels.WestPoint, TestLevels.EastPoint, TestLevels.Walker()),
+                                                              (t, outcome) => { outcomes[0] = outcome; Interlocked.Increment(ref calls[0]); done.Signal(); });
+                        PathTicket jumper = world.RequestPath(new PathQuery(navmesh, TestLevels.WestPoint, TestLevels.EastPoint, TestLevels.Jumper()),
+                                                              (t, outcome) => { outcomes[1] = outcome; Interlocked.Increment(ref calls[1]); done.Signal(); });
+                        check.That(!walker.IsNull && !jumper.IsNull && !walker.Equals(jumper), "two distinct tickets");
+                        check.That(done.Wait(TimeSpan.FromSeconds(20)), "both callbacks ran");
+                        check.That(outcomes[0] == PathOutcome.Partial && outcomes[1] == PathOutcome.Complete,
+                                   "callback outcomes: walker " + outcomes[0] + ", jumper " + outcomes[1]);
+                        check.That(world.PollPath(walker) == outcomes[0] && world.PollPath(jumper) == outcomes[1], "poll agrees with the callbacks");
+
+                        PathResult walked, jumped;
+                        check.That(world.TryGetPathResult(walker, out walked) && world.TryGetPathResult(jumper, out jumped),
+                                   "finished requests have results");
+                        world.TryGetPathResult(walker, out walked);
+                        world.TryGetPathResult(jumper, out jumped);
+                        CheckWalkerStopsAtGap(check, walked, "queued walker");
+                        CheckJumperAcross(check, world, jumped, "queued jumper");
+                        PathResult direct = world.FindPath(new PathQuery(navmesh, TestLevels.WestPoint, TestLevels.EastPoint, TestLevels.Jumper()));
+                        check.That(direct.Points.Select(p => p.Segment).SequenceEqual(jumped.Points.Select(p => p.Segment)),
+                                   "queued and direct planning agree");
+
+                        world.ReleasePath(walker);
+                        world.ReleasePath(jumper);
+                        check.Throws(StatusBits.InvalidHandle, "nl_path_poll", () => world.PollPath(walker), "polling a released ticket");
+                        check.Throws(StatusBits.InvalidHandle, "nl_path_release", () => world.ReleasePath(jumper), "releasing twice");
+                        Thread.Sleep(50);
+                        check.That(calls[0] == 1 && calls[1] == 1, "each callback ran exactly once");
+                    }
+                    check.That(world.GetPathQueueStats().Unreleased == 0, "no tickets left");
+                }
+            });
+
+            check.Run("paths: queued, run by the host (path_worker_count 0)", () =>
+            {
+                using (var world = new World(new WorldOptions { PathWorkerCount = 0 }))
+                {
+                    NavmeshId navmesh = BakeGapLevel(world);
+                    int thread = Thread.CurrentThread.ManagedThreadId;
+                    PathOutcome cancelledOutcome = PathOutcome.Pending;
+                    int cancelledOnThread = -1;
+                    PathTicket jumper = world.RequestPath(new PathQuery(navmesh, TestLevels.WestPoint, TestLevels.EastPoint, TestLevels.Jumper()));
+                    PathTicket doomed = world.RequestPath(new PathQuery(navmesh, TestLevels.WestPoint, TestLevels.EastPoint, TestLevels.Walker()),
+                                                          (t, outcome) => { cancelledOutcome = outcome; cancelledOnThread = Thread.CurrentThread.ManagedThreadId; });
+                    PathQueueStats stats = world.GetPathQueueStats();
+                    check.That(stats.Workers == 0 && stats.Queued == 2 && stats.Submitted == 2,
+                               "queue: " + stats.Workers + " workers, " + stats.Queued + " queued, " + stats.Submitted + " submitted");
+                    check.That(world.PollPath(jumper) == PathOutcome.Pending, "nothing runs before ProcessPaths");
+                    PathResult early;
+                    check.That(!world.TryGetPathResult(jumper, out early), "no result while pending (IN_PROGRESS)");
+
+                    world.CancelPath(doomed);
+                    check.That(cancelledOutcome == PathOutcome.Cancelled && cancelledOnThread == thread,
+                               "a queued request cancels at once, its callback on the cancelling thread: " + cancelledOutcome);
+                    check.Throws(StatusBits.InvalidArgument, "nl_path_process", () => world.ProcessPaths(0, double.NaN), "a NaN budget");
+                    check.That(world.ProcessPaths() == 1, "ProcessPaths plans the one request left");
+                    PathResult result;
+                    check.That(world.TryGetPathResult(jumper, out result) && result.Outcome == PathOutcome.Complete, "planned by the host");
+                    CheckJumperAcross(check, world, result, "host-run jumper");
+                    stats = world.GetPathQueueStats();
+                    check.That(stats.Finished == 2 && stats.Unreleased == 2 && stats.Queued == 0, "both finished, not released");
+
+                    // A request still queued when the world goes: its callback reports it cancelled, once.
+                    int lastCalls = 0;
+                    PathOutcome last = PathOutcome.Pending;
+                    world.RequestPath(new PathQuery(navmesh, TestLevels.WestPoint, TestLevels.EastPoint, TestLevels.Jumper()),
+                                      (t, outcome) => { last = outcome; ++lastCalls; });
+                    world.Dispose();
+                    check.That(lastCalls == 1 && last == PathOutcome.Cancelled, "destroying the world cancels what is queued: " + last);
+                }
+            });
+
+            check.Run("paths: invalid requests", () =>
+            {
+                using (var world = new World(new WorldOptions { PathWorkerCount = 0 }))
+                {
+                    NavmeshId navmesh = BakeGapLevel(world);
+                    int calls = 0;
+                    check.Throws(StatusBits.InvalidHandle, "nl_path_request",
+                                 () => world.RequestPath(new PathQuery(default(NavmeshId), TestLevels.WestPoint, TestLevels.EastPoint, TestLevels.Walker()),
+                                                         (t, o) => ++calls), "a request on the null navmesh");
+                    AgentCapabilities negative = TestLevels.Jumper();
+                    negative.MaxJumpDistance = -1;
+                    check.Throws(StatusBits.InvalidArgument, "max_jump_distance",
+                                 () => world.RequestPath(new PathQuery(navmesh, TestLevels.WestPoint, TestLevels.EastPoint, negative), (t, o) => ++calls),
+                                 "a negative jump distance");
+                    check.Throws(StatusBits.InvalidArgument, "start",
+                                 () => world.FindPath(new PathQuery(navmesh, new Vec3(float.NaN, 0, 0), TestLevels.EastPoint, TestLevels.Walker())),
+                                 "a NaN start");
+                    world.ProcessPaths();
+                    check.That(calls == 0 && world.GetPathQueueStats().Submitted == 0, "refused requests never call back");
+                    check.Throws(StatusBits.InvalidHandle, "nl_path_cancel", () => world.CancelPath(default(PathTicket)), "cancelling the null ticket");
+                    unsafe
+                    {
+                        check.Status(Native.nl_path_get_queue_stats(world.DangerousGetPointer(), null), StatusBits.InvalidArgument,
+                                     "out_stats", "nl_path_get_queue_stats without out_stats");
+                    }
+                }
+            });
+        }
+
+        private static NavmeshId BakeGapLevel(World world)
+        {
+            TestLevels.AddGapLevel(world);
+            NavmeshId navmesh = world.BuildNavmesh(World.DefaultAgentType());
+            world.GenerateLinks(navmesh);
+            return navmesh;
+        }
+
+        // Across the gap in one jump: walk to the west rim, jump (a generated jump link, apex above), walk to the goal.
+        private static void CheckJumperAcross(Checks check, World world, PathResult r, string who)
+        {
+            if (!check.That(r.Outcome == PathOutcome.Complete, who + ": outcome " + r.Outcome)) return;
+            PathPoint[] p = r.Points;
+            int[] jumps = Enumerable.Range(0, p.Length).Where(i => p[i].Segment != LinkKind.Walk).ToArray();
+            if (!check.That(jumps.Length == 1 && p[jumps[0]].Segment == LinkKind.Jump && r.LinksUsed == 1,
+                            who + ": exactly one jump segment (" + jumps.Length + " link segments, links_used " + r.LinksUsed + ")")) return;
+            int j = jumps[0];
+            check.That(j + 1 < p.Length && p[j].Position.X < -1 && p[j + 1].Position.X > 1,
+                       who + ": the jump goes from the west rim to the east one");
+            Link link;
+            check.That(world.TryGetLink(p[j].Link, out link) && link.Kind == LinkKind.Jump && link.Generated == 1,
+                       who + ": the jump names a generated jump link");
+            check.That(p[j].Apex.Y > Math.Max(p[j].Position.Y, p[j + 1].Position.Y), who + ": the apex is above both ends");
+            check.That(p[p.Length - 1].Segment == LinkKind.Walk && p[0].Link.IsNull, who + ": walks elsewhere");
+            check.That(p[0].Position.HorizontalDistance(TestLevels.WestPoint) < 0.01f &&
+                       p[p.Length - 1].Position.HorizontalDistance(TestLevels.EastPoint) < 0.01f,
+                       who + ": from the start " + p[0].Position + " to the goal " + p[p.Length - 1].Position);
+            check.That(r.Length >= 12f && r.Length < 13f, who + ": " + r.Length + " m");
+        }
+
+        // No link for a walker: the path leads to the reachable point nearest the goal, the west rim.
+        private static void CheckWalkerStopsAtGap(Checks check, PathResult r, string who)
+        {
+            check.That(r.Outcome == PathOutcome.Partial, who + ": outcome " + r.Outcome);
+            check.That(r.LinksUsed == 0 && r.Points.All(q => q.Segment == LinkKind.Walk && q.Link.IsNull), who + ": walks only");
+            check.That(r.Points.Length >= 2 && r.Points.All(q => q.Position.X < -1), who + ": stays on the west platform");
+            check.That(r.Points.Length >= 2 && r.Points[r.Points.Length - 1].Position.X > -2.1f,
+                       who + ": ends at the west rim, nearest the goal");
+        }
+    }
+}

@@ -1,0 +1,67 @@
+using System;
+using System.IO;
+using NavLink;
+
+namespace NavLink.Tests
+{
+    // Procedural levels with exact answers, built from boxes (as the C API tests do).
+    internal static class TestLevels
+    {
+        private static readonly uint[] BoxIndices = {0, 4, 6, 0, 6, 2, 1, 3, 7, 1, 7, 5, 0, 1, 5, 0, 5, 4,
+                                                     2, 6, 7, 2, 7, 3, 0, 2, 3, 0, 3, 1, 4, 5, 7, 4, 7, 6};
+
+        /// <summary>A box from (x0, y0, z0) to (x1, y1, z1): corner k takes x from bit 0, y from bit 1, z from bit 2.</summary>
+        public static MeshId AddBox(World world, float x0, float y0, float z0, float x1, float y1, float z1)
+        {
+            var v = new float[24];
+            for (int k = 0; k < 8; ++k)
+            {
+                v[3 * k] = (k & 1) != 0 ? x1 : x0;
+                v[3 * k + 1] = (k & 2) != 0 ? y1 : y0;
+                v[3 * k + 2] = (k & 4) != 0 ? z1 : z0;
+            }
+            return world.AddMesh(v, BoxIndices);
+        }
+
+        /// <summary>
+        /// "gap": two 10 x 10 m platforms (top y = 0, 1 m thick), x in [-11, -1] and [1, 11], z in [-5, 5],
+        /// 2 m apart over a pit whose floor (y = -20) is beyond any drop. Recast's navmesh stops 0.6-0.9 m
+        /// short of each rim, so a jump across is 3.2-3.8 m: only an agent that jumps gets across.
+        /// </summary>
+        public static void AddGapLevel(World world)
+        {
+            AddBox(world, -11, -1, -5, -1, 0, 5);
+            AddBox(world, 1, -1, -5, 11, 0, 5);
+            AddBox(world, -12, -21, -6, 12, -20, 6);
+        }
+
+        public static readonly Vec3 WestPoint = new Vec3(-6, 0, 0);
+        public static readonly Vec3 EastPoint = new Vec3(6, 0, 0);
+
+        /// <summary>The default body: no jumps, no drops.</summary>
+        public static AgentCapabilities Walker() { return World.DefaultAgentCapabilities(); }
+
+        /// <summary>Jumps 4.5 m across and 1.5 m up, drops 5 m.</summary>
+        public static AgentCapabilities Jumper()
+        {
+            AgentCapabilities c = World.DefaultAgentCapabilities();
+            c.MaxJumpDistance = 4.5f;
+            c.MaxJumpHeight = 1.5f;
+            c.MaxDropHeight = 5f;
+            return c;
+        }
+
+        /// <summary>The triangles an OBJ file's faces make when fan-triangulated, counted independently of
+        /// the library (a face of n corners is n - 2 triangles).</summary>
+        public static int CountObjTriangles(string path)
+        {
+            int triangles = 0;
+            foreach (string line in File.ReadLines(path))
+            {
+                string[] parts = line.Split((char[])null, StringSplitOptions.RemoveEmptyEntries);
+                if (parts.Length > 0 && parts[0] == "f") triangles += parts.Length - 3;
+            }
+            return triangles;
+        }
+    }
+}

@@ -1,0 +1,1013 @@
+"""NavLink for Python: a ctypes binding of libnavlink.so (standard library only).
+
+Two layers:
+- ``lib``: the C ABI as is. Every ``nl_*`` function of navlink.h, recast.h and plugin.h with its prototype,
+  and a ctypes.Structure per C struct (class ``MeshDef`` for ``nl_mesh_def``..., fields under their C
+  names; ``C_STRUCTS`` maps C names to classes).
+- ``World``: the world as a Python object (a context manager; ``close()`` destroys it). Failures raise
+  ``NavLinkError`` with the status and the library's message; lists come back as Python lists; callbacks
+  are Python callables.
+
+The library is found through ``NAVLINK_LIBRARY`` (a path to libnavlink.so), else the loader's search path
+(``LD_LIBRARY_PATH``...). Every World method may be called from several threads (navlink.h); ``close()``
+must not run at the same time as another call on the world.
+"""
+import ctypes
+import ctypes.util
+import itertools
+import os
+import threading
+from ctypes import (CFUNCTYPE, POINTER, Structure, byref, c_char_p, c_double, c_float, c_int32, c_size_t,
+                    c_uint8, c_uint32, c_uint64, c_void_p, sizeof)
+
+# ---------------------------------------------------------------------------------------------------------
+# Constants (navlink.h, recast.h, plugin.h)
+# ---------------------------------------------------------------------------------------------------------
+
+STATUS_FAILURE = 0x80000000
+STATUS_SUCCESS = 0x40000000
+STATUS_IN_PROGRESS = 0x20000000
+STATUS_DETAIL_MASK = 0x0FFFFFFF
+STATUS_INVALID_ARGUMENT = 0x001
+STATUS_INVALID_HANDLE = 0x002
+STATUS_BUFFER_TOO_SMALL = 0x004
+STATUS_OUT_OF_MEMORY = 0x008
+STATUS_CANCELLED = 0x010
+STATUS_PARTIAL_RESULT = 0x020
+STATUS_NOT_FOUND = 0x040
+STATUS_INTERNAL_ERROR = 0x080
+STATUS_IO_ERROR = 0x100
+STATUS_PARSE_ERROR = 0x200
+STATUS_VERSION_MISMATCH = 0x400
+
+COORDINATE_LIMIT = 1.0e9
+LOG_ERROR, LOG_WARNING, LOG_INFO, LOG_DEBUG = 0, 1, 2, 3
+WORKERS_AUTO = -1
+MESH_MOVABLE = 0x1
+MAX_POLYGON_VERTICES = 16
+NO_POLYGON = 0xFFFFFFFF
+SEGMENT_WALK = 0
+LINK_JUMP, LINK_DROP, LINK_MANUAL, LINK_FIRST_PLUGIN_KIND = 1, 2, 3, 256
+AREA_EXCLUDED = 0.0
+(PATH_PENDING, PATH_COMPLETE, PATH_PARTIAL, PATH_NO_PATH, PATH_START_OFF_NAVMESH, PATH_GOAL_OFF_NAVMESH,
+ PATH_CANCELLED, PATH_FAILED) = range(8)
+PLUGIN_NAVMESH_BUILDER, PLUGIN_LINK_KIND, PLUGIN_PATH_MODIFIER = 0x1, 0x2, 0x4
+PLUGIN_ABI_VERSION = 1
+PLUGIN_ENTRY_SYMBOL = "nl_plugin_entry"
+RECAST_PARTITION_WATERSHED, RECAST_PARTITION_MONOTONE, RECAST_PARTITION_LAYERS = 0, 1, 2
+
+
+def succeeded(status):
+    return status & STATUS_SUCCESS != 0
+
+
+def failed(status):
+    return status & STATUS_FAILURE != 0
+
+
+# ---------------------------------------------------------------------------------------------------------
+# Structs, in header order. Fixed arrays are ctypes arrays; function pointers are CFUNCTYPE types.
+# ---------------------------------------------------------------------------------------------------------
+
+Vec3 = c_float * 3
+
+LogFn = CFUNCTYPE(None, c_void_p, c_uint32, c_uint32, c_char_p)
+ProgressFn = CFUNCTYPE(c_int32, c_void_p, c_float, c_char_p)
+
+
+class Version(Structure):
+    _fields_ = [("major", c_int32), ("minor", c_int32), ("patch", c_int32)]
+
+
+class WorldDef(Structure):
+    _fields_ = [("size", c_uint32), ("worker_count", c_int32), ("log_fn", LogFn), ("log_user", c_void_p),
+                ("log_level", c_uint32), ("path_worker_count", c_int32)]
+
+
+class _Id(Structure):
+    _fields_ = [("index1", c_uint32), ("generation", c_uint32)]
+
+    def __eq__(self, other):
+        return type(self) is type(other) and (self.index1, self.generation) == (other.index1, other.generation)
+
+    def __hash__(self):
+        return hash((type(self).__name__, self.index1, self.generation))
+
+    def __repr__(self):
+        return "%s(%d, %d)" % (type(self).__name__, self.index1, self.generation)
+
+    @property
+    def is_null(self):
+        return self.index1 == 0
+
+
+class MeshId(_Id):
+    pass
+
+
+class MeshDef(Structure):
+    _fields_ = [("size", c_uint32), ("vertices", POINTER(c_float)), ("vertex_count", c_uint32),
+                ("vertex_stride", c_uint32), ("indices", POINTER(c_uint32)), ("triangle_count", c_uint32),
+                ("flags", c_uint32), ("transform", POINTER(c_float)), ("user_data", c_uint64)]
+
+
+class MeshInfo(Structure):
+    _fields_ = [("size", c_uint32), ("vertex_count", c_uint32), ("triangle_count", c_uint32),
+                ("degenerate_triangle_count", c_uint32), ("flags", c_uint32), ("transform", c_float * 16),
+                ("bounds_min", Vec3), ("bounds_max", Vec3), ("user_data", c_uint64)]
+
+
+class Ray(Structure):
+    _fields_ = [("origin", Vec3), ("direction", Vec3), ("max_distance", c_float)]
+
+
+class RayHit(Structure):
+    _fields_ = [("distance", c_float), ("point", Vec3), ("normal", Vec3), ("mesh", MeshId),
+                ("triangle", c_uint32), ("hit", c_uint8), ("reserved", c_uint8 * 3)]
+
+
+class Segment(Structure):
+    _fields_ = [("from", Vec3), ("to", Vec3)]
+
+
+class NavmeshId(_Id):
+    pass
+
+
+class AgentType(Structure):
+    _fields_ = [("radius", c_float), ("height", c_float), ("max_climb", c_float), ("max_slope", c_float)]
+
+
+class NavmeshDef(Structure):
+    _fields_ = [("size", c_uint32), ("vertices", POINTER(c_float)), ("vertex_count", c_uint32),
+                ("vertex_stride", c_uint32), ("indices", POINTER(c_uint32)),
+                ("polygon_vertex_counts", POINTER(c_uint8)), ("polygon_count", c_uint32),
+                ("areas", POINTER(c_uint8)), ("weld_tolerance", c_float), ("agent", AgentType),
+                ("detail_vertices", POINTER(c_float)), ("detail_vertex_count", c_uint32),
+                ("detail_triangles", POINTER(c_uint32)), ("detail_triangle_count", c_uint32),
+                ("detail_triangle_starts", POINTER(c_uint32))]
+
+
+class NavmeshInfo(Structure):
+    _fields_ = [("size", c_uint32), ("vertex_count", c_uint32), ("polygon_count", c_uint32),
+                ("portal_count", c_uint32), ("boundary_edge_count", c_uint32), ("welded_vertex_count", c_uint32),
+                ("flipped_polygon_count", c_uint32), ("dropped_polygon_count", c_uint32),
+                ("non_manifold_edge_count", c_uint32), ("agent", AgentType), ("bounds_min", Vec3),
+                ("bounds_max", Vec3)]
+
+
+class NavPolygon(Structure):
+    _fields_ = [("vertex_count", c_uint32), ("vertices", c_uint32 * MAX_POLYGON_VERTICES),
+                ("neighbours", c_uint32 * MAX_POLYGON_VERTICES), ("area", c_uint32), ("normal", Vec3),
+                ("centre", Vec3)]
+
+
+class BoundaryEdge(Structure):
+    _fields_ = [("start", Vec3), ("end", Vec3), ("outward", Vec3), ("normal", Vec3), ("polygon", c_uint32),
+                ("edge", c_uint32)]
+
+
+class NavPoint(Structure):
+    _fields_ = [("point", Vec3), ("distance", c_float), ("polygon", c_uint32), ("found", c_uint8),
+                ("reserved", c_uint8 * 3)]
+
+
+class NavmeshBuildDef(Structure):
+    _fields_ = [("size", c_uint32), ("builder", c_char_p), ("agent", AgentType), ("settings", c_void_p),
+                ("settings_json", c_char_p), ("settings_json_length", c_size_t)]
+
+
+class LinkId(_Id):
+    pass
+
+
+class LinkRequirements(Structure):
+    _fields_ = [("gap", c_float), ("rise", c_float), ("drop", c_float), ("clearance_width", c_float),
+                ("abilities", c_uint64)]
+
+
+class Link(Structure):
+    _fields_ = [("id", LinkId), ("navmesh", NavmeshId), ("kind", c_uint32), ("start", Vec3), ("end", Vec3),
+                ("apex", Vec3), ("bidirectional", c_uint8), ("generated", c_uint8), ("enabled", c_uint8),
+                ("reserved", c_uint8), ("cost_modifier", c_float), ("user_data", c_uint64),
+                ("requirements", LinkRequirements), ("start_polygon", c_uint32), ("end_polygon", c_uint32)]
+
+
+class LinkDef(Structure):
+    _fields_ = [("size", c_uint32), ("kind", c_uint32), ("start", Vec3), ("end", Vec3),
+                ("bidirectional", c_uint8), ("enabled", c_uint8), ("reserved", c_uint8 * 2),
+                ("cost_modifier", c_float), ("user_data", c_uint64), ("requirements", LinkRequirements)]
+
+
+class LinkSettings(Structure):
+    _fields_ = [("size", c_uint32), ("min_edge_length", c_float), ("min_group_size", c_uint32),
+                ("max_group_size", c_uint32), ("sample_spacing", c_float), ("falloff_distance", c_float),
+                ("max_link_distance", c_float), ("min_link_distance", c_float), ("short_link_distance", c_float),
+                ("max_jump_up", c_float), ("jump_arc_height", c_float), ("strict_forward_angle", c_float),
+                ("permissive_forward_angle", c_float), ("strict_incline_angle", c_float),
+                ("permissive_incline_angle", c_float), ("max_drop_distance", c_float),
+                ("drop_angles", c_float * 16), ("drop_angle_count", c_uint32), ("drop_steepness", c_float),
+                ("merge_distance", c_float), ("clearance_margin", c_float), ("arc_segments", c_uint32),
+                ("plugin_settings_json", c_char_p), ("plugin_settings_json_length", c_size_t)]
+
+
+class BakeReport(Structure):
+    _fields_ = [(name, c_uint32) for name in (
+        "size", "edges", "groups", "samples", "takeoff_points", "jump_candidates", "drop_candidates",
+        "jump_links", "drop_links", "plugin_links", "rejected_wall", "rejected_not_ledge", "rejected_distance",
+        "rejected_rise", "rejected_angle", "rejected_no_landing", "rejected_clearance", "rejected_duplicate")]
+    _fields_ += [("rays_cast", c_uint64)]
+    _fields_ += [(name, c_double) for name in (
+        "milliseconds_edges", "milliseconds_takeoff", "milliseconds_jumps", "milliseconds_drops",
+        "milliseconds_merge", "milliseconds_total")]
+
+
+class PathTicket(_Id):
+    pass
+
+
+class AgentCapabilities(Structure):
+    _fields_ = [("max_jump_distance", c_float), ("max_jump_height", c_float), ("max_drop_height", c_float),
+                ("radius", c_float), ("abilities", c_uint64)]
+
+
+PathCallback = CFUNCTYPE(None, c_void_p, PathTicket, c_uint32)
+
+
+class PathRequestDef(Structure):
+    _fields_ = [("size", c_uint32), ("navmesh", NavmeshId), ("start", Vec3), ("goal", Vec3),
+                ("search_half_extents", Vec3), ("agent", AgentCapabilities), ("area_costs", POINTER(c_float)),
+                ("area_cost_count", c_uint32), ("link_cost", c_float), ("max_nodes", c_uint32),
+                ("accept_partial", c_uint8), ("reserved", c_uint8 * 3), ("callback", PathCallback),
+                ("user", c_void_p)]
+
+
+class PathPoint(Structure):
+    _fields_ = [("position", Vec3), ("polygon", c_uint32), ("segment", c_uint32), ("link", LinkId),
+                ("apex", Vec3), ("reversed", c_uint8), ("reserved", c_uint8 * 3)]
+
+
+class PathResultInfo(Structure):
+    """nl_path_result (PathResult is the Python object that carries the points too)."""
+    _fields_ = [("size", c_uint32), ("outcome", c_uint32), ("status", c_uint32), ("point_count", c_uint32),
+                ("links_used", c_uint32), ("nodes_visited", c_uint32), ("out_of_nodes", c_uint8),
+                ("reserved", c_uint8 * 3), ("length", c_float), ("cost", c_float), ("start", Vec3), ("goal", Vec3)]
+
+
+class PathQueueStats(Structure):
+    _fields_ = [("size", c_uint32), ("workers", c_uint32), ("queued", c_uint32), ("running", c_uint32),
+                ("unreleased", c_uint32), ("reserved", c_uint32), ("submitted", c_uint64), ("finished", c_uint64)]
+
+
+class PluginId(_Id):
+    pass
+
+
+class PluginDescription(Structure):
+    _fields_ = [("size", c_uint32), ("abi_version", c_uint32), ("kinds", c_uint32), ("builtin", c_uint32),
+                ("name", c_char_p), ("version", c_char_p), ("description", c_char_p)]
+
+
+class RecastSettings(Structure):
+    _fields_ = [("size", c_uint32), ("cell_size", c_float), ("cell_height", c_float), ("region_min_size", c_float),
+                ("region_merge_size", c_float), ("edge_max_length", c_float), ("edge_max_error", c_float),
+                ("vertices_per_polygon", c_uint32), ("detail_sample_distance", c_float),
+                ("detail_sample_max_error", c_float), ("partition", c_uint32),
+                ("filter_low_hanging_obstacles", c_uint8), ("filter_ledge_spans", c_uint8),
+                ("filter_walkable_low_height_spans", c_uint8), ("reserved", c_uint8)]
+
+
+# plugin.h: the plugin side of the ABI.
+HostLogFn = CFUNCTYPE(None, c_void_p, c_uint32, c_char_p)
+HostSetErrorFn = CFUNCTYPE(None, c_void_p, c_char_p)
+HostGetLevelTrianglesFn = CFUNCTYPE(c_uint32, c_void_p, POINTER(c_float), c_uint32, POINTER(c_uint32),
+                                    POINTER(c_uint32), c_uint32, POINTER(c_uint32))
+HostBoundaryEdgesFn = CFUNCTYPE(c_uint32, c_void_p, NavmeshId, POINTER(BoundaryEdge), c_uint32, POINTER(c_uint32))
+HostNavmeshInfoFn = CFUNCTYPE(c_uint32, c_void_p, NavmeshId, POINTER(NavmeshInfo))
+HostFindNearestFn = CFUNCTYPE(c_uint32, c_void_p, NavmeshId, POINTER(c_float), c_uint32, POINTER(c_float),
+                              POINTER(NavPoint))
+HostCastRaysFn = CFUNCTYPE(c_uint32, c_void_p, POINTER(Ray), c_uint32, POINTER(RayHit))
+HostSegmentsBlockedFn = CFUNCTYPE(c_uint32, c_void_p, POINTER(Segment), c_uint32, POINTER(c_uint8))
+
+
+class PluginHost(Structure):
+    _fields_ = [("size", c_uint32), ("abi_version", c_uint32), ("context", c_void_p), ("log", HostLogFn),
+                ("set_error", HostSetErrorFn), ("get_level_triangles", HostGetLevelTrianglesFn),
+                ("navmesh_get_boundary_edges", HostBoundaryEdgesFn), ("navmesh_get_info", HostNavmeshInfoFn),
+                ("navmesh_find_nearest", HostFindNearestFn), ("cast_rays", HostCastRaysFn),
+                ("segments_blocked", HostSegmentsBlockedFn)]
+
+
+NavmeshSinkFn = CFUNCTYPE(c_uint32, c_void_p, POINTER(NavmeshDef))
+NavmeshBuildFn = CFUNCTYPE(c_uint32, c_void_p, POINTER(PluginHost), POINTER(NavmeshBuildDef), NavmeshSinkFn, c_void_p)
+LinkSinkFn = CFUNCTYPE(c_uint32, c_void_p, POINTER(LinkDef))
+LinkGenerateFn = CFUNCTYPE(c_uint32, c_void_p, POINTER(PluginHost), NavmeshId, c_char_p, c_size_t, LinkSinkFn, c_void_p)
+PluginDestroyFn = CFUNCTYPE(None, c_void_p)
+
+
+class NavmeshBuilder(Structure):
+    _fields_ = [("build", NavmeshBuildFn)]
+
+
+class LinkKindProvider(Structure):
+    _fields_ = [("kind", c_uint32), ("kind_name", c_char_p), ("generate", LinkGenerateFn)]
+
+
+class PluginInfo(Structure):
+    _fields_ = [("size", c_uint32), ("abi_version", c_uint32), ("name", c_char_p), ("version", c_char_p),
+                ("description", c_char_p), ("kinds", c_uint32), ("state", c_void_p), ("destroy", PluginDestroyFn),
+                ("navmesh_builder", NavmeshBuilder), ("link_kind", LinkKindProvider)]
+
+
+PluginEntryFn = CFUNCTYPE(c_uint32, c_uint32, POINTER(PluginHost), POINTER(PluginInfo))
+
+# Every C struct by its C name, for layout checks.
+C_STRUCTS = {
+    "nl_version": Version, "nl_world_def": WorldDef, "nl_mesh_id": MeshId, "nl_mesh_def": MeshDef,
+    "nl_mesh_info": MeshInfo, "nl_ray": Ray, "nl_ray_hit": RayHit, "nl_segment": Segment,
+    "nl_navmesh_id": NavmeshId, "nl_agent_type": AgentType, "nl_navmesh_def": NavmeshDef,
+    "nl_navmesh_info": NavmeshInfo, "nl_nav_polygon": NavPolygon, "nl_boundary_edge": BoundaryEdge,
+    "nl_nav_point": NavPoint, "nl_navmesh_build_def": NavmeshBuildDef, "nl_link_id": LinkId,
+    "nl_link_requirements": LinkRequirements, "nl_link": Link, "nl_link_def": LinkDef,
+    "nl_link_settings": LinkSettings, "nl_bake_report": BakeReport, "nl_path_ticket": PathTicket,
+    "nl_agent_capabilities": AgentCapabilities, "nl_path_request_def": PathRequestDef, "nl_path_point": PathPoint,
+    "nl_path_result": PathResultInfo, "nl_path_queue_stats": PathQueueStats, "nl_plugin_id": PluginId,
+    "nl_plugin_description": PluginDescription, "nl_recast_settings": RecastSettings,
+    "nl_plugin_host": PluginHost, "nl_navmesh_builder": NavmeshBuilder,
+    "nl_link_kind_provider": LinkKindProvider, "nl_plugin_info": PluginInfo,
+}
+
+# ---------------------------------------------------------------------------------------------------------
+# Functions: every public nl_* function with its prototype.
+# ---------------------------------------------------------------------------------------------------------
+
+_w = c_void_p  # nl_world*
+_u32p = POINTER(c_uint32)
+_PROTOTYPES = {
+    "nl_get_version": (Version, []),
+    "nl_status_string": (c_char_p, [c_uint32]),
+    "nl_get_last_status": (c_uint32, []),
+    "nl_get_last_error_message": (c_char_p, []),
+    "nl_default_world_def": (WorldDef, []),
+    "nl_world_create": (c_uint32, [POINTER(WorldDef), POINTER(c_void_p)]),
+    "nl_world_destroy": (None, [_w]),
+    "nl_world_get_worker_count": (c_int32, [_w]),
+    "nl_default_mesh_def": (MeshDef, []),
+    "nl_mesh_add": (c_uint32, [_w, POINTER(MeshDef), POINTER(MeshId)]),
+    "nl_mesh_add_obj_file": (c_uint32, [_w, c_char_p, POINTER(MeshDef), POINTER(MeshId)]),
+    "nl_mesh_add_obj_memory": (c_uint32, [_w, c_char_p, c_size_t, POINTER(MeshDef), POINTER(MeshId)]),
+    "nl_mesh_remove": (c_uint32, [_w, MeshId]),
+    "nl_mesh_set_transform": (c_uint32, [_w, MeshId, POINTER(c_float)]),
+    "nl_mesh_is_valid": (c_int32, [_w, MeshId]),
+    "nl_mesh_get_info": (c_uint32, [_w, MeshId, POINTER(MeshInfo)]),
+    "nl_world_get_meshes": (c_uint32, [_w, POINTER(MeshId), c_uint32, _u32p]),
+    "nl_world_cast_rays": (c_uint32, [_w, POINTER(Ray), c_uint32, POINTER(RayHit)]),
+    "nl_world_segments_blocked": (c_uint32, [_w, POINTER(Segment), c_uint32, POINTER(c_uint8)]),
+    "nl_default_agent_type": (AgentType, []),
+    "nl_default_navmesh_def": (NavmeshDef, []),
+    "nl_navmesh_add": (c_uint32, [_w, POINTER(NavmeshDef), POINTER(NavmeshId)]),
+    "nl_navmesh_remove": (c_uint32, [_w, NavmeshId]),
+    "nl_navmesh_is_valid": (c_int32, [_w, NavmeshId]),
+    "nl_navmesh_get_info": (c_uint32, [_w, NavmeshId, POINTER(NavmeshInfo)]),
+    "nl_navmesh_get_vertices": (c_uint32, [_w, NavmeshId, POINTER(c_float), c_uint32, _u32p]),
+    "nl_navmesh_get_polygon": (c_uint32, [_w, NavmeshId, c_uint32, POINTER(NavPolygon)]),
+    "nl_navmesh_get_boundary_edges": (c_uint32, [_w, NavmeshId, POINTER(BoundaryEdge), c_uint32, _u32p]),
+    "nl_navmesh_find_nearest": (c_uint32, [_w, NavmeshId, POINTER(c_float), c_uint32, POINTER(c_float),
+                                           POINTER(NavPoint)]),
+    "nl_world_get_navmeshes": (c_uint32, [_w, POINTER(NavmeshId), c_uint32, _u32p]),
+    "nl_default_navmesh_build_def": (NavmeshBuildDef, []),
+    "nl_navmesh_build": (c_uint32, [_w, POINTER(NavmeshBuildDef), POINTER(NavmeshId)]),
+    "nl_default_recast_settings": (RecastSettings, []),
+    "nl_default_link_def": (LinkDef, []),
+    "nl_link_add": (c_uint32, [_w, NavmeshId, POINTER(LinkDef), POINTER(LinkId)]),
+    "nl_link_update": (c_uint32, [_w, LinkId, POINTER(LinkDef)]),
+    "nl_link_remove": (c_uint32, [_w, LinkId]),
+    "nl_link_is_valid": (c_int32, [_w, LinkId]),
+    "nl_link_get": (c_uint32, [_w, LinkId, POINTER(Link)]),
+    "nl_navmesh_get_links": (c_uint32, [_w, NavmeshId, POINTER(Link), c_uint32, _u32p]),
+    "nl_navmesh_remove_generated_links": (c_uint32, [_w, NavmeshId, _u32p]),
+    "nl_default_link_settings": (LinkSettings, []),
+    "nl_link_settings_from_json": (c_uint32, [c_char_p, c_size_t, POINTER(LinkSettings)]),
+    "nl_navmesh_generate_links": (c_uint32, [_w, NavmeshId, POINTER(LinkSettings), ProgressFn, c_void_p,
+                                             POINTER(BakeReport)]),
+    "nl_navmesh_update_links_in_box": (c_uint32, [_w, NavmeshId, POINTER(c_float), POINTER(c_float), ProgressFn,
+                                                  c_void_p, POINTER(BakeReport)]),
+    "nl_navmesh_save_links_json": (c_uint32, [_w, NavmeshId, c_char_p, c_size_t, POINTER(c_size_t)]),
+    "nl_navmesh_load_links_json": (c_uint32, [_w, NavmeshId, c_char_p, c_size_t, _u32p]),
+    "nl_default_agent_capabilities": (AgentCapabilities, []),
+    "nl_default_path_request_def": (PathRequestDef, []),
+    "nl_path_find": (c_uint32, [_w, POINTER(PathRequestDef), POINTER(PathResultInfo), POINTER(PathPoint), c_uint32,
+                                _u32p]),
+    "nl_path_request": (c_uint32, [_w, POINTER(PathRequestDef), POINTER(PathTicket)]),
+    "nl_path_poll": (c_uint32, [_w, PathTicket, _u32p]),
+    "nl_path_get_result": (c_uint32, [_w, PathTicket, POINTER(PathResultInfo), POINTER(PathPoint), c_uint32, _u32p]),
+    "nl_path_cancel": (c_uint32, [_w, PathTicket]),
+    "nl_path_release": (c_uint32, [_w, PathTicket]),
+    "nl_path_process": (c_uint32, [_w, c_uint32, c_double, _u32p]),
+    "nl_path_get_queue_stats": (c_uint32, [_w, POINTER(PathQueueStats)]),
+    "nl_plugin_load": (c_uint32, [_w, c_char_p, POINTER(PluginId)]),
+    "nl_plugin_get_description": (c_uint32, [_w, PluginId, POINTER(PluginDescription)]),
+    "nl_world_get_plugins": (c_uint32, [_w, POINTER(PluginId), c_uint32, _u32p]),
+    "nl_plugin_register": (c_uint32, [_w, PluginEntryFn, POINTER(PluginId)]),
+}
+
+
+def _load_library():
+    path = os.environ.get("NAVLINK_LIBRARY") or ctypes.util.find_library("navlink") or "libnavlink.so.0"
+    library = ctypes.CDLL(path)
+    for name, (restype, argtypes) in _PROTOTYPES.items():
+        function = getattr(library, name)  # AttributeError: a library older than this binding
+        function.restype = restype
+        function.argtypes = argtypes
+    return library
+
+
+lib = _load_library()
+
+# ---------------------------------------------------------------------------------------------------------
+# Statuses as exceptions
+# ---------------------------------------------------------------------------------------------------------
+
+
+class NavLinkError(Exception):
+    """A failed call: its nl_status and the library's message (the calling thread's last error)."""
+
+    def __init__(self, status, message):
+        super().__init__("%s (%s)" % (message, status_string(status)))
+        self.status = status
+        self.message = message
+
+    def has(self, bit):
+        return self.status & bit != 0
+
+
+def status_string(status):
+    """nl_status_string: "failure: invalid argument"."""
+    return lib.nl_status_string(status).decode()
+
+
+def last_error_message():
+    """The calling thread's last error message (read right after the failing call)."""
+    return lib.nl_get_last_error_message().decode("utf-8", "replace")
+
+
+def _check(status):
+    if failed(status):
+        raise NavLinkError(status, last_error_message())
+    return status
+
+
+def _buffer_too_small(status):
+    return failed(status) and status & STATUS_BUFFER_TOO_SMALL != 0
+
+
+def _two_call(call, item_type):
+    """The header's two-call pattern: count, then fill. The list may grow in between: ask again."""
+    while True:
+        count = c_uint32(0)
+        _check(call(None, 0, byref(count)))
+        items = (item_type * count.value)()
+        if count.value == 0:
+            return []
+        status = call(items, count.value, byref(count))
+        if _buffer_too_small(status):
+            continue
+        _check(status)
+        return list(items[:count.value])
+
+
+def _floats(values):
+    return (c_float * len(values))(*values)
+
+
+def _flatten(points):
+    return [c for p in points for c in p]
+
+
+def version():
+    """The loaded library's version as (major, minor, patch)."""
+    v = lib.nl_get_version()
+    return (v.major, v.minor, v.patch)
+
+
+# ---------------------------------------------------------------------------------------------------------
+# Callbacks: one module-level trampoline per type (ctypes keeps them alive here), the Python callable found
+# through `user`, a key into a registry. Exceptions never reach C: they are printed (log, path) or carried
+# back to the caller (progress).
+# ---------------------------------------------------------------------------------------------------------
+
+_registry = {}
+_registry_lock = threading.Lock()
+_keys = itertools.count(1)
+
+
+def _register(obj):
+    with _registry_lock:
+        key = next(_keys)
+        _registry[key] = obj
+        return key
+
+
+def _lookup(key, remove=False):
+    with _registry_lock:
+        return _registry.pop(key, None) if remove else _registry.get(key)
+
+
+def _report(what):
+    import traceback
+    print("navlink: %s raised (ignored):" % what)
+    traceback.print_exc()
+
+
+@LogFn
+def _log_trampoline(user, level, status, message):
+    try:
+        _lookup(user)(level, status, message.decode("utf-8", "replace"))
+    except Exception:
+        _report("the log callback")
+
+
+class _ProgressContext:
+    def __init__(self, handler):
+        self.handler = handler
+        self.error = None
+
+
+@ProgressFn
+def _progress_trampoline(user, fraction, stage):
+    context = _lookup(user)
+    if context.error is not None:
+        return 0
+    try:
+        return 1 if context.handler(fraction, stage.decode()) else 0
+    except BaseException as e:  # cancel the bake; raised again by the caller
+        context.error = e
+        return 0
+
+
+@PathCallback
+def _path_trampoline(user, ticket, outcome):
+    # navlink.h: called exactly once per accepted request, so the entry goes.
+    handler = _lookup(user, remove=True)
+    try:
+        handler(PathTicket(ticket.index1, ticket.generation), outcome)
+    except Exception:
+        _report("a path callback")
+
+
+def _with_progress(progress, call):
+    if progress is None:
+        return _check(call(ProgressFn(), None))
+    context = _ProgressContext(progress)
+    key = _register(context)
+    try:
+        status = call(_progress_trampoline, key)
+        message = last_error_message()
+    finally:
+        _lookup(key, remove=True)
+    if context.error is not None:
+        raise context.error
+    if failed(status):
+        raise NavLinkError(status, message)
+    return status
+
+
+# ---------------------------------------------------------------------------------------------------------
+# Defaults
+# ---------------------------------------------------------------------------------------------------------
+
+
+def default_agent_type():
+    return lib.nl_default_agent_type()
+
+
+def default_recast_settings():
+    return lib.nl_default_recast_settings()
+
+
+def default_link_def():
+    return lib.nl_default_link_def()
+
+
+def default_link_settings():
+    return lib.nl_default_link_settings()
+
+
+def default_agent_capabilities():
+    return lib.nl_default_agent_capabilities()
+
+
+def link_settings_from_json(json, base=None):
+    """Applies a JSON object's keys to `base` (the defaults when None) and validates the result."""
+    settings = LinkSettings.from_buffer_copy(base if base is not None else default_link_settings())
+    data = json.encode()
+    _check(lib.nl_link_settings_from_json(data, len(data), byref(settings)))
+    return settings
+
+
+class PathQuery:
+    """One path request, with nl_default_path_request_def's defaults."""
+
+    def __init__(self, navmesh, start, goal, agent):
+        d = lib.nl_default_path_request_def()
+        self.navmesh = navmesh
+        self.start = tuple(start)
+        self.goal = tuple(goal)
+        self.search_half_extents = tuple(d.search_half_extents)
+        self.agent = agent
+        self.area_costs = []
+        self.link_cost = d.link_cost
+        self.max_nodes = d.max_nodes
+        self.accept_partial = d.accept_partial != 0
+
+    def _def(self):
+        d = lib.nl_default_path_request_def()
+        d.navmesh = self.navmesh
+        d.start = Vec3(*self.start)
+        d.goal = Vec3(*self.goal)
+        d.search_half_extents = Vec3(*self.search_half_extents)
+        d.agent = self.agent
+        costs = _floats(self.area_costs) if self.area_costs else None
+        d.area_costs = ctypes.cast(costs, POINTER(c_float)) if costs is not None else None
+        d.area_cost_count = len(self.area_costs)
+        d.link_cost = self.link_cost
+        d.max_nodes = self.max_nodes
+        d.accept_partial = 1 if self.accept_partial else 0
+        return d, costs  # the caller keeps `costs` alive for the call
+
+
+class PathResult:
+    """What a finished request found: `info` (nl_path_result) and its `points`."""
+
+    def __init__(self, info, points):
+        self.info = info
+        self.points = points
+
+    @property
+    def outcome(self):
+        return self.info.outcome
+
+
+# ---------------------------------------------------------------------------------------------------------
+# The world
+# ---------------------------------------------------------------------------------------------------------
+
+
+class World:
+    """A NavLink world (nl_world*). Use as a context manager, or call close()."""
+
+    # Points fetched in one go by find_path when the path has no more; longer ones are planned again.
+    _FIRST_POINT_CAPACITY = 64
+
+    def __init__(self, worker_count=WORKERS_AUTO, path_worker_count=WORKERS_AUTO, log=None, log_level=LOG_WARNING):
+        """log: callable(level, status, message), called on the failing thread (maybe a NavLink worker)."""
+        d = lib.nl_default_world_def()
+        d.worker_count = worker_count
+        d.path_worker_count = path_worker_count
+        d.log_level = log_level
+        self._log_key = None
+        if log is not None:
+            self._log_key = _register(log)
+            d.log_fn = _log_trampoline
+            d.log_user = self._log_key
+        pointer = c_void_p()
+        status = lib.nl_world_create(byref(d), byref(pointer))
+        if failed(status):
+            message = last_error_message()
+            if self._log_key is not None:
+                _lookup(self._log_key, remove=True)
+            raise NavLinkError(status, message)
+        self._pointer = pointer
+        self._plugin_entries = []
+
+    def close(self):
+        """Destroys the world: queued path requests finish as cancelled (their callbacks run now)."""
+        if self._pointer is not None:
+            lib.nl_world_destroy(self._pointer)
+            self._pointer = None
+            if self._log_key is not None:
+                _lookup(self._log_key, remove=True)
+
+    def __del__(self):
+        # A world dropped without close(): nothing else can be using it any more.
+        if getattr(self, "_pointer", None) is not None and lib is not None:
+            self.close()
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        self.close()
+
+    @property
+    def pointer(self):
+        """The nl_world* for `lib` calls; ValueError once closed."""
+        if self._pointer is None:
+            raise ValueError("the world is closed")
+        return self._pointer
+
+    @property
+    def worker_count(self):
+        return lib.nl_world_get_worker_count(self.pointer)
+
+    # --- level geometry ---
+
+    def add_mesh(self, vertices, indices, flags=0, transform=None, user_data=0):
+        """Registers a triangle mesh (copied): vertices flat x y z, indices three per triangle."""
+        d = lib.nl_default_mesh_def()
+        v, i = _floats(vertices), (c_uint32 * len(indices))(*indices)
+        t = _floats(transform) if transform is not None else None
+        d.vertices, d.vertex_count = ctypes.cast(v, POINTER(c_float)), len(vertices) // 3
+        d.indices, d.triangle_count = ctypes.cast(i, POINTER(c_uint32)), len(indices) // 3
+        d.flags, d.user_data = flags, user_data
+        d.transform = ctypes.cast(t, POINTER(c_float)) if t is not None else None
+        mesh = MeshId()
+        _check(lib.nl_mesh_add(self.pointer, byref(d), byref(mesh)))
+        return mesh
+
+    def _options(self, flags, transform, user_data):
+        d = lib.nl_default_mesh_def()
+        t = _floats(transform) if transform is not None else None
+        d.flags, d.user_data = flags, user_data
+        d.transform = ctypes.cast(t, POINTER(c_float)) if t is not None else None
+        return d, t
+
+    def add_obj_file(self, path, flags=0, transform=None, user_data=0):
+        d, keep = self._options(flags, transform, user_data)
+        mesh = MeshId()
+        _check(lib.nl_mesh_add_obj_file(self.pointer, os.fsencode(path), byref(d), byref(mesh)))
+        return mesh
+
+    def add_obj_memory(self, data, flags=0, transform=None, user_data=0):
+        d, keep = self._options(flags, transform, user_data)
+        mesh = MeshId()
+        _check(lib.nl_mesh_add_obj_memory(self.pointer, bytes(data), len(data), byref(d), byref(mesh)))
+        return mesh
+
+    def remove_mesh(self, mesh):
+        _check(lib.nl_mesh_remove(self.pointer, mesh))
+
+    def set_mesh_transform(self, mesh, transform):
+        _check(lib.nl_mesh_set_transform(self.pointer, mesh, _floats(transform)))
+
+    def is_mesh_valid(self, mesh):
+        return lib.nl_mesh_is_valid(self.pointer, mesh) != 0
+
+    def mesh_info(self, mesh):
+        info = MeshInfo(size=sizeof(MeshInfo))
+        _check(lib.nl_mesh_get_info(self.pointer, mesh, byref(info)))
+        return info
+
+    def meshes(self):
+        return _two_call(lambda b, c, n: lib.nl_world_get_meshes(self.pointer, b, c, n), MeshId)
+
+    def cast_rays(self, rays):
+        """rays: Ray structs; returns one RayHit each."""
+        rays = (Ray * len(rays))(*rays)
+        hits = (RayHit * len(rays))()
+        _check(lib.nl_world_cast_rays(self.pointer, rays, len(rays), hits))
+        return list(hits)
+
+    def segments_blocked(self, segments):
+        """segments: (from, to) pairs of points; returns a bool each."""
+        items = (Segment * len(segments))(*[Segment(Vec3(*a), Vec3(*b)) for a, b in segments])
+        blocked = (c_uint8 * len(segments))()
+        _check(lib.nl_world_segments_blocked(self.pointer, items, len(segments), blocked))
+        return [b != 0 for b in blocked]
+
+    # --- navmeshes ---
+
+    def build_navmesh(self, agent=None, recast=None, settings_json=None, builder=None):
+        """Builds a navmesh from every registered mesh with a builder plugin ("recast" when None)."""
+        d = lib.nl_default_navmesh_build_def()
+        d.agent = agent if agent is not None else default_agent_type()
+        d.builder = builder.encode() if builder is not None else None
+        d.settings = ctypes.addressof(recast) if recast is not None else None
+        if settings_json is not None:
+            data = settings_json.encode()
+            d.settings_json, d.settings_json_length = data, len(data)
+        navmesh = NavmeshId()
+        _check(lib.nl_navmesh_build(self.pointer, byref(d), byref(navmesh)))
+        return navmesh
+
+    def add_navmesh(self, vertices, indices, polygon_vertex_counts=None, areas=None, weld_tolerance=None,
+                    agent=None, detail=None):
+        """The host's navmesh (copied, repaired). detail: (vertices, triangles, triangle_starts) or None."""
+        d = lib.nl_default_navmesh_def()
+        keep = [_floats(vertices), (c_uint32 * len(indices))(*indices)]
+        d.vertices, d.vertex_count = ctypes.cast(keep[0], POINTER(c_float)), len(vertices) // 3
+        d.indices = ctypes.cast(keep[1], POINTER(c_uint32))
+        if polygon_vertex_counts is not None:
+            keep.append((c_uint8 * len(polygon_vertex_counts))(*polygon_vertex_counts))
+            d.polygon_vertex_counts, d.polygon_count = ctypes.cast(keep[-1], POINTER(c_uint8)), len(polygon_vertex_counts)
+        else:
+            d.polygon_count = len(indices) // 3
+        if areas is not None:
+            keep.append((c_uint8 * len(areas))(*areas))
+            d.areas = ctypes.cast(keep[-1], POINTER(c_uint8))
+        if weld_tolerance is not None:
+            d.weld_tolerance = weld_tolerance
+        if agent is not None:
+            d.agent = agent
+        if detail is not None:
+            dv, dt, ds = detail
+            keep += [_floats(dv), (c_uint32 * len(dt))(*dt), (c_uint32 * len(ds))(*ds)]
+            d.detail_vertices, d.detail_vertex_count = ctypes.cast(keep[-3], POINTER(c_float)), len(dv) // 3
+            d.detail_triangles, d.detail_triangle_count = ctypes.cast(keep[-2], POINTER(c_uint32)), len(dt) // 3
+            d.detail_triangle_starts = ctypes.cast(keep[-1], POINTER(c_uint32))
+        navmesh = NavmeshId()
+        _check(lib.nl_navmesh_add(self.pointer, byref(d), byref(navmesh)))
+        return navmesh
+
+    def remove_navmesh(self, navmesh):
+        _check(lib.nl_navmesh_remove(self.pointer, navmesh))
+
+    def is_navmesh_valid(self, navmesh):
+        return lib.nl_navmesh_is_valid(self.pointer, navmesh) != 0
+
+    def navmesh_info(self, navmesh):
+        info = NavmeshInfo(size=sizeof(NavmeshInfo))
+        _check(lib.nl_navmesh_get_info(self.pointer, navmesh, byref(info)))
+        return info
+
+    def navmesh_vertices(self, navmesh):
+        """The vertices after welding, as (x, y, z) tuples."""
+        vertices = _two_call(lambda b, c, n: lib.nl_navmesh_get_vertices(
+            self.pointer, navmesh, ctypes.cast(b, POINTER(c_float)), c, n), Vec3)
+        return [tuple(v) for v in vertices]
+
+    def polygon(self, navmesh, index):
+        polygon = NavPolygon()
+        _check(lib.nl_navmesh_get_polygon(self.pointer, navmesh, index, byref(polygon)))
+        return polygon
+
+    def boundary_edges(self, navmesh):
+        return _two_call(lambda b, c, n: lib.nl_navmesh_get_boundary_edges(self.pointer, navmesh, b, c, n), BoundaryEdge)
+
+    def find_nearest(self, navmesh, points, half_extents):
+        found = (NavPoint * len(points))()
+        _check(lib.nl_navmesh_find_nearest(self.pointer, navmesh, _floats(_flatten(points)), len(points),
+                                           _floats(half_extents), found))
+        return list(found)
+
+    def navmeshes(self):
+        return _two_call(lambda b, c, n: lib.nl_world_get_navmeshes(self.pointer, b, c, n), NavmeshId)
+
+    # --- links ---
+
+    def add_link(self, navmesh, link_def):
+        link = LinkId()
+        _check(lib.nl_link_add(self.pointer, navmesh, byref(link_def), byref(link)))
+        return link
+
+    def update_link(self, link, link_def):
+        _check(lib.nl_link_update(self.pointer, link, byref(link_def)))
+
+    def remove_link(self, link):
+        _check(lib.nl_link_remove(self.pointer, link))
+
+    def is_link_valid(self, link):
+        return lib.nl_link_is_valid(self.pointer, link) != 0
+
+    def link(self, link):
+        out = Link()
+        _check(lib.nl_link_get(self.pointer, link, byref(out)))
+        return out
+
+    def links(self, navmesh):
+        return _two_call(lambda b, c, n: lib.nl_navmesh_get_links(self.pointer, navmesh, b, c, n), Link)
+
+    def remove_generated_links(self, navmesh):
+        removed = c_uint32()
+        _check(lib.nl_navmesh_remove_generated_links(self.pointer, navmesh, byref(removed)))
+        return removed.value
+
+    def generate_links(self, navmesh, settings=None, plugin_settings_json=None, progress=None):
+        """Generates the navmesh's links. progress: callable(fraction, stage) -> bool (False cancels); an
+        exception it raises cancels the bake and is raised here."""
+        s = LinkSettings.from_buffer_copy(settings if settings is not None else default_link_settings())
+        if plugin_settings_json is not None:
+            data = plugin_settings_json.encode()
+            s.plugin_settings_json, s.plugin_settings_json_length = data, len(data)
+        report = BakeReport(size=sizeof(BakeReport))
+        _with_progress(progress, lambda fn, user: lib.nl_navmesh_generate_links(
+            self.pointer, navmesh, byref(s), fn, user, byref(report)))
+        return report
+
+    def update_links_in_box(self, navmesh, box_min, box_max, progress=None):
+        report = BakeReport(size=sizeof(BakeReport))
+        _with_progress(progress, lambda fn, user: lib.nl_navmesh_update_links_in_box(
+            self.pointer, navmesh, _floats(box_min), _floats(box_max), fn, user, byref(report)))
+        return report
+
+    def save_links_json(self, navmesh):
+        while True:
+            length = c_size_t()
+            _check(lib.nl_navmesh_save_links_json(self.pointer, navmesh, None, 0, byref(length)))
+            buffer = ctypes.create_string_buffer(length.value + 1)
+            status = lib.nl_navmesh_save_links_json(self.pointer, navmesh, buffer, len(buffer), byref(length))
+            if _buffer_too_small(status):
+                continue  # the links changed between the two calls
+            _check(status)
+            return buffer.raw[:length.value].decode()
+
+    def load_links_json(self, navmesh, json):
+        data = json.encode()
+        count = c_uint32()
+        _check(lib.nl_navmesh_load_links_json(self.pointer, navmesh, data, len(data), byref(count)))
+        return count.value
+
+    # --- paths ---
+
+    def find_path(self, query):
+        """Plans a path now on this thread (for tools and tests; games queue requests)."""
+        d, keep = query._def()
+        points = (PathPoint * self._FIRST_POINT_CAPACITY)()
+        while True:
+            info = PathResultInfo(size=sizeof(PathResultInfo))
+            count = c_uint32()
+            status = lib.nl_path_find(self.pointer, byref(d), byref(info), points, len(points), byref(count))
+            if _buffer_too_small(status):
+                points = (PathPoint * count.value)()  # no room for the points: plan again with room
+                continue
+            _check(status)
+            return PathResult(info, list(points[:count.value]))
+
+    def request_path(self, query, on_finished=None):
+        """Queues a request; on_finished(ticket, outcome) runs once when it finishes, on a NavLink path
+        worker, in process_paths, in cancel_path or in close()."""
+        d, keep = query._def()
+        key = None
+        if on_finished is not None:
+            key = _register(on_finished)
+            d.callback, d.user = _path_trampoline, key
+        ticket = PathTicket()
+        status = lib.nl_path_request(self.pointer, byref(d), byref(ticket))
+        if failed(status):
+            message = last_error_message()
+            if key is not None:
+                _lookup(key, remove=True)  # a refused request never calls back
+            raise NavLinkError(status, message)
+        return ticket
+
+    def poll_path(self, ticket):
+        outcome = c_uint32()
+        _check(lib.nl_path_poll(self.pointer, ticket, byref(outcome)))
+        return outcome.value
+
+    def path_result(self, ticket):
+        """The finished request's PathResult, or None while it is pending."""
+        while True:
+            info = PathResultInfo(size=sizeof(PathResultInfo))
+            count = c_uint32()
+            status = lib.nl_path_get_result(self.pointer, ticket, byref(info), None, 0, byref(count))
+            if status & STATUS_IN_PROGRESS:
+                return None
+            if not _buffer_too_small(status):
+                _check(status)
+            points = (PathPoint * count.value)()
+            status = lib.nl_path_get_result(self.pointer, ticket, byref(info), points, count.value, byref(count))
+            if _buffer_too_small(status):
+                continue
+            _check(status)
+            return PathResult(info, list(points[:count.value]))
+
+    def cancel_path(self, ticket):
+        _check(lib.nl_path_cancel(self.pointer, ticket))
+
+    def release_path(self, ticket):
+        _check(lib.nl_path_release(self.pointer, ticket))
+
+    def process_paths(self, max_requests=0, max_milliseconds=0.0):
+        processed = c_uint32()
+        _check(lib.nl_path_process(self.pointer, max_requests, max_milliseconds, byref(processed)))
+        return processed.value
+
+    def path_queue_stats(self):
+        stats = PathQueueStats(size=sizeof(PathQueueStats))
+        _check(lib.nl_path_get_queue_stats(self.pointer, byref(stats)))
+        return stats
+
+    # --- plugins ---
+
+    def load_plugin(self, path):
+        plugin = PluginId()
+        _check(lib.nl_plugin_load(self.pointer, os.fsencode(path), byref(plugin)))
+        return plugin
+
+    def register_plugin(self, entry):
+        """entry: a PluginEntryFn; kept alive with everything it hands over for as long as the world."""
+        self._plugin_entries.append(entry)
+        plugin = PluginId()
+        _check(lib.nl_plugin_register(self.pointer, entry, byref(plugin)))
+        return plugin
+
+    def plugin_description(self, plugin):
+        """A dict of the description's fields (strings copied)."""
+        d = PluginDescription(size=sizeof(PluginDescription))
+        _check(lib.nl_plugin_get_description(self.pointer, plugin, byref(d)))
+        return {"name": d.name.decode(), "version": d.version.decode(), "description": d.description.decode(),
+                "kinds": d.kinds, "builtin": d.builtin != 0, "abi_version": d.abi_version}
+
+    def plugins(self):
+        return _two_call(lambda b, c, n: lib.nl_world_get_plugins(self.pointer, b, c, n), PluginId)

@@ -1,0 +1,473 @@
+"""The Python binding's test: the same scenario as the C# and Rust tests, through navlink.py.
+
+Environment: NAVLINK_LIBRARY (libnavlink.so to test), NAVLINK_LEVELS_DIR (the shared levels, default
+../shared/levels beside the source tree), NAVLINK_INCLUDE_DIRS (PATH-style list of the header folders, for
+the layout check; default: the source tree's and build/capi/include).
+"""
+import ctypes
+import math
+import os
+import sys
+import threading
+import unittest
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+SOURCE_ROOT = os.path.normpath(os.path.join(HERE, "..", ".."))
+sys.path.insert(0, HERE)
+sys.path.insert(0, os.path.join(HERE, "..", "layout"))
+
+import c_layout  # noqa: E402  (bindings/layout/c_layout.py)
+import navlink as nl  # noqa: E402
+
+LEVELS = os.environ.get("NAVLINK_LEVELS_DIR") or os.path.join(SOURCE_ROOT, "..", "shared", "levels")
+INCLUDE_DIRS = (os.environ["NAVLINK_INCLUDE_DIRS"].split(os.pathsep) if os.environ.get("NAVLINK_INCLUDE_DIRS") else
+                [os.path.join(SOURCE_ROOT, "capi", "include"), os.path.join(SOURCE_ROOT, "plugins", "include"),
+                 os.path.join(SOURCE_ROOT, "build", "capi", "include")])
+
+BOX_INDICES = [0, 4, 6, 0, 6, 2, 1, 3, 7, 1, 7, 5, 0, 1, 5, 0, 5, 4, 2, 6, 7, 2, 7, 3, 0, 2, 3, 0, 3, 1, 4, 5, 7, 4, 7, 6]
+FLOOR = [-5, 0, -5, 5, 0, -5, 5, 0, 5, -5, 0, 5]
+QUAD = [0, 2, 1, 0, 3, 2]
+WEST, EAST = (-6.0, 0.0, 0.0), (6.0, 0.0, 0.0)
+
+
+def add_box(world, lo, hi):
+    """A box: corner k takes x from bit 0, y from bit 1, z from bit 2."""
+    v = []
+    for k in range(8):
+        v += [hi[0] if k & 1 else lo[0], hi[1] if k & 2 else lo[1], hi[2] if k & 4 else lo[2]]
+    return world.add_mesh(v, BOX_INDICES)
+
+
+def add_gap_level(world):
+    """Two 10 x 10 m platforms 2 m apart over a 20 m pit: only a jumper crosses (3.2-3.8 m between navmesh rims)."""
+    add_box(world, (-11, -1, -5), (-1, 0, 5))
+    add_box(world, (1, -1, -5), (11, 0, 5))
+    add_box(world, (-12, -21, -6), (12, -20, 6))
+
+
+def walker():
+    return nl.default_agent_capabilities()
+
+
+def jumper(distance=4.5):
+    c = nl.default_agent_capabilities()
+    c.max_jump_distance, c.max_jump_height, c.max_drop_height = distance, 1.5, 5.0
+    return c
+
+
+def horizontal(a, b):
+    return math.hypot(a[0] - b[0], a[2] - b[2])
+
+
+def bake_gap_level(world):
+    add_gap_level(world)
+    navmesh = world.build_navmesh()
+    world.generate_links(navmesh)
+    return navmesh
+
+
+class NavLinkTestCase(unittest.TestCase):
+    def assertFails(self, bit, part, call, *args, **kwargs):
+        with self.assertRaises(nl.NavLinkError) as caught:
+            call(*args, **kwargs)
+        e = caught.exception
+        self.assertTrue(e.has(nl.STATUS_FAILURE) and e.has(bit), "status %#x lacks %#x: %s" % (e.status, bit, e))
+        self.assertIn(part, e.message)
+
+    def assertJumperAcross(self, world, r):
+        """Walk to the west rim, one generated jump (apex above), walk to the goal."""
+        self.assertEqual(r.outcome, nl.PATH_COMPLETE)
+        p = r.points
+        jumps = [i for i, q in enumerate(p) if q.segment != nl.SEGMENT_WALK]
+        self.assertEqual(len(jumps), 1)
+        j = jumps[0]
+        self.assertEqual((p[j].segment, r.info.links_used), (nl.LINK_JUMP, 1))
+        self.assertTrue(p[j].position[0] < -1 and p[j + 1].position[0] > 1, "west rim to east rim")
+        link = world.link(p[j].link)
+        self.assertTrue(link.kind == nl.LINK_JUMP and link.generated == 1)
+        self.assertGreater(p[j].apex[1], max(p[j].position[1], p[j + 1].position[1]))
+        self.assertTrue(p[-1].segment == nl.SEGMENT_WALK and p[0].link.is_null)
+        self.assertLess(horizontal(p[0].position, WEST), 0.01)
+        self.assertLess(horizontal(p[-1].position, EAST), 0.01)
+        self.assertTrue(12 <= r.info.length < 13, r.info.length)
+
+    def assertWalkerStopsAtGap(self, r):
+        self.assertEqual(r.outcome, nl.PATH_PARTIAL)
+        self.assertEqual(r.info.links_used, 0)
+        self.assertTrue(all(q.segment == nl.SEGMENT_WALK and q.link.is_null for q in r.points))
+        self.assertTrue(len(r.points) >= 2 and all(q.position[0] < -1 for q in r.points), "stays west")
+        self.assertGreater(r.points[-1].position[0], -2.1, "ends at the west rim")
+
+
+class LayoutTest(unittest.TestCase):
+    def test_structs_match_the_c_compiler(self):
+        lines = c_layout.layout_lines(INCLUDE_DIRS).splitlines()
+        structs = [line.split() for line in lines if line.startswith("struct ")]
+        self.assertGreaterEqual(len(structs), 30)
+        self.assertEqual({s[1] for s in structs}, set(nl.C_STRUCTS), "every C struct has a ctypes class")
+        for _, name, size, _ in structs:
+            self.assertEqual(ctypes.sizeof(nl.C_STRUCTS[name]), int(size), name)
+        fields = {}
+        for line in lines:
+            if line.startswith("field "):
+                _, struct, field, offset, size = line.split()
+                fields.setdefault(struct, []).append(field)
+                member = getattr(nl.C_STRUCTS[struct], field)
+                self.assertEqual((member.offset, member.size), (int(offset), int(size)), struct + "." + field)
+        for struct, names in fields.items():
+            self.assertEqual([f[0] for f in nl.C_STRUCTS[struct]._fields_], names, struct)
+
+
+class LevelTest(NavLinkTestCase):
+    def test_version_and_statuses(self):
+        self.assertEqual(nl.version()[:2], (0, 1))
+        self.assertIn("invalid handle", nl.status_string(nl.STATUS_FAILURE | nl.STATUS_INVALID_HANDLE))
+
+    def test_world_options(self):
+        with nl.World(worker_count=1, path_worker_count=0) as one:
+            self.assertEqual(one.worker_count, 1)
+        self.assertFails(nl.STATUS_INVALID_ARGUMENT, "worker_count", nl.World, worker_count=-5)
+        world = nl.World()
+        world.close()
+        self.assertRaises(ValueError, world.meshes)
+
+    def test_meshes_and_rays(self):
+        with nl.World() as world:
+            floor = world.add_mesh(FLOOR, QUAD, user_data=42)
+            self.assertTrue(world.is_mesh_valid(floor))
+            info = world.mesh_info(floor)
+            self.assertEqual((info.triangle_count, info.vertex_count, info.user_data), (2, 4, 42))
+            hits = world.cast_rays([nl.Ray(nl.Vec3(-2, 2, 1), nl.Vec3(0, -1, 0), 100),
+                                    nl.Ray(nl.Vec3(8, 2, 0), nl.Vec3(0, -1, 0), 100)])
+            self.assertTrue(hits[0].hit == 1 and hits[0].mesh == floor)
+            self.assertAlmostEqual(hits[0].distance, 2, places=5)
+            self.assertAlmostEqual(hits[0].normal[1], 1, places=5)
+            self.assertTrue(hits[1].hit == 0 and hits[1].distance == 0)
+
+            at = [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 4, 1, 0, 1]
+            lift = world.add_mesh([-1, 0, -1, 1, 0, -1, 1, 0, 1, -1, 0, 1], QUAD, flags=nl.MESH_MOVABLE, transform=at)
+            down = [nl.Ray(nl.Vec3(4, 50, 0), nl.Vec3(0, -1, 0), 100)]
+            self.assertAlmostEqual(world.cast_rays(down)[0].point[1], 1, places=4)
+            at[13] = 3.5
+            world.set_mesh_transform(lift, at)
+            self.assertAlmostEqual(world.cast_rays(down)[0].point[1], 3.5, places=4)
+            self.assertEqual(len(world.meshes()), 2)
+            self.assertEqual(world.segments_blocked([((4, 5, 0), (4, 2, 0)), ((-4, 5, 0), (-4, 2, 0))]), [True, False])
+
+            world.remove_mesh(lift)
+            self.assertFalse(world.is_mesh_valid(lift))
+            self.assertFails(nl.STATUS_INVALID_HANDLE, "nl_mesh_remove", world.remove_mesh, lift)
+            self.assertFails(nl.STATUS_INVALID_HANDLE, "nl_mesh_set_transform", world.set_mesh_transform, lift, at)
+
+    def test_invalid_input_and_the_log_callback(self):
+        logged = []
+        with nl.World(log=lambda level, status, message: logged.append(message)) as world:
+            self.assertFails(nl.STATUS_INVALID_ARGUMENT, "indices", world.add_mesh, FLOOR, [0, 1, 7])
+            self.assertTrue(len(logged) == 1 and "indices" in logged[0], logged)
+            zero = nl.Ray(nl.Vec3(0, 1, 0), nl.Vec3(0, 0, 0), 1)
+            self.assertFails(nl.STATUS_INVALID_ARGUMENT, "rays", world.cast_rays, [zero])
+            self.assertFails(nl.STATUS_PARSE_ERROR, "line", world.add_obj_memory, b"v 0 0 0\nf 1 2 9\n")
+            self.assertFails(nl.STATUS_NOT_FOUND, "nl_mesh_add_obj_file", world.add_obj_file, "/no/such/level.obj")
+            floor = world.add_mesh(FLOOR, QUAD)
+            self.assertFails(nl.STATUS_INVALID_ARGUMENT, "transform", world.set_mesh_transform, floor, [0] * 16)
+            # Null pointers through `lib`: INVALID_ARGUMENT, the argument named.
+            status = nl.lib.nl_world_get_meshes(world.pointer, None, 0, None)
+            self.assertTrue(nl.failed(status) and status & nl.STATUS_INVALID_ARGUMENT)
+            self.assertIn("out_count", nl.last_error_message())
+            count = ctypes.c_uint32()
+            self.assertEqual(nl.lib.nl_world_get_meshes(world.pointer, None, 0, ctypes.byref(count)), nl.STATUS_SUCCESS)
+            self.assertEqual(nl.last_error_message(), "")
+        self.assertTrue(nl.failed(nl.lib.nl_world_create(None, None)))
+        self.assertEqual(nl.lib.nl_world_get_worker_count(None), 0)
+        self.assertTrue(nl.failed(nl.lib.nl_get_last_status()))
+
+    def test_dungeon_obj(self):
+        path = os.path.join(LEVELS, "dungeon.obj")
+        with open(path) as f:
+            expected = sum(len(line.split()) - 3 for line in f if line.split()[:1] == ["f"])
+        with nl.World() as world:
+            info = world.mesh_info(world.add_obj_file(path))
+            self.assertEqual(info.triangle_count + info.degenerate_triangle_count, expected)
+
+
+class NavmeshTest(NavLinkTestCase):
+    def test_navmesh_from_the_level(self):
+        with nl.World() as world:
+            add_gap_level(world)
+            recast = nl.default_recast_settings()
+            self.assertAlmostEqual(recast.cell_size, 0.3, places=6)
+            recast.cell_size = 0.2
+            navmesh = world.build_navmesh(recast=recast, settings_json='{"edge_max_length": 6}')
+            info = world.navmesh_info(navmesh)
+            self.assertTrue(info.polygon_count >= 2 and info.boundary_edge_count >= 8)
+            # Three islands: the platforms and the pit floor 20 m down, walkable but unreachable.
+            self.assertTrue(-12 <= info.bounds_min[0] and info.bounds_max[0] <= 12 and info.bounds_max[1] < 0.5)
+            self.assertTrue(-20.1 < info.bounds_min[1] < -19.5, info.bounds_min[1])
+            self.assertEqual(len(world.navmesh_vertices(navmesh)), info.vertex_count)
+            edges = world.boundary_edges(navmesh)
+            self.assertEqual(len(edges), info.boundary_edge_count)
+            self.assertTrue(all(abs(math.hypot(e.outward[0], e.outward[2]) - 1) < 1e-3 for e in edges))
+            found = world.find_nearest(navmesh, [(-6, 3, 0), (0, 0, 0), (0, 0, 30)], (2, 4, 2))
+            self.assertTrue(found[0].found == 1 and abs(found[0].point[0] + 6) < 1e-3 and found[0].point[1] < 0.5)
+            self.assertTrue(found[1].found == 1 and abs(found[1].point[0]) >= 1.5)
+            self.assertTrue(found[2].found == 0 and found[2].polygon == nl.NO_POLYGON)
+            self.assertEqual(world.navmeshes(), [navmesh])
+            # The settings struct reaches the builder: 3 corners per polygon turn the quads into triangles.
+            triangles = nl.default_recast_settings()
+            triangles.vertices_per_polygon = 3
+            triangulated = world.build_navmesh(recast=triangles)
+            count = world.navmesh_info(triangulated).polygon_count
+            self.assertTrue(all(world.polygon(triangulated, i).vertex_count == 3 for i in range(count)))
+            self.assertTrue(any(world.polygon(navmesh, i).vertex_count > 3 for i in range(info.polygon_count)))
+            world.remove_navmesh(triangulated)
+            self.assertFails(nl.STATUS_PARSE_ERROR, "settings", world.build_navmesh, settings_json="{oops")
+            self.assertFails(nl.STATUS_NOT_FOUND, "nope", world.build_navmesh, builder="nope")
+            world.remove_navmesh(navmesh)
+            self.assertFalse(world.is_navmesh_valid(navmesh))
+            self.assertFails(nl.STATUS_INVALID_HANDLE, "nl_navmesh_get_info", world.navmesh_info, navmesh)
+        with nl.World() as empty:
+            self.assertFails(nl.STATUS_NOT_FOUND, "walkable", empty.build_navmesh)
+
+    def test_navmesh_from_the_host(self):
+        vertices = [0, 0, 0, 0, 0, 1, 1, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0, 0,
+                    1, 0, 0, 1, 0, 1, 2, 0, 1, 1, 0, 0, 2, 0, 1, 2, 0, 0]
+        indices = list(range(12))
+        with nl.World() as world:
+            navmesh = world.add_navmesh(vertices, indices, areas=[0, 0, 5, 5])
+            info = world.navmesh_info(navmesh)
+            self.assertEqual((info.vertex_count, info.welded_vertex_count, info.portal_count,
+                              info.boundary_edge_count), (6, 6, 3, 6))
+            polygon = world.polygon(navmesh, 2)
+            linked = [n for n in polygon.neighbours[:polygon.vertex_count] if n != nl.NO_POLYGON]
+            self.assertTrue(polygon.vertex_count == 3 and polygon.area == 5 and linked and
+                            polygon.neighbours[15] == nl.NO_POLYGON)
+            self.assertFails(nl.STATUS_INVALID_ARGUMENT, "polygon", world.polygon, navmesh, 99)
+            indices[2] = 40
+            self.assertFails(nl.STATUS_INVALID_ARGUMENT, "indices", world.add_navmesh, vertices, indices)
+
+
+class LinkTest(NavLinkTestCase):
+    def test_generated_jump_links(self):
+        with nl.World() as world:
+            add_gap_level(world)
+            navmesh = world.build_navmesh()
+            caller, seen = threading.get_ident(), []
+            report = world.generate_links(navmesh, progress=lambda f, stage: seen.append((f, threading.get_ident())) or True)
+            links = world.links(navmesh)
+            self.assertTrue(report.jump_links >= 5 and report.drop_links == 0 and len(links) == report.jump_links)
+            for link in links:
+                self.assertTrue(link.kind == nl.LINK_JUMP and link.generated == 1 and link.bidirectional == 1)
+                self.assertTrue(3.1 <= link.requirements.gap <= 3.9)
+                self.assertAlmostEqual(link.requirements.gap, horizontal(link.start, link.end), places=3)
+                self.assertTrue(min(link.start[0], link.end[0]) < -1 and max(link.start[0], link.end[0]) > 1)
+                self.assertGreater(link.apex[1], max(link.start[1], link.end[1]))
+            self.assertTrue(len(seen) >= 2 and seen[-1][0] == 1.0 and all(t == caller for _, t in seen))
+
+            short = nl.link_settings_from_json('{"max_link_distance": 3}')
+            self.assertEqual(short.max_link_distance, 3)
+            none = world.generate_links(navmesh, short)
+            self.assertTrue(none.jump_links == 0 and none.rejected_distance > 0 and not world.links(navmesh))
+            self.assertFails(nl.STATUS_INVALID_ARGUMENT, "max_link_dist", nl.link_settings_from_json, '{"max_link_dist": 3}')
+
+            world.generate_links(navmesh)
+            before = [bytes(link) for link in world.links(navmesh)]
+            self.assertFails(nl.STATUS_CANCELLED, "", world.generate_links, navmesh, progress=lambda f, s: False)
+            self.assertEqual([bytes(link) for link in world.links(navmesh)], before)
+
+            def boom(fraction, stage):
+                raise KeyError("progress raises")
+            self.assertRaises(KeyError, world.generate_links, navmesh, progress=boom)
+            self.assertEqual([bytes(link) for link in world.links(navmesh)], before, "the bake was cancelled")
+
+            add_box(world, (-0.1, -20, -6), (0.1, 6, 6))
+            walled = world.update_links_in_box(navmesh, (-0.2, -21, -7), (0.2, 7, 7))
+            self.assertTrue(walled.jump_links == 0 and not world.links(navmesh))
+            self.assertEqual(world.remove_generated_links(navmesh), 0)
+
+    def test_manual_links_and_json(self):
+        with nl.World() as world:
+            add_gap_level(world)
+            navmesh = world.build_navmesh()
+            world.generate_links(navmesh)
+            generated = len(world.links(navmesh))
+            d = nl.default_link_def()
+            self.assertTrue(d.kind == nl.LINK_MANUAL and d.enabled == 1 and d.cost_modifier == 1)
+            d.start, d.end, d.user_data = nl.Vec3(-5, 0, 4), nl.Vec3(5, 0, 4), 7
+            manual = world.add_link(navmesh, d)
+            got = world.link(manual)
+            self.assertTrue(got.kind == nl.LINK_MANUAL and got.generated == 0 and got.user_data == 7)
+            self.assertAlmostEqual(got.requirements.gap, 10, places=4)
+            d.enabled = 0
+            world.update_link(manual, d)
+            self.assertEqual(world.link(manual).enabled, 0)
+            self.assertEqual(world.remove_generated_links(navmesh), generated)
+            self.assertEqual(len(world.links(navmesh)), 1)
+            world.generate_links(navmesh)
+            json = world.save_links_json(navmesh)
+            self.assertIn("navlink-links", json)
+            self.assertEqual(world.load_links_json(navmesh, json), generated + 1)
+            self.assertFalse(world.is_link_valid(manual))
+            self.assertFails(nl.STATUS_INVALID_HANDLE, "nl_link_remove", world.remove_link, manual)
+            self.assertFails(nl.STATUS_PARSE_ERROR, "nl_navmesh_load_links_json", world.load_links_json, navmesh, "[1,")
+            d.end = nl.Vec3(0, 0, 0)
+            self.assertFails(nl.STATUS_INVALID_ARGUMENT, "def->end", world.add_link, navmesh, d)
+
+
+class PathTest(NavLinkTestCase):
+    def test_walker_and_jumper_planned_now(self):
+        with nl.World() as world:
+            navmesh = bake_gap_level(world)
+            self.assertJumperAcross(world, world.find_path(nl.PathQuery(navmesh, WEST, EAST, jumper())))
+            self.assertWalkerStopsAtGap(world.find_path(nl.PathQuery(navmesh, WEST, EAST, walker())))
+            no_partial = nl.PathQuery(navmesh, WEST, EAST, walker())
+            no_partial.accept_partial = False
+            none = world.find_path(no_partial)
+            self.assertTrue(none.outcome == nl.PATH_NO_PATH and not none.points)
+            too_short = world.find_path(nl.PathQuery(navmesh, WEST, EAST, jumper(distance=3.0)))
+            self.assertTrue(too_short.outcome == nl.PATH_PARTIAL and too_short.info.links_used == 0)
+            stroll = world.find_path(nl.PathQuery(navmesh, (-9, 0, -3), (-3, 0, 3), walker()))
+            self.assertTrue(stroll.outcome == nl.PATH_COMPLETE and stroll.info.links_used == 0)
+            self.assertTrue(all(q.segment == nl.SEGMENT_WALK for q in stroll.points))
+            self.assertTrue(8.48 <= stroll.info.length < 8.6, stroll.info.length)
+            off = world.find_path(nl.PathQuery(navmesh, (0, -10, 30), EAST, jumper()))
+            self.assertEqual(off.outcome, nl.PATH_START_OFF_NAVMESH)
+            off = world.find_path(nl.PathQuery(navmesh, WEST, (0, -10, 30), jumper()))
+            self.assertEqual(off.outcome, nl.PATH_GOAL_OFF_NAVMESH)
+
+    def test_queued_with_path_workers_and_callbacks(self):
+        with nl.World() as world:
+            navmesh = bake_gap_level(world)
+            calls, done = [], threading.Semaphore(0)
+
+            def finished(name):
+                return lambda ticket, outcome: (calls.append((name, ticket, outcome)), done.release())
+            walker_ticket = world.request_path(nl.PathQuery(navmesh, WEST, EAST, walker()), finished("walker"))
+            jumper_ticket = world.request_path(nl.PathQuery(navmesh, WEST, EAST, jumper()), finished("jumper"))
+            self.assertNotEqual(walker_ticket, jumper_ticket)
+            self.assertTrue(done.acquire(timeout=20) and done.acquire(timeout=20), "both callbacks ran")
+            self.assertEqual(sorted(calls, key=lambda c: c[0]), [("jumper", jumper_ticket, nl.PATH_COMPLETE),
+                                                                  ("walker", walker_ticket, nl.PATH_PARTIAL)])
+            self.assertEqual(world.poll_path(walker_ticket), nl.PATH_PARTIAL)
+            self.assertWalkerStopsAtGap(world.path_result(walker_ticket))
+            jumped = world.path_result(jumper_ticket)
+            self.assertJumperAcross(world, jumped)
+            direct = world.find_path(nl.PathQuery(navmesh, WEST, EAST, jumper()))
+            self.assertEqual([bytes(p) for p in direct.points], [bytes(p) for p in jumped.points])
+            world.release_path(walker_ticket)
+            world.release_path(jumper_ticket)
+            self.assertFails(nl.STATUS_INVALID_HANDLE, "nl_path_poll", world.poll_path, walker_ticket)
+            self.assertFails(nl.STATUS_INVALID_HANDLE, "nl_path_release", world.release_path, jumper_ticket)
+            self.assertEqual(len(calls), 2, "each callback ran once")
+            self.assertEqual(world.path_queue_stats().unreleased, 0)
+
+    def test_queued_and_run_by_the_host(self):
+        world = nl.World(path_worker_count=0)
+        navmesh = bake_gap_level(world)
+        jumper_ticket = world.request_path(nl.PathQuery(navmesh, WEST, EAST, jumper()))
+        seen = []
+        doomed = world.request_path(nl.PathQuery(navmesh, WEST, EAST, walker()),
+                                    lambda t, o: seen.append((o, threading.get_ident())))
+        stats = world.path_queue_stats()
+        self.assertEqual((stats.workers, stats.queued, stats.submitted), (0, 2, 2))
+        self.assertEqual(world.poll_path(jumper_ticket), nl.PATH_PENDING)
+        self.assertIsNone(world.path_result(jumper_ticket), "no result while pending")
+        world.cancel_path(doomed)
+        self.assertEqual(seen, [(nl.PATH_CANCELLED, threading.get_ident())], "cancelled at once, on this thread")
+        self.assertFails(nl.STATUS_INVALID_ARGUMENT, "nl_path_process", world.process_paths, 0, float("nan"))
+        self.assertEqual(world.process_paths(), 1)
+        self.assertJumperAcross(world, world.path_result(jumper_ticket))
+        stats = world.path_queue_stats()
+        self.assertEqual((stats.finished, stats.unreleased, stats.queued), (2, 2, 0))
+        last = []
+        world.request_path(nl.PathQuery(navmesh, WEST, EAST, jumper()), lambda t, o: last.append(o))
+        world.close()
+        self.assertEqual(last, [nl.PATH_CANCELLED], "closing the world cancels what is queued")
+
+    def test_invalid_requests(self):
+        with nl.World(path_worker_count=0) as world:
+            navmesh = bake_gap_level(world)
+            calls = []
+            self.assertFails(nl.STATUS_INVALID_HANDLE, "nl_path_request", world.request_path,
+                             nl.PathQuery(nl.NavmeshId(), WEST, EAST, walker()), lambda t, o: calls.append(o))
+            negative = jumper()
+            negative.max_jump_distance = -1
+            self.assertFails(nl.STATUS_INVALID_ARGUMENT, "max_jump_distance", world.request_path,
+                             nl.PathQuery(navmesh, WEST, EAST, negative))
+            self.assertFails(nl.STATUS_INVALID_ARGUMENT, "start", world.find_path,
+                             nl.PathQuery(navmesh, (float("nan"), 0, 0), EAST, walker()))
+            world.process_paths()
+            self.assertTrue(not calls and world.path_queue_stats().submitted == 0)
+            self.assertFails(nl.STATUS_INVALID_HANDLE, "nl_path_cancel", world.cancel_path, nl.PathTicket())
+            status = nl.lib.nl_path_get_queue_stats(world.pointer, None)
+            self.assertTrue(nl.failed(status) and status & nl.STATUS_INVALID_ARGUMENT)
+
+
+class PluginTest(NavLinkTestCase):
+    # plugin.h: the strings a plugin hands over are static storage. Class constants live as long as the
+    # program, and ctypes points a c_char_p field at the bytes object's own buffer.
+    NAME = b"python-roof"
+    VERSION = b"1.0"
+    DESCRIPTION = b"one square over the whole level"
+    NO_TRIANGLES = b"python-roof: the level has no triangles"
+
+    def test_plugins(self):
+        """A navmesh builder written in Python: one square over the level's bounds, at its highest vertex."""
+        @nl.NavmeshBuildFn
+        def build(state, host, build_def, sink, sink_context):
+            host = host.contents
+            vertex_count, triangle_count = ctypes.c_uint32(), ctypes.c_uint32()
+            status = host.get_level_triangles(host.context, None, 0, ctypes.byref(vertex_count), None, 0,
+                                              ctypes.byref(triangle_count))
+            if nl.failed(status):
+                return status
+            if triangle_count.value == 0:
+                host.set_error(host.context, self.NO_TRIANGLES)
+                return nl.STATUS_FAILURE | nl.STATUS_NOT_FOUND
+            v = (ctypes.c_float * (3 * vertex_count.value))()
+            t = (ctypes.c_uint32 * (3 * triangle_count.value))()
+            status = host.get_level_triangles(host.context, v, vertex_count, ctypes.byref(vertex_count), t,
+                                              triangle_count, ctypes.byref(triangle_count))
+            if nl.failed(status):
+                return status
+            xs, ys, zs = v[0::3], v[1::3], v[2::3]
+            lo, hi, top = (min(xs), min(zs)), (max(xs), max(zs)), max(ys)
+            quad = nl._floats([lo[0], top, lo[1], lo[0], top, hi[1], hi[0], top, hi[1], hi[0], top, lo[1]])
+            square, corners = (ctypes.c_uint32 * 4)(0, 1, 2, 3), (ctypes.c_uint8 * 1)(4)
+            navmesh = nl.lib.nl_default_navmesh_def()
+            navmesh.vertices, navmesh.vertex_count = ctypes.cast(quad, ctypes.POINTER(ctypes.c_float)), 4
+            navmesh.indices = ctypes.cast(square, ctypes.POINTER(ctypes.c_uint32))
+            navmesh.polygon_vertex_counts = ctypes.cast(corners, ctypes.POINTER(ctypes.c_uint8))
+            navmesh.polygon_count = 1
+            navmesh.agent = build_def.contents.agent
+            return sink(sink_context, ctypes.byref(navmesh))
+
+        @nl.PluginEntryFn
+        def entry(host_abi_version, host, info):
+            if host_abi_version < 1:
+                return nl.STATUS_FAILURE | nl.STATUS_VERSION_MISMATCH
+            info = info.contents
+            info.abi_version = 1
+            info.name, info.version, info.description = PluginTest.NAME, PluginTest.VERSION, PluginTest.DESCRIPTION
+            info.kinds = nl.PLUGIN_NAVMESH_BUILDER
+            info.navmesh_builder.build = build
+            return nl.STATUS_SUCCESS
+
+        with nl.World() as world:
+            builtin = world.plugins()
+            recast = world.plugin_description(builtin[0])
+            self.assertTrue(recast["name"] == "recast" and recast["builtin"])
+            roof = world.register_plugin(entry)
+            mine = world.plugin_description(roof)
+            self.assertEqual((mine["name"], mine["builtin"], mine["version"], mine["kinds"]),
+                             ("python-roof", False, "1.0", nl.PLUGIN_NAVMESH_BUILDER))
+            self.assertEqual(len(world.plugins()), len(builtin) + 1)
+            self.assertFails(nl.STATUS_INVALID_ARGUMENT, "python-roof", world.register_plugin, entry)
+            self.assertFails(nl.STATUS_NOT_FOUND, self.NO_TRIANGLES.decode(), world.build_navmesh, builder="python-roof")
+            world.add_mesh([0, 0, 0, 0, 0, 4, 4, 0.5, 4], [0, 1, 2])
+            info = world.navmesh_info(world.build_navmesh(builder="python-roof"))
+            self.assertEqual((info.polygon_count, info.bounds_max[1], info.bounds_max[0]), (1, 0.5, 4))
+            self.assertFails(nl.STATUS_NOT_FOUND, "nl_plugin_load", world.load_plugin, "/no/such/plugin.so")
+
+
+if __name__ == "__main__":
+    unittest.main()

@@ -1,0 +1,104 @@
+//! navlink.h: "Level geometry" and "Ray queries".
+use crate::status::nl_status;
+use crate::world::nl_world;
+use std::os::raw::c_char;
+
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct nl_mesh_id {
+    pub index1: u32,
+    pub generation: u32,
+}
+
+pub const NL_MESH_MOVABLE: u32 = 0x0000_0001;
+
+#[repr(C)]
+#[derive(Clone, Copy, Debug)]
+pub struct nl_mesh_def {
+    pub size: u32,
+    pub vertices: *const f32,
+    pub vertex_count: u32,
+    pub vertex_stride: u32,
+    pub indices: *const u32,
+    pub triangle_count: u32,
+    pub flags: u32,
+    pub transform: *const f32,
+    pub user_data: u64,
+}
+
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct nl_mesh_info {
+    pub size: u32,
+    pub vertex_count: u32,
+    pub triangle_count: u32,
+    pub degenerate_triangle_count: u32,
+    pub flags: u32,
+    pub transform: [f32; 16],
+    pub bounds_min: [f32; 3],
+    pub bounds_max: [f32; 3],
+    pub user_data: u64,
+}
+
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct nl_ray {
+    pub origin: [f32; 3],
+    pub direction: [f32; 3],
+    pub max_distance: f32,
+}
+
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct nl_ray_hit {
+    pub distance: f32,
+    pub point: [f32; 3],
+    pub normal: [f32; 3],
+    pub mesh: nl_mesh_id,
+    pub triangle: u32,
+    pub hit: u8,
+    pub reserved: [u8; 3],
+}
+
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct nl_segment {
+    pub from: [f32; 3],
+    pub to: [f32; 3],
+}
+
+extern "C" {
+    pub fn nl_default_mesh_def() -> nl_mesh_def;
+    pub fn nl_mesh_add(world: *mut nl_world, def: *const nl_mesh_def, out_id: *mut nl_mesh_id) -> nl_status;
+    pub fn nl_mesh_add_obj_file(
+        world: *mut nl_world,
+        path: *const c_char,
+        def: *const nl_mesh_def,
+        out_id: *mut nl_mesh_id,
+    ) -> nl_status;
+    pub fn nl_mesh_add_obj_memory(
+        world: *mut nl_world,
+        data: *const c_char,
+        length: usize,
+        def: *const nl_mesh_def,
+        out_id: *mut nl_mesh_id,
+    ) -> nl_status;
+    pub fn nl_mesh_remove(world: *mut nl_world, mesh: nl_mesh_id) -> nl_status;
+    pub fn nl_mesh_set_transform(world: *mut nl_world, mesh: nl_mesh_id, transform: *const f32) -> nl_status;
+    pub fn nl_mesh_is_valid(world: *const nl_world, mesh: nl_mesh_id) -> i32;
+    pub fn nl_mesh_get_info(world: *const nl_world, mesh: nl_mesh_id, out_info: *mut nl_mesh_info) -> nl_status;
+    pub fn nl_world_get_meshes(
+        world: *const nl_world,
+        out_ids: *mut nl_mesh_id,
+        capacity: u32,
+        out_count: *mut u32,
+    ) -> nl_status;
+    pub fn nl_world_cast_rays(world: *mut nl_world, rays: *const nl_ray, count: u32, out_hits: *mut nl_ray_hit)
+        -> nl_status;
+    pub fn nl_world_segments_blocked(
+        world: *mut nl_world,
+        segments: *const nl_segment,
+        count: u32,
+        out_blocked: *mut u8,
+    ) -> nl_status;
+}

@@ -1,0 +1,182 @@
+//! navlink.h: "Links".
+use crate::navmesh::nl_navmesh_id;
+use crate::status::nl_status;
+use crate::world::nl_world;
+use std::os::raw::{c_char, c_void};
+
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct nl_link_id {
+    pub index1: u32,
+    pub generation: u32,
+}
+
+pub type nl_link_kind = u32;
+pub const NL_LINK_JUMP: nl_link_kind = 1;
+pub const NL_LINK_DROP: nl_link_kind = 2;
+pub const NL_LINK_MANUAL: nl_link_kind = 3;
+pub const NL_LINK_FIRST_PLUGIN_KIND: nl_link_kind = 256;
+
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct nl_link_requirements {
+    pub gap: f32,
+    pub rise: f32,
+    pub drop: f32,
+    pub clearance_width: f32,
+    pub abilities: u64,
+}
+
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct nl_link {
+    pub id: nl_link_id,
+    pub navmesh: nl_navmesh_id,
+    pub kind: nl_link_kind,
+    pub start: [f32; 3],
+    pub end: [f32; 3],
+    pub apex: [f32; 3],
+    pub bidirectional: u8,
+    pub generated: u8,
+    pub enabled: u8,
+    pub reserved: u8,
+    pub cost_modifier: f32,
+    pub user_data: u64,
+    pub requirements: nl_link_requirements,
+    pub start_polygon: u32,
+    pub end_polygon: u32,
+}
+
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct nl_link_def {
+    pub size: u32,
+    pub kind: nl_link_kind,
+    pub start: [f32; 3],
+    pub end: [f32; 3],
+    pub bidirectional: u8,
+    pub enabled: u8,
+    pub reserved: [u8; 2],
+    pub cost_modifier: f32,
+    pub user_data: u64,
+    pub requirements: nl_link_requirements,
+}
+
+#[repr(C)]
+#[derive(Clone, Copy, Debug)]
+pub struct nl_link_settings {
+    pub size: u32,
+    pub min_edge_length: f32,
+    pub min_group_size: u32,
+    pub max_group_size: u32,
+    pub sample_spacing: f32,
+    pub falloff_distance: f32,
+    pub max_link_distance: f32,
+    pub min_link_distance: f32,
+    pub short_link_distance: f32,
+    pub max_jump_up: f32,
+    pub jump_arc_height: f32,
+    pub strict_forward_angle: f32,
+    pub permissive_forward_angle: f32,
+    pub strict_incline_angle: f32,
+    pub permissive_incline_angle: f32,
+    pub max_drop_distance: f32,
+    pub drop_angles: [f32; 16],
+    pub drop_angle_count: u32,
+    pub drop_steepness: f32,
+    pub merge_distance: f32,
+    pub clearance_margin: f32,
+    pub arc_segments: u32,
+    pub plugin_settings_json: *const c_char,
+    pub plugin_settings_json_length: usize,
+}
+
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct nl_bake_report {
+    pub size: u32,
+    pub edges: u32,
+    pub groups: u32,
+    pub samples: u32,
+    pub takeoff_points: u32,
+    pub jump_candidates: u32,
+    pub drop_candidates: u32,
+    pub jump_links: u32,
+    pub drop_links: u32,
+    pub plugin_links: u32,
+    pub rejected_wall: u32,
+    pub rejected_not_ledge: u32,
+    pub rejected_distance: u32,
+    pub rejected_rise: u32,
+    pub rejected_angle: u32,
+    pub rejected_no_landing: u32,
+    pub rejected_clearance: u32,
+    pub rejected_duplicate: u32,
+    pub rays_cast: u64,
+    pub milliseconds_edges: f64,
+    pub milliseconds_takeoff: f64,
+    pub milliseconds_jumps: f64,
+    pub milliseconds_drops: f64,
+    pub milliseconds_merge: f64,
+    pub milliseconds_total: f64,
+}
+
+/// `nl_progress_fn*`: return 0 to cancel. Called on the thread that started the bake.
+pub type nl_progress_fn = Option<unsafe extern "C" fn(user: *mut c_void, fraction: f32, stage: *const c_char) -> i32>;
+
+extern "C" {
+    pub fn nl_default_link_def() -> nl_link_def;
+    pub fn nl_link_add(
+        world: *mut nl_world,
+        navmesh: nl_navmesh_id,
+        def: *const nl_link_def,
+        out_id: *mut nl_link_id,
+    ) -> nl_status;
+    pub fn nl_link_update(world: *mut nl_world, link: nl_link_id, def: *const nl_link_def) -> nl_status;
+    pub fn nl_link_remove(world: *mut nl_world, link: nl_link_id) -> nl_status;
+    pub fn nl_link_is_valid(world: *const nl_world, link: nl_link_id) -> i32;
+    pub fn nl_link_get(world: *const nl_world, link: nl_link_id, out_link: *mut nl_link) -> nl_status;
+    pub fn nl_navmesh_get_links(
+        world: *const nl_world,
+        navmesh: nl_navmesh_id,
+        out_links: *mut nl_link,
+        capacity: u32,
+        out_count: *mut u32,
+    ) -> nl_status;
+    pub fn nl_navmesh_remove_generated_links(world: *mut nl_world, navmesh: nl_navmesh_id, out_removed: *mut u32)
+        -> nl_status;
+    pub fn nl_default_link_settings() -> nl_link_settings;
+    pub fn nl_link_settings_from_json(json: *const c_char, length: usize, settings: *mut nl_link_settings)
+        -> nl_status;
+    pub fn nl_navmesh_generate_links(
+        world: *mut nl_world,
+        navmesh: nl_navmesh_id,
+        settings: *const nl_link_settings,
+        progress: nl_progress_fn,
+        user: *mut c_void,
+        out_report: *mut nl_bake_report,
+    ) -> nl_status;
+    pub fn nl_navmesh_update_links_in_box(
+        world: *mut nl_world,
+        navmesh: nl_navmesh_id,
+        box_min: *const f32,
+        box_max: *const f32,
+        progress: nl_progress_fn,
+        user: *mut c_void,
+        out_report: *mut nl_bake_report,
+    ) -> nl_status;
+    pub fn nl_navmesh_save_links_json(
+        world: *const nl_world,
+        navmesh: nl_navmesh_id,
+        buffer: *mut c_char,
+        capacity: usize,
+        out_length: *mut usize,
+    ) -> nl_status;
+    pub fn nl_navmesh_load_links_json(
+        world: *mut nl_world,
+        navmesh: nl_navmesh_id,
+        json: *const c_char,
+        length: usize,
+        out_count: *mut u32,
+    ) -> nl_status;
+}

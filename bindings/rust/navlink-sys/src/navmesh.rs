@@ -1,0 +1,150 @@
+//! navlink.h: "Navmeshes" and "Building navmeshes".
+use crate::status::nl_status;
+use crate::world::nl_world;
+use std::os::raw::{c_char, c_void};
+
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct nl_navmesh_id {
+    pub index1: u32,
+    pub generation: u32,
+}
+
+pub const NL_MAX_POLYGON_VERTICES: usize = 16;
+pub const NL_NO_POLYGON: u32 = 0xffff_ffff;
+
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct nl_agent_type {
+    pub radius: f32,
+    pub height: f32,
+    pub max_climb: f32,
+    pub max_slope: f32,
+}
+
+#[repr(C)]
+#[derive(Clone, Copy, Debug)]
+pub struct nl_navmesh_def {
+    pub size: u32,
+    pub vertices: *const f32,
+    pub vertex_count: u32,
+    pub vertex_stride: u32,
+    pub indices: *const u32,
+    pub polygon_vertex_counts: *const u8,
+    pub polygon_count: u32,
+    pub areas: *const u8,
+    pub weld_tolerance: f32,
+    pub agent: nl_agent_type,
+    pub detail_vertices: *const f32,
+    pub detail_vertex_count: u32,
+    pub detail_triangles: *const u32,
+    pub detail_triangle_count: u32,
+    pub detail_triangle_starts: *const u32,
+}
+
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct nl_navmesh_info {
+    pub size: u32,
+    pub vertex_count: u32,
+    pub polygon_count: u32,
+    pub portal_count: u32,
+    pub boundary_edge_count: u32,
+    pub welded_vertex_count: u32,
+    pub flipped_polygon_count: u32,
+    pub dropped_polygon_count: u32,
+    pub non_manifold_edge_count: u32,
+    pub agent: nl_agent_type,
+    pub bounds_min: [f32; 3],
+    pub bounds_max: [f32; 3],
+}
+
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct nl_nav_polygon {
+    pub vertex_count: u32,
+    pub vertices: [u32; NL_MAX_POLYGON_VERTICES],
+    pub neighbours: [u32; NL_MAX_POLYGON_VERTICES],
+    pub area: u32,
+    pub normal: [f32; 3],
+    pub centre: [f32; 3],
+}
+
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct nl_boundary_edge {
+    pub start: [f32; 3],
+    pub end: [f32; 3],
+    pub outward: [f32; 3],
+    pub normal: [f32; 3],
+    pub polygon: u32,
+    pub edge: u32,
+}
+
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct nl_nav_point {
+    pub point: [f32; 3],
+    pub distance: f32,
+    pub polygon: u32,
+    pub found: u8,
+    pub reserved: [u8; 3],
+}
+
+#[repr(C)]
+#[derive(Clone, Copy, Debug)]
+pub struct nl_navmesh_build_def {
+    pub size: u32,
+    pub builder: *const c_char,
+    pub agent: nl_agent_type,
+    pub settings: *const c_void,
+    pub settings_json: *const c_char,
+    pub settings_json_length: usize,
+}
+
+extern "C" {
+    pub fn nl_default_agent_type() -> nl_agent_type;
+    pub fn nl_default_navmesh_def() -> nl_navmesh_def;
+    pub fn nl_navmesh_add(world: *mut nl_world, def: *const nl_navmesh_def, out_id: *mut nl_navmesh_id) -> nl_status;
+    pub fn nl_navmesh_remove(world: *mut nl_world, navmesh: nl_navmesh_id) -> nl_status;
+    pub fn nl_navmesh_is_valid(world: *const nl_world, navmesh: nl_navmesh_id) -> i32;
+    pub fn nl_navmesh_get_info(world: *const nl_world, navmesh: nl_navmesh_id, out_info: *mut nl_navmesh_info)
+        -> nl_status;
+    pub fn nl_navmesh_get_vertices(
+        world: *const nl_world,
+        navmesh: nl_navmesh_id,
+        out_xyz: *mut f32,
+        capacity: u32,
+        out_count: *mut u32,
+    ) -> nl_status;
+    pub fn nl_navmesh_get_polygon(
+        world: *const nl_world,
+        navmesh: nl_navmesh_id,
+        polygon: u32,
+        out_polygon: *mut nl_nav_polygon,
+    ) -> nl_status;
+    pub fn nl_navmesh_get_boundary_edges(
+        world: *const nl_world,
+        navmesh: nl_navmesh_id,
+        out_edges: *mut nl_boundary_edge,
+        capacity: u32,
+        out_count: *mut u32,
+    ) -> nl_status;
+    pub fn nl_navmesh_find_nearest(
+        world: *const nl_world,
+        navmesh: nl_navmesh_id,
+        points: *const f32,
+        count: u32,
+        half_extents: *const f32,
+        out: *mut nl_nav_point,
+    ) -> nl_status;
+    pub fn nl_world_get_navmeshes(
+        world: *const nl_world,
+        out_ids: *mut nl_navmesh_id,
+        capacity: u32,
+        out_count: *mut u32,
+    ) -> nl_status;
+    pub fn nl_default_navmesh_build_def() -> nl_navmesh_build_def;
+    pub fn nl_navmesh_build(world: *mut nl_world, def: *const nl_navmesh_build_def, out_id: *mut nl_navmesh_id)
+        -> nl_status;
+}

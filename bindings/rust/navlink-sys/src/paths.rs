@@ -1,0 +1,137 @@
+//! navlink.h: "Paths".
+use crate::links::nl_link_id;
+use crate::navmesh::nl_navmesh_id;
+use crate::status::nl_status;
+use crate::world::nl_world;
+use std::os::raw::c_void;
+
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct nl_path_ticket {
+    pub index1: u32,
+    pub generation: u32,
+}
+
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct nl_agent_capabilities {
+    pub max_jump_distance: f32,
+    pub max_jump_height: f32,
+    pub max_drop_height: f32,
+    pub radius: f32,
+    pub abilities: u64,
+}
+
+pub const NL_AREA_EXCLUDED: f32 = 0.0;
+
+pub type nl_path_outcome = u32;
+pub const NL_PATH_PENDING: nl_path_outcome = 0;
+pub const NL_PATH_COMPLETE: nl_path_outcome = 1;
+pub const NL_PATH_PARTIAL: nl_path_outcome = 2;
+pub const NL_PATH_NO_PATH: nl_path_outcome = 3;
+pub const NL_PATH_START_OFF_NAVMESH: nl_path_outcome = 4;
+pub const NL_PATH_GOAL_OFF_NAVMESH: nl_path_outcome = 5;
+pub const NL_PATH_CANCELLED: nl_path_outcome = 6;
+pub const NL_PATH_FAILED: nl_path_outcome = 7;
+
+/// `nl_path_callback*`: called exactly once per accepted request, from the thread that finished it.
+pub type nl_path_callback =
+    Option<unsafe extern "C" fn(user: *mut c_void, ticket: nl_path_ticket, outcome: nl_path_outcome)>;
+
+#[repr(C)]
+#[derive(Clone, Copy, Debug)]
+pub struct nl_path_request_def {
+    pub size: u32,
+    pub navmesh: nl_navmesh_id,
+    pub start: [f32; 3],
+    pub goal: [f32; 3],
+    pub search_half_extents: [f32; 3],
+    pub agent: nl_agent_capabilities,
+    pub area_costs: *const f32,
+    pub area_cost_count: u32,
+    pub link_cost: f32,
+    pub max_nodes: u32,
+    pub accept_partial: u8,
+    pub reserved: [u8; 3],
+    pub callback: nl_path_callback,
+    pub user: *mut c_void,
+}
+
+pub type nl_segment_kind = u32;
+pub const NL_SEGMENT_WALK: nl_segment_kind = 0;
+
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct nl_path_point {
+    pub position: [f32; 3],
+    pub polygon: u32,
+    pub segment: nl_segment_kind,
+    pub link: nl_link_id,
+    pub apex: [f32; 3],
+    pub reversed: u8,
+    pub reserved: [u8; 3],
+}
+
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct nl_path_result {
+    pub size: u32,
+    pub outcome: nl_path_outcome,
+    pub status: nl_status,
+    pub point_count: u32,
+    pub links_used: u32,
+    pub nodes_visited: u32,
+    pub out_of_nodes: u8,
+    pub reserved: [u8; 3],
+    pub length: f32,
+    pub cost: f32,
+    pub start: [f32; 3],
+    pub goal: [f32; 3],
+}
+
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct nl_path_queue_stats {
+    pub size: u32,
+    pub workers: u32,
+    pub queued: u32,
+    pub running: u32,
+    pub unreleased: u32,
+    pub reserved: u32,
+    pub submitted: u64,
+    pub finished: u64,
+}
+
+extern "C" {
+    pub fn nl_default_agent_capabilities() -> nl_agent_capabilities;
+    pub fn nl_default_path_request_def() -> nl_path_request_def;
+    pub fn nl_path_find(
+        world: *mut nl_world,
+        def: *const nl_path_request_def,
+        out_result: *mut nl_path_result,
+        out_points: *mut nl_path_point,
+        capacity: u32,
+        out_count: *mut u32,
+    ) -> nl_status;
+    pub fn nl_path_request(world: *mut nl_world, def: *const nl_path_request_def, out_ticket: *mut nl_path_ticket)
+        -> nl_status;
+    pub fn nl_path_poll(world: *const nl_world, ticket: nl_path_ticket, out_outcome: *mut nl_path_outcome)
+        -> nl_status;
+    pub fn nl_path_get_result(
+        world: *const nl_world,
+        ticket: nl_path_ticket,
+        out_result: *mut nl_path_result,
+        out_points: *mut nl_path_point,
+        capacity: u32,
+        out_count: *mut u32,
+    ) -> nl_status;
+    pub fn nl_path_cancel(world: *mut nl_world, ticket: nl_path_ticket) -> nl_status;
+    pub fn nl_path_release(world: *mut nl_world, ticket: nl_path_ticket) -> nl_status;
+    pub fn nl_path_process(
+        world: *mut nl_world,
+        max_requests: u32,
+        max_milliseconds: f64,
+        out_processed: *mut u32,
+    ) -> nl_status;
+    pub fn nl_path_get_queue_stats(world: *const nl_world, out_stats: *mut nl_path_queue_stats) -> nl_status;
+}

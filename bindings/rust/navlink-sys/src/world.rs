@@ -1,0 +1,39 @@
+//! navlink.h: "World".
+use crate::status::nl_status;
+use std::os::raw::{c_char, c_void};
+
+/// Opaque root object.
+#[repr(C)]
+pub struct nl_world {
+    _private: [u8; 0],
+}
+
+pub type nl_log_level = u32;
+pub const NL_LOG_ERROR: nl_log_level = 0;
+pub const NL_LOG_WARNING: nl_log_level = 1;
+pub const NL_LOG_INFO: nl_log_level = 2;
+pub const NL_LOG_DEBUG: nl_log_level = 3;
+
+/// `nl_log_fn*`: called on the failing thread (any host thread or a NavLink worker).
+pub type nl_log_fn =
+    Option<unsafe extern "C" fn(user: *mut c_void, level: nl_log_level, status: nl_status, message: *const c_char)>;
+
+pub const NL_WORKERS_AUTO: i32 = -1;
+
+#[repr(C)]
+#[derive(Clone, Copy, Debug)]
+pub struct nl_world_def {
+    pub size: u32,
+    pub worker_count: i32,
+    pub log_fn: nl_log_fn,
+    pub log_user: *mut c_void,
+    pub log_level: nl_log_level,
+    pub path_worker_count: i32,
+}
+
+extern "C" {
+    pub fn nl_default_world_def() -> nl_world_def;
+    pub fn nl_world_create(def: *const nl_world_def, out_world: *mut *mut nl_world) -> nl_status;
+    pub fn nl_world_destroy(world: *mut nl_world);
+    pub fn nl_world_get_worker_count(world: *const nl_world) -> i32;
+}

@@ -1,0 +1,55 @@
+//! The `extern "C"` functions the library calls back, one per callback type. Each finds its closure
+//! through the `user` pointer and runs it inside `catch_unwind`: unwinding into C is undefined
+//! behaviour, so a panic is either carried back to the caller's thread (progress) or reported on
+//! stderr (log and path callbacks, which may run on a NavLink worker with nobody to resume it).
+use crate::error::borrowed_str;
+use crate::paths::PathOutcome;
+use crate::types::PathTicket;
+use std::any::Any;
+use std::os::raw::{c_char, c_void};
+use std::panic::{catch_unwind, AssertUnwindSafe};
+
+/// What the log callback's `user` points to.
+pub(crate) type LogBox = Box<dyn Fn(u32, u32, &str) + Send + Sync>;
+
+pub(crate) unsafe extern "C" fn log(user: *mut c_void, level: u32, status: u32, message: *const c_char) {
+    let handler = &*(user as *const LogBox);
+    let message = borrowed_str(message);
+    if catch_unwind(AssertUnwindSafe(|| handler(level, status, &message))).is_err() {
+        eprintln!("navlink: the log callback panicked (ignored)");
+    }
+}
+
+/// The state of one bake's progress callback: the closure, and a panic to resume after the call.
+pub(crate) struct ProgressContext<'a> {
+    pub handler: &'a mut dyn FnMut(f32, &str) -> bool,
+    pub panic: Option<Box<dyn Any + Send>>,
+}
+
+pub(crate) unsafe extern "C" fn progress(user: *mut c_void, fraction: f32, stage: *const c_char) -> i32 {
+    let context = &mut *(user as *mut ProgressContext);
+    if context.panic.is_some() {
+        return 0;
+    }
+    let stage = borrowed_str(stage);
+    let handler = &mut context.handler;
+    match catch_unwind(AssertUnwindSafe(|| handler(fraction, &stage))) {
+        Ok(go_on) => go_on as i32,
+        Err(panic) => {
+            // Cancel the bake; the caller resumes the panic once the C call has returned.
+            context.panic = Some(panic);
+            0
+        }
+    }
+}
+
+/// What a path request's `user` points to: called once, then freed.
+pub(crate) type PathBox = Box<dyn FnOnce(PathTicket, PathOutcome) + Send>;
+
+pub(crate) unsafe extern "C" fn path_finished(user: *mut c_void, ticket: PathTicket, outcome: u32) {
+    // navlink.h: exactly once per accepted request, so the box is taken back here.
+    let handler: Box<PathBox> = Box::from_raw(user as *mut PathBox);
+    if catch_unwind(AssertUnwindSafe(move || handler(ticket, PathOutcome::from_raw(outcome)))).is_err() {
+        eprintln!("navlink: a path callback panicked (ignored; the request finished normally)");
+    }
+}

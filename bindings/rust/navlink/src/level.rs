@@ -1,0 +1,122 @@
+//! Level geometry and batch ray queries.
+use crate::error::{check, Error, Result};
+use crate::list::two_call;
+use crate::types::{MeshId, MeshInfo, Ray, RayHit, Segment};
+use crate::world::World;
+use navlink_sys as sys;
+use std::ffi::CString;
+use std::path::Path;
+use std::ptr;
+
+/// What a mesh def carries besides geometry.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct MeshOptions {
+    /// `MESH_MOVABLE` for meshes that will move.
+    pub flags: u32,
+    /// Column-major 4x4 affine matrix (translation in 12, 13, 14); `None`: identity.
+    pub transform: Option<[f32; 16]>,
+    /// Returned by `mesh_info`, never interpreted.
+    pub user_data: u64,
+}
+
+impl MeshOptions {
+    fn def(&self) -> sys::nl_mesh_def {
+        let mut def = unsafe { sys::nl_default_mesh_def() };
+        def.flags = self.flags;
+        def.transform = self.transform.as_ref().map_or(ptr::null(), |t| t.as_ptr());
+        def.user_data = self.user_data;
+        def
+    }
+}
+
+pub(crate) fn c_string(s: &[u8], what: &str) -> Result<CString> {
+    CString::new(s).map_err(|_| Error::binding(sys::NL_STATUS_INVALID_ARGUMENT, format!("{} contains a NUL byte", what)))
+}
+
+#[cfg(unix)]
+pub(crate) fn path_bytes(path: &Path) -> Vec<u8> {
+    use std::os::unix::ffi::OsStrExt;
+    path.as_os_str().as_bytes().to_vec()
+}
+
+#[cfg(not(unix))]
+pub(crate) fn path_bytes(path: &Path) -> Vec<u8> {
+    path.to_string_lossy().into_owned().into_bytes()
+}
+
+impl World {
+    /// Registers a triangle mesh (copied): x y z per vertex, three indices per triangle.
+    pub fn add_mesh(&self, vertices: &[f32], indices: &[u32], options: &MeshOptions) -> Result<MeshId> {
+        let mut def = options.def();
+        def.vertices = vertices.as_ptr();
+        def.vertex_count = (vertices.len() / 3) as u32;
+        def.indices = indices.as_ptr();
+        def.triangle_count = (indices.len() / 3) as u32;
+        let mut id = MeshId::default();
+        check(unsafe { sys::nl_mesh_add(self.raw(), &def, &mut id) })?;
+        Ok(id)
+    }
+
+    /// Loads a Wavefront OBJ file as one mesh.
+    pub fn add_obj_file(&self, path: impl AsRef<Path>, options: &MeshOptions) -> Result<MeshId> {
+        let path = c_string(&path_bytes(path.as_ref()), "path")?;
+        let def = options.def();
+        let mut id = MeshId::default();
+        check(unsafe { sys::nl_mesh_add_obj_file(self.raw(), path.as_ptr(), &def, &mut id) })?;
+        Ok(id)
+    }
+
+    /// Registers OBJ text from memory as one mesh.
+    pub fn add_obj_memory(&self, obj: &[u8], options: &MeshOptions) -> Result<MeshId> {
+        let def = options.def();
+        let mut id = MeshId::default();
+        check(unsafe { sys::nl_mesh_add_obj_memory(self.raw(), obj.as_ptr().cast(), obj.len(), &def, &mut id) })?;
+        Ok(id)
+    }
+
+    pub fn remove_mesh(&self, mesh: MeshId) -> Result<()> {
+        check(unsafe { sys::nl_mesh_remove(self.raw(), mesh) }).map(drop)
+    }
+
+    /// Replaces a mesh's transform (column-major, affine, invertible).
+    pub fn set_mesh_transform(&self, mesh: MeshId, transform: &[f32; 16]) -> Result<()> {
+        check(unsafe { sys::nl_mesh_set_transform(self.raw(), mesh, transform.as_ptr()) }).map(drop)
+    }
+
+    pub fn is_mesh_valid(&self, mesh: MeshId) -> bool {
+        unsafe { sys::nl_mesh_is_valid(self.raw(), mesh) != 0 }
+    }
+
+    pub fn mesh_info(&self, mesh: MeshId) -> Result<MeshInfo> {
+        let mut info = MeshInfo { size: std::mem::size_of::<MeshInfo>() as u32, ..Default::default() };
+        check(unsafe { sys::nl_mesh_get_info(self.raw(), mesh, &mut info) })?;
+        Ok(info)
+    }
+
+    pub fn meshes(&self) -> Result<Vec<MeshId>> {
+        two_call(|buffer, capacity, count| unsafe { sys::nl_world_get_meshes(self.raw(), buffer, capacity, count) })
+    }
+
+    /// Casts every ray into `hits` (one per ray).
+    pub fn cast_rays_into(&self, rays: &[Ray], hits: &mut [RayHit]) -> Result<()> {
+        if hits.len() < rays.len() {
+            return Err(Error::binding(sys::NL_STATUS_INVALID_ARGUMENT, "cast_rays_into: fewer hits than rays".into()));
+        }
+        check(unsafe { sys::nl_world_cast_rays(self.raw(), rays.as_ptr(), rays.len() as u32, hits.as_mut_ptr()) }).map(drop)
+    }
+
+    pub fn cast_rays(&self, rays: &[Ray]) -> Result<Vec<RayHit>> {
+        let mut hits = vec![RayHit::default(); rays.len()];
+        self.cast_rays_into(rays, &mut hits)?;
+        Ok(hits)
+    }
+
+    /// For each segment, whether any geometry lies between its ends.
+    pub fn segments_blocked(&self, segments: &[Segment]) -> Result<Vec<bool>> {
+        let mut blocked = vec![0u8; segments.len()];
+        check(unsafe {
+            sys::nl_world_segments_blocked(self.raw(), segments.as_ptr(), segments.len() as u32, blocked.as_mut_ptr())
+        })?;
+        Ok(blocked.into_iter().map(|b| b != 0).collect())
+    }
+}

@@ -1,0 +1,33 @@
+//! Safe Rust API over NavLink (libnavlink.so): level geometry and ray queries, navmeshes (built by
+//! Recast or handed over), generated jump and drop links, and queued path requests planned for what
+//! each agent's body can do.
+//!
+//! - [`World`] owns an `nl_world*` and destroys it on drop. It is `Send + Sync`: navlink.h makes every
+//!   function that takes a world safe to call from several threads at once, except `nl_world_destroy`,
+//!   which only `Drop` calls, when no borrow is left.
+//! - Failures are [`Error`]s: the `nl_status` and the library's message for the failing call.
+//! - Value types (ids, rays, links, path points...) are navlink-sys's `#[repr(C)]` structs under Rust
+//!   names; lists come back as `Vec`s, batch queries take slices.
+//! - Callbacks are closures behind trampolines that catch panics: a panic never unwinds into C.
+mod callbacks;
+mod error;
+mod level;
+mod links;
+mod list;
+mod navmesh;
+mod paths;
+mod plugins;
+mod types;
+mod world;
+
+pub use error::{status_string, Error, Result};
+pub use level::MeshOptions;
+pub use links::{default_link_def, default_link_settings, link_settings_from_json, Progress};
+pub use navmesh::{default_agent_type, default_recast_settings, NavmeshBuild, NavmeshDetail, NavmeshInput};
+pub use paths::{default_agent_capabilities, PathOutcome, PathQuery, PathResult};
+pub use plugins::PluginSummary;
+pub use types::*;
+pub use world::{LogFn, World, WorldOptions};
+
+/// The raw bindings, for what the safe API does not cover (and for writing plugins).
+pub use navlink_sys as sys;

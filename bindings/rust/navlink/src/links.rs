@@ -1,0 +1,154 @@
+//! Links: generation, the link store, JSON.
+use crate::callbacks::{self, ProgressContext};
+use crate::error::{check, Error, Result};
+use crate::list::two_call;
+use crate::types::{BakeReport, Link, LinkDef, LinkId, LinkSettings, NavmeshId};
+use crate::world::World;
+use navlink_sys as sys;
+use std::os::raw::{c_char, c_void};
+use std::panic::resume_unwind;
+use std::ptr;
+
+/// Bake progress: (fraction done, stage name) -> go on? Called on the thread that started the bake.
+pub type Progress<'a> = &'a mut dyn FnMut(f32, &str) -> bool;
+
+/// A manual one-way link, enabled, cost modifier 1: set start and end.
+pub fn default_link_def() -> LinkDef {
+    unsafe { sys::nl_default_link_def() }
+}
+
+pub fn default_link_settings() -> LinkSettings {
+    unsafe { sys::nl_default_link_settings() }
+}
+
+/// Applies a JSON object's keys to `base` (the defaults when `None`) and validates the result.
+pub fn link_settings_from_json(json: &str, base: Option<LinkSettings>) -> Result<LinkSettings> {
+    let mut settings = base.unwrap_or_else(default_link_settings);
+    check(unsafe { sys::nl_link_settings_from_json(non_null(json), json.len(), &mut settings) })?;
+    Ok(settings)
+}
+
+/// A pointer to the text, never null (an empty string is still "given").
+fn non_null(text: &str) -> *const c_char {
+    if text.is_empty() {
+        b"\0".as_ptr().cast()
+    } else {
+        text.as_ptr().cast()
+    }
+}
+
+/// Runs a bake with an optional progress closure; a panic in it cancels the bake and resumes here.
+fn with_progress(progress: Option<Progress<'_>>, call: impl FnOnce(sys::nl_progress_fn, *mut c_void) -> u32) -> Result<()> {
+    let handler = match progress {
+        None => return check(call(None, ptr::null_mut())).map(drop),
+        Some(handler) => handler,
+    };
+    let mut context = ProgressContext { handler, panic: None };
+    let status = call(Some(callbacks::progress), &mut context as *mut ProgressContext as *mut c_void);
+    let result = check(status).map(drop);
+    if let Some(panic) = context.panic.take() {
+        resume_unwind(panic);
+    }
+    result
+}
+
+impl World {
+    pub fn add_link(&self, navmesh: NavmeshId, def: &LinkDef) -> Result<LinkId> {
+        let mut id = LinkId::default();
+        check(unsafe { sys::nl_link_add(self.raw(), navmesh, def, &mut id) })?;
+        Ok(id)
+    }
+
+    pub fn update_link(&self, link: LinkId, def: &LinkDef) -> Result<()> {
+        check(unsafe { sys::nl_link_update(self.raw(), link, def) }).map(drop)
+    }
+
+    pub fn remove_link(&self, link: LinkId) -> Result<()> {
+        check(unsafe { sys::nl_link_remove(self.raw(), link) }).map(drop)
+    }
+
+    pub fn is_link_valid(&self, link: LinkId) -> bool {
+        unsafe { sys::nl_link_is_valid(self.raw(), link) != 0 }
+    }
+
+    pub fn link(&self, link: LinkId) -> Result<Link> {
+        let mut out = Link::default();
+        check(unsafe { sys::nl_link_get(self.raw(), link, &mut out) })?;
+        Ok(out)
+    }
+
+    /// The navmesh's links (generated and manual), in the order they were added.
+    pub fn links(&self, navmesh: NavmeshId) -> Result<Vec<Link>> {
+        two_call(|buffer, capacity, count| unsafe { sys::nl_navmesh_get_links(self.raw(), navmesh, buffer, capacity, count) })
+    }
+
+    /// Removes the navmesh's generated links; returns how many went.
+    pub fn remove_generated_links(&self, navmesh: NavmeshId) -> Result<u32> {
+        let mut removed = 0;
+        check(unsafe { sys::nl_navmesh_remove_generated_links(self.raw(), navmesh, &mut removed) })?;
+        Ok(removed)
+    }
+
+    /// Generates the navmesh's jump and drop links (and plugin kinds'), replacing the generated ones.
+    /// `plugin_settings_json` fills the settings' plugin_settings_json. A progress closure returning false
+    /// cancels (an `Error` with CANCELLED); one that panics cancels too, and the panic resumes here.
+    pub fn generate_links(
+        &self,
+        navmesh: NavmeshId,
+        settings: Option<&LinkSettings>,
+        plugin_settings_json: Option<&str>,
+        progress: Option<Progress<'_>>,
+    ) -> Result<BakeReport> {
+        let mut settings = settings.copied().unwrap_or_else(default_link_settings);
+        if let Some(json) = plugin_settings_json {
+            settings.plugin_settings_json = non_null(json);
+            settings.plugin_settings_json_length = json.len();
+        }
+        let mut report = BakeReport { size: std::mem::size_of::<BakeReport>() as u32, ..Default::default() };
+        with_progress(progress, |function, user| unsafe {
+            sys::nl_navmesh_generate_links(self.raw(), navmesh, &settings, function, user, &mut report)
+        })?;
+        Ok(report)
+    }
+
+    /// Regenerates only what geometry changes inside `[box_min, box_max]` can have affected.
+    pub fn update_links_in_box(
+        &self,
+        navmesh: NavmeshId,
+        box_min: [f32; 3],
+        box_max: [f32; 3],
+        progress: Option<Progress<'_>>,
+    ) -> Result<BakeReport> {
+        let mut report = BakeReport { size: std::mem::size_of::<BakeReport>() as u32, ..Default::default() };
+        with_progress(progress, |function, user| unsafe {
+            sys::nl_navmesh_update_links_in_box(self.raw(), navmesh, box_min.as_ptr(), box_max.as_ptr(), function, user, &mut report)
+        })?;
+        Ok(report)
+    }
+
+    /// The navmesh's links as JSON (schema "navlink-links" version 1).
+    pub fn save_links_json(&self, navmesh: NavmeshId) -> Result<String> {
+        loop {
+            let mut length = 0usize;
+            check(unsafe { sys::nl_navmesh_save_links_json(self.raw(), navmesh, ptr::null_mut(), 0, &mut length) })?;
+            let mut buffer = vec![0u8; length + 1];
+            let status = unsafe {
+                sys::nl_navmesh_save_links_json(self.raw(), navmesh, buffer.as_mut_ptr().cast(), buffer.len(), &mut length)
+            };
+            if sys::nl_failed(status) && status & sys::NL_STATUS_BUFFER_TOO_SMALL != 0 {
+                continue; // the links changed between the two calls
+            }
+            check(status)?;
+            buffer.truncate(length);
+            return String::from_utf8(buffer)
+                .map_err(|_| Error::binding(sys::NL_STATUS_INTERNAL_ERROR, "links JSON is not UTF-8".into()));
+        }
+    }
+
+    /// Replaces all of the navmesh's links with those in `json`; returns how many were loaded.
+    pub fn load_links_json(&self, navmesh: NavmeshId, json: &str) -> Result<u32> {
+        let mut count = 0;
+        check(unsafe { sys::nl_navmesh_load_links_json(self.raw(), navmesh, non_null(json), json.len(), &mut count) })?;
+        Ok(count)
+    }
+}

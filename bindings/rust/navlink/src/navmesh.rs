@@ -1,0 +1,168 @@
+//! Navmeshes: built from the level by a builder plugin, or handed over by the host.
+use crate::error::{check, Result};
+use crate::level::c_string;
+use crate::list::two_call;
+use crate::types::{AgentType, BoundaryEdge, NavPoint, NavPolygon, NavmeshId, NavmeshInfo, RecastSettings};
+use crate::world::World;
+use navlink_sys as sys;
+use std::os::raw::c_void;
+use std::ptr;
+
+/// How to build a navmesh from the registered meshes.
+#[derive(Clone, Copy, Debug)]
+pub struct NavmeshBuild<'a> {
+    pub agent: AgentType,
+    /// The Recast builder's settings (`None`: its defaults).
+    pub recast: Option<RecastSettings>,
+    /// Settings as a JSON object, applied over `recast`.
+    pub settings_json: Option<&'a str>,
+    /// A navmesh-builder plugin's name; `None`: "recast".
+    pub builder: Option<&'a str>,
+}
+
+impl<'a> NavmeshBuild<'a> {
+    pub fn new(agent: AgentType) -> Self {
+        NavmeshBuild { agent, recast: None, settings_json: None, builder: None }
+    }
+}
+
+/// Height detail over the polygons, as Recast's detail mesh.
+#[derive(Clone, Copy, Debug)]
+pub struct NavmeshDetail<'a> {
+    pub vertices: &'a [f32],
+    pub triangles: &'a [u32],
+    /// polygon_count + 1 offsets into the triangles.
+    pub triangle_starts: &'a [u32],
+}
+
+/// A navmesh from the host's engine (`nl_navmesh_def`).
+#[derive(Clone, Copy, Debug)]
+pub struct NavmeshInput<'a> {
+    pub vertices: &'a [f32],
+    pub indices: &'a [u32],
+    /// Corners of each polygon; `None`: triangles.
+    pub polygon_vertex_counts: Option<&'a [u8]>,
+    pub areas: Option<&'a [u8]>,
+    pub weld_tolerance: f32,
+    pub agent: AgentType,
+    pub detail: Option<NavmeshDetail<'a>>,
+}
+
+impl<'a> NavmeshInput<'a> {
+    /// Triangles with the header's defaults (weld tolerance 1 mm, default agent).
+    pub fn triangles(vertices: &'a [f32], indices: &'a [u32]) -> Self {
+        let def = unsafe { sys::nl_default_navmesh_def() };
+        NavmeshInput {
+            vertices,
+            indices,
+            polygon_vertex_counts: None,
+            areas: None,
+            weld_tolerance: def.weld_tolerance,
+            agent: def.agent,
+            detail: None,
+        }
+    }
+}
+
+/// Recast's usual agent: radius 0.6, height 2, climb 0.9, slope 45.
+pub fn default_agent_type() -> AgentType {
+    unsafe { sys::nl_default_agent_type() }
+}
+
+pub fn default_recast_settings() -> RecastSettings {
+    unsafe { sys::nl_default_recast_settings() }
+}
+
+impl World {
+    pub fn build_navmesh(&self, build: &NavmeshBuild<'_>) -> Result<NavmeshId> {
+        let builder = build.builder.map(|b| c_string(b.as_bytes(), "builder")).transpose()?;
+        let mut def = unsafe { sys::nl_default_navmesh_build_def() };
+        def.agent = build.agent;
+        def.builder = builder.as_ref().map_or(ptr::null(), |b| b.as_ptr());
+        def.settings = build.recast.as_ref().map_or(ptr::null(), |r| r as *const RecastSettings as *const c_void);
+        if let Some(json) = build.settings_json {
+            // A non-null pointer even for "", which is not a JSON object: the library says so.
+            def.settings_json = if json.is_empty() { b"\0".as_ptr().cast() } else { json.as_ptr().cast() };
+            def.settings_json_length = json.len();
+        }
+        let mut id = NavmeshId::default();
+        check(unsafe { sys::nl_navmesh_build(self.raw(), &def, &mut id) })?;
+        Ok(id)
+    }
+
+    /// Adds the host's navmesh (copied, repaired as nl_navmesh_add says).
+    pub fn add_navmesh(&self, input: &NavmeshInput<'_>) -> Result<NavmeshId> {
+        let mut def = unsafe { sys::nl_default_navmesh_def() };
+        def.vertices = input.vertices.as_ptr();
+        def.vertex_count = (input.vertices.len() / 3) as u32;
+        def.indices = input.indices.as_ptr();
+        def.polygon_vertex_counts = input.polygon_vertex_counts.map_or(ptr::null(), |c| c.as_ptr());
+        def.polygon_count = input.polygon_vertex_counts.map_or(input.indices.len() / 3, |c| c.len()) as u32;
+        def.areas = input.areas.map_or(ptr::null(), |a| a.as_ptr());
+        def.weld_tolerance = input.weld_tolerance;
+        def.agent = input.agent;
+        if let Some(detail) = &input.detail {
+            def.detail_vertices = detail.vertices.as_ptr();
+            def.detail_vertex_count = (detail.vertices.len() / 3) as u32;
+            def.detail_triangles = detail.triangles.as_ptr();
+            def.detail_triangle_count = (detail.triangles.len() / 3) as u32;
+            def.detail_triangle_starts = detail.triangle_starts.as_ptr();
+        }
+        let mut id = NavmeshId::default();
+        check(unsafe { sys::nl_navmesh_add(self.raw(), &def, &mut id) })?;
+        Ok(id)
+    }
+
+    pub fn remove_navmesh(&self, navmesh: NavmeshId) -> Result<()> {
+        check(unsafe { sys::nl_navmesh_remove(self.raw(), navmesh) }).map(drop)
+    }
+
+    pub fn is_navmesh_valid(&self, navmesh: NavmeshId) -> bool {
+        unsafe { sys::nl_navmesh_is_valid(self.raw(), navmesh) != 0 }
+    }
+
+    pub fn navmesh_info(&self, navmesh: NavmeshId) -> Result<NavmeshInfo> {
+        let mut info = NavmeshInfo { size: std::mem::size_of::<NavmeshInfo>() as u32, ..Default::default() };
+        check(unsafe { sys::nl_navmesh_get_info(self.raw(), navmesh, &mut info) })?;
+        Ok(info)
+    }
+
+    /// The navmesh's vertices after welding.
+    pub fn navmesh_vertices(&self, navmesh: NavmeshId) -> Result<Vec<[f32; 3]>> {
+        two_call(|buffer: *mut [f32; 3], capacity, count| unsafe {
+            sys::nl_navmesh_get_vertices(self.raw(), navmesh, buffer.cast(), capacity, count)
+        })
+    }
+
+    pub fn polygon(&self, navmesh: NavmeshId, polygon: u32) -> Result<NavPolygon> {
+        let mut out = NavPolygon::default();
+        check(unsafe { sys::nl_navmesh_get_polygon(self.raw(), navmesh, polygon, &mut out) })?;
+        Ok(out)
+    }
+
+    pub fn boundary_edges(&self, navmesh: NavmeshId) -> Result<Vec<BoundaryEdge>> {
+        two_call(|buffer, capacity, count| unsafe {
+            sys::nl_navmesh_get_boundary_edges(self.raw(), navmesh, buffer, capacity, count)
+        })
+    }
+
+    /// The navmesh point nearest each query point within the box `point +- half_extents`.
+    pub fn find_nearest(&self, navmesh: NavmeshId, points: &[[f32; 3]], half_extents: [f32; 3]) -> Result<Vec<NavPoint>> {
+        let mut out = vec![NavPoint::default(); points.len()];
+        check(unsafe {
+            sys::nl_navmesh_find_nearest(
+                self.raw(),
+                navmesh,
+                points.as_ptr().cast(),
+                points.len() as u32,
+                half_extents.as_ptr(),
+                out.as_mut_ptr(),
+            )
+        })?;
+        Ok(out)
+    }
+
+    pub fn navmeshes(&self) -> Result<Vec<NavmeshId>> {
+        two_call(|buffer, capacity, count| unsafe { sys::nl_world_get_navmeshes(self.raw(), buffer, capacity, count) })
+    }
+}

@@ -1,0 +1,96 @@
+//! The world: the root object that owns everything.
+use crate::callbacks::{self, LogBox};
+use crate::error::{check, Error, Result};
+use crate::types::Version;
+use navlink_sys as sys;
+use std::os::raw::c_void;
+use std::ptr::NonNull;
+
+/// Receives every failure of a call on the world (and, by `log_level`, warnings...): level, status,
+/// message. Called on the failing thread, which may be a NavLink worker, hence `Send + Sync`; it must not
+/// call into the same world (navlink.h).
+pub type LogFn = dyn Fn(u32, u32, &str) + Send + Sync;
+
+/// How to create a world (`nl_world_def`).
+pub struct WorldOptions {
+    /// Threads for batch work, the caller included; `WORKERS_AUTO`: one per hardware thread.
+    pub worker_count: i32,
+    /// Threads planning queued path requests; 0: the host runs the queue with `World::process_paths`.
+    pub path_worker_count: i32,
+    pub log_level: u32,
+    pub log: Option<Box<LogFn>>,
+}
+
+impl Default for WorldOptions {
+    fn default() -> Self {
+        let def = unsafe { sys::nl_default_world_def() };
+        WorldOptions {
+            worker_count: def.worker_count,
+            path_worker_count: def.path_worker_count,
+            log_level: def.log_level,
+            log: None,
+        }
+    }
+}
+
+/// A NavLink world. Its methods may be called from several threads at once (navlink.h); dropping it
+/// destroys the world, finishing queued path requests as cancelled (their callbacks run then).
+pub struct World {
+    raw: NonNull<sys::nl_world>,
+    // The log callback's closure; dropped after the world (fields drop after `Drop::drop`).
+    _log: Option<Box<LogBox>>,
+}
+
+// navlink.h: "all functions that take a world are safe to call from several threads at once on the same
+// world; nl_world_destroy must not race with any other call on it". Drop takes the world by value, after
+// every borrow has ended, so no call can race with it.
+unsafe impl Send for World {}
+unsafe impl Sync for World {}
+
+impl World {
+    /// A world with every default.
+    pub fn new() -> Result<World> {
+        World::with_options(WorldOptions::default())
+    }
+
+    pub fn with_options(options: WorldOptions) -> Result<World> {
+        let mut def = unsafe { sys::nl_default_world_def() };
+        def.worker_count = options.worker_count;
+        def.path_worker_count = options.path_worker_count;
+        def.log_level = options.log_level;
+        let log: Option<Box<LogBox>> = options.log.map(Box::new);
+        if let Some(handler) = &log {
+            def.log_fn = Some(callbacks::log);
+            def.log_user = &**handler as *const LogBox as *mut c_void;
+        }
+        let mut raw = std::ptr::null_mut();
+        check(unsafe { sys::nl_world_create(&def, &mut raw) })?;
+        let raw = NonNull::new(raw).ok_or_else(|| Error::binding(sys::NL_STATUS_INTERNAL_ERROR, "null world".into()))?;
+        Ok(World { raw, _log: log })
+    }
+
+    /// The loaded library's version.
+    pub fn library_version() -> Version {
+        unsafe { sys::nl_get_version() }
+    }
+
+    /// Threads used for batch work (1 when everything runs on the caller).
+    pub fn worker_count(&self) -> i32 {
+        unsafe { sys::nl_world_get_worker_count(self.raw()) }
+    }
+
+    /// The `nl_world*`, for navlink-sys calls; valid while `self` lives. Do not destroy it.
+    pub fn as_ptr(&self) -> *mut sys::nl_world {
+        self.raw.as_ptr()
+    }
+
+    pub(crate) fn raw(&self) -> *mut sys::nl_world {
+        self.raw.as_ptr()
+    }
+}
+
+impl Drop for World {
+    fn drop(&mut self) {
+        unsafe { sys::nl_world_destroy(self.raw.as_ptr()) }
+    }
+}

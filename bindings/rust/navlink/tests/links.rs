@@ -1,0 +1,93 @@
+//! Link generation on the gap level, manual links, JSON, progress closures.
+mod common;
+
+use common::*;
+use navlink::{default_agent_type, default_link_def, link_kind, link_settings_from_json, status, NavmeshBuild, NavmeshId, World};
+
+fn gap_world() -> (World, NavmeshId) {
+    let world = World::new().unwrap();
+    add_gap_level(&world);
+    let navmesh = world.build_navmesh(&NavmeshBuild::new(default_agent_type())).unwrap();
+    (world, navmesh)
+}
+
+#[test]
+fn generated_jump_links() {
+    let (world, navmesh) = gap_world();
+    let caller = std::thread::current().id();
+    let mut fractions = Vec::new();
+    let mut other_thread = 0;
+    let mut progress = |fraction: f32, _stage: &str| {
+        fractions.push(fraction);
+        other_thread += (std::thread::current().id() != caller) as i32;
+        true
+    };
+    let report = world.generate_links(navmesh, None, None, Some(&mut progress)).unwrap();
+    let links = world.links(navmesh).unwrap();
+    assert!(report.jump_links >= 5 && report.drop_links == 0 && links.len() as u32 == report.jump_links, "{:?}", report);
+    for l in &links {
+        assert!(l.kind == link_kind::JUMP && l.generated == 1 && l.bidirectional == 1 && l.navmesh == navmesh);
+        assert!(l.requirements.gap >= 3.1 && l.requirements.gap <= 3.9);
+        assert!((l.requirements.gap - horizontal_distance(l.start, l.end)).abs() < 1e-3);
+        assert!(l.start[0].min(l.end[0]) < -1.0 && l.start[0].max(l.end[0]) > 1.0, "one end on each platform");
+        assert!(l.apex[1] > l.start[1].max(l.end[1]), "the apex is above the ends");
+    }
+    assert!(fractions.len() >= 2 && *fractions.last().unwrap() == 1.0 && other_thread == 0);
+
+    // Settings from JSON: a max_link_distance below the gap leaves nothing to jump.
+    let short = link_settings_from_json("{\"max_link_distance\": 3}", None).unwrap();
+    assert_eq!(short.max_link_distance, 3.0);
+    let none = world.generate_links(navmesh, Some(&short), None, None).unwrap();
+    assert!(none.jump_links == 0 && none.rejected_distance > 0 && world.links(navmesh).unwrap().is_empty());
+    assert_fails(link_settings_from_json("{\"max_link_dist\": 3}", None), status::INVALID_ARGUMENT, "max_link_dist");
+
+    // Cancelling leaves the links as they were; a panic cancels and resumes in the caller.
+    world.generate_links(navmesh, None, None, None).unwrap();
+    let before = world.links(navmesh).unwrap();
+    assert_fails(world.generate_links(navmesh, None, None, Some(&mut |_, _| false)), status::CANCELLED, "");
+    assert_eq!(world.links(navmesh).unwrap(), before, "a cancelled bake changes nothing");
+    let panicked = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+        let _ = world.generate_links(navmesh, None, None, Some(&mut |_, _| panic!("progress panics")));
+    }));
+    assert!(panicked.is_err(), "the closure's panic comes back to the caller");
+    assert_eq!(world.links(navmesh).unwrap(), before, "and the bake was cancelled");
+
+    // A wall in the gap: the update in its box removes every jump, as a full generation would.
+    add_box(&world, [-0.1, -20.0, -6.0], [0.1, 6.0, 6.0]);
+    let walled = world.update_links_in_box(navmesh, [-0.2, -21.0, -7.0], [0.2, 7.0, 7.0], None).unwrap();
+    assert!(walled.jump_links == 0 && world.links(navmesh).unwrap().is_empty(), "{:?}", walled);
+    assert_eq!(world.remove_generated_links(navmesh).unwrap(), 0);
+}
+
+#[test]
+fn manual_links_and_json() {
+    let (world, navmesh) = gap_world();
+    world.generate_links(navmesh, None, None, None).unwrap();
+    let generated = world.links(navmesh).unwrap().len() as u32;
+
+    let mut def = default_link_def();
+    assert!(def.kind == link_kind::MANUAL && def.enabled == 1 && def.cost_modifier == 1.0);
+    def.start = [-5.0, 0.0, 4.0];
+    def.end = [5.0, 0.0, 4.0];
+    def.user_data = 7;
+    let manual = world.add_link(navmesh, &def).unwrap();
+    let got = world.link(manual).unwrap();
+    assert!(got.kind == link_kind::MANUAL && got.generated == 0 && got.user_data == 7);
+    assert!((got.requirements.gap - 10.0).abs() < 1e-4, "the gap is computed from the ends");
+    def.enabled = 0;
+    world.update_link(manual, &def).unwrap();
+    assert_eq!(world.link(manual).unwrap().enabled, 0);
+
+    assert_eq!(world.remove_generated_links(navmesh).unwrap(), generated);
+    assert_eq!(world.links(navmesh).unwrap().len(), 1);
+    world.generate_links(navmesh, None, None, None).unwrap();
+    let json = world.save_links_json(navmesh).unwrap();
+    assert!(json.contains("navlink-links"));
+    assert_eq!(world.load_links_json(navmesh, &json).unwrap(), generated + 1);
+    assert!(!world.is_link_valid(manual), "loaded links get new ids");
+    assert_fails(world.link(manual), status::INVALID_HANDLE, "nl_link_get");
+    assert_fails(world.remove_link(manual), status::INVALID_HANDLE, "nl_link_remove");
+    assert_fails(world.load_links_json(navmesh, "[1,"), status::PARSE_ERROR, "nl_navmesh_load_links_json");
+    def.end = [0.0, 0.0, 0.0]; // over the gap: off the navmesh
+    assert_fails(world.add_link(navmesh, &def), status::INVALID_ARGUMENT, "def->end");
+}

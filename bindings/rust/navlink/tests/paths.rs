@@ -1,0 +1,169 @@
+//! Path requests on the gap level for two bodies: a walker (no jumps) cannot cross the gap, a jumper must
+//! jump it. Planned now, queued with worker threads and closures, and queued with no workers
+//! (process_paths, polling, cancelling).
+mod common;
+
+use common::*;
+use navlink::{
+    default_agent_type, link_kind, status, NavmeshBuild, NavmeshId, PathOutcome, PathQuery, PathResult, World, WorldOptions,
+};
+use std::sync::mpsc;
+use std::sync::{Arc, Mutex};
+use std::time::Duration;
+
+fn bake_gap_level(world: &World) -> NavmeshId {
+    add_gap_level(world);
+    let navmesh = world.build_navmesh(&NavmeshBuild::new(default_agent_type())).unwrap();
+    world.generate_links(navmesh, None, None, None).unwrap();
+    navmesh
+}
+
+/// Across the gap in one jump: walk to the west rim, jump (a generated jump link, apex above), walk on.
+fn check_jumper_across(world: &World, r: &PathResult) {
+    assert_eq!(r.outcome(), PathOutcome::Complete);
+    let p = &r.points;
+    let jumps: Vec<usize> = (0..p.len()).filter(|&i| p[i].segment != link_kind::WALK).collect();
+    assert!(jumps.len() == 1 && p[jumps[0]].segment == link_kind::JUMP && r.info.links_used == 1, "{:?}", p);
+    let j = jumps[0];
+    assert!(j + 1 < p.len() && p[j].position[0] < -1.0 && p[j + 1].position[0] > 1.0, "west rim to east rim");
+    let link = world.link(p[j].link).unwrap();
+    assert!(link.kind == link_kind::JUMP && link.generated == 1);
+    assert!(p[j].apex[1] > p[j].position[1].max(p[j + 1].position[1]), "apex above both ends");
+    assert!(p.last().unwrap().segment == link_kind::WALK && p[0].link == Default::default());
+    assert!(horizontal_distance(p[0].position, WEST) < 0.01 && horizontal_distance(p.last().unwrap().position, EAST) < 0.01);
+    assert!(r.info.length >= 12.0 && r.info.length < 13.0, "{} m", r.info.length);
+}
+
+/// No link for a walker: the path leads to the reachable point nearest the goal, the west rim.
+fn check_walker_stops_at_gap(r: &PathResult) {
+    assert_eq!(r.outcome(), PathOutcome::Partial);
+    assert!(r.info.links_used == 0 && r.points.iter().all(|q| q.segment == link_kind::WALK && q.link == Default::default()));
+    assert!(r.points.len() >= 2 && r.points.iter().all(|q| q.position[0] < -1.0), "stays on the west platform");
+    assert!(r.points.last().unwrap().position[0] > -2.1, "ends at the west rim");
+}
+
+#[test]
+fn walker_and_jumper_planned_now() {
+    let world = World::new().unwrap();
+    let navmesh = bake_gap_level(&world);
+    check_jumper_across(&world, &world.find_path(&PathQuery::new(navmesh, WEST, EAST, jumper())).unwrap());
+    check_walker_stops_at_gap(&world.find_path(&PathQuery::new(navmesh, WEST, EAST, walker())).unwrap());
+
+    let no_partial = PathQuery { accept_partial: false, ..PathQuery::new(navmesh, WEST, EAST, walker()) };
+    let none = world.find_path(&no_partial).unwrap();
+    assert!(none.outcome() == PathOutcome::NoPath && none.points.is_empty());
+
+    // A jumper whose jump is shorter than the gap is filtered out of every link.
+    let short = navlink::AgentCapabilities { max_jump_distance: 3.0, ..jumper() };
+    let too_short = world.find_path(&PathQuery::new(navmesh, WEST, EAST, short)).unwrap();
+    assert!(too_short.outcome() == PathOutcome::Partial && too_short.info.links_used == 0);
+
+    let stroll = world.find_path(&PathQuery::new(navmesh, [-9.0, 0.0, -3.0], [-3.0, 0.0, 3.0], walker())).unwrap();
+    assert!(stroll.outcome() == PathOutcome::Complete && stroll.info.links_used == 0 && stroll.points.len() >= 2);
+    assert!(stroll.points.iter().all(|q| q.segment == link_kind::WALK));
+    assert!(stroll.info.length >= 8.48 && stroll.info.length < 8.6, "{} m", stroll.info.length);
+
+    let off_start = world.find_path(&PathQuery::new(navmesh, [0.0, -10.0, 30.0], EAST, jumper())).unwrap();
+    assert_eq!(off_start.outcome(), PathOutcome::StartOffNavmesh);
+    let off_goal = world.find_path(&PathQuery::new(navmesh, WEST, [0.0, -10.0, 30.0], jumper())).unwrap();
+    assert_eq!(off_goal.outcome(), PathOutcome::GoalOffNavmesh);
+}
+
+#[test]
+fn queued_with_path_workers_and_closures() {
+    let world = World::new().unwrap();
+    let navmesh = bake_gap_level(&world);
+    let (sender, finished) = mpsc::channel();
+    let (walker_done, jumper_done) = (sender.clone(), sender);
+    let walker_ticket = world
+        .request_path_with(&PathQuery::new(navmesh, WEST, EAST, walker()), move |t, o| walker_done.send(("walker", t, o)).unwrap())
+        .unwrap();
+    let jumper_ticket = world
+        .request_path_with(&PathQuery::new(navmesh, WEST, EAST, jumper()), move |t, o| jumper_done.send(("jumper", t, o)).unwrap())
+        .unwrap();
+    assert_ne!(walker_ticket, jumper_ticket);
+    let mut calls = Vec::new();
+    for _ in 0..2 {
+        calls.push(finished.recv_timeout(Duration::from_secs(20)).expect("a callback"));
+    }
+    calls.sort_by_key(|c| c.0);
+    assert_eq!(calls, vec![("jumper", jumper_ticket, PathOutcome::Complete), ("walker", walker_ticket, PathOutcome::Partial)]);
+    assert!(finished.recv_timeout(Duration::from_millis(50)).is_err(), "each closure ran once (and was dropped)");
+    assert_eq!(world.poll_path(walker_ticket).unwrap(), PathOutcome::Partial);
+
+    check_walker_stops_at_gap(&world.path_result(walker_ticket).unwrap().expect("finished"));
+    let jumped = world.path_result(jumper_ticket).unwrap().expect("finished");
+    check_jumper_across(&world, &jumped);
+    let direct = world.find_path(&PathQuery::new(navmesh, WEST, EAST, jumper())).unwrap();
+    assert_eq!(direct.points, jumped.points, "queued and direct planning agree");
+
+    world.release_path(walker_ticket).unwrap();
+    world.release_path(jumper_ticket).unwrap();
+    assert_fails(world.poll_path(walker_ticket), status::INVALID_HANDLE, "nl_path_poll");
+    assert_fails(world.release_path(jumper_ticket), status::INVALID_HANDLE, "nl_path_release");
+    assert_eq!(world.path_queue_stats().unwrap().unreleased, 0);
+}
+
+#[test]
+fn queued_and_run_by_the_host() {
+    let world = World::with_options(WorldOptions { path_worker_count: 0, ..Default::default() }).unwrap();
+    let navmesh = bake_gap_level(&world);
+    let jumper_ticket = world.request_path(&PathQuery::new(navmesh, WEST, EAST, jumper())).unwrap();
+    let seen = Arc::new(Mutex::new(None));
+    let record = Arc::clone(&seen);
+    let doomed = world
+        .request_path_with(&PathQuery::new(navmesh, WEST, EAST, walker()), move |_, o| {
+            *record.lock().unwrap() = Some((o, std::thread::current().id()))
+        })
+        .unwrap();
+    let stats = world.path_queue_stats().unwrap();
+    assert!(stats.workers == 0 && stats.queued == 2 && stats.submitted == 2, "{:?}", stats);
+    assert_eq!(world.poll_path(jumper_ticket).unwrap(), PathOutcome::Pending);
+    assert_eq!(world.path_result(jumper_ticket).unwrap(), None, "no result while pending (IN_PROGRESS)");
+
+    world.cancel_path(doomed).unwrap();
+    assert_eq!(*seen.lock().unwrap(), Some((PathOutcome::Cancelled, std::thread::current().id())),
+               "a queued request cancels at once, its closure on the cancelling thread");
+    assert_fails(world.process_paths(0, f64::NAN), status::INVALID_ARGUMENT, "nl_path_process");
+    assert_eq!(world.process_paths(0, 0.0).unwrap(), 1);
+    check_jumper_across(&world, &world.path_result(jumper_ticket).unwrap().expect("planned by the host"));
+    let stats = world.path_queue_stats().unwrap();
+    assert!(stats.finished == 2 && stats.unreleased == 2 && stats.queued == 0, "{:?}", stats);
+
+    // A request still queued when the world goes: its closure reports it cancelled, once.
+    let (sender, last) = mpsc::channel();
+    world.request_path_with(&PathQuery::new(navmesh, WEST, EAST, jumper()), move |_, o| sender.send(o).unwrap()).unwrap();
+    drop(world);
+    assert_eq!(last.try_recv(), Ok(PathOutcome::Cancelled));
+    assert!(last.try_recv().is_err());
+}
+
+#[test]
+fn a_panicking_path_closure_is_contained() {
+    let world = World::with_options(WorldOptions { path_worker_count: 0, ..Default::default() }).unwrap();
+    let navmesh = bake_gap_level(&world);
+    let ticket = world.request_path_with(&PathQuery::new(navmesh, WEST, EAST, jumper()), |_, _| panic!("closure panics")).unwrap();
+    assert_eq!(world.process_paths(0, 0.0).unwrap(), 1);
+    assert_eq!(world.poll_path(ticket).unwrap(), PathOutcome::Complete, "the request finished normally");
+}
+
+#[test]
+fn invalid_requests() {
+    let world = World::with_options(WorldOptions { path_worker_count: 0, ..Default::default() }).unwrap();
+    let navmesh = bake_gap_level(&world);
+    let calls = Arc::new(Mutex::new(0));
+    let counter = Arc::clone(&calls);
+    let null_navmesh = PathQuery::new(Default::default(), WEST, EAST, walker());
+    assert_fails(world.request_path_with(&null_navmesh, move |_, _| *counter.lock().unwrap() += 1), status::INVALID_HANDLE, "nl_path_request");
+    let negative = PathQuery::new(navmesh, WEST, EAST, navlink::AgentCapabilities { max_jump_distance: -1.0, ..jumper() });
+    assert_fails(world.request_path(&negative), status::INVALID_ARGUMENT, "max_jump_distance");
+    assert_fails(world.find_path(&PathQuery::new(navmesh, [f32::NAN, 0.0, 0.0], EAST, walker())), status::INVALID_ARGUMENT, "start");
+    world.process_paths(0, 0.0).unwrap();
+    assert!(*calls.lock().unwrap() == 0 && world.path_queue_stats().unwrap().submitted == 0, "refused requests never call back");
+    assert_eq!(Arc::strong_count(&calls), 1, "and their closures were freed");
+    assert_fails(world.cancel_path(Default::default()), status::INVALID_HANDLE, "nl_path_cancel");
+    unsafe {
+        let s = navlink::sys::nl_path_get_queue_stats(world.as_ptr(), std::ptr::null_mut());
+        assert!(navlink::sys::nl_failed(s) && s & status::INVALID_ARGUMENT != 0);
+    }
+}

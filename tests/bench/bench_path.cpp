@@ -1,0 +1,355 @@
+// navlink-bench-path LEVEL.obj...: NavLink's path search against Detour's on the same polygon mesh.
+// For each level, the Recast builder's pipeline (the one nl_navmesh_build runs) makes one polygon
+// mesh and detail mesh; NavLink gets it as a navmesh through nl_navmesh_add, Detour through
+// dtCreateNavMeshData. The same 10,000 random start/goal pairs are then planned by both, alternately:
+// Detour findNearestPoly x 2 + findPath + findStraightPath, NavLink nl_path_find (which snaps both ends,
+// searches and string-pulls), each pair three times, its fastest time counting. One line per level:
+//   level=NAME polys=N queries=N nl_us=X detour_us=X ratio=X nl_len=X detour_len=X nl_bytes=N detour_bytes=N
+// (lengths: means over the pairs both complete; bytes: NavLink's navmesh and link index vs Detour's
+// navmesh data), then one line with the queue's throughput on 1 and 2 path workers on the largest level.
+#include <DetourCommon.h>
+#include <DetourNavMesh.h>
+#include <DetourNavMeshBuilder.h>
+#include <DetourNavMeshQuery.h>
+#include <DetourNode.h>
+#include <navlink/navlink.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <random>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "clock.h"
+#include "io/obj_reader.h"
+#include "navmesh_export.h"
+#include "solo_mesh.h"
+#include "world.h"
+
+namespace {
+
+constexpr int kPairs = 10000;
+constexpr int kRounds = 3;
+constexpr int kMaxPolys = 1024;
+constexpr float kHalfExtents[3] = {2.0f, 4.0f, 2.0f};
+
+struct Pair {
+    float start[3];
+    float goal[3];
+};
+
+struct DetourMesh {
+    dtNavMesh* mesh = dtAllocNavMesh();
+    dtNavMeshQuery* query = dtAllocNavMeshQuery();
+    int bytes = 0;
+    ~DetourMesh() {
+        dtFreeNavMeshQuery(query);
+        dtFreeNavMesh(mesh);
+    }
+};
+
+// As RecastDemo's Sample_SoloMesh: every polygon walkable (flag 1), a BV tree, the detail mesh.
+bool build_detour(const nl::recast::SoloMesh& solo, const nl_agent_type& agent, const nl_recast_settings& settings,
+                  DetourMesh& out) {
+    rcPolyMesh& pm = *solo.polygons;
+    const rcPolyMeshDetail& dm = *solo.detail;
+    for (int i = 0; i < pm.npolys; ++i) pm.flags[i] = 1;
+    dtNavMeshCreateParams params{};
+    params.verts = pm.verts;
+    params.vertCount = pm.nverts;
+    params.polys = pm.polys;
+    params.polyAreas = pm.areas;
+    params.polyFlags = pm.flags;
+    params.polyCount = pm.npolys;
+    params.nvp = pm.nvp;
+    params.detailMeshes = dm.meshes;
+    params.detailVerts = dm.verts;
+    params.detailVertsCount = dm.nverts;
+    params.detailTris = dm.tris;
+    params.detailTriCount = dm.ntris;
+    params.walkableHeight = agent.height;
+    params.walkableRadius = agent.radius;
+    params.walkableClimb = agent.max_climb;
+    rcVcopy(params.bmin, pm.bmin);
+    rcVcopy(params.bmax, pm.bmax);
+    params.cs = settings.cell_size;
+    params.ch = settings.cell_height;
+    params.buildBvTree = true;
+    unsigned char* data = nullptr;
+    if (!dtCreateNavMeshData(&params, &data, &out.bytes)) return false;
+    if (dtStatusFailed(out.mesh->init(data, out.bytes, DT_TILE_FREE_DATA))) {
+        dtFree(data);
+        return false;
+    }
+    return dtStatusSucceed(out.query->init(out.mesh, 2048));  // RecastDemo's node pool
+}
+
+// Random points over the polygon mesh: a random polygon, a random point in one of its fan
+// triangles, half a metre up so both sides have to snap it down.
+std::vector<Pair> draw_pairs(const rcPolyMesh& pm) {
+    std::mt19937 rng(12345);
+    std::uniform_int_distribution<int> pick(0, pm.npolys - 1);
+    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+    auto point = [&](float* out) {
+        const unsigned short* poly = &pm.polys[size_t(pick(rng)) * 2 * pm.nvp];
+        int n = 0;
+        while (n < pm.nvp && poly[n] != RC_MESH_NULL_IDX) ++n;
+        std::uniform_int_distribution<int> fan(1, n - 2);
+        const int k = fan(rng);
+        float u = unit(rng), v = unit(rng);
+        if (u + v > 1.0f) u = 1.0f - u, v = 1.0f - v;
+        const unsigned short* a = &pm.verts[3 * poly[0]];
+        const unsigned short* b = &pm.verts[3 * poly[k]];
+        const unsigned short* c = &pm.verts[3 * poly[k + 1]];
+        for (int axis = 0; axis < 3; ++axis) {
+            const float cell = axis == 1 ? pm.ch : pm.cs;
+            const float w = (1.0f - u - v) * a[axis] + u * b[axis] + v * c[axis];
+            out[axis] = pm.bmin[axis] + w * cell;
+        }
+        out[1] += 0.5f;
+    };
+    std::vector<Pair> pairs(kPairs);
+    for (Pair& p : pairs) point(p.start), point(p.goal);
+    return pairs;
+}
+
+float polyline_length(const float* xyz, int count) {
+    float length = 0.0f;
+    for (int i = 1; i < count; ++i) {
+        const float* a = xyz + 3 * (i - 1);
+        const float* b = xyz + 3 * i;
+        length += std::sqrt((b[0] - a[0]) * (b[0] - a[0]) + (b[1] - a[1]) * (b[1] - a[1]) + (b[2] - a[2]) * (b[2] - a[2]));
+    }
+    return length;
+}
+
+struct DetourAnswer {
+    bool complete = false;
+    float length = 0.0f;
+    int nodes = 0;  // search nodes Detour touched
+};
+
+// findPath + findStraightPath between located ends, as Detour's samples do (a partial corridor
+// ends at the point of its last polygon nearest to the goal).
+DetourAnswer detour_search(const DetourMesh& d, dtPolyRef start_ref, const float* start, dtPolyRef goal_ref,
+                           const float* goal) {
+    static const dtQueryFilter filter;
+    dtPolyRef polys[kMaxPolys];
+    float straight[3 * kMaxPolys];
+    DetourAnswer answer;
+    int count = 0;
+    const dtStatus status = d.query->findPath(start_ref, goal_ref, start, goal, &filter, polys, &count, kMaxPolys);
+    answer.nodes = d.query->getNodePool()->getNodeCount();
+    if (dtStatusFailed(status) || count == 0) return answer;
+    float end[3];
+    dtVcopy(end, goal);
+    if (polys[count - 1] != goal_ref) d.query->closestPointOnPoly(polys[count - 1], goal, end, nullptr);
+    int points = 0;
+    d.query->findStraightPath(start, end, polys, count, straight, nullptr, nullptr, &points, kMaxPolys);
+    answer.complete = polys[count - 1] == goal_ref && !(status & DT_PARTIAL_RESULT);
+    answer.length = polyline_length(straight, points);
+    return answer;
+}
+
+// The whole job from raw points: locate both ends, then search.
+DetourAnswer detour_path(const DetourMesh& d, const Pair& pair) {
+    static const dtQueryFilter filter;
+    dtPolyRef start_ref = 0, goal_ref = 0;
+    float start[3], goal[3];
+    d.query->findNearestPoly(pair.start, kHalfExtents, &filter, &start_ref, start);
+    d.query->findNearestPoly(pair.goal, kHalfExtents, &filter, &goal_ref, goal);
+    if (!start_ref || !goal_ref) return DetourAnswer{};
+    return detour_search(d, start_ref, start, goal_ref, goal);
+}
+
+struct Level {
+    std::string name;
+    nl_world* world = nullptr;
+    nl_navmesh_id navmesh{};
+    uint32_t polygons = 0;
+    std::vector<Pair> pairs;
+};
+
+nl_path_request_def request_for(const Level& level, const Pair& pair) {
+    nl_path_request_def def = nl_default_path_request_def();
+    def.navmesh = level.navmesh;
+    std::copy(pair.start, pair.start + 3, def.start);
+    std::copy(pair.goal, pair.goal + 3, def.goal);
+    std::copy(kHalfExtents, kHalfExtents + 3, def.search_half_extents);
+    return def;  // a walker of the navmesh's own radius
+}
+
+bool compare(const char* path, Level& level) {
+    level.name = std::filesystem::path(path).stem().string();
+    const nl::TriangleMesh mesh = nl::read_obj_file(path);
+    nl::recast::LevelTriangles triangles;
+    for (const nl::Vec3& v : mesh.vertices) triangles.vertices.insert(triangles.vertices.end(), {v.x(), v.y(), v.z()});
+    for (const nl::Triangle& t : mesh.triangles) triangles.indices.insert(triangles.indices.end(), t.begin(), t.end());
+    const nl_plugin_host no_host{};  // size 0: Recast's log goes nowhere
+    nl::recast::HostLogContext context(no_host);
+    const nl_recast_settings settings = nl_default_recast_settings();
+    const nl_agent_type agent = nl_default_agent_type();
+    const nl::recast::SoloMesh solo = nl::recast::build_solo_mesh(context, triangles, settings, agent);
+
+    nl_world_def world_def = nl_default_world_def();
+    world_def.worker_count = 1;
+    world_def.path_worker_count = 0;
+    if (NL_FAILED(nl_world_create(&world_def, &level.world))) return false;
+    const nl::recast::NavMeshExport exported(*solo.polygons, *solo.detail);
+    const nl_navmesh_def navmesh_def = exported.def(agent);
+    if (NL_FAILED(nl_navmesh_add(level.world, &navmesh_def, &level.navmesh))) return false;
+    level.polygons = exported.polygon_count();
+
+    DetourMesh detour;
+    if (!build_detour(solo, agent, settings, detour)) {
+        std::fprintf(stderr, "navlink-bench-path: %s: Detour could not build its navmesh\n", path);
+        return false;
+    }
+    level.pairs = draw_pairs(*solo.polygons);
+    const dtPolyRef base = detour.mesh->getPolyRefBase(static_cast<const dtNavMesh*>(detour.mesh)->getTile(0));
+    if (uint32_t(solo.polygons->npolys) != level.polygons) {
+        std::fprintf(stderr, "navlink-bench-path: %s: NavLink kept %u polygons of Recast's %d\n", path, level.polygons,
+                     solo.polygons->npolys);
+        return false;
+    }
+
+    // Each pair is timed kRounds times on each side, alternately, and its fastest time counts: a
+    // shared machine's interruptions land on one side or the other at random; the minimum is the cost.
+    std::vector<double> nl_best(kPairs, 1e300), detour_best(kPairs, 1e300);
+    double nl_length = 0.0, detour_length = 0.0, nl_nodes = 0.0, detour_nodes = 0.0;
+    int both_complete = 0;
+    std::vector<nl_path_point> points(4096);
+    for (int round = 0; round < kRounds; ++round) {
+        for (int i = 0; i < kPairs; ++i) {
+            const Pair& pair = level.pairs[i];
+            const double t0 = nl::samples::now_ms();
+            const DetourAnswer timed = detour_path(detour, pair);
+            const double t1 = nl::samples::now_ms();
+            const nl_path_request_def def = request_for(level, pair);
+            nl_path_result result{};
+            result.size = sizeof result;
+            uint32_t count = 0;
+            nl_path_find(level.world, &def, &result, points.data(), uint32_t(points.size()), &count);
+            const double t2 = nl::samples::now_ms();
+            detour_best[i] = std::min(detour_best[i], t1 - t0);
+            nl_best[i] = std::min(nl_best[i], t2 - t1);
+            if (round + 1 < kRounds) continue;
+            nl_nodes += result.nodes_visited;
+            detour_nodes += timed.nodes;
+            if (result.outcome != NL_PATH_COMPLETE || count == 0) continue;
+            // Lengths compare the searches and string pulling alone: Detour plans again, untimed,
+            // between the very ends and polygons NavLink located (both locate alike, but points on
+            // a polygon border may go to either neighbour).
+            const DetourAnswer same_ends = detour_search(detour, base | points[0].polygon, result.start,
+                                                         base | points[count - 1].polygon, result.goal);
+            if (same_ends.complete) {
+                ++both_complete;
+                nl_length += result.length;
+                detour_length += same_ends.length;
+            }
+        }
+    }
+    double nl_ms = 0.0, detour_ms = 0.0;
+    for (int i = 0; i < kPairs; ++i) nl_ms += nl_best[i], detour_ms += detour_best[i];
+    const nl::Handle handle{level.navmesh.index1, level.navmesh.generation};
+    const auto graph = level.world->path_graphs->get(handle, level.world->navmeshes->get(handle), level.world->links->snapshot(handle));
+    const size_t nl_bytes = graph->navmesh().memory_bytes() + graph->link_index_bytes();
+    std::printf("level=%s polys=%u queries=%d nl_us=%.2f detour_us=%.2f ratio=%.2f nl_len=%.4f detour_len=%.4f nl_bytes=%zu "
+                "detour_bytes=%d both_complete=%d nl_nodes=%.1f detour_nodes=%.1f\n",
+                level.name.c_str(), level.polygons, kPairs, 1000.0 * nl_ms / kPairs, 1000.0 * detour_ms / kPairs,
+                nl_ms / detour_ms, nl_length / std::max(1, both_complete), detour_length / std::max(1, both_complete),
+                nl_bytes, detour.bytes, both_complete, nl_nodes / kPairs, detour_nodes / kPairs);
+    std::fflush(stdout);
+    return true;
+}
+
+// Requests per second through nl_path_request on a world with `workers` path workers: all pairs
+// queued from this thread, timed until the last callback.
+double queue_throughput(const Level& level, int workers) {
+    nl_world_def def = nl_default_world_def();
+    def.worker_count = 1;
+    def.path_worker_count = workers;
+    nl_world* world = nullptr;
+    nl_world_create(&def, &world);
+    // The same navmesh, copied through the C ABI into the new world.
+    nl_navmesh_info info{};
+    info.size = sizeof info;
+    nl_navmesh_get_info(level.world, level.navmesh, &info);
+    std::vector<float> vertices(3 * size_t(info.vertex_count));
+    uint32_t count = 0;
+    nl_navmesh_get_vertices(level.world, level.navmesh, vertices.data(), info.vertex_count, &count);
+    std::vector<uint32_t> indices;
+    std::vector<uint8_t> corners, areas;
+    for (uint32_t p = 0; p < info.polygon_count; ++p) {
+        nl_nav_polygon polygon;
+        nl_navmesh_get_polygon(level.world, level.navmesh, p, &polygon);
+        indices.insert(indices.end(), polygon.vertices, polygon.vertices + polygon.vertex_count);
+        corners.push_back(uint8_t(polygon.vertex_count));
+        areas.push_back(uint8_t(polygon.area));
+    }
+    nl_navmesh_def navmesh_def = nl_default_navmesh_def();
+    navmesh_def.vertices = vertices.data();
+    navmesh_def.vertex_count = info.vertex_count;
+    navmesh_def.indices = indices.data();
+    navmesh_def.polygon_vertex_counts = corners.data();
+    navmesh_def.polygon_count = info.polygon_count;
+    navmesh_def.areas = areas.data();
+    navmesh_def.agent = info.agent;
+    nl_navmesh_id navmesh{};
+    nl_navmesh_add(world, &navmesh_def, &navmesh);
+
+    static std::atomic<int> finished;
+    const int requests = 4 * kPairs;
+    double best = 0.0;
+    for (int run = 0; run < 3; ++run) {
+        finished = 0;
+        std::vector<nl_path_ticket> tickets(requests);
+        const double t0 = nl::samples::now_ms();
+        for (int i = 0; i < requests; ++i) {
+            nl_path_request_def r = request_for(level, level.pairs[i % kPairs]);
+            r.navmesh = navmesh;
+            r.callback = [](void*, nl_path_ticket, nl_path_outcome) { finished.fetch_add(1, std::memory_order_release); };
+            nl_path_request(world, &r, &tickets[i]);
+        }
+        while (finished.load(std::memory_order_acquire) < requests) std::this_thread::yield();
+        const double seconds = (nl::samples::now_ms() - t0) / 1000.0;
+        best = std::max(best, requests / seconds);
+        for (nl_path_ticket t : tickets) nl_path_release(world, t);
+    }
+    nl_world_destroy(world);
+    return best;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    if (argc < 2) {
+        std::fprintf(stderr, "usage: navlink-bench-path LEVEL.obj...\n");
+        return 2;
+    }
+    // --no-queue skips the throughput line (for profiling the comparison alone).
+    const bool queue = std::string(argv[1]) != "--no-queue";
+    const int first = queue ? 1 : 2;
+    std::vector<Level> levels(argc - first);
+    for (int i = first; i < argc; ++i) {
+        try {
+            if (!compare(argv[i], levels[i - first])) return 1;
+        } catch (const std::exception& e) {
+            std::fprintf(stderr, "navlink-bench-path: %s: %s\n", argv[i], e.what());
+            return 1;
+        }
+    }
+    if (!queue || levels.empty()) return 0;
+    const Level& largest = *std::max_element(levels.begin(), levels.end(),
+                                             [](const Level& a, const Level& b) { return a.polygons < b.polygons; });
+    const double one = queue_throughput(largest, 1), two = queue_throughput(largest, 2);
+    std::printf("queue level=%s requests=%d workers1_per_s=%.0f workers2_per_s=%.0f speedup=%.2f\n", largest.name.c_str(),
+                4 * kPairs, one, two, two / one);
+    for (Level& level : levels) nl_world_destroy(level.world);
+    return 0;
+}
