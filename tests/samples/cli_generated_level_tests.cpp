@@ -131,6 +131,39 @@ TEST_CASE("navlink bake reads settings and agent files: longer links jump the se
     CHECK(shortest_gap("thin.json.links") < shortest_gap("default.links") - 0.3f);
 }
 
+TEST_CASE("navlink bake and path with a navmesh handed over as OBJ (--navmesh)") {
+    GeneratedLevelFiles files("host_navmesh");
+    // The host's navmesh: one quad on each of the first two platforms, 0.6 m inside their rims, as an
+    // engine would export it (Y up, counter-clockwise seen from above).
+    std::string obj;
+    for (int b = 0; b < 2; ++b) {
+        const auto& box = files.level.boxes[b];
+        const float x0 = box.min[0] + 0.6f, x1 = box.max[0] - 0.6f, z0 = box.min[2] + 0.6f, z1 = box.max[2] - 0.6f;
+        const float y = box.max[1];
+        for (const auto& [x, z] : {std::pair{x0, z0}, std::pair{x0, z1}, std::pair{x1, z1}, std::pair{x1, z0}})
+            obj += "v " + std::to_string(x) + " " + std::to_string(y) + " " + std::to_string(z) + "\n";
+    }
+    obj += "f 1 2 3 4\nf 5 6 7 8\n";
+    nl::test::write_file(files.dir + "/nav.obj", obj);
+    const ProgramRun bake = navlink({"bake", "level.obj", "--navmesh", "nav.obj", "--out", "links.json"}, files.dir);
+    REQUIRE_MESSAGE(bake.exit_code == 0, bake.err);
+    CHECK(bake.out.find("navmesh: 2 polygons, 8 boundary edges (nav.obj)") != std::string::npos);
+    const json links = nl::test::parse_json_file(files.dir + "/links.json");
+    CHECK(!jumps_across(links, files.level, 0).empty());
+
+    // From one quad to the other: the only way is a jump.
+    const auto& p0 = files.level.boxes[0];
+    const auto& p1 = files.level.boxes[1];
+    const std::string from = std::to_string(p0.min[0] + 2.0f) + ",0,2", to = std::to_string(p1.max[0] - 2.0f) + ",0,2";
+    const ProgramRun path = navlink(
+        {"path", "level.obj", "--navmesh", "nav.obj", "--links", "links.json", "--from", from, "--to", to, "--json"},
+        files.dir);
+    REQUIRE_MESSAGE(path.exit_code == 0, path.err);
+    const json result = json::parse(path.out);
+    CHECK(result.at("outcome") == "complete");
+    CHECK(result.at("links_used") == 1);
+}
+
 TEST_CASE("navlink path --json: each demo agent's route is complete, continuous and within its body's reach") {
     GeneratedLevelFiles files("path");
     nl::test::write_file(files.dir + "/gen.json", R"({"max_link_distance": 6.5})");
