@@ -31,7 +31,8 @@ int run_bake(int argc, char** argv) {
                                                      ? samples::read_generation_settings_file(*args.value("settings"))
                                                      : samples::GenerationSettings();
 
-    NavigableLevel level(args.positional()[0], args.value("navmesh"), agent.body, settings.recast_json);
+    NavigableLevel level(args.positional()[0], args.value("navmesh"), agent.body, settings.recast_json,
+                         args.has("png"));
     const nl_bake_report report = level.generate_links(settings.links);
     samples::write_text_file(out, samples::links_json(level.world(), level.navmesh()));
 

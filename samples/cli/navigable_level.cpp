@@ -10,9 +10,9 @@ namespace nl::cli {
 using nl::samples::now_ms;
 
 NavigableLevel::NavigableLevel(const std::string& level_path, const std::optional<std::string>& navmesh_path,
-                               const nl_agent_type& body, const std::string& recast_json) {
+                               const nl_agent_type& body, const std::string& recast_json, bool for_drawing) {
     double start = now_ms();
-    level_ = samples::load_level_file(world_.get(), level_path);
+    level_ = samples::load_level_file(world_.get(), level_path, for_drawing);
     times_.load_ms = now_ms() - start;
     start = now_ms();
     navmesh_ = navmesh_path ? samples::add_navmesh_from_obj(world_.get(), *navmesh_path, body)

@@ -42,7 +42,8 @@ int run_path(int argc, char** argv) {
                                                      ? samples::read_generation_settings_file(*args.value("settings"))
                                                      : samples::GenerationSettings();
 
-    NavigableLevel level(args.positional()[0], args.value("navmesh"), agent.body, settings.recast_json);
+    NavigableLevel level(args.positional()[0], args.value("navmesh"), agent.body, settings.recast_json,
+                         args.has("png"));
     samples::load_links_file(level.world(), level.navmesh(), links_path);
     const samples::PlannedPath path = samples::find_path(level.world(), level.navmesh(), from, to, agent.capabilities);
     const samples::NavmeshContents contents = samples::read_navmesh_contents(level.world(), level.navmesh());

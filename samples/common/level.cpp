@@ -13,13 +13,15 @@ void read_info(nl_world* world, Level& level) {
 
 }  // namespace
 
-Level load_level_file(nl_world* world, const std::string& path) {
+Level load_level_file(nl_world* world, const std::string& path, bool for_drawing) {
     Level level;
     level.name = path;
     check(nl_mesh_add_obj_file(world, path.c_str(), nullptr, &level.mesh), "loading the level");
-    const ObjPolygons obj = read_obj_file(path);
-    level.positions = obj.positions;
-    level.triangles = obj.fan_triangles();
+    if (for_drawing) {
+        const ObjPolygons obj = read_obj_file(path);
+        level.positions = obj.positions;
+        level.triangles = obj.fan_triangles();
+    }
     read_info(world, level);
     return level;
 }

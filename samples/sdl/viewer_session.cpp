@@ -15,7 +15,7 @@ namespace nl::picture {
 ViewerSession::ViewerSession(const ViewerOptions& options) : agents_(samples::demo_agents()) {
     levelgen::GeneratedLevel generated;
     if (options.level_path) {
-        level_ = samples::load_level_file(world_.get(), *options.level_path);
+        level_ = samples::load_level_file(world_.get(), *options.level_path, true);
     } else {
         generated = levelgen::generate_default_level(options.seed);
         level_ = samples::add_generated_level(world_.get(), generated,
