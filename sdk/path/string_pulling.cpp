@@ -31,22 +31,24 @@ void pull_string(const Vec3& start, const Vec3& end, const std::vector<PortalSpa
     out.push_back({start, 0});
     Vec3 apex = start, left = start, right = start;
     uint32_t apex_index = 0, left_index = 0, right_index = 0;
+    // A side of the funnel crossed the other: that side's end is a corner of the path, and the
+    // funnel starts again from it (the loop resumes at the portal after it).
+    auto turn_at = [&](const Vec3& corner, uint32_t corner_index) {
+        apex = left = right = corner;
+        apex_index = left_index = right_index = corner_index;
+        out.push_back({corner, corner_index});
+        return corner_index;
+    };
     for (uint32_t i = 1; i < count; ++i) {
         const Vec3& next_left = left_of(i);
         const Vec3& next_right = right_of(i);
-        // Narrow the funnel from the right, unless that crosses the left side: then the left side's
-        // end is a corner and the funnel restarts from it.
+        // Narrow the funnel from the right, unless that crosses the left side.
         if (area2(apex, right, next_right) <= 0.0f) {
             if (same_xz(apex, right) || area2(apex, left, next_right) > 0.0f) {
                 right = next_right;
                 right_index = i;
             } else {
-                apex = left;
-                apex_index = left_index;
-                out.push_back({apex, apex_index});
-                left = right = apex;
-                left_index = right_index = apex_index;
-                i = apex_index;
+                i = turn_at(left, left_index);
                 continue;
             }
         }
@@ -55,12 +57,7 @@ void pull_string(const Vec3& start, const Vec3& end, const std::vector<PortalSpa
                 left = next_left;
                 left_index = i;
             } else {
-                apex = right;
-                apex_index = right_index;
-                out.push_back({apex, apex_index});
-                left = right = apex;
-                left_index = right_index = apex_index;
-                i = apex_index;
+                i = turn_at(right, right_index);
                 continue;
             }
         }

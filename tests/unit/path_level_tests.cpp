@@ -4,10 +4,17 @@
 #include <doctest/doctest.h>
 #include <navlink/navlink.h>
 
+#include <chrono>
+#include <cmath>
+#include <cstring>
+#include <random>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "generated_level_c.h"
+#include "shared_levels.h"
+#include "world.h"
 
 using nl::levelgen::Box;
 
@@ -80,6 +87,17 @@ struct BakedLevel {
 };
 
 nl_agent_capabilities walker() { return nl_default_agent_capabilities(); }
+
+// Whether (x, z) of `point` lies over some polygon, seen from above, give or take a centimetre.
+// Heights are left out: a straight path segment runs above or below a rolling floor.
+bool over_navmesh(const nl::NavMesh& mesh, const float* point) {
+    const nl::Vec3 p(point[0], point[1], point[2]);
+    for (uint32_t polygon = 0; polygon < mesh.polygon_count(); ++polygon) {
+        const nl::Vec3 q = mesh.closest_point_on_polygon(polygon, p);
+        if (std::hypot(q.x() - p.x(), q.z() - p.z()) < 0.01f) return true;
+    }
+    return false;
+}
 
 nl_agent_capabilities jumper(float distance, float height, float drop) {
     nl_agent_capabilities a = nl_default_agent_capabilities();
@@ -209,4 +227,105 @@ TEST_CASE("one navmesh serves two agent sizes: the wide one avoids the narrow co
     REQUIRE(round.result.outcome == NL_PATH_COMPLETE);
     CHECK(round.passes(14, 18, 0, 30));
     CHECK(round.result.length > 30.0f);
+}
+
+TEST_CASE("on every shared level, paths stay on the navmesh, end where asked, and do not depend on the thread") {
+    const auto levels = nl::test::shared_levels();
+    if (levels.empty() && nl::test::levels_required()) FAIL("no shared levels in ", nl::test::levels_dir());
+    for (const auto& path : levels) {
+        nl_world_def def = nl_default_world_def();
+        def.worker_count = 1;
+        def.path_worker_count = 2;
+        nl_world* world = nullptr;
+        REQUIRE(nl_world_create(&def, &world) == NL_STATUS_SUCCESS);
+        nl_mesh_id mesh{};
+        REQUIRE(nl_mesh_add_obj_file(world, path.c_str(), nullptr, &mesh) == NL_STATUS_SUCCESS);
+        const nl_navmesh_build_def build = nl_default_navmesh_build_def();
+        nl_navmesh_id navmesh{};
+        REQUIRE(nl_navmesh_build(world, &build, &navmesh) == NL_STATUS_SUCCESS);
+        nl_navmesh_info info{};
+        info.size = sizeof info;
+        nl_navmesh_get_info(world, navmesh, &info);
+        const auto navmesh_ptr = world->navmeshes->get(nl::Handle{navmesh.index1, navmesh.generation});
+
+        std::vector<float> vertices(3 * size_t(info.vertex_count));
+        uint32_t vertex_count = 0;
+        nl_navmesh_get_vertices(world, navmesh, vertices.data(), info.vertex_count, &vertex_count);
+        std::mt19937 rng(5);
+        // A random point of a random polygon (a random mix of its corners), a little above it.
+        auto random_point = [&](float* out) {
+            nl_nav_polygon polygon;
+            nl_navmesh_get_polygon(world, navmesh, uint32_t(rng() % info.polygon_count), &polygon);
+            float total = 0.0f, mix[3] = {0, 0, 0};
+            for (uint32_t c = 0; c < polygon.vertex_count; ++c) {
+                const float w = std::uniform_real_distribution<float>(0.0f, 1.0f)(rng);
+                total += w;
+                for (int k = 0; k < 3; ++k) mix[k] += w * vertices[3 * size_t(polygon.vertices[c]) + k];
+            }
+            for (int k = 0; k < 3; ++k) out[k] = mix[k] / total;
+            out[1] += 0.3f;
+        };
+        constexpr int kPairs = 150;
+        std::vector<nl_path_request_def> defs(kPairs);
+        std::vector<nl_path_ticket> tickets(kPairs);
+        for (int i = 0; i < kPairs; ++i) {
+            defs[i] = nl_default_path_request_def();
+            defs[i].navmesh = navmesh;
+            random_point(defs[i].start);
+            random_point(defs[i].goal);
+            REQUIRE(nl_path_request(world, &defs[i], &tickets[i]) == NL_STATUS_SUCCESS);
+        }
+        int complete = 0;
+        for (int i = 0; i < kPairs; ++i) {
+            INFO(path.stem().string(), " pair ", i);
+            nl_path_result sync{};
+            sync.size = sizeof sync;
+            std::vector<nl_path_point> points(512);
+            uint32_t count = 0;
+            REQUIRE(NL_SUCCEEDED(nl_path_find(world, &defs[i], &sync, points.data(), 512, &count)));
+            points.resize(count);
+
+            // The queued answer, planned on a worker, is the same.
+            nl_path_outcome outcome = NL_PATH_PENDING;
+            for (int spins = 0; outcome == NL_PATH_PENDING && spins < 100000; ++spins) {
+                REQUIRE(nl_path_poll(world, tickets[i], &outcome) == NL_STATUS_SUCCESS);
+                if (outcome == NL_PATH_PENDING) std::this_thread::sleep_for(std::chrono::microseconds(100));
+            }
+            nl_path_result queued{};
+            queued.size = sizeof queued;
+            std::vector<nl_path_point> queued_points(512);
+            uint32_t queued_count = 0;
+            REQUIRE(NL_SUCCEEDED(nl_path_get_result(world, tickets[i], &queued, queued_points.data(), 512, &queued_count)));
+            REQUIRE(nl_path_release(world, tickets[i]) == NL_STATUS_SUCCESS);
+            CHECK(queued.outcome == sync.outcome);
+            REQUIRE(queued_count == count);
+            for (uint32_t k = 0; k < count; ++k)
+                CHECK(std::memcmp(&queued_points[k], &points[k], sizeof(nl_path_point)) == 0);
+
+            if (sync.outcome != NL_PATH_COMPLETE) continue;
+            ++complete;
+            REQUIRE(count >= 1);
+            for (int k = 0; k < 3; ++k) {
+                CHECK(points.front().position[k] == sync.start[k]);
+                CHECK(points.back().position[k] == sync.goal[k]);
+            }
+            const float straight = std::sqrt(std::pow(sync.goal[0] - sync.start[0], 2.0f) +
+                                             std::pow(sync.goal[1] - sync.start[1], 2.0f) +
+                                             std::pow(sync.goal[2] - sync.start[2], 2.0f));
+            CHECK(sync.length >= straight - 1e-3f);
+            // Walked segments run over the navmesh: points along them lie over some polygon.
+            for (uint32_t k = 0; k + 1 < count; ++k) {
+                CHECK(points[k].segment == NL_SEGMENT_WALK);  // no links on these navmeshes
+                for (float t : {0.25f, 0.5f, 0.75f}) {
+                    float probe[3];
+                    for (int a = 0; a < 3; ++a) probe[a] = points[k].position[a] + t * (points[k + 1].position[a] - points[k].position[a]);
+                    CHECK_MESSAGE(over_navmesh(*navmesh_ptr, probe), "segment ", k, " leaves the navmesh at (", probe[0], ", ",
+                                  probe[1], ", ", probe[2], ")");
+                }
+            }
+        }
+        MESSAGE(path.stem().string(), ": ", complete, " of ", kPairs, " random pairs complete");
+        CHECK(complete > 0);
+        nl_world_destroy(world);
+    }
 }

@@ -7,10 +7,11 @@
 #include <string>
 #include <vector>
 
+#include "cell_navmesh.h"
+
 namespace {
 
-// A navmesh of 1 m square cells at y = 0: row r of the map is z in [r, r + 1], column c is x in
-// [c, c + 1]. '.' is area 0, a digit is that area, anything else is no navmesh.
+// A world holding one cell-map navmesh (cell_navmesh.h).
 struct CellMap {
     nl_world* world = nullptr;
     nl_navmesh_id navmesh{};
@@ -20,32 +21,8 @@ struct CellMap {
         def.worker_count = 1;
         def.path_worker_count = path_workers;
         REQUIRE(nl_world_create(&def, &world) == NL_STATUS_SUCCESS);
-        std::vector<float> vertices;
-        std::vector<uint32_t> indices;
-        std::vector<uint8_t> counts, areas;
-        for (size_t r = 0; r < rows.size(); ++r) {
-            for (size_t c = 0; c < rows[r].size(); ++c) {
-                const char cell = rows[r][c];
-                if (cell != '.' && (cell < '0' || cell > '9')) continue;
-                const float x0 = float(c), x1 = x0 + 1, z0 = float(r), z1 = z0 + 1;
-                // Counter-clockwise seen from above (y up): +z first, then +x.
-                for (const auto& [x, z] : {std::pair{x0, z0}, {x0, z1}, {x1, z1}, {x1, z0}}) {
-                    indices.push_back(uint32_t(vertices.size() / 3));
-                    vertices.insert(vertices.end(), {x, 0.0f, z});
-                }
-                counts.push_back(4);
-                areas.push_back(cell == '.' ? 0 : uint8_t(cell - '0'));
-            }
-        }
-        nl_navmesh_def nav = nl_default_navmesh_def();
-        nav.vertices = vertices.data();
-        nav.vertex_count = uint32_t(vertices.size() / 3);
-        nav.indices = indices.data();
-        nav.polygon_vertex_counts = counts.data();
-        nav.polygon_count = uint32_t(counts.size());
-        nav.areas = areas.data();
-        nav.agent.radius = agent_radius;
-        REQUIRE_MESSAGE(nl_navmesh_add(world, &nav, &navmesh) == NL_STATUS_SUCCESS, nl_get_last_error_message());
+        const nl::test::CellNavmesh cells(rows, agent_radius);
+        REQUIRE_MESSAGE(nl_navmesh_add(world, &cells.def, &navmesh) == NL_STATUS_SUCCESS, nl_get_last_error_message());
     }
     ~CellMap() { nl_world_destroy(world); }
 
