@@ -47,6 +47,12 @@ void GeneratedLevel::add_box(const Box& b) {
     boxes.push_back(b);
 }
 
+const Marker* GeneratedLevel::marker(const std::string& name) const {
+    for (const Marker& m : markers)
+        if (m.name == name) return &m;
+    return nullptr;
+}
+
 std::string GeneratedLevel::to_obj() const {
     std::ostringstream out;
     out << "# NavLink procedural level: " << vertex_count() << " vertices, " << triangle_count() << " triangles\n";
@@ -57,35 +63,58 @@ std::string GeneratedLevel::to_obj() const {
     return out.str();
 }
 
+namespace {
+
+// Stairs between a platform's front side (z < 0) and the lower floor: a landing 2 m wide against the
+// platform, then steps going down towards +x. Every step rises at most 0.35 m, well within the
+// default agent's max_climb, so walkers go up and down without a link.
+void add_stairs_down_from(GeneratedLevel& level, const Box& platform, float floor_y) {
+    const float top = platform.max[1];
+    const float landing_x0 = platform.min[0] + 0.5f, landing_x1 = landing_x0 + 2.0f;
+    level.add_box(box(landing_x0, top - 0.5f, -4.0f, landing_x1, top, 0.0f));
+    const int steps = static_cast<int>(std::ceil((top - floor_y) / 0.35f));
+    const float rise = (top - floor_y) / static_cast<float>(steps);
+    for (int s = 1; s < steps; ++s) {
+        const float x0 = landing_x1 + 0.4f * static_cast<float>(s - 1);
+        level.add_box(box(x0, floor_y, -4.0f, x0 + 0.4f, top - rise * static_cast<float>(s), -1.0f));
+    }
+}
+
+}  // namespace
+
 GeneratedLevel generate_default_level(uint32_t seed) {
     Random rng(seed);
     GeneratedLevel level;
     const float thickness = 0.5f;
-    const float depth = 6.0f;  // platforms run along +x, 6 m deep in z
+    const float depth = 6.0f;  // platforms run along +x, 6 m deep in z (z in [0, 6])
 
-    // Start platform, then platforms across gaps of increasing width at varying heights.
+    // Four platforms in a row (boxes 0 to 3). With Recast's default agent the navmesh edges sit 0.6 to
+    // 0.9 m inside each rim, so a jump across a gap is the gap plus 1.2 to 1.8 m. The ranges keep the
+    // gaps apart: the first (1.4-1.8 m: a 2.6-3.6 m jump) is jumped by a short jumper, the second
+    // (2.8-3.2 m: a 4.0-5.0 m jump) only by a long one, and the third is narrow but 2.0-2.4 m deep: a
+    // one-way drop onto the last platform, too high to jump back up.
+    const float gaps[] = {rng.uniform(1.4f, 1.8f), rng.uniform(2.8f, 3.2f), rng.uniform(0.8f, 1.1f)};
+    const float rises[] = {0.0f, rng.uniform(0.6f, 1.0f), -rng.uniform(2.0f, 2.4f)};
     float x = 0.0f;
     float top = 0.0f;
-    const float gaps[] = {rng.uniform(1.5f, 2.0f), rng.uniform(2.5f, 3.0f), rng.uniform(4.0f, 5.0f)};
-    const float rises[] = {0.0f, rng.uniform(0.5f, 1.0f), rng.uniform(-0.5f, 0.5f)};
     float length = rng.uniform(8.0f, 10.0f);
     level.add_box(box(x, top - thickness, 0.0f, x + length, top, depth));
     x += length;
     for (int i = 0; i < 3; ++i) {
         x += gaps[i];
         top += rises[i];
-        length = rng.uniform(6.0f, 8.0f);
+        length = rng.uniform(7.0f, 8.0f);  // room for a landing and a flight of stairs in front
         level.add_box(box(x, top - thickness, 0.0f, x + length, top, depth));
         x += length;
     }
     const float end_x = x;
 
-    // Lower floor under everything: falling into a gap lands here, 3 to 4 m down.
-    const float floor_y = -rng.uniform(3.0f, 4.0f);
+    // Lower floor under everything (box 4): falling into a gap lands here, 3.5 to 4 m down.
+    const float floor_y = -rng.uniform(3.5f, 4.0f);
     level.add_box(box(-2.0f, floor_y - thickness, -14.0f, end_x + 2.0f, floor_y, depth + 2.0f));
 
-    // A ledge from the start platform down to the lower floor (drop), and a stair route back up,
-    // built in front of the platforms (negative z) so walkers can go round every gap.
+    // Stairs from the lower floor up to the start platform, built in front of it (negative z), rising
+    // towards +x to a landing against the platform: the walkers' way down.
     const float stair_x = 2.0f;
     const int steps = 10;
     const float step_rise = -floor_y / steps;
@@ -108,6 +137,21 @@ GeneratedLevel generate_default_level(uint32_t seed) {
     const float corridor_z = -10.0f;
     level.add_box(box(4.0f, floor_y, corridor_z - 1.0f, 14.0f, floor_y + 2.5f, corridor_z - 0.4f));
     level.add_box(box(4.0f, floor_y, corridor_z + 0.4f, 14.0f, floor_y + 2.5f, corridor_z + 1.0f));
+
+    // The stair route around every gap: down from the second platform (for jumpers that cannot drop)
+    // and up to the last one (for everyone).
+    add_stairs_down_from(level, level.boxes[1], floor_y);
+    add_stairs_down_from(level, level.boxes[3], floor_y);
+
+    // Where the demo sends its agents: from the start platform to the last one.
+    const Box& first = level.boxes[0];
+    const Box& last = level.boxes[3];
+    level.markers.push_back({"start", {first.min[0] + 2.0f, first.max[1], 3.0f}});
+    level.markers.push_back({"goal", {0.5f * (last.min[0] + last.max[0]) + 1.0f, last.max[1], 3.5f}});
+    // Where a host could hang a ladder (a manual link): from the lower floor up the west side of the
+    // last platform's stair landing, a shortcut past the last flight of stairs.
+    level.markers.push_back({"ladder_bottom", {last.min[0] - 0.8f, floor_y, -2.5f}});
+    level.markers.push_back({"ladder_top", {last.min[0] + 1.5f, last.max[1], -2.5f}});
     return level;
 }
 

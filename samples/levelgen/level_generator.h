@@ -15,11 +15,21 @@ struct Box {
     float max[3];
 };
 
+// A named point of a generated level, on a walkable surface (the demo's start and goal).
+struct Marker {
+    std::string name;
+    float position[3];
+};
+
 struct GeneratedLevel {
     std::vector<float> positions;   // x y z per vertex, Y up, metres
     std::vector<uint32_t> indices;  // 3 per triangle, counter-clockwise seen from outside
     std::vector<Box> boxes;         // the solid boxes the triangles were made from (a tessellated
                                     // ground, add_ground_grid, is not one of them)
+    std::vector<Marker> markers;    // named points, if the generator has any
+
+    // The marker called `name`, or nullptr.
+    const Marker* marker(const std::string& name) const;
 
     uint32_t vertex_count() const { return static_cast<uint32_t>(positions.size() / 3); }
     uint32_t triangle_count() const { return static_cast<uint32_t>(indices.size() / 3); }
@@ -34,9 +44,15 @@ struct GeneratedLevel {
     std::string to_obj() const;
 };
 
-// The default demo level: a row of platforms at several heights separated by gaps of several widths,
-// a ledge to drop from, a stair route around, a wall that blocks one jump, a low ceiling over a gap and
-// a narrow corridor. `seed` varies sizes and heights within ranges that keep every feature present.
+// The default demo level: a row of four platforms at several heights (boxes 0 to 3, along +x, z in
+// [0, 6]) separated by gaps of several widths (1.4-1.8 m, 2.8-3.2 m, and 0.8-1.1 m with the last
+// platform 2.0-2.4 m lower: a drop), a lower floor under everything (box 4) with ledges all round to
+// drop from, a stair route around (stairs from the lower floor to the first, second and last
+// platforms), a wall that blocks one side of the second jump, a low ceiling over one side of the first
+// gap and a narrow corridor on the lower floor. Markers "start" (on the first platform) and "goal" (on
+// the last) are the demo's route; "ladder_bottom" and "ladder_top" a place for a ladder (a manual
+// link) from the lower floor to the last platform's stair landing. `seed` varies sizes and heights within ranges that keep every
+// feature present.
 GeneratedLevel generate_default_level(uint32_t seed);
 
 // A large field of `columns` x `rows` pillars and platforms at random heights, for benchmarks

@@ -1,0 +1,57 @@
+// navlink bake: navmesh, links, links JSON, report (and a picture).
+#include <cstdio>
+
+#include "arguments.h"
+#include "bake_report_text.h"
+#include "commands.h"
+#include "generation_settings.h"
+#include "help_text.h"
+#include "link_files.h"
+#include "navigable_level.h"
+#include "navmesh_contents.h"
+#include "picture_export.h"
+#include "text_file.h"
+
+namespace nl::cli {
+
+int run_bake(int argc, char** argv) {
+    const samples::Arguments args(
+        "navlink bake", "bake", argc, argv, 2,
+        {{"out", true}, {"navmesh", true}, {"agent", true}, {"settings", true}, {"png", true}, {"oblique", false}});
+    if (args.wants_help()) {
+        std::fputs(kBakeHelp, stdout);
+        return 0;
+    }
+    args.expect_positional(1, "LEVEL.obj");
+    const std::string out = args.required("out");
+    // Read every input before the slow work, so a bad file fails at once.
+    const samples::AgentProfile agent =
+        args.has("agent") ? samples::read_agent_file(*args.value("agent")) : samples::default_agent_profile();
+    const samples::GenerationSettings settings = args.has("settings")
+                                                     ? samples::read_generation_settings_file(*args.value("settings"))
+                                                     : samples::GenerationSettings();
+
+    NavigableLevel level(args.positional()[0], args.value("navmesh"), agent.body, settings.recast_json,
+                         args.has("png"));
+    const nl_bake_report report = level.generate_links(settings.links);
+    samples::write_text_file(out, samples::links_json(level.world(), level.navmesh()));
+
+    const samples::NavmeshContents contents = samples::read_navmesh_contents(level.world(), level.navmesh());
+    std::printf("level: %s (%u triangles)\n", level.level().name.c_str(), level.level().info.triangle_count);
+    std::printf("navmesh: %zu polygons, %zu boundary edges (%s)\n", contents.polygons.size(),
+                contents.boundary_edges.size(),
+                args.has("navmesh") ? args.value("navmesh")->c_str() : "built by recast");
+    print_bake_report(stdout, report, contents.links, level.times());
+    std::printf("wrote %s\n", out.c_str());
+    if (const auto png = args.value("png")) {
+        PictureRequest request;
+        request.path = *png;
+        request.oblique = args.has("oblique");
+        request.title = "navlink bake " + level.level().name;
+        write_picture(level.level(), contents, {}, request);
+        std::printf("wrote %s\n", png->c_str());
+    }
+    return 0;
+}
+
+}  // namespace nl::cli

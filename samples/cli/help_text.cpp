@@ -1,0 +1,66 @@
+#include "help_text.h"
+
+namespace nl::cli {
+
+const char* const kMainHelp =
+    "usage: navlink COMMAND [ARGUMENTS]\n"
+    "\n"
+    "NavLink: navmeshes with generated jump and drop links, and paths for agents that can take them.\n"
+    "\n"
+    "commands:\n"
+    "  demo    generate the default level, bake its links, plan one route for three agents\n"
+    "          (a walker, a short jumper, a long jumper who may drop); writes demo.png, demo.links.json\n"
+    "  bake    build a level's navmesh and generate its jump and drop links into a JSON file\n"
+    "  path    plan a path over a level's navmesh and links, and print its segments\n"
+    "  level   write the generated default level as an OBJ file\n"
+    "\n"
+    "`navlink COMMAND --help` describes a command. Errors are one line on stderr and exit status 2.\n";
+
+const char* const kBakeHelp =
+    "usage: navlink bake LEVEL.obj --out LINKS.json [--navmesh NAVMESH.obj] [--agent AGENT.json]\n"
+    "                    [--settings GEN.json] [--png VIEW.png] [--oblique]\n"
+    "\n"
+    "Builds LEVEL's navmesh with the built-in Recast builder (or takes NAVMESH.obj: convex polygons, Y up),\n"
+    "generates jump and drop links against the level geometry, writes them to LINKS.json and prints the\n"
+    "bake report: links by kind, rejections by reason, milliseconds per stage.\n"
+    "\n"
+    "  --out LINKS.json      where the links go (schema \"navlink-links\" 1)\n"
+    "  --navmesh NAVMESH.obj use this navmesh instead of building one\n"
+    "  --agent AGENT.json    the body the navmesh is built for; default Recast's (radius 0.6, height 2,\n"
+    "                        max_climb 0.9, max_slope 45). Keys: name, radius, height, max_climb,\n"
+    "                        max_slope, max_jump_distance, max_jump_height, max_drop_height, abilities\n"
+    "  --settings GEN.json   link generator settings (docs/link-generation.md), e.g.\n"
+    "                        {\"max_link_distance\": 6, \"recast\": {\"cell_size\": 0.2}, \"plugins\": {}}\n"
+    "  --png VIEW.png        also draw the level, navmesh, outline and links\n"
+    "  --oblique             draw the picture from an angle instead of straight down\n";
+
+const char* const kPathHelp =
+    "usage: navlink path LEVEL.obj --links LINKS.json --from X,Y,Z --to X,Y,Z [--agent AGENT.json]\n"
+    "                    [--navmesh NAVMESH.obj] [--settings GEN.json] [--json] [--png VIEW.png] [--oblique]\n"
+    "\n"
+    "Plans a path from --from to --to for the agent (default: Recast's body, jumps up to 4 m across and\n"
+    "1.5 m up, drops up to 5 m) over LEVEL's navmesh and the links of LINKS.json (from navlink bake with\n"
+    "the same level, agent and settings), and prints its points: how each segment is travelled (walk,\n"
+    "jump, drop), the link taken, and the length.\n"
+    "\n"
+    "  --json                print the path as a JSON object instead of text\n"
+    "  --png VIEW.png        also draw the path over the level\n"
+    "\n"
+    "Exit status: 0 when the path reaches the goal, 1 when it does not (partial, no path, start or goal\n"
+    "off the navmesh), 2 on an error.\n";
+
+const char* const kDemoHelp =
+    "usage: navlink demo [--seed N] [--out-dir DIR] [--oblique]\n"
+    "\n"
+    "Generates the default level (seed 1 unless --seed), builds its navmesh, bakes its links, and plans\n"
+    "the same start and goal for three agents: a walker (no jumps, no drops), a short jumper (3.8 m\n"
+    "across, 1 m up, no drops) and a long jumper who may drop (6 m across, 1.5 m up, drops of 4 m).\n"
+    "Prints a table of their routes and writes demo.png and demo.links.json (in DIR, default '.').\n";
+
+const char* const kLevelHelp =
+    "usage: navlink level --out LEVEL.obj [--seed N]\n"
+    "\n"
+    "Writes the generated default level (seed 1 unless --seed) as a Wavefront OBJ file: platforms at\n"
+    "several heights across gaps of several widths, ledges, stairs, a wall, a low ceiling, a corridor.\n";
+
+}  // namespace nl::cli

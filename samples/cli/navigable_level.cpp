@@ -1,0 +1,42 @@
+#include "navigable_level.h"
+
+#include "clock.h"
+#include "navmesh_setup.h"
+#include "progress_bar.h"
+#include "sample_error.h"
+
+namespace nl::cli {
+
+using nl::samples::now_ms;
+
+NavigableLevel::NavigableLevel(const std::string& level_path, const std::optional<std::string>& navmesh_path,
+                               const nl_agent_type& body, const std::string& recast_json, bool for_drawing) {
+    double start = now_ms();
+    level_ = samples::load_level_file(world_.get(), level_path, for_drawing);
+    times_.load_ms = now_ms() - start;
+    start = now_ms();
+    navmesh_ = navmesh_path ? samples::add_navmesh_from_obj(world_.get(), *navmesh_path, body)
+                            : samples::build_navmesh(world_.get(), body, recast_json);
+    times_.navmesh_ms = now_ms() - start;
+}
+
+NavigableLevel::NavigableLevel(const levelgen::GeneratedLevel& generated, const std::string& name,
+                               const nl_agent_type& body, const std::string& recast_json) {
+    double start = now_ms();
+    level_ = samples::add_generated_level(world_.get(), generated, name);
+    times_.load_ms = now_ms() - start;
+    start = now_ms();
+    navmesh_ = samples::build_navmesh(world_.get(), body, recast_json);
+    times_.navmesh_ms = now_ms() - start;
+}
+
+nl_bake_report NavigableLevel::generate_links(const nl_link_settings& settings) {
+    nl_bake_report report{};
+    report.size = sizeof report;
+    ProgressBar bar;
+    samples::check(nl_navmesh_generate_links(world_.get(), navmesh_, &settings, ProgressBar::callback, &bar, &report),
+                   "generating links");
+    return report;
+}
+
+}  // namespace nl::cli

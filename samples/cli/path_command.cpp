@@ -1,0 +1,69 @@
+// navlink path: plans one path over a level's navmesh and a links file, and prints it.
+#include <cstdio>
+
+#include "arguments.h"
+#include "commands.h"
+#include "generation_settings.h"
+#include "help_text.h"
+#include "link_files.h"
+#include "navigable_level.h"
+#include "navmesh_contents.h"
+#include "palette.h"
+#include "path_output.h"
+#include "path_plan.h"
+#include "picture_export.h"
+#include "sample_error.h"
+
+namespace nl::cli {
+
+int run_path(int argc, char** argv) {
+    const samples::Arguments args("navlink path", "path", argc, argv, 2,
+                                  {{"links", true},
+                                   {"from", true},
+                                   {"to", true},
+                                   {"agent", true},
+                                   {"navmesh", true},
+                                   {"settings", true},
+                                   {"json", false},
+                                   {"png", true},
+                                   {"oblique", false}});
+    if (args.wants_help()) {
+        std::fputs(kPathHelp, stdout);
+        return 0;
+    }
+    args.expect_positional(1, "LEVEL.obj");
+    const std::string links_path = args.required("links");
+    float from[3], to[3];
+    samples::parse_point(args.required("from"), "--from", from);
+    samples::parse_point(args.required("to"), "--to", to);
+    const samples::AgentProfile agent =
+        args.has("agent") ? samples::read_agent_file(*args.value("agent")) : samples::default_agent_profile();
+    const samples::GenerationSettings settings = args.has("settings")
+                                                     ? samples::read_generation_settings_file(*args.value("settings"))
+                                                     : samples::GenerationSettings();
+
+    NavigableLevel level(args.positional()[0], args.value("navmesh"), agent.body, settings.recast_json,
+                         args.has("png"));
+    samples::load_links_file(level.world(), level.navmesh(), links_path);
+    const samples::PlannedPath path = samples::find_path(level.world(), level.navmesh(), from, to, agent.capabilities);
+    const samples::NavmeshContents contents = samples::read_navmesh_contents(level.world(), level.navmesh());
+
+    if (args.has("json")) std::fputs(path_json(path, contents.links).c_str(), stdout);
+    else print_path_text(stdout, path, contents.links);
+
+    if (const auto png = args.value("png")) {
+        PictureRequest request;
+        request.path = *png;
+        request.oblique = args.has("oblique");
+        request.title = "navlink path " + level.level().name;
+        picture::PathLayer layer{agent.name + ": " + samples::outcome_name(path.result.outcome),
+                                 picture::palette::agent(1), path.points};
+        write_picture(level.level(), contents, {layer}, request,
+                      {{"from", {from[0], from[1], from[2]}, picture::palette::kText},
+                       {"to", {to[0], to[1], to[2]}, picture::palette::kText}});
+        if (!args.has("json")) std::printf("wrote %s\n", png->c_str());
+    }
+    return path.result.outcome == NL_PATH_COMPLETE ? 0 : 1;
+}
+
+}  // namespace nl::cli

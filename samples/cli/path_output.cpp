@@ -1,0 +1,79 @@
+#include "path_output.h"
+
+#include <nlohmann/json.hpp>
+
+namespace nl::cli {
+namespace {
+
+nlohmann::json xyz(const float p[3]) { return nlohmann::json::array({p[0], p[1], p[2]}); }
+
+}  // namespace
+
+long link_index(const std::vector<nl_link>& links, nl_link_id link) {
+    for (size_t i = 0; i < links.size(); ++i)
+        if (links[i].id.index1 == link.index1 && links[i].id.generation == link.generation) return static_cast<long>(i);
+    return -1;
+}
+
+void print_path_text(std::FILE* out, const samples::PlannedPath& path, const std::vector<nl_link>& links) {
+    const nl_path_result& r = path.result;
+    std::fprintf(out, "path: %s, %.2f m, %s (%u polygons searched)\n", samples::outcome_name(r.outcome), r.length,
+                 samples::describe_links(samples::count_links(path)).c_str(), r.nodes_visited);
+    if (path.points.empty()) return;
+    std::fprintf(out, "  from (%.2f, %.2f, %.2f) to (%.2f, %.2f, %.2f) on the navmesh\n", r.start[0], r.start[1],
+                 r.start[2], r.goal[0], r.goal[1], r.goal[2]);
+    std::fprintf(out, "  %3s  %-28s %-6s %-6s %8s\n", "#", "point", "then", "link", "length");
+    const auto segments = samples::path_segments(path);
+    for (size_t i = 0; i < path.points.size(); ++i) {
+        const nl_path_point& p = path.points[i];
+        char position[64];
+        std::snprintf(position, sizeof position, "(%.2f, %.2f, %.2f)", p.position[0], p.position[1], p.position[2]);
+        if (i + 1 == path.points.size()) {
+            std::fprintf(out, "  %3zu  %-28s %-6s\n", i, position, "arrive");
+            break;
+        }
+        char link[32] = "";
+        if (p.segment != NL_SEGMENT_WALK)
+            std::snprintf(link, sizeof link, "#%ld%s", link_index(links, p.link), p.reversed ? " rev" : "");
+        std::fprintf(out, "  %3zu  %-28s %-6s %-6s %8.2f\n", i, position, samples::segment_name(p.segment), link,
+                     segments[i].length);
+    }
+}
+
+std::string path_json(const samples::PlannedPath& path, const std::vector<nl_link>& links) {
+    const nl_path_result& r = path.result;
+    nlohmann::json out;
+    out["outcome"] = samples::outcome_name(r.outcome);
+    out["length"] = r.length;
+    out["cost"] = r.cost;
+    out["links_used"] = r.links_used;
+    out["nodes_visited"] = r.nodes_visited;
+    out["start"] = xyz(r.start);
+    out["goal"] = xyz(r.goal);
+    nlohmann::json points = nlohmann::json::array();
+    for (const nl_path_point& p : path.points) {
+        nlohmann::json point;
+        point["position"] = xyz(p.position);
+        point["polygon"] = p.polygon;
+        points.push_back(point);
+    }
+    out["points"] = points;
+    nlohmann::json segments = nlohmann::json::array();
+    for (const samples::PathSegment& s : samples::path_segments(path)) {
+        nlohmann::json segment;
+        segment["kind"] = samples::segment_name(s.kind);
+        segment["from"] = xyz(s.from->position);
+        segment["to"] = xyz(s.to->position);
+        segment["length"] = s.length;
+        if (s.kind != NL_SEGMENT_WALK) {
+            segment["link"] = link_index(links, s.from->link);
+            segment["reversed"] = s.from->reversed != 0;
+            segment["apex"] = xyz(s.from->apex);
+        }
+        segments.push_back(segment);
+    }
+    out["segments"] = segments;
+    return out.dump(1) + "\n";
+}
+
+}  // namespace nl::cli

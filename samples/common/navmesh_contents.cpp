@@ -1,0 +1,38 @@
+#include "navmesh_contents.h"
+
+#include "sample_error.h"
+
+namespace nl::samples {
+
+std::vector<nl_link> read_links(const nl_world* world, nl_navmesh_id navmesh) {
+    uint32_t count = 0;
+    check(nl_navmesh_get_links(world, navmesh, nullptr, 0, &count), "listing the links");
+    std::vector<nl_link> links(count);
+    check(nl_navmesh_get_links(world, navmesh, links.data(), count, &count), "listing the links");
+    links.resize(count);
+    return links;
+}
+
+NavmeshContents read_navmesh_contents(const nl_world* world, nl_navmesh_id navmesh) {
+    NavmeshContents out;
+    uint32_t count = 0;
+    check(nl_navmesh_get_vertices(world, navmesh, nullptr, 0, &count), "reading the navmesh");
+    out.vertices.resize(size_t(count) * 3);
+    check(nl_navmesh_get_vertices(world, navmesh, out.vertices.data(), count, &count), "reading the navmesh");
+
+    nl_navmesh_info info{};
+    info.size = sizeof info;
+    check(nl_navmesh_get_info(world, navmesh, &info), "reading the navmesh");
+    out.polygons.resize(info.polygon_count);
+    for (uint32_t p = 0; p < info.polygon_count; ++p)
+        check(nl_navmesh_get_polygon(world, navmesh, p, &out.polygons[p]), "reading the navmesh");
+
+    check(nl_navmesh_get_boundary_edges(world, navmesh, nullptr, 0, &count), "reading the navmesh outline");
+    out.boundary_edges.resize(count);
+    check(nl_navmesh_get_boundary_edges(world, navmesh, out.boundary_edges.data(), count, &count),
+          "reading the navmesh outline");
+    out.links = read_links(world, navmesh);
+    return out;
+}
+
+}  // namespace nl::samples

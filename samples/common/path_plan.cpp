@@ -1,0 +1,113 @@
+#include "path_plan.h"
+
+#include <cmath>
+
+#include "sample_error.h"
+
+namespace nl::samples {
+
+nl_path_request_def path_request(nl_navmesh_id navmesh, const float start[3], const float goal[3],
+                                 const nl_agent_capabilities& agent) {
+    nl_path_request_def def = nl_default_path_request_def();
+    def.navmesh = navmesh;
+    for (int k = 0; k < 3; ++k) {
+        def.start[k] = start[k];
+        def.goal[k] = goal[k];
+    }
+    def.agent = agent;
+    return def;
+}
+
+PlannedPath find_path(nl_world* world, nl_navmesh_id navmesh, const float start[3], const float goal[3],
+                      const nl_agent_capabilities& agent) {
+    const nl_path_request_def def = path_request(navmesh, start, goal, agent);
+    PlannedPath path;
+    path.result.size = sizeof path.result;
+    path.points.resize(256);
+    uint32_t count = 0;
+    nl_status status = nl_path_find(world, &def, &path.result, path.points.data(), 256, &count);
+    if (NL_FAILED(status) && (status & NL_STATUS_BUFFER_TOO_SMALL)) {
+        path.points.resize(count);  // a long path: plan again with room for all of it
+        status = nl_path_find(world, &def, &path.result, path.points.data(), count, &count);
+    }
+    check(status, "planning the path");
+    path.points.resize(count);
+    return path;
+}
+
+PlannedPath queued_result(const nl_world* world, nl_path_ticket ticket) {
+    PlannedPath path;
+    path.result.size = sizeof path.result;
+    path.points.resize(256);
+    uint32_t count = 0;
+    nl_status status = nl_path_get_result(world, ticket, &path.result, path.points.data(), 256, &count);
+    if (NL_FAILED(status) && (status & NL_STATUS_BUFFER_TOO_SMALL)) {
+        path.points.resize(count);
+        status = nl_path_get_result(world, ticket, &path.result, path.points.data(), count, &count);
+    }
+    check(status, "reading a path result");
+    path.points.resize(count);
+    return path;
+}
+
+std::vector<PathSegment> path_segments(const PlannedPath& path) {
+    std::vector<PathSegment> out;
+    for (size_t i = 0; i + 1 < path.points.size(); ++i) {
+        const nl_path_point& a = path.points[i];
+        const nl_path_point& b = path.points[i + 1];
+        const float dx = b.position[0] - a.position[0], dy = b.position[1] - a.position[1],
+                    dz = b.position[2] - a.position[2];
+        out.push_back({a.segment, &a, &b, std::sqrt(dx * dx + dy * dy + dz * dz)});
+    }
+    return out;
+}
+
+const char* outcome_name(nl_path_outcome outcome) {
+    switch (outcome) {
+    case NL_PATH_PENDING: return "pending";
+    case NL_PATH_COMPLETE: return "complete";
+    case NL_PATH_PARTIAL: return "partial";
+    case NL_PATH_NO_PATH: return "no path";
+    case NL_PATH_START_OFF_NAVMESH: return "start off navmesh";
+    case NL_PATH_GOAL_OFF_NAVMESH: return "goal off navmesh";
+    case NL_PATH_CANCELLED: return "cancelled";
+    case NL_PATH_FAILED: return "failed";
+    default: return "unknown";
+    }
+}
+
+const char* segment_name(nl_segment_kind kind) {
+    if (kind == NL_SEGMENT_WALK) return "walk";
+    if (kind == NL_LINK_JUMP) return "jump";
+    if (kind == NL_LINK_DROP) return "drop";
+    if (kind == NL_LINK_MANUAL) return "manual";
+    return "plugin";
+}
+
+LinkCounts count_links(const PlannedPath& path) {
+    LinkCounts counts;
+    for (size_t i = 0; i + 1 < path.points.size(); ++i) {
+        const nl_segment_kind kind = path.points[i].segment;
+        if (kind == NL_LINK_JUMP) ++counts.jumps;
+        else if (kind == NL_LINK_DROP) ++counts.drops;
+        else if (kind == NL_LINK_MANUAL) ++counts.manual;
+        else if (kind != NL_SEGMENT_WALK) ++counts.plugin;
+    }
+    return counts;
+}
+
+std::string describe_links(const LinkCounts& c) {
+    std::string out;
+    auto add = [&out](uint32_t n, const char* one, const char* many) {
+        if (n == 0) return;
+        if (!out.empty()) out += ", ";
+        out += std::to_string(n) + " " + (n == 1 ? one : many);
+    };
+    add(c.jumps, "jump", "jumps");
+    add(c.drops, "drop", "drops");
+    add(c.manual, "manual link", "manual links");
+    add(c.plugin, "plugin link", "plugin links");
+    return out.empty() ? "no links" : out;
+}
+
+}  // namespace nl::samples

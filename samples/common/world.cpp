@@ -1,0 +1,15 @@
+#include "world.h"
+
+#include "sample_error.h"
+
+namespace nl::samples {
+
+World::World(int32_t path_workers) {
+    nl_world_def def = nl_default_world_def();
+    def.path_worker_count = path_workers;
+    check(nl_world_create(&def, &world_), "creating the NavLink world");
+}
+
+World::~World() { nl_world_destroy(world_); }
+
+}  // namespace nl::samples

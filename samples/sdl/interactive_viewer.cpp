@@ -1,0 +1,106 @@
+#include "interactive_viewer.h"
+
+#include <SDL2/SDL.h>
+
+#include <cstdio>
+#include <memory>
+
+#include "png_export.h"
+#include "scene_renderer.h"
+
+namespace nl::picture {
+
+const char* const kViewerKeys =
+    "  left click: destination    right click or shift-click: start\n"
+    "  1 2 3: walker / short jumper / long jumper    A: all agents at once\n"
+    "  L level  N navmesh  B boundary edges  K links  P paths  G legend  O oblique/top-down\n"
+    "  S: save viewer.png    Q or Escape: quit\n";
+
+namespace {
+
+// Applies a key; returns false to quit.
+bool handle_key(SDL_Keycode key, ViewerSession& session, ViewSettings& view) {
+    Layers& l = view.layers;
+    switch (key) {
+    case SDLK_ESCAPE:
+    case SDLK_q: return false;
+    case SDLK_1: session.select_agent(0); break;
+    case SDLK_2: session.select_agent(1); break;
+    case SDLK_3: session.select_agent(2); break;
+    case SDLK_a: session.toggle_all_agents(); break;
+    case SDLK_l: l.level = !l.level; break;
+    case SDLK_n: l.navmesh = !l.navmesh; break;
+    case SDLK_b: l.boundary = !l.boundary; break;
+    case SDLK_k: l.links = !l.links; break;
+    case SDLK_p: l.paths = !l.paths; break;
+    case SDLK_g: l.legend = !l.legend; break;
+    case SDLK_o: view.oblique = !view.oblique; break;
+    case SDLK_s:
+        session.wait_for_paths();  // save what was asked for, not a picture mid-planning
+        session.update();
+        write_png(session.scene(), view, "viewer.png");
+        std::printf("wrote viewer.png\n");
+        break;
+    default: break;
+    }
+    return true;
+}
+
+}  // namespace
+
+int run_interactive_viewer(ViewerSession& session, ViewSettings view) {
+    std::unique_ptr<SDL_Window, decltype(&SDL_DestroyWindow)> window(
+        SDL_CreateWindow("NavLink viewer", SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED, view.width, view.height,
+                         SDL_WINDOW_RESIZABLE),
+        SDL_DestroyWindow);
+    if (!window) {
+        std::fprintf(stderr, "navlink-viewer: cannot open a window: %s\n", SDL_GetError());
+        return 2;
+    }
+    std::unique_ptr<SDL_Renderer, decltype(&SDL_DestroyRenderer)> renderer(
+        SDL_CreateRenderer(window.get(), -1, SDL_RENDERER_PRESENTVSYNC), SDL_DestroyRenderer);
+    if (!renderer) renderer.reset(SDL_CreateRenderer(window.get(), -1, SDL_RENDERER_SOFTWARE));
+    if (!renderer) {
+        std::fprintf(stderr, "navlink-viewer: cannot draw in the window: %s\n", SDL_GetError());
+        return 2;
+    }
+    std::printf("%s", kViewerKeys);
+    bool running = true, dirty = true;
+    std::string last_status;
+    while (running) {
+        SDL_Event event;
+        // Wait briefly for input so an idle viewer does not spin; paths are polled in between.
+        if (SDL_WaitEventTimeout(&event, session.waiting() ? 5 : 50)) {
+            do {
+                if (event.type == SDL_QUIT) running = false;
+                if (event.type == SDL_WINDOWEVENT) dirty = true;
+                if (event.type == SDL_KEYDOWN) {
+                    running = handle_key(event.key.keysym.sym, session, view) && running;
+                    dirty = true;
+                }
+                if (event.type == SDL_MOUSEBUTTONDOWN) {
+                    const SDL_FPoint pixel{static_cast<float>(event.button.x), static_cast<float>(event.button.y)};
+                    if (const auto point = session.pick(pixel, view)) {
+                        const bool start = event.button.button == SDL_BUTTON_RIGHT || (SDL_GetModState() & KMOD_SHIFT);
+                        if (start) session.set_start(*point);
+                        else session.set_destination(*point);
+                        dirty = true;
+                    }
+                }
+            } while (SDL_PollEvent(&event));
+        }
+        dirty = session.update() || dirty;
+        if (!dirty) continue;
+        SDL_GetRendererOutputSize(renderer.get(), &view.width, &view.height);
+        draw_scene(renderer.get(), session.scene(), view);
+        SDL_RenderPresent(renderer.get());
+        const std::string status = session.status();
+        SDL_SetWindowTitle(window.get(), ("NavLink viewer: " + status).c_str());
+        if (status != last_status) std::printf("%s\n", status.c_str());
+        last_status = status;
+        dirty = false;
+    }
+    return 0;
+}
+
+}  // namespace nl::picture

@@ -1,0 +1,130 @@
+#include "legend.h"
+
+#include <cmath>
+#include <cstdio>
+
+#include "palette.h"
+
+namespace nl::picture {
+namespace {
+
+constexpr float kTextScale = 1.6f;
+constexpr float kLine = 19.0f;
+
+class LegendWriter {
+public:
+    LegendWriter(Canvas& canvas, float x, float y) : canvas_(canvas), x_(x), y_(y) {}
+
+    void heading(const std::string& text) {
+        y_ += 6.0f;
+        canvas_.text({x_, y_}, text, 1.8f, palette::kText);
+        y_ += kLine + 2.0f;
+    }
+    void swatch_line(Rgba color, const std::string& text, bool arrow = false) {
+        const SDL_FPoint a{x_, y_ + 6.0f}, b{x_ + 34.0f, y_ + 6.0f};
+        canvas_.line(a, b, 6.0f, palette::kShadow);
+        canvas_.line(a, b, 3.0f, color);
+        if (arrow) canvas_.arrow_head(a, b, 9.0f, color);
+        entry(text);
+    }
+    void swatch_box(Rgba fill, Rgba edge, const std::string& text) {
+        canvas_.rectangle({x_, y_, 34.0f, 13.0f}, fill);
+        canvas_.line({x_, y_ + 13.0f}, {x_ + 34.0f, y_ + 13.0f}, 2.5f, edge);
+        entry(text);
+    }
+    void swatch_dot(Rgba color, const std::string& text) {
+        canvas_.dot({x_ + 17.0f, y_ + 6.0f}, 7.0f, color);
+        entry(text);
+    }
+    void note(const std::string& text) {
+        canvas_.text({x_, y_}, text, kTextScale, palette::kDimText);
+        y_ += kLine;
+    }
+    float x() const { return x_; }
+    float& y() { return y_; }
+
+private:
+    void entry(const std::string& text) {
+        canvas_.text({x_ + 44.0f, y_}, text, kTextScale, palette::kText);
+        y_ += kLine;
+    }
+    Canvas& canvas_;
+    float x_, y_;
+};
+
+std::string format(const char* pattern, double a, double b = 0.0) {
+    char text[128];
+    std::snprintf(text, sizeof text, pattern, a, b);
+    return text;
+}
+
+}  // namespace
+
+void draw_legend(Canvas& canvas, const Scene& scene, const ViewSettings& view, const Camera& camera) {
+    const float left = static_cast<float>(view.width) - kLegendWidth;
+    canvas.rectangle({left, 0.0f, kLegendWidth, static_cast<float>(view.height)}, palette::kPanel);
+    LegendWriter w(canvas, left + 16.0f, 14.0f);
+
+    w.heading("LEVEL");
+    const float lo = scene.level->info.bounds_min[1], hi = scene.level->info.bounds_max[1];
+    for (int i = 0; i < 60; ++i) {
+        const float t = static_cast<float>(i) / 59.0f;
+        const Rgba a = palette::kLowGround, b = palette::kHighGround;
+        const Rgba c{static_cast<uint8_t>(a.r + (b.r - a.r) * t), static_cast<uint8_t>(a.g + (b.g - a.g) * t),
+                     static_cast<uint8_t>(a.b + (b.b - a.b) * t), 255};
+        canvas.rectangle({w.x() + 4.0f * i, w.y(), 4.0f, 13.0f}, c);
+    }
+    w.y() += kLine;
+    w.note(format("height: y = %.1f m (dark) to %.1f m (light)", lo, hi));
+    w.note(std::to_string(scene.level->triangle_count()) + " triangles, " +
+           (view.oblique ? "oblique view" : "top-down view"));
+
+    if (scene.navmesh) {
+        w.heading("NAVMESH");
+        w.swatch_box(palette::kNavmeshFill, palette::kNavmeshEdge,
+                     std::to_string(scene.navmesh->polygons.size()) + " walkable polygons");
+        w.swatch_line(palette::kBoundary, std::to_string(scene.navmesh->boundary_edges.size()) + " boundary edges");
+
+        uint32_t counts[4] = {0, 0, 0, 0};
+        uint32_t one_way = 0;
+        for (const nl_link& l : scene.navmesh->links) {
+            const int kind = l.kind == NL_LINK_JUMP ? 0 : l.kind == NL_LINK_DROP ? 1 : l.kind == NL_LINK_MANUAL ? 2 : 3;
+            ++counts[kind];
+            one_way += !l.bidirectional;
+        }
+        w.heading("LINKS (" + std::to_string(scene.navmesh->links.size()) + ")");
+        w.swatch_line(palette::kJump, "jump: " + std::to_string(counts[0]));
+        w.swatch_line(palette::kDrop, "drop: " + std::to_string(counts[1]), true);
+        w.swatch_line(palette::kManual, "manual: " + std::to_string(counts[2]));
+        w.swatch_line(palette::kPlugin, "plugin kinds: " + std::to_string(counts[3]));
+        w.note("arrow: one way (" + std::to_string(one_way) + "); dots: both ends");
+    }
+
+    if (!scene.paths.empty()) {
+        w.heading("PATHS");
+        for (const PathLayer& path : scene.paths) w.swatch_line(path.color, path.label);
+        w.note("dots on a path: where it takes a link");
+    }
+    if (!scene.points.empty()) {
+        w.heading("POINTS");
+        for (const ScenePoint& p : scene.points)
+            w.swatch_dot(p.color, p.label + format(" (%.1f, %.1f", p.position[0], p.position[1]) +
+                                      format(", %.1f)", p.position[2]));
+    }
+
+    // A scale bar of a round length near 120 pixels.
+    const float ppm = camera.pixels_per_metre();
+    float metres = 1.0f;
+    for (float candidate : {1.0f, 2.0f, 5.0f, 10.0f, 20.0f, 50.0f, 100.0f, 200.0f, 500.0f})
+        if (candidate * ppm <= 160.0f) metres = candidate;
+    w.heading("SCALE");
+    const float y = w.y() + 6.0f;
+    canvas.line({w.x(), y}, {w.x() + metres * ppm, y}, 3.0f, palette::kText);
+    canvas.line({w.x(), y - 6.0f}, {w.x(), y + 6.0f}, 2.0f, palette::kText);
+    canvas.line({w.x() + metres * ppm, y - 6.0f}, {w.x() + metres * ppm, y + 6.0f}, 2.0f, palette::kText);
+    canvas.text({w.x() + metres * ppm + 10.0f, y - 6.0f}, format("%.0f m", metres), kTextScale, palette::kText);
+    w.y() += kLine;
+    if (!camera.top_down()) w.note("(along x; depth is foreshortened)");
+}
+
+}  // namespace nl::picture

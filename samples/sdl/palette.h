@@ -1,0 +1,38 @@
+// The colours of every picture, in one place so the legend and the drawing agree.
+#pragma once
+
+#include <navlink/navlink.h>
+
+#include "scene.h"
+
+namespace nl::picture::palette {
+
+constexpr Rgba kBackground{28, 32, 38, 255};
+constexpr Rgba kLowGround{62, 74, 96, 255};      // the lowest level surface...
+constexpr Rgba kHighGround{226, 214, 186, 255};  // ...to the highest
+constexpr Rgba kNavmeshFill{70, 190, 100, 105};
+constexpr Rgba kNavmeshEdge{40, 120, 60, 120};
+constexpr Rgba kBoundary{16, 70, 32, 255};
+constexpr Rgba kJump{255, 140, 20, 255};
+constexpr Rgba kDrop{20, 190, 235, 255};
+constexpr Rgba kManual{220, 60, 210, 255};
+constexpr Rgba kPlugin{240, 220, 40, 255};
+constexpr Rgba kShadow{0, 0, 0, 170};  // under links and paths, so they read on any ground
+constexpr Rgba kText{235, 235, 235, 255};
+constexpr Rgba kDimText{165, 170, 178, 255};
+constexpr Rgba kPanel{18, 20, 24, 235};
+
+// Agents' paths, in order: white, red, violet, then yellow-green and pink.
+constexpr Rgba kAgents[] = {
+    {250, 250, 250, 255}, {235, 45, 45, 255}, {160, 80, 255, 255}, {170, 230, 60, 255}, {255, 120, 170, 255}};
+
+inline Rgba agent(size_t index) { return kAgents[index % (sizeof kAgents / sizeof kAgents[0])]; }
+
+inline Rgba link_kind(nl_link_kind kind) {
+    if (kind == NL_LINK_JUMP) return kJump;
+    if (kind == NL_LINK_DROP) return kDrop;
+    if (kind == NL_LINK_MANUAL) return kManual;
+    return kPlugin;
+}
+
+}  // namespace nl::picture::palette

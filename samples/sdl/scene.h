@@ -1,0 +1,58 @@
+// What a picture shows: a level's triangles, its navmesh (polygons, outline, links), paths of agents
+// and marked points. Plain data read through the C ABI; the renderer only draws it.
+#pragma once
+
+#include <navlink/navlink.h>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "level.h"
+#include "navmesh_contents.h"
+
+namespace nl::picture {
+
+struct Rgba {
+    uint8_t r, g, b, a;
+};
+
+// One agent's path: its points as nl_path_find returns them (each point says how the agent goes on
+// to the next one, and carries the jump's apex).
+struct PathLayer {
+    std::string label;  // the legend's text, e.g. "long jumper: 2 jumps, 1 drop, 31.2 m"
+    Rgba color;
+    std::vector<nl_path_point> points;
+};
+
+struct ScenePoint {
+    std::string label;
+    float position[3];
+    Rgba color;
+};
+
+struct Scene {
+    const samples::Level* level = nullptr;              // required
+    const samples::NavmeshContents* navmesh = nullptr;  // optional
+    std::vector<PathLayer> paths;
+    std::vector<ScenePoint> points;  // start, goal, ...
+    std::string title;
+};
+
+struct Layers {
+    bool level = true;
+    bool navmesh = true;
+    bool boundary = true;
+    bool links = true;
+    bool paths = true;
+    bool legend = true;
+};
+
+struct ViewSettings {
+    int width = 1600;
+    int height = 1000;     // PNG files: 0 fits the height to the level
+    bool oblique = false;  // false: straight down; true: from the south, 55 degrees down
+    Layers layers;
+};
+
+}  // namespace nl::picture

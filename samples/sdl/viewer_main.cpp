@@ -1,0 +1,68 @@
+// navlink-viewer: a level, its navmesh, links and the demo agents' paths, in a window when there is
+// a display (click to set the destination), or as a scripted sequence of PNG frames when there is
+// none (SDL_VIDEODRIVER=dummy, no DISPLAY) or --headless is given.
+#include <SDL2/SDL.h>
+
+#include <cstdio>
+#include <cstring>
+#include <string>
+
+#include "arguments.h"
+#include "headless_script.h"
+#include "interactive_viewer.h"
+#include "sample_error.h"
+#include "viewer_session.h"
+
+namespace {
+
+const char* const kHelp =
+    "usage: navlink-viewer [LEVEL.obj] [--links LINKS.json] [--seed N] [--oblique] [--headless]\n"
+    "                      [--frames DIR]\n"
+    "\n"
+    "Shows a level (default: the generated default level), its navmesh, its links (generated with the\n"
+    "demo's settings unless --links) and the paths of the demo's agents (walker, short jumper, long\n"
+    "jumper) from a start to a destination you click.\n"
+    "Without a display (or with --headless) it renders a scripted sequence of frames into DIR (default\n"
+    "'.') as frame_NN.png instead.\n"
+    "\n"
+    "keys:\n";
+
+bool display_available() {
+    if (SDL_Init(SDL_INIT_VIDEO) != 0) return false;
+    const char* driver = SDL_GetCurrentVideoDriver();
+    return driver && std::strcmp(driver, "dummy") != 0 && std::strcmp(driver, "offscreen") != 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    try {
+        const nl::samples::Arguments args(
+            "navlink-viewer", "navlink-viewer", argc, argv, 1,
+            {{"links", true}, {"seed", true}, {"oblique", false}, {"headless", false}, {"frames", true}});
+        if (args.wants_help()) {
+            std::printf("%s%s", kHelp, nl::picture::kViewerKeys);
+            return 0;
+        }
+        if (args.positional().size() > 1)
+            throw nl::samples::SampleError("unexpected argument '" + args.positional()[1] +
+                                           "' (see navlink-viewer --help)");
+        nl::picture::ViewerOptions options;
+        if (!args.positional().empty()) options.level_path = args.positional()[0];
+        options.links_path = args.value("links");
+        options.seed = static_cast<uint32_t>(args.whole_number("seed", 0, 4294967295L, 1));
+        nl::picture::ViewSettings view;
+        view.oblique = args.has("oblique");
+
+        nl::picture::ViewerSession session(options);
+        const bool headless = args.has("headless") || !display_available();
+        const int status = headless
+                               ? nl::picture::run_headless_script(session, view, args.value("frames").value_or("."))
+                               : nl::picture::run_interactive_viewer(session, view);
+        SDL_Quit();
+        return status;
+    } catch (const nl::samples::SampleError& e) {
+        std::fprintf(stderr, "navlink-viewer: %s\n", e.what());
+        return 2;
+    }
+}

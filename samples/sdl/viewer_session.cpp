@@ -1,0 +1,183 @@
+#include "viewer_session.h"
+
+#include <cmath>
+#include <cstdio>
+
+#include "demo_setup.h"
+#include "link_files.h"
+#include "navmesh_setup.h"
+#include "palette.h"
+#include "sample_error.h"
+#include "scene_renderer.h"
+
+namespace nl::picture {
+
+ViewerSession::ViewerSession(const ViewerOptions& options) : agents_(samples::demo_agents()) {
+    levelgen::GeneratedLevel generated;
+    if (options.level_path) {
+        level_ = samples::load_level_file(world_.get(), *options.level_path, true);
+    } else {
+        generated = levelgen::generate_default_level(options.seed);
+        level_ = samples::add_generated_level(world_.get(), generated,
+                                              "generated default level (seed " + std::to_string(options.seed) + ")");
+    }
+    navmesh_ = samples::build_navmesh(world_.get(), agents_[0].body, "");
+    if (options.links_path) {
+        samples::load_links_file(world_.get(), navmesh_, *options.links_path);
+    } else {
+        const nl_link_settings settings = samples::demo_link_settings();
+        samples::check(nl_navmesh_generate_links(world_.get(), navmesh_, &settings, nullptr, nullptr, nullptr),
+                       "generating links");
+    }
+    contents_ = samples::read_navmesh_contents(world_.get(), navmesh_);
+    paths_.resize(agents_.size());
+    current_ = agents_.size() - 1;
+
+    // Start at the level's start marker, or in the middle of the first polygon.
+    if (const levelgen::Marker* m = generated.marker("start")) {
+        start_ = {m->position[0], m->position[1], m->position[2]};
+    } else if (!contents_.polygons.empty()) {
+        const float* c = contents_.polygons[0].centre;
+        start_ = {c[0], c[1], c[2]};
+    }
+    // Send the agents to the level's goal marker, or to the polygon farthest from the start.
+    if (const levelgen::Marker* m = generated.marker("goal")) {
+        set_destination({m->position[0], m->position[1], m->position[2]});
+    } else if (!contents_.polygons.empty()) {
+        const nl_nav_polygon* farthest = &contents_.polygons[0];
+        auto distance2 = [this](const float* c) {
+            return (c[0] - start_[0]) * (c[0] - start_[0]) + (c[2] - start_[2]) * (c[2] - start_[2]);
+        };
+        for (const nl_nav_polygon& p : contents_.polygons)
+            if (distance2(p.centre) > distance2(farthest->centre)) farthest = &p;
+        set_destination({farthest->centre[0], farthest->centre[1], farthest->centre[2]});
+    }
+}
+
+ViewerSession::~ViewerSession() { cancel_pending(); }
+
+std::optional<ViewerSession::Point> ViewerSession::pick(SDL_FPoint pixel, const ViewSettings& view) const {
+    const Camera camera = scene_camera(scene(), view);
+    float on_plane[3], direction[3];
+    camera.unproject(pixel, on_plane);
+    camera.view_direction(direction);
+    // From well in front of the level, along the view, to well behind it.
+    const float* lo = level_.info.bounds_min;
+    const float* hi = level_.info.bounds_max;
+    float reach = 0.0f;
+    for (int k = 0; k < 3; ++k) reach += (hi[k] - lo[k]) * (hi[k] - lo[k]);
+    reach = std::sqrt(reach) + 10.0f;
+    nl_ray ray{};
+    for (int k = 0; k < 3; ++k) {
+        ray.origin[k] = on_plane[k] - direction[k] * reach;
+        ray.direction[k] = direction[k];
+    }
+    ray.max_distance = 2.0f * reach;
+    nl_ray_hit hit{};
+    // Picking only reads the level; a failure (a point beyond the coordinate limit) is a miss.
+    if (NL_FAILED(nl_world_cast_rays(world_.get(), &ray, 1, &hit)) || !hit.hit) return std::nullopt;
+    return Point{hit.point[0], hit.point[1], hit.point[2]};
+}
+
+void ViewerSession::set_start(const Point& start) {
+    start_ = start;
+    request_paths();
+}
+
+void ViewerSession::set_destination(const Point& destination) {
+    destination_ = destination;
+    request_paths();
+}
+
+void ViewerSession::select_agent(size_t index) {
+    current_ = index % agents_.size();
+    all_agents_ = false;
+    request_paths();
+}
+
+void ViewerSession::toggle_all_agents() {
+    all_agents_ = !all_agents_;
+    request_paths();
+}
+
+void ViewerSession::cancel_pending() {
+    for (const Pending& p : pending_) nl_path_release(world_.get(), p.ticket);  // cancels it if unfinished
+    pending_.clear();
+}
+
+void ViewerSession::request_paths() {
+    cancel_pending();
+    for (auto& path : paths_) path.reset();
+    if (!destination_) return;
+    for (size_t i = 0; i < agents_.size(); ++i) {
+        if (!all_agents_ && i != current_) continue;
+        const nl_path_request_def def =
+            samples::path_request(navmesh_, start_.data(), destination_->data(), agents_[i].capabilities);
+        nl_path_ticket ticket{};
+        samples::check(nl_path_request(world_.get(), &def, &ticket), "requesting a path");
+        pending_.push_back({i, ticket});
+    }
+}
+
+bool ViewerSession::update() {
+    bool changed = false;
+    for (size_t k = 0; k < pending_.size();) {
+        nl_path_outcome outcome = NL_PATH_PENDING;
+        samples::check(nl_path_poll(world_.get(), pending_[k].ticket, &outcome), "polling a path");
+        if (outcome == NL_PATH_PENDING) {
+            ++k;
+            continue;
+        }
+        paths_[pending_[k].agent] = samples::queued_result(world_.get(), pending_[k].ticket);
+        nl_path_release(world_.get(), pending_[k].ticket);
+        pending_.erase(pending_.begin() + static_cast<long>(k));
+        changed = true;
+    }
+    return changed;
+}
+
+void ViewerSession::wait_for_paths() {
+    while (waiting()) {
+        samples::check(nl_path_process(world_.get(), 0, 0.0, nullptr), "running the path queue");
+        update();
+    }
+}
+
+Scene ViewerSession::scene() const {
+    Scene scene;
+    scene.level = &level_;
+    scene.navmesh = &contents_;
+    scene.title = level_.name + "  |  agent: " + (all_agents_ ? std::string("all") : agents_[current_].name);
+    for (size_t i = 0; i < agents_.size(); ++i) {
+        if (!paths_[i]) continue;
+        const samples::PlannedPath& p = *paths_[i];
+        char label[112];
+        std::snprintf(label, sizeof label, "%s: %.1f m, %s%s%s", agents_[i].name.c_str(), p.result.length,
+                      samples::describe_links(samples::count_links(p)).c_str(),
+                      p.result.outcome == NL_PATH_COMPLETE ? "" : "; ",
+                      p.result.outcome == NL_PATH_COMPLETE ? "" : samples::outcome_name(p.result.outcome));
+        scene.paths.push_back({label, palette::agent(i), p.points});
+    }
+    scene.points.push_back({"start", {start_[0], start_[1], start_[2]}, palette::kText});
+    if (destination_)
+        scene.points.push_back(
+            {"destination", {(*destination_)[0], (*destination_)[1], (*destination_)[2]}, palette::kText});
+    return scene;
+}
+
+std::optional<ViewerSession::Point> ViewerSession::destination() const { return destination_; }
+
+std::string ViewerSession::status() const {
+    std::string out = all_agents_ ? "all agents" : agents_[current_].name;
+    for (size_t i = 0; i < agents_.size(); ++i) {
+        if (!paths_[i]) continue;
+        char text[96];
+        std::snprintf(text, sizeof text, "; %s %s %.1f m", agents_[i].name.c_str(),
+                      samples::outcome_name(paths_[i]->result.outcome), paths_[i]->result.length);
+        out += text;
+    }
+    if (waiting()) out += "; planning...";
+    return out;
+}
+
+}  // namespace nl::picture

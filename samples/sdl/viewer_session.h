@@ -1,0 +1,80 @@
+// What the viewer shows and edits: a level with its navmesh and links, the demo's three agents, a
+// start and a destination, and the paths planned between them through the queued path API
+// (nl_path_request, polled every frame), so the window never waits for the planner.
+#pragma once
+
+#include <SDL2/SDL.h>
+#include <navlink/navlink.h>
+
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "agent_profile.h"
+#include "level.h"
+#include "navmesh_contents.h"
+#include "path_plan.h"
+#include "scene.h"
+#include "world.h"
+
+namespace nl::picture {
+
+struct ViewerOptions {
+    std::optional<std::string> level_path;  // none: the generated default level
+    std::optional<std::string> links_path;  // none: links are generated (the demo's settings)
+    uint32_t seed = 1;
+};
+
+class ViewerSession {
+public:
+    using Point = std::array<float, 3>;
+
+    explicit ViewerSession(const ViewerOptions& options);  // throws SampleError
+    ~ViewerSession();
+    ViewerSession(const ViewerSession&) = delete;
+    ViewerSession& operator=(const ViewerSession&) = delete;
+
+    // The level surface under a pixel of a view (a ray cast through it), if any.
+    std::optional<Point> pick(SDL_FPoint pixel, const ViewSettings& view) const;
+    void set_start(const Point& start);
+    void set_destination(const Point& destination);
+    void select_agent(size_t index);
+    void toggle_all_agents();
+
+    // Takes the paths that finished since the last call; true if any did (draw again).
+    bool update();
+    bool waiting() const { return !pending_.empty(); }
+    // Runs queued requests on this thread until none is left (headless mode).
+    void wait_for_paths();
+
+    Scene scene() const;  // borrows this session's level and navmesh
+    const std::vector<samples::AgentProfile>& agents() const { return agents_; }
+    size_t current_agent() const { return current_; }
+    const Point& start() const { return start_; }
+    std::optional<Point> destination() const;
+    // One line about the current state, for the title bar and the console.
+    std::string status() const;
+
+private:
+    void request_paths();
+    void cancel_pending();
+
+    samples::World world_;
+    samples::Level level_;
+    nl_navmesh_id navmesh_{};
+    samples::NavmeshContents contents_;
+    std::vector<samples::AgentProfile> agents_;
+    size_t current_ = 0;
+    bool all_agents_ = true;
+    Point start_{};
+    std::optional<Point> destination_;
+    struct Pending {
+        size_t agent;
+        nl_path_ticket ticket;
+    };
+    std::vector<Pending> pending_;
+    std::vector<std::optional<samples::PlannedPath>> paths_;  // per agent, for the current destination
+};
+
+}  // namespace nl::picture

@@ -1,0 +1,100 @@
+// Bad arguments, missing files and bad JSON: one line on stderr naming the problem, exit status 2.
+#include <algorithm>
+
+#include "cli_fixture.h"
+
+using nl::test::navlink;
+using nl::test::ProgramRun;
+
+namespace {
+
+struct BadCall {
+    std::vector<std::string> args;
+    std::string expected;  // in the error line
+};
+
+void check_one_line_error(const BadCall& call, const std::string& dir) {
+    std::string command;
+    for (const auto& a : call.args) command += a + " ";
+    INFO("navlink " << command);
+    const ProgramRun run = navlink(call.args, dir);
+    INFO("stderr: " << run.err);
+    CHECK(run.exit_code == 2);
+    CHECK(std::count(run.err.begin(), run.err.end(), '\n') == 1);
+    CHECK(run.err.rfind("navlink: ", 0) == 0);
+    CHECK(run.err.find(call.expected) != std::string::npos);
+}
+
+}  // namespace
+
+TEST_CASE("bad arguments, files and JSON give one line and exit status 2") {
+    const std::string dir = nl::test::scratch_dir("errors");
+    REQUIRE(navlink({"level", "--out", "level.obj"}, dir).exit_code == 0);
+    REQUIRE(navlink({"bake", "level.obj", "--out", "links.json"}, dir).exit_code == 0);
+    const std::vector<std::pair<std::string, std::string>> files = {
+        {"broken.json", "{\"radius\": "},
+        {"list.json", "[1, 2]"},
+        {"negative_radius.json", R"({"radius": -1})"},
+        {"text_radius.json", R"({"radius": "big"})"},
+        {"wings.json", R"({"max_jump_distance": 3, "wings": 2})"},
+        {"negative_abilities.json", R"({"abilities": -1})"},
+        {"slope.json", R"({"max_slope": 95})"},
+        {"bad_distance.json", R"({"max_link_distance": -1})"},
+        {"typo.json", R"({"max_link_distanse": 5})"},
+        {"bad_recast.json", R"({"recast": 5})"},
+        {"bad_cell.json", R"({"recast": {"cell_size": -1}})"},
+        {"other_format.json", R"({"format": "something-else", "version": 1, "links": []})"},
+        {"half.json", R"({"format": "navlink-links", "version": 1, "links": [)"},
+        {"bad_level.obj", "v 0 0 0\nv 1 0 0\nv 1 0 1\nf 1 2 9\n"},
+        {"concave.obj", "v 0 0 0\nv 4 0 0\nv 1 0 1\nv 4 0 4\nv 0 0 4\nf 1 5 4 3 2\n"},
+    };
+    for (const auto& [name, text] : files) nl::test::write_file(dir + "/" + name, text);
+
+    const std::vector<std::string> path = {"path", "level.obj", "--links", "links.json"};
+    auto with = [](std::vector<std::string> a, std::initializer_list<std::string> more) {
+        a.insert(a.end(), more);
+        return a;
+    };
+    const std::vector<BadCall> calls = {
+        {{}, "missing command"},
+        {{"frobnicate"}, "unknown command 'frobnicate'"},
+        {{"bake"}, "missing LEVEL.obj"},
+        {{"bake", "level.obj"}, "--out is required"},
+        {{"bake", "level.obj", "--out"}, "--out needs a value"},
+        {{"bake", "level.obj", "--out", "x.json", "--bogus"}, "unknown option '--bogus'"},
+        {{"bake", "level.obj", "--out", "x.json", "--out", "y.json"}, "--out given twice"},
+        {{"bake", "level.obj", "extra.obj", "--out", "x.json"}, "unexpected argument 'extra.obj'"},
+        {{"bake", "/nonexistent/level.obj", "--out", "x.json"}, "cannot open '/nonexistent/level.obj'"},
+        {{"bake", "bad_level.obj", "--out", "x.json"}, "line 4"},
+        {{"bake", "level.obj", "--out", "x.json", "--navmesh", "concave.obj"}, "concave.obj"},
+        {{"bake", "level.obj", "--out", "x.json", "--agent", "/nonexistent.json"}, "cannot open '/nonexistent.json'"},
+        {{"bake", "level.obj", "--out", "x.json", "--agent", "."}, "is a directory"},
+        {{"bake", "level.obj", "--out", "x.json", "--agent", "broken.json"}, "broken.json: not valid JSON"},
+        {{"bake", "level.obj", "--out", "x.json", "--agent", "list.json"}, "must be a JSON object"},
+        {{"bake", "level.obj", "--out", "x.json", "--agent", "negative_radius.json"}, "radius must be a number > 0"},
+        {{"bake", "level.obj", "--out", "x.json", "--agent", "text_radius.json"}, "radius must be a number"},
+        {{"bake", "level.obj", "--out", "x.json", "--agent", "wings.json"}, "unknown key \"wings\""},
+        {{"bake", "level.obj", "--out", "x.json", "--agent", "negative_abilities.json"},
+         "abilities must be a whole number"},
+        {{"bake", "level.obj", "--out", "x.json", "--agent", "slope.json"}, "max_slope"},
+        {{"bake", "level.obj", "--out", "x.json", "--settings", "bad_distance.json"}, "max_link_distance"},
+        {{"bake", "level.obj", "--out", "x.json", "--settings", "typo.json"}, "max_link_distanse"},
+        {{"bake", "level.obj", "--out", "x.json", "--settings", "bad_recast.json"}, "recast must be a JSON object"},
+        {{"bake", "level.obj", "--out", "x.json", "--settings", "bad_cell.json"}, "cell_size"},
+        {{"bake", "level.obj", "--out", "/nonexistent/x.json"}, "cannot write '/nonexistent/x.json'"},
+        {with(path, {"--to", "1,0,1"}), "--from is required"},
+        {with(path, {"--from", "1,2", "--to", "1,0,1"}), "--from must be three numbers X,Y,Z (got '1,2')"},
+        {with(path, {"--from", "a,b,c", "--to", "1,0,1"}), "--from must be three numbers"},
+        {with(path, {"--from", "1,0,1", "--to", "1,0,1,5"}), "--to must be three numbers"},
+        {{"path", "level.obj", "--links", "other_format.json", "--from", "1,0,1", "--to", "2,0,2"}, "format"},
+        {{"path", "level.obj", "--links", "half.json", "--from", "1,0,1", "--to", "2,0,2"}, "half.json"},
+        {{"path", "level.obj", "--links", "missing.json", "--from", "1,0,1", "--to", "2,0,2"},
+         "cannot open 'missing.json'"},
+        {with(path, {"--from", "1,0,1", "--to", "2,0,2", "--json=yes"}), "--json takes no value"},
+        {{"demo", "--seed", "-3"}, "--seed must be a whole number"},
+        {{"demo", "now"}, "unexpected argument 'now'"},
+        {{"level"}, "--out is required"},
+        {{"level", "--out", "/nonexistent/level.obj"}, "cannot write"},
+    };
+    for (const BadCall& call : calls) check_one_line_error(call, dir);
+}

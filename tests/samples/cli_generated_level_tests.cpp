@@ -1,0 +1,284 @@
+// navlink level, bake, path and demo on the generated default level: exit statuses, the links file,
+// the JSON path, and links where the level's features put them.
+#include <cmath>
+#include <map>
+#include <regex>
+
+#include "cli_fixture.h"
+#include "level_generator.h"
+
+using nl::test::navlink;
+using nl::test::ProgramRun;
+using nlohmann::json;
+
+namespace {
+
+struct GeneratedLevelFiles {
+    std::string dir;
+    nl::levelgen::GeneratedLevel level = nl::levelgen::generate_default_level(1);
+    GeneratedLevelFiles(const std::string& name) : dir(nl::test::scratch_dir(name)) {
+        const ProgramRun run = navlink({"level", "--out", "level.obj"}, dir);
+        REQUIRE_MESSAGE(run.exit_code == 0, run.err);
+    }
+};
+
+float x_of(const json& point) { return point.at(0).get<float>(); }
+float z_of(const json& point) { return point.at(2).get<float>(); }
+
+// Jump links whose ends lie on either side of the gap between boxes a and a + 1 (along x).
+std::vector<json> jumps_across(const json& links, const nl::levelgen::GeneratedLevel& level, int a) {
+    const float gap_start = level.boxes[a].max[0], gap_end = level.boxes[a + 1].min[0];
+    std::vector<json> out;
+    for (const auto& l : links.at("links")) {
+        if (l.at("kind") != "jump") continue;
+        const float x0 = std::min(x_of(l.at("start")), x_of(l.at("end")));
+        const float x1 = std::max(x_of(l.at("start")), x_of(l.at("end")));
+        if (x0 < gap_start && x1 > gap_end && z_of(l.at("start")) > 0.0f && z_of(l.at("end")) > 0.0f) out.push_back(l);
+    }
+    return out;
+}
+
+void write_agent(const std::string& path, const char* json_text) { nl::test::write_file(path, json_text); }
+
+}  // namespace
+
+TEST_CASE("navlink level writes the generated level as OBJ, with its markers") {
+    GeneratedLevelFiles files("level");
+    const std::string obj = nl::test::read_file(files.dir + "/level.obj");
+    size_t faces = 0;
+    for (size_t at = obj.find("\nf "); at != std::string::npos; at = obj.find("\nf ", at + 1)) ++faces;
+    CHECK(faces == files.level.triangle_count());
+    const ProgramRun again = navlink({"level", "--out", "again.obj", "--seed", "1"}, files.dir);
+    CHECK(again.out.find("start: 2.00,0.00,3.00") != std::string::npos);
+    CHECK(nl::test::read_file(files.dir + "/again.obj") == obj);  // a seed makes the same level
+    CHECK(navlink({"level", "--out", "other.obj", "--seed", "7"}, files.dir).exit_code == 0);
+    CHECK(nl::test::read_file(files.dir + "/other.obj") != obj);  // another seed, another level
+}
+
+TEST_CASE("navlink bake on the generated level: links file, report and picture agree, links are where the level says") {
+    GeneratedLevelFiles files("bake");
+    const ProgramRun run = navlink({"bake", "level.obj", "--out", "links.json", "--png", "view.png"}, files.dir);
+    REQUIRE_MESSAGE(run.exit_code == 0, run.err);
+    CHECK(run.err.empty());
+    const json links = nl::test::parse_json_file(files.dir + "/links.json");
+    CHECK(links.at("format") == "navlink-links");
+    CHECK(links.at("version") == 1);
+    const auto counts = nl::test::count_kinds(links);
+    CHECK(counts.jump > 0);
+    CHECK(counts.drop > 0);
+    CHECK(counts.other == 0);
+    // The report counts what the file holds.
+    std::smatch m;
+    REQUIRE(std::regex_search(run.out, m, std::regex(R"(links: (\d+) \((\d+) jump, (\d+) drop)")));
+    CHECK(std::stoul(m[1]) == links.at("links").size());
+    CHECK(std::stoul(m[2]) == counts.jump);
+    CHECK(std::stoul(m[3]) == counts.drop);
+    for (const char* line : {"rejected:", "clearance", "time (ms):", "navmesh", "links total"})
+        CHECK_MESSAGE(run.out.find(line) != std::string::npos, line);
+    CHECK(nl::test::is_png(files.dir + "/view.png", 1600));
+
+    // Jumps across the first gap, but not under its low ceiling (z 4 to 6); none across the second
+    // gap, wider than the default 4 m links; one-way drops from the third platform to the fourth.
+    const auto first = jumps_across(links, files.level, 0);
+    CHECK(first.size() >= 3);
+    for (const auto& l : first) {
+        CHECK(z_of(l.at("start")) < 4.0f);
+        CHECK(z_of(l.at("end")) < 4.0f);
+        CHECK(l.at("bidirectional") == true);
+    }
+    CHECK(jumps_across(links, files.level, 1).empty());
+    size_t onto_last = 0;
+    const auto& p2 = files.level.boxes[2];
+    const auto& p3 = files.level.boxes[3];
+    for (const auto& l : links.at("links")) {
+        if (l.at("kind") != "drop") continue;
+        const bool from_p2 =
+            x_of(l.at("start")) < p2.max[0] && std::fabs(l.at("start").at(1).get<float>() - p2.max[1]) < 0.5f;
+        const bool onto_p3 =
+            x_of(l.at("end")) > p3.min[0] && std::fabs(l.at("end").at(1).get<float>() - p3.max[1]) < 0.5f;
+        if (from_p2 && onto_p3) {
+            ++onto_last;
+            CHECK(l.at("bidirectional") == false);  // 2 m and more: too high to jump back up
+        }
+    }
+    CHECK(onto_last >= 3);
+}
+
+TEST_CASE("navlink bake reads settings and agent files: longer links jump the second gap, except past its wall") {
+    GeneratedLevelFiles files("bake_settings");
+    nl::test::write_file(files.dir + "/long.json", R"({"max_link_distance": 6.5, "recast": {"cell_size": 0.25}})");
+    const ProgramRun run = navlink({"bake", "level.obj", "--settings", "long.json", "--out", "links.json"}, files.dir);
+    REQUIRE_MESSAGE(run.exit_code == 0, run.err);
+    const json links = nl::test::parse_json_file(files.dir + "/links.json");
+    const auto second = jumps_across(links, files.level, 1);
+    CHECK(!second.empty());
+    for (const auto& l : second) {  // the wall stands at the far side for z in [0, 2]
+        CHECK(z_of(l.at("start")) > 2.0f);
+        CHECK(z_of(l.at("end")) > 2.0f);
+    }
+
+    // A thinner body: its navmesh reaches closer to the rims, so the same gap is a shorter jump.
+    write_agent(files.dir + "/thin.json", R"({"name": "thin", "radius": 0.3})");
+    REQUIRE(navlink({"bake", "level.obj", "--agent", "thin.json", "--out", "thin.json.links"}, files.dir).exit_code ==
+            0);
+    REQUIRE(navlink({"bake", "level.obj", "--out", "default.links"}, files.dir).exit_code == 0);
+    auto shortest_gap = [&](const std::string& file) {
+        float best = 1e9f;
+        for (const auto& l : jumps_across(nl::test::parse_json_file(files.dir + "/" + file), files.level, 0))
+            best = std::min(best, l.at("requires").at("gap").get<float>());
+        return best;
+    };
+    CHECK(shortest_gap("thin.json.links") < shortest_gap("default.links") - 0.3f);
+}
+
+TEST_CASE("navlink bake and path with a navmesh handed over as OBJ (--navmesh)") {
+    GeneratedLevelFiles files("host_navmesh");
+    // The host's navmesh: one quad on each of the first two platforms, 0.6 m inside their rims, as an
+    // engine would export it (Y up, counter-clockwise seen from above).
+    std::string obj;
+    for (int b = 0; b < 2; ++b) {
+        const auto& box = files.level.boxes[b];
+        const float x0 = box.min[0] + 0.6f, x1 = box.max[0] - 0.6f, z0 = box.min[2] + 0.6f, z1 = box.max[2] - 0.6f;
+        const float y = box.max[1];
+        for (const auto& [x, z] : {std::pair{x0, z0}, std::pair{x0, z1}, std::pair{x1, z1}, std::pair{x1, z0}})
+            obj += "v " + std::to_string(x) + " " + std::to_string(y) + " " + std::to_string(z) + "\n";
+    }
+    obj += "f 1 2 3 4\nf 5 6 7 8\n";
+    nl::test::write_file(files.dir + "/nav.obj", obj);
+    const ProgramRun bake = navlink({"bake", "level.obj", "--navmesh", "nav.obj", "--out", "links.json"}, files.dir);
+    REQUIRE_MESSAGE(bake.exit_code == 0, bake.err);
+    CHECK(bake.out.find("navmesh: 2 polygons, 8 boundary edges (nav.obj)") != std::string::npos);
+    const json links = nl::test::parse_json_file(files.dir + "/links.json");
+    CHECK(!jumps_across(links, files.level, 0).empty());
+
+    // From one quad to the other: the only way is a jump.
+    const auto& p0 = files.level.boxes[0];
+    const auto& p1 = files.level.boxes[1];
+    const std::string from = std::to_string(p0.min[0] + 2.0f) + ",0,2", to = std::to_string(p1.max[0] - 2.0f) + ",0,2";
+    const ProgramRun path = navlink(
+        {"path", "level.obj", "--navmesh", "nav.obj", "--links", "links.json", "--from", from, "--to", to, "--json"},
+        files.dir);
+    REQUIRE_MESSAGE(path.exit_code == 0, path.err);
+    const json result = json::parse(path.out);
+    CHECK(result.at("outcome") == "complete");
+    CHECK(result.at("links_used") == 1);
+}
+
+TEST_CASE("navlink path --json: each demo agent's route is complete, continuous and within its body's reach") {
+    GeneratedLevelFiles files("path");
+    nl::test::write_file(files.dir + "/gen.json", R"({"max_link_distance": 6.5})");
+    REQUIRE(navlink({"bake", "level.obj", "--settings", "gen.json", "--out", "links.json"}, files.dir).exit_code == 0);
+    const json links = nl::test::parse_json_file(files.dir + "/links.json").at("links");
+    write_agent(files.dir + "/walker.json",
+                R"({"name": "walker", "max_jump_distance": 0, "max_jump_height": 0, "max_drop_height": 0})");
+    write_agent(files.dir + "/short.json",
+                R"({"max_jump_distance": 3.8, "max_jump_height": 1.0, "max_drop_height": 0})");
+    write_agent(files.dir + "/long.json", R"({"max_jump_distance": 6, "max_jump_height": 1.5, "max_drop_height": 4})");
+    const std::string from = "2,0,3", to = "33.91,-1.03,3.5";  // the level's start and goal markers
+
+    std::map<std::string, json> paths;
+    for (const std::string agent : {"walker", "short", "long"}) {
+        INFO(agent);
+        const ProgramRun run = navlink({"path", "level.obj", "--links", "links.json", "--from", from, "--to", to,
+                                        "--agent", agent + ".json", "--json"},
+                                       files.dir);
+        REQUIRE_MESSAGE(run.exit_code == 0, run.err);
+        const json path = json::parse(run.out);
+        CHECK(path.at("outcome") == "complete");
+        const auto& segments = path.at("segments");
+        REQUIRE(!segments.empty());
+        CHECK(segments.size() + 1 == path.at("points").size());
+        float sum = 0.0f;
+        for (size_t i = 0; i < segments.size(); ++i) {
+            const auto& s = segments[i];
+            sum += s.at("length").get<float>();
+            if (i > 0) CHECK(s.at("from") == segments[i - 1].at("to"));  // no holes between segments
+            if (s.at("kind") == "walk") continue;
+            const long index = s.at("link").get<long>();
+            REQUIRE(index >= 0);
+            REQUIRE(index < static_cast<long>(links.size()));
+            const json& link = links[static_cast<size_t>(index)];
+            // A drop climbed back up is travelled as a jump; otherwise the segment is the link's kind.
+            CHECK((s.at("kind") == link.at("kind") || (s.at("kind") == "jump" && s.at("reversed") == true)));
+        }
+        CHECK(sum == doctest::Approx(path.at("length").get<float>()).epsilon(0.01));
+        CHECK(segments.front().at("from").at(0).get<float>() == doctest::Approx(2.0f).epsilon(0.05));
+        paths[agent] = path;
+    }
+    auto segments_of = [&](const std::string& agent, const char* kind) {
+        std::vector<json> out;
+        for (const auto& s : paths[agent].at("segments"))
+            if (s.at("kind") == kind) out.push_back(s);
+        return out;
+    };
+    CHECK(paths["walker"].at("links_used") == 0);
+    CHECK(segments_of("short", "drop").empty());
+    CHECK(!segments_of("short", "jump").empty());
+    for (const auto& s : segments_of("short", "jump"))
+        CHECK(links[s.at("link").get<size_t>()].at("requires").at("gap").get<float>() <= 3.8f);
+    CHECK(!segments_of("long", "drop").empty());
+    bool long_jump = false;
+    for (const auto& s : segments_of("long", "jump"))
+        long_jump = long_jump || links[s.at("link").get<size_t>()].at("requires").at("gap").get<float>() > 3.8f;
+    CHECK(long_jump);  // a jump the short jumper could not make
+    CHECK(paths["walker"].at("length").get<float>() > paths["short"].at("length").get<float>());
+    CHECK(paths["short"].at("length").get<float>() > paths["long"].at("length").get<float>());
+
+    // The text form says the same, and names the links taken.
+    const ProgramRun text = navlink({"path", "level.obj", "--links", "links.json", "--from", from, "--to", to,
+                                     "--agent", "long.json", "--png", "path.png"},
+                                    files.dir);
+    CHECK(text.exit_code == 0);
+    CHECK(text.out.find("path: complete") != std::string::npos);
+    CHECK(text.out.find("drop   #") != std::string::npos);
+    CHECK(nl::test::is_png(files.dir + "/path.png", 1600));
+}
+
+TEST_CASE("navlink path exits 1 when the goal cannot be reached, and says why") {
+    GeneratedLevelFiles files("path_unreachable");
+    REQUIRE(navlink({"bake", "level.obj", "--out", "links.json"}, files.dir).exit_code == 0);
+    nl::test::write_file(files.dir + "/walker.json",
+                         R"({"max_jump_distance": 0, "max_drop_height": 0, "max_jump_height": 0})");
+    // The third platform: reached only by the long jump, so a walker gets as near as it can.
+    const auto& p2 = files.level.boxes[2];
+    const std::string on_p2 = std::to_string(0.5f * (p2.min[0] + p2.max[0])) + "," + std::to_string(p2.max[1]) + ",3";
+    ProgramRun run = navlink({"path", "level.obj", "--links", "links.json", "--from", "2,0,3", "--to", on_p2, "--agent",
+                              "walker.json", "--json"},
+                             files.dir);
+    CHECK(run.exit_code == 1);
+    CHECK(json::parse(run.out).at("outcome") == "partial");
+    run = navlink({"path", "level.obj", "--links", "links.json", "--from", "2,0,3", "--to", "500,0,500", "--json"},
+                  files.dir);
+    CHECK(run.exit_code == 1);
+    CHECK(json::parse(run.out).at("outcome") == "goal off navmesh");
+}
+
+TEST_CASE("navlink demo prints a route for each of its three agents and writes its picture and links") {
+    const std::string dir = nl::test::scratch_dir("demo");
+    const ProgramRun run = navlink({"demo"}, dir);
+    REQUIRE_MESSAGE(run.exit_code == 0, run.err);
+    std::smatch m;
+    for (const char* agent : {"walker", "short jumper", "long jumper"}) {
+        INFO(agent);
+        REQUIRE(std::regex_search(run.out, m,
+                                  std::regex(std::string("\n") + agent + R"( .*\| complete +[0-9.]+ m +(.*))")));
+    }
+    CHECK(std::regex_search(run.out, std::regex(R"(\nwalker .*no links +walk [0-9.]+\n)")));  // walks all the way
+    CHECK(std::regex_search(run.out, std::regex(R"(\nlong jumper .*\d+ jumps?, 1 drop)")));
+    CHECK(nl::test::is_png(dir + "/demo.png", 1600));
+    const json links = nl::test::parse_json_file(dir + "/demo.links.json");
+    CHECK(nl::test::count_kinds(links).jump > 0);
+    CHECK(navlink({"demo", "--seed", "2", "--out-dir", dir, "--oblique"}, dir).exit_code == 0);  // another level
+}
+
+TEST_CASE("navlink --help and COMMAND --help describe the tool and exit 0") {
+    const std::string dir = nl::test::scratch_dir("help");
+    const ProgramRun main_help = navlink({"--help"}, dir);
+    CHECK(main_help.exit_code == 0);
+    for (const char* command : {"demo", "bake", "path", "level"}) {
+        CHECK(main_help.out.find(std::string("  ") + command) != std::string::npos);
+        const ProgramRun help = navlink({command, "--help"}, dir);
+        CHECK(help.exit_code == 0);
+        CHECK(help.out.rfind(std::string("usage: navlink ") + command, 0) == 0);
+    }
+}
