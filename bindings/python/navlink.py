@@ -81,7 +81,8 @@ class Version(Structure):
 
 class WorldDef(Structure):
     _fields_ = [("size", c_uint32), ("worker_count", c_int32), ("log_fn", LogFn), ("log_user", c_void_p),
-                ("log_level", c_uint32), ("path_worker_count", c_int32)]
+                ("log_level", c_uint32), ("reserved", c_uint32),
+                ("path_worker_count", c_int32)]
 
 
 class _Id(Structure):

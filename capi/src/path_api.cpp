@@ -70,6 +70,9 @@ Request read_request(nl_world& w, const nl_path_request_def* in) {
     r.query = read_query(r.def);
     const nl::Handle navmesh = to_handle(r.def.navmesh);
     r.graph = w.path_graphs->get(navmesh, w.navmeshes->get(navmesh), w.links->snapshot(navmesh));
+    // nl_navmesh_remove removes the navmesh, then its cached graph: if it ran while this graph was
+    // being built, the graph may have been cached after that; drop it, or it stays till the end.
+    if (!w.navmeshes->contains(navmesh)) w.path_graphs->forget(navmesh);
     return r;
 }
 

@@ -71,7 +71,12 @@ NL_API nl_status nl_world_create(const nl_world_def* def, nl_world** out_world) 
 }
 
 NL_API void nl_world_destroy(nl_world* world) {
-    guarded("nl_world_destroy", nullptr, [&] { delete world; });
+    guarded("nl_world_destroy", nullptr, [&] {
+        if (!world) return;
+        // First, with the world whole: callbacks of the requests it ends may still call into it.
+        if (world->paths) world->paths->shutdown();
+        delete world;
+    });
 }
 
 NL_API int32_t nl_world_get_worker_count(const nl_world* world) {

@@ -60,8 +60,11 @@ public:
         sift_up(static_cast<uint32_t>(heap_.size() - 1));
     }
 
-    // After p's f went down.
-    void decreased(uint32_t p) { sift_up(nodes_[p].heap); }
+    // After p's f changed (a lower cost through an entry point farther from the goal can raise it).
+    void changed(uint32_t p) {
+        sift_up(nodes_[p].heap);
+        sift_down(nodes_[p].heap);
+    }
 
     uint32_t pop() {
         const uint32_t top = heap_[0];
@@ -147,10 +150,20 @@ bool crosses(const Vec3& a, const Vec3& b, const PortalSpan& span) {
            along_segment <= denominator;
 }
 
+// The cheapest cost per metre this agent can meet, so that the heuristic stays below any real cost:
+// the area costs it was given and the cost modifiers of the links its body can take.
 float heuristic_scale(const PathGraph& graph, const PathQuery& query) {
-    float scale = std::min(1.0f, graph.cheapest_link_per_metre());
+    float scale = 1.0f;
     for (float cost : query.area_costs) {
         if (cost > 0.0f) scale = std::min(scale, cost);
+    }
+    if (graph.cheapest_link_per_metre() < scale) {
+        for (const StoredLink& stored : *graph.links_ptr()) {
+            const Link& l = stored.link;
+            if (l.enabled && l.cost_modifier < scale &&
+                (can_take(l, false, query.agent) || (l.bidirectional && can_take(l, true, query.agent))))
+                scale = l.cost_modifier;
+        }
     }
     return scale;
 }
@@ -171,9 +184,9 @@ void find_corridor(const PathGraph& graph, const PathQuery& query, const NavPoin
     result.steps.clear();
     result.reached_goal = result.out_of_nodes = result.cancelled = false;
     result.nodes_visited = 0;
-    uint32_t best = start.polygon;  // nearest to the goal so far, for a partial path
-    float best_distance = (goal_point - start.point).norm();
 
+    float nearest_entry = std::numeric_limits<float>::infinity();  // bounds a partial path's end
+    uint32_t nearest_entry_polygon = start.polygon;
     auto relax = [&](uint32_t q, uint32_t parent, uint32_t entry, const Vec3& position, float g,
                      const PortalSpan* span) __attribute__((always_inline)) {
         SearchNode& n = nodes[q];
@@ -195,14 +208,11 @@ void find_corridor(const PathGraph& graph, const PathQuery& query, const NavPoin
         n.entry = entry;
         const float distance = (goal_point - position).norm();
         n.f = q == goal.polygon ? g : g + distance * h_scale;
-        if (distance < best_distance) {
-            best_distance = distance;
-            best = q;
-        }
+        if (distance < nearest_entry) nearest_entry = distance, nearest_entry_polygon = q;
         if (n.heap == kNone) {
             open.push(q);
         } else {
-            open.decreased(q);
+            open.changed(q);
         }
     };
 
@@ -261,7 +271,9 @@ void find_corridor(const PathGraph& graph, const PathQuery& query, const NavPoin
             if (!portal_span(mesh, p, k, margin, span)) continue;
             const Vec3 crossing = crossing_point(span, line);
             float g = g_here + (crossing - here).norm() * cost_here;
-            g = std::min(g, straightened_cost(p, crossing, cost_here));
+            // Never below the cost here: a child cheaper than its parent could later become its
+            // parent's parent, and the chain back to the start would loop.
+            g = std::max(g_here, std::min(g, straightened_cost(p, crossing, cost_here)));
             if (q == goal.polygon) g += (goal_point - crossing).norm() * cost_there;
             relax(q, p, k, crossing, g, &span);
         }
@@ -280,10 +292,13 @@ void find_corridor(const PathGraph& graph, const PathQuery& query, const NavPoin
         }
     }
 
-    const uint32_t last = result.reached_goal ? goal.polygon : best;
+    // A partial path ends on the polygon whose entry point came nearest to the goal, as Detour's
+    // does: scanning every reached polygon for its nearest point costs partial searches a tenth more.
+    const uint32_t last = result.reached_goal ? goal.polygon : nearest_entry_polygon;
     result.cost = nodes[last].g;
     result.last_position = nodes[last].position;
-    // Parents form a chain of strictly falling costs back to the start; the bound only guards that.
+    // Costs never rise along a parent chain and a node only changes parent for a strictly lower cost,
+    // so the chain leads back to the start; the bound only guards that.
     for (uint32_t p = last, guard = 0; p != kNone; p = nodes[p].parent) {
         if (++guard > result.nodes_visited + 1) fail(ErrorCode::Internal, "path search: corridor does not lead back to the start");
         result.steps.push_back(CorridorStep{p, nodes[p].entry});

@@ -38,10 +38,14 @@ PathQueue::PathQueue(uint32_t handle_tag, unsigned workers) : tickets_(handle_ta
     }
 }
 
-PathQueue::~PathQueue() {
+void PathQueue::shutdown() {
     {
         std::lock_guard lock(mutex_);
+        if (stopping_) return;
         stopping_ = true;
+        tickets_.for_each([](Handle, const Ticket& t) {
+            if (t.running) t.job->cancel.store(true, std::memory_order_relaxed);
+        });
     }
     wake_.notify_all();
     for (std::thread& worker : workers_) worker.join();
@@ -56,6 +60,8 @@ PathQueue::~PathQueue() {
     }
 }
 
+PathQueue::~PathQueue() { shutdown(); }
+
 Handle PathQueue::submit(std::shared_ptr<const PathGraph> graph, PathQuery query, PathCallback callback) {
     auto job = std::make_shared<Job>();
     job->graph = std::move(graph);
@@ -64,6 +70,8 @@ Handle PathQueue::submit(std::shared_ptr<const PathGraph> graph, PathQuery query
     Handle h;
     {
         std::lock_guard lock(mutex_);
+        // A callback answering the shutdown's cancellations with new requests would never end it.
+        if (stopping_) fail(ErrorCode::Cancelled, "the world is being destroyed");
         h = tickets_.insert(Ticket{std::move(job), PathResult{}, false, false});
         try {
             queue_.push_back(h);
@@ -80,7 +88,7 @@ Handle PathQueue::submit(std::shared_ptr<const PathGraph> graph, PathQuery query
 
 PathQueue::Ticket& PathQueue::find(Handle ticket) {
     Ticket* found = tickets_.find(ticket);
-    if (!found) fail_stale("path ticket", ticket);
+    if (!found || found->released) fail_stale("path ticket", ticket);
     return *found;
 }
 
@@ -121,6 +129,7 @@ void PathQueue::release(Handle ticket) {
     t.released = true;  // the ticket goes when the request finishes
     if (t.running) {
         t.job->cancel.store(true, std::memory_order_relaxed);
+        ++released_running_;
         return;
     }
     --queued_;
@@ -169,15 +178,20 @@ void PathQueue::finish(std::unique_lock<std::mutex>& lock, Handle h, PathResult 
     Ticket& ticket = *tickets_.find(h);  // unfinished tickets are never erased
     const PathOutcome outcome = result.outcome;
     const PathCallback callback = std::move(ticket.job->callback);
-    ticket.running = false;
     ticket.result = std::move(result);
     ticket.job.reset();  // lets go of the snapshot now, not at release
-    if (ticket.released) tickets_.erase(h);
-    ++finished_;
-    if (!callback) return;
-    lock.unlock();
-    callback(h, outcome);
-    lock.lock();
+    if (ticket.released) {
+        if (ticket.running) --released_running_;
+        tickets_.erase(h);
+    } else {
+        ticket.running = false;
+    }
+    if (callback) {
+        lock.unlock();
+        callback(h, outcome);
+        lock.lock();
+    }
+    ++finished_;  // after the callback: a host that waits for `finished` may free what it reads
 }
 
 uint32_t PathQueue::process(uint32_t max_requests, double max_milliseconds) {
@@ -189,7 +203,8 @@ uint32_t PathQueue::process(uint32_t max_requests, double max_milliseconds) {
     };
     std::unique_lock lock(mutex_);
     uint32_t done = 0;
-    while ((max_requests == 0 || done < max_requests) && !out_of_time() && run_next(lock)) ++done;
+    // The budget is checked between requests: each call plans at least one.
+    while ((max_requests == 0 || done < max_requests) && (done == 0 || !out_of_time()) && run_next(lock)) ++done;
     return done;
 }
 
@@ -199,7 +214,7 @@ PathQueueStats PathQueue::stats() const {
     s.workers = static_cast<uint32_t>(workers_.size());
     s.queued = queued_;
     s.running = running_;
-    s.unreleased = tickets_.size();
+    s.unreleased = tickets_.size() - released_running_;
     s.submitted = submitted_;
     s.finished = finished_;
     return s;

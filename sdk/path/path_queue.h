@@ -36,14 +36,18 @@ class PathQueue {
 public:
     // `workers` threads plan requests; with 0 only process() does.
     PathQueue(uint32_t handle_tag, unsigned workers);
-    // Stops the workers after their current request; requests still queued finish as Cancelled.
+    // Stops the workers after their current request (running ones are asked to stop); requests still
+    // queued finish as Cancelled; later submissions are refused. Callbacks may still call the queue
+    // while this runs. Idempotent; the destructor calls it.
+    void shutdown();
     ~PathQueue();
     PathQueue(const PathQueue&) = delete;
     PathQueue& operator=(const PathQueue&) = delete;
 
+    // Throws Cancelled once shut down.
     Handle submit(std::shared_ptr<const PathGraph> graph, PathQuery query, PathCallback callback);
 
-    // Throw InvalidHandle for an unknown ticket.
+    // Throw InvalidHandle for an unknown or released ticket.
     PathOutcome poll(Handle ticket) const;
     // Calls `read` with the result under the queue's lock and returns true, or returns false while
     // the request is pending.
@@ -86,7 +90,8 @@ private:
     uint32_t queued_ = 0;
     uint32_t running_ = 0;
     uint64_t submitted_ = 0;
-    uint64_t finished_ = 0;
+    uint64_t finished_ = 0;   // callbacks returned too
+    uint32_t released_running_ = 0;  // released tickets kept until their request finishes
     bool stopping_ = false;
     std::vector<std::thread> workers_;
 };

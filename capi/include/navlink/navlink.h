@@ -131,6 +131,8 @@ typedef struct nl_world_def {
     void* log_user;          /**< Passed back to log_fn as `user`; borrowed, never dereferenced. */
     nl_log_level log_level;  /**< Most verbose level passed to log_fn. Default NL_LOG_WARNING: errors,
                                   and warnings such as repaired input (skipped degenerate triangles). */
+    uint32_t reserved;       /**< Ignored. (It fills what was padding in the first version, so that
+                                  fields added later lie past the size hosts of that version pass.) */
     int32_t path_worker_count; /**< Threads that plan queued path requests (nl_path_request), apart
                                     from batch work. NL_WORKERS_AUTO (default): one per hardware
                                     thread; 0: no threads, the host runs the queue with
@@ -143,11 +145,13 @@ NL_API nl_world_def nl_default_world_def(void);
 /** Creates a world. `def` is borrowed (NULL means all defaults); `*out_world` receives the new world,
  *  owned by the caller until nl_world_destroy.
  *  Returns NL_STATUS_SUCCESS, or a failure with INVALID_ARGUMENT (null out_world, size of def too
- *  small, worker_count < -1), OUT_OF_MEMORY or INTERNAL_ERROR (Embree could not start).
- *  Thread-safe. */
+ *  small, worker_count or path_worker_count < -1), OUT_OF_MEMORY or INTERNAL_ERROR (Embree could not
+ *  start). Thread-safe. */
 NL_API nl_status nl_world_create(const nl_world_def* def, nl_world** out_world);
 
 /** Destroys a world and everything it owns; every id from it becomes invalid. NULL is ignored.
+ *  Queued path requests first finish as NL_PATH_CANCELLED (their callbacks run, on this thread, and
+ *  may still use the world's path functions); running ones are asked to stop and waited for.
  *  Must not run at the same time as any other call on this world. */
 NL_API void nl_world_destroy(nl_world* world);
 
@@ -743,7 +747,9 @@ typedef struct nl_agent_capabilities {
     float radius;            /**< Body radius, metres (default 0.6). Where it exceeds the radius the
                                   navmesh was built for (nl_agent_type.radius), the path keeps the
                                   difference away from the navmesh's outline, and portals that leave
-                                  less room are not crossed. */
+                                  less room are not crossed. The room is measured along each portal:
+                                  right for Recast's polygons, generous for long thin triangles laid
+                                  across a corridor (a triangle soup), which can let a wider body by. */
     uint64_t abilities;      /**< Ability bits the agent has (default 0), for plugin link kinds. */
 } nl_agent_capabilities;
 
@@ -758,7 +764,8 @@ typedef uint32_t nl_path_outcome;
 #define NL_PATH_PENDING 0u            /**< Queued or being planned. */
 #define NL_PATH_COMPLETE 1u           /**< The path reaches the goal. */
 #define NL_PATH_PARTIAL 2u            /**< The goal is out of reach (or max_nodes ran out); the path
-                                           leads to the reachable point nearest to it. */
+                                           leads towards it, as Detour's: to the point nearest the goal
+                                           of the polygon whose entry the search found nearest to it. */
 #define NL_PATH_NO_PATH 3u            /**< The goal is out of reach and accept_partial was 0. */
 #define NL_PATH_START_OFF_NAVMESH 4u  /**< No polygon within search_half_extents of the start. */
 #define NL_PATH_GOAL_OFF_NAVMESH 5u   /**< No polygon within search_half_extents of the goal. */
@@ -768,10 +775,14 @@ typedef uint32_t nl_path_outcome;
                                            result's `status` says why. */
 
 /** Called exactly once when a queued request finishes (nl_path_outcome says how), from the thread
- *  that finished it: a NavLink path worker, the thread in nl_path_process, the thread that cancelled a
- *  request that had not started, or the thread destroying the world. It may call nl_path_poll,
- *  nl_path_get_result and nl_path_release for `ticket`, and submit new requests; it must be quick
- *  (it holds up a worker) and must not destroy the world. */
+ *  that finished it: a NavLink path worker, the thread in nl_path_process, the thread that cancelled
+ *  or released a request that had not started, or the thread destroying the world. It can run before
+ *  nl_path_request has returned the ticket. It may call nl_path_poll, nl_path_get_result and
+ *  nl_path_release for `ticket` (unless the ticket was released: then it is already invalid), and
+ *  submit new requests (refused with CANCELLED while the world is being destroyed); it must be quick
+ *  (it holds up a worker), must not call nl_path_process, and must not destroy the world. nl_path_poll
+ *  may report the outcome a moment before the callback runs: keep `user` alive until the callback has
+ *  returned (nl_path_queue_stats.finished counts a request once its callback has returned). */
 typedef void nl_path_callback(void* user, nl_path_ticket ticket, nl_path_outcome outcome);
 
 /** One path request. Get one from nl_default_path_request_def(). */
@@ -791,7 +802,7 @@ typedef struct nl_path_request_def {
                                         A link costs its length times its cost_modifier, plus this. */
     uint32_t max_nodes;            /**< Most polygons the search may visit; 0 (default): no limit. */
     uint8_t accept_partial;        /**< 1 (default): when the goal cannot be reached, the path leads
-                                        to the reachable point nearest to it (NL_PATH_PARTIAL);
+                                        as near to it as it can (NL_PATH_PARTIAL);
                                         0: the outcome is NL_PATH_NO_PATH. */
     uint8_t reserved[3];
     nl_path_callback* callback;    /**< Optional, for nl_path_request only. */
@@ -874,12 +885,14 @@ NL_API nl_status nl_path_get_result(const nl_world* world, nl_path_ticket ticket
  *  Returns SUCCESS or INVALID_HANDLE. Thread-safe. */
 NL_API nl_status nl_path_cancel(nl_world* world, nl_path_ticket ticket);
 
-/** Frees a request's result; the ticket becomes invalid. Releasing an unfinished request cancels it;
- *  its callback still runs once. Returns SUCCESS or INVALID_HANDLE. Thread-safe. */
+/** Frees a request's result; the ticket becomes invalid at once. Releasing an unfinished request
+ *  cancels it; its callback still runs once (on this thread if it had not started). Returns SUCCESS
+ *  or INVALID_HANDLE. Thread-safe. */
 NL_API nl_status nl_path_release(nl_world* world, nl_path_ticket ticket);
 
 /** Plans queued requests on the calling thread until the queue is empty, `max_requests` were planned
- *  (0: no limit) or `max_milliseconds` passed (checked between requests; <= 0: no limit). The way a
+ *  (0: no limit) or `max_milliseconds` passed (checked between requests, so at least one request is
+ *  planned if any is queued; <= 0: no limit). The way a
  *  host with path_worker_count 0 runs the queue in its frame; with workers it helps them.
  *  `out_processed` (optional) receives how many requests finished here. Returns SUCCESS or
  *  INVALID_ARGUMENT (NaN budget). Thread-safe. */

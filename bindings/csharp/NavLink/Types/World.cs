@@ -21,6 +21,7 @@ namespace NavLink
         public IntPtr LogFn;
         public IntPtr LogUser;
         public uint LogLevel;
+        public uint Reserved;
         public int PathWorkerCount;
     }
 }

@@ -28,6 +28,7 @@ pub struct nl_world_def {
     pub log_fn: nl_log_fn,
     pub log_user: *mut c_void,
     pub log_level: nl_log_level,
+    pub reserved: u32,
     pub path_worker_count: i32,
 }
 
