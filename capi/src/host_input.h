@@ -1,6 +1,7 @@
 // Reading what the host hands over: ids by value and strided vertex arrays.
 #pragma once
 
+#include <cmath>
 #include <cstring>
 #include <vector>
 
@@ -31,6 +32,14 @@ Vec3 read_position(const float* p, const Name&... name) {
     if (!within_coordinate_limit(v))
         fail(ErrorCode::InvalidArgument, name..., " is beyond the coordinate limit of +-", kCoordinateLimit, " m");
     return v;
+}
+
+// An amount the host passed (a distance, a cost), refused when negative or not finite; `name` parts
+// spell the field for the message.
+template <typename... Name>
+float read_amount(float value, const Name&... name) {
+    if (!(value >= 0.0f) || !std::isfinite(value)) fail(ErrorCode::InvalidArgument, name..., " is ", value, " (must be finite and >= 0)");
+    return value;
 }
 
 // Copies `count` positions that start every `stride` bytes (0 = packed). The host's stride need not

@@ -113,13 +113,11 @@ nl::Link link_from_def(const nl_link_def& in, const nl::NavMesh& mesh) {
     if (kind != nl::LinkKind::Jump && kind != nl::LinkKind::Drop && kind != nl::LinkKind::Manual &&
         def.kind < NL_LINK_FIRST_PLUGIN_KIND)
         fail(ErrorCode::InvalidArgument, "def->kind is ", def.kind, " (NL_LINK_* or a plugin kind >= 256)");
-    if (!(def.cost_modifier >= 0.0f) || !std::isfinite(def.cost_modifier))
-        fail(ErrorCode::InvalidArgument, "def->cost_modifier is ", def.cost_modifier, " (must be finite and >= 0)");
+    nl::capi::read_amount(def.cost_modifier, "def->cost_modifier");
     const nl_link_requirements& r = def.requirements;
     for (const auto& [value, name] : {std::pair{r.gap, "gap"}, std::pair{r.rise, "rise"}, std::pair{r.drop, "drop"},
                                       std::pair{r.clearance_width, "clearance_width"}})
-        if (!(value >= 0.0f) || !std::isfinite(value))
-            fail(ErrorCode::InvalidArgument, "def->requirements.", name, " is ", value, " (must be finite and >= 0)");
+        nl::capi::read_amount(value, "def->requirements.", name);
 
     nl::Link l;
     l.kind = kind;

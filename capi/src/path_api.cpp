@@ -11,6 +11,7 @@ using nl::ErrorCode;
 using nl::fail;
 using nl::capi::deref;
 using nl::capi::guarded;
+using nl::capi::read_amount;
 using nl::capi::require;
 using nl::capi::to_handle;
 using nl::capi::to_id;
@@ -25,11 +26,6 @@ constexpr uint32_t kMaxAreaCosts = 256;
 static_assert(uint32_t(nl::PathOutcome::Failed) == NL_PATH_FAILED && uint32_t(nl::PathOutcome::Partial) == NL_PATH_PARTIAL,
               "core and header disagree on path outcomes");
 
-float read_amount(float value, const char* name) {
-    if (!std::isfinite(value) || value < 0.0f) fail(ErrorCode::InvalidArgument, "def->", name, " is ", value, " (finite, >= 0)");
-    return value;
-}
-
 nl::PathQuery read_query(const nl_path_request_def& def) {
     nl::PathQuery q;
     q.start = nl::capi::read_position(def.start, "def->start");
@@ -37,20 +33,17 @@ nl::PathQuery read_query(const nl_path_request_def& def) {
     q.search_half_extents = nl::capi::read_position(def.search_half_extents, "def->search_half_extents");
     if (!(q.search_half_extents.array() > 0.0f).all())
         fail(ErrorCode::InvalidArgument, "def->search_half_extents must be > 0 in each axis");
-    q.agent.max_jump_distance = read_amount(def.agent.max_jump_distance, "agent.max_jump_distance");
-    q.agent.max_jump_height = read_amount(def.agent.max_jump_height, "agent.max_jump_height");
-    q.agent.max_drop_height = read_amount(def.agent.max_drop_height, "agent.max_drop_height");
-    q.agent.radius = read_amount(def.agent.radius, "agent.radius");
+    q.agent.max_jump_distance = read_amount(def.agent.max_jump_distance, "def->agent.max_jump_distance");
+    q.agent.max_jump_height = read_amount(def.agent.max_jump_height, "def->agent.max_jump_height");
+    q.agent.max_drop_height = read_amount(def.agent.max_drop_height, "def->agent.max_drop_height");
+    q.agent.radius = read_amount(def.agent.radius, "def->agent.radius");
     q.agent.abilities = def.agent.abilities;
     if (def.area_cost_count > kMaxAreaCosts)
         fail(ErrorCode::InvalidArgument, "def->area_cost_count is ", def.area_cost_count, " (at most ", kMaxAreaCosts, ")");
     if (def.area_cost_count > 0) require(def.area_costs, "def->area_costs");
+    for (uint32_t i = 0; i < def.area_cost_count; ++i) read_amount(def.area_costs[i], "def->area_costs[", i, "]");
     q.area_costs.assign(def.area_costs, def.area_costs + def.area_cost_count);
-    for (uint32_t i = 0; i < def.area_cost_count; ++i) {
-        if (!std::isfinite(q.area_costs[i]) || q.area_costs[i] < 0.0f)
-            fail(ErrorCode::InvalidArgument, "def->area_costs[", i, "] is ", q.area_costs[i], " (finite, >= 0)");
-    }
-    q.link_cost = read_amount(def.link_cost, "link_cost");
+    q.link_cost = read_amount(def.link_cost, "def->link_cost");
     q.max_nodes = def.max_nodes;
     q.accept_partial = def.accept_partial != 0;
     return q;
