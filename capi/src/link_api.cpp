@@ -365,7 +365,7 @@ NL_API nl_status nl_navmesh_generate_links(nl_world* world, nl_navmesh_id navmes
                                             ? std::string(settings->plugin_settings_json, settings->plugin_settings_json_length)
                                             : std::string();
         const nlohmann::json plugin_settings = plugin_settings_of(plugin_json);
-        auto bake = std::make_shared<nl::LinkBake>(mesh, s, nl::CandidateSearch::SpatialGrid);
+        auto bake = std::make_shared<nl::LinkBake>(mesh, s, nl::BakeMethod::Indexed);
         const auto serializer = w.bakes->serializer(handle);
         std::lock_guard one_at_a_time(*serializer);
         nl::BakeReport report;

@@ -14,6 +14,7 @@
 
 #include "level/geometry.h"
 #include "level/mesh_validation.h"
+#include "level/oriented_box.h"
 #include "util/handle.h"
 #include "util/shared_mutex.h"
 #include "util/task_system.h"
@@ -81,6 +82,10 @@ public:
     // Batched queries, parallel over the task system; out spans must have rays.size() entries.
     void cast_rays(const Ray* rays, uint32_t count, RayHit* out) const;
     void segments_blocked(const Segment* segments, uint32_t count, uint8_t* out_blocked) const;
+    // out_empty[i] = 1 when no triangle shares a point with boxes[i]: then no segment inside the box
+    // is blocked, and the caller need not cast them (pad the box for rounding). Exact per triangle;
+    // Embree's point queries find the triangles near each box.
+    void boxes_empty(const OrientedBox* boxes, uint32_t count, uint8_t* out_empty) const;
 
 private:
     struct Mesh {

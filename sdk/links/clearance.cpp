@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
+#include <limits>
 
 namespace nl {
 
@@ -23,18 +25,16 @@ JumpArc jump_arc(const Vec3& start, const Vec3& end, float apex_above, unsigned 
     return arc;
 }
 
-void append_body_sweep(const std::vector<Vec3>& path, const Body& body, float margin, std::vector<Segment>& out) {
+std::vector<SweepPiece> sweep_pieces(const std::vector<Vec3>& path, const Body& body, float margin) {
+    std::vector<SweepPiece> pieces;
     float total = 0.0f;
     for (size_t i = 1; i < path.size(); ++i) total += (path[i] - path[i - 1]).norm();
-    if (total <= 0.0f) return;
+    if (total <= 0.0f) return pieces;
     const float keep_from = margin * total, keep_to = (1.0f - margin) * total;
     // One sideways direction for the whole path: its horizontal heading.
     Vec3 heading = path.back() - path.front();
     heading.y() = 0.0f;
     const Vec3 side = heading.norm() > 1e-4f ? Vec3(-heading.z(), 0.0f, heading.x()).normalized() : Vec3::UnitX();
-    const float heights[kSweepHeights] = {std::min(0.3f, 0.25f * body.height), 0.5f * body.height,
-                                          std::max(0.5f * body.height, body.height - 0.1f)};
-
     float walked = 0.0f;
     for (size_t i = 1; i < path.size(); ++i) {
         const Vec3 a = path[i - 1], b = path[i];
@@ -42,16 +42,43 @@ void append_body_sweep(const std::vector<Vec3>& path, const Body& body, float ma
         const float from = std::max(walked, keep_from), to = std::min(walked + length, keep_to);
         walked += length;
         if (to <= from || length <= 0.0f) continue;
-        const Vec3 p = a + (b - a) * ((from - (walked - length)) / length);
-        const Vec3 q = a + (b - a) * ((to - (walked - length)) / length);
-        for (float y : heights) {
-            for (float x : kSweepOffsets) {
-                const Vec3 offset = side * (x * body.radius) + Vec3(0.0f, y, 0.0f);
-                out.push_back(Segment{p + offset, q + offset});
-                out.push_back(Segment{q + offset, p + offset});
-            }
+        SweepPiece piece{a + (b - a) * ((from - (walked - length)) / length), a + (b - a) * ((to - (walked - length)) / length),
+                         side, {std::min(0.3f, 0.25f * body.height), 0.5f * body.height,
+                                std::max(0.5f * body.height, body.height - 0.1f)}};
+        pieces.push_back(piece);
+    }
+    return pieces;
+}
+
+void append_piece_segments(const SweepPiece& piece, float radius, std::vector<Segment>& out) {
+    for (float y : piece.heights) {
+        for (float x : kSweepOffsets) {
+            const Vec3 offset = piece.side * (x * radius) + Vec3(0.0f, y, 0.0f);
+            out.push_back(Segment{piece.from + offset, piece.to + offset});
+            out.push_back(Segment{piece.to + offset, piece.from + offset});
         }
     }
+}
+
+OrientedBox piece_box(const SweepPiece& piece, float radius) {
+    // Axes: along the piece, then the side direction made square to it, then the third.
+    const Vec3 along = (piece.to - piece.from).normalized();
+    Vec3 across = piece.side - piece.side.dot(along) * along;
+    if (across.squaredNorm() < 1e-8f) across = along.unitOrthogonal();
+    across.normalize();
+    Eigen::Matrix3f axes;
+    axes << along, across, along.cross(across);
+    const float wide = *std::max_element(std::begin(kSweepOffsets), std::end(kSweepOffsets)) * radius;
+    const float low = *std::min_element(std::begin(piece.heights), std::end(piece.heights));
+    const float high = *std::max_element(std::begin(piece.heights), std::end(piece.heights));
+    const Vec3 s = piece.side * wide, l(0.0f, low, 0.0f), h(0.0f, high, 0.0f);
+    // A millimetre, and a few float steps at the size of the coordinates.
+    const float magnitude = std::max(piece.from.cwiseAbs().maxCoeff(), piece.to.cwiseAbs().maxCoeff()) + wide + high;
+    const float pad = 1e-3f + 8.0f * std::numeric_limits<float>::epsilon() * magnitude;
+    return box_around(axes,
+                      {piece.from - s + l, piece.from + s + l, piece.from - s + h, piece.from + s + h,
+                       piece.to - s + l, piece.to + s + l, piece.to - s + h, piece.to + s + h},
+                      pad);
 }
 
 }  // namespace nl

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "level/level.h"
+#include "level/oriented_box.h"
 
 namespace nl {
 
@@ -26,10 +27,28 @@ constexpr float kSweepOffsets[] = {0.0f, -1.0f, 1.0f, -1.5f, 1.5f, -2.0f, 2.0f};
 constexpr unsigned kSweepOffsetCount = sizeof(kSweepOffsets) / sizeof(kSweepOffsets[0]);
 constexpr unsigned kSweepHeights = 3;
 
-// Appends the segments that sweep an agent-sized body along `path` (feet on the path), leaving out
-// `margin` of the path's length at each end (take-off and landing touch the floor): three heights
-// (near the feet, the middle, the head) by the kSweepOffsets lines, each in both directions, so that
-// a surface met from either side blocks. Segment k of a piece uses offset (k / 2) % kSweepOffsetCount.
-void append_body_sweep(const std::vector<Vec3>& path, const Body& body, float margin, std::vector<Segment>& out);
+// One straight stretch of a swept path, its share of the margins cut off: the body's lines run from
+// `from` to `to`, each moved sideways by one of kSweepOffsets radii along `side` and up by one of
+// `heights`.
+struct SweepPiece {
+    Vec3 from, to;
+    Vec3 side;  // horizontal, across the path's overall heading
+    float heights[kSweepHeights];
+};
+constexpr unsigned kSegmentsPerPiece = kSweepHeights * kSweepOffsetCount * 2;
+
+// The pieces of an agent-sized body swept along `path` (feet on the path), leaving out `margin` of
+// the path's length at each end (take-off and landing touch the floor): three heights (near the
+// feet, the middle, the head).
+std::vector<SweepPiece> sweep_pieces(const std::vector<Vec3>& path, const Body& body, float margin);
+
+// Appends the piece's kSegmentsPerPiece segments: for each height, for each offset, the line in both
+// directions, so that a surface met from either side blocks. Segment k uses offset
+// (k / 2) % kSweepOffsetCount.
+void append_piece_segments(const SweepPiece& piece, float radius, std::vector<Segment>& out);
+
+// A box that holds every segment of the piece, padded for rounding: when no triangle touches it,
+// none of them is blocked.
+OrientedBox piece_box(const SweepPiece& piece, float radius);
 
 }  // namespace nl

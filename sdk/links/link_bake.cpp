@@ -1,6 +1,7 @@
 #include "links/link_bake.h"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <unordered_set>
@@ -50,10 +51,10 @@ void set_requirements(Link& l) {
 // One bake or update: fills `next` from the old cache and new rays.
 class Baker {
 public:
-    Baker(const NavMesh& mesh, const EdgeSampling& sampling, const LinkSettings& s, CandidateSearch search,
+    Baker(const NavMesh& mesh, const EdgeSampling& sampling, const LinkSettings& s, BakeMethod method,
           const LinkBake::Cache& old, const Aabb* box, const Level& level, TaskSystem& tasks, BakeReport& report,
           BakeProgress progress)
-        : mesh_(mesh), samples_(sampling.samples), s_(s), search_(search), old_(old), box_(box), level_(level),
+        : mesh_(mesh), samples_(sampling.samples), s_(s), method_(method), old_(old), box_(box), level_(level),
           tasks_(tasks), report_(report), progress_(progress), body_{mesh.agent().radius, mesh.agent().height} {}
 
     std::vector<Link> run(LinkBake::Cache& next) {
@@ -161,7 +162,7 @@ private:
     void for_each_nearby_pair(const std::vector<uint32_t>& valid, FunctionRef<void(uint32_t, uint32_t)> visit) const {
         // Never finer than a centimetre: cell keys stay far inside int64 within the coordinate limit.
         const float reach = std::max(2.0f * s_.max_link_distance, 0.01f);
-        if (search_ == CandidateSearch::AllPairs) {
+        if (method_ == BakeMethod::BruteForce) {
             for (size_t x = 0; x < valid.size(); ++x)
                 for (size_t y = x + 1; y < valid.size(); ++y)
                     if ((samples_[valid[x]].point - samples_[valid[y]].point).norm() <= reach) visit(valid[x], valid[y]);
@@ -233,13 +234,14 @@ private:
 
     // Sweeps each path with the agent's body and bodies 1.5 and 2 times as wide, in one occlusion
     // batch: a path is clear if the agent's lines are, and as wide as the widest body whose lines
-    // (and every narrower body's) are.
+    // (and every narrower body's) are. Indexed bakes first ask whether any triangle touches each
+    // piece's box: the segments of an untouched piece are all clear and are not cast.
     std::vector<LinkBake::Sweep> sweep(const std::vector<const std::vector<Vec3>*>& paths) {
         std::vector<LinkBake::Sweep> out(paths.size());
-        std::vector<std::vector<Segment>> per_path(paths.size());
+        std::vector<std::vector<SweepPiece>> pieces(paths.size());
         tasks_.parallel_for(static_cast<uint32_t>(paths.size()), 64, [&](uint32_t begin, uint32_t end) {
             for (uint32_t i = begin; i < end; ++i) {
-                append_body_sweep(*paths[i], body_, s_.clearance_margin, per_path[i]);
+                pieces[i] = sweep_pieces(*paths[i], body_, s_.clearance_margin);
                 Aabb& b = out[i].bounds;
                 for (const Vec3& p : *paths[i]) b.grow(p);
                 const float widest = 2.0f * body_.radius;
@@ -247,24 +249,50 @@ private:
                 b.max += Vec3(widest, body_.height, widest);
             }
         });
-        std::vector<size_t> first(paths.size() + 1, 0);
-        for (size_t i = 0; i < paths.size(); ++i) first[i + 1] = first[i] + per_path[i].size();
-        std::vector<Segment> all(first.back());
-        tasks_.parallel_for(static_cast<uint32_t>(paths.size()), 256, [&](uint32_t begin, uint32_t end) {
-            for (uint32_t i = begin; i < end; ++i) std::copy(per_path[i].begin(), per_path[i].end(), all.begin() + first[i]);
+        std::vector<size_t> first_piece(paths.size() + 1, 0);
+        for (size_t i = 0; i < paths.size(); ++i) first_piece[i + 1] = first_piece[i] + pieces[i].size();
+        const auto piece_count = static_cast<uint32_t>(first_piece.back());
+        std::vector<uint8_t> piece_clear(piece_count, 0);
+        if (method_ == BakeMethod::Indexed) {
+            std::vector<OrientedBox> boxes(piece_count);
+            tasks_.parallel_for(static_cast<uint32_t>(paths.size()), 64, [&](uint32_t begin, uint32_t end) {
+                for (uint32_t i = begin; i < end; ++i)
+                    for (size_t k = 0; k < pieces[i].size(); ++k) boxes[first_piece[i] + k] = piece_box(pieces[i][k], body_.radius);
+            });
+            level_.boxes_empty(boxes.data(), piece_count, piece_clear.data());
+            for (uint8_t clear : piece_clear) report_.clear_boxes += clear;
+        }
+        // The pieces left to cast, kSegmentsPerPiece segments each.
+        std::vector<uint32_t> cast_pieces;
+        for (uint32_t k = 0; k < piece_count; ++k)
+            if (!piece_clear[k]) cast_pieces.push_back(k);
+        std::vector<uint32_t> path_of(piece_count);
+        for (uint32_t i = 0; i < paths.size(); ++i)
+            for (size_t k = first_piece[i]; k < first_piece[i + 1]; ++k) path_of[k] = i;
+        std::vector<Segment> segments(cast_pieces.size() * kSegmentsPerPiece);
+        tasks_.parallel_for(static_cast<uint32_t>(cast_pieces.size()), 256, [&](uint32_t begin, uint32_t end) {
+            std::vector<Segment> piece_segments;
+            for (uint32_t c = begin; c < end; ++c) {
+                const uint32_t k = cast_pieces[c], i = path_of[k];
+                piece_segments.clear();
+                append_piece_segments(pieces[i][k - first_piece[i]], body_.radius, piece_segments);
+                std::copy(piece_segments.begin(), piece_segments.end(), segments.begin() + size_t(c) * kSegmentsPerPiece);
+            }
         });
-        const std::vector<uint8_t> hit = blocked(all);
+        const std::vector<uint8_t> hit = blocked(segments);
+        std::vector<std::array<bool, kSweepOffsetCount>> offset_blocked(paths.size());
+        for (size_t c = 0; c < cast_pieces.size(); ++c)
+            for (unsigned j = 0; j < kSegmentsPerPiece; ++j)
+                if (hit[c * kSegmentsPerPiece + j]) offset_blocked[path_of[cast_pieces[c]]][(j / 2) % kSweepOffsetCount] = true;
         for (size_t i = 0; i < paths.size(); ++i) {
-            bool offset_blocked[kSweepOffsetCount] = {};
-            for (size_t k = first[i]; k < first[i + 1]; ++k)
-                if (hit[k]) offset_blocked[((k - first[i]) / 2) % kSweepOffsetCount] = true;
+            const auto& b = offset_blocked[i];
             // Offsets pair up by width: {0}, {-1, 1}, {-1.5, 1.5}, {-2, 2} radii.
-            if (offset_blocked[0] || offset_blocked[1] || offset_blocked[2]) continue;
+            if (b[0] || b[1] || b[2]) continue;
             out[i].clear = true;
             out[i].width = 2.0f * body_.radius;
-            if (offset_blocked[3] || offset_blocked[4]) continue;
+            if (b[3] || b[4]) continue;
             out[i].width = 3.0f * body_.radius;
-            if (offset_blocked[5] || offset_blocked[6]) continue;
+            if (b[5] || b[6]) continue;
             out[i].width = 4.0f * body_.radius;
         }
         return out;
@@ -525,7 +553,7 @@ private:
     const NavMesh& mesh_;
     const std::vector<EdgeSample>& samples_;
     const LinkSettings& s_;
-    CandidateSearch search_;
+    BakeMethod method_;
     const LinkBake::Cache& old_;
     const Aabb* box_;
     const Level& level_;
@@ -537,8 +565,8 @@ private:
 
 }  // namespace
 
-LinkBake::LinkBake(std::shared_ptr<const NavMesh> navmesh, const LinkSettings& settings, CandidateSearch search)
-    : navmesh_(std::move(navmesh)), settings_(settings), search_(search) {
+LinkBake::LinkBake(std::shared_ptr<const NavMesh> navmesh, const LinkSettings& settings, BakeMethod method)
+    : navmesh_(std::move(navmesh)), settings_(settings), method_(method) {
     validate(settings_, "settings->");
 }
 
@@ -567,7 +595,7 @@ std::vector<Link> LinkBake::bake(const Aabb* box, const Level& level, TaskSystem
     const Cache empty;
     Cache next;
     std::vector<Link> links =
-        Baker(*navmesh_, sampling_, settings_, search_, baked_ ? cache_ : empty, box, level, tasks, report, progress).run(next);
+        Baker(*navmesh_, sampling_, settings_, method_, baked_ ? cache_ : empty, box, level, tasks, report, progress).run(next);
     if (!progress(1.0f, "done")) fail(ErrorCode::Cancelled, "the bake was cancelled at its end");
     cache_ = std::move(next);  // only a bake that finished replaces the cache
     baked_ = true;

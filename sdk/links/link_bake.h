@@ -21,7 +21,7 @@ namespace nl {
 
 class LinkBake {
 public:
-    LinkBake(std::shared_ptr<const NavMesh> navmesh, const LinkSettings& settings, CandidateSearch search);
+    LinkBake(std::shared_ptr<const NavMesh> navmesh, const LinkSettings& settings, BakeMethod method);
 
     // Casts everything.
     std::vector<Link> run(const Level& level, TaskSystem& tasks, BakeReport& report, BakeProgress progress);
@@ -66,7 +66,7 @@ private:
 
     std::shared_ptr<const NavMesh> navmesh_;
     LinkSettings settings_;
-    CandidateSearch search_;
+    BakeMethod method_;
     EdgeSampling sampling_;
     Cache cache_;
     bool baked_ = false;

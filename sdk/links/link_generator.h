@@ -38,18 +38,23 @@ struct BakeReport {
     uint32_t rejected_clearance = 0;     // the agent's body would hit geometry on the way
     uint32_t rejected_duplicate = 0;     // the same traversal as a link already kept
     uint64_t rays_cast = 0;              // rays and occlusion segments sent to Embree
+    uint64_t clear_boxes = 0;            // sweep stretches proven clear by one box query (Indexed)
     double milliseconds_edges = 0, milliseconds_takeoff = 0, milliseconds_jumps = 0, milliseconds_drops = 0,
            milliseconds_merge = 0, milliseconds_total = 0;
 };
 
-// How jump candidates are found: the spatial grid, or every pair (the slow reference tests use).
-enum class CandidateSearch { SpatialGrid, AllPairs };
+// How a bake finds its work; both give the same links, bit for bit.
+//   Indexed:    jump candidates from a spatial grid; a stretch of a clearance sweep whose box no
+//               triangle touches is clear without casting its segments (Level::boxes_empty).
+//   BruteForce: every pair of take-off points; every segment of every sweep cast. The reference the
+//               tests and navlink-bench-links compare the generator with.
+enum class BakeMethod { Indexed, BruteForce };
 
 // Called between and within stages with the fraction done (0..1) and the stage's name; returning
 // false cancels the bake (generate_links then throws Cancelled).
 using BakeProgress = FunctionRef<bool(float fraction, const char* stage)>;
 
 std::vector<Link> generate_links(const NavMesh& navmesh, const Level& level, TaskSystem& tasks, const LinkSettings& settings,
-                                 CandidateSearch search, BakeReport& report, BakeProgress progress);
+                                 BakeMethod method, BakeReport& report, BakeProgress progress);
 
 }  // namespace nl

@@ -113,13 +113,13 @@ struct Bake {
 };
 
 // Runs the generator `runs` times; keeps the fastest run's time and report (results are checked equal).
-Bake bake(const nl::NavMesh& navmesh, nl_world& world, nl::CandidateSearch search, int runs) {
+Bake bake(const nl::NavMesh& navmesh, nl_world& world, nl::BakeMethod method, int runs) {
     const nl::LinkSettings settings;  // the defaults, as nl_navmesh_generate_links with settings NULL
     Bake best;
     for (int run = 0; run < runs; ++run) {
         nl::BakeReport report;
         const double start = nl::samples::now_ms();
-        std::vector<nl::Link> links = nl::generate_links(navmesh, *world.level, *world.tasks, settings, search, report,
+        std::vector<nl::Link> links = nl::generate_links(navmesh, *world.level, *world.tasks, settings, method, report,
                                                          [](float, const char*) { return true; });
         const double ms = nl::samples::now_ms() - start;
         if (run > 0 && !identical(links, best.links)) throw std::runtime_error("two runs of the same bake differ");
@@ -163,11 +163,11 @@ void print_stages(const std::string& level, const char* what, const Bake& b) {
     const nl::BakeReport& r = b.report;
     std::fprintf(stderr,
                  "  %s %s: total %.2f ms = edges %.2f + takeoff %.2f + jumps %.2f + drops %.2f + merge %.2f | groups %u "
-                 "takeoffs %u jump_candidates %u drop_candidates %u rays %llu | rejected distance %u rise %u angle %u "
+                 "takeoffs %u jump_candidates %u drop_candidates %u rays %llu clear_boxes %llu | rejected distance %u rise %u angle %u "
                  "no_landing %u clearance %u duplicate %u wall %u not_ledge %u | links fingerprint %016llx\n",
                  level.c_str(), what, r.milliseconds_total, r.milliseconds_edges, r.milliseconds_takeoff,
                  r.milliseconds_jumps, r.milliseconds_drops, r.milliseconds_merge, r.groups, r.takeoff_points,
-                 r.jump_candidates, r.drop_candidates, static_cast<unsigned long long>(r.rays_cast), r.rejected_distance,
+                 r.jump_candidates, r.drop_candidates, static_cast<unsigned long long>(r.rays_cast), static_cast<unsigned long long>(r.clear_boxes), r.rejected_distance,
                  r.rejected_rise, r.rejected_angle, r.rejected_no_landing, r.rejected_clearance, r.rejected_duplicate,
                  r.rejected_wall, r.rejected_not_ledge, static_cast<unsigned long long>(fingerprint(b.links)));
 }
@@ -189,11 +189,11 @@ bool measure(const Source& source) {
                      navmesh->polygon_count(), navmesh->boundary_edges().size(), build_ms);
 
     try {
-        const Bake t1 = bake(*navmesh, *one.world, nl::CandidateSearch::SpatialGrid, 3);
+        const Bake t1 = bake(*navmesh, *one.world, nl::BakeMethod::Indexed, 3);
         print_stages(source.name, "1 worker ", t1);
-        const Bake t2 = bake(*navmesh, *two.world, nl::CandidateSearch::SpatialGrid, 3);
+        const Bake t2 = bake(*navmesh, *two.world, nl::BakeMethod::Indexed, 3);
         print_stages(source.name, "2 workers", t2);
-        const Bake reference = bake(*navmesh, *one.world, nl::CandidateSearch::AllPairs, 1);
+        const Bake reference = bake(*navmesh, *one.world, nl::BakeMethod::BruteForce, 1);
         print_stages(source.name, "all pairs", reference);
         const bool same = same_link_set(reference.links, t1.links) && identical(t1.links, t2.links);
         std::printf("level=%s tris=%u edges=%u samples=%u jump=%u drop=%u bake_ms_1t=%.1f bake_ms_2t=%.1f "

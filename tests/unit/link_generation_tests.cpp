@@ -41,7 +41,7 @@ struct Baked {
 };
 
 Baked bake(const std::vector<Box>& boxes, const nl::LinkSettings& settings = {},
-           nl::CandidateSearch search = nl::CandidateSearch::SpatialGrid, int threads = 2) {
+           nl::BakeMethod method = nl::BakeMethod::Indexed, int threads = 2) {
     nl::levelgen::GeneratedLevel level;
     for (const Box& b : boxes) level.add_box(b);
     nl_world_def def = nl_default_world_def();
@@ -54,7 +54,7 @@ Baked bake(const std::vector<Box>& boxes, const nl::LinkSettings& settings = {},
     REQUIRE_MESSAGE(nl_navmesh_build(world, &build, &navmesh) == NL_STATUS_SUCCESS, nl_get_last_error_message());
     const auto mesh_ptr = world->navmeshes->get(nl::Handle{navmesh.index1, navmesh.generation});
     Baked out;
-    out.links = nl::generate_links(*mesh_ptr, *world->level, *world->tasks, settings, search, out.report,
+    out.links = nl::generate_links(*mesh_ptr, *world->level, *world->tasks, settings, method, out.report,
                                    [](float, const char*) { return true; });
     nl_world_destroy(world);
     return out;
@@ -163,8 +163,8 @@ TEST_CASE("a drop within max_jump_up works both ways") {
 
 TEST_CASE("the spatial grid finds exactly what all pairs find, with 1 and 2 threads") {
     const auto level = nl::levelgen::generate_default_level(5);
-    const Baked grid = bake(level.boxes, {}, nl::CandidateSearch::SpatialGrid, 2);
-    const Baked all = bake(level.boxes, {}, nl::CandidateSearch::AllPairs, 1);
+    const Baked grid = bake(level.boxes, {}, nl::BakeMethod::Indexed, 2);
+    const Baked all = bake(level.boxes, {}, nl::BakeMethod::BruteForce, 1);
     INFO(grid.describe());
     REQUIRE(grid.links.size() == all.links.size());
     CHECK(!grid.links.empty());

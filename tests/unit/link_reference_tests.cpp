@@ -85,9 +85,9 @@ struct Bake {
     nl::BakeReport report;
 };
 
-Bake bake(const nl::NavMesh& navmesh, nl_world& world, nl::CandidateSearch search) {
+Bake bake(const nl::NavMesh& navmesh, nl_world& world, nl::BakeMethod method) {
     Bake b;
-    b.links = nl::generate_links(navmesh, *world.level, *world.tasks, nl::LinkSettings{}, search, b.report,
+    b.links = nl::generate_links(navmesh, *world.level, *world.tasks, nl::LinkSettings{}, method, b.report,
                                  [](float, const char*) { return true; });
     return b;
 }
@@ -105,9 +105,9 @@ void check_against_reference(const LevelSource& source, uint32_t& jumps, uint32_
     REQUIRE_MESSAGE(nl_navmesh_build(two.world, &build, &id) == NL_STATUS_SUCCESS, nl_get_last_error_message());
     const auto navmesh = two.world->navmeshes->get(nl::Handle{id.index1, id.generation});
 
-    const Bake grid_1 = bake(*navmesh, *one.world, nl::CandidateSearch::SpatialGrid);
-    const Bake grid_2 = bake(*navmesh, *two.world, nl::CandidateSearch::SpatialGrid);
-    const Bake all_pairs = bake(*navmesh, *one.world, nl::CandidateSearch::AllPairs);
+    const Bake grid_1 = bake(*navmesh, *one.world, nl::BakeMethod::Indexed);
+    const Bake grid_2 = bake(*navmesh, *two.world, nl::BakeMethod::Indexed);
+    const Bake all_pairs = bake(*navmesh, *one.world, nl::BakeMethod::BruteForce);
     jumps = grid_1.report.jump_links;
     drops = grid_1.report.drop_links;
     MESSAGE(source.name, ": ", grid_1.links.size(), " links (", jumps, " jumps, ", drops, " drops) from ",

@@ -1,0 +1,29 @@
+// A box with its own axes, and the exact test of a triangle against it: the broad phase that proves
+// a bundle of occlusion segments clear without casting them.
+#pragma once
+
+#include <initializer_list>
+
+#include "level/geometry.h"
+
+namespace nl {
+
+struct OrientedBox {
+    Vec3 center = Vec3::Zero();
+    Eigen::Matrix3f axes = Eigen::Matrix3f::Identity();  // columns: orthonormal directions
+    Vec3 half_extents = Vec3::Zero();                    // along each axis
+
+    // Radius of the sphere around the box.
+    float bounding_radius() const { return half_extents.norm(); }
+};
+
+// The smallest box along `axes` (orthonormal columns) holding every point, grown by `pad` on every
+// side.
+OrientedBox box_around(const Eigen::Matrix3f& axes, std::initializer_list<Vec3> points, float pad);
+
+// Whether the triangle and the box share a point (separating axis test over the box's three axes,
+// the triangle's normal and the nine edge-by-axis cross products). Touching counts as sharing.
+// Conservative for degenerate triangles: an axis that cannot be formed is not used to separate.
+bool triangle_overlaps_box(const Vec3& a, const Vec3& b, const Vec3& c, const OrientedBox& box);
+
+}  // namespace nl
