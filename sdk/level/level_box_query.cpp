@@ -2,6 +2,7 @@
 // test decides each one.
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "level/level.h"
 
@@ -9,9 +10,15 @@ namespace nl {
 namespace {
 
 // What the point query callback needs: the box, where the triangles are, and the answer so far.
+// A static geometry's buffers, as Embree holds them (world space).
+struct StaticBuffers {
+    const float* vertices = nullptr;
+    const unsigned* indices = nullptr;
+};
+
 struct BoxQuery {
     const OrientedBox* box = nullptr;
-    RTCScene static_scene = nullptr;       // triangles in world space
+    const std::vector<StaticBuffers>* statics = nullptr;  // by geomID in the static scene
     const TriangleMesh* object = nullptr;  // or a movable mesh's, in its space, with its transform
     const Transform* transform = nullptr;
     bool overlap = false;
@@ -26,9 +33,7 @@ bool stop_query(RTCPointQueryFunctionArguments* args, BoxQuery& q) {
 bool static_triangle(RTCPointQueryFunctionArguments* args) {
     auto& q = *static_cast<BoxQuery*>(args->userPtr);
     if (q.overlap) return false;
-    const RTCGeometry geometry = rtcGetGeometry(q.static_scene, args->geomID);
-    const auto* vertices = static_cast<const float*>(rtcGetGeometryBufferData(geometry, RTC_BUFFER_TYPE_VERTEX, 0));
-    const auto* indices = static_cast<const unsigned*>(rtcGetGeometryBufferData(geometry, RTC_BUFFER_TYPE_INDEX, 0));
+    const auto [vertices, indices] = (*q.statics)[args->geomID];
     const unsigned* t = indices + 3 * size_t(args->primID);
     auto vertex = [&](unsigned i) { return Vec3(vertices[3 * size_t(i)], vertices[3 * size_t(i) + 1], vertices[3 * size_t(i) + 2]); };
     if (triangle_overlaps_box(vertex(t[0]), vertex(t[1]), vertex(t[2]), *q.box)) return stop_query(args, q);
@@ -69,8 +74,14 @@ void Level::boxes_empty(const OrientedBox* boxes, uint32_t count, uint8_t* out_e
         float stretch;
     };
     std::vector<Movable> movables;
+    std::vector<StaticBuffers> statics(static_geometry_owner_.size());
     meshes_.for_each([&](Handle, const Mesh& m) {
-        if (!m.own_scene) return;
+        if (!m.own_scene) {
+            statics[m.geometry_id] = StaticBuffers{
+                static_cast<const float*>(rtcGetGeometryBufferData(m.geometry, RTC_BUFFER_TYPE_VERTEX, 0)),
+                static_cast<const unsigned*>(rtcGetGeometryBufferData(m.geometry, RTC_BUFFER_TYPE_INDEX, 0))};
+            return;
+        }
         const Transform inverse = m.transform.inverse(Eigen::Affine);
         movables.push_back(Movable{&m, inverse, inverse.linear().norm()});
     });
@@ -80,7 +91,7 @@ void Level::boxes_empty(const OrientedBox* boxes, uint32_t count, uint8_t* out_e
             const OrientedBox& box = boxes[i];
             BoxQuery q;
             q.box = &box;
-            q.static_scene = static_scene_;
+            q.statics = &statics;
             RTCPointQuery query;
             query.x = box.center.x();
             query.y = box.center.y();

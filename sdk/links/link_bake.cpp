@@ -111,23 +111,44 @@ private:
 
         const auto steps = static_cast<uint32_t>(std::ceil(s_.falloff_distance / kRimStep));
         const float climb = mesh_.agent().max_climb;
-        std::vector<Ray> below;
+        const float step_reach = probe + climb + 0.05f;
+        auto probe_top = [&](size_t k, uint32_t step) {
+            const EdgeSample& e = samples_[redo[k]];
+            const Vec3 out = e.point + e.outward * std::min(step * kRimStep, s_.falloff_distance);
+            return Vec3(out.x(), next.takeoffs[redo[k]].ground_y + probe, out.z());
+        };
         for (size_t k = 0; k < redo.size(); ++k) {
             const EdgeSample& e = samples_[redo[k]];
             LinkBake::TakeoffState& t = next.takeoffs[redo[k]];
             t = LinkBake::TakeoffState{};
             // Correction for navmeshes that sit above the floor (Recast's rounds up) or sink into it.
             t.ground_y = ground[k].hit ? ground[k].point.y() : e.point.y();
+            t.rim = -1.0f;
+            // Every probe the rim search may cast, so a change anywhere along it redoes the sample.
             t.bounds = bounds_of({e.point + Vec3(0, probe, 0), e.point - Vec3(0, 1.5f, 0)});
             for (uint32_t j = 1; j <= steps; ++j) {
-                const Vec3 out = e.point + e.outward * std::min(j * kRimStep, s_.falloff_distance);
-                const Vec3 top(out.x(), t.ground_y + probe, out.z());
-                below.push_back(Ray{top, Vec3(0, -1, 0), probe + climb + 0.05f});
-                t.bounds.grow(top);
-                t.bounds.grow(top - Vec3(0, probe + climb + 0.05f, 0));
+                t.bounds.grow(probe_top(k, j));
+                t.bounds.grow(probe_top(k, j) - Vec3(0, step_reach, 0));
             }
         }
-        const std::vector<RayHit> step_below = cast(below);
+        // One step out at a time, for the samples still on ground: only a hit or a miss is needed,
+        // and a sample stops at its rim.
+        std::vector<size_t> looking(redo.size());
+        for (size_t k = 0; k < redo.size(); ++k) looking[k] = k;
+        for (uint32_t j = 1; j <= steps && !looking.empty(); ++j) {
+            std::vector<Segment> below(looking.size());
+            for (size_t n = 0; n < looking.size(); ++n) {
+                const Vec3 top = probe_top(looking[n], j);
+                below[n] = Segment{top, top - Vec3(0, step_reach, 0)};
+            }
+            const std::vector<uint8_t> ground_below = blocked(below);
+            size_t still = 0;
+            for (size_t n = 0; n < looking.size(); ++n) {
+                if (ground_below[n]) looking[still++] = looking[n];
+                else next.takeoffs[redo[looking[n]]].rim = std::min(j * kRimStep, s_.falloff_distance);
+            }
+            looking.resize(still);
+        }
 
         std::vector<Segment> walls;
         std::vector<uint32_t> ledges;
@@ -135,9 +156,6 @@ private:
         for (size_t k = 0; k < redo.size(); ++k) {
             LinkBake::TakeoffState& t = next.takeoffs[redo[k]];
             const EdgeSample& e = samples_[redo[k]];
-            t.rim = -1.0f;
-            for (uint32_t j = 1; j <= steps && t.rim < 0.0f; ++j)
-                if (!step_below[k * steps + j - 1].hit) t.rim = std::min(j * kRimStep, s_.falloff_distance);
             if (t.rim < 0.0f) {
                 t.rejected = 2;
                 continue;
@@ -298,8 +316,14 @@ private:
         return out;
     }
 
+    // Point location through the navmesh's polygon grid, or over every polygon (brute force).
+    NavPoint locate(const Vec3& point, const Vec3& half_extents) const {
+        return method_ == BakeMethod::Indexed ? mesh_.find_nearest(point, half_extents)
+                                              : mesh_.find_nearest_brute_force(point, half_extents);
+    }
+
     bool on_navmesh(const Vec3& point) const {
-        const NavPoint p = mesh_.find_nearest(point, Vec3(0.1f, 0.5f, 0.1f));
+        const NavPoint p = locate(point, Vec3(0.1f, 0.5f, 0.1f));
         return p.found && p.distance < 0.3f;
     }
 
@@ -395,7 +419,7 @@ private:
             d.bounds = bounds_of({probe.origin, probe.origin + probe.direction * (hits[k].hit ? hits[k].distance : reach)});
             d.outcome = 1;
             if (!hits[k].hit) continue;
-            const NavPoint landing = mesh_.find_nearest(hits[k].point, landing_box);
+            const NavPoint landing = locate(hits[k].point, landing_box);
             if (!landing.found || landing.polygon == samples_[i].polygon) continue;
             const float drop = samples_[i].point.y() - landing.point.y();
             if (drop <= mesh_.agent().max_climb || drop > s_.max_drop_distance) {
@@ -522,11 +546,18 @@ private:
         };
         const float cell = std::max(r, 0.01f);
         auto key = [&](const Vec3& p) { return Key{int64_t(std::floor(p.x() / cell)), int64_t(std::floor(p.z() / cell))}; };
-        // Kept links indexed by the cells of both their ends, so either orientation is found.
+        // Kept links indexed by the cells of both their ends, so either orientation is found (brute
+        // force: compared with every kept link).
         std::unordered_map<Key, std::vector<uint32_t>, Hash> by_end;
         std::vector<Link> kept;
         for (const Link& l : links) {
             bool duplicate = false;
+            if (method_ == BakeMethod::BruteForce) {
+                duplicate = std::any_of(kept.begin(), kept.end(), [&](const Link& k) { return same_traversal(k, l); });
+                if (duplicate) ++report_.rejected_duplicate;
+                else kept.push_back(l);
+                continue;
+            }
             const Key k = key(l.start);
             for (int64_t dz = -1; dz <= 1 && !duplicate; ++dz)
                 for (int64_t dx = -1; dx <= 1 && !duplicate; ++dx) {

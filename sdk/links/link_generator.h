@@ -44,9 +44,12 @@ struct BakeReport {
 };
 
 // How a bake finds its work; both give the same links, bit for bit.
-//   Indexed:    jump candidates from a spatial grid; a stretch of a clearance sweep whose box no
-//               triangle touches is clear without casting its segments (Level::boxes_empty).
-//   BruteForce: every pair of take-off points; every segment of every sweep cast. The reference the
+//   Indexed:    spatial indexes everywhere: jump candidates from a grid of take-off points, points
+//               located through the navmesh's polygon grid, near-duplicates found through a grid of
+//               link ends, and a stretch of a clearance sweep whose box no triangle touches is
+//               clear without casting its segments (Level::boxes_empty).
+//   BruteForce: none of them: every pair of take-off points, every polygon, every kept link, every
+//               segment of every sweep (the level's rays still go through Embree). The reference the
 //               tests and navlink-bench-links compare the generator with.
 enum class BakeMethod { Indexed, BruteForce };
 
