@@ -221,6 +221,7 @@ class BakeReport(Structure):
     _fields_ += [(name, c_double) for name in (
         "milliseconds_edges", "milliseconds_takeoff", "milliseconds_jumps", "milliseconds_drops",
         "milliseconds_merge", "milliseconds_total")]
+    _fields_ += [("box_queries", c_uint64)]
 
 
 class PathTicket(_Id):

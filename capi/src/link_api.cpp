@@ -173,6 +173,7 @@ nl_bake_report to_c(const nl::BakeReport& r) {
     c.milliseconds_drops = r.milliseconds_drops;
     c.milliseconds_merge = r.milliseconds_merge;
     c.milliseconds_total = r.milliseconds_total;
+    c.box_queries = r.box_queries;
     return c;
 }
 

@@ -44,6 +44,7 @@ void print_bake_report(std::FILE* out, const nl_bake_report& r, const std::vecto
     };
     for (const auto& item : stages) std::fprintf(out, "  %-26s %8.1f\n", item.stage, item.ms);
     std::fprintf(out, "  %-26s %8llu\n", "rays cast", static_cast<unsigned long long>(r.rays_cast));
+    std::fprintf(out, "  %-26s %8llu\n", "box queries", static_cast<unsigned long long>(r.box_queries));
 }
 
 }  // namespace nl::cli

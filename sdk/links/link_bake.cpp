@@ -278,7 +278,7 @@ private:
                     for (size_t k = 0; k < pieces[i].size(); ++k) boxes[first_piece[i] + k] = piece_box(pieces[i][k], body_.radius);
             });
             level_.boxes_empty(boxes.data(), piece_count, piece_clear.data());
-            for (uint8_t clear : piece_clear) report_.clear_boxes += clear;
+            report_.box_queries += piece_count;
         }
         // The pieces left to cast, kSegmentsPerPiece segments each.
         std::vector<uint32_t> cast_pieces;

@@ -38,7 +38,7 @@ struct BakeReport {
     uint32_t rejected_clearance = 0;     // the agent's body would hit geometry on the way
     uint32_t rejected_duplicate = 0;     // the same traversal as a link already kept
     uint64_t rays_cast = 0;              // rays and occlusion segments sent to Embree
-    uint64_t clear_boxes = 0;            // sweep stretches proven clear by one box query (Indexed)
+    uint64_t box_queries = 0;            // sweep stretches asked of Level::boxes_empty (Indexed)
     double milliseconds_edges = 0, milliseconds_takeoff = 0, milliseconds_jumps = 0, milliseconds_drops = 0,
            milliseconds_merge = 0, milliseconds_total = 0;
 };

@@ -163,11 +163,11 @@ void print_stages(const std::string& level, const char* what, const Bake& b) {
     const nl::BakeReport& r = b.report;
     std::fprintf(stderr,
                  "  %s %s: total %.2f ms = edges %.2f + takeoff %.2f + jumps %.2f + drops %.2f + merge %.2f | groups %u "
-                 "takeoffs %u jump_candidates %u drop_candidates %u rays %llu clear_boxes %llu | rejected distance %u rise %u angle %u "
+                 "takeoffs %u jump_candidates %u drop_candidates %u rays %llu box_queries %llu | rejected distance %u rise %u angle %u "
                  "no_landing %u clearance %u duplicate %u wall %u not_ledge %u | links fingerprint %016llx\n",
                  level.c_str(), what, r.milliseconds_total, r.milliseconds_edges, r.milliseconds_takeoff,
                  r.milliseconds_jumps, r.milliseconds_drops, r.milliseconds_merge, r.groups, r.takeoff_points,
-                 r.jump_candidates, r.drop_candidates, static_cast<unsigned long long>(r.rays_cast), static_cast<unsigned long long>(r.clear_boxes), r.rejected_distance,
+                 r.jump_candidates, r.drop_candidates, static_cast<unsigned long long>(r.rays_cast), static_cast<unsigned long long>(r.box_queries), r.rejected_distance,
                  r.rejected_rise, r.rejected_angle, r.rejected_no_landing, r.rejected_clearance, r.rejected_duplicate,
                  r.rejected_wall, r.rejected_not_ledge, static_cast<unsigned long long>(fingerprint(b.links)));
 }

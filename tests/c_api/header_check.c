@@ -186,7 +186,8 @@ _Static_assert(offsetof(nl_bake_report, size) == 0 && offsetof(nl_bake_report, e
                    offsetof(nl_bake_report, milliseconds_jumps) == 96 &&
                    offsetof(nl_bake_report, milliseconds_drops) == 104 &&
                    offsetof(nl_bake_report, milliseconds_merge) == 112 &&
-                   offsetof(nl_bake_report, milliseconds_total) == 120,
+                   offsetof(nl_bake_report, milliseconds_total) == 120 &&
+                   offsetof(nl_bake_report, box_queries) == 128,
                "nl_bake_report (no hidden padding)");
 #if UINTPTR_MAX == 0xffffffffffffffffu
 /* On LP64 the pointer after arc_segments leaves 4 bytes of padding at 148. */

@@ -672,6 +672,9 @@ typedef struct nl_bake_report {
     double milliseconds_drops;
     double milliseconds_merge;
     double milliseconds_total;
+    uint64_t box_queries;          /**< Boxes around stretches of clearance sweeps asked whether any
+                                        triangle touches them; an untouched one is clear without
+                                        casting its segments. Written when `size` covers it. */
 } nl_bake_report;
 
 /** Bake progress: `fraction` done (0..1) and the stage's name (borrowed for the call). Return 0 to

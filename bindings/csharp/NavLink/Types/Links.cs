@@ -110,5 +110,6 @@ namespace NavLink
         public double MillisecondsDrops;
         public double MillisecondsMerge;
         public double MillisecondsTotal;
+        public ulong BoxQueries;
     }
 }

@@ -119,6 +119,7 @@ pub struct nl_bake_report {
     pub milliseconds_drops: f64,
     pub milliseconds_merge: f64,
     pub milliseconds_total: f64,
+    pub box_queries: u64,
 }
 
 /// `nl_progress_fn*`: return 0 to cancel. Called on the thread that started the bake.
