@@ -326,8 +326,13 @@ NL_API nl_status nl_navmesh_get_links(const nl_world* world, nl_navmesh_id navme
 NL_API nl_status nl_navmesh_remove_generated_links(nl_world* world, nl_navmesh_id navmesh, uint32_t* out_removed) {
     return guarded("nl_navmesh_remove_generated_links", world, [&] {
         nl_world& w = deref(world);
-        w.navmeshes->get(to_handle(navmesh));
-        const uint32_t removed = w.links->remove_generated(to_handle(navmesh));
+        const nl::Handle handle = to_handle(navmesh);
+        w.navmeshes->get(handle);
+        // Not between a generation's reading of its bake and the storing of its links.
+        const auto serializer = w.bakes->serializer(handle);
+        std::lock_guard one_at_a_time(*serializer);
+        const uint32_t removed = w.links->remove_generated(handle);
+        w.bakes->forget(handle);
         if (out_removed) *out_removed = removed;
     });
 }
@@ -399,7 +404,8 @@ NL_API nl_status nl_navmesh_update_links_in_box(nl_world* world, nl_navmesh_id n
         std::lock_guard one_at_a_time(*serializer);
         // The bake and the plugin settings of the generation being updated, read together.
         const nl::LinkBakes::Entry last = w.bakes->get(handle);
-        if (!last.bake) fail(ErrorCode::NotFound, "the navmesh's links were never generated: call nl_navmesh_generate_links first");
+        if (!last.bake) fail(ErrorCode::NotFound, "the navmesh has no generation to update (never generated, or its generated links were "
+                                      "removed or replaced by a JSON load since): call nl_navmesh_generate_links");
         nl::BakeReport report;
         std::vector<nl::Link> links = last.bake->update(box, *w.level, *w.tasks, report, progress_of(progress, user));
         const std::vector<nl::Link> extra =
@@ -449,7 +455,10 @@ NL_API nl_status nl_navmesh_load_links_json(nl_world* world, nl_navmesh_id navme
             l.start_polygon = polygon_under(l.start, l.start_polygon);
             l.end_polygon = polygon_under(l.end, l.end_polygon);
         }
+        const auto serializer = w.bakes->serializer(handle);
+        std::lock_guard one_at_a_time(*serializer);
         w.links->replace_all(handle, links);
+        w.bakes->forget(handle);  // the loaded links are not a generation an update could continue
         if (out_count) *out_count = static_cast<uint32_t>(links.size());
     });
 }

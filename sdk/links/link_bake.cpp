@@ -653,6 +653,11 @@ LinkBakes::Entry LinkBakes::get(Handle navmesh) const {
     return it == bakes_.end() ? Entry{} : it->second;
 }
 
+void LinkBakes::forget(Handle navmesh) {
+    std::lock_guard lock(mutex_);
+    bakes_.erase(key(navmesh));
+}
+
 void LinkBakes::remove(Handle navmesh) {
     std::lock_guard lock(mutex_);
     bakes_.erase(key(navmesh));

@@ -88,7 +88,10 @@ public:
 
     // Ignored for a removed navmesh: a generation that finishes after the removal keeps nothing.
     void set(Handle navmesh, Entry entry);
-    Entry get(Handle navmesh) const;  // empty if the navmesh was never baked
+    Entry get(Handle navmesh) const;  // empty if the navmesh was never baked, or its bake forgotten
+    // The navmesh's generated links are gone (removed, or replaced by a load): there is no
+    // generation left to update. Hold the serializer.
+    void forget(Handle navmesh);
     void remove(Handle navmesh);
 
 private:

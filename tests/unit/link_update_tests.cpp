@@ -153,3 +153,37 @@ TEST_CASE("an update needs a prior generation and a proper box; a far-away chang
     CHECK(nl_navmesh_update_links_in_box(s.world, other, far_box.min, far_box.max, nullptr, nullptr, nullptr) ==
           (NL_STATUS_FAILURE | NL_STATUS_NOT_FOUND));
 }
+
+TEST_CASE("an update never brings back generated links that were removed or replaced by a load") {
+    Scene s;
+    const Box anywhere{{-50, -10, -50}, {50, 10, 50}};
+    const size_t generated = s.links().size();
+    REQUIRE(generated > 0);
+
+    uint32_t removed = 0;
+    REQUIRE(nl_navmesh_remove_generated_links(s.world, s.navmesh, &removed) == NL_STATUS_SUCCESS);
+    CHECK(removed == generated);
+    CHECK(nl_navmesh_update_links_in_box(s.world, s.navmesh, anywhere.min, anywhere.max, nullptr, nullptr, nullptr) ==
+          (NL_STATUS_FAILURE | NL_STATUS_NOT_FOUND));
+    CHECK(std::string(nl_get_last_error_message()).find("removed") != std::string::npos);
+    CHECK(s.links().empty());
+
+    // Generated again, saved, loaded back: the loaded links stay as loaded.
+    s.bake_full();
+    size_t length = 0;
+    REQUIRE(nl_navmesh_save_links_json(s.world, s.navmesh, nullptr, 0, &length) == NL_STATUS_SUCCESS);
+    std::string json(length + 1, '\0');
+    REQUIRE(nl_navmesh_save_links_json(s.world, s.navmesh, json.data(), json.size(), &length) == NL_STATUS_SUCCESS);
+    REQUIRE(nl_navmesh_load_links_json(s.world, s.navmesh, json.data(), length, nullptr) == NL_STATUS_SUCCESS);
+    const auto loaded = s.links();
+    CHECK(loaded.size() == generated);
+    CHECK(nl_navmesh_update_links_in_box(s.world, s.navmesh, anywhere.min, anywhere.max, nullptr, nullptr, nullptr) ==
+          (NL_STATUS_FAILURE | NL_STATUS_NOT_FOUND));
+    const auto after = s.links();
+    REQUIRE(after.size() == loaded.size());
+    for (size_t i = 0; i < after.size(); ++i) CHECK(after[i].id.index1 == loaded[i].id.index1);
+
+    // A new generation can be updated again.
+    s.bake_full();
+    CHECK(s.update(anywhere).jump_links + s.update(anywhere).drop_links == s.links().size());
+}

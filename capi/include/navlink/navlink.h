@@ -602,7 +602,9 @@ NL_API nl_status nl_navmesh_get_links(const nl_world* world, nl_navmesh_id navme
                                       uint32_t capacity, uint32_t* out_count);
 
 /** Removes the navmesh's generated links; manual ones stay. `out_removed` (optional) receives how many
- *  went. Returns SUCCESS or INVALID_HANDLE. Thread-safe. */
+ *  went. The last generation is forgotten with them: nl_navmesh_update_links_in_box then returns
+ *  NOT_FOUND until the next nl_navmesh_generate_links (an update never brings removed links back).
+ *  Returns SUCCESS or INVALID_HANDLE. Thread-safe. */
 NL_API nl_status nl_navmesh_remove_generated_links(nl_world* world, nl_navmesh_id navmesh, uint32_t* out_removed);
 
 /** How links are generated (docs/link-generation.md explains each). Get one from
@@ -703,7 +705,8 @@ NL_API nl_status nl_navmesh_generate_links(nl_world* world, nl_navmesh_id navmes
  *  equals what nl_navmesh_generate_links with the same settings would give now. Link-kind plugins
  *  keep no cache: their links are generated again in full. The navmesh itself must be the same (a
  *  rebuilt navmesh is a new one: generate its links in full).
- *  Returns SUCCESS, or a failure with NOT_FOUND (never generated), INVALID_HANDLE, INVALID_ARGUMENT
+ *  Returns SUCCESS, or a failure with NOT_FOUND (never generated, or the generated links were removed or
+ *  replaced by a JSON load since), INVALID_HANDLE, INVALID_ARGUMENT
  *  (a null, non-finite or inverted box), CANCELLED (nothing changed). Thread-safe. */
 NL_API nl_status nl_navmesh_update_links_in_box(nl_world* world, nl_navmesh_id navmesh, const float* box_min,
                                                 const float* box_max, nl_progress_fn* progress, void* user,
@@ -718,7 +721,9 @@ NL_API nl_status nl_navmesh_save_links_json(const nl_world* world, nl_navmesh_id
                                             size_t capacity, size_t* out_length);
 
 /** Replaces all of the navmesh's links with those in `json` (`length` bytes, borrowed); new ids are
- *  given. `out_count` (optional) receives how many were loaded. On failure nothing changes.
+ *  given. `out_count` (optional) receives how many were loaded. On failure nothing changes. On
+ *  success the last generation is forgotten: nl_navmesh_update_links_in_box returns NOT_FOUND until
+ *  the next nl_navmesh_generate_links.
  *  Returns SUCCESS, or a failure with PARSE_ERROR, VERSION_MISMATCH (another format or version),
  *  INVALID_ARGUMENT (a field missing or wrong, named by its path, e.g. "links[3].start"),
  *  INVALID_HANDLE. Thread-safe. */
