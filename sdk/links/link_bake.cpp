@@ -174,80 +174,112 @@ private:
         }
     }
 
-    // Calls visit(i, j) for every pair of take-off points (i < j, in order) within twice
-    // max_link_distance: the pairs beyond max_link_distance are only looked at so the report can say
-    // that two facing edges were too far apart.
-    void for_each_nearby_pair(const std::vector<uint32_t>& valid, FunctionRef<void(uint32_t, uint32_t)> visit) const {
-        // Never finer than a centimetre: cell keys stay far inside int64 within the coordinate limit.
-        const float reach = std::max(2.0f * s_.max_link_distance, 0.01f);
+    // What the geometry-free tests say of a pair of take-off points, for the report.
+    enum class PairVerdict : uint8_t { Candidate, Ignored, Distance, Rise, Angle, NoLanding };
+
+    // The grid the Indexed search finds partners in: cells as wide as the reach, so that a partner
+    // is in the 27 cells around a point.
+    struct CellKey {
+        int64_t x, y, z;
+        bool operator==(const CellKey& o) const { return x == o.x && y == o.y && z == o.z; }
+    };
+    struct CellHash {
+        size_t operator()(const CellKey& k) const {
+            return size_t(uint64_t(k.x) * 73856093u ^ uint64_t(k.y) * 19349663u ^ uint64_t(k.z) * 83492791u);
+        }
+    };
+    using TakeoffGrid = std::unordered_map<CellKey, std::vector<uint32_t>, CellHash>;
+
+    // Pairs beyond max_link_distance are still looked at, up to twice as far, so the report can say
+    // that two facing edges were too far apart. Never finer than a centimetre: cell keys stay far
+    // inside int64 within the coordinate limit.
+    float pair_reach() const { return std::max(2.0f * s_.max_link_distance, 0.01f); }
+
+    CellKey cell_of(const Vec3& p) const {
+        const float reach = pair_reach();
+        return CellKey{int64_t(std::floor(p.x() / reach)), int64_t(std::floor(p.y() / reach)), int64_t(std::floor(p.z() / reach))};
+    }
+
+    // Appends the take-off points after `valid[x]` (by sample index) within reach of it, in order:
+    // from the grid's 27 cells (Indexed) or from every later one (BruteForce).
+    void partners_after(const std::vector<uint32_t>& valid, size_t x, const TakeoffGrid& grid, std::vector<uint32_t>& out) const {
+        const uint32_t i = valid[x];
+        const Vec3& p = samples_[i].point;
+        const float reach = pair_reach();
         if (method_ == BakeMethod::BruteForce) {
-            for (size_t x = 0; x < valid.size(); ++x)
-                for (size_t y = x + 1; y < valid.size(); ++y)
-                    if ((samples_[valid[x]].point - samples_[valid[y]].point).norm() <= reach) visit(valid[x], valid[y]);
+            for (size_t y = x + 1; y < valid.size(); ++y)
+                if ((samples_[valid[y]].point - p).norm() <= reach) out.push_back(valid[y]);
             return;
         }
-        // Cells as wide as the reach: a partner is in the 27 cells around a point.
-        struct Key {
-            int64_t x, y, z;
-            bool operator==(const Key& o) const { return x == o.x && y == o.y && z == o.z; }
-        };
-        struct Hash {
-            size_t operator()(const Key& k) const {
-                return size_t(uint64_t(k.x) * 73856093u ^ uint64_t(k.y) * 19349663u ^ uint64_t(k.z) * 83492791u);
-            }
-        };
-        auto key = [&](const Vec3& p) {
-            return Key{int64_t(std::floor(p.x() / reach)), int64_t(std::floor(p.y() / reach)), int64_t(std::floor(p.z() / reach))};
-        };
-        std::unordered_map<Key, std::vector<uint32_t>, Hash> cells;
-        for (uint32_t i : valid) cells[key(samples_[i].point)].push_back(i);
-        std::vector<uint32_t> partners;
-        for (uint32_t i : valid) {
-            const Vec3& p = samples_[i].point;
-            const Key k = key(p);
-            partners.clear();
-            for (int64_t dz = -1; dz <= 1; ++dz)
-                for (int64_t dy = -1; dy <= 1; ++dy)
-                    for (int64_t dx = -1; dx <= 1; ++dx) {
-                        const auto it = cells.find(Key{k.x + dx, k.y + dy, k.z + dz});
-                        if (it == cells.end()) continue;
-                        for (uint32_t j : it->second)
-                            if (j > i && (samples_[j].point - p).norm() <= reach) partners.push_back(j);
-                    }
-            std::sort(partners.begin(), partners.end());
-            for (uint32_t j : partners) visit(i, j);
-        }
+        const CellKey k = cell_of(p);
+        for (int64_t dz = -1; dz <= 1; ++dz)
+            for (int64_t dy = -1; dy <= 1; ++dy)
+                for (int64_t dx = -1; dx <= 1; ++dx) {
+                    const auto it = grid.find(CellKey{k.x + dx, k.y + dy, k.z + dz});
+                    if (it == grid.end()) continue;
+                    for (uint32_t j : it->second)
+                        if (j > i && (samples_[j].point - p).norm() <= reach) out.push_back(j);
+                }
+        std::sort(out.begin(), out.end());
     }
 
     // The constraints that need no ray: distance, rise, facing, incline. Both directions at once:
     // every one of them is symmetric in the two ends.
-    bool jump_constraints_hold(const EdgeSample& a, const EdgeSample& b) {
+    PairVerdict judge_pair(const EdgeSample& a, const EdgeSample& b) const {
         const Vec3 d = b.point - a.point;
         const Vec3 flat(d.x(), 0.0f, d.z());
         const float distance = d.norm(), gap = flat.norm();
         const bool is_short = distance < s_.short_link_distance;
         const float forward = std::cos((is_short ? s_.permissive_forward_angle : s_.strict_forward_angle) * kDegrees);
         const bool facing = gap > 0.0f && a.outward.dot(flat / gap) >= forward && b.outward.dot(-flat / gap) >= forward;
-        if (distance > s_.max_link_distance) {
-            // Only edges that face each other are worth reporting as too far apart.
-            if (facing) ++report_.rejected_distance;
-            return false;
-        }
-        if (gap < s_.min_link_distance) {
-            ++report_.rejected_distance;
-            return false;
-        }
-        if (std::fabs(d.y()) > s_.max_jump_up) {
-            ++report_.rejected_rise;
-            return false;
-        }
+        // Only edges that face each other are worth reporting as too far apart.
+        if (distance > s_.max_link_distance) return facing ? PairVerdict::Distance : PairVerdict::Ignored;
+        if (gap < s_.min_link_distance) return PairVerdict::Distance;
+        if (std::fabs(d.y()) > s_.max_jump_up) return PairVerdict::Rise;
         const float incline = std::sin((is_short ? s_.permissive_incline_angle : s_.strict_incline_angle) * kDegrees);
         const Vec3 direction = d / distance;
-        if (!facing || std::fabs(direction.dot(a.normal)) > incline || std::fabs(direction.dot(b.normal)) > incline) {
-            ++report_.rejected_angle;
-            return false;
+        if (!facing || std::fabs(direction.dot(a.normal)) > incline || std::fabs(direction.dot(b.normal)) > incline)
+            return PairVerdict::Angle;
+        return on_navmesh(b.point) ? PairVerdict::Candidate : PairVerdict::NoLanding;
+    }
+
+    void count(PairVerdict verdict, uint32_t pairs) {
+        switch (verdict) {
+            case PairVerdict::Distance: report_.rejected_distance += pairs; break;
+            case PairVerdict::Rise: report_.rejected_rise += pairs; break;
+            case PairVerdict::Angle: report_.rejected_angle += pairs; break;
+            case PairVerdict::NoLanding: report_.rejected_no_landing += pairs; break;
+            case PairVerdict::Candidate:
+            case PairVerdict::Ignored: break;
         }
-        return true;
+    }
+
+    // A pair that met every geometry-free constraint: its arc's sweep is reused from the old cache
+    // when the box cannot have changed it, else queued in `redo` / `arcs`.
+    void add_jump_candidate(uint32_t a, uint32_t b, LinkBake::Cache& next, std::vector<uint64_t>& redo,
+                            std::vector<std::vector<Vec3>>& arcs) {
+        const uint64_t key = pair_key(a, b);
+        const auto cached = old_.jumps.find(key);
+        if (cached != old_.jumps.end() && !touches(cached->second.sweep.bounds, box_)) {
+            next.jumps.emplace(key, cached->second);
+            return;
+        }
+        const JumpArc arc = jump_arc(samples_[a].point, samples_[b].point, s_.jump_arc_height, s_.arc_segments);
+        LinkBake::JumpCandidate c;
+        c.a = a;
+        c.b = b;
+        c.link.kind = LinkKind::Jump;
+        c.link.start = samples_[a].point;
+        c.link.end = samples_[b].point;
+        c.link.apex = arc.apex;
+        c.link.bidirectional = true;  // every jump constraint holds both ways
+        c.link.generated = true;
+        c.link.start_polygon = samples_[a].polygon;
+        c.link.end_polygon = samples_[b].polygon;
+        set_requirements(c.link);
+        next.jumps.emplace(key, c);
+        redo.push_back(key);
+        arcs.push_back(arc.points);
     }
 
     // Sweeps each path with the agent's body and bodies 1.5 and 2 times as wide, in one occlusion
@@ -327,46 +359,46 @@ private:
         return p.found && p.distance < 0.3f;
     }
 
-    // Jump candidates: the geometry-free constraints over every pair (cheap, so always redone), then
-    // the arc sweep, reused from the old cache unless geometry in the box could have changed it.
+    // Jump candidates: the geometry-free constraints over every pair (cheap, so always redone, in
+    // parallel over take-off points, a block at a time so progress can cancel), then the arc sweep,
+    // reused from the old cache unless geometry in the box could have changed it.
     void find_jumps(LinkBake::Cache& next) {
         std::vector<uint32_t> valid;
         for (uint32_t i = 0; i < samples_.size(); ++i)
             if (next.takeoffs[i].valid) valid.push_back(i);
         report_.takeoff_points = static_cast<uint32_t>(valid.size());
+        TakeoffGrid grid;
+        if (method_ == BakeMethod::Indexed)
+            for (uint32_t i : valid) grid[cell_of(samples_[i].point)].push_back(i);
+
         std::vector<uint64_t> redo;
         std::vector<std::vector<Vec3>> arcs;
-        size_t visited = 0;
-        for_each_nearby_pair(valid, [&](uint32_t a, uint32_t b) {
-            if ((++visited & 4095) == 0) step(0.15f + 0.2f * float(a) / samples_.size(), "jumps");
-            if (!jump_constraints_hold(samples_[a], samples_[b])) return;
-            if (!on_navmesh(samples_[b].point)) {
-                ++report_.rejected_no_landing;
-                return;
+        constexpr size_t kBlock = 2048;
+        std::vector<std::vector<uint32_t>> candidates(kBlock);
+        std::vector<std::array<uint32_t, 6>> verdicts(kBlock);
+        for (size_t block = 0; block < valid.size(); block += kBlock) {
+            step(0.15f + 0.2f * float(block) / float(valid.size()), "jumps");
+            const auto size = static_cast<uint32_t>(std::min(kBlock, valid.size() - block));
+            tasks_.parallel_for(size, 16, [&](uint32_t begin, uint32_t end) {
+                std::vector<uint32_t> partners;
+                for (uint32_t n = begin; n < end; ++n) {
+                    const uint32_t a = valid[block + n];
+                    partners.clear();
+                    partners_after(valid, block + n, grid, partners);
+                    candidates[n].clear();
+                    verdicts[n] = {};
+                    for (uint32_t b : partners) {
+                        const PairVerdict verdict = judge_pair(samples_[a], samples_[b]);
+                        ++verdicts[n][static_cast<size_t>(verdict)];
+                        if (verdict == PairVerdict::Candidate) candidates[n].push_back(b);
+                    }
+                }
+            });
+            for (uint32_t n = 0; n < size; ++n) {
+                for (size_t v = 0; v < verdicts[n].size(); ++v) count(static_cast<PairVerdict>(v), verdicts[n][v]);
+                for (uint32_t b : candidates[n]) add_jump_candidate(valid[block + n], b, next, redo, arcs);
             }
-            const uint64_t key = pair_key(a, b);
-            const auto cached = old_.jumps.find(key);
-            if (cached != old_.jumps.end() && !touches(cached->second.sweep.bounds, box_)) {
-                next.jumps.emplace(key, cached->second);
-                return;
-            }
-            const JumpArc arc = jump_arc(samples_[a].point, samples_[b].point, s_.jump_arc_height, s_.arc_segments);
-            LinkBake::JumpCandidate c;
-            c.a = a;
-            c.b = b;
-            c.link.kind = LinkKind::Jump;
-            c.link.start = samples_[a].point;
-            c.link.end = samples_[b].point;
-            c.link.apex = arc.apex;
-            c.link.bidirectional = true;  // every jump constraint holds both ways
-            c.link.generated = true;
-            c.link.start_polygon = samples_[a].polygon;
-            c.link.end_polygon = samples_[b].polygon;
-            set_requirements(c.link);
-            next.jumps.emplace(key, c);
-            redo.push_back(key);
-            arcs.push_back(arc.points);
-        });
+        }
         report_.jump_candidates = static_cast<uint32_t>(next.jumps.size());
         step(0.35f, "jump clearance");
         std::vector<const std::vector<Vec3>*> paths;
