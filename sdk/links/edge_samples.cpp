@@ -4,6 +4,8 @@
 #include <cmath>
 #include <unordered_map>
 
+#include "util/error.h"
+
 namespace nl {
 namespace {
 
@@ -26,6 +28,14 @@ EdgeSampling sample_edges(const NavMesh& mesh, const LinkSettings& s) {
     EdgeSampling out;
     const std::vector<BoundaryEdge> edges = mesh.boundary_edges();
     out.edges = static_cast<uint32_t>(edges.size());
+
+    // Counted before anything is allocated: a huge navmesh with a fine spacing is refused, not a
+    // bake that runs out of memory or overflows its counts.
+    double planned = 0.0;
+    for (const BoundaryEdge& e : edges) planned += std::max(1.0, std::round(double((e.end - e.start).norm()) / s.sample_spacing));
+    if (planned > kMaxEdgeSamples)
+        fail(ErrorCode::InvalidArgument, "sample_spacing ", s.sample_spacing, " m would give ", planned,
+             " take-off samples along this navmesh's boundary (at most ", kMaxEdgeSamples, "): raise it");
 
     std::vector<uint32_t> short_edges;
     for (uint32_t i = 0; i < edges.size(); ++i) {

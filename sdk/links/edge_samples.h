@@ -26,6 +26,10 @@ struct EdgeSampling {
     uint32_t dropped_edges = 0;   // short edges in groups too small, or with no horizontal outward
 };
 
+// Far above any real level (a 940,000-triangle one has 64,000), low enough to fail before memory does.
+constexpr double kMaxEdgeSamples = 4'000'000;
+
+// Throws InvalidArgument when the boundary would need more than kMaxEdgeSamples samples.
 EdgeSampling sample_edges(const NavMesh& mesh, const LinkSettings& settings);
 
 }  // namespace nl

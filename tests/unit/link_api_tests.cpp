@@ -277,3 +277,30 @@ TEST_CASE("a cancelled bake changes nothing; progress runs from 0 to 1") {
           (NL_STATUS_FAILURE | NL_STATUS_INVALID_ARGUMENT));
     CHECK(last_error().find("max_link_distance") != std::string::npos);
 }
+
+TEST_CASE("a boundary that would need millions of take-off samples is refused before any work") {
+    nl_world* world = nullptr;
+    REQUIRE(nl_world_create(nullptr, &world) == NL_STATUS_SUCCESS);
+    // One square polygon 200 km across: 800 km of boundary.
+    const float vertices[] = {0, 0, 0, 0, 0, 200000, 200000, 0, 200000, 200000, 0, 0};
+    const uint32_t indices[] = {0, 1, 2, 3};
+    const uint8_t corners[] = {4};
+    nl_navmesh_def def = nl_default_navmesh_def();
+    def.vertices = vertices;
+    def.vertex_count = 4;
+    def.indices = indices;
+    def.polygon_vertex_counts = corners;
+    def.polygon_count = 1;
+    nl_navmesh_id navmesh{};
+    REQUIRE_MESSAGE(nl_navmesh_add(world, &def, &navmesh) == NL_STATUS_SUCCESS, nl_get_last_error_message());
+
+    nl_link_settings settings = nl_default_link_settings();
+    settings.sample_spacing = 0.05f;  // 16 million samples
+    CHECK(nl_navmesh_generate_links(world, navmesh, &settings, nullptr, nullptr, nullptr) ==
+          (NL_STATUS_FAILURE | NL_STATUS_INVALID_ARGUMENT));
+    CHECK(std::string(nl_get_last_error_message()).find("sample_spacing") != std::string::npos);
+    uint32_t count = 1;
+    CHECK(nl_navmesh_get_links(world, navmesh, nullptr, 0, &count) == NL_STATUS_SUCCESS);
+    CHECK(count == 0);
+    nl_world_destroy(world);
+}

@@ -689,7 +689,8 @@ typedef int32_t nl_progress_fn(void* user, float fraction, const char* stage);
  *  and the plugin's name. `settings` is borrowed (NULL = defaults); `progress`
  *  is optional (`user` is passed back to it); `out_report` is optional (caller-owned, `size` set).
  *  Returns SUCCESS, or a failure with INVALID_HANDLE (also when the navmesh was removed while the
- *  links were being generated: nothing is stored), INVALID_ARGUMENT (a setting, named),
+ *  links were being generated: nothing is stored), INVALID_ARGUMENT (a setting, named; also a sample_spacing that
+ *  would put more than 4,000,000 take-off samples on this navmesh's boundary),
  *  PARSE_ERROR (malformed plugin_settings_json, found before any work), CANCELLED (progress
  *  returned 0: the navmesh's links are as they were), OUT_OF_MEMORY.
  *  Generations and updates of one navmesh run one after the other; a progress callback must not
