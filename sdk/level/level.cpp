@@ -252,6 +252,17 @@ TriangleMesh Level::world_triangles() const {
     return out;
 }
 
+std::array<Vec3, 3> Level::world_triangle(Handle h, uint32_t primitive) const {
+    std::shared_lock lock(mutex_);
+    const Mesh* mesh = meshes_.find(h);
+    if (!mesh) fail_stale("mesh", h);
+    if (primitive >= mesh->object.triangles.size())
+        fail(ErrorCode::InvalidArgument, "triangle ", primitive, " is out of range (", mesh->object.triangles.size(), ")");
+    const Triangle& t = mesh->object.triangles[primitive];
+    return {mesh->transform * mesh->object.vertices[t[0]], mesh->transform * mesh->object.vertices[t[1]],
+            mesh->transform * mesh->object.vertices[t[2]]};
+}
+
 std::shared_lock<SharedMutex> Level::lock_committed() const {
     for (;;) {
         std::shared_lock shared(mutex_);
@@ -286,6 +297,7 @@ RayHit Level::resolve_hit(const RTCRayHit& rh, const Ray& ray) const {
     hit.normal = normal.normalized();
     hit.mesh = h;
     hit.triangle = mesh.input_index.empty() ? rh.hit.primID : mesh.input_index[rh.hit.primID];
+    hit.primitive = rh.hit.primID;
     return hit;
 }
 

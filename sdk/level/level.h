@@ -49,7 +49,8 @@ struct RayHit {
     Vec3 point = Vec3::Zero();
     Vec3 normal = Vec3::Zero();
     Handle mesh;
-    uint32_t triangle = 0;  // index in the mesh's input triangles
+    uint32_t triangle = 0;   // index in the mesh's input triangles
+    uint32_t primitive = 0;  // index in the mesh's kept triangles (Level::world_triangle)
 };
 
 struct Segment {
@@ -78,6 +79,8 @@ public:
 
     // World-space triangles of every mesh under its current transform (for reference checks, builders).
     TriangleMesh world_triangles() const;
+    // The corners of a hit's triangle (RayHit::mesh, RayHit::primitive), in world space.
+    std::array<Vec3, 3> world_triangle(Handle mesh, uint32_t primitive) const;
 
     // Batched queries, parallel over the task system; out spans must have rays.size() entries.
     void cast_rays(const Ray* rays, uint32_t count, RayHit* out) const;

@@ -41,6 +41,27 @@ bool touches(const Aabb& a, const Aabb* box) {
     return (a.min.array() - kPad <= box->max.array()).all() && (a.max.array() + kPad >= box->min.array()).all();
 }
 
+// Whether the vertical segment from `top` down `reach` crosses the triangle a millimetre inside its
+// edges and ends, so that casting it could only report a hit.
+bool crosses_well_inside(const std::array<Vec3, 3>& t, const Vec3& top, float reach) {
+    constexpr float kInside = 1e-3f;
+    const Eigen::Vector2f a(t[0].x(), t[0].z()), b(t[1].x(), t[1].z()), c(t[2].x(), t[2].z()), p(top.x(), top.z());
+    auto cross = [](const Eigen::Vector2f& u, const Eigen::Vector2f& v) { return u.x() * v.y() - u.y() * v.x(); };
+    const float area = cross(b - a, c - a);
+    if (std::fabs(area) < 1e-6f) return false;  // (nearly) vertical as seen from above
+    const float side = area > 0.0f ? 1.0f : -1.0f;
+    const Eigen::Vector2f corners[3] = {a, b, c};
+    for (int i = 0; i < 3; ++i) {
+        const Eigen::Vector2f& from = corners[i];
+        const Eigen::Vector2f& to = corners[(i + 1) % 3];
+        const float length = (to - from).norm();
+        if (side * cross(to - from, p - from) < kInside * length) return false;
+    }
+    const float u = cross(p - a, c - a) / area, v = cross(b - a, p - a) / area;
+    const float y = t[0].y() + u * (t[1].y() - t[0].y()) + v * (t[2].y() - t[0].y());
+    return y <= top.y() - kInside && y >= top.y() - reach + kInside;
+}
+
 void set_requirements(Link& l) {
     const Vec3 d = l.end - l.start;
     l.requirements.gap = Vec3(d.x(), 0.0f, d.z()).norm();
@@ -135,16 +156,27 @@ private:
         // and a sample stops at its rim.
         std::vector<size_t> looking(redo.size());
         for (size_t k = 0; k < redo.size(); ++k) looking[k] = k;
+        // Indexed bakes first try the triangle the ground ray hit: a probe that crosses it well inside
+        // is on ground without a ray (floors are mostly few large triangles).
+        std::vector<std::array<Vec3, 3>> floor(method_ == BakeMethod::Indexed ? redo.size() : 0);
+        for (size_t k = 0; k < floor.size(); ++k)
+            if (ground[k].hit) floor[k] = level_.world_triangle(ground[k].mesh, ground[k].primitive);
         for (uint32_t j = 1; j <= steps && !looking.empty(); ++j) {
-            std::vector<Segment> below(looking.size());
+            std::vector<Segment> below;
+            std::vector<size_t> cast_for;  // positions in `looking` of the probes cast
+            std::vector<uint8_t> on_ground(looking.size(), 1);
             for (size_t n = 0; n < looking.size(); ++n) {
-                const Vec3 top = probe_top(looking[n], j);
-                below[n] = Segment{top, top - Vec3(0, step_reach, 0)};
+                const size_t k = looking[n];
+                const Vec3 top = probe_top(k, j);
+                if (!floor.empty() && ground[k].hit && crosses_well_inside(floor[k], top, step_reach)) continue;
+                below.push_back(Segment{top, top - Vec3(0, step_reach, 0)});
+                cast_for.push_back(n);
             }
             const std::vector<uint8_t> ground_below = blocked(below);
+            for (size_t c = 0; c < cast_for.size(); ++c) on_ground[cast_for[c]] = ground_below[c];
             size_t still = 0;
             for (size_t n = 0; n < looking.size(); ++n) {
-                if (ground_below[n]) looking[still++] = looking[n];
+                if (on_ground[n]) looking[still++] = looking[n];
                 else next.takeoffs[redo[looking[n]]].rim = std::min(j * kRimStep, s_.falloff_distance);
             }
             looking.resize(still);

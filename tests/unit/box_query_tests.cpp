@@ -153,3 +153,36 @@ TEST_CASE("boxes_empty agrees with every triangle, for static and movable meshes
         CHECK(blocked_count == 0);
     }
 }
+
+TEST_CASE("world_triangle gives the corners of the triangle a ray hit, static and movable") {
+    nl::TriangleMesh mesh = to_mesh(nl::levelgen::generate_default_level(5));
+    mesh.triangles.insert(mesh.triangles.begin(), {0, 0, 1});  // degenerate: dropped, so kept != input
+    nl::Transform moved = nl::Transform::Identity();
+    moved.translate(Vec3(-3.0f, 2.0f, 7.0f));
+    moved.rotate(Eigen::AngleAxisf(0.8f, Vec3::UnitY()));
+    moved.scale(Vec3(1.2f, 0.9f, 1.0f));
+    for (const uint32_t flags : {0u, uint32_t(nl::kMeshMovable)}) {
+        auto tasks = nl::make_tbb_task_system(1);
+        nl::Level level(*tasks);
+        const nl::Handle h = level.add_mesh(mesh, moved, flags, 0);
+        const nl::Aabb b = level.info(h).bounds;
+        std::mt19937 rng(3);
+        std::uniform_real_distribution<float> ux(b.min.x(), b.max.x()), uz(b.min.z(), b.max.z());
+        int hits = 0;
+        for (int i = 0; i < 500; ++i) {
+            const nl::Ray ray{Vec3(ux(rng), b.max.y() + 1.0f, uz(rng)), Vec3(0, -1, 0), 1000.0f};
+            nl::RayHit hit;
+            level.cast_rays(&ray, 1, &hit);
+            if (!hit.hit) continue;
+            ++hits;
+            const auto t = level.world_triangle(hit.mesh, hit.primitive);
+            // The hit point lies in the triangle's plane, and the input triangle is the same one.
+            const Vec3 n = (t[1] - t[0]).cross(t[2] - t[0]).normalized();
+            CHECK(std::fabs(n.dot(hit.point - t[0])) < 1e-3f);
+            const nl::Triangle& input = mesh.triangles[hit.triangle];
+            CHECK(((moved * mesh.vertices[input[0]]) - t[0]).norm() < 1e-4f);
+        }
+        CHECK(hits > 100);
+        CHECK_THROWS(level.world_triangle(h, 1u << 30));
+    }
+}
