@@ -4,6 +4,7 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <tuple>
 #include <unordered_set>
 
 #include "links/clearance.h"
@@ -138,37 +139,45 @@ private:
             const Vec3 out = e.point + e.outward * std::min(step * kRimStep, s_.falloff_distance);
             return Vec3(out.x(), next.takeoffs[redo[k]].ground_y + probe, out.z());
         };
-        for (size_t k = 0; k < redo.size(); ++k) {
-            const EdgeSample& e = samples_[redo[k]];
-            LinkBake::TakeoffState& t = next.takeoffs[redo[k]];
-            t = LinkBake::TakeoffState{};
-            // Correction for navmeshes that sit above the floor (Recast's rounds up) or sink into it.
-            t.ground_y = ground[k].hit ? ground[k].point.y() : e.point.y();
-            t.rim = -1.0f;
-            // Every probe the rim search may cast, so a change anywhere along it redoes the sample.
-            t.bounds = bounds_of({e.point + Vec3(0, probe, 0), e.point - Vec3(0, 1.5f, 0)});
-            for (uint32_t j = 1; j <= steps; ++j) {
-                t.bounds.grow(probe_top(k, j));
-                t.bounds.grow(probe_top(k, j) - Vec3(0, step_reach, 0));
+        // Indexed bakes first try the triangle the ground ray hit: a probe that crosses it well inside
+        // is on ground without a ray (floors are mostly few large triangles).
+        const bool floor_shortcut = method_ == BakeMethod::Indexed;
+        std::vector<std::array<Vec3, 3>> floor(floor_shortcut ? redo.size() : 0);
+        tasks_.parallel_for(static_cast<uint32_t>(redo.size()), 256, [&](uint32_t begin, uint32_t end) {
+            for (uint32_t k = begin; k < end; ++k) {
+                const EdgeSample& e = samples_[redo[k]];
+                LinkBake::TakeoffState& t = next.takeoffs[redo[k]];
+                t = LinkBake::TakeoffState{};
+                // Correction for navmeshes that sit above the floor (Recast's rounds up) or sink into it.
+                t.ground_y = ground[k].hit ? ground[k].point.y() : e.point.y();
+                t.rim = -1.0f;
+                // Every probe the rim search may cast, so a change anywhere along it redoes the sample.
+                t.bounds = bounds_of({e.point + Vec3(0, probe, 0), e.point - Vec3(0, 1.5f, 0)});
+                for (uint32_t j = 1; j <= steps; ++j) {
+                    t.bounds.grow(probe_top(k, j));
+                    t.bounds.grow(probe_top(k, j) - Vec3(0, step_reach, 0));
+                }
+                if (floor_shortcut && ground[k].hit) floor[k] = level_.world_triangle(ground[k].mesh, ground[k].primitive);
             }
-        }
+        });
         // One step out at a time, for the samples still on ground: only a hit or a miss is needed,
         // and a sample stops at its rim.
         std::vector<size_t> looking(redo.size());
         for (size_t k = 0; k < redo.size(); ++k) looking[k] = k;
-        // Indexed bakes first try the triangle the ground ray hit: a probe that crosses it well inside
-        // is on ground without a ray (floors are mostly few large triangles).
-        std::vector<std::array<Vec3, 3>> floor(method_ == BakeMethod::Indexed ? redo.size() : 0);
-        for (size_t k = 0; k < floor.size(); ++k)
-            if (ground[k].hit) floor[k] = level_.world_triangle(ground[k].mesh, ground[k].primitive);
         for (uint32_t j = 1; j <= steps && !looking.empty(); ++j) {
+            std::vector<uint8_t> on_ground(looking.size(), 1), proven(looking.size(), 0);
+            if (floor_shortcut)
+                tasks_.parallel_for(static_cast<uint32_t>(looking.size()), 512, [&](uint32_t begin, uint32_t end) {
+                    for (uint32_t n = begin; n < end; ++n) {
+                        const size_t k = looking[n];
+                        proven[n] = ground[k].hit && crosses_well_inside(floor[k], probe_top(k, j), step_reach);
+                    }
+                });
             std::vector<Segment> below;
             std::vector<size_t> cast_for;  // positions in `looking` of the probes cast
-            std::vector<uint8_t> on_ground(looking.size(), 1);
             for (size_t n = 0; n < looking.size(); ++n) {
-                const size_t k = looking[n];
-                const Vec3 top = probe_top(k, j);
-                if (!floor.empty() && ground[k].hit && crosses_well_inside(floor[k], top, step_reach)) continue;
+                if (proven[n]) continue;
+                const Vec3 top = probe_top(looking[n], j);
                 below.push_back(Segment{top, top - Vec3(0, step_reach, 0)});
                 cast_for.push_back(n);
             }
@@ -475,6 +484,11 @@ private:
         step(0.7f, "drops");
 
         const Vec3 landing_box(std::max(body_.radius * 1.5f, 0.3f), 1.0f, std::max(body_.radius * 1.5f, 0.3f));
+        std::vector<NavPoint> landings(probed.size());
+        tasks_.parallel_for(static_cast<uint32_t>(probed.size()), 256, [&](uint32_t begin, uint32_t end) {
+            for (uint32_t k = begin; k < end; ++k)
+                if (hits[k].hit) landings[k] = locate(hits[k].point, landing_box);
+        });
         std::vector<uint64_t> to_sweep;
         for (size_t k = 0; k < probed.size(); ++k) {
             LinkBake::DropProbe& d = next.drops[probed[k]];
@@ -483,7 +497,7 @@ private:
             d.bounds = bounds_of({probe.origin, probe.origin + probe.direction * (hits[k].hit ? hits[k].distance : reach)});
             d.outcome = 1;
             if (!hits[k].hit) continue;
-            const NavPoint landing = locate(hits[k].point, landing_box);
+            const NavPoint& landing = landings[k];
             if (!landing.found || landing.polygon == samples_[i].polygon) continue;
             const float drop = samples_[i].point.y() - landing.point.y();
             if (drop <= mesh_.agent().max_climb || drop > s_.max_drop_distance) {
@@ -592,10 +606,14 @@ private:
     // One link per traversal. Jumps come first, so a drop that repeats a jump goes; within a kind, a
     // fixed order of positions decides, so the result does not depend on thread count.
     std::vector<Link> merge(std::vector<Link> links) {
-        auto order = [](const Link& l) {
-            return std::make_tuple(static_cast<uint32_t>(l.kind), l.start.x(), l.start.z(), l.start.y(), l.end.x(), l.end.z(), l.end.y());
-        };
-        std::stable_sort(links.begin(), links.end(), [&](const Link& a, const Link& b) { return order(a) < order(b); });
+        // Sorted through an index: Links are large, their order keys small.
+        using OrderKey = std::tuple<uint32_t, float, float, float, float, float, float>;
+        std::vector<std::pair<OrderKey, uint32_t>> order(links.size());
+        for (uint32_t k = 0; k < links.size(); ++k) {
+            const Link& l = links[k];
+            order[k] = {OrderKey{static_cast<uint32_t>(l.kind), l.start.x(), l.start.z(), l.start.y(), l.end.x(), l.end.z(), l.end.y()}, k};
+        }
+        std::sort(order.begin(), order.end());  // ties keep input order: the index is the last key
         const float r = s_.merge_distance;
         auto same_traversal = [&](const Link& a, const Link& b) {
             if ((a.start - b.start).norm() <= r && (a.end - b.end).norm() <= r) return true;
@@ -611,36 +629,42 @@ private:
         const float cell = std::max(r, 0.01f);
         auto key = [&](const Vec3& p) { return Key{int64_t(std::floor(p.x() / cell)), int64_t(std::floor(p.z() / cell))}; };
         // Kept links indexed by the cells of both their ends, so either orientation is found (brute
-        // force: compared with every kept link).
-        std::unordered_map<Key, std::vector<uint32_t>, Hash> by_end;
+        // force: compared with every kept link). Each cell heads a list threaded through `next_in_cell`.
+        constexpr uint32_t kNone = ~0u;
+        std::unordered_map<Key, uint32_t, Hash> cell_head;
+        cell_head.reserve(2 * links.size());
+        std::vector<uint32_t> next_in_cell;  // two entries per kept link: its start's cell, its end's
         std::vector<Link> kept;
-        for (const Link& l : links) {
+        kept.reserve(links.size());
+        auto file = [&](const Key& k, uint32_t entry) {
+            const auto [it, fresh] = cell_head.try_emplace(k, entry);
+            next_in_cell[entry] = fresh ? kNone : it->second;
+            it->second = entry;
+        };
+        for (const auto& [order_key, index] : order) {
+            const Link& l = links[index];
             bool duplicate = false;
             if (method_ == BakeMethod::BruteForce) {
                 duplicate = std::any_of(kept.begin(), kept.end(), [&](const Link& k) { return same_traversal(k, l); });
-                if (duplicate) ++report_.rejected_duplicate;
-                else kept.push_back(l);
-                continue;
+            } else {
+                const Key k = key(l.start);
+                for (int64_t dz = -1; dz <= 1 && !duplicate; ++dz)
+                    for (int64_t dx = -1; dx <= 1 && !duplicate; ++dx) {
+                        const auto it = cell_head.find(Key{k.x + dx, k.z + dz});
+                        for (uint32_t e = it == cell_head.end() ? kNone : it->second; e != kNone && !duplicate; e = next_in_cell[e])
+                            duplicate = same_traversal(kept[e / 2], l);
+                    }
             }
-            const Key k = key(l.start);
-            for (int64_t dz = -1; dz <= 1 && !duplicate; ++dz)
-                for (int64_t dx = -1; dx <= 1 && !duplicate; ++dx) {
-                    const auto it = by_end.find(Key{k.x + dx, k.z + dz});
-                    if (it == by_end.end()) continue;
-                    for (uint32_t j : it->second)
-                        if (same_traversal(kept[j], l)) {
-                            duplicate = true;
-                            break;
-                        }
-                }
             if (duplicate) {
                 ++report_.rejected_duplicate;
                 continue;
             }
-            const auto index = static_cast<uint32_t>(kept.size());
-            by_end[key(l.start)].push_back(index);
-            if (!(key(l.end) == key(l.start))) by_end[key(l.end)].push_back(index);
+            const auto index_kept = static_cast<uint32_t>(kept.size());
             kept.push_back(l);
+            if (method_ == BakeMethod::BruteForce) continue;
+            next_in_cell.resize(2 * kept.size(), kNone);
+            file(key(l.start), 2 * index_kept);
+            if (!(key(l.end) == key(l.start))) file(key(l.end), 2 * index_kept + 1);
         }
         return kept;
     }
