@@ -107,6 +107,25 @@ nl_link to_c(const nl::StoredLink& stored, nl::Handle navmesh) {
 nl::Vec3 read_end(const float* p, const char* name) { return nl::capi::read_position(p, "def->", name); }
 
 // A host's link def as a core link on `mesh`: both ends must be near the navmesh.
+// Requirements left all zero are the ends' own (a manual link between two points asks for its gap,
+// rise and drop): the same for nl_link_add and a JSON load.
+void requirements_from_ends_if_unset(nl::Link& l) {
+    nl::LinkRequirements& r = l.requirements;
+    if (r.gap != 0.0f || r.rise != 0.0f || r.drop != 0.0f) return;
+    const nl::Vec3 d = l.end - l.start;
+    r.gap = nl::Vec3(d.x(), 0.0f, d.z()).norm();
+    r.rise = std::max(0.0f, d.y());
+    r.drop = std::max(0.0f, -d.y());
+}
+
+// The polygon nearest a link end within kEndReach; INVALID_ARGUMENT naming the end otherwise.
+uint32_t polygon_near(const nl::NavMesh& mesh, const nl::Vec3& p, const std::string& name) {
+    const nl::NavPoint near = mesh.find_nearest(p, nl::Vec3::Constant(kEndReach));
+    if (!near.found || near.distance > kEndReach)
+        fail(ErrorCode::InvalidArgument, name, " is not within ", kEndReach, " m of the navmesh");
+    return near.polygon;
+}
+
 nl::Link link_from_def(const nl_link_def& in, const nl::NavMesh& mesh) {
     const nl_link_def def = nl::capi::read_growable(in, nl_default_link_def(), kLinkDefFirstSize, "def");
     const nl::LinkKind kind = static_cast<nl::LinkKind>(def.kind);
@@ -129,20 +148,9 @@ nl::Link link_from_def(const nl_link_def& in, const nl::NavMesh& mesh) {
     l.cost_modifier = def.cost_modifier;
     l.user_data = def.user_data;
     l.requirements = nl::LinkRequirements{r.gap, r.rise, r.drop, r.clearance_width, r.abilities};
-    if (r.gap == 0.0f && r.rise == 0.0f && r.drop == 0.0f) {
-        const nl::Vec3 d = l.end - l.start;
-        l.requirements.gap = nl::Vec3(d.x(), 0.0f, d.z()).norm();
-        l.requirements.rise = std::max(0.0f, d.y());
-        l.requirements.drop = std::max(0.0f, -d.y());
-    }
-    const nl::Vec3 reach = nl::Vec3::Constant(kEndReach);
-    const nl::NavPoint start = mesh.find_nearest(l.start, reach), end = mesh.find_nearest(l.end, reach);
-    if (!start.found || start.distance > kEndReach)
-        fail(ErrorCode::InvalidArgument, "def->start is not within ", kEndReach, " m of the navmesh");
-    if (!end.found || end.distance > kEndReach)
-        fail(ErrorCode::InvalidArgument, "def->end is not within ", kEndReach, " m of the navmesh");
-    l.start_polygon = start.polygon;
-    l.end_polygon = end.polygon;
+    requirements_from_ends_if_unset(l);
+    l.start_polygon = polygon_near(mesh, l.start, "def->start");
+    l.end_polygon = polygon_near(mesh, l.end, "def->end");
     return l;
 }
 
@@ -442,18 +450,22 @@ NL_API nl_status nl_navmesh_load_links_json(nl_world* world, nl_navmesh_id navme
         std::vector<nl::Link> links = nl::links_from_json(std::string_view(json ? json : "", length));
         // The polygons under the ends: the saved ones while they still hold the ends (the file may
         // come from another build of the navmesh), else located again.
-        auto polygon_under = [&](const nl::Vec3& p, uint32_t saved) {
+        // An end must be as near the navmesh as nl_link_add asks, else the file is refused.
+        auto polygon_under = [&](const nl::Vec3& p, uint32_t saved, const std::string& name) {
             if (saved < mesh->polygon_count()) {
                 // Seen from above: detail heights may sit a voxel above the polygon's own corners.
                 const nl::Vec3 q = mesh->closest_point_on_polygon(saved, p);
                 if (nl::Vec3(q.x() - p.x(), 0.0f, q.z() - p.z()).norm() < 0.05f && std::fabs(q.y() - p.y()) < kEndReach)
                     return saved;
             }
-            return mesh->find_nearest(p, nl::Vec3::Constant(kEndReach)).polygon;
+            return polygon_near(*mesh, p, name);
         };
-        for (nl::Link& l : links) {
-            l.start_polygon = polygon_under(l.start, l.start_polygon);
-            l.end_polygon = polygon_under(l.end, l.end_polygon);
+        for (size_t i = 0; i < links.size(); ++i) {
+            nl::Link& l = links[i];
+            const std::string at = "links[" + std::to_string(i) + "]";
+            l.start_polygon = polygon_under(l.start, l.start_polygon, at + ".start");
+            l.end_polygon = polygon_under(l.end, l.end_polygon, at + ".end");
+            requirements_from_ends_if_unset(l);
         }
         const auto serializer = w.bakes->serializer(handle);
         std::lock_guard one_at_a_time(*serializer);

@@ -304,3 +304,41 @@ TEST_CASE("a boundary that would need millions of take-off samples is refused be
     CHECK(count == 0);
     nl_world_destroy(world);
 }
+
+TEST_CASE("loading JSON holds links to nl_link_add's rules: ends near the navmesh, requirements from the ends") {
+    Fixture f;
+    f.generate();
+    const auto before = f.links();
+    REQUIRE(!before.empty());
+    const nl_nav_polygon a = f.polygon(0), b = f.polygon(1);
+    auto point = [](const float* p, float lift) {
+        return "[" + std::to_string(p[0]) + "," + std::to_string(p[1] + lift) + "," + std::to_string(p[2]) + "]";
+    };
+    auto file = [&](float lift) {
+        return std::string(R"({"format": "navlink-links", "version": 1, "links": [)") +
+               R"({"kind": "manual", "start": )" + point(a.centre, 0) + R"(, "end": )" + point(b.centre, 0) + "}," +
+               R"({"kind": "manual", "start": )" + point(a.centre, lift) + R"(, "end": )" + point(b.centre, 0) + "}]}";
+    };
+
+    // The second link's start 10 m above the navmesh: refused, named, nothing changes.
+    const std::string far = file(10.0f);
+    CHECK(nl_navmesh_load_links_json(f.world, f.navmesh, far.data(), far.size(), nullptr) ==
+          (NL_STATUS_FAILURE | NL_STATUS_INVALID_ARGUMENT));
+    CHECK(last_error().find("links[1].start") != std::string::npos);
+    CHECK(f.links().size() == before.size());
+
+    // On the navmesh, without "requires": gap, rise and drop come from the ends.
+    const std::string near = file(0.0f);
+    uint32_t count = 0;
+    REQUIRE_MESSAGE(nl_navmesh_load_links_json(f.world, f.navmesh, near.data(), near.size(), &count) == NL_STATUS_SUCCESS,
+                    last_error());
+    CHECK(count == 2);
+    const auto loaded = f.links();
+    REQUIRE(loaded.size() == 2);
+    const float dx = b.centre[0] - a.centre[0], dy = b.centre[1] - a.centre[1], dz = b.centre[2] - a.centre[2];
+    CHECK(loaded[0].requirements.gap == doctest::Approx(std::sqrt(dx * dx + dz * dz)).epsilon(1e-4));
+    CHECK(loaded[0].requirements.rise == doctest::Approx(std::max(0.0f, dy)).epsilon(1e-4));
+    CHECK(loaded[0].requirements.drop == doctest::Approx(std::max(0.0f, -dy)).epsilon(1e-4));
+    CHECK(loaded[0].start_polygon != NL_NO_POLYGON);
+    CHECK(loaded[0].end_polygon != NL_NO_POLYGON);
+}

@@ -722,12 +722,14 @@ NL_API nl_status nl_navmesh_save_links_json(const nl_world* world, nl_navmesh_id
                                             size_t capacity, size_t* out_length);
 
 /** Replaces all of the navmesh's links with those in `json` (`length` bytes, borrowed); new ids are
- *  given. `out_count` (optional) receives how many were loaded. On failure nothing changes. On
- *  success the last generation is forgotten: nl_navmesh_update_links_in_box returns NOT_FOUND until
- *  the next nl_navmesh_generate_links.
+ *  given. Each link is held to nl_link_add's rules: both ends within 1 m of the navmesh, and a link
+ *  whose "requires" has no gap, rise or drop asks for those of its ends. `out_count` (optional)
+ *  receives how many were loaded. On failure nothing changes. On success the last generation is
+ *  forgotten: nl_navmesh_update_links_in_box returns NOT_FOUND until the next
+ *  nl_navmesh_generate_links.
  *  Returns SUCCESS, or a failure with PARSE_ERROR, VERSION_MISMATCH (another format or version),
- *  INVALID_ARGUMENT (a field missing or wrong, named by its path, e.g. "links[3].start"),
- *  INVALID_HANDLE. Thread-safe. */
+ *  INVALID_ARGUMENT (a field missing or wrong, or an end off the navmesh, named by its path, e.g.
+ *  "links[3].start"), INVALID_HANDLE. Thread-safe. */
 NL_API nl_status nl_navmesh_load_links_json(nl_world* world, nl_navmesh_id navmesh, const char* json, size_t length,
                                             uint32_t* out_count);
 
