@@ -5,11 +5,11 @@
 
 namespace nl {
 
-OrientedBox box_around(const Eigen::Matrix3f& axes, std::initializer_list<Vec3> points, float pad) {
+OrientedBox box_around(const Eigen::Matrix3f& axes, const Vec3* points, size_t count, float pad) {
     Vec3 low = Vec3::Constant(std::numeric_limits<float>::infinity());
     Vec3 high = -low;
-    for (const Vec3& p : points) {
-        const Vec3 local = axes.transpose() * p;
+    for (size_t i = 0; i < count; ++i) {
+        const Vec3 local = axes.transpose() * points[i];
         low = low.cwiseMin(local);
         high = high.cwiseMax(local);
     }
@@ -18,6 +18,16 @@ OrientedBox box_around(const Eigen::Matrix3f& axes, std::initializer_list<Vec3> 
     box.center = axes * (0.5f * (low + high));
     box.half_extents = 0.5f * (high - low) + Vec3::Constant(pad);
     return box;
+}
+
+Eigen::Matrix3f axes_along(const Vec3& along, const Vec3& side) {
+    const Vec3 x = along.normalized();
+    Vec3 y = side - side.dot(x) * x;
+    if (y.squaredNorm() < 1e-8f) y = x.unitOrthogonal();
+    y.normalize();
+    Eigen::Matrix3f axes;
+    axes << x, y, x.cross(y);
+    return axes;
 }
 
 bool triangle_overlaps_box(const Vec3& a, const Vec3& b, const Vec3& c, const OrientedBox& box) {

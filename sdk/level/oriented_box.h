@@ -2,7 +2,7 @@
 // a bundle of occlusion segments clear without casting them.
 #pragma once
 
-#include <initializer_list>
+#include <cstddef>
 
 #include "level/geometry.h"
 
@@ -19,7 +19,11 @@ struct OrientedBox {
 
 // The smallest box along `axes` (orthonormal columns) holding every point, grown by `pad` on every
 // side.
-OrientedBox box_around(const Eigen::Matrix3f& axes, std::initializer_list<Vec3> points, float pad);
+OrientedBox box_around(const Eigen::Matrix3f& axes, const Vec3* points, size_t count, float pad);
+
+// Axes whose first is `along` and second `side` made square to it (any square direction when they
+// are parallel); `along` must not be zero.
+Eigen::Matrix3f axes_along(const Vec3& along, const Vec3& side);
 
 // Whether the triangle and the box share a point (separating axis test over the box's three axes,
 // the triangle's normal and the nine edge-by-axis cross products). Touching counts as sharing.

@@ -1,6 +1,7 @@
 #include "links/clearance.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <iterator>
 #include <limits>
@@ -60,25 +61,44 @@ void append_piece_segments(const SweepPiece& piece, float radius, std::vector<Se
     }
 }
 
-OrientedBox piece_box(const SweepPiece& piece, float radius) {
-    // Axes: along the piece, then the side direction made square to it, then the third.
-    const Vec3 along = (piece.to - piece.from).normalized();
-    Vec3 across = piece.side - piece.side.dot(along) * along;
-    if (across.squaredNorm() < 1e-8f) across = along.unitOrthogonal();
-    across.normalize();
-    Eigen::Matrix3f axes;
-    axes << along, across, along.cross(across);
+namespace {
+
+// The eight corners of the parallelepiped every segment of the piece lies in.
+std::array<Vec3, 8> piece_corners(const SweepPiece& piece, float radius) {
     const float wide = *std::max_element(std::begin(kSweepOffsets), std::end(kSweepOffsets)) * radius;
     const float low = *std::min_element(std::begin(piece.heights), std::end(piece.heights));
     const float high = *std::max_element(std::begin(piece.heights), std::end(piece.heights));
     const Vec3 s = piece.side * wide, l(0.0f, low, 0.0f), h(0.0f, high, 0.0f);
-    // A millimetre, and a few float steps at the size of the coordinates.
-    const float magnitude = std::max(piece.from.cwiseAbs().maxCoeff(), piece.to.cwiseAbs().maxCoeff()) + wide + high;
-    const float pad = 1e-3f + 8.0f * std::numeric_limits<float>::epsilon() * magnitude;
-    return box_around(axes,
-                      {piece.from - s + l, piece.from + s + l, piece.from - s + h, piece.from + s + h,
-                       piece.to - s + l, piece.to + s + l, piece.to - s + h, piece.to + s + h},
-                      pad);
+    return {piece.from - s + l, piece.from + s + l, piece.from - s + h, piece.from + s + h,
+            piece.to - s + l,   piece.to + s + l,   piece.to - s + h,   piece.to + s + h};
+}
+
+// A millimetre, and a few float steps at the size of the coordinates.
+float rounding_pad(const Vec3* points, size_t count) {
+    float magnitude = 0.0f;
+    for (size_t i = 0; i < count; ++i) magnitude = std::max(magnitude, points[i].cwiseAbs().maxCoeff());
+    return 1e-3f + 8.0f * std::numeric_limits<float>::epsilon() * magnitude;
+}
+
+}  // namespace
+
+OrientedBox piece_box(const SweepPiece& piece, float radius) {
+    const std::array<Vec3, 8> corners = piece_corners(piece, radius);
+    return box_around(axes_along(piece.to - piece.from, piece.side), corners.data(), corners.size(),
+                      rounding_pad(corners.data(), corners.size()));
+}
+
+OrientedBox path_box(const std::vector<SweepPiece>& pieces, float radius) {
+    std::vector<Vec3> corners;
+    corners.reserve(8 * pieces.size());
+    for (const SweepPiece& piece : pieces) {
+        const std::array<Vec3, 8> c = piece_corners(piece, radius);
+        corners.insert(corners.end(), c.begin(), c.end());
+    }
+    Vec3 along = pieces.back().to - pieces.front().from;
+    if (along.squaredNorm() < 1e-8f) along = pieces.front().to - pieces.front().from;
+    return box_around(axes_along(along, pieces.front().side), corners.data(), corners.size(),
+                      rounding_pad(corners.data(), corners.size()));
 }
 
 }  // namespace nl

@@ -51,4 +51,8 @@ void append_piece_segments(const SweepPiece& piece, float radius, std::vector<Se
 // none of them is blocked.
 OrientedBox piece_box(const SweepPiece& piece, float radius);
 
+// A box that holds every segment of a non-empty run of pieces (a whole jump arc): asked first, so
+// that an arc through open air costs one box query instead of one per piece.
+OrientedBox path_box(const std::vector<SweepPiece>& pieces, float radius);
+
 }  // namespace nl

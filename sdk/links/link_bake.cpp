@@ -344,22 +344,44 @@ private:
         for (size_t i = 0; i < paths.size(); ++i) first_piece[i + 1] = first_piece[i] + pieces[i].size();
         const auto piece_count = static_cast<uint32_t>(first_piece.back());
         std::vector<uint8_t> piece_clear(piece_count, 0);
+        std::vector<uint32_t> path_of(piece_count);
+        for (uint32_t i = 0; i < paths.size(); ++i)
+            for (size_t k = first_piece[i]; k < first_piece[i + 1]; ++k) path_of[k] = i;
         if (method_ == BakeMethod::Indexed) {
-            std::vector<OrientedBox> boxes(piece_count);
-            tasks_.parallel_for(static_cast<uint32_t>(paths.size()), 64, [&](uint32_t begin, uint32_t end) {
-                for (uint32_t i = begin; i < end; ++i)
-                    for (size_t k = 0; k < pieces[i].size(); ++k) boxes[first_piece[i] + k] = piece_box(pieces[i][k], body_.radius);
+            // Long paths (jump arcs) first as a whole: one query clears an arc through open air.
+            constexpr size_t kWholePathFrom = 4;
+            std::vector<uint32_t> long_paths;
+            for (uint32_t i = 0; i < paths.size(); ++i)
+                if (pieces[i].size() >= kWholePathFrom) long_paths.push_back(i);
+            std::vector<OrientedBox> path_boxes(long_paths.size());
+            tasks_.parallel_for(static_cast<uint32_t>(long_paths.size()), 64, [&](uint32_t begin, uint32_t end) {
+                for (uint32_t n = begin; n < end; ++n) path_boxes[n] = path_box(pieces[long_paths[n]], body_.radius);
             });
-            level_.boxes_empty(boxes.data(), piece_count, piece_clear.data());
-            report_.box_queries += piece_count;
+            std::vector<uint8_t> path_clear(long_paths.size(), 0);
+            level_.boxes_empty(path_boxes.data(), static_cast<uint32_t>(path_boxes.size()), path_clear.data());
+            for (size_t n = 0; n < long_paths.size(); ++n)
+                if (path_clear[n])
+                    std::fill(piece_clear.begin() + first_piece[long_paths[n]], piece_clear.begin() + first_piece[long_paths[n] + 1], 1);
+            // Then each piece not cleared with its path.
+            std::vector<uint32_t> asked;
+            for (uint32_t k = 0; k < piece_count; ++k)
+                if (!piece_clear[k]) asked.push_back(k);
+            std::vector<OrientedBox> boxes(asked.size());
+            tasks_.parallel_for(static_cast<uint32_t>(asked.size()), 256, [&](uint32_t begin, uint32_t end) {
+                for (uint32_t n = begin; n < end; ++n) {
+                    const uint32_t k = asked[n], i = path_of[k];
+                    boxes[n] = piece_box(pieces[i][k - first_piece[i]], body_.radius);
+                }
+            });
+            std::vector<uint8_t> clear(asked.size(), 0);
+            level_.boxes_empty(boxes.data(), static_cast<uint32_t>(boxes.size()), clear.data());
+            for (size_t n = 0; n < asked.size(); ++n) piece_clear[asked[n]] = clear[n];
+            report_.box_queries += long_paths.size() + asked.size();
         }
         // The pieces left to cast, kSegmentsPerPiece segments each.
         std::vector<uint32_t> cast_pieces;
         for (uint32_t k = 0; k < piece_count; ++k)
             if (!piece_clear[k]) cast_pieces.push_back(k);
-        std::vector<uint32_t> path_of(piece_count);
-        for (uint32_t i = 0; i < paths.size(); ++i)
-            for (size_t k = first_piece[i]; k < first_piece[i + 1]; ++k) path_of[k] = i;
         std::vector<Segment> segments(cast_pieces.size() * kSegmentsPerPiece);
         tasks_.parallel_for(static_cast<uint32_t>(cast_pieces.size()), 256, [&](uint32_t begin, uint32_t end) {
             std::vector<Segment> piece_segments;
