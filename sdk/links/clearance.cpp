@@ -88,17 +88,31 @@ OrientedBox piece_box(const SweepPiece& piece, float radius) {
                       rounding_pad(corners.data(), corners.size()));
 }
 
-OrientedBox path_box(const std::vector<SweepPiece>& pieces, float radius) {
+std::vector<PieceRun> straight_runs(const std::vector<SweepPiece>& pieces) {
+    const float kMostTurn = std::cos(3.14159265f / 4.0f);
+    std::vector<PieceRun> runs;
+    uint32_t first = 0;
+    for (uint32_t k = 1; k <= pieces.size(); ++k) {
+        const bool ends = k == pieces.size() ||
+                          (pieces[k - 1].to - pieces[k - 1].from).normalized().dot((pieces[k].to - pieces[k].from).normalized()) < kMostTurn;
+        if (!ends) continue;
+        if (k - first >= 2) runs.push_back(PieceRun{first, k});
+        first = k;
+    }
+    return runs;
+}
+
+OrientedBox run_box(const std::vector<SweepPiece>& pieces, PieceRun run, float radius) {
     std::vector<Vec3> corners;
-    corners.reserve(8 * pieces.size());
-    for (const SweepPiece& piece : pieces) {
-        const std::array<Vec3, 8> c = piece_corners(piece, radius);
+    corners.reserve(8 * (run.last - run.first));
+    for (uint32_t k = run.first; k < run.last; ++k) {
+        const std::array<Vec3, 8> c = piece_corners(pieces[k], radius);
         corners.insert(corners.end(), c.begin(), c.end());
     }
-    Vec3 along = pieces.back().to - pieces.front().from;
-    if (along.squaredNorm() < 1e-8f) along = pieces.front().to - pieces.front().from;
-    return box_around(axes_along(along, pieces.front().side), corners.data(), corners.size(),
-                      rounding_pad(corners.data(), corners.size()));
+    const Vec3 along = pieces[run.last - 1].to - pieces[run.first].from;
+    return box_around(axes_along(along.squaredNorm() > 1e-8f ? along : pieces[run.first].to - pieces[run.first].from,
+                                 pieces[run.first].side),
+                      corners.data(), corners.size(), rounding_pad(corners.data(), corners.size()));
 }
 
 }  // namespace nl

@@ -51,8 +51,15 @@ void append_piece_segments(const SweepPiece& piece, float radius, std::vector<Se
 // none of them is blocked.
 OrientedBox piece_box(const SweepPiece& piece, float radius);
 
-// A box that holds every segment of a non-empty run of pieces (a whole jump arc): asked first, so
-// that an arc through open air costs one box query instead of one per piece.
-OrientedBox path_box(const std::vector<SweepPiece>& pieces, float radius);
+// Runs [first, last) of two or more consecutive pieces that turn by less than 45 degrees from one to
+// the next: a whole jump arc, the walk out and across of a fall. A run's box is asked before its
+// pieces', so a run through open air costs one box query.
+struct PieceRun {
+    uint32_t first, last;
+};
+std::vector<PieceRun> straight_runs(const std::vector<SweepPiece>& pieces);
+
+// A box that holds every segment of the pieces [run.first, run.last).
+OrientedBox run_box(const std::vector<SweepPiece>& pieces, PieceRun run, float radius);
 
 }  // namespace nl

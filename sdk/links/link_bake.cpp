@@ -348,21 +348,26 @@ private:
         for (uint32_t i = 0; i < paths.size(); ++i)
             for (size_t k = first_piece[i]; k < first_piece[i + 1]; ++k) path_of[k] = i;
         if (method_ == BakeMethod::Indexed) {
-            // Long paths (jump arcs) first as a whole: one query clears an arc through open air.
-            constexpr size_t kWholePathFrom = 4;
-            std::vector<uint32_t> long_paths;
-            for (uint32_t i = 0; i < paths.size(); ++i)
-                if (pieces[i].size() >= kWholePathFrom) long_paths.push_back(i);
-            std::vector<OrientedBox> path_boxes(long_paths.size());
-            tasks_.parallel_for(static_cast<uint32_t>(long_paths.size()), 64, [&](uint32_t begin, uint32_t end) {
-                for (uint32_t n = begin; n < end; ++n) path_boxes[n] = path_box(pieces[long_paths[n]], body_.radius);
+            // Straight runs of pieces first: one query clears a run through open air.
+            std::vector<std::vector<PieceRun>> runs(paths.size());
+            tasks_.parallel_for(static_cast<uint32_t>(paths.size()), 256, [&](uint32_t begin, uint32_t end) {
+                for (uint32_t i = begin; i < end; ++i) runs[i] = straight_runs(pieces[i]);
             });
-            std::vector<uint8_t> path_clear(long_paths.size(), 0);
-            level_.boxes_empty(path_boxes.data(), static_cast<uint32_t>(path_boxes.size()), path_clear.data());
-            for (size_t n = 0; n < long_paths.size(); ++n)
-                if (path_clear[n])
-                    std::fill(piece_clear.begin() + first_piece[long_paths[n]], piece_clear.begin() + first_piece[long_paths[n] + 1], 1);
-            // Then each piece not cleared with its path.
+            std::vector<std::pair<uint32_t, PieceRun>> all_runs;  // (path, run)
+            for (uint32_t i = 0; i < paths.size(); ++i)
+                for (const PieceRun& run : runs[i]) all_runs.emplace_back(i, run);
+            std::vector<OrientedBox> run_boxes(all_runs.size());
+            tasks_.parallel_for(static_cast<uint32_t>(all_runs.size()), 64, [&](uint32_t begin, uint32_t end) {
+                for (uint32_t n = begin; n < end; ++n) run_boxes[n] = run_box(pieces[all_runs[n].first], all_runs[n].second, body_.radius);
+            });
+            std::vector<uint8_t> run_clear(all_runs.size(), 0);
+            level_.boxes_empty(run_boxes.data(), static_cast<uint32_t>(run_boxes.size()), run_clear.data());
+            for (size_t n = 0; n < all_runs.size(); ++n) {
+                if (!run_clear[n]) continue;
+                const size_t base = first_piece[all_runs[n].first];
+                std::fill(piece_clear.begin() + base + all_runs[n].second.first, piece_clear.begin() + base + all_runs[n].second.last, 1);
+            }
+            // Then each piece not cleared with its run.
             std::vector<uint32_t> asked;
             for (uint32_t k = 0; k < piece_count; ++k)
                 if (!piece_clear[k]) asked.push_back(k);
@@ -376,7 +381,7 @@ private:
             std::vector<uint8_t> clear(asked.size(), 0);
             level_.boxes_empty(boxes.data(), static_cast<uint32_t>(boxes.size()), clear.data());
             for (size_t n = 0; n < asked.size(); ++n) piece_clear[asked[n]] = clear[n];
-            report_.box_queries += long_paths.size() + asked.size();
+            report_.box_queries += all_runs.size() + asked.size();
         }
         // The pieces left to cast, kSegmentsPerPiece segments each.
         std::vector<uint32_t> cast_pieces;
