@@ -336,11 +336,8 @@ NL_API nl_status nl_navmesh_remove_generated_links(nl_world* world, nl_navmesh_i
         nl_world& w = deref(world);
         const nl::Handle handle = to_handle(navmesh);
         w.navmeshes->get(handle);
-        // Not between a generation's reading of its bake and the storing of its links.
-        const auto serializer = w.bakes->serializer(handle);
-        std::lock_guard one_at_a_time(*serializer);
-        const uint32_t removed = w.links->remove_generated(handle);
-        w.bakes->forget(handle);
+        uint32_t removed = 0;
+        w.bakes->forget(handle, [&] { removed = w.links->remove_generated(handle); });
         if (out_removed) *out_removed = removed;
     });
 }
@@ -386,8 +383,7 @@ NL_API nl_status nl_navmesh_generate_links(nl_world* world, nl_navmesh_id navmes
         std::vector<nl::Link> links = bake->run(*w.level, *w.tasks, report, progress_of(progress, user));
         const std::vector<nl::Link> extra = plugin_links(w, navmesh, *mesh, plugin_settings, report.plugin_links);
         links.insert(links.end(), extra.begin(), extra.end());
-        w.links->replace_generated(handle, links);
-        w.bakes->set(handle, nl::LinkBakes::Entry{std::move(bake), plugin_json});
+        w.bakes->store(handle, nl::LinkBakes::Entry{std::move(bake), plugin_json}, [&] { w.links->replace_generated(handle, links); });
         if (out_report) nl::capi::write_growable(out_report, to_c(report), kReportFirstSize, "out_report");
     });
 }
@@ -419,7 +415,8 @@ NL_API nl_status nl_navmesh_update_links_in_box(nl_world* world, nl_navmesh_id n
         const std::vector<nl::Link> extra =
             plugin_links(w, navmesh, *mesh, plugin_settings_of(last.plugin_settings_json), report.plugin_links);
         links.insert(links.end(), extra.begin(), extra.end());
-        w.links->replace_generated(handle, links);
+        if (!w.bakes->store_if_current(handle, last.bake.get(), [&] { w.links->replace_generated(handle, links); }))
+            fail(ErrorCode::NotFound, "the navmesh's generated links were removed or replaced by a JSON load during the update");
         if (out_report) nl::capi::write_growable(out_report, to_c(report), kReportFirstSize, "out_report");
     });
 }
@@ -467,10 +464,8 @@ NL_API nl_status nl_navmesh_load_links_json(nl_world* world, nl_navmesh_id navme
             l.end_polygon = polygon_under(l.end, l.end_polygon, at + ".end");
             requirements_from_ends_if_unset(l);
         }
-        const auto serializer = w.bakes->serializer(handle);
-        std::lock_guard one_at_a_time(*serializer);
-        w.links->replace_all(handle, links);
-        w.bakes->forget(handle);  // the loaded links are not a generation an update could continue
+        // The loaded links are not a generation an update could continue.
+        w.bakes->forget(handle, [&] { w.links->replace_all(handle, links); });
         if (out_count) *out_count = static_cast<uint32_t>(links.size());
     });
 }

@@ -252,15 +252,15 @@ TriangleMesh Level::world_triangles() const {
     return out;
 }
 
-std::array<Vec3, 3> Level::world_triangle(Handle h, uint32_t primitive) const {
+std::optional<std::array<Vec3, 3>> Level::static_triangle(Handle h, uint32_t primitive) const {
     std::shared_lock lock(mutex_);
     const Mesh* mesh = meshes_.find(h);
-    if (!mesh) fail_stale("mesh", h);
-    if (primitive >= mesh->object.triangles.size())
-        fail(ErrorCode::InvalidArgument, "triangle ", primitive, " is out of range (", mesh->object.triangles.size(), ")");
+    if (!mesh || mesh->own_scene || primitive >= mesh->object.triangles.size()) return std::nullopt;
+    // Embree's own buffer: the world-space corners it intersects.
+    const auto* vertices = static_cast<const float*>(rtcGetGeometryBufferData(mesh->geometry, RTC_BUFFER_TYPE_VERTEX, 0));
     const Triangle& t = mesh->object.triangles[primitive];
-    return {mesh->transform * mesh->object.vertices[t[0]], mesh->transform * mesh->object.vertices[t[1]],
-            mesh->transform * mesh->object.vertices[t[2]]};
+    auto corner = [&](uint32_t i) { return Vec3(vertices[3 * size_t(i)], vertices[3 * size_t(i) + 1], vertices[3 * size_t(i) + 2]); };
+    return std::array<Vec3, 3>{corner(t[0]), corner(t[1]), corner(t[2])};
 }
 
 std::shared_lock<SharedMutex> Level::lock_committed() const {

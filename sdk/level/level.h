@@ -9,6 +9,7 @@
 #include <embree3/rtcore.h>
 
 #include <cstdint>
+#include <optional>
 #include <shared_mutex>
 #include <vector>
 
@@ -50,7 +51,7 @@ struct RayHit {
     Vec3 normal = Vec3::Zero();
     Handle mesh;
     uint32_t triangle = 0;   // index in the mesh's input triangles
-    uint32_t primitive = 0;  // index in the mesh's kept triangles (Level::world_triangle)
+    uint32_t primitive = 0;  // index in the mesh's kept triangles (Level::static_triangle)
 };
 
 struct Segment {
@@ -79,8 +80,10 @@ public:
 
     // World-space triangles of every mesh under its current transform (for reference checks, builders).
     TriangleMesh world_triangles() const;
-    // The corners of a hit's triangle (RayHit::mesh, RayHit::primitive), in world space.
-    std::array<Vec3, 3> world_triangle(Handle mesh, uint32_t primitive) const;
+    // The corners of a hit's triangle (RayHit::mesh, RayHit::primitive) of a static mesh, in world
+    // space, exactly as Embree tests them; nothing for a movable mesh (Embree tests those in their
+    // own space) or a mesh removed since the hit.
+    std::optional<std::array<Vec3, 3>> static_triangle(Handle mesh, uint32_t primitive) const;
 
     // Batched queries, parallel over the task system; out spans must have rays.size() entries.
     void cast_rays(const Ray* rays, uint32_t count, RayHit* out) const;

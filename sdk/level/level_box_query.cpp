@@ -30,7 +30,7 @@ bool stop_query(RTCPointQueryFunctionArguments* args, BoxQuery& q) {
     return true;
 }
 
-bool static_triangle(RTCPointQueryFunctionArguments* args) {
+bool static_triangle_near(RTCPointQueryFunctionArguments* args) {
     auto& q = *static_cast<BoxQuery*>(args->userPtr);
     if (q.overlap) return false;
     const auto [vertices, indices] = (*q.statics)[args->geomID];
@@ -40,7 +40,7 @@ bool static_triangle(RTCPointQueryFunctionArguments* args) {
     return false;
 }
 
-bool movable_triangle(RTCPointQueryFunctionArguments* args) {
+bool movable_triangle_near(RTCPointQueryFunctionArguments* args) {
     auto& q = *static_cast<BoxQuery*>(args->userPtr);
     if (q.overlap) return false;
     const Triangle& t = q.object->triangles[args->primID];
@@ -99,7 +99,7 @@ void Level::boxes_empty(const OrientedBox* boxes, uint32_t count, uint8_t* out_e
             query.radius = box.bounding_radius();
             query.time = 0.0f;
             rtcInitPointQueryContext(&context);
-            rtcPointQuery(static_scene_, &query, &context, static_triangle, &q);
+            rtcPointQuery(static_scene_, &query, &context, static_triangle_near, &q);
             if (!q.overlap && !movables.empty()) {
                 const Aabb reach = world_bounds(box);
                 for (const Movable& movable : movables) {
@@ -113,7 +113,7 @@ void Level::boxes_empty(const OrientedBox* boxes, uint32_t count, uint8_t* out_e
                     q.object = &movable.mesh->object;
                     q.transform = &movable.mesh->transform;
                     rtcInitPointQueryContext(&context);
-                    rtcPointQuery(movable.mesh->own_scene, &query, &context, movable_triangle, &q);
+                    rtcPointQuery(movable.mesh->own_scene, &query, &context, movable_triangle_near, &q);
                 }
             }
             out_empty[i] = q.overlap ? 0 : 1;

@@ -4,6 +4,8 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <limits>
+#include <optional>
 #include <tuple>
 #include <unordered_set>
 
@@ -42,10 +44,11 @@ bool touches(const Aabb& a, const Aabb* box) {
     return (a.min.array() - kPad <= box->max.array()).all() && (a.max.array() + kPad >= box->min.array()).all();
 }
 
-// Whether the vertical segment from `top` down `reach` crosses the triangle a millimetre inside its
-// edges and ends, so that casting it could only report a hit.
+// Whether the vertical segment from `top` down `reach` crosses the (static, world-space) triangle a
+// millimetre inside its edges and ends, more far from the origin, so that casting it could only
+// report a hit.
 bool crosses_well_inside(const std::array<Vec3, 3>& t, const Vec3& top, float reach) {
-    constexpr float kInside = 1e-3f;
+    const float kInside = 1e-3f + 16.0f * std::numeric_limits<float>::epsilon() * top.cwiseAbs().maxCoeff();
     const Eigen::Vector2f a(t[0].x(), t[0].z()), b(t[1].x(), t[1].z()), c(t[2].x(), t[2].z()), p(top.x(), top.z());
     auto cross = [](const Eigen::Vector2f& u, const Eigen::Vector2f& v) { return u.x() * v.y() - u.y() * v.x(); };
     const float area = cross(b - a, c - a);
@@ -142,7 +145,7 @@ private:
         // Indexed bakes first try the triangle the ground ray hit: a probe that crosses it well inside
         // is on ground without a ray (floors are mostly few large triangles).
         const bool floor_shortcut = method_ == BakeMethod::Indexed;
-        std::vector<std::array<Vec3, 3>> floor(floor_shortcut ? redo.size() : 0);
+        std::vector<std::optional<std::array<Vec3, 3>>> floor(floor_shortcut ? redo.size() : 0);
         tasks_.parallel_for(static_cast<uint32_t>(redo.size()), 256, [&](uint32_t begin, uint32_t end) {
             for (uint32_t k = begin; k < end; ++k) {
                 const EdgeSample& e = samples_[redo[k]];
@@ -157,7 +160,7 @@ private:
                     t.bounds.grow(probe_top(k, j));
                     t.bounds.grow(probe_top(k, j) - Vec3(0, step_reach, 0));
                 }
-                if (floor_shortcut && ground[k].hit) floor[k] = level_.world_triangle(ground[k].mesh, ground[k].primitive);
+                if (floor_shortcut && ground[k].hit) floor[k] = level_.static_triangle(ground[k].mesh, ground[k].primitive);
             }
         });
         // One step out at a time, for the samples still on ground: only a hit or a miss is needed,
@@ -170,7 +173,7 @@ private:
                 tasks_.parallel_for(static_cast<uint32_t>(looking.size()), 512, [&](uint32_t begin, uint32_t end) {
                     for (uint32_t n = begin; n < end; ++n) {
                         const size_t k = looking[n];
-                        proven[n] = ground[k].hit && crosses_well_inside(floor[k], probe_top(k, j), step_reach);
+                        proven[n] = floor[k] && crosses_well_inside(*floor[k], probe_top(k, j), step_reach);
                     }
                 });
             std::vector<Segment> below;
@@ -751,15 +754,26 @@ std::vector<Link> LinkBake::bake(const Aabb* box, const Level& level, TaskSystem
 
 std::shared_ptr<std::mutex> LinkBakes::serializer(Handle navmesh) {
     std::lock_guard lock(mutex_);
+    // A removed navmesh keeps no entry (its bake will not be kept either).
+    if (retired_.count(key(navmesh))) return std::make_shared<std::mutex>();
     auto& m = serializers_[key(navmesh)];
     if (!m) m = std::make_shared<std::mutex>();
     return m;
 }
 
-void LinkBakes::set(Handle navmesh, Entry entry) {
+void LinkBakes::store(Handle navmesh, Entry entry, FunctionRef<void()> links) {
     std::lock_guard lock(mutex_);
+    links();
     if (retired_.count(key(navmesh))) return;
     bakes_[key(navmesh)] = std::move(entry);
+}
+
+bool LinkBakes::store_if_current(Handle navmesh, const LinkBake* bake, FunctionRef<void()> links) {
+    std::lock_guard lock(mutex_);
+    const auto it = bakes_.find(key(navmesh));
+    if (it == bakes_.end() || it->second.bake.get() != bake) return false;
+    links();
+    return true;
 }
 
 LinkBakes::Entry LinkBakes::get(Handle navmesh) const {
@@ -768,8 +782,9 @@ LinkBakes::Entry LinkBakes::get(Handle navmesh) const {
     return it == bakes_.end() ? Entry{} : it->second;
 }
 
-void LinkBakes::forget(Handle navmesh) {
+void LinkBakes::forget(Handle navmesh, FunctionRef<void()> links) {
     std::lock_guard lock(mutex_);
+    links();
     bakes_.erase(key(navmesh));
 }
 

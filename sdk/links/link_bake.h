@@ -86,12 +86,20 @@ public:
     // (A progress callback must not start another on the same navmesh: it would wait for itself.)
     std::shared_ptr<std::mutex> serializer(Handle navmesh);
 
-    // Ignored for a removed navmesh: a generation that finishes after the removal keeps nothing.
-    void set(Handle navmesh, Entry entry);
+    // The links a bake made and the bake itself change together, so that an update never continues
+    // a bake whose links were taken away. Each of these runs `links` (which changes the navmesh's
+    // links in the link store) and the bookkeeping in one step; `links` must not call back in here.
+    //
+    // A generation's result: records `entry` (ignored for a removed navmesh: a generation that
+    // finishes after the removal keeps nothing).
+    void store(Handle navmesh, Entry entry, FunctionRef<void()> links);
+    // An update's result: runs `links` only while `bake` is still the navmesh's bake, else returns
+    // false and runs nothing.
+    bool store_if_current(Handle navmesh, const LinkBake* bake, FunctionRef<void()> links);
+    // The generated links removed or replaced by a load: there is no generation left to update.
+    void forget(Handle navmesh, FunctionRef<void()> links);
+
     Entry get(Handle navmesh) const;  // empty if the navmesh was never baked, or its bake forgotten
-    // The navmesh's generated links are gone (removed, or replaced by a load): there is no
-    // generation left to update. Hold the serializer.
-    void forget(Handle navmesh);
     void remove(Handle navmesh);
 
 private:

@@ -154,7 +154,7 @@ TEST_CASE("boxes_empty agrees with every triangle, for static and movable meshes
     }
 }
 
-TEST_CASE("world_triangle gives the corners of the triangle a ray hit, static and movable") {
+TEST_CASE("static_triangle gives the corners of the triangle a ray hit; nothing for movable or removed meshes") {
     nl::TriangleMesh mesh = to_mesh(nl::levelgen::generate_default_level(5));
     mesh.triangles.insert(mesh.triangles.begin(), {0, 0, 1});  // degenerate: dropped, so kept != input
     nl::Transform moved = nl::Transform::Identity();
@@ -175,7 +175,13 @@ TEST_CASE("world_triangle gives the corners of the triangle a ray hit, static an
             level.cast_rays(&ray, 1, &hit);
             if (!hit.hit) continue;
             ++hits;
-            const auto t = level.world_triangle(hit.mesh, hit.primitive);
+            const auto corners = level.static_triangle(hit.mesh, hit.primitive);
+            if (flags) {
+                CHECK(!corners);
+                continue;
+            }
+            REQUIRE(corners);
+            const auto& t = *corners;
             // The hit point lies in the triangle's plane, and the input triangle is the same one.
             const Vec3 n = (t[1] - t[0]).cross(t[2] - t[0]).normalized();
             CHECK(std::fabs(n.dot(hit.point - t[0])) < 1e-3f);
@@ -183,6 +189,8 @@ TEST_CASE("world_triangle gives the corners of the triangle a ray hit, static an
             CHECK(((moved * mesh.vertices[input[0]]) - t[0]).norm() < 1e-4f);
         }
         CHECK(hits > 100);
-        CHECK_THROWS(level.world_triangle(h, 1u << 30));
+        CHECK(!level.static_triangle(h, 1u << 30));
+        level.remove_mesh(h);
+        CHECK(!level.static_triangle(h, 0));
     }
 }

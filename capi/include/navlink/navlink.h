@@ -707,7 +707,7 @@ NL_API nl_status nl_navmesh_generate_links(nl_world* world, nl_navmesh_id navmes
  *  keep no cache: their links are generated again in full. The navmesh itself must be the same (a
  *  rebuilt navmesh is a new one: generate its links in full).
  *  Returns SUCCESS, or a failure with NOT_FOUND (never generated, or the generated links were removed or
- *  replaced by a JSON load since), INVALID_HANDLE, INVALID_ARGUMENT
+ *  replaced by a JSON load since or meanwhile: nothing is stored), INVALID_HANDLE, INVALID_ARGUMENT
  *  (a null, non-finite or inverted box), CANCELLED (nothing changed). Thread-safe. */
 NL_API nl_status nl_navmesh_update_links_in_box(nl_world* world, nl_navmesh_id navmesh, const float* box_min,
                                                 const float* box_max, nl_progress_fn* progress, void* user,
