@@ -26,18 +26,20 @@ JumpArc jump_arc(const Vec3& start, const Vec3& end, float apex_above, unsigned 
     return arc;
 }
 
-std::vector<SweepPiece> sweep_pieces(const std::vector<Vec3>& path, const Body& body, float margin) {
+std::vector<SweepPiece> sweep_pieces(PathPoints path_points, const Body& body, float margin) {
+    const Vec3* path = path_points.points;
+    const size_t count = path_points.count;
     std::vector<SweepPiece> pieces;
     float total = 0.0f;
-    for (size_t i = 1; i < path.size(); ++i) total += (path[i] - path[i - 1]).norm();
+    for (size_t i = 1; i < count; ++i) total += (path[i] - path[i - 1]).norm();
     if (total <= 0.0f) return pieces;
     const float keep_from = margin * total, keep_to = (1.0f - margin) * total;
     // One sideways direction for the whole path: its horizontal heading.
-    Vec3 heading = path.back() - path.front();
+    Vec3 heading = path[count - 1] - path[0];
     heading.y() = 0.0f;
     const Vec3 side = heading.norm() > 1e-4f ? Vec3(-heading.z(), 0.0f, heading.x()).normalized() : Vec3::UnitX();
     float walked = 0.0f;
-    for (size_t i = 1; i < path.size(); ++i) {
+    for (size_t i = 1; i < count; ++i) {
         const Vec3 a = path[i - 1], b = path[i];
         const float length = (b - a).norm();
         const float from = std::max(walked, keep_from), to = std::min(walked + length, keep_to);

@@ -40,7 +40,11 @@ constexpr unsigned kSegmentsPerPiece = kSweepHeights * kSweepOffsetCount * 2;
 // The pieces of an agent-sized body swept along `path` (feet on the path), leaving out `margin` of
 // the path's length at each end (take-off and landing touch the floor): three heights (near the
 // feet, the middle, the head).
-std::vector<SweepPiece> sweep_pieces(const std::vector<Vec3>& path, const Body& body, float margin);
+struct PathPoints {
+    const Vec3* points;  // borrowed
+    size_t count;
+};
+std::vector<SweepPiece> sweep_pieces(PathPoints path, const Body& body, float margin);
 
 // Appends the piece's kSegmentsPerPiece segments: for each height, for each offset, the line in both
 // directions, so that a surface met from either side blocks. Segment k uses offset

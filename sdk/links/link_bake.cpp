@@ -7,7 +7,6 @@
 #include <limits>
 #include <optional>
 #include <tuple>
-#include <unordered_set>
 
 #include "links/clearance.h"
 #include "util/error.h"
@@ -330,14 +329,14 @@ private:
     // batch: a path is clear if the agent's lines are, and as wide as the widest body whose lines
     // (and every narrower body's) are. Indexed bakes first ask whether any triangle touches each
     // piece's box: the segments of an untouched piece are all clear and are not cast.
-    std::vector<LinkBake::Sweep> sweep(const std::vector<const std::vector<Vec3>*>& paths) {
+    std::vector<LinkBake::Sweep> sweep(const std::vector<PathPoints>& paths) {
         std::vector<LinkBake::Sweep> out(paths.size());
         std::vector<std::vector<SweepPiece>> pieces(paths.size());
         tasks_.parallel_for(static_cast<uint32_t>(paths.size()), 64, [&](uint32_t begin, uint32_t end) {
             for (uint32_t i = begin; i < end; ++i) {
-                pieces[i] = sweep_pieces(*paths[i], body_, s_.clearance_margin);
+                pieces[i] = sweep_pieces(paths[i], body_, s_.clearance_margin);
                 Aabb& b = out[i].bounds;
-                for (const Vec3& p : *paths[i]) b.grow(p);
+                for (size_t n = 0; n < paths[i].count; ++n) b.grow(paths[i].points[n]);
                 const float widest = 2.0f * body_.radius;
                 b.min -= Vec3(widest, 0.0f, widest);
                 b.max += Vec3(widest, body_.height, widest);
@@ -472,8 +471,8 @@ private:
         }
         report_.jump_candidates = static_cast<uint32_t>(next.jumps.size());
         step(0.35f, "jump clearance");
-        std::vector<const std::vector<Vec3>*> paths;
-        for (const auto& arc : arcs) paths.push_back(&arc);
+        std::vector<PathPoints> paths;
+        for (const auto& arc : arcs) paths.push_back(PathPoints{arc.data(), arc.size()});
         const std::vector<LinkBake::Sweep> swept = sweep(paths);
         for (size_t k = 0; k < redo.size(); ++k) next.jumps[redo[k]].sweep = swept[k];
     }
@@ -483,8 +482,10 @@ private:
         const float steep = s_.drop_steepness * kDegrees;
         const float reach = (s_.max_drop_distance + kProbeLift + 1.0f) / std::sin(steep);
         const auto angles = static_cast<uint32_t>(s_.drop_angles.size());
-        std::vector<Ray> probes;
-        std::vector<uint64_t> probed;
+        // Every take-off point's probes, in key order: reused from the old cache (also in key order)
+        // when neither the take-off point nor the probe's reach changed, else probed again.
+        std::vector<uint32_t> probed;  // indices into next.drops
+        auto old = old_.drops.begin();
         for (uint32_t i = 0; i < samples_.size(); ++i) {
             const LinkBake::TakeoffState& t = next.takeoffs[i];
             if (!t.valid) continue;
@@ -492,75 +493,82 @@ private:
                                       old_.takeoffs[i].rim == t.rim;
             for (uint32_t angle = 0; angle < angles; ++angle) {
                 const uint64_t key = pair_key(i, angle);
-                const auto cached = old_.drops.find(key);
-                if (takeoff_same && cached != old_.drops.end() && !touches(cached->second.bounds, box_)) {
-                    next.drops.emplace(key, cached->second);
+                while (old != old_.drops.end() && old->key < key) ++old;
+                if (takeoff_same && old != old_.drops.end() && old->key == key && !touches(old->bounds, box_)) {
+                    next.drops.push_back(*old);
                     continue;
                 }
+                probed.push_back(static_cast<uint32_t>(next.drops.size()));
+                next.drops.emplace_back().key = key;
+            }
+        }
+        std::vector<Ray> probes(probed.size());
+        tasks_.parallel_for(static_cast<uint32_t>(probed.size()), 256, [&](uint32_t begin, uint32_t end) {
+            for (uint32_t k = begin; k < end; ++k) {
+                LinkBake::DropProbe& d = next.drops[probed[k]];
+                const auto i = static_cast<uint32_t>(d.key >> 32), angle = static_cast<uint32_t>(d.key);
                 const EdgeSample& e = samples_[i];
                 const Eigen::AngleAxisf turn(s_.drop_angles[angle] * kDegrees, Vec3::UnitY());
                 const Vec3 heading = turn * e.outward;
                 // Past the rim (found straight out; a turned probe starts as far out, plus a margin).
-                const Vec3 falloff = e.point + heading * (t.rim + 0.2f);
+                const Vec3 falloff = e.point + heading * (next.takeoffs[i].rim + 0.2f);
                 const Vec3 direction = (heading * std::cos(steep) + Vec3(0, -std::sin(steep), 0)).normalized();
-                probes.push_back(Ray{falloff + Vec3(0, kProbeLift, 0), direction, reach});
-                LinkBake::DropProbe d;
-                d.fall = {e.point, Vec3(falloff.x(), e.point.y(), falloff.z())};
-                next.drops.emplace(key, d);
-                probed.push_back(key);
+                probes[k] = Ray{falloff + Vec3(0, kProbeLift, 0), direction, reach};
+                d.fall[0] = e.point;
+                d.fall[1] = Vec3(falloff.x(), e.point.y(), falloff.z());
+                d.fall_points = 2;
             }
-        }
+        });
         const std::vector<RayHit> hits = cast(probes);
         step(0.7f, "drops");
 
         const Vec3 landing_box(std::max(body_.radius * 1.5f, 0.3f), 1.0f, std::max(body_.radius * 1.5f, 0.3f));
-        std::vector<NavPoint> landings(probed.size());
         tasks_.parallel_for(static_cast<uint32_t>(probed.size()), 256, [&](uint32_t begin, uint32_t end) {
-            for (uint32_t k = begin; k < end; ++k)
-                if (hits[k].hit) landings[k] = locate(hits[k].point, landing_box);
+            for (uint32_t k = begin; k < end; ++k) land(next.drops[probed[k]], probes[k], hits[k], reach, landing_box);
         });
-        std::vector<uint64_t> to_sweep;
-        for (size_t k = 0; k < probed.size(); ++k) {
-            LinkBake::DropProbe& d = next.drops[probed[k]];
-            const uint32_t i = static_cast<uint32_t>(probed[k] >> 32);
-            const Ray& probe = probes[k];
-            d.bounds = bounds_of({probe.origin, probe.origin + probe.direction * (hits[k].hit ? hits[k].distance : reach)});
-            d.outcome = 1;
-            if (!hits[k].hit) continue;
-            const NavPoint& landing = landings[k];
-            if (!landing.found || landing.polygon == samples_[i].polygon) continue;
-            const float drop = samples_[i].point.y() - landing.point.y();
-            if (drop <= mesh_.agent().max_climb || drop > s_.max_drop_distance) {
-                d.outcome = 2;
-                continue;
-            }
-            d.outcome = 0;
-            Link& l = d.link;
-            l.kind = LinkKind::Drop;
-            l.start = samples_[i].point;
-            l.end = landing.point;
-            l.apex = l.start;
-            l.bidirectional = drop <= s_.max_jump_up;  // low enough to jump back up
-            l.generated = true;
-            l.start_polygon = samples_[i].polygon;
-            l.end_polygon = landing.polygon;
-            set_requirements(l);
-            // Walk out over the edge, fall, land.
-            d.fall.push_back(Vec3(landing.point.x(), l.start.y(), landing.point.z()));
-            d.fall.push_back(landing.point);
-            to_sweep.push_back(probed[k]);
+        // Landed probes: the fresh ones, and the reused ones whose sweep the box touches.
+        std::vector<uint8_t> fresh(next.drops.size(), 0);
+        for (uint32_t k : probed) fresh[k] = 1;
+        std::vector<uint32_t> to_sweep;
+        for (uint32_t k = 0; k < next.drops.size(); ++k) {
+            const LinkBake::DropProbe& d = next.drops[k];
+            if (d.outcome == 0 && (fresh[k] || touches(d.sweep.bounds, box_))) to_sweep.push_back(k);
         }
-        // Landed probes that were not probed again keep their sweep unless the box touches it.
-        const std::unordered_set<uint64_t> fresh(probed.begin(), probed.end());
-        for (const auto& [key, d] : next.drops) {
-            if (d.outcome == 0 && !fresh.count(key) && touches(d.sweep.bounds, box_)) to_sweep.push_back(key);
-        }
-        std::sort(to_sweep.begin(), to_sweep.end());
         step(0.8f, "drop clearance");
-        std::vector<const std::vector<Vec3>*> paths;
-        for (uint64_t key : to_sweep) paths.push_back(&next.drops[key].fall);
+        std::vector<PathPoints> paths;
+        for (uint32_t k : to_sweep) paths.push_back(PathPoints{next.drops[k].fall.data(), next.drops[k].fall_points});
         const std::vector<LinkBake::Sweep> swept = sweep(paths);
-        for (size_t k = 0; k < to_sweep.size(); ++k) next.drops[to_sweep[k]].sweep = swept[k];
+        for (size_t n = 0; n < to_sweep.size(); ++n) next.drops[to_sweep[n]].sweep = swept[n];
+    }
+
+    // Where a drop probe came down: no landing, a landing too shallow or too deep, or a drop link
+    // with its fall (walk out over the edge, across, down).
+    void land(LinkBake::DropProbe& d, const Ray& probe, const RayHit& hit, float reach, const Vec3& landing_box) const {
+        const auto i = static_cast<uint32_t>(d.key >> 32);
+        d.bounds = bounds_of({probe.origin, probe.origin + probe.direction * (hit.hit ? hit.distance : reach)});
+        d.outcome = 1;
+        if (!hit.hit) return;
+        const NavPoint landing = locate(hit.point, landing_box);
+        if (!landing.found || landing.polygon == samples_[i].polygon) return;
+        const float drop = samples_[i].point.y() - landing.point.y();
+        if (drop <= mesh_.agent().max_climb || drop > s_.max_drop_distance) {
+            d.outcome = 2;
+            return;
+        }
+        d.outcome = 0;
+        Link& l = d.link;
+        l.kind = LinkKind::Drop;
+        l.start = samples_[i].point;
+        l.end = landing.point;
+        l.apex = l.start;
+        l.bidirectional = drop <= s_.max_jump_up;  // low enough to jump back up
+        l.generated = true;
+        l.start_polygon = samples_[i].polygon;
+        l.end_polygon = landing.polygon;
+        set_requirements(l);
+        d.fall[2] = Vec3(landing.point.x(), l.start.y(), landing.point.z());
+        d.fall[3] = landing.point;
+        d.fall_points = 4;
     }
 
     // No rays from here on: over everything cached, so an update gives what a full bake would.
@@ -570,11 +578,7 @@ private:
             if (t.rejected == 2) ++report_.rejected_not_ledge;
         }
         std::vector<Link> links = straightest_jumps(c);
-        std::vector<uint64_t> drop_keys;
-        for (const auto& [key, d] : c.drops) drop_keys.push_back(key);
-        std::sort(drop_keys.begin(), drop_keys.end());
-        for (uint64_t key : drop_keys) {
-            const LinkBake::DropProbe& d = c.drops.at(key);
+        for (const LinkBake::DropProbe& d : c.drops) {  // in key order
             if (d.outcome == 1) ++report_.rejected_no_landing;
             else if (d.outcome == 2) ++report_.rejected_distance;
             else if (!d.sweep.clear) ++report_.rejected_clearance;
@@ -584,7 +588,7 @@ private:
             }
         }
         report_.drop_candidates = 0;
-        for (const auto& entry : c.drops) report_.drop_candidates += entry.second.outcome == 0;
+        for (const LinkBake::DropProbe& d : c.drops) report_.drop_candidates += d.outcome == 0;
         links = merge(std::move(links));
         for (const Link& l : links) (l.kind == LinkKind::Jump ? report_.jump_links : report_.drop_links)++;
         return links;

@@ -7,6 +7,7 @@
 // the whole cache, an update gives exactly the links a full bake would.
 #pragma once
 
+#include <array>
 #include <memory>
 #include <mutex>
 #include <string>
@@ -48,16 +49,18 @@ public:
         Sweep sweep;
     };
     struct DropProbe {
+        uint64_t key = 0;       // (sample, angle)
         uint8_t outcome = 0;    // 0: landed, 1: no landing, 2: too shallow or too deep
+        uint8_t fall_points = 0;
         Aabb bounds;            // the probe ray
         Link link;
-        std::vector<Vec3> fall;
+        std::array<Vec3, 4> fall;  // out over the edge, across, down (when landed)
         Sweep sweep;
     };
     struct Cache {
         std::vector<TakeoffState> takeoffs;                 // by sample
         std::unordered_map<uint64_t, JumpCandidate> jumps;  // by (a, b)
-        std::unordered_map<uint64_t, DropProbe> drops;      // by (sample, angle)
+        std::vector<DropProbe> drops;                       // by key, ascending
     };
 
 private:
