@@ -8,7 +8,7 @@
 #include "host_input.h"
 #include "io/link_json.h"
 #include <nlohmann/json.hpp>
-#include "links/link_bake.h"
+#include "links/link_bakes.h"
 #include "world.h"
 
 using nl::ErrorCode;

@@ -4,7 +4,7 @@
 #include <memory>
 
 #include "level/level.h"
-#include "links/link_bake.h"
+#include "links/link_bakes.h"
 #include "links/link_store.h"
 #include "navlink/navlink.h"
 #include "navmesh/navmesh_registry.h"

@@ -6,9 +6,9 @@
 #include <cmath>
 #include <limits>
 #include <optional>
-#include <tuple>
 
 #include "links/clearance.h"
+#include "links/link_merge.h"
 #include "util/error.h"
 
 namespace nl {
@@ -325,6 +325,48 @@ private:
         arcs.push_back(arc.points);
     }
 
+    // Which pieces a box query proves clear (1) without casting their segments: straight runs of
+    // pieces first, one query clearing a run through open air, then each piece not cleared with
+    // its run.
+    std::vector<uint8_t> proven_clear(const std::vector<std::vector<SweepPiece>>& pieces, const std::vector<size_t>& first_piece,
+                                      const std::vector<uint32_t>& path_of) {
+        const auto piece_count = static_cast<uint32_t>(first_piece.back());
+        std::vector<uint8_t> piece_clear(piece_count, 0);
+        std::vector<std::vector<PieceRun>> runs(pieces.size());
+        tasks_.parallel_for(static_cast<uint32_t>(pieces.size()), 256, [&](uint32_t begin, uint32_t end) {
+            for (uint32_t i = begin; i < end; ++i) runs[i] = straight_runs(pieces[i]);
+        });
+        std::vector<std::pair<uint32_t, PieceRun>> all_runs;  // (path, run)
+        for (uint32_t i = 0; i < pieces.size(); ++i)
+            for (const PieceRun& run : runs[i]) all_runs.emplace_back(i, run);
+        std::vector<OrientedBox> run_boxes(all_runs.size());
+        tasks_.parallel_for(static_cast<uint32_t>(all_runs.size()), 64, [&](uint32_t begin, uint32_t end) {
+            for (uint32_t n = begin; n < end; ++n) run_boxes[n] = run_box(pieces[all_runs[n].first], all_runs[n].second, body_.radius);
+        });
+        std::vector<uint8_t> run_clear(all_runs.size(), 0);
+        level_.boxes_empty(run_boxes.data(), static_cast<uint32_t>(run_boxes.size()), run_clear.data());
+        for (size_t n = 0; n < all_runs.size(); ++n) {
+            if (!run_clear[n]) continue;
+            const size_t base = first_piece[all_runs[n].first];
+            std::fill(piece_clear.begin() + base + all_runs[n].second.first, piece_clear.begin() + base + all_runs[n].second.last, 1);
+        }
+        std::vector<uint32_t> asked;
+        for (uint32_t k = 0; k < piece_count; ++k)
+            if (!piece_clear[k]) asked.push_back(k);
+        std::vector<OrientedBox> boxes(asked.size());
+        tasks_.parallel_for(static_cast<uint32_t>(asked.size()), 256, [&](uint32_t begin, uint32_t end) {
+            for (uint32_t n = begin; n < end; ++n) {
+                const uint32_t k = asked[n], i = path_of[k];
+                boxes[n] = piece_box(pieces[i][k - first_piece[i]], body_.radius);
+            }
+        });
+        std::vector<uint8_t> clear(asked.size(), 0);
+        level_.boxes_empty(boxes.data(), static_cast<uint32_t>(boxes.size()), clear.data());
+        for (size_t n = 0; n < asked.size(); ++n) piece_clear[asked[n]] = clear[n];
+        report_.box_queries += all_runs.size() + asked.size();
+        return piece_clear;
+    }
+
     // Sweeps each path with the agent's body and bodies 1.5 and 2 times as wide, in one occlusion
     // batch: a path is clear if the agent's lines are, and as wide as the widest body whose lines
     // (and every narrower body's) are. Indexed bakes first ask whether any triangle touches each
@@ -349,42 +391,7 @@ private:
         std::vector<uint32_t> path_of(piece_count);
         for (uint32_t i = 0; i < paths.size(); ++i)
             for (size_t k = first_piece[i]; k < first_piece[i + 1]; ++k) path_of[k] = i;
-        if (method_ == BakeMethod::Indexed) {
-            // Straight runs of pieces first: one query clears a run through open air.
-            std::vector<std::vector<PieceRun>> runs(paths.size());
-            tasks_.parallel_for(static_cast<uint32_t>(paths.size()), 256, [&](uint32_t begin, uint32_t end) {
-                for (uint32_t i = begin; i < end; ++i) runs[i] = straight_runs(pieces[i]);
-            });
-            std::vector<std::pair<uint32_t, PieceRun>> all_runs;  // (path, run)
-            for (uint32_t i = 0; i < paths.size(); ++i)
-                for (const PieceRun& run : runs[i]) all_runs.emplace_back(i, run);
-            std::vector<OrientedBox> run_boxes(all_runs.size());
-            tasks_.parallel_for(static_cast<uint32_t>(all_runs.size()), 64, [&](uint32_t begin, uint32_t end) {
-                for (uint32_t n = begin; n < end; ++n) run_boxes[n] = run_box(pieces[all_runs[n].first], all_runs[n].second, body_.radius);
-            });
-            std::vector<uint8_t> run_clear(all_runs.size(), 0);
-            level_.boxes_empty(run_boxes.data(), static_cast<uint32_t>(run_boxes.size()), run_clear.data());
-            for (size_t n = 0; n < all_runs.size(); ++n) {
-                if (!run_clear[n]) continue;
-                const size_t base = first_piece[all_runs[n].first];
-                std::fill(piece_clear.begin() + base + all_runs[n].second.first, piece_clear.begin() + base + all_runs[n].second.last, 1);
-            }
-            // Then each piece not cleared with its run.
-            std::vector<uint32_t> asked;
-            for (uint32_t k = 0; k < piece_count; ++k)
-                if (!piece_clear[k]) asked.push_back(k);
-            std::vector<OrientedBox> boxes(asked.size());
-            tasks_.parallel_for(static_cast<uint32_t>(asked.size()), 256, [&](uint32_t begin, uint32_t end) {
-                for (uint32_t n = begin; n < end; ++n) {
-                    const uint32_t k = asked[n], i = path_of[k];
-                    boxes[n] = piece_box(pieces[i][k - first_piece[i]], body_.radius);
-                }
-            });
-            std::vector<uint8_t> clear(asked.size(), 0);
-            level_.boxes_empty(boxes.data(), static_cast<uint32_t>(boxes.size()), clear.data());
-            for (size_t n = 0; n < asked.size(); ++n) piece_clear[asked[n]] = clear[n];
-            report_.box_queries += all_runs.size() + asked.size();
-        }
+        if (method_ == BakeMethod::Indexed) piece_clear = proven_clear(pieces, first_piece, path_of);
         // The pieces left to cast, kSegmentsPerPiece segments each.
         std::vector<uint32_t> cast_pieces;
         for (uint32_t k = 0; k < piece_count; ++k)
@@ -485,6 +492,7 @@ private:
         // Every take-off point's probes, in key order: reused from the old cache (also in key order)
         // when neither the take-off point nor the probe's reach changed, else probed again.
         std::vector<uint32_t> probed;  // indices into next.drops
+        next.drops.reserve(size_t(report_.takeoff_points) * angles);
         auto old = old_.drops.begin();
         for (uint32_t i = 0; i < samples_.size(); ++i) {
             const LinkBake::TakeoffState& t = next.takeoffs[i];
@@ -589,7 +597,9 @@ private:
         }
         report_.drop_candidates = 0;
         for (const LinkBake::DropProbe& d : c.drops) report_.drop_candidates += d.outcome == 0;
-        links = merge(std::move(links));
+        MergedLinks merged = merge_links(std::move(links), s_.merge_distance, method_ == BakeMethod::BruteForce);
+        report_.rejected_duplicate += merged.duplicates;
+        links = std::move(merged.kept);
         for (const Link& l : links) (l.kind == LinkKind::Jump ? report_.jump_links : report_.drop_links)++;
         return links;
     }
@@ -635,72 +645,6 @@ private:
             links.back().requirements.clearance_width = j->sweep.width;
         }
         return links;
-    }
-
-    // One link per traversal. Jumps come first, so a drop that repeats a jump goes; within a kind, a
-    // fixed order of positions decides, so the result does not depend on thread count.
-    std::vector<Link> merge(std::vector<Link> links) {
-        // Sorted through an index: Links are large, their order keys small.
-        using OrderKey = std::tuple<uint32_t, float, float, float, float, float, float>;
-        std::vector<std::pair<OrderKey, uint32_t>> order(links.size());
-        for (uint32_t k = 0; k < links.size(); ++k) {
-            const Link& l = links[k];
-            order[k] = {OrderKey{static_cast<uint32_t>(l.kind), l.start.x(), l.start.z(), l.start.y(), l.end.x(), l.end.z(), l.end.y()}, k};
-        }
-        std::sort(order.begin(), order.end());  // ties keep input order: the index is the last key
-        const float r = s_.merge_distance;
-        auto same_traversal = [&](const Link& a, const Link& b) {
-            if ((a.start - b.start).norm() <= r && (a.end - b.end).norm() <= r) return true;
-            return (a.bidirectional || b.bidirectional) && (a.start - b.end).norm() <= r && (a.end - b.start).norm() <= r;
-        };
-        struct Key {
-            int64_t x, z;
-            bool operator==(const Key& o) const { return x == o.x && z == o.z; }
-        };
-        struct Hash {
-            size_t operator()(const Key& k) const { return size_t(uint64_t(k.x) * 73856093u ^ uint64_t(k.z) * 19349663u); }
-        };
-        const float cell = std::max(r, 0.01f);
-        auto key = [&](const Vec3& p) { return Key{int64_t(std::floor(p.x() / cell)), int64_t(std::floor(p.z() / cell))}; };
-        // Kept links indexed by the cells of both their ends, so either orientation is found (brute
-        // force: compared with every kept link). Each cell heads a list threaded through `next_in_cell`.
-        constexpr uint32_t kNone = ~0u;
-        std::unordered_map<Key, uint32_t, Hash> cell_head;
-        cell_head.reserve(2 * links.size());
-        std::vector<uint32_t> next_in_cell;  // two entries per kept link: its start's cell, its end's
-        std::vector<Link> kept;
-        kept.reserve(links.size());
-        auto file = [&](const Key& k, uint32_t entry) {
-            const auto [it, fresh] = cell_head.try_emplace(k, entry);
-            next_in_cell[entry] = fresh ? kNone : it->second;
-            it->second = entry;
-        };
-        for (const auto& [order_key, index] : order) {
-            const Link& l = links[index];
-            bool duplicate = false;
-            if (method_ == BakeMethod::BruteForce) {
-                duplicate = std::any_of(kept.begin(), kept.end(), [&](const Link& k) { return same_traversal(k, l); });
-            } else {
-                const Key k = key(l.start);
-                for (int64_t dz = -1; dz <= 1 && !duplicate; ++dz)
-                    for (int64_t dx = -1; dx <= 1 && !duplicate; ++dx) {
-                        const auto it = cell_head.find(Key{k.x + dx, k.z + dz});
-                        for (uint32_t e = it == cell_head.end() ? kNone : it->second; e != kNone && !duplicate; e = next_in_cell[e])
-                            duplicate = same_traversal(kept[e / 2], l);
-                    }
-            }
-            if (duplicate) {
-                ++report_.rejected_duplicate;
-                continue;
-            }
-            const auto index_kept = static_cast<uint32_t>(kept.size());
-            kept.push_back(l);
-            if (method_ == BakeMethod::BruteForce) continue;
-            next_in_cell.resize(2 * kept.size(), kNone);
-            file(key(l.start), 2 * index_kept);
-            if (!(key(l.end) == key(l.start))) file(key(l.end), 2 * index_kept + 1);
-        }
-        return kept;
     }
 
     const NavMesh& mesh_;
@@ -754,49 +698,6 @@ std::vector<Link> LinkBake::bake(const Aabb* box, const Level& level, TaskSystem
     baked_ = true;
     report.milliseconds_total = total.lap();
     return links;
-}
-
-std::shared_ptr<std::mutex> LinkBakes::serializer(Handle navmesh) {
-    std::lock_guard lock(mutex_);
-    // A removed navmesh keeps no entry (its bake will not be kept either).
-    if (retired_.count(key(navmesh))) return std::make_shared<std::mutex>();
-    auto& m = serializers_[key(navmesh)];
-    if (!m) m = std::make_shared<std::mutex>();
-    return m;
-}
-
-void LinkBakes::store(Handle navmesh, Entry entry, FunctionRef<void()> links) {
-    std::lock_guard lock(mutex_);
-    links();
-    if (retired_.count(key(navmesh))) return;
-    bakes_[key(navmesh)] = std::move(entry);
-}
-
-bool LinkBakes::store_if_current(Handle navmesh, const LinkBake* bake, FunctionRef<void()> links) {
-    std::lock_guard lock(mutex_);
-    const auto it = bakes_.find(key(navmesh));
-    if (it == bakes_.end() || it->second.bake.get() != bake) return false;
-    links();
-    return true;
-}
-
-LinkBakes::Entry LinkBakes::get(Handle navmesh) const {
-    std::lock_guard lock(mutex_);
-    const auto it = bakes_.find(key(navmesh));
-    return it == bakes_.end() ? Entry{} : it->second;
-}
-
-void LinkBakes::forget(Handle navmesh, FunctionRef<void()> links) {
-    std::lock_guard lock(mutex_);
-    links();
-    bakes_.erase(key(navmesh));
-}
-
-void LinkBakes::remove(Handle navmesh) {
-    std::lock_guard lock(mutex_);
-    bakes_.erase(key(navmesh));
-    serializers_.erase(key(navmesh));
-    retired_.insert(key(navmesh));
 }
 
 }  // namespace nl

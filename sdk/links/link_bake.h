@@ -10,9 +10,7 @@
 #include <array>
 #include <memory>
 #include <mutex>
-#include <string>
 #include <unordered_map>
-#include <unordered_set>
 #include <vector>
 
 #include "links/edge_samples.h"
@@ -74,43 +72,6 @@ private:
     Cache cache_;
     bool baked_ = false;
     std::mutex mutex_;  // one bake or update at a time
-};
-
-// The last bake of each navmesh of a world, kept for updates, with the plugin settings it ran with.
-class LinkBakes {
-public:
-    struct Entry {
-        std::shared_ptr<LinkBake> bake;
-        std::string plugin_settings_json;
-    };
-
-    // Generations and updates of one navmesh run one at a time, from reading its bake to storing its
-    // links, so a later one never loses to an earlier one. Hold the returned mutex for that span.
-    // (A progress callback must not start another on the same navmesh: it would wait for itself.)
-    std::shared_ptr<std::mutex> serializer(Handle navmesh);
-
-    // The links a bake made and the bake itself change together, so that an update never continues
-    // a bake whose links were taken away. Each of these runs `links` (which changes the navmesh's
-    // links in the link store) and the bookkeeping in one step; `links` must not call back in here.
-    //
-    // A generation's result: records `entry` (ignored for a removed navmesh: a generation that
-    // finishes after the removal keeps nothing).
-    void store(Handle navmesh, Entry entry, FunctionRef<void()> links);
-    // An update's result: runs `links` only while `bake` is still the navmesh's bake, else returns
-    // false and runs nothing.
-    bool store_if_current(Handle navmesh, const LinkBake* bake, FunctionRef<void()> links);
-    // The generated links removed or replaced by a load: there is no generation left to update.
-    void forget(Handle navmesh, FunctionRef<void()> links);
-
-    Entry get(Handle navmesh) const;  // empty if the navmesh was never baked, or its bake forgotten
-    void remove(Handle navmesh);
-
-private:
-    static uint64_t key(Handle h) { return (uint64_t(h.index1) << 32) | h.generation; }
-    mutable std::mutex mutex_;
-    std::unordered_map<uint64_t, Entry> bakes_;
-    std::unordered_map<uint64_t, std::shared_ptr<std::mutex>> serializers_;
-    std::unordered_set<uint64_t> retired_;
 };
 
 }  // namespace nl
