@@ -301,30 +301,55 @@ RayHit Level::resolve_hit(const RTCRayHit& rh, const Ray& ray) const {
     return hit;
 }
 
+namespace {
+
+RTCRayHit ray_hit_query(const Vec3& origin, const Vec3& direction, float tfar, uint32_t id) {
+    RTCRayHit rh;
+    rh.ray.org_x = origin.x();
+    rh.ray.org_y = origin.y();
+    rh.ray.org_z = origin.z();
+    rh.ray.dir_x = direction.x();
+    rh.ray.dir_y = direction.y();
+    rh.ray.dir_z = direction.z();
+    rh.ray.tnear = 0.0f;
+    rh.ray.tfar = tfar;
+    rh.ray.time = 0.0f;
+    rh.ray.mask = ~0u;
+    rh.ray.id = id;
+    rh.ray.flags = 0;
+    rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+    return rh;
+}
+
+}  // namespace
+
 void Level::cast_rays(const Ray* rays, uint32_t count, RayHit* out) const {
     const auto lock = lock_committed();
     tasks_.parallel_for(count, 512, [&](uint32_t begin, uint32_t end) {
         RTCIntersectContext context;
         rtcInitIntersectContext(&context);
         for (uint32_t i = begin; i < end; ++i) {
-            const Ray& ray = rays[i];
-            RTCRayHit rh;
-            rh.ray.org_x = ray.origin.x();
-            rh.ray.org_y = ray.origin.y();
-            rh.ray.org_z = ray.origin.z();
-            rh.ray.dir_x = ray.direction.x();
-            rh.ray.dir_y = ray.direction.y();
-            rh.ray.dir_z = ray.direction.z();
-            rh.ray.tnear = 0.0f;
-            rh.ray.tfar = ray.max_distance;
-            rh.ray.time = 0.0f;
-            rh.ray.mask = ~0u;
-            rh.ray.id = i;
-            rh.ray.flags = 0;
-            rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-            rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+            RTCRayHit rh = ray_hit_query(rays[i].origin, rays[i].direction, rays[i].max_distance, i);
             rtcIntersect1(top_, &context, &rh);
-            out[i] = resolve_hit(rh, ray);
+            out[i] = resolve_hit(rh, rays[i]);
+        }
+    });
+}
+
+void Level::segments_first_hit(const Segment* segments, uint32_t count, RayHit* out) const {
+    const auto lock = lock_committed();
+    tasks_.parallel_for(count, 512, [&](uint32_t begin, uint32_t end) {
+        RTCIntersectContext context;
+        rtcInitIntersectContext(&context);
+        for (uint32_t i = begin; i < end; ++i) {
+            const Vec3 delta = segments[i].to - segments[i].from;
+            out[i] = RayHit{};
+            if (delta.squaredNorm() == 0.0f) continue;  // as segments_blocked: never blocked
+            RTCRayHit rh = ray_hit_query(segments[i].from, delta, 1.0f, i);
+            rtcIntersect1(top_, &context, &rh);
+            out[i] = resolve_hit(rh, Ray{segments[i].from, delta, 1.0f});
+            if (out[i].hit) out[i].distance = rh.ray.tfar * delta.norm();
         }
     });
 }
@@ -340,19 +365,7 @@ void Level::segments_blocked(const Segment* segments, uint32_t count, uint8_t* o
                 out_blocked[i] = 0;
                 continue;
             }
-            RTCRay ray;
-            ray.org_x = segments[i].from.x();
-            ray.org_y = segments[i].from.y();
-            ray.org_z = segments[i].from.z();
-            ray.dir_x = delta.x();
-            ray.dir_y = delta.y();
-            ray.dir_z = delta.z();
-            ray.tnear = 0.0f;
-            ray.tfar = 1.0f;
-            ray.time = 0.0f;
-            ray.mask = ~0u;
-            ray.id = i;
-            ray.flags = 0;
+            RTCRay ray = ray_hit_query(segments[i].from, delta, 1.0f, i).ray;
             rtcOccluded1(top_, &context, &ray);
             // Embree marks an occluded ray by setting tfar to -inf.
             out_blocked[i] = ray.tfar < 0.0f ? 1 : 0;

@@ -88,6 +88,9 @@ public:
     // Batched queries, parallel over the task system; out spans must have rays.size() entries.
     void cast_rays(const Ray* rays, uint32_t count, RayHit* out) const;
     void segments_blocked(const Segment* segments, uint32_t count, uint8_t* out_blocked) const;
+    // The first hit along each segment, cast exactly as segments_blocked casts it (so a hit here is a
+    // blocked segment there); distances in metres from `from`.
+    void segments_first_hit(const Segment* segments, uint32_t count, RayHit* out) const;
     // out_empty[i] = 1 when no triangle shares a point with boxes[i]: then no segment inside the box
     // is blocked, and the caller need not cast them (pad the box for rounding). Exact per triangle;
     // Embree's point queries find the triangles near each box.

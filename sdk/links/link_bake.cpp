@@ -110,6 +110,13 @@ private:
         return hits;
     }
 
+    std::vector<RayHit> first_hits(const std::vector<Segment>& segments) {
+        std::vector<RayHit> hits(segments.size());
+        level_.segments_first_hit(segments.data(), static_cast<uint32_t>(segments.size()), hits.data());
+        report_.rays_cast += segments.size();
+        return hits;
+    }
+
     std::vector<uint8_t> blocked(const std::vector<Segment>& segments) {
         std::vector<uint8_t> out(segments.size());
         level_.segments_blocked(segments.data(), static_cast<uint32_t>(segments.size()), out.data());
@@ -141,8 +148,8 @@ private:
             const Vec3 out = e.point + e.outward * std::min(step * kRimStep, s_.falloff_distance);
             return Vec3(out.x(), next.takeoffs[redo[k]].ground_y + probe, out.z());
         };
-        // Indexed bakes first try the triangle the ground ray hit: a probe that crosses it well inside
-        // is on ground without a ray (floors are mostly few large triangles).
+        // Indexed bakes first try the last triangle found under the sample (by the ground ray, then
+        // by each probe cast): a probe that crosses it well inside is on ground without a ray.
         const bool floor_shortcut = method_ == BakeMethod::Indexed;
         std::vector<std::optional<std::array<Vec3, 3>>> floor(floor_shortcut ? redo.size() : 0);
         tasks_.parallel_for(static_cast<uint32_t>(redo.size()), 256, [&](uint32_t begin, uint32_t end) {
@@ -183,8 +190,19 @@ private:
                 below.push_back(Segment{top, top - Vec3(0, step_reach, 0)});
                 cast_for.push_back(n);
             }
-            const std::vector<uint8_t> ground_below = blocked(below);
-            for (size_t c = 0; c < cast_for.size(); ++c) on_ground[cast_for[c]] = ground_below[c];
+            if (floor_shortcut) {
+                // Cast for the triangle too: the next step out may cross it.
+                const std::vector<RayHit> hits = first_hits(below);
+                tasks_.parallel_for(static_cast<uint32_t>(cast_for.size()), 512, [&](uint32_t begin, uint32_t end) {
+                    for (uint32_t c = begin; c < end; ++c) {
+                        on_ground[cast_for[c]] = hits[c].hit;
+                        if (hits[c].hit) floor[looking[cast_for[c]]] = level_.static_triangle(hits[c].mesh, hits[c].primitive);
+                    }
+                });
+            } else {
+                const std::vector<uint8_t> ground_below = blocked(below);
+                for (size_t c = 0; c < cast_for.size(); ++c) on_ground[cast_for[c]] = ground_below[c];
+            }
             size_t still = 0;
             for (size_t n = 0; n < looking.size(); ++n) {
                 if (on_ground[n]) looking[still++] = looking[n];
