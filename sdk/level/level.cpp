@@ -324,52 +324,45 @@ RTCRayHit ray_hit_query(const Vec3& origin, const Vec3& direction, float tfar, u
 
 }  // namespace
 
-void Level::cast_rays(const Ray* rays, uint32_t count, RayHit* out) const {
+template <typename Each>
+void Level::batch(uint32_t count, Each&& each) const {
     const auto lock = lock_committed();
     tasks_.parallel_for(count, 512, [&](uint32_t begin, uint32_t end) {
         RTCIntersectContext context;
         rtcInitIntersectContext(&context);
-        for (uint32_t i = begin; i < end; ++i) {
-            RTCRayHit rh = ray_hit_query(rays[i].origin, rays[i].direction, rays[i].max_distance, i);
-            rtcIntersect1(top_, &context, &rh);
-            out[i] = resolve_hit(rh, rays[i]);
-        }
+        for (uint32_t i = begin; i < end; ++i) each(i, context);
+    });
+}
+
+void Level::cast_rays(const Ray* rays, uint32_t count, RayHit* out) const {
+    batch(count, [&](uint32_t i, RTCIntersectContext& context) {
+        RTCRayHit rh = ray_hit_query(rays[i].origin, rays[i].direction, rays[i].max_distance, i);
+        rtcIntersect1(top_, &context, &rh);
+        out[i] = resolve_hit(rh, rays[i]);
     });
 }
 
 void Level::segments_first_hit(const Segment* segments, uint32_t count, RayHit* out) const {
-    const auto lock = lock_committed();
-    tasks_.parallel_for(count, 512, [&](uint32_t begin, uint32_t end) {
-        RTCIntersectContext context;
-        rtcInitIntersectContext(&context);
-        for (uint32_t i = begin; i < end; ++i) {
-            const Vec3 delta = segments[i].to - segments[i].from;
-            out[i] = RayHit{};
-            if (delta.squaredNorm() == 0.0f) continue;  // as segments_blocked: never blocked
-            RTCRayHit rh = ray_hit_query(segments[i].from, delta, 1.0f, i);
-            rtcIntersect1(top_, &context, &rh);
-            out[i] = resolve_hit(rh, Ray{segments[i].from, delta, 1.0f});
-            if (out[i].hit) out[i].distance = rh.ray.tfar * delta.norm();
-        }
+    batch(count, [&](uint32_t i, RTCIntersectContext& context) {
+        const Vec3 delta = segments[i].to - segments[i].from;
+        out[i] = RayHit{};
+        if (delta.squaredNorm() == 0.0f) return;  // as segments_blocked: never blocked
+        RTCRayHit rh = ray_hit_query(segments[i].from, delta, 1.0f, i);
+        rtcIntersect1(top_, &context, &rh);
+        out[i] = resolve_hit(rh, Ray{segments[i].from, delta, 1.0f});
+        if (out[i].hit) out[i].distance = rh.ray.tfar * delta.norm();
     });
 }
 
 void Level::segments_blocked(const Segment* segments, uint32_t count, uint8_t* out_blocked) const {
-    const auto lock = lock_committed();
-    tasks_.parallel_for(count, 512, [&](uint32_t begin, uint32_t end) {
-        RTCIntersectContext context;
-        rtcInitIntersectContext(&context);
-        for (uint32_t i = begin; i < end; ++i) {
-            const Vec3 delta = segments[i].to - segments[i].from;
-            if (delta.squaredNorm() == 0.0f) {
-                out_blocked[i] = 0;
-                continue;
-            }
-            RTCRay ray = ray_hit_query(segments[i].from, delta, 1.0f, i).ray;
-            rtcOccluded1(top_, &context, &ray);
-            // Embree marks an occluded ray by setting tfar to -inf.
-            out_blocked[i] = ray.tfar < 0.0f ? 1 : 0;
-        }
+    batch(count, [&](uint32_t i, RTCIntersectContext& context) {
+        const Vec3 delta = segments[i].to - segments[i].from;
+        out_blocked[i] = 0;
+        if (delta.squaredNorm() == 0.0f) return;
+        RTCRay ray = ray_hit_query(segments[i].from, delta, 1.0f, i).ray;
+        rtcOccluded1(top_, &context, &ray);
+        // Embree marks an occluded ray by setting tfar to -inf.
+        out_blocked[i] = ray.tfar < 0.0f ? 1 : 0;
     });
 }
 

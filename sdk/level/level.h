@@ -126,6 +126,9 @@ private:
     std::shared_lock<SharedMutex> lock_committed() const;
     void check_embree(const char* what) const;
     RayHit resolve_hit(const RTCRayHit& rh, const Ray& ray) const;
+    // Calls each(i, context) for every i in [0, count) on the workers, over the committed scene.
+    template <typename Each>
+    void batch(uint32_t count, Each&& each) const;
 
     TaskSystem& tasks_;
     RTCDevice device_ = nullptr;
