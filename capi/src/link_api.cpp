@@ -110,12 +110,8 @@ nl::Vec3 read_end(const float* p, const char* name) { return nl::capi::read_posi
 // Requirements left all zero are the ends' own (a manual link between two points asks for its gap,
 // rise and drop): the same for nl_link_add and a JSON load.
 void requirements_from_ends_if_unset(nl::Link& l) {
-    nl::LinkRequirements& r = l.requirements;
-    if (r.gap != 0.0f || r.rise != 0.0f || r.drop != 0.0f) return;
-    const nl::Vec3 d = l.end - l.start;
-    r.gap = nl::Vec3(d.x(), 0.0f, d.z()).norm();
-    r.rise = std::max(0.0f, d.y());
-    r.drop = std::max(0.0f, -d.y());
+    const nl::LinkRequirements& r = l.requirements;
+    if (r.gap == 0.0f && r.rise == 0.0f && r.drop == 0.0f) nl::set_requirements_from_ends(l);
 }
 
 // The polygon nearest a link end within kEndReach; INVALID_ARGUMENT naming the end otherwise.

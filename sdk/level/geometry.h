@@ -5,6 +5,7 @@
 #include <Eigen/Geometry>
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -19,6 +20,11 @@ struct TriangleMesh {
     std::vector<Vec3> vertices;
     std::vector<Triangle> triangles;
 };
+
+// Vertex `index` of a packed x y z float array (Embree's vertex buffers).
+inline Vec3 vertex_at(const float* xyz, size_t index) {
+    return Vec3(xyz[3 * index], xyz[3 * index + 1], xyz[3 * index + 2]);
+}
 
 struct Aabb {
     Vec3 min = Vec3::Constant(std::numeric_limits<float>::infinity());

@@ -259,8 +259,7 @@ std::optional<std::array<Vec3, 3>> Level::static_triangle(Handle h, uint32_t pri
     // Embree's own buffer: the world-space corners it intersects.
     const auto* vertices = static_cast<const float*>(rtcGetGeometryBufferData(mesh->geometry, RTC_BUFFER_TYPE_VERTEX, 0));
     const Triangle& t = mesh->object.triangles[primitive];
-    auto corner = [&](uint32_t i) { return Vec3(vertices[3 * size_t(i)], vertices[3 * size_t(i) + 1], vertices[3 * size_t(i) + 2]); };
-    return std::array<Vec3, 3>{corner(t[0]), corner(t[1]), corner(t[2])};
+    return std::array<Vec3, 3>{vertex_at(vertices, t[0]), vertex_at(vertices, t[1]), vertex_at(vertices, t[2])};
 }
 
 std::shared_lock<SharedMutex> Level::lock_committed() const {

@@ -9,13 +9,13 @@
 namespace nl {
 namespace {
 
-// What the point query callback needs: the box, where the triangles are, and the answer so far.
 // A static geometry's buffers, as Embree holds them (world space).
 struct StaticBuffers {
     const float* vertices = nullptr;
     const unsigned* indices = nullptr;
 };
 
+// What the point query callback needs: the box, where the triangles are, and the answer so far.
 struct BoxQuery {
     const OrientedBox* box = nullptr;
     const std::vector<StaticBuffers>* statics = nullptr;  // by geomID in the static scene
@@ -35,8 +35,8 @@ bool static_triangle_near(RTCPointQueryFunctionArguments* args) {
     if (q.overlap) return false;
     const auto [vertices, indices] = (*q.statics)[args->geomID];
     const unsigned* t = indices + 3 * size_t(args->primID);
-    auto vertex = [&](unsigned i) { return Vec3(vertices[3 * size_t(i)], vertices[3 * size_t(i) + 1], vertices[3 * size_t(i) + 2]); };
-    if (triangle_overlaps_box(vertex(t[0]), vertex(t[1]), vertex(t[2]), *q.box)) return stop_query(args, q);
+    if (triangle_overlaps_box(vertex_at(vertices, t[0]), vertex_at(vertices, t[1]), vertex_at(vertices, t[2]), *q.box))
+        return stop_query(args, q);
     return false;
 }
 

@@ -37,13 +37,15 @@ struct SweepPiece {
 };
 constexpr unsigned kSegmentsPerPiece = kSweepHeights * kSweepOffsetCount * 2;
 
-// The pieces of an agent-sized body swept along `path` (feet on the path), leaving out `margin` of
-// the path's length at each end (take-off and landing touch the floor): three heights (near the
-// feet, the middle, the head).
+// A path to sweep, first point to last.
 struct PathPoints {
     const Vec3* points;  // borrowed
     size_t count;
 };
+
+// The pieces of an agent-sized body swept along `path` (feet on the path), leaving out `margin` of
+// the path's length at each end (take-off and landing touch the floor): three heights (near the
+// feet, the middle, the head).
 std::vector<SweepPiece> sweep_pieces(PathPoints path, const Body& body, float margin);
 
 // Appends the piece's kSegmentsPerPiece segments: for each height, for each offset, the line in both

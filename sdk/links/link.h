@@ -2,6 +2,7 @@
 // ledge, a manual or plugin-defined move), with what it physically asks of an agent.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 
 #include "level/geometry.h"
@@ -40,5 +41,13 @@ struct Link {
     uint32_t start_polygon = 0xffffffffu;
     uint32_t end_polygon = 0xffffffffu;
 };
+
+// Sets the gap, rise and drop the link's ends ask for, start to end.
+inline void set_requirements_from_ends(Link& l) {
+    const Vec3 d = l.end - l.start;
+    l.requirements.gap = Vec3(d.x(), 0.0f, d.z()).norm();
+    l.requirements.rise = std::max(0.0f, d.y());
+    l.requirements.drop = std::max(0.0f, -d.y());
+}
 
 }  // namespace nl

@@ -44,8 +44,8 @@ bool touches(const Aabb& a, const Aabb* box) {
 }
 
 // Whether the vertical segment from `top` down `reach` crosses the (static, world-space) triangle a
-// millimetre inside its edges and ends, more far from the origin, so that casting it could only
-// report a hit.
+// millimetre inside its edges and ends (more far from the origin, where floats are coarser), so that
+// casting it could only report a hit.
 bool crosses_well_inside(const std::array<Vec3, 3>& t, const Vec3& top, float reach) {
     const float kInside = 1e-3f + 16.0f * std::numeric_limits<float>::epsilon() * top.cwiseAbs().maxCoeff();
     const Eigen::Vector2f a(t[0].x(), t[0].z()), b(t[1].x(), t[1].z()), c(t[2].x(), t[2].z()), p(top.x(), top.z());
@@ -63,13 +63,6 @@ bool crosses_well_inside(const std::array<Vec3, 3>& t, const Vec3& top, float re
     const float u = cross(p - a, c - a) / area, v = cross(b - a, p - a) / area;
     const float y = t[0].y() + u * (t[1].y() - t[0].y()) + v * (t[2].y() - t[0].y());
     return y <= top.y() - kInside && y >= top.y() - reach + kInside;
-}
-
-void set_requirements(Link& l) {
-    const Vec3 d = l.end - l.start;
-    l.requirements.gap = Vec3(d.x(), 0.0f, d.z()).norm();
-    l.requirements.rise = std::max(0.0f, d.y());
-    l.requirements.drop = std::max(0.0f, -d.y());
 }
 
 // One bake or update: fills `next` from the old cache and new rays.
@@ -337,7 +330,7 @@ private:
         c.link.generated = true;
         c.link.start_polygon = samples_[a].polygon;
         c.link.end_polygon = samples_[b].polygon;
-        set_requirements(c.link);
+        set_requirements_from_ends(c.link);
         next.jumps.emplace(key, c);
         redo.push_back(key);
         arcs.push_back(arc.points);
@@ -387,8 +380,7 @@ private:
 
     // Sweeps each path with the agent's body and bodies 1.5 and 2 times as wide, in one occlusion
     // batch: a path is clear if the agent's lines are, and as wide as the widest body whose lines
-    // (and every narrower body's) are. Indexed bakes first ask whether any triangle touches each
-    // piece's box: the segments of an untouched piece are all clear and are not cast.
+    // (and every narrower body's) are. Indexed bakes cast only the pieces proven_clear leaves.
     std::vector<LinkBake::Sweep> sweep(const std::vector<PathPoints>& paths) {
         std::vector<LinkBake::Sweep> out(paths.size());
         std::vector<std::vector<SweepPiece>> pieces(paths.size());
@@ -591,7 +583,7 @@ private:
         l.generated = true;
         l.start_polygon = samples_[i].polygon;
         l.end_polygon = landing.polygon;
-        set_requirements(l);
+        set_requirements_from_ends(l);
         d.fall[2] = Vec3(landing.point.x(), l.start.y(), landing.point.z());
         d.fall[3] = landing.point;
         d.fall_points = 4;
