@@ -98,7 +98,7 @@ Handle Level::add_mesh(const TriangleMesh& input, const Transform& transform, ui
         detach(mesh);
         throw;
     }
-    std::unique_lock lock(mutex_);
+    const auto lock = lock_exclusive();
     try {
         if (flags & kMeshMovable) attach_movable(mesh);
         else upload_static(mesh);
@@ -182,7 +182,7 @@ void Level::detach(Mesh& mesh) {
 }
 
 void Level::remove_mesh(Handle h) {
-    std::unique_lock lock(mutex_);
+    const auto lock = lock_exclusive();
     Mesh* mesh = meshes_.find(h);
     if (!mesh) fail_stale("mesh", h);
     detach(*mesh);
@@ -190,7 +190,7 @@ void Level::remove_mesh(Handle h) {
 }
 
 void Level::set_transform(Handle h, const Transform& transform) {
-    std::unique_lock lock(mutex_);
+    const auto lock = lock_exclusive();
     Mesh* mesh = meshes_.find(h);
     if (!mesh) fail_stale("mesh", h);
     const Aabb bounds = bounds_of(mesh->object, transform);
@@ -214,12 +214,12 @@ void Level::set_transform(Handle h, const Transform& transform) {
 }
 
 bool Level::contains(Handle h) const {
-    std::shared_lock lock(mutex_);
+    const auto lock = lock_shared();
     return meshes_.find(h) != nullptr;
 }
 
 MeshInfo Level::info(Handle h) const {
-    std::shared_lock lock(mutex_);
+    const auto lock = lock_shared();
     const Mesh* mesh = meshes_.find(h);
     if (!mesh) fail_stale("mesh", h);
     MeshInfo out;
@@ -234,7 +234,7 @@ MeshInfo Level::info(Handle h) const {
 }
 
 std::vector<Handle> Level::meshes() const {
-    std::shared_lock lock(mutex_);
+    const auto lock = lock_shared();
     std::vector<Handle> out;
     out.reserve(meshes_.size());
     meshes_.for_each([&](Handle h, const Mesh&) { out.push_back(h); });
@@ -242,7 +242,7 @@ std::vector<Handle> Level::meshes() const {
 }
 
 TriangleMesh Level::world_triangles() const {
-    std::shared_lock lock(mutex_);
+    const auto lock = lock_shared();
     TriangleMesh out;
     meshes_.for_each([&](Handle, const Mesh& m) {
         const auto base = static_cast<uint32_t>(out.vertices.size());
@@ -252,22 +252,46 @@ TriangleMesh Level::world_triangles() const {
     return out;
 }
 
-std::optional<std::array<Vec3, 3>> Level::static_triangle(Handle h, uint32_t primitive) const {
-    std::shared_lock lock(mutex_);
-    const Mesh* mesh = meshes_.find(h);
-    if (!mesh || mesh->own_scene || primitive >= mesh->object.triangles.size()) return std::nullopt;
-    // Embree's own buffer: the world-space corners it intersects.
-    const auto* vertices = static_cast<const float*>(rtcGetGeometryBufferData(mesh->geometry, RTC_BUFFER_TYPE_VERTEX, 0));
-    const Triangle& t = mesh->object.triangles[primitive];
-    return std::array<Vec3, 3>{vertex_at(vertices, t[0]), vertex_at(vertices, t[1]), vertex_at(vertices, t[2])};
+void Level::static_triangles(const RayHit* hits, uint32_t count, std::optional<std::array<Vec3, 3>>* out) const {
+    const auto lock = lock_shared();
+    tasks_.parallel_for(count, 512, [&](uint32_t begin, uint32_t end) {
+        for (uint32_t i = begin; i < end; ++i) {
+            out[i].reset();
+            const Mesh* mesh = hits[i].hit ? meshes_.find(hits[i].mesh) : nullptr;
+            if (!mesh || mesh->own_scene || hits[i].primitive >= mesh->object.triangles.size()) continue;
+            // Embree's own buffer: the world-space corners it intersects.
+            const auto* vertices = static_cast<const float*>(rtcGetGeometryBufferData(mesh->geometry, RTC_BUFFER_TYPE_VERTEX, 0));
+            const Triangle& t = mesh->object.triangles[hits[i].primitive];
+            out[i] = std::array<Vec3, 3>{vertex_at(vertices, t[0]), vertex_at(vertices, t[1]), vertex_at(vertices, t[2])};
+        }
+    });
+}
+
+namespace {
+
+void refuse_inside_task() {
+    if (TaskSystem::inside_task())
+        fail(ErrorCode::Internal, "the level was called from inside a parallel task (it must be called by the calling thread)");
+}
+
+}  // namespace
+
+std::shared_lock<SharedMutex> Level::lock_shared() const {
+    refuse_inside_task();
+    return std::shared_lock<SharedMutex>(mutex_);
+}
+
+std::unique_lock<SharedMutex> Level::lock_exclusive() const {
+    refuse_inside_task();
+    return std::unique_lock<SharedMutex>(mutex_);
 }
 
 std::shared_lock<SharedMutex> Level::lock_committed() const {
     for (;;) {
-        std::shared_lock shared(mutex_);
+        std::shared_lock shared = lock_shared();
         if (!static_dirty_ && !top_dirty_) return shared;
         shared.unlock();
-        std::unique_lock exclusive(mutex_);
+        const auto exclusive = lock_exclusive();
         if (static_dirty_) {
             tasks_.execute([&] { rtcCommitScene(static_scene_); });
             rtcCommitGeometry(rtcGetGeometry(top_, static_instance_));

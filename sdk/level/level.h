@@ -10,6 +10,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <mutex>
 #include <shared_mutex>
 #include <vector>
 
@@ -51,7 +52,7 @@ struct RayHit {
     Vec3 normal = Vec3::Zero();
     Handle mesh;
     uint32_t triangle = 0;   // index in the mesh's input triangles
-    uint32_t primitive = 0;  // index in the mesh's kept triangles (Level::static_triangle)
+    uint32_t primitive = 0;  // index in the mesh's kept triangles (Level::static_triangles)
 };
 
 struct Segment {
@@ -59,6 +60,10 @@ struct Segment {
     Vec3 to;
 };
 
+// Thread-safe: queries run at once under a shared lock, edits take it exclusively. Every method is
+// called by the thread that called into NavLink, never from inside a parallel_for body (TaskSystem's
+// contract; it throws Internal otherwise): a body waiting for the lock while the lock's holder waits
+// for the body's arena would hang.
 class Level {
 public:
     // Handles this level issues carry `handle_tag`, so handles of another level (world) are refused.
@@ -80,10 +85,10 @@ public:
 
     // World-space triangles of every mesh under its current transform (for reference checks, builders).
     TriangleMesh world_triangles() const;
-    // The corners of a hit's triangle (RayHit::mesh, RayHit::primitive) of a static mesh, in world
-    // space, exactly as Embree tests them; nothing for a movable mesh (Embree tests those in their
-    // own space) or a mesh removed since the hit.
-    std::optional<std::array<Vec3, 3>> static_triangle(Handle mesh, uint32_t primitive) const;
+    // For each hit, the corners of its triangle (RayHit::mesh, RayHit::primitive) if it is a static
+    // mesh's, in world space, exactly as Embree tests them; nothing for a miss, a movable mesh (Embree
+    // tests those in their own space) or a mesh removed since the hit. Parallel over the batch.
+    void static_triangles(const RayHit* hits, uint32_t count, std::optional<std::array<Vec3, 3>>* out) const;
 
     // Batched queries, parallel over the task system; out spans must have rays.size() entries.
     void cast_rays(const Ray* rays, uint32_t count, RayHit* out) const;
@@ -122,6 +127,9 @@ private:
     void prepare_movable(Mesh& mesh);
     void attach_movable(Mesh& mesh);
     void detach(Mesh& mesh);
+    // The level's lock, refused inside a parallel_for body.
+    std::shared_lock<SharedMutex> lock_shared() const;
+    std::unique_lock<SharedMutex> lock_exclusive() const;
     // Takes a shared lock on a committed scene; commits pending edits first.
     std::shared_lock<SharedMutex> lock_committed() const;
     void check_embree(const char* what) const;

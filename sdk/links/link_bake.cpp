@@ -145,6 +145,7 @@ private:
         // by each probe cast): a probe that crosses it well inside is on ground without a ray.
         const bool floor_shortcut = method_ == BakeMethod::Indexed;
         std::vector<std::optional<std::array<Vec3, 3>>> floor(floor_shortcut ? redo.size() : 0);
+        if (floor_shortcut) level_.static_triangles(ground.data(), static_cast<uint32_t>(ground.size()), floor.data());
         tasks_.parallel_for(static_cast<uint32_t>(redo.size()), 256, [&](uint32_t begin, uint32_t end) {
             for (uint32_t k = begin; k < end; ++k) {
                 const EdgeSample& e = samples_[redo[k]];
@@ -159,7 +160,6 @@ private:
                     t.bounds.grow(probe_top(k, j));
                     t.bounds.grow(probe_top(k, j) - Vec3(0, step_reach, 0));
                 }
-                if (floor_shortcut && ground[k].hit) floor[k] = level_.static_triangle(ground[k].mesh, ground[k].primitive);
             }
         });
         // One step out at a time, for the samples still on ground: only a hit or a miss is needed,
@@ -186,12 +186,12 @@ private:
             if (floor_shortcut) {
                 // Cast for the triangle too: the next step out may cross it.
                 const std::vector<RayHit> hits = first_hits(below);
-                tasks_.parallel_for(static_cast<uint32_t>(cast_for.size()), 512, [&](uint32_t begin, uint32_t end) {
-                    for (uint32_t c = begin; c < end; ++c) {
-                        on_ground[cast_for[c]] = hits[c].hit;
-                        if (hits[c].hit) floor[looking[cast_for[c]]] = level_.static_triangle(hits[c].mesh, hits[c].primitive);
-                    }
-                });
+                std::vector<std::optional<std::array<Vec3, 3>>> found(hits.size());
+                level_.static_triangles(hits.data(), static_cast<uint32_t>(hits.size()), found.data());
+                for (size_t c = 0; c < cast_for.size(); ++c) {
+                    on_ground[cast_for[c]] = hits[c].hit;
+                    if (hits[c].hit) floor[looking[cast_for[c]]] = found[c];
+                }
             } else {
                 const std::vector<uint8_t> ground_below = blocked(below);
                 for (size_t c = 0; c < cast_for.size(); ++c) on_ground[cast_for[c]] = ground_below[c];

@@ -1,5 +1,13 @@
 // The one interface all parallel work goes through. The default runs on TBB (Embree brings it);
 // a host may later supply its own scheduler behind the same interface.
+//
+// The contract that keeps every interleaving of NavLink's thread-safe calls free of deadlock:
+//  - A parallel_for body never blocks on a lock (NavLink's bodies read what their caller prepared
+//    and write disjoint outputs), so a parallel_for always finishes, whatever else is waiting.
+//  - Lock-taking calls (the level's queries and edits) are made only by the thread that called into
+//    NavLink, never from inside a body: the level's locks check it (inside_task()).
+//  - execute() may be called while the level's exclusive lock is held (to commit the Embree scene),
+//    so it must not wait for other callers' parallel_for bodies: it runs apart from them.
 #pragma once
 
 #include <cstdint>
@@ -17,13 +25,29 @@ public:
     virtual int thread_count() const noexcept = 0;
 
     // Calls body(begin, end) on disjoint ranges covering [0, count), each about `grain` long, possibly
-    // in parallel; returns when all are done. An exception from a body is rethrown here.
+    // in parallel; returns when all are done. An exception from a body is rethrown here. Bodies run
+    // inside a TaskScope; they may call parallel_for again, but must not block on a lock.
     virtual void parallel_for(uint32_t count, uint32_t grain,
                               FunctionRef<void(uint32_t begin, uint32_t end)> body) = 0;
 
     // Runs fn inside the task system's thread limit, so that parallelism inside libraries called by
-    // fn (Embree's BVH builds) uses at most thread_count() threads.
+    // fn (Embree's BVH builds) uses at most thread_count() threads. Never waits behind parallel_for
+    // bodies of other callers.
     virtual void execute(FunctionRef<void()> fn) = 0;
+
+    // True while the calling thread runs a parallel_for body (of any task system).
+    static bool inside_task() noexcept;
+
+protected:
+    // Marks the current thread as running a body for as long as it lives; implementations wrap
+    // every body call in one.
+    class TaskScope {
+    public:
+        TaskScope() noexcept;
+        ~TaskScope();
+        TaskScope(const TaskScope&) = delete;
+        TaskScope& operator=(const TaskScope&) = delete;
+    };
 };
 
 // threads < 1 means one thread (the caller).

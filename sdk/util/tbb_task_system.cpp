@@ -11,7 +11,7 @@ namespace {
 
 class TbbTaskSystem final : public TaskSystem {
 public:
-    explicit TbbTaskSystem(int threads) : threads_(std::max(1, threads)), arena_(threads_) {}
+    explicit TbbTaskSystem(int threads) : threads_(std::max(1, threads)), work_arena_(threads_), build_arena_(threads_) {}
 
     int thread_count() const noexcept override { return threads_; }
 
@@ -20,22 +20,28 @@ public:
         if (count == 0) return;
         grain = std::max<uint32_t>(1, grain);
         if (threads_ == 1 || count <= grain) {
+            TaskScope scope;
             body(0, count);
             return;
         }
-        arena_.execute([&] {
-            tbb::parallel_for(tbb::blocked_range<uint32_t>(0, count, grain),
-                              [&](const tbb::blocked_range<uint32_t>& r) { body(r.begin(), r.end()); });
+        work_arena_.execute([&] {
+            tbb::parallel_for(tbb::blocked_range<uint32_t>(0, count, grain), [&](const tbb::blocked_range<uint32_t>& r) {
+                TaskScope scope;
+                body(r.begin(), r.end());
+            });
         });
     }
 
+    // A second arena: a commit made under the level's exclusive lock must not queue for a slot that
+    // a long parallel_for holds (that would only delay it, but every query would wait meanwhile).
     void execute(FunctionRef<void()> fn) override {
-        arena_.execute([&] { fn(); });
+        build_arena_.execute([&] { fn(); });
     }
 
 private:
     int threads_;
-    tbb::task_arena arena_;
+    tbb::task_arena work_arena_;
+    tbb::task_arena build_arena_;
 };
 
 }  // namespace

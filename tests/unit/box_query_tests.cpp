@@ -154,7 +154,7 @@ TEST_CASE("boxes_empty agrees with every triangle, for static and movable meshes
     }
 }
 
-TEST_CASE("static_triangle gives the corners of the triangle a ray hit; nothing for movable or removed meshes") {
+TEST_CASE("static_triangles gives the corners of the triangle each ray hit; nothing for misses, movable or removed meshes") {
     nl::TriangleMesh mesh = to_mesh(nl::levelgen::generate_default_level(5));
     mesh.triangles.insert(mesh.triangles.begin(), {0, 0, 1});  // degenerate: dropped, so kept != input
     nl::Transform moved = nl::Transform::Identity();
@@ -162,35 +162,47 @@ TEST_CASE("static_triangle gives the corners of the triangle a ray hit; nothing 
     moved.rotate(Eigen::AngleAxisf(0.8f, Vec3::UnitY()));
     moved.scale(Vec3(1.2f, 0.9f, 1.0f));
     for (const uint32_t flags : {0u, uint32_t(nl::kMeshMovable)}) {
-        auto tasks = nl::make_tbb_task_system(1);
+        auto tasks = nl::make_tbb_task_system(2);
         nl::Level level(*tasks);
         const nl::Handle h = level.add_mesh(mesh, moved, flags, 0);
         const nl::Aabb b = level.info(h).bounds;
         std::mt19937 rng(3);
-        std::uniform_real_distribution<float> ux(b.min.x(), b.max.x()), uz(b.min.z(), b.max.z());
-        int hits = 0;
-        for (int i = 0; i < 500; ++i) {
-            const nl::Ray ray{Vec3(ux(rng), b.max.y() + 1.0f, uz(rng)), Vec3(0, -1, 0), 1000.0f};
-            nl::RayHit hit;
-            level.cast_rays(&ray, 1, &hit);
-            if (!hit.hit) continue;
-            ++hits;
-            const auto corners = level.static_triangle(hit.mesh, hit.primitive);
-            if (flags) {
-                CHECK(!corners);
+        std::uniform_real_distribution<float> ux(b.min.x() - 2.0f, b.max.x() + 2.0f), uz(b.min.z() - 2.0f, b.max.z() + 2.0f);
+        std::vector<nl::Ray> rays;
+        for (int i = 0; i < 2000; ++i) rays.push_back(nl::Ray{Vec3(ux(rng), b.max.y() + 1.0f, uz(rng)), Vec3(0, -1, 0), 1000.0f});
+        std::vector<nl::RayHit> hits(rays.size());
+        level.cast_rays(rays.data(), uint32_t(rays.size()), hits.data());
+        std::vector<std::optional<std::array<Vec3, 3>>> corners(hits.size());
+        level.static_triangles(hits.data(), uint32_t(hits.size()), corners.data());
+        int hit_count = 0, missed = 0;
+        for (size_t i = 0; i < hits.size(); ++i) {
+            const nl::RayHit& hit = hits[i];
+            if (!hit.hit || flags) {
+                CHECK(!corners[i]);
+                missed += !hit.hit;
+                hit_count += hit.hit;
                 continue;
             }
-            REQUIRE(corners);
-            const auto& t = *corners;
+            ++hit_count;
+            REQUIRE(corners[i]);
+            const auto& t = *corners[i];
             // The hit point lies in the triangle's plane, and the input triangle is the same one.
             const Vec3 n = (t[1] - t[0]).cross(t[2] - t[0]).normalized();
             CHECK(std::fabs(n.dot(hit.point - t[0])) < 1e-3f);
             const nl::Triangle& input = mesh.triangles[hit.triangle];
             CHECK(((moved * mesh.vertices[input[0]]) - t[0]).norm() < 1e-4f);
         }
-        CHECK(hits > 100);
-        CHECK(!level.static_triangle(h, 1u << 30));
+        CHECK(hit_count > 400);
+        CHECK(missed > 0);
+        nl::RayHit bad = hits[0];
+        bad.hit = true;
+        bad.mesh = h;
+        bad.primitive = 1u << 30;
+        level.static_triangles(&bad, 1, corners.data());
+        CHECK(!corners[0]);
+        bad.primitive = 0;
         level.remove_mesh(h);
-        CHECK(!level.static_triangle(h, 0));
+        level.static_triangles(&bad, 1, corners.data());
+        CHECK(!corners[0]);
     }
 }

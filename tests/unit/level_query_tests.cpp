@@ -2,6 +2,7 @@
 // static and movable, under a transform, and with 1 and 2 threads.
 #include <doctest/doctest.h>
 
+#include <atomic>
 #include <cmath>
 #include <random>
 #include <sstream>
@@ -9,6 +10,7 @@
 #include "brute_force.h"
 #include "io/obj_reader.h"
 #include "level/level.h"
+#include "util/task_system.h"
 #include "level_generator.h"
 #include "shared_levels.h"
 
@@ -235,4 +237,30 @@ TEST_CASE("results are identical with 1 and 2 threads") {
     }
     CHECK(differ == 0);
     CHECK(blocked[0] == blocked[1]);
+}
+
+TEST_CASE("the level refuses calls from inside a parallel task, where waiting for its lock could hang") {
+    auto tasks = nl::make_tbb_task_system(2);
+    nl::Level level(*tasks);
+    nl::TriangleMesh floor;
+    floor.vertices = {Vec3(0, 0, 0), Vec3(0, 0, 1), Vec3(1, 0, 0)};
+    floor.triangles = {{0, 1, 2}};
+    const nl::Handle h = level.add_mesh(floor, nl::Transform::Identity(), 0, 0);
+    CHECK(!nl::TaskSystem::inside_task());
+    std::atomic<int> refused{0}, bodies{0};
+    tasks->parallel_for(64, 1, [&](uint32_t begin, uint32_t end) {
+        for (uint32_t i = begin; i < end; ++i) {
+            ++bodies;
+            CHECK(nl::TaskSystem::inside_task());
+            try {
+                level.contains(h);
+            } catch (const nl::Error& e) {
+                if (e.code() == nl::ErrorCode::Internal) ++refused;
+            }
+        }
+    });
+    CHECK(bodies == 64);
+    CHECK(refused == 64);
+    CHECK(!nl::TaskSystem::inside_task());
+    CHECK(level.contains(h));  // and from the calling thread it answers
 }

@@ -1,0 +1,455 @@
+// navlink-world-soak: every thread-safe entry point at once, from several threads, for a bounded
+// time, with each of several worker counts. Link generation and box updates, moves of a movable and of
+// a static mesh with ray and segment queries after each, meshes added and removed, manual link edits,
+// JSON saves and loads, queued and synchronous path requests, navmeshes added and removed with
+// requests on them; at the end of each round the world is destroyed with requests still queued.
+//
+// It fails when any call returns a status its documentation does not allow, when a request finishes
+// other than exactly once, or when a thread stops making progress for `--stall` seconds: a hang is
+// reported with the thread that is stuck (and the process aborts, so a debugger or the sanitizer
+// prints every thread), not left to the test's timeout. Built and run under ThreadSanitizer by the
+// test command.
+//
+//   navlink-world-soak [--seconds S] [--stall S] [--workers N,N,...]
+#include <navlink/navlink.h>
+
+#include <atomic>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <memory>
+#include <mutex>
+#include <random>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "cell_navmesh.h"
+#include "generated_level_c.h"
+#include "level_generator.h"
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+std::atomic<int> failures{0};
+
+void fail(const std::string& what) {
+    if (failures.fetch_add(1) < 20) std::fprintf(stderr, "navlink-world-soak: %s\n", what.c_str());
+}
+
+// A failure outside `allowed` (successes are always allowed) fails the soak, naming the call.
+bool expect(nl_status status, const char* call, std::initializer_list<nl_status> allowed = {}) {
+    if (!NL_FAILED(status)) return true;  // success, perhaps with detail bits (a partial path)
+    for (nl_status a : allowed) {
+        if (status == (NL_STATUS_FAILURE | a)) return false;
+    }
+    fail(std::string(call) + " returned " + nl_status_string(status) + ": " + nl_get_last_error_message());
+    return false;
+}
+
+// What each thread has done; the watchdog reads `steps` to see that it still moves.
+struct Worker {
+    const char* name;
+    std::atomic<uint64_t> steps{0};
+    std::atomic<const char*> doing{"starting"};
+};
+
+struct Round {
+    nl_world* world = nullptr;
+    nl_navmesh_id navmesh{};     // built by Recast from the level, for the default Recast agent
+    nl_mesh_id platform{};       // movable
+    nl_mesh_id crate{};          // static, moved anyway (its vertices are uploaded again)
+    std::atomic<bool> stop{false};
+};
+
+float random_in(std::mt19937& rng, float lo, float hi) { return std::uniform_real_distribution<float>(lo, hi)(rng); }
+
+void translation(float (&m)[16], float x, float y, float z) {
+    std::memset(m, 0, sizeof m);
+    m[0] = m[5] = m[10] = m[15] = 1.0f;
+    m[12] = x, m[13] = y, m[14] = z;
+}
+
+nl_mesh_id add_box(nl_world* world, const nl::levelgen::Box& box, uint32_t flags) {
+    nl::levelgen::GeneratedLevel level;
+    level.add_box(box);
+    nl_mesh_id id{};
+    expect(nl::test::add_generated_level(world, level, flags, nullptr, &id), "nl_mesh_add (box)");
+    return id;
+}
+
+// A batch of rays down over the level and segments across it.
+void query(nl_world* world, std::mt19937& rng) {
+    std::vector<nl_ray> rays(64);
+    for (nl_ray& r : rays) {
+        r = nl_ray{{random_in(rng, -2, 38), 12, random_in(rng, -2, 12)}, {0, -1, 0}, 30};
+    }
+    std::vector<nl_ray_hit> hits(rays.size());
+    expect(nl_world_cast_rays(world, rays.data(), uint32_t(rays.size()), hits.data()), "nl_world_cast_rays");
+    std::vector<nl_segment> segments(64);
+    for (nl_segment& s : segments) {
+        s = nl_segment{{random_in(rng, -2, 38), 1, random_in(rng, -2, 12)}, {random_in(rng, -2, 38), 1, random_in(rng, -2, 12)}};
+    }
+    std::vector<uint8_t> blocked(segments.size());
+    expect(nl_world_segments_blocked(world, segments.data(), uint32_t(segments.size()), blocked.data()),
+           "nl_world_segments_blocked");
+}
+
+void generate(Round& r, Worker& me) {
+    nl_link_settings settings = nl_default_link_settings();
+    const float box_min[3] = {10, -2, -1}, box_max[3] = {20, 6, 8};
+    for (uint64_t i = 0; !r.stop; ++i) {
+        if (i % 3 == 2) {
+            me.doing = "nl_navmesh_update_links_in_box";
+            // NOT_FOUND: the link editor removed the generated links or loaded a JSON set since.
+            expect(nl_navmesh_update_links_in_box(r.world, r.navmesh, box_min, box_max, nullptr, nullptr, nullptr),
+                   "nl_navmesh_update_links_in_box", {NL_STATUS_NOT_FOUND});
+        } else {
+            me.doing = "nl_navmesh_generate_links";
+            expect(nl_navmesh_generate_links(r.world, r.navmesh, &settings, nullptr, nullptr, nullptr),
+                   "nl_navmesh_generate_links");
+        }
+        ++me.steps;
+    }
+}
+
+// The movable platform swings back and forth; each move is followed by queries, so every query
+// commits a changed scene.
+void move_platform(Round& r, Worker& me) {
+    std::mt19937 rng(11);
+    float m[16];
+    for (uint64_t i = 0; !r.stop; ++i) {
+        me.doing = "nl_mesh_set_transform (movable)";
+        translation(m, 0, 0, float(i % 40) * 0.05f);
+        expect(nl_mesh_set_transform(r.world, r.platform, m), "nl_mesh_set_transform (movable)");
+        me.doing = "queries after a movable move";
+        query(r.world, rng);
+        ++me.steps;
+    }
+}
+
+// A second editor: moves a static mesh (the static scene is rebuilt), adds and removes small meshes.
+void edit_level(Round& r, Worker& me) {
+    std::mt19937 rng(12);
+    float m[16];
+    std::vector<nl_mesh_id> added;
+    for (uint64_t i = 0; !r.stop; ++i) {
+        me.doing = "nl_mesh_set_transform (static)";
+        translation(m, float(i % 10) * 0.1f, 0, 0);
+        expect(nl_mesh_set_transform(r.world, r.crate, m), "nl_mesh_set_transform (static)");
+        if (added.size() < 4 && rng() % 2) {
+            me.doing = "nl_mesh_add";
+            const float x = random_in(rng, 0, 30), z = random_in(rng, 0, 8);
+            added.push_back(add_box(r.world, {{x, 20, z}, {x + 0.5f, 20.5f, z + 0.5f}}, rng() % 2 ? NL_MESH_MOVABLE : 0));
+        } else if (!added.empty()) {
+            me.doing = "nl_mesh_remove";
+            expect(nl_mesh_remove(r.world, added.back()), "nl_mesh_remove");
+            added.pop_back();
+        }
+        me.doing = "queries after a static edit";
+        query(r.world, rng);
+        ++me.steps;
+    }
+}
+
+// Manual links added, updated and removed; generated links removed; the links saved and loaded back.
+void edit_links(Round& r, Worker& me) {
+    std::mt19937 rng(13);
+    std::vector<nl_link_id> live;
+    std::vector<char> json;
+    for (uint64_t i = 0; !r.stop; ++i) {
+        const uint32_t what = rng() % 16;
+        if (what < 8 || live.empty()) {
+            me.doing = "nl_link_add";
+            nl_link_def def = nl_default_link_def();
+            def.kind = NL_LINK_MANUAL;
+            // Two points on the first platform (x 0-6, y ~0, z 0-6 in the default level).
+            def.start[0] = random_in(rng, 1, 4), def.start[2] = random_in(rng, 1, 5);
+            def.end[0] = def.start[0] + 1, def.end[2] = def.start[2];
+            nl_link_id id{};
+            if (expect(nl_link_add(r.world, r.navmesh, &def, &id), "nl_link_add")) live.push_back(id);
+        } else if (what < 11) {
+            me.doing = "nl_link_update";
+            nl_link link{};
+            // INVALID_HANDLE: a JSON load below replaced every link since this one was added.
+            if (expect(nl_link_get(r.world, live.back(), &link), "nl_link_get", {NL_STATUS_INVALID_HANDLE})) {
+                nl_link_def def = nl_default_link_def();
+                def.kind = NL_LINK_MANUAL;
+                std::memcpy(def.start, link.start, sizeof def.start);
+                std::memcpy(def.end, link.end, sizeof def.end);
+                def.enabled = uint8_t(rng() % 2);
+                expect(nl_link_update(r.world, live.back(), &def), "nl_link_update", {NL_STATUS_INVALID_HANDLE});
+            }
+        } else if (what < 14) {
+            me.doing = "nl_link_remove";
+            expect(nl_link_remove(r.world, live.back()), "nl_link_remove", {NL_STATUS_INVALID_HANDLE});
+            live.pop_back();
+        } else if (what == 14) {
+            me.doing = "nl_navmesh_remove_generated_links";
+            expect(nl_navmesh_remove_generated_links(r.world, r.navmesh, nullptr), "nl_navmesh_remove_generated_links");
+        } else {
+            me.doing = "nl_navmesh_save_links_json / load";
+            size_t length = 0;
+            nl_status status = NL_STATUS_FAILURE | NL_STATUS_BUFFER_TOO_SMALL;
+            // Links may change between measuring and writing: measure again until it fits.
+            while (status == (NL_STATUS_FAILURE | NL_STATUS_BUFFER_TOO_SMALL)) {
+                json.resize(length + 1024);
+                status = nl_navmesh_save_links_json(r.world, r.navmesh, json.data(), json.size(), &length);
+            }
+            if (expect(status, "nl_navmesh_save_links_json")) {
+                expect(nl_navmesh_load_links_json(r.world, r.navmesh, json.data(), length, nullptr), "nl_navmesh_load_links_json");
+                live.clear();
+            }
+        }
+        ++me.steps;
+    }
+}
+
+struct Completion {
+    std::atomic<int> calls{0};
+};
+
+void on_done(void* user, nl_path_ticket, nl_path_outcome) { static_cast<Completion*>(user)->calls.fetch_add(1); }
+
+nl_path_request_def request_on(nl_navmesh_id navmesh, std::mt19937& rng, float x1, float z1) {
+    nl_path_request_def def = nl_default_path_request_def();
+    def.navmesh = navmesh;
+    def.start[0] = random_in(rng, 0, x1), def.start[2] = random_in(rng, 0, z1);
+    def.goal[0] = random_in(rng, 0, x1), def.goal[2] = random_in(rng, 0, z1);
+    def.agent.max_jump_distance = rng() % 2 ? 4.0f : 0.0f;
+    def.agent.max_jump_height = 1.0f;
+    def.agent.max_drop_height = rng() % 2 ? 4.0f : 0.0f;
+    def.agent.radius = 0.3f;
+    return def;
+}
+
+// Queued requests with callbacks (some cancelled or released at once) and synchronous ones.
+void request_paths(Round& r, Worker& me, unsigned seed) {
+    std::mt19937 rng(seed);
+    std::vector<std::unique_ptr<Completion>> done;
+    std::vector<nl_path_ticket> tickets;
+    std::vector<nl_path_point> points(256);
+    for (uint64_t i = 0; !r.stop; ++i) {
+        nl_path_request_def def = request_on(r.navmesh, rng, 36, 10);
+        if (i % 4 == 0) {
+            me.doing = "nl_path_find";
+            nl_path_result result{};
+            result.size = sizeof result;
+            uint32_t count = 0;
+            expect(nl_path_find(r.world, &def, &result, points.data(), uint32_t(points.size()), &count), "nl_path_find",
+                   {NL_STATUS_BUFFER_TOO_SMALL});
+        } else {
+            me.doing = "nl_path_request";
+            done.push_back(std::make_unique<Completion>());
+            def.callback = on_done;
+            def.user = done.back().get();
+            nl_path_ticket ticket{};
+            if (!expect(nl_path_request(r.world, &def, &ticket), "nl_path_request")) {
+                done.pop_back();
+            } else if (i % 9 == 0) {
+                expect(nl_path_cancel(r.world, ticket), "nl_path_cancel");
+                tickets.push_back(ticket);
+            } else if (i % 7 == 0) {
+                expect(nl_path_release(r.world, ticket), "nl_path_release");
+            } else {
+                tickets.push_back(ticket);
+            }
+        }
+        // Read back and release the older half now and then, so tickets do not pile up.
+        if (tickets.size() > 64) {
+            me.doing = "nl_path_poll / get_result / release";
+            for (size_t k = 0; k < 32; ++k) {
+                nl_path_outcome outcome = 0;
+                expect(nl_path_poll(r.world, tickets[k], &outcome), "nl_path_poll");
+                if (outcome != NL_PATH_PENDING) {
+                    nl_path_result result{};
+                    result.size = sizeof result;
+                    uint32_t count = 0;
+                    expect(nl_path_get_result(r.world, tickets[k], &result, points.data(), uint32_t(points.size()), &count),
+                           "nl_path_get_result", {NL_STATUS_BUFFER_TOO_SMALL});
+                }
+                expect(nl_path_release(r.world, tickets[k]), "nl_path_release");
+            }
+            tickets.erase(tickets.begin(), tickets.begin() + 32);
+        }
+        ++me.steps;
+    }
+    // Every accepted request calls back exactly once; wait for the queue to finish them.
+    me.doing = "waiting for this thread's requests";
+    for (const auto& c : done) {
+        const auto until = Clock::now() + std::chrono::seconds(60);
+        while (c->calls.load() == 0 && Clock::now() < until) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+        if (c->calls.load() != 1) fail("a request called back " + std::to_string(c->calls.load()) + " times");
+    }
+    for (nl_path_ticket t : tickets) expect(nl_path_release(r.world, t), "nl_path_release");
+}
+
+// Host navmeshes added, generated, planned on and removed while their requests may still run.
+void churn_navmeshes(Round& r, Worker& me) {
+    std::mt19937 rng(14);
+    std::vector<std::string> rows(12, std::string(12, '.'));
+    for (std::string& row : rows) row[6] = '#';
+    const nl::test::CellNavmesh cells(rows, 0.0f);
+    std::vector<std::unique_ptr<Completion>> done;
+    for (uint64_t i = 0; !r.stop; ++i) {
+        me.doing = "nl_navmesh_add";
+        nl_navmesh_id id{};
+        if (!expect(nl_navmesh_add(r.world, &cells.def, &id), "nl_navmesh_add")) continue;
+        for (int k = 0; k < 8; ++k) {
+            me.doing = "nl_path_request (churned navmesh)";
+            nl_path_request_def def = request_on(id, rng, 12, 12);
+            done.push_back(std::make_unique<Completion>());
+            def.callback = on_done;
+            def.user = done.back().get();
+            nl_path_ticket ticket{};
+            if (expect(nl_path_request(r.world, &def, &ticket), "nl_path_request (churned navmesh)"))
+                expect(nl_path_release(r.world, ticket), "nl_path_release");
+            else
+                done.pop_back();
+        }
+        if (i % 2) {
+            me.doing = "nl_navmesh_generate_links (churned navmesh)";
+            // Cell navmeshes have no level geometry under them: no links, but a full bake's locking.
+            expect(nl_navmesh_generate_links(r.world, id, nullptr, nullptr, nullptr, nullptr),
+                   "nl_navmesh_generate_links (churned navmesh)");
+        }
+        me.doing = "nl_navmesh_remove";
+        expect(nl_navmesh_remove(r.world, id), "nl_navmesh_remove");
+        ++me.steps;
+    }
+    me.doing = "waiting for this thread's requests";
+    for (const auto& c : done) {
+        const auto until = Clock::now() + std::chrono::seconds(60);
+        while (c->calls.load() == 0 && Clock::now() < until) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+        if (c->calls.load() != 1) fail("a request on a removed navmesh called back " + std::to_string(c->calls.load()) + " times");
+    }
+}
+
+bool set_up(Round& r, int32_t workers) {
+    nl_world_def def = nl_default_world_def();
+    def.worker_count = workers;
+    def.path_worker_count = 2;
+    if (!expect(nl_world_create(&def, &r.world), "nl_world_create")) return false;
+    const nl::levelgen::GeneratedLevel level = nl::levelgen::generate_default_level(1);
+    if (!expect(nl::test::add_generated_level(r.world, level), "nl_mesh_add (level)")) return false;
+    r.platform = add_box(r.world, {{8, -0.5f, 14}, {12, 0, 18}}, NL_MESH_MOVABLE);
+    r.crate = add_box(r.world, {{30, 0, 14}, {31, 1, 15}}, 0);
+    const nl_navmesh_build_def build = nl_default_navmesh_build_def();
+    return expect(nl_navmesh_build(r.world, &build, &r.navmesh), "nl_navmesh_build");
+}
+
+// Requests queued as the world goes: each still calls back exactly once (as cancelled or finished).
+void destroy_with_requests_queued(Round& r) {
+    std::mt19937 rng(15);
+    std::vector<Completion> done(200);
+    int accepted = 0;
+    for (Completion& c : done) {
+        nl_path_request_def def = request_on(r.navmesh, rng, 36, 10);
+        def.callback = on_done;
+        def.user = &c;
+        nl_path_ticket ticket{};
+        if (expect(nl_path_request(r.world, &def, &ticket), "nl_path_request (before destroy)")) ++accepted;
+        else c.calls = 1;
+    }
+    nl_world_destroy(r.world);
+    r.world = nullptr;
+    int wrong = 0;
+    for (const Completion& c : done) wrong += c.calls.load() != 1;
+    if (wrong) fail(std::to_string(wrong) + " of " + std::to_string(accepted) + " requests queued at destroy did not call back once");
+}
+
+// Runs one round; aborts the process when a thread stalls.
+void run_round(int32_t workers, double seconds, double stall_seconds) {
+    Round r;
+    if (!set_up(r, workers)) return;
+    std::vector<std::unique_ptr<Worker>> workers_state;
+    std::vector<std::thread> threads;
+    auto start = [&](const char* name, auto&& body) {
+        workers_state.push_back(std::make_unique<Worker>());
+        Worker& w = *workers_state.back();
+        w.name = name;
+        threads.emplace_back([&r, &w, body] {
+            body(r, w);
+            w.doing = "finished";
+        });
+    };
+    start("generator", [](Round& r, Worker& w) { generate(r, w); });
+    start("platform mover", [](Round& r, Worker& w) { move_platform(r, w); });
+    start("level editor", [](Round& r, Worker& w) { edit_level(r, w); });
+    start("link editor", [](Round& r, Worker& w) { edit_links(r, w); });
+    start("requester 1", [](Round& r, Worker& w) { request_paths(r, w, 21); });
+    start("requester 2", [](Round& r, Worker& w) { request_paths(r, w, 22); });
+    start("navmesh churn", [](Round& r, Worker& w) { churn_navmeshes(r, w); });
+
+    const auto begin = Clock::now();
+    bool stalled = false;
+    std::vector<uint64_t> last(workers_state.size(), 0);
+    std::vector<Clock::time_point> moved(workers_state.size(), begin);
+    for (;;) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(50));
+        const auto now = Clock::now();
+        if (!r.stop && std::chrono::duration<double>(now - begin).count() >= seconds) {
+            r.stop = true;
+            // Threads finish their current call and wait for their requests: give them a fresh stall window.
+            std::fill(moved.begin(), moved.end(), now);
+        }
+        bool all_done = true;
+        for (size_t i = 0; i < workers_state.size(); ++i) {
+            const uint64_t steps = workers_state[i]->steps.load();
+            const bool finished = std::strcmp(workers_state[i]->doing.load(), "finished") == 0;
+            all_done = all_done && finished;
+            if (steps != last[i] || finished) last[i] = steps, moved[i] = now;
+            if (std::chrono::duration<double>(now - moved[i]).count() > stall_seconds) {
+                std::fprintf(stderr, "navlink-world-soak: workers=%d: thread '%s' made no progress for %.0f s, in %s\n", workers,
+                             workers_state[i]->name, stall_seconds, workers_state[i]->doing.load());
+                stalled = true;
+            }
+        }
+        if (stalled) {
+            std::fflush(stderr);
+            std::abort();  // a hang: let the sanitizer or a core dump show every thread
+        }
+        if (all_done) break;
+    }
+    for (std::thread& t : threads) t.join();
+    uint64_t total = 0;
+    std::string counts;
+    for (const auto& w : workers_state) {
+        total += w->steps;
+        counts += std::string(" ") + w->name + "=" + std::to_string(w->steps.load());
+    }
+    destroy_with_requests_queued(r);
+    std::printf("workers=%d seconds=%.1f steps=%llu:%s\n", workers, std::chrono::duration<double>(Clock::now() - begin).count(),
+                static_cast<unsigned long long>(total), counts.c_str());
+    for (const auto& w : workers_state) {
+        if (w->steps == 0) fail(std::string("thread '") + w->name + "' did nothing");
+    }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    double seconds = 4.0, stall = 30.0;
+    std::vector<int32_t> worker_counts = {2, NL_WORKERS_AUTO, 1, 3};
+    for (int i = 1; i + 1 < argc; i += 2) {
+        const std::string option = argv[i];
+        if (option == "--seconds") seconds = std::atof(argv[i + 1]);
+        else if (option == "--stall") stall = std::atof(argv[i + 1]);
+        else if (option == "--workers") {
+            worker_counts.clear();
+            for (const char* p = argv[i + 1]; *p;) {
+                char* end = nullptr;
+                worker_counts.push_back(int32_t(std::strtol(p, &end, 10)));
+                p = *end ? end + 1 : end;
+            }
+        } else {
+            std::fprintf(stderr, "usage: navlink-world-soak [--seconds S] [--stall S] [--workers N,N,...]\n");
+            return 2;
+        }
+    }
+    for (int32_t workers : worker_counts) run_round(workers, seconds, stall);
+    std::printf("failures=%d\n", failures.load());
+    return failures.load() == 0 ? 0 : 1;
+}
