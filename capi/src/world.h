@@ -11,6 +11,7 @@
 #include "path/path_graph_cache.h"
 #include "path/path_queue.h"
 #include "plugin_registry.h"
+#include "util/handle_tag.h"
 #include "util/task_system.h"
 
 // Members are destroyed in reverse order: the path queue goes first (its workers stop, requests still
@@ -18,7 +19,7 @@
 // task system last.
 struct nl_world {
     nl_world_def def;
-    uint32_t handle_tag = 0;
+    nl::HandleTag handle_tag = nl::HandleTag::acquire();  // released last, after every id it tagged
     std::unique_ptr<nl::TaskSystem> tasks;
     std::unique_ptr<nl::Level> level;
     std::unique_ptr<nl::NavMeshRegistry> navmeshes;

@@ -1,4 +1,3 @@
-#include <atomic>
 #include <cstddef>
 #include <thread>
 
@@ -12,13 +11,6 @@ using nl::capi::guarded;
 namespace {
 
 constexpr size_t kWorldDefFirstSize = offsetof(nl_world_def, log_level) + sizeof(nl_log_level);
-
-// Each world tags the ids it issues, so an id from another live world is refused, not obeyed.
-// The counter hands out tags and holds no world state.
-uint32_t next_world_tag() {
-    static std::atomic<uint32_t> counter{0};
-    return counter.fetch_add(1, std::memory_order_relaxed) % 4095u + 1u;
-}
 
 int resolve_worker_count(int32_t requested) {
     if (requested == NL_WORKERS_AUTO) return static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
@@ -56,16 +48,15 @@ NL_API nl_status nl_world_create(const nl_world_def* def, nl_world** out_world) 
         auto world = std::make_unique<nl_world>();
         world->def = settings;
         world->tasks = nl::make_tbb_task_system(resolve_worker_count(settings.worker_count));
-        world->handle_tag = next_world_tag();
-        world->level = std::make_unique<nl::Level>(*world->tasks, world->handle_tag);
-        world->navmeshes = std::make_unique<nl::NavMeshRegistry>(world->handle_tag);
-        world->links = std::make_unique<nl::LinkStore>(world->handle_tag);
+        world->level = std::make_unique<nl::Level>(*world->tasks, world->handle_tag.value());
+        world->navmeshes = std::make_unique<nl::NavMeshRegistry>(world->handle_tag.value());
+        world->links = std::make_unique<nl::LinkStore>(world->handle_tag.value());
         world->bakes = std::make_unique<nl::LinkBakes>();
-        world->plugins = std::make_unique<nl::capi::PluginRegistry>(*world, world->handle_tag);
+        world->plugins = std::make_unique<nl::capi::PluginRegistry>(*world, world->handle_tag.value());
         nl::capi::register_builtin_plugins(*world->plugins);
         world->path_graphs = std::make_unique<nl::PathGraphCache>();
         const int path_workers = settings.path_worker_count == 0 ? 0 : resolve_worker_count(settings.path_worker_count);
-        world->paths = std::make_unique<nl::PathQueue>(world->handle_tag, static_cast<unsigned>(path_workers));
+        world->paths = std::make_unique<nl::PathQueue>(world->handle_tag.value(), static_cast<unsigned>(path_workers));
         *out_world = world.release();
     });
 }

@@ -5,7 +5,7 @@ namespace nl {
 std::shared_ptr<std::mutex> LinkBakes::serializer(Handle navmesh) {
     std::lock_guard lock(mutex_);
     // A removed navmesh keeps no entry (its bake will not be kept either).
-    if (retired_.count(key(navmesh))) return std::make_shared<std::mutex>();
+    if (removed_.contains(navmesh)) return std::make_shared<std::mutex>();
     auto& m = serializers_[key(navmesh)];
     if (!m) m = std::make_shared<std::mutex>();
     return m;
@@ -14,7 +14,7 @@ std::shared_ptr<std::mutex> LinkBakes::serializer(Handle navmesh) {
 void LinkBakes::store(Handle navmesh, Entry entry, FunctionRef<void()> links) {
     std::lock_guard lock(mutex_);
     links();
-    if (retired_.count(key(navmesh))) return;
+    if (removed_.contains(navmesh)) return;
     bakes_[key(navmesh)] = std::move(entry);
 }
 
@@ -40,9 +40,9 @@ void LinkBakes::forget(Handle navmesh, FunctionRef<void()> links) {
 
 void LinkBakes::remove(Handle navmesh) {
     std::lock_guard lock(mutex_);
+    removed_.add(navmesh);  // first: it may throw, and then nothing has changed
     bakes_.erase(key(navmesh));
     serializers_.erase(key(navmesh));
-    retired_.insert(key(navmesh));
 }
 
 }  // namespace nl

@@ -6,7 +6,6 @@
 #include <mutex>
 #include <string>
 #include <unordered_map>
-#include <unordered_set>
 
 #include "links/link_bake.h"
 #include "util/function_ref.h"
@@ -48,7 +47,7 @@ private:
     mutable std::mutex mutex_;
     std::unordered_map<uint64_t, Entry> bakes_;
     std::unordered_map<uint64_t, std::shared_ptr<std::mutex>> serializers_;
-    std::unordered_set<uint64_t> retired_;
+    RemovedHandles removed_;
 };
 
 }  // namespace nl

@@ -5,7 +5,7 @@
 namespace nl {
 
 void LinkStore::require_live(Handle navmesh) const {
-    if (retired_.count(key(navmesh))) fail_stale("navmesh", navmesh);
+    if (removed_.contains(navmesh)) fail_stale("navmesh", navmesh);
 }
 
 Handle LinkStore::add(Handle navmesh, const Link& link) {
@@ -105,10 +105,10 @@ uint32_t LinkStore::remove_generated(Handle navmesh) {
 
 void LinkStore::remove_navmesh(Handle navmesh) {
     std::unique_lock lock(mutex_);
+    removed_.add(navmesh);  // first: it may throw, and then nothing has changed
     erase_where(navmesh, false);
     by_navmesh_.erase(key(navmesh));
     snapshots_.erase(key(navmesh));
-    retired_.insert(key(navmesh));
 }
 
 void LinkStore::publish(Handle navmesh) {

@@ -7,7 +7,6 @@
 #include <mutex>
 #include <shared_mutex>
 #include <unordered_map>
-#include <unordered_set>
 #include <vector>
 
 #include "links/link.h"
@@ -60,8 +59,8 @@ private:
     std::unordered_map<uint64_t, std::vector<Handle>> by_navmesh_;
     std::unordered_map<uint64_t, std::shared_ptr<const LinkSnapshot>> snapshots_;
     // Navmeshes removed from the world: a bake that finishes after the removal must not store links
-    // for them. Handles are never reused (generations), so the set only grows with removals.
-    std::unordered_set<uint64_t> retired_;
+    // for them.
+    RemovedHandles removed_;
     void require_live(Handle navmesh) const;
 };
 

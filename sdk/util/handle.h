@@ -27,8 +27,11 @@ struct Handle {
 }
 
 // Stores values in reusable slots. A removed slot's generation is bumped, so an old handle to it is
-// recognised as stale instead of reaching the slot's next occupant. The top bits of every generation
-// carry the owner's tag, so a handle from another owner (another world) is refused as well.
+// recognised as stale instead of reaching the slot's next occupant. A slot whose generation counter
+// is used up is retired, never reused: a handle can never come back to life, however long the
+// program runs (a retired slot costs its size once per 2^20 - 1 lifetimes of it). The top bits of
+// every generation carry the owner's tag, so a handle from another owner (another world) is refused
+// as well.
 template <typename T>
 class SlotMap {
 public:
@@ -63,10 +66,15 @@ public:
     bool erase(Handle h) {
         Slot* slot = slot_of(h);
         if (!slot) return false;
+        if (slot->counter < kCounterMask) free_.reserve(free_.size() + 1);  // before any change: may throw
         slot->value.reset();
-        slot->counter = (slot->counter + 1) & kCounterMask;
-        free_.push_back(h.index1 - 1);
         --live_;
+        if (slot->counter == kCounterMask) {
+            ++retired_;  // its next generation would repeat an old one
+        } else {
+            ++slot->counter;
+            free_.push_back(h.index1 - 1);
+        }
         return true;
     }
 
@@ -83,6 +91,8 @@ public:
     }
 
     uint32_t size() const noexcept { return live_; }
+    // Slots whose generations are used up.
+    uint32_t retired() const noexcept { return retired_; }
 
 private:
     struct Slot {
@@ -101,7 +111,28 @@ private:
     std::vector<Slot> slots_;
     std::vector<uint32_t> free_;
     uint32_t live_ = 0;
+    uint32_t retired_ = 0;
     uint32_t tag_bits_;
+};
+
+// The handles removed from one owner's slot map, for a store that keeps state beside it and must
+// refuse a removed handle for good (a link store asked to keep links for a navmesh removed while they
+// were being generated). One word per slot, not one per removal: a slot's generations only grow (the
+// slot map retires a slot before its counter could wrap), so a handle is removed when its generation
+// is at most the last one removed from its slot. Only handles the owner issued may be added.
+class RemovedHandles {
+public:
+    void add(Handle h) {
+        if (h.index1 > last_removed_.size()) last_removed_.resize(h.index1, 0);
+        uint32_t& last = last_removed_[h.index1 - 1];
+        if (h.generation > last) last = h.generation;
+    }
+    bool contains(Handle h) const noexcept {
+        return h.index1 != 0 && h.index1 <= last_removed_.size() && h.generation <= last_removed_[h.index1 - 1];
+    }
+
+private:
+    std::vector<uint32_t> last_removed_;  // by slot index
 };
 
 }  // namespace nl

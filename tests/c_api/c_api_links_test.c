@@ -845,6 +845,35 @@ static void check_stale_everywhere(nl_world* world, nl_link_id id, const char* w
     if (!CHECK_FAIL(nl_link_remove(world, id), NL_STATUS_INVALID_HANDLE, "link")) fprintf(stderr, "    (%s)\n", what);
 }
 
+/* A slot reused 2^20 times used to wrap its generation: the first id of the slot came back to life and
+   nl_link_remove on it removed whichever link then held the slot. */
+static void test_link_ids_never_come_back(void) {
+    nl_world* world = make_world(1);
+    const nl_navmesh_id navmesh = build_level(world, LEVEL_GAP);
+    const nl_link_def def = manual_def();
+    nl_link_id first = {0u, 0u}, live = {0u, 0u}, id = {0u, 0u};
+    uint32_t i, same_slot = 0, came_back = 0;
+    g_section = "links: ids never come back";
+
+    CHECK_OK(nl_link_add(world, navmesh, &def, &first));
+    CHECK_OK(nl_link_remove(world, first));
+    /* Past the 20-bit generation counter of the slot: every removed id must stay refused. */
+    for (i = 0; i < (1u << 20) + 8u; ++i) {
+        if (!NL_SUCCEEDED(nl_link_add(world, navmesh, &def, &id))) break;
+        same_slot += id.index1 == first.index1;
+        if (same_link_id(id, first)) ++came_back;
+        if (!NL_SUCCEEDED(nl_link_remove(world, id))) break;
+    }
+    CHECK_MSG(i == (1u << 20) + 8u, "add/remove stopped after %u rounds", (unsigned)i);
+    CHECK_MSG(same_slot >= (1u << 20) - 2u, "the slot was reused %u times only; the test is vacuous", (unsigned)same_slot);
+    CHECK(came_back == 0u);
+    CHECK_OK(nl_link_add(world, navmesh, &def, &live));
+    CHECK(nl_link_is_valid(world, first) == 0);
+    CHECK_FAIL(nl_link_remove(world, first), NL_STATUS_INVALID_HANDLE, "nl_link_remove");
+    CHECK(nl_link_is_valid(world, live) == 1); /* the live link is untouched */
+    nl_world_destroy(world);
+}
+
 static void test_link_ids(void) {
     nl_world* world = make_world(1);
     nl_world* other = make_world(1);
@@ -1586,6 +1615,7 @@ void test_links_all(void) {
     test_manual_links();
     test_link_refusals();
     test_link_ids();
+    test_link_ids_never_come_back();
     test_link_lists();
     test_link_json();
     test_link_settings_json();

@@ -723,6 +723,35 @@ static void test_get_meshes(void) {
     nl_world_destroy(world);
 }
 
+/* World tags used to be a counter modulo 4095: the 4096th world created shared the first's tag, and
+   nl_mesh_remove(first, an id of the other) removed the first world's mesh. */
+static void test_world_tags_never_repeat_while_alive(void) {
+    nl_world* first = make_world(1);
+    nl_mesh_def def = floor_def();
+    nl_mesh_id mine = {0u, 0u}, theirs = {0u, 0u};
+    int i, refused = 0, created = 0;
+    g_section = "world tags";
+    CHECK_OK(nl_mesh_add(first, &def, &mine));
+    for (i = 0; i < 4100; ++i) {
+        nl_world_def wd = nl_default_world_def();
+        nl_world* other = NULL;
+        wd.worker_count = 1;
+        wd.path_worker_count = 0;
+        if (!NL_SUCCEEDED(nl_world_create(&wd, &other))) break;
+        ++created;
+        if (i >= 4090) { /* past the old counter's wrap */
+            CHECK_OK(nl_mesh_add(other, &def, &theirs));
+            refused += nl_mesh_remove(first, theirs) == (NL_STATUS_FAILURE | NL_STATUS_INVALID_HANDLE);
+            refused += nl_mesh_is_valid(first, theirs) == 0;
+        }
+        nl_world_destroy(other);
+    }
+    CHECK(created == 4100);
+    CHECK(refused == 2 * 10);
+    CHECK(nl_mesh_is_valid(first, mine) == 1);
+    nl_world_destroy(first);
+}
+
 static void test_stale_ids(void) {
     nl_world* world = make_world(1);
     nl_mesh_def def = floor_def();
@@ -1691,6 +1720,7 @@ int main(int argc, char** argv) {
     test_mesh_rejections();
     test_get_meshes();
     test_stale_ids();
+    test_world_tags_never_repeat_while_alive();
     test_rays();
     test_ray_batches();
     test_segments();

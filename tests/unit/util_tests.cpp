@@ -1,10 +1,13 @@
 #include <doctest/doctest.h>
 
 #include <atomic>
+#include <set>
 #include <stdexcept>
 #include <vector>
 
+#include "util/error.h"
 #include "util/handle.h"
+#include "util/handle_tag.h"
 #include "util/task_system.h"
 
 TEST_CASE("slot map: stale handles are recognised after their slot is reused") {
@@ -60,4 +63,73 @@ TEST_CASE("slot map: handles from a map with another tag are refused") {
     CHECK(theirs.find(a) == nullptr);
     CHECK_FALSE(mine.erase(b));
     CHECK(mine.size() == 1);
+}
+
+TEST_CASE("slot map: a slot whose generations are used up is retired, so no handle ever comes back to life") {
+    nl::SlotMap<int> map(5);
+    const nl::Handle first = map.insert(0);
+    const nl::Handle neighbour = map.insert(-1);
+    map.erase(first);
+    nl::Handle last = first;
+    uint32_t reuses = 0;
+    for (;;) {
+        const nl::Handle h = map.insert(1);
+        if (h.index1 != first.index1) {
+            // The slot is retired: the next value went elsewhere.
+            CHECK(map.retired() == 1);
+            CHECK(h.index1 != neighbour.index1);
+            break;
+        }
+        ++reuses;
+        CHECK(h.generation != first.generation);
+        last = h;
+        map.erase(h);
+        REQUIRE(reuses <= nl::SlotMap<int>::kCounterMask);
+    }
+    CHECK(reuses == nl::SlotMap<int>::kCounterMask - 1);  // counters 2 .. mask after the first
+    CHECK(map.find(first) == nullptr);
+    CHECK(map.find(last) == nullptr);
+    CHECK_FALSE(map.erase(first));
+    CHECK(*map.find(neighbour) == -1);
+    CHECK(map.size() == 2);
+}
+
+TEST_CASE("removed handles: one word per slot tells every removed generation from live ones") {
+    nl::SlotMap<int> map(3);
+    nl::RemovedHandles removed;
+    const nl::Handle a = map.insert(1);
+    CHECK_FALSE(removed.contains(a));
+    map.erase(a);
+    removed.add(a);
+    CHECK(removed.contains(a));
+    const nl::Handle b = map.insert(2);  // a's slot again
+    REQUIRE(b.index1 == a.index1);
+    CHECK_FALSE(removed.contains(b));
+    CHECK_FALSE(removed.contains(nl::Handle{}));
+    CHECK_FALSE(removed.contains(nl::Handle{1000, 1}));
+    map.erase(b);
+    removed.add(b);
+    CHECK(removed.contains(a));
+    CHECK(removed.contains(b));
+}
+
+TEST_CASE("handle tags: no two live holders share one; every tag can be held, then the next is refused") {
+    std::vector<nl::HandleTag> held;
+    std::set<uint32_t> values;
+    for (;;) {
+        try {
+            held.push_back(nl::HandleTag::acquire());
+        } catch (const nl::Error& e) {
+            CHECK(e.code() == nl::ErrorCode::OutOfMemory);
+            break;
+        }
+        CHECK(values.insert(held.back().value()).second);
+        REQUIRE(held.size() <= nl::HandleTag::kCount);
+    }
+    CHECK(held.size() >= nl::HandleTag::kCount - 16);  // other tests' worlds may hold a few
+    for (uint32_t v : values) CHECK((v >= 1 && v <= nl::HandleTag::kCount));
+    const uint32_t freed = held.front().value();
+    held.erase(held.begin());
+    const nl::HandleTag again = nl::HandleTag::acquire();
+    CHECK(again.value() == freed);  // the only free one
 }

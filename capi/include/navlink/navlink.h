@@ -10,7 +10,9 @@
  *   in the calling thread's last error
  *   (nl_get_last_error_message) and, if the world has one, pass it to the world's log callback.
  * - Objects are referred to by ids passed by value: {index1, generation}; the all-zero id is null.
- *   An id whose object was removed is stale: using it returns NL_STATUS_INVALID_HANDLE, never crashes.
+ *   An id whose object was removed is stale: using it returns NL_STATUS_INVALID_HANDLE, never crashes,
+ *   and never reaches another object: a slot is retired before its generation could repeat, and no
+ *   two live worlds tag their ids alike (docs/c-api.md, "Ids").
  * - Input pointers are borrowed for the duration of the call and copied where NavLink keeps the
  *   data; output pointers are caller-owned buffers. Each function says which.
  * - Unless a function says otherwise, all functions that take a world are safe to call from several
@@ -145,8 +147,9 @@ NL_API nl_world_def nl_default_world_def(void);
 /** Creates a world. `def` is borrowed (NULL means all defaults); `*out_world` receives the new world,
  *  owned by the caller until nl_world_destroy.
  *  Returns NL_STATUS_SUCCESS, or a failure with INVALID_ARGUMENT (null out_world, size of def too
- *  small, worker_count or path_worker_count < -1), OUT_OF_MEMORY or INTERNAL_ERROR (Embree could not
- *  start). Thread-safe. */
+ *  small, worker_count or path_worker_count < -1), OUT_OF_MEMORY (also when 4095 worlds exist at
+ *  once, the most whose ids can be told apart) or INTERNAL_ERROR (Embree could not start).
+ *  Thread-safe. */
 NL_API nl_status nl_world_create(const nl_world_def* def, nl_world** out_world);
 
 /** Destroys a world and everything it owns; every id from it becomes invalid. NULL is ignored.
@@ -166,7 +169,7 @@ NL_API int32_t nl_world_get_worker_count(const nl_world* world);
 /** A registered mesh. Zero-initialised is the null id. */
 typedef struct nl_mesh_id {
     uint32_t index1;     /**< Slot index + 1; 0 means null. */
-    uint32_t generation; /**< Incremented each time the slot is reused. */
+    uint32_t generation; /**< Changes each time the slot is reused; never repeats. */
 } nl_mesh_id;
 
 /** Mesh flags. */
