@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "util/task_system.h"
+#include "util/tsan.h"
 
 namespace nl {
 namespace {
@@ -24,18 +25,32 @@ public:
             body(0, count);
             return;
         }
+        char started = 0, finished = 0;  // ThreadSanitizer's view of what TBB guarantees
+        tsan_release(&started);
         work_arena_.execute([&] {
             tbb::parallel_for(tbb::blocked_range<uint32_t>(0, count, grain), [&](const tbb::blocked_range<uint32_t>& r) {
-                TaskScope scope;
-                body(r.begin(), r.end());
+                tsan_acquire(&started);
+                {
+                    TaskScope scope;
+                    body(r.begin(), r.end());
+                }
+                tsan_release(&finished);
             });
         });
+        tsan_acquire(&finished);
     }
 
     // A second arena: a commit made under the level's exclusive lock must not queue for a slot that
     // a long parallel_for holds (that would only delay it, but every query would wait meanwhile).
     void execute(FunctionRef<void()> fn) override {
-        build_arena_.execute([&] { fn(); });
+        char started = 0, finished = 0;  // fn may run on another thread (TBB hands it over)
+        tsan_release(&started);
+        build_arena_.execute([&] {
+            tsan_acquire(&started);
+            fn();
+            tsan_release(&finished);
+        });
+        tsan_acquire(&finished);
     }
 
 private:
