@@ -1,19 +1,19 @@
 #!/usr/bin/env bash
 # Sets up a fresh Debian 12 machine and runs every NavLink test: the release build's tests, then the
 # same tests under AddressSanitizer + UndefinedBehaviorSanitizer, then the path queue stress test
-# under ThreadSanitizer. Exits non-zero on any failure.
+# and the world soak under ThreadSanitizer. Exits non-zero on any failure.
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 "$root/scripts/setup.sh"
 
 jobs=$(nproc)
-# configure_and_build DIR [CMAKE OPTIONS...] [--target TARGET]: configures and builds everything, or
-# only TARGET.
+# configure_and_build DIR [CMAKE OPTIONS...] [--target TARGET]...: configures and builds everything, or
+# only the TARGETs.
 configure_and_build() {
   local dir=$1; shift
   local options=() target=()
   while (( $# )); do
-    if [[ $1 == --target ]]; then target=(--target "$2"); shift 2; else options+=("$1"); shift; fi
+    if [[ $1 == --target ]]; then target+=(--target "$2"); shift 2; else options+=("$1"); shift; fi
   done
   cmake -S "$root" -B "$dir" -G Ninja "${options[@]}" > "$dir.configure.log" 2>&1 || { cat "$dir.configure.log"; return 1; }
   cmake --build "$dir" -j "$jobs" "${target[@]}"
@@ -30,9 +30,14 @@ configure_and_build "$root/build-asan" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DNAVLI
 ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
   ctest --test-dir "$root/build-asan" --output-on-failure -LE no_sanitizer
 
-echo "== ThreadSanitizer build of the path queue stress test (100,000 requests while links change)"
+echo "== ThreadSanitizer build: the path queue stress test and the world soak"
 configure_and_build "$root/build-tsan" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DNAVLINK_SANITIZE=thread \
-  -DNAVLINK_BUILD_BENCHMARKS=OFF -DNAVLINK_BUILD_SAMPLES=OFF -DNAVLINK_INSTALL=OFF --target navlink-path-stress
-TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1 "$root/build-tsan/tests/stress/navlink-path-stress"
+  -DNAVLINK_BUILD_BENCHMARKS=OFF -DNAVLINK_BUILD_SAMPLES=OFF -DNAVLINK_INSTALL=OFF \
+  --target navlink-path-stress --target navlink-world-soak
+# tests/stress/tsan.supp lists what is suppressed in Debian's uninstrumented Embree and TBB, and why.
+export TSAN_OPTIONS="halt_on_error=1:second_deadlock_stack=1:suppressions=$root/tests/stress/tsan.supp"
+"$root/build-tsan/tests/stress/navlink-path-stress"
+"$root/build-tsan/tests/stress/navlink-world-soak" --seconds 6 --stall 120
+unset TSAN_OPTIONS
 
 echo "== all tests passed in $(( $(date +%s) - start )) s"
