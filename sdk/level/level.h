@@ -17,6 +17,7 @@
 #include "level/geometry.h"
 #include "level/mesh_validation.h"
 #include "level/oriented_box.h"
+#include "level/swept_body.h"
 #include "util/handle.h"
 #include "util/shared_mutex.h"
 #include "util/task_system.h"
@@ -60,6 +61,15 @@ struct Segment {
     Vec3 to;
 };
 
+// A straight stretch of a path swept by the agent's body, for Level::bodies_clear: the body (its
+// radius is given per query) and a box that holds it at the widest radius asked.
+struct BodyStretch {
+    SweptCylinder body;
+    OrientedBox bounds;
+};
+
+class NearTriangles;
+
 // Thread-safe: queries run at once under a shared lock, edits take it exclusively. Every method is
 // called by the thread that called into NavLink, never from inside a parallel_for body (TaskSystem's
 // contract; it throws Internal otherwise): a body waiting for the lock while the lock's holder waits
@@ -100,6 +110,12 @@ public:
     // is blocked, and the caller need not cast them (pad the box for rounding). Exact per triangle;
     // Embree's point queries find the triangles near each box.
     void boxes_empty(const OrientedBox* boxes, uint32_t count, uint8_t* out_empty) const;
+    // out_cleared[i] = how many of `radii` (ascending), counted from the first, give a body along
+    // stretches[i] that is proven apart from every triangle of the level (swept_body.h: exact, with a
+    // margin; touching is a hit). 0: even the narrowest body touches something. Triangles outside
+    // the stretch's bounds are not looked at, so the bounds must hold the widest body.
+    void bodies_clear(const BodyStretch* stretches, uint32_t count, const float* radii, uint32_t radius_count,
+                      uint8_t* out_cleared) const;
 
 private:
     struct Mesh {
@@ -133,6 +149,8 @@ private:
     // Takes a shared lock on a committed scene; commits pending edits first.
     std::shared_lock<SharedMutex> lock_committed() const;
     void check_embree(const char* what) const;
+    // Where the triangles are, for the near queries; under the shared lock.
+    NearTriangles near_triangles() const;
     RayHit resolve_hit(const RTCRayHit& rh, const Ray& ray) const;
     // Calls each(i, context) for every i in [0, count) on the workers, over the committed scene.
     template <typename Each>
