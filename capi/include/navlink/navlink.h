@@ -638,7 +638,8 @@ typedef struct nl_link_settings {
     uint32_t arc_segments;          /**< Pieces of a jump arc in the clearance test (12). */
     const char* plugin_settings_json;   /**< Optional JSON object of link-kind plugins' settings, one
                                              object per kind name: {"climb": {"max_height": 3}}.
-                                             Borrowed for the call; NULL = none. */
+                                             Borrowed for the call; NULL = none (the length must
+                                             then be 0). */
     size_t plugin_settings_json_length;
 } nl_link_settings;
 
