@@ -72,11 +72,13 @@ typedef struct hostile_group {
 /* What the runner needs from the test: `setup` builds the worlds in the child before its group;
    `unchanged` runs after every case and says (in `why`) what differs from the worlds as they were
    when the group started, or returns 1; `refresh` makes the worlds as they are now the reference
-   (after a case that changed them as documented, and checked that). */
+   (after a case that changed them as documented, and checked that); `teardown` destroys them after
+   the group, before the child exits normally (so a leak checker sees what the failures left). */
 typedef struct hostile_fixture {
     void (*setup)(void);
     int (*unchanged)(char* why, size_t why_size);
     void (*refresh)(void);
+    void (*teardown)(void);
 } hostile_fixture;
 void fixture_refresh(void);
 

@@ -453,6 +453,16 @@ static int worlds_unchanged(char* why, size_t why_size) {
     return same;
 }
 
+static void teardown_worlds(void) {
+    world_fixture* worlds[2] = {&A, &B};
+    int k;
+    for (k = 0; k < 2; ++k) {
+        nl_world_destroy(worlds[k]->world);
+        free(worlds[k]->fingerprint);
+        memset(worlds[k], 0, sizeof *worlds[k]);
+    }
+}
+
 static void setup_worlds(void) {
     build_world(&A);
     build_world(&B);
@@ -2982,7 +2992,7 @@ int main(int argc, char** argv) {
     const char* only = NULL;
     case_record* cases = NULL;
     hostile_group selected[sizeof k_groups / sizeof *k_groups];
-    const hostile_fixture fixture = {setup_worlds, worlds_unchanged, refresh_worlds};
+    const hostile_fixture fixture = {setup_worlds, worlds_unchanged, refresh_worlds, teardown_worlds};
     int failed, gaps = 0, i, mode = 0;
     for (i = 1; i < argc; ++i) {
         if (strcmp(argv[i], "--headers") == 0) mode = 1;
