@@ -105,7 +105,7 @@ typedef struct struct_decl {
 
 typedef struct function_decl {
     char name[64];
-    char header[64];
+    char header[256]; /* the file that declares it */
     declarator params[12];
     size_t param_count;
 } function_decl;
@@ -251,6 +251,7 @@ static int ends_with(const char* s, const char* suffix) {
 
 typedef struct requirement {
     const char* function;
+    const char* header;
     char subject[128];
     const char* condition;
 } requirement;
@@ -260,6 +261,8 @@ typedef struct requirements {
     size_t count, capacity;
 } requirements;
 
+static const char* g_header; /* the declaring file of the function whose requirements are made */
+
 static void need(requirements* r, const char* function, const char* subject, const char* condition) {
     if (r->count == r->capacity) {
         r->capacity = r->capacity ? 2 * r->capacity : 512;
@@ -267,6 +270,7 @@ static void need(requirements* r, const char* function, const char* subject, con
         if (!r->items) exit(2);
     }
     r->items[r->count].function = function;
+    r->items[r->count].header = g_header;
     snprintf(r->items[r->count].subject, sizeof r->items[0].subject, "%s", subject);
     r->items[r->count].condition = condition;
     ++r->count;
@@ -311,6 +315,7 @@ static void need_fields(const declarations* d, requirements* r, const char* func
 
 static void need_function(const declarations* d, requirements* r, const function_decl* f) {
     size_t i;
+    g_header = f->header;
     need(r, f->name, "", ""); /* at least one case, whatever the parameters */
     for (i = 0; i < f->param_count; ++i) {
         const declarator* p = &f->params[i];
@@ -448,7 +453,8 @@ int check_coverage(const char* const* header_dirs, size_t dir_count, const case_
         }
         ++missing;
         if (r.items[i].subject[0] == '\0')
-            printf("coverage: MISSING: %s has no hostile case at all\n", r.items[i].function);
+            printf("coverage: MISSING: %s has no hostile case at all (declared in %s)\n", r.items[i].function,
+                   r.items[i].header);
         else
             printf("coverage: MISSING: %s: no case \"%s %s ...\"\n", r.items[i].function, r.items[i].subject,
                    r.items[i].condition);

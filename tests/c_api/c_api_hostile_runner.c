@@ -232,13 +232,15 @@ static char* read_all(int fd) {
     return text;
 }
 
-/* Parses one child's report; returns 1 if it said it finished. */
+/* Parses one child's report; returns 1 if it said it finished. `*in_case` says whether it stopped
+   inside `last_case` or after it. */
 static int parse_report(const char* group, char* text, tally* t, case_record** cases, size_t* count, size_t* capacity,
-                        char* last_case, size_t last_case_size) {
+                        char* last_case, size_t last_case_size, int* in_case) {
     char* line = text;
     char failures[8192] = "";
     int done = 0;
     last_case[0] = '\0';
+    *in_case = 0;
     while (line && *line) {
         char* next = strchr(line, '\n');
         if (next) *next++ = '\0';
@@ -249,6 +251,7 @@ static int parse_report(const char* group, char* text, tally* t, case_record** c
                 add_record(cases, count, capacity, line + 2, tab + 1);
                 snprintf(last_case, last_case_size, "%s: %s", line + 2, tab + 1);
             }
+            *in_case = 1;
             failures[0] = '\0';
             ++t->cases;
         } else if (line[0] == 'F' && line[1] == '\t') {
@@ -272,7 +275,7 @@ static int parse_report(const char* group, char* text, tally* t, case_record** c
                     ++t->failed;
                     printf("FAILED [%s] %s\n%s", group, last_case, failures);
             }
-            last_case[0] = '\0';
+            *in_case = 0;
         } else if (line[0] == 'D') {
             done = 1;
         }
@@ -288,7 +291,7 @@ int run_groups(const hostile_group* groups, size_t count, const hostile_fixture*
     *out_cases = NULL;
     *out_case_count = 0;
     for (g = 0; g < count; ++g) {
-        int fds[2], status = 0, done;
+        int fds[2], status = 0, done, in_case;
         pid_t pid;
         char* text;
         char last_case[256];
@@ -317,7 +320,8 @@ int run_groups(const hostile_group* groups, size_t count, const hostile_fixture*
         close(fds[0]);
         while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
         }
-        done = parse_report(groups[g].name, text, &t, out_cases, out_case_count, &capacity, last_case, sizeof last_case);
+        done = parse_report(groups[g].name, text, &t, out_cases, out_case_count, &capacity, last_case, sizeof last_case,
+                            &in_case);
         free(text);
         if (!done || !WIFEXITED(status) || WEXITSTATUS(status) != 0) {
             char how[64];
@@ -325,8 +329,14 @@ int run_groups(const hostile_group* groups, size_t count, const hostile_fixture*
                 snprintf(how, sizeof how, "signal %d%s", WTERMSIG(status), WTERMSIG(status) == SIGALRM ? ": a hang" : "");
             else
                 snprintf(how, sizeof how, "exit code %d", WIFEXITED(status) ? WEXITSTATUS(status) : -1);
-            printf("FAILED [%s] the child stopped (%s) %s%s; the rest of the group did not run\n", groups[g].name, how,
-                   last_case[0] ? "in " : "before its first case", last_case);
+            if (in_case)
+                printf("FAILED [%s] the child stopped (%s) in %s; the rest of the group did not run\n", groups[g].name, how,
+                       last_case);
+            else if (last_case[0])
+                printf("FAILED [%s] the child stopped (%s) after its last case, %s: destroying the worlds, or at exit "
+                       "(a leak report?)\n", groups[g].name, how, last_case);
+            else
+                printf("FAILED [%s] the child stopped (%s) before its first case\n", groups[g].name, how);
             ++t.failed;
         }
         printf("group %-34s %4u cases: %4u passed, %u failed, %u known failures\n", groups[g].name, (unsigned)t.cases,
