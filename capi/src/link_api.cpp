@@ -363,13 +363,18 @@ NL_API nl_status nl_navmesh_generate_links(nl_world* world, nl_navmesh_id navmes
         nl_world& w = deref(world);
         const nl::Handle handle = to_handle(navmesh);
         const auto mesh = w.navmeshes->get(handle);
-        const nl::LinkSettings s =
-            settings ? to_core(nl::capi::read_growable(*settings, nl_default_link_settings(), kSettingsFirstSize, "settings"))
-                     : nl::LinkSettings{};
+        // Every field is read from the copy: a caller's struct holds only `size` bytes.
+        const nl_link_settings given =
+            settings ? nl::capi::read_growable(*settings, nl_default_link_settings(), kSettingsFirstSize, "settings")
+                     : nl_default_link_settings();
+        const nl::LinkSettings s = to_core(given);
+        if (!given.plugin_settings_json && given.plugin_settings_json_length != 0)
+            fail(ErrorCode::InvalidArgument, "settings->plugin_settings_json is null but settings->plugin_settings_json_length is ",
+                 given.plugin_settings_json_length);
         if (out_report && out_report->size < kReportFirstSize)
             fail(ErrorCode::InvalidArgument, "out_report->size is ", out_report->size, " (set it to sizeof)");
-        const std::string plugin_json = settings && settings->plugin_settings_json
-                                            ? std::string(settings->plugin_settings_json, settings->plugin_settings_json_length)
+        const std::string plugin_json = given.plugin_settings_json
+                                            ? std::string(given.plugin_settings_json, given.plugin_settings_json_length)
                                             : std::string();
         const nlohmann::json plugin_settings = plugin_settings_of(plugin_json);
         auto bake = std::make_shared<nl::LinkBake>(mesh, s, nl::BakeMethod::Indexed);

@@ -1,5 +1,6 @@
 #include <cstddef>
 #include <thread>
+#include <utility>
 
 #include "entry_guard.h"
 #include "world.h"
@@ -37,12 +38,14 @@ NL_API nl_status nl_world_create(const nl_world_def* def, nl_world** out_world) 
         nl::capi::require(out_world, "out_world");
         const nl_world_def settings =
             def ? nl::capi::read_growable(*def, nl_default_world_def(), kWorldDefFirstSize, "def") : nl_default_world_def();
-        if (settings.worker_count < NL_WORKERS_AUTO)
-            fail(ErrorCode::InvalidArgument, "def->worker_count is ", settings.worker_count,
-                 " (use NL_WORKERS_AUTO, 0 or a positive count)");
-        if (settings.path_worker_count < NL_WORKERS_AUTO)
-            fail(ErrorCode::InvalidArgument, "def->path_worker_count is ", settings.path_worker_count,
-                 " (use NL_WORKERS_AUTO, 0 or a positive count)");
+        // Bounded above too: TBB sizes an arena by its count (2^31 slots crash its first use), and
+        // the path queue starts one thread each.
+        for (const auto& [count, name] : {std::pair{settings.worker_count, "worker_count"},
+                                          std::pair{settings.path_worker_count, "path_worker_count"}}) {
+            if (count < NL_WORKERS_AUTO || count > NL_MAX_WORKERS)
+                fail(ErrorCode::InvalidArgument, "def->", name, " is ", count,
+                     " (use NL_WORKERS_AUTO, 0 or a positive count up to NL_MAX_WORKERS = ", NL_MAX_WORKERS, ")");
+        }
         if (settings.log_level > NL_LOG_DEBUG)
             fail(ErrorCode::InvalidArgument, "def->log_level is ", settings.log_level, " (at most NL_LOG_DEBUG)");
         auto world = std::make_unique<nl_world>();

@@ -18,6 +18,7 @@
 /* pthread_equal and the readers' threads; strict C11 otherwise. */
 #define _POSIX_C_SOURCE 200809L
 
+#include "c_api_scene.h"
 #include "c_api_test.h"
 
 #include <math.h>
@@ -35,20 +36,11 @@ void test_links_all(void);
 
 enum { LEVEL_GAP, LEVEL_LEDGE, LEVEL_WIDE_GAP, LEVEL_WALLED_GAP };
 
-/* A box from (x0, y0, z0) to (x1, y1, z1): 8 corners, corner k at x from bit 0, y from bit 1, z from
-   bit 2; 12 triangles facing out. */
+/* A box from (x0, y0, z0) to (x1, y1, z1) (c_api_scene.h). */
 static nl_status add_box_id(nl_world* world, float x0, float y0, float z0, float x1, float y1, float z1,
                             nl_mesh_id* out_id) {
-    const float v[24] = {x0, y0, z0, x1, y0, z0, x0, y1, z0, x1, y1, z0,
-                         x0, y0, z1, x1, y0, z1, x0, y1, z1, x1, y1, z1};
-    static const uint32_t box[36] = {0, 4, 6, 0, 6, 2, 1, 3, 7, 1, 7, 5, 0, 1, 5, 0, 5, 4,
-                                     2, 6, 7, 2, 7, 3, 0, 2, 3, 0, 3, 1, 4, 5, 7, 4, 7, 6};
-    nl_mesh_def def = nl_default_mesh_def();
-    def.vertices = v;
-    def.vertex_count = 8;
-    def.indices = box;
-    def.triangle_count = 12;
-    return nl_mesh_add(world, &def, out_id);
+    const float lo[3] = {x0, y0, z0}, hi[3] = {x1, y1, z1};
+    return add_box_mesh(world, lo, hi, 0u, out_id);
 }
 
 static nl_status add_box(nl_world* world, float x0, float y0, float z0, float x1, float y1, float z1) {

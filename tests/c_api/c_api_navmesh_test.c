@@ -11,6 +11,7 @@
 /* fork() and waitpid() isolate the cases that may crash the process; strict C11 otherwise. */
 #define _POSIX_C_SOURCE 200809L
 
+#include "c_api_scene.h"
 #include "c_api_test.h"
 
 #include <navlink/plugin.h>
@@ -46,15 +47,7 @@ static const uint32_t k_grid_quads[16] = {
 static const uint8_t k_quad_counts[4] = {4, 4, 4, 4};
 
 /* The grid with polygon_vertex_counts: four quads. */
-static nl_navmesh_def grid_def(void) {
-    nl_navmesh_def def = nl_default_navmesh_def();
-    def.vertices = k_grid_vertices;
-    def.vertex_count = 9;
-    def.indices = k_grid_quads;
-    def.polygon_vertex_counts = k_quad_counts;
-    def.polygon_count = 4;
-    return def;
-}
+static nl_navmesh_def grid_def(void) { return navmesh_def_of(k_grid_vertices, 9, k_grid_quads, k_quad_counts, 4); }
 
 /* The grid as a Unity-style triangle soup: each quad (a b c d) is triangles (a b c) and (a c d), and
    every triangle has its own three vertices (24 vertices, indices 0..23). */
@@ -720,11 +713,7 @@ static const uint32_t k_detail_starts[5] = {0, 2, 4, 6, 10};
 
 static nl_navmesh_def detail_grid_def(void) {
     nl_navmesh_def def = grid_def();
-    def.detail_vertices = k_detail_vertices;
-    def.detail_vertex_count = 10;
-    def.detail_triangles = k_detail_triangles;
-    def.detail_triangle_count = 10;
-    def.detail_triangle_starts = k_detail_starts;
+    set_navmesh_detail(&def, k_detail_vertices, 10, k_detail_triangles, 10, k_detail_starts);
     return def;
 }
 

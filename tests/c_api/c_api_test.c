@@ -10,6 +10,7 @@
 /* fork() and waitpid() isolate the cases that may crash the process; strict C11 otherwise. */
 #define _POSIX_C_SOURCE 200809L
 
+#include "c_api_scene.h"
 #include "c_api_test.h"
 
 #include <math.h>
@@ -92,14 +93,7 @@ static void translation(float m[16], float x, float y, float z) {
     m[14] = z;
 }
 
-static nl_mesh_def floor_def(void) {
-    nl_mesh_def def = nl_default_mesh_def();
-    def.vertices = k_floor_vertices;
-    def.vertex_count = 4;
-    def.indices = k_floor_indices;
-    def.triangle_count = 2;
-    return def;
-}
+static nl_mesh_def floor_def(void) { return mesh_def_of(k_floor_vertices, 4, k_floor_indices, 2); }
 
 nl_world* make_world(int32_t workers) {
     nl_world_def def = nl_default_world_def();

@@ -123,12 +123,16 @@ typedef void nl_log_fn(void* user, nl_log_level level, nl_status status, const c
 /** Pass as worker_count to use one worker per hardware thread. */
 #define NL_WORKERS_AUTO (-1)
 
+/** Largest worker_count and path_worker_count a world accepts (far more threads than any machine
+ *  runs NavLink on; a larger count is a bug in the host, refused before any thread starts). */
+#define NL_MAX_WORKERS 1024
+
 /** How to create a world. Get one from nl_default_world_def(). */
 typedef struct nl_world_def {
     uint32_t size;           /**< sizeof(nl_world_def); set by nl_default_world_def(). */
     int32_t worker_count;    /**< Threads NavLink may use for batch work, the calling thread
-                                  included. NL_WORKERS_AUTO (default): one per hardware thread;
-                                  0 or 1: everything runs on the calling thread. */
+                                  included, at most NL_MAX_WORKERS. NL_WORKERS_AUTO (default): one
+                                  per hardware thread; 0 or 1: everything runs on the calling thread. */
     nl_log_fn* log_fn;       /**< Optional. Receives every error (and, by log_level, more). */
     void* log_user;          /**< Passed back to log_fn as `user`; borrowed, never dereferenced. */
     nl_log_level log_level;  /**< Most verbose level passed to log_fn. Default NL_LOG_WARNING: errors,
@@ -136,9 +140,9 @@ typedef struct nl_world_def {
     uint32_t reserved;       /**< Ignored. (It fills what was padding in the first version, so that
                                   fields added later lie past the size hosts of that version pass.) */
     int32_t path_worker_count; /**< Threads that plan queued path requests (nl_path_request), apart
-                                    from batch work. NL_WORKERS_AUTO (default): one per hardware
-                                    thread; 0: no threads, the host runs the queue with
-                                    nl_path_process (a game loop with a frame budget). */
+                                    from batch work, at most NL_MAX_WORKERS. NL_WORKERS_AUTO
+                                    (default): one per hardware thread; 0: no threads, the host runs
+                                    the queue with nl_path_process (a game loop with a frame budget). */
 } nl_world_def;
 
 /** A def with every field at its default. Thread-safe; never fails. */
@@ -147,9 +151,9 @@ NL_API nl_world_def nl_default_world_def(void);
 /** Creates a world. `def` is borrowed (NULL means all defaults); `*out_world` receives the new world,
  *  owned by the caller until nl_world_destroy.
  *  Returns NL_STATUS_SUCCESS, or a failure with INVALID_ARGUMENT (null out_world, size of def too
- *  small, worker_count or path_worker_count < -1), OUT_OF_MEMORY (also when 4095 worlds exist at
- *  once, the most whose ids can be told apart) or INTERNAL_ERROR (Embree could not start).
- *  Thread-safe. */
+ *  small, worker_count or path_worker_count < -1 or > NL_MAX_WORKERS), OUT_OF_MEMORY (also when
+ *  4095 worlds exist at once, the most whose ids can be told apart) or INTERNAL_ERROR (Embree could
+ *  not start, or the system refused a thread). Thread-safe. */
 NL_API nl_status nl_world_create(const nl_world_def* def, nl_world** out_world);
 
 /** Destroys a world and everything it owns; every id from it becomes invalid. NULL is ignored.
@@ -637,7 +641,8 @@ typedef struct nl_link_settings {
     uint32_t arc_segments;          /**< Pieces of a jump arc in the clearance test (12). */
     const char* plugin_settings_json;   /**< Optional JSON object of link-kind plugins' settings, one
                                              object per kind name: {"climb": {"max_height": 3}}.
-                                             Borrowed for the call; NULL = none. */
+                                             Borrowed for the call; NULL = none (the length must
+                                             then be 0). */
     size_t plugin_settings_json_length;
 } nl_link_settings;
 

@@ -30,6 +30,7 @@ namespace NavLink
     {
         public const float CoordinateLimit = 1.0e9f;
         public const int WorkersAuto = -1;
+        public const int MaxWorkers = 1024;
         public const int MaxPolygonVertices = 16;
         public const uint NoPolygon = 0xffffffffu;
         public const float AreaExcluded = 0.0f;

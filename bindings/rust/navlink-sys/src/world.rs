@@ -19,6 +19,8 @@ pub type nl_log_fn =
     Option<unsafe extern "C" fn(user: *mut c_void, level: nl_log_level, status: nl_status, message: *const c_char)>;
 
 pub const NL_WORKERS_AUTO: i32 = -1;
+/// Largest `worker_count` and `path_worker_count` a world accepts.
+pub const NL_MAX_WORKERS: i32 = 1024;
 
 #[repr(C)]
 #[derive(Clone, Copy, Debug)]

@@ -47,4 +47,7 @@ pub mod link_kind {
     };
 }
 
-pub use navlink_sys::{NL_MESH_MOVABLE as MESH_MOVABLE, NL_NO_POLYGON as NO_POLYGON, NL_WORKERS_AUTO as WORKERS_AUTO};
+pub use navlink_sys::{
+    NL_MAX_WORKERS as MAX_WORKERS, NL_MESH_MOVABLE as MESH_MOVABLE, NL_NO_POLYGON as NO_POLYGON,
+    NL_WORKERS_AUTO as WORKERS_AUTO,
+};
