@@ -185,7 +185,7 @@ class LinkId(_Id):
 
 class LinkRequirements(Structure):
     _fields_ = [("gap", c_float), ("rise", c_float), ("drop", c_float), ("clearance_width", c_float),
-                ("abilities", c_uint64)]
+                ("abilities", c_uint64), ("length", c_float), ("reserved", c_uint32)]
 
 
 class Link(Structure):
@@ -204,13 +204,14 @@ class LinkDef(Structure):
 class LinkSettings(Structure):
     _fields_ = [("size", c_uint32), ("min_edge_length", c_float), ("min_group_size", c_uint32),
                 ("max_group_size", c_uint32), ("sample_spacing", c_float), ("falloff_distance", c_float),
-                ("max_link_distance", c_float), ("min_link_distance", c_float), ("short_link_distance", c_float),
+                ("max_jump_gap", c_float), ("min_link_distance", c_float), ("short_link_distance", c_float),
                 ("max_jump_up", c_float), ("jump_arc_height", c_float), ("strict_forward_angle", c_float),
                 ("permissive_forward_angle", c_float), ("strict_incline_angle", c_float),
                 ("permissive_incline_angle", c_float), ("max_drop_distance", c_float),
                 ("drop_angles", c_float * 16), ("drop_angle_count", c_uint32), ("drop_steepness", c_float),
                 ("merge_distance", c_float), ("clearance_margin", c_float), ("arc_segments", c_uint32),
-                ("plugin_settings_json", c_char_p), ("plugin_settings_json_length", c_size_t)]
+                ("plugin_settings_json", c_char_p), ("plugin_settings_json_length", c_size_t),
+                ("walk_factor", c_float), ("walk_distance", c_float)]
 
 
 class BakeReport(Structure):
@@ -222,7 +223,9 @@ class BakeReport(Structure):
     _fields_ += [(name, c_double) for name in (
         "milliseconds_edges", "milliseconds_takeoff", "milliseconds_jumps", "milliseconds_drops",
         "milliseconds_merge", "milliseconds_total")]
-    _fields_ += [("box_queries", c_uint64)]
+    _fields_ += [("box_queries", c_uint64), ("body_tests", c_uint64)]
+    _fields_ += [(name, c_uint32) for name in (
+        "rejected_walkable", "rejected_too_shallow", "rejected_too_deep", "reserved")]
 
 
 class PathTicket(_Id):

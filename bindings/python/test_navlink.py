@@ -257,14 +257,15 @@ class LinkTest(NavLinkTestCase):
             self.assertTrue(report.jump_links >= 5 and report.drop_links == 0 and len(links) == report.jump_links)
             for link in links:
                 self.assertTrue(link.kind == nl.LINK_JUMP and link.generated == 1 and link.bidirectional == 1)
-                self.assertTrue(3.1 <= link.requirements.gap <= 3.9)
-                self.assertAlmostEqual(link.requirements.gap, horizontal(link.start, link.end), places=3)
+                self.assertAlmostEqual(link.requirements.gap, 2.0, delta=0.05)  # rim to rim
+                self.assertTrue(3.1 <= link.requirements.length <= 3.9)
+                self.assertAlmostEqual(link.requirements.length, horizontal(link.start, link.end), places=3)
                 self.assertTrue(min(link.start[0], link.end[0]) < -1 and max(link.start[0], link.end[0]) > 1)
                 self.assertGreater(link.apex[1], max(link.start[1], link.end[1]))
             self.assertTrue(len(seen) >= 2 and seen[-1][0] == 1.0 and all(t == caller for _, t in seen))
 
-            short = nl.link_settings_from_json('{"max_link_distance": 3}')
-            self.assertEqual(short.max_link_distance, 3)
+            short = nl.link_settings_from_json('{"max_jump_gap": 1.8}')
+            self.assertAlmostEqual(short.max_jump_gap, 1.8, places=6)
             none = world.generate_links(navmesh, short)
             self.assertTrue(none.jump_links == 0 and none.rejected_distance > 0 and not world.links(navmesh))
             self.assertFails(nl.STATUS_INVALID_ARGUMENT, "max_link_dist", nl.link_settings_from_json, '{"max_link_dist": 3}')
@@ -323,7 +324,7 @@ class PathTest(NavLinkTestCase):
             no_partial.accept_partial = False
             none = world.find_path(no_partial)
             self.assertTrue(none.outcome == nl.PATH_NO_PATH and not none.points)
-            too_short = world.find_path(nl.PathQuery(navmesh, WEST, EAST, jumper(distance=3.0)))
+            too_short = world.find_path(nl.PathQuery(navmesh, WEST, EAST, jumper(distance=1.8)))
             self.assertTrue(too_short.outcome == nl.PATH_PARTIAL and too_short.info.links_used == 0)
             stroll = world.find_path(nl.PathQuery(navmesh, (-9, 0, -3), (-3, 0, 3), walker()))
             self.assertTrue(stroll.outcome == nl.PATH_COMPLETE and stroll.info.links_used == 0)

@@ -21,7 +21,8 @@ using nl::capi::to_id;
 
 namespace {
 
-constexpr size_t kLinkDefFirstSize = offsetof(nl_link_def, requirements) + sizeof(nl_link_requirements);
+// The first release ended with the requirements before their length.
+constexpr size_t kLinkDefFirstSize = offsetof(nl_link_def, requirements) + offsetof(nl_link_requirements, length);
 constexpr size_t kSettingsFirstSize = offsetof(nl_link_settings, plugin_settings_json_length) + sizeof(size_t);
 constexpr size_t kReportFirstSize = offsetof(nl_bake_report, milliseconds_total) + sizeof(double);
 constexpr size_t kMaxDropAngles = sizeof(nl_link_settings::drop_angles) / sizeof(float);
@@ -36,7 +37,7 @@ nl::LinkSettings to_core(const nl_link_settings& c) {
     s.max_group_size = c.max_group_size;
     s.sample_spacing = c.sample_spacing;
     s.falloff_distance = c.falloff_distance;
-    s.max_link_distance = c.max_link_distance;
+    s.max_jump_gap = c.max_jump_gap;
     s.min_link_distance = c.min_link_distance;
     s.short_link_distance = c.short_link_distance;
     s.max_jump_up = c.max_jump_up;
@@ -53,6 +54,8 @@ nl::LinkSettings to_core(const nl_link_settings& c) {
     s.merge_distance = c.merge_distance;
     s.clearance_margin = c.clearance_margin;
     s.arc_segments = c.arc_segments;
+    s.walk_factor = c.walk_factor;
+    s.walk_distance = c.walk_distance;
     return s;
 }
 
@@ -64,7 +67,7 @@ nl_link_settings to_c(const nl::LinkSettings& s) {
     c.max_group_size = s.max_group_size;
     c.sample_spacing = s.sample_spacing;
     c.falloff_distance = s.falloff_distance;
-    c.max_link_distance = s.max_link_distance;
+    c.max_jump_gap = s.max_jump_gap;
     c.min_link_distance = s.min_link_distance;
     c.short_link_distance = s.short_link_distance;
     c.max_jump_up = s.max_jump_up;
@@ -80,6 +83,8 @@ nl_link_settings to_c(const nl::LinkSettings& s) {
     c.merge_distance = s.merge_distance;
     c.clearance_margin = s.clearance_margin;
     c.arc_segments = s.arc_segments;
+    c.walk_factor = s.walk_factor;
+    c.walk_distance = s.walk_distance;
     return c;
 }
 
@@ -97,8 +102,8 @@ nl_link to_c(const nl::StoredLink& stored, nl::Handle navmesh) {
     c.enabled = l.enabled;
     c.cost_modifier = l.cost_modifier;
     c.user_data = l.user_data;
-    c.requirements = nl_link_requirements{l.requirements.gap, l.requirements.rise, l.requirements.drop,
-                                          l.requirements.clearance_width, l.requirements.abilities};
+    const nl::LinkRequirements& r = l.requirements;
+    c.requirements = nl_link_requirements{r.gap, r.rise, r.drop, r.clearance_width, r.abilities, r.length, 0};
     c.start_polygon = l.start_polygon;
     c.end_polygon = l.end_polygon;
     return c;
@@ -108,10 +113,12 @@ nl::Vec3 read_end(const float* p, const char* name) { return nl::capi::read_posi
 
 // A host's link def as a core link on `mesh`: both ends must be near the navmesh.
 // Requirements left all zero are the ends' own (a manual link between two points asks for its gap,
-// rise and drop): the same for nl_link_add and a JSON load.
+// rise and drop), and a length left zero is the ends' distance: the same for nl_link_add and a JSON
+// load.
 void requirements_from_ends_if_unset(nl::Link& l) {
-    const nl::LinkRequirements& r = l.requirements;
+    nl::LinkRequirements& r = l.requirements;
     if (r.gap == 0.0f && r.rise == 0.0f && r.drop == 0.0f) nl::set_requirements_from_ends(l);
+    if (r.length == 0.0f) r.length = nl::Vec3(l.end.x() - l.start.x(), 0.0f, l.end.z() - l.start.z()).norm();
 }
 
 // The polygon nearest a link end within kEndReach; INVALID_ARGUMENT naming the end otherwise.
@@ -131,7 +138,7 @@ nl::Link link_from_def(const nl_link_def& in, const nl::NavMesh& mesh) {
     nl::capi::read_amount(def.cost_modifier, "def->cost_modifier");
     const nl_link_requirements& r = def.requirements;
     for (const auto& [value, name] : {std::pair{r.gap, "gap"}, std::pair{r.rise, "rise"}, std::pair{r.drop, "drop"},
-                                      std::pair{r.clearance_width, "clearance_width"}})
+                                      std::pair{r.clearance_width, "clearance_width"}, std::pair{r.length, "length"}})
         nl::capi::read_amount(value, "def->requirements.", name);
 
     nl::Link l;
@@ -143,7 +150,12 @@ nl::Link link_from_def(const nl_link_def& in, const nl::NavMesh& mesh) {
     l.enabled = def.enabled != 0;
     l.cost_modifier = def.cost_modifier;
     l.user_data = def.user_data;
-    l.requirements = nl::LinkRequirements{r.gap, r.rise, r.drop, r.clearance_width, r.abilities};
+    l.requirements.gap = r.gap;
+    l.requirements.length = r.length;
+    l.requirements.rise = r.rise;
+    l.requirements.drop = r.drop;
+    l.requirements.clearance_width = r.clearance_width;
+    l.requirements.abilities = r.abilities;
     requirements_from_ends_if_unset(l);
     l.start_polygon = polygon_near(mesh, l.start, "def->start");
     l.end_polygon = polygon_near(mesh, l.end, "def->end");
@@ -178,6 +190,10 @@ nl_bake_report to_c(const nl::BakeReport& r) {
     c.milliseconds_merge = r.milliseconds_merge;
     c.milliseconds_total = r.milliseconds_total;
     c.box_queries = r.box_queries;
+    c.body_tests = r.body_tests;
+    c.rejected_walkable = r.rejected_walkable;
+    c.rejected_too_shallow = r.rejected_too_shallow;
+    c.rejected_too_deep = r.rejected_too_deep;
     return c;
 }
 

@@ -32,7 +32,7 @@ int run_demo(int argc, char** argv) {
     const levelgen::GeneratedLevel generated = levelgen::generate_default_level(seed);
     const std::vector<samples::AgentProfile> agents = samples::demo_agents();
     NavigableLevel level(generated, "generated default level (seed " + std::to_string(seed) + ")", agents[0].body, "");
-    const nl_link_settings settings = samples::demo_link_settings();
+    const nl_link_settings settings = nl_default_link_settings();
     const nl_bake_report report = level.generate_links(settings);
     const samples::NavmeshContents contents = samples::read_navmesh_contents(level.world(), level.navmesh());
 
@@ -41,8 +41,8 @@ int run_demo(int argc, char** argv) {
     std::printf("NavLink demo: %s, %u triangles\n", level.level().name.c_str(), level.level().info.triangle_count);
     std::printf("  navmesh: %zu polygons, built by recast in %.0f ms\n", contents.polygons.size(),
                 level.times().navmesh_ms);
-    std::printf("  links:   %u jumps and %u drops (up to %.1f m long), generated in %.0f ms\n", report.jump_links,
-                report.drop_links, settings.max_link_distance, report.milliseconds_total);
+    std::printf("  links:   %u jumps and %u drops (gaps up to %.1f m), generated in %.0f ms\n", report.jump_links,
+                report.drop_links, settings.max_jump_gap, report.milliseconds_total);
     std::printf("  route:   from (%.1f, %.1f, %.1f) on the first platform to (%.1f, %.1f, %.1f) on the last\n\n",
                 start[0], start[1], start[2], goal[0], goal[1], goal[2]);
 

@@ -30,7 +30,7 @@ const char* const kBakeHelp =
     "                        max_climb 0.9, max_slope 45). Keys: name, radius, height, max_climb,\n"
     "                        max_slope, max_jump_distance, max_jump_height, max_drop_height, abilities\n"
     "  --settings GEN.json   link generator settings (docs/link-generation.md), e.g.\n"
-    "                        {\"max_link_distance\": 6, \"recast\": {\"cell_size\": 0.2}, \"plugins\": {}}\n"
+    "                        {\"max_jump_gap\": 6, \"recast\": {\"cell_size\": 0.2}, \"plugins\": {}}\n"
     "  --png VIEW.png        also draw the level, navmesh, outline and links\n"
     "  --oblique             draw the picture from an angle instead of straight down\n";
 
@@ -53,8 +53,8 @@ const char* const kDemoHelp =
     "usage: navlink demo [--seed N] [--out-dir DIR] [--oblique]\n"
     "\n"
     "Generates the default level (seed 1 unless --seed), builds its navmesh, bakes its links, and plans\n"
-    "the same start and goal for three agents: a walker (no jumps, no drops), a short jumper (3.8 m\n"
-    "across, 1 m up, no drops) and a long jumper who may drop (6 m across, 1.5 m up, drops of 4 m).\n"
+    "the same start and goal for three agents: a walker (no jumps, no drops), a short jumper (gaps of\n"
+    "2 m, 1 m up, no drops) and a long jumper who may drop (gaps of 3.5 m, 1.5 m up, drops of 4 m).\n"
     "Prints a table of their routes and writes demo.png and demo.links.json (in DIR, default '.').\n";
 
 const char* const kLevelHelp =

@@ -37,7 +37,7 @@ AgentProfile default_agent_profile() {
     profile.body = nl_default_agent_type();
     profile.capabilities = nl_agent_capabilities{};  // every field is set below; abilities none
     const nl_link_settings links = nl_default_link_settings();
-    profile.capabilities.max_jump_distance = links.max_link_distance;
+    profile.capabilities.max_jump_distance = links.max_jump_gap;
     profile.capabilities.max_jump_height = links.max_jump_up;
     profile.capabilities.max_drop_height = links.max_drop_distance;
     profile.capabilities.radius = profile.body.radius;

@@ -15,14 +15,8 @@ AgentProfile agent(const char* name, float jump_distance, float jump_height, flo
 }  // namespace
 
 std::vector<AgentProfile> demo_agents() {
-    return {agent("walker", 0.0f, 0.0f, 0.0f), agent("short jumper", 3.8f, 1.0f, 0.0f),
-            agent("long jumper", 6.0f, 1.5f, 4.0f)};
-}
-
-nl_link_settings demo_link_settings() {
-    nl_link_settings settings = nl_default_link_settings();
-    settings.max_link_distance = 6.5f;
-    return settings;
+    return {agent("walker", 0.0f, 0.0f, 0.0f), agent("short jumper", 2.0f, 1.0f, 0.0f),
+            agent("long jumper", 3.5f, 1.5f, 4.0f)};
 }
 
 }  // namespace nl::samples

@@ -3,7 +3,7 @@
 // they are, "recast" (the navmesh builder's settings, navlink/recast.h) and "plugins" (link-kind
 // plugins' settings, keyed by kind name):
 //
-//   {"max_link_distance": 6, "drop_angles": [0], "recast": {"cell_size": 0.2}}
+//   {"max_jump_gap": 6, "drop_angles": [0], "recast": {"cell_size": 0.2}}
 #pragma once
 
 #include <navlink/navlink.h>

@@ -49,7 +49,7 @@ DemoScene build_demo_scene(uint32_t seed, int32_t path_workers) {
 
     auto root = std::make_unique<Node>("Main");
     scene.region = root->add_child(
-        std::make_unique<NavigationRegion>("Level", level, profiles[0].body, samples::demo_link_settings()));
+        std::make_unique<NavigationRegion>("Level", level, profiles[0].body, nl_default_link_settings()));
     scene.ladder = root->add_child(std::make_unique<NavigationLink>("Ladder", *scene.region, ladder_def(level)));
     for (const samples::AgentProfile& profile : profiles) {
         auto agent = std::make_unique<NavigationAgent>(profile.name, *scene.region, profile, start);

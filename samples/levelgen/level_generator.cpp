@@ -89,8 +89,8 @@ GeneratedLevel generate_default_level(uint32_t seed) {
     const float depth = 6.0f;  // platforms run along +x, 6 m deep in z (z in [0, 6])
 
     // Four platforms in a row (boxes 0 to 3). With Recast's default agent the navmesh edges sit 0.6 to
-    // 0.9 m inside each rim, so a jump across a gap is the gap plus 1.2 to 1.8 m. The ranges keep the
-    // gaps apart: the first (1.4-1.8 m: a 2.6-3.6 m jump) is jumped by a short jumper, the second
+    // 0.9 m inside each rim, so a jump across a gap is the gap plus 1.2 to 1.8 m end to end. The ranges
+    // keep the gaps apart: the first (1.4-1.8 m: a 2.6-3.6 m jump) is jumped by a short jumper, the second
     // (2.8-3.2 m: a 4.0-5.0 m jump) only by a long one, and the third is narrow but 2.0-2.4 m deep: a
     // one-way drop onto the last platform, too high to jump back up.
     const float gaps[] = {rng.uniform(1.4f, 1.8f), rng.uniform(2.8f, 3.2f), rng.uniform(0.8f, 1.1f)};

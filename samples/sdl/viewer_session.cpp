@@ -25,7 +25,7 @@ ViewerSession::ViewerSession(const ViewerOptions& options) : agents_(samples::de
     if (options.links_path) {
         samples::load_links_file(world_.get(), navmesh_, *options.links_path);
     } else {
-        const nl_link_settings settings = samples::demo_link_settings();
+        const nl_link_settings settings = nl_default_link_settings();
         samples::check(nl_navmesh_generate_links(world_.get(), navmesh_, &settings, nullptr, nullptr, nullptr),
                        "generating links");
     }

@@ -122,6 +122,7 @@ std::string links_to_json(const std::vector<Link>& links) {
                         {"end_polygon", l.end_polygon},
                         {"requires",
                          {{"gap", l.requirements.gap},
+                          {"length", l.requirements.length},
                           {"rise", l.requirements.rise},
                           {"drop", l.requirements.drop},
                           {"clearance_width", l.requirements.clearance_width},
@@ -162,11 +163,13 @@ std::vector<Link> links_from_json(std::string_view text) {
         if (const Json* requirements = r.find("requires")) {
             const Reader q(*requirements, r.path() + ".requires");
             l.requirements.gap = q.number("gap", 0.0f);
+            l.requirements.length = q.number("length", 0.0f);
             l.requirements.rise = q.number("rise", 0.0f);
             l.requirements.drop = q.number("drop", 0.0f);
             l.requirements.clearance_width = q.number("clearance_width", 0.0f);
             l.requirements.abilities = q.whole("abilities", 0);
-            if (l.requirements.gap < 0 || l.requirements.rise < 0 || l.requirements.drop < 0 || l.requirements.clearance_width < 0)
+            if (l.requirements.gap < 0 || l.requirements.length < 0 || l.requirements.rise < 0 || l.requirements.drop < 0 ||
+                l.requirements.clearance_width < 0)
                 fail(ErrorCode::InvalidArgument, r.path(), ".requirements: distances must be >= 0");
         }
         links.push_back(l);
@@ -178,17 +181,17 @@ void apply_settings_json(std::string_view text, LinkSettings& s) {
     const Json document = parse(text, "settings JSON");
     const Reader r(document, "settings");
     float* const floats[] = {&s.min_edge_length,          &s.sample_spacing,         &s.falloff_distance,
-                             &s.max_link_distance,        &s.min_link_distance,      &s.short_link_distance,
+                             &s.max_jump_gap,        &s.min_link_distance,      &s.short_link_distance,
                              &s.max_jump_up,              &s.jump_arc_height,        &s.strict_forward_angle,
                              &s.permissive_forward_angle, &s.strict_incline_angle,   &s.permissive_incline_angle,
                              &s.max_drop_distance,        &s.drop_steepness,         &s.merge_distance,
-                             &s.clearance_margin};
+                             &s.clearance_margin,         &s.walk_factor,            &s.walk_distance};
     const char* const float_names[] = {"min_edge_length",          "sample_spacing",       "falloff_distance",
-                                       "max_link_distance",        "min_link_distance",    "short_link_distance",
+                                       "max_jump_gap",        "min_link_distance",    "short_link_distance",
                                        "max_jump_up",              "jump_arc_height",      "strict_forward_angle",
                                        "permissive_forward_angle", "strict_incline_angle", "permissive_incline_angle",
                                        "max_drop_distance",        "drop_steepness",       "merge_distance",
-                                       "clearance_margin"};
+                                       "clearance_margin",         "walk_factor",          "walk_distance"};
     unsigned* const wholes[] = {&s.min_group_size, &s.max_group_size, &s.arc_segments};
     const char* const whole_names[] = {"min_group_size", "max_group_size", "arc_segments"};
 

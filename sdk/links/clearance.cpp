@@ -3,30 +3,10 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <iterator>
-#include <limits>
 
 namespace nl {
 
-JumpArc jump_arc(const Vec3& start, const Vec3& end, float apex_above, unsigned pieces) {
-    // y(t) = start.y + b t + c t^2 over the horizontal fraction t, through end at t = 1, topping out at
-    // h above start.y: c solves c^2 + (4h - 2dy) c + dy^2 = 0 on its negative root.
-    const double dy = double(end.y()) - start.y();
-    const double h = std::max(double(start.y()), double(end.y())) + apex_above - start.y();
-    const double c = -(2.0 * h - dy) - 2.0 * std::sqrt(std::max(0.0, h * (h - dy)));
-    const double b = dy - c;
-    const double t_apex = c < 0.0 ? std::clamp(-b / (2.0 * c), 0.0, 1.0) : 0.5;
-    auto at = [&](double t) {
-        const Vec3 flat = start + static_cast<float>(t) * (end - start);
-        return Vec3(flat.x(), static_cast<float>(start.y() + b * t + c * t * t), flat.z());
-    };
-    JumpArc arc;
-    for (unsigned i = 0; i <= pieces; ++i) arc.points.push_back(at(double(i) / pieces));
-    arc.apex = at(t_apex);
-    return arc;
-}
-
-std::vector<SweepPiece> sweep_pieces(PathPoints path_points, const Body& body, float margin) {
+std::vector<SweepPiece> sweep_pieces(PathPoints path_points, float margin) {
     const Vec3* path = path_points.points;
     const size_t count = path_points.count;
     std::vector<SweepPiece> pieces;
@@ -34,10 +14,6 @@ std::vector<SweepPiece> sweep_pieces(PathPoints path_points, const Body& body, f
     for (size_t i = 1; i < count; ++i) total += (path[i] - path[i - 1]).norm();
     if (total <= 0.0f) return pieces;
     const float keep_from = margin * total, keep_to = (1.0f - margin) * total;
-    // One sideways direction for the whole path: its horizontal heading.
-    Vec3 heading = path[count - 1] - path[0];
-    heading.y() = 0.0f;
-    const Vec3 side = heading.norm() > 1e-4f ? Vec3(-heading.z(), 0.0f, heading.x()).normalized() : Vec3::UnitX();
     float walked = 0.0f;
     for (size_t i = 1; i < count; ++i) {
         const Vec3 a = path[i - 1], b = path[i];
@@ -45,49 +21,26 @@ std::vector<SweepPiece> sweep_pieces(PathPoints path_points, const Body& body, f
         const float from = std::max(walked, keep_from), to = std::min(walked + length, keep_to);
         walked += length;
         if (to <= from || length <= 0.0f) continue;
-        SweepPiece piece{a + (b - a) * ((from - (walked - length)) / length), a + (b - a) * ((to - (walked - length)) / length),
-                         side, {std::min(0.3f, 0.25f * body.height), 0.5f * body.height,
-                                std::max(0.5f * body.height, body.height - 0.1f)}};
-        pieces.push_back(piece);
+        pieces.push_back(SweepPiece{a + (b - a) * ((from - (walked - length)) / length),
+                                    a + (b - a) * ((to - (walked - length)) / length), path_points.slack});
     }
     return pieces;
 }
 
-void append_piece_segments(const SweepPiece& piece, float radius, std::vector<Segment>& out) {
-    for (float y : piece.heights) {
-        for (float x : kSweepOffsets) {
-            const Vec3 offset = piece.side * (x * radius) + Vec3(0.0f, y, 0.0f);
-            out.push_back(Segment{piece.from + offset, piece.to + offset});
-            out.push_back(Segment{piece.to + offset, piece.from + offset});
-        }
-    }
-}
-
 namespace {
 
-// The eight corners of the parallelepiped every segment of the piece lies in.
-std::array<Vec3, 8> piece_corners(const SweepPiece& piece, float radius) {
-    const float wide = *std::max_element(std::begin(kSweepOffsets), std::end(kSweepOffsets)) * radius;
-    const float low = *std::min_element(std::begin(piece.heights), std::end(piece.heights));
-    const float high = *std::max_element(std::begin(piece.heights), std::end(piece.heights));
-    const Vec3 s = piece.side * wide, l(0.0f, low, 0.0f), h(0.0f, high, 0.0f);
-    return {piece.from - s + l, piece.from + s + l, piece.from - s + h, piece.from + s + h,
-            piece.to - s + l,   piece.to + s + l,   piece.to - s + h,   piece.to + s + h};
+SweptCylinder body_along(const SweepPiece& piece, const Body& body, float radius) {
+    return SweptCylinder{piece.from, piece.to, radius, body.lift() - piece.slack, body.height + piece.slack};
 }
 
-// A millimetre, and a few float steps at the size of the coordinates.
-float rounding_pad(const Vec3* points, size_t count) {
-    float magnitude = 0.0f;
-    for (size_t i = 0; i < count; ++i) magnitude = std::max(magnitude, points[i].cwiseAbs().maxCoeff());
-    return 1e-3f + 8.0f * std::numeric_limits<float>::epsilon() * magnitude;
-}
+// Twice the margin the exact test keeps: a triangle outside the box is proven apart.
+float box_pad(const SweepPiece& piece) { return 2.0f * body_margin(piece.from.cwiseAbs().cwiseMax(piece.to.cwiseAbs())); }
 
 }  // namespace
 
-OrientedBox piece_box(const SweepPiece& piece, float radius) {
-    const std::array<Vec3, 8> corners = piece_corners(piece, radius);
-    return box_around(axes_along(piece.to - piece.from, piece.side), corners.data(), corners.size(),
-                      rounding_pad(corners.data(), corners.size()));
+BodyStretch stretch_of(const SweepPiece& piece, const Body& body, float widest) {
+    const SweptCylinder at_widest = body_along(piece, body, widest);
+    return BodyStretch{at_widest, bounds_of(at_widest, box_pad(piece))};
 }
 
 std::vector<PieceRun> straight_runs(const std::vector<SweepPiece>& pieces) {
@@ -104,17 +57,21 @@ std::vector<PieceRun> straight_runs(const std::vector<SweepPiece>& pieces) {
     return runs;
 }
 
-OrientedBox run_box(const std::vector<SweepPiece>& pieces, PieceRun run, float radius) {
+OrientedBox run_box(const std::vector<SweepPiece>& pieces, PieceRun run, const Body& body, float widest) {
     std::vector<Vec3> corners;
     corners.reserve(8 * (run.last - run.first));
+    float pad = 0.0f;
     for (uint32_t k = run.first; k < run.last; ++k) {
-        const std::array<Vec3, 8> c = piece_corners(pieces[k], radius);
-        corners.insert(corners.end(), c.begin(), c.end());
+        const OrientedBox b = stretch_of(pieces[k], body, widest).bounds;
+        for (float x : {-1.0f, 1.0f})
+            for (float y : {-1.0f, 1.0f})
+                for (float z : {-1.0f, 1.0f}) corners.push_back(b.center + b.axes * b.half_extents.cwiseProduct(Vec3(x, y, z)));
+        pad = std::max(pad, box_pad(pieces[k]));
     }
-    const Vec3 along = pieces[run.last - 1].to - pieces[run.first].from;
-    return box_around(axes_along(along.squaredNorm() > 1e-8f ? along : pieces[run.first].to - pieces[run.first].from,
-                                 pieces[run.first].side),
-                      corners.data(), corners.size(), rounding_pad(corners.data(), corners.size()));
+    Vec3 along = pieces[run.last - 1].to - pieces[run.first].from;
+    along.y() = 0.0f;
+    if (along.squaredNorm() < 1e-8f) along = Vec3::UnitX();
+    return box_around(axes_along(along, Vec3::UnitY()), corners.data(), corners.size(), pad);
 }
 
 }  // namespace nl

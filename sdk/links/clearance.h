@@ -1,5 +1,7 @@
-// The geometry of "an agent-sized body fits along this path": the path (a jump arc, a fall) is swept
-// by a body of a radius and height, approximated by occlusion segments the level tests in batches.
+// The geometry of "an agent-sized body fits along this path": the path (a jump arc, a fall) is cut
+// into straight pieces, and the agent's body (an upright cylinder, level/swept_body.h) swept along
+// each is tested exactly against the level's triangles (Level::bodies_clear). Boxes around straight
+// runs of pieces are asked first (Level::boxes_empty), so a run through open air costs one query.
 #pragma once
 
 #include <vector>
@@ -9,63 +11,51 @@
 
 namespace nl {
 
+// The body a link is checked for: an upright cylinder of the agent's radius, from lift() above the
+// path point (what the feet step over, or pass above at a rim) to the agent's height above it.
 struct Body {
     float radius;
     float height;
+    float lift() const { return std::min(0.3f, 0.25f * height); }
 };
 
-// A parabola from start to end whose top is `apex_above` over the higher end, cut into `pieces`.
-struct JumpArc {
-    std::vector<Vec3> points;  // pieces + 1 points, start first
-    Vec3 apex;
-};
-JumpArc jump_arc(const Vec3& start, const Vec3& end, float apex_above, unsigned pieces);
+// Radii of the bodies a sweep tries, in agent radii, narrowest first: one sweep tells the widest
+// body that fits (the link's clearance width is twice the widest radius clear).
+constexpr float kSweepRadii[] = {1.0f, 1.5f, 2.0f};
+constexpr unsigned kSweepRadiusCount = sizeof(kSweepRadii) / sizeof(kSweepRadii[0]);
 
-// Lateral offsets of the sweep lines, in agent radii: the centre line, then the two sides of bodies
-// 1, 1.5 and 2 radii wide, so that one batch tells the widest body that fits.
-constexpr float kSweepOffsets[] = {0.0f, -1.0f, 1.0f, -1.5f, 1.5f, -2.0f, 2.0f};
-constexpr unsigned kSweepOffsetCount = sizeof(kSweepOffsets) / sizeof(kSweepOffsets[0]);
-constexpr unsigned kSweepHeights = 3;
-
-// One straight stretch of a swept path, its share of the margins cut off: the body's lines run from
-// `from` to `to`, each moved sideways by one of kSweepOffsets radii along `side` and up by one of
-// `heights`.
+// One straight stretch of a swept path, its share of the margins cut off. The path strays from it
+// by at most `slack` vertically (an arc's sagitta over the piece; 0 for straight paths).
 struct SweepPiece {
     Vec3 from, to;
-    Vec3 side;  // horizontal, across the path's overall heading
-    float heights[kSweepHeights];
+    float slack = 0.0f;
 };
-constexpr unsigned kSegmentsPerPiece = kSweepHeights * kSweepOffsetCount * 2;
 
-// A path to sweep, first point to last.
+// A path to sweep, first point to last; each piece between two points strays from its chord by at
+// most `slack` vertically.
 struct PathPoints {
     const Vec3* points;  // borrowed
     size_t count;
+    float slack = 0.0f;
 };
 
-// The pieces of an agent-sized body swept along `path` (feet on the path), leaving out `margin` of
-// the path's length at each end (take-off and landing touch the floor): three heights (near the
-// feet, the middle, the head).
-std::vector<SweepPiece> sweep_pieces(PathPoints path, const Body& body, float margin);
+// The pieces of `path`, leaving out `margin` of its length at each end (take-off and landing touch
+// the floor).
+std::vector<SweepPiece> sweep_pieces(PathPoints path, float margin);
 
-// Appends the piece's kSegmentsPerPiece segments: for each height, for each offset, the line in both
-// directions, so that a surface met from either side blocks. Segment k uses offset
-// (k / 2) % kSweepOffsetCount.
-void append_piece_segments(const SweepPiece& piece, float radius, std::vector<Segment>& out);
-
-// A box that holds every segment of the piece, padded for rounding: when no triangle touches it,
-// none of them is blocked.
-OrientedBox piece_box(const SweepPiece& piece, float radius);
+// The body along a piece (its height span grown by the piece's slack), with a box that holds it at
+// `widest` radius.
+BodyStretch stretch_of(const SweepPiece& piece, const Body& body, float widest);
 
 // Runs [first, last) of two or more consecutive pieces that turn by less than 45 degrees from one to
-// the next: a whole jump arc, the walk out and across of a fall. A run's box is asked before its
-// pieces', so a run through open air costs one box query.
+// the next: a whole jump arc, the walk out and across of a fall.
 struct PieceRun {
     uint32_t first, last;
 };
 std::vector<PieceRun> straight_runs(const std::vector<SweepPiece>& pieces);
 
-// A box that holds every segment of the pieces [run.first, run.last).
-OrientedBox run_box(const std::vector<SweepPiece>& pieces, PieceRun run, float radius);
+// A box that holds the bodies of the pieces [run.first, run.last) at `widest` radius: when no
+// triangle touches it, every one of them is clear.
+OrientedBox run_box(const std::vector<SweepPiece>& pieces, PieceRun run, const Body& body, float widest);
 
 }  // namespace nl

@@ -20,7 +20,9 @@ enum class LinkKind : uint32_t {
 // What taking the link asks of an agent, in its forward direction (start to end). Going the other
 // way over a bidirectional link swaps rise and drop.
 struct LinkRequirements {
-    float gap = 0.0f;              // horizontal distance between the ends
+    float gap = 0.0f;              // horizontal distance covered in the air: rim to rim for a jump, rim
+                                   // to landing for a drop; end to end for links whose rims are not known
+    float length = 0.0f;           // horizontal distance between the ends
     float rise = 0.0f;             // how far the end is above the start (0 if below)
     float drop = 0.0f;             // how far the end is below the start (0 if above)
     float clearance_width = 0.0f;  // widest body found clear along the link
@@ -42,10 +44,12 @@ struct Link {
     uint32_t end_polygon = 0xffffffffu;
 };
 
-// Sets the gap, rise and drop the link's ends ask for, start to end.
+// Sets the length, rise and drop the link's ends ask for, start to end, and the gap to the length
+// (the rims are not known).
 inline void set_requirements_from_ends(Link& l) {
     const Vec3 d = l.end - l.start;
-    l.requirements.gap = Vec3(d.x(), 0.0f, d.z()).norm();
+    l.requirements.length = Vec3(d.x(), 0.0f, d.z()).norm();
+    l.requirements.gap = l.requirements.length;
     l.requirements.rise = std::max(0.0f, d.y());
     l.requirements.drop = std::max(0.0f, -d.y());
 }

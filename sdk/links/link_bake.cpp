@@ -9,6 +9,8 @@
 
 #include "links/clearance.h"
 #include "links/link_merge.h"
+#include "motion/trajectory.h"
+#include "navmesh/walk_graph.h"
 #include "util/error.h"
 
 namespace nl {
@@ -18,6 +20,8 @@ constexpr float kDegrees = 3.14159265358979f / 180.0f;
 constexpr float kProbeLift = 0.5f;  // probes start this far above the navmesh: clear of the floor,
                                     // and below any ceiling (the navmesh has agent height above it)
 constexpr float kRimStep = 0.25f;   // spacing of the probes that look for the rim past an edge
+constexpr int kRimHalvings = 4;     // then the rim's step is halved this often: found to 1.6 cm
+constexpr float kFloorReach = 2.0f; // a link end's floor is looked for this far below kProbeLift
 constexpr float kPad = 1e-3f;       // bounds are padded: a surface exactly on them still counts
 
 struct Stopwatch {
@@ -72,7 +76,7 @@ public:
           const LinkBake::Cache& old, const Aabb* box, const Level& level, TaskSystem& tasks, BakeReport& report,
           BakeProgress progress)
         : mesh_(mesh), samples_(sampling.samples), s_(s), method_(method), old_(old), box_(box), level_(level),
-          tasks_(tasks), report_(report), progress_(progress), body_{mesh.agent().radius, mesh.agent().height} {}
+          tasks_(tasks), report_(report), progress_(progress), body_{mesh.agent().radius, mesh.agent().height}, walk_(mesh) {}
 
     std::vector<Link> run(LinkBake::Cache& next) {
         Stopwatch stage;
@@ -203,6 +207,7 @@ private:
             }
             looking.resize(still);
         }
+        refine_rims(next, redo, probe, step_reach);
 
         std::vector<Segment> walls;
         std::vector<uint32_t> ledges;
@@ -228,8 +233,51 @@ private:
         }
     }
 
+    // The rim lies between the last step out on ground and the first without: halve that step a few
+    // times, all samples in one batch per halving, so a gap is measured to a couple of centimetres.
+    // The rim is then the middle of what is left.
+    void refine_rims(LinkBake::Cache& next, const std::vector<uint32_t>& redo, float probe, float step_reach) {
+        std::vector<uint32_t> found;  // samples with a rim
+        std::vector<float> ground, air;  // distances out known on ground and off it
+        for (uint32_t i : redo) {
+            const LinkBake::TakeoffState& t = next.takeoffs[i];
+            if (t.rim < 0.0f) continue;
+            found.push_back(i);
+            air.push_back(t.rim);
+            ground.push_back(std::max(0.0f, std::ceil(t.rim / kRimStep - 1e-3f) * kRimStep - kRimStep));
+        }
+        std::vector<Segment> below(found.size());
+        for (int halving = 0; halving < kRimHalvings; ++halving) {
+            for (size_t n = 0; n < found.size(); ++n) {
+                const EdgeSample& e = samples_[found[n]];
+                const Vec3 out = e.point + e.outward * (0.5f * (ground[n] + air[n]));
+                const Vec3 top(out.x(), next.takeoffs[found[n]].ground_y + probe, out.z());
+                below[n] = Segment{top, top - Vec3(0, step_reach, 0)};
+            }
+            const std::vector<uint8_t> hit = blocked(below);
+            for (size_t n = 0; n < found.size(); ++n) (hit[n] ? ground[n] : air[n]) = 0.5f * (ground[n] + air[n]);
+        }
+        for (size_t n = 0; n < found.size(); ++n) next.takeoffs[found[n]].rim = 0.5f * (ground[n] + air[n]);
+    }
+
+    // The floor under a take-off point: its sample's x and z, the height of the level found under it.
+    Vec3 floor_point(const LinkBake::Cache& c, uint32_t i) const {
+        return Vec3(samples_[i].point.x(), c.takeoffs[i].ground_y, samples_[i].point.z());
+    }
+
+    // How far the body flies over open ground between two rims (or a rim and a landing): the ends'
+    // horizontal distance, less how far each end lies inside its rim along the line between them
+    // (a rim runs along its edge, `rim` out from it).
+    static float air_gap(float length, const Vec3& heading, const Vec3& outward_a, float rim_a, const Vec3& outward_b, float rim_b) {
+        float gap = length;
+        const float cos_a = outward_a.dot(heading), cos_b = outward_b.dot(-heading);
+        if (rim_a > 0.0f) gap -= cos_a > 1e-3f ? rim_a / cos_a : 0.0f;
+        if (rim_b > 0.0f) gap -= cos_b > 1e-3f ? rim_b / cos_b : 0.0f;
+        return std::max(0.0f, gap);
+    }
+
     // What the geometry-free tests say of a pair of take-off points, for the report.
-    enum class PairVerdict : uint8_t { Candidate, Ignored, Distance, Rise, Angle, NoLanding };
+    enum class PairVerdict : uint8_t { Candidate, Ignored, Distance, Rise, Angle, NoLanding, Walkable };
 
     // The grid the Indexed search finds partners in: cells as wide as the reach, so that a partner
     // is in the 27 cells around a point.
@@ -244,10 +292,13 @@ private:
     };
     using TakeoffGrid = std::unordered_map<CellKey, std::vector<uint32_t>, CellHash>;
 
-    // Pairs beyond max_link_distance are still looked at, up to twice as far, so the report can say
-    // that two facing edges were too far apart. Never finer than a centimetre: cell keys stay far
-    // inside int64 within the coordinate limit.
-    float pair_reach() const { return std::max(2.0f * s_.max_link_distance, 0.01f); }
+    // How far apart two take-off points can be and still be worth a look: ends up to twice the
+    // widest gap apart, each end up to falloff_distance inside its rim, one up to max_jump_up above
+    // the other (so the report can say that two facing edges were too far apart). Never finer than
+    // a centimetre: cell keys stay far inside int64 within the coordinate limit.
+    float pair_reach() const {
+        return std::max(2.0f * s_.max_jump_gap + 2.0f * s_.falloff_distance + s_.max_jump_up, 0.01f);
+    }
 
     CellKey cell_of(const Vec3& p) const {
         const float reach = pair_reach();
@@ -277,24 +328,30 @@ private:
         std::sort(out.begin(), out.end());
     }
 
-    // The constraints that need no ray: distance, rise, facing, incline. Both directions at once:
-    // every one of them is symmetric in the two ends.
-    PairVerdict judge_pair(const EdgeSample& a, const EdgeSample& b) const {
-        const Vec3 d = b.point - a.point;
+    // The constraints that need no ray, between the floor points of two take-off points: gap,
+    // rise, facing, incline, landing, and whether walking is about as short. Both directions at
+    // once: every one of them is symmetric in the two ends. `gap` receives the air gap.
+    PairVerdict judge_pair(const LinkBake::Cache& c, uint32_t i, uint32_t j, float& gap) const {
+        const EdgeSample &a = samples_[i], &b = samples_[j];
+        const Vec3 d = floor_point(c, j) - floor_point(c, i);
         const Vec3 flat(d.x(), 0.0f, d.z());
-        const float distance = d.norm(), gap = flat.norm();
+        const float distance = d.norm(), length = flat.norm();
+        const Vec3 heading = length > 0.0f ? Vec3(flat / length) : Vec3::Zero();
         const bool is_short = distance < s_.short_link_distance;
         const float forward = std::cos((is_short ? s_.permissive_forward_angle : s_.strict_forward_angle) * kDegrees);
-        const bool facing = gap > 0.0f && a.outward.dot(flat / gap) >= forward && b.outward.dot(-flat / gap) >= forward;
+        const bool facing = length > 0.0f && a.outward.dot(heading) >= forward && b.outward.dot(-heading) >= forward;
+        gap = air_gap(length, heading, a.outward, c.takeoffs[i].rim, b.outward, c.takeoffs[j].rim);
         // Only edges that face each other are worth reporting as too far apart.
-        if (distance > s_.max_link_distance) return facing ? PairVerdict::Distance : PairVerdict::Ignored;
-        if (gap < s_.min_link_distance) return PairVerdict::Distance;
+        if (gap > s_.max_jump_gap) return facing ? PairVerdict::Distance : PairVerdict::Ignored;
+        if (length < s_.min_link_distance) return PairVerdict::Distance;
         if (std::fabs(d.y()) > s_.max_jump_up) return PairVerdict::Rise;
         const float incline = std::sin((is_short ? s_.permissive_incline_angle : s_.strict_incline_angle) * kDegrees);
         const Vec3 direction = d / distance;
         if (!facing || std::fabs(direction.dot(a.normal)) > incline || std::fabs(direction.dot(b.normal)) > incline)
             return PairVerdict::Angle;
-        return on_navmesh(b.point) ? PairVerdict::Candidate : PairVerdict::NoLanding;
+        if (!on_navmesh(b.point)) return PairVerdict::NoLanding;
+        const float walk = walk_.walk_within(a.point, a.polygon, b.point, b.polygon, s_.walk_factor * length + s_.walk_distance);
+        return std::isfinite(walk) ? PairVerdict::Walkable : PairVerdict::Candidate;
     }
 
     void count(PairVerdict verdict, uint32_t pairs) {
@@ -303,46 +360,48 @@ private:
             case PairVerdict::Rise: report_.rejected_rise += pairs; break;
             case PairVerdict::Angle: report_.rejected_angle += pairs; break;
             case PairVerdict::NoLanding: report_.rejected_no_landing += pairs; break;
+            case PairVerdict::Walkable: report_.rejected_walkable += pairs; break;
             case PairVerdict::Candidate:
             case PairVerdict::Ignored: break;
         }
     }
 
     // A pair that met every geometry-free constraint: its arc's sweep is reused from the old cache
-    // when the box cannot have changed it, else queued in `redo` / `arcs`.
-    void add_jump_candidate(uint32_t a, uint32_t b, LinkBake::Cache& next, std::vector<uint64_t>& redo,
-                            std::vector<std::vector<Vec3>>& arcs) {
+    // when the box cannot have changed it (and its ends are where they were), else queued in `redo`
+    // with its arc in `arcs`.
+    void add_jump_candidate(uint32_t a, uint32_t b, float gap, LinkBake::Cache& next, std::vector<uint64_t>& redo,
+                            std::vector<JumpArc>& arcs) {
         const uint64_t key = pair_key(a, b);
+        const Vec3 start = floor_point(next, a), end = floor_point(next, b);
         const auto cached = old_.jumps.find(key);
-        if (cached != old_.jumps.end() && !touches(cached->second.sweep.bounds, box_)) {
+        if (cached != old_.jumps.end() && !touches(cached->second.sweep.bounds, box_) && cached->second.link.start == start &&
+            cached->second.link.end == end) {
             next.jumps.emplace(key, cached->second);
             return;
         }
-        const JumpArc arc = jump_arc(samples_[a].point, samples_[b].point, s_.jump_arc_height, s_.arc_segments);
+        const JumpArc arc(start, end, s_.jump_arc_height);
         LinkBake::JumpCandidate c;
         c.a = a;
         c.b = b;
         c.link.kind = LinkKind::Jump;
-        c.link.start = samples_[a].point;
-        c.link.end = samples_[b].point;
-        c.link.apex = arc.apex;
+        c.link.start = start;
+        c.link.end = end;
+        c.link.apex = arc.apex();
         c.link.bidirectional = true;  // every jump constraint holds both ways
         c.link.generated = true;
         c.link.start_polygon = samples_[a].polygon;
         c.link.end_polygon = samples_[b].polygon;
         set_requirements_from_ends(c.link);
+        c.link.requirements.gap = gap;
         next.jumps.emplace(key, c);
         redo.push_back(key);
-        arcs.push_back(arc.points);
+        arcs.push_back(arc);
     }
 
-    // Which pieces a box query proves clear (1) without casting their segments: straight runs of
-    // pieces first, one query clearing a run through open air, then each piece not cleared with
-    // its run.
-    std::vector<uint8_t> proven_clear(const std::vector<std::vector<SweepPiece>>& pieces, const std::vector<size_t>& first_piece,
-                                      const std::vector<uint32_t>& path_of) {
-        const auto piece_count = static_cast<uint32_t>(first_piece.back());
-        std::vector<uint8_t> piece_clear(piece_count, 0);
+    // Which pieces' straight runs no triangle comes near: one box query clears a run through open
+    // air. Those pieces are clear for every radius swept.
+    std::vector<uint8_t> runs_in_open_air(const std::vector<std::vector<SweepPiece>>& pieces, const std::vector<size_t>& first_piece) {
+        std::vector<uint8_t> open_air(first_piece.back(), 0);
         std::vector<std::vector<PieceRun>> runs(pieces.size());
         tasks_.parallel_for(static_cast<uint32_t>(pieces.size()), 256, [&](uint32_t begin, uint32_t end) {
             for (uint32_t i = begin; i < end; ++i) runs[i] = straight_runs(pieces[i]);
@@ -350,87 +409,73 @@ private:
         std::vector<std::pair<uint32_t, PieceRun>> all_runs;  // (path, run)
         for (uint32_t i = 0; i < pieces.size(); ++i)
             for (const PieceRun& run : runs[i]) all_runs.emplace_back(i, run);
+        const float widest = kSweepRadii[kSweepRadiusCount - 1] * body_.radius;
         std::vector<OrientedBox> run_boxes(all_runs.size());
         tasks_.parallel_for(static_cast<uint32_t>(all_runs.size()), 64, [&](uint32_t begin, uint32_t end) {
-            for (uint32_t n = begin; n < end; ++n) run_boxes[n] = run_box(pieces[all_runs[n].first], all_runs[n].second, body_.radius);
+            for (uint32_t n = begin; n < end; ++n) run_boxes[n] = run_box(pieces[all_runs[n].first], all_runs[n].second, body_, widest);
         });
-        std::vector<uint8_t> run_clear(all_runs.size(), 0);
-        level_.boxes_empty(run_boxes.data(), static_cast<uint32_t>(run_boxes.size()), run_clear.data());
+        std::vector<uint8_t> empty(all_runs.size(), 0);
+        level_.boxes_empty(run_boxes.data(), static_cast<uint32_t>(run_boxes.size()), empty.data());
+        report_.box_queries += all_runs.size();
         for (size_t n = 0; n < all_runs.size(); ++n) {
-            if (!run_clear[n]) continue;
+            if (!empty[n]) continue;
             const size_t base = first_piece[all_runs[n].first];
-            std::fill(piece_clear.begin() + base + all_runs[n].second.first, piece_clear.begin() + base + all_runs[n].second.last, 1);
+            std::fill(open_air.begin() + base + all_runs[n].second.first, open_air.begin() + base + all_runs[n].second.last, 1);
         }
-        std::vector<uint32_t> asked;
-        for (uint32_t k = 0; k < piece_count; ++k)
-            if (!piece_clear[k]) asked.push_back(k);
-        std::vector<OrientedBox> boxes(asked.size());
-        tasks_.parallel_for(static_cast<uint32_t>(asked.size()), 256, [&](uint32_t begin, uint32_t end) {
-            for (uint32_t n = begin; n < end; ++n) {
-                const uint32_t k = asked[n], i = path_of[k];
-                boxes[n] = piece_box(pieces[i][k - first_piece[i]], body_.radius);
-            }
-        });
-        std::vector<uint8_t> clear(asked.size(), 0);
-        level_.boxes_empty(boxes.data(), static_cast<uint32_t>(boxes.size()), clear.data());
-        for (size_t n = 0; n < asked.size(); ++n) piece_clear[asked[n]] = clear[n];
-        report_.box_queries += all_runs.size() + asked.size();
-        return piece_clear;
+        return open_air;
     }
 
-    // Sweeps each path with the agent's body and bodies 1.5 and 2 times as wide, in one occlusion
-    // batch: a path is clear if the agent's lines are, and as wide as the widest body whose lines
-    // (and every narrower body's) are. Indexed bakes cast only the pieces proven_clear leaves.
+    // Sweeps each path with the agent's body and bodies 1.5 and 2 times as wide (Body, kSweepRadii),
+    // every piece tested exactly against the triangles near it: a path is clear if the agent's body
+    // touches nothing anywhere along it, and as wide as the widest body that touches nothing. Indexed
+    // bakes test only the pieces whose straight runs are not in open air.
     std::vector<LinkBake::Sweep> sweep(const std::vector<PathPoints>& paths) {
         std::vector<LinkBake::Sweep> out(paths.size());
         std::vector<std::vector<SweepPiece>> pieces(paths.size());
+        const float widest = kSweepRadii[kSweepRadiusCount - 1] * body_.radius;
         tasks_.parallel_for(static_cast<uint32_t>(paths.size()), 64, [&](uint32_t begin, uint32_t end) {
             for (uint32_t i = begin; i < end; ++i) {
-                pieces[i] = sweep_pieces(paths[i], body_, s_.clearance_margin);
+                pieces[i] = sweep_pieces(paths[i], s_.clearance_margin);
                 Aabb& b = out[i].bounds;
                 for (size_t n = 0; n < paths[i].count; ++n) b.grow(paths[i].points[n]);
-                const float widest = 2.0f * body_.radius;
-                b.min -= Vec3(widest, 0.0f, widest);
-                b.max += Vec3(widest, body_.height, widest);
+                b.min -= Vec3(widest, paths[i].slack, widest);
+                b.max += Vec3(widest, body_.height + paths[i].slack, widest);
             }
         });
         std::vector<size_t> first_piece(paths.size() + 1, 0);
         for (size_t i = 0; i < paths.size(); ++i) first_piece[i + 1] = first_piece[i] + pieces[i].size();
         const auto piece_count = static_cast<uint32_t>(first_piece.back());
-        std::vector<uint8_t> piece_clear(piece_count, 0);
         std::vector<uint32_t> path_of(piece_count);
         for (uint32_t i = 0; i < paths.size(); ++i)
             for (size_t k = first_piece[i]; k < first_piece[i + 1]; ++k) path_of[k] = i;
-        if (method_ == BakeMethod::Indexed) piece_clear = proven_clear(pieces, first_piece, path_of);
-        // The pieces left to cast, kSegmentsPerPiece segments each.
-        std::vector<uint32_t> cast_pieces;
+        std::vector<uint8_t> cleared(piece_count, 0);
+        if (method_ == BakeMethod::Indexed) {
+            const std::vector<uint8_t> open_air = runs_in_open_air(pieces, first_piece);
+            for (uint32_t k = 0; k < piece_count; ++k)
+                if (open_air[k]) cleared[k] = kSweepRadiusCount;
+        }
+        std::vector<uint32_t> tested;
         for (uint32_t k = 0; k < piece_count; ++k)
-            if (!piece_clear[k]) cast_pieces.push_back(k);
-        std::vector<Segment> segments(cast_pieces.size() * kSegmentsPerPiece);
-        tasks_.parallel_for(static_cast<uint32_t>(cast_pieces.size()), 256, [&](uint32_t begin, uint32_t end) {
-            std::vector<Segment> piece_segments;
-            for (uint32_t c = begin; c < end; ++c) {
-                const uint32_t k = cast_pieces[c], i = path_of[k];
-                piece_segments.clear();
-                append_piece_segments(pieces[i][k - first_piece[i]], body_.radius, piece_segments);
-                std::copy(piece_segments.begin(), piece_segments.end(), segments.begin() + size_t(c) * kSegmentsPerPiece);
+            if (cleared[k] == 0) tested.push_back(k);
+        std::vector<BodyStretch> stretches(tested.size());
+        tasks_.parallel_for(static_cast<uint32_t>(tested.size()), 256, [&](uint32_t begin, uint32_t end) {
+            for (uint32_t n = begin; n < end; ++n) {
+                const uint32_t k = tested[n], i = path_of[k];
+                stretches[n] = stretch_of(pieces[i][k - first_piece[i]], body_, widest);
             }
         });
-        const std::vector<uint8_t> hit = blocked(segments);
-        std::vector<std::array<bool, kSweepOffsetCount>> offset_blocked(paths.size());
-        for (size_t c = 0; c < cast_pieces.size(); ++c)
-            for (unsigned j = 0; j < kSegmentsPerPiece; ++j)
-                if (hit[c * kSegmentsPerPiece + j]) offset_blocked[path_of[cast_pieces[c]]][(j / 2) % kSweepOffsetCount] = true;
+        std::array<float, kSweepRadiusCount> radii;
+        for (unsigned r = 0; r < kSweepRadiusCount; ++r) radii[r] = kSweepRadii[r] * body_.radius;
+        std::vector<uint8_t> tested_cleared(tested.size(), 0);
+        level_.bodies_clear(stretches.data(), static_cast<uint32_t>(stretches.size()), radii.data(), kSweepRadiusCount,
+                            tested_cleared.data());
+        report_.body_tests += tested.size();
+        for (size_t n = 0; n < tested.size(); ++n) cleared[tested[n]] = tested_cleared[n];
         for (size_t i = 0; i < paths.size(); ++i) {
-            const auto& b = offset_blocked[i];
-            // Offsets pair up by width: {0}, {-1, 1}, {-1.5, 1.5}, {-2, 2} radii.
-            if (b[0] || b[1] || b[2]) continue;
-            out[i].clear = true;
-            out[i].width = 2.0f * body_.radius;
-            if (b[3] || b[4]) continue;
-            out[i].width = 3.0f * body_.radius;
-            if (b[5] || b[6]) continue;
-            out[i].width = 4.0f * body_.radius;
+            uint8_t fewest = kSweepRadiusCount;
+            for (size_t k = first_piece[i]; k < first_piece[i + 1]; ++k) fewest = std::min(fewest, cleared[k]);
+            out[i].clear = fewest > 0;
+            out[i].width = fewest > 0 ? 2.0f * radii[fewest - 1] : 0.0f;
         }
         return out;
     }
@@ -459,10 +504,10 @@ private:
             for (uint32_t i : valid) grid[cell_of(samples_[i].point)].push_back(i);
 
         std::vector<uint64_t> redo;
-        std::vector<std::vector<Vec3>> arcs;
+        std::vector<JumpArc> arcs;
         constexpr size_t kBlock = 2048;
-        std::vector<std::vector<uint32_t>> candidates(kBlock);
-        std::vector<std::array<uint32_t, 6>> verdicts(kBlock);
+        std::vector<std::vector<std::pair<uint32_t, float>>> candidates(kBlock);  // (partner, gap)
+        std::vector<std::array<uint32_t, 7>> verdicts(kBlock);
         for (size_t block = 0; block < valid.size(); block += kBlock) {
             step(0.15f + 0.2f * float(block) / float(valid.size()), "jumps");
             const auto size = static_cast<uint32_t>(std::min(kBlock, valid.size() - block));
@@ -475,21 +520,27 @@ private:
                     candidates[n].clear();
                     verdicts[n] = {};
                     for (uint32_t b : partners) {
-                        const PairVerdict verdict = judge_pair(samples_[a], samples_[b]);
+                        float gap = 0.0f;
+                        const PairVerdict verdict = judge_pair(next, a, b, gap);
                         ++verdicts[n][static_cast<size_t>(verdict)];
-                        if (verdict == PairVerdict::Candidate) candidates[n].push_back(b);
+                        if (verdict == PairVerdict::Candidate) candidates[n].emplace_back(b, gap);
                     }
                 }
             });
             for (uint32_t n = 0; n < size; ++n) {
                 for (size_t v = 0; v < verdicts[n].size(); ++v) count(static_cast<PairVerdict>(v), verdicts[n][v]);
-                for (uint32_t b : candidates[n]) add_jump_candidate(valid[block + n], b, next, redo, arcs);
+                for (const auto& [b, gap] : candidates[n]) add_jump_candidate(valid[block + n], b, gap, next, redo, arcs);
             }
         }
         report_.jump_candidates = static_cast<uint32_t>(next.jumps.size());
         step(0.35f, "jump clearance");
-        std::vector<PathPoints> paths;
-        for (const auto& arc : arcs) paths.push_back(PathPoints{arc.data(), arc.size()});
+        std::vector<std::vector<Vec3>> arc_points(arcs.size());
+        std::vector<PathPoints> paths(arcs.size());
+        const double piece = 1.0 / s_.arc_segments;
+        for (size_t k = 0; k < arcs.size(); ++k) {
+            arc_points[k] = arcs[k].points(s_.arc_segments);
+            paths[k] = PathPoints{arc_points[k].data(), arc_points[k].size(), arcs[k].sagitta(0.0, piece)};
+        }
         const std::vector<LinkBake::Sweep> swept = sweep(paths);
         for (size_t k = 0; k < redo.size(); ++k) next.jumps[redo[k]].sweep = swept[k];
     }
@@ -508,7 +559,7 @@ private:
             const LinkBake::TakeoffState& t = next.takeoffs[i];
             if (!t.valid) continue;
             const bool takeoff_same = old_.takeoffs.size() == samples_.size() && old_.takeoffs[i].valid &&
-                                      old_.takeoffs[i].rim == t.rim;
+                                      old_.takeoffs[i].rim == t.rim && old_.takeoffs[i].ground_y == t.ground_y;
             for (uint32_t angle = 0; angle < angles; ++angle) {
                 const uint64_t key = pair_key(i, angle);
                 while (old != old_.drops.end() && old->key < key) ++old;
@@ -521,29 +572,48 @@ private:
             }
         }
         std::vector<Ray> probes(probed.size());
+        std::vector<Vec3> headings(probed.size());
         tasks_.parallel_for(static_cast<uint32_t>(probed.size()), 256, [&](uint32_t begin, uint32_t end) {
             for (uint32_t k = begin; k < end; ++k) {
                 LinkBake::DropProbe& d = next.drops[probed[k]];
                 const auto i = static_cast<uint32_t>(d.key >> 32), angle = static_cast<uint32_t>(d.key);
                 const EdgeSample& e = samples_[i];
                 const Eigen::AngleAxisf turn(s_.drop_angles[angle] * kDegrees, Vec3::UnitY());
-                const Vec3 heading = turn * e.outward;
+                headings[k] = turn * e.outward;
                 // Past the rim (found straight out; a turned probe starts as far out, plus a margin).
-                const Vec3 falloff = e.point + heading * (next.takeoffs[i].rim + 0.2f);
-                const Vec3 direction = (heading * std::cos(steep) + Vec3(0, -std::sin(steep), 0)).normalized();
+                const Vec3 falloff = e.point + headings[k] * (next.takeoffs[i].rim + 0.2f);
+                const Vec3 direction = (headings[k] * std::cos(steep) + Vec3(0, -std::sin(steep), 0)).normalized();
                 probes[k] = Ray{falloff + Vec3(0, kProbeLift, 0), direction, reach};
-                d.fall[0] = e.point;
-                d.fall[1] = Vec3(falloff.x(), e.point.y(), falloff.z());
-                d.fall_points = 2;
             }
         });
         const std::vector<RayHit> hits = cast(probes);
         step(0.7f, "drops");
 
+        // Where each probe came down on the navmesh, then the floor under that point.
         const Vec3 landing_box(std::max(body_.radius * 1.5f, 0.3f), 1.0f, std::max(body_.radius * 1.5f, 0.3f));
+        std::vector<NavPoint> landings(probed.size());
         tasks_.parallel_for(static_cast<uint32_t>(probed.size()), 256, [&](uint32_t begin, uint32_t end) {
-            for (uint32_t k = begin; k < end; ++k) land(next.drops[probed[k]], probes[k], hits[k], reach, landing_box);
+            for (uint32_t k = begin; k < end; ++k) {
+                LinkBake::DropProbe& d = next.drops[probed[k]];
+                d.bounds = bounds_of({probes[k].origin, probes[k].origin + probes[k].direction * (hits[k].hit ? hits[k].distance : reach)});
+                d.outcome = 1;
+                if (!hits[k].hit) continue;
+                landings[k] = locate(hits[k].point, landing_box);
+                if (landings[k].polygon == samples_[d.key >> 32].polygon) landings[k].found = false;
+            }
         });
+        std::vector<uint32_t> landed;  // positions in `probed`
+        std::vector<Ray> floor_rays;
+        for (uint32_t k = 0; k < probed.size(); ++k) {
+            if (!landings[k].found) continue;
+            landed.push_back(k);
+            floor_rays.push_back(floor_ray(landings[k].point));
+        }
+        const std::vector<RayHit> floors = cast(floor_rays);
+        for (size_t n = 0; n < landed.size(); ++n) {
+            const uint32_t k = landed[n];
+            settle(next, next.drops[probed[k]], headings[k], landings[k], floor_rays[n], floors[n]);
+        }
         // Landed probes: the fresh ones, and the reused ones whose sweep the box touches.
         std::vector<uint8_t> fresh(next.drops.size(), 0);
         for (uint32_t k : probed) fresh[k] = 1;
@@ -554,39 +624,51 @@ private:
         }
         step(0.8f, "drop clearance");
         std::vector<PathPoints> paths;
-        for (uint32_t k : to_sweep) paths.push_back(PathPoints{next.drops[k].fall.data(), next.drops[k].fall_points});
+        for (uint32_t k : to_sweep) paths.push_back(PathPoints{next.drops[k].fall.data(), next.drops[k].fall.size(), 0.0f});
         const std::vector<LinkBake::Sweep> swept = sweep(paths);
         for (size_t n = 0; n < to_sweep.size(); ++n) next.drops[to_sweep[n]].sweep = swept[n];
     }
 
-    // Where a drop probe came down: no landing, a landing too shallow or too deep, or a drop link
-    // with its fall (walk out over the edge, across, down).
-    void land(LinkBake::DropProbe& d, const Ray& probe, const RayHit& hit, float reach, const Vec3& landing_box) const {
+    // A ray down to the floor under a navmesh point: navmeshes float above the floor (Recast's by up
+    // to a few decimetres, more over stairs) or sink into it.
+    static Ray floor_ray(const Vec3& on_navmesh) {
+        return Ray{on_navmesh + Vec3(0, kProbeLift, 0), Vec3(0, -1, 0), kProbeLift + kFloorReach};
+    }
+
+    // What a probe that came down on the navmesh found, floor to floor: a landing too shallow (a
+    // step, walked) or too deep, or a drop link with its fall (out over the rim, across, down).
+    void settle(const LinkBake::Cache& c, LinkBake::DropProbe& d, const Vec3& heading, const NavPoint& landing,
+                const Ray& floor_ray, const RayHit& floor) const {
         const auto i = static_cast<uint32_t>(d.key >> 32);
-        d.bounds = bounds_of({probe.origin, probe.origin + probe.direction * (hit.hit ? hit.distance : reach)});
-        d.outcome = 1;
-        if (!hit.hit) return;
-        const NavPoint landing = locate(hit.point, landing_box);
-        if (!landing.found || landing.polygon == samples_[i].polygon) return;
-        const float drop = samples_[i].point.y() - landing.point.y();
-        if (drop <= mesh_.agent().max_climb || drop > s_.max_drop_distance) {
+        d.bounds.grow(floor_ray.origin);
+        d.bounds.grow(floor_ray.origin + floor_ray.direction * floor_ray.max_distance);
+        const Vec3 start = floor_point(c, i);
+        const Vec3 end(landing.point.x(), floor.hit ? floor.point.y() : landing.point.y(), landing.point.z());
+        const float drop = start.y() - end.y();
+        if (drop <= mesh_.agent().max_climb) {
             d.outcome = 2;
+            return;
+        }
+        if (drop > s_.max_drop_distance) {
+            d.outcome = 3;
             return;
         }
         d.outcome = 0;
         Link& l = d.link;
         l.kind = LinkKind::Drop;
-        l.start = samples_[i].point;
-        l.end = landing.point;
+        l.start = start;
+        l.end = end;
         l.apex = l.start;
         l.bidirectional = drop <= s_.max_jump_up;  // low enough to jump back up
         l.generated = true;
         l.start_polygon = samples_[i].polygon;
         l.end_polygon = landing.polygon;
         set_requirements_from_ends(l);
-        d.fall[2] = Vec3(landing.point.x(), l.start.y(), landing.point.z());
-        d.fall[3] = landing.point;
-        d.fall_points = 4;
+        Vec3 flat = end - start;
+        flat.y() = 0.0f;
+        const Vec3 towards = flat.norm() > 0.0f ? Vec3(flat.normalized()) : heading;
+        l.requirements.gap = air_gap(l.requirements.length, towards, samples_[i].outward, c.takeoffs[i].rim, Vec3::Zero(), 0.0f);
+        d.fall = fall_path(start, heading, c.takeoffs[i].rim + 0.2f, end);
     }
 
     // No rays from here on: over everything cached, so an update gives what a full bake would.
@@ -596,15 +678,8 @@ private:
             if (t.rejected == 2) ++report_.rejected_not_ledge;
         }
         std::vector<Link> links = straightest_jumps(c);
-        for (const LinkBake::DropProbe& d : c.drops) {  // in key order
-            if (d.outcome == 1) ++report_.rejected_no_landing;
-            else if (d.outcome == 2) ++report_.rejected_distance;
-            else if (!d.sweep.clear) ++report_.rejected_clearance;
-            else {
-                links.push_back(d.link);
-                links.back().requirements.clearance_width = d.sweep.width;
-            }
-        }
+        const std::vector<Link> drops = one_drop_per_way_down(c);
+        links.insert(links.end(), drops.begin(), drops.end());
         report_.drop_candidates = 0;
         for (const LinkBake::DropProbe& d : c.drops) report_.drop_candidates += d.outcome == 0;
         MergedLinks merged = merge_links(std::move(links), s_.merge_distance, method_ == BakeMethod::BruteForce);
@@ -612,6 +687,47 @@ private:
         links = std::move(merged.kept);
         for (const Link& l : links) (l.kind == LinkKind::Jump ? report_.jump_links : report_.drop_links)++;
         return links;
+    }
+
+    // The clear drops, in key order, one per take-off point and landing surface: of a take-off
+    // point's drops, the most head-on (the least turned from its edge's outward direction; the first
+    // in drop_angles on a tie) is kept, and another only if its landing is not a short walk from one
+    // kept (walk_factor x their distance + walk_distance): that would be the same way down.
+    std::vector<Link> one_drop_per_way_down(const LinkBake::Cache& c) {
+        std::vector<Link> out;
+        for (size_t first = 0; first < c.drops.size();) {
+            const uint64_t sample = c.drops[first].key >> 32;
+            size_t last = first;
+            while (last < c.drops.size() && (c.drops[last].key >> 32) == sample) ++last;
+            std::vector<const LinkBake::DropProbe*> clear;
+            for (size_t k = first; k < last; ++k) {
+                const LinkBake::DropProbe& d = c.drops[k];
+                if (d.outcome == 1) ++report_.rejected_no_landing;
+                else if (d.outcome == 2) ++report_.rejected_too_shallow;
+                else if (d.outcome == 3) ++report_.rejected_too_deep;
+                else if (!d.sweep.clear) ++report_.rejected_clearance;
+                else clear.push_back(&d);
+            }
+            auto turn = [&](const LinkBake::DropProbe* d) { return std::fabs(s_.drop_angles[static_cast<uint32_t>(d->key)]); };
+            std::stable_sort(clear.begin(), clear.end(), [&](const auto* x, const auto* y) { return turn(x) < turn(y); });
+            std::vector<const LinkBake::DropProbe*> kept;
+            for (const LinkBake::DropProbe* d : clear) {
+                const bool same_way = std::any_of(kept.begin(), kept.end(), [&](const LinkBake::DropProbe* k) {
+                    const Link &a = k->link, &b = d->link;
+                    const float apart = (b.end - a.end).norm();
+                    return std::isfinite(walk_.walk_within(a.end, a.end_polygon, b.end, b.end_polygon, s_.walk_factor * apart + s_.walk_distance));
+                });
+                if (same_way) ++report_.rejected_duplicate;
+                else kept.push_back(d);
+            }
+            std::sort(kept.begin(), kept.end(), [](const auto* x, const auto* y) { return x->key < y->key; });
+            for (const LinkBake::DropProbe* d : kept) {
+                out.push_back(d->link);
+                out.back().requirements.clearance_width = d->sweep.width;
+            }
+            first = last;
+        }
+        return out;
     }
 
     // A take-off point faces a whole edge across a gap: of its clear jumps to that edge, only the
@@ -668,6 +784,7 @@ private:
     BakeReport& report_;
     BakeProgress progress_;
     Body body_;
+    WalkGraph walk_;
 };
 
 }  // namespace

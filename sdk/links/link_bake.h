@@ -32,8 +32,8 @@ public:
     struct TakeoffState {
         bool valid = false;
         uint8_t rejected = 0;  // 1: wall between the edge and the rim, 2: no rim (ground a step below)
-        float ground_y = 0.0f;
-        float rim = 0.0f;
+        float ground_y = 0.0f; // the floor under the sample
+        float rim = 0.0f;      // how far out along the sample's outward direction the ground falls away
         Aabb bounds;           // everything its probes touched
     };
     struct Sweep {
@@ -48,11 +48,10 @@ public:
     };
     struct DropProbe {
         uint64_t key = 0;       // (sample, angle)
-        uint8_t outcome = 0;    // 0: landed, 1: no landing, 2: too shallow or too deep
-        uint8_t fall_points = 0;
-        Aabb bounds;            // the probe ray
+        uint8_t outcome = 0;    // 0: landed, 1: no landing, 2: too shallow (walked), 3: too deep
+        Aabb bounds;            // the probe ray and the ray to the floor under the landing
         Link link;
-        std::array<Vec3, 4> fall;  // out over the edge, across, down (when landed)
+        std::array<Vec3, 4> fall;  // out over the rim, across, down (when landed)
         Sweep sweep;
     };
     struct Cache {

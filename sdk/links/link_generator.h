@@ -31,14 +31,18 @@ struct BakeReport {
     // Rejections, by reason.
     uint32_t rejected_wall = 0;          // take-off point inside a wall
     uint32_t rejected_not_ledge = 0;     // walkable ground a step below the take-off point
-    uint32_t rejected_distance = 0;      // too far, too close, or a drop too deep or too shallow
+    uint32_t rejected_distance = 0;      // a jump's gap too wide or too narrow
     uint32_t rejected_rise = 0;          // a jump higher than max_jump_up
     uint32_t rejected_angle = 0;         // not facing the other edge, or too steep
     uint32_t rejected_no_landing = 0;    // no navmesh where the agent would land
-    uint32_t rejected_clearance = 0;     // the agent's body would hit geometry on the way
+    uint32_t rejected_clearance = 0;     // the agent's body would touch geometry on the way
     uint32_t rejected_duplicate = 0;     // the same traversal as a link already kept
+    uint32_t rejected_walkable = 0;      // a jump whose ends are about as near on foot
+    uint32_t rejected_too_shallow = 0;   // a drop no deeper than max_climb, floor to floor (walked)
+    uint32_t rejected_too_deep = 0;      // a drop deeper than max_drop_distance, floor to floor
     uint64_t rays_cast = 0;              // rays and occlusion segments sent to Embree
-    uint64_t box_queries = 0;            // sweep stretches asked of Level::boxes_empty (Indexed)
+    uint64_t box_queries = 0;            // boxes around straight runs of sweep pieces asked of Level::boxes_empty (Indexed)
+    uint64_t body_tests = 0;             // sweep pieces tested exactly against the triangles near them
     double milliseconds_edges = 0, milliseconds_takeoff = 0, milliseconds_jumps = 0, milliseconds_drops = 0,
            milliseconds_merge = 0, milliseconds_total = 0;
 };
@@ -46,11 +50,12 @@ struct BakeReport {
 // How a bake finds its work; both give the same links, bit for bit.
 //   Indexed:    spatial indexes everywhere: jump candidates from a grid of take-off points, points
 //               located through the navmesh's polygon grid, near-duplicates found through a grid of
-//               link ends, and a stretch of a clearance sweep whose box no triangle touches is
-//               clear without casting its segments (Level::boxes_empty).
+//               link ends, and a straight run of sweep pieces whose box no triangle touches is clear
+//               without testing its pieces (Level::boxes_empty).
 //   BruteForce: none of them: every pair of take-off points, every polygon, every kept link, every
-//               segment of every sweep (the level's rays still go through Embree). The reference the
-//               tests and navlink-bench-links compare the generator with.
+//               piece of every sweep tested exactly (the level's rays and the triangles near a piece
+//               still come from Embree). The reference the tests and navlink-bench-links compare the
+//               generator with.
 enum class BakeMethod { Indexed, BruteForce };
 
 // Called between and within stages with the fraction done (0..1) and the stage's name; returning

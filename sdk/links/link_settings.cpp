@@ -21,9 +21,9 @@ void validate(const LinkSettings& s, const char* p) {
              " must satisfy 1 <= min <= max <= 1000");
     check(s.sample_spacing >= 0.05f, s.sample_spacing, p, "sample_spacing", "must be >= 0.05 m");
     check(s.falloff_distance > 0.0f && s.falloff_distance <= 10.0f, s.falloff_distance, p, "falloff_distance", "must be in (0, 10] m");
-    check(s.max_link_distance > 0.0f && s.max_link_distance <= 100.0f, s.max_link_distance, p, "max_link_distance", "must be in (0, 100] m");
-    check(s.min_link_distance >= 0.0f && s.min_link_distance < s.max_link_distance, s.min_link_distance, p,
-          "min_link_distance", "must be >= 0 and below max_link_distance");
+    check(s.max_jump_gap > 0.0f && s.max_jump_gap <= 100.0f, s.max_jump_gap, p, "max_jump_gap", "must be in (0, 100] m");
+    check(s.min_link_distance >= 0.0f && s.min_link_distance < s.max_jump_gap, s.min_link_distance, p,
+          "min_link_distance", "must be >= 0 and below max_jump_gap");
     check(s.short_link_distance >= 0.0f, s.short_link_distance, p, "short_link_distance", "must be >= 0");
     check(s.max_jump_up >= 0.0f, s.max_jump_up, p, "max_jump_up", "must be >= 0");
     check(s.jump_arc_height > 0.0f && s.jump_arc_height <= 50.0f, s.jump_arc_height, p, "jump_arc_height", "must be in (0, 50] m");
@@ -32,6 +32,8 @@ void validate(const LinkSettings& s, const char* p) {
                                       std::pair{s.strict_incline_angle, "strict_incline_angle"},
                                       std::pair{s.permissive_incline_angle, "permissive_incline_angle"}})
         check(value >= 0.0f && value <= 90.0f, value, p, name, "must be in [0, 90] degrees");
+    check(s.walk_factor >= 0.0f && s.walk_factor <= 100.0f, s.walk_factor, p, "walk_factor", "must be in [0, 100]");
+    check(s.walk_distance >= 0.0f && s.walk_distance <= 1000.0f, s.walk_distance, p, "walk_distance", "must be in [0, 1000] m");
     check(s.max_drop_distance > 0.0f && s.max_drop_distance <= 1000.0f, s.max_drop_distance, p, "max_drop_distance",
           "must be in (0, 1000] m");
     if (s.drop_angles.size() > 16) fail(ErrorCode::InvalidArgument, p, "drop_angles has ", s.drop_angles.size(), " entries (at most 16)");

@@ -1926,7 +1926,7 @@ static const float_field k_link_def_floats[] = {
     FLOAT_FIELD(nl_link_def, start, 3),           FLOAT_FIELD(nl_link_def, end, 3),
     FLOAT_FIELD(nl_link_def, cost_modifier, 1),   FLOAT_FIELD(nl_link_def, requirements.gap, 1),
     FLOAT_FIELD(nl_link_def, requirements.rise, 1), FLOAT_FIELD(nl_link_def, requirements.drop, 1),
-    FLOAT_FIELD(nl_link_def, requirements.clearance_width, 1),
+    FLOAT_FIELD(nl_link_def, requirements.clearance_width, 1), FLOAT_FIELD(nl_link_def, requirements.length, 1),
 };
 
 static const def_case k_link_defs[] = {
@@ -1937,6 +1937,7 @@ static const def_case k_link_defs[] = {
     {"def->kind 255", INVALID, "kind", {SET_U32(nl_link_def, kind, 255u)}},
     {"def->cost_modifier negative", INVALID, "cost_modifier", {SET_F32(nl_link_def, cost_modifier, -1.0f)}},
     {"def->requirements.gap negative", INVALID, "gap", {SET_F32(nl_link_def, requirements.gap, -1.0f)}},
+    {"def->requirements.length negative", INVALID, "length", {SET_F32(nl_link_def, requirements.length, -1.0f)}},
     {"def->requirements.clearance_width negative", INVALID, "clearance_width",
      {SET_F32(nl_link_def, requirements.clearance_width, -1.0f)}},
 };
@@ -2035,14 +2036,15 @@ static void group_navmesh_remove_generated_links(void) {
 /* Link settings: every float of the struct. */
 static const float_field k_link_settings_floats[] = {
     FLOAT_FIELD(nl_link_settings, min_edge_length, 1),          FLOAT_FIELD(nl_link_settings, sample_spacing, 1),
-    FLOAT_FIELD(nl_link_settings, falloff_distance, 1),         FLOAT_FIELD(nl_link_settings, max_link_distance, 1),
+    FLOAT_FIELD(nl_link_settings, falloff_distance, 1),         FLOAT_FIELD(nl_link_settings, max_jump_gap, 1),
     FLOAT_FIELD(nl_link_settings, min_link_distance, 1),        FLOAT_FIELD(nl_link_settings, short_link_distance, 1),
     FLOAT_FIELD(nl_link_settings, max_jump_up, 1),              FLOAT_FIELD(nl_link_settings, jump_arc_height, 1),
     FLOAT_FIELD(nl_link_settings, strict_forward_angle, 1),     FLOAT_FIELD(nl_link_settings, permissive_forward_angle, 1),
     FLOAT_FIELD(nl_link_settings, strict_incline_angle, 1),     FLOAT_FIELD(nl_link_settings, permissive_incline_angle, 1),
     FLOAT_FIELD(nl_link_settings, max_drop_distance, 1),        FLOAT_FIELD(nl_link_settings, drop_angles, 3),
     FLOAT_FIELD(nl_link_settings, drop_steepness, 1),           FLOAT_FIELD(nl_link_settings, merge_distance, 1),
-    FLOAT_FIELD(nl_link_settings, clearance_margin, 1),
+    FLOAT_FIELD(nl_link_settings, clearance_margin, 1),         FLOAT_FIELD(nl_link_settings, walk_factor, 1),
+    FLOAT_FIELD(nl_link_settings, walk_distance, 1),
 };
 
 /* nl_link_settings_from_json's settings made bad: refused with "{}", the struct unchanged (the

@@ -63,9 +63,9 @@ static nl_navmesh_id build_level(nl_world* world, int level) {
             if (ok && level == LEVEL_WALLED_GAP)
                 ok = NL_SUCCEEDED(add_box(world, -0.1f, -20.0f, -6.0f, 0.1f, 6.0f, 6.0f));
             break;
-        case LEVEL_WIDE_GAP: /* 3 m apart: 4.5 m or more between the navmesh's edges */
+        case LEVEL_WIDE_GAP: /* 4.5 m apart, rim to rim: wider than max_jump_gap */
             ok = NL_SUCCEEDED(add_box(world, -11.0f, -1.0f, -5.0f, -1.0f, 0.0f, 5.0f)) &&
-                 NL_SUCCEEDED(add_box(world, 2.0f, -1.0f, -5.0f, 12.0f, 0.0f, 5.0f));
+                 NL_SUCCEEDED(add_box(world, 3.5f, -1.0f, -5.0f, 13.5f, 0.0f, 5.0f));
             break;
         case LEVEL_LEDGE:
             ok = NL_SUCCEEDED(add_box(world, -10.0f, -1.0f, -10.0f, 10.0f, 0.0f, 10.0f)) &&
@@ -189,7 +189,7 @@ static void test_link_defaults(void) {
     CHECK(s.max_group_size == 8u);
     CHECK(s.sample_spacing == 1.0f);
     CHECK(s.falloff_distance == 1.5f);
-    CHECK(s.max_link_distance == 4.0f);
+    CHECK(s.max_jump_gap == 4.0f);
     CHECK(s.min_link_distance == 0.3f);
     CHECK(s.short_link_distance == 2.0f);
     CHECK(s.max_jump_up == 1.5f);
@@ -315,10 +315,13 @@ static void test_link_generation_gap(void) {
         /* One end on each platform, 0.55 to 0.95 m inside its rim (x = -1 and x = 1). */
         wrong_ends += !(west[0] >= -1.95f && west[0] <= -1.55f && east[0] >= 1.55f && east[0] <= 1.95f &&
                         fabsf(west[2]) < 5.0f && fabsf(east[2]) < 5.0f);
-        wrong_gap += !(fabsf(l->requirements.gap - horizontal_distance(l->start, l->end)) <= 1e-3f &&
-                       l->requirements.gap >= 3.1f && l->requirements.gap <= 3.9f);
-        wrong_height += !(l->requirements.rise <= 0.05f && l->requirements.drop <= 0.05f &&
-                          fabsf(l->start[1]) <= 0.45f && fabsf(l->end[1]) <= 0.45f);
+        /* The gap is rim to rim (the platforms are 2 m apart); the length is the ends'. */
+        wrong_gap += !(fabsf(l->requirements.length - horizontal_distance(l->start, l->end)) <= 1e-3f &&
+                       l->requirements.length >= 3.1f && l->requirements.length <= 3.9f &&
+                       fabsf(l->requirements.gap - 2.0f) <= 0.05f);
+        /* Ends on the floor (the platforms' tops at y = 0), not at the navmesh's height. */
+        wrong_height += !(l->requirements.rise <= 0.01f && l->requirements.drop <= 0.01f &&
+                          fabsf(l->start[1]) <= 0.01f && fabsf(l->end[1]) <= 0.01f);
         narrow += !(l->requirements.clearance_width >= 1.2f);
         /* The arc's top: jump_arc_height (1 m) above the higher end, between the ends. */
         bad_apex += !(fabsf(l->apex[1] - (fmaxf(l->start[1], l->end[1]) + 1.0f)) <= 0.01f && l->apex[0] > west[0] &&
@@ -332,7 +335,8 @@ static void test_link_generation_gap(void) {
     CHECK_MSG(wrong_flags == 0, "%d links: not bidirectional/generated/enabled, or cost, user data, navmesh wrong",
               wrong_flags);
     CHECK_MSG(wrong_ends == 0, "%d links do not go from one platform's rim to the other's", wrong_ends);
-    CHECK_MSG(wrong_gap == 0, "%d links: requirements.gap is not the ends' horizontal distance, ~3.2-3.8 m", wrong_gap);
+    CHECK_MSG(wrong_gap == 0, "%d links: requirements.gap is not the rims' 2 m, or length not the ends' ~3.2-3.8 m",
+              wrong_gap);
     CHECK_MSG(wrong_height == 0, "%d links: rise or drop not ~0, or an end off the platforms' tops", wrong_height);
     CHECK_MSG(narrow == 0, "%d links: clearance_width below the agent's diameter (1.2 m)", narrow);
     CHECK_MSG(bad_apex == 0, "%d links: apex is not 1 m above the higher end, between the ends", bad_apex);
@@ -377,7 +381,7 @@ static void test_link_generation_gap(void) {
         nl_world_destroy(walled);
     }
 
-    /* A gap wider than max_link_distance: no jump, and the report has to say why. */
+    /* A gap wider than max_jump_gap: no jump, and the report has to say why. */
     {
         nl_world* wide = make_world(1);
         const nl_navmesh_id id = build_level(wide, LEVEL_WIDE_GAP);
@@ -385,17 +389,17 @@ static void test_link_generation_gap(void) {
         CHECK_OK(nl_navmesh_generate_links(wide, id, NULL, NULL, NULL, &r));
         CHECK(r.jump_links == 0u && link_count(wide, id) == 0u);
         CHECK_THAT(r.rejected_distance > 0u,
-                   "nl_bake_report.rejected_distance (\"Too far, too close, ...\"): a gap wider than "
-                   "max_link_distance between two facing edges is counted, so the report answers why there is no "
+                   "nl_bake_report.rejected_distance (\"A jump's gap too wide or too narrow\"): a gap wider than "
+                   "max_jump_gap between two facing edges is counted, so the report answers why there is no "
                    "jump there");
         nl_world_destroy(wide);
     }
 
-    /* Settings are honoured: a max_link_distance below the gap, then a denser sampling. */
+    /* Settings are honoured: a max_jump_gap below the gap, then a denser sampling. */
     {
         nl_link_settings s = nl_default_link_settings();
         nl_bake_report r = empty_report();
-        s.max_link_distance = 3.0f;
+        s.max_jump_gap = 1.8f;
         CHECK_OK(nl_navmesh_generate_links(world, navmesh, &s, NULL, NULL, &r));
         CHECK(r.jump_links == 0u && link_count(world, navmesh) == 0u);
         s = nl_default_link_settings();
@@ -433,17 +437,20 @@ static void test_link_generation_ledge(void) {
         const nl_link* l = &links[i];
         wrong_kind += l->kind != NL_LINK_DROP;
         wrong_way += !(l->bidirectional == 0 && l->generated == 1 && l->enabled == 1);
-        wrong_drop += !(fabsf(l->requirements.drop - 3.0f) <= 0.35f && l->requirements.rise == 0.0f &&
+        /* Floor to floor: the block's top at y = 3 to the floor at y = 0. The gap is from the rim (x = 0)
+           to the landing, so shorter than the ends' horizontal distance (the length). */
+        wrong_drop += !(fabsf(l->requirements.drop - 3.0f) <= 0.01f && l->requirements.rise == 0.0f &&
                         fabsf(l->requirements.drop - (l->start[1] - l->end[1])) <= 1e-3f &&
-                        fabsf(l->requirements.gap - horizontal_distance(l->start, l->end)) <= 1e-3f);
+                        fabsf(l->requirements.length - horizontal_distance(l->start, l->end)) <= 1e-3f &&
+                        l->requirements.gap < l->requirements.length - 0.5f && l->requirements.gap > 0.0f);
         /* From the block's top, inside its edge at x = 0, to the floor beyond it. */
-        wrong_ends += !(l->start[0] >= -0.95f && l->start[0] <= -0.55f && l->start[1] >= 2.9f && l->start[1] <= 3.45f &&
-                        l->end[0] > 0.6f && l->end[1] >= -0.1f && l->end[1] <= 0.45f);
+        wrong_ends += !(l->start[0] >= -0.95f && l->start[0] <= -0.55f && fabsf(l->start[1] - 3.0f) <= 0.01f &&
+                        l->end[0] > 0.6f && fabsf(l->end[1]) <= 0.01f);
         bad_apex += !(l->apex[0] == l->start[0] && l->apex[1] == l->start[1] && l->apex[2] == l->start[2]);
     }
     CHECK_MSG(wrong_kind == 0, "%d of %u links are not NL_LINK_DROP", wrong_kind, (unsigned)n);
     CHECK_MSG(wrong_way == 0, "%d drops are bidirectional (3 m > max_jump_up) or not generated/enabled", wrong_way);
-    CHECK_MSG(wrong_drop == 0, "%d drops: requirements.drop not ~3 m, or rise not 0, or gap/drop not the ends'",
+    CHECK_MSG(wrong_drop == 0, "%d drops: requirements.drop not 3 m floor to floor, rise not 0, length not the ends' or gap not from the rim",
               wrong_drop);
     CHECK_MSG(wrong_ends == 0, "%d drops do not go from the block's edge down to the floor", wrong_ends);
     CHECK_MSG(bad_apex == 0, "%d drops: apex is not the higher end (the start)", bad_apex);
@@ -461,16 +468,17 @@ static void test_link_generation_ledge(void) {
         CHECK_MSG(wrong_way == 0, "max_jump_up 3.5: %d drops of ~3 m are still one-way", wrong_way);
         free(links);
     }
-    /* A ledge deeper than max_drop_distance: no drop, counted under rejected_distance. */
+    /* A ledge deeper than max_drop_distance: no drop, counted under rejected_too_deep. */
     {
         nl_link_settings s = nl_default_link_settings();
-        s.max_drop_distance = 2.5f;
+        s.max_drop_distance = 2.9f;
         report = empty_report();
         CHECK_OK(nl_navmesh_generate_links(world, navmesh, &s, NULL, NULL, &report));
         CHECK(report.drop_links == 0u && link_count(world, navmesh) == 0u);
-        CHECK(report.rejected_distance > 0u);
+        CHECK(report.rejected_too_deep > 0u);
     }
-    /* One drop direction instead of three: fewer drops. */
+    /* One drop direction instead of three: as many drops, one way down per take-off point either way;
+       with three, the turned probes that land on the same floor are counted as duplicates. */
     {
         nl_link_settings s = nl_default_link_settings();
         nl_bake_report three = empty_report();
@@ -478,9 +486,10 @@ static void test_link_generation_ledge(void) {
         s.drop_angle_count = 1;
         report = empty_report();
         CHECK_OK(nl_navmesh_generate_links(world, navmesh, &s, NULL, NULL, &report));
-        CHECK_MSG(report.drop_links > 0u && report.drop_links < three.drop_links,
+        CHECK_MSG(report.drop_links > 0u && report.drop_links == three.drop_links,
                   "drop_angle_count 1: %u drops, %u with three angles", (unsigned)report.drop_links,
                   (unsigned)three.drop_links);
+        CHECK(three.rejected_duplicate > report.rejected_duplicate);
     }
     nl_world_destroy(world);
 }
@@ -748,7 +757,7 @@ static void test_link_refusals(void) {
         } bad[] = {
             {"settings->size", 0},
             {"settings->drop_angle_count", 1},
-            {"settings->max_link_distance", 2},
+            {"settings->max_jump_gap", 2},
             {"settings->jump_arc_height", 3},
             {"min_group_size", 4},
             {"settings->arc_segments", 5},
@@ -768,7 +777,7 @@ static void test_link_refusals(void) {
             switch (bad[k].which) {
                 case 0: s.size = 4u; break;
                 case 1: s.drop_angle_count = 17u; break;
-                case 2: s.max_link_distance = -1.0f; break;
+                case 2: s.max_jump_gap = -1.0f; break;
                 case 3: s.jump_arc_height = NAN; break;
                 case 4: s.min_group_size = 0u; break;
                 case 5: s.arc_segments = 1u; break;
@@ -776,7 +785,7 @@ static void test_link_refusals(void) {
                 case 7: s.clearance_margin = 0.5f; break;
                 case 8: s.drop_steepness = 5.0f; break;
                 case 9: s.strict_forward_angle = 95.0f; break;
-                case 10: s.min_link_distance = 4.0f; break; /* not below max_link_distance */
+                case 10: s.min_link_distance = 4.0f; break; /* not below max_jump_gap */
                 default: s.drop_angles[1] = 100.0f; break;   /* the index is named */
             }
             if (!CHECK_FAIL(nl_navmesh_generate_links(world, navmesh, &s, NULL, NULL, &r), NL_STATUS_INVALID_ARGUMENT,
@@ -1177,7 +1186,7 @@ static void test_link_json(void) {
 static int same_settings(const nl_link_settings* a, const nl_link_settings* b) {
     return a->size == b->size && a->min_edge_length == b->min_edge_length && a->min_group_size == b->min_group_size &&
            a->max_group_size == b->max_group_size && a->sample_spacing == b->sample_spacing &&
-           a->falloff_distance == b->falloff_distance && a->max_link_distance == b->max_link_distance &&
+           a->falloff_distance == b->falloff_distance && a->max_jump_gap == b->max_jump_gap &&
            a->min_link_distance == b->min_link_distance && a->short_link_distance == b->short_link_distance &&
            a->max_jump_up == b->max_jump_up && a->jump_arc_height == b->jump_arc_height &&
            a->strict_forward_angle == b->strict_forward_angle &&
@@ -1202,13 +1211,13 @@ static void check_settings_refused(const char* json, nl_status detail, const cha
 
 static void test_link_settings_json(void) {
     static const char good[] =
-        "{\"max_link_distance\": 6, \"min_group_size\": 3, \"drop_angles\": [0, 45], \"jump_arc_height\": 1.5}";
+        "{\"max_jump_gap\": 6, \"min_group_size\": 3, \"drop_angles\": [0, 45], \"jump_arc_height\": 1.5}";
     nl_link_settings s = nl_default_link_settings(), expected;
     g_section = "links: settings JSON";
 
     s.merge_distance = 0.9f;
     expected = s;
-    expected.max_link_distance = 6.0f;
+    expected.max_jump_gap = 6.0f;
     expected.min_group_size = 3u;
     expected.drop_angle_count = 2u;
     expected.drop_angles[0] = 0.0f;
@@ -1237,11 +1246,11 @@ static void test_link_settings_json(void) {
     }
 
     check_settings_refused("{\"max_link_distanse\": 6}", NL_STATUS_INVALID_ARGUMENT, "max_link_distanse");
-    check_settings_refused("{\"max_link_distance\": ", NL_STATUS_PARSE_ERROR, "");
+    check_settings_refused("{\"max_jump_gap\": ", NL_STATUS_PARSE_ERROR, "");
     check_settings_refused("[1, 2]", NL_STATUS_INVALID_ARGUMENT, "settings");
     check_settings_refused("", NL_STATUS_PARSE_ERROR, "");
-    check_settings_refused("{\"max_link_distance\": \"far\"}", NL_STATUS_INVALID_ARGUMENT, "max_link_distance");
-    check_settings_refused("{\"max_link_distance\": -1}", NL_STATUS_INVALID_ARGUMENT, "max_link_distance");
+    check_settings_refused("{\"max_jump_gap\": \"far\"}", NL_STATUS_INVALID_ARGUMENT, "max_jump_gap");
+    check_settings_refused("{\"max_jump_gap\": -1}", NL_STATUS_INVALID_ARGUMENT, "max_jump_gap");
     check_settings_refused("{\"arc_segments\": -1}", NL_STATUS_INVALID_ARGUMENT, "arc_segments");
     check_settings_refused("{\"arc_segments\": 1}", NL_STATUS_INVALID_ARGUMENT, "arc_segments");
     check_settings_refused("{\"drop_angles\": 30}", NL_STATUS_INVALID_ARGUMENT, "drop_angles");
@@ -1249,7 +1258,7 @@ static void test_link_settings_json(void) {
     check_settings_refused("{\"drop_angles\": [1,2,3,4,5,6,7,8,9,10,11,12,13,14,15,16,17]}", NL_STATUS_INVALID_ARGUMENT,
                            "drop_angles");
     /* A good key before a bad one: still nothing applied. */
-    check_settings_refused("{\"max_link_distance\": 6, \"nope\": 1}", NL_STATUS_INVALID_ARGUMENT, "nope");
+    check_settings_refused("{\"max_jump_gap\": 6, \"nope\": 1}", NL_STATUS_INVALID_ARGUMENT, "nope");
 
     CHECK_INVALID(nl_link_settings_from_json("{}", 2, NULL), "settings");
     CHECK_INVALID(nl_link_settings_from_json(NULL, 2, &s), "json");
@@ -1257,13 +1266,13 @@ static void test_link_settings_json(void) {
         nl_link_settings small = nl_default_link_settings();
         small.size = 4u;
         CHECK_INVALID(nl_link_settings_from_json("{}", 2, &small), "settings->size");
-        CHECK(small.size == 4u && small.max_link_distance == 4.0f);
+        CHECK(small.size == 4u && small.max_jump_gap == 4.0f);
     }
-    /* Settings from JSON generate: a max_link_distance below the gap leaves no jump. */
+    /* Settings from JSON generate: a max_jump_gap below the gap leaves no jump. */
     {
         nl_world* world = make_world(1);
         const nl_navmesh_id navmesh = build_level(world, LEVEL_GAP);
-        static const char short_reach[] = "{\"max_link_distance\": 3}";
+        static const char short_reach[] = "{\"max_jump_gap\": 1.8}";
         nl_bake_report r = empty_report();
         s = nl_default_link_settings();
         CHECK_OK(nl_link_settings_from_json(short_reach, sizeof short_reach - 1u, &s));
@@ -1548,7 +1557,7 @@ static void test_link_threads(void) {
     /* Three settings with three different results on the ledge (and one manual link throughout). */
     settings[0] = nl_default_link_settings();
     settings[1] = nl_default_link_settings();
-    settings[1].drop_angle_count = 1;
+    settings[1].max_drop_distance = 2.9f;
     settings[2] = nl_default_link_settings();
     settings[2].sample_spacing = 0.5f;
     set3(manual.start, -5.0f, 3.0f, 0.0f);

@@ -123,7 +123,8 @@ _Static_assert(offsetof(nl_plugin_info, abi_version) == 4 && offsetof(nl_plugin_
                "nl_plugin_info on LP64");
 #endif
 
-/* Links. nl_link_id, nl_link_requirements and nl_link have no size field: fixed forever. */
+/* Links. nl_link_id, nl_link_requirements and nl_link have no size field: fixed from 1.0 (CHANGELOG.md
+   lists their changes before it). */
 _Static_assert(sizeof(nl_link_id) == 8 && offsetof(nl_link_id, index1) == 0 && offsetof(nl_link_id, generation) == 4,
                "nl_link_id");
 _Static_assert(sizeof(nl_link_kind) == 4, "nl_link_kind is a uint32");
@@ -131,15 +132,16 @@ _Static_assert(NL_LINK_JUMP == 1u && NL_LINK_DROP == 2u && NL_LINK_MANUAL == 3u 
                "link kinds");
 _Static_assert(offsetof(nl_link_requirements, gap) == 0 && offsetof(nl_link_requirements, rise) == 4 &&
                    offsetof(nl_link_requirements, drop) == 8 && offsetof(nl_link_requirements, clearance_width) == 12 &&
-                   offsetof(nl_link_requirements, abilities) == 16 && sizeof(nl_link_requirements) == 24,
+                   offsetof(nl_link_requirements, abilities) == 16 && offsetof(nl_link_requirements, length) == 24 &&
+                   offsetof(nl_link_requirements, reserved) == 28 && sizeof(nl_link_requirements) == 32,
                "nl_link_requirements layout");
 _Static_assert(offsetof(nl_link, id) == 0 && offsetof(nl_link, navmesh) == 8 && offsetof(nl_link, kind) == 16 &&
                    offsetof(nl_link, start) == 20 && offsetof(nl_link, end) == 32 && offsetof(nl_link, apex) == 44 &&
                    offsetof(nl_link, bidirectional) == 56 && offsetof(nl_link, generated) == 57 &&
                    offsetof(nl_link, enabled) == 58 && offsetof(nl_link, reserved) == 59 &&
                    offsetof(nl_link, cost_modifier) == 60 && offsetof(nl_link, user_data) == 64 &&
-                   offsetof(nl_link, requirements) == 72 && offsetof(nl_link, start_polygon) == 96 &&
-                   offsetof(nl_link, end_polygon) == 100 && sizeof(nl_link) == 104,
+                   offsetof(nl_link, requirements) == 72 && offsetof(nl_link, start_polygon) == 104 &&
+                   offsetof(nl_link, end_polygon) == 108 && sizeof(nl_link) == 112,
                "nl_link layout (no hidden padding)");
 /* Growable link structs: only today's offsets are fixed. */
 _Static_assert(offsetof(nl_link_def, size) == 0 && offsetof(nl_link_def, kind) == 4 && offsetof(nl_link_def, start) == 8 &&
@@ -152,7 +154,7 @@ _Static_assert(offsetof(nl_link_settings, size) == 0 && offsetof(nl_link_setting
                    offsetof(nl_link_settings, min_group_size) == 8 && offsetof(nl_link_settings, max_group_size) == 12 &&
                    offsetof(nl_link_settings, sample_spacing) == 16 &&
                    offsetof(nl_link_settings, falloff_distance) == 20 &&
-                   offsetof(nl_link_settings, max_link_distance) == 24 &&
+                   offsetof(nl_link_settings, max_jump_gap) == 24 &&
                    offsetof(nl_link_settings, min_link_distance) == 28 &&
                    offsetof(nl_link_settings, short_link_distance) == 32 &&
                    offsetof(nl_link_settings, max_jump_up) == 36 && offsetof(nl_link_settings, jump_arc_height) == 40 &&
@@ -187,12 +189,17 @@ _Static_assert(offsetof(nl_bake_report, size) == 0 && offsetof(nl_bake_report, e
                    offsetof(nl_bake_report, milliseconds_drops) == 104 &&
                    offsetof(nl_bake_report, milliseconds_merge) == 112 &&
                    offsetof(nl_bake_report, milliseconds_total) == 120 &&
-                   offsetof(nl_bake_report, box_queries) == 128,
+                   offsetof(nl_bake_report, box_queries) == 128 && offsetof(nl_bake_report, body_tests) == 136 &&
+                   offsetof(nl_bake_report, rejected_walkable) == 144 &&
+                   offsetof(nl_bake_report, rejected_too_shallow) == 148 &&
+                   offsetof(nl_bake_report, rejected_too_deep) == 152 && offsetof(nl_bake_report, reserved) == 156 &&
+                   sizeof(nl_bake_report) == 160,
                "nl_bake_report (no hidden padding)");
 #if UINTPTR_MAX == 0xffffffffffffffffu
 /* On LP64 the pointer after arc_segments leaves 4 bytes of padding at 148. */
 _Static_assert(offsetof(nl_link_settings, plugin_settings_json) == 152 &&
-                   offsetof(nl_link_settings, plugin_settings_json_length) == 160,
+                   offsetof(nl_link_settings, plugin_settings_json_length) == 160 &&
+                   offsetof(nl_link_settings, walk_factor) == 168 && offsetof(nl_link_settings, walk_distance) == 172,
                "nl_link_settings on LP64");
 #endif
 

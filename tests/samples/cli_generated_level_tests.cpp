@@ -77,8 +77,9 @@ TEST_CASE("navlink bake on the generated level: links file, report and picture a
         CHECK_MESSAGE(run.out.find(line) != std::string::npos, line);
     CHECK(nl::test::is_png(files.dir + "/view.png", 1600));
 
-    // Jumps across the first gap, but not under its low ceiling (z 4 to 6); none across the second
-    // gap, wider than the default 4 m links; one-way drops from the third platform to the fourth.
+    // Jumps across the first gap, but not under its low ceiling (z 4 to 6); across the second gap
+    // (2.8 to 3.2 m, rim to rim, within the default 4 m) but not past its wall (z 0 to 2); one-way
+    // drops from the third platform to the fourth.
     const auto first = jumps_across(links, files.level, 0);
     CHECK(first.size() >= 3);
     for (const auto& l : first) {
@@ -86,7 +87,15 @@ TEST_CASE("navlink bake on the generated level: links file, report and picture a
         CHECK(z_of(l.at("end")) < 4.0f);
         CHECK(l.at("bidirectional") == true);
     }
-    CHECK(jumps_across(links, files.level, 1).empty());
+    const auto second = jumps_across(links, files.level, 1);
+    CHECK(!second.empty());
+    for (const auto& l : second) {
+        CHECK(z_of(l.at("start")) > 2.0f);
+        CHECK(z_of(l.at("end")) > 2.0f);
+        const float gap = l.at("requires").at("gap").get<float>();
+        CHECK(gap >= 2.75f);
+        CHECK(gap <= 3.25f);
+    }
     size_t onto_last = 0;
     const auto& p2 = files.level.boxes[2];
     const auto& p3 = files.level.boxes[3];
@@ -104,31 +113,29 @@ TEST_CASE("navlink bake on the generated level: links file, report and picture a
     CHECK(onto_last >= 3);
 }
 
-TEST_CASE("navlink bake reads settings and agent files: longer links jump the second gap, except past its wall") {
+TEST_CASE("navlink bake reads settings and agent files: shorter links leave the second gap unjumped") {
     GeneratedLevelFiles files("bake_settings");
-    nl::test::write_file(files.dir + "/long.json", R"({"max_link_distance": 6.5, "recast": {"cell_size": 0.25}})");
-    const ProgramRun run = navlink({"bake", "level.obj", "--settings", "long.json", "--out", "links.json"}, files.dir);
+    nl::test::write_file(files.dir + "/short.json", R"({"max_jump_gap": 2.5, "recast": {"cell_size": 0.25}})");
+    const ProgramRun run = navlink({"bake", "level.obj", "--settings", "short.json", "--out", "links.json"}, files.dir);
     REQUIRE_MESSAGE(run.exit_code == 0, run.err);
     const json links = nl::test::parse_json_file(files.dir + "/links.json");
-    const auto second = jumps_across(links, files.level, 1);
-    CHECK(!second.empty());
-    for (const auto& l : second) {  // the wall stands at the far side for z in [0, 2]
-        CHECK(z_of(l.at("start")) > 2.0f);
-        CHECK(z_of(l.at("end")) > 2.0f);
-    }
+    CHECK(!jumps_across(links, files.level, 0).empty());  // 1.4 to 1.8 m
+    CHECK(jumps_across(links, files.level, 1).empty());   // 2.8 to 3.2 m
 
-    // A thinner body: its navmesh reaches closer to the rims, so the same gap is a shorter jump.
+    // A thinner body: its navmesh reaches closer to the rims, so the same gap is a shorter jump end to
+    // end (the gap itself, rim to rim, is the same).
     write_agent(files.dir + "/thin.json", R"({"name": "thin", "radius": 0.3})");
     REQUIRE(navlink({"bake", "level.obj", "--agent", "thin.json", "--out", "thin.json.links"}, files.dir).exit_code ==
             0);
     REQUIRE(navlink({"bake", "level.obj", "--out", "default.links"}, files.dir).exit_code == 0);
-    auto shortest_gap = [&](const std::string& file) {
+    auto shortest = [&](const std::string& file, const char* what) {
         float best = 1e9f;
         for (const auto& l : jumps_across(nl::test::parse_json_file(files.dir + "/" + file), files.level, 0))
-            best = std::min(best, l.at("requires").at("gap").get<float>());
+            best = std::min(best, l.at("requires").at(what).get<float>());
         return best;
     };
-    CHECK(shortest_gap("thin.json.links") < shortest_gap("default.links") - 0.3f);
+    CHECK(shortest("thin.json.links", "length") < shortest("default.links", "length") - 0.3f);
+    CHECK(shortest("thin.json.links", "gap") == doctest::Approx(shortest("default.links", "gap")).epsilon(0.03));
 }
 
 TEST_CASE("navlink bake and path with a navmesh handed over as OBJ (--navmesh)") {
@@ -166,14 +173,13 @@ TEST_CASE("navlink bake and path with a navmesh handed over as OBJ (--navmesh)")
 
 TEST_CASE("navlink path --json: each demo agent's route is complete, continuous and within its body's reach") {
     GeneratedLevelFiles files("path");
-    nl::test::write_file(files.dir + "/gen.json", R"({"max_link_distance": 6.5})");
-    REQUIRE(navlink({"bake", "level.obj", "--settings", "gen.json", "--out", "links.json"}, files.dir).exit_code == 0);
+    REQUIRE(navlink({"bake", "level.obj", "--out", "links.json"}, files.dir).exit_code == 0);
     const json links = nl::test::parse_json_file(files.dir + "/links.json").at("links");
     write_agent(files.dir + "/walker.json",
                 R"({"name": "walker", "max_jump_distance": 0, "max_jump_height": 0, "max_drop_height": 0})");
     write_agent(files.dir + "/short.json",
-                R"({"max_jump_distance": 3.8, "max_jump_height": 1.0, "max_drop_height": 0})");
-    write_agent(files.dir + "/long.json", R"({"max_jump_distance": 6, "max_jump_height": 1.5, "max_drop_height": 4})");
+                R"({"max_jump_distance": 2.0, "max_jump_height": 1.0, "max_drop_height": 0})");
+    write_agent(files.dir + "/long.json", R"({"max_jump_distance": 3.5, "max_jump_height": 1.5, "max_drop_height": 4})");
     const std::string from = "2,0,3", to = "33.91,-1.03,3.5";  // the level's start and goal markers
 
     std::map<std::string, json> paths;
@@ -215,11 +221,11 @@ TEST_CASE("navlink path --json: each demo agent's route is complete, continuous 
     CHECK(segments_of("short", "drop").empty());
     CHECK(!segments_of("short", "jump").empty());
     for (const auto& s : segments_of("short", "jump"))
-        CHECK(links[s.at("link").get<size_t>()].at("requires").at("gap").get<float>() <= 3.8f);
+        CHECK(links[s.at("link").get<size_t>()].at("requires").at("gap").get<float>() <= 2.0f);
     CHECK(!segments_of("long", "drop").empty());
     bool long_jump = false;
     for (const auto& s : segments_of("long", "jump"))
-        long_jump = long_jump || links[s.at("link").get<size_t>()].at("requires").at("gap").get<float>() > 3.8f;
+        long_jump = long_jump || links[s.at("link").get<size_t>()].at("requires").at("gap").get<float>() > 2.0f;
     CHECK(long_jump);  // a jump the short jumper could not make
     CHECK(paths["walker"].at("length").get<float>() > paths["short"].at("length").get<float>());
     CHECK(paths["short"].at("length").get<float>() > paths["long"].at("length").get<float>());

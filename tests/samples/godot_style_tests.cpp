@@ -77,7 +77,7 @@ TEST_CASE("every agent arrives by the route its body allows") {
         // The long jumper makes a jump the short one could not, and drops.
         bool long_jump = false;
         for (const TakenLink& t : long_jumper.taken_links())
-            long_jump = long_jump || (t.as == NL_LINK_JUMP && t.link.requirements.gap > 3.8f);
+            long_jump = long_jump || (t.as == NL_LINK_JUMP && t.link.requirements.gap > 2.0f);
         CHECK(long_jump);
         CHECK(count_taken(long_jumper, NL_LINK_DROP) >= 1);
         // The climber takes the ladder, nothing else.

@@ -221,9 +221,9 @@ TEST_CASE("settings from JSON: applied over the struct, unknown keys and bad val
     nl_link_settings s = nl_default_link_settings();
     CHECK(s.size == sizeof s);
     CHECK(s.drop_angle_count == 3);
-    const std::string good = "{\"max_link_distance\": 6, \"drop_angles\": [0, 45], \"arc_segments\": 16}";
+    const std::string good = "{\"max_jump_gap\": 6, \"drop_angles\": [0, 45], \"arc_segments\": 16}";
     REQUIRE(nl_link_settings_from_json(good.data(), good.size(), &s) == NL_STATUS_SUCCESS);
-    CHECK(s.max_link_distance == 6.0f);
+    CHECK(s.max_jump_gap == 6.0f);
     CHECK(s.drop_angle_count == 2);
     CHECK(s.drop_angles[1] == 45.0f);
     CHECK(s.arc_segments == 16);
@@ -233,14 +233,14 @@ TEST_CASE("settings from JSON: applied over the struct, unknown keys and bad val
     const std::string typo = "{\"max_link_distanse\": 6}";
     CHECK(nl_link_settings_from_json(typo.data(), typo.size(), &s) == (NL_STATUS_FAILURE | NL_STATUS_INVALID_ARGUMENT));
     CHECK(last_error().find("max_link_distanse") != std::string::npos);
-    const std::string negative = "{\"max_link_distance\": -1}";
+    const std::string negative = "{\"max_jump_gap\": -1}";
     CHECK(nl_link_settings_from_json(negative.data(), negative.size(), &s) == (NL_STATUS_FAILURE | NL_STATUS_INVALID_ARGUMENT));
-    CHECK(last_error().find("max_link_distance") != std::string::npos);
+    CHECK(last_error().find("max_jump_gap") != std::string::npos);
     const std::string wrong_type = "{\"arc_segments\": \"many\"}";
     CHECK(nl_link_settings_from_json(wrong_type.data(), wrong_type.size(), &s) == (NL_STATUS_FAILURE | NL_STATUS_INVALID_ARGUMENT));
     const std::string malformed = "{\"arc_segments\": ";
     CHECK(nl_link_settings_from_json(malformed.data(), malformed.size(), &s) == (NL_STATUS_FAILURE | NL_STATUS_PARSE_ERROR));
-    CHECK(s.max_link_distance == kept.max_link_distance);  // unchanged by failures
+    CHECK(s.max_jump_gap == kept.max_jump_gap);  // unchanged by failures
 }
 
 TEST_CASE("a cancelled bake changes nothing; progress runs from 0 to 1") {
@@ -265,17 +265,17 @@ TEST_CASE("a cancelled bake changes nothing; progress runs from 0 to 1") {
     CHECK(full.last == 1.0f);
 
     nl_link_settings settings = nl_default_link_settings();
-    settings.max_link_distance = 8.0f;  // would change the links
+    settings.max_jump_gap = 8.0f;  // would change the links
     Seen cancelled;
     cancelled.cancel_after = 3;
     CHECK(nl_navmesh_generate_links(f.world, f.navmesh, &settings, progress, &cancelled, nullptr) ==
           (NL_STATUS_FAILURE | NL_STATUS_CANCELLED));
     CHECK(f.links().size() == before);
 
-    settings.max_link_distance = -2.0f;
+    settings.max_jump_gap = -2.0f;
     CHECK(nl_navmesh_generate_links(f.world, f.navmesh, &settings, nullptr, nullptr, nullptr) ==
           (NL_STATUS_FAILURE | NL_STATUS_INVALID_ARGUMENT));
-    CHECK(last_error().find("max_link_distance") != std::string::npos);
+    CHECK(last_error().find("max_jump_gap") != std::string::npos);
 }
 
 TEST_CASE("a boundary that would need millions of take-off samples is refused before any work") {

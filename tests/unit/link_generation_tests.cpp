@@ -83,8 +83,12 @@ TEST_CASE("a 2 m gap gets a bidirectional jump; nothing else is generated") {
     for (const Link& l : jumps) {
         CHECK(l.bidirectional);
         CHECK(crosses_gap(l, 2.0f));
-        // Navmesh edges sit an agent radius back from the rim on both sides.
-        CHECK(l.requirements.gap == doctest::Approx(2.0f + 2 * 0.6f).epsilon(0.15));
+        // The gap is the rims' distance; the ends (the navmesh edges) sit an agent radius or more
+        // back from the rims, on the floor.
+        CHECK(l.requirements.gap == doctest::Approx(2.0f).epsilon(0.025));
+        CHECK(l.requirements.length > 2.0f + 2 * 0.6f - 0.01f);
+        CHECK(l.start.y() == doctest::Approx(0.0f).epsilon(1e-3));
+        CHECK(l.end.y() == doctest::Approx(0.0f).epsilon(1e-3));
         CHECK(l.requirements.rise < 0.3f);
         CHECK(l.apex.y() > std::max(l.start.y(), l.end.y()) + 0.9f);
         CHECK(l.requirements.clearance_width >= 1.2f - 1e-4f);
@@ -94,8 +98,8 @@ TEST_CASE("a 2 m gap gets a bidirectional jump; nothing else is generated") {
     CHECK(jumps.size() <= 12);
 }
 
-TEST_CASE("a 4 m gap is beyond max_link_distance: no link") {
-    const Baked b = bake(two_platforms(4.0f));
+TEST_CASE("a 4.2 m gap is beyond max_jump_gap (4 m rim to rim): no link") {
+    const Baked b = bake(two_platforms(4.2f));
     INFO(b.describe());
     CHECK(b.links.empty());
     CHECK(b.report.takeoff_points > 0);

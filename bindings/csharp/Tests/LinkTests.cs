@@ -29,21 +29,22 @@ namespace NavLink.Tests
                                report.JumpLinks + " jumps, " + report.DropLinks + " drops, " + links.Length + " links listed");
                     check.That(links.All(l => l.Kind == LinkKind.Jump && l.Generated == 1 && l.Bidirectional == 1 &&
                                              l.Navmesh.Equals(navmesh)), "all generated bidirectional jumps");
-                    check.That(links.All(l => l.Requirements.Gap >= 3.1f && l.Requirements.Gap <= 3.9f &&
-                                             Math.Abs(l.Requirements.Gap - l.Start.HorizontalDistance(l.End)) < 1e-3f),
-                               "gaps 3.1-3.9 m, the ends' horizontal distance");
+                    check.That(links.All(l => Math.Abs(l.Requirements.Gap - 2.0f) <= 0.05f &&
+                                             l.Requirements.Length >= 3.1f && l.Requirements.Length <= 3.9f &&
+                                             Math.Abs(l.Requirements.Length - l.Start.HorizontalDistance(l.End)) < 1e-3f),
+                               "gaps of 2 m rim to rim, lengths 3.1-3.9 m (the ends' horizontal distance)");
                     check.That(links.All(l => Math.Min(l.Start.X, l.End.X) < -1 && Math.Max(l.Start.X, l.End.X) > 1),
                                "one end on each platform");
                     check.That(links.All(l => l.Apex.Y > Math.Max(l.Start.Y, l.End.Y)), "a jump's apex is above its ends");
                     check.That(fractions.Count >= 2 && fractions.Last() == 1.0f && otherThread == 0,
                                "progress: " + fractions.Count + " calls on the caller's thread, ending at 1");
 
-                    // Settings from JSON: a max_link_distance below the gap leaves nothing to jump.
-                    LinkSettings shortJumps = World.LinkSettingsFromJson("{\"max_link_distance\": 3}");
-                    check.Near(shortJumps.MaxLinkDistance, 3, 0, "max_link_distance from JSON");
+                    // Settings from JSON: a max_jump_gap below the gap leaves nothing to jump.
+                    LinkSettings shortJumps = World.LinkSettingsFromJson("{\"max_jump_gap\": 1.8}");
+                    check.Near(shortJumps.MaxJumpGap, 1.8f, 1e-6f, "max_jump_gap from JSON");
                     BakeReport none = world.GenerateLinks(navmesh, shortJumps);
                     check.That(none.JumpLinks == 0 && none.RejectedDistance > 0 && world.GetLinks(navmesh).Length == 0,
-                               "max_link_distance 3: no jumps, " + none.RejectedDistance + " rejected for distance");
+                               "max_jump_gap 1.8: no jumps, " + none.RejectedDistance + " rejected for distance");
                     check.Throws(StatusBits.InvalidArgument, "max_link_dist", () => World.LinkSettingsFromJson("{\"max_link_dist\": 3}"),
                                  "an unknown settings key");
 

@@ -30,10 +30,10 @@ namespace NavLink.Tests
 
                     // A jumper whose jump is shorter than the gap is filtered out of every link.
                     AgentCapabilities shortJumper = TestLevels.Jumper();
-                    shortJumper.MaxJumpDistance = 3.0f;
+                    shortJumper.MaxJumpDistance = 1.8f;
                     PathResult tooShort = world.FindPath(new PathQuery(navmesh, TestLevels.WestPoint, TestLevels.EastPoint, shortJumper));
                     check.That(tooShort.Outcome == PathOutcome.Partial && tooShort.LinksUsed == 0,
-                               "a 3 m jumper over a 3.6 m gap: " + tooShort.Outcome + ", " + tooShort.LinksUsed + " links");
+                               "a 1.8 m jumper over a 2 m gap: " + tooShort.Outcome + ", " + tooShort.LinksUsed + " links");
 
                     PathResult stroll = world.FindPath(new PathQuery(navmesh, new Vec3(-9, 0, -3), new Vec3(-3, 0, 3), TestLevels.Walker()));
                     check.That(stroll.Outcome == PathOutcome.Complete && stroll.LinksUsed == 0 &&

@@ -539,11 +539,18 @@ typedef uint32_t nl_link_kind;
 /** What taking a link asks of an agent, going from its start to its end. Going the other way over
  *  a bidirectional link swaps rise and drop. */
 typedef struct nl_link_requirements {
-    float gap;             /**< Horizontal distance between the ends, metres. */
-    float rise;            /**< How far the end is above the start (0 if below). */
-    float drop;            /**< How far the end is below the start (0 if above). */
+    float gap;             /**< Horizontal distance covered in the air, metres: rim to rim for a
+                                generated jump, rim to landing for a generated drop; for other links
+                                the ends' horizontal distance (their rims are not known).
+                                nl_agent_capabilities.max_jump_distance is compared with it. */
+    float rise;            /**< How far the end is above the start (0 if below), floor to floor for
+                                generated links. */
+    float drop;            /**< How far the end is below the start (0 if above), floor to floor for
+                                generated links. */
     float clearance_width; /**< Widest body found clear along the link (0: not measured). */
     uint64_t abilities;    /**< Ability bits the agent must have (plugin kinds). */
+    float length;          /**< Horizontal distance between the ends, metres. */
+    uint32_t reserved;     /**< 0. */
 } nl_link_requirements;
 
 /** A link as the world holds it. */
@@ -576,8 +583,9 @@ typedef struct nl_link_def {
     uint8_t reserved[2];
     float cost_modifier;       /**< 1 by default; >= 0. */
     uint64_t user_data;
-    nl_link_requirements requirements; /**< gap, rise and drop are computed from the ends when all
-                                            three are 0. */
+    nl_link_requirements requirements; /**< gap, rise, drop and length are computed from the ends
+                                            when gap, rise and drop are all 0; length alone when it
+                                            is 0. */
 } nl_link_def;
 
 /** A manual link from (0,0,0) to (0,0,0), one-way, enabled, cost modifier 1. Thread-safe. */
@@ -623,16 +631,17 @@ typedef struct nl_link_settings {
     uint32_t max_group_size;        /**< Longer chains of short edges are split (8). */
     float sample_spacing;           /**< Take-off samples along a long edge (1 m). */
     float falloff_distance;         /**< How far past an edge the ground must fall away (1.5 m). */
-    float max_link_distance;        /**< Longest jump, end to end (4 m). */
-    float min_link_distance;        /**< Shorter gaps are walked, not jumped (0.3 m). */
+    float max_jump_gap;        /**< Widest gap a jump crosses, rim to rim (4 m). */
+    float min_link_distance;        /**< Narrower gaps are walked, not jumped (0.3 m). */
     float short_link_distance;      /**< Shorter links use the permissive angles (2 m). */
-    float max_jump_up;              /**< Highest rise of a jump; drops this low work both ways (1.5 m). */
+    float max_jump_up;              /**< Highest rise of a jump, floor to floor; drops this low work
+                                         both ways (1.5 m). */
     float jump_arc_height;          /**< Arc apex above the higher end (1 m). */
     float strict_forward_angle;     /**< Between a link and an edge's outward direction, degrees (35). */
     float permissive_forward_angle; /**< The same for short links (60). */
     float strict_incline_angle;     /**< Between a link and the take-off surface, degrees (45). */
     float permissive_incline_angle; /**< The same for short links (70). */
-    float max_drop_distance;        /**< Deepest drop (5 m). */
+    float max_drop_distance;        /**< Deepest drop, floor to floor (5 m). */
     float drop_angles[16];          /**< Rotations of the outward direction probed for drops, degrees. */
     uint32_t drop_angle_count;      /**< Entries used in drop_angles (3: 0, -30, 30). */
     float drop_steepness;           /**< Landing probes fall this steeply, degrees below horizontal (60). */
@@ -644,6 +653,10 @@ typedef struct nl_link_settings {
                                              Borrowed for the call; NULL = none (the length must
                                              then be 0). */
     size_t plugin_settings_json_length;
+    float walk_factor;              /**< No jump whose ends are joined on foot by a walk of at most
+                                         walk_factor x its length + walk_distance (1.5); two drop
+                                         landings that near on foot are one way down. */
+    float walk_distance;            /**< (2 m). */
 } nl_link_settings;
 
 /** The defaults. Thread-safe; never fails. */
@@ -669,11 +682,11 @@ typedef struct nl_bake_report {
     uint32_t plugin_links;         /**< Links of kinds from link-kind plugins. */
     uint32_t rejected_wall;        /**< Take-off point inside a wall. */
     uint32_t rejected_not_ledge;   /**< Walkable ground a step below the edge: no ledge there. */
-    uint32_t rejected_distance;    /**< Too far, too close, a drop too deep or too shallow. */
+    uint32_t rejected_distance;    /**< A jump's gap too wide or too narrow. */
     uint32_t rejected_rise;        /**< A jump higher than max_jump_up. */
     uint32_t rejected_angle;       /**< Not facing the other edge, or too steep. */
     uint32_t rejected_no_landing;  /**< No navmesh where the agent would land. */
-    uint32_t rejected_clearance;   /**< The body would hit geometry on the way. */
+    uint32_t rejected_clearance;   /**< The body would touch geometry on the way. */
     uint32_t rejected_duplicate;   /**< The same traversal as a link already kept. */
     uint64_t rays_cast;            /**< Rays and occlusion segments sent to Embree. */
     double milliseconds_edges;
@@ -682,9 +695,17 @@ typedef struct nl_bake_report {
     double milliseconds_drops;
     double milliseconds_merge;
     double milliseconds_total;
-    uint64_t box_queries;          /**< Boxes around stretches of clearance sweeps asked whether any
-                                        triangle touches them; an untouched one is clear without
-                                        casting its segments. Written when `size` covers it. */
+    uint64_t box_queries;          /**< Boxes around straight runs of clearance sweeps asked whether
+                                        any triangle touches them; an untouched one is clear without
+                                        testing its pieces. Written when `size` covers it. */
+    uint64_t body_tests;           /**< Pieces of clearance sweeps tested exactly against the
+                                        triangles near them. The fields from here on are written
+                                        when `size` covers them. */
+    uint32_t rejected_walkable;    /**< Jumps whose ends are about as near on foot (walk_factor). */
+    uint32_t rejected_too_shallow; /**< Drops no deeper than the agent's max_climb, floor to floor:
+                                        a step, walked. */
+    uint32_t rejected_too_deep;    /**< Drops deeper than max_drop_distance, floor to floor. */
+    uint32_t reserved;
 } nl_bake_report;
 
 /** Bake progress: `fraction` done (0..1) and the stage's name (borrowed for the call). Return 0 to

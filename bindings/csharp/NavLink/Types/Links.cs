@@ -12,6 +12,8 @@ namespace NavLink
         public float Drop;
         public float ClearanceWidth;
         public ulong Abilities;
+        public float Length;
+        public uint Reserved;
     }
 
     /// <summary>nl_link: a link as the world holds it.</summary>
@@ -61,7 +63,7 @@ namespace NavLink
         public uint MaxGroupSize;
         public float SampleSpacing;
         public float FalloffDistance;
-        public float MaxLinkDistance;
+        public float MaxJumpGap;
         public float MinLinkDistance;
         public float ShortLinkDistance;
         public float MaxJumpUp;
@@ -79,6 +81,8 @@ namespace NavLink
         public uint ArcSegments;
         public IntPtr PluginSettingsJson;
         public UIntPtr PluginSettingsJsonLength;
+        public float WalkFactor;
+        public float WalkDistance;
     }
 
     /// <summary>nl_bake_report. Set Size before asking.</summary>
@@ -111,5 +115,10 @@ namespace NavLink
         public double MillisecondsMerge;
         public double MillisecondsTotal;
         public ulong BoxQueries;
+        public ulong BodyTests;
+        public uint RejectedWalkable;
+        public uint RejectedTooShallow;
+        public uint RejectedTooDeep;
+        public uint Reserved;
     }
 }

@@ -25,6 +25,8 @@ pub struct nl_link_requirements {
     pub drop: f32,
     pub clearance_width: f32,
     pub abilities: u64,
+    pub length: f32,
+    pub reserved: u32,
 }
 
 #[repr(C)]
@@ -71,7 +73,7 @@ pub struct nl_link_settings {
     pub max_group_size: u32,
     pub sample_spacing: f32,
     pub falloff_distance: f32,
-    pub max_link_distance: f32,
+    pub max_jump_gap: f32,
     pub min_link_distance: f32,
     pub short_link_distance: f32,
     pub max_jump_up: f32,
@@ -89,6 +91,8 @@ pub struct nl_link_settings {
     pub arc_segments: u32,
     pub plugin_settings_json: *const c_char,
     pub plugin_settings_json_length: usize,
+    pub walk_factor: f32,
+    pub walk_distance: f32,
 }
 
 #[repr(C)]
@@ -120,6 +124,11 @@ pub struct nl_bake_report {
     pub milliseconds_merge: f64,
     pub milliseconds_total: f64,
     pub box_queries: u64,
+    pub body_tests: u64,
+    pub rejected_walkable: u32,
+    pub rejected_too_shallow: u32,
+    pub rejected_too_deep: u32,
+    pub reserved: u32,
 }
 
 /// `nl_progress_fn*`: return 0 to cancel. Called on the thread that started the bake.

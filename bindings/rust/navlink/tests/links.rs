@@ -27,16 +27,17 @@ fn generated_jump_links() {
     assert!(report.jump_links >= 5 && report.drop_links == 0 && links.len() as u32 == report.jump_links, "{:?}", report);
     for l in &links {
         assert!(l.kind == link_kind::JUMP && l.generated == 1 && l.bidirectional == 1 && l.navmesh == navmesh);
-        assert!(l.requirements.gap >= 3.1 && l.requirements.gap <= 3.9);
-        assert!((l.requirements.gap - horizontal_distance(l.start, l.end)).abs() < 1e-3);
+        assert!((l.requirements.gap - 2.0).abs() <= 0.05, "the gap is rim to rim: {}", l.requirements.gap);
+        assert!(l.requirements.length >= 3.1 && l.requirements.length <= 3.9);
+        assert!((l.requirements.length - horizontal_distance(l.start, l.end)).abs() < 1e-3);
         assert!(l.start[0].min(l.end[0]) < -1.0 && l.start[0].max(l.end[0]) > 1.0, "one end on each platform");
         assert!(l.apex[1] > l.start[1].max(l.end[1]), "the apex is above the ends");
     }
     assert!(fractions.len() >= 2 && *fractions.last().unwrap() == 1.0 && other_thread == 0);
 
-    // Settings from JSON: a max_link_distance below the gap leaves nothing to jump.
-    let short = link_settings_from_json("{\"max_link_distance\": 3}", None).unwrap();
-    assert_eq!(short.max_link_distance, 3.0);
+    // Settings from JSON: a max_jump_gap below the gap leaves nothing to jump.
+    let short = link_settings_from_json("{\"max_jump_gap\": 1.8}", None).unwrap();
+    assert_eq!(short.max_jump_gap, 1.8);
     let none = world.generate_links(navmesh, Some(&short), None, None).unwrap();
     assert!(none.jump_links == 0 && none.rejected_distance > 0 && world.links(navmesh).unwrap().is_empty());
     assert_fails(link_settings_from_json("{\"max_link_dist\": 3}", None), status::INVALID_ARGUMENT, "max_link_dist");

@@ -54,7 +54,7 @@ fn walker_and_jumper_planned_now() {
     assert!(none.outcome() == PathOutcome::NoPath && none.points.is_empty());
 
     // A jumper whose jump is shorter than the gap is filtered out of every link.
-    let short = navlink::AgentCapabilities { max_jump_distance: 3.0, ..jumper() };
+    let short = navlink::AgentCapabilities { max_jump_distance: 1.8, ..jumper() };
     let too_short = world.find_path(&PathQuery::new(navmesh, WEST, EAST, short)).unwrap();
     assert!(too_short.outcome() == PathOutcome::Partial && too_short.info.links_used == 0);
 
