@@ -526,8 +526,8 @@ LinkCheck IndependentLinkChecker::check(const Link& link) const {
     // The settings' limits, on the figures the spec says they apply to.
     const double lt = tol_.limit_tolerance;
     if (jump) {
-        if (std::isfinite(out.gap) && out.gap > settings_.max_link_distance + tol_.gap_tolerance)
-            wrong("gap beyond max_link_distance", q.gap, out.gap);
+        if (std::isfinite(out.gap) && out.gap > settings_.max_jump_gap + tol_.gap_tolerance)
+            wrong("gap beyond max_jump_gap", q.gap, out.gap);
         if (std::max(out.rise, out.drop) > settings_.max_jump_up + lt) wrong("rise beyond max_jump_up", q.rise + q.drop, std::max(out.rise, out.drop));
     } else {
         if (out.drop > settings_.max_drop_distance + lt) wrong("drop beyond max_drop_distance", q.drop, out.drop);

@@ -9,7 +9,7 @@
 //    along the whole path but clearance_margin of its length at each end; touching is a hit;
 //  - ends on the real floor; gap / rise / drop floor to floor; gap = in the air between the rims
 //    (rim to rim for a jump, rim to landing for a drop); requirements.length = end to end;
-//  - max_link_distance = the widest gap (rim to rim) a jump may cross; max_jump_up = highest rise,
+//  - max_jump_gap = the widest gap (rim to rim) a jump may cross; max_jump_up = highest rise,
 //    max_drop_distance = deepest drop, floor to floor; drops no deeper than max_climb are walked;
 //  - rims to ~2 cm, so a designed 2.0 m gap records 2.0 +- 0.05;
 //  - drops along every ledge too high to walk; one drop per take-off point per landing surface;
@@ -336,9 +336,9 @@ std::vector<Box> trench() {
 // eroded by the radius it is under Recast's region_min_size, 8 x 8 cells.)
 std::vector<Box> two_floors() { return with(deck(4.0f), {Box{{6, 0, 0}, {10, 2, 4.5f}}}); }
 
-nl::LinkSettings with_max_link_distance(float d) {
+nl::LinkSettings with_max_jump_gap(float d) {
     nl::LinkSettings s;
-    s.max_link_distance = d;
+    s.max_jump_gap = d;
     return s;
 }
 
@@ -359,7 +359,7 @@ std::vector<NamedLevel> all_procedural_levels() {
     out.push_back({"0.8 m step", deck(0.8f), {}});
     for (float h : {1.0f, 1.5f, 3.0f, 4.5f, 5.0f, 5.3f}) out.push_back({std::to_string(h).substr(0, 3) + " m ledge", deck(h), {}});
     for (int g = 1; g <= 8; ++g) out.push_back({std::to_string(g) + " m gap", two_platforms(float(g)), {}});
-    out.push_back({"6 m gap, max_link_distance 6", two_platforms(6.0f), with_max_link_distance(6.0f)});
+    out.push_back({"6 m gap, max_jump_gap 6", two_platforms(6.0f), with_max_jump_gap(6.0f)});
     for (float r : {0.5f, 1.0f, 1.5f, 2.0f, 2.5f})
         out.push_back({std::to_string(r).substr(0, 3) + " m rise", two_platforms(2.0f, r), {}});
     out.push_back({"two floors", two_floors(), {}});
@@ -781,16 +781,16 @@ TEST_CASE("a 0.8 m step is walked: no drop") {
 }
 
 // =============================================================================================
-// 6. One meaning of gap: rim to rim, limited by max_link_distance.
+// 6. One meaning of gap: rim to rim, limited by max_jump_gap.
 
-TEST_CASE("gaps of 1 to 8 m: jumps exactly up to max_link_distance (rim to rim), gap recorded to 5 cm") {
+TEST_CASE("gaps of 1 to 8 m: jumps exactly up to max_jump_gap (rim to rim), gap recorded to 5 cm") {
     auto expect_gap = [](float gap, const nl::LinkSettings& settings) {
         const Baked b = bake(std::to_string(int(gap)) + " m gap", two_platforms(gap), settings);
         CAPTURE(gap);
-        CAPTURE(settings.max_link_distance);
+        CAPTURE(settings.max_jump_gap);
         INFO(b.describe());
         const auto jumps = crossing_jumps(b, gap);
-        if (gap <= settings.max_link_distance) {
+        if (gap <= settings.max_jump_gap) {
             CHECK(jumps.size() >= 3);  // MUST
             for (const Link& l : jumps) {
                 CHECK_NEAR(l.requirements.gap, gap, 0.05);  // rim to rim
@@ -803,11 +803,11 @@ TEST_CASE("gaps of 1 to 8 m: jumps exactly up to max_link_distance (rim to rim),
         }
         expect_checked(b);
     };
-    SUBCASE("max_link_distance 4 (the default)") {
+    SUBCASE("max_jump_gap 4 (the default)") {
         for (int g = 1; g <= 8; ++g) expect_gap(float(g), nl::LinkSettings{});
     }
-    SUBCASE("max_link_distance 6") {
-        for (int g = 5; g <= 7; ++g) expect_gap(float(g), with_max_link_distance(6.0f));
+    SUBCASE("max_jump_gap 6") {
+        for (int g = 5; g <= 7; ++g) expect_gap(float(g), with_max_jump_gap(6.0f));
     }
 }
 
