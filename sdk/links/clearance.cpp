@@ -6,14 +6,15 @@
 
 namespace nl {
 
-std::vector<SweepPiece> sweep_pieces(PathPoints path_points, float margin) {
+std::vector<SweepPiece> sweep_pieces(PathPoints path_points, float margin, float most_left_out) {
     const Vec3* path = path_points.points;
     const size_t count = path_points.count;
     std::vector<SweepPiece> pieces;
     float total = 0.0f;
     for (size_t i = 1; i < count; ++i) total += (path[i] - path[i - 1]).norm();
     if (total <= 0.0f) return pieces;
-    const float keep_from = margin * total, keep_to = (1.0f - margin) * total;
+    const float left_out = std::min(margin * total, most_left_out);
+    const float keep_from = left_out, keep_to = total - left_out;
     float walked = 0.0f;
     for (size_t i = 1; i < count; ++i) {
         const Vec3 a = path[i - 1], b = path[i];

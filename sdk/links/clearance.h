@@ -39,9 +39,9 @@ struct PathPoints {
     float slack = 0.0f;
 };
 
-// The pieces of `path`, leaving out `margin` of its length at each end (take-off and landing touch
-// the floor).
-std::vector<SweepPiece> sweep_pieces(PathPoints path, float margin);
+// The pieces of `path`, leaving out `margin` of its length at each end, but never more than
+// `most_left_out` (take-off and landing touch the floor).
+std::vector<SweepPiece> sweep_pieces(PathPoints path, float margin, float most_left_out);
 
 // The body along a piece (its height span grown by the piece's slack), with a box that holds it at
 // `widest` radius.

@@ -33,7 +33,8 @@ struct Link {
     LinkKind kind = LinkKind::Manual;
     Vec3 start = Vec3::Zero();
     Vec3 end = Vec3::Zero();
-    Vec3 apex = Vec3::Zero();  // top of a jump's arc; for other kinds the higher end
+    Vec3 apex = Vec3::Zero();  // top of a jump's arc; where a generated drop's fall leaves the ground;
+                               // for other kinds the higher end
     bool bidirectional = false;
     bool generated = false;
     bool enabled = true;

@@ -22,6 +22,7 @@ constexpr float kProbeLift = 0.5f;  // probes start this far above the navmesh: 
 constexpr float kRimStep = 0.25f;   // spacing of the probes that look for the rim past an edge
 constexpr int kRimHalvings = 4;     // then the rim's step is halved this often: found to 1.6 cm
 constexpr float kFloorReach = 2.0f; // a link end's floor is looked for this far below kProbeLift
+constexpr float kPastRim = 0.2f;    // a drop's fall starts this far past the rim
 constexpr float kPad = 1e-3f;       // bounds are padded: a surface exactly on them still counts
 
 struct Stopwatch {
@@ -435,7 +436,7 @@ private:
         const float widest = kSweepRadii[kSweepRadiusCount - 1] * body_.radius;
         tasks_.parallel_for(static_cast<uint32_t>(paths.size()), 64, [&](uint32_t begin, uint32_t end) {
             for (uint32_t i = begin; i < end; ++i) {
-                pieces[i] = sweep_pieces(paths[i], s_.clearance_margin);
+                pieces[i] = sweep_pieces(paths[i], s_.clearance_margin, body_.radius);
                 Aabb& b = out[i].bounds;
                 for (size_t n = 0; n < paths[i].count; ++n) b.grow(paths[i].points[n]);
                 b.min -= Vec3(widest, paths[i].slack, widest);
@@ -580,8 +581,7 @@ private:
                 const EdgeSample& e = samples_[i];
                 const Eigen::AngleAxisf turn(s_.drop_angles[angle] * kDegrees, Vec3::UnitY());
                 headings[k] = turn * e.outward;
-                // Past the rim (found straight out; a turned probe starts as far out, plus a margin).
-                const Vec3 falloff = e.point + headings[k] * (next.takeoffs[i].rim + 0.2f);
+                const Vec3 falloff = e.point + headings[k] * (rim_along(next, i, angle) + kPastRim);
                 const Vec3 direction = (headings[k] * std::cos(steep) + Vec3(0, -std::sin(steep), 0)).normalized();
                 probes[k] = Ray{falloff + Vec3(0, kProbeLift, 0), direction, reach};
             }
@@ -614,19 +614,43 @@ private:
             const uint32_t k = landed[n];
             settle(next, next.drops[probed[k]], headings[k], landings[k], floor_rays[n], floors[n]);
         }
-        // Landed probes: the fresh ones, and the reused ones whose sweep the box touches.
+        // Landed probes: the fresh ones, and the reused ones whose sweeps the box touches. A drop low
+        // enough to jump back up has that jump's arc swept too, in the same batch.
         std::vector<uint8_t> fresh(next.drops.size(), 0);
         for (uint32_t k : probed) fresh[k] = 1;
         std::vector<uint32_t> to_sweep;
         for (uint32_t k = 0; k < next.drops.size(); ++k) {
             const LinkBake::DropProbe& d = next.drops[k];
-            if (d.outcome == 0 && (fresh[k] || touches(d.sweep.bounds, box_))) to_sweep.push_back(k);
+            if (d.outcome == 0 && (fresh[k] || touches(d.sweep.bounds, box_) || touches(d.back.bounds, box_))) to_sweep.push_back(k);
         }
         step(0.8f, "drop clearance");
         std::vector<PathPoints> paths;
-        for (uint32_t k : to_sweep) paths.push_back(PathPoints{next.drops[k].fall.data(), next.drops[k].fall.size(), 0.0f});
+        std::vector<uint32_t> back_of;  // drops whose jump back is swept, in to_sweep order
+        std::vector<std::vector<Vec3>> arcs;
+        for (uint32_t k : to_sweep) {
+            paths.push_back(PathPoints{next.drops[k].fall.data(), next.drops[k].fall.size(), 0.0f});
+            if (next.drops[k].link.bidirectional) back_of.push_back(k);
+        }
+        arcs.reserve(back_of.size());
+        const double piece = 1.0 / s_.arc_segments;
+        for (uint32_t k : back_of) {
+            const Link& l = next.drops[k].link;
+            const JumpArc arc(l.end, l.start, s_.jump_arc_height);
+            arcs.push_back(arc.points(s_.arc_segments));
+            paths.push_back(PathPoints{arcs.back().data(), arcs.back().size(), arc.sagitta(0.0, piece)});
+        }
         const std::vector<LinkBake::Sweep> swept = sweep(paths);
-        for (size_t n = 0; n < to_sweep.size(); ++n) next.drops[to_sweep[n]].sweep = swept[n];
+        for (size_t n = 0; n < to_sweep.size(); ++n) {
+            next.drops[to_sweep[n]].sweep = swept[n];
+            next.drops[to_sweep[n]].back = LinkBake::Sweep{};
+        }
+        for (size_t n = 0; n < back_of.size(); ++n) next.drops[back_of[n]].back = swept[to_sweep.size() + n];
+    }
+
+    // How far out along drop probe `angle`'s heading the ground falls away: the rim found straight
+    // out, taken as a line along the edge.
+    float rim_along(const LinkBake::Cache& c, uint32_t i, uint32_t angle) const {
+        return c.takeoffs[i].rim / std::cos(s_.drop_angles[angle] * kDegrees);
     }
 
     // A ray down to the floor under a navmesh point: navmeshes float above the floor (Recast's by up
@@ -658,7 +682,6 @@ private:
         l.kind = LinkKind::Drop;
         l.start = start;
         l.end = end;
-        l.apex = l.start;
         l.bidirectional = drop <= s_.max_jump_up;  // low enough to jump back up
         l.generated = true;
         l.start_polygon = samples_[i].polygon;
@@ -666,9 +689,11 @@ private:
         set_requirements_from_ends(l);
         Vec3 flat = end - start;
         flat.y() = 0.0f;
-        const Vec3 towards = flat.norm() > 0.0f ? Vec3(flat.normalized()) : heading;
-        l.requirements.gap = air_gap(l.requirements.length, towards, samples_[i].outward, c.takeoffs[i].rim, Vec3::Zero(), 0.0f);
-        d.fall = fall_path(start, heading, c.takeoffs[i].rim + 0.2f, end);
+        const float rim = rim_along(c, i, static_cast<uint32_t>(d.key));
+        const Vec3 crossing = start + heading * rim;
+        l.requirements.gap = Vec3(end.x() - crossing.x(), 0.0f, end.z() - crossing.z()).norm();
+        d.fall = fall_path(start, heading, rim + kPastRim, end);
+        l.apex = d.fall[1];  // where the body leaves the ground: the top of the fall, and its heading
     }
 
     // No rays from here on: over everything cached, so an update gives what a full bake would.
@@ -691,8 +716,9 @@ private:
 
     // The clear drops, in key order, one per take-off point and landing surface: of a take-off
     // point's drops, the most head-on (the least turned from its edge's outward direction; the first
-    // in drop_angles on a tie) is kept, and another only if its landing is not a short walk from one
-    // kept (walk_factor x their distance + walk_distance): that would be the same way down.
+    // in drop_angles on a tie) is kept, and another only if it lands on another surface than every
+    // one kept: a walkable surface of its own (not joined to theirs on foot), or one more than the
+    // agent's max_climb above or below theirs.
     std::vector<Link> one_drop_per_way_down(const LinkBake::Cache& c) {
         std::vector<Link> out;
         for (size_t first = 0; first < c.drops.size();) {
@@ -714,8 +740,8 @@ private:
             for (const LinkBake::DropProbe* d : clear) {
                 const bool same_way = std::any_of(kept.begin(), kept.end(), [&](const LinkBake::DropProbe* k) {
                     const Link &a = k->link, &b = d->link;
-                    const float apart = (b.end - a.end).norm();
-                    return std::isfinite(walk_.walk_within(a.end, a.end_polygon, b.end, b.end_polygon, s_.walk_factor * apart + s_.walk_distance));
+                    return walk_.surface(a.end_polygon) == walk_.surface(b.end_polygon) &&
+                           std::fabs(a.end.y() - b.end.y()) <= mesh_.agent().max_climb;
                 });
                 if (same_way) ++report_.rejected_duplicate;
                 else kept.push_back(d);
@@ -723,7 +749,11 @@ private:
             std::sort(kept.begin(), kept.end(), [](const auto* x, const auto* y) { return x->key < y->key; });
             for (const LinkBake::DropProbe* d : kept) {
                 out.push_back(d->link);
-                out.back().requirements.clearance_width = d->sweep.width;
+                Link& l = out.back();
+                l.requirements.clearance_width = d->sweep.width;
+                // Both ways only if the body fits the jump back up as well.
+                if (l.bidirectional && !d->back.clear) l.bidirectional = false;
+                if (l.bidirectional) l.requirements.clearance_width = std::min(d->sweep.width, d->back.width);
             }
             first = last;
         }

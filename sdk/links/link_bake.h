@@ -53,6 +53,7 @@ public:
         Link link;
         std::array<Vec3, 4> fall;  // out over the rim, across, down (when landed)
         Sweep sweep;
+        Sweep back;             // the jump back up, for a drop no deeper than max_jump_up
     };
     struct Cache {
         std::vector<TakeoffState> takeoffs;                 // by sample

@@ -39,7 +39,7 @@ void validate(const LinkSettings& s, const char* p) {
     if (s.drop_angles.size() > 16) fail(ErrorCode::InvalidArgument, p, "drop_angles has ", s.drop_angles.size(), " entries (at most 16)");
     for (size_t i = 0; i < s.drop_angles.size(); ++i) {
         const std::string name = "drop_angles[" + std::to_string(i) + "]";
-        check(std::fabs(s.drop_angles[i]) <= 90.0f, s.drop_angles[i], p, name.c_str(), "must be in [-90, 90] degrees");
+        check(std::fabs(s.drop_angles[i]) <= 80.0f, s.drop_angles[i], p, name.c_str(), "must be in [-80, 80] degrees");
     }
     check(s.drop_steepness >= 10.0f && s.drop_steepness <= 90.0f, s.drop_steepness, p, "drop_steepness", "must be in [10, 90] degrees");
     check(s.merge_distance >= 0.0f, s.merge_distance, p, "merge_distance", "must be >= 0");

@@ -27,8 +27,7 @@ struct LinkSettings {
     float strict_incline_angle = 45.0f;       // degrees between the link and the take-off surface's plane
     float permissive_incline_angle = 70.0f;
     // No jump where walking is about as short: a jump is not generated when its ends are joined on
-    // foot by a walk of at most walk_factor x its length + walk_distance (two drop landings that
-    // near on foot are one way down).
+    // foot by a walk of at most walk_factor x its length + walk_distance.
     float walk_factor = 1.5f;
     float walk_distance = 2.0f;
     // Drops (edge to floor)

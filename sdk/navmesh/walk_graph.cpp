@@ -15,6 +15,25 @@ WalkGraph::WalkGraph(const NavMesh& mesh) : mesh_(mesh), first_polygon_(mesh.ver
     std::vector<uint32_t> fill(first_polygon_.begin(), first_polygon_.end() - 1);
     for (uint32_t p = 0; p < mesh.polygon_count(); ++p)
         for (uint32_t k = 0; k < mesh.corner_count(p); ++k) polygons_[fill[mesh.corner(p, k)]++] = p;
+
+    // Surfaces: a flood through portals from each polygon not yet reached, in polygon order.
+    surface_.assign(mesh.polygon_count(), kNoPolygon);
+    std::vector<uint32_t> stack;
+    for (uint32_t first = 0; first < mesh.polygon_count(); ++first) {
+        if (surface_[first] != kNoPolygon) continue;
+        surface_[first] = first;
+        stack.push_back(first);
+        while (!stack.empty()) {
+            const uint32_t p = stack.back();
+            stack.pop_back();
+            for (uint32_t k = 0; k < mesh.corner_count(p); ++k) {
+                const uint32_t q = mesh.neighbour(p, k);
+                if (q == kNoPolygon || surface_[q] != kNoPolygon) continue;
+                surface_[q] = first;
+                stack.push_back(q);
+            }
+        }
+    }
 }
 
 float WalkGraph::walk_within(const Vec3& from, uint32_t from_polygon, const Vec3& to, uint32_t to_polygon, float limit) const {

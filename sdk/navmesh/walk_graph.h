@@ -1,6 +1,6 @@
 // How far apart two navmesh points are on foot, for "is this link worth it?" questions asked while
-// links are generated (a jump whose ends are about as near by walking is not generated; two drop
-// landings a short walk apart are one way down).
+// links are generated: a jump whose ends are about as near by walking is not generated, and two drop
+// landings on one walkable surface are one way down.
 //
 // The walk goes from corner to corner of the navmesh's polygons: inside a convex polygon a straight
 // line between two of its corners (or a corner and a point on it) stays on the polygon, so every
@@ -25,10 +25,15 @@ public:
     // (A* with the straight line as its estimate), so it is cheap for short limits. Thread-safe.
     float walk_within(const Vec3& from, uint32_t from_polygon, const Vec3& to, uint32_t to_polygon, float limit) const;
 
+    // The walkable surface a polygon belongs to: polygons joined through portals, however far, share
+    // one number.
+    uint32_t surface(uint32_t polygon) const { return surface_[polygon]; }
+
 private:
     const NavMesh& mesh_;
     std::vector<uint32_t> first_polygon_;  // vertex_count + 1 offsets into polygons_: the polygons at each vertex
     std::vector<uint32_t> polygons_;
+    std::vector<uint32_t> surface_;  // by polygon: its lowest-numbered connected polygon
 };
 
 }  // namespace nl

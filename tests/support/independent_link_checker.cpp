@@ -352,8 +352,11 @@ IndependentLinkChecker::SweepResult IndependentLinkChecker::sweep(const Path& pa
     SweepResult out;
     double total = 0.0;
     for (const Piece& p : path.pieces) total += p.length();
-    const double keep_from = settings_.clearance_margin * total + tol_.margin_band;
-    const double keep_to = (1.0 - settings_.clearance_margin) * total - tol_.margin_band;
+    // The docs: clearance_margin of the path's length is left out at each end, but never more than the
+    // agent's radius.
+    const double left_out = std::min(settings_.clearance_margin * total, double(agent_.radius));
+    const double keep_from = left_out + tol_.margin_band;
+    const double keep_to = total - left_out - tol_.margin_band;
     if (keep_to <= keep_from) return out;
     const double touch_pad = tol_.touch_margin, clear_pad = tol_.clear_margin + extra_clear;
 
@@ -492,10 +495,16 @@ LinkCheck IndependentLinkChecker::check(const Link& link) const {
             if (std::isfinite(out.rim_start) && std::isfinite(out.rim_end))
                 out.gap = std::max(0.0, flat - out.rim_start - out.rim_end);
         } else {
+            // A drop's documented fall leaves the ground at its apex, 0.2 m past where the docs put the
+            // rim on its heading (the rim found straight out from the edge, taken as a line along it):
+            // the gap is from there to the landing. What the checker can see for itself is that the
+            // ground has really fallen away by the apex (else the fall would start over the floor).
             const Vec2d apex2(link.apex.x(), link.apex.z());
             const Vec2d out_heading = (apex2 - s2).norm() > 0.01 ? Vec2d((apex2 - s2).normalized()) : heading;
+            const double out_distance = (apex2 - s2).norm();
             out.rim_start = rim_along(near, s2, out_heading, fs, flat + 2.0);
-            if (std::isfinite(out.rim_start)) out.gap = (e2 - (s2 + out_heading * out.rim_start)).norm();
+            if (std::isfinite(out.rim_start) && out.rim_start <= out_distance + 0.02)
+                out.gap = (e2 - (s2 + out_heading * std::max(0.0, out_distance - 0.2))).norm();
         }
     }
 
@@ -512,7 +521,7 @@ LinkCheck IndependentLinkChecker::check(const Link& link) const {
     if (std::fabs(q.drop - out.drop) > tol_.height_tolerance) wrong("drop", q.drop, out.drop);
     if (std::isnan(out.gap)) {
         out.problems.push_back(jump ? "no gap: the checker finds floor all the way between the ends"
-                                    : "no rim found past the start");
+                                    : "the ground has not fallen away by the drop's apex");
         out.wrong_figures = true;
     } else if (std::fabs(q.gap - out.gap) > tol_.gap_tolerance) {
         wrong(jump ? "gap (rim to rim)" : "gap (rim to landing)", q.gap, out.gap);
@@ -552,12 +561,44 @@ LinkCheck IndependentLinkChecker::check(const Link& link) const {
         } else if (agent.result == Sweep::Inconclusive) {
             out.inconclusive = true;
         }
+        // A drop low enough to be jumped back up (bidirectional) promises that jump too: the arc from
+        // its end up to its start, topping out jump_arc_height over the start.
+        Path back;
+        std::vector<uint32_t> back_among;
+        if (!jump && link.bidirectional) {
+            Link up = link;
+            up.kind = LinkKind::Jump;
+            std::swap(up.start, up.end);
+            up.apex = up.end;
+            up.apex.y() = std::max(link.start.y(), link.end.y()) + settings_.jump_arc_height;
+            back = documented_path(up, out);
+            back_among = candidates(back, 2.0 * r + 0.01);
+            const SweepResult agent_back = sweep(back, back_among, r, 0.0);
+            out.cylinder_tests += agent_back.tests;
+            if (agent_back.result == Sweep::Touches) {
+                out.problems.push_back("bidirectional, but the body touches the level on the jump back up");
+                out.touches = true;
+                out.touch = agent_back.touch;
+            } else if (agent_back.result == Sweep::Inconclusive) {
+                out.inconclusive = true;
+            }
+        }
+        // Both ways must be clear for a width to count (the jump back up, for a bidirectional drop).
+        auto sweep_both = [&](double radius, double pad) {
+            SweepResult forward = sweep(path, among, radius, pad);
+            if (back.pieces.empty() || forward.result != Sweep::Clear) return forward;
+            const SweepResult reverse = sweep(back, back_among, radius, pad);
+            forward.tests += reverse.tests;
+            forward.result = reverse.result;
+            forward.inconclusive_pieces += reverse.inconclusive_pieces;
+            return forward;
+        };
         // clearance_width: 2 x the widest of r, 1.5 r, 2 r whose body (and every narrower one) is clear.
-        if (agent.result == Sweep::Clear) {
+        if (agent.result == Sweep::Clear && !out.touches) {
             out.clearance_width = float(2.0 * r);
             if (tol_.check_width) {
                 for (double k : {1.5, 2.0}) {
-                    const SweepResult wider = sweep(path, among, k * r, 0.0);
+                    const SweepResult wider = sweep_both(k * r, 0.0);
                     out.cylinder_tests += wider.tests;
                     if (wider.result != Sweep::Clear) {
                         // Overstating is what matters: the recorded width must be clear. An
@@ -579,7 +620,7 @@ LinkCheck IndependentLinkChecker::check(const Link& link) const {
                 const double recorded = q.clearance_width;
                 if (recorded < out.clearance_width - 1e-3) {
                     const double k = recorded < 3.0 * r - 1e-3 ? 1.5 : 2.0;
-                    const SweepResult spare = sweep(path, among, k * r, 0.005);
+                    const SweepResult spare = sweep_both(k * r, 0.005);
                     out.cylinder_tests += spare.tests;
                     if (spare.result == Sweep::Clear) wrong("clearance_width (a wider body is clear)", recorded, out.clearance_width);
                 }

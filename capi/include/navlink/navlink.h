@@ -560,7 +560,9 @@ typedef struct nl_link {
     nl_link_kind kind;
     float start[3];
     float end[3];
-    float apex[3];             /**< Top of a jump's arc; for other kinds the higher end. */
+    float apex[3];             /**< Top of a jump's arc; for a generated drop, where its fall leaves
+                                    the ground (0.2 m past the rim on the fall's heading, at the
+                                    start's height); for other kinds the higher end. */
     uint8_t bidirectional;
     uint8_t generated;         /**< 1 if made by nl_navmesh_generate_links. */
     uint8_t enabled;
@@ -654,8 +656,7 @@ typedef struct nl_link_settings {
                                              then be 0). */
     size_t plugin_settings_json_length;
     float walk_factor;              /**< No jump whose ends are joined on foot by a walk of at most
-                                         walk_factor x its length + walk_distance (1.5); two drop
-                                         landings that near on foot are one way down. */
+                                         walk_factor x its length + walk_distance (1.5). */
     float walk_distance;            /**< (2 m). */
 } nl_link_settings;
 
