@@ -394,8 +394,7 @@ NL_API nl_status nl_navmesh_generate_links(nl_world* world, nl_navmesh_id navmes
                                             : std::string();
         const nlohmann::json plugin_settings = plugin_settings_of(plugin_json);
         auto bake = std::make_shared<nl::LinkBake>(mesh, s, nl::BakeMethod::Indexed);
-        const auto serializer = w.bakes->serializer(handle);
-        std::lock_guard one_at_a_time(*serializer);
+        const nl::LinkBakes::Turn one_at_a_time = w.bakes->take_turn(handle);
         nl::BakeReport report;
         std::vector<nl::Link> links = bake->run(*w.level, *w.tasks, report, progress_of(progress, user));
         const std::vector<nl::Link> extra = plugin_links(w, navmesh, *mesh, plugin_settings, report.plugin_links);
@@ -421,8 +420,7 @@ NL_API nl_status nl_navmesh_update_links_in_box(nl_world* world, nl_navmesh_id n
             fail(ErrorCode::InvalidArgument, "box_min and box_max must be finite, within the limit, and min <= max");
         if (out_report && out_report->size < kReportFirstSize)
             fail(ErrorCode::InvalidArgument, "out_report->size is ", out_report->size, " (set it to sizeof)");
-        const auto serializer = w.bakes->serializer(handle);
-        std::lock_guard one_at_a_time(*serializer);
+        const nl::LinkBakes::Turn one_at_a_time = w.bakes->take_turn(handle);
         // The bake and the plugin settings of the generation being updated, read together.
         const nl::LinkBakes::Entry last = w.bakes->get(handle);
         if (!last.bake) fail(ErrorCode::NotFound, "the navmesh has no generation to update (never generated, or its generated links were "

@@ -30,7 +30,11 @@ void store_owner(std::vector<Owner>& table, unsigned id, Owner owner) {
 
 Level::Level(TaskSystem& tasks, uint32_t handle_tag) : tasks_(tasks), meshes_(handle_tag) {
     device_ = rtcNewDevice(nullptr);
-    if (!device_) fail(ErrorCode::Internal, "Embree device could not be created (error ", rtcGetDeviceError(nullptr), ")");
+    // Each Embree device takes one of the process's thread-local keys (1,024 on glibc): past about a
+    // thousand worlds, or when memory runs out, there is none for another.
+    if (!device_)
+        fail(ErrorCode::OutOfMemory, "Embree could not create another device (error ", rtcGetDeviceError(nullptr),
+             "): about 1,000 worlds can exist at once, each device taking one of the process's thread-local keys");
     top_ = rtcNewScene(device_);
     static_scene_ = rtcNewScene(device_);
     // Robust traversal: link clearance tests must not leak through cracks between triangles.
@@ -59,11 +63,27 @@ Level::~Level() {
     rtcReleaseDevice(device_);
 }
 
-void Level::check_embree(const char* what) const {
-    const RTCError e = rtcGetDeviceError(device_);
+namespace {
+
+void check_embree_error(RTCError e, const char* what) {
     if (e == RTC_ERROR_NONE) return;
     if (e == RTC_ERROR_OUT_OF_MEMORY) fail(ErrorCode::OutOfMemory, "out of memory while ", what);
     fail(ErrorCode::Internal, "Embree error ", static_cast<int>(e), " while ", what);
+}
+
+}  // namespace
+
+void Level::check_embree(const char* what) const { check_embree_error(rtcGetDeviceError(device_), what); }
+
+void Level::commit(RTCScene scene, bool exclusive, const char* what) const {
+    RTCError error = RTC_ERROR_NONE;
+    auto build = [&] {
+        rtcCommitScene(scene);
+        error = rtcGetDeviceError(device_);
+    };
+    if (exclusive) tasks_.execute_exclusive(build);
+    else tasks_.execute(build);
+    check_embree_error(error, what);
 }
 
 namespace {
@@ -152,8 +172,8 @@ void Level::prepare_movable(Mesh& mesh) {
     std::copy_n(mesh.object.triangles.front().data(), 3 * triangle_count, ib);
     rtcCommitGeometry(g);
     mesh.geometry_id = rtcAttachGeometry(mesh.own_scene, g);
-    tasks_.execute([&] { rtcCommitScene(mesh.own_scene); });
-    check_embree("building a movable mesh");
+    check_embree("registering a movable mesh");
+    commit(mesh.own_scene, false, "building a movable mesh");
 }
 
 void Level::attach_movable(Mesh& mesh) {
@@ -293,16 +313,16 @@ std::shared_lock<SharedMutex> Level::lock_committed() const {
         shared.unlock();
         const auto exclusive = lock_exclusive();
         if (static_dirty_) {
-            tasks_.execute([&] { rtcCommitScene(static_scene_); });
+            commit(static_scene_, true, "building the scene");
             rtcCommitGeometry(rtcGetGeometry(top_, static_instance_));
+            check_embree("building the scene");
             static_dirty_ = false;
             top_dirty_ = true;
         }
         if (top_dirty_) {
-            tasks_.execute([&] { rtcCommitScene(top_); });
+            commit(top_, true, "building the scene");
             top_dirty_ = false;
         }
-        check_embree("building the scene");
     }
 }
 

@@ -149,6 +149,9 @@ private:
     // Takes a shared lock on a committed scene; commits pending edits first.
     std::shared_lock<SharedMutex> lock_committed() const;
     void check_embree(const char* what) const;
+    // Commits a scene through the task system (exclusively: under the level's exclusive lock), and
+    // checks Embree's error where the commit ran: Embree keeps errors per thread.
+    void commit(RTCScene scene, bool exclusive, const char* what) const;
     // Where the triangles are, for the near queries; under the shared lock.
     NearTriangles near_triangles() const;
     RayHit resolve_hit(const RTCRayHit& rh, const Ray& ray) const;

@@ -2,13 +2,39 @@
 
 namespace nl {
 
-std::shared_ptr<std::mutex> LinkBakes::serializer(Handle navmesh) {
-    std::lock_guard lock(mutex_);
-    // A removed navmesh keeps no entry (its bake will not be kept either).
-    if (removed_.contains(navmesh)) return std::make_shared<std::mutex>();
-    auto& m = serializers_[key(navmesh)];
-    if (!m) m = std::make_shared<std::mutex>();
-    return m;
+namespace {
+
+thread_local bool holding_turn = false;
+
+}  // namespace
+
+LinkBakes::Turn::Turn(std::shared_ptr<std::mutex> mutex) : mutex_(std::move(mutex)) {
+    mutex_->lock();
+    holding_turn = true;
+}
+
+LinkBakes::Turn::~Turn() {
+    holding_turn = false;
+    mutex_->unlock();
+}
+
+LinkBakes::Turn LinkBakes::take_turn(Handle navmesh) {
+    if (holding_turn)
+        fail(ErrorCode::InvalidArgument, "links cannot be generated or updated from inside another generation or update "
+                                         "(its progress callback or a plugin): it could wait for itself");
+    std::shared_ptr<std::mutex> m;
+    {
+        std::lock_guard lock(mutex_);
+        // A removed navmesh keeps no entry (its bake will not be kept either).
+        if (removed_.contains(navmesh)) {
+            m = std::make_shared<std::mutex>();
+        } else {
+            auto& shared = serializers_[key(navmesh)];
+            if (!shared) shared = std::make_shared<std::mutex>();
+            m = shared;
+        }
+    }
+    return Turn(std::move(m));
 }
 
 void LinkBakes::store(Handle navmesh, Entry entry, FunctionRef<void()> links) {

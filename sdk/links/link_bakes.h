@@ -22,9 +22,21 @@ public:
     };
 
     // Generations and updates of one navmesh run one at a time, from reading its bake to storing its
-    // links, so a later one never loses to an earlier one. Hold the returned mutex for that span.
-    // (A progress callback must not start another on the same navmesh: it would wait for itself.)
-    std::shared_ptr<std::mutex> serializer(Handle navmesh);
+    // links, so a later one never loses to an earlier one: hold a Turn for that span. A thread holds
+    // one turn at a time: asking for a second (from a progress callback or a plugin of the bake it
+    // runs) throws InvalidArgument instead of waiting, because two threads each waiting for the
+    // other's navmesh from inside their callbacks would never wake.
+    class Turn {
+    public:
+        explicit Turn(std::shared_ptr<std::mutex> mutex);
+        ~Turn();
+        Turn(const Turn&) = delete;
+        Turn& operator=(const Turn&) = delete;
+
+    private:
+        std::shared_ptr<std::mutex> mutex_;
+    };
+    Turn take_turn(Handle navmesh);
 
     // The links a bake made and the bake itself change together, so that an update never continues
     // a bake whose links were taken away. Each of these runs `links` (which changes the navmesh's

@@ -1,5 +1,6 @@
 #include "path/path_queue.h"
 
+#include <algorithm>
 #include <chrono>
 #include <new>
 
@@ -117,6 +118,7 @@ void PathQueue::cancel(Handle ticket) {
     }
     --queued_;
     finish(lock, ticket, cancelled());
+    drop_finished_entries();
 }
 
 void PathQueue::release(Handle ticket) {
@@ -134,6 +136,17 @@ void PathQueue::release(Handle ticket) {
     }
     --queued_;
     finish(lock, ticket, cancelled());
+    drop_finished_entries();
+}
+
+void PathQueue::drop_finished_entries() noexcept {
+    if (queue_.size() <= 2 * size_t(queued_) + 64) return;
+    queue_.erase(std::remove_if(queue_.begin(), queue_.end(),
+                                [&](Handle h) {
+                                    const Ticket* t = tickets_.find(h);
+                                    return !t || t->running || t->result.outcome != PathOutcome::Pending;
+                                }),
+                 queue_.end());
 }
 
 void PathQueue::work() {

@@ -80,6 +80,10 @@ private:
     bool run_next(std::unique_lock<std::mutex>& lock);
     // Records the outcome and calls the callback with the lock released.
     void finish(std::unique_lock<std::mutex>& lock, Handle ticket, PathResult result);
+    // Cancelled and released requests leave their entries in queue_ until popped; with nothing
+    // popping (no path workers, no process() calls) they would pile up: dropped once they are most of
+    // it, so the queue stays within twice what is queued.
+    void drop_finished_entries() noexcept;
     Ticket& find(Handle ticket);
     const Ticket& find(Handle ticket) const;
 

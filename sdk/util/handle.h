@@ -1,6 +1,7 @@
 // Generational handles and the slot map that issues them (Box2D-style ids: index + 1, generation).
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <optional>
 #include <utility>
@@ -49,6 +50,8 @@ public:
             free_.pop_back();
         } else {
             index = static_cast<uint32_t>(slots_.size());
+            // Room in free_ for every slot, grown geometrically: erase then never allocates (nor throws).
+            if (free_.capacity() <= slots_.size()) free_.reserve(std::max<size_t>(2 * free_.capacity(), slots_.size() + 16));
             slots_.push_back(Slot{});
         }
         Slot& slot = slots_[index];
@@ -63,10 +66,9 @@ public:
     }
     const T* find(Handle h) const noexcept { return const_cast<SlotMap*>(this)->find(h); }
 
-    bool erase(Handle h) {
+    bool erase(Handle h) noexcept {
         Slot* slot = slot_of(h);
         if (!slot) return false;
-        if (slot->counter < kCounterMask) free_.reserve(free_.size() + 1);  // before any change: may throw
         slot->value.reset();
         --live_;
         if (slot->counter == kCounterMask) {
@@ -123,6 +125,7 @@ private:
 class RemovedHandles {
 public:
     void add(Handle h) {
+        if (h.index1 == 0) return;  // the null handle was never issued
         if (h.index1 > last_removed_.size()) last_removed_.resize(h.index1, 0);
         uint32_t& last = last_removed_[h.index1 - 1];
         if (h.generation > last) last = h.generation;

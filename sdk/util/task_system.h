@@ -6,8 +6,9 @@
 //    and write disjoint outputs), so a parallel_for always finishes, whatever else is waiting.
 //  - Lock-taking calls (the level's queries and edits) are made only by the thread that called into
 //    NavLink, never from inside a body: the level's locks check it (inside_task()).
-//  - execute() may be called while the level's exclusive lock is held (to commit the Embree scene),
-//    so it must not wait for other callers' parallel_for bodies: it runs apart from them.
+//  - execute_exclusive() is called while the level's exclusive lock is held (to commit the Embree
+//    scene), so it must not wait for anything else: it runs in an arena only it enters, one caller
+//    at a time (the lock's holder).
 #pragma once
 
 #include <cstdint>
@@ -31,9 +32,13 @@ public:
                               FunctionRef<void(uint32_t begin, uint32_t end)> body) = 0;
 
     // Runs fn inside the task system's thread limit, so that parallelism inside libraries called by
-    // fn (Embree's BVH builds) uses at most thread_count() threads. Never waits behind parallel_for
-    // bodies of other callers.
+    // fn (Embree's BVH builds) uses at most thread_count() threads. fn may run on another thread than
+    // the caller's (TBB hands it over when the arena is full): read thread-local state, such as
+    // Embree's last error, inside fn. Never waits behind parallel_for bodies.
     virtual void execute(FunctionRef<void()> fn) = 0;
+    // The same, for work done while holding a lock other callers wait for: it never queues behind
+    // anything, because nothing but such work enters its arena, and only the lock's holder does.
+    virtual void execute_exclusive(FunctionRef<void()> fn) = 0;
 
     // True while the calling thread runs a parallel_for body (of any task system).
     static bool inside_task() noexcept;

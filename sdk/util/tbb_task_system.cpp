@@ -12,7 +12,8 @@ namespace {
 
 class TbbTaskSystem final : public TaskSystem {
 public:
-    explicit TbbTaskSystem(int threads) : threads_(std::max(1, threads)), work_arena_(threads_), build_arena_(threads_) {}
+    explicit TbbTaskSystem(int threads)
+        : threads_(std::max(1, threads)), work_arena_(threads_), build_arena_(threads_), exclusive_arena_(threads_) {}
 
     int thread_count() const noexcept override { return threads_; }
 
@@ -40,12 +41,17 @@ public:
         tsan_acquire(&finished);
     }
 
-    // A second arena: a commit made under the level's exclusive lock must not queue for a slot that
-    // a long parallel_for holds (that would only delay it, but every query would wait meanwhile).
-    void execute(FunctionRef<void()> fn) override {
+    // Arenas of their own: a build must not queue for a slot that a long parallel_for holds, and a
+    // commit made under the level's exclusive lock not even behind another build (every query waits
+    // for it meanwhile).
+    void execute(FunctionRef<void()> fn) override { run_in(build_arena_, fn); }
+    void execute_exclusive(FunctionRef<void()> fn) override { run_in(exclusive_arena_, fn); }
+
+private:
+    static void run_in(tbb::task_arena& arena, FunctionRef<void()> fn) {
         char started = 0, finished = 0;  // fn may run on another thread (TBB hands it over)
         tsan_release(&started);
-        build_arena_.execute([&] {
+        arena.execute([&] {
             tsan_acquire(&started);
             fn();
             tsan_release(&finished);
@@ -53,10 +59,10 @@ public:
         tsan_acquire(&finished);
     }
 
-private:
     int threads_;
     tbb::task_arena work_arena_;
     tbb::task_arena build_arena_;
+    tbb::task_arena exclusive_arena_;
 };
 
 }  // namespace

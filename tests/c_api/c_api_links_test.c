@@ -1287,6 +1287,47 @@ static void test_link_settings_json(void) {
  * Cancelling a bake
  * ------------------------------------------------------------------------------------------- */
 
+/* A progress callback that bakes another navmesh: refused at once (it could wait for the bake that
+   called it; two threads doing it crosswise used to hang forever), and the outer bake goes on. */
+typedef struct {
+    nl_world* world;
+    nl_navmesh_id other;
+    nl_status inner_generate, inner_update;
+    int calls;
+} nested_bake;
+
+static int32_t bake_from_progress(void* user, float fraction, const char* stage) {
+    nested_bake* n = (nested_bake*)user;
+    static const float lo[3] = {-1.0f, -1.0f, -1.0f}, hi[3] = {1.0f, 1.0f, 1.0f};
+    (void)fraction;
+    (void)stage;
+    if (n->calls++ == 0) {
+        n->inner_generate = nl_navmesh_generate_links(n->world, n->other, NULL, NULL, NULL, NULL);
+        n->inner_update = nl_navmesh_update_links_in_box(n->world, n->other, lo, hi, NULL, NULL, NULL);
+    }
+    return 1;
+}
+
+static void test_link_nested_bake_refused(void) {
+    nl_world* world = make_world(2);
+    const nl_navmesh_id navmesh = build_level(world, LEVEL_LEDGE);
+    const nl_navmesh_build_def build = nl_default_navmesh_build_def();
+    nested_bake n;
+    g_section = "links: a bake from a progress callback";
+    memset(&n, 0, sizeof n);
+    n.world = world;
+    CHECK_OK(nl_navmesh_build(world, &build, &n.other));
+    CHECK_OK(nl_navmesh_generate_links(world, n.other, NULL, NULL, NULL, NULL));
+    CHECK_OK(nl_navmesh_generate_links(world, navmesh, NULL, bake_from_progress, &n, NULL));
+    CHECK(n.calls > 1);
+    CHECK(n.inner_generate == (NL_STATUS_FAILURE | NL_STATUS_INVALID_ARGUMENT));
+    CHECK(n.inner_update == (NL_STATUS_FAILURE | NL_STATUS_INVALID_ARGUMENT));
+    CHECK(link_count(world, navmesh) > 0u);
+    /* After it, on the same thread, bakes run again. */
+    CHECK_OK(nl_navmesh_generate_links(world, n.other, NULL, NULL, NULL, NULL));
+    nl_world_destroy(world);
+}
+
 static void test_link_cancel(void) {
     static const char* const stages[] = {"edges", "take-off points", "jumps", "drops", "merge"};
     nl_world* world = make_world(2);
@@ -1622,6 +1663,7 @@ void test_links_all(void) {
     test_link_json();
     test_link_settings_json();
     test_link_cancel();
+    test_link_nested_bake_refused();
     test_link_update_in_box();
     test_link_navmesh_removed_during_bake();
     test_link_threads();

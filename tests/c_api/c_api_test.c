@@ -746,6 +746,31 @@ static void test_world_tags_never_repeat_while_alive(void) {
     nl_world_destroy(first);
 }
 
+/* As many worlds as the process can hold at once: the next is refused with OUT_OF_MEMORY and a
+   message saying why, and destroying them makes room again. */
+static void test_world_limit(void) {
+    enum { MOST = 5000 };
+    nl_world** worlds = (nl_world**)calloc(MOST, sizeof(nl_world*));
+    nl_status refused = NL_STATUS_SUCCESS;
+    nl_world* again = NULL;
+    int n = 0, i;
+    g_section = "world limit";
+    if (!CHECK(worlds != NULL)) return;
+    for (; n < MOST; ++n) {
+        nl_world_def def = nl_default_world_def();
+        def.worker_count = 1;
+        def.path_worker_count = 0;
+        refused = nl_world_create(&def, &worlds[n]);
+        if (refused != NL_STATUS_SUCCESS) break;
+    }
+    CHECK_MSG(n >= 500 && n < MOST, "%d worlds at once", n);
+    CHECK_FAIL(refused, NL_STATUS_OUT_OF_MEMORY, "worlds can exist at once");
+    for (i = 0; i < n; ++i) nl_world_destroy(worlds[i]);
+    CHECK_OK(nl_world_create(NULL, &again));
+    nl_world_destroy(again);
+    free(worlds);
+}
+
 static void test_stale_ids(void) {
     nl_world* world = make_world(1);
     nl_mesh_def def = floor_def();
@@ -1715,6 +1740,7 @@ int main(int argc, char** argv) {
     test_get_meshes();
     test_stale_ids();
     test_world_tags_never_repeat_while_alive();
+    test_world_limit();
     test_rays();
     test_ray_batches();
     test_segments();

@@ -84,6 +84,15 @@ int main() {
         return nl_path_request(world, &request, &ticket) == NL_STATUS_SUCCESS &&
                nl_path_process(world, 1, 0.0, &done) == NL_STATUS_SUCCESS && nl_path_release(world, ticket) == NL_STATUS_SUCCESS;
     });
+    // Released before anything plans them (no path workers, no nl_path_process): nothing may stay.
+    churn("path request/release, never planned", 50000, 2.0, [&] {
+        nl_path_request_def request = nl_default_path_request_def();
+        request.navmesh = navmesh;
+        request.start[0] = 0.5f, request.start[2] = 0.5f;
+        request.goal[0] = 3.5f, request.goal[2] = 3.5f;
+        nl_path_ticket ticket{};
+        return nl_path_request(world, &request, &ticket) == NL_STATUS_SUCCESS && nl_path_release(world, ticket) == NL_STATUS_SUCCESS;
+    });
     nl_world_destroy(world);
     std::printf("failures=%d\n", failures);
     return failures == 0 ? 0 : 1;

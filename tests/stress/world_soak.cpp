@@ -1,8 +1,11 @@
-// navlink-world-soak: every thread-safe entry point at once, from several threads, for a bounded
-// time, with each of several worker counts. Link generation and box updates, moves of a movable and of
-// a static mesh with ray and segment queries after each, meshes added and removed, manual link edits,
-// JSON saves and loads, queued and synchronous path requests, navmeshes added and removed with
-// requests on them; at the end of each round the world is destroyed with requests still queued.
+// navlink-world-soak: NavLink's thread-safe entry points at once, from eight threads, for a bounded
+// time, with each of several worker counts. Two generators (full bakes, box updates, and bakes whose
+// progress callback tries to bake the other navmesh: refused, never waited for), moves of a movable
+// and of a static mesh with ray and segment queries after each, meshes added and removed (also from
+// OBJ text), manual link edits, JSON saves and loads, queued and synchronous path requests with
+// nl_path_process and point location beside them, navmeshes added and removed with requests on them,
+// a log callback receiving the failures; at the end of each round the world is destroyed with
+// requests still queued.
 //
 // It fails when any call returns a status its documentation does not allow, when a request finishes
 // other than exactly once, or when a thread stops making progress for `--stall` seconds: a hang is
@@ -58,7 +61,9 @@ struct Worker {
 
 struct Round {
     nl_world* world = nullptr;
+    std::atomic<uint64_t> logged{0};  // failures the world's log callback received
     nl_navmesh_id navmesh{};     // built by Recast from the level, for the default Recast agent
+    nl_navmesh_id thin{};        // built for a thinner agent: a second navmesh to bake
     nl_mesh_id platform{};       // movable
     nl_mesh_id crate{};          // static, moved anyway (its vertices are uploaded again)
     std::atomic<bool> stop{false};
@@ -97,19 +102,44 @@ void query(nl_world* world, std::mt19937& rng) {
            "nl_world_segments_blocked");
 }
 
-void generate(Round& r, Worker& me) {
+// A progress callback that tries to bake from inside the bake: refused at once, never a wait; two
+// generators doing it crosswise, each for the other's navmesh, used to hang.
+struct NestedBake {
+    Round* round;
+    nl_navmesh_id other;
+    bool tried = false;
+};
+
+int32_t bake_from_progress(void* user, float, const char*) {
+    NestedBake& n = *static_cast<NestedBake*>(user);
+    if (!n.tried) {
+        n.tried = true;
+        const nl_status status = nl_navmesh_generate_links(n.round->world, n.other, nullptr, nullptr, nullptr, nullptr);
+        if (status != (NL_STATUS_FAILURE | NL_STATUS_INVALID_ARGUMENT))
+            fail(std::string("a bake from a progress callback returned ") + nl_status_string(status));
+    }
+    return 1;
+}
+
+// Bakes `navmesh`: full generations, box updates, and generations whose progress callback tries to
+// bake `other`.
+void generate(Round& r, Worker& me, nl_navmesh_id navmesh, nl_navmesh_id other) {
     nl_link_settings settings = nl_default_link_settings();
     const float box_min[3] = {10, -2, -1}, box_max[3] = {20, 6, 8};
     for (uint64_t i = 0; !r.stop; ++i) {
         if (i % 3 == 2) {
             me.doing = "nl_navmesh_update_links_in_box";
             // NOT_FOUND: the link editor removed the generated links or loaded a JSON set since.
-            expect(nl_navmesh_update_links_in_box(r.world, r.navmesh, box_min, box_max, nullptr, nullptr, nullptr),
+            expect(nl_navmesh_update_links_in_box(r.world, navmesh, box_min, box_max, nullptr, nullptr, nullptr),
                    "nl_navmesh_update_links_in_box", {NL_STATUS_NOT_FOUND});
+        } else if (i % 3 == 1) {
+            me.doing = "nl_navmesh_generate_links (baking the other navmesh from its progress callback)";
+            NestedBake nested{&r, other};
+            expect(nl_navmesh_generate_links(r.world, navmesh, &settings, bake_from_progress, &nested, nullptr),
+                   "nl_navmesh_generate_links");
         } else {
             me.doing = "nl_navmesh_generate_links";
-            expect(nl_navmesh_generate_links(r.world, r.navmesh, &settings, nullptr, nullptr, nullptr),
-                   "nl_navmesh_generate_links");
+            expect(nl_navmesh_generate_links(r.world, navmesh, &settings, nullptr, nullptr, nullptr), "nl_navmesh_generate_links");
         }
         ++me.steps;
     }
@@ -147,6 +177,13 @@ void edit_level(Round& r, Worker& me) {
             me.doing = "nl_mesh_remove";
             expect(nl_mesh_remove(r.world, added.back()), "nl_mesh_remove");
             added.pop_back();
+        }
+        if (i % 8 == 0) {
+            me.doing = "nl_mesh_add_obj_memory";
+            static const char kObj[] = "v 30 5 30\nv 31 5 30\nv 30 5 31\nf 1 3 2\n";
+            nl_mesh_id obj{};
+            if (expect(nl_mesh_add_obj_memory(r.world, kObj, sizeof kObj - 1, nullptr, &obj), "nl_mesh_add_obj_memory"))
+                expect(nl_mesh_remove(r.world, obj), "nl_mesh_remove (OBJ)");
         }
         me.doing = "queries after a static edit";
         query(r.world, rng);
@@ -257,6 +294,16 @@ void request_paths(Round& r, Worker& me, unsigned seed) {
                 tickets.push_back(ticket);
             }
         }
+        if (i % 16 == 0) {
+            me.doing = "nl_path_process / nl_navmesh_find_nearest";
+            uint32_t done = 0;
+            expect(nl_path_process(r.world, 4, 1.0, &done), "nl_path_process");
+            float points[3 * 16];
+            for (float& p : points) p = random_in(rng, 0, 12);
+            const float half[3] = {2, 4, 2};
+            nl_nav_point near[16];
+            expect(nl_navmesh_find_nearest(r.world, r.navmesh, points, 16, half, near), "nl_navmesh_find_nearest");
+        }
         // Read back and release the older half now and then, so tickets do not pile up.
         if (tickets.size() > 64) {
             me.doing = "nl_path_poll / get_result / release";
@@ -327,17 +374,24 @@ void churn_navmeshes(Round& r, Worker& me) {
     }
 }
 
+void on_log(void* user, nl_log_level, nl_status, const char*) { static_cast<Round*>(user)->logged.fetch_add(1); }
+
 bool set_up(Round& r, int32_t workers) {
     nl_world_def def = nl_default_world_def();
     def.worker_count = workers;
     def.path_worker_count = 2;
+    def.log_fn = on_log;
+    def.log_user = &r;
     if (!expect(nl_world_create(&def, &r.world), "nl_world_create")) return false;
     const nl::levelgen::GeneratedLevel level = nl::levelgen::generate_default_level(1);
     if (!expect(nl::test::add_generated_level(r.world, level), "nl_mesh_add (level)")) return false;
     r.platform = add_box(r.world, {{8, -0.5f, 14}, {12, 0, 18}}, NL_MESH_MOVABLE);
     r.crate = add_box(r.world, {{30, 0, 14}, {31, 1, 15}}, 0);
     const nl_navmesh_build_def build = nl_default_navmesh_build_def();
-    return expect(nl_navmesh_build(r.world, &build, &r.navmesh), "nl_navmesh_build");
+    nl_navmesh_build_def thin = nl_default_navmesh_build_def();
+    thin.agent.radius = 0.3f;
+    return expect(nl_navmesh_build(r.world, &build, &r.navmesh), "nl_navmesh_build") &&
+           expect(nl_navmesh_build(r.world, &thin, &r.thin), "nl_navmesh_build (thin)");
 }
 
 // Requests queued as the world goes: each still calls back exactly once (as cancelled or finished).
@@ -375,7 +429,8 @@ void run_round(int32_t workers, double seconds, double stall_seconds) {
             w.doing = "finished";
         });
     };
-    start("generator", [](Round& r, Worker& w) { generate(r, w); });
+    start("generator", [](Round& r, Worker& w) { generate(r, w, r.navmesh, r.thin); });
+    start("second generator", [](Round& r, Worker& w) { generate(r, w, r.thin, r.navmesh); });
     start("platform mover", [](Round& r, Worker& w) { move_platform(r, w); });
     start("level editor", [](Round& r, Worker& w) { edit_level(r, w); });
     start("link editor", [](Round& r, Worker& w) { edit_links(r, w); });
@@ -421,7 +476,7 @@ void run_round(int32_t workers, double seconds, double stall_seconds) {
         counts += std::string(" ") + w->name + "=" + std::to_string(w->steps.load());
     }
     destroy_with_requests_queued(r);
-    std::printf("workers=%d seconds=%.1f steps=%llu:%s\n", workers, std::chrono::duration<double>(Clock::now() - begin).count(),
+    std::printf("workers=%d logged=%llu seconds=%.1f steps=%llu:%s\n", workers, static_cast<unsigned long long>(r.logged.load()), std::chrono::duration<double>(Clock::now() - begin).count(),
                 static_cast<unsigned long long>(total), counts.c_str());
     for (const auto& w : workers_state) {
         if (w->steps == 0) fail(std::string("thread '") + w->name + "' did nothing");

@@ -152,8 +152,8 @@ NL_API nl_world_def nl_default_world_def(void);
  *  owned by the caller until nl_world_destroy.
  *  Returns NL_STATUS_SUCCESS, or a failure with INVALID_ARGUMENT (null out_world, size of def too
  *  small, worker_count or path_worker_count < -1 or > NL_MAX_WORKERS), OUT_OF_MEMORY (also when
- *  4095 worlds exist at once, the most whose ids can be told apart) or INTERNAL_ERROR (Embree could
- *  not start, or the system refused a thread). Thread-safe. */
+ *  about 1,000 worlds exist at once: each world's Embree device takes one of the process's 1,024
+ *  thread-local keys) or INTERNAL_ERROR (the system refused a thread). Thread-safe. */
 NL_API nl_status nl_world_create(const nl_world_def* def, nl_world** out_world);
 
 /** Destroys a world and everything it owns; every id from it becomes invalid. NULL is ignored.
@@ -723,8 +723,10 @@ typedef int32_t nl_progress_fn(void* user, float fraction, const char* stage);
  *  would put more than 4,000,000 take-off samples on this navmesh's boundary),
  *  PARSE_ERROR (malformed plugin_settings_json, found before any work), CANCELLED (progress
  *  returned 0: the navmesh's links are as they were), OUT_OF_MEMORY.
- *  Generations and updates of one navmesh run one after the other; a progress callback must not
- *  start another on the same navmesh (it would wait for itself). Other navmeshes are independent.
+ *  Generations and updates of one navmesh run one after the other; other navmeshes' run at the same
+ *  time. From inside a generation or update (its progress callback, a link-kind plugin) links cannot
+ *  be generated or updated, on any navmesh: such a call fails with INVALID_ARGUMENT (two threads each
+ *  doing so for the other's navmesh would wait for each other forever).
  *  Thread-safe; parallel over the world's workers; the result does not depend on their number. */
 NL_API nl_status nl_navmesh_generate_links(nl_world* world, nl_navmesh_id navmesh, const nl_link_settings* settings,
                                            nl_progress_fn* progress, void* user, nl_bake_report* out_report);
@@ -738,7 +740,8 @@ NL_API nl_status nl_navmesh_generate_links(nl_world* world, nl_navmesh_id navmes
  *  rebuilt navmesh is a new one: generate its links in full).
  *  Returns SUCCESS, or a failure with NOT_FOUND (never generated, or the generated links were removed or
  *  replaced by a JSON load since or meanwhile: nothing is stored), INVALID_HANDLE, INVALID_ARGUMENT
- *  (a null, non-finite or inverted box), CANCELLED (nothing changed). Thread-safe. */
+ *  (a null, non-finite or inverted box; also when called from inside a generation or update, as
+ *  nl_navmesh_generate_links says), CANCELLED (nothing changed). Thread-safe. */
 NL_API nl_status nl_navmesh_update_links_in_box(nl_world* world, nl_navmesh_id navmesh, const float* box_min,
                                                 const float* box_max, nl_progress_fn* progress, void* user,
                                                 nl_bake_report* out_report);
