@@ -68,6 +68,14 @@ struct BodyStretch {
     OrientedBox bounds;
 };
 
+// Stretches [first, first + count) of a bodies_clear batch that one box holds (a straight run of a
+// path): the level is asked once for the triangles in that box, and each stretch is tested against
+// those.
+struct BodyGroup {
+    OrientedBox bounds;
+    uint32_t first = 0, count = 0;
+};
+
 class NearTriangles;
 
 // Thread-safe: queries run at once under a shared lock, edits take it exclusively. Every method is
@@ -116,6 +124,11 @@ public:
     // the stretch's bounds are not looked at, so the bounds must hold the widest body.
     void bodies_clear(const BodyStretch* stretches, uint32_t count, const float* radii, uint32_t radius_count,
                       uint8_t* out_cleared) const;
+    // The same, the stretches in groups: each group's box must hold its stretches' boxes. Answers
+    // what bodies_clear answers, with one gathering of triangles per group; returns how many
+    // stretches met a triangle in their box (and were tested exactly).
+    uint64_t bodies_clear(const BodyGroup* groups, uint32_t group_count, const BodyStretch* stretches, const float* radii,
+                          uint32_t radius_count, uint8_t* out_cleared) const;
 
 private:
     struct Mesh {

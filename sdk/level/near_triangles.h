@@ -43,9 +43,17 @@ private:
     struct Query {
         const NearTriangles* near;
         Visit* visit;
+        Aabb reach;                        // the box's world bounds: a triangle outside them is skipped
         const Movable* movable = nullptr;  // null while the static scene is asked
         bool stopped = false;
     };
+
+    // Whether the triangle's bounds miss `reach` (cheap, and most of the triangles a sphere gathers
+    // around a long box do: the floor under a body, a wall beside it).
+    static bool outside(const Aabb& reach, const Vec3& a, const Vec3& b, const Vec3& c) {
+        const Vec3 lo = a.cwiseMin(b).cwiseMin(c), hi = a.cwiseMax(b).cwiseMax(c);
+        return (hi.array() < reach.min.array()).any() || (reach.max.array() < lo.array()).any();
+    }
 
     template <typename Visit>
     static bool on_triangle(RTCPointQueryFunctionArguments* args);
@@ -55,17 +63,19 @@ template <typename Visit>
 bool NearTriangles::on_triangle(RTCPointQueryFunctionArguments* args) {
     auto& q = *static_cast<Query<Visit>*>(args->userPtr);
     if (q.stopped) return false;
-    bool stop;
+    Vec3 a, b, c;
     if (!q.movable) {
         const auto [vertices, indices] = q.near->statics[args->geomID];
         const unsigned* t = indices + 3 * size_t(args->primID);
-        stop = (*q.visit)(vertex_at(vertices, t[0]), vertex_at(vertices, t[1]), vertex_at(vertices, t[2]));
+        a = vertex_at(vertices, t[0]), b = vertex_at(vertices, t[1]), c = vertex_at(vertices, t[2]);
     } else {
         const Triangle& t = q.movable->object->triangles[args->primID];
         const Transform& m = *q.movable->to_world;
         const auto& v = q.movable->object->vertices;
-        stop = (*q.visit)(m * v[t[0]], m * v[t[1]], m * v[t[2]]);
+        a = m * v[t[0]], b = m * v[t[1]], c = m * v[t[2]];
     }
+    if (outside(q.reach, a, b, c)) return false;
+    const bool stop = (*q.visit)(a, b, c);
     if (!stop) return false;
     q.stopped = true;
     args->query->radius = 0.0f;  // nothing further can change the answer: shrink the search away
@@ -75,7 +85,10 @@ bool NearTriangles::on_triangle(RTCPointQueryFunctionArguments* args) {
 template <typename Visit>
 bool NearTriangles::visit_near(const OrientedBox& box, Visit&& visit) const {
     using V = std::remove_reference_t<Visit>;
-    Query<V> q{this, &visit};
+    const Vec3 extent = box.axes.cwiseAbs() * box.half_extents;
+    // Padded as the exact tests pad: bounds only ever skip what those would call apart.
+    const Vec3 pad = Vec3::Constant(0.05f + 1e-6f * box.center.cwiseAbs().maxCoeff());
+    Query<V> q{this, &visit, Aabb{box.center - extent - pad, box.center + extent + pad}};
     RTCPointQueryContext context;
     RTCPointQuery query;
     query.x = box.center.x();
@@ -86,11 +99,9 @@ bool NearTriangles::visit_near(const OrientedBox& box, Visit&& visit) const {
     rtcInitPointQueryContext(&context);
     rtcPointQuery(static_scene, &query, &context, &on_triangle<V>, &q);
     if (q.stopped || movables.empty()) return q.stopped;
-    const Vec3 reach = box.axes.cwiseAbs() * box.half_extents;
-    const Aabb bounds{box.center - reach, box.center + reach};
     for (const Movable& movable : movables) {
-        if ((bounds.max.array() < movable.world_bounds.min.array()).any() ||
-            (movable.world_bounds.max.array() < bounds.min.array()).any())
+        if ((q.reach.max.array() < movable.world_bounds.min.array()).any() ||
+            (movable.world_bounds.max.array() < q.reach.min.array()).any())
             continue;
         const Vec3 centre = movable.to_object * box.center;
         query.x = centre.x();

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <unordered_set>
 
 #include "links/clearance.h"
 #include "links/link_merge.h"
@@ -367,11 +368,10 @@ private:
         }
     }
 
-    // A pair that met every geometry-free constraint: its arc's sweep is reused from the old cache
-    // when the box cannot have changed it (and its ends are where they were), else queued in `redo`
-    // with its arc in `arcs`.
-    void add_jump_candidate(uint32_t a, uint32_t b, float gap, LinkBake::Cache& next, std::vector<uint64_t>& redo,
-                            std::vector<JumpArc>& arcs) {
+    // A pair that met every geometry-free constraint: reused from the old cache (with its sweep, if it
+    // had one) when the box cannot have changed it and its ends are where they were; else a new
+    // candidate, to be swept if the ranking reaches it (decide_jumps).
+    void add_jump_candidate(uint32_t a, uint32_t b, float gap, LinkBake::Cache& next) {
         const uint64_t key = pair_key(a, b);
         const Vec3 start = floor_point(next, a), end = floor_point(next, b);
         const auto cached = old_.jumps.find(key);
@@ -380,14 +380,13 @@ private:
             next.jumps.emplace(key, cached->second);
             return;
         }
-        const JumpArc arc(start, end, s_.jump_arc_height);
         LinkBake::JumpCandidate c;
         c.a = a;
         c.b = b;
         c.link.kind = LinkKind::Jump;
         c.link.start = start;
         c.link.end = end;
-        c.link.apex = arc.apex();
+        c.link.apex = JumpArc(start, end, s_.jump_arc_height).apex();
         c.link.bidirectional = true;  // every jump constraint holds both ways
         c.link.generated = true;
         c.link.start_polygon = samples_[a].polygon;
@@ -395,86 +394,137 @@ private:
         set_requirements_from_ends(c.link);
         c.link.requirements.gap = gap;
         next.jumps.emplace(key, c);
-        redo.push_back(key);
-        arcs.push_back(arc);
     }
 
-    // Which pieces' straight runs no triangle comes near: one box query clears a run through open
-    // air. Those pieces are clear for every radius swept.
-    std::vector<uint8_t> runs_in_open_air(const std::vector<std::vector<SweepPiece>>& pieces, const std::vector<size_t>& first_piece) {
-        std::vector<uint8_t> open_air(first_piece.back(), 0);
-        std::vector<std::vector<PieceRun>> runs(pieces.size());
-        tasks_.parallel_for(static_cast<uint32_t>(pieces.size()), 256, [&](uint32_t begin, uint32_t end) {
-            for (uint32_t i = begin; i < end; ++i) runs[i] = straight_runs(pieces[i]);
+    // A take-off point faces a whole edge across a gap: of its clear jumps to that edge, only the
+    // most head-on one is a distinct traversal (the others cross it diagonally). The candidates are
+    // ranked, best first: facing both edges most squarely, then the narrowest gap, then by take-off
+    // order; going down the ranking, one is kept if it is clear and neither end's take-off point is
+    // linked to the other end's edge yet. So a candidate needs a sweep only when the ranking reaches
+    // it: this walks the ranking and either returns the kept candidates (every one it reached was
+    // swept) or fills `pending` with the candidates to sweep next (those the walk reached unswept,
+    // and no later one that the outcome of theirs could exclude). `report` counts the rejections of
+    // a finished walk.
+    std::vector<const LinkBake::JumpCandidate*> walk_jump_ranking(const LinkBake::Cache& c, std::vector<uint64_t>* pending,
+                                                                  BakeReport* report) const {
+        auto squareness = [&](const LinkBake::JumpCandidate& j) {
+            Vec3 heading = j.link.end - j.link.start;
+            heading.y() = 0.0f;
+            heading.normalize();
+            return std::min(samples_[j.a].outward.dot(heading), samples_[j.b].outward.dot(-heading));
+        };
+        std::vector<std::pair<float, const LinkBake::JumpCandidate*>> ranked;
+        ranked.reserve(c.jumps.size());
+        for (const auto& [key, j] : c.jumps) ranked.emplace_back(squareness(j), &j);
+        std::sort(ranked.begin(), ranked.end(), [](const auto& x, const auto& y) {
+            if (x.first != y.first) return x.first > y.first;
+            if (x.second->link.requirements.gap != y.second->link.requirements.gap)
+                return x.second->link.requirements.gap < y.second->link.requirements.gap;
+            return std::make_pair(x.second->a, x.second->b) < std::make_pair(y.second->a, y.second->b);
         });
-        std::vector<std::pair<uint32_t, PieceRun>> all_runs;  // (path, run)
-        for (uint32_t i = 0; i < pieces.size(); ++i)
-            for (const PieceRun& run : runs[i]) all_runs.emplace_back(i, run);
-        const float widest = kSweepRadii[kSweepRadiusCount - 1] * body_.radius;
-        std::vector<OrientedBox> run_boxes(all_runs.size());
-        tasks_.parallel_for(static_cast<uint32_t>(all_runs.size()), 64, [&](uint32_t begin, uint32_t end) {
-            for (uint32_t n = begin; n < end; ++n) run_boxes[n] = run_box(pieces[all_runs[n].first], all_runs[n].second, body_, widest);
-        });
-        std::vector<uint8_t> empty(all_runs.size(), 0);
-        level_.boxes_empty(run_boxes.data(), static_cast<uint32_t>(run_boxes.size()), empty.data());
-        report_.box_queries += all_runs.size();
-        for (size_t n = 0; n < all_runs.size(); ++n) {
-            if (!empty[n]) continue;
-            const size_t base = first_piece[all_runs[n].first];
-            std::fill(open_air.begin() + base + all_runs[n].second.first, open_air.begin() + base + all_runs[n].second.last, 1);
+        std::unordered_set<uint64_t> taken, waiting;  // (take-off point, edge across): linked, or awaiting a sweep
+        std::vector<const LinkBake::JumpCandidate*> kept;
+        for (const auto& [score, j] : ranked) {
+            const uint64_t from_a = pair_key(j->a, samples_[j->b].edge), from_b = pair_key(j->b, samples_[j->a].edge);
+            if (taken.count(from_a) || taken.count(from_b)) {
+                if (report) ++report->rejected_duplicate;
+                continue;
+            }
+            if (waiting.count(from_a) || waiting.count(from_b)) continue;  // decided by an earlier one's sweep
+            if (!j->sweep.swept) {
+                if (pending) pending->push_back(pair_key(j->a, j->b));
+                waiting.insert(from_a);
+                waiting.insert(from_b);
+                continue;
+            }
+            if (!j->sweep.clear) {
+                if (report) ++report->rejected_clearance;
+                continue;
+            }
+            taken.insert(from_a);
+            taken.insert(from_b);
+            kept.push_back(j);
         }
-        return open_air;
+        return kept;
+    }
+
+    // Sweeps the candidates the ranking reaches, a round at a time, until it is decided.
+    void decide_jumps(LinkBake::Cache& next) {
+        const double piece = 1.0 / s_.arc_segments;
+        for (;;) {
+            std::vector<uint64_t> pending;
+            walk_jump_ranking(next, &pending, nullptr);
+            if (pending.empty()) return;
+            std::sort(pending.begin(), pending.end());  // a batch in a fixed order, whatever the map's
+            std::vector<std::vector<Vec3>> arcs(pending.size());
+            std::vector<PathPoints> paths(pending.size());
+            for (size_t n = 0; n < pending.size(); ++n) {
+                const Link& l = next.jumps[pending[n]].link;
+                const JumpArc arc(l.start, l.end, s_.jump_arc_height);
+                arcs[n] = arc.points(s_.arc_segments);
+                paths[n] = PathPoints{arcs[n].data(), arcs[n].size(), arc.sagitta(0.0, piece)};
+            }
+            const std::vector<LinkBake::Sweep> swept = sweep(paths);
+            for (size_t n = 0; n < pending.size(); ++n) next.jumps[pending[n]].sweep = swept[n];
+        }
     }
 
     // Sweeps each path with the agent's body and bodies 1.5 and 2 times as wide (Body, kSweepRadii),
     // every piece tested exactly against the triangles near it: a path is clear if the agent's body
     // touches nothing anywhere along it, and as wide as the widest body that touches nothing. Indexed
-    // bakes test only the pieces whose straight runs are not in open air.
+    // bakes ask the level for the triangles around each straight run of pieces once (a run through
+    // open air costs that one query) and test the run's pieces against those; brute-force bakes ask
+    // for each piece on its own.
     std::vector<LinkBake::Sweep> sweep(const std::vector<PathPoints>& paths) {
         std::vector<LinkBake::Sweep> out(paths.size());
         std::vector<std::vector<SweepPiece>> pieces(paths.size());
+        std::vector<std::vector<PieceRun>> runs(paths.size());
         const float widest = kSweepRadii[kSweepRadiusCount - 1] * body_.radius;
         tasks_.parallel_for(static_cast<uint32_t>(paths.size()), 64, [&](uint32_t begin, uint32_t end) {
             for (uint32_t i = begin; i < end; ++i) {
                 pieces[i] = sweep_pieces(paths[i], s_.clearance_margin, body_.radius);
+                if (method_ == BakeMethod::Indexed) runs[i] = straight_runs(pieces[i]);
                 Aabb& b = out[i].bounds;
                 for (size_t n = 0; n < paths[i].count; ++n) b.grow(paths[i].points[n]);
                 b.min -= Vec3(widest, paths[i].slack, widest);
                 b.max += Vec3(widest, body_.height + paths[i].slack, widest);
             }
         });
+        // Stretches in path order; groups: each path's runs, then its pieces in no run, one each.
         std::vector<size_t> first_piece(paths.size() + 1, 0);
         for (size_t i = 0; i < paths.size(); ++i) first_piece[i + 1] = first_piece[i] + pieces[i].size();
         const auto piece_count = static_cast<uint32_t>(first_piece.back());
-        std::vector<uint32_t> path_of(piece_count);
-        for (uint32_t i = 0; i < paths.size(); ++i)
-            for (size_t k = first_piece[i]; k < first_piece[i + 1]; ++k) path_of[k] = i;
-        std::vector<uint8_t> cleared(piece_count, 0);
-        if (method_ == BakeMethod::Indexed) {
-            const std::vector<uint8_t> open_air = runs_in_open_air(pieces, first_piece);
-            for (uint32_t k = 0; k < piece_count; ++k)
-                if (open_air[k]) cleared[k] = kSweepRadiusCount;
+        std::vector<BodyStretch> stretches(piece_count);
+        std::vector<uint32_t> group_first(paths.size() + 1, 0);
+        for (size_t i = 0; i < paths.size(); ++i) {
+            uint32_t in_runs = 0;
+            for (const PieceRun& run : runs[i]) in_runs += run.last - run.first;
+            group_first[i + 1] = group_first[i] + static_cast<uint32_t>(runs[i].size() + pieces[i].size() - in_runs);
         }
-        std::vector<uint32_t> tested;
-        for (uint32_t k = 0; k < piece_count; ++k)
-            if (cleared[k] == 0) tested.push_back(k);
-        std::vector<BodyStretch> stretches(tested.size());
-        tasks_.parallel_for(static_cast<uint32_t>(tested.size()), 256, [&](uint32_t begin, uint32_t end) {
-            for (uint32_t n = begin; n < end; ++n) {
-                const uint32_t k = tested[n], i = path_of[k];
-                stretches[n] = stretch_of(pieces[i][k - first_piece[i]], body_, widest);
+        std::vector<BodyGroup> groups(group_first.back());
+        tasks_.parallel_for(static_cast<uint32_t>(paths.size()), 64, [&](uint32_t begin, uint32_t end) {
+            for (uint32_t i = begin; i < end; ++i) {
+                const auto base = static_cast<uint32_t>(first_piece[i]);
+                for (size_t k = 0; k < pieces[i].size(); ++k) stretches[base + k] = stretch_of(pieces[i][k], body_, widest);
+                uint32_t g = group_first[i], next = 0;
+                for (const PieceRun& run : runs[i]) {
+                    for (; next < run.first; ++next) groups[g++] = BodyGroup{stretches[base + next].bounds, base + next, 1};
+                    groups[g++] = BodyGroup{run_box(pieces[i], run, body_, widest), base + run.first, run.last - run.first};
+                    next = run.last;
+                }
+                for (; next < pieces[i].size(); ++next) groups[g++] = BodyGroup{stretches[base + next].bounds, base + next, 1};
             }
         });
         std::array<float, kSweepRadiusCount> radii;
         for (unsigned r = 0; r < kSweepRadiusCount; ++r) radii[r] = kSweepRadii[r] * body_.radius;
-        std::vector<uint8_t> tested_cleared(tested.size(), 0);
-        level_.bodies_clear(stretches.data(), static_cast<uint32_t>(stretches.size()), radii.data(), kSweepRadiusCount,
-                            tested_cleared.data());
-        report_.body_tests += tested.size();
-        for (size_t n = 0; n < tested.size(); ++n) cleared[tested[n]] = tested_cleared[n];
+        std::vector<uint8_t> cleared(piece_count, 0);
+        report_.body_tests += level_.bodies_clear(groups.data(), static_cast<uint32_t>(groups.size()), stretches.data(),
+                                                  radii.data(), kSweepRadiusCount, cleared.data());
+        report_.box_queries += groups.size();
         for (size_t i = 0; i < paths.size(); ++i) {
             uint8_t fewest = kSweepRadiusCount;
             for (size_t k = first_piece[i]; k < first_piece[i + 1]; ++k) fewest = std::min(fewest, cleared[k]);
+            out[i].swept = true;
             out[i].clear = fewest > 0;
             out[i].width = fewest > 0 ? 2.0f * radii[fewest - 1] : 0.0f;
         }
@@ -504,8 +554,6 @@ private:
         if (method_ == BakeMethod::Indexed)
             for (uint32_t i : valid) grid[cell_of(samples_[i].point)].push_back(i);
 
-        std::vector<uint64_t> redo;
-        std::vector<JumpArc> arcs;
         constexpr size_t kBlock = 2048;
         std::vector<std::vector<std::pair<uint32_t, float>>> candidates(kBlock);  // (partner, gap)
         std::vector<std::array<uint32_t, 7>> verdicts(kBlock);
@@ -530,20 +578,12 @@ private:
             });
             for (uint32_t n = 0; n < size; ++n) {
                 for (size_t v = 0; v < verdicts[n].size(); ++v) count(static_cast<PairVerdict>(v), verdicts[n][v]);
-                for (const auto& [b, gap] : candidates[n]) add_jump_candidate(valid[block + n], b, gap, next, redo, arcs);
+                for (const auto& [b, gap] : candidates[n]) add_jump_candidate(valid[block + n], b, gap, next);
             }
         }
         report_.jump_candidates = static_cast<uint32_t>(next.jumps.size());
         step(0.35f, "jump clearance");
-        std::vector<std::vector<Vec3>> arc_points(arcs.size());
-        std::vector<PathPoints> paths(arcs.size());
-        const double piece = 1.0 / s_.arc_segments;
-        for (size_t k = 0; k < arcs.size(); ++k) {
-            arc_points[k] = arcs[k].points(s_.arc_segments);
-            paths[k] = PathPoints{arc_points[k].data(), arc_points[k].size(), arcs[k].sagitta(0.0, piece)};
-        }
-        const std::vector<LinkBake::Sweep> swept = sweep(paths);
-        for (size_t k = 0; k < redo.size(); ++k) next.jumps[redo[k]].sweep = swept[k];
+        decide_jumps(next);
     }
 
     // Drops: probes down from past the rim along rotated outward directions, then the fall's sweep.
@@ -614,37 +654,92 @@ private:
             const uint32_t k = landed[n];
             settle(next, next.drops[probed[k]], headings[k], landings[k], floor_rays[n], floors[n]);
         }
-        // Landed probes: the fresh ones, and the reused ones whose sweeps the box touches. A drop low
-        // enough to jump back up has that jump's arc swept too, in the same batch.
+        // Sweeps known: the reused probes' whose bounds the box does not touch. Of each take-off point's
+        // probes landing on one surface only the most head-on clear one is kept, so they are swept in
+        // that order, a round at a time, until one is clear: the others need no sweep.
         std::vector<uint8_t> fresh(next.drops.size(), 0);
         for (uint32_t k : probed) fresh[k] = 1;
-        std::vector<uint32_t> to_sweep;
         for (uint32_t k = 0; k < next.drops.size(); ++k) {
-            const LinkBake::DropProbe& d = next.drops[k];
-            if (d.outcome == 0 && (fresh[k] || touches(d.sweep.bounds, box_) || touches(d.back.bounds, box_))) to_sweep.push_back(k);
+            LinkBake::DropProbe& d = next.drops[k];
+            if (fresh[k] || touches(d.sweep.bounds, box_)) d.sweep = LinkBake::Sweep{};
+            if (fresh[k] || touches(d.back.bounds, box_)) d.back = LinkBake::Sweep{};
         }
         step(0.8f, "drop clearance");
-        std::vector<PathPoints> paths;
-        std::vector<uint32_t> back_of;  // drops whose jump back is swept, in to_sweep order
-        std::vector<std::vector<Vec3>> arcs;
-        for (uint32_t k : to_sweep) {
-            paths.push_back(PathPoints{next.drops[k].fall.data(), next.drops[k].fall.size(), 0.0f});
-            if (next.drops[k].link.bidirectional) back_of.push_back(k);
+        for (;;) {
+            std::vector<uint32_t> round;
+            for_each_way_down(next, [&](const std::vector<uint32_t>& way) {
+                for (uint32_t k : way) {
+                    const LinkBake::Sweep& sw = next.drops[k].sweep;
+                    if (!sw.swept) round.push_back(k);
+                    if (!sw.swept || sw.clear) return;
+                }
+            });
+            if (round.empty()) break;
+            std::vector<PathPoints> paths;
+            for (uint32_t k : round) paths.push_back(PathPoints{next.drops[k].fall.data(), next.drops[k].fall.size(), 0.0f});
+            const std::vector<LinkBake::Sweep> swept = sweep(paths);
+            for (size_t n = 0; n < round.size(); ++n) next.drops[round[n]].sweep = swept[n];
         }
-        arcs.reserve(back_of.size());
+        // The jump back up of each kept drop low enough for one.
+        std::vector<uint32_t> back_of;
+        for_each_way_down(next, [&](const std::vector<uint32_t>& way) {
+            const uint32_t* kept = kept_probe(next, way);
+            if (kept && next.drops[*kept].link.bidirectional && !next.drops[*kept].back.swept) back_of.push_back(*kept);
+        });
+        std::vector<std::vector<Vec3>> arcs(back_of.size());
+        std::vector<PathPoints> paths(back_of.size());
         const double piece = 1.0 / s_.arc_segments;
-        for (uint32_t k : back_of) {
-            const Link& l = next.drops[k].link;
+        for (size_t n = 0; n < back_of.size(); ++n) {
+            const Link& l = next.drops[back_of[n]].link;
             const JumpArc arc(l.end, l.start, s_.jump_arc_height);
-            arcs.push_back(arc.points(s_.arc_segments));
-            paths.push_back(PathPoints{arcs.back().data(), arcs.back().size(), arc.sagitta(0.0, piece)});
+            arcs[n] = arc.points(s_.arc_segments);
+            paths[n] = PathPoints{arcs[n].data(), arcs[n].size(), arc.sagitta(0.0, piece)};
         }
-        const std::vector<LinkBake::Sweep> swept = sweep(paths);
-        for (size_t n = 0; n < to_sweep.size(); ++n) {
-            next.drops[to_sweep[n]].sweep = swept[n];
-            next.drops[to_sweep[n]].back = LinkBake::Sweep{};
+        const std::vector<LinkBake::Sweep> back = sweep(paths);
+        for (size_t n = 0; n < back_of.size(); ++n) next.drops[back_of[n]].back = back[n];
+    }
+
+    // Calls each(way) for every way down: the landed probes of one take-off point whose landings
+    // share a surface, most head-on first (the least turned from the edge's outward direction, the
+    // first in drop_angles on a tie). A probe joins the first way whose first probe lands on its
+    // surface: a walkable surface joined to that landing on foot, within max_climb of its height.
+    template <typename Each>
+    void for_each_way_down(const LinkBake::Cache& c, Each&& each) const {
+        std::vector<uint32_t> landed;
+        std::vector<std::vector<uint32_t>> ways;
+        for (size_t first = 0; first < c.drops.size();) {
+            const uint64_t sample = c.drops[first].key >> 32;
+            size_t last = first;
+            while (last < c.drops.size() && (c.drops[last].key >> 32) == sample) ++last;
+            landed.clear();
+            for (size_t k = first; k < last; ++k)
+                if (c.drops[k].outcome == 0) landed.push_back(static_cast<uint32_t>(k));
+            auto turn = [&](uint32_t k) { return std::fabs(s_.drop_angles[static_cast<uint32_t>(c.drops[k].key)]); };
+            std::stable_sort(landed.begin(), landed.end(), [&](uint32_t x, uint32_t y) { return turn(x) < turn(y); });
+            ways.clear();
+            for (uint32_t k : landed) {
+                const Link& b = c.drops[k].link;
+                auto same = std::find_if(ways.begin(), ways.end(), [&](const std::vector<uint32_t>& way) {
+                    const Link& a = c.drops[way.front()].link;
+                    return walk_.surface(a.end_polygon) == walk_.surface(b.end_polygon) &&
+                           std::fabs(a.end.y() - b.end.y()) <= mesh_.agent().max_climb;
+                });
+                if (same != ways.end()) same->push_back(k);
+                else ways.push_back({k});
+            }
+            for (const auto& way : ways) each(way);
+            first = last;
         }
-        for (size_t n = 0; n < back_of.size(); ++n) next.drops[back_of[n]].back = swept[to_sweep.size() + n];
+    }
+
+    // A way down's kept probe: its first swept and clear one, or none.
+    static const uint32_t* kept_probe(const LinkBake::Cache& c, const std::vector<uint32_t>& way) {
+        for (const uint32_t& k : way) {
+            const LinkBake::Sweep& sw = c.drops[k].sweep;
+            if (!sw.swept) return nullptr;
+            if (sw.clear) return &k;
+        }
+        return nullptr;
     }
 
     // How far out along drop probe `angle`'s heading the ground falls away: the rim found straight
@@ -714,86 +809,40 @@ private:
         return links;
     }
 
-    // The clear drops, in key order, one per take-off point and landing surface: of a take-off
-    // point's drops, the most head-on (the least turned from its edge's outward direction; the first
-    // in drop_angles on a tie) is kept, and another only if it lands on another surface than every
-    // one kept: a walkable surface of its own (not joined to theirs on foot), or one more than the
-    // agent's max_climb above or below theirs.
+    // The kept drops, in key order: one per way down (for_each_way_down), its most head-on clear
+    // probe. The ways' other probes are duplicates, unless blocked.
     std::vector<Link> one_drop_per_way_down(const LinkBake::Cache& c) {
+        for (const LinkBake::DropProbe& d : c.drops) {
+            if (d.outcome == 1) ++report_.rejected_no_landing;
+            else if (d.outcome == 2) ++report_.rejected_too_shallow;
+            else if (d.outcome == 3) ++report_.rejected_too_deep;
+        }
+        std::vector<uint32_t> kept;
+        for_each_way_down(c, [&](const std::vector<uint32_t>& way) {
+            const uint32_t* keep = kept_probe(c, way);
+            for (const uint32_t& k : way) {
+                if (&k == keep) kept.push_back(k);
+                else if (c.drops[k].sweep.swept && !c.drops[k].sweep.clear) ++report_.rejected_clearance;
+                else ++report_.rejected_duplicate;
+            }
+        });
+        std::sort(kept.begin(), kept.end());
         std::vector<Link> out;
-        for (size_t first = 0; first < c.drops.size();) {
-            const uint64_t sample = c.drops[first].key >> 32;
-            size_t last = first;
-            while (last < c.drops.size() && (c.drops[last].key >> 32) == sample) ++last;
-            std::vector<const LinkBake::DropProbe*> clear;
-            for (size_t k = first; k < last; ++k) {
-                const LinkBake::DropProbe& d = c.drops[k];
-                if (d.outcome == 1) ++report_.rejected_no_landing;
-                else if (d.outcome == 2) ++report_.rejected_too_shallow;
-                else if (d.outcome == 3) ++report_.rejected_too_deep;
-                else if (!d.sweep.clear) ++report_.rejected_clearance;
-                else clear.push_back(&d);
-            }
-            auto turn = [&](const LinkBake::DropProbe* d) { return std::fabs(s_.drop_angles[static_cast<uint32_t>(d->key)]); };
-            std::stable_sort(clear.begin(), clear.end(), [&](const auto* x, const auto* y) { return turn(x) < turn(y); });
-            std::vector<const LinkBake::DropProbe*> kept;
-            for (const LinkBake::DropProbe* d : clear) {
-                const bool same_way = std::any_of(kept.begin(), kept.end(), [&](const LinkBake::DropProbe* k) {
-                    const Link &a = k->link, &b = d->link;
-                    return walk_.surface(a.end_polygon) == walk_.surface(b.end_polygon) &&
-                           std::fabs(a.end.y() - b.end.y()) <= mesh_.agent().max_climb;
-                });
-                if (same_way) ++report_.rejected_duplicate;
-                else kept.push_back(d);
-            }
-            std::sort(kept.begin(), kept.end(), [](const auto* x, const auto* y) { return x->key < y->key; });
-            for (const LinkBake::DropProbe* d : kept) {
-                out.push_back(d->link);
-                Link& l = out.back();
-                l.requirements.clearance_width = d->sweep.width;
-                // Both ways only if the body fits the jump back up as well.
-                if (l.bidirectional && !d->back.clear) l.bidirectional = false;
-                if (l.bidirectional) l.requirements.clearance_width = std::min(d->sweep.width, d->back.width);
-            }
-            first = last;
+        for (uint32_t k : kept) {
+            const LinkBake::DropProbe& d = c.drops[k];
+            out.push_back(d.link);
+            Link& l = out.back();
+            l.requirements.clearance_width = d.sweep.width;
+            // Both ways only if the body fits the jump back up as well.
+            if (l.bidirectional && !d.back.clear) l.bidirectional = false;
+            if (l.bidirectional) l.requirements.clearance_width = std::min(d.sweep.width, d.back.width);
         }
         return out;
     }
 
-    // A take-off point faces a whole edge across a gap: of its clear jumps to that edge, only the
-    // most head-on one is a distinct traversal (the others cross it diagonally). Best first: facing
-    // both edges most squarely, then shortest, then by take-off order.
+    // The kept jumps (walk_jump_ranking), in take-off order.
     std::vector<Link> straightest_jumps(const LinkBake::Cache& c) {
-        std::vector<const LinkBake::JumpCandidate*> clear;
-        for (const auto& [key, j] : c.jumps) {
-            if (j.sweep.clear) clear.push_back(&j);
-            else ++report_.rejected_clearance;
-        }
-        auto squareness = [&](const LinkBake::JumpCandidate& j) {
-            Vec3 heading = j.link.end - j.link.start;
-            heading.y() = 0.0f;
-            heading.normalize();
-            return std::min(samples_[j.a].outward.dot(heading), samples_[j.b].outward.dot(-heading));
-        };
-        std::vector<std::pair<float, const LinkBake::JumpCandidate*>> ranked;
-        for (const auto* j : clear) ranked.emplace_back(squareness(*j), j);
-        std::sort(ranked.begin(), ranked.end(), [](const auto& x, const auto& y) {
-            if (x.first != y.first) return x.first > y.first;
-            if (x.second->link.requirements.gap != y.second->link.requirements.gap)
-                return x.second->link.requirements.gap < y.second->link.requirements.gap;
-            return std::make_pair(x.second->a, x.second->b) < std::make_pair(y.second->a, y.second->b);
-        });
-        std::unordered_map<uint64_t, bool> taken;  // (take-off point, edge across) already linked
-        std::vector<const LinkBake::JumpCandidate*> kept;
-        for (const auto& [score, j] : ranked) {
-            const uint64_t from_a = pair_key(j->a, samples_[j->b].edge), from_b = pair_key(j->b, samples_[j->a].edge);
-            if (taken[from_a] || taken[from_b]) {
-                ++report_.rejected_duplicate;
-                continue;
-            }
-            taken[from_a] = taken[from_b] = true;
-            kept.push_back(j);
-        }
+        std::vector<const LinkBake::JumpCandidate*> kept = walk_jump_ranking(c, nullptr, &report_);
         std::sort(kept.begin(), kept.end(), [](const auto* x, const auto* y) { return std::make_pair(x->a, x->b) < std::make_pair(y->a, y->b); });
         std::vector<Link> links;
         for (const auto* j : kept) {

@@ -37,6 +37,7 @@ public:
         Aabb bounds;           // everything its probes touched
     };
     struct Sweep {
+        bool swept = false;    // the rest is known (a drop probe is swept only if it may be kept)
         bool clear = false;
         float width = 0.0f;    // widest body found clear (2, 3 or 4 agent radii)
         Aabb bounds;           // the widest sweep's reach
