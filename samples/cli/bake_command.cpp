@@ -10,6 +10,7 @@
 #include "navigable_level.h"
 #include "navmesh_contents.h"
 #include "picture_export.h"
+#include "sample_error.h"
 #include "text_file.h"
 
 namespace nl::cli {
@@ -27,6 +28,12 @@ int run_bake(int argc, char** argv) {
     // Read every input before the slow work, so a bad file fails at once.
     const samples::AgentProfile agent =
         args.has("agent") ? samples::read_agent_file(*args.value("agent")) : samples::default_agent_profile();
+    // Links are generated for a body and shared by every agent with it; what each agent can take is
+    // chosen when its path is planned. A capability here would silently change nothing.
+    if (!agent.first_capability_key.empty())
+        throw samples::SampleError(*args.value("agent") + ": " + agent.first_capability_key +
+                                   " is a capability: capabilities choose links when a path is planned (navlink path "
+                                   "--agent); bake reads only the body (radius, height, max_climb, max_slope)");
     const samples::GenerationSettings settings = args.has("settings")
                                                      ? samples::read_generation_settings_file(*args.value("settings"))
                                                      : samples::GenerationSettings();

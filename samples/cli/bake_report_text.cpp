@@ -28,8 +28,11 @@ void print_bake_report(std::FILE* out, const nl_bake_report& r, const std::vecto
         {"rise", r.rejected_rise},
         {"angle", r.rejected_angle},
         {"no landing", r.rejected_no_landing},
-        {"clearance", r.rejected_clearance},
+        {"body touches the level", r.rejected_clearance},
         {"duplicate", r.rejected_duplicate},
+        {"walking is about as short", r.rejected_walkable},
+        {"drop too shallow (walked)", r.rejected_too_shallow},
+        {"drop too deep", r.rejected_too_deep},
     };
     for (const auto& item : rejected) std::fprintf(out, "  %-26s %8u\n", item.reason, item.count);
     std::fprintf(out, "time (ms):\n");
@@ -45,6 +48,7 @@ void print_bake_report(std::FILE* out, const nl_bake_report& r, const std::vecto
     for (const auto& item : stages) std::fprintf(out, "  %-26s %8.1f\n", item.stage, item.ms);
     std::fprintf(out, "  %-26s %8llu\n", "rays cast", static_cast<unsigned long long>(r.rays_cast));
     std::fprintf(out, "  %-26s %8llu\n", "box queries", static_cast<unsigned long long>(r.box_queries));
+    std::fprintf(out, "  %-26s %8llu\n", "exact body tests", static_cast<unsigned long long>(r.body_tests));
 }
 
 }  // namespace nl::cli

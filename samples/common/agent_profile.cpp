@@ -87,6 +87,12 @@ AgentProfile parse_agent_json(const std::string& text, const std::string& source
         profile.capabilities.abilities = it->get<uint64_t>();
     }
     profile.capabilities.radius = profile.body.radius;
+    for (const char* key : {"max_jump_distance", "max_jump_height", "max_drop_height", "abilities"}) {
+        if (json.contains(key)) {
+            profile.first_capability_key = key;
+            break;
+        }
+    }
     return profile;
 }
 

@@ -18,6 +18,7 @@ struct AgentProfile {
     std::string name;
     nl_agent_type body;                  // for the navmesh (radius, height, max_climb, max_slope)
     nl_agent_capabilities capabilities;  // for paths; capabilities.radius is body.radius
+    std::string first_capability_key;    // the first capability key the file gave ("" if none)
 };
 
 // Recast's default body (radius 0.6, height 2, climb 0.9, slope 45) that takes every link the

@@ -73,7 +73,8 @@ TEST_CASE("navlink bake on the generated level: links file, report and picture a
     CHECK(std::stoul(m[1]) == links.at("links").size());
     CHECK(std::stoul(m[2]) == counts.jump);
     CHECK(std::stoul(m[3]) == counts.drop);
-    for (const char* line : {"rejected:", "clearance", "time (ms):", "navmesh", "links total"})
+    for (const char* line : {"rejected:", "body touches the level", "walking is about as short", "drop too deep", "time (ms):",
+                             "navmesh", "links total", "exact body tests"})
         CHECK_MESSAGE(run.out.find(line) != std::string::npos, line);
     CHECK(nl::test::is_png(files.dir + "/view.png", 1600));
 
