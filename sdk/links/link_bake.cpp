@@ -448,23 +448,29 @@ private:
         return kept;
     }
 
+    // Sweeps the jump arcs between each pair of ends (from the first to the second).
+    std::vector<LinkBake::Sweep> sweep_arcs(const std::vector<std::pair<Vec3, Vec3>>& ends) {
+        const double piece = 1.0 / s_.arc_segments;
+        std::vector<std::vector<Vec3>> arcs(ends.size());
+        std::vector<PathPoints> paths(ends.size());
+        for (size_t n = 0; n < ends.size(); ++n) {
+            const JumpArc arc(ends[n].first, ends[n].second, s_.jump_arc_height);
+            arcs[n] = arc.points(s_.arc_segments);
+            paths[n] = PathPoints{arcs[n].data(), arcs[n].size(), arc.sagitta(0.0, piece)};
+        }
+        return sweep(paths);
+    }
+
     // Sweeps the candidates the ranking reaches, a round at a time, until it is decided.
     void decide_jumps(LinkBake::Cache& next) {
-        const double piece = 1.0 / s_.arc_segments;
         for (;;) {
             std::vector<uint64_t> pending;
             walk_jump_ranking(next, &pending, nullptr);
             if (pending.empty()) return;
             std::sort(pending.begin(), pending.end());  // a batch in a fixed order, whatever the map's
-            std::vector<std::vector<Vec3>> arcs(pending.size());
-            std::vector<PathPoints> paths(pending.size());
-            for (size_t n = 0; n < pending.size(); ++n) {
-                const Link& l = next.jumps[pending[n]].link;
-                const JumpArc arc(l.start, l.end, s_.jump_arc_height);
-                arcs[n] = arc.points(s_.arc_segments);
-                paths[n] = PathPoints{arcs[n].data(), arcs[n].size(), arc.sagitta(0.0, piece)};
-            }
-            const std::vector<LinkBake::Sweep> swept = sweep(paths);
+            std::vector<std::pair<Vec3, Vec3>> ends;
+            for (uint64_t key : pending) ends.emplace_back(next.jumps[key].link.start, next.jumps[key].link.end);
+            const std::vector<LinkBake::Sweep> swept = sweep_arcs(ends);
             for (size_t n = 0; n < pending.size(); ++n) next.jumps[pending[n]].sweep = swept[n];
         }
     }
@@ -686,16 +692,9 @@ private:
             const uint32_t* kept = kept_probe(next, way);
             if (kept && next.drops[*kept].link.bidirectional && !next.drops[*kept].back.swept) back_of.push_back(*kept);
         });
-        std::vector<std::vector<Vec3>> arcs(back_of.size());
-        std::vector<PathPoints> paths(back_of.size());
-        const double piece = 1.0 / s_.arc_segments;
-        for (size_t n = 0; n < back_of.size(); ++n) {
-            const Link& l = next.drops[back_of[n]].link;
-            const JumpArc arc(l.end, l.start, s_.jump_arc_height);
-            arcs[n] = arc.points(s_.arc_segments);
-            paths[n] = PathPoints{arcs[n].data(), arcs[n].size(), arc.sagitta(0.0, piece)};
-        }
-        const std::vector<LinkBake::Sweep> back = sweep(paths);
+        std::vector<std::pair<Vec3, Vec3>> ends;
+        for (uint32_t k : back_of) ends.emplace_back(next.drops[k].link.end, next.drops[k].link.start);
+        const std::vector<LinkBake::Sweep> back = sweep_arcs(ends);
         for (size_t n = 0; n < back_of.size(); ++n) next.drops[back_of[n]].back = back[n];
     }
 

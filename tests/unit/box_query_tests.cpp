@@ -6,6 +6,7 @@
 #include <string>
 
 #include "brute_force.h"
+#include "generated_mesh.h"
 #include "level/level.h"
 #include "level/oriented_box.h"
 #include "level_generator.h"
@@ -13,15 +14,6 @@
 using nl::Vec3;
 
 namespace {
-
-nl::TriangleMesh to_mesh(const nl::levelgen::GeneratedLevel& level) {
-    nl::TriangleMesh mesh;
-    for (size_t i = 0; i < level.positions.size(); i += 3)
-        mesh.vertices.emplace_back(level.positions[i], level.positions[i + 1], level.positions[i + 2]);
-    for (size_t i = 0; i < level.indices.size(); i += 3)
-        mesh.triangles.push_back({level.indices[i], level.indices[i + 1], level.indices[i + 2]});
-    return mesh;
-}
 
 nl::OrientedBox random_box(std::mt19937& rng, const Vec3& centre, float spread, float size) {
     std::uniform_real_distribution<float> unit(-1.0f, 1.0f), extent(0.02f, size);
@@ -94,7 +86,7 @@ TEST_CASE("triangle-box test: known cases") {
 }
 
 TEST_CASE("boxes_empty agrees with every triangle, for static and movable meshes") {
-    const nl::TriangleMesh mesh = to_mesh(nl::levelgen::generate_default_level(3));
+    const nl::TriangleMesh mesh = nl::test::to_triangle_mesh(nl::levelgen::generate_default_level(3));
     nl::Transform moved = nl::Transform::Identity();
     moved.translate(Vec3(4.0f, 1.0f, -2.0f));
     moved.rotate(Eigen::AngleAxisf(0.5f, Vec3(0.3f, 1.0f, 0.2f).normalized()));
@@ -155,7 +147,7 @@ TEST_CASE("boxes_empty agrees with every triangle, for static and movable meshes
 }
 
 TEST_CASE("static_triangles gives the corners of the triangle each ray hit; nothing for misses, movable or removed meshes") {
-    nl::TriangleMesh mesh = to_mesh(nl::levelgen::generate_default_level(5));
+    nl::TriangleMesh mesh = nl::test::to_triangle_mesh(nl::levelgen::generate_default_level(5));
     mesh.triangles.insert(mesh.triangles.begin(), {0, 0, 1});  // degenerate: dropped, so kept != input
     nl::Transform moved = nl::Transform::Identity();
     moved.translate(Vec3(-3.0f, 2.0f, 7.0f));

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "generated_level_c.h"
+#include "link_test_helpers.h"
 #include "links/link_generator.h"
 #include "world.h"
 
@@ -19,12 +20,7 @@ struct Baked {
     std::vector<Link> links;
     nl::BakeReport report;
 
-    std::vector<Link> of(LinkKind kind) const {
-        std::vector<Link> out;
-        for (const Link& l : links)
-            if (l.kind == kind) out.push_back(l);
-        return out;
-    }
+    std::vector<Link> of(LinkKind kind) const { return nl::test::links_of_kind(links, kind); }
     std::string describe() const {
         std::ostringstream s;
         s << links.size() << " links; samples " << report.samples << ", take-offs " << report.takeoff_points

@@ -12,18 +12,13 @@
 
 #include "level_generator.h"
 #include "links/link_generator.h"
+#include "link_test_helpers.h"
 #include "shared_levels.h"
 #include "world.h"
 
 namespace {
 
-struct WorldPtr {
-    nl_world* world = nullptr;
-    WorldPtr() = default;
-    WorldPtr(const WorldPtr&) = delete;
-    WorldPtr& operator=(const WorldPtr&) = delete;
-    ~WorldPtr() { nl_world_destroy(world); }
-};
+using nl::test::WorldPtr;
 
 // A level's geometry: an OBJ file, or generated arrays.
 struct LevelSource {

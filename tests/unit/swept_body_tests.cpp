@@ -5,6 +5,7 @@
 #include <cmath>
 #include <random>
 
+#include "generated_mesh.h"
 #include "level/level.h"
 #include "level/swept_body.h"
 #include "level_generator.h"
@@ -149,12 +150,7 @@ TEST_CASE("swept body: known cases, a thin bar, a pole between where lines would
 }
 
 TEST_CASE("bodies_clear agrees with the exact test against every triangle, for static and movable meshes") {
-    const nl::levelgen::GeneratedLevel generated = nl::levelgen::generate_default_level(3);
-    nl::TriangleMesh mesh;
-    for (size_t i = 0; i < generated.positions.size(); i += 3)
-        mesh.vertices.emplace_back(generated.positions[i], generated.positions[i + 1], generated.positions[i + 2]);
-    for (size_t i = 0; i < generated.indices.size(); i += 3)
-        mesh.triangles.push_back({generated.indices[i], generated.indices[i + 1], generated.indices[i + 2]});
+    const nl::TriangleMesh mesh = nl::test::to_triangle_mesh(nl::levelgen::generate_default_level(3));
     nl::Transform moved = nl::Transform::Identity();
     moved.translate(Vec3(4.0f, 1.0f, -2.0f));
     moved.rotate(Eigen::AngleAxisf(0.3f, Vec3::UnitY()));
