@@ -237,7 +237,8 @@ private:
 
     // The rim lies between the last step out on ground and the first without: halve that step a few
     // times, all samples in one batch per halving, so a gap is measured to a couple of centimetres.
-    // The rim is then the middle of what is left.
+    // The rim is then the outer end of what is left (known to be past the ground), so a gap never
+    // reads wider than it is: a body allowed exactly a designed gap can take it.
     void refine_rims(LinkBake::Cache& next, const std::vector<uint32_t>& redo, float probe, float step_reach) {
         std::vector<uint32_t> found;  // samples with a rim
         std::vector<float> ground, air;  // distances out known on ground and off it
@@ -259,7 +260,7 @@ private:
             const std::vector<uint8_t> hit = blocked(below);
             for (size_t n = 0; n < found.size(); ++n) (hit[n] ? ground[n] : air[n]) = 0.5f * (ground[n] + air[n]);
         }
-        for (size_t n = 0; n < found.size(); ++n) next.takeoffs[found[n]].rim = 0.5f * (ground[n] + air[n]);
+        for (size_t n = 0; n < found.size(); ++n) next.takeoffs[found[n]].rim = air[n];
     }
 
     // The floor under a take-off point: its sample's x and z, the height of the level found under it.
@@ -279,7 +280,7 @@ private:
     }
 
     // What the geometry-free tests say of a pair of take-off points, for the report.
-    enum class PairVerdict : uint8_t { Candidate, Ignored, Distance, Rise, Angle, NoLanding, Walkable };
+    enum class PairVerdict : uint8_t { Candidate, Ignored, Distance, Rise, Angle, Walkable };
 
     // The grid the Indexed search finds partners in: cells as wide as the reach, so that a partner
     // is in the 27 cells around a point.
@@ -331,7 +332,7 @@ private:
     }
 
     // The constraints that need no ray, between the floor points of two take-off points: gap,
-    // rise, facing, incline, landing, and whether walking is about as short. Both directions at
+    // rise, facing, incline, and whether walking is about as short. Both directions at
     // once: every one of them is symmetric in the two ends. `gap` receives the air gap.
     PairVerdict judge_pair(const LinkBake::Cache& c, uint32_t i, uint32_t j, float& gap) const {
         const EdgeSample &a = samples_[i], &b = samples_[j];
@@ -351,7 +352,6 @@ private:
         const Vec3 direction = d / distance;
         if (!facing || std::fabs(direction.dot(a.normal)) > incline || std::fabs(direction.dot(b.normal)) > incline)
             return PairVerdict::Angle;
-        if (!on_navmesh(b.point)) return PairVerdict::NoLanding;
         const float walk = walk_.walk_within(a.point, a.polygon, b.point, b.polygon, s_.walk_factor * length + s_.walk_distance);
         return std::isfinite(walk) ? PairVerdict::Walkable : PairVerdict::Candidate;
     }
@@ -361,7 +361,6 @@ private:
             case PairVerdict::Distance: report_.rejected_distance += pairs; break;
             case PairVerdict::Rise: report_.rejected_rise += pairs; break;
             case PairVerdict::Angle: report_.rejected_angle += pairs; break;
-            case PairVerdict::NoLanding: report_.rejected_no_landing += pairs; break;
             case PairVerdict::Walkable: report_.rejected_walkable += pairs; break;
             case PairVerdict::Candidate:
             case PairVerdict::Ignored: break;
@@ -377,7 +376,8 @@ private:
         const auto cached = old_.jumps.find(key);
         if (cached != old_.jumps.end() && !touches(cached->second.sweep.bounds, box_) && cached->second.link.start == start &&
             cached->second.link.end == end) {
-            next.jumps.emplace(key, cached->second);
+            // The rims may have moved (a change near them, not under the ends): the gap is today's.
+            next.jumps.emplace(key, cached->second).first->second.link.requirements.gap = gap;
             return;
         }
         LinkBake::JumpCandidate c;
@@ -543,10 +543,6 @@ private:
                                               : mesh_.find_nearest_brute_force(point, half_extents);
     }
 
-    bool on_navmesh(const Vec3& point) const {
-        const NavPoint p = locate(point, Vec3(0.1f, 0.5f, 0.1f));
-        return p.found && p.distance < 0.3f;
-    }
 
     // Jump candidates: the geometry-free constraints over every pair (cheap, so always redone, in
     // parallel over take-off points, a block at a time so progress can cancel), then the arc sweep,
@@ -562,9 +558,9 @@ private:
 
         constexpr size_t kBlock = 2048;
         std::vector<std::vector<std::pair<uint32_t, float>>> candidates(kBlock);  // (partner, gap)
-        std::vector<std::array<uint32_t, 7>> verdicts(kBlock);
+        std::vector<std::array<uint32_t, 6>> verdicts(kBlock);
         for (size_t block = 0; block < valid.size(); block += kBlock) {
-            step(0.15f + 0.2f * float(block) / float(valid.size()), "jumps");
+            if (block > 0) step(0.15f + 0.2f * float(block) / float(valid.size()), "jumps");
             const auto size = static_cast<uint32_t>(std::min(kBlock, valid.size() - block));
             tasks_.parallel_for(size, 16, [&](uint32_t begin, uint32_t end) {
                 std::vector<uint32_t> partners;
@@ -776,16 +772,15 @@ private:
         l.kind = LinkKind::Drop;
         l.start = start;
         l.end = end;
-        l.bidirectional = drop <= s_.max_jump_up;  // low enough to jump back up
         l.generated = true;
         l.start_polygon = samples_[i].polygon;
         l.end_polygon = landing.polygon;
         set_requirements_from_ends(l);
-        Vec3 flat = end - start;
-        flat.y() = 0.0f;
         const float rim = rim_along(c, i, static_cast<uint32_t>(d.key));
         const Vec3 crossing = start + heading * rim;
         l.requirements.gap = Vec3(end.x() - crossing.x(), 0.0f, end.z() - crossing.z()).norm();
+        // Low and near enough to jump back up (whether the body fits that arc is swept later).
+        l.bidirectional = drop <= s_.max_jump_up && l.requirements.gap <= s_.max_jump_gap;
         d.fall = fall_path(start, heading, rim + kPastRim, end);
         l.apex = d.fall[1];  // where the body leaves the ground: the top of the fall, and its heading
     }

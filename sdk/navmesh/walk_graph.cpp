@@ -7,15 +7,7 @@
 
 namespace nl {
 
-WalkGraph::WalkGraph(const NavMesh& mesh) : mesh_(mesh), first_polygon_(mesh.vertex_count() + 1, 0) {
-    for (uint32_t p = 0; p < mesh.polygon_count(); ++p)
-        for (uint32_t k = 0; k < mesh.corner_count(p); ++k) ++first_polygon_[mesh.corner(p, k) + 1];
-    for (size_t v = 1; v < first_polygon_.size(); ++v) first_polygon_[v] += first_polygon_[v - 1];
-    polygons_.resize(first_polygon_.back());
-    std::vector<uint32_t> fill(first_polygon_.begin(), first_polygon_.end() - 1);
-    for (uint32_t p = 0; p < mesh.polygon_count(); ++p)
-        for (uint32_t k = 0; k < mesh.corner_count(p); ++k) polygons_[fill[mesh.corner(p, k)]++] = p;
-
+WalkGraph::WalkGraph(const NavMesh& mesh) : mesh_(mesh) {
     // Surfaces: a flood through portals from each polygon not yet reached, in polygon order.
     surface_.assign(mesh.polygon_count(), kNoPolygon);
     std::vector<uint32_t> stack;
@@ -43,37 +35,47 @@ float WalkGraph::walk_within(const Vec3& from, uint32_t from_polygon, const Vec3
         const float d = (to - from).norm();
         return d <= limit ? d : kNone;
     }
-    // Nodes are vertices; the goal is reached from any corner of its polygon.
-    std::unordered_map<uint32_t, float> best;
-    using Entry = std::pair<float, uint32_t>;  // (walked + straight line to the goal, vertex)
+    // States are (polygon, one of its corners): a straight line joins any two corners of a convex
+    // polygon, and a walk enters a neighbour at a corner of the portal it shares with it.
+    auto state = [](uint32_t polygon, uint32_t vertex) { return (uint64_t(polygon) << 32) | vertex; };
+    std::unordered_map<uint64_t, float> best;
+    using Entry = std::pair<float, uint64_t>;  // (walked + straight line to the goal, state)
     std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> open;
-    auto reach = [&](uint32_t v, float walked) {
+    auto reach = [&](uint32_t polygon, uint32_t v, float walked) {
         const float estimate = walked + (to - mesh_.vertex(v)).norm();
         if (estimate > limit) return;
-        const auto [it, fresh] = best.emplace(v, walked);
+        const auto [it, fresh] = best.emplace(state(polygon, v), walked);
         if (!fresh) {
             if (it->second <= walked) return;
             it->second = walked;
         }
-        open.emplace(estimate, v);
+        open.emplace(estimate, state(polygon, v));
     };
     for (uint32_t k = 0; k < mesh_.corner_count(from_polygon); ++k) {
         const uint32_t v = mesh_.corner(from_polygon, k);
-        reach(v, (mesh_.vertex(v) - from).norm());
+        reach(from_polygon, v, (mesh_.vertex(v) - from).norm());
     }
     float found = kNone;
     while (!open.empty()) {
-        const auto [estimate, v] = open.top();
+        const auto [estimate, s] = open.top();
         open.pop();
         if (estimate >= found) break;  // nothing left can be shorter
-        const float walked = best[v];
+        const auto p = static_cast<uint32_t>(s >> 32), v = static_cast<uint32_t>(s);
+        const float walked = best[s];
         if (walked + (to - mesh_.vertex(v)).norm() < estimate) continue;  // a stale entry
-        for (uint32_t i = first_polygon_[v]; i < first_polygon_[v + 1]; ++i) {
-            const uint32_t p = polygons_[i];
-            if (p == to_polygon) found = std::min(found, walked + (to - mesh_.vertex(v)).norm());
-            for (uint32_t k = 0; k < mesh_.corner_count(p); ++k) {
-                const uint32_t w = mesh_.corner(p, k);
-                if (w != v) reach(w, walked + (mesh_.vertex(w) - mesh_.vertex(v)).norm());
+        if (p == to_polygon) {
+            found = std::min(found, walked + (to - mesh_.vertex(v)).norm());
+            continue;
+        }
+        const uint32_t corners = mesh_.corner_count(p);
+        for (uint32_t k = 0; k < corners; ++k) {
+            const uint32_t w = mesh_.corner(p, k);
+            if (w != v) reach(p, w, walked + (mesh_.vertex(w) - mesh_.vertex(v)).norm());
+            if (w != v) continue;
+            // Across the two edges at v, where they are portals.
+            for (const uint32_t edge : {k, (k + corners - 1) % corners}) {
+                const uint32_t q = mesh_.neighbour(p, edge);
+                if (q != kNoPolygon) reach(q, v, walked);
             }
         }
     }

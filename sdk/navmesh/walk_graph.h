@@ -2,9 +2,10 @@
 // links are generated: a jump whose ends are about as near by walking is not generated, and two drop
 // landings on one walkable surface are one way down.
 //
-// The walk goes from corner to corner of the navmesh's polygons: inside a convex polygon a straight
-// line between two of its corners (or a corner and a point on it) stays on the polygon, so every
-// walk found is one an agent of the navmesh's type can take. The shortest walk may cut across
+// The walk goes from corner to corner of the navmesh's polygons, from one polygon into the next only
+// through the portal they share: inside a convex polygon a straight line between two of its corners
+// (or a corner and a point on it) stays on the polygon, so every walk found is one an agent of the
+// navmesh's type can take. The shortest walk may cut across
 // several polygons in one straight line where this one turns at a corner on the way, so the length
 // found is an upper bound of the shortest walk, close to it on Recast's navmeshes.
 #pragma once
@@ -31,8 +32,6 @@ public:
 
 private:
     const NavMesh& mesh_;
-    std::vector<uint32_t> first_polygon_;  // vertex_count + 1 offsets into polygons_: the polygons at each vertex
-    std::vector<uint32_t> polygons_;
     std::vector<uint32_t> surface_;  // by polygon: its lowest-numbered connected polygon
 };
 

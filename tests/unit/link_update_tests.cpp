@@ -65,9 +65,16 @@ struct Scene {
             CHECK(updated[i].kind == reference[i].kind);
             CHECK(updated[i].bidirectional == reference[i].bidirectional);
             CHECK(updated[i].requirements.clearance_width == reference[i].requirements.clearance_width);
+            CHECK(updated[i].requirements.gap == reference[i].requirements.gap);
+            CHECK(updated[i].requirements.length == reference[i].requirements.length);
+            CHECK(updated[i].requirements.rise == reference[i].requirements.rise);
+            CHECK(updated[i].requirements.drop == reference[i].requirements.drop);
+            CHECK(updated[i].start_polygon == reference[i].start_polygon);
+            CHECK(updated[i].end_polygon == reference[i].end_polygon);
             for (int k = 0; k < 3; ++k) {
                 CHECK(updated[i].start[k] == reference[i].start[k]);
                 CHECK(updated[i].end[k] == reference[i].end[k]);
+                CHECK(updated[i].apex[k] == reference[i].apex[k]);
             }
         }
         CHECK(partial.jump_links == full.jump_links);
@@ -110,6 +117,19 @@ TEST_CASE("a wall put across a gap, then taken away: updates equal full generati
     REQUIRE(nl_mesh_remove(s.world, id) == NL_STATUS_SUCCESS);
     s.check_update_equals_full(wall_box, "wall removed");
     CHECK(s.links().size() == before);
+}
+
+TEST_CASE("a shelf that moves a rim, not the jump's ends: the update's gaps equal a full generation's") {
+    Scene s;
+    // A shelf a step below the first platform's top, just past its rim over the first gap: walkable
+    // ground, so the rim moves out by its width while the navmesh (built before it) stays.
+    const Box& first = s.level.boxes[0];
+    const float top = first.max[1], rim = first.max[0];
+    nl::levelgen::GeneratedLevel shelf;
+    const Box shelf_box{{rim, top - 0.6f, first.min[2]}, {rim + 0.5f, top - 0.5f, first.max[2]}};
+    shelf.add_box(shelf_box);
+    s.add_boxes(shelf, 0);
+    s.check_update_equals_full(grown(shelf_box, 0.01f), "shelf added past a rim");
 }
 
 TEST_CASE("a movable crate moved along a platform edge: the update over both places equals a full generation") {
