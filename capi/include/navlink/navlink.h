@@ -633,8 +633,8 @@ typedef struct nl_link_settings {
     float clearance_margin;         /**< Fraction of a path left out of the clearance test at each end (0.1). */
     uint32_t arc_segments;          /**< Pieces of a jump arc in the clearance test (12). */
     const char* plugin_settings_json;   /**< Optional JSON object of link-kind plugins' settings, one
-                                             object per kind name: {"climb": {"max_height": 3}}.
-                                             Borrowed for the call; NULL = none. */
+                                             object per kind name: {"climb": {"max_height": 3}}
+                                             (every value an object). Borrowed for the call; NULL = none. */
     size_t plugin_settings_json_length;
 } nl_link_settings;
 
@@ -644,7 +644,8 @@ NL_API nl_link_settings nl_default_link_settings(void);
 /** Applies a JSON object's keys (the field names above; drop_angles as an array) to `*settings`
  *  (caller-owned, in and out) and validates the result. On failure `*settings` is unchanged.
  *  Returns SUCCESS, or a failure with PARSE_ERROR (malformed JSON, with the position) or
- *  INVALID_ARGUMENT (an unknown key, a wrong type or value: the key is named). Thread-safe. */
+ *  INVALID_ARGUMENT (an unknown key, a wrong type or value, nesting deeper than 64 levels: the key is
+ *  named). Thread-safe. */
 NL_API nl_status nl_link_settings_from_json(const char* json, size_t length, nl_link_settings* settings);
 
 /** What a bake did: answers "why is there no link here?". */
@@ -690,7 +691,8 @@ typedef int32_t nl_progress_fn(void* user, float fraction, const char* stage);
  *  is optional (`user` is passed back to it); `out_report` is optional (caller-owned, `size` set).
  *  Returns SUCCESS, or a failure with INVALID_HANDLE (also when the navmesh was removed while the
  *  links were being generated: nothing is stored), INVALID_ARGUMENT (a setting, named; also a sample_spacing that
- *  would put more than 4,000,000 take-off samples on this navmesh's boundary),
+ *  would put more than 4,000,000 take-off samples on this navmesh's boundary; plugin_settings_json
+ *  nested deeper than 64 levels, or with a value that is not an object, the key named),
  *  PARSE_ERROR (malformed plugin_settings_json, found before any work), CANCELLED (progress
  *  returned 0: the navmesh's links are as they were), OUT_OF_MEMORY.
  *  Generations and updates of one navmesh run one after the other; a progress callback must not
@@ -728,8 +730,8 @@ NL_API nl_status nl_navmesh_save_links_json(const nl_world* world, nl_navmesh_id
  *  forgotten: nl_navmesh_update_links_in_box returns NOT_FOUND until the next
  *  nl_navmesh_generate_links.
  *  Returns SUCCESS, or a failure with PARSE_ERROR, VERSION_MISMATCH (another format or version),
- *  INVALID_ARGUMENT (a field missing or wrong, or an end off the navmesh, named by its path, e.g.
- *  "links[3].start"), INVALID_HANDLE. Thread-safe. */
+ *  INVALID_ARGUMENT (a field missing or wrong, nesting deeper than 64 levels, or an end off the
+ *  navmesh, named by its path, e.g. "links[3].start"), INVALID_HANDLE. Thread-safe. */
 NL_API nl_status nl_navmesh_load_links_json(nl_world* world, nl_navmesh_id navmesh, const char* json, size_t length,
                                             uint32_t* out_count);
 
