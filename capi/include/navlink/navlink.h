@@ -203,13 +203,13 @@ NL_API nl_mesh_def nl_default_mesh_def(void);
 NL_API nl_status nl_mesh_add(nl_world* world, const nl_mesh_def* def, nl_mesh_id* out_id);
 
 /** Loads a Wavefront OBJ file (positions and faces; polygons are fan-triangulated; Y is up; other
- *  statements are ignored) and registers it as one mesh. `path` is a borrowed NUL-terminated UTF-8
+ *  statements are ignored; a line ends at \n, \r\n or a lone \r) and registers it as one mesh. `path` is a borrowed NUL-terminated UTF-8
  *  path. `def` is optional (NULL = defaults): its flags, transform and user_data apply; its vertex
  *  and index fields must be empty.
  *  Returns SUCCESS, or a failure with INVALID_ARGUMENT, NOT_FOUND (no such file), IO_ERROR (a
  *  directory, no permission, a read error), PARSE_ERROR (malformed: a number that is not a finite
- *  float, a face index that is 0, past the last vertex or not an integer, no faces; the line is
- *  named), OUT_OF_MEMORY or INTERNAL_ERROR.
+ *  float, a face index that is 0, past the last vertex (or vt, vn) or not an integer, no faces; the
+ *  line is named), OUT_OF_MEMORY or INTERNAL_ERROR.
  *  Thread-safe, as nl_mesh_add. */
 NL_API nl_status nl_mesh_add_obj_file(nl_world* world, const char* path, const nl_mesh_def* def,
                                       nl_mesh_id* out_id);
