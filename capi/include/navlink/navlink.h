@@ -504,8 +504,10 @@ NL_API nl_navmesh_build_def nl_default_navmesh_build_def(void);
 
 /** Builds a navmesh from every mesh registered in the world (under their current transforms) and adds
  *  it as nl_navmesh_add would. Returns SUCCESS, or a failure with NOT_FOUND (no builder of that name,
- *  or no walkable surface in the level), INVALID_ARGUMENT (bad agent or settings, the field named),
- *  PARSE_ERROR (malformed settings JSON), OUT_OF_MEMORY, INTERNAL_ERROR (the builder failed).
+ *  or no walkable surface in the level), INVALID_ARGUMENT (bad agent or settings, the field named;
+ *  settings JSON nested deeper than 64 levels; for "recast", a level with more walkable cells than
+ *  Recast indexes at that cell_size, which is named), PARSE_ERROR (malformed settings JSON),
+ *  OUT_OF_MEMORY, INTERNAL_ERROR (the builder failed).
  *  A builder's output that nl_navmesh_add would refuse is INTERNAL_ERROR (a builder bug), with
  *  the reason; nothing is added unless the builder succeeds.
  *  Thread-safe; long-running (tens of milliseconds per thousand triangles). */
