@@ -7,9 +7,9 @@
 #include "entry_guard.h"
 #include "host_input.h"
 #include "io/json_input.h"
-#include "util/excerpt.h"
 #include "io/link_json.h"
 #include "links/link_bakes.h"
+#include "util/excerpt.h"
 #include "world.h"
 
 using nl::ErrorCode;

@@ -12,9 +12,9 @@
 
 #include "build_failure.h"
 #include "io/json_input.h"
-#include "util/excerpt.h"
 #include "recast_builder.h"
 #include "util/error.h"
+#include "util/excerpt.h"
 
 namespace nl::recast {
 namespace {

@@ -7,9 +7,9 @@
 #include <limits>
 
 #include "io/json_input.h"
-#include "util/excerpt.h"
 #include "level/mesh_validation.h"
 #include "util/error.h"
+#include "util/excerpt.h"
 
 namespace nl {
 namespace {
