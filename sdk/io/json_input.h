@@ -10,8 +10,8 @@
 namespace nl {
 
 // nlohmann::json's dump, copy and comparison recurse once per level, so a document nested deep enough
-// overflows the stack when one of them meets it. No document NavLink reads nests more than 4 levels
-// (a links file), and a plugin's settings have 60 below the plugin's own object.
+// overflows the stack when one of them meets it. NavLink's own documents nest at most 4 levels (a
+// links file); a plugin's settings, an object inside plugin_settings_json, may use 62 more.
 constexpr int kMaxJsonDepth = 64;
 
 // Parses `text`. Throws Parse for malformed JSON (the byte and the parser's reason), and
