@@ -99,6 +99,17 @@ rcConfig make_config(const nl_recast_settings& s, const nl_agent_type& agent, co
     if (layers > RC_SPAN_MAX_HEIGHT)
         fail(NL_STATUS_INVALID_ARGUMENT, "cell_height ", cfg.ch, " m makes the level ", std::ceil(layers),
              " cells tall; Recast's heightfield holds at most ", RC_SPAN_MAX_HEIGHT, " (raise cell_height)");
+    // The navmesh's vertices lie on the grid, up to two cells above the highest voxel (Recast rounds
+    // voxel tops up): all of it must stay within the coordinate limit the navmesh is held to, or a
+    // cell of 1e18 m makes a navmesh nl_navmesh_add refuses.
+    const double top = double(bmin[1]) + (std::ceil(layers) + 2.0) * cfg.ch;
+    if (!(top <= NL_COORDINATE_LIMIT))
+        fail(NL_STATUS_INVALID_ARGUMENT, "cell_height ", cfg.ch, " m puts the navmesh up to ", top,
+             " m high, beyond the coordinate limit of ", NL_COORDINATE_LIMIT, " m (lower cell_height)");
+    const double far = std::max(double(bmin[0]) + (std::ceil(width) + 1.0) * cfg.cs, double(bmin[2]) + (std::ceil(depth) + 1.0) * cfg.cs);
+    if (!(far <= NL_COORDINATE_LIMIT))
+        fail(NL_STATUS_INVALID_ARGUMENT, "cell_size ", cfg.cs, " m puts the navmesh's grid out to ", far,
+             " m, beyond the coordinate limit of ", NL_COORDINATE_LIMIT, " m (lower cell_size)");
     rcCalcGridSize(cfg.bmin, cfg.bmax, cfg.cs, &cfg.width, &cfg.height);
     return cfg;
 }

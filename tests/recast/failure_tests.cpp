@@ -123,6 +123,15 @@ TEST_CASE("recast: a grid beyond Recast's limits names the cell size to raise") 
     CHECK(tall_out.status == kInvalid);
     CHECK(tall_out.error.find("cell_height") != std::string::npos);
     CHECK(run_build(tall, json_build_def(R"({"cell_height": 0.5})")).status == NL_STATUS_SUCCESS);
+
+    // A cell so large the navmesh's vertices would lie beyond the coordinate limit (found by
+    // navlink-fuzz-recast_settings: the builder handed over a navmesh 1.1e19 m high).
+    FakeHost floor = QuadLevel().floor(0, 0, 10, 10, 0).host();
+    const BuildOutcome huge_cell = run_build(floor, json_build_def(R"({"cell_height": 1.1e18})"));
+    CHECK(huge_cell.status == kInvalid);
+    CHECK(huge_cell.sink_calls == 0);
+    CHECK(huge_cell.error.find("cell_height") != std::string::npos);
+    CHECK(huge_cell.error.find("coordinate limit") != std::string::npos);
 }
 
 TEST_CASE("recast: a floor with more walkable cells than Recast indexes names the cell size to raise") {
