@@ -8,6 +8,7 @@ packages=(
   libembree-dev libtbb-dev libeigen3-dev nlohmann-json3-dev doctest-dev libtinyobjloader-dev
   librecast-dev libsdl2-dev libstb-dev
   mono-devel python3
+  clang libclang-rt-14-dev  # the sanitizer build and its libFuzzer targets (docs/testing.md)
 )
 # The Rust binding's test needs cargo; a toolchain from rustup (not a Debian package) serves as well, so
 # Debian's cargo (with its rustc) is added only when no cargo is on the PATH.

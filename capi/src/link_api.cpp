@@ -6,9 +6,10 @@
 
 #include "entry_guard.h"
 #include "host_input.h"
+#include "io/json_input.h"
 #include "io/link_json.h"
-#include <nlohmann/json.hpp>
 #include "links/link_bakes.h"
+#include "util/excerpt.h"
 #include "world.h"
 
 using nl::ErrorCode;
@@ -225,16 +226,17 @@ struct PluginLinkSink {
     }
 };
 
-// The plugins' settings, checked before any ray is cast: a JSON object (or none).
+// The plugins' settings, checked before any ray is cast: a JSON object (or none) whose members are
+// the objects handed to the plugins, each under its kind name.
 nlohmann::json plugin_settings_of(const std::string& text) {
     if (text.empty()) return nlohmann::json::object();
-    nlohmann::json all;
-    try {
-        all = nlohmann::json::parse(text);
-    } catch (const nlohmann::json::parse_error& e) {
-        fail(ErrorCode::Parse, "settings->plugin_settings_json: ", e.what());
-    }
+    const nlohmann::json all = nl::parse_json(text, "settings->plugin_settings_json");
     if (!all.is_object()) fail(ErrorCode::InvalidArgument, "settings->plugin_settings_json must be a JSON object");
+    for (const auto& [kind_name, own] : all.items()) {
+        if (!own.is_object())
+            fail(ErrorCode::InvalidArgument, "settings->plugin_settings_json: ", nl::quoted_excerpt(kind_name),
+                 " must be a JSON object (a plugin's settings), not ", nl::json_excerpt(own));
+    }
     return all;
 }
 

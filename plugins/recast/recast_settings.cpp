@@ -11,7 +11,10 @@
 #include <nlohmann/json.hpp>
 
 #include "build_failure.h"
+#include "io/json_input.h"
 #include "recast_builder.h"
+#include "util/error.h"
+#include "util/excerpt.h"
 
 namespace nl::recast {
 namespace {
@@ -151,9 +154,9 @@ void apply_json_value(nl_recast_settings& s, const Field& f, const nlohmann::jso
     }
     case Kind::Integer: {
         if (!v.is_number_integer())
-            fail(NL_STATUS_INVALID_ARGUMENT, where, " must be an integer, not ", json_type(v), " ", v.dump());
+            fail(NL_STATUS_INVALID_ARGUMENT, where, " must be an integer, not ", nl::json_excerpt(v));
         int64_t n = 0;
-        if (!integer_in(v, 3, 6, &n)) fail(NL_STATUS_INVALID_ARGUMENT, where, " must be in 3..6 (got ", v.dump(), ")");
+        if (!integer_in(v, 3, 6, &n)) fail(NL_STATUS_INVALID_ARGUMENT, where, " must be in 3..6 (got ", nl::json_excerpt(v), ")");
         uint_field(s, f) = static_cast<uint32_t>(n);
         return;
     }
@@ -167,14 +170,14 @@ void apply_json_value(nl_recast_settings& s, const Field& f, const nlohmann::jso
                 }
             }
             fail(NL_STATUS_INVALID_ARGUMENT, where, " must be \"watershed\", \"monotone\" or \"layers\" (got ",
-                 v.dump(), ")");
+                 nl::json_excerpt(v), ")");
         }
         if (!v.is_number_integer())
             fail(NL_STATUS_INVALID_ARGUMENT, where, " must be a string or an integer, not ", json_type(v));
         int64_t p = 0;
         if (!integer_in(v, 0, 2, &p))
             fail(NL_STATUS_INVALID_ARGUMENT, where, " must be 0 (watershed), 1 (monotone) or 2 (layers) (got ",
-                 v.dump(), ")");
+                 nl::json_excerpt(v), ")");
         uint_field(s, f) = static_cast<uint32_t>(p);
         return;
     }
@@ -188,10 +191,9 @@ void apply_json_value(nl_recast_settings& s, const Field& f, const nlohmann::jso
 void apply_json(nl_recast_settings& s, const char* text, size_t length) {
     nlohmann::json doc;
     try {
-        doc = nlohmann::json::parse(text, text + length);
-    } catch (const nlohmann::json::parse_error& e) {
-        // e.what() has the line and column; e.byte is the byte offset for hosts that count bytes.
-        fail(NL_STATUS_PARSE_ERROR, "settings_json: malformed JSON at byte ", e.byte, ": ", e.what());
+        doc = nl::parse_json(std::string_view(text, length), "settings_json");
+    } catch (const nl::Error& e) {
+        fail(e.code() == nl::ErrorCode::Parse ? NL_STATUS_PARSE_ERROR : NL_STATUS_INVALID_ARGUMENT, e.what());
     }
     if (!doc.is_object())
         fail(NL_STATUS_INVALID_ARGUMENT, "settings_json must be a JSON object, not ", json_type(doc));
@@ -201,8 +203,8 @@ void apply_json(nl_recast_settings& s, const char* text, size_t length) {
             if (key == f.name) field = &f;
         }
         if (!field)
-            fail(NL_STATUS_INVALID_ARGUMENT, "settings_json: unknown key \"", key, "\" (known keys: ", known_keys(),
-                 ")");
+            fail(NL_STATUS_INVALID_ARGUMENT, "settings_json: unknown key ", nl::quoted_excerpt(key), " (known keys: ",
+                 known_keys(), ")");
         apply_json_value(s, *field, value);
     }
 }

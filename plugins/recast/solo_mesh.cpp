@@ -19,6 +19,10 @@ constexpr double kMaxGridSide = 65535.0;
 constexpr double kMaxGridCells = double(1 << 27);
 constexpr int kMaxErodeRadius = 127;
 constexpr int kMaxWalkableHeight = 255;
+// rcCompactCell keeps its first span's index in 24 bits: past this many walkable spans the compact
+// heightfield's cells wrap around to earlier spans. Watershed regions then come out empty ("no
+// walkable surface" for a 1.24 km floor at 0.3 m cells) and monotone ones silently drop part of it.
+constexpr int kMaxCompactSpans = (1 << 24) - 1;
 constexpr float kNoDetailSampling = 1e30f;
 
 std::string describe(const nl_agent_type& a) {
@@ -95,6 +99,17 @@ rcConfig make_config(const nl_recast_settings& s, const nl_agent_type& agent, co
     if (layers > RC_SPAN_MAX_HEIGHT)
         fail(NL_STATUS_INVALID_ARGUMENT, "cell_height ", cfg.ch, " m makes the level ", std::ceil(layers),
              " cells tall; Recast's heightfield holds at most ", RC_SPAN_MAX_HEIGHT, " (raise cell_height)");
+    // The navmesh's vertices lie on the grid, up to two cells above the highest voxel (Recast rounds
+    // voxel tops up): all of it must stay within the coordinate limit the navmesh is held to, or a
+    // cell of 1e18 m makes a navmesh nl_navmesh_add refuses.
+    const double top = double(bmin[1]) + (std::ceil(layers) + 2.0) * cfg.ch;
+    if (!(top <= NL_COORDINATE_LIMIT))
+        fail(NL_STATUS_INVALID_ARGUMENT, "cell_height ", cfg.ch, " m puts the navmesh up to ", top,
+             " m high, beyond the coordinate limit of ", NL_COORDINATE_LIMIT, " m (lower cell_height)");
+    const double far = std::max(double(bmin[0]) + (std::ceil(width) + 1.0) * cfg.cs, double(bmin[2]) + (std::ceil(depth) + 1.0) * cfg.cs);
+    if (!(far <= NL_COORDINATE_LIMIT))
+        fail(NL_STATUS_INVALID_ARGUMENT, "cell_size ", cfg.cs, " m puts the navmesh's grid out to ", far,
+             " m, beyond the coordinate limit of ", NL_COORDINATE_LIMIT, " m (lower cell_size)");
     rcCalcGridSize(cfg.bmin, cfg.bmax, cfg.cs, &cfg.width, &cfg.height);
     return cfg;
 }
@@ -132,6 +147,15 @@ SoloMesh build_solo_mesh(HostLogContext& ctx, const LevelTriangles& level, const
     if (s.filter_low_hanging_obstacles) rcFilterLowHangingWalkableObstacles(&ctx, cfg.walkableClimb, *solid);
     if (s.filter_ledge_spans) rcFilterLedgeSpans(&ctx, cfg.walkableHeight, cfg.walkableClimb, *solid);
     if (s.filter_walkable_low_height_spans) rcFilterWalkableLowHeightSpans(&ctx, cfg.walkableHeight, *solid);
+
+    const int walkable_spans = rcGetHeightFieldSpanCount(&ctx, *solid);
+    if (walkable_spans > kMaxCompactSpans) {
+        const double finer = std::sqrt(double(walkable_spans) / kMaxCompactSpans);
+        fail(NL_STATUS_INVALID_ARGUMENT, "the level has ", walkable_spans, " walkable cells of cell_size ", cfg.cs,
+             " m; Recast's compact heightfield indexes at most ", kMaxCompactSpans,
+             " (24 bits): raise cell_size to at least ", std::ceil(cfg.cs * finer * 1000.0) / 1000.0,
+             " m, or build the level in parts");
+    }
 
     // Compact the walkable spans, keep the agent's radius from walls.
     CompactHeightfieldPtr chf = require_allocated(rcAllocCompactHeightfield(), "compact heightfield");

@@ -6,8 +6,10 @@
 #include <cmath>
 #include <limits>
 
+#include "io/json_input.h"
 #include "level/mesh_validation.h"
 #include "util/error.h"
+#include "util/excerpt.h"
 
 namespace nl {
 namespace {
@@ -16,12 +18,10 @@ using Json = nlohmann::json;
 
 Json point(const Vec3& v) { return Json::array({v.x(), v.y(), v.z()}); }
 
-Json parse(std::string_view text, const char* what) {
-    try {
-        return Json::parse(text.begin(), text.end());
-    } catch (const Json::parse_error& e) {
-        fail(ErrorCode::Parse, what, ": ", e.what());
-    }
+// A double beyond float's range does not convert to a float (undefined behaviour), so every number
+// read as a float is checked first.
+bool within_float_range(const Json& value) {
+    return value.is_number() && std::fabs(value.get<double>()) <= std::numeric_limits<float>::max();
 }
 
 // Reads fields with their path in every message.
@@ -43,7 +43,7 @@ public:
     float number(const char* key, float fallback, bool required = false) const {
         const Json* value = required ? &at(key) : find(key);
         if (!value) return fallback;
-        if (!value->is_number() || !(std::fabs(value->get<double>()) <= std::numeric_limits<float>::max()))
+        if (!within_float_range(*value))
             fail(ErrorCode::InvalidArgument, path_, ".", key, " must be a finite number within float range");
         return value->get<float>();
     }
@@ -132,7 +132,7 @@ std::string links_to_json(const std::vector<Link>& links) {
 }
 
 std::vector<Link> links_from_json(std::string_view text) {
-    const Json document = parse(text, "links JSON");
+    const Json document = parse_json(text, "links JSON");
     const Reader top(document, "links JSON");
     const Json& format = top.at("format");
     if (!format.is_string() || format.get<std::string>() != "navlink-links")
@@ -178,7 +178,7 @@ std::vector<Link> links_from_json(std::string_view text) {
 }
 
 void apply_settings_json(std::string_view text, LinkSettings& s) {
-    const Json document = parse(text, "settings JSON");
+    const Json document = parse_json(text, "settings JSON");
     const Reader r(document, "settings");
     float* const floats[] = {&s.min_edge_length,          &s.sample_spacing,         &s.falloff_distance,
                              &s.max_jump_gap,        &s.min_link_distance,      &s.short_link_distance,
@@ -215,12 +215,13 @@ void apply_settings_json(std::string_view text, LinkSettings& s) {
             if (!value.is_array()) fail(ErrorCode::InvalidArgument, "settings.drop_angles must be an array of numbers");
             s.drop_angles.clear();
             for (size_t i = 0; i < value.size(); ++i) {
-                if (!value[i].is_number()) fail(ErrorCode::InvalidArgument, "settings.drop_angles[", i, "] must be a number");
+                if (!within_float_range(value[i]))
+                    fail(ErrorCode::InvalidArgument, "settings.drop_angles[", i, "] must be a number within float range");
                 s.drop_angles.push_back(value[i].get<float>());
             }
             known = true;
         }
-        if (!known) fail(ErrorCode::InvalidArgument, "settings.", key, " is not a link generation setting");
+        if (!known) fail(ErrorCode::InvalidArgument, "settings: ", quoted_excerpt(key), " is not a link generation setting");
     }
     validate(s, "settings.");
 }

@@ -3,15 +3,12 @@
 #include <tiny_obj_loader.h>
 
 #include <cerrno>
-#include <charconv>
-#include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
-#include <limits>
-#include <sstream>
-#include <vector>
+#include <memory>
 
+#include "io/obj_records.h"
 #include "util/error.h"
 
 namespace nl {
@@ -52,64 +49,6 @@ TriangleMesh to_triangle_mesh(const tinyobj::ObjReader& reader, const std::strin
     return mesh;
 }
 
-std::vector<std::string_view> tokens_of(std::string_view line) {
-    std::vector<std::string_view> out;
-    size_t i = 0;
-    while (i < line.size()) {
-        while (i < line.size() && (line[i] == ' ' || line[i] == '\t' || line[i] == '\r')) ++i;
-        const size_t start = i;
-        while (i < line.size() && line[i] != ' ' && line[i] != '\t' && line[i] != '\r') ++i;
-        if (i > start) out.push_back(line.substr(start, i - start));
-    }
-    return out;
-}
-
-bool parse_finite_float(std::string_view token) {
-    float value = 0.0f;
-    const auto [end, ec] = std::from_chars(token.data(), token.data() + token.size(), value);
-    return ec == std::errc() && end == token.data() + token.size() && std::isfinite(value);
-}
-
-// tinyobjloader reads what it cannot parse as 0 and wraps oversized indices; a level that silently
-// gains a vertex at the origin is worse than a refusal, so positions and faces are checked first.
-void check_positions_and_faces(std::string_view text, const std::string& name) {
-    int64_t vertices = 0;
-    size_t line_number = 0;
-    size_t begin = 0;
-    while (begin <= text.size()) {
-        size_t end = text.find('\n', begin);
-        if (end == std::string_view::npos) end = text.size();
-        std::string_view line = text.substr(begin, end - begin);
-        begin = end + 1;
-        ++line_number;
-        line = line.substr(0, line.find('#'));
-        const auto tokens = tokens_of(line);
-        if (tokens.empty()) continue;
-        if (tokens[0] == "v") {
-            if (tokens.size() < 4) fail(ErrorCode::Parse, name, ":", line_number, ": a vertex needs x y z");
-            for (size_t k = 1; k < tokens.size() && k <= 4; ++k) {
-                if (!parse_finite_float(tokens[k]))
-                    fail(ErrorCode::Parse, name, ":", line_number, ": '", tokens[k], "' is not a finite number");
-            }
-            ++vertices;
-        } else if (tokens[0] == "f") {
-            if (tokens.size() < 4) fail(ErrorCode::Parse, name, ":", line_number, ": a face needs 3 vertices or more");
-            for (size_t k = 1; k < tokens.size(); ++k) {
-                const std::string_view position = tokens[k].substr(0, tokens[k].find('/'));
-                int64_t index = 0;
-                const auto [at, ec] = std::from_chars(position.data(), position.data() + position.size(), index);
-                if (ec != std::errc() || at != position.data() + position.size())
-                    fail(ErrorCode::Parse, name, ":", line_number, ": '", tokens[k], "' is not a vertex index");
-                // Positive indices may point forward (to vertices listed later); negative ones are
-                // relative to the vertices so far.
-                if (index == 0 || index < -vertices || index > std::numeric_limits<int32_t>::max())
-                    fail(ErrorCode::Parse, name, ":", line_number, ": vertex index ", index, " is out of range");
-            }
-        }
-        if (end == text.size()) break;
-    }
-}
-
 tinyobj::ObjReaderConfig config() {
     tinyobj::ObjReaderConfig c;
     c.triangulate = false;  // we fan-triangulate ourselves, as the levels' authors did
@@ -117,32 +56,31 @@ tinyobj::ObjReaderConfig config() {
     return c;
 }
 
-}  // namespace
-
-TriangleMesh read_obj_file(const std::string& path) {
-    // Read the bytes ourselves so a missing file is NotFound, not a parse error, and .mtl files
-    // referenced by the level are never opened.
+// The file's bytes, read ourselves so a missing file is NotFound and a failed read Io (not a parse
+// error of what was read before it failed), and .mtl files the level names are never opened.
+std::string file_bytes(const std::string& path) {
     std::error_code ec;
     const auto status = std::filesystem::status(path, ec);
     if (!std::filesystem::exists(status)) fail(ErrorCode::NotFound, "cannot open '", path, "': no such file");
     if (std::filesystem::is_directory(status)) fail(ErrorCode::Io, "cannot read '", path, "': it is a directory");
-    std::ifstream file(path, std::ios::binary);
+    const std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"), &std::fclose);
     if (!file) fail(ErrorCode::Io, "cannot open '", path, "': ", std::strerror(errno));
-    std::ostringstream bytes;
-    bytes << file.rdbuf();
-    if (file.bad()) fail(ErrorCode::Io, "cannot read '", path, "'");
-    return read_obj_text(bytes.str(), path);
+    std::string bytes;
+    char buffer[1 << 16];
+    size_t count = 0;
+    while ((count = std::fread(buffer, 1, sizeof buffer, file.get())) > 0) bytes.append(buffer, count);
+    if (std::ferror(file.get())) fail(ErrorCode::Io, "cannot read '", path, "': ", std::strerror(errno));
+    return bytes;
 }
 
+}  // namespace
+
+TriangleMesh read_obj_file(const std::string& path) { return read_obj_text(file_bytes(path), path); }
+
 TriangleMesh read_obj_text(std::string_view text, const std::string& name) {
-    check_positions_and_faces(text, name);
     tinyobj::ObjReader reader;
-    if (!reader.ParseFromString(std::string(text), std::string(), config()))
+    if (!reader.ParseFromString(checked_obj_records(text, name), std::string(), config()))
         fail(ErrorCode::Parse, name, ": ", first_line(reader.Error()));
-    // tinyobjloader only warns about faces that point past the last vertex; for us it is malformed.
-    const std::string& warning = reader.Warning();
-    if (const auto at = warning.find("out of bounds"); at != std::string::npos)
-        fail(ErrorCode::Parse, name, ": ", first_line(warning.substr(warning.rfind('\n', at) + 1)));
     return to_triangle_mesh(reader, name);
 }
 

@@ -9,8 +9,10 @@
 
 namespace nl {
 
-// Throws NotFound (cannot open), Parse (malformed, with tinyobjloader's message) or InvalidArgument
-// (no faces). Indices are checked later, with everything else, by validate_mesh.
+// Wavefront OBJ records other than v, f, o and g are ignored; what is read is checked before
+// tinyobjloader sees it (io/obj_records.h). Throws NotFound (no such file), Io (a directory, a file
+// that cannot be opened or fails while it is read) or Parse (malformed: the line and the reason, or
+// no faces). Degenerate triangles and coordinates are checked later, by validate_mesh.
 TriangleMesh read_obj_file(const std::string& path);
 TriangleMesh read_obj_text(std::string_view text, const std::string& name = "<memory>");
 

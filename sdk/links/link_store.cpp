@@ -12,7 +12,9 @@ Handle LinkStore::add(Handle navmesh, const Link& link) {
     std::unique_lock lock(mutex_);
     require_live(navmesh);
     auto& ids = by_navmesh_[key(navmesh)];
-    ids.reserve(ids.size() + 1);  // allocate before inserting: a failure must leave no orphan
+    // Allocate before inserting (a failure must leave no orphan), growing geometrically: reserving
+    // one more each time copied the whole list on every add.
+    if (ids.size() == ids.capacity()) ids.reserve(2 * ids.size() + 8);
     const Handle id = links_.insert(Entry{navmesh, link});
     ids.push_back(id);
     publish(navmesh);
@@ -111,19 +113,30 @@ void LinkStore::remove_navmesh(Handle navmesh) {
     snapshots_.erase(key(navmesh));
 }
 
-void LinkStore::publish(Handle navmesh) {
-    auto snapshot = std::make_shared<LinkSnapshot>();
-    for (Handle id : by_navmesh_[key(navmesh)]) snapshot->push_back(StoredLink{id, links_.find(id)->link});
-    snapshots_[key(navmesh)] = std::move(snapshot);
-}
+void LinkStore::publish(Handle navmesh) { snapshots_[key(navmesh)].reset(); }
 
 std::shared_ptr<const LinkSnapshot> LinkStore::snapshot(Handle navmesh) const {
-    std::shared_lock lock(mutex_);
+    // Shared by every navmesh without links: path requests ask for it each time.
+    static const auto empty = std::make_shared<const LinkSnapshot>();
+    {
+        std::shared_lock lock(mutex_);
+        const auto it = snapshots_.find(key(navmesh));
+        if (it == snapshots_.end()) return empty;
+        if (it->second) return it->second;
+    }
+    // The first read since an edit builds the snapshot, under the exclusive lock: another reader may
+    // have built it meanwhile.
+    std::unique_lock lock(mutex_);
     const auto it = snapshots_.find(key(navmesh));
-    if (it == snapshots_.end()) {
-        // Shared by every navmesh without links: path requests ask for it each time.
-        static const auto empty = std::make_shared<const LinkSnapshot>();
-        return empty;
+    if (it == snapshots_.end()) return empty;
+    if (!it->second) {
+        auto snapshot = std::make_shared<LinkSnapshot>();
+        const auto ids = by_navmesh_.find(key(navmesh));
+        if (ids != by_navmesh_.end()) {
+            snapshot->reserve(ids->second.size());
+            for (Handle id : ids->second) snapshot->push_back(StoredLink{id, links_.find(id)->link});
+        }
+        it->second = std::move(snapshot);
     }
     return it->second;
 }

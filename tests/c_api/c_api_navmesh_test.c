@@ -1644,6 +1644,13 @@ static void test_navmesh_build(void) {
         def.settings_json = unknown;
         def.settings_json_length = strlen(unknown);
         CHECK_BUILD_FAILS(world, &def, NL_STATUS_INVALID_ARGUMENT, "cel_height");
+        {
+            /* Valid JSON, but a navmesh 1e18 m high: the settings' fault (INVALID_ARGUMENT), not the builder's. */
+            static const char huge_cell[] = "{\"cell_height\": 1.1e18}";
+            def.settings_json = huge_cell;
+            def.settings_json_length = strlen(huge_cell);
+            CHECK_BUILD_FAILS(world, &def, NL_STATUS_INVALID_ARGUMENT, "cell_height");
+        }
         def.settings_json = not_object;
         def.settings_json_length = strlen(not_object);
         CHECK_BUILD_FAILS(world, &def, NL_STATUS_INVALID_ARGUMENT, "settings_json");

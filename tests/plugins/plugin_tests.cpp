@@ -250,3 +250,33 @@ TEST_CASE("the climb link kind, loaded as a plugin, links the foot of a wall to 
     nl_navmesh_get_links(s.world, s.navmesh, nullptr, 0, &count);
     CHECK(count == before);
 }
+
+TEST_CASE("plugin settings that are too deep, beyond a double or not an object are refused before any work") {
+    BlockScene s;
+    nl_plugin_id climb{};
+    REQUIRE_MESSAGE(nl_plugin_load(s.world, CLIMB_PLUGIN_PATH, &climb) == NL_STATUS_SUCCESS, last_error());
+    const size_t before = s.generate(nullptr).size();
+    constexpr nl_status kInvalid = NL_STATUS_FAILURE | NL_STATUS_INVALID_ARGUMENT;
+    struct Case {
+        std::string json;
+        std::vector<std::string> mentions;
+    };
+    const Case cases[] = {
+        // Re-serialised for the plugin, this one overflowed the stack.
+        {"{\"climb\": {\"max_height\": " + std::string(100000, '[') + std::string(100000, ']') + "}}",
+         {"plugin_settings_json: climb.max_height[0]", "64 levels"}},
+        {"{\"climb\": {\"max_height\": 1e400}}", {"plugin_settings_json: climb.max_height is 1e400"}},
+        {"{\"climb\": 3}", {"\"climb\" must be a JSON object", "not 3"}},
+        {"{\"climb\": [1, 2]}", {"\"climb\" must be a JSON object", "not an array of 2 values"}},
+        {"{\"not_loaded\": \"x\"}", {"\"not_loaded\" must be a JSON object"}},
+    };
+    for (const Case& c : cases) {
+        CAPTURE(c.json.substr(0, 60));
+        s.generate(c.json.c_str(), kInvalid);
+        for (const std::string& m : c.mentions) CHECK_MESSAGE(s.generate_error.find(m) != std::string::npos, s.generate_error);
+        CHECK(s.generate_error.size() < 300);
+        uint32_t count = 0;
+        nl_navmesh_get_links(s.world, s.navmesh, nullptr, 0, &count);
+        CHECK(count == before);
+    }
+}

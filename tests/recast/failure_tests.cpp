@@ -2,6 +2,7 @@
 // Recast's log reaching the host.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -122,6 +123,35 @@ TEST_CASE("recast: a grid beyond Recast's limits names the cell size to raise") 
     CHECK(tall_out.status == kInvalid);
     CHECK(tall_out.error.find("cell_height") != std::string::npos);
     CHECK(run_build(tall, json_build_def(R"({"cell_height": 0.5})")).status == NL_STATUS_SUCCESS);
+
+    // A cell so large the navmesh's vertices would lie beyond the coordinate limit (found by
+    // navlink-fuzz-recast_settings: the builder handed over a navmesh 1.1e19 m high).
+    FakeHost floor = QuadLevel().floor(0, 0, 10, 10, 0).host();
+    const BuildOutcome huge_cell = run_build(floor, json_build_def(R"({"cell_height": 1.1e18})"));
+    CHECK(huge_cell.status == kInvalid);
+    CHECK(huge_cell.sink_calls == 0);
+    CHECK(huge_cell.error.find("cell_height") != std::string::npos);
+    CHECK(huge_cell.error.find("coordinate limit") != std::string::npos);
+}
+
+TEST_CASE("recast: a floor with more walkable cells than Recast indexes names the cell size to raise") {
+    // 1,250 m at 0.3 m: 4,167 x 4,167 cells, past the 16,777,215 spans a compact heightfield indexes.
+    // Watershed regions came out empty ("no walkable surface"), monotone ones left a third of it out.
+    FakeHost floor = QuadLevel().floor(0, 0, 1250, 1250, 0).host();
+    for (const char* partition : {"watershed", "monotone"}) {
+        CAPTURE(partition);
+        const BuildOutcome out = run_build(floor, json_build_def(std::string("{\"partition\": \"") + partition + "\"}"));
+        CHECK(out.status == kInvalid);
+        CHECK(out.sink_calls == 0);
+        CAPTURE(out.error);
+        CHECK(out.error.find("16777215") != std::string::npos);
+        CHECK(out.error.find("raise cell_size to at least 0.306 m") != std::string::npos);
+    }
+    const BuildOutcome coarser = run_build(floor, json_build_def(R"({"cell_size": 1.0})"));
+    CHECK_MESSAGE(coarser.status == NL_STATUS_SUCCESS, coarser.error);
+    float depth = 0.0f;  // the whole floor, not a part of it
+    for (size_t v = 2; v < coarser.mesh.vertices.size(); v += 3) depth = std::max(depth, coarser.mesh.vertices[v]);
+    CHECK(depth > 1240.0f);
 }
 
 TEST_CASE("recast: the sink's status is the build's, and the sink is called once") {

@@ -135,6 +135,16 @@ TEST_CASE("recast settings struct: bad size or field is INVALID_ARGUMENT naming 
     }
 }
 
+namespace {
+
+std::string repeated(const std::string& text, size_t times) {
+    std::string out;
+    for (size_t i = 0; i < times; ++i) out += text;
+    return out;
+}
+
+}  // namespace
+
 TEST_CASE("recast settings JSON: malformed, unknown, mistyped or out-of-range values are refused") {
     FakeHost host = test_host();
     constexpr nl_status kInvalid = NL_STATUS_FAILURE | NL_STATUS_INVALID_ARGUMENT;
@@ -171,16 +181,26 @@ TEST_CASE("recast settings JSON: malformed, unknown, mistyped or out-of-range va
         {R"({"partition": true})", kInvalid, {"settings_json: partition"}},
         {R"({"filter_ledge_spans": 1})", kInvalid, {"settings_json: filter_ledge_spans", "true or false"}},
         {R"({"filter_low_hanging_obstacles": "yes"})", kInvalid, {"settings_json: filter_low_hanging_obstacles"}},
+        {R"({"cell_size": 1e400})", kInvalid, {"settings_json: cell_size is 1e400", "beyond the range"}},
+        {R"({"edge_max_error": -1E+999})", kInvalid, {"settings_json: edge_max_error"}},
+        {"{\"vertices_per_polygon\": " + std::string(100000, '[') + std::string(100000, ']') + "}", kInvalid,
+         {"settings_json: vertices_per_polygon[0]", "64 levels"}},
+        {"{\"vertices_per_polygon\": [" + repeated("7, ", 100000) + "7]}", kInvalid,
+         {"settings_json: vertices_per_polygon", "an array of 100001 values"}},
+        {"{\"partition\": \"" + repeated("voronoi", 100000) + "\"}", kInvalid, {"settings_json: partition", "(got \"voronoivoronoi", "...\")"}},
+        {"{\"" + repeated("cell", 100000) + "\": 1}", kInvalid, {"settings_json: unknown key \"cellcell"}},
         {R"([0.3, 0.2])", kInvalid, {"settings_json", "object"}},
         {R"("cell_size")", kInvalid, {"settings_json", "object"}},
     };
     for (const Case& c : cases) {
-        CAPTURE(c.json);
+        const std::string start = c.json.substr(0, 80);
+        CAPTURE(start);
         const BuildOutcome out = run_build(host, json_build_def(c.json));
         CHECK(out.status == c.status);
         CHECK(out.sink_calls == 0);
         CAPTURE(out.error);
         for (const std::string& m : c.mentions) CHECK(out.error.find(m) != std::string::npos);
+        CHECK(out.error.size() < 400);  // a message quotes a value short, however long the value
     }
 
     // The length is what counts, not a NUL: a JSON object followed by bytes beyond the length is fine,

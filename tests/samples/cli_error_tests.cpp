@@ -67,7 +67,7 @@ TEST_CASE("bad arguments, files and JSON give one line and exit status 2") {
         {{"bake", "level.obj", "--out", "x.json", "--out", "y.json"}, "--out given twice"},
         {{"bake", "level.obj", "extra.obj", "--out", "x.json"}, "unexpected argument 'extra.obj'"},
         {{"bake", "/nonexistent/level.obj", "--out", "x.json"}, "cannot open '/nonexistent/level.obj'"},
-        {{"bake", "bad_level.obj", "--out", "x.json"}, "line 4"},
+        {{"bake", "bad_level.obj", "--out", "x.json"}, "bad_level.obj:4:"},
         {{"bake", "level.obj", "--out", "x.json", "--navmesh", "concave.obj"}, "concave.obj"},
         {{"bake", "level.obj", "--out", "x.json", "--agent", "/nonexistent.json"}, "cannot open '/nonexistent.json'"},
         {{"bake", "level.obj", "--out", "x.json", "--agent", "."}, "is a directory"},

@@ -1,6 +1,7 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <fstream>
 #include <functional>
 #include <limits>
 
@@ -165,4 +166,61 @@ TEST_CASE("the normal matrix keeps the winding's orientation under mirroring") {
     const Vec3 world_normal = ((mirror * b) - (mirror * a)).cross((mirror * c) - (mirror * a)).normalized();
     const Vec3 object_normal = (b - a).cross(c - a).normalized();
     CHECK(((nl::normal_matrix(mirror) * object_normal).normalized() - world_normal).norm() < 1e-6f);
+}
+
+TEST_CASE("OBJ: every line ending tinyobjloader knows ends a line for the check too") {
+    // A lone \r ended tinyobjloader's lines but not the check's: behind a comment the whole file was
+    // one unchecked line, and `nan` loaded as 0 (a vertex moved to the origin).
+    CHECK(code_of([] { nl::read_obj_text("# level\rv 0 0 0\rv 1 0 0\rv nan 0 1\rf 1 2 3\r"); }) == ErrorCode::Parse);
+    CHECK(message_of([] { nl::read_obj_text("# level\rv 0 0 0\rv 1 0 0\rv nan 0 1\rf 1 2 3\r"); }).find(":4:") !=
+          std::string::npos);
+    for (const char* eol : {"\n", "\r\n", "\r"}) {
+        CAPTURE(eol);
+        std::string text;
+        for (const char* line : {"# level", "v 0 0 0", "v 1 0 0", "v 0 2 1", "f 1 2 3"}) text += std::string(line) + eol;
+        const TriangleMesh m = nl::read_obj_text(text);
+        REQUIRE(m.vertices.size() == 3);
+        CHECK(m.vertices[2] == Vec3(0, 2, 1));
+        CHECK(m.triangles.size() == 1);
+    }
+    // Mixed in one file, and a last line with no ending.
+    CHECK(nl::read_obj_text("v 0 0 0\r\nv 1 0 0\rv 0 0 1\nf 1 2 3").triangles.size() == 1);
+}
+
+TEST_CASE("OBJ: records NavLink does not read never reach tinyobjloader") {
+    // tinyobjloader parses vertex weights with no checks: a negative joint failed the whole file, and
+    // 1e30 was converted to an int (undefined behaviour). Lines, points and tags are its own too.
+    const char* tail = "v 0 0 0\nv 1 0 0\nv 0 0 1\nf 1 2 3\n";
+    for (const char* line : {"vw 0 1e30 0.5\n", "vw 0 -1 0.5\n", "l 1 99999999999\n", "p -7\n", "t crease 2/1/1 1e99\n",
+                             "vp nan\n", "curv 0 1 2\n", "usemtl x\n", "s off\n", "mtllib ../../etc/passwd\n"}) {
+        CAPTURE(line);
+        CHECK(nl::read_obj_text(std::string(line) + tail).triangles.size() == 1);
+    }
+}
+
+TEST_CASE("OBJ: texture and normal indices of a face are checked, though not read") {
+    const char* head = "v 0 0 0\nv 1 0 0\nv 0 0 1\nvt 0 0\nvn 0 1 0\n";
+    for (const char* face : {"f 1/1 2/1 3/1\n", "f 1//1 2//1 3//1\n", "f 1/1/1 2/1/1 3/-1/-1\n"}) {
+        CAPTURE(face);
+        CHECK(nl::read_obj_text(std::string(head) + face).triangles.size() == 1);
+    }
+    for (const char* face : {"f 1/2 2/1 3/1\n", "f 1//2 2//1 3//1\n", "f 1/ 2/ 3/\n", "f 1/1/1/1 2 3\n", "f 1/x 2 3\n",
+                             "f 1/-2 2 3\n", "f 1/1/ 2 3\n"}) {
+        CAPTURE(face);
+        CHECK(code_of([&] { nl::read_obj_text(std::string(head) + face); }) == ErrorCode::Parse);
+    }
+}
+
+TEST_CASE("OBJ: a message quotes a bad token short") {
+    const std::string huge(100000, '9');
+    const std::string message = message_of([&] { nl::read_obj_text("v " + huge + "x 0 0\n"); });
+    CHECK(message.find(":1:") != std::string::npos);
+    CHECK(message.size() < 200);
+}
+
+TEST_CASE("OBJ: a file that fails while it is read is an I/O error, not a parse error of what came before") {
+    // Reading /proc/self/mem from offset 0 fails (EIO): the address is not mapped.
+    if (!std::ifstream("/proc/self/mem")) return;  // no /proc here
+    CHECK(code_of([] { nl::read_obj_file("/proc/self/mem"); }) == ErrorCode::Io);
+    CHECK(message_of([] { nl::read_obj_file("/proc/self/mem"); }).find("cannot read '/proc/self/mem'") != std::string::npos);
 }

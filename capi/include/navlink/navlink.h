@@ -210,13 +210,13 @@ NL_API nl_mesh_def nl_default_mesh_def(void);
 NL_API nl_status nl_mesh_add(nl_world* world, const nl_mesh_def* def, nl_mesh_id* out_id);
 
 /** Loads a Wavefront OBJ file (positions and faces; polygons are fan-triangulated; Y is up; other
- *  statements are ignored) and registers it as one mesh. `path` is a borrowed NUL-terminated UTF-8
+ *  statements are ignored; a line ends at \n, \r\n or a lone \r) and registers it as one mesh. `path` is a borrowed NUL-terminated UTF-8
  *  path. `def` is optional (NULL = defaults): its flags, transform and user_data apply; its vertex
  *  and index fields must be empty.
  *  Returns SUCCESS, or a failure with INVALID_ARGUMENT, NOT_FOUND (no such file), IO_ERROR (a
  *  directory, no permission, a read error), PARSE_ERROR (malformed: a number that is not a finite
- *  float, a face index that is 0, past the last vertex or not an integer, no faces; the line is
- *  named), OUT_OF_MEMORY or INTERNAL_ERROR.
+ *  float, a face index that is 0, past the last vertex (or vt, vn) or not an integer, no faces; the
+ *  line is named), OUT_OF_MEMORY or INTERNAL_ERROR.
  *  Thread-safe, as nl_mesh_add. */
 NL_API nl_status nl_mesh_add_obj_file(nl_world* world, const char* path, const nl_mesh_def* def,
                                       nl_mesh_id* out_id);
@@ -511,8 +511,10 @@ NL_API nl_navmesh_build_def nl_default_navmesh_build_def(void);
 
 /** Builds a navmesh from every mesh registered in the world (under their current transforms) and adds
  *  it as nl_navmesh_add would. Returns SUCCESS, or a failure with NOT_FOUND (no builder of that name,
- *  or no walkable surface in the level), INVALID_ARGUMENT (bad agent or settings, the field named),
- *  PARSE_ERROR (malformed settings JSON), OUT_OF_MEMORY, INTERNAL_ERROR (the builder failed).
+ *  or no walkable surface in the level), INVALID_ARGUMENT (bad agent or settings, the field named;
+ *  settings JSON nested deeper than 64 levels; for "recast", a level with more walkable cells than
+ *  Recast indexes at that cell_size, which is named), PARSE_ERROR (malformed settings JSON),
+ *  OUT_OF_MEMORY, INTERNAL_ERROR (the builder failed).
  *  A builder's output that nl_navmesh_add would refuse is INTERNAL_ERROR (a builder bug), with
  *  the reason; nothing is added unless the builder succeeds.
  *  Thread-safe; long-running (tens of milliseconds per thousand triangles). */
@@ -651,9 +653,9 @@ typedef struct nl_link_settings {
     float clearance_margin;         /**< Fraction of a path left out of the clearance test at each end (0.1). */
     uint32_t arc_segments;          /**< Pieces of a jump arc in the clearance test (12). */
     const char* plugin_settings_json;   /**< Optional JSON object of link-kind plugins' settings, one
-                                             object per kind name: {"climb": {"max_height": 3}}.
-                                             Borrowed for the call; NULL = none (the length must
-                                             then be 0). */
+                                             object per kind name: {"climb": {"max_height": 3}}
+                                             (every value an object). Borrowed for the call; NULL =
+                                             none (the length must then be 0). */
     size_t plugin_settings_json_length;
     float walk_factor;              /**< No jump whose ends are joined on foot by a walk of at most
                                          walk_factor x its length + walk_distance (1.5). */
@@ -666,7 +668,8 @@ NL_API nl_link_settings nl_default_link_settings(void);
 /** Applies a JSON object's keys (the field names above; drop_angles as an array) to `*settings`
  *  (caller-owned, in and out) and validates the result. On failure `*settings` is unchanged.
  *  Returns SUCCESS, or a failure with PARSE_ERROR (malformed JSON, with the position) or
- *  INVALID_ARGUMENT (an unknown key, a wrong type or value: the key is named). Thread-safe. */
+ *  INVALID_ARGUMENT (an unknown key, a wrong type or value, nesting deeper than 64 levels: the key is
+ *  named). Thread-safe. */
 NL_API nl_status nl_link_settings_from_json(const char* json, size_t length, nl_link_settings* settings);
 
 /** What a bake did: answers "why is there no link here?". */
@@ -720,7 +723,8 @@ typedef int32_t nl_progress_fn(void* user, float fraction, const char* stage);
  *  is optional (`user` is passed back to it); `out_report` is optional (caller-owned, `size` set).
  *  Returns SUCCESS, or a failure with INVALID_HANDLE (also when the navmesh was removed while the
  *  links were being generated: nothing is stored), INVALID_ARGUMENT (a setting, named; also a sample_spacing that
- *  would put more than 4,000,000 take-off samples on this navmesh's boundary),
+ *  would put more than 4,000,000 take-off samples on this navmesh's boundary; plugin_settings_json
+ *  nested deeper than 64 levels, or with a value that is not an object, the key named),
  *  PARSE_ERROR (malformed plugin_settings_json, found before any work), CANCELLED (progress
  *  returned 0: the navmesh's links are as they were), OUT_OF_MEMORY.
  *  Generations and updates of one navmesh run one after the other; other navmeshes' run at the same
@@ -761,8 +765,8 @@ NL_API nl_status nl_navmesh_save_links_json(const nl_world* world, nl_navmesh_id
  *  forgotten: nl_navmesh_update_links_in_box returns NOT_FOUND until the next
  *  nl_navmesh_generate_links.
  *  Returns SUCCESS, or a failure with PARSE_ERROR, VERSION_MISMATCH (another format or version),
- *  INVALID_ARGUMENT (a field missing or wrong, or an end off the navmesh, named by its path, e.g.
- *  "links[3].start"), INVALID_HANDLE. Thread-safe. */
+ *  INVALID_ARGUMENT (a field missing or wrong, nesting deeper than 64 levels, or an end off the
+ *  navmesh, named by its path, e.g. "links[3].start"), INVALID_HANDLE. Thread-safe. */
 NL_API nl_status nl_navmesh_load_links_json(nl_world* world, nl_navmesh_id navmesh, const char* json, size_t length,
                                             uint32_t* out_count);
 
