@@ -166,7 +166,7 @@ class LevelTest(NavLinkTestCase):
             self.assertTrue(len(logged) == 1 and "indices" in logged[0], logged)
             zero = nl.Ray(nl.Vec3(0, 1, 0), nl.Vec3(0, 0, 0), 1)
             self.assertFails(nl.STATUS_INVALID_ARGUMENT, "rays", world.cast_rays, [zero])
-            self.assertFails(nl.STATUS_PARSE_ERROR, "line", world.add_obj_memory, b"v 0 0 0\nf 1 2 9\n")
+            self.assertFails(nl.STATUS_PARSE_ERROR, ":2:", world.add_obj_memory, b"v 0 0 0\nf 1 2 9\n")
             self.assertFails(nl.STATUS_NOT_FOUND, "nl_mesh_add_obj_file", world.add_obj_file, "/no/such/level.obj")
             floor = world.add_mesh(FLOOR, QUAD)
             self.assertFails(nl.STATUS_INVALID_ARGUMENT, "transform", world.set_mesh_transform, floor, [0] * 16)

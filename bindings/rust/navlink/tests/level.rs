@@ -88,7 +88,7 @@ fn invalid_input_and_the_log_callback() {
     }
     let zero = Ray { origin: [0.0, 1.0, 0.0], direction: [0.0; 3], max_distance: 1.0 };
     assert_fails(world.cast_rays(&[zero]), status::INVALID_ARGUMENT, "rays");
-    assert_fails(world.add_obj_memory(b"v 0 0 0\nf 1 2 9\n", &MeshOptions::default()), status::PARSE_ERROR, "line");
+    assert_fails(world.add_obj_memory(b"v 0 0 0\nf 1 2 9\n", &MeshOptions::default()), status::PARSE_ERROR, ":2:");
     assert_fails(world.add_obj_file("/no/such/level.obj", &MeshOptions::default()), status::NOT_FOUND, "nl_mesh_add_obj_file");
     assert_fails(world.add_obj_file("nul\0byte.obj", &MeshOptions::default()), status::INVALID_ARGUMENT, "NUL");
     let floor = world.add_mesh(&FLOOR, &QUAD, &MeshOptions::default()).unwrap();
