@@ -90,8 +90,8 @@ GeneratedLevel generate_default_level(uint32_t seed) {
 
     // Four platforms in a row (boxes 0 to 3). With Recast's default agent the navmesh edges sit 0.6 to
     // 0.9 m inside each rim, so a jump across a gap is the gap plus 1.2 to 1.8 m end to end. The ranges
-    // keep the gaps apart: the first (1.4-1.8 m: a 2.6-3.6 m jump) is jumped by a short jumper, the second
-    // (2.8-3.2 m: a 4.0-5.0 m jump) only by a long one, and the third is narrow but 2.0-2.4 m deep: a
+    // keep the gaps apart: the first (1.4-1.8 m, rim to rim) is jumped by a short jumper (2 m gaps), the
+    // second (2.8-3.2 m) only by a long one (3.5 m), and the third is narrow but 2.0-2.4 m deep: a
     // one-way drop onto the last platform, too high to jump back up.
     const float gaps[] = {rng.uniform(1.4f, 1.8f), rng.uniform(2.8f, 3.2f), rng.uniform(0.8f, 1.1f)};
     const float rises[] = {0.0f, rng.uniform(0.6f, 1.0f), -rng.uniform(2.0f, 2.4f)};

@@ -170,7 +170,7 @@ std::vector<Link> links_from_json(std::string_view text) {
             l.requirements.abilities = q.whole("abilities", 0);
             if (l.requirements.gap < 0 || l.requirements.length < 0 || l.requirements.rise < 0 || l.requirements.drop < 0 ||
                 l.requirements.clearance_width < 0)
-                fail(ErrorCode::InvalidArgument, r.path(), ".requirements: distances must be >= 0");
+                fail(ErrorCode::InvalidArgument, r.path(), ".requires: distances must be >= 0");
         }
         links.push_back(l);
     }

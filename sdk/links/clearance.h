@@ -1,7 +1,7 @@
 // The geometry of "an agent-sized body fits along this path": the path (a jump arc, a fall) is cut
 // into straight pieces, and the agent's body (an upright cylinder, level/swept_body.h) swept along
-// each is tested exactly against the level's triangles (Level::bodies_clear). Boxes around straight
-// runs of pieces are asked first (Level::boxes_empty), so a run through open air costs one query.
+// each is tested exactly against the level's triangles (Level::bodies_clear). The triangles around a
+// straight run of pieces are gathered once, so a run through open air costs one query.
 #pragma once
 
 #include <vector>

@@ -1,6 +1,6 @@
 // Link generation for one navmesh against the level's geometry:
 //   edges -> samples -> take-off points -> jump candidates (spatial grid) and drop probes
-//   -> constraints -> agent-volume clearance (batched Embree occlusion) -> merge.
+//   -> constraints -> the agent's body swept exactly along each arc and fall -> merge.
 // Deterministic: the same navmesh, level and settings give the same links in the same order,
 // whatever the thread count.
 #pragma once
@@ -29,7 +29,7 @@ struct BakeReport {
     uint32_t drop_links = 0;
     uint32_t plugin_links = 0;  // filled by the caller that runs link-kind plugins
     // Rejections, by reason.
-    uint32_t rejected_wall = 0;          // take-off point inside a wall
+    uint32_t rejected_wall = 0;          // something solid between the edge and the rim
     uint32_t rejected_not_ledge = 0;     // walkable ground a step below the take-off point
     uint32_t rejected_distance = 0;      // a jump's gap too wide or too narrow
     uint32_t rejected_rise = 0;          // a jump higher than max_jump_up
@@ -41,7 +41,7 @@ struct BakeReport {
     uint32_t rejected_too_shallow = 0;   // a drop no deeper than max_climb, floor to floor (walked)
     uint32_t rejected_too_deep = 0;      // a drop deeper than max_drop_distance, floor to floor
     uint64_t rays_cast = 0;              // rays and occlusion segments sent to Embree
-    uint64_t box_queries = 0;            // boxes around straight runs of sweep pieces asked of Level::boxes_empty (Indexed)
+    uint64_t box_queries = 0;            // boxes whose triangles the level gathered for the exact body tests
     uint64_t body_tests = 0;             // sweep pieces tested exactly against the triangles near them
     double milliseconds_edges = 0, milliseconds_takeoff = 0, milliseconds_jumps = 0, milliseconds_drops = 0,
            milliseconds_merge = 0, milliseconds_total = 0;
@@ -51,7 +51,7 @@ struct BakeReport {
 //   Indexed:    spatial indexes everywhere: jump candidates from a grid of take-off points, points
 //               located through the navmesh's polygon grid, near-duplicates found through a grid of
 //               link ends, and a straight run of sweep pieces whose box no triangle touches is clear
-//               without testing its pieces (Level::boxes_empty).
+//               after one gathering of the triangles near it (Level::bodies_clear by groups).
 //   BruteForce: none of them: every pair of take-off points, every polygon, every kept link, every
 //               piece of every sweep tested exactly (the level's rays and the triangles near a piece
 //               still come from Embree). The reference the tests and navlink-bench-links compare the

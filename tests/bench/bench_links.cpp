@@ -4,10 +4,10 @@
 //   level=NAME tris=N edges=N samples=N jump=N drop=N bake_ms_1t=X bake_ms_2t=X bruteforce_ms=X same=yes|no
 // The navmesh is built once; the same navmesh and level geometry are then baked by the generator
 // nl_navmesh_generate_links runs (BakeMethod::Indexed: a grid of take-off points, the navmesh's
-// polygon grid, a grid of link ends, box queries that clear sweep pieces without their segments) on
+// polygon grid, a grid of link ends, one gathering of triangles per straight run of sweep pieces) on
 // a world with one worker and on a world with two (best of 3 each), and once by the brute-force
 // reference (BakeMethod::BruteForce: every pair of take-off points, every polygon, every kept link,
-// every sweep segment cast; one worker). Both cast their rays through Embree. same=yes iff the reference's links equal the generator's (count, kind, start
+// every sweep piece gathered on its own; one worker). Both cast their rays through Embree. same=yes iff the reference's links equal the generator's (count, kind, start
 // and end bit for bit, bidirectional flag, in order) and the one- and two-worker results are identical
 // in every field. Exits 1 if any level says same=no (or fails to load), 2 on bad arguments.
 //

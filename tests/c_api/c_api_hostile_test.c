@@ -31,6 +31,15 @@
  * Usage: navlink-c-api-hostile-test --headers DIR... [--library LIBNAVLINK] [--plugin CLIMB_PLUGIN]
  *                                   [--only GROUP]
  */
+/* Built with a sanitizer (GCC says so with __SANITIZE_*__, clang with __has_feature). */
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+#define NAVLINK_HOSTILE_SANITIZED 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer)
+#define NAVLINK_HOSTILE_SANITIZED 1
+#endif
+#endif
+
 /* fork() (in the runner), pthreads, mkdtemp(), strict C11 otherwise. */
 #define _POSIX_C_SOURCE 200809L
 
@@ -1046,7 +1055,7 @@ static const def_case k_world_defs[] = {
 static void group_world_create(void) {
     static const def_function create = {"nl_world_create", world_create_call, sizeof(nl_world*), world_destroy_out, 1, 1, 0};
     nl_world_def valid = nl_default_world_def();
-#if !defined(__SANITIZE_ADDRESS__) && !defined(__SANITIZE_THREAD__)
+#if !defined(NAVLINK_HOSTILE_SANITIZED)
     /* A library that starts the absurd thread counts runs out of stacks in milliseconds here instead
        of taking the machine's threads (not under sanitizers: their shadow memory needs the room). */
     struct rlimit limit;

@@ -838,10 +838,11 @@ TEST_CASE("one drop per way down: a straight ledge over one floor; a ledge over 
         std::map<std::pair<long, long>, int> per_start;
         for (const Link& l : b.of(LinkKind::Drop))
             ++per_start[{std::lround(l.start.x() * 1000), std::lround(l.start.z() * 1000)}];
-        for (const auto& [start, n] : per_start) {
-            CAPTURE(start.first);
-            CAPTURE(start.second);
-            CHECK(n == 1);  // one landing floor: one drop per take-off point
+        for (const auto& entry : per_start) {
+            const long x = entry.first.first, z = entry.first.second;  // (clang 14 captures no bindings)
+            CAPTURE(x);
+            CAPTURE(z);
+            CHECK(entry.second == 1);  // one landing floor: one drop per take-off point
         }
         CHECK(b.report.drop_links <= b.report.takeoff_points);
         print_figures(b, expect_checked(b));
@@ -854,11 +855,12 @@ TEST_CASE("one drop per way down: a straight ledge over one floor; a ledge over 
         for (const Link& l : b.of(LinkKind::Drop))
             landings[{std::lround(l.start.x() * 1000), std::lround(l.start.z() * 1000)}].push_back(l.end.y());
         bool both = false;
-        for (auto& [start, ys] : landings) {
+        for (auto& entry : landings) {
+            const double x = entry.first.first / 1000.0, z = entry.first.second / 1000.0;  // (clang 14 captures no bindings)
+            std::vector<float>& ys = entry.second;
             std::sort(ys.begin(), ys.end());
             for (size_t i = 1; i < ys.size(); ++i)
-                CHECK_MESSAGE(ys[i] - ys[i - 1] > 0.5f, "two drops from one take-off onto one floor, at x ",
-                              start.first / 1000.0, " z ", start.second / 1000.0);
+                CHECK_MESSAGE(ys[i] - ys[i - 1] > 0.5f, "two drops from one take-off onto one floor, at x ", x, " z ", z);
             both = both || (ys.size() >= 2 && ys.back() - ys.front() > 1.5f);
         }
         CHECK(both);  // MUST: a take-off whose probes reach both floors keeps a drop to each

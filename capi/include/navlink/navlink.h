@@ -679,12 +679,12 @@ typedef struct nl_bake_report {
     uint32_t groups;             /**< Groups of short edges. */
     uint32_t samples;            /**< Take-off samples on edges. */
     uint32_t takeoff_points;     /**< Samples that hang over a drop or gap. */
-    uint32_t jump_candidates;    /**< Edge pairs that met the distance, rise and angle limits. */
+    uint32_t jump_candidates;    /**< Edge pairs that met the gap, rise, angle and walk limits. */
     uint32_t drop_candidates;    /**< Landings found below take-off points. */
     uint32_t jump_links;
     uint32_t drop_links;
     uint32_t plugin_links;         /**< Links of kinds from link-kind plugins. */
-    uint32_t rejected_wall;        /**< Take-off point inside a wall. */
+    uint32_t rejected_wall;        /**< Something solid between the edge and the rim. */
     uint32_t rejected_not_ledge;   /**< Walkable ground a step below the edge: no ledge there. */
     uint32_t rejected_distance;    /**< A jump's gap too wide or too narrow. */
     uint32_t rejected_rise;        /**< A jump higher than max_jump_up. */
