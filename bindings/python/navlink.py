@@ -214,7 +214,7 @@ class LinkSettings(Structure):
                 ("walk_factor", c_float), ("walk_distance", c_float)]
 
 
-class BakeReport(Structure):
+class LinkGenerationReport(Structure):
     _fields_ = [(name, c_uint32) for name in (
         "size", "edges", "groups", "samples", "takeoff_points", "jump_candidates", "drop_candidates",
         "jump_links", "drop_links", "plugin_links", "rejected_wall", "rejected_not_ledge", "rejected_distance",
@@ -335,7 +335,7 @@ C_STRUCTS = {
     "nl_navmesh_info": NavmeshInfo, "nl_nav_polygon": NavPolygon, "nl_boundary_edge": BoundaryEdge,
     "nl_nav_point": NavPoint, "nl_navmesh_build_def": NavmeshBuildDef, "nl_link_id": LinkId,
     "nl_link_requirements": LinkRequirements, "nl_link": Link, "nl_link_def": LinkDef,
-    "nl_link_settings": LinkSettings, "nl_bake_report": BakeReport, "nl_path_ticket": PathTicket,
+    "nl_link_settings": LinkSettings, "nl_link_generation_report": LinkGenerationReport, "nl_path_ticket": PathTicket,
     "nl_agent_capabilities": AgentCapabilities, "nl_path_request_def": PathRequestDef, "nl_path_point": PathPoint,
     "nl_path_result": PathResultInfo, "nl_path_queue_stats": PathQueueStats, "nl_plugin_id": PluginId,
     "nl_plugin_description": PluginDescription, "nl_recast_settings": RecastSettings,
@@ -395,9 +395,9 @@ _PROTOTYPES = {
     "nl_default_link_settings": (LinkSettings, []),
     "nl_link_settings_from_json": (c_uint32, [c_char_p, c_size_t, POINTER(LinkSettings)]),
     "nl_navmesh_generate_links": (c_uint32, [_w, NavmeshId, POINTER(LinkSettings), ProgressFn, c_void_p,
-                                             POINTER(BakeReport)]),
+                                             POINTER(LinkGenerationReport)]),
     "nl_navmesh_update_links_in_box": (c_uint32, [_w, NavmeshId, POINTER(c_float), POINTER(c_float), ProgressFn,
-                                                  c_void_p, POINTER(BakeReport)]),
+                                                  c_void_p, POINTER(LinkGenerationReport)]),
     "nl_navmesh_save_links_json": (c_uint32, [_w, NavmeshId, c_char_p, c_size_t, POINTER(c_size_t)]),
     "nl_navmesh_load_links_json": (c_uint32, [_w, NavmeshId, c_char_p, c_size_t, _u32p]),
     "nl_default_agent_capabilities": (AgentCapabilities, []),
@@ -546,7 +546,7 @@ def _progress_trampoline(user, fraction, stage):
         return 0
     try:
         return 1 if context.handler(fraction, stage.decode()) else 0
-    except BaseException as e:  # cancel the bake; raised again by the caller
+    except BaseException as e:  # cancel the generation; raised again by the caller
         context.error = e
         return 0
 
@@ -890,18 +890,18 @@ class World:
 
     def generate_links(self, navmesh, settings=None, plugin_settings_json=None, progress=None):
         """Generates the navmesh's links. progress: callable(fraction, stage) -> bool (False cancels); an
-        exception it raises cancels the bake and is raised here."""
+        exception it raises cancels the generation and is raised here."""
         s = LinkSettings.from_buffer_copy(settings if settings is not None else default_link_settings())
         if plugin_settings_json is not None:
             data = plugin_settings_json.encode()
             s.plugin_settings_json, s.plugin_settings_json_length = data, len(data)
-        report = BakeReport(size=sizeof(BakeReport))
+        report = LinkGenerationReport(size=sizeof(LinkGenerationReport))
         _with_progress(progress, lambda fn, user: lib.nl_navmesh_generate_links(
             self.pointer, navmesh, byref(s), fn, user, byref(report)))
         return report
 
     def update_links_in_box(self, navmesh, box_min, box_max, progress=None):
-        report = BakeReport(size=sizeof(BakeReport))
+        report = LinkGenerationReport(size=sizeof(LinkGenerationReport))
         _with_progress(progress, lambda fn, user: lib.nl_navmesh_update_links_in_box(
             self.pointer, navmesh, _floats(box_min), _floats(box_max), fn, user, byref(report)))
         return report

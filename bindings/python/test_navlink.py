@@ -59,7 +59,7 @@ def horizontal(a, b):
     return math.hypot(a[0] - b[0], a[2] - b[2])
 
 
-def bake_gap_level(world):
+def gap_level_with_links(world):
     add_gap_level(world)
     navmesh = world.build_navmesh()
     world.generate_links(navmesh)
@@ -278,7 +278,7 @@ class LinkTest(NavLinkTestCase):
             def boom(fraction, stage):
                 raise KeyError("progress raises")
             self.assertRaises(KeyError, world.generate_links, navmesh, progress=boom)
-            self.assertEqual([bytes(link) for link in world.links(navmesh)], before, "the bake was cancelled")
+            self.assertEqual([bytes(link) for link in world.links(navmesh)], before, "the generation was cancelled")
 
             add_box(world, (-0.1, -20, -6), (0.1, 6, 6))
             walled = world.update_links_in_box(navmesh, (-0.2, -21, -7), (0.2, 7, 7))
@@ -317,7 +317,7 @@ class LinkTest(NavLinkTestCase):
 class PathTest(NavLinkTestCase):
     def test_walker_and_jumper_planned_now(self):
         with nl.World() as world:
-            navmesh = bake_gap_level(world)
+            navmesh = gap_level_with_links(world)
             self.assertJumperAcross(world, world.find_path(nl.PathQuery(navmesh, WEST, EAST, jumper())))
             self.assertWalkerStopsAtGap(world.find_path(nl.PathQuery(navmesh, WEST, EAST, walker())))
             no_partial = nl.PathQuery(navmesh, WEST, EAST, walker())
@@ -337,7 +337,7 @@ class PathTest(NavLinkTestCase):
 
     def test_queued_with_path_workers_and_callbacks(self):
         with nl.World() as world:
-            navmesh = bake_gap_level(world)
+            navmesh = gap_level_with_links(world)
             calls, done = [], threading.Semaphore(0)
 
             def finished(name):
@@ -363,7 +363,7 @@ class PathTest(NavLinkTestCase):
 
     def test_queued_and_run_by_the_host(self):
         world = nl.World(path_worker_count=0)
-        navmesh = bake_gap_level(world)
+        navmesh = gap_level_with_links(world)
         jumper_ticket = world.request_path(nl.PathQuery(navmesh, WEST, EAST, jumper()))
         seen = []
         doomed = world.request_path(nl.PathQuery(navmesh, WEST, EAST, walker()),
@@ -386,7 +386,7 @@ class PathTest(NavLinkTestCase):
 
     def test_invalid_requests(self):
         with nl.World(path_worker_count=0) as world:
-            navmesh = bake_gap_level(world)
+            navmesh = gap_level_with_links(world)
             calls = []
             self.assertFails(nl.STATUS_INVALID_HANDLE, "nl_path_request", world.request_path,
                              nl.PathQuery(nl.NavmeshId(), WEST, EAST, walker()), lambda t, o: calls.append(o))

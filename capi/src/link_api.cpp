@@ -25,7 +25,7 @@ namespace {
 // The first release ended with the requirements before their length.
 constexpr size_t kLinkDefFirstSize = offsetof(nl_link_def, requirements) + offsetof(nl_link_requirements, length);
 constexpr size_t kSettingsFirstSize = offsetof(nl_link_settings, plugin_settings_json_length) + sizeof(size_t);
-constexpr size_t kReportFirstSize = offsetof(nl_bake_report, milliseconds_total) + sizeof(double);
+constexpr size_t kReportFirstSize = offsetof(nl_link_generation_report, milliseconds_total) + sizeof(double);
 constexpr size_t kMaxDropAngles = sizeof(nl_link_settings::drop_angles) / sizeof(float);
 constexpr float kEndReach = 1.0f;  // how far a manual link's end may be from its navmesh
 
@@ -163,8 +163,8 @@ nl::Link link_from_def(const nl_link_def& in, const nl::NavMesh& mesh) {
     return l;
 }
 
-nl_bake_report to_c(const nl::BakeReport& r) {
-    nl_bake_report c{};
+nl_link_generation_report to_c(const nl::LinkGenerationReport& r) {
+    nl_link_generation_report c{};
     c.size = sizeof c;
     c.edges = r.edges;
     c.groups = r.groups;
@@ -351,7 +351,7 @@ NL_API nl_status nl_navmesh_remove_generated_links(nl_world* world, nl_navmesh_i
         const nl::Handle handle = to_handle(navmesh);
         w.navmeshes->get(handle);
         uint32_t removed = 0;
-        w.bakes->forget(handle, [&] { removed = w.links->remove_generated(handle); });
+        w.generations->forget(handle, [&] { removed = w.links->remove_generated(handle); });
         if (out_removed) *out_removed = removed;
     });
 }
@@ -376,7 +376,7 @@ NL_API nl_status nl_link_settings_from_json(const char* json, size_t length, nl_
 }
 
 NL_API nl_status nl_navmesh_generate_links(nl_world* world, nl_navmesh_id navmesh, const nl_link_settings* settings,
-                                           nl_progress_fn* progress, void* user, nl_bake_report* out_report) {
+                                           nl_progress_fn* progress, void* user, nl_link_generation_report* out_report) {
     return guarded("nl_navmesh_generate_links", world, [&] {
         nl_world& w = deref(world);
         const nl::Handle handle = to_handle(navmesh);
@@ -395,20 +395,20 @@ NL_API nl_status nl_navmesh_generate_links(nl_world* world, nl_navmesh_id navmes
                                             ? std::string(given.plugin_settings_json, given.plugin_settings_json_length)
                                             : std::string();
         const nlohmann::json plugin_settings = plugin_settings_of(plugin_json);
-        auto bake = std::make_shared<nl::LinkBake>(mesh, s, nl::BakeMethod::Indexed);
-        const nl::LinkBakes::Turn one_at_a_time = w.bakes->take_turn(handle);
-        nl::BakeReport report;
-        std::vector<nl::Link> links = bake->run(*w.level, *w.tasks, report, progress_of(progress, user));
+        auto generation = std::make_shared<nl::LinkGeneration>(mesh, s, nl::GenerationMethod::Indexed);
+        const nl::LinkBakes::Turn one_at_a_time = w.generations->take_turn(handle);
+        nl::LinkGenerationReport report;
+        std::vector<nl::Link> links = generation->run(*w.level, *w.tasks, report, progress_of(progress, user));
         const std::vector<nl::Link> extra = plugin_links(w, navmesh, *mesh, plugin_settings, report.plugin_links);
         links.insert(links.end(), extra.begin(), extra.end());
-        w.bakes->store(handle, nl::LinkBakes::Entry{std::move(bake), plugin_json}, [&] { w.links->replace_generated(handle, links); });
+        w.generations->store(handle, nl::LinkBakes::Entry{std::move(generation), plugin_json}, [&] { w.links->replace_generated(handle, links); });
         if (out_report) nl::capi::write_growable(out_report, to_c(report), kReportFirstSize, "out_report");
     });
 }
 
 NL_API nl_status nl_navmesh_update_links_in_box(nl_world* world, nl_navmesh_id navmesh, const float* box_min,
                                                 const float* box_max, nl_progress_fn* progress, void* user,
-                                                nl_bake_report* out_report) {
+                                                nl_link_generation_report* out_report) {
     return guarded("nl_navmesh_update_links_in_box", world, [&] {
         nl_world& w = deref(world);
         const nl::Handle handle = to_handle(navmesh);
@@ -422,17 +422,17 @@ NL_API nl_status nl_navmesh_update_links_in_box(nl_world* world, nl_navmesh_id n
             fail(ErrorCode::InvalidArgument, "box_min and box_max must be finite, within the limit, and min <= max");
         if (out_report && out_report->size < kReportFirstSize)
             fail(ErrorCode::InvalidArgument, "out_report->size is ", out_report->size, " (set it to sizeof)");
-        const nl::LinkBakes::Turn one_at_a_time = w.bakes->take_turn(handle);
-        // The bake and the plugin settings of the generation being updated, read together.
-        const nl::LinkBakes::Entry last = w.bakes->get(handle);
-        if (!last.bake) fail(ErrorCode::NotFound, "the navmesh has no generation to update (never generated, or its generated links were "
+        const nl::LinkBakes::Turn one_at_a_time = w.generations->take_turn(handle);
+        // The generation and the plugin settings of the generation being updated, read together.
+        const nl::LinkBakes::Entry last = w.generations->get(handle);
+        if (!last.generation) fail(ErrorCode::NotFound, "the navmesh has no generation to update (never generated, or its generated links were "
                                       "removed or replaced by a JSON load since): call nl_navmesh_generate_links");
-        nl::BakeReport report;
-        std::vector<nl::Link> links = last.bake->update(box, *w.level, *w.tasks, report, progress_of(progress, user));
+        nl::LinkGenerationReport report;
+        std::vector<nl::Link> links = last.generation->update(box, *w.level, *w.tasks, report, progress_of(progress, user));
         const std::vector<nl::Link> extra =
             plugin_links(w, navmesh, *mesh, plugin_settings_of(last.plugin_settings_json), report.plugin_links);
         links.insert(links.end(), extra.begin(), extra.end());
-        if (!w.bakes->store_if_current(handle, last.bake.get(), [&] { w.links->replace_generated(handle, links); }))
+        if (!w.generations->store_if_current(handle, last.generation.get(), [&] { w.links->replace_generated(handle, links); }))
             fail(ErrorCode::NotFound, "the navmesh's generated links were removed or replaced by a JSON load during the update");
         if (out_report) nl::capi::write_growable(out_report, to_c(report), kReportFirstSize, "out_report");
     });
@@ -482,7 +482,7 @@ NL_API nl_status nl_navmesh_load_links_json(nl_world* world, nl_navmesh_id navme
             requirements_from_ends_if_unset(l);
         }
         // The loaded links are not a generation an update could continue.
-        w.bakes->forget(handle, [&] { w.links->replace_all(handle, links); });
+        w.generations->forget(handle, [&] { w.links->replace_all(handle, links); });
         if (out_count) *out_count = static_cast<uint32_t>(links.size());
     });
 }

@@ -113,7 +113,7 @@ NL_API nl_status nl_navmesh_remove(nl_world* world, nl_navmesh_id navmesh) {
         nl_world& w = deref(world);
         w.navmeshes->remove(to_handle(navmesh));
         w.links->remove_navmesh(to_handle(navmesh));
-        w.bakes->remove(to_handle(navmesh));
+        w.generations->remove(to_handle(navmesh));
         w.path_graphs->forget(to_handle(navmesh));
     });
 }

@@ -24,7 +24,7 @@ struct nl_world {
     std::unique_ptr<nl::Level> level;
     std::unique_ptr<nl::NavMeshRegistry> navmeshes;
     std::unique_ptr<nl::LinkStore> links;
-    std::unique_ptr<nl::LinkBakes> bakes;  // each navmesh's last bake, for nl_navmesh_update_links_in_box
+    std::unique_ptr<nl::LinkBakes> generations;  // each navmesh's last generation, for nl_navmesh_update_links_in_box
     std::unique_ptr<nl::capi::PluginRegistry> plugins;
     std::unique_ptr<nl::PathGraphCache> path_graphs;
     std::unique_ptr<nl::PathQueue> paths;

@@ -54,7 +54,7 @@ NL_API nl_status nl_world_create(const nl_world_def* def, nl_world** out_world) 
         world->level = std::make_unique<nl::Level>(*world->tasks, world->handle_tag.value());
         world->navmeshes = std::make_unique<nl::NavMeshRegistry>(world->handle_tag.value());
         world->links = std::make_unique<nl::LinkStore>(world->handle_tag.value());
-        world->bakes = std::make_unique<nl::LinkBakes>();
+        world->generations = std::make_unique<nl::LinkBakes>();
         world->plugins = std::make_unique<nl::capi::PluginRegistry>(*world, world->handle_tag.value());
         nl::capi::register_builtin_plugins(*world->plugins);
         world->path_graphs = std::make_unique<nl::PathGraphCache>();

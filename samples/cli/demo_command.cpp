@@ -33,7 +33,7 @@ int run_demo(int argc, char** argv) {
     const std::vector<samples::AgentProfile> agents = samples::demo_agents();
     NavigableLevel level(generated, "generated default level (seed " + std::to_string(seed) + ")", agents[0].body, "");
     const nl_link_settings settings = nl_default_link_settings();
-    const nl_bake_report report = level.generate_links(settings);
+    const nl_link_generation_report report = level.generate_links(settings);
     const samples::NavmeshContents contents = samples::read_navmesh_contents(level.world(), level.navmesh());
 
     const float* start = generated.marker("start")->position;

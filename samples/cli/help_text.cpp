@@ -8,21 +8,21 @@ const char* const kMainHelp =
     "NavLink: navmeshes with generated jump and drop links, and paths for agents that can take them.\n"
     "\n"
     "commands:\n"
-    "  demo    generate the default level, bake its links, plan one route for three agents\n"
+    "  demo    generate the default level, generate its links, plan one route for three agents\n"
     "          (a walker, a short jumper, a long jumper who may drop); writes demo.png, demo.links.json\n"
-    "  bake    build a level's navmesh and generate its jump and drop links into a JSON file\n"
+    "  generate    build a level's navmesh and generate its jump and drop links into a JSON file\n"
     "  path    plan a path over a level's navmesh and links, and print its segments\n"
     "  level   write the generated default level as an OBJ file\n"
     "\n"
     "`navlink COMMAND --help` describes a command. Errors are one line on stderr and exit status 2.\n";
 
-const char* const kBakeHelp =
-    "usage: navlink bake LEVEL.obj --out LINKS.json [--navmesh NAVMESH.obj] [--agent AGENT.json]\n"
+const char* const kGenerateHelp =
+    "usage: navlink generate LEVEL.obj --out LINKS.json [--navmesh NAVMESH.obj] [--agent AGENT.json]\n"
     "                    [--settings GEN.json] [--png VIEW.png] [--oblique]\n"
     "\n"
     "Builds LEVEL's navmesh with the built-in Recast builder (or takes NAVMESH.obj: convex polygons, Y up),\n"
     "generates jump and drop links against the level geometry, writes them to LINKS.json and prints the\n"
-    "bake report: links by kind, rejections by reason, milliseconds per stage.\n"
+    "generation report: links by kind, rejections by reason, milliseconds per stage.\n"
     "\n"
     "  --out LINKS.json      where the links go (schema \"navlink-links\" 1)\n"
     "  --navmesh NAVMESH.obj use this navmesh instead of building one\n"
@@ -40,7 +40,7 @@ const char* const kPathHelp =
     "                    [--navmesh NAVMESH.obj] [--settings GEN.json] [--json] [--png VIEW.png] [--oblique]\n"
     "\n"
     "Plans a path from --from to --to for the agent (default: Recast's body, jumps up to 4 m across and\n"
-    "1.5 m up, drops up to 5 m) over LEVEL's navmesh and the links of LINKS.json (from navlink bake with\n"
+    "1.5 m up, drops up to 5 m) over LEVEL's navmesh and the links of LINKS.json (from navlink generate with\n"
     "the same level, agent and settings), and prints its points: how each segment is travelled (walk,\n"
     "jump, drop), the link taken, and the length.\n"
     "\n"
@@ -53,7 +53,7 @@ const char* const kPathHelp =
 const char* const kDemoHelp =
     "usage: navlink demo [--seed N] [--out-dir DIR] [--oblique]\n"
     "\n"
-    "Generates the default level (seed 1 unless --seed), builds its navmesh, bakes its links, and plans\n"
+    "Generates the default level (seed 1 unless --seed), builds its navmesh, generates its links, and plans\n"
     "the same start and goal for three agents: a walker (no jumps, no drops), a short jumper (gaps of\n"
     "2 m, 1 m up, no drops) and a long jumper who may drop (gaps of 3.5 m, 1.5 m up, drops of 4 m).\n"
     "Prints a table of their routes and writes demo.png and demo.links.json (in DIR, default '.').\n";

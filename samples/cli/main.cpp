@@ -1,4 +1,4 @@
-// navlink: the command-line tool over the NavLink C ABI (bake links, plan paths, run the demo).
+// navlink: the command-line tool over the NavLink C ABI (generate links, plan paths, run the demo).
 #include <cstdio>
 #include <cstring>
 #include <exception>
@@ -21,7 +21,7 @@ std::string one_line(std::string text) {
 
 int main(int argc, char** argv) {
     if (argc < 2) {
-        std::fprintf(stderr, "navlink: missing command: demo, bake, path or level (see navlink --help)\n");
+        std::fprintf(stderr, "navlink: missing command: demo, generate, path or level (see navlink --help)\n");
         return 2;
     }
     if (!std::strcmp(argv[1], "--help") || !std::strcmp(argv[1], "-h") || !std::strcmp(argv[1], "help")) {
@@ -30,7 +30,7 @@ int main(int argc, char** argv) {
     }
     const std::string command = argv[1];
     try {
-        if (command == "bake") return nl::cli::run_bake(argc, argv);
+        if (command == "generate") return nl::cli::run_generate(argc, argv);
         if (command == "path") return nl::cli::run_path(argc, argv);
         if (command == "demo") return nl::cli::run_demo(argc, argv);
         if (command == "level") return nl::cli::run_level(argc, argv);

@@ -30,8 +30,8 @@ NavigableLevel::NavigableLevel(const levelgen::GeneratedLevel& generated, const 
     times_.navmesh_ms = now_ms() - start;
 }
 
-nl_bake_report NavigableLevel::generate_links(const nl_link_settings& settings) {
-    nl_bake_report report{};
+nl_link_generation_report NavigableLevel::generate_links(const nl_link_settings& settings) {
+    nl_link_generation_report report{};
     report.size = sizeof report;
     ProgressBar bar;
     samples::check(nl_navmesh_generate_links(world_.get(), navmesh_, &settings, ProgressBar::callback, &bar, &report),

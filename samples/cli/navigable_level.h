@@ -1,5 +1,5 @@
 // A level ready for links and paths: a world holding the level geometry and one navmesh for an
-// agent's body, built by Recast or handed over from an OBJ file. Shared by bake, path and demo.
+// agent's body, built by Recast or handed over from an OBJ file. Shared by generate, path and demo.
 #pragma once
 
 #include <navlink/navlink.h>
@@ -8,7 +8,7 @@
 #include <string>
 
 #include "agent_profile.h"
-#include "bake_report_text.h"
+#include "generation_report_text.h"
 #include "level.h"
 #include "level_generator.h"
 #include "world.h"
@@ -28,16 +28,16 @@ public:
     nl_world* world() const { return world_.get(); }
     nl_navmesh_id navmesh() const { return navmesh_; }
     const samples::Level& level() const { return level_; }
-    BakeTimes& times() { return times_; }
+    GenerationTimes& times() { return times_; }
 
     // Generates links with `settings` (a progress bar when stdout is a terminal). Throws SampleError.
-    nl_bake_report generate_links(const nl_link_settings& settings);
+    nl_link_generation_report generate_links(const nl_link_settings& settings);
 
 private:
     samples::World world_;
     samples::Level level_;
     nl_navmesh_id navmesh_{};
-    BakeTimes times_;
+    GenerationTimes times_;
 };
 
 }  // namespace nl::cli

@@ -1,4 +1,4 @@
-// The CLI's pictures: the scene of a baked level (and paths) written as a PNG by samples/sdl.
+// The CLI's pictures: the scene of a generated level (and paths) written as a PNG by samples/sdl.
 #pragma once
 
 #include <string>

@@ -16,8 +16,8 @@ struct OptionSpec {
 
 class Arguments {
 public:
-    // Parses argv[first..argc). Throws SampleError ("bake: unknown option '--x' (see navlink bake
-    // --help)", "bake: --out needs a value", ...): messages start with `command` and point to
+    // Parses argv[first..argc). Throws SampleError ("generate: unknown option '--x' (see navlink generate
+    // --help)", "generate: --out needs a value", ...): messages start with `command` and point to
     // `program` --help.
     Arguments(const std::string& program, const std::string& command, int argc, char** argv, int first,
               const std::vector<OptionSpec>& options);

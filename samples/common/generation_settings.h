@@ -1,4 +1,4 @@
-// Settings of a bake, read from one JSON file: the link generator's settings (the keys
+// Settings of a generation, read from one JSON file: the link generator's settings (the keys
 // nl_link_settings_from_json knows: docs/link-generation.md), plus two optional objects passed on as
 // they are, "recast" (the navmesh builder's settings, navlink/recast.h) and "plugins" (link-kind
 // plugins' settings, keyed by kind name):

@@ -56,7 +56,7 @@ DemoScene build_demo_scene(uint32_t seed, int32_t path_workers) {
         agent->set_target_position(scene.target);
         scene.agents.push_back(root->add_child(std::move(agent)));
     }
-    scene.tree->set_root(std::move(root));  // ready(): bake, add the ladder, request the paths
+    scene.tree->set_root(std::move(root));  // ready(): generate, add the ladder, request the paths
     return scene;
 }
 

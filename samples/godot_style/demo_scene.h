@@ -24,7 +24,7 @@ struct DemoScene {
     Vec3 target{};
 };
 
-// Builds the scene and puts it in a tree (regions bake, links register, agents ask for paths).
+// Builds the scene and puts it in a tree (regions generate, links register, agents ask for paths).
 // `path_workers` as for SceneTree.
 // Throws SampleError.
 DemoScene build_demo_scene(uint32_t seed, int32_t path_workers = 0);

@@ -61,9 +61,9 @@ int main(int argc, char** argv) {
         const long remove_at = args.whole_number("remove-ladder-at", 0, 1000, -1);
         const auto workers = static_cast<int32_t>(args.whole_number("path-workers", 0, 64, 0));
         DemoScene scene = build_demo_scene(seed, workers);
-        const nl_bake_report& bake = scene.region->bake_report();
-        std::printf("scene: region 'Level' (%u jump and %u drop links baked), link 'Ladder', %zu agents\n",
-                    bake.jump_links, bake.drop_links, scene.agents.size());
+        const nl_link_generation_report& report = scene.region->generation_report();
+        std::printf("scene: region 'Level' (%u jump and %u drop links generated), link 'Ladder', %zu agents\n",
+                    report.jump_links, report.drop_links, scene.agents.size());
         for (NavigationAgent* agent : scene.agents) connect_printing(agent, *scene.tree);
 
         auto all_done = [&] {

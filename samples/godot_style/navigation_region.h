@@ -1,6 +1,6 @@
 // A navigation region, as Godot's NavigationRegion3D: a node that owns a level's geometry and its
 // navmesh. When it enters the tree it registers the geometry with the navigation server, builds the
-// navmesh for its agent body (the Recast builder) and bakes the jump and drop links.
+// navmesh for its agent body (the Recast builder) and generates the jump and drop links.
 #pragma once
 
 #include <navlink/navlink.h>
@@ -17,7 +17,7 @@ public:
 
     nl_navmesh_id navmesh() const { return navmesh_; }
     const levelgen::GeneratedLevel& level() const { return generated_; }
-    const nl_bake_report& bake_report() const { return report_; }
+    const nl_link_generation_report& generation_report() const { return report_; }
 
 protected:
     void ready() override;
@@ -28,7 +28,7 @@ private:
     nl_link_settings link_settings_;
     samples::Level level_;
     nl_navmesh_id navmesh_{};
-    nl_bake_report report_{};
+    nl_link_generation_report report_{};
 };
 
 }  // namespace nl::godot_style

@@ -30,7 +30,7 @@ EdgeSampling sample_edges(const NavMesh& mesh, const LinkSettings& s) {
     out.edges = static_cast<uint32_t>(edges.size());
 
     // Counted before anything is allocated: a huge navmesh with a fine spacing is refused, not a
-    // bake that runs out of memory or overflows its counts.
+    // generation that runs out of memory or overflows its counts.
     double planned = 0.0;
     for (const BoundaryEdge& e : edges) planned += std::max(1.0, std::round(double((e.end - e.start).norm()) / s.sample_spacing));
     if (planned > kMaxEdgeSamples)

@@ -25,7 +25,7 @@ LinkBakes::Turn LinkBakes::take_turn(Handle navmesh) {
     std::shared_ptr<std::mutex> m;
     {
         std::lock_guard lock(mutex_);
-        // A removed navmesh keeps no entry (its bake will not be kept either).
+        // A removed navmesh keeps no entry (its generation will not be kept either).
         if (removed_.contains(navmesh)) {
             m = std::make_shared<std::mutex>();
         } else {
@@ -44,10 +44,10 @@ void LinkBakes::store(Handle navmesh, Entry entry, FunctionRef<void()> links) {
     bakes_[key(navmesh)] = std::move(entry);
 }
 
-bool LinkBakes::store_if_current(Handle navmesh, const LinkBake* bake, FunctionRef<void()> links) {
+bool LinkBakes::store_if_current(Handle navmesh, const LinkGeneration* generation, FunctionRef<void()> links) {
     std::lock_guard lock(mutex_);
     const auto it = bakes_.find(key(navmesh));
-    if (it == bakes_.end() || it->second.bake.get() != bake) return false;
+    if (it == bakes_.end() || it->second.generation.get() != generation) return false;
     links();
     return true;
 }

@@ -18,7 +18,7 @@
 namespace nl {
 
 // Answers a level designer's "why is there no link here?": what each stage saw and refused.
-struct BakeReport {
+struct LinkGenerationReport {
     uint32_t edges = 0;              // boundary edges of the navmesh
     uint32_t groups = 0;             // groups of short edges
     uint32_t samples = 0;            // take-off samples on edges
@@ -47,7 +47,7 @@ struct BakeReport {
            milliseconds_merge = 0, milliseconds_total = 0;
 };
 
-// How a bake finds its work; both give the same links, bit for bit.
+// How a generation finds its work; both give the same links, bit for bit.
 //   Indexed:    spatial indexes everywhere: jump candidates from a grid of take-off points, points
 //               located through the navmesh's polygon grid, near-duplicates found through a grid of
 //               link ends, and a straight run of sweep pieces whose box no triangle touches is clear
@@ -56,13 +56,13 @@ struct BakeReport {
 //               piece of every sweep tested exactly (the level's rays and the triangles near a piece
 //               still come from Embree). The reference the tests and navlink-bench-links compare the
 //               generator with.
-enum class BakeMethod { Indexed, BruteForce };
+enum class GenerationMethod { Indexed, BruteForce };
 
 // Called between and within stages with the fraction done (0..1) and the stage's name; returning
-// false cancels the bake (generate_links then throws Cancelled).
-using BakeProgress = FunctionRef<bool(float fraction, const char* stage)>;
+// false cancels the generation (generate_links then throws Cancelled).
+using GenerationProgress = FunctionRef<bool(float fraction, const char* stage)>;
 
 std::vector<Link> generate_links(const NavMesh& navmesh, const Level& level, TaskSystem& tasks, const LinkSettings& settings,
-                                 BakeMethod method, BakeReport& report, BakeProgress progress);
+                                 GenerationMethod method, LinkGenerationReport& report, GenerationProgress progress);
 
 }  // namespace nl

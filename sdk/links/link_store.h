@@ -61,7 +61,7 @@ private:
     std::unordered_map<uint64_t, std::vector<Handle>> by_navmesh_;
     // Per navmesh with links: its last snapshot, or null while an edit since has not been read.
     mutable std::unordered_map<uint64_t, std::shared_ptr<const LinkSnapshot>> snapshots_;
-    // Navmeshes removed from the world: a bake that finishes after the removal must not store links
+    // Navmeshes removed from the world: a generation that finishes after the removal must not store links
     // for them.
     RemovedHandles removed_;
     void require_live(Handle navmesh) const;

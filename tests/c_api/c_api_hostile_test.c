@@ -2125,14 +2125,14 @@ static const float* g_box_min = k_box_min;
 static const float* g_box_max = k_box_max;
 static int g_update;
 static nl_status generate_call(nl_world* world, nl_navmesh_id navmesh, const nl_link_settings* settings,
-                               nl_progress_fn* progress, void* user, nl_bake_report* report) {
+                               nl_progress_fn* progress, void* user, nl_link_generation_report* report) {
     return g_update ? nl_navmesh_update_links_in_box(world, navmesh, g_box_min, g_box_max, progress, user, report)
                     : nl_navmesh_generate_links(world, navmesh, settings, progress, user, report);
 }
 
 static void generate_fails_with(nl_navmesh_id navmesh, const void* settings, nl_progress_fn* progress, void* user,
                                 nl_status detail, const char* needle) {
-    nl_bake_report report;
+    nl_link_generation_report report;
     fill(&report, sizeof report);
     report.size = sizeof report;
     EXPECT_FAILURE(A.world, generate_call(A.world, navmesh, (const nl_link_settings*)settings, progress, user, &report), detail,
@@ -2152,11 +2152,11 @@ static void generate_accepts(const void* settings) {
 }
 
 static nl_status generate_id_call(nl_world* w, raw_id id, void* out) {
-    return generate_call(w, AS(nl_navmesh_id, id), NULL, NULL, NULL, (nl_bake_report*)out);
+    return generate_call(w, AS(nl_navmesh_id, id), NULL, NULL, NULL, (nl_link_generation_report*)out);
 }
 
 static nl_status generate_into(void* report) {
-    const nl_status status = generate_call(A.world, A.navmesh, NULL, NULL, NULL, (nl_bake_report*)report);
+    const nl_status status = generate_call(A.world, A.navmesh, NULL, NULL, NULL, (nl_link_generation_report*)report);
     if (NL_SUCCEEDED(status)) fixture_refresh();
     return status;
 }
@@ -2178,7 +2178,7 @@ static int32_t note_user(void* user, float fraction, const char* stage) {
 
 /* What both share: the ids, the progress callback and its user, the report. */
 static void generation_cases(const char* function) {
-    const id_function f = {function, "navmesh", "out_report", sizeof(nl_bake_report), 1, 0, generate_id_call, 1};
+    const id_function f = {function, "navmesh", "out_report", sizeof(nl_link_generation_report), 1, 0, generate_id_call, 1};
     int calls = 0;
     id_cases(&f, RAW(A.navmesh), RAW(A.stale_navmesh), RAW(B.navmesh));
     CASE(function, "progress cancels (returns 0 at once)") {
@@ -2193,7 +2193,7 @@ static void generation_cases(const char* function) {
         fixture_refresh();
     }
     CASE(function, "out_report NULL (allowed)") { generate_accepts(NULL); }
-    out_sizes(function, "out_report", sizeof(nl_bake_report), generate_into);
+    out_sizes(function, "out_report", sizeof(nl_link_generation_report), generate_into);
 }
 
 static const def_case k_generation_settings[] = {

@@ -133,8 +133,8 @@ static void set3(float* p, float x, float y, float z) {
     p[2] = z;
 }
 
-static nl_bake_report empty_report(void) {
-    nl_bake_report r;
+static nl_link_generation_report empty_report(void) {
+    nl_link_generation_report r;
     memset(&r, 0xab, sizeof r);
     r.size = sizeof r;
     return r;
@@ -253,7 +253,7 @@ static progress_log new_progress_log(void) {
 }
 
 /* The report's own consistency, whatever the level. */
-static void check_report(const nl_bake_report* r, uint32_t listed_generated, const char* label) {
+static void check_report(const nl_link_generation_report* r, uint32_t listed_generated, const char* label) {
     CHECK_MSG(r->size == sizeof *r, "%s: report.size changed to %u", label, (unsigned)r->size);
     CHECK_MSG(r->jump_links + r->drop_links == listed_generated,
               "%s: report says %u jumps + %u drops, %u generated links are listed", label, (unsigned)r->jump_links,
@@ -277,7 +277,7 @@ static void check_report(const nl_bake_report* r, uint32_t listed_generated, con
 static void test_link_generation_gap(void) {
     nl_world* world = make_world(2);
     const nl_navmesh_id navmesh = build_level(world, LEVEL_GAP);
-    nl_bake_report report = empty_report();
+    nl_link_generation_report report = empty_report();
     progress_log log = new_progress_log();
     nl_link *links, *again, *before;
     uint32_t n = 0, n_again = 0, n_before = 0, i, polygons = polygon_count(world, navmesh);
@@ -372,7 +372,7 @@ static void test_link_generation_gap(void) {
     {
         nl_world* walled = make_world(1);
         const nl_navmesh_id id = build_level(walled, LEVEL_WALLED_GAP);
-        nl_bake_report r = empty_report();
+        nl_link_generation_report r = empty_report();
         CHECK_OK(nl_navmesh_generate_links(walled, id, NULL, NULL, NULL, &r));
         CHECK(r.jump_links == 0u && link_count(walled, id) == 0u);
         CHECK_MSG(r.jump_candidates > 0u && r.rejected_clearance >= r.jump_candidates,
@@ -385,11 +385,11 @@ static void test_link_generation_gap(void) {
     {
         nl_world* wide = make_world(1);
         const nl_navmesh_id id = build_level(wide, LEVEL_WIDE_GAP);
-        nl_bake_report r = empty_report();
+        nl_link_generation_report r = empty_report();
         CHECK_OK(nl_navmesh_generate_links(wide, id, NULL, NULL, NULL, &r));
         CHECK(r.jump_links == 0u && link_count(wide, id) == 0u);
         CHECK_THAT(r.rejected_distance > 0u,
-                   "nl_bake_report.rejected_distance (\"A jump's gap too wide or too narrow\"): a gap wider than "
+                   "nl_link_generation_report.rejected_distance (\"A jump's gap too wide or too narrow\"): a gap wider than "
                    "max_jump_gap between two facing edges is counted, so the report answers why there is no "
                    "jump there");
         nl_world_destroy(wide);
@@ -398,7 +398,7 @@ static void test_link_generation_gap(void) {
     /* Settings are honoured: a max_jump_gap below the gap, then a denser sampling. */
     {
         nl_link_settings s = nl_default_link_settings();
-        nl_bake_report r = empty_report();
+        nl_link_generation_report r = empty_report();
         s.max_jump_gap = 1.8f;
         CHECK_OK(nl_navmesh_generate_links(world, navmesh, &s, NULL, NULL, &r));
         CHECK(r.jump_links == 0u && link_count(world, navmesh) == 0u);
@@ -422,7 +422,7 @@ static void test_link_generation_gap(void) {
 static void test_link_generation_ledge(void) {
     nl_world* world = make_world(2);
     const nl_navmesh_id navmesh = build_level(world, LEVEL_LEDGE);
-    nl_bake_report report = empty_report();
+    nl_link_generation_report report = empty_report();
     nl_link* links;
     uint32_t n = 0, i;
     int wrong_kind = 0, wrong_way = 0, wrong_drop = 0, wrong_ends = 0, bad_apex = 0;
@@ -482,7 +482,7 @@ static void test_link_generation_ledge(void) {
        with three, the turned probes that land on the same floor are counted as duplicates. */
     {
         nl_link_settings s = nl_default_link_settings();
-        nl_bake_report three = empty_report();
+        nl_link_generation_report three = empty_report();
         CHECK_OK(nl_navmesh_generate_links(world, navmesh, NULL, NULL, NULL, &three));
         s.drop_angle_count = 1;
         report = empty_report();
@@ -507,7 +507,7 @@ static void test_manual_links(void) {
     nl_link_id manual = {0u, 0u}, plugin = {0u, 0u};
     nl_link got, got_plugin;
     nl_link* links;
-    nl_bake_report report = empty_report();
+    nl_link_generation_report report = empty_report();
     uint32_t n = 0, generated = 0, removed = 0xdeadbeefu, i;
     g_section = "links: manual";
 
@@ -772,7 +772,7 @@ static void test_link_refusals(void) {
         size_t k;
         for (k = 0; k < sizeof bad / sizeof bad[0]; ++k) {
             nl_link_settings s = nl_default_link_settings();
-            nl_bake_report r = empty_report();
+            nl_link_generation_report r = empty_report();
             nl_link* after;
             uint32_t n1 = 0;
             switch (bad[k].which) {
@@ -800,7 +800,7 @@ static void test_link_refusals(void) {
         }
     }
     {
-        nl_bake_report r = empty_report();
+        nl_link_generation_report r = empty_report();
         nl_link* after;
         uint32_t n1 = 0;
         r.size = 8u;
@@ -1274,7 +1274,7 @@ static void test_link_settings_json(void) {
         nl_world* world = make_world(1);
         const nl_navmesh_id navmesh = build_level(world, LEVEL_GAP);
         static const char short_reach[] = "{\"max_jump_gap\": 1.8}";
-        nl_bake_report r = empty_report();
+        nl_link_generation_report r = empty_report();
         s = nl_default_link_settings();
         CHECK_OK(nl_link_settings_from_json(short_reach, sizeof short_reach - 1u, &s));
         CHECK_OK(nl_navmesh_generate_links(world, navmesh, &s, NULL, NULL, &r));
@@ -1284,20 +1284,20 @@ static void test_link_settings_json(void) {
 }
 
 /* ---------------------------------------------------------------------------------------------
- * Cancelling a bake
+ * Cancelling a generation
  * ------------------------------------------------------------------------------------------- */
 
-/* A progress callback that bakes another navmesh: refused at once (it could wait for the bake that
-   called it; two threads doing it crosswise used to hang forever), and the outer bake goes on. */
+/* A progress callback that generates another navmesh: refused at once (it could wait for the generation that
+   called it; two threads doing it crosswise used to hang forever), and the outer generation goes on. */
 typedef struct {
     nl_world* world;
     nl_navmesh_id other;
     nl_status inner_generate, inner_update;
     int calls;
-} nested_bake;
+} nested_generation;
 
-static int32_t bake_from_progress(void* user, float fraction, const char* stage) {
-    nested_bake* n = (nested_bake*)user;
+static int32_t generate_from_progress(void* user, float fraction, const char* stage) {
+    nested_generation* n = (nested_generation*)user;
     static const float lo[3] = {-1.0f, -1.0f, -1.0f}, hi[3] = {1.0f, 1.0f, 1.0f};
     (void)fraction;
     (void)stage;
@@ -1308,22 +1308,22 @@ static int32_t bake_from_progress(void* user, float fraction, const char* stage)
     return 1;
 }
 
-static void test_link_nested_bake_refused(void) {
+static void test_link_nested_generation_refused(void) {
     nl_world* world = make_world(2);
     const nl_navmesh_id navmesh = build_level(world, LEVEL_LEDGE);
     const nl_navmesh_build_def build = nl_default_navmesh_build_def();
-    nested_bake n;
-    g_section = "links: a bake from a progress callback";
+    nested_generation n;
+    g_section = "links: a generation from a progress callback";
     memset(&n, 0, sizeof n);
     n.world = world;
     CHECK_OK(nl_navmesh_build(world, &build, &n.other));
     CHECK_OK(nl_navmesh_generate_links(world, n.other, NULL, NULL, NULL, NULL));
-    CHECK_OK(nl_navmesh_generate_links(world, navmesh, NULL, bake_from_progress, &n, NULL));
+    CHECK_OK(nl_navmesh_generate_links(world, navmesh, NULL, generate_from_progress, &n, NULL));
     CHECK(n.calls > 1);
     CHECK(n.inner_generate == (NL_STATUS_FAILURE | NL_STATUS_INVALID_ARGUMENT));
     CHECK(n.inner_update == (NL_STATUS_FAILURE | NL_STATUS_INVALID_ARGUMENT));
     CHECK(link_count(world, navmesh) > 0u);
-    /* After it, on the same thread, bakes run again. */
+    /* After it, on the same thread, generations run again. */
     CHECK_OK(nl_navmesh_generate_links(world, n.other, NULL, NULL, NULL, NULL));
     nl_world_destroy(world);
 }
@@ -1343,7 +1343,7 @@ static void test_link_cancel(void) {
 
     for (k = 0; k < sizeof stages / sizeof stages[0]; ++k) {
         progress_log log = new_progress_log();
-        nl_bake_report r = empty_report();
+        nl_link_generation_report r = empty_report();
         nl_link_settings s = nl_default_link_settings();
         nl_link* after;
         uint32_t n1 = 0;
@@ -1354,7 +1354,7 @@ static void test_link_cancel(void) {
         CHECK_MSG(strcmp(log.last_stage, stages[k]) == 0, "cancelled at \"%s\", the last stage seen was \"%s\"",
                   stages[k], log.last_stage);
         CHECK_MSG(all_bytes((const char*)&r + sizeof r.size, sizeof r - sizeof r.size, 0xab),
-                  "a cancelled bake wrote the report (stage %s)", stages[k]);
+                  "a cancelled generation wrote the report (stage %s)", stages[k]);
         after = list_links(world, navmesh, &n1);
         CHECK_MSG(same_list(before, n0, after, n1), "cancelled at \"%s\": the links are not as they were", stages[k]);
         for (i = 0; i < n0; ++i) CHECK(nl_link_is_valid(world, before[i].id) == 1);
@@ -1384,7 +1384,7 @@ static void test_link_update_in_box(void) {
     const nl_link_def def = manual_def();
     nl_link_id manual = {0u, 0u};
     nl_mesh_id wall = {0u, 0u};
-    nl_bake_report full = empty_report(), r = empty_report();
+    nl_link_generation_report full = empty_report(), r = empty_report();
     progress_log log = new_progress_log();
     nl_link *original, *now, *after;
     uint32_t n_original = 0, n_now = 0, n_after = 0, i;
@@ -1403,7 +1403,7 @@ static void test_link_update_in_box(void) {
     /* Refusals, each changing nothing. */
     {
         const float nan_min[3] = {NAN, 0.0f, 0.0f}, inverted_max[3] = {-1.0f, 6.0f, 6.0f};
-        nl_bake_report small = empty_report();
+        nl_link_generation_report small = empty_report();
         small.size = 8u;
         CHECK_INVALID(nl_navmesh_update_links_in_box(world, navmesh, NULL, wall_max, NULL, NULL, NULL), "box_min");
         CHECK_INVALID(nl_navmesh_update_links_in_box(world, navmesh, wall_min, NULL, NULL, NULL, NULL), "box_max");
@@ -1462,7 +1462,7 @@ static void test_link_update_in_box(void) {
         CHECK_MSG(same_fields(&now[i], &original[i], 1), "after the wall went, link %u differs from the original", (unsigned)i);
     free(now);
 
-    /* Removing the navmesh forgets its bake. */
+    /* Removing the navmesh forgets its generation. */
     CHECK_OK(nl_navmesh_remove(world, navmesh));
     CHECK_FAIL(nl_navmesh_update_links_in_box(world, navmesh, wall_min, wall_max, NULL, NULL, NULL),
                NL_STATUS_INVALID_HANDLE, "navmesh");
@@ -1474,15 +1474,15 @@ static void test_link_update_in_box(void) {
  * A navmesh removed while its links are being generated
  * ------------------------------------------------------------------------------------------- */
 
-typedef struct remove_during_bake {
+typedef struct remove_during_generation {
     nl_world* world;
     nl_navmesh_id navmesh;
     nl_status removed;
     int done;
-} remove_during_bake;
+} remove_during_generation;
 
 static int remove_navmesh_late(void* user, float fraction, const char* stage) {
-    remove_during_bake* job = (remove_during_bake*)user;
+    remove_during_generation* job = (remove_during_generation*)user;
     (void)stage;
     if (fraction >= 0.9f && !job->done) { /* as another thread could, at any moment */
         job->done = 1;
@@ -1491,12 +1491,12 @@ static int remove_navmesh_late(void* user, float fraction, const char* stage) {
     return 1;
 }
 
-static void test_link_navmesh_removed_during_bake(void) {
+static void test_link_navmesh_removed_during_generation(void) {
     nl_world* world = make_world(1);
-    remove_during_bake job;
+    remove_during_generation job;
     nl_link* old;
     uint32_t n = 0, i, live = 0;
-    g_section = "links: navmesh removed during a bake";
+    g_section = "links: navmesh removed during a generation";
 
     job.world = world;
     job.navmesh = build_level(world, LEVEL_GAP);
@@ -1508,7 +1508,7 @@ static void test_link_navmesh_removed_during_bake(void) {
         const nl_status st = nl_navmesh_generate_links(world, job.navmesh, NULL, remove_navmesh_late, &job, NULL);
         CHECK(job.done && job.removed == NL_STATUS_SUCCESS);
         CHECK_THAT(st == (NL_STATUS_FAILURE | NL_STATUS_INVALID_HANDLE) || st == NL_STATUS_SUCCESS,
-                   "nl_navmesh_generate_links: a navmesh removed during the bake is INVALID_HANDLE (or a success whose "
+                   "nl_navmesh_generate_links: a navmesh removed during the generation is INVALID_HANDLE (or a success whose "
                    "links went with the navmesh)");
     }
     CHECK(nl_navmesh_is_valid(world, job.navmesh) == 0);
@@ -1606,7 +1606,7 @@ static void test_link_threads(void) {
     set3(manual.end, 5.0f, 0.0f, 0.0f);
     CHECK_OK(nl_link_add(world, navmesh, &manual, &manual_id));
     for (g = 0; g < GENERATIONS; ++g) {
-        nl_bake_report r = empty_report();
+        nl_link_generation_report r = empty_report();
         CHECK_OK(nl_navmesh_generate_links(world, navmesh, &settings[g], NULL, NULL, &r));
         for (i = 0; i < READERS; ++i) {
             jobs[i].jumps[g] = r.jump_links;
@@ -1663,8 +1663,8 @@ void test_links_all(void) {
     test_link_json();
     test_link_settings_json();
     test_link_cancel();
-    test_link_nested_bake_refused();
+    test_link_nested_generation_refused();
     test_link_update_in_box();
-    test_link_navmesh_removed_during_bake();
+    test_link_navmesh_removed_during_generation();
     test_link_threads();
 }

@@ -171,30 +171,30 @@ _Static_assert(offsetof(nl_link_settings, size) == 0 && offsetof(nl_link_setting
                    offsetof(nl_link_settings, clearance_margin) == 140 &&
                    offsetof(nl_link_settings, arc_segments) == 144,
                "nl_link_settings");
-_Static_assert(offsetof(nl_bake_report, size) == 0 && offsetof(nl_bake_report, edges) == 4 &&
-                   offsetof(nl_bake_report, groups) == 8 && offsetof(nl_bake_report, samples) == 12 &&
-                   offsetof(nl_bake_report, takeoff_points) == 16 && offsetof(nl_bake_report, jump_candidates) == 20 &&
-                   offsetof(nl_bake_report, drop_candidates) == 24 && offsetof(nl_bake_report, jump_links) == 28 &&
-                   offsetof(nl_bake_report, drop_links) == 32 && offsetof(nl_bake_report, plugin_links) == 36 &&
-                   offsetof(nl_bake_report, rejected_wall) == 40 &&
-                   offsetof(nl_bake_report, rejected_not_ledge) == 44 &&
-                   offsetof(nl_bake_report, rejected_distance) == 48 && offsetof(nl_bake_report, rejected_rise) == 52 &&
-                   offsetof(nl_bake_report, rejected_angle) == 56 &&
-                   offsetof(nl_bake_report, rejected_no_landing) == 60 &&
-                   offsetof(nl_bake_report, rejected_clearance) == 64 &&
-                   offsetof(nl_bake_report, rejected_duplicate) == 68 && offsetof(nl_bake_report, rays_cast) == 72 &&
-                   offsetof(nl_bake_report, milliseconds_edges) == 80 &&
-                   offsetof(nl_bake_report, milliseconds_takeoff) == 88 &&
-                   offsetof(nl_bake_report, milliseconds_jumps) == 96 &&
-                   offsetof(nl_bake_report, milliseconds_drops) == 104 &&
-                   offsetof(nl_bake_report, milliseconds_merge) == 112 &&
-                   offsetof(nl_bake_report, milliseconds_total) == 120 &&
-                   offsetof(nl_bake_report, box_queries) == 128 && offsetof(nl_bake_report, body_tests) == 136 &&
-                   offsetof(nl_bake_report, rejected_walkable) == 144 &&
-                   offsetof(nl_bake_report, rejected_too_shallow) == 148 &&
-                   offsetof(nl_bake_report, rejected_too_deep) == 152 && offsetof(nl_bake_report, reserved) == 156 &&
-                   sizeof(nl_bake_report) == 160,
-               "nl_bake_report (no hidden padding)");
+_Static_assert(offsetof(nl_link_generation_report, size) == 0 && offsetof(nl_link_generation_report, edges) == 4 &&
+                   offsetof(nl_link_generation_report, groups) == 8 && offsetof(nl_link_generation_report, samples) == 12 &&
+                   offsetof(nl_link_generation_report, takeoff_points) == 16 && offsetof(nl_link_generation_report, jump_candidates) == 20 &&
+                   offsetof(nl_link_generation_report, drop_candidates) == 24 && offsetof(nl_link_generation_report, jump_links) == 28 &&
+                   offsetof(nl_link_generation_report, drop_links) == 32 && offsetof(nl_link_generation_report, plugin_links) == 36 &&
+                   offsetof(nl_link_generation_report, rejected_wall) == 40 &&
+                   offsetof(nl_link_generation_report, rejected_not_ledge) == 44 &&
+                   offsetof(nl_link_generation_report, rejected_distance) == 48 && offsetof(nl_link_generation_report, rejected_rise) == 52 &&
+                   offsetof(nl_link_generation_report, rejected_angle) == 56 &&
+                   offsetof(nl_link_generation_report, rejected_no_landing) == 60 &&
+                   offsetof(nl_link_generation_report, rejected_clearance) == 64 &&
+                   offsetof(nl_link_generation_report, rejected_duplicate) == 68 && offsetof(nl_link_generation_report, rays_cast) == 72 &&
+                   offsetof(nl_link_generation_report, milliseconds_edges) == 80 &&
+                   offsetof(nl_link_generation_report, milliseconds_takeoff) == 88 &&
+                   offsetof(nl_link_generation_report, milliseconds_jumps) == 96 &&
+                   offsetof(nl_link_generation_report, milliseconds_drops) == 104 &&
+                   offsetof(nl_link_generation_report, milliseconds_merge) == 112 &&
+                   offsetof(nl_link_generation_report, milliseconds_total) == 120 &&
+                   offsetof(nl_link_generation_report, box_queries) == 128 && offsetof(nl_link_generation_report, body_tests) == 136 &&
+                   offsetof(nl_link_generation_report, rejected_walkable) == 144 &&
+                   offsetof(nl_link_generation_report, rejected_too_shallow) == 148 &&
+                   offsetof(nl_link_generation_report, rejected_too_deep) == 152 && offsetof(nl_link_generation_report, reserved) == 156 &&
+                   sizeof(nl_link_generation_report) == 160,
+               "nl_link_generation_report (no hidden padding)");
 #if UINTPTR_MAX == 0xffffffffffffffffu
 /* On LP64 the pointer after arc_segments leaves 4 bytes of padding at 148. */
 _Static_assert(offsetof(nl_link_settings, plugin_settings_json) == 152 &&
@@ -285,9 +285,9 @@ struct api_table {
     nl_link_settings (*default_link_settings)(void);
     nl_status (*link_settings_from_json)(const char*, size_t, nl_link_settings*);
     nl_status (*navmesh_generate_links)(nl_world*, nl_navmesh_id, const nl_link_settings*, nl_progress_fn*, void*,
-                                        nl_bake_report*);
+                                        nl_link_generation_report*);
     nl_status (*navmesh_update_links_in_box)(nl_world*, nl_navmesh_id, const float*, const float*, nl_progress_fn*,
-                                             void*, nl_bake_report*);
+                                             void*, nl_link_generation_report*);
     nl_status (*navmesh_save_links_json)(const nl_world*, nl_navmesh_id, char*, size_t, size_t*);
     nl_status (*navmesh_load_links_json)(nl_world*, nl_navmesh_id, const char*, size_t, uint32_t*);
     nl_progress_fn* progress;
@@ -296,8 +296,8 @@ struct api_table {
     nl_navmesh_sink_fn* sink;
 };
 
-/* A bake progress callback as a host writes it. */
-static int32_t bake_progress(void* user, float fraction, const char* stage) {
+/* A generation progress callback as a host writes it. */
+static int32_t generation_progress(void* user, float fraction, const char* stage) {
     (void)user;
     (void)stage;
     return fraction <= 1.0f;
@@ -334,7 +334,7 @@ int main(void) {
         nl_link_is_valid,       nl_link_get,            nl_navmesh_get_links, nl_navmesh_remove_generated_links,
         nl_default_link_settings, nl_link_settings_from_json, nl_navmesh_generate_links,
         nl_navmesh_update_links_in_box, nl_navmesh_save_links_json, nl_navmesh_load_links_json,
-        bake_progress,
+        generation_progress,
         plugin_entry,           navmesh_sink,
     };
     const nl_link_id null_link = {0u, 0u};

@@ -42,7 +42,7 @@ static_assert(blittable<nl_link_requirements>(), "nl_link_requirements");
 static_assert(blittable<nl_link>(), "nl_link");
 static_assert(blittable<nl_link_def>(), "nl_link_def");
 static_assert(blittable<nl_link_settings>(), "nl_link_settings");
-static_assert(blittable<nl_bake_report>(), "nl_bake_report");
+static_assert(blittable<nl_link_generation_report>(), "nl_link_generation_report");
 static_assert(sizeof(nl_link) == 112 && sizeof(nl_link_requirements) == 32 && sizeof(nl_link_id) == 8,
               "fixed link structs have the same size in C++ as in C");
 static_assert(std::is_same<nl_link_kind, uint32_t>::value, "nl_link_kind is uint32_t");
@@ -65,7 +65,7 @@ bool all_set(F* f, Rest*... rest) {
 }
 
 void log_sink(void*, nl_log_level, nl_status, const char*) {}
-int32_t bake_progress(void*, float, const char*) { return 1; }
+int32_t generation_progress(void*, float, const char*) { return 1; }
 
 }  // namespace
 
@@ -88,7 +88,7 @@ int main() {
                  &nl_link_settings_from_json, &nl_navmesh_generate_links, &nl_navmesh_update_links_in_box,
                  &nl_navmesh_save_links_json, &nl_navmesh_load_links_json))
         return 1;
-    nl_progress_fn* progress = bake_progress;
+    nl_progress_fn* progress = generation_progress;
     if (progress(nullptr, 0.5f, "jumps") != 1) return 1;
     nl_world_def def = nl_default_world_def();
     def.worker_count = 1;

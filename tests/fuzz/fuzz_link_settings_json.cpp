@@ -1,6 +1,6 @@
 // libFuzzer target: the link generator's JSON inputs. The first byte chooses which: even, the link
 // settings (nl_link_settings_from_json); odd, the link-kind plugins' settings, which
-// nl_navmesh_generate_links checks before any work (accepted ones then bake a 2 m x 2 m navmesh).
+// nl_navmesh_generate_links checks before any work (accepted ones then generate a 2 m x 2 m navmesh).
 #include <cstddef>
 #include <cstdint>
 #include <string>

@@ -186,7 +186,7 @@ struct BlockScene {
         nl_link_settings settings = nl_default_link_settings();
         settings.plugin_settings_json = plugin_json;
         settings.plugin_settings_json_length = plugin_json ? std::strlen(plugin_json) : 0;
-        nl_bake_report report{};
+        nl_link_generation_report report{};
         report.size = sizeof report;
         CHECK_MESSAGE(nl_navmesh_generate_links(world, navmesh, &settings, nullptr, nullptr, &report) == expected,
                       nl_get_last_error_message());

@@ -1,4 +1,4 @@
-// navlink level, bake, path and demo on the generated default level: exit statuses, the links file,
+// navlink level, generate, path and demo on the generated default level: exit statuses, the links file,
 // the JSON path, and links where the level's features put them.
 #include <cmath>
 #include <map>
@@ -55,9 +55,9 @@ TEST_CASE("navlink level writes the generated level as OBJ, with its markers") {
     CHECK(nl::test::read_file(files.dir + "/other.obj") != obj);  // another seed, another level
 }
 
-TEST_CASE("navlink bake on the generated level: links file, report and picture agree, links are where the level says") {
-    GeneratedLevelFiles files("bake");
-    const ProgramRun run = navlink({"bake", "level.obj", "--out", "links.json", "--png", "view.png"}, files.dir);
+TEST_CASE("navlink generate on the generated level: links file, report and picture agree, links are where the level says") {
+    GeneratedLevelFiles files("generate");
+    const ProgramRun run = navlink({"generate", "level.obj", "--out", "links.json", "--png", "view.png"}, files.dir);
     REQUIRE_MESSAGE(run.exit_code == 0, run.err);
     CHECK(run.err.empty());
     const json links = nl::test::parse_json_file(files.dir + "/links.json");
@@ -114,10 +114,10 @@ TEST_CASE("navlink bake on the generated level: links file, report and picture a
     CHECK(onto_last >= 3);
 }
 
-TEST_CASE("navlink bake reads settings and agent files: shorter links leave the second gap unjumped") {
-    GeneratedLevelFiles files("bake_settings");
+TEST_CASE("navlink generate reads settings and agent files: shorter links leave the second gap unjumped") {
+    GeneratedLevelFiles files("generate_settings");
     nl::test::write_file(files.dir + "/short.json", R"({"max_jump_gap": 2.5, "recast": {"cell_size": 0.25}})");
-    const ProgramRun run = navlink({"bake", "level.obj", "--settings", "short.json", "--out", "links.json"}, files.dir);
+    const ProgramRun run = navlink({"generate", "level.obj", "--settings", "short.json", "--out", "links.json"}, files.dir);
     REQUIRE_MESSAGE(run.exit_code == 0, run.err);
     const json links = nl::test::parse_json_file(files.dir + "/links.json");
     CHECK(!jumps_across(links, files.level, 0).empty());  // 1.4 to 1.8 m
@@ -126,9 +126,9 @@ TEST_CASE("navlink bake reads settings and agent files: shorter links leave the 
     // A thinner body: its navmesh reaches closer to the rims, so the same gap is a shorter jump end to
     // end (the gap itself, rim to rim, is the same).
     write_agent(files.dir + "/thin.json", R"({"name": "thin", "radius": 0.3})");
-    REQUIRE(navlink({"bake", "level.obj", "--agent", "thin.json", "--out", "thin.json.links"}, files.dir).exit_code ==
+    REQUIRE(navlink({"generate", "level.obj", "--agent", "thin.json", "--out", "thin.json.links"}, files.dir).exit_code ==
             0);
-    REQUIRE(navlink({"bake", "level.obj", "--out", "default.links"}, files.dir).exit_code == 0);
+    REQUIRE(navlink({"generate", "level.obj", "--out", "default.links"}, files.dir).exit_code == 0);
     auto shortest = [&](const std::string& file, const char* what) {
         float best = 1e9f;
         for (const auto& l : jumps_across(nl::test::parse_json_file(files.dir + "/" + file), files.level, 0))
@@ -139,7 +139,7 @@ TEST_CASE("navlink bake reads settings and agent files: shorter links leave the 
     CHECK(shortest("thin.json.links", "gap") == doctest::Approx(shortest("default.links", "gap")).epsilon(0.03));
 }
 
-TEST_CASE("navlink bake and path with a navmesh handed over as OBJ (--navmesh)") {
+TEST_CASE("navlink generate and path with a navmesh handed over as OBJ (--navmesh)") {
     GeneratedLevelFiles files("host_navmesh");
     // The host's navmesh: one quad on each of the first two platforms, 0.6 m inside their rims, as an
     // engine would export it (Y up, counter-clockwise seen from above).
@@ -153,9 +153,9 @@ TEST_CASE("navlink bake and path with a navmesh handed over as OBJ (--navmesh)")
     }
     obj += "f 1 2 3 4\nf 5 6 7 8\n";
     nl::test::write_file(files.dir + "/nav.obj", obj);
-    const ProgramRun bake = navlink({"bake", "level.obj", "--navmesh", "nav.obj", "--out", "links.json"}, files.dir);
-    REQUIRE_MESSAGE(bake.exit_code == 0, bake.err);
-    CHECK(bake.out.find("navmesh: 2 polygons, 8 boundary edges (nav.obj)") != std::string::npos);
+    const ProgramRun generate = navlink({"generate", "level.obj", "--navmesh", "nav.obj", "--out", "links.json"}, files.dir);
+    REQUIRE_MESSAGE(generate.exit_code == 0, generate.err);
+    CHECK(generate.out.find("navmesh: 2 polygons, 8 boundary edges (nav.obj)") != std::string::npos);
     const json links = nl::test::parse_json_file(files.dir + "/links.json");
     CHECK(!jumps_across(links, files.level, 0).empty());
 
@@ -174,7 +174,7 @@ TEST_CASE("navlink bake and path with a navmesh handed over as OBJ (--navmesh)")
 
 TEST_CASE("navlink path --json: each demo agent's route is complete, continuous and within its body's reach") {
     GeneratedLevelFiles files("path");
-    REQUIRE(navlink({"bake", "level.obj", "--out", "links.json"}, files.dir).exit_code == 0);
+    REQUIRE(navlink({"generate", "level.obj", "--out", "links.json"}, files.dir).exit_code == 0);
     const json links = nl::test::parse_json_file(files.dir + "/links.json").at("links");
     write_agent(files.dir + "/walker.json",
                 R"({"name": "walker", "max_jump_distance": 0, "max_jump_height": 0, "max_drop_height": 0})");
@@ -243,7 +243,7 @@ TEST_CASE("navlink path --json: each demo agent's route is complete, continuous 
 
 TEST_CASE("navlink path exits 1 when the goal cannot be reached, and says why") {
     GeneratedLevelFiles files("path_unreachable");
-    REQUIRE(navlink({"bake", "level.obj", "--out", "links.json"}, files.dir).exit_code == 0);
+    REQUIRE(navlink({"generate", "level.obj", "--out", "links.json"}, files.dir).exit_code == 0);
     nl::test::write_file(files.dir + "/walker.json",
                          R"({"max_jump_distance": 0, "max_drop_height": 0, "max_jump_height": 0})");
     // The third platform: reached only by the long jump, so a walker gets as near as it can.
@@ -282,7 +282,7 @@ TEST_CASE("navlink --help and COMMAND --help describe the tool and exit 0") {
     const std::string dir = nl::test::scratch_dir("help");
     const ProgramRun main_help = navlink({"--help"}, dir);
     CHECK(main_help.exit_code == 0);
-    for (const char* command : {"demo", "bake", "path", "level"}) {
+    for (const char* command : {"demo", "generate", "path", "level"}) {
         CHECK(main_help.out.find(std::string("  ") + command) != std::string::npos);
         const ProgramRun help = navlink({command, "--help"}, dir);
         CHECK(help.exit_code == 0);

@@ -1,4 +1,4 @@
-// navlink bake and path on every shared level (levels nobody on this project designed): each bakes,
+// navlink generate and path on every shared level (levels nobody on this project designed): each generates,
 // its links file matches its report, and paths between places known to be connected are complete.
 #include <navlink/navlink.h>
 
@@ -62,7 +62,7 @@ json path_json(const std::string& dir, const std::string& level, const std::stri
 
 }  // namespace
 
-TEST_CASE("navlink bake and path on every shared level") {
+TEST_CASE("navlink generate and path on every shared level") {
     const auto levels = nl::test::shared_levels();
     if (levels.empty()) {
         if (nl::test::levels_required()) FAIL("no shared levels in " << nl::test::levels_dir());
@@ -75,11 +75,11 @@ TEST_CASE("navlink bake and path on every shared level") {
         const std::string level = level_path.string();
         INFO(name);
         const std::string dir = nl::test::scratch_dir("shared_" + name);
-        const ProgramRun bake = navlink({"bake", level, "--out", "links.json"}, dir);
-        REQUIRE_MESSAGE(bake.exit_code == 0, bake.err);
+        const ProgramRun generate = navlink({"generate", level, "--out", "links.json"}, dir);
+        REQUIRE_MESSAGE(generate.exit_code == 0, generate.err);
         const json links = nl::test::parse_json_file(dir + "/links.json");
         std::smatch m;
-        REQUIRE(std::regex_search(bake.out, m, std::regex(R"(links: (\d+) \((\d+) jump, (\d+) drop)")));
+        REQUIRE(std::regex_search(generate.out, m, std::regex(R"(links: (\d+) \((\d+) jump, (\d+) drop)")));
         CHECK(std::stoul(m[1]) == links.at("links").size());
         CHECK(std::stoul(m[2]) == nl::test::count_kinds(links).jump);
         CHECK(std::stoul(m[3]) == nl::test::count_kinds(links).drop);

@@ -1,6 +1,6 @@
 // navlink-world-soak: NavLink's thread-safe entry points at once, from eight threads, for a bounded
-// time, with each of several worker counts. Two generators (full bakes, box updates, and bakes whose
-// progress callback tries to bake the other navmesh: refused, never waited for), moves of a movable
+// time, with each of several worker counts. Two generators (full generations, box updates, and generations whose
+// progress callback tries to generate the other navmesh: refused, never waited for), moves of a movable
 // and of a static mesh with ray and segment queries after each, meshes added and removed (also from
 // OBJ text), manual link edits, JSON saves and loads, queued and synchronous path requests with
 // nl_path_process and point location beside them, navmeshes added and removed with requests on them,
@@ -63,7 +63,7 @@ struct Round {
     nl_world* world = nullptr;
     std::atomic<uint64_t> logged{0};  // failures the world's log callback received
     nl_navmesh_id navmesh{};     // built by Recast from the level, for the default Recast agent
-    nl_navmesh_id thin{};        // built for a thinner agent: a second navmesh to bake
+    nl_navmesh_id thin{};        // built for a thinner agent: a second navmesh to generate
     nl_mesh_id platform{};       // movable
     nl_mesh_id crate{};          // static, moved anyway (its vertices are uploaded again)
     std::atomic<bool> stop{false};
@@ -102,27 +102,27 @@ void query(nl_world* world, std::mt19937& rng) {
            "nl_world_segments_blocked");
 }
 
-// A progress callback that tries to bake from inside the bake: refused at once, never a wait; two
+// A progress callback that tries to generate from inside the generation: refused at once, never a wait; two
 // generators doing it crosswise, each for the other's navmesh, used to hang.
-struct NestedBake {
+struct NestedGeneration {
     Round* round;
     nl_navmesh_id other;
     bool tried = false;
 };
 
-int32_t bake_from_progress(void* user, float, const char*) {
-    NestedBake& n = *static_cast<NestedBake*>(user);
+int32_t generate_from_progress(void* user, float, const char*) {
+    NestedGeneration& n = *static_cast<NestedGeneration*>(user);
     if (!n.tried) {
         n.tried = true;
         const nl_status status = nl_navmesh_generate_links(n.round->world, n.other, nullptr, nullptr, nullptr, nullptr);
         if (status != (NL_STATUS_FAILURE | NL_STATUS_INVALID_ARGUMENT))
-            fail(std::string("a bake from a progress callback returned ") + nl_status_string(status));
+            fail(std::string("a generation from a progress callback returned ") + nl_status_string(status));
     }
     return 1;
 }
 
-// Bakes `navmesh`: full generations, box updates, and generations whose progress callback tries to
-// bake `other`.
+// Generates `navmesh`: full generations, box updates, and generations whose progress callback tries to
+// generate `other`.
 void generate(Round& r, Worker& me, nl_navmesh_id navmesh, nl_navmesh_id other) {
     nl_link_settings settings = nl_default_link_settings();
     const float box_min[3] = {10, -2, -1}, box_max[3] = {20, 6, 8};
@@ -133,9 +133,9 @@ void generate(Round& r, Worker& me, nl_navmesh_id navmesh, nl_navmesh_id other) 
             expect(nl_navmesh_update_links_in_box(r.world, navmesh, box_min, box_max, nullptr, nullptr, nullptr),
                    "nl_navmesh_update_links_in_box", {NL_STATUS_NOT_FOUND});
         } else if (i % 3 == 1) {
-            me.doing = "nl_navmesh_generate_links (baking the other navmesh from its progress callback)";
-            NestedBake nested{&r, other};
-            expect(nl_navmesh_generate_links(r.world, navmesh, &settings, bake_from_progress, &nested, nullptr),
+            me.doing = "nl_navmesh_generate_links (generating the other navmesh from its progress callback)";
+            NestedGeneration nested{&r, other};
+            expect(nl_navmesh_generate_links(r.world, navmesh, &settings, generate_from_progress, &nested, nullptr),
                    "nl_navmesh_generate_links");
         } else {
             me.doing = "nl_navmesh_generate_links";
@@ -358,7 +358,7 @@ void churn_navmeshes(Round& r, Worker& me) {
         }
         if (i % 2) {
             me.doing = "nl_navmesh_generate_links (churned navmesh)";
-            // Cell navmeshes have no level geometry under them: no links, but a full bake's locking.
+            // Cell navmeshes have no level geometry under them: no links, but a full generation's locking.
             expect(nl_navmesh_generate_links(r.world, id, nullptr, nullptr, nullptr, nullptr),
                    "nl_navmesh_generate_links (churned navmesh)");
         }

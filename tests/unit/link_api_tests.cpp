@@ -1,5 +1,5 @@
 // Links through the C ABI: generation replaces generated links only, manual links live beside them,
-// edits, stale ids, JSON round trips, settings from JSON, cancelling, the bake report.
+// edits, stale ids, JSON round trips, settings from JSON, cancelling, the generation report.
 #include <doctest/doctest.h>
 #include <navlink/navlink.h>
 
@@ -30,8 +30,8 @@ struct Fixture {
         REQUIRE(nl_navmesh_get_links(world, navmesh, out.data(), count, &count) == NL_STATUS_SUCCESS);
         return out;
     }
-    nl_bake_report generate(const nl_link_settings* settings = nullptr) {
-        nl_bake_report report{};
+    nl_link_generation_report generate(const nl_link_settings* settings = nullptr) {
+        nl_link_generation_report report{};
         report.size = sizeof report;
         REQUIRE_MESSAGE(nl_navmesh_generate_links(world, navmesh, settings, nullptr, nullptr, &report) == NL_STATUS_SUCCESS,
                         nl_get_last_error_message());
@@ -57,7 +57,7 @@ std::string last_error() { return nl_get_last_error_message(); }
 
 TEST_CASE("generation fills the report; regeneration replaces generated links and keeps manual ones") {
     Fixture f;
-    const nl_bake_report report = f.generate();
+    const nl_link_generation_report report = f.generate();
     const auto links = f.links();
     CHECK(links.size() == report.jump_links + report.drop_links);
     CHECK(report.jump_links > 0);
@@ -243,7 +243,7 @@ TEST_CASE("settings from JSON: applied over the struct, unknown keys and bad val
     CHECK(s.max_jump_gap == kept.max_jump_gap);  // unchanged by failures
 }
 
-TEST_CASE("a cancelled bake changes nothing; progress runs from 0 to 1") {
+TEST_CASE("a cancelled generation changes nothing; progress runs from 0 to 1") {
     Fixture f;
     f.generate();
     const size_t before = f.links().size();

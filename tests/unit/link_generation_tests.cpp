@@ -16,9 +16,9 @@ using nl::levelgen::Box;
 
 namespace {
 
-struct Baked {
+struct Generated {
     std::vector<Link> links;
-    nl::BakeReport report;
+    nl::LinkGenerationReport report;
 
     std::vector<Link> of(LinkKind kind) const { return nl::test::links_of_kind(links, kind); }
     std::string describe() const {
@@ -36,8 +36,8 @@ struct Baked {
     }
 };
 
-Baked bake(const std::vector<Box>& boxes, const nl::LinkSettings& settings = {},
-           nl::BakeMethod method = nl::BakeMethod::Indexed, int threads = 2) {
+Generated generate(const std::vector<Box>& boxes, const nl::LinkSettings& settings = {},
+           nl::GenerationMethod method = nl::GenerationMethod::Indexed, int threads = 2) {
     nl::levelgen::GeneratedLevel level;
     for (const Box& b : boxes) level.add_box(b);
     nl_world_def def = nl_default_world_def();
@@ -49,7 +49,7 @@ Baked bake(const std::vector<Box>& boxes, const nl::LinkSettings& settings = {},
     nl_navmesh_id navmesh{};
     REQUIRE_MESSAGE(nl_navmesh_build(world, &build, &navmesh) == NL_STATUS_SUCCESS, nl_get_last_error_message());
     const auto mesh_ptr = world->navmeshes->get(nl::Handle{navmesh.index1, navmesh.generation});
-    Baked out;
+    Generated out;
     out.links = nl::generate_links(*mesh_ptr, *world->level, *world->tasks, settings, method, out.report,
                                    [](float, const char*) { return true; });
     nl_world_destroy(world);
@@ -71,7 +71,7 @@ bool crosses_gap(const Link& l, float gap) {
 }  // namespace
 
 TEST_CASE("a 2 m gap gets a bidirectional jump; nothing else is generated") {
-    const Baked b = bake(two_platforms(2.0f));
+    const Generated b = generate(two_platforms(2.0f));
     INFO(b.describe());
     const auto jumps = b.of(LinkKind::Jump);
     REQUIRE(!jumps.empty());
@@ -95,7 +95,7 @@ TEST_CASE("a 2 m gap gets a bidirectional jump; nothing else is generated") {
 }
 
 TEST_CASE("a 4.2 m gap is beyond max_jump_gap (4 m rim to rim): no link") {
-    const Baked b = bake(two_platforms(4.2f));
+    const Generated b = generate(two_platforms(4.2f));
     INFO(b.describe());
     CHECK(b.links.empty());
     CHECK(b.report.takeoff_points > 0);
@@ -104,14 +104,14 @@ TEST_CASE("a 4.2 m gap is beyond max_jump_gap (4 m rim to rim): no link") {
 TEST_CASE("a wall between the platforms, or a low ceiling over the gap, stops the jump") {
     auto walled = two_platforms(2.0f);
     walled.push_back(Box{{10.8f, -30, -1}, {11.2f, 4, 11}});
-    const Baked w = bake(walled);
+    const Generated w = generate(walled);
     INFO(w.describe());
     CHECK(w.of(LinkKind::Jump).empty());
     CHECK(w.report.rejected_clearance > 0);
 
     auto ceiling = two_platforms(2.0f);
     ceiling.push_back(Box{{8.5f, 1.6f, -1}, {13.5f, 2.0f, 11}});  // 1.6 m over the gap: a 2 m agent hits it
-    const Baked c = bake(ceiling);
+    const Generated c = generate(ceiling);
     INFO(c.describe());
     CHECK(c.of(LinkKind::Jump).empty());
 }
@@ -119,7 +119,7 @@ TEST_CASE("a wall between the platforms, or a low ceiling over the gap, stops th
 TEST_CASE("a 3 m ledge gets a one-way drop; a ledge deeper than max_drop_distance gets none") {
     // An upper deck (top y = 3) standing on a wide floor (top y = 0).
     const std::vector<Box> ledge = {Box{{-10, -1, -10}, {20, 0, 20}}, Box{{0, 0, 0}, {6, 3, 10}}};
-    const Baked b = bake(ledge);
+    const Generated b = generate(ledge);
     INFO(b.describe());
     const auto drops = b.of(LinkKind::Drop);
     REQUIRE(!drops.empty());
@@ -132,7 +132,7 @@ TEST_CASE("a 3 m ledge gets a one-way drop; a ledge deeper than max_drop_distanc
     CHECK(b.of(LinkKind::Jump).empty());
 
     const std::vector<Box> cliff = {Box{{-10, -1, -10}, {20, 0, 20}}, Box{{0, 0, 0}, {6, 7, 10}}};
-    const Baked d = bake(cliff);
+    const Generated d = generate(cliff);
     INFO(d.describe());
     CHECK(d.of(LinkKind::Drop).empty());
 }
@@ -140,7 +140,7 @@ TEST_CASE("a 3 m ledge gets a one-way drop; a ledge deeper than max_drop_distanc
 TEST_CASE("a rise beyond max_jump_up: no jump, a drop one way only (down)") {
     // The right platform is 3 m higher, 1.5 m away; a floor under both at y = -1 lets nothing else
     // connect them... but too far down to matter: its top is far below.
-    const Baked b = bake(two_platforms(1.5f, 3.0f));
+    const Generated b = generate(two_platforms(1.5f, 3.0f));
     INFO(b.describe());
     CHECK(b.of(LinkKind::Jump).empty());
     const auto drops = b.of(LinkKind::Drop);
@@ -153,7 +153,7 @@ TEST_CASE("a rise beyond max_jump_up: no jump, a drop one way only (down)") {
 }
 
 TEST_CASE("a drop within max_jump_up works both ways") {
-    const Baked b = bake(two_platforms(1.0f, 1.2f));
+    const Generated b = generate(two_platforms(1.0f, 1.2f));
     INFO(b.describe());
     // 1.2 m apart in height: an edge-to-edge jump, valid both ways.
     const auto jumps = b.of(LinkKind::Jump);
@@ -163,8 +163,8 @@ TEST_CASE("a drop within max_jump_up works both ways") {
 
 TEST_CASE("the spatial grid finds exactly what all pairs find, with 1 and 2 threads") {
     const auto level = nl::levelgen::generate_default_level(5);
-    const Baked grid = bake(level.boxes, {}, nl::BakeMethod::Indexed, 2);
-    const Baked all = bake(level.boxes, {}, nl::BakeMethod::BruteForce, 1);
+    const Generated grid = generate(level.boxes, {}, nl::GenerationMethod::Indexed, 2);
+    const Generated all = generate(level.boxes, {}, nl::GenerationMethod::BruteForce, 1);
     INFO(grid.describe());
     REQUIRE(grid.links.size() == all.links.size());
     CHECK(!grid.links.empty());

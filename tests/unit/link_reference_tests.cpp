@@ -75,19 +75,19 @@ std::string difference(const std::vector<nl::Link>& a, const std::vector<nl::Lin
     return {};
 }
 
-struct Bake {
+struct Generation {
     std::vector<nl::Link> links;
-    nl::BakeReport report;
+    nl::LinkGenerationReport report;
 };
 
-Bake bake(const nl::NavMesh& navmesh, nl_world& world, nl::BakeMethod method) {
-    Bake b;
+Generation generate(const nl::NavMesh& navmesh, nl_world& world, nl::GenerationMethod method) {
+    Generation b;
     b.links = nl::generate_links(navmesh, *world.level, *world.tasks, nl::LinkSettings{}, method, b.report,
                                  [](float, const char*) { return true; });
     return b;
 }
 
-// Builds the navmesh once (Recast, defaults) and bakes it three ways on the same geometry.
+// Builds the navmesh once (Recast, defaults) and generates its links three ways on the same geometry.
 void check_against_reference(const LevelSource& source, uint32_t& jumps, uint32_t& drops) {
     INFO("level ", source.name);
     WorldPtr one, two;
@@ -100,9 +100,9 @@ void check_against_reference(const LevelSource& source, uint32_t& jumps, uint32_
     REQUIRE_MESSAGE(nl_navmesh_build(two.world, &build, &id) == NL_STATUS_SUCCESS, nl_get_last_error_message());
     const auto navmesh = two.world->navmeshes->get(nl::Handle{id.index1, id.generation});
 
-    const Bake grid_1 = bake(*navmesh, *one.world, nl::BakeMethod::Indexed);
-    const Bake grid_2 = bake(*navmesh, *two.world, nl::BakeMethod::Indexed);
-    const Bake all_pairs = bake(*navmesh, *one.world, nl::BakeMethod::BruteForce);
+    const Generation grid_1 = generate(*navmesh, *one.world, nl::GenerationMethod::Indexed);
+    const Generation grid_2 = generate(*navmesh, *two.world, nl::GenerationMethod::Indexed);
+    const Generation all_pairs = generate(*navmesh, *one.world, nl::GenerationMethod::BruteForce);
     jumps = grid_1.report.jump_links;
     drops = grid_1.report.drop_links;
     MESSAGE(source.name, ": ", grid_1.links.size(), " links (", jumps, " jumps, ", drops, " drops) from ",

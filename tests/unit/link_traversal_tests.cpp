@@ -56,12 +56,12 @@ namespace {
 using nl::test::WorldPtr;
 
 // ---------------------------------------------------------------------------------------------
-// Baking a level
+// Generating a level
 
-struct Baked {
+struct Generated {
     std::string name;
     std::vector<Link> links;
-    nl::BakeReport report;
+    nl::LinkGenerationReport report;
     nl::LinkSettings settings;
     nl::TriangleMesh triangles;                   // world space, as the level holds them
     nl::AgentType agent;
@@ -89,8 +89,8 @@ struct Baked {
 
 // Builds the navmesh with Recast's defaults through the C ABI and generates links with `settings`.
 // `add` registers the level's geometry.
-Baked bake_world(const std::string& name, const std::function<void(nl_world*)>& add, const nl::LinkSettings& settings,
-                 nl::BakeMethod method, int threads) {
+Generated generate_in_world(const std::string& name, const std::function<void(nl_world*)>& add, const nl::LinkSettings& settings,
+                 nl::GenerationMethod method, int threads) {
     nl_world_def def = nl_default_world_def();
     def.worker_count = threads;
     WorldPtr w;
@@ -99,7 +99,7 @@ Baked bake_world(const std::string& name, const std::function<void(nl_world*)>& 
     const nl_navmesh_build_def build = nl_default_navmesh_build_def();
     nl_navmesh_id navmesh{};
     REQUIRE_MESSAGE(nl_navmesh_build(w.world, &build, &navmesh) == NL_STATUS_SUCCESS, nl_get_last_error_message());
-    Baked out;
+    Generated out;
     out.name = name;
     out.settings = settings;
     out.navmesh = w.world->navmeshes->get(nl::Handle{navmesh.index1, navmesh.generation});
@@ -111,9 +111,9 @@ Baked bake_world(const std::string& name, const std::function<void(nl_world*)>& 
     return out;
 }
 
-Baked bake(const std::string& name, const std::vector<Box>& boxes, const nl::LinkSettings& settings = {},
-           nl::BakeMethod method = nl::BakeMethod::Indexed, int threads = 2) {
-    return bake_world(
+Generated generate(const std::string& name, const std::vector<Box>& boxes, const nl::LinkSettings& settings = {},
+           nl::GenerationMethod method = nl::GenerationMethod::Indexed, int threads = 2) {
+    return generate_in_world(
         name,
         [&](nl_world* world) {
             nl::levelgen::GeneratedLevel level;
@@ -123,9 +123,9 @@ Baked bake(const std::string& name, const std::vector<Box>& boxes, const nl::Lin
         settings, method, threads);
 }
 
-Baked bake_obj(const std::string& path, const nl::LinkSettings& settings = {},
-               nl::BakeMethod method = nl::BakeMethod::Indexed, int threads = 2) {
-    return bake_world(
+Generated generate_for_obj(const std::string& path, const nl::LinkSettings& settings = {},
+               nl::GenerationMethod method = nl::GenerationMethod::Indexed, int threads = 2) {
+    return generate_in_world(
         path,
         [&](nl_world* world) {
             nl_mesh_id mesh{};
@@ -136,9 +136,9 @@ Baked bake_obj(const std::string& path, const nl::LinkSettings& settings = {},
 }
 
 // ---------------------------------------------------------------------------------------------
-// The independent checker over a bake
+// The independent checker over a generation
 
-nl::test::CheckTally check_links(const Baked& b, nl::test::CheckerTolerances tolerances = {}) {
+nl::test::CheckTally check_links(const Generated& b, nl::test::CheckerTolerances tolerances = {}) {
     const nl::test::CheckedAgent agent{b.agent.radius, b.agent.height, b.agent.max_climb};
     const nl::test::IndependentLinkChecker checker(b.triangles, agent, b.settings, tolerances);
     nl::test::CheckTally tally;
@@ -146,9 +146,9 @@ nl::test::CheckTally check_links(const Baked& b, nl::test::CheckerTolerances tol
     return tally;
 }
 
-// Every link of the bake passes the checker: no body touching the level, ends on the floor, figures
+// Every link of the generation passes the checker: no body touching the level, ends on the floor, figures
 // right. Inconclusive checks are counted and printed, not failed.
-nl::test::CheckTally expect_checked(const Baked& b) {
+nl::test::CheckTally expect_checked(const Generated& b) {
     const nl::test::CheckTally t = check_links(b);
     std::ostringstream failures;
     for (const std::string& f : t.touching) failures << "\n    " << f;
@@ -189,7 +189,7 @@ float lo_x(const Link& l) { return std::min(l.start.x(), l.end.x()); }
 float hi_x(const Link& l) { return std::max(l.start.x(), l.end.x()); }
 
 // Jumps from one platform of two_platforms to the other.
-std::vector<Link> crossing_jumps(const Baked& b, float gap) {
+std::vector<Link> crossing_jumps(const Generated& b, float gap) {
     std::vector<Link> out;
     for (const Link& l : b.of(LinkKind::Jump))
         if (lo_x(l) < 10.0f && hi_x(l) > 10.0f + gap) out.push_back(l);
@@ -226,7 +226,7 @@ bool off_side(const Link& l, const Side& s) {
 }
 float along_side(const Link& l, const Side& s) { return s.along_x ? l.start.z() : l.start.x(); }
 
-std::vector<Link> drops_off(const Baked& b, const Side& s) {
+std::vector<Link> drops_off(const Generated& b, const Side& s) {
     std::vector<Link> out;
     for (const Link& l : b.links)
         if (off_side(l, s)) out.push_back(l);
@@ -357,7 +357,7 @@ std::vector<NamedLevel> all_procedural_levels() {
 // Prints what the closing note wants: links per level, drops per take-off point, checker verdicts.
 // "Drops per take-off point" is over the take-off points that have a drop at all (a floor's outer
 // rim over nothing has take-off points and never a drop); the report's ratio is printed too.
-void print_figures(const Baked& b, const nl::test::CheckTally& t) {
+void print_figures(const Generated& b, const nl::test::CheckTally& t) {
     std::map<std::pair<long, long>, int> starts;
     for (const Link& l : b.of(LinkKind::Drop)) ++starts[{std::lround(l.start.x() * 1000), std::lround(l.start.z() * 1000)}];
     const double per_start = starts.empty() ? 0.0 : double(b.report.drop_links) / double(starts.size());
@@ -554,8 +554,8 @@ TEST_CASE("independent checker: hand-made drops off a 3 m ledge, under a beam an
 // 1. Thin geometry must not slip between the sweep's lines.
 
 TEST_CASE("a bar across a 2 m gap 1.75-1.85 m above the floor: no jump through it; without the bar, jumps") {
-    const Baked control = bake("2 m gap", two_platforms(2.0f));
-    const Baked barred = bake("2 m gap, bar", with(two_platforms(2.0f), {kBar}));
+    const Generated control = generate("2 m gap", two_platforms(2.0f));
+    const Generated barred = generate("2 m gap, bar", with(two_platforms(2.0f), {kBar}));
     {
         INFO(control.describe());
         CHECK(crossing_jumps(control, 2.0f).size() >= 3);  // MUST: the gap is jumped (control)
@@ -570,7 +570,7 @@ TEST_CASE("a bar across a 2 m gap 1.75-1.85 m above the floor: no jump through i
 TEST_CASE("0.1 m poles 0.5 m apart standing in a 2 m gap: no jump between them; without poles, jumps") {
     auto level = two_platforms(2.0f);
     for (const Box& p : poles_in_gap()) level.push_back(p);
-    const Baked poles = bake("2 m gap, poles", level);
+    const Generated poles = generate("2 m gap, poles", level);
     INFO(poles.describe());
     // The body (1.2 m wide) cannot pass a 0.4 m opening. The control is the previous test's.
     CHECK(crossing_jumps(poles, 2.0f).empty());
@@ -579,8 +579,8 @@ TEST_CASE("0.1 m poles 0.5 m apart standing in a 2 m gap: no jump between them; 
 }
 
 TEST_CASE("a 0.4 m beam 1.8-2.0 m above a 2.2 m ledge's floor just past its rim: no drop walks out under it") {
-    const Baked control = bake("2.2 m ledge", deck(2.2f));
-    const Baked beamed = bake("2.2 m ledge, beam", with(deck(2.2f), {kBeam}));
+    const Generated control = generate("2.2 m ledge", deck(2.2f));
+    const Generated beamed = generate("2.2 m ledge, beam", with(deck(2.2f), {kBeam}));
     const Side& east = kDeckSides[0];
     {
         INFO(control.describe());
@@ -603,7 +603,7 @@ TEST_CASE("a drop beside a tall block: refused when the block's face is closer t
     // part of the path checked (10 % cut at each end: the cut falls past x = 6 on a fall this long)
     // starts inside the block on the block's side, so a sweep line offset toward it never crosses a
     // face (issue 13, finding 2); an exact body test sees the overlap.
-    const Baked control = bake("4.5 m ledge", deck(4.5f));
+    const Generated control = generate("4.5 m ledge", deck(4.5f));
     const Side& east = kDeckSides[0];
     // The take-off to put the block beside: the straight-out drop nearest the middle of the side.
     const Link* chosen = nullptr;
@@ -615,7 +615,7 @@ TEST_CASE("a drop beside a tall block: refused when the block's face is closer t
     REQUIRE_MESSAGE(chosen != nullptr, "no straight-out drop off the +x side to put the block beside");
     const float z = chosen->start.z(), r = control.agent.radius;
     auto block_at = [&](float face) { return with(deck(4.5f), {Box{{6.0f, 0, face}, {12, 10, face + 4}}}); };
-    auto straight_from = [&](const Baked& b) {
+    auto straight_from = [&](const Generated& b) {
         std::vector<Link> out;
         for (const Link& l : b.links)
             if (l.kind == LinkKind::Drop && (flat(l.start) - flat(chosen->start)).norm() < 0.05f &&
@@ -625,7 +625,7 @@ TEST_CASE("a drop beside a tall block: refused when the block's face is closer t
     };
     // The block must leave the deck's edge through the chosen take-off as it was (so the take-off
     // is still sampled there): else this test proves nothing, and says so.
-    auto same_edge = [&](const Baked& b) {
+    auto same_edge = [&](const Generated& b) {
         auto edge_through = [&](const nl::NavMesh& m) -> std::optional<std::pair<Vec3, Vec3>> {
             for (const nl::BoundaryEdge& e : m.boundary_edges()) {
                 if (Vec3(e.outward.x(), 0, e.outward.z()).normalized().dot(east.outward) < 0.98f) continue;
@@ -642,7 +642,7 @@ TEST_CASE("a drop beside a tall block: refused when the block's face is closer t
     };
 
     SUBCASE("the face 0.2 m from the drop's axis: the body overlaps the block by 0.4 m") {
-        const Baked close = bake("4.5 m ledge, block 0.2 m beside", block_at(z + 0.2f));
+        const Generated close = generate("4.5 m ledge, block 0.2 m beside", block_at(z + 0.2f));
         INFO(close.describe());
         REQUIRE_MESSAGE(same_edge(close), "the block moved the deck's edge: move the block");
         CHECK(straight_from(close).empty());  // MUST NOT
@@ -653,7 +653,7 @@ TEST_CASE("a drop beside a tall block: refused when the block's face is closer t
         expect_checked(close);
     }
     SUBCASE("the face at radius + 0.3 m: kept, as wide as 2 radii (a 1.5 r body touches)") {
-        const Baked kept = bake("4.5 m ledge, block r + 0.3 m beside", block_at(z + r + 0.3f));
+        const Generated kept = generate("4.5 m ledge, block r + 0.3 m beside", block_at(z + r + 0.3f));
         INFO(kept.describe());
         REQUIRE_MESSAGE(same_edge(kept), "the block moved the deck's edge: move the block");
         const std::vector<Link> drops = straight_from(kept);
@@ -671,13 +671,13 @@ TEST_CASE("a drop beside a tall block: refused when the block's face is closer t
 // Controls and blockers around a 2 m gap.
 
 TEST_CASE("around a 2 m gap: a 0.3 m wall beside the jump and a block 4.5 m above keep it; a low ceiling or a full wall stop it") {
-    const Baked control = bake("2 m gap", two_platforms(2.0f));
+    const Generated control = generate("2 m gap", two_platforms(2.0f));
     const size_t control_jumps = crossing_jumps(control, 2.0f).size();
     REQUIRE(control_jumps >= 3);
     const float r = control.agent.radius;
 
     SUBCASE("a 0.3 m wall standing in the gap along the jumps (z 4.85-5.15)") {
-        const Baked b = bake("2 m gap, wall beside", with(two_platforms(2.0f), {kWallBeside}));
+        const Generated b = generate("2 m gap, wall beside", with(two_platforms(2.0f), {kWallBeside}));
         INFO(b.describe());
         const auto jumps = crossing_jumps(b, 2.0f);
         bool below = false, above = false;
@@ -694,7 +694,7 @@ TEST_CASE("around a 2 m gap: a 0.3 m wall beside the jump and a block 4.5 m abov
         expect_checked(b);
     }
     SUBCASE("a block 4.5-5.0 m above the gap, above the arc and the body: the same jumps as without it") {
-        const Baked b = bake("2 m gap, block above", with(two_platforms(2.0f), {kBlockAbove}));
+        const Generated b = generate("2 m gap, block above", with(two_platforms(2.0f), {kBlockAbove}));
         INFO(b.describe());
         const auto jumps = crossing_jumps(b, 2.0f), free = crossing_jumps(control, 2.0f);
         CHECK(jumps.size() == free.size());
@@ -706,14 +706,14 @@ TEST_CASE("around a 2 m gap: a 0.3 m wall beside the jump and a block 4.5 m abov
         expect_checked(b);
     }
     SUBCASE("a low ceiling over the gap only, 2.2 m above the floor: in the way") {
-        const Baked b = bake("2 m gap, low ceiling", with(two_platforms(2.0f), {kLowCeiling}));
+        const Generated b = generate("2 m gap, low ceiling", with(two_platforms(2.0f), {kLowCeiling}));
         INFO(b.describe());
         CHECK(crossing_jumps(b, 2.0f).empty());
         CHECK(b.report.rejected_clearance > 0);
         expect_checked(b);
     }
     SUBCASE("a full wall across the gap, 4 m high") {
-        const Baked b = bake("2 m gap, full wall", with(two_platforms(2.0f), {kFullWall}));
+        const Generated b = generate("2 m gap, full wall", with(two_platforms(2.0f), {kFullWall}));
         INFO(b.describe());
         CHECK(crossing_jumps(b, 2.0f).empty());
         CHECK(b.report.rejected_clearance > 0);
@@ -726,7 +726,7 @@ TEST_CASE("around a 2 m gap: a 0.3 m wall beside the jump and a block 4.5 m abov
 
 TEST_CASE("ledges of 1.0, 1.5, 3, 5 and 5.3 m under max_drop_distance 5: drops along the whole ledge up to 5 m, none at 5.3 m") {
     for (float h : {1.0f, 1.5f, 3.0f, 5.0f, 5.3f}) {
-        const Baked b = bake(std::to_string(h).substr(0, 3) + " m ledge", deck(h));
+        const Generated b = generate(std::to_string(h).substr(0, 3) + " m ledge", deck(h));
         CAPTURE(h);
         INFO(b.describe());
         const float r = b.agent.radius;
@@ -755,7 +755,7 @@ TEST_CASE("ledges of 1.0, 1.5, 3, 5 and 5.3 m under max_drop_distance 5: drops a
 }
 
 TEST_CASE("a 0.8 m step is walked: no drop") {
-    const Baked b = bake("0.8 m step", deck(0.8f));
+    const Generated b = generate("0.8 m step", deck(0.8f));
     INFO(b.describe());
     CHECK(b.of(LinkKind::Drop).empty());
     expect_checked(b);
@@ -768,7 +768,7 @@ TEST_CASE("gaps of 1 to 8 m: jumps exactly up to max_jump_gap (rim to rim), gap 
     auto expect_gap = [](float gap, const nl::LinkSettings& settings) {
         std::ostringstream name;
         name << gap << " m gap";
-        const Baked b = bake(name.str(), two_platforms(gap), settings);
+        const Generated b = generate(name.str(), two_platforms(gap), settings);
         CAPTURE(gap);
         CAPTURE(settings.max_jump_gap);
         INFO(b.describe());
@@ -796,7 +796,7 @@ TEST_CASE("gaps of 1 to 8 m: jumps exactly up to max_jump_gap (rim to rim), gap 
 
 TEST_CASE("rises of 0.5 to 2.5 m across a 2 m gap: jumps up to max_jump_up (1.5) only, rise floor to floor") {
     for (float rise : {0.5f, 1.0f, 1.5f, 2.0f, 2.5f}) {
-        const Baked b = bake(std::to_string(rise).substr(0, 3) + " m rise", two_platforms(2.0f, rise));
+        const Generated b = generate(std::to_string(rise).substr(0, 3) + " m rise", two_platforms(2.0f, rise));
         CAPTURE(rise);
         INFO(b.describe());
         const auto jumps = crossing_jumps(b, 2.0f);
@@ -826,7 +826,7 @@ TEST_CASE("rises of 0.5 to 2.5 m across a 2 m gap: jumps up to max_jump_up (1.5)
 
 TEST_CASE("one drop per way down: a straight ledge over one floor; a ledge over two floors keeps both") {
     SUBCASE("deck(3): at most one drop per take-off point, about one per metre of ledge") {
-        const Baked b = bake("3 m ledge", deck(3.0f));
+        const Generated b = generate("3 m ledge", deck(3.0f));
         INFO(b.describe());
         for (const Side& s : kDeckSides) {
             CAPTURE(s.name);
@@ -848,7 +848,7 @@ TEST_CASE("one drop per way down: a straight ledge over one floor; a ledge over 
         print_figures(b, expect_checked(b));
     }
     SUBCASE("deck(4) with a 2 m platform in front of part of its +x side") {
-        const Baked b = bake("two floors", two_floors());
+        const Generated b = generate("two floors", two_floors());
         INFO(b.describe());
         // Group drops by take-off point, then by landing floor (height band).
         std::map<std::pair<long, long>, std::vector<float>> landings;
@@ -873,7 +873,7 @@ TEST_CASE("one drop per way down: a straight ledge over one floor; a ledge over 
 
 TEST_CASE("no jump where walking is about as short: across a pit's corner; a long trench keeps its jump") {
     SUBCASE("a 3 x 3 m pit in a floor") {
-        const Baked b = bake("pit", pit());
+        const Generated b = generate("pit", pit());
         INFO(b.describe());
         const double factor = walk_factor(b.settings), extra = walk_distance(b.settings);
         for (const Link& l : b.of(LinkKind::Jump)) {
@@ -895,7 +895,7 @@ TEST_CASE("no jump where walking is about as short: across a pit's corner; a lon
         print_figures(b, expect_checked(b));
     }
     SUBCASE("a trench 2 m wide, 30 m long: in its middle the walk around is 30 m") {
-        const Baked b = bake("trench", trench());
+        const Generated b = generate("trench", trench());
         INFO(b.describe());
         const double factor = walk_factor(b.settings), extra = walk_distance(b.settings);
         size_t middle = 0;
@@ -917,7 +917,7 @@ TEST_CASE("every link of every procedural level passes the independent checker; 
     nl::test::CheckTally total;
     uint32_t takeoffs = 0, drops = 0;
     for (const NamedLevel& level : all_procedural_levels()) {
-        const Baked b = bake(level.name, level.boxes, level.settings);
+        const Generated b = generate(level.name, level.boxes, level.settings);
         const nl::test::CheckTally t = expect_checked(b);
         print_figures(b, t);
         total.add(t);
@@ -937,7 +937,7 @@ TEST_CASE("every link of every shared level passes the independent checker; figu
     nl::test::CheckTally total;
     uint32_t takeoffs = 0, drops = 0;
     for (const auto& path : levels) {
-        Baked b = bake_obj(path.string());
+        Generated b = generate_for_obj(path.string());
         b.name = path.stem().string();
         const nl::test::CheckTally t = expect_checked(b);
         print_figures(b, t);
@@ -959,9 +959,9 @@ TEST_CASE("every link of every shared level passes the independent checker; figu
 TEST_CASE("the brute-force reference and 1 or 2 threads give the same links on these levels") {
     for (const NamedLevel& level : all_procedural_levels()) {
         CAPTURE(level.name);
-        const Baked grid_2 = bake(level.name, level.boxes, level.settings, nl::BakeMethod::Indexed, 2);
-        const Baked grid_1 = bake(level.name, level.boxes, level.settings, nl::BakeMethod::Indexed, 1);
-        const Baked all_1 = bake(level.name, level.boxes, level.settings, nl::BakeMethod::BruteForce, 1);
+        const Generated grid_2 = generate(level.name, level.boxes, level.settings, nl::GenerationMethod::Indexed, 2);
+        const Generated grid_1 = generate(level.name, level.boxes, level.settings, nl::GenerationMethod::Indexed, 1);
+        const Generated all_1 = generate(level.name, level.boxes, level.settings, nl::GenerationMethod::BruteForce, 1);
         const std::string threads = difference(grid_1.links, grid_2.links);
         CHECK_MESSAGE(threads.empty(), "1 worker vs 2: ", threads);
         const std::string reference = difference(all_1.links, grid_1.links);

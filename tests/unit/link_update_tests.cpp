@@ -22,7 +22,7 @@ struct Scene {
         add_boxes(level, 0);
         const nl_navmesh_build_def build = nl_default_navmesh_build_def();
         REQUIRE(nl_navmesh_build(world, &build, &navmesh) == NL_STATUS_SUCCESS);
-        nl_bake_report report = bake_full();
+        nl_link_generation_report report = generate_all();
         full_rays = report.rays_cast;
     }
     ~Scene() { nl_world_destroy(world); }
@@ -32,14 +32,14 @@ struct Scene {
         REQUIRE(nl::test::add_generated_level(world, boxes, flags, nullptr, &id) == NL_STATUS_SUCCESS);
         return id;
     }
-    nl_bake_report bake_full() {
-        nl_bake_report report{};
+    nl_link_generation_report generate_all() {
+        nl_link_generation_report report{};
         report.size = sizeof report;
         REQUIRE(nl_navmesh_generate_links(world, navmesh, nullptr, nullptr, nullptr, &report) == NL_STATUS_SUCCESS);
         return report;
     }
-    nl_bake_report update(const Box& box) {
-        nl_bake_report report{};
+    nl_link_generation_report update(const Box& box) {
+        nl_link_generation_report report{};
         report.size = sizeof report;
         REQUIRE_MESSAGE(nl_navmesh_update_links_in_box(world, navmesh, box.min, box.max, nullptr, nullptr, &report) ==
                             NL_STATUS_SUCCESS,
@@ -56,9 +56,9 @@ struct Scene {
     // Updates in `box`, then checks the result against a full generation of the same state.
     void check_update_equals_full(const Box& box, const std::string& what) {
         INFO(what);
-        const nl_bake_report partial = update(box);
+        const nl_link_generation_report partial = update(box);
         const auto updated = links();
-        const nl_bake_report full = bake_full();
+        const nl_link_generation_report full = generate_all();
         const auto reference = links();
         REQUIRE(updated.size() == reference.size());
         for (size_t i = 0; i < updated.size(); ++i) {
@@ -81,7 +81,7 @@ struct Scene {
         CHECK(partial.drop_links == full.drop_links);
         CHECK(partial.rejected_clearance == full.rejected_clearance);
         CHECK(partial.rejected_wall == full.rejected_wall);
-        // Work is rays plus box queries (each stands for a stretch of sweep segments). A full bake
+        // Work is rays plus box queries (each stands for a stretch of sweep segments). A full generation
         // already skips the segments of clear stretches, so the update's saving is mostly probes.
         MESSAGE(what, ": update cast ", partial.rays_cast, " rays and ", partial.box_queries, " box queries, a full generation ",
                 full.rays_cast, " and ", full.box_queries);
@@ -156,7 +156,7 @@ TEST_CASE("an update needs a prior generation and a proper box; a far-away chang
     const Box far_box{{200, 0, 200}, {201, 1, 201}};
     far.add_box(far_box);
     s.add_boxes(far, 0);
-    const nl_bake_report report = s.update(grown(far_box, 0.1f));
+    const nl_link_generation_report report = s.update(grown(far_box, 0.1f));
     CHECK(report.rays_cast == 0);
     CHECK(report.jump_links + report.drop_links == s.links().size());
 
@@ -189,7 +189,7 @@ TEST_CASE("an update never brings back generated links that were removed or repl
     CHECK(s.links().empty());
 
     // Generated again, saved, loaded back: the loaded links stay as loaded.
-    s.bake_full();
+    s.generate_all();
     size_t length = 0;
     REQUIRE(nl_navmesh_save_links_json(s.world, s.navmesh, nullptr, 0, &length) == NL_STATUS_SUCCESS);
     std::string json(length + 1, '\0');
@@ -204,6 +204,6 @@ TEST_CASE("an update never brings back generated links that were removed or repl
     for (size_t i = 0; i < after.size(); ++i) CHECK(after[i].id.index1 == loaded[i].id.index1);
 
     // A new generation can be updated again.
-    s.bake_full();
+    s.generate_all();
     CHECK(s.update(anywhere).jump_links + s.update(anywhere).drop_links == s.links().size());
 }

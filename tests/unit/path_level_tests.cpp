@@ -20,12 +20,12 @@ using nl::levelgen::Box;
 
 namespace {
 
-struct BakedLevel {
+struct LevelWithLinks {
     nl_world* world = nullptr;
     nl_navmesh_id navmesh{};
     std::vector<nl_link> links;
 
-    explicit BakedLevel(const std::vector<Box>& boxes, float agent_radius = 0.6f) {
+    explicit LevelWithLinks(const std::vector<Box>& boxes, float agent_radius = 0.6f) {
         nl::levelgen::GeneratedLevel level;
         for (const Box& b : boxes) level.add_box(b);
         nl_world_def def = nl_default_world_def();
@@ -42,9 +42,9 @@ struct BakedLevel {
         links.resize(count);
         nl_navmesh_get_links(world, navmesh, links.data(), count, &count);
     }
-    ~BakedLevel() { nl_world_destroy(world); }
-    BakedLevel(const BakedLevel&) = delete;
-    BakedLevel& operator=(const BakedLevel&) = delete;
+    ~LevelWithLinks() { nl_world_destroy(world); }
+    LevelWithLinks(const LevelWithLinks&) = delete;
+    LevelWithLinks& operator=(const LevelWithLinks&) = delete;
 
     struct Path {
         nl_path_result result{};
@@ -123,7 +123,7 @@ TEST_CASE("a runner jumps the gap; a walker, or a jumper too short for it, goes 
         const float z1 = 20.0f - 2.5f * step, top = 0.3f * (step + 1);
         boxes.push_back({{19, -1, z1 - 2.5f}, {22, top, z1}});
     }
-    BakedLevel level(boxes);
+    LevelWithLinks level(boxes);
     uint32_t jumps = 0;
     for (const nl_link& l : level.links) jumps += l.kind == NL_LINK_JUMP && l.start[0] < 12.5f && l.end[0] > 9.5f;
     REQUIRE(jumps > 0);
@@ -157,7 +157,7 @@ TEST_CASE("only an agent that may drop takes the ledge; the others walk down the
     // A 3 m tower on open ground, with stairs down its east side.
     std::vector<Box> boxes = {{{-12, -1, -10}, {30, 0, 20}}, {{0, 0, 0}, {10, 3, 10}}};
     for (int step = 0; step < 9; ++step) boxes.push_back({{10.0f + step, 0, 0}, {11.0f + step, 2.7f - 0.3f * step, 3}});
-    BakedLevel level(boxes);
+    LevelWithLinks level(boxes);
     uint32_t drops = 0;
     for (const nl_link& l : level.links) drops += l.kind == NL_LINK_DROP;
     REQUIRE(drops > 0);
@@ -210,7 +210,7 @@ TEST_CASE("one navmesh serves two agent sizes: the wide one avoids the narrow co
         {{14, -1, 0}, {18, 0, 30}},      {{10, -1, 0}, {14, 0, 4}},  {{10, -1, 26}, {14, 0, 30}},
         {{-5, -31, -5}, {23, -30, 35}},
     };
-    BakedLevel level(boxes, 0.3f);
+    LevelWithLinks level(boxes, 0.3f);
     const float from[3] = {3, 0, 7}, to[3] = {3, 0, 23};
     nl_agent_capabilities slim = walker();
     slim.radius = 0.3f;

@@ -3,7 +3,7 @@ using System.Runtime.InteropServices;
 
 namespace NavLink
 {
-    // The (progress, user) pair of one bake: the static trampoline's pointer and the handler as a GCHandle,
+    // The (progress, user) pair of one generation: the static trampoline's pointer and the handler as a GCHandle,
     // freed when the call is over. Check turns the call's status into an exception; an exception thrown
     // by the handler wins over the CANCELLED it caused.
     internal struct ProgressScope : IDisposable

@@ -90,14 +90,14 @@ namespace NavLink
 
         /// <summary>Generates the navmesh's jump and drop links (replacing the generated ones).
         /// progress returning false cancels (NavLinkException with Cancelled); an exception thrown by
-        /// progress cancels the bake and is rethrown here.</summary>
-        public unsafe BakeReport GenerateLinks(NavmeshId navmesh, LinkSettings? settings = null,
+        /// progress cancels the generation and is rethrown here.</summary>
+        public unsafe LinkGenerationReport GenerateLinks(NavmeshId navmesh, LinkSettings? settings = null,
                                                ProgressHandler progress = null, string pluginSettingsJson = null)
         {
             LinkSettings s = settings ?? Native.nl_default_link_settings();
             byte[] json = pluginSettingsJson == null ? null : Encoding.UTF8.GetBytes(pluginSettingsJson);
-            BakeReport report = default(BakeReport);
-            report.Size = (uint)sizeof(BakeReport);
+            LinkGenerationReport report = default(LinkGenerationReport);
+            report.Size = (uint)sizeof(LinkGenerationReport);
             byte empty = 0;
             fixed (byte* j = json)
             {
@@ -115,10 +115,10 @@ namespace NavLink
         }
 
         /// <summary>Regenerates only what geometry changes inside [boxMin, boxMax] can have affected.</summary>
-        public unsafe BakeReport UpdateLinksInBox(NavmeshId navmesh, Vec3 boxMin, Vec3 boxMax, ProgressHandler progress = null)
+        public unsafe LinkGenerationReport UpdateLinksInBox(NavmeshId navmesh, Vec3 boxMin, Vec3 boxMax, ProgressHandler progress = null)
         {
-            BakeReport report = default(BakeReport);
-            report.Size = (uint)sizeof(BakeReport);
+            LinkGenerationReport report = default(LinkGenerationReport);
+            report.Size = (uint)sizeof(LinkGenerationReport);
             using (var scope = new ProgressScope(progress))
             using (var w = Enter())
                 scope.Check(Native.nl_navmesh_update_links_in_box(w.Pointer, navmesh, (float*)&boxMin, (float*)&boxMax,

@@ -18,7 +18,7 @@ namespace NavLink.Tests
                     NavmeshId navmesh = world.BuildNavmesh(World.DefaultAgentType());
                     var fractions = new List<float>();
                     int caller = System.Threading.Thread.CurrentThread.ManagedThreadId, otherThread = 0;
-                    BakeReport report = world.GenerateLinks(navmesh, null, (fraction, stage) =>
+                    LinkGenerationReport report = world.GenerateLinks(navmesh, null, (fraction, stage) =>
                     {
                         fractions.Add(fraction);
                         if (System.Threading.Thread.CurrentThread.ManagedThreadId != caller) ++otherThread;
@@ -42,7 +42,7 @@ namespace NavLink.Tests
                     // Settings from JSON: a max_jump_gap below the gap leaves nothing to jump.
                     LinkSettings shortJumps = World.LinkSettingsFromJson("{\"max_jump_gap\": 1.8}");
                     check.Near(shortJumps.MaxJumpGap, 1.8f, 1e-6f, "max_jump_gap from JSON");
-                    BakeReport none = world.GenerateLinks(navmesh, shortJumps);
+                    LinkGenerationReport none = world.GenerateLinks(navmesh, shortJumps);
                     check.That(none.JumpLinks == 0 && none.RejectedDistance > 0 && world.GetLinks(navmesh).Length == 0,
                                "max_jump_gap 1.8: no jumps, " + none.RejectedDistance + " rejected for distance");
                     check.Throws(StatusBits.InvalidArgument, "max_link_dist", () => World.LinkSettingsFromJson("{\"max_link_dist\": 3}"),
@@ -51,12 +51,12 @@ namespace NavLink.Tests
                     // Cancelling from progress leaves the links as they were; an exception cancels and comes back.
                     world.GenerateLinks(navmesh);
                     int before = world.GetLinks(navmesh).Length;
-                    check.Throws(StatusBits.Cancelled, "", () => world.GenerateLinks(navmesh, null, (f, s) => false), "a cancelled bake");
-                    check.That(world.GetLinks(navmesh).Length == before, "a cancelled bake changes nothing");
+                    check.Throws(StatusBits.Cancelled, "", () => world.GenerateLinks(navmesh, null, (f, s) => false), "a cancelled generation");
+                    check.That(world.GetLinks(navmesh).Length == before, "a cancelled generation changes nothing");
                     try
                     {
                         world.GenerateLinks(navmesh, null, (f, s) => { throw new InvalidOperationException("boom"); });
-                        check.That(false, "a throwing progress callback fails the bake");
+                        check.That(false, "a throwing progress callback fails the generation");
                     }
                     catch (NavLinkException e)
                     {
@@ -66,7 +66,7 @@ namespace NavLink.Tests
 
                     // A wall in the gap: the update in its box removes every jump, as a full generation would.
                     TestLevels.AddBox(world, -0.1f, -20, -6, 0.1f, 6, 6);
-                    BakeReport walled = world.UpdateLinksInBox(navmesh, new Vec3(-0.2f, -21, -7), new Vec3(0.2f, 7, 7));
+                    LinkGenerationReport walled = world.UpdateLinksInBox(navmesh, new Vec3(-0.2f, -21, -7), new Vec3(0.2f, 7, 7));
                     check.That(walled.JumpLinks == 0 && world.GetLinks(navmesh).Length == 0,
                                "after the wall: " + walled.JumpLinks + " jumps (" + walled.RejectedClearance + " refused for clearance)");
                     check.That(world.RemoveGeneratedLinks(navmesh) == 0, "nothing generated is left to remove");

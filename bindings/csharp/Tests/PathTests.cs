@@ -16,7 +16,7 @@ namespace NavLink.Tests
             {
                 using (var world = new World())
                 {
-                    NavmeshId navmesh = BakeGapLevel(world);
+                    NavmeshId navmesh = GapLevelWithLinks(world);
                     PathResult jumper = world.FindPath(new PathQuery(navmesh, TestLevels.WestPoint, TestLevels.EastPoint, TestLevels.Jumper()));
                     CheckJumperAcross(check, world, jumper, "jumper");
 
@@ -52,7 +52,7 @@ namespace NavLink.Tests
             {
                 using (var world = new World())
                 {
-                    NavmeshId navmesh = BakeGapLevel(world);
+                    NavmeshId navmesh = GapLevelWithLinks(world);
                     var outcomes = new PathOutcome[2];
                     var calls = new int[2];
                     using (var done = new CountdownEvent(2))
@@ -93,7 +93,7 @@ namespace NavLink.Tests
             {
                 using (var world = new World(new WorldOptions { PathWorkerCount = 0 }))
                 {
-                    NavmeshId navmesh = BakeGapLevel(world);
+                    NavmeshId navmesh = GapLevelWithLinks(world);
                     int thread = Thread.CurrentThread.ManagedThreadId;
                     PathOutcome cancelledOutcome = PathOutcome.Pending;
                     int cancelledOnThread = -1;
@@ -132,7 +132,7 @@ namespace NavLink.Tests
             {
                 using (var world = new World(new WorldOptions { PathWorkerCount = 0 }))
                 {
-                    NavmeshId navmesh = BakeGapLevel(world);
+                    NavmeshId navmesh = GapLevelWithLinks(world);
                     int calls = 0;
                     check.Throws(StatusBits.InvalidHandle, "nl_path_request",
                                  () => world.RequestPath(new PathQuery(default(NavmeshId), TestLevels.WestPoint, TestLevels.EastPoint, TestLevels.Walker()),
@@ -157,7 +157,7 @@ namespace NavLink.Tests
             });
         }
 
-        private static NavmeshId BakeGapLevel(World world)
+        private static NavmeshId GapLevelWithLinks(World world)
         {
             TestLevels.AddGapLevel(world);
             NavmeshId navmesh = world.BuildNavmesh(World.DefaultAgentType());

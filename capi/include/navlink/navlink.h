@@ -672,9 +672,9 @@ NL_API nl_link_settings nl_default_link_settings(void);
  *  named). Thread-safe. */
 NL_API nl_status nl_link_settings_from_json(const char* json, size_t length, nl_link_settings* settings);
 
-/** What a bake did: answers "why is there no link here?". */
-typedef struct nl_bake_report {
-    uint32_t size;               /**< Set by the caller to sizeof(nl_bake_report). */
+/** What a generation did: answers "why is there no link here?". */
+typedef struct nl_link_generation_report {
+    uint32_t size;               /**< Set by the caller to sizeof(nl_link_generation_report). */
     uint32_t edges;              /**< Boundary edges of the navmesh. */
     uint32_t groups;             /**< Groups of short edges. */
     uint32_t samples;            /**< Take-off samples on edges. */
@@ -710,10 +710,10 @@ typedef struct nl_bake_report {
                                         a step, walked. */
     uint32_t rejected_too_deep;    /**< Drops deeper than max_drop_distance, floor to floor. */
     uint32_t reserved;
-} nl_bake_report;
+} nl_link_generation_report;
 
-/** Bake progress: `fraction` done (0..1) and the stage's name (borrowed for the call). Return 0 to
- *  cancel the bake. Called on the thread that called nl_navmesh_generate_links. */
+/** Link generation progress: `fraction` done (0..1) and the stage's name (borrowed for the call). Return 0 to
+ *  cancel the generation. Called on the thread that called nl_navmesh_generate_links. */
 typedef int32_t nl_progress_fn(void* user, float fraction, const char* stage);
 
 /** Generates the navmesh's jump and drop links against the level geometry, and the links of every
@@ -733,7 +733,7 @@ typedef int32_t nl_progress_fn(void* user, float fraction, const char* stage);
  *  doing so for the other's navmesh would wait for each other forever).
  *  Thread-safe; parallel over the world's workers; the result does not depend on their number. */
 NL_API nl_status nl_navmesh_generate_links(nl_world* world, nl_navmesh_id navmesh, const nl_link_settings* settings,
-                                           nl_progress_fn* progress, void* user, nl_bake_report* out_report);
+                                           nl_progress_fn* progress, void* user, nl_link_generation_report* out_report);
 
 /** Regenerates only what level geometry inside the box [box_min, box_max] (3 floats each, borrowed)
  *  can have changed since the navmesh's last generation: call it after meshes were added, removed or
@@ -748,7 +748,7 @@ NL_API nl_status nl_navmesh_generate_links(nl_world* world, nl_navmesh_id navmes
  *  nl_navmesh_generate_links says), CANCELLED (nothing changed). Thread-safe. */
 NL_API nl_status nl_navmesh_update_links_in_box(nl_world* world, nl_navmesh_id navmesh, const float* box_min,
                                                 const float* box_max, nl_progress_fn* progress, void* user,
-                                                nl_bake_report* out_report);
+                                                nl_link_generation_report* out_report);
 
 /** Writes the navmesh's links as JSON (schema "navlink-links" version 1, docs/link-generation.md)
  *  into `buffer` (caller-owned, `capacity` bytes, NUL-terminated on success). `*out_length` always

@@ -39,12 +39,12 @@ namespace NavLink
         /// <summary>progress: a static NativeCallbacks.ProgressFn as a function pointer, or IntPtr.Zero.</summary>
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         public static extern uint nl_navmesh_generate_links(IntPtr world, NavmeshId navmesh, LinkSettings* settings,
-                                                            IntPtr progress, IntPtr user, BakeReport* outReport);
+                                                            IntPtr progress, IntPtr user, LinkGenerationReport* outReport);
 
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         public static extern uint nl_navmesh_update_links_in_box(IntPtr world, NavmeshId navmesh, float* boxMin,
                                                                  float* boxMax, IntPtr progress, IntPtr user,
-                                                                 BakeReport* outReport);
+                                                                 LinkGenerationReport* outReport);
 
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         public static extern uint nl_navmesh_save_links_json(IntPtr world, NavmeshId navmesh, byte* buffer,

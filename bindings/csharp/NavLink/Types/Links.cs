@@ -85,9 +85,9 @@ namespace NavLink
         public float WalkDistance;
     }
 
-    /// <summary>nl_bake_report. Set Size before asking.</summary>
+    /// <summary>nl_link_generation_report. Set Size before asking.</summary>
     [StructLayout(LayoutKind.Sequential)]
-    public struct BakeReport
+    public struct LinkGenerationReport
     {
         public uint Size;
         public uint Edges;

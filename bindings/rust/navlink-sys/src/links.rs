@@ -97,7 +97,7 @@ pub struct nl_link_settings {
 
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct nl_bake_report {
+pub struct nl_link_generation_report {
     pub size: u32,
     pub edges: u32,
     pub groups: u32,
@@ -131,7 +131,7 @@ pub struct nl_bake_report {
     pub reserved: u32,
 }
 
-/// `nl_progress_fn*`: return 0 to cancel. Called on the thread that started the bake.
+/// `nl_progress_fn*`: return 0 to cancel. Called on the thread that started the generation.
 pub type nl_progress_fn = Option<unsafe extern "C" fn(user: *mut c_void, fraction: f32, stage: *const c_char) -> i32>;
 
 extern "C" {
@@ -164,7 +164,7 @@ extern "C" {
         settings: *const nl_link_settings,
         progress: nl_progress_fn,
         user: *mut c_void,
-        out_report: *mut nl_bake_report,
+        out_report: *mut nl_link_generation_report,
     ) -> nl_status;
     pub fn nl_navmesh_update_links_in_box(
         world: *mut nl_world,
@@ -173,7 +173,7 @@ extern "C" {
         box_max: *const f32,
         progress: nl_progress_fn,
         user: *mut c_void,
-        out_report: *mut nl_bake_report,
+        out_report: *mut nl_link_generation_report,
     ) -> nl_status;
     pub fn nl_navmesh_save_links_json(
         world: *const nl_world,

@@ -20,7 +20,7 @@ pub(crate) unsafe extern "C" fn log(user: *mut c_void, level: u32, status: u32, 
     }
 }
 
-/// The state of one bake's progress callback: the closure, and a panic to resume after the call.
+/// The state of one generation's progress callback: the closure, and a panic to resume after the call.
 pub(crate) struct ProgressContext<'a> {
     pub handler: &'a mut dyn FnMut(f32, &str) -> bool,
     pub panic: Option<Box<dyn Any + Send>>,
@@ -36,7 +36,7 @@ pub(crate) unsafe extern "C" fn progress(user: *mut c_void, fraction: f32, stage
     match catch_unwind(AssertUnwindSafe(|| handler(fraction, &stage))) {
         Ok(go_on) => go_on as i32,
         Err(panic) => {
-            // Cancel the bake; the caller resumes the panic once the C call has returned.
+            // Cancel the generation; the caller resumes the panic once the C call has returned.
             context.panic = Some(panic);
             0
         }

@@ -2,14 +2,14 @@
 use crate::callbacks::{self, ProgressContext};
 use crate::error::{check, Error, Result};
 use crate::list::two_call;
-use crate::types::{BakeReport, Link, LinkDef, LinkId, LinkSettings, NavmeshId};
+use crate::types::{LinkGenerationReport, Link, LinkDef, LinkId, LinkSettings, NavmeshId};
 use crate::world::World;
 use navlink_sys as sys;
 use std::os::raw::{c_char, c_void};
 use std::panic::resume_unwind;
 use std::ptr;
 
-/// Bake progress: (fraction done, stage name) -> go on? Called on the thread that started the bake.
+/// Link generation progress: (fraction done, stage name) -> go on? Called on the thread that started the generation.
 pub type Progress<'a> = &'a mut dyn FnMut(f32, &str) -> bool;
 
 /// A manual one-way link, enabled, cost modifier 1: set start and end.
@@ -37,7 +37,7 @@ fn non_null(text: &str) -> *const c_char {
     }
 }
 
-/// Runs a bake with an optional progress closure; a panic in it cancels the bake and resumes here.
+/// Runs a generation with an optional progress closure; a panic in it cancels the generation and resumes here.
 fn with_progress(progress: Option<Progress<'_>>, call: impl FnOnce(sys::nl_progress_fn, *mut c_void) -> u32) -> Result<()> {
     let handler = match progress {
         None => return check(call(None, ptr::null_mut())).map(drop),
@@ -98,13 +98,13 @@ impl World {
         settings: Option<&LinkSettings>,
         plugin_settings_json: Option<&str>,
         progress: Option<Progress<'_>>,
-    ) -> Result<BakeReport> {
+    ) -> Result<LinkGenerationReport> {
         let mut settings = settings.copied().unwrap_or_else(default_link_settings);
         if let Some(json) = plugin_settings_json {
             settings.plugin_settings_json = non_null(json);
             settings.plugin_settings_json_length = json.len();
         }
-        let mut report = BakeReport { size: std::mem::size_of::<BakeReport>() as u32, ..Default::default() };
+        let mut report = LinkGenerationReport { size: std::mem::size_of::<LinkGenerationReport>() as u32, ..Default::default() };
         with_progress(progress, |function, user| unsafe {
             sys::nl_navmesh_generate_links(self.raw(), navmesh, &settings, function, user, &mut report)
         })?;
@@ -118,8 +118,8 @@ impl World {
         box_min: [f32; 3],
         box_max: [f32; 3],
         progress: Option<Progress<'_>>,
-    ) -> Result<BakeReport> {
-        let mut report = BakeReport { size: std::mem::size_of::<BakeReport>() as u32, ..Default::default() };
+    ) -> Result<LinkGenerationReport> {
+        let mut report = LinkGenerationReport { size: std::mem::size_of::<LinkGenerationReport>() as u32, ..Default::default() };
         with_progress(progress, |function, user| unsafe {
             sys::nl_navmesh_update_links_in_box(self.raw(), navmesh, box_min.as_ptr(), box_max.as_ptr(), function, user, &mut report)
         })?;

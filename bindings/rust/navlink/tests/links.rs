@@ -46,12 +46,12 @@ fn generated_jump_links() {
     world.generate_links(navmesh, None, None, None).unwrap();
     let before = world.links(navmesh).unwrap();
     assert_fails(world.generate_links(navmesh, None, None, Some(&mut |_, _| false)), status::CANCELLED, "");
-    assert_eq!(world.links(navmesh).unwrap(), before, "a cancelled bake changes nothing");
+    assert_eq!(world.links(navmesh).unwrap(), before, "a cancelled generation changes nothing");
     let panicked = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
         let _ = world.generate_links(navmesh, None, None, Some(&mut |_, _| panic!("progress panics")));
     }));
     assert!(panicked.is_err(), "the closure's panic comes back to the caller");
-    assert_eq!(world.links(navmesh).unwrap(), before, "and the bake was cancelled");
+    assert_eq!(world.links(navmesh).unwrap(), before, "and the generation was cancelled");
 
     // A wall in the gap: the update in its box removes every jump, as a full generation would.
     add_box(&world, [-0.1, -20.0, -6.0], [0.1, 6.0, 6.0]);

@@ -11,7 +11,7 @@ use std::sync::mpsc;
 use std::sync::{Arc, Mutex};
 use std::time::Duration;
 
-fn bake_gap_level(world: &World) -> NavmeshId {
+fn gap_level_with_links(world: &World) -> NavmeshId {
     add_gap_level(world);
     let navmesh = world.build_navmesh(&NavmeshBuild::new(default_agent_type())).unwrap();
     world.generate_links(navmesh, None, None, None).unwrap();
@@ -45,7 +45,7 @@ fn check_walker_stops_at_gap(r: &PathResult) {
 #[test]
 fn walker_and_jumper_planned_now() {
     let world = World::new().unwrap();
-    let navmesh = bake_gap_level(&world);
+    let navmesh = gap_level_with_links(&world);
     check_jumper_across(&world, &world.find_path(&PathQuery::new(navmesh, WEST, EAST, jumper())).unwrap());
     check_walker_stops_at_gap(&world.find_path(&PathQuery::new(navmesh, WEST, EAST, walker())).unwrap());
 
@@ -72,7 +72,7 @@ fn walker_and_jumper_planned_now() {
 #[test]
 fn queued_with_path_workers_and_closures() {
     let world = World::new().unwrap();
-    let navmesh = bake_gap_level(&world);
+    let navmesh = gap_level_with_links(&world);
     let (sender, finished) = mpsc::channel();
     let (walker_done, jumper_done) = (sender.clone(), sender);
     let walker_ticket = world
@@ -107,7 +107,7 @@ fn queued_with_path_workers_and_closures() {
 #[test]
 fn queued_and_run_by_the_host() {
     let world = World::with_options(WorldOptions { path_worker_count: 0, ..Default::default() }).unwrap();
-    let navmesh = bake_gap_level(&world);
+    let navmesh = gap_level_with_links(&world);
     let jumper_ticket = world.request_path(&PathQuery::new(navmesh, WEST, EAST, jumper())).unwrap();
     let seen = Arc::new(Mutex::new(None));
     let record = Arc::clone(&seen);
@@ -141,7 +141,7 @@ fn queued_and_run_by_the_host() {
 #[test]
 fn a_panicking_path_closure_is_contained() {
     let world = World::with_options(WorldOptions { path_worker_count: 0, ..Default::default() }).unwrap();
-    let navmesh = bake_gap_level(&world);
+    let navmesh = gap_level_with_links(&world);
     let ticket = world.request_path_with(&PathQuery::new(navmesh, WEST, EAST, jumper()), |_, _| panic!("closure panics")).unwrap();
     assert_eq!(world.process_paths(0, 0.0).unwrap(), 1);
     assert_eq!(world.poll_path(ticket).unwrap(), PathOutcome::Complete, "the request finished normally");
@@ -150,7 +150,7 @@ fn a_panicking_path_closure_is_contained() {
 #[test]
 fn invalid_requests() {
     let world = World::with_options(WorldOptions { path_worker_count: 0, ..Default::default() }).unwrap();
-    let navmesh = bake_gap_level(&world);
+    let navmesh = gap_level_with_links(&world);
     let calls = Arc::new(Mutex::new(0));
     let counter = Arc::clone(&calls);
     let null_navmesh = PathQuery::new(Default::default(), WEST, EAST, walker());

@@ -1,4 +1,4 @@
-#include "links/link_bake.h"
+#include "links/link_generation.h"
 
 #include <algorithm>
 #include <array>
@@ -45,7 +45,7 @@ Aabb bounds_of(std::initializer_list<Vec3> points) {
 }
 
 bool touches(const Aabb& a, const Aabb* box) {
-    if (!box) return true;  // a full bake recomputes everything
+    if (!box) return true;  // a full generation recomputes everything
     return (a.min.array() - kPad <= box->max.array()).all() && (a.max.array() + kPad >= box->min.array()).all();
 }
 
@@ -71,16 +71,16 @@ bool crosses_well_inside(const std::array<Vec3, 3>& t, const Vec3& top, float re
     return y <= top.y() - kInside && y >= top.y() - reach + kInside;
 }
 
-// One bake or update: fills `next` from the old cache and new rays.
-class Baker {
+// One generation or update: fills `next` from the old cache and new rays.
+class GenerationPass {
 public:
-    Baker(const NavMesh& mesh, const EdgeSampling& sampling, const LinkSettings& s, BakeMethod method,
-          const LinkBake::Cache& old, const Aabb* box, const Level& level, TaskSystem& tasks, BakeReport& report,
-          BakeProgress progress)
+    GenerationPass(const NavMesh& mesh, const EdgeSampling& sampling, const LinkSettings& s, GenerationMethod method,
+          const LinkGeneration::Cache& old, const Aabb* box, const Level& level, TaskSystem& tasks, LinkGenerationReport& report,
+          GenerationProgress progress)
         : mesh_(mesh), samples_(sampling.samples), s_(s), method_(method), old_(old), box_(box), level_(level),
           tasks_(tasks), report_(report), progress_(progress), body_{mesh.agent().radius, mesh.agent().height}, walk_(mesh) {}
 
-    std::vector<Link> run(LinkBake::Cache& next) {
+    std::vector<Link> run(LinkGeneration::Cache& next) {
         Stopwatch stage;
         step(0.05f, "take-off points");
         probe_takeoffs(next);
@@ -99,7 +99,7 @@ public:
 
 private:
     void step(float fraction, const char* stage) {
-        if (!progress_(fraction, stage)) fail(ErrorCode::Cancelled, "the bake was cancelled during '", stage, "'");
+        if (!progress_(fraction, stage)) fail(ErrorCode::Cancelled, "the generation was cancelled during '", stage, "'");
     }
 
     std::vector<RayHit> cast(const std::vector<Ray>& rays) {
@@ -127,7 +127,7 @@ private:
     // kRimStep out to falloff_distance, with no ground within a step below), with nothing solid
     // between the edge and the rim. Recast leaves its edges 0.6 to 0.9 m inside the rim, depending
     // on how the voxel grid falls, so the rim is searched for, not assumed.
-    void probe_takeoffs(LinkBake::Cache& next) {
+    void probe_takeoffs(LinkGeneration::Cache& next) {
         next.takeoffs.resize(samples_.size());
         std::vector<uint32_t> redo;
         for (uint32_t i = 0; i < samples_.size(); ++i) {
@@ -147,16 +147,16 @@ private:
             const Vec3 out = e.point + e.outward * std::min(step * kRimStep, s_.falloff_distance);
             return Vec3(out.x(), next.takeoffs[redo[k]].ground_y + probe, out.z());
         };
-        // Indexed bakes first try the last triangle found under the sample (by the ground ray, then
+        // Indexed generations first try the last triangle found under the sample (by the ground ray, then
         // by each probe cast): a probe that crosses it well inside is on ground without a ray.
-        const bool floor_shortcut = method_ == BakeMethod::Indexed;
+        const bool floor_shortcut = method_ == GenerationMethod::Indexed;
         std::vector<std::optional<std::array<Vec3, 3>>> floor(floor_shortcut ? redo.size() : 0);
         if (floor_shortcut) level_.static_triangles(ground.data(), static_cast<uint32_t>(ground.size()), floor.data());
         tasks_.parallel_for(static_cast<uint32_t>(redo.size()), 256, [&](uint32_t begin, uint32_t end) {
             for (uint32_t k = begin; k < end; ++k) {
                 const EdgeSample& e = samples_[redo[k]];
-                LinkBake::TakeoffState& t = next.takeoffs[redo[k]];
-                t = LinkBake::TakeoffState{};
+                LinkGeneration::TakeoffState& t = next.takeoffs[redo[k]];
+                t = LinkGeneration::TakeoffState{};
                 // Correction for navmeshes that sit above the floor (Recast's rounds up) or sink into it.
                 t.ground_y = ground[k].hit ? ground[k].point.y() : e.point.y();
                 t.rim = -1.0f;
@@ -215,7 +215,7 @@ private:
         std::vector<uint32_t> ledges;
         const Vec3 chest(0, std::min(0.5f * body_.height, 1.0f), 0);
         for (size_t k = 0; k < redo.size(); ++k) {
-            LinkBake::TakeoffState& t = next.takeoffs[redo[k]];
+            LinkGeneration::TakeoffState& t = next.takeoffs[redo[k]];
             const EdgeSample& e = samples_[redo[k]];
             if (t.rim < 0.0f) {
                 t.rejected = 2;
@@ -229,7 +229,7 @@ private:
         }
         const std::vector<uint8_t> wall = blocked(walls);
         for (size_t k = 0; k < ledges.size(); ++k) {
-            LinkBake::TakeoffState& t = next.takeoffs[ledges[k]];
+            LinkGeneration::TakeoffState& t = next.takeoffs[ledges[k]];
             t.valid = !wall[k];
             t.rejected = wall[k] ? 1 : 0;
         }
@@ -239,11 +239,11 @@ private:
     // times, all samples in one batch per halving, so a gap is measured to a couple of centimetres.
     // The rim is then the outer end of what is left (known to be past the ground), so a gap never
     // reads wider than it is: a body allowed exactly a designed gap can take it.
-    void refine_rims(LinkBake::Cache& next, const std::vector<uint32_t>& redo, float probe, float step_reach) {
+    void refine_rims(LinkGeneration::Cache& next, const std::vector<uint32_t>& redo, float probe, float step_reach) {
         std::vector<uint32_t> found;  // samples with a rim
         std::vector<float> ground, air;  // distances out known on ground and off it
         for (uint32_t i : redo) {
-            const LinkBake::TakeoffState& t = next.takeoffs[i];
+            const LinkGeneration::TakeoffState& t = next.takeoffs[i];
             if (t.rim < 0.0f) continue;
             found.push_back(i);
             air.push_back(t.rim);
@@ -264,7 +264,7 @@ private:
     }
 
     // The floor under a take-off point: its sample's x and z, the height of the level found under it.
-    Vec3 floor_point(const LinkBake::Cache& c, uint32_t i) const {
+    Vec3 floor_point(const LinkGeneration::Cache& c, uint32_t i) const {
         return Vec3(samples_[i].point.x(), c.takeoffs[i].ground_y, samples_[i].point.z());
     }
 
@@ -314,7 +314,7 @@ private:
         const uint32_t i = valid[x];
         const Vec3& p = samples_[i].point;
         const float reach = pair_reach();
-        if (method_ == BakeMethod::BruteForce) {
+        if (method_ == GenerationMethod::BruteForce) {
             for (size_t y = x + 1; y < valid.size(); ++y)
                 if ((samples_[valid[y]].point - p).norm() <= reach) out.push_back(valid[y]);
             return;
@@ -334,7 +334,7 @@ private:
     // The constraints that need no ray, between the floor points of two take-off points: gap,
     // rise, facing, incline, and whether walking is about as short. Both directions at
     // once: every one of them is symmetric in the two ends. `gap` receives the air gap.
-    PairVerdict judge_pair(const LinkBake::Cache& c, uint32_t i, uint32_t j, float& gap) const {
+    PairVerdict judge_pair(const LinkGeneration::Cache& c, uint32_t i, uint32_t j, float& gap) const {
         const EdgeSample &a = samples_[i], &b = samples_[j];
         const Vec3 d = floor_point(c, j) - floor_point(c, i);
         const Vec3 flat(d.x(), 0.0f, d.z());
@@ -370,7 +370,7 @@ private:
     // A pair that met every geometry-free constraint: reused from the old cache (with its sweep, if it
     // had one) when the box cannot have changed it and its ends are where they were; else a new
     // candidate, to be swept if the ranking reaches it (decide_jumps).
-    void add_jump_candidate(uint32_t a, uint32_t b, float gap, LinkBake::Cache& next) {
+    void add_jump_candidate(uint32_t a, uint32_t b, float gap, LinkGeneration::Cache& next) {
         const uint64_t key = pair_key(a, b);
         const Vec3 start = floor_point(next, a), end = floor_point(next, b);
         const auto cached = old_.jumps.find(key);
@@ -380,7 +380,7 @@ private:
             next.jumps.emplace(key, cached->second).first->second.link.requirements.gap = gap;
             return;
         }
-        LinkBake::JumpCandidate c;
+        LinkGeneration::JumpCandidate c;
         c.a = a;
         c.b = b;
         c.link.kind = LinkKind::Jump;
@@ -405,15 +405,15 @@ private:
     // swept) or fills `pending` with the candidates to sweep next (those the walk reached unswept,
     // and no later one that the outcome of theirs could exclude). `report` counts the rejections of
     // a finished walk.
-    std::vector<const LinkBake::JumpCandidate*> walk_jump_ranking(const LinkBake::Cache& c, std::vector<uint64_t>* pending,
-                                                                  BakeReport* report) const {
-        auto squareness = [&](const LinkBake::JumpCandidate& j) {
+    std::vector<const LinkGeneration::JumpCandidate*> walk_jump_ranking(const LinkGeneration::Cache& c, std::vector<uint64_t>* pending,
+                                                                  LinkGenerationReport* report) const {
+        auto squareness = [&](const LinkGeneration::JumpCandidate& j) {
             Vec3 heading = j.link.end - j.link.start;
             heading.y() = 0.0f;
             heading.normalize();
             return std::min(samples_[j.a].outward.dot(heading), samples_[j.b].outward.dot(-heading));
         };
-        std::vector<std::pair<float, const LinkBake::JumpCandidate*>> ranked;
+        std::vector<std::pair<float, const LinkGeneration::JumpCandidate*>> ranked;
         ranked.reserve(c.jumps.size());
         for (const auto& [key, j] : c.jumps) ranked.emplace_back(squareness(j), &j);
         std::sort(ranked.begin(), ranked.end(), [](const auto& x, const auto& y) {
@@ -423,7 +423,7 @@ private:
             return std::make_pair(x.second->a, x.second->b) < std::make_pair(y.second->a, y.second->b);
         });
         std::unordered_set<uint64_t> taken, waiting;  // (take-off point, edge across): linked, or awaiting a sweep
-        std::vector<const LinkBake::JumpCandidate*> kept;
+        std::vector<const LinkGeneration::JumpCandidate*> kept;
         for (const auto& [score, j] : ranked) {
             const uint64_t from_a = pair_key(j->a, samples_[j->b].edge), from_b = pair_key(j->b, samples_[j->a].edge);
             if (taken.count(from_a) || taken.count(from_b)) {
@@ -449,7 +449,7 @@ private:
     }
 
     // Sweeps the jump arcs between each pair of ends (from the first to the second).
-    std::vector<LinkBake::Sweep> sweep_arcs(const std::vector<std::pair<Vec3, Vec3>>& ends) {
+    std::vector<LinkGeneration::Sweep> sweep_arcs(const std::vector<std::pair<Vec3, Vec3>>& ends) {
         const double piece = 1.0 / s_.arc_segments;
         std::vector<std::vector<Vec3>> arcs(ends.size());
         std::vector<PathPoints> paths(ends.size());
@@ -462,7 +462,7 @@ private:
     }
 
     // Sweeps the candidates the ranking reaches, a round at a time, until it is decided.
-    void decide_jumps(LinkBake::Cache& next) {
+    void decide_jumps(LinkGeneration::Cache& next) {
         for (;;) {
             std::vector<uint64_t> pending;
             walk_jump_ranking(next, &pending, nullptr);
@@ -470,7 +470,7 @@ private:
             std::sort(pending.begin(), pending.end());  // a batch in a fixed order, whatever the map's
             std::vector<std::pair<Vec3, Vec3>> ends;
             for (uint64_t key : pending) ends.emplace_back(next.jumps[key].link.start, next.jumps[key].link.end);
-            const std::vector<LinkBake::Sweep> swept = sweep_arcs(ends);
+            const std::vector<LinkGeneration::Sweep> swept = sweep_arcs(ends);
             for (size_t n = 0; n < pending.size(); ++n) next.jumps[pending[n]].sweep = swept[n];
         }
     }
@@ -478,18 +478,18 @@ private:
     // Sweeps each path with the agent's body and bodies 1.5 and 2 times as wide (Body, kSweepRadii),
     // every piece tested exactly against the triangles near it: a path is clear if the agent's body
     // touches nothing anywhere along it, and as wide as the widest body that touches nothing. Indexed
-    // bakes ask the level for the triangles around each straight run of pieces once (a run through
-    // open air costs that one query) and test the run's pieces against those; brute-force bakes ask
+    // generations ask the level for the triangles around each straight run of pieces once (a run through
+    // open air costs that one query) and test the run's pieces against those; brute-force generations ask
     // for each piece on its own.
-    std::vector<LinkBake::Sweep> sweep(const std::vector<PathPoints>& paths) {
-        std::vector<LinkBake::Sweep> out(paths.size());
+    std::vector<LinkGeneration::Sweep> sweep(const std::vector<PathPoints>& paths) {
+        std::vector<LinkGeneration::Sweep> out(paths.size());
         std::vector<std::vector<SweepPiece>> pieces(paths.size());
         std::vector<std::vector<PieceRun>> runs(paths.size());
         const float widest = kSweepRadii[kSweepRadiusCount - 1] * body_.radius;
         tasks_.parallel_for(static_cast<uint32_t>(paths.size()), 64, [&](uint32_t begin, uint32_t end) {
             for (uint32_t i = begin; i < end; ++i) {
                 pieces[i] = sweep_pieces(paths[i], s_.clearance_margin, body_.radius);
-                if (method_ == BakeMethod::Indexed) runs[i] = straight_runs(pieces[i]);
+                if (method_ == GenerationMethod::Indexed) runs[i] = straight_runs(pieces[i]);
                 Aabb& b = out[i].bounds;
                 for (size_t n = 0; n < paths[i].count; ++n) b.grow(paths[i].points[n]);
                 b.min -= Vec3(widest, paths[i].slack, widest);
@@ -539,7 +539,7 @@ private:
 
     // Point location through the navmesh's polygon grid, or over every polygon (brute force).
     NavPoint locate(const Vec3& point, const Vec3& half_extents) const {
-        return method_ == BakeMethod::Indexed ? mesh_.find_nearest(point, half_extents)
+        return method_ == GenerationMethod::Indexed ? mesh_.find_nearest(point, half_extents)
                                               : mesh_.find_nearest_brute_force(point, half_extents);
     }
 
@@ -547,13 +547,13 @@ private:
     // Jump candidates: the geometry-free constraints over every pair (cheap, so always redone, in
     // parallel over take-off points, a block at a time so progress can cancel), then the arc sweep,
     // reused from the old cache unless geometry in the box could have changed it.
-    void find_jumps(LinkBake::Cache& next) {
+    void find_jumps(LinkGeneration::Cache& next) {
         std::vector<uint32_t> valid;
         for (uint32_t i = 0; i < samples_.size(); ++i)
             if (next.takeoffs[i].valid) valid.push_back(i);
         report_.takeoff_points = static_cast<uint32_t>(valid.size());
         TakeoffGrid grid;
-        if (method_ == BakeMethod::Indexed)
+        if (method_ == GenerationMethod::Indexed)
             for (uint32_t i : valid) grid[cell_of(samples_[i].point)].push_back(i);
 
         constexpr size_t kBlock = 2048;
@@ -589,7 +589,7 @@ private:
     }
 
     // Drops: probes down from past the rim along rotated outward directions, then the fall's sweep.
-    void find_drops(LinkBake::Cache& next) {
+    void find_drops(LinkGeneration::Cache& next) {
         const float steep = s_.drop_steepness * kDegrees;
         const float reach = (s_.max_drop_distance + kProbeLift + 1.0f) / std::sin(steep);
         const auto angles = static_cast<uint32_t>(s_.drop_angles.size());
@@ -599,7 +599,7 @@ private:
         next.drops.reserve(size_t(report_.takeoff_points) * angles);
         auto old = old_.drops.begin();
         for (uint32_t i = 0; i < samples_.size(); ++i) {
-            const LinkBake::TakeoffState& t = next.takeoffs[i];
+            const LinkGeneration::TakeoffState& t = next.takeoffs[i];
             if (!t.valid) continue;
             const bool takeoff_same = old_.takeoffs.size() == samples_.size() && old_.takeoffs[i].valid &&
                                       old_.takeoffs[i].rim == t.rim && old_.takeoffs[i].ground_y == t.ground_y;
@@ -618,7 +618,7 @@ private:
         std::vector<Vec3> headings(probed.size());
         tasks_.parallel_for(static_cast<uint32_t>(probed.size()), 256, [&](uint32_t begin, uint32_t end) {
             for (uint32_t k = begin; k < end; ++k) {
-                LinkBake::DropProbe& d = next.drops[probed[k]];
+                LinkGeneration::DropProbe& d = next.drops[probed[k]];
                 const auto i = static_cast<uint32_t>(d.key >> 32), angle = static_cast<uint32_t>(d.key);
                 const EdgeSample& e = samples_[i];
                 const Eigen::AngleAxisf turn(s_.drop_angles[angle] * kDegrees, Vec3::UnitY());
@@ -636,7 +636,7 @@ private:
         std::vector<NavPoint> landings(probed.size());
         tasks_.parallel_for(static_cast<uint32_t>(probed.size()), 256, [&](uint32_t begin, uint32_t end) {
             for (uint32_t k = begin; k < end; ++k) {
-                LinkBake::DropProbe& d = next.drops[probed[k]];
+                LinkGeneration::DropProbe& d = next.drops[probed[k]];
                 d.bounds = bounds_of({probes[k].origin, probes[k].origin + probes[k].direction * (hits[k].hit ? hits[k].distance : reach)});
                 d.outcome = 1;
                 if (!hits[k].hit) continue;
@@ -662,16 +662,16 @@ private:
         std::vector<uint8_t> fresh(next.drops.size(), 0);
         for (uint32_t k : probed) fresh[k] = 1;
         for (uint32_t k = 0; k < next.drops.size(); ++k) {
-            LinkBake::DropProbe& d = next.drops[k];
-            if (fresh[k] || touches(d.sweep.bounds, box_)) d.sweep = LinkBake::Sweep{};
-            if (fresh[k] || touches(d.back.bounds, box_)) d.back = LinkBake::Sweep{};
+            LinkGeneration::DropProbe& d = next.drops[k];
+            if (fresh[k] || touches(d.sweep.bounds, box_)) d.sweep = LinkGeneration::Sweep{};
+            if (fresh[k] || touches(d.back.bounds, box_)) d.back = LinkGeneration::Sweep{};
         }
         step(0.8f, "drop clearance");
         for (;;) {
             std::vector<uint32_t> round;
             for_each_way_down(next, [&](const std::vector<uint32_t>& way) {
                 for (uint32_t k : way) {
-                    const LinkBake::Sweep& sw = next.drops[k].sweep;
+                    const LinkGeneration::Sweep& sw = next.drops[k].sweep;
                     if (!sw.swept) round.push_back(k);
                     if (!sw.swept || sw.clear) return;
                 }
@@ -679,7 +679,7 @@ private:
             if (round.empty()) break;
             std::vector<PathPoints> paths;
             for (uint32_t k : round) paths.push_back(PathPoints{next.drops[k].fall.data(), next.drops[k].fall.size(), 0.0f});
-            const std::vector<LinkBake::Sweep> swept = sweep(paths);
+            const std::vector<LinkGeneration::Sweep> swept = sweep(paths);
             for (size_t n = 0; n < round.size(); ++n) next.drops[round[n]].sweep = swept[n];
         }
         // The jump back up of each kept drop low enough for one.
@@ -690,7 +690,7 @@ private:
         });
         std::vector<std::pair<Vec3, Vec3>> ends;
         for (uint32_t k : back_of) ends.emplace_back(next.drops[k].link.end, next.drops[k].link.start);
-        const std::vector<LinkBake::Sweep> back = sweep_arcs(ends);
+        const std::vector<LinkGeneration::Sweep> back = sweep_arcs(ends);
         for (size_t n = 0; n < back_of.size(); ++n) next.drops[back_of[n]].back = back[n];
     }
 
@@ -699,7 +699,7 @@ private:
     // first in drop_angles on a tie). A probe joins the first way whose first probe lands on its
     // surface: a walkable surface joined to that landing on foot, within max_climb of its height.
     template <typename Each>
-    void for_each_way_down(const LinkBake::Cache& c, Each&& each) const {
+    void for_each_way_down(const LinkGeneration::Cache& c, Each&& each) const {
         std::vector<uint32_t> landed;
         std::vector<std::vector<uint32_t>> ways;
         for (size_t first = 0; first < c.drops.size();) {
@@ -728,9 +728,9 @@ private:
     }
 
     // A way down's kept probe: its first swept and clear one, or none.
-    static const uint32_t* kept_probe(const LinkBake::Cache& c, const std::vector<uint32_t>& way) {
+    static const uint32_t* kept_probe(const LinkGeneration::Cache& c, const std::vector<uint32_t>& way) {
         for (const uint32_t& k : way) {
-            const LinkBake::Sweep& sw = c.drops[k].sweep;
+            const LinkGeneration::Sweep& sw = c.drops[k].sweep;
             if (!sw.swept) return nullptr;
             if (sw.clear) return &k;
         }
@@ -739,7 +739,7 @@ private:
 
     // How far out along drop probe `angle`'s heading the ground falls away: the rim found straight
     // out, taken as a line along the edge.
-    float rim_along(const LinkBake::Cache& c, uint32_t i, uint32_t angle) const {
+    float rim_along(const LinkGeneration::Cache& c, uint32_t i, uint32_t angle) const {
         return c.takeoffs[i].rim / std::cos(s_.drop_angles[angle] * kDegrees);
     }
 
@@ -751,7 +751,7 @@ private:
 
     // What a probe that came down on the navmesh found, floor to floor: a landing too shallow (a
     // step, walked) or too deep, or a drop link with its fall (out over the rim, across, down).
-    void settle(const LinkBake::Cache& c, LinkBake::DropProbe& d, const Vec3& heading, const NavPoint& landing,
+    void settle(const LinkGeneration::Cache& c, LinkGeneration::DropProbe& d, const Vec3& heading, const NavPoint& landing,
                 const Ray& floor_ray, const RayHit& floor) const {
         const auto i = static_cast<uint32_t>(d.key >> 32);
         d.bounds.grow(floor_ray.origin);
@@ -785,8 +785,8 @@ private:
         l.apex = d.fall[1];  // where the body leaves the ground: the top of the fall, and its heading
     }
 
-    // No rays from here on: over everything cached, so an update gives what a full bake would.
-    std::vector<Link> select(const LinkBake::Cache& c) {
+    // No rays from here on: over everything cached, so an update gives what a full generation would.
+    std::vector<Link> select(const LinkGeneration::Cache& c) {
         for (const auto& t : c.takeoffs) {
             if (t.rejected == 1) ++report_.rejected_wall;
             if (t.rejected == 2) ++report_.rejected_not_ledge;
@@ -795,8 +795,8 @@ private:
         const std::vector<Link> drops = one_drop_per_way_down(c);
         links.insert(links.end(), drops.begin(), drops.end());
         report_.drop_candidates = 0;
-        for (const LinkBake::DropProbe& d : c.drops) report_.drop_candidates += d.outcome == 0;
-        MergedLinks merged = merge_links(std::move(links), s_.merge_distance, method_ == BakeMethod::BruteForce);
+        for (const LinkGeneration::DropProbe& d : c.drops) report_.drop_candidates += d.outcome == 0;
+        MergedLinks merged = merge_links(std::move(links), s_.merge_distance, method_ == GenerationMethod::BruteForce);
         report_.rejected_duplicate += merged.duplicates;
         links = std::move(merged.kept);
         for (const Link& l : links) (l.kind == LinkKind::Jump ? report_.jump_links : report_.drop_links)++;
@@ -805,8 +805,8 @@ private:
 
     // The kept drops, in key order: one per way down (for_each_way_down), its most head-on clear
     // probe. The ways' other probes are duplicates, unless blocked.
-    std::vector<Link> one_drop_per_way_down(const LinkBake::Cache& c) {
-        for (const LinkBake::DropProbe& d : c.drops) {
+    std::vector<Link> one_drop_per_way_down(const LinkGeneration::Cache& c) {
+        for (const LinkGeneration::DropProbe& d : c.drops) {
             if (d.outcome == 1) ++report_.rejected_no_landing;
             else if (d.outcome == 2) ++report_.rejected_too_shallow;
             else if (d.outcome == 3) ++report_.rejected_too_deep;
@@ -823,7 +823,7 @@ private:
         std::sort(kept.begin(), kept.end());
         std::vector<Link> out;
         for (uint32_t k : kept) {
-            const LinkBake::DropProbe& d = c.drops[k];
+            const LinkGeneration::DropProbe& d = c.drops[k];
             out.push_back(d.link);
             Link& l = out.back();
             l.requirements.clearance_width = d.sweep.width;
@@ -835,8 +835,8 @@ private:
     }
 
     // The kept jumps (walk_jump_ranking), in take-off order.
-    std::vector<Link> straightest_jumps(const LinkBake::Cache& c) {
-        std::vector<const LinkBake::JumpCandidate*> kept = walk_jump_ranking(c, nullptr, &report_);
+    std::vector<Link> straightest_jumps(const LinkGeneration::Cache& c) {
+        std::vector<const LinkGeneration::JumpCandidate*> kept = walk_jump_ranking(c, nullptr, &report_);
         std::sort(kept.begin(), kept.end(), [](const auto* x, const auto* y) { return std::make_pair(x->a, x->b) < std::make_pair(y->a, y->b); });
         std::vector<Link> links;
         for (const auto* j : kept) {
@@ -849,41 +849,41 @@ private:
     const NavMesh& mesh_;
     const std::vector<EdgeSample>& samples_;
     const LinkSettings& s_;
-    BakeMethod method_;
-    const LinkBake::Cache& old_;
+    GenerationMethod method_;
+    const LinkGeneration::Cache& old_;
     const Aabb* box_;
     const Level& level_;
     TaskSystem& tasks_;
-    BakeReport& report_;
-    BakeProgress progress_;
+    LinkGenerationReport& report_;
+    GenerationProgress progress_;
     Body body_;
     WalkGraph walk_;
 };
 
 }  // namespace
 
-LinkBake::LinkBake(std::shared_ptr<const NavMesh> navmesh, const LinkSettings& settings, BakeMethod method)
+LinkGeneration::LinkGeneration(std::shared_ptr<const NavMesh> navmesh, const LinkSettings& settings, GenerationMethod method)
     : navmesh_(std::move(navmesh)), settings_(settings), method_(method) {
     validate(settings_, "settings->");
 }
 
-std::vector<Link> LinkBake::run(const Level& level, TaskSystem& tasks, BakeReport& report, BakeProgress progress) {
+std::vector<Link> LinkGeneration::run(const Level& level, TaskSystem& tasks, LinkGenerationReport& report, GenerationProgress progress) {
     std::lock_guard lock(mutex_);
-    return bake(nullptr, level, tasks, report, progress);
+    return generate(nullptr, level, tasks, report, progress);
 }
 
-std::vector<Link> LinkBake::update(const Aabb& box, const Level& level, TaskSystem& tasks, BakeReport& report,
-                                   BakeProgress progress) {
+std::vector<Link> LinkGeneration::update(const Aabb& box, const Level& level, TaskSystem& tasks, LinkGenerationReport& report,
+                                   GenerationProgress progress) {
     std::lock_guard lock(mutex_);
-    return bake(baked_ ? &box : nullptr, level, tasks, report, progress);
+    return generate(generated_ ? &box : nullptr, level, tasks, report, progress);
 }
 
-std::vector<Link> LinkBake::bake(const Aabb* box, const Level& level, TaskSystem& tasks, BakeReport& report,
-                                 BakeProgress progress) {
+std::vector<Link> LinkGeneration::generate(const Aabb* box, const Level& level, TaskSystem& tasks, LinkGenerationReport& report,
+                                 GenerationProgress progress) {
     Stopwatch total, stage;
-    report = BakeReport{};
-    if (!progress(0.0f, "edges")) fail(ErrorCode::Cancelled, "the bake was cancelled during 'edges'");
-    if (!baked_) sampling_ = sample_edges(*navmesh_, settings_);
+    report = LinkGenerationReport{};
+    if (!progress(0.0f, "edges")) fail(ErrorCode::Cancelled, "the generation was cancelled during 'edges'");
+    if (!generated_) sampling_ = sample_edges(*navmesh_, settings_);
     report.edges = sampling_.edges;
     report.groups = sampling_.groups;
     report.samples = static_cast<uint32_t>(sampling_.samples.size());
@@ -892,10 +892,10 @@ std::vector<Link> LinkBake::bake(const Aabb* box, const Level& level, TaskSystem
     const Cache empty;
     Cache next;
     std::vector<Link> links =
-        Baker(*navmesh_, sampling_, settings_, method_, baked_ ? cache_ : empty, box, level, tasks, report, progress).run(next);
-    if (!progress(1.0f, "done")) fail(ErrorCode::Cancelled, "the bake was cancelled at its end");
-    cache_ = std::move(next);  // only a bake that finished replaces the cache
-    baked_ = true;
+        GenerationPass(*navmesh_, sampling_, settings_, method_, generated_ ? cache_ : empty, box, level, tasks, report, progress).run(next);
+    if (!progress(1.0f, "done")) fail(ErrorCode::Cancelled, "the generation was cancelled at its end");
+    cache_ = std::move(next);  // only a generation that finished replaces the cache
+    generated_ = true;
     report.milliseconds_total = total.lap();
     return links;
 }

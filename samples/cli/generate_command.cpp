@@ -1,8 +1,8 @@
-// navlink bake: navmesh, links, links JSON, report (and a picture).
+// navlink generate: navmesh, links, links JSON, report (and a picture).
 #include <cstdio>
 
 #include "arguments.h"
-#include "bake_report_text.h"
+#include "generation_report_text.h"
 #include "commands.h"
 #include "generation_settings.h"
 #include "help_text.h"
@@ -15,12 +15,12 @@
 
 namespace nl::cli {
 
-int run_bake(int argc, char** argv) {
+int run_generate(int argc, char** argv) {
     const samples::Arguments args(
-        "navlink bake", "bake", argc, argv, 2,
+        "navlink generate", "generate", argc, argv, 2,
         {{"out", true}, {"navmesh", true}, {"agent", true}, {"settings", true}, {"png", true}, {"oblique", false}});
     if (args.wants_help()) {
-        std::fputs(kBakeHelp, stdout);
+        std::fputs(kGenerateHelp, stdout);
         return 0;
     }
     args.expect_positional(1, "LEVEL.obj");
@@ -33,14 +33,14 @@ int run_bake(int argc, char** argv) {
     if (!agent.first_capability_key.empty())
         throw samples::SampleError(*args.value("agent") + ": " + agent.first_capability_key +
                                    " is a capability: capabilities choose links when a path is planned (navlink path "
-                                   "--agent); bake reads only the body (radius, height, max_climb, max_slope)");
+                                   "--agent); generate reads only the body (radius, height, max_climb, max_slope)");
     const samples::GenerationSettings settings = args.has("settings")
                                                      ? samples::read_generation_settings_file(*args.value("settings"))
                                                      : samples::GenerationSettings();
 
     NavigableLevel level(args.positional()[0], args.value("navmesh"), agent.body, settings.recast_json,
                          args.has("png"));
-    const nl_bake_report report = level.generate_links(settings.links);
+    const nl_link_generation_report report = level.generate_links(settings.links);
     samples::write_text_file(out, samples::links_json(level.world(), level.navmesh()));
 
     const samples::NavmeshContents contents = samples::read_navmesh_contents(level.world(), level.navmesh());
@@ -48,13 +48,13 @@ int run_bake(int argc, char** argv) {
     std::printf("navmesh: %zu polygons, %zu boundary edges (%s)\n", contents.polygons.size(),
                 contents.boundary_edges.size(),
                 args.has("navmesh") ? args.value("navmesh")->c_str() : "built by recast");
-    print_bake_report(stdout, report, contents.links, level.times());
+    print_generation_report(stdout, report, contents.links, level.times());
     std::printf("wrote %s\n", out.c_str());
     if (const auto png = args.value("png")) {
         PictureRequest request;
         request.path = *png;
         request.oblique = args.has("oblique");
-        request.title = "navlink bake " + level.level().name;
+        request.title = "navlink generate " + level.level().name;
         write_picture(level.level(), contents, {}, request);
         std::printf("wrote %s\n", png->c_str());
     }

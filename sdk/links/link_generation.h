@@ -1,10 +1,10 @@
-// A bake of one navmesh's links that remembers what every ray looked at, so that after the level
+// A generation of one navmesh's links that remembers what every ray looked at, so that after the level
 // changes inside a box only the probes and sweeps whose bounds touch that box are cast again.
 //
 // Stages: samples (navmesh only) -> take-off probes -> jump candidates (geometry-free constraints,
 // recomputed every time: cheap) with their arc sweeps -> drop probes with their fall sweeps ->
 // selection and merge (no rays, over everything cached). Because the last two steps always run over
-// the whole cache, an update gives exactly the links a full bake would.
+// the whole cache, an update gives exactly the links a full generation would.
 #pragma once
 
 #include <array>
@@ -18,16 +18,16 @@
 
 namespace nl {
 
-class LinkBake {
+class LinkGeneration {
 public:
-    LinkBake(std::shared_ptr<const NavMesh> navmesh, const LinkSettings& settings, BakeMethod method);
+    LinkGeneration(std::shared_ptr<const NavMesh> navmesh, const LinkSettings& settings, GenerationMethod method);
 
     // Casts everything.
-    std::vector<Link> run(const Level& level, TaskSystem& tasks, BakeReport& report, BakeProgress progress);
+    std::vector<Link> run(const Level& level, TaskSystem& tasks, LinkGenerationReport& report, GenerationProgress progress);
     // Casts again what geometry inside `box` can have changed. Throws (Cancelled, ...) leaving the
-    // bake as it was.
-    std::vector<Link> update(const Aabb& box, const Level& level, TaskSystem& tasks, BakeReport& report,
-                             BakeProgress progress);
+    // generation as it was.
+    std::vector<Link> update(const Aabb& box, const Level& level, TaskSystem& tasks, LinkGenerationReport& report,
+                             GenerationProgress progress);
 
     struct TakeoffState {
         bool valid = false;
@@ -63,16 +63,16 @@ public:
     };
 
 private:
-    std::vector<Link> bake(const Aabb* box, const Level& level, TaskSystem& tasks, BakeReport& report,
-                           BakeProgress progress);
+    std::vector<Link> generate(const Aabb* box, const Level& level, TaskSystem& tasks, LinkGenerationReport& report,
+                           GenerationProgress progress);
 
     std::shared_ptr<const NavMesh> navmesh_;
     LinkSettings settings_;
-    BakeMethod method_;
+    GenerationMethod method_;
     EdgeSampling sampling_;
     Cache cache_;
-    bool baked_ = false;
-    std::mutex mutex_;  // one bake or update at a time
+    bool generated_ = false;
+    std::mutex mutex_;  // one generation or update at a time
 };
 
 }  // namespace nl

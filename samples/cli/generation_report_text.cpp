@@ -1,9 +1,9 @@
-#include "bake_report_text.h"
+#include "generation_report_text.h"
 
 namespace nl::cli {
 
-void print_bake_report(std::FILE* out, const nl_bake_report& r, const std::vector<nl_link>& links,
-                       const BakeTimes& times) {
+void print_generation_report(std::FILE* out, const nl_link_generation_report& r, const std::vector<nl_link>& links,
+                       const GenerationTimes& times) {
     uint32_t jumps = 0, drops = 0, manual = 0, plugin = 0, one_way = 0;
     for (const nl_link& l : links) {
         jumps += l.kind == NL_LINK_JUMP;
