@@ -11,7 +11,6 @@
 #include <vector>
 
 #include "navlink/navlink.h"
-#include "navmesh/navmesh.h"
 #include "util/error.h"
 
 struct nl_world;
@@ -25,12 +24,6 @@ ErrorCode to_error_code(nl_status status) noexcept;
 // Records the outcome of the current call on this thread (and logs failures through `world`).
 nl_status record(const char* function, const nl_world* world, nl_status status, const char* message) noexcept;
 
-// Validates and builds a navmesh from a def (nl_navmesh_add, and the builders' sink), logging the
-// repairs. Throws; adds nothing to the world.
-std::shared_ptr<const NavMesh> navmesh_from_def(const nl_world& world, const nl_navmesh_def& def, const char* function);
-
-// Sends a message to the world's log callback if it wants that level.
-void log(const nl_world* world, nl_log_level level, nl_status status, const std::string& message) noexcept;
 inline nl_status record_success() noexcept { return record(nullptr, nullptr, NL_STATUS_SUCCESS, ""); }
 
 template <typename Body>
@@ -52,6 +45,10 @@ nl_status guarded(const char* function, const nl_world* world, Body&& body) noex
 // Throws InvalidArgument naming `name` when `pointer` is null.
 inline void require(const void* pointer, const char* name) {
     if (!pointer) fail(ErrorCode::InvalidArgument, name, " is null");
+}
+// The same for a field of a struct being read (the caller names the struct: naming_fields).
+inline void require_field(const void* pointer, const char* name) {
+    if (!pointer) fail_field(ErrorCode::InvalidArgument, name, " is null");
 }
 
 // The two-call list pattern: a NULL buffer asks only for the count (a success); a buffer with too

@@ -24,13 +24,13 @@ Id to_id(Handle h) {
 }
 
 // A position the host passed (3 floats), refused when not finite or beyond the coordinate limit;
-// `name` parts spell the field for the message ("rays", "[", 3, "].origin").
+// `name` parts spell the field for the message ("rays", "[", 3, "].origin"; a failure about a field).
 template <typename... Name>
 Vec3 read_position(const float* p, const Name&... name) {
     const Vec3 v(p[0], p[1], p[2]);
-    if (!v.allFinite()) fail(ErrorCode::InvalidArgument, name..., " is not finite");
+    if (!v.allFinite()) fail_field(ErrorCode::InvalidArgument, name..., " is not finite");
     if (!within_coordinate_limit(v))
-        fail(ErrorCode::InvalidArgument, name..., " is beyond the coordinate limit of +-", kCoordinateLimit, " m");
+        fail_field(ErrorCode::InvalidArgument, name..., " is beyond the coordinate limit of +-", kCoordinateLimit, " m");
     return v;
 }
 
@@ -38,18 +38,20 @@ Vec3 read_position(const float* p, const Name&... name) {
 // spell the field for the message.
 template <typename... Name>
 float read_amount(float value, const Name&... name) {
-    if (!(value >= 0.0f) || !std::isfinite(value)) fail(ErrorCode::InvalidArgument, name..., " is ", value, " (must be finite and >= 0)");
+    if (!(value >= 0.0f) || !std::isfinite(value))
+        fail_field(ErrorCode::InvalidArgument, name..., " is ", value, " (must be finite and >= 0)");
     return value;
 }
 
-// Copies `count` positions that start every `stride` bytes (0 = packed). The host's stride need not
-// keep floats aligned, hence the byte copies. `prefix` names the def in messages ("def->").
-inline std::vector<Vec3> read_vertices(const float* vertices, uint32_t count, uint32_t stride, const char* prefix) {
-    if (!vertices) fail(ErrorCode::InvalidArgument, prefix, "vertices is null");
-    if (count == 0) fail(ErrorCode::InvalidArgument, prefix, "vertex_count is 0");
+// Copies `count` positions that start every `stride` bytes (0 = packed), the fields `vertices`,
+// `vertex_count` and `vertex_stride` of a def (a failure names them: fail_field). The host's stride
+// need not keep floats aligned, hence the byte copies.
+inline std::vector<Vec3> read_vertices(const float* vertices, uint32_t count, uint32_t stride) {
+    if (!vertices) fail_field(ErrorCode::InvalidArgument, "vertices is null");
+    if (count == 0) fail_field(ErrorCode::InvalidArgument, "vertex_count is 0");
     const uint32_t step = stride == 0 ? 3 * sizeof(float) : stride;
     if (step < 3 * sizeof(float))
-        fail(ErrorCode::InvalidArgument, prefix, "vertex_stride is ", stride, " (at least 12 bytes, or 0)");
+        fail_field(ErrorCode::InvalidArgument, "vertex_stride is ", stride, " (at least 12 bytes, or 0)");
     std::vector<Vec3> out(count);
     const auto* bytes = reinterpret_cast<const unsigned char*>(vertices);
     for (uint32_t i = 0; i < count; ++i) {

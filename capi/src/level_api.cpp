@@ -6,6 +6,7 @@
 #include "entry_guard.h"
 #include "host_input.h"
 #include "io/obj_reader.h"
+#include "queries.h"
 #include "world.h"
 
 using nl::ErrorCode;
@@ -23,9 +24,9 @@ static_assert(NL_COORDINATE_LIMIT == nl::kCoordinateLimit, "header and core disa
 using nl::capi::to_handle;
 using nl::capi::to_id;
 
-nl::Transform read_transform(const float* m, const char* name) {
+nl::Transform read_transform(const float* m) {
     if (!m) return nl::Transform::Identity();
-    return nl::validate_transform(Eigen::Map<const Eigen::Matrix4f>(m), name);
+    return nl::validate_transform(Eigen::Map<const Eigen::Matrix4f>(m), "transform");
 }
 
 nl_mesh_def read_def(const nl_mesh_def& def) {
@@ -34,22 +35,23 @@ nl_mesh_def read_def(const nl_mesh_def& def) {
 
 nl::TriangleMesh read_def_geometry(const nl_mesh_def& def) {
     nl::TriangleMesh mesh;
-    mesh.vertices = nl::capi::read_vertices(def.vertices, def.vertex_count, def.vertex_stride, "def->");
-    require(def.indices, "def->indices");
-    if (def.triangle_count == 0) fail(ErrorCode::InvalidArgument, "def->triangle_count is 0");
+    mesh.vertices = nl::capi::read_vertices(def.vertices, def.vertex_count, def.vertex_stride);
+    nl::capi::require_field(def.indices, "indices");
+    if (def.triangle_count == 0) nl::fail_field(ErrorCode::InvalidArgument, "triangle_count is 0");
     mesh.triangles.resize(def.triangle_count);
     std::memcpy(mesh.triangles.data(), def.indices, size_t(def.triangle_count) * 3 * sizeof(uint32_t));
     return mesh;
 }
 
-nl_mesh_id add_mesh(nl_world& world, const nl::TriangleMesh& mesh, const nl_mesh_def& def, const char* function) {
-    const nl::Transform transform = read_transform(def.transform, "def->transform");
-    const nl::Handle h = world.level->add_mesh(mesh, transform, def.flags, def.user_data, "def->");
-    const nl::MeshInfo info = world.level->info(h);
+nl_mesh_id add_mesh(nl::World& world, const nl::TriangleMesh& mesh, const nl_mesh_def& def, const char* function) {
+    const nl::Handle h = nl::naming_fields("def->", [&] {
+        return world.level().add_mesh(mesh, read_transform(def.transform), def.flags, def.user_data);
+    });
+    const nl::MeshInfo info = world.level().info(h);
     if (info.degenerate_triangle_count > 0) {
-        nl::capi::log(&world, NL_LOG_WARNING, NL_STATUS_SUCCESS,
-                      nl::concat(function, ": skipped ", info.degenerate_triangle_count, " degenerate triangles of ",
-                                 info.degenerate_triangle_count + info.triangle_count));
+        world.logger().log(nl::LogLevel::Warning,
+                           nl::concat(function, ": skipped ", info.degenerate_triangle_count, " degenerate triangles of ",
+                                      info.degenerate_triangle_count + info.triangle_count));
     }
     return to_id<nl_mesh_id>(h);
 }
@@ -90,6 +92,36 @@ nl::Vec3 read_direction(const float* p, uint32_t index) {
 
 }  // namespace
 
+namespace nl::capi {
+
+void cast_rays(const World& world, const nl_ray* rays, uint32_t count, nl_ray_hit* out_hits) {
+    if (count == 0) return;
+    require(rays, "rays");
+    require(out_hits, "out_hits");
+    std::vector<Ray> batch(count);
+    for (uint32_t i = 0; i < count; ++i) {
+        const nl_ray& r = rays[i];
+        if (!(r.max_distance > 0.0f))
+            fail(ErrorCode::InvalidArgument, "rays[", i, "].max_distance is ", r.max_distance, " (must be > 0)");
+        batch[i] = Ray{read_point(r.origin, "rays", i, "origin"), read_direction(r.direction, i), r.max_distance};
+    }
+    std::vector<RayHit> hits(count);
+    world.level().cast_rays(batch.data(), count, hits.data());
+    for (uint32_t i = 0; i < count; ++i) write(out_hits[i], hits[i]);
+}
+
+void segments_blocked(const World& world, const nl_segment* segments, uint32_t count, uint8_t* out_blocked) {
+    if (count == 0) return;
+    require(segments, "segments");
+    require(out_blocked, "out_blocked");
+    std::vector<Segment> batch(count);
+    for (uint32_t i = 0; i < count; ++i)
+        batch[i] = Segment{read_point(segments[i].from, "segments", i, "from"), read_point(segments[i].to, "segments", i, "to")};
+    world.level().segments_blocked(batch.data(), count, out_blocked);
+}
+
+}  // namespace nl::capi
+
 extern "C" {
 
 NL_API nl_mesh_def nl_default_mesh_def(void) {
@@ -100,18 +132,18 @@ NL_API nl_mesh_def nl_default_mesh_def(void) {
 
 NL_API nl_status nl_mesh_add(nl_world* world, const nl_mesh_def* def, nl_mesh_id* out_id) {
     return guarded("nl_mesh_add", world, [&] {
-        nl_world& w = deref(world);
+        nl::World& w = deref(world);
         require(def, "def");
         require(out_id, "out_id");
         const nl_mesh_def settings = read_def(*def);
-        *out_id = add_mesh(w, read_def_geometry(settings), settings, "nl_mesh_add");
+        *out_id = add_mesh(w, nl::naming_fields("def->", [&] { return read_def_geometry(settings); }), settings, "nl_mesh_add");
     });
 }
 
 NL_API nl_status nl_mesh_add_obj_file(nl_world* world, const char* path, const nl_mesh_def* def,
                                       nl_mesh_id* out_id) {
     return guarded("nl_mesh_add_obj_file", world, [&] {
-        nl_world& w = deref(world);
+        nl::World& w = deref(world);
         require(path, "path");
         require(out_id, "out_id");
         const nl_mesh_def options = obj_options(def);
@@ -122,7 +154,7 @@ NL_API nl_status nl_mesh_add_obj_file(nl_world* world, const char* path, const n
 NL_API nl_status nl_mesh_add_obj_memory(nl_world* world, const char* data, size_t length,
                                         const nl_mesh_def* def, nl_mesh_id* out_id) {
     return guarded("nl_mesh_add_obj_memory", world, [&] {
-        nl_world& w = deref(world);
+        nl::World& w = deref(world);
         if (length > 0) require(data, "data");
         require(out_id, "out_id");
         const nl_mesh_def options = obj_options(def);
@@ -131,28 +163,28 @@ NL_API nl_status nl_mesh_add_obj_memory(nl_world* world, const char* data, size_
 }
 
 NL_API nl_status nl_mesh_remove(nl_world* world, nl_mesh_id mesh) {
-    return guarded("nl_mesh_remove", world, [&] { deref(world).level->remove_mesh(to_handle(mesh)); });
+    return guarded("nl_mesh_remove", world, [&] { deref(world).level().remove_mesh(to_handle(mesh)); });
 }
 
 NL_API nl_status nl_mesh_set_transform(nl_world* world, nl_mesh_id mesh, const float* transform) {
     return guarded("nl_mesh_set_transform", world, [&] {
-        nl_world& w = deref(world);
+        nl::World& w = deref(world);
         require(transform, "transform");
-        w.level->set_transform(to_handle(mesh), read_transform(transform, "transform"));
+        w.level().set_transform(to_handle(mesh), read_transform(transform));
     });
 }
 
 NL_API int32_t nl_mesh_is_valid(const nl_world* world, nl_mesh_id mesh) {
     int32_t valid = 0;
-    guarded("nl_mesh_is_valid", world, [&] { valid = deref(world).level->contains(to_handle(mesh)) ? 1 : 0; });
+    guarded("nl_mesh_is_valid", world, [&] { valid = deref(world).level().contains(to_handle(mesh)) ? 1 : 0; });
     return valid;
 }
 
 NL_API nl_status nl_mesh_get_info(const nl_world* world, nl_mesh_id mesh, nl_mesh_info* out_info) {
     return guarded("nl_mesh_get_info", world, [&] {
-        const nl_world& w = deref(world);
+        const nl::World& w = deref(world);
         require(out_info, "out_info");
-        const nl::MeshInfo info = w.level->info(to_handle(mesh));
+        const nl::MeshInfo info = w.level().info(to_handle(mesh));
         nl_mesh_info out{};
         out.size = sizeof(nl_mesh_info);
         out.vertex_count = info.vertex_count;
@@ -170,43 +202,18 @@ NL_API nl_status nl_mesh_get_info(const nl_world* world, nl_mesh_id mesh, nl_mes
 NL_API nl_status nl_world_get_meshes(const nl_world* world, nl_mesh_id* out_ids, uint32_t capacity,
                                      uint32_t* out_count) {
     return guarded("nl_world_get_meshes", world, [&] {
-        nl::capi::list_into(deref(world).level->meshes(), out_ids, capacity, out_count, "out_ids", to_id<nl_mesh_id>);
+        nl::capi::list_into(deref(world).level().meshes(), out_ids, capacity, out_count, "out_ids", to_id<nl_mesh_id>);
     });
 }
 
 NL_API nl_status nl_world_cast_rays(nl_world* world, const nl_ray* rays, uint32_t count, nl_ray_hit* out_hits) {
-    return guarded("nl_world_cast_rays", world, [&] {
-        nl_world& w = deref(world);
-        if (count == 0) return;
-        require(rays, "rays");
-        require(out_hits, "out_hits");
-        std::vector<nl::Ray> batch(count);
-        for (uint32_t i = 0; i < count; ++i) {
-            const nl_ray& r = rays[i];
-            if (!(r.max_distance > 0.0f))
-                fail(ErrorCode::InvalidArgument, "rays[", i, "].max_distance is ", r.max_distance, " (must be > 0)");
-            batch[i] = nl::Ray{read_point(r.origin, "rays", i, "origin"), read_direction(r.direction, i), r.max_distance};
-        }
-        std::vector<nl::RayHit> hits(count);
-        w.level->cast_rays(batch.data(), count, hits.data());
-        for (uint32_t i = 0; i < count; ++i) write(out_hits[i], hits[i]);
-    });
+    return guarded("nl_world_cast_rays", world, [&] { nl::capi::cast_rays(deref(world), rays, count, out_hits); });
 }
 
 NL_API nl_status nl_world_segments_blocked(nl_world* world, const nl_segment* segments, uint32_t count,
                                            uint8_t* out_blocked) {
-    return guarded("nl_world_segments_blocked", world, [&] {
-        nl_world& w = deref(world);
-        if (count == 0) return;
-        require(segments, "segments");
-        require(out_blocked, "out_blocked");
-        std::vector<nl::Segment> batch(count);
-        for (uint32_t i = 0; i < count; ++i) {
-            batch[i] = nl::Segment{read_point(segments[i].from, "segments", i, "from"),
-                                   read_point(segments[i].to, "segments", i, "to")};
-        }
-        w.level->segments_blocked(batch.data(), count, out_blocked);
-    });
+    return guarded("nl_world_segments_blocked", world,
+                   [&] { nl::capi::segments_blocked(deref(world), segments, count, out_blocked); });
 }
 
 }  // extern "C"

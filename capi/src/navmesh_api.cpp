@@ -3,7 +3,9 @@
 
 #include "entry_guard.h"
 #include "host_input.h"
+#include "mapping.h"
 #include "navmesh/navmesh_builder.h"
+#include "queries.h"
 #include "world.h"
 
 using nl::ErrorCode;
@@ -23,16 +25,23 @@ static_assert(NL_NO_POLYGON == nl::kNoPolygon, "header and core disagree");
 using nl::capi::to_handle;
 using nl::capi::to_id;
 
-nl::AgentType to_agent(const nl_agent_type& a) { return nl::AgentType{a.radius, a.height, a.max_climb, a.max_slope}; }
-nl_agent_type to_c(const nl::AgentType& a) { return nl_agent_type{a.radius, a.height, a.max_climb, a.max_slope}; }
+using nl::capi::to_c;
 
 void copy_point(float* out, const nl::Vec3& v) { Eigen::Map<nl::Vec3>{out} = v; }
 
-nl::NavMeshInput read_navmesh_def(const nl_navmesh_def& def) {
-    nl::NavMeshInput in;
-    in.vertices = nl::capi::read_vertices(def.vertices, def.vertex_count, def.vertex_stride, "def->");
-    require(def.indices, "def->indices");
-    if (def.polygon_count == 0) fail(ErrorCode::InvalidArgument, "def->polygon_count is 0");
+}  // namespace
+
+namespace nl::capi {
+
+AgentType to_core(const nl_agent_type& a) { return AgentType{a.radius, a.height, a.max_climb, a.max_slope}; }
+nl_agent_type to_c(const AgentType& a) { return nl_agent_type{a.radius, a.height, a.max_climb, a.max_slope}; }
+
+NavMeshInput navmesh_input_from_def(const nl_navmesh_def& given) {
+    const nl_navmesh_def def = read_growable(given, nl_default_navmesh_def(), kNavMeshDefFirstSize, "def");
+    NavMeshInput in;
+    in.vertices = read_vertices(def.vertices, def.vertex_count, def.vertex_stride);
+    require_field(def.indices, "indices");
+    if (def.polygon_count == 0) fail_field(ErrorCode::InvalidArgument, "polygon_count is 0");
     size_t index_count = size_t(def.polygon_count) * 3;
     if (def.polygon_vertex_counts) {
         in.polygon_sizes.assign(def.polygon_vertex_counts, def.polygon_vertex_counts + def.polygon_count);
@@ -41,48 +50,91 @@ nl::NavMeshInput read_navmesh_def(const nl_navmesh_def& def) {
         for (size_t p = 0; p < in.polygon_sizes.size(); ++p) {
             const uint32_t n = in.polygon_sizes[p];
             if (n < 3 || n > kMaxCorners)
-                fail(ErrorCode::InvalidArgument, "def->polygon_vertex_counts[", p, "] = ", n, " (must be 3..", kMaxCorners, ")");
+                fail_field(ErrorCode::InvalidArgument, "polygon_vertex_counts[", p, "] = ", n, " (must be 3..", kMaxCorners, ")");
             index_count += n;
         }
     }
     in.indices.assign(def.indices, def.indices + index_count);
     if (def.areas) in.areas.assign(def.areas, def.areas + def.polygon_count);
     in.weld_tolerance = def.weld_tolerance;
-    in.agent = to_agent(def.agent);
+    in.agent = to_core(def.agent);
 
     const bool any_detail = def.detail_vertices || def.detail_triangles || def.detail_triangle_starts ||
                             def.detail_vertex_count || def.detail_triangle_count;
     if (any_detail) {
-        require(def.detail_vertices, "def->detail_vertices");
-        require(def.detail_triangles, "def->detail_triangles");
-        require(def.detail_triangle_starts, "def->detail_triangle_starts");
+        require_field(def.detail_vertices, "detail_vertices");
+        require_field(def.detail_triangles, "detail_triangles");
+        require_field(def.detail_triangle_starts, "detail_triangle_starts");
         if (def.detail_vertex_count == 0 || def.detail_triangle_count == 0)
-            fail(ErrorCode::InvalidArgument, "def->detail_vertex_count and def->detail_triangle_count must be > 0 with detail");
+            fail_field(ErrorCode::InvalidArgument, "detail_vertex_count and detail_triangle_count must be > 0 with detail");
         in.detail_starts.assign(def.detail_triangle_starts, def.detail_triangle_starts + def.polygon_count + 1);
         in.detail_vertices.resize(def.detail_vertex_count);
         for (uint32_t i = 0; i < def.detail_vertex_count; ++i)
-            in.detail_vertices[i] = Eigen::Map<const nl::Vec3>(def.detail_vertices + 3 * size_t(i));
+            in.detail_vertices[i] = Eigen::Map<const Vec3>(def.detail_vertices + 3 * size_t(i));
         in.detail_indices.assign(def.detail_triangles, def.detail_triangles + size_t(def.detail_triangle_count) * 3);
     }
     return in;
 }
 
-}  // namespace
+void navmesh_get_info(const World& world, nl_navmesh_id navmesh, nl_navmesh_info* out_info) {
+    const auto mesh = world.navmeshes().navmesh(to_handle(navmesh));
+    require(out_info, "out_info");
+    nl_navmesh_info info{};
+    info.size = sizeof info;
+    info.vertex_count = mesh->vertex_count();
+    info.polygon_count = mesh->polygon_count();
+    info.portal_count = mesh->portal_count();
+    info.boundary_edge_count = mesh->boundary_edge_count();
+    info.welded_vertex_count = mesh->repairs().welded_vertices;
+    info.flipped_polygon_count = mesh->repairs().flipped_polygons;
+    info.dropped_polygon_count = mesh->repairs().dropped_polygons;
+    info.non_manifold_edge_count = mesh->repairs().non_manifold_edges;
+    info.agent = to_c(mesh->agent());
+    copy_point(info.bounds_min, mesh->bounds().min);
+    copy_point(info.bounds_max, mesh->bounds().max);
+    write_growable(out_info, info, kNavMeshInfoFirstSize, "out_info");
+}
 
-namespace nl::capi {
+void navmesh_get_boundary_edges(const World& world, nl_navmesh_id navmesh, nl_boundary_edge* out_edges, uint32_t capacity,
+                                uint32_t* out_count) {
+    const auto mesh = world.navmeshes().navmesh(to_handle(navmesh));
+    list_into(mesh->boundary_edges(), out_edges, capacity, out_count, "out_edges", [](const BoundaryEdge& e) {
+        nl_boundary_edge out{};
+        copy_point(out.start, e.start);
+        copy_point(out.end, e.end);
+        copy_point(out.outward, e.outward);
+        copy_point(out.normal, e.normal);
+        out.polygon = e.polygon;
+        out.edge = e.edge;
+        return out;
+    });
+}
 
-// Shared by nl_navmesh_add and the builders' sink: both hand over an nl_navmesh_def.
-std::shared_ptr<const NavMesh> navmesh_from_def(const nl_world& world, const nl_navmesh_def& def, const char* function) {
-    const nl_navmesh_def settings = read_growable(def, nl_default_navmesh_def(), kNavMeshDefFirstSize, "def");
-    std::shared_ptr<const nl::NavMesh> navmesh = nl::build_navmesh(read_navmesh_def(settings), "def->");
-    const nl::NavMeshRepairs& r = navmesh->repairs();
-    if (r.flipped_polygons || r.dropped_polygons || r.non_manifold_edges) {
-        log(&world, NL_LOG_WARNING, NL_STATUS_SUCCESS,
-            nl::concat(function, ": repaired the navmesh: ", r.flipped_polygons, " polygons turned to face up, ",
-                       r.dropped_polygons, " degenerate polygons dropped, ", r.non_manifold_edges,
-                       " edges shared by 3+ polygons left unconnected"));
+void navmesh_find_nearest(const World& world, nl_navmesh_id navmesh, const float* points, uint32_t count,
+                          const float* half_extents, nl_nav_point* out) {
+    const auto mesh = world.navmeshes().navmesh(to_handle(navmesh));
+    require(half_extents, "half_extents");
+    const Vec3 extents(half_extents[0], half_extents[1], half_extents[2]);
+    if (!(extents.array() > 0.0f).all() || !within_coordinate_limit(extents))
+        fail(ErrorCode::InvalidArgument, "half_extents must be positive and finite");
+    if (count == 0) return;
+    require(points, "points");
+    require(out, "out");
+    for (uint32_t i = 0; i < count; ++i) {
+        if (!within_coordinate_limit(Eigen::Map<const Vec3>(points + 3 * size_t(i))))
+            fail(ErrorCode::InvalidArgument, "points[", i, "] is not finite or beyond the coordinate limit");
     }
-    return navmesh;
+    world.tasks().parallel_for(count, 256, [&](uint32_t begin, uint32_t end) {
+        for (uint32_t i = begin; i < end; ++i) {
+            const NavPoint p = mesh->find_nearest(Eigen::Map<const Vec3>(points + 3 * size_t(i)), extents);
+            nl_nav_point r{};
+            r.found = p.found ? 1 : 0;
+            r.polygon = p.polygon;
+            r.distance = p.distance;
+            copy_point(r.point, p.point);
+            out[i] = r;
+        }
+    });
 }
 
 }  // namespace nl::capi
@@ -101,54 +153,33 @@ NL_API nl_navmesh_def nl_default_navmesh_def(void) {
 
 NL_API nl_status nl_navmesh_add(nl_world* world, const nl_navmesh_def* def, nl_navmesh_id* out_id) {
     return guarded("nl_navmesh_add", world, [&] {
-        nl_world& w = deref(world);
+        nl::World& w = deref(world);
         require(def, "def");
         require(out_id, "out_id");
-        *out_id = to_id<nl_navmesh_id>(w.navmeshes->add(nl::capi::navmesh_from_def(w, *def, "nl_navmesh_add")));
+        *out_id = to_id<nl_navmesh_id>(nl::naming_fields("def->", [&] { return w.add_navmesh(nl::capi::navmesh_input_from_def(*def)); }));
     });
 }
 
 NL_API nl_status nl_navmesh_remove(nl_world* world, nl_navmesh_id navmesh) {
     return guarded("nl_navmesh_remove", world, [&] {
-        nl_world& w = deref(world);
-        w.navmeshes->remove(to_handle(navmesh));
-        w.links->remove_navmesh(to_handle(navmesh));
-        w.generations->remove(to_handle(navmesh));
-        w.path_graphs->forget(to_handle(navmesh));
+        deref(world).navmeshes().remove(to_handle(navmesh));
     });
 }
 
 NL_API int32_t nl_navmesh_is_valid(const nl_world* world, nl_navmesh_id navmesh) {
     int32_t valid = 0;
-    guarded("nl_navmesh_is_valid", world, [&] { valid = deref(world).navmeshes->contains(to_handle(navmesh)) ? 1 : 0; });
+    guarded("nl_navmesh_is_valid", world, [&] { valid = deref(world).navmeshes().contains(to_handle(navmesh)) ? 1 : 0; });
     return valid;
 }
 
 NL_API nl_status nl_navmesh_get_info(const nl_world* world, nl_navmesh_id navmesh, nl_navmesh_info* out_info) {
-    return guarded("nl_navmesh_get_info", world, [&] {
-        const auto mesh = deref(world).navmeshes->get(to_handle(navmesh));
-        require(out_info, "out_info");
-        nl_navmesh_info info{};
-        info.size = sizeof info;
-        info.vertex_count = mesh->vertex_count();
-        info.polygon_count = mesh->polygon_count();
-        info.portal_count = mesh->portal_count();
-        info.boundary_edge_count = mesh->boundary_edge_count();
-        info.welded_vertex_count = mesh->repairs().welded_vertices;
-        info.flipped_polygon_count = mesh->repairs().flipped_polygons;
-        info.dropped_polygon_count = mesh->repairs().dropped_polygons;
-        info.non_manifold_edge_count = mesh->repairs().non_manifold_edges;
-        info.agent = to_c(mesh->agent());
-        copy_point(info.bounds_min, mesh->bounds().min);
-        copy_point(info.bounds_max, mesh->bounds().max);
-        nl::capi::write_growable(out_info, info, kNavMeshInfoFirstSize, "out_info");
-    });
+    return guarded("nl_navmesh_get_info", world, [&] { nl::capi::navmesh_get_info(deref(world), navmesh, out_info); });
 }
 
 NL_API nl_status nl_navmesh_get_vertices(const nl_world* world, nl_navmesh_id navmesh, float* out_xyz,
                                          uint32_t capacity, uint32_t* out_count) {
     return guarded("nl_navmesh_get_vertices", world, [&] {
-        const auto mesh = deref(world).navmeshes->get(to_handle(navmesh));
+        const auto mesh = deref(world).navmeshes().navmesh(to_handle(navmesh));
         nl::capi::list_into(mesh->vertex_count(), out_xyz, capacity, out_count, "out_xyz", [&] {
             for (uint32_t i = 0; i < mesh->vertex_count(); ++i) copy_point(out_xyz + 3 * size_t(i), mesh->vertex(i));
         });
@@ -158,7 +189,7 @@ NL_API nl_status nl_navmesh_get_vertices(const nl_world* world, nl_navmesh_id na
 NL_API nl_status nl_navmesh_get_polygon(const nl_world* world, nl_navmesh_id navmesh, uint32_t polygon,
                                         nl_nav_polygon* out_polygon) {
     return guarded("nl_navmesh_get_polygon", world, [&] {
-        const auto mesh = deref(world).navmeshes->get(to_handle(navmesh));
+        const auto mesh = deref(world).navmeshes().navmesh(to_handle(navmesh));
         require(out_polygon, "out_polygon");
         if (polygon >= mesh->polygon_count())
             fail(ErrorCode::InvalidArgument, "polygon ", polygon, " is out of range (polygon_count = ", mesh->polygon_count(), ")");
@@ -179,54 +210,21 @@ NL_API nl_status nl_navmesh_get_polygon(const nl_world* world, nl_navmesh_id nav
 NL_API nl_status nl_navmesh_get_boundary_edges(const nl_world* world, nl_navmesh_id navmesh,
                                                nl_boundary_edge* out_edges, uint32_t capacity, uint32_t* out_count) {
     return guarded("nl_navmesh_get_boundary_edges", world, [&] {
-        const auto mesh = deref(world).navmeshes->get(to_handle(navmesh));
-        nl::capi::list_into(mesh->boundary_edges(), out_edges, capacity, out_count, "out_edges", [](const nl::BoundaryEdge& e) {
-            nl_boundary_edge out{};
-            copy_point(out.start, e.start);
-            copy_point(out.end, e.end);
-            copy_point(out.outward, e.outward);
-            copy_point(out.normal, e.normal);
-            out.polygon = e.polygon;
-            out.edge = e.edge;
-            return out;
-        });
+        nl::capi::navmesh_get_boundary_edges(deref(world), navmesh, out_edges, capacity, out_count);
     });
 }
 
 NL_API nl_status nl_navmesh_find_nearest(const nl_world* world, nl_navmesh_id navmesh, const float* points,
                                          uint32_t count, const float* half_extents, nl_nav_point* out) {
     return guarded("nl_navmesh_find_nearest", world, [&] {
-        const nl_world& w = deref(world);
-        const auto mesh = w.navmeshes->get(to_handle(navmesh));
-        require(half_extents, "half_extents");
-        const nl::Vec3 extents(half_extents[0], half_extents[1], half_extents[2]);
-        if (!(extents.array() > 0.0f).all() || !nl::within_coordinate_limit(extents))
-            fail(ErrorCode::InvalidArgument, "half_extents must be positive and finite");
-        if (count == 0) return;
-        require(points, "points");
-        require(out, "out");
-        for (uint32_t i = 0; i < count; ++i) {
-            if (!nl::within_coordinate_limit(Eigen::Map<const nl::Vec3>(points + 3 * size_t(i))))
-                fail(ErrorCode::InvalidArgument, "points[", i, "] is not finite or beyond the coordinate limit");
-        }
-        w.tasks->parallel_for(count, 256, [&](uint32_t begin, uint32_t end) {
-            for (uint32_t i = begin; i < end; ++i) {
-                const nl::NavPoint p = mesh->find_nearest(Eigen::Map<const nl::Vec3>(points + 3 * size_t(i)), extents);
-                nl_nav_point r{};
-                r.found = p.found ? 1 : 0;
-                r.polygon = p.polygon;
-                r.distance = p.distance;
-                copy_point(r.point, p.point);
-                out[i] = r;
-            }
-        });
+        nl::capi::navmesh_find_nearest(deref(world), navmesh, points, count, half_extents, out);
     });
 }
 
 NL_API nl_status nl_world_get_navmeshes(const nl_world* world, nl_navmesh_id* out_ids, uint32_t capacity,
                                         uint32_t* out_count) {
     return guarded("nl_world_get_navmeshes", world, [&] {
-        nl::capi::list_into(deref(world).navmeshes->handles(), out_ids, capacity, out_count, "out_ids", to_id<nl_navmesh_id>);
+        nl::capi::list_into(deref(world).navmeshes().handles(), out_ids, capacity, out_count, "out_ids", to_id<nl_navmesh_id>);
     });
 }
 

@@ -56,16 +56,12 @@ struct Request {
 };
 
 // Validates a request and takes the snapshot it will read: the navmesh and its links as they are now.
-Request read_request(nl_world& w, const nl_path_request_def* in) {
+Request read_request(const nl::World& w, const nl_path_request_def* in) {
     require(in, "def");
     Request r;
     r.def = nl::capi::read_growable(*in, nl_default_path_request_def(), kRequestFirstSize, "def");
     r.query = read_query(r.def);
-    const nl::Handle navmesh = to_handle(r.def.navmesh);
-    r.graph = w.path_graphs->get(navmesh, w.navmeshes->get(navmesh), w.links->snapshot(navmesh));
-    // nl_navmesh_remove removes the navmesh, then its cached graph: if it ran while this graph was
-    // being built, the graph may have been cached after that; drop it, or it stays till the end.
-    if (!w.navmeshes->contains(navmesh)) w.path_graphs->forget(navmesh);
+    r.graph = w.navmeshes().path_graph(to_handle(r.def.navmesh));
     return r;
 }
 
@@ -154,7 +150,7 @@ NL_API nl_status nl_path_find(nl_world* world, const nl_path_request_def* def, n
 NL_API nl_status nl_path_request(nl_world* world, const nl_path_request_def* def, nl_path_ticket* out_ticket) {
     return guarded("nl_path_request", world, [&] {
         require(out_ticket, "out_ticket");
-        nl_world& w = deref(world);
+        nl::World& w = deref(world);
         Request request = read_request(w, def);
         nl::PathCallback callback;
         if (nl_path_callback* const c_callback = request.def.callback) {
@@ -163,7 +159,7 @@ NL_API nl_status nl_path_request(nl_world* world, const nl_path_request_def* def
                 c_callback(user, to_id<nl_path_ticket>(ticket), static_cast<nl_path_outcome>(outcome));
             };
         }
-        const nl::Handle ticket = w.paths->submit(std::move(request.graph), std::move(request.query), std::move(callback));
+        const nl::Handle ticket = w.paths().submit(std::move(request.graph), std::move(request.query), std::move(callback));
         *out_ticket = to_id<nl_path_ticket>(ticket);
     });
 }
@@ -171,7 +167,7 @@ NL_API nl_status nl_path_request(nl_world* world, const nl_path_request_def* def
 NL_API nl_status nl_path_poll(const nl_world* world, nl_path_ticket ticket, nl_path_outcome* out_outcome) {
     return guarded("nl_path_poll", world, [&] {
         require(out_outcome, "out_outcome");
-        *out_outcome = static_cast<nl_path_outcome>(deref(world).paths->poll(to_handle(ticket)));
+        *out_outcome = static_cast<nl_path_outcome>(deref(world).paths().poll(to_handle(ticket)));
     });
 }
 
@@ -181,7 +177,7 @@ NL_API nl_status nl_path_get_result(const nl_world* world, nl_path_ticket ticket
     const nl_status status = guarded("nl_path_get_result", world, [&] {
         require(out_result, "out_result");
         require(out_count, "out_count");
-        finished = deref(world).paths->read(to_handle(ticket), [&](const nl::PathResult& result) {
+        finished = deref(world).paths().read(to_handle(ticket), [&](const nl::PathResult& result) {
             partial = result.outcome == nl::PathOutcome::Partial;
             write_result(result, out_result, out_points, capacity, out_count);
         });
@@ -191,18 +187,18 @@ NL_API nl_status nl_path_get_result(const nl_world* world, nl_path_ticket ticket
 }
 
 NL_API nl_status nl_path_cancel(nl_world* world, nl_path_ticket ticket) {
-    return guarded("nl_path_cancel", world, [&] { deref(world).paths->cancel(to_handle(ticket)); });
+    return guarded("nl_path_cancel", world, [&] { deref(world).paths().cancel(to_handle(ticket)); });
 }
 
 NL_API nl_status nl_path_release(nl_world* world, nl_path_ticket ticket) {
-    return guarded("nl_path_release", world, [&] { deref(world).paths->release(to_handle(ticket)); });
+    return guarded("nl_path_release", world, [&] { deref(world).paths().release(to_handle(ticket)); });
 }
 
 NL_API nl_status nl_path_process(nl_world* world, uint32_t max_requests, double max_milliseconds,
                                  uint32_t* out_processed) {
     return guarded("nl_path_process", world, [&] {
         if (std::isnan(max_milliseconds)) fail(ErrorCode::InvalidArgument, "max_milliseconds is NaN");
-        const uint32_t processed = deref(world).paths->process(max_requests, max_milliseconds);
+        const uint32_t processed = deref(world).paths().process(max_requests, max_milliseconds);
         if (out_processed) *out_processed = processed;
     });
 }
@@ -210,7 +206,7 @@ NL_API nl_status nl_path_process(nl_world* world, uint32_t max_requests, double 
 NL_API nl_status nl_path_get_queue_stats(const nl_world* world, nl_path_queue_stats* out_stats) {
     return guarded("nl_path_get_queue_stats", world, [&] {
         require(out_stats, "out_stats");
-        const nl::PathQueueStats s = deref(world).paths->stats();
+        const nl::PathQueueStats s = deref(world).paths().stats();
         nl_path_queue_stats c{};
         c.size = sizeof(c);
         c.workers = s.workers;

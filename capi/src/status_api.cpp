@@ -56,14 +56,8 @@ nl_status record(const char* function, const nl_world* world, nl_status status, 
     } catch (...) {
         last.message.clear();  // keep the status even when the message cannot be stored
     }
-    log(world, NL_LOG_ERROR, status, last.message);
+    if (world && world->core) world->core->logger().log(LogLevel::Error, last.message, to_error_code(status));
     return status;
-}
-
-void log(const nl_world* world, nl_log_level level, nl_status status, const std::string& message) noexcept {
-    if (world && world->def.log_fn && level <= world->def.log_level) {
-        world->def.log_fn(world->def.log_user, level, status, message.c_str());
-    }
 }
 
 }  // namespace nl::capi

@@ -105,3 +105,10 @@ nl_status plugin_entry(uint32_t host_abi_version, const nl_plugin_host* host, nl
 }
 
 }  // namespace nl::recast
+
+extern "C" {
+
+// Declared in navlink/recast.h: part of the library's ABI, defined with the builder it describes.
+NL_API nl_recast_settings nl_default_recast_settings(void) { return nl::recast::default_settings(); }
+
+}  // extern "C"

@@ -223,7 +223,7 @@ void apply_settings_json(std::string_view text, LinkSettings& s) {
         }
         if (!known) fail(ErrorCode::InvalidArgument, "settings: ", quoted_excerpt(key), " is not a link generation setting");
     }
-    validate(s, "settings.");
+    naming_fields("settings.", [&] { validate(s); });
 }
 
 }  // namespace nl

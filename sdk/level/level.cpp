@@ -96,10 +96,10 @@ void check_placement(const Aabb& world_bounds) {
 
 }  // namespace
 
-Handle Level::add_mesh(const TriangleMesh& input, const Transform& transform, uint32_t flags,
-                       uint64_t user_data, const char* field_prefix) {
-    if (flags & ~kMeshKnownFlags) fail(ErrorCode::InvalidArgument, "flags has unknown bits 0x", std::hex, flags & ~kMeshKnownFlags);
-    ValidatedTriangles valid = validate_mesh(input, field_prefix);
+Handle Level::add_mesh(const TriangleMesh& input, const Transform& transform, uint32_t flags, uint64_t user_data) {
+    if (flags & ~kMeshKnownFlags)
+        fail_field(ErrorCode::InvalidArgument, "flags has unknown bits 0x", std::hex, flags & ~kMeshKnownFlags);
+    ValidatedTriangles valid = validate_mesh(input);
 
     Mesh mesh;
     mesh.object.vertices = input.vertices;

@@ -90,10 +90,9 @@ public:
     Level(const Level&) = delete;
     Level& operator=(const Level&) = delete;
 
-    // Edits: each validates first and changes nothing when it throws.
-    // `field_prefix` names the input's fields in error messages ("def->").
-    Handle add_mesh(const TriangleMesh& mesh, const Transform& transform, uint32_t flags, uint64_t user_data,
-                    const char* field_prefix = "");
+    // Edits: each validates first and changes nothing when it throws (a bad field is named as
+    // validate_mesh names it).
+    Handle add_mesh(const TriangleMesh& mesh, const Transform& transform, uint32_t flags, uint64_t user_data);
     void remove_mesh(Handle mesh);
     void set_transform(Handle mesh, const Transform& transform);
 

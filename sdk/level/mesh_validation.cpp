@@ -16,9 +16,9 @@ bool is_degenerate(const Vec3& a, const Vec3& b, const Vec3& c) {
     return ab.cross(-ca).norm() <= 1e-7f * longest_sq || longest_sq == 0.0f;
 }
 
-ValidatedTriangles validate_mesh(const TriangleMesh& mesh, const char* prefix) {
-    if (mesh.vertices.empty()) fail(ErrorCode::InvalidArgument, prefix, "vertex_count is 0");
-    if (mesh.triangles.empty()) fail(ErrorCode::InvalidArgument, prefix, "triangle_count is 0");
+ValidatedTriangles validate_mesh(const TriangleMesh& mesh) {
+    if (mesh.vertices.empty()) fail_field(ErrorCode::InvalidArgument, "vertex_count is 0");
+    if (mesh.triangles.empty()) fail_field(ErrorCode::InvalidArgument, "triangle_count is 0");
     if (mesh.vertices.size() > UINT32_MAX || mesh.triangles.size() > UINT32_MAX / 3)
         fail(ErrorCode::InvalidArgument, "mesh is larger than 2^32 vertices or indices");
 
@@ -27,9 +27,9 @@ ValidatedTriangles validate_mesh(const TriangleMesh& mesh, const char* prefix) {
         for (int k = 0; k < 3; ++k) {
             const float value = mesh.vertices[i][k];
             if (!std::isfinite(value))
-                fail(ErrorCode::InvalidArgument, prefix, "vertices[", i, "].", axis[k], " is not finite (", value, ")");
+                fail_field(ErrorCode::InvalidArgument, "vertices[", i, "].", axis[k], " is not finite (", value, ")");
             if (std::fabs(value) > kCoordinateLimit)
-                fail(ErrorCode::InvalidArgument, prefix, "vertices[", i, "].", axis[k], " = ", value,
+                fail_field(ErrorCode::InvalidArgument, "vertices[", i, "].", axis[k], " = ", value,
                      " is beyond the coordinate limit of +-", kCoordinateLimit, " m");
         }
     }
@@ -41,7 +41,7 @@ ValidatedTriangles validate_mesh(const TriangleMesh& mesh, const char* prefix) {
         const Triangle& tri = mesh.triangles[t];
         for (int k = 0; k < 3; ++k) {
             if (tri[k] >= vertex_count)
-                fail(ErrorCode::InvalidArgument, prefix, "indices[", t * 3 + k, "] = ", tri[k],
+                fail_field(ErrorCode::InvalidArgument, "indices[", t * 3 + k, "] = ", tri[k],
                      " is out of range (vertex_count = ", vertex_count, ")");
         }
         const bool repeated = tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2];
@@ -57,22 +57,22 @@ ValidatedTriangles validate_mesh(const TriangleMesh& mesh, const char* prefix) {
         out.kept.push_back(tri);
     }
     if (out.kept.empty())
-        fail(ErrorCode::InvalidArgument, "all ", mesh.triangles.size(), " triangles of ", prefix,
-             "indices are degenerate (repeated indices or zero area)");
+        fail_field(ErrorCode::InvalidArgument, "indices: all ", mesh.triangles.size(),
+                   " triangles are degenerate (repeated indices or zero area)");
     return out;
 }
 
 Transform validate_transform(const Eigen::Matrix4f& m, const char* name) {
-    if (!m.allFinite()) fail(ErrorCode::InvalidArgument, name, " has a non-finite element");
+    if (!m.allFinite()) fail_field(ErrorCode::InvalidArgument, name, " has a non-finite element");
     if (m(3, 0) != 0.0f || m(3, 1) != 0.0f || m(3, 2) != 0.0f || m(3, 3) != 1.0f)
-        fail(ErrorCode::InvalidArgument, name, " is not affine (its last row must be 0 0 0 1)");
+        fail_field(ErrorCode::InvalidArgument, name, " is not affine (its last row must be 0 0 0 1)");
     // Conditioning, not the raw determinant: the determinant of the unit-length columns is free of
     // the matrix's scale (which would overflow when cubed) and near 0 only for a flattening matrix.
     const Eigen::Matrix3f linear = m.topLeftCorner<3, 3>();
     const Eigen::Vector3f lengths = linear.colwise().norm();
     const float shape = lengths.minCoeff() > 0.0f ? (linear * lengths.cwiseInverse().asDiagonal()).determinant() : 0.0f;
     if (!(std::fabs(shape) > 1e-6f))
-        fail(ErrorCode::InvalidArgument, name, " is singular (it flattens space)");
+        fail_field(ErrorCode::InvalidArgument, name, " is singular (it flattens space)");
     Transform t;
     t.matrix() = m;
     return t;

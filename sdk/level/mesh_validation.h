@@ -24,12 +24,12 @@ inline bool within_coordinate_limit(const Vec3& v) {
     return (v.array().abs() <= kCoordinateLimit).all();  // false for NaN too
 }
 
-// Throws InvalidArgument naming the first bad coordinate or out-of-range index, or when every
-// triangle is degenerate. `field_prefix` names the fields as the caller knows them ("def->" gives
-// "def->vertices[3].y", "def->indices[7]").
-ValidatedTriangles validate_mesh(const TriangleMesh& mesh, const char* field_prefix = "");
+// Throws InvalidArgument naming the first bad coordinate or out-of-range index ("vertices[3].y",
+// "indices[7]"), or when every triangle is degenerate: a failure about a field (fail_field).
+ValidatedTriangles validate_mesh(const TriangleMesh& mesh);
 
-// Throws InvalidArgument unless `m` is finite, affine (last row 0 0 0 1) and well conditioned.
+// Throws InvalidArgument about the field `name` unless `m` is finite, affine (last row 0 0 0 1) and
+// well conditioned.
 Transform validate_transform(const Eigen::Matrix4f& m, const char* name);
 
 // Maps object-space normals to world space, keeping the winding's orientation under mirroring

@@ -864,7 +864,7 @@ private:
 
 LinkGeneration::LinkGeneration(std::shared_ptr<const NavMesh> navmesh, const LinkSettings& settings, GenerationMethod method)
     : navmesh_(std::move(navmesh)), settings_(settings), method_(method) {
-    validate(settings_, "settings->");
+    validate(settings_);
 }
 
 std::vector<Link> LinkGeneration::run(const Level& level, TaskSystem& tasks, LinkGenerationReport& report, GenerationProgress progress) {

@@ -40,7 +40,7 @@ struct LinkSettings {
     unsigned arc_segments = 12;        // pieces of the jump arc in the clearance test
 };
 
-// Throws InvalidArgument naming the first bad field, with `prefix` ("settings->").
-void validate(const LinkSettings& settings, const char* prefix);
+// Throws InvalidArgument about the first bad field ("max_jump_gap is -1 (...)", see fail_field).
+void validate(const LinkSettings& settings);
 
 }  // namespace nl

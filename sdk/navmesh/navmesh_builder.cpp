@@ -12,7 +12,7 @@ namespace nl {
 
 class NavMeshBuilder {
 public:
-    NavMeshBuilder(const NavMeshInput& input, const char* prefix) : in_(input), prefix_(prefix) {}
+    explicit NavMeshBuilder(const NavMeshInput& input) : in_(input) {}
 
     std::shared_ptr<const NavMesh> build() {
         validate();
@@ -31,67 +31,67 @@ private:
 
     void validate() const {
         static const char axis[] = {'x', 'y', 'z'};
-        if (in_.vertices.empty()) fail(ErrorCode::InvalidArgument, prefix_, "vertex_count is 0");
-        if (in_.indices.empty()) fail(ErrorCode::InvalidArgument, prefix_, "polygon_count is 0");
+        if (in_.vertices.empty()) fail_field(ErrorCode::InvalidArgument, "vertex_count is 0");
+        if (in_.indices.empty()) fail_field(ErrorCode::InvalidArgument, "polygon_count is 0");
         for (size_t i = 0; i < in_.vertices.size(); ++i) {
             for (int k = 0; k < 3; ++k) {
                 const float value = in_.vertices[i][k];
                 if (!std::isfinite(value) || std::fabs(value) > kCoordinateLimit)
-                    fail(ErrorCode::InvalidArgument, prefix_, "vertices[", i, "].", axis[k], " = ", value,
+                    fail_field(ErrorCode::InvalidArgument, "vertices[", i, "].", axis[k], " = ", value,
                          " is not finite or beyond the coordinate limit");
             }
         }
         if (in_.polygon_sizes.empty() && in_.indices.size() % 3 != 0)
-            fail(ErrorCode::InvalidArgument, prefix_, "indices has ", in_.indices.size(), " entries, not 3 per triangle");
+            fail_field(ErrorCode::InvalidArgument, "indices has ", in_.indices.size(), " entries, not 3 per triangle");
         size_t expected = 0;
         for (size_t p = 0; p < in_.polygon_sizes.size(); ++p) {
             const uint32_t n = in_.polygon_sizes[p];
             if (n < 3 || n > kMaxPolygonVertices)
-                fail(ErrorCode::InvalidArgument, prefix_, "polygon_vertex_counts[", p, "] = ", n, " (must be 3..",
+                fail_field(ErrorCode::InvalidArgument, "polygon_vertex_counts[", p, "] = ", n, " (must be 3..",
                      kMaxPolygonVertices, ")");
             expected += n;
         }
         if (!in_.polygon_sizes.empty() && expected != in_.indices.size())
-            fail(ErrorCode::InvalidArgument, prefix_, "indices has ", in_.indices.size(), " entries but the polygon sizes add up to ",
+            fail_field(ErrorCode::InvalidArgument, "indices has ", in_.indices.size(), " entries but the polygon sizes add up to ",
                  expected);
         for (size_t i = 0; i < in_.indices.size(); ++i) {
             if (in_.indices[i] >= in_.vertices.size())
-                fail(ErrorCode::InvalidArgument, prefix_, "indices[", i, "] = ", in_.indices[i],
+                fail_field(ErrorCode::InvalidArgument, "indices[", i, "] = ", in_.indices[i],
                      " is out of range (vertex_count = ", in_.vertices.size(), ")");
         }
         if (!in_.areas.empty() && in_.areas.size() != input_polygon_count())
-            fail(ErrorCode::InvalidArgument, prefix_, "areas has ", in_.areas.size(), " entries for ", input_polygon_count(),
+            fail_field(ErrorCode::InvalidArgument, "areas has ", in_.areas.size(), " entries for ", input_polygon_count(),
                  " polygons");
         if (!(in_.weld_tolerance >= 0.0f && in_.weld_tolerance <= 1.0f))
-            fail(ErrorCode::InvalidArgument, prefix_, "weld_tolerance is ", in_.weld_tolerance, " (must be 0..1 m)");
-        validate_agent(in_.agent, (std::string(prefix_) + "agent.").c_str());
+            fail_field(ErrorCode::InvalidArgument, "weld_tolerance is ", in_.weld_tolerance, " (must be 0..1 m)");
+        naming_fields("agent.", [&] { validate_agent(in_.agent); });
         validate_detail();
     }
 
     void validate_detail() const {
         if (in_.detail_starts.empty()) {
             if (!in_.detail_indices.empty() || !in_.detail_vertices.empty())
-                fail(ErrorCode::InvalidArgument, prefix_, "detail triangles are given without detail_triangle_starts");
+                fail_field(ErrorCode::InvalidArgument, "detail_triangle_starts: detail triangles are given without detail_triangle_starts");
             return;
         }
         if (in_.detail_starts.size() != input_polygon_count() + 1)
-            fail(ErrorCode::InvalidArgument, prefix_, "detail_triangle_starts needs polygon_count + 1 = ",
+            fail_field(ErrorCode::InvalidArgument, "detail_triangle_starts needs polygon_count + 1 = ",
                  input_polygon_count() + 1, " entries");
         const uint32_t triangles = static_cast<uint32_t>(in_.detail_indices.size() / 3);
         if (in_.detail_starts.front() != 0 || in_.detail_starts.back() != triangles)
-            fail(ErrorCode::InvalidArgument, prefix_, "detail_triangle_starts must run from 0 to the detail triangle count");
+            fail_field(ErrorCode::InvalidArgument, "detail_triangle_starts must run from 0 to the detail triangle count");
         for (size_t p = 0; p + 1 < in_.detail_starts.size(); ++p) {
             if (in_.detail_starts[p + 1] <= in_.detail_starts[p])
-                fail(ErrorCode::InvalidArgument, prefix_, "detail_triangle_starts[", p + 1,
+                fail_field(ErrorCode::InvalidArgument, "detail_triangle_starts[", p + 1,
                      "]: every polygon needs at least one detail triangle, in order");
         }
         for (size_t i = 0; i < in_.detail_vertices.size(); ++i) {
             if (!within_coordinate_limit(in_.detail_vertices[i]))
-                fail(ErrorCode::InvalidArgument, prefix_, "detail_vertices[", i, "] is not finite or beyond the coordinate limit");
+                fail_field(ErrorCode::InvalidArgument, "detail_vertices[", i, "] is not finite or beyond the coordinate limit");
         }
         for (size_t i = 0; i < in_.detail_indices.size(); ++i) {
             if (in_.detail_indices[i] >= in_.detail_vertices.size())
-                fail(ErrorCode::InvalidArgument, prefix_, "detail_triangles[", i, "] = ", in_.detail_indices[i],
+                fail_field(ErrorCode::InvalidArgument, "detail_triangles[", i, "] = ", in_.detail_indices[i],
                      " is out of range (detail_vertex_count = ", in_.detail_vertices.size(), ")");
         }
     }
@@ -170,7 +170,7 @@ private:
             m.polygon_bounds_.push_back(box);
         }
         if (m.polygon_count() == 0)
-            fail(ErrorCode::InvalidArgument, "all ", count, " polygons of ", prefix_, "indices are degenerate");
+            fail_field(ErrorCode::InvalidArgument, "indices: all ", count, " polygons are degenerate");
     }
 
     Vec3 newell_normal(const std::vector<uint32_t>& ring) const {
@@ -194,14 +194,14 @@ private:
             const double cross_y = e1z * e2x - e1x * e2z;
             const double lengths = std::sqrt((e1x * e1x + e1z * e1z) * (e2x * e2x + e2z * e2z));
             if (cross_y < -1e-4 * lengths)
-                fail(ErrorCode::InvalidArgument, prefix_, "polygon ", p, " is not convex seen from above (at corner ",
+                fail_field(ErrorCode::InvalidArgument, "indices: polygon ", p, " is not convex seen from above (at corner ",
                      (k + 1) % n, ")");
             turning += std::atan2(cross_y, e1x * e2x + e1z * e2z);
         }
         // A star (self-crossing) polygon turns every corner the same way but winds twice.
         constexpr double kTwoPi = 6.283185307179586;
         if (std::fabs(turning) > kTwoPi + 0.1)
-            fail(ErrorCode::InvalidArgument, prefix_, "polygon ", p, " crosses itself");
+            fail_field(ErrorCode::InvalidArgument, "indices: polygon ", p, " crosses itself");
     }
 
     // Portals, boundary edges and non-manifold edges, from the edges sorted by their vertex pair.
@@ -269,15 +269,14 @@ private:
     }
 
     const NavMeshInput& in_;
-    const char* prefix_;
     std::shared_ptr<NavMesh> mesh_ = std::make_shared<NavMesh>();
     std::vector<uint32_t> remap_;
     std::vector<uint32_t> boundary_slots_;
 };
 
-void validate_agent(const AgentType& a, const char* prefix) {
+void validate_agent(const AgentType& a) {
     auto check = [&](float value, const char* name, bool ok) {
-        if (!ok || !std::isfinite(value)) fail(ErrorCode::InvalidArgument, prefix, name, " is ", value);
+        if (!ok || !std::isfinite(value)) fail_field(ErrorCode::InvalidArgument, name, " is ", value);
     };
     check(a.radius, "radius", a.radius >= 0.0f && a.radius <= 100.0f);
     check(a.height, "height", a.height > 0.0f && a.height <= 100.0f);
@@ -285,8 +284,8 @@ void validate_agent(const AgentType& a, const char* prefix) {
     check(a.max_slope, "max_slope", a.max_slope >= 0.0f && a.max_slope < 90.0f);
 }
 
-std::shared_ptr<const NavMesh> build_navmesh(const NavMeshInput& input, const char* field_prefix) {
-    return NavMeshBuilder(input, field_prefix).build();
+std::shared_ptr<const NavMesh> build_navmesh(const NavMeshInput& input) {
+    return NavMeshBuilder(input).build();
 }
 
 }  // namespace nl

@@ -21,10 +21,12 @@ struct NavMeshInput {
     std::vector<uint32_t> detail_starts;   // polygon_count + 1 offsets in triangles; empty = no detail
 };
 
-// Throws InvalidArgument naming the bad item (fields prefixed with `field_prefix`, e.g. "def->") and
-// adds nothing anywhere: the result is a new, complete navmesh or an exception.
-std::shared_ptr<const NavMesh> build_navmesh(const NavMeshInput& input, const char* field_prefix = "");
+// Throws InvalidArgument naming the bad field of the input ("vertices[3].y", "agent.radius": a
+// failure about a field, see fail_field) and adds nothing anywhere: the result is a new, complete
+// navmesh or an exception.
+std::shared_ptr<const NavMesh> build_navmesh(const NavMeshInput& input);
 
-void validate_agent(const AgentType& agent, const char* field_prefix);
+// Throws InvalidArgument about the bad field ("radius is -1").
+void validate_agent(const AgentType& agent);
 
 }  // namespace nl

@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <memory>
 
-#include "links/link_store.h"
+#include "links/link_snapshot.h"
 #include "navmesh/navmesh.h"
 
 namespace nl {

@@ -121,7 +121,7 @@ Generation generate(const nl::NavMesh& navmesh, nl_world& world, nl::GenerationM
     for (int run = 0; run < runs; ++run) {
         nl::LinkGenerationReport report;
         const double start = nl::samples::now_ms();
-        std::vector<nl::Link> links = nl::generate_links(navmesh, *world.level, *world.tasks, settings, method, report,
+        std::vector<nl::Link> links = nl::generate_links(navmesh, world.core->level(), world.core->tasks(), settings, method, report,
                                                          [](float, const char*) { return true; });
         const double ms = nl::samples::now_ms() - start;
         if (run > 0 && !identical(links, best.links)) throw std::runtime_error("two runs of the same generation differ");
@@ -185,7 +185,7 @@ bool measure(const Source& source) {
     const double build_start = nl::samples::now_ms();
     if (NL_FAILED(nl_navmesh_build(two.world, &build, &id))) return fail(source, "navmesh build");
     const double build_ms = nl::samples::now_ms() - build_start;
-    const auto navmesh = two.world->navmeshes->get(nl::Handle{id.index1, id.generation});
+    const auto navmesh = two.world->core->navmeshes().navmesh(nl::Handle{id.index1, id.generation});
     if (g_stages)
         std::fprintf(stderr, "  %s: navmesh %u polygons, %zu boundary edges, built in %.0f ms\n", source.name.c_str(),
                      navmesh->polygon_count(), navmesh->boundary_edges().size(), build_ms);

@@ -257,7 +257,7 @@ bool compare(const char* path, Level& level) {
     double nl_ms = 0.0, detour_ms = 0.0;
     for (int i = 0; i < kPairs; ++i) nl_ms += nl_best[i], detour_ms += detour_best[i];
     const nl::Handle handle{level.navmesh.index1, level.navmesh.generation};
-    const auto graph = level.world->path_graphs->get(handle, level.world->navmeshes->get(handle), level.world->links->snapshot(handle));
+    const auto graph = level.world->core->navmeshes().path_graph(handle);
     const size_t nl_bytes = graph->navmesh().memory_bytes() + graph->link_index_bytes();
     std::printf("level=%s polys=%u queries=%d nl_us=%.2f detour_us=%.2f ratio=%.2f nl_len=%.4f detour_len=%.4f nl_bytes=%zu "
                 "detour_bytes=%d both_complete=%d nl_nodes=%.1f detour_nodes=%.1f\n",

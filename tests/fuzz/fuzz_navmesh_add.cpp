@@ -32,7 +32,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     const nl_status status = nl_navmesh_add(world, &input.def, &navmesh);
     nl::fuzz::require_reasoned(status);
     if (NL_FAILED(status)) return 0;
-    check_point_location(*world->navmeshes->get(nl::capi::to_handle(navmesh)));
+    check_point_location(*world->core->navmeshes().navmesh(nl::capi::to_handle(navmesh)));
     nl_navmesh_remove(world, navmesh);
     return 0;
 }

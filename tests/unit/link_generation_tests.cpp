@@ -48,9 +48,9 @@ Generated generate(const std::vector<Box>& boxes, const nl::LinkSettings& settin
     const nl_navmesh_build_def build = nl_default_navmesh_build_def();
     nl_navmesh_id navmesh{};
     REQUIRE_MESSAGE(nl_navmesh_build(world, &build, &navmesh) == NL_STATUS_SUCCESS, nl_get_last_error_message());
-    const auto mesh_ptr = world->navmeshes->get(nl::Handle{navmesh.index1, navmesh.generation});
+    const auto mesh_ptr = world->core->navmeshes().navmesh(nl::Handle{navmesh.index1, navmesh.generation});
     Generated out;
-    out.links = nl::generate_links(*mesh_ptr, *world->level, *world->tasks, settings, method, out.report,
+    out.links = nl::generate_links(*mesh_ptr, world->core->level(), world->core->tasks(), settings, method, out.report,
                                    [](float, const char*) { return true; });
     nl_world_destroy(world);
     return out;

@@ -82,7 +82,7 @@ struct Generation {
 
 Generation generate(const nl::NavMesh& navmesh, nl_world& world, nl::GenerationMethod method) {
     Generation b;
-    b.links = nl::generate_links(navmesh, *world.level, *world.tasks, nl::LinkSettings{}, method, b.report,
+    b.links = nl::generate_links(navmesh, world.core->level(), world.core->tasks(), nl::LinkSettings{}, method, b.report,
                                  [](float, const char*) { return true; });
     return b;
 }
@@ -98,7 +98,7 @@ void check_against_reference(const LevelSource& source, uint32_t& jumps, uint32_
     const nl_navmesh_build_def build = nl_default_navmesh_build_def();
     nl_navmesh_id id{};
     REQUIRE_MESSAGE(nl_navmesh_build(two.world, &build, &id) == NL_STATUS_SUCCESS, nl_get_last_error_message());
-    const auto navmesh = two.world->navmeshes->get(nl::Handle{id.index1, id.generation});
+    const auto navmesh = two.world->core->navmeshes().navmesh(nl::Handle{id.index1, id.generation});
 
     const Generation grid_1 = generate(*navmesh, *one.world, nl::GenerationMethod::Indexed);
     const Generation grid_2 = generate(*navmesh, *two.world, nl::GenerationMethod::Indexed);

@@ -102,11 +102,11 @@ Generated generate_in_world(const std::string& name, const std::function<void(nl
     Generated out;
     out.name = name;
     out.settings = settings;
-    out.navmesh = w.world->navmeshes->get(nl::Handle{navmesh.index1, navmesh.generation});
+    out.navmesh = w.world->core->navmeshes().navmesh(nl::Handle{navmesh.index1, navmesh.generation});
     REQUIRE(out.navmesh);
     out.agent = out.navmesh->agent();
-    out.triangles = w.world->level->world_triangles();
-    out.links = nl::generate_links(*out.navmesh, *w.world->level, *w.world->tasks, settings, method, out.report,
+    out.triangles = w.world->core->level().world_triangles();
+    out.links = nl::generate_links(*out.navmesh, w.world->core->level(), w.world->core->tasks(), settings, method, out.report,
                                    [](float, const char*) { return true; });
     return out;
 }

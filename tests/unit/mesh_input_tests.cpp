@@ -152,7 +152,9 @@ TEST_CASE("OBJ: numbers tinyobjloader would read as 0 are refused, with the line
 TEST_CASE("coordinates beyond the limit are refused, and huge scales are not mistaken for singular") {
     TriangleMesh m = quad();
     m.vertices[3].z() = 2e9f;
-    CHECK(message_of([&] { nl::validate_mesh(m, "def->"); }).find("def->vertices[3].z") != std::string::npos);
+    // The core names the field; a caller that knows the input by another name puts it in front.
+    CHECK(message_of([&] { nl::validate_mesh(m); }).rfind("vertices[3].z", 0) == 0);
+    CHECK(message_of([&] { nl::naming_fields("def->", [&] { nl::validate_mesh(m); }); }).rfind("def->vertices[3].z", 0) == 0);
     Eigen::Matrix4f big = Eigen::Matrix4f::Identity() * 1e13f;
     big(3, 3) = 1.0f;
     CHECK_NOTHROW(nl::validate_transform(big, "t"));

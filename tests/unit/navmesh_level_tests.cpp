@@ -14,7 +14,7 @@
 namespace {
 
 std::shared_ptr<const nl::NavMesh> navmesh_of(nl_world* world, nl_navmesh_id id) {
-    return world->navmeshes->get(nl::Handle{id.index1, id.generation});
+    return world->core->navmeshes().navmesh(nl::Handle{id.index1, id.generation});
 }
 
 void check_point_location(const nl::NavMesh& mesh, const std::string& label) {

@@ -31,7 +31,7 @@ NavMeshInput unity_style_grid(int n, float y = 0.0f) {
 
 std::string error_of(const NavMeshInput& in) {
     try {
-        nl::build_navmesh(in, "def->");
+        nl::naming_fields("def->", [&] { nl::build_navmesh(in); });
     } catch (const nl::Error& e) {
         return e.what();
     }

@@ -246,7 +246,7 @@ TEST_CASE("on every shared level, paths stay on the navmesh, end where asked, an
         nl_navmesh_info info{};
         info.size = sizeof info;
         nl_navmesh_get_info(world, navmesh, &info);
-        const auto navmesh_ptr = world->navmeshes->get(nl::Handle{navmesh.index1, navmesh.generation});
+        const auto navmesh_ptr = world->core->navmeshes().navmesh(nl::Handle{navmesh.index1, navmesh.generation});
 
         std::vector<float> vertices(3 * size_t(info.vertex_count));
         uint32_t vertex_count = 0;

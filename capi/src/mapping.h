@@ -1,0 +1,22 @@
+// C structs the host or a plugin hands over, read into core types (shared by the entry points and
+// the plugin adapter). Each throws nl::Error about the struct's fields, named without the struct's
+// own name (the caller adds "def->" with nl::naming_fields).
+#pragma once
+
+#include "navlink/navlink.h"
+#include "navmesh/navmesh_builder.h"
+#include "links/link.h"
+
+namespace nl::capi {
+
+AgentType to_core(const nl_agent_type& agent);
+nl_agent_type to_c(const AgentType& agent);
+
+// A navmesh def (nl_navmesh_add, a builder's sink), read whole; build_navmesh checks the rest.
+NavMeshInput navmesh_input_from_def(const nl_navmesh_def& def);
+
+// A link def (nl_link_add, nl_link_update, a link-kind plugin's sink); the link is not yet placed on
+// a navmesh (World does that).
+Link link_from_def(const nl_link_def& def);
+
+}  // namespace nl::capi

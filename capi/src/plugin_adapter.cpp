@@ -1,0 +1,220 @@
+#include "plugin_adapter.h"
+
+#include <dlfcn.h>
+
+#include <cstring>
+#include <exception>
+#include <filesystem>
+#include <memory>
+
+#include "entry_guard.h"
+#include "host_input.h"
+#include "mapping.h"
+
+namespace nl::capi {
+namespace {
+
+// One C plugin as the core's interfaces.
+class CPlugin final : public Plugin, public NavMeshBuilder, public LinkKindProvider {
+public:
+    CPlugin(World& world, void* library, bool builtin) : world_(world), library_(library), host_(make_plugin_host(this)) {
+        info_.size = sizeof(nl_plugin_info);
+        description_.builtin = builtin;
+    }
+    ~CPlugin() override {
+        if (started_ && info_.destroy) info_.destroy(info_.state);
+        if (library_) dlclose(library_);
+    }
+    CPlugin(const CPlugin&) = delete;
+    CPlugin& operator=(const CPlugin&) = delete;
+
+    void start(nl_plugin_entry_fn* entry, const std::string& origin);
+
+    World& world() noexcept { return world_; }
+
+    const PluginDescription& description() const noexcept override { return description_; }
+    NavMeshBuilder* navmesh_builder() noexcept override { return (info_.kinds & NL_PLUGIN_NAVMESH_BUILDER) ? this : nullptr; }
+    LinkKindProvider* link_kind() noexcept override { return (info_.kinds & NL_PLUGIN_LINK_KIND) ? this : nullptr; }
+
+    std::shared_ptr<const NavMesh> build(World& world, const NavMeshBuildRequest& request) override;
+    uint32_t kind() const noexcept override { return info_.link_kind.kind; }
+    const std::string& kind_name() const noexcept override { return kind_name_; }
+    void propose(World& world, Handle navmesh, const std::string& settings_json, FunctionRef<void(Link)> accept) override;
+
+private:
+    void check_description(const std::string& origin) const;
+
+    World& world_;
+    void* library_;
+    nl_plugin_host host_;
+    nl_plugin_info info_{};
+    bool started_ = false;
+    PluginDescription description_;
+    std::string kind_name_;
+};
+
+void CPlugin::check_description(const std::string& origin) const {
+    if (!info_.name || !*info_.name) fail(ErrorCode::InvalidArgument, "plugin ", origin, " has no name");
+    if ((info_.kinds & NL_PLUGIN_NAVMESH_BUILDER) && !info_.navmesh_builder.build)
+        fail(ErrorCode::InvalidArgument, "plugin '", info_.name, "' says it builds navmeshes but gives no build function");
+    if ((info_.kinds & NL_PLUGIN_LINK_KIND) &&
+        (!info_.link_kind.generate || !info_.link_kind.kind_name || info_.link_kind.kind < NL_LINK_FIRST_PLUGIN_KIND))
+        fail(ErrorCode::InvalidArgument, "plugin '", info_.name,
+             "' says it provides a link kind but its kind is below NL_LINK_FIRST_PLUGIN_KIND or has no name or generate function");
+    if (info_.kinds & ~(NL_PLUGIN_NAVMESH_BUILDER | NL_PLUGIN_LINK_KIND | NL_PLUGIN_PATH_MODIFIER))
+        fail(ErrorCode::InvalidArgument, "plugin '", info_.name, "' has unknown kinds 0x", std::hex, info_.kinds);
+}
+
+void CPlugin::start(nl_plugin_entry_fn* entry, const std::string& origin) {
+    take_plugin_error();
+    const nl_status status = entry(NL_PLUGIN_ABI_VERSION, &host_, &info_);
+    const std::string reason = take_plugin_error();
+    if (NL_FAILED(status)) {
+        if (status & NL_STATUS_VERSION_MISMATCH)
+            fail(ErrorCode::VersionMismatch, "plugin ", origin, " speaks no plugin ABI version <= ", NL_PLUGIN_ABI_VERSION,
+                 reason.empty() ? "" : ": ", reason);
+        throw Error(to_error_code(status) == ErrorCode::OutOfMemory ? ErrorCode::OutOfMemory : ErrorCode::Internal,
+                    concat("plugin ", origin, " refused to start (", nl_status_string(status), ")", reason.empty() ? "" : ": ",
+                           reason));
+    }
+    started_ = true;  // from here on its destroy function is owed
+    if (info_.abi_version == 0 || info_.abi_version > NL_PLUGIN_ABI_VERSION)
+        fail(ErrorCode::VersionMismatch, "plugin ", origin, " answered ABI version ", info_.abi_version, "; this library speaks 1..",
+             NL_PLUGIN_ABI_VERSION);
+    check_description(origin);
+    description_.name = info_.name;
+    description_.version = info_.version ? info_.version : "";
+    description_.description = info_.description ? info_.description : "";
+    description_.abi_version = info_.abi_version;
+    if (info_.kinds & NL_PLUGIN_LINK_KIND) kind_name_ = info_.link_kind.kind_name;
+}
+
+// What a builder hands back through the sink: the navmesh, validated and built (the builder is told
+// when it was refused), or why it was refused.
+struct BuildSink {
+    int calls = 0;
+    std::shared_ptr<const NavMesh> navmesh;
+    std::exception_ptr error;
+
+    static nl_status receive(void* context, const nl_navmesh_def* def) {
+        auto& self = *static_cast<BuildSink*>(context);
+        if (++self.calls > 1) {
+            take_plugin_error();
+            return NL_STATUS_FAILURE | NL_STATUS_INVALID_ARGUMENT;
+        }
+        try {
+            require(def, "navmesh");
+            self.navmesh = naming_fields("def->", [&] { return build_navmesh(navmesh_input_from_def(*def)); });
+            return NL_STATUS_SUCCESS;
+        } catch (const Error& e) {
+            self.error = std::current_exception();
+            return NL_STATUS_FAILURE | to_status(e.code());
+        } catch (...) {
+            self.error = std::current_exception();
+            return NL_STATUS_FAILURE | NL_STATUS_INTERNAL_ERROR;
+        }
+    }
+};
+
+std::shared_ptr<const NavMesh> CPlugin::build(World&, const NavMeshBuildRequest& request) {
+    nl_navmesh_build_def def = nl_default_navmesh_build_def();
+    def.builder = description_.name.c_str();
+    def.agent = to_c(request.agent);
+    def.settings = request.builder_settings;
+    def.settings_json = request.settings_json;
+    def.settings_json_length = request.settings_json_length;
+    BuildSink sink;
+    take_plugin_error();
+    const nl_status status = info_.navmesh_builder.build(info_.state, &host_, &def, &BuildSink::receive, &sink);
+    const std::string reason = take_plugin_error();
+    const std::string& name = description_.name;
+    if (sink.error) {
+        // The builder's output, not the caller's arguments, was wrong.
+        try {
+            std::rethrow_exception(sink.error);
+        } catch (const Error& e) {
+            if (e.code() == ErrorCode::OutOfMemory) throw;
+            fail(ErrorCode::Internal, "builder '", name, "' made a navmesh that was refused: ", e.what());
+        }
+    }
+    if (sink.calls > 1) fail(ErrorCode::Internal, "builder '", name, "' handed over ", sink.calls, " navmeshes, not one");
+    if (NL_FAILED(status))
+        throw Error(to_error_code(status), concat("builder '", name, "': ", reason.empty() ? nl_status_string(status) : reason));
+    if (sink.calls == 0) fail(ErrorCode::Internal, "builder '", name, "' succeeded without handing over a navmesh");
+    return std::move(sink.navmesh);
+}
+
+// What a link-kind plugin hands back through the sink: each link read and given to `accept`, whose
+// refusal the plugin is told of.
+struct LinkSink {
+    FunctionRef<void(Link)> accept;
+    bool out_of_memory = false;
+
+    static nl_status receive(void* context, const nl_link_def* def) {
+        auto& self = *static_cast<LinkSink*>(context);
+        try {
+            require(def, "link");
+            self.accept(naming_fields("def->", [&] { return link_from_def(*def); }));
+            return NL_STATUS_SUCCESS;
+        } catch (const std::bad_alloc&) {
+            self.out_of_memory = true;
+            return NL_STATUS_FAILURE | NL_STATUS_OUT_OF_MEMORY;
+        } catch (const Error& e) {
+            if (e.code() == ErrorCode::OutOfMemory) self.out_of_memory = true;
+            return NL_STATUS_FAILURE | to_status(e.code());
+        } catch (...) {
+            return NL_STATUS_FAILURE | NL_STATUS_INTERNAL_ERROR;
+        }
+    }
+};
+
+void CPlugin::propose(World&, Handle navmesh, const std::string& settings_json, FunctionRef<void(Link)> accept) {
+    LinkSink sink{accept};
+    take_plugin_error();
+    const nl_status status = info_.link_kind.generate(info_.state, &host_, to_id<nl_navmesh_id>(navmesh),
+                                                      settings_json.empty() ? nullptr : settings_json.c_str(),
+                                                      settings_json.size(), &LinkSink::receive, &sink);
+    const std::string reason = take_plugin_error();
+    if (sink.out_of_memory) throw std::bad_alloc();
+    if (NL_FAILED(status))
+        throw Error(to_error_code(status), concat("link-kind plugin '", description_.name, "': ",
+                                                  reason.empty() ? nl_status_string(status) : reason));
+}
+
+}  // namespace
+
+World& world_of_plugin(void* context) { return static_cast<CPlugin*>(context)->world(); }
+const std::string& name_of_plugin(void* context) { return static_cast<CPlugin*>(context)->description().name; }
+
+Handle add_c_plugin(World& world, nl_plugin_entry_fn* entry, void* library, bool builtin, const std::string& origin) {
+    std::unique_ptr<CPlugin> plugin;
+    try {
+        plugin = std::make_unique<CPlugin>(world, library, builtin);
+    } catch (...) {
+        if (library) dlclose(library);
+        throw;
+    }
+    plugin->start(entry, origin);
+    return world.plugins().add(std::move(plugin));
+}
+
+Handle load_c_plugin(World& world, const std::string& path) {
+    std::error_code ec;
+    if (!std::filesystem::exists(path, ec)) fail(ErrorCode::NotFound, "no plugin library at '", path, "'");
+    void* library = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
+    if (!library) {
+        const char* why = dlerror();
+        fail(ErrorCode::Io, "cannot load '", path, "': ", why ? why : "unknown loader error");
+    }
+    void* symbol = dlsym(library, NL_PLUGIN_ENTRY_SYMBOL);
+    if (!symbol) {
+        dlclose(library);
+        fail(ErrorCode::NotFound, "'", path, "' exports no ", NL_PLUGIN_ENTRY_SYMBOL, " function");
+    }
+    nl_plugin_entry_fn* entry;
+    static_assert(sizeof(entry) == sizeof(symbol), "function and object pointers differ in size");
+    std::memcpy(&entry, &symbol, sizeof entry);  // POSIX guarantees the conversion; C++ needs a copy
+    return add_c_plugin(world, entry, library, false, "'" + path + "'");
+}
+
+}  // namespace nl::capi

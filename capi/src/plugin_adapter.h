@@ -1,0 +1,35 @@
+// C plugins (plugins/include/navlink/plugin.h) as the core's plugin interfaces (sdk/world/plugin.h):
+// an adapter per plugin negotiates with its entry function, hands it a function table over the core
+// world (plugin_host.cpp), and turns its builder and link-kind functions into NavMeshBuilder and
+// LinkKindProvider.
+#pragma once
+
+#include <string>
+
+#include "navlink/plugin.h"
+#include "util/handle.h"
+#include "world/world.h"
+
+namespace nl::capi {
+
+// Starts a plugin through its entry function and adds it to the world. `library` (a dlopen handle,
+// or null) belongs to the plugin from here on, also when this throws: VersionMismatch (no common ABI
+// version), InvalidArgument (a bad or duplicate description), Internal or OutOfMemory (the plugin
+// refused to start). `origin` names it in messages.
+Handle add_c_plugin(World& world, nl_plugin_entry_fn* entry, void* library, bool builtin, const std::string& origin);
+
+// Loads a plugin library (dlopen) and adds the plugin it exports. Throws NotFound (no file, or no
+// entry symbol), Io (the loader refused it), and as add_c_plugin.
+Handle load_c_plugin(World& world, const std::string& path);
+
+// The reason a plugin gave through host->set_error during the current call on this thread (empty if
+// none); taking it clears it.
+std::string take_plugin_error();
+
+// The function table a plugin gets: `context` is the adapter (plugin_host.cpp).
+nl_plugin_host make_plugin_host(void* context);
+// What the table's functions need from their context.
+World& world_of_plugin(void* context);
+const std::string& name_of_plugin(void* context);
+
+}  // namespace nl::capi

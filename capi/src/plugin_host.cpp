@@ -1,0 +1,118 @@
+// The function table a plugin is given: the world's queries, called directly on the core. A failing
+// query returns its status to the plugin and is logged at debug level under the plugin's name; it
+// never records the host thread's last status nor logs as an error of a call the host never made.
+#include <new>
+
+#include "entry_guard.h"
+#include "plugin_adapter.h"
+#include "queries.h"
+
+namespace nl::capi {
+namespace {
+
+thread_local std::string plugin_error;
+
+// Runs a query for a plugin: its status, never an exception.
+template <typename Body>
+nl_status for_plugin(void* context, const char* query, Body&& body) noexcept {
+    try {
+        body();
+        return NL_STATUS_SUCCESS;
+    } catch (const Error& e) {
+        try {
+            world_of_plugin(context).logger().log(LogLevel::Debug,
+                                                  concat("plugin '", name_of_plugin(context), "': ", query, ": ", e.what()));
+        } catch (...) {
+        }
+        return NL_STATUS_FAILURE | to_status(e.code());
+    } catch (const std::bad_alloc&) {
+        return NL_STATUS_FAILURE | NL_STATUS_OUT_OF_MEMORY;
+    } catch (...) {
+        return NL_STATUS_FAILURE | NL_STATUS_INTERNAL_ERROR;
+    }
+}
+
+void host_log(void* context, nl_log_level level, const char* message) {
+    if (level > NL_LOG_DEBUG) level = NL_LOG_DEBUG;
+    try {
+        world_of_plugin(context).logger().log(static_cast<LogLevel>(level), message ? message : "");
+    } catch (...) {
+    }
+}
+
+void host_set_error(void*, const char* message) {
+    try {
+        plugin_error = message ? message : "";
+    } catch (...) {
+    }
+}
+
+nl_status host_get_level_triangles(void* context, float* vertices, uint32_t vertex_capacity, uint32_t* out_vertex_count,
+                                   uint32_t* indices, uint32_t triangle_capacity, uint32_t* out_triangle_count) {
+    nl_status status = NL_STATUS_SUCCESS;
+    const nl_status ran = for_plugin(context, "get_level_triangles", [&] {
+        const TriangleMesh level = world_of_plugin(context).level().world_triangles();
+        if (out_vertex_count) *out_vertex_count = static_cast<uint32_t>(level.vertices.size());
+        if (out_triangle_count) *out_triangle_count = static_cast<uint32_t>(level.triangles.size());
+        if (vertex_capacity == 0 && triangle_capacity == 0) return;
+        if (!vertices || !indices || level.vertices.size() > vertex_capacity || level.triangles.size() > triangle_capacity) {
+            status = NL_STATUS_FAILURE | NL_STATUS_BUFFER_TOO_SMALL;
+            return;
+        }
+        for (size_t i = 0; i < level.vertices.size(); ++i) Eigen::Map<Vec3>(vertices + 3 * i) = level.vertices[i];
+        for (size_t t = 0; t < level.triangles.size(); ++t)
+            for (int k = 0; k < 3; ++k) indices[3 * t + k] = level.triangles[t][k];
+    });
+    return NL_FAILED(ran) ? ran : status;
+}
+
+nl_status host_boundary_edges(void* context, nl_navmesh_id navmesh, nl_boundary_edge* out, uint32_t capacity,
+                              uint32_t* count) {
+    return for_plugin(context, "navmesh_get_boundary_edges",
+                      [&] { navmesh_get_boundary_edges(world_of_plugin(context), navmesh, out, capacity, count); });
+}
+
+nl_status host_navmesh_info(void* context, nl_navmesh_id navmesh, nl_navmesh_info* out) {
+    return for_plugin(context, "navmesh_get_info", [&] { navmesh_get_info(world_of_plugin(context), navmesh, out); });
+}
+
+nl_status host_find_nearest(void* context, nl_navmesh_id navmesh, const float* points, uint32_t count,
+                            const float* half_extents, nl_nav_point* out) {
+    return for_plugin(context, "navmesh_find_nearest",
+                      [&] { navmesh_find_nearest(world_of_plugin(context), navmesh, points, count, half_extents, out); });
+}
+
+nl_status host_cast_rays(void* context, const nl_ray* rays, uint32_t count, nl_ray_hit* hits) {
+    return for_plugin(context, "cast_rays", [&] { cast_rays(world_of_plugin(context), rays, count, hits); });
+}
+
+nl_status host_segments_blocked(void* context, const nl_segment* segments, uint32_t count, uint8_t* blocked) {
+    return for_plugin(context, "segments_blocked",
+                      [&] { segments_blocked(world_of_plugin(context), segments, count, blocked); });
+}
+
+}  // namespace
+
+std::string take_plugin_error() {
+    std::string message;
+    message.swap(plugin_error);
+    return message;
+}
+
+nl_plugin_host make_plugin_host(void* context) {
+    nl_plugin_host host{};
+    host.size = sizeof(nl_plugin_host);
+    host.abi_version = NL_PLUGIN_ABI_VERSION;
+    host.context = context;
+    host.log = host_log;
+    host.set_error = host_set_error;
+    host.get_level_triangles = host_get_level_triangles;
+    host.navmesh_get_boundary_edges = host_boundary_edges;
+    host.navmesh_get_info = host_navmesh_info;
+    host.navmesh_find_nearest = host_find_nearest;
+    host.cast_rays = host_cast_rays;
+    host.segments_blocked = host_segments_blocked;
+    return host;
+}
+
+}  // namespace nl::capi

@@ -1,0 +1,45 @@
+#include "links/link_placement.h"
+
+#include <cmath>
+
+#include "util/error.h"
+
+namespace nl {
+namespace {
+
+uint32_t polygon_near(const NavMesh& navmesh, const Vec3& p, const char* end) {
+    const NavPoint near = navmesh.find_nearest(p, Vec3::Constant(kLinkEndReach));
+    if (!near.found || near.distance > kLinkEndReach)
+        fail_field(ErrorCode::InvalidArgument, end, " is not within ", kLinkEndReach, " m of the navmesh");
+    return near.polygon;
+}
+
+uint32_t polygon_still_under(const NavMesh& navmesh, const Vec3& p, uint32_t saved, const char* end) {
+    if (saved < navmesh.polygon_count()) {
+        // Seen from above: detail heights may sit a voxel above the polygon's own corners.
+        const Vec3 q = navmesh.closest_point_on_polygon(saved, p);
+        if (Vec3(q.x() - p.x(), 0.0f, q.z() - p.z()).norm() < 0.05f && std::fabs(q.y() - p.y()) < kLinkEndReach)
+            return saved;
+    }
+    return polygon_near(navmesh, p, end);
+}
+
+}  // namespace
+
+void place_link(const NavMesh& navmesh, Link& link) {
+    link.start_polygon = polygon_near(navmesh, link.start, "start");
+    link.end_polygon = polygon_near(navmesh, link.end, "end");
+}
+
+void place_saved_link(const NavMesh& navmesh, Link& link) {
+    link.start_polygon = polygon_still_under(navmesh, link.start, link.start_polygon, "start");
+    link.end_polygon = polygon_still_under(navmesh, link.end, link.end_polygon, "end");
+}
+
+void fill_requirements_from_ends(Link& link) {
+    LinkRequirements& r = link.requirements;
+    if (r.gap == 0.0f && r.rise == 0.0f && r.drop == 0.0f) set_requirements_from_ends(link);
+    if (r.length == 0.0f) r.length = Vec3(link.end.x() - link.start.x(), 0.0f, link.end.z() - link.start.z()).norm();
+}
+
+}  // namespace nl

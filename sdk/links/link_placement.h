@@ -1,0 +1,28 @@
+// Puts a link made outside the generator (by the host, a plugin or a links file) on its navmesh:
+// both ends must be near it, and each end remembers the polygon under it.
+#pragma once
+
+#include <string>
+
+#include "links/link.h"
+#include "navmesh/navmesh.h"
+
+namespace nl {
+
+// How far a link's end may be from its navmesh.
+constexpr float kLinkEndReach = 1.0f;
+
+// Sets the link's start and end polygons to those nearest its ends. Throws InvalidArgument about the
+// field "start" or "end" (fail_field) when an end is not within kLinkEndReach of the navmesh.
+void place_link(const NavMesh& navmesh, Link& link);
+
+// As place_link, for a link read back from a file that names its polygons: a named polygon that still
+// holds its end (seen from above, within the reach in height) is kept, so a file saved from another
+// build of the navmesh keeps the polygons it can; the others are located again.
+void place_saved_link(const NavMesh& navmesh, Link& link);
+
+// The requirements of a link whose figures the host left out: gap, rise and drop from the ends when
+// all three are zero, and the length from the ends when it is zero.
+void fill_requirements_from_ends(Link& link);
+
+}  // namespace nl

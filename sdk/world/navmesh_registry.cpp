@@ -1,0 +1,227 @@
+#include "world/navmesh_registry.h"
+
+#include <algorithm>
+#include <shared_mutex>
+
+namespace nl {
+namespace {
+
+thread_local bool holding_generation_turn = false;
+
+}  // namespace
+
+NavMeshRegistry::GenerationTurn::GenerationTurn(std::shared_ptr<std::mutex> turn) : turn_(std::move(turn)) {
+    turn_->lock();
+    holding_generation_turn = true;
+}
+
+NavMeshRegistry::GenerationTurn::~GenerationTurn() {
+    holding_generation_turn = false;
+    turn_->unlock();
+}
+
+NavMeshRegistry::Entry& NavMeshRegistry::entry(Handle navmesh) {
+    Entry* e = navmeshes_.find(navmesh);
+    if (!e) fail_stale("navmesh", navmesh);
+    return *e;
+}
+
+const NavMeshRegistry::Entry& NavMeshRegistry::entry(Handle navmesh) const {
+    return const_cast<NavMeshRegistry*>(this)->entry(navmesh);
+}
+
+Handle NavMeshRegistry::add(std::shared_ptr<const NavMesh> navmesh) {
+    Entry e;
+    e.navmesh = std::move(navmesh);
+    std::unique_lock lock(mutex_);
+    return navmeshes_.insert(std::move(e));
+}
+
+void NavMeshRegistry::remove(Handle navmesh) {
+    std::unique_lock lock(mutex_);
+    Entry& e = entry(navmesh);
+    for (Handle id : e.link_ids) links_.erase(id);
+    navmeshes_.erase(navmesh);
+}
+
+bool NavMeshRegistry::contains(Handle navmesh) const {
+    std::shared_lock lock(mutex_);
+    return navmeshes_.find(navmesh) != nullptr;
+}
+
+std::shared_ptr<const NavMesh> NavMeshRegistry::navmesh(Handle navmesh) const {
+    std::shared_lock lock(mutex_);
+    return entry(navmesh).navmesh;
+}
+
+std::vector<Handle> NavMeshRegistry::handles() const {
+    std::shared_lock lock(mutex_);
+    std::vector<Handle> out;
+    out.reserve(navmeshes_.size());
+    navmeshes_.for_each([&](Handle h, const Entry&) { out.push_back(h); });
+    return out;
+}
+
+Handle NavMeshRegistry::insert_link(Handle navmesh, Entry& e, const Link& link) {
+    // Room first (grown geometrically: one more each time copied the list on every add), so that a
+    // failure leaves no link without its place in the list.
+    if (e.link_ids.size() == e.link_ids.capacity()) e.link_ids.reserve(2 * e.link_ids.size() + 8);
+    const Handle id = links_.insert(LinkEntry{navmesh, link});
+    e.link_ids.push_back(id);
+    e.snapshot.reset();
+    return id;
+}
+
+Handle NavMeshRegistry::add_link(Handle navmesh, const Link& link) {
+    std::unique_lock lock(mutex_);
+    return insert_link(navmesh, entry(navmesh), link);
+}
+
+void NavMeshRegistry::update_link(Handle link, const Link& replacement) {
+    std::unique_lock lock(mutex_);
+    LinkEntry* found = links_.find(link);
+    if (!found) fail_stale("link", link);
+    const bool generated = found->link.generated;
+    found->link = replacement;
+    found->link.generated = generated;
+    entry(found->navmesh).snapshot.reset();
+}
+
+void NavMeshRegistry::remove_link(Handle link) {
+    std::unique_lock lock(mutex_);
+    const LinkEntry* found = links_.find(link);
+    if (!found) fail_stale("link", link);
+    Entry& e = entry(found->navmesh);
+    e.link_ids.erase(std::find(e.link_ids.begin(), e.link_ids.end(), link));
+    links_.erase(link);
+    e.snapshot.reset();
+}
+
+bool NavMeshRegistry::contains_link(Handle link) const {
+    std::shared_lock lock(mutex_);
+    return links_.find(link) != nullptr;
+}
+
+std::pair<Handle, Link> NavMeshRegistry::link(Handle link) const {
+    std::shared_lock lock(mutex_);
+    const LinkEntry* found = links_.find(link);
+    if (!found) fail_stale("link", link);
+    return {found->navmesh, found->link};
+}
+
+const std::shared_ptr<const LinkSnapshot>& NavMeshRegistry::snapshot_of(const Entry& e) const {
+    // A run of edits with no reader between them costs one copy of the list, not one per edit.
+    if (!e.snapshot) {
+        auto snapshot = std::make_shared<LinkSnapshot>();
+        snapshot->reserve(e.link_ids.size());
+        for (Handle id : e.link_ids) snapshot->push_back(StoredLink{id, links_.find(id)->link});
+        e.snapshot = std::move(snapshot);
+    }
+    return e.snapshot;
+}
+
+std::shared_ptr<const LinkSnapshot> NavMeshRegistry::links(Handle navmesh) const {
+    {
+        std::shared_lock lock(mutex_);
+        if (const auto& ready = entry(navmesh).snapshot) return ready;
+    }
+    // The first reader since an edit builds it, alone: another reader may have built it meanwhile.
+    std::unique_lock lock(mutex_);
+    return snapshot_of(entry(navmesh));
+}
+
+void NavMeshRegistry::erase_links(Entry& e, bool generated_only) {
+    std::vector<Handle> kept;
+    kept.reserve(e.link_ids.size());  // nothing below may throw once links are being erased
+    for (Handle id : e.link_ids) {
+        if (generated_only && !links_.find(id)->link.generated) kept.push_back(id);
+        else links_.erase(id);
+    }
+    e.link_ids = std::move(kept);
+    e.snapshot.reset();
+}
+
+uint32_t NavMeshRegistry::remove_generated_links(Handle navmesh) {
+    std::unique_lock lock(mutex_);
+    Entry& e = entry(navmesh);
+    const size_t before = e.link_ids.size();
+    erase_links(e, true);
+    e.last = LastGeneration{};
+    return static_cast<uint32_t>(before - e.link_ids.size());
+}
+
+void NavMeshRegistry::replace_links(Handle navmesh, const std::vector<Link>& links) {
+    std::unique_lock lock(mutex_);
+    Entry& e = entry(navmesh);
+    erase_links(e, false);
+    e.link_ids.reserve(links.size());
+    for (const Link& l : links) insert_link(navmesh, e, l);
+    e.last = LastGeneration{};
+}
+
+NavMeshRegistry::GenerationTurn NavMeshRegistry::take_generation_turn(Handle navmesh) {
+    if (holding_generation_turn)
+        fail(ErrorCode::InvalidArgument, "links cannot be generated or updated from inside another generation or update "
+                                         "(its progress callback or a plugin): it could wait for itself");
+    std::shared_ptr<std::mutex> turn;
+    {
+        std::shared_lock lock(mutex_);
+        turn = entry(navmesh).generation_turn;
+    }
+    return GenerationTurn(std::move(turn));
+}
+
+LastGeneration NavMeshRegistry::last_generation(Handle navmesh) const {
+    std::shared_lock lock(mutex_);
+    return entry(navmesh).last;
+}
+
+void NavMeshRegistry::store_generation(Handle navmesh, LastGeneration last, const std::vector<Link>& generated) {
+    std::unique_lock lock(mutex_);
+    Entry& e = entry(navmesh);  // a navmesh removed meanwhile keeps nothing
+    erase_links(e, true);
+    e.link_ids.reserve(e.link_ids.size() + generated.size());
+    for (Link l : generated) {
+        l.generated = true;
+        insert_link(navmesh, e, l);
+    }
+    e.last = std::move(last);
+}
+
+bool NavMeshRegistry::store_update(Handle navmesh, const LinkGeneration* from, const std::vector<Link>& generated) {
+    std::unique_lock lock(mutex_);
+    Entry* e = navmeshes_.find(navmesh);
+    if (!e || e->last.generation.get() != from) return false;
+    erase_links(*e, true);
+    e->link_ids.reserve(e->link_ids.size() + generated.size());
+    for (Link l : generated) {
+        l.generated = true;
+        insert_link(navmesh, *e, l);
+    }
+    return true;
+}
+
+std::shared_ptr<const PathGraph> NavMeshRegistry::path_graph(Handle navmesh) const {
+    std::shared_ptr<const NavMesh> mesh;
+    std::shared_ptr<const LinkSnapshot> snapshot;
+    {
+        std::shared_lock lock(mutex_);
+        const Entry& e = entry(navmesh);
+        if (e.snapshot && e.path_graph && e.path_graph->links_ptr() == e.snapshot) return e.path_graph;
+        mesh = e.navmesh;
+        snapshot = e.snapshot;
+    }
+    if (!snapshot) {
+        std::unique_lock lock(mutex_);
+        const Entry& e = entry(navmesh);
+        snapshot = snapshot_of(e);
+        if (e.path_graph && e.path_graph->links_ptr() == snapshot) return e.path_graph;
+    }
+    // Built outside the lock: requests on other navmeshes, and edits, go on meanwhile.
+    auto graph = std::make_shared<const PathGraph>(std::move(mesh), snapshot);
+    std::unique_lock lock(mutex_);
+    if (const Entry* e = navmeshes_.find(navmesh); e && e->snapshot == snapshot) e->path_graph = graph;
+    return graph;
+}
+
+}  // namespace nl

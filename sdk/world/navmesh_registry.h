@@ -1,0 +1,114 @@
+// The navmeshes of a world, each with everything that belongs to it: its links (manual and
+// generated, and the snapshot readers take), its last link generation (what an update in a box
+// continues) and the path graph searches read.
+//
+// Locking: one reader-writer lock guards all of it, for every navmesh, so removing a navmesh (with
+// its links, generation and graph) is one step no reader sees half of. Readers (snapshots, graphs,
+// lookups) share it; edits take it alone, and only for bookkeeping: the work that takes time (a link
+// generation, building a path graph) runs outside it, on data the lock handed out, and its result is
+// stored under the lock if the navmesh is still there. The lock is never held while the host or a
+// plugin is called. Separately, each navmesh has a generation turn: its generations and updates run
+// one at a time (see GenerationTurn).
+#pragma once
+
+#include <memory>
+#include <mutex>
+#include <vector>
+
+#include "links/link_generation.h"
+#include "links/link_snapshot.h"
+#include "navmesh/navmesh.h"
+#include "path/path_graph.h"
+#include "util/handle.h"
+#include "util/shared_mutex.h"
+#include "world/plugin_settings.h"
+
+namespace nl {
+
+// A navmesh's last generation and what it ran with: what nl_navmesh_update_links_in_box continues.
+struct LastGeneration {
+    std::shared_ptr<LinkGeneration> generation;  // null: none, or forgotten since
+    PluginSettings plugin_settings;
+};
+
+class NavMeshRegistry {
+public:
+    explicit NavMeshRegistry(uint32_t handle_tag) : navmeshes_(handle_tag), links_(handle_tag) {}
+
+    // Navmeshes. Lookups throw InvalidHandle for a null, removed or foreign handle.
+    Handle add(std::shared_ptr<const NavMesh> navmesh);
+    // Removes the navmesh, its links, its last generation and its path graph together. Readers that
+    // hold its navmesh, a snapshot or a graph keep them; a generation that finishes later keeps nothing.
+    void remove(Handle navmesh);
+    bool contains(Handle navmesh) const;
+    std::shared_ptr<const NavMesh> navmesh(Handle navmesh) const;
+    std::vector<Handle> handles() const;
+
+    // Links. Each edit publishes: the next snapshot reader sees it.
+    Handle add_link(Handle navmesh, const Link& link);
+    // Replaces a link's fields; its navmesh and whether it was generated stay.
+    void update_link(Handle link, const Link& replacement);
+    void remove_link(Handle link);
+    bool contains_link(Handle link) const;
+    // The link and the navmesh it belongs to.
+    std::pair<Handle, Link> link(Handle link) const;
+    std::shared_ptr<const LinkSnapshot> links(Handle navmesh) const;
+    // Removes the generated links; manual ones stay. The last generation is forgotten with them.
+    uint32_t remove_generated_links(Handle navmesh);
+    // Replaces every link (a links file); the last generation is forgotten.
+    void replace_links(Handle navmesh, const std::vector<Link>& links);
+
+    // Generations and updates of one navmesh run one at a time, from reading its last generation to
+    // storing its links, so a later one never loses to an earlier one: hold a turn for that span. A
+    // thread holds one turn at a time: asking for a second (from a progress callback or a plugin of
+    // the generation it runs) throws InvalidArgument instead of waiting, because two threads each
+    // waiting for the other's navmesh from inside their callbacks would never wake.
+    class GenerationTurn {
+    public:
+        explicit GenerationTurn(std::shared_ptr<std::mutex> turn);
+        ~GenerationTurn();
+        GenerationTurn(const GenerationTurn&) = delete;
+        GenerationTurn& operator=(const GenerationTurn&) = delete;
+
+    private:
+        std::shared_ptr<std::mutex> turn_;
+    };
+    GenerationTurn take_generation_turn(Handle navmesh);
+
+    LastGeneration last_generation(Handle navmesh) const;
+    // A generation's result: its links replace the generated ones and it becomes the last generation.
+    void store_generation(Handle navmesh, LastGeneration last, const std::vector<Link>& generated);
+    // An update's result: stored only while `from` is still the navmesh's last generation (not
+    // forgotten by a removal or a load meanwhile); returns whether it was.
+    bool store_update(Handle navmesh, const LinkGeneration* from, const std::vector<Link>& generated);
+
+    // The graph searches read: the navmesh and its links as they are now, built once per snapshot.
+    std::shared_ptr<const PathGraph> path_graph(Handle navmesh) const;
+
+private:
+    struct Entry {
+        std::shared_ptr<const NavMesh> navmesh;
+        std::vector<Handle> link_ids;                   // in the order they were added
+        mutable std::shared_ptr<const LinkSnapshot> snapshot;  // null after an edit, until read
+        mutable std::shared_ptr<const PathGraph> path_graph;   // for some snapshot; checked on read
+        LastGeneration last;
+        std::shared_ptr<std::mutex> generation_turn = std::make_shared<std::mutex>();
+    };
+    struct LinkEntry {
+        Handle navmesh;
+        Link link;
+    };
+
+    Entry& entry(Handle navmesh);
+    const Entry& entry(Handle navmesh) const;
+    // Builds the entry's snapshot if an edit made it stale; needs the lock held alone.
+    const std::shared_ptr<const LinkSnapshot>& snapshot_of(const Entry& e) const;
+    void erase_links(Entry& e, bool generated_only);
+    Handle insert_link(Handle navmesh, Entry& e, const Link& link);
+
+    mutable SharedMutex mutex_;
+    SlotMap<Entry> navmeshes_;
+    SlotMap<LinkEntry> links_;
+};
+
+}  // namespace nl

@@ -1,0 +1,70 @@
+// What plugins give a world, as C++ interfaces: a navmesh builder and a link-kind provider. The core
+// knows plugins only through these; capi/ adapts the C plugin ABI (plugins/include/navlink/plugin.h)
+// to them, and a C++ host or test may implement them directly.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <cstddef>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "links/link.h"
+#include "navmesh/navmesh_builder.h"
+#include "util/function_ref.h"
+#include "util/handle.h"
+
+namespace nl {
+
+class World;
+
+// What a navmesh build asks of a builder.
+struct NavMeshBuildRequest {
+    std::string builder;               // the builder's name
+    AgentType agent;                   // the body the navmesh is for
+    const void* builder_settings = nullptr;  // the builder's own settings struct, borrowed; opaque here
+    // The builder's settings as JSON text, borrowed; null: none. Handed over as given (a null text
+    // with a length is the builder's to refuse).
+    const char* settings_json = nullptr;
+    size_t settings_json_length = 0;
+};
+
+class NavMeshBuilder {
+public:
+    virtual ~NavMeshBuilder() = default;
+    // A navmesh for request.agent from the world's level geometry, made with build_navmesh. Throws
+    // its own failures (bad settings: InvalidArgument or Parse; no walkable surface: NotFound), and
+    // Internal when the polygons it made were refused (a builder bug, not the caller's).
+    virtual std::shared_ptr<const NavMesh> build(World& world, const NavMeshBuildRequest& request) = 0;
+};
+
+class LinkKindProvider {
+public:
+    virtual ~LinkKindProvider() = default;
+    virtual uint32_t kind() const noexcept = 0;  // >= LinkKind::FirstPluginKind, unique in a world
+    virtual const std::string& kind_name() const noexcept = 0;
+    // Proposes links of this kind for `navmesh`, each through `accept`, which places it on the
+    // navmesh (place_link) and throws when it does not fit (a provider over a C plugin tells the
+    // plugin so); the World then refuses the whole generation. `settings_json`: the object given under
+    // kind_name() in the generation's plugin settings, empty when none was. Throws its own failures.
+    virtual void propose(World& world, Handle navmesh, const std::string& settings_json, FunctionRef<void(Link)> accept) = 0;
+};
+
+struct PluginDescription {
+    std::string name;  // unique in a world
+    std::string version;
+    std::string description;
+    uint32_t abi_version = 0;  // the plugin ABI version it speaks (0 for a C++ plugin)
+    bool builtin = false;      // compiled into the library
+};
+
+class Plugin {
+public:
+    virtual ~Plugin() = default;
+    virtual const PluginDescription& description() const noexcept = 0;
+    virtual NavMeshBuilder* navmesh_builder() noexcept { return nullptr; }
+    virtual LinkKindProvider* link_kind() noexcept { return nullptr; }
+};
+
+}  // namespace nl

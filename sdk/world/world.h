@@ -1,0 +1,102 @@
+// nl::World: the owner of everything a NavLink world holds, and the one composition root of the core.
+// The C layer holds a pointer to one and maps ids and structs; agents and moving surfaces plug in
+// here (docs/architecture.md, "The world").
+//
+// What it owns, created in this order and destroyed in reverse: the tag its handles carry, the task
+// system (batch work), the level (Embree scene of the host's meshes), the navmeshes with everything
+// that belongs to each (NavMeshRegistry: links, last generation, path graph, under one lock), the
+// plugins, and the path queue (its workers stop first).
+//
+// Thread-safety: every method may be called from any thread at once, except the destructor, which
+// must not run with any other call. Methods here span several parts (a build uses a plugin and adds a
+// navmesh; a generation reads the level and stores links); the parts' own methods (level(),
+// navmeshes(), paths()) are thread-safe as documented on them.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "level/level.h"
+#include "links/link_generator.h"
+#include "links/link_settings.h"
+#include "path/path_queue.h"
+#include "util/handle_tag.h"
+#include "util/log.h"
+#include "util/task_system.h"
+#include "world/navmesh_registry.h"
+#include "world/plugin_registry.h"
+#include "world/plugin_settings.h"
+
+namespace nl {
+
+struct WorldSettings {
+    int worker_count = 1;            // threads for batch work, the caller included (>= 1)
+    unsigned path_worker_count = 0;  // threads that plan queued path requests; 0: PathQueue::process only
+    Logger logger;
+    std::unique_ptr<TaskSystem> tasks;  // the host's scheduler; null: TBB with worker_count threads
+};
+
+class World {
+public:
+    // Throws OutOfMemory when every handle tag is held by a live world.
+    explicit World(WorldSettings settings);
+    // Stops the path queue first (queued requests finish as cancelled; their callbacks may still use
+    // the queue), then destroys the plugins, the navmeshes, the level and the task system.
+    ~World();
+    World(const World&) = delete;
+    World& operator=(const World&) = delete;
+
+    uint32_t handle_tag() const noexcept { return handle_tag_.value(); }
+    const Logger& logger() const noexcept { return logger_; }
+    TaskSystem& tasks() const noexcept { return *tasks_; }  // runs work; holds none of the world's state
+    Level& level() noexcept { return *level_; }
+    const Level& level() const noexcept { return *level_; }
+    NavMeshRegistry& navmeshes() noexcept { return navmeshes_; }
+    const NavMeshRegistry& navmeshes() const noexcept { return navmeshes_; }
+    PluginRegistry& plugins() noexcept { return plugins_; }
+    const PluginRegistry& plugins() const noexcept { return plugins_; }
+    PathQueue& paths() noexcept { return paths_; }
+    const PathQueue& paths() const noexcept { return paths_; }
+
+    // A host's navmesh: validated, repaired (logged as a warning) and added. Throws as build_navmesh.
+    Handle add_navmesh(const NavMeshInput& input);
+    // Builds a navmesh with the named builder plugin from the level and adds it. Throws NotFound (no
+    // such builder) and the builder's failures.
+    Handle build_navmesh(const NavMeshBuildRequest& request);
+
+    // Links made outside the generator (the host's), placed on their navmesh (place_link; a bad end
+    // is a failure about the field "start" or "end").
+    Handle add_link(Handle navmesh, Link link);
+    void update_link(Handle link, Link replacement);
+    // Replaces every link of the navmesh with those of a links file (place_saved_link; an end off the
+    // navmesh is a failure about "links[i].start"); nothing changes when one is refused.
+    void load_links(Handle navmesh, std::vector<Link> links);
+
+    // Generates the navmesh's links (jumps, drops, and each link-kind plugin's) against the level and
+    // replaces its generated links with them; manual links stay. The generation is kept for
+    // update_links_in_box. Throws InvalidHandle (also when the navmesh was removed meanwhile: nothing
+    // is kept), Cancelled (progress said stop: nothing changes), InvalidArgument (settings, or a call
+    // from inside another generation's callbacks), and Internal naming a plugin that failed.
+    LinkGenerationReport generate_links(Handle navmesh, const LinkSettings& settings, PluginSettings plugin_settings,
+                                        GenerationProgress progress);
+    // Generates again what level geometry inside `box` can have changed, continuing the last
+    // generation (the plugins' links are proposed again in full). Throws NotFound when there is no
+    // generation to continue (never generated, or its links removed or replaced since), and as
+    // generate_links.
+    LinkGenerationReport update_links_in_box(Handle navmesh, const Aabb& box, GenerationProgress progress);
+
+private:
+    std::vector<Link> plugin_links(Handle navmesh, const NavMesh& mesh, const PluginSettings& settings,
+                                   LinkGenerationReport& report);
+    void log_repairs(const NavMesh& navmesh) const;
+
+    HandleTag handle_tag_;  // released last, after every handle it tagged
+    Logger logger_;
+    std::unique_ptr<TaskSystem> tasks_;
+    std::unique_ptr<Level> level_;
+    NavMeshRegistry navmeshes_;
+    PluginRegistry plugins_;
+    PathQueue paths_;
+};
+
+}  // namespace nl

@@ -1,0 +1,94 @@
+// World's link operations: links placed on their navmesh, and generations with the plugins' links.
+#include <string>
+
+#include "links/link_generation.h"
+#include "links/link_placement.h"
+#include "world/world.h"
+
+namespace nl {
+
+Handle World::add_link(Handle navmesh, Link link) {
+    place_link(*navmeshes_.navmesh(navmesh), link);
+    link.generated = false;
+    return navmeshes_.add_link(navmesh, link);
+}
+
+void World::update_link(Handle link, Link replacement) {
+    const Handle navmesh = navmeshes_.link(link).first;
+    place_link(*navmeshes_.navmesh(navmesh), replacement);
+    navmeshes_.update_link(link, replacement);
+}
+
+void World::load_links(Handle navmesh, std::vector<Link> links) {
+    const std::shared_ptr<const NavMesh> mesh = navmeshes_.navmesh(navmesh);
+    for (size_t i = 0; i < links.size(); ++i) {
+        naming_fields(concat("links[", i, "].").c_str(), [&] { place_saved_link(*mesh, links[i]); });
+        fill_requirements_from_ends(links[i]);
+    }
+    navmeshes_.replace_links(navmesh, links);
+}
+
+std::vector<Link> World::plugin_links(Handle navmesh, const NavMesh& mesh, const PluginSettings& settings,
+                                      LinkGenerationReport& report) {
+    std::vector<Link> out;
+    for (Plugin* plugin : plugins_.link_kind_plugins()) {
+        LinkKindProvider& provider = *plugin->link_kind();
+        std::string refusal;  // why the first link the plugin proposed that does not fit was refused
+        auto accept = [&](Link link) {
+            try {
+                if (static_cast<uint32_t>(link.kind) != provider.kind())
+                    fail(ErrorCode::InvalidArgument, "its kind is ", static_cast<uint32_t>(link.kind), ", not the plugin's kind ",
+                         provider.kind());
+                place_link(mesh, link);
+            } catch (const Error& e) {
+                if (e.code() != ErrorCode::OutOfMemory && refusal.empty()) refusal = e.what();
+                throw;
+            }
+            fill_requirements_from_ends(link);
+            link.generated = true;
+            out.push_back(link);
+        };
+        const auto own = settings.find(provider.kind_name());
+        try {
+            provider.propose(*this, navmesh, own == settings.end() ? std::string() : own->second, accept);
+        } catch (...) {
+            if (refusal.empty()) throw;  // its own failure
+        }
+        if (!refusal.empty())
+            fail(ErrorCode::Internal, "link-kind plugin '", plugin->description().name, "' proposed a link that was refused: ",
+                 refusal);
+    }
+    report.plugin_links = static_cast<uint32_t>(out.size());
+    return out;
+}
+
+LinkGenerationReport World::generate_links(Handle navmesh, const LinkSettings& settings, PluginSettings plugin_settings,
+                                           GenerationProgress progress) {
+    const std::shared_ptr<const NavMesh> mesh = navmeshes_.navmesh(navmesh);
+    auto generation = std::make_shared<LinkGeneration>(mesh, settings, GenerationMethod::Indexed);
+    const NavMeshRegistry::GenerationTurn one_at_a_time = navmeshes_.take_generation_turn(navmesh);
+    LinkGenerationReport report;
+    std::vector<Link> links = generation->run(*level_, *tasks_, report, progress);
+    const std::vector<Link> extra = plugin_links(navmesh, *mesh, plugin_settings, report);
+    links.insert(links.end(), extra.begin(), extra.end());
+    navmeshes_.store_generation(navmesh, LastGeneration{std::move(generation), std::move(plugin_settings)}, links);
+    return report;
+}
+
+LinkGenerationReport World::update_links_in_box(Handle navmesh, const Aabb& box, GenerationProgress progress) {
+    const std::shared_ptr<const NavMesh> mesh = navmeshes_.navmesh(navmesh);
+    const NavMeshRegistry::GenerationTurn one_at_a_time = navmeshes_.take_generation_turn(navmesh);
+    const LastGeneration last = navmeshes_.last_generation(navmesh);
+    if (!last.generation)
+        fail(ErrorCode::NotFound, "the navmesh has no generation to update (never generated, or its generated links were "
+                                  "removed or replaced by a JSON load since): generate its links first");
+    LinkGenerationReport report;
+    std::vector<Link> links = last.generation->update(box, *level_, *tasks_, report, progress);
+    const std::vector<Link> extra = plugin_links(navmesh, *mesh, last.plugin_settings, report);
+    links.insert(links.end(), extra.begin(), extra.end());
+    if (!navmeshes_.store_update(navmesh, last.generation.get(), links))
+        fail(ErrorCode::NotFound, "the navmesh's generated links were removed or replaced by a JSON load during the update");
+    return report;
+}
+
+}  // namespace nl
