@@ -73,6 +73,43 @@ void list_into(const std::vector<Item>& items, Out* out, uint32_t capacity, uint
     });
 }
 
+// Output arrays of growable elements (nl_link, nl_path_point, ...): the caller's element size is its
+// first element's `size` (at least `first_version_size`); element i is written at i times that
+// stride, as many bytes of it as both sides know, with its `size` set to the caller's.
+template <typename T>
+class ElementWriter {
+public:
+    // Elements of a newer header than the library's are allowed, up to a bound that also catches
+    // most uninitialised memory (a malloc'd array whose first `size` was never set).
+    static constexpr uint32_t kLargestElement = 4096;
+
+    ElementWriter(T* out, size_t first_version_size, const char* out_name) : bytes_(reinterpret_cast<unsigned char*>(out)) {
+        stride_ = out->size;
+        if (stride_ < first_version_size || stride_ > kLargestElement || stride_ % alignof(T) != 0)
+            fail(ErrorCode::InvalidArgument, out_name, "[0].size is ", stride_, ", expected sizeof (at least ", first_version_size,
+                 ", a multiple of ", alignof(T), "; set it with its nl_*_init function)");
+    }
+    void write(size_t i, T value) const {
+        value.size = stride_;
+        std::memcpy(bytes_ + i * size_t(stride_), &value, std::min<size_t>(stride_, sizeof(T)));
+    }
+
+private:
+    unsigned char* bytes_;
+    uint32_t stride_ = 0;
+};
+
+// list_into for growable elements.
+template <typename Item, typename Out, typename Convert>
+void list_growable_into(const std::vector<Item>& items, Out* out, uint32_t capacity, uint32_t* out_count,
+                        size_t first_version_size, const char* out_name, Convert&& convert) {
+    list_into(items.size(), out, capacity, out_count, out_name, [&] {
+        if (items.empty()) return;
+        const ElementWriter<Out> writer(out, first_version_size, out_name);
+        for (size_t i = 0; i < items.size(); ++i) writer.write(i, convert(items[i]));
+    });
+}
+
 // Growable structs: a caller built against an older header passes a smaller `size`. Fields it does
 // not have keep their defaults; `first_version_size` is where the struct's first release ended
 // (offsetof + sizeof of its last field then), which is all the library can require.

@@ -65,15 +65,19 @@ nl_mesh_def obj_options(const nl_mesh_def* in) {
     return def;
 }
 
-void write(nl_ray_hit& out, const nl::RayHit& hit) {
-    out = nl_ray_hit{};
-    if (!hit.hit) return;
+// nl_ray_hit's first release with a `size` (0.2): every field up to `reserved`.
+constexpr size_t kRayHitFirstSize = sizeof(nl_ray_hit);
+
+nl_ray_hit to_c(const nl::RayHit& hit) {
+    nl_ray_hit out{};
+    if (!hit.hit) return out;
     out.hit = 1;
     out.distance = hit.distance;
     Eigen::Map<nl::Vec3>(out.point) = hit.point;
     Eigen::Map<nl::Vec3>(out.normal) = hit.normal;
     out.mesh = to_id<nl_mesh_id>(hit.mesh);
     out.triangle = hit.triangle;
+    return out;
 }
 
 nl::Vec3 read_point(const float* p, const char* array, uint32_t index, const char* field) {
@@ -105,9 +109,10 @@ void cast_rays(const World& world, const nl_ray* rays, uint32_t count, nl_ray_hi
             fail(ErrorCode::InvalidArgument, "rays[", i, "].max_distance is ", r.max_distance, " (must be > 0)");
         batch[i] = Ray{read_point(r.origin, "rays", i, "origin"), read_direction(r.direction, i), r.max_distance};
     }
+    const ElementWriter<nl_ray_hit> writer(out_hits, kRayHitFirstSize, "out_hits");
     std::vector<RayHit> hits(count);
     world.level().cast_rays(batch.data(), count, hits.data());
-    for (uint32_t i = 0; i < count; ++i) write(out_hits[i], hits[i]);
+    for (uint32_t i = 0; i < count; ++i) writer.write(i, to_c(hits[i]));
 }
 
 void segments_blocked(const World& world, const nl_segment* segments, uint32_t count, uint8_t* out_blocked) {

@@ -25,6 +25,7 @@ namespace {
 constexpr size_t kLinkDefFirstSize = offsetof(nl_link_def, requirements) + offsetof(nl_link_requirements, length);
 constexpr size_t kSettingsFirstSize = offsetof(nl_link_settings, plugin_settings_json_length) + sizeof(size_t);
 constexpr size_t kReportFirstSize = offsetof(nl_link_generation_report, milliseconds_total) + sizeof(double);
+constexpr size_t kLinkFirstSize = sizeof(nl_link);  // its first release with a `size` (0.2)
 constexpr size_t kMaxDropAngles = sizeof(nl_link_settings::drop_angles) / sizeof(float);
 
 void copy_point(float* out, const nl::Vec3& v) { Eigen::Map<nl::Vec3>{out} = v; }
@@ -90,6 +91,7 @@ nl_link_settings to_c(const nl::LinkSettings& s) {
 nl_link to_c(const nl::StoredLink& stored, nl::Handle navmesh) {
     const nl::Link& l = stored.link;
     nl_link c{};
+    c.size = sizeof c;
     c.id = to_id<nl_link_id>(stored.id);
     c.navmesh = to_id<nl_navmesh_id>(navmesh);
     c.kind = static_cast<nl_link_kind>(l.kind);
@@ -185,7 +187,8 @@ Link link_from_def(const nl_link_def& given) {
     l.requirements.drop = r.drop;
     l.requirements.clearance_width = r.clearance_width;
     l.requirements.abilities = r.abilities;
-    fill_requirements_from_ends(l);
+    if (def.requirements_from_ends) set_requirements_from_ends(l);
+    else if (l.requirements.length == 0.0f) l.requirements.length = Vec3(l.end.x() - l.start.x(), 0.0f, l.end.z() - l.start.z()).norm();
     return l;
 }
 
@@ -198,6 +201,7 @@ NL_API nl_link_def nl_default_link_def(void) {
     def.size = sizeof def;
     def.kind = NL_LINK_MANUAL;
     def.enabled = 1;
+    def.requirements_from_ends = 1;
     def.cost_modifier = 1.0f;
     return def;
 }
@@ -236,7 +240,7 @@ NL_API nl_status nl_link_get(const nl_world* world, nl_link_id link, nl_link* ou
     return guarded("nl_link_get", world, [&] {
         const auto [navmesh, stored] = deref(world).navmeshes().link(to_handle(link));
         require(out_link, "out_link");
-        *out_link = to_c(nl::StoredLink{to_handle(link), stored}, navmesh);
+        nl::capi::write_growable(out_link, to_c(nl::StoredLink{to_handle(link), stored}, navmesh), kLinkFirstSize, "out_link");
     });
 }
 
@@ -245,8 +249,8 @@ NL_API nl_status nl_navmesh_get_links(const nl_world* world, nl_navmesh_id navme
     return guarded("nl_navmesh_get_links", world, [&] {
         const nl::Handle mesh = to_handle(navmesh);
         const auto snapshot = deref(world).navmeshes().links(mesh);
-        nl::capi::list_into(*snapshot, out_links, capacity, out_count, "out_links",
-                            [&](const nl::StoredLink& s) { return to_c(s, mesh); });
+        nl::capi::list_growable_into(*snapshot, out_links, capacity, out_count, kLinkFirstSize, "out_links",
+                                     [&](const nl::StoredLink& s) { return to_c(s, mesh); });
     });
 }
 

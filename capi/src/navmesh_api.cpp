@@ -19,6 +19,7 @@ namespace {
 constexpr size_t kNavMeshDefFirstSize = offsetof(nl_navmesh_def, detail_triangle_starts) + sizeof(const uint32_t*);
 constexpr uint32_t kMaxCorners = NL_MAX_POLYGON_VERTICES;
 constexpr size_t kNavMeshInfoFirstSize = offsetof(nl_navmesh_info, bounds_max) + 3 * sizeof(float);
+constexpr size_t kNavPolygonFirstSize = sizeof(nl_nav_polygon);  // its first release with a `size` (0.2)
 static_assert(NL_MAX_POLYGON_VERTICES == nl::kMaxPolygonVertices, "header and core disagree");
 static_assert(NL_NO_POLYGON == nl::kNoPolygon, "header and core disagree");
 
@@ -194,6 +195,7 @@ NL_API nl_status nl_navmesh_get_polygon(const nl_world* world, nl_navmesh_id nav
         if (polygon >= mesh->polygon_count())
             fail(ErrorCode::InvalidArgument, "polygon ", polygon, " is out of range (polygon_count = ", mesh->polygon_count(), ")");
         nl_nav_polygon out{};
+        out.size = sizeof out;
         out.vertex_count = mesh->corner_count(polygon);
         for (uint32_t k = 0; k < out.vertex_count; ++k) {
             out.vertices[k] = mesh->corner(polygon, k);
@@ -203,7 +205,7 @@ NL_API nl_status nl_navmesh_get_polygon(const nl_world* world, nl_navmesh_id nav
         out.area = mesh->area(polygon);
         copy_point(out.normal, mesh->normal(polygon));
         copy_point(out.centre, mesh->centre(polygon));
-        *out_polygon = out;
+        nl::capi::write_growable(out_polygon, out, kNavPolygonFirstSize, "out_polygon");
     });
 }
 

@@ -1,6 +1,9 @@
 // nl_path_*: path requests, synchronous and queued, over the core's planner and queue.
 #include <cmath>
 #include <cstddef>
+#include <memory>
+#include <optional>
+#include <vector>
 
 #include "entry_guard.h"
 #include "host_input.h"
@@ -21,6 +24,9 @@ namespace {
 constexpr size_t kRequestFirstSize = offsetof(nl_path_request_def, user) + sizeof(void*);
 constexpr size_t kResultFirstSize = offsetof(nl_path_result, goal) + 3 * sizeof(float);
 constexpr size_t kStatsFirstSize = offsetof(nl_path_queue_stats, finished) + sizeof(uint64_t);
+constexpr size_t kPointFirstSize = sizeof(nl_path_point);       // their first releases with a `size` (0.2)
+constexpr size_t kFinishedFirstSize = sizeof(nl_path_finished);
+constexpr size_t kBudgetFirstSize = sizeof(nl_path_budget);
 constexpr uint32_t kMaxAreaCosts = 256;
 
 static_assert(uint32_t(nl::PathOutcome::Failed) == NL_PATH_FAILED && uint32_t(nl::PathOutcome::Partial) == NL_PATH_PARTIAL,
@@ -67,6 +73,7 @@ Request read_request(const nl::World& w, const nl_path_request_def* in) {
 
 nl_path_point to_c(const nl::PathPoint& p) {
     nl_path_point c{};
+    c.size = sizeof c;
     Eigen::Map<nl::Vec3>(c.position) = p.position;
     c.polygon = p.polygon;
     c.segment = p.segment;
@@ -102,13 +109,32 @@ void write_result(const nl::PathResult& r, nl_path_result* out_result, nl_path_p
     require(out_count, "out_count");
     if (!out_points && capacity > 0) fail(ErrorCode::InvalidArgument, "out_points is null but capacity is ", capacity);
     nl::capi::write_growable(out_result, to_c(r), kResultFirstSize, "out_result");
-    nl::capi::list_into(r.points, out_points, capacity, out_count, "out_points", [](const nl::PathPoint& p) { return to_c(p); });
+    nl::capi::list_growable_into(r.points, out_points, capacity, out_count, kPointFirstSize, "out_points",
+                                 [](const nl::PathPoint& p) { return to_c(p); });
 }
 
 // The status of a call that returned a result: partial paths carry PARTIAL_RESULT, as Detour's do.
 nl_status with_detail(nl_status status, bool partial) {
     if (!NL_SUCCEEDED(status) || !partial) return status;
     return nl::capi::record(nullptr, nullptr, status | NL_STATUS_PARTIAL_RESULT, "");
+}
+
+// The last synchronous plan of this thread, kept so that a second call for the points (after
+// asking for the count, or with too small a buffer) copies it instead of planning again. It reuses
+// its memory: a synchronous search allocates nothing once warm.
+struct LastPlan {
+    std::weak_ptr<const nl::PathGraph> graph;  // weak: a kept plan must not keep a removed navmesh
+    nl::PathQuery query;
+    nl::PathResult result;
+    bool reusable = false;
+};
+
+bool same_query(const nl::PathQuery& a, const nl::PathQuery& b) {
+    return a.start == b.start && a.goal == b.goal && a.search_half_extents == b.search_half_extents &&
+           a.agent.max_jump_distance == b.agent.max_jump_distance && a.agent.max_jump_height == b.agent.max_jump_height &&
+           a.agent.max_drop_height == b.agent.max_drop_height && a.agent.radius == b.agent.radius &&
+           a.agent.abilities == b.agent.abilities && a.area_costs == b.area_costs && a.link_cost == b.link_cost &&
+           a.max_nodes == b.max_nodes && a.accept_partial == b.accept_partial;
 }
 
 }  // namespace
@@ -119,6 +145,27 @@ NL_API nl_agent_capabilities nl_default_agent_capabilities(void) {
     const nl::AgentCapabilities core;
     return nl_agent_capabilities{core.max_jump_distance, core.max_jump_height, core.max_drop_height, core.radius,
                                  core.abilities};
+}
+
+NL_API nl_status nl_path_find(nl_world* world, const nl_path_request_def* def, nl_path_result* out_result,
+                              nl_path_point* out_points, uint32_t capacity, uint32_t* out_count) {
+    bool partial = false;
+    const nl_status status = guarded("nl_path_find", world, [&] {
+        require(out_result, "out_result");
+        Request request = read_request(deref(world), def);
+        thread_local LastPlan last;
+        if (!(last.reusable && last.graph.lock() == request.graph && same_query(last.query, request.query))) {
+            last.reusable = false;
+            nl::plan_path(*request.graph, request.query, nullptr, last.result);
+            last.graph = request.graph;
+            last.query = std::move(request.query);
+        }
+        partial = last.result.outcome == nl::PathOutcome::Partial;
+        // Kept for the next call only while the points are still owed.
+        last.reusable = !out_points || capacity < last.result.points.size();
+        write_result(last.result, out_result, out_points, capacity, out_count);
+    });
+    return with_detail(status, partial);
 }
 
 NL_API nl_path_request_def nl_default_path_request_def(void) {
@@ -133,19 +180,7 @@ NL_API nl_path_request_def nl_default_path_request_def(void) {
     return def;
 }
 
-NL_API nl_status nl_path_find(nl_world* world, const nl_path_request_def* def, nl_path_result* out_result,
-                              nl_path_point* out_points, uint32_t capacity, uint32_t* out_count) {
-    bool partial = false;
-    const nl_status status = guarded("nl_path_find", world, [&] {
-        require(out_result, "out_result");
-        const Request request = read_request(deref(world), def);
-        thread_local nl::PathResult result;  // reused: a synchronous search allocates nothing once warm
-        nl::plan_path(*request.graph, request.query, nullptr, result);
-        partial = result.outcome == nl::PathOutcome::Partial;
-        write_result(result, out_result, out_points, capacity, out_count);
-    });
-    return with_detail(status, partial);
-}
+
 
 NL_API nl_status nl_path_request(nl_world* world, const nl_path_request_def* def, nl_path_ticket* out_ticket) {
     return guarded("nl_path_request", world, [&] {
@@ -159,7 +194,8 @@ NL_API nl_status nl_path_request(nl_world* world, const nl_path_request_def* def
                 c_callback(user, to_id<nl_path_ticket>(ticket), static_cast<nl_path_outcome>(outcome));
             };
         }
-        const nl::Handle ticket = w.paths().submit(std::move(request.graph), std::move(request.query), std::move(callback));
+        const nl::Handle ticket =
+            w.paths().submit(std::move(request.graph), std::move(request.query), std::move(callback), request.def.user);
         *out_ticket = to_id<nl_path_ticket>(ticket);
     });
 }
@@ -194,12 +230,44 @@ NL_API nl_status nl_path_release(nl_world* world, nl_path_ticket ticket) {
     return guarded("nl_path_release", world, [&] { deref(world).paths().release(to_handle(ticket)); });
 }
 
-NL_API nl_status nl_path_process(nl_world* world, uint32_t max_requests, double max_milliseconds,
-                                 uint32_t* out_processed) {
+NL_API nl_path_budget nl_default_path_budget(void) {
+    nl_path_budget budget{};
+    budget.size = sizeof budget;
+    return budget;
+}
+
+NL_API nl_status nl_path_process(nl_world* world, const nl_path_budget* budget, uint32_t* out_processed) {
     return guarded("nl_path_process", world, [&] {
-        if (std::isnan(max_milliseconds)) fail(ErrorCode::InvalidArgument, "max_milliseconds is NaN");
-        const uint32_t processed = deref(world).paths().process(max_requests, max_milliseconds);
+        nl::World& w = deref(world);
+        const nl_path_budget given =
+            budget ? nl::capi::read_growable(*budget, nl_default_path_budget(), kBudgetFirstSize, "budget") : nl_default_path_budget();
+        if (std::isnan(given.max_milliseconds)) fail(ErrorCode::InvalidArgument, "budget->max_milliseconds is NaN");
+        const uint32_t processed =
+            w.paths().process(nl::ProcessBudget{given.max_requests, given.max_milliseconds, given.max_search_nodes});
         if (out_processed) *out_processed = processed;
+    });
+}
+
+NL_API nl_status nl_path_take_finished(nl_world* world, nl_path_finished* out_finished, uint32_t capacity,
+                                       uint32_t* out_count, uint32_t* out_remaining) {
+    return guarded("nl_path_take_finished", world, [&] {
+        nl::World& w = deref(world);
+        require(out_count, "out_count");
+        if (!out_finished && capacity > 0) fail(ErrorCode::InvalidArgument, "out_finished is null but capacity is ", capacity);
+        // Checked before anything is taken: a refusal must lose no finished request.
+        std::optional<nl::capi::ElementWriter<nl_path_finished>> writer;
+        if (capacity > 0) writer.emplace(out_finished, kFinishedFirstSize, "out_finished");
+        thread_local std::vector<nl::FinishedRequest> taken;
+        const uint32_t remaining = w.paths().take_finished(capacity, taken);
+        for (size_t i = 0; i < taken.size(); ++i) {
+            nl_path_finished f{};
+            f.outcome = static_cast<nl_path_outcome>(taken[i].outcome);
+            f.ticket = to_id<nl_path_ticket>(taken[i].ticket);
+            f.user = taken[i].user;
+            writer->write(i, f);
+        }
+        *out_count = static_cast<uint32_t>(taken.size());
+        if (out_remaining) *out_remaining = remaining;
     });
 }
 

@@ -61,7 +61,7 @@ void CPlugin::check_description(const std::string& origin) const {
         (!info_.link_kind.generate || !info_.link_kind.kind_name || info_.link_kind.kind < NL_LINK_FIRST_PLUGIN_KIND))
         fail(ErrorCode::InvalidArgument, "plugin '", info_.name,
              "' says it provides a link kind but its kind is below NL_LINK_FIRST_PLUGIN_KIND or has no name or generate function");
-    if (info_.kinds & ~(NL_PLUGIN_NAVMESH_BUILDER | NL_PLUGIN_LINK_KIND | NL_PLUGIN_PATH_MODIFIER))
+    if (info_.kinds & ~(NL_PLUGIN_NAVMESH_BUILDER | NL_PLUGIN_LINK_KIND))
         fail(ErrorCode::InvalidArgument, "plugin '", info_.name, "' has unknown kinds 0x", std::hex, info_.kinds);
 }
 

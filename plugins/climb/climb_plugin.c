@@ -129,7 +129,7 @@ static nl_status generate(void* state, const nl_plugin_host* host, nl_navmesh_id
                                 edge->start[2] + t * dz};
             nl_segment chest, headroom;
             nl_ray down;
-            nl_ray_hit hit;
+            nl_ray_hit hit = nl_ray_hit_init();
             uint8_t blocked[2] = {0, 0};
             nl_nav_point top;
             const float extents[3] = {info.agent.radius * 2.0f + 0.5f, 1.0f, info.agent.radius * 2.0f + 0.5f};
@@ -168,6 +168,8 @@ static nl_status generate(void* state, const nl_plugin_host* host, nl_navmesh_id
             link.bidirectional = 1;
             link.enabled = 1;
             link.cost_modifier = 2.0f; /* climbing is slower than walking */
+            /* A climb asks for the ability, not for a jump's or a drop's reach. */
+            link.requirements_from_ends = 0;
             link.requirements.abilities = 1ull << s.ability_bit;
             status = sink(sink_context, &link);
         }

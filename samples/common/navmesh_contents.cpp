@@ -7,9 +7,9 @@ namespace nl::samples {
 std::vector<nl_link> read_links(const nl_world* world, nl_navmesh_id navmesh) {
     uint32_t count = 0;
     check(nl_navmesh_get_links(world, navmesh, nullptr, 0, &count), "listing the links");
-    std::vector<nl_link> links(count);
+    std::vector<nl_link> links(count, nl_link_init());
     check(nl_navmesh_get_links(world, navmesh, links.data(), count, &count), "listing the links");
-    links.resize(count);
+    links.resize(count, nl_link_init());
     return links;
 }
 
@@ -23,7 +23,7 @@ NavmeshContents read_navmesh_contents(const nl_world* world, nl_navmesh_id navme
     nl_navmesh_info info{};
     info.size = sizeof info;
     check(nl_navmesh_get_info(world, navmesh, &info), "reading the navmesh");
-    out.polygons.resize(info.polygon_count);
+    out.polygons.resize(info.polygon_count, nl_nav_polygon_init());
     for (uint32_t p = 0; p < info.polygon_count; ++p)
         check(nl_navmesh_get_polygon(world, navmesh, p, &out.polygons[p]), "reading the navmesh");
 

@@ -23,30 +23,30 @@ PlannedPath find_path(nl_world* world, nl_navmesh_id navmesh, const float start[
     const nl_path_request_def def = path_request(navmesh, start, goal, agent);
     PlannedPath path;
     path.result.size = sizeof path.result;
-    path.points.resize(256);
+    path.points.resize(256, nl_path_point_init());
     uint32_t count = 0;
     nl_status status = nl_path_find(world, &def, &path.result, path.points.data(), 256, &count);
     if (NL_FAILED(status) && (status & NL_STATUS_BUFFER_TOO_SMALL)) {
-        path.points.resize(count);  // a long path: plan again with room for all of it
+        path.points.resize(count, nl_path_point_init());  // a long path: plan again with room for all of it
         status = nl_path_find(world, &def, &path.result, path.points.data(), count, &count);
     }
     check(status, "planning the path");
-    path.points.resize(count);
+    path.points.resize(count, nl_path_point_init());
     return path;
 }
 
 PlannedPath queued_result(const nl_world* world, nl_path_ticket ticket) {
     PlannedPath path;
     path.result.size = sizeof path.result;
-    path.points.resize(256);
+    path.points.resize(256, nl_path_point_init());
     uint32_t count = 0;
     nl_status status = nl_path_get_result(world, ticket, &path.result, path.points.data(), 256, &count);
     if (NL_FAILED(status) && (status & NL_STATUS_BUFFER_TOO_SMALL)) {
-        path.points.resize(count);
+        path.points.resize(count, nl_path_point_init());
         status = nl_path_get_result(world, ticket, &path.result, path.points.data(), count, &count);
     }
     check(status, "reading a path result");
-    path.points.resize(count);
+    path.points.resize(count, nl_path_point_init());
     return path;
 }
 

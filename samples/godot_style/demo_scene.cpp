@@ -31,8 +31,9 @@ nl_link_def ladder_def(const levelgen::GeneratedLevel& level) {
         def.end[k] = top[k];
     }
     def.bidirectional = 0;
-    // Requirements all zero would be computed from the ends (a 2 m rise: a jump). A ladder asks for
-    // the ability, and the step onto its first rung.
+    // Measured from its ends it would be a 2 m jump up; a ladder asks for the ability, and the step
+    // onto its first rung.
+    def.requirements_from_ends = 0;
     def.requirements.rise = 0.3f;
     def.requirements.abilities = kClimbAbility;
     return def;

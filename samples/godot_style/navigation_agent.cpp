@@ -69,7 +69,7 @@ void NavigationAgent::begin_segment() {
     }
     const nl_path_point& from = path_.points[segment_];
     if (from.segment != NL_SEGMENT_WALK) {
-        nl_link link{};
+        nl_link link = nl_link_init();
         if (NL_FAILED(nl_link_get(tree()->navigation().world(), from.link, &link))) {
             request_path();  // the link is gone (a NavigationLink left the tree): plan again from here
             return;

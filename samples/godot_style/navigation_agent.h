@@ -23,7 +23,7 @@ class NavigationRegion;
 
 // A link the agent took, as it was when the agent took it.
 struct TakenLink {
-    nl_link link;        // the link's record (kind, ends, requirements)
+    nl_link link = nl_link_init();        // the link's record (kind, ends, requirements)
     uint8_t reversed;    // taken from its end to its start
     nl_segment_kind as;  // how it was travelled (a drop climbed back up is a jump)
     float apex_height;   // the path point's apex height

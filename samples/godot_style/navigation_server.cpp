@@ -40,7 +40,7 @@ bool NavigationServer::has_path_workers() const {
 }
 
 void NavigationServer::sync() {
-    if (!has_path_workers()) samples::check(nl_path_process(world_.get(), 0, 0.0, nullptr), "planning paths");
+    if (!has_path_workers()) samples::check(nl_path_process(world_.get(), nullptr, nullptr), "planning paths");
 }
 
 void NavigationServer::on_path_finished(void* user, nl_path_ticket ticket, nl_path_outcome outcome) {

@@ -97,7 +97,7 @@ int main(int argc, char** argv) {
             grid.push_back(ray);
         }
     }
-    std::vector<nl_ray_hit> hits(grid.size());
+    std::vector<nl_ray_hit> hits(grid.size(), nl_ray_hit_init());
     const double first_start = nl::samples::now_ms();
     if (NL_FAILED(nl_world_cast_rays(world, grid.data(), uint32_t(grid.size()), hits.data()))) return fail("casting rays");
     const double first_ms = nl::samples::now_ms() - first_start;  // includes building the BVH
@@ -124,7 +124,7 @@ int main(int argc, char** argv) {
         }
         rays[i].max_distance = INFINITY;
     }
-    std::vector<nl_ray_hit> random_hits(count);
+    std::vector<nl_ray_hit> random_hits(count, nl_ray_hit_init());
     std::vector<uint8_t> blocked(count);
     double start = nl::samples::now_ms();
     if (NL_FAILED(nl_world_cast_rays(world, rays.data(), count, random_hits.data()))) return fail("casting rays");

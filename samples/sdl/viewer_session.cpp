@@ -73,7 +73,7 @@ std::optional<ViewerSession::Point> ViewerSession::pick(SDL_FPoint pixel, const 
         ray.direction[k] = direction[k];
     }
     ray.max_distance = 2.0f * reach;
-    nl_ray_hit hit{};
+    nl_ray_hit hit = nl_ray_hit_init();
     // Picking only reads the level; a failure (a point beyond the coordinate limit) is a miss.
     if (NL_FAILED(nl_world_cast_rays(world_.get(), &ray, 1, &hit)) || !hit.hit) return std::nullopt;
     return Point{hit.point[0], hit.point[1], hit.point[2]};
@@ -138,7 +138,7 @@ bool ViewerSession::update() {
 
 void ViewerSession::wait_for_paths() {
     while (waiting()) {
-        samples::check(nl_path_process(world_.get(), 0, 0.0, nullptr), "running the path queue");
+        samples::check(nl_path_process(world_.get(), nullptr, nullptr), "running the path queue");
         update();
     }
 }

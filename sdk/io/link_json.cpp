@@ -160,10 +160,13 @@ std::vector<Link> links_from_json(std::string_view text) {
         // The navmesh's polygons under the ends when saved; the loader checks they still fit.
         l.start_polygon = static_cast<uint32_t>(std::min<uint64_t>(r.whole("start_polygon", UINT32_MAX), UINT32_MAX));
         l.end_polygon = static_cast<uint32_t>(std::min<uint64_t>(r.whole("end_polygon", UINT32_MAX), UINT32_MAX));
+        // Without "requires", the link asks what its ends measure; with it, what it says (a file
+        // from before "length" existed gets the ends' length).
+        set_requirements_from_ends(l);
         if (const Json* requirements = r.find("requires")) {
             const Reader q(*requirements, r.path() + ".requires");
             l.requirements.gap = q.number("gap", 0.0f);
-            l.requirements.length = q.number("length", 0.0f);
+            l.requirements.length = q.number("length", l.requirements.length);
             l.requirements.rise = q.number("rise", 0.0f);
             l.requirements.drop = q.number("drop", 0.0f);
             l.requirements.clearance_width = q.number("clearance_width", 0.0f);

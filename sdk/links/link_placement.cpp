@@ -36,10 +36,4 @@ void place_saved_link(const NavMesh& navmesh, Link& link) {
     link.end_polygon = polygon_still_under(navmesh, link.end, link.end_polygon, "end");
 }
 
-void fill_requirements_from_ends(Link& link) {
-    LinkRequirements& r = link.requirements;
-    if (r.gap == 0.0f && r.rise == 0.0f && r.drop == 0.0f) set_requirements_from_ends(link);
-    if (r.length == 0.0f) r.length = Vec3(link.end.x() - link.start.x(), 0.0f, link.end.z() - link.start.z()).norm();
-}
-
 }  // namespace nl

@@ -21,8 +21,4 @@ void place_link(const NavMesh& navmesh, Link& link);
 // build of the navmesh keeps the polygons it can; the others are located again.
 void place_saved_link(const NavMesh& navmesh, Link& link);
 
-// The requirements of a link whose figures the host left out: gap, rise and drop from the ends when
-// all three are zero, and the length from the ends when it is zero.
-void fill_requirements_from_ends(Link& link);
-
 }  // namespace nl

@@ -63,7 +63,7 @@ void PathQueue::shutdown() {
 
 PathQueue::~PathQueue() { shutdown(); }
 
-Handle PathQueue::submit(std::shared_ptr<const PathGraph> graph, PathQuery query, PathCallback callback) {
+Handle PathQueue::submit(std::shared_ptr<const PathGraph> graph, PathQuery query, PathCallback callback, void* user) {
     auto job = std::make_shared<Job>();
     job->graph = std::move(graph);
     job->query = std::move(query);
@@ -73,7 +73,7 @@ Handle PathQueue::submit(std::shared_ptr<const PathGraph> graph, PathQuery query
         std::lock_guard lock(mutex_);
         // A callback answering the shutdown's cancellations with new requests would never end it.
         if (stopping_) fail(ErrorCode::Cancelled, "the world is being destroyed");
-        h = tickets_.insert(Ticket{std::move(job), PathResult{}, false, false});
+        h = tickets_.insert(Ticket{std::move(job), PathResult{}, false, false, user});
         try {
             queue_.push_back(h);
         } catch (...) {
@@ -126,6 +126,11 @@ void PathQueue::release(Handle ticket) {
     Ticket& t = find(ticket);
     if (t.result.outcome != PathOutcome::Pending) {
         tickets_.erase(ticket);
+        if (finished_list_.size() > 2 * size_t(tickets_.size()) + 64) {
+            finished_list_.erase(std::remove_if(finished_list_.begin(), finished_list_.end(),
+                                                [&](Handle h) { return tickets_.find(h) == nullptr; }),
+                                 finished_list_.end());
+        }
         return;
     }
     t.released = true;  // the ticket goes when the request finishes
@@ -154,11 +159,12 @@ void PathQueue::work() {
     for (;;) {
         wake_.wait(lock, [&] { return stopping_ || queued_ > 0; });
         if (stopping_) return;
-        run_next(lock);
+        uint64_t nodes = 0;
+        run_next(lock, nodes);
     }
 }
 
-bool PathQueue::run_next(std::unique_lock<std::mutex>& lock) {
+bool PathQueue::run_next(std::unique_lock<std::mutex>& lock, uint64_t& nodes_visited) {
     while (!queue_.empty()) {
         const Handle h = queue_.front();
         queue_.pop_front();
@@ -179,6 +185,7 @@ bool PathQueue::run_next(std::unique_lock<std::mutex>& lock) {
         } catch (...) {
             result = failed(ErrorCode::Internal);
         }
+        nodes_visited += result.nodes_visited;
         lock.lock();
         --running_;
         finish(lock, h, std::move(result));
@@ -198,6 +205,12 @@ void PathQueue::finish(std::unique_lock<std::mutex>& lock, Handle h, PathResult 
         tickets_.erase(h);
     } else {
         ticket.running = false;
+        try {
+            finished_list_.push_back(h);
+        } catch (...) {
+            // Out of memory: the request still finishes (poll and the callback say so); only
+            // take_finished will not list it.
+        }
     }
     if (callback) {
         lock.unlock();
@@ -207,18 +220,40 @@ void PathQueue::finish(std::unique_lock<std::mutex>& lock, Handle h, PathResult 
     ++finished_;  // after the callback: a host that waits for `finished` may free what it reads
 }
 
-uint32_t PathQueue::process(uint32_t max_requests, double max_milliseconds) {
+uint32_t PathQueue::process(const ProcessBudget& budget) {
     using Clock = std::chrono::steady_clock;
     const auto begin = Clock::now();
-    auto out_of_time = [&] {
-        return max_milliseconds > 0.0 &&
-               std::chrono::duration<double, std::milli>(Clock::now() - begin).count() >= max_milliseconds;
+    uint64_t nodes = 0;
+    auto spent = [&] {
+        return (budget.max_milliseconds > 0.0 &&
+                std::chrono::duration<double, std::milli>(Clock::now() - begin).count() >= budget.max_milliseconds) ||
+               (budget.max_search_nodes > 0 && nodes >= budget.max_search_nodes);
     };
     std::unique_lock lock(mutex_);
     uint32_t done = 0;
     // The budget is checked between requests: each call plans at least one.
-    while ((max_requests == 0 || done < max_requests) && (done == 0 || !out_of_time()) && run_next(lock)) ++done;
+    while ((budget.max_requests == 0 || done < budget.max_requests) && (done == 0 || !spent()) && run_next(lock, nodes))
+        ++done;
     return done;
+}
+
+uint32_t PathQueue::take_finished(uint32_t capacity, std::vector<FinishedRequest>& out) {
+    std::lock_guard lock(mutex_);
+    out.clear();
+    out.reserve(std::min<size_t>(capacity, finished_list_.size()));
+    while (out.size() < capacity && !finished_list_.empty()) {
+        const Handle h = finished_list_.front();
+        finished_list_.pop_front();
+        const Ticket* t = tickets_.find(h);
+        if (!t || t->released) continue;
+        out.push_back(FinishedRequest{h, t->result.outcome, t->user});
+    }
+    uint32_t remaining = 0;
+    for (Handle h : finished_list_) {
+        const Ticket* t = tickets_.find(h);
+        if (t && !t->released) ++remaining;
+    }
+    return remaining;
 }
 
 PathQueueStats PathQueue::stats() const {

@@ -23,6 +23,20 @@ namespace nl {
 // Called once per request when it finishes, outside the queue's lock.
 using PathCallback = std::function<void(Handle ticket, PathOutcome outcome)>;
 
+// A finished request, as take_finished hands it over.
+struct FinishedRequest {
+    Handle ticket;
+    PathOutcome outcome = PathOutcome::Pending;
+    void* user = nullptr;
+};
+
+// How much process() may do in one call; 0 (or <= 0) means no limit. Checked between requests.
+struct ProcessBudget {
+    uint32_t max_requests = 0;
+    double max_milliseconds = 0.0;
+    uint64_t max_search_nodes = 0;
+};
+
 struct PathQueueStats {
     uint32_t workers = 0;
     uint32_t queued = 0;
@@ -44,8 +58,8 @@ public:
     PathQueue(const PathQueue&) = delete;
     PathQueue& operator=(const PathQueue&) = delete;
 
-    // Throws Cancelled once shut down.
-    Handle submit(std::shared_ptr<const PathGraph> graph, PathQuery query, PathCallback callback);
+    // Throws Cancelled once shut down. `user` is the host's, handed back by take_finished.
+    Handle submit(std::shared_ptr<const PathGraph> graph, PathQuery query, PathCallback callback, void* user = nullptr);
 
     // Throw InvalidHandle for an unknown or released ticket.
     PathOutcome poll(Handle ticket) const;
@@ -55,8 +69,13 @@ public:
     void cancel(Handle ticket);
     void release(Handle ticket);
 
-    // Plans queued requests on the calling thread; returns how many it finished.
-    uint32_t process(uint32_t max_requests, double max_milliseconds);
+    // Plans queued requests on the calling thread within the budget (at least one when any is
+    // queued); returns how many it finished.
+    uint32_t process(const ProcessBudget& budget);
+
+    // Moves up to `capacity` requests finished since the last call (oldest first, released ones left
+    // out) into `out`; returns how many still wait.
+    uint32_t take_finished(uint32_t capacity, std::vector<FinishedRequest>& out);
 
     PathQueueStats stats() const;
 
@@ -72,12 +91,13 @@ private:
         PathResult result;  // outcome Pending until finished
         bool running = false;
         bool released = false;
+        void* user = nullptr;
     };
 
     void work();
     // Takes the next queued request and plans it; false if none was queued. Called with `lock` held;
-    // returns with it held.
-    bool run_next(std::unique_lock<std::mutex>& lock);
+    // returns with it held. Adds the polygons its search visited to `nodes_visited`.
+    bool run_next(std::unique_lock<std::mutex>& lock, uint64_t& nodes_visited);
     // Records the outcome and calls the callback with the lock released.
     void finish(std::unique_lock<std::mutex>& lock, Handle ticket, PathResult result);
     // Cancelled and released requests leave their entries in queue_ until popped; with nothing
@@ -91,6 +111,9 @@ private:
     std::condition_variable wake_;
     SlotMap<Ticket> tickets_;
     std::deque<Handle> queue_;  // may hold tickets cancelled or released since: skipped
+    // Finished requests not taken yet; may hold released tickets (skipped, and dropped once they are
+    // most of it, so it stays within about twice the tickets alive).
+    std::deque<Handle> finished_list_;
     uint32_t queued_ = 0;
     uint32_t running_ = 0;
     uint64_t submitted_ = 0;

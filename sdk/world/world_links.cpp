@@ -23,7 +23,6 @@ void World::load_links(Handle navmesh, std::vector<Link> links) {
     const std::shared_ptr<const NavMesh> mesh = navmeshes_.navmesh(navmesh);
     for (size_t i = 0; i < links.size(); ++i) {
         naming_fields(concat("links[", i, "].").c_str(), [&] { place_saved_link(*mesh, links[i]); });
-        fill_requirements_from_ends(links[i]);
     }
     navmeshes_.replace_links(navmesh, links);
 }
@@ -44,7 +43,6 @@ std::vector<Link> World::plugin_links(Handle navmesh, const NavMesh& mesh, const
                 if (e.code() != ErrorCode::OutOfMemory && refusal.empty()) refusal = e.what();
                 throw;
             }
-            fill_requirements_from_ends(link);
             link.generated = true;
             out.push_back(link);
         };

@@ -223,7 +223,7 @@ bool compare(const char* path, Level& level) {
     std::vector<double> nl_best(kPairs, 1e300), detour_best(kPairs, 1e300);
     double nl_length = 0.0, detour_length = 0.0, nl_nodes = 0.0, detour_nodes = 0.0;
     int both_complete = 0;
-    std::vector<nl_path_point> points(4096);
+    std::vector<nl_path_point> points(4096, nl_path_point_init());
     for (int round = 0; round < kRounds; ++round) {
         for (int i = 0; i < kPairs; ++i) {
             const Pair& pair = level.pairs[i];
@@ -286,7 +286,7 @@ double queue_throughput(const Level& level, int workers) {
     std::vector<uint32_t> indices;
     std::vector<uint8_t> corners, areas;
     for (uint32_t p = 0; p < info.polygon_count; ++p) {
-        nl_nav_polygon polygon;
+        nl_nav_polygon polygon = nl_nav_polygon_init();
         nl_navmesh_get_polygon(level.world, level.navmesh, p, &polygon);
         indices.insert(indices.end(), polygon.vertices, polygon.vertices + polygon.vertex_count);
         corners.push_back(uint8_t(polygon.vertex_count));

@@ -69,7 +69,7 @@ bool measure(const char* path, uint32_t count) {
         nl_mesh_get_info(world, mesh, &info);
         triangles = info.triangle_count;
         const Batch batch = make_batch(info, count);
-        std::vector<nl_ray_hit> hits(count);
+        std::vector<nl_ray_hit> hits(count, nl_ray_hit_init());
         std::vector<uint8_t> blocked(count);
         nl_world_cast_rays(world, batch.rays.data(), 1, hits.data());  // builds the BVH outside the timing
         closest[threads - 1] = best_ms([&] { nl_world_cast_rays(world, batch.rays.data(), count, hits.data()); });

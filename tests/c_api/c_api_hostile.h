@@ -10,6 +10,9 @@
 
 #include <navlink/navlink.h>
 
+/* An nl_path_process budget of requests and milliseconds, as a pointer (C11 compound literal). */
+#define NL_TEST_BUDGET(requests, milliseconds) (&(nl_path_budget){sizeof(nl_path_budget), (requests), (milliseconds), 0})
+
 #include <stddef.h>
 
 /* ---------------------------------------------------------------------------------------------

@@ -231,8 +231,8 @@ static void build_world(world_fixture* f) {
         if (NL_FAILED(nl_world_get_plugins(f->world, &f->plugin, 1, &count))) fixture_failed("nl_world_get_plugins");
     }
     request = gap_request(f->navmesh);
-    if (NL_FAILED(nl_path_request(f->world, &request, &f->done_ticket)) || NL_FAILED(nl_path_process(f->world, 0, 0.0, NULL)) ||
-        NL_FAILED(nl_path_request(f->world, &request, &f->stale_ticket)) || NL_FAILED(nl_path_process(f->world, 0, 0.0, NULL)) ||
+    if (NL_FAILED(nl_path_request(f->world, &request, &f->done_ticket)) || NL_FAILED(nl_path_process(f->world, NL_TEST_BUDGET(0, 0.0), NULL)) ||
+        NL_FAILED(nl_path_request(f->world, &request, &f->stale_ticket)) || NL_FAILED(nl_path_process(f->world, NL_TEST_BUDGET(0, 0.0), NULL)) ||
         NL_FAILED(nl_path_release(f->world, f->stale_ticket)) || NL_FAILED(nl_path_request(f->world, &request, &f->pending_ticket)))
         fixture_failed("the path tickets");
 }
@@ -354,6 +354,7 @@ static nl_status known_path(const world_fixture* f, nl_path_result* result, nl_p
 static void put_path(blob* s, const world_fixture* f, path_fn* path) {
     nl_path_result result;
     nl_path_point points[64];
+    points[0] = nl_path_point_init();
     uint32_t count = 0;
     memset(&result, 0, sizeof result);
     result.size = sizeof result;
@@ -380,7 +381,8 @@ static void put_queue(blob* s, const world_fixture* f) {
 static void put_link_and_rays(blob* s, const world_fixture* f) {
     static const nl_ray rays[2] = {{{-6, 5, 0}, {0, -1, 0}, 100}, {{42, 5, 0}, {0, -1, 0}, 100}};
     nl_ray_hit hits[2];
-    nl_link link;
+    hits[0] = nl_ray_hit_init();
+    nl_link link = nl_link_init();
     const int32_t valid = nl_link_is_valid(f->world, f->link);
     memset(&link, 0, sizeof link);
     memset(hits, 0, sizeof hits);
@@ -1568,6 +1570,7 @@ static void group_world_cast_rays(void) {
     CASE("nl_world_cast_rays", "rays->max_distance inf (allowed)") {
         nl_ray rays[3];
         nl_ray_hit hits[3];
+        hits[0] = nl_ray_hit_init();
         memcpy(rays, valid, sizeof rays);
         rays[2].max_distance = INFINITY;
         EXPECT_OK(nl_world_cast_rays(A.world, rays, 3, hits));
@@ -1734,13 +1737,13 @@ static void group_navmesh_get_polygon(void) {
     int k;
     navmesh_id_cases(3);
     CASE("nl_navmesh_get_polygon", "polygon 0 (allowed: the first)") {
-        nl_nav_polygon out;
+        nl_nav_polygon out = nl_nav_polygon_init();
         EXPECT_OK(nl_navmesh_get_polygon(A.world, A.navmesh, 0, &out));
         EXPECT(out.vertex_count >= 3 && out.vertex_count <= NL_MAX_POLYGON_VERTICES, "vertex_count %u", (unsigned)out.vertex_count);
     }
     for (k = 0; k < 2; ++k) {
         CASE("nl_navmesh_get_polygon", k == 0 ? "polygon out of range (polygon_count)" : "polygon huge") {
-            nl_nav_polygon out;
+            nl_nav_polygon out = nl_nav_polygon_init();
             fill(&out, sizeof out);
             EXPECT_INVALID(A.world, nl_navmesh_get_polygon(A.world, A.navmesh, out_of_range[k], &out), "polygon");
             EXPECT_UNTOUCHED(&out, sizeof out, "out_polygon");
@@ -2495,6 +2498,7 @@ static int g_queued;
 static void request_refuses(const void* def, nl_status detail, const char* needle) {
     nl_path_result result;
     nl_path_point points[64];
+    points[0] = nl_path_point_init();
     uint32_t count;
     nl_path_ticket ticket;
     const int callbacks = g_callbacks;
@@ -2525,6 +2529,7 @@ static void request_accepts(const void* def) {
     } else {
         nl_path_result result;
         nl_path_point points[64];
+        points[0] = nl_path_point_init();
         uint32_t count = 0;
         memset(&result, 0, sizeof result);
         result.size = sizeof result;
@@ -2537,6 +2542,7 @@ static const nl_path_request_def* g_request;
 static nl_status request_id_call(nl_world* w, raw_id id, void* out) {
     nl_path_request_def def = *g_request;
     nl_path_point points[4];
+    points[0] = nl_path_point_init();
     uint32_t count;
     nl_status status;
     def.navmesh = AS(nl_navmesh_id, id);
@@ -2597,6 +2603,7 @@ static void result_cases(const char* function, result_call_fn* call) {
         CASE(function, "%s", c->what) {
             nl_path_result result;
             nl_path_point points[68];
+            points[0] = nl_path_point_init();
             uint32_t count;
             const uint32_t capacity = c->capacity == UINT32_MAX - 1 ? needed - 1 : c->capacity;
             nl_status status;
@@ -2629,6 +2636,7 @@ static nl_status find_known(nl_path_result* result, nl_path_point* points, uint3
 }
 static nl_status find_into(void* result) {
     nl_path_point points[64];
+    points[0] = nl_path_point_init();
     uint32_t count = 0;
     return find_known((nl_path_result*)result, points, 64, &count);
 }
@@ -2670,6 +2678,7 @@ ID_CALL(release_call, nl_path_ticket, nl_path_release)
 /* The result of a ticket, with its points and count untouched too. */
 static nl_status get_result_call(nl_world* w, raw_id id, void* out) {
     nl_path_point points[4];
+    points[0] = nl_path_point_init();
     uint32_t count;
     nl_status status;
     fill(points, sizeof points);
@@ -2699,6 +2708,7 @@ static nl_status result_of_done(nl_path_result* result, nl_path_point* points, u
 }
 static nl_status result_into(void* result) {
     nl_path_point points[64];
+    points[0] = nl_path_point_init();
     uint32_t count = 0;
     return result_of_done((nl_path_result*)result, points, 64, &count);
 }
@@ -2739,7 +2749,7 @@ static void group_path_process(void) {
     CASE("nl_path_process", "world NULL") {
         uint32_t processed;
         fill(&processed, sizeof processed);
-        EXPECT_INVALID(NULL, nl_path_process(NULL, 0, 0.0, &processed), "world");
+        EXPECT_INVALID(NULL, nl_path_process(NULL, NL_TEST_BUDGET(0, 0.0), &processed), "world");
         EXPECT_UNTOUCHED(&processed, sizeof processed, "out_processed");
     }
     for (i = 0; i < sizeof cases / sizeof *cases; ++i) {
@@ -2747,7 +2757,7 @@ static void group_path_process(void) {
             uint32_t processed;
             nl_status status;
             fill(&processed, sizeof processed);
-            status = nl_path_process(A.world, cases[i].max_requests, cases[i].max_milliseconds, cases[i].with_out ? &processed : NULL);
+            status = nl_path_process(A.world, NL_TEST_BUDGET(cases[i].max_requests, cases[i].max_milliseconds), cases[i].with_out ? &processed : NULL);
             if (cases[i].detail) {
                 EXPECT_INVALID(A.world, status, "max_milliseconds");
                 EXPECT_UNTOUCHED(&processed, sizeof processed, "out_processed");

@@ -176,7 +176,8 @@ static void test_link_defaults(void) {
     CHECK(def.end[0] == 0.0f && def.end[1] == 0.0f && def.end[2] == 0.0f);
     CHECK(def.bidirectional == 0);
     CHECK(def.enabled == 1);
-    CHECK(def.reserved[0] == 0 && def.reserved[1] == 0);
+    CHECK(def.requirements_from_ends == 1);
+    CHECK(def.reserved == 0);
     CHECK(def.cost_modifier == 1.0f);
     CHECK(def.user_data == 0u);
     CHECK(def.requirements.gap == 0.0f && def.requirements.rise == 0.0f && def.requirements.drop == 0.0f &&
@@ -307,7 +308,7 @@ static void test_link_generation_gap(void) {
         const nl_link* l = &links[i];
         const float* west = l->start[0] < l->end[0] ? l->start : l->end;
         const float* east = l->start[0] < l->end[0] ? l->end : l->start;
-        nl_link got;
+        nl_link got = nl_link_init();
         wrong_kind += l->kind != NL_LINK_JUMP;
         wrong_flags += !(l->bidirectional == 1 && l->generated == 1 && l->enabled == 1 && l->reserved == 0 &&
                          l->cost_modifier == 1.0f && l->user_data == 0u && l->requirements.abilities == 0u &&
@@ -357,7 +358,7 @@ static void test_link_generation_gap(void) {
         CHECK_MSG(same_fields(&a, &b, 1), "link %u differs from the first generation's", (unsigned)i);
         /* The old ids are stale everywhere. */
         if (!same_link_id(a.id, b.id)) {
-            nl_link got;
+            nl_link got = nl_link_init();
             nl_link_def def = nl_default_link_def();
             CHECK(nl_link_is_valid(world, b.id) == 0 && nl_get_last_status() == NL_STATUS_SUCCESS);
             CHECK_FAIL(nl_link_get(world, b.id, &got), NL_STATUS_INVALID_HANDLE, "link");
@@ -601,7 +602,7 @@ static void test_manual_links(void) {
     links = list_links(world, navmesh, &n);
     if (CHECK(n == generated + 2u && links[2].generated == 1)) {
         nl_link_def off = nl_default_link_def();
-        nl_link g;
+        nl_link g = nl_link_init();
         off.kind = links[2].kind;
         memcpy(off.start, links[2].start, sizeof off.start);
         memcpy(off.end, links[2].end, sizeof off.end);
@@ -676,7 +677,7 @@ static void test_link_refusals(void) {
     const nl_link_def good = manual_def();
     nl_link_def def;
     nl_link_id id = {0u, 0u};
-    nl_link got;
+    nl_link got = nl_link_init();
     nl_link* before;
     uint32_t n0 = 0, count = 0xdeadbeefu;
     g_section = "links: refusals";
@@ -691,7 +692,7 @@ static void test_link_refusals(void) {
     CHECK_INVALID(nl_link_get(world, id, NULL), "out_link");
     CHECK_INVALID(nl_navmesh_get_links(world, navmesh, NULL, 0, NULL), "out_count");
     {
-        nl_link one;
+        nl_link one = nl_link_init();
         CHECK_INVALID(nl_navmesh_get_links(world, navmesh, NULL, 3, &count), "out_links");
         CHECK_INVALID(nl_navmesh_get_links(world, navmesh, &one, 1, NULL), "out_count");
     }
@@ -837,7 +838,7 @@ static void test_link_refusals(void) {
 
 static void check_stale_everywhere(nl_world* world, nl_link_id id, const char* what) {
     const nl_link_def def = manual_def();
-    nl_link got;
+    nl_link got = nl_link_init();
     memset(&got, 0xab, sizeof got);
     CHECK_MSG(nl_link_is_valid(world, id) == 0 && nl_get_last_status() == NL_STATUS_SUCCESS,
               "nl_link_is_valid: %s is valid", what);
@@ -940,7 +941,7 @@ static void test_link_lists(void) {
     CHECK_OK(nl_navmesh_get_links(world, navmesh, NULL, 0, &count));
     CHECK(count == 0u);
     {
-        nl_link one;
+        nl_link one = nl_link_init();
         memset(&one, 0xab, sizeof one);
         count = 77u;
         CHECK_OK(nl_navmesh_get_links(world, navmesh, &one, 1, &count));
@@ -1519,7 +1520,7 @@ static void test_link_navmesh_removed_during_generation(void) {
         uint32_t k;
         for (k = 1; k <= 4; ++k) {
             nl_link_id probe = old[i].id;
-            nl_link got;
+            nl_link got = nl_link_init();
             probe.generation += k;
             if (nl_link_is_valid(world, probe) && NL_SUCCEEDED(nl_link_get(world, probe, &got))) ++live;
         }
@@ -1568,7 +1569,7 @@ static void* reader_thread(void* arg) {
         if (!matches || !distinct) ++job->inconsistent;
         /* A listed link is either gone since, or exactly as listed. */
         for (i = 0; i < n; i += 7) {
-            nl_link got;
+            nl_link got = nl_link_init();
             const nl_status st = nl_link_get(job->world, job->buffer[i].id, &got);
             if (st == NL_STATUS_SUCCESS ? memcmp(&got, &job->buffer[i], sizeof got) != 0
                                         : st != (NL_STATUS_FAILURE | NL_STATUS_INVALID_HANDLE))

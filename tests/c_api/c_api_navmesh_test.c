@@ -306,7 +306,7 @@ static void check_grid_navmesh(const nl_world* world, nl_navmesh_id id, uint32_t
         }
     }
     for (i = 0; i < info.polygon_count; ++i) {
-        nl_nav_polygon poly;
+        nl_nav_polygon poly = nl_nav_polygon_init();
         memset(&poly, 0xcd, sizeof poly);
         if (!CHECK_OK(nl_navmesh_get_polygon(world, id, i, &poly))) continue;
         CHECK_MSG(poly.vertex_count == (polygons == 4 ? 4u : 3u), "%s: polygon %u has %u corners", label, (unsigned)i,
@@ -343,7 +343,7 @@ static void check_grid_navmesh(const nl_world* world, nl_navmesh_id id, uint32_t
             const float mx = 0.5f * (e->start[0] + e->end[0]), mz = 0.5f * (e->start[2] + e->end[2]);
             /* On the outline: the side it lies on gives its outward direction. */
             const float ox = fabsf(mx) == 1.0f ? mx : 0.0f, oz = fabsf(mz) == 1.0f ? mz : 0.0f;
-            nl_nav_polygon poly;
+            nl_nav_polygon poly = nl_nav_polygon_init();
             CHECK_MSG((ox != 0.0f) != (oz != 0.0f), "%s: boundary edge %u (mid %g %g) is not on the outline", label,
                       (unsigned)i, mx, mz);
             CHECK_MSG(near3(e->outward, ox, 0.0f, oz, TOL), "%s: edge %u outward (%g %g %g), expected (%g 0 %g)",
@@ -466,7 +466,7 @@ static void test_navmesh_add_grid(void) {
         float* xyz = navmesh_vertices(world, id, &vertex_count);
         int wrong = 0;
         for (p = 0; xyz && p < 4; ++p) {
-            nl_nav_polygon poly;
+            nl_nav_polygon poly = nl_nav_polygon_init();
             if (NL_FAILED(nl_navmesh_get_polygon(world, id, p, &poly))) {
                 ++wrong;
                 continue;
@@ -479,7 +479,7 @@ static void test_navmesh_add_grid(void) {
                 if (fabsf(nx) > 1.0f || fabsf(nz) > 1.0f) {
                     wrong += poly.neighbours[k] != NL_NO_POLYGON;
                 } else {
-                    nl_nav_polygon other;
+                    nl_nav_polygon other = nl_nav_polygon_init();
                     if (poly.neighbours[k] == NL_NO_POLYGON ||
                         NL_FAILED(nl_navmesh_get_polygon(world, id, poly.neighbours[k], &other)) ||
                         quadrant_of(other.centre[0], other.centre[2]) != quadrant_of(nx, nz))
@@ -751,7 +751,7 @@ static void test_navmesh_detail(void) {
     CHECK_NEAR(out[1].point[1], GRID_Y, TOL);
     CHECK_NEAR(out[1].distance, 1.5f, TOL);
     {
-        nl_nav_polygon poly;
+        nl_nav_polygon poly = nl_nav_polygon_init();
         CHECK_OK(nl_navmesh_get_polygon(world, bumpy, out[0].polygon, &poly));
         CHECK(quadrant_of(poly.centre[0], poly.centre[2]) == 3);
         CHECK_OK(nl_navmesh_get_polygon(world, bumpy, out[1].polygon, &poly));
@@ -1010,7 +1010,7 @@ static void test_navmesh_rejections(void) {
 static uint32_t polygon_of_quadrant(const nl_world* world, nl_navmesh_id id, int quadrant) {
     uint32_t p;
     for (p = 0; p < 4; ++p) {
-        nl_nav_polygon poly;
+        nl_nav_polygon poly = nl_nav_polygon_init();
         if (NL_SUCCEEDED(nl_navmesh_get_polygon(world, id, p, &poly)) &&
             quadrant_of(poly.centre[0], poly.centre[2]) == quadrant)
             return p;
@@ -1315,7 +1315,7 @@ static void test_navmesh_lists(void) {
 
     /* nl_navmesh_get_polygon out of range, or without a place to write to. */
     {
-        nl_nav_polygon poly;
+        nl_nav_polygon poly = nl_nav_polygon_init();
         memset(&poly, 0xcd, sizeof poly);
         CHECK_INVALID(nl_navmesh_get_polygon(world, ids[0], 4, &poly), "polygon");
         CHECK_INVALID(nl_navmesh_get_polygon(world, ids[0], UINT32_MAX, &poly), "polygon");
@@ -1354,7 +1354,7 @@ static void test_navmesh_lists(void) {
 #define CHECK_BAD_NAVMESH_ID(world, id) check_bad_navmesh_id((world), (id), __FILE__, __LINE__)
 static void check_bad_navmesh_id(nl_world* world, nl_navmesh_id id, const char* file, int line) {
     nl_navmesh_info info;
-    nl_nav_polygon poly;
+    nl_nav_polygon poly = nl_nav_polygon_init();
     nl_boundary_edge edge;
     nl_nav_point nearest;
     float xyz[3];
@@ -1585,7 +1585,7 @@ static void test_navmesh_build(void) {
             uint32_t p, triangles = 1;
             info = navmesh_info(world, id);
             for (p = 0; p < info.polygon_count; ++p) {
-                nl_nav_polygon poly;
+                nl_nav_polygon poly = nl_nav_polygon_init();
                 if (NL_FAILED(nl_navmesh_get_polygon(world, id, p, &poly)) || poly.vertex_count != 3) triangles = 0;
             }
             CHECK_THAT(triangles, "settings_json vertices_per_polygon 3 gives triangles only");
@@ -1607,7 +1607,7 @@ static void test_navmesh_build(void) {
             check_box_navmesh(world, id, agent, 0.2f, "recast, struct and JSON");
             info = navmesh_info(world, id);
             for (p = 0; p < info.polygon_count; ++p) {
-                nl_nav_polygon poly;
+                nl_nav_polygon poly = nl_nav_polygon_init();
                 if (NL_FAILED(nl_navmesh_get_polygon(world, id, p, &poly)) || poly.vertex_count != 3) triangles = 0;
             }
             CHECK_THAT(triangles, "settings_json vertices_per_polygon 3 applies over a struct's 6");

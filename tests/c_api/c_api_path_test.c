@@ -279,7 +279,7 @@ static void test_path_defaults(void) {
 static void test_path_find(void) {
     islands s = make_islands(0);
     nl_path_request_def def;
-    nl_link jump_link;
+    nl_link jump_link = nl_link_init();
     path p;
     g_section = "paths: nl_path_find";
     CHECK_OK(nl_link_get(s.world, s.jump, &jump_link));
@@ -402,6 +402,7 @@ static void test_path_find(void) {
        points untouched. */
     {
         nl_path_point points[3];
+        points[0] = nl_path_point_init();
         nl_path_result result;
         uint32_t count = 0;
         nl_status st;
@@ -541,6 +542,7 @@ static void test_path_bad_input(void) {
     nl_path_request_def def;
     nl_path_result result;
     nl_path_point points[4];
+    points[0] = nl_path_point_init();
     nl_path_ticket ticket = {0u, 0u}, queued = {0u, 0u};
     nl_path_outcome outcome = 0xdeadbeefu;
     nl_path_queue_stats stats, stats_after;
@@ -571,7 +573,7 @@ static void test_path_bad_input(void) {
     CHECK_INVALID(nl_path_get_result(s.world, queued, &result, points, 4, NULL), "out_count");
     CHECK_INVALID(nl_path_cancel(NULL, queued), "world");
     CHECK_INVALID(nl_path_release(NULL, queued), "world");
-    CHECK_INVALID(nl_path_process(NULL, 0, 0.0, &processed), "world");
+    CHECK_INVALID(nl_path_process(NULL, NL_TEST_BUDGET(0, 0.0), &processed), "world");
     CHECK_INVALID(nl_path_get_queue_stats(NULL, &stats), "world");
     CHECK_INVALID(nl_path_get_queue_stats(s.world, NULL), "out_stats");
     CHECK(ticket.index1 == 0u && outcome == 0xdeadbeefu && count == 0xdeadbeefu && processed == 0xdeadbeefu);
@@ -699,7 +701,7 @@ static void test_path_bad_input(void) {
     /* A NaN budget. */
     stats = queue_stats(s.world);
     processed = 0xdeadbeefu;
-    CHECK_INVALID(nl_path_process(s.world, 0, NAN, &processed), "max_milliseconds");
+    CHECK_INVALID(nl_path_process(s.world, NL_TEST_BUDGET(0, NAN), &processed), "max_milliseconds");
     stats_after = queue_stats(s.world);
     CHECK(processed == 0xdeadbeefu);
     CHECK_THAT(memcmp(&stats, &stats_after, sizeof stats) == 0 && stats.queued == 1u,
@@ -746,6 +748,7 @@ static void test_path_queue_manual(void) {
     nl_path_queue_stats st;
     nl_path_result result;
     nl_path_point points[MAX_POINTS];
+    points[0] = nl_path_point_init();
     uint32_t count, processed;
     nl_status status;
     int i;
@@ -786,7 +789,7 @@ static void test_path_queue_manual(void) {
 
     /* Two per call, in the order they were made, their callbacks here and now. */
     processed = 0xdeadbeefu;
-    CHECK_OK(nl_path_process(s.world, 2, 0.0, &processed));
+    CHECK_OK(nl_path_process(s.world, NL_TEST_BUDGET(2, 0.0), &processed));
     CHECK(processed == 2u);
     CHECK(logs[0].calls == 1 && logs[1].calls == 1);
     CHECK(logs[2].calls == 0 && logs[3].calls == 0 && logs[4].calls == 0 && logs[5].calls == 0);
@@ -874,7 +877,7 @@ static void test_path_queue_manual(void) {
 
     /* No limit: the rest, and the request t5's callback submitted meanwhile (the queue is emptied). */
     processed = 0;
-    CHECK_OK(nl_path_process(s.world, 0, -1.0, &processed));
+    CHECK_OK(nl_path_process(s.world, NL_TEST_BUDGET(0, -1.0), &processed));
     CHECK_MSG(processed == 3u, "processed %u", (unsigned)processed);
     CHECK(logs[4].calls == 1 && logs[4].outcome == NL_PATH_COMPLETE && same_ticket(logs[4].ticket, tickets[4]));
     CHECK(logs[5].calls == 1 && logs[5].outcome == NL_PATH_COMPLETE);
@@ -882,9 +885,9 @@ static void test_path_queue_manual(void) {
     CHECK(follow_up_log.calls == 1 && follow_up_log.outcome == NL_PATH_COMPLETE &&
           same_ticket(follow_up_log.ticket, logs[5].follow_up_ticket));
     processed = 0xdeadbeefu;
-    CHECK_OK(nl_path_process(s.world, 0, 0.0, &processed));
+    CHECK_OK(nl_path_process(s.world, NL_TEST_BUDGET(0, 0.0), &processed));
     CHECK(processed == 0u);
-    CHECK_OK(nl_path_process(s.world, 5, 10.0, NULL)); /* out_processed is optional */
+    CHECK_OK(nl_path_process(s.world, NL_TEST_BUDGET(5, 10.0), NULL)); /* out_processed is optional */
     for (i = 0; i < N; ++i) CHECK_MSG(logs[i].calls == 1, "request %d: %d callbacks", i, logs[i].calls);
     st = queue_stats(s.world);
     CHECK(st.queued == 0u && st.running == 0u && st.unreleased == 5u && st.submitted == 7u && st.finished == 7u);
@@ -913,7 +916,7 @@ static void test_path_queue_manual(void) {
             dl[i].world = d.world;
             CHECK_OK(nl_path_request(d.world, &r, &dt[i]));
         }
-        CHECK_OK(nl_path_process(d.world, 1, 0.0, &processed));
+        CHECK_OK(nl_path_process(d.world, NL_TEST_BUDGET(1, 0.0), &processed));
         CHECK(dl[0].calls == 1 && dl[0].outcome == NL_PATH_COMPLETE && dl[1].calls == 0 && dl[2].calls == 0);
         nl_world_destroy(d.world);
         CHECK(dl[0].calls == 1);
@@ -933,6 +936,7 @@ static void test_path_snapshots(void) {
     nl_path_ticket before = {0u, 0u}, after = {0u, 0u}, orphan = {0u, 0u};
     nl_path_result result;
     nl_path_point points[MAX_POINTS];
+    points[0] = nl_path_point_init();
     uint32_t count = 0, processed = 0;
     g_section = "paths: snapshots";
 
@@ -945,7 +949,7 @@ static void test_path_snapshots(void) {
     CHECK_OK(nl_navmesh_remove(s.world, s.navmesh));
     CHECK(outcome_of(s.world, &def) == 0xffffffffu && (nl_get_last_status() & NL_STATUS_INVALID_HANDLE));
 
-    CHECK_OK(nl_path_process(s.world, 0, 0.0, &processed));
+    CHECK_OK(nl_path_process(s.world, NL_TEST_BUDGET(0, 0.0), &processed));
     CHECK(processed == 3u);
     memset(&result, 0, sizeof result);
     result.size = sizeof result;

@@ -129,7 +129,7 @@ static nl_ray down_ray(float x, float z, float from_y, float max_distance) {
 /* Casts one ray straight down from (x, 5, z); returns the hit (hit = 0 on a miss or an error). */
 static nl_ray_hit cast_down(nl_world* world, float x, float z) {
     const nl_ray r = down_ray(x, z, 5.0f, INFINITY);
-    nl_ray_hit h;
+    nl_ray_hit h = nl_ray_hit_init();
     memset(&h, 0, sizeof h);
     if (NL_FAILED(nl_world_cast_rays(world, &r, 1, &h))) memset(&h, 0, sizeof h);
     return h;
@@ -434,6 +434,7 @@ static void test_mesh_add_and_info(void) {
             /* Straight down from y = 10 onto the box top (y = 6), and sideways onto its +x face. */
             nl_ray r[2];
             nl_ray_hit h[2];
+            h[0] = nl_ray_hit_init();
             r[0] = down_ray(2.0f, -3.0f, 10.0f, INFINITY);
             r[1] = down_ray(8.0f, -2.0f, 3.0f, INFINITY);
             r[1].direction[0] = -2.0f, r[1].direction[1] = 0.0f;
@@ -471,7 +472,7 @@ static void test_mesh_add_and_info(void) {
         float vertices[12];
         uint32_t indices[6];
         nl_mesh_id copied = {0u, 0u};
-        nl_ray_hit h;
+        nl_ray_hit h = nl_ray_hit_init();
         memcpy(vertices, k_floor_vertices, sizeof vertices);
         memcpy(indices, k_floor_indices, sizeof indices);
         def = floor_def();
@@ -504,7 +505,7 @@ static void test_degenerate(void) {
     nl_mesh_def def = nl_default_mesh_def();
     nl_mesh_id id = {0u, 0u};
     nl_mesh_info info;
-    nl_ray_hit h;
+    nl_ray_hit h = nl_ray_hit_init();
     g_section = "degenerate";
 
     def.vertices = vertices;
@@ -854,6 +855,7 @@ static void test_rays(void) {
     nl_mesh_id floor = {0u, 0u};
     nl_ray rays[4];
     nl_ray_hit hits[4];
+    hits[0] = nl_ray_hit_init();
     g_section = "rays";
 
     CHECK_OK(nl_mesh_add(world, &def, &floor));
@@ -1093,7 +1095,7 @@ static void test_move(uint32_t flags) {
     nl_mesh_def def = floor_def();
     nl_mesh_id id = {0u, 0u};
     nl_mesh_info info;
-    nl_ray_hit h;
+    nl_ray_hit h = nl_ray_hit_init();
     float m[16];
     g_section = flags & NL_MESH_MOVABLE ? "move (movable)" : "move (static, re-upload)";
 
@@ -1179,7 +1181,7 @@ static void test_mixed_scene(void) {
     nl_mesh_def def = floor_def();
     nl_mesh_id a = {0u, 0u}, b = {0u, 0u}, c = {0u, 0u};
     float m[16];
-    nl_ray_hit h;
+    nl_ray_hit h = nl_ray_hit_init();
     g_section = "mixed scene";
 
     CHECK_OK(nl_mesh_add(world, &def, &a)); /* static, y = 1 */
@@ -1241,7 +1243,7 @@ static void test_obj(void) {
     nl_world* world = make_world(1);
     nl_mesh_id id = {0u, 0u};
     nl_mesh_info info;
-    nl_ray_hit h;
+    nl_ray_hit h = nl_ray_hit_init();
     g_section = "obj";
 
     CHECK_OK(nl_mesh_add_obj_memory(world, k_quad_obj, strlen(k_quad_obj), NULL, &id));
@@ -1450,7 +1452,7 @@ static void test_dungeon(const char* levels_dir) {
     {
         /* A ray down through the middle of the level finds something. */
         nl_ray r;
-        nl_ray_hit h;
+        nl_ray_hit h = nl_ray_hit_init();
         r.origin[0] = 0.5f * (info.bounds_min[0] + info.bounds_max[0]);
         r.origin[1] = info.bounds_max[1] + 1.0f;
         r.origin[2] = 0.5f * (info.bounds_min[2] + info.bounds_max[2]);
@@ -1480,6 +1482,7 @@ static void* query_thread(void* arg) {
     for (i = 0; i < 300; ++i) {
         nl_ray rays[16];
         nl_ray_hit hits[16];
+        hits[0] = nl_ray_hit_init();
         int k;
         for (k = 0; k < 16; ++k) rays[k] = down_ray(-8.0f + (float)k, 0.25f, 5.0f, INFINITY);
         if (NL_FAILED(nl_world_cast_rays(job->world, rays, 16, hits))) {
@@ -1548,7 +1551,7 @@ static void test_null_world_everywhere(void) {
     nl_mesh_id out = {0u, 0u};
     uint32_t count = 0;
     nl_ray r = down_ray(0.0f, 0.0f, 5.0f, INFINITY);
-    nl_ray_hit h;
+    nl_ray_hit h = nl_ray_hit_init();
     nl_segment s = segment(0, 0, 0, 1, 1, 1);
     uint8_t blocked = 0;
     g_section = "null world";
@@ -1581,7 +1584,7 @@ static void test_edges(void) {
     nl_mesh_def def = floor_def();
     nl_mesh_id floor = {0u, 0u};
     nl_ray r;
-    nl_ray_hit h;
+    nl_ray_hit h = nl_ray_hit_init();
     g_section = "edges";
     CHECK_OK(nl_mesh_add(world, &def, &floor));
 
@@ -1613,6 +1616,7 @@ static void test_edges(void) {
         static const float mirror_x[16] = {-1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
         nl_world* mirrored[2];
         nl_ray_hit hits[2];
+        hits[0] = nl_ray_hit_init();
         int k;
         for (k = 0; k < 2; ++k) {
             nl_mesh_id out = {0u, 0u};
@@ -1682,7 +1686,7 @@ static int run_isolated(isolated_case* fn) {
 /* Accepted outcomes: rejected naming the ray, or a clean answer. */
 static int huge_ray_origin(nl_world* world) {
     nl_ray r = down_ray(1.0e19f, 0.25f, 5.0f, INFINITY);
-    nl_ray_hit h;
+    nl_ray_hit h = nl_ray_hit_init();
     const nl_status st = nl_world_cast_rays(world, &r, 1, &h);
     return st == NL_STATUS_SUCCESS ? h.hit == 0
                                    : strstr(nl_get_last_error_message(), "rays[0]") != NULL;
@@ -1705,7 +1709,7 @@ static int overflowing_segment(nl_world* world) {
 static int moderate_coordinates(nl_world* world) {
     /* Large numbers within NL_COORDINATE_LIMIT: 1e6 m away, 2e9 m long. */
     nl_ray r = down_ray(0.5f, 0.25f, 1.0e6f, INFINITY);
-    nl_ray_hit h;
+    nl_ray_hit h = nl_ray_hit_init();
     const nl_segment s = segment(0.5f, 1.0e9f, 0.25f, 0.5f, -1.0e9f, 0.25f);
     uint8_t blocked = 7;
     return nl_world_cast_rays(world, &r, 1, &h) == NL_STATUS_SUCCESS && h.hit == 1 &&

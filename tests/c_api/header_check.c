@@ -20,9 +20,11 @@ _Static_assert(sizeof(nl_status) == 4, "nl_status is a uint32");
 _Static_assert(sizeof(nl_log_level) == 4, "nl_log_level is a uint32");
 _Static_assert(sizeof(nl_ray) == 28, "nl_ray is seven floats");
 _Static_assert(sizeof(nl_segment) == 24, "nl_segment is six floats");
-_Static_assert(sizeof(nl_ray_hit) == 44, "nl_ray_hit has no hidden padding");
-_Static_assert(offsetof(nl_ray_hit, mesh) == 28, "nl_ray_hit.mesh offset");
-_Static_assert(offsetof(nl_ray_hit, hit) == 40, "nl_ray_hit.hit offset");
+/* Growable array elements: their first release's offsets are fixed, and they may grow at their end. */
+_Static_assert(sizeof(nl_ray_hit) == 48 && offsetof(nl_ray_hit, size) == 0 && offsetof(nl_ray_hit, distance) == 4,
+               "nl_ray_hit has no hidden padding");
+_Static_assert(offsetof(nl_ray_hit, mesh) == 32, "nl_ray_hit.mesh offset");
+_Static_assert(offsetof(nl_ray_hit, hit) == 44, "nl_ray_hit.hit offset");
 /* Structs with a size field may grow at their end, so only the offsets of today's fields are fixed. */
 #if UINTPTR_MAX == 0xffffffffffffffffu
 _Static_assert(offsetof(nl_world_def, worker_count) == 4 && offsetof(nl_world_def, log_fn) == 8 &&
@@ -46,11 +48,11 @@ _Static_assert(offsetof(nl_agent_type, radius) == 0 && offsetof(nl_agent_type, h
                    offsetof(nl_agent_type, max_climb) == 8 && offsetof(nl_agent_type, max_slope) == 12 &&
                    sizeof(nl_agent_type) == 16,
                "nl_agent_type is four floats");
-_Static_assert(offsetof(nl_nav_polygon, vertex_count) == 0 && offsetof(nl_nav_polygon, vertices) == 4 &&
-                   offsetof(nl_nav_polygon, neighbours) == 68 && offsetof(nl_nav_polygon, area) == 132 &&
-                   offsetof(nl_nav_polygon, normal) == 136 && offsetof(nl_nav_polygon, centre) == 148 &&
-                   sizeof(nl_nav_polygon) == 160,
-               "nl_nav_polygon layout");
+_Static_assert(offsetof(nl_nav_polygon, size) == 0 && offsetof(nl_nav_polygon, vertex_count) == 4 &&
+                   offsetof(nl_nav_polygon, vertices) == 8 && offsetof(nl_nav_polygon, neighbours) == 72 &&
+                   offsetof(nl_nav_polygon, area) == 136 && offsetof(nl_nav_polygon, normal) == 140 &&
+                   offsetof(nl_nav_polygon, centre) == 152 && sizeof(nl_nav_polygon) == 164,
+               "nl_nav_polygon layout (growable: set size)");
 _Static_assert(offsetof(nl_boundary_edge, start) == 0 && offsetof(nl_boundary_edge, end) == 12 &&
                    offsetof(nl_boundary_edge, outward) == 24 && offsetof(nl_boundary_edge, normal) == 36 &&
                    offsetof(nl_boundary_edge, polygon) == 48 && offsetof(nl_boundary_edge, edge) == 52 &&
@@ -123,8 +125,8 @@ _Static_assert(offsetof(nl_plugin_info, abi_version) == 4 && offsetof(nl_plugin_
                "nl_plugin_info on LP64");
 #endif
 
-/* Links. nl_link_id, nl_link_requirements and nl_link have no size field: fixed from 1.0 (CHANGELOG.md
-   lists their changes before it). */
+/* Links. nl_link_id and nl_link_requirements have no size field: fixed from 1.0 (CHANGELOG.md lists
+   their changes before it). nl_link grows at its end (its size field). */
 _Static_assert(sizeof(nl_link_id) == 8 && offsetof(nl_link_id, index1) == 0 && offsetof(nl_link_id, generation) == 4,
                "nl_link_id");
 _Static_assert(sizeof(nl_link_kind) == 4, "nl_link_kind is a uint32");
@@ -135,18 +137,20 @@ _Static_assert(offsetof(nl_link_requirements, gap) == 0 && offsetof(nl_link_requ
                    offsetof(nl_link_requirements, abilities) == 16 && offsetof(nl_link_requirements, length) == 24 &&
                    offsetof(nl_link_requirements, reserved) == 28 && sizeof(nl_link_requirements) == 32,
                "nl_link_requirements layout");
-_Static_assert(offsetof(nl_link, id) == 0 && offsetof(nl_link, navmesh) == 8 && offsetof(nl_link, kind) == 16 &&
-                   offsetof(nl_link, start) == 20 && offsetof(nl_link, end) == 32 && offsetof(nl_link, apex) == 44 &&
-                   offsetof(nl_link, bidirectional) == 56 && offsetof(nl_link, generated) == 57 &&
-                   offsetof(nl_link, enabled) == 58 && offsetof(nl_link, reserved) == 59 &&
-                   offsetof(nl_link, cost_modifier) == 60 && offsetof(nl_link, user_data) == 64 &&
-                   offsetof(nl_link, requirements) == 72 && offsetof(nl_link, start_polygon) == 104 &&
-                   offsetof(nl_link, end_polygon) == 108 && sizeof(nl_link) == 112,
+_Static_assert(offsetof(nl_link, size) == 0 && offsetof(nl_link, kind) == 4 && offsetof(nl_link, id) == 8 &&
+                   offsetof(nl_link, navmesh) == 16 && offsetof(nl_link, start) == 24 && offsetof(nl_link, end) == 36 &&
+                   offsetof(nl_link, apex) == 48 && offsetof(nl_link, bidirectional) == 60 &&
+                   offsetof(nl_link, generated) == 61 && offsetof(nl_link, enabled) == 62 &&
+                   offsetof(nl_link, reserved) == 63 && offsetof(nl_link, cost_modifier) == 64 &&
+                   offsetof(nl_link, start_polygon) == 68 && offsetof(nl_link, end_polygon) == 72 &&
+                   offsetof(nl_link, reserved2) == 76 && offsetof(nl_link, user_data) == 80 &&
+                   offsetof(nl_link, requirements) == 88 && sizeof(nl_link) == 120,
                "nl_link layout (no hidden padding)");
 /* Growable link structs: only today's offsets are fixed. */
 _Static_assert(offsetof(nl_link_def, size) == 0 && offsetof(nl_link_def, kind) == 4 && offsetof(nl_link_def, start) == 8 &&
                    offsetof(nl_link_def, end) == 20 && offsetof(nl_link_def, bidirectional) == 32 &&
-                   offsetof(nl_link_def, enabled) == 33 && offsetof(nl_link_def, reserved) == 34 &&
+                   offsetof(nl_link_def, enabled) == 33 && offsetof(nl_link_def, requirements_from_ends) == 34 &&
+                   offsetof(nl_link_def, reserved) == 35 &&
                    offsetof(nl_link_def, cost_modifier) == 36 && offsetof(nl_link_def, user_data) == 40 &&
                    offsetof(nl_link_def, requirements) == 48,
                "nl_link_def");
@@ -205,10 +209,7 @@ _Static_assert(offsetof(nl_link_settings, plugin_settings_json) == 152 &&
 
 /* Plugins and the Recast builder's constants. */
 _Static_assert(NL_PLUGIN_ABI_VERSION == 1u, "NL_PLUGIN_ABI_VERSION");
-_Static_assert((NL_PLUGIN_NAVMESH_BUILDER & NL_PLUGIN_LINK_KIND) == 0u &&
-                   (NL_PLUGIN_NAVMESH_BUILDER & NL_PLUGIN_PATH_MODIFIER) == 0u &&
-                   (NL_PLUGIN_LINK_KIND & NL_PLUGIN_PATH_MODIFIER) == 0u,
-               "plugin kinds are distinct bits");
+_Static_assert((NL_PLUGIN_NAVMESH_BUILDER & NL_PLUGIN_LINK_KIND) == 0u, "plugin kinds are distinct bits");
 _Static_assert(NL_RECAST_PARTITION_WATERSHED == 0u && NL_RECAST_PARTITION_MONOTONE == 1u &&
                    NL_RECAST_PARTITION_LAYERS == 2u,
                "Recast partitions");
@@ -291,6 +292,19 @@ struct api_table {
     nl_status (*navmesh_save_links_json)(const nl_world*, nl_navmesh_id, char*, size_t, size_t*);
     nl_status (*navmesh_load_links_json)(nl_world*, nl_navmesh_id, const char*, size_t, uint32_t*);
     nl_progress_fn* progress;
+    /* Paths */
+    nl_agent_capabilities (*default_agent_capabilities)(void);
+    nl_path_request_def (*default_path_request_def)(void);
+    nl_status (*path_find)(nl_world*, const nl_path_request_def*, nl_path_result*, nl_path_point*, uint32_t, uint32_t*);
+    nl_status (*path_request)(nl_world*, const nl_path_request_def*, nl_path_ticket*);
+    nl_status (*path_poll)(const nl_world*, nl_path_ticket, nl_path_outcome*);
+    nl_status (*path_get_result)(const nl_world*, nl_path_ticket, nl_path_result*, nl_path_point*, uint32_t, uint32_t*);
+    nl_status (*path_cancel)(nl_world*, nl_path_ticket);
+    nl_status (*path_release)(nl_world*, nl_path_ticket);
+    nl_path_budget (*default_path_budget)(void);
+    nl_status (*path_process)(nl_world*, const nl_path_budget*, uint32_t*);
+    nl_status (*path_take_finished)(nl_world*, nl_path_finished*, uint32_t, uint32_t*, uint32_t*);
+    nl_status (*path_get_queue_stats)(const nl_world*, nl_path_queue_stats*);
     /* The plugin side's function types */
     nl_plugin_entry_fn* entry;
     nl_navmesh_sink_fn* sink;
@@ -335,6 +349,9 @@ int main(void) {
         nl_default_link_settings, nl_link_settings_from_json, nl_navmesh_generate_links,
         nl_navmesh_update_links_in_box, nl_navmesh_save_links_json, nl_navmesh_load_links_json,
         generation_progress,
+        nl_default_agent_capabilities, nl_default_path_request_def, nl_path_find, nl_path_request,
+        nl_path_poll,           nl_path_get_result,     nl_path_cancel,      nl_path_release,
+        nl_default_path_budget, nl_path_process,        nl_path_take_finished, nl_path_get_queue_stats,
         plugin_entry,           navmesh_sink,
     };
     const nl_link_id null_link = {0u, 0u};
@@ -351,6 +368,24 @@ int main(void) {
     if (api.mesh_is_valid(NULL, null_id) != 0 || !NL_FAILED(api.get_last_status())) return 1;
     if (api.navmesh_is_valid(NULL, null_navmesh) != 0 || !NL_FAILED(api.get_last_status())) return 1;
     if (api.link_is_valid(NULL, null_link) != 0 || !NL_FAILED(api.get_last_status())) return 1;
+    /* The output initialisers set their sizes and zero the rest (inline: no library call). */
+    {
+        const nl_link link = nl_link_init();
+        const nl_path_point point = nl_path_point_init();
+        const nl_ray_hit hit = nl_ray_hit_init();
+        const nl_nav_polygon polygon = nl_nav_polygon_init();
+        const nl_path_finished finished = nl_path_finished_init();
+        const nl_path_result result = nl_path_result_init();
+        if (link.size != sizeof link || link.kind != 0u || link.user_data != 0u || point.size != sizeof point ||
+            point.polygon != 0u || hit.size != sizeof hit || hit.hit != 0u || polygon.size != sizeof polygon ||
+            finished.size != sizeof finished || finished.user != NULL || result.size != sizeof result ||
+            nl_mesh_info_init().size != sizeof(nl_mesh_info) || nl_navmesh_info_init().size != sizeof(nl_navmesh_info) ||
+            nl_link_generation_report_init().size != sizeof(nl_link_generation_report) ||
+            nl_path_queue_stats_init().size != sizeof(nl_path_queue_stats) ||
+            nl_plugin_description_init().size != sizeof(nl_plugin_description) ||
+            api.default_path_budget().size != sizeof(nl_path_budget) || api.default_path_budget().max_requests != 0u)
+            return 1;
+    }
     /* The link defaults set their sizes. */
     if (api.default_link_def().size != sizeof(nl_link_def) ||
         api.default_link_settings().size != sizeof(nl_link_settings) || api.progress(NULL, 1.0f, "done") != 1)

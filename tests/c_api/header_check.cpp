@@ -43,10 +43,10 @@ static_assert(blittable<nl_link>(), "nl_link");
 static_assert(blittable<nl_link_def>(), "nl_link_def");
 static_assert(blittable<nl_link_settings>(), "nl_link_settings");
 static_assert(blittable<nl_link_generation_report>(), "nl_link_generation_report");
-static_assert(sizeof(nl_link) == 112 && sizeof(nl_link_requirements) == 32 && sizeof(nl_link_id) == 8,
+static_assert(sizeof(nl_link) == 120 && sizeof(nl_link_requirements) == 32 && sizeof(nl_link_id) == 8,
               "fixed link structs have the same size in C++ as in C");
 static_assert(std::is_same<nl_link_kind, uint32_t>::value, "nl_link_kind is uint32_t");
-static_assert(sizeof(nl_nav_polygon) == 160 && sizeof(nl_boundary_edge) == 56 && sizeof(nl_nav_point) == 24 &&
+static_assert(sizeof(nl_nav_polygon) == 164 && sizeof(nl_boundary_edge) == 56 && sizeof(nl_nav_point) == 24 &&
                   sizeof(nl_agent_type) == 16,
               "fixed structs have the same size in C++ as in C");
 static_assert(std::is_same<nl_status, uint32_t>::value, "nl_status is uint32_t");
@@ -87,6 +87,15 @@ int main() {
                  &nl_navmesh_get_links, &nl_navmesh_remove_generated_links, &nl_default_link_settings,
                  &nl_link_settings_from_json, &nl_navmesh_generate_links, &nl_navmesh_update_links_in_box,
                  &nl_navmesh_save_links_json, &nl_navmesh_load_links_json))
+        return 1;
+    // ... and of the path functions.
+    if (!all_set(&nl_default_agent_capabilities, &nl_default_path_request_def, &nl_path_find, &nl_path_request,
+                 &nl_path_poll, &nl_path_get_result, &nl_path_cancel, &nl_path_release, &nl_default_path_budget,
+                 &nl_path_process, &nl_path_take_finished, &nl_path_get_queue_stats))
+        return 1;
+    // The output initialisers compile in C++11 too and set the size.
+    if (nl_link_init().size != sizeof(nl_link) || nl_path_point_init().size != sizeof(nl_path_point) ||
+        nl_ray_hit_init().size != sizeof(nl_ray_hit) || nl_path_finished_init().size != sizeof(nl_path_finished))
         return 1;
     nl_progress_fn* progress = generation_progress;
     if (progress(nullptr, 0.5f, "jumps") != 1) return 1;

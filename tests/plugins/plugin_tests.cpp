@@ -193,7 +193,7 @@ struct BlockScene {
         generate_error = nl_get_last_error_message();
         uint32_t count = 0;
         nl_navmesh_get_links(world, navmesh, nullptr, 0, &count);
-        std::vector<nl_link> links(count);
+        std::vector<nl_link> links(count, nl_link_init());
         nl_navmesh_get_links(world, navmesh, links.data(), count, &count);
         return links;
     }
@@ -227,7 +227,12 @@ TEST_CASE("the climb link kind, loaded as a plugin, links the foot of a wall to 
         CHECK(l.requirements.abilities == 1u);
         CHECK(l.start[1] < 0.6f);   // on the floor
         CHECK(l.end[1] > 2.3f);     // on top of the block
-        CHECK(l.requirements.rise == doctest::Approx(l.end[1] - l.start[1]));
+        // A climb asks for the ability, not for a jump's height (requirements_from_ends = 0), so a
+        // body that cannot jump climbs it; its length is still the ends'.
+        CHECK(l.requirements.rise == 0.0f);
+        CHECK(l.requirements.drop == 0.0f);
+        CHECK(l.requirements.gap == 0.0f);
+        CHECK(l.requirements.length == doctest::Approx(std::hypot(l.end[0] - l.start[0], l.end[2] - l.start[2])));
         CHECK(l.cost_modifier == 2.0f);
         // The top end lies over the block.
         CHECK(l.end[0] > 0.0f);

@@ -33,10 +33,10 @@ bool neighbouring_centres(const std::string& level, float a[3], float b[3]) {
     bool found = false;
     if (NL_SUCCEEDED(nl_mesh_add_obj_file(world, level.c_str(), nullptr, &mesh)) &&
         NL_SUCCEEDED(nl_navmesh_build(world, &build, &navmesh))) {
-        nl_nav_polygon polygon{};
+        nl_nav_polygon polygon = nl_nav_polygon_init();
         for (uint32_t p = 0; !found && NL_SUCCEEDED(nl_navmesh_get_polygon(world, navmesh, p, &polygon)); ++p) {
             for (uint32_t k = 0; k < polygon.vertex_count && !found; ++k) {
-                nl_nav_polygon other{};
+                nl_nav_polygon other = nl_nav_polygon_init();
                 if (polygon.neighbours[k] == NL_NO_POLYGON ||
                     NL_FAILED(nl_navmesh_get_polygon(world, navmesh, polygon.neighbours[k], &other)))
                     continue;

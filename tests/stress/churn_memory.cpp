@@ -81,8 +81,10 @@ int main() {
         request.agent.radius = 0.0f;
         nl_path_ticket ticket{};
         uint32_t done = 0;
+        nl_path_budget one = nl_default_path_budget();
+        one.max_requests = 1;
         return nl_path_request(world, &request, &ticket) == NL_STATUS_SUCCESS &&
-               nl_path_process(world, 1, 0.0, &done) == NL_STATUS_SUCCESS && nl_path_release(world, ticket) == NL_STATUS_SUCCESS;
+               nl_path_process(world, &one, &done) == NL_STATUS_SUCCESS && nl_path_release(world, ticket) == NL_STATUS_SUCCESS;
     });
     // Released before anything plans them (no path workers, no nl_path_process): nothing may stay.
     churn("path request/release, never planned", 50000, 2.0, [&] {

@@ -70,7 +70,7 @@ void edit_links(nl_world* world, nl_navmesh_id navmesh, const std::atomic<bool>&
             if (nl_link_add(world, navmesh, &def, &id) != NL_STATUS_SUCCESS) fail(std::string("nl_link_add: ") + nl_get_last_error_message());
             live.push_back(id);
         } else if (rng() % 2 == 0) {
-            nl_link def{};
+            nl_link def = nl_link_init();
             nl_link_def update = nl_default_link_def();
             if (nl_link_get(world, live.back(), &def) != NL_STATUS_SUCCESS) fail("nl_link_get on a live link failed");
             for (int i = 0; i < 3; ++i) update.start[i] = def.start[i], update.end[i] = def.end[i];
@@ -157,7 +157,7 @@ int main() {
 
     if (stats.submitted != uint64_t(kRequests)) fail("submitted " + std::to_string(stats.submitted));
     int by_outcome[8] = {};
-    std::vector<nl_path_point> points(512);
+    std::vector<nl_path_point> points(512, nl_path_point_init());
     for (int i = 0; i < kRequests; ++i) {
         Slot& slot = slots[i];
         const int completions = slot.completions.load(std::memory_order_acquire);

@@ -91,7 +91,7 @@ void query(nl_world* world, std::mt19937& rng) {
     for (nl_ray& r : rays) {
         r = nl_ray{{random_in(rng, -2, 38), 12, random_in(rng, -2, 12)}, {0, -1, 0}, 30};
     }
-    std::vector<nl_ray_hit> hits(rays.size());
+    std::vector<nl_ray_hit> hits(rays.size(), nl_ray_hit_init());
     expect(nl_world_cast_rays(world, rays.data(), uint32_t(rays.size()), hits.data()), "nl_world_cast_rays");
     std::vector<nl_segment> segments(64);
     for (nl_segment& s : segments) {
@@ -209,7 +209,7 @@ void edit_links(Round& r, Worker& me) {
             if (expect(nl_link_add(r.world, r.navmesh, &def, &id), "nl_link_add")) live.push_back(id);
         } else if (what < 11) {
             me.doing = "nl_link_update";
-            nl_link link{};
+            nl_link link = nl_link_init();
             // INVALID_HANDLE: a JSON load below replaced every link since this one was added.
             if (expect(nl_link_get(r.world, live.back(), &link), "nl_link_get", {NL_STATUS_INVALID_HANDLE})) {
                 nl_link_def def = nl_default_link_def();
@@ -267,7 +267,7 @@ void request_paths(Round& r, Worker& me, unsigned seed) {
     std::mt19937 rng(seed);
     std::vector<std::unique_ptr<Completion>> done;
     std::vector<nl_path_ticket> tickets;
-    std::vector<nl_path_point> points(256);
+    std::vector<nl_path_point> points(256, nl_path_point_init());
     for (uint64_t i = 0; !r.stop; ++i) {
         nl_path_request_def def = request_on(r.navmesh, rng, 36, 10);
         if (i % 4 == 0) {
@@ -297,7 +297,11 @@ void request_paths(Round& r, Worker& me, unsigned seed) {
         if (i % 16 == 0) {
             me.doing = "nl_path_process / nl_navmesh_find_nearest";
             uint32_t done = 0;
-            expect(nl_path_process(r.world, 4, 1.0, &done), "nl_path_process");
+            nl_path_budget budget = nl_default_path_budget();
+            budget.max_requests = 4;
+            budget.max_milliseconds = 1.0;
+            budget.max_search_nodes = 2000;
+            expect(nl_path_process(r.world, &budget, &done), "nl_path_process");
             float points[3 * 16];
             for (float& p : points) p = random_in(rng, 0, 12);
             const float half[3] = {2, 4, 2};

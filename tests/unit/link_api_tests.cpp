@@ -26,7 +26,7 @@ struct Fixture {
     std::vector<nl_link> links() const {
         uint32_t count = 0;
         REQUIRE(nl_navmesh_get_links(world, navmesh, nullptr, 0, &count) == NL_STATUS_SUCCESS);
-        std::vector<nl_link> out(count);
+        std::vector<nl_link> out(count, nl_link_init());
         REQUIRE(nl_navmesh_get_links(world, navmesh, out.data(), count, &count) == NL_STATUS_SUCCESS);
         return out;
     }
@@ -39,7 +39,7 @@ struct Fixture {
     }
     // A point on the navmesh: the centre of polygon 0.
     nl_nav_polygon polygon(uint32_t p) const {
-        nl_nav_polygon out{};
+        nl_nav_polygon out = nl_nav_polygon_init();
         REQUIRE(nl_navmesh_get_polygon(world, navmesh, p, &out) == NL_STATUS_SUCCESS);
         return out;
     }
@@ -85,7 +85,7 @@ TEST_CASE("generation fills the report; regeneration replaces generated links an
     def.user_data = 77;
     nl_link_id manual{};
     REQUIRE(nl_link_add(f.world, f.navmesh, &def, &manual) == NL_STATUS_SUCCESS);
-    nl_link got{};
+    nl_link got = nl_link_init();
     REQUIRE(nl_link_get(f.world, manual, &got) == NL_STATUS_SUCCESS);
     CHECK(got.kind == NL_LINK_MANUAL);
     CHECK(got.generated == 0);
@@ -136,7 +136,7 @@ TEST_CASE("manual links: refused off the navmesh or with bad values; updated; re
 
     def.enabled = 0;
     REQUIRE(nl_link_update(f.world, id, &def) == NL_STATUS_SUCCESS);
-    nl_link got{};
+    nl_link got = nl_link_init();
     REQUIRE(nl_link_get(f.world, id, &got) == NL_STATUS_SUCCESS);
     CHECK(got.enabled == 0);
     CHECK(got.requirements.abilities == 0x4);

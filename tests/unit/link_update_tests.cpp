@@ -49,7 +49,7 @@ struct Scene {
     std::vector<nl_link> links() const {
         uint32_t count = 0;
         nl_navmesh_get_links(world, navmesh, nullptr, 0, &count);
-        std::vector<nl_link> out(count);
+        std::vector<nl_link> out(count, nl_link_init());
         REQUIRE(nl_navmesh_get_links(world, navmesh, out.data(), count, &count) == NL_STATUS_SUCCESS);
         return out;
     }

@@ -39,7 +39,7 @@ struct LevelWithLinks {
         REQUIRE(nl_navmesh_generate_links(world, navmesh, nullptr, nullptr, nullptr, nullptr) == NL_STATUS_SUCCESS);
         uint32_t count = 0;
         nl_navmesh_get_links(world, navmesh, nullptr, 0, &count);
-        links.resize(count);
+        links.resize(count, nl_link_init());
         nl_navmesh_get_links(world, navmesh, links.data(), count, &count);
     }
     ~LevelWithLinks() { nl_world_destroy(world); }
@@ -78,10 +78,10 @@ struct LevelWithLinks {
         def.accept_partial = 0;
         Path path;
         path.result.size = sizeof path.result;
-        path.points.resize(256);
+        path.points.resize(256, nl_path_point_init());
         uint32_t count = 0;
         REQUIRE(nl_path_find(world, &def, &path.result, path.points.data(), 256, &count) == NL_STATUS_SUCCESS);
-        path.points.resize(count);
+        path.points.resize(count, nl_path_point_init());
         return path;
     }
 };
@@ -137,7 +137,7 @@ TEST_CASE("a runner jumps the gap; a walker, or a jumper too short for it, goes 
     CHECK(runner.result.length < 16.0f);
     for (size_t i = 0; i < runner.points.size(); ++i) {
         if (runner.points[i].segment != NL_LINK_JUMP) continue;
-        nl_link link{};
+        nl_link link = nl_link_init();
         REQUIRE(nl_link_get(level.world, runner.points[i].link, &link) == NL_STATUS_SUCCESS);
         CHECK(link.kind == NL_LINK_JUMP);
         CHECK(runner.points[i].apex[1] > runner.points[i + 1].position[1]);  // the arc tops the higher end
@@ -184,7 +184,7 @@ TEST_CASE("only an agent that may drop takes the ledge; the others walk down the
     REQUIRE(partway.result.outcome == NL_PATH_COMPLETE);
     for (size_t i = 0; i + 1 < partway.points.size(); ++i) {
         if (partway.points[i].segment == NL_SEGMENT_WALK) continue;
-        nl_link link{};
+        nl_link link = nl_link_init();
         REQUIRE(nl_link_get(level.world, partway.points[i].link, &link) == NL_STATUS_SUCCESS);
         CHECK(link.requirements.drop <= 2.5f);
         CHECK(partway.points[i].position[1] - partway.points[i + 1].position[1] < 2.6f);
@@ -254,7 +254,7 @@ TEST_CASE("on every shared level, paths stay on the navmesh, end where asked, an
         std::mt19937 rng(5);
         // A random point of a random polygon (a random mix of its corners), a little above it.
         auto random_point = [&](float* out) {
-            nl_nav_polygon polygon;
+            nl_nav_polygon polygon = nl_nav_polygon_init();
             nl_navmesh_get_polygon(world, navmesh, uint32_t(rng() % info.polygon_count), &polygon);
             float total = 0.0f, mix[3] = {0, 0, 0};
             for (uint32_t c = 0; c < polygon.vertex_count; ++c) {
@@ -280,10 +280,10 @@ TEST_CASE("on every shared level, paths stay on the navmesh, end where asked, an
             INFO(path.stem().string(), " pair ", i);
             nl_path_result sync{};
             sync.size = sizeof sync;
-            std::vector<nl_path_point> points(512);
+            std::vector<nl_path_point> points(512, nl_path_point_init());
             uint32_t count = 0;
             REQUIRE(NL_SUCCEEDED(nl_path_find(world, &defs[i], &sync, points.data(), 512, &count)));
-            points.resize(count);
+            points.resize(count, nl_path_point_init());
 
             // The queued answer, planned on a worker, is the same.
             nl_path_outcome outcome = NL_PATH_PENDING;
@@ -293,7 +293,7 @@ TEST_CASE("on every shared level, paths stay on the navmesh, end where asked, an
             }
             nl_path_result queued{};
             queued.size = sizeof queued;
-            std::vector<nl_path_point> queued_points(512);
+            std::vector<nl_path_point> queued_points(512, nl_path_point_init());
             uint32_t queued_count = 0;
             REQUIRE(NL_SUCCEEDED(nl_path_get_result(world, tickets[i], &queued, queued_points.data(), 512, &queued_count)));
             REQUIRE(nl_path_release(world, tickets[i]) == NL_STATUS_SUCCESS);

@@ -56,7 +56,7 @@ Path find(nl_world* world, const nl_path_request_def& def) {
     uint32_t count = 0;
     path.status = nl_path_find(world, &def, &path.result, nullptr, 0, &count);
     if (NL_FAILED(path.status)) return path;
-    path.points.resize(count);
+    path.points.resize(count, nl_path_point_init());
     path.status = nl_path_find(world, &def, &path.result, path.points.data(), count, &count);
     return path;
 }
@@ -227,6 +227,7 @@ TEST_CASE("links join islands for the agents whose bodies can take them") {
     drop.kind = NL_LINK_DROP;
     drop.start[0] = 8.1f, drop.start[2] = 0.5f;  // declared as a drop of 2 m (the map is flat)
     drop.end[0] = 6.9f, drop.end[2] = 0.5f;
+    drop.requirements_from_ends = 0;
     drop.requirements.gap = 0.2f;
     drop.requirements.drop = 2.0f;
     drop.bidirectional = 1;
@@ -299,6 +300,35 @@ TEST_CASE("links join islands for the agents whose bodies can take them") {
     REQUIRE(p.result.outcome == NL_PATH_COMPLETE);
     // Walk 2.4 m, jump 1.2 m at 50 times the cost, plus the cost of taking a link, walk 1.4 m.
     CHECK(p.result.cost == doctest::Approx(2.4f + 1.2f * 50.0f + 7.0f + 1.4f).epsilon(1e-3));
+}
+
+TEST_CASE("a manual link may ask only for an ability: requirements taken as given, not from its ends") {
+    CellMap map({"...#..."});
+    nl_link_def ladder = nl_default_link_def();
+    ladder.kind = NL_LINK_FIRST_PLUGIN_KIND + 1;
+    ladder.start[0] = 2.9f, ladder.start[2] = 0.5f;
+    ladder.end[0] = 4.1f, ladder.end[2] = 0.5f;
+    ladder.requirements_from_ends = 0;
+    ladder.requirements.abilities = 0x2;
+    nl_link_id id{};
+    REQUIRE(nl_link_add(map.world, map.navmesh, &ladder, &id) == NL_STATUS_SUCCESS);
+    nl_link got = nl_link_init();
+    REQUIRE(nl_link_get(map.world, id, &got) == NL_STATUS_SUCCESS);
+    CHECK(got.requirements.gap == 0.0f);
+    CHECK(got.requirements.length == doctest::Approx(1.2f));  // measured: it was left 0
+
+    nl_path_request_def def = map.request(0.5f, 0.5f, 5.5f, 0.5f);
+    def.accept_partial = 0;
+    CHECK(find(map.world, def).result.outcome == NL_PATH_NO_PATH);  // no ability
+    def.agent.abilities = 0x2;                                      // and no jump at all
+    CHECK(find(map.world, def).result.outcome == NL_PATH_COMPLETE);
+
+    // The same link measured from its ends asks for a 1.2 m jump as well.
+    ladder.requirements_from_ends = 1;
+    REQUIRE(nl_link_update(map.world, id, &ladder) == NL_STATUS_SUCCESS);
+    CHECK(find(map.world, def).result.outcome == NL_PATH_NO_PATH);
+    def.agent.max_jump_distance = 1.2f;
+    CHECK(find(map.world, def).result.outcome == NL_PATH_COMPLETE);
 }
 
 TEST_CASE("ability bits and clearance width filter links") {

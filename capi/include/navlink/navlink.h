@@ -17,9 +17,16 @@
  *   data; output pointers are caller-owned buffers. Each function says which.
  * - Unless a function says otherwise, all functions that take a world are safe to call from several
  *   threads at once on the same world; nl_world_destroy must not race with any other call on it.
- * - Structs that may grow start with `uint32_t size`; fill them from the nl_default_*_def()
- *   functions, which set it, then change the fields you need. A library newer than the header a host
- *   was built with reads only the `size` bytes the host has and gives later fields their defaults.
+ * - Structs that may grow start with `uint32_t size`. Inputs: fill them from the nl_default_*_def()
+ *   functions, which set it, then change the fields you need; a library newer than the header a
+ *   host was built with reads only the `size` bytes the host has and gives later fields their
+ *   defaults. Outputs, single or in arrays: set `size` with the nl_*_init() functions below (inline,
+ *   no library call: plugins use them too); the library writes only the `size` bytes the host has.
+ *   An output array of such elements (nl_link, nl_path_point, nl_ray_hit...) is laid out with the
+ *   host's element size, read from its FIRST element's `size`: set at least that one (the library
+ *   writes every element's `size` back), e.g. `links[0] = nl_link_init();` (also after malloc: an
+ *   unset `size` is garbage). A `size` smaller than the element's first release, over 4096 or not
+ *   a multiple of the element's alignment is INVALID_ARGUMENT.
  * - Coordinates are metres; every position passed in must be finite and within
  *   +-NL_COORDINATE_LIMIT, or the call fails with NL_STATUS_INVALID_ARGUMENT.
  */
@@ -97,6 +104,21 @@ NL_API nl_status nl_get_last_status(void);
  *  "nl_mesh_add: def->indices[7] = 120 is out of range (vertex_count = 64)".
  *  Borrowed: valid until the next nl_* call on this thread. Never null. Thread-safe. */
 NL_API const char* nl_get_last_error_message(void);
+
+/** Zero-initialises a struct in C and C++ alike (the nl_*_init() functions use it). */
+#ifdef __cplusplus
+#define NL_ZERO_INIT {}
+#else
+#define NL_ZERO_INIT {0}
+#endif
+
+/** Defines `static inline T name(void)`: a zeroed T with `size` set, for output structs. */
+#define NL_DEFINE_OUTPUT_INIT(T, name)          \
+    static inline T name(void) {               \
+        T value = NL_ZERO_INIT;                 \
+        value.size = (uint32_t)sizeof(T);       \
+        return value;                           \
+    }
 
 /** Largest coordinate magnitude accepted anywhere, in metres. Far beyond any playable space (float
  *  precision is coarser than a metre past 1e7); it keeps every computation inside float range. */
@@ -252,6 +274,8 @@ typedef struct nl_mesh_info {
     uint64_t user_data;
 } nl_mesh_info;
 
+NL_DEFINE_OUTPUT_INIT(nl_mesh_info, nl_mesh_info_init)
+
 /** Fills `*out_info` (caller-owned; set its `size` field to sizeof(nl_mesh_info) first: the library
  *  writes that many bytes at most). Returns SUCCESS, INVALID_HANDLE (null, stale or another world's
  *  id) or INVALID_ARGUMENT. Thread-safe. */
@@ -277,8 +301,9 @@ typedef struct nl_ray {
     float max_distance;
 } nl_ray;
 
-/** The closest hit of a ray. */
+/** The closest hit of a ray. An array element that may grow: set out_hits[0].size (nl_ray_hit_init). */
 typedef struct nl_ray_hit {
+    uint32_t size;       /**< sizeof(nl_ray_hit) as the host knows it; written back. */
     float distance;      /**< Metres from the origin along the normalised direction. */
     float point[3];      /**< World-space hit point. */
     float normal[3];     /**< Unit geometric normal in world space, by the triangle's winding
@@ -290,8 +315,11 @@ typedef struct nl_ray_hit {
     uint8_t reserved[3];
 } nl_ray_hit;
 
+NL_DEFINE_OUTPUT_INIT(nl_ray_hit, nl_ray_hit_init)
+
 /** Casts `count` rays and writes the closest hit of each to `out_hits` (caller-owned, `count`
- *  entries). `rays` is borrowed. count == 0 succeeds and writes nothing. A ray that starts on a surface
+ *  entries of the size set in out_hits[0].size). `rays` is borrowed. count == 0 succeeds and writes
+ *  nothing. A ray that starts on a surface
  *  hits it at distance 0: start probes slightly off the surface they leave.
  *  Returns SUCCESS, or INVALID_ARGUMENT (null pointer; a ray with an origin not finite or beyond
  *  NL_COORDINATE_LIMIT, a zero or non-finite direction, or max_distance <= 0 or NaN: its index is
@@ -415,6 +443,8 @@ typedef struct nl_navmesh_info {
     float bounds_max[3];
 } nl_navmesh_info;
 
+NL_DEFINE_OUTPUT_INIT(nl_navmesh_info, nl_navmesh_info_init)
+
 /** Fills `*out_info` (caller-owned; set its `size` first). Returns SUCCESS, INVALID_HANDLE or
  *  INVALID_ARGUMENT. Thread-safe. */
 NL_API nl_status nl_navmesh_get_info(const nl_world* world, nl_navmesh_id navmesh, nl_navmesh_info* out_info);
@@ -425,8 +455,10 @@ NL_API nl_status nl_navmesh_get_info(const nl_world* world, nl_navmesh_id navmes
 NL_API nl_status nl_navmesh_get_vertices(const nl_world* world, nl_navmesh_id navmesh, float* out_xyz,
                                          uint32_t capacity, uint32_t* out_count);
 
-/** One polygon: corners counter-clockwise seen from above, and the neighbour across each edge. */
+/** One polygon: corners counter-clockwise seen from above, and the neighbour across each edge. May
+ *  grow: set `size` (nl_nav_polygon_init). */
 typedef struct nl_nav_polygon {
+    uint32_t size;                                /**< sizeof(nl_nav_polygon) as the host knows it. */
     uint32_t vertex_count;
     uint32_t vertices[NL_MAX_POLYGON_VERTICES];   /**< Indices into the navmesh's vertices. */
     uint32_t neighbours[NL_MAX_POLYGON_VERTICES]; /**< Polygon across edge i (corner i to i + 1), or
@@ -436,7 +468,9 @@ typedef struct nl_nav_polygon {
     float centre[3];                              /**< Average of the corners. */
 } nl_nav_polygon;
 
-/** Fills `*out_polygon` (caller-owned) with polygon `polygon` (0 .. polygon_count - 1). Polygons keep
+NL_DEFINE_OUTPUT_INIT(nl_nav_polygon, nl_nav_polygon_init)
+
+/** Fills `*out_polygon` (caller-owned, `size` set) with polygon `polygon` (0 .. polygon_count - 1). Polygons keep
  *  the order they were given in, less the dropped ones; a polygon's corners start at its first given
  *  corner (reversed when it was turned over). Entries past vertex_count are 0 (vertices) and
  *  NL_NO_POLYGON (neighbours). Returns SUCCESS, INVALID_HANDLE, or INVALID_ARGUMENT (null pointer,
@@ -555,11 +589,13 @@ typedef struct nl_link_requirements {
     uint32_t reserved;     /**< 0. */
 } nl_link_requirements;
 
-/** A link as the world holds it. */
+/** A link as the world holds it. An array element that may grow: set `size` of the first element of
+ *  an output array (nl_link_init). */
 typedef struct nl_link {
+    uint32_t size;             /**< sizeof(nl_link) as the host knows it; written back. */
+    nl_link_kind kind;
     nl_link_id id;
     nl_navmesh_id navmesh;
-    nl_link_kind kind;
     float start[3];
     float end[3];
     float apex[3];             /**< Top of a jump's arc; for a generated drop, where its fall leaves
@@ -570,11 +606,14 @@ typedef struct nl_link {
     uint8_t enabled;
     uint8_t reserved;
     float cost_modifier;       /**< Multiplies the link's traversal cost (>= 0; 1 by default). */
-    uint64_t user_data;
-    nl_link_requirements requirements;
     uint32_t start_polygon;    /**< Navmesh polygons under the ends (NL_NO_POLYGON if unknown). */
     uint32_t end_polygon;
+    uint32_t reserved2;        /**< 0. (Keeps user_data 8-aligned with no hidden padding.) */
+    uint64_t user_data;
+    nl_link_requirements requirements;
 } nl_link;
+
+NL_DEFINE_OUTPUT_INIT(nl_link, nl_link_init)
 
 /** A link to add, or the new state of one to update. Get one from nl_default_link_def(). */
 typedef struct nl_link_def {
@@ -584,15 +623,20 @@ typedef struct nl_link_def {
     float end[3];
     uint8_t bidirectional;     /**< 0 by default. */
     uint8_t enabled;           /**< 1 by default. */
-    uint8_t reserved[2];
+    uint8_t requirements_from_ends; /**< 1 (default): requirements.gap, length, rise and drop are
+                                         measured from the ends (gap = length: the rims are not
+                                         known), and the values given for them are ignored; 0: all of
+                                         `requirements` is taken as given (e.g. a link that asks only
+                                         for an ability; a length of 0 is measured). clearance_width
+                                         and abilities are always taken as given. */
+    uint8_t reserved;
     float cost_modifier;       /**< 1 by default; >= 0. */
     uint64_t user_data;
-    nl_link_requirements requirements; /**< gap, rise, drop and length are computed from the ends
-                                            when gap, rise and drop are all 0; length alone when it
-                                            is 0. */
+    nl_link_requirements requirements;
 } nl_link_def;
 
-/** A manual link from (0,0,0) to (0,0,0), one-way, enabled, cost modifier 1. Thread-safe. */
+/** A manual link from (0,0,0) to (0,0,0), one-way, enabled, cost modifier 1, requirements measured
+ *  from its ends. Thread-safe. */
 NL_API nl_link_def nl_default_link_def(void);
 
 /** Adds a link to a navmesh. Its ends must each lie within 1 m of the navmesh (they are kept as given;
@@ -612,10 +656,12 @@ NL_API nl_status nl_link_remove(nl_world* world, nl_link_id link);
 /** Nonzero if `link` is a link of `world`. Thread-safe. */
 NL_API int32_t nl_link_is_valid(const nl_world* world, nl_link_id link);
 
-/** Fills `*out_link` (caller-owned). Returns SUCCESS, INVALID_HANDLE or INVALID_ARGUMENT. Thread-safe. */
+/** Fills `*out_link` (caller-owned, `size` set). Returns SUCCESS, INVALID_HANDLE or INVALID_ARGUMENT
+ *  (null pointer, `size` too small). Thread-safe. */
 NL_API nl_status nl_link_get(const nl_world* world, nl_link_id link, nl_link* out_link);
 
-/** Lists a navmesh's links, in the order they were added (two-call pattern as nl_world_get_meshes).
+/** Lists a navmesh's links, in the order they were added (two-call pattern as nl_world_get_meshes;
+ *  out_links[0].size set when out_links is not NULL).
  *  Thread-safe: the list is one consistent moment even while other threads edit. */
 NL_API nl_status nl_navmesh_get_links(const nl_world* world, nl_navmesh_id navmesh, nl_link* out_links,
                                       uint32_t capacity, uint32_t* out_count);
@@ -711,6 +757,8 @@ typedef struct nl_link_generation_report {
     uint32_t rejected_too_deep;    /**< Drops deeper than max_drop_distance, floor to floor. */
     uint32_t reserved;
 } nl_link_generation_report;
+
+NL_DEFINE_OUTPUT_INIT(nl_link_generation_report, nl_link_generation_report_init)
 
 /** Link generation progress: `fraction` done (0..1) and the stage's name (borrowed for the call). Return 0 to
  *  cancel the generation. Called on the thread that called nl_navmesh_generate_links. */
@@ -866,8 +914,10 @@ NL_API nl_path_request_def nl_default_path_request_def(void);
 typedef uint32_t nl_segment_kind;
 #define NL_SEGMENT_WALK 0u
 
-/** One point of a path. */
+/** One point of a path. An array element that may grow: set `size` of the first element of an
+ *  output array (nl_path_point_init). */
 typedef struct nl_path_point {
+    uint32_t size;           /**< sizeof(nl_path_point) as the host knows it; written back. */
     float position[3];
     uint32_t polygon;        /**< Navmesh polygon at the point. */
     nl_segment_kind segment; /**< How the agent goes on from here to the next point (NL_SEGMENT_WALK
@@ -879,6 +929,8 @@ typedef struct nl_path_point {
     uint8_t reversed;        /**< 1 if the link is taken from its end to its start. */
     uint8_t reserved[3];
 } nl_path_point;
+
+NL_DEFINE_OUTPUT_INIT(nl_path_point, nl_path_point_init)
 
 /** What a finished request found. */
 typedef struct nl_path_result {
@@ -896,10 +948,15 @@ typedef struct nl_path_result {
     float goal[3];            /**< The goal snapped to the navmesh (where the path ends if COMPLETE). */
 } nl_path_result;
 
+NL_DEFINE_OUTPUT_INIT(nl_path_result, nl_path_result_init)
+
 /** Plans a path now, on the calling thread, and writes the result to `*out_result` (caller-owned,
- *  `size` set) and its points to `out_points` (caller-owned, `capacity` entries; may be NULL with
- *  capacity 0 to learn the count; `*out_count` receives the point count). For tools and tests; a
- *  game uses nl_path_request. `def` is borrowed; its callback is ignored.
+ *  `size` set) and its points to `out_points` (caller-owned, `capacity` entries, out_points[0].size
+ *  set; may be NULL with capacity 0 to learn the count; `*out_count` receives the point count). For
+ *  tools and tests; a game uses nl_path_request. `def` is borrowed; its callback is ignored.
+ *  When the points did not fit (or were not asked for), the calling thread keeps the plan: the next
+ *  nl_path_find on this thread with the same request, while the navmesh and its links are unchanged,
+ *  copies it instead of planning again.
  *  Returns SUCCESS when the search ran, whatever it found (PARTIAL_RESULT is set for NL_PATH_PARTIAL;
  *  read the outcome), or a failure with INVALID_HANDLE (navmesh), INVALID_ARGUMENT (null pointer, a
  *  coordinate not finite, a negative capability or cost, size too small: named), BUFFER_TOO_SMALL
@@ -938,14 +995,48 @@ NL_API nl_status nl_path_cancel(nl_world* world, nl_path_ticket ticket);
  *  or INVALID_HANDLE. Thread-safe. */
 NL_API nl_status nl_path_release(nl_world* world, nl_path_ticket ticket);
 
-/** Plans queued requests on the calling thread until the queue is empty, `max_requests` were planned
- *  (0: no limit) or `max_milliseconds` passed (checked between requests, so at least one request is
- *  planned if any is queued; <= 0: no limit). The way a
- *  host with path_worker_count 0 runs the queue in its frame; with workers it helps them.
- *  `out_processed` (optional) receives how many requests finished here. Returns SUCCESS or
- *  INVALID_ARGUMENT (NaN budget). Thread-safe. */
-NL_API nl_status nl_path_process(nl_world* world, uint32_t max_requests, double max_milliseconds,
-                                 uint32_t* out_processed);
+/** How much nl_path_process may do in one call. Get one from nl_default_path_budget() (no limits).
+ *  A request is never split: the budget is checked between requests, so a call that finds the
+ *  queue non-empty plans at least one, and the request that crosses a limit finishes. */
+typedef struct nl_path_budget {
+    uint32_t size;             /**< sizeof(nl_path_budget). */
+    uint32_t max_requests;     /**< Requests planned at most; 0: no limit. */
+    double max_milliseconds;   /**< Time spent at most; <= 0: no limit. */
+    uint64_t max_search_nodes; /**< Search work at most: polygons the searches visited (their
+                                    nl_path_result.nodes_visited added up); 0: no limit. A game
+                                    bounds its frame by work this way, whatever the clock does. */
+} nl_path_budget;
+
+/** No limits. Thread-safe; never fails. */
+NL_API nl_path_budget nl_default_path_budget(void);
+
+/** Plans queued requests on the calling thread until the queue is empty or the budget (borrowed;
+ *  NULL: no limits) is spent. The way a host with path_worker_count 0 runs the queue in its frame;
+ *  with workers it helps them. `out_processed` (optional) receives how many requests finished here.
+ *  Returns SUCCESS or INVALID_ARGUMENT (NaN milliseconds, `size` too small). Thread-safe. */
+NL_API nl_status nl_path_process(nl_world* world, const nl_path_budget* budget, uint32_t* out_processed);
+
+/** A request that finished, as nl_path_take_finished reports it. An array element that may grow: set
+ *  `size` of the first element (nl_path_finished_init). */
+typedef struct nl_path_finished {
+    uint32_t size;           /**< sizeof(nl_path_finished) as the host knows it; written back. */
+    nl_path_outcome outcome;
+    nl_path_ticket ticket;
+    void* user;              /**< The request's `user`, as given. */
+} nl_path_finished;
+
+NL_DEFINE_OUTPUT_INIT(nl_path_finished, nl_path_finished_init)
+
+/** Takes the requests that finished since the last call, oldest first, on the host's own thread:
+ *  the way to learn of finished requests without a callback (as Box2D's event arrays; callbacks still
+ *  run as well). Writes up to `capacity` of them to `out_finished` (caller-owned, out_finished[0].size
+ *  set when capacity > 0) and forgets those; `*out_count` receives how many were written and
+ *  `*out_remaining` (optional) how many still wait for the next call. A request whose ticket was
+ *  released is not reported (so what waits is bounded by the tickets not yet released).
+ *  Returns SUCCESS, or INVALID_ARGUMENT (null out_count, NULL out_finished with capacity > 0, `size`
+ *  too small). Thread-safe: each finished request is taken by one call only. */
+NL_API nl_status nl_path_take_finished(nl_world* world, nl_path_finished* out_finished, uint32_t capacity,
+                                       uint32_t* out_count, uint32_t* out_remaining);
 
 /** Counters of a world's path queue. */
 typedef struct nl_path_queue_stats {
@@ -958,6 +1049,8 @@ typedef struct nl_path_queue_stats {
     uint64_t submitted;    /**< Requests accepted since the world was created. */
     uint64_t finished;     /**< Requests finished (any outcome). */
 } nl_path_queue_stats;
+
+NL_DEFINE_OUTPUT_INIT(nl_path_queue_stats, nl_path_queue_stats_init)
 
 /** Fills `*out_stats` (caller-owned, `size` set). Returns SUCCESS or INVALID_ARGUMENT. Thread-safe. */
 NL_API nl_status nl_path_get_queue_stats(const nl_world* world, nl_path_queue_stats* out_stats);
@@ -975,7 +1068,6 @@ typedef struct nl_plugin_id {
 /** Plugin kinds (bits of nl_plugin_description.kinds and nl_plugin_info.kinds). */
 #define NL_PLUGIN_NAVMESH_BUILDER 0x1u
 #define NL_PLUGIN_LINK_KIND 0x2u
-#define NL_PLUGIN_PATH_MODIFIER 0x4u
 
 /** Loads a plugin from a shared library (`path`, borrowed NUL-terminated UTF-8) into the world: finds
  *  its entry symbol, negotiates the ABI version and registers what it provides. The library stays
@@ -996,6 +1088,8 @@ typedef struct nl_plugin_description {
     const char* version;
     const char* description;
 } nl_plugin_description;
+
+NL_DEFINE_OUTPUT_INIT(nl_plugin_description, nl_plugin_description_init)
 
 /** Describes a plugin. Returns SUCCESS, INVALID_HANDLE or INVALID_ARGUMENT. Thread-safe. */
 NL_API nl_status nl_plugin_get_description(const nl_world* world, nl_plugin_id plugin,

@@ -19,7 +19,7 @@ int main(void) {
     nl_world* world = NULL;
     nl_mesh_id mesh;
     nl_ray ray = {{0.0f, 2.0f, 0.0f}, {0.0f, -1.0f, 0.0f}, 10.0f};
-    nl_ray_hit hit;
+    nl_ray_hit hit = nl_ray_hit_init();
     int ok;
 
     if (version.major != NL_VERSION_MAJOR || version.minor != NL_VERSION_MINOR || version.patch != NL_VERSION_PATCH) {
