@@ -18,7 +18,7 @@
 /* pthread_self, pthread_equal, nanosleep and the cancelling thread; strict C11 otherwise. */
 #define _POSIX_C_SOURCE 200809L
 
-#include "c_api_test.h"
+#include "abi_test.h"
 
 #include <math.h>
 #include <pthread.h>

@@ -5,8 +5,8 @@
  * calls for (c_api_hostile_coverage.c derives them from the declarations). Strict C11 through the C
  * ABI only.
  */
-#ifndef NAVLINK_C_API_HOSTILE_H
-#define NAVLINK_C_API_HOSTILE_H
+#ifndef NAVLINK_ABI_HOSTILE_H
+#define NAVLINK_ABI_HOSTILE_H
 
 #include <navlink/navlink.h>
 
@@ -114,4 +114,4 @@ typedef struct coverage_exemption {
 int check_coverage(const char* const* header_dirs, size_t dir_count, const case_record* cases, size_t case_count,
                    const coverage_exemption* exemptions, size_t exemption_count);
 
-#endif /* NAVLINK_C_API_HOSTILE_H */
+#endif /* NAVLINK_ABI_HOSTILE_H */

@@ -11,7 +11,7 @@
 /* fork(), pipe(), waitpid() and alarm(); strict C11 otherwise. */
 #define _POSIX_C_SOURCE 200809L
 
-#include "c_api_hostile.h"
+#include "hostile.h"
 
 #include <errno.h>
 #include <signal.h>

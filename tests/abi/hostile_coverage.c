@@ -8,7 +8,7 @@
 /* opendir() and readdir() read the header folders; strict C11 otherwise. */
 #define _POSIX_C_SOURCE 200809L
 
-#include "c_api_hostile.h"
+#include "hostile.h"
 
 #include <ctype.h>
 #include <dirent.h>

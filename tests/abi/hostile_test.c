@@ -43,8 +43,8 @@
 /* fork() (in the runner), pthreads, mkdtemp(), strict C11 otherwise. */
 #define _POSIX_C_SOURCE 200809L
 
-#include "c_api_hostile.h"
-#include "c_api_scene.h"
+#include "hostile.h"
+#include "scene.h"
 
 #include <navlink/plugin.h>
 #include <navlink/recast.h>

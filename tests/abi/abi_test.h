@@ -2,8 +2,8 @@
  * What the files of navlink-c-api-test share: the counted checks (defined in c_api_test.c) and the
  * entry points of the test groups kept in other files. Strict C11 through the C ABI only.
  */
-#ifndef NAVLINK_C_API_TEST_H
-#define NAVLINK_C_API_TEST_H
+#ifndef NAVLINK_ABI_TEST_H
+#define NAVLINK_ABI_TEST_H
 
 #include <navlink/navlink.h>
 
@@ -56,4 +56,4 @@ void test_navmesh_all(void);
 
 void test_paths_all(void);
 
-#endif /* NAVLINK_C_API_TEST_H */
+#endif /* NAVLINK_ABI_TEST_H */

@@ -11,8 +11,8 @@
 /* fork() and waitpid() isolate the cases that may crash the process; strict C11 otherwise. */
 #define _POSIX_C_SOURCE 200809L
 
-#include "c_api_scene.h"
-#include "c_api_test.h"
+#include "abi_test.h"
+#include "scene.h"
 
 #include <navlink/plugin.h>
 #include <navlink/recast.h>

@@ -18,8 +18,8 @@
 /* pthread_equal and the readers' threads; strict C11 otherwise. */
 #define _POSIX_C_SOURCE 200809L
 
-#include "c_api_scene.h"
-#include "c_api_test.h"
+#include "abi_test.h"
+#include "scene.h"
 
 #include <math.h>
 #include <pthread.h>
