@@ -1,8 +1,8 @@
 /*
- * navlink-c-api-hostile-test: every public nl_* function called with bad input (c_api_hostile_test.c
- * has the cases), run group by group in child processes (c_api_hostile_runner.c), and held against
+ * navlink-abi-hostile-test: every public nl_* function called with bad input (hostile_test.c
+ * has the cases), run group by group in child processes (hostile_runner.c), and held against
  * the public headers: each function, and each of its parameters, needs the hostile cases its type
- * calls for (c_api_hostile_coverage.c derives them from the declarations). Strict C11 through the C
+ * calls for (hostile_coverage.c derives them from the declarations). Strict C11 through the C
  * ABI only.
  */
 #ifndef NAVLINK_ABI_HOSTILE_H
@@ -96,7 +96,7 @@ int run_groups(const hostile_group* groups, size_t count, const hostile_fixture*
                size_t* out_case_count);
 
 /* ---------------------------------------------------------------------------------------------
- * Coverage (c_api_hostile_coverage.c)
+ * Coverage (hostile_coverage.c)
  * ------------------------------------------------------------------------------------------- */
 
 /* A requirement that does not apply, with the reason (printed with the summary). */

@@ -1,5 +1,5 @@
 /*
- * The runner and the checks of navlink-c-api-hostile-test. Each group runs in a forked child, which
+ * The runner and the checks of navlink-abi-hostile-test. Each group runs in a forked child, which
  * reports every case over a pipe as it goes, one line per event:
  *   C <tab> function <tab> description   a case starts
  *   F <tab> text                          a check of it failed

@@ -1,20 +1,15 @@
 /*
- * navlink-c-api-test, part two: navmeshes, navmesh building and plugins, through the C ABI only, in
- * strict C11. The checks are counted with the rest (c_api_test.h).
- *
- * The scene most cases use is a 2 x 2 grid of 1 m squares at y = 0.5, x and z in [-1, 1]: nine
- * vertices, vertex r * 3 + c at (-1 + c, 0.5, -1 + r), and four quads wound counter-clockwise seen
- * from above (normal +Y). The polygon of the quadrant x in [0, 1], z in [-1, 0] is "quadrant 1", and
- * so on: quadrant = 2 * (z > 0) + (x > 0). Expectations are found by position (a polygon's centre, an
- * edge's ends), never by the order the library happens to store things in.
+ * Navmeshes (navlink.h): navmeshes handed over with nl_navmesh_add (quads, triangle soups, detail
+ * heights, areas, welding, refusals), their lists, polygons, boundary edges and ids, and point location
+ * with nl_navmesh_find_nearest, on the grid of navmesh_scene.h.
  */
-/* fork() and waitpid() isolate the cases that may crash the process; strict C11 otherwise. */
+/* pthread for the querying threads; strict C11 otherwise. */
 #define _POSIX_C_SOURCE 200809L
 
 #include "abi_test.h"
+#include "navmesh_scene.h"
 #include "scene.h"
 
-#include <navlink/plugin.h>
 #include <navlink/recast.h>
 
 #include <math.h>
@@ -22,32 +17,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/types.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
-/* ---------------------------------------------------------------------------------------------
- * Scenes and helpers
- * ------------------------------------------------------------------------------------------- */
-
-#define GRID_Y 0.5f
-
-static const float k_grid_vertices[27] = {
-    -1.0f, GRID_Y, -1.0f, 0.0f, GRID_Y, -1.0f, 1.0f, GRID_Y, -1.0f, /* row z = -1: 0 1 2 */
-    -1.0f, GRID_Y, 0.0f,  0.0f, GRID_Y, 0.0f,  1.0f, GRID_Y, 0.0f,  /* row z = 0:  3 4 5 */
-    -1.0f, GRID_Y, 1.0f,  0.0f, GRID_Y, 1.0f,  1.0f, GRID_Y, 1.0f,  /* row z = 1:  6 7 8 */
-};
-/* Counter-clockwise seen from above: (x0, z0) -> (x0, z1) -> (x1, z1) -> (x1, z0). */
-static const uint32_t k_grid_quads[16] = {
-    0, 3, 4, 1, /* quadrant 0: x in [-1, 0], z in [-1, 0] */
-    1, 4, 5, 2, /* quadrant 1: x in [0, 1],  z in [-1, 0] */
-    3, 6, 7, 4, /* quadrant 2: x in [-1, 0], z in [0, 1] */
-    4, 7, 8, 5, /* quadrant 3: x in [0, 1],  z in [0, 1] */
-};
-static const uint8_t k_quad_counts[4] = {4, 4, 4, 4};
-
-/* The grid with polygon_vertex_counts: four quads. */
-static nl_navmesh_def grid_def(void) { return navmesh_def_of(k_grid_vertices, 9, k_grid_quads, k_quad_counts, 4); }
 
 /* The grid as a Unity-style triangle soup: each quad (a b c d) is triangles (a b c) and (a c d), and
    every triangle has its own three vertices (24 vertices, indices 0..23). */
@@ -65,334 +34,69 @@ static void grid_soup(float vertices[72], uint32_t indices[24]) {
     }
 }
 
-/* Which quadrant of the grid a point (seen from above) lies in; the point must not be on x = 0 or z = 0. */
-static int quadrant_of(float x, float z) { return (z > 0.0f ? 2 : 0) + (x > 0.0f ? 1 : 0); }
-
-static uint32_t navmesh_count(const nl_world* world) {
-    uint32_t count = 0xdeadbeefu;
-    nl_world_get_navmeshes(world, NULL, 0, &count);
-    return count;
-}
-
-static uint32_t plugin_count(const nl_world* world) {
-    uint32_t count = 0xdeadbeefu;
-    nl_world_get_plugins(world, NULL, 0, &count);
-    return count;
-}
-
-static int same_navmesh(nl_navmesh_id a, nl_navmesh_id b) {
-    return a.index1 == b.index1 && a.generation == b.generation;
-}
-static int same_plugin(nl_plugin_id a, nl_plugin_id b) {
-    return a.index1 == b.index1 && a.generation == b.generation;
-}
-
-static int same_agent(nl_agent_type a, nl_agent_type b) {
-    return a.radius == b.radius && a.height == b.height && a.max_climb == b.max_climb && a.max_slope == b.max_slope;
-}
-
-static nl_navmesh_info navmesh_info(const nl_world* world, nl_navmesh_id id) {
-    nl_navmesh_info info;
-    memset(&info, 0, sizeof info);
-    info.size = sizeof info;
-    if (NL_FAILED(nl_navmesh_get_info(world, id, &info))) memset(&info, 0, sizeof info);
-    return info;
-}
-
-/* The navmesh's vertices in a malloc'ed array (3 floats each); NULL on failure. */
-static float* navmesh_vertices(const nl_world* world, nl_navmesh_id id, uint32_t* out_count) {
-    uint32_t count = 0;
-    float* xyz;
-    *out_count = 0;
-    if (NL_FAILED(nl_navmesh_get_vertices(world, id, NULL, 0, &count))) return NULL;
-    xyz = (float*)malloc(3 * sizeof(float) * (count ? count : 1));
-    if (!xyz) return NULL;
-    if (NL_FAILED(nl_navmesh_get_vertices(world, id, xyz, count, &count))) {
-        free(xyz);
-        return NULL;
-    }
-    *out_count = count;
-    return xyz;
-}
-
-static nl_boundary_edge* navmesh_edges(const nl_world* world, nl_navmesh_id id, uint32_t* out_count) {
-    uint32_t count = 0;
-    nl_boundary_edge* edges;
-    *out_count = 0;
-    if (NL_FAILED(nl_navmesh_get_boundary_edges(world, id, NULL, 0, &count))) return NULL;
-    edges = (nl_boundary_edge*)malloc(sizeof(nl_boundary_edge) * (count ? count : 1));
-    if (!edges) return NULL;
-    if (NL_FAILED(nl_navmesh_get_boundary_edges(world, id, edges, count, &count))) {
-        free(edges);
-        return NULL;
-    }
-    *out_count = count;
-    return edges;
-}
-
-static float dot3(const float* a, const float* b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-static float length3(const float* a) { return sqrtf(dot3(a, a)); }
-static int near3(const float* a, float x, float y, float z, float tol) {
-    return fabsf(a[0] - x) <= tol && fabsf(a[1] - y) <= tol && fabsf(a[2] - z) <= tol;
-}
-static int equal3(const float* a, const float* b) { return a[0] == b[0] && a[1] == b[1] && a[2] == b[2]; }
-
-/* Twice the signed area of a polygon seen from above; positive when counter-clockwise with +Y up. */
-static float area_from_above(const float* xyz, const nl_nav_polygon* p) {
-    float sum = 0.0f;
-    uint32_t k;
-    for (k = 0; k < p->vertex_count; ++k) {
-        const float* a = xyz + 3 * p->vertices[k];
-        const float* b = xyz + 3 * p->vertices[(k + 1) % p->vertex_count];
-        sum += a[2] * b[0] - a[0] * b[2]; /* (a x b).y */
-    }
-    return sum;
-}
-
-/* Structure every navmesh must have, whatever made it: corners in range and counter-clockwise from
-   above, unit upward normals, symmetric neighbours (across the same two vertices), portal and boundary
-   counts that agree with the polygons, and boundary edges that are the polygons' unconnected edges with
-   unit outward directions square to the edge and away from the polygon. Returns the number of
-   problems (each one also a failed check). */
-static int check_navmesh_structure(const nl_world* world, nl_navmesh_id id, const char* label) {
-    const nl_navmesh_info info = navmesh_info(world, id);
-    uint32_t vertex_count = 0, edge_count = 0, p, k, e;
-    float* xyz = navmesh_vertices(world, id, &vertex_count);
-    nl_boundary_edge* edges = navmesh_edges(world, id, &edge_count);
-    nl_nav_polygon* polygons = (nl_nav_polygon*)malloc(sizeof(nl_nav_polygon) * (info.polygon_count + 1u));
-    uint32_t connected = 0, unconnected = 0;
-    int bad = 0;
-    if (!CHECK_MSG(xyz && edges && polygons && info.polygon_count > 0, "%s: cannot read the navmesh", label)) {
-        free(xyz);
-        free(edges);
-        free(polygons);
-        return 1;
-    }
-    bad += !CHECK_MSG(vertex_count == info.vertex_count, "%s: %u vertices listed, info says %u", label,
-                      (unsigned)vertex_count, (unsigned)info.vertex_count);
-    bad += !CHECK_MSG(edge_count == info.boundary_edge_count, "%s: %u boundary edges listed, info says %u", label,
-                      (unsigned)edge_count, (unsigned)info.boundary_edge_count);
-    for (p = 0; p < info.polygon_count; ++p) {
-        if (NL_FAILED(nl_navmesh_get_polygon(world, id, p, &polygons[p]))) {
-            bad += !CHECK_MSG(0, "%s: nl_navmesh_get_polygon(%u) failed", label, (unsigned)p);
-            memset(&polygons[p], 0, sizeof polygons[p]);
-        }
-    }
-    for (p = 0; p < info.polygon_count && !bad; ++p) {
-        const nl_nav_polygon* poly = &polygons[p];
-        int ok = poly->vertex_count >= 3 && poly->vertex_count <= NL_MAX_POLYGON_VERTICES;
-        for (k = 0; ok && k < poly->vertex_count; ++k) ok = poly->vertices[k] < vertex_count;
-        if (!CHECK_MSG(ok, "%s: polygon %u has %u corners or a corner out of range", label, (unsigned)p,
-                       (unsigned)poly->vertex_count)) {
-            ++bad;
-            continue;
-        }
-        bad += !CHECK_MSG(area_from_above(xyz, poly) > 0.0f, "%s: polygon %u is not counter-clockwise from above",
-                          label, (unsigned)p);
-        bad += !CHECK_MSG(fabsf(length3(poly->normal) - 1.0f) <= 1e-4f && poly->normal[1] > 0.0f,
-                          "%s: polygon %u normal (%g %g %g) is not unit and up", label, (unsigned)p, poly->normal[0],
-                          poly->normal[1], poly->normal[2]);
-        {
-            /* The centre is the average of the corners. */
-            float c[3] = {0.0f, 0.0f, 0.0f};
-            for (k = 0; k < poly->vertex_count; ++k) {
-                c[0] += xyz[3 * poly->vertices[k]] / (float)poly->vertex_count;
-                c[1] += xyz[3 * poly->vertices[k] + 1] / (float)poly->vertex_count;
-                c[2] += xyz[3 * poly->vertices[k] + 2] / (float)poly->vertex_count;
-            }
-            bad += !CHECK_MSG(near3(poly->centre, c[0], c[1], c[2], 1e-3f), "%s: polygon %u centre is wrong", label,
-                              (unsigned)p);
-        }
-        for (k = 0; k < poly->vertex_count; ++k) {
-            const uint32_t n = poly->neighbours[k];
-            const uint32_t a = poly->vertices[k], b = poly->vertices[(k + 1) % poly->vertex_count];
-            uint32_t j, back = 0;
-            if (n == NL_NO_POLYGON) {
-                ++unconnected;
-                continue;
-            }
-            ++connected;
-            if (!CHECK_MSG(n < info.polygon_count && n != p, "%s: polygon %u edge %u has neighbour %u", label,
-                           (unsigned)p, (unsigned)k, (unsigned)n)) {
-                ++bad;
-                continue;
-            }
-            /* The neighbour has the same edge, the other way round, pointing back here. */
-            for (j = 0; j < polygons[n].vertex_count; ++j) {
-                if (polygons[n].vertices[j] == b && polygons[n].vertices[(j + 1) % polygons[n].vertex_count] == a &&
-                    polygons[n].neighbours[j] == p)
-                    ++back;
-            }
-            bad += !CHECK_MSG(back == 1, "%s: polygon %u edge %u -> polygon %u is not symmetric", label, (unsigned)p,
-                              (unsigned)k, (unsigned)n);
-        }
-    }
-    bad += !CHECK_MSG(connected == 2 * info.portal_count, "%s: %u connected edge sides for %u portals", label,
-                      (unsigned)connected, (unsigned)info.portal_count);
-    bad += !CHECK_MSG(unconnected >= info.boundary_edge_count, "%s: %u unconnected edges, %u boundary edges", label,
-                      (unsigned)unconnected, (unsigned)info.boundary_edge_count);
-    for (e = 0; e < edge_count && !bad; ++e) {
-        const nl_boundary_edge* edge = &edges[e];
-        const nl_nav_polygon* poly;
-        float along[3], mid_to_centre[3];
-        if (!CHECK_MSG(edge->polygon < info.polygon_count && edge->edge < polygons[edge->polygon].vertex_count,
-                       "%s: boundary edge %u names polygon %u edge %u", label, (unsigned)e, (unsigned)edge->polygon,
-                       (unsigned)edge->edge)) {
-            ++bad;
-            continue;
-        }
-        poly = &polygons[edge->polygon];
-        bad += !CHECK_MSG(poly->neighbours[edge->edge] == NL_NO_POLYGON, "%s: boundary edge %u is a portal", label,
-                          (unsigned)e);
-        bad += !CHECK_MSG(equal3(edge->start, xyz + 3 * poly->vertices[edge->edge]) &&
-                              equal3(edge->end, xyz + 3 * poly->vertices[(edge->edge + 1) % poly->vertex_count]),
-                          "%s: boundary edge %u ends are not its polygon's corners %u, %u", label, (unsigned)e,
-                          (unsigned)edge->edge, (unsigned)(edge->edge + 1));
-        bad += !CHECK_MSG(equal3(edge->normal, poly->normal), "%s: boundary edge %u normal is not its polygon's",
-                          label, (unsigned)e);
-        along[0] = edge->end[0] - edge->start[0];
-        along[1] = edge->end[1] - edge->start[1];
-        along[2] = edge->end[2] - edge->start[2];
-        mid_to_centre[0] = poly->centre[0] - 0.5f * (edge->start[0] + edge->end[0]);
-        mid_to_centre[1] = poly->centre[1] - 0.5f * (edge->start[1] + edge->end[1]);
-        mid_to_centre[2] = poly->centre[2] - 0.5f * (edge->start[2] + edge->end[2]);
-        bad += !CHECK_MSG(fabsf(length3(edge->outward) - 1.0f) <= 1e-4f &&
-                              fabsf(dot3(edge->outward, along)) <= 1e-4f * length3(along) &&
-                              dot3(edge->outward, mid_to_centre) < 0.0f,
-                          "%s: boundary edge %u outward (%g %g %g) is not unit, square to the edge and away from the "
-                          "polygon",
-                          label, (unsigned)e, edge->outward[0], edge->outward[1], edge->outward[2]);
-    }
-    free(xyz);
-    free(edges);
-    free(polygons);
-    return bad;
-}
-
-/* The grid's own answers: 9 vertices where the grid has them, `polygons` polygons (4 quads or 8
-   triangles) covering the four quadrants, the outline of 8 unit edges with outward pointing straight
-   away from the square, area ids by quadrant (`areas` NULL: all 0). */
-static void check_grid_navmesh(const nl_world* world, nl_navmesh_id id, uint32_t polygons, const uint8_t* areas,
-                               const char* label) {
-    const nl_navmesh_info info = navmesh_info(world, id);
-    uint32_t vertex_count = 0, edge_count = 0, i, j;
-    float* xyz;
-    nl_boundary_edge* edges;
-    int found[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0};
-    int per_quadrant[4] = {0, 0, 0, 0};
-    CHECK_MSG(info.size == sizeof info, "%s: info.size changed", label);
-    CHECK_MSG(info.vertex_count == 9, "%s: %u vertices, expected 9", label, (unsigned)info.vertex_count);
-    CHECK_MSG(info.polygon_count == polygons, "%s: %u polygons, expected %u", label, (unsigned)info.polygon_count,
-              (unsigned)polygons);
-    CHECK_MSG(info.portal_count == (polygons == 4 ? 4u : 8u), "%s: %u portals", label, (unsigned)info.portal_count);
-    CHECK_MSG(info.boundary_edge_count == 8, "%s: %u boundary edges, expected 8", label,
-              (unsigned)info.boundary_edge_count);
-    CHECK_MSG(info.dropped_polygon_count == 0 && info.non_manifold_edge_count == 0, "%s: repairs reported", label);
-    CHECK_MSG(info.bounds_min[0] == -1.0f && info.bounds_min[1] == GRID_Y && info.bounds_min[2] == -1.0f &&
-                  info.bounds_max[0] == 1.0f && info.bounds_max[1] == GRID_Y && info.bounds_max[2] == 1.0f,
-              "%s: bounds (%g %g %g)..(%g %g %g)", label, info.bounds_min[0], info.bounds_min[1], info.bounds_min[2],
-              info.bounds_max[0], info.bounds_max[1], info.bounds_max[2]);
-
-    xyz = navmesh_vertices(world, id, &vertex_count);
-    if (CHECK_MSG(xyz != NULL && vertex_count == 9, "%s: nl_navmesh_get_vertices", label)) {
-        /* Each grid vertex exactly once. */
-        for (i = 0; i < 9; ++i) {
-            for (j = 0; j < 9; ++j) {
-                if (equal3(xyz + 3 * i, k_grid_vertices + 3 * j)) ++found[j];
-            }
-        }
-        for (j = 0; j < 9; ++j) {
-            CHECK_MSG(found[j] == 1, "%s: grid vertex %u found %d times", label, (unsigned)j, found[j]);
-        }
-    }
-    for (i = 0; i < info.polygon_count; ++i) {
+static uint32_t polygon_of_quadrant(const nl_world* world, nl_navmesh_id id, int quadrant) {
+    uint32_t p;
+    for (p = 0; p < 4; ++p) {
         nl_nav_polygon poly;
-        memset(&poly, 0xcd, sizeof poly);
-        if (!CHECK_OK(nl_navmesh_get_polygon(world, id, i, &poly))) continue;
-        CHECK_MSG(poly.vertex_count == (polygons == 4 ? 4u : 3u), "%s: polygon %u has %u corners", label, (unsigned)i,
-                  (unsigned)poly.vertex_count);
-        CHECK_MSG(poly.normal[0] == 0.0f && poly.normal[1] == 1.0f && poly.normal[2] == 0.0f,
-                  "%s: polygon %u normal (%g %g %g)", label, (unsigned)i, poly.normal[0], poly.normal[1],
-                  poly.normal[2]);
-        CHECK_MSG(fabsf(poly.centre[1] - GRID_Y) <= TOL, "%s: polygon %u centre y %g", label, (unsigned)i,
-                  poly.centre[1]);
-        if (poly.centre[0] != 0.0f && poly.centre[2] != 0.0f) {
-            const int q = quadrant_of(poly.centre[0], poly.centre[2]);
-            ++per_quadrant[q];
-            CHECK_MSG(poly.area == (areas ? areas[q] : 0u), "%s: polygon %u (quadrant %d) has area %u, expected %u",
-                      label, (unsigned)i, q, (unsigned)poly.area, (unsigned)(areas ? areas[q] : 0u));
-            if (polygons == 4) {
-                CHECK_MSG(fabsf(fabsf(poly.centre[0]) - 0.5f) <= TOL && fabsf(fabsf(poly.centre[2]) - 0.5f) <= TOL,
-                          "%s: quad %u centre (%g %g)", label, (unsigned)i, poly.centre[0], poly.centre[2]);
-            }
-        } else {
-            CHECK_MSG(0, "%s: polygon %u centre (%g %g %g) is on an axis", label, (unsigned)i, poly.centre[0],
-                      poly.centre[1], poly.centre[2]);
-        }
+        if (NL_SUCCEEDED(nl_navmesh_get_polygon(world, id, p, &poly)) &&
+            quadrant_of(poly.centre[0], poly.centre[2]) == quadrant)
+            return p;
     }
-    for (i = 0; i < 4; ++i) {
-        CHECK_MSG(per_quadrant[i] == (int)polygons / 4, "%s: %d polygons in quadrant %u", label, per_quadrant[i],
-                  (unsigned)i);
-    }
-
-    edges = navmesh_edges(world, id, &edge_count);
-    if (CHECK_MSG(edges != NULL && edge_count == 8, "%s: nl_navmesh_get_boundary_edges", label)) {
-        float sum[3] = {0.0f, 0.0f, 0.0f};
-        for (i = 0; i < edge_count; ++i) {
-            const nl_boundary_edge* e = &edges[i];
-            const float mx = 0.5f * (e->start[0] + e->end[0]), mz = 0.5f * (e->start[2] + e->end[2]);
-            /* On the outline: the side it lies on gives its outward direction. */
-            const float ox = fabsf(mx) == 1.0f ? mx : 0.0f, oz = fabsf(mz) == 1.0f ? mz : 0.0f;
-            nl_nav_polygon poly;
-            CHECK_MSG((ox != 0.0f) != (oz != 0.0f), "%s: boundary edge %u (mid %g %g) is not on the outline", label,
-                      (unsigned)i, mx, mz);
-            CHECK_MSG(near3(e->outward, ox, 0.0f, oz, TOL), "%s: edge %u outward (%g %g %g), expected (%g 0 %g)",
-                      label, (unsigned)i, e->outward[0], e->outward[1], e->outward[2], ox, oz);
-            CHECK_MSG(e->outward[0] * mx + e->outward[2] * mz > 0.0f, "%s: edge %u outward points to the centre",
-                      label, (unsigned)i);
-            CHECK_MSG(fabsf(length3(e->outward) - 1.0f) <= TOL, "%s: edge %u outward is not unit", label, (unsigned)i);
-            CHECK_MSG(e->normal[0] == 0.0f && e->normal[1] == 1.0f && e->normal[2] == 0.0f,
-                      "%s: edge %u normal (%g %g %g)", label, (unsigned)i, e->normal[0], e->normal[1], e->normal[2]);
-            CHECK_MSG(e->start[1] == GRID_Y && e->end[1] == GRID_Y &&
-                          fabsf(e->end[0] - e->start[0]) + fabsf(e->end[2] - e->start[2]) == 1.0f,
-                      "%s: edge %u is not a unit grid edge", label, (unsigned)i);
-            /* Counter-clockwise around the square seen from above: outward = edge x up = (-dz, 0, dx). */
-            CHECK_MSG(-(e->end[2] - e->start[2]) == ox && (e->end[0] - e->start[0]) == oz,
-                      "%s: edge %u runs the wrong way round the outline", label, (unsigned)i);
-            if (CHECK_OK(nl_navmesh_get_polygon(world, id, e->polygon, &poly)) && e->edge < poly.vertex_count) {
-                CHECK_MSG(poly.neighbours[e->edge] == NL_NO_POLYGON, "%s: edge %u's polygon has a neighbour there",
-                          label, (unsigned)i);
-                CHECK_MSG(quadrant_of(mx - 0.01f * ox, mz - 0.01f * oz) == quadrant_of(poly.centre[0], poly.centre[2]),
-                          "%s: edge %u belongs to a polygon of another quadrant", label, (unsigned)i);
-            } else {
-                CHECK_MSG(0, "%s: edge %u names polygon %u edge %u", label, (unsigned)i, (unsigned)e->polygon,
-                          (unsigned)e->edge);
-            }
-            sum[0] += e->end[0] - e->start[0];
-            sum[2] += e->end[2] - e->start[2];
-        }
-        CHECK_MSG(sum[0] == 0.0f && sum[2] == 0.0f, "%s: the outline is not closed", label);
-    }
-    check_navmesh_structure(world, id, label);
-    free(xyz);
-    free(edges);
+    return NL_NO_POLYGON;
 }
 
-/* Cases run first in a child process (test_navmesh_isolated): -1 crashed, 0 wrong answer, 1 right.
-   The in-process versions, with their detailed checks, run only when the child did not crash. */
-enum { ISOLATED_WELD, ISOLATED_FAR, ISOLATED_COUNT };
-static int g_isolated[ISOLATED_COUNT];
+/* Extremes that might crash the process: add_variants and find_nearest run each first in a child
+   (run_forked), and their own detailed checks only if it did not crash. */
 
-/* ---------------------------------------------------------------------------------------------
- * Defaults
- * ------------------------------------------------------------------------------------------- */
+/* The soup scaled to 1000 km squares, weld tolerance 1e-30 m: 9 vertices, 15 welded. */
+static int isolated_weld(size_t unused) {
+    nl_world* world = make_world(1);
+    float soup[72];
+    uint32_t indices[24];
+    nl_navmesh_def def = nl_default_navmesh_def();
+    nl_navmesh_id id = {0u, 0u};
+    nl_navmesh_info info;
+    int k, ok;
+    (void)unused;
+    grid_soup(soup, indices);
+    for (k = 0; k < 72; ++k) soup[k] *= 1.0e6f;
+    def.vertices = soup;
+    def.vertex_count = 24;
+    def.indices = indices;
+    def.polygon_count = 8;
+    def.weld_tolerance = 1.0e-30f;
+    ok = NL_SUCCEEDED(nl_navmesh_add(world, &def, &id));
+    info = navmesh_info(world, id);
+    ok = ok && info.vertex_count == 9 && info.welded_vertex_count == 15 && info.portal_count == 8;
+    nl_world_destroy(world);
+    return ok;
+}
 
-static void test_defaults(void) {
+/* The grid scaled to 1 cm squares; half extents 1e9 from just above quadrant 3 find the point below. */
+static int isolated_far(size_t unused) {
+    nl_world* world = make_world(1);
+    float tiny[27];
+    const float above_3[3] = {0.005f, 1.0f, 0.005f}, anywhere[3] = {1.0e9f, 1.0e9f, 1.0e9f};
+    const float far_point[3] = {1.0e9f, 0.5f, 1.0e9f}, reaching[3] = {1.0e9f, 1.0f, 1.0e9f};
+    nl_navmesh_def def = grid_def();
+    nl_navmesh_id id = {0u, 0u};
+    nl_nav_point out[2];
+    int k, ok;
+    (void)unused;
+    for (k = 0; k < 27; ++k) tiny[k] = k % 3 == 1 ? k_grid_vertices[k] : 0.01f * k_grid_vertices[k];
+    def.vertices = tiny;
+    ok = NL_SUCCEEDED(nl_navmesh_add(world, &def, &id)) &&
+         NL_SUCCEEDED(nl_navmesh_find_nearest(world, id, above_3, 1, anywhere, &out[0])) &&
+         NL_SUCCEEDED(nl_navmesh_find_nearest(world, id, far_point, 1, reaching, &out[1]));
+    ok = ok && out[0].found == 1 && out[0].polygon == polygon_of_quadrant(world, id, 3) &&
+         near3(out[0].point, 0.005f, GRID_Y, 0.005f, 1e-6f) && out[1].found == 1;
+    nl_world_destroy(world);
+    return ok;
+}
+
+static void defaults(void) {
     const nl_agent_type agent = nl_default_agent_type();
     const nl_navmesh_def def = nl_default_navmesh_def();
-    const nl_navmesh_build_def build = nl_default_navmesh_build_def();
-    const nl_recast_settings recast = nl_default_recast_settings();
-    g_section = "navmesh defaults";
 
     /* nl_agent_type: Recast's usual agent. */
     CHECK(agent.radius == 0.6f);
@@ -408,26 +112,6 @@ static void test_defaults(void) {
     CHECK(def.detail_vertices == NULL && def.detail_vertex_count == 0 && def.detail_triangles == NULL &&
           def.detail_triangle_starts == NULL);
 
-    CHECK(build.size == sizeof(nl_navmesh_build_def));
-    CHECK_THAT(build.builder == NULL || strcmp(build.builder, "recast") == 0,
-               "nl_default_navmesh_build_def: builder \"recast\" (or NULL, which means it)");
-    CHECK(same_agent(build.agent, agent));
-    CHECK(build.settings == NULL && build.settings_json == NULL && build.settings_json_length == 0);
-
-    CHECK(recast.size == sizeof(nl_recast_settings));
-    CHECK(recast.cell_size == 0.3f);
-    CHECK(recast.cell_height == 0.2f);
-    CHECK(recast.region_min_size == 8.0f);
-    CHECK(recast.region_merge_size == 20.0f);
-    CHECK(recast.edge_max_length == 12.0f);
-    CHECK(recast.edge_max_error == 1.3f);
-    CHECK(recast.vertices_per_polygon == 6);
-    CHECK(recast.detail_sample_distance == 6.0f);
-    CHECK(recast.detail_sample_max_error == 1.0f);
-    CHECK(recast.partition == NL_RECAST_PARTITION_WATERSHED);
-    CHECK(recast.filter_low_hanging_obstacles == 1 && recast.filter_ledge_spans == 1 &&
-          recast.filter_walkable_low_height_spans == 1);
-    CHECK(recast.reserved == 0);
     /* The defaults are values: nothing recorded, nothing shared between calls. */
     CHECK_INVALID(nl_navmesh_add(NULL, NULL, NULL), "world");
     (void)nl_default_agent_type();
@@ -437,16 +121,11 @@ static void test_defaults(void) {
     CHECK(nl_get_last_status() == (NL_STATUS_FAILURE | NL_STATUS_INVALID_ARGUMENT));
 }
 
-/* ---------------------------------------------------------------------------------------------
- * nl_navmesh_add: hand-made navmeshes with exact answers
- * ------------------------------------------------------------------------------------------- */
-
-static void test_navmesh_add_grid(void) {
+static void add_grid(void) {
     nl_world* world = make_world(1);
     nl_navmesh_def def = grid_def();
     nl_navmesh_id id = {0u, 0u};
     nl_navmesh_info info;
-    g_section = "navmesh add: quads";
 
     CHECK(navmesh_count(world) == 0);
     CHECK_OK(nl_navmesh_add(world, &def, &id));
@@ -514,14 +193,18 @@ static void test_navmesh_add_grid(void) {
     nl_world_destroy(world);
 }
 
-static void test_navmesh_add_variants(void) {
-    nl_world* world = make_world(1);
+static void add_variants(void) {
+    /* First, in a child, while this process has no threads. */
+    const int weld_in_child = run_forked(isolated_weld, 0);
+    nl_world* world;
     nl_navmesh_def def;
     nl_navmesh_id id = {0u, 0u};
     nl_navmesh_info info;
     float soup[72];
     uint32_t soup_indices[24];
-    g_section = "navmesh add: variants";
+    CHECK_MSG(weld_in_child == 1, "nl_navmesh_add: weld tolerance 1e-30 m on 1000 km squares (%s)",
+              weld_in_child < 0 ? "crashed, or a sanitizer stopped it" : "wrong answer");
+    world = make_world(1);
     grid_soup(soup, soup_indices);
 
     /* Unity-style triangle soup: every triangle has its own vertices; welding connects them. */
@@ -570,8 +253,8 @@ static void test_navmesh_add_variants(void) {
     }
 
     /* Extreme but valid: squares of 1000 km and a weld tolerance of 1e-30 m (exact duplicates only). Run
-       first in a child (test_navmesh_isolated); here only if that did not crash. */
-    if (CHECK_MSG(g_isolated[ISOLATED_WELD] >= 0,
+       first in a child (isolated_weld); here only if that did not crash. */
+    if (CHECK_MSG(weld_in_child >= 0,
                   "a weld tolerance of 1e-30 m on 1000 km squares crashed (in a child)")) {
         float huge[72];
         int k;
@@ -703,12 +386,14 @@ static const float k_detail_vertices[30] = {
     -1.0f, GRID_Y, -1.0f, 0.0f, GRID_Y, -1.0f, 1.0f, GRID_Y, -1.0f, -1.0f, GRID_Y, 0.0f, 0.0f, GRID_Y, 0.0f,
     1.0f,  GRID_Y, 0.0f,  -1.0f, GRID_Y, 1.0f, 0.0f, GRID_Y, 1.0f, 1.0f, GRID_Y, 1.0f, 0.5f, 0.75f, 0.5f,
 };
+
 static const uint32_t k_detail_triangles[30] = {
     0, 3, 4, 0, 4, 1,                    /* quadrant 0 */
     1, 4, 5, 1, 5, 2,                    /* quadrant 1 */
     3, 6, 7, 3, 7, 4,                    /* quadrant 2 */
     4, 7, 9, 7, 8, 9, 8, 5, 9, 5, 4, 9, /* quadrant 3: the bump */
 };
+
 static const uint32_t k_detail_starts[5] = {0, 2, 4, 6, 10};
 
 static nl_navmesh_def detail_grid_def(void) {
@@ -717,7 +402,7 @@ static nl_navmesh_def detail_grid_def(void) {
     return def;
 }
 
-static void test_navmesh_detail(void) {
+static void detail(void) {
     nl_world* world = make_world(1);
     nl_navmesh_def def = detail_grid_def();
     nl_navmesh_id flat = {0u, 0u}, bumpy = {0u, 0u};
@@ -725,7 +410,6 @@ static void test_navmesh_detail(void) {
     const float half[3] = {0.25f, 3.0f, 0.25f};
     float points[9];
     nl_nav_point out[3];
-    g_section = "navmesh detail";
 
     CHECK_OK(nl_navmesh_add(world, &def, &bumpy));
     def = grid_def();
@@ -773,13 +457,10 @@ static void test_navmesh_detail(void) {
     nl_world_destroy(world);
 }
 
-/* ---------------------------------------------------------------------------------------------
- * nl_navmesh_add refusals
- * ------------------------------------------------------------------------------------------- */
-
 /* One refused nl_navmesh_add: INVALID_ARGUMENT naming `needle`, nothing added, out_id untouched. */
 #define CHECK_REJECTED_NAVMESH(world, def, needle) \
     check_rejected_navmesh((world), (def), (needle), __FILE__, __LINE__)
+
 static void check_rejected_navmesh(nl_world* world, const nl_navmesh_def* def, const char* needle, const char* file,
                                    int line) {
     const uint32_t before = navmesh_count(world);
@@ -792,14 +473,13 @@ static void check_rejected_navmesh(nl_world* world, const nl_navmesh_def* def, c
     check_at(navmesh_count(world) == before, file, line, "a navmesh was added on failure (%s)", needle);
 }
 
-static void test_navmesh_rejections(void) {
+static void rejections(void) {
     nl_world* world = make_world(1);
     nl_navmesh_def def = grid_def();
     nl_navmesh_id id = {0u, 0u};
     float vertices[27];
     uint32_t quads[64]; /* room beyond the 16 used, so a wrong polygon size never reads past the array */
     uint8_t counts[4];
-    g_section = "navmesh rejections";
 
     CHECK_OK(nl_navmesh_add(world, &def, &id)); /* one present, so "unchanged" is not just "still zero" */
     memcpy(vertices, k_grid_vertices, sizeof vertices);
@@ -1003,23 +683,10 @@ static void test_navmesh_rejections(void) {
     nl_world_destroy(world);
 }
 
-/* ---------------------------------------------------------------------------------------------
- * nl_navmesh_find_nearest
- * ------------------------------------------------------------------------------------------- */
-
-static uint32_t polygon_of_quadrant(const nl_world* world, nl_navmesh_id id, int quadrant) {
-    uint32_t p;
-    for (p = 0; p < 4; ++p) {
-        nl_nav_polygon poly;
-        if (NL_SUCCEEDED(nl_navmesh_get_polygon(world, id, p, &poly)) &&
-            quadrant_of(poly.centre[0], poly.centre[2]) == quadrant)
-            return p;
-    }
-    return NL_NO_POLYGON;
-}
-
-static void test_find_nearest(void) {
-    nl_world* world = make_world(1);
+static void find_nearest(void) {
+    /* First, in a child, while this process has no threads. */
+    const int far_in_child = run_forked(isolated_far, 0);
+    nl_world* world;
     nl_navmesh_def def = grid_def();
     nl_navmesh_id id = {0u, 0u};
     uint32_t by_quadrant[4];
@@ -1034,7 +701,9 @@ static void test_find_nearest(void) {
     };
     nl_nav_point out[6];
     int q;
-    g_section = "find_nearest";
+    CHECK_MSG(far_in_child == 1, "nl_navmesh_find_nearest: half extents 1e9 over 1 cm squares find the polygon below (%s)",
+              far_in_child < 0 ? "crashed, or a sanitizer stopped it" : "wrong answer");
+    world = make_world(1);
 
     CHECK_OK(nl_navmesh_add(world, &def, &id));
     for (q = 0; q < 4; ++q) by_quadrant[q] = polygon_of_quadrant(world, id, q);
@@ -1076,9 +745,9 @@ static void test_find_nearest(void) {
 
     /* Huge boxes on a navmesh of 1 cm squares: "anywhere" (half extents 1e9) from just above quadrant 3
        finds the point straight below; from the coordinate limit, a box that just reaches the squares
-       finds them; a small box out there finds nothing. Run first in a child (test_navmesh_isolated); here
+       finds them; a small box out there finds nothing. Run first in a child (isolated_far); here
        only if that did not crash. */
-    if (CHECK_MSG(g_isolated[ISOLATED_FAR] >= 0, "huge search boxes on 1 cm squares crashed (in a child)")) {
+    if (CHECK_MSG(far_in_child >= 0, "huge search boxes on 1 cm squares crashed (in a child)")) {
         float tiny[27];
         const float above_3[3] = {0.005f, 1.0f, 0.005f};
         const float far_points[6] = {1.0e9f, 0.5f, 1.0e9f, -1.0e9f, 0.5f, -1.0e9f};
@@ -1156,7 +825,7 @@ static void test_find_nearest(void) {
 
 /* A few thousand points around the grid, in worlds of 1 and 2 workers: every answer as computed here,
    and the two worlds' answers identical to the byte. */
-static void test_find_nearest_batches(void) {
+static void find_nearest_batches(void) {
     enum { side = 64, count = side * side };
     nl_world* worlds[2];
     nl_navmesh_id ids[2] = {{0u, 0u}, {0u, 0u}};
@@ -1164,7 +833,6 @@ static void test_find_nearest_batches(void) {
     nl_nav_point* out[2];
     const float half[3] = {0.75f, 2.0f, 0.75f};
     int w, i, wrong = 0, found = 0;
-    g_section = "find_nearest batches";
     out[0] = (nl_nav_point*)malloc(sizeof(nl_nav_point) * count);
     out[1] = (nl_nav_point*)malloc(sizeof(nl_nav_point) * count);
     if (!points || !out[0] || !out[1]) {
@@ -1229,18 +897,13 @@ static void test_find_nearest_batches(void) {
     free(out[1]);
 }
 
-/* ---------------------------------------------------------------------------------------------
- * Lists (the two-call pattern), polygons and info
- * ------------------------------------------------------------------------------------------- */
-
-static void test_navmesh_lists(void) {
+static void lists(void) {
     nl_world* world = make_world(1);
     nl_navmesh_def def = grid_def();
     nl_navmesh_id ids[3], out_ids[5];
     float xyz[3 * 12];
     nl_boundary_edge edges[10];
     uint32_t count, i, j;
-    g_section = "navmesh lists";
 
     /* nl_world_get_navmeshes */
     count = 0xdeadbeefu;
@@ -1346,12 +1009,9 @@ static void test_navmesh_lists(void) {
     nl_world_destroy(world);
 }
 
-/* ---------------------------------------------------------------------------------------------
- * Ids: stale, null, another world's
- * ------------------------------------------------------------------------------------------- */
-
 /* Every function that takes a navmesh id refuses `id` with INVALID_HANDLE, naming itself, writing nothing. */
 #define CHECK_BAD_NAVMESH_ID(world, id) check_bad_navmesh_id((world), (id), __FILE__, __LINE__)
+
 static void check_bad_navmesh_id(nl_world* world, nl_navmesh_id id, const char* file, int line) {
     nl_navmesh_info info;
     nl_nav_polygon poly;
@@ -1394,13 +1054,12 @@ static void check_bad_navmesh_id(nl_world* world, nl_navmesh_id id, const char* 
     check_at(navmesh_count(world) == before, file, line, "the navmesh count changed");
 }
 
-static void test_navmesh_ids(void) {
+static void ids(void) {
     nl_world* world = make_world(1);
     nl_world* other = make_world(1);
     nl_navmesh_def def = grid_def();
     nl_navmesh_id a = {0u, 0u}, b = {0u, 0u}, reused = {0u, 0u}, theirs = {0u, 0u};
     const nl_navmesh_id null_id = {0u, 0u};
-    g_section = "navmesh ids";
 
     CHECK_OK(nl_navmesh_add(world, &def, &a));
     CHECK_OK(nl_navmesh_add(world, &def, &b));
@@ -1447,810 +1106,6 @@ static void test_navmesh_ids(void) {
     nl_world_destroy(world);
 }
 
-/* ---------------------------------------------------------------------------------------------
- * nl_navmesh_build with the built-in Recast builder
- * ------------------------------------------------------------------------------------------- */
-
-/* A box 20 m x 1 m x 20 m, its top at y = 1: vertex k has x, y, z from bits 0, 1, 2 of k. */
-static nl_mesh_id add_box(nl_world* world) {
-    static const uint32_t box[36] = {2, 6, 7, 2, 7, 3,  /* top, +y */
-                                     0, 1, 5, 0, 5, 4,  /* bottom, -y */
-                                     1, 3, 7, 1, 7, 5,  /* +x */
-                                     0, 4, 6, 0, 6, 2,  /* -x */
-                                     4, 5, 7, 4, 7, 6,  /* +z */
-                                     0, 2, 3, 0, 3, 1}; /* -z */
-    float vertices[24];
-    nl_mesh_def def = nl_default_mesh_def();
-    nl_mesh_id id = {0u, 0u};
-    int k;
-    for (k = 0; k < 8; ++k) {
-        vertices[3 * k + 0] = (k & 1) ? 10.0f : -10.0f;
-        vertices[3 * k + 1] = (k & 2) ? 1.0f : 0.0f;
-        vertices[3 * k + 2] = (k & 4) ? 10.0f : -10.0f;
-    }
-    def.vertices = vertices;
-    def.vertex_count = 8;
-    def.indices = box;
-    def.triangle_count = 12;
-    CHECK_OK(nl_mesh_add(world, &def, &id));
-    return id;
-}
-
-/* A built navmesh of the box: on its top (Recast's sits up to two cell heights above the floor, as the
-   header says: from 1 to 1 + 2 * cell_height), inside it, and well-formed. */
-static void check_box_navmesh(const nl_world* world, nl_navmesh_id id, nl_agent_type agent, float cell_height,
-                              const char* label) {
-    const float top = 1.0f, highest = top + 2.0f * cell_height + 1e-3f;
-    const nl_navmesh_info info = navmesh_info(world, id);
-    const float point[3] = {1.0f, 3.0f, -2.0f}, half[3] = {2.0f, 4.0f, 2.0f};
-    nl_nav_point nearest;
-    CHECK_MSG(info.polygon_count > 0 && info.vertex_count >= 3 && info.boundary_edge_count >= 3,
-              "%s: %u polygons, %u vertices, %u boundary edges", label, (unsigned)info.polygon_count,
-              (unsigned)info.vertex_count, (unsigned)info.boundary_edge_count);
-    CHECK_MSG(same_agent(info.agent, agent), "%s: info.agent is (%g %g %g %g), the def's (%g %g %g %g)", label,
-              info.agent.radius, info.agent.height, info.agent.max_climb, info.agent.max_slope, agent.radius,
-              agent.height, agent.max_climb, agent.max_slope);
-    /* On the top, inside the box, reaching near its edges (less the agent's radius). */
-    CHECK_MSG(info.bounds_min[0] >= -10.0f && info.bounds_max[0] <= 10.0f && info.bounds_min[2] >= -10.0f &&
-                  info.bounds_max[2] <= 10.0f && info.bounds_min[0] < -8.0f && info.bounds_max[0] > 8.0f &&
-                  info.bounds_min[2] < -8.0f && info.bounds_max[2] > 8.0f,
-              "%s: bounds x %g..%g, z %g..%g", label, info.bounds_min[0], info.bounds_max[0], info.bounds_min[2],
-              info.bounds_max[2]);
-    CHECK_MSG(info.bounds_min[1] >= top - 1e-3f && info.bounds_max[1] <= highest,
-              "%s: bounds y %g..%g, the top is at %g (%g with two cell heights)", label, info.bounds_min[1],
-              info.bounds_max[1], top, highest);
-    CHECK_OK(nl_navmesh_find_nearest(world, id, point, 1, half, &nearest));
-    CHECK_MSG(nearest.found == 1 && nearest.polygon < info.polygon_count && nearest.point[1] >= top - 1e-3f &&
-                  nearest.point[1] <= highest && fabsf(nearest.point[0] - 1.0f) <= 1e-3f &&
-                  fabsf(nearest.point[2] + 2.0f) <= 1e-3f,
-              "%s: the point over the box's middle finds (%g %g %g) on polygon %u", label, nearest.point[0],
-              nearest.point[1], nearest.point[2], (unsigned)nearest.polygon);
-    check_navmesh_structure(world, id, label);
-}
-
-/* One refused nl_navmesh_build: `detail` naming `needle`, nothing added, out_id untouched. */
-#define CHECK_BUILD_FAILS(world, def, detail, needle) \
-    check_build_fails((world), (def), (detail), (needle), __FILE__, __LINE__)
-static void check_build_fails(nl_world* world, const nl_navmesh_build_def* def, nl_status detail, const char* needle,
-                              const char* file, int line) {
-    const uint32_t before = navmesh_count(world);
-    nl_navmesh_id out = {77u, 77u};
-    const nl_status status = nl_navmesh_build(world, def, &out);
-    check_fail_at(status, detail, needle, "nl_navmesh_build", file, line);
-    check_at(strstr(nl_get_last_error_message(), "nl_navmesh_build") != NULL, file, line,
-             "the message does not name nl_navmesh_build (%s)", needle);
-    check_at(out.index1 == 77u && out.generation == 77u, file, line, "out_id was written on failure (%s)", needle);
-    check_at(navmesh_count(world) == before, file, line, "a navmesh was added on failure (%s)", needle);
-}
-
-static void test_navmesh_build(void) {
-    nl_world* world = make_world(2);
-    nl_navmesh_build_def def = nl_default_navmesh_build_def();
-    nl_navmesh_id id = {0u, 0u}, second = {0u, 0u};
-    nl_agent_type agent;
-    g_section = "navmesh build (recast)";
-
-    /* An empty world: nothing to walk on is a failure, not an empty navmesh. */
-    CHECK_BUILD_FAILS(world, &def, NL_STATUS_NOT_FOUND, "walkable");
-    /* Only a wall: nothing flat enough. */
-    {
-        static const float wall[] = {0, 0, 0, 0, 3, 0, 0, 3, 5, 0, 0, 5};
-        static const uint32_t quad[] = {0, 1, 2, 0, 2, 3};
-        nl_mesh_def mesh = nl_default_mesh_def();
-        nl_mesh_id wall_id = {0u, 0u};
-        mesh.vertices = wall;
-        mesh.vertex_count = 4;
-        mesh.indices = quad;
-        mesh.triangle_count = 2;
-        CHECK_OK(nl_mesh_add(world, &mesh, &wall_id));
-        CHECK_BUILD_FAILS(world, &def, NL_STATUS_NOT_FOUND, "walkable");
-        CHECK_OK(nl_mesh_remove(world, wall_id));
-    }
-
-    add_box(world);
-    agent.radius = 0.5f;
-    agent.height = 1.8f;
-    agent.max_climb = 0.4f;
-    agent.max_slope = 40.0f;
-    def.agent = agent;
-    CHECK_OK(nl_navmesh_build(world, &def, &id));
-    CHECK(nl_navmesh_is_valid(world, id) == 1);
-    CHECK(navmesh_count(world) == 1);
-    check_box_navmesh(world, id, agent, 0.2f, "recast, defaults");
-
-    /* builder NULL means "recast". */
-    def.builder = NULL;
-    CHECK_OK(nl_navmesh_build(world, &def, &second));
-    CHECK(!same_navmesh(id, second));
-    check_box_navmesh(world, second, agent, 0.2f, "recast, builder NULL");
-    def.builder = "recast";
-
-    /* Settings as JSON, and as a struct. */
-    {
-        static const char json[] = "{\"cell_size\": 0.2}";
-        static const char json_more[] =
-            "{\"cell_height\": 0.1, \"partition\": \"monotone\", \"vertices_per_polygon\": 3}";
-        nl_recast_settings settings = nl_default_recast_settings();
-        nl_navmesh_info info;
-        def.settings_json = json;
-        def.settings_json_length = strlen(json);
-        CHECK_OK(nl_navmesh_build(world, &def, &id));
-        check_box_navmesh(world, id, agent, 0.2f, "recast, cell_size 0.2 (JSON)");
-        def.settings_json = json_more;
-        def.settings_json_length = strlen(json_more);
-        CHECK_OK(nl_navmesh_build(world, &def, &id));
-        check_box_navmesh(world, id, agent, 0.1f, "recast, monotone triangles (JSON)");
-        {
-            /* vertices_per_polygon 3: every polygon a triangle. */
-            uint32_t p, triangles = 1;
-            info = navmesh_info(world, id);
-            for (p = 0; p < info.polygon_count; ++p) {
-                nl_nav_polygon poly;
-                if (NL_FAILED(nl_navmesh_get_polygon(world, id, p, &poly)) || poly.vertex_count != 3) triangles = 0;
-            }
-            CHECK_THAT(triangles, "settings_json vertices_per_polygon 3 gives triangles only");
-        }
-        def.settings_json = NULL;
-        def.settings_json_length = 0;
-        settings.cell_size = 0.25f;
-        def.settings = &settings;
-        CHECK_OK(nl_navmesh_build(world, &def, &id));
-        check_box_navmesh(world, id, agent, 0.2f, "recast, cell_size 0.25 (struct)");
-
-        /* Struct and JSON together: the JSON is applied over the struct. */
-        {
-            static const char triangles_json[] = "{\"vertices_per_polygon\": 3}";
-            uint32_t p, triangles = 1;
-            def.settings_json = triangles_json;
-            def.settings_json_length = strlen(triangles_json);
-            CHECK_OK(nl_navmesh_build(world, &def, &id));
-            check_box_navmesh(world, id, agent, 0.2f, "recast, struct and JSON");
-            info = navmesh_info(world, id);
-            for (p = 0; p < info.polygon_count; ++p) {
-                nl_nav_polygon poly;
-                if (NL_FAILED(nl_navmesh_get_polygon(world, id, p, &poly)) || poly.vertex_count != 3) triangles = 0;
-            }
-            CHECK_THAT(triangles, "settings_json vertices_per_polygon 3 applies over a struct's 6");
-            /* An empty string is not a JSON object. */
-            def.settings_json = "";
-            def.settings_json_length = 0;
-            CHECK_BUILD_FAILS(world, &def, NL_STATUS_PARSE_ERROR, "settings_json");
-            def.settings_json = NULL;
-        }
-
-        /* Refused settings, each naming what is wrong. */
-        settings.size = 0;
-        CHECK_BUILD_FAILS(world, &def, NL_STATUS_INVALID_ARGUMENT, "size");
-        settings = nl_default_recast_settings();
-        settings.cell_size = 0.0f;
-        CHECK_BUILD_FAILS(world, &def, NL_STATUS_INVALID_ARGUMENT, "cell_size");
-        settings = nl_default_recast_settings();
-        settings.vertices_per_polygon = 7;
-        CHECK_BUILD_FAILS(world, &def, NL_STATUS_INVALID_ARGUMENT, "vertices_per_polygon");
-        def.settings = NULL;
-    }
-    {
-        static const char negative[] = "{\"cell_size\": -1}";
-        static const char malformed[] = "{bad json";
-        static const char unknown[] = "{\"cell_size\": 0.3, \"cel_height\": 0.2}";
-        static const char not_object[] = "[0.3]";
-        static const char wrong_type[] = "{\"cell_size\": \"big\"}";
-        def.settings_json = negative;
-        def.settings_json_length = strlen(negative);
-        CHECK_BUILD_FAILS(world, &def, NL_STATUS_INVALID_ARGUMENT, "cell_size");
-        def.settings_json = malformed;
-        def.settings_json_length = strlen(malformed);
-        CHECK_BUILD_FAILS(world, &def, NL_STATUS_PARSE_ERROR, "settings_json");
-        def.settings_json = unknown;
-        def.settings_json_length = strlen(unknown);
-        CHECK_BUILD_FAILS(world, &def, NL_STATUS_INVALID_ARGUMENT, "cel_height");
-        {
-            /* Valid JSON, but a navmesh 1e18 m high: the settings' fault (INVALID_ARGUMENT), not the builder's. */
-            static const char huge_cell[] = "{\"cell_height\": 1.1e18}";
-            def.settings_json = huge_cell;
-            def.settings_json_length = strlen(huge_cell);
-            CHECK_BUILD_FAILS(world, &def, NL_STATUS_INVALID_ARGUMENT, "cell_height");
-        }
-        def.settings_json = not_object;
-        def.settings_json_length = strlen(not_object);
-        CHECK_BUILD_FAILS(world, &def, NL_STATUS_INVALID_ARGUMENT, "settings_json");
-        def.settings_json = wrong_type;
-        def.settings_json_length = strlen(wrong_type);
-        CHECK_BUILD_FAILS(world, &def, NL_STATUS_INVALID_ARGUMENT, "cell_size");
-        /* The JSON is `settings_json_length` bytes: what follows is not read. */
-        def.settings_json = "{\"cell_size\": 0.3}{{{";
-        def.settings_json_length = 18;
-        CHECK_OK(nl_navmesh_build(world, &def, &id));
-        def.settings_json = NULL;
-        def.settings_json_length = 3;
-        CHECK_BUILD_FAILS(world, &def, NL_STATUS_INVALID_ARGUMENT, "settings_json");
-        def.settings_json_length = 0;
-    }
-
-    /* No such builder: NOT_FOUND, listing the builders there are. */
-    def.builder = "nope";
-    CHECK_BUILD_FAILS(world, &def, NL_STATUS_NOT_FOUND, "'recast'");
-    CHECK_BUILD_FAILS(world, &def, NL_STATUS_NOT_FOUND, "nope");
-    def.builder = "";
-    CHECK_BUILD_FAILS(world, &def, NL_STATUS_NOT_FOUND, "'recast'");
-    def.builder = "recast";
-
-    /* A bad agent, a bad def. */
-    def.agent.radius = -1.0f;
-    CHECK_BUILD_FAILS(world, &def, NL_STATUS_INVALID_ARGUMENT, "radius");
-    def.agent = agent;
-    def.agent.height = 0.0f;
-    CHECK_BUILD_FAILS(world, &def, NL_STATUS_INVALID_ARGUMENT, "height");
-    def.agent = agent;
-    def.agent.max_slope = 90.0f;
-    CHECK_BUILD_FAILS(world, &def, NL_STATUS_INVALID_ARGUMENT, "max_slope");
-    def.agent = agent;
-    def.size = 0;
-    CHECK_BUILD_FAILS(world, &def, NL_STATUS_INVALID_ARGUMENT, "size");
-    def.size = sizeof def;
-    {
-        const uint32_t before = navmesh_count(world);
-        nl_navmesh_id out = {77u, 77u};
-        CHECK_INVALID(nl_navmesh_build(NULL, &def, &out), "world");
-        CHECK_INVALID(nl_navmesh_build(world, NULL, &out), "def");
-        CHECK_INVALID(nl_navmesh_build(world, &def, NULL), "out_id");
-        CHECK(out.index1 == 77u && navmesh_count(world) == before);
-    }
-    nl_world_destroy(world);
-}
-
-/* ---------------------------------------------------------------------------------------------
- * Plugins registered from this program
- * ------------------------------------------------------------------------------------------- */
-
-/* The test builder's behaviour, chosen per build through its settings struct. */
-enum test_build_mode {
-    MODE_GRID,                  /* hands the grid to the sink and returns what the sink said */
-    MODE_SINK_TWICE,            /* hands it twice, returns the second answer */
-    MODE_SINK_TWICE_SUCCEED,    /* hands it twice, returns success whatever the sink said */
-    MODE_NO_SINK,               /* returns success without calling the sink */
-    MODE_SINK_THEN_FAIL,        /* hands it over, then fails (NOT_FOUND) */
-    MODE_BAD_INDEX,             /* hands over a grid with an index out of range, returns the sink's answer */
-    MODE_BAD_INDEX_SUCCEED,     /* the same, returning success anyway */
-    MODE_REPORT_ERROR,          /* set_error and INVALID_ARGUMENT, no sink */
-    MODE_NULL_NAVMESH           /* calls the sink with NULL */
-};
-
-typedef struct test_builder_settings {
-    uint32_t size;
-    uint32_t mode;
-} test_builder_settings;
-
-typedef struct test_plugin_state {
-    int entries_ok;     /* entry calls that returned success */
-    int destroys;       /* destroy calls */
-    int entry_checks;   /* entry calls that saw the host table and a zero-filled info as promised */
-    int builds;
-    int build_checks;   /* builds that saw their state, the host table and level triangle counts */
-    nl_status sink_status[2];
-    uint32_t level_vertices, level_triangles;
-    nl_status short_copy_status; /* get_level_triangles with a buffer one vertex short */
-    nl_agent_type agent;
-} test_plugin_state;
-
-static test_plugin_state g_plugin;
-
-static int host_table_ok(uint32_t host_abi_version, const nl_plugin_host* host) {
-    return host != NULL && host_abi_version == NL_PLUGIN_ABI_VERSION && host->size >= sizeof(nl_plugin_host) &&
-           host->abi_version == NL_PLUGIN_ABI_VERSION && host->log != NULL && host->set_error != NULL &&
-           host->get_level_triangles != NULL;
-}
-
-static void test_plugin_destroy(void* state) {
-    if (state == &g_plugin) ++g_plugin.destroys;
-}
-
-static nl_status test_build(void* state, const nl_plugin_host* host, const nl_navmesh_build_def* def,
-                            nl_navmesh_sink_fn* sink, void* sink_context) {
-    test_plugin_state* self = (test_plugin_state*)state;
-    const test_builder_settings* settings = (const test_builder_settings*)def->settings;
-    const uint32_t mode = settings && settings->size >= sizeof *settings ? settings->mode : MODE_GRID;
-    uint32_t bad_quads[16];
-    nl_navmesh_def navmesh;
-    nl_status status;
-    ++self->builds;
-    self->agent = def->agent;
-    self->sink_status[0] = self->sink_status[1] = 0u;
-    self->level_vertices = self->level_triangles = 0xdeadbeefu;
-    self->short_copy_status = 0u;
-    if (state == &g_plugin && host != NULL && host_table_ok(host->abi_version, host) &&
-        NL_SUCCEEDED(host->get_level_triangles(host->context, NULL, 0, &self->level_vertices, NULL, 0,
-                                               &self->level_triangles)))
-        ++self->build_checks;
-    if (self->level_vertices > 1 && self->level_vertices < 100 && self->level_triangles < 100) {
-        float vertices[300];
-        uint32_t indices[300], vertex_count = 0, triangle_count = 0;
-        memset(vertices, 0, sizeof vertices);
-        self->short_copy_status = host->get_level_triangles(host->context, vertices, self->level_vertices - 1,
-                                                            &vertex_count, indices, 100, &triangle_count);
-    }
-    host->log(host->context, NL_LOG_DEBUG, "test builder: building");
-
-    /* Filled by hand, as a plugin that uses no symbol of the library would. */
-    memset(&navmesh, 0, sizeof navmesh);
-    navmesh.size = (uint32_t)sizeof navmesh;
-    navmesh.vertices = k_grid_vertices;
-    navmesh.vertex_count = 9;
-    navmesh.indices = k_grid_quads;
-    navmesh.polygon_vertex_counts = k_quad_counts;
-    navmesh.polygon_count = 4;
-    navmesh.weld_tolerance = 0.001f;
-    navmesh.agent = def->agent;
-    switch (mode) {
-    case MODE_GRID:
-        return self->sink_status[0] = sink(sink_context, &navmesh);
-    case MODE_SINK_TWICE:
-        self->sink_status[0] = sink(sink_context, &navmesh);
-        return self->sink_status[1] = sink(sink_context, &navmesh);
-    case MODE_SINK_TWICE_SUCCEED:
-        self->sink_status[0] = sink(sink_context, &navmesh);
-        self->sink_status[1] = sink(sink_context, &navmesh);
-        return NL_STATUS_SUCCESS;
-    case MODE_NO_SINK:
-        return NL_STATUS_SUCCESS;
-    case MODE_SINK_THEN_FAIL:
-        self->sink_status[0] = sink(sink_context, &navmesh);
-        host->set_error(host->context, "test builder: changed its mind after the sink");
-        return NL_STATUS_FAILURE | NL_STATUS_NOT_FOUND;
-    case MODE_BAD_INDEX:
-    case MODE_BAD_INDEX_SUCCEED:
-        memcpy(bad_quads, k_grid_quads, sizeof bad_quads);
-        bad_quads[6] = 99;
-        navmesh.indices = bad_quads;
-        status = self->sink_status[0] = sink(sink_context, &navmesh);
-        return mode == MODE_BAD_INDEX ? status : NL_STATUS_SUCCESS;
-    case MODE_REPORT_ERROR:
-        host->set_error(host->context, "test builder: setting 'flavour' must be 'vanilla'");
-        return NL_STATUS_FAILURE | NL_STATUS_INVALID_ARGUMENT;
-    case MODE_NULL_NAVMESH:
-        return self->sink_status[0] = sink(sink_context, NULL);
-    default:
-        return NL_STATUS_FAILURE | NL_STATUS_INTERNAL_ERROR;
-    }
-}
-
-/* Checks what the host promises an entry function, then describes the plugin. */
-static int entry_preamble(uint32_t host_abi_version, const nl_plugin_host* host, nl_plugin_info* out_info) {
-    /* The host zero-fills the info and sets its size. */
-    if (host_table_ok(host_abi_version, host) && out_info->size == sizeof(nl_plugin_info) &&
-        out_info->abi_version == 0 && out_info->name == NULL && out_info->version == NULL &&
-        out_info->description == NULL && out_info->kinds == 0 && out_info->state == NULL &&
-        out_info->destroy == NULL && out_info->navmesh_builder.build == NULL)
-        ++g_plugin.entry_checks;
-    out_info->abi_version = NL_PLUGIN_ABI_VERSION;
-    out_info->version = "2.5.1";
-    out_info->description = "C test builder: a 2 x 2 grid";
-    out_info->kinds = NL_PLUGIN_NAVMESH_BUILDER;
-    out_info->state = &g_plugin;
-    out_info->destroy = test_plugin_destroy;
-    out_info->navmesh_builder.build = test_build;
-    ++g_plugin.entries_ok;
-    return 1;
-}
-
-static nl_status entry_builder(uint32_t host_abi_version, const nl_plugin_host* host, nl_plugin_info* out_info) {
-    entry_preamble(host_abi_version, host, out_info);
-    out_info->name = "c-test-builder";
-    return NL_STATUS_SUCCESS;
-}
-
-/* The same plugin under another name, so each world can hold two. */
-static nl_status entry_builder_two(uint32_t host_abi_version, const nl_plugin_host* host, nl_plugin_info* out_info) {
-    entry_preamble(host_abi_version, host, out_info);
-    out_info->name = "c-test-builder-2";
-    return NL_STATUS_SUCCESS;
-}
-
-static nl_status entry_links_only(uint32_t host_abi_version, const nl_plugin_host* host, nl_plugin_info* out_info) {
-    entry_preamble(host_abi_version, host, out_info);
-    out_info->name = "c-test-links";
-    out_info->kinds = NL_PLUGIN_LINK_KIND;
-    out_info->navmesh_builder.build = NULL;
-    return NL_STATUS_SUCCESS;
-}
-
-static nl_status entry_named_recast(uint32_t host_abi_version, const nl_plugin_host* host, nl_plugin_info* out_info) {
-    entry_preamble(host_abi_version, host, out_info);
-    out_info->name = "recast";
-    return NL_STATUS_SUCCESS;
-}
-
-static nl_status entry_version_mismatch(uint32_t host_abi_version, const nl_plugin_host* host,
-                                        nl_plugin_info* out_info) {
-    (void)host_abi_version;
-    (void)out_info;
-    host->set_error(host->context, "c-test-old needs plugin ABI 7");
-    return NL_STATUS_FAILURE | NL_STATUS_VERSION_MISMATCH;
-}
-
-static nl_status entry_abi_zero(uint32_t host_abi_version, const nl_plugin_host* host, nl_plugin_info* out_info) {
-    entry_preamble(host_abi_version, host, out_info);
-    out_info->name = "c-test-abi-zero";
-    out_info->abi_version = 0;
-    return NL_STATUS_SUCCESS;
-}
-
-static nl_status entry_abi_newer(uint32_t host_abi_version, const nl_plugin_host* host, nl_plugin_info* out_info) {
-    entry_preamble(host_abi_version, host, out_info);
-    out_info->name = "c-test-abi-newer";
-    out_info->abi_version = host_abi_version + 1u;
-    return NL_STATUS_SUCCESS;
-}
-
-static nl_status entry_no_name(uint32_t host_abi_version, const nl_plugin_host* host, nl_plugin_info* out_info) {
-    entry_preamble(host_abi_version, host, out_info);
-    out_info->name = NULL;
-    return NL_STATUS_SUCCESS;
-}
-
-static nl_status entry_no_build(uint32_t host_abi_version, const nl_plugin_host* host, nl_plugin_info* out_info) {
-    entry_preamble(host_abi_version, host, out_info);
-    out_info->name = "c-test-no-build";
-    out_info->navmesh_builder.build = NULL;
-    return NL_STATUS_SUCCESS;
-}
-
-static nl_status entry_unknown_kind(uint32_t host_abi_version, const nl_plugin_host* host, nl_plugin_info* out_info) {
-    entry_preamble(host_abi_version, host, out_info);
-    out_info->name = "c-test-unknown-kind";
-    out_info->kinds = NL_PLUGIN_NAVMESH_BUILDER | 0x100u;
-    return NL_STATUS_SUCCESS;
-}
-
-static nl_status entry_refuses(uint32_t host_abi_version, const nl_plugin_host* host, nl_plugin_info* out_info) {
-    (void)host_abi_version;
-    (void)out_info;
-    host->set_error(host->context, "c-test-refuses: no licence");
-    return NL_STATUS_FAILURE | NL_STATUS_OUT_OF_MEMORY;
-}
-
-static nl_plugin_description describe(const nl_world* world, nl_plugin_id id) {
-    nl_plugin_description d;
-    memset(&d, 0, sizeof d);
-    d.size = sizeof d;
-    if (NL_FAILED(nl_plugin_get_description(world, id, &d))) memset(&d, 0, sizeof d);
-    return d;
-}
-
-/* One refused nl_plugin_register: `detail` naming `needle`, nothing registered, out_id untouched. */
-#define CHECK_REGISTER_FAILS(world, entry, detail, needle) \
-    check_register_fails((world), (entry), (detail), (needle), __FILE__, __LINE__)
-static void check_register_fails(nl_world* world, nl_plugin_entry_fn* entry, nl_status detail, const char* needle,
-                                 const char* file, int line) {
-    const uint32_t before = plugin_count(world);
-    nl_plugin_id out = {77u, 77u};
-    const nl_status status = nl_plugin_register(world, entry, &out);
-    check_fail_at(status, detail, needle, "nl_plugin_register", file, line);
-    check_at(out.index1 == 77u && out.generation == 77u, file, line, "out_id was written on failure (%s)", needle);
-    check_at(plugin_count(world) == before, file, line, "a plugin was registered on failure (%s)", needle);
-}
-
-static void test_plugins_listed(void) {
-    nl_world* world = make_world(1);
-    nl_plugin_id ids[4];
-    uint32_t count = 0xdeadbeefu;
-    nl_plugin_description d;
-    g_section = "plugins: built in";
-
-    CHECK_OK(nl_world_get_plugins(world, NULL, 0, &count));
-    CHECK(count == 1);
-    memset(ids, 0xcd, sizeof ids);
-    CHECK_OK(nl_world_get_plugins(world, ids, 4, &count));
-    CHECK(count == 1);
-    CHECK(all_bytes(&ids[1], 3 * sizeof ids[0], 0xcd));
-    d = describe(world, ids[0]);
-    CHECK(d.size == sizeof d);
-    CHECK(d.name != NULL && strcmp(d.name, "recast") == 0);
-    CHECK(d.builtin == 1);
-    CHECK(d.kinds == NL_PLUGIN_NAVMESH_BUILDER);
-    CHECK(d.abi_version == NL_PLUGIN_ABI_VERSION);
-    CHECK(d.version != NULL && d.version[0] != '\0');
-    CHECK(d.description != NULL && d.description[0] != '\0');
-    {
-        /* The built-in plugin carries the library's version. */
-        char expected[64];
-        const nl_version v = nl_get_version();
-        snprintf(expected, sizeof expected, "%d.%d.%d", (int)v.major, (int)v.minor, (int)v.patch);
-        CHECK_MSG(d.version != NULL && strcmp(d.version, expected) == 0, "recast version \"%s\", library %s",
-                  d.version ? d.version : "(null)", expected);
-    }
-
-    /* The two-call pattern. */
-    memset(ids, 0xcd, sizeof ids);
-    count = 0;
-    CHECK_FAIL(nl_world_get_plugins(world, ids, 0, &count), NL_STATUS_BUFFER_TOO_SMALL, "capacity");
-    CHECK(count == 1);
-    CHECK(all_bytes(ids, sizeof ids, 0xcd));
-    count = 0xdeadbeefu;
-    CHECK_INVALID(nl_world_get_plugins(world, NULL, 2, &count), "out_ids");
-    CHECK_INVALID(nl_world_get_plugins(world, ids, 4, NULL), "out_count");
-    CHECK_INVALID(nl_world_get_plugins(NULL, ids, 4, &count), "world");
-
-    /* Description failures. */
-    {
-        const nl_plugin_id null_id = {0u, 0u}, far = {1000u, 1u};
-        CHECK_OK(nl_world_get_plugins(world, ids, 4, &count));
-        memset(&d, 0xab, sizeof d);
-        d.size = 0;
-        CHECK_INVALID(nl_plugin_get_description(world, ids[0], &d), "size");
-        CHECK(d.kinds == 0xabababab);
-        d.size = sizeof d;
-        CHECK_INVALID(nl_plugin_get_description(world, ids[0], NULL), "out_description");
-        CHECK_INVALID(nl_plugin_get_description(NULL, ids[0], &d), "world");
-        CHECK_FAIL(nl_plugin_get_description(world, null_id, &d), NL_STATUS_INVALID_HANDLE,
-                   "nl_plugin_get_description");
-        CHECK_FAIL(nl_plugin_get_description(world, far, &d), NL_STATUS_INVALID_HANDLE, "nl_plugin_get_description");
-        CHECK(d.kinds == 0xabababab);
-    }
-
-    /* nl_plugin_load: arguments, then files that are not plugins. */
-    {
-        nl_plugin_id out = {77u, 77u};
-        const char* text_path = "navlink_c_api_test_not_a_plugin.so";
-        FILE* f;
-        CHECK_INVALID(nl_plugin_load(world, NULL, &out), "path");
-        CHECK_INVALID(nl_plugin_load(world, "navlink_c_api_test_missing_plugin.so", NULL), "out_id");
-        CHECK_INVALID(nl_plugin_load(NULL, "navlink_c_api_test_missing_plugin.so", &out), "world");
-        CHECK_FAIL(nl_plugin_load(world, "navlink_c_api_test_missing_plugin.so", &out), NL_STATUS_NOT_FOUND,
-                   "navlink_c_api_test_missing_plugin.so");
-        f = fopen(text_path, "wb");
-        if (CHECK(f != NULL)) {
-            fputs("this is not a shared library\n", f);
-            fclose(f);
-            CHECK_FAIL(nl_plugin_load(world, text_path, &out), NL_STATUS_IO_ERROR, text_path);
-            remove(text_path);
-        }
-        CHECK(out.index1 == 77u && out.generation == 77u);
-        CHECK(plugin_count(world) == 1);
-    }
-    nl_world_destroy(world);
-}
-
-static void test_plugins_registered(void) {
-    nl_world* world;
-    nl_plugin_id builder = {0u, 0u}, links = {0u, 0u}, second = {0u, 0u};
-    nl_plugin_description d;
-    const char *name, *version, *description;
-    nl_navmesh_build_def def = nl_default_navmesh_build_def();
-    test_builder_settings settings;
-    nl_navmesh_id id = {0u, 0u};
-    g_section = "plugins: registered";
-    memset(&g_plugin, 0, sizeof g_plugin);
-
-    world = make_world(1);
-    add_box(world);
-    CHECK_OK(nl_plugin_register(world, entry_builder, &builder));
-    CHECK(builder.index1 != 0u);
-    CHECK(g_plugin.entries_ok == 1 && g_plugin.entry_checks == 1);
-    CHECK(plugin_count(world) == 2);
-    {
-        /* Built-in first, then in registration order. */
-        nl_plugin_id ids[2];
-        uint32_t count = 0;
-        CHECK_OK(nl_world_get_plugins(world, ids, 2, &count));
-        CHECK(count == 2 && same_plugin(ids[1], builder) && describe(world, ids[0]).builtin == 1);
-    }
-    d = describe(world, builder);
-    CHECK(d.name != NULL && strcmp(d.name, "c-test-builder") == 0);
-    CHECK(d.version != NULL && strcmp(d.version, "2.5.1") == 0);
-    CHECK(d.description != NULL && strcmp(d.description, "C test builder: a 2 x 2 grid") == 0);
-    CHECK(d.builtin == 0 && d.kinds == NL_PLUGIN_NAVMESH_BUILDER && d.abi_version == NL_PLUGIN_ABI_VERSION);
-    name = d.name;
-    version = d.version;
-    description = d.description;
-
-    /* Built through nl_navmesh_build with builder = its name: the builder got the def's agent, its
-       state, the host's table and the level (the box: 8 vertices, 12 triangles). */
-    def.builder = "c-test-builder";
-    def.agent.radius = 0.35f;
-    CHECK_OK(nl_navmesh_build(world, &def, &id));
-    CHECK(g_plugin.builds == 1 && g_plugin.build_checks == 1);
-    CHECK(same_agent(g_plugin.agent, def.agent));
-    CHECK_MSG(g_plugin.level_vertices == 8 && g_plugin.level_triangles == 12, "the level has %u vertices, %u triangles",
-              (unsigned)g_plugin.level_vertices, (unsigned)g_plugin.level_triangles);
-    CHECK(g_plugin.short_copy_status == (NL_STATUS_FAILURE | NL_STATUS_BUFFER_TOO_SMALL));
-    CHECK(g_plugin.sink_status[0] == NL_STATUS_SUCCESS);
-    check_grid_navmesh(world, id, 4, NULL, "built by the C test builder");
-    CHECK(same_agent(navmesh_info(world, id).agent, def.agent));
-    CHECK(navmesh_count(world) == 1);
-
-    /* Registering it again is refused by name; so is a plugin named like the built-in one. */
-    CHECK_REGISTER_FAILS(world, entry_builder, NL_STATUS_INVALID_ARGUMENT, "c-test-builder");
-    CHECK_REGISTER_FAILS(world, entry_named_recast, NL_STATUS_INVALID_ARGUMENT, "recast");
-    /* Version negotiation. */
-    CHECK_REGISTER_FAILS(world, entry_version_mismatch, NL_STATUS_VERSION_MISMATCH, "nl_plugin_register");
-    CHECK_REGISTER_FAILS(world, entry_abi_zero, NL_STATUS_VERSION_MISMATCH, "nl_plugin_register");
-    CHECK_REGISTER_FAILS(world, entry_abi_newer, NL_STATUS_VERSION_MISMATCH, "nl_plugin_register");
-    /* Plugins that describe themselves wrongly, or refuse to start. */
-    CHECK_REGISTER_FAILS(world, entry_no_name, NL_STATUS_INVALID_ARGUMENT, "name");
-    CHECK_REGISTER_FAILS(world, entry_no_build, NL_STATUS_INVALID_ARGUMENT, "c-test-no-build");
-    CHECK_REGISTER_FAILS(world, entry_unknown_kind, NL_STATUS_INVALID_ARGUMENT, "c-test-unknown-kind");
-    {
-        const uint32_t before = plugin_count(world);
-        nl_plugin_id out = {77u, 77u};
-        const nl_status status = nl_plugin_register(world, entry_refuses, &out);
-        CHECK(NL_FAILED(status));
-        CHECK(strstr(nl_get_last_error_message(), "no licence") != NULL);
-        CHECK(out.index1 == 77u && plugin_count(world) == before);
-    }
-    /* Arguments. */
-    {
-        nl_plugin_id out = {77u, 77u};
-        CHECK_INVALID(nl_plugin_register(world, NULL, &out), "entry");
-        CHECK_INVALID(nl_plugin_register(world, entry_builder_two, NULL), "out_id");
-        CHECK_INVALID(nl_plugin_register(NULL, entry_builder_two, &out), "world");
-        CHECK(out.index1 == 77u);
-    }
-
-    /* A plugin that says it provides a link kind but fills no link-kind table is refused; it is
-       no builder either. */
-    CHECK_INVALID(nl_plugin_register(world, entry_links_only, &links), "link kind");
-    def.builder = "c-test-links";
-    CHECK_BUILD_FAILS(world, &def, NL_STATUS_NOT_FOUND, "c-test-links");
-    {
-        nl_navmesh_id out = {77u, 77u};
-        CHECK_FAIL(nl_navmesh_build(world, &def, &out), NL_STATUS_NOT_FOUND, "c-test-links");
-        CHECK_THAT(strstr(nl_get_last_error_message(), "'c-test-builder'") != NULL &&
-                       strstr(nl_get_last_error_message(), "'recast'") != NULL,
-                   "nl_navmesh_build: an unknown builder's message lists the builders there are");
-    }
-    CHECK_OK(nl_plugin_register(world, entry_builder_two, &second));
-    CHECK(plugin_count(world) == 3);
-
-    /* The description's strings are the world's: still there, unchanged, after all of that. */
-    CHECK(strcmp(name, "c-test-builder") == 0);
-    CHECK(strcmp(version, "2.5.1") == 0);
-    CHECK(strcmp(description, "C test builder: a 2 x 2 grid") == 0);
-    d = describe(world, builder);
-    CHECK(d.name == name || strcmp(d.name, name) == 0);
-
-    /* A builder's own failure, with the reason it gave. */
-    def.builder = "c-test-builder";
-    settings.size = sizeof settings;
-    settings.mode = MODE_REPORT_ERROR;
-    def.settings = &settings;
-    CHECK_BUILD_FAILS(world, &def, NL_STATUS_INVALID_ARGUMENT, "'flavour' must be 'vanilla'");
-    CHECK_BUILD_FAILS(world, &def, NL_STATUS_INVALID_ARGUMENT, "c-test-builder");
-
-    /* A builder that hands over an invalid navmesh: the navmesh's problem is in the message. */
-    settings.mode = MODE_BAD_INDEX;
-    {
-        const uint32_t before = navmesh_count(world);
-        nl_navmesh_id out = {77u, 77u};
-        const nl_status status = nl_navmesh_build(world, &def, &out);
-        CHECK_MSG(NL_FAILED(status), "nl_navmesh_build with a builder whose navmesh is invalid returned 0x%08x",
-                  (unsigned)status);
-        CHECK(NL_FAILED(g_plugin.sink_status[0]));
-        CHECK_MSG(strstr(nl_get_last_error_message(), "indices[6]") != NULL, "message \"%s\" lacks indices[6]",
-                  nl_get_last_error_message());
-        CHECK(strstr(nl_get_last_error_message(), "nl_navmesh_build") != NULL);
-        CHECK(out.index1 == 77u && navmesh_count(world) == before);
-    }
-    settings.mode = MODE_BAD_INDEX_SUCCEED;
-    {
-        const uint32_t before = navmesh_count(world);
-        nl_navmesh_id out = {77u, 77u};
-        const nl_status status = nl_navmesh_build(world, &def, &out);
-        CHECK_THAT(NL_FAILED(status) && strstr(nl_get_last_error_message(), "indices[6]") != NULL,
-                   "nl_navmesh_build: a builder that ignores the sink's refusal and returns success still fails, "
-                   "with the navmesh's problem");
-        CHECK(out.index1 == 77u && navmesh_count(world) == before);
-    }
-    settings.mode = MODE_NULL_NAVMESH;
-    {
-        const uint32_t before = navmesh_count(world);
-        nl_navmesh_id out = {77u, 77u};
-        CHECK(NL_FAILED(nl_navmesh_build(world, &def, &out)));
-        CHECK(NL_FAILED(g_plugin.sink_status[0]));
-        CHECK(out.index1 == 77u && navmesh_count(world) == before);
-    }
-    /* The other misbehaving builders (sink twice, no sink, sink then failure) are in
-       test_plugin_misbehaviour, after running once each in a child process. */
-
-    /* Still works after all the failures. */
-    settings.mode = MODE_GRID;
-    CHECK_OK(nl_navmesh_build(world, &def, &id));
-    check_grid_navmesh(world, id, 4, NULL, "built after failures");
-    def.settings = NULL;
-    def.builder = "c-test-builder-2";
-    CHECK_OK(nl_navmesh_build(world, &def, &id));
-    CHECK(navmesh_count(world) == 3);
-
-    /* Destroying the world destroys each plugin state the entry made, once. */
-    nl_world_destroy(world);
-    CHECK_MSG(g_plugin.destroys == g_plugin.entries_ok,
-              "%d plugin states destroyed, %d made by successful entry calls (refused registrations included)",
-              g_plugin.destroys, g_plugin.entries_ok);
-    CHECK(g_plugin.entry_checks == g_plugin.entries_ok);
-
-    /* Plugins are per world: a new world has only the built-in one, and takes the same names again. */
-    world = make_world(1);
-    CHECK(plugin_count(world) == 1);
-    CHECK_OK(nl_plugin_register(world, entry_builder, &builder));
-    CHECK(strcmp(describe(world, builder).name, "c-test-builder") == 0);
-    nl_world_destroy(world);
-}
-
-/* ---------------------------------------------------------------------------------------------
- * Misbehaving builders: a failure, never a crash, never a navmesh added behind the caller's back.
- * ------------------------------------------------------------------------------------------- */
-
-static const struct misbehaviour {
-    uint32_t mode;
-    const char* what;
-} k_misbehaviours[] = {
-    {MODE_SINK_TWICE, "a builder that calls the sink twice (returning the second answer)"},
-    {MODE_SINK_TWICE_SUCCEED, "a builder that calls the sink twice and returns success"},
-    {MODE_NO_SINK, "a builder that returns success without calling the sink"},
-    {MODE_SINK_THEN_FAIL, "a builder that fails after the sink took its navmesh"},
-};
-enum { k_misbehaviour_count = sizeof k_misbehaviours / sizeof k_misbehaviours[0] };
-
-/* -1: the child crashed; 0: wrong answer; 1: a failure and nothing added. */
-static int g_misbehaviour_isolated[k_misbehaviour_count];
-
-/* Runs misbehaviour `m` on a fresh world; 1 if the build failed and added nothing. */
-static int run_misbehaviour(size_t m) {
-    nl_world* world = make_world(1);
-    nl_plugin_id plugin = {0u, 0u};
-    nl_navmesh_build_def def = nl_default_navmesh_build_def();
-    test_builder_settings settings;
-    nl_navmesh_id out = {77u, 77u};
-    nl_status status;
-    int ok;
-    settings.size = sizeof settings;
-    settings.mode = k_misbehaviours[m].mode;
-    def.builder = "c-test-builder";
-    def.settings = &settings;
-    if (NL_FAILED(nl_plugin_register(world, entry_builder, &plugin))) {
-        nl_world_destroy(world);
-        return 0;
-    }
-    status = nl_navmesh_build(world, &def, &out);
-    ok = NL_FAILED(status) && nl_get_last_error_message()[0] != '\0' && out.index1 == 77u && navmesh_count(world) == 0;
-    nl_world_destroy(world);
-    return ok;
-}
-
-static void test_plugin_misbehaviour(void) {
-    size_t m;
-    g_section = "plugins: misbehaving builders";
-    for (m = 0; m < k_misbehaviour_count; ++m) {
-        nl_world* world;
-        nl_plugin_id plugin = {0u, 0u};
-        nl_navmesh_build_def def = nl_default_navmesh_build_def();
-        test_builder_settings settings;
-        nl_navmesh_id out = {77u, 77u};
-        nl_status status;
-        if (!CHECK_MSG(g_misbehaviour_isolated[m] >= 0, "%s crashed the process (in a child)", k_misbehaviours[m].what))
-            continue; /* it would crash this process too */
-        world = make_world(1);
-        settings.size = sizeof settings;
-        settings.mode = k_misbehaviours[m].mode;
-        def.builder = "c-test-builder";
-        def.settings = &settings;
-        CHECK_OK(nl_plugin_register(world, entry_builder, &plugin));
-        status = nl_navmesh_build(world, &def, &out);
-        CHECK_MSG(NL_FAILED(status), "%s: nl_navmesh_build returned 0x%08x (%s)", k_misbehaviours[m].what,
-                  (unsigned)status, nl_status_string(status));
-        CHECK_MSG(strstr(nl_get_last_error_message(), "c-test-builder") != NULL,
-                  "%s: the message names the builder: \"%s\"", k_misbehaviours[m].what, nl_get_last_error_message());
-        CHECK_MSG(out.index1 == 77u && out.generation == 77u, "%s: out_id was written", k_misbehaviours[m].what);
-        CHECK_MSG(navmesh_count(world) == 0, "%s: the failed build left %u navmesh(es) in the world",
-                  k_misbehaviours[m].what, (unsigned)navmesh_count(world));
-        nl_world_destroy(world);
-    }
-}
-
-/* ---------------------------------------------------------------------------------------------
- * Threads: queries on one navmesh while other navmeshes come and go.
- * ------------------------------------------------------------------------------------------- */
-
 typedef struct navmesh_job {
     nl_world* world;
     nl_navmesh_id id;
@@ -2293,7 +1148,7 @@ static void* nearest_thread(void* arg) {
     return NULL;
 }
 
-static void test_navmesh_threads(void) {
+static void threads(void) {
     enum { thread_count = 3 };
     nl_world* world = make_world(2);
     nl_navmesh_def def = grid_def();
@@ -2303,7 +1158,6 @@ static void test_navmesh_threads(void) {
     int started[thread_count];
     float far_vertices[27];
     int i, q, edits_ok = 1;
-    g_section = "navmesh threads";
 
     CHECK_OK(nl_navmesh_add(world, &def, &id));
     memset(jobs, 0, sizeof jobs);
@@ -2335,107 +1189,6 @@ static void test_navmesh_threads(void) {
     nl_world_destroy(world);
 }
 
-/* ---------------------------------------------------------------------------------------------
- * Entry points
- * ------------------------------------------------------------------------------------------- */
-
-/* Runs `fn(arg)` in a child process: 1 if it returned nonzero, 0 if zero, -1 if the child crashed or
-   was stopped by a sanitizer (which exits with status 1: a wrong answer exits with 3). */
-static int run_forked(int (*fn)(size_t), size_t arg) {
-    pid_t pid;
-    int status = 0;
-    fflush(stdout);
-    fflush(stderr);
-    pid = fork();
-    if (pid < 0) return 0;
-    if (pid == 0) {
-        if (!freopen("/dev/null", "w", stderr)) { /* a library's abort message is not this test's output */
-        }
-        _exit(fn(arg) ? 0 : 3);
-    }
-    if (waitpid(pid, &status, 0) != pid) return 0;
-    if (!WIFEXITED(status)) return -1;
-    return WEXITSTATUS(status) == 0 ? 1 : WEXITSTATUS(status) == 3 ? 0 : -1;
-}
-
-/* The soup scaled to 1000 km squares, weld tolerance 1e-30 m: 9 vertices, 15 welded. */
-static int isolated_weld(size_t unused) {
-    nl_world* world = make_world(1);
-    float soup[72];
-    uint32_t indices[24];
-    nl_navmesh_def def = nl_default_navmesh_def();
-    nl_navmesh_id id = {0u, 0u};
-    nl_navmesh_info info;
-    int k, ok;
-    (void)unused;
-    grid_soup(soup, indices);
-    for (k = 0; k < 72; ++k) soup[k] *= 1.0e6f;
-    def.vertices = soup;
-    def.vertex_count = 24;
-    def.indices = indices;
-    def.polygon_count = 8;
-    def.weld_tolerance = 1.0e-30f;
-    ok = NL_SUCCEEDED(nl_navmesh_add(world, &def, &id));
-    info = navmesh_info(world, id);
-    ok = ok && info.vertex_count == 9 && info.welded_vertex_count == 15 && info.portal_count == 8;
-    nl_world_destroy(world);
-    return ok;
-}
-
-/* The grid scaled to 1 cm squares; half extents 1e9 from just above quadrant 3 find the point below. */
-static int isolated_far(size_t unused) {
-    nl_world* world = make_world(1);
-    float tiny[27];
-    const float above_3[3] = {0.005f, 1.0f, 0.005f}, anywhere[3] = {1.0e9f, 1.0e9f, 1.0e9f};
-    const float far_point[3] = {1.0e9f, 0.5f, 1.0e9f}, reaching[3] = {1.0e9f, 1.0f, 1.0e9f};
-    nl_navmesh_def def = grid_def();
-    nl_navmesh_id id = {0u, 0u};
-    nl_nav_point out[2];
-    int k, ok;
-    (void)unused;
-    for (k = 0; k < 27; ++k) tiny[k] = k % 3 == 1 ? k_grid_vertices[k] : 0.01f * k_grid_vertices[k];
-    def.vertices = tiny;
-    ok = NL_SUCCEEDED(nl_navmesh_add(world, &def, &id)) &&
-         NL_SUCCEEDED(nl_navmesh_find_nearest(world, id, above_3, 1, anywhere, &out[0])) &&
-         NL_SUCCEEDED(nl_navmesh_find_nearest(world, id, far_point, 1, reaching, &out[1]));
-    ok = ok && out[0].found == 1 && out[0].polygon == polygon_of_quadrant(world, id, 3) &&
-         near3(out[0].point, 0.005f, GRID_Y, 0.005f, 1e-6f) && out[1].found == 1;
-    nl_world_destroy(world);
-    return ok;
-}
-
-void test_navmesh_isolated(void) {
-    size_t m;
-    g_section = "navmesh extremes (isolated)";
-    g_isolated[ISOLATED_WELD] = run_forked(isolated_weld, 0);
-    CHECK_MSG(g_isolated[ISOLATED_WELD] == 1, "nl_navmesh_add: weld tolerance 1e-30 m on 1000 km squares (%s)",
-              g_isolated[ISOLATED_WELD] < 0 ? "crashed, or a sanitizer stopped it" : "wrong answer");
-    g_isolated[ISOLATED_FAR] = run_forked(isolated_far, 0);
-    CHECK_MSG(g_isolated[ISOLATED_FAR] == 1,
-              "nl_navmesh_find_nearest: half extents 1e9 over 1 cm squares find the polygon below (%s)",
-              g_isolated[ISOLATED_FAR] < 0 ? "crashed, or a sanitizer stopped it" : "wrong answer");
-    g_section = "plugins: misbehaving builders (isolated)";
-    for (m = 0; m < k_misbehaviour_count; ++m) {
-        g_misbehaviour_isolated[m] = run_forked(run_misbehaviour, m);
-        CHECK_MSG(g_misbehaviour_isolated[m] == 1, "%s: %s", k_misbehaviours[m].what,
-                  g_misbehaviour_isolated[m] < 0 ? "crashed, or a sanitizer stopped it"
-                                                 : "did not fail cleanly (a success, or a navmesh left in the world)");
-    }
-}
-
-void test_navmesh_all(void) {
-    test_defaults();
-    test_navmesh_add_grid();
-    test_navmesh_add_variants();
-    test_navmesh_detail();
-    test_navmesh_rejections();
-    test_find_nearest();
-    test_find_nearest_batches();
-    test_navmesh_lists();
-    test_navmesh_ids();
-    test_navmesh_build();
-    test_plugins_listed();
-    test_plugins_registered();
-    test_plugin_misbehaviour();
-    test_navmesh_threads();
-}
+ABI_SECTION(navmeshes, ABI_CASE(defaults), ABI_CASE(add_grid), ABI_CASE(add_variants), ABI_CASE(detail),
+            ABI_CASE(rejections), ABI_CASE(find_nearest), ABI_CASE(find_nearest_batches), ABI_CASE(lists), ABI_CASE(ids),
+            ABI_CASE(threads));

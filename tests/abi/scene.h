@@ -1,6 +1,6 @@
 /*
- * Small builders of defs and levels that the C API test programs share (navlink-c-api-test and
- * navlink-c-api-hostile-test). Strict C11 through the C ABI only.
+ * Small builders of defs and levels that the ABI test programs share (navlink-abi-tests and
+ * navlink-abi-hostile-test). Strict C11 through the C ABI only.
  */
 #ifndef NAVLINK_ABI_SCENE_H
 #define NAVLINK_ABI_SCENE_H
