@@ -16,7 +16,7 @@
 # Each test is named PREFIX + the case's name and gets the LABELS, TIMEOUT, WORKING_DIRECTORY
 # (default: the current binary dir) and SKIP_RETURN_CODE given. The listing runs discover_tests.cmake,
 # which refuses two cases of one name. doctest_discover_tests from Debian's doctest-dev (2.4.9) is not
-# used: it splits a case's name at ';' (23 of the unit tests' names have one), registering halves that
+# used: it splits a case's name at ';' (24 of the 104 unit test cases have one), registering halves that
 # run no case and pass, and it escapes only ','.
 set(_NAVLINK_DISCOVER_SCRIPT "${CMAKE_CURRENT_LIST_DIR}/discover_tests.cmake")
 
@@ -31,6 +31,7 @@ function(navlink_discover_tests TARGET)
   set(_tests_file "${CMAKE_CURRENT_BINARY_DIR}/${TARGET}_ctests.cmake")
   set(_include_file "${CMAKE_CURRENT_BINARY_DIR}/${TARGET}_ctests_include.cmake")
   # Lists go through -D as one argument each; '|' separates their items (';' would split the command).
+  # The prefix ends with a '|' the script takes off: -D drops trailing spaces.
   string(REPLACE ";" "|" _args "${_d_ARGS}")
   string(REPLACE ";" "|" _labels "${_d_LABELS}")
   add_custom_command(
@@ -38,7 +39,7 @@ function(navlink_discover_tests TARGET)
     COMMAND "${CMAKE_COMMAND}"
             "-DTEST_EXECUTABLE=$<TARGET_FILE:${TARGET}>"
             "-DTEST_KIND=${_d_KIND}"
-            "-DTEST_PREFIX=${_d_PREFIX}"
+            "-DTEST_PREFIX=${_d_PREFIX}|"
             "-DTEST_ARGS=${_args}"
             "-DTEST_LABELS=${_labels}"
             "-DTEST_TIMEOUT=${_d_TIMEOUT}"

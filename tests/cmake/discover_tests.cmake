@@ -25,6 +25,8 @@ if(NOT _result EQUAL 0)
   message(FATAL_ERROR "discover_tests: '${TEST_EXECUTABLE} ${_list_option}' failed (${_result}):\n${_output}${_errors}")
 endif()
 
+string(REGEX REPLACE "\\|$" "" TEST_PREFIX "${TEST_PREFIX}") # the end mark NavLinkTestDiscovery adds
+
 # The arguments and properties every case's test gets.
 set(_common_args "")
 if(NOT TEST_ARGS STREQUAL "")
@@ -97,6 +99,36 @@ while(NOT _output STREQUAL "")
   string(APPEND _script "add_test(${_test} ${_run}${_common_args})\n"
                         "set_tests_properties(${_test} PROPERTIES${_properties})\n")
 endwhile()
+
+# doctest's filter reads '*' and '?' in a name as wildcards (doctest_main.cpp puts '?' for both): a
+# name with one must not match another case's name, or its test would run both (and fail).
+if(TEST_KIND STREQUAL "doctest" AND _names MATCHES "[*?]")
+  set(_rest "${_names}")
+  string(SUBSTRING "${_rest}" 1 -1 _rest)
+  while(NOT _rest STREQUAL "")
+    string(FIND "${_rest}" "\n" _end)
+    string(SUBSTRING "${_rest}" 0 ${_end} _name)
+    math(EXPR _next "${_end} + 1")
+    string(SUBSTRING "${_rest}" ${_next} -1 _rest)
+    if(_name MATCHES "[*?]")
+      # The name as a regular expression: every other character literal, '*' and '?' any one.
+      string(REGEX REPLACE "([].[^$|()+{}\\-])" "\\\\\\1" _regex "${_name}")
+      string(REGEX REPLACE "[*?]" "." _regex "${_regex}")
+      set(_others "${_names}")
+      string(SUBSTRING "${_others}" 1 -1 _others)
+      while(NOT _others STREQUAL "")
+        string(FIND "${_others}" "\n" _end)
+        string(SUBSTRING "${_others}" 0 ${_end} _other)
+        math(EXPR _next "${_end} + 1")
+        string(SUBSTRING "${_others}" ${_next} -1 _others)
+        if(NOT _other STREQUAL _name AND _other MATCHES "^${_regex}$")
+          message(FATAL_ERROR "discover_tests: in ${TEST_EXECUTABLE}, doctest's filter for the test case '${_name}' "
+                              "also matches '${_other}' ('*' and '?' are wildcards to it): rename one")
+        endif()
+      endwhile()
+    endif()
+  endwhile()
+endif()
 
 if(TEST_KIND STREQUAL "doctest" AND NOT _expected STREQUAL "${_count}")
   message(FATAL_ERROR "discover_tests: ${TEST_EXECUTABLE} says it has '${_expected}' test cases, "
