@@ -2,7 +2,7 @@
 // own, plus one option for ctest (navlink_discover_tests registers each test case as a ctest test):
 //
 //   --exact-test-case=NAME   runs the test case named exactly NAME, and fails unless that case, and
-//                            no other, ran.
+//                            no other, ran and made at least one assertion.
 //
 // doctest's --test-case filter cannot say that by itself: it splits at ',', reads '*' and '?' as
 // wildcards and ignores case, so a name can match several cases (or, mangled, none, which doctest
@@ -23,7 +23,10 @@ std::vector<std::string>& started_cases() {
   return names;
 }
 
-// Records the name of each test case that starts (once per case, whatever its subcases).
+int g_assertions = 0;  // made by the test cases that ran
+
+// Records the name of each test case that starts (once per case, whatever its subcases) and counts
+// the assertions made.
 struct StartedCases : doctest::IReporter {
   explicit StartedCases(const doctest::ContextOptions&) {}
   void report_query(const doctest::QueryData&) override {}
@@ -31,7 +34,7 @@ struct StartedCases : doctest::IReporter {
   void test_run_end(const doctest::TestRunStats&) override {}
   void test_case_start(const doctest::TestCaseData& data) override { started_cases().emplace_back(data.m_name); }
   void test_case_reenter(const doctest::TestCaseData&) override {}
-  void test_case_end(const doctest::CurrentTestCaseStats&) override {}
+  void test_case_end(const doctest::CurrentTestCaseStats& stats) override { g_assertions += stats.numAssertsCurrentTest; }
   void test_case_exception(const doctest::TestCaseException&) override {}
   void subcase_start(const doctest::SubcaseSignature&) override {}
   void subcase_end() override {}
@@ -89,7 +92,11 @@ int main(int argc, char** argv) {
   if (context.shouldExit() || !has_exact) return result;
 
   const std::vector<std::string>& started = started_cases();
-  if (started.size() == 1 && started[0] == exact) return result;
+  if (started.size() == 1 && started[0] == exact) {
+    if (g_assertions > 0) return result;
+    std::fprintf(stderr, "--exact-test-case: the test case \"%s\" made no assertion\n", exact.c_str());
+    return 1;
+  }
   std::fprintf(stderr, "--exact-test-case: expected the one test case \"%s\" to run; %zu ran%s\n", exact.c_str(),
                started.size(), started.empty() ? " (no case has that name)" : ":");
   for (const std::string& name : started) std::fprintf(stderr, "  \"%s\"\n", name.c_str());
