@@ -1,6 +1,6 @@
 /*
- * navlink-c-api-test, part three: links (generation, the link store, JSON), through the C ABI only,
- * in strict C11. The checks are counted with the rest (c_api_test.h).
+ * Links (navlink.h): generation, manual links, the link store, ids, lists, JSON and settings,
+ * cancelling, updates in a box, through the C ABI only, in strict C11.
  *
  * Levels are boxes registered with nl_mesh_add; navmeshes are built from them by the built-in Recast
  * builder with its defaults (agent radius 0.6, height 2, climb 0.9). Two levels give exact answers:
@@ -18,8 +18,8 @@
 /* pthread_equal and the readers' threads; strict C11 otherwise. */
 #define _POSIX_C_SOURCE 200809L
 
-#include "c_api_scene.h"
-#include "c_api_test.h"
+#include "abi_test.h"
+#include "scene.h"
 
 #include <math.h>
 #include <pthread.h>
@@ -28,15 +28,13 @@
 #include <stdlib.h>
 #include <string.h>
 
-void test_links_all(void);
-
 /* ---------------------------------------------------------------------------------------------
  * Levels and helpers
  * ------------------------------------------------------------------------------------------- */
 
 enum { LEVEL_GAP, LEVEL_LEDGE, LEVEL_WIDE_GAP, LEVEL_WALLED_GAP };
 
-/* A box from (x0, y0, z0) to (x1, y1, z1) (c_api_scene.h). */
+/* A box from (x0, y0, z0) to (x1, y1, z1) (scene.h). */
 static nl_status add_box_id(nl_world* world, float x0, float y0, float z0, float x1, float y1, float z1,
                             nl_mesh_id* out_id) {
     const float lo[3] = {x0, y0, z0}, hi[3] = {x1, y1, z1};
@@ -164,11 +162,10 @@ static nl_link_def manual_def(void) {
  * Defaults
  * ------------------------------------------------------------------------------------------- */
 
-static void test_link_defaults(void) {
+static void defaults(void) {
     const nl_link_def def = nl_default_link_def();
     const nl_link_settings s = nl_default_link_settings();
     uint32_t i;
-    g_section = "links: defaults";
 
     CHECK(def.size == sizeof(nl_link_def));
     CHECK(def.kind == NL_LINK_MANUAL);
@@ -275,7 +272,7 @@ static void check_report(const nl_link_generation_report* r, uint32_t listed_gen
               "%s: stage times are negative or add up to more than the total", label);
 }
 
-static void test_link_generation_gap(void) {
+static void generation_gap(void) {
     nl_world* world = make_world(2);
     const nl_navmesh_id navmesh = build_level(world, LEVEL_GAP);
     nl_link_generation_report report = empty_report();
@@ -285,7 +282,6 @@ static void test_link_generation_gap(void) {
     int wrong_kind = 0, wrong_flags = 0, wrong_ends = 0, wrong_gap = 0, wrong_height = 0, narrow = 0, bad_apex = 0,
         bad_polygon = 0, get_differs = 0, renewed = 1;
     float min_z = 1e9f, max_z = -1e9f;
-    g_section = "links: jumps across a gap";
 
     CHECK(link_count(world, navmesh) == 0u);
     CHECK_OK(nl_navmesh_generate_links(world, navmesh, NULL, record_progress, &log, &report));
@@ -420,14 +416,13 @@ static void test_link_generation_gap(void) {
  * Generation: drops off a ledge
  * ------------------------------------------------------------------------------------------- */
 
-static void test_link_generation_ledge(void) {
+static void generation_ledge(void) {
     nl_world* world = make_world(2);
     const nl_navmesh_id navmesh = build_level(world, LEVEL_LEDGE);
     nl_link_generation_report report = empty_report();
     nl_link* links;
     uint32_t n = 0, i;
     int wrong_kind = 0, wrong_way = 0, wrong_drop = 0, wrong_ends = 0, bad_apex = 0;
-    g_section = "links: drops off a ledge";
 
     CHECK_OK(nl_navmesh_generate_links(world, navmesh, NULL, NULL, NULL, &report));
     links = list_links(world, navmesh, &n);
@@ -500,7 +495,7 @@ static void test_link_generation_ledge(void) {
  * Manual links: add, get, keep across regeneration, update, remove
  * ------------------------------------------------------------------------------------------- */
 
-static void test_manual_links(void) {
+static void manual(void) {
     nl_world* world = make_world(1);
     const nl_navmesh_id navmesh = build_level(world, LEVEL_GAP);
     const uint32_t polygons = polygon_count(world, navmesh);
@@ -510,7 +505,6 @@ static void test_manual_links(void) {
     nl_link* links;
     nl_link_generation_report report = empty_report();
     uint32_t n = 0, generated = 0, removed = 0xdeadbeefu, i;
-    g_section = "links: manual";
 
     CHECK_OK(nl_navmesh_generate_links(world, navmesh, NULL, NULL, NULL, &report));
     generated = report.jump_links + report.drop_links;
@@ -671,7 +665,7 @@ static void check_def_refused(nl_world* world, nl_navmesh_id navmesh, nl_link_id
     free(after);
 }
 
-static void test_link_refusals(void) {
+static void refusals(void) {
     nl_world* world = make_world(1);
     const nl_navmesh_id navmesh = build_level(world, LEVEL_GAP);
     const nl_link_def good = manual_def();
@@ -680,7 +674,6 @@ static void test_link_refusals(void) {
     nl_link got = nl_link_init();
     nl_link* before;
     uint32_t n0 = 0, count = 0xdeadbeefu;
-    g_section = "links: refusals";
 
     CHECK_OK(nl_navmesh_generate_links(world, navmesh, NULL, NULL, NULL, NULL));
     CHECK_OK(nl_link_add(world, navmesh, &good, &id));
@@ -850,13 +843,12 @@ static void check_stale_everywhere(nl_world* world, nl_link_id id, const char* w
 
 /* A slot reused 2^20 times used to wrap its generation: the first id of the slot came back to life and
    nl_link_remove on it removed whichever link then held the slot. */
-static void test_link_ids_never_come_back(void) {
+static void ids_never_come_back(void) {
     nl_world* world = make_world(1);
     const nl_navmesh_id navmesh = build_level(world, LEVEL_GAP);
     const nl_link_def def = manual_def();
     nl_link_id first = {0u, 0u}, live = {0u, 0u}, id = {0u, 0u};
     uint32_t i, same_slot = 0, came_back = 0;
-    g_section = "links: ids never come back";
 
     CHECK_OK(nl_link_add(world, navmesh, &def, &first));
     CHECK_OK(nl_link_remove(world, first));
@@ -877,7 +869,7 @@ static void test_link_ids_never_come_back(void) {
     nl_world_destroy(world);
 }
 
-static void test_link_ids(void) {
+static void ids(void) {
     nl_world* world = make_world(1);
     nl_world* other = make_world(1);
     const nl_navmesh_id navmesh = build_level(world, LEVEL_GAP);
@@ -887,7 +879,6 @@ static void test_link_ids(void) {
     nl_link_id manual = {0u, 0u}, theirs = {0u, 0u};
     nl_link* first;
     uint32_t n = 0, i, count = 0;
-    g_section = "links: ids";
 
     check_stale_everywhere(world, null_id, "the null id");
     CHECK_OK(nl_navmesh_generate_links(world, navmesh, NULL, NULL, NULL, NULL));
@@ -929,13 +920,12 @@ static void test_link_ids(void) {
  * Lists: the two-call pattern
  * ------------------------------------------------------------------------------------------- */
 
-static void test_link_lists(void) {
+static void lists(void) {
     nl_world* world = make_world(1);
     const nl_navmesh_id navmesh = build_level(world, LEVEL_GAP);
     nl_link* buffer;
     nl_link* listed;
     uint32_t n = 0, count = 0xdeadbeefu;
-    g_section = "links: lists";
 
     /* No links yet: a count of 0, with or without a buffer. */
     CHECK_OK(nl_navmesh_get_links(world, navmesh, NULL, 0, &count));
@@ -1015,7 +1005,7 @@ static void check_load_refused(nl_world* world, nl_navmesh_id navmesh, const cha
 
 #define LINKS_HEAD "{\"format\": \"navlink-links\", \"version\": 1, \"links\": "
 
-static void test_link_json(void) {
+static void json(void) {
     nl_world* world = make_world(1);
     const nl_navmesh_id navmesh = build_level(world, LEVEL_GAP);
     nl_link_def def = manual_def(), plugin_def = nl_default_link_def();
@@ -1025,7 +1015,6 @@ static void test_link_json(void) {
     size_t length = 0, n = 0;
     char* text;
     char* buffer;
-    g_section = "links: JSON";
 
     CHECK_OK(nl_navmesh_generate_links(world, navmesh, NULL, NULL, NULL, NULL));
     CHECK_OK(nl_link_add(world, navmesh, &def, &manual));
@@ -1211,11 +1200,10 @@ static void check_settings_refused(const char* json, nl_status detail, const cha
     CHECK_MSG(same_settings(&s, &copy), "settings changed by a refused JSON (%s)", json);
 }
 
-static void test_link_settings_json(void) {
+static void settings_json(void) {
     static const char good[] =
         "{\"max_jump_gap\": 6, \"min_group_size\": 3, \"drop_angles\": [0, 45], \"jump_arc_height\": 1.5}";
     nl_link_settings s = nl_default_link_settings(), expected;
-    g_section = "links: settings JSON";
 
     s.merge_distance = 0.9f;
     expected = s;
@@ -1309,12 +1297,11 @@ static int32_t generate_from_progress(void* user, float fraction, const char* st
     return 1;
 }
 
-static void test_link_nested_generation_refused(void) {
+static void nested_generation_refused(void) {
     nl_world* world = make_world(2);
     const nl_navmesh_id navmesh = build_level(world, LEVEL_LEDGE);
     const nl_navmesh_build_def build = nl_default_navmesh_build_def();
     nested_generation n;
-    g_section = "links: a generation from a progress callback";
     memset(&n, 0, sizeof n);
     n.world = world;
     CHECK_OK(nl_navmesh_build(world, &build, &n.other));
@@ -1329,14 +1316,13 @@ static void test_link_nested_generation_refused(void) {
     nl_world_destroy(world);
 }
 
-static void test_link_cancel(void) {
+static void cancel(void) {
     static const char* const stages[] = {"edges", "take-off points", "jumps", "drops", "merge"};
     nl_world* world = make_world(2);
     const nl_navmesh_id navmesh = build_level(world, LEVEL_LEDGE);
     nl_link* before;
     uint32_t n0 = 0, i;
     size_t k;
-    g_section = "links: cancel";
 
     CHECK_OK(nl_navmesh_generate_links(world, navmesh, NULL, NULL, NULL, NULL));
     before = list_links(world, navmesh, &n0);
@@ -1377,7 +1363,7 @@ static void test_link_cancel(void) {
  * Incremental regeneration: nl_navmesh_update_links_in_box
  * ------------------------------------------------------------------------------------------- */
 
-static void test_link_update_in_box(void) {
+static void update_in_box(void) {
     nl_world* world = make_world(2);
     const nl_navmesh_id navmesh = build_level(world, LEVEL_GAP);
     const float wall_min[3] = {-0.1f, -20.0f, -6.0f}, wall_max[3] = {0.1f, 6.0f, 6.0f};
@@ -1389,7 +1375,6 @@ static void test_link_update_in_box(void) {
     progress_log log = new_progress_log();
     nl_link *original, *now, *after;
     uint32_t n_original = 0, n_now = 0, n_after = 0, i;
-    g_section = "links: update in a box";
 
     /* Never generated: nothing to update. */
     CHECK_FAIL(nl_navmesh_update_links_in_box(world, navmesh, wall_min, wall_max, NULL, NULL, NULL),
@@ -1492,12 +1477,11 @@ static int remove_navmesh_late(void* user, float fraction, const char* stage) {
     return 1;
 }
 
-static void test_link_navmesh_removed_during_generation(void) {
+static void navmesh_removed_during_generation(void) {
     nl_world* world = make_world(1);
     remove_during_generation job;
     nl_link* old;
     uint32_t n = 0, i, live = 0;
-    g_section = "links: navmesh removed during a generation";
 
     job.world = world;
     job.navmesh = build_level(world, LEVEL_GAP);
@@ -1579,7 +1563,7 @@ static void* reader_thread(void* arg) {
     return NULL;
 }
 
-static void test_link_threads(void) {
+static void threads(void) {
     nl_world* world = make_world(2);
     const nl_navmesh_id navmesh = build_level(world, LEVEL_LEDGE);
     nl_link_settings settings[GENERATIONS];
@@ -1590,7 +1574,6 @@ static void test_link_threads(void) {
     nl_link_def manual = nl_default_link_def();
     nl_link_id manual_id = {0u, 0u};
     int g, i, regenerations_ok = 1, distinct;
-    g_section = "links: threads";
     atomic_init(&stop, 0);
     if (!CHECK(jobs != NULL)) {
         nl_world_destroy(world);
@@ -1648,24 +1631,7 @@ static void test_link_threads(void) {
     nl_world_destroy(world);
 }
 
-/* ---------------------------------------------------------------------------------------------
- * Entry point
- * ------------------------------------------------------------------------------------------- */
-
-void test_links_all(void) {
-    test_link_defaults();
-    test_link_generation_gap();
-    test_link_generation_ledge();
-    test_manual_links();
-    test_link_refusals();
-    test_link_ids();
-    test_link_ids_never_come_back();
-    test_link_lists();
-    test_link_json();
-    test_link_settings_json();
-    test_link_cancel();
-    test_link_nested_generation_refused();
-    test_link_update_in_box();
-    test_link_navmesh_removed_during_generation();
-    test_link_threads();
-}
+ABI_SECTION(links, ABI_CASE(defaults), ABI_CASE(generation_gap), ABI_CASE(generation_ledge), ABI_CASE(manual),
+            ABI_CASE(refusals), ABI_CASE(ids), ABI_CASE(ids_never_come_back), ABI_CASE(lists), ABI_CASE(json),
+            ABI_CASE(settings_json), ABI_CASE(cancel), ABI_CASE(nested_generation_refused), ABI_CASE(update_in_box),
+            ABI_CASE(navmesh_removed_during_generation), ABI_CASE(threads));

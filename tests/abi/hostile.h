@@ -1,12 +1,12 @@
 /*
- * navlink-c-api-hostile-test: every public nl_* function called with bad input (c_api_hostile_test.c
- * has the cases), run group by group in child processes (c_api_hostile_runner.c), and held against
+ * navlink-abi-hostile-test: every public nl_* function called with bad input (hostile_test.c
+ * has the cases), run group by group in child processes (hostile_runner.c), and held against
  * the public headers: each function, and each of its parameters, needs the hostile cases its type
- * calls for (c_api_hostile_coverage.c derives them from the declarations). Strict C11 through the C
+ * calls for (hostile_coverage.c derives them from the declarations). Strict C11 through the C
  * ABI only.
  */
-#ifndef NAVLINK_C_API_HOSTILE_H
-#define NAVLINK_C_API_HOSTILE_H
+#ifndef NAVLINK_ABI_HOSTILE_H
+#define NAVLINK_ABI_HOSTILE_H
 
 #include <navlink/navlink.h>
 
@@ -99,7 +99,7 @@ int run_groups(const hostile_group* groups, size_t count, const hostile_fixture*
                size_t* out_case_count);
 
 /* ---------------------------------------------------------------------------------------------
- * Coverage (c_api_hostile_coverage.c)
+ * Coverage (hostile_coverage.c)
  * ------------------------------------------------------------------------------------------- */
 
 /* A requirement that does not apply, with the reason (printed with the summary). */
@@ -117,4 +117,4 @@ typedef struct coverage_exemption {
 int check_coverage(const char* const* header_dirs, size_t dir_count, const case_record* cases, size_t case_count,
                    const coverage_exemption* exemptions, size_t exemption_count);
 
-#endif /* NAVLINK_C_API_HOSTILE_H */
+#endif /* NAVLINK_ABI_HOSTILE_H */

@@ -1,5 +1,5 @@
-/* The builders of c_api_scene.h. */
-#include "c_api_scene.h"
+/* The builders of scene.h. */
+#include "scene.h"
 
 nl_mesh_def mesh_def_of(const float* vertices, uint32_t vertex_count, const uint32_t* indices, uint32_t triangle_count) {
     nl_mesh_def def = nl_default_mesh_def();

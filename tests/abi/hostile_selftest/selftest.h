@@ -1,6 +1,6 @@
 /*
- * Not a NavLink header. A declaration navlink-c-api-hostile-test has no case for, read with the
- * public headers by the ctest c_api_hostile_coverage_selftest: the coverage check must name the
+ * Not a NavLink header. A declaration navlink-abi-hostile-test has no case for, read with the
+ * public headers by the ctest abi_hostile_coverage_selftest: the coverage check must name the
  * function, and each case its parameters and fields call for, as missing.
  */
 typedef struct nl_hostile_selftest_def {

@@ -1,9 +1,9 @@
 /*
- * Small builders of defs and levels that the C API test programs share (navlink-c-api-test and
- * navlink-c-api-hostile-test). Strict C11 through the C ABI only.
+ * Small builders of defs and levels that the ABI test programs share (navlink-abi-tests and
+ * navlink-abi-hostile-test). Strict C11 through the C ABI only.
  */
-#ifndef NAVLINK_C_API_SCENE_H
-#define NAVLINK_C_API_SCENE_H
+#ifndef NAVLINK_ABI_SCENE_H
+#define NAVLINK_ABI_SCENE_H
 
 #include <navlink/navlink.h>
 
@@ -22,4 +22,4 @@ void set_navmesh_detail(nl_navmesh_def* def, const float* vertices, uint32_t ver
    and 12 triangles facing out. */
 nl_status add_box_mesh(nl_world* world, const float lo[3], const float hi[3], uint32_t flags, nl_mesh_id* out_id);
 
-#endif /* NAVLINK_C_API_SCENE_H */
+#endif /* NAVLINK_ABI_SCENE_H */

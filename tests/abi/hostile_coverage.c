@@ -1,5 +1,5 @@
 /*
- * The coverage check of navlink-c-api-hostile-test: reads the public headers, derives the hostile
+ * The coverage check of navlink-abi-hostile-test: reads the public headers, derives the hostile
  * cases each NL_API function needs from its declaration, and reports every one the test did not run.
  * A function added to a header, or a parameter or def field added to one, without its cases fails
  * the test. The headers are read as text: comments and preprocessor lines are dropped, then the
@@ -8,7 +8,7 @@
 /* opendir() and readdir() read the header folders; strict C11 otherwise. */
 #define _POSIX_C_SOURCE 200809L
 
-#include "c_api_hostile.h"
+#include "hostile.h"
 
 #include <ctype.h>
 #include <dirent.h>

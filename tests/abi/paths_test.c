@@ -1,6 +1,5 @@
 /*
- * navlink-c-api-test, part four: paths (nl_path_*), synchronous and queued, through the C ABI only, in
- * strict C11. The checks are counted with the rest (c_api_test.h).
+ * Paths (navlink.h): nl_path_*, synchronous and queued, through the C ABI only, in strict C11.
  *
  * Navmeshes are drawn as cell maps and handed over as a host would (nl_navmesh_add): row r of a map
  * is z in [r, r + 1], column c is x in [c, c + 1], every cell a 1 x 1 m square at y = 0; '.' is area
@@ -18,7 +17,7 @@
 /* pthread_self, pthread_equal, nanosleep and the cancelling thread; strict C11 otherwise. */
 #define _POSIX_C_SOURCE 200809L
 
-#include "c_api_test.h"
+#include "abi_test.h"
 
 #include <math.h>
 #include <pthread.h>
@@ -37,7 +36,7 @@
 
 static const char* const k_islands[] = {"...#...#..."};
 
-static pthread_t g_main_thread;
+static pthread_t g_main_thread; /* the thread a case runs on: set by the cases that compare with it */
 
 static void set3(float* p, float x, float y, float z) {
     p[0] = x;
@@ -230,11 +229,10 @@ static void record_call(void* user, nl_path_ticket ticket, nl_path_outcome outco
  * Defaults
  * ------------------------------------------------------------------------------------------- */
 
-static void test_path_defaults(void) {
+static void defaults(void) {
     const nl_agent_capabilities a = nl_default_agent_capabilities();
     const nl_path_request_def d = nl_default_path_request_def();
     const nl_world_def w = nl_default_world_def();
-    g_section = "paths: defaults";
 
     CHECK(a.max_jump_distance == 0.0f && a.max_jump_height == 0.0f && a.max_drop_height == 0.0f);
     CHECK(a.radius == 0.6f);
@@ -276,12 +274,11 @@ static void test_path_defaults(void) {
  * nl_path_find: outcomes, segments, links
  * ------------------------------------------------------------------------------------------- */
 
-static void test_path_find(void) {
+static void find_synchronous(void) {
     islands s = make_islands(0);
     nl_path_request_def def;
     nl_link jump_link = nl_link_init();
     path p;
-    g_section = "paths: nl_path_find";
     CHECK_OK(nl_link_get(s.world, s.jump, &jump_link));
 
     /* A walker cannot cross: the path leads to the reachable point nearest to the goal. */
@@ -435,7 +432,7 @@ static void test_path_find(void) {
 }
 
 /* Area costs, NL_AREA_EXCLUDED, max_nodes and the body's radius on small maps. */
-static void test_path_costs_and_radius(void) {
+static void costs_and_radius(void) {
     static const char* const k_mud[] = {"..1.."};
     static const char* const k_long[] = {"................"};
     nl_world* world = path_world(0);
@@ -444,7 +441,6 @@ static void test_path_costs_and_radius(void) {
     nl_path_request_def def = request(mud, 0.5f, 0.5f, 4.5f, 0.5f);
     float costs[2] = {1.0f, 3.0f};
     path p;
-    g_section = "paths: costs, max_nodes, radius";
 
     p = find(world, &def);
     CHECK(p.result.outcome == NL_PATH_COMPLETE);
@@ -534,7 +530,7 @@ static void check_refused_at(nl_world* world, const nl_path_request_def* def, nl
 }
 #define CHECK_REFUSED(world, def, detail, needle) check_refused_at((world), (def), (detail), (needle), __LINE__)
 
-static void test_path_bad_input(void) {
+static void bad_input(void) {
     islands s = make_islands(0);
     nl_world* other = path_world(0);
     nl_navmesh_id foreign = add_cells(other, k_islands, 1, 0.0f);
@@ -549,7 +545,6 @@ static void test_path_bad_input(void) {
     uint32_t count = 0xdeadbeefu, processed = 0xdeadbeefu;
     float costs[300];
     size_t i;
-    g_section = "paths: bad input";
     for (i = 0; i < 300; ++i) costs[i] = 1.0f;
     memset(&result, 0, sizeof result);
     result.size = sizeof result;
@@ -739,7 +734,7 @@ static int same_result(const nl_path_result* a, const nl_path_point* pa, uint32_
            (na == 0 || memcmp(pa, pb, na * sizeof *pa) == 0);
 }
 
-static void test_path_queue_manual(void) {
+static void queue_manual(void) {
     enum { N = 6 };
     islands s = make_islands(0);
     nl_path_request_def defs[N];
@@ -752,8 +747,8 @@ static void test_path_queue_manual(void) {
     uint32_t count, processed;
     nl_status status;
     int i;
-    g_section = "paths: queue, path_worker_count 0";
     memset(logs, 0, sizeof logs);
+    g_main_thread = pthread_self();
     memset(&follow_up_log, 0, sizeof follow_up_log);
 
     for (i = 0; i < N; ++i) {
@@ -930,7 +925,7 @@ static void test_path_queue_manual(void) {
 }
 
 /* A request reads the navmesh and its links as they were when it was made. */
-static void test_path_snapshots(void) {
+static void snapshots(void) {
     islands s = make_islands(0);
     const nl_path_request_def def = jumper(s.navmesh, 0.5f, 5.5f);
     nl_path_ticket before = {0u, 0u}, after = {0u, 0u}, orphan = {0u, 0u};
@@ -938,7 +933,6 @@ static void test_path_snapshots(void) {
     nl_path_point points[MAX_POINTS];
     points[0] = nl_path_point_init();
     uint32_t count = 0, processed = 0;
-    g_section = "paths: snapshots";
 
     CHECK_OK(nl_path_request(s.world, &def, &before));
     CHECK_OK(nl_link_remove(s.world, s.jump));
@@ -1031,7 +1025,7 @@ static nl_path_request_def variant(const islands* s, int v) {
     return def;
 }
 
-static void test_path_queue_workers(void) {
+static void queue_workers(void) {
     islands s = make_islands(2);
     nl_path_request_def defs[VARIANTS];
     path expected[VARIANTS];
@@ -1039,11 +1033,11 @@ static void test_path_queue_workers(void) {
     nl_path_queue_stats st;
     int i, refused = 0, waited_ms = 0, wrong_calls = 0, wrong_ticket = 0, wrong_outcome = 0, wrong_result = 0,
            on_main = 0, wrong_callback_read = 0, released_in_callback = 0;
-    g_section = "paths: queue, 2 workers";
     if (!tickets) {
         CHECK_MSG(0, "out of memory");
         return;
     }
+    g_main_thread = pthread_self();
     memset(&g_many, 0, sizeof g_many);
     g_many.world = s.world;
     atomic_init(&g_many.completions, 0);
@@ -1148,17 +1142,5 @@ static void test_path_queue_workers(void) {
     free(tickets);
 }
 
-/* ---------------------------------------------------------------------------------------------
- * Entry
- * ------------------------------------------------------------------------------------------- */
-
-void test_paths_all(void) {
-    g_main_thread = pthread_self();
-    test_path_defaults();
-    test_path_find();
-    test_path_costs_and_radius();
-    test_path_bad_input();
-    test_path_queue_manual();
-    test_path_snapshots();
-    test_path_queue_workers();
-}
+ABI_SECTION(paths, ABI_CASE(defaults), ABI_CASE(find_synchronous), ABI_CASE(costs_and_radius), ABI_CASE(bad_input),
+            ABI_CASE(queue_manual), ABI_CASE(snapshots), ABI_CASE(queue_workers));

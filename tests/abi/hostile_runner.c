@@ -1,5 +1,5 @@
 /*
- * The runner and the checks of navlink-c-api-hostile-test. Each group runs in a forked child, which
+ * The runner and the checks of navlink-abi-hostile-test. Each group runs in a forked child, which
  * reports every case over a pipe as it goes, one line per event:
  *   C <tab> function <tab> description   a case starts
  *   F <tab> text                          a check of it failed
@@ -11,7 +11,7 @@
 /* fork(), pipe(), waitpid() and alarm(); strict C11 otherwise. */
 #define _POSIX_C_SOURCE 200809L
 
-#include "c_api_hostile.h"
+#include "hostile.h"
 
 #include <errno.h>
 #include <signal.h>

@@ -1,5 +1,5 @@
 /*
- * navlink-c-api-hostile-test: every public nl_* function called with bad input, through the C ABI
+ * navlink-abi-hostile-test: every public nl_* function called with bad input, through the C ABI
  * only, in strict C11. For each call it checks what the header promises of a failure:
  *
  * - the status is exactly FAILURE with the documented detail bit (INVALID_ARGUMENT, INVALID_HANDLE,
@@ -21,14 +21,14 @@
  * the library's struct; NaN and infinities in every float input.
  *
  * Two worlds, A (under test) and B (foreign), are built the same way in each child process (see
- * build_world). Each group runs in its own child (c_api_hostile_runner.c), so a crash names its
- * case. At the end, the coverage check (c_api_hostile_coverage.c) reads the public headers and fails
+ * build_world). Each group runs in its own child (hostile_runner.c), so a crash names its
+ * case. At the end, the coverage check (hostile_coverage.c) reads the public headers and fails
  * for any NL_API function, parameter or input field without its cases.
  *
  * A defect that needs a core fix is listed in k_known_failures: its case prints "KNOWN FAILURE" and
  * does not fail the run, and fails it once it passes (so the list stays true).
  *
- * Usage: navlink-c-api-hostile-test --headers DIR... [--library LIBNAVLINK] [--plugin CLIMB_PLUGIN]
+ * Usage: navlink-abi-hostile-test --headers DIR... [--library LIBNAVLINK] [--plugin CLIMB_PLUGIN]
  *                                   [--only GROUP]
  */
 /* Built with a sanitizer (GCC says so with __SANITIZE_*__, clang with __has_feature). */
@@ -43,8 +43,8 @@
 /* fork() (in the runner), pthreads, mkdtemp(), strict C11 otherwise. */
 #define _POSIX_C_SOURCE 200809L
 
-#include "c_api_hostile.h"
-#include "c_api_scene.h"
+#include "hostile.h"
+#include "scene.h"
 
 #include <navlink/plugin.h>
 #include <navlink/recast.h>
