@@ -76,7 +76,6 @@ namespace NavLink
     {
         public const uint NavmeshBuilder = 0x1u;
         public const uint LinkKind = 0x2u;
-        public const uint PathModifier = 0x4u;
         public const uint AbiVersion = 1u;
         public const string EntrySymbol = "nl_plugin_entry";
     }
