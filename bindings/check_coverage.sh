@@ -9,6 +9,10 @@
 # outside navlink-sys's `extern "C"` blocks, Python `def nl_*():` at module level. Their behaviour (the
 # `size` they set) is each binding's layout test's job.
 #
+# Constants: each binding's layout test requires every integer #define of the headers with its value. A
+# constant the headers no longer define is caught by the C# and Python tests too; navlink-sys's `pub const
+# NL_*` are checked here, as names of the headers' #defines.
+#
 # Usage: check_coverage.sh LIBNAVLINK_SO [SOURCE_ROOT]   (SOURCE_ROOT defaults to this script's ../)
 # Environment: NM (default nm).
 set -euo pipefail
@@ -46,6 +50,12 @@ grep -ho '^    "nl_[a-z0-9_]*": (' "$root"/bindings/python/navlink.py | sed -E '
   sort -u > "$tmp/python"
 { grep -ho '^def nl_[a-z0-9_]*(' "$root"/bindings/python/navlink.py || true; } | sed -E 's/^def (nl_[a-z0-9_]+)\(/\1/' |
   sort -u > "$tmp/python.inline"
+
+# Object-like #define NL_* of the headers (version.h from its template), and navlink-sys's constants.
+cat "$root"/capi/include/navlink/*.h "$root"/capi/include/navlink/version.h.in "$root"/plugins/include/navlink/*.h |
+  sed -nE 's/^#[[:space:]]*define[[:space:]]+(NL_[A-Z0-9_]+)([[:space:]].*)?$/\1/p' | sort -u > "$tmp/defines"
+{ grep -hoE '^pub const NL_[A-Z0-9_]+' "$root"/bindings/rust/navlink-sys/src/*.rs || true; } | awk '{ print $3 }' |
+  sort -u > "$tmp/rust.constants"
 
 echo "libnavlink.so exports $(wc -l < "$tmp/exported") nl_* symbols; the headers declare $(wc -l < "$tmp/declared")" \
      "and define $(wc -l < "$tmp/inline") inline initialisers"
@@ -85,4 +95,12 @@ for binding in csharp rust python; do
   fi
   [ -n "$missing$unknown" ] || echo "ok   $binding defines all $(wc -l < "$tmp/inline") inline initialisers"
 done
+unknown=$(comm -13 "$tmp/defines" "$tmp/rust.constants")
+if [ -n "$unknown" ]; then
+  echo "FAIL rust (navlink-sys) defines constants the headers do not:"
+  echo "$unknown" | sed 's/^/  /'
+  failed=1
+else
+  echo "ok   rust's $(wc -l < "$tmp/rust.constants") constants are all the headers' ($(wc -l < "$tmp/defines") defined)"
+fi
 exit $failed

@@ -15,7 +15,8 @@ namespace NavLink.Tests
             check.Run("version and statuses", () =>
             {
                 NavLinkVersion v = World.LibraryVersion;
-                check.That(v.Major == 0 && v.Minor >= 1, "library version " + v + " is 0.x with x >= 1");
+                check.That(v.Major == HeaderVersion.Major && v.Minor == HeaderVersion.Minor && v.Patch == HeaderVersion.Patch,
+                           "library version " + v + " is the header version the binding was written from");
                 check.That(Status.Describe(StatusBits.Failure | StatusBits.InvalidHandle).Contains("invalid handle"),
                            "nl_status_string names the detail: " + Status.Describe(StatusBits.Failure | StatusBits.InvalidHandle));
             });
