@@ -7,6 +7,9 @@ binding's layout test compares its own structs with. Output, one item per line:
 
     struct <name> <size> <align>
     field <struct> <field> <offset> <size>
+    init <struct> <function> <size>      (NL_DEFINE_OUTPUT_INIT: a static inline initialiser, not exported;
+                                          <size> is the `size` it sets, from calling it)
+    const <name> <value>                 (each `#define NL_... <integer>`, value in decimal)
 
 Usage: c_layout.py -I DIR [-I DIR ...] [-o FILE]   (DIRs: capi/include, plugins/include and the build's
 capi/include with the generated navlink/version.h)
@@ -19,6 +22,8 @@ import sys
 import tempfile
 
 HEADERS = ["navlink/navlink.h", "navlink/recast.h", "navlink/plugin.h"]
+# Constants only: the generated version header (NL_VERSION_MAJOR...).
+CONSTANT_HEADERS = ["navlink/version.h"]
 
 
 def strip_comments(text):
@@ -50,6 +55,23 @@ def parse_structs(text):
     return structs
 
 
+def parse_output_inits(text):
+    """[(struct name, function name)] of every NL_DEFINE_OUTPUT_INIT(T, name) use, in order."""
+    text = strip_comments(text)
+    return [(m.group(1), m.group(2)) for m in re.finditer(r"^\s*NL_DEFINE_OUTPUT_INIT\(\s*(\w+)\s*,\s*(\w+)\s*\)",
+                                                          text, flags=re.M)]
+
+
+def parse_integer_constants(text):
+    """Names of `#define NL_NAME <integer>` (maybe negative, suffixed u, parenthesised), in order."""
+    names = []
+    for line in strip_comments(text).splitlines():
+        m = re.match(r"^\s*#\s*define\s+(NL_\w+)\s+\(?-?(0x[0-9a-fA-F]+|[0-9]+)u?\)?\s*$", line)
+        if m:
+            names.append(m.group(1))
+    return names
+
+
 def find_header(include_dirs, header):
     for d in include_dirs:
         path = os.path.join(d, header)
@@ -58,28 +80,40 @@ def find_header(include_dirs, header):
     raise SystemExit("c_layout.py: %s is in none of %s" % (header, include_dirs))
 
 
-def probe_program(structs):
-    lines = ["#include <%s>" % h for h in HEADERS]
+def probe_program(structs, inits=(), constants=()):
+    lines = ["#include <%s>" % h for h in CONSTANT_HEADERS + HEADERS]
     lines += ["#include <stddef.h>", "#include <stdio.h>", "int main(void) {"]
     for name, fields in structs:
         lines.append('    printf("struct %s %%zu %%zu\\n", sizeof(%s), _Alignof(%s));' % (name, name, name))
         for f in fields:
             lines.append('    printf("field %s %s %%zu %%zu\\n", offsetof(%s, %s), sizeof(((%s*)0)->%s));'
                          % (name, f, name, f, name, f))
+    for struct, function in inits:
+        lines.append('    printf("init %s %s %%u\\n", (unsigned)%s().size);' % (struct, function, function))
+    for name in constants:
+        lines.append('    printf("const %s %%lld\\n", (long long)(%s));' % (name, name))
     lines += ["    return 0;", "}"]
     return "\n".join(lines) + "\n"
 
 
 def layout_lines(include_dirs, compiler="cc"):
-    structs = []
-    for header in HEADERS:
+    structs, inits, constants = [], [], []
+    for header in CONSTANT_HEADERS + HEADERS:
         with open(find_header(include_dirs, header), encoding="utf-8") as f:
-            structs += parse_structs(f.read())
+            text = f.read()
+        if header in HEADERS:
+            structs += parse_structs(text)
+            inits += parse_output_inits(text)
+        constants += parse_integer_constants(text)
+    known = {name for name, _ in structs}
+    for struct, function in inits:
+        if struct not in known:
+            raise SystemExit("c_layout.py: %s initialises %s, which is no struct of the headers" % (function, struct))
     with tempfile.TemporaryDirectory() as tmp:
         source = os.path.join(tmp, "layout.c")
         exe = os.path.join(tmp, "layout")
         with open(source, "w", encoding="utf-8") as f:
-            f.write(probe_program(structs))
+            f.write(probe_program(structs, inits, constants))
         command = [compiler, "-std=c11", "-Wall", "-Werror", source, "-o", exe] + ["-I" + d for d in include_dirs]
         subprocess.run(command, check=True)
         return subprocess.run([exe], check=True, capture_output=True, text=True).stdout

@@ -3,7 +3,10 @@
 Two layers:
 - ``lib``: the C ABI as is. Every ``nl_*`` function of navlink.h, recast.h and plugin.h with its prototype,
   and a ctypes.Structure per C struct (class ``MeshDef`` for ``nl_mesh_def``..., fields under their C
-  names; ``C_STRUCTS`` maps C names to classes).
+  names; ``C_STRUCTS`` maps C names to classes). Output structs that may grow start with ``size``: a new
+  one (``Link()``...) has it set, as the header's inline ``nl_*_init()`` does (also defined here under
+  those names). For an output array of them the library reads the element size from the FIRST element:
+  ``links = (Link * n)(); links[0] = nl_link_init()`` (ctypes arrays are zeroed, not constructed).
 - ``World``: the world as a Python object (a context manager; ``close()`` destroys it). Failures raise
   ``NavLinkError`` with the status and the library's message; lists come back as Python lists; callbacks
   are Python callables.
@@ -12,6 +15,7 @@ The library is found through ``NAVLINK_LIBRARY`` (a path to libnavlink.so), else
 (``LD_LIBRARY_PATH``...). Every World method may be called from several threads (navlink.h); ``close()``
 must not run at the same time as another call on the world.
 """
+import collections
 import ctypes
 import ctypes.util
 import itertools
@@ -23,6 +27,9 @@ from ctypes import (CFUNCTYPE, POINTER, Structure, byref, c_char_p, c_double, c_
 # ---------------------------------------------------------------------------------------------------------
 # Constants (navlink.h, recast.h, plugin.h)
 # ---------------------------------------------------------------------------------------------------------
+
+# The header version this module was written from (navlink/version.h); version() is the loaded library's.
+VERSION_MAJOR, VERSION_MINOR, VERSION_PATCH = 0, 1, 0
 
 STATUS_FAILURE = 0x80000000
 STATUS_SUCCESS = 0x40000000
@@ -52,7 +59,7 @@ LINK_JUMP, LINK_DROP, LINK_MANUAL, LINK_FIRST_PLUGIN_KIND = 1, 2, 3, 256
 AREA_EXCLUDED = 0.0
 (PATH_PENDING, PATH_COMPLETE, PATH_PARTIAL, PATH_NO_PATH, PATH_START_OFF_NAVMESH, PATH_GOAL_OFF_NAVMESH,
  PATH_CANCELLED, PATH_FAILED) = range(8)
-PLUGIN_NAVMESH_BUILDER, PLUGIN_LINK_KIND, PLUGIN_PATH_MODIFIER = 0x1, 0x2, 0x4
+PLUGIN_NAVMESH_BUILDER, PLUGIN_LINK_KIND = 0x1, 0x2
 PLUGIN_ABI_VERSION = 1
 PLUGIN_ENTRY_SYMBOL = "nl_plugin_entry"
 RECAST_PARTITION_WATERSHED, RECAST_PARTITION_MONOTONE, RECAST_PARTITION_LAYERS = 0, 1, 2
@@ -74,6 +81,16 @@ Vec3 = c_float * 3
 
 LogFn = CFUNCTYPE(None, c_void_p, c_uint32, c_uint32, c_char_p)
 ProgressFn = CFUNCTYPE(c_int32, c_void_p, c_float, c_char_p)
+
+
+class _Growable(Structure):
+    """An output struct that may grow (``size`` first). A new one has ``size`` set to this module's
+    sizeof, as the header's nl_*_init() does, unless a size or positional values are given."""
+
+    def __init__(self, *args, **kwargs):
+        super().__init__(*args, **kwargs)
+        if not args and "size" not in kwargs:
+            self.size = sizeof(self)
 
 
 class Version(Structure):
@@ -113,7 +130,7 @@ class MeshDef(Structure):
                 ("flags", c_uint32), ("transform", POINTER(c_float)), ("user_data", c_uint64)]
 
 
-class MeshInfo(Structure):
+class MeshInfo(_Growable):
     _fields_ = [("size", c_uint32), ("vertex_count", c_uint32), ("triangle_count", c_uint32),
                 ("degenerate_triangle_count", c_uint32), ("flags", c_uint32), ("transform", c_float * 16),
                 ("bounds_min", Vec3), ("bounds_max", Vec3), ("user_data", c_uint64)]
@@ -123,8 +140,8 @@ class Ray(Structure):
     _fields_ = [("origin", Vec3), ("direction", Vec3), ("max_distance", c_float)]
 
 
-class RayHit(Structure):
-    _fields_ = [("distance", c_float), ("point", Vec3), ("normal", Vec3), ("mesh", MeshId),
+class RayHit(_Growable):
+    _fields_ = [("size", c_uint32), ("distance", c_float), ("point", Vec3), ("normal", Vec3), ("mesh", MeshId),
                 ("triangle", c_uint32), ("hit", c_uint8), ("reserved", c_uint8 * 3)]
 
 
@@ -150,7 +167,7 @@ class NavmeshDef(Structure):
                 ("detail_triangle_starts", POINTER(c_uint32))]
 
 
-class NavmeshInfo(Structure):
+class NavmeshInfo(_Growable):
     _fields_ = [("size", c_uint32), ("vertex_count", c_uint32), ("polygon_count", c_uint32),
                 ("portal_count", c_uint32), ("boundary_edge_count", c_uint32), ("welded_vertex_count", c_uint32),
                 ("flipped_polygon_count", c_uint32), ("dropped_polygon_count", c_uint32),
@@ -158,8 +175,8 @@ class NavmeshInfo(Structure):
                 ("bounds_max", Vec3)]
 
 
-class NavPolygon(Structure):
-    _fields_ = [("vertex_count", c_uint32), ("vertices", c_uint32 * MAX_POLYGON_VERTICES),
+class NavPolygon(_Growable):
+    _fields_ = [("size", c_uint32), ("vertex_count", c_uint32), ("vertices", c_uint32 * MAX_POLYGON_VERTICES),
                 ("neighbours", c_uint32 * MAX_POLYGON_VERTICES), ("area", c_uint32), ("normal", Vec3),
                 ("centre", Vec3)]
 
@@ -188,17 +205,19 @@ class LinkRequirements(Structure):
                 ("abilities", c_uint64), ("length", c_float), ("reserved", c_uint32)]
 
 
-class Link(Structure):
-    _fields_ = [("id", LinkId), ("navmesh", NavmeshId), ("kind", c_uint32), ("start", Vec3), ("end", Vec3),
-                ("apex", Vec3), ("bidirectional", c_uint8), ("generated", c_uint8), ("enabled", c_uint8),
-                ("reserved", c_uint8), ("cost_modifier", c_float), ("user_data", c_uint64),
-                ("requirements", LinkRequirements), ("start_polygon", c_uint32), ("end_polygon", c_uint32)]
+class Link(_Growable):
+    _fields_ = [("size", c_uint32), ("kind", c_uint32), ("id", LinkId), ("navmesh", NavmeshId), ("start", Vec3),
+                ("end", Vec3), ("apex", Vec3), ("bidirectional", c_uint8), ("generated", c_uint8),
+                ("enabled", c_uint8), ("reserved", c_uint8), ("cost_modifier", c_float), ("start_polygon", c_uint32),
+                ("end_polygon", c_uint32), ("reserved2", c_uint32), ("user_data", c_uint64),
+                ("requirements", LinkRequirements)]
 
 
 class LinkDef(Structure):
     _fields_ = [("size", c_uint32), ("kind", c_uint32), ("start", Vec3), ("end", Vec3),
-                ("bidirectional", c_uint8), ("enabled", c_uint8), ("reserved", c_uint8 * 2),
-                ("cost_modifier", c_float), ("user_data", c_uint64), ("requirements", LinkRequirements)]
+                ("bidirectional", c_uint8), ("enabled", c_uint8), ("requirements_from_ends", c_uint8),
+                ("reserved", c_uint8), ("cost_modifier", c_float), ("user_data", c_uint64),
+                ("requirements", LinkRequirements)]
 
 
 class LinkSettings(Structure):
@@ -214,7 +233,7 @@ class LinkSettings(Structure):
                 ("walk_factor", c_float), ("walk_distance", c_float)]
 
 
-class LinkGenerationReport(Structure):
+class LinkGenerationReport(_Growable):
     _fields_ = [(name, c_uint32) for name in (
         "size", "edges", "groups", "samples", "takeoff_points", "jump_candidates", "drop_candidates",
         "jump_links", "drop_links", "plugin_links", "rejected_wall", "rejected_not_ledge", "rejected_distance",
@@ -248,19 +267,30 @@ class PathRequestDef(Structure):
                 ("user", c_void_p)]
 
 
-class PathPoint(Structure):
-    _fields_ = [("position", Vec3), ("polygon", c_uint32), ("segment", c_uint32), ("link", LinkId),
+class PathPoint(_Growable):
+    _fields_ = [("size", c_uint32), ("position", Vec3), ("polygon", c_uint32), ("segment", c_uint32), ("link", LinkId),
                 ("apex", Vec3), ("reversed", c_uint8), ("reserved", c_uint8 * 3)]
 
 
-class PathResultInfo(Structure):
+class PathResultInfo(_Growable):
     """nl_path_result (PathResult is the Python object that carries the points too)."""
     _fields_ = [("size", c_uint32), ("outcome", c_uint32), ("status", c_uint32), ("point_count", c_uint32),
                 ("links_used", c_uint32), ("nodes_visited", c_uint32), ("out_of_nodes", c_uint8),
                 ("reserved", c_uint8 * 3), ("length", c_float), ("cost", c_float), ("start", Vec3), ("goal", Vec3)]
 
 
-class PathQueueStats(Structure):
+class PathBudget(Structure):
+    """nl_path_budget: how much nl_path_process may do (default_path_budget(): no limits)."""
+    _fields_ = [("size", c_uint32), ("max_requests", c_uint32), ("max_milliseconds", c_double),
+                ("max_search_nodes", c_uint64)]
+
+
+class PathFinished(_Growable):
+    """nl_path_finished, as nl_path_take_finished reports it (World.take_finished_paths: FinishedPath)."""
+    _fields_ = [("size", c_uint32), ("outcome", c_uint32), ("ticket", PathTicket), ("user", c_void_p)]
+
+
+class PathQueueStats(_Growable):
     _fields_ = [("size", c_uint32), ("workers", c_uint32), ("queued", c_uint32), ("running", c_uint32),
                 ("unreleased", c_uint32), ("reserved", c_uint32), ("submitted", c_uint64), ("finished", c_uint64)]
 
@@ -269,7 +299,7 @@ class PluginId(_Id):
     pass
 
 
-class PluginDescription(Structure):
+class PluginDescription(_Growable):
     _fields_ = [("size", c_uint32), ("abi_version", c_uint32), ("kinds", c_uint32), ("builtin", c_uint32),
                 ("name", c_char_p), ("version", c_char_p), ("description", c_char_p)]
 
@@ -337,7 +367,8 @@ C_STRUCTS = {
     "nl_link_requirements": LinkRequirements, "nl_link": Link, "nl_link_def": LinkDef,
     "nl_link_settings": LinkSettings, "nl_link_generation_report": LinkGenerationReport, "nl_path_ticket": PathTicket,
     "nl_agent_capabilities": AgentCapabilities, "nl_path_request_def": PathRequestDef, "nl_path_point": PathPoint,
-    "nl_path_result": PathResultInfo, "nl_path_queue_stats": PathQueueStats, "nl_plugin_id": PluginId,
+    "nl_path_result": PathResultInfo, "nl_path_budget": PathBudget, "nl_path_finished": PathFinished,
+    "nl_path_queue_stats": PathQueueStats, "nl_plugin_id": PluginId,
     "nl_plugin_description": PluginDescription, "nl_recast_settings": RecastSettings,
     "nl_plugin_host": PluginHost, "nl_navmesh_builder": NavmeshBuilder,
     "nl_link_kind_provider": LinkKindProvider, "nl_plugin_info": PluginInfo,
@@ -409,7 +440,9 @@ _PROTOTYPES = {
     "nl_path_get_result": (c_uint32, [_w, PathTicket, POINTER(PathResultInfo), POINTER(PathPoint), c_uint32, _u32p]),
     "nl_path_cancel": (c_uint32, [_w, PathTicket]),
     "nl_path_release": (c_uint32, [_w, PathTicket]),
-    "nl_path_process": (c_uint32, [_w, c_uint32, c_double, _u32p]),
+    "nl_default_path_budget": (PathBudget, []),
+    "nl_path_process": (c_uint32, [_w, POINTER(PathBudget), _u32p]),
+    "nl_path_take_finished": (c_uint32, [_w, POINTER(PathFinished), c_uint32, _u32p, _u32p]),
     "nl_path_get_queue_stats": (c_uint32, [_w, POINTER(PathQueueStats)]),
     "nl_plugin_load": (c_uint32, [_w, c_char_p, POINTER(PluginId)]),
     "nl_plugin_get_description": (c_uint32, [_w, PluginId, POINTER(PluginDescription)]),
@@ -429,6 +462,53 @@ def _load_library():
 
 
 lib = _load_library()
+
+
+# The header's inline initialisers (NL_DEFINE_OUTPUT_INIT): not exported by the library, so defined here
+# under their C names. Each is a new struct of the class, whose constructor sets `size`.
+
+def nl_mesh_info_init():
+    return MeshInfo()
+
+
+def nl_ray_hit_init():
+    return RayHit()
+
+
+def nl_navmesh_info_init():
+    return NavmeshInfo()
+
+
+def nl_nav_polygon_init():
+    return NavPolygon()
+
+
+def nl_link_init():
+    return Link()
+
+
+def nl_link_generation_report_init():
+    return LinkGenerationReport()
+
+
+def nl_path_point_init():
+    return PathPoint()
+
+
+def nl_path_result_init():
+    return PathResultInfo()
+
+
+def nl_path_finished_init():
+    return PathFinished()
+
+
+def nl_path_queue_stats_init():
+    return PathQueueStats()
+
+
+def nl_plugin_description_init():
+    return PluginDescription()
 
 # ---------------------------------------------------------------------------------------------------------
 # Statuses as exceptions
@@ -467,12 +547,20 @@ def _buffer_too_small(status):
     return failed(status) and status & STATUS_BUFFER_TOO_SMALL != 0
 
 
+def _growable_array(item_type, count):
+    """A zeroed ctypes array; for growable elements, the first has `size` set (the library's stride)."""
+    items = (item_type * count)()
+    if count > 0 and isinstance(item_type, type) and issubclass(item_type, _Growable):
+        items[0] = item_type()
+    return items
+
+
 def _two_call(call, item_type):
     """The header's two-call pattern: count, then fill. The list may grow in between: ask again."""
     while True:
         count = c_uint32(0)
         _check(call(None, 0, byref(count)))
-        items = (item_type * count.value)()
+        items = _growable_array(item_type, count.value)
         if count.value == 0:
             return []
         status = call(items, count.value, byref(count))
@@ -603,6 +691,11 @@ def default_agent_capabilities():
     return lib.nl_default_agent_capabilities()
 
 
+def default_path_budget():
+    """No limits: a PathBudget to change the fields of (World.process_paths takes one as `budget`)."""
+    return lib.nl_default_path_budget()
+
+
 def link_settings_from_json(json, base=None):
     """Applies a JSON object's keys to `base` (the defaults when None) and validates the result."""
     settings = LinkSettings.from_buffer_copy(base if base is not None else default_link_settings())
@@ -640,6 +733,10 @@ class PathQuery:
         d.max_nodes = self.max_nodes
         d.accept_partial = 1 if self.accept_partial else 0
         return d, costs  # the caller keeps `costs` alive for the call
+
+
+FinishedPath = collections.namedtuple("FinishedPath", ["ticket", "outcome"])
+FinishedPath.__doc__ = "A request that finished, as World.take_finished_paths reports it."
 
 
 class PathResult:
@@ -760,7 +857,7 @@ class World:
         return lib.nl_mesh_is_valid(self.pointer, mesh) != 0
 
     def mesh_info(self, mesh):
-        info = MeshInfo(size=sizeof(MeshInfo))
+        info = MeshInfo()
         _check(lib.nl_mesh_get_info(self.pointer, mesh, byref(info)))
         return info
 
@@ -770,7 +867,7 @@ class World:
     def cast_rays(self, rays):
         """rays: Ray structs; returns one RayHit each."""
         rays = (Ray * len(rays))(*rays)
-        hits = (RayHit * len(rays))()
+        hits = _growable_array(RayHit, len(rays))
         _check(lib.nl_world_cast_rays(self.pointer, rays, len(rays), hits))
         return list(hits)
 
@@ -832,7 +929,7 @@ class World:
         return lib.nl_navmesh_is_valid(self.pointer, navmesh) != 0
 
     def navmesh_info(self, navmesh):
-        info = NavmeshInfo(size=sizeof(NavmeshInfo))
+        info = NavmeshInfo()
         _check(lib.nl_navmesh_get_info(self.pointer, navmesh, byref(info)))
         return info
 
@@ -895,13 +992,13 @@ class World:
         if plugin_settings_json is not None:
             data = plugin_settings_json.encode()
             s.plugin_settings_json, s.plugin_settings_json_length = data, len(data)
-        report = LinkGenerationReport(size=sizeof(LinkGenerationReport))
+        report = LinkGenerationReport()
         _with_progress(progress, lambda fn, user: lib.nl_navmesh_generate_links(
             self.pointer, navmesh, byref(s), fn, user, byref(report)))
         return report
 
     def update_links_in_box(self, navmesh, box_min, box_max, progress=None):
-        report = LinkGenerationReport(size=sizeof(LinkGenerationReport))
+        report = LinkGenerationReport()
         _with_progress(progress, lambda fn, user: lib.nl_navmesh_update_links_in_box(
             self.pointer, navmesh, _floats(box_min), _floats(box_max), fn, user, byref(report)))
         return report
@@ -928,13 +1025,14 @@ class World:
     def find_path(self, query):
         """Plans a path now on this thread (for tools and tests; games queue requests)."""
         d, keep = query._def()
-        points = (PathPoint * self._FIRST_POINT_CAPACITY)()
+        points = _growable_array(PathPoint, self._FIRST_POINT_CAPACITY)
         while True:
-            info = PathResultInfo(size=sizeof(PathResultInfo))
+            info = PathResultInfo()
             count = c_uint32()
             status = lib.nl_path_find(self.pointer, byref(d), byref(info), points, len(points), byref(count))
             if _buffer_too_small(status):
-                points = (PathPoint * count.value)()  # no room for the points: plan again with room
+                # More points than room: this thread kept the plan, the second call copies it.
+                points = _growable_array(PathPoint, count.value)
                 continue
             _check(status)
             return PathResult(info, list(points[:count.value]))
@@ -964,14 +1062,14 @@ class World:
     def path_result(self, ticket):
         """The finished request's PathResult, or None while it is pending."""
         while True:
-            info = PathResultInfo(size=sizeof(PathResultInfo))
+            info = PathResultInfo()
             count = c_uint32()
             status = lib.nl_path_get_result(self.pointer, ticket, byref(info), None, 0, byref(count))
             if status & STATUS_IN_PROGRESS:
                 return None
             if not _buffer_too_small(status):
                 _check(status)
-            points = (PathPoint * count.value)()
+            points = _growable_array(PathPoint, count.value)
             status = lib.nl_path_get_result(self.pointer, ticket, byref(info), points, count.value, byref(count))
             if _buffer_too_small(status):
                 continue
@@ -984,13 +1082,39 @@ class World:
     def release_path(self, ticket):
         _check(lib.nl_path_release(self.pointer, ticket))
 
-    def process_paths(self, max_requests=0, max_milliseconds=0.0):
+    def process_paths(self, max_requests=0, max_milliseconds=0.0, max_search_nodes=0, budget=None):
+        """Plans queued requests on this thread until the queue is empty or a limit is reached (each 0, or
+        max_milliseconds <= 0: no limit; max_search_nodes bounds the polygons the searches visit in all);
+        returns how many finished here. `budget` (a PathBudget) replaces the three. How a world with
+        path_worker_count 0 runs its queue, e.g. ``world.process_paths(max_milliseconds=2)`` each frame."""
+        if budget is None:
+            budget = default_path_budget()
+            budget.max_requests, budget.max_milliseconds, budget.max_search_nodes = (
+                max_requests, max_milliseconds, max_search_nodes)
         processed = c_uint32()
-        _check(lib.nl_path_process(self.pointer, max_requests, max_milliseconds, byref(processed)))
+        _check(lib.nl_path_process(self.pointer, byref(budget), byref(processed)))
         return processed.value
 
+    _FINISHED_CHUNK = 16
+
+    def take_finished_paths(self):
+        """The requests that finished since the last call, oldest first, each reported once, as
+        FinishedPath(ticket, outcome): the way to learn of finished requests on your own thread without a
+        callback (callbacks still run too). Requests whose ticket was released are not reported."""
+        taken = []
+        buffer = _growable_array(PathFinished, self._FINISHED_CHUNK)
+        while True:
+            count, remaining = c_uint32(), c_uint32()
+            _check(lib.nl_path_take_finished(self.pointer, buffer, len(buffer), byref(count), byref(remaining)))
+            taken += [FinishedPath(PathTicket(f.ticket.index1, f.ticket.generation), f.outcome)
+                      for f in buffer[:count.value]]
+            if remaining.value == 0:
+                return taken
+            if remaining.value > len(buffer):
+                buffer = _growable_array(PathFinished, remaining.value)
+
     def path_queue_stats(self):
-        stats = PathQueueStats(size=sizeof(PathQueueStats))
+        stats = PathQueueStats()
         _check(lib.nl_path_get_queue_stats(self.pointer, byref(stats)))
         return stats
 
@@ -1010,7 +1134,7 @@ class World:
 
     def plugin_description(self, plugin):
         """A dict of the description's fields (strings copied)."""
-        d = PluginDescription(size=sizeof(PluginDescription))
+        d = PluginDescription()
         _check(lib.nl_plugin_get_description(self.pointer, plugin, byref(d)))
         return {"name": d.name.decode(), "version": d.version.decode(), "description": d.description.decode(),
                 "kinds": d.kinds, "builtin": d.builtin != 0, "abi_version": d.abi_version}

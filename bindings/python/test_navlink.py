@@ -117,10 +117,38 @@ class LayoutTest(unittest.TestCase):
         for struct, names in fields.items():
             self.assertEqual([f[0] for f in nl.C_STRUCTS[struct]._fields_], names, struct)
 
+    def test_initialisers_match_the_header(self):
+        """Each NL_DEFINE_OUTPUT_INIT of the headers has its twin here: same name, its struct's class, the
+        size the C one sets, every other byte zero; and that class's constructor does the same."""
+        lines = c_layout.layout_lines(INCLUDE_DIRS).splitlines()
+        inits = [line.split()[1:] for line in lines if line.startswith("init ")]
+        self.assertGreaterEqual(len(inits), 11)
+        for struct, function, size in inits:
+            cls = nl.C_STRUCTS[struct]
+            for value in (getattr(nl, function)(), cls()):
+                self.assertIs(type(value), cls, function)
+                self.assertEqual(value.size, int(size), function)
+                self.assertEqual(bytes(value)[4:], bytes(ctypes.sizeof(cls) - 4), function)
+        growable = {name for name, cls in nl.C_STRUCTS.items() if issubclass(cls, nl._Growable)}
+        self.assertEqual(growable, {struct for struct, _, _ in inits}, "the classes that set size are the initialised ones")
+
+    def test_constants_match_the_header(self):
+        """Every integer #define NL_X of the headers is navlink.X with its value, and every integer
+        constant of the module is one of them."""
+        lines = c_layout.layout_lines(INCLUDE_DIRS).splitlines()
+        header = {name[len("NL_"):]: int(value) for _, name, value in
+                  (line.split() for line in lines if line.startswith("const "))}
+        self.assertGreaterEqual(len(header), 40)
+        for name, value in header.items():
+            self.assertEqual(getattr(nl, name, None), value, "NL_" + name)
+        module = {name for name, value in vars(nl).items()
+                  if name.isupper() and type(value) is int}
+        self.assertEqual(module - set(header), set(), "constants the header does not define")
+
 
 class LevelTest(NavLinkTestCase):
     def test_version_and_statuses(self):
-        self.assertEqual(nl.version()[:2], (0, 1))
+        self.assertEqual(nl.version(), (nl.VERSION_MAJOR, nl.VERSION_MINOR, nl.VERSION_PATCH))
         self.assertIn("invalid handle", nl.status_string(nl.STATUS_FAILURE | nl.STATUS_INVALID_HANDLE))
 
     def test_world_options(self):
@@ -177,6 +205,26 @@ class LevelTest(NavLinkTestCase):
             count = ctypes.c_uint32()
             self.assertEqual(nl.lib.nl_world_get_meshes(world.pointer, None, 0, ctypes.byref(count)), nl.STATUS_SUCCESS)
             self.assertEqual(nl.last_error_message(), "")
+            # Output arrays of growable elements: the library reads the element size from the first element
+            # (a ctypes array is zeroed: World's methods set it, a raw caller must).
+            ray = nl.Ray(nl.Vec3(0, 2, 0), nl.Vec3(0, -1, 0), 100)
+            hits = (nl.RayHit * 2)()
+            status = nl.lib.nl_world_cast_rays(world.pointer, ctypes.byref(ray), 1, hits)
+            self.assertTrue(nl.failed(status) and status & nl.STATUS_INVALID_ARGUMENT)
+            self.assertIn("out_hits", nl.last_error_message())
+            hits[0] = nl.nl_ray_hit_init()
+            self.assertEqual(nl.lib.nl_world_cast_rays(world.pointer, ctypes.byref(ray), 1, hits), nl.STATUS_SUCCESS)
+            self.assertEqual((hits[0].hit, hits[0].size), (1, ctypes.sizeof(nl.RayHit)))
+            # A host with a newer header: bigger elements, laid out at its stride, each size written back.
+            stride = ctypes.sizeof(nl.RayHit) + 16
+            wide = (ctypes.c_uint8 * (2 * stride))()
+            ctypes.c_uint32.from_buffer(wide, 0).value = stride
+            pair = (nl.Ray * 2)(ray, nl.Ray(nl.Vec3(0, 2, 0), nl.Vec3(0, 1, 0), 100))
+            self.assertEqual(nl.lib.nl_world_cast_rays(world.pointer, pair, 2,
+                                                       ctypes.cast(wide, ctypes.POINTER(nl.RayHit))), nl.STATUS_SUCCESS)
+            first, second = nl.RayHit.from_buffer(wide, 0), nl.RayHit.from_buffer(wide, stride)
+            self.assertEqual((first.size, first.hit, second.size, second.hit), (stride, 1, stride, 0))
+            self.assertEqual(bytes(wide[ctypes.sizeof(nl.RayHit):stride]), bytes(16), "the host's extra bytes untouched")
         self.assertTrue(nl.failed(nl.lib.nl_world_create(None, None)))
         self.assertEqual(nl.lib.nl_world_get_worker_count(None), 0)
         self.assertTrue(nl.failed(nl.lib.nl_get_last_status()))
@@ -292,12 +340,31 @@ class LinkTest(NavLinkTestCase):
             world.generate_links(navmesh)
             generated = len(world.links(navmesh))
             d = nl.default_link_def()
-            self.assertTrue(d.kind == nl.LINK_MANUAL and d.enabled == 1 and d.cost_modifier == 1)
+            self.assertTrue(d.kind == nl.LINK_MANUAL and d.enabled == 1 and d.cost_modifier == 1 and
+                            d.requirements_from_ends == 1)
             d.start, d.end, d.user_data = nl.Vec3(-5, 0, 4), nl.Vec3(5, 0, 4), 7
+            d.requirements.gap = 99  # measured from the ends instead
             manual = world.add_link(navmesh, d)
             got = world.link(manual)
             self.assertTrue(got.kind == nl.LINK_MANUAL and got.generated == 0 and got.user_data == 7)
+            self.assertTrue(got.id == manual and got.navmesh == navmesh)
             self.assertAlmostEqual(got.requirements.gap, 10, places=4)
+
+            # Requirements taken as given: a link across the gap that asks only for an ability.
+            ability = nl.default_link_def()
+            ability.start, ability.end = nl.Vec3(-5, 0, -4), nl.Vec3(5, 0, -4)
+            ability.requirements_from_ends, ability.requirements.abilities = 0, 4
+            ability_link = world.add_link(navmesh, ability)
+            r = world.link(ability_link).requirements
+            self.assertEqual((r.gap, r.rise, r.drop, r.abilities), (0, 0, 0, 4))
+            self.assertAlmostEqual(r.length, 10, places=4, msg="a length of 0 is measured")
+            able = walker()
+            able.abilities = 4
+            across = world.find_path(nl.PathQuery(navmesh, WEST, EAST, able))
+            self.assertEqual(across.outcome, nl.PATH_COMPLETE)
+            self.assertIn(ability_link, [p.link for p in across.points])
+            self.assertEqual(world.find_path(nl.PathQuery(navmesh, WEST, EAST, walker())).outcome, nl.PATH_PARTIAL)
+            world.remove_link(ability_link)
             d.enabled = 0
             world.update_link(manual, d)
             self.assertEqual(world.link(manual).enabled, 0)
@@ -383,6 +450,71 @@ class PathTest(NavLinkTestCase):
         world.request_path(nl.PathQuery(navmesh, WEST, EAST, jumper()), lambda t, o: last.append(o))
         world.close()
         self.assertEqual(last, [nl.PATH_CANCELLED], "closing the world cancels what is queued")
+
+    def test_budgets_and_finished_requests_taken_by_the_host(self):
+        with nl.World(path_worker_count=0) as world:
+            navmesh = gap_level_with_links(world)
+            jumper_query, walker_query = nl.PathQuery(navmesh, WEST, EAST, jumper()), nl.PathQuery(navmesh, WEST, EAST, walker())
+            self.assertEqual(world.take_finished_paths(), [], "nothing finished yet")
+            budget = nl.default_path_budget()
+            self.assertEqual((budget.size, budget.max_requests, budget.max_milliseconds, budget.max_search_nodes),
+                             (ctypes.sizeof(nl.PathBudget), 0, 0, 0))
+
+            # Budgets: a request is never split, so each limit lets one request through.
+            a, b = world.request_path(jumper_query), world.request_path(walker_query)
+            self.assertEqual(world.process_paths(max_requests=1), 1)
+            self.assertEqual((world.poll_path(a), world.poll_path(b)), (nl.PATH_COMPLETE, nl.PATH_PENDING))
+            c, d, e = world.request_path(jumper_query), world.request_path(walker_query), world.request_path(jumper_query)
+            self.assertEqual(world.process_paths(max_search_nodes=1), 1, "the request that crosses the limit")
+            self.assertEqual((world.poll_path(b), world.poll_path(c)), (nl.PATH_PARTIAL, nl.PATH_PENDING))
+            budget.max_search_nodes = 1
+            self.assertEqual(world.process_paths(budget=budget), 1)
+            self.assertEqual(world.poll_path(d), nl.PATH_PENDING)
+            self.assertEqual(world.process_paths(max_milliseconds=1e-6), 1, "a budget of 1 ns: one request")
+            self.assertEqual(world.poll_path(e), nl.PATH_PENDING)
+            self.assertEqual(world.process_paths(), 1, "no limits: the rest")
+            budget.size = 8
+            self.assertFails(nl.STATUS_INVALID_ARGUMENT, "budget", world.process_paths, budget=budget)
+
+            # Each finished request once, oldest first, with its outcome.
+            self.assertEqual(world.take_finished_paths(), [
+                (a, nl.PATH_COMPLETE), (b, nl.PATH_PARTIAL), (c, nl.PATH_COMPLETE), (d, nl.PATH_PARTIAL),
+                (e, nl.PATH_COMPLETE)])
+            self.assertEqual(world.take_finished_paths(), [], "each is taken once")
+            finished = nl.FinishedPath(a, nl.PATH_COMPLETE)
+            self.assertEqual((finished.ticket, finished.outcome), (a, nl.PATH_COMPLETE))
+
+            # Released tickets are not reported, finished or cancelled; cancelled ones are.
+            calls = []
+            released = world.request_path(jumper_query, lambda t, o: calls.append(o))
+            cancelled, kept, released_later = (world.request_path(walker_query), world.request_path(jumper_query),
+                                               world.request_path(walker_query))
+            world.release_path(released)
+            world.cancel_path(cancelled)
+            self.assertEqual(world.process_paths(), 2)
+            self.assertEqual(calls, [nl.PATH_CANCELLED], "the released request called back once")
+            world.release_path(released_later)
+            self.assertEqual(world.take_finished_paths(), [(cancelled, nl.PATH_CANCELLED), (kept, nl.PATH_COMPLETE)])
+
+            # More than the binding takes in one call (16) come back in one list, in order.
+            many = [world.request_path(jumper_query if i % 2 == 0 else walker_query) for i in range(40)]
+            self.assertEqual(world.process_paths(), 40)
+            self.assertEqual(world.take_finished_paths(),
+                             [(t, nl.PATH_COMPLETE if i % 2 == 0 else nl.PATH_PARTIAL) for i, t in enumerate(many)])
+
+            # The raw call: the library reads the element size from out_finished[0].size; a refusal loses nothing.
+            raw = world.request_path(jumper_query)
+            world.process_paths()
+            out = (nl.PathFinished * 2)()
+            count, remaining = ctypes.c_uint32(99), ctypes.c_uint32(99)
+            status = nl.lib.nl_path_take_finished(world.pointer, out, 2, ctypes.byref(count), ctypes.byref(remaining))
+            self.assertTrue(nl.failed(status) and status & nl.STATUS_INVALID_ARGUMENT)
+            self.assertIn("out_finished", nl.last_error_message())
+            out[0] = nl.nl_path_finished_init()
+            self.assertEqual(nl.lib.nl_path_take_finished(world.pointer, out, 2, ctypes.byref(count), ctypes.byref(remaining)),
+                             nl.STATUS_SUCCESS)
+            self.assertEqual((count.value, remaining.value, out[0].ticket, out[0].outcome, out[0].user),
+                             (1, 0, raw, nl.PATH_COMPLETE, None))
 
     def test_invalid_requests(self):
         with nl.World(path_worker_count=0) as world:

@@ -95,8 +95,7 @@ namespace NavLink
         /// <summary>False (and the reason in the last error) for a null, stale or foreign id.</summary>
         public unsafe bool TryGetMeshInfo(MeshId mesh, out MeshInfo info)
         {
-            MeshInfo result = default(MeshInfo);
-            result.Size = (uint)sizeof(MeshInfo);
+            MeshInfo result = Native.nl_mesh_info_init();
             uint status;
             using (var w = Enter()) status = Native.nl_mesh_get_info(w.Pointer, mesh, &result);
             info = result;
@@ -114,10 +113,12 @@ namespace NavLink
             }
         }
 
-        /// <summary>Casts every ray; hits must have room for one result per ray.</summary>
+        /// <summary>Casts every ray; hits must have room for one result per ray (their contents are
+        /// overwritten, Size included).</summary>
         public unsafe void CastRays(ReadOnlySpan<Ray> rays, Span<RayHit> hits)
         {
             if (hits.Length < rays.Length) throw new ArgumentException("one hit per ray", "hits");
+            if (rays.Length > 0) hits[0] = Native.nl_ray_hit_init();  // the element size the library writes with
             fixed (Ray* r = &MemoryMarshal.GetReference(rays))
             fixed (RayHit* h = &MemoryMarshal.GetReference(hits))
             using (var w = Enter())

@@ -6,7 +6,8 @@ namespace NavLink
 {
     public sealed partial class World
     {
-        /// <summary>A manual one-way link, enabled, cost modifier 1: set Start and End.</summary>
+        /// <summary>A manual one-way link, enabled, cost modifier 1, requirements measured from its ends
+        /// (RequirementsFromEnds 1): set Start and End.</summary>
         public static LinkDef DefaultLinkDef() { return Native.nl_default_link_def(); }
 
         public static LinkSettings DefaultLinkSettings() { return Native.nl_default_link_settings(); }
@@ -56,7 +57,7 @@ namespace NavLink
         /// <summary>False for a null, stale or foreign id.</summary>
         public unsafe bool TryGetLink(LinkId link, out Link result)
         {
-            Link found;
+            Link found = Native.nl_link_init();
             uint status;
             using (var w = Enter()) status = Native.nl_link_get(w.Pointer, link, &found);
             if (StatusBits.Failed(status) && (status & StatusBits.InvalidHandle) != 0u)
@@ -76,7 +77,7 @@ namespace NavLink
             {
                 IntPtr world = w.Pointer;
                 return ListTwoCall<Link>((buffer, capacity, count) =>
-                    Native.nl_navmesh_get_links(world, navmesh, (Link*)buffer, capacity, count));
+                    Native.nl_navmesh_get_links(world, navmesh, (Link*)buffer, capacity, count), Native.nl_link_init());
             }
         }
 
@@ -96,8 +97,7 @@ namespace NavLink
         {
             LinkSettings s = settings ?? Native.nl_default_link_settings();
             byte[] json = pluginSettingsJson == null ? null : Encoding.UTF8.GetBytes(pluginSettingsJson);
-            LinkGenerationReport report = default(LinkGenerationReport);
-            report.Size = (uint)sizeof(LinkGenerationReport);
+            LinkGenerationReport report = Native.nl_link_generation_report_init();
             byte empty = 0;
             fixed (byte* j = json)
             {
@@ -117,8 +117,7 @@ namespace NavLink
         /// <summary>Regenerates only what geometry changes inside [boxMin, boxMax] can have affected.</summary>
         public unsafe LinkGenerationReport UpdateLinksInBox(NavmeshId navmesh, Vec3 boxMin, Vec3 boxMax, ProgressHandler progress = null)
         {
-            LinkGenerationReport report = default(LinkGenerationReport);
-            report.Size = (uint)sizeof(LinkGenerationReport);
+            LinkGenerationReport report = Native.nl_link_generation_report_init();
             using (var scope = new ProgressScope(progress))
             using (var w = Enter())
                 scope.Check(Native.nl_navmesh_update_links_in_box(w.Pointer, navmesh, (float*)&boxMin, (float*)&boxMax,

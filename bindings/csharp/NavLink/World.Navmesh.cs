@@ -82,8 +82,7 @@ namespace NavLink
 
         public unsafe NavmeshInfo GetNavmeshInfo(NavmeshId navmesh)
         {
-            NavmeshInfo info = default(NavmeshInfo);
-            info.Size = (uint)sizeof(NavmeshInfo);
+            NavmeshInfo info = Native.nl_navmesh_info_init();
             using (var w = Enter()) Status.Check(Native.nl_navmesh_get_info(w.Pointer, navmesh, &info));
             return info;
         }
@@ -101,7 +100,7 @@ namespace NavLink
 
         public unsafe NavPolygon GetPolygon(NavmeshId navmesh, uint polygon)
         {
-            NavPolygon result;
+            NavPolygon result = Native.nl_nav_polygon_init();
             using (var w = Enter()) Status.Check(Native.nl_navmesh_get_polygon(w.Pointer, navmesh, polygon, &result));
             return result;
         }

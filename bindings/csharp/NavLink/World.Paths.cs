@@ -1,4 +1,5 @@
 using System;
+using System.Collections.Generic;
 using System.Runtime.InteropServices;
 
 namespace NavLink
@@ -22,14 +23,14 @@ namespace NavLink
                 var points = new PathPoint[FirstPointCapacity];
                 while (true)
                 {
-                    PathResultInfo info = default(PathResultInfo);
-                    info.Size = (uint)sizeof(PathResultInfo);
+                    PathResultInfo info = Native.nl_path_result_init();
+                    points[0] = Native.nl_path_point_init();  // the element size the library writes with
                     uint count, status;
                     fixed (PathPoint* p = points)
                         status = Native.nl_path_find(w.Pointer, &def, &info, p, (uint)points.Length, &count);
                     if (StatusBits.Failed(status) && (status & StatusBits.BufferTooSmall) != 0u)
                     {
-                        // nl_path_find cannot hand back points it had no room for: plan again with room.
+                        // More points than room: this thread kept the plan, the second call copies it.
                         points = new PathPoint[count];
                         continue;
                     }
@@ -84,13 +85,13 @@ namespace NavLink
             {
                 while (true)
                 {
-                    PathResultInfo info = default(PathResultInfo);
-                    info.Size = (uint)sizeof(PathResultInfo);
+                    PathResultInfo info = Native.nl_path_result_init();
                     uint count;
                     uint status = Native.nl_path_get_result(w.Pointer, ticket, &info, null, 0, &count);
                     if ((status & StatusBits.InProgress) != 0u) return false;
                     if (!(StatusBits.Failed(status) && (status & StatusBits.BufferTooSmall) != 0u)) Status.Check(status);
                     var points = new PathPoint[count];
+                    if (count > 0) points[0] = Native.nl_path_point_init();
                     fixed (PathPoint* p = points)
                         status = Native.nl_path_get_result(w.Pointer, ticket, &info, p, count, &count);
                     if (StatusBits.Failed(status) && (status & StatusBits.BufferTooSmall) != 0u) continue;
@@ -113,19 +114,58 @@ namespace NavLink
             using (var w = Enter()) Status.Check(Native.nl_path_release(w.Pointer, ticket));
         }
 
-        /// <summary>Plans queued requests on this thread (maxRequests 0 and maxMilliseconds &lt;= 0: no
-        /// limit); returns how many finished here. How a world with PathWorkerCount 0 runs its queue.</summary>
-        public unsafe uint ProcessPaths(uint maxRequests = 0, double maxMilliseconds = 0)
+        /// <summary>No limits: a PathBudget to change the fields of.</summary>
+        public static PathBudget DefaultPathBudget() { return Native.nl_default_path_budget(); }
+
+        /// <summary>Plans queued requests on this thread until the queue is empty or a limit is reached
+        /// (each 0, or maxMilliseconds &lt;= 0: no limit; maxSearchNodes bounds the polygons the searches
+        /// visit in all); returns how many finished here. How a world with PathWorkerCount 0 runs its
+        /// queue, e.g. ProcessPaths(maxMilliseconds: 2) in Update().</summary>
+        public uint ProcessPaths(uint maxRequests = 0, double maxMilliseconds = 0, ulong maxSearchNodes = 0)
+        {
+            PathBudget budget = Native.nl_default_path_budget();
+            budget.MaxRequests = maxRequests;
+            budget.MaxMilliseconds = maxMilliseconds;
+            budget.MaxSearchNodes = maxSearchNodes;
+            return ProcessPaths(budget);
+        }
+
+        /// <summary>Plans queued requests on this thread within the budget (start from DefaultPathBudget()).</summary>
+        public unsafe uint ProcessPaths(PathBudget budget)
         {
             uint processed;
-            using (var w = Enter()) Status.Check(Native.nl_path_process(w.Pointer, maxRequests, maxMilliseconds, &processed));
+            using (var w = Enter()) Status.Check(Native.nl_path_process(w.Pointer, &budget, &processed));
             return processed;
+        }
+
+        // Finished requests taken per call at first; more calls take the rest.
+        private const int FinishedChunk = 16;
+
+        /// <summary>The requests that finished since the last call, oldest first, each reported once: the way
+        /// to learn of finished requests on your own thread without a callback (callbacks still run too).
+        /// Requests whose ticket was released are not reported.</summary>
+        public unsafe FinishedPath[] TakeFinishedPaths()
+        {
+            var taken = new List<FinishedPath>();
+            var buffer = new PathFinished[FinishedChunk];
+            using (var w = Enter())
+            {
+                while (true)
+                {
+                    buffer[0] = Native.nl_path_finished_init();  // the element size the library writes with
+                    uint count, remaining;
+                    fixed (PathFinished* b = buffer)
+                        Status.Check(Native.nl_path_take_finished(w.Pointer, b, (uint)buffer.Length, &count, &remaining));
+                    for (int i = 0; i < count; ++i) taken.Add(new FinishedPath(buffer[i].Ticket, buffer[i].Outcome));
+                    if (remaining == 0) return taken.ToArray();
+                    if (remaining > buffer.Length) buffer = new PathFinished[remaining];
+                }
+            }
         }
 
         public unsafe PathQueueStats GetPathQueueStats()
         {
-            PathQueueStats stats = default(PathQueueStats);
-            stats.Size = (uint)sizeof(PathQueueStats);
+            PathQueueStats stats = Native.nl_path_queue_stats_init();
             using (var w = Enter()) Status.Check(Native.nl_path_get_queue_stats(w.Pointer, &stats));
             return stats;
         }

@@ -47,8 +47,7 @@ namespace NavLink
 
         public unsafe PluginSummary DescribePlugin(PluginId plugin)
         {
-            PluginDescription d = default(PluginDescription);
-            d.Size = (uint)sizeof(PluginDescription);
+            PluginDescription d = Native.nl_plugin_description_init();
             using (var w = Enter()) Status.Check(Native.nl_plugin_get_description(w.Pointer, plugin, &d));
             return new PluginSummary
             {

@@ -15,7 +15,8 @@ namespace NavLink.Tests
             check.Run("version and statuses", () =>
             {
                 NavLinkVersion v = World.LibraryVersion;
-                check.That(v.Major == 0 && v.Minor >= 1, "library version " + v + " is 0.x with x >= 1");
+                check.That(v.Major == HeaderVersion.Major && v.Minor == HeaderVersion.Minor && v.Patch == HeaderVersion.Patch,
+                           "library version " + v + " is the header version the binding was written from");
                 check.That(Status.Describe(StatusBits.Failure | StatusBits.InvalidHandle).Contains("invalid handle"),
                            "nl_status_string names the detail: " + Status.Describe(StatusBits.Failure | StatusBits.InvalidHandle));
             });
@@ -126,6 +127,20 @@ namespace NavLink.Tests
                         uint count = 0;
                         check.That(Native.nl_world_get_meshes(world.DangerousGetPointer(), null, 0, &count) == StatusBits.Success &&
                                    Status.LastErrorMessage() == "", "a success clears the last error message");
+
+                        // Output arrays of growable elements: the library reads the element size from the first
+                        // element, which World's methods set (Native.nl_ray_hit_init) and a raw caller must.
+                        world.AddMesh(Floor, Quad);
+                        var ray = new Ray(new Vec3(0, 2, 0), new Vec3(0, -1, 0), 100);
+                        var hits = new RayHit[1];
+                        fixed (RayHit* h = hits)
+                        {
+                            check.Status(Native.nl_world_cast_rays(world.DangerousGetPointer(), &ray, 1, h), StatusBits.InvalidArgument,
+                                         "out_hits", "nl_world_cast_rays with out_hits[0].size 0");
+                            hits[0] = Native.nl_ray_hit_init();
+                            check.That(Native.nl_world_cast_rays(world.DangerousGetPointer(), &ray, 1, h) == StatusBits.Success &&
+                                       hits[0].Hit == 1 && hits[0].Size == (uint)sizeof(RayHit), "with the size set, a hit");
+                        }
                     }
                 }
             });

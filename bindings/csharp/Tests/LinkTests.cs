@@ -83,14 +83,39 @@ namespace NavLink.Tests
                     int generated = world.GetLinks(navmesh).Length;
 
                     LinkDef def = World.DefaultLinkDef();
-                    check.That(def.Kind == LinkKind.Manual && def.Enabled == 1 && def.CostModifier == 1, "default link def");
+                    check.That(def.Kind == LinkKind.Manual && def.Enabled == 1 && def.CostModifier == 1 && def.RequirementsFromEnds == 1,
+                               "default link def");
                     def.Start = new Vec3(-5, 0, 4);
                     def.End = new Vec3(5, 0, 4);
                     def.UserData = 7;
+                    def.Requirements.Gap = 99;  // measured from the ends instead
                     LinkId manual = world.AddLink(navmesh, def);
                     Link got = world.GetLink(manual);
-                    check.That(got.Kind == LinkKind.Manual && got.Generated == 0 && got.UserData == 7 &&
-                               Math.Abs(got.Requirements.Gap - 10) < 1e-4f, "the manual link, its gap computed: " + got.Requirements.Gap);
+                    check.That(got.Kind == LinkKind.Manual && got.Generated == 0 && got.UserData == 7 && got.Id.Equals(manual) &&
+                               got.Navmesh.Equals(navmesh) && Math.Abs(got.Requirements.Gap - 10) < 1e-4f,
+                               "the manual link, its gap measured from the ends: " + got.Requirements.Gap);
+
+                    // Requirements taken as given: a link across the gap that asks only for an ability.
+                    LinkDef ability = World.DefaultLinkDef();
+                    ability.Start = new Vec3(-5, 0, -4);
+                    ability.End = new Vec3(5, 0, -4);
+                    ability.RequirementsFromEnds = 0;
+                    ability.Requirements.Abilities = 4;
+                    LinkId abilityLink = world.AddLink(navmesh, ability);
+                    Link asGiven = world.GetLink(abilityLink);
+                    check.That(asGiven.Requirements.Gap == 0 && asGiven.Requirements.Rise == 0 && asGiven.Requirements.Abilities == 4 &&
+                               Math.Abs(asGiven.Requirements.Length - 10) < 1e-4f,
+                               "requirements as given (gap " + asGiven.Requirements.Gap + "), the length of 0 measured: " +
+                               asGiven.Requirements.Length);
+                    AgentCapabilities able = World.DefaultAgentCapabilities();
+                    able.Abilities = 4;
+                    PathResult across = world.FindPath(new PathQuery(navmesh, TestLevels.WestPoint, TestLevels.EastPoint, able));
+                    check.That(across.Outcome == PathOutcome.Complete && across.Points.Any(q => q.Link.Equals(abilityLink)),
+                               "a walker with the ability crosses on that link: " + across.Outcome);
+                    PathResult stuck = world.FindPath(new PathQuery(navmesh, TestLevels.WestPoint, TestLevels.EastPoint,
+                                                                    World.DefaultAgentCapabilities()));
+                    check.That(stuck.Outcome == PathOutcome.Partial, "a walker without it does not: " + stuck.Outcome);
+                    world.RemoveLink(abilityLink);
                     def.Enabled = 0;
                     world.UpdateLink(manual, def);
                     check.That(world.GetLink(manual).Enabled == 0, "updated: disabled");

@@ -111,6 +111,12 @@ namespace NavLink.Tests
                     check.That(cancelledOutcome == PathOutcome.Cancelled && cancelledOnThread == thread,
                                "a queued request cancels at once, its callback on the cancelling thread: " + cancelledOutcome);
                     check.Throws(StatusBits.InvalidArgument, "nl_path_process", () => world.ProcessPaths(0, double.NaN), "a NaN budget");
+                    PathBudget small = World.DefaultPathBudget();
+                    check.That(small.Size == (uint)System.Runtime.InteropServices.Marshal.SizeOf(typeof(PathBudget)) &&
+                               small.MaxRequests == 0 && small.MaxMilliseconds == 0 && small.MaxSearchNodes == 0,
+                               "the default budget: no limits");
+                    small.Size = 8;
+                    check.Throws(StatusBits.InvalidArgument, "budget", () => world.ProcessPaths(small), "a budget whose size is too small");
                     check.That(world.ProcessPaths() == 1, "ProcessPaths plans the one request left");
                     PathResult result;
                     check.That(world.TryGetPathResult(jumper, out result) && result.Outcome == PathOutcome.Complete, "planned by the host");
@@ -125,6 +131,82 @@ namespace NavLink.Tests
                                       (t, outcome) => { last = outcome; ++lastCalls; });
                     world.Dispose();
                     check.That(lastCalls == 1 && last == PathOutcome.Cancelled, "destroying the world cancels what is queued: " + last);
+                }
+            });
+
+            check.Run("paths: budgets and finished requests taken by the host (TakeFinishedPaths)", () =>
+            {
+                using (var world = new World(new WorldOptions { PathWorkerCount = 0 }))
+                {
+                    NavmeshId navmesh = GapLevelWithLinks(world);
+                    var jumperQuery = new PathQuery(navmesh, TestLevels.WestPoint, TestLevels.EastPoint, TestLevels.Jumper());
+                    var walkerQuery = new PathQuery(navmesh, TestLevels.WestPoint, TestLevels.EastPoint, TestLevels.Walker());
+                    check.That(world.TakeFinishedPaths().Length == 0, "nothing finished yet");
+
+                    // Budgets: a request is never split, so each limit lets one request through.
+                    PathTicket a = world.RequestPath(jumperQuery), b = world.RequestPath(walkerQuery);
+                    check.That(world.ProcessPaths(maxRequests: 1) == 1 && world.PollPath(a) == PathOutcome.Complete &&
+                               world.PollPath(b) == PathOutcome.Pending, "maxRequests 1 plans the first request only");
+                    PathTicket c = world.RequestPath(jumperQuery), d = world.RequestPath(walkerQuery);
+                    PathTicket e = world.RequestPath(jumperQuery);
+                    check.That(world.ProcessPaths(maxSearchNodes: 1) == 1 && world.PollPath(b) == PathOutcome.Partial &&
+                               world.PollPath(c) == PathOutcome.Pending, "maxSearchNodes 1: the request that crosses the limit");
+                    PathBudget oneNode = World.DefaultPathBudget();
+                    oneNode.MaxSearchNodes = 1;
+                    check.That(world.ProcessPaths(oneNode) == 1 && world.PollPath(d) == PathOutcome.Pending,
+                               "a PathBudget with MaxSearchNodes 1: one request");
+                    check.That(world.ProcessPaths(maxMilliseconds: 1e-6) == 1 && world.PollPath(e) == PathOutcome.Pending,
+                               "a budget of 1 ns: one request");
+                    check.That(world.ProcessPaths() == 1, "no limits: the rest");
+
+                    // Each finished request once, oldest first, with its outcome.
+                    FinishedPath[] finished = world.TakeFinishedPaths();
+                    var expected = new[] { new FinishedPath(a, PathOutcome.Complete), new FinishedPath(b, PathOutcome.Partial),
+                                           new FinishedPath(c, PathOutcome.Complete), new FinishedPath(d, PathOutcome.Partial),
+                                           new FinishedPath(e, PathOutcome.Complete) };
+                    check.That(finished.SequenceEqual(expected), "taken: " + string.Join(", ", finished));
+                    check.That(world.TakeFinishedPaths().Length == 0, "each is taken once");
+
+                    // Released tickets are not reported, finished or cancelled; cancelled ones are.
+                    int calls = 0;
+                    PathTicket released = world.RequestPath(jumperQuery, (t, o) => ++calls);
+                    PathTicket cancelled = world.RequestPath(walkerQuery);
+                    PathTicket kept = world.RequestPath(jumperQuery);
+                    PathTicket releasedLater = world.RequestPath(walkerQuery);
+                    world.ReleasePath(released);
+                    world.CancelPath(cancelled);
+                    check.That(world.ProcessPaths() == 2 && calls == 1, "two left to plan; the released request called back once");
+                    world.ReleasePath(releasedLater);
+                    finished = world.TakeFinishedPaths();
+                    expected = new[] { new FinishedPath(cancelled, PathOutcome.Cancelled), new FinishedPath(kept, PathOutcome.Complete) };
+                    check.That(finished.SequenceEqual(expected), "taken after releases: " + string.Join(", ", finished));
+
+                    // More than the binding takes in one call (16) come back in one array.
+                    var many = Enumerable.Range(0, 40).Select(i => world.RequestPath(i % 2 == 0 ? jumperQuery : walkerQuery)).ToArray();
+                    check.That(world.ProcessPaths() == 40, "40 planned");
+                    finished = world.TakeFinishedPaths();
+                    check.That(finished.Select(f => f.Ticket).SequenceEqual(many) &&
+                               finished.All(f => f.Outcome == (Array.IndexOf(many, f.Ticket) % 2 == 0 ? PathOutcome.Complete : PathOutcome.Partial)),
+                               "40 finished requests taken in order: " + finished.Length);
+
+                    // The raw call: the library reads the element size from out_finished[0].size.
+                    PathTicket raw = world.RequestPath(jumperQuery);
+                    world.ProcessPaths();
+                    unsafe
+                    {
+                        var buffer = new PathFinished[2];
+                        uint count = 99, remaining = 99;
+                        fixed (PathFinished* f = buffer)
+                        {
+                            check.Status(Native.nl_path_take_finished(world.DangerousGetPointer(), f, 2, &count, &remaining),
+                                         StatusBits.InvalidArgument, "out_finished", "an element size left at 0");
+                            buffer[0] = Native.nl_path_finished_init();
+                            uint status = Native.nl_path_take_finished(world.DangerousGetPointer(), f, 2, &count, &remaining);
+                            check.That(status == StatusBits.Success && count == 1 && remaining == 0 && buffer[0].Ticket.Equals(raw) &&
+                                       buffer[0].Outcome == PathOutcome.Complete && buffer[0].User == IntPtr.Zero,
+                                       "a refused take loses nothing: " + count + " taken");
+                        }
+                    }
                 }
             });
 

@@ -17,7 +17,7 @@ namespace NavLink.Tests
                 return 2;
             }
             var check = new Checks();
-            check.Run("struct layout against the C compiler", () => LayoutTests.Run(check, layout));
+            check.Run("structs, initialisers and constants against the C compiler", () => LayoutTests.Run(check, layout));
             LevelTests.Run(check, levels);
             NavmeshTests.Run(check);
             LinkTests.Run(check);

@@ -32,8 +32,16 @@ namespace NavLink
         public static extern uint nl_path_release(IntPtr world, PathTicket ticket);
 
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        public static extern uint nl_path_process(IntPtr world, uint maxRequests, double maxMilliseconds,
-                                                  uint* outProcessed);
+        public static extern PathBudget nl_default_path_budget();
+
+        /// <summary>budget may be null (no limits).</summary>
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        public static extern uint nl_path_process(IntPtr world, PathBudget* budget, uint* outProcessed);
+
+        /// <summary>outFinished[0].Size set (nl_path_finished_init) when capacity &gt; 0; outRemaining may be null.</summary>
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        public static extern uint nl_path_take_finished(IntPtr world, PathFinished* outFinished, uint capacity,
+                                                        uint* outCount, uint* outRemaining);
 
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         public static extern uint nl_path_get_queue_stats(IntPtr world, PathQueueStats* outStats);

@@ -1,6 +1,16 @@
 namespace NavLink
 {
-    // The #define constants of navlink.h, recast.h and plugin.h, grouped by what they qualify.
+    // The #define constants of navlink.h, recast.h and plugin.h, grouped by what they qualify. (The tests
+    // hold each integer one against the headers, both ways: Tests/LayoutTests.cs names each class's prefix.)
+
+    /// <summary>The header version this binding was written from (navlink/version.h); World.LibraryVersion
+    /// is the loaded library's.</summary>
+    public static class HeaderVersion
+    {
+        public const int Major = 0;
+        public const int Minor = 1;
+        public const int Patch = 0;
+    }
 
     /// <summary>nl_status bits: a kind in the top bits, detail bits below (navlink.h, "Status").</summary>
     public static class StatusBits
@@ -76,7 +86,6 @@ namespace NavLink
     {
         public const uint NavmeshBuilder = 0x1u;
         public const uint LinkKind = 0x2u;
-        public const uint PathModifier = 0x4u;
         public const uint AbiVersion = 1u;
         public const string EntrySymbol = "nl_plugin_entry";
     }

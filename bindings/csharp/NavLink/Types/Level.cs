@@ -18,7 +18,7 @@ namespace NavLink
         public ulong UserData;
     }
 
-    /// <summary>nl_mesh_info. Set Size to Marshal.SizeOf(typeof(MeshInfo)) before asking.</summary>
+    /// <summary>nl_mesh_info. Get one from Native.nl_mesh_info_init() (Size set) before asking.</summary>
     [StructLayout(LayoutKind.Sequential)]
     public unsafe struct MeshInfo
     {
@@ -49,10 +49,12 @@ namespace NavLink
         }
     }
 
-    /// <summary>nl_ray_hit.</summary>
+    /// <summary>nl_ray_hit. An array element that may grow: the library lays out an output array with the
+    /// element size in its first element's Size (Native.nl_ray_hit_init(); World.CastRays sets it).</summary>
     [StructLayout(LayoutKind.Sequential)]
     public unsafe struct RayHit
     {
+        public uint Size;
         public float Distance;
         public Vec3 Point;
         public Vec3 Normal;

@@ -16,13 +16,15 @@ namespace NavLink
         public uint Reserved;
     }
 
-    /// <summary>nl_link: a link as the world holds it.</summary>
+    /// <summary>nl_link: a link as the world holds it. An array element that may grow: Size is the
+    /// element size the library lays an output array out with (Native.nl_link_init(); World sets it).</summary>
     [StructLayout(LayoutKind.Sequential)]
     public struct Link
     {
+        public uint Size;
+        public uint Kind;
         public LinkId Id;
         public NavmeshId Navmesh;
-        public uint Kind;
         public Vec3 Start;
         public Vec3 End;
         public Vec3 Apex;
@@ -31,15 +33,16 @@ namespace NavLink
         public byte Enabled;
         public byte Reserved;
         public float CostModifier;
-        public ulong UserData;
-        public LinkRequirements Requirements;
         public uint StartPolygon;
         public uint EndPolygon;
+        public uint Reserved2;
+        public ulong UserData;
+        public LinkRequirements Requirements;
     }
 
-    /// <summary>nl_link_def: a link to add or the new state of one. Get one from Native.nl_default_link_def().</summary>
+    /// <summary>nl_link_def: a link to add or the new state of one. Get one from World.DefaultLinkDef().</summary>
     [StructLayout(LayoutKind.Sequential)]
-    public unsafe struct LinkDef
+    public struct LinkDef
     {
         public uint Size;
         public uint Kind;
@@ -47,7 +50,11 @@ namespace NavLink
         public Vec3 End;
         public byte Bidirectional;
         public byte Enabled;
-        public fixed byte Reserved[2];
+        /// <summary>1 (default): Requirements.Gap, Length, Rise and Drop are measured from the ends and the
+        /// values given are ignored; 0: Requirements are taken as given (a link that asks only for an
+        /// ability; a Length of 0 is measured). ClearanceWidth and Abilities are always taken as given.</summary>
+        public byte RequirementsFromEnds;
+        public byte Reserved;
         public float CostModifier;
         public ulong UserData;
         public LinkRequirements Requirements;
@@ -85,7 +92,7 @@ namespace NavLink
         public float WalkDistance;
     }
 
-    /// <summary>nl_link_generation_report. Set Size before asking.</summary>
+    /// <summary>nl_link_generation_report. Get one from Native.nl_link_generation_report_init() (Size set) before asking.</summary>
     [StructLayout(LayoutKind.Sequential)]
     public struct LinkGenerationReport
     {

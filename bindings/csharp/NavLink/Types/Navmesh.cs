@@ -34,7 +34,7 @@ namespace NavLink
         public IntPtr DetailTriangleStarts;
     }
 
-    /// <summary>nl_navmesh_info. Set Size before asking.</summary>
+    /// <summary>nl_navmesh_info. Get one from Native.nl_navmesh_info_init() (Size set) before asking.</summary>
     [StructLayout(LayoutKind.Sequential)]
     public struct NavmeshInfo
     {
@@ -52,10 +52,11 @@ namespace NavLink
         public Vec3 BoundsMax;
     }
 
-    /// <summary>nl_nav_polygon.</summary>
+    /// <summary>nl_nav_polygon. May grow: Size set by Native.nl_nav_polygon_init() (World.GetPolygon sets it).</summary>
     [StructLayout(LayoutKind.Sequential)]
     public unsafe struct NavPolygon
     {
+        public uint Size;
         public uint VertexCount;
         public fixed uint Vertices[16];
         public fixed uint Neighbours[16];

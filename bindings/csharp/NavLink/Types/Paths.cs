@@ -35,10 +35,12 @@ namespace NavLink
         public IntPtr User;
     }
 
-    /// <summary>nl_path_point: one point of a path and how the agent goes on from it.</summary>
+    /// <summary>nl_path_point: one point of a path and how the agent goes on from it. An array element that
+    /// may grow: the library lays out an output array with its first element's Size (Native.nl_path_point_init()).</summary>
     [StructLayout(LayoutKind.Sequential)]
     public unsafe struct PathPoint
     {
+        public uint Size;
         public Vec3 Position;
         public uint Polygon;
         /// <summary>LinkKind.Walk, or the kind of the link taken to the next point.</summary>
@@ -49,7 +51,7 @@ namespace NavLink
         public fixed byte Reserved[3];
     }
 
-    /// <summary>nl_path_result. Set Size before asking.</summary>
+    /// <summary>nl_path_result. Get one from Native.nl_path_result_init() (Size set) before asking.</summary>
     [StructLayout(LayoutKind.Sequential)]
     public unsafe struct PathResultInfo
     {
@@ -67,7 +69,52 @@ namespace NavLink
         public Vec3 Goal;
     }
 
-    /// <summary>nl_path_queue_stats. Set Size before asking.</summary>
+    /// <summary>How much World.ProcessPaths (nl_path_process) may do in one call: nl_path_budget. Get one from
+    /// World.DefaultPathBudget() (no limits). A request is never split: the budget is checked between
+    /// requests, so a call that finds the queue non-empty plans at least one.</summary>
+    [StructLayout(LayoutKind.Sequential)]
+    public struct PathBudget
+    {
+        public uint Size;
+        /// <summary>Requests planned at most; 0: no limit.</summary>
+        public uint MaxRequests;
+        /// <summary>Time spent at most; &lt;= 0: no limit.</summary>
+        public double MaxMilliseconds;
+        /// <summary>Polygons the searches may visit in all (their NodesVisited added up); 0: no limit.</summary>
+        public ulong MaxSearchNodes;
+    }
+
+    /// <summary>nl_path_finished: a request that finished, as Native.nl_path_take_finished reports it. An
+    /// array element that may grow (Native.nl_path_finished_init()). World.TakeFinishedPaths returns
+    /// FinishedPath values instead: User is the request's raw `user`, which World uses for its callback.</summary>
+    [StructLayout(LayoutKind.Sequential)]
+    public struct PathFinished
+    {
+        public uint Size;
+        public PathOutcome Outcome;
+        public PathTicket Ticket;
+        public IntPtr User;
+    }
+
+    /// <summary>A request that finished since the last World.TakeFinishedPaths: its ticket and outcome.</summary>
+    public struct FinishedPath : IEquatable<FinishedPath>
+    {
+        public readonly PathTicket Ticket;
+        public readonly PathOutcome Outcome;
+
+        public FinishedPath(PathTicket ticket, PathOutcome outcome)
+        {
+            Ticket = ticket;
+            Outcome = outcome;
+        }
+
+        public bool Equals(FinishedPath o) { return Ticket.Equals(o.Ticket) && Outcome == o.Outcome; }
+        public override bool Equals(object o) { return o is FinishedPath && Equals((FinishedPath)o); }
+        public override int GetHashCode() { return Ticket.GetHashCode() * 31 + (int)Outcome; }
+        public override string ToString() { return Ticket + ": " + Outcome; }
+    }
+
+    /// <summary>nl_path_queue_stats. Get one from Native.nl_path_queue_stats_init() (Size set) before asking.</summary>
     [StructLayout(LayoutKind.Sequential)]
     public struct PathQueueStats
     {

@@ -3,7 +3,8 @@ using System.Runtime.InteropServices;
 
 namespace NavLink
 {
-    /// <summary>nl_plugin_description. Set Size before asking; the strings belong to the world.</summary>
+    /// <summary>nl_plugin_description. Get one from Native.nl_plugin_description_init() (Size set) before
+    /// asking; the strings belong to the world.</summary>
     [StructLayout(LayoutKind.Sequential)]
     public struct PluginDescription
     {

@@ -1,8 +1,9 @@
 //! The C compiler's view of NavLink's headers, for the layout test. Struct and field names come from
 //! the headers (a small parser of `typedef struct NAME { ... } NAME;` and of `#define NAME <integer>`),
 //! sizes, alignments, offsets and values from a C program compiled with the system C compiler and run.
-//! The program prints Rust: one `c_struct!` per struct and one `c_constant!` per integer constant, which
-//! tests/layout.rs expands into checks against navlink-sys's own definitions.
+//! The program prints Rust: one `c_struct!` per struct, one `c_init!` per inline initialiser
+//! (`NL_DEFINE_OUTPUT_INIT(T, name)`, with the `size` that calling it sets) and one `c_constant!` per
+//! integer constant, which tests/layout.rs expands into checks against navlink-sys's own definitions.
 use std::fs;
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -12,6 +13,7 @@ const HEADERS: [&str; 4] = ["navlink/version.h", "navlink/navlink.h", "navlink/r
 pub fn run(include_dirs: &[PathBuf], out_dir: &Path, compiler: &str) -> Result<String, String> {
     let mut structs = Vec::new();
     let mut constants = Vec::new();
+    let mut inits = Vec::new();
     for header in HEADERS {
         let path = include_dirs
             .iter()
@@ -21,10 +23,11 @@ pub fn run(include_dirs: &[PathBuf], out_dir: &Path, compiler: &str) -> Result<S
         let text = strip_comments(&fs::read_to_string(&path).map_err(|e| format!("{}: {}", path.display(), e))?);
         structs.extend(parse_structs(&text)?);
         constants.extend(parse_integer_defines(&text));
+        inits.extend(parse_output_inits(&text));
     }
     let source = out_dir.join("c_layout_probe.c");
     let exe = out_dir.join("c_layout_probe");
-    fs::write(&source, probe_program(&structs, &constants)).map_err(|e| e.to_string())?;
+    fs::write(&source, probe_program(&structs, &inits, &constants)).map_err(|e| e.to_string())?;
     let mut cc = Command::new(compiler);
     cc.args(["-std=c11", "-Wall", "-Werror", "-o"]).arg(&exe).arg(&source);
     for dir in include_dirs {
@@ -108,6 +111,22 @@ fn parse_structs(text: &str) -> Result<Vec<Struct>, String> {
     Ok(structs)
 }
 
+/// `NL_DEFINE_OUTPUT_INIT(T, name)` uses (not the macro's own `#define`): (T, name) each.
+fn parse_output_inits(text: &str) -> Vec<(String, String)> {
+    let mut inits = Vec::new();
+    for line in text.lines() {
+        let args = match line.trim_start().strip_prefix("NL_DEFINE_OUTPUT_INIT(") {
+            Some(rest) => rest.split(')').next().unwrap_or(""),
+            None => continue,
+        };
+        let names: Vec<&str> = args.split(',').map(str::trim).collect();
+        if names.len() == 2 && names.iter().all(|n| !n.is_empty() && n.chars().all(is_ident)) {
+            inits.push((names[0].to_string(), names[1].to_string()));
+        }
+    }
+    inits
+}
+
 /// `#define NL_NAME value` where value is an integer literal, maybe negative, suffixed or parenthesised.
 fn parse_integer_defines(text: &str) -> Vec<String> {
     let mut names = Vec::new();
@@ -131,7 +150,7 @@ fn parse_integer_defines(text: &str) -> Vec<String> {
     names
 }
 
-fn probe_program(structs: &[Struct], constants: &[String]) -> String {
+fn probe_program(structs: &[Struct], inits: &[(String, String)], constants: &[String]) -> String {
     let mut c = String::new();
     for header in HEADERS {
         c += &format!("#include <{}>\n", header);
@@ -148,6 +167,9 @@ fn probe_program(structs: &[Struct], constants: &[String]) -> String {
             );
         }
         c += "    printf(\"]);\\n\");\n";
+    }
+    for (name, init) in inits {
+        c += &format!("    printf(\"c_init!({0}, {1}, %u);\\n\", (unsigned)({1}().size));\n", name, init);
     }
     for k in constants {
         c += &format!("    printf(\"c_constant!({0}, %lldi64);\\n\", (long long)({0}));\n", k);

@@ -1,4 +1,5 @@
 //! navlink.h: "Level geometry" and "Ray queries".
+use crate::output_init;
 use crate::status::nl_status;
 use crate::world::nl_world;
 use std::os::raw::c_char;
@@ -27,7 +28,7 @@ pub struct nl_mesh_def {
 }
 
 #[repr(C)]
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub struct nl_mesh_info {
     pub size: u32,
     pub vertex_count: u32,
@@ -40,6 +41,11 @@ pub struct nl_mesh_info {
     pub user_data: u64,
 }
 
+pub fn nl_mesh_info_init() -> nl_mesh_info {
+    unsafe { output_init() }
+}
+default_is_init!(nl_mesh_info, nl_mesh_info_init);
+
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct nl_ray {
@@ -48,9 +54,11 @@ pub struct nl_ray {
     pub max_distance: f32,
 }
 
+/// An array element that may grow: the library lays out an output array with the first element's `size`.
 #[repr(C)]
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub struct nl_ray_hit {
+    pub size: u32,
     pub distance: f32,
     pub point: [f32; 3],
     pub normal: [f32; 3],
@@ -59,6 +67,11 @@ pub struct nl_ray_hit {
     pub hit: u8,
     pub reserved: [u8; 3],
 }
+
+pub fn nl_ray_hit_init() -> nl_ray_hit {
+    unsafe { output_init() }
+}
+default_is_init!(nl_ray_hit, nl_ray_hit_init);
 
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq)]

@@ -1,5 +1,6 @@
 //! navlink.h: "Links".
 use crate::navmesh::nl_navmesh_id;
+use crate::output_init;
 use crate::status::nl_status;
 use crate::world::nl_world;
 use std::os::raw::{c_char, c_void};
@@ -29,12 +30,14 @@ pub struct nl_link_requirements {
     pub reserved: u32,
 }
 
+/// An array element that may grow: the library lays out an output array with the first element's `size`.
 #[repr(C)]
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub struct nl_link {
+    pub size: u32,
+    pub kind: nl_link_kind,
     pub id: nl_link_id,
     pub navmesh: nl_navmesh_id,
-    pub kind: nl_link_kind,
     pub start: [f32; 3],
     pub end: [f32; 3],
     pub apex: [f32; 3],
@@ -43,11 +46,17 @@ pub struct nl_link {
     pub enabled: u8,
     pub reserved: u8,
     pub cost_modifier: f32,
-    pub user_data: u64,
-    pub requirements: nl_link_requirements,
     pub start_polygon: u32,
     pub end_polygon: u32,
+    pub reserved2: u32,
+    pub user_data: u64,
+    pub requirements: nl_link_requirements,
 }
+
+pub fn nl_link_init() -> nl_link {
+    unsafe { output_init() }
+}
+default_is_init!(nl_link, nl_link_init);
 
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -58,7 +67,9 @@ pub struct nl_link_def {
     pub end: [f32; 3],
     pub bidirectional: u8,
     pub enabled: u8,
-    pub reserved: [u8; 2],
+    /// 1 (default): gap, length, rise and drop are measured from the ends; 0: `requirements` as given.
+    pub requirements_from_ends: u8,
+    pub reserved: u8,
     pub cost_modifier: f32,
     pub user_data: u64,
     pub requirements: nl_link_requirements,
@@ -96,7 +107,7 @@ pub struct nl_link_settings {
 }
 
 #[repr(C)]
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub struct nl_link_generation_report {
     pub size: u32,
     pub edges: u32,
@@ -130,6 +141,11 @@ pub struct nl_link_generation_report {
     pub rejected_too_deep: u32,
     pub reserved: u32,
 }
+
+pub fn nl_link_generation_report_init() -> nl_link_generation_report {
+    unsafe { output_init() }
+}
+default_is_init!(nl_link_generation_report, nl_link_generation_report_init);
 
 /// `nl_progress_fn*`: return 0 to cancel. Called on the thread that started the generation.
 pub type nl_progress_fn = Option<unsafe extern "C" fn(user: *mut c_void, fraction: f32, stage: *const c_char) -> i32>;

@@ -1,4 +1,5 @@
 //! navlink.h: "Navmeshes" and "Building navmeshes".
+use crate::output_init;
 use crate::status::nl_status;
 use crate::world::nl_world;
 use std::os::raw::{c_char, c_void};
@@ -43,7 +44,7 @@ pub struct nl_navmesh_def {
 }
 
 #[repr(C)]
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub struct nl_navmesh_info {
     pub size: u32,
     pub vertex_count: u32,
@@ -59,9 +60,15 @@ pub struct nl_navmesh_info {
     pub bounds_max: [f32; 3],
 }
 
+pub fn nl_navmesh_info_init() -> nl_navmesh_info {
+    unsafe { output_init() }
+}
+default_is_init!(nl_navmesh_info, nl_navmesh_info_init);
+
 #[repr(C)]
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub struct nl_nav_polygon {
+    pub size: u32,
     pub vertex_count: u32,
     pub vertices: [u32; NL_MAX_POLYGON_VERTICES],
     pub neighbours: [u32; NL_MAX_POLYGON_VERTICES],
@@ -69,6 +76,11 @@ pub struct nl_nav_polygon {
     pub normal: [f32; 3],
     pub centre: [f32; 3],
 }
+
+pub fn nl_nav_polygon_init() -> nl_nav_polygon {
+    unsafe { output_init() }
+}
+default_is_init!(nl_nav_polygon, nl_nav_polygon_init);
 
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq)]

@@ -1,6 +1,7 @@
 //! navlink.h: "Paths".
 use crate::links::nl_link_id;
 use crate::navmesh::nl_navmesh_id;
+use crate::output_init;
 use crate::status::nl_status;
 use crate::world::nl_world;
 use std::os::raw::c_void;
@@ -60,9 +61,11 @@ pub struct nl_path_request_def {
 pub type nl_segment_kind = u32;
 pub const NL_SEGMENT_WALK: nl_segment_kind = 0;
 
+/// An array element that may grow: the library lays out an output array with the first element's `size`.
 #[repr(C)]
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub struct nl_path_point {
+    pub size: u32,
     pub position: [f32; 3],
     pub polygon: u32,
     pub segment: nl_segment_kind,
@@ -72,8 +75,13 @@ pub struct nl_path_point {
     pub reserved: [u8; 3],
 }
 
+pub fn nl_path_point_init() -> nl_path_point {
+    unsafe { output_init() }
+}
+default_is_init!(nl_path_point, nl_path_point_init);
+
 #[repr(C)]
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub struct nl_path_result {
     pub size: u32,
     pub outcome: nl_path_outcome,
@@ -89,8 +97,38 @@ pub struct nl_path_result {
     pub goal: [f32; 3],
 }
 
+pub fn nl_path_result_init() -> nl_path_result {
+    unsafe { output_init() }
+}
+default_is_init!(nl_path_result, nl_path_result_init);
+
+/// How much `nl_path_process` may do in one call. Get one from `nl_default_path_budget()`.
 #[repr(C)]
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct nl_path_budget {
+    pub size: u32,
+    pub max_requests: u32,
+    pub max_milliseconds: f64,
+    pub max_search_nodes: u64,
+}
+
+/// A request that finished, as `nl_path_take_finished` reports it. An array element that may grow.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct nl_path_finished {
+    pub size: u32,
+    pub outcome: nl_path_outcome,
+    pub ticket: nl_path_ticket,
+    pub user: *mut c_void,
+}
+
+pub fn nl_path_finished_init() -> nl_path_finished {
+    unsafe { output_init() }
+}
+default_is_init!(nl_path_finished, nl_path_finished_init);
+
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct nl_path_queue_stats {
     pub size: u32,
     pub workers: u32,
@@ -101,6 +139,11 @@ pub struct nl_path_queue_stats {
     pub submitted: u64,
     pub finished: u64,
 }
+
+pub fn nl_path_queue_stats_init() -> nl_path_queue_stats {
+    unsafe { output_init() }
+}
+default_is_init!(nl_path_queue_stats, nl_path_queue_stats_init);
 
 extern "C" {
     pub fn nl_default_agent_capabilities() -> nl_agent_capabilities;
@@ -127,11 +170,14 @@ extern "C" {
     ) -> nl_status;
     pub fn nl_path_cancel(world: *mut nl_world, ticket: nl_path_ticket) -> nl_status;
     pub fn nl_path_release(world: *mut nl_world, ticket: nl_path_ticket) -> nl_status;
-    pub fn nl_path_process(
+    pub fn nl_default_path_budget() -> nl_path_budget;
+    pub fn nl_path_process(world: *mut nl_world, budget: *const nl_path_budget, out_processed: *mut u32) -> nl_status;
+    pub fn nl_path_take_finished(
         world: *mut nl_world,
-        max_requests: u32,
-        max_milliseconds: f64,
-        out_processed: *mut u32,
+        out_finished: *mut nl_path_finished,
+        capacity: u32,
+        out_count: *mut u32,
+        out_remaining: *mut u32,
     ) -> nl_status;
     pub fn nl_path_get_queue_stats(world: *const nl_world, out_stats: *mut nl_path_queue_stats) -> nl_status;
 }

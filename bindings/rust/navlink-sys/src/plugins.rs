@@ -2,6 +2,7 @@
 use crate::level::{nl_ray, nl_ray_hit, nl_segment};
 use crate::links::{nl_link_def, nl_link_kind};
 use crate::navmesh::{nl_boundary_edge, nl_nav_point, nl_navmesh_build_def, nl_navmesh_def, nl_navmesh_id, nl_navmesh_info};
+use crate::output_init;
 use crate::status::nl_status;
 use crate::world::{nl_log_level, nl_world};
 use std::os::raw::{c_char, c_void};
@@ -15,10 +16,9 @@ pub struct nl_plugin_id {
 
 pub const NL_PLUGIN_NAVMESH_BUILDER: u32 = 0x1;
 pub const NL_PLUGIN_LINK_KIND: u32 = 0x2;
-pub const NL_PLUGIN_PATH_MODIFIER: u32 = 0x4;
 
 #[repr(C)]
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct nl_plugin_description {
     pub size: u32,
     pub abi_version: u32,
@@ -28,6 +28,11 @@ pub struct nl_plugin_description {
     pub version: *const c_char,
     pub description: *const c_char,
 }
+
+pub fn nl_plugin_description_init() -> nl_plugin_description {
+    unsafe { output_init() }
+}
+default_is_init!(nl_plugin_description, nl_plugin_description_init);
 
 pub const NL_PLUGIN_ABI_VERSION: u32 = 1;
 /// `NL_PLUGIN_ENTRY_SYMBOL`, NUL-terminated.

@@ -88,7 +88,7 @@ impl World {
     }
 
     pub fn mesh_info(&self, mesh: MeshId) -> Result<MeshInfo> {
-        let mut info = MeshInfo { size: std::mem::size_of::<MeshInfo>() as u32, ..Default::default() };
+        let mut info = MeshInfo::default(); // size set
         check(unsafe { sys::nl_mesh_get_info(self.raw(), mesh, &mut info) })?;
         Ok(info)
     }
@@ -97,10 +97,13 @@ impl World {
         two_call(|buffer, capacity, count| unsafe { sys::nl_world_get_meshes(self.raw(), buffer, capacity, count) })
     }
 
-    /// Casts every ray into `hits` (one per ray).
+    /// Casts every ray into `hits` (one per ray; their contents are overwritten, `size` included).
     pub fn cast_rays_into(&self, rays: &[Ray], hits: &mut [RayHit]) -> Result<()> {
         if hits.len() < rays.len() {
             return Err(Error::binding(sys::NL_STATUS_INVALID_ARGUMENT, "cast_rays_into: fewer hits than rays".into()));
+        }
+        if let Some(first) = hits.first_mut() {
+            *first = RayHit::default(); // the element size the library writes with
         }
         check(unsafe { sys::nl_world_cast_rays(self.raw(), rays.as_ptr(), rays.len() as u32, hits.as_mut_ptr()) }).map(drop)
     }

@@ -7,7 +7,9 @@
 //!   which only `Drop` calls, when no borrow is left.
 //! - Failures are [`Error`]s: the `nl_status` and the library's message for the failing call.
 //! - Value types (ids, rays, links, path points...) are navlink-sys's `#[repr(C)]` structs under Rust
-//!   names; lists come back as `Vec`s, batch queries take slices.
+//!   names; lists come back as `Vec`s, batch queries take slices. Output structs that may grow (`Link`,
+//!   `PathPoint`, `RayHit`...) start with `size`: their `Default` sets it, and every method that hands
+//!   the library an output sets it too.
 //! - Callbacks are closures behind trampolines that catch panics: a panic never unwinds into C.
 mod callbacks;
 mod error;
@@ -24,7 +26,7 @@ pub use error::{status_string, Error, Result};
 pub use level::MeshOptions;
 pub use links::{default_link_def, default_link_settings, link_settings_from_json, Progress};
 pub use navmesh::{default_agent_type, default_recast_settings, NavmeshBuild, NavmeshDetail, NavmeshInput};
-pub use paths::{default_agent_capabilities, PathOutcome, PathQuery, PathResult};
+pub use paths::{default_agent_capabilities, FinishedPath, PathBudget, PathOutcome, PathQuery, PathResult};
 pub use plugins::PluginSummary;
 pub use types::*;
 pub use world::{LogFn, World, WorldOptions};

@@ -12,7 +12,8 @@ use std::ptr;
 /// Link generation progress: (fraction done, stage name) -> go on? Called on the thread that started the generation.
 pub type Progress<'a> = &'a mut dyn FnMut(f32, &str) -> bool;
 
-/// A manual one-way link, enabled, cost modifier 1: set start and end.
+/// A manual one-way link, enabled, cost modifier 1, requirements measured from its ends
+/// (`requirements_from_ends` 1): set start and end.
 pub fn default_link_def() -> LinkDef {
     unsafe { sys::nl_default_link_def() }
 }
@@ -72,13 +73,14 @@ impl World {
     }
 
     pub fn link(&self, link: LinkId) -> Result<Link> {
-        let mut out = Link::default();
+        let mut out = Link::default(); // size set
         check(unsafe { sys::nl_link_get(self.raw(), link, &mut out) })?;
         Ok(out)
     }
 
     /// The navmesh's links (generated and manual), in the order they were added.
     pub fn links(&self, navmesh: NavmeshId) -> Result<Vec<Link>> {
+        // two_call's buffer is of Link::default(), whose size tells the library the element size.
         two_call(|buffer, capacity, count| unsafe { sys::nl_navmesh_get_links(self.raw(), navmesh, buffer, capacity, count) })
     }
 
@@ -104,7 +106,7 @@ impl World {
             settings.plugin_settings_json = non_null(json);
             settings.plugin_settings_json_length = json.len();
         }
-        let mut report = LinkGenerationReport { size: std::mem::size_of::<LinkGenerationReport>() as u32, ..Default::default() };
+        let mut report = LinkGenerationReport::default(); // size set
         with_progress(progress, |function, user| unsafe {
             sys::nl_navmesh_generate_links(self.raw(), navmesh, &settings, function, user, &mut report)
         })?;
@@ -119,7 +121,7 @@ impl World {
         box_max: [f32; 3],
         progress: Option<Progress<'_>>,
     ) -> Result<LinkGenerationReport> {
-        let mut report = LinkGenerationReport { size: std::mem::size_of::<LinkGenerationReport>() as u32, ..Default::default() };
+        let mut report = LinkGenerationReport::default(); // size set
         with_progress(progress, |function, user| unsafe {
             sys::nl_navmesh_update_links_in_box(self.raw(), navmesh, box_min.as_ptr(), box_max.as_ptr(), function, user, &mut report)
         })?;

@@ -122,7 +122,7 @@ impl World {
     }
 
     pub fn navmesh_info(&self, navmesh: NavmeshId) -> Result<NavmeshInfo> {
-        let mut info = NavmeshInfo { size: std::mem::size_of::<NavmeshInfo>() as u32, ..Default::default() };
+        let mut info = NavmeshInfo::default(); // size set
         check(unsafe { sys::nl_navmesh_get_info(self.raw(), navmesh, &mut info) })?;
         Ok(info)
     }
@@ -135,7 +135,7 @@ impl World {
     }
 
     pub fn polygon(&self, navmesh: NavmeshId, polygon: u32) -> Result<NavPolygon> {
-        let mut out = NavPolygon::default();
+        let mut out = NavPolygon::default(); // size set
         check(unsafe { sys::nl_navmesh_get_polygon(self.raw(), navmesh, polygon, &mut out) })?;
         Ok(out)
     }

@@ -104,21 +104,83 @@ impl PathResult {
     }
 }
 
+/// How much `process_paths` may do in one call (`nl_path_budget`). `Default`: no limits. A request is
+/// never split: the budget is checked between requests, so a call that finds the queue non-empty plans
+/// at least one, and the request that crosses a limit finishes.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PathBudget {
+    /// Requests planned at most; 0: no limit.
+    pub max_requests: u32,
+    /// Time spent at most; <= 0: no limit.
+    pub max_milliseconds: f64,
+    /// Polygons the searches may visit in all (their `nodes_visited` added up); 0: no limit. Bounds a
+    /// frame by work, whatever the clock does.
+    pub max_search_nodes: u64,
+}
+
+impl Default for PathBudget {
+    /// No limits (`nl_default_path_budget`).
+    fn default() -> Self {
+        let c = unsafe { sys::nl_default_path_budget() };
+        PathBudget { max_requests: c.max_requests, max_milliseconds: c.max_milliseconds, max_search_nodes: c.max_search_nodes }
+    }
+}
+
+impl PathBudget {
+    /// No limits: plan until the queue is empty.
+    pub fn unlimited() -> Self {
+        Self::default()
+    }
+
+    /// At most `max_requests` requests.
+    pub fn requests(max_requests: u32) -> Self {
+        PathBudget { max_requests, ..Self::default() }
+    }
+
+    /// Until `max_milliseconds` have passed (checked between requests).
+    pub fn milliseconds(max_milliseconds: f64) -> Self {
+        PathBudget { max_milliseconds, ..Self::default() }
+    }
+
+    /// Until the searches have visited `max_search_nodes` polygons (checked between requests).
+    pub fn search_nodes(max_search_nodes: u64) -> Self {
+        PathBudget { max_search_nodes, ..Self::default() }
+    }
+
+    fn to_c(self) -> sys::nl_path_budget {
+        let mut c = unsafe { sys::nl_default_path_budget() };
+        c.max_requests = self.max_requests;
+        c.max_milliseconds = self.max_milliseconds;
+        c.max_search_nodes = self.max_search_nodes;
+        c
+    }
+}
+
+/// A request that finished, as `take_finished_paths` reports it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct FinishedPath {
+    pub ticket: PathTicket,
+    pub outcome: PathOutcome,
+}
+
 fn empty_result() -> sys::nl_path_result {
-    sys::nl_path_result { size: std::mem::size_of::<sys::nl_path_result>() as u32, ..Default::default() }
+    sys::nl_path_result_init()
 }
 
 fn buffer_too_small(status: u32) -> bool {
     sys::nl_failed(status) && status & sys::NL_STATUS_BUFFER_TOO_SMALL != 0
 }
 
-// Points fetched in one go by find_path when the path has no more; longer ones are planned again.
+// Points fetched in one go by find_path when the path has no more; longer ones take a second call.
 const FIRST_POINT_CAPACITY: usize = 64;
+// Finished requests taken per call at first by take_finished_paths; more calls take the rest.
+const FINISHED_CHUNK: usize = 16;
 
 impl World {
     /// Plans a path now, on this thread (for tools and tests; games queue requests).
     pub fn find_path(&self, query: &PathQuery) -> Result<PathResult> {
         let def = query.def();
+        // PathPoint::default() sets the size the library lays the points out with.
         let mut points = vec![PathPoint::default(); FIRST_POINT_CAPACITY];
         loop {
             let mut info = empty_result();
@@ -127,7 +189,7 @@ impl World {
                 sys::nl_path_find(self.raw(), &def, &mut info, points.as_mut_ptr(), points.len() as u32, &mut count)
             };
             if buffer_too_small(status) {
-                // nl_path_find cannot hand back points it had no room for: plan again with room.
+                // More points than room: this thread kept the plan, the second call copies it.
                 points = vec![PathPoint::default(); count as usize];
                 continue;
             }
@@ -212,15 +274,43 @@ impl World {
         check(unsafe { sys::nl_path_release(self.raw(), ticket) }).map(drop)
     }
 
-    /// Plans queued requests on this thread (0 and <= 0: no limits); returns how many finished here.
-    pub fn process_paths(&self, max_requests: u32, max_milliseconds: f64) -> Result<u32> {
+    /// Plans queued requests on this thread until the queue is empty or the budget is spent; returns how
+    /// many finished here. How a world with `path_worker_count` 0 runs its queue, e.g.
+    /// `world.process_paths(PathBudget::milliseconds(2.0))` each frame.
+    pub fn process_paths(&self, budget: PathBudget) -> Result<u32> {
+        let budget = budget.to_c();
         let mut processed = 0;
-        check(unsafe { sys::nl_path_process(self.raw(), max_requests, max_milliseconds, &mut processed) })?;
+        check(unsafe { sys::nl_path_process(self.raw(), &budget, &mut processed) })?;
         Ok(processed)
     }
 
+    /// The requests that finished since the last call, oldest first, each reported once: the way to
+    /// learn of finished requests on your own thread without a closure (closures still run too).
+    /// Requests whose ticket was released are not reported.
+    pub fn take_finished_paths(&self) -> Result<Vec<FinishedPath>> {
+        let mut taken = Vec::new();
+        // nl_path_finished::default() sets the size the library lays the array out with.
+        let mut buffer = vec![sys::nl_path_finished::default(); FINISHED_CHUNK];
+        loop {
+            let (mut count, mut remaining) = (0u32, 0u32);
+            check(unsafe {
+                sys::nl_path_take_finished(self.raw(), buffer.as_mut_ptr(), buffer.len() as u32, &mut count, &mut remaining)
+            })?;
+            taken.extend(buffer[..count as usize].iter().map(|f| FinishedPath {
+                ticket: f.ticket,
+                outcome: PathOutcome::from_raw(f.outcome),
+            }));
+            if remaining == 0 {
+                return Ok(taken);
+            }
+            if remaining as usize > buffer.len() {
+                buffer = vec![sys::nl_path_finished::default(); remaining as usize];
+            }
+        }
+    }
+
     pub fn path_queue_stats(&self) -> Result<PathQueueStats> {
-        let mut stats = PathQueueStats { size: std::mem::size_of::<PathQueueStats>() as u32, ..Default::default() };
+        let mut stats = PathQueueStats::default(); // size set
         check(unsafe { sys::nl_path_get_queue_stats(self.raw(), &mut stats) })?;
         Ok(stats)
     }

@@ -43,15 +43,7 @@ impl World {
     }
 
     pub fn plugin_description(&self, plugin: PluginId) -> Result<PluginSummary> {
-        let mut d = sys::nl_plugin_description {
-            size: std::mem::size_of::<sys::nl_plugin_description>() as u32,
-            abi_version: 0,
-            kinds: 0,
-            builtin: 0,
-            name: std::ptr::null(),
-            version: std::ptr::null(),
-            description: std::ptr::null(),
-        };
+        let mut d = sys::nl_plugin_description_init();
         check(unsafe { sys::nl_plugin_get_description(self.raw(), plugin, &mut d) })?;
         // The strings belong to the world; copied while it is borrowed.
         unsafe {

@@ -107,7 +107,23 @@ fn invalid_input_and_the_log_callback() {
         let mut count = 0;
         assert_eq!(sys::nl_world_get_meshes(world.as_ptr(), std::ptr::null_mut(), 0, &mut count), status::SUCCESS);
         assert_eq!(*sys::nl_get_last_error_message(), 0, "a success clears the message");
+
+        // Output arrays of growable elements: the library reads the element size from the first element,
+        // which Default (nl_ray_hit_init) and the safe API set, and a raw caller must.
+        let ray = down(0.0, 0.0);
+        let mut hits: [sys::nl_ray_hit; 1] = std::mem::zeroed();
+        let s = sys::nl_world_cast_rays(world.as_ptr(), &ray, 1, hits.as_mut_ptr());
+        assert!(sys::nl_failed(s) && s & status::INVALID_ARGUMENT != 0);
+        let message = std::ffi::CStr::from_ptr(sys::nl_get_last_error_message()).to_str().unwrap();
+        assert!(message.contains("out_hits"), "{}", message);
+        hits[0] = sys::nl_ray_hit_init();
+        assert_eq!(sys::nl_world_cast_rays(world.as_ptr(), &ray, 1, hits.as_mut_ptr()), status::SUCCESS);
+        assert!(hits[0].hit == 1 && hits[0].size as usize == std::mem::size_of::<sys::nl_ray_hit>());
     }
+    // The safe API sets it in a slice the caller made any way it liked.
+    let mut mine: [navlink::RayHit; 2] = unsafe { std::mem::zeroed() };
+    world.cast_rays_into(&[down(0.0, 0.0), down(9.0, 9.0)], &mut mine).unwrap();
+    assert!(mine[0].hit == 1 && mine[1].hit == 0 && mine[1].size == mine[0].size && mine[0].size != 0);
 }
 
 #[test]

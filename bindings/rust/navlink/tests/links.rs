@@ -2,7 +2,10 @@
 mod common;
 
 use common::*;
-use navlink::{default_agent_type, default_link_def, link_kind, link_settings_from_json, status, NavmeshBuild, NavmeshId, World};
+use navlink::{
+    default_agent_capabilities, default_agent_type, default_link_def, link_kind, link_settings_from_json, status, AgentCapabilities,
+    NavmeshBuild, NavmeshId, PathOutcome, PathQuery, World,
+};
 
 fn gap_world() -> (World, NavmeshId) {
     let world = World::new().unwrap();
@@ -67,14 +70,33 @@ fn manual_links_and_json() {
     let generated = world.links(navmesh).unwrap().len() as u32;
 
     let mut def = default_link_def();
-    assert!(def.kind == link_kind::MANUAL && def.enabled == 1 && def.cost_modifier == 1.0);
+    assert!(def.kind == link_kind::MANUAL && def.enabled == 1 && def.cost_modifier == 1.0 && def.requirements_from_ends == 1);
     def.start = [-5.0, 0.0, 4.0];
     def.end = [5.0, 0.0, 4.0];
     def.user_data = 7;
+    def.requirements.gap = 99.0; // measured from the ends instead
     let manual = world.add_link(navmesh, &def).unwrap();
     let got = world.link(manual).unwrap();
-    assert!(got.kind == link_kind::MANUAL && got.generated == 0 && got.user_data == 7);
-    assert!((got.requirements.gap - 10.0).abs() < 1e-4, "the gap is computed from the ends");
+    assert!(got.kind == link_kind::MANUAL && got.generated == 0 && got.user_data == 7 && got.id == manual && got.navmesh == navmesh);
+    assert!((got.requirements.gap - 10.0).abs() < 1e-4, "the gap is measured from the ends: {}", got.requirements.gap);
+
+    // Requirements taken as given: a link across the gap that asks only for an ability.
+    let mut ability = default_link_def();
+    ability.start = [-5.0, 0.0, -4.0];
+    ability.end = [5.0, 0.0, -4.0];
+    ability.requirements_from_ends = 0;
+    ability.requirements.abilities = 4;
+    let ability_link = world.add_link(navmesh, &ability).unwrap();
+    let r = world.link(ability_link).unwrap().requirements;
+    assert!(r.gap == 0.0 && r.rise == 0.0 && r.abilities == 4 && (r.length - 10.0).abs() < 1e-4,
+            "requirements as given, the length of 0 measured: {:?}", r);
+    let able = AgentCapabilities { abilities: 4, ..default_agent_capabilities() };
+    let across = world.find_path(&PathQuery::new(navmesh, WEST, EAST, able)).unwrap();
+    assert!(across.outcome() == PathOutcome::Complete && across.points.iter().any(|p| p.link == ability_link),
+            "a walker with the ability crosses on that link: {:?}", across.outcome());
+    let stuck = world.find_path(&PathQuery::new(navmesh, WEST, EAST, default_agent_capabilities())).unwrap();
+    assert_eq!(stuck.outcome(), PathOutcome::Partial, "a walker without it does not");
+    world.remove_link(ability_link).unwrap();
     def.enabled = 0;
     world.update_link(manual, &def).unwrap();
     assert_eq!(world.link(manual).unwrap().enabled, 0);

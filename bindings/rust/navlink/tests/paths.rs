@@ -5,7 +5,8 @@ mod common;
 
 use common::*;
 use navlink::{
-    default_agent_type, link_kind, status, NavmeshBuild, NavmeshId, PathOutcome, PathQuery, PathResult, World, WorldOptions,
+    default_agent_type, link_kind, status, FinishedPath, NavmeshBuild, NavmeshId, PathBudget, PathOutcome, PathQuery, PathResult,
+    World, WorldOptions,
 };
 use std::sync::mpsc;
 use std::sync::{Arc, Mutex};
@@ -124,8 +125,8 @@ fn queued_and_run_by_the_host() {
     world.cancel_path(doomed).unwrap();
     assert_eq!(*seen.lock().unwrap(), Some((PathOutcome::Cancelled, std::thread::current().id())),
                "a queued request cancels at once, its closure on the cancelling thread");
-    assert_fails(world.process_paths(0, f64::NAN), status::INVALID_ARGUMENT, "nl_path_process");
-    assert_eq!(world.process_paths(0, 0.0).unwrap(), 1);
+    assert_fails(world.process_paths(PathBudget::milliseconds(f64::NAN)), status::INVALID_ARGUMENT, "nl_path_process");
+    assert_eq!(world.process_paths(PathBudget::default()).unwrap(), 1);
     check_jumper_across(&world, &world.path_result(jumper_ticket).unwrap().expect("planned by the host"));
     let stats = world.path_queue_stats().unwrap();
     assert!(stats.finished == 2 && stats.unreleased == 2 && stats.queued == 0, "{:?}", stats);
@@ -139,11 +140,93 @@ fn queued_and_run_by_the_host() {
 }
 
 #[test]
+fn budgets_and_finished_requests_taken_by_the_host() {
+    let world = World::with_options(WorldOptions { path_worker_count: 0, ..Default::default() }).unwrap();
+    let navmesh = gap_level_with_links(&world);
+    let jumper_query = PathQuery::new(navmesh, WEST, EAST, jumper());
+    let walker_query = PathQuery::new(navmesh, WEST, EAST, walker());
+    assert_eq!(world.take_finished_paths().unwrap(), vec![], "nothing finished yet");
+    let default = PathBudget::default();
+    assert!(default == PathBudget::unlimited() && default.max_requests == 0 && default.max_milliseconds == 0.0 && default.max_search_nodes == 0);
+
+    // Budgets: a request is never split, so each limit lets one request through.
+    let a = world.request_path(&jumper_query).unwrap();
+    let b = world.request_path(&walker_query).unwrap();
+    assert_eq!(world.process_paths(PathBudget::requests(1)).unwrap(), 1);
+    assert!(world.poll_path(a).unwrap() == PathOutcome::Complete && world.poll_path(b).unwrap() == PathOutcome::Pending);
+    let c = world.request_path(&jumper_query).unwrap();
+    let d = world.request_path(&walker_query).unwrap();
+    let e = world.request_path(&jumper_query).unwrap();
+    assert_eq!(world.process_paths(PathBudget::search_nodes(1)).unwrap(), 1, "the request that crosses the limit");
+    assert!(world.poll_path(b).unwrap() == PathOutcome::Partial && world.poll_path(c).unwrap() == PathOutcome::Pending);
+    assert_eq!(world.process_paths(PathBudget { max_search_nodes: 1, ..Default::default() }).unwrap(), 1);
+    assert_eq!(world.poll_path(d).unwrap(), PathOutcome::Pending);
+    assert_eq!(world.process_paths(PathBudget::milliseconds(1e-6)).unwrap(), 1, "a budget of 1 ns: one request");
+    assert_eq!(world.poll_path(e).unwrap(), PathOutcome::Pending);
+    assert_eq!(world.process_paths(PathBudget::unlimited()).unwrap(), 1, "no limits: the rest");
+
+    // Each finished request once, oldest first, with its outcome.
+    let finished = |ticket, outcome| FinishedPath { ticket, outcome };
+    assert_eq!(world.take_finished_paths().unwrap(), vec![
+        finished(a, PathOutcome::Complete),
+        finished(b, PathOutcome::Partial),
+        finished(c, PathOutcome::Complete),
+        finished(d, PathOutcome::Partial),
+        finished(e, PathOutcome::Complete),
+    ]);
+    assert_eq!(world.take_finished_paths().unwrap(), vec![], "each is taken once");
+
+    // Released tickets are not reported, finished or cancelled; cancelled ones are.
+    let (sender, calls) = mpsc::channel();
+    let released = world.request_path_with(&jumper_query, move |_, o| sender.send(o).unwrap()).unwrap();
+    let cancelled = world.request_path(&walker_query).unwrap();
+    let kept = world.request_path(&jumper_query).unwrap();
+    let released_later = world.request_path(&walker_query).unwrap();
+    world.release_path(released).unwrap();
+    world.cancel_path(cancelled).unwrap();
+    assert_eq!(world.process_paths(PathBudget::default()).unwrap(), 2);
+    assert_eq!(calls.try_iter().collect::<Vec<_>>(), vec![PathOutcome::Cancelled], "the released request called back once");
+    world.release_path(released_later).unwrap();
+    assert_eq!(world.take_finished_paths().unwrap(), vec![finished(cancelled, PathOutcome::Cancelled), finished(kept, PathOutcome::Complete)]);
+
+    // More than the binding takes in one call (16) come back in one Vec, in order.
+    let many: Vec<_> = (0..40).map(|i| world.request_path(if i % 2 == 0 { &jumper_query } else { &walker_query }).unwrap()).collect();
+    assert_eq!(world.process_paths(PathBudget::default()).unwrap(), 40);
+    let expected: Vec<_> = many
+        .iter()
+        .enumerate()
+        .map(|(i, &t)| finished(t, if i % 2 == 0 { PathOutcome::Complete } else { PathOutcome::Partial }))
+        .collect();
+    assert_eq!(world.take_finished_paths().unwrap(), expected);
+
+    // The raw call: the library reads the element size from out_finished[0].size; a refusal loses nothing.
+    let raw = world.request_path(&jumper_query).unwrap();
+    world.process_paths(PathBudget::default()).unwrap();
+    unsafe {
+        let mut buffer: [navlink::sys::nl_path_finished; 2] = std::mem::zeroed();
+        let (mut count, mut remaining) = (99, 99);
+        let s = navlink::sys::nl_path_take_finished(world.as_ptr(), buffer.as_mut_ptr(), 2, &mut count, &mut remaining);
+        assert!(navlink::sys::nl_failed(s) && s & status::INVALID_ARGUMENT != 0, "an element size left at 0");
+        buffer[0] = navlink::sys::nl_path_finished_init();
+        let s = navlink::sys::nl_path_take_finished(world.as_ptr(), buffer.as_mut_ptr(), 2, &mut count, &mut remaining);
+        assert!(s == status::SUCCESS && count == 1 && remaining == 0 && buffer[0].ticket == raw && buffer[0].user.is_null());
+        assert_eq!(buffer[0].outcome, navlink::sys::NL_PATH_COMPLETE);
+        // A budget whose size is too small is refused by name.
+        let mut small = navlink::sys::nl_default_path_budget();
+        small.size = 8;
+        let s = navlink::sys::nl_path_process(world.as_ptr(), &small, std::ptr::null_mut());
+        assert!(navlink::sys::nl_failed(s) && s & status::INVALID_ARGUMENT != 0);
+        let message = std::ffi::CStr::from_ptr(navlink::sys::nl_get_last_error_message()).to_str().unwrap();
+        assert!(message.contains("budget"), "{}", message);
+    }
+}
+
+#[test]
 fn a_panicking_path_closure_is_contained() {
     let world = World::with_options(WorldOptions { path_worker_count: 0, ..Default::default() }).unwrap();
     let navmesh = gap_level_with_links(&world);
     let ticket = world.request_path_with(&PathQuery::new(navmesh, WEST, EAST, jumper()), |_, _| panic!("closure panics")).unwrap();
-    assert_eq!(world.process_paths(0, 0.0).unwrap(), 1);
+    assert_eq!(world.process_paths(PathBudget::default()).unwrap(), 1);
     assert_eq!(world.poll_path(ticket).unwrap(), PathOutcome::Complete, "the request finished normally");
 }
 
@@ -158,7 +241,7 @@ fn invalid_requests() {
     let negative = PathQuery::new(navmesh, WEST, EAST, navlink::AgentCapabilities { max_jump_distance: -1.0, ..jumper() });
     assert_fails(world.request_path(&negative), status::INVALID_ARGUMENT, "max_jump_distance");
     assert_fails(world.find_path(&PathQuery::new(navmesh, [f32::NAN, 0.0, 0.0], EAST, walker())), status::INVALID_ARGUMENT, "start");
-    world.process_paths(0, 0.0).unwrap();
+    world.process_paths(PathBudget::default()).unwrap();
     assert!(*calls.lock().unwrap() == 0 && world.path_queue_stats().unwrap().submitted == 0, "refused requests never call back");
     assert_eq!(Arc::strong_count(&calls), 1, "and their closures were freed");
     assert_fails(world.cancel_path(Default::default()), status::INVALID_HANDLE, "nl_path_cancel");
