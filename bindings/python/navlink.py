@@ -29,7 +29,7 @@ from ctypes import (CFUNCTYPE, POINTER, Structure, byref, c_char_p, c_double, c_
 # ---------------------------------------------------------------------------------------------------------
 
 # The header version this module was written from (navlink/version.h); version() is the loaded library's.
-VERSION_MAJOR, VERSION_MINOR, VERSION_PATCH = 0, 1, 0
+VERSION_MAJOR, VERSION_MINOR, VERSION_PATCH = 0, 2, 0
 
 STATUS_FAILURE = 0x80000000
 STATUS_SUCCESS = 0x40000000
@@ -215,7 +215,7 @@ class Link(_Growable):
 
 class LinkDef(Structure):
     _fields_ = [("size", c_uint32), ("kind", c_uint32), ("start", Vec3), ("end", Vec3),
-                ("bidirectional", c_uint8), ("enabled", c_uint8), ("requirements_from_ends", c_uint8),
+                ("bidirectional", c_uint8), ("enabled", c_uint8), ("requirements_as_given", c_uint8),
                 ("reserved", c_uint8), ("cost_modifier", c_float), ("user_data", c_uint64),
                 ("requirements", LinkRequirements)]
 

@@ -341,7 +341,7 @@ class LinkTest(NavLinkTestCase):
             generated = len(world.links(navmesh))
             d = nl.default_link_def()
             self.assertTrue(d.kind == nl.LINK_MANUAL and d.enabled == 1 and d.cost_modifier == 1 and
-                            d.requirements_from_ends == 1)
+                            d.requirements_as_given == 0)
             d.start, d.end, d.user_data = nl.Vec3(-5, 0, 4), nl.Vec3(5, 0, 4), 7
             d.requirements.gap = 99  # measured from the ends instead
             manual = world.add_link(navmesh, d)
@@ -353,7 +353,7 @@ class LinkTest(NavLinkTestCase):
             # Requirements taken as given: a link across the gap that asks only for an ability.
             ability = nl.default_link_def()
             ability.start, ability.end = nl.Vec3(-5, 0, -4), nl.Vec3(5, 0, -4)
-            ability.requirements_from_ends, ability.requirements.abilities = 0, 4
+            ability.requirements_as_given, ability.requirements.abilities = 1, 4
             ability_link = world.add_link(navmesh, ability)
             r = world.link(ability_link).requirements
             self.assertEqual((r.gap, r.rise, r.drop, r.abilities), (0, 0, 0, 4))

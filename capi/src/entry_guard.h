@@ -7,6 +7,7 @@
 #include <memory>
 #include <cstring>
 #include <new>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -99,36 +100,48 @@ private:
     uint32_t stride_ = 0;
 };
 
-// list_into for growable elements.
+// list_into for growable elements. The caller's element size is checked whenever it hands over a
+// buffer, whether or not there is anything to write, so an unset one is found on the first call.
 template <typename Item, typename Out, typename Convert>
 void list_growable_into(const std::vector<Item>& items, Out* out, uint32_t capacity, uint32_t* out_count,
                         size_t first_version_size, const char* out_name, Convert&& convert) {
+    require(out_count, "out_count");
+    if (!out && capacity > 0) fail(ErrorCode::InvalidArgument, out_name, " is null but capacity is ", capacity);
+    std::optional<ElementWriter<Out>> writer;
+    if (out && capacity > 0) writer.emplace(out, first_version_size, out_name);
     list_into(items.size(), out, capacity, out_count, out_name, [&] {
-        if (items.empty()) return;
-        const ElementWriter<Out> writer(out, first_version_size, out_name);
-        for (size_t i = 0; i < items.size(); ++i) writer.write(i, convert(items[i]));
+        for (size_t i = 0; i < items.size(); ++i) writer->write(i, convert(items[i]));
     });
 }
 
 // Growable structs: a caller built against an older header passes a smaller `size`. Fields it does
 // not have keep their defaults; `first_version_size` is where the struct's first release ended
 // (offsetof + sizeof of its last field then), which is all the library can require.
+// A size that is not a multiple of the struct's alignment cannot be a struct's sizeof, and could end
+// inside a field (half a pointer copied).
 template <typename T>
 T read_growable(const T& in, T defaults, size_t first_version_size, const char* name) {
-    if (in.size < first_version_size)
-        fail(ErrorCode::InvalidArgument, name, "->size is ", in.size, ", expected at least ", first_version_size,
-             " (initialise it from its nl_default_* function or with sizeof)");
+    if (in.size < first_version_size || in.size % alignof(T) != 0)
+        fail(ErrorCode::InvalidArgument, name, "->size is ", in.size, ", expected sizeof (at least ", first_version_size,
+             ", a multiple of ", alignof(T), "; initialise it from its nl_default_* function or with sizeof)");
     std::memcpy(&defaults, &in, std::min<size_t>(in.size, sizeof(T)));
     defaults.size = static_cast<uint32_t>(sizeof(T));
     return defaults;
 }
 
+// Throws unless the caller's output struct has a size the library can write into; a call that
+// changes the world checks it before the change, so a refusal changes nothing.
+template <typename T>
+void check_growable_output(const T* out, size_t first_version_size, const char* name) {
+    if (out->size < first_version_size || out->size % alignof(T) != 0)
+        fail(ErrorCode::InvalidArgument, name, "->size is ", out->size, ", expected sizeof (at least ", first_version_size,
+             ", a multiple of ", alignof(T), "; set it to sizeof or with its nl_*_init function)");
+}
+
 // Writes an output struct into as many bytes as the caller's struct has (its `size`, kept as is).
 template <typename T>
 void write_growable(T* out, const T& value, size_t first_version_size, const char* name) {
-    if (out->size < first_version_size)
-        fail(ErrorCode::InvalidArgument, name, "->size is ", out->size, ", expected at least ", first_version_size,
-             " (set it to sizeof)");
+    check_growable_output(out, first_version_size, name);
     const uint32_t caller_size = out->size;
     std::memcpy(out, &value, std::min<size_t>(caller_size, sizeof(T)));
     out->size = caller_size;

@@ -187,7 +187,7 @@ Link link_from_def(const nl_link_def& given) {
     l.requirements.drop = r.drop;
     l.requirements.clearance_width = r.clearance_width;
     l.requirements.abilities = r.abilities;
-    if (def.requirements_from_ends) set_requirements_from_ends(l);
+    if (!def.requirements_as_given) set_requirements_from_ends(l);
     else if (l.requirements.length == 0.0f) l.requirements.length = Vec3(l.end.x() - l.start.x(), 0.0f, l.end.z() - l.start.z()).norm();
     return l;
 }
@@ -201,7 +201,6 @@ NL_API nl_link_def nl_default_link_def(void) {
     def.size = sizeof def;
     def.kind = NL_LINK_MANUAL;
     def.enabled = 1;
-    def.requirements_from_ends = 1;
     def.cost_modifier = 1.0f;
     return def;
 }
@@ -292,8 +291,7 @@ NL_API nl_status nl_navmesh_generate_links(nl_world* world, nl_navmesh_id navmes
         if (!given.plugin_settings_json && given.plugin_settings_json_length != 0)
             fail(ErrorCode::InvalidArgument, "settings->plugin_settings_json is null but settings->plugin_settings_json_length is ",
                  given.plugin_settings_json_length);
-        if (out_report && out_report->size < kReportFirstSize)
-            fail(ErrorCode::InvalidArgument, "out_report->size is ", out_report->size, " (set it to sizeof)");
+        if (out_report) nl::capi::check_growable_output(out_report, kReportFirstSize, "out_report");
         const nl::LinkSettings core_settings = nl::naming_fields("settings->", [&] {
             nl::LinkSettings s = to_core(given);
             nl::validate(s);
@@ -323,8 +321,7 @@ NL_API nl_status nl_navmesh_update_links_in_box(nl_world* world, nl_navmesh_id n
         box.max = nl::Vec3(box_max[0], box_max[1], box_max[2]);
         if (!nl::within_coordinate_limit(box.min) || !nl::within_coordinate_limit(box.max) || box.empty())
             fail(ErrorCode::InvalidArgument, "box_min and box_max must be finite, within the limit, and min <= max");
-        if (out_report && out_report->size < kReportFirstSize)
-            fail(ErrorCode::InvalidArgument, "out_report->size is ", out_report->size, " (set it to sizeof)");
+        if (out_report) nl::capi::check_growable_output(out_report, kReportFirstSize, "out_report");
         const nl::LinkGenerationReport report = [&] {
             try {
                 return w.update_links_in_box(to_handle(navmesh), box, progress_of(progress, user));

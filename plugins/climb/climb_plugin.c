@@ -169,7 +169,7 @@ static nl_status generate(void* state, const nl_plugin_host* host, nl_navmesh_id
             link.enabled = 1;
             link.cost_modifier = 2.0f; /* climbing is slower than walking */
             /* A climb asks for the ability, not for a jump's or a drop's reach. */
-            link.requirements_from_ends = 0;
+            link.requirements_as_given = 1;
             link.requirements.abilities = 1ull << s.ability_bit;
             status = sink(sink_context, &link);
         }

@@ -33,7 +33,7 @@ nl_link_def ladder_def(const levelgen::GeneratedLevel& level) {
     def.bidirectional = 0;
     // Measured from its ends it would be a 2 m jump up; a ladder asks for the ability, and the step
     // onto its first rung.
-    def.requirements_from_ends = 0;
+    def.requirements_as_given = 1;
     def.requirements.rise = 0.3f;
     def.requirements.abilities = kClimbAbility;
     return def;

@@ -47,7 +47,6 @@ nl_ray down_ray(float x, float z, float from_y, float max_distance) {
 nl_ray_hit cast_down(nl_world* world, float x, float z) {
     const nl_ray r = down_ray(x, z, 5.0f, INFINITY);
     nl_ray_hit h = nl_ray_hit_init();
-    memset(&h, 0, sizeof h);
     if (NL_FAILED(nl_world_cast_rays(world, &r, 1, &h))) memset(&h, 0, sizeof h);
     return h;
 }

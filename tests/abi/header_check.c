@@ -149,7 +149,7 @@ _Static_assert(offsetof(nl_link, size) == 0 && offsetof(nl_link, kind) == 4 && o
 /* Growable link structs: only today's offsets are fixed. */
 _Static_assert(offsetof(nl_link_def, size) == 0 && offsetof(nl_link_def, kind) == 4 && offsetof(nl_link_def, start) == 8 &&
                    offsetof(nl_link_def, end) == 20 && offsetof(nl_link_def, bidirectional) == 32 &&
-                   offsetof(nl_link_def, enabled) == 33 && offsetof(nl_link_def, requirements_from_ends) == 34 &&
+                   offsetof(nl_link_def, enabled) == 33 && offsetof(nl_link_def, requirements_as_given) == 34 &&
                    offsetof(nl_link_def, reserved) == 35 &&
                    offsetof(nl_link_def, cost_modifier) == 36 && offsetof(nl_link_def, user_data) == 40 &&
                    offsetof(nl_link_def, requirements) == 48,

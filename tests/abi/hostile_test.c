@@ -332,6 +332,7 @@ static void put_links(blob* s, nl_world* w) {
         put_status(s, nl_navmesh_get_links(w, AS(nl_navmesh_id, id), NULL, 0, &count));
         links = (nl_link*)calloc(count + 1u, sizeof *links);
         if (!links) exit(2);
+        links[0] = nl_link_init();
         put_status(s, nl_navmesh_get_links(w, AS(nl_navmesh_id, id), links, count, &count));
         put(s, &count, sizeof count);
         put(s, links, count * sizeof *links);
@@ -359,6 +360,7 @@ static void put_path(blob* s, const world_fixture* f, path_fn* path) {
     memset(&result, 0, sizeof result);
     result.size = sizeof result;
     memset(points, 0, sizeof points);
+    points[0].size = sizeof points[0]; /* the element size the library lays out with */
     put_status(s, path(f, &result, points, 64, &count));
     put(s, &result, sizeof result);
     put(s, points, sizeof points);
@@ -385,7 +387,9 @@ static void put_link_and_rays(blob* s, const world_fixture* f) {
     nl_link link = nl_link_init();
     const int32_t valid = nl_link_is_valid(f->world, f->link);
     memset(&link, 0, sizeof link);
+    link.size = sizeof link; /* the element size the library lays out with */
     memset(hits, 0, sizeof hits);
+    hits[0].size = sizeof hits[0]; /* the element size the library lays out with */
     put(s, &valid, sizeof valid);
     put_status(s, nl_link_get(f->world, f->link, &link));
     put(s, &link, sizeof link);
@@ -831,16 +835,45 @@ static nl_status answered(int32_t valid) {
 
 /* The two-call list pattern: `call` runs the function with (out, capacity, out_count). */
 typedef nl_status list_call_fn(void* out, uint32_t capacity, uint32_t* out_count);
+/* A list of growable elements (nl_link...) is laid out with its first element's `size`: fill_items
+   sets it after filling, and `untouched` skips it. */
+static int g_growable_items;
+static void fill_items(unsigned char* items, size_t room, size_t item_size) {
+    fill(items, room);
+    if (g_growable_items) {
+        const uint32_t size = (uint32_t)item_size;
+        memcpy(items, &size, sizeof size);
+    }
+}
+static size_t skipped(void) { return g_growable_items ? sizeof(uint32_t) : 0u; }
+
 static void list_cases(const char* function, const char* out_name, size_t item_size, uint32_t expected,
                        list_call_fn* call) {
     const size_t room = (expected + 4u) * item_size;
     unsigned char* items = (unsigned char*)malloc(room);
     uint32_t count;
     if (!items) exit(2);
+    if (g_growable_items) {
+        CASE(function, "%s[0].size 0 (unset): refused, nothing written", out_name) {
+            fill_items(items, room, item_size);
+            memset(items, 0, sizeof(uint32_t));
+            count = 0xdeadbeefu;
+            EXPECT_INVALID(A.world, call(items, expected + 4u, &count), "size");
+            EXPECT_UNTOUCHED(items + sizeof(uint32_t), room - sizeof(uint32_t), out_name);
+        }
+        CASE(function, "%s[0].size odd (sizeof + 1): refused, nothing written", out_name) {
+            const uint32_t odd = (uint32_t)item_size + 1u;
+            fill_items(items, room, item_size);
+            memcpy(items, &odd, sizeof odd);
+            count = 0xdeadbeefu;
+            EXPECT_INVALID(A.world, call(items, expected + 4u, &count), "size");
+            EXPECT_UNTOUCHED(items + sizeof(uint32_t), room - sizeof(uint32_t), out_name);
+        }
+    }
     CASE(function, "out_count NULL") {
-        fill(items, room);
+        fill_items(items, room, item_size);
         EXPECT_INVALID(A.world, call(items, expected + 4u, NULL), "out_count");
-        EXPECT_UNTOUCHED(items, room, out_name);
+        EXPECT_UNTOUCHED(items + skipped(), room - skipped(), out_name);
     }
     CASE(function, "out_count NULL (counting: %s NULL too)", out_name) {
         EXPECT_INVALID(A.world, call(NULL, 0u, NULL), "out_count");
@@ -865,16 +898,16 @@ static void list_cases(const char* function, const char* out_name, size_t item_s
         int k;
         for (k = 0; k < 2; ++k) {
             CASE(function, "%s", what[k]) {
-                fill(items, room);
+                fill_items(items, room, item_size);
                 count = 0xdeadbeefu;
                 EXPECT_FAILURE(A.world, call(items, k == 0 ? 0u : expected - 1u, &count), NL_STATUS_BUFFER_TOO_SMALL, "capacity");
                 EXPECT(count == expected, "out_count = %u, expected the %u needed", (unsigned)count, (unsigned)expected);
-                EXPECT_UNTOUCHED(items, room, out_name);
+                EXPECT_UNTOUCHED(items + skipped(), room - skipped(), out_name);
             }
         }
     }
     CASE(function, "capacity huge (a buffer of %u + 4 entries: only %u written)", (unsigned)expected, (unsigned)expected) {
-        fill(items, room);
+        fill_items(items, room, item_size);
         count = 0xdeadbeefu;
         EXPECT_OK(call(items, UINT32_MAX, &count));
         EXPECT(count == expected, "out_count = %u, expected %u", (unsigned)count, (unsigned)expected);
@@ -2030,7 +2063,9 @@ static uint32_t link_count(nl_navmesh_id navmesh) {
 }
 
 static void group_navmesh_get_links(void) {
+    g_growable_items = 1;
     navmesh_list_cases("nl_navmesh_get_links", "out_links", sizeof(nl_link), link_count(A.navmesh), list_links);
+    g_growable_items = 0;
 }
 
 static void group_navmesh_remove_generated_links(void) {
@@ -2548,9 +2583,10 @@ static nl_status request_id_call(nl_world* w, raw_id id, void* out) {
     def.navmesh = AS(nl_navmesh_id, id);
     if (g_queued) return nl_path_request(w, &def, (nl_path_ticket*)out);
     fill(points, sizeof points);
+    points[0].size = sizeof points[0];
     fill(&count, sizeof count);
     status = nl_path_find(w, &def, (nl_path_result*)out, points, 4, &count);
-    EXPECT_UNTOUCHED(points, sizeof points, "out_points");
+    EXPECT_UNTOUCHED_AFTER_SIZE(points, sizeof points, "out_points");
     EXPECT_UNTOUCHED(&count, sizeof count, "out_count");
     return status;
 }
@@ -2610,6 +2646,7 @@ static void result_cases(const char* function, result_call_fn* call) {
             fill(&result, sizeof result);
             result.size = sizeof result;
             fill(points, sizeof points);
+            points[0].size = sizeof points[0];
             fill(&count, sizeof count);
             status = call(c->result ? &result : NULL, c->points ? points : NULL, capacity, c->count ? &count : NULL);
             if (c->detail == 0u || c->detail == NL_STATUS_BUFFER_TOO_SMALL) {
@@ -2619,11 +2656,11 @@ static void result_cases(const char* function, result_call_fn* call) {
                 EXPECT(count == needed && memcmp(&result, &expected, sizeof result) == 0, "count %u, or another result",
                        (unsigned)count);
                 if (c->detail == 0u) EXPECT_UNTOUCHED(points + needed, (68 - needed) * sizeof *points, "the points past out_count");
-                else EXPECT_UNTOUCHED(points, sizeof points, "out_points");
+                else EXPECT_UNTOUCHED_AFTER_SIZE(points, sizeof points, "out_points");
             } else {
                 EXPECT_FAILURE(A.world, status, c->detail, c->needle);
                 EXPECT_UNTOUCHED_AFTER_SIZE(&result, sizeof result, "out_result");
-                EXPECT_UNTOUCHED(points, sizeof points, "out_points");
+                EXPECT_UNTOUCHED_AFTER_SIZE(points, sizeof points, "out_points");
                 EXPECT_UNTOUCHED(&count, sizeof count, "out_count");
             }
         }
@@ -2682,9 +2719,10 @@ static nl_status get_result_call(nl_world* w, raw_id id, void* out) {
     uint32_t count;
     nl_status status;
     fill(points, sizeof points);
+    points[0].size = sizeof points[0];
     fill(&count, sizeof count);
     status = nl_path_get_result(w, AS(nl_path_ticket, id), (nl_path_result*)out, points, 4, &count);
-    EXPECT_UNTOUCHED(points, sizeof points, "out_points");
+    EXPECT_UNTOUCHED_AFTER_SIZE(points, sizeof points, "out_points");
     EXPECT_UNTOUCHED(&count, sizeof count, "out_count");
     return status;
 }

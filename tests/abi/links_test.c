@@ -83,6 +83,7 @@ static nl_link* list_links(const nl_world* world, nl_navmesh_id navmesh, uint32_
     *count = 0;
     if (NL_FAILED(nl_navmesh_get_links(world, navmesh, NULL, 0, &n))) return (nl_link*)calloc(1, sizeof(nl_link));
     links = (nl_link*)calloc(n + 1u, sizeof(nl_link));
+    if (links) links[0] = nl_link_init();
     if (links && NL_SUCCEEDED(nl_navmesh_get_links(world, navmesh, links, n, &n))) *count = n;
     return links;
 }
@@ -173,7 +174,7 @@ static void defaults(void) {
     CHECK(def.end[0] == 0.0f && def.end[1] == 0.0f && def.end[2] == 0.0f);
     CHECK(def.bidirectional == 0);
     CHECK(def.enabled == 1);
-    CHECK(def.requirements_from_ends == 1);
+    CHECK(def.requirements_as_given == 0);
     CHECK(def.reserved == 0);
     CHECK(def.cost_modifier == 1.0f);
     CHECK(def.user_data == 0u);
@@ -515,6 +516,7 @@ static void manual(void) {
     CHECK(manual.index1 != 0u);
     CHECK(nl_link_is_valid(world, manual) == 1);
     memset(&got, 0xab, sizeof got);
+    got.size = sizeof got; /* the element size the library lays out with */
     CHECK_OK(nl_link_get(world, manual, &got));
     CHECK(same_link_id(got.id, manual));
     CHECK(same_navmesh_id(got.navmesh, navmesh));
@@ -525,7 +527,7 @@ static void manual(void) {
     CHECK(got.bidirectional == 1 && got.generated == 0 && got.enabled == 1 && got.reserved == 0);
     CHECK(got.cost_modifier == 2.5f);
     CHECK(got.user_data == 0xfeedfacecafebeefull);
-    /* gap, rise and drop all 0 in the def: computed from the ends. */
+    /* requirements_as_given 0 (the default): measured from the ends. */
     CHECK_NEAR(got.requirements.gap, sqrtf(12.0f * 12.0f + 2.0f * 2.0f), 1e-4f);
     CHECK(got.requirements.rise == 0.0f && got.requirements.drop == 0.0f);
     CHECK(got.requirements.clearance_width == 0.0f && got.requirements.abilities == 0u);
@@ -537,11 +539,13 @@ static void manual(void) {
     set3(plugin_def.end, -4.0f, 0.5f, 3.0f);
     plugin_def.enabled = 0;
     plugin_def.cost_modifier = 0.0f;
+    plugin_def.requirements_as_given = 1;
     plugin_def.requirements.gap = 1.0f;
     plugin_def.requirements.rise = 2.0f;
     plugin_def.requirements.clearance_width = 0.8f;
     plugin_def.requirements.abilities = 0x5u;
     CHECK_OK(nl_link_add(world, navmesh, &plugin_def, &plugin));
+    got_plugin = nl_link_init();
     CHECK_OK(nl_link_get(world, plugin, &got_plugin));
     CHECK(got_plugin.kind == 300u && got_plugin.generated == 0 && got_plugin.enabled == 0 &&
           got_plugin.bidirectional == 0 && got_plugin.cost_modifier == 0.0f);
@@ -833,10 +837,11 @@ static void check_stale_everywhere(nl_world* world, nl_link_id id, const char* w
     const nl_link_def def = manual_def();
     nl_link got = nl_link_init();
     memset(&got, 0xab, sizeof got);
+    got.size = sizeof got; /* the element size the library lays out with */
     CHECK_MSG(nl_link_is_valid(world, id) == 0 && nl_get_last_status() == NL_STATUS_SUCCESS,
               "nl_link_is_valid: %s is valid", what);
     if (!CHECK_FAIL(nl_link_get(world, id, &got), NL_STATUS_INVALID_HANDLE, "link")) fprintf(stderr, "    (%s)\n", what);
-    CHECK_MSG(all_bytes(&got, sizeof got, 0xab), "nl_link_get wrote out_link for %s", what);
+    CHECK_MSG(all_bytes((const unsigned char*)&got + sizeof(uint32_t), sizeof got - sizeof(uint32_t), 0xab), "nl_link_get wrote out_link for %s", what);
     if (!CHECK_FAIL(nl_link_update(world, id, &def), NL_STATUS_INVALID_HANDLE, "link")) fprintf(stderr, "    (%s)\n", what);
     if (!CHECK_FAIL(nl_link_remove(world, id), NL_STATUS_INVALID_HANDLE, "link")) fprintf(stderr, "    (%s)\n", what);
 }
@@ -933,9 +938,10 @@ static void lists(void) {
     {
         nl_link one = nl_link_init();
         memset(&one, 0xab, sizeof one);
+        one.size = sizeof one; /* the element size the library lays out with */
         count = 77u;
         CHECK_OK(nl_navmesh_get_links(world, navmesh, &one, 1, &count));
-        CHECK(count == 0u && all_bytes(&one, sizeof one, 0xab));
+        CHECK(count == 0u && all_bytes((const unsigned char*)&one + sizeof(uint32_t), sizeof one - sizeof(uint32_t), 0xab));
     }
 
     CHECK_OK(nl_navmesh_generate_links(world, navmesh, NULL, NULL, NULL, NULL));
@@ -949,17 +955,21 @@ static void lists(void) {
     /* Short: BUFFER_TOO_SMALL, the count still written, the buffer untouched. */
     memset(buffer, 0xab, (n + 1u) * sizeof *buffer);
     count = 0;
+    /* The first element's size unset: refused before anything else, whatever fits. */
+    CHECK_INVALID(nl_navmesh_get_links(world, navmesh, buffer, n, &count), "out_links[0].size");
+    buffer[0].size = sizeof *buffer;
     CHECK_FAIL(nl_navmesh_get_links(world, navmesh, buffer, n - 1u, &count), NL_STATUS_BUFFER_TOO_SMALL, "");
     CHECK(count == n);
-    CHECK(all_bytes(buffer, (n + 1u) * sizeof *buffer, 0xab));
+    CHECK(all_bytes((const unsigned char*)buffer + sizeof(uint32_t), (n + 1u) * sizeof *buffer - sizeof(uint32_t), 0xab));
     count = 0;
     CHECK_FAIL(nl_navmesh_get_links(world, navmesh, buffer, 0, &count), NL_STATUS_BUFFER_TOO_SMALL, "");
-    CHECK(count == n && all_bytes(buffer, sizeof *buffer, 0xab));
+    CHECK(count == n && all_bytes((const unsigned char*)buffer + sizeof(uint32_t), sizeof *buffer - sizeof(uint32_t), 0xab));
     /* Exact, and larger: n entries written, nothing past them. */
     count = 0;
     CHECK_OK(nl_navmesh_get_links(world, navmesh, buffer, n, &count));
     CHECK(count == n);
     memset(buffer, 0xab, (n + 1u) * sizeof *buffer);
+    buffer[0] = nl_link_init();
     CHECK_OK(nl_navmesh_get_links(world, navmesh, buffer, n + 1u, &count));
     CHECK(count == n && all_bytes(buffer + n, sizeof *buffer, 0xab));
     listed = list_links(world, navmesh, &count);
@@ -1607,6 +1617,7 @@ static void threads(void) {
         jobs[i].world = world;
         jobs[i].navmesh = navmesh;
         jobs[i].manual = 1;
+        jobs[i].buffer[0] = nl_link_init();
         jobs[i].stop = &stop;
         started[i] = pthread_create(&threads[i], NULL, reader_thread, &jobs[i]) == 0;
         CHECK(started[i]);

@@ -136,6 +136,7 @@ int check_navmesh_structure(const nl_world* world, nl_navmesh_id id, const char*
     bad += !CHECK_MSG(edge_count == info.boundary_edge_count, "%s: %u boundary edges listed, info says %u", label,
                       (unsigned)edge_count, (unsigned)info.boundary_edge_count);
     for (p = 0; p < info.polygon_count; ++p) {
+        polygons[p] = nl_nav_polygon_init();
         if (NL_FAILED(nl_navmesh_get_polygon(world, id, p, &polygons[p]))) {
             bad += !CHECK_MSG(0, "%s: nl_navmesh_get_polygon(%u) failed", label, (unsigned)p);
             memset(&polygons[p], 0, sizeof polygons[p]);
@@ -271,6 +272,7 @@ void check_grid_navmesh(const nl_world* world, nl_navmesh_id id, uint32_t polygo
     for (i = 0; i < info.polygon_count; ++i) {
         nl_nav_polygon poly = nl_nav_polygon_init();
         memset(&poly, 0xcd, sizeof poly);
+        poly.size = sizeof poly; /* the element size the library lays out with */
         if (!CHECK_OK(nl_navmesh_get_polygon(world, id, i, &poly))) continue;
         CHECK_MSG(poly.vertex_count == (polygons == 4 ? 4u : 3u), "%s: polygon %u has %u corners", label, (unsigned)i,
                   (unsigned)poly.vertex_count);

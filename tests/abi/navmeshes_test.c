@@ -980,10 +980,11 @@ static void lists(void) {
     {
         nl_nav_polygon poly = nl_nav_polygon_init();
         memset(&poly, 0xcd, sizeof poly);
+        poly.size = sizeof poly; /* the element size the library lays out with */
         CHECK_INVALID(nl_navmesh_get_polygon(world, ids[0], 4, &poly), "polygon");
         CHECK_INVALID(nl_navmesh_get_polygon(world, ids[0], UINT32_MAX, &poly), "polygon");
         CHECK_INVALID(nl_navmesh_get_polygon(world, ids[0], NL_NO_POLYGON, &poly), "polygon");
-        CHECK(all_bytes(&poly, sizeof poly, 0xcd));
+        CHECK(all_bytes((const unsigned char*)&poly + sizeof(uint32_t), sizeof poly - sizeof(uint32_t), 0xcd));
         CHECK_INVALID(nl_navmesh_get_polygon(world, ids[0], 0, NULL), "out_polygon");
         CHECK_INVALID(nl_navmesh_get_polygon(NULL, ids[0], 0, &poly), "world");
         CHECK_OK(nl_navmesh_get_polygon(world, ids[0], 3, &poly));
@@ -1023,6 +1024,7 @@ static void check_bad_navmesh_id(nl_world* world, nl_navmesh_id id, const char* 
     const uint32_t before = navmesh_count(world);
     memset(&info, 0xab, sizeof info);
     memset(&poly, 0xab, sizeof poly);
+    poly.size = sizeof poly; /* the element size the library lays out with */
     memset(&edge, 0xab, sizeof edge);
     memset(&nearest, 0xab, sizeof nearest);
     memset(xyz, 0xab, sizeof xyz);
@@ -1047,7 +1049,7 @@ static void check_bad_navmesh_id(nl_world* world, nl_navmesh_id id, const char* 
                   "nl_navmesh_find_nearest", "nl_navmesh_find_nearest", file, line);
     check_fail_at(nl_navmesh_find_nearest(world, id, point, 0, half, &nearest), NL_STATUS_INVALID_HANDLE,
                   "nl_navmesh_find_nearest", "nl_navmesh_find_nearest (count 0)", file, line);
-    check_at(info.vertex_count == 0xabababab && all_bytes(&poly, sizeof poly, 0xab) &&
+    check_at(info.vertex_count == 0xabababab && all_bytes((const unsigned char*)&poly + sizeof(uint32_t), sizeof poly - sizeof(uint32_t), 0xab) &&
                  all_bytes(&edge, sizeof edge, 0xab) && all_bytes(&nearest, sizeof nearest, 0xab) &&
                  all_bytes(xyz, sizeof xyz, 0xab) && count == 0xdeadbeefu,
              file, line, "an output was written for a bad navmesh id");

@@ -125,6 +125,7 @@ static islands make_islands(int32_t path_workers) {
     drop.kind = NL_LINK_DROP;
     set3(drop.start, 8.1f, 0.0f, 0.5f);
     set3(drop.end, 6.9f, 0.0f, 0.5f);
+    drop.requirements_as_given = 1;
     drop.requirements.gap = 1.2f;
     drop.requirements.drop = 2.0f;
     drop.bidirectional = 1;
@@ -161,6 +162,7 @@ static path find(nl_world* world, const nl_path_request_def* def) {
     path p;
     memset(&p, 0, sizeof p);
     p.result.size = sizeof p.result;
+    p.points[0] = nl_path_point_init();
     p.status = nl_path_find(world, def, &p.result, p.points, MAX_POINTS, &p.count);
     return p;
 }
@@ -404,6 +406,7 @@ static void find_synchronous(void) {
         uint32_t count = 0;
         nl_status st;
         memset(points, 0xab, sizeof points);
+        points[0].size = sizeof points[0]; /* the element size the library lays out with */
         memset(&result, 0, sizeof result);
         result.size = sizeof result;
         def = jumper(s.navmesh, 0.5f, 5.5f);
@@ -412,7 +415,7 @@ static void find_synchronous(void) {
         CHECK(count == 4u);
         CHECK(result.outcome == NL_PATH_COMPLETE && result.point_count == 4u && result.links_used == 1u);
         CHECK_NEAR(result.length, 5.0f, 1e-4f);
-        CHECK(all_bytes(points, sizeof points, 0xab));
+        CHECK(all_bytes((const unsigned char*)points + sizeof(uint32_t), sizeof points - sizeof(uint32_t), 0xab));
 
         /* The two-call pattern: NULL points count them, then the buffer gets them. */
         memset(&result, 0, sizeof result);
@@ -511,6 +514,7 @@ static void check_refused_at(nl_world* world, const nl_path_request_def* def, nl
     result.size = sizeof result;
     before_result = result;
     memset(points, 0xcd, sizeof points);
+    points[0].size = sizeof points[0]; /* the element size the library lays out with */
     memcpy(before_points, points, sizeof points);
 
     check_fail_at(nl_path_find(world, def, &result, points, 4, &count), detail, needle, "nl_path_find", __FILE__, line);
@@ -775,12 +779,13 @@ static void queue_manual(void) {
     memset(&result, 0xab, sizeof result);
     result.size = sizeof result;
     memset(points, 0xab, sizeof points);
+    points[0].size = sizeof points[0]; /* the element size the library lays out with */
     count = 0xdeadbeefu;
     status = nl_path_get_result(s.world, tickets[0], &result, points, MAX_POINTS, &count);
     CHECK(status == NL_STATUS_IN_PROGRESS);
     CHECK(nl_get_last_status() == NL_STATUS_IN_PROGRESS && nl_get_last_error_message()[0] == '\0');
     CHECK(!NL_FAILED(status) && !NL_SUCCEEDED(status));
-    CHECK(count == 0xdeadbeefu && result.outcome == 0xababababu && all_bytes(points, sizeof points, 0xab));
+    CHECK(count == 0xdeadbeefu && result.outcome == 0xababababu && all_bytes((const unsigned char*)points + sizeof(uint32_t), sizeof points - sizeof(uint32_t), 0xab));
 
     /* Two per call, in the order they were made, their callbacks here and now. */
     processed = 0xdeadbeefu;
@@ -810,9 +815,10 @@ static void queue_manual(void) {
             CHECK(same_result(&result, points, count, &sync.result, sync.points, sync.count));
         }
         memset(points, 0xab, sizeof points);
+        points[0].size = sizeof points[0]; /* the element size the library lays out with */
         CHECK_FAIL(nl_path_get_result(s.world, tickets[0], &result, points, 2, &count), NL_STATUS_BUFFER_TOO_SMALL,
                    "capacity");
-        CHECK(count == 4u && result.point_count == 4u && all_bytes(points, sizeof points, 0xab));
+        CHECK(count == 4u && result.point_count == 4u && all_bytes((const unsigned char*)points + sizeof(uint32_t), sizeof points - sizeof(uint32_t), 0xab));
         CHECK_OK(nl_path_get_result(s.world, tickets[0], &result, NULL, 0, &count));
         CHECK(count == 4u);
         status = nl_path_get_result(s.world, tickets[1], &result, points, MAX_POINTS, &count);
@@ -1091,6 +1097,7 @@ static void queue_workers(void) {
             path got;
             memset(&got, 0, sizeof got);
             got.result.size = sizeof got.result;
+            got.points[0] = nl_path_point_init();
             got.status = nl_path_get_result(s.world, tickets[i], &got.result, got.points, MAX_POINTS, &got.count);
             if (got.status != want->status || poll_outcome(s.world, tickets[i]) != want->result.outcome ||
                 !same_result(&got.result, got.points, got.count, &want->result, want->points, want->count))

@@ -35,6 +35,7 @@ static void cast_rays(void) {
     rays[1] = down_ray(3.0f, -2.0f, 5.0f, 100.0f);
     rays[1].direction[1] = -7.0f; /* any length */
     memset(hits, 0xab, sizeof hits);
+    hits[0].size = sizeof hits[0]; /* the element size the library lays out with */
     CHECK_OK(nl_world_cast_rays(world, rays, 2, hits));
     CHECK(hits[0].hit == 1);
     CHECK_NEAR(hits[0].distance, 4.0f, TOL);
@@ -80,18 +81,23 @@ static void cast_rays(void) {
     rays[2] = down_ray(0.5f, 0.25f, 5.0f, 3.99f);
     rays[3] = down_ray(0.5f, 0.25f, 5.0f, 4.01f);
     memset(hits, 0xab, sizeof hits);
+    hits[0].size = sizeof hits[0]; /* the element size the library lays out with */
     CHECK_OK(nl_world_cast_rays(world, rays, 4, hits));
     CHECK(hits[0].hit == 0 && hits[1].hit == 0 && hits[2].hit == 0);
-    CHECK(all_bytes(&hits[0], sizeof hits[0], 0) && all_bytes(&hits[1], sizeof hits[1], 0) &&
-          all_bytes(&hits[2], sizeof hits[2], 0));
+    /* A miss is all zero but its size, which is the host's. */
+    CHECK(hits[0].size == sizeof hits[0] && hits[1].size == sizeof hits[1] && hits[2].size == sizeof hits[2]);
+    CHECK(all_bytes(&hits[0].distance, sizeof hits[0] - sizeof(uint32_t), 0) &&
+          all_bytes(&hits[1].distance, sizeof hits[1] - sizeof(uint32_t), 0) &&
+          all_bytes(&hits[2].distance, sizeof hits[2] - sizeof(uint32_t), 0));
     CHECK(hits[3].hit == 1 && same_id(hits[3].mesh, floor));
     CHECK_NEAR(hits[3].distance, 4.0f, TOL);
     CHECK(hits[3].reserved[0] == 0 && hits[3].reserved[1] == 0 && hits[3].reserved[2] == 0);
 
     /* count == 0 succeeds and touches nothing, even with null arrays. */
     memset(hits, 0xab, sizeof hits);
+    hits[0].size = sizeof hits[0]; /* the element size the library lays out with */
     CHECK_OK(nl_world_cast_rays(world, rays, 0, hits));
-    CHECK(all_bytes(hits, sizeof hits, 0xab));
+    CHECK(all_bytes((const unsigned char*)hits + sizeof(uint32_t), sizeof hits - sizeof(uint32_t), 0xab));
     CHECK_OK(nl_world_cast_rays(world, NULL, 0, NULL));
 
     /* Invalid rays: the index is named and nothing is written. */
@@ -131,8 +137,9 @@ static void cast_rays(void) {
                 rays[bad[b].index].max_distance = v;
             }
             memset(hits, 0xab, sizeof hits);
+            hits[0].size = sizeof hits[0]; /* the element size the library lays out with */
             CHECK_INVALID(nl_world_cast_rays(world, rays, 4, hits), bad[b].needle);
-            CHECK_MSG(all_bytes(hits, sizeof hits, 0xab), "hits written on failure (case %d)", (int)b);
+            CHECK_MSG(all_bytes((const unsigned char*)hits + sizeof(uint32_t), sizeof hits - sizeof(uint32_t), 0xab), "hits written on failure (case %d)", (int)b);
         }
     }
 
@@ -162,6 +169,8 @@ static void ray_batches(void) {
         CHECK(!"out of memory");
         return;
     }
+    hits[0][0] = nl_ray_hit_init();
+    hits[1][0] = nl_ray_hit_init();
     worlds[0] = make_world(1);
     worlds[1] = make_world(2);
     for (i = 0; i < count; ++i) {

@@ -227,7 +227,7 @@ TEST_CASE("the climb link kind, loaded as a plugin, links the foot of a wall to 
         CHECK(l.requirements.abilities == 1u);
         CHECK(l.start[1] < 0.6f);   // on the floor
         CHECK(l.end[1] > 2.3f);     // on top of the block
-        // A climb asks for the ability, not for a jump's height (requirements_from_ends = 0), so a
+        // A climb asks for the ability, not for a jump's height (requirements_as_given = 1), so a
         // body that cannot jump climbs it; its length is still the ends'.
         CHECK(l.requirements.rise == 0.0f);
         CHECK(l.requirements.drop == 0.0f);

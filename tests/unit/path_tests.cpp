@@ -227,7 +227,7 @@ TEST_CASE("links join islands for the agents whose bodies can take them") {
     drop.kind = NL_LINK_DROP;
     drop.start[0] = 8.1f, drop.start[2] = 0.5f;  // declared as a drop of 2 m (the map is flat)
     drop.end[0] = 6.9f, drop.end[2] = 0.5f;
-    drop.requirements_from_ends = 0;
+    drop.requirements_as_given = 1;
     drop.requirements.gap = 0.2f;
     drop.requirements.drop = 2.0f;
     drop.bidirectional = 1;
@@ -308,7 +308,7 @@ TEST_CASE("a manual link may ask only for an ability: requirements taken as give
     ladder.kind = NL_LINK_FIRST_PLUGIN_KIND + 1;
     ladder.start[0] = 2.9f, ladder.start[2] = 0.5f;
     ladder.end[0] = 4.1f, ladder.end[2] = 0.5f;
-    ladder.requirements_from_ends = 0;
+    ladder.requirements_as_given = 1;
     ladder.requirements.abilities = 0x2;
     nl_link_id id{};
     REQUIRE(nl_link_add(map.world, map.navmesh, &ladder, &id) == NL_STATUS_SUCCESS);
@@ -324,7 +324,7 @@ TEST_CASE("a manual link may ask only for an ability: requirements taken as give
     CHECK(find(map.world, def).result.outcome == NL_PATH_COMPLETE);
 
     // The same link measured from its ends asks for a 1.2 m jump as well.
-    ladder.requirements_from_ends = 1;
+    ladder.requirements_as_given = 0;
     REQUIRE(nl_link_update(map.world, id, &ladder) == NL_STATUS_SUCCESS);
     CHECK(find(map.world, def).result.outcome == NL_PATH_NO_PATH);
     def.agent.max_jump_distance = 1.2f;

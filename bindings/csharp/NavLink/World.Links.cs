@@ -7,7 +7,7 @@ namespace NavLink
     public sealed partial class World
     {
         /// <summary>A manual one-way link, enabled, cost modifier 1, requirements measured from its ends
-        /// (RequirementsFromEnds 1): set Start and End.</summary>
+        /// (RequirementsAsGiven 0): set Start and End.</summary>
         public static LinkDef DefaultLinkDef() { return Native.nl_default_link_def(); }
 
         public static LinkSettings DefaultLinkSettings() { return Native.nl_default_link_settings(); }

@@ -83,7 +83,7 @@ namespace NavLink.Tests
                     int generated = world.GetLinks(navmesh).Length;
 
                     LinkDef def = World.DefaultLinkDef();
-                    check.That(def.Kind == LinkKind.Manual && def.Enabled == 1 && def.CostModifier == 1 && def.RequirementsFromEnds == 1,
+                    check.That(def.Kind == LinkKind.Manual && def.Enabled == 1 && def.CostModifier == 1 && def.RequirementsAsGiven == 0,
                                "default link def");
                     def.Start = new Vec3(-5, 0, 4);
                     def.End = new Vec3(5, 0, 4);
@@ -99,7 +99,7 @@ namespace NavLink.Tests
                     LinkDef ability = World.DefaultLinkDef();
                     ability.Start = new Vec3(-5, 0, -4);
                     ability.End = new Vec3(5, 0, -4);
-                    ability.RequirementsFromEnds = 0;
+                    ability.RequirementsAsGiven = 1;
                     ability.Requirements.Abilities = 4;
                     LinkId abilityLink = world.AddLink(navmesh, ability);
                     Link asGiven = world.GetLink(abilityLink);

@@ -623,12 +623,13 @@ typedef struct nl_link_def {
     float end[3];
     uint8_t bidirectional;     /**< 0 by default. */
     uint8_t enabled;           /**< 1 by default. */
-    uint8_t requirements_from_ends; /**< 1 (default): requirements.gap, length, rise and drop are
-                                         measured from the ends (gap = length: the rims are not
-                                         known), and the values given for them are ignored; 0: all of
-                                         `requirements` is taken as given (e.g. a link that asks only
-                                         for an ability; a length of 0 is measured). clearance_width
-                                         and abilities are always taken as given. */
+    uint8_t requirements_as_given; /**< 0 (default, and what a zeroed def says): requirements.gap,
+                                        length, rise and drop are measured from the ends (gap =
+                                        length: the rims are not known), and the values given for
+                                        them are ignored; 1: all of `requirements` is taken as given
+                                        (e.g. a link that asks only for an ability; a length of 0 is
+                                        measured). clearance_width and abilities are always taken as
+                                        given. */
     uint8_t reserved;
     float cost_modifier;       /**< 1 by default; >= 0. */
     uint64_t user_data;
@@ -636,7 +637,7 @@ typedef struct nl_link_def {
 } nl_link_def;
 
 /** A manual link from (0,0,0) to (0,0,0), one-way, enabled, cost modifier 1, requirements measured
- *  from its ends. Thread-safe. */
+ *  from its ends (requirements_as_given 0). Thread-safe. */
 NL_API nl_link_def nl_default_link_def(void);
 
 /** Adds a link to a navmesh. Its ends must each lie within 1 m of the navmesh (they are kept as given;
@@ -807,8 +808,9 @@ NL_API nl_status nl_navmesh_save_links_json(const nl_world* world, nl_navmesh_id
                                             size_t capacity, size_t* out_length);
 
 /** Replaces all of the navmesh's links with those in `json` (`length` bytes, borrowed); new ids are
- *  given. Each link is held to nl_link_add's rules: both ends within 1 m of the navmesh, and a link
- *  whose "requires" has no gap, rise or drop asks for those of its ends. `out_count` (optional)
+ *  given. Each link is held to nl_link_add's rules: both ends within 1 m of the navmesh. A link
+ *  without "requires" asks for what its ends measure; one with it for what it says (an absent key is
+ *  0, an absent "length" the ends' horizontal distance). `out_count` (optional)
  *  receives how many were loaded. On failure nothing changes. On success the last generation is
  *  forgotten: nl_navmesh_update_links_in_box returns NOT_FOUND until the next
  *  nl_navmesh_generate_links.
@@ -1022,7 +1024,8 @@ typedef struct nl_path_finished {
     uint32_t size;           /**< sizeof(nl_path_finished) as the host knows it; written back. */
     nl_path_outcome outcome;
     nl_path_ticket ticket;
-    void* user;              /**< The request's `user`, as given. */
+    void* user;              /**< The request's `user`, as given (not dereferenced). A host that frees
+                                  `user` in the request's callback must not use this copy. */
 } nl_path_finished;
 
 NL_DEFINE_OUTPUT_INIT(nl_path_finished, nl_path_finished_init)

@@ -51,7 +51,9 @@ typedef struct nl_plugin_host {
                                      uint32_t* out_triangle_count);
 
     /* The world's queries, for link-kind plugins; each behaves as the nl_* function of the same name
-       in navlink.h, on the world the plugin is loaded in. */
+       in navlink.h, on the world the plugin is loaded in (set the `size` of output structs, of the
+       first element of an output array: nl_navmesh_info_init, nl_ray_hit_init). A failed query
+       returns its status and does not touch the host thread's last status. */
     nl_status (*navmesh_get_boundary_edges)(void* context, nl_navmesh_id navmesh, nl_boundary_edge* out_edges,
                                             uint32_t capacity, uint32_t* out_count);
     nl_status (*navmesh_get_info)(void* context, nl_navmesh_id navmesh, nl_navmesh_info* out_info);

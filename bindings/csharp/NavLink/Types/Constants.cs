@@ -8,7 +8,7 @@ namespace NavLink
     public static class HeaderVersion
     {
         public const int Major = 0;
-        public const int Minor = 1;
+        public const int Minor = 2;
         public const int Patch = 0;
     }
 

@@ -53,7 +53,7 @@ namespace NavLink
         /// <summary>1 (default): Requirements.Gap, Length, Rise and Drop are measured from the ends and the
         /// values given are ignored; 0: Requirements are taken as given (a link that asks only for an
         /// ability; a Length of 0 is measured). ClearanceWidth and Abilities are always taken as given.</summary>
-        public byte RequirementsFromEnds;
+        public byte RequirementsAsGiven;
         public byte Reserved;
         public float CostModifier;
         public ulong UserData;

@@ -68,7 +68,7 @@ pub struct nl_link_def {
     pub bidirectional: u8,
     pub enabled: u8,
     /// 1 (default): gap, length, rise and drop are measured from the ends; 0: `requirements` as given.
-    pub requirements_from_ends: u8,
+    pub requirements_as_given: u8,
     pub reserved: u8,
     pub cost_modifier: f32,
     pub user_data: u64,

@@ -3,7 +3,7 @@ use std::os::raw::c_char;
 
 /// The version of the header these bindings were written from (`navlink/version.h`).
 pub const NL_VERSION_MAJOR: i32 = 0;
-pub const NL_VERSION_MINOR: i32 = 1;
+pub const NL_VERSION_MINOR: i32 = 2;
 pub const NL_VERSION_PATCH: i32 = 0;
 
 #[repr(C)]

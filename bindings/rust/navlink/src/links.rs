@@ -13,7 +13,7 @@ use std::ptr;
 pub type Progress<'a> = &'a mut dyn FnMut(f32, &str) -> bool;
 
 /// A manual one-way link, enabled, cost modifier 1, requirements measured from its ends
-/// (`requirements_from_ends` 1): set start and end.
+/// (`requirements_as_given` 0): set start and end.
 pub fn default_link_def() -> LinkDef {
     unsafe { sys::nl_default_link_def() }
 }

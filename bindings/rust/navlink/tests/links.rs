@@ -70,7 +70,7 @@ fn manual_links_and_json() {
     let generated = world.links(navmesh).unwrap().len() as u32;
 
     let mut def = default_link_def();
-    assert!(def.kind == link_kind::MANUAL && def.enabled == 1 && def.cost_modifier == 1.0 && def.requirements_from_ends == 1);
+    assert!(def.kind == link_kind::MANUAL && def.enabled == 1 && def.cost_modifier == 1.0 && def.requirements_as_given == 0);
     def.start = [-5.0, 0.0, 4.0];
     def.end = [5.0, 0.0, 4.0];
     def.user_data = 7;
@@ -84,7 +84,7 @@ fn manual_links_and_json() {
     let mut ability = default_link_def();
     ability.start = [-5.0, 0.0, -4.0];
     ability.end = [5.0, 0.0, -4.0];
-    ability.requirements_from_ends = 0;
+    ability.requirements_as_given = 1;
     ability.requirements.abilities = 4;
     let ability_link = world.add_link(navmesh, &ability).unwrap();
     let r = world.link(ability_link).unwrap().requirements;
