@@ -221,8 +221,8 @@ NL_API nl_status nl_world_create(const nl_world_def* def, nl_world** out_world);
  *  Must not run at the same time as any other call on this world. */
 NL_API void nl_world_destroy(nl_world* world);
 
-/** The number of threads the world uses for batch work (1 when everything runs on the caller).
- *  Returns 0 for a null world. Thread-safe. */
+/** The number of threads the world uses for batch work (1 when everything runs on the caller; with
+ *  task callbacks, the host's worker_count). Returns 0 for a null world. Thread-safe. */
 NL_API int32_t nl_world_get_worker_count(const nl_world* world);
 
 /* ---------------------------------------------------------------------------------------------
