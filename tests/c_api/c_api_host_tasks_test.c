@@ -13,8 +13,9 @@
  *     from several host threads at once;
  *   - an inline host (enqueue runs the task at once and returns NULL: finish is never called).
  * It also checks that the callbacks were called, that worker indices stayed below worker_count, that
- * a level call from inside NavLink's finish is refused rather than left to hang, that an old def size
- * ignores the task fields, and that bad task fields are refused naming them.
+ * a level call from inside NavLink's finish is refused rather than left to hang, that a host breaking
+ * the contract fails the call with INTERNAL_ERROR saying how, that an old def size ignores the task
+ * fields, and that bad task fields are refused naming them.
  */
 #define _POSIX_C_SOURCE 200809L
 
@@ -585,6 +586,53 @@ static void test_reentrant_finish(void) {
 }
 
 /* ---------------------------------------------------------------------------------------------
+ * A host that breaks the contract fails the call, naming what it did
+ * ------------------------------------------------------------------------------------------- */
+
+typedef struct broken_host {
+    int skip_last; /* 1: leaves the last item out; 0: gives worker index 7 (worker_count is 2) */
+} broken_host;
+
+static void* broken_enqueue(void* user, nl_task_fn* task, void* task_context, uint32_t item_count, uint32_t min_range) {
+    const broken_host* h = (const broken_host*)user;
+    (void)min_range;
+    if (h->skip_last) task(task_context, 0u, item_count - 1u, 0u);
+    else task(task_context, 0u, item_count, 7u);
+    return NULL;
+}
+
+static void test_broken_host(void) {
+    static nl_ray_hit hits[RAY_COUNT];
+    static const char* const needles[2] = {"worker 7 of a task", "items of a task of"};
+    int k;
+    for (k = 0; k < 2; ++k) {
+        broken_host host;
+        nl_world_def def = nl_default_world_def();
+        nl_world* world;
+        nl_mesh_id mesh;
+        nl_status status;
+        host.skip_last = k;
+        def.worker_count = 2;
+        def.path_worker_count = 0;
+        def.task_enqueue_fn = broken_enqueue;
+        def.task_finish_fn = inline_finish;
+        def.task_user = &host;
+        world = create_world(&def);
+        REQUIRE_OK(add_box_mesh(world, k_boxes[0][0], k_boxes[0][1], 0u, &mesh));
+        status = nl_world_cast_rays(world, g_rays, RAY_COUNT, hits);
+        CHECK(status == (NL_STATUS_FAILURE | NL_STATUS_INTERNAL_ERROR) &&
+                  strstr(nl_get_last_error_message(), "the host's task system ran") &&
+                  strstr(nl_get_last_error_message(), needles[k]),
+              "a host that %s: 0x%08x \"%s\"", k ? "skips an item" : "gives a worker index >= worker_count",
+              (unsigned)status, nl_get_last_error_message());
+        /* A batch of one range never reaches the host: the world still answers. */
+        CHECK(nl_world_cast_rays(world, g_rays, 1u, hits) == NL_STATUS_SUCCESS, "one ray after the broken batch: %s",
+              nl_get_last_error_message());
+        nl_world_destroy(world);
+    }
+}
+
+/* ---------------------------------------------------------------------------------------------
  * Defs: an old size ignores the task fields; bad task fields are refused by name
  * ------------------------------------------------------------------------------------------- */
 
@@ -730,6 +778,7 @@ int main(void) {
     nl_world_destroy(tbb);
 
     test_reentrant_finish();
+    test_broken_host();
     test_defs(&inline_host_state);
 
     if (g_failures) {

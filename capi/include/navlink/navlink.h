@@ -190,12 +190,12 @@ typedef struct nl_world_def {
                                               with worker_count threads). With task_finish_fn, runs
                                               every parallel loop of batch work (ray and segment
                                               batches, point location, link generation) on the
-                                              host's task system:
-                                              set both or neither. Results are identical bit for bit
-                                              whatever the host's scheduling and worker_count. Embree's
-                                              BVH builds (the first query after a mesh edit) still use
-                                              Embree's own TBB threads, and path workers are NavLink's
-                                              threads (path_worker_count 0 for none). */
+                                              host's task system: set both or neither. Results are
+                                              identical bit for bit whatever the host's scheduling
+                                              and worker_count. Embree's BVH builds (the first query
+                                              after a mesh edit) still use Embree's own TBB threads,
+                                              and path workers are NavLink's threads
+                                              (path_worker_count 0 for none). */
     nl_task_finish_fn* task_finish_fn;   /**< Optional; waits for an enqueued task (see the type). */
     void* task_user;                     /**< Passed back to both callbacks as `user`; borrowed, never
                                               dereferenced. The callbacks and what task_user points to
@@ -210,9 +210,9 @@ NL_API nl_world_def nl_default_world_def(void);
  *  Returns NL_STATUS_SUCCESS, or a failure with INVALID_ARGUMENT (null out_world, size of def too
  *  small or ending inside the task callbacks, worker_count or path_worker_count < -1 or >
  *  NL_MAX_WORKERS, one task callback without the other, worker_count < 1 with task callbacks),
- *  OUT_OF_MEMORY (also when
- *  about 1,000 worlds exist at once: each world's Embree device takes one of the process's 1,024
- *  thread-local keys) or INTERNAL_ERROR (the system refused a thread). Thread-safe. */
+ *  OUT_OF_MEMORY (also when about 1,000 worlds exist at once: each world's Embree device takes one
+ *  of the process's 1,024 thread-local keys) or INTERNAL_ERROR (the system refused a thread).
+ *  Thread-safe. */
 NL_API nl_status nl_world_create(const nl_world_def* def, nl_world** out_world);
 
 /** Destroys a world and everything it owns; every id from it becomes invalid. NULL is ignored.
