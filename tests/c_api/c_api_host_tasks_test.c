@@ -29,9 +29,24 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "c_api_scene.h"
 
 static int g_failures = 0;
+
+/* The box from lo to hi as one mesh: 8 corners (corner k at x from bit 0, y from bit 1, z from bit 2),
+   12 triangles facing out. (Its own copy, so this file needs no other test file.) */
+static nl_status add_box_mesh(nl_world* world, const float lo[3], const float hi[3], uint32_t flags, nl_mesh_id* out_id) {
+    const float v[24] = {lo[0], lo[1], lo[2], hi[0], lo[1], lo[2], lo[0], hi[1], lo[2], hi[0], hi[1], lo[2],
+                         lo[0], lo[1], hi[2], hi[0], lo[1], hi[2], lo[0], hi[1], hi[2], hi[0], hi[1], hi[2]};
+    static const uint32_t box[36] = {0, 4, 6, 0, 6, 2, 1, 3, 7, 1, 7, 5, 0, 1, 5, 0, 5, 4,
+                                     2, 6, 7, 2, 7, 3, 0, 2, 3, 0, 3, 1, 4, 5, 7, 4, 7, 6};
+    nl_mesh_def def = nl_default_mesh_def();
+    def.vertices = v;
+    def.vertex_count = 8;
+    def.indices = box;
+    def.triangle_count = 12;
+    def.flags = flags;
+    return nl_mesh_add(world, &def, out_id);
+}
 
 static void check_at(int ok, const char* file, int line, const char* format, ...) {
     va_list args;
