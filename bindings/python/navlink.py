@@ -80,6 +80,10 @@ def failed(status):
 Vec3 = c_float * 3
 
 LogFn = CFUNCTYPE(None, c_void_p, c_uint32, c_uint32, c_char_p)
+# A host task system (navlink.h: nl_task_fn, nl_task_enqueue_fn, nl_task_finish_fn).
+TaskFn = CFUNCTYPE(None, c_void_p, c_uint32, c_uint32, c_uint32)
+TaskEnqueueFn = CFUNCTYPE(c_void_p, c_void_p, TaskFn, c_void_p, c_uint32, c_uint32)
+TaskFinishFn = CFUNCTYPE(None, c_void_p, c_void_p)
 ProgressFn = CFUNCTYPE(c_int32, c_void_p, c_float, c_char_p)
 
 
@@ -100,7 +104,8 @@ class Version(Structure):
 class WorldDef(Structure):
     _fields_ = [("size", c_uint32), ("worker_count", c_int32), ("log_fn", LogFn), ("log_user", c_void_p),
                 ("log_level", c_uint32), ("reserved", c_uint32),
-                ("path_worker_count", c_int32)]
+                ("path_worker_count", c_int32), ("task_enqueue_fn", TaskEnqueueFn),
+                ("task_finish_fn", TaskFinishFn), ("task_user", c_void_p)]
 
 
 class _Id(Structure):
@@ -762,12 +767,29 @@ class World:
     # Points fetched in one go by find_path when the path has no more; longer ones are planned again.
     _FIRST_POINT_CAPACITY = 64
 
-    def __init__(self, worker_count=WORKERS_AUTO, path_worker_count=WORKERS_AUTO, log=None, log_level=LOG_WARNING):
-        """log: callable(level, status, message), called on the failing thread (maybe a NavLink worker)."""
+    def __init__(self, worker_count=WORKERS_AUTO, path_worker_count=WORKERS_AUTO, log=None, log_level=LOG_WARNING,
+                 task_enqueue_fn=None, task_finish_fn=None, task_user=None):
+        """log: callable(level, status, message), called on the failing thread (maybe a NavLink worker).
+
+        task_enqueue_fn, task_finish_fn, task_user: a host task system for the world's batch work
+        (navlink.h's nl_task_enqueue_fn and nl_task_finish_fn; worker_count is then the host's workers):
+        TaskEnqueueFn / TaskFinishFn objects (native function pointers) or Python callables with their
+        arguments, (user, task, task_context, item_count, min_range) -> handle or None, and
+        (user, handle). The world keeps them alive until close()."""
         d = lib.nl_default_world_def()
         d.worker_count = worker_count
         d.path_worker_count = path_worker_count
         d.log_level = log_level
+        self._tasks = None
+        if task_enqueue_fn is not None or task_finish_fn is not None:
+            def as_type(fn, fn_type):
+                return fn if fn is None or isinstance(fn, fn_type) else fn_type(fn)
+            self._tasks = (as_type(task_enqueue_fn, TaskEnqueueFn), as_type(task_finish_fn, TaskFinishFn))
+            if self._tasks[0] is not None:
+                d.task_enqueue_fn = self._tasks[0]
+            if self._tasks[1] is not None:
+                d.task_finish_fn = self._tasks[1]
+            d.task_user = task_user
         self._log_key = None
         if log is not None:
             self._log_key = _register(log)

@@ -159,6 +159,42 @@ class LevelTest(NavLinkTestCase):
         world.close()
         self.assertRaises(ValueError, world.meshes)
 
+    def test_host_task_system(self):
+        """An inline host (each task run at once, in pieces of min_range; no handle to finish) gives the same
+        rays and links as NavLink's own threads, and is really called."""
+        calls = {"enqueue": 0, "finish": 0}
+
+        def enqueue(user, task, task_context, item_count, min_range):
+            calls["enqueue"] += 1
+            for begin in range(0, item_count, max(1, min_range)):
+                task(task_context, begin, min(item_count, begin + max(1, min_range)), 0)
+            return None
+
+        def finish(user, handle):
+            calls["finish"] += 1
+
+        rays = [nl.Ray(nl.Vec3(-13 + 0.45 * x, 5, -6 + 0.3 * z), nl.Vec3(0, -1, 0), 100)
+                for x in range(60) for z in range(40)]
+
+        def run(world):
+            navmesh = gap_level_with_links(world)
+            hits = [(h.hit, h.distance) for h in world.cast_rays(rays)]
+            links = [(l.kind, tuple(l.start), tuple(l.end), tuple(l.apex), l.requirements.gap)
+                     for l in world.links(navmesh)]
+            return hits, links
+
+        with nl.World(worker_count=2, path_worker_count=0) as world:
+            reference = run(world)
+        self.assertTrue(reference[1], "the gap level has jumps")
+        with nl.World(worker_count=1, path_worker_count=0, task_enqueue_fn=enqueue, task_finish_fn=finish) as world:
+            self.assertEqual(world.worker_count, 1)
+            self.assertEqual(run(world), reference)
+        self.assertGreater(calls["enqueue"], 0)
+        self.assertEqual(calls["finish"], 0)
+        self.assertFails(nl.STATUS_INVALID_ARGUMENT, "task_finish_fn", nl.World, worker_count=1, task_enqueue_fn=enqueue)
+        self.assertFails(nl.STATUS_INVALID_ARGUMENT, "worker_count", nl.World, task_enqueue_fn=enqueue,
+                         task_finish_fn=finish)
+
     def test_meshes_and_rays(self):
         with nl.World() as world:
             floor = world.add_mesh(FLOOR, QUAD, user_data=42)

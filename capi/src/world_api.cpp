@@ -1,4 +1,5 @@
 #include <cstddef>
+#include <memory>
 #include <optional>
 #include <string>
 #include <thread>
@@ -7,6 +8,7 @@
 #include "builtin_plugins.h"
 #include "entry_guard.h"
 #include "plugin_adapter.h"
+#include "util/host_task_system.h"
 #include "world.h"
 
 using nl::ErrorCode;
@@ -16,6 +18,9 @@ using nl::capi::guarded;
 namespace {
 
 constexpr size_t kWorldDefFirstSize = offsetof(nl_world_def, log_level) + sizeof(nl_log_level);
+// The task callbacks come as a group: a size that ends inside it is no header's sizeof.
+constexpr size_t kWorldDefTasksBegin = offsetof(nl_world_def, task_enqueue_fn);
+constexpr size_t kWorldDefTasksEnd = offsetof(nl_world_def, task_user) + sizeof(void*);
 
 int resolve_worker_count(int32_t requested) {
     if (requested == NL_WORKERS_AUTO) return static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
@@ -35,6 +40,38 @@ nl::Logger logger_of(const nl_world_def& def) {
         static_cast<nl::LogLevel>(def.log_level));
 }
 
+// The host's task callbacks as the core's scheduler: NavLink's task is the core's HostTask, run
+// through one C function.
+extern "C" {
+static void run_host_task(void* task_context, uint32_t begin, uint32_t end, uint32_t worker_index) {
+    static_cast<nl::HostTask*>(task_context)->run(begin, end, worker_index);
+}
+}
+
+std::unique_ptr<nl::TaskSystem> host_tasks_of(const nl_world_def& def) {
+    nl_task_enqueue_fn* const enqueue = def.task_enqueue_fn;
+    nl_task_finish_fn* const finish = def.task_finish_fn;
+    void* const user = def.task_user;
+    nl::HostScheduler scheduler;
+    scheduler.worker_count = def.worker_count;
+    scheduler.enqueue = [enqueue, user](nl::HostTask& task, uint32_t count, uint32_t min_range) {
+        return enqueue(user, run_host_task, &task, count, min_range);
+    };
+    scheduler.finish = [finish, user](void* host_task) { finish(user, host_task); };
+    return nl::make_host_task_system(std::move(scheduler));
+}
+
+// Both task callbacks or neither; with them, worker_count counts the host's workers.
+void check_task_callbacks(const nl_world_def& def) {
+    const bool enqueue = def.task_enqueue_fn != nullptr, finish = def.task_finish_fn != nullptr;
+    if (enqueue != finish)
+        fail(ErrorCode::InvalidArgument, "def->", enqueue ? "task_finish_fn" : "task_enqueue_fn", " is NULL but def->",
+             enqueue ? "task_enqueue_fn" : "task_finish_fn", " is set (set both task callbacks or neither)");
+    if (enqueue && def.worker_count < 1)
+        fail(ErrorCode::InvalidArgument, "def->worker_count is ", def.worker_count,
+             " (with task callbacks it is the number of the host's workers: 1 to NL_MAX_WORKERS = ", NL_MAX_WORKERS, ")");
+}
+
 }  // namespace
 
 extern "C" {
@@ -47,6 +84,9 @@ NL_API nl_world_def nl_default_world_def(void) {
     def.log_user = nullptr;
     def.log_level = NL_LOG_WARNING;
     def.path_worker_count = NL_WORKERS_AUTO;
+    def.task_enqueue_fn = nullptr;
+    def.task_finish_fn = nullptr;
+    def.task_user = nullptr;
     return def;
 }
 
@@ -55,6 +95,9 @@ NL_API nl_status nl_world_create(const nl_world_def* def, nl_world** out_world) 
         nl::capi::require(out_world, "out_world");
         const nl_world_def settings =
             def ? nl::capi::read_growable(*def, nl_default_world_def(), kWorldDefFirstSize, "def") : nl_default_world_def();
+        if (def && def->size > kWorldDefTasksBegin && def->size < kWorldDefTasksEnd)
+            fail(ErrorCode::InvalidArgument, "def->size is ", def->size, ", which ends inside the task callbacks (bytes ",
+                 kWorldDefTasksBegin, " to ", kWorldDefTasksEnd, "; initialise it from nl_default_world_def or with sizeof)");
         // Bounded above too: TBB sizes an arena by its count (2^31 slots crash its first use), and
         // the path queue starts one thread each.
         for (const auto& [count, name] : {std::pair{settings.worker_count, "worker_count"},
@@ -65,8 +108,10 @@ NL_API nl_status nl_world_create(const nl_world_def* def, nl_world** out_world) 
         }
         if (settings.log_level > NL_LOG_DEBUG)
             fail(ErrorCode::InvalidArgument, "def->log_level is ", settings.log_level, " (at most NL_LOG_DEBUG)");
+        check_task_callbacks(settings);
         nl::WorldSettings core;
         core.worker_count = resolve_worker_count(settings.worker_count);
+        if (settings.task_enqueue_fn) core.tasks = host_tasks_of(settings);  // else TBB with worker_count threads
         core.path_worker_count =
             settings.path_worker_count == 0 ? 0u : static_cast<unsigned>(resolve_worker_count(settings.path_worker_count));
         core.logger = logger_of(settings);

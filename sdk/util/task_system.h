@@ -1,5 +1,5 @@
 // The one interface all parallel work goes through. The default runs on TBB (Embree brings it);
-// a host may later supply its own scheduler behind the same interface.
+// a host may supply its own scheduler behind the same interface (host_task_system.h).
 //
 // The contract that keeps every interleaving of NavLink's thread-safe calls free of deadlock:
 //  - A parallel_for body never blocks on a lock (NavLink's bodies read what their caller prepared

@@ -30,6 +30,11 @@ _Static_assert(offsetof(nl_ray_hit, hit) == 44, "nl_ray_hit.hit offset");
 _Static_assert(offsetof(nl_world_def, worker_count) == 4 && offsetof(nl_world_def, log_fn) == 8 &&
                    offsetof(nl_world_def, log_user) == 16 && offsetof(nl_world_def, log_level) == 24,
                "nl_world_def on LP64");
+/* The task callbacks start where the previous version's struct (with its padding) ended. */
+_Static_assert(offsetof(nl_world_def, path_worker_count) == 32 && offsetof(nl_world_def, task_enqueue_fn) == 40 &&
+                   offsetof(nl_world_def, task_finish_fn) == 48 && offsetof(nl_world_def, task_user) == 56 &&
+                   sizeof(nl_world_def) == 64,
+               "nl_world_def's task callbacks on LP64");
 _Static_assert(offsetof(nl_mesh_def, vertices) == 8 && offsetof(nl_mesh_def, vertex_stride) == 20 &&
                    offsetof(nl_mesh_def, indices) == 24 && offsetof(nl_mesh_def, flags) == 36 &&
                    offsetof(nl_mesh_def, transform) == 40 && offsetof(nl_mesh_def, user_data) == 48,

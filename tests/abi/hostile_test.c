@@ -1087,8 +1087,46 @@ static const def_case k_world_defs[] = {
     {"def->log_user NULL (allowed: never dereferenced)", ALLOWED, NULL, {SET_PTR(nl_world_def, log_user, NULL)}},
 };
 
+/* A host task system that runs every task at once (and returns NULL), for defs with task callbacks. */
+static void* hostile_task_enqueue(void* user, nl_task_fn* task, void* task_context, uint32_t item_count,
+                                  uint32_t min_range) {
+    (void)user;
+    (void)min_range;
+    task(task_context, 0u, item_count, 0u);
+    return NULL;
+}
+static void hostile_task_finish(void* user, void* host_task) {
+    (void)user;
+    (void)host_task;
+}
+
+/* Made bad from a def with both task callbacks set and worker_count 2. */
+static const def_case k_world_task_defs[] = {
+    {"def->task_enqueue_fn NULL (task_finish_fn set)", INVALID, "def->task_enqueue_fn is NULL",
+     {SET_PTR(nl_world_def, task_enqueue_fn, NULL)}},
+    {"def->task_finish_fn NULL (task_enqueue_fn set)", INVALID, "def->task_finish_fn is NULL",
+     {SET_PTR(nl_world_def, task_finish_fn, NULL)}},
+    {"def->task_enqueue_fn NULL and task_finish_fn NULL (allowed: TBB)", ALLOWED, NULL,
+     {SET_PTR(nl_world_def, task_enqueue_fn, NULL), SET_PTR(nl_world_def, task_finish_fn, NULL)}},
+    {"def->task_user NULL (allowed: never dereferenced)", ALLOWED, NULL, {SET_PTR(nl_world_def, task_user, NULL)}},
+    {"def->worker_count 0 (with task callbacks: the host's workers, at least 1)", INVALID, "worker_count",
+     {SET_I32(nl_world_def, worker_count, 0)}},
+    {"def->worker_count -1 (NL_WORKERS_AUTO, with task callbacks)", INVALID, "worker_count",
+     {SET_I32(nl_world_def, worker_count, NL_WORKERS_AUTO)}},
+    {"def->worker_count huge (NL_MAX_WORKERS + 1, with task callbacks)", INVALID, "NL_MAX_WORKERS",
+     {SET_I32(nl_world_def, worker_count, NL_MAX_WORKERS + 1)}},
+    {"def->worker_count NL_MAX_WORKERS (allowed with task callbacks: no thread starts)", ALLOWED, NULL,
+     {SET_I32(nl_world_def, worker_count, NL_MAX_WORKERS)}},
+    {"def->size small (ends inside the task callbacks)", INVALID, "def->size",
+     {SET_U32(nl_world_def, size, (uint32_t)offsetof(nl_world_def, task_finish_fn))}},
+    {"def->size small (before the task callbacks: they are not read)", ALLOWED, NULL,
+     {SET_U32(nl_world_def, size, (uint32_t)offsetof(nl_world_def, task_enqueue_fn)),
+      SET_PTR(nl_world_def, task_finish_fn, NULL)}},
+};
+
 static void group_world_create(void) {
     static const def_function create = {"nl_world_create", world_create_call, sizeof(nl_world*), world_destroy_out, 1, 1, 0};
+    nl_world_def with_tasks;
     nl_world_def valid = nl_default_world_def();
 #if !defined(NAVLINK_HOSTILE_SANITIZED)
     /* A library that starts the absurd thread counts runs out of stacks in milliseconds here instead
@@ -1105,6 +1143,13 @@ static void group_world_create(void) {
     def_function_cases(&create, &valid, sizeof valid);
     def_cases("nl_world_create", &valid, sizeof valid, k_world_defs, sizeof k_world_defs / sizeof *k_world_defs, def_refuses,
               def_accepts);
+    with_tasks = valid;
+    with_tasks.worker_count = 2;
+    with_tasks.task_enqueue_fn = hostile_task_enqueue;
+    with_tasks.task_finish_fn = hostile_task_finish;
+    with_tasks.task_user = &with_tasks;
+    def_cases("nl_world_create", &with_tasks, sizeof with_tasks, k_world_task_defs,
+              sizeof k_world_task_defs / sizeof *k_world_task_defs, def_refuses, def_accepts);
 }
 
 static void group_world_destroy(void) {

@@ -14,6 +14,14 @@ namespace NavLink
         /// thread or a NavLink worker: must be thread-safe and must not call into the world.</summary>
         public LogHandler Log;
         public uint LogLevel = NavLink.LogLevel.Warning;
+        /// <summary>A host task system (navlink.h: nl_task_enqueue_fn, nl_task_finish_fn), both or neither:
+        /// the world's batch work runs on the engine's job threads, and WorkerCount is the number of its
+        /// workers. Function pointers: native ones (an engine plugin's), or
+        /// Marshal.GetFunctionPointerForDelegate of static NativeCallbacks.TaskEnqueueFn / TaskFinishFn
+        /// delegates kept alive as long as the world. TaskUser is passed back to both.</summary>
+        public IntPtr TaskEnqueueFn;
+        public IntPtr TaskFinishFn;
+        public IntPtr TaskUser;
     }
 
     /// <summary>
@@ -34,6 +42,9 @@ namespace NavLink
             def.WorkerCount = options.WorkerCount;
             def.PathWorkerCount = options.PathWorkerCount;
             def.LogLevel = options.LogLevel;
+            def.TaskEnqueueFn = options.TaskEnqueueFn;
+            def.TaskFinishFn = options.TaskFinishFn;
+            def.TaskUser = options.TaskUser;
             GCHandle log = default(GCHandle);
             if (options.Log != null)
             {

@@ -19,6 +19,7 @@ namespace NavLink.Tests
             var check = new Checks();
             check.Run("structs, initialisers and constants against the C compiler", () => LayoutTests.Run(check, layout));
             LevelTests.Run(check, levels);
+            HostTaskTests.Run(check);
             NavmeshTests.Run(check);
             LinkTests.Run(check);
             PluginTests.Run(check);

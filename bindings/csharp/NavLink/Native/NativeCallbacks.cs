@@ -13,6 +13,20 @@ namespace NavLink
         [UnmanagedFunctionPointer(CallingConvention.Cdecl)]
         public delegate void LogFn(IntPtr user, uint level, uint status, IntPtr message);
 
+        /// <summary>nl_task_fn: runs items [begin, end) of a task NavLink enqueued (call it through
+        /// Marshal.GetDelegateForFunctionPointer of the pointer TaskEnqueueFn receives).</summary>
+        [UnmanagedFunctionPointer(CallingConvention.Cdecl)]
+        public delegate void TaskFn(IntPtr taskContext, uint begin, uint end, uint workerIndex);
+
+        /// <summary>nl_task_enqueue_fn: `task` is an nl_task_fn pointer; returns the host's handle, or
+        /// IntPtr.Zero when every range already ran.</summary>
+        [UnmanagedFunctionPointer(CallingConvention.Cdecl)]
+        public delegate IntPtr TaskEnqueueFn(IntPtr user, IntPtr task, IntPtr taskContext, uint itemCount, uint minRange);
+
+        /// <summary>nl_task_finish_fn.</summary>
+        [UnmanagedFunctionPointer(CallingConvention.Cdecl)]
+        public delegate void TaskFinishFn(IntPtr user, IntPtr hostTask);
+
         /// <summary>nl_progress_fn: return 0 to cancel.</summary>
         [UnmanagedFunctionPointer(CallingConvention.Cdecl)]
         public delegate int ProgressFn(IntPtr user, float fraction, IntPtr stage);

@@ -11,8 +11,9 @@ namespace NavLink
         public override string ToString() { return Major + "." + Minor + "." + Patch; }
     }
 
-    /// <summary>nl_world_def. Get one from Native.nl_default_world_def(); LogFn is a function pointer
-    /// (Marshal.GetFunctionPointerForDelegate of a static NativeCallbacks.LogFn).</summary>
+    /// <summary>nl_world_def. Get one from Native.nl_default_world_def(); LogFn, TaskEnqueueFn and
+    /// TaskFinishFn are function pointers (native ones, or Marshal.GetFunctionPointerForDelegate of a static
+    /// NativeCallbacks.LogFn / TaskEnqueueFn / TaskFinishFn).</summary>
     [StructLayout(LayoutKind.Sequential)]
     public struct WorldDef
     {
@@ -23,5 +24,8 @@ namespace NavLink
         public uint LogLevel;
         public uint Reserved;
         public int PathWorkerCount;
+        public IntPtr TaskEnqueueFn;
+        public IntPtr TaskFinishFn;
+        public IntPtr TaskUser;
     }
 }

@@ -22,6 +22,22 @@ pub const NL_WORKERS_AUTO: i32 = -1;
 /// Largest `worker_count` and `path_worker_count` a world accepts.
 pub const NL_MAX_WORKERS: i32 = 1024;
 
+/// `nl_task_fn*`: runs items `[begin, end)` of a task NavLink enqueued, for host worker `worker_index`.
+pub type nl_task_fn = Option<unsafe extern "C" fn(task_context: *mut c_void, begin: u32, end: u32, worker_index: u32)>;
+/// `nl_task_enqueue_fn*`: starts a task on the host's task system; returns its handle, or null when it
+/// already ran every range.
+pub type nl_task_enqueue_fn = Option<
+    unsafe extern "C" fn(
+        user: *mut c_void,
+        task: nl_task_fn,
+        task_context: *mut c_void,
+        item_count: u32,
+        min_range: u32,
+    ) -> *mut c_void,
+>;
+/// `nl_task_finish_fn*`: returns once every range of an enqueued task has run.
+pub type nl_task_finish_fn = Option<unsafe extern "C" fn(user: *mut c_void, host_task: *mut c_void)>;
+
 #[repr(C)]
 #[derive(Clone, Copy, Debug)]
 pub struct nl_world_def {
@@ -32,6 +48,9 @@ pub struct nl_world_def {
     pub log_level: nl_log_level,
     pub reserved: u32,
     pub path_worker_count: i32,
+    pub task_enqueue_fn: nl_task_enqueue_fn,
+    pub task_finish_fn: nl_task_finish_fn,
+    pub task_user: *mut c_void,
 }
 
 extern "C" {

@@ -29,7 +29,7 @@ pub use navmesh::{default_agent_type, default_recast_settings, NavmeshBuild, Nav
 pub use paths::{default_agent_capabilities, FinishedPath, PathBudget, PathOutcome, PathQuery, PathResult};
 pub use plugins::PluginSummary;
 pub use types::*;
-pub use world::{LogFn, World, WorldOptions};
+pub use world::{HostTasks, LogFn, World, WorldOptions};
 
 /// The raw bindings, for what the safe API does not cover (and for writing plugins).
 pub use navlink_sys as sys;

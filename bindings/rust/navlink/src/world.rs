@@ -33,6 +33,29 @@ impl Default for WorldOptions {
     }
 }
 
+/// A host task system (`nl_world_def.task_enqueue_fn`, `task_finish_fn`, `task_user`): NavLink's batch
+/// work (ray and segment batches, point location, link generation) runs on the host's threads instead of
+/// TBB's, with identical results. `WorldOptions::worker_count` is then the number of the host's workers
+/// (1 to `NL_MAX_WORKERS`; the worker indices NavLink may be given lie below it). The callbacks'
+/// contract is navlink.h's (`nl_task_fn`, `nl_task_enqueue_fn`, `nl_task_finish_fn`); see
+/// `World::with_host_tasks`.
+#[derive(Clone, Copy, Debug)]
+pub struct HostTasks {
+    /// Starts `task(task_context, begin, end, worker)` over ranges covering `[0, item_count)`; returns
+    /// the host's handle, or null when every range already ran.
+    pub enqueue: unsafe extern "C" fn(
+        user: *mut c_void,
+        task: sys::nl_task_fn,
+        task_context: *mut c_void,
+        item_count: u32,
+        min_range: u32,
+    ) -> *mut c_void,
+    /// Returns once every range of the task behind `host_task` has run (helping rather than sleeping).
+    pub finish: unsafe extern "C" fn(user: *mut c_void, host_task: *mut c_void),
+    /// Passed back to both as `user`.
+    pub user: *mut c_void,
+}
+
 /// A NavLink world. Its methods may be called from several threads at once (navlink.h); dropping it
 /// destroys the world, finishing queued path requests as cancelled (their callbacks run then).
 pub struct World {
@@ -54,10 +77,31 @@ impl World {
     }
 
     pub fn with_options(options: WorldOptions) -> Result<World> {
+        World::create(options, None)
+    }
+
+    /// A world whose batch work runs on the host's task system.
+    ///
+    /// # Safety
+    /// `tasks.enqueue` and `tasks.finish` must keep navlink.h's contract: every range of a task run
+    /// exactly once, and all of them returned before `finish` returns (or before `enqueue` returns
+    /// null), whatever thread they run on; `finish` must not run work that calls into NavLink while
+    /// it waits. Both, and whatever `tasks.user` points to, must stay valid and usable from any
+    /// thread until the world is dropped.
+    pub unsafe fn with_host_tasks(options: WorldOptions, tasks: HostTasks) -> Result<World> {
+        World::create(options, Some(tasks))
+    }
+
+    fn create(options: WorldOptions, tasks: Option<HostTasks>) -> Result<World> {
         let mut def = unsafe { sys::nl_default_world_def() };
         def.worker_count = options.worker_count;
         def.path_worker_count = options.path_worker_count;
         def.log_level = options.log_level;
+        if let Some(tasks) = tasks {
+            def.task_enqueue_fn = Some(tasks.enqueue);
+            def.task_finish_fn = Some(tasks.finish);
+            def.task_user = tasks.user;
+        }
         let log: Option<Box<LogBox>> = options.log.map(Box::new);
         if let Some(handler) = &log {
             def.log_fn = Some(callbacks::log);
