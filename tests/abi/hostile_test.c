@@ -778,6 +778,46 @@ static void out_sizes(const char* function, const char* param, size_t size, out_
     }
 }
 
+/* An output of growable elements (an array laid out by its first element's `size`, or one such
+   struct): `call` runs the function with `out` (room for 256 elements of sizeof + 64 bytes) and
+   says how many elements a success wrote. Size 0, 4 and sizeof - 1 (no element's size: not a multiple
+   of its alignment) are refused with nothing written; a larger size (a newer header's elements) lays
+   the array out with that stride, sets each element's size to it and writes nothing past the
+   library's part of each. */
+typedef nl_status element_call_fn(void* out, uint32_t* written);
+static void out_element_sizes(const char* function, const char* param, size_t size, element_call_fn* call) {
+    static const uint32_t too_small[2] = {0u, 4u};
+    const size_t stride = size + 64u, room = 256u * stride + 64u;
+    unsigned char* buffer = (unsigned char*)malloc(room);
+    int k;
+    if (!buffer) exit(2);
+    for (k = 0; k < 3; ++k) {
+        CASE(function, k == 0 ? "%s->size 0 (the first element's: unset)" : k == 1 ? "%s->size small (4)"
+                                                                            : "%s->size small (sizeof - 1: no struct's size)",
+             param) {
+            uint32_t written = 0;
+            fill(buffer, room);
+            set_size(buffer, k < 2 ? too_small[k] : (uint32_t)size - 1u);
+            EXPECT_INVALID(A.world, call(buffer, &written), "size");
+            EXPECT_UNTOUCHED(buffer + sizeof(uint32_t), room - sizeof(uint32_t), param);
+        }
+    }
+    CASE(function, "%s->size large (sizeof + 64: a newer header's elements)", param) {
+        uint32_t written = 0, i, got;
+        fill(buffer, room);
+        set_size(buffer, (uint32_t)stride);
+        EXPECT_OK(call(buffer, &written));
+        EXPECT(written >= 1u && written <= 256u, "%u elements written", (unsigned)written);
+        for (i = 0; i < written && i < 256u; ++i) {
+            memcpy(&got, buffer + i * stride, sizeof got);
+            EXPECT(got == stride, "%s[%u].size became %u", param, (unsigned)i, (unsigned)got);
+            EXPECT_UNTOUCHED(buffer + i * stride + size, 64, "the bytes of an element past the library's struct");
+        }
+        EXPECT_UNTOUCHED(buffer + written * stride, 64, "the bytes past the last element");
+    }
+    free(buffer);
+}
+
 /* A function that takes an id: `call` runs it on `world` with `id` and the output `out` (NULL when
    the case passes none); for an nl_*_is_valid function it returns the recorded status and
    reports a 1. */
@@ -1037,6 +1077,7 @@ static void group_defaults(void) {
     DEFAULT_CASE(nl_default_link_def, nl_link_def, 1)
     DEFAULT_CASE(nl_default_link_settings, nl_link_settings, 1)
     DEFAULT_CASE(nl_default_path_request_def, nl_path_request_def, 1)
+    DEFAULT_CASE(nl_default_path_budget, nl_path_budget, 1)
     DEFAULT_CASE(nl_default_agent_type, nl_agent_type, 0)
     DEFAULT_CASE(nl_default_agent_capabilities, nl_agent_capabilities, 0)
     CASE("nl_default_agent_type", "values as documented (0.6, 2, 0.9, 45)") {
@@ -1631,6 +1672,12 @@ static nl_status segments_blocked(nl_world* w, const void* items, uint32_t count
     return nl_world_segments_blocked(w, (const nl_segment*)items, count, (uint8_t*)out);
 }
 
+static nl_status cast_known_rays(void* out, uint32_t* written) {
+    const nl_ray rays[3] = {{{-6, 5, 0}, {0, -1, 0}, 100}, {{6, 5, 0}, {0, -1, 0}, 100}, {{42, 5, 0}, {0, -1, 0}, 100}};
+    *written = 3u;
+    return nl_world_cast_rays(A.world, rays, 3, (nl_ray_hit*)out);
+}
+
 static void group_world_cast_rays(void) {
     static const batch_function f = {"nl_world_cast_rays", "rays", "out_hits", sizeof(nl_ray), sizeof(nl_ray_hit), cast_rays};
     const nl_ray valid[3] = {{{-6, 5, 0}, {0, -1, 0}, 100}, {{6, 5, 0}, {0, -1, 0}, 100}, {{42, 5, 0}, {0, -1, 0}, 100}};
@@ -1654,6 +1701,7 @@ static void group_world_cast_rays(void) {
         EXPECT_OK(nl_world_cast_rays(A.world, rays, 3, hits));
         EXPECT(hits[0].hit == 1 && hits[2].hit == 1, "the rays down onto the platform and the lift missed");
     }
+    out_element_sizes("nl_world_cast_rays", "out_hits", sizeof(nl_ray_hit), cast_known_rays);
 }
 
 static void group_world_segments_blocked(void) {
@@ -1809,6 +1857,11 @@ static nl_navmesh_info navmesh_info(const world_fixture* f, nl_navmesh_id id) {
     return info;
 }
 
+static nl_status polygon_into(void* out, uint32_t* written) {
+    *written = 1u;
+    return nl_navmesh_get_polygon(A.world, A.navmesh, 0, (nl_nav_polygon*)out);
+}
+
 static void group_navmesh_get_polygon(void) {
     const uint32_t polygons = navmesh_info(&A, A.navmesh).polygon_count;
     const uint32_t out_of_range[2] = {polygons, UINT32_MAX};
@@ -1827,6 +1880,7 @@ static void group_navmesh_get_polygon(void) {
             EXPECT_UNTOUCHED(&out, sizeof out, "out_polygon");
         }
     }
+    out_element_sizes("nl_navmesh_get_polygon", "out_polygon", sizeof(nl_nav_polygon), polygon_into);
 }
 
 /* The list functions of a navmesh, with their id cases: `call` lists from A's navmesh. */
@@ -2099,7 +2153,14 @@ static void group_link_update(void) {
 
 static void group_link_remove(void) { link_id_cases(2); }
 static void group_link_is_valid(void) { link_id_cases(3); }
-static void group_link_get(void) { link_id_cases(4); }
+static nl_status link_into(void* out, uint32_t* written) {
+    *written = 1u;
+    return nl_link_get(A.world, A.link, (nl_link*)out);
+}
+static void group_link_get(void) {
+    link_id_cases(4);
+    out_element_sizes("nl_link_get", "out_link", sizeof(nl_link), link_into);
+}
 
 static uint32_t link_count(nl_navmesh_id navmesh) {
     uint32_t n = 0;
@@ -2107,10 +2168,14 @@ static uint32_t link_count(nl_navmesh_id navmesh) {
     return n;
 }
 
+static nl_status links_into(void* out, uint32_t* written) {
+    return nl_navmesh_get_links(A.world, A.navmesh, (nl_link*)out, 256u, written);
+}
 static void group_navmesh_get_links(void) {
     g_growable_items = 1;
     navmesh_list_cases("nl_navmesh_get_links", "out_links", sizeof(nl_link), link_count(A.navmesh), list_links);
     g_growable_items = 0;
+    out_element_sizes("nl_navmesh_get_links", "out_links", sizeof(nl_link), links_into);
 }
 
 static void group_navmesh_remove_generated_links(void) {
@@ -2723,11 +2788,17 @@ static nl_status find_into(void* result) {
     return find_known((nl_path_result*)result, points, 64, &count);
 }
 
+static nl_status find_points(void* out, uint32_t* written) {
+    nl_path_result result = nl_path_result_init();
+    return find_known(&result, (nl_path_point*)out, 256u, written);
+}
+
 static void group_path_find(void) {
     g_queued = 0;
     request_def_cases("nl_path_find");
     result_cases("nl_path_find", find_known);
     out_sizes("nl_path_find", "out_result", sizeof(nl_path_result), find_into);
+    out_element_sizes("nl_path_find", "out_points", sizeof(nl_path_point), find_points);
 }
 
 static void group_path_request(void) {
@@ -2796,6 +2867,11 @@ static nl_status result_into(void* result) {
     return result_of_done((nl_path_result*)result, points, 64, &count);
 }
 
+static nl_status result_points(void* out, uint32_t* written) {
+    nl_path_result result = nl_path_result_init();
+    return result_of_done(&result, (nl_path_point*)out, 256u, written);
+}
+
 static void group_path_get_result(void) {
     ticket_id_cases(3);
     CASE("nl_path_get_result", "ticket pending (IN_PROGRESS: nothing written)") {
@@ -2807,6 +2883,7 @@ static void group_path_get_result(void) {
     }
     result_cases("nl_path_get_result", result_of_done);
     out_sizes("nl_path_get_result", "out_result", sizeof(nl_path_result), result_into);
+    out_element_sizes("nl_path_get_result", "out_points", sizeof(nl_path_point), result_points);
 }
 
 /* nl_path_process with `out_processed` given: what it must return and how many it must plan. */
@@ -2821,11 +2898,11 @@ typedef struct process_case {
 
 static void group_path_process(void) {
     const process_case cases[] = {
-        {"max_milliseconds NaN (nothing planned)", 0, (double)NAN, 1, NL_STATUS_INVALID_ARGUMENT, 0},
-        {"max_milliseconds -inf (allowed: no limit)", 1, -(double)INFINITY, 1, 0u, 1},
-        {"max_milliseconds inf (allowed: no limit)", 0, (double)INFINITY, 1, 0u, 0},
-        {"max_requests 0 (allowed: no limit)", 0, 0.0, 1, 0u, 0},
-        {"max_requests huge (allowed)", UINT32_MAX, 0.0, 1, 0u, 0},
+        {"budget->max_milliseconds NaN (nothing planned)", 0, (double)NAN, 1, NL_STATUS_INVALID_ARGUMENT, 0},
+        {"budget->max_milliseconds -inf (allowed: no limit)", 1, -(double)INFINITY, 1, 0u, 1},
+        {"budget->max_milliseconds inf (allowed: no limit)", 0, (double)INFINITY, 1, 0u, 0},
+        {"budget->max_requests 0 (allowed: no limit)", 0, 0.0, 1, 0u, 0},
+        {"budget->max_requests huge (allowed)", UINT32_MAX, 0.0, 1, 0u, 0},
         {"out_processed NULL (allowed)", 0, 0.0, 0, 0u, 0},
     };
     size_t i;
@@ -2852,6 +2929,142 @@ static void group_path_process(void) {
                 fixture_refresh(); /* the pending request finished */
             }
         }
+    }
+    {
+        /* A request to plan, queued before each case that plans one (the fixture's pending one is
+           planned by the cases above). */
+        const nl_path_request_def def = gap_request(A.navmesh);
+        nl_path_ticket queued;
+        static const uint32_t bad[3] = {0u, 4u, (uint32_t)sizeof(nl_path_budget) - 1u};
+        static const char* what[3] = {"budget->size 0", "budget->size small (4)", "budget->size small (sizeof - 1)"};
+        int k;
+        if (NL_FAILED(nl_path_request(A.world, &def, &queued))) fixture_failed("a request to plan");
+        fixture_refresh();
+        for (k = 0; k < 3; ++k) {
+            CASE("nl_path_process", "%s (nothing planned)", what[k]) {
+                nl_path_budget budget = nl_default_path_budget();
+                uint32_t processed;
+                nl_path_outcome outcome = NL_PATH_COMPLETE;
+                budget.size = bad[k];
+                fill(&processed, sizeof processed);
+                EXPECT_INVALID(A.world, nl_path_process(A.world, &budget, &processed), "budget->size");
+                EXPECT_UNTOUCHED(&processed, sizeof processed, "out_processed");
+                EXPECT(NL_SUCCEEDED(nl_path_poll(A.world, queued, &outcome)) && outcome == NL_PATH_PENDING,
+                       "the queued request was planned");
+            }
+        }
+        CASE("nl_path_process", "budget NULL (allowed: no limits)") {
+            uint32_t processed;
+            fill(&processed, sizeof processed);
+            EXPECT_OK(nl_path_process(A.world, NULL, &processed));
+            EXPECT(processed == 1u, "planned %u requests, expected the queued one", (unsigned)processed);
+            fixture_refresh();
+        }
+        nl_path_release(A.world, queued);
+        if (NL_FAILED(nl_path_request(A.world, &def, &queued)) || NL_FAILED(nl_path_request(A.world, &def, &queued)))
+            fixture_failed("requests to plan");
+        fixture_refresh();
+        CASE("nl_path_process", "budget->size large (sizeof + 64: the fields it knows are read)") {
+            aligned_buffer buffer;
+            nl_path_budget budget = nl_default_path_budget();
+            uint32_t processed = 0;
+            fill(buffer.bytes, sizeof buffer.bytes);
+            budget.size = (uint32_t)sizeof budget + 64u;
+            budget.max_requests = 1u;
+            memcpy(buffer.bytes, &budget, sizeof budget);
+            EXPECT_OK(nl_path_process(A.world, (const nl_path_budget*)buffer.bytes, &processed));
+            EXPECT(processed == 1u, "planned %u requests, expected 1 of 2 (max_requests read)", (unsigned)processed);
+            fixture_refresh();
+        }
+        CASE("nl_path_process", "budget->max_search_nodes 1 (allowed: one request, the one crossing it)") {
+            nl_path_budget budget = nl_default_path_budget();
+            uint32_t processed = 0;
+            budget.max_search_nodes = 1u;
+            EXPECT_OK(nl_path_process(A.world, &budget, &processed));
+            EXPECT(processed == 1u, "planned %u requests, expected 1", (unsigned)processed);
+            fixture_refresh();
+        }
+    }
+}
+
+/* A request planned and finished, waiting to be taken; its ticket in *out. */
+static void finish_one(nl_path_ticket* out) {
+    const nl_path_request_def def = gap_request(A.navmesh);
+    if (NL_FAILED(nl_path_request(A.world, &def, out)) || NL_FAILED(nl_path_process(A.world, NULL, NULL)))
+        fixture_failed("a request to take");
+}
+
+static nl_status take_into(void* out, uint32_t* written) {
+    return nl_path_take_finished(A.world, (nl_path_finished*)out, 256u, written, NULL);
+}
+
+static void group_path_take_finished(void) {
+    nl_path_ticket ticket;
+    uint32_t waiting = 0, taken;
+    nl_path_finished drained[64];
+    drained[0] = nl_path_finished_init();
+    /* The fixture's finished requests taken first: then exactly one waits. */
+    if (NL_FAILED(nl_path_take_finished(A.world, drained, 64, &taken, &waiting)) || waiting != 0u)
+        fixture_failed("the fixture's finished requests");
+    finish_one(&ticket);
+    fixture_refresh();
+    CASE("nl_path_take_finished", "world NULL") {
+        nl_path_finished out[2];
+        uint32_t count, remaining;
+        fill(out, sizeof out);
+        out[0].size = sizeof out[0];
+        fill(&count, sizeof count);
+        fill(&remaining, sizeof remaining);
+        EXPECT_INVALID(NULL, nl_path_take_finished(NULL, out, 2, &count, &remaining), "world");
+        EXPECT_UNTOUCHED_AFTER_SIZE(out, sizeof out, "out_finished");
+        EXPECT_UNTOUCHED(&count, sizeof count, "out_count");
+    }
+    CASE("nl_path_take_finished", "out_count NULL") {
+        nl_path_finished out[2];
+        fill(out, sizeof out);
+        out[0].size = sizeof out[0];
+        EXPECT_INVALID(A.world, nl_path_take_finished(A.world, out, 2, NULL, NULL), "out_count");
+        EXPECT_UNTOUCHED_AFTER_SIZE(out, sizeof out, "out_finished");
+    }
+    CASE("nl_path_take_finished", "out_finished NULL with capacity 2") {
+        uint32_t count;
+        fill(&count, sizeof count);
+        EXPECT_INVALID(A.world, nl_path_take_finished(A.world, NULL, 2, &count, NULL), "out_finished");
+        EXPECT_UNTOUCHED(&count, sizeof count, "out_count");
+    }
+    CASE("nl_path_take_finished", "capacity 0 (allowed: takes nothing, says how many wait)") {
+        uint32_t count = 77u, remaining = 0u, again = 0u;
+        EXPECT_OK(nl_path_take_finished(A.world, NULL, 0, &count, &remaining));
+        EXPECT_OK(nl_path_take_finished(A.world, NULL, 0, &count, &again));
+        /* finish_one planned the fixture's pending request too: two wait, and stay. */
+        EXPECT(count == 0u && remaining == 2u && again == 2u, "took %u, %u then %u waiting", (unsigned)count,
+               (unsigned)remaining, (unsigned)again);
+    }
+    /* Each size refusal keeps the finished request: the size-large case takes it (then the world
+       changed: refreshed). */
+    /* The refusals below lose nothing: the finished request is still there for the size-large case. */
+    out_element_sizes("nl_path_take_finished", "out_finished", sizeof(nl_path_finished), take_into);
+    fixture_refresh();
+    finish_one(&ticket);
+    fixture_refresh();
+    CASE("nl_path_take_finished", "capacity huge (allowed: takes what there is)") {
+        nl_path_finished out[4];
+        uint32_t count = 0u;
+        out[0] = nl_path_finished_init();
+        EXPECT_OK(nl_path_take_finished(A.world, out, UINT32_MAX, &count, NULL));
+        EXPECT(count == 1u && out[0].ticket.index1 == ticket.index1 && out[0].outcome == NL_PATH_COMPLETE,
+               "took %u requests", (unsigned)count);
+        fixture_refresh();
+    }
+    finish_one(&ticket);
+    fixture_refresh();
+    CASE("nl_path_take_finished", "out_remaining NULL (allowed)") {
+        nl_path_finished out[1];
+        uint32_t count = 0u;
+        out[0] = nl_path_finished_init();
+        EXPECT_OK(nl_path_take_finished(A.world, out, 1, &count, NULL));
+        EXPECT(count == 1u, "took %u requests", (unsigned)count);
+        fixture_refresh();
     }
 }
 
@@ -3065,6 +3278,7 @@ static const hostile_group k_groups[] = {
     {"path_cancel", group_path_cancel},
     {"path_release", group_path_release},
     {"path_process", group_path_process},
+    {"path_take_finished", group_path_take_finished},
     {"path_get_queue_stats", group_path_get_queue_stats},
     {"plugin_load", group_plugin_load},
     {"plugin_register", group_plugin_register},
