@@ -59,6 +59,13 @@ LINK_JUMP, LINK_DROP, LINK_MANUAL, LINK_FIRST_PLUGIN_KIND = 1, 2, 3, 256
 AREA_EXCLUDED = 0.0
 (PATH_PENDING, PATH_COMPLETE, PATH_PARTIAL, PATH_NO_PATH, PATH_START_OFF_NAVMESH, PATH_GOAL_OFF_NAVMESH,
  PATH_CANCELLED, PATH_FAILED) = range(8)
+(AGENT_IDLE, AGENT_WALKING, AGENT_JUMPING, AGENT_FALLING, AGENT_TRAVERSING, AGENT_WAITING, AGENT_ARRIVED,
+ AGENT_FAILED) = range(8)
+(AGENT_REASON_NONE, AGENT_REASON_DESTINATION_SET, AGENT_REASON_LINK_GONE, AGENT_REASON_WORLD_CHANGED,
+ AGENT_REASON_OFF_PATH, AGENT_REASON_NO_PATH, AGENT_REASON_NAVMESH_REMOVED, AGENT_REASON_CAPABILITIES_CHANGED) = range(8)
+TRAJECTORY_NONE, TRAJECTORY_ARC, TRAJECTORY_FALL, TRAJECTORY_LINE = range(4)
+(AGENT_EVENT_PATH_READY, AGENT_EVENT_LINK_STARTED, AGENT_EVENT_LINK_FINISHED, AGENT_EVENT_ARRIVED, AGENT_EVENT_FAILED,
+ AGENT_EVENT_REPLANNED) = range(1, 7)
 PLUGIN_NAVMESH_BUILDER, PLUGIN_LINK_KIND = 0x1, 0x2
 PLUGIN_ABI_VERSION = 1
 PLUGIN_ENTRY_SYMBOL = "nl_plugin_entry"
@@ -105,7 +112,8 @@ class WorldDef(Structure):
     _fields_ = [("size", c_uint32), ("worker_count", c_int32), ("log_fn", LogFn), ("log_user", c_void_p),
                 ("log_level", c_uint32), ("reserved", c_uint32),
                 ("path_worker_count", c_int32), ("task_enqueue_fn", TaskEnqueueFn),
-                ("task_finish_fn", TaskFinishFn), ("task_user", c_void_p)]
+                ("task_finish_fn", TaskFinishFn), ("task_user", c_void_p), ("agent_paths_per_step", c_uint32),
+                ("reserved2", c_uint32)]
 
 
 class _Id(Structure):
@@ -300,6 +308,38 @@ class PathQueueStats(_Growable):
                 ("unreleased", c_uint32), ("reserved", c_uint32), ("submitted", c_uint64), ("finished", c_uint64)]
 
 
+class AgentId(_Id):
+    pass
+
+
+class AgentDef(Structure):
+    """nl_agent_def: how to add an agent (default_agent_def(): set navmesh and position)."""
+    _fields_ = [("size", c_uint32), ("navmesh", NavmeshId), ("height", c_float), ("capabilities", AgentCapabilities),
+                ("max_speed", c_float), ("max_acceleration", c_float), ("gravity", c_float),
+                ("takeoff_speed", c_float), ("position", Vec3), ("avoidance", c_uint8), ("reserved", c_uint8 * 3),
+                ("user_data", c_uint64)]
+
+
+class AgentInfo(_Growable):
+    """nl_agent_info: an agent's state (state: AGENT_*, reason: AGENT_REASON_*)."""
+    _fields_ = [("size", c_uint32), ("state", c_uint32), ("id", AgentId), ("position", Vec3), ("velocity", Vec3),
+                ("polygon", c_uint32), ("reason", c_uint32), ("link", LinkId), ("link_progress", c_float),
+                ("destination", Vec3), ("has_destination", c_uint8), ("reserved", c_uint8 * 3),
+                ("corners_ahead", c_uint32), ("user_data", c_uint64)]
+
+
+class AgentTrajectory(_Growable):
+    """nl_agent_trajectory: the link an agent is taking (kind: TRAJECTORY_*), with its timing."""
+    _fields_ = [("size", c_uint32), ("kind", c_uint32), ("link", LinkId), ("from", Vec3), ("to", Vec3),
+                ("apex", Vec3), ("points", Vec3 * 4), ("duration", c_float), ("elapsed", c_float)]
+
+
+class AgentEvent(_Growable):
+    """nl_agent_event: what happened to an agent in the last step (kind: AGENT_EVENT_*)."""
+    _fields_ = [("size", c_uint32), ("kind", c_uint32), ("agent", AgentId), ("link", LinkId), ("reason", c_uint32),
+                ("reserved", c_uint32), ("user_data", c_uint64)]
+
+
 class PluginId(_Id):
     pass
 
@@ -373,7 +413,9 @@ C_STRUCTS = {
     "nl_link_settings": LinkSettings, "nl_link_generation_report": LinkGenerationReport, "nl_path_ticket": PathTicket,
     "nl_agent_capabilities": AgentCapabilities, "nl_path_request_def": PathRequestDef, "nl_path_point": PathPoint,
     "nl_path_result": PathResultInfo, "nl_path_budget": PathBudget, "nl_path_finished": PathFinished,
-    "nl_path_queue_stats": PathQueueStats, "nl_plugin_id": PluginId,
+    "nl_path_queue_stats": PathQueueStats, "nl_agent_id": AgentId, "nl_agent_def": AgentDef,
+    "nl_agent_info": AgentInfo, "nl_agent_trajectory": AgentTrajectory, "nl_agent_event": AgentEvent,
+    "nl_plugin_id": PluginId,
     "nl_plugin_description": PluginDescription, "nl_recast_settings": RecastSettings,
     "nl_plugin_host": PluginHost, "nl_navmesh_builder": NavmeshBuilder,
     "nl_link_kind_provider": LinkKindProvider, "nl_plugin_info": PluginInfo,
@@ -449,6 +491,21 @@ _PROTOTYPES = {
     "nl_path_process": (c_uint32, [_w, POINTER(PathBudget), _u32p]),
     "nl_path_take_finished": (c_uint32, [_w, POINTER(PathFinished), c_uint32, _u32p, _u32p]),
     "nl_path_get_queue_stats": (c_uint32, [_w, POINTER(PathQueueStats)]),
+    "nl_default_agent_def": (AgentDef, []),
+    "nl_agent_add": (c_uint32, [_w, POINTER(AgentDef), POINTER(AgentId)]),
+    "nl_agent_remove": (c_uint32, [_w, AgentId]),
+    "nl_agent_is_valid": (c_int32, [_w, AgentId]),
+    "nl_agent_set_destination": (c_uint32, [_w, AgentId, POINTER(c_float)]),
+    "nl_agent_stop": (c_uint32, [_w, AgentId]),
+    "nl_agent_teleport": (c_uint32, [_w, AgentId, POINTER(c_float)]),
+    "nl_agent_set_capabilities": (c_uint32, [_w, AgentId, POINTER(AgentCapabilities)]),
+    "nl_agent_set_speed": (c_uint32, [_w, AgentId, c_float, c_float]),
+    "nl_world_step": (c_uint32, [_w, c_float]),
+    "nl_agent_get_info": (c_uint32, [_w, AgentId, POINTER(AgentInfo)]),
+    "nl_world_get_agents": (c_uint32, [_w, POINTER(AgentInfo), c_uint32, _u32p]),
+    "nl_agent_get_corners": (c_uint32, [_w, AgentId, POINTER(PathPoint), c_uint32, _u32p]),
+    "nl_agent_get_trajectory": (c_uint32, [_w, AgentId, POINTER(AgentTrajectory)]),
+    "nl_world_get_agent_events": (c_uint32, [_w, POINTER(AgentEvent), c_uint32, _u32p]),
     "nl_plugin_load": (c_uint32, [_w, c_char_p, POINTER(PluginId)]),
     "nl_plugin_get_description": (c_uint32, [_w, PluginId, POINTER(PluginDescription)]),
     "nl_world_get_plugins": (c_uint32, [_w, POINTER(PluginId), c_uint32, _u32p]),
@@ -510,6 +567,18 @@ def nl_path_finished_init():
 
 def nl_path_queue_stats_init():
     return PathQueueStats()
+
+
+def nl_agent_info_init():
+    return AgentInfo()
+
+
+def nl_agent_trajectory_init():
+    return AgentTrajectory()
+
+
+def nl_agent_event_init():
+    return AgentEvent()
 
 
 def nl_plugin_description_init():
@@ -701,6 +770,12 @@ def default_path_budget():
     return lib.nl_default_path_budget()
 
 
+def default_agent_def():
+    """A walker, height 2, speed 3.5, acceleration 8, gravity 9.81, avoidance on, on the null navmesh at the
+    origin: set navmesh and position."""
+    return lib.nl_default_agent_def()
+
+
 def link_settings_from_json(json, base=None):
     """Applies a JSON object's keys to `base` (the defaults when None) and validates the result."""
     settings = LinkSettings.from_buffer_copy(base if base is not None else default_link_settings())
@@ -768,8 +843,11 @@ class World:
     _FIRST_POINT_CAPACITY = 64
 
     def __init__(self, worker_count=WORKERS_AUTO, path_worker_count=WORKERS_AUTO, log=None, log_level=LOG_WARNING,
-                 task_enqueue_fn=None, task_finish_fn=None, task_user=None):
+                 task_enqueue_fn=None, task_finish_fn=None, task_user=None, agent_paths_per_step=None):
         """log: callable(level, status, message), called on the failing thread (maybe a NavLink worker).
+
+        agent_paths_per_step: agents' paths planned in one step() at most (None: the library's default, 32);
+        when many agents ask at once, the rest wait their turn (AGENT_WAITING), oldest first.
 
         task_enqueue_fn, task_finish_fn, task_user: a host task system for the world's batch work
         (navlink.h's nl_task_enqueue_fn and nl_task_finish_fn; worker_count is then the host's workers):
@@ -780,6 +858,8 @@ class World:
         d.worker_count = worker_count
         d.path_worker_count = path_worker_count
         d.log_level = log_level
+        if agent_paths_per_step is not None:
+            d.agent_paths_per_step = agent_paths_per_step
         self._tasks = None
         if task_enqueue_fn is not None or task_finish_fn is not None:
             def as_type(fn, fn_type):
@@ -1139,6 +1219,73 @@ class World:
         stats = PathQueueStats()
         _check(lib.nl_path_get_queue_stats(self.pointer, byref(stats)))
         return stats
+
+    # --- agents ---
+
+    def add_agent(self, agent_def):
+        """Adds an agent standing still (AGENT_IDLE) at the navmesh point of agent_def.position (NavLinkError
+        with STATUS_NOT_FOUND when it is off the navmesh)."""
+        agent = AgentId()
+        _check(lib.nl_agent_add(self.pointer, byref(agent_def), byref(agent)))
+        return agent
+
+    def remove_agent(self, agent):
+        _check(lib.nl_agent_remove(self.pointer, agent))
+
+    def is_agent_valid(self, agent):
+        return lib.nl_agent_is_valid(self.pointer, agent) != 0
+
+    def set_agent_destination(self, agent, destination):
+        """Sends the agent to the navmesh point of destination (STATUS_NOT_FOUND off the navmesh: the
+        destination is not kept); its path is planned in a coming step()."""
+        _check(lib.nl_agent_set_destination(self.pointer, agent, _floats(destination)))
+
+    def stop_agent(self, agent):
+        """Forgets the destination: the agent stands (AGENT_IDLE); one in the air lands first."""
+        _check(lib.nl_agent_stop(self.pointer, agent))
+
+    def teleport_agent(self, agent, position):
+        """Puts the agent at the navmesh point of position, keeping its destination (refused while it is
+        taking a link)."""
+        _check(lib.nl_agent_teleport(self.pointer, agent, _floats(position)))
+
+    def set_agent_capabilities(self, agent, capabilities):
+        """Changes what the agent's body can do (an AgentCapabilities); it plans again."""
+        _check(lib.nl_agent_set_capabilities(self.pointer, agent, byref(capabilities)))
+
+    def set_agent_speed(self, agent, max_speed, max_acceleration):
+        _check(lib.nl_agent_set_speed(self.pointer, agent, max_speed, max_acceleration))
+
+    def step(self, dt):
+        """Advances every agent by dt seconds (finite, >= 0) on the world's workers, with the same result
+        whatever their number. An agent's trouble is its AGENT_FAILED state and event, not an exception."""
+        _check(lib.nl_world_step(self.pointer, dt))
+
+    def agent_info(self, agent):
+        info = AgentInfo()
+        _check(lib.nl_agent_get_info(self.pointer, agent, byref(info)))
+        return info
+
+    def agents(self):
+        """Every agent's AgentInfo, in a stable order until an agent is removed."""
+        return _two_call(lambda b, c, n: lib.nl_world_get_agents(self.pointer, b, c, n), AgentInfo)
+
+    def agent_corners(self, agent):
+        """The PathPoints the agent has yet to reach, the next first: where it walks, and at which point
+        it takes which link (segment, link)."""
+        return _two_call(lambda b, c, n: lib.nl_agent_get_corners(self.pointer, agent, b, c, n), PathPoint)
+
+    def agent_trajectory(self, agent):
+        """The AgentTrajectory of the link the agent is taking now, or None while it is on the ground (the
+        library's kind TRAJECTORY_NONE)."""
+        trajectory = AgentTrajectory()
+        _check(lib.nl_agent_get_trajectory(self.pointer, agent, byref(trajectory)))
+        return None if trajectory.kind == TRAJECTORY_NONE else trajectory
+
+    def agent_events(self):
+        """The AgentEvents of the last step(), in agent order. They stay until the next step: read them
+        once per step."""
+        return _two_call(lambda b, c, n: lib.nl_world_get_agent_events(self.pointer, b, c, n), AgentEvent)
 
     # --- plugins ---
 

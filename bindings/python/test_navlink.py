@@ -45,6 +45,27 @@ def add_gap_level(world):
     add_box(world, (-12, -21, -6), (12, -20, 6))
 
 
+def add_bridge_level(world):
+    """tests/abi/agents_test.c's level: two 4 x 10 m platforms (tops at y = 0) 2 m apart along x, x in [0, 4]
+    and [6, 10], z in [0, 10], joined by a bridge at z 8-10; the host's navmesh is their tops set in 0.3 m
+    from every rim (five convex polygons, for radius 0.3), its links generated. A walker goes round by the
+    bridge; a jumper jumps the gap."""
+    add_box(world, (0, -1, 0), (4, 0, 10))
+    add_box(world, (6, -1, 0), (10, 0, 10))
+    add_box(world, (4, -1, 8), (6, 0, 10))
+    polygons = [[(0.3, 0.3), (0.3, 8), (3.7, 8), (3.7, 0.3)],
+                [(0.3, 8), (0.3, 9.7), (4, 9.7), (4, 8), (3.7, 8)],
+                [(4, 8), (4, 9.7), (6, 9.7), (6, 8)],
+                [(6, 8), (6, 9.7), (9.7, 9.7), (9.7, 8), (6.3, 8)],
+                [(6.3, 0.3), (6.3, 8), (9.7, 8), (9.7, 0.3)]]
+    vertices = [c for polygon in polygons for x, z in polygon for c in (x, 0, z)]
+    agent = nl.default_agent_type()
+    agent.radius = 0.3
+    navmesh = world.add_navmesh(vertices, list(range(len(vertices) // 3)), [len(p) for p in polygons], agent=agent)
+    world.generate_links(navmesh)
+    return navmesh
+
+
 def walker():
     return nl.default_agent_capabilities()
 
@@ -569,6 +590,152 @@ class PathTest(NavLinkTestCase):
             self.assertFails(nl.STATUS_INVALID_HANDLE, "nl_path_cancel", world.cancel_path, nl.PathTicket())
             status = nl.lib.nl_path_get_queue_stats(world.pointer, None)
             self.assertTrue(nl.failed(status) and status & nl.STATUS_INVALID_ARGUMENT)
+
+
+class AgentTest(NavLinkTestCase):
+    """Agents on the bridge level: a jumper takes a generated jump across the gap while a walker goes round
+    by the bridge, as the states read in bulk and the step's events say; bad input refused."""
+    DT = 1.0 / 30.0
+    MAX_STEPS = 30 * 20
+
+    @staticmethod
+    def add_agent(world, navmesh, x, z, jump, user_data):
+        d = nl.default_agent_def()
+        d.navmesh = navmesh
+        d.position = nl.Vec3(x, 0, z)
+        d.capabilities.radius = 0.3
+        d.capabilities.max_jump_distance = jump
+        d.capabilities.max_jump_height = 1.0 if jump > 0 else 0.0
+        d.user_data = user_data
+        return world.add_agent(d)
+
+    @staticmethod
+    def is_subsequence(expected, actual):
+        """Every item of expected occurs in actual, in that order (others may come between)."""
+        items = iter(actual)
+        return all(any(item == want for item in items) for want in expected)
+
+    def test_defaults(self):
+        d = nl.default_agent_def()
+        self.assertEqual(d.size, ctypes.sizeof(nl.AgentDef))
+        self.assertEqual((d.height, d.max_speed, d.max_acceleration, d.takeoff_speed, d.avoidance), (2, 3.5, 8, 0, 1))
+        self.assertAlmostEqual(d.gravity, 9.81, places=5)
+        self.assertTrue(d.navmesh.is_null and d.capabilities.max_jump_distance == 0)
+        self.assertAlmostEqual(d.capabilities.radius, 0.6, places=6)
+        self.assertEqual(nl.lib.nl_default_world_def().agent_paths_per_step, 32)
+
+    def test_walker_goes_round_and_jumper_jumps(self):
+        with nl.World() as world:
+            navmesh = add_bridge_level(world)
+            self.assertTrue(any(link.kind == nl.LINK_JUMP for link in world.links(navmesh)), "jump links across the gap")
+            walker_id = self.add_agent(world, navmesh, 1, 2, 0.0, 11)
+            jumper_id = self.add_agent(world, navmesh, 1, 3, 3.0, 22)
+            self.assertTrue(walker_id != jumper_id and world.is_agent_valid(walker_id))
+            self.assertEqual(world.agent_info(walker_id).state, nl.AGENT_IDLE)
+            jumper_states = [world.agent_info(jumper_id).state]
+            world.set_agent_destination(walker_id, (9, 0, 2))
+            world.set_agent_destination(jumper_id, (9, 0, 3))
+            jumper_states.append(world.agent_info(jumper_id).state)
+
+            events = []
+            walker_corners = jumper_corners = trajectory = in_flight = None
+            walker_max_z = 0.0
+            for _ in range(self.MAX_STEPS):
+                if sum(e.kind == nl.AGENT_EVENT_ARRIVED for e in events) == 2:
+                    break
+                world.step(self.DT)
+                step_events = world.agent_events()
+                if any(e.kind == nl.AGENT_EVENT_PATH_READY for e in step_events):
+                    walker_corners, jumper_corners = world.agent_corners(walker_id), world.agent_corners(jumper_id)
+                events += step_events
+                infos = world.agents()
+                self.assertEqual(len(infos), 2, "both agents listed after every step")
+                for info in infos:
+                    if info.id == walker_id:
+                        walker_max_z = max(walker_max_z, info.position[2])
+                    elif info.id == jumper_id:
+                        if info.state != jumper_states[-1]:
+                            jumper_states.append(info.state)
+                        if info.state == nl.AGENT_JUMPING:
+                            in_flight = info
+                            if trajectory is None:
+                                trajectory = world.agent_trajectory(jumper_id)
+
+            for e in events:
+                self.assertEqual(e.size, ctypes.sizeof(nl.AgentEvent))
+                self.assertEqual(e.user_data, 11 if e.agent == walker_id else 22)
+            ready = [e for e in events if e.kind == nl.AGENT_EVENT_PATH_READY]
+            self.assertEqual([e.reason for e in ready], [nl.AGENT_REASON_DESTINATION_SET] * 2)
+            self.assertEqual(sum(e.kind == nl.AGENT_EVENT_ARRIVED for e in events), 2)
+            self.assertEqual([world.agent_info(a).state for a in (walker_id, jumper_id)], [nl.AGENT_ARRIVED] * 2)
+
+            # The walker takes no link: round by the bridge.
+            self.assertFalse(any(e.agent == walker_id and e.kind == nl.AGENT_EVENT_LINK_STARTED for e in events))
+            self.assertGreater(walker_max_z, 8)
+            self.assertTrue(len(walker_corners) >= 2 and all(p.segment == nl.SEGMENT_WALK for p in walker_corners))
+            self.assertEqual(sum(p.segment == nl.LINK_JUMP for p in jumper_corners), 1)
+
+            # The jumper starts and finishes one generated jump.
+            started = [e for e in events if e.agent == jumper_id and e.kind == nl.AGENT_EVENT_LINK_STARTED]
+            finished = [e for e in events if e.agent == jumper_id and e.kind == nl.AGENT_EVENT_LINK_FINISHED]
+            self.assertTrue(len(started) == 1 and len(finished) == 1 and started[0].link == finished[0].link)
+            jump = world.link(started[0].link)
+            self.assertTrue(jump.kind == nl.LINK_JUMP and jump.generated == 1)
+            expected = [nl.AGENT_IDLE, nl.AGENT_WAITING, nl.AGENT_WALKING, nl.AGENT_JUMPING, nl.AGENT_WALKING,
+                        nl.AGENT_ARRIVED]
+            self.assertTrue(self.is_subsequence(expected, jumper_states), jumper_states)
+
+            # Its trajectory, read in the air.
+            self.assertIsNotNone(trajectory, "a trajectory while jumping")
+            t = trajectory
+            self.assertTrue(t.kind == nl.TRAJECTORY_ARC and t.link == started[0].link)
+            self.assertTrue(t.duration > 0 and 0 <= t.elapsed <= t.duration, (t.duration, t.elapsed))
+            self.assertGreater(t.apex[1], max(getattr(t, "from")[1], t.to[1]))
+            self.assertEqual((list(t.points[0]), list(t.points[3])), (list(getattr(t, "from")), list(t.to)))
+            self.assertTrue(in_flight.link == t.link and 0 <= in_flight.link_progress <= 1)
+
+            self.assertIsNone(world.agent_trajectory(jumper_id), "no trajectory on the ground")
+            self.assertLessEqual(len(world.agent_corners(walker_id)), 1, "an arrived agent has no corners left")
+
+    def test_bad_input(self):
+        self.assertFails(nl.STATUS_INVALID_ARGUMENT, "agent_paths_per_step", nl.World, agent_paths_per_step=0)
+        with nl.World(worker_count=1, agent_paths_per_step=1) as world:
+            navmesh = add_bridge_level(world)
+            agent = self.add_agent(world, navmesh, 1, 2, 0.0, 0)
+            over_the_gap = (5, 0, 2)
+            off = nl.default_agent_def()
+            off.navmesh, off.position = navmesh, nl.Vec3(*over_the_gap)
+            self.assertFails(nl.STATUS_NOT_FOUND, "def->position is not on the navmesh", world.add_agent, off)
+            self.assertFails(nl.STATUS_NOT_FOUND, "nearest navmesh point", world.set_agent_destination, agent, over_the_gap)
+            self.assertEqual(world.agent_info(agent).has_destination, 0, "a refused destination is not kept")
+            self.assertFails(nl.STATUS_INVALID_ARGUMENT, "point", world.set_agent_destination, agent, (math.nan, 0, 0))
+            self.assertFails(nl.STATUS_INVALID_ARGUMENT, "dt", world.step, math.nan)
+            self.assertFails(nl.STATUS_INVALID_ARGUMENT, "max_speed", world.set_agent_speed, agent, -1, 1)
+            nan_radius = walker()
+            nan_radius.radius = math.nan
+            self.assertFails(nl.STATUS_INVALID_ARGUMENT, "radius", world.set_agent_capabilities, agent, nan_radius)
+
+            # A raw call must set the element size of its output array, as in C.
+            infos, count = (nl.AgentInfo * 1)(), ctypes.c_uint32()
+            status = nl.lib.nl_world_get_agents(world.pointer, infos, 1, ctypes.byref(count))
+            self.assertTrue(nl.failed(status) and status & nl.STATUS_INVALID_ARGUMENT, hex(status))
+
+            # Its navmesh removed: the agent fails, with its event.
+            world.set_agent_destination(agent, (3, 0, 5))
+            world.step(0.1)
+            world.remove_navmesh(navmesh)
+            world.step(0.1)
+            events = world.agent_events()
+            self.assertEqual([(e.kind, e.reason) for e in events], [(nl.AGENT_EVENT_FAILED, nl.AGENT_REASON_NAVMESH_REMOVED)])
+            self.assertEqual(world.agent_info(agent).state, nl.AGENT_FAILED)
+
+            # A removed agent's id is stale everywhere.
+            world.remove_agent(agent)
+            self.assertTrue(not world.is_agent_valid(agent) and world.agents() == [])
+            self.assertFails(nl.STATUS_INVALID_HANDLE, "nl_agent_set_destination", world.set_agent_destination, agent, (3, 0, 5))
+            self.assertFails(nl.STATUS_INVALID_HANDLE, "nl_agent_get_info", world.agent_info, agent)
+            self.assertFails(nl.STATUS_INVALID_HANDLE, "nl_agent_get_trajectory", world.agent_trajectory, agent)
+            self.assertFails(nl.STATUS_INVALID_HANDLE, "nl_agent_remove", world.remove_agent, agent)
 
 
 class PluginTest(NavLinkTestCase):

@@ -87,6 +87,7 @@ NL_API nl_world_def nl_default_world_def(void) {
     def.task_enqueue_fn = nullptr;
     def.task_finish_fn = nullptr;
     def.task_user = nullptr;
+    def.agent_paths_per_step = nl::AgentsSettings{}.max_paths_per_step;
     return def;
 }
 
@@ -109,7 +110,9 @@ NL_API nl_status nl_world_create(const nl_world_def* def, nl_world** out_world) 
         if (settings.log_level > NL_LOG_DEBUG)
             fail(ErrorCode::InvalidArgument, "def->log_level is ", settings.log_level, " (at most NL_LOG_DEBUG)");
         check_task_callbacks(settings);
+        if (settings.agent_paths_per_step == 0) fail(ErrorCode::InvalidArgument, "def->agent_paths_per_step is 0 (at least 1)");
         nl::WorldSettings core;
+        core.agents.max_paths_per_step = settings.agent_paths_per_step;
         core.worker_count = resolve_worker_count(settings.worker_count);
         if (settings.task_enqueue_fn) core.tasks = host_tasks_of(settings);  // else TBB with worker_count threads
         core.path_worker_count =

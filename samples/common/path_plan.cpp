@@ -84,10 +84,12 @@ const char* segment_name(nl_segment_kind kind) {
     return "plugin";
 }
 
-LinkCounts count_links(const PlannedPath& path) {
+LinkCounts count_links(const PlannedPath& path) { return count_links(path.points); }
+
+LinkCounts count_links(const std::vector<nl_path_point>& points) {
     LinkCounts counts;
-    for (size_t i = 0; i + 1 < path.points.size(); ++i) {
-        const nl_segment_kind kind = path.points[i].segment;
+    for (size_t i = 0; i + 1 < points.size(); ++i) {
+        const nl_segment_kind kind = points[i].segment;
         if (kind == NL_LINK_JUMP) ++counts.jumps;
         else if (kind == NL_LINK_DROP) ++counts.drops;
         else if (kind == NL_LINK_MANUAL) ++counts.manual;

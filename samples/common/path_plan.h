@@ -46,6 +46,7 @@ struct LinkCounts {
     uint32_t jumps = 0, drops = 0, manual = 0, plugin = 0;
 };
 LinkCounts count_links(const PlannedPath& path);
+LinkCounts count_links(const std::vector<nl_path_point>& points);
 
 // "2 jumps, 1 drop, 1 manual link" (or "no links").
 std::string describe_links(const LinkCounts& counts);

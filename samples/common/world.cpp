@@ -4,8 +4,9 @@
 
 namespace nl::samples {
 
-World::World(int32_t path_workers) {
+World::World(int32_t path_workers, int32_t workers) {
     nl_world_def def = nl_default_world_def();
+    def.worker_count = workers;
     def.path_worker_count = path_workers;
     check(nl_world_create(&def, &world_), "creating the NavLink world");
 }

@@ -8,8 +8,9 @@ namespace nl::samples {
 class World {
 public:
     // `path_workers`: threads that plan queued path requests (NL_WORKERS_AUTO or a count; 0 means
-    // the program runs the queue itself with nl_path_process).
-    explicit World(int32_t path_workers = NL_WORKERS_AUTO);
+    // the program runs the queue itself with nl_path_process). `workers`: threads of batch work and
+    // agent steps (NL_WORKERS_AUTO or a count; 0 or 1: the calling thread only).
+    explicit World(int32_t path_workers = NL_WORKERS_AUTO, int32_t workers = NL_WORKERS_AUTO);
     ~World();
     World(const World&) = delete;
     World& operator=(const World&) = delete;

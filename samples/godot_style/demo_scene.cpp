@@ -39,9 +39,9 @@ nl_link_def ladder_def(const levelgen::GeneratedLevel& level) {
     return def;
 }
 
-DemoScene build_demo_scene(uint32_t seed, int32_t path_workers) {
+DemoScene build_demo_scene(uint32_t seed, int32_t workers) {
     DemoScene scene;
-    scene.tree = std::make_unique<SceneTree>(path_workers);
+    scene.tree = std::make_unique<SceneTree>(workers);
     const levelgen::GeneratedLevel level = levelgen::generate_default_level(seed);
     const Vec3 start = marker(level, "start");
     scene.target = marker(level, "goal");
@@ -57,7 +57,7 @@ DemoScene build_demo_scene(uint32_t seed, int32_t path_workers) {
         agent->set_target_position(scene.target);
         scene.agents.push_back(root->add_child(std::move(agent)));
     }
-    scene.tree->set_root(std::move(root));  // ready(): generate, add the ladder, request the paths
+    scene.tree->set_root(std::move(root));  // ready(): generate, add the ladder and the agents
     return scene;
 }
 

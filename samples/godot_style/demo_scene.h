@@ -25,9 +25,9 @@ struct DemoScene {
 };
 
 // Builds the scene and puts it in a tree (regions generate, links register, agents ask for paths).
-// `path_workers` as for SceneTree.
+// `workers` as for SceneTree.
 // Throws SampleError.
-DemoScene build_demo_scene(uint32_t seed, int32_t path_workers = 0);
+DemoScene build_demo_scene(uint32_t seed, int32_t workers = 1);
 
 // The climber: a walker that can step up 0.5 m and climb ladders (kClimbAbility).
 samples::AgentProfile climber_profile();

@@ -3,106 +3,96 @@
 #include <algorithm>
 #include <cmath>
 
+#include "agent_reads.h"
 #include "navigation_region.h"
 #include "sample_error.h"
 #include "scene_tree.h"
 
 namespace nl::godot_style {
+namespace {
+
+float distance_squared(const float* a, const float* b) {
+    float sum = 0.0f;
+    for (int k = 0; k < 3; ++k) sum += (a[k] - b[k]) * (a[k] - b[k]);
+    return sum;
+}
+
+nl_segment_kind travelled_as(const nl_agent_trajectory& trajectory, const nl_link& link) {
+    switch (trajectory.kind) {
+        case NL_TRAJECTORY_ARC: return NL_LINK_JUMP;
+        case NL_TRAJECTORY_FALL: return NL_LINK_DROP;
+        default: return link.kind;
+    }
+}
+
+}  // namespace
 
 NavigationAgent::NavigationAgent(std::string name, NavigationRegion& region, samples::AgentProfile profile,
-                                 Vec3 position, Body body)
-    : Node(std::move(name)), region_(region), profile_(std::move(profile)), body_(body), position_(position) {}
+                                 Vec3 position)
+    : Node(std::move(name)), region_(region), profile_(std::move(profile)), position_(position) {}
 
 void NavigationAgent::set_target_position(const Vec3& target) {
     target_ = target;
     arrived_ = failed_ = false;
-    if (tree()) request_path();
+    if (agent_.index1)
+        samples::check(nl_agent_set_destination(tree()->navigation().world(), agent_, target.data()),
+                       name() + ": setting the target");
 }
 
 void NavigationAgent::ready() {
-    if (target_) request_path();
+    agent_ = tree()->navigation().add_agent(samples::agent_def(profile_, region_.navmesh(), position_.data()), *this);
+    if (target_) set_target_position(*target_);
 }
 
 void NavigationAgent::exit_tree() {
-    if (ticket_.index1) nl_path_release(tree()->navigation().world(), ticket_);  // cancels it if unfinished
-    ticket_ = nl_path_ticket{};
+    tree()->navigation().remove_agent(agent_);
+    agent_ = nl_agent_id{};
 }
 
-void NavigationAgent::request_path() {
+void NavigationAgent::on_navigation_event(const nl_agent_event& event) {
     nl_world* world = tree()->navigation().world();
-    if (ticket_.index1) nl_path_release(world, ticket_);  // a newer target replaces the old request
-    following_ = false;
-    motion_.reset();
-    const nl_path_request_def def =
-        samples::path_request(region_.navmesh(), position_.data(), target_->data(), profile_.capabilities);
-    std::weak_ptr<int> alive = alive_;
-    ticket_ = tree()->navigation().query_path(def, [this, alive](nl_path_ticket ticket, nl_path_outcome outcome) {
-        if (!alive.expired()) on_path(ticket, outcome);
-    });
-    ++paths_requested_;
+    switch (event.kind) {
+        case NL_AGENT_EVENT_PATH_READY:
+            ++paths_planned_;
+            path_ready.emit(samples::read_corners(world, agent_));
+            break;
+        case NL_AGENT_EVENT_REPLANNED: replan_reasons_.push_back(event.reason); break;
+        case NL_AGENT_EVENT_LINK_STARTED: take_off(event.link); break;
+        case NL_AGENT_EVENT_LINK_FINISHED: in_air_ = false; break;
+        case NL_AGENT_EVENT_ARRIVED:
+            arrived_ = true;
+            arrival_time_ = tree()->time();
+            target_reached.emit();
+            break;
+        case NL_AGENT_EVENT_FAILED:
+            failed_ = true;
+            navigation_failed.emit(event.reason);
+            break;
+        default: break;
+    }
 }
 
-void NavigationAgent::on_path(nl_path_ticket ticket, nl_path_outcome outcome) {
+void NavigationAgent::take_off(nl_link_id link_id) {
     nl_world* world = tree()->navigation().world();
-    if (ticket.index1 != ticket_.index1 || ticket.generation != ticket_.generation) return;  // superseded
-    if (outcome == NL_PATH_COMPLETE) path_ = samples::queued_result(world, ticket);
-    nl_path_release(world, ticket);
-    ticket_ = nl_path_ticket{};
-    if (outcome != NL_PATH_COMPLETE) {
-        failed_ = true;
-        navigation_failed.emit(outcome);
-        return;
-    }
-    segment_ = 0;
-    following_ = true;
-    path_ready.emit(path_);
-    begin_segment();
+    TakenLink taken;
+    nl_agent_trajectory trajectory = nl_agent_trajectory_init();
+    samples::check(nl_link_get(world, link_id, &taken.link), name() + ": reading the link it took");
+    samples::check(nl_agent_get_trajectory(world, agent_, &trajectory), name() + ": reading its trajectory");
+    taken.reversed = distance_squared(trajectory.from, taken.link.end) < distance_squared(trajectory.from, taken.link.start);
+    taken.as = travelled_as(trajectory, taken.link);
+    taken.apex_height = trajectory.apex[1];
+    taken.peak_height = std::max(trajectory.from[1], position_[1]);
+    taken_.push_back(taken);
+    in_air_ = true;
+    link_reached.emit(taken_.back());
 }
 
-void NavigationAgent::begin_segment() {
-    if (segment_ + 1 >= path_.points.size()) {
-        following_ = false;
-        arrived_ = true;
-        arrival_time_ = clock_;
-        target_reached.emit();
-        return;
-    }
-    const nl_path_point& from = path_.points[segment_];
-    if (from.segment != NL_SEGMENT_WALK) {
-        nl_link link = nl_link_init();
-        if (NL_FAILED(nl_link_get(tree()->navigation().world(), from.link, &link))) {
-            request_path();  // the link is gone (a NavigationLink left the tree): plan again from here
-            return;
-        }
-        taken_.push_back({link, from.reversed, from.segment, from.apex[1], 0.0f});
-        link_reached.emit(taken_.back());
-    }
-    motion_.emplace(from, path_.points[segment_ + 1], body_);
-    segment_time_ = 0.0;
-    segment_peak_ = position_[1];
-}
-
-void NavigationAgent::process(double delta) {
-    clock_ += delta;
-    double left = delta;
-    // A fast body can finish several short segments in one frame.
-    while (following_ && motion_ && left > 0.0) {
-        const double step = std::min(left, motion_->duration() - segment_time_);
-        segment_time_ += step;
-        left -= step;
-        const Vec3 next = motion_->position_at(segment_time_);
-        travelled_ += std::sqrt((next[0] - position_[0]) * (next[0] - position_[0]) +
-                                (next[1] - position_[1]) * (next[1] - position_[1]) +
-                                (next[2] - position_[2]) * (next[2] - position_[2]));
-        position_ = next;
-        segment_peak_ = std::max(segment_peak_, position_[1]);
-        if (segment_time_ < motion_->duration()) break;
-        if (path_.points[segment_].segment != NL_SEGMENT_WALK && !taken_.empty())
-            taken_.back().peak_height = segment_peak_;
-        ++segment_;
-        motion_.reset();
-        begin_segment();
-    }
+void NavigationAgent::process(double /*delta*/) {
+    const nl_agent_info info = samples::read_agent(tree()->navigation().world(), agent_);
+    const Vec3 next{info.position[0], info.position[1], info.position[2]};
+    travelled_ += std::sqrt(distance_squared(next.data(), position_.data()));
+    position_ = next;
+    if (in_air_ && !taken_.empty()) taken_.back().peak_height = std::max(taken_.back().peak_height, position_[1]);
 }
 
 }  // namespace nl::godot_style

@@ -15,7 +15,7 @@ void NavigationLink::ready() {
 }
 
 void NavigationLink::exit_tree() {
-    // Agents following a path through it notice when they reach it (the id is stale) and plan again.
+    // Agents whose paths take it plan again in the next step, before they reach it.
     nl_link_remove(tree()->navigation().world(), id_);
     id_ = nl_link_id{};
 }

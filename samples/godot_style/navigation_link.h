@@ -5,7 +5,6 @@
 #include <navlink/navlink.h>
 
 #include "node.h"
-#include "traversal.h"
 
 namespace nl::godot_style {
 

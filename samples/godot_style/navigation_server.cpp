@@ -1,52 +1,33 @@
 #include "navigation_server.h"
 
-#include <memory>
-
+#include "agent_reads.h"
+#include "navigation_agent.h"
 #include "sample_error.h"
-#include "scene_tree.h"
 
 namespace nl::godot_style {
-namespace {
 
-// What a request's callback needs; owned by the request until its callback (exactly once) runs.
-struct PendingQuery {
-    SceneTree* tree;
-    NavigationServer::PathDone done;
-};
+nl_agent_id NavigationServer::add_agent(nl_agent_def def, NavigationAgent& node) {
+    // The key, not the node's address, goes into NavLink: an event can never reach a freed node.
+    def.user_data = next_key_++;
+    nl_agent_id id{};
+    samples::check(nl_agent_add(world_.get(), &def, &id), "adding agent " + node.name());
+    nodes_[def.user_data] = &node;
+    return id;
+}
 
-}  // namespace
+void NavigationServer::remove_agent(nl_agent_id agent) {
+    nl_agent_info info = nl_agent_info_init();
+    if (NL_FAILED(nl_agent_get_info(world_.get(), agent, &info))) return;
+    nodes_.erase(info.user_data);
+    nl_agent_remove(world_.get(), agent);
+}
 
-nl_path_ticket NavigationServer::query_path(const nl_path_request_def& def, PathDone done) {
-    // The callback owns the context: NavLink calls it exactly once for an accepted request, possibly
-    // on a worker before nl_path_request returns. A refused request never calls it.
-    auto* pending = new PendingQuery{&tree_, std::move(done)};
-    nl_path_request_def request = def;
-    request.callback = on_path_finished;
-    request.user = pending;
-    nl_path_ticket ticket{};
-    const nl_status status = nl_path_request(world_.get(), &request, &ticket);
-    if (NL_FAILED(status)) {
-        delete pending;
-        samples::check(status, "requesting a path");
+void NavigationServer::sync(double delta) {
+    samples::check(nl_world_step(world_.get(), static_cast<float>(delta)), "moving the agents");
+    for (const nl_agent_event& event : samples::read_agent_events(world_.get())) {
+        const auto node = nodes_.find(event.user_data);
+        if (node != nodes_.end()) node->second->on_navigation_event(event);
     }
-    return ticket;
-}
-
-bool NavigationServer::has_path_workers() const {
-    nl_path_queue_stats stats{};
-    stats.size = sizeof stats;
-    samples::check(nl_path_get_queue_stats(world_.get(), &stats), "reading the path queue");
-    return stats.workers > 0;
-}
-
-void NavigationServer::sync() {
-    if (!has_path_workers()) samples::check(nl_path_process(world_.get(), nullptr, nullptr), "planning paths");
-}
-
-void NavigationServer::on_path_finished(void* user, nl_path_ticket ticket, nl_path_outcome outcome) {
-    // A NavLink path worker (or the thread that cancelled): hand over to the tree's thread.
-    std::unique_ptr<PendingQuery> pending(static_cast<PendingQuery*>(user));
-    pending->tree->call_deferred([done = std::move(pending->done), ticket, outcome] { done(ticket, outcome); });
 }
 
 }  // namespace nl::godot_style

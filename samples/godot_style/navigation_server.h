@@ -1,43 +1,41 @@
 // The navigation server of the scene, as Godot's NavigationServer3D: the one place that talks to
-// NavLink. It owns the nl_world; regions, links and agents register through it, and path queries
-// answer through a callback deferred to the scene tree's thread.
+// NavLink. It owns the nl_world; regions, links and agents register through it.
 //
-// Like Godot's server it has a sync point per frame. With no path worker threads (the default) the
-// queued requests are planned there, on the tree's thread (nl_path_process), so a scene runs the
-// same way every time and as fast as the machine allows. With worker threads, requests are planned
-// in the background and answered whenever they finish, which only makes sense in real time.
+// Like Godot's server it has a sync point per frame, before the nodes process: there every agent
+// moves (nl_world_step, in parallel on the world's threads, the same on any thread count) and each
+// agent node is handed its events of that step, on the tree's thread.
 #pragma once
 
 #include <navlink/navlink.h>
 
-#include <functional>
+#include <unordered_map>
 
 #include "world.h"
 
 namespace nl::godot_style {
 
-class SceneTree;
+class NavigationAgent;
 
 class NavigationServer {
 public:
-    using PathDone = std::function<void(nl_path_ticket, nl_path_outcome)>;
-
-    NavigationServer(SceneTree& tree, int32_t path_workers) : tree_(tree), world_(path_workers) {}
+    // `workers`: the world's threads (NL_WORKERS_AUTO or a count; 0 or 1: the tree's thread only).
+    // Agents plan their paths within the step: the world runs no path threads.
+    explicit NavigationServer(int32_t workers) : world_(0, workers) {}
 
     nl_world* world() const { return world_.get(); }
-    bool has_path_workers() const;
-    // The frame's sync point: plans the queued requests when there are no workers.
-    void sync();
 
-    // Queues a path request (nl_path_request). `done` runs once on the tree's thread, at the start
-    // of the frame after the request finished (any outcome). Throws SampleError if refused.
-    nl_path_ticket query_path(const nl_path_request_def& def, PathDone done);
+    // Adds the agent `def` describes for `node`, which then receives the agent's events. Throws
+    // SampleError if refused.
+    nl_agent_id add_agent(nl_agent_def def, NavigationAgent& node);
+    void remove_agent(nl_agent_id agent);
+
+    // The frame's sync point: moves every agent by `delta` seconds and hands out the step's events.
+    void sync(double delta);
 
 private:
-    static void on_path_finished(void* user, nl_path_ticket ticket, nl_path_outcome outcome);
-
-    SceneTree& tree_;
     samples::World world_;
+    std::unordered_map<uint64_t, NavigationAgent*> nodes_;  // by the agent's user_data
+    uint64_t next_key_ = 1;
 };
 
 }  // namespace nl::godot_style

@@ -39,6 +39,9 @@ struct Link {
     bool generated = false;
     bool enabled = true;
     float cost_modifier = 1.0f;
+    // For a generated jump, and a drop's jump back up: how far the arc the generator checked tops
+    // out above the higher end (agents fly that arc); 0 when not generated.
+    float arc_height = 0.0f;
     uint64_t user_data = 0;
     LinkRequirements requirements;
     uint32_t start_polygon = 0xffffffffu;

@@ -387,6 +387,7 @@ private:
         c.link.start = start;
         c.link.end = end;
         c.link.apex = JumpArc(start, end, s_.jump_arc_height).apex();
+        c.link.arc_height = s_.jump_arc_height;
         c.link.bidirectional = true;  // every jump constraint holds both ways
         c.link.generated = true;
         c.link.start_polygon = samples_[a].polygon;
@@ -781,6 +782,7 @@ private:
         l.requirements.gap = Vec3(end.x() - crossing.x(), 0.0f, end.z() - crossing.z()).norm();
         // Low and near enough to jump back up (whether the body fits that arc is swept later).
         l.bidirectional = drop <= s_.max_jump_up && l.requirements.gap <= s_.max_jump_gap;
+        l.arc_height = s_.jump_arc_height;  // the jump back up's arc, when the drop works both ways
         d.fall = fall_path(start, heading, rim + kPastRim, end);
         l.apex = d.fall[1];  // where the body leaves the ground: the top of the fall, and its heading
     }

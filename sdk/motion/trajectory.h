@@ -21,6 +21,11 @@ public:
     float sagitta(double t0, double t1) const;
     // `pieces` + 1 points, evenly spaced in t, start first.
     std::vector<Vec3> points(unsigned pieces) const;
+    // y(t) = start.y + slope t + curvature t^2 (curvature < 0): what a body's timing is made from.
+    double slope() const { return b_; }
+    double curvature() const { return c_; }
+    const Vec3& start() const { return start_; }
+    const Vec3& end() const { return end_; }
 
 private:
     Vec3 start_, end_;

@@ -16,6 +16,8 @@ struct Handle {
     uint32_t generation = 0;
 
     bool is_null() const noexcept { return index1 == 0; }
+    // Both halves in one number, as a hash key.
+    uint64_t packed() const noexcept { return (uint64_t(index1) << 32) | generation; }
     friend bool operator==(Handle a, Handle b) noexcept {
         return a.index1 == b.index1 && a.generation == b.generation;
     }

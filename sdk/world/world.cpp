@@ -11,7 +11,8 @@ World::World(WorldSettings settings)
       level_(std::make_unique<Level>(*tasks_, handle_tag_.value())),
       navmeshes_(handle_tag_.value()),
       plugins_(handle_tag_.value()),
-      paths_(handle_tag_.value(), settings.path_worker_count) {}
+      paths_(handle_tag_.value(), settings.path_worker_count),
+      agents_(handle_tag_.value(), settings.agents) {}
 
 World::~World() { paths_.shutdown(); }
 

@@ -5,7 +5,7 @@
 // What it owns, created in this order and destroyed in reverse: the tag its handles carry, the task
 // system (batch work), the level (Embree scene of the host's meshes), the navmeshes with everything
 // that belongs to each (NavMeshRegistry: links, last generation, path graph, under one lock), the
-// plugins, and the path queue (its workers stop first).
+// plugins, the path queue (its workers stop first) and the agents.
 //
 // Thread-safety: every method may be called from any thread at once, except the destructor, which
 // must not run with any other call. Methods here span several parts (a build uses a plugin and adds a
@@ -16,6 +16,7 @@
 #include <memory>
 #include <vector>
 
+#include "agents/agents.h"
 #include "level/level.h"
 #include "links/link_generator.h"
 #include "links/link_settings.h"
@@ -32,6 +33,7 @@ namespace nl {
 struct WorldSettings {
     int worker_count = 1;            // threads for batch work, the caller included (>= 1)
     unsigned path_worker_count = 0;  // threads that plan queued path requests; 0: PathQueue::process only
+    AgentsSettings agents;
     Logger logger;
     std::unique_ptr<TaskSystem> tasks;  // the host's scheduler; null: TBB with worker_count threads
 };
@@ -57,6 +59,11 @@ public:
     const PluginRegistry& plugins() const noexcept { return plugins_; }
     PathQueue& paths() noexcept { return paths_; }
     const PathQueue& paths() const noexcept { return paths_; }
+    Agents& agents() noexcept { return agents_; }
+    const Agents& agents() const noexcept { return agents_; }
+
+    // Advances every agent by dt seconds on the world's task system (Agents::step).
+    void step(float dt) { agents_.step(dt, navmeshes_, *tasks_); }
 
     // A host's navmesh: validated, repaired (logged as a warning) and added. Throws as build_navmesh.
     Handle add_navmesh(const NavMeshInput& input);
@@ -97,6 +104,7 @@ private:
     NavMeshRegistry navmeshes_;
     PluginRegistry plugins_;
     PathQueue paths_;
+    Agents agents_;
 };
 
 }  // namespace nl

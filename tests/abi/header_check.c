@@ -32,9 +32,16 @@ _Static_assert(offsetof(nl_world_def, worker_count) == 4 && offsetof(nl_world_de
                "nl_world_def on LP64");
 /* The task callbacks start where the previous version's struct (with its padding) ended. */
 _Static_assert(offsetof(nl_world_def, path_worker_count) == 32 && offsetof(nl_world_def, task_enqueue_fn) == 40 &&
-                   offsetof(nl_world_def, task_finish_fn) == 48 && offsetof(nl_world_def, task_user) == 56 &&
-                   sizeof(nl_world_def) == 64,
+                   offsetof(nl_world_def, task_finish_fn) == 48 && offsetof(nl_world_def, task_user) == 56,
                "nl_world_def's task callbacks on LP64");
+_Static_assert(offsetof(nl_world_def, agent_paths_per_step) == 64 && offsetof(nl_world_def, reserved2) == 68 &&
+                   sizeof(nl_world_def) == 72,
+               "nl_world_def's agent budget on LP64");
+_Static_assert(offsetof(nl_agent_def, navmesh) == 4 && offsetof(nl_agent_def, height) == 12 &&
+                   offsetof(nl_agent_def, capabilities) == 16 && offsetof(nl_agent_def, max_speed) == 40 &&
+                   offsetof(nl_agent_def, position) == 56 && offsetof(nl_agent_def, avoidance) == 68 &&
+                   offsetof(nl_agent_def, user_data) == 72 && sizeof(nl_agent_def) == 80,
+               "nl_agent_def (no hidden padding)");
 _Static_assert(offsetof(nl_mesh_def, vertices) == 8 && offsetof(nl_mesh_def, vertex_stride) == 20 &&
                    offsetof(nl_mesh_def, indices) == 24 && offsetof(nl_mesh_def, flags) == 36 &&
                    offsetof(nl_mesh_def, transform) == 40 && offsetof(nl_mesh_def, user_data) == 48,
@@ -129,6 +136,24 @@ _Static_assert(offsetof(nl_plugin_info, abi_version) == 4 && offsetof(nl_plugin_
                    offsetof(nl_plugin_info, destroy) == 48 && offsetof(nl_plugin_info, navmesh_builder) == 56,
                "nl_plugin_info on LP64");
 #endif
+
+/* Agents: growable outputs, no hidden padding. */
+_Static_assert(sizeof(nl_agent_id) == 8 && offsetof(nl_agent_id, generation) == 4, "nl_agent_id");
+_Static_assert(offsetof(nl_agent_info, state) == 4 && offsetof(nl_agent_info, id) == 8 && offsetof(nl_agent_info, position) == 16 &&
+                   offsetof(nl_agent_info, velocity) == 28 && offsetof(nl_agent_info, polygon) == 40 &&
+                   offsetof(nl_agent_info, reason) == 44 && offsetof(nl_agent_info, link) == 48 &&
+                   offsetof(nl_agent_info, link_progress) == 56 && offsetof(nl_agent_info, destination) == 60 &&
+                   offsetof(nl_agent_info, has_destination) == 72 && offsetof(nl_agent_info, corners_ahead) == 76 &&
+                   offsetof(nl_agent_info, user_data) == 80 && sizeof(nl_agent_info) == 88,
+               "nl_agent_info layout");
+_Static_assert(offsetof(nl_agent_event, kind) == 4 && offsetof(nl_agent_event, agent) == 8 && offsetof(nl_agent_event, link) == 16 &&
+                   offsetof(nl_agent_event, reason) == 24 && offsetof(nl_agent_event, user_data) == 32 &&
+                   sizeof(nl_agent_event) == 40,
+               "nl_agent_event layout");
+_Static_assert(offsetof(nl_agent_trajectory, link) == 8 && offsetof(nl_agent_trajectory, from) == 16 &&
+                   offsetof(nl_agent_trajectory, points) == 52 && offsetof(nl_agent_trajectory, duration) == 100 &&
+                   sizeof(nl_agent_trajectory) == 108,
+               "nl_agent_trajectory layout");
 
 /* Links. nl_link_id and nl_link_requirements have no size field: fixed from 1.0 (CHANGELOG.md lists
    their changes before it). nl_link grows at its end (its size field). */
@@ -310,6 +335,22 @@ struct api_table {
     nl_status (*path_process)(nl_world*, const nl_path_budget*, uint32_t*);
     nl_status (*path_take_finished)(nl_world*, nl_path_finished*, uint32_t, uint32_t*, uint32_t*);
     nl_status (*path_get_queue_stats)(const nl_world*, nl_path_queue_stats*);
+    /* Agents */
+    nl_agent_def (*default_agent_def)(void);
+    nl_status (*agent_add)(nl_world*, const nl_agent_def*, nl_agent_id*);
+    nl_status (*agent_remove)(nl_world*, nl_agent_id);
+    int32_t (*agent_is_valid)(const nl_world*, nl_agent_id);
+    nl_status (*agent_set_destination)(nl_world*, nl_agent_id, const float*);
+    nl_status (*agent_stop)(nl_world*, nl_agent_id);
+    nl_status (*agent_teleport)(nl_world*, nl_agent_id, const float*);
+    nl_status (*agent_set_capabilities)(nl_world*, nl_agent_id, const nl_agent_capabilities*);
+    nl_status (*agent_set_speed)(nl_world*, nl_agent_id, float, float);
+    nl_status (*world_step)(nl_world*, float);
+    nl_status (*agent_get_info)(const nl_world*, nl_agent_id, nl_agent_info*);
+    nl_status (*world_get_agents)(const nl_world*, nl_agent_info*, uint32_t, uint32_t*);
+    nl_status (*agent_get_corners)(const nl_world*, nl_agent_id, nl_path_point*, uint32_t, uint32_t*);
+    nl_status (*agent_get_trajectory)(const nl_world*, nl_agent_id, nl_agent_trajectory*);
+    nl_status (*world_get_agent_events)(const nl_world*, nl_agent_event*, uint32_t, uint32_t*);
     /* The plugin side's function types */
     nl_plugin_entry_fn* entry;
     nl_navmesh_sink_fn* sink;
@@ -357,6 +398,10 @@ int main(void) {
         nl_default_agent_capabilities, nl_default_path_request_def, nl_path_find, nl_path_request,
         nl_path_poll,           nl_path_get_result,     nl_path_cancel,      nl_path_release,
         nl_default_path_budget, nl_path_process,        nl_path_take_finished, nl_path_get_queue_stats,
+        nl_default_agent_def,   nl_agent_add,           nl_agent_remove,     nl_agent_is_valid,
+        nl_agent_set_destination, nl_agent_stop,        nl_agent_teleport,   nl_agent_set_capabilities,
+        nl_agent_set_speed,     nl_world_step,          nl_agent_get_info,   nl_world_get_agents,
+        nl_agent_get_corners,   nl_agent_get_trajectory, nl_world_get_agent_events,
         plugin_entry,           navmesh_sink,
     };
     const nl_link_id null_link = {0u, 0u};

@@ -93,6 +93,12 @@ int main() {
                  &nl_path_poll, &nl_path_get_result, &nl_path_cancel, &nl_path_release, &nl_default_path_budget,
                  &nl_path_process, &nl_path_take_finished, &nl_path_get_queue_stats))
         return 1;
+    // ... and of the agent functions.
+    if (!all_set(&nl_default_agent_def, &nl_agent_add, &nl_agent_remove, &nl_agent_is_valid, &nl_agent_set_destination,
+                 &nl_agent_stop, &nl_agent_teleport, &nl_agent_set_capabilities, &nl_agent_set_speed, &nl_world_step,
+                 &nl_agent_get_info, &nl_world_get_agents, &nl_agent_get_corners, &nl_agent_get_trajectory,
+                 &nl_world_get_agent_events))
+        return 1;
     // The output initialisers compile in C++11 too and set the size.
     if (nl_link_init().size != sizeof(nl_link) || nl_path_point_init().size != sizeof(nl_path_point) ||
         nl_ray_hit_init().size != sizeof(nl_ray_hit) || nl_path_finished_init().size != sizeof(nl_path_finished))

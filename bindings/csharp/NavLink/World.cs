@@ -22,12 +22,15 @@ namespace NavLink
         public IntPtr TaskEnqueueFn;
         public IntPtr TaskFinishFn;
         public IntPtr TaskUser;
+        /// <summary>Agents' paths planned in one Step at most (at least 1): when many agents ask at once, the
+        /// rest wait their turn (AgentState.Waiting), oldest first, so a step's cost stays bounded.</summary>
+        public uint AgentPathsPerStep = Native.nl_default_world_def().AgentPathsPerStep;
     }
 
     /// <summary>
-    /// A NavLink world (nl_world*): level geometry, navmeshes, links and path requests. Every method may
-    /// be called from several threads at once (navlink.h); Dispose waits for calls in flight. Failures
-    /// throw NavLinkException with the status and the library's message.
+    /// A NavLink world (nl_world*): level geometry, navmeshes, links, path requests and agents. Every
+    /// method may be called from several threads at once (navlink.h); Dispose waits for calls in flight.
+    /// Failures throw NavLinkException with the status and the library's message.
     /// </summary>
     public sealed partial class World : IDisposable
     {
@@ -45,6 +48,7 @@ namespace NavLink
             def.TaskEnqueueFn = options.TaskEnqueueFn;
             def.TaskFinishFn = options.TaskFinishFn;
             def.TaskUser = options.TaskUser;
+            def.AgentPathsPerStep = options.AgentPathsPerStep;
             GCHandle log = default(GCHandle);
             if (options.Log != null)
             {

@@ -24,6 +24,7 @@ namespace NavLink.Tests
             LinkTests.Run(check);
             PluginTests.Run(check);
             PathTests.Run(check);
+            AgentTests.Run(check);
             Console.WriteLine(check.Passed + " passed, " + check.Failed + " failed");
             return check.Failed == 0 && check.Passed > 0 ? 0 : 1;
         }

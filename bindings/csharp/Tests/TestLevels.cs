@@ -35,6 +35,41 @@ namespace NavLink.Tests
             AddBox(world, -12, -21, -6, 12, -20, 6);
         }
 
+        /// <summary>
+        /// "bridge" (tests/abi/agents_test.c's level): two 4 x 10 m platforms (tops at y = 0) 2 m apart along x,
+        /// x in [0, 4] and [6, 10], z in [0, 10], joined by a bridge at z 8-10; the host's navmesh is their
+        /// tops set in 0.3 m from every rim (five convex polygons, for radius 0.3), its links generated. A
+        /// walker goes round by the bridge; a jumper jumps the gap.
+        /// </summary>
+        public static NavmeshId AddBridgeLevel(World world)
+        {
+            AddBox(world, 0, -1, 0, 4, 0, 10);
+            AddBox(world, 6, -1, 0, 10, 0, 10);
+            AddBox(world, 4, -1, 8, 6, 0, 10);
+            float[][] polygons =
+            {
+                new[] {0.3f, 0.3f, 0.3f, 8, 3.7f, 8, 3.7f, 0.3f},
+                new[] {0.3f, 8, 0.3f, 9.7f, 4, 9.7f, 4, 8, 3.7f, 8},
+                new[] {4f, 8, 4, 9.7f, 6, 9.7f, 6, 8},
+                new[] {6f, 8, 6, 9.7f, 9.7f, 9.7f, 9.7f, 8, 6.3f, 8},
+                new[] {6.3f, 0.3f, 6.3f, 8, 9.7f, 8, 9.7f, 0.3f},
+            };
+            var vertices = new System.Collections.Generic.List<float>();
+            var input = new NavmeshInput { PolygonVertexCounts = new byte[polygons.Length] };
+            for (int p = 0; p < polygons.Length; ++p)
+            {
+                input.PolygonVertexCounts[p] = (byte)(polygons[p].Length / 2);
+                for (int k = 0; k < polygons[p].Length; k += 2) vertices.AddRange(new[] {polygons[p][k], 0, polygons[p][k + 1]});
+            }
+            input.Vertices = vertices.ToArray();
+            input.Indices = new uint[input.Vertices.Length / 3];
+            for (uint i = 0; i < input.Indices.Length; ++i) input.Indices[i] = i;
+            input.Agent.Radius = 0.3f;
+            NavmeshId navmesh = world.AddNavmesh(input);
+            world.GenerateLinks(navmesh);
+            return navmesh;
+        }
+
         public static readonly Vec3 WestPoint = new Vec3(-6, 0, 0);
         public static readonly Vec3 EastPoint = new Vec3(6, 0, 0);
 

@@ -222,6 +222,11 @@ typedef struct nl_world_def {
     void* task_user;                     /**< Passed back to both callbacks as `user`; borrowed, never
                                               dereferenced. The callbacks and what task_user points to
                                               must stay valid until nl_world_destroy returns. */
+    uint32_t agent_paths_per_step;       /**< Agents' paths planned in one nl_world_step at most
+                                              (default 32): when many agents ask at once, the rest wait
+                                              their turn (NL_AGENT_WAITING), oldest first, so a step's
+                                              cost stays bounded. At least 1. */
+    uint32_t reserved2;                  /**< 0. */
 } nl_world_def;
 
 /** A def with every field at its default. Thread-safe; never fails. */
@@ -1116,6 +1121,200 @@ NL_DEFINE_OUTPUT_INIT(nl_path_queue_stats, nl_path_queue_stats_init)
 
 /** Fills `*out_stats` (caller-owned, `size` set). Returns SUCCESS or INVALID_ARGUMENT. Thread-safe. */
 NL_API nl_status nl_path_get_queue_stats(const nl_world* world, nl_path_queue_stats* out_stats);
+
+/* ---------------------------------------------------------------------------------------------
+ * Agents: bodies that walk their navmesh, take the links their body can, and keep out of each
+ * other's way. nl_world_step moves every agent; the host reads their states and the step's events
+ * in bulk (docs/agents.md).
+ * ------------------------------------------------------------------------------------------- */
+
+/** An agent in a world. Zero-initialised is the null id. */
+typedef struct nl_agent_id {
+    uint32_t index1;
+    uint32_t generation;
+} nl_agent_id;
+
+/** What an agent is doing. */
+typedef uint32_t nl_agent_state;
+#define NL_AGENT_IDLE 0u        /**< No destination. */
+#define NL_AGENT_WALKING 1u     /**< Following its path on the ground. */
+#define NL_AGENT_JUMPING 2u     /**< In the air, on the arc the link generator checked. */
+#define NL_AGENT_FALLING 3u     /**< On a drop: out past the rim, across, then falling straight down. */
+#define NL_AGENT_TRAVERSING 4u  /**< On a manual or plugin link: a straight line at its walking speed. */
+#define NL_AGENT_WAITING 5u     /**< For its path to be planned, or for a link's landing to clear. */
+#define NL_AGENT_ARRIVED 6u     /**< At its destination (or as near as another body standing on it lets). */
+#define NL_AGENT_FAILED 7u      /**< Cannot go on; nl_agent_info.reason says why. */
+
+/** Why an agent planned again or failed (nl_agent_info.reason, nl_agent_event.reason). */
+typedef uint32_t nl_agent_reason;
+#define NL_AGENT_REASON_NONE 0u
+#define NL_AGENT_REASON_DESTINATION_SET 1u     /**< A new destination. */
+#define NL_AGENT_REASON_LINK_GONE 2u           /**< A link of its path was removed, disabled, moved, or is
+                                                    beyond its body now: found at the first step after the
+                                                    change or at the take-off, never in the air. An agent
+                                                    whose path holds keeps it (new links serve its next plan). */
+#define NL_AGENT_REASON_WORLD_CHANGED 3u       /**< Its navmesh changed under it. */
+#define NL_AGENT_REASON_OFF_PATH 4u            /**< Pushed too far off its path, or teleported. */
+#define NL_AGENT_REASON_NO_PATH 5u             /**< The destination cannot be reached (it went as near as it could). */
+#define NL_AGENT_REASON_NAVMESH_REMOVED 6u     /**< Its navmesh was removed. */
+#define NL_AGENT_REASON_CAPABILITIES_CHANGED 7u
+
+/** How to add an agent. Get one from nl_default_agent_def(). */
+typedef struct nl_agent_def {
+    uint32_t size;                      /**< sizeof(nl_agent_def). */
+    nl_navmesh_id navmesh;              /**< The navmesh of its agent type. */
+    float height;                       /**< Body height, metres (default 2; > 0). */
+    nl_agent_capabilities capabilities; /**< What its body can do (the links it takes) and its radius. */
+    float max_speed;                    /**< Walking speed, m/s (default 3.5; > 0). It also walks a drop's
+                                             way out and crosses manual and plugin links at this speed. */
+    float max_acceleration;             /**< m/s^2 (default 8; > 0). */
+    float gravity;                      /**< m/s^2 (default 9.81; > 0): how long a jump's arc and a fall take. */
+    float takeoff_speed;                /**< m/s (default 0). > 0: a jump's time comes from this take-off
+                                             speed instead of gravity (the arc stays the one checked). */
+    float position[3];                  /**< Where it starts: on the navmesh (within its radius, half a metre
+                                             at least, across and 2 m up or down), else NOT_FOUND. */
+    uint8_t avoidance;                  /**< 1 (default): steers around other agents and walls. */
+    uint8_t reserved[3];
+    uint64_t user_data;                 /**< The host's, handed back in infos and events. */
+} nl_agent_def;
+
+/** Default capabilities (a walker), height 2, speed 3.5, acceleration 8, gravity 9.81, avoidance
+ *  on, the null navmesh at (0,0,0): set navmesh and position. Thread-safe; never fails. */
+NL_API nl_agent_def nl_default_agent_def(void);
+
+/** Adds an agent, standing still (NL_AGENT_IDLE) at the navmesh point of def->position.
+ *  Returns SUCCESS, or a failure with INVALID_HANDLE (navmesh), INVALID_ARGUMENT (null pointer, size
+ *  too small, a field not finite or out of range: named), NOT_FOUND (position not on the navmesh:
+ *  the message says how far the nearest navmesh point is). Thread-safe (waits for a step running). */
+NL_API nl_status nl_agent_add(nl_world* world, const nl_agent_def* def, nl_agent_id* out_id);
+
+/** Removes an agent. Returns SUCCESS or INVALID_HANDLE. Thread-safe. */
+NL_API nl_status nl_agent_remove(nl_world* world, nl_agent_id agent);
+
+/** Nonzero if `agent` is an agent of `world`. Thread-safe. */
+NL_API int32_t nl_agent_is_valid(const nl_world* world, nl_agent_id agent);
+
+/** Sends the agent to `point` (3 floats, borrowed), located on its navmesh at once: off it is
+ *  NOT_FOUND and the destination is not kept. The path is planned in a coming nl_world_step (an agent
+ *  in the air lands first). Returns SUCCESS, or INVALID_HANDLE, INVALID_ARGUMENT, NOT_FOUND. Thread-safe. */
+NL_API nl_status nl_agent_set_destination(nl_world* world, nl_agent_id agent, const float* point);
+
+/** Forgets the destination: the agent stops and stands (NL_AGENT_IDLE); one in the air lands first.
+ *  Returns SUCCESS or INVALID_HANDLE. Thread-safe. */
+NL_API nl_status nl_agent_stop(nl_world* world, nl_agent_id agent);
+
+/** Puts the agent at the navmesh point of `point`, standing, keeping its destination (it plans again
+ *  from there). Returns SUCCESS, or INVALID_HANDLE, INVALID_ARGUMENT (also while it is taking a link),
+ *  NOT_FOUND. Thread-safe. */
+NL_API nl_status nl_agent_teleport(nl_world* world, nl_agent_id agent, const float* point);
+
+/** Changes what the agent's body can do (copied); it plans again. Returns SUCCESS, or INVALID_HANDLE,
+ *  INVALID_ARGUMENT (a negative or non-finite figure). Thread-safe. */
+NL_API nl_status nl_agent_set_capabilities(nl_world* world, nl_agent_id agent, const nl_agent_capabilities* capabilities);
+
+/** Changes the agent's walking speed and acceleration (each finite and > 0). Returns SUCCESS, or
+ *  INVALID_HANDLE, INVALID_ARGUMENT. Thread-safe. */
+NL_API nl_status nl_agent_set_speed(nl_world* world, nl_agent_id agent, float max_speed, float max_acceleration);
+
+/** Advances every agent by `dt` seconds (finite, >= 0; 0 does nothing), in parallel on the world's
+ *  task system, with the same result bit for bit whatever the thread count: plans the paths asked
+ *  for (at most agent_paths_per_step, oldest first), steers and moves every agent on the ground,
+ *  flies those on links, and checks each link just before take-off. An agent's trouble (no path,
+ *  its navmesh removed) is its failure and event, not the call's.
+ *  Returns SUCCESS, or INVALID_ARGUMENT (dt NaN, infinite or negative), OUT_OF_MEMORY.
+ *  Thread-safe: other agent calls wait for it; must not be called from a task callback. */
+NL_API nl_status nl_world_step(nl_world* world, float dt);
+
+/** An agent's state. An array element that may grow: set `size` of the first (nl_agent_info_init). */
+typedef struct nl_agent_info {
+    uint32_t size;            /**< sizeof(nl_agent_info) as the host knows it; written back. */
+    nl_agent_state state;
+    nl_agent_id id;
+    float position[3];        /**< Feet, on the surface (in the air: on the link's trajectory). */
+    float velocity[3];
+    uint32_t polygon;         /**< The navmesh polygon it stands on (its take-off's while in the air). */
+    nl_agent_reason reason;   /**< Why it failed, or why its current path was planned. */
+    nl_link_id link;          /**< The link it is taking, or waits to take; null otherwise. */
+    float link_progress;      /**< 0..1 of the link's time. */
+    float destination[3];     /**< Its destination on the navmesh, if has_destination. */
+    uint8_t has_destination;
+    uint8_t reserved[3];
+    uint32_t corners_ahead;   /**< Path points still to reach (nl_agent_get_corners). */
+    uint64_t user_data;
+} nl_agent_info;
+
+NL_DEFINE_OUTPUT_INIT(nl_agent_info, nl_agent_info_init)
+
+/** Fills `*out_info` (caller-owned, `size` set). Returns SUCCESS, INVALID_HANDLE or INVALID_ARGUMENT.
+ *  Thread-safe. */
+NL_API nl_status nl_agent_get_info(const nl_world* world, nl_agent_id agent, nl_agent_info* out_info);
+
+/** Every agent's state, in bulk, in a stable order until an agent is removed (two-call pattern as
+ *  nl_world_get_meshes; out_infos[0].size set when out_infos is not NULL). Thread-safe. */
+NL_API nl_status nl_world_get_agents(const nl_world* world, nl_agent_info* out_infos, uint32_t capacity,
+                                     uint32_t* out_count);
+
+/** The path points the agent has yet to reach, the next first (two-call pattern; out_points[0].size
+ *  set): where it walks, and at which point it takes which link. Thread-safe. */
+NL_API nl_status nl_agent_get_corners(const nl_world* world, nl_agent_id agent, nl_path_point* out_points,
+                                      uint32_t capacity, uint32_t* out_count);
+
+/** How a link is being taken: the trajectory the generator checked, with its timing, for a host that
+ *  animates the body. */
+typedef uint32_t nl_trajectory_kind;
+#define NL_TRAJECTORY_NONE 0u  /**< On the ground: no link is being taken (the rest is zero). */
+#define NL_TRAJECTORY_ARC 1u   /**< A jump: a parabola from `from` to `to` over `apex`. */
+#define NL_TRAJECTORY_FALL 2u  /**< A drop: `points[0]` to `points[1]` (past the rim) and `points[2]`
+                                    (above the landing) at the walking speed, then straight down to
+                                    `points[3]` with gravity. */
+#define NL_TRAJECTORY_LINE 3u  /**< Any other link: a straight line at the walking speed. */
+
+typedef struct nl_agent_trajectory {
+    uint32_t size;            /**< sizeof(nl_agent_trajectory) as the host knows it. */
+    nl_trajectory_kind kind;
+    nl_link_id link;
+    float from[3];
+    float to[3];
+    float apex[3];
+    float points[4][3];       /**< For NL_TRAJECTORY_FALL; else from, to repeated. */
+    float duration;           /**< Seconds from take-off to landing. */
+    float elapsed;            /**< Seconds since take-off. */
+} nl_agent_trajectory;
+
+NL_DEFINE_OUTPUT_INIT(nl_agent_trajectory, nl_agent_trajectory_init)
+
+/** The trajectory of the link the agent is taking now, read at one moment (kind NL_TRAJECTORY_NONE
+ *  while it is on the ground, also while it waits at a take-off). Returns SUCCESS, INVALID_HANDLE
+ *  or INVALID_ARGUMENT. Thread-safe. */
+NL_API nl_status nl_agent_get_trajectory(const nl_world* world, nl_agent_id agent, nl_agent_trajectory* out_trajectory);
+
+/** What happened to an agent in the last step. */
+typedef uint32_t nl_agent_event_kind;
+#define NL_AGENT_EVENT_PATH_READY 1u     /**< Its path was planned (reason: why it was asked for). */
+#define NL_AGENT_EVENT_LINK_STARTED 2u   /**< It took off on `link`. */
+#define NL_AGENT_EVENT_LINK_FINISHED 3u  /**< It landed at the end of `link`. */
+#define NL_AGENT_EVENT_ARRIVED 4u
+#define NL_AGENT_EVENT_FAILED 5u         /**< `reason` says why. */
+#define NL_AGENT_EVENT_REPLANNED 6u      /**< It asked for a new path (`reason`; `link` for LINK_GONE). */
+
+/** An array element that may grow: set `size` of the first (nl_agent_event_init). */
+typedef struct nl_agent_event {
+    uint32_t size;            /**< sizeof(nl_agent_event) as the host knows it; written back. */
+    nl_agent_event_kind kind;
+    nl_agent_id agent;
+    nl_link_id link;
+    nl_agent_reason reason;
+    uint32_t reserved;
+    uint64_t user_data;       /**< The agent's. */
+} nl_agent_event;
+
+NL_DEFINE_OUTPUT_INIT(nl_agent_event, nl_agent_event_init)
+
+/** The events of the last nl_world_step, in agent order (two-call pattern; out_events[0].size set):
+ *  the host drains them on its own thread, as Box2D's event arrays. They stay until the next step.
+ *  Thread-safe. */
+NL_API nl_status nl_world_get_agent_events(const nl_world* world, nl_agent_event* out_events, uint32_t capacity,
+                                           uint32_t* out_count);
 
 /* ---------------------------------------------------------------------------------------------
  * Plugins (plugins/include/navlink/plugin.h has the plugin side of the ABI).

@@ -82,6 +82,70 @@ namespace NavLink
         Failed = 7u,
     }
 
+    /// <summary>nl_agent_state: what an agent is doing.</summary>
+    public enum AgentState : uint
+    {
+        /// <summary>No destination.</summary>
+        Idle = 0u,
+        Walking = 1u,
+        /// <summary>In the air, on the arc the link generator checked.</summary>
+        Jumping = 2u,
+        /// <summary>On a drop: out past the rim, across, then falling straight down.</summary>
+        Falling = 3u,
+        /// <summary>On a manual or plugin link: a straight line at its walking speed.</summary>
+        Traversing = 4u,
+        /// <summary>For its path to be planned, or for a link's landing to clear.</summary>
+        Waiting = 5u,
+        Arrived = 6u,
+        /// <summary>Cannot go on; AgentInfo.Reason says why.</summary>
+        Failed = 7u,
+    }
+
+    /// <summary>nl_agent_reason: why an agent planned again or failed (AgentInfo.Reason, AgentEvent.Reason).</summary>
+    public enum AgentReason : uint
+    {
+        None = 0u,
+        DestinationSet = 1u,
+        /// <summary>A link of its path was removed, disabled, or is beyond its body now (found at the take-off).</summary>
+        LinkGone = 2u,
+        WorldChanged = 3u,
+        /// <summary>Pushed too far off its path, or teleported.</summary>
+        OffPath = 4u,
+        /// <summary>The destination cannot be reached (it went as near as it could).</summary>
+        NoPath = 5u,
+        NavmeshRemoved = 6u,
+        CapabilitiesChanged = 7u,
+    }
+
+    /// <summary>nl_trajectory_kind: how a link is being taken (AgentTrajectory.Kind).</summary>
+    public enum TrajectoryKind : uint
+    {
+        /// <summary>On the ground: no link is being taken (the rest is zero).</summary>
+        None = 0u,
+        /// <summary>A jump: a parabola from From to To over Apex.</summary>
+        Arc = 1u,
+        /// <summary>A drop: Points 0 to 1 (past the rim) and 2 (above the landing) walking, then down to 3.</summary>
+        Fall = 2u,
+        /// <summary>Any other link: a straight line at the walking speed.</summary>
+        Line = 3u,
+    }
+
+    /// <summary>nl_agent_event_kind: what happened to an agent in the last step.</summary>
+    public enum AgentEventKind : uint
+    {
+        /// <summary>Its path was planned (Reason: why it was asked for).</summary>
+        PathReady = 1u,
+        /// <summary>It took off on Link.</summary>
+        LinkStarted = 2u,
+        /// <summary>It landed at the end of Link.</summary>
+        LinkFinished = 3u,
+        Arrived = 4u,
+        /// <summary>Reason says why.</summary>
+        Failed = 5u,
+        /// <summary>It asked for a new path (Reason; Link for LinkGone).</summary>
+        Replanned = 6u,
+    }
+
     public static class PluginKinds
     {
         public const uint NavmeshBuilder = 0x1u;

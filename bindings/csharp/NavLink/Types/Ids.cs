@@ -51,6 +51,17 @@ namespace NavLink
     }
 
     [StructLayout(LayoutKind.Sequential)]
+    public struct AgentId : IEquatable<AgentId>
+    {
+        public uint Index1, Generation;
+        public bool IsNull { get { return Index1 == 0u; } }
+        public bool Equals(AgentId o) { return Index1 == o.Index1 && Generation == o.Generation; }
+        public override bool Equals(object o) { return o is AgentId && Equals((AgentId)o); }
+        public override int GetHashCode() { return (int)(Index1 * 31u + Generation); }
+        public override string ToString() { return "agent{" + Index1 + "," + Generation + "}"; }
+    }
+
+    [StructLayout(LayoutKind.Sequential)]
     public struct PluginId : IEquatable<PluginId>
     {
         public uint Index1, Generation;

@@ -27,5 +27,9 @@ namespace NavLink
         public IntPtr TaskEnqueueFn;
         public IntPtr TaskFinishFn;
         public IntPtr TaskUser;
+        /// <summary>Agents' paths planned in one World.Step at most (default 32, at least 1); the rest wait
+        /// their turn (AgentState.Waiting), oldest first.</summary>
+        public uint AgentPathsPerStep;
+        public uint Reserved2;
     }
 }

@@ -34,6 +34,7 @@ macro_rules! default_is_init {
     };
 }
 
+mod agents;
 mod level;
 mod links;
 mod navmesh;
@@ -43,6 +44,7 @@ mod recast;
 mod status;
 mod world;
 
+pub use agents::*;
 pub use level::*;
 pub use links::*;
 pub use navmesh::*;

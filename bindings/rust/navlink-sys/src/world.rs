@@ -51,6 +51,9 @@ pub struct nl_world_def {
     pub task_enqueue_fn: nl_task_enqueue_fn,
     pub task_finish_fn: nl_task_finish_fn,
     pub task_user: *mut c_void,
+    /// Agents' paths planned in one `nl_world_step` at most (default 32, at least 1).
+    pub agent_paths_per_step: u32,
+    pub reserved2: u32,
 }
 
 extern "C" {

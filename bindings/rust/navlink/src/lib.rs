@@ -1,16 +1,17 @@
 //! Safe Rust API over NavLink (libnavlink.so): level geometry and ray queries, navmeshes (built by
-//! Recast or handed over), generated jump and drop links, and queued path requests planned for what
-//! each agent's body can do.
+//! Recast or handed over), generated jump and drop links, queued path requests planned for what each
+//! agent's body can do, and agents that follow those paths, stepped by the world.
 //!
 //! - [`World`] owns an `nl_world*` and destroys it on drop. It is `Send + Sync`: navlink.h makes every
 //!   function that takes a world safe to call from several threads at once, except `nl_world_destroy`,
 //!   which only `Drop` calls, when no borrow is left.
 //! - Failures are [`Error`]s: the `nl_status` and the library's message for the failing call.
-//! - Value types (ids, rays, links, path points...) are navlink-sys's `#[repr(C)]` structs under Rust
-//!   names; lists come back as `Vec`s, batch queries take slices. Output structs that may grow (`Link`,
-//!   `PathPoint`, `RayHit`...) start with `size`: their `Default` sets it, and every method that hands
-//!   the library an output sets it too.
+//! - Value types (ids, rays, links, path points, agent infos...) are navlink-sys's `#[repr(C)]` structs
+//!   under Rust names; lists come back as `Vec`s, batch queries take slices. Output structs that may grow
+//!   (`Link`, `PathPoint`, `RayHit`, `AgentInfo`...) start with `size`: their `Default` sets it, and every
+//!   method that hands the library an output sets it too.
 //! - Callbacks are closures behind trampolines that catch panics: a panic never unwinds into C.
+mod agents;
 mod callbacks;
 mod error;
 mod level;
@@ -22,6 +23,7 @@ mod plugins;
 mod types;
 mod world;
 
+pub use agents::default_agent_def;
 pub use error::{status_string, Error, Result};
 pub use level::MeshOptions;
 pub use links::{default_link_def, default_link_settings, link_settings_from_json, Progress};

@@ -25,6 +25,11 @@ pub type AgentCapabilities = sys::nl_agent_capabilities;
 pub type PathPoint = sys::nl_path_point;
 pub type PathQueueStats = sys::nl_path_queue_stats;
 pub type PluginId = sys::nl_plugin_id;
+pub type AgentId = sys::nl_agent_id;
+pub type AgentDef = sys::nl_agent_def;
+pub type AgentInfo = sys::nl_agent_info;
+pub type AgentTrajectory = sys::nl_agent_trajectory;
+pub type AgentEvent = sys::nl_agent_event;
 
 /// `nl_status` bits.
 pub mod status {
@@ -45,6 +50,39 @@ pub mod link_kind {
         NL_LINK_DROP as DROP, NL_LINK_FIRST_PLUGIN_KIND as FIRST_PLUGIN_KIND, NL_LINK_JUMP as JUMP,
         NL_LINK_MANUAL as MANUAL, NL_SEGMENT_WALK as WALK,
     };
+}
+
+/// What an agent is doing (`AgentInfo::state`).
+pub mod agent_state {
+    pub use navlink_sys::{
+        NL_AGENT_ARRIVED as ARRIVED, NL_AGENT_FAILED as FAILED, NL_AGENT_FALLING as FALLING, NL_AGENT_IDLE as IDLE,
+        NL_AGENT_JUMPING as JUMPING, NL_AGENT_TRAVERSING as TRAVERSING, NL_AGENT_WAITING as WAITING,
+        NL_AGENT_WALKING as WALKING,
+    };
+}
+
+/// Why an agent planned again or failed (`AgentInfo::reason`, `AgentEvent::reason`).
+pub mod agent_reason {
+    pub use navlink_sys::{
+        NL_AGENT_REASON_CAPABILITIES_CHANGED as CAPABILITIES_CHANGED, NL_AGENT_REASON_DESTINATION_SET as DESTINATION_SET,
+        NL_AGENT_REASON_LINK_GONE as LINK_GONE, NL_AGENT_REASON_NAVMESH_REMOVED as NAVMESH_REMOVED,
+        NL_AGENT_REASON_NONE as NONE, NL_AGENT_REASON_NO_PATH as NO_PATH, NL_AGENT_REASON_OFF_PATH as OFF_PATH,
+        NL_AGENT_REASON_WORLD_CHANGED as WORLD_CHANGED,
+    };
+}
+
+/// What happened to an agent in the last step (`AgentEvent::kind`).
+pub mod agent_event {
+    pub use navlink_sys::{
+        NL_AGENT_EVENT_ARRIVED as ARRIVED, NL_AGENT_EVENT_FAILED as FAILED, NL_AGENT_EVENT_LINK_FINISHED as LINK_FINISHED,
+        NL_AGENT_EVENT_LINK_STARTED as LINK_STARTED, NL_AGENT_EVENT_PATH_READY as PATH_READY,
+        NL_AGENT_EVENT_REPLANNED as REPLANNED,
+    };
+}
+
+/// How a link is being taken (`AgentTrajectory::kind`).
+pub mod trajectory_kind {
+    pub use navlink_sys::{NL_TRAJECTORY_ARC as ARC, NL_TRAJECTORY_FALL as FALL, NL_TRAJECTORY_LINE as LINE};
 }
 
 pub use navlink_sys::{

@@ -19,6 +19,9 @@ pub struct WorldOptions {
     pub path_worker_count: i32,
     pub log_level: u32,
     pub log: Option<Box<LogFn>>,
+    /// Agents' paths planned in one `World::step` at most (at least 1): when many agents ask at once,
+    /// the rest wait their turn (`agent_state::WAITING`), oldest first, so a step's cost stays bounded.
+    pub agent_paths_per_step: u32,
 }
 
 impl Default for WorldOptions {
@@ -29,6 +32,7 @@ impl Default for WorldOptions {
             path_worker_count: def.path_worker_count,
             log_level: def.log_level,
             log: None,
+            agent_paths_per_step: def.agent_paths_per_step,
         }
     }
 }
@@ -97,6 +101,7 @@ impl World {
         def.worker_count = options.worker_count;
         def.path_worker_count = options.path_worker_count;
         def.log_level = options.log_level;
+        def.agent_paths_per_step = options.agent_paths_per_step;
         if let Some(tasks) = tasks {
             def.task_enqueue_fn = Some(tasks.enqueue);
             def.task_finish_fn = Some(tasks.finish);

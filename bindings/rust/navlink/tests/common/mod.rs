@@ -1,7 +1,10 @@
 //! Levels and agents shared by the tests: the same scenario as the C# and Python tests.
 #![allow(dead_code)] // each test binary uses a part
 
-use navlink::{default_agent_capabilities, status, AgentCapabilities, Error, MeshId, MeshOptions, World};
+use navlink::{
+    default_agent_capabilities, default_agent_type, status, AgentCapabilities, Error, MeshId, MeshOptions, NavmeshId, NavmeshInput,
+    World,
+};
 use std::path::PathBuf;
 
 const BOX_INDICES: [u32; 36] = [
@@ -26,6 +29,34 @@ pub fn add_gap_level(world: &World) {
     add_box(world, [-11.0, -1.0, -5.0], [-1.0, 0.0, 5.0]);
     add_box(world, [1.0, -1.0, -5.0], [11.0, 0.0, 5.0]);
     add_box(world, [-12.0, -21.0, -6.0], [12.0, -20.0, 6.0]);
+}
+
+/// "bridge" (tests/abi/agents_test.c's level): two 4 x 10 m platforms (tops at y = 0) 2 m apart along x,
+/// x in [0, 4] and [6, 10], z in [0, 10], joined by a bridge at z 8-10; the host's navmesh is their tops
+/// set in 0.3 m from every rim (five convex polygons, for radius 0.3), its links generated. A walker goes
+/// round by the bridge; a jumper jumps the gap.
+pub fn add_bridge_level(world: &World) -> NavmeshId {
+    add_box(world, [0.0, -1.0, 0.0], [4.0, 0.0, 10.0]);
+    add_box(world, [6.0, -1.0, 0.0], [10.0, 0.0, 10.0]);
+    add_box(world, [4.0, -1.0, 8.0], [6.0, 0.0, 10.0]);
+    let polygons: [&[[f32; 2]]; 5] = [
+        &[[0.3, 0.3], [0.3, 8.0], [3.7, 8.0], [3.7, 0.3]],
+        &[[0.3, 8.0], [0.3, 9.7], [4.0, 9.7], [4.0, 8.0], [3.7, 8.0]],
+        &[[4.0, 8.0], [4.0, 9.7], [6.0, 9.7], [6.0, 8.0]],
+        &[[6.0, 8.0], [6.0, 9.7], [9.7, 9.7], [9.7, 8.0], [6.3, 8.0]],
+        &[[6.3, 0.3], [6.3, 8.0], [9.7, 8.0], [9.7, 0.3]],
+    ];
+    let vertices: Vec<f32> = polygons.iter().flat_map(|p| p.iter()).flat_map(|&[x, z]| [x, 0.0, z]).collect();
+    let indices: Vec<u32> = (0..vertices.len() as u32 / 3).collect();
+    let counts: Vec<u8> = polygons.iter().map(|p| p.len() as u8).collect();
+    let input = NavmeshInput {
+        polygon_vertex_counts: Some(&counts),
+        agent: navlink::AgentType { radius: 0.3, ..default_agent_type() },
+        ..NavmeshInput::triangles(&vertices, &indices)
+    };
+    let navmesh = world.add_navmesh(&input).expect("the bridge navmesh");
+    world.generate_links(navmesh, None, None, None).expect("its links");
+    navmesh
 }
 
 pub const WEST: [f32; 3] = [-6.0, 0.0, 0.0];

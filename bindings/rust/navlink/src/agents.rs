@@ -1,0 +1,95 @@
+//! Agents: bodies that walk their navmesh, take the links their body can, and keep out of each other's
+//! way. `World::step` moves them all; read their states (`agents`) and the step's events (`agent_events`)
+//! in bulk afterwards.
+use crate::error::{check, Result};
+use crate::list::two_call;
+use crate::types::{AgentCapabilities, AgentDef, AgentEvent, AgentId, AgentInfo, AgentTrajectory, PathPoint};
+use crate::world::World;
+use navlink_sys as sys;
+
+/// A walker (`default_agent_capabilities()`), height 2, speed 3.5, acceleration 8, gravity 9.81, avoidance
+/// on, on the null navmesh at the origin: set `navmesh` and `position`.
+pub fn default_agent_def() -> AgentDef {
+    unsafe { sys::nl_default_agent_def() }
+}
+
+impl World {
+    /// Adds an agent standing still (`agent_state::IDLE`) at the navmesh point of `def.position`
+    /// (NOT_FOUND when it is off the navmesh).
+    pub fn add_agent(&self, def: &AgentDef) -> Result<AgentId> {
+        let mut id = AgentId::default();
+        check(unsafe { sys::nl_agent_add(self.raw(), def, &mut id) })?;
+        Ok(id)
+    }
+
+    pub fn remove_agent(&self, agent: AgentId) -> Result<()> {
+        check(unsafe { sys::nl_agent_remove(self.raw(), agent) }).map(drop)
+    }
+
+    pub fn is_agent_valid(&self, agent: AgentId) -> bool {
+        unsafe { sys::nl_agent_is_valid(self.raw(), agent) != 0 }
+    }
+
+    /// Sends the agent to the navmesh point of `destination` (NOT_FOUND off the navmesh: the destination
+    /// is not kept); its path is planned in a coming `step`.
+    pub fn set_agent_destination(&self, agent: AgentId, destination: [f32; 3]) -> Result<()> {
+        check(unsafe { sys::nl_agent_set_destination(self.raw(), agent, destination.as_ptr()) }).map(drop)
+    }
+
+    /// Forgets the destination: the agent stands (`agent_state::IDLE`); one in the air lands first.
+    pub fn stop_agent(&self, agent: AgentId) -> Result<()> {
+        check(unsafe { sys::nl_agent_stop(self.raw(), agent) }).map(drop)
+    }
+
+    /// Puts the agent at the navmesh point of `position`, keeping its destination (refused while it is
+    /// taking a link).
+    pub fn teleport_agent(&self, agent: AgentId, position: [f32; 3]) -> Result<()> {
+        check(unsafe { sys::nl_agent_teleport(self.raw(), agent, position.as_ptr()) }).map(drop)
+    }
+
+    /// Changes what the agent's body can do; it plans again.
+    pub fn set_agent_capabilities(&self, agent: AgentId, capabilities: &AgentCapabilities) -> Result<()> {
+        check(unsafe { sys::nl_agent_set_capabilities(self.raw(), agent, capabilities) }).map(drop)
+    }
+
+    pub fn set_agent_speed(&self, agent: AgentId, max_speed: f32, max_acceleration: f32) -> Result<()> {
+        check(unsafe { sys::nl_agent_set_speed(self.raw(), agent, max_speed, max_acceleration) }).map(drop)
+    }
+
+    /// Advances every agent by `dt` seconds (finite, >= 0) on the world's workers, with the same result
+    /// whatever their number. An agent's trouble is its `agent_state::FAILED` and its event, not an `Err`.
+    pub fn step(&self, dt: f32) -> Result<()> {
+        check(unsafe { sys::nl_world_step(self.raw(), dt) }).map(drop)
+    }
+
+    pub fn agent_info(&self, agent: AgentId) -> Result<AgentInfo> {
+        let mut info = AgentInfo::default(); // size set
+        check(unsafe { sys::nl_agent_get_info(self.raw(), agent, &mut info) })?;
+        Ok(info)
+    }
+
+    /// Every agent's state, in a stable order until an agent is removed.
+    pub fn agents(&self) -> Result<Vec<AgentInfo>> {
+        // two_call's buffer is of AgentInfo::default(), whose size tells the library the element size.
+        two_call(|buffer, capacity, count| unsafe { sys::nl_world_get_agents(self.raw(), buffer, capacity, count) })
+    }
+
+    /// The path points the agent has yet to reach, the next first: where it walks, and at which point it
+    /// takes which link (`segment`, `link`).
+    pub fn agent_corners(&self, agent: AgentId) -> Result<Vec<PathPoint>> {
+        two_call(|buffer, capacity, count| unsafe { sys::nl_agent_get_corners(self.raw(), agent, buffer, capacity, count) })
+    }
+
+    /// The trajectory of the link the agent is taking now, or `None` while it is on the ground (the
+    /// library's kind `NL_TRAJECTORY_NONE`).
+    pub fn agent_trajectory(&self, agent: AgentId) -> Result<Option<AgentTrajectory>> {
+        let mut trajectory = AgentTrajectory::default(); // size set
+        check(unsafe { sys::nl_agent_get_trajectory(self.raw(), agent, &mut trajectory) })?;
+        Ok((trajectory.kind != sys::NL_TRAJECTORY_NONE).then_some(trajectory))
+    }
+
+    /// The events of the last `step`, in agent order. They stay until the next step: read them once per step.
+    pub fn agent_events(&self) -> Result<Vec<AgentEvent>> {
+        two_call(|buffer, capacity, count| unsafe { sys::nl_world_get_agent_events(self.raw(), buffer, capacity, count) })
+    }
+}

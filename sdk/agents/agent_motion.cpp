@@ -1,0 +1,242 @@
+#include "agents/agent_motion.h"
+
+#include <DetourObstacleAvoidance.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <memory>
+
+#include "navmesh/surface_walk.h"
+
+namespace nl {
+namespace {
+
+constexpr float kCornerReach = 0.15f;   // a corner on the way counts as reached this near (x-z)
+constexpr float kStopReach = 0.05f;     // the destination and a take-off are reached this near
+constexpr float kContact = 0.1f;        // bodies this near each other's surface touch
+constexpr float kOffPathSlack = 1.0f;   // how far past its radius an agent may be pushed off its path
+constexpr size_t kMaxNeighbours = 6;    // as DetourCrowd: the nearest count
+
+float distance_xz(const Vec3& a, const Vec3& b) { return std::hypot(a.x() - b.x(), a.z() - b.z()); }
+
+// The distance in x-z from p to the segment ab.
+float distance_to_segment_xz(const Vec3& p, const Vec3& a, const Vec3& b) {
+    const float dx = b.x() - a.x(), dz = b.z() - a.z();
+    const float length2 = dx * dx + dz * dz;
+    const float t = length2 > 0.0f ? std::clamp(((p.x() - a.x()) * dx + (p.z() - a.z()) * dz) / length2, 0.0f, 1.0f) : 0.0f;
+    return std::hypot(a.x() + t * dx - p.x(), a.z() + t * dz - p.z());
+}
+
+// DetourCrowd's obstacle avoidance, one query object per thread (it is scratch space; the answer
+// depends on its inputs only). DetourCrowd's default parameters: velocity obstacles sampled
+// adaptively around the desired velocity.
+struct FreeQuery {
+    void operator()(dtObstacleAvoidanceQuery* q) const { dtFreeObstacleAvoidanceQuery(q); }
+};
+dtObstacleAvoidanceQuery& avoidance_query() {
+    thread_local std::unique_ptr<dtObstacleAvoidanceQuery, FreeQuery> query;
+    if (!query) {
+        query.reset(dtAllocObstacleAvoidanceQuery());
+        if (!query || !query->init(int(kMaxNeighbours), 1)) throw std::bad_alloc();
+    }
+    return *query;
+}
+
+dtObstacleAvoidanceParams avoidance_params() {
+    dtObstacleAvoidanceParams p{};
+    p.velBias = 0.4f;
+    p.weightDesVel = 2.0f;
+    p.weightCurVel = 0.75f;
+    p.weightSide = 0.75f;
+    p.weightToi = 2.5f;
+    p.horizTime = 2.5f;
+    p.gridSize = 33;
+    p.adaptiveDivs = 7;
+    p.adaptiveRings = 2;
+    p.adaptiveDepth = 5;
+    return p;
+}
+
+// The neighbours an agent steers around: the nearest kMaxNeighbours within its range (nearest first,
+// the lower index on a tie, so the answer does not depend on the grid's order).
+size_t nearest_neighbours(uint32_t self, const CrowdSnapshot& crowd, float range, std::array<uint32_t, kMaxNeighbours>& out) {
+    std::array<std::pair<float, uint32_t>, kMaxNeighbours> best;
+    size_t count = 0;
+    const Vec3& p = crowd.positions[self];
+    crowd.grid.visit(p, range, [&](uint32_t j) {
+        if (j == self) return;
+        const float d = distance_xz(p, crowd.positions[j]);
+        const std::pair<float, uint32_t> candidate{d, j};
+        if (count < kMaxNeighbours) {
+            best[count++] = candidate;
+        } else if (candidate < best[count - 1]) {
+            best[count - 1] = candidate;
+        } else {
+            return;
+        }
+        std::sort(best.begin(), best.begin() + count);
+    });
+    for (size_t k = 0; k < count; ++k) out[k] = best[k].second;
+    return count;
+}
+
+void fly(AgentBody& a, float dt) {
+    a.motion_time += dt;
+    a.position = a.motion->at(a.motion_time, &a.velocity);
+    if (a.motion_time < a.motion->duration()) return;
+    // Landed: on the link's end, walking on from the point after the take-off.
+    a.position = a.motion->to();
+    a.polygon = a.landing_polygon;
+    a.velocity = Vec3::Zero();
+    const Handle link = a.link;
+    a.motion.reset();
+    a.link = Handle{};
+    a.motion_time = 0.0f;
+    a.state = AgentState::Walking;
+    ++a.next;
+    a.emit(AgentEventKind::LinkFinished, AgentReason::None, link);
+}
+
+// Slows down to stop `distance` ahead: the speed from which max_acceleration stops in that distance.
+float braking_speed(const AgentBody& a, float distance) {
+    return std::sqrt(2.0f * std::max(a.def.max_acceleration, 0.01f) * std::max(distance, 0.0f));
+}
+
+void decelerate(AgentBody& a, float dt) {
+    const float speed = a.velocity.norm();
+    const float slower = std::max(0.0f, speed - a.def.max_acceleration * dt);
+    a.velocity = speed > 0.0f ? Vec3(a.velocity * (slower / speed)) : Vec3(Vec3::Zero());
+}
+
+}  // namespace
+
+void move_agent(AgentBody& a, uint32_t self, float dt, const NavMesh& navmesh, const CrowdSnapshot& crowd) {
+    if (a.motion) {
+        fly(a, dt);
+        return;
+    }
+    if (a.state != AgentState::Walking || a.at_takeoff || a.path.empty()) {
+        decelerate(a, dt);
+        a.velocity = Vec3::Zero();  // standing agents do not drift over the surface
+        return;
+    }
+
+    // The next point to head for: walk corners reached on the way are passed.
+    const std::vector<PathPoint>& path = a.path;
+    while (a.next + 1 < path.size() && path[a.next].segment == kSegmentWalk &&
+           distance_xz(a.position, path[a.next].position) < kCornerReach)
+        ++a.next;
+    // A corner it can see past is behind it: as Detour's corridor, head straight for the one after,
+    // so that no corner must be reached exactly (at a wall's end, avoidance would keep it off).
+    if (a.next + 1 < path.size() && path[a.next].segment == kSegmentWalk &&
+        straight_walk_clear(navmesh, a.polygon, a.position, path[a.next + 1].position))
+        ++a.next;
+    const PathPoint& target = path[a.next];
+    const bool last = a.next + 1 == path.size();
+    const bool takeoff = target.segment != kSegmentWalk;
+    const float distance = distance_xz(a.position, target.position);
+
+    // A destination another body has arrived on is reached as near as the crowd there lets, as RTS
+    // units stop: against an arrived body that stands nearer to it (a cluster grows around it).
+    bool taken = false;
+    if (last && !takeoff && crowd.grounded[self]) {
+        const float radius = a.def.capabilities.radius;
+        bool against_crowd = false;
+        crowd.grid.visit(a.position, radius + crowd.max_radius + kContact, [&](uint32_t j) {
+            against_crowd = against_crowd || (j != self && crowd.arrived[j] &&
+                                              distance_xz(crowd.positions[j], a.position) < radius + crowd.radii[j] + kContact &&
+                                              distance_xz(crowd.positions[j], target.position) < distance);
+        });
+        if (against_crowd) {
+            crowd.grid.visit(target.position, radius + crowd.max_radius, [&](uint32_t j) {
+                taken = taken || (j != self && crowd.arrived[j] &&
+                                  distance_xz(crowd.positions[j], target.position) < radius + crowd.radii[j]);
+            });
+        }
+    }
+    if ((last || takeoff) && (distance < kStopReach || taken)) {
+        a.velocity = Vec3::Zero();
+        if (takeoff) {
+            a.at_takeoff = true;  // the serial phase checks the link and takes off
+        } else if (a.partial) {
+            a.fail(AgentReason::NoPath);
+        } else {
+            a.state = AgentState::Arrived;
+            a.emit(AgentEventKind::Arrived);
+        }
+        return;
+    }
+
+    // Pushed off the stretch it walks (by other agents): plan again from where it stands.
+    const Vec3& from = a.next > 0 ? path[a.next - 1].position : a.position;
+    if (distance_to_segment_xz(a.position, from, target.position) > a.def.capabilities.radius + kOffPathSlack) a.off_path = true;
+
+    // Desired velocity: toward the target at full speed, braking for a stop.
+    Vec3 toward(target.position.x() - a.position.x(), 0.0f, target.position.z() - a.position.z());
+    float speed = a.def.max_speed;
+    if (last || takeoff) speed = std::min(speed, braking_speed(a, distance));
+    Vec3 desired = distance > 0.0f ? Vec3(toward * (speed / distance)) : Vec3(Vec3::Zero());
+    // Never overshoot the stop within this step.
+    if ((last || takeoff) && desired.norm() * dt > distance) desired *= distance / (desired.norm() * dt);
+
+    const float radius = a.def.capabilities.radius;
+    // The first at a take-off walks straight onto it; the others make way.
+    const bool steers = a.def.avoidance && crowd.grounded[self] && !crowd.first_at_takeoff[self];
+    if (steers) {
+        // Other bodies only: walls are kept by the navmesh itself, eroded by the body's radius, and
+        // by the surface move. A body on that eroded edge touches it, and DetourCrowd's sampling
+        // takes a touched wall for an immediate collision: bodies rounding a corner would crawl.
+        std::array<uint32_t, kMaxNeighbours> near{};
+        const size_t count = nearest_neighbours(self, crowd, std::max(radius * 12.0f, 1.0f), near);
+        if (count > 0) {
+            dtObstacleAvoidanceQuery& query = avoidance_query();
+            query.reset();
+            for (size_t k = 0; k < count; ++k) {
+                const uint32_t j = near[k];
+                query.addCircle(crowd.positions[j].data(), crowd.radii[j], crowd.velocities[j].data(),
+                                crowd.velocities[j].data());
+            }
+            const dtObstacleAvoidanceParams params = avoidance_params();
+            Vec3 chosen = desired;
+            query.sampleVelocityAdaptive(a.position.data(), radius, a.def.max_speed, a.velocity.data(), desired.data(),
+                                         chosen.data(), &params);
+            desired = Vec3(chosen.x(), 0.0f, chosen.z());
+        }
+    }
+
+    // Accelerate toward it within max_acceleration.
+    Vec3 change = desired - a.velocity;
+    change.y() = 0.0f;
+    const float most = a.def.max_acceleration * dt;
+    if (change.norm() > most) change *= most / change.norm();
+    a.velocity += change;
+    a.velocity.y() = 0.0f;
+
+    // Separation: overlapping neighbours push each other apart by half the overlap (read from the
+    // snapshot, so both sides agree whatever the order).
+    Vec3 push = Vec3::Zero();
+    if (steers) {
+        crowd.grid.visit(a.position, radius + crowd.max_radius, [&](uint32_t j) {
+            if (j == self) return;
+            const Vec3 d(a.position.x() - crowd.positions[j].x(), 0.0f, a.position.z() - crowd.positions[j].z());
+            const float gap = d.norm(), reach = radius + crowd.radii[j];
+            if (gap >= reach) return;
+            // Exactly on top of each other: apart along x, the lower index to the left.
+            const Vec3 away = gap > 1e-6f ? Vec3(d / gap) : Vec3(self < j ? -1.0f : 1.0f, 0.0f, 0.0f);
+            push += away * (0.5f * (reach - gap));
+        });
+    }
+
+    const Vec3 before = a.position;
+    const SurfaceMove moved = move_along_surface(navmesh, a.polygon, before, before + a.velocity * dt + push);
+    a.position = moved.position;
+    a.polygon = moved.polygon;
+    if (moved.blocked && dt > 0.0f) {
+        // Slid along a wall: keep only the velocity the wall left.
+        const Vec3 went = moved.position - before - push;
+        a.velocity = Vec3(went.x() / dt, 0.0f, went.z() / dt);
+    }
+}
+
+}  // namespace nl

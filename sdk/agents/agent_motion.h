@@ -1,0 +1,18 @@
+// What one agent does in a step's parallel phase: follow its path on the ground (steer to the next
+// point, avoid neighbours, move over the surface, stop at a link's take-off) or fly the link
+// it took. Reads the step's snapshot of everybody's position, writes only its own state.
+#pragma once
+
+#include <cstdint>
+
+#include "agents/agent_state.h"
+#include "agents/crowd.h"
+#include "navmesh/navmesh.h"
+
+namespace nl {
+
+// Moves agent `self` (its index in the snapshot) by dt on `navmesh` (its own). May mark it off its
+// path or at a take-off (the serial phase acts on those); never changes another agent.
+void move_agent(AgentBody& agent, uint32_t self, float dt, const NavMesh& navmesh, const CrowdSnapshot& crowd);
+
+}  // namespace nl

@@ -1,0 +1,69 @@
+// One agent's whole state, as the step works on it (sdk/agents internals).
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "agents/agent.h"
+#include "motion/link_motion.h"
+#include "path/path_graph.h"
+#include "path/path_query.h"
+
+namespace nl {
+
+struct AgentBody {
+    AgentDef def;
+    AgentState state = AgentState::Idle;
+    AgentReason reason = AgentReason::None;
+    Handle id;
+    Vec3 position = Vec3::Zero();
+    uint32_t polygon = 0;
+    Vec3 velocity = Vec3::Zero();
+
+    bool has_destination = false;
+    Vec3 destination = Vec3::Zero();
+
+    // The path it follows, the snapshot it was planned on, and the next point to reach.
+    std::shared_ptr<const PathGraph> graph;
+    std::vector<PathPoint> path;
+    uint32_t next = 0;
+    bool partial = false;
+
+    // A path asked for, waiting its turn (oldest first).
+    bool wants_path = false;
+    AgentReason plan_reason = AgentReason::None;
+    uint64_t path_order = 0;
+
+    // A link being taken, or waited for at its take-off.
+    std::optional<LinkMotion> motion;
+    float motion_time = 0.0f;
+    Handle link;
+    uint32_t landing_polygon = 0;
+    bool at_takeoff = false;
+    bool off_path = false;  // pushed too far off its path in the last move
+
+    std::vector<AgentEvent> step_events;  // this step's, gathered in agent order at its end
+
+    void emit(AgentEventKind kind, AgentReason why = AgentReason::None, Handle on_link = Handle{}) {
+        step_events.push_back(AgentEvent{kind, id, on_link, why, def.user_data});
+    }
+    // Asks for a path to its destination (planned in a coming step, oldest request first).
+    void ask_path(AgentReason why, uint64_t& order) {
+        if (!has_destination) return;
+        if (!wants_path) path_order = order++;
+        wants_path = true;
+        plan_reason = why;
+    }
+    void fail(AgentReason why) {
+        state = AgentState::Failed;
+        reason = why;
+        velocity = Vec3::Zero();
+        wants_path = false;
+        at_takeoff = false;
+        path.clear();
+        emit(AgentEventKind::Failed, why);
+    }
+};
+
+}  // namespace nl

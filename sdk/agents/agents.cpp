@@ -1,0 +1,431 @@
+#include "agents/agents.h"
+
+#include <algorithm>
+#include <cmath>
+#include <mutex>
+#include <shared_mutex>
+
+#include "agents/agent_motion.h"
+#include "agents/agent_state.h"
+#include "agents/path_upkeep.h"
+#include "path/link_filter.h"
+#include "path/path_planner.h"
+
+namespace nl {
+namespace {
+
+void check_positive(float value, const char* field) {
+    if (!(value > 0.0f) || !std::isfinite(value)) fail_field(ErrorCode::InvalidArgument, field, " is ", value, " (must be finite and > 0)");
+}
+void check_amount(float value, const char* field) {
+    if (!(value >= 0.0f) || !std::isfinite(value))
+        fail_field(ErrorCode::InvalidArgument, field, " is ", value, " (must be finite and >= 0)");
+}
+void check_capabilities(const AgentCapabilities& c) {
+    check_amount(c.max_jump_distance, "capabilities.max_jump_distance");
+    check_amount(c.max_jump_height, "capabilities.max_jump_height");
+    check_amount(c.max_drop_height, "capabilities.max_drop_height");
+    check_amount(c.radius, "capabilities.radius");
+}
+void check_point(const Vec3& p, const char* field) {
+    if (!within_coordinate_limit(p)) fail_field(ErrorCode::InvalidArgument, field, " is not finite or beyond the coordinate limit");
+}
+
+AgentState state_of(MotionKind kind) {
+    switch (kind) {
+        case MotionKind::Arc: return AgentState::Jumping;
+        case MotionKind::Fall: return AgentState::Falling;
+        case MotionKind::Line: break;
+    }
+    return AgentState::Traversing;
+}
+
+}  // namespace
+
+Agents::Agents(uint32_t handle_tag, AgentsSettings settings) : settings_(settings), ids_(handle_tag) {}
+Agents::~Agents() = default;
+
+AgentBody& Agents::find(Handle agent) {
+    uint32_t* index = ids_.find(agent);
+    if (!index) fail_stale("agent", agent);
+    return agents_[*index];
+}
+const AgentBody& Agents::find(Handle agent) const { return const_cast<Agents*>(this)->find(agent); }
+
+uint32_t Agents::locate(const NavMesh& navmesh, const Vec3& point, float radius, const char* field,
+                        Vec3& on_navmesh) const {
+    // Over the navmesh, or within the body's radius of its edge (half a metre at least), and within
+    // 2 m above or below it; farther is refused, saying how far the nearest navmesh is.
+    const float across = std::max(0.5f, radius);
+    const NavPoint near = navmesh.find_nearest(point, Vec3(across, 2.0f, across));
+    if (near.found) {
+        on_navmesh = near.point;
+        return near.polygon;
+    }
+    const NavPoint far = navmesh.find_nearest(point, Vec3(25.0f, 25.0f, 25.0f));
+    if (far.found)
+        fail_field(ErrorCode::NotFound, field, " is not on the navmesh: the nearest navmesh point is ", far.distance,
+                   " m away (within ", across, " m across and 2 m up or down is on it)");
+    fail_field(ErrorCode::NotFound, field, " is not on the navmesh (nothing within 25 m)");
+}
+
+Handle Agents::add(const NavMeshRegistry& navmeshes, const AgentDef& def) {
+    check_capabilities(def.capabilities);
+    check_positive(def.height, "height");
+    check_positive(def.max_speed, "max_speed");
+    check_positive(def.max_acceleration, "max_acceleration");
+    check_positive(def.gravity, "gravity");
+    check_amount(def.takeoff_speed, "takeoff_speed");
+    check_point(def.position, "position");
+    const std::shared_ptr<const NavMesh> navmesh = navmeshes.navmesh(def.navmesh);
+    AgentBody body;
+    body.def = def;
+    body.polygon = locate(*navmesh, def.position, def.capabilities.radius, "position", body.position);
+    std::unique_lock lock(mutex_);
+    agents_.reserve(agents_.size() + 1);  // nothing may throw once the id is taken
+    const Handle id = ids_.insert(static_cast<uint32_t>(agents_.size()));
+    body.id = id;
+    agents_.push_back(std::move(body));
+    return id;
+}
+
+void Agents::remove(Handle agent) {
+    std::unique_lock lock(mutex_);
+    uint32_t* slot = ids_.find(agent);
+    if (!slot) fail_stale("agent", agent);
+    const uint32_t at = *slot;
+    ids_.erase(agent);
+    if (at + 1 != agents_.size()) {
+        agents_[at] = std::move(agents_.back());
+        *ids_.find(agents_[at].id) = at;
+    }
+    agents_.pop_back();
+}
+
+bool Agents::contains(Handle agent) const {
+    std::shared_lock lock(mutex_);
+    return ids_.find(agent) != nullptr;
+}
+
+void Agents::set_destination(const NavMeshRegistry& navmeshes, Handle agent, const Vec3& destination) {
+    check_point(destination, "destination");
+    Handle navmesh;
+    float radius;
+    {
+        std::shared_lock lock(mutex_);
+        navmesh = find(agent).def.navmesh;
+        radius = find(agent).def.capabilities.radius;
+    }
+    const std::shared_ptr<const NavMesh> mesh = navmeshes.navmesh(navmesh);
+    Vec3 on_navmesh;
+    locate(*mesh, destination, radius, "destination", on_navmesh);
+    std::unique_lock lock(mutex_);
+    AgentBody& a = find(agent);
+    a.has_destination = true;
+    a.destination = on_navmesh;
+    if (a.state == AgentState::Failed || a.state == AgentState::Arrived || a.state == AgentState::Idle) a.state = AgentState::Waiting;
+    a.reason = AgentReason::None;
+    a.ask_path(AgentReason::DestinationSet, next_path_order_);
+}
+
+void Agents::stop(Handle agent) {
+    std::unique_lock lock(mutex_);
+    AgentBody& a = find(agent);
+    a.has_destination = false;
+    a.wants_path = false;
+    a.at_takeoff = false;
+    a.path.clear();
+    a.graph.reset();
+    if (!a.motion) {
+        a.state = AgentState::Idle;
+        a.velocity = Vec3::Zero();
+    }
+}
+
+void Agents::teleport(const NavMeshRegistry& navmeshes, Handle agent, const Vec3& position) {
+    check_point(position, "position");
+    Handle navmesh;
+    float radius;
+    {
+        std::shared_lock lock(mutex_);
+        navmesh = find(agent).def.navmesh;
+        radius = find(agent).def.capabilities.radius;
+    }
+    const std::shared_ptr<const NavMesh> mesh = navmeshes.navmesh(navmesh);
+    Vec3 on_navmesh;
+    const uint32_t polygon = locate(*mesh, position, radius, "position", on_navmesh);
+    std::unique_lock lock(mutex_);
+    AgentBody& a = find(agent);
+    if (a.motion) fail(ErrorCode::InvalidArgument, "the agent is taking a link (teleport it after it lands)");
+    a.position = on_navmesh;
+    a.polygon = polygon;
+    a.velocity = Vec3::Zero();
+    a.at_takeoff = false;
+    a.path.clear();
+    if (a.has_destination && a.state != AgentState::Failed) {
+        a.state = AgentState::Waiting;
+        a.ask_path(AgentReason::OffPath, next_path_order_);
+    }
+}
+
+void Agents::set_capabilities(Handle agent, const AgentCapabilities& capabilities) {
+    check_capabilities(capabilities);
+    std::unique_lock lock(mutex_);
+    AgentBody& a = find(agent);
+    a.def.capabilities = capabilities;
+    if (a.has_destination && a.state != AgentState::Arrived && a.state != AgentState::Failed)
+        a.ask_path(AgentReason::CapabilitiesChanged, next_path_order_);
+}
+
+void Agents::set_speed(Handle agent, float max_speed, float max_acceleration) {
+    check_positive(max_speed, "max_speed");
+    check_positive(max_acceleration, "max_acceleration");
+    std::unique_lock lock(mutex_);
+    AgentBody& a = find(agent);
+    a.def.max_speed = max_speed;
+    a.def.max_acceleration = max_acceleration;
+}
+
+uint32_t Agents::count() const {
+    std::shared_lock lock(mutex_);
+    return static_cast<uint32_t>(agents_.size());
+}
+
+void Agents::step(float dt, const NavMeshRegistry& navmeshes, TaskSystem& tasks) {
+    if (!(dt >= 0.0f) || !std::isfinite(dt)) fail_field(ErrorCode::InvalidArgument, "dt is ", dt, " (must be finite and >= 0)");
+    std::unique_lock lock(mutex_);
+    events_.clear();
+    if (dt == 0.0f || agents_.empty()) return;
+
+    // 1. The world as it is now: each navmesh's graph, looked up once.
+    std::vector<std::pair<Handle, std::shared_ptr<const PathGraph>>> graphs;
+    auto graph_of = [&](Handle navmesh) -> std::shared_ptr<const PathGraph> {
+        for (const auto& [id, graph] : graphs)
+            if (id == navmesh) return graph;
+        std::shared_ptr<const PathGraph> graph;
+        if (navmeshes.contains(navmesh)) {
+            try {
+                graph = navmeshes.path_graph(navmesh);
+            } catch (const Error& e) {
+                if (e.code() != ErrorCode::InvalidHandle) throw;  // removed since: no graph
+            }
+        }
+        graphs.emplace_back(navmesh, graph);
+        return graph;
+    };
+    std::vector<std::shared_ptr<const PathGraph>> current(agents_.size());
+    LinkLookup links;
+    for (size_t i = 0; i < agents_.size(); ++i) {
+        AgentBody& a = agents_[i];
+        a.step_events.clear();
+        if (a.state == AgentState::Failed) continue;
+        current[i] = graph_of(a.def.navmesh);
+        if (!current[i]) {
+            a.motion.reset();
+            a.fail(AgentReason::NavMeshRemoved);
+            continue;
+        }
+        if (a.motion) continue;  // in the air: it lands first
+        if (a.off_path) {
+            a.off_path = false;
+            a.ask_path(AgentReason::OffPath, next_path_order_);
+            a.emit(AgentEventKind::Replanned, AgentReason::OffPath);
+        } else if (a.graph && a.graph != current[i] && !a.wants_path && a.state != AgentState::Arrived) {
+            const PathUpkeep upkeep = check_path(a, *current[i], links);
+            if (upkeep.verdict == PathUpkeep::Holds) {
+                a.graph = current[i];
+            } else if (upkeep.verdict == PathUpkeep::LinkGone) {
+                a.ask_path(AgentReason::LinkGone, next_path_order_);
+                a.emit(AgentEventKind::Replanned, AgentReason::LinkGone, upkeep.link);
+            } else {
+                // Another navmesh under the same handle: stand where it is on the new one, plan anew.
+                const NavPoint here = current[i]->navmesh().find_nearest(a.position, Vec3(2.0f, 2.0f, 2.0f));
+                if (!here.found) {
+                    a.fail(AgentReason::NavMeshRemoved);
+                    continue;
+                }
+                a.position = here.point;
+                a.polygon = here.polygon;
+                a.path.clear();
+                a.graph.reset();
+                a.at_takeoff = false;
+                a.state = AgentState::Waiting;
+                a.ask_path(AgentReason::WorldChanged, next_path_order_);
+                a.emit(AgentEventKind::Replanned, AgentReason::WorldChanged);
+            }
+        }
+    }
+
+    // 2. The paths asked for, oldest first, at most max_paths_per_step, planned in parallel.
+    std::vector<uint32_t> asking;
+    for (uint32_t i = 0; i < agents_.size(); ++i) {
+        const AgentBody& a = agents_[i];
+        if (a.wants_path && !a.motion && a.state != AgentState::Failed) asking.push_back(i);
+    }
+    std::sort(asking.begin(), asking.end(), [&](uint32_t x, uint32_t y) { return agents_[x].path_order < agents_[y].path_order; });
+    if (asking.size() > settings_.max_paths_per_step) {
+        // Their turn comes in a later step; meanwhile one with a path walks on (it takes no link).
+        for (size_t k = settings_.max_paths_per_step; k < asking.size(); ++k) {
+            AgentBody& a = agents_[asking[k]];
+            if (a.path.empty()) a.state = AgentState::Waiting;
+        }
+        asking.resize(settings_.max_paths_per_step);
+    }
+    std::vector<PathQuery> queries(asking.size());
+    std::vector<PathResult> results(asking.size());
+    for (size_t k = 0; k < asking.size(); ++k) {
+        const AgentBody& a = agents_[asking[k]];
+        PathQuery& q = queries[k];
+        q.start = a.position;
+        q.goal = a.destination;
+        q.agent = a.def.capabilities;
+        q.accept_partial = true;
+    }
+    tasks.parallel_for(static_cast<uint32_t>(asking.size()), 1, [&](uint32_t begin, uint32_t end) {
+        for (uint32_t k = begin; k < end; ++k) {
+            try {
+                plan_path(*current[asking[k]], queries[k], nullptr, results[k]);
+            } catch (...) {
+                results[k].outcome = PathOutcome::Failed;
+            }
+        }
+    });
+    for (size_t k = 0; k < asking.size(); ++k) {
+        AgentBody& a = agents_[asking[k]];
+        PathResult& r = results[k];
+        a.wants_path = false;
+        a.at_takeoff = false;
+        if (r.outcome != PathOutcome::Complete && r.outcome != PathOutcome::Partial) {
+            a.fail(AgentReason::NoPath);
+            continue;
+        }
+        a.graph = current[asking[k]];
+        a.path = std::move(r.points);
+        a.next = a.path.size() > 1 ? 1 : 0;
+        a.partial = r.outcome == PathOutcome::Partial;
+        a.state = AgentState::Walking;
+        a.reason = a.plan_reason;
+        a.emit(AgentEventKind::PathReady, a.plan_reason);
+    }
+
+    // 3. Everybody as they are now, for the parallel move.
+    CrowdSnapshot crowd;
+    snapshot_crowd(agents_, crowd);
+    const size_t n = agents_.size();
+    tasks.parallel_for(static_cast<uint32_t>(n), 64, [&](uint32_t begin, uint32_t end) {
+        for (uint32_t i = begin; i < end; ++i) {
+            AgentBody& a = agents_[i];
+            if (a.state == AgentState::Failed || !current[i]) continue;
+            move_agent(a, i, dt, current[i]->navmesh(), crowd);
+        }
+    });
+
+    // 4. Take-offs, in agent order: the link checked as it is now, and its landing clear.
+    for (size_t i = 0; i < n; ++i) {
+        AgentBody& a = agents_[i];
+        if (!a.at_takeoff || a.motion) continue;
+        if (a.wants_path) {
+            a.state = AgentState::Waiting;  // its new path may not take this link: it waits for it
+            continue;
+        }
+        const PathPoint& point = a.path[a.next];
+        Link link;
+        bool usable = false;
+        try {
+            const auto [navmesh, stored] = navmeshes.link(point.link);
+            link = stored;
+            usable = navmesh == a.def.navmesh && link.enabled && can_take(link, point.reversed, a.def.capabilities);
+        } catch (const Error& e) {
+            if (e.code() != ErrorCode::InvalidHandle) throw;
+        }
+        if (!usable) {
+            a.at_takeoff = false;
+            a.state = AgentState::Waiting;
+            a.ask_path(AgentReason::LinkGone, next_path_order_);
+            a.emit(AgentEventKind::Replanned, AgentReason::LinkGone, point.link);
+            continue;
+        }
+        const LinkMotion motion(link, point.reversed, BodyMotion{a.def.max_speed, a.def.gravity, a.def.takeoff_speed});
+        // One body on a landing at a time: wait while another flies to it or stands on it.
+        const Vec3 landing = motion.to();
+        bool busy = false;
+        for (size_t j = 0; j < n && !busy; ++j) {
+            if (j == i) continue;
+            const AgentBody& b = agents_[j];
+            const float reach = a.def.capabilities.radius + b.def.capabilities.radius;
+            const Vec3 there = b.motion ? b.motion->to() : b.position;
+            if (b.state == AgentState::Failed) continue;
+            busy = std::hypot(there.x() - landing.x(), there.z() - landing.z()) < reach &&
+                   std::fabs(there.y() - landing.y()) < std::max(a.def.height, b.def.height);
+        }
+        if (busy) {
+            a.state = AgentState::Waiting;
+            a.link = point.link;
+            continue;
+        }
+        a.at_takeoff = false;
+        a.motion = motion;
+        a.motion_time = 0.0f;
+        a.link = point.link;
+        a.landing_polygon = point.reversed ? link.start_polygon : link.end_polygon;
+        a.state = state_of(motion.kind());
+        a.emit(AgentEventKind::LinkStarted, AgentReason::None, point.link);
+    }
+
+    for (const AgentBody& a : agents_) events_.insert(events_.end(), a.step_events.begin(), a.step_events.end());
+}
+
+namespace {
+
+AgentInfo info_of(const AgentBody& a) {
+    AgentInfo info;
+    info.id = a.id;
+    info.state = a.state;
+    info.reason = a.reason;
+    info.position = a.position;
+    info.velocity = a.velocity;
+    info.polygon = a.polygon;
+    info.link = a.link;
+    info.link_progress = a.motion ? std::clamp(a.motion_time / a.motion->duration(), 0.0f, 1.0f) : 0.0f;
+    info.destination = a.destination;
+    info.has_destination = a.has_destination;
+    info.corners_ahead = a.path.empty() ? 0u : static_cast<uint32_t>(a.path.size() - a.next);
+    info.user_data = a.def.user_data;
+    return info;
+}
+
+}  // namespace
+
+AgentInfo Agents::info(Handle agent) const {
+    std::shared_lock lock(mutex_);
+    return info_of(find(agent));
+}
+
+std::vector<AgentInfo> Agents::infos() const {
+    std::shared_lock lock(mutex_);
+    std::vector<AgentInfo> out;
+    out.reserve(agents_.size());
+    for (const AgentBody& a : agents_) out.push_back(info_of(a));
+    return out;
+}
+
+std::vector<PathPoint> Agents::corners(Handle agent) const {
+    std::shared_lock lock(mutex_);
+    const AgentBody& a = find(agent);
+    if (a.path.empty()) return {};
+    return std::vector<PathPoint>(a.path.begin() + a.next, a.path.end());
+}
+
+Agents::Flight Agents::flight(Handle agent) const {
+    std::shared_lock lock(mutex_);
+    const AgentBody& a = find(agent);
+    if (!a.motion) return {};
+    return Flight{a.motion, a.link, a.motion_time};
+}
+
+std::vector<AgentEvent> Agents::events() const {
+    std::shared_lock lock(mutex_);
+    return events_;
+}
+
+}  // namespace nl

@@ -1,0 +1,97 @@
+// The agents of a world: bodies that follow their paths, take links along the trajectories the
+// generator proved clear, and keep out of each other's way. One step moves every agent by dt.
+//
+// A step runs in phases, so that its result is the same bit for bit whatever the thread count:
+//   1. (serial) each agent checks its navmesh and links against the world as it is now, and asks
+//      for a new path when they changed under it;
+//   2. the paths asked for, at most max_paths_per_step of them, oldest first, are planned in
+//      parallel on the world's task system, each on the navmesh and links as they are now;
+//   3. (parallel) each agent steers, avoids its neighbours and the walls (positions as they were at
+//      the start of the phase), moves over the surface, or flies its link;
+//   4. (serial, in agent order) agents at a link's take-off check that the link is still there,
+//      enabled and within their body, and that its landing is clear, then take off or plan again.
+// Each agent writes only its own state in a parallel phase; events are gathered in agent order.
+//
+// Thread-safety: every method may be called from any thread; step() holds the agents' lock for its
+// whole run, so calls on agents wait for it, and it must not be called from inside a task body. Lock
+// order: the agents' lock, then the navmesh registry's.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "agents/agent.h"
+#include "motion/link_motion.h"
+#include "path/path_graph.h"
+#include "util/handle.h"
+#include "util/shared_mutex.h"
+#include "util/task_system.h"
+#include "world/navmesh_registry.h"
+
+namespace nl {
+
+struct AgentBody;
+
+struct AgentsSettings {
+    uint32_t max_paths_per_step = 32;  // paths planned in one step at most; the rest wait their turn
+};
+
+class Agents {
+public:
+    Agents(uint32_t handle_tag, AgentsSettings settings);
+    ~Agents();
+    Agents(const Agents&) = delete;
+    Agents& operator=(const Agents&) = delete;
+
+    // Throws InvalidHandle (navmesh), InvalidArgument about a field (fail_field: "position", "max_speed"...),
+    // NotFound when the position is not on the navmesh (the message says how far the nearest is).
+    Handle add(const NavMeshRegistry& navmeshes, const AgentDef& def);
+    void remove(Handle agent);
+    bool contains(Handle agent) const;
+
+    // Located on the agent's navmesh at once (NotFound when it is not on it: the destination is not
+    // kept); the agent plans a path to it in a coming step.
+    void set_destination(const NavMeshRegistry& navmeshes, Handle agent, const Vec3& destination);
+    // Forgets the destination and stands still (Idle). An agent in the air lands first.
+    void stop(Handle agent);
+    // Puts the agent at a navmesh point (NotFound off it), still, keeping its destination (it plans
+    // again from there). Refused (InvalidArgument) while it is taking a link.
+    void teleport(const NavMeshRegistry& navmeshes, Handle agent, const Vec3& position);
+    void set_capabilities(Handle agent, const AgentCapabilities& capabilities);
+    void set_speed(Handle agent, float max_speed, float max_acceleration);
+
+    // Advances every agent by dt seconds (>= 0, finite). Throws nothing for an agent's trouble: the
+    // agent fails, with its event.
+    void step(float dt, const NavMeshRegistry& navmeshes, TaskSystem& tasks);
+
+    AgentInfo info(Handle agent) const;
+    std::vector<AgentInfo> infos() const;  // every agent, in a stable order (until one is removed)
+    // The path points the agent has yet to reach, the next first.
+    std::vector<PathPoint> corners(Handle agent) const;
+    // The link the agent is taking, read at one moment: its motion (empty on the ground), the link,
+    // and the seconds since take-off.
+    struct Flight {
+        std::optional<LinkMotion> motion;
+        Handle link;
+        float elapsed = 0.0f;
+    };
+    Flight flight(Handle agent) const;
+    // The last step's events, in agent order.
+    std::vector<AgentEvent> events() const;
+    uint32_t count() const;
+
+private:
+    AgentBody& find(Handle agent);
+    const AgentBody& find(Handle agent) const;
+    uint32_t locate(const NavMesh& navmesh, const Vec3& point, float radius, const char* field, Vec3& on_navmesh) const;
+
+    mutable SharedMutex mutex_;
+    AgentsSettings settings_;
+    SlotMap<uint32_t> ids_;                    // agent handle -> index in agents_
+    std::vector<AgentBody> agents_;  // dense, in a stable order between removals
+    std::vector<AgentEvent> events_;
+    uint64_t next_path_order_ = 0;
+};
+
+}  // namespace nl

@@ -1,0 +1,66 @@
+#include "agents/crowd.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace nl {
+namespace {
+
+// A body this near a take-off (in body widths of its own and the widest other) is queueing for it.
+constexpr float kQueueWidths = 2.0f;
+
+struct TakeoffClaim {
+    Handle link;
+    bool reversed;
+    float distance;
+    uint32_t agent;
+};
+
+void choose_first_at_takeoffs(const std::vector<AgentBody>& agents, CrowdSnapshot& crowd) {
+    std::vector<TakeoffClaim> claims;
+    for (uint32_t i = 0; i < agents.size(); ++i) {
+        const AgentBody& a = agents[i];
+        if (a.motion || a.state != AgentState::Walking || a.next >= a.path.size()) continue;
+        const PathPoint& takeoff = a.path[a.next];
+        if (takeoff.segment == kSegmentWalk) continue;
+        const float distance = std::hypot(a.position.x() - takeoff.position.x(), a.position.z() - takeoff.position.z());
+        if (distance > kQueueWidths * (a.def.capabilities.radius + crowd.max_radius)) continue;
+        auto same = std::find_if(claims.begin(), claims.end(), [&](const TakeoffClaim& c) {
+            return c.link == takeoff.link && c.reversed == takeoff.reversed;
+        });
+        if (same == claims.end())
+            claims.push_back({takeoff.link, takeoff.reversed, distance, i});
+        else if (distance < same->distance)  // agents come in index order: a tie keeps the lower
+            *same = {takeoff.link, takeoff.reversed, distance, i};
+    }
+    crowd.first_at_takeoff.assign(agents.size(), 0);
+    for (const TakeoffClaim& c : claims) crowd.first_at_takeoff[c.agent] = 1;
+}
+
+}  // namespace
+
+void snapshot_crowd(const std::vector<AgentBody>& agents, CrowdSnapshot& crowd) {
+    const size_t n = agents.size();
+    crowd.positions.resize(n);
+    crowd.velocities.resize(n);
+    crowd.radii.resize(n);
+    crowd.grounded.resize(n);
+    crowd.arrived.resize(n);
+    crowd.max_radius = 0.0f;
+    float widest = 0.0f;
+    for (size_t i = 0; i < n; ++i) {
+        const AgentBody& a = agents[i];
+        crowd.positions[i] = a.position;
+        crowd.velocities[i] = a.velocity;
+        crowd.radii[i] = a.def.capabilities.radius;
+        crowd.grounded[i] = !a.motion && a.state != AgentState::Failed && a.def.avoidance;
+        crowd.arrived[i] = a.state == AgentState::Arrived;
+        if (!crowd.grounded[i]) continue;
+        crowd.max_radius = std::max(crowd.max_radius, crowd.radii[i]);
+        widest = std::max(widest, crowd.radii[i] * 12.0f);
+    }
+    crowd.grid.build(crowd.positions, crowd.grounded, std::max(widest, 1.0f));
+    choose_first_at_takeoffs(agents, crowd);
+}
+
+}  // namespace nl

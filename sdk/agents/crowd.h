@@ -1,0 +1,30 @@
+// Everybody as they were when a step's parallel phase began: what each agent's move reads of the
+// others (positions, velocities, who stands arrived, a grid to find neighbours), and who goes first
+// at a take-off that several bodies head for.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "agents/agent_state.h"
+#include "agents/neighbours.h"
+
+namespace nl {
+
+struct CrowdSnapshot {
+    std::vector<Vec3> positions;
+    std::vector<Vec3> velocities;
+    std::vector<float> radii;
+    std::vector<uint8_t> grounded;  // on the ground, with avoidance on: others steer around it
+    std::vector<uint8_t> arrived;   // standing at its destination
+    // The nearest of the bodies close to one take-off (the lower index on a tie): it walks straight
+    // onto the take-off point, the others make way, so that no two block each other there.
+    std::vector<uint8_t> first_at_takeoff;
+    NeighbourGrid grid;
+    float max_radius = 0.0f;        // the widest body on the ground
+};
+
+// Fills `crowd` (in place: its grid refers to its positions) from the agents as they are.
+void snapshot_crowd(const std::vector<AgentBody>& agents, CrowdSnapshot& crowd);
+
+}  // namespace nl

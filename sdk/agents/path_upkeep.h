@@ -1,0 +1,32 @@
+// Whether an agent's path still holds when its navmesh's links change: the links it has yet to take
+// must still exist, be enabled, lie where they lay and be within its body. An agent whose path holds
+// keeps it (new links serve from its next plan); one whose path lost a link plans again.
+#pragma once
+
+#include <memory>
+#include <unordered_map>
+#include <vector>
+
+#include "agents/agent_state.h"
+#include "path/path_graph.h"
+
+namespace nl {
+
+// The links of the link snapshots a step looks at, by handle; built once per snapshot per step.
+class LinkLookup {
+public:
+    const Link* find(const PathGraph& graph, Handle link);
+
+private:
+    std::vector<std::pair<const LinkSnapshot*, std::unordered_map<uint64_t, const Link*>>> snapshots_;
+};
+
+// What became of an agent's path in the moment `now` of its navmesh.
+struct PathUpkeep {
+    enum Verdict { Holds, LinkGone, NavMeshChanged } verdict = Holds;
+    Handle link;  // LinkGone: the first link of the path that no longer serves
+};
+
+PathUpkeep check_path(const AgentBody& agent, const PathGraph& now, LinkLookup& links);
+
+}  // namespace nl

@@ -1,0 +1,312 @@
+// Agents driven through the core: they follow their paths on the surface, take links along the very
+// trajectories the generator checked (never through the level), check a link before take-off and
+// never mid-air, avoid each other, and a step's result is the same bit for bit on 1 or 2 threads.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <cstring>
+#include <functional>
+#include <memory>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "generated_mesh.h"
+#include "level_generator.h"
+#include "world/world.h"
+
+namespace {
+
+using nl::AgentEventKind;
+using nl::AgentState;
+using nl::Handle;
+using nl::Vec3;
+
+// A polygon from x-z corners (counter-clockwise seen from above) at height y.
+void add_polygon(nl::NavMeshInput& in, const std::vector<std::pair<float, float>>& corners, float y = 0.0f) {
+    for (const auto& [x, z] : corners) {
+        in.indices.push_back(uint32_t(in.vertices.size()));
+        in.vertices.emplace_back(x, y, z);
+    }
+    in.polygon_sizes.push_back(uint8_t(corners.size()));
+}
+
+// Two 4 x 10 m platforms 1 m thick (tops at y = 0), 2 m apart along x, and a 2 m wide bridge between
+// them at the far end (z 8-10): a walker goes round by the bridge, a jumper jumps the gap.
+struct GapLevel {
+    std::unique_ptr<nl::World> world;
+    Handle navmesh;
+    nl::LinkGenerationReport report;
+
+    explicit GapLevel(int workers = 1, bool generate = true) {
+        nl::WorldSettings settings;
+        settings.worker_count = workers;
+        world = std::make_unique<nl::World>(std::move(settings));
+        nl::levelgen::GeneratedLevel level;
+        level.add_box({{0, -1, 0}, {4, 0, 10}});
+        level.add_box({{6, -1, 0}, {10, 0, 10}});
+        level.add_box({{4, -1, 8}, {6, 0, 10}});
+        world->level().add_mesh(nl::test::to_triangle_mesh(level), nl::Transform::Identity(), 0, 0);
+        const float r = 0.3f;
+        nl::NavMeshInput in;
+        add_polygon(in, {{r, r}, {r, 8}, {4 - r, 8}, {4 - r, r}});
+        add_polygon(in, {{r, 8}, {r, 10 - r}, {4, 10 - r}, {4, 8}, {4 - r, 8}});
+        add_polygon(in, {{4, 8}, {4, 10 - r}, {6, 10 - r}, {6, 8}});
+        add_polygon(in, {{6, 8}, {6, 10 - r}, {10 - r, 10 - r}, {10 - r, 8}, {6 + r, 8}});
+        add_polygon(in, {{6 + r, r}, {6 + r, 8}, {10 - r, 8}, {10 - r, r}});
+        in.agent.radius = r;
+        in.agent.height = 2.0f;
+        navmesh = world->add_navmesh(in);
+        if (generate) report = world->generate_links(navmesh, nl::LinkSettings{}, {}, [](float, const char*) { return true; });
+    }
+
+    Handle add_agent(const Vec3& at, float jump = 0.0f, uint64_t user = 0) {
+        nl::AgentDef def;
+        def.navmesh = navmesh;
+        def.position = at;
+        def.capabilities.radius = 0.3f;
+        def.capabilities.max_jump_distance = jump;
+        def.capabilities.max_jump_height = jump > 0.0f ? 1.0f : 0.0f;
+        def.user_data = user;
+        return world->agents().add(world->navmeshes(), def);
+    }
+
+    // Steps until every agent has arrived or failed, or `seconds` passed; records the events.
+    std::vector<nl::AgentEvent> run(float seconds, float dt = 1.0f / 30.0f,
+                                    const std::function<void(int)>& each_step = nullptr) {
+        std::vector<nl::AgentEvent> all;
+        for (int i = 0; i * dt < seconds; ++i) {
+            world->step(dt);
+            const auto events = world->agents().events();
+            all.insert(all.end(), events.begin(), events.end());
+            if (each_step) each_step(i);
+            bool done = true;
+            for (const nl::AgentInfo& a : world->agents().infos())
+                done = done && (a.state == AgentState::Arrived || a.state == AgentState::Failed || a.state == AgentState::Idle);
+            if (done) break;
+        }
+        return all;
+    }
+};
+
+size_t count_events(const std::vector<nl::AgentEvent>& events, Handle agent, AgentEventKind kind) {
+    size_t n = 0;
+    for (const nl::AgentEvent& e : events) n += e.agent == agent && e.kind == kind;
+    return n;
+}
+
+float distance_xz(const Vec3& a, const Vec3& b) { return std::hypot(a.x() - b.x(), a.z() - b.z()); }
+
+}  // namespace
+
+TEST_CASE("a walker goes round by the bridge while a jumper jumps the gap; both arrive on the surface") {
+    GapLevel g;
+    REQUIRE(g.report.jump_links > 0);
+    const Vec3 start(1.0f, 0.0f, 2.0f), goal(9.0f, 0.0f, 2.0f);
+    const Handle walker = g.add_agent(start, 0.0f, 1);
+    const Handle jumper = g.add_agent(start + Vec3(0.0f, 0.0f, 1.0f), 3.0f, 2);
+    g.world->agents().set_destination(g.world->navmeshes(), walker, goal);
+    g.world->agents().set_destination(g.world->navmeshes(), jumper, goal + Vec3(0.0f, 0.0f, 1.0f));
+
+    float walker_max_z = 0.0f;
+    bool on_surface = true;
+    const auto events = g.run(20.0f, 1.0f / 30.0f, [&](int) {
+        const nl::AgentInfo w = g.world->agents().info(walker);
+        walker_max_z = std::max(walker_max_z, w.position.z());
+        for (const nl::AgentInfo& a : g.world->agents().infos())
+            if (a.state == AgentState::Walking) on_surface = on_surface && std::fabs(a.position.y()) < 1e-3f;
+    });
+    const nl::AgentInfo w = g.world->agents().info(walker), j = g.world->agents().info(jumper);
+    CHECK(w.state == AgentState::Arrived);
+    CHECK(j.state == AgentState::Arrived);
+    CHECK(distance_xz(w.position, goal) < 0.1f);
+    CHECK(walker_max_z > 8.0f);  // by the bridge
+    CHECK(count_events(events, walker, AgentEventKind::LinkStarted) == 0);
+    CHECK(count_events(events, jumper, AgentEventKind::LinkStarted) == 1);
+    CHECK(count_events(events, jumper, AgentEventKind::LinkFinished) == 1);
+    CHECK(count_events(events, walker, AgentEventKind::PathReady) == 1);
+    CHECK(count_events(events, walker, AgentEventKind::Arrived) == 1);
+    CHECK(on_surface);
+}
+
+TEST_CASE("a body on a generated link never meets the level: segments through it clear at every step") {
+    GapLevel g;
+    nl::Level& level = g.world->level();
+    std::vector<Handle> jumpers;
+    for (int k = 0; k < 4; ++k) {
+        jumpers.push_back(g.add_agent(Vec3(1.0f, 0.0f, 1.0f + 1.5f * k), 3.0f));
+        g.world->agents().set_destination(g.world->navmeshes(), jumpers.back(), Vec3(9.0f, 0.0f, 1.0f + 1.5f * k));
+    }
+    std::vector<Vec3> before(jumpers.size());
+    for (size_t k = 0; k < jumpers.size(); ++k) before[k] = g.world->agents().info(jumpers[k]).position;
+    int flying_steps = 0, blocked = 0;
+    g.run(20.0f, 1.0f / 60.0f, [&](int) {
+        for (size_t k = 0; k < jumpers.size(); ++k) {
+            const nl::AgentInfo a = g.world->agents().info(jumpers[k]);
+            if (a.state == AgentState::Jumping || a.state == AgentState::Falling) {
+                ++flying_steps;
+                // The body's axis from its last position to this one, at three heights above its feet.
+                std::vector<nl::Segment> axis;
+                for (float h : {0.35f, 1.0f, 1.9f}) axis.push_back(nl::Segment{before[k] + Vec3(0, h, 0), a.position + Vec3(0, h, 0)});
+                std::vector<uint8_t> hit(axis.size());
+                level.segments_blocked(axis.data(), uint32_t(axis.size()), hit.data());
+                for (uint8_t b : hit) blocked += b;
+            }
+            before[k] = a.position;
+        }
+    });
+    CHECK(flying_steps > 20);
+    CHECK(blocked == 0);
+    for (Handle j : jumpers) CHECK(g.world->agents().info(j).state == AgentState::Arrived);
+}
+
+TEST_CASE("a link removed while an agent walks toward it: it plans again before take-off, never in the air") {
+    GapLevel g(1, false);
+    nl::Link jump;
+    jump.kind = nl::LinkKind::Jump;
+    jump.start = Vec3(3.6f, 0.0f, 2.0f);
+    jump.end = Vec3(6.4f, 0.0f, 2.0f);
+    jump.bidirectional = true;
+    nl::set_requirements_from_ends(jump);
+    const Handle link = g.world->add_link(g.navmesh, jump);
+    const Handle agent = g.add_agent(Vec3(1.0f, 0.0f, 2.0f), 3.0f);
+    g.world->agents().set_destination(g.world->navmeshes(), agent, Vec3(9.0f, 0.0f, 2.0f));
+    g.world->step(1.0f / 30.0f);
+    REQUIRE(g.world->agents().corners(agent).size() >= 2);
+    g.world->step(1.0f / 30.0f);
+    g.world->navmeshes().remove_link(link);
+    bool flew = false;
+    const auto events = g.run(20.0f, 1.0f / 30.0f, [&](int) {
+        flew = flew || g.world->agents().info(agent).state == AgentState::Jumping;
+    });
+    CHECK_FALSE(flew);
+    CHECK(count_events(events, agent, AgentEventKind::Replanned) >= 1);
+    CHECK(count_events(events, agent, AgentEventKind::LinkStarted) == 0);
+    CHECK(g.world->agents().info(agent).state == AgentState::Arrived);  // round by the bridge
+
+    // Mid-air: the link goes while the agent flies it; it lands on the arc's end all the same.
+    const Handle again = g.world->add_link(g.navmesh, jump);
+    const Handle second = g.add_agent(Vec3(1.0f, 0.0f, 2.0f), 3.0f);
+    g.world->agents().set_destination(g.world->navmeshes(), second, Vec3(9.0f, 0.0f, 2.0f));  // where the first stands
+    bool removed = false;
+    float landed_x = 0.0f;
+    const auto mid_air = g.run(20.0f, 1.0f / 60.0f, [&](int) {
+        const nl::AgentInfo a = g.world->agents().info(second);
+        if (!removed && a.state == AgentState::Jumping && a.link_progress > 0.3f) {
+            g.world->navmeshes().remove_link(again);
+            removed = true;
+        }
+        if (removed && landed_x == 0.0f && a.state != AgentState::Jumping) landed_x = a.position.x();
+    });
+    INFO("state ", int(g.world->agents().info(second).state), " at ", g.world->agents().info(second).position.x(), ", ",
+         g.world->agents().info(second).position.z(), " corners ", g.world->agents().info(second).corners_ahead);
+    CHECK(removed);
+    CHECK(landed_x == doctest::Approx(6.4f).epsilon(1e-3));
+    CHECK(count_events(mid_air, second, AgentEventKind::LinkFinished) == 1);
+    CHECK(g.world->agents().info(second).state == AgentState::Arrived);  // beside the first, as near as it lets
+    CHECK(distance_xz(g.world->agents().info(second).position, Vec3(9.0f, 0.0f, 2.0f)) < 2 * 0.3f + 0.1f);  // touching
+}
+
+TEST_CASE("results are the same bit for bit on 1 and 2 threads after 1,000 steps of a crowd") {
+    auto simulate = [](int workers) {
+        GapLevel g(workers);
+        std::mt19937 rng(7);
+        std::uniform_real_distribution<float> z(0.5f, 9.5f);
+        std::vector<Handle> agents;
+        for (int k = 0; k < 60; ++k) {
+            const bool left = k % 2 == 0;
+            agents.push_back(g.add_agent(Vec3(left ? 1.0f + (k % 5) * 0.5f : 7.0f + (k % 5) * 0.5f, 0.0f, z(rng)),
+                                         k % 3 == 0 ? 3.0f : 0.0f));
+            g.world->agents().set_destination(g.world->navmeshes(), agents.back(),
+                                              Vec3(left ? 8.5f : 1.5f, 0.0f, z(rng)));
+        }
+        for (int step = 0; step < 1000; ++step) {
+            g.world->step(1.0f / 60.0f);
+            if (step % 250 == 0) {
+                for (size_t k = 0; k < agents.size(); k += 7)
+                    g.world->agents().set_destination(g.world->navmeshes(), agents[k], Vec3(k % 2 ? 2.0f : 8.0f, 0.0f, z(rng)));
+            }
+        }
+        std::vector<float> state;
+        for (const nl::AgentInfo& a : g.world->agents().infos()) {
+            state.insert(state.end(), {a.position.x(), a.position.y(), a.position.z(), a.velocity.x(), a.velocity.z(),
+                                       float(a.state)});
+        }
+        return state;
+    };
+    const std::vector<float> one = simulate(1), two = simulate(2);
+    REQUIRE(one.size() == two.size());
+    CHECK(std::memcmp(one.data(), two.data(), one.size() * sizeof(float)) == 0);
+}
+
+TEST_CASE("two agents walking head-on through a corridor pass each other without overlapping") {
+    GapLevel g(1, false);
+    const Handle a = g.add_agent(Vec3(1.0f, 0.0f, 9.0f)), b = g.add_agent(Vec3(9.0f, 0.0f, 9.0f));
+    g.world->agents().set_destination(g.world->navmeshes(), a, Vec3(9.0f, 0.0f, 9.0f));
+    g.world->agents().set_destination(g.world->navmeshes(), b, Vec3(1.0f, 0.0f, 9.0f));
+    float closest = 1e9f;
+    g.run(20.0f, 1.0f / 30.0f, [&](int) {
+        closest = std::min(closest, distance_xz(g.world->agents().info(a).position, g.world->agents().info(b).position));
+    });
+    CHECK(g.world->agents().info(a).state == AgentState::Arrived);
+    CHECK(g.world->agents().info(b).state == AgentState::Arrived);
+    CHECK(closest > 0.5f);  // two 0.3 m bodies: 0.6 m apart when touching
+}
+
+TEST_CASE("two agents at one link's take-off: one flies to the landing at a time") {
+    GapLevel g(1, false);
+    nl::Link jump;
+    jump.kind = nl::LinkKind::Jump;
+    jump.start = Vec3(3.6f, 0.0f, 2.0f);
+    jump.end = Vec3(6.4f, 0.0f, 2.0f);
+    nl::set_requirements_from_ends(jump);
+    g.world->add_link(g.navmesh, jump);
+    const Handle a = g.add_agent(Vec3(2.5f, 0.0f, 1.5f), 3.0f), b = g.add_agent(Vec3(2.5f, 0.0f, 2.5f), 3.0f);
+    g.world->agents().set_destination(g.world->navmeshes(), a, Vec3(9.0f, 0.0f, 1.0f));
+    g.world->agents().set_destination(g.world->navmeshes(), b, Vec3(9.0f, 0.0f, 3.0f));
+    int both_in_air = 0, waited = 0;
+    g.run(30.0f, 1.0f / 60.0f, [&](int) {
+        const nl::AgentInfo x = g.world->agents().info(a), y = g.world->agents().info(b);
+        both_in_air += x.state == AgentState::Jumping && y.state == AgentState::Jumping;
+        waited += x.state == AgentState::Waiting || y.state == AgentState::Waiting;
+    });
+    CHECK(both_in_air == 0);
+    CHECK(waited > 0);
+    CHECK(g.world->agents().info(a).state == AgentState::Arrived);
+    CHECK(g.world->agents().info(b).state == AgentState::Arrived);
+}
+
+TEST_CASE("bad input: a clear error, or a failed agent with its event; never a crash") {
+    GapLevel g(1, false);
+    const Handle agent = g.add_agent(Vec3(1.0f, 0.0f, 2.0f));
+    nl::Agents& agents = g.world->agents();
+    CHECK_THROWS_AS(g.world->step(NAN), nl::Error);
+    CHECK_THROWS_AS(g.world->step(-1.0f), nl::Error);
+    CHECK_THROWS_AS(g.world->step(INFINITY), nl::Error);
+    CHECK_THROWS_AS(agents.set_speed(agent, -1.0f, 1.0f), nl::Error);
+    CHECK_THROWS_AS(agents.set_destination(g.world->navmeshes(), agent, Vec3(50.0f, 0.0f, 50.0f)), nl::Error);
+    CHECK_FALSE(agents.info(agent).has_destination);  // an off-navmesh destination is not kept
+    CHECK_THROWS_AS(agents.info(Handle{99, 1}), nl::Error);
+    nl::AgentDef off;
+    off.navmesh = g.navmesh;
+    off.position = Vec3(5.0f, 0.0f, 2.0f);  // over the gap
+    try {
+        agents.add(g.world->navmeshes(), off);
+        FAIL("an agent off the navmesh was added");
+    } catch (const nl::Error& e) {
+        CHECK(e.code() == nl::ErrorCode::NotFound);
+        CHECK(std::string(e.what()).find("nearest navmesh point is") != std::string::npos);
+    }
+    agents.set_destination(g.world->navmeshes(), agent, Vec3(3.0f, 0.0f, 5.0f));
+    g.world->step(0.1f);
+    g.world->navmeshes().remove(g.navmesh);
+    g.world->step(0.1f);
+    CHECK(agents.info(agent).state == AgentState::Failed);
+    CHECK(agents.info(agent).reason == nl::AgentReason::NavMeshRemoved);
+    const auto events = agents.events();
+    REQUIRE(events.size() == 1);
+    CHECK(events[0].kind == AgentEventKind::Failed);
+    agents.remove(agent);
+    CHECK_FALSE(agents.contains(agent));
+    CHECK_THROWS_AS(agents.remove(agent), nl::Error);
+}
