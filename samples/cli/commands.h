@@ -7,6 +7,7 @@ namespace nl::cli {
 int run_generate(int argc, char** argv);
 int run_path(int argc, char** argv);
 int run_demo(int argc, char** argv);
+int run_simulate(int argc, char** argv);
 int run_level(int argc, char** argv);
 
 }  // namespace nl::cli

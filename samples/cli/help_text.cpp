@@ -10,6 +10,8 @@ const char* const kMainHelp =
     "commands:\n"
     "  demo    generate the default level, generate its links, plan one route for three agents\n"
     "          (a walker, a short jumper, a long jumper who may drop); writes demo.png, demo.links.json\n"
+    "  simulate    the same three bodies as agents that walk, jump and drop to the goal; prints when\n"
+    "          and where each arrived; writes simulate.png with their tracks\n"
     "  generate    build a level's navmesh and generate its jump and drop links into a JSON file\n"
     "  path    plan a path over a level's navmesh and links, and print its segments\n"
     "  level   write the generated default level as an OBJ file\n"
@@ -57,6 +59,18 @@ const char* const kDemoHelp =
     "the same start and goal for three agents: a walker (no jumps, no drops), a short jumper (gaps of\n"
     "2 m, 1 m up, no drops) and a long jumper who may drop (gaps of 3.5 m, 1.5 m up, drops of 4 m).\n"
     "Prints a table of their routes and writes demo.png and demo.links.json (in DIR, default '.').\n";
+
+const char* const kSimulateHelp =
+    "usage: navlink simulate [--seed N] [--out-dir DIR] [--hz N] [--seconds N] [--oblique]\n"
+    "\n"
+    "Generates the default level and its links as navlink demo does, then adds the demo's three bodies as\n"
+    "agents at the start (nl_agent_add), sends them to the goal and steps the world N times a second\n"
+    "(--hz, default 60) until every agent has arrived or failed, or --seconds (default 120) have passed.\n"
+    "Prints each take-off (jump or drop, from where to where, how long in the air) and arrival as it\n"
+    "happens, then a table: outcome, time, position, distance to the goal, metres travelled, links taken.\n"
+    "Writes simulate.png (in DIR, default '.'): the level and the track each agent really took.\n"
+    "\n"
+    "Exit status: 0 when every agent arrived, 1 when one did not, 2 on an error.\n";
 
 const char* const kLevelHelp =
     "usage: navlink level --out LEVEL.obj [--seed N]\n"

@@ -7,6 +7,7 @@ extern const char* const kMainHelp;
 extern const char* const kGenerateHelp;
 extern const char* const kPathHelp;
 extern const char* const kDemoHelp;
+extern const char* const kSimulateHelp;
 extern const char* const kLevelHelp;
 
 }  // namespace nl::cli

@@ -21,7 +21,7 @@ std::string one_line(std::string text) {
 
 int main(int argc, char** argv) {
     if (argc < 2) {
-        std::fprintf(stderr, "navlink: missing command: demo, generate, path or level (see navlink --help)\n");
+        std::fprintf(stderr, "navlink: missing command: demo, simulate, generate, path or level (see navlink --help)\n");
         return 2;
     }
     if (!std::strcmp(argv[1], "--help") || !std::strcmp(argv[1], "-h") || !std::strcmp(argv[1], "help")) {
@@ -33,6 +33,7 @@ int main(int argc, char** argv) {
         if (command == "generate") return nl::cli::run_generate(argc, argv);
         if (command == "path") return nl::cli::run_path(argc, argv);
         if (command == "demo") return nl::cli::run_demo(argc, argv);
+        if (command == "simulate") return nl::cli::run_simulate(argc, argv);
         if (command == "level") return nl::cli::run_level(argc, argv);
         throw nl::samples::SampleError("unknown command '" + command + "' (see navlink --help)");
     } catch (const nl::samples::SampleError& e) {

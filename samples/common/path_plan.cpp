@@ -86,15 +86,16 @@ const char* segment_name(nl_segment_kind kind) {
 
 LinkCounts count_links(const PlannedPath& path) { return count_links(path.points); }
 
+void count_link(LinkCounts& counts, nl_segment_kind kind) {
+    if (kind == NL_LINK_JUMP) ++counts.jumps;
+    else if (kind == NL_LINK_DROP) ++counts.drops;
+    else if (kind == NL_LINK_MANUAL) ++counts.manual;
+    else if (kind != NL_SEGMENT_WALK) ++counts.plugin;
+}
+
 LinkCounts count_links(const std::vector<nl_path_point>& points) {
     LinkCounts counts;
-    for (size_t i = 0; i + 1 < points.size(); ++i) {
-        const nl_segment_kind kind = points[i].segment;
-        if (kind == NL_LINK_JUMP) ++counts.jumps;
-        else if (kind == NL_LINK_DROP) ++counts.drops;
-        else if (kind == NL_LINK_MANUAL) ++counts.manual;
-        else if (kind != NL_SEGMENT_WALK) ++counts.plugin;
-    }
+    for (size_t i = 0; i + 1 < points.size(); ++i) count_link(counts, points[i].segment);
     return counts;
 }
 

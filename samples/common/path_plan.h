@@ -47,6 +47,8 @@ struct LinkCounts {
 };
 LinkCounts count_links(const PlannedPath& path);
 LinkCounts count_links(const std::vector<nl_path_point>& points);
+// Adds one segment of `kind` (walking adds nothing).
+void count_link(LinkCounts& counts, nl_segment_kind kind);
 
 // "2 jumps, 1 drop, 1 manual link" (or "no links").
 std::string describe_links(const LinkCounts& counts);

@@ -98,6 +98,8 @@ TEST_CASE("bad arguments, files and JSON give one line and exit status 2") {
         {with(path, {"--from", "1,0,1", "--to", "2,0,2", "--json=yes"}), "--json takes no value"},
         {{"demo", "--seed", "-3"}, "--seed must be a whole number"},
         {{"demo", "now"}, "unexpected argument 'now'"},
+        {{"simulate", "--hz", "0"}, "--hz must be a whole number"},
+        {{"simulate", "--seconds", "1e9"}, "--seconds must be a whole number"},
         {{"level"}, "--out is required"},
         {{"level", "--out", "/nonexistent/level.obj"}, "cannot write"},
     };

@@ -278,11 +278,56 @@ TEST_CASE("navlink demo prints a route for each of its three agents and writes i
     CHECK(navlink({"demo", "--seed", "2", "--out-dir", dir, "--oblique"}, dir).exit_code == 0);  // another level
 }
 
+// The arrival line of `agent` in navlink simulate's table: outcome, seconds, metres to the goal.
+struct SimulatedArrival {
+    std::string outcome;
+    double seconds = 0, to_goal = 0;
+    std::string links;
+};
+
+SimulatedArrival simulated_arrival(const std::string& out, const std::string& agent) {
+    std::smatch m;
+    REQUIRE_MESSAGE(std::regex_search(out, m,
+                                      std::regex("\n" + agent + R"( +\| (arrived|on its way|failed: [a-z ]+?) +([0-9.]+) s +\([^)]*\) +([0-9.]+) m +[0-9.]+ m  (.*), \d+ replans)")),
+                    out);
+    return {m[1], std::stod(m[2]), std::stod(m[3]), m[4]};
+}
+
+TEST_CASE("navlink simulate: the three bodies arrive as agents, each by the links it can take, and the tracks are drawn") {
+    const std::string dir = nl::test::scratch_dir("simulate");
+    const ProgramRun run = navlink({"simulate"}, dir);
+    REQUIRE_MESSAGE(run.exit_code == 0, run.err);
+    const SimulatedArrival walker = simulated_arrival(run.out, "walker");
+    const SimulatedArrival short_jumper = simulated_arrival(run.out, "short jumper");
+    const SimulatedArrival long_jumper = simulated_arrival(run.out, "long jumper");
+    for (const SimulatedArrival* a : {&walker, &short_jumper, &long_jumper}) {
+        CHECK(a->outcome == "arrived");
+        CHECK(a->to_goal < 2.0);  // the goal's spot is taken by the first to arrive: the others stop beside it
+    }
+    CHECK(walker.links == "no links");
+    CHECK(short_jumper.links == "2 jumps");
+    CHECK(long_jumper.links == "2 jumps, 1 drop");
+    CHECK(long_jumper.seconds < short_jumper.seconds);  // the shorter route, as navlink demo plans it
+    CHECK(short_jumper.seconds < walker.seconds);
+    // Each take-off is printed as it happens, with the trajectory the agent flies.
+    CHECK(std::regex_search(run.out, std::regex(R"(\n +[0-9.]+ s  long jumper +drops +from \([^)]*\) to \([^)]*\) in [0-9.]+ s\n)")));
+    CHECK(nl::test::is_png(dir + "/simulate.png", 1600));
+
+    // Another step rate moves the agents along the same routes.
+    const ProgramRun coarse = navlink({"simulate", "--hz", "30", "--out-dir", dir}, dir);
+    REQUIRE_MESSAGE(coarse.exit_code == 0, coarse.err);
+    CHECK(simulated_arrival(coarse.out, "long jumper").links == "2 jumps, 1 drop");
+    // Too little time: nobody arrives, exit status 1.
+    const ProgramRun cut = navlink({"simulate", "--seconds", "2", "--out-dir", dir}, dir);
+    CHECK(cut.exit_code == 1);
+    CHECK(simulated_arrival(cut.out, "walker").outcome == "on its way");
+}
+
 TEST_CASE("navlink --help and COMMAND --help describe the tool and exit 0") {
     const std::string dir = nl::test::scratch_dir("help");
     const ProgramRun main_help = navlink({"--help"}, dir);
     CHECK(main_help.exit_code == 0);
-    for (const char* command : {"demo", "generate", "path", "level"}) {
+    for (const char* command : {"demo", "simulate", "generate", "path", "level"}) {
         CHECK(main_help.out.find(std::string("  ") + command) != std::string::npos);
         const ProgramRun help = navlink({command, "--help"}, dir);
         CHECK(help.exit_code == 0);
