@@ -7,6 +7,41 @@
 #include "scene_renderer.h"
 
 namespace nl::picture {
+namespace {
+
+constexpr float kFrameTime = 1.0f / 60.0f;
+constexpr float kPlayLimit = 120.0f;  // seconds of the agents' walk to the destination at most
+
+// Steps the agents in frames of 1/60 s until none is on its way, shooting a frame when the first
+// jump and the first drop are half flown and when every agent has stopped. False if one did not
+// arrive on a level whose destination they all reach.
+template <typename Shoot>
+bool play_agents(ViewerSession& session, Shoot& shoot) {
+    bool shot_jump = false, shot_drop = false;
+    float time = 0.0f;
+    for (; session.agents_moving() && time < kPlayLimit; time += kFrameTime) {
+        session.advance(kFrameTime);
+        for (size_t i = 0; i < session.agents().size(); ++i) {
+            const nl_agent_info& info = session.crowd().info(i);
+            const bool half = info.link_progress >= 0.5f;
+            if (!shot_jump && info.state == NL_AGENT_JUMPING && half) {
+                shot_jump = true;
+                shoot(session.agents()[i].name + " mid-jump");
+            } else if (!shot_drop && info.state == NL_AGENT_FALLING && half) {
+                shot_drop = true;
+                shoot(session.agents()[i].name + " mid-drop");
+            }
+        }
+    }
+    shoot("the agents after " + std::to_string(static_cast<int>(time)) + " s");
+    bool all_arrived = true;
+    for (size_t i = 0; i < session.agents().size(); ++i)
+        all_arrived = all_arrived && session.crowd().info(i).state == NL_AGENT_ARRIVED;
+    std::printf("agents: %s\n", all_arrived ? "every agent arrived" : "not every agent arrived");
+    return all_arrived || !session.every_path_complete();
+}
+
+}  // namespace
 
 int run_headless_script(ViewerSession& session, ViewSettings view, const std::string& dir) {
     int status = 0;
@@ -50,6 +85,7 @@ int run_headless_script(ViewerSession& session, ViewSettings view, const std::st
     session.toggle_all_agents();  // key A
     shoot("oblique view, all agents");
     view.oblique = false;
+    status = play_agents(session, shoot) ? status : 1;
     // Clicks, picked through the camera as the mouse's are: on the destination where it is drawn
     // (the pick must find the same place again), in the middle of the map (a new destination), and
     // a right click where the start is drawn (the start stays put).

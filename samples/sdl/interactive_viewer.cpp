@@ -2,6 +2,7 @@
 
 #include <SDL2/SDL.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <memory>
 
@@ -11,9 +12,9 @@
 namespace nl::picture {
 
 const char* const kViewerKeys =
-    "  left click: destination    right click or shift-click: start\n"
+    "  left click: destination (the agents walk there)    right click or shift-click: start (they stand there)\n"
     "  1 2 3: walker / short jumper / long jumper    A: all agents at once\n"
-    "  L level  N navmesh  B boundary edges  K links  P paths  G legend  O oblique/top-down\n"
+    "  L level  N navmesh  B boundary edges  K links  P paths  M agents  G legend  O oblique/top-down\n"
     "  S: save viewer.png    Q or Escape: quit\n";
 
 namespace {
@@ -33,6 +34,7 @@ bool handle_key(SDL_Keycode key, ViewerSession& session, ViewSettings& view) {
     case SDLK_b: l.boundary = !l.boundary; break;
     case SDLK_k: l.links = !l.links; break;
     case SDLK_p: l.paths = !l.paths; break;
+    case SDLK_m: l.agents = !l.agents; break;
     case SDLK_g: l.legend = !l.legend; break;
     case SDLK_o: view.oblique = !view.oblique; break;
     case SDLK_s:
@@ -67,10 +69,13 @@ int run_interactive_viewer(ViewerSession& session, ViewSettings view) {
     std::printf("%s", kViewerKeys);
     bool running = true, dirty = true;
     std::string last_status;
+    Uint32 last_ticks = SDL_GetTicks();
     while (running) {
         SDL_Event event;
-        // Wait briefly for input so an idle viewer does not spin; paths are polled in between.
-        if (SDL_WaitEventTimeout(&event, session.waiting() ? 5 : 50)) {
+        // Wait briefly for input so an idle viewer does not spin; paths are polled in between, and
+        // moving agents are drawn every frame (the renderer waits for the display's refresh).
+        const bool busy = session.waiting() || session.agents_moving();
+        if (SDL_WaitEventTimeout(&event, busy ? 1 : 50)) {
             do {
                 if (event.type == SDL_QUIT) running = false;
                 if (event.type == SDL_WINDOWEVENT) dirty = true;
@@ -90,6 +95,11 @@ int run_interactive_viewer(ViewerSession& session, ViewSettings view) {
             } while (SDL_PollEvent(&event));
         }
         dirty = session.update() || dirty;
+        // The agents move in real time; a stall (a dragged window) is not a leap across the level.
+        const Uint32 now = SDL_GetTicks();
+        const float dt = std::min(0.1f, static_cast<float>(now - last_ticks) / 1000.0f);
+        last_ticks = now;
+        dirty = session.advance(dt) || dirty;
         if (!dirty) continue;
         SDL_GetRendererOutputSize(renderer.get(), &view.width, &view.height);
         draw_scene(renderer.get(), session.scene(), view);

@@ -105,6 +105,12 @@ void draw_legend(Canvas& canvas, const Scene& scene, const ViewSettings& view, c
         for (const PathLayer& path : scene.paths) w.swatch_line(path.color, path.label);
         w.note("dots on a path: where it takes a link");
     }
+    if (view.layers.agents && !scene.agents.empty()) {
+        w.heading("AGENTS");
+        for (const SceneAgent& a : scene.agents)
+            w.swatch_dot(a.color, a.label + (a.in_air ? " (in the air)" : ""));
+        w.note("a line behind each: its track; white: the flight");
+    }
     if (!scene.points.empty()) {
         w.heading("POINTS");
         for (const ScenePoint& p : scene.points)

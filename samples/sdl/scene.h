@@ -4,6 +4,7 @@
 
 #include <navlink/navlink.h>
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -31,11 +32,23 @@ struct ScenePoint {
     Rgba color;
 };
 
+// An agent where it stands or flies now, the track it left, and in the air the curve it flies.
+struct SceneAgent {
+    std::string label;
+    Rgba color;
+    float position[3];
+    float radius;
+    bool in_air = false;
+    std::vector<std::array<float, 3>> track;
+    std::vector<std::array<float, 3>> trajectory;  // empty on the ground
+};
+
 struct Scene {
     const samples::Level* level = nullptr;              // required
     const samples::NavmeshContents* navmesh = nullptr;  // optional
     std::vector<PathLayer> paths;
     std::vector<ScenePoint> points;  // start, goal, ...
+    std::vector<SceneAgent> agents;
     std::string title;
 };
 
@@ -46,6 +59,7 @@ struct Layers {
     bool links = true;
     bool paths = true;
     bool legend = true;
+    bool agents = true;
 };
 
 struct ViewSettings {

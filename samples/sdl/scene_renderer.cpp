@@ -209,6 +209,28 @@ void draw_points(Canvas& canvas, const Camera& camera, const Scene& scene) {
     }
 }
 
+SDL_FPoint projected_point(const Camera& camera, const std::array<float, 3>& p) { return camera.project(p.data()); }
+
+void draw_agents(Canvas& canvas, const Camera& camera, const Scene& scene) {
+    for (const SceneAgent& agent : scene.agents) {
+        std::vector<SDL_FPoint> track;
+        for (const auto& p : agent.track) track.push_back(projected_point(camera, p));
+        Rgba faint = agent.color;
+        faint.a = 150;
+        if (track.size() > 1) canvas.polyline(track, 2.0f, faint);
+        if (agent.trajectory.size() > 1) {  // the rest of the flight, as the generator checked it
+            std::vector<SDL_FPoint> curve;
+            for (const auto& p : agent.trajectory) curve.push_back(projected_point(camera, p));
+            canvas.polyline(curve, 4.0f, palette::kShadow);
+            canvas.polyline(curve, 2.0f, palette::kText);
+        }
+        const SDL_FPoint at = camera.project(agent.position);
+        const float body = std::max(4.0f, agent.radius * camera.pixels_per_metre());
+        canvas.dot(at, body + 3.0f, agent.in_air ? palette::kText : palette::kShadow);
+        canvas.dot(at, body, agent.color);
+    }
+}
+
 }  // namespace
 
 int fitted_height(const Scene& scene, const ViewSettings& view) {
@@ -245,6 +267,7 @@ void draw_scene(SDL_Renderer* renderer, const Scene& scene, const ViewSettings& 
         draw_links(canvas, camera, *scene.navmesh, view.layers.paths && !scene.paths.empty());
     if (view.layers.paths) draw_paths(canvas, camera, scene);
     draw_points(canvas, camera, scene);
+    if (view.layers.agents) draw_agents(canvas, camera, scene);
 
     canvas.text({kMargin, 10.0f}, scene.title, 2.0f, palette::kText);
     if (view.layers.legend) draw_legend(canvas, scene, view, camera);

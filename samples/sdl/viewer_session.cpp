@@ -40,6 +40,7 @@ ViewerSession::ViewerSession(const ViewerOptions& options) : agents_(samples::de
         const float* c = contents_.polygons[0].centre;
         start_ = {c[0], c[1], c[2]};
     }
+    crowd_.emplace(world_.get(), navmesh_, agents_, start_);
     // Send the agents to the level's goal marker, or to the polygon farthest from the start.
     if (const levelgen::Marker* m = generated.marker("goal")) {
         set_destination({m->position[0], m->position[1], m->position[2]});
@@ -79,13 +80,21 @@ std::optional<ViewerSession::Point> ViewerSession::pick(SDL_FPoint pixel, const 
     return Point{hit.point[0], hit.point[1], hit.point[2]};
 }
 
+template <typename Visit>
+void ViewerSession::for_selected(Visit visit) {
+    for (size_t i = 0; i < agents_.size(); ++i)
+        if (all_agents_ || i == current_) visit(i);
+}
+
 void ViewerSession::set_start(const Point& start) {
     start_ = start;
+    for_selected([&](size_t i) { crowd_->teleport(i, start); });
     request_paths();
 }
 
 void ViewerSession::set_destination(const Point& destination) {
     destination_ = destination;
+    for_selected([&](size_t i) { crowd_->send(i, destination); });
     request_paths();
 }
 
@@ -109,14 +118,13 @@ void ViewerSession::request_paths() {
     cancel_pending();
     for (auto& path : paths_) path.reset();
     if (!destination_) return;
-    for (size_t i = 0; i < agents_.size(); ++i) {
-        if (!all_agents_ && i != current_) continue;
+    for_selected([&](size_t i) {
         const nl_path_request_def def =
             samples::path_request(navmesh_, start_.data(), destination_->data(), agents_[i].capabilities);
         nl_path_ticket ticket{};
         samples::check(nl_path_request(world_.get(), &def, &ticket), "requesting a path");
         pending_.push_back({i, ticket});
-    }
+    });
 }
 
 bool ViewerSession::update() {
@@ -158,11 +166,18 @@ Scene ViewerSession::scene() const {
                       p.result.outcome == NL_PATH_COMPLETE ? "" : samples::outcome_name(p.result.outcome));
         scene.paths.push_back({label, palette::agent(i), p.points});
     }
+    scene.agents = crowd_->scene_agents();
     scene.points.push_back({"start", {start_[0], start_[1], start_[2]}, palette::kText});
     if (destination_)
         scene.points.push_back(
             {"destination", {(*destination_)[0], (*destination_)[1], (*destination_)[2]}, palette::kText});
     return scene;
+}
+
+bool ViewerSession::every_path_complete() const {
+    for (size_t i = 0; i < agents_.size(); ++i)
+        if ((all_agents_ || i == current_) && (!paths_[i] || paths_[i]->result.outcome != NL_PATH_COMPLETE)) return false;
+    return true;
 }
 
 std::optional<ViewerSession::Point> ViewerSession::destination() const { return destination_; }
@@ -177,6 +192,8 @@ std::string ViewerSession::status() const {
         out += text;
     }
     if (waiting()) out += "; planning...";
+    const std::string moving = crowd_->status();
+    if (!moving.empty()) out += "; " + moving;
     return out;
 }
 

@@ -1,6 +1,7 @@
 // What the viewer shows and edits: a level with its navmesh and links, the demo's three agents, a
 // start and a destination, and the paths planned between them through the queued path API
-// (nl_path_request, polled every frame), so the window never waits for the planner.
+// (nl_path_request, polled every frame), so the window never waits for the planner. The same bodies
+// are agents of the world too: a destination sends them, a start puts them there.
 #pragma once
 
 #include <SDL2/SDL.h>
@@ -16,6 +17,7 @@
 #include "navmesh_contents.h"
 #include "path_plan.h"
 #include "scene.h"
+#include "viewer_agents.h"
 #include "world.h"
 
 namespace nl::picture {
@@ -44,6 +46,12 @@ public:
 
     // Takes the paths that finished since the last call; true if any did (draw again).
     bool update();
+    // Steps the agents by `dt` seconds (real time) when one is on its way; true if one moved.
+    bool advance(float dt) { return crowd_->step(dt); }
+    bool agents_moving() const { return crowd_->moving(); }
+    // Whether every agent shown has a complete planned path to the destination.
+    bool every_path_complete() const;
+    const ViewerAgents& crowd() const { return *crowd_; }
     bool waiting() const { return !pending_.empty(); }
     // Runs queued requests on this thread until none is left (headless mode).
     void wait_for_paths();
@@ -58,6 +66,8 @@ public:
 
 private:
     void request_paths();
+    template <typename Visit>
+    void for_selected(Visit visit);
     void cancel_pending();
 
     samples::World world_;
@@ -75,6 +85,7 @@ private:
     };
     std::vector<Pending> pending_;
     std::vector<std::optional<samples::PlannedPath>> paths_;  // per agent, for the current destination
+    std::optional<ViewerAgents> crowd_;  // the same bodies as agents, sent to each destination
 };
 
 }  // namespace nl::picture

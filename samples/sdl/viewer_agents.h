@@ -1,0 +1,50 @@
+// The demo's three bodies as agents of the viewer's world (nl_agent_*): sent where the user clicks,
+// stepped in real time, drawn where they stand or fly with the track behind them.
+#pragma once
+
+#include <navlink/navlink.h>
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include "agent_profile.h"
+#include "scene.h"
+
+namespace nl::picture {
+
+class ViewerAgents {
+public:
+    using Point = std::array<float, 3>;
+
+    // Adds one agent per profile at `start` of `navmesh`. Throws SampleError.
+    ViewerAgents(nl_world* world, nl_navmesh_id navmesh, const std::vector<samples::AgentProfile>& profiles,
+                 const Point& start);
+
+    // Sends agent `index` to `destination`; false (and a line on stdout) when it is off the navmesh.
+    bool send(size_t index, const Point& destination);
+    // Puts agent `index` at `position` and forgets its track; false (and a line) off the navmesh.
+    bool teleport(size_t index, const Point& position);
+    // Advances the world by `dt` seconds when an agent is on its way; true if one moved. Prints each
+    // take-off, arrival and failure.
+    bool step(float dt);
+    bool moving() const;
+    const nl_agent_info& info(size_t index) const { return infos_.at(index); }
+
+    // Where each agent is, its track, and in the air the trajectory it flies.
+    std::vector<SceneAgent> scene_agents() const;
+    // "long jumper jumping 40%, walker walking" (the agents not standing still).
+    std::string status() const;
+
+private:
+    void read_back();
+
+    nl_world* world_;
+    std::vector<samples::AgentProfile> profiles_;
+    std::vector<nl_agent_id> ids_;
+    std::vector<nl_agent_info> infos_;
+    std::vector<std::vector<Point>> tracks_;
+    float time_ = 0.0f;
+};
+
+}  // namespace nl::picture
