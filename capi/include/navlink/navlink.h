@@ -1173,7 +1173,7 @@ typedef struct nl_agent_def {
                                              speed instead of gravity (the arc stays the one checked). */
     float position[3];                  /**< Where it starts: on the navmesh (within its radius, half a metre
                                              at least, across and 2 m up or down), else NOT_FOUND. */
-    uint8_t avoidance;                  /**< 1 (default): steers around other agents and walls. */
+    uint8_t avoidance;                  /**< 1 (default): steers around other agents (docs/agents.md). */
     uint8_t reserved[3];
     uint64_t user_data;                 /**< The host's, handed back in infos and events. */
 } nl_agent_def;

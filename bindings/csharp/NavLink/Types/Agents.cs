@@ -21,7 +21,7 @@ namespace NavLink
         public float TakeoffSpeed;
         /// <summary>Where it starts: on the navmesh, else NotFound.</summary>
         public Vec3 Position;
-        /// <summary>1: steers around other agents and walls.</summary>
+        /// <summary>1: steers around other agents.</summary>
         public byte Avoidance;
         public fixed byte Reserved[3];
         /// <summary>The host's, handed back in AgentInfo and AgentEvent.</summary>
