@@ -152,9 +152,14 @@ void step_crowd(Soak& s, Worker& me, const Options& o, Tally& tally, std::atomic
             }
         }
         me.doing = "nl_world_get_agents";
-        expect(nl_world_get_agents(s.world, nullptr, 0, &count), "nl_world_get_agents (count)");
-        infos.assign(count, nl_agent_info_init());
-        if (count && expect(nl_world_get_agents(s.world, infos.data(), count, &count), "nl_world_get_agents")) {
+        // The churning thread adds agents between the count and the read: read until it fits.
+        nl_status status = NL_STATUS_FAILURE | NL_STATUS_BUFFER_TOO_SMALL;
+        while (status == (NL_STATUS_FAILURE | NL_STATUS_BUFFER_TOO_SMALL)) {
+            expect(nl_world_get_agents(s.world, nullptr, 0, &count), "nl_world_get_agents (count)");
+            infos.assign(count + 8, nl_agent_info_init());
+            status = nl_world_get_agents(s.world, infos.data(), count + 8, &count);
+        }
+        if (count && expect(status, "nl_world_get_agents")) {
             tally.agent_steps += count;
             for (uint32_t k = 0; k < count; ++k) {
                 const nl_agent_info& info = infos[k];
@@ -258,7 +263,7 @@ void churn_agents(Soak& s, Worker& me) {
             uint32_t count = 0;
             expect(nl_world_get_agents(s.world, nullptr, 0, &count), "nl_world_get_agents (count)");
             infos.assign(count, nl_agent_info_init());
-            // BUFFER_TOO_SMALL cannot happen: only this thread adds agents.
+            // Only this thread adds agents: the count stays (removals by no one else).
             if (!count || !expect(nl_world_get_agents(s.world, infos.data(), count, &count), "nl_world_get_agents"))
                 continue;
             const nl_agent_id agent = infos[rng() % count].id;
