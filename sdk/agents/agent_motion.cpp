@@ -14,6 +14,10 @@ namespace {
 
 constexpr float kCornerReach = 0.15f;   // a corner on the way counts as reached this near (x-z)
 constexpr float kStopReach = 0.05f;     // the destination and a take-off are reached this near
+// A link's ends lie on the level's floor, the walking height on the navmesh's surface, and the two
+// can differ by a Recast cell or two: over this last (and first) stretch the feet ease from one to
+// the other, so a body never pops up or down at a take-off or a landing.
+constexpr float kHeightEase = 1.0f;
 constexpr float kContact = 0.1f;        // bodies this near each other's surface touch
 constexpr float kOffPathSlack = 1.0f;   // how far past its radius an agent may be pushed off its path
 constexpr size_t kMaxNeighbours = 6;    // as DetourCrowd: the nearest count
@@ -111,9 +115,25 @@ void decelerate(AgentBody& a, float dt) {
 
 }  // namespace
 
+// The feet's height over (x, z) of the surface point `on_surface`: the surface's, eased from the
+// landing's floor over the first kHeightEase walked, and toward the take-off's floor over the last.
+float eased_height(const AgentBody& a, const Vec3& on_surface, const PathPoint& target, float distance) {
+    float y = on_surface.y();
+    if (a.walked_since_landing < kHeightEase) y += a.landing_offset * (1.0f - a.walked_since_landing / kHeightEase);
+    if (target.segment != kSegmentWalk && distance < kHeightEase + kStopReach) {
+        const float toward_floor = std::min(1.0f, 1.0f - (distance - kStopReach) / kHeightEase);
+        y += toward_floor * (target.position.y() - y);
+    }
+    return y;
+}
+
 void move_agent(AgentBody& a, uint32_t self, float dt, const NavMesh& navmesh, const CrowdSnapshot& crowd) {
     if (a.motion) {
         fly(a, dt);
+        if (!a.motion) {  // landed on the floor: how far that is from the surface it walks on now
+            a.landing_offset = a.position.y() - navmesh.surface_height(a.polygon, a.position.x(), a.position.z());
+            a.walked_since_landing = 0.0f;
+        }
         return;
     }
     if (a.state != AgentState::Walking || a.at_takeoff || a.path.empty()) {
@@ -232,6 +252,8 @@ void move_agent(AgentBody& a, uint32_t self, float dt, const NavMesh& navmesh, c
     const SurfaceMove moved = move_along_surface(navmesh, a.polygon, before, before + a.velocity * dt + push);
     a.position = moved.position;
     a.polygon = moved.polygon;
+    a.walked_since_landing += distance_xz(before, moved.position);
+    a.position.y() = eased_height(a, moved.position, target, distance_xz(moved.position, target.position));
     if (moved.blocked && dt > 0.0f) {
         // Slid along a wall: keep only the velocity the wall left.
         const Vec3 went = moved.position - before - push;

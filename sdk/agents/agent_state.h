@@ -43,6 +43,15 @@ struct AgentBody {
     bool at_takeoff = false;
     bool off_path = false;  // pushed too far off its path in the last move
 
+    // How far the feet were off the navmesh surface on landing (a link ends on the level's floor,
+    // which a Recast detail surface can stand a cell or two above), eased out over the first metre.
+    float landing_offset = 0.0f;
+    float walked_since_landing = 0.0f;
+    void put_on_surface(const Vec3& point) {
+        position = point;
+        landing_offset = 0.0f;
+    }
+
     std::vector<AgentEvent> step_events;  // this step's, gathered in agent order at its end
 
     void emit(AgentEventKind kind, AgentReason why = AgentReason::None, Handle on_link = Handle{}) {

@@ -157,7 +157,7 @@ void Agents::teleport(const NavMeshRegistry& navmeshes, Handle agent, const Vec3
     std::unique_lock lock(mutex_);
     AgentBody& a = find(agent);
     if (a.motion) fail(ErrorCode::InvalidArgument, "the agent is taking a link (teleport it after it lands)");
-    a.position = on_navmesh;
+    a.put_on_surface(on_navmesh);
     a.polygon = polygon;
     a.velocity = Vec3::Zero();
     a.at_takeoff = false;
@@ -244,7 +244,7 @@ void Agents::step(float dt, const NavMeshRegistry& navmeshes, TaskSystem& tasks)
                     a.fail(AgentReason::NavMeshRemoved);
                     continue;
                 }
-                a.position = here.point;
+                a.put_on_surface(here.point);
                 a.polygon = here.polygon;
                 a.path.clear();
                 a.graph.reset();
