@@ -138,7 +138,7 @@ NL_API nl_status nl_agent_set_destination(nl_world* world, nl_agent_id agent, co
         w.agents().info(to_handle(agent));  // a stale id first, before the point
         require(point, "point");
         const nl::Vec3 p = nl::capi::read_position(point, "point");
-        nl::naming_fields("", [&] { w.agents().set_destination(w.navmeshes(), to_handle(agent), p); });
+        w.agents().set_destination(w.navmeshes(), to_handle(agent), p, "point");
     });
 }
 
@@ -151,7 +151,7 @@ NL_API nl_status nl_agent_teleport(nl_world* world, nl_agent_id agent, const flo
         nl::World& w = deref(world);
         w.agents().info(to_handle(agent));
         require(point, "point");
-        w.agents().teleport(w.navmeshes(), to_handle(agent), nl::capi::read_position(point, "point"));
+        w.agents().teleport(w.navmeshes(), to_handle(agent), nl::capi::read_position(point, "point"), "point");
     });
 }
 
@@ -165,8 +165,11 @@ NL_API nl_status nl_agent_set_capabilities(nl_world* world, nl_agent_id agent, c
 }
 
 NL_API nl_status nl_agent_set_speed(nl_world* world, nl_agent_id agent, float max_speed, float max_acceleration) {
-    return guarded("nl_agent_set_speed", world,
-                   [&] { deref(world).agents().set_speed(to_handle(agent), max_speed, max_acceleration); });
+    return guarded("nl_agent_set_speed", world, [&] {
+        nl::World& w = deref(world);
+        w.agents().info(to_handle(agent));  // a stale id first, before the figures (as the other setters)
+        w.agents().set_speed(to_handle(agent), max_speed, max_acceleration);
+    });
 }
 
 NL_API nl_status nl_world_step(nl_world* world, float dt) {

@@ -69,6 +69,23 @@ uint32_t Agents::locate(const NavMesh& navmesh, const Vec3& point, float radius,
     fail_field(ErrorCode::NotFound, field, " is not on the navmesh (nothing within 25 m)");
 }
 
+std::shared_ptr<const NavMesh> Agents::navmesh_of(const NavMeshRegistry& navmeshes, Handle agent, float& radius) const {
+    Handle navmesh;
+    {
+        std::shared_lock lock(mutex_);
+        const AgentBody& a = find(agent);
+        navmesh = a.def.navmesh;
+        radius = a.def.capabilities.radius;
+    }
+    try {
+        return navmeshes.navmesh(navmesh);
+    } catch (const Error& e) {
+        if (e.code() != ErrorCode::InvalidHandle) throw;
+        fail(ErrorCode::InvalidHandle, "the agent's navmesh {", navmesh.index1, ", ", navmesh.generation,
+             "} was removed: the agent cannot go anywhere (it fails at the next step; remove it)");
+    }
+}
+
 Handle Agents::add(const NavMeshRegistry& navmeshes, const AgentDef& def) {
     check_capabilities(def.capabilities);
     check_positive(def.height, "height");
@@ -107,18 +124,12 @@ bool Agents::contains(Handle agent) const {
     return ids_.find(agent) != nullptr;
 }
 
-void Agents::set_destination(const NavMeshRegistry& navmeshes, Handle agent, const Vec3& destination) {
-    check_point(destination, "destination");
-    Handle navmesh;
+void Agents::set_destination(const NavMeshRegistry& navmeshes, Handle agent, const Vec3& destination, const char* field) {
+    check_point(destination, field);
     float radius;
-    {
-        std::shared_lock lock(mutex_);
-        navmesh = find(agent).def.navmesh;
-        radius = find(agent).def.capabilities.radius;
-    }
-    const std::shared_ptr<const NavMesh> mesh = navmeshes.navmesh(navmesh);
+    const std::shared_ptr<const NavMesh> mesh = navmesh_of(navmeshes, agent, radius);
     Vec3 on_navmesh;
-    locate(*mesh, destination, radius, "destination", on_navmesh);
+    locate(*mesh, destination, radius, field, on_navmesh);
     std::unique_lock lock(mutex_);
     AgentBody& a = find(agent);
     a.has_destination = true;
@@ -136,24 +147,21 @@ void Agents::stop(Handle agent) {
     a.at_takeoff = false;
     a.path.clear();
     a.graph.reset();
-    if (!a.motion) {
+    // One whose navmesh was removed stays failed: it has nowhere to stand (and would fail again,
+    // with a second event, at the next step).
+    const bool stranded = a.state == AgentState::Failed && a.reason == AgentReason::NavMeshRemoved;
+    if (!a.motion && !stranded) {
         a.state = AgentState::Idle;
         a.velocity = Vec3::Zero();
     }
 }
 
-void Agents::teleport(const NavMeshRegistry& navmeshes, Handle agent, const Vec3& position) {
-    check_point(position, "position");
-    Handle navmesh;
+void Agents::teleport(const NavMeshRegistry& navmeshes, Handle agent, const Vec3& position, const char* field) {
+    check_point(position, field);
     float radius;
-    {
-        std::shared_lock lock(mutex_);
-        navmesh = find(agent).def.navmesh;
-        radius = find(agent).def.capabilities.radius;
-    }
-    const std::shared_ptr<const NavMesh> mesh = navmeshes.navmesh(navmesh);
+    const std::shared_ptr<const NavMesh> mesh = navmesh_of(navmeshes, agent, radius);
     Vec3 on_navmesh;
-    const uint32_t polygon = locate(*mesh, position, radius, "position", on_navmesh);
+    const uint32_t polygon = locate(*mesh, position, radius, field, on_navmesh);
     std::unique_lock lock(mutex_);
     AgentBody& a = find(agent);
     if (a.motion) fail(ErrorCode::InvalidArgument, "the agent is taking a link (teleport it after it lands)");
@@ -193,9 +201,10 @@ uint32_t Agents::count() const {
 
 void Agents::step(float dt, const NavMeshRegistry& navmeshes, TaskSystem& tasks) {
     if (!(dt >= 0.0f) || !std::isfinite(dt)) fail_field(ErrorCode::InvalidArgument, "dt is ", dt, " (must be finite and >= 0)");
+    if (dt == 0.0f) return;  // does nothing: the last step's events stay too
     std::unique_lock lock(mutex_);
     events_.clear();
-    if (dt == 0.0f || agents_.empty()) return;
+    if (agents_.empty()) return;
 
     // 1. The world as it is now: each navmesh's graph, looked up once.
     std::vector<std::pair<Handle, std::shared_ptr<const PathGraph>>> graphs;

@@ -52,12 +52,16 @@ public:
 
     // Located on the agent's navmesh at once (NotFound when it is not on it: the destination is not
     // kept); the agent plans a path to it in a coming step.
-    void set_destination(const NavMeshRegistry& navmeshes, Handle agent, const Vec3& destination);
-    // Forgets the destination and stands still (Idle). An agent in the air lands first.
+    // `field` names the point in a failure (the caller's name for it). An agent whose navmesh was
+    // removed is refused (InvalidHandle, saying so), as by teleport().
+    void set_destination(const NavMeshRegistry& navmeshes, Handle agent, const Vec3& destination,
+                         const char* field = "destination");
+    // Forgets the destination and stands still (Idle). An agent in the air lands first; one whose
+    // navmesh was removed stays Failed.
     void stop(Handle agent);
     // Puts the agent at a navmesh point (NotFound off it), still, keeping its destination (it plans
     // again from there). Refused (InvalidArgument) while it is taking a link.
-    void teleport(const NavMeshRegistry& navmeshes, Handle agent, const Vec3& position);
+    void teleport(const NavMeshRegistry& navmeshes, Handle agent, const Vec3& position, const char* field = "position");
     void set_capabilities(Handle agent, const AgentCapabilities& capabilities);
     void set_speed(Handle agent, float max_speed, float max_acceleration);
 
@@ -84,6 +88,8 @@ public:
 private:
     AgentBody& find(Handle agent);
     const AgentBody& find(Handle agent) const;
+    // The agent's navmesh and radius; InvalidHandle for a stale agent, or one whose navmesh is gone.
+    std::shared_ptr<const NavMesh> navmesh_of(const NavMeshRegistry& navmeshes, Handle agent, float& radius) const;
     uint32_t locate(const NavMesh& navmesh, const Vec3& point, float radius, const char* field, Vec3& on_navmesh) const;
 
     mutable SharedMutex mutex_;

@@ -1196,16 +1196,17 @@ NL_API int32_t nl_agent_is_valid(const nl_world* world, nl_agent_id agent);
 
 /** Sends the agent to `point` (3 floats, borrowed), located on its navmesh at once: off it is
  *  NOT_FOUND and the destination is not kept. The path is planned in a coming nl_world_step (an agent
- *  in the air lands first). Returns SUCCESS, or INVALID_HANDLE, INVALID_ARGUMENT, NOT_FOUND. Thread-safe. */
+ *  in the air lands first). Returns SUCCESS, or INVALID_HANDLE (also for an agent whose navmesh was
+ *  removed), INVALID_ARGUMENT, NOT_FOUND. Thread-safe. */
 NL_API nl_status nl_agent_set_destination(nl_world* world, nl_agent_id agent, const float* point);
 
-/** Forgets the destination: the agent stops and stands (NL_AGENT_IDLE); one in the air lands first.
- *  Returns SUCCESS or INVALID_HANDLE. Thread-safe. */
+/** Forgets the destination: the agent stops and stands (NL_AGENT_IDLE); one in the air lands first;
+ *  one whose navmesh was removed stays NL_AGENT_FAILED. Returns SUCCESS or INVALID_HANDLE. Thread-safe. */
 NL_API nl_status nl_agent_stop(nl_world* world, nl_agent_id agent);
 
 /** Puts the agent at the navmesh point of `point`, standing, keeping its destination (it plans again
- *  from there). Returns SUCCESS, or INVALID_HANDLE, INVALID_ARGUMENT (also while it is taking a link),
- *  NOT_FOUND. Thread-safe. */
+ *  from there). Returns SUCCESS, or INVALID_HANDLE (also for an agent whose navmesh was removed),
+ *  INVALID_ARGUMENT (also while it is taking a link), NOT_FOUND. Thread-safe. */
 NL_API nl_status nl_agent_teleport(nl_world* world, nl_agent_id agent, const float* point);
 
 /** Changes what the agent's body can do (copied); it plans again. Returns SUCCESS, or INVALID_HANDLE,
@@ -1221,7 +1222,7 @@ NL_API nl_status nl_agent_set_speed(nl_world* world, nl_agent_id agent, float ma
  *  for (at most agent_paths_per_step, oldest first), steers and moves every agent on the ground,
  *  flies those on links, and checks each link just before take-off. An agent's trouble (no path,
  *  its navmesh removed) is its failure and event, not the call's.
- *  Returns SUCCESS, or INVALID_ARGUMENT (dt NaN, infinite or negative), OUT_OF_MEMORY.
+ *  Returns SUCCESS, or INVALID_ARGUMENT (dt NaN, infinite or negative: nothing changes), OUT_OF_MEMORY.
  *  Thread-safe: other agent calls wait for it; must not be called from a task callback. */
 NL_API nl_status nl_world_step(nl_world* world, float dt);
 
