@@ -42,7 +42,7 @@ AgentState state_of(MotionKind kind) {
 
 }  // namespace
 
-Agents::Agents(uint32_t handle_tag, AgentsSettings settings) : settings_(settings), ids_(handle_tag) {}
+Agents::Agents(uint32_t handle_tag, AgentsSettings settings) : settings_(settings), ids_(handle_tag, HandleKind::Agent) {}
 Agents::~Agents() = default;
 
 AgentBody& Agents::find(Handle agent) {

@@ -28,7 +28,7 @@ void store_owner(std::vector<Owner>& table, unsigned id, Owner owner) {
 
 }  // namespace
 
-Level::Level(TaskSystem& tasks, uint32_t handle_tag) : tasks_(tasks), meshes_(handle_tag) {
+Level::Level(TaskSystem& tasks, uint32_t handle_tag) : tasks_(tasks), meshes_(handle_tag, HandleKind::Mesh) {
     device_ = rtcNewDevice(nullptr);
     // Each Embree device takes one of the process's thread-local keys (1,024 on glibc): past about a
     // thousand worlds, or when memory runs out, there is none for another.

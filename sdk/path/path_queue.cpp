@@ -25,7 +25,7 @@ PathResult cancelled() {
 
 }  // namespace
 
-PathQueue::PathQueue(uint32_t handle_tag, unsigned workers) : tickets_(handle_tag) {
+PathQueue::PathQueue(uint32_t handle_tag, unsigned workers) : tickets_(handle_tag, HandleKind::PathTicket) {
     try {
         for (unsigned i = 0; i < workers; ++i) workers_.emplace_back([this] { work(); });
     } catch (...) {

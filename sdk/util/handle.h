@@ -1,4 +1,5 @@
-// Generational handles and the slot map that issues them (Box2D-style ids: index + 1, generation).
+// Generational handles and the slot map that issues them (Box2D-style ids: index + 1, generation),
+// each carrying the kind of thing it names.
 #pragma once
 
 #include <algorithm>
@@ -11,8 +12,13 @@
 
 namespace nl {
 
+// What a handle names. Every slot map of a world issues handles of one kind, in the top bits of
+// index1, so an id of one kind (a navmesh's) is never taken for a live one of another kind (an
+// agent's) that happens to sit in a slot of the same number. 0: a slot map of no particular kind.
+enum class HandleKind : uint32_t { None = 0, Mesh, NavMesh, Link, Plugin, PathTicket, Agent };
+
 struct Handle {
-    uint32_t index1 = 0;  // slot index + 1; 0 is the null handle
+    uint32_t index1 = 0;  // kind << kHandleSlotBits | (slot index + 1); 0 is the null handle
     uint32_t generation = 0;
 
     bool is_null() const noexcept { return index1 == 0; }
@@ -23,6 +29,9 @@ struct Handle {
     }
     friend bool operator!=(Handle a, Handle b) noexcept { return !(a == b); }
 };
+
+constexpr uint32_t kHandleSlotBits = 28;
+constexpr uint32_t kHandleSlotMask = (1u << kHandleSlotBits) - 1;  // also the most slots one map holds
 
 // Throws InvalidHandle for a handle that a slot map did not recognise; `what` names its kind.
 [[noreturn]] inline void fail_stale(const char* what, Handle h) {
@@ -43,8 +52,11 @@ public:
     static constexpr uint32_t kCounterMask = (1u << kCounterBits) - 1;
 
     // Only the low kTagBits bits of `tag` are used.
-    explicit SlotMap(uint32_t tag = 0) : tag_bits_((tag & ((1u << kTagBits) - 1)) << kCounterBits) {}
+    explicit SlotMap(uint32_t tag = 0, HandleKind kind = HandleKind::None)
+        : tag_bits_((tag & ((1u << kTagBits) - 1)) << kCounterBits),
+          kind_bits_(static_cast<uint32_t>(kind) << kHandleSlotBits) {}
 
+    // Throws OutOfMemory when kHandleSlotMask slots are in use or retired.
     Handle insert(T value) {
         uint32_t index;
         if (!free_.empty()) {
@@ -52,6 +64,8 @@ public:
             free_.pop_back();
         } else {
             index = static_cast<uint32_t>(slots_.size());
+            if (index >= kHandleSlotMask)
+                fail(ErrorCode::OutOfMemory, "more than ", kHandleSlotMask, " ids of one kind in use or retired at once");
             // Room in free_ for every slot, grown geometrically: erase then never allocates (nor throws).
             if (free_.capacity() <= slots_.size()) free_.reserve(std::max<size_t>(2 * free_.capacity(), slots_.size() + 16));
             slots_.push_back(Slot{});
@@ -59,7 +73,7 @@ public:
         Slot& slot = slots_[index];
         slot.value.emplace(std::move(value));
         ++live_;
-        return Handle{index + 1, generation_of(slot)};
+        return Handle{kind_bits_ | (index + 1), generation_of(slot)};
     }
 
     T* find(Handle h) noexcept {
@@ -77,14 +91,14 @@ public:
             ++retired_;  // its next generation would repeat an old one
         } else {
             ++slot->counter;
-            free_.push_back(h.index1 - 1);
+            free_.push_back((h.index1 & kHandleSlotMask) - 1);
         }
         return true;
     }
 
     // Handle of the occupied slot at `index`; used to map back from internal indices.
     Handle handle_at(uint32_t index) const noexcept {
-        return Handle{index + 1, generation_of(slots_[index])};
+        return Handle{kind_bits_ | (index + 1), generation_of(slots_[index])};
     }
 
     template <typename Fn>
@@ -107,8 +121,9 @@ private:
     uint32_t generation_of(const Slot& slot) const noexcept { return tag_bits_ | slot.counter; }
 
     Slot* slot_of(Handle h) noexcept {
-        if (h.index1 == 0 || h.index1 > slots_.size()) return nullptr;
-        Slot& slot = slots_[h.index1 - 1];
+        const uint32_t slot1 = h.index1 & kHandleSlotMask;
+        if ((h.index1 & ~kHandleSlotMask) != kind_bits_ || slot1 == 0 || slot1 > slots_.size()) return nullptr;
+        Slot& slot = slots_[slot1 - 1];
         return slot.value && generation_of(slot) == h.generation ? &slot : nullptr;
     }
 
@@ -117,6 +132,7 @@ private:
     uint32_t live_ = 0;
     uint32_t retired_ = 0;
     uint32_t tag_bits_;
+    uint32_t kind_bits_;
 };
 
 // The handles removed from one owner's slot map, for a store that keeps state beside it and must
@@ -127,13 +143,15 @@ private:
 class RemovedHandles {
 public:
     void add(Handle h) {
-        if (h.index1 == 0) return;  // the null handle was never issued
-        if (h.index1 > last_removed_.size()) last_removed_.resize(h.index1, 0);
-        uint32_t& last = last_removed_[h.index1 - 1];
+        const uint32_t slot1 = h.index1 & kHandleSlotMask;
+        if (slot1 == 0) return;  // the null handle was never issued
+        if (slot1 > last_removed_.size()) last_removed_.resize(slot1, 0);
+        uint32_t& last = last_removed_[slot1 - 1];
         if (h.generation > last) last = h.generation;
     }
     bool contains(Handle h) const noexcept {
-        return h.index1 != 0 && h.index1 <= last_removed_.size() && h.generation <= last_removed_[h.index1 - 1];
+        const uint32_t slot1 = h.index1 & kHandleSlotMask;
+        return slot1 != 0 && slot1 <= last_removed_.size() && h.generation <= last_removed_[slot1 - 1];
     }
 
 private:

@@ -33,7 +33,7 @@ struct LastGeneration {
 
 class NavMeshRegistry {
 public:
-    explicit NavMeshRegistry(uint32_t handle_tag) : navmeshes_(handle_tag), links_(handle_tag) {}
+    explicit NavMeshRegistry(uint32_t handle_tag) : navmeshes_(handle_tag, HandleKind::NavMesh), links_(handle_tag, HandleKind::Link) {}
 
     // Navmeshes. Lookups throw InvalidHandle for a null, removed or foreign handle.
     Handle add(std::shared_ptr<const NavMesh> navmesh);

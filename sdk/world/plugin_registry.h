@@ -15,7 +15,7 @@ namespace nl {
 
 class PluginRegistry {
 public:
-    explicit PluginRegistry(uint32_t handle_tag) : plugins_(handle_tag) {}
+    explicit PluginRegistry(uint32_t handle_tag) : plugins_(handle_tag, HandleKind::Plugin) {}
     ~PluginRegistry();
     PluginRegistry(const PluginRegistry&) = delete;
     PluginRegistry& operator=(const PluginRegistry&) = delete;
