@@ -1,0 +1,41 @@
+// Worlds, levels and navmeshes for tests that drive the C++ core (nl::World) alone, with no C ABI:
+// a procedural or OBJ level added as nl_mesh_add and nl_mesh_add_obj_file add it, a navmesh built
+// by the Recast builder as nl_navmesh_build builds it, and cell-map navmeshes (cell_navmesh.h's
+// maps, as core input). core_world.cpp; links navlink_recast_plugin, never navlink_capi_objects.
+#pragma once
+
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "level_generator.h"
+#include "navmesh/navmesh_builder.h"
+#include "world/world.h"
+
+namespace nl::test {
+
+// A world with `workers` threads for batch work and `path_workers` path threads (0: process() only).
+std::unique_ptr<World> make_world(int workers = 1, unsigned path_workers = 0);
+
+// Adds a procedural level's triangles to the world's level, as nl_mesh_add does (degenerate
+// triangles skipped by the level).
+Handle add_level(World& world, const levelgen::GeneratedLevel& level, uint32_t flags = 0,
+                 const Transform& transform = Transform::Identity());
+// Adds the triangles of an OBJ file, as nl_mesh_add_obj_file does.
+Handle add_obj_file(World& world, const std::filesystem::path& path);
+
+// The Recast builder (plugins/recast, the built-in builder of every C world) registered in `world`
+// under its name, "recast", as a C++ plugin: once per world, later calls do nothing.
+void add_recast_builder(World& world);
+// Builds a navmesh for `agent` from the world's level with the Recast builder and its default
+// settings, and adds it: the navmesh nl_navmesh_build makes with nl_default_navmesh_build_def().
+// Throws as World::build_navmesh; a failure of the builder is an nl::Error with its code and reason.
+Handle build_recast_navmesh(World& world, const AgentType& agent = AgentType{});
+
+// A host navmesh drawn as a map of 1 m cells (rows as in cell_navmesh.h: row r is z in [r, r + 1],
+// column c is x in [c, c + 1], at y = 0; '.' area 0, a digit that area, anything else no navmesh),
+// for an agent of that radius; the input nl_navmesh_add makes of CellNavmesh's def.
+NavMeshInput cell_navmesh(const std::vector<std::string>& rows, float agent_radius);
+
+}  // namespace nl::test
