@@ -169,6 +169,15 @@ Handle build_recast_navmesh(World& world, const AgentType& agent) {
     return world.build_navmesh(request);
 }
 
+RecastWorld recast_world(const levelgen::GeneratedLevel& level, int workers) {
+    RecastWorld out;
+    out.world = make_world(workers);
+    add_level(*out.world, level);
+    out.navmesh = build_recast_navmesh(*out.world);
+    out.mesh = out.world->navmeshes().navmesh(out.navmesh);
+    return out;
+}
+
 NavMeshInput cell_navmesh(const std::vector<std::string>& rows, float agent_radius) {
     NavMeshInput in;
     for (size_t r = 0; r < rows.size(); ++r) {

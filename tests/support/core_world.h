@@ -33,6 +33,15 @@ void add_recast_builder(World& world);
 // Throws as World::build_navmesh; a failure of the builder is an nl::Error with its code and reason.
 Handle build_recast_navmesh(World& world, const AgentType& agent = AgentType{});
 
+// A world of `workers` threads holding `add`'s level and the navmesh the Recast builder makes of it
+// (default agent and settings): what the link generator's tests start from.
+struct RecastWorld {
+    std::unique_ptr<World> world;
+    Handle navmesh;
+    std::shared_ptr<const NavMesh> mesh;  // the navmesh itself
+};
+RecastWorld recast_world(const levelgen::GeneratedLevel& level, int workers);
+
 // A host navmesh drawn as a map of 1 m cells (rows as in cell_navmesh.h: row r is z in [r, r + 1],
 // column c is x in [c, c + 1], at y = 0; '.' area 0, a digit that area, anything else no navmesh),
 // for an agent of that radius; the input nl_navmesh_add makes of CellNavmesh's def.
