@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "generated_mesh.h"
+#include "io/link_json.h"
 #include "io/obj_reader.h"
 #include "navlink/plugin.h"
 #include "recast_builder.h"
@@ -176,6 +177,24 @@ RecastWorld recast_world(const levelgen::GeneratedLevel& level, int workers) {
     out.navmesh = build_recast_navmesh(*out.world);
     out.mesh = out.world->navmeshes().navmesh(out.navmesh);
     return out;
+}
+
+std::vector<StoredLink> links_of(const World& world, Handle navmesh) {
+    const auto snapshot = world.navmeshes().links(navmesh);
+    return std::vector<StoredLink>(snapshot->begin(), snapshot->end());
+}
+
+std::string save_links_json(const World& world, Handle navmesh) {
+    std::vector<Link> links;
+    for (const StoredLink& s : links_of(world, navmesh)) links.push_back(s.link);
+    return links_to_json(links);
+}
+
+size_t load_links_json(World& world, Handle navmesh, const std::string& json) {
+    std::vector<Link> links = links_from_json(json);
+    const size_t count = links.size();
+    world.load_links(navmesh, std::move(links));
+    return count;
 }
 
 NavMeshInput cell_navmesh(const std::vector<std::string>& rows, float agent_radius) {

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "level_generator.h"
+#include "links/link_snapshot.h"
 #include "navmesh/navmesh_builder.h"
 #include "world/world.h"
 
@@ -41,6 +42,16 @@ struct RecastWorld {
     std::shared_ptr<const NavMesh> mesh;  // the navmesh itself
 };
 RecastWorld recast_world(const levelgen::GeneratedLevel& level, int workers);
+
+// The navmesh's links as they are now, in the order added (a snapshot's links, as
+// nl_navmesh_get_links lists them).
+std::vector<StoredLink> links_of(const World& world, Handle navmesh);
+// A progress callback that lets a generation run to the end.
+inline constexpr auto keep_going = [](float, const char*) { return true; };
+// The navmesh's links as a links file, and a links file loaded in their place (what
+// nl_navmesh_save_links_json and nl_navmesh_load_links_json do); returns the count loaded.
+std::string save_links_json(const World& world, Handle navmesh);
+size_t load_links_json(World& world, Handle navmesh, const std::string& json);
 
 // A host navmesh drawn as a map of 1 m cells (rows as in cell_navmesh.h: row r is z in [r, r + 1],
 // column c is x in [c, c + 1], at y = 0; '.' area 0, a digit that area, anything else no navmesh),
