@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "core_errors.h"
 #include "core_world.h"
-#include "util/error.h"
 
 using nl::levelgen::Box;
 
@@ -20,16 +20,6 @@ nl::Aabb aabb_of(const Box& b) {
     return box;
 }
 
-nl::ErrorCode code_of(const std::function<void()>& fn, std::string* message = nullptr) {
-    try {
-        fn();
-    } catch (const nl::Error& e) {
-        if (message) *message = e.what();
-        return e.code();
-    }
-    FAIL("no error");
-    return nl::ErrorCode::Internal;
-}
 
 struct Scene {
     std::unique_ptr<nl::World> world = nl::test::make_world(2);
@@ -162,7 +152,7 @@ TEST_CASE("an update needs a prior generation and a proper box; a far-away chang
 
     // A navmesh never generated: nothing to update.
     const nl::Handle other = nl::test::build_recast_navmesh(*s.world);
-    CHECK(code_of([&] { s.world->update_links_in_box(other, aabb_of(far_box), nl::test::keep_going); }) ==
+    CHECK(nl::test::code_of([&] { s.world->update_links_in_box(other, aabb_of(far_box), nl::test::keep_going); }) ==
           nl::ErrorCode::NotFound);
 }
 
@@ -175,7 +165,7 @@ TEST_CASE("an update never brings back generated links that were removed or repl
     const size_t removed = s.world->navmeshes().remove_generated_links(s.navmesh);
     CHECK(removed == generated);
     std::string message;
-    CHECK(code_of([&] { s.update(anywhere); }, &message) == nl::ErrorCode::NotFound);
+    CHECK(nl::test::code_of([&] { s.update(anywhere); }, &message) == nl::ErrorCode::NotFound);
     CHECK(message.find("removed") != std::string::npos);
     CHECK(s.links().empty());
 
@@ -185,7 +175,7 @@ TEST_CASE("an update never brings back generated links that were removed or repl
     nl::test::load_links_json(*s.world, s.navmesh, json);
     const auto loaded = s.links();
     CHECK(loaded.size() == generated);
-    CHECK(code_of([&] { s.update(anywhere); }) == nl::ErrorCode::NotFound);
+    CHECK(nl::test::code_of([&] { s.update(anywhere); }) == nl::ErrorCode::NotFound);
     const auto after = s.links();
     REQUIRE(after.size() == loaded.size());
     for (size_t i = 0; i < after.size(); ++i) CHECK(after[i].id.index1 == loaded[i].id.index1);

@@ -6,10 +6,10 @@
 #include <chrono>
 #include <random>
 
+#include "core_errors.h"
 #include "core_world.h"
 #include "navmesh_checks.h"
 #include "shared_levels.h"
-#include "util/error.h"
 
 namespace {
 
@@ -84,14 +84,7 @@ TEST_CASE("a level with no walkable surface is a clear failure, not an empty nav
     wall.triangles = {{0, 1, 2}, {0, 2, 3}};
     world->level().add_mesh(wall, nl::Transform::Identity(), 0, 0);
     std::string message;
-    nl::ErrorCode code = nl::ErrorCode::Internal;
-    try {
-        nl::test::build_recast_navmesh(*world);
-    } catch (const nl::Error& e) {
-        message = e.what();
-        code = e.code();
-    }
-    CHECK(code == nl::ErrorCode::NotFound);
+    CHECK(nl::test::code_of([&] { nl::test::build_recast_navmesh(*world); }, &message) == nl::ErrorCode::NotFound);
     CHECK(message.find("walkable") != std::string::npos);
     CHECK(world->navmeshes().handles().empty());
 }

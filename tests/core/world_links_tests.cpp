@@ -12,7 +12,7 @@
 
 #include "core_world.h"
 #include "io/link_json.h"
-#include "util/error.h"
+#include "core_errors.h"
 
 using nl::Handle;
 using nl::Link;
@@ -55,16 +55,6 @@ size_t count_generated(const std::vector<nl::StoredLink>& links, bool generated)
 }
 
 // The code of the nl::Error `fn` throws; its message into `message`.
-nl::ErrorCode code_of(const std::function<void()>& fn, std::string* message = nullptr) {
-    try {
-        fn();
-    } catch (const nl::Error& e) {
-        if (message) *message = e.what();
-        return e.code();
-    }
-    FAIL("no error");
-    return nl::ErrorCode::Internal;
-}
 
 }  // namespace
 
@@ -112,7 +102,7 @@ TEST_CASE("generation fills the report; regeneration replaces generated links an
     CHECK(count_generated(again, false) == 1);
     CHECK(f.world->navmeshes().contains_link(manual));
     CHECK_FALSE(f.world->navmeshes().contains_link(old_first.id));  // generated links got new ids
-    CHECK(code_of([&] { f.world->navmeshes().remove_link(old_first.id); }) == nl::ErrorCode::InvalidHandle);
+    CHECK(nl::test::code_of([&] { f.world->navmeshes().remove_link(old_first.id); }) == nl::ErrorCode::InvalidHandle);
 
     CHECK(f.world->navmeshes().remove_generated_links(f.navmesh) == links.size());
     CHECK(f.links().size() == 1);
@@ -126,7 +116,7 @@ TEST_CASE("manual links: refused off the navmesh or with bad values; updated; re
     const Vec3 a = f.centre(0);
     Link def = manual_link(a, a + Vec3(0.0f, 50.0f, 0.0f));  // the end far above the navmesh
     std::string message;
-    CHECK(code_of([&] { f.world->add_link(f.navmesh, def); }, &message) == nl::ErrorCode::InvalidArgument);
+    CHECK(nl::test::code_of([&] { f.world->add_link(f.navmesh, def); }, &message) == nl::ErrorCode::InvalidArgument);
     CHECK(message.find("end is not within") != std::string::npos);
     def = manual_link(a, a);
     def.kind = static_cast<nl::LinkKind>(uint32_t(nl::LinkKind::FirstPluginKind) + 3);
@@ -142,15 +132,15 @@ TEST_CASE("manual links: refused off the navmesh or with bad values; updated; re
     CHECK(uint32_t(got.kind) == uint32_t(nl::LinkKind::FirstPluginKind) + 3);
 
     f.world->navmeshes().remove_link(id);
-    CHECK(code_of([&] { f.world->navmeshes().remove_link(id); }) == nl::ErrorCode::InvalidHandle);
-    CHECK(code_of([&] { f.world->update_link(id, def); }) == nl::ErrorCode::InvalidHandle);
+    CHECK(nl::test::code_of([&] { f.world->navmeshes().remove_link(id); }) == nl::ErrorCode::InvalidHandle);
+    CHECK(nl::test::code_of([&] { f.world->update_link(id, def); }) == nl::ErrorCode::InvalidHandle);
     CHECK(f.links().empty());
 
     // A removed navmesh takes its links with it.
     const Handle again = f.world->add_link(f.navmesh, def);
     f.world->navmeshes().remove(f.navmesh);
     CHECK_FALSE(f.world->navmeshes().contains_link(again));
-    CHECK(code_of([&] { f.world->navmeshes().links(f.navmesh); }) == nl::ErrorCode::InvalidHandle);
+    CHECK(nl::test::code_of([&] { f.world->navmeshes().links(f.navmesh); }) == nl::ErrorCode::InvalidHandle);
 }
 
 TEST_CASE("links round-trip through JSON; bad files are refused and change nothing") {
@@ -184,7 +174,7 @@ TEST_CASE("links round-trip through JSON; bad files are refused and change nothi
     }
 
     auto load = [&](const std::string& text, std::string* message = nullptr) {
-        return code_of([&] { nl::test::load_links_json(*f.world, f.navmesh, text); }, message);
+        return nl::test::code_of([&] { nl::test::load_links_json(*f.world, f.navmesh, text); }, message);
     };
     const std::string broken = json.substr(0, json.size() / 2);
     CHECK(load(broken) == nl::ErrorCode::Parse);
@@ -214,7 +204,7 @@ TEST_CASE("settings from JSON: applied over the struct, unknown keys and bad val
 
     auto refused = [&](const std::string& json, std::string* message = nullptr) {
         nl::LinkSettings copy = s;
-        return code_of([&] { nl::apply_settings_json(json, copy); }, message);
+        return nl::test::code_of([&] { nl::apply_settings_json(json, copy); }, message);
     };
     std::string message;
     CHECK(refused("{\"max_link_distanse\": 6}", &message) == nl::ErrorCode::InvalidArgument);
@@ -251,12 +241,12 @@ TEST_CASE("a cancelled generation changes nothing; progress runs from 0 to 1") {
     settings.max_jump_gap = 8.0f;  // would change the links
     Seen cancelled;
     cancelled.cancel_after = 3;
-    CHECK(code_of([&] { f.world->generate_links(f.navmesh, settings, {}, progress_of(cancelled)); }) == nl::ErrorCode::Cancelled);
+    CHECK(nl::test::code_of([&] { f.world->generate_links(f.navmesh, settings, {}, progress_of(cancelled)); }) == nl::ErrorCode::Cancelled);
     CHECK(f.links().size() == before);
 
     settings.max_jump_gap = -2.0f;
     std::string message;
-    CHECK(code_of([&] { f.generate(settings); }, &message) == nl::ErrorCode::InvalidArgument);
+    CHECK(nl::test::code_of([&] { f.generate(settings); }, &message) == nl::ErrorCode::InvalidArgument);
     CHECK(message.find("max_jump_gap") != std::string::npos);
 }
 
@@ -272,7 +262,7 @@ TEST_CASE("a boundary that would need millions of take-off samples is refused be
     nl::LinkSettings settings;
     settings.sample_spacing = 0.05f;  // 16 million samples
     std::string message;
-    CHECK(code_of([&] { world->generate_links(navmesh, settings, {}, nl::test::keep_going); }, &message) ==
+    CHECK(nl::test::code_of([&] { world->generate_links(navmesh, settings, {}, nl::test::keep_going); }, &message) ==
           nl::ErrorCode::InvalidArgument);
     CHECK(message.find("sample_spacing") != std::string::npos);
     CHECK(world->navmeshes().links(navmesh)->empty());
@@ -295,7 +285,7 @@ TEST_CASE("loading JSON holds links to nl_link_add's rules: ends near the navmes
 
     // The second link's start 10 m above the navmesh: refused, named, nothing changes.
     std::string message;
-    CHECK(code_of([&] { nl::test::load_links_json(*f.world, f.navmesh, file(10.0f)); }, &message) ==
+    CHECK(nl::test::code_of([&] { nl::test::load_links_json(*f.world, f.navmesh, file(10.0f)); }, &message) ==
           nl::ErrorCode::InvalidArgument);
     CHECK(message.find("links[1].start") != std::string::npos);
     CHECK(f.links().size() == before.size());

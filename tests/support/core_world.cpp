@@ -5,6 +5,7 @@
 #include <string>
 #include <utility>
 
+#include "cell_map.h"
 #include "generated_mesh.h"
 #include "io/link_json.h"
 #include "io/obj_reader.h"
@@ -198,21 +199,13 @@ size_t load_links_json(World& world, Handle navmesh, const std::string& json) {
 }
 
 NavMeshInput cell_navmesh(const std::vector<std::string>& rows, float agent_radius) {
+    const CellMap map(rows);
     NavMeshInput in;
-    for (size_t r = 0; r < rows.size(); ++r) {
-        for (size_t c = 0; c < rows[r].size(); ++c) {
-            const char cell = rows[r][c];
-            if (cell != '.' && (cell < '0' || cell > '9')) continue;
-            const float x0 = float(c), x1 = x0 + 1, z0 = float(r), z1 = z0 + 1;
-            // Counter-clockwise seen from above (y up): +z first, then +x.
-            for (const auto& [x, z] : {std::pair{x0, z0}, {x0, z1}, {x1, z1}, {x1, z0}}) {
-                in.indices.push_back(uint32_t(in.vertices.size()));
-                in.vertices.emplace_back(x, 0.0f, z);
-            }
-            in.polygon_sizes.push_back(4);
-            in.areas.push_back(cell == '.' ? 0 : uint8_t(cell - '0'));
-        }
-    }
+    for (size_t i = 0; i + 2 < map.vertices.size(); i += 3)
+        in.vertices.emplace_back(map.vertices[i], map.vertices[i + 1], map.vertices[i + 2]);
+    in.indices = map.indices;
+    in.polygon_sizes = map.counts;
+    in.areas = map.areas;
     in.agent.radius = agent_radius;
     return in;
 }

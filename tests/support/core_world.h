@@ -53,9 +53,8 @@ inline constexpr auto keep_going = [](float, const char*) { return true; };
 std::string save_links_json(const World& world, Handle navmesh);
 size_t load_links_json(World& world, Handle navmesh, const std::string& json);
 
-// A host navmesh drawn as a map of 1 m cells (rows as in cell_navmesh.h: row r is z in [r, r + 1],
-// column c is x in [c, c + 1], at y = 0; '.' area 0, a digit that area, anything else no navmesh),
-// for an agent of that radius; the input nl_navmesh_add makes of CellNavmesh's def.
+// A host navmesh drawn as a map of 1 m cells (cell_map.h), for an agent of that radius: the input
+// nl_navmesh_add makes of cell_navmesh.h's CellNavmesh def.
 NavMeshInput cell_navmesh(const std::vector<std::string>& rows, float agent_radius);
 
 }  // namespace nl::test
