@@ -179,7 +179,7 @@ TEST_CASE("an unreachable goal gives a partial path to the nearest reachable poi
     nl::PathQuery def = map.request(0.5f, 0.5f, 6.5f, 0.5f);
     const Path partial = find(map, def);
     INFO(partial.describe());
-    // Its C status, SUCCESS | PARTIAL_RESULT, and no path's plain SUCCESS: abi.paths.
+    // Its C status, SUCCESS | PARTIAL_RESULT, and no path's plain SUCCESS: abi.paths.find_synchronous.
     CHECK(partial.result.outcome == nl::PathOutcome::Partial);
     REQUIRE(partial.result.points.size() == 2);
     check_point(partial.result.points.back(), 3.0f, 0.5f);

@@ -1,7 +1,8 @@
 // Worlds, levels and navmeshes for tests that drive the C++ core (nl::World) alone, with no C ABI:
 // a procedural or OBJ level added as nl_mesh_add and nl_mesh_add_obj_file add it, a navmesh built
-// by the Recast builder as nl_navmesh_build builds it, and cell-map navmeshes (cell_navmesh.h's
-// maps, as core input). core_world.cpp; links navlink_recast_plugin, never navlink_capi_objects.
+// by the Recast builder as nl_navmesh_build builds it, and cell-map navmeshes (cell_map.h). Core types
+// only. The Recast builder is a C plugin, so core_world.cpp speaks the plugin ABI (plugin.h) to it, as
+// the C layer's adapter does; it links navlink_recast_plugin, never the C ABI's objects.
 #pragma once
 
 #include <filesystem>
@@ -34,7 +35,7 @@ void add_recast_builder(World& world);
 // Throws as World::build_navmesh; a failure of the builder is an nl::Error with its code and reason.
 Handle build_recast_navmesh(World& world, const AgentType& agent = AgentType{});
 
-// A world of `workers` threads holding `add`'s level and the navmesh the Recast builder makes of it
+// A world of `workers` threads holding `level` and the navmesh the Recast builder makes of it
 // (default agent and settings): what the link generator's tests start from.
 struct RecastWorld {
     std::unique_ptr<World> world;
