@@ -553,6 +553,8 @@ static void manual(void) {
           got_plugin.requirements.drop == 0.0f && got_plugin.requirements.clearance_width == 0.8f &&
           got_plugin.requirements.abilities == 0x5u);
     CHECK(got_plugin.apex[0] == -4.0f && got_plugin.apex[1] == 0.5f && got_plugin.apex[2] == 3.0f);
+    /* Its length was left 0: measured from the ends, along the ground. */
+    CHECK_NEAR(got_plugin.requirements.length, 4.0f, 1e-5f);
     CHECK(got_plugin.start_polygon < polygons && got_plugin.end_polygon < polygons);
     CHECK(link_count(world, navmesh) == generated + 2u);
 

@@ -16,7 +16,7 @@
 # Each test is named PREFIX + the case's name and gets the LABELS, TIMEOUT, WORKING_DIRECTORY
 # (default: the current binary dir) and SKIP_RETURN_CODE given. The listing runs discover_tests.cmake,
 # which refuses two cases of one name. doctest_discover_tests from Debian's doctest-dev (2.4.9) is not
-# used: it splits a case's name at ';' (24 of the 104 unit test cases have one), registering halves that
+# used: it splits a case's name at ';' (26 of the 121 core test cases have one), registering halves that
 # run no case and pass, and it escapes only ','.
 set(_NAVLINK_DISCOVER_SCRIPT "${CMAKE_CURRENT_LIST_DIR}/discover_tests.cmake")
 

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "level_generator.h"
+#include "core_errors.h"
 #include "generated_mesh.h"
 #include "links/link_placement.h"
 #include "path/path_planner.h"
@@ -70,25 +71,6 @@ std::vector<uint64_t> user_data_of(const nl::LinkSnapshot& snapshot) {
     return out;
 }
 
-std::string message_of(const std::function<void()>& fn) {
-    try {
-        fn();
-    } catch (const nl::Error& e) {
-        return e.what();
-    }
-    return "";
-}
-
-nl::ErrorCode code_of(const std::function<void()>& fn) {
-    try {
-        fn();
-    } catch (const nl::Error& e) {
-        return e.code();
-    }
-    FAIL("no error");
-    return nl::ErrorCode::Internal;
-}
-
 }  // namespace
 
 TEST_CASE("a navmesh's links: a snapshot stays as taken, the next one sees every edit, in the order added") {
@@ -129,11 +111,11 @@ TEST_CASE("removing a navmesh takes its links, its last generation and its path 
     s.world->navmeshes().remove(s.navmesh);
     CHECK_FALSE(s.world->navmeshes().contains(s.navmesh));
     for (Handle id : ids) CHECK_FALSE(s.world->navmeshes().contains_link(id));
-    CHECK(code_of([&] { s.world->navmeshes().links(s.navmesh); }) == nl::ErrorCode::InvalidHandle);
-    CHECK(code_of([&] { s.world->navmeshes().path_graph(s.navmesh); }) == nl::ErrorCode::InvalidHandle);
-    CHECK(code_of([&] { s.world->update_links_in_box(s.navmesh, nl::Aabb{}, [](float, const char*) { return true; }); }) ==
+    CHECK(nl::test::code_of([&] { s.world->navmeshes().links(s.navmesh); }) == nl::ErrorCode::InvalidHandle);
+    CHECK(nl::test::code_of([&] { s.world->navmeshes().path_graph(s.navmesh); }) == nl::ErrorCode::InvalidHandle);
+    CHECK(nl::test::code_of([&] { s.world->update_links_in_box(s.navmesh, nl::Aabb{}, [](float, const char*) { return true; }); }) ==
           nl::ErrorCode::InvalidHandle);
-    CHECK(code_of([&] { s.world->navmeshes().remove_link(manual); }) == nl::ErrorCode::InvalidHandle);
+    CHECK(nl::test::code_of([&] { s.world->navmeshes().remove_link(manual); }) == nl::ErrorCode::InvalidHandle);
     // Readers that held them keep them.
     CHECK(snapshot->size() == ids.size());
     CHECK(graph->navmesh().polygon_count() == 2);
@@ -142,7 +124,7 @@ TEST_CASE("removing a navmesh takes its links, its last generation and its path 
 TEST_CASE("a generation that finishes after its navmesh was removed keeps nothing") {
     Scene s;
     bool removed = false;
-    const nl::ErrorCode code = code_of([&] {
+    const nl::ErrorCode code = nl::test::code_of([&] {
         s.generate([&](float fraction, const char*) {
             if (fraction > 0.5f && !removed) {
                 s.world->navmeshes().remove(s.navmesh);  // from the progress callback: another thread would do the same
@@ -162,7 +144,7 @@ TEST_CASE("an update continues the last generation; removing the generated links
     nl::Aabb box;
     box.min = Vec3(4.5f, -1.0f, 0.0f);
     box.max = Vec3(5.5f, 3.0f, 4.0f);
-    CHECK(code_of([&] { s.world->update_links_in_box(s.navmesh, box, everything); }) == nl::ErrorCode::NotFound);
+    CHECK(nl::test::code_of([&] { s.world->update_links_in_box(s.navmesh, box, everything); }) == nl::ErrorCode::NotFound);
     s.generate();
     const auto full = s.world->navmeshes().links(s.navmesh);
     s.world->update_links_in_box(s.navmesh, box, everything);
@@ -171,10 +153,10 @@ TEST_CASE("an update continues the last generation; removing the generated links
     for (size_t i = 0; i < full->size(); ++i) CHECK((*updated)[i].link.start == (*full)[i].link.start);
 
     CHECK(s.world->navmeshes().remove_generated_links(s.navmesh) == full->size());
-    CHECK(code_of([&] { s.world->update_links_in_box(s.navmesh, box, everything); }) == nl::ErrorCode::NotFound);
+    CHECK(nl::test::code_of([&] { s.world->update_links_in_box(s.navmesh, box, everything); }) == nl::ErrorCode::NotFound);
     s.generate();
     s.world->load_links(s.navmesh, {s.manual(3.5f, 6.5f)});
-    CHECK(code_of([&] { s.world->update_links_in_box(s.navmesh, box, everything); }) == nl::ErrorCode::NotFound);
+    CHECK(nl::test::code_of([&] { s.world->update_links_in_box(s.navmesh, box, everything); }) == nl::ErrorCode::NotFound);
     CHECK(s.world->navmeshes().links(s.navmesh)->size() == 1);
 }
 
@@ -183,7 +165,7 @@ TEST_CASE("a generation asked for from inside another's progress callback is ref
     const Handle other = s.world->add_navmesh(platform_tops(0.4f));
     std::string nested;
     s.generate([&](float, const char*) {
-        if (nested.empty()) nested = message_of([&] { s.world->generate_links(other, {}, {}, [](float, const char*) { return true; }); });
+        if (nested.empty()) nested = nl::test::message_of([&] { s.world->generate_links(other, {}, {}, [](float, const char*) { return true; }); });
         return true;
     });
     CHECK(nested.find("from inside another generation") != std::string::npos);
@@ -192,22 +174,22 @@ TEST_CASE("a generation asked for from inside another's progress callback is ref
 
 TEST_CASE("failures name the field in the core's terms; a caller puts its own name in front") {
     Scene s;
-    const std::string off = message_of([&] { s.world->add_link(s.navmesh, s.manual(3.5f, 60.0f)); });
+    const std::string off = nl::test::message_of([&] { s.world->add_link(s.navmesh, s.manual(3.5f, 60.0f)); });
     CHECK(off.rfind("end is not within 1 m of the navmesh", 0) == 0);
-    const std::string named = message_of([&] {
+    const std::string named = nl::test::message_of([&] {
         nl::naming_fields("def->", [&] { s.world->add_link(s.navmesh, s.manual(3.5f, 60.0f)); });
     });
     CHECK(named.rfind("def->end is not within", 0) == 0);
     nl::NavMeshInput bad = platform_tops();
     bad.vertices[3].y() = NAN;
-    CHECK(message_of([&] { s.world->add_navmesh(bad); }).rfind("vertices[3].y", 0) == 0);
+    CHECK(nl::test::message_of([&] { s.world->add_navmesh(bad); }).rfind("vertices[3].y", 0) == 0);
     nl::LinkSettings settings;
     settings.max_jump_gap = -1.0f;
-    CHECK(message_of([&] { s.world->generate_links(s.navmesh, settings, {}, [](float, const char*) { return true; }); })
+    CHECK(nl::test::message_of([&] { s.world->generate_links(s.navmesh, settings, {}, [](float, const char*) { return true; }); })
               .rfind("max_jump_gap is -1", 0) == 0);
     // A stale id is not about a field: no name goes in front of it.
     const Handle stale{99, 1};
-    CHECK(message_of([&] { nl::naming_fields("def->", [&] { s.world->add_link(stale, s.manual(3.5f, 6.5f)); }); })
+    CHECK(nl::test::message_of([&] { nl::naming_fields("def->", [&] { s.world->add_link(stale, s.manual(3.5f, 6.5f)); }); })
               .rfind("navmesh {99, 1}", 0) == 0);
 }
 
@@ -273,11 +255,11 @@ TEST_CASE("C++ plugins: a link kind's links are placed and generated with the re
     CHECK(rope.requirements.abilities == 0x8);
 
     rope_plugin.stray = true;
-    const std::string refused = message_of([&] { s.generate(); });
+    const std::string refused = nl::test::message_of([&] { s.generate(); });
     CHECK(refused == "link-kind plugin 'ropes' proposed a link that was refused: end is not within 1 m of the navmesh");
     CHECK(s.world->navmeshes().links(s.navmesh)->size() == links->size());  // nothing changed
 
-    CHECK(code_of([&] { s.world->plugins().add(std::make_unique<Ropes>()); }) == nl::ErrorCode::InvalidArgument);
+    CHECK(nl::test::code_of([&] { s.world->plugins().add(std::make_unique<Ropes>()); }) == nl::ErrorCode::InvalidArgument);
 
     s.world->plugins().add(std::make_unique<Tops>());
     nl::NavMeshBuildRequest request;
@@ -286,7 +268,7 @@ TEST_CASE("C++ plugins: a link kind's links are placed and generated with the re
     const Handle built = s.world->build_navmesh(request);
     CHECK(s.world->navmeshes().navmesh(built)->agent().radius == 0.5f);
     request.builder = "nobody";
-    CHECK(message_of([&] { s.world->build_navmesh(request); }) == "no navmesh builder named 'nobody' (loaded: 'tops')");
+    CHECK(nl::test::message_of([&] { s.world->build_navmesh(request); }) == "no navmesh builder named 'nobody' (loaded: 'tops')");
 }
 
 TEST_CASE("the path graph is built once per moment of the links, and an edit makes the next one") {

@@ -1,24 +1,21 @@
 // The link generator against its brute-force reference: on every shared level and on a procedural
-// level of a few thousand triangles, the spatial-grid candidate search (what nl_navmesh_generate_links
+// level of a few thousand triangles, the spatial-grid candidate search (what World::generate_links
 // uses) yields exactly the links that all pairs of take-off points yield on one worker, and the
 // generator's result is the same, field for field, on one worker and on two.
 #include <doctest/doctest.h>
-#include <navlink/navlink.h>
 
 #include <cstring>
 #include <memory>
 #include <sstream>
 #include <string>
 
+#include "core_world.h"
 #include "level_generator.h"
 #include "links/link_generator.h"
 #include "link_test_helpers.h"
 #include "shared_levels.h"
-#include "world.h"
 
 namespace {
-
-using nl::test::WorldPtr;
 
 // A level's geometry: an OBJ file, or generated arrays.
 struct LevelSource {
@@ -27,22 +24,14 @@ struct LevelSource {
     const nl::levelgen::GeneratedLevel* generated = nullptr;
 };
 
-void load(const LevelSource& source, int workers, WorldPtr& out) {
-    nl_world_def def = nl_default_world_def();
-    def.worker_count = workers;
-    REQUIRE(nl_world_create(&def, &out.world) == NL_STATUS_SUCCESS);
-    nl_mesh_id mesh{};
-    if (source.generated) {
-        nl_mesh_def m = nl_default_mesh_def();
-        m.vertices = source.generated->positions.data();
-        m.vertex_count = source.generated->vertex_count();
-        m.indices = source.generated->indices.data();
-        m.triangle_count = source.generated->triangle_count();
-        REQUIRE_MESSAGE(nl_mesh_add(out.world, &m, &mesh) == NL_STATUS_SUCCESS, nl_get_last_error_message());
-    } else {
-        REQUIRE_MESSAGE(nl_mesh_add_obj_file(out.world, source.obj_path.c_str(), nullptr, &mesh) == NL_STATUS_SUCCESS,
-                        nl_get_last_error_message());
-    }
+// The level in a world of `workers` threads.
+std::unique_ptr<nl::World> load(const LevelSource& source, int workers) {
+    auto world = nl::test::make_world(workers);
+    if (source.generated)
+        nl::test::add_level(*world, *source.generated);
+    else
+        nl::test::add_obj_file(*world, source.obj_path);
+    return world;
 }
 
 bool bits_equal(const nl::Vec3& a, const nl::Vec3& b) { return std::memcmp(a.data(), b.data(), 3 * sizeof(float)) == 0; }
@@ -80,9 +69,9 @@ struct Generation {
     nl::LinkGenerationReport report;
 };
 
-Generation generate(const nl::NavMesh& navmesh, nl_world& world, nl::GenerationMethod method) {
+Generation generate(const nl::NavMesh& navmesh, nl::World& world, nl::GenerationMethod method) {
     Generation b;
-    b.links = nl::generate_links(navmesh, world.core->level(), world.core->tasks(), nl::LinkSettings{}, method, b.report,
+    b.links = nl::generate_links(navmesh, world.level(), world.tasks(), nl::LinkSettings{}, method, b.report,
                                  [](float, const char*) { return true; });
     return b;
 }
@@ -90,19 +79,14 @@ Generation generate(const nl::NavMesh& navmesh, nl_world& world, nl::GenerationM
 // Builds the navmesh once (Recast, defaults) and generates its links three ways on the same geometry.
 void check_against_reference(const LevelSource& source, uint32_t& jumps, uint32_t& drops) {
     INFO("level ", source.name);
-    WorldPtr one, two;
-    load(source, 1, one);
-    load(source, 2, two);
-    REQUIRE(nl_world_get_worker_count(one.world) == 1);
-    REQUIRE(nl_world_get_worker_count(two.world) == 2);
-    const nl_navmesh_build_def build = nl_default_navmesh_build_def();
-    nl_navmesh_id id{};
-    REQUIRE_MESSAGE(nl_navmesh_build(two.world, &build, &id) == NL_STATUS_SUCCESS, nl_get_last_error_message());
-    const auto navmesh = two.world->core->navmeshes().navmesh(nl::Handle{id.index1, id.generation});
+    const auto one = load(source, 1), two = load(source, 2);
+    REQUIRE(one->tasks().thread_count() == 1);
+    REQUIRE(two->tasks().thread_count() == 2);
+    const auto navmesh = two->navmeshes().navmesh(nl::test::build_recast_navmesh(*two));
 
-    const Generation grid_1 = generate(*navmesh, *one.world, nl::GenerationMethod::Indexed);
-    const Generation grid_2 = generate(*navmesh, *two.world, nl::GenerationMethod::Indexed);
-    const Generation all_pairs = generate(*navmesh, *one.world, nl::GenerationMethod::BruteForce);
+    const Generation grid_1 = generate(*navmesh, *one, nl::GenerationMethod::Indexed);
+    const Generation grid_2 = generate(*navmesh, *two, nl::GenerationMethod::Indexed);
+    const Generation all_pairs = generate(*navmesh, *one, nl::GenerationMethod::BruteForce);
     jumps = grid_1.report.jump_links;
     drops = grid_1.report.drop_links;
     MESSAGE(source.name, ": ", grid_1.links.size(), " links (", jumps, " jumps, ", drops, " drops) from ",

@@ -1,14 +1,12 @@
 // Link generation on procedural levels with known answers: the level is built from boxes, the
-// navmesh by the Recast builder through the C ABI, the links by the generator.
+// navmesh by the Recast builder, the links by the generator.
 #include <doctest/doctest.h>
-#include <navlink/navlink.h>
 
 #include <sstream>
 
-#include "generated_level_c.h"
+#include "core_world.h"
 #include "link_test_helpers.h"
 #include "links/link_generator.h"
-#include "world.h"
 
 using nl::Link;
 using nl::LinkKind;
@@ -40,19 +38,10 @@ Generated generate(const std::vector<Box>& boxes, const nl::LinkSettings& settin
            nl::GenerationMethod method = nl::GenerationMethod::Indexed, int threads = 2) {
     nl::levelgen::GeneratedLevel level;
     for (const Box& b : boxes) level.add_box(b);
-    nl_world_def def = nl_default_world_def();
-    def.worker_count = threads;
-    nl_world* world = nullptr;
-    REQUIRE(nl_world_create(&def, &world) == NL_STATUS_SUCCESS);
-    REQUIRE(nl::test::add_generated_level(world, level) == NL_STATUS_SUCCESS);
-    const nl_navmesh_build_def build = nl_default_navmesh_build_def();
-    nl_navmesh_id navmesh{};
-    REQUIRE_MESSAGE(nl_navmesh_build(world, &build, &navmesh) == NL_STATUS_SUCCESS, nl_get_last_error_message());
-    const auto mesh_ptr = world->core->navmeshes().navmesh(nl::Handle{navmesh.index1, navmesh.generation});
+    const nl::test::RecastWorld w = nl::test::recast_world(level, threads);
     Generated out;
-    out.links = nl::generate_links(*mesh_ptr, world->core->level(), world->core->tasks(), settings, method, out.report,
+    out.links = nl::generate_links(*w.mesh, w.world->level(), w.world->tasks(), settings, method, out.report,
                                    [](float, const char*) { return true; });
-    nl_world_destroy(world);
     return out;
 }
 

@@ -15,7 +15,6 @@
 //  - drops along every ledge too high to walk; one drop per take-off point per landing surface;
 //  - no jump where walking is about as short (walk <= walk_factor x length + walk_distance).
 #include <doctest/doctest.h>
-#include <navlink/navlink.h>
 
 #include <algorithm>
 #include <cmath>
@@ -30,7 +29,7 @@
 #include <string>
 #include <vector>
 
-#include "generated_level_c.h"
+#include "core_world.h"
 #include "generated_mesh.h"
 #include "link_test_helpers.h"
 #include "independent_link_checker.h"
@@ -39,7 +38,6 @@
 #include "path/path_graph.h"
 #include "path/path_planner.h"
 #include "shared_levels.h"
-#include "world.h"
 
 using nl::Link;
 using nl::LinkKind;
@@ -53,7 +51,6 @@ using nl::levelgen::Box;
 
 namespace {
 
-using nl::test::WorldPtr;
 
 // ---------------------------------------------------------------------------------------------
 // Generating a level
@@ -87,26 +84,21 @@ struct Generated {
     }
 };
 
-// Builds the navmesh with Recast's defaults through the C ABI and generates links with `settings`.
-// `add` registers the level's geometry.
-Generated generate_in_world(const std::string& name, const std::function<void(nl_world*)>& add, const nl::LinkSettings& settings,
+// Builds the navmesh with Recast's defaults and generates links with `settings`. `add` registers the
+// level's geometry.
+Generated generate_in_world(const std::string& name, const std::function<void(nl::World&)>& add, const nl::LinkSettings& settings,
                  nl::GenerationMethod method, int threads) {
-    nl_world_def def = nl_default_world_def();
-    def.worker_count = threads;
-    WorldPtr w;
-    REQUIRE(nl_world_create(&def, &w.world) == NL_STATUS_SUCCESS);
-    add(w.world);
-    const nl_navmesh_build_def build = nl_default_navmesh_build_def();
-    nl_navmesh_id navmesh{};
-    REQUIRE_MESSAGE(nl_navmesh_build(w.world, &build, &navmesh) == NL_STATUS_SUCCESS, nl_get_last_error_message());
+    const auto world = nl::test::make_world(threads);
+    add(*world);
+    const nl::Handle navmesh = nl::test::build_recast_navmesh(*world);
     Generated out;
     out.name = name;
     out.settings = settings;
-    out.navmesh = w.world->core->navmeshes().navmesh(nl::Handle{navmesh.index1, navmesh.generation});
+    out.navmesh = world->navmeshes().navmesh(navmesh);
     REQUIRE(out.navmesh);
     out.agent = out.navmesh->agent();
-    out.triangles = w.world->core->level().world_triangles();
-    out.links = nl::generate_links(*out.navmesh, w.world->core->level(), w.world->core->tasks(), settings, method, out.report,
+    out.triangles = world->level().world_triangles();
+    out.links = nl::generate_links(*out.navmesh, world->level(), world->tasks(), settings, method, out.report,
                                    [](float, const char*) { return true; });
     return out;
 }
@@ -115,10 +107,10 @@ Generated generate(const std::string& name, const std::vector<Box>& boxes, const
            nl::GenerationMethod method = nl::GenerationMethod::Indexed, int threads = 2) {
     return generate_in_world(
         name,
-        [&](nl_world* world) {
+        [&](nl::World& world) {
             nl::levelgen::GeneratedLevel level;
             for (const Box& b : boxes) level.add_box(b);
-            REQUIRE(nl::test::add_generated_level(world, level) == NL_STATUS_SUCCESS);
+            nl::test::add_level(world, level);
         },
         settings, method, threads);
 }
@@ -126,13 +118,7 @@ Generated generate(const std::string& name, const std::vector<Box>& boxes, const
 Generated generate_for_obj(const std::string& path, const nl::LinkSettings& settings = {},
                nl::GenerationMethod method = nl::GenerationMethod::Indexed, int threads = 2) {
     return generate_in_world(
-        path,
-        [&](nl_world* world) {
-            nl_mesh_id mesh{};
-            REQUIRE_MESSAGE(nl_mesh_add_obj_file(world, path.c_str(), nullptr, &mesh) == NL_STATUS_SUCCESS,
-                            nl_get_last_error_message());
-        },
-        settings, method, threads);
+        path, [&](nl::World& world) { nl::test::add_obj_file(world, path); }, settings, method, threads);
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -1,80 +1,68 @@
 // Updating links after the level changes in a box gives exactly what a full generation gives, and
 // casts far fewer rays.
 #include <doctest/doctest.h>
-#include <navlink/navlink.h>
 
+#include <functional>
 #include <string>
 #include <vector>
 
-#include "generated_level_c.h"
+#include "core_errors.h"
+#include "core_world.h"
 
 using nl::levelgen::Box;
 
 namespace {
 
+nl::Aabb aabb_of(const Box& b) {
+    nl::Aabb box;
+    box.min = nl::Vec3(b.min[0], b.min[1], b.min[2]);
+    box.max = nl::Vec3(b.max[0], b.max[1], b.max[2]);
+    return box;
+}
+
+
 struct Scene {
-    nl_world* world = nullptr;
-    nl_navmesh_id navmesh{};
+    std::unique_ptr<nl::World> world = nl::test::make_world(2);
+    nl::Handle navmesh;
     nl::levelgen::GeneratedLevel level = nl::levelgen::generate_default_level(4);
 
     Scene() {
-        REQUIRE(nl_world_create(nullptr, &world) == NL_STATUS_SUCCESS);
         add_boxes(level, 0);
-        const nl_navmesh_build_def build = nl_default_navmesh_build_def();
-        REQUIRE(nl_navmesh_build(world, &build, &navmesh) == NL_STATUS_SUCCESS);
-        nl_link_generation_report report = generate_all();
+        navmesh = nl::test::build_recast_navmesh(*world);
+        nl::LinkGenerationReport report = generate_all();
         full_rays = report.rays_cast;
     }
-    ~Scene() { nl_world_destroy(world); }
 
-    nl_mesh_id add_boxes(const nl::levelgen::GeneratedLevel& boxes, uint32_t flags) {
-        nl_mesh_id id{};
-        REQUIRE(nl::test::add_generated_level(world, boxes, flags, nullptr, &id) == NL_STATUS_SUCCESS);
-        return id;
+    nl::Handle add_boxes(const nl::levelgen::GeneratedLevel& boxes, uint32_t flags,
+                         const nl::Transform& transform = nl::Transform::Identity()) {
+        return nl::test::add_level(*world, boxes, flags, transform);
     }
-    nl_link_generation_report generate_all() {
-        nl_link_generation_report report{};
-        report.size = sizeof report;
-        REQUIRE(nl_navmesh_generate_links(world, navmesh, nullptr, nullptr, nullptr, &report) == NL_STATUS_SUCCESS);
-        return report;
-    }
-    nl_link_generation_report update(const Box& box) {
-        nl_link_generation_report report{};
-        report.size = sizeof report;
-        REQUIRE_MESSAGE(nl_navmesh_update_links_in_box(world, navmesh, box.min, box.max, nullptr, nullptr, &report) ==
-                            NL_STATUS_SUCCESS,
-                        nl_get_last_error_message());
-        return report;
-    }
-    std::vector<nl_link> links() const {
-        uint32_t count = 0;
-        nl_navmesh_get_links(world, navmesh, nullptr, 0, &count);
-        std::vector<nl_link> out(count, nl_link_init());
-        REQUIRE(nl_navmesh_get_links(world, navmesh, out.data(), count, &count) == NL_STATUS_SUCCESS);
-        return out;
-    }
+    nl::LinkGenerationReport generate_all() { return world->generate_links(navmesh, nl::LinkSettings{}, {}, nl::test::keep_going); }
+    nl::LinkGenerationReport update(const Box& box) { return world->update_links_in_box(navmesh, aabb_of(box), nl::test::keep_going); }
+    std::vector<nl::StoredLink> links() const { return nl::test::links_of(*world, navmesh); }
     // Updates in `box`, then checks the result against a full generation of the same state.
     void check_update_equals_full(const Box& box, const std::string& what) {
         INFO(what);
-        const nl_link_generation_report partial = update(box);
-        const auto updated = links();
-        const nl_link_generation_report full = generate_all();
-        const auto reference = links();
-        REQUIRE(updated.size() == reference.size());
-        for (size_t i = 0; i < updated.size(); ++i) {
-            CHECK(updated[i].kind == reference[i].kind);
-            CHECK(updated[i].bidirectional == reference[i].bidirectional);
-            CHECK(updated[i].requirements.clearance_width == reference[i].requirements.clearance_width);
-            CHECK(updated[i].requirements.gap == reference[i].requirements.gap);
-            CHECK(updated[i].requirements.length == reference[i].requirements.length);
-            CHECK(updated[i].requirements.rise == reference[i].requirements.rise);
-            CHECK(updated[i].requirements.drop == reference[i].requirements.drop);
-            CHECK(updated[i].start_polygon == reference[i].start_polygon);
-            CHECK(updated[i].end_polygon == reference[i].end_polygon);
+        const nl::LinkGenerationReport partial = update(box);
+        const auto updated_links = links();
+        const nl::LinkGenerationReport full = generate_all();
+        const auto reference_links = links();
+        REQUIRE(updated_links.size() == reference_links.size());
+        for (size_t i = 0; i < updated_links.size(); ++i) {
+            const nl::Link &updated = updated_links[i].link, &reference = reference_links[i].link;
+            CHECK(updated.kind == reference.kind);
+            CHECK(updated.bidirectional == reference.bidirectional);
+            CHECK(updated.requirements.clearance_width == reference.requirements.clearance_width);
+            CHECK(updated.requirements.gap == reference.requirements.gap);
+            CHECK(updated.requirements.length == reference.requirements.length);
+            CHECK(updated.requirements.rise == reference.requirements.rise);
+            CHECK(updated.requirements.drop == reference.requirements.drop);
+            CHECK(updated.start_polygon == reference.start_polygon);
+            CHECK(updated.end_polygon == reference.end_polygon);
             for (int k = 0; k < 3; ++k) {
-                CHECK(updated[i].start[k] == reference[i].start[k]);
-                CHECK(updated[i].end[k] == reference[i].end[k]);
-                CHECK(updated[i].apex[k] == reference[i].apex[k]);
+                CHECK(updated.start[k] == reference.start[k]);
+                CHECK(updated.end[k] == reference.end[k]);
+                CHECK(updated.apex[k] == reference.apex[k]);
             }
         }
         CHECK(partial.jump_links == full.jump_links);
@@ -106,7 +94,7 @@ TEST_CASE("a wall put across a gap, then taken away: updates equal full generati
     nl::levelgen::GeneratedLevel wall;
     const Box wall_box{{middle - 0.2f, -6.0f, -0.5f}, {middle + 0.2f, 4.0f, 6.5f}};
     wall.add_box(wall_box);
-    const nl_mesh_id id = s.add_boxes(wall, 0);
+    const nl::Handle id = s.add_boxes(wall, 0);
     // An update that does not look where the wall is keeps the jumps through it: the box matters.
     const Box elsewhere{{-30, -30, -30}, {-29, -29, -29}};
     s.update(elsewhere);
@@ -114,7 +102,7 @@ TEST_CASE("a wall put across a gap, then taken away: updates equal full generati
     s.check_update_equals_full(wall_box, "wall added");
     CHECK(s.links().size() < before);  // the jumps over that gap are gone
 
-    REQUIRE(nl_mesh_remove(s.world, id) == NL_STATUS_SUCCESS);
+    s.world->level().remove_mesh(id);
     s.check_update_equals_full(wall_box, "wall removed");
     CHECK(s.links().size() == before);
 }
@@ -140,12 +128,11 @@ TEST_CASE("a movable crate moved along a platform edge: the update over both pla
     crate.add_box(at_origin);
     float before[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, platform.min[0] + 0.3f, platform.max[1], 1.5f, 1};
     float after[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, platform.min[0] + 0.3f, platform.max[1], 4.5f, 1};
-    nl_mesh_id id{};
-    REQUIRE(nl::test::add_generated_level(s.world, crate, NL_MESH_MOVABLE, before, &id) == NL_STATUS_SUCCESS);
+    const nl::Handle id = s.add_boxes(crate, nl::kMeshMovable, nl::Transform(Eigen::Map<const Eigen::Matrix4f>(before)));
     const Box first{{before[12] - 0.6f, before[13], before[14] - 0.6f}, {before[12] + 0.6f, before[13] + 1.8f, before[14] + 0.6f}};
     s.check_update_equals_full(first, "crate placed");
 
-    REQUIRE(nl_mesh_set_transform(s.world, id, after) == NL_STATUS_SUCCESS);
+    s.world->level().set_transform(id, nl::Transform(Eigen::Map<const Eigen::Matrix4f>(after)));
     const Box both{{first.min[0], first.min[1], first.min[2]}, {first.max[0], first.max[1], after[14] + 0.6f}};
     s.check_update_equals_full(both, "crate moved");
 }
@@ -156,22 +143,17 @@ TEST_CASE("an update needs a prior generation and a proper box; a far-away chang
     const Box far_box{{200, 0, 200}, {201, 1, 201}};
     far.add_box(far_box);
     s.add_boxes(far, 0);
-    const nl_link_generation_report report = s.update(grown(far_box, 0.1f));
+    const nl::LinkGenerationReport report = s.update(grown(far_box, 0.1f));
     CHECK(report.rays_cast == 0);
     CHECK(report.jump_links + report.drop_links == s.links().size());
 
-    const float bad_min[3] = {1, 1, 1}, bad_max[3] = {0, 0, 0};
-    CHECK(nl_navmesh_update_links_in_box(s.world, s.navmesh, bad_min, bad_max, nullptr, nullptr, nullptr) ==
-          (NL_STATUS_FAILURE | NL_STATUS_INVALID_ARGUMENT));
-    CHECK(nl_navmesh_update_links_in_box(s.world, s.navmesh, nullptr, bad_max, nullptr, nullptr, nullptr) ==
-          (NL_STATUS_FAILURE | NL_STATUS_INVALID_ARGUMENT));
+    // A box that is not one (min above max, a corner missing) is refused by the C layer, which reads
+    // it: abi.links.update_in_box (INVALID_ARGUMENT naming box, box_min, box_max).
 
     // A navmesh never generated: nothing to update.
-    nl_navmesh_id other{};
-    const nl_navmesh_build_def build = nl_default_navmesh_build_def();
-    REQUIRE(nl_navmesh_build(s.world, &build, &other) == NL_STATUS_SUCCESS);
-    CHECK(nl_navmesh_update_links_in_box(s.world, other, far_box.min, far_box.max, nullptr, nullptr, nullptr) ==
-          (NL_STATUS_FAILURE | NL_STATUS_NOT_FOUND));
+    const nl::Handle other = nl::test::build_recast_navmesh(*s.world);
+    CHECK(nl::test::code_of([&] { s.world->update_links_in_box(other, aabb_of(far_box), nl::test::keep_going); }) ==
+          nl::ErrorCode::NotFound);
 }
 
 TEST_CASE("an update never brings back generated links that were removed or replaced by a load") {
@@ -180,25 +162,20 @@ TEST_CASE("an update never brings back generated links that were removed or repl
     const size_t generated = s.links().size();
     REQUIRE(generated > 0);
 
-    uint32_t removed = 0;
-    REQUIRE(nl_navmesh_remove_generated_links(s.world, s.navmesh, &removed) == NL_STATUS_SUCCESS);
+    const size_t removed = s.world->navmeshes().remove_generated_links(s.navmesh);
     CHECK(removed == generated);
-    CHECK(nl_navmesh_update_links_in_box(s.world, s.navmesh, anywhere.min, anywhere.max, nullptr, nullptr, nullptr) ==
-          (NL_STATUS_FAILURE | NL_STATUS_NOT_FOUND));
-    CHECK(std::string(nl_get_last_error_message()).find("removed") != std::string::npos);
+    std::string message;
+    CHECK(nl::test::code_of([&] { s.update(anywhere); }, &message) == nl::ErrorCode::NotFound);
+    CHECK(message.find("removed") != std::string::npos);
     CHECK(s.links().empty());
 
     // Generated again, saved, loaded back: the loaded links stay as loaded.
     s.generate_all();
-    size_t length = 0;
-    REQUIRE(nl_navmesh_save_links_json(s.world, s.navmesh, nullptr, 0, &length) == NL_STATUS_SUCCESS);
-    std::string json(length + 1, '\0');
-    REQUIRE(nl_navmesh_save_links_json(s.world, s.navmesh, json.data(), json.size(), &length) == NL_STATUS_SUCCESS);
-    REQUIRE(nl_navmesh_load_links_json(s.world, s.navmesh, json.data(), length, nullptr) == NL_STATUS_SUCCESS);
+    const std::string json = nl::test::save_links_json(*s.world, s.navmesh);
+    nl::test::load_links_json(*s.world, s.navmesh, json);
     const auto loaded = s.links();
     CHECK(loaded.size() == generated);
-    CHECK(nl_navmesh_update_links_in_box(s.world, s.navmesh, anywhere.min, anywhere.max, nullptr, nullptr, nullptr) ==
-          (NL_STATUS_FAILURE | NL_STATUS_NOT_FOUND));
+    CHECK(nl::test::code_of([&] { s.update(anywhere); }) == nl::ErrorCode::NotFound);
     const auto after = s.links();
     REQUIRE(after.size() == loaded.size());
     for (size_t i = 0; i < after.size(); ++i) CHECK(after[i].id.index1 == loaded[i].id.index1);
