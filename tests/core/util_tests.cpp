@@ -65,6 +65,28 @@ TEST_CASE("slot map: handles from a map with another tag are refused") {
     CHECK(mine.size() == 1);
 }
 
+TEST_CASE("slot map: a handle of another kind is refused, even in a slot of the same number and generation") {
+    nl::SlotMap<int> navmeshes(5, nl::HandleKind::NavMesh), agents(5, nl::HandleKind::Agent);
+    const nl::Handle navmesh = navmeshes.insert(1);
+    const nl::Handle agent = agents.insert(2);
+    CHECK((navmesh.index1 & nl::kHandleSlotMask) == (agent.index1 & nl::kHandleSlotMask));  // the same slot
+    CHECK(navmesh.generation == agent.generation);
+    CHECK(navmesh != agent);
+    CHECK(agents.find(navmesh) == nullptr);
+    CHECK_FALSE(agents.erase(navmesh));
+    CHECK(*agents.find(agent) == 2);  // untouched
+    CHECK(navmeshes.find(agent) == nullptr);
+    CHECK(agents.handle_at(0) == agent);
+    // Removed handles are kept by slot, whatever the kind bits.
+    nl::RemovedHandles removed;
+    removed.add(agent);
+    CHECK(removed.contains(agent));
+    CHECK(agents.erase(agent));
+    const nl::Handle again = agents.insert(3);  // the slot again, its kind kept
+    CHECK(again.index1 == agent.index1);
+    CHECK_FALSE(removed.contains(again));
+}
+
 TEST_CASE("slot map: a slot whose generations are used up is retired, so no handle ever comes back to life") {
     nl::SlotMap<int> map(5);
     const nl::Handle first = map.insert(0);
