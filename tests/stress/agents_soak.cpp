@@ -30,25 +30,19 @@
 
 #include "generated_level_c.h"
 #include "level_generator.h"
+#include "soak_checks.h"
 
 namespace {
 
 using Clock = std::chrono::steady_clock;
 
-std::atomic<int> failures{0};
+nl::test::SoakFailures soak("navlink-agents-soak");
 
-void fail(const std::string& what) {
-    if (failures.fetch_add(1) < 20) std::fprintf(stderr, "navlink-agents-soak: %s\n", what.c_str());
-}
-
-// A failure outside `allowed` fails the soak, naming the call.
+void fail(const std::string& what) { soak.fail(what); }
 bool expect(nl_status status, const char* call, std::initializer_list<nl_status> allowed = {}) {
-    if (!NL_FAILED(status)) return true;
-    for (nl_status a : allowed)
-        if (status == (NL_STATUS_FAILURE | a)) return false;
-    fail(std::string(call) + " returned " + nl_status_string(status) + ": " + nl_get_last_error_message());
-    return false;
+    return soak.expect(status, call, allowed);
 }
+using Worker = nl::test::SoakWorker;
 
 struct Options {
     uint32_t agents = 1000;
@@ -58,12 +52,6 @@ struct Options {
     double stall = 60;
 };
 
-// What each thread has done; the watchdog reads `steps` to see that it still moves.
-struct Worker {
-    const char* name;
-    std::atomic<uint64_t> steps{0};
-    std::atomic<const char*> doing{"starting"};
-};
 
 float random_in(std::mt19937& rng, float lo, float hi) { return std::uniform_real_distribution<float>(lo, hi)(rng); }
 
@@ -129,7 +117,7 @@ void step_crowd(Soak& s, Worker& me, const Options& o, Tally& tally, std::atomic
     std::vector<nl_agent_info> infos;
     const Clock::time_point end = Clock::now() + std::chrono::duration_cast<Clock::duration>(
                                                      std::chrono::duration<double>(o.seconds));
-    for (uint64_t step = 0; step < o.steps && Clock::now() < end && failures == 0; ++step) {
+    for (uint64_t step = 0; step < o.steps && Clock::now() < end && soak.count() == 0; ++step) {
         me.doing = "nl_world_step";
         expect(nl_world_step(s.world, 1.0f / 30.0f), "nl_world_step");
         me.doing = "nl_world_get_agent_events";
@@ -438,8 +426,8 @@ int main(int argc, char** argv) {
         fail("the link edits never reached an agent's path");
     if (steps_done >= 100 && tally.take_offs == 0) fail("no agent took a link");
     nl_world_destroy(s.world);
-    if (failures) {
-        std::fprintf(stderr, "navlink-agents-soak: %d failures\n", failures.load());
+    if (soak.count()) {
+        std::fprintf(stderr, "navlink-agents-soak: %d failures\n", soak.count());
         return 1;
     }
     std::printf("navlink-agents-soak: passed\n");

@@ -31,33 +31,20 @@
 #include "cell_navmesh.h"
 #include "generated_level_c.h"
 #include "level_generator.h"
+#include "soak_checks.h"
 
 namespace {
 
 using Clock = std::chrono::steady_clock;
 
-std::atomic<int> failures{0};
+nl::test::SoakFailures soak("navlink-world-soak");
 
-void fail(const std::string& what) {
-    if (failures.fetch_add(1) < 20) std::fprintf(stderr, "navlink-world-soak: %s\n", what.c_str());
-}
-
-// A failure outside `allowed` (successes are always allowed) fails the soak, naming the call.
+void fail(const std::string& what) { soak.fail(what); }
 bool expect(nl_status status, const char* call, std::initializer_list<nl_status> allowed = {}) {
-    if (!NL_FAILED(status)) return true;  // success, perhaps with detail bits (a partial path)
-    for (nl_status a : allowed) {
-        if (status == (NL_STATUS_FAILURE | a)) return false;
-    }
-    fail(std::string(call) + " returned " + nl_status_string(status) + ": " + nl_get_last_error_message());
-    return false;
+    return soak.expect(status, call, allowed);
 }
+using Worker = nl::test::SoakWorker;
 
-// What each thread has done; the watchdog reads `steps` to see that it still moves.
-struct Worker {
-    const char* name;
-    std::atomic<uint64_t> steps{0};
-    std::atomic<const char*> doing{"starting"};
-};
 
 struct Round {
     nl_world* world = nullptr;
@@ -509,6 +496,6 @@ int main(int argc, char** argv) {
         }
     }
     for (int32_t workers : worker_counts) run_round(workers, seconds, stall);
-    std::printf("failures=%d\n", failures.load());
-    return failures.load() == 0 ? 0 : 1;
+    std::printf("failures=%d\n", soak.count());
+    return soak.count() == 0 ? 0 : 1;
 }
