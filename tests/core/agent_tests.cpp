@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "core_world.h"
 #include "generated_mesh.h"
 #include "level_generator.h"
 #include "world/world.h"
@@ -309,4 +310,47 @@ TEST_CASE("bad input: a clear error, or a failed agent with its event; never a c
     agents.remove(agent);
     CHECK_FALSE(agents.contains(agent));
     CHECK_THROWS_AS(agents.remove(agent), nl::Error);
+}
+
+TEST_CASE("on a Recast navmesh the body never pops: no step moves it farther than its speed and fall allow") {
+    // Recast's detail surface stands up to a few decimetres above the level's floor, where link ends
+    // lie: the feet ease between the two before a take-off and after a landing.
+    const nl::levelgen::GeneratedLevel level = nl::levelgen::generate_default_level(1);
+    nl::test::RecastWorld r = nl::test::recast_world(level, 1);
+    r.world->generate_links(r.navmesh, nl::LinkSettings{}, {}, nl::test::keep_going);
+    nl::AgentDef def;
+    def.navmesh = r.navmesh;
+    def.position = Vec3(level.marker("start")->position);
+    def.capabilities.max_jump_distance = 3.5f;  // the demo's long jumper
+    def.capabilities.max_jump_height = 1.5f;
+    def.capabilities.max_drop_height = 4.0f;
+    const Handle agent = r.world->agents().add(r.world->navmeshes(), def);
+    r.world->agents().set_destination(r.world->navmeshes(), agent, Vec3(level.marker("goal")->position));
+
+    const float dt = 1.0f / 60.0f;
+    Vec3 before = r.world->agents().info(agent).position;
+    float worst_rise = 0.0f, worst_drop = 0.0f, worst_across = 0.0f;
+    int take_offs = 0;
+    bool arrived = false, was_walking = false;
+    for (int step = 0; step < 60 * 60 && !arrived; ++step) {
+        r.world->step(dt);
+        for (const nl::AgentEvent& e : r.world->agents().events()) take_offs += e.kind == AgentEventKind::LinkStarted;
+        const nl::AgentInfo a = r.world->agents().info(agent);
+        arrived = a.state == AgentState::Arrived;
+        const Vec3 move = a.position - before;
+        const bool walked = a.state == AgentState::Walking && was_walking;
+        was_walking = a.state == AgentState::Walking;
+        if (walked) worst_across = std::max(worst_across, distance_xz(a.position, before) / dt);
+        // Up at most a jump's launch speed (or a walk up a slope) in one step; down at most a fall's.
+        worst_rise = std::max(worst_rise, move.y() / dt);
+        worst_drop = std::max(worst_drop, -move.y() / dt);
+        before = a.position;
+    }
+    CHECK(arrived);
+    CHECK(take_offs == 3);  // two jumps and a drop, as navlink demo plans it
+    CHECK(worst_across <= def.max_speed * 1.01f);
+    // A jump's launch: up to sqrt(2 g h) for an arc of 1.5 m over the higher end (about 6.6 m/s).
+    CHECK(worst_rise < 8.0f);
+    // A 2 m drop ends at sqrt(2 g 2) = 6.3 m/s; a pop of 0.3 m in one step would read 18 m/s.
+    CHECK(worst_drop < 8.0f);
 }
