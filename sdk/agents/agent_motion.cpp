@@ -61,24 +61,7 @@ dtObstacleAvoidanceParams avoidance_params() {
 // The neighbours an agent steers around: the nearest kMaxNeighbours within its range (nearest first,
 // the lower index on a tie, so the answer does not depend on the grid's order).
 size_t nearest_neighbours(uint32_t self, const CrowdSnapshot& crowd, float range, std::array<uint32_t, kMaxNeighbours>& out) {
-    std::array<std::pair<float, uint32_t>, kMaxNeighbours> best;
-    size_t count = 0;
-    const Vec3& p = crowd.positions[self];
-    crowd.grid.visit(p, range, [&](uint32_t j) {
-        if (j == self) return;
-        const float d = distance_xz(p, crowd.positions[j]);
-        const std::pair<float, uint32_t> candidate{d, j};
-        if (count < kMaxNeighbours) {
-            best[count++] = candidate;
-        } else if (candidate < best[count - 1]) {
-            best[count - 1] = candidate;
-        } else {
-            return;
-        }
-        std::sort(best.begin(), best.begin() + count);
-    });
-    for (size_t k = 0; k < count; ++k) out[k] = best[k].second;
-    return count;
+    return crowd.grid.nearest(crowd.positions[self], range, self, out.data(), out.size());
 }
 
 void fly(AgentBody& a, float dt) {
