@@ -216,9 +216,14 @@ void move_agent(AgentBody& a, uint32_t self, float dt, const NavMesh& navmesh, c
     a.position = moved.position;
     a.polygon = moved.polygon;
     if (moved.blocked && dt > 0.0f) {
-        // Slid along a wall: keep only the velocity the wall left.
+        // Slid along a wall: keep only the velocity the wall left, never more than the body had. (The
+        // wall also stops the push it was given: taking that away as well from where it got to
+        // turned a push into a speed the other way, beyond max_speed in a crowd against a wall.)
         const Vec3 went = moved.position - before - push;
-        a.velocity = Vec3(went.x() / dt, 0.0f, went.z() / dt);
+        Vec3 slid(went.x() / dt, 0.0f, went.z() / dt);
+        const float had = a.velocity.norm(), speed = slid.norm();
+        if (speed > had) slid = speed > 0.0f ? Vec3(slid * (had / speed)) : Vec3(Vec3::Zero());
+        a.velocity = slid;
     }
 }
 
