@@ -37,12 +37,14 @@
 // - Timing: every side runs the same steps at the same dt (default 0.05 s) in lockstep, one step of
 //   each in turn (the order rotating), so a shared machine's interruptions fall on all of them
 //   alike. After --warm steps (default 100, untimed), --steps steps (default 200) are timed: the
-//   wall time of nl_world_step and of dtCrowd::update alone (not the host's re-targeting).
+//   wall time of each nl_world_step and of each dtCrowd::update alone (not the host's re-targeting);
+//   a side's figure is its median step (robust to the bursts of other work on a shared machine;
+//   --verbose prints the means too).
 //
 // One row per level and agent count:
 //   level polys agents nl_1t_us nl_2t_us dcrowd_us dc/nl1 dc/nl2 nl1/nl2 arrivals (nl, dc) fails_nl
 //   waiting (nl, dc) moving (nl, dc) same
-// *_us: microseconds per agent-step (timed wall time / steps / agents). dc/nl1 and dc/nl2: how many
+// *_us: microseconds per agent-step (the median timed step's wall time / agents). dc/nl1 and dc/nl2: how many
 // times faster NavLink is than DetourCrowd (the target: >= 1 on one thread, >= 1.8 on two).
 // arrivals: in the timed steps. waiting: agents at the end still waiting for a path (NavLink
 // NL_AGENT_WAITING; DetourCrowd a target requesting or waiting for its path queue). moving: agents at
@@ -51,7 +53,8 @@
 // levels are far too small for 1,000 bodies of radius 0.6 m; undulating and --field levels are not). same: the two NavLink worlds ended bit-identical (positions,
 // velocities, states), as nl_world_step promises for any thread count.
 //
-// --only nl1|nl2|dcrowd runs one side alone (for a profiler); --field N adds the procedural level
+// --only nl1|nl2|dcrowd runs one side alone (for a profiler); --paths-per-step N sets NavLink's
+// agent_paths_per_step (default: the world's, 32); --field N adds the procedural level
 // nl::levelgen::generate_large_level(1, N) (N x N blocks of 12 m), named "large-N".
 #include <DetourCommon.h>
 #include <DetourCrowd.h>
@@ -84,7 +87,8 @@ struct Options {
     float dt = 0.05f;
     std::vector<int> counts{100, 1000, 5000};
     bool nl1 = true, nl2 = true, dcrowd = true;
-    bool verbose = false;  // NavLink's event counts on stderr
+    uint32_t paths_per_step = 0;  // NavLink's agent_paths_per_step; 0: the world's default
+    bool verbose = false;  // NavLink's event counts, both sides' mean speed and distance left, on stderr
 };
 
 // Agent i's k-th point (k = 0: its start), the same for every side.
@@ -129,7 +133,7 @@ struct NavLinkSide {
     std::vector<uint32_t> trips;  // destinations drawn so far, per agent
     std::vector<nl_agent_event> events;
     std::vector<nl_agent_info> infos;
-    double ms = 0.0;
+    std::vector<double> step_ms;  // the timed steps
     long arrivals = 0, failures = 0, refused = 0;
     long kinds[8] = {};    // timed events by kind
     long reasons[8] = {};  // timed replans by reason
@@ -139,10 +143,12 @@ struct NavLinkSide {
     NavLinkSide& operator=(const NavLinkSide&) = delete;
     ~NavLinkSide() { nl_world_destroy(world); }
 
-    bool setup(const nl::bench::RecastLevel& level, int workers, int count, const Destinations& where) {
+    bool setup(const nl::bench::RecastLevel& level, int workers, int count, const Destinations& where,
+               uint32_t paths_per_step) {
         nl_world_def def = nl_default_world_def();
         def.worker_count = workers;
         def.path_worker_count = 0;
+        if (paths_per_step > 0) def.agent_paths_per_step = paths_per_step;
         if (NL_FAILED(nl_world_create(&def, &world))) return fail(level.name, "nl_world_create");
         uint32_t polygons = 0;
         if (!nl::bench::add_navlink_navmesh(world, level, &navmesh, &polygons)) return false;
@@ -176,7 +182,7 @@ struct NavLinkSide {
         const double t0 = nl::samples::now_ms();
         nl_world_step(world, dt);
         const double t1 = nl::samples::now_ms();
-        if (timed) ms += t1 - t0;
+        if (timed) step_ms.push_back(t1 - t0);
         uint32_t count = 0;
         nl_world_get_agent_events(world, nullptr, 0, &count);
         events.assign(count, nl_agent_event_init());
@@ -221,7 +227,7 @@ struct DetourCrowdSide {
     const nl::bench::DetourMesh* mesh = nullptr;
     dtCrowd* crowd = dtAllocCrowd();
     std::vector<uint32_t> trips;
-    double ms = 0.0;
+    std::vector<double> step_ms;  // the timed steps
     long arrivals = 0, refused = 0;
 
     DetourCrowdSide() = default;
@@ -276,7 +282,7 @@ struct DetourCrowdSide {
         const double t0 = nl::samples::now_ms();
         crowd->update(dt, nullptr);
         const double t1 = nl::samples::now_ms();
-        if (timed) ms += t1 - t0;
+        if (timed) step_ms.push_back(t1 - t0);
         for (int i = 0; i < crowd->getAgentCount(); ++i) {
             const dtCrowdAgent* ag = crowd->getAgent(i);
             if (!ag->active || ag->targetState != DT_CROWDAGENT_TARGET_VALID) continue;
@@ -302,6 +308,17 @@ struct DetourCrowdSide {
     }
 };
 
+double median(std::vector<double> values) {
+    std::sort(values.begin(), values.end());
+    const size_t n = values.size();
+    return n == 0 ? std::nan("") : n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+double mean(const std::vector<double>& values) {
+    double total = 0.0;
+    for (const double v : values) total += v;
+    return values.empty() ? std::nan("") : total / values.size();
+}
+
 std::string figure(double value, const char* format = "%.2f") {
     if (!(value == value)) return "-";
     char text[32];
@@ -322,8 +339,8 @@ bool run(nl::bench::RecastLevel& level, uint32_t seed, const Options& options) {
     for (const int count : options.counts) {
         NavLinkSide nl1, nl2;
         DetourCrowdSide dc;
-        if (options.nl1 && !nl1.setup(level, 1, count, where)) return false;
-        if (options.nl2 && !nl2.setup(level, 2, count, where)) return false;
+        if (options.nl1 && !nl1.setup(level, 1, count, where, options.paths_per_step)) return false;
+        if (options.nl2 && !nl2.setup(level, 2, count, where, options.paths_per_step)) return false;
         if (options.dcrowd && !dc.setup(level, detour, count, where)) return false;
         const int total = options.warm + options.steps;
         for (int s = 0; s < total; ++s) {
@@ -338,10 +355,10 @@ bool run(nl::bench::RecastLevel& level, uint32_t seed, const Options& options) {
         }
         if (options.nl1) nl1.read_infos();
         if (options.nl2) nl2.read_infos();
-        const double per = 1000.0 / (double(options.steps) * count);
         const double nan = std::nan("");
-        const double us1 = options.nl1 ? nl1.ms * per : nan, us2 = options.nl2 ? nl2.ms * per : nan;
-        const double usd = options.dcrowd ? dc.ms * per : nan;
+        const double us1 = options.nl1 ? median(nl1.step_ms) * 1000.0 / count : nan;
+        const double us2 = options.nl2 ? median(nl2.step_ms) * 1000.0 / count : nan;
+        const double usd = options.dcrowd ? median(dc.step_ms) * 1000.0 / count : nan;
         const NavLinkSide& nl = options.nl1 ? nl1 : nl2;
         const bool any_nl = options.nl1 || options.nl2;
         std::printf("%-18s %6d %6d %9s %9s %9s %7s %7s %7s %7s %6s %6s %6s %6s %6s %6s %7s %6s %5s\n", level.name.c_str(),
@@ -366,6 +383,11 @@ bool run(nl::bench::RecastLevel& level, uint32_t seed, const Options& options) {
                          nl.reasons[NL_AGENT_REASON_LINK_GONE], nl.reasons[NL_AGENT_REASON_WORLD_CHANGED],
                          nl.reasons[NL_AGENT_REASON_OFF_PATH]);
         if (options.verbose) {
+            const double nl1_mean = options.nl1 ? mean(nl1.step_ms) * 1000.0 / count : nan;
+            const double nl2_mean = options.nl2 ? mean(nl2.step_ms) * 1000.0 / count : nan;
+            const double dc_mean = options.dcrowd ? mean(dc.step_ms) * 1000.0 / count : nan;
+            std::fprintf(stderr, "  means over the timed steps (us per agent-step): NavLink 1t %s, 2t %s, DetourCrowd %s\n",
+                         figure(nl1_mean).c_str(), figure(nl2_mean).c_str(), figure(dc_mean).c_str());
             double nl_speed = 0, nl_left = 0, dc_speed = 0, dc_left = 0;
             for (const nl_agent_info& a : nl.infos) {
                 nl_speed += std::hypot(a.velocity[0], a.velocity[2]);
@@ -376,8 +398,10 @@ bool run(nl::bench::RecastLevel& level, uint32_t seed, const Options& options) {
                 dc_speed += dtVlen(ag->vel);
                 dc_left += std::sqrt(dtVdist2DSqr(ag->npos, ag->targetPos));
             }
-            std::fprintf(stderr, "  at the end: mean speed NavLink %.2f DetourCrowd %.2f m/s; mean distance left %.1f / %.1f m\n",
-                         nl_speed / count, dc_speed / count, nl_left / count, dc_left / count);
+            if (any_nl) std::fprintf(stderr, "  at the end, NavLink: mean speed %.2f m/s, mean distance left %.1f m\n", nl_speed / count, nl_left / count);
+            if (options.dcrowd)
+                std::fprintf(stderr, "  at the end, DetourCrowd: mean speed %.2f m/s, mean distance left %.1f m\n", dc_speed / count,
+                             dc_left / count);
         }
         if (nl.refused + dc.refused > 0)
             std::fprintf(stderr, "navlink-bench-agents: %s: destinations refused: NavLink %ld, Detour %ld\n", level.name.c_str(),
@@ -389,7 +413,8 @@ bool run(nl::bench::RecastLevel& level, uint32_t seed, const Options& options) {
 int usage() {
     std::fprintf(stderr,
                  "usage: navlink-bench-agents [--agents N,N,...] [--warm STEPS] [--steps STEPS] [--dt SECONDS]\n"
-                 "                            [--only nl1|nl2|dcrowd] [--verbose] [--field N] [LEVEL.obj...]\n");
+                 "                            [--only nl1|nl2|dcrowd] [--paths-per-step N] [--verbose]\n"
+                 "                            [--field N] [LEVEL.obj...]\n");
     return 2;
 }
 
@@ -432,6 +457,9 @@ int main(int argc, char** argv) {
                 options.counts.push_back(int(count));
             }
             if (options.counts.empty()) return usage();
+        } else if (arg == "--paths-per-step") {
+            if (!number(1, 1000000, n)) return usage();
+            options.paths_per_step = uint32_t(n);
         } else if (arg == "--verbose") {
             options.verbose = true;
         } else if (arg == "--only") {
