@@ -65,24 +65,7 @@ dtObstacleAvoidanceParams avoidance_params() {
 // The neighbours an agent steers around: the nearest kMaxNeighbours within its range (nearest first,
 // the lower index on a tie, so the answer does not depend on the grid's order).
 size_t nearest_neighbours(uint32_t self, const CrowdSnapshot& crowd, float range, std::array<uint32_t, kMaxNeighbours>& out) {
-    std::array<std::pair<float, uint32_t>, kMaxNeighbours> best;
-    size_t count = 0;
-    const Vec3& p = crowd.positions[self];
-    crowd.grid.visit(p, range, [&](uint32_t j) {
-        if (j == self) return;
-        const float d = distance_xz(p, crowd.positions[j]);
-        const std::pair<float, uint32_t> candidate{d, j};
-        if (count < kMaxNeighbours) {
-            best[count++] = candidate;
-        } else if (candidate < best[count - 1]) {
-            best[count - 1] = candidate;
-        } else {
-            return;
-        }
-        std::sort(best.begin(), best.begin() + count);
-    });
-    for (size_t k = 0; k < count; ++k) out[k] = best[k].second;
-    return count;
+    return crowd.grid.nearest(crowd.positions[self], range, self, out.data(), out.size());
 }
 
 void fly(AgentBody& a, float dt) {
@@ -255,9 +238,14 @@ void move_agent(AgentBody& a, uint32_t self, float dt, const NavMesh& navmesh, c
     a.walked_since_landing += distance_xz(before, moved.position);
     a.position.y() = eased_height(a, moved.position, target, distance_xz(moved.position, target.position));
     if (moved.blocked && dt > 0.0f) {
-        // Slid along a wall: keep only the velocity the wall left.
+        // Slid along a wall: keep only the velocity the wall left, never more than the body had. (The
+        // wall also stops the push it was given: taking that away as well from where it got to
+        // turned a push into a speed the other way, beyond max_speed in a crowd against a wall.)
         const Vec3 went = moved.position - before - push;
-        a.velocity = Vec3(went.x() / dt, 0.0f, went.z() / dt);
+        Vec3 slid(went.x() / dt, 0.0f, went.z() / dt);
+        const float had = a.velocity.norm(), speed = slid.norm();
+        if (speed > had) slid = speed > 0.0f ? Vec3(slid * (had / speed)) : Vec3(Vec3::Zero());
+        a.velocity = slid;
     }
 }
 

@@ -99,7 +99,9 @@ Handle Agents::add(const NavMeshRegistry& navmeshes, const AgentDef& def) {
     body.def = def;
     body.polygon = locate(*navmesh, def.position, def.capabilities.radius, "position", body.position);
     std::unique_lock lock(mutex_);
-    agents_.reserve(agents_.size() + 1);  // nothing may throw once the id is taken
+    // Nothing may throw once the id is taken. Grown geometrically: adding n agents one by one
+    // copies O(n) bodies in all, not O(n^2).
+    if (agents_.size() == agents_.capacity()) agents_.reserve(std::max<size_t>(16, 2 * agents_.capacity()));
     const Handle id = ids_.insert(static_cast<uint32_t>(agents_.size()));
     body.id = id;
     agents_.push_back(std::move(body));

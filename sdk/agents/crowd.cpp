@@ -47,7 +47,6 @@ void snapshot_crowd(const std::vector<AgentBody>& agents, CrowdSnapshot& crowd) 
     crowd.grounded.resize(n);
     crowd.arrived.resize(n);
     crowd.max_radius = 0.0f;
-    float widest = 0.0f;
     for (size_t i = 0; i < n; ++i) {
         const AgentBody& a = agents[i];
         crowd.positions[i] = a.position;
@@ -57,9 +56,11 @@ void snapshot_crowd(const std::vector<AgentBody>& agents, CrowdSnapshot& crowd) 
         crowd.arrived[i] = a.state == AgentState::Arrived;
         if (!crowd.grounded[i]) continue;
         crowd.max_radius = std::max(crowd.max_radius, crowd.radii[i]);
-        widest = std::max(widest, crowd.radii[i] * 12.0f);
     }
-    crowd.grid.build(crowd.positions, crowd.grounded, std::max(widest, 1.0f));
+    // Cells three radii wide, as DetourCrowd's proximity grid: a body's contacts lie in the 2 x 2 cells
+    // around it, and the nearest neighbours of a body in a crowd within the next ring (a cell as wide
+    // as the avoidance range, 12 radii, held hundreds of bodies each in a dense crowd).
+    crowd.grid.build(crowd.positions, crowd.grounded, std::max(crowd.max_radius * 3.0f, 0.5f));
     choose_first_at_takeoffs(agents, crowd);
 }
 

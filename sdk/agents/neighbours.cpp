@@ -59,4 +59,52 @@ void NeighbourGrid::visit(const Vec3& p, float range, FunctionRef<void(uint32_t)
     }
 }
 
+size_t NeighbourGrid::nearest(const Vec3& p, float range, uint32_t self, uint32_t* out, size_t most) const {
+    constexpr size_t kMost = 16;
+    most = std::min(most, kMost);
+    if (columns_ == 0 || most == 0) return 0;
+    std::pair<float, uint32_t> best[kMost];  // (squared distance, index), ascending
+    size_t count = 0;
+    const float range2 = range * range;
+    auto consider = [&](int x, int z) {
+        const size_t c = size_t(z) * columns_ + x;
+        for (uint32_t k = cell_start_[c]; k < cell_start_[c + 1]; ++k) {
+            const uint32_t j = members_[k];
+            if (j == self) continue;
+            const Vec3& q = (*positions_)[j];
+            const float dx = q.x() - p.x(), dz = q.z() - p.z();
+            const std::pair<float, uint32_t> candidate{dx * dx + dz * dz, j};
+            if (candidate.first > range2) continue;
+            if (count == most && !(candidate < best[most - 1])) continue;
+            size_t at = count < most ? count++ : most - 1;
+            for (; at > 0 && candidate < best[at - 1]; --at) best[at] = best[at - 1];
+            best[at] = candidate;
+        }
+    };
+    const int x0 = std::clamp(int(std::floor((p.x() - range - origin_x_) / cell_)), 0, columns_ - 1);
+    const int x1 = std::clamp(int(std::floor((p.x() + range - origin_x_) / cell_)), 0, columns_ - 1);
+    const int z0 = std::clamp(int(std::floor((p.z() - range - origin_z_) / cell_)), 0, rows_ - 1);
+    const int z1 = std::clamp(int(std::floor((p.z() + range - origin_z_) / cell_)), 0, rows_ - 1);
+    const int cx = std::clamp(int(std::floor((p.x() - origin_x_) / cell_)), x0, x1);
+    const int cz = std::clamp(int(std::floor((p.z() - origin_z_) / cell_)), z0, z1);
+    const int rings = std::max(std::max(cx - x0, x1 - cx), std::max(cz - z0, z1 - cz));
+    // A cell r + 1 rings out is at least r cells away from p along one axis (p in its cell, or beyond
+    // the grid on the far side); the slack covers the rounding of cell indices.
+    const float slack = 1e-3f + 1e-6f * (std::fabs(p.x() - origin_x_) + std::fabs(p.z() - origin_z_));
+    for (int r = 0; r <= rings; ++r) {
+        for (int z = std::max(cz - r, z0); z <= std::min(cz + r, z1); ++z) {
+            if (z == cz - r || z == cz + r) {
+                for (int x = std::max(cx - r, x0); x <= std::min(cx + r, x1); ++x) consider(x, z);
+            } else {
+                if (cx - r >= x0) consider(cx - r, z);
+                if (cx + r <= x1) consider(cx + r, z);
+            }
+        }
+        const float clear = float(r) * cell_ - slack;  // every agent not yet seen is farther than this
+        if (count == most && clear > 0.0f && best[most - 1].first < clear * clear) break;
+    }
+    for (size_t k = 0; k < count; ++k) out[k] = best[k].second;
+    return count;
+}
+
 }  // namespace nl

@@ -16,6 +16,11 @@ public:
     void build(const std::vector<Vec3>& positions, const std::vector<uint8_t>& grounded, float cell);
     // Calls visit(j) for every grounded agent within `range` of `p` in x-z (any order, each once).
     void visit(const Vec3& p, float range, FunctionRef<void(uint32_t)> visit) const;
+    // The `most` (at most 16) grounded agents other than `self` nearest to `p` in x-z within `range`,
+    // nearest first, the lower index on a tie: written to `out`, their count returned. The answer
+    // does not depend on the grid's cells: they are visited in rings around p's, and the search stops
+    // once no cell farther out can hold a nearer agent (in a dense crowd, long before `range`).
+    size_t nearest(const Vec3& p, float range, uint32_t self, uint32_t* out, size_t most) const;
 
 private:
     float cell_ = 1.0f;

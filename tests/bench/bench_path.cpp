@@ -9,7 +9,6 @@
 // navmesh data), then one line with the queue's throughput on 1 and 2 path workers on the largest level.
 #include <DetourCommon.h>
 #include <DetourNavMesh.h>
-#include <DetourNavMeshBuilder.h>
 #include <DetourNavMeshQuery.h>
 #include <DetourNode.h>
 #include <navlink/navlink.h>
@@ -18,7 +17,6 @@
 #include <atomic>
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
 #include <memory>
 #include <random>
 #include <string>
@@ -26,9 +24,7 @@
 #include <vector>
 
 #include "clock.h"
-#include "io/obj_reader.h"
-#include "navmesh_export.h"
-#include "solo_mesh.h"
+#include "recast_detour.h"
 #include "world.h"
 
 namespace {
@@ -43,78 +39,11 @@ struct Pair {
     float goal[3];
 };
 
-struct DetourMesh {
-    dtNavMesh* mesh = dtAllocNavMesh();
-    dtNavMeshQuery* query = dtAllocNavMeshQuery();
-    int bytes = 0;
-    ~DetourMesh() {
-        dtFreeNavMeshQuery(query);
-        dtFreeNavMesh(mesh);
-    }
-};
-
-// As RecastDemo's Sample_SoloMesh: every polygon walkable (flag 1), a BV tree, the detail mesh.
-bool build_detour(const nl::recast::SoloMesh& solo, const nl_agent_type& agent, const nl_recast_settings& settings,
-                  DetourMesh& out) {
-    rcPolyMesh& pm = *solo.polygons;
-    const rcPolyMeshDetail& dm = *solo.detail;
-    for (int i = 0; i < pm.npolys; ++i) pm.flags[i] = 1;
-    dtNavMeshCreateParams params{};
-    params.verts = pm.verts;
-    params.vertCount = pm.nverts;
-    params.polys = pm.polys;
-    params.polyAreas = pm.areas;
-    params.polyFlags = pm.flags;
-    params.polyCount = pm.npolys;
-    params.nvp = pm.nvp;
-    params.detailMeshes = dm.meshes;
-    params.detailVerts = dm.verts;
-    params.detailVertsCount = dm.nverts;
-    params.detailTris = dm.tris;
-    params.detailTriCount = dm.ntris;
-    params.walkableHeight = agent.height;
-    params.walkableRadius = agent.radius;
-    params.walkableClimb = agent.max_climb;
-    rcVcopy(params.bmin, pm.bmin);
-    rcVcopy(params.bmax, pm.bmax);
-    params.cs = settings.cell_size;
-    params.ch = settings.cell_height;
-    params.buildBvTree = true;
-    unsigned char* data = nullptr;
-    if (!dtCreateNavMeshData(&params, &data, &out.bytes)) return false;
-    if (dtStatusFailed(out.mesh->init(data, out.bytes, DT_TILE_FREE_DATA))) {
-        dtFree(data);
-        return false;
-    }
-    return dtStatusSucceed(out.query->init(out.mesh, 2048));  // RecastDemo's node pool
-}
-
-// Random points over the polygon mesh: a random polygon, a random point in one of its fan
-// triangles, half a metre up so both sides have to snap it down.
+// The same random points as ever: start, goal, start, goal... from one generator.
 std::vector<Pair> draw_pairs(const rcPolyMesh& pm) {
     std::mt19937 rng(12345);
-    std::uniform_int_distribution<int> pick(0, pm.npolys - 1);
-    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
-    auto point = [&](float* out) {
-        const unsigned short* poly = &pm.polys[size_t(pick(rng)) * 2 * pm.nvp];
-        int n = 0;
-        while (n < pm.nvp && poly[n] != RC_MESH_NULL_IDX) ++n;
-        std::uniform_int_distribution<int> fan(1, n - 2);
-        const int k = fan(rng);
-        float u = unit(rng), v = unit(rng);
-        if (u + v > 1.0f) u = 1.0f - u, v = 1.0f - v;
-        const unsigned short* a = &pm.verts[3 * poly[0]];
-        const unsigned short* b = &pm.verts[3 * poly[k]];
-        const unsigned short* c = &pm.verts[3 * poly[k + 1]];
-        for (int axis = 0; axis < 3; ++axis) {
-            const float cell = axis == 1 ? pm.ch : pm.cs;
-            const float w = (1.0f - u - v) * a[axis] + u * b[axis] + v * c[axis];
-            out[axis] = pm.bmin[axis] + w * cell;
-        }
-        out[1] += 0.5f;
-    };
     std::vector<Pair> pairs(kPairs);
-    for (Pair& p : pairs) point(p.start), point(p.goal);
+    for (Pair& p : pairs) nl::bench::random_point(pm, rng, p.start), nl::bench::random_point(pm, rng, p.goal);
     return pairs;
 }
 
@@ -136,7 +65,7 @@ struct DetourAnswer {
 
 // findPath + findStraightPath between located ends, as Detour's samples do (a partial corridor
 // ends at the point of its last polygon nearest to the goal).
-DetourAnswer detour_search(const DetourMesh& d, dtPolyRef start_ref, const float* start, dtPolyRef goal_ref,
+DetourAnswer detour_search(const nl::bench::DetourMesh& d, dtPolyRef start_ref, const float* start, dtPolyRef goal_ref,
                            const float* goal) {
     static const dtQueryFilter filter;
     dtPolyRef polys[kMaxPolys];
@@ -157,7 +86,7 @@ DetourAnswer detour_search(const DetourMesh& d, dtPolyRef start_ref, const float
 }
 
 // The whole job from raw points: locate both ends, then search.
-DetourAnswer detour_path(const DetourMesh& d, const Pair& pair) {
+DetourAnswer detour_path(const nl::bench::DetourMesh& d, const Pair& pair) {
     static const dtQueryFilter filter;
     dtPolyRef start_ref = 0, goal_ref = 0;
     float start[3], goal[3];
@@ -185,38 +114,22 @@ nl_path_request_def request_for(const Level& level, const Pair& pair) {
 }
 
 bool compare(const char* path, Level& level) {
-    level.name = std::filesystem::path(path).stem().string();
-    const nl::TriangleMesh mesh = nl::read_obj_file(path);
-    nl::recast::LevelTriangles triangles;
-    for (const nl::Vec3& v : mesh.vertices) triangles.vertices.insert(triangles.vertices.end(), {v.x(), v.y(), v.z()});
-    for (const nl::Triangle& t : mesh.triangles) triangles.indices.insert(triangles.indices.end(), t.begin(), t.end());
-    const nl_plugin_host no_host{};  // size 0: Recast's log goes nowhere
-    nl::recast::HostLogContext context(no_host);
-    const nl_recast_settings settings = nl_default_recast_settings();
-    const nl_agent_type agent = nl_default_agent_type();
-    const nl::recast::SoloMesh solo = nl::recast::build_solo_mesh(context, triangles, settings, agent);
+    nl::bench::RecastLevel recast = nl::bench::build_recast_level_from_obj(path);
+    level.name = recast.name;
 
     nl_world_def world_def = nl_default_world_def();
     world_def.worker_count = 1;
     world_def.path_worker_count = 0;
     if (NL_FAILED(nl_world_create(&world_def, &level.world))) return false;
-    const nl::recast::NavMeshExport exported(*solo.polygons, *solo.detail);
-    const nl_navmesh_def navmesh_def = exported.def(agent);
-    if (NL_FAILED(nl_navmesh_add(level.world, &navmesh_def, &level.navmesh))) return false;
-    level.polygons = exported.polygon_count();
+    if (!nl::bench::add_navlink_navmesh(level.world, recast, &level.navmesh, &level.polygons)) return false;
 
-    DetourMesh detour;
-    if (!build_detour(solo, agent, settings, detour)) {
+    nl::bench::DetourMesh detour;
+    if (!nl::bench::build_detour(recast, detour)) {
         std::fprintf(stderr, "navlink-bench-path: %s: Detour could not build its navmesh\n", path);
         return false;
     }
-    level.pairs = draw_pairs(*solo.polygons);
-    const dtPolyRef base = detour.mesh->getPolyRefBase(static_cast<const dtNavMesh*>(detour.mesh)->getTile(0));
-    if (uint32_t(solo.polygons->npolys) != level.polygons) {
-        std::fprintf(stderr, "navlink-bench-path: %s: NavLink kept %u polygons of Recast's %d\n", path, level.polygons,
-                     solo.polygons->npolys);
-        return false;
-    }
+    level.pairs = draw_pairs(*recast.solo.polygons);
+    const dtPolyRef base = detour.ref(0);
 
     // Each pair is timed kRounds times on each side, alternately, and its fastest time counts: a
     // shared machine's interruptions land on one side or the other at random; the minimum is the cost.
