@@ -239,8 +239,11 @@ void Agents::step(float dt, const NavMeshRegistry& navmeshes, TaskSystem& tasks)
         if (a.motion) continue;  // in the air: it lands first
         if (a.off_path) {
             a.off_path = false;
-            a.ask_path(AgentReason::OffPath, next_path_order_);
-            a.emit(AgentEventKind::Replanned, AgentReason::OffPath);
+            // Once per request: one waiting its turn walks on, off its path, step after step.
+            if (!a.wants_path) {
+                a.ask_path(AgentReason::OffPath, next_path_order_);
+                a.emit(AgentEventKind::Replanned, AgentReason::OffPath);
+            }
         } else if (a.graph && a.graph != current[i] && !a.wants_path && a.state != AgentState::Arrived) {
             const PathUpkeep upkeep = check_path(a, *current[i], links);
             if (upkeep.verdict == PathUpkeep::Holds) {
@@ -267,13 +270,19 @@ void Agents::step(float dt, const NavMeshRegistry& navmeshes, TaskSystem& tasks)
         }
     }
 
-    // 2. The paths asked for, oldest first, at most max_paths_per_step, planned in parallel.
+    // 2. The paths asked for, at most max_paths_per_step, planned in parallel.
     std::vector<uint32_t> asking;
     for (uint32_t i = 0; i < agents_.size(); ++i) {
         const AgentBody& a = agents_[i];
         if (a.wants_path && !a.motion && a.state != AgentState::Failed) asking.push_back(i);
     }
-    std::sort(asking.begin(), asking.end(), [&](uint32_t x, uint32_t y) { return agents_[x].path_order < agents_[y].path_order; });
+    // Agents with no path to walk meanwhile (a new destination, a link gone at the take-off) first,
+    // then the oldest request.
+    std::sort(asking.begin(), asking.end(), [&](uint32_t x, uint32_t y) {
+        const AgentBody &a = agents_[x], &b = agents_[y];
+        const bool a_stands = a.path.empty() || a.at_takeoff, b_stands = b.path.empty() || b.at_takeoff;
+        return a_stands != b_stands ? a_stands : a.path_order < b.path_order;
+    });
     if (asking.size() > settings_.max_paths_per_step) {
         // Their turn comes in a later step; meanwhile one with a path walks on (it takes no link).
         for (size_t k = settings_.max_paths_per_step; k < asking.size(); ++k) {

@@ -4,7 +4,8 @@
 // A step runs in phases, so that its result is the same bit for bit whatever the thread count:
 //   1. (serial) each agent checks its navmesh and links against the world as it is now, and asks
 //      for a new path when they changed under it;
-//   2. the paths asked for, at most max_paths_per_step of them, oldest first, are planned in
+//   2. the paths asked for, at most max_paths_per_step of them (agents standing without a path
+//      first, then the oldest request), are planned in
 //      parallel on the world's task system, each on the navmesh and links as they are now;
 //   3. (parallel) each agent steers, avoids its neighbours and the walls (positions as they were at
 //      the start of the phase), moves over the surface, or flies its link;

@@ -224,8 +224,9 @@ typedef struct nl_world_def {
                                               must stay valid until nl_world_destroy returns. */
     uint32_t agent_paths_per_step;       /**< Agents' paths planned in one nl_world_step at most
                                               (default 32): when many agents ask at once, the rest wait
-                                              their turn (NL_AGENT_WAITING), oldest first, so a step's
-                                              cost stays bounded. At least 1. */
+                                              their turn, agents standing without a path first (they
+                                              are NL_AGENT_WAITING), then the oldest request (those walk
+                                              on meanwhile), so a step's cost stays bounded. At least 1. */
     uint32_t reserved2;                  /**< 0. */
 } nl_world_def;
 
@@ -1219,7 +1220,7 @@ NL_API nl_status nl_agent_set_speed(nl_world* world, nl_agent_id agent, float ma
 
 /** Advances every agent by `dt` seconds (finite, >= 0; 0 does nothing), in parallel on the world's
  *  task system, with the same result bit for bit whatever the thread count: plans the paths asked
- *  for (at most agent_paths_per_step, oldest first), steers and moves every agent on the ground,
+ *  for (at most agent_paths_per_step: agents standing without a path first, then the oldest), steers and moves every agent on the ground,
  *  flies those on links, and checks each link just before take-off. An agent's trouble (no path,
  *  its navmesh removed) is its failure and event, not the call's.
  *  Returns SUCCESS, or INVALID_ARGUMENT (dt NaN, infinite or negative: nothing changes), OUT_OF_MEMORY.
