@@ -187,8 +187,7 @@ Link link_from_def(const nl_link_def& given) {
     l.requirements.drop = r.drop;
     l.requirements.clearance_width = r.clearance_width;
     l.requirements.abilities = r.abilities;
-    if (!def.requirements_as_given) set_requirements_from_ends(l);
-    else if (l.requirements.length == 0.0f) l.requirements.length = Vec3(l.end.x() - l.start.x(), 0.0f, l.end.z() - l.start.z()).norm();
+    settle_host_requirements(l, def.requirements_as_given != 0);
     return l;
 }
 

@@ -58,4 +58,15 @@ inline void set_requirements_from_ends(Link& l) {
     l.requirements.drop = std::max(0.0f, -d.y());
 }
 
+// A host's link: its requirements measured from its ends, or, `as_given`, kept as the host gave them
+// (a link that asks only for an ability) with a length of 0 measured from the ends.
+inline void settle_host_requirements(Link& l, bool as_given) {
+    if (!as_given) {
+        set_requirements_from_ends(l);
+    } else if (l.requirements.length == 0.0f) {
+        const Vec3 d = l.end - l.start;
+        l.requirements.length = Vec3(d.x(), 0.0f, d.z()).norm();
+    }
+}
+
 }  // namespace nl

@@ -87,9 +87,9 @@ public:
     LinkGenerationReport generate_links(Handle navmesh, const LinkSettings& settings, PluginSettings plugin_settings,
                                         GenerationProgress progress);
     // Generates again what level geometry inside `box` can have changed, continuing the last
-    // generation (the plugins' links are proposed again in full). Throws NotFound when there is no
-    // generation to continue (never generated, or its links removed or replaced since), and as
-    // generate_links.
+    // generation (the plugins' links are proposed again in full). Throws InvalidArgument for a box
+    // not finite, beyond the coordinate limit or inverted, NotFound when there is no generation to
+    // continue (never generated, or its links removed or replaced since), and as generate_links.
     LinkGenerationReport update_links_in_box(Handle navmesh, const Aabb& box, GenerationProgress progress);
 
 private:

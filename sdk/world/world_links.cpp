@@ -2,6 +2,7 @@
 #include <string>
 
 #include "links/link_generation.h"
+#include "level/mesh_validation.h"
 #include "links/link_placement.h"
 #include "world/world.h"
 
@@ -75,6 +76,8 @@ LinkGenerationReport World::generate_links(Handle navmesh, const LinkSettings& s
 
 LinkGenerationReport World::update_links_in_box(Handle navmesh, const Aabb& box, GenerationProgress progress) {
     const std::shared_ptr<const NavMesh> mesh = navmeshes_.navmesh(navmesh);
+    if (!within_coordinate_limit(box.min) || !within_coordinate_limit(box.max) || box.empty())
+        fail(ErrorCode::InvalidArgument, "the box's corners must be finite, within the coordinate limit, and min <= max");
     const NavMeshRegistry::GenerationTurn one_at_a_time = navmeshes_.take_generation_turn(navmesh);
     const LastGeneration last = navmeshes_.last_generation(navmesh);
     if (!last.generation)

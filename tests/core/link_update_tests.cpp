@@ -3,6 +3,7 @@
 #include <doctest/doctest.h>
 
 #include <functional>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -38,7 +39,10 @@ struct Scene {
         return nl::test::add_level(*world, boxes, flags, transform);
     }
     nl::LinkGenerationReport generate_all() { return world->generate_links(navmesh, nl::LinkSettings{}, {}, nl::test::keep_going); }
-    nl::LinkGenerationReport update(const Box& box) { return world->update_links_in_box(navmesh, aabb_of(box), nl::test::keep_going); }
+    nl::LinkGenerationReport update(const Box& box) { return update_links_in_box_raw(aabb_of(box)); }
+    nl::LinkGenerationReport update_links_in_box_raw(const nl::Aabb& box) {
+        return world->update_links_in_box(navmesh, box, nl::test::keep_going);
+    }
     std::vector<nl::StoredLink> links() const { return nl::test::links_of(*world, navmesh); }
     // Updates in `box`, then checks the result against a full generation of the same state.
     void check_update_equals_full(const Box& box, const std::string& what) {
@@ -147,8 +151,16 @@ TEST_CASE("an update needs a prior generation and a proper box; a far-away chang
     CHECK(report.rays_cast == 0);
     CHECK(report.jump_links + report.drop_links == s.links().size());
 
-    // A box that is not one (min above max, a corner missing) is refused by the C layer, which reads
-    // it: abi.links.update_in_box (INVALID_ARGUMENT naming box, box_min, box_max).
+    // A box that is not one (min above max, a corner not finite) is refused before anything is read
+    // (the C layer names its arguments: abi.links.update_in_box).
+    const std::size_t before = s.links().size();
+    nl::Aabb inverted = aabb_of(far_box);
+    std::swap(inverted.min, inverted.max);
+    CHECK(nl::test::code_of([&] { s.update_links_in_box_raw(inverted); }) == nl::ErrorCode::InvalidArgument);
+    nl::Aabb not_finite = aabb_of(far_box);
+    not_finite.max.x() = std::numeric_limits<float>::infinity();
+    CHECK(nl::test::code_of([&] { s.update_links_in_box_raw(not_finite); }) == nl::ErrorCode::InvalidArgument);
+    CHECK(s.links().size() == before);
 
     // A navmesh never generated: nothing to update.
     const nl::Handle other = nl::test::build_recast_navmesh(*s.world);

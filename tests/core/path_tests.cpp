@@ -40,8 +40,7 @@ struct CellMap {
         l.end = Vec3(x1, 0.0f, 0.5f);
         l.apex = l.start.y() > l.end.y() ? l.start : l.end;
         l.requirements = given;
-        if (!as_given) nl::set_requirements_from_ends(l);
-        else if (l.requirements.length == 0.0f) l.requirements.length = std::abs(x1 - x0);
+        nl::settle_host_requirements(l, as_given);
         return l;
     }
 };
