@@ -21,6 +21,7 @@ constexpr float kHeightEase = 1.0f;
 constexpr float kContact = 0.1f;        // bodies this near each other's surface touch
 constexpr float kOffPathSlack = 1.0f;   // how far past its radius an agent may be pushed off its path
 constexpr size_t kMaxNeighbours = 6;    // as DetourCrowd: the nearest count
+constexpr size_t kHemmedIn = 4;         // touching this many of them: a jam (coarser avoidance)
 
 float distance_xz(const Vec3& a, const Vec3& b) { return std::hypot(a.x() - b.x(), a.z() - b.z()); }
 
@@ -47,7 +48,10 @@ dtObstacleAvoidanceQuery& avoidance_query() {
     return *query;
 }
 
-dtObstacleAvoidanceParams avoidance_params() {
+// DetourCrowd's default sampling (75 velocities), or, for a body hemmed in (touching four or more of
+// its six nearest), its low-quality preset (11): in a jam it has nowhere much to go, and a crowd of
+// thousands pressed together spent most of a step choosing among velocities that all collide.
+dtObstacleAvoidanceParams avoidance_params(bool hemmed_in) {
     dtObstacleAvoidanceParams p{};
     p.velBias = 0.4f;
     p.weightDesVel = 2.0f;
@@ -56,9 +60,9 @@ dtObstacleAvoidanceParams avoidance_params() {
     p.weightToi = 2.5f;
     p.horizTime = 2.5f;
     p.gridSize = 33;
-    p.adaptiveDivs = 7;
+    p.adaptiveDivs = hemmed_in ? 5 : 7;
     p.adaptiveRings = 2;
-    p.adaptiveDepth = 5;
+    p.adaptiveDepth = hemmed_in ? 1 : 5;
     return p;
 }
 
@@ -186,21 +190,23 @@ void move_agent(AgentBody& a, uint32_t self, float dt, const NavMesh& navmesh, c
     const float radius = a.def.capabilities.radius;
     // The first at a take-off walks straight onto it; the others make way.
     const bool steers = a.def.avoidance && crowd.grounded[self] && !crowd.first_at_takeoff[self];
+    std::array<uint32_t, kMaxNeighbours> near{};
+    const size_t count = steers ? nearest_neighbours(self, crowd, std::max(radius * 12.0f, 1.0f), near) : 0;
     if (steers) {
         // Other bodies only: walls are kept by the navmesh itself, eroded by the body's radius, and
         // by the surface move. A body on that eroded edge touches it, and DetourCrowd's sampling
         // takes a touched wall for an immediate collision: bodies rounding a corner would crawl.
-        std::array<uint32_t, kMaxNeighbours> near{};
-        const size_t count = nearest_neighbours(self, crowd, std::max(radius * 12.0f, 1.0f), near);
         if (count > 0) {
             dtObstacleAvoidanceQuery& query = avoidance_query();
             query.reset();
+            size_t touching = 0;
             for (size_t k = 0; k < count; ++k) {
                 const uint32_t j = near[k];
                 query.addCircle(crowd.positions[j].data(), crowd.radii[j], crowd.velocities[j].data(),
                                 crowd.velocities[j].data());
+                touching += distance_xz(crowd.positions[j], a.position) < radius + crowd.radii[j] + kContact;
             }
-            const dtObstacleAvoidanceParams params = avoidance_params();
+            const dtObstacleAvoidanceParams params = avoidance_params(touching >= kHemmedIn);
             Vec3 chosen = desired;
             query.sampleVelocityAdaptive(a.position.data(), radius, a.def.max_speed, a.velocity.data(), desired.data(),
                                          chosen.data(), &params);
@@ -217,18 +223,17 @@ void move_agent(AgentBody& a, uint32_t self, float dt, const NavMesh& navmesh, c
     a.velocity.y() = 0.0f;
 
     // Separation: overlapping neighbours push each other apart by half the overlap (read from the
-    // snapshot, so both sides agree whatever the order).
+    // snapshot, so the result does not depend on the order). Only the nearest few, as DetourCrowd
+    // resolves collisions: in a pile of hundreds every body would otherwise visit every other.
     Vec3 push = Vec3::Zero();
-    if (steers) {
-        crowd.grid.visit(a.position, radius + crowd.max_radius, [&](uint32_t j) {
-            if (j == self) return;
-            const Vec3 d(a.position.x() - crowd.positions[j].x(), 0.0f, a.position.z() - crowd.positions[j].z());
-            const float gap = d.norm(), reach = radius + crowd.radii[j];
-            if (gap >= reach) return;
-            // Exactly on top of each other: apart along x, the lower index to the left.
-            const Vec3 away = gap > 1e-6f ? Vec3(d / gap) : Vec3(self < j ? -1.0f : 1.0f, 0.0f, 0.0f);
-            push += away * (0.5f * (reach - gap));
-        });
+    for (size_t k = 0; k < count; ++k) {
+        const uint32_t j = near[k];
+        const Vec3 d(a.position.x() - crowd.positions[j].x(), 0.0f, a.position.z() - crowd.positions[j].z());
+        const float gap = d.norm(), reach = radius + crowd.radii[j];
+        if (gap >= reach) continue;
+        // Exactly on top of each other: apart along x, the lower index to the left.
+        const Vec3 away = gap > 1e-6f ? Vec3(d / gap) : Vec3(self < j ? -1.0f : 1.0f, 0.0f, 0.0f);
+        push += away * (0.5f * (reach - gap));
     }
 
     const Vec3 before = a.position;
