@@ -84,8 +84,9 @@ void fly(AgentBody& a, float dt) {
     a.motion.reset();
     a.link = Handle{};
     a.motion_time = 0.0f;
-    a.state = AgentState::Walking;
-    ++a.next;
+    // Stopped in the air: it stands where it lands. Sent elsewhere in the air: it waits for that path.
+    a.state = !a.has_destination ? AgentState::Idle : a.wants_path ? AgentState::Waiting : AgentState::Walking;
+    if (!a.path.empty()) ++a.next;
     a.emit(AgentEventKind::LinkFinished, AgentReason::None, link);
 }
 

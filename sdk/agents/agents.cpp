@@ -14,6 +14,8 @@
 namespace nl {
 namespace {
 
+constexpr float kSameEnd = 0.01f;  // a link end within this of where the path has it has not moved
+
 void check_positive(float value, const char* field) {
     if (!(value > 0.0f) || !std::isfinite(value)) fail_field(ErrorCode::InvalidArgument, field, " is ", value, " (must be finite and > 0)");
 }
@@ -136,7 +138,14 @@ void Agents::set_destination(const NavMeshRegistry& navmeshes, Handle agent, con
     AgentBody& a = find(agent);
     a.has_destination = true;
     a.destination = on_navmesh;
-    if (a.state == AgentState::Failed || a.state == AgentState::Arrived || a.state == AgentState::Idle) a.state = AgentState::Waiting;
+    if (!a.motion) {
+        // The old path leads elsewhere: walking on along it while the new one waits its turn would end
+        // in an arrival (or failure) at the old destination.
+        a.path.clear();
+        a.at_takeoff = false;
+        a.link = Handle{};
+        a.state = AgentState::Waiting;
+    }
     a.reason = AgentReason::None;
     a.ask_path(AgentReason::DestinationSet, next_path_order_);
 }
@@ -149,6 +158,7 @@ void Agents::stop(Handle agent) {
     a.at_takeoff = false;
     a.path.clear();
     a.graph.reset();
+    if (!a.motion) a.link = Handle{};
     // One whose navmesh was removed stays failed: it has nowhere to stand (and would fail again,
     // with a second event, at the next step).
     const bool stranded = a.state == AgentState::Failed && a.reason == AgentReason::NavMeshRemoved;
@@ -171,6 +181,7 @@ void Agents::teleport(const NavMeshRegistry& navmeshes, Handle agent, const Vec3
     a.polygon = polygon;
     a.velocity = Vec3::Zero();
     a.at_takeoff = false;
+    a.link = Handle{};
     a.path.clear();
     if (a.has_destination && a.state != AgentState::Failed) {
         a.state = AgentState::Waiting;
@@ -183,8 +194,12 @@ void Agents::set_capabilities(Handle agent, const AgentCapabilities& capabilitie
     std::unique_lock lock(mutex_);
     AgentBody& a = find(agent);
     a.def.capabilities = capabilities;
-    if (a.has_destination && a.state != AgentState::Arrived && a.state != AgentState::Failed)
+    // A body that could not reach its destination may now (one whose navmesh was removed may not).
+    const bool stranded = a.state == AgentState::Failed && a.reason == AgentReason::NavMeshRemoved;
+    if (a.has_destination && a.state != AgentState::Arrived && !stranded) {
+        if (a.state == AgentState::Failed) a.state = AgentState::Waiting;
         a.ask_path(AgentReason::CapabilitiesChanged, next_path_order_);
+    }
 }
 
 void Agents::set_speed(Handle agent, float max_speed, float max_acceleration) {
@@ -280,7 +295,8 @@ void Agents::step(float dt, const NavMeshRegistry& navmeshes, TaskSystem& tasks)
     // then the oldest request.
     std::sort(asking.begin(), asking.end(), [&](uint32_t x, uint32_t y) {
         const AgentBody &a = agents_[x], &b = agents_[y];
-        const bool a_stands = a.path.empty() || a.at_takeoff, b_stands = b.path.empty() || b.at_takeoff;
+        const bool a_stands = a.path.empty() || a.at_takeoff || a.state == AgentState::Waiting;
+        const bool b_stands = b.path.empty() || b.at_takeoff || b.state == AgentState::Waiting;
         return a_stands != b_stands ? a_stands : a.path_order < b.path_order;
     });
     if (asking.size() > settings_.max_paths_per_step) {
@@ -315,13 +331,15 @@ void Agents::step(float dt, const NavMeshRegistry& navmeshes, TaskSystem& tasks)
         PathResult& r = results[k];
         a.wants_path = false;
         a.at_takeoff = false;
+        a.link = Handle{};
         if (r.outcome != PathOutcome::Complete && r.outcome != PathOutcome::Partial) {
             a.fail(AgentReason::NoPath);
             continue;
         }
         a.graph = current[asking[k]];
         a.path = std::move(r.points);
-        a.next = a.path.size() > 1 ? 1 : 0;
+        // A path that starts on a take-off (the agent stands on it) heads for that take-off first.
+        a.next = a.path.size() > 1 && a.path[0].segment == kSegmentWalk ? 1 : 0;
         a.partial = r.outcome == PathOutcome::Partial;
         a.state = AgentState::Walking;
         a.reason = a.plan_reason;
@@ -354,29 +372,38 @@ void Agents::step(float dt, const NavMeshRegistry& navmeshes, TaskSystem& tasks)
         try {
             const auto [navmesh, stored] = navmeshes.link(point.link);
             link = stored;
-            usable = navmesh == a.def.navmesh && link.enabled && can_take(link, point.reversed, a.def.capabilities);
+            usable = navmesh == a.def.navmesh && link.enabled && (!point.reversed || link.bidirectional) &&
+                     can_take(link, point.reversed, a.def.capabilities);
         } catch (const Error& e) {
             if (e.code() != ErrorCode::InvalidHandle) throw;
         }
+        const LinkMotion motion(link, point.reversed, BodyMotion{a.def.max_speed, a.def.gravity, a.def.takeoff_speed});
+        // Moved since the path was planned (by another thread, after this step's upkeep): the path's
+        // take-off and landing are not the link's any more.
+        if (usable && a.next + 1 < a.path.size())
+            usable = (motion.from() - point.position).norm() < kSameEnd && (motion.to() - a.path[a.next + 1].position).norm() < kSameEnd;
         if (!usable) {
             a.at_takeoff = false;
+            a.link = Handle{};
             a.state = AgentState::Waiting;
             a.ask_path(AgentReason::LinkGone, next_path_order_);
             a.emit(AgentEventKind::Replanned, AgentReason::LinkGone, point.link);
             continue;
         }
-        const LinkMotion motion(link, point.reversed, BodyMotion{a.def.max_speed, a.def.gravity, a.def.takeoff_speed});
-        // One body on a landing at a time: wait while another flies to it or stands on it.
+        // One body on a landing at a time: wait while another flies to it, or flies this very link
+        // (either way: two bodies never cross in the air). Bodies standing there do not stop it (one
+        // that stays would hold it forever, two at both ends of a link would wait for each other):
+        // after the landing the bodies are pushed apart as anywhere else.
         const Vec3 landing = motion.to();
         bool busy = false;
         for (size_t j = 0; j < n && !busy; ++j) {
-            if (j == i) continue;
             const AgentBody& b = agents_[j];
+            if (j == i || !b.motion) continue;
             const float reach = a.def.capabilities.radius + b.def.capabilities.radius;
-            const Vec3 there = b.motion ? b.motion->to() : b.position;
-            if (b.state == AgentState::Failed) continue;
-            busy = std::hypot(there.x() - landing.x(), there.z() - landing.z()) < reach &&
-                   std::fabs(there.y() - landing.y()) < std::max(a.def.height, b.def.height);
+            const Vec3 there = b.motion->to();
+            busy = b.link == point.link ||
+                   (std::hypot(there.x() - landing.x(), there.z() - landing.z()) < reach &&
+                    std::fabs(there.y() - landing.y()) < std::max(a.def.height, b.def.height));
         }
         if (busy) {
             a.state = AgentState::Waiting;

@@ -20,7 +20,8 @@ void choose_first_at_takeoffs(const std::vector<AgentBody>& agents, CrowdSnapsho
     std::vector<TakeoffClaim> claims;
     for (uint32_t i = 0; i < agents.size(); ++i) {
         const AgentBody& a = agents[i];
-        if (a.motion || a.state != AgentState::Walking || a.next >= a.path.size()) continue;
+        // One waiting at the take-off holds it too: the next in the queue makes way for it.
+        if (a.motion || (a.state != AgentState::Walking && !a.at_takeoff) || a.next >= a.path.size()) continue;
         const PathPoint& takeoff = a.path[a.next];
         if (takeoff.segment == kSegmentWalk) continue;
         const float distance = std::hypot(a.position.x() - takeoff.position.x(), a.position.z() - takeoff.position.z());
@@ -52,7 +53,9 @@ void snapshot_crowd(const std::vector<AgentBody>& agents, CrowdSnapshot& crowd) 
         crowd.positions[i] = a.position;
         crowd.velocities[i] = a.velocity;
         crowd.radii[i] = a.def.capabilities.radius;
-        crowd.grounded[i] = !a.motion && a.state != AgentState::Failed && a.def.avoidance;
+        // Every body standing on the navmesh is avoided, one that does not steer itself included; one
+        // whose navmesh was removed stands nowhere.
+        crowd.grounded[i] = !a.motion && !(a.state == AgentState::Failed && a.reason == AgentReason::NavMeshRemoved);
         crowd.arrived[i] = a.state == AgentState::Arrived;
         if (!crowd.grounded[i]) continue;
         crowd.max_radius = std::max(crowd.max_radius, crowd.radii[i]);

@@ -30,7 +30,8 @@ PathUpkeep check_path(const AgentBody& agent, const PathGraph& now, LinkLookup& 
         const Link* planned = links.find(*agent.graph, point.link);
         const Link* current = links.find(now, point.link);
         const bool serves = planned && current && current->enabled && current->start == planned->start &&
-                            current->end == planned->end && can_take(*current, point.reversed, agent.def.capabilities);
+                            current->end == planned->end && (!point.reversed || current->bidirectional) &&
+                            can_take(*current, point.reversed, agent.def.capabilities);
         if (!serves) return {PathUpkeep::LinkGone, point.link};
     }
     return {};

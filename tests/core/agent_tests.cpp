@@ -354,3 +354,113 @@ TEST_CASE("on a Recast navmesh the body never pops: no step moves it farther tha
     // A 2 m drop ends at sqrt(2 g 2) = 6.3 m/s; a pop of 0.3 m in one step would read 18 m/s.
     CHECK(worst_drop < 8.0f);
 }
+
+namespace {
+
+// The gap level with one manual jump across the gap at z = 2 (3.6 -> 6.4), `both_ways` or not.
+Handle add_jump(GapLevel& g, bool both_ways) {
+    nl::Link jump;
+    jump.kind = nl::LinkKind::Jump;
+    jump.start = Vec3(3.6f, 0.0f, 2.0f);
+    jump.end = Vec3(6.4f, 0.0f, 2.0f);
+    jump.bidirectional = both_ways;
+    nl::set_requirements_from_ends(jump);
+    return g.world->add_link(g.navmesh, jump);
+}
+
+}  // namespace
+
+TEST_CASE("bodies on a landing never hold a link forever: two jumpers crossing a two-way link both arrive, "
+          "and one standing on a landing does not stop the jump") {
+    GapLevel g(1, false);
+    add_jump(g, true);
+    // The two ends of the link, one jumper heading each way (the walk round by the bridge is longer).
+    const Handle east = g.add_agent(Vec3(3.0f, 0.0f, 2.0f), 3.0f), west = g.add_agent(Vec3(7.0f, 0.0f, 2.0f), 3.0f);
+    g.world->agents().set_destination(g.world->navmeshes(), east, Vec3(9.0f, 0.0f, 2.0f));
+    g.world->agents().set_destination(g.world->navmeshes(), west, Vec3(1.0f, 0.0f, 2.0f));
+    int crossing_in_air = 0;
+    const auto events = g.run(30.0f, 1.0f / 60.0f, [&](int) {
+        crossing_in_air += g.world->agents().info(east).state == AgentState::Jumping &&
+                           g.world->agents().info(west).state == AgentState::Jumping;
+    });
+    CHECK(g.world->agents().info(east).state == AgentState::Arrived);
+    CHECK(g.world->agents().info(west).state == AgentState::Arrived);
+    CHECK(count_events(events, east, AgentEventKind::LinkStarted) + count_events(events, west, AgentEventKind::LinkStarted) == 2);
+    CHECK(crossing_in_air == 0);  // one after the other: two bodies never cross in the air
+
+    GapLevel h(1, false);
+    add_jump(h, false);
+    h.add_agent(Vec3(6.4f, 0.0f, 2.0f));  // idle on the landing, forever
+    const Handle jumper = h.add_agent(Vec3(1.0f, 0.0f, 2.0f), 3.0f);
+    h.world->agents().set_destination(h.world->navmeshes(), jumper, Vec3(9.0f, 0.0f, 2.0f));
+    const auto jumped = h.run(30.0f, 1.0f / 60.0f);
+    CHECK(count_events(jumped, jumper, AgentEventKind::LinkStarted) == 1);
+    CHECK(h.world->agents().info(jumper).state == AgentState::Arrived);
+}
+
+TEST_CASE("a path that starts on a take-off takes the link; stopped in the air, an agent lands and stands") {
+    GapLevel g(1, false);
+    add_jump(g, false);
+    const Handle on_takeoff = g.add_agent(Vec3(3.6f, 0.0f, 2.0f), 3.0f);
+    g.world->agents().set_destination(g.world->navmeshes(), on_takeoff, Vec3(9.0f, 0.0f, 2.0f));
+    bool stopped = false;
+    const auto events = g.run(20.0f, 1.0f / 60.0f, [&](int) {
+        if (!stopped && g.world->agents().info(on_takeoff).state == AgentState::Jumping) {
+            g.world->agents().stop(on_takeoff);
+            stopped = true;
+        }
+    });
+    REQUIRE(stopped);
+    const nl::AgentInfo after = g.world->agents().info(on_takeoff);
+    CHECK(after.state == AgentState::Idle);  // not WALKING with nowhere to go
+    CHECK(after.position.x() > 6.0f);      // it landed across the gap
+    CHECK(after.link.is_null());
+    CHECK(count_events(events, on_takeoff, AgentEventKind::LinkFinished) == 1);
+}
+
+TEST_CASE("a two-way link made one-way is not taken against its way; new capabilities revive a body that had no path") {
+    GapLevel g(1, false);
+    const Handle link = add_jump(g, true);
+    const Handle back = g.add_agent(Vec3(9.0f, 0.0f, 2.0f), 3.0f);
+    g.world->agents().set_destination(g.world->navmeshes(), back, Vec3(1.0f, 0.0f, 2.0f));
+    g.world->step(1.0f / 60.0f);
+    REQUIRE(count_events(g.world->agents().events(), back, AgentEventKind::PathReady) == 1);
+    REQUIRE_FALSE(g.world->agents().corners(back).empty());
+    nl::Link one_way = g.world->navmeshes().link(link).second;
+    one_way.bidirectional = false;
+    g.world->update_link(link, one_way);
+    const auto events = g.run(30.0f, 1.0f / 60.0f);
+    CHECK(count_events(events, back, AgentEventKind::LinkStarted) == 0);  // walked round by the bridge
+    CHECK(g.world->agents().info(back).state == AgentState::Arrived);
+    CHECK(g.world->agents().info(back).link.is_null());
+
+    // Two platforms with no bridge: a walker fails with no path; able to jump, it plans again and arrives.
+    nl::WorldSettings settings;
+    settings.worker_count = 1;
+    nl::World world(std::move(settings));
+    nl::NavMeshInput in;
+    add_polygon(in, {{0.3f, 0.3f}, {0.3f, 3.7f}, {3.7f, 3.7f}, {3.7f, 0.3f}});
+    add_polygon(in, {{6.3f, 0.3f}, {6.3f, 3.7f}, {9.7f, 3.7f}, {9.7f, 0.3f}});
+    in.agent.radius = 0.3f;
+    const Handle navmesh = world.add_navmesh(in);
+    nl::Link jump;
+    jump.kind = nl::LinkKind::Jump;
+    jump.start = Vec3(3.6f, 0.0f, 2.0f);
+    jump.end = Vec3(6.4f, 0.0f, 2.0f);
+    nl::set_requirements_from_ends(jump);
+    world.add_link(navmesh, jump);
+    nl::AgentDef def;
+    def.navmesh = navmesh;
+    def.position = Vec3(1.0f, 0.0f, 2.0f);
+    def.capabilities.radius = 0.3f;
+    const Handle walker = world.agents().add(world.navmeshes(), def);
+    world.agents().set_destination(world.navmeshes(), walker, Vec3(9.0f, 0.0f, 2.0f));
+    for (int i = 0; i < 300 && world.agents().info(walker).state != AgentState::Failed; ++i) world.step(1.0f / 30.0f);
+    REQUIRE(world.agents().info(walker).state == AgentState::Failed);
+    nl::AgentCapabilities jumper = def.capabilities;
+    jumper.max_jump_distance = 3.0f;
+    jumper.max_jump_height = 1.0f;
+    world.agents().set_capabilities(walker, jumper);
+    for (int i = 0; i < 600 && world.agents().info(walker).state != AgentState::Arrived; ++i) world.step(1.0f / 30.0f);
+    CHECK(world.agents().info(walker).state == AgentState::Arrived);
+}

@@ -1154,8 +1154,10 @@ typedef uint32_t nl_agent_reason;
                                                     beyond its body now: found at the first step after the
                                                     change or at the take-off, never in the air. An agent
                                                     whose path holds keeps it (new links serve its next plan). */
-#define NL_AGENT_REASON_WORLD_CHANGED 3u       /**< Its navmesh changed under it. */
-#define NL_AGENT_REASON_OFF_PATH 4u            /**< Pushed too far off its path, or teleported. */
+#define NL_AGENT_REASON_WORLD_CHANGED 3u       /**< Its navmesh changed under it (not emitted yet: a navmesh
+                                                    never changes under its id; moving surfaces will). */
+#define NL_AGENT_REASON_OFF_PATH 4u            /**< Pushed too far off its path (REPLANNED), or teleported (the
+                                                    next PATH_READY's reason). */
 #define NL_AGENT_REASON_NO_PATH 5u             /**< The destination cannot be reached (it went as near as it could). */
 #define NL_AGENT_REASON_NAVMESH_REMOVED 6u     /**< Its navmesh was removed. */
 #define NL_AGENT_REASON_CAPABILITIES_CHANGED 7u
