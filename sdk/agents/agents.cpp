@@ -359,6 +359,9 @@ void Agents::step(float dt, const NavMeshRegistry& navmeshes, TaskSystem& tasks)
     });
 
     // 4. Take-offs, in agent order: the link checked as it is now, and its landing clear.
+    std::vector<uint32_t> flying;  // only bodies in the air can hold a landing
+    for (uint32_t j = 0; j < n; ++j)
+        if (agents_[j].motion) flying.push_back(j);
     for (size_t i = 0; i < n; ++i) {
         AgentBody& a = agents_[i];
         if (!a.at_takeoff || a.motion) continue;
@@ -396,9 +399,8 @@ void Agents::step(float dt, const NavMeshRegistry& navmeshes, TaskSystem& tasks)
         // after the landing the bodies are pushed apart as anywhere else.
         const Vec3 landing = motion.to();
         bool busy = false;
-        for (size_t j = 0; j < n && !busy; ++j) {
-            const AgentBody& b = agents_[j];
-            if (j == i || !b.motion) continue;
+        for (size_t k = 0; k < flying.size() && !busy; ++k) {
+            const AgentBody& b = agents_[flying[k]];
             const float reach = a.def.capabilities.radius + b.def.capabilities.radius;
             const Vec3 there = b.motion->to();
             busy = b.link == point.link ||
@@ -417,6 +419,7 @@ void Agents::step(float dt, const NavMeshRegistry& navmeshes, TaskSystem& tasks)
         a.landing_polygon = point.reversed ? link.start_polygon : link.end_polygon;
         a.state = state_of(motion.kind());
         a.emit(AgentEventKind::LinkStarted, AgentReason::None, point.link);
+        flying.push_back(static_cast<uint32_t>(i));
     }
 
     for (const AgentBody& a : agents_) events_.insert(events_.end(), a.step_events.begin(), a.step_events.end());
