@@ -244,6 +244,7 @@ void Agents::step(float dt, const NavMeshRegistry& navmeshes, TaskSystem& tasks)
     for (size_t i = 0; i < agents_.size(); ++i) {
         AgentBody& a = agents_[i];
         a.step_events.clear();
+        a.step_events.reserve(8);  // a step emits a few per agent: the parallel move never allocates for them
         if (a.state == AgentState::Failed) continue;
         current[i] = graph_of(a.def.navmesh);
         if (!current[i]) {
@@ -350,11 +351,18 @@ void Agents::step(float dt, const NavMeshRegistry& navmeshes, TaskSystem& tasks)
     CrowdSnapshot crowd;
     snapshot_crowd(agents_, crowd);
     const size_t n = agents_.size();
+    // A move that cannot finish (only a first allocation of a thread's avoidance scratch can fail)
+    // leaves that agent where it was; the others move, the step ends whole and then says so.
+    std::vector<uint8_t> unmoved(n, 0);
     tasks.parallel_for(static_cast<uint32_t>(n), 64, [&](uint32_t begin, uint32_t end) {
         for (uint32_t i = begin; i < end; ++i) {
             AgentBody& a = agents_[i];
             if (a.state == AgentState::Failed || !current[i]) continue;
-            move_agent(a, i, dt, current[i]->navmesh(), crowd);
+            try {
+                move_agent(a, i, dt, current[i]->navmesh(), crowd);
+            } catch (...) {
+                unmoved[i] = 1;
+            }
         }
     });
 
@@ -423,6 +431,8 @@ void Agents::step(float dt, const NavMeshRegistry& navmeshes, TaskSystem& tasks)
     }
 
     for (const AgentBody& a : agents_) events_.insert(events_.end(), a.step_events.begin(), a.step_events.end());
+    const size_t stuck = static_cast<size_t>(std::count(unmoved.begin(), unmoved.end(), uint8_t{1}));
+    if (stuck > 0) fail(ErrorCode::OutOfMemory, stuck, " agents could not move in this step (out of memory); the others did");
 }
 
 namespace {
