@@ -47,10 +47,6 @@ nl_path_point track_point(const float position[3]) {
     return point;
 }
 
-bool in_the_air(nl_agent_state state) {
-    return state == NL_AGENT_JUMPING || state == NL_AGENT_FALLING || state == NL_AGENT_TRAVERSING;
-}
-
 float distance(const float a[3], const float b[3]) {
     return std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
 }
@@ -106,7 +102,7 @@ void record_tracks(const nl_world* world, std::vector<AgentRun>& runs, bool on_i
         AgentRun& run = runs.at(info.user_data);
         run.travelled += distance(run.last_position, info.position);
         for (int k = 0; k < 3; ++k) run.last_position[k] = info.position[k];
-        if (on_interval || in_the_air(info.state) || info.state == NL_AGENT_ARRIVED)
+        if (on_interval || samples::in_the_air(info.state) || info.state == NL_AGENT_ARRIVED)
             run.track.push_back(track_point(info.position));
     }
 }

@@ -22,6 +22,8 @@ nl_agent_info read_agent(const nl_world* world, nl_agent_id agent);
 std::vector<nl_path_point> read_corners(const nl_world* world, nl_agent_id agent);
 
 bool same_agent(nl_agent_id a, nl_agent_id b);
+// Jumping, falling or traversing: taking a link.
+bool in_the_air(nl_agent_state state);
 
 // "walking", "jumping", ...; "link gone", "no path", ...; "path ready", "link started", ...
 const char* agent_state_name(nl_agent_state state);

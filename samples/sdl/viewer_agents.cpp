@@ -15,12 +15,8 @@ namespace {
 constexpr float kTrackSpacing = 0.2f;
 constexpr size_t kTrackLimit = 4000;
 
-bool in_the_air(nl_agent_state state) {
-    return state == NL_AGENT_JUMPING || state == NL_AGENT_FALLING || state == NL_AGENT_TRAVERSING;
-}
-
 bool on_its_way(nl_agent_state state) {
-    return state == NL_AGENT_WALKING || state == NL_AGENT_WAITING || in_the_air(state);
+    return state == NL_AGENT_WALKING || state == NL_AGENT_WAITING || samples::in_the_air(state);
 }
 
 // The curve the agent flies, as the library describes it to a host that animates the body.
@@ -53,18 +49,16 @@ ViewerAgents::ViewerAgents(nl_world* world, nl_navmesh_id navmesh, const std::ve
 }
 
 bool ViewerAgents::send(size_t index, const Point& destination) {
-    if (NL_FAILED(nl_agent_set_destination(world_, ids_.at(index), destination.data()))) {
-        std::printf("%s cannot go there: %s\n", profiles_[index].name.c_str(), nl_get_last_error_message());
-        return false;
-    }
-    tracks_[index].clear();
-    read_back();
-    return true;
+    return moved(index, nl_agent_set_destination(world_, ids_.at(index), destination.data()), "go there");
 }
 
 bool ViewerAgents::teleport(size_t index, const Point& position) {
-    if (NL_FAILED(nl_agent_teleport(world_, ids_.at(index), position.data()))) {
-        std::printf("%s cannot stand there: %s\n", profiles_[index].name.c_str(), nl_get_last_error_message());
+    return moved(index, nl_agent_teleport(world_, ids_.at(index), position.data()), "stand there");
+}
+
+bool ViewerAgents::moved(size_t index, nl_status status, const char* what) {
+    if (NL_FAILED(status)) {
+        std::printf("%s cannot %s: %s\n", profiles_[index].name.c_str(), what, nl_get_last_error_message());
         return false;
     }
     tracks_[index].clear();
@@ -103,7 +97,7 @@ void ViewerAgents::read_back() {
         const Point here{info.position[0], info.position[1], info.position[2]};
         const bool far = track.empty() || std::hypot(here[0] - track.back()[0], here[1] - track.back()[1],
                                                      here[2] - track.back()[2]) >= kTrackSpacing;
-        if ((far || in_the_air(info.state)) && track.size() < kTrackLimit) track.push_back(here);
+        if ((far || samples::in_the_air(info.state)) && track.size() < kTrackLimit) track.push_back(here);
     }
 }
 
@@ -116,7 +110,7 @@ std::vector<SceneAgent> ViewerAgents::scene_agents() const {
         a.color = palette::agent(i);
         for (int k = 0; k < 3; ++k) a.position[k] = info.position[k];
         a.radius = profiles_[i].capabilities.radius;
-        a.in_air = in_the_air(info.state);
+        a.in_air = samples::in_the_air(info.state);
         a.track = tracks_[i];
         if (a.in_air) {
             nl_agent_trajectory trajectory = nl_agent_trajectory_init();
@@ -133,7 +127,7 @@ std::string ViewerAgents::status() const {
     for (const nl_agent_info& info : infos_) {
         if (!on_its_way(info.state) && info.state != NL_AGENT_FAILED) continue;
         char text[96];
-        if (in_the_air(info.state))
+        if (samples::in_the_air(info.state))
             std::snprintf(text, sizeof text, "%s %s %.0f%%", profiles_[info.user_data].name.c_str(),
                           samples::agent_state_name(info.state), 100.0f * info.link_progress);
         else

@@ -37,6 +37,8 @@ public:
     std::string status() const;
 
 private:
+    // After a send or teleport: a line and false when it was refused, else a fresh track.
+    bool moved(size_t index, nl_status status, const char* what);
     void read_back();
 
     nl_world* world_;

@@ -96,6 +96,19 @@ size_t count_events(const std::vector<nl::AgentEvent>& events, Handle agent, Age
     return n;
 }
 
+// A manual jump across the gap at z = 2, from x = 3.6 to 6.4 (edge to edge of the two platforms),
+// `both_ways` or one way.
+Handle add_jump(nl::World& world, Handle navmesh, bool both_ways) {
+    nl::Link jump;
+    jump.kind = nl::LinkKind::Jump;
+    jump.start = Vec3(3.6f, 0.0f, 2.0f);
+    jump.end = Vec3(6.4f, 0.0f, 2.0f);
+    jump.bidirectional = both_ways;
+    nl::set_requirements_from_ends(jump);
+    return world.add_link(navmesh, jump);
+}
+Handle add_jump(GapLevel& g, bool both_ways) { return add_jump(*g.world, g.navmesh, both_ways); }
+
 float distance_xz(const Vec3& a, const Vec3& b) { return std::hypot(a.x() - b.x(), a.z() - b.z()); }
 
 }  // namespace
@@ -163,13 +176,7 @@ TEST_CASE("a body on a generated link never meets the level: segments through it
 
 TEST_CASE("a link removed while an agent walks toward it: it plans again before take-off, never in the air") {
     GapLevel g(1, false);
-    nl::Link jump;
-    jump.kind = nl::LinkKind::Jump;
-    jump.start = Vec3(3.6f, 0.0f, 2.0f);
-    jump.end = Vec3(6.4f, 0.0f, 2.0f);
-    jump.bidirectional = true;
-    nl::set_requirements_from_ends(jump);
-    const Handle link = g.world->add_link(g.navmesh, jump);
+    const Handle link = add_jump(g, true);
     const Handle agent = g.add_agent(Vec3(1.0f, 0.0f, 2.0f), 3.0f);
     g.world->agents().set_destination(g.world->navmeshes(), agent, Vec3(9.0f, 0.0f, 2.0f));
     g.world->step(1.0f / 30.0f);
@@ -186,7 +193,7 @@ TEST_CASE("a link removed while an agent walks toward it: it plans again before 
     CHECK(g.world->agents().info(agent).state == AgentState::Arrived);  // round by the bridge
 
     // Mid-air: the link goes while the agent flies it; it lands on the arc's end all the same.
-    const Handle again = g.world->add_link(g.navmesh, jump);
+    const Handle again = add_jump(g, true);
     const Handle second = g.add_agent(Vec3(1.0f, 0.0f, 2.0f), 3.0f);
     g.world->agents().set_destination(g.world->navmeshes(), second, Vec3(9.0f, 0.0f, 2.0f));  // where the first stands
     bool removed = false;
@@ -256,12 +263,7 @@ TEST_CASE("two agents walking head-on through a corridor pass each other without
 
 TEST_CASE("two agents at one link's take-off: one flies to the landing at a time") {
     GapLevel g(1, false);
-    nl::Link jump;
-    jump.kind = nl::LinkKind::Jump;
-    jump.start = Vec3(3.6f, 0.0f, 2.0f);
-    jump.end = Vec3(6.4f, 0.0f, 2.0f);
-    nl::set_requirements_from_ends(jump);
-    g.world->add_link(g.navmesh, jump);
+    add_jump(g, false);
     const Handle a = g.add_agent(Vec3(2.5f, 0.0f, 1.5f), 3.0f), b = g.add_agent(Vec3(2.5f, 0.0f, 2.5f), 3.0f);
     g.world->agents().set_destination(g.world->navmeshes(), a, Vec3(9.0f, 0.0f, 1.0f));
     g.world->agents().set_destination(g.world->navmeshes(), b, Vec3(9.0f, 0.0f, 3.0f));
@@ -355,21 +357,6 @@ TEST_CASE("on a Recast navmesh the body never pops: no step moves it farther tha
     CHECK(worst_drop < 8.0f);
 }
 
-namespace {
-
-// The gap level with one manual jump across the gap at z = 2 (3.6 -> 6.4), `both_ways` or not.
-Handle add_jump(GapLevel& g, bool both_ways) {
-    nl::Link jump;
-    jump.kind = nl::LinkKind::Jump;
-    jump.start = Vec3(3.6f, 0.0f, 2.0f);
-    jump.end = Vec3(6.4f, 0.0f, 2.0f);
-    jump.bidirectional = both_ways;
-    nl::set_requirements_from_ends(jump);
-    return g.world->add_link(g.navmesh, jump);
-}
-
-}  // namespace
-
 TEST_CASE("bodies on a landing never hold a link forever: two jumpers crossing a two-way link both arrive, "
           "and one standing on a landing does not stop the jump") {
     GapLevel g(1, false);
@@ -443,12 +430,7 @@ TEST_CASE("a two-way link made one-way is not taken against its way; new capabil
     add_polygon(in, {{6.3f, 0.3f}, {6.3f, 3.7f}, {9.7f, 3.7f}, {9.7f, 0.3f}});
     in.agent.radius = 0.3f;
     const Handle navmesh = world.add_navmesh(in);
-    nl::Link jump;
-    jump.kind = nl::LinkKind::Jump;
-    jump.start = Vec3(3.6f, 0.0f, 2.0f);
-    jump.end = Vec3(6.4f, 0.0f, 2.0f);
-    nl::set_requirements_from_ends(jump);
-    world.add_link(navmesh, jump);
+    add_jump(world, navmesh, false);
     nl::AgentDef def;
     def.navmesh = navmesh;
     def.position = Vec3(1.0f, 0.0f, 2.0f);
