@@ -2,6 +2,7 @@
 #include <cstddef>
 
 #include "entry_guard.h"
+#include "mapping.h"
 #include "host_input.h"
 #include "world.h"
 
@@ -79,18 +80,6 @@ nl_agent_info to_c(const nl::AgentInfo& a) {
     c.has_destination = a.has_destination ? 1 : 0;
     c.corners_ahead = a.corners_ahead;
     c.user_data = a.user_data;
-    return c;
-}
-
-nl_path_point to_c(const nl::PathPoint& p) {
-    nl_path_point c{};
-    c.size = sizeof c;
-    copy_point(c.position, p.position);
-    c.polygon = p.polygon;
-    c.segment = p.segment;
-    c.link = to_id<nl_link_id>(p.link);
-    copy_point(c.apex, p.apex);
-    c.reversed = p.reversed ? 1 : 0;
     return c;
 }
 
@@ -197,7 +186,7 @@ NL_API nl_status nl_agent_get_corners(const nl_world* world, nl_agent_id agent, 
     return guarded("nl_agent_get_corners", world, [&] {
         const std::vector<nl::PathPoint> corners = deref(world).agents().corners(to_handle(agent));
         nl::capi::list_growable_into(corners, out_points, capacity, out_count, kPointFirstSize, "out_points",
-                                     [](const nl::PathPoint& p) { return to_c(p); });
+                                     [](const nl::PathPoint& p) { return nl::capi::to_c(p); });
     });
 }
 
@@ -216,12 +205,15 @@ NL_API nl_status nl_agent_get_trajectory(const nl_world* world, nl_agent_id agen
         const std::optional<nl::LinkMotion>& motion = flight.motion;
         t.kind = trajectory_kind(motion->kind());
         t.link = to_id<nl_link_id>(flight.link);
-        copy_point(t.from, motion->from());
-        copy_point(t.to, motion->to());
-        copy_point(t.apex, motion->apex());
+        // Flown in its navmesh's space: on a moving surface, shown where the surface is now.
+        const nl::SurfacePose& pose = flight.pose;
+        copy_point(t.from, pose.world_point(motion->from()));
+        copy_point(t.to, pose.world_point(motion->to()));
+        copy_point(t.apex, pose.world_point(motion->apex()));
         const auto& fall = motion->fall_points();
         for (int k = 0; k < 4; ++k)
-            copy_point(t.points[k], motion->kind() == nl::MotionKind::Fall ? fall[k] : (k < 2 ? motion->from() : motion->to()));
+            copy_point(t.points[k],
+                       pose.world_point(motion->kind() == nl::MotionKind::Fall ? fall[k] : (k < 2 ? motion->from() : motion->to())));
         t.duration = motion->duration();
         t.elapsed = flight.elapsed;
         nl::capi::write_growable(out_trajectory, t, kTrajectoryFirstSize, "out_trajectory");

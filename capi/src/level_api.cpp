@@ -168,14 +168,14 @@ NL_API nl_status nl_mesh_add_obj_memory(nl_world* world, const char* data, size_
 }
 
 NL_API nl_status nl_mesh_remove(nl_world* world, nl_mesh_id mesh) {
-    return guarded("nl_mesh_remove", world, [&] { deref(world).level().remove_mesh(to_handle(mesh)); });
+    return guarded("nl_mesh_remove", world, [&] { deref(world).remove_mesh(to_handle(mesh)); });
 }
 
 NL_API nl_status nl_mesh_set_transform(nl_world* world, nl_mesh_id mesh, const float* transform) {
     return guarded("nl_mesh_set_transform", world, [&] {
         nl::World& w = deref(world);
         require(transform, "transform");
-        w.level().set_transform(to_handle(mesh), read_transform(transform));
+        w.set_mesh_transform(to_handle(mesh), read_transform(transform));
     });
 }
 

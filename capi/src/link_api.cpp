@@ -236,7 +236,7 @@ NL_API int32_t nl_link_is_valid(const nl_world* world, nl_link_id link) {
 
 NL_API nl_status nl_link_get(const nl_world* world, nl_link_id link, nl_link* out_link) {
     return guarded("nl_link_get", world, [&] {
-        const auto [navmesh, stored] = deref(world).navmeshes().link(to_handle(link));
+        const auto [navmesh, stored] = deref(world).link_in_world(to_handle(link));
         require(out_link, "out_link");
         nl::capi::write_growable(out_link, to_c(nl::StoredLink{to_handle(link), stored}, navmesh), kLinkFirstSize, "out_link");
     });
@@ -247,8 +247,11 @@ NL_API nl_status nl_navmesh_get_links(const nl_world* world, nl_navmesh_id navme
     return guarded("nl_navmesh_get_links", world, [&] {
         const nl::Handle mesh = to_handle(navmesh);
         const auto snapshot = deref(world).navmeshes().links(mesh);
+        const nl::SurfacePose pose = nl::pose_of(deref(world).navmeshes().frame(mesh));
         nl::capi::list_growable_into(*snapshot, out_links, capacity, out_count, kLinkFirstSize, "out_links",
-                                     [&](const nl::StoredLink& s) { return to_c(s, mesh); });
+                                     [&](const nl::StoredLink& s) {
+                                         return to_c(nl::StoredLink{s.id, nl::link_in_world(s.link, pose)}, mesh);
+                                     });
     });
 }
 

@@ -6,6 +6,7 @@
 #include "navlink/navlink.h"
 #include "navmesh/navmesh_builder.h"
 #include "links/link.h"
+#include "path/path_query.h"
 
 namespace nl::capi {
 
@@ -18,5 +19,8 @@ NavMeshInput navmesh_input_from_def(const nl_navmesh_def& def);
 // A link def (nl_link_add, nl_link_update, a link-kind plugin's sink); the link is not yet placed on
 // a navmesh (World does that).
 Link link_from_def(const nl_link_def& def);
+
+// A path point as the host reads it (nl_path_get_points, nl_agent_get_corners).
+nl_path_point to_c(const PathPoint& point);
 
 }  // namespace nl::capi

@@ -79,6 +79,8 @@ NavMeshInput navmesh_input_from_def(const nl_navmesh_def& given) {
 
 void navmesh_get_info(const World& world, nl_navmesh_id navmesh, nl_navmesh_info* out_info) {
     const auto mesh = world.navmeshes().navmesh(to_handle(navmesh));
+    const auto frame = world.navmeshes().frame(to_handle(navmesh));
+    const nl::SurfacePose pose = nl::pose_of(frame);
     require(out_info, "out_info");
     nl_navmesh_info info{};
     info.size = sizeof info;
@@ -91,20 +93,23 @@ void navmesh_get_info(const World& world, nl_navmesh_id navmesh, nl_navmesh_info
     info.dropped_polygon_count = mesh->repairs().dropped_polygons;
     info.non_manifold_edge_count = mesh->repairs().non_manifold_edges;
     info.agent = to_c(mesh->agent());
-    copy_point(info.bounds_min, mesh->bounds().min);
-    copy_point(info.bounds_max, mesh->bounds().max);
+    const nl::Aabb bounds = pose.world_box(mesh->bounds());
+    copy_point(info.bounds_min, bounds.min);
+    copy_point(info.bounds_max, bounds.max);
+    if (frame) info.surface = to_id<nl_mesh_id>(frame->mesh());
     write_growable(out_info, info, kNavMeshInfoFirstSize, "out_info");
 }
 
 void navmesh_get_boundary_edges(const World& world, nl_navmesh_id navmesh, nl_boundary_edge* out_edges, uint32_t capacity,
                                 uint32_t* out_count) {
     const auto mesh = world.navmeshes().navmesh(to_handle(navmesh));
-    list_into(mesh->boundary_edges(), out_edges, capacity, out_count, "out_edges", [](const BoundaryEdge& e) {
+    const nl::SurfacePose pose = nl::pose_of(world.navmeshes().frame(to_handle(navmesh)));
+    list_into(mesh->boundary_edges(), out_edges, capacity, out_count, "out_edges", [&](const BoundaryEdge& e) {
         nl_boundary_edge out{};
-        copy_point(out.start, e.start);
-        copy_point(out.end, e.end);
-        copy_point(out.outward, e.outward);
-        copy_point(out.normal, e.normal);
+        copy_point(out.start, pose.world_point(e.start));
+        copy_point(out.end, pose.world_point(e.end));
+        copy_point(out.outward, pose.world_vector(e.outward));
+        copy_point(out.normal, pose.world_vector(e.normal));
         out.polygon = e.polygon;
         out.edge = e.edge;
         return out;
@@ -114,6 +119,7 @@ void navmesh_get_boundary_edges(const World& world, nl_navmesh_id navmesh, nl_bo
 void navmesh_find_nearest(const World& world, nl_navmesh_id navmesh, const float* points, uint32_t count,
                           const float* half_extents, nl_nav_point* out) {
     const auto mesh = world.navmeshes().navmesh(to_handle(navmesh));
+    const nl::SurfacePose pose = nl::pose_of(world.navmeshes().frame(to_handle(navmesh)));
     require(half_extents, "half_extents");
     const Vec3 extents(half_extents[0], half_extents[1], half_extents[2]);
     if (!(extents.array() > 0.0f).all() || !within_coordinate_limit(extents))
@@ -127,12 +133,13 @@ void navmesh_find_nearest(const World& world, nl_navmesh_id navmesh, const float
     }
     world.tasks().parallel_for(count, 256, [&](uint32_t begin, uint32_t end) {
         for (uint32_t i = begin; i < end; ++i) {
-            const NavPoint p = mesh->find_nearest(Eigen::Map<const Vec3>(points + 3 * size_t(i)), extents);
+            const NavPoint p = mesh->find_nearest(pose.surface_point(Eigen::Map<const Vec3>(points + 3 * size_t(i))),
+                                                  pose.surface_extents(extents));
             nl_nav_point r{};
             r.found = p.found ? 1 : 0;
             r.polygon = p.polygon;
             r.distance = p.distance;
-            copy_point(r.point, p.point);
+            copy_point(r.point, pose.world_point(p.point));
             out[i] = r;
         }
     });
@@ -157,7 +164,9 @@ NL_API nl_status nl_navmesh_add(nl_world* world, const nl_navmesh_def* def, nl_n
         nl::World& w = deref(world);
         require(def, "def");
         require(out_id, "out_id");
-        *out_id = to_id<nl_navmesh_id>(nl::naming_fields("def->", [&] { return w.add_navmesh(nl::capi::navmesh_input_from_def(*def)); }));
+        const nl_navmesh_def full = nl::capi::read_growable(*def, nl_default_navmesh_def(), kNavMeshDefFirstSize, "def");
+        *out_id = to_id<nl_navmesh_id>(nl::naming_fields(
+            "def->", [&] { return w.add_navmesh(nl::capi::navmesh_input_from_def(*def), to_handle(full.surface)); }));
     });
 }
 
@@ -181,8 +190,9 @@ NL_API nl_status nl_navmesh_get_vertices(const nl_world* world, nl_navmesh_id na
                                          uint32_t capacity, uint32_t* out_count) {
     return guarded("nl_navmesh_get_vertices", world, [&] {
         const auto mesh = deref(world).navmeshes().navmesh(to_handle(navmesh));
+        const nl::SurfacePose pose = nl::pose_of(deref(world).navmeshes().frame(to_handle(navmesh)));
         nl::capi::list_into(mesh->vertex_count(), out_xyz, capacity, out_count, "out_xyz", [&] {
-            for (uint32_t i = 0; i < mesh->vertex_count(); ++i) copy_point(out_xyz + 3 * size_t(i), mesh->vertex(i));
+            for (uint32_t i = 0; i < mesh->vertex_count(); ++i) copy_point(out_xyz + 3 * size_t(i), pose.world_point(mesh->vertex(i)));
         });
     });
 }
@@ -191,6 +201,7 @@ NL_API nl_status nl_navmesh_get_polygon(const nl_world* world, nl_navmesh_id nav
                                         nl_nav_polygon* out_polygon) {
     return guarded("nl_navmesh_get_polygon", world, [&] {
         const auto mesh = deref(world).navmeshes().navmesh(to_handle(navmesh));
+        const nl::SurfacePose pose = nl::pose_of(deref(world).navmeshes().frame(to_handle(navmesh)));
         require(out_polygon, "out_polygon");
         if (polygon >= mesh->polygon_count())
             fail(ErrorCode::InvalidArgument, "polygon ", polygon, " is out of range (polygon_count = ", mesh->polygon_count(), ")");
@@ -203,8 +214,8 @@ NL_API nl_status nl_navmesh_get_polygon(const nl_world* world, nl_navmesh_id nav
         }
         for (uint32_t k = out.vertex_count; k < NL_MAX_POLYGON_VERTICES; ++k) out.neighbours[k] = NL_NO_POLYGON;
         out.area = mesh->area(polygon);
-        copy_point(out.normal, mesh->normal(polygon));
-        copy_point(out.centre, mesh->centre(polygon));
+        copy_point(out.normal, pose.world_vector(mesh->normal(polygon)));
+        copy_point(out.centre, pose.world_point(mesh->centre(polygon)));
         nl::capi::write_growable(out_polygon, out, kNavPolygonFirstSize, "out_polygon");
     });
 }

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "entry_guard.h"
+#include "mapping.h"
 #include "host_input.h"
 #include "path/path_planner.h"
 #include "world.h"
@@ -71,18 +72,6 @@ Request read_request(const nl::World& w, const nl_path_request_def* in) {
     return r;
 }
 
-nl_path_point to_c(const nl::PathPoint& p) {
-    nl_path_point c{};
-    c.size = sizeof c;
-    Eigen::Map<nl::Vec3>(c.position) = p.position;
-    c.polygon = p.polygon;
-    c.segment = p.segment;
-    c.link = to_id<nl_link_id>(p.link);
-    Eigen::Map<nl::Vec3>(c.apex) = p.apex;
-    c.reversed = p.reversed ? 1 : 0;
-    return c;
-}
-
 nl_path_result to_c(const nl::PathResult& r) {
     nl_path_result c{};
     c.size = sizeof(nl_path_result);
@@ -110,7 +99,7 @@ void write_result(const nl::PathResult& r, nl_path_result* out_result, nl_path_p
     if (!out_points && capacity > 0) fail(ErrorCode::InvalidArgument, "out_points is null but capacity is ", capacity);
     nl::capi::write_growable(out_result, to_c(r), kResultFirstSize, "out_result");
     nl::capi::list_growable_into(r.points, out_points, capacity, out_count, kPointFirstSize, "out_points",
-                                 [](const nl::PathPoint& p) { return to_c(p); });
+                                 [](const nl::PathPoint& p) { return nl::capi::to_c(p); });
 }
 
 // The status of a call that returned a result: partial paths carry PARTIAL_RESULT, as Detour's do.
@@ -288,3 +277,16 @@ NL_API nl_status nl_path_get_queue_stats(const nl_world* world, nl_path_queue_st
 }
 
 }  // extern "C"
+
+nl_path_point nl::capi::to_c(const nl::PathPoint& p) {
+    nl_path_point c{};
+    c.size = sizeof c;
+    Eigen::Map<nl::Vec3>(c.position) = p.position;
+    c.polygon = p.polygon;
+    c.segment = p.segment;
+    c.link = to_id<nl_link_id>(p.link);
+    Eigen::Map<nl::Vec3>(c.apex) = p.apex;
+    c.reversed = p.reversed ? 1 : 0;
+    Eigen::Map<nl::Vec3>(c.surface_position) = p.surface_position;
+    return c;
+}

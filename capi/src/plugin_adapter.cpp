@@ -116,8 +116,19 @@ struct BuildSink {
     }
 };
 
+// The build this thread runs (builders call back on the thread that called them).
+thread_local const NavMeshBuildRequest* running_build = nullptr;
+
+struct RunningBuild {
+    explicit RunningBuild(const NavMeshBuildRequest& request) : outer(running_build) { running_build = &request; }
+    ~RunningBuild() { running_build = outer; }
+    const NavMeshBuildRequest* outer;
+};
+
 std::shared_ptr<const NavMesh> CPlugin::build(World&, const NavMeshBuildRequest& request) {
+    const RunningBuild running(request);
     nl_navmesh_build_def def = nl_default_navmesh_build_def();
+    def.surface = to_id<nl_mesh_id>(request.surface);
     def.builder = description_.name.c_str();
     def.agent = to_c(request.agent);
     def.settings = request.builder_settings;
@@ -182,6 +193,11 @@ void CPlugin::propose(World&, Handle navmesh, const std::string& settings_json, 
 }
 
 }  // namespace
+
+TriangleMesh level_triangles_for_plugin(void* context) {
+    const Level& level = world_of_plugin(context).level();
+    return running_build ? level.triangles_to_build(running_build->surface) : level.world_triangles();
+}
 
 World& world_of_plugin(void* context) { return static_cast<CPlugin*>(context)->world(); }
 const std::string& name_of_plugin(void* context) { return static_cast<CPlugin*>(context)->description().name; }

@@ -31,5 +31,9 @@ nl_plugin_host make_plugin_host(void* context);
 // What the table's functions need from their context.
 World& world_of_plugin(void* context);
 const std::string& name_of_plugin(void* context);
+// The level triangles a plugin is shown: during a navmesh build on this thread, what the build is
+// for (Level::triangles_to_build: the static meshes, or the surface mesh in its own space);
+// otherwise every mesh in the world.
+TriangleMesh level_triangles_for_plugin(void* context);
 
 }  // namespace nl::capi

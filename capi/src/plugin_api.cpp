@@ -48,8 +48,9 @@ NL_API nl_status nl_navmesh_build(nl_world* world, const nl_navmesh_build_def* d
         request.builder_settings = settings.settings;
         request.settings_json = settings.settings_json;
         request.settings_json_length = settings.settings_json_length;
+        request.surface = to_handle(settings.surface);
         const auto start = std::chrono::steady_clock::now();
-        *out_id = to_id<nl_navmesh_id>(w.build_navmesh(request));
+        *out_id = to_id<nl_navmesh_id>(nl::naming_fields("def->", [&] { return w.build_navmesh(request); }));
         const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
         w.logger().log(nl::LogLevel::Info, nl::concat("nl_navmesh_build: '", request.builder, "' built a navmesh in ", ms, " ms"));
     });

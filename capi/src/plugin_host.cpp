@@ -51,7 +51,7 @@ nl_status host_get_level_triangles(void* context, float* vertices, uint32_t vert
                                    uint32_t* indices, uint32_t triangle_capacity, uint32_t* out_triangle_count) {
     nl_status status = NL_STATUS_SUCCESS;
     const nl_status ran = for_plugin(context, "get_level_triangles", [&] {
-        const TriangleMesh level = world_of_plugin(context).level().world_triangles();
+        const TriangleMesh level = level_triangles_for_plugin(context);
         if (out_vertex_count) *out_vertex_count = static_cast<uint32_t>(level.vertices.size());
         if (out_triangle_count) *out_triangle_count = static_cast<uint32_t>(level.triangles.size());
         if (vertex_capacity == 0 && triangle_capacity == 0) return;

@@ -7,13 +7,18 @@
 
 #include "agents/agent.h"
 #include "motion/link_motion.h"
+#include "navmesh/surface_pose.h"
 #include "path/path_graph.h"
 #include "path/path_query.h"
 
 namespace nl {
 
+// Every point and vector of a body is in its navmesh's own space: on a navmesh that rides a moving
+// mesh the body rides with it (no drift: its world position is the mesh's pose applied to it, never
+// integrated), and its destination and path stay where they were set on the surface.
 struct AgentBody {
     AgentDef def;
+    std::shared_ptr<const SurfaceFrame> frame;  // its navmesh's; null on a navmesh that rides nothing
     AgentState state = AgentState::Idle;
     AgentReason reason = AgentReason::None;
     Handle id;

@@ -54,12 +54,13 @@ AgentBody& Agents::find(Handle agent) {
 }
 const AgentBody& Agents::find(Handle agent) const { return const_cast<Agents*>(this)->find(agent); }
 
-uint32_t Agents::locate(const NavMesh& navmesh, const Vec3& point, float radius, const char* field,
-                        Vec3& on_navmesh) const {
+uint32_t Agents::locate(const NavMesh& navmesh, const SurfacePose& pose, const Vec3& world_point, float radius,
+                        const char* field, Vec3& on_navmesh) const {
     // Over the navmesh, or within the body's radius of its edge (half a metre at least), and within
     // 2 m above or below it; farther is refused, saying how far the nearest navmesh is.
     const float across = std::max(0.5f, radius);
-    const NavPoint near = navmesh.find_nearest(point, Vec3(across, 2.0f, across));
+    const Vec3 point = pose.surface_point(world_point);
+    const NavPoint near = navmesh.find_nearest(point, pose.surface_extents(Vec3(across, 2.0f, across)));
     if (near.found) {
         on_navmesh = near.point;
         return near.polygon;
@@ -71,13 +72,15 @@ uint32_t Agents::locate(const NavMesh& navmesh, const Vec3& point, float radius,
     fail_field(ErrorCode::NotFound, field, " is not on the navmesh (nothing within 25 m)");
 }
 
-std::shared_ptr<const NavMesh> Agents::navmesh_of(const NavMeshRegistry& navmeshes, Handle agent, float& radius) const {
+std::shared_ptr<const NavMesh> Agents::navmesh_of(const NavMeshRegistry& navmeshes, Handle agent, float& radius,
+                                                  SurfacePose& pose) const {
     Handle navmesh;
     {
         std::shared_lock lock(mutex_);
         const AgentBody& a = find(agent);
         navmesh = a.def.navmesh;
         radius = a.def.capabilities.radius;
+        pose = pose_of(a.frame);
     }
     try {
         return navmeshes.navmesh(navmesh);
@@ -99,7 +102,8 @@ Handle Agents::add(const NavMeshRegistry& navmeshes, const AgentDef& def) {
     const std::shared_ptr<const NavMesh> navmesh = navmeshes.navmesh(def.navmesh);
     AgentBody body;
     body.def = def;
-    body.polygon = locate(*navmesh, def.position, def.capabilities.radius, "position", body.position);
+    body.frame = navmeshes.frame(def.navmesh);
+    body.polygon = locate(*navmesh, pose_of(body.frame), def.position, def.capabilities.radius, "position", body.position);
     std::unique_lock lock(mutex_);
     // Nothing may throw once the id is taken. Grown geometrically: adding n agents one by one
     // copies O(n) bodies in all, not O(n^2).
@@ -131,9 +135,11 @@ bool Agents::contains(Handle agent) const {
 void Agents::set_destination(const NavMeshRegistry& navmeshes, Handle agent, const Vec3& destination, const char* field) {
     check_point(destination, field);
     float radius;
-    const std::shared_ptr<const NavMesh> mesh = navmesh_of(navmeshes, agent, radius);
+    SurfacePose pose;
+    const std::shared_ptr<const NavMesh> mesh = navmesh_of(navmeshes, agent, radius, pose);
     Vec3 on_navmesh;
-    locate(*mesh, destination, radius, field, on_navmesh);
+    // Located on the surface now, and kept there: it moves with the surface until the agent arrives.
+    locate(*mesh, pose, destination, radius, field, on_navmesh);
     std::unique_lock lock(mutex_);
     AgentBody& a = find(agent);
     a.has_destination = true;
@@ -171,9 +177,10 @@ void Agents::stop(Handle agent) {
 void Agents::teleport(const NavMeshRegistry& navmeshes, Handle agent, const Vec3& position, const char* field) {
     check_point(position, field);
     float radius;
-    const std::shared_ptr<const NavMesh> mesh = navmesh_of(navmeshes, agent, radius);
+    SurfacePose pose;
+    const std::shared_ptr<const NavMesh> mesh = navmesh_of(navmeshes, agent, radius, pose);
     Vec3 on_navmesh;
-    const uint32_t polygon = locate(*mesh, position, radius, field, on_navmesh);
+    const uint32_t polygon = locate(*mesh, pose, position, radius, field, on_navmesh);
     std::unique_lock lock(mutex_);
     AgentBody& a = find(agent);
     if (a.motion) fail(ErrorCode::InvalidArgument, "the agent is taking a link (teleport it after it lands)");
@@ -321,7 +328,7 @@ void Agents::step(float dt, const NavMeshRegistry& navmeshes, TaskSystem& tasks)
     tasks.parallel_for(static_cast<uint32_t>(asking.size()), 1, [&](uint32_t begin, uint32_t end) {
         for (uint32_t k = begin; k < end; ++k) {
             try {
-                plan_path(*current[asking[k]], queries[k], nullptr, results[k]);
+                plan_path_in_surface_space(*current[asking[k]], queries[k], nullptr, results[k]);
             } catch (...) {
                 results[k].outcome = PathOutcome::Failed;
             }
@@ -347,10 +354,25 @@ void Agents::step(float dt, const NavMeshRegistry& navmeshes, TaskSystem& tasks)
         a.emit(AgentEventKind::PathReady, a.plan_reason);
     }
 
-    // 3. Everybody as they are now, for the parallel move.
-    CrowdSnapshot crowd;
-    snapshot_crowd(agents_, crowd);
+    // 3. Everybody as they are now, for the parallel move: one crowd per space the bodies share (the
+    // world, or one moving surface), in the order the spaces first appear.
     const size_t n = agents_.size();
+    std::vector<const SurfaceFrame*> spaces;
+    std::vector<uint32_t> space_of(n), index_in_space(n);
+    std::vector<std::vector<const AgentBody*>> members;
+    for (uint32_t i = 0; i < n; ++i) {
+        const SurfaceFrame* frame = agents_[i].frame.get();
+        const auto found = std::find(spaces.begin(), spaces.end(), frame);
+        space_of[i] = static_cast<uint32_t>(found - spaces.begin());
+        if (found == spaces.end()) {
+            spaces.push_back(frame);
+            members.emplace_back();
+        }
+        index_in_space[i] = static_cast<uint32_t>(members[space_of[i]].size());
+        members[space_of[i]].push_back(&agents_[i]);
+    }
+    std::vector<CrowdSnapshot> crowds(spaces.size());  // built in place: a grid refers to its positions
+    for (size_t s = 0; s < spaces.size(); ++s) snapshot_crowd(members[s], crowds[s]);
     // A move that cannot finish (only a first allocation of a thread's avoidance scratch can fail)
     // leaves that agent where it was; the others move, the step ends whole and then says so.
     std::vector<uint8_t> unmoved(n, 0);
@@ -359,7 +381,7 @@ void Agents::step(float dt, const NavMeshRegistry& navmeshes, TaskSystem& tasks)
             AgentBody& a = agents_[i];
             if (a.state == AgentState::Failed || !current[i]) continue;
             try {
-                move_agent(a, i, dt, current[i]->navmesh(), crowd);
+                move_agent(a, index_in_space[i], dt, current[i]->navmesh(), crowds[space_of[i]]);
             } catch (...) {
                 unmoved[i] = 1;
             }
@@ -412,7 +434,7 @@ void Agents::step(float dt, const NavMeshRegistry& navmeshes, TaskSystem& tasks)
             const float reach = a.def.capabilities.radius + b.def.capabilities.radius;
             const Vec3 there = b.motion->to();
             busy = b.link == point.link ||
-                   (std::hypot(there.x() - landing.x(), there.z() - landing.z()) < reach &&
+                   (b.frame == a.frame && std::hypot(there.x() - landing.x(), there.z() - landing.z()) < reach &&
                     std::fabs(there.y() - landing.y()) < std::max(a.def.height, b.def.height));
         }
         if (busy) {
@@ -437,17 +459,20 @@ void Agents::step(float dt, const NavMeshRegistry& navmeshes, TaskSystem& tasks)
 
 namespace {
 
+// What a host reads, in the world: on a moving surface, at the surface's pose of this moment (the
+// velocity is the body's own, turned with the surface, without the surface's motion).
 AgentInfo info_of(const AgentBody& a) {
+    const SurfacePose pose = pose_of(a.frame);
     AgentInfo info;
     info.id = a.id;
     info.state = a.state;
     info.reason = a.reason;
-    info.position = a.position;
-    info.velocity = a.velocity;
+    info.position = pose.world_point(a.position);
+    info.velocity = pose.world_vector(a.velocity);
     info.polygon = a.polygon;
     info.link = a.link;
     info.link_progress = a.motion ? std::clamp(a.motion_time / a.motion->duration(), 0.0f, 1.0f) : 0.0f;
-    info.destination = a.destination;
+    info.destination = pose.world_point(a.destination);
     info.has_destination = a.has_destination;
     info.corners_ahead = a.path.empty() ? 0u : static_cast<uint32_t>(a.path.size() - a.next);
     info.user_data = a.def.user_data;
@@ -473,14 +498,20 @@ std::vector<PathPoint> Agents::corners(Handle agent) const {
     std::shared_lock lock(mutex_);
     const AgentBody& a = find(agent);
     if (a.path.empty()) return {};
-    return std::vector<PathPoint>(a.path.begin() + a.next, a.path.end());
+    std::vector<PathPoint> out(a.path.begin() + a.next, a.path.end());
+    const SurfacePose pose = pose_of(a.frame);
+    for (PathPoint& p : out) {
+        p.position = pose.world_point(p.surface_position);
+        p.apex = pose.world_point(p.apex);
+    }
+    return out;
 }
 
 Agents::Flight Agents::flight(Handle agent) const {
     std::shared_lock lock(mutex_);
     const AgentBody& a = find(agent);
     if (!a.motion) return {};
-    return Flight{a.motion, a.link, a.motion_time};
+    return Flight{a.motion, a.link, a.motion_time, pose_of(a.frame)};
 }
 
 std::vector<AgentEvent> Agents::events() const {

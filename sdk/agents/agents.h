@@ -13,6 +13,10 @@
 //      enabled and within their body, and that its landing is clear, then take off or plan again.
 // Each agent writes only its own state in a parallel phase; events are gathered in agent order.
 //
+// Positions: a host gives and reads them in the world. Inside, each agent is kept in its navmesh's
+// own space (agent_state.h), so an agent on a navmesh that rides a moving mesh moves with it; bodies
+// avoid the bodies that share their space (on the same moving mesh, or all that ride nothing).
+//
 // Thread-safety: every method may be called from any thread; step() holds the agents' lock for its
 // whole run, so calls on agents wait for it, and it must not be called from inside a task body. Lock
 // order: the agents' lock, then the navmesh registry's.
@@ -77,9 +81,10 @@ public:
     // The link the agent is taking, read at one moment: its motion (empty on the ground), the link,
     // and the seconds since take-off.
     struct Flight {
-        std::optional<LinkMotion> motion;
+        std::optional<LinkMotion> motion;  // in the navmesh's space: `pose` places it in the world
         Handle link;
         float elapsed = 0.0f;
+        SurfacePose pose;
     };
     Flight flight(Handle agent) const;
     // The last step's events, in agent order.
@@ -89,9 +94,13 @@ public:
 private:
     AgentBody& find(Handle agent);
     const AgentBody& find(Handle agent) const;
-    // The agent's navmesh and radius; InvalidHandle for a stale agent, or one whose navmesh is gone.
-    std::shared_ptr<const NavMesh> navmesh_of(const NavMeshRegistry& navmeshes, Handle agent, float& radius) const;
-    uint32_t locate(const NavMesh& navmesh, const Vec3& point, float radius, const char* field, Vec3& on_navmesh) const;
+    // The agent's navmesh, its pose now and the agent's radius; InvalidHandle for a stale agent, or
+    // one whose navmesh is gone.
+    std::shared_ptr<const NavMesh> navmesh_of(const NavMeshRegistry& navmeshes, Handle agent, float& radius,
+                                              SurfacePose& pose) const;
+    // Locates a world point on the navmesh placed at `pose`: the point found is in the navmesh's space.
+    uint32_t locate(const NavMesh& navmesh, const SurfacePose& pose, const Vec3& point, float radius, const char* field,
+                    Vec3& on_navmesh) const;
 
     mutable SharedMutex mutex_;
     AgentsSettings settings_;

@@ -16,10 +16,10 @@ struct TakeoffClaim {
     uint32_t agent;
 };
 
-void choose_first_at_takeoffs(const std::vector<AgentBody>& agents, CrowdSnapshot& crowd) {
+void choose_first_at_takeoffs(const std::vector<const AgentBody*>& agents, CrowdSnapshot& crowd) {
     std::vector<TakeoffClaim> claims;
     for (uint32_t i = 0; i < agents.size(); ++i) {
-        const AgentBody& a = agents[i];
+        const AgentBody& a = *agents[i];
         // One waiting at the take-off holds it too: the next in the queue makes way for it.
         if (a.motion || (a.state != AgentState::Walking && !a.at_takeoff) || a.next >= a.path.size()) continue;
         const PathPoint& takeoff = a.path[a.next];
@@ -40,7 +40,7 @@ void choose_first_at_takeoffs(const std::vector<AgentBody>& agents, CrowdSnapsho
 
 }  // namespace
 
-void snapshot_crowd(const std::vector<AgentBody>& agents, CrowdSnapshot& crowd) {
+void snapshot_crowd(const std::vector<const AgentBody*>& agents, CrowdSnapshot& crowd) {
     const size_t n = agents.size();
     crowd.positions.resize(n);
     crowd.velocities.resize(n);
@@ -49,7 +49,7 @@ void snapshot_crowd(const std::vector<AgentBody>& agents, CrowdSnapshot& crowd) 
     crowd.arrived.resize(n);
     crowd.max_radius = 0.0f;
     for (size_t i = 0; i < n; ++i) {
-        const AgentBody& a = agents[i];
+        const AgentBody& a = *agents[i];
         crowd.positions[i] = a.position;
         crowd.velocities[i] = a.velocity;
         crowd.radii[i] = a.def.capabilities.radius;

@@ -24,7 +24,8 @@ struct CrowdSnapshot {
     float max_radius = 0.0f;        // the widest body on the ground
 };
 
-// Fills `crowd` (in place: its grid refers to its positions) from the agents as they are.
-void snapshot_crowd(const std::vector<AgentBody>& agents, CrowdSnapshot& crowd);
+// Fills `crowd` (in place: its grid refers to its positions) from the agents as they are: the bodies
+// that share one space (the world, or one moving surface), in agent order; crowd index k is members[k].
+void snapshot_crowd(const std::vector<const AgentBody*>& members, CrowdSnapshot& crowd);
 
 }  // namespace nl

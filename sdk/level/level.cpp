@@ -261,13 +261,36 @@ std::vector<Handle> Level::meshes() const {
     return out;
 }
 
+namespace {
+
+void append_in_world(const TriangleMesh& object, const Transform& transform, TriangleMesh& out) {
+    const auto base = static_cast<uint32_t>(out.vertices.size());
+    for (const Vec3& v : object.vertices) out.vertices.push_back(transform * v);
+    for (const Triangle& t : object.triangles) out.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
+}
+
+}  // namespace
+
 TriangleMesh Level::world_triangles() const {
     const auto lock = lock_shared();
     TriangleMesh out;
+    meshes_.for_each([&](Handle, const Mesh& m) { append_in_world(m.object, m.transform, out); });
+    return out;
+}
+
+TriangleMesh Level::triangles_to_build(Handle surface) const {
+    const auto lock = lock_shared();
+    TriangleMesh out;
+    if (surface != Handle{}) {
+        const Mesh* m = meshes_.find(surface);
+        if (!m) fail_stale("mesh", surface);
+        if (!(m->flags & kMeshMovable))
+            fail(ErrorCode::InvalidArgument, "the surface mesh is not movable (NL_MESH_MOVABLE): a static mesh's floor is "
+                                             "part of the level's navmesh");
+        return m->object;
+    }
     meshes_.for_each([&](Handle, const Mesh& m) {
-        const auto base = static_cast<uint32_t>(out.vertices.size());
-        for (const Vec3& v : m.object.vertices) out.vertices.push_back(m.transform * v);
-        for (const Triangle& t : m.object.triangles) out.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
+        if (!(m.flags & kMeshMovable)) append_in_world(m.object, m.transform, out);
     });
     return out;
 }

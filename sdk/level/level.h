@@ -100,8 +100,13 @@ public:
     MeshInfo info(Handle mesh) const;
     std::vector<Handle> meshes() const;
 
-    // World-space triangles of every mesh under its current transform (for reference checks, builders).
+    // World-space triangles of every mesh under its current transform (for reference checks).
     TriangleMesh world_triangles() const;
+    // What a navmesh builder builds on: with a null `surface`, every static mesh in world space (a
+    // movable mesh is left out: a navmesh over it would stay behind when it moves); else the movable
+    // mesh `surface` alone, in its own space. Throws InvalidHandle, or InvalidArgument for a surface
+    // that is not movable.
+    TriangleMesh triangles_to_build(Handle surface) const;
     // For each hit, the corners of its triangle (RayHit::mesh, RayHit::primitive) if it is a static
     // mesh's, in world space, exactly as Embree tests them; nothing for a miss, a movable mesh (Embree
     // tests those in their own space) or a mesh removed since the hit. Parallel over the batch.

@@ -36,4 +36,18 @@ void place_saved_link(const NavMesh& navmesh, Link& link) {
     link.end_polygon = polygon_still_under(navmesh, link.end, link.end_polygon, "end");
 }
 
+Link link_in_world(Link link, const SurfacePose& pose) {
+    link.start = pose.world_point(link.start);
+    link.end = pose.world_point(link.end);
+    link.apex = pose.world_point(link.apex);
+    return link;
+}
+
+Link link_in_surface(Link link, const SurfacePose& pose) {
+    link.start = pose.surface_point(link.start);
+    link.end = pose.surface_point(link.end);
+    link.apex = pose.surface_point(link.apex);
+    return link;
+}
+
 }  // namespace nl

@@ -6,6 +6,7 @@
 
 #include "links/link.h"
 #include "navmesh/navmesh.h"
+#include "navmesh/surface_pose.h"
 
 namespace nl {
 
@@ -20,5 +21,11 @@ void place_link(const NavMesh& navmesh, Link& link);
 // holds its end (seen from above, within the reach in height) is kept, so a file saved from another
 // build of the navmesh keeps the polygons it can; the others are located again.
 void place_saved_link(const NavMesh& navmesh, Link& link);
+
+// The link with its points (ends, apex) carried by `pose` to the world, or from the world to the
+// surface: a link on a navmesh that rides a moving mesh is kept in the mesh's space. What it asks of
+// a body (rise, drop, length) stays: the surface's up is taken as the world's.
+Link link_in_world(Link link, const SurfacePose& pose);
+Link link_in_surface(Link link, const SurfacePose& pose);
 
 }  // namespace nl

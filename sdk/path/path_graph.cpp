@@ -4,8 +4,10 @@
 
 namespace nl {
 
-PathGraph::PathGraph(std::shared_ptr<const NavMesh> navmesh, std::shared_ptr<const LinkSnapshot> links)
-    : navmesh_(std::move(navmesh)), links_(links ? std::move(links) : std::make_shared<const LinkSnapshot>()) {
+PathGraph::PathGraph(std::shared_ptr<const NavMesh> navmesh, std::shared_ptr<const LinkSnapshot> links,
+                     std::shared_ptr<const SurfaceFrame> frame)
+    : navmesh_(std::move(navmesh)), links_(links ? std::move(links) : std::make_shared<const LinkSnapshot>()),
+      frame_(std::move(frame)) {
     const uint32_t polygons = navmesh_->polygon_count();
     auto usable = [&](const Link& l) {
         return l.enabled && l.start_polygon < polygons && l.end_polygon < polygons;

@@ -8,6 +8,7 @@
 
 #include "links/link_snapshot.h"
 #include "navmesh/navmesh.h"
+#include "navmesh/surface_pose.h"
 
 namespace nl {
 
@@ -19,12 +20,16 @@ struct LinkExit {
 
 class PathGraph {
 public:
-    PathGraph(std::shared_ptr<const NavMesh> navmesh, std::shared_ptr<const LinkSnapshot> links);
+    // `frame`: the movable mesh the navmesh rides (null: it stays where it is). The navmesh and the
+    // links are in its space; searches run there.
+    PathGraph(std::shared_ptr<const NavMesh> navmesh, std::shared_ptr<const LinkSnapshot> links,
+              std::shared_ptr<const SurfaceFrame> frame = nullptr);
 
     const NavMesh& navmesh() const { return *navmesh_; }
     const std::shared_ptr<const NavMesh>& navmesh_ptr() const { return navmesh_; }
     const std::shared_ptr<const LinkSnapshot>& links_ptr() const { return links_; }
     const StoredLink& link(uint32_t index) const { return (*links_)[index]; }
+    const std::shared_ptr<const SurfaceFrame>& frame() const { return frame_; }
 
     // The enabled links leaving polygon p, as [begin, end).
     const LinkExit* exits_begin(uint32_t p) const { return first_exit_.empty() ? nullptr : &exits_[first_exit_[p]]; }
@@ -40,6 +45,7 @@ public:
 private:
     std::shared_ptr<const NavMesh> navmesh_;
     std::shared_ptr<const LinkSnapshot> links_;
+    std::shared_ptr<const SurfaceFrame> frame_;
     std::vector<uint32_t> first_exit_;  // polygon_count + 1 offsets into exits_; empty without links
     std::vector<LinkExit> exits_;
     float cheapest_link_per_metre_ = 1.0f;

@@ -54,7 +54,8 @@ private:
         pull_string(from, to, portals_, pulled_);
         for (const PulledPoint& pulled : pulled_) {
             const size_t step = first + std::min<size_t>(pulled.portal, last - first);
-            const PathPoint point{pulled.position, corridor_.steps[step].polygon, kSegmentWalk, Handle{}, pulled.position, false};
+            const PathPoint point{pulled.position, pulled.position, corridor_.steps[step].polygon, kSegmentWalk, Handle{},
+                                  pulled.position, false};
             // A link landing where the next one takes off, or a walk of no length, adds no point.
             if (!result_.points.empty() && result_.points.back().position == point.position &&
                 result_.points.back().segment == kSegmentWalk) {
@@ -80,6 +81,23 @@ thread_local std::vector<PulledPoint> PathAssembler::pulled_;
 }  // namespace
 
 void plan_path(const PathGraph& graph, const PathQuery& query, const std::atomic<bool>* cancel, PathResult& result) {
+    const SurfacePose pose = pose_of(graph.frame());
+    if (pose.is_identity()) return plan_path_in_surface_space(graph, query, cancel, result);
+    PathQuery local = query;
+    local.start = pose.surface_point(query.start);
+    local.goal = pose.surface_point(query.goal);
+    local.search_half_extents = pose.surface_extents(query.search_half_extents);
+    plan_path_in_surface_space(graph, local, cancel, result);
+    for (PathPoint& p : result.points) {
+        p.position = pose.world_point(p.surface_position);
+        p.apex = pose.world_point(p.apex);
+    }
+    result.start = pose.world_point(result.start);
+    result.goal = pose.world_point(result.goal);
+}
+
+void plan_path_in_surface_space(const PathGraph& graph, const PathQuery& query, const std::atomic<bool>* cancel,
+                                PathResult& result) {
     const NavMesh& mesh = graph.navmesh();
     std::vector<PathPoint> points = std::move(result.points);
     points.clear();

@@ -9,9 +9,16 @@
 
 namespace nl {
 
-// Plans into `out` (its points' memory is reused). Never throws for an unreachable goal or an end off
-// the navmesh (the outcome says so); throws only for out-of-memory or an internal error. A set
-// `cancel` makes the outcome Cancelled.
+// Plans into `out` (its points' memory is reused), between world-space ends. Never throws for an
+// unreachable goal or an end off the navmesh (the outcome says so); throws only for out-of-memory or
+// an internal error. A set `cancel` makes the outcome Cancelled. On a navmesh that rides a moving
+// mesh, the mesh's pose is read once: the search runs in its space, and each point is given at that
+// pose in the world (position) and in the surface's space (surface_position), where it stays.
 void plan_path(const PathGraph& graph, const PathQuery& query, const std::atomic<bool>* cancel, PathResult& out);
+
+// The same with the query's ends (and search box) and the result in the navmesh's own space: what
+// agents on a surface plan with. On a navmesh that rides nothing it is plan_path.
+void plan_path_in_surface_space(const PathGraph& graph, const PathQuery& query, const std::atomic<bool>* cancel,
+                                PathResult& out);
 
 }  // namespace nl

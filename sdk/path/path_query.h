@@ -46,7 +46,8 @@ enum class PathOutcome : uint32_t {
 constexpr uint32_t kSegmentWalk = 0;
 
 struct PathPoint {
-    Vec3 position = Vec3::Zero();
+    Vec3 position = Vec3::Zero();          // in the world (as the request's ends are)
+    Vec3 surface_position = Vec3::Zero();  // in the navmesh's own space: where it stays on a moving surface
     uint32_t polygon = 0xffffffffu;
     uint32_t segment = kSegmentWalk;
     Handle link;                  // null for walking

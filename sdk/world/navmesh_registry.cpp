@@ -30,11 +30,38 @@ const NavMeshRegistry::Entry& NavMeshRegistry::entry(Handle navmesh) const {
     return const_cast<NavMeshRegistry*>(this)->entry(navmesh);
 }
 
-Handle NavMeshRegistry::add(std::shared_ptr<const NavMesh> navmesh) {
+std::shared_ptr<SurfaceFrame> NavMeshRegistry::frame_of_mesh(Handle mesh) const {
+    std::shared_ptr<SurfaceFrame> found;
+    navmeshes_.for_each([&](Handle, const Entry& e) {
+        if (!found && e.frame && e.frame->mesh() == mesh) found = e.frame;
+    });
+    return found;
+}
+
+Handle NavMeshRegistry::add(std::shared_ptr<const NavMesh> navmesh, Handle surface, const Transform& to_world) {
     Entry e;
     e.navmesh = std::move(navmesh);
     std::unique_lock lock(mutex_);
+    if (surface != Handle{}) {
+        e.frame = frame_of_mesh(surface);
+        if (!e.frame) e.frame = std::make_shared<SurfaceFrame>(surface, to_world);
+    }
     return navmeshes_.insert(std::move(e));
+}
+
+std::shared_ptr<const SurfaceFrame> NavMeshRegistry::frame(Handle navmesh) const {
+    std::shared_lock lock(mutex_);
+    return entry(navmesh).frame;
+}
+
+bool NavMeshRegistry::carried_by(Handle mesh) const {
+    std::shared_lock lock(mutex_);
+    return frame_of_mesh(mesh) != nullptr;
+}
+
+void NavMeshRegistry::move_surface(Handle mesh, const Transform& to_world) {
+    std::shared_lock lock(mutex_);
+    if (const std::shared_ptr<SurfaceFrame> frame = frame_of_mesh(mesh)) frame->move(to_world);
 }
 
 void NavMeshRegistry::remove(Handle navmesh) {
@@ -204,11 +231,13 @@ bool NavMeshRegistry::store_update(Handle navmesh, const LinkGeneration* from, c
 std::shared_ptr<const PathGraph> NavMeshRegistry::path_graph(Handle navmesh) const {
     std::shared_ptr<const NavMesh> mesh;
     std::shared_ptr<const LinkSnapshot> snapshot;
+    std::shared_ptr<const SurfaceFrame> frame;
     {
         std::shared_lock lock(mutex_);
         const Entry& e = entry(navmesh);
         if (e.snapshot && e.path_graph && e.path_graph->links_ptr() == e.snapshot) return e.path_graph;
         mesh = e.navmesh;
+        frame = e.frame;
         snapshot = e.snapshot;
     }
     if (!snapshot) {
@@ -218,7 +247,7 @@ std::shared_ptr<const PathGraph> NavMeshRegistry::path_graph(Handle navmesh) con
         if (e.path_graph && e.path_graph->links_ptr() == snapshot) return e.path_graph;
     }
     // Built outside the lock: requests on other navmeshes, and edits, go on meanwhile.
-    auto graph = std::make_shared<const PathGraph>(std::move(mesh), snapshot);
+    auto graph = std::make_shared<const PathGraph>(std::move(mesh), snapshot, std::move(frame));
     std::unique_lock lock(mutex_);
     if (const Entry* e = navmeshes_.find(navmesh); e && e->snapshot == snapshot) e->path_graph = graph;
     return graph;

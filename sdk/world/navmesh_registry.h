@@ -18,6 +18,7 @@
 #include "links/link_generation.h"
 #include "links/link_snapshot.h"
 #include "navmesh/navmesh.h"
+#include "navmesh/surface_pose.h"
 #include "path/path_graph.h"
 #include "util/handle.h"
 #include "util/shared_mutex.h"
@@ -36,13 +37,22 @@ public:
     explicit NavMeshRegistry(uint32_t handle_tag) : navmeshes_(handle_tag, HandleKind::NavMesh), links_(handle_tag, HandleKind::Link) {}
 
     // Navmeshes. Lookups throw InvalidHandle for a null, removed or foreign handle.
-    Handle add(std::shared_ptr<const NavMesh> navmesh);
+    // `surface`: the movable mesh the navmesh rides (null: none), the navmesh in its space, placed at
+    // `to_world` now; navmeshes on one mesh share its frame.
+    Handle add(std::shared_ptr<const NavMesh> navmesh, Handle surface = Handle{},
+               const Transform& to_world = Transform::Identity());
     // Removes the navmesh, its links, its last generation and its path graph together. Readers that
     // hold its navmesh, a snapshot or a graph keep them; a generation that finishes later keeps nothing.
     void remove(Handle navmesh);
     bool contains(Handle navmesh) const;
     std::shared_ptr<const NavMesh> navmesh(Handle navmesh) const;
     std::vector<Handle> handles() const;
+    // The frame of the mesh the navmesh rides; null for one that rides nothing.
+    std::shared_ptr<const SurfaceFrame> frame(Handle navmesh) const;
+    // Whether any navmesh rides `mesh`.
+    bool carried_by(Handle mesh) const;
+    // Places the navmeshes that ride `mesh` (if any) at `to_world`; nothing else changes.
+    void move_surface(Handle mesh, const Transform& to_world);
 
     // Links. Each edit publishes: the next snapshot reader sees it.
     Handle add_link(Handle navmesh, const Link& link);
@@ -88,6 +98,7 @@ public:
 private:
     struct Entry {
         std::shared_ptr<const NavMesh> navmesh;
+        std::shared_ptr<SurfaceFrame> frame;            // null: rides nothing
         std::vector<Handle> link_ids;                   // in the order they were added
         mutable std::shared_ptr<const LinkSnapshot> snapshot;  // null after an edit, until read
         mutable std::shared_ptr<const PathGraph> path_graph;   // for some snapshot; checked on read
@@ -100,6 +111,8 @@ private:
     };
 
     Entry& entry(Handle navmesh);
+    // The frame of `mesh` if a navmesh rides it; null otherwise. Needs the lock.
+    std::shared_ptr<SurfaceFrame> frame_of_mesh(Handle mesh) const;
     const Entry& entry(Handle navmesh) const;
     // Builds the entry's snapshot if an edit made it stale; needs the lock held alone.
     const std::shared_ptr<const LinkSnapshot>& snapshot_of(const Entry& e) const;

@@ -25,10 +25,48 @@ void World::log_repairs(const NavMesh& navmesh) const {
     }
 }
 
-Handle World::add_navmesh(const NavMeshInput& input) {
+Transform World::surface_placement(Handle surface) const {
+    MeshInfo info;
+    try {
+        info = level_->info(surface);
+    } catch (const Error& e) {
+        if (e.code() != ErrorCode::InvalidHandle) throw;
+        fail_field(ErrorCode::InvalidHandle, "surface", ": ", e.what());
+    }
+    if (!(info.flags & kMeshMovable))
+        fail_field(ErrorCode::InvalidArgument, "surface", " is not a movable mesh (NL_MESH_MOVABLE): only those carry navmeshes");
+    if (!is_rigid(info.transform)) fail_field(ErrorCode::InvalidArgument, "surface", "'s transform", kNotRigid);
+    return info.transform;
+}
+
+Handle World::add_on_surface(std::shared_ptr<const NavMesh> navmesh, Handle surface) {
+    if (surface == Handle{}) return navmeshes_.add(std::move(navmesh));
+    std::lock_guard lock(surface_moves_);
+    return navmeshes_.add(std::move(navmesh), surface, surface_placement(surface));
+}
+
+Handle World::add_navmesh(const NavMeshInput& input, Handle surface) {
+    if (surface != Handle{}) {
+        std::lock_guard lock(surface_moves_);
+        surface_placement(surface);  // a bad surface before the polygons' work
+    }
     std::shared_ptr<const NavMesh> navmesh = nl::build_navmesh(input);
     log_repairs(*navmesh);
-    return navmeshes_.add(std::move(navmesh));
+    return add_on_surface(std::move(navmesh), surface);
+}
+
+void World::set_mesh_transform(Handle mesh, const Transform& transform) {
+    std::lock_guard lock(surface_moves_);
+    if (navmeshes_.carried_by(mesh) && !is_rigid(transform)) fail_field(ErrorCode::InvalidArgument, "transform", kNotRigid);
+    level_->set_transform(mesh, transform);
+    navmeshes_.move_surface(mesh, transform);
+}
+
+void World::remove_mesh(Handle mesh) {
+    std::lock_guard lock(surface_moves_);
+    if (navmeshes_.carried_by(mesh))
+        fail(ErrorCode::InvalidArgument, "the mesh carries a navmesh (it rides the mesh): remove the navmesh first");
+    level_->remove_mesh(mesh);
 }
 
 Handle World::build_navmesh(const NavMeshBuildRequest& request) {
@@ -39,10 +77,14 @@ Handle World::build_navmesh(const NavMeshBuildRequest& request) {
         fail(ErrorCode::NotFound, "no navmesh builder named '", request.builder, "' (loaded: ", loaded.empty() ? "none" : loaded,
              ")");
     }
+    if (request.surface != Handle{}) {
+        std::lock_guard lock(surface_moves_);
+        surface_placement(request.surface);
+    }
     std::shared_ptr<const NavMesh> navmesh = builder->build(*this, request);
     if (!navmesh) fail(ErrorCode::Internal, "builder '", request.builder, "' succeeded without handing over a navmesh");
     log_repairs(*navmesh);
-    return navmeshes_.add(std::move(navmesh));
+    return add_on_surface(std::move(navmesh), request.surface);
 }
 
 }  // namespace nl

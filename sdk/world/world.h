@@ -14,6 +14,7 @@
 #pragma once
 
 #include <memory>
+#include <mutex>
 #include <vector>
 
 #include "agents/agents.h"
@@ -66,15 +67,29 @@ public:
     void step(float dt) { agents_.step(dt, navmeshes_, *tasks_); }
 
     // A host's navmesh: validated, repaired (logged as a warning) and added. Throws as build_navmesh.
-    Handle add_navmesh(const NavMeshInput& input);
-    // Builds a navmesh with the named builder plugin from the level and adds it. Throws NotFound (no
-    // such builder) and the builder's failures.
+    // `surface`: the movable mesh it rides (null: none); its polygons are then in that mesh's own
+    // space, and it follows the mesh's transform. Throws InvalidArgument (about "surface") for a mesh
+    // that is not movable or whose transform is not rigid, InvalidHandle for a stale one.
+    Handle add_navmesh(const NavMeshInput& input, Handle surface = Handle{});
+    // Builds a navmesh with the named builder plugin from the level (request.surface: from that
+    // movable mesh in its own space, riding it) and adds it. Throws NotFound (no such builder) and the
+    // builder's failures.
     Handle build_navmesh(const NavMeshBuildRequest& request);
+
+    // Moves a mesh, and the navmeshes that ride it with it (no rebuild, no new snapshot). A mesh that
+    // carries a navmesh takes rigid transforms only (InvalidArgument otherwise, nothing moved).
+    void set_mesh_transform(Handle mesh, const Transform& transform);
+    // Removes a mesh; one that carries a navmesh is refused (InvalidArgument): remove the navmesh first.
+    void remove_mesh(Handle mesh);
 
     // Links made outside the generator (the host's), placed on their navmesh (place_link; a bad end
     // is a failure about the field "start" or "end").
     Handle add_link(Handle navmesh, Link link);
     void update_link(Handle link, Link replacement);
+    // A link and its navmesh, the link in world space (on a navmesh that rides a moving mesh, where
+    // the mesh is now). Links of such a navmesh are added and updated in world space too, and kept in
+    // the mesh's space; links files hold them in the mesh's space.
+    std::pair<Handle, Link> link_in_world(Handle link) const;
     // Replaces every link of the navmesh with those of a links file (place_saved_link; an end off the
     // navmesh is a failure about "links[i].start"); nothing changes when one is refused.
     void load_links(Handle navmesh, std::vector<Link> links);
@@ -96,6 +111,12 @@ private:
     std::vector<Link> plugin_links(Handle navmesh, const NavMesh& mesh, const PluginSettings& settings,
                                    LinkGenerationReport& report);
     void log_repairs(const NavMesh& navmesh) const;
+    // InvalidArgument for a navmesh that rides a moving mesh: the generator proves links against the
+    // level as it stands, so they would hold at one placement only.
+    void refuse_generation_on_surface(Handle navmesh) const;
+    // The surface's transform now, checked as a navmesh's placement; needs surface_moves_ held.
+    Transform surface_placement(Handle surface) const;
+    Handle add_on_surface(std::shared_ptr<const NavMesh> navmesh, Handle surface);
 
     HandleTag handle_tag_;  // released last, after every handle it tagged
     Logger logger_;
@@ -105,6 +126,9 @@ private:
     PluginRegistry plugins_;
     PathQueue paths_;
     Agents agents_;
+    // Mesh moves and removals, and navmeshes placed on a mesh, one at a time: a mesh and the
+    // navmeshes riding it never end in different places.
+    std::mutex surface_moves_;
 };
 
 }  // namespace nl

@@ -9,6 +9,7 @@
 namespace nl {
 
 Handle World::add_link(Handle navmesh, Link link) {
+    link = link_in_surface(link, pose_of(navmeshes_.frame(navmesh)));
     place_link(*navmeshes_.navmesh(navmesh), link);
     link.generated = false;
     return navmeshes_.add_link(navmesh, link);
@@ -16,8 +17,20 @@ Handle World::add_link(Handle navmesh, Link link) {
 
 void World::update_link(Handle link, Link replacement) {
     const Handle navmesh = navmeshes_.link(link).first;
+    replacement = link_in_surface(replacement, pose_of(navmeshes_.frame(navmesh)));
     place_link(*navmeshes_.navmesh(navmesh), replacement);
     navmeshes_.update_link(link, replacement);
+}
+
+std::pair<Handle, Link> World::link_in_world(Handle link) const {
+    auto [navmesh, stored] = navmeshes_.link(link);
+    return {navmesh, nl::link_in_world(stored, pose_of(navmeshes_.frame(navmesh)))};
+}
+
+void World::refuse_generation_on_surface(Handle navmesh) const {
+    if (navmeshes_.frame(navmesh))
+        fail(ErrorCode::InvalidArgument, "links are not generated on a navmesh that rides a moving mesh (its links would "
+                                         "hold at one placement only): add its links with nl_link_add");
 }
 
 void World::load_links(Handle navmesh, std::vector<Link> links) {
@@ -64,6 +77,7 @@ std::vector<Link> World::plugin_links(Handle navmesh, const NavMesh& mesh, const
 LinkGenerationReport World::generate_links(Handle navmesh, const LinkSettings& settings, PluginSettings plugin_settings,
                                            GenerationProgress progress) {
     const std::shared_ptr<const NavMesh> mesh = navmeshes_.navmesh(navmesh);
+    refuse_generation_on_surface(navmesh);
     auto generation = std::make_shared<LinkGeneration>(mesh, settings, GenerationMethod::Indexed);
     const NavMeshRegistry::GenerationTurn one_at_a_time = navmeshes_.take_generation_turn(navmesh);
     LinkGenerationReport report;
@@ -76,6 +90,7 @@ LinkGenerationReport World::generate_links(Handle navmesh, const LinkSettings& s
 
 LinkGenerationReport World::update_links_in_box(Handle navmesh, const Aabb& box, GenerationProgress progress) {
     const std::shared_ptr<const NavMesh> mesh = navmeshes_.navmesh(navmesh);
+    refuse_generation_on_surface(navmesh);
     if (!within_coordinate_limit(box.min) || !within_coordinate_limit(box.max) || box.empty())
         fail(ErrorCode::InvalidArgument, "the box's corners must be finite, within the coordinate limit, and min <= max");
     const NavMeshRegistry::GenerationTurn one_at_a_time = navmeshes_.take_generation_turn(navmesh);

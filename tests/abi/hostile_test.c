@@ -1899,6 +1899,37 @@ static void bad_agent_floats(const char* function, const void* valid, size_t siz
     bad_float_fields(function, "def", valid, size, fields, 4, refuse);
 }
 
+/* A def's optional `surface` mesh id (at `offset`): the null id is allowed (rides nothing), as is
+   the movable lift (the navmesh rides it; `riding` is a def that fits on the lift); every other bad id is INVALID_HANDLE naming "surface",
+   and a static mesh is INVALID_ARGUMENT. */
+static void surface_cases(const def_function* f, const void* valid, const void* riding, size_t size, size_t offset) {
+    aligned_buffer def;
+    g_def = f;
+    CASE(f->function, "def->surface null (allowed: the navmesh rides nothing)") {
+        memcpy(def.bytes, valid, size);
+        memset(def.bytes + offset, 0, sizeof(nl_mesh_id));
+        def_accepts(def.bytes);
+    }
+    CASE(f->function, "def->surface the movable lift (allowed: the navmesh rides it)") {
+        memcpy(def.bytes, riding, size);
+        memcpy(def.bytes + offset, &A.movable, sizeof A.movable);
+        def_accepts(def.bytes);
+    }
+    CASE(f->function, "def->surface a static mesh") {
+        memcpy(def.bytes, valid, size);
+        memcpy(def.bytes + offset, &A.mesh, sizeof A.mesh);
+        def_refuses(def.bytes, NL_STATUS_INVALID_ARGUMENT, "def->surface is not a movable mesh");
+    }
+    FOR_BAD_IDS(bad, A.movable, A.stale_mesh, B.movable) {
+        if (bad->id.index1 == 0u && bad->id.generation == 0u) continue; /* the null id: allowed above */
+        CASE(f->function, "def->surface %s", bad->what) {
+            memcpy(def.bytes, valid, size);
+            memcpy(def.bytes + offset, &bad->id, sizeof bad->id);
+            def_refuses(def.bytes, NL_STATUS_INVALID_HANDLE, "def->surface");
+        }
+    }
+}
+
 static void group_navmesh_add(void) {
     static const def_function add = {"nl_navmesh_add", navmesh_add_call, sizeof(nl_navmesh_id), remove_navmesh_out, 0, 0, 0};
     static const float_field weld[] = {FLOAT_FIELD(nl_navmesh_def, weld_tolerance, 1)};
@@ -1909,6 +1940,7 @@ static void group_navmesh_add(void) {
               def_refuses, def_accepts);
     bad_float_fields("nl_navmesh_add", "def", &valid, sizeof valid, weld, 1, def_refuses);
     bad_agent_floats("nl_navmesh_add", &valid, sizeof valid, offsetof(nl_navmesh_def, agent), def_refuses);
+    surface_cases(&add, &valid, &valid, sizeof valid, offsetof(nl_navmesh_def, surface));
 }
 
 /* The functions that take a navmesh id and no more than an output. */
@@ -2146,6 +2178,11 @@ static void group_navmesh_build(void) {
     def_cases("nl_navmesh_build", &valid, sizeof valid, k_build_defs, sizeof k_build_defs / sizeof *k_build_defs, def_refuses,
               def_accepts);
     bad_agent_floats("nl_navmesh_build", &valid, sizeof valid, offsetof(nl_navmesh_build_def, agent), def_refuses);
+    {
+        nl_navmesh_build_def small = valid; /* the 4 m lift, eroded by a 0.6 m body, is below Recast's smallest region */
+        small.agent.radius = 0.2f;
+        surface_cases(&k_build, &valid, &small, sizeof valid, offsetof(nl_navmesh_build_def, surface));
+    }
     def_sizes("nl_navmesh_build", "settings", &recast, sizeof recast, build_with_recast_refuses, build_with_recast_accepts);
     def_cases("nl_navmesh_build", &recast, sizeof recast, k_recast_settings, sizeof k_recast_settings / sizeof *k_recast_settings,
               build_with_recast_refuses, build_with_recast_accepts);

@@ -313,14 +313,23 @@ NL_API nl_status nl_mesh_add_obj_file(nl_world* world, const char* path, const n
 NL_API nl_status nl_mesh_add_obj_memory(nl_world* world, const char* data, size_t length,
                                         const nl_mesh_def* def, nl_mesh_id* out_id);
 
-/** Removes a mesh. Returns SUCCESS, or INVALID_HANDLE for a null, stale or another world's id.
+/** Removes a mesh. Returns SUCCESS, or INVALID_HANDLE for a null, stale or another world's id, or
+ *  INVALID_ARGUMENT for a mesh a navmesh rides (remove the navmesh first).
  *  Thread-safe; waits for ray queries in flight on this world to finish. */
 NL_API nl_status nl_mesh_remove(nl_world* world, nl_mesh_id mesh);
 
 /** Moves a mesh: `transform` (16 floats, column-major, affine, invertible; borrowed) replaces the
  *  mesh's transform. Cheap for NL_MESH_MOVABLE meshes; otherwise the vertices are re-uploaded.
- *  Returns SUCCESS, or INVALID_HANDLE, or INVALID_ARGUMENT (null, non-finite, non-affine, singular).
- *  Thread-safe; waits for ray queries in flight on this world to finish. */
+ *  The navmeshes that ride the mesh (nl_navmesh_def.surface) move with it when this returns: no
+ *  rebuild and no new snapshot; their point location, paths and link ends answer in the world where
+ *  the mesh is now, and agents on them ride along (docs/moving-surfaces.md). Such a mesh takes only
+ *  rotations and translations.
+ *  Returns SUCCESS, or INVALID_HANDLE, or INVALID_ARGUMENT (null, non-finite, non-affine, singular;
+ *  not rigid for a mesh a navmesh rides; nothing moves).
+ *  Thread-safe: meant to be called from the host's physics or game thread while path workers plan
+ *  and nl_world_step runs elsewhere. A path planned meanwhile uses one pose throughout (the one of
+ *  the moment its search starts); an agent step reads each surface's pose when it reads the agent.
+ *  Waits for ray queries in flight on this world to finish. */
 NL_API nl_status nl_mesh_set_transform(nl_world* world, nl_mesh_id mesh, const float* transform);
 
 /** Nonzero if `mesh` refers to a mesh registered in `world` and not removed. Thread-safe. */
@@ -467,6 +476,10 @@ typedef struct nl_navmesh_def {
     const uint32_t* detail_triangle_starts; /**< polygon_count + 1 offsets: polygon p's detail triangles
                                                  are [starts[p], starts[p + 1]); starts[polygon_count]
                                                  must equal detail_triangle_count. Borrowed. */
+    nl_mesh_id surface;                   /**< A movable mesh (NL_MESH_MOVABLE) the navmesh rides, or the
+                                               null id. With one, every coordinate above is in that
+                                               mesh's own space, and the navmesh follows the mesh:
+                                               nl_mesh_set_transform moves it (no rebuild). Added in 0.3. */
 } nl_navmesh_def;
 
 /** A def with no geometry, weld tolerance 0.001 and the default agent type. Thread-safe. */
@@ -504,8 +517,10 @@ typedef struct nl_navmesh_info {
     uint32_t dropped_polygon_count;    /**< Degenerate polygons dropped. */
     uint32_t non_manifold_edge_count;  /**< Edges shared by three or more polygons (connect none). */
     nl_agent_type agent;
-    float bounds_min[3];
+    float bounds_min[3];               /**< In the world; for a navmesh that rides a moving mesh, a
+                                            box that holds it where the mesh is now. */
     float bounds_max[3];
+    nl_mesh_id surface;                /**< The movable mesh it rides; the null id for none. Added in 0.3. */
 } nl_navmesh_info;
 
 NL_DEFINE_OUTPUT_INIT(nl_navmesh_info, nl_navmesh_info_init)
@@ -603,12 +618,18 @@ typedef struct nl_navmesh_build_def {
                                      means none (length must then be 0); an empty string is not a
                                      JSON object (PARSE_ERROR). */
     size_t settings_json_length;
+    nl_mesh_id surface;         /**< A movable mesh to build on, or the null id. With one, the builder
+                                     sees that mesh alone, in its own space, and the navmesh rides it
+                                     (as nl_navmesh_def.surface). Without one, it sees every static
+                                     mesh (movable meshes are left out: a navmesh over one would stay
+                                     behind when it moves). Added in 0.3. */
 } nl_navmesh_build_def;
 
 /** Builder "recast", default agent type, default settings. Thread-safe; never fails. */
 NL_API nl_navmesh_build_def nl_default_navmesh_build_def(void);
 
-/** Builds a navmesh from every mesh registered in the world (under their current transforms) and adds
+/** Builds a navmesh from every static mesh registered in the world (under their current transforms;
+ *  or, with def->surface, from that movable mesh in its own space) and adds
  *  it as nl_navmesh_add would. Returns SUCCESS, or a failure with NOT_FOUND (no builder of that name,
  *  or no walkable surface in the level), INVALID_ARGUMENT (bad agent or settings, the field named;
  *  settings JSON nested deeper than 64 levels; for "recast", a level with more walkable cells than
@@ -995,6 +1016,10 @@ typedef struct nl_path_point {
                                   higher end; for walking the point itself. */
     uint8_t reversed;        /**< 1 if the link is taken from its end to its start. */
     uint8_t reserved[3];
+    float surface_position[3]; /**< The point in its navmesh's own space: where it stays on a navmesh
+                                    that rides a moving mesh (`position` and `apex` are in the world,
+                                    at the mesh's pose when the path was planned). Equal to
+                                    `position` on a navmesh that rides nothing. Added in 0.3. */
 } nl_path_point;
 
 NL_DEFINE_OUTPUT_INIT(nl_path_point, nl_path_point_init)

@@ -1,0 +1,29 @@
+#include "navmesh/surface_pose.h"
+
+
+namespace nl {
+
+bool is_rigid(const Transform& t) {
+    const Eigen::Matrix3f r = t.linear();
+    if (!r.allFinite() || !t.translation().allFinite()) return false;
+    return (r.transpose() * r - Eigen::Matrix3f::Identity()).cwiseAbs().maxCoeff() <= 1e-4f && r.determinant() > 0.0f;
+}
+
+SurfacePose::SurfacePose(const Transform& to_world) : to_world_(to_world) {
+    identity_ = to_world.matrix() == Eigen::Matrix4f::Identity();
+    // The exact inverse of a rotation is its transpose; Eigen's general inverse would round differently.
+    to_surface_.linear() = to_world.linear().transpose();
+    to_surface_.translation() = -(to_surface_.linear() * to_world.translation());
+}
+
+Aabb SurfacePose::world_box(const Aabb& b) const {
+    if (identity_ || b.empty()) return b;
+    const Vec3 centre = world_point(0.5f * (b.min + b.max));
+    const Vec3 half = to_world_.linear().cwiseAbs() * (0.5f * (b.max - b.min));
+    Aabb out;
+    out.min = centre - half;
+    out.max = centre + half;
+    return out;
+}
+
+}  // namespace nl

@@ -1,0 +1,253 @@
+// Navmeshes that ride movable meshes (moving surfaces): they follow the mesh's transform with no new
+// snapshot, answer in the world where the mesh is now, keep their links and agents in the mesh's own
+// space (no drift, however long the mesh turns), and destinations set on them stick to them.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <functional>
+#include <string>
+#include <memory>
+#include <vector>
+
+#include "core_errors.h"
+#include "generated_mesh.h"
+#include "level_generator.h"
+#include "links/link_placement.h"
+#include "path/path_planner.h"
+#include "world/world.h"
+
+namespace {
+
+using nl::AgentState;
+using nl::Handle;
+using nl::Transform;
+using nl::Vec3;
+
+// Where the platform is at time t: turning about its centre at `spin` rad/s and carried along x at
+// `drift` m/s, from (20, 5, 0). Each pose is computed from t, never accumulated.
+Transform platform_pose(double t, double spin = 0.5, double drift = 0.0) {
+    Transform pose = Transform::Identity();
+    pose.translate(Vec3(float(20.0 + drift * t), 5.0f, 0.0f));
+    pose.rotate(Eigen::AngleAxisf(float(std::fmod(spin * t, 2.0 * M_PI)), Vec3::UnitY()));
+    return pose;
+}
+
+// An 8 x 8 m platform 0.5 m thick, its top at y = 0 in its own space, movable, with a navmesh of one
+// square on its top (given in the platform's space) for bodies of radius 0.3.
+struct Platform {
+    std::unique_ptr<nl::World> world;
+    Handle mesh, navmesh;
+
+    explicit Platform(const Transform& pose = platform_pose(0.0), int workers = 1) {
+        nl::WorldSettings settings;
+        settings.worker_count = workers;
+        world = std::make_unique<nl::World>(std::move(settings));
+        nl::levelgen::GeneratedLevel level;
+        level.add_box({{-4, -0.5f, -4}, {4, 0, 4}});
+        mesh = world->level().add_mesh(nl::test::to_triangle_mesh(level), pose, nl::kMeshMovable, 0);
+        nl::NavMeshInput in;
+        const float e = 3.7f;
+        in.vertices = {{-e, 0, -e}, {-e, 0, e}, {e, 0, e}, {e, 0, -e}};
+        in.indices = {0, 1, 2, 3};
+        in.polygon_sizes = {4};
+        in.agent.radius = 0.3f;
+        navmesh = world->add_navmesh(in, mesh);
+    }
+
+    Handle add_agent(const Vec3& world_position) {
+        nl::AgentDef def;
+        def.navmesh = navmesh;
+        def.position = world_position;
+        def.capabilities.radius = 0.3f;
+        return world->agents().add(world->navmeshes(), def);
+    }
+};
+
+float distance(const Vec3& a, const Vec3& b) { return (a - b).norm(); }
+
+// `fn` throws an nl::Error with `code` whose message contains `needle`.
+void check_refused(const std::function<void()>& fn, nl::ErrorCode code, const char* needle) {
+    std::string message;
+    CHECK(nl::test::code_of(fn, &message) == code);
+    CHECK_MESSAGE(message.find(needle) != std::string::npos, message);
+}
+
+}  // namespace
+
+TEST_CASE("a navmesh on a movable mesh follows its transform: no rebuild, no new snapshot, answers in the world") {
+    Platform p;
+    const std::shared_ptr<const nl::PathGraph> before = p.world->navmeshes().path_graph(p.navmesh);
+    const std::shared_ptr<const nl::NavMesh> polygons = p.world->navmeshes().navmesh(p.navmesh);
+    const Transform moved = platform_pose(2.0);  // turned by 1 rad
+    p.world->set_mesh_transform(p.mesh, moved);
+    CHECK(p.world->navmeshes().path_graph(p.navmesh) == before);
+    CHECK(p.world->navmeshes().navmesh(p.navmesh) == polygons);
+    CHECK(p.world->level().info(p.mesh).transform.isApprox(moved));
+
+    // A path between two points of the platform, asked in the world where it is now.
+    const Vec3 from_local(-2, 0, -2), to_local(2, 0, 1);
+    nl::PathQuery q;
+    q.start = moved * from_local;
+    q.goal = moved * to_local;
+    q.agent.radius = 0.3f;
+    nl::PathResult r;
+    nl::plan_path(*before, q, nullptr, r);
+    REQUIRE(r.outcome == nl::PathOutcome::Complete);
+    REQUIRE(r.points.size() == 2);
+    CHECK(distance(r.points.front().position, q.start) < 1e-4f);
+    CHECK(distance(r.points.back().position, q.goal) < 1e-4f);
+    CHECK(distance(r.points.front().surface_position, from_local) < 1e-4f);
+    CHECK(distance(r.points.back().surface_position, to_local) < 1e-4f);
+    CHECK(distance(r.start, q.start) < 1e-4f);
+
+    // Where the platform's corner was, there is no navmesh now (it turned 1 rad away).
+    q.start = platform_pose(0.0) * Vec3(3.5f, 0, 3.5f);
+    q.search_half_extents = Vec3(0.2f, 1.0f, 0.2f);
+    nl::plan_path(*before, q, nullptr, r);
+    CHECK(r.outcome == nl::PathOutcome::StartOffNavMesh);
+}
+
+TEST_CASE("a mesh that carries a navmesh takes rigid transforms only, and is not removed from under it") {
+    Platform p;
+    const Transform placed = p.world->level().info(p.mesh).transform;
+    Transform scaled = placed;
+    scaled.scale(2.0f);
+    check_refused([&] { p.world->set_mesh_transform(p.mesh, scaled); }, nl::ErrorCode::InvalidArgument,
+                           "transform is not a rotation and a translation");
+    Transform mirrored = placed;
+    mirrored.scale(Vec3(-1, 1, 1));
+    check_refused([&] { p.world->set_mesh_transform(p.mesh, mirrored); }, nl::ErrorCode::InvalidArgument, "not a rotation");
+    CHECK(p.world->level().info(p.mesh).transform.isApprox(placed));  // nothing moved
+    CHECK(p.world->navmeshes().frame(p.navmesh)->moves() == 0);
+
+    check_refused([&] { p.world->remove_mesh(p.mesh); }, nl::ErrorCode::InvalidArgument, "remove the navmesh first");
+    CHECK(p.world->level().contains(p.mesh));
+    p.world->navmeshes().remove(p.navmesh);
+    p.world->remove_mesh(p.mesh);
+    CHECK_FALSE(p.world->level().contains(p.mesh));
+}
+
+TEST_CASE("a navmesh is placed only on a movable mesh with a rigid transform") {
+    Platform p;
+    nl::levelgen::GeneratedLevel ground;
+    ground.add_box({{-10, -1, -10}, {10, 0, 10}});
+    const Handle fixed = p.world->level().add_mesh(nl::test::to_triangle_mesh(ground), Transform::Identity(), 0, 0);
+    Transform stretched = Transform::Identity();
+    stretched.scale(Vec3(1, 1, 3));
+    const Handle squashed = p.world->level().add_mesh(nl::test::to_triangle_mesh(ground), stretched, nl::kMeshMovable, 0);
+    nl::NavMeshInput in;
+    in.vertices = {{-1, 0, -1}, {-1, 0, 1}, {1, 0, 1}, {1, 0, -1}};
+    in.indices = {0, 1, 2, 3};
+    in.polygon_sizes = {4};
+    const size_t before = p.world->navmeshes().handles().size();
+    check_refused([&] { p.world->add_navmesh(in, fixed); }, nl::ErrorCode::InvalidArgument, "surface is not a movable mesh");
+    check_refused([&] { p.world->add_navmesh(in, squashed); }, nl::ErrorCode::InvalidArgument,
+                           "surface's transform is not a rotation");
+    check_refused([&] { p.world->add_navmesh(in, Handle{7, 3}); }, nl::ErrorCode::InvalidHandle, "surface");
+    CHECK(p.world->navmeshes().handles().size() == before);
+    // A second navmesh on the same mesh shares its frame: one move places both.
+    const Handle second = p.world->add_navmesh(in, p.mesh);
+    CHECK(p.world->navmeshes().frame(second) == p.world->navmeshes().frame(p.navmesh));
+}
+
+TEST_CASE("links on a moving navmesh are kept in its space and read in the world where it is now") {
+    Platform p;
+    const Transform pose = platform_pose(1.0);
+    p.world->set_mesh_transform(p.mesh, pose);
+    nl::Link link;
+    link.kind = nl::LinkKind::Manual;
+    link.start = pose * Vec3(-3, 0, 0);
+    link.end = pose * Vec3(3, 0, 0);
+    nl::set_requirements_from_ends(link);
+    const Handle id = p.world->add_link(p.navmesh, link);
+    CHECK(distance(p.world->navmeshes().link(id).second.start, Vec3(-3, 0, 0)) < 1e-4f);  // stored on the surface
+    const Transform later = platform_pose(3.0, 0.5, 2.0);
+    p.world->set_mesh_transform(p.mesh, later);
+    const nl::Link seen = p.world->link_in_world(id).second;
+    CHECK(distance(seen.start, later * Vec3(-3, 0, 0)) < 1e-4f);
+    CHECK(distance(seen.end, later * Vec3(3, 0, 0)) < 1e-4f);
+    // The generator proves links against the level as it stands: on a moving surface they would hold
+    // at one placement only, so it refuses rather than promise that.
+    check_refused([&] { p.world->generate_links(p.navmesh, nl::LinkSettings{}, {}, [](float, const char*) { return true; }); },
+                           nl::ErrorCode::InvalidArgument, "rides a moving mesh");
+}
+
+TEST_CASE("an idle agent on a turning platform stays where it stood on it: within 1 mm after 10,000 steps") {
+    Platform p;
+    const Handle agent = p.add_agent(platform_pose(0.0) * Vec3(2.5f, 0, 1.5f));
+    const Vec3 stood = platform_pose(0.0).inverse() * p.world->agents().info(agent).position;
+    const double dt = 1.0 / 60.0;
+    float worst = 0.0f;
+    for (int k = 1; k <= 10000; ++k) {
+        const Transform pose = platform_pose(k * dt, 0.7, 0.3);
+        p.world->set_mesh_transform(p.mesh, pose);
+        p.world->step(float(dt));
+        worst = std::max(worst, distance(p.world->agents().info(agent).position, pose * stood));
+    }
+    MESSAGE("worst distance from where it stood on the platform: " << worst * 1000.0f << " mm");
+    CHECK(worst < 0.001f);
+    CHECK(p.world->agents().info(agent).state == AgentState::Idle);
+}
+
+TEST_CASE("a destination set on a moving surface sticks to it: the agent arrives where it is at arrival") {
+    Platform p;
+    const Handle agent = p.add_agent(platform_pose(0.0) * Vec3(-3, 0, -3));
+    const Vec3 target_local(3, 0, 3);
+    // Set at t = 0 where the target is then; the platform turns and travels on meanwhile.
+    p.world->agents().set_destination(p.world->navmeshes(), agent, platform_pose(0.0, 0.4, 1.5) * target_local);
+    const double dt = 1.0 / 30.0;
+    double t = 0.0;
+    nl::AgentInfo info;
+    for (int k = 0; k < 600; ++k) {
+        t += dt;
+        p.world->set_mesh_transform(p.mesh, platform_pose(t, 0.4, 1.5));
+        p.world->step(float(dt));
+        info = p.world->agents().info(agent);
+        const Vec3 target_now = platform_pose(t, 0.4, 1.5) * target_local;
+        REQUIRE(distance(info.destination, target_now) < 1e-3f);
+        if (info.state == AgentState::Arrived) break;
+    }
+    REQUIRE(info.state == AgentState::Arrived);
+    const Vec3 target_now = platform_pose(t, 0.4, 1.5) * target_local;
+    MESSAGE("arrived after " << t << " s, " << distance(info.position, target_now) * 100.0f << " cm from the destination "
+                             << "(which travelled " << distance(target_now, platform_pose(0.0, 0.4, 1.5) * target_local)
+                             << " m meanwhile)");
+    CHECK(distance(info.position, target_now) < 0.05f);
+    CHECK(distance(target_now, platform_pose(0.0, 0.4, 1.5) * target_local) > 5.0f);
+}
+
+TEST_CASE("bodies on a moving surface avoid each other there, and not bodies on the ground below it") {
+    Platform p;
+    nl::levelgen::GeneratedLevel ground;
+    ground.add_box({{10, -2, -10}, {30, -1, 10}});
+    p.world->level().add_mesh(nl::test::to_triangle_mesh(ground), Transform::Identity(), 0, 0);
+    nl::NavMeshInput in;
+    in.vertices = {{10.3f, -1, -9.7f}, {10.3f, -1, 9.7f}, {29.7f, -1, 9.7f}, {29.7f, -1, -9.7f}};
+    in.indices = {0, 1, 2, 3};
+    in.polygon_sizes = {4};
+    in.agent.radius = 0.3f;
+    const Handle floor = p.world->add_navmesh(in);
+    // Two on the platform heading through each other, one on the ground right under one of them.
+    const Transform pose = platform_pose(0.0);
+    const Handle a = p.add_agent(pose * Vec3(-3, 0, 0));
+    const Handle b = p.add_agent(pose * Vec3(3, 0, 0));
+    nl::AgentDef def;
+    def.navmesh = floor;
+    def.position = pose * Vec3(-3, 0, 0) + Vec3(0, -6, 0);
+    def.capabilities.radius = 0.3f;
+    const Handle below = p.world->agents().add(p.world->navmeshes(), def);
+    p.world->agents().set_destination(p.world->navmeshes(), a, pose * Vec3(3, 0, 0));
+    p.world->agents().set_destination(p.world->navmeshes(), b, pose * Vec3(-3, 0, 0));
+    float closest = 1e9f;
+    for (int k = 0; k < 300; ++k) {
+        p.world->step(1.0f / 30.0f);
+        const Vec3 pa = p.world->agents().info(a).position, pb = p.world->agents().info(b).position;
+        closest = std::min(closest, std::hypot(pa.x() - pb.x(), pa.z() - pb.z()));
+    }
+    CHECK(closest > 0.5f);  // two radii of 0.3 with a little give
+    CHECK(p.world->agents().info(a).state == AgentState::Arrived);
+    CHECK(p.world->agents().info(b).state == AgentState::Arrived);
+    // The one below never moved: a body 6 m above on another surface is not in its way.
+    CHECK(distance(p.world->agents().info(below).position, def.position + Vec3(0, 0, 0)) < 1.01f);
+    CHECK(p.world->agents().info(below).velocity.norm() == 0.0f);
+}
