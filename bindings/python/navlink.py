@@ -177,7 +177,7 @@ class NavmeshDef(Structure):
                 ("areas", POINTER(c_uint8)), ("weld_tolerance", c_float), ("agent", AgentType),
                 ("detail_vertices", POINTER(c_float)), ("detail_vertex_count", c_uint32),
                 ("detail_triangles", POINTER(c_uint32)), ("detail_triangle_count", c_uint32),
-                ("detail_triangle_starts", POINTER(c_uint32))]
+                ("detail_triangle_starts", POINTER(c_uint32)), ("surface", MeshId)]
 
 
 class NavmeshInfo(_Growable):
@@ -185,7 +185,7 @@ class NavmeshInfo(_Growable):
                 ("portal_count", c_uint32), ("boundary_edge_count", c_uint32), ("welded_vertex_count", c_uint32),
                 ("flipped_polygon_count", c_uint32), ("dropped_polygon_count", c_uint32),
                 ("non_manifold_edge_count", c_uint32), ("agent", AgentType), ("bounds_min", Vec3),
-                ("bounds_max", Vec3)]
+                ("bounds_max", Vec3), ("surface", MeshId)]
 
 
 class NavPolygon(_Growable):
@@ -206,7 +206,7 @@ class NavPoint(Structure):
 
 class NavmeshBuildDef(Structure):
     _fields_ = [("size", c_uint32), ("builder", c_char_p), ("agent", AgentType), ("settings", c_void_p),
-                ("settings_json", c_char_p), ("settings_json_length", c_size_t)]
+                ("settings_json", c_char_p), ("settings_json_length", c_size_t), ("surface", MeshId)]
 
 
 class LinkId(_Id):
@@ -282,7 +282,7 @@ class PathRequestDef(Structure):
 
 class PathPoint(_Growable):
     _fields_ = [("size", c_uint32), ("position", Vec3), ("polygon", c_uint32), ("segment", c_uint32), ("link", LinkId),
-                ("apex", Vec3), ("reversed", c_uint8), ("reserved", c_uint8 * 3)]
+                ("apex", Vec3), ("reversed", c_uint8), ("reserved", c_uint8 * 3), ("surface_position", Vec3)]
 
 
 class PathResultInfo(_Growable):
@@ -950,9 +950,12 @@ class World:
         return mesh
 
     def remove_mesh(self, mesh):
+        """Removes a mesh (STATUS_INVALID_ARGUMENT for a mesh a navmesh rides: remove the navmesh first)."""
         _check(lib.nl_mesh_remove(self.pointer, mesh))
 
     def set_mesh_transform(self, mesh, transform):
+        """Replaces the mesh's transform (16 floats, column-major, affine). The navmeshes that ride it move
+        with it; such a mesh takes rotations and translations only (STATUS_INVALID_ARGUMENT otherwise)."""
         _check(lib.nl_mesh_set_transform(self.pointer, mesh, _floats(transform)))
 
     def is_mesh_valid(self, mesh):
@@ -982,10 +985,14 @@ class World:
 
     # --- navmeshes ---
 
-    def build_navmesh(self, agent=None, recast=None, settings_json=None, builder=None):
-        """Builds a navmesh from every registered mesh with a builder plugin ("recast" when None)."""
+    def build_navmesh(self, agent=None, recast=None, settings_json=None, builder=None, surface=None):
+        """Builds a navmesh with a builder plugin ("recast" when None): from every static mesh, or with
+        `surface` (a MeshId of an MESH_MOVABLE mesh) from that mesh alone, in its own space; the navmesh
+        then rides it (navmesh_info(...).surface)."""
         d = lib.nl_default_navmesh_build_def()
         d.agent = agent if agent is not None else default_agent_type()
+        if surface is not None:
+            d.surface = surface
         d.builder = builder.encode() if builder is not None else None
         d.settings = ctypes.addressof(recast) if recast is not None else None
         if settings_json is not None:
@@ -996,8 +1003,10 @@ class World:
         return navmesh
 
     def add_navmesh(self, vertices, indices, polygon_vertex_counts=None, areas=None, weld_tolerance=None,
-                    agent=None, detail=None):
-        """The host's navmesh (copied, repaired). detail: (vertices, triangles, triangle_starts) or None."""
+                    agent=None, detail=None, surface=None):
+        """The host's navmesh (copied, repaired). detail: (vertices, triangles, triangle_starts) or None.
+        surface: a MeshId of an MESH_MOVABLE mesh the navmesh rides, or None; with one, the coordinates are
+        in that mesh's own space and set_mesh_transform moves the navmesh with the mesh."""
         d = lib.nl_default_navmesh_def()
         keep = [_floats(vertices), (c_uint32 * len(indices))(*indices)]
         d.vertices, d.vertex_count = ctypes.cast(keep[0], POINTER(c_float)), len(vertices) // 3
@@ -1020,6 +1029,8 @@ class World:
             d.detail_vertices, d.detail_vertex_count = ctypes.cast(keep[-3], POINTER(c_float)), len(dv) // 3
             d.detail_triangles, d.detail_triangle_count = ctypes.cast(keep[-2], POINTER(c_uint32)), len(dt) // 3
             d.detail_triangle_starts = ctypes.cast(keep[-1], POINTER(c_uint32))
+        if surface is not None:
+            d.surface = surface
         navmesh = NavmeshId()
         _check(lib.nl_navmesh_add(self.pointer, byref(d), byref(navmesh)))
         return navmesh

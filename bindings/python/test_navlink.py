@@ -28,14 +28,20 @@ BOX_INDICES = [0, 4, 6, 0, 6, 2, 1, 3, 7, 1, 7, 5, 0, 1, 5, 0, 5, 4, 2, 6, 7, 2,
 FLOOR = [-5, 0, -5, 5, 0, -5, 5, 0, 5, -5, 0, 5]
 QUAD = [0, 2, 1, 0, 3, 2]
 WEST, EAST = (-6.0, 0.0, 0.0), (6.0, 0.0, 0.0)
+# The moving surface: an 8 x 4 m movable box (top y = 0 in its own space) carrying a 7.2 x 3.2 m navmesh quad,
+# then moved 10 m along x and turned 90 degrees about y: its x axis goes to the world's -z, its z axis to x.
+RAFT_LO, RAFT_HI = (-4, -1, -2), (4, 0, 2)
+RAFT_QUAD = [-3.6, 0, -1.6, -3.6, 0, 1.6, 3.6, 0, 1.6, 3.6, 0, -1.6]
+RAFT_MOVED = [0, 0, -1, 0, 0, 1, 0, 0, 1, 0, 0, 0, 10, 0, 0, 1]  # column-major
+RAFT_SCALED = [2, 0, 0, 0, 0, 2, 0, 0, 0, 0, 2, 0, 10, 0, 0, 1]
 
 
-def add_box(world, lo, hi):
+def add_box(world, lo, hi, flags=0):
     """A box: corner k takes x from bit 0, y from bit 1, z from bit 2."""
     v = []
     for k in range(8):
         v += [hi[0] if k & 1 else lo[0], hi[1] if k & 2 else lo[1], hi[2] if k & 4 else lo[2]]
-    return world.add_mesh(v, BOX_INDICES)
+    return world.add_mesh(v, BOX_INDICES, flags=flags)
 
 
 def add_gap_level(world):
@@ -349,6 +355,64 @@ class NavmeshTest(NavLinkTestCase):
             self.assertFails(nl.STATUS_INVALID_ARGUMENT, "polygon", world.polygon, navmesh, 99)
             indices[2] = 40
             self.assertFails(nl.STATUS_INVALID_ARGUMENT, "indices", world.add_navmesh, vertices, indices)
+
+
+    def test_navmesh_on_a_moving_surface(self):
+        """A navmesh that rides a movable mesh (surface): given in the mesh's space, answered in the world
+        where the mesh is now; only rigid moves, and the mesh stays while the navmesh rides it."""
+        with nl.World() as world:
+            raft = add_box(world, RAFT_LO, RAFT_HI, flags=nl.MESH_MOVABLE)
+            navmesh = world.add_navmesh(RAFT_QUAD, [0, 1, 2, 3], [4], surface=raft)
+            info = world.navmesh_info(navmesh)
+            self.assertEqual((info.surface, info.polygon_count), (raft, 1))
+            on_raft, old_place = (10, 0.5, 3), (0, 0.5, 0)
+            found = world.find_nearest(navmesh, [old_place, on_raft], (0.5, 2, 0.5))
+            self.assertEqual([p.found for p in found], [1, 0], "before the move: at the origin")
+
+            world.set_mesh_transform(raft, RAFT_MOVED)
+            info = world.navmesh_info(navmesh)
+            self.assertEqual(info.surface, raft)
+            self.assertTrue(info.bounds_min[0] <= 8.4 + 1e-4 and info.bounds_max[0] >= 11.6 - 1e-4 and
+                            info.bounds_min[2] <= -3.6 + 1e-4 and info.bounds_max[2] >= 3.6 - 1e-4,
+                            (list(info.bounds_min), list(info.bounds_max)))
+            # (10, 3) is on the quad only if it was turned (its z half-width is 1.6 before).
+            found = world.find_nearest(navmesh, [old_place, on_raft], (0.5, 2, 0.5))
+            self.assertEqual(found[0].found, 0, "nothing left at the old place")
+            self.assertEqual(found[1].found, 1)
+            for got, want in zip(found[1].point, (10, 0, 3)):
+                self.assertAlmostEqual(got, want, places=4)
+
+            # Along the raft: the world's +z to -z is the mesh's -x to +x.
+            path = world.find_path(nl.PathQuery(navmesh, (10, 0, 3), (10, 0, -3), walker()))
+            self.assertEqual(path.outcome, nl.PATH_COMPLETE)
+            self.assertAlmostEqual(path.info.length, 6, places=4)
+            first, last = path.points[0], path.points[-1]
+            for point, world_xyz, mesh_xyz in ((first, (10, 0, 3), (-3, 0, 0)), (last, (10, 0, -3), (3, 0, 0))):
+                for got, want in zip(point.position, world_xyz):
+                    self.assertAlmostEqual(got, want, places=4, msg="position (world)")
+                for got, want in zip(point.surface_position, mesh_xyz):
+                    self.assertAlmostEqual(got, want, places=4, msg="surface_position (the mesh's space)")
+
+            # Only rigid moves for a mesh that carries a navmesh, and it cannot go while the navmesh rides it.
+            self.assertFails(nl.STATUS_INVALID_ARGUMENT, "nl_mesh_set_transform", world.set_mesh_transform, raft,
+                             RAFT_SCALED)
+            self.assertEqual(list(world.mesh_info(raft).transform), RAFT_MOVED, "a refused move moves nothing")
+            self.assertFails(nl.STATUS_INVALID_ARGUMENT, "nl_mesh_remove", world.remove_mesh, raft)
+
+            # Recast on the raft alone, in its space, riding it; without a surface a build sees static meshes only.
+            built = world.build_navmesh(surface=raft)
+            self.assertEqual(world.navmesh_info(built).surface, raft)
+            self.assertEqual([p.found for p in world.find_nearest(built, [on_raft, old_place], (0.5, 2, 0.5))], [1, 0])
+            self.assertFails(nl.STATUS_NOT_FOUND, "no triangles", world.build_navmesh)
+            world.remove_navmesh(built)
+            world.remove_navmesh(navmesh)
+            world.remove_mesh(raft)
+
+            # A navmesh on no surface reports the null id, and its path points' surface_position is position.
+            ground = world.add_navmesh(FLOOR, QUAD)
+            self.assertTrue(world.navmesh_info(ground).surface.is_null)
+            stroll = world.find_path(nl.PathQuery(ground, (-4, 0, -4), (4, 0, 4), walker()))
+            self.assertTrue(all(list(q.surface_position) == list(q.position) for q in stroll.points))
 
 
 class LinkTest(NavLinkTestCase):

@@ -139,7 +139,7 @@ void navmesh_find_nearest(const World& world, nl_navmesh_id navmesh, const float
             r.found = p.found ? 1 : 0;
             r.polygon = p.polygon;
             r.distance = p.distance;
-            copy_point(r.point, pose.world_point(p.point));
+            if (p.found) copy_point(r.point, pose.world_point(p.point));
             out[i] = r;
         }
     });

@@ -4,7 +4,7 @@ namespace NavLink
     /// header's NULL: every polygon a triangle, area 0, no detail mesh.</summary>
     public sealed class NavmeshInput
     {
-        /// <summary>x y z per vertex, world space.</summary>
+        /// <summary>x y z per vertex, world space (or the Surface mesh's own space).</summary>
         public float[] Vertices;
         /// <summary>Polygon corners, polygon after polygon.</summary>
         public uint[] Indices;
@@ -16,5 +16,8 @@ namespace NavLink
         public float[] DetailVertices;
         public uint[] DetailTriangles;
         public uint[] DetailTriangleStarts;
+        /// <summary>A movable mesh (MeshFlags.Movable) the navmesh rides, or the null id (default): with one,
+        /// the coordinates are in that mesh's own space and World.SetMeshTransform moves the navmesh with it.</summary>
+        public MeshId Surface;
     }
 }

@@ -66,12 +66,14 @@ namespace NavLink
             return id;
         }
 
+        /// <summary>Removes a mesh (InvalidArgument for a mesh a navmesh rides: remove the navmesh first).</summary>
         public void RemoveMesh(MeshId mesh)
         {
             using (var w = Enter()) Status.Check(Native.nl_mesh_remove(w.Pointer, mesh));
         }
 
-        /// <summary>Replaces a mesh's transform (16 floats, column-major, affine).</summary>
+        /// <summary>Replaces a mesh's transform (16 floats, column-major, affine). The navmeshes that ride the
+        /// mesh move with it; such a mesh takes rotations and translations only (InvalidArgument otherwise).</summary>
         public unsafe void SetMeshTransform(MeshId mesh, ReadOnlySpan<float> transform)
         {
             if (transform.Length != 16) throw new ArgumentException("a transform is 16 floats", "transform");

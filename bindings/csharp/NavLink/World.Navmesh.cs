@@ -10,10 +10,11 @@ namespace NavLink
 
         public static RecastSettings DefaultRecastSettings() { return Native.nl_default_recast_settings(); }
 
-        /// <summary>Builds a navmesh from every registered mesh with a builder plugin ("recast" when
-        /// builder is null). recast: the Recast builder's settings; settingsJson is applied over them.</summary>
+        /// <summary>Builds a navmesh with a builder plugin ("recast" when builder is null) from every static
+        /// mesh, or, with a surface (a MeshFlags.Movable mesh), from that mesh alone in its own space: the
+        /// navmesh then rides it. recast: the Recast builder's settings; settingsJson is applied over them.</summary>
         public unsafe NavmeshId BuildNavmesh(AgentType agent, RecastSettings? recast = null, string settingsJson = null,
-                                             string builder = null)
+                                             string builder = null, MeshId surface = default(MeshId))
         {
             NavmeshBuildDef def = Native.nl_default_navmesh_build_def();
             RecastSettings settings = recast ?? default(RecastSettings);
@@ -31,6 +32,7 @@ namespace NavLink
                 byte empty = 0;
                 def.SettingsJson = json == null ? IntPtr.Zero : json.Length == 0 ? (IntPtr)(&empty) : (IntPtr)j;
                 def.SettingsJsonLength = (UIntPtr)(json == null ? 0 : json.Length);
+                def.Surface = surface;
                 Status.Check(Native.nl_navmesh_build(w.Pointer, &def, &id));
             }
             return id;
@@ -65,6 +67,7 @@ namespace NavLink
                 def.DetailTriangles = (IntPtr)dt;
                 def.DetailTriangleCount = (uint)(input.DetailTriangles == null ? 0 : input.DetailTriangles.Length / 3);
                 def.DetailTriangleStarts = (IntPtr)ds;
+                def.Surface = input.Surface;
                 Status.Check(Native.nl_navmesh_add(w.Pointer, &def, &id));
             }
             return id;

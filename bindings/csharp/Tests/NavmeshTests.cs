@@ -4,9 +4,23 @@ using NavLink;
 
 namespace NavLink.Tests
 {
-    // Navmeshes built by Recast and handed over by the host; point location.
+    // Navmeshes built by Recast and handed over by the host; point location; a navmesh that rides a moving mesh.
     internal static class NavmeshTests
     {
+        // The moving surface: an 8 x 4 m movable box (top y = 0 in its own space) carrying a 7.2 x 3.2 m navmesh
+        // quad, then moved 10 m along x and turned 90 degrees about y: its x axis goes to the world's -z, its z
+        // axis to x.
+        private static readonly float[] RaftQuad = {-3.6f, 0, -1.6f, -3.6f, 0, 1.6f, 3.6f, 0, 1.6f, 3.6f, 0, -1.6f};
+        private static readonly float[] RaftMoved = {0, 0, -1, 0, 0, 1, 0, 0, 1, 0, 0, 0, 10, 0, 0, 1};
+        private static readonly float[] RaftScaled = {2, 0, 0, 0, 0, 2, 0, 0, 0, 0, 2, 0, 10, 0, 0, 1};
+
+        private static bool Near(Vec3 a, Vec3 b)
+        {
+            return Math.Abs(a.X - b.X) < 1e-4f && Math.Abs(a.Y - b.Y) < 1e-4f && Math.Abs(a.Z - b.Z) < 1e-4f;
+        }
+
+        private static bool Same(Vec3 a, Vec3 b) { return a.X == b.X && a.Y == b.Y && a.Z == b.Z; }
+
         public static void Run(Checks check)
         {
             check.Run("navmesh from the level (Recast)", () =>
@@ -95,6 +109,80 @@ namespace NavLink.Tests
                     check.Throws(StatusBits.InvalidArgument, "polygon", () => world.GetPolygon(navmesh, 99), "polygon 99");
                     input.Indices[2] = 40;
                     check.Throws(StatusBits.InvalidArgument, "indices", () => world.AddNavmesh(input), "an index out of range");
+                }
+            });
+
+            check.Run("navmesh on a moving surface", () =>
+            {
+                using (var world = new World())
+                {
+                    MeshId raft = TestLevels.AddBox(world, -4, -1, -2, 4, 0, 2, MeshFlags.Movable);
+                    var input = new NavmeshInput
+                    {
+                        Vertices = RaftQuad, Indices = new uint[] {0, 1, 2, 3}, PolygonVertexCounts = new byte[] {4}, Surface = raft,
+                    };
+                    NavmeshId navmesh = world.AddNavmesh(input);
+                    NavmeshInfo info = world.GetNavmeshInfo(navmesh);
+                    check.That(info.Surface.Equals(raft) && info.PolygonCount == 1, "the navmesh rides the raft: " + info.Surface);
+                    Vec3 onRaft = new Vec3(10, 0.5f, 3), oldPlace = new Vec3(0, 0.5f, 0), box = new Vec3(0.5f, 2, 0.5f);
+                    NavPoint[] found = world.FindNearest(navmesh, new[] {oldPlace, onRaft}, box);
+                    check.That(found[0].Found == 1 && found[1].Found == 0, "before the move: at the origin");
+
+                    world.SetMeshTransform(raft, RaftMoved);
+                    info = world.GetNavmeshInfo(navmesh);
+                    check.That(info.Surface.Equals(raft), "still riding the raft");
+                    check.That(info.BoundsMin.X <= 8.4f + 1e-4f && info.BoundsMax.X >= 11.6f - 1e-4f &&
+                               info.BoundsMin.Z <= -3.6f + 1e-4f && info.BoundsMax.Z >= 3.6f - 1e-4f,
+                               "the bounds hold the moved quad: " + info.BoundsMin + " " + info.BoundsMax);
+                    // (10, 3) is on the quad only if it was turned (its z half-width is 1.6 before).
+                    found = world.FindNearest(navmesh, new[] {oldPlace, onRaft}, box);
+                    check.That(found[0].Found == 0, "nothing left at the old place");
+                    check.That(found[1].Found == 1 && Near(found[1].Point, new Vec3(10, 0, 3)),
+                               "the navmesh point on the moved raft: " + found[1].Point);
+
+                    // Along the raft: the world's +z to -z is the mesh's -x to +x.
+                    PathResult path = world.FindPath(new PathQuery(navmesh, new Vec3(10, 0, 3), new Vec3(10, 0, -3), TestLevels.Walker()));
+                    check.That(path.Outcome == PathOutcome.Complete, "a path along the raft: " + path.Outcome);
+                    check.Near(path.Info.Length, 6, 1e-4f, "its length");
+                    PathPoint first = path.Points[0], last = path.Points[path.Points.Length - 1];
+                    check.That(Near(first.Position, new Vec3(10, 0, 3)) && Near(last.Position, new Vec3(10, 0, -3)),
+                               "positions in the world: " + first.Position + " " + last.Position);
+                    check.That(Near(first.SurfacePosition, new Vec3(-3, 0, 0)) && Near(last.SurfacePosition, new Vec3(3, 0, 0)),
+                               "surface positions in the mesh's space: " + first.SurfacePosition + " " + last.SurfacePosition);
+
+                    // Only rigid moves for a mesh that carries a navmesh, and it cannot go while the navmesh rides it.
+                    check.Throws(StatusBits.InvalidArgument, "nl_mesh_set_transform", () => world.SetMeshTransform(raft, RaftScaled),
+                                 "a scaling transform");
+                    MeshInfo mesh = world.GetMeshInfo(raft);
+                    bool unmoved = true;
+                    unsafe
+                    {
+                        for (int k = 0; k < 16; ++k) unmoved &= mesh.Transform[k] == RaftMoved[k];
+                    }
+                    check.That(unmoved, "a refused move moves nothing");
+                    check.Throws(StatusBits.InvalidArgument, "nl_mesh_remove", () => world.RemoveMesh(raft), "removing the raft");
+
+                    // Recast on the raft alone, in its space, riding it; without a surface a build sees static meshes only.
+                    NavmeshId built = world.BuildNavmesh(World.DefaultAgentType(), surface: raft);
+                    check.That(world.GetNavmeshInfo(built).Surface.Equals(raft), "a navmesh built on the raft rides it");
+                    found = world.FindNearest(built, new[] {onRaft, oldPlace}, box);
+                    check.That(found[0].Found == 1 && found[1].Found == 0, "the built navmesh is where the raft is");
+                    check.Throws(StatusBits.NotFound, "no triangles", () => world.BuildNavmesh(World.DefaultAgentType()),
+                                 "a build without a surface leaves the movable raft out");
+                    world.RemoveNavmesh(built);
+                    world.RemoveNavmesh(navmesh);
+                    world.RemoveMesh(raft);
+                    check.That(!world.IsValid(raft), "the raft goes once no navmesh rides it");
+
+                    // A navmesh on no surface reports the null id, and its path points' SurfacePosition is Position.
+                    NavmeshId ground = world.AddNavmesh(new NavmeshInput
+                    {
+                        Vertices = new float[] {-5, 0, -5, 5, 0, -5, 5, 0, 5, -5, 0, 5}, Indices = new uint[] {0, 2, 1, 0, 3, 2},
+                    });
+                    check.That(world.GetNavmeshInfo(ground).Surface.IsNull, "a navmesh on no surface");
+                    PathResult stroll = world.FindPath(new PathQuery(ground, new Vec3(-4, 0, -4), new Vec3(4, 0, 4), TestLevels.Walker()));
+                    check.That(stroll.Points.Length >= 2 && stroll.Points.All(q => Same(q.SurfacePosition, q.Position)),
+                               "SurfacePosition is Position on a navmesh that rides nothing");
                 }
             });
         }

@@ -11,7 +11,7 @@ namespace NavLink.Tests
                                                      2, 6, 7, 2, 7, 3, 0, 2, 3, 0, 3, 1, 4, 5, 7, 4, 7, 6};
 
         /// <summary>A box from (x0, y0, z0) to (x1, y1, z1): corner k takes x from bit 0, y from bit 1, z from bit 2.</summary>
-        public static MeshId AddBox(World world, float x0, float y0, float z0, float x1, float y1, float z1)
+        public static MeshId AddBox(World world, float x0, float y0, float z0, float x1, float y1, float z1, uint flags = 0)
         {
             var v = new float[24];
             for (int k = 0; k < 8; ++k)
@@ -20,7 +20,7 @@ namespace NavLink.Tests
                 v[3 * k + 1] = (k & 2) != 0 ? y1 : y0;
                 v[3 * k + 2] = (k & 4) != 0 ? z1 : z0;
             }
-            return world.AddMesh(v, BoxIndices);
+            return world.AddMesh(v, BoxIndices, flags);
         }
 
         /// <summary>

@@ -32,6 +32,9 @@ namespace NavLink
         public IntPtr DetailTriangles;
         public uint DetailTriangleCount;
         public IntPtr DetailTriangleStarts;
+        /// <summary>A movable mesh (MeshFlags.Movable) the navmesh rides, or the null id. With one, every
+        /// coordinate above is in that mesh's own space and World.SetMeshTransform moves the navmesh. Added in 0.3.</summary>
+        public MeshId Surface;
     }
 
     /// <summary>nl_navmesh_info. Get one from Native.nl_navmesh_info_init() (Size set) before asking.</summary>
@@ -48,8 +51,11 @@ namespace NavLink
         public uint DroppedPolygonCount;
         public uint NonManifoldEdgeCount;
         public AgentType Agent;
+        /// <summary>In the world; for a navmesh that rides a moving mesh, a box that holds it where the mesh is now.</summary>
         public Vec3 BoundsMin;
         public Vec3 BoundsMax;
+        /// <summary>The movable mesh it rides; the null id for none. Added in 0.3.</summary>
+        public MeshId Surface;
     }
 
     /// <summary>nl_nav_polygon. May grow: Size set by Native.nl_nav_polygon_init() (World.GetPolygon sets it).</summary>
@@ -98,6 +104,9 @@ namespace NavLink
         public IntPtr Settings;
         public IntPtr SettingsJson;
         public UIntPtr SettingsJsonLength;
+        /// <summary>A movable mesh to build on (alone, in its own space; the navmesh rides it), or the null
+        /// id: every static mesh. Added in 0.3.</summary>
+        public MeshId Surface;
     }
 
     /// <summary>nl_recast_settings (navlink/recast.h).</summary>

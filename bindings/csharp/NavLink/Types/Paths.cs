@@ -49,6 +49,9 @@ namespace NavLink
         public Vec3 Apex;
         public byte Reversed;
         public fixed byte Reserved[3];
+        /// <summary>The point in its navmesh's own space (Position and Apex are in the world, at the surface's
+        /// pose when the path was planned); equal to Position on a navmesh that rides nothing. Added in 0.3.</summary>
+        public Vec3 SurfacePosition;
     }
 
     /// <summary>nl_path_result. Get one from Native.nl_path_result_init() (Size set) before asking.</summary>

@@ -1,4 +1,5 @@
 //! navlink.h: "Navmeshes" and "Building navmeshes".
+use crate::level::nl_mesh_id;
 use crate::output_init;
 use crate::status::nl_status;
 use crate::world::nl_world;
@@ -41,6 +42,9 @@ pub struct nl_navmesh_def {
     pub detail_triangles: *const u32,
     pub detail_triangle_count: u32,
     pub detail_triangle_starts: *const u32,
+    /// A movable mesh (`NL_MESH_MOVABLE`) the navmesh rides, or the null id. With one, every coordinate
+    /// above is in that mesh's own space and `nl_mesh_set_transform` moves the navmesh. Added in 0.3.
+    pub surface: nl_mesh_id,
 }
 
 #[repr(C)]
@@ -56,8 +60,11 @@ pub struct nl_navmesh_info {
     pub dropped_polygon_count: u32,
     pub non_manifold_edge_count: u32,
     pub agent: nl_agent_type,
+    /// In the world; for a navmesh that rides a moving mesh, a box that holds it where the mesh is now.
     pub bounds_min: [f32; 3],
     pub bounds_max: [f32; 3],
+    /// The movable mesh it rides; the null id for none. Added in 0.3.
+    pub surface: nl_mesh_id,
 }
 
 pub fn nl_navmesh_info_init() -> nl_navmesh_info {
@@ -112,6 +119,9 @@ pub struct nl_navmesh_build_def {
     pub settings: *const c_void,
     pub settings_json: *const c_char,
     pub settings_json_length: usize,
+    /// A movable mesh to build on (alone, in its own space; the navmesh rides it), or the null id: every
+    /// static mesh. Added in 0.3.
+    pub surface: nl_mesh_id,
 }
 
 extern "C" {

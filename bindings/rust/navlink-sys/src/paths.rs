@@ -73,6 +73,9 @@ pub struct nl_path_point {
     pub apex: [f32; 3],
     pub reversed: u8,
     pub reserved: [u8; 3],
+    /// The point in its navmesh's own space (`position` and `apex` are in the world, at the surface's pose
+    /// when the path was planned); equal to `position` on a navmesh that rides nothing. Added in 0.3.
+    pub surface_position: [f32; 3],
 }
 
 pub fn nl_path_point_init() -> nl_path_point {

@@ -74,11 +74,13 @@ impl World {
         Ok(id)
     }
 
+    /// Removes a mesh (`INVALID_ARGUMENT` for a mesh a navmesh rides: remove the navmesh first).
     pub fn remove_mesh(&self, mesh: MeshId) -> Result<()> {
         check(unsafe { sys::nl_mesh_remove(self.raw(), mesh) }).map(drop)
     }
 
-    /// Replaces a mesh's transform (column-major, affine, invertible).
+    /// Replaces a mesh's transform (column-major, affine, invertible). The navmeshes that ride the mesh
+    /// move with it; such a mesh takes rotations and translations only (`INVALID_ARGUMENT` otherwise).
     pub fn set_mesh_transform(&self, mesh: MeshId, transform: &[f32; 16]) -> Result<()> {
         check(unsafe { sys::nl_mesh_set_transform(self.raw(), mesh, transform.as_ptr()) }).map(drop)
     }

@@ -2,13 +2,13 @@
 use crate::error::{check, Result};
 use crate::level::c_string;
 use crate::list::two_call;
-use crate::types::{AgentType, BoundaryEdge, NavPoint, NavPolygon, NavmeshId, NavmeshInfo, RecastSettings};
+use crate::types::{AgentType, BoundaryEdge, MeshId, NavPoint, NavPolygon, NavmeshId, NavmeshInfo, RecastSettings};
 use crate::world::World;
 use navlink_sys as sys;
 use std::os::raw::c_void;
 use std::ptr;
 
-/// How to build a navmesh from the registered meshes.
+/// How to build a navmesh from the registered meshes: every static one, or one movable mesh (`surface`).
 #[derive(Clone, Copy, Debug)]
 pub struct NavmeshBuild<'a> {
     pub agent: AgentType,
@@ -18,11 +18,14 @@ pub struct NavmeshBuild<'a> {
     pub settings_json: Option<&'a str>,
     /// A navmesh-builder plugin's name; `None`: "recast".
     pub builder: Option<&'a str>,
+    /// A movable mesh (`MESH_MOVABLE`) to build on, alone and in its own space; the navmesh rides it.
+    /// `None`: every static mesh (movable meshes are left out).
+    pub surface: Option<MeshId>,
 }
 
 impl<'a> NavmeshBuild<'a> {
     pub fn new(agent: AgentType) -> Self {
-        NavmeshBuild { agent, recast: None, settings_json: None, builder: None }
+        NavmeshBuild { agent, recast: None, settings_json: None, builder: None, surface: None }
     }
 }
 
@@ -46,6 +49,9 @@ pub struct NavmeshInput<'a> {
     pub weld_tolerance: f32,
     pub agent: AgentType,
     pub detail: Option<NavmeshDetail<'a>>,
+    /// A movable mesh (`MESH_MOVABLE`) the navmesh rides: the coordinates above are then in that mesh's
+    /// own space, and `set_mesh_transform` moves the navmesh with it. `None`: world space, fixed.
+    pub surface: Option<MeshId>,
 }
 
 impl<'a> NavmeshInput<'a> {
@@ -60,6 +66,7 @@ impl<'a> NavmeshInput<'a> {
             weld_tolerance: def.weld_tolerance,
             agent: def.agent,
             detail: None,
+            surface: None,
         }
     }
 }
@@ -85,6 +92,7 @@ impl World {
             def.settings_json = if json.is_empty() { b"\0".as_ptr().cast() } else { json.as_ptr().cast() };
             def.settings_json_length = json.len();
         }
+        def.surface = build.surface.unwrap_or_default();
         let mut id = NavmeshId::default();
         check(unsafe { sys::nl_navmesh_build(self.raw(), &def, &mut id) })?;
         Ok(id)
@@ -108,6 +116,7 @@ impl World {
             def.detail_triangle_count = (detail.triangles.len() / 3) as u32;
             def.detail_triangle_starts = detail.triangle_starts.as_ptr();
         }
+        def.surface = input.surface.unwrap_or_default();
         let mut id = NavmeshId::default();
         check(unsafe { sys::nl_navmesh_add(self.raw(), &def, &mut id) })?;
         Ok(id)

@@ -1,8 +1,11 @@
-//! Navmeshes built by Recast and handed over by the host; point location.
+//! Navmeshes built by Recast and handed over by the host; point location; a navmesh that rides a moving mesh.
 mod common;
 
 use common::*;
-use navlink::{default_agent_type, default_recast_settings, status, NavmeshBuild, NavmeshInput, World, NO_POLYGON};
+use navlink::{
+    default_agent_type, default_recast_settings, status, MeshId, MeshOptions, NavmeshBuild, NavmeshInput, PathOutcome, PathQuery, World,
+    MESH_MOVABLE, NO_POLYGON,
+};
 
 #[test]
 fn navmesh_from_the_level() {
@@ -76,4 +79,77 @@ fn navmesh_from_the_host() {
     assert_fails(world.polygon(navmesh, 99), status::INVALID_ARGUMENT, "polygon");
     indices[2] = 40;
     assert_fails(world.add_navmesh(&NavmeshInput::triangles(&vertices, &indices)), status::INVALID_ARGUMENT, "indices");
+}
+
+/// The moving surface: an 8 x 4 m movable box (top y = 0 in its own space) carrying a 7.2 x 3.2 m navmesh
+/// quad, then moved 10 m along x and turned 90 degrees about y: its x axis goes to the world's -z, its z
+/// axis to x.
+const RAFT_QUAD: [f32; 12] = [-3.6, 0.0, -1.6, -3.6, 0.0, 1.6, 3.6, 0.0, 1.6, 3.6, 0.0, -1.6];
+const RAFT_MOVED: [f32; 16] = [0.0, 0.0, -1.0, 0.0, 0.0, 1.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 10.0, 0.0, 0.0, 1.0];
+const RAFT_SCALED: [f32; 16] = [2.0, 0.0, 0.0, 0.0, 0.0, 2.0, 0.0, 0.0, 0.0, 0.0, 2.0, 0.0, 10.0, 0.0, 0.0, 1.0];
+
+fn assert_near(got: [f32; 3], want: [f32; 3], what: &str) {
+    assert!(got.iter().zip(want.iter()).all(|(g, w)| (g - w).abs() < 1e-4), "{}: {:?}, expected {:?}", what, got, want);
+}
+
+#[test]
+fn navmesh_on_a_moving_surface() {
+    let world = World::new().unwrap();
+    let movable = MeshOptions { flags: MESH_MOVABLE, ..Default::default() };
+    let raft = add_box_with(&world, [-4.0, -1.0, -2.0], [4.0, 0.0, 2.0], &movable);
+    let input = NavmeshInput { polygon_vertex_counts: Some(&[4]), surface: Some(raft), ..NavmeshInput::triangles(&RAFT_QUAD, &[0, 1, 2, 3]) };
+    let navmesh = world.add_navmesh(&input).unwrap();
+    let info = world.navmesh_info(navmesh).unwrap();
+    assert_eq!((info.surface, info.polygon_count), (raft, 1));
+    let (on_raft, old_place) = ([10.0, 0.5, 3.0], [0.0, 0.5, 0.0]);
+    let found = world.find_nearest(navmesh, &[old_place, on_raft], [0.5, 2.0, 0.5]).unwrap();
+    assert_eq!((found[0].found, found[1].found), (1, 0), "before the move: at the origin");
+
+    world.set_mesh_transform(raft, &RAFT_MOVED).unwrap();
+    let info = world.navmesh_info(navmesh).unwrap();
+    assert_eq!(info.surface, raft);
+    assert!(
+        info.bounds_min[0] <= 8.4 + 1e-4 && info.bounds_max[0] >= 11.6 - 1e-4 && info.bounds_min[2] <= -3.6 + 1e-4
+            && info.bounds_max[2] >= 3.6 - 1e-4,
+        "{:?} {:?}",
+        info.bounds_min,
+        info.bounds_max
+    );
+    // (10, 3) is on the quad only if it was turned (its z half-width is 1.6 before).
+    let found = world.find_nearest(navmesh, &[old_place, on_raft], [0.5, 2.0, 0.5]).unwrap();
+    assert_eq!(found[0].found, 0, "nothing left at the old place");
+    assert_eq!(found[1].found, 1);
+    assert_near(found[1].point, [10.0, 0.0, 3.0], "the navmesh point on the moved raft");
+
+    // Along the raft: the world's +z to -z is the mesh's -x to +x.
+    let path = world.find_path(&PathQuery::new(navmesh, [10.0, 0.0, 3.0], [10.0, 0.0, -3.0], walker())).unwrap();
+    assert_eq!(path.outcome(), PathOutcome::Complete);
+    assert!((path.info.length - 6.0).abs() < 1e-4, "{} m", path.info.length);
+    let (first, last) = (path.points[0], *path.points.last().unwrap());
+    assert_near(first.position, [10.0, 0.0, 3.0], "first position (world)");
+    assert_near(first.surface_position, [-3.0, 0.0, 0.0], "first surface_position (the mesh's space)");
+    assert_near(last.position, [10.0, 0.0, -3.0], "last position (world)");
+    assert_near(last.surface_position, [3.0, 0.0, 0.0], "last surface_position (the mesh's space)");
+
+    // Only rigid moves for a mesh that carries a navmesh, and it cannot go while the navmesh rides it.
+    assert_fails(world.set_mesh_transform(raft, &RAFT_SCALED), status::INVALID_ARGUMENT, "nl_mesh_set_transform");
+    assert_eq!(world.mesh_info(raft).unwrap().transform, RAFT_MOVED, "a refused move moves nothing");
+    assert_fails(world.remove_mesh(raft), status::INVALID_ARGUMENT, "nl_mesh_remove");
+
+    // Recast on the raft alone, in its space, riding it; without a surface a build sees static meshes only.
+    let built = world.build_navmesh(&NavmeshBuild { surface: Some(raft), ..NavmeshBuild::new(default_agent_type()) }).unwrap();
+    assert_eq!(world.navmesh_info(built).unwrap().surface, raft);
+    let found = world.find_nearest(built, &[on_raft, old_place], [0.5, 2.0, 0.5]).unwrap();
+    assert_eq!((found[0].found, found[1].found), (1, 0));
+    assert_fails(world.build_navmesh(&NavmeshBuild::new(default_agent_type())), status::NOT_FOUND, "no triangles");
+    world.remove_navmesh(built).unwrap();
+    world.remove_navmesh(navmesh).unwrap();
+    world.remove_mesh(raft).unwrap();
+
+    // A navmesh on no surface reports the null id, and its path points' surface_position is position.
+    let floor = [-5.0, 0.0, -5.0, 5.0, 0.0, -5.0, 5.0, 0.0, 5.0, -5.0, 0.0, 5.0];
+    let ground = world.add_navmesh(&NavmeshInput::triangles(&floor, &[0, 2, 1, 0, 3, 2])).unwrap();
+    assert_eq!(world.navmesh_info(ground).unwrap().surface, MeshId::default());
+    let stroll = world.find_path(&PathQuery::new(ground, [-4.0, 0.0, -4.0], [4.0, 0.0, 4.0], walker())).unwrap();
+    assert!(stroll.points.iter().all(|q| q.surface_position == q.position), "{:?}", stroll.points);
 }

@@ -13,13 +13,18 @@ const BOX_INDICES: [u32; 36] = [
 
 /// A box from (x0, y0, z0) to (x1, y1, z1): corner k takes x from bit 0, y from bit 1, z from bit 2.
 pub fn add_box(world: &World, lo: [f32; 3], hi: [f32; 3]) -> MeshId {
+    add_box_with(world, lo, hi, &MeshOptions::default())
+}
+
+/// `add_box` with flags, a transform or user data.
+pub fn add_box_with(world: &World, lo: [f32; 3], hi: [f32; 3], options: &MeshOptions) -> MeshId {
     let mut v = [0f32; 24];
     for k in 0..8 {
         v[3 * k] = if k & 1 != 0 { hi[0] } else { lo[0] };
         v[3 * k + 1] = if k & 2 != 0 { hi[1] } else { lo[1] };
         v[3 * k + 2] = if k & 4 != 0 { hi[2] } else { lo[2] };
     }
-    world.add_mesh(&v, &BOX_INDICES, &MeshOptions::default()).expect("a box")
+    world.add_mesh(&v, &BOX_INDICES, options).expect("a box")
 }
 
 /// "gap": two 10 x 10 m platforms (top y = 0, 1 m thick), x in [-11, -1] and [1, 11], z in [-5, 5], 2 m
