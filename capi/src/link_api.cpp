@@ -88,7 +88,7 @@ nl_link_settings to_c(const nl::LinkSettings& s) {
     return c;
 }
 
-nl_link to_c(const nl::StoredLink& stored, nl::Handle navmesh) {
+nl_link to_c(const nl::StoredLink& stored, nl::Handle navmesh, bool holds) {
     const nl::Link& l = stored.link;
     nl_link c{};
     c.size = sizeof c;
@@ -107,6 +107,9 @@ nl_link to_c(const nl::StoredLink& stored, nl::Handle navmesh) {
     c.requirements = nl_link_requirements{r.gap, r.rise, r.drop, r.clearance_width, r.abilities, r.length, 0};
     c.start_polygon = l.start_polygon;
     c.end_polygon = l.end_polygon;
+    c.landing_navmesh = to_id<nl_navmesh_id>(l.landing_navmesh);
+    c.tolerance = l.tolerance;
+    c.holds = holds ? 1 : 0;
     return c;
 }
 
@@ -167,6 +170,7 @@ Link link_from_def(const nl_link_def& given) {
     if (kind != LinkKind::Jump && kind != LinkKind::Drop && kind != LinkKind::Manual && def.kind < NL_LINK_FIRST_PLUGIN_KIND)
         fail_field(ErrorCode::InvalidArgument, "kind is ", def.kind, " (NL_LINK_* or a plugin kind >= 256)");
     read_amount(def.cost_modifier, "cost_modifier");
+    read_amount(def.tolerance, "tolerance");
     for (const auto& [value, name] :
          {std::pair{def.requirements.gap, "gap"}, std::pair{def.requirements.rise, "rise"}, std::pair{def.requirements.drop, "drop"},
           std::pair{def.requirements.clearance_width, "clearance_width"}, std::pair{def.requirements.length, "length"}})
@@ -180,6 +184,8 @@ Link link_from_def(const nl_link_def& given) {
     l.enabled = def.enabled != 0;
     l.cost_modifier = def.cost_modifier;
     l.user_data = def.user_data;
+    l.landing_navmesh = to_handle(def.landing_navmesh);
+    l.tolerance = l.crosses() ? def.tolerance : 0.0f;
     const nl_link_requirements& r = def.requirements;
     l.requirements.gap = r.gap;
     l.requirements.length = r.length;
@@ -201,6 +207,7 @@ NL_API nl_link_def nl_default_link_def(void) {
     def.kind = NL_LINK_MANUAL;
     def.enabled = 1;
     def.cost_modifier = 1.0f;
+    def.tolerance = nl::kDefaultCrossTolerance;
     return def;
 }
 
@@ -236,9 +243,12 @@ NL_API int32_t nl_link_is_valid(const nl_world* world, nl_link_id link) {
 
 NL_API nl_status nl_link_get(const nl_world* world, nl_link_id link, nl_link* out_link) {
     return guarded("nl_link_get", world, [&] {
-        const auto [navmesh, stored] = deref(world).link_in_world(to_handle(link));
+        const nl::World& w = deref(world);
+        const auto [navmesh, stored] = w.navmeshes().link(to_handle(link));
         require(out_link, "out_link");
-        nl::capi::write_growable(out_link, to_c(nl::StoredLink{to_handle(link), stored}, navmesh), kLinkFirstSize, "out_link");
+        nl::capi::write_growable(out_link,
+                                 to_c(nl::StoredLink{to_handle(link), w.in_world(navmesh, stored)}, navmesh, w.link_holds(navmesh, stored)),
+                                 kLinkFirstSize, "out_link");
     });
 }
 
@@ -246,11 +256,11 @@ NL_API nl_status nl_navmesh_get_links(const nl_world* world, nl_navmesh_id navme
                                       uint32_t capacity, uint32_t* out_count) {
     return guarded("nl_navmesh_get_links", world, [&] {
         const nl::Handle mesh = to_handle(navmesh);
-        const auto snapshot = deref(world).navmeshes().links(mesh);
-        const nl::SurfacePose pose = nl::pose_of(deref(world).navmeshes().frame(mesh));
+        const nl::World& w = deref(world);
+        const auto snapshot = w.navmeshes().links(mesh);
         nl::capi::list_growable_into(*snapshot, out_links, capacity, out_count, kLinkFirstSize, "out_links",
                                      [&](const nl::StoredLink& s) {
-                                         return to_c(nl::StoredLink{s.id, nl::link_in_world(s.link, pose)}, mesh);
+                                         return to_c(nl::StoredLink{s.id, w.in_world(mesh, s.link)}, mesh, w.link_holds(mesh, s.link));
                                      });
     });
 }

@@ -118,7 +118,9 @@ float eased_height(const AgentBody& a, const Vec3& on_surface, const PathPoint& 
 void move_agent(AgentBody& a, uint32_t self, float dt, const NavMesh& navmesh, const CrowdSnapshot& crowd) {
     if (a.motion) {
         fly(a, dt);
-        if (!a.motion) {  // landed on the floor: how far that is from the surface it walks on now
+        // Landed on the floor: how far that is from the surface it walks on now (one that landed on
+        // another navmesh is moved onto it after this phase).
+        if (!a.motion && a.landing_navmesh == Handle{}) {
             a.landing_offset = a.position.y() - navmesh.surface_height(a.polygon, a.position.x(), a.position.z());
             a.walked_since_landing = 0.0f;
         }

@@ -27,7 +27,9 @@ struct AgentBody {
     Vec3 velocity = Vec3::Zero();
 
     bool has_destination = false;
-    Vec3 destination = Vec3::Zero();
+    Vec3 destination = Vec3::Zero();  // in its navmesh's space (the one it was located on)
+    Handle destination_navmesh;       // the agent's own, or one it reaches over cross links
+    std::shared_ptr<const SurfaceFrame> destination_frame;
 
     // The path it follows, the snapshot it was planned on, and the next point to reach.
     std::shared_ptr<const PathGraph> graph;
@@ -43,6 +45,9 @@ struct AgentBody {
     // A link being taken, or waited for at its take-off.
     std::optional<LinkMotion> motion;
     float motion_time = 0.0f;
+    // A flight over a cross link, in world space, to this navmesh (frame null meanwhile); it moves
+    // onto it when it lands.
+    Handle landing_navmesh;
     Handle link;
     uint32_t landing_polygon = 0;
     bool at_takeoff = false;

@@ -8,6 +8,8 @@
 #include "agents/agent_motion.h"
 #include "agents/agent_state.h"
 #include "agents/path_upkeep.h"
+#include "agents/route.h"
+#include "links/link_placement.h"
 #include "path/link_filter.h"
 #include "path/path_planner.h"
 
@@ -91,6 +93,40 @@ std::shared_ptr<const NavMesh> Agents::navmesh_of(const NavMeshRegistry& navmesh
     }
 }
 
+bool Agents::locate_across(const NavMeshRegistry& navmeshes, Handle own, const Vec3& point, float radius, Vec3& on_navmesh,
+                           Handle& navmesh, std::shared_ptr<const SurfaceFrame>& frame) const {
+    // The navmeshes cross links join to the agent's, nearest hop first (either way: a platform the
+    // agent can ride away from its own navmesh and back).
+    std::vector<std::pair<Handle, Handle>> joins;
+    for (Handle h : navmeshes.handles()) {
+        try {
+            for (const StoredLink& s : *navmeshes.links(h))
+                if (s.link.crosses()) joins.emplace_back(h, s.link.landing_navmesh);
+        } catch (const Error& e) {
+            if (e.code() != ErrorCode::InvalidHandle) throw;  // removed meanwhile
+        }
+    }
+    std::vector<Handle> seen{own};
+    for (size_t next = 0; next < seen.size(); ++next) {
+        for (const auto& [a, b] : joins) {
+            const Handle other = a == seen[next] ? b : b == seen[next] ? a : Handle{};
+            if (other == Handle{} || std::find(seen.begin(), seen.end(), other) != seen.end()) continue;
+            seen.push_back(other);
+            try {
+                const std::shared_ptr<const NavMesh> mesh = navmeshes.navmesh(other);
+                std::shared_ptr<const SurfaceFrame> other_frame = navmeshes.frame(other);
+                locate(*mesh, pose_of(other_frame), point, radius, "point", on_navmesh);
+                navmesh = other;
+                frame = std::move(other_frame);
+                return true;
+            } catch (const Error& e) {
+                if (e.code() != ErrorCode::NotFound && e.code() != ErrorCode::InvalidHandle) throw;
+            }
+        }
+    }
+    return false;
+}
+
 Handle Agents::add(const NavMeshRegistry& navmeshes, const AgentDef& def) {
     check_capabilities(def.capabilities);
     check_positive(def.height, "height");
@@ -137,13 +173,27 @@ void Agents::set_destination(const NavMeshRegistry& navmeshes, Handle agent, con
     float radius;
     SurfacePose pose;
     const std::shared_ptr<const NavMesh> mesh = navmesh_of(navmeshes, agent, radius, pose);
+    Handle own;
+    {
+        std::shared_lock lock(mutex_);
+        own = find(agent).def.navmesh;
+    }
     Vec3 on_navmesh;
+    Handle there = own;
+    std::shared_ptr<const SurfaceFrame> there_frame = navmeshes.frame(own);
     // Located on the surface now, and kept there: it moves with the surface until the agent arrives.
-    locate(*mesh, pose, destination, radius, field, on_navmesh);
+    try {
+        locate(*mesh, pose, destination, radius, field, on_navmesh);
+    } catch (const Error& e) {
+        if (e.code() != ErrorCode::NotFound) throw;
+        if (!locate_across(navmeshes, own, destination, radius, on_navmesh, there, there_frame)) throw;
+    }
     std::unique_lock lock(mutex_);
     AgentBody& a = find(agent);
     a.has_destination = true;
     a.destination = on_navmesh;
+    a.destination_navmesh = there;
+    a.destination_frame = std::move(there_frame);
     if (!a.motion) {
         // The old path leads elsewhere: walking on along it while the new one waits its turn would end
         // in an arrival (or failure) at the old destination.
@@ -231,10 +281,9 @@ void Agents::step(float dt, const NavMeshRegistry& navmeshes, TaskSystem& tasks)
     if (agents_.empty()) return;
 
     // 1. The world as it is now: each navmesh's graph, looked up once.
-    std::vector<std::pair<Handle, std::shared_ptr<const PathGraph>>> graphs;
+    StepNavMeshes table;  // each navmesh's graph and pose at this moment, looked up once
     auto graph_of = [&](Handle navmesh) -> std::shared_ptr<const PathGraph> {
-        for (const auto& [id, graph] : graphs)
-            if (id == navmesh) return graph;
+        if (const StepNavMesh* known = table.find(navmesh)) return known->graph;
         std::shared_ptr<const PathGraph> graph;
         if (navmeshes.contains(navmesh)) {
             try {
@@ -243,7 +292,7 @@ void Agents::step(float dt, const NavMeshRegistry& navmeshes, TaskSystem& tasks)
                 if (e.code() != ErrorCode::InvalidHandle) throw;  // removed since: no graph
             }
         }
-        graphs.emplace_back(navmesh, graph);
+        table.add(navmesh, graph);
         return graph;
     };
     std::vector<std::shared_ptr<const PathGraph>> current(agents_.size());
@@ -317,6 +366,7 @@ void Agents::step(float dt, const NavMeshRegistry& navmeshes, TaskSystem& tasks)
     }
     std::vector<PathQuery> queries(asking.size());
     std::vector<PathResult> results(asking.size());
+    bool routes = false;  // some agent may need to leave its navmesh: every navmesh is looked at
     for (size_t k = 0; k < asking.size(); ++k) {
         const AgentBody& a = agents_[asking[k]];
         PathQuery& q = queries[k];
@@ -324,11 +374,32 @@ void Agents::step(float dt, const NavMeshRegistry& navmeshes, TaskSystem& tasks)
         q.goal = a.destination;
         q.agent = a.def.capabilities;
         q.accept_partial = true;
+        routes = routes || a.destination_navmesh != a.def.navmesh;
     }
+    for (size_t t = 0; t < table.all().size() && !routes; ++t)
+        routes = table.all()[t].graph && table.all()[t].graph->has_cross_links();
+    // Every navmesh, then: routes may cross any of them, and a jump onto one aims by its motion
+    // since the last step (remember_poses).
+    if (routes)
+        for (Handle h : navmeshes.handles()) graph_of(h);
     tasks.parallel_for(static_cast<uint32_t>(asking.size()), 1, [&](uint32_t begin, uint32_t end) {
         for (uint32_t k = begin; k < end; ++k) {
+            const AgentBody& a = agents_[asking[k]];
             try {
-                plan_path_in_surface_space(*current[asking[k]], queries[k], nullptr, results[k]);
+                const bool here = a.destination_navmesh == a.def.navmesh;
+                if (here) plan_path_in_surface_space(*current[asking[k]], queries[k], nullptr, results[k]);
+                if (!routes || (here && results[k].outcome == PathOutcome::Complete)) continue;
+                // Off this navmesh and back, or onto another: over cross links that hold now, else
+                // over one that will (the agent waits for it at its take-off: a ferry).
+                RouteQuery route{a.def.navmesh, a.position, a.destination_navmesh, a.destination, a.def.capabilities, false};
+                PathResult leg;
+                bool found = plan_route(table, route, leg);
+                if (!found) {
+                    route.through_waiting = true;
+                    found = plan_route(table, route, leg);
+                }
+                if (found) results[k] = std::move(leg);
+                else if (!here) results[k].outcome = PathOutcome::NoPath;
             } catch (...) {
                 results[k].outcome = PathOutcome::Failed;
             }
@@ -388,6 +459,13 @@ void Agents::step(float dt, const NavMeshRegistry& navmeshes, TaskSystem& tasks)
         }
     });
 
+    // Landed over a cross link: onto the landing navmesh, in its space, and on from there.
+    for (size_t i = 0; i < n; ++i) {
+        AgentBody& a = agents_[i];
+        if (a.motion || a.landing_navmesh == Handle{} || a.state == AgentState::Failed) continue;
+        land_across(a, graph_of(a.landing_navmesh), table);
+    }
+
     // 4. Take-offs, in agent order: the link checked as it is now, and its landing clear.
     std::vector<uint32_t> flying;  // only bodies in the air can hold a landing
     for (uint32_t j = 0; j < n; ++j)
@@ -410,7 +488,8 @@ void Agents::step(float dt, const NavMeshRegistry& navmeshes, TaskSystem& tasks)
         } catch (const Error& e) {
             if (e.code() != ErrorCode::InvalidHandle) throw;
         }
-        const LinkMotion motion(link, point.reversed, BodyMotion{a.def.max_speed, a.def.gravity, a.def.takeoff_speed});
+        const BodyMotion body{a.def.max_speed, a.def.gravity, a.def.takeoff_speed};
+        const LinkMotion motion(link, point.reversed, body);
         // Moved since the path was planned (by another thread, after this step's upkeep): the path's
         // take-off and landing are not the link's any more.
         if (usable && a.next + 1 < a.path.size())
@@ -421,6 +500,25 @@ void Agents::step(float dt, const NavMeshRegistry& navmeshes, TaskSystem& tasks)
             a.state = AgentState::Waiting;
             a.ask_path(AgentReason::LinkGone, next_path_order_);
             a.emit(AgentEventKind::Replanned, AgentReason::LinkGone, point.link);
+            continue;
+        }
+        if (usable && link.crosses()) {
+            graph_of(link.landing_navmesh);
+            if (!table.holds(a.def.navmesh, link)) {
+                // Its other end is not where it was placed (the platform is away): wait for it here.
+                a.state = AgentState::Waiting;
+                a.link = point.link;
+                continue;
+            }
+            bool busy = false;
+            for (uint32_t j : flying) busy = busy || agents_[j].link == point.link;
+            if (busy) {
+                a.state = AgentState::Waiting;
+                a.link = point.link;
+                continue;
+            }
+            take_off_across(a, link, point.link, body, table);
+            flying.push_back(static_cast<uint32_t>(i));
             continue;
         }
         // One body on a landing at a time: wait while another flies to it, or flies this very link
@@ -452,9 +550,78 @@ void Agents::step(float dt, const NavMeshRegistry& navmeshes, TaskSystem& tasks)
         flying.push_back(static_cast<uint32_t>(i));
     }
 
+    remember_poses(table, dt);
     for (const AgentBody& a : agents_) events_.insert(events_.end(), a.step_events.begin(), a.step_events.end());
     const size_t stuck = static_cast<size_t>(std::count(unmoved.begin(), unmoved.end(), uint8_t{1}));
     if (stuck > 0) fail(ErrorCode::OutOfMemory, stuck, " agents could not move in this step (out of memory); the others did");
+}
+
+Vec3 Agents::surface_velocity(const std::shared_ptr<const SurfaceFrame>& frame, const SurfacePose& now, const Vec3& p) const {
+    if (!frame || !(last_dt_ > 0.0f)) return Vec3::Zero();
+    for (const auto& [seen, pose] : last_poses_)
+        if (seen.lock() == frame) return (now.world_point(p) - pose.world_point(p)) / last_dt_;
+    return Vec3::Zero();
+}
+
+void Agents::remember_poses(const StepNavMeshes& table, float dt) {
+    last_poses_.clear();
+    for (const StepNavMesh& n : table.all())
+        if (n.graph && n.graph->frame()) last_poses_.emplace_back(n.graph->frame(), n.pose);
+    last_dt_ = dt;
+}
+
+void Agents::take_off_across(AgentBody& a, const Link& link, Handle id, const BodyMotion& body, const StepNavMeshes& table) {
+    const StepNavMesh& from = *table.find(a.def.navmesh);
+    const StepNavMesh& to = *table.find(link.landing_navmesh);
+    Link flight = link_in_world(link, from.pose, to.pose);
+    // Aimed where the landing point will be after the flight; the time of a flight to there differs
+    // from the first guess's by the little the aim moved, so one correction is enough.
+    const Vec3 drift = surface_velocity(to.graph->frame(), to.pose, link.end);
+    const Vec3 aim = flight.end;
+    flight.end = aim + drift * LinkMotion(flight, false, body).duration();
+    flight.end = aim + drift * LinkMotion(flight, false, body).duration();
+    a.position = from.pose.world_point(a.position);
+    a.velocity = Vec3::Zero();
+    a.frame.reset();  // in the air over no surface: world space until it lands
+    a.at_takeoff = false;
+    a.motion = LinkMotion(flight, false, body);
+    a.motion_time = 0.0f;
+    a.link = id;
+    a.landing_navmesh = link.landing_navmesh;
+    a.landing_polygon = link.end_polygon;
+    a.state = state_of(a.motion->kind());
+    a.emit(AgentEventKind::LinkStarted, AgentReason::None, id);
+}
+
+void Agents::land_across(AgentBody& a, const std::shared_ptr<const PathGraph>& graph, const StepNavMeshes& table) {
+    const Handle navmesh = a.landing_navmesh;
+    a.landing_navmesh = Handle{};
+    if (!graph) {
+        a.fail(AgentReason::NavMeshRemoved);
+        return;
+    }
+    const SurfacePose pose = table.find(navmesh)->pose;
+    const Vec3 feet = pose.surface_point(a.position);
+    const float across = std::max(0.5f, a.def.capabilities.radius);
+    const NavPoint on = graph->navmesh().find_nearest(feet, Vec3(across, 2.0f, across));
+    if (!on.found) {
+        // The surface was not where the flight was aimed (it changed its motion meanwhile).
+        a.fail(AgentReason::LinkGone);
+        return;
+    }
+    a.def.navmesh = navmesh;
+    a.frame = graph->frame();
+    a.put_on_surface(on.point);
+    a.landing_offset = feet.y() - on.point.y();
+    a.walked_since_landing = 0.0f;
+    a.polygon = on.polygon;
+    a.path.clear();
+    a.graph.reset();
+    a.next = 0;
+    if (a.has_destination) {
+        a.state = AgentState::Waiting;
+        a.ask_path(AgentReason::None, next_path_order_);
+    }
 }
 
 namespace {
@@ -472,7 +639,7 @@ AgentInfo info_of(const AgentBody& a) {
     info.polygon = a.polygon;
     info.link = a.link;
     info.link_progress = a.motion ? std::clamp(a.motion_time / a.motion->duration(), 0.0f, 1.0f) : 0.0f;
-    info.destination = pose.world_point(a.destination);
+    info.destination = pose_of(a.destination_frame).world_point(a.destination);
     info.has_destination = a.has_destination;
     info.corners_ahead = a.path.empty() ? 0u : static_cast<uint32_t>(a.path.size() - a.next);
     info.user_data = a.def.user_data;

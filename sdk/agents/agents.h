@@ -27,6 +27,7 @@
 #include <vector>
 
 #include "agents/agent.h"
+#include "agents/route.h"
 #include "motion/link_motion.h"
 #include "path/path_graph.h"
 #include "util/handle.h"
@@ -55,8 +56,10 @@ public:
     void remove(Handle agent);
     bool contains(Handle agent) const;
 
-    // Located on the agent's navmesh at once (NotFound when it is not on it: the destination is not
-    // kept); the agent plans a path to it in a coming step.
+    // Located at once on the agent's navmesh, or else on a navmesh it reaches over cross links (a
+    // moving platform, a ledge across a chasm), and kept in that navmesh's space (on a moving
+    // surface it moves with it). NotFound when it is on none of them: the destination is not kept.
+    // The agent plans a path to it in a coming step.
     // `field` names the point in a failure (the caller's name for it). An agent whose navmesh was
     // removed is refused (InvalidHandle, saying so), as by teleport().
     void set_destination(const NavMeshRegistry& navmeshes, Handle agent, const Vec3& destination,
@@ -101,6 +104,24 @@ private:
     // Locates a world point on the navmesh placed at `pose`: the point found is in the navmesh's space.
     uint32_t locate(const NavMesh& navmesh, const SurfacePose& pose, const Vec3& point, float radius, const char* field,
                     Vec3& on_navmesh) const;
+    // Locates a world point on a navmesh that cross links join to `own` (found: its navmesh, frame
+    // and the point in its space).
+    bool locate_across(const NavMeshRegistry& navmeshes, Handle own, const Vec3& point, float radius, Vec3& on_navmesh,
+                       Handle& navmesh, std::shared_ptr<const SurfaceFrame>& frame) const;
+
+    // Take-off over a cross link that holds: the body flies in world space to where the landing
+    // point will be when it lands (the landing surface's motion over the last step carried on).
+    void take_off_across(AgentBody& a, const Link& link, Handle id, const BodyMotion& body, const StepNavMeshes& table);
+    // A body landed over a cross link goes onto its landing navmesh (`graph`, null if removed).
+    void land_across(AgentBody& a, const std::shared_ptr<const PathGraph>& graph, const StepNavMeshes& table);
+    // How fast the surface point `p` (in the space of the navmesh placed at `now`) moved over the last step.
+    Vec3 surface_velocity(const std::shared_ptr<const SurfaceFrame>& frame, const SurfacePose& now, const Vec3& p) const;
+    void remember_poses(const StepNavMeshes& table, float dt);
+
+    // Each surface's pose at the last step, and that step's dt: how fast a landing point moves, so a
+    // jump onto a moving surface aims where its landing will be.
+    std::vector<std::pair<std::weak_ptr<const SurfaceFrame>, SurfacePose>> last_poses_;
+    float last_dt_ = 0.0f;
 
     mutable SharedMutex mutex_;
     AgentsSettings settings_;

@@ -107,7 +107,12 @@ const char* link_kind_name(LinkKind kind) {
 
 std::string links_to_json(const std::vector<Link>& links) {
     Json list = Json::array();
-    for (const Link& l : links) {
+    for (size_t i = 0; i < links.size(); ++i) {
+        const Link& l = links[i];
+        // Its landing navmesh's id means nothing in another run: saving it would lose where it leads.
+        if (l.crosses())
+            fail(ErrorCode::InvalidArgument, "link ", i, " leads to another navmesh (a cross link): links files hold the "
+                                             "links within one navmesh; add cross links again after loading");
         Json kind = l.kind < LinkKind::FirstPluginKind ? Json(link_kind_name(l.kind)) : Json(uint32_t(l.kind));
         list.push_back({{"kind", kind},
                         {"start", point(l.start)},

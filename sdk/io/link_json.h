@@ -13,6 +13,7 @@ namespace nl {
 
 constexpr int kLinkFileVersion = 1;
 
+// Throws InvalidArgument for a cross link (Link::crosses): its landing navmesh cannot be named in a file.
 std::string links_to_json(const std::vector<Link>& links);
 
 // Throws Parse (malformed JSON, with the parser's position), VersionMismatch (another format or a

@@ -6,6 +6,7 @@
 #include <cstdint>
 
 #include "level/geometry.h"
+#include "util/handle.h"
 
 namespace nl {
 
@@ -46,7 +47,20 @@ struct Link {
     LinkRequirements requirements;
     uint32_t start_polygon = 0xffffffffu;
     uint32_t end_polygon = 0xffffffffu;
+
+    // A link from one surface to another: the navmesh its end is on (the end in that navmesh's
+    // space, end_polygon one of its polygons; the start on the link's own navmesh). Null: both ends
+    // on the link's own navmesh. Such a link is one-way and is taken only while it holds: while its
+    // end, seen from the start's navmesh, stays within `tolerance` of `placed_end`, where it was
+    // when the link was placed (link_placement.h, cross_link_holds).
+    Handle landing_navmesh;
+    Vec3 placed_end = Vec3::Zero();
+    float tolerance = 0.0f;
+    bool crosses() const { return landing_navmesh != Handle{}; }
 };
+
+// How far a cross link's end may move, seen from its start, before it stops holding (default).
+constexpr float kDefaultCrossTolerance = 0.25f;
 
 // Sets the length, rise and drop the link's ends ask for, start to end, and the gap to the length
 // (the rims are not known).

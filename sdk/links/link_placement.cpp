@@ -31,6 +31,15 @@ void place_link(const NavMesh& navmesh, Link& link) {
     link.end_polygon = polygon_near(navmesh, link.end, "end");
 }
 
+void place_cross_link(const NavMesh& from, const NavMesh& to, Link& link) {
+    link.start_polygon = polygon_near(from, link.start, "start");
+    link.end_polygon = polygon_near(to, link.end, "end");
+}
+
+bool cross_link_holds(const Link& link, const SurfacePose& from, const SurfacePose& to) {
+    return (from.surface_point(to.world_point(link.end)) - link.placed_end).norm() <= link.tolerance;
+}
+
 void place_saved_link(const NavMesh& navmesh, Link& link) {
     link.start_polygon = polygon_still_under(navmesh, link.start, link.start_polygon, "start");
     link.end_polygon = polygon_still_under(navmesh, link.end, link.end_polygon, "end");
@@ -47,6 +56,13 @@ Link link_in_surface(Link link, const SurfacePose& pose) {
     link.start = pose.surface_point(link.start);
     link.end = pose.surface_point(link.end);
     link.apex = pose.surface_point(link.apex);
+    return link;
+}
+
+Link link_in_world(Link link, const SurfacePose& from, const SurfacePose& to) {
+    const Vec3 end = to.world_point(link.end);
+    link = link_in_world(link, from);
+    link.end = end;
     return link;
 }
 

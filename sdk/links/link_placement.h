@@ -22,10 +22,19 @@ void place_link(const NavMesh& navmesh, Link& link);
 // build of the navmesh keeps the polygons it can; the others are located again.
 void place_saved_link(const NavMesh& navmesh, Link& link);
 
+// As place_link for a link from `from` to another navmesh `to`: the start on `from`, the end on `to`.
+void place_cross_link(const NavMesh& from, const NavMesh& to, Link& link);
+
+// Whether a cross link holds with its navmeshes placed at `from` (its start's) and `to` (its end's):
+// its end, seen from the start's navmesh, is within its tolerance of where it was placed.
+bool cross_link_holds(const Link& link, const SurfacePose& from, const SurfacePose& to);
+
 // The link with its points (ends, apex) carried by `pose` to the world, or from the world to the
 // surface: a link on a navmesh that rides a moving mesh is kept in the mesh's space. What it asks of
 // a body (rise, drop, length) stays: the surface's up is taken as the world's.
 Link link_in_world(Link link, const SurfacePose& pose);
 Link link_in_surface(Link link, const SurfacePose& pose);
+// For a link whose end lies on another navmesh (a cross link): start and apex by `from`, end by `to`.
+Link link_in_world(Link link, const SurfacePose& from, const SurfacePose& to);
 
 }  // namespace nl

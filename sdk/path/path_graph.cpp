@@ -8,9 +8,11 @@ PathGraph::PathGraph(std::shared_ptr<const NavMesh> navmesh, std::shared_ptr<con
                      std::shared_ptr<const SurfaceFrame> frame)
     : navmesh_(std::move(navmesh)), links_(links ? std::move(links) : std::make_shared<const LinkSnapshot>()),
       frame_(std::move(frame)) {
+    for (const StoredLink& s : *links_) has_cross_links_ = has_cross_links_ || s.link.crosses();
     const uint32_t polygons = navmesh_->polygon_count();
     auto usable = [&](const Link& l) {
-        return l.enabled && l.start_polygon < polygons && l.end_polygon < polygons;
+        // A link to another navmesh leaves this graph: agents plan such routes leg by leg (agents/route.h).
+        return l.enabled && !l.crosses() && l.start_polygon < polygons && l.end_polygon < polygons;
     };
     // Counting sort by departure polygon: a bidirectional link leaves from both ends.
     std::vector<uint32_t> counts(polygons + 1, 0);

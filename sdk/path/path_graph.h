@@ -30,6 +30,8 @@ public:
     const std::shared_ptr<const LinkSnapshot>& links_ptr() const { return links_; }
     const StoredLink& link(uint32_t index) const { return (*links_)[index]; }
     const std::shared_ptr<const SurfaceFrame>& frame() const { return frame_; }
+    // Whether any of its links leads to another navmesh (Link::crosses; not in the exits).
+    bool has_cross_links() const { return has_cross_links_; }
 
     // The enabled links leaving polygon p, as [begin, end).
     const LinkExit* exits_begin(uint32_t p) const { return first_exit_.empty() ? nullptr : &exits_[first_exit_[p]]; }
@@ -49,6 +51,7 @@ private:
     std::vector<uint32_t> first_exit_;  // polygon_count + 1 offsets into exits_; empty without links
     std::vector<LinkExit> exits_;
     float cheapest_link_per_metre_ = 1.0f;
+    bool has_cross_links_ = false;
 };
 
 }  // namespace nl

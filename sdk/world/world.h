@@ -88,8 +88,18 @@ public:
     void update_link(Handle link, Link replacement);
     // A link and its navmesh, the link in world space (on a navmesh that rides a moving mesh, where
     // the mesh is now). Links of such a navmesh are added and updated in world space too, and kept in
-    // the mesh's space; links files hold them in the mesh's space.
+    // the mesh's space; links files hold them in the mesh's space. A link whose landing_navmesh is
+    // set leads to that navmesh (a cross link: start and end each kept in its navmesh's space, the
+    // place it was added at remembered; one-way; InvalidHandle about "landing_navmesh" for a stale
+    // one, InvalidArgument for its own navmesh, a two-way link or a bad tolerance).
     std::pair<Handle, Link> link_in_world(Handle link) const;
+    // A link of `navmesh` (as stored) in world space now.
+    Link in_world(Handle navmesh, const Link& link) const;
+    // Whether a link of `navmesh` can be taken as its navmeshes stand now (cross_link_holds; always
+    // for a link within one navmesh).
+    bool link_holds(Handle navmesh, const Link& link) const;
+    // The navmesh's pose now; the identity for one that rides nothing or is gone.
+    SurfacePose navmesh_pose(Handle navmesh) const;
     // Replaces every link of the navmesh with those of a links file (place_saved_link; an end off the
     // navmesh is a failure about "links[i].start"); nothing changes when one is refused.
     void load_links(Handle navmesh, std::vector<Link> links);
@@ -114,6 +124,8 @@ private:
     // InvalidArgument for a navmesh that rides a moving mesh: the generator proves links against the
     // level as it stands, so they would hold at one placement only.
     void refuse_generation_on_surface(Handle navmesh) const;
+    // Puts a host's link (world space) on its navmesh, or across to its landing navmesh.
+    void place_host_link(Handle navmesh, Link& link) const;
     // The surface's transform now, checked as a navmesh's placement; needs surface_moves_ held.
     Transform surface_placement(Handle surface) const;
     Handle add_on_surface(std::shared_ptr<const NavMesh> navmesh, Handle surface);

@@ -1,4 +1,5 @@
 // World's link operations: links placed on their navmesh, and generations with the plugins' links.
+#include <cmath>
 #include <string>
 
 #include "links/link_generation.h"
@@ -8,23 +9,71 @@
 
 namespace nl {
 
+SurfacePose World::navmesh_pose(Handle navmesh) const {
+    try {
+        return pose_of(navmeshes_.frame(navmesh));
+    } catch (const Error& e) {
+        if (e.code() != ErrorCode::InvalidHandle) throw;
+        return SurfacePose{};  // a cross link's landing navmesh removed since: the link leads nowhere
+    }
+}
+
+void World::place_host_link(Handle navmesh, Link& link) const {
+    const std::shared_ptr<const NavMesh> from = navmeshes_.navmesh(navmesh);
+    const SurfacePose from_pose = pose_of(navmeshes_.frame(navmesh));
+    if (!link.crosses()) {
+        link = link_in_surface(link, from_pose);
+        place_link(*from, link);
+        return;
+    }
+    std::shared_ptr<const NavMesh> to;
+    SurfacePose to_pose;
+    try {
+        to = navmeshes_.navmesh(link.landing_navmesh);
+        to_pose = pose_of(navmeshes_.frame(link.landing_navmesh));
+    } catch (const Error& e) {
+        if (e.code() != ErrorCode::InvalidHandle) throw;
+        fail_field(ErrorCode::InvalidHandle, "landing_navmesh", ": ", e.what());
+    }
+    if (link.landing_navmesh == navmesh)
+        fail_field(ErrorCode::InvalidArgument, "landing_navmesh", " is the link's own navmesh (leave it null for a link within it)");
+    if (link.bidirectional)
+        fail_field(ErrorCode::InvalidArgument, "bidirectional", " is set on a link to another navmesh: such links are one-way "
+                                                                "(add one each way)");
+    if (!(link.tolerance >= 0.0f) || !std::isfinite(link.tolerance))
+        fail_field(ErrorCode::InvalidArgument, "tolerance", " is ", link.tolerance, " (must be finite and >= 0)");
+    // Placed as the two navmeshes stand now: it holds while they stay so (cross_link_holds).
+    const Vec3 end = link.end;
+    link = link_in_surface(link, from_pose);
+    link.end = to_pose.surface_point(end);
+    link.placed_end = from_pose.surface_point(end);
+    place_cross_link(*from, *to, link);
+}
+
 Handle World::add_link(Handle navmesh, Link link) {
-    link = link_in_surface(link, pose_of(navmeshes_.frame(navmesh)));
-    place_link(*navmeshes_.navmesh(navmesh), link);
+    place_host_link(navmesh, link);
     link.generated = false;
     return navmeshes_.add_link(navmesh, link);
 }
 
 void World::update_link(Handle link, Link replacement) {
     const Handle navmesh = navmeshes_.link(link).first;
-    replacement = link_in_surface(replacement, pose_of(navmeshes_.frame(navmesh)));
-    place_link(*navmeshes_.navmesh(navmesh), replacement);
+    place_host_link(navmesh, replacement);
     navmeshes_.update_link(link, replacement);
 }
 
+Link World::in_world(Handle navmesh, const Link& link) const {
+    const SurfacePose from = navmesh_pose(navmesh);
+    return link.crosses() ? nl::link_in_world(link, from, navmesh_pose(link.landing_navmesh)) : nl::link_in_world(link, from);
+}
+
 std::pair<Handle, Link> World::link_in_world(Handle link) const {
-    auto [navmesh, stored] = navmeshes_.link(link);
-    return {navmesh, nl::link_in_world(stored, pose_of(navmeshes_.frame(navmesh)))};
+    const auto [navmesh, stored] = navmeshes_.link(link);
+    return {navmesh, in_world(navmesh, stored)};
+}
+
+bool World::link_holds(Handle navmesh, const Link& link) const {
+    return !link.crosses() || cross_link_holds(link, navmesh_pose(navmesh), navmesh_pose(link.landing_navmesh));
 }
 
 void World::refuse_generation_on_surface(Handle navmesh) const {

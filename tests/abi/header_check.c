@@ -174,7 +174,9 @@ _Static_assert(offsetof(nl_link, size) == 0 && offsetof(nl_link, kind) == 4 && o
                    offsetof(nl_link, reserved) == 63 && offsetof(nl_link, cost_modifier) == 64 &&
                    offsetof(nl_link, start_polygon) == 68 && offsetof(nl_link, end_polygon) == 72 &&
                    offsetof(nl_link, reserved2) == 76 && offsetof(nl_link, user_data) == 80 &&
-                   offsetof(nl_link, requirements) == 88 && sizeof(nl_link) == 120,
+                   offsetof(nl_link, requirements) == 88 && offsetof(nl_link, landing_navmesh) == 120 &&
+                   offsetof(nl_link, tolerance) == 128 && offsetof(nl_link, holds) == 132 &&
+                   offsetof(nl_link, reserved3) == 133 && sizeof(nl_link) == 136,
                "nl_link layout (no hidden padding)");
 /* Growable link structs: only today's offsets are fixed. */
 _Static_assert(offsetof(nl_link_def, size) == 0 && offsetof(nl_link_def, kind) == 4 && offsetof(nl_link_def, start) == 8 &&
@@ -182,7 +184,8 @@ _Static_assert(offsetof(nl_link_def, size) == 0 && offsetof(nl_link_def, kind) =
                    offsetof(nl_link_def, enabled) == 33 && offsetof(nl_link_def, requirements_as_given) == 34 &&
                    offsetof(nl_link_def, reserved) == 35 &&
                    offsetof(nl_link_def, cost_modifier) == 36 && offsetof(nl_link_def, user_data) == 40 &&
-                   offsetof(nl_link_def, requirements) == 48,
+                   offsetof(nl_link_def, requirements) == 48 && offsetof(nl_link_def, landing_navmesh) == 80 &&
+                   offsetof(nl_link_def, tolerance) == 88 && offsetof(nl_link_def, reserved2) == 92 && sizeof(nl_link_def) == 96,
                "nl_link_def");
 _Static_assert(offsetof(nl_link_settings, size) == 0 && offsetof(nl_link_settings, min_edge_length) == 4 &&
                    offsetof(nl_link_settings, min_group_size) == 8 && offsetof(nl_link_settings, max_group_size) == 12 &&

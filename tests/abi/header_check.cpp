@@ -43,7 +43,7 @@ static_assert(blittable<nl_link>(), "nl_link");
 static_assert(blittable<nl_link_def>(), "nl_link_def");
 static_assert(blittable<nl_link_settings>(), "nl_link_settings");
 static_assert(blittable<nl_link_generation_report>(), "nl_link_generation_report");
-static_assert(sizeof(nl_link) == 120 && sizeof(nl_link_requirements) == 32 && sizeof(nl_link_id) == 8,
+static_assert(sizeof(nl_link) == 136 && sizeof(nl_link_requirements) == 32 && sizeof(nl_link_id) == 8,
               "fixed link structs have the same size in C++ as in C");
 static_assert(std::is_same<nl_link_kind, uint32_t>::value, "nl_link_kind is uint32_t");
 static_assert(sizeof(nl_nav_polygon) == 164 && sizeof(nl_boundary_edge) == 56 && sizeof(nl_nav_point) == 24 &&

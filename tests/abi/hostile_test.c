@@ -1899,17 +1899,32 @@ static void bad_agent_floats(const char* function, const void* valid, size_t siz
     bad_float_fields(function, "def", valid, size, fields, 4, refuse);
 }
 
-/* A def's optional `surface` mesh id (at `offset`): the null id is allowed (rides nothing), as is
-   the movable lift (the navmesh rides it; `riding` is a def that fits on the lift); every other bad id is INVALID_HANDLE naming "surface",
-   and a static mesh is INVALID_ARGUMENT. */
-static void surface_cases(const def_function* f, const void* valid, const void* riding, size_t size, size_t offset) {
+/* A def's optional id at `offset`, named `field` ("def->surface"): the null id is allowed (the
+   def's default), every other bad id is INVALID_HANDLE naming the field. */
+static void optional_id_cases(const def_function* f, const void* valid, size_t size, size_t offset, const char* field,
+                              raw_id live, raw_id stale, raw_id foreign) {
     aligned_buffer def;
     g_def = f;
-    CASE(f->function, "def->surface null (allowed: the navmesh rides nothing)") {
+    CASE(f->function, "%s null (allowed: none)", field) {
         memcpy(def.bytes, valid, size);
-        memset(def.bytes + offset, 0, sizeof(nl_mesh_id));
+        memset(def.bytes + offset, 0, sizeof(raw_id));
         def_accepts(def.bytes);
     }
+    FOR_BAD_IDS(bad, live, stale, foreign) {
+        if (bad->id.index1 == 0u && bad->id.generation == 0u) continue; /* the null id: allowed above */
+        CASE(f->function, "%s %s", field, bad->what) {
+            memcpy(def.bytes, valid, size);
+            memcpy(def.bytes + offset, &bad->id, sizeof bad->id);
+            def_refuses(def.bytes, NL_STATUS_INVALID_HANDLE, field);
+        }
+    }
+}
+
+/* A def's `surface` mesh id (at `offset`): the movable lift is allowed too (the navmesh rides it;
+   `riding` is a def that fits on the lift), a static mesh is INVALID_ARGUMENT. */
+static void surface_cases(const def_function* f, const void* valid, const void* riding, size_t size, size_t offset) {
+    aligned_buffer def;
+    optional_id_cases(f, valid, size, offset, "def->surface", RAW(A.movable), RAW(A.stale_mesh), RAW(B.movable));
     CASE(f->function, "def->surface the movable lift (allowed: the navmesh rides it)") {
         memcpy(def.bytes, riding, size);
         memcpy(def.bytes + offset, &A.movable, sizeof A.movable);
@@ -1919,14 +1934,6 @@ static void surface_cases(const def_function* f, const void* valid, const void* 
         memcpy(def.bytes, valid, size);
         memcpy(def.bytes + offset, &A.mesh, sizeof A.mesh);
         def_refuses(def.bytes, NL_STATUS_INVALID_ARGUMENT, "def->surface is not a movable mesh");
-    }
-    FOR_BAD_IDS(bad, A.movable, A.stale_mesh, B.movable) {
-        if (bad->id.index1 == 0u && bad->id.generation == 0u) continue; /* the null id: allowed above */
-        CASE(f->function, "def->surface %s", bad->what) {
-            memcpy(def.bytes, valid, size);
-            memcpy(def.bytes + offset, &bad->id, sizeof bad->id);
-            def_refuses(def.bytes, NL_STATUS_INVALID_HANDLE, "def->surface");
-        }
     }
 }
 
@@ -2199,6 +2206,7 @@ static const float_field k_link_def_floats[] = {
     FLOAT_FIELD(nl_link_def, cost_modifier, 1),   FLOAT_FIELD(nl_link_def, requirements.gap, 1),
     FLOAT_FIELD(nl_link_def, requirements.rise, 1), FLOAT_FIELD(nl_link_def, requirements.drop, 1),
     FLOAT_FIELD(nl_link_def, requirements.clearance_width, 1), FLOAT_FIELD(nl_link_def, requirements.length, 1),
+    FLOAT_FIELD(nl_link_def, tolerance, 1),
 };
 
 static const def_case k_link_defs[] = {
@@ -2240,6 +2248,25 @@ static void link_def_cases(const def_function* f) {
     def_cases(f->function, &valid, sizeof valid, k_link_defs, sizeof k_link_defs / sizeof *k_link_defs, def_refuses, def_accepts);
     bad_float_fields(f->function, "def", &valid, sizeof valid, k_link_def_floats,
                      sizeof k_link_def_floats / sizeof *k_link_def_floats, def_refuses);
+    optional_id_cases(f, &valid, sizeof valid, offsetof(nl_link_def, landing_navmesh), "def->landing_navmesh",
+                      RAW(A.host_navmesh), RAW(A.stale_navmesh), RAW(B.navmesh));
+    CASE(f->function, "def->landing_navmesh the link's own navmesh") {
+        nl_link_def def = valid;
+        def.landing_navmesh = A.navmesh;
+        def_refuses(&def, NL_STATUS_INVALID_ARGUMENT, "def->landing_navmesh is the link's own navmesh");
+    }
+    CASE(f->function, "def->landing_navmesh with bidirectional set") {
+        nl_link_def def = valid;
+        def.landing_navmesh = A.host_navmesh;
+        def.bidirectional = 1;
+        def_refuses(&def, NL_STATUS_INVALID_ARGUMENT, "def->bidirectional");
+    }
+    CASE(f->function, "def->landing_navmesh with the end off it") {
+        nl_link_def def = valid; /* the end lies on the link's own navmesh, 40 m from the lift's */
+        def.landing_navmesh = A.host_navmesh;
+        def.bidirectional = 0;
+        def_refuses(&def, NL_STATUS_INVALID_ARGUMENT, "def->end is not within");
+    }
 }
 
 static const nl_link_def* g_link_def;

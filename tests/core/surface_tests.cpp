@@ -3,6 +3,7 @@
 // space (no drift, however long the mesh turns), and destinations set on them stick to them.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <string>
@@ -250,4 +251,167 @@ TEST_CASE("bodies on a moving surface avoid each other there, and not bodies on 
     // The one below never moved: a body 6 m above on another surface is not in its way.
     CHECK(distance(p.world->agents().info(below).position, def.position + Vec3(0, 0, 0)) < 1.01f);
     CHECK(p.world->agents().info(below).velocity.norm() == 0.0f);
+}
+
+namespace {
+
+// Two 6 x 6 m ledges (tops at y = 0) across a 10 m chasm, x in [0, 6] and [16, 22], one static
+// navmesh over both; a 4 x 4 m shuttle (movable, its top at y = 0 in its own space, a navmesh on it)
+// that docks at one ledge, crosses, docks at the other and comes back, on a timetable. A link from
+// the near ledge onto the shuttle docked there, and one from the shuttle docked at the far ledge onto
+// it, each placed while the shuttle stood there: they hold only while it does.
+struct Ferry {
+    std::unique_ptr<nl::World> world;
+    Handle ground, shuttle, ledges, deck, board, leave;
+
+    static constexpr float kNearDock = 8.0f, kFarDock = 14.0f;  // the shuttle's centre, docked
+    // Docked 3 s, 4 s across, docked 3 s, 4 s back.
+    static float shuttle_x(double t) {
+        const double u = std::fmod(t, 14.0);
+        if (u < 3.0) return kNearDock;
+        if (u < 7.0) return float(kNearDock + (kFarDock - kNearDock) * (u - 3.0) / 4.0);
+        if (u < 10.0) return kFarDock;
+        return float(kFarDock - (kFarDock - kNearDock) * (u - 10.0) / 4.0);
+    }
+    static Transform at(float x) {
+        Transform t = Transform::Identity();
+        t.translate(Vec3(x, 0, 3));
+        return t;
+    }
+
+    explicit Ferry(int workers = 1) {
+        nl::WorldSettings settings;
+        settings.worker_count = workers;
+        world = std::make_unique<nl::World>(std::move(settings));
+        nl::levelgen::GeneratedLevel level, box;
+        level.add_box({{0, -1, 0}, {6, 0, 6}});
+        level.add_box({{16, -1, 0}, {22, 0, 6}});
+        ground = world->level().add_mesh(nl::test::to_triangle_mesh(level), Transform::Identity(), 0, 0);
+        box.add_box({{-2, -0.5f, -2}, {2, 0, 2}});
+        shuttle = world->level().add_mesh(nl::test::to_triangle_mesh(box), at(kFarDock), nl::kMeshMovable, 0);
+        nl::NavMeshInput both;
+        both.vertices = {{0.3f, 0, 0.3f}, {0.3f, 0, 5.7f}, {5.7f, 0, 5.7f}, {5.7f, 0, 0.3f},
+                         {16.3f, 0, 0.3f}, {16.3f, 0, 5.7f}, {21.7f, 0, 5.7f}, {21.7f, 0, 0.3f}};
+        both.indices = {0, 1, 2, 3, 4, 5, 6, 7};
+        both.polygon_sizes = {4, 4};
+        both.agent.radius = 0.3f;
+        ledges = world->add_navmesh(both);
+        nl::NavMeshInput top;
+        top.vertices = {{-1.7f, 0, -1.7f}, {-1.7f, 0, 1.7f}, {1.7f, 0, 1.7f}, {1.7f, 0, -1.7f}};
+        top.indices = {0, 1, 2, 3};
+        top.polygon_sizes = {4};
+        top.agent.radius = 0.3f;
+        deck = world->add_navmesh(top, shuttle);
+        leave = add_cross(deck, Vec3(15.4f, 0, 3), ledges, Vec3(16.6f, 0, 3));  // placed docked at the far ledge
+        world->set_mesh_transform(shuttle, at(kNearDock));
+        board = add_cross(ledges, Vec3(5.6f, 0, 3), deck, Vec3(6.6f, 0, 3));
+    }
+
+    Handle add_cross(Handle from, const Vec3& start, Handle to, const Vec3& end) {
+        nl::Link link;
+        link.kind = nl::LinkKind::Manual;
+        link.start = start;
+        link.end = end;
+        link.landing_navmesh = to;
+        link.tolerance = nl::kDefaultCrossTolerance;
+        nl::set_requirements_from_ends(link);
+        link.requirements.gap = 0.0f;  // a gangway: walked, not jumped
+        return world->add_link(from, link);
+    }
+};
+
+}  // namespace
+
+TEST_CASE("a ferry carries every agent across the chasm: they wait at the take-off, ride, and get off on the far side") {
+    Ferry f;
+    const Vec3 goal(20, 0, 3);
+    std::vector<Handle> agents;
+    for (float z : {1.5f, 3.0f, 4.5f}) {
+        nl::AgentDef def;
+        def.navmesh = f.ledges;
+        def.position = Vec3(2, 0, z);
+        def.capabilities.radius = 0.3f;
+        agents.push_back(f.world->agents().add(f.world->navmeshes(), def));
+        f.world->agents().set_destination(f.world->navmeshes(), agents.back(), goal);
+    }
+    const double dt = 1.0 / 30.0;
+    std::vector<int> boarded(agents.size(), 0), left(agents.size(), 0);
+    int waited = 0, arrived = 0, inside = 0;
+    double t = 4.0;  // the shuttle has just left: the first to reach the dock waits for it
+    for (int k = 0; k < 90 * 30 && arrived < int(agents.size()); ++k) {
+        t += dt;
+        f.world->set_mesh_transform(f.shuttle, Ferry::at(Ferry::shuttle_x(t)));
+        f.world->step(float(dt));
+        for (const nl::AgentEvent& e : f.world->agents().events()) {
+            const size_t i = size_t(std::find(agents.begin(), agents.end(), e.agent) - agents.begin());
+            if (e.kind == nl::AgentEventKind::LinkStarted) (e.link == f.board ? boarded : left)[i] += 1;
+            if (e.kind == nl::AgentEventKind::Arrived) ++arrived;
+            CHECK_MESSAGE(e.kind != nl::AgentEventKind::Failed, "agent ", i, " failed, reason ", int(e.reason));
+        }
+        // No body inside the level: a segment up its middle from just above its feet meets nothing.
+        std::vector<nl::Segment> bodies;
+        for (Handle a : agents) {
+            const nl::AgentInfo info = f.world->agents().info(a);
+            waited += info.state == AgentState::Waiting && info.link == f.board;
+            bodies.push_back({info.position + Vec3(0, 0.05f, 0), info.position + Vec3(0, 1.8f, 0)});
+        }
+        std::vector<uint8_t> blocked(bodies.size());
+        f.world->level().segments_blocked(bodies.data(), uint32_t(bodies.size()), blocked.data());
+        for (uint8_t b : blocked) inside += b;
+    }
+    MESSAGE("arrived " << arrived << " of " << agents.size() << " by t = " << t << " s; steps spent waiting at the dock: " << waited);
+    CHECK(arrived == int(agents.size()));
+    CHECK(waited > 0);  // the ferry was away when the first came: they waited for it
+    CHECK(inside == 0);
+    for (size_t i = 0; i < agents.size(); ++i) {
+        CHECK(boarded[i] >= 1);
+        CHECK(left[i] >= 1);
+        const nl::AgentInfo info = f.world->agents().info(agents[i]);
+        CHECK(info.state == AgentState::Arrived);
+        CHECK(distance(info.position, goal) < 1.5f);  // three bodies share the goal: they stand round it
+    }
+}
+
+TEST_CASE("a jump onto a moving surface aims where the landing will be: the body lands on the link's end on the surface") {
+    Ferry f;
+    // The shuttle slides along the near ledge's edge (z) at 1.5 m/s while a jumper jumps on from 1.5 m
+    // away; the link tolerates the slide, so it holds while the shuttle passes.
+    nl::Link jump;
+    jump.kind = nl::LinkKind::Jump;
+    jump.start = Vec3(5.6f, 0, 3);
+    jump.end = Vec3(7.6f, 0, 3);  // on the shuttle docked at the near ledge, 0.4 m from its centre
+    jump.landing_navmesh = f.deck;
+    jump.tolerance = 5.0f;
+    nl::set_requirements_from_ends(jump);
+    const Handle link = f.world->add_link(f.ledges, jump);
+    const Vec3 end_on_deck = f.world->navmeshes().link(link).second.end;
+    nl::AgentDef def;
+    def.navmesh = f.ledges;
+    def.position = Vec3(4.5f, 0, 3);
+    def.capabilities.radius = 0.3f;
+    def.capabilities.max_jump_distance = 3.0f;
+    def.capabilities.max_jump_height = 1.0f;
+    const Handle jumper = f.world->agents().add(f.world->navmeshes(), def);
+    f.world->agents().set_destination(f.world->navmeshes(), jumper, Ferry::at(Ferry::kNearDock) * Vec3(1, 0, 1));
+    const double dt = 1.0 / 60.0, speed = 1.5;
+    auto pose = [&](double t) {
+        Transform p = Ferry::at(Ferry::kNearDock);
+        p.pretranslate(Vec3(0, 0, float(speed * t - 1.0)));  // passes the take-off about 0.7 s in
+        return p;
+    };
+    bool landed = false;
+    for (int k = 1; k < 240 && !landed; ++k) {
+        f.world->set_mesh_transform(f.shuttle, pose(k * dt));
+        f.world->step(float(dt));
+        for (const nl::AgentEvent& e : f.world->agents().events()) {
+            if (e.kind != nl::AgentEventKind::LinkFinished) continue;
+            landed = true;
+            const Vec3 where = f.world->agents().info(jumper).position;
+            const Vec3 meant = pose(k * dt) * end_on_deck;
+            MESSAGE("landed " << distance(where, meant) * 100.0f << " cm from the link's end on the moving shuttle");
+            CHECK(distance(where, meant) < 0.1f);
+        }
+        CHECK(f.world->agents().info(jumper).state != AgentState::Failed);
+    }
+    CHECK(landed);
 }

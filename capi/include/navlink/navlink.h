@@ -697,6 +697,15 @@ typedef struct nl_link {
     uint32_t reserved2;        /**< 0. (Keeps user_data 8-aligned with no hidden padding.) */
     uint64_t user_data;
     nl_link_requirements requirements;
+    nl_navmesh_id landing_navmesh; /**< For a link to another navmesh (a cross link), the navmesh its
+                                        end is on (end_polygon is one of its polygons); the null id
+                                        for a link within `navmesh`. Added in 0.3. */
+    float tolerance;           /**< A cross link's: how far its end may move, seen from its start,
+                                    before it stops holding; 0 for other links. */
+    uint8_t holds;             /**< 1 if the link can be taken as the navmeshes stand now: always for a
+                                    link within one navmesh; for a cross link, while its end is within
+                                    `tolerance` of where it was, seen from its start. */
+    uint8_t reserved3[3];
 } nl_link;
 
 NL_DEFINE_OUTPUT_INIT(nl_link, nl_link_init)
@@ -720,6 +729,16 @@ typedef struct nl_link_def {
     float cost_modifier;       /**< 1 by default; >= 0. */
     uint64_t user_data;
     nl_link_requirements requirements;
+    nl_navmesh_id landing_navmesh; /**< The null id (default): both ends on the link's navmesh. Another
+                                        navmesh: a cross link from the link's navmesh to that one (a
+                                        ledge to a moving platform, a platform to a ledge), `end` on it.
+                                        Both ends are given in the world as the navmeshes stand now, and
+                                        each is kept in its navmesh's space; the link holds while the
+                                        end, seen from the start, stays within `tolerance` of where it
+                                        is now (agents wait at its start until it does: a ferry). Cross
+                                        links are one-way and are not saved in links files. Added in 0.3. */
+    float tolerance;           /**< Of a cross link, metres; 0.25 by default; >= 0. */
+    uint32_t reserved2;
 } nl_link_def;
 
 /** A manual link from (0,0,0) to (0,0,0), one-way, enabled, cost modifier 1, requirements measured
@@ -727,9 +746,13 @@ typedef struct nl_link_def {
 NL_API nl_link_def nl_default_link_def(void);
 
 /** Adds a link to a navmesh. Its ends must each lie within 1 m of the navmesh (they are kept as given;
- *  the polygons under them are recorded). Returns SUCCESS, or a failure with INVALID_HANDLE (navmesh),
+ *  the polygons under them are recorded), or, with def->landing_navmesh, the start within 1 m of
+ *  `navmesh` and the end within 1 m of the landing navmesh. Ends are given in the world; on a navmesh
+ *  that rides a moving mesh they are kept in its space (nl_link_get reads them where it is now).
+ *  Returns SUCCESS, or a failure with INVALID_HANDLE (navmesh, landing_navmesh),
  *  INVALID_ARGUMENT (null pointer, a coordinate not finite or beyond the limit, an end off the navmesh,
- *  a negative cost modifier or requirement, size too small). Thread-safe. */
+ *  a negative cost modifier, requirement or tolerance, a two-way cross link, landing_navmesh equal to
+ *  navmesh, size too small). Thread-safe. */
 NL_API nl_status nl_link_add(nl_world* world, nl_navmesh_id navmesh, const nl_link_def* def, nl_link_id* out_id);
 
 /** Replaces a link's fields with `def`'s (any link, generated ones too: to disable one, for instance).
