@@ -223,14 +223,16 @@ class Link(_Growable):
                 ("end", Vec3), ("apex", Vec3), ("bidirectional", c_uint8), ("generated", c_uint8),
                 ("enabled", c_uint8), ("reserved", c_uint8), ("cost_modifier", c_float), ("start_polygon", c_uint32),
                 ("end_polygon", c_uint32), ("reserved2", c_uint32), ("user_data", c_uint64),
-                ("requirements", LinkRequirements)]
+                ("requirements", LinkRequirements), ("landing_navmesh", NavmeshId), ("tolerance", c_float),
+                ("holds", c_uint8), ("reserved3", c_uint8 * 3)]
 
 
 class LinkDef(Structure):
     _fields_ = [("size", c_uint32), ("kind", c_uint32), ("start", Vec3), ("end", Vec3),
                 ("bidirectional", c_uint8), ("enabled", c_uint8), ("requirements_as_given", c_uint8),
                 ("reserved", c_uint8), ("cost_modifier", c_float), ("user_data", c_uint64),
-                ("requirements", LinkRequirements)]
+                ("requirements", LinkRequirements), ("landing_navmesh", NavmeshId), ("tolerance", c_float),
+                ("reserved2", c_uint32)]
 
 
 class LinkSettings(Structure):
@@ -754,6 +756,8 @@ def default_recast_settings():
 
 
 def default_link_def():
+    """A manual one-way link, enabled, cost modifier 1, requirements measured from its ends, within one navmesh
+    (landing_navmesh null; tolerance 0.25 for when it is set): set start and end."""
     return lib.nl_default_link_def()
 
 
@@ -1072,11 +1076,17 @@ class World:
     # --- links ---
 
     def add_link(self, navmesh, link_def):
+        """Adds a link (a LinkDef, from default_link_def()) to the navmesh: both ends within 1 m of it, or,
+        with link_def.landing_navmesh set (a cross link), the start within 1 m of `navmesh` and the end within
+        1 m of the landing navmesh, both in the world as the navmeshes stand now. A cross link is one-way
+        (bidirectional: STATUS_INVALID_ARGUMENT) and holds (Link.holds) while its end, seen from its start,
+        stays within link_def.tolerance (0.25 m by default) of where it is now."""
         link = LinkId()
         _check(lib.nl_link_add(self.pointer, navmesh, byref(link_def), byref(link)))
         return link
 
     def update_link(self, link, link_def):
+        """Replaces the link's fields with link_def's (errors as add_link)."""
         _check(lib.nl_link_update(self.pointer, link, byref(link_def)))
 
     def remove_link(self, link):
@@ -1117,6 +1127,8 @@ class World:
         return report
 
     def save_links_json(self, navmesh):
+        """The navmesh's links as JSON (schema "navlink-links" version 1); STATUS_INVALID_ARGUMENT for a
+        navmesh with cross links (links files hold the links within one navmesh)."""
         while True:
             length = c_size_t()
             _check(lib.nl_navmesh_save_links_json(self.pointer, navmesh, None, 0, byref(length)))

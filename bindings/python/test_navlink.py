@@ -34,6 +34,16 @@ RAFT_LO, RAFT_HI = (-4, -1, -2), (4, 0, 2)
 RAFT_QUAD = [-3.6, 0, -1.6, -3.6, 0, 1.6, 3.6, 0, 1.6, 3.6, 0, -1.6]
 RAFT_MOVED = [0, 0, -1, 0, 0, 1, 0, 0, 1, 0, 0, 0, 10, 0, 0, 1]  # column-major
 RAFT_SCALED = [2, 0, 0, 0, 0, 2, 0, 0, 0, 0, 2, 0, 10, 0, 0, 1]
+# A cross link onto a moving surface: a static 6 x 4 m ledge navmesh (x in [-6, 0], z in [-2, 2], y = 0) and,
+# 1 m past its edge, a 4 x 4 m movable box (x in [1, 5]; its own space is the world's until it moves) carrying
+# a 3.6 x 3.6 m navmesh quad. The link goes from the ledge's edge onto the box; the box then moves 2 m away
+# along x and back.
+LEDGE_QUAD = [-6, 0, -2, -6, 0, 2, 0, 0, 2, 0, 0, -2]
+DECK_LO, DECK_HI = (1, -1, -2), (5, 0, 2)
+DECK_QUAD = [1.2, 0, -1.8, 1.2, 0, 1.8, 4.8, 0, 1.8, 4.8, 0, -1.8]
+DECK_HOME = [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1]
+DECK_AWAY = [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 2, 0, 0, 1]  # 2 m along x
+CROSS_START, CROSS_END, CROSS_END_AWAY = (-0.4, 0, 0), (1.6, 0, 0), (3.6, 0, 0)
 
 
 def add_box(world, lo, hi, flags=0):
@@ -100,6 +110,10 @@ class NavLinkTestCase(unittest.TestCase):
         e = caught.exception
         self.assertTrue(e.has(nl.STATUS_FAILURE) and e.has(bit), "status %#x lacks %#x: %s" % (e.status, bit, e))
         self.assertIn(part, e.message)
+
+    def assertNear(self, got, want, msg=None):
+        for g, w in zip(got, want):
+            self.assertAlmostEqual(g, w, places=4, msg="%s: %s, expected %s" % (msg, list(got), list(want)))
 
     def assertJumperAcross(self, world, r):
         """Walk to the west rim, one generated jump (apex above), walk to the goal."""
@@ -413,6 +427,59 @@ class NavmeshTest(NavLinkTestCase):
             self.assertTrue(world.navmesh_info(ground).surface.is_null)
             stroll = world.find_path(nl.PathQuery(ground, (-4, 0, -4), (4, 0, 4), walker()))
             self.assertTrue(all(list(q.surface_position) == list(q.position) for q in stroll.points))
+
+    def test_cross_link_onto_a_moving_surface(self):
+        """A cross link (landing_navmesh) from a static ledge onto a navmesh riding a movable box: it holds while
+        the box is where the link was placed, and its end moves with the box; one-way only."""
+        with nl.World() as world:
+            ledge = world.add_navmesh(LEDGE_QUAD, [0, 1, 2, 3], [4])
+            deck_box = add_box(world, DECK_LO, DECK_HI, flags=nl.MESH_MOVABLE)
+            deck = world.add_navmesh(DECK_QUAD, [0, 1, 2, 3], [4], surface=deck_box)
+            d = nl.default_link_def()
+            self.assertTrue(d.landing_navmesh.is_null, "a link within one navmesh by default")
+            self.assertAlmostEqual(d.tolerance, 0.25, places=6)
+            d.start, d.end, d.landing_navmesh = CROSS_START, CROSS_END, deck  # in the world, the box beside the ledge
+            cross = world.add_link(ledge, d)
+            link = world.link(cross)
+            self.assertEqual((link.navmesh, link.landing_navmesh, link.holds, link.bidirectional), (ledge, deck, 1, 0))
+            self.assertAlmostEqual(link.tolerance, 0.25, places=6)
+            self.assertNotEqual(link.end_polygon, nl.NO_POLYGON, "the end is on a polygon of the deck")
+            self.assertNear(link.start, CROSS_START, "start")
+            self.assertNear(link.end, CROSS_END, "end")
+
+            world.set_mesh_transform(deck_box, DECK_AWAY)
+            link = world.link(cross)
+            self.assertEqual(link.holds, 0, "the box moved 2 m away: past the link's tolerance")
+            self.assertNear(link.start, CROSS_START, "the start stays on the ledge")
+            self.assertNear(link.end, CROSS_END_AWAY, "the end moved with the box")
+            listed = world.links(ledge)
+            self.assertEqual([(l.id, l.landing_navmesh, l.holds) for l in listed], [(cross, deck, 0)])
+            self.assertNear(listed[0].end, CROSS_END_AWAY, "the listed end")
+
+            world.set_mesh_transform(deck_box, DECK_HOME)
+            link = world.link(cross)
+            self.assertEqual(link.holds, 1, "the box is back")
+            self.assertNear(link.end, CROSS_END, "the end is back")
+
+            # A link within one navmesh: no landing navmesh, always holds, tolerance 0.
+            within = nl.default_link_def()
+            within.start, within.end = (-5, 0, 0), (-1, 0, 0)
+            plain = world.link(world.add_link(ledge, within))
+            self.assertTrue(plain.landing_navmesh.is_null and plain.holds == 1 and plain.tolerance == 0)
+
+            # Cross links are one-way, lead to another live navmesh, and links files do not hold them.
+            d.bidirectional = 1
+            self.assertFails(nl.STATUS_INVALID_ARGUMENT, "bidirectional", world.add_link, ledge, d)
+            d.bidirectional, d.landing_navmesh = 0, ledge
+            self.assertFails(nl.STATUS_INVALID_ARGUMENT, "landing_navmesh", world.add_link, ledge, d)
+            gone = world.add_navmesh(DECK_QUAD, [0, 1, 2, 3], [4])
+            world.remove_navmesh(gone)
+            d.landing_navmesh = gone
+            self.assertFails(nl.STATUS_INVALID_HANDLE, "landing_navmesh", world.add_link, ledge, d)
+            d.landing_navmesh, d.tolerance = deck, -1
+            self.assertFails(nl.STATUS_INVALID_ARGUMENT, "tolerance", world.add_link, ledge, d)
+            self.assertEqual(len(world.links(ledge)), 2, "nothing refused was added")
+            self.assertFails(nl.STATUS_INVALID_ARGUMENT, "cross link", world.save_links_json, ledge)
 
 
 class LinkTest(NavLinkTestCase):

@@ -7,7 +7,8 @@ namespace NavLink
     public sealed partial class World
     {
         /// <summary>A manual one-way link, enabled, cost modifier 1, requirements measured from its ends
-        /// (RequirementsAsGiven 0): set Start and End.</summary>
+        /// (RequirementsAsGiven 0), within one navmesh (LandingNavmesh null; Tolerance 0.25 for when it is
+        /// set): set Start and End.</summary>
         public static LinkDef DefaultLinkDef() { return Native.nl_default_link_def(); }
 
         public static LinkSettings DefaultLinkSettings() { return Native.nl_default_link_settings(); }
@@ -24,6 +25,11 @@ namespace NavLink
             return settings;
         }
 
+        /// <summary>Adds a link to a navmesh: both ends within 1 m of it, or, with def.LandingNavmesh set (a
+        /// cross link), the start within 1 m of navmesh and the end within 1 m of the landing navmesh, both
+        /// given in the world as the navmeshes stand now. A cross link is one-way (Bidirectional refused,
+        /// InvalidArgument) and leads to another navmesh (its own refused, InvalidArgument); a stale
+        /// LandingNavmesh is InvalidHandle.</summary>
         public unsafe LinkId AddLink(NavmeshId navmesh, LinkDef def)
         {
             LinkId id;
@@ -31,6 +37,7 @@ namespace NavLink
             return id;
         }
 
+        /// <summary>Replaces a link's fields with def's (errors as AddLink).</summary>
         public unsafe void UpdateLink(LinkId link, LinkDef def)
         {
             using (var w = Enter()) Status.Check(Native.nl_link_update(w.Pointer, link, &def));
@@ -125,7 +132,8 @@ namespace NavLink
             return report;
         }
 
-        /// <summary>The navmesh's links as JSON (schema "navlink-links" version 1).</summary>
+        /// <summary>The navmesh's links as JSON (schema "navlink-links" version 1). InvalidArgument for a
+        /// navmesh with cross links (links files hold links within one navmesh).</summary>
         public unsafe string SaveLinksJson(NavmeshId navmesh)
         {
             using (var w = Enter())

@@ -4,7 +4,8 @@ using NavLink;
 
 namespace NavLink.Tests
 {
-    // Navmeshes built by Recast and handed over by the host; point location; a navmesh that rides a moving mesh.
+    // Navmeshes built by Recast and handed over by the host; point location; a navmesh that rides a moving mesh,
+    // and a cross link onto it.
     internal static class NavmeshTests
     {
         // The moving surface: an 8 x 4 m movable box (top y = 0 in its own space) carrying a 7.2 x 3.2 m navmesh
@@ -13,6 +14,25 @@ namespace NavLink.Tests
         private static readonly float[] RaftQuad = {-3.6f, 0, -1.6f, -3.6f, 0, 1.6f, 3.6f, 0, 1.6f, 3.6f, 0, -1.6f};
         private static readonly float[] RaftMoved = {0, 0, -1, 0, 0, 1, 0, 0, 1, 0, 0, 0, 10, 0, 0, 1};
         private static readonly float[] RaftScaled = {2, 0, 0, 0, 0, 2, 0, 0, 0, 0, 2, 0, 10, 0, 0, 1};
+
+        // A cross link onto a moving surface: a static 6 x 4 m ledge navmesh (x in [-6, 0], z in [-2, 2], y = 0)
+        // and, 1 m past its edge, a 4 x 4 m movable box (x in [1, 5]; its own space is the world's until it moves)
+        // carrying a 3.6 x 3.6 m navmesh quad. The link goes from the ledge's edge onto the box; the box then
+        // moves 2 m away along x and back.
+        private static readonly float[] LedgeQuad = {-6, 0, -2, -6, 0, 2, 0, 0, 2, 0, 0, -2};
+        private static readonly float[] DeckQuad = {1.2f, 0, -1.8f, 1.2f, 0, 1.8f, 4.8f, 0, 1.8f, 4.8f, 0, -1.8f};
+        private static readonly float[] DeckHome = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+        private static readonly float[] DeckAway = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 2, 0, 0, 1};
+        private static readonly Vec3 CrossStart = new Vec3(-0.4f, 0, 0), CrossEnd = new Vec3(1.6f, 0, 0),
+                                     CrossEndAway = new Vec3(3.6f, 0, 0);
+
+        private static NavmeshInput Quad(float[] vertices, MeshId surface = default(MeshId))
+        {
+            return new NavmeshInput
+            {
+                Vertices = vertices, Indices = new uint[] {0, 1, 2, 3}, PolygonVertexCounts = new byte[] {4}, Surface = surface,
+            };
+        }
 
         private static bool Near(Vec3 a, Vec3 b)
         {
@@ -183,6 +203,75 @@ namespace NavLink.Tests
                     PathResult stroll = world.FindPath(new PathQuery(ground, new Vec3(-4, 0, -4), new Vec3(4, 0, 4), TestLevels.Walker()));
                     check.That(stroll.Points.Length >= 2 && stroll.Points.All(q => Same(q.SurfacePosition, q.Position)),
                                "SurfacePosition is Position on a navmesh that rides nothing");
+                }
+            });
+
+            check.Run("cross link onto a moving surface", () =>
+            {
+                using (var world = new World())
+                {
+                    NavmeshId ledge = world.AddNavmesh(Quad(LedgeQuad));
+                    MeshId deckBox = TestLevels.AddBox(world, 1, -1, -2, 5, 0, 2, MeshFlags.Movable);
+                    NavmeshId deck = world.AddNavmesh(Quad(DeckQuad, deckBox));
+                    LinkDef def = World.DefaultLinkDef();
+                    check.That(def.LandingNavmesh.IsNull && def.Tolerance == 0.25f,
+                               "a link within one navmesh by default, tolerance " + def.Tolerance);
+                    def.Start = CrossStart;  // in the world, the box beside the ledge
+                    def.End = CrossEnd;
+                    def.LandingNavmesh = deck;
+                    LinkId cross = world.AddLink(ledge, def);
+                    Link link = world.GetLink(cross);
+                    check.That(link.Navmesh.Equals(ledge) && link.LandingNavmesh.Equals(deck) && link.Holds == 1 &&
+                               link.Bidirectional == 0 && link.Tolerance == 0.25f,
+                               "a cross link onto the deck that holds: " + link.LandingNavmesh + " holds " + link.Holds);
+                    check.That(link.EndPolygon != Limits.NoPolygon, "the end is on a polygon of the deck");
+                    check.That(Near(link.Start, CrossStart) && Near(link.End, CrossEnd),
+                               "its ends: " + link.Start + " " + link.End);
+
+                    world.SetMeshTransform(deckBox, DeckAway);
+                    link = world.GetLink(cross);
+                    check.That(link.Holds == 0, "the box moved 2 m away: past the link's tolerance");
+                    check.That(Near(link.Start, CrossStart), "the start stays on the ledge: " + link.Start);
+                    check.That(Near(link.End, CrossEndAway), "the end moved with the box: " + link.End);
+                    Link[] listed = world.GetLinks(ledge);
+                    check.That(listed.Length == 1 && listed[0].Id.Equals(cross) && listed[0].LandingNavmesh.Equals(deck) &&
+                               listed[0].Holds == 0 && Near(listed[0].End, CrossEndAway), "the listed link");
+
+                    world.SetMeshTransform(deckBox, DeckHome);
+                    link = world.GetLink(cross);
+                    check.That(link.Holds == 1, "the box is back");
+                    check.That(Near(link.End, CrossEnd), "the end is back: " + link.End);
+
+                    // A link within one navmesh: no landing navmesh, always holds, tolerance 0.
+                    LinkDef within = World.DefaultLinkDef();
+                    within.Start = new Vec3(-5, 0, 0);
+                    within.End = new Vec3(-1, 0, 0);
+                    Link plain = world.GetLink(world.AddLink(ledge, within));
+                    check.That(plain.LandingNavmesh.IsNull && plain.Holds == 1 && plain.Tolerance == 0,
+                               "a link within the ledge");
+
+                    // Cross links are one-way, lead to another live navmesh, and links files do not hold them.
+                    LinkDef twoWay = def;
+                    twoWay.Bidirectional = 1;
+                    check.Throws(StatusBits.InvalidArgument, "bidirectional", () => world.AddLink(ledge, twoWay),
+                                 "a two-way cross link");
+                    LinkDef ontoItself = def;
+                    ontoItself.LandingNavmesh = ledge;
+                    check.Throws(StatusBits.InvalidArgument, "landing_navmesh", () => world.AddLink(ledge, ontoItself),
+                                 "a cross link onto its own navmesh");
+                    NavmeshId gone = world.AddNavmesh(Quad(DeckQuad));
+                    world.RemoveNavmesh(gone);
+                    LinkDef stale = def;
+                    stale.LandingNavmesh = gone;
+                    check.Throws(StatusBits.InvalidHandle, "landing_navmesh", () => world.AddLink(ledge, stale),
+                                 "a removed landing navmesh");
+                    LinkDef negative = def;
+                    negative.Tolerance = -1;
+                    check.Throws(StatusBits.InvalidArgument, "tolerance", () => world.AddLink(ledge, negative),
+                                 "a negative tolerance");
+                    check.That(world.GetLinks(ledge).Length == 2, "nothing refused was added");
+                    check.Throws(StatusBits.InvalidArgument, "cross link", () => world.SaveLinksJson(ledge),
+                                 "saving cross links");
                 }
             });
         }

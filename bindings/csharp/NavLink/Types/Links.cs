@@ -19,7 +19,7 @@ namespace NavLink
     /// <summary>nl_link: a link as the world holds it. An array element that may grow: Size is the
     /// element size the library lays an output array out with (Native.nl_link_init(); World sets it).</summary>
     [StructLayout(LayoutKind.Sequential)]
-    public struct Link
+    public unsafe struct Link
     {
         public uint Size;
         public uint Kind;
@@ -38,6 +38,16 @@ namespace NavLink
         public uint Reserved2;
         public ulong UserData;
         public LinkRequirements Requirements;
+        /// <summary>For a link to another navmesh (a cross link), the navmesh its End is on (EndPolygon is one
+        /// of its polygons); the null id for a link within Navmesh. Added in 0.3.</summary>
+        public NavmeshId LandingNavmesh;
+        /// <summary>A cross link's: how far its end may move, seen from its start, before it stops holding;
+        /// 0 for other links.</summary>
+        public float Tolerance;
+        /// <summary>1 if the link can be taken as the navmeshes stand now: always for a link within one
+        /// navmesh; for a cross link, while its end is within Tolerance of where it was, seen from its start.</summary>
+        public byte Holds;
+        public fixed byte Reserved3[3];
     }
 
     /// <summary>nl_link_def: a link to add or the new state of one. Get one from World.DefaultLinkDef().</summary>
@@ -50,14 +60,23 @@ namespace NavLink
         public Vec3 End;
         public byte Bidirectional;
         public byte Enabled;
-        /// <summary>1 (default): Requirements.Gap, Length, Rise and Drop are measured from the ends and the
-        /// values given are ignored; 0: Requirements are taken as given (a link that asks only for an
+        /// <summary>0 (default): Requirements.Gap, Length, Rise and Drop are measured from the ends and the
+        /// values given are ignored; 1: Requirements are taken as given (a link that asks only for an
         /// ability; a Length of 0 is measured). ClearanceWidth and Abilities are always taken as given.</summary>
         public byte RequirementsAsGiven;
         public byte Reserved;
         public float CostModifier;
         public ulong UserData;
         public LinkRequirements Requirements;
+        /// <summary>The null id (default): both ends on the link's navmesh. Another navmesh: a cross link from
+        /// the link's navmesh to that one, End on it (within 1 m). Both ends are given in the world as the
+        /// navmeshes stand now; the link holds (Link.Holds) while the end, seen from the start, stays within
+        /// Tolerance of where it is now. One-way only (Bidirectional refused), and not saved by
+        /// World.SaveLinksJson (which refuses a navmesh with cross links). Added in 0.3.</summary>
+        public NavmeshId LandingNavmesh;
+        /// <summary>Of a cross link, metres; 0.25 by default; >= 0.</summary>
+        public float Tolerance;
+        public uint Reserved2;
     }
 
     /// <summary>nl_link_settings. PluginSettingsJson is a UTF-8 pointer borrowed for the call.</summary>

@@ -51,6 +51,16 @@ pub struct nl_link {
     pub reserved2: u32,
     pub user_data: u64,
     pub requirements: nl_link_requirements,
+    /// For a link to another navmesh (a cross link), the navmesh its end is on (`end_polygon` is one of
+    /// its polygons); the null id for a link within `navmesh`. Added in 0.3.
+    pub landing_navmesh: nl_navmesh_id,
+    /// A cross link's: how far its end may move, seen from its start, before it stops holding; 0 for
+    /// other links.
+    pub tolerance: f32,
+    /// 1 if the link can be taken as the navmeshes stand now: always for a link within one navmesh; for a
+    /// cross link, while its end is within `tolerance` of where it was, seen from its start.
+    pub holds: u8,
+    pub reserved3: [u8; 3],
 }
 
 pub fn nl_link_init() -> nl_link {
@@ -67,12 +77,21 @@ pub struct nl_link_def {
     pub end: [f32; 3],
     pub bidirectional: u8,
     pub enabled: u8,
-    /// 1 (default): gap, length, rise and drop are measured from the ends; 0: `requirements` as given.
+    /// 0 (default): `requirements`' gap, length, rise and drop are measured from the ends; 1: all of
+    /// `requirements` as given.
     pub requirements_as_given: u8,
     pub reserved: u8,
     pub cost_modifier: f32,
     pub user_data: u64,
     pub requirements: nl_link_requirements,
+    /// The null id (default): both ends on the link's navmesh. Another navmesh: a cross link from the
+    /// link's navmesh to that one, `end` on it. Both ends are given in the world as the navmeshes stand
+    /// now; the link holds while the end, seen from the start, stays within `tolerance` of where it is
+    /// now. Cross links are one-way and are not saved in links files. Added in 0.3.
+    pub landing_navmesh: nl_navmesh_id,
+    /// Of a cross link, metres; 0.25 by default; >= 0.
+    pub tolerance: f32,
+    pub reserved2: u32,
 }
 
 #[repr(C)]

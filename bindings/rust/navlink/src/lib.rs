@@ -26,7 +26,7 @@ mod world;
 pub use agents::default_agent_def;
 pub use error::{status_string, Error, Result};
 pub use level::MeshOptions;
-pub use links::{default_link_def, default_link_settings, link_settings_from_json, Progress};
+pub use links::{default_link_def, default_link_settings, link_settings_from_json, LinkDefExt, LinkExt, Progress};
 pub use navmesh::{default_agent_type, default_recast_settings, NavmeshBuild, NavmeshDetail, NavmeshInput};
 pub use paths::{default_agent_capabilities, FinishedPath, PathBudget, PathOutcome, PathQuery, PathResult};
 pub use plugins::PluginSummary;

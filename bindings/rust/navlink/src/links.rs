@@ -13,9 +13,62 @@ use std::ptr;
 pub type Progress<'a> = &'a mut dyn FnMut(f32, &str) -> bool;
 
 /// A manual one-way link, enabled, cost modifier 1, requirements measured from its ends
-/// (`requirements_as_given` 0): set start and end.
+/// (`requirements_as_given` 0), within one navmesh (`landing_navmesh` null; `tolerance` 0.25 for when it
+/// is set): set start and end.
 pub fn default_link_def() -> LinkDef {
     unsafe { sys::nl_default_link_def() }
+}
+
+/// `Some(id)`, or `None` for the null id.
+fn non_null_navmesh(id: NavmeshId) -> Option<NavmeshId> {
+    if id == NavmeshId::default() {
+        None
+    } else {
+        Some(id)
+    }
+}
+
+/// A `LinkDef`'s landing navmesh (navlink.h 0.3) as an `Option`: `None` for a link within its navmesh,
+/// `Some(navmesh)` for a cross link to that navmesh:
+/// `LinkDef { start, end, ..default_link_def() }.with_landing(Some(deck))`.
+pub trait LinkDefExt: Sized {
+    /// The navmesh `end` is on, if not the link's own (`landing_navmesh`).
+    fn landing(&self) -> Option<NavmeshId>;
+    /// Sets `landing_navmesh`: `Some(landing)` makes a cross link from the navmesh it is added to onto
+    /// `landing` (both ends given in the world as the navmeshes stand now, `end` within 1 m of `landing`;
+    /// one-way only; it holds while its end, seen from its start, stays within `tolerance`); `None` the
+    /// null id, a link within one navmesh.
+    fn with_landing(self, landing: Option<NavmeshId>) -> Self;
+}
+
+impl LinkDefExt for LinkDef {
+    fn landing(&self) -> Option<NavmeshId> {
+        non_null_navmesh(self.landing_navmesh)
+    }
+
+    fn with_landing(mut self, landing: Option<NavmeshId>) -> Self {
+        self.landing_navmesh = landing.unwrap_or_default();
+        self
+    }
+}
+
+/// A `Link`'s cross-link fields (navlink.h 0.3) as Rust values.
+pub trait LinkExt {
+    /// The navmesh a cross link's end is on (`landing_navmesh`); `None` for a link within its navmesh.
+    fn landing(&self) -> Option<NavmeshId>;
+    /// Whether the link can be taken as the navmeshes stand now (`holds`): always for a link within one
+    /// navmesh; for a cross link, while its end, seen from its start, is within `tolerance` of where it was.
+    fn holds_now(&self) -> bool;
+}
+
+impl LinkExt for Link {
+    fn landing(&self) -> Option<NavmeshId> {
+        non_null_navmesh(self.landing_navmesh)
+    }
+
+    fn holds_now(&self) -> bool {
+        self.holds != 0
+    }
 }
 
 pub fn default_link_settings() -> LinkSettings {
@@ -54,12 +107,17 @@ fn with_progress(progress: Option<Progress<'_>>, call: impl FnOnce(sys::nl_progr
 }
 
 impl World {
+    /// Adds a link to `navmesh`: both ends within 1 m of it, or, with a landing navmesh
+    /// ([`LinkDefExt::with_landing`]), the start within 1 m of `navmesh` and the end within 1 m of the
+    /// landing one. `INVALID_ARGUMENT` for a two-way cross link or one that lands on its own navmesh,
+    /// `INVALID_HANDLE` for a stale landing navmesh.
     pub fn add_link(&self, navmesh: NavmeshId, def: &LinkDef) -> Result<LinkId> {
         let mut id = LinkId::default();
         check(unsafe { sys::nl_link_add(self.raw(), navmesh, def, &mut id) })?;
         Ok(id)
     }
 
+    /// Replaces the link's fields with `def`'s (errors as `add_link`).
     pub fn update_link(&self, link: LinkId, def: &LinkDef) -> Result<()> {
         check(unsafe { sys::nl_link_update(self.raw(), link, def) }).map(drop)
     }
@@ -128,7 +186,8 @@ impl World {
         Ok(report)
     }
 
-    /// The navmesh's links as JSON (schema "navlink-links" version 1).
+    /// The navmesh's links as JSON (schema "navlink-links" version 1); `INVALID_ARGUMENT` for a navmesh
+    /// with cross links (links files hold the links within one navmesh).
     pub fn save_links_json(&self, navmesh: NavmeshId) -> Result<String> {
         loop {
             let mut length = 0usize;

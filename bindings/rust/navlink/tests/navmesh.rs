@@ -1,10 +1,11 @@
-//! Navmeshes built by Recast and handed over by the host; point location; a navmesh that rides a moving mesh.
+//! Navmeshes built by Recast and handed over by the host; point location; a navmesh that rides a moving mesh,
+//! and a cross link onto it.
 mod common;
 
 use common::*;
 use navlink::{
-    default_agent_type, default_recast_settings, status, MeshId, MeshOptions, NavmeshBuild, NavmeshInput, PathOutcome, PathQuery, World,
-    MESH_MOVABLE, NO_POLYGON,
+    default_agent_type, default_link_def, default_recast_settings, status, LinkDef, LinkDefExt, LinkExt, MeshId, MeshOptions,
+    NavmeshBuild, NavmeshId, NavmeshInput, PathOutcome, PathQuery, World, MESH_MOVABLE, NO_POLYGON,
 };
 
 #[test]
@@ -152,4 +153,75 @@ fn navmesh_on_a_moving_surface() {
     assert_eq!(world.navmesh_info(ground).unwrap().surface, MeshId::default());
     let stroll = world.find_path(&PathQuery::new(ground, [-4.0, 0.0, -4.0], [4.0, 0.0, 4.0], walker())).unwrap();
     assert!(stroll.points.iter().all(|q| q.surface_position == q.position), "{:?}", stroll.points);
+}
+
+/// A cross link onto a moving surface: a static 6 x 4 m ledge navmesh (x in [-6, 0], z in [-2, 2], y = 0) and,
+/// 1 m past its edge, a 4 x 4 m movable box (x in [1, 5]; its own space is the world's until it moves) carrying
+/// a 3.6 x 3.6 m navmesh quad. The link goes from the ledge's edge onto the box; the box then moves 2 m away
+/// along x and back.
+const LEDGE_QUAD: [f32; 12] = [-6.0, 0.0, -2.0, -6.0, 0.0, 2.0, 0.0, 0.0, 2.0, 0.0, 0.0, -2.0];
+const DECK_QUAD: [f32; 12] = [1.2, 0.0, -1.8, 1.2, 0.0, 1.8, 4.8, 0.0, 1.8, 4.8, 0.0, -1.8];
+const DECK_HOME: [f32; 16] = [1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0];
+const DECK_AWAY: [f32; 16] = [1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 2.0, 0.0, 0.0, 1.0];
+const CROSS_START: [f32; 3] = [-0.4, 0.0, 0.0];
+const CROSS_END: [f32; 3] = [1.6, 0.0, 0.0];
+const CROSS_END_AWAY: [f32; 3] = [3.6, 0.0, 0.0];
+
+/// A one-quad navmesh.
+fn quad(vertices: &[f32]) -> NavmeshInput<'_> {
+    NavmeshInput { polygon_vertex_counts: Some(&[4]), ..NavmeshInput::triangles(vertices, &[0, 1, 2, 3]) }
+}
+
+#[test]
+fn cross_link_onto_a_moving_surface() {
+    let world = World::new().unwrap();
+    let ledge = world.add_navmesh(&quad(&LEDGE_QUAD)).unwrap();
+    let movable = MeshOptions { flags: MESH_MOVABLE, ..Default::default() };
+    let deck_box = add_box_with(&world, [1.0, -1.0, -2.0], [5.0, 0.0, 2.0], &movable);
+    let deck = world.add_navmesh(&NavmeshInput { surface: Some(deck_box), ..quad(&DECK_QUAD) }).unwrap();
+    let defaults = default_link_def();
+    assert_eq!(defaults.landing(), None, "a link within one navmesh by default");
+    assert_eq!(defaults.tolerance, 0.25);
+    // In the world, the box beside the ledge.
+    let def = LinkDef { start: CROSS_START, end: CROSS_END, ..defaults }.with_landing(Some(deck));
+    assert_eq!((def.landing(), def.landing_navmesh), (Some(deck), deck));
+    let cross = world.add_link(ledge, &def).unwrap();
+    let link = world.link(cross).unwrap();
+    assert_eq!((link.navmesh, link.landing(), link.landing_navmesh), (ledge, Some(deck), deck));
+    assert_eq!((link.holds, link.bidirectional), (1, 0));
+    assert!(link.holds_now());
+    assert_eq!(link.tolerance, 0.25);
+    assert_ne!(link.end_polygon, NO_POLYGON, "the end is on a polygon of the deck");
+    assert_near(link.start, CROSS_START, "start");
+    assert_near(link.end, CROSS_END, "end");
+
+    world.set_mesh_transform(deck_box, &DECK_AWAY).unwrap();
+    let link = world.link(cross).unwrap();
+    assert_eq!(link.holds, 0, "the box moved 2 m away: past the link's tolerance");
+    assert!(!link.holds_now());
+    assert_near(link.start, CROSS_START, "the start stays on the ledge");
+    assert_near(link.end, CROSS_END_AWAY, "the end moved with the box");
+    let listed = world.links(ledge).unwrap();
+    assert_eq!(listed.iter().map(|l| (l.id, l.landing(), l.holds)).collect::<Vec<_>>(), vec![(cross, Some(deck), 0)]);
+    assert_near(listed[0].end, CROSS_END_AWAY, "the listed end");
+
+    world.set_mesh_transform(deck_box, &DECK_HOME).unwrap();
+    let link = world.link(cross).unwrap();
+    assert_eq!(link.holds, 1, "the box is back");
+    assert_near(link.end, CROSS_END, "the end is back");
+
+    // A link within one navmesh: no landing navmesh, always holds, tolerance 0.
+    let within = LinkDef { start: [-5.0, 0.0, 0.0], end: [-1.0, 0.0, 0.0], ..default_link_def() };
+    let plain = world.link(world.add_link(ledge, &within).unwrap()).unwrap();
+    assert_eq!((plain.landing(), plain.landing_navmesh, plain.holds, plain.tolerance), (None, NavmeshId::default(), 1, 0.0));
+
+    // Cross links are one-way, lead to another live navmesh, and links files do not hold them.
+    assert_fails(world.add_link(ledge, &LinkDef { bidirectional: 1, ..def }), status::INVALID_ARGUMENT, "bidirectional");
+    assert_fails(world.add_link(ledge, &def.with_landing(Some(ledge))), status::INVALID_ARGUMENT, "landing_navmesh");
+    let gone = world.add_navmesh(&quad(&DECK_QUAD)).unwrap();
+    world.remove_navmesh(gone).unwrap();
+    assert_fails(world.add_link(ledge, &def.with_landing(Some(gone))), status::INVALID_HANDLE, "landing_navmesh");
+    assert_fails(world.add_link(ledge, &LinkDef { tolerance: -1.0, ..def }), status::INVALID_ARGUMENT, "tolerance");
+    assert_eq!(world.links(ledge).unwrap().len(), 2, "nothing refused was added");
+    assert_fails(world.save_links_json(ledge), status::INVALID_ARGUMENT, "cross link");
 }
