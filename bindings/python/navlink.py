@@ -476,6 +476,8 @@ _PROTOTYPES = {
     "nl_link_settings_from_json": (c_uint32, [c_char_p, c_size_t, POINTER(LinkSettings)]),
     "nl_navmesh_generate_links": (c_uint32, [_w, NavmeshId, POINTER(LinkSettings), ProgressFn, c_void_p,
                                              POINTER(LinkGenerationReport)]),
+    "nl_navmesh_generate_cross_links": (c_uint32, [_w, NavmeshId, NavmeshId, c_float, POINTER(LinkSettings), ProgressFn,
+                                                   c_void_p, POINTER(LinkGenerationReport)]),
     "nl_navmesh_update_links_in_box": (c_uint32, [_w, NavmeshId, POINTER(c_float), POINTER(c_float), ProgressFn,
                                                   c_void_p, POINTER(LinkGenerationReport)]),
     "nl_navmesh_save_links_json": (c_uint32, [_w, NavmeshId, c_char_p, c_size_t, POINTER(c_size_t)]),
@@ -1118,6 +1120,22 @@ class World:
         report = LinkGenerationReport()
         _with_progress(progress, lambda fn, user: lib.nl_navmesh_generate_links(
             self.pointer, navmesh, byref(s), fn, user, byref(report)))
+        return report
+
+    def generate_cross_links(self, first, second, tolerance, settings=None, progress=None):
+        """Generates the jump and drop links between two navmeshes (a ledge and a platform; either may ride a
+        moving mesh) for where they stand now, both ways, as cross links (Link.landing_navmesh) that hold while
+        the two stay placed so, within `tolerance` metres (0.25 is a good start). They replace the generated
+        cross links between the two that hold now; those made for another placement (a platform's other stop)
+        stay, and so do each navmesh's own links. Both navmeshes must be made for the same agent radius and
+        height. settings and progress as for generate_links (no plugin kinds run here); the report's jump_links
+        and drop_links count the cross links made. STATUS_INVALID_ARGUMENT for the same navmesh twice,
+        different bodies, a bad tolerance or setting; STATUS_INVALID_HANDLE for either navmesh stale;
+        STATUS_CANCELLED (nothing changed)."""
+        s = LinkSettings.from_buffer_copy(settings if settings is not None else default_link_settings())
+        report = LinkGenerationReport()
+        _with_progress(progress, lambda fn, user: lib.nl_navmesh_generate_cross_links(
+            self.pointer, first, second, tolerance, byref(s), fn, user, byref(report)))
         return report
 
     def update_links_in_box(self, navmesh, box_min, box_max, progress=None):

@@ -44,14 +44,27 @@ DECK_QUAD = [1.2, 0, -1.8, 1.2, 0, 1.8, 4.8, 0, 1.8, 4.8, 0, -1.8]
 DECK_HOME = [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1]
 DECK_AWAY = [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 2, 0, 0, 1]  # 2 m along x
 CROSS_START, CROSS_END, CROSS_END_AWAY = (-0.4, 0, 0), (1.6, 0, 0), (3.6, 0, 0)
+# Generated cross links (tests/core/surface_tests.cpp's ferry): a static 6 x 6 m ledge (box x in [0, 6], z in
+# [0, 6], top y = 0) whose navmesh is its top eroded 0.3 m, and a 4 x 4 m movable box (top y = 0 in its own
+# space, centred on its origin) carrying its top eroded 0.3 m as a navmesh, placed 1 m off the ledge's edge
+# (centre x = 9, z = 3), then 3 m off (x = 11). Both navmeshes for radius 0.3; jumps up to 2 m across.
+LEDGE_BOX_LO, LEDGE_BOX_HI = (0, -1, 0), (6, 0, 6)
+LEDGE_TOP = [0.3, 0, 0.3, 0.3, 0, 5.7, 5.7, 0, 5.7, 5.7, 0, 0.3]
+PLATFORM_LO, PLATFORM_HI = (-2, -0.5, -2), (2, 0, 2)
+PLATFORM_TOP = [-1.7, 0, -1.7, -1.7, 0, 1.7, 1.7, 0, 1.7, 1.7, 0, -1.7]
 
 
-def add_box(world, lo, hi, flags=0):
+def platform_at(x):
+    """The platform's transform: its centre at (x, 0, 3) (column-major)."""
+    return [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, x, 0, 3, 1]
+
+
+def add_box(world, lo, hi, flags=0, transform=None):
     """A box: corner k takes x from bit 0, y from bit 1, z from bit 2."""
     v = []
     for k in range(8):
         v += [hi[0] if k & 1 else lo[0], hi[1] if k & 2 else lo[1], hi[2] if k & 4 else lo[2]]
-    return world.add_mesh(v, BOX_INDICES, flags=flags)
+    return world.add_mesh(v, BOX_INDICES, flags=flags, transform=transform)
 
 
 def add_gap_level(world):
@@ -480,6 +493,70 @@ class NavmeshTest(NavLinkTestCase):
             self.assertFails(nl.STATUS_INVALID_ARGUMENT, "tolerance", world.add_link, ledge, d)
             self.assertEqual(len(world.links(ledge)), 2, "nothing refused was added")
             self.assertFails(nl.STATUS_INVALID_ARGUMENT, "cross link", world.save_links_json, ledge)
+
+    def test_cross_links_generated_for_where_a_platform_stands(self):
+        """generate_cross_links: jumps both ways between a ledge and a platform 1 m off it, as generated cross
+        links that hold while the platform stays there; 3 m off, none holds, none is found, and those made
+        1 m off stay."""
+        with nl.World() as world:
+            add_box(world, LEDGE_BOX_LO, LEDGE_BOX_HI)
+            platform = add_box(world, PLATFORM_LO, PLATFORM_HI, flags=nl.MESH_MOVABLE, transform=platform_at(9))
+            agent = nl.default_agent_type()
+            agent.radius = 0.3
+            ledge = world.add_navmesh(LEDGE_TOP, [0, 1, 2, 3], [4], agent=agent)
+            deck = world.add_navmesh(PLATFORM_TOP, [0, 1, 2, 3], [4], agent=agent, surface=platform)
+            settings = nl.default_link_settings()
+            settings.max_jump_gap = 2.0
+
+            def crossing(navmesh, landing):
+                return [l for l in world.links(navmesh) if l.landing_navmesh == landing]
+
+            stages = []
+            report = world.generate_cross_links(ledge, deck, 0.25, settings,
+                                                progress=lambda f, stage: stages.append((f, stage)) or True)
+            onto, off = crossing(ledge, deck), crossing(deck, ledge)
+            self.assertGreater(report.jump_links, 0)
+            self.assertGreater(len(onto), 0, "links from the ledge onto the platform")
+            self.assertGreater(len(off), 0, "links from the platform onto the ledge")
+            self.assertEqual(report.jump_links + report.drop_links, len(onto) + len(off), "the report counts them")
+            self.assertEqual(len(world.links(ledge)) + len(world.links(deck)), len(onto) + len(off),
+                             "no links within either navmesh")
+            self.assertTrue(stages and stages[-1][0] == 1.0, "progress reported: %s" % stages)
+            for link in onto + off:
+                self.assertEqual((link.generated, link.holds, link.bidirectional), (1, 1, 0))
+                self.assertAlmostEqual(link.tolerance, 0.25, places=6)
+                self.assertNotEqual(link.end_polygon, nl.NO_POLYGON)
+            for link in onto:  # in the world: from the ledge's rim (x 5.7) to the platform's (x 7.3)
+                self.assertTrue(5.5 < link.start[0] < 6 and 7 < link.end[0] < 7.5, "%s %s" % (list(link.start), list(link.end)))
+            for link in off:
+                self.assertTrue(7 < link.start[0] < 7.5 and 5.5 < link.end[0] < 6, "%s %s" % (list(link.start), list(link.end)))
+
+            # 3 m off the ledge: nothing holds; beyond a 2 m jump nothing is found, and the links made 1 m off stay.
+            world.set_mesh_transform(platform, platform_at(11))
+            self.assertEqual([l.holds for l in crossing(ledge, deck) + crossing(deck, ledge)], [0] * (len(onto) + len(off)))
+            report = world.generate_cross_links(ledge, deck, 0.25, settings)
+            self.assertEqual((report.jump_links, report.drop_links), (0, 0))
+            self.assertEqual([l.id for l in crossing(ledge, deck)], [l.id for l in onto], "kept for when it is back")
+            self.assertEqual([l.id for l in crossing(deck, ledge)], [l.id for l in off])
+
+            # Back 1 m off: they hold again, and generating there again replaces them (not doubled).
+            world.set_mesh_transform(platform, platform_at(9))
+            self.assertTrue(all(l.holds == 1 for l in crossing(ledge, deck) + crossing(deck, ledge)))
+            world.generate_cross_links(ledge, deck, 0.25, settings)
+            self.assertEqual((len(crossing(ledge, deck)), len(crossing(deck, ledge))), (len(onto), len(off)))
+
+            # Refused: the same navmesh twice, a bad tolerance, another body, a stale navmesh; a cancel changes nothing.
+            self.assertFails(nl.STATUS_INVALID_ARGUMENT, "nl_navmesh_generate_cross_links", world.generate_cross_links,
+                             ledge, ledge, 0.25, settings)
+            self.assertFails(nl.STATUS_INVALID_ARGUMENT, "tolerance", world.generate_cross_links, ledge, deck, -1, settings)
+            wide = world.add_navmesh(PLATFORM_TOP, [0, 1, 2, 3], [4])  # the default radius, 0.6
+            self.assertFails(nl.STATUS_INVALID_ARGUMENT, "bodies", world.generate_cross_links, ledge, wide, 0.25, settings)
+            world.remove_navmesh(wide)
+            self.assertFails(nl.STATUS_INVALID_HANDLE, "second", world.generate_cross_links, ledge, wide, 0.25, settings)
+            before = [l.id for l in world.links(ledge)]
+            self.assertFails(nl.STATUS_CANCELLED, "", world.generate_cross_links, ledge, deck, 0.25, settings,
+                             progress=lambda f, stage: False)
+            self.assertEqual([l.id for l in world.links(ledge)], before)
 
 
 class LinkTest(NavLinkTestCase):

@@ -149,6 +149,34 @@ nl_link_generation_report to_c(const nl::LinkGenerationReport& r) {
 }
 
 // The host's progress callback as the core's (no callback: never cancel).
+// The caller's settings (NULL: the defaults), every field read from the copy: a caller's struct holds
+// only `size` bytes.
+nl_link_settings read_settings(const nl_link_settings* settings) {
+    const nl_link_settings given =
+        settings ? nl::capi::read_growable(*settings, nl_default_link_settings(), kSettingsFirstSize, "settings")
+                 : nl_default_link_settings();
+    if (!given.plugin_settings_json && given.plugin_settings_json_length != 0)
+        fail(ErrorCode::InvalidArgument, "settings->plugin_settings_json is null but settings->plugin_settings_json_length is ",
+             given.plugin_settings_json_length);
+    return given;
+}
+
+nl::LinkSettings core_settings_of(const nl_link_settings& given) {
+    return nl::naming_fields("settings->", [&] {
+        nl::LinkSettings s = to_core(given);
+        nl::validate(s);
+        return s;
+    });
+}
+
+nl::PluginSettings plugin_settings_of(const nl_link_settings& given) {
+    return nl::naming_fields("settings->", [&] {
+        return nl::plugin_settings_from_json(given.plugin_settings_json
+                                                 ? std::string_view(given.plugin_settings_json, given.plugin_settings_json_length)
+                                                 : std::string_view());
+    });
+}
+
 auto progress_of(nl_progress_fn* progress, void* user) {
     return [progress, user](float fraction, const char* stage) { return !progress || progress(user, fraction, stage) != 0; };
 }
@@ -296,26 +324,36 @@ NL_API nl_status nl_navmesh_generate_links(nl_world* world, nl_navmesh_id navmes
     return guarded("nl_navmesh_generate_links", world, [&] {
         nl::World& w = deref(world);
         w.navmeshes().navmesh(to_handle(navmesh));  // a stale id first, before the settings
-        // Every field is read from the copy: a caller's struct holds only `size` bytes.
-        const nl_link_settings given =
-            settings ? nl::capi::read_growable(*settings, nl_default_link_settings(), kSettingsFirstSize, "settings")
-                     : nl_default_link_settings();
-        if (!given.plugin_settings_json && given.plugin_settings_json_length != 0)
-            fail(ErrorCode::InvalidArgument, "settings->plugin_settings_json is null but settings->plugin_settings_json_length is ",
-                 given.plugin_settings_json_length);
+        const nl_link_settings given = read_settings(settings);
         if (out_report) nl::capi::check_growable_output(out_report, kReportFirstSize, "out_report");
-        const nl::LinkSettings core_settings = nl::naming_fields("settings->", [&] {
-            nl::LinkSettings s = to_core(given);
-            nl::validate(s);
-            return s;
-        });
-        nl::PluginSettings plugin_settings = nl::naming_fields("settings->", [&] {
-            return nl::plugin_settings_from_json(given.plugin_settings_json
-                                                     ? std::string_view(given.plugin_settings_json, given.plugin_settings_json_length)
-                                                     : std::string_view());
-        });
+        const nl::LinkSettings core_settings = core_settings_of(given);
+        nl::PluginSettings plugin_settings = plugin_settings_of(given);
         const nl::LinkGenerationReport report =
             w.generate_links(to_handle(navmesh), core_settings, std::move(plugin_settings), progress_of(progress, user));
+        if (out_report) nl::capi::write_growable(out_report, to_c(report), kReportFirstSize, "out_report");
+    });
+}
+
+NL_API nl_status nl_navmesh_generate_cross_links(nl_world* world, nl_navmesh_id first, nl_navmesh_id second, float tolerance,
+                                                 const nl_link_settings* settings, nl_progress_fn* progress, void* user,
+                                                 nl_link_generation_report* out_report) {
+    return guarded("nl_navmesh_generate_cross_links", world, [&] {
+        nl::World& w = deref(world);
+        // Stale ids first, before the settings, each named.
+        for (const auto& [id, name] : {std::pair{first, "first"}, std::pair{second, "second"}}) {
+            try {
+                w.navmeshes().navmesh(to_handle(id));
+            } catch (const nl::Error& e) {
+                if (e.code() != ErrorCode::InvalidHandle) throw;
+                fail(ErrorCode::InvalidHandle, name, ": ", e.what());
+            }
+        }
+        const nl_link_settings given = read_settings(settings);
+        if (out_report) nl::capi::check_growable_output(out_report, kReportFirstSize, "out_report");
+        const nl::LinkSettings core_settings = core_settings_of(given);
+        plugin_settings_of(given);  // checked as for any generation; link-kind plugins link within one navmesh
+        const nl::LinkGenerationReport report =
+            w.generate_cross_links(to_handle(first), to_handle(second), core_settings, tolerance, progress_of(progress, user));
         if (out_report) nl::capi::write_growable(out_report, to_c(report), kReportFirstSize, "out_report");
     });
 }

@@ -17,6 +17,7 @@ namespace nl {
 namespace {
 
 constexpr float kSameEnd = 0.01f;  // a link end within this of where the path has it has not moved
+constexpr float kMissedLanding = 2.0f;  // how far from a moving surface a flight may end and still land on it
 
 void check_positive(float value, const char* field) {
     if (!(value > 0.0f) || !std::isfinite(value)) fail_field(ErrorCode::InvalidArgument, field, " is ", value, " (must be finite and > 0)");
@@ -603,9 +604,11 @@ void Agents::land_across(AgentBody& a, const std::shared_ptr<const PathGraph>& g
     const SurfacePose pose = table.find(navmesh)->pose;
     const Vec3 feet = pose.surface_point(a.position);
     const float across = std::max(0.5f, a.def.capabilities.radius);
-    const NavPoint on = graph->navmesh().find_nearest(feet, Vec3(across, 2.0f, across));
+    NavPoint on = graph->navmesh().find_nearest(feet, Vec3(across, 2.0f, across));
+    // The surface changed its motion during the flight (a platform that left as the body jumped):
+    // the flight was aimed by its motion at take-off, so the body lands on its nearest point.
+    if (!on.found) on = graph->navmesh().find_nearest(feet, Vec3(kMissedLanding, 2.0f, kMissedLanding));
     if (!on.found) {
-        // The surface was not where the flight was aimed (it changed its motion meanwhile).
         a.fail(AgentReason::LinkGone);
         return;
     }

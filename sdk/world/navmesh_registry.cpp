@@ -157,22 +157,41 @@ std::shared_ptr<const LinkSnapshot> NavMeshRegistry::links(Handle navmesh) const
     return snapshot_of(entry(navmesh));
 }
 
-void NavMeshRegistry::erase_links(Entry& e, bool generated_only) {
+template <typename Goes>
+void NavMeshRegistry::erase_links(Entry& e, Goes&& goes) {
     std::vector<Handle> kept;
     kept.reserve(e.link_ids.size());  // nothing below may throw once links are being erased
     for (Handle id : e.link_ids) {
-        if (generated_only && !links_.find(id)->link.generated) kept.push_back(id);
+        if (!goes(links_.find(id)->link)) kept.push_back(id);
         else links_.erase(id);
     }
     e.link_ids = std::move(kept);
     e.snapshot.reset();
 }
 
+namespace {
+
+bool any_link(const Link&) { return true; }
+bool generated(const Link& l) { return l.generated; }
+// What a generation of the navmesh's own links replaces: its cross links come from generate_cross_links.
+bool generated_within(const Link& l) { return l.generated && !l.crosses(); }
+
+}  // namespace
+
+void NavMeshRegistry::store_cross_links(Handle navmesh, Handle landing, FunctionRef<bool(const Link&)> replaced,
+                                        const std::vector<Link>& links) {
+    std::unique_lock lock(mutex_);
+    Entry& e = entry(navmesh);
+    erase_links(e, [&](const Link& l) { return l.generated && l.landing_navmesh == landing && replaced(l); });
+    e.link_ids.reserve(e.link_ids.size() + links.size());
+    for (const Link& l : links) insert_link(navmesh, e, l);
+}
+
 uint32_t NavMeshRegistry::remove_generated_links(Handle navmesh) {
     std::unique_lock lock(mutex_);
     Entry& e = entry(navmesh);
     const size_t before = e.link_ids.size();
-    erase_links(e, true);
+    erase_links(e, generated);
     e.last = LastGeneration{};
     return static_cast<uint32_t>(before - e.link_ids.size());
 }
@@ -180,7 +199,7 @@ uint32_t NavMeshRegistry::remove_generated_links(Handle navmesh) {
 void NavMeshRegistry::replace_links(Handle navmesh, const std::vector<Link>& links) {
     std::unique_lock lock(mutex_);
     Entry& e = entry(navmesh);
-    erase_links(e, false);
+    erase_links(e, any_link);
     e.link_ids.reserve(links.size());
     for (const Link& l : links) insert_link(navmesh, e, l);
     e.last = LastGeneration{};
@@ -206,7 +225,7 @@ LastGeneration NavMeshRegistry::last_generation(Handle navmesh) const {
 void NavMeshRegistry::store_generation(Handle navmesh, LastGeneration last, const std::vector<Link>& generated) {
     std::unique_lock lock(mutex_);
     Entry& e = entry(navmesh);  // a navmesh removed meanwhile keeps nothing
-    erase_links(e, true);
+    erase_links(e, generated_within);
     e.link_ids.reserve(e.link_ids.size() + generated.size());
     for (Link l : generated) {
         l.generated = true;
@@ -219,7 +238,7 @@ bool NavMeshRegistry::store_update(Handle navmesh, const LinkGeneration* from, c
     std::unique_lock lock(mutex_);
     Entry* e = navmeshes_.find(navmesh);
     if (!e || e->last.generation.get() != from) return false;
-    erase_links(*e, true);
+    erase_links(*e, generated_within);
     e->link_ids.reserve(e->link_ids.size() + generated.size());
     for (Link l : generated) {
         l.generated = true;

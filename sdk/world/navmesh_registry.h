@@ -20,6 +20,7 @@
 #include "navmesh/navmesh.h"
 #include "navmesh/surface_pose.h"
 #include "path/path_graph.h"
+#include "util/function_ref.h"
 #include "util/handle.h"
 #include "util/shared_mutex.h"
 #include "world/plugin_settings.h"
@@ -92,6 +93,12 @@ public:
     // forgotten by a removal or a load meanwhile); returns whether it was.
     bool store_update(Handle navmesh, const LinkGeneration* from, const std::vector<Link>& generated);
 
+    // Replaces the generated cross links from `navmesh` to `landing` that `replaced` picks with
+    // `links` (generated cross links from one to the other); every other link stays. Throws
+    // InvalidHandle for `navmesh`.
+    void store_cross_links(Handle navmesh, Handle landing, FunctionRef<bool(const Link&)> replaced,
+                           const std::vector<Link>& links);
+
     // The graph searches read: the navmesh and its links as they are now, built once per snapshot.
     std::shared_ptr<const PathGraph> path_graph(Handle navmesh) const;
 
@@ -116,7 +123,9 @@ private:
     const Entry& entry(Handle navmesh) const;
     // Builds the entry's snapshot if an edit made it stale; needs the lock held alone.
     const std::shared_ptr<const LinkSnapshot>& snapshot_of(const Entry& e) const;
-    void erase_links(Entry& e, bool generated_only);
+    // Erases the entry's links that `goes` says go (by the link), keeping the order of the rest.
+    template <typename Goes>
+    void erase_links(Entry& e, Goes&& goes);
     Handle insert_link(Handle navmesh, Entry& e, const Link& link);
 
     mutable SharedMutex mutex_;

@@ -111,6 +111,18 @@ public:
     // from inside another generation's callbacks), and Internal naming a plugin that failed.
     LinkGenerationReport generate_links(Handle navmesh, const LinkSettings& settings, PluginSettings plugin_settings,
                                         GenerationProgress progress);
+    // Generates the jumps and drops between two navmeshes (either may ride a moving mesh) for where
+    // they stand now, each way, as cross links that hold within `tolerance` of this placement, and
+    // replaces the generated cross links between the two that hold now (made for this placement)
+    // with them; those made for another placement (a platform's other stop) and the navmeshes' own
+    // links stay. Only the
+    // polygons within a link's reach of the other navmesh are looked at, so a platform's links cost
+    // what its neighbourhood does: call it when a surface comes to rest, or has moved beyond the
+    // tolerance, as often as the host likes. Both navmeshes must be made for the same body. Throws
+    // InvalidHandle, InvalidArgument (one navmesh twice, another body, a bad tolerance), Cancelled
+    // (nothing changes). Two calls for the same pair at once store one's result or the other's, whole.
+    LinkGenerationReport generate_cross_links(Handle first, Handle second, const LinkSettings& settings, float tolerance,
+                                              GenerationProgress progress);
     // Generates again what level geometry inside `box` can have changed, continuing the last
     // generation (the plugins' links are proposed again in full). Throws InvalidArgument for a box
     // not finite, beyond the coordinate limit or inverted, NotFound when there is no generation to

@@ -2427,8 +2427,13 @@ static const float k_box_min[3] = {-3, -2, -6}, k_box_max[3] = {3, 2, 6};
 static const float* g_box_min = k_box_min;
 static const float* g_box_max = k_box_max;
 static int g_update;
+/* nl_navmesh_generate_cross_links between `navmesh` and A's lift navmesh (the same body's). */
+static int g_cross;
+static float g_tolerance = 0.25f;
 static nl_status generate_call(nl_world* world, nl_navmesh_id navmesh, const nl_link_settings* settings,
                                nl_progress_fn* progress, void* user, nl_link_generation_report* report) {
+    if (g_cross)
+        return nl_navmesh_generate_cross_links(world, navmesh, A.host_navmesh, g_tolerance, settings, progress, user, report);
     return g_update ? nl_navmesh_update_links_in_box(world, navmesh, g_box_min, g_box_max, progress, user, report)
                     : nl_navmesh_generate_links(world, navmesh, settings, progress, user, report);
 }
@@ -2479,9 +2484,10 @@ static int32_t note_user(void* user, float fraction, const char* stage) {
     return 1;
 }
 
-/* What both share: the ids, the progress callback and its user, the report. */
-static void generation_cases(const char* function) {
-    const id_function f = {function, "navmesh", "out_report", sizeof(nl_link_generation_report), 1, 0, generate_id_call, 1};
+/* What they share: the ids (the navmesh's parameter named `param`), the progress callback and its
+   user, the report. */
+static void generation_cases_of(const char* function, const char* param) {
+    const id_function f = {function, param, "out_report", sizeof(nl_link_generation_report), 1, 0, generate_id_call, 1};
     int calls = 0;
     id_cases(&f, RAW(A.navmesh), RAW(A.stale_navmesh), RAW(B.navmesh));
     CASE(function, "progress cancels (returns 0 at once)") {
@@ -2498,6 +2504,7 @@ static void generation_cases(const char* function) {
     CASE(function, "out_report NULL (allowed)") { generate_accepts(NULL); }
     out_sizes(function, "out_report", sizeof(nl_link_generation_report), generate_into);
 }
+static void generation_cases(const char* function) { generation_cases_of(function, "navmesh"); }
 
 static const def_case k_generation_settings[] = {
     {"settings->drop_angle_count huge", INVALID, "drop_angle_count", {SET_U32(nl_link_settings, drop_angle_count, UINT32_MAX)}},
@@ -2530,6 +2537,50 @@ static void group_navmesh_generate_links(void) {
               sizeof k_generation_settings / sizeof *k_generation_settings, generate_refuses, generate_accepts);
     bad_float_fields("nl_navmesh_generate_links", "settings", &valid, sizeof valid, k_link_settings_floats,
                      sizeof k_link_settings_floats / sizeof *k_link_settings_floats, generate_refuses);
+}
+
+/* nl_navmesh_generate_cross_links with A's navmesh first and `id` second. */
+static nl_status cross_second_call(nl_world* w, raw_id id, void* out) {
+    return nl_navmesh_generate_cross_links(w, A.navmesh, AS(nl_navmesh_id, id), g_tolerance, NULL, NULL, NULL,
+                                           (nl_link_generation_report*)out);
+}
+
+static void group_navmesh_generate_cross_links(void) {
+    static const char* const function = "nl_navmesh_generate_cross_links";
+    const id_function second = {function, "second", "out_report", sizeof(nl_link_generation_report), 1, 0, cross_second_call, 1};
+    const nl_link_settings valid = nl_default_link_settings();
+    size_t v;
+    g_update = 0;
+    g_cross = 1;
+    generation_cases_of(function, "first");
+    id_cases(&second, RAW(A.host_navmesh), RAW(A.stale_navmesh), RAW(B.navmesh));
+    CASE(function, "settings NULL (allowed: defaults)") { generate_accepts(NULL); }
+    def_sizes(function, "settings", &valid, sizeof valid, generate_refuses, generate_accepts);
+    def_cases(function, &valid, sizeof valid, k_generation_settings, sizeof k_generation_settings / sizeof *k_generation_settings,
+              generate_refuses, generate_accepts);
+    bad_float_fields(function, "settings", &valid, sizeof valid, k_link_settings_floats,
+                     sizeof k_link_settings_floats / sizeof *k_link_settings_floats, generate_refuses);
+    for (v = 0; v < sizeof k_bad_floats / sizeof *k_bad_floats; ++v) {
+        CASE(function, "tolerance %s", k_bad_floats[v].name) {
+            g_tolerance = k_bad_floats[v].value;
+            generate_refuses(NULL, NL_STATUS_INVALID_ARGUMENT, "tolerance");
+            g_tolerance = 0.25f;
+        }
+    }
+    CASE(function, "tolerance negative") {
+        g_tolerance = -1.0f;
+        generate_refuses(NULL, NL_STATUS_INVALID_ARGUMENT, "tolerance");
+        g_tolerance = 0.25f;
+    }
+    CASE(function, "second the same as first") {
+        nl_link_generation_report report;
+        fill(&report, sizeof report);
+        report.size = sizeof report;
+        EXPECT_FAILURE(A.world, nl_navmesh_generate_cross_links(A.world, A.navmesh, A.navmesh, 0.25f, NULL, NULL, NULL, &report),
+                       NL_STATUS_INVALID_ARGUMENT, "one");
+        EXPECT_UNTOUCHED_AFTER_SIZE(&report, sizeof report, "out_report");
+    }
+    g_cross = 0;
 }
 
 static void group_navmesh_update_links_in_box(void) {
@@ -4059,6 +4110,7 @@ static const hostile_group k_groups[] = {
     {"navmesh_remove_generated_links", group_navmesh_remove_generated_links},
     {"link_settings_from_json", group_link_settings_from_json},
     {"navmesh_generate_links", group_navmesh_generate_links},
+    {"navmesh_generate_cross_links", group_navmesh_generate_cross_links},
     {"navmesh_update_links_in_box", group_navmesh_update_links_in_box},
     {"navmesh_save_links_json", group_navmesh_save_links_json},
     {"navmesh_load_links_json", group_navmesh_load_links_json},

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core_errors.h"
+#include "core_world.h"
 #include "generated_mesh.h"
 #include "level_generator.h"
 #include "links/link_placement.h"
@@ -264,14 +265,15 @@ struct Ferry {
     std::unique_ptr<nl::World> world;
     Handle ground, shuttle, ledges, deck, board, leave;
 
-    static constexpr float kNearDock = 8.0f, kFarDock = 14.0f;  // the shuttle's centre, docked
+    static constexpr float kNearDock = 8.0f, kFarDock = 14.0f;  // the shuttle's centre, docked flush
+    float near_dock = kNearDock, far_dock = kFarDock;
     // Docked 3 s, 4 s across, docked 3 s, 4 s back.
-    static float shuttle_x(double t) {
+    float shuttle_x(double t) const {
         const double u = std::fmod(t, 14.0);
-        if (u < 3.0) return kNearDock;
-        if (u < 7.0) return float(kNearDock + (kFarDock - kNearDock) * (u - 3.0) / 4.0);
-        if (u < 10.0) return kFarDock;
-        return float(kFarDock - (kFarDock - kNearDock) * (u - 10.0) / 4.0);
+        if (u < 3.0) return near_dock;
+        if (u < 7.0) return float(near_dock + (far_dock - near_dock) * (u - 3.0) / 4.0);
+        if (u < 10.0) return far_dock;
+        return float(far_dock - (far_dock - near_dock) * (u - 10.0) / 4.0);
     }
     static Transform at(float x) {
         Transform t = Transform::Identity();
@@ -279,7 +281,10 @@ struct Ferry {
         return t;
     }
 
-    explicit Ferry(int workers = 1) {
+    // `gangways`: the two host links; without them, the docks may stand off the ledges (`near`, `far`)
+    // so that the generator finds jumps across the gaps.
+    explicit Ferry(bool gangways = true, float near = kNearDock, float far = kFarDock, int workers = 1)
+        : near_dock(near), far_dock(far) {
         nl::WorldSettings settings;
         settings.worker_count = workers;
         world = std::make_unique<nl::World>(std::move(settings));
@@ -302,9 +307,9 @@ struct Ferry {
         top.polygon_sizes = {4};
         top.agent.radius = 0.3f;
         deck = world->add_navmesh(top, shuttle);
-        leave = add_cross(deck, Vec3(15.4f, 0, 3), ledges, Vec3(16.6f, 0, 3));  // placed docked at the far ledge
-        world->set_mesh_transform(shuttle, at(kNearDock));
-        board = add_cross(ledges, Vec3(5.6f, 0, 3), deck, Vec3(6.6f, 0, 3));
+        if (gangways) leave = add_cross(deck, Vec3(15.4f, 0, 3), ledges, Vec3(16.6f, 0, 3));  // placed docked at the far ledge
+        world->set_mesh_transform(shuttle, at(near_dock));
+        if (gangways) board = add_cross(ledges, Vec3(5.6f, 0, 3), deck, Vec3(6.6f, 0, 3));
     }
 
     Handle add_cross(Handle from, const Vec3& start, Handle to, const Vec3& end) {
@@ -340,7 +345,7 @@ TEST_CASE("a ferry carries every agent across the chasm: they wait at the take-o
     double t = 4.0;  // the shuttle has just left: the first to reach the dock waits for it
     for (int k = 0; k < 90 * 30 && arrived < int(agents.size()); ++k) {
         t += dt;
-        f.world->set_mesh_transform(f.shuttle, Ferry::at(Ferry::shuttle_x(t)));
+        f.world->set_mesh_transform(f.shuttle, Ferry::at(f.shuttle_x(t)));
         f.world->step(float(dt));
         for (const nl::AgentEvent& e : f.world->agents().events()) {
             const size_t i = size_t(std::find(agents.begin(), agents.end(), e.agent) - agents.begin());
@@ -414,4 +419,91 @@ TEST_CASE("a jump onto a moving surface aims where the landing will be: the body
         CHECK(f.world->agents().info(jumper).state != AgentState::Failed);
     }
     CHECK(landed);
+}
+
+TEST_CASE("links between a ledge and a platform are generated for where the platform stands, kept per stop, and ferry jumpers") {
+    // The shuttle docks 1 m off each ledge: a gap a jumper crosses, and the generator proves.
+    Ferry f(false, 9.0f, 13.0f);
+    nl::LinkSettings settings;
+    settings.max_jump_gap = 2.0f;
+    auto cross_count = [&](Handle from, Handle to) {
+        size_t n = 0;
+        for (const nl::StoredLink& s : *f.world->navmeshes().links(from)) n += s.link.crosses() && s.link.landing_navmesh == to;
+        return n;
+    };
+    auto holding = [&](Handle from) {
+        size_t n = 0;
+        for (const nl::StoredLink& s : *f.world->navmeshes().links(from)) n += s.link.crosses() && f.world->link_holds(from, s.link);
+        return n;
+    };
+    const nl::LinkGenerationReport near = f.world->generate_cross_links(f.ledges, f.deck, settings, 0.25f, nl::test::keep_going);
+    const size_t on_near = cross_count(f.ledges, f.deck), off_near = cross_count(f.deck, f.ledges);
+    MESSAGE("docked at the near ledge: " << on_near << " links onto the shuttle, " << off_near << " off it ("
+                                         << near.jump_links << " jumps, " << near.drop_links << " drops)");
+    CHECK(on_near > 0);
+    CHECK(off_near > 0);
+    CHECK(holding(f.ledges) == on_near);
+    for (const nl::StoredLink& s : *f.world->navmeshes().links(f.ledges)) {
+        // Every one from the near ledge's edge to the shuttle's near edge, across the 1 m gap.
+        const nl::Link w = f.world->in_world(f.ledges, s.link);
+        CHECK(w.start.x() == doctest::Approx(6.0f).epsilon(0.1));
+        CHECK(w.end.x() == doctest::Approx(7.0f).epsilon(0.1));
+        CHECK(s.link.generated);
+    }
+    // Again at the same stop: replaced, not doubled.
+    f.world->generate_cross_links(f.ledges, f.deck, settings, 0.25f, nl::test::keep_going);
+    CHECK(cross_count(f.ledges, f.deck) == on_near);
+    // Out in the chasm (3 m from either ledge, beyond a 2 m jump): nothing holds, nothing is found,
+    // and the near stop's links stay for when it is back.
+    f.world->set_mesh_transform(f.shuttle, Ferry::at(11.0f));
+    CHECK(holding(f.ledges) == 0);
+    f.world->generate_cross_links(f.ledges, f.deck, settings, 0.25f, nl::test::keep_going);
+    CHECK(cross_count(f.ledges, f.deck) == on_near);
+    CHECK(cross_count(f.deck, f.ledges) == off_near);
+    // At the far stop: links of its own, beside the near stop's.
+    f.world->set_mesh_transform(f.shuttle, Ferry::at(13.0f));
+    f.world->generate_cross_links(f.ledges, f.deck, settings, 0.25f, nl::test::keep_going);
+    CHECK(cross_count(f.deck, f.ledges) > off_near);
+    // The ledge's own generation keeps the cross links.
+    f.world->generate_links(f.ledges, settings, {}, nl::test::keep_going);
+    CHECK(cross_count(f.deck, f.ledges) > off_near);
+    CHECK(cross_count(f.ledges, f.deck) >= on_near);
+
+    // Jumpers ride the generated links across.
+    const Vec3 goal(20, 0, 3);
+    std::vector<Handle> agents;
+    for (float z : {2.0f, 4.0f}) {
+        nl::AgentDef def;
+        def.navmesh = f.ledges;
+        def.position = Vec3(2, 0, z);
+        def.capabilities.radius = 0.3f;
+        def.capabilities.max_jump_distance = 2.0f;
+        def.capabilities.max_jump_height = 1.0f;
+        def.capabilities.max_drop_height = 1.0f;
+        agents.push_back(f.world->agents().add(f.world->navmeshes(), def));
+        f.world->agents().set_destination(f.world->navmeshes(), agents.back(), goal);
+    }
+    const double dt = 1.0 / 30.0;
+    int arrived = 0, inside = 0;
+    double t = 4.0;
+    for (int k = 0; k < 90 * 30 && arrived < int(agents.size()); ++k) {
+        t += dt;
+        f.world->set_mesh_transform(f.shuttle, Ferry::at(f.shuttle_x(t)));
+        f.world->step(float(dt));
+        for (const nl::AgentEvent& e : f.world->agents().events()) {
+            arrived += e.kind == nl::AgentEventKind::Arrived;
+            CHECK_MESSAGE(e.kind != nl::AgentEventKind::Failed, "failed, reason ", int(e.reason));
+        }
+        std::vector<nl::Segment> bodies;
+        for (Handle a : agents) {
+            const Vec3 p = f.world->agents().info(a).position;
+            bodies.push_back({p + Vec3(0, 0.05f, 0), p + Vec3(0, 1.8f, 0)});
+        }
+        std::vector<uint8_t> blocked(bodies.size());
+        f.world->level().segments_blocked(bodies.data(), uint32_t(bodies.size()), blocked.data());
+        for (uint8_t b : blocked) inside += b;
+    }
+    MESSAGE("jumpers arrived: " << arrived << " of " << agents.size() << " by t = " << t << " s");
+    CHECK(arrived == int(agents.size()));
+    CHECK(inside == 0);
 }

@@ -121,6 +121,27 @@ namespace NavLink
             return report;
         }
 
+        /// <summary>Generates the jump and drop links between two navmeshes (a ledge and a platform; either
+        /// may ride a moving mesh) for where they stand now, both ways, as cross links (Link.LandingNavmesh)
+        /// that hold while the two stay placed so, within tolerance metres (0.25 is a good start). They
+        /// replace the generated cross links between the two that hold now; those made for another placement
+        /// (a platform's other stop) stay, and so do each navmesh's own links. Both navmeshes must be made
+        /// for the same agent radius and height. settings and progress as for GenerateLinks (no plugin kinds
+        /// run here); the report's JumpLinks and DropLinks count the cross links made. InvalidArgument for
+        /// the same navmesh twice, different bodies, a bad tolerance or setting; InvalidHandle for either
+        /// navmesh stale; Cancelled (nothing changed).</summary>
+        public unsafe LinkGenerationReport GenerateCrossLinks(NavmeshId first, NavmeshId second, float tolerance,
+                                                              LinkSettings? settings = null, ProgressHandler progress = null)
+        {
+            LinkSettings s = settings ?? Native.nl_default_link_settings();
+            LinkGenerationReport report = Native.nl_link_generation_report_init();
+            using (var scope = new ProgressScope(progress))
+            using (var w = Enter())
+                scope.Check(Native.nl_navmesh_generate_cross_links(w.Pointer, first, second, tolerance, &s, scope.Function,
+                                                                   scope.User, &report));
+            return report;
+        }
+
         /// <summary>Regenerates only what geometry changes inside [boxMin, boxMax] can have affected.</summary>
         public unsafe LinkGenerationReport UpdateLinksInBox(NavmeshId navmesh, Vec3 boxMin, Vec3 boxMax, ProgressHandler progress = null)
         {

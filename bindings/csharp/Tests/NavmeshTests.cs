@@ -5,7 +5,7 @@ using NavLink;
 namespace NavLink.Tests
 {
     // Navmeshes built by Recast and handed over by the host; point location; a navmesh that rides a moving mesh,
-    // and a cross link onto it.
+    // a cross link onto it, and cross links generated between it and a ledge.
     internal static class NavmeshTests
     {
         // The moving surface: an 8 x 4 m movable box (top y = 0 in its own space) carrying a 7.2 x 3.2 m navmesh
@@ -25,6 +25,16 @@ namespace NavLink.Tests
         private static readonly float[] DeckAway = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 2, 0, 0, 1};
         private static readonly Vec3 CrossStart = new Vec3(-0.4f, 0, 0), CrossEnd = new Vec3(1.6f, 0, 0),
                                      CrossEndAway = new Vec3(3.6f, 0, 0);
+
+        // Generated cross links (tests/core/surface_tests.cpp's ferry): a static 6 x 6 m ledge (box x in [0, 6], z in
+        // [0, 6], top y = 0) whose navmesh is its top eroded 0.3 m, and a 4 x 4 m movable box (top y = 0 in its own
+        // space, centred on its origin) carrying its top eroded 0.3 m as a navmesh, placed 1 m off the ledge's edge
+        // (centre x = 9, z = 3), then 3 m off (x = 11). Both navmeshes for radius 0.3; jumps up to 2 m across.
+        private static readonly float[] LedgeTop = {0.3f, 0, 0.3f, 0.3f, 0, 5.7f, 5.7f, 0, 5.7f, 5.7f, 0, 0.3f};
+        private static readonly float[] PlatformTop = {-1.7f, 0, -1.7f, -1.7f, 0, 1.7f, 1.7f, 0, 1.7f, 1.7f, 0, -1.7f};
+
+        /// <summary>The platform's transform: its centre at (x, 0, 3) (column-major).</summary>
+        private static float[] PlatformAt(float x) { return new float[] {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, x, 0, 3, 1}; }
 
         private static NavmeshInput Quad(float[] vertices, MeshId surface = default(MeshId))
         {
@@ -272,6 +282,79 @@ namespace NavLink.Tests
                     check.That(world.GetLinks(ledge).Length == 2, "nothing refused was added");
                     check.Throws(StatusBits.InvalidArgument, "cross link", () => world.SaveLinksJson(ledge),
                                  "saving cross links");
+                }
+            });
+
+            check.Run("cross links generated for where a platform stands", () =>
+            {
+                using (var world = new World())
+                {
+                    TestLevels.AddBox(world, 0, -1, 0, 6, 0, 6);
+                    MeshId platform = TestLevels.AddBox(world, -2, -0.5f, -2, 2, 0, 2, MeshFlags.Movable, PlatformAt(9));
+                    AgentType agent = World.DefaultAgentType();
+                    agent.Radius = 0.3f;
+                    NavmeshInput ledgeInput = Quad(LedgeTop), deckInput = Quad(PlatformTop, platform);
+                    ledgeInput.Agent = deckInput.Agent = agent;
+                    NavmeshId ledge = world.AddNavmesh(ledgeInput), deck = world.AddNavmesh(deckInput);
+                    LinkSettings settings = World.DefaultLinkSettings();
+                    settings.MaxJumpGap = 2.0f;
+                    Func<NavmeshId, NavmeshId, Link[]> crossing =
+                        (navmesh, landing) => world.GetLinks(navmesh).Where(l => l.LandingNavmesh.Equals(landing)).ToArray();
+                    Func<Link[], LinkId[]> ids = links => links.Select(l => l.Id).ToArray();
+
+                    float lastFraction = -1;
+                    LinkGenerationReport report = world.GenerateCrossLinks(ledge, deck, 0.25f, settings, (fraction, stage) =>
+                    {
+                        lastFraction = fraction;
+                        return true;
+                    });
+                    check.That(lastFraction == 1.0f, "progress reported to the end: " + lastFraction);
+                    Link[] onto = crossing(ledge, deck), off = crossing(deck, ledge);
+                    check.That(report.JumpLinks > 0, report.JumpLinks + " jumps, " + report.DropLinks + " drops");
+                    check.That(onto.Length > 0, "links from the ledge onto the platform");
+                    check.That(off.Length > 0, "links from the platform onto the ledge");
+                    check.That(report.JumpLinks + report.DropLinks == onto.Length + off.Length,
+                               "the report counts them: " + onto.Length + " + " + off.Length + " listed");
+                    check.That(world.GetLinks(ledge).Length + world.GetLinks(deck).Length == onto.Length + off.Length,
+                               "no links within either navmesh");
+                    check.That(onto.Concat(off).All(l => l.Generated == 1 && l.Holds == 1 && l.Bidirectional == 0 &&
+                                                         l.Tolerance == 0.25f && l.EndPolygon != Limits.NoPolygon),
+                               "generated one-way cross links with tolerance 0.25 that hold");
+                    // In the world: from the ledge's rim (x 5.7) to the platform's (x 7.3), and back.
+                    check.That(onto.All(l => l.Start.X > 5.5f && l.Start.X < 6 && l.End.X > 7 && l.End.X < 7.5f) &&
+                               off.All(l => l.Start.X > 7 && l.Start.X < 7.5f && l.End.X > 5.5f && l.End.X < 6),
+                               "across the 1 m gap, rim to rim");
+
+                    // 3 m off the ledge: nothing holds; beyond a 2 m jump nothing is found, and the links made 1 m off stay.
+                    world.SetMeshTransform(platform, PlatformAt(11));
+                    check.That(crossing(ledge, deck).Concat(crossing(deck, ledge)).All(l => l.Holds == 0), "none holds 3 m off");
+                    report = world.GenerateCrossLinks(ledge, deck, 0.25f, settings);
+                    check.That(report.JumpLinks == 0 && report.DropLinks == 0, "none found 3 m off: " + report.JumpLinks);
+                    check.That(ids(crossing(ledge, deck)).SequenceEqual(ids(onto)) && ids(crossing(deck, ledge)).SequenceEqual(ids(off)),
+                               "the links made 1 m off are kept for when it is back");
+
+                    // Back 1 m off: they hold again, and generating there again replaces them (not doubled).
+                    world.SetMeshTransform(platform, PlatformAt(9));
+                    check.That(crossing(ledge, deck).Concat(crossing(deck, ledge)).All(l => l.Holds == 1), "they hold again");
+                    world.GenerateCrossLinks(ledge, deck, 0.25f, settings);
+                    check.That(crossing(ledge, deck).Length == onto.Length && crossing(deck, ledge).Length == off.Length,
+                               "generated again at the same stop: replaced, not doubled");
+
+                    // Refused: the same navmesh twice, a bad tolerance, another body, a stale navmesh; a cancel changes nothing.
+                    check.Throws(StatusBits.InvalidArgument, "nl_navmesh_generate_cross_links",
+                                 () => world.GenerateCrossLinks(ledge, ledge, 0.25f, settings), "the same navmesh twice");
+                    check.Throws(StatusBits.InvalidArgument, "tolerance", () => world.GenerateCrossLinks(ledge, deck, -1, settings),
+                                 "a negative tolerance");
+                    NavmeshId wide = world.AddNavmesh(Quad(PlatformTop));  // the default radius, 0.6
+                    check.Throws(StatusBits.InvalidArgument, "bodies", () => world.GenerateCrossLinks(ledge, wide, 0.25f, settings),
+                                 "navmeshes for different bodies");
+                    world.RemoveNavmesh(wide);
+                    check.Throws(StatusBits.InvalidHandle, "second", () => world.GenerateCrossLinks(ledge, wide, 0.25f, settings),
+                                 "a removed navmesh");
+                    LinkId[] before = ids(world.GetLinks(ledge));
+                    check.Throws(StatusBits.Cancelled, "", () => world.GenerateCrossLinks(ledge, deck, 0.25f, settings, (f, s) => false),
+                                 "a cancelled generation");
+                    check.That(ids(world.GetLinks(ledge)).SequenceEqual(before), "a cancelled generation changes nothing");
                 }
             });
         }

@@ -893,6 +893,25 @@ typedef int32_t nl_progress_fn(void* user, float fraction, const char* stage);
 NL_API nl_status nl_navmesh_generate_links(nl_world* world, nl_navmesh_id navmesh, const nl_link_settings* settings,
                                            nl_progress_fn* progress, void* user, nl_link_generation_report* out_report);
 
+/** Generates the jump and drop links between two navmeshes (a ledge and a platform; either may ride
+ *  a moving mesh, nl_navmesh_def.surface) for where they stand now, both ways, as cross links
+ *  (nl_link_def.landing_navmesh) that hold while the two stay placed so, within `tolerance` metres
+ *  (0.25 is a good start). They replace the generated cross links between the two that hold now
+ *  (made for this placement); those made for another placement (the platform's other stop) stay for
+ *  when it is back, and each navmesh's own links stay. Only the polygons within a link's reach of
+ *  the other navmesh are looked at, so a platform's links cost what its neighbourhood does: call it
+ *  when a surface comes to rest, or when its links stop holding, as often as suits the host (nothing
+ *  calls it for you). Links are proven against the level as it stands (the platform where it is).
+ *  Both navmeshes must be made for the same agent radius and height. `settings`, `progress`, `user`
+ *  and `out_report` as for nl_navmesh_generate_links (jump_links and drop_links count the cross
+ *  links; link-kind plugins are not run: their links lie within one navmesh, though
+ *  plugin_settings_json is checked as there). Returns SUCCESS, or a failure with INVALID_HANDLE (either navmesh), INVALID_ARGUMENT (the
+ *  same navmesh twice, different bodies, a bad tolerance or setting, named), CANCELLED (nothing
+ *  changed). Thread-safe; two calls for the same pair at once store one's result or the other's. */
+NL_API nl_status nl_navmesh_generate_cross_links(nl_world* world, nl_navmesh_id first, nl_navmesh_id second, float tolerance,
+                                                 const nl_link_settings* settings, nl_progress_fn* progress, void* user,
+                                                 nl_link_generation_report* out_report);
+
 /** Regenerates only what level geometry inside the box [box_min, box_max] (3 floats each, borrowed)
  *  can have changed since the navmesh's last generation: call it after meshes were added, removed or
  *  moved there; the box must hold every change (for a moved mesh, its bounds before and after).

@@ -41,6 +41,12 @@ namespace NavLink
         public static extern uint nl_navmesh_generate_links(IntPtr world, NavmeshId navmesh, LinkSettings* settings,
                                                             IntPtr progress, IntPtr user, LinkGenerationReport* outReport);
 
+        /// <summary>progress: as for nl_navmesh_generate_links.</summary>
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        public static extern uint nl_navmesh_generate_cross_links(IntPtr world, NavmeshId first, NavmeshId second,
+                                                                  float tolerance, LinkSettings* settings, IntPtr progress,
+                                                                  IntPtr user, LinkGenerationReport* outReport);
+
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         public static extern uint nl_navmesh_update_links_in_box(IntPtr world, NavmeshId navmesh, float* boxMin,
                                                                  float* boxMax, IntPtr progress, IntPtr user,

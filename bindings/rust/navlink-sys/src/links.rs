@@ -201,6 +201,16 @@ extern "C" {
         user: *mut c_void,
         out_report: *mut nl_link_generation_report,
     ) -> nl_status;
+    pub fn nl_navmesh_generate_cross_links(
+        world: *mut nl_world,
+        first: nl_navmesh_id,
+        second: nl_navmesh_id,
+        tolerance: f32,
+        settings: *const nl_link_settings,
+        progress: nl_progress_fn,
+        user: *mut c_void,
+        out_report: *mut nl_link_generation_report,
+    ) -> nl_status;
     pub fn nl_navmesh_update_links_in_box(
         world: *mut nl_world,
         navmesh: nl_navmesh_id,

@@ -171,6 +171,31 @@ impl World {
         Ok(report)
     }
 
+    /// Generates the jump and drop links between two navmeshes (a ledge and a platform; either may ride a
+    /// moving mesh) for where they stand now, both ways, as cross links that hold while the two stay placed
+    /// so, within `tolerance` metres (0.25 is a good start). They replace the generated cross links between
+    /// the two that hold now; those made for another placement (a platform's other stop) stay, and so do
+    /// each navmesh's own links. Both navmeshes must be made for the same agent radius and height.
+    /// `settings` and `progress` as for `generate_links` (no plugin kinds run here); the report's
+    /// `jump_links` and `drop_links` count the cross links made. `INVALID_ARGUMENT` for the same navmesh
+    /// twice, different bodies, a bad tolerance or setting; `INVALID_HANDLE` for either navmesh stale;
+    /// `CANCELLED` (nothing changed).
+    pub fn generate_cross_links(
+        &self,
+        first: NavmeshId,
+        second: NavmeshId,
+        tolerance: f32,
+        settings: Option<&LinkSettings>,
+        progress: Option<Progress<'_>>,
+    ) -> Result<LinkGenerationReport> {
+        let settings = settings.copied().unwrap_or_else(default_link_settings);
+        let mut report = LinkGenerationReport::default(); // size set
+        with_progress(progress, |function, user| unsafe {
+            sys::nl_navmesh_generate_cross_links(self.raw(), first, second, tolerance, &settings, function, user, &mut report)
+        })?;
+        Ok(report)
+    }
+
     /// Regenerates only what geometry changes inside `[box_min, box_max]` can have affected.
     pub fn update_links_in_box(
         &self,

@@ -1,11 +1,12 @@
 //! Navmeshes built by Recast and handed over by the host; point location; a navmesh that rides a moving mesh,
-//! and a cross link onto it.
+//! a cross link onto it, and cross links generated between it and a ledge.
 mod common;
 
 use common::*;
 use navlink::{
-    default_agent_type, default_link_def, default_recast_settings, status, LinkDef, LinkDefExt, LinkExt, MeshId, MeshOptions,
-    NavmeshBuild, NavmeshId, NavmeshInput, PathOutcome, PathQuery, World, MESH_MOVABLE, NO_POLYGON,
+    default_agent_type, default_link_def, default_link_settings, default_recast_settings, status, AgentType, Link, LinkDef,
+    LinkDefExt, LinkExt, LinkSettings, MeshId, MeshOptions, NavmeshBuild, NavmeshId, NavmeshInput, PathOutcome, PathQuery, World,
+    MESH_MOVABLE, NO_POLYGON,
 };
 
 #[test]
@@ -224,4 +225,92 @@ fn cross_link_onto_a_moving_surface() {
     assert_fails(world.add_link(ledge, &LinkDef { tolerance: -1.0, ..def }), status::INVALID_ARGUMENT, "tolerance");
     assert_eq!(world.links(ledge).unwrap().len(), 2, "nothing refused was added");
     assert_fails(world.save_links_json(ledge), status::INVALID_ARGUMENT, "cross link");
+}
+
+/// Generated cross links (tests/core/surface_tests.cpp's ferry): a static 6 x 6 m ledge (box x in [0, 6], z in
+/// [0, 6], top y = 0) whose navmesh is its top eroded 0.3 m, and a 4 x 4 m movable box (top y = 0 in its own
+/// space, centred on its origin) carrying its top eroded 0.3 m as a navmesh, placed 1 m off the ledge's edge
+/// (centre x = 9, z = 3), then 3 m off (x = 11). Both navmeshes for radius 0.3; jumps up to 2 m across.
+const LEDGE_TOP: [f32; 12] = [0.3, 0.0, 0.3, 0.3, 0.0, 5.7, 5.7, 0.0, 5.7, 5.7, 0.0, 0.3];
+const PLATFORM_TOP: [f32; 12] = [-1.7, 0.0, -1.7, -1.7, 0.0, 1.7, 1.7, 0.0, 1.7, 1.7, 0.0, -1.7];
+
+/// The platform's transform: its centre at (x, 0, 3) (column-major).
+fn platform_at(x: f32) -> [f32; 16] {
+    [1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, x, 0.0, 3.0, 1.0]
+}
+
+#[test]
+fn cross_links_generated_for_where_a_platform_stands() {
+    let world = World::new().unwrap();
+    add_box(&world, [0.0, -1.0, 0.0], [6.0, 0.0, 6.0]);
+    let at_9 = MeshOptions { flags: MESH_MOVABLE, transform: Some(platform_at(9.0)), ..Default::default() };
+    let platform = add_box_with(&world, [-2.0, -0.5, -2.0], [2.0, 0.0, 2.0], &at_9);
+    let agent = AgentType { radius: 0.3, ..default_agent_type() };
+    let ledge = world.add_navmesh(&NavmeshInput { agent, ..quad(&LEDGE_TOP) }).unwrap();
+    let deck = world.add_navmesh(&NavmeshInput { agent, surface: Some(platform), ..quad(&PLATFORM_TOP) }).unwrap();
+    let settings = LinkSettings { max_jump_gap: 2.0, ..default_link_settings() };
+    let crossing = |navmesh: NavmeshId, landing: NavmeshId| -> Vec<Link> {
+        world.links(navmesh).unwrap().into_iter().filter(|l| l.landing() == Some(landing)).collect()
+    };
+    let ids = |links: &[Link]| links.iter().map(|l| l.id).collect::<Vec<_>>();
+
+    let mut last_fraction = -1.0;
+    let mut progress = |fraction: f32, _stage: &str| {
+        last_fraction = fraction;
+        true
+    };
+    let report = world.generate_cross_links(ledge, deck, 0.25, Some(&settings), Some(&mut progress)).unwrap();
+    assert_eq!(last_fraction, 1.0, "progress reported to the end");
+    let (onto, off) = (crossing(ledge, deck), crossing(deck, ledge));
+    assert!(report.jump_links > 0, "{:?}", report);
+    assert!(!onto.is_empty(), "links from the ledge onto the platform");
+    assert!(!off.is_empty(), "links from the platform onto the ledge");
+    assert_eq!((report.jump_links + report.drop_links) as usize, onto.len() + off.len(), "the report counts them");
+    let all = world.links(ledge).unwrap().len() + world.links(deck).unwrap().len();
+    assert_eq!(all, onto.len() + off.len(), "no links within either navmesh");
+    for l in onto.iter().chain(&off) {
+        assert_eq!((l.generated, l.holds, l.bidirectional, l.tolerance), (1, 1, 0, 0.25), "{:?}", l);
+        assert!(l.holds_now());
+        assert_ne!(l.end_polygon, NO_POLYGON);
+    }
+    // In the world: from the ledge's rim (x 5.7) to the platform's (x 7.3), and back.
+    for l in &onto {
+        assert!(l.start[0] > 5.5 && l.start[0] < 6.0 && l.end[0] > 7.0 && l.end[0] < 7.5, "{:?} {:?}", l.start, l.end);
+    }
+    for l in &off {
+        assert!(l.start[0] > 7.0 && l.start[0] < 7.5 && l.end[0] > 5.5 && l.end[0] < 6.0, "{:?} {:?}", l.start, l.end);
+    }
+
+    // 3 m off the ledge: nothing holds; beyond a 2 m jump nothing is found, and the links made 1 m off stay.
+    world.set_mesh_transform(platform, &platform_at(11.0)).unwrap();
+    assert!(crossing(ledge, deck).iter().chain(&crossing(deck, ledge)).all(|l| l.holds == 0), "none holds 3 m off");
+    let report = world.generate_cross_links(ledge, deck, 0.25, Some(&settings), None).unwrap();
+    assert_eq!((report.jump_links, report.drop_links), (0, 0));
+    assert_eq!(ids(&crossing(ledge, deck)), ids(&onto), "kept for when it is back");
+    assert_eq!(ids(&crossing(deck, ledge)), ids(&off));
+
+    // Back 1 m off: they hold again, and generating there again replaces them (not doubled).
+    world.set_mesh_transform(platform, &platform_at(9.0)).unwrap();
+    assert!(crossing(ledge, deck).iter().chain(&crossing(deck, ledge)).all(|l| l.holds == 1));
+    world.generate_cross_links(ledge, deck, 0.25, Some(&settings), None).unwrap();
+    assert_eq!((crossing(ledge, deck).len(), crossing(deck, ledge).len()), (onto.len(), off.len()));
+
+    // Refused: the same navmesh twice, a bad tolerance, another body, a stale navmesh; a cancel changes nothing.
+    assert_fails(
+        world.generate_cross_links(ledge, ledge, 0.25, Some(&settings), None),
+        status::INVALID_ARGUMENT,
+        "nl_navmesh_generate_cross_links",
+    );
+    assert_fails(world.generate_cross_links(ledge, deck, -1.0, Some(&settings), None), status::INVALID_ARGUMENT, "tolerance");
+    let wide = world.add_navmesh(&quad(&PLATFORM_TOP)).unwrap(); // the default radius, 0.6
+    assert_fails(world.generate_cross_links(ledge, wide, 0.25, Some(&settings), None), status::INVALID_ARGUMENT, "bodies");
+    world.remove_navmesh(wide).unwrap();
+    assert_fails(world.generate_cross_links(ledge, wide, 0.25, Some(&settings), None), status::INVALID_HANDLE, "second");
+    let before = ids(&world.links(ledge).unwrap());
+    assert_fails(
+        world.generate_cross_links(ledge, deck, 0.25, Some(&settings), Some(&mut |_, _| false)),
+        status::CANCELLED,
+        "",
+    );
+    assert_eq!(ids(&world.links(ledge).unwrap()), before);
 }
