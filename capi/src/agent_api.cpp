@@ -17,10 +17,10 @@ using nl::capi::to_id;
 namespace {
 
 constexpr size_t kAgentDefFirstSize = sizeof(nl_agent_def);  // their first release (0.2)
-constexpr size_t kAgentInfoFirstSize = sizeof(nl_agent_info);
+constexpr size_t kAgentInfoFirstSize = offsetof(nl_agent_info, user_data) + sizeof(uint64_t);
 constexpr size_t kTrajectoryFirstSize = sizeof(nl_agent_trajectory);
 constexpr size_t kEventFirstSize = sizeof(nl_agent_event);
-constexpr size_t kPointFirstSize = sizeof(nl_path_point);
+constexpr size_t kPointFirstSize = offsetof(nl_path_point, reserved) + 3;
 
 static_assert(uint32_t(nl::AgentState::Failed) == NL_AGENT_FAILED && uint32_t(nl::AgentState::Waiting) == NL_AGENT_WAITING,
               "core and header disagree on agent states");
@@ -79,6 +79,9 @@ nl_agent_info to_c(const nl::AgentInfo& a) {
     copy_point(c.destination, a.destination);
     c.has_destination = a.has_destination ? 1 : 0;
     c.corners_ahead = a.corners_ahead;
+    c.navmesh = to_id<nl_navmesh_id>(a.navmesh);
+    c.surface = to_id<nl_mesh_id>(a.surface);
+    copy_point(c.surface_position, a.surface_position);
     c.user_data = a.user_data;
     return c;
 }

@@ -25,7 +25,7 @@ namespace {
 constexpr size_t kLinkDefFirstSize = offsetof(nl_link_def, requirements) + offsetof(nl_link_requirements, length);
 constexpr size_t kSettingsFirstSize = offsetof(nl_link_settings, plugin_settings_json_length) + sizeof(size_t);
 constexpr size_t kReportFirstSize = offsetof(nl_link_generation_report, milliseconds_total) + sizeof(double);
-constexpr size_t kLinkFirstSize = sizeof(nl_link);  // its first release with a `size` (0.2)
+constexpr size_t kLinkFirstSize = offsetof(nl_link, requirements) + sizeof(nl_link_requirements);  // its first release with a `size` (0.2)
 constexpr size_t kMaxDropAngles = sizeof(nl_link_settings::drop_angles) / sizeof(float);
 
 void copy_point(float* out, const nl::Vec3& v) { Eigen::Map<nl::Vec3>{out} = v; }

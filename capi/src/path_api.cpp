@@ -25,7 +25,7 @@ namespace {
 constexpr size_t kRequestFirstSize = offsetof(nl_path_request_def, user) + sizeof(void*);
 constexpr size_t kResultFirstSize = offsetof(nl_path_result, goal) + 3 * sizeof(float);
 constexpr size_t kStatsFirstSize = offsetof(nl_path_queue_stats, finished) + sizeof(uint64_t);
-constexpr size_t kPointFirstSize = sizeof(nl_path_point);       // their first releases with a `size` (0.2)
+constexpr size_t kPointFirstSize = offsetof(nl_path_point, reserved) + 3;       // their first releases with a `size` (0.2)
 constexpr size_t kFinishedFirstSize = sizeof(nl_path_finished);
 constexpr size_t kBudgetFirstSize = sizeof(nl_path_budget);
 constexpr uint32_t kMaxAreaCosts = 256;
@@ -115,8 +115,11 @@ struct LastPlan {
     std::weak_ptr<const nl::PathGraph> graph;  // weak: a kept plan must not keep a removed navmesh
     nl::PathQuery query;
     nl::PathResult result;
+    uint64_t surface_moves = 0;  // of the navmesh's surface when planned: a plan from before a move is stale
     bool reusable = false;
 };
+
+uint64_t surface_moves(const nl::PathGraph& graph) { return graph.frame() ? graph.frame()->moves() : 0; }
 
 bool same_query(const nl::PathQuery& a, const nl::PathQuery& b) {
     return a.start == b.start && a.goal == b.goal && a.search_half_extents == b.search_half_extents &&
@@ -143,8 +146,10 @@ NL_API nl_status nl_path_find(nl_world* world, const nl_path_request_def* def, n
         require(out_result, "out_result");
         Request request = read_request(deref(world), def);
         thread_local LastPlan last;
-        if (!(last.reusable && last.graph.lock() == request.graph && same_query(last.query, request.query))) {
+        if (!(last.reusable && last.graph.lock() == request.graph && same_query(last.query, request.query) &&
+              last.surface_moves == surface_moves(*request.graph))) {
             last.reusable = false;
+            last.surface_moves = surface_moves(*request.graph);
             nl::plan_path(*request.graph, request.query, nullptr, last.result);
             last.graph = request.graph;
             last.query = std::move(request.query);

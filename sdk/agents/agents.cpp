@@ -646,6 +646,9 @@ AgentInfo info_of(const AgentBody& a) {
     info.has_destination = a.has_destination;
     info.corners_ahead = a.path.empty() ? 0u : static_cast<uint32_t>(a.path.size() - a.next);
     info.user_data = a.def.user_data;
+    info.navmesh = a.def.navmesh;
+    info.surface = a.frame ? a.frame->mesh() : Handle{};
+    info.surface_position = a.position;
     return info;
 }
 

@@ -65,7 +65,8 @@ bool plan_route(const StepNavMeshes& navmeshes, const RouteQuery& query, PathRes
             const StepNavMesh* landing = navmeshes.find(l.landing_navmesh);
             if (!landing || !landing->graph || l.end_polygon >= landing->graph->navmesh().polygon_count()) continue;
             if (!query.through_waiting && !navmeshes.holds(n.navmesh, l)) continue;
-            cross.push_back({n.navmesh, &s, (l.end - l.start).norm() * l.cost_modifier});
+            // Its length where it was placed: its end is kept in the landing navmesh's space.
+            cross.push_back({n.navmesh, &s, (l.placed_end - l.start).norm() * l.cost_modifier});
             if (cross.size() == kMaxCrossLinks) break;
         }
     }

@@ -210,11 +210,19 @@ void Level::remove_mesh(Handle h) {
 }
 
 void Level::set_transform(Handle h, const Transform& transform) {
+    // The bounds go over every vertex: under the shared lock, so that ray queries and the navmesh
+    // riding the mesh are not held up for it (a mesh's own vertices never change once added).
+    Aabb bounds;
+    {
+        const auto shared = lock_shared();
+        const Mesh* mesh = meshes_.find(h);
+        if (!mesh) fail_stale("mesh", h);
+        bounds = bounds_of(mesh->object, transform);
+    }
+    check_placement(bounds);
     const auto lock = lock_exclusive();
     Mesh* mesh = meshes_.find(h);
-    if (!mesh) fail_stale("mesh", h);
-    const Aabb bounds = bounds_of(mesh->object, transform);
-    check_placement(bounds);
+    if (!mesh) fail_stale("mesh", h);  // removed meanwhile
     mesh->transform = transform;
     mesh->world_bounds = bounds;
     if (mesh->instance) {

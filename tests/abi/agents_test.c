@@ -232,6 +232,8 @@ static void same_on_any_thread_count(void) {
         for (k = 0; k < n; ++k) {
             result[w][k].id.generation = 0;
             result[w][k].link.generation = 0;
+            result[w][k].navmesh.generation = 0;
+            result[w][k].surface.generation = 0;
         }
         nl_world_destroy(g.world);
     }

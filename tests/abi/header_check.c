@@ -144,7 +144,9 @@ _Static_assert(offsetof(nl_agent_info, state) == 4 && offsetof(nl_agent_info, id
                    offsetof(nl_agent_info, reason) == 44 && offsetof(nl_agent_info, link) == 48 &&
                    offsetof(nl_agent_info, link_progress) == 56 && offsetof(nl_agent_info, destination) == 60 &&
                    offsetof(nl_agent_info, has_destination) == 72 && offsetof(nl_agent_info, corners_ahead) == 76 &&
-                   offsetof(nl_agent_info, user_data) == 80 && sizeof(nl_agent_info) == 88,
+                   offsetof(nl_agent_info, user_data) == 80 && offsetof(nl_agent_info, navmesh) == 88 &&
+                   offsetof(nl_agent_info, surface) == 96 && offsetof(nl_agent_info, surface_position) == 104 &&
+                   offsetof(nl_agent_info, reserved2) == 116 && sizeof(nl_agent_info) == 120,
                "nl_agent_info layout");
 _Static_assert(offsetof(nl_agent_event, kind) == 4 && offsetof(nl_agent_event, agent) == 8 && offsetof(nl_agent_event, link) == 16 &&
                    offsetof(nl_agent_event, reason) == 24 && offsetof(nl_agent_event, user_data) == 32 &&

@@ -1051,8 +1051,10 @@ typedef struct nl_path_point {
     float position[3];
     uint32_t polygon;        /**< Navmesh polygon at the point. */
     nl_segment_kind segment; /**< How the agent goes on from here to the next point (NL_SEGMENT_WALK
-                                  at the last point). A drop climbed back up its bidirectional link
-                                  is a jump: NL_LINK_JUMP, with `reversed` set. */
+                                  at the last point of a path; an agent's corners, whose route leaves
+                                  its navmesh, end at the take-off of a cross link, with that link).
+                                  A drop climbed back up its bidirectional link is a jump:
+                                  NL_LINK_JUMP, with `reversed` set. */
     nl_link_id link;         /**< The link of that segment; null for walking. */
     float apex[3];           /**< A jump's highest point, to prepare the jump; for other links the
                                   higher end; for walking the point itself. */
@@ -1209,7 +1211,8 @@ typedef uint32_t nl_agent_state;
 #define NL_AGENT_JUMPING 2u     /**< In the air, on the arc the link generator checked. */
 #define NL_AGENT_FALLING 3u     /**< On a drop: out past the rim, across, then falling straight down. */
 #define NL_AGENT_TRAVERSING 4u  /**< On a manual or plugin link: a straight line at its walking speed. */
-#define NL_AGENT_WAITING 5u     /**< For its path to be planned, or for a link's landing to clear. */
+#define NL_AGENT_WAITING 5u     /**< For its path to be planned, for a link's landing to clear, or at a
+                                     cross link's take-off for the link to hold (a ferry away). */
 #define NL_AGENT_ARRIVED 6u     /**< At its destination (or as near as another body standing on it lets). */
 #define NL_AGENT_FAILED 7u      /**< Cannot go on; nl_agent_info.reason says why. */
 
@@ -1221,8 +1224,9 @@ typedef uint32_t nl_agent_reason;
                                                     beyond its body now: found at the first step after the
                                                     change or at the take-off, never in the air. An agent
                                                     whose path holds keeps it (new links serve its next plan). */
-#define NL_AGENT_REASON_WORLD_CHANGED 3u       /**< Its navmesh changed under it (not emitted yet: a navmesh
-                                                    never changes under its id; moving surfaces will). */
+#define NL_AGENT_REASON_WORLD_CHANGED 3u       /**< Its navmesh changed under it. Not emitted today: a navmesh
+                                                    never changes under its id, and one on a moving surface
+                                                    moves whole, its agents with it (nothing to replan). */
 #define NL_AGENT_REASON_OFF_PATH 4u            /**< Pushed too far off its path (REPLANNED), or teleported (the
                                                     next PATH_READY's reason). */
 #define NL_AGENT_REASON_NO_PATH 5u             /**< The destination cannot be reached (it went as near as it could). */
@@ -1264,8 +1268,11 @@ NL_API nl_status nl_agent_remove(nl_world* world, nl_agent_id agent);
 /** Nonzero if `agent` is an agent of `world`. Thread-safe. */
 NL_API int32_t nl_agent_is_valid(const nl_world* world, nl_agent_id agent);
 
-/** Sends the agent to `point` (3 floats, borrowed), located on its navmesh at once: off it is
- *  NOT_FOUND and the destination is not kept. The path is planned in a coming nl_world_step (an agent
+/** Sends the agent to `point` (3 floats, borrowed), located at once on its navmesh, or else on a
+ *  navmesh that cross links join to it (nl_link_def.landing_navmesh: a platform, a ledge across a
+ *  chasm): on none of them is NOT_FOUND and the destination is not kept. A destination on a navmesh
+ *  that rides a moving mesh is kept in the mesh's space: it moves with the mesh, and the agent
+ *  arrives where it is at arrival (docs/moving-surfaces.md). The path is planned in a coming nl_world_step (an agent
  *  in the air lands first). Returns SUCCESS, or INVALID_HANDLE (also for an agent whose navmesh was
  *  removed), INVALID_ARGUMENT, NOT_FOUND. Thread-safe. */
 NL_API nl_status nl_agent_set_destination(nl_world* world, nl_agent_id agent, const float* point);
@@ -1307,11 +1314,20 @@ typedef struct nl_agent_info {
     nl_agent_reason reason;   /**< Why it failed, or why its current path was planned. */
     nl_link_id link;          /**< The link it is taking, or waits to take; null otherwise. */
     float link_progress;      /**< 0..1 of the link's time. */
-    float destination[3];     /**< Its destination on the navmesh, if has_destination. */
+    float destination[3];     /**< Its destination, if has_destination: in the world, where it is now
+                                   (on a moving surface it moves with the surface). */
     uint8_t has_destination;
     uint8_t reserved[3];
     uint32_t corners_ahead;   /**< Path points still to reach (nl_agent_get_corners). */
     uint64_t user_data;
+    nl_navmesh_id navmesh;    /**< The navmesh it stands on now (it changes when the agent takes a cross
+                                   link; while in the air, the one it took off from). Added in 0.3. */
+    nl_mesh_id surface;       /**< The movable mesh that navmesh rides (the agent rides it too), or the
+                                   null id. Added in 0.3. */
+    float surface_position[3]; /**< `position` in that mesh's own space (equal to `position` on no
+                                    surface, and in the air over a cross link): to parent the body to
+                                    the platform in the host's scene. Added in 0.3. */
+    uint32_t reserved2;
 } nl_agent_info;
 
 NL_DEFINE_OUTPUT_INIT(nl_agent_info, nl_agent_info_init)
@@ -1355,7 +1371,9 @@ typedef struct nl_agent_trajectory {
 NL_DEFINE_OUTPUT_INIT(nl_agent_trajectory, nl_agent_trajectory_init)
 
 /** The trajectory of the link the agent is taking now, read at one moment (kind NL_TRAJECTORY_NONE
- *  while it is on the ground, also while it waits at a take-off). Returns SUCCESS, INVALID_HANDLE
+ *  while it is on the ground, also while it waits at a take-off), in the world: a link within a
+ *  navmesh that rides a moving mesh is flown in the mesh's space and given where the mesh is now; a
+ *  cross link is flown in the world, to where its landing was expected to be at landing time. Returns SUCCESS, INVALID_HANDLE
  *  or INVALID_ARGUMENT. Thread-safe. */
 NL_API nl_status nl_agent_get_trajectory(const nl_world* world, nl_agent_id agent, nl_agent_trajectory* out_trajectory);
 
