@@ -1,8 +1,9 @@
 // navlink-surfaces-soak: agents riding three moving surfaces (a shuttle sliding to and fro as it
 // rolls, a turning disc, a lift going up and down) and walking a static floor, while four threads
-// plan paths on the moving navmeshes (nl_path_find, and nl_path_request planned by the path workers),
-// a host thread moves the three surfaces without pause (nl_mesh_set_transform) and the main thread
-// steps the world and reads every agent. Built and run under ThreadSanitizer by the test command.
+// plan paths on the moving navmeshes (nl_path_find, and nl_path_request planned by the path workers)
+// and read agents' corners and locate points beside them, a host thread moves the three surfaces
+// without pause (nl_mesh_set_transform) and the main thread steps the world and reads every agent.
+// Built and run under ThreadSanitizer by the test command.
 //
 // The shuttle's navmesh is built by Recast on it (nl_navmesh_build with def.surface), the disc's and
 // the lift's are handed over in their own space (nl_navmesh_add with def.surface). It fails when a
@@ -11,9 +12,10 @@
 // after the agents are read and the same both times, lies outside the navmesh's box in the
 // surface's space by more than 5 cm: the box of a flat navmesh is its plane too); when a path on a
 // moving navmesh has a surface_position outside that box, or world points that are not its surface
-// points moved by one rigid transform (the distances between consecutive points differ); when a
-// queued request finishes other than exactly once; or when a thread stops making progress for
-// `--stall` seconds (the process aborts, so the sanitizer or a debugger shows every thread).
+// points moved by one rigid transform (the distances between consecutive points differ); when an
+// agent's corner read meanwhile is off its navmesh's box; when a queued request finishes other than
+// exactly once; or when a thread stops making progress for `--stall` seconds (the process aborts,
+// so the sanitizer or a debugger shows every thread).
 //
 //   navlink-surfaces-soak [--seconds S] [--agents N] [--workers N] [--stall S]
 //
@@ -79,6 +81,8 @@ struct Soak {
     nl_mesh_id meshes[kSurfaces]{};
     nl_navmesh_id navmeshes[kSurfaces + 1]{};
     float box_min[kSurfaces + 1][3]{}, box_max[kSurfaces + 1][3]{};  // each navmesh's, in its own space
+    std::vector<nl_agent_id> agents;  // never removed: the path threads read them
+    std::vector<int> agent_surfaces;
     std::atomic<bool> stop{false};
     Clock::time_point start = Clock::now();
 
@@ -211,7 +215,7 @@ void move_surfaces(Soak& s, Worker& me, std::atomic<uint64_t>& moves) {
 }
 
 struct PathTally {
-    std::atomic<uint64_t> found{0}, queued{0}, checked{0}, off{0};
+    std::atomic<uint64_t> found{0}, queued{0}, checked{0}, off{0}, corners{0};
 };
 
 float distance(const float* a, const float* b) { return std::hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]); }
@@ -271,8 +275,30 @@ void retire(Soak& s, Worker& me, Completion& c, std::vector<nl_path_point>& poin
     expect(nl_path_release(s.world, c.ticket), "nl_path_release");
 }
 
+// What a host's other threads read meanwhile: a random agent's corners (each within its navmesh's box,
+// in its space) and the navmesh points of a path's ends, located where the surface is now.
+void read_beside(Soak& s, Worker& me, std::mt19937& rng, const nl_path_request_def& def, int surface,
+                 std::vector<nl_path_point>& points, PathTally& tally) {
+    me.doing = "nl_agent_get_corners";
+    const size_t k = s.agents.empty() ? 0 : rng() % s.agents.size();
+    uint32_t count = 0;
+    if (!s.agents.empty() && expect(nl_agent_get_corners(s.world, s.agents[k], points.data(), uint32_t(points.size()), &count),
+               "nl_agent_get_corners", {NL_STATUS_BUFFER_TOO_SMALL})) {
+        for (uint32_t c = 0; c < count; ++c)
+            if (!s.inside(s.agent_surfaces[k], points[c].surface_position))
+                fail(std::string("a corner of an agent on the ") + kNames[s.agent_surfaces[k]] + " is off its navmesh");
+        tally.corners += count;
+    }
+    me.doing = "nl_navmesh_find_nearest";
+    const float ends[6] = {def.start[0], def.start[1], def.start[2], def.goal[0], def.goal[1], def.goal[2]};
+    nl_nav_point found[2];
+    expect(nl_navmesh_find_nearest(s.world, s.navmeshes[surface], ends, 2, def.search_half_extents, found),
+           "nl_navmesh_find_nearest");
+}
+
 // Paths between random points of a random moving surface, given in the world where it is now:
-// planned at once, or queued (eight at most waiting) for the path workers.
+// planned at once, or queued (eight at most waiting) for the path workers; and now and then the
+// reads beside them.
 void request_paths(Soak& s, Worker& me, unsigned seed, PathTally& tally) {
     std::mt19937 rng(seed);
     std::vector<nl_path_point> points(256, nl_path_point_init());
@@ -309,6 +335,7 @@ void request_paths(Soak& s, Worker& me, unsigned seed, PathTally& tally) {
                 waiting.pop_front();
             }
         }
+        if (i % 8 == 7) read_beside(s, me, rng, def, surface, points, tally);
         ++me.steps;
     }
     for (const auto& c : waiting) retire(s, me, *c, points, tally);
@@ -406,7 +433,10 @@ int main(int argc, char** argv) {
             std::memcpy(def.position, at.data(), sizeof def.position);
             nl_agent_id id{};
             // NOT_FOUND: a point of the disc's box beyond its rim.
-            if (expect(nl_agent_add(s.world, &def, &id), "nl_agent_add", {NL_STATUS_NOT_FOUND})) ++placed;
+            if (!expect(nl_agent_add(s.world, &def, &id), "nl_agent_add", {NL_STATUS_NOT_FOUND})) continue;
+            s.agents.push_back(id);
+            s.agent_surfaces.push_back(surface);
+            ++placed;
         }
         if (placed < o.agents)
             fail(std::string("only ") + std::to_string(placed) + " agents could be placed on the " + kNames[surface]);
@@ -440,10 +470,12 @@ int main(int argc, char** argv) {
                 (unsigned long long)agents.steps, s.seconds(), (unsigned long long)moves.load(),
                 (unsigned long long)agents.checked, (unsigned long long)agents.unsettled,
                 (unsigned long long)agents.arrivals, (unsigned long long)agents.failures);
-    std::printf("  paths: %llu found at once, %llu queued, %llu checked, %llu with an end off the moved navmesh\n",
+    std::printf("  paths: %llu found at once, %llu queued, %llu checked, %llu with an end off the moved navmesh; %llu "
+                "agent corners checked beside them\n",
                 (unsigned long long)paths.found.load(), (unsigned long long)paths.queued.load(),
-                (unsigned long long)paths.checked.load(), (unsigned long long)paths.off.load());
-    if (agents.steps >= 10 && agents.checked == 0) fail("no agent was ever read with its surface still");
+                (unsigned long long)paths.checked.load(), (unsigned long long)paths.off.load(),
+                (unsigned long long)paths.corners.load());
+    if (agents.steps >= 10 && o.agents > 0 && agents.checked == 0) fail("no agent was ever read with its surface still");
     if (agents.steps >= 10 && paths.checked == 0) fail("no path on a moving navmesh was checked");
     nl_world_destroy(s.world);
     if (soak.count()) {
