@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Sets up a fresh Debian 12 machine and runs every NavLink test: the release build's tests, then the
 # same tests under AddressSanitizer + UndefinedBehaviorSanitizer (built with clang, with the libFuzzer
-# targets), then each fuzz target for a bounded time, then the path queue stress test and the world
-# soak under ThreadSanitizer. Exits non-zero on any failure (a fuzzer's crash included). docs/testing.md.
+# targets), then each fuzz target for a bounded time, then the stress tests and soaks under
+# ThreadSanitizer. Exits non-zero on any failure (a fuzzer's crash included). docs/testing.md.
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 "$root/scripts/setup.sh"
@@ -36,17 +36,18 @@ echo "== fuzzing: each target for NAVLINK_FUZZ_SECONDS (50 s) from its seeds"
 ctest --test-dir "$root/build-asan" --output-on-failure -L fuzz
 unset ASAN_OPTIONS UBSAN_OPTIONS
 
-echo "== ThreadSanitizer build: the path queue stress test, the world soak, the agents soak and the host task system"
+echo "== ThreadSanitizer build: the path queue stress test, the world, agents and moving surfaces soaks and the host task system"
 configure_and_build "$root/build-tsan" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DNAVLINK_SANITIZE=thread \
   -DNAVLINK_BUILD_BENCHMARKS=OFF -DNAVLINK_BUILD_SAMPLES=OFF -DNAVLINK_INSTALL=OFF \
   --target navlink-path-stress --target navlink-world-soak --target navlink-agents-soak \
-  --target navlink-abi-host-tasks-test
+  --target navlink-surfaces-soak --target navlink-abi-host-tasks-test
 # Debian's Embree and TBB are not instrumented: their calls to intercepted functions (malloc, free,
 # memcmp) are ignored as their own memory accesses are (docs/architecture.md, "ThreadSanitizer").
 export TSAN_OPTIONS="halt_on_error=1:second_deadlock_stack=1:ignore_noninstrumented_modules=1"
 "$root/build-tsan/tests/stress/navlink-path-stress"
 "$root/build-tsan/tests/stress/navlink-world-soak" --seconds 6 --stall 120
 "$root/build-tsan/tests/stress/navlink-agents-soak" --agents 1000 --steps 10000 --seconds 90 --stall 120
+"$root/build-tsan/tests/stress/navlink-surfaces-soak" --seconds 30 --stall 120
 "$root/build-tsan/tests/abi/navlink-abi-host-tasks-test"
 unset TSAN_OPTIONS
 

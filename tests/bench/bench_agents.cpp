@@ -76,8 +76,11 @@
 #include "clock.h"
 #include "level_generator.h"
 #include "recast_detour.h"
+#include "spread.h"
 
 namespace {
+
+using nl::bench::median;
 
 constexpr float kHalfExtents[3] = {2.0f, 4.0f, 2.0f};
 constexpr float kDetourArrive = 0.1f;  // m, x-z
@@ -310,11 +313,6 @@ struct DetourCrowdSide {
     }
 };
 
-double median(std::vector<double> values) {
-    std::sort(values.begin(), values.end());
-    const size_t n = values.size();
-    return n == 0 ? std::nan("") : n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
-}
 double mean(const std::vector<double>& values) {
     double total = 0.0;
     for (const double v : values) total += v;

@@ -313,23 +313,6 @@ void request_paths(Soak& s, Worker& me) {
     }
 }
 
-void watch(Soak& s, std::vector<Worker*> workers, double stall) {
-    std::vector<uint64_t> last(workers.size());
-    std::vector<Clock::time_point> moved(workers.size(), Clock::now());
-    while (!s.stop) {
-        std::this_thread::sleep_for(std::chrono::milliseconds(200));
-        for (size_t k = 0; k < workers.size(); ++k) {
-            const uint64_t now_steps = workers[k]->steps;
-            if (now_steps != last[k]) last[k] = now_steps, moved[k] = Clock::now();
-            if (std::chrono::duration<double>(Clock::now() - moved[k]).count() > stall) {
-                std::fprintf(stderr, "navlink-agents-soak: %s made no progress for %.0f s, in %s\n", workers[k]->name,
-                             stall, workers[k]->doing.load());
-                std::abort();
-            }
-        }
-    }
-}
-
 Options parse(int argc, char** argv) {
     Options o;
     for (int i = 1; i + 1 < argc; i += 2) {
@@ -395,7 +378,9 @@ int main(int argc, char** argv) {
     Worker stepper{"the stepping thread"}, editor{"the link editor"}, churner{"the agent churner"},
         requester{"the path requester"};
     const Clock::time_point start = Clock::now();
-    std::thread watchdog(watch, std::ref(s), std::vector<Worker*>{&stepper, &editor, &churner, &requester}, o.stall);
+    std::thread watchdog([&] {
+        nl::test::watch_workers("navlink-agents-soak", s.stop, {&stepper, &editor, &churner, &requester}, o.stall);
+    });
     std::thread t_edit(edit_links, std::ref(s), std::ref(editor), std::ref(edits));
     std::thread t_churn(churn_agents, std::ref(s), std::ref(churner));
     std::thread t_paths(request_paths, std::ref(s), std::ref(requester));
