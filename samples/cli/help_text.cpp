@@ -11,7 +11,8 @@ const char* const kMainHelp =
     "  demo    generate the default level, generate its links, plan one route for three agents\n"
     "          (a walker, a short jumper, a long jumper who may drop); writes demo.png, demo.links.json\n"
     "  simulate    the same three bodies as agents that walk, jump and drop to the goal; prints when\n"
-    "          and where each arrived; writes simulate.png with their tracks\n"
+    "          and where each arrived; writes simulate.png with their tracks. --platforms: passengers\n"
+    "          ride a shuttle, a turning disc and a lift beside the level; writes platforms.png\n"
     "  generate    build a level's navmesh and generate its jump and drop links into a JSON file\n"
     "  path    plan a path over a level's navmesh and links, and print its segments\n"
     "  level   write the generated default level as an OBJ file\n"
@@ -61,14 +62,21 @@ const char* const kDemoHelp =
     "Prints a table of their routes and writes demo.png and demo.links.json (in DIR, default '.').\n";
 
 const char* const kSimulateHelp =
-    "usage: navlink simulate [--seed N] [--out-dir DIR] [--hz N] [--seconds N] [--oblique]\n"
+    "usage: navlink simulate [--seed N] [--out-dir DIR] [--hz N] [--seconds N] [--oblique] [--platforms]\n"
     "\n"
     "Generates the default level and its links as navlink demo does, then adds the demo's three bodies as\n"
     "agents at the start (nl_agent_add), sends them to the goal and steps the world N times a second\n"
     "(--hz, default 60) until every agent has arrived or failed, or --seconds (default 120) have passed.\n"
-    "Prints each take-off (jump or drop, from where to where, how long in the air) and arrival as it\n"
-    "happens, then a table: outcome, time, position, distance to the goal, metres travelled, links taken.\n"
+    "Prints each take-off (jump or drop, from where to where, how long in the air), each wait at a\n"
+    "take-off and each arrival as it happens, then a table: outcome, time, position, distance to the\n"
+    "goal, metres travelled, links taken, seconds waited.\n"
     "Writes simulate.png (in DIR, default '.'): the level and the track each agent really took.\n"
+    "\n"
+    "--platforms: beside the level, a shuttle crosses a chasm, a disc turns in a pit and a lift climbs to\n"
+    "an upper floor, each on its timetable (moved before every step, nl_mesh_set_transform), with\n"
+    "gangways (cross links) placed where each docks. Four passengers leave the apron: across the\n"
+    "chasm, onto the disc, past the disc, up to the upper floor. They wait at a gangway until its\n"
+    "platform is there, ride, and get off. Writes platforms.png: the tracks and the platforms.\n"
     "\n"
     "Exit status: 0 when every agent arrived, 1 when one did not, 2 on an error.\n";
 

@@ -1,4 +1,5 @@
-// The CLI's pictures: the scene of a generated level (and paths) written as a PNG by samples/sdl.
+// The CLI's pictures: the scene of a generated level (its paths, points and moving platforms) written
+// as a PNG by samples/sdl.
 #pragma once
 
 #include <string>
@@ -18,6 +19,6 @@ struct PictureRequest {
 
 void write_picture(const samples::Level& level, const samples::NavmeshContents& navmesh,
                    std::vector<picture::PathLayer> paths, const PictureRequest& request,
-                   std::vector<picture::ScenePoint> points = {});
+                   std::vector<picture::ScenePoint> points = {}, std::vector<picture::ScenePlatform> platforms = {});
 
 }  // namespace nl::cli

@@ -95,7 +95,9 @@ void count_link(LinkCounts& counts, nl_segment_kind kind) {
 
 LinkCounts count_links(const std::vector<nl_path_point>& points) {
     LinkCounts counts;
-    for (size_t i = 0; i + 1 < points.size(); ++i) count_link(counts, points[i].segment);
+    // Every point, the last too: a path ends walking, but an agent's corners on its way over a
+    // platform end at the take-off of the cross link that leaves their navmesh.
+    for (const nl_path_point& point : points) count_link(counts, point.segment);
     return counts;
 }
 

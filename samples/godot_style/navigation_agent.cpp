@@ -82,13 +82,17 @@ void NavigationAgent::take_off(nl_link_id link_id) {
     taken.as = travelled_as(trajectory, taken.link);
     taken.apex_height = trajectory.apex[1];
     taken.peak_height = std::max(trajectory.from[1], position_[1]);
+    taken.waited = waiting_;
+    waiting_ = 0.0;
     taken_.push_back(taken);
     in_air_ = true;
     link_reached.emit(taken_.back());
 }
 
-void NavigationAgent::process(double /*delta*/) {
+void NavigationAgent::process(double delta) {
     const nl_agent_info info = samples::read_agent(tree()->navigation().world(), agent_);
+    // Waiting for its path has no link; waiting at a take-off has the link it is to take.
+    waiting_ = info.state == NL_AGENT_WAITING && info.link.index1 ? waiting_ + delta : 0.0;
     const Vec3 next{info.position[0], info.position[1], info.position[2]};
     travelled_ += std::sqrt(distance_squared(next.data(), position_.data()));
     position_ = next;

@@ -28,6 +28,8 @@ struct TakenLink {
     nl_segment_kind as = NL_SEGMENT_WALK;  // how it was travelled (a drop climbed back up is a jump)
     float apex_height = 0.0f;       // the top of the arc the generator checked (jumps)
     float peak_height = 0.0f;       // the highest the body went on it
+    double waited = 0.0;            // seconds it stood at the take-off first: for a platform that
+                                    // was away, or for the landing to clear
 };
 
 class NavigationAgent : public Node {
@@ -70,6 +72,7 @@ private:
     nl_agent_id agent_{};
     bool in_air_ = false, arrived_ = false, failed_ = false;
     double arrival_time_ = 0.0, travelled_ = 0.0;
+    double waiting_ = 0.0;  // seconds at the take-off it waits at now
     int paths_planned_ = 0;
     std::vector<TakenLink> taken_;
     std::vector<nl_agent_reason> replan_reasons_;

@@ -16,6 +16,7 @@ public:
     NavigationRegion(std::string name, levelgen::GeneratedLevel level, nl_agent_type body, nl_link_settings links);
 
     nl_navmesh_id navmesh() const { return navmesh_; }
+    const nl_agent_type& body() const { return body_; }
     const levelgen::GeneratedLevel& level() const { return generated_; }
     const nl_link_generation_report& generation_report() const { return report_; }
 

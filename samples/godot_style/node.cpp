@@ -31,6 +31,11 @@ void Node::leave_tree() {
     tree_ = nullptr;
 }
 
+void Node::physics_process_tree(double delta) {
+    physics_process(delta);
+    for (size_t i = 0; i < children_.size(); ++i) children_[i]->physics_process_tree(delta);
+}
+
 void Node::process_tree(double delta) {
     process(delta);
     // By index: a node may add children while processing.

@@ -1,6 +1,7 @@
-// A node of the scene tree, as Godot's Node: a name, a parent, owned children, and the two callbacks
-// the tree drives: ready() when the node enters the tree (children first, as in Godot) and
-// process(delta) once per frame (parents first).
+// A node of the scene tree, as Godot's Node: a name, a parent, owned children, and the callbacks the
+// tree drives: ready() when the node enters the tree (children first, as in Godot), and each frame
+// physics_process(delta) before the navigation server's sync point and process(delta) after it
+// (parents first).
 #pragma once
 
 #include <memory>
@@ -42,6 +43,8 @@ public:
 
 protected:
     virtual void ready() {}
+    // Where bodies the host moves (platforms) are moved, so that agents move with them at the sync point.
+    virtual void physics_process(double /*delta*/) {}
     virtual void process(double /*delta*/) {}
     virtual void exit_tree() {}
 
@@ -50,6 +53,7 @@ private:
     void attach(std::unique_ptr<Node> child);
     void enter_tree(SceneTree* tree);
     void leave_tree();
+    void physics_process_tree(double delta);
     void process_tree(double delta);
 
     std::string name_;

@@ -14,6 +14,9 @@ Node* SceneTree::set_root(std::unique_ptr<Node> root) {
 }
 
 void SceneTree::run_frame(double delta) {
+    // As Godot's physics frame: the host's bodies move first, then the navigation server's sync point
+    // moves the agents over them.
+    if (root_) root_->physics_process_tree(delta);
     navigation_.sync(delta);
     if (root_) root_->process_tree(delta);
     time_ += delta;

@@ -1,6 +1,6 @@
 // The scene tree and its main loop, as Godot's SceneTree: it owns the root node and the navigation
-// server, and runs frames: the server's sync point (the agents move and their events reach their
-// nodes), then process(delta) down the tree.
+// server, and runs frames: physics_process(delta) down the tree (platforms move), the server's sync
+// point (the agents move and their events reach their nodes), then process(delta) down the tree.
 #pragma once
 
 #include <functional>

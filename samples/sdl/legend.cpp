@@ -100,6 +100,13 @@ void draw_legend(Canvas& canvas, const Scene& scene, const ViewSettings& view, c
         w.note("arrow: one way (" + std::to_string(one_way) + "); dots: both ends");
     }
 
+    if (!scene.platforms.empty()) {
+        w.heading("PLATFORMS (" + std::to_string(scene.platforms.size()) + ")");
+        for (const ScenePlatform& platform : scene.platforms)
+            w.swatch_box(palette::kPlatform, palette::kBoundary, platform.label);
+        w.note("faded link: a gangway that does not hold now");
+    }
+
     if (!scene.paths.empty()) {
         w.heading("PATHS");
         for (const PathLayer& path : scene.paths) w.swatch_line(path.color, path.label);

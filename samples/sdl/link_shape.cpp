@@ -1,5 +1,7 @@
 #include "link_shape.h"
 
+#include <algorithm>
+
 namespace nl::picture {
 
 std::vector<Point3> traversal_curve(nl_link_kind kind, const float start[3], const float end[3], const float apex[3],
@@ -8,7 +10,10 @@ std::vector<Point3> traversal_curve(nl_link_kind kind, const float start[3], con
     // out over the landing at the take-off height for a drop, straight otherwise.
     Point3 control;
     for (int k = 0; k < 3; ++k) control[k] = 0.5f * (start[k] + end[k]);
-    if (kind == NL_LINK_JUMP) {
+    // A jump a host added has no arc of its own (nl_link_add gives it its higher end as apex): it is
+    // drawn straight rather than bent back from that end.
+    const bool arc = apex[1] > std::max(start[1], end[1]) + 1e-3f;
+    if (kind == NL_LINK_JUMP && arc) {
         for (int k = 0; k < 3; ++k) control[k] = 2.0f * apex[k] - 0.5f * (start[k] + end[k]);
     } else if (kind == NL_LINK_DROP) {
         control = {end[0], start[1], end[2]};

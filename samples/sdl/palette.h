@@ -10,6 +10,7 @@ namespace nl::picture::palette {
 constexpr Rgba kBackground{28, 32, 38, 255};
 constexpr Rgba kLowGround{62, 74, 96, 255};      // the lowest level surface...
 constexpr Rgba kHighGround{226, 214, 186, 255};  // ...to the highest
+constexpr Rgba kPlatform{70, 150, 200, 255};     // a platform the host moves, at any height
 constexpr Rgba kNavmeshFill{70, 190, 100, 105};
 constexpr Rgba kNavmeshEdge{40, 120, 60, 120};
 constexpr Rgba kBoundary{16, 70, 32, 255};

@@ -1,5 +1,6 @@
-// What a picture shows: a level's triangles, its navmesh (polygons, outline, links), paths of agents
-// and marked points. Plain data read through the C ABI; the renderer only draws it.
+// What a picture shows: a level's triangles, its navmesh (polygons, outline, links), the platforms
+// that move, paths of agents and marked points. Plain data read through the C ABI; the renderer only
+// draws it.
 #pragma once
 
 #include <navlink/navlink.h>
@@ -43,9 +44,19 @@ struct SceneAgent {
     std::vector<std::array<float, 3>> trajectory;  // empty on the ground
 };
 
+// A platform the host moves, where it stands now: its triangles and its navmesh (polygons, outline
+// and the gangways off it) in the world.
+struct ScenePlatform {
+    std::string label;  // "shuttle at (4.0, -3.7, 19.2), moving"
+    std::vector<float> positions;  // x y z per vertex
+    std::vector<uint32_t> triangles;
+    samples::NavmeshContents navmesh;
+};
+
 struct Scene {
     const samples::Level* level = nullptr;              // required
     const samples::NavmeshContents* navmesh = nullptr;  // optional
+    std::vector<ScenePlatform> platforms;
     std::vector<PathLayer> paths;
     std::vector<ScenePoint> points;  // start, goal, ...
     std::vector<SceneAgent> agents;

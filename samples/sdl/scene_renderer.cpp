@@ -63,18 +63,20 @@ void subdivide(const Point3& a, const Point3& b, const Point3& c, float max_edge
     subdivide(ab, bc, ca, max_edge, depth - 1, out);
 }
 
-void collect_level(const Scene& scene, const Camera& camera, std::vector<Surface>& out) {
-    const samples::Level& level = *scene.level;
-    const float lo = level.info.bounds_min[1], hi = level.info.bounds_max[1];
+// Triangles (x y z per vertex in `positions`, 3 indices each) lit from above, each piece coloured by
+// `color_at` for its mean height.
+template <typename ColorAt>
+void collect_triangles(const std::vector<float>& positions, const std::vector<uint32_t>& triangles,
+                       const Camera& camera, ColorAt color_at, std::vector<Surface>& out) {
     float view[3];
     camera.view_direction(view);
     const float light[3] = {0.3f, 0.88f, 0.37f};  // from above, a little from the south-east
     const float max_edge = camera.top_down() ? 1e9f : 2.0f;
     std::vector<std::array<Point3, 3>> pieces;
-    for (uint32_t t = 0; t < level.triangle_count(); ++t) {
+    for (size_t t = 0; t + 2 < triangles.size(); t += 3) {
         Point3 p[3];
         for (int i = 0; i < 3; ++i)
-            for (int k = 0; k < 3; ++k) p[i][k] = level.positions[3 * size_t(level.triangles[3 * t + i]) + k];
+            for (int k = 0; k < 3; ++k) p[i][k] = positions[3 * size_t(triangles[t + i]) + k];
         const float e1[3] = {p[1][0] - p[0][0], p[1][1] - p[0][1], p[1][2] - p[0][2]};
         const float e2[3] = {p[2][0] - p[0][0], p[2][1] - p[0][1], p[2][2] - p[0][2]};
         float n[3] = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2], e1[0] * e2[1] - e1[1] * e2[0]};
@@ -92,8 +94,7 @@ void collect_level(const Scene& scene, const Camera& camera, std::vector<Surface
             const float mean_y = (piece[0][1] + piece[1][1] + piece[2][1]) / 3.0f;
             Surface s;
             s.kind = Surface::LevelTriangle;
-            s.color = shaded(mix(palette::kLowGround, palette::kHighGround, hi > lo ? (mean_y - lo) / (hi - lo) : 0.5f),
-                             0.35f + 0.65f * lambert);
+            s.color = shaded(color_at(mean_y), 0.35f + 0.65f * lambert);
             s.nearness = 0.0f;
             for (const Point3& q : piece) {
                 s.corners.push_back(camera.project(q.data()));
@@ -104,8 +105,23 @@ void collect_level(const Scene& scene, const Camera& camera, std::vector<Surface
     }
 }
 
-void collect_navmesh(const Scene& scene, const Camera& camera, const Layers& layers, std::vector<Surface>& out) {
-    const samples::NavmeshContents& nav = *scene.navmesh;
+void collect_level(const Scene& scene, const Camera& camera, std::vector<Surface>& out) {
+    const samples::Level& level = *scene.level;
+    const float lo = level.info.bounds_min[1], hi = level.info.bounds_max[1];
+    collect_triangles(level.positions, level.triangles, camera, [lo, hi](float y) {
+        return mix(palette::kLowGround, palette::kHighGround, hi > lo ? (y - lo) / (hi - lo) : 0.5f);
+    }, out);
+}
+
+// Platforms in one colour whatever their height, so that they stand out from the level they cross.
+void collect_platforms(const Scene& scene, const Camera& camera, std::vector<Surface>& out) {
+    for (const ScenePlatform& platform : scene.platforms)
+        collect_triangles(platform.positions, platform.triangles, camera, [](float) { return palette::kPlatform; },
+                          out);
+}
+
+void collect_navmesh(const samples::NavmeshContents& nav, const Camera& camera, const Layers& layers,
+                     std::vector<Surface>& out) {
     if (layers.navmesh) {
         for (const nl_nav_polygon& polygon : nav.polygons) {
             Surface s;
@@ -169,7 +185,9 @@ void draw_links(Canvas& canvas, const Camera& camera, const samples::NavmeshCont
             if (plugin ? pass != NL_LINK_FIRST_PLUGIN_KIND : link.kind != pass) continue;
             const auto curve = projected(camera, traversal_curve(link.kind, link.start, link.end, link.apex));
             Rgba color = palette::link_kind(link.kind);
-            if (!link.enabled) color = mix(color, palette::kBackground, 0.6f);
+            // A disabled link steps back, and so does a cross link that does not hold now (its
+            // platform is away: its end is drawn where the platform has taken it).
+            if (!link.enabled || !link.holds) color = mix(color, palette::kBackground, 0.6f);
             color.a = alpha;
             Rgba shadow = palette::kShadow;
             shadow.a = static_cast<uint8_t>(shadow.a * alpha / 255);
@@ -260,11 +278,20 @@ void draw_scene(SDL_Renderer* renderer, const Scene& scene, const ViewSettings& 
     const Camera camera = scene_camera(scene, view);
 
     std::vector<Surface> surfaces;
-    if (view.layers.level) collect_level(scene, camera, surfaces);
-    if (scene.navmesh) collect_navmesh(scene, camera, view.layers, surfaces);
+    if (view.layers.level) {
+        collect_level(scene, camera, surfaces);
+        collect_platforms(scene, camera, surfaces);
+    }
+    if (scene.navmesh) collect_navmesh(*scene.navmesh, camera, view.layers, surfaces);
+    for (const ScenePlatform& platform : scene.platforms)
+        collect_navmesh(platform.navmesh, camera, view.layers, surfaces);
     draw_surfaces(canvas, surfaces);
-    if (scene.navmesh && view.layers.links)
-        draw_links(canvas, camera, *scene.navmesh, view.layers.paths && !scene.paths.empty());
+    if (view.layers.links) {
+        const bool behind_paths = view.layers.paths && !scene.paths.empty();
+        if (scene.navmesh) draw_links(canvas, camera, *scene.navmesh, behind_paths);
+        for (const ScenePlatform& platform : scene.platforms)
+            draw_links(canvas, camera, platform.navmesh, behind_paths);
+    }
     if (view.layers.paths) draw_paths(canvas, camera, scene);
     draw_points(canvas, camera, scene);
     if (view.layers.agents) draw_agents(canvas, camera, scene);

@@ -36,10 +36,10 @@ std::vector<Point3> flight_curve(const nl_agent_trajectory& t) {
 }  // namespace
 
 ViewerAgents::ViewerAgents(nl_world* world, nl_navmesh_id navmesh, const std::vector<samples::AgentProfile>& profiles,
-                           const Point& start)
+                           const std::vector<Point>& starts)
     : world_(world), profiles_(profiles), tracks_(profiles.size()) {
     for (size_t i = 0; i < profiles_.size(); ++i) {
-        nl_agent_def def = samples::agent_def(profiles_[i], navmesh, start.data());
+        nl_agent_def def = samples::agent_def(profiles_[i], navmesh, starts.at(i).data());
         def.user_data = i;
         nl_agent_id id{};
         samples::check(nl_agent_add(world_, &def, &id), "adding an agent");
@@ -72,8 +72,8 @@ bool ViewerAgents::moving() const {
     return false;
 }
 
-bool ViewerAgents::step(float dt) {
-    if (!moving()) return false;
+bool ViewerAgents::step(float dt, bool surfaces_move) {
+    if (!moving() && !surfaces_move) return false;
     samples::check(nl_world_step(world_, dt), "stepping the agents");
     time_ += dt;
     read_back();

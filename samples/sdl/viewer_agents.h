@@ -17,17 +17,18 @@ class ViewerAgents {
 public:
     using Point = std::array<float, 3>;
 
-    // Adds one agent per profile at `start` of `navmesh`. Throws SampleError.
+    // Adds one agent per profile at its start (`starts[i]`) of `navmesh`. Throws SampleError.
     ViewerAgents(nl_world* world, nl_navmesh_id navmesh, const std::vector<samples::AgentProfile>& profiles,
-                 const Point& start);
+                 const std::vector<Point>& starts);
 
     // Sends agent `index` to `destination`; false (and a line on stdout) when it is off the navmesh.
     bool send(size_t index, const Point& destination);
     // Puts agent `index` at `position` and forgets its track; false (and a line) off the navmesh.
     bool teleport(size_t index, const Point& position);
-    // Advances the world by `dt` seconds when an agent is on its way; true if one moved. Prints each
-    // take-off, arrival and failure.
-    bool step(float dt);
+    // Advances the world by `dt` seconds when an agent is on its way, or always when `surfaces_move`
+    // (platforms carry the agents standing on them); true if one moved. Prints each take-off,
+    // arrival and failure.
+    bool step(float dt, bool surfaces_move = false);
     bool moving() const;
     const nl_agent_info& info(size_t index) const { return infos_.at(index); }
 

@@ -10,6 +10,7 @@
 #include "arguments.h"
 #include "headless_script.h"
 #include "interactive_viewer.h"
+#include "platforms_script.h"
 #include "sample_error.h"
 #include "viewer_session.h"
 
@@ -17,11 +18,14 @@ namespace {
 
 const char* const kHelp =
     "usage: navlink-viewer [LEVEL.obj] [--links LINKS.json] [--seed N] [--oblique] [--headless]\n"
-    "                      [--frames DIR]\n"
+    "                      [--frames DIR] [--platforms]\n"
     "\n"
     "Shows a level (default: the generated default level), its navmesh, its links (generated with the\n"
     "demo's settings unless --links) and the paths of the demo's agents (walker, short jumper, long\n"
     "jumper) from a start to a destination you click.\n"
+    "With --platforms: the default level with moving platforms beside it (a shuttle across a chasm, a\n"
+    "turning disc, a lift to an upper floor), which move by their timetables, and four agents riding\n"
+    "them, each to its own destination.\n"
     "Without a display (or with --headless) it renders a scripted sequence of frames into DIR (default\n"
     "'.') as frame_NN.png instead.\n"
     "\n"
@@ -39,7 +43,8 @@ int main(int argc, char** argv) {
     try {
         const nl::samples::Arguments args(
             "navlink-viewer", "navlink-viewer", argc, argv, 1,
-            {{"links", true}, {"seed", true}, {"oblique", false}, {"headless", false}, {"frames", true}});
+            {{"links", true}, {"seed", true}, {"oblique", false}, {"headless", false}, {"frames", true},
+             {"platforms", false}});
         if (args.wants_help()) {
             std::printf("%s%s", kHelp, nl::picture::kViewerKeys);
             return 0;
@@ -51,14 +56,19 @@ int main(int argc, char** argv) {
         if (!args.positional().empty()) options.level_path = args.positional()[0];
         options.links_path = args.value("links");
         options.seed = static_cast<uint32_t>(args.whole_number("seed", 0, 4294967295L, 1));
+        options.platforms = args.has("platforms");
+        if (options.platforms && options.level_path)
+            throw nl::samples::SampleError("--platforms stand beside the generated default level: give no LEVEL.obj "
+                                           "(see navlink-viewer --help)");
         nl::picture::ViewSettings view;
         view.oblique = args.has("oblique");
 
         nl::picture::ViewerSession session(options);
         const bool headless = args.has("headless") || !display_available();
-        const int status = headless
-                               ? nl::picture::run_headless_script(session, view, args.value("frames").value_or("."))
-                               : nl::picture::run_interactive_viewer(session, view);
+        const std::string frames = args.value("frames").value_or(".");
+        const int status = !headless           ? nl::picture::run_interactive_viewer(session, view)
+                           : options.platforms ? nl::picture::run_platforms_script(session, view, frames)
+                                               : nl::picture::run_headless_script(session, view, frames);
         SDL_Quit();
         return status;
     } catch (const nl::samples::SampleError& e) {

@@ -7,6 +7,7 @@
 #include "link_files.h"
 #include "navmesh_setup.h"
 #include "palette.h"
+#include "platform_picture.h"
 #include "sample_error.h"
 #include "scene_renderer.h"
 
@@ -14,12 +15,18 @@ namespace nl::picture {
 
 ViewerSession::ViewerSession(const ViewerOptions& options) : agents_(samples::demo_agents()) {
     levelgen::GeneratedLevel generated;
+    const std::string seed = std::to_string(options.seed);
     if (options.level_path) {
         level_ = samples::load_level_file(world_.get(), *options.level_path, true);
+    } else if (options.platforms) {
+        platforms_level_.emplace(samples::generate_platforms_level(options.seed));
+        level_ = samples::add_generated_level(world_.get(), platforms_level_->level,
+                                              "generated default level (seed " + seed + ") with moving platforms");
+        agents_.clear();
+        for (const samples::Passenger& p : platforms_level_->passengers) agents_.push_back(p.profile);
     } else {
         generated = levelgen::generate_default_level(options.seed);
-        level_ = samples::add_generated_level(world_.get(), generated,
-                                              "generated default level (seed " + std::to_string(options.seed) + ")");
+        level_ = samples::add_generated_level(world_.get(), generated, "generated default level (seed " + seed + ")");
     }
     navmesh_ = samples::build_navmesh(world_.get(), agents_[0].body, "");
     if (options.links_path) {
@@ -32,6 +39,10 @@ ViewerSession::ViewerSession(const ViewerOptions& options) : agents_(samples::de
     contents_ = samples::read_navmesh_contents(world_.get(), navmesh_);
     paths_.resize(agents_.size());
     current_ = agents_.size() - 1;
+    if (platforms_level_) {
+        add_passengers();
+        return;
+    }
 
     // Start at the level's start marker, or in the middle of the first polygon.
     if (const levelgen::Marker* m = generated.marker("start")) {
@@ -40,7 +51,7 @@ ViewerSession::ViewerSession(const ViewerOptions& options) : agents_(samples::de
         const float* c = contents_.polygons[0].centre;
         start_ = {c[0], c[1], c[2]};
     }
-    crowd_.emplace(world_.get(), navmesh_, agents_, start_);
+    crowd_.emplace(world_.get(), navmesh_, agents_, std::vector<Point>(agents_.size(), start_));
     // Send the agents to the level's goal marker, or to the polygon farthest from the start.
     if (const levelgen::Marker* m = generated.marker("goal")) {
         set_destination({m->position[0], m->position[1], m->position[2]});
@@ -53,6 +64,20 @@ ViewerSession::ViewerSession(const ViewerOptions& options) : agents_(samples::de
             if (distance2(p.centre) > distance2(farthest->centre)) farthest = &p;
         set_destination({farthest->centre[0], farthest->centre[1], farthest->centre[2]});
     }
+}
+
+// The platforms come after the links: these are generated against what stands still. Each
+// passenger stands at its own start and is sent to its own destination; the session's start is the
+// first one's (a right click puts the agents chosen there).
+void ViewerSession::add_passengers() {
+    platforms_ =
+        samples::add_moving_platforms(world_.get(), navmesh_, platforms_level_->platforms, agents_[0].body, time_);
+    std::vector<Point> starts;
+    for (const samples::Passenger& p : platforms_level_->passengers) starts.push_back(p.start);
+    start_ = starts.front();
+    crowd_.emplace(world_.get(), navmesh_, agents_, starts);
+    for (size_t i = 0; i < agents_.size(); ++i) crowd_->send(i, platforms_level_->passengers[i].destination);
+    contents_.links = samples::read_links(world_.get(), navmesh_);  // with the gangways onto the platforms
 }
 
 ViewerSession::~ViewerSession() { cancel_pending(); }
@@ -114,10 +139,21 @@ void ViewerSession::cancel_pending() {
     pending_.clear();
 }
 
+bool ViewerSession::advance(float dt) {
+    if (platforms_.empty()) return crowd_->step(dt);
+    time_ += dt;
+    samples::move_platforms(world_.get(), platforms_, time_);
+    // The gangways onto the platforms are links of the ground: their ends have moved with them.
+    contents_.links = samples::read_links(world_.get(), navmesh_);
+    crowd_->step(dt, true);
+    return true;
+}
+
 void ViewerSession::request_paths() {
     cancel_pending();
     for (auto& path : paths_) path.reset();
-    if (!destination_) return;
+    // A path request plans within one navmesh: routes over the platforms are the agents' own.
+    if (!destination_ || !platforms_.empty()) return;
     for_selected([&](size_t i) {
         const nl_path_request_def def =
             samples::path_request(navmesh_, start_.data(), destination_->data(), agents_[i].capabilities);
@@ -167,6 +203,18 @@ Scene ViewerSession::scene() const {
         scene.paths.push_back({label, palette::agent(i), p.points});
     }
     scene.agents = crowd_->scene_agents();
+    scene.platforms = scene_platforms(world_.get(), platforms_, time_);
+    if (platforms_level_ && !destination_) {
+        // Where each passenger goes (a place on a platform has moved with it), not one start.
+        for (size_t i = 0; i < agents_.size(); ++i) {
+            const nl_agent_info& info = crowd_->info(i);
+            if (info.has_destination)
+                scene.points.push_back({platforms_level_->passengers[i].destination_name,
+                                        {info.destination[0], info.destination[1], info.destination[2]},
+                                        palette::kText});
+        }
+        return scene;
+    }
     scene.points.push_back({"start", {start_[0], start_[1], start_[2]}, palette::kText});
     if (destination_)
         scene.points.push_back(

@@ -2,6 +2,9 @@
 // start and a destination, and the paths planned between them through the queued path API
 // (nl_path_request, polled every frame), so the window never waits for the planner. The same bodies
 // are agents of the world too: a destination sends them, a start puts them there.
+// With --platforms, the level has moving platforms beside it, moved by their timetables every frame,
+// and the agents are their passengers, each sent where it goes (their routes cross navmeshes, which
+// a path request does not: no paths are planned).
 #pragma once
 
 #include <SDL2/SDL.h>
@@ -14,6 +17,7 @@
 
 #include "agent_profile.h"
 #include "level.h"
+#include "moving_platforms.h"
 #include "navmesh_contents.h"
 #include "path_plan.h"
 #include "scene.h"
@@ -26,6 +30,7 @@ struct ViewerOptions {
     std::optional<std::string> level_path;  // none: the generated default level
     std::optional<std::string> links_path;  // none: links are generated (the demo's settings)
     uint32_t seed = 1;
+    bool platforms = false;  // the generated default level with its moving platforms and passengers
 };
 
 class ViewerSession {
@@ -46,8 +51,9 @@ public:
 
     // Takes the paths that finished since the last call; true if any did (draw again).
     bool update();
-    // Steps the agents by `dt` seconds (real time) when one is on its way; true if one moved.
-    bool advance(float dt) { return crowd_->step(dt); }
+    // Moves the platforms and steps the agents by `dt` seconds (real time) when one is on its way or
+    // a platform carries them; true if anything moved.
+    bool advance(float dt);
     bool agents_moving() const { return crowd_->moving(); }
     // Whether every agent shown has a complete planned path to the destination.
     bool every_path_complete() const;
@@ -58,6 +64,9 @@ public:
 
     Scene scene() const;  // borrows this session's level and navmesh
     const std::vector<samples::AgentProfile>& agents() const { return agents_; }
+    const std::vector<samples::MovingPlatform>& platforms() const { return platforms_; }
+    const nl_world* world() const { return world_.get(); }
+    double time() const { return time_; }  // seconds the agents and platforms have moved
     size_t current_agent() const { return current_; }
     const Point& start() const { return start_; }
     std::optional<Point> destination() const;
@@ -65,6 +74,7 @@ public:
     std::string status() const;
 
 private:
+    void add_passengers();
     void request_paths();
     template <typename Visit>
     void for_selected(Visit visit);
@@ -86,6 +96,9 @@ private:
     std::vector<Pending> pending_;
     std::vector<std::optional<samples::PlannedPath>> paths_;  // per agent, for the current destination
     std::optional<ViewerAgents> crowd_;  // the same bodies as agents, sent to each destination
+    std::optional<samples::PlatformsLevel> platforms_level_;  // with platforms: where they go, and who rides
+    std::vector<samples::MovingPlatform> platforms_;
+    double time_ = 0.0;
 };
 
 }  // namespace nl::picture

@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include <filesystem>
+#include <regex>
 #include <string>
 #include <vector>
 
@@ -56,6 +57,25 @@ inline KindCounts count_kinds(const nlohmann::json& links_file) {
         (kind == "jump" ? c.jump : kind == "drop" ? c.drop : c.other)++;
     }
     return c;
+}
+
+// The line of `agent` in navlink simulate's table: outcome, seconds, metres to its destination, the
+// links it took, and the seconds it waited at take-offs (0 when the line says none).
+struct SimulatedArrival {
+    std::string outcome;
+    double seconds = 0, to_goal = 0;
+    std::string links;
+    double waited = 0;
+};
+
+inline SimulatedArrival simulated_arrival(const std::string& out, const std::string& agent) {
+    std::smatch m;
+    REQUIRE_MESSAGE(
+        std::regex_search(out, m,
+                          std::regex("\n" + agent +
+                                     R"( +\| (arrived|on its way|failed: [a-z ]+?) +([0-9.]+) s +\([^)]*\) +([0-9.]+) m +[0-9.]+ m  (.*), \d+ replans(, waited ([0-9.]+) s)?)")),
+        out);
+    return {m[1], std::stod(m[2]), std::stod(m[3]), m[4], m[6].matched ? std::stod(m[6]) : 0.0};
 }
 
 }  // namespace nl::test

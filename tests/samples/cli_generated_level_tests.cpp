@@ -9,6 +9,8 @@
 
 using nl::test::navlink;
 using nl::test::ProgramRun;
+using nl::test::SimulatedArrival;
+using nl::test::simulated_arrival;
 using nlohmann::json;
 
 namespace {
@@ -276,21 +278,6 @@ TEST_CASE("navlink demo prints a route for each of its three agents and writes i
     const json links = nl::test::parse_json_file(dir + "/demo.links.json");
     CHECK(nl::test::count_kinds(links).jump > 0);
     CHECK(navlink({"demo", "--seed", "2", "--out-dir", dir, "--oblique"}, dir).exit_code == 0);  // another level
-}
-
-// The arrival line of `agent` in navlink simulate's table: outcome, seconds, metres to the goal.
-struct SimulatedArrival {
-    std::string outcome;
-    double seconds = 0, to_goal = 0;
-    std::string links;
-};
-
-SimulatedArrival simulated_arrival(const std::string& out, const std::string& agent) {
-    std::smatch m;
-    REQUIRE_MESSAGE(std::regex_search(out, m,
-                                      std::regex("\n" + agent + R"( +\| (arrived|on its way|failed: [a-z ]+?) +([0-9.]+) s +\([^)]*\) +([0-9.]+) m +[0-9.]+ m  (.*), \d+ replans)")),
-                    out);
-    return {m[1], std::stod(m[2]), std::stod(m[3]), m[4]};
 }
 
 TEST_CASE("navlink simulate: the three bodies arrive as agents, each by the links it can take, and the tracks are drawn") {
