@@ -323,11 +323,16 @@ class AgentDef(Structure):
 
 
 class AgentInfo(_Growable):
-    """nl_agent_info: an agent's state (state: AGENT_*, reason: AGENT_REASON_*)."""
+    """nl_agent_info: an agent's state (state: AGENT_*, reason: AGENT_REASON_*). Since 0.3, where it stands:
+    navmesh (the one it stands on now; it changes when it takes a cross link; in the air, the one it took
+    off from), surface (the MESH_MOVABLE mesh that navmesh rides, .is_null: none) and surface_position
+    (position in that mesh's own space, to parent the body to the platform; position itself on no surface
+    and in the air over a cross link)."""
     _fields_ = [("size", c_uint32), ("state", c_uint32), ("id", AgentId), ("position", Vec3), ("velocity", Vec3),
                 ("polygon", c_uint32), ("reason", c_uint32), ("link", LinkId), ("link_progress", c_float),
                 ("destination", Vec3), ("has_destination", c_uint8), ("reserved", c_uint8 * 3),
-                ("corners_ahead", c_uint32), ("user_data", c_uint64)]
+                ("corners_ahead", c_uint32), ("user_data", c_uint64), ("navmesh", NavmeshId), ("surface", MeshId),
+                ("surface_position", Vec3), ("reserved2", c_uint32)]
 
 
 class AgentTrajectory(_Growable):
@@ -1277,8 +1282,10 @@ class World:
         return lib.nl_agent_is_valid(self.pointer, agent) != 0
 
     def set_agent_destination(self, agent, destination):
-        """Sends the agent to the navmesh point of destination (STATUS_NOT_FOUND off the navmesh: the
-        destination is not kept); its path is planned in a coming step()."""
+        """Sends the agent to the navmesh point of destination, on its navmesh or else on a navmesh that
+        cross links join to it (a platform, a ledge across a chasm); STATUS_NOT_FOUND on none of them (the
+        destination is not kept). One on a navmesh that rides a moving mesh moves with the mesh. Its path
+        is planned in a coming step()."""
         _check(lib.nl_agent_set_destination(self.pointer, agent, _floats(destination)))
 
     def stop_agent(self, agent):
@@ -1313,12 +1320,15 @@ class World:
 
     def agent_corners(self, agent):
         """The PathPoints the agent has yet to reach, the next first: where it walks, and at which point
-        it takes which link (segment, link)."""
+        it takes which link (segment, link). A route that leaves its navmesh ends at the take-off of the
+        cross link, with that link."""
         return _two_call(lambda b, c, n: lib.nl_agent_get_corners(self.pointer, agent, b, c, n), PathPoint)
 
     def agent_trajectory(self, agent):
         """The AgentTrajectory of the link the agent is taking now, or None while it is on the ground (the
-        library's kind TRAJECTORY_NONE)."""
+        library's kind TRAJECTORY_NONE), also while it waits at a take-off. In the world: a link within a
+        navmesh that rides a moving mesh is given where the mesh is now; a cross link is flown in the world,
+        to where its landing was expected to be at landing time."""
         trajectory = AgentTrajectory()
         _check(lib.nl_agent_get_trajectory(self.pointer, agent, byref(trajectory)))
         return None if trajectory.kind == TRAJECTORY_NONE else trajectory

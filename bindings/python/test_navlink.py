@@ -53,6 +53,29 @@ LEDGE_TOP = [0.3, 0, 0.3, 0.3, 0, 5.7, 5.7, 0, 5.7, 5.7, 0, 0.3]
 PLATFORM_LO, PLATFORM_HI = (-2, -0.5, -2), (2, 0, 2)
 PLATFORM_TOP = [-1.7, 0, -1.7, -1.7, 0, 1.7, 1.7, 0, 1.7, 1.7, 0, -1.7]
 
+# A ferry (tests/core/surface_tests.cpp's): two 6 x 6 m ledges (boxes x in [0, 6] and [16, 22], z in [0, 6], tops
+# y = 0) with one static navmesh of their tops eroded 0.3 m (one quad each), and the platform's box as a shuttle
+# carrying PLATFORM_TOP, on a timetable: docked at the near ledge (centre x = 8) for 3 s, 4 s across, docked at
+# the far one (x = 14) for 3 s, 4 s back.
+FERRY_NEAR_LO, FERRY_NEAR_HI = (0, -1, 0), (6, 0, 6)
+FERRY_FAR_LO, FERRY_FAR_HI = (16, -1, 0), (22, 0, 6)
+FERRY_LEDGES = [0.3, 0, 0.3, 0.3, 0, 5.7, 5.7, 0, 5.7, 5.7, 0, 0.3,
+                16.3, 0, 0.3, 16.3, 0, 5.7, 21.7, 0, 5.7, 21.7, 0, 0.3]
+FERRY_NEAR_DOCK, FERRY_FAR_DOCK = 8.0, 14.0
+FERRY_GOAL = (20, 0, 3)
+
+
+def ferry_x(t):
+    """The shuttle's centre x at time t of its 14 s timetable."""
+    u = math.fmod(t, 14.0)
+    if u < 3:
+        return FERRY_NEAR_DOCK
+    if u < 7:
+        return FERRY_NEAR_DOCK + (FERRY_FAR_DOCK - FERRY_NEAR_DOCK) * (u - 3) / 4
+    if u < 10:
+        return FERRY_FAR_DOCK
+    return FERRY_FAR_DOCK - (FERRY_FAR_DOCK - FERRY_NEAR_DOCK) * (u - 10) / 4
+
 
 def platform_at(x):
     """The platform's transform: its centre at (x, 0, 3) (column-major)."""
@@ -107,6 +130,10 @@ def jumper(distance=4.5):
 
 def horizontal(a, b):
     return math.hypot(a[0] - b[0], a[2] - b[2])
+
+
+def distance(a, b):
+    return math.sqrt(sum((a[i] - b[i]) ** 2 for i in range(3)))
 
 
 def gap_level_with_links(world):
@@ -904,6 +931,89 @@ class AgentTest(NavLinkTestCase):
 
             self.assertIsNone(world.agent_trajectory(jumper_id), "no trajectory on the ground")
             self.assertLessEqual(len(world.agent_corners(walker_id)), 1, "an arrived agent has no corners left")
+
+    def test_a_ferry_carries_walkers_across_a_chasm(self):
+        """tests/core/surface_tests.cpp's ferry through the ABI: two walkers wait at the near ledge's gangway for
+        the shuttle, ride it across (info.navmesh: its deck; info.surface: the shuttle; surface_position: in the
+        shuttle's space), and get off onto the far ledge by the other gangway."""
+        with nl.World() as world:
+            add_box(world, FERRY_NEAR_LO, FERRY_NEAR_HI)
+            add_box(world, FERRY_FAR_LO, FERRY_FAR_HI)
+            shuttle = add_box(world, PLATFORM_LO, PLATFORM_HI, flags=nl.MESH_MOVABLE, transform=platform_at(FERRY_FAR_DOCK))
+            agent = nl.default_agent_type()
+            agent.radius = 0.3
+            ledges = world.add_navmesh(FERRY_LEDGES, list(range(8)), [4, 4], agent=agent)
+            deck = world.add_navmesh(PLATFORM_TOP, [0, 1, 2, 3], [4], agent=agent, surface=shuttle)
+
+            def gangway(navmesh, start, landing, end):
+                d = nl.default_link_def()  # NL_LINK_MANUAL, tolerance 0.25
+                d.start, d.end, d.landing_navmesh = start, end, landing
+                d.requirements_as_given = 1  # requirements zero: a gap of 0, walked, not jumped
+                self.assertEqual((d.kind, d.requirements.gap), (nl.LINK_MANUAL, 0))
+                return world.add_link(navmesh, d)
+
+            leave = gangway(deck, (15.4, 0, 3), ledges, (16.6, 0, 3))  # placed docked at the far ledge
+            world.set_mesh_transform(shuttle, platform_at(FERRY_NEAR_DOCK))
+            board = gangway(ledges, (5.6, 0, 3), deck, (6.6, 0, 3))  # placed docked at the near ledge
+            self.assertTrue(world.link(leave).holds == 0 and world.link(board).holds == 1)
+
+            walkers = []
+            for z in (2, 4):
+                d = nl.default_agent_def()
+                d.navmesh, d.position = ledges, nl.Vec3(2, 0, z)
+                d.capabilities.radius = 0.3
+                walkers.append(world.add_agent(d))
+                world.set_agent_destination(walkers[-1], FERRY_GOAL)
+            start = world.agent_info(walkers[0])
+            self.assertEqual((start.navmesh, start.surface.is_null), (ledges, True), "standing on the near ledge")
+            self.assertEqual(list(start.surface_position), list(start.position))
+
+            t = 4.0  # the shuttle has just left: the first to reach the gangway waits for it
+            arrived, waited, riding, taken, failed = {}, 0, 0, [], []
+            for _ in range(90 * 30):
+                if len(arrived) == len(walkers):
+                    break
+                t += self.DT
+                x = ferry_x(t)
+                world.set_mesh_transform(shuttle, platform_at(x))
+                world.step(self.DT)
+                events = world.agent_events()
+                taken += [(e.agent, e.link) for e in events if e.kind == nl.AGENT_EVENT_LINK_STARTED]
+                failed += [(e.agent, e.reason) for e in events if e.kind == nl.AGENT_EVENT_FAILED]
+                for info in world.agents():
+                    waited += info.state == nl.AGENT_WAITING and info.link == board
+                    self.assertIn(info.navmesh, (ledges, deck))
+                    if info.state in (nl.AGENT_JUMPING, nl.AGENT_FALLING, nl.AGENT_TRAVERSING):
+                        # In the air over a cross link (both gangways are): flown in the world.
+                        self.assertLess(distance(info.surface_position, info.position), 1e-3, "in the air")
+                    elif info.navmesh == deck:
+                        # On the deck: it rides the shuttle, whose centre is at (x, 0, 3), unturned.
+                        riding += 1
+                        self.assertEqual(info.surface, shuttle, "on the deck, riding the shuttle")
+                        self.assertLess(distance(info.surface_position, (info.position[0] - x, info.position[1],
+                                                                         info.position[2] - 3)), 1e-3,
+                                        "on the shuttle: %s at %s with its centre at x = %.3f"
+                                        % (list(info.surface_position), list(info.position), x))
+                    else:
+                        self.assertTrue(info.surface.is_null, "the ledges ride nothing")
+                        self.assertLess(distance(info.surface_position, info.position), 1e-3, "on no surface")
+                for e in events:
+                    if e.kind == nl.AGENT_EVENT_ARRIVED:
+                        info = world.agent_info(e.agent)
+                        arrived[e.agent] = (info.navmesh, info.surface.is_null, info.position)
+
+            self.assertEqual(failed, [])
+            self.assertEqual(set(arrived), set(walkers), "both arrived by t = %.1f s" % t)
+            self.assertGreater(waited, 0, "an agent waited at the gangway for the shuttle (WAITING, info.link)")
+            self.assertGreater(riding, 0, "an agent stood on the shuttle's deck (info.navmesh, info.surface)")
+            for walker_id in walkers:
+                self.assertIn((walker_id, board), taken, "boarded by the near gangway")
+                self.assertIn((walker_id, leave), taken, "got off by the far gangway")
+                navmesh, no_surface, position = arrived[walker_id]
+                self.assertTrue(navmesh == ledges and no_surface, "arrived on the far ledge, on no surface")
+                self.assertLess(horizontal(position, FERRY_GOAL), 1.5, list(position))  # two bodies share the goal
+                info = world.agent_info(walker_id)
+                self.assertEqual((info.state, info.navmesh, info.surface.is_null), (nl.AGENT_ARRIVED, ledges, True))
 
     def test_bad_input(self):
         self.assertFails(nl.STATUS_INVALID_ARGUMENT, "agent_paths_per_step", nl.World, agent_paths_per_step=0)

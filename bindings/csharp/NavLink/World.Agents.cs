@@ -27,8 +27,10 @@ namespace NavLink
             using (var w = Enter()) return Native.nl_agent_is_valid(w.Pointer, agent) != 0;
         }
 
-        /// <summary>Sends the agent to the navmesh point of destination (NotFound off the navmesh: the
-        /// destination is not kept); its path is planned in a coming Step.</summary>
+        /// <summary>Sends the agent to the navmesh point of destination, on its navmesh or else on a navmesh that
+        /// cross links join to it (a platform, a ledge across a chasm); NotFound on none of them (the destination
+        /// is not kept). One on a navmesh that rides a moving mesh moves with the mesh. Its path is planned in a
+        /// coming Step.</summary>
         public unsafe void SetAgentDestination(AgentId agent, Vec3 destination)
         {
             using (var w = Enter()) Status.Check(Native.nl_agent_set_destination(w.Pointer, agent, (float*)&destination));
@@ -85,7 +87,8 @@ namespace NavLink
         }
 
         /// <summary>The path points the agent has yet to reach, the next first: where it walks, and at which
-        /// point it takes which link (PathPoint.Segment, Link).</summary>
+        /// point it takes which link (PathPoint.Segment, Link). A route that leaves its navmesh ends at the
+        /// take-off of the cross link, with that link.</summary>
         public unsafe PathPoint[] GetAgentCorners(AgentId agent)
         {
             using (var w = Enter())
@@ -97,7 +100,9 @@ namespace NavLink
         }
 
         /// <summary>The trajectory of the link the agent is taking now; false while it is on the ground (the
-        /// library's kind TrajectoryKind.None).</summary>
+        /// library's kind TrajectoryKind.None), also while it waits at a take-off. In the world: a link within a
+        /// navmesh that rides a moving mesh is given where the mesh is now; a cross link is flown in the world, to
+        /// where its landing was expected to be at landing time.</summary>
         public unsafe bool TryGetAgentTrajectory(AgentId agent, out AgentTrajectory trajectory)
         {
             AgentTrajectory found = Native.nl_agent_trajectory_init();

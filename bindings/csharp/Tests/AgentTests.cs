@@ -8,11 +8,42 @@ namespace NavLink.Tests
 {
     // Agents on the bridge level (tests/abi/agents_test.c's): a jumper takes a generated jump across the gap
     // while a walker goes round by the bridge, as the states read in bulk and the step's events say; the
-    // trajectory of the jump mid-flight; bad input refused.
+    // trajectory of the jump mid-flight; bad input refused. And a ferry (tests/core/surface_tests.cpp's): walkers
+    // wait at a gangway for a shuttle, ride it across a chasm and get off on the far side, AgentInfo saying which
+    // navmesh and surface they stand on.
     internal static class AgentTests
     {
         private const float Dt = 1.0f / 30.0f;
         private const int MaxSteps = 30 * 20;
+
+        // The ferry: two 6 x 6 m ledges (boxes x in [0, 6] and [16, 22], z in [0, 6], tops y = 0) with one static
+        // navmesh of their tops eroded 0.3 m (one quad each), and a 4 x 4 m movable box (top y = 0 in its own space,
+        // x and z in [-2, 2]) carrying its top eroded 0.3 m, on a timetable: docked at the near ledge (centre x = 8)
+        // for 3 s, 4 s across, docked at the far one (x = 14) for 3 s, 4 s back.
+        private static readonly float[] FerryLedges = {0.3f, 0, 0.3f, 0.3f, 0, 5.7f, 5.7f, 0, 5.7f, 5.7f, 0, 0.3f,
+                                                       16.3f, 0, 0.3f, 16.3f, 0, 5.7f, 21.7f, 0, 5.7f, 21.7f, 0, 0.3f};
+        private static readonly float[] ShuttleTop = {-1.7f, 0, -1.7f, -1.7f, 0, 1.7f, 1.7f, 0, 1.7f, 1.7f, 0, -1.7f};
+        private const float NearDock = 8, FarDock = 14;
+        private static readonly Vec3 FerryGoal = new Vec3(20, 0, 3);
+
+        /// <summary>The shuttle's transform: its centre at (x, 0, 3) (column-major).</summary>
+        private static float[] ShuttleAt(float x) { return new float[] {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, x, 0, 3, 1}; }
+
+        /// <summary>The shuttle's centre x at time t of its 14 s timetable.</summary>
+        private static float ShuttleX(double t)
+        {
+            double u = t % 14.0;
+            if (u < 3) return NearDock;
+            if (u < 7) return (float)(NearDock + (FarDock - NearDock) * (u - 3) / 4);
+            if (u < 10) return FarDock;
+            return (float)(FarDock - (FarDock - NearDock) * (u - 10) / 4);
+        }
+
+        private static float Distance(Vec3 a, Vec3 b)
+        {
+            float x = a.X - b.X, y = a.Y - b.Y, z = a.Z - b.Z;
+            return (float)Math.Sqrt(x * x + y * y + z * z);
+        }
 
         public static void Run(Checks check)
         {
@@ -111,6 +142,120 @@ namespace NavLink.Tests
                     AgentTrajectory none;
                     check.That(!world.TryGetAgentTrajectory(jumper, out none), "no trajectory on the ground");
                     check.That(world.GetAgentCorners(walker).Length <= 1, "an arrived agent has no corners left");
+                }
+            });
+
+            check.Run("agents: a ferry carries walkers across a chasm", () =>
+            {
+                using (var world = new World())
+                {
+                    TestLevels.AddBox(world, 0, -1, 0, 6, 0, 6);
+                    TestLevels.AddBox(world, 16, -1, 0, 22, 0, 6);
+                    MeshId shuttle = TestLevels.AddBox(world, -2, -0.5f, -2, 2, 0, 2, MeshFlags.Movable, ShuttleAt(FarDock));
+                    AgentType body = World.DefaultAgentType();
+                    body.Radius = 0.3f;
+                    NavmeshId ledges = world.AddNavmesh(new NavmeshInput
+                    {
+                        Vertices = FerryLedges, Indices = new uint[] {0, 1, 2, 3, 4, 5, 6, 7}, PolygonVertexCounts = new byte[] {4, 4},
+                        Agent = body,
+                    });
+                    NavmeshId deck = world.AddNavmesh(new NavmeshInput
+                    {
+                        Vertices = ShuttleTop, Indices = new uint[] {0, 1, 2, 3}, PolygonVertexCounts = new byte[] {4}, Agent = body,
+                        Surface = shuttle,
+                    });
+                    // The gangways: manual cross links whose requirements are taken as given (all zero: a gap of 0,
+                    // walked, not jumped), each placed while the shuttle stands at its dock.
+                    Func<NavmeshId, Vec3, NavmeshId, Vec3, LinkId> gangway = (navmesh, start, landing, end) =>
+                    {
+                        LinkDef def = World.DefaultLinkDef();
+                        def.Start = start;
+                        def.End = end;
+                        def.LandingNavmesh = landing;
+                        def.RequirementsAsGiven = 1;
+                        return world.AddLink(navmesh, def);
+                    };
+                    LinkId leave = gangway(deck, new Vec3(15.4f, 0, 3), ledges, new Vec3(16.6f, 0, 3));
+                    world.SetMeshTransform(shuttle, ShuttleAt(NearDock));
+                    LinkId board = gangway(ledges, new Vec3(5.6f, 0, 3), deck, new Vec3(6.6f, 0, 3));
+                    Link boardLink = world.GetLink(board);
+                    check.That(boardLink.Kind == LinkKind.Manual && boardLink.Requirements.Gap == 0 && boardLink.Holds == 1 &&
+                               world.GetLink(leave).Holds == 0, "the gangways: manual, no gap; the one at the shuttle's dock holds");
+
+                    var walkers = new List<AgentId>();
+                    foreach (float z in new[] {2f, 4f})
+                    {
+                        AgentDef def = World.DefaultAgentDef();
+                        def.Navmesh = ledges;
+                        def.Position = new Vec3(2, 0, z);
+                        def.Capabilities.Radius = 0.3f;
+                        walkers.Add(world.AddAgent(def));
+                        world.SetAgentDestination(walkers.Last(), FerryGoal);
+                    }
+                    AgentInfo first = world.GetAgentInfo(walkers[0]);
+                    check.That(first.Navmesh.Equals(ledges) && first.Surface.IsNull && first.SurfacePosition.Equals(first.Position),
+                               "standing on the near ledge, on no surface: " + first.Navmesh + " " + first.Surface);
+
+                    var arrivedInfo = new Dictionary<AgentId, AgentInfo>();
+                    var taken = new List<KeyValuePair<AgentId, LinkId>>();
+                    var failures = new List<string>();
+                    int waited = 0, riding = 0;
+                    double t = 4.0;  // the shuttle has just left: the first to reach the gangway waits for it
+                    for (int step = 0; step < 90 * 30 && arrivedInfo.Count < walkers.Count; ++step)
+                    {
+                        t += Dt;
+                        float x = ShuttleX(t);
+                        world.SetMeshTransform(shuttle, ShuttleAt(x));
+                        world.Step(Dt);
+                        AgentEvent[] events = world.GetAgentEvents();
+                        foreach (AgentEvent e in events)
+                        {
+                            if (e.Kind == AgentEventKind.LinkStarted) taken.Add(new KeyValuePair<AgentId, LinkId>(e.Agent, e.Link));
+                            if (e.Kind == AgentEventKind.Failed) failures.Add("t " + t + ": an agent failed, reason " + e.Reason);
+                            if (e.Kind == AgentEventKind.Arrived) arrivedInfo[e.Agent] = world.GetAgentInfo(e.Agent);
+                        }
+                        foreach (AgentInfo info in world.GetAgents())
+                        {
+                            if (info.State == AgentState.Waiting && info.Link.Equals(board)) ++waited;
+                            string where = "t " + t + ", shuttle at x " + x + ": " + info.State + " on " + info.Navmesh + ", surface " +
+                                           info.Surface + ", at " + info.Position + ", in its space " + info.SurfacePosition;
+                            if (!info.Navmesh.Equals(ledges) && !info.Navmesh.Equals(deck))
+                                failures.Add(where + ": on neither navmesh");
+                            else if (info.State == AgentState.Jumping || info.State == AgentState.Falling || info.State == AgentState.Traversing)
+                            {
+                                // In the air over a cross link (both gangways are): flown in the world.
+                                if (Distance(info.SurfacePosition, info.Position) > 1e-3f) failures.Add(where + ": in the air");
+                            }
+                            else if (info.Navmesh.Equals(deck))
+                            {
+                                // On the deck: riding the shuttle, whose centre is at (x, 0, 3), unturned.
+                                ++riding;
+                                if (!info.Surface.Equals(shuttle) ||
+                                    Distance(info.SurfacePosition, new Vec3(info.Position.X - x, info.Position.Y, info.Position.Z - 3)) > 1e-3f)
+                                    failures.Add(where + ": on the deck");
+                            }
+                            else if (!info.Surface.IsNull || Distance(info.SurfacePosition, info.Position) > 1e-3f)
+                                failures.Add(where + ": on a ledge");
+                        }
+                    }
+
+                    check.That(failures.Count == 0, failures.Count + " bad steps; the first: " + failures.FirstOrDefault());
+                    check.That(arrivedInfo.Count == walkers.Count, arrivedInfo.Count + " of " + walkers.Count + " arrived by t = " + t + " s");
+                    check.That(waited > 0, "an agent waited at the gangway for the shuttle (Waiting, Link the gangway): " + waited + " agent steps");
+                    check.That(riding > 0, "an agent stood on the shuttle's deck (Navmesh, Surface, SurfacePosition): " + riding + " agent steps");
+                    foreach (AgentId walker in walkers)
+                    {
+                        check.That(taken.Contains(new KeyValuePair<AgentId, LinkId>(walker, board)) &&
+                                   taken.Contains(new KeyValuePair<AgentId, LinkId>(walker, leave)),
+                                   walker + " boarded by the near gangway and got off by the far one");
+                        AgentInfo arrived;
+                        if (!check.That(arrivedInfo.TryGetValue(walker, out arrived), walker + " arrived")) continue;
+                        check.That(arrived.Navmesh.Equals(ledges) && arrived.Surface.IsNull && arrived.State == AgentState.Arrived,
+                                   "at arrival on the ledges' navmesh, on no surface: " + arrived.Navmesh + " " + arrived.Surface);
+                        // Two bodies share the goal: they stand round it.
+                        check.That(arrived.Position.HorizontalDistance(FerryGoal) < 1.5f,
+                                   "at the goal: " + arrived.Position);
+                    }
                 }
             });
 

@@ -1323,7 +1323,8 @@ typedef struct nl_agent_info {
     nl_navmesh_id navmesh;    /**< The navmesh it stands on now (it changes when the agent takes a cross
                                    link; while in the air, the one it took off from). Added in 0.3. */
     nl_mesh_id surface;       /**< The movable mesh that navmesh rides (the agent rides it too), or the
-                                   null id. Added in 0.3. */
+                                   null id; also the null id while it flies a cross link (in the world,
+                                   not on a surface). Added in 0.3. */
     float surface_position[3]; /**< `position` in that mesh's own space (equal to `position` on no
                                     surface, and in the air over a cross link): to parent the body to
                                     the platform in the host's scene. Added in 0.3. */

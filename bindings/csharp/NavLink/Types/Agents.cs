@@ -47,13 +47,24 @@ namespace NavLink
         public LinkId Link;
         /// <summary>0..1 of the link's time.</summary>
         public float LinkProgress;
-        /// <summary>Its destination on the navmesh, if HasDestination is 1.</summary>
+        /// <summary>Its destination, if HasDestination is 1: in the world, where it is now (on a moving surface
+        /// it moves with the surface).</summary>
         public Vec3 Destination;
         public byte HasDestination;
         public fixed byte Reserved[3];
         /// <summary>Path points still to reach (World.GetAgentCorners).</summary>
         public uint CornersAhead;
         public ulong UserData;
+        /// <summary>The navmesh it stands on now: it changes when the agent takes a cross link; while in the air,
+        /// the one it took off from. Added in 0.3.</summary>
+        public NavmeshId Navmesh;
+        /// <summary>The movable mesh that navmesh rides (the agent rides it too), or the null id (IsNull).
+        /// Added in 0.3.</summary>
+        public MeshId Surface;
+        /// <summary>Position in that mesh's own space (Position itself on no surface, and in the air over a
+        /// cross link): to parent the body to the platform in the scene. Added in 0.3.</summary>
+        public Vec3 SurfacePosition;
+        public uint Reserved2;
     }
 
     /// <summary>nl_agent_trajectory: the link an agent is taking, as the generator checked it, with its timing,

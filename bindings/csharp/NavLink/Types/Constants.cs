@@ -94,7 +94,8 @@ namespace NavLink
         Falling = 3u,
         /// <summary>On a manual or plugin link: a straight line at its walking speed.</summary>
         Traversing = 4u,
-        /// <summary>For its path to be planned, or for a link's landing to clear.</summary>
+        /// <summary>For its path to be planned, for a link's landing to clear, or at a cross link's take-off for
+        /// the link to hold (a ferry away).</summary>
         Waiting = 5u,
         Arrived = 6u,
         /// <summary>Cannot go on; AgentInfo.Reason says why.</summary>

@@ -43,7 +43,9 @@ namespace NavLink
         public uint Size;
         public Vec3 Position;
         public uint Polygon;
-        /// <summary>LinkKind.Walk, or the kind of the link taken to the next point.</summary>
+        /// <summary>LinkKind.Walk, or the kind of the link taken to the next point (Walk at the last point of a
+        /// path; an agent's corners, whose route leaves its navmesh, end at a cross link's take-off, with that
+        /// link).</summary>
         public uint Segment;
         public LinkId Link;
         public Vec3 Apex;

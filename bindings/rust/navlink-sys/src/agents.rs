@@ -1,4 +1,5 @@
 //! navlink.h: "Agents".
+use crate::level::nl_mesh_id;
 use crate::links::nl_link_id;
 use crate::navmesh::nl_navmesh_id;
 use crate::output_init;
@@ -65,11 +66,21 @@ pub struct nl_agent_info {
     pub reason: nl_agent_reason,
     pub link: nl_link_id,
     pub link_progress: f32,
+    /// In the world, where it is now (on a moving surface it moves with the surface).
     pub destination: [f32; 3],
     pub has_destination: u8,
     pub reserved: [u8; 3],
     pub corners_ahead: u32,
     pub user_data: u64,
+    /// The navmesh it stands on now (it changes when the agent takes a cross link; while in the air, the
+    /// one it took off from). Added in 0.3.
+    pub navmesh: nl_navmesh_id,
+    /// The movable mesh that navmesh rides (the agent rides it too), or the null id. Added in 0.3.
+    pub surface: nl_mesh_id,
+    /// `position` in that mesh's own space (equal to `position` on no surface, and in the air over a
+    /// cross link). Added in 0.3.
+    pub surface_position: [f32; 3],
+    pub reserved2: u32,
 }
 
 pub fn nl_agent_info_init() -> nl_agent_info {

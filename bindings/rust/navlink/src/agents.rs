@@ -3,7 +3,7 @@
 //! in bulk afterwards.
 use crate::error::{check, Result};
 use crate::list::two_call;
-use crate::types::{AgentCapabilities, AgentDef, AgentEvent, AgentId, AgentInfo, AgentTrajectory, PathPoint};
+use crate::types::{AgentCapabilities, AgentDef, AgentEvent, AgentId, AgentInfo, AgentTrajectory, MeshId, PathPoint};
 use crate::world::World;
 use navlink_sys as sys;
 
@@ -11,6 +11,26 @@ use navlink_sys as sys;
 /// on, on the null navmesh at the origin: set `navmesh` and `position`.
 pub fn default_agent_def() -> AgentDef {
     unsafe { sys::nl_default_agent_def() }
+}
+
+/// Where an `AgentInfo` says the agent stands (navlink.h 0.3), as Rust values. The raw fields stay:
+/// `navmesh` (the navmesh it stands on now; it changes when the agent takes a cross link, and in the air
+/// it is the one it took off from; never null) and `surface_position` (`position` in the surface's own
+/// space, to parent the body to the platform; `position` itself on no surface and in the air over a
+/// cross link).
+pub trait AgentInfoExt {
+    /// The movable mesh the agent's navmesh rides (`surface`), the agent with it; `None` for the null id.
+    fn surface_mesh(&self) -> Option<MeshId>;
+}
+
+impl AgentInfoExt for AgentInfo {
+    fn surface_mesh(&self) -> Option<MeshId> {
+        if self.surface == MeshId::default() {
+            None
+        } else {
+            Some(self.surface)
+        }
+    }
 }
 
 impl World {
@@ -30,8 +50,10 @@ impl World {
         unsafe { sys::nl_agent_is_valid(self.raw(), agent) != 0 }
     }
 
-    /// Sends the agent to the navmesh point of `destination` (NOT_FOUND off the navmesh: the destination
-    /// is not kept); its path is planned in a coming `step`.
+    /// Sends the agent to the navmesh point of `destination`, on its navmesh or else on a navmesh that
+    /// cross links join to it (a platform, a ledge across a chasm); NOT_FOUND on none of them (the
+    /// destination is not kept). One on a navmesh that rides a moving mesh moves with the mesh. Its path
+    /// is planned in a coming `step`.
     pub fn set_agent_destination(&self, agent: AgentId, destination: [f32; 3]) -> Result<()> {
         check(unsafe { sys::nl_agent_set_destination(self.raw(), agent, destination.as_ptr()) }).map(drop)
     }
@@ -75,13 +97,16 @@ impl World {
     }
 
     /// The path points the agent has yet to reach, the next first: where it walks, and at which point it
-    /// takes which link (`segment`, `link`).
+    /// takes which link (`segment`, `link`). A route that leaves its navmesh ends at the take-off of the
+    /// cross link, with that link.
     pub fn agent_corners(&self, agent: AgentId) -> Result<Vec<PathPoint>> {
         two_call(|buffer, capacity, count| unsafe { sys::nl_agent_get_corners(self.raw(), agent, buffer, capacity, count) })
     }
 
     /// The trajectory of the link the agent is taking now, or `None` while it is on the ground (the
-    /// library's kind `NL_TRAJECTORY_NONE`).
+    /// library's kind `NL_TRAJECTORY_NONE`), also while it waits at a take-off. In the world: a link within
+    /// a navmesh that rides a moving mesh is given where the mesh is now; a cross link is flown in the
+    /// world, to where its landing was expected to be at landing time.
     pub fn agent_trajectory(&self, agent: AgentId) -> Result<Option<AgentTrajectory>> {
         let mut trajectory = AgentTrajectory::default(); // size set
         check(unsafe { sys::nl_agent_get_trajectory(self.raw(), agent, &mut trajectory) })?;

@@ -23,7 +23,7 @@ mod plugins;
 mod types;
 mod world;
 
-pub use agents::default_agent_def;
+pub use agents::{default_agent_def, AgentInfoExt};
 pub use error::{status_string, Error, Result};
 pub use level::MeshOptions;
 pub use links::{default_link_def, default_link_settings, link_settings_from_json, LinkDefExt, LinkExt, Progress};

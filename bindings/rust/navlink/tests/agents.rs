@@ -1,12 +1,15 @@
 //! Agents on the bridge level (tests/abi/agents_test.c's): a jumper takes a generated jump across the gap
 //! while a walker goes round by the bridge, as the states read in bulk and the step's events say; the
-//! trajectory of the jump mid-flight; bad input refused.
+//! trajectory of the jump mid-flight; bad input refused. And a ferry (tests/core/surface_tests.cpp's):
+//! walkers wait at a gangway for a shuttle, ride it across a chasm and get off on the far side, `AgentInfo`
+//! saying which navmesh and surface they stand on.
 mod common;
 
 use common::*;
 use navlink::{
-    agent_event, agent_reason, agent_state, default_agent_def, link_kind, status, sys, trajectory_kind, AgentEvent, AgentId,
-    AgentInfo, NavmeshId, World, WorldOptions,
+    agent_event, agent_reason, agent_state, default_agent_def, default_agent_type, default_link_def, link_kind, status, sys,
+    trajectory_kind, AgentEvent, AgentId, AgentInfo, AgentInfoExt, AgentType, LinkDef, LinkDefExt, LinkId, MeshId, MeshOptions,
+    NavmeshId, NavmeshInput, World, WorldOptions, MESH_MOVABLE,
 };
 
 const DT: f32 = 1.0 / 30.0;
@@ -179,4 +182,146 @@ fn bad_input() {
     assert_fails(world.agent_info(agent), status::INVALID_HANDLE, "nl_agent_get_info");
     assert_fails(world.agent_trajectory(agent), status::INVALID_HANDLE, "nl_agent_get_trajectory");
     assert_fails(world.remove_agent(agent), status::INVALID_HANDLE, "nl_agent_remove");
+}
+
+/// The ferry: two 6 x 6 m ledges (boxes x in [0, 6] and [16, 22], z in [0, 6], tops y = 0) with one static
+/// navmesh of their tops eroded 0.3 m (one quad each), and a 4 x 4 m movable box (top y = 0 in its own space,
+/// x and z in [-2, 2]) carrying its top eroded 0.3 m, on a timetable: docked at the near ledge (centre
+/// x = 8) for 3 s, 4 s across, docked at the far one (x = 14) for 3 s, 4 s back.
+const FERRY_LEDGES: [f32; 24] = [
+    0.3, 0.0, 0.3, 0.3, 0.0, 5.7, 5.7, 0.0, 5.7, 5.7, 0.0, 0.3, //
+    16.3, 0.0, 0.3, 16.3, 0.0, 5.7, 21.7, 0.0, 5.7, 21.7, 0.0, 0.3,
+];
+const SHUTTLE_TOP: [f32; 12] = [-1.7, 0.0, -1.7, -1.7, 0.0, 1.7, 1.7, 0.0, 1.7, 1.7, 0.0, -1.7];
+const NEAR_DOCK: f32 = 8.0;
+const FAR_DOCK: f32 = 14.0;
+const FERRY_GOAL: [f32; 3] = [20.0, 0.0, 3.0];
+
+/// The shuttle's transform: its centre at (x, 0, 3) (column-major).
+fn shuttle_at(x: f32) -> [f32; 16] {
+    [1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, x, 0.0, 3.0, 1.0]
+}
+
+/// The shuttle's centre x at time `t` of its 14 s timetable.
+fn shuttle_x(t: f64) -> f32 {
+    let (near, far) = (NEAR_DOCK as f64, FAR_DOCK as f64);
+    let u = t % 14.0;
+    (if u < 3.0 {
+        near
+    } else if u < 7.0 {
+        near + (far - near) * (u - 3.0) / 4.0
+    } else if u < 10.0 {
+        far
+    } else {
+        far - (far - near) * (u - 10.0) / 4.0
+    }) as f32
+}
+
+fn distance(a: [f32; 3], b: [f32; 3]) -> f32 {
+    ((a[0] - b[0]).powi(2) + (a[1] - b[1]).powi(2) + (a[2] - b[2]).powi(2)).sqrt()
+}
+
+#[test]
+fn a_ferry_carries_walkers_across_a_chasm() {
+    let world = World::new().unwrap();
+    add_box(&world, [0.0, -1.0, 0.0], [6.0, 0.0, 6.0]);
+    add_box(&world, [16.0, -1.0, 0.0], [22.0, 0.0, 6.0]);
+    let at_far = MeshOptions { flags: MESH_MOVABLE, transform: Some(shuttle_at(FAR_DOCK)), ..Default::default() };
+    let shuttle = add_box_with(&world, [-2.0, -0.5, -2.0], [2.0, 0.0, 2.0], &at_far);
+    let agent = AgentType { radius: 0.3, ..default_agent_type() };
+    let ledges_input = NavmeshInput {
+        polygon_vertex_counts: Some(&[4, 4]),
+        agent,
+        ..NavmeshInput::triangles(&FERRY_LEDGES, &[0, 1, 2, 3, 4, 5, 6, 7])
+    };
+    let ledges = world.add_navmesh(&ledges_input).unwrap();
+    let deck_input = NavmeshInput {
+        polygon_vertex_counts: Some(&[4]),
+        agent,
+        surface: Some(shuttle),
+        ..NavmeshInput::triangles(&SHUTTLE_TOP, &[0, 1, 2, 3])
+    };
+    let deck = world.add_navmesh(&deck_input).unwrap();
+    // The gangways: manual cross links whose requirements are taken as given (all zero: a gap of 0, walked,
+    // not jumped), each placed while the shuttle stands at its dock.
+    let gangway = |navmesh: NavmeshId, start: [f32; 3], landing: NavmeshId, end: [f32; 3]| -> LinkId {
+        let def = LinkDef { start, end, requirements_as_given: 1, ..default_link_def() }.with_landing(Some(landing));
+        assert_eq!((def.kind, def.requirements.gap), (link_kind::MANUAL, 0.0));
+        world.add_link(navmesh, &def).unwrap()
+    };
+    let leave = gangway(deck, [15.4, 0.0, 3.0], ledges, [16.6, 0.0, 3.0]);
+    world.set_mesh_transform(shuttle, &shuttle_at(NEAR_DOCK)).unwrap();
+    let board = gangway(ledges, [5.6, 0.0, 3.0], deck, [6.6, 0.0, 3.0]);
+    assert_eq!((world.link(board).unwrap().holds, world.link(leave).unwrap().holds), (1, 0));
+
+    let walkers: Vec<AgentId> = [2.0, 4.0]
+        .iter()
+        .map(|&z| {
+            let mut def = default_agent_def();
+            def.navmesh = ledges;
+            def.position = [2.0, 0.0, z];
+            def.capabilities.radius = 0.3;
+            let id = world.add_agent(&def).unwrap();
+            world.set_agent_destination(id, FERRY_GOAL).unwrap();
+            id
+        })
+        .collect();
+    let first = world.agent_info(walkers[0]).unwrap();
+    assert_eq!((first.navmesh, first.surface_mesh(), first.surface), (ledges, None, MeshId::default()), "on the near ledge");
+    assert_eq!(first.surface_position, first.position);
+
+    let mut arrived: Vec<(AgentId, AgentInfo)> = Vec::new();
+    let mut taken: Vec<(AgentId, LinkId)> = Vec::new();
+    let (mut waited, mut riding) = (0, 0);
+    let dt = 1.0 / 30.0;
+    let mut t = 4.0f64; // the shuttle has just left: the first to reach the gangway waits for it
+    for _ in 0..90 * 30 {
+        if arrived.len() == walkers.len() {
+            break;
+        }
+        t += dt;
+        let x = shuttle_x(t);
+        world.set_mesh_transform(shuttle, &shuttle_at(x)).unwrap();
+        world.step(dt as f32).unwrap();
+        for e in world.agent_events().unwrap() {
+            assert_ne!(e.kind, agent_event::FAILED, "t {}: {:?}", t, e);
+            if e.kind == agent_event::LINK_STARTED {
+                taken.push((e.agent, e.link));
+            }
+            if e.kind == agent_event::ARRIVED {
+                arrived.push((e.agent, world.agent_info(e.agent).unwrap()));
+            }
+        }
+        for info in world.agents().unwrap() {
+            if info.state == agent_state::WAITING && info.link == board {
+                waited += 1;
+            }
+            let context = format!("t {}, the shuttle at x {}: {:?}", t, x, info);
+            assert!(info.navmesh == ledges || info.navmesh == deck, "{}", context);
+            if [agent_state::JUMPING, agent_state::FALLING, agent_state::TRAVERSING].contains(&info.state) {
+                // In the air over a cross link (both gangways are): flown in the world.
+                assert!(distance(info.surface_position, info.position) < 1e-3, "in the air: {}", context);
+            } else if info.navmesh == deck {
+                // On the deck: riding the shuttle, whose centre is at (x, 0, 3), unturned.
+                riding += 1;
+                assert_eq!(info.surface_mesh(), Some(shuttle), "on the deck: {}", context);
+                let mapped = [info.position[0] - x, info.position[1], info.position[2] - 3.0];
+                assert!(distance(info.surface_position, mapped) < 1e-3, "on the deck: {}", context);
+            } else {
+                assert_eq!(info.surface_mesh(), None, "on a ledge: {}", context);
+                assert!(distance(info.surface_position, info.position) < 1e-3, "on a ledge: {}", context);
+            }
+        }
+    }
+
+    assert_eq!(arrived.len(), walkers.len(), "both arrived by t = {} s", t);
+    assert!(waited > 0, "an agent waited at the gangway for the shuttle (WAITING, info.link)");
+    assert!(riding > 0, "an agent stood on the shuttle's deck (navmesh, surface, surface_position)");
+    for &walker in &walkers {
+        assert!(taken.contains(&(walker, board)) && taken.contains(&(walker, leave)), "{:?} boarded and got off: {:?}", walker, taken);
+        let (_, info) = arrived.iter().find(|(id, _)| *id == walker).expect("arrived");
+        assert_eq!((info.state, info.navmesh, info.surface_mesh()), (agent_state::ARRIVED, ledges, None), "{:?}", info);
+        // Two bodies share the goal: they stand round it.
+        assert!(horizontal_distance(info.position, FERRY_GOAL) < 1.5, "{:?}", info.position);
+    }
 }
