@@ -110,7 +110,7 @@ NL_API nl_status nl_agent_add(nl_world* world, const nl_agent_def* def, nl_agent
         require(def, "def");
         require(out_id, "out_id");
         const nl::AgentDef core = nl::naming_fields("def->", [&] { return agent_from_def(*def); });
-        *out_id = to_id<nl_agent_id>(nl::naming_fields("def->", [&] { return w.agents().add(w.navmeshes(), core); }));
+        *out_id = to_id<nl_agent_id>(nl::naming_fields("def->", [&] { return w.add_agent(core); }));
     });
 }
 

@@ -59,6 +59,15 @@ bool NavMeshRegistry::carried_by(Handle mesh) const {
     return frame_of_mesh(mesh) != nullptr;
 }
 
+std::vector<Handle> NavMeshRegistry::riding(Handle mesh) const {
+    std::shared_lock lock(mutex_);
+    std::vector<Handle> out;
+    navmeshes_.for_each([&](Handle h, const Entry& e) {
+        if (e.frame && e.frame->mesh() == mesh) out.push_back(h);
+    });
+    return out;
+}
+
 void NavMeshRegistry::move_surface(Handle mesh, const Transform& to_world) {
     std::shared_lock lock(mutex_);
     if (const std::shared_ptr<SurfaceFrame> frame = frame_of_mesh(mesh)) frame->move(to_world);

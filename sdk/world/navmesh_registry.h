@@ -52,6 +52,8 @@ public:
     std::shared_ptr<const SurfaceFrame> frame(Handle navmesh) const;
     // Whether any navmesh rides `mesh`.
     bool carried_by(Handle mesh) const;
+    // The navmeshes that ride `mesh`, in the order added.
+    std::vector<Handle> riding(Handle mesh) const;
     // Places the navmeshes that ride `mesh` (if any) at `to_world`; nothing else changes.
     void move_surface(Handle mesh, const Transform& to_world);
 

@@ -55,6 +55,25 @@ Handle World::add_navmesh(const NavMeshInput& input, Handle surface) {
     return add_on_surface(std::move(navmesh), surface);
 }
 
+Handle World::add_agent(AgentDef def) {
+    if (within_coordinate_limit(def.position)) {
+        const Ray down{def.position + Vec3(0.0f, 0.5f, 0.0f), Vec3(0.0f, -1.0f, 0.0f), 3.0f};
+        RayHit hit;
+        level_->cast_rays(&down, 1, &hit);
+        if (hit.hit && navmeshes_.contains(def.navmesh)) {
+            const AgentType body = navmeshes_.navmesh(def.navmesh)->agent();
+            for (Handle on : navmeshes_.riding(hit.mesh)) {
+                const AgentType other = navmeshes_.navmesh(on)->agent();
+                if (other.radius == body.radius && other.height == body.height) {
+                    def.navmesh = on;
+                    break;
+                }
+            }
+        }
+    }
+    return agents_.add(navmeshes_, def);
+}
+
 void World::set_mesh_transform(Handle mesh, const Transform& transform) {
     std::lock_guard lock(surface_moves_);
     if (navmeshes_.carried_by(mesh) && !is_rigid(transform)) fail_field(ErrorCode::InvalidArgument, "transform", kNotRigid);

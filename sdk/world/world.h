@@ -63,6 +63,11 @@ public:
     Agents& agents() noexcept { return agents_; }
     const Agents& agents() const noexcept { return agents_; }
 
+    // Adds an agent (Agents::add) where it stands: when a ray down from def.position (from half a
+    // metre above, 3 m long) first meets a movable mesh that a navmesh for the same body as
+    // def.navmesh rides, the agent goes on that navmesh (it rides the platform it was put on).
+    Handle add_agent(AgentDef def);
+
     // Advances every agent by dt seconds on the world's task system (Agents::step).
     void step(float dt) { agents_.step(dt, navmeshes_, *tasks_); }
 

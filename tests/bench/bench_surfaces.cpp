@@ -32,6 +32,7 @@
 //   static copy. "agree" counts pairs whose paths have the same points (surface_position against the
 //   copy's position, within 1 cm). On a turned platform the ends' search box ((2, 4, 2) m in world
 //   axes) is searched as the box in the platform's axes that holds it: a larger box, more polygons.
+// - links: see run_links (cross links generated for a docked platform against the level's own links).
 // /rebuild: the row's median over the rebuild's median; /static: a moving row's median over its
 // static twin's (what riding costs: 1.00 is nothing).
 #include <navlink/navlink.h>
@@ -322,6 +323,58 @@ bool run(const Platform& platform, uint32_t seed, const Options& o) {
     return true;
 }
 
+// Links: the platform docked 1 m off the edge of a static level (grid-40's triangles as a static
+// mesh: ground, crates), its links to and from the level generated for where it stands
+// (nl_navmesh_generate_cross_links, what a host calls when the platform comes to rest), against the
+// anchor of generating the level's own links in full (nl_navmesh_generate_links), which is what
+// regenerating without a bounded search would cost. Milliseconds are given as microseconds, as above.
+bool run_links(const Platform& level, const Platform& platform, const Options& o) {
+    Side ground;
+    ground.name = "links";
+    nl_world_def def = nl_default_world_def();
+    def.worker_count = 1;
+    def.path_worker_count = 0;
+    if (NL_FAILED(nl_world_create(&def, &ground.world))) return fail(ground.name, "nl_world_create");
+    if (NL_FAILED(nl::test::add_generated_level(ground.world, level.mesh, 0, nullptr, &ground.mesh)))
+        return fail(ground.name, "nl_mesh_add");
+    if (!ground.build(false, &ground.navmesh)) return false;
+    Side deck;  // the platform, in the ground's world (which the ground side owns)
+    deck.name = "links";
+    deck.pose = RigidPose::at(level.half + 1.0f + platform.half, 0.0f, 0.0f, 0.0f, 0.0f);
+    if (NL_FAILED(nl::test::add_generated_level(ground.world, platform.mesh, NL_MESH_MOVABLE, deck.pose.m, &deck.mesh)))
+        return fail(deck.name, "nl_mesh_add");
+    deck.world = ground.world;
+    const bool built = deck.build(true, &deck.navmesh);
+    deck.world = nullptr;
+    if (!built) return false;
+    nl_link_settings settings = nl_default_link_settings();
+    std::vector<double> level_us, cross_us;
+    nl_link_generation_report report = nl_link_generation_report_init();
+    uint32_t level_links = 0, cross_links = 0;
+    for (int r = 0; r < o.repeats; ++r) {
+        double t0 = nl::samples::now_ms();
+        if (NL_FAILED(nl_navmesh_generate_links(ground.world, ground.navmesh, &settings, nullptr, nullptr, &report)))
+            return fail(ground.name, "nl_navmesh_generate_links");
+        level_us.push_back(1000.0 * (nl::samples::now_ms() - t0));
+        level_links = report.jump_links + report.drop_links;
+        t0 = nl::samples::now_ms();
+        if (NL_FAILED(nl_navmesh_generate_cross_links(ground.world, ground.navmesh, deck.navmesh, 0.25f, &settings, nullptr,
+                                                      nullptr, &report)))
+            return fail(ground.name, "nl_navmesh_generate_cross_links");
+        cross_us.push_back(1000.0 * (nl::samples::now_ms() - t0));
+        cross_links = report.jump_links + report.drop_links;
+    }
+    std::printf("# links: %s docked 1 m off the edge of %s (static): %u links of the level's own, %u between them; "
+                "/rebuild here is over the level's full generation\n",
+                platform.name.c_str(), level.name.c_str(), level_links, cross_links);
+    const Spread whole = nl::bench::spread(level_us);
+    const double nan = std::nan("");
+    row("links", "level, full", "-", whole, whole.median, nan);
+    row("links", "cross, docked", "-", nl::bench::spread(cross_us), whole.median, nan);
+    std::fflush(stdout);
+    return cross_links > 0 || fail(ground.name, "no cross link found for the docked platform");
+}
+
 std::vector<Platform> platforms() {
     std::vector<Platform> out(2);
     out[0].name = "box-12";
@@ -375,6 +428,8 @@ int main(int argc, char** argv) {
                 "/rebuild", "/static");
     bool ok = true;
     uint32_t seed = 1;
-    for (const Platform& p : platforms()) ok = run(p, seed++, o) && ok;
+    const std::vector<Platform> all = platforms();
+    for (const Platform& p : all) ok = run(p, seed++, o) && ok;
+    ok = run_links(all[1], all[0], o) && ok;
     return ok ? 0 : 1;
 }

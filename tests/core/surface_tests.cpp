@@ -507,3 +507,30 @@ TEST_CASE("links between a ledge and a platform are generated for where the plat
     CHECK(arrived == int(agents.size()));
     CHECK(inside == 0);
 }
+
+TEST_CASE("an agent put on a platform stands on the platform's navmesh: found by a ray down") {
+    Ferry f;
+    nl::AgentDef def;
+    def.navmesh = f.ledges;  // the host names the ground's navmesh for this body
+    def.capabilities.radius = 0.3f;
+    def.position = Vec3(8.5f, 0.0f, 3.5f);  // on the shuttle, docked at the near ledge
+    const Handle rider = f.world->add_agent(def);
+    CHECK(f.world->agents().info(rider).navmesh == f.deck);
+    CHECK(f.world->agents().info(rider).surface == f.shuttle);
+    def.position = Vec3(2.0f, 0.0f, 3.0f);  // on the ledge
+    CHECK(f.world->agents().info(f.world->add_agent(def)).navmesh == f.ledges);
+    // A body the platform's navmesh was not made for stays on the navmesh it was given.
+    nl::NavMeshInput wide;
+    wide.vertices = {{0.6f, 0, 0.6f}, {0.6f, 0, 5.4f}, {5.4f, 0, 5.4f}, {5.4f, 0, 0.6f}};
+    wide.indices = {0, 1, 2, 3};
+    wide.polygon_sizes = {4};
+    wide.agent.radius = 0.6f;
+    def.navmesh = f.world->add_navmesh(wide);
+    def.position = Vec3(8.5f, 0.0f, 3.5f);
+    def.capabilities.radius = 0.6f;
+    check_refused([&] { f.world->add_agent(def); }, nl::ErrorCode::NotFound, "position is not on the navmesh");
+    // The shuttle carries the rider away.
+    f.world->set_mesh_transform(f.shuttle, Ferry::at(11.0f));
+    f.world->step(1.0f / 30.0f);
+    CHECK(f.world->agents().info(rider).position.x() == doctest::Approx(11.5f).epsilon(0.01));
+}

@@ -1236,7 +1236,10 @@ typedef uint32_t nl_agent_reason;
 /** How to add an agent. Get one from nl_default_agent_def(). */
 typedef struct nl_agent_def {
     uint32_t size;                      /**< sizeof(nl_agent_def). */
-    nl_navmesh_id navmesh;              /**< The navmesh of its agent type. */
+    nl_navmesh_id navmesh;              /**< The navmesh of its agent type. Where `position` stands on a
+                                             movable mesh that a navmesh for the same body rides (found
+                                             by a ray down), the agent goes on that one: it rides the
+                                             platform it was put on (nl_agent_info.navmesh says so). */
     float height;                       /**< Body height, metres (default 2; > 0). */
     nl_agent_capabilities capabilities; /**< What its body can do (the links it takes) and its radius. */
     float max_speed;                    /**< Walking speed, m/s (default 3.5; > 0). It also walks a drop's
