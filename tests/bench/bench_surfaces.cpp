@@ -324,10 +324,11 @@ bool run(const Platform& platform, uint32_t seed, const Options& o) {
 }
 
 // Links: the platform docked 1 m off the edge of a static level (grid-40's triangles as a static
-// mesh: ground, crates), its links to and from the level generated for where it stands
+// mesh: ground, crates; beside it, 200 m along x, the shared level dungeon.obj, so that the level has
+// links of its own to generate), its links to and from the level generated for where it stands
 // (nl_navmesh_generate_cross_links, what a host calls when the platform comes to rest), against the
 // anchor of generating the level's own links in full (nl_navmesh_generate_links), which is what
-// regenerating without a bounded search would cost. Milliseconds are given as microseconds, as above.
+// regenerating without a bounded search would cost.
 bool run_links(const Platform& level, const Platform& platform, const Options& o) {
     Side ground;
     ground.name = "links";
@@ -337,6 +338,12 @@ bool run_links(const Platform& level, const Platform& platform, const Options& o
     if (NL_FAILED(nl_world_create(&def, &ground.world))) return fail(ground.name, "nl_world_create");
     if (NL_FAILED(nl::test::add_generated_level(ground.world, level.mesh, 0, nullptr, &ground.mesh)))
         return fail(ground.name, "nl_mesh_add");
+    const RigidPose aside = RigidPose::at(200.0f, 0.0f, 0.0f, 0.0f);
+    nl_mesh_def dungeon = nl_default_mesh_def();
+    dungeon.transform = aside.m;
+    nl_mesh_id ignored{};
+    if (NL_FAILED(nl_mesh_add_obj_file(ground.world, NAVLINK_LEVELS_DIR "/dungeon.obj", &dungeon, &ignored)))
+        return fail(ground.name, "nl_mesh_add_obj_file");
     if (!ground.build(false, &ground.navmesh)) return false;
     Side deck;  // the platform, in the ground's world (which the ground side owns)
     deck.name = "links";
@@ -364,7 +371,7 @@ bool run_links(const Platform& level, const Platform& platform, const Options& o
         cross_us.push_back(1000.0 * (nl::samples::now_ms() - t0));
         cross_links = report.jump_links + report.drop_links;
     }
-    std::printf("# links: %s docked 1 m off the edge of %s (static): %u links of the level's own, %u between them; "
+    std::printf("# links: %s docked 1 m off the edge of %s (static, with dungeon.obj beside it): %u links of the level's own, %u between them; "
                 "/rebuild here is over the level's full generation\n",
                 platform.name.c_str(), level.name.c_str(), level_links, cross_links);
     const Spread whole = nl::bench::spread(level_us);
