@@ -495,6 +495,8 @@ void Agents::step(float dt, const NavMeshRegistry& navmeshes, TaskSystem& tasks)
         // take-off and landing are not the link's any more.
         if (usable && a.next + 1 < a.path.size())
             usable = (motion.from() - point.position).norm() < kSameEnd && (motion.to() - a.path[a.next + 1].position).norm() < kSameEnd;
+        // A cross link whose landing navmesh was removed meanwhile leads nowhere: plan again.
+        if (usable && link.crosses() && !graph_of(link.landing_navmesh)) usable = false;
         if (!usable) {
             a.at_takeoff = false;
             a.link = Handle{};
@@ -504,7 +506,6 @@ void Agents::step(float dt, const NavMeshRegistry& navmeshes, TaskSystem& tasks)
             continue;
         }
         if (usable && link.crosses()) {
-            graph_of(link.landing_navmesh);
             if (!table.holds(a.def.navmesh, link)) {
                 // Its other end is not where it was placed (the platform is away): wait for it here.
                 a.state = AgentState::Waiting;

@@ -107,6 +107,12 @@ public:
             if (slots_[i].value) fn(handle_at(i), *slots_[i].value);
         }
     }
+    template <typename Fn>
+    void for_each(Fn&& fn) {
+        for (uint32_t i = 0; i < slots_.size(); ++i) {
+            if (slots_[i].value) fn(handle_at(i), *slots_[i].value);
+        }
+    }
 
     uint32_t size() const noexcept { return live_; }
     // Slots whose generations are used up.

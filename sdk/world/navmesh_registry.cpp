@@ -78,6 +78,11 @@ void NavMeshRegistry::remove(Handle navmesh) {
     Entry& e = entry(navmesh);
     for (Handle id : e.link_ids) links_.erase(id);
     navmeshes_.erase(navmesh);
+    // The cross links that land on it lead nowhere now. Last: should one of these erasures fail to
+    // allocate, the navmesh is gone all the same, and a link left behind never holds.
+    navmeshes_.for_each([&](Handle, Entry& other) {
+        erase_links(other, [&](const Link& l) { return l.landing_navmesh == navmesh; });
+    });
 }
 
 bool NavMeshRegistry::contains(Handle navmesh) const {

@@ -42,7 +42,8 @@ public:
     // `to_world` now; navmeshes on one mesh share its frame.
     Handle add(std::shared_ptr<const NavMesh> navmesh, Handle surface = Handle{},
                const Transform& to_world = Transform::Identity());
-    // Removes the navmesh, its links, its last generation and its path graph together. Readers that
+    // Removes the navmesh, its links, its last generation and its path graph together, and the cross
+    // links of other navmeshes that land on it. Readers that
     // hold its navmesh, a snapshot or a graph keep them; a generation that finishes later keeps nothing.
     void remove(Handle navmesh);
     bool contains(Handle navmesh) const;

@@ -534,3 +534,27 @@ TEST_CASE("an agent put on a platform stands on the platform's navmesh: found by
     f.world->step(1.0f / 30.0f);
     CHECK(f.world->agents().info(rider).position.x() == doctest::Approx(11.5f).epsilon(0.01));
 }
+
+TEST_CASE("removing the platform's navmesh removes the cross links onto it; an agent waiting for it plans again") {
+    Ferry f;
+    nl::AgentDef def;
+    def.navmesh = f.ledges;
+    def.capabilities.radius = 0.3f;
+    def.position = Vec3(2, 0, 3);
+    const Handle agent = f.world->add_agent(def);
+    f.world->set_mesh_transform(f.shuttle, Ferry::at(11.0f));  // away: the agent will wait at the dock
+    f.world->agents().set_destination(f.world->navmeshes(), agent, Vec3(20, 0, 3));
+    for (int k = 0; k < 90 && f.world->agents().info(agent).link != f.board; ++k) f.world->step(1.0f / 30.0f);
+    REQUIRE(f.world->agents().info(agent).state == AgentState::Waiting);
+    REQUIRE(f.world->agents().info(agent).link == f.board);
+    f.world->navmeshes().remove(f.deck);
+    CHECK_FALSE(f.world->navmeshes().contains_link(f.board));
+    for (const nl::StoredLink& s : *f.world->navmeshes().links(f.ledges)) CHECK_FALSE(s.link.crosses());
+    f.world->step(1.0f / 30.0f);
+    f.world->step(1.0f / 30.0f);
+    // No way across any more: it went as near as it could and failed, saying why.
+    for (int k = 0; k < 60 && f.world->agents().info(agent).state != AgentState::Failed; ++k) f.world->step(1.0f / 30.0f);
+    CHECK(f.world->agents().info(agent).state == AgentState::Failed);
+    CHECK(f.world->agents().info(agent).reason == nl::AgentReason::NoPath);
+    f.world->remove_mesh(f.shuttle);  // nothing rides it now
+}

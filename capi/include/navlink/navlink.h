@@ -498,7 +498,8 @@ NL_API nl_navmesh_def nl_default_navmesh_def(void);
  *  is added), OUT_OF_MEMORY. Thread-safe. */
 NL_API nl_status nl_navmesh_add(nl_world* world, const nl_navmesh_def* def, nl_navmesh_id* out_id);
 
-/** Removes a navmesh and its links. Queries already running on it finish on their own copy.
+/** Removes a navmesh and its links, and the cross links of other navmeshes that land on it.
+ *  Queries already running on it finish on their own copy.
  *  Returns SUCCESS or INVALID_HANDLE. Thread-safe. */
 NL_API nl_status nl_navmesh_remove(nl_world* world, nl_navmesh_id navmesh);
 
