@@ -7,6 +7,7 @@
 
 #include "agents/agent_motion.h"
 #include "agents/agent_state.h"
+#include "agents/flight_check.h"
 #include "agents/path_upkeep.h"
 #include "agents/route.h"
 #include "links/link_placement.h"
@@ -274,7 +275,7 @@ uint32_t Agents::count() const {
     return static_cast<uint32_t>(agents_.size());
 }
 
-void Agents::step(float dt, const NavMeshRegistry& navmeshes, TaskSystem& tasks) {
+void Agents::step(float dt, const NavMeshRegistry& navmeshes, const Level& level, TaskSystem& tasks) {
     if (!(dt >= 0.0f) || !std::isfinite(dt)) fail_field(ErrorCode::InvalidArgument, "dt is ", dt, " (must be finite and >= 0)");
     if (dt == 0.0f) return;  // does nothing: the last step's events stay too
     std::unique_lock lock(mutex_);
@@ -519,7 +520,11 @@ void Agents::step(float dt, const NavMeshRegistry& navmeshes, TaskSystem& tasks)
                 a.link = point.link;
                 continue;
             }
-            take_off_across(a, link, point.link, body, table);
+            if (!take_off_across(a, link, point.link, body, table, level)) {
+                a.state = AgentState::Waiting;  // its aim would meet the level: it waits for a clear one
+                a.link = point.link;
+                continue;
+            }
             flying.push_back(static_cast<uint32_t>(i));
             continue;
         }
@@ -572,7 +577,8 @@ void Agents::remember_poses(const StepNavMeshes& table, float dt) {
     last_dt_ = dt;
 }
 
-void Agents::take_off_across(AgentBody& a, const Link& link, Handle id, const BodyMotion& body, const StepNavMeshes& table) {
+bool Agents::take_off_across(AgentBody& a, const Link& link, Handle id, const BodyMotion& body, const StepNavMeshes& table,
+                             const Level& level) {
     const StepNavMesh& from = *table.find(a.def.navmesh);
     const StepNavMesh& to = *table.find(link.landing_navmesh);
     Link flight = link_in_world(link, from.pose, to.pose);
@@ -582,17 +588,24 @@ void Agents::take_off_across(AgentBody& a, const Link& link, Handle id, const Bo
     const Vec3 aim = flight.end;
     flight.end = aim + drift * LinkMotion(flight, false, body).duration();
     flight.end = aim + drift * LinkMotion(flight, false, body).duration();
+    const LinkMotion motion(flight, false, body);
+    // Off the placed arc (the surface moves, or stands elsewhere within the link's tolerance): the
+    // generator's proof does not cover it, so it is swept again, against the level as it stands.
+    const bool as_proven = (flight.end - link_in_world(link, from.pose, to.pose).end).norm() < kSameEnd &&
+                           (from.pose.surface_point(to.pose.world_point(link.end)) - link.placed_end).norm() < kSameEnd;
+    if (!as_proven && !flight_is_clear(motion, a.def.capabilities.radius, a.def.height, level)) return false;
     a.position = from.pose.world_point(a.position);
     a.velocity = Vec3::Zero();
     a.frame.reset();  // in the air over no surface: world space until it lands
     a.at_takeoff = false;
-    a.motion = LinkMotion(flight, false, body);
+    a.motion = motion;
     a.motion_time = 0.0f;
     a.link = id;
     a.landing_navmesh = link.landing_navmesh;
     a.landing_polygon = link.end_polygon;
     a.state = state_of(a.motion->kind());
     a.emit(AgentEventKind::LinkStarted, AgentReason::None, id);
+    return true;
 }
 
 void Agents::land_across(AgentBody& a, const std::shared_ptr<const PathGraph>& graph, const StepNavMeshes& table) {

@@ -28,6 +28,7 @@
 
 #include "agents/agent.h"
 #include "agents/route.h"
+#include "level/level.h"
 #include "motion/link_motion.h"
 #include "path/path_graph.h"
 #include "util/handle.h"
@@ -75,7 +76,9 @@ public:
 
     // Advances every agent by dt seconds (>= 0, finite). Throws nothing for an agent's trouble: the
     // agent fails, with its event.
-    void step(float dt, const NavMeshRegistry& navmeshes, TaskSystem& tasks);
+    // A flight over a cross link aimed off the arc its link was proven on is swept again against
+    // `level` at take-off (flight_check.h), the level's lock taken after the agents'.
+    void step(float dt, const NavMeshRegistry& navmeshes, const Level& level, TaskSystem& tasks);
 
     AgentInfo info(Handle agent) const;
     std::vector<AgentInfo> infos() const;  // every agent, in a stable order (until one is removed)
@@ -111,7 +114,9 @@ private:
 
     // Take-off over a cross link that holds: the body flies in world space to where the landing
     // point will be when it lands (the landing surface's motion over the last step carried on).
-    void take_off_across(AgentBody& a, const Link& link, Handle id, const BodyMotion& body, const StepNavMeshes& table);
+    // Returns false, changing nothing, when that flight would meet the level (it waits and tries again).
+    bool take_off_across(AgentBody& a, const Link& link, Handle id, const BodyMotion& body, const StepNavMeshes& table,
+                         const Level& level);
     // A body landed over a cross link goes onto its landing navmesh (`graph`, null if removed).
     void land_across(AgentBody& a, const std::shared_ptr<const PathGraph>& graph, const StepNavMeshes& table);
     // How fast the surface point `p` (in the space of the navmesh placed at `now`) moved over the last step.

@@ -69,7 +69,7 @@ public:
     Handle add_agent(AgentDef def);
 
     // Advances every agent by dt seconds on the world's task system (Agents::step).
-    void step(float dt) { agents_.step(dt, navmeshes_, *tasks_); }
+    void step(float dt) { agents_.step(dt, navmeshes_, *level_, *tasks_); }
 
     // A host's navmesh: validated, repaired (logged as a warning) and added. Throws as build_navmesh.
     // `surface`: the movable mesh it rides (null: none); its polygons are then in that mesh's own
