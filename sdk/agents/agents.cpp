@@ -465,7 +465,24 @@ void Agents::step(float dt, const NavMeshRegistry& navmeshes, const Level& level
     for (size_t i = 0; i < n; ++i) {
         AgentBody& a = agents_[i];
         if (a.motion || a.landing_navmesh == Handle{} || a.state == AgentState::Failed) continue;
-        land_across(a, graph_of(a.landing_navmesh), table);
+        // Found by a ray down: the surface under the body, if a navmesh for its body rides it (the
+        // aim was off and it came down on another platform), else the link's landing navmesh.
+        Handle onto = a.landing_navmesh;
+        const Ray down{a.position + Vec3(0.0f, 0.5f, 0.0f), Vec3(0.0f, -1.0f, 0.0f), 3.0f};
+        RayHit hit;
+        level.cast_rays(&down, 1, &hit);
+        const std::shared_ptr<const PathGraph> planned = graph_of(a.landing_navmesh);
+        if (hit.hit && planned) {
+            for (Handle riding : navmeshes.riding(hit.mesh)) {
+                const std::shared_ptr<const PathGraph> g = graph_of(riding);
+                if (g && g->navmesh().agent().radius == planned->navmesh().agent().radius &&
+                    g->navmesh().agent().height == planned->navmesh().agent().height) {
+                    onto = riding;
+                    break;
+                }
+            }
+        }
+        land_across(a, onto, graph_of(onto), table);
     }
 
     // 4. Take-offs, in agent order: the link checked as it is now, and its landing clear.
@@ -608,8 +625,8 @@ bool Agents::take_off_across(AgentBody& a, const Link& link, Handle id, const Bo
     return true;
 }
 
-void Agents::land_across(AgentBody& a, const std::shared_ptr<const PathGraph>& graph, const StepNavMeshes& table) {
-    const Handle navmesh = a.landing_navmesh;
+void Agents::land_across(AgentBody& a, Handle navmesh, const std::shared_ptr<const PathGraph>& graph,
+                         const StepNavMeshes& table) {
     a.landing_navmesh = Handle{};
     if (!graph) {
         a.fail(AgentReason::NavMeshRemoved);

@@ -117,8 +117,9 @@ private:
     // Returns false, changing nothing, when that flight would meet the level (it waits and tries again).
     bool take_off_across(AgentBody& a, const Link& link, Handle id, const BodyMotion& body, const StepNavMeshes& table,
                          const Level& level);
-    // A body landed over a cross link goes onto its landing navmesh (`graph`, null if removed).
-    void land_across(AgentBody& a, const std::shared_ptr<const PathGraph>& graph, const StepNavMeshes& table);
+    // A body landed over a cross link goes onto `navmesh` (`graph`, null if removed): the link's
+    // landing navmesh, or the one a ray down found under it.
+    void land_across(AgentBody& a, Handle navmesh, const std::shared_ptr<const PathGraph>& graph, const StepNavMeshes& table);
     // How fast the surface point `p` (in the space of the navmesh placed at `now`) moved over the last step.
     Vec3 surface_velocity(const std::shared_ptr<const SurfaceFrame>& frame, const SurfacePose& now, const Vec3& p) const;
     void remember_poses(const StepNavMeshes& table, float dt);

@@ -619,3 +619,41 @@ TEST_CASE("a jump aimed where a moving surface will be is swept again: it waits 
     CHECK(open.on_deck);
     CHECK(blocked.on_deck);
 }
+
+TEST_CASE("a body that comes down on another platform than the one it aimed at lands on that platform: found by a ray down") {
+    Ferry f;
+    // A second shuttle, out of the way, with a navmesh for the same body.
+    nl::levelgen::GeneratedLevel box;
+    box.add_box({{-2, -0.5f, -2}, {2, 0, 2}});
+    const Handle spare = f.world->level().add_mesh(nl::test::to_triangle_mesh(box), Ferry::at(30.0f), nl::kMeshMovable, 0);
+    nl::NavMeshInput top;
+    top.vertices = {{-1.7f, 0, -1.7f}, {-1.7f, 0, 1.7f}, {1.7f, 0, 1.7f}, {1.7f, 0, -1.7f}};
+    top.indices = {0, 1, 2, 3};
+    top.polygon_sizes = {4};
+    top.agent.radius = 0.3f;
+    const Handle spare_deck = f.world->add_navmesh(top, spare);
+    nl::AgentDef def;
+    def.navmesh = f.ledges;
+    def.capabilities.radius = 0.3f;
+    def.position = Vec3(5.0f, 0, 3);
+    const Handle walker = f.world->add_agent(def);
+    f.world->agents().set_destination(f.world->navmeshes(), walker, Ferry::at(Ferry::kNearDock) * Vec3(1, 0, 0));
+    bool swapped = false;
+    for (int k = 0; k < 120; ++k) {
+        f.world->step(1.0f / 60.0f);
+        for (const nl::AgentEvent& e : f.world->agents().events()) {
+            if (e.kind != nl::AgentEventKind::LinkStarted || swapped) continue;
+            // In the air on the gangway: the shuttle leaves and the spare one takes its place.
+            f.world->set_mesh_transform(f.shuttle, Ferry::at(11.0f));
+            f.world->set_mesh_transform(spare, Ferry::at(Ferry::kNearDock));
+            swapped = true;
+        }
+    }
+    REQUIRE(swapped);
+    const nl::AgentInfo info = f.world->agents().info(walker);
+    CHECK(info.navmesh == spare_deck);
+    CHECK(info.surface == spare);
+    // Its destination is on the shuttle it aimed at, which no link joins to the spare one: it says so.
+    CHECK(info.state == AgentState::Failed);
+    CHECK(info.reason == nl::AgentReason::NoPath);
+}
