@@ -103,7 +103,7 @@ void navmesh_get_info(const World& world, nl_navmesh_id navmesh, nl_navmesh_info
 void navmesh_get_boundary_edges(const World& world, nl_navmesh_id navmesh, nl_boundary_edge* out_edges, uint32_t capacity,
                                 uint32_t* out_count) {
     const auto mesh = world.navmeshes().navmesh(to_handle(navmesh));
-    const nl::SurfacePose pose = nl::pose_of(world.navmeshes().frame(to_handle(navmesh)));
+    const nl::SurfacePose pose = world.navmesh_pose(to_handle(navmesh));
     list_into(mesh->boundary_edges(), out_edges, capacity, out_count, "out_edges", [&](const BoundaryEdge& e) {
         nl_boundary_edge out{};
         copy_point(out.start, pose.world_point(e.start));
@@ -119,7 +119,7 @@ void navmesh_get_boundary_edges(const World& world, nl_navmesh_id navmesh, nl_bo
 void navmesh_find_nearest(const World& world, nl_navmesh_id navmesh, const float* points, uint32_t count,
                           const float* half_extents, nl_nav_point* out) {
     const auto mesh = world.navmeshes().navmesh(to_handle(navmesh));
-    const nl::SurfacePose pose = nl::pose_of(world.navmeshes().frame(to_handle(navmesh)));
+    const nl::SurfacePose pose = world.navmesh_pose(to_handle(navmesh));
     require(half_extents, "half_extents");
     const Vec3 extents(half_extents[0], half_extents[1], half_extents[2]);
     if (!(extents.array() > 0.0f).all() || !within_coordinate_limit(extents))
@@ -190,7 +190,7 @@ NL_API nl_status nl_navmesh_get_vertices(const nl_world* world, nl_navmesh_id na
                                          uint32_t capacity, uint32_t* out_count) {
     return guarded("nl_navmesh_get_vertices", world, [&] {
         const auto mesh = deref(world).navmeshes().navmesh(to_handle(navmesh));
-        const nl::SurfacePose pose = nl::pose_of(deref(world).navmeshes().frame(to_handle(navmesh)));
+        const nl::SurfacePose pose = deref(world).navmesh_pose(to_handle(navmesh));
         nl::capi::list_into(mesh->vertex_count(), out_xyz, capacity, out_count, "out_xyz", [&] {
             for (uint32_t i = 0; i < mesh->vertex_count(); ++i) copy_point(out_xyz + 3 * size_t(i), pose.world_point(mesh->vertex(i)));
         });
@@ -201,7 +201,7 @@ NL_API nl_status nl_navmesh_get_polygon(const nl_world* world, nl_navmesh_id nav
                                         nl_nav_polygon* out_polygon) {
     return guarded("nl_navmesh_get_polygon", world, [&] {
         const auto mesh = deref(world).navmeshes().navmesh(to_handle(navmesh));
-        const nl::SurfacePose pose = nl::pose_of(deref(world).navmeshes().frame(to_handle(navmesh)));
+        const nl::SurfacePose pose = deref(world).navmesh_pose(to_handle(navmesh));
         require(out_polygon, "out_polygon");
         if (polygon >= mesh->polygon_count())
             fail(ErrorCode::InvalidArgument, "polygon ", polygon, " is out of range (polygon_count = ", mesh->polygon_count(), ")");

@@ -473,14 +473,8 @@ void Agents::step(float dt, const NavMeshRegistry& navmeshes, const Level& level
         level.cast_rays(&down, 1, &hit);
         const std::shared_ptr<const PathGraph> planned = graph_of(a.landing_navmesh);
         if (hit.hit && planned) {
-            for (Handle riding : navmeshes.riding(hit.mesh)) {
-                const std::shared_ptr<const PathGraph> g = graph_of(riding);
-                if (g && g->navmesh().agent().radius == planned->navmesh().agent().radius &&
-                    g->navmesh().agent().height == planned->navmesh().agent().height) {
-                    onto = riding;
-                    break;
-                }
-            }
+            const Handle under = navmeshes.riding(hit.mesh, planned->navmesh().agent());
+            if (under != Handle{}) onto = under;
         }
         land_across(a, onto, graph_of(onto), table);
     }
@@ -608,7 +602,7 @@ bool Agents::take_off_across(AgentBody& a, const Link& link, Handle id, const Bo
     const LinkMotion motion(flight, false, body);
     // Off the placed arc (the surface moves, or stands elsewhere within the link's tolerance): the
     // generator's proof does not cover it, so it is swept again, against the level as it stands.
-    const bool as_proven = (flight.end - link_in_world(link, from.pose, to.pose).end).norm() < kSameEnd &&
+    const bool as_proven = (flight.end - aim).norm() < kSameEnd &&
                            (from.pose.surface_point(to.pose.world_point(link.end)) - link.placed_end).norm() < kSameEnd;
     if (!as_proven && !flight_is_clear(motion, a.def.capabilities.radius, a.def.height, level)) return false;
     a.position = from.pose.world_point(a.position);

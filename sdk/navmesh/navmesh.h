@@ -22,6 +22,10 @@ struct AgentType {
     float max_slope = 45.0f;  // degrees
 };
 
+// Whether one body fits both (navmeshes eroded by the same radius, with the same headroom): a link
+// or an agent made for one serves the other.
+inline bool same_body(const AgentType& a, const AgentType& b) { return a.radius == b.radius && a.height == b.height; }
+
 struct BoundaryEdge {
     Vec3 start;    // in the polygon's counter-clockwise order
     Vec3 end;

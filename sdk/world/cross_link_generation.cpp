@@ -59,7 +59,7 @@ LinkGenerationReport World::generate_cross_links(Handle first, Handle second, co
         fail_field(ErrorCode::InvalidArgument, "tolerance", " is ", tolerance, " (must be finite and >= 0)");
     const std::shared_ptr<const NavMesh> a = navmeshes_.navmesh(first), b = navmeshes_.navmesh(second);
     const SurfacePose pa = pose_of(navmeshes_.frame(first)), pb = pose_of(navmeshes_.frame(second));
-    if (a->agent().radius != b->agent().radius || a->agent().height != b->agent().height)
+    if (!same_body(a->agent(), b->agent()))
         fail(ErrorCode::InvalidArgument, "the two navmeshes were made for different bodies (radius ", a->agent().radius, " and ",
              b->agent().radius, ", height ", a->agent().height, " and ", b->agent().height, "): a link between them fits neither");
 

@@ -59,13 +59,13 @@ bool NavMeshRegistry::carried_by(Handle mesh) const {
     return frame_of_mesh(mesh) != nullptr;
 }
 
-std::vector<Handle> NavMeshRegistry::riding(Handle mesh) const {
+Handle NavMeshRegistry::riding(Handle mesh, const AgentType& body) const {
     std::shared_lock lock(mutex_);
-    std::vector<Handle> out;
+    Handle found;
     navmeshes_.for_each([&](Handle h, const Entry& e) {
-        if (e.frame && e.frame->mesh() == mesh) out.push_back(h);
+        if (found == Handle{} && e.frame && e.frame->mesh() == mesh && same_body(e.navmesh->agent(), body)) found = h;
     });
-    return out;
+    return found;
 }
 
 void NavMeshRegistry::move_surface(Handle mesh, const Transform& to_world) {

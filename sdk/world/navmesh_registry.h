@@ -53,8 +53,9 @@ public:
     std::shared_ptr<const SurfaceFrame> frame(Handle navmesh) const;
     // Whether any navmesh rides `mesh`.
     bool carried_by(Handle mesh) const;
-    // The navmeshes that ride `mesh`, in the order added.
-    std::vector<Handle> riding(Handle mesh) const;
+    // The first navmesh (in the order added) that rides `mesh` and was made for `body` (same_body);
+    // null when none does.
+    Handle riding(Handle mesh, const AgentType& body) const;
     // Places the navmeshes that ride `mesh` (if any) at `to_world`; nothing else changes.
     void move_surface(Handle mesh, const Transform& to_world);
 

@@ -61,14 +61,8 @@ Handle World::add_agent(AgentDef def) {
         RayHit hit;
         level_->cast_rays(&down, 1, &hit);
         if (hit.hit && navmeshes_.contains(def.navmesh)) {
-            const AgentType body = navmeshes_.navmesh(def.navmesh)->agent();
-            for (Handle on : navmeshes_.riding(hit.mesh)) {
-                const AgentType other = navmeshes_.navmesh(on)->agent();
-                if (other.radius == body.radius && other.height == body.height) {
-                    def.navmesh = on;
-                    break;
-                }
-            }
+            const Handle on = navmeshes_.riding(hit.mesh, navmeshes_.navmesh(def.navmesh)->agent());
+            if (on != Handle{}) def.navmesh = on;
         }
     }
     return agents_.add(navmeshes_, def);
