@@ -280,7 +280,10 @@ void Agents::step(float dt, const NavMeshRegistry& navmeshes, const Level& level
     if (dt == 0.0f) return;  // does nothing: the last step's events stay too
     std::unique_lock lock(mutex_);
     events_.clear();
-    if (agents_.empty()) return;
+    if (agents_.empty()) {
+        motions_.remember(level.movable_meshes(), dt);
+        return;
+    }
 
     // 1. The world as it is now: each navmesh's graph, looked up once.
     StepNavMeshes table;  // each navmesh's graph and pose at this moment, looked up once
@@ -380,8 +383,7 @@ void Agents::step(float dt, const NavMeshRegistry& navmeshes, const Level& level
     }
     for (size_t t = 0; t < table.all().size() && !routes; ++t)
         routes = table.all()[t].graph && table.all()[t].graph->has_cross_links();
-    // Every navmesh, then: routes may cross any of them, and a jump onto one aims by its motion
-    // since the last step (remember_poses).
+    // Every navmesh, then: routes may cross any of them.
     if (routes)
         for (Handle h : navmeshes.handles()) graph_of(h);
     tasks.parallel_for(static_cast<uint32_t>(asking.size()), 1, [&](uint32_t begin, uint32_t end) {
@@ -568,24 +570,10 @@ void Agents::step(float dt, const NavMeshRegistry& navmeshes, const Level& level
         flying.push_back(static_cast<uint32_t>(i));
     }
 
-    remember_poses(table, dt);
+    motions_.remember(level.movable_meshes(), dt);
     for (const AgentBody& a : agents_) events_.insert(events_.end(), a.step_events.begin(), a.step_events.end());
     const size_t stuck = static_cast<size_t>(std::count(unmoved.begin(), unmoved.end(), uint8_t{1}));
     if (stuck > 0) fail(ErrorCode::OutOfMemory, stuck, " agents could not move in this step (out of memory); the others did");
-}
-
-Vec3 Agents::surface_velocity(const std::shared_ptr<const SurfaceFrame>& frame, const SurfacePose& now, const Vec3& p) const {
-    if (!frame || !(last_dt_ > 0.0f)) return Vec3::Zero();
-    for (const auto& [seen, pose] : last_poses_)
-        if (seen.lock() == frame) return (now.world_point(p) - pose.world_point(p)) / last_dt_;
-    return Vec3::Zero();
-}
-
-void Agents::remember_poses(const StepNavMeshes& table, float dt) {
-    last_poses_.clear();
-    for (const StepNavMesh& n : table.all())
-        if (n.graph && n.graph->frame()) last_poses_.emplace_back(n.graph->frame(), n.pose);
-    last_dt_ = dt;
 }
 
 bool Agents::take_off_across(AgentBody& a, const Link& link, Handle id, const BodyMotion& body, const StepNavMeshes& table,
@@ -595,16 +583,19 @@ bool Agents::take_off_across(AgentBody& a, const Link& link, Handle id, const Bo
     Link flight = link_in_world(link, from.pose, to.pose);
     // Aimed where the landing point will be after the flight; the time of a flight to there differs
     // from the first guess's by the little the aim moved, so one correction is enough.
-    const Vec3 drift = surface_velocity(to.graph->frame(), to.pose, link.end);
+    const MeshMotion landing =
+        to.graph->frame() ? motions_.motion(MovableMesh{to.graph->frame()->mesh(), to.pose.to_world()}) : MeshMotion{};
     const Vec3 aim = flight.end;
-    flight.end = aim + drift * LinkMotion(flight, false, body).duration();
-    flight.end = aim + drift * LinkMotion(flight, false, body).duration();
+    flight.end = landing.after(LinkMotion(flight, false, body).duration()) * link.end;
+    flight.end = landing.after(LinkMotion(flight, false, body).duration()) * link.end;
     const LinkMotion motion(flight, false, body);
-    // Off the placed arc (the surface moves, or stands elsewhere within the link's tolerance): the
-    // generator's proof does not cover it, so it is swept again, against the level as it stands.
+    // Off the placed arc (the surface moves, or stands elsewhere within the link's tolerance), the
+    // generator's proof does not cover it; nor does it cover meshes that move near it since.
     const bool as_proven = (flight.end - aim).norm() < kSameEnd &&
                            (from.pose.surface_point(to.pose.world_point(link.end)) - link.placed_end).norm() < kSameEnd;
-    if (!as_proven && !flight_is_clear(motion, a.def.capabilities.radius, a.def.height, level)) return false;
+    if (!flight_is_clear(motion, a.def.capabilities.radius, a.def.height, level,
+                         motions_.motions(level.movable_meshes()), as_proven))
+        return false;
     a.position = from.pose.world_point(a.position);
     a.velocity = Vec3::Zero();
     a.frame.reset();  // in the air over no surface: world space until it lands

@@ -27,6 +27,7 @@
 #include <vector>
 
 #include "agents/agent.h"
+#include "agents/mesh_motion.h"
 #include "agents/route.h"
 #include "level/level.h"
 #include "motion/link_motion.h"
@@ -120,14 +121,9 @@ private:
     // A body landed over a cross link goes onto `navmesh` (`graph`, null if removed): the link's
     // landing navmesh, or the one a ray down found under it.
     void land_across(AgentBody& a, Handle navmesh, const std::shared_ptr<const PathGraph>& graph, const StepNavMeshes& table);
-    // How fast the surface point `p` (in the space of the navmesh placed at `now`) moved over the last step.
-    Vec3 surface_velocity(const std::shared_ptr<const SurfaceFrame>& frame, const SurfacePose& now, const Vec3& p) const;
-    void remember_poses(const StepNavMeshes& table, float dt);
-
-    // Each surface's pose at the last step, and that step's dt: how fast a landing point moves, so a
-    // jump onto a moving surface aims where its landing will be.
-    std::vector<std::pair<std::weak_ptr<const SurfaceFrame>, SurfacePose>> last_poses_;
-    float last_dt_ = 0.0f;
+    // How the level's movable meshes moved over the last step: a jump onto a moving surface aims
+    // where its landing will be, and its flight is checked against where they will be.
+    MeshMotions motions_;
 
     mutable SharedMutex mutex_;
     AgentsSettings settings_;

@@ -37,4 +37,15 @@ struct Aabb {
     bool empty() const { return (min.array() > max.array()).any(); }
 };
 
+// The box, in the space `t` maps to, that holds `box` mapped by `t`.
+inline Aabb transformed_box(const Aabb& box, const Transform& t) {
+    if (box.empty()) return box;
+    const Vec3 centre = t * (0.5f * (box.min + box.max));
+    const Vec3 half = t.linear().cwiseAbs() * (0.5f * (box.max - box.min));
+    Aabb out;
+    out.min = centre - half;
+    out.max = centre + half;
+    return out;
+}
+
 }  // namespace nl

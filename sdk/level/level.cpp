@@ -109,6 +109,7 @@ Handle Level::add_mesh(const TriangleMesh& input, const Transform& transform, ui
     mesh.flags = flags;
     mesh.user_data = user_data;
     mesh.transform = transform;
+    mesh.object_bounds = bounds_of(mesh.object, Transform::Identity());
     mesh.world_bounds = bounds_of(mesh.object, transform);
     check_placement(mesh.world_bounds);
 
@@ -258,6 +259,21 @@ MeshInfo Level::info(Handle h) const {
     out.transform = mesh->transform;
     out.bounds = mesh->world_bounds;
     out.user_data = mesh->user_data;
+    return out;
+}
+
+std::vector<MovableMesh> Level::movable_meshes() const {
+    const auto lock = lock_shared();
+    std::vector<MovableMesh> out;
+    meshes_.for_each([&](Handle h, const Mesh& m) {
+        if (!m.own_scene) return;
+        const Aabb& b = m.object_bounds;
+        float reach = 0.0f;  // the farthest corner of its object bounds, mapped to the world
+        for (float x : {b.min.x(), b.max.x()})
+            for (float y : {b.min.y(), b.max.y()})
+                for (float z : {b.min.z(), b.max.z()}) reach = std::max(reach, (m.transform.linear() * Vec3(x, y, z)).norm());
+        out.push_back(MovableMesh{h, m.transform, reach});
+    });
     return out;
 }
 

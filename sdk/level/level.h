@@ -68,12 +68,30 @@ struct BodyStretch {
     OrientedBox bounds;
 };
 
+// Where a movable mesh will be at a moment to come, for the body queries of that moment.
+struct MeshPlacement {
+    Handle mesh;
+    Transform transform = Transform::Identity();
+};
+
 // Stretches [first, first + count) of a bodies_clear batch that one box holds (a straight run of a
 // path): the level is asked once for the triangles in that box, and each stretch is tested against
-// those.
+// those. With `placed`, the stretches are of a moment to come: the movable meshes it names are
+// tested where it places them, the others where they are (a placement of a removed or static mesh
+// is ignored).
 struct BodyGroup {
     OrientedBox bounds;
     uint32_t first = 0, count = 0;
+    const MeshPlacement* placed = nullptr;  // borrowed, `placed_count` entries
+    uint32_t placed_count = 0;
+};
+
+// A movable mesh where it is now, and how far its farthest point is from its origin (world metres):
+// a bound on how fast its points move when it turns.
+struct MovableMesh {
+    Handle mesh;
+    Transform transform = Transform::Identity();
+    float reach = 0.0f;
 };
 
 class NearTriangles;
@@ -99,6 +117,8 @@ public:
     bool contains(Handle mesh) const;
     MeshInfo info(Handle mesh) const;
     std::vector<Handle> meshes() const;
+    // Every movable mesh, where it is now: one consistent reading under the level's lock.
+    std::vector<MovableMesh> movable_meshes() const;
 
     // World-space triangles of every mesh under its current transform (for reference checks).
     TriangleMesh world_triangles() const;
@@ -143,6 +163,7 @@ private:
         uint64_t user_data = 0;
         Transform transform = Transform::Identity();
         Eigen::Matrix3f normal_to_world = Eigen::Matrix3f::Identity();  // movable meshes only
+        Aabb object_bounds;
         Aabb world_bounds;
         RTCGeometry geometry = nullptr;     // triangles, in static_scene_ or own_scene
         unsigned geometry_id = RTC_INVALID_GEOMETRY_ID;

@@ -13,18 +13,38 @@ NearTriangles Level::near_triangles() const {
     NearTriangles near;
     near.static_scene = static_scene_;
     near.statics.resize(static_geometry_owner_.size());
-    meshes_.for_each([&](Handle, const Mesh& m) {
+    meshes_.for_each([&](Handle h, const Mesh& m) {
         if (!m.own_scene) {
             near.statics[m.geometry_id] = NearTriangles::StaticBuffers{
                 static_cast<const float*>(rtcGetGeometryBufferData(m.geometry, RTC_BUFFER_TYPE_VERTEX, 0)),
                 static_cast<const unsigned*>(rtcGetGeometryBufferData(m.geometry, RTC_BUFFER_TYPE_INDEX, 0))};
             return;
         }
-        const Transform inverse = m.transform.inverse(Eigen::Affine);
-        near.movables.push_back(
-            NearTriangles::Movable{m.own_scene, &m.object, &m.transform, inverse, inverse.linear().norm(), m.world_bounds});
+        NearTriangles::Movable movable;
+        movable.mesh = h;
+        movable.scene = m.own_scene;
+        movable.object = &m.object;
+        movable.object_bounds = m.object_bounds;
+        movable.place(m.transform);
+        movable.world_bounds = m.world_bounds;  // exact, where place() bounds the object's box
+        near.movables.push_back(movable);
     });
     return near;
+}
+
+void NearTriangles::Movable::place(const Transform& transform) {
+    to_world = transform;
+    to_object = transform.inverse(Eigen::Affine);
+    stretch = to_object.linear().norm();
+    world_bounds = transformed_box(object_bounds, transform);
+}
+
+std::vector<NearTriangles::Movable> NearTriangles::placed(const MeshPlacement* placements, uint32_t count) const {
+    std::vector<Movable> out = movables;
+    for (uint32_t i = 0; i < count; ++i)
+        for (Movable& m : out)
+            if (m.mesh == placements[i].mesh) m.place(placements[i].transform);
+    return out;
 }
 
 void Level::boxes_empty(const OrientedBox* boxes, uint32_t count, uint8_t* out_empty) const {
@@ -58,10 +78,12 @@ uint64_t Level::bodies_clear(const BodyGroup* groups, uint32_t group_count, cons
         for (uint32_t g = begin; g < end; ++g) {
             const BodyGroup& group = groups[g];
             inside.clear();
-            near.visit_near(group.bounds, [&](const Vec3& a, const Vec3& b, const Vec3& c) {
+            const auto gather = [&](const Vec3& a, const Vec3& b, const Vec3& c) {
                 if (triangle_overlaps_box(a, b, c, group.bounds)) inside.push_back({a, b, c});
                 return false;
-            });
+            };
+            if (group.placed_count == 0) near.visit_near(group.bounds, gather);
+            else near.visit_near(group.bounds, near.placed(group.placed, group.placed_count), gather);
             for (uint32_t i = group.first; i < group.first + group.count; ++i) {
                 const BodyStretch& s = stretches[i];
                 const double margin = body_margin(s.body.from.cwiseAbs().cwiseMax(s.body.to.cwiseAbs()));

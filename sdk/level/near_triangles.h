@@ -6,12 +6,16 @@
 
 #include <embree3/rtcore.h>
 
+#include <utility>
 #include <vector>
 
 #include "level/geometry.h"
 #include "level/oriented_box.h"
+#include "util/handle.h"
 
 namespace nl {
+
+struct MeshPlacement;
 
 class NearTriangles {
 public:
@@ -20,12 +24,17 @@ public:
         const unsigned* indices = nullptr;
     };
     struct Movable {
+        Handle mesh;
         RTCScene scene = nullptr;
         const TriangleMesh* object = nullptr;  // object-space vertices
-        const Transform* to_world = nullptr;
+        Aabb object_bounds;
+        Transform to_world;
         Transform to_object;
         float stretch = 1.0f;
         Aabb world_bounds;
+
+        // The mesh placed by `to_world` instead.
+        void place(const Transform& to_world);
     };
 
     RTCScene static_scene = nullptr;
@@ -36,7 +45,15 @@ public:
     // (every one that touches it, and some that do not), until visit returns true; returns whether
     // one did. Safe to call from several tasks at once while the level's shared lock is held.
     template <typename Visit>
-    bool visit_near(const OrientedBox& box, Visit&& visit) const;
+    bool visit_near(const OrientedBox& box, Visit&& visit) const {
+        return visit_near(box, movables, std::forward<Visit>(visit));
+    }
+    // The same, with the movable meshes placed as `placed` says (from placed()).
+    template <typename Visit>
+    bool visit_near(const OrientedBox& box, const std::vector<Movable>& placed, Visit&& visit) const;
+
+    // The movable meshes with those that `placements` names placed there.
+    std::vector<Movable> placed(const MeshPlacement* placements, uint32_t count) const;
 
 private:
     template <typename Visit>
@@ -70,7 +87,7 @@ bool NearTriangles::on_triangle(RTCPointQueryFunctionArguments* args) {
         a = vertex_at(vertices, t[0]), b = vertex_at(vertices, t[1]), c = vertex_at(vertices, t[2]);
     } else {
         const Triangle& t = q.movable->object->triangles[args->primID];
-        const Transform& m = *q.movable->to_world;
+        const Transform& m = q.movable->to_world;
         const auto& v = q.movable->object->vertices;
         a = m * v[t[0]], b = m * v[t[1]], c = m * v[t[2]];
     }
@@ -83,7 +100,7 @@ bool NearTriangles::on_triangle(RTCPointQueryFunctionArguments* args) {
 }
 
 template <typename Visit>
-bool NearTriangles::visit_near(const OrientedBox& box, Visit&& visit) const {
+bool NearTriangles::visit_near(const OrientedBox& box, const std::vector<Movable>& placed, Visit&& visit) const {
     using V = std::remove_reference_t<Visit>;
     const Vec3 extent = box.axes.cwiseAbs() * box.half_extents;
     // Padded as the exact tests pad: bounds only ever skip what those would call apart.
@@ -98,8 +115,8 @@ bool NearTriangles::visit_near(const OrientedBox& box, Visit&& visit) const {
     query.time = 0.0f;
     rtcInitPointQueryContext(&context);
     rtcPointQuery(static_scene, &query, &context, &on_triangle<V>, &q);
-    if (q.stopped || movables.empty()) return q.stopped;
-    for (const Movable& movable : movables) {
+    if (q.stopped || placed.empty()) return q.stopped;
+    for (const Movable& movable : placed) {
         if ((q.reach.max.array() < movable.world_bounds.min.array()).any() ||
             (movable.world_bounds.max.array() < q.reach.min.array()).any())
             continue;

@@ -23,7 +23,8 @@ std::vector<SweepPiece> sweep_pieces(PathPoints path_points, float margin, float
         walked += length;
         if (to <= from || length <= 0.0f) continue;
         pieces.push_back(SweepPiece{a + (b - a) * ((from - (walked - length)) / length),
-                                    a + (b - a) * ((to - (walked - length)) / length), path_points.slack});
+                                    a + (b - a) * ((to - (walked - length)) / length), path_points.slack,
+                                    static_cast<uint32_t>(i - 1)});
     }
     return pieces;
 }

@@ -29,6 +29,7 @@ constexpr unsigned kSweepRadiusCount = sizeof(kSweepRadii) / sizeof(kSweepRadii[
 struct SweepPiece {
     Vec3 from, to;
     float slack = 0.0f;
+    uint32_t source = 0;  // the path point it starts from, or its part of the path from there to the next
 };
 
 // A path to sweep, first point to last; each piece between two points strays from its chord by at

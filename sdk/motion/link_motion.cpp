@@ -67,6 +67,11 @@ Vec3 LinkMotion::apex() const {
     return from_.y() > to_.y() ? from_ : to_;
 }
 
+std::vector<float> LinkMotion::corner_times() const {
+    if (kind_ != MotionKind::Fall) return {};
+    return {(fall_[1] - fall_[0]).norm() / speed_, walk_time_};
+}
+
 Vec3 LinkMotion::at(float time, Vec3* velocity) const {
     const float t = std::clamp(time, 0.0f, duration_);
     switch (kind_) {

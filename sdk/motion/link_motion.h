@@ -5,6 +5,7 @@
 #pragma once
 
 #include <array>
+#include <vector>
 
 #include "level/geometry.h"
 #include "links/link.h"
@@ -37,6 +38,9 @@ public:
     Vec3 apex() const;
     // For a fall: take-off, past the rim, above the landing, landing.
     const std::array<Vec3, 4>& fall_points() const { return fall_; }
+    // The times at which the path turns a corner, in order: for a fall, when it passes the rim and
+    // when it starts down; none for an arc or a line.
+    std::vector<float> corner_times() const;
 
     // Where the body is `time` seconds after take-off (clamped to [0, duration]), and its velocity.
     Vec3 at(float time, Vec3* velocity = nullptr) const;

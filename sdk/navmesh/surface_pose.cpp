@@ -16,14 +16,6 @@ SurfacePose::SurfacePose(const Transform& to_world) : to_world_(to_world) {
     to_surface_.translation() = -(to_surface_.linear() * to_world.translation());
 }
 
-Aabb SurfacePose::world_box(const Aabb& b) const {
-    if (identity_ || b.empty()) return b;
-    const Vec3 centre = world_point(0.5f * (b.min + b.max));
-    const Vec3 half = to_world_.linear().cwiseAbs() * (0.5f * (b.max - b.min));
-    Aabb out;
-    out.min = centre - half;
-    out.max = centre + half;
-    return out;
-}
+Aabb SurfacePose::world_box(const Aabb& b) const { return identity_ ? b : transformed_box(b, to_world_); }
 
 }  // namespace nl

@@ -559,67 +559,6 @@ TEST_CASE("removing the platform's navmesh removes the cross links onto it; an a
     f.world->remove_mesh(f.shuttle);  // nothing rides it now
 }
 
-TEST_CASE("a jump aimed where a moving surface will be is swept again: it waits while that flight would meet the level") {
-    // The shuttle slides along +z at 1.5 m/s from 3 m back and stops where the jump was placed; the
-    // jumper, at the take-off from the start, aims each step where the shuttle will be when it lands
-    // (behind the placed end, on the -z side, while the shuttle comes).
-    struct Run {
-        double took_off = -1.0;
-        int inside = 0;
-        bool on_deck = false;
-    };
-    auto run = [](bool pole) {
-        Ferry f;
-        if (pole) {
-            // Beside the placed arc (0.45 m off it: clear for a 0.3 m body), in the way of the arcs
-            // aimed at the coming shuttle.
-            nl::levelgen::GeneratedLevel level;
-            level.add_box({{6.45f, -1.0f, 2.25f}, {6.75f, 3.0f, 2.55f}});
-            f.world->level().add_mesh(nl::test::to_triangle_mesh(level), Transform::Identity(), 0, 0);
-        }
-        nl::Link jump;
-        jump.kind = nl::LinkKind::Jump;
-        jump.start = Vec3(5.6f, 0, 3);
-        jump.end = Vec3(7.6f, 0, 3);
-        jump.landing_navmesh = f.deck;
-        jump.tolerance = 5.0f;
-        nl::set_requirements_from_ends(jump);
-        const Handle link = f.world->add_link(f.ledges, jump);
-        nl::AgentDef def;
-        def.navmesh = f.ledges;
-        def.position = Vec3(5.5f, 0, 3);
-        def.capabilities.radius = 0.3f;
-        def.capabilities.max_jump_distance = 3.0f;
-        def.capabilities.max_jump_height = 1.0f;
-        const Handle jumper = f.world->add_agent(def);
-        f.world->agents().set_destination(f.world->navmeshes(), jumper, Ferry::at(Ferry::kNearDock) * Vec3(1, 0, 0));
-        const double dt = 1.0 / 60.0, stop = 2.0;
-        Run out;
-        for (int k = 1; k < 360; ++k) {
-            Transform p = Ferry::at(Ferry::kNearDock);
-            p.pretranslate(Vec3(0, 0, float(1.5 * (std::min(k * dt, stop) - stop))));
-            f.world->set_mesh_transform(f.shuttle, p);
-            f.world->step(float(dt));
-            for (const nl::AgentEvent& e : f.world->agents().events())
-                if (e.kind == nl::AgentEventKind::LinkStarted && e.link == link && out.took_off < 0.0) out.took_off = k * dt;
-            const Vec3 at = f.world->agents().info(jumper).position;
-            const nl::Segment body{at + Vec3(0, 0.3f, 0), at + Vec3(0, 1.8f, 0)};
-            uint8_t blocked = 0;
-            f.world->level().segments_blocked(&body, 1, &blocked);
-            out.inside += blocked;
-        }
-        out.on_deck = f.world->agents().info(jumper).navmesh == f.deck;
-        return out;
-    };
-    const Run open = run(false), blocked = run(true);
-    MESSAGE("took off at " << open.took_off << " s with nothing in the way, at " << blocked.took_off << " s beside the pole");
-    CHECK(open.took_off > 0.0);
-    CHECK(blocked.took_off > open.took_off + 0.1);  // it waited while its aimed flight met the pole
-    CHECK(blocked.inside == 0);
-    CHECK(open.on_deck);
-    CHECK(blocked.on_deck);
-}
-
 TEST_CASE("a body that comes down on another platform than the one it aimed at lands on that platform: found by a ray down") {
     Ferry f;
     // A second shuttle, out of the way, with a navmesh for the same body.
@@ -656,4 +595,102 @@ TEST_CASE("a body that comes down on another platform than the one it aimed at l
     // Its destination is on the shuttle it aimed at, which no link joins to the spare one: it says so.
     CHECK(info.state == AgentState::Failed);
     CHECK(info.reason == nl::AgentReason::NoPath);
+}
+
+namespace {
+
+// A jumper at the take-off of a jump onto the shuttle, which comes along +z at 1.5 m/s from 3 m back
+// and stops after 2 s where the jump was placed; each step the jumper aims where the shuttle will be
+// when it lands (behind the placed end, on the -z side, while the shuttle comes). `furnish` adds to
+// the level once (with no pose) and follows the shuttle's pose each step.
+struct ApproachRun {
+    double took_off = -1.0;
+    int inside = 0;  // steps in which the jumper's body met the level
+    bool on_deck = false;
+};
+
+ApproachRun jump_onto_approaching_shuttle(const std::function<void(Ferry&, const Transform*)>& furnish) {
+    Ferry f;
+    furnish(f, nullptr);
+    nl::Link jump;
+    jump.kind = nl::LinkKind::Jump;
+    jump.start = Vec3(5.6f, 0, 3);
+    jump.end = Vec3(7.6f, 0, 3);
+    jump.landing_navmesh = f.deck;
+    jump.tolerance = 5.0f;
+    nl::set_requirements_from_ends(jump);
+    const Handle link = f.world->add_link(f.ledges, jump);
+    nl::AgentDef def;
+    def.navmesh = f.ledges;
+    def.position = Vec3(5.5f, 0, 3);
+    def.capabilities.radius = 0.3f;
+    def.capabilities.max_jump_distance = 3.0f;
+    def.capabilities.max_jump_height = 1.0f;
+    const Handle jumper = f.world->add_agent(def);
+    f.world->agents().set_destination(f.world->navmeshes(), jumper, Ferry::at(Ferry::kNearDock) * Vec3(1, 0, 0));
+    const double dt = 1.0 / 60.0, stop = 2.0;
+    ApproachRun out;
+    for (int k = 1; k < 360; ++k) {
+        Transform p = Ferry::at(Ferry::kNearDock);
+        p.pretranslate(Vec3(0, 0, float(1.5 * (std::min(k * dt, stop) - stop))));
+        f.world->set_mesh_transform(f.shuttle, p);
+        furnish(f, &p);
+        f.world->step(float(dt));
+        for (const nl::AgentEvent& e : f.world->agents().events())
+            if (e.kind == nl::AgentEventKind::LinkStarted && e.link == link && out.took_off < 0.0) out.took_off = k * dt;
+        // The body (0.3 m wide, 0.3 to 1.8 m above its feet) against the level as it is now.
+        const Vec3 at = f.world->agents().info(jumper).position;
+        nl::BodyStretch body;
+        body.body = nl::SweptCylinder{at, at, 0.3f, 0.3f, 1.8f};
+        body.bounds = nl::bounds_of(body.body, 0.01f);
+        const float radius = 0.3f;
+        uint8_t cleared = 0;
+        f.world->level().bodies_clear(&body, 1, &radius, 1, &cleared);
+        out.inside += cleared == 0;
+    }
+    out.on_deck = f.world->agents().info(jumper).navmesh == f.deck;
+    return out;
+}
+
+}  // namespace
+
+TEST_CASE("a jump aimed where a moving surface will be is swept again: it waits while that flight would meet the level") {
+    const ApproachRun open = jump_onto_approaching_shuttle([](Ferry&, const Transform*) {});
+    const ApproachRun blocked = jump_onto_approaching_shuttle([](Ferry& f, const Transform* pose) {
+        if (pose) return;
+        // Beside the placed arc (0.45 m off it: clear for a 0.3 m body), in the way of the arcs
+        // aimed at the coming shuttle.
+        nl::levelgen::GeneratedLevel level;
+        level.add_box({{6.45f, -1.0f, 2.25f}, {6.75f, 3.0f, 2.55f}});
+        f.world->level().add_mesh(nl::test::to_triangle_mesh(level), Transform::Identity(), 0, 0);
+    });
+    MESSAGE("took off at " << open.took_off << " s with nothing in the way, at " << blocked.took_off << " s beside the pole");
+    CHECK(open.took_off > 0.0);
+    CHECK(blocked.took_off > open.took_off + 0.1);  // it waited while its aimed flight met the pole
+    CHECK(open.inside == 0);
+    CHECK(blocked.inside == 0);
+    CHECK(open.on_deck);
+    CHECK(blocked.on_deck);
+}
+
+TEST_CASE("a jump onto a moving surface is checked against the level as it will be: a post riding the shuttle holds it back") {
+    // A thin post rides on the shuttle (another movable mesh, moved with it). Seen from the shuttle,
+    // a jumper taking off early flies across the deck from its far side, through where the post
+    // stands; once the shuttle stops, the post is 1.4 m off the arc. Where the post is at take-off,
+    // it is off the flight too: only the level as it will be when the body passes tells.
+    Handle pole;
+    const ApproachRun open = jump_onto_approaching_shuttle([](Ferry&, const Transform*) {});
+    const ApproachRun held = jump_onto_approaching_shuttle([&](Ferry& f, const Transform* pose) {
+        if (pose) {
+            f.world->set_mesh_transform(pole, *pose);
+            return;
+        }
+        nl::levelgen::GeneratedLevel level;
+        level.add_box({{-1.45f, 0.0f, 1.35f}, {-1.35f, 3.0f, 1.45f}});  // on the deck, in its space
+        pole = f.world->level().add_mesh(nl::test::to_triangle_mesh(level), Ferry::at(Ferry::kNearDock), nl::kMeshMovable, 0);
+    });
+    MESSAGE("took off at " << open.took_off << " s with no post, at " << held.took_off << " s with the post riding the shuttle");
+    CHECK(held.took_off > open.took_off + 0.1);  // it waited while its flight would have met the post
+    CHECK(held.inside == 0);
+    CHECK(held.on_deck);
 }
