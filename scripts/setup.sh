@@ -7,6 +7,7 @@ packages=(
   build-essential cmake pkg-config ninja-build
   libembree-dev libtbb-dev libeigen3-dev nlohmann-json3-dev doctest-dev libtinyobjloader-dev
   librecast-dev libsdl2-dev libstb-dev
+  zlib1g-dev  # the CRC-32 of baked navmesh files
   mono-devel python3
   clang libclang-rt-14-dev  # the sanitizer build and its libFuzzer targets (docs/testing.md)
 )

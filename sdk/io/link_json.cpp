@@ -185,39 +185,70 @@ std::vector<Link> links_from_json(std::string_view text) {
     return links;
 }
 
+namespace {
+
+// Every setting but drop_angles, by name: what the settings JSON reads and writes.
+struct NamedFloat {
+    const char* name;
+    float LinkSettings::*field;
+};
+struct NamedWhole {
+    const char* name;
+    unsigned LinkSettings::*field;
+};
+constexpr NamedFloat kFloatSettings[] = {
+    {"min_edge_length", &LinkSettings::min_edge_length},
+    {"sample_spacing", &LinkSettings::sample_spacing},
+    {"falloff_distance", &LinkSettings::falloff_distance},
+    {"max_jump_gap", &LinkSettings::max_jump_gap},
+    {"min_link_distance", &LinkSettings::min_link_distance},
+    {"short_link_distance", &LinkSettings::short_link_distance},
+    {"max_jump_up", &LinkSettings::max_jump_up},
+    {"jump_arc_height", &LinkSettings::jump_arc_height},
+    {"strict_forward_angle", &LinkSettings::strict_forward_angle},
+    {"permissive_forward_angle", &LinkSettings::permissive_forward_angle},
+    {"strict_incline_angle", &LinkSettings::strict_incline_angle},
+    {"permissive_incline_angle", &LinkSettings::permissive_incline_angle},
+    {"max_drop_distance", &LinkSettings::max_drop_distance},
+    {"drop_steepness", &LinkSettings::drop_steepness},
+    {"merge_distance", &LinkSettings::merge_distance},
+    {"clearance_margin", &LinkSettings::clearance_margin},
+    {"walk_factor", &LinkSettings::walk_factor},
+    {"walk_distance", &LinkSettings::walk_distance},
+};
+constexpr NamedWhole kWholeSettings[] = {
+    {"min_group_size", &LinkSettings::min_group_size},
+    {"max_group_size", &LinkSettings::max_group_size},
+    {"arc_segments", &LinkSettings::arc_segments},
+};
+
+}  // namespace
+
+std::string link_settings_to_json(const LinkSettings& s) {
+    Json out = Json::object();
+    for (const NamedFloat& f : kFloatSettings) out[f.name] = s.*f.field;
+    for (const NamedWhole& w : kWholeSettings) out[w.name] = s.*w.field;
+    out["drop_angles"] = s.drop_angles;
+    return out.dump();
+}
+
 void apply_settings_json(std::string_view text, LinkSettings& s) {
     const Json document = parse_json(text, "settings JSON");
     const Reader r(document, "settings");
-    float* const floats[] = {&s.min_edge_length,          &s.sample_spacing,         &s.falloff_distance,
-                             &s.max_jump_gap,        &s.min_link_distance,      &s.short_link_distance,
-                             &s.max_jump_up,              &s.jump_arc_height,        &s.strict_forward_angle,
-                             &s.permissive_forward_angle, &s.strict_incline_angle,   &s.permissive_incline_angle,
-                             &s.max_drop_distance,        &s.drop_steepness,         &s.merge_distance,
-                             &s.clearance_margin,         &s.walk_factor,            &s.walk_distance};
-    const char* const float_names[] = {"min_edge_length",          "sample_spacing",       "falloff_distance",
-                                       "max_jump_gap",        "min_link_distance",    "short_link_distance",
-                                       "max_jump_up",              "jump_arc_height",      "strict_forward_angle",
-                                       "permissive_forward_angle", "strict_incline_angle", "permissive_incline_angle",
-                                       "max_drop_distance",        "drop_steepness",       "merge_distance",
-                                       "clearance_margin",         "walk_factor",          "walk_distance"};
-    unsigned* const wholes[] = {&s.min_group_size, &s.max_group_size, &s.arc_segments};
-    const char* const whole_names[] = {"min_group_size", "max_group_size", "arc_segments"};
 
     for (const auto& [key, value] : document.items()) {
         bool known = false;
-        for (size_t i = 0; i < std::size(floats) && !known; ++i) {
-            if (key == float_names[i]) {
-                *floats[i] = r.number(float_names[i], 0.0f, true);
-                known = true;
-            }
+        for (const NamedFloat& f : kFloatSettings) {
+            if (known || key != f.name) continue;
+            s.*f.field = r.number(f.name, 0.0f, true);
+            known = true;
         }
-        for (size_t i = 0; i < std::size(wholes) && !known; ++i) {
-            if (key == whole_names[i]) {
-                const uint64_t v = r.whole(whole_names[i], 0);
-                if (v > 100000) fail(ErrorCode::InvalidArgument, "settings.", key, " is too large");
-                *wholes[i] = static_cast<unsigned>(v);
-                known = true;
-            }
+        for (const NamedWhole& w : kWholeSettings) {
+            if (known || key != w.name) continue;
+            const uint64_t v = r.whole(w.name, 0);
+            if (v > 100000) fail(ErrorCode::InvalidArgument, "settings.", key, " is too large");
+            s.*w.field = static_cast<unsigned>(v);
+            known = true;
         }
         if (!known && key == "drop_angles") {
             if (!value.is_array()) fail(ErrorCode::InvalidArgument, "settings.drop_angles must be an array of numbers");

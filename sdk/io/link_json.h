@@ -25,6 +25,9 @@ std::vector<Link> links_from_json(std::string_view text);
 // are refused so a typo is not silently ignored), then validates the result.
 void apply_settings_json(std::string_view text, LinkSettings& settings);
 
+// The settings as a JSON object that apply_settings_json reads back to the same settings.
+std::string link_settings_to_json(const LinkSettings& settings);
+
 const char* link_kind_name(LinkKind kind);
 
 }  // namespace nl

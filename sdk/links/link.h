@@ -6,6 +6,7 @@
 #include <cstdint>
 
 #include "level/geometry.h"
+#include "navmesh/navmesh_grid.h"
 #include "util/handle.h"
 
 namespace nl {
@@ -58,6 +59,14 @@ struct Link {
     float tolerance = 0.0f;
     bool crosses() const { return landing_navmesh != Handle{}; }
 };
+
+// The link with its ends and apex on the navmesh grid (navmesh.h), as navmeshes keep links.
+inline Link on_navmesh_grid(Link link) {
+    link.start = on_navmesh_grid(link.start);
+    link.end = on_navmesh_grid(link.end);
+    link.apex = on_navmesh_grid(link.apex);
+    return link;
+}
 
 // How far a cross link's end may move, seen from its start, before it stops holding (default).
 constexpr float kDefaultCrossTolerance = 0.25f;

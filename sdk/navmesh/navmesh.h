@@ -8,11 +8,13 @@
 #include <vector>
 
 #include "level/geometry.h"
+#include "navmesh/navmesh_grid.h"
 #include "navmesh/polygon_grid.h"
 
 namespace nl {
 
 constexpr uint32_t kNoPolygon = 0xffffffffu;
+
 constexpr uint32_t kMaxPolygonVertices = 16;
 
 struct AgentType {
@@ -49,6 +51,8 @@ struct NavPoint {
     float distance = 0.0f;
     uint32_t polygon = kNoPolygon;
 };
+
+struct NavMeshInput;
 
 class NavMesh {
 public:
@@ -98,6 +102,7 @@ public:
 
 private:
     friend class NavMeshBuilder;
+    friend NavMeshInput input_of(const NavMesh& navmesh);
 
     std::vector<Vec3> vertices_;
     std::vector<uint32_t> first_corner_;  // polygon_count + 1 offsets into corners_ / neighbours_

@@ -96,9 +96,11 @@ private:
         }
     }
 
-    // Welded vertices, renumbered densely in input order.
+    // Welded vertices on the navmesh grid, renumbered densely in input order.
     void weld() {
-        const std::vector<uint32_t> representative = weld_vertices(in_.vertices, in_.weld_tolerance);
+        std::vector<Vec3> on_grid(in_.vertices.size());
+        for (size_t i = 0; i < on_grid.size(); ++i) on_grid[i] = on_navmesh_grid(in_.vertices[i]);
+        const std::vector<uint32_t> representative = weld_vertices(on_grid, in_.weld_tolerance);
         remap_.assign(in_.vertices.size(), kNoPolygon);
         for (uint32_t i = 0; i < representative.size(); ++i) {
             if (representative[i] != i) {
@@ -106,7 +108,7 @@ private:
                 continue;
             }
             remap_[i] = static_cast<uint32_t>(mesh_->vertices_.size());
-            mesh_->vertices_.push_back(in_.vertices[i]);
+            mesh_->vertices_.push_back(on_grid[i]);
         }
         for (uint32_t i = 0; i < representative.size(); ++i) remap_[i] = remap_[representative[i]];
     }
@@ -158,7 +160,7 @@ private:
                         uint32_t& to = detail_vertex_remap[in_.detail_indices[3 * t + k]];
                         if (to == kNoPolygon) {
                             to = static_cast<uint32_t>(m.detail_vertices_.size());
-                            m.detail_vertices_.push_back(in_.detail_vertices[in_.detail_indices[3 * t + k]]);
+                            m.detail_vertices_.push_back(on_navmesh_grid(in_.detail_vertices[in_.detail_indices[3 * t + k]]));
                         }
                         tri[k] = to;
                         box.grow(m.detail_vertices_[to]);
@@ -286,6 +288,24 @@ void validate_agent(const AgentType& a) {
 
 std::shared_ptr<const NavMesh> build_navmesh(const NavMeshInput& input) {
     return NavMeshBuilder(input).build();
+}
+
+NavMeshInput input_of(const NavMesh& m) {
+    NavMeshInput in;
+    in.vertices = m.vertices_;
+    in.indices = m.corners_;
+    in.polygon_sizes.reserve(m.polygon_count());
+    for (uint32_t p = 0; p < m.polygon_count(); ++p) in.polygon_sizes.push_back(static_cast<uint8_t>(m.corner_count(p)));
+    in.areas = m.areas_;
+    in.weld_tolerance = 0.0f;
+    in.agent = m.agent_;
+    if (!m.first_detail_triangle_.empty()) {
+        in.detail_vertices = m.detail_vertices_;
+        in.detail_indices.reserve(3 * m.detail_triangles_.size());
+        for (const Triangle& t : m.detail_triangles_) in.detail_indices.insert(in.detail_indices.end(), t.begin(), t.end());
+        in.detail_starts = m.first_detail_triangle_;
+    }
+    return in;
 }
 
 }  // namespace nl

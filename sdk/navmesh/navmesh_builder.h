@@ -26,6 +26,10 @@ struct NavMeshInput {
 // navmesh or an exception.
 std::shared_ptr<const NavMesh> build_navmesh(const NavMeshInput& input);
 
+// The input that builds `navmesh` again: its vertices, polygons, areas, agent and detail as they are
+// (welded, oriented, without the polygons the builder dropped), with a weld tolerance of 0.
+NavMeshInput input_of(const NavMesh& navmesh);
+
 // Throws InvalidArgument about the bad field ("radius is -1").
 void validate_agent(const AgentType& agent);
 

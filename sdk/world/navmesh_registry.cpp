@@ -38,9 +38,11 @@ std::shared_ptr<SurfaceFrame> NavMeshRegistry::frame_of_mesh(Handle mesh) const 
     return found;
 }
 
-Handle NavMeshRegistry::add(std::shared_ptr<const NavMesh> navmesh, Handle surface, const Transform& to_world) {
+Handle NavMeshRegistry::add(std::shared_ptr<const NavMesh> navmesh, Handle surface, const Transform& to_world,
+                            MadeFor made_for) {
     Entry e;
     e.navmesh = std::move(navmesh);
+    e.made_for = std::move(made_for);
     std::unique_lock lock(mutex_);
     if (surface != Handle{}) {
         e.frame = frame_of_mesh(surface);
@@ -107,7 +109,7 @@ Handle NavMeshRegistry::insert_link(Handle navmesh, Entry& e, const Link& link) 
     // Room first (grown geometrically: one more each time copied the list on every add), so that a
     // failure leaves no link without its place in the list.
     if (e.link_ids.size() == e.link_ids.capacity()) e.link_ids.reserve(2 * e.link_ids.size() + 8);
-    const Handle id = links_.insert(LinkEntry{navmesh, link});
+    const Handle id = links_.insert(LinkEntry{navmesh, on_navmesh_grid(link)});
     e.link_ids.push_back(id);
     e.snapshot.reset();
     return id;
@@ -123,7 +125,7 @@ void NavMeshRegistry::update_link(Handle link, const Link& replacement) {
     LinkEntry* found = links_.find(link);
     if (!found) fail_stale("link", link);
     const bool generated = found->link.generated;
-    found->link = replacement;
+    found->link = on_navmesh_grid(replacement);
     found->link.generated = generated;
     entry(found->navmesh).snapshot.reset();
 }
@@ -210,13 +212,19 @@ uint32_t NavMeshRegistry::remove_generated_links(Handle navmesh) {
     return static_cast<uint32_t>(before - e.link_ids.size());
 }
 
-void NavMeshRegistry::replace_links(Handle navmesh, const std::vector<Link>& links) {
+void NavMeshRegistry::replace_links(Handle navmesh, const std::vector<Link>& links, std::string link_settings) {
     std::unique_lock lock(mutex_);
     Entry& e = entry(navmesh);
     erase_links(e, any_link);
     e.link_ids.reserve(links.size());
     for (const Link& l : links) insert_link(navmesh, e, l);
     e.last = LastGeneration{};
+    e.made_for.link_settings = std::move(link_settings);
+}
+
+MadeFor NavMeshRegistry::made_for(Handle navmesh) const {
+    std::shared_lock lock(mutex_);
+    return entry(navmesh).made_for;
 }
 
 NavMeshRegistry::GenerationTurn NavMeshRegistry::take_generation_turn(Handle navmesh) {
@@ -236,7 +244,8 @@ LastGeneration NavMeshRegistry::last_generation(Handle navmesh) const {
     return entry(navmesh).last;
 }
 
-void NavMeshRegistry::store_generation(Handle navmesh, LastGeneration last, const std::vector<Link>& generated) {
+void NavMeshRegistry::store_generation(Handle navmesh, LastGeneration last, const std::vector<Link>& generated,
+                                       std::string link_settings) {
     std::unique_lock lock(mutex_);
     Entry& e = entry(navmesh);  // a navmesh removed meanwhile keeps nothing
     erase_links(e, generated_within);
@@ -246,6 +255,7 @@ void NavMeshRegistry::store_generation(Handle navmesh, LastGeneration last, cons
         insert_link(navmesh, e, l);
     }
     e.last = std::move(last);
+    e.made_for.link_settings = std::move(link_settings);
 }
 
 bool NavMeshRegistry::store_update(Handle navmesh, const LinkGeneration* from, const std::vector<Link>& generated) {

@@ -17,6 +17,7 @@
 
 #include "links/link_generation.h"
 #include "links/link_snapshot.h"
+#include "navmesh/made_for.h"
 #include "navmesh/navmesh.h"
 #include "navmesh/surface_pose.h"
 #include "path/path_graph.h"
@@ -41,7 +42,7 @@ public:
     // `surface`: the movable mesh the navmesh rides (null: none), the navmesh in its space, placed at
     // `to_world` now; navmeshes on one mesh share its frame.
     Handle add(std::shared_ptr<const NavMesh> navmesh, Handle surface = Handle{},
-               const Transform& to_world = Transform::Identity());
+               const Transform& to_world = Transform::Identity(), MadeFor made_for = {});
     // Removes the navmesh, its links, its last generation and its path graph together, and the cross
     // links of other navmeshes that land on it. Readers that
     // hold its navmesh, a snapshot or a graph keep them; a generation that finishes later keeps nothing.
@@ -70,8 +71,10 @@ public:
     std::shared_ptr<const LinkSnapshot> links(Handle navmesh) const;
     // Removes the generated links; manual ones stay. The last generation is forgotten with them.
     uint32_t remove_generated_links(Handle navmesh);
-    // Replaces every link (a links file); the last generation is forgotten.
-    void replace_links(Handle navmesh, const std::vector<Link>& links);
+    // Replaces every link (a links file, made with `link_settings`); the last generation is forgotten.
+    void replace_links(Handle navmesh, const std::vector<Link>& links, std::string link_settings);
+    // What the navmesh and its generated links were made for and with.
+    MadeFor made_for(Handle navmesh) const;
 
     // Generations and updates of one navmesh run one at a time, from reading its last generation to
     // storing its links, so a later one never loses to an earlier one: hold a turn for that span. A
@@ -91,8 +94,9 @@ public:
     GenerationTurn take_generation_turn(Handle navmesh);
 
     LastGeneration last_generation(Handle navmesh) const;
-    // A generation's result: its links replace the generated ones and it becomes the last generation.
-    void store_generation(Handle navmesh, LastGeneration last, const std::vector<Link>& generated);
+    // A generation's result: its links replace the generated ones and it becomes the last generation
+    // (made with `link_settings`, as JSON).
+    void store_generation(Handle navmesh, LastGeneration last, const std::vector<Link>& generated, std::string link_settings);
     // An update's result: stored only while `from` is still the navmesh's last generation (not
     // forgotten by a removal or a load meanwhile); returns whether it was.
     bool store_update(Handle navmesh, const LinkGeneration* from, const std::vector<Link>& generated);
@@ -114,6 +118,7 @@ private:
         mutable std::shared_ptr<const LinkSnapshot> snapshot;  // null after an edit, until read
         mutable std::shared_ptr<const PathGraph> path_graph;   // for some snapshot; checked on read
         LastGeneration last;
+        MadeFor made_for;
         std::shared_ptr<std::mutex> generation_turn = std::make_shared<std::mutex>();
     };
     struct LinkEntry {

@@ -2,6 +2,10 @@
 
 #include <string>
 
+#include "io/navmesh_file.h"
+#include "level/level_hash.h"
+#include "links/link_placement.h"
+
 namespace nl {
 
 World::World(WorldSettings settings)
@@ -39,10 +43,10 @@ Transform World::surface_placement(Handle surface) const {
     return info.transform;
 }
 
-Handle World::add_on_surface(std::shared_ptr<const NavMesh> navmesh, Handle surface) {
-    if (surface == Handle{}) return navmeshes_.add(std::move(navmesh));
+Handle World::add_on_surface(std::shared_ptr<const NavMesh> navmesh, Handle surface, MadeFor made_for) {
+    if (surface == Handle{}) return navmeshes_.add(std::move(navmesh), Handle{}, Transform::Identity(), std::move(made_for));
     std::lock_guard lock(surface_moves_);
-    return navmeshes_.add(std::move(navmesh), surface, surface_placement(surface));
+    return navmeshes_.add(std::move(navmesh), surface, surface_placement(surface), std::move(made_for));
 }
 
 Handle World::add_navmesh(const NavMeshInput& input, Handle surface) {
@@ -97,7 +101,31 @@ Handle World::build_navmesh(const NavMeshBuildRequest& request) {
     std::shared_ptr<const NavMesh> navmesh = builder->build(*this, request);
     if (!navmesh) fail(ErrorCode::Internal, "builder '", request.builder, "' succeeded without handing over a navmesh");
     log_repairs(*navmesh);
-    return add_on_surface(std::move(navmesh), request.surface);
+    MadeFor made_for;
+    made_for.builder = request.builder;
+    if (request.settings_json) made_for.builder_settings.assign(request.settings_json, request.settings_json_length);
+    made_for.level_hash = level_hash(level_->triangles_to_build(request.surface));
+    return add_on_surface(std::move(navmesh), request.surface, std::move(made_for));
+}
+
+Handle World::load_navmesh(const NavMeshFile& file, Handle surface) {
+    if (file.rides_surface != (surface != Handle{}))
+        fail_field(ErrorCode::InvalidArgument, "surface: ",
+                   file.rides_surface ? "the file's navmesh rode a moving mesh (its coordinates are in that mesh's space): "
+                                        "give the mesh it rides"
+                                      : "the file's navmesh rode no moving mesh (its coordinates are in the world)");
+    if (surface != Handle{}) {
+        std::lock_guard lock(surface_moves_);
+        surface_placement(surface);
+    }
+    std::shared_ptr<const NavMesh> navmesh = nl::build_navmesh(file.navmesh);
+    log_repairs(*navmesh);
+    std::vector<Link> links = file.links;
+    for (size_t i = 0; i < links.size(); ++i)
+        naming_fields(concat("links[", i, "].").c_str(), [&] { place_saved_link(*navmesh, links[i]); });
+    const Handle h = add_on_surface(std::move(navmesh), surface, file.made_for);
+    navmeshes_.replace_links(h, links, file.made_for.link_settings);
+    return h;
 }
 
 }  // namespace nl

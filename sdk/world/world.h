@@ -31,6 +31,8 @@
 
 namespace nl {
 
+struct NavMeshFile;
+
 struct WorldSettings {
     int worker_count = 1;            // threads for batch work, the caller included (>= 1)
     unsigned path_worker_count = 0;  // threads that plan queued path requests; 0: PathQueue::process only
@@ -80,6 +82,12 @@ public:
     // movable mesh in its own space, riding it) and adds it. Throws NotFound (no such builder) and the
     // builder's failures.
     Handle build_navmesh(const NavMeshBuildRequest& request);
+    // Adds a baked navmesh and its links (read_navmesh_file), on `surface` for a file whose navmesh
+    // rode one (its coordinates are in that mesh's space). Every link is placed before anything is
+    // added (place_saved_link; "links[i].start" named); nothing changes when anything is refused:
+    // InvalidArgument (a surface given for a file that rode none, or none for one that did; the
+    // polygons, as add_navmesh), InvalidHandle (the surface).
+    Handle load_navmesh(const NavMeshFile& file, Handle surface = Handle{});
 
     // Moves a mesh, and the navmeshes that ride it with it (no rebuild, no new snapshot). A mesh that
     // carries a navmesh takes rigid transforms only (InvalidArgument otherwise, nothing moved).
@@ -105,9 +113,10 @@ public:
     bool link_holds(Handle navmesh, const Link& link) const;
     // The navmesh's pose now; the identity for one that rides nothing or is gone.
     SurfacePose navmesh_pose(Handle navmesh) const;
-    // Replaces every link of the navmesh with those of a links file (place_saved_link; an end off the
-    // navmesh is a failure about "links[i].start"); nothing changes when one is refused.
-    void load_links(Handle navmesh, std::vector<Link> links);
+    // Replaces every link of the navmesh with those of a links file made with `link_settings` (JSON;
+    // empty: not said) (place_saved_link; an end off the navmesh is a failure about
+    // "links[i].start"); nothing changes when one is refused.
+    void load_links(Handle navmesh, std::vector<Link> links, std::string link_settings = {});
 
     // Generates the navmesh's links (jumps, drops, and each link-kind plugin's) against the level and
     // replaces its generated links with them; manual links stay. The generation is kept for
@@ -145,7 +154,7 @@ private:
     void place_host_link(Handle navmesh, Link& link) const;
     // The surface's transform now, checked as a navmesh's placement; needs surface_moves_ held.
     Transform surface_placement(Handle surface) const;
-    Handle add_on_surface(std::shared_ptr<const NavMesh> navmesh, Handle surface);
+    Handle add_on_surface(std::shared_ptr<const NavMesh> navmesh, Handle surface, MadeFor made_for = {});
 
     HandleTag handle_tag_;  // released last, after every handle it tagged
     Logger logger_;

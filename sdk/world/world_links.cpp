@@ -2,6 +2,7 @@
 #include <cmath>
 #include <string>
 
+#include "io/link_json.h"
 #include "links/link_generation.h"
 #include "level/mesh_validation.h"
 #include "links/link_placement.h"
@@ -82,12 +83,12 @@ void World::refuse_generation_on_surface(Handle navmesh) const {
                                          "hold at one placement only): add its links with nl_link_add");
 }
 
-void World::load_links(Handle navmesh, std::vector<Link> links) {
+void World::load_links(Handle navmesh, std::vector<Link> links, std::string link_settings) {
     const std::shared_ptr<const NavMesh> mesh = navmeshes_.navmesh(navmesh);
     for (size_t i = 0; i < links.size(); ++i) {
         naming_fields(concat("links[", i, "].").c_str(), [&] { place_saved_link(*mesh, links[i]); });
     }
-    navmeshes_.replace_links(navmesh, links);
+    navmeshes_.replace_links(navmesh, links, std::move(link_settings));
 }
 
 std::vector<Link> World::plugin_links(Handle navmesh, const NavMesh& mesh, const PluginSettings& settings,
@@ -133,7 +134,8 @@ LinkGenerationReport World::generate_links(Handle navmesh, const LinkSettings& s
     std::vector<Link> links = generation->run(*level_, *tasks_, report, progress);
     const std::vector<Link> extra = plugin_links(navmesh, *mesh, plugin_settings, report);
     links.insert(links.end(), extra.begin(), extra.end());
-    navmeshes_.store_generation(navmesh, LastGeneration{std::move(generation), std::move(plugin_settings)}, links);
+    navmeshes_.store_generation(navmesh, LastGeneration{std::move(generation), std::move(plugin_settings)}, links,
+                                link_settings_to_json(settings));
     return report;
 }
 

@@ -226,18 +226,15 @@ static void add_variants(void) {
     CHECK(info.welded_vertex_count == 15);
     check_grid_navmesh(world, id, 8, NULL, "triangle soup, tolerance 0");
 
-    /* Copies of a vertex up to 0.33 mm apart, no two equal: welded by the default tolerance (1 mm), not by
-       tolerance 0. */
+    /* Copies of a vertex up to 22 mm apart, no two equal (each a whole step of the 1/1024 m grid navmeshes
+       keep their vertices on from the others): welded by a 3 cm tolerance, not by tolerance 0. */
     {
         float jittered[72];
         int k;
         memcpy(jittered, soup, sizeof jittered);
-        for (k = 0; k < 24; ++k) {
-            jittered[3 * k + 0] += 1e-5f * (float)k;
-            jittered[3 * k + 2] -= 1e-5f * (float)k;
-        }
+        for (k = 0; k < 24; ++k) jittered[3 * k + 0] += (float)k / 1024.0f;
         def.vertices = jittered;
-        def.weld_tolerance = 0.001f;
+        def.weld_tolerance = 0.03f;
         CHECK_OK(nl_navmesh_add(world, &def, &id));
         info = navmesh_info(world, id);
         CHECK(info.vertex_count == 9 && info.welded_vertex_count == 15);

@@ -172,8 +172,9 @@ static nl_path_outcome outcome_of(nl_world* world, const nl_path_request_def* de
     return NL_SUCCEEDED(p.status) ? p.result.outcome : 0xffffffffu;
 }
 
+/* Within half a millimetre: navmesh corners are kept on a grid of 1/1024 m. */
 static int at(const nl_path_point* p, float x, float z) {
-    return fabsf(p->position[0] - x) <= 1e-4f && fabsf(p->position[1]) <= 1e-4f && fabsf(p->position[2] - z) <= 1e-4f;
+    return fabsf(p->position[0] - x) <= 5e-4f && fabsf(p->position[1]) <= 5e-4f && fabsf(p->position[2] - z) <= 5e-4f;
 }
 
 static nl_path_queue_stats queue_stats(const nl_world* world) {

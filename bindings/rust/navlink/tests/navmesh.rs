@@ -90,8 +90,9 @@ const RAFT_QUAD: [f32; 12] = [-3.6, 0.0, -1.6, -3.6, 0.0, 1.6, 3.6, 0.0, 1.6, 3.
 const RAFT_MOVED: [f32; 16] = [0.0, 0.0, -1.0, 0.0, 0.0, 1.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 10.0, 0.0, 0.0, 1.0];
 const RAFT_SCALED: [f32; 16] = [2.0, 0.0, 0.0, 0.0, 0.0, 2.0, 0.0, 0.0, 0.0, 0.0, 2.0, 0.0, 10.0, 0.0, 0.0, 1.0];
 
+// Within a millimetre: navmeshes keep coordinates on a grid of 1/1024 m.
 fn assert_near(got: [f32; 3], want: [f32; 3], what: &str) {
-    assert!(got.iter().zip(want.iter()).all(|(g, w)| (g - w).abs() < 1e-4), "{}: {:?}, expected {:?}", what, got, want);
+    assert!(got.iter().zip(want.iter()).all(|(g, w)| (g - w).abs() < 1e-3), "{}: {:?}, expected {:?}", what, got, want);
 }
 
 #[test]
@@ -111,8 +112,8 @@ fn navmesh_on_a_moving_surface() {
     let info = world.navmesh_info(navmesh).unwrap();
     assert_eq!(info.surface, raft);
     assert!(
-        info.bounds_min[0] <= 8.4 + 1e-4 && info.bounds_max[0] >= 11.6 - 1e-4 && info.bounds_min[2] <= -3.6 + 1e-4
-            && info.bounds_max[2] >= 3.6 - 1e-4,
+        info.bounds_min[0] <= 8.4 + 1e-3 && info.bounds_max[0] >= 11.6 - 1e-3 && info.bounds_min[2] <= -3.6 + 1e-3
+            && info.bounds_max[2] >= 3.6 - 1e-3,
         "{:?} {:?}",
         info.bounds_min,
         info.bounds_max

@@ -1,0 +1,55 @@
+// The baked navmesh file: a navmesh, its links and what they were made for, compact and checked.
+//
+// Little-endian. A 32-byte header: the magic bytes 89 'N' 'L' 'N' 'A' 'V' 0D 0A, the format version
+// (u32), the section count (u32), the file's bytes (u64), the CRC-32 of every byte after the header
+// (u32) and 4 reserved bytes. Then sections, each a tag (4 ASCII bytes), 4 reserved bytes, its
+// payload's bytes (u64) and the payload: MADE (the agent type and what it was made with), GEOM (the
+// polygons and their detail) and LINK (the links). A reader skips sections it does not know.
+//
+// Coordinates are fixed point: whole quanta of the navmesh grid (2^-10 m, navmesh_grid.h, stated in
+// GEOM) from the navmesh's lowest corner. Navmeshes keep every coordinate on that grid, so the file
+// holds them exactly: a loaded navmesh is the saved one, bit for bit, and answers every query alike.
+// Each axis of the vertices takes the fewest bytes its extent needs (2 up to 64 m, 3 up to 16 km);
+// polygon corners the fewest the vertex count needs; detail triangles a byte per corner where a
+// polygon's detail vertices lie within 256 of each other; link points a variable-length offset.
+// Adjacency and outline are not stored: the loader builds them again from the shared corners, as
+// nl_navmesh_add does.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "links/link.h"
+#include "navmesh/made_for.h"
+#include "navmesh/navmesh_builder.h"
+
+namespace nl {
+
+constexpr uint32_t kNavMeshFileVersion = 1;
+constexpr size_t kNavMeshFileHeaderBytes = 32;
+
+struct NavMeshFile {
+    NavMeshInput navmesh;     // weld_tolerance 0: the saved vertices are welded already
+    std::vector<Link> links;  // in the order they were saved; their polygons as saved
+    MadeFor made_for;
+    bool rides_surface = false;  // the coordinates are in the space of the mesh it rode
+    uint32_t version = 0;
+    float quantum = 0.0f;        // metres (2^-10)
+    std::string writer;          // the NavLink version that wrote it
+};
+
+// The file for `navmesh` and its `links` (none may be a cross link: InvalidArgument).
+std::vector<uint8_t> write_navmesh_file(const NavMesh& navmesh, const std::vector<Link>& links, const MadeFor& made_for,
+                                        bool rides_surface);
+
+// Reads a file written by write_navmesh_file, checking everything but what building it checks
+// (build_navmesh) and placing its links (place_saved_link). Throws VersionMismatch (not a navmesh
+// file, or a newer version) or Parse (truncated, corrupted: the section and what is wrong named).
+// Allocates no more than a small multiple of `size`, whatever the file says.
+NavMeshFile read_navmesh_file(const uint8_t* data, size_t size);
+
+// The CRC-32 a file's header holds for the bytes after it (for tools that patch a file on purpose).
+uint32_t navmesh_file_checksum(const uint8_t* data, size_t size);
+
+}  // namespace nl

@@ -1,0 +1,26 @@
+#include "level/level_hash.h"
+
+#include <cstring>
+
+namespace nl {
+
+uint64_t level_hash(const TriangleMesh& mesh) {
+    uint64_t h = 14695981039346656037ull;
+    auto mix = [&h](uint32_t word) {
+        for (int i = 0; i < 4; ++i) {
+            h ^= (word >> (8 * i)) & 0xffu;
+            h *= 1099511628211ull;
+        }
+    };
+    for (const Triangle& t : mesh.triangles)
+        for (uint32_t corner : t)
+            for (int axis = 0; axis < 3; ++axis) {
+                uint32_t bits;
+                const float v = mesh.vertices[corner][axis];
+                std::memcpy(&bits, &v, 4);
+                mix(bits);
+            }
+    return h == 0 ? 1 : h;
+}
+
+}  // namespace nl
