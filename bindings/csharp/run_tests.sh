@@ -22,7 +22,9 @@ python3 "$here/../layout/c_layout.py" "${include_args[@]}" -o "$out/c_layout.txt
 # C# 7.2 is the newest mcs accepts; unsafe for the fixed-size buffers of the blittable structs.
 flags=(-langversion:7.2 -unsafe -debug -warnaserror+ -nologo)
 "$mcs" "${flags[@]}" -target:library -out:"$out/NavLink.dll" -recurse:"$here/NavLink/*.cs"
-"$mcs" "${flags[@]}" -r:"$out/NavLink.dll" -r:System.Core -out:"$out/NavLinkTests.exe" -recurse:"$here/Tests/*.cs"
+# System.Runtime.Serialization and System.Xml.Linq: the framework's JSON reader, for the made-for JSON.
+"$mcs" "${flags[@]}" -r:"$out/NavLink.dll" -r:System.Core -r:System.Runtime.Serialization -r:System.Xml \
+       -r:System.Xml.Linq -out:"$out/NavLinkTests.exe" -recurse:"$here/Tests/*.cs"
 
 # [DllImport("navlink")] finds libnavlink.so on the loader's path, as in a Unity player's Plugins folder.
 export LD_LIBRARY_PATH="$NAVLINK_LIB_DIR${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"

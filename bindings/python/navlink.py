@@ -70,6 +70,7 @@ PLUGIN_NAVMESH_BUILDER, PLUGIN_LINK_KIND = 0x1, 0x2
 PLUGIN_ABI_VERSION = 1
 PLUGIN_ENTRY_SYMBOL = "nl_plugin_entry"
 RECAST_PARTITION_WATERSHED, RECAST_PARTITION_MONOTONE, RECAST_PARTITION_LAYERS = 0, 1, 2
+NAVMESH_LOAD_SAME_LEVEL = 0x1
 
 
 def succeeded(status):
@@ -262,6 +263,19 @@ class LinkGenerationReport(_Growable):
         "rejected_walkable", "rejected_too_shallow", "rejected_too_deep", "reserved")]
 
 
+class NavmeshLoadDef(Structure):
+    _fields_ = [("size", c_uint32), ("surface", MeshId), ("flags", c_uint32)]
+
+
+class NavmeshFileInfo(Structure):
+    """What a navmesh file holds (nl_navmesh_file_describe). Not an nl_*_init struct: set `size` before a
+    raw call (describe_navmesh_file does)."""
+    _fields_ = [("size", c_uint32), ("version", c_uint32), ("file_size", c_uint64), ("agent", AgentType),
+                ("vertex_count", c_uint32), ("polygon_count", c_uint32), ("detail_triangle_count", c_uint32),
+                ("link_count", c_uint32), ("generated_link_count", c_uint32), ("rides_surface", c_uint32),
+                ("quantum", c_float), ("reserved", c_uint32), ("level_hash", c_uint64)]
+
+
 class PathTicket(_Id):
     pass
 
@@ -417,7 +431,8 @@ C_STRUCTS = {
     "nl_navmesh_info": NavmeshInfo, "nl_nav_polygon": NavPolygon, "nl_boundary_edge": BoundaryEdge,
     "nl_nav_point": NavPoint, "nl_navmesh_build_def": NavmeshBuildDef, "nl_link_id": LinkId,
     "nl_link_requirements": LinkRequirements, "nl_link": Link, "nl_link_def": LinkDef,
-    "nl_link_settings": LinkSettings, "nl_link_generation_report": LinkGenerationReport, "nl_path_ticket": PathTicket,
+    "nl_link_settings": LinkSettings, "nl_link_generation_report": LinkGenerationReport,
+    "nl_navmesh_load_def": NavmeshLoadDef, "nl_navmesh_file_info": NavmeshFileInfo, "nl_path_ticket": PathTicket,
     "nl_agent_capabilities": AgentCapabilities, "nl_path_request_def": PathRequestDef, "nl_path_point": PathPoint,
     "nl_path_result": PathResultInfo, "nl_path_budget": PathBudget, "nl_path_finished": PathFinished,
     "nl_path_queue_stats": PathQueueStats, "nl_agent_id": AgentId, "nl_agent_def": AgentDef,
@@ -487,6 +502,13 @@ _PROTOTYPES = {
                                                   c_void_p, POINTER(LinkGenerationReport)]),
     "nl_navmesh_save_links_json": (c_uint32, [_w, NavmeshId, c_char_p, c_size_t, POINTER(c_size_t)]),
     "nl_navmesh_load_links_json": (c_uint32, [_w, NavmeshId, c_char_p, c_size_t, _u32p]),
+    "nl_navmesh_save": (c_uint32, [_w, NavmeshId, c_void_p, c_size_t, POINTER(c_size_t)]),
+    "nl_navmesh_save_file": (c_uint32, [_w, NavmeshId, c_char_p]),
+    "nl_default_navmesh_load_def": (NavmeshLoadDef, []),
+    "nl_navmesh_load": (c_uint32, [_w, c_void_p, c_size_t, POINTER(NavmeshLoadDef), POINTER(NavmeshId)]),
+    "nl_navmesh_load_file": (c_uint32, [_w, c_char_p, POINTER(NavmeshLoadDef), POINTER(NavmeshId)]),
+    "nl_navmesh_file_describe": (c_uint32, [c_void_p, c_size_t, POINTER(NavmeshFileInfo), c_char_p, c_size_t,
+                                            POINTER(c_size_t)]),
     "nl_default_agent_capabilities": (AgentCapabilities, []),
     "nl_default_path_request_def": (PathRequestDef, []),
     "nl_path_find": (c_uint32, [_w, POINTER(PathRequestDef), POINTER(PathResultInfo), POINTER(PathPoint), c_uint32,
@@ -770,6 +792,27 @@ def default_link_def():
 
 def default_link_settings():
     return lib.nl_default_link_settings()
+
+
+def default_navmesh_load_def():
+    """The null surface and no flags: a NavmeshLoadDef for a raw nl_navmesh_load (World.load_navmesh takes
+    surface and same_level instead)."""
+    return lib.nl_default_navmesh_load_def()
+
+
+def describe_navmesh_file(data):
+    """Reads a navmesh file's bytes without loading it (nl_navmesh_file_describe; no world needed): returns
+    (NavmeshFileInfo, made-for JSON string), the JSON an object {"builder", "builder_settings",
+    "link_settings", "level_hash", "writer"}. STATUS_VERSION_MISMATCH (not a NavLink navmesh file, or a newer
+    format), STATUS_PARSE_ERROR (truncated or corrupted)."""
+    data = bytes(data)
+    info = NavmeshFileInfo()
+    info.size = sizeof(NavmeshFileInfo)
+    length = c_size_t()
+    _check(lib.nl_navmesh_file_describe(data, len(data), byref(info), None, 0, byref(length)))
+    buffer = ctypes.create_string_buffer(length.value + 1)
+    _check(lib.nl_navmesh_file_describe(data, len(data), None, buffer, len(buffer), byref(length)))
+    return info, buffer.raw[:length.value].decode()
 
 
 def default_agent_capabilities():
@@ -1167,6 +1210,53 @@ class World:
         count = c_uint32()
         _check(lib.nl_navmesh_load_links_json(self.pointer, navmesh, data, len(data), byref(count)))
         return count.value
+
+    # --- baked navmesh files ---
+
+    def save_navmesh(self, navmesh):
+        """The navmesh, its links (generated and manual, in links() order) and what they were made for, as a
+        navmesh file's bytes. STATUS_INVALID_ARGUMENT for a navmesh with cross links (a file holds one
+        navmesh's own links)."""
+        while True:
+            size = c_size_t()
+            _check(lib.nl_navmesh_save(self.pointer, navmesh, None, 0, byref(size)))
+            buffer = ctypes.create_string_buffer(size.value)
+            status = lib.nl_navmesh_save(self.pointer, navmesh, buffer, len(buffer), byref(size))
+            if _buffer_too_small(status):
+                continue  # the navmesh's links changed between the two calls
+            _check(status)
+            return buffer.raw[:size.value]
+
+    def save_navmesh_file(self, navmesh, path):
+        """save_navmesh written to the file at `path`, whole or not at all. STATUS_IO_ERROR: cannot write."""
+        _check(lib.nl_navmesh_save_file(self.pointer, navmesh, os.fsencode(path)))
+
+    @staticmethod
+    def _load_def(surface, same_level):
+        d = lib.nl_default_navmesh_load_def()
+        if surface is not None:
+            d.surface = surface
+        d.flags = NAVMESH_LOAD_SAME_LEVEL if same_level else 0
+        return d
+
+    def load_navmesh(self, data, surface=None, same_level=False):
+        """Adds the navmesh and its links held in a navmesh file's bytes (new ids); returns its NavmeshId.
+        surface: the MESH_MOVABLE mesh it rides now, for a file whose navmesh rode one
+        (NavmeshFileInfo.rides_surface), else None. same_level: refuse (STATUS_INVALID_ARGUMENT) a file baked
+        from other level geometry than the world holds now. STATUS_VERSION_MISMATCH (not a NavLink navmesh
+        file, or a newer format), STATUS_PARSE_ERROR (truncated or corrupted); nothing is added on failure."""
+        data = bytes(data)
+        d = self._load_def(surface, same_level)
+        navmesh = NavmeshId()
+        _check(lib.nl_navmesh_load(self.pointer, data, len(data), byref(d), byref(navmesh)))
+        return navmesh
+
+    def load_navmesh_file(self, path, surface=None, same_level=False):
+        """load_navmesh from the file at `path`; also STATUS_NOT_FOUND (no such file), STATUS_IO_ERROR."""
+        d = self._load_def(surface, same_level)
+        navmesh = NavmeshId()
+        _check(lib.nl_navmesh_load_file(self.pointer, os.fsencode(path), byref(d), byref(navmesh)))
+        return navmesh
 
     # --- paths ---
 

@@ -5,9 +5,11 @@ Environment: NAVLINK_LIBRARY (libnavlink.so to test), NAVLINK_LEVELS_DIR (the sh
 the layout check; default: the source tree's and build/capi/include).
 """
 import ctypes
+import json
 import math
 import os
 import sys
+import tempfile
 import threading
 import unittest
 
@@ -672,6 +674,72 @@ class LinkTest(NavLinkTestCase):
             self.assertFails(nl.STATUS_PARSE_ERROR, "nl_navmesh_load_links_json", world.load_links_json, navmesh, "[1,")
             d.end = nl.Vec3(0, 0, 0)
             self.assertFails(nl.STATUS_INVALID_ARGUMENT, "def->end", world.add_link, navmesh, d)
+
+
+class NavmeshFileTest(NavLinkTestCase):
+    def test_baked_navmesh_file(self):
+        """Saved to bytes and to a file, described, loaded into a new world: the same polygons, links and
+        paths; truncated and foreign bytes refused with nothing added."""
+        with nl.World() as world, tempfile.TemporaryDirectory() as tmp:
+            navmesh = gap_level_with_links(world)
+            d = nl.default_link_def()
+            d.start, d.end = nl.Vec3(-5, 0, 4), nl.Vec3(5, 0, 4)
+            world.add_link(navmesh, d)
+            link_count = len(world.links(navmesh))
+            polygons = world.navmesh_info(navmesh).polygon_count
+            original = world.find_path(nl.PathQuery(navmesh, WEST, EAST, jumper()))
+            self.assertEqual(original.outcome, nl.PATH_COMPLETE)
+            data = world.save_navmesh(navmesh)
+            self.assertIsInstance(data, bytes)
+
+            info, made_for = nl.describe_navmesh_file(data)
+            self.assertEqual((info.size, info.file_size), (ctypes.sizeof(nl.NavmeshFileInfo), len(data)))
+            self.assertGreaterEqual(info.version, 1)
+            self.assertEqual(info.polygon_count, polygons)
+            self.assertEqual((info.link_count, info.generated_link_count), (link_count, link_count - 1))
+            self.assertAlmostEqual(info.agent.radius, 0.6, places=6)
+            self.assertEqual(info.quantum, 1 / 1024)
+            self.assertEqual(info.rides_surface, 0)
+            made_for = json.loads(made_for)
+            self.assertIn("builder", made_for)
+            self.assertEqual(made_for["builder"], "recast")
+            self.assertEqual(made_for["level_hash"], "%016x" % info.level_hash)
+
+            def assert_same(w, loaded):
+                self.assertEqual(w.navmesh_info(loaded).polygon_count, polygons)
+                self.assertEqual(len(w.links(loaded)), link_count)
+                path = w.find_path(nl.PathQuery(loaded, WEST, EAST, jumper()))
+                self.assertEqual(path.outcome, nl.PATH_COMPLETE)
+                self.assertAlmostEqual(path.info.length, original.info.length, delta=1e-4)
+
+            with nl.World() as fresh:
+                loaded = fresh.load_navmesh(data)
+                assert_same(fresh, loaded)
+                self.assertEqual(fresh.save_navmesh(loaded), data, "what it was made for travels with it")
+
+            path = os.path.join(tmp, "gap.nlnav")
+            world.save_navmesh_file(navmesh, path)
+            with open(path, "rb") as f:
+                self.assertEqual(f.read(), data)
+            with nl.World() as fresh:
+                assert_same(fresh, fresh.load_navmesh_file(path))
+
+            # The level it was baked from: same_level refuses a world without it, takes one with it.
+            with nl.World() as other:
+                self.assertFails(nl.STATUS_INVALID_ARGUMENT, "baked from", other.load_navmesh, data, same_level=True)
+                self.assertEqual(other.navmeshes(), [])
+                add_gap_level(other)
+                assert_same(other, other.load_navmesh(data, same_level=True))
+
+                count = len(other.navmeshes())
+                self.assertFails(nl.STATUS_PARSE_ERROR, "nl_navmesh_load", other.load_navmesh, data[:len(data) // 2])
+                self.assertFails(nl.STATUS_VERSION_MISMATCH, "nl_navmesh_load", other.load_navmesh, b"hello")
+                self.assertFails(nl.STATUS_PARSE_ERROR, "nl_navmesh_file_describe", nl.describe_navmesh_file,
+                                 data[:len(data) // 2])
+                self.assertFails(nl.STATUS_VERSION_MISMATCH, "nl_navmesh_file_describe", nl.describe_navmesh_file, b"hello")
+                self.assertFails(nl.STATUS_NOT_FOUND, "nl_navmesh_load_file", other.load_navmesh_file,
+                                 os.path.join(tmp, "missing.nlnav"))
+                self.assertEqual(len(other.navmeshes()), count, "nothing added on failure")
 
 
 class PathTest(NavLinkTestCase):

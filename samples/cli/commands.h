@@ -5,6 +5,8 @@
 namespace nl::cli {
 
 int run_generate(int argc, char** argv);
+int run_bake(int argc, char** argv);
+int run_info(int argc, char** argv);
 int run_path(int argc, char** argv);
 int run_demo(int argc, char** argv);
 int run_simulate(int argc, char** argv);

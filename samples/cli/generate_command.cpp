@@ -1,4 +1,5 @@
-// navlink generate: navmesh, links, links JSON, report (and a picture).
+// navlink generate and navlink bake: navmesh, links, report (and a picture); generate writes the
+// links as JSON, bake the navmesh and its links as a baked navmesh file.
 #include <cstdio>
 
 #include "arguments.h"
@@ -9,18 +10,24 @@
 #include "link_files.h"
 #include "navigable_level.h"
 #include "navmesh_contents.h"
+#include "navmesh_files.h"
 #include "picture_export.h"
 #include "sample_error.h"
 #include "text_file.h"
 
 namespace nl::cli {
 
-int run_generate(int argc, char** argv) {
+namespace {
+
+enum class Output { LinksJson, NavMeshFile };
+
+int generate(int argc, char** argv, Output output) {
+    const bool bake = output == Output::NavMeshFile;
     const samples::Arguments args(
-        "navlink generate", "generate", argc, argv, 2,
+        bake ? "navlink bake" : "navlink generate", bake ? "bake" : "generate", argc, argv, 2,
         {{"out", true}, {"navmesh", true}, {"agent", true}, {"settings", true}, {"png", true}, {"oblique", false}});
     if (args.wants_help()) {
-        std::fputs(kGenerateHelp, stdout);
+        std::fputs(bake ? kBakeHelp : kGenerateHelp, stdout);
         return 0;
     }
     args.expect_positional(1, "LEVEL.obj");
@@ -41,7 +48,8 @@ int run_generate(int argc, char** argv) {
     NavigableLevel level(args.positional()[0], args.value("navmesh"), agent.body, settings.recast_json,
                          args.has("png"));
     const nl_link_generation_report report = level.generate_links(settings.links);
-    samples::write_text_file(out, samples::links_json(level.world(), level.navmesh()));
+    if (bake) samples::save_navmesh_file(level.world(), level.navmesh(), out);
+    else samples::write_text_file(out, samples::links_json(level.world(), level.navmesh()));
 
     const samples::NavmeshContents contents = samples::read_navmesh_contents(level.world(), level.navmesh());
     std::printf("level: %s (%u triangles)\n", level.level().name.c_str(), level.level().info.triangle_count);
@@ -60,5 +68,10 @@ int run_generate(int argc, char** argv) {
     }
     return 0;
 }
+
+}  // namespace
+
+int run_generate(int argc, char** argv) { return generate(argc, argv, Output::LinksJson); }
+int run_bake(int argc, char** argv) { return generate(argc, argv, Output::NavMeshFile); }
 
 }  // namespace nl::cli

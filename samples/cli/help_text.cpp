@@ -14,7 +14,9 @@ const char* const kMainHelp =
     "          and where each arrived; writes simulate.png with their tracks. --platforms: passengers\n"
     "          ride a shuttle, a turning disc and a lift beside the level; writes platforms.png\n"
     "  generate    build a level's navmesh and generate its jump and drop links into a JSON file\n"
-    "  path    plan a path over a level's navmesh and links, and print its segments\n"
+    "  bake    the same, written with the navmesh as one baked navmesh file (.nlnav) to load at run time\n"
+    "  path    plan a path over a level's navmesh and links, or over a baked file, and print its segments\n"
+    "  info    say what a baked navmesh file holds and what it was made for\n"
     "  level   write the generated default level as an OBJ file\n"
     "\n"
     "`navlink COMMAND --help` describes a command. Errors are one line on stderr and exit status 2.\n";
@@ -38,14 +40,37 @@ const char* const kGenerateHelp =
     "  --png VIEW.png        also draw the level, navmesh, outline and links\n"
     "  --oblique             draw the picture from an angle instead of straight down\n";
 
+const char* const kBakeHelp =
+    "usage: navlink bake LEVEL.obj --out NAVMESH.nlnav [--navmesh NAVMESH.obj] [--agent AGENT.json]\n"
+    "                    [--settings GEN.json] [--png VIEW.png] [--oblique]\n"
+    "\n"
+    "As navlink generate, but writes the navmesh, its links and what they were made for (the body, the\n"
+    "builder and its settings, the level's hash, the link settings) as one baked navmesh file: compact,\n"
+    "checked, loaded with no rebuild by nl_navmesh_load_file or navlink path NAVMESH.nlnav.\n"
+    "(navlink generate still writes the links alone as JSON.)\n"
+    "\n"
+    "  --out NAVMESH.nlnav   where the file goes (written whole or not at all)\n"
+    "  other options         as navlink generate\n";
+
+const char* const kInfoHelp =
+    "usage: navlink info NAVMESH.nlnav [--json]\n"
+    "\n"
+    "Prints what a baked navmesh file holds (polygons, vertices, links, format version) and what it was\n"
+    "made for: the body, the builder and its settings, the hash of the level it was built from, the\n"
+    "link generation settings. The file is checked whole; a damaged one is refused with the reason.\n"
+    "\n"
+    "  --json                print only what it was made for, as JSON\n";
+
 const char* const kPathHelp =
     "usage: navlink path LEVEL.obj --links LINKS.json --from X,Y,Z --to X,Y,Z [--agent AGENT.json]\n"
     "                    [--navmesh NAVMESH.obj] [--settings GEN.json] [--json] [--png VIEW.png] [--oblique]\n"
+    "       navlink path NAVMESH.nlnav --from X,Y,Z --to X,Y,Z [--links LINKS.json] [--agent AGENT.json] [--json]\n"
     "\n"
     "Plans a path from --from to --to for the agent (default: Recast's body, jumps up to 4 m across and\n"
     "1.5 m up, drops up to 5 m) over LEVEL's navmesh and the links of LINKS.json (from navlink generate with\n"
     "the same level, agent and settings), and prints its points: how each segment is travelled (walk,\n"
-    "jump, drop), the link taken, and the length.\n"
+    "jump, drop), the link taken, and the length. Over a baked NAVMESH.nlnav (navlink bake), nothing is\n"
+    "built: the file's navmesh and links are planned over as they are (--links replaces its links).\n"
     "\n"
     "  --json                print the path as a JSON object instead of text\n"
     "  --png VIEW.png        also draw the path over the level\n"

@@ -21,7 +21,7 @@ std::string one_line(std::string text) {
 
 int main(int argc, char** argv) {
     if (argc < 2) {
-        std::fprintf(stderr, "navlink: missing command: demo, simulate, generate, path or level (see navlink --help)\n");
+        std::fprintf(stderr, "navlink: missing command: demo, simulate, generate, bake, path, info or level (see navlink --help)\n");
         return 2;
     }
     if (!std::strcmp(argv[1], "--help") || !std::strcmp(argv[1], "-h") || !std::strcmp(argv[1], "help")) {
@@ -31,6 +31,8 @@ int main(int argc, char** argv) {
     const std::string command = argv[1];
     try {
         if (command == "generate") return nl::cli::run_generate(argc, argv);
+        if (command == "bake") return nl::cli::run_bake(argc, argv);
+        if (command == "info") return nl::cli::run_info(argc, argv);
         if (command == "path") return nl::cli::run_path(argc, argv);
         if (command == "demo") return nl::cli::run_demo(argc, argv);
         if (command == "simulate") return nl::cli::run_simulate(argc, argv);

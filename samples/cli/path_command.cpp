@@ -1,4 +1,5 @@
-// navlink path: plans one path over a level's navmesh and a links file, and prints it.
+// navlink path: plans one path over a level's navmesh and a links file, or over a baked navmesh file
+// and its links, and prints it.
 #include <cstdio>
 
 #include "arguments.h"
@@ -8,6 +9,7 @@
 #include "link_files.h"
 #include "navigable_level.h"
 #include "navmesh_contents.h"
+#include "navmesh_files.h"
 #include "palette.h"
 #include "path_output.h"
 #include "path_plan.h"
@@ -31,8 +33,10 @@ int run_path(int argc, char** argv) {
         std::fputs(kPathHelp, stdout);
         return 0;
     }
-    args.expect_positional(1, "LEVEL.obj");
-    const std::string links_path = args.required("links");
+    args.expect_positional(1, "LEVEL.obj or NAVMESH.nlnav");
+    const std::string& input = args.positional()[0];
+    const bool baked = samples::is_navmesh_file(input) ||
+                       (input.size() > 6 && input.compare(input.size() - 6, 6, ".nlnav") == 0);  // a damaged one: say why
     float from[3], to[3];
     samples::parse_point(args.required("from"), "--from", from);
     samples::parse_point(args.required("to"), "--to", to);
@@ -42,6 +46,22 @@ int run_path(int argc, char** argv) {
                                                      ? samples::read_generation_settings_file(*args.value("settings"))
                                                      : samples::GenerationSettings();
 
+    if (baked) {
+        // The navmesh and its links as baked: nothing is built, and there is no level to draw.
+        for (const char* level_only : {"navmesh", "settings", "png", "oblique"})
+            if (args.has(level_only))
+                throw samples::SampleError(std::string("--") + level_only + " needs LEVEL.obj: " + args.positional()[0] +
+                                           " is a baked navmesh file, planned over as it is");
+        samples::World world;
+        const nl_navmesh_id navmesh = samples::load_navmesh_file(world.get(), args.positional()[0]);
+        if (const auto links = args.value("links")) samples::load_links_file(world.get(), navmesh, *links);
+        const samples::PlannedPath path = samples::find_path(world.get(), navmesh, from, to, agent.capabilities);
+        const samples::NavmeshContents contents = samples::read_navmesh_contents(world.get(), navmesh);
+        if (args.has("json")) std::fputs(path_json(path, contents.links).c_str(), stdout);
+        else print_path_text(stdout, path, contents.links);
+        return path.result.outcome == NL_PATH_COMPLETE ? 0 : 1;
+    }
+    const std::string links_path = args.required("links");
     NavigableLevel level(args.positional()[0], args.value("navmesh"), agent.body, settings.recast_json,
                          args.has("png"));
     samples::load_links_file(level.world(), level.navmesh(), links_path);

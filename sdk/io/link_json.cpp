@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <limits>
 
 #include "io/json_input.h"
@@ -224,11 +226,28 @@ constexpr NamedWhole kWholeSettings[] = {
 
 }  // namespace
 
+namespace {
+
+// The shortest decimal that reads back as `v` (0.1, not 0.10000000149011612).
+double shortest_decimal(float v) {
+    char text[32];
+    for (int digits = 6; digits < 9; ++digits) {
+        std::snprintf(text, sizeof text, "%.*g", digits, double(v));
+        if (std::strtof(text, nullptr) == v) return std::strtod(text, nullptr);
+    }
+    std::snprintf(text, sizeof text, "%.9g", double(v));
+    return std::strtod(text, nullptr);
+}
+
+}  // namespace
+
 std::string link_settings_to_json(const LinkSettings& s) {
     Json out = Json::object();
-    for (const NamedFloat& f : kFloatSettings) out[f.name] = s.*f.field;
+    for (const NamedFloat& f : kFloatSettings) out[f.name] = shortest_decimal(s.*f.field);
     for (const NamedWhole& w : kWholeSettings) out[w.name] = s.*w.field;
-    out["drop_angles"] = s.drop_angles;
+    Json angles = Json::array();
+    for (float a : s.drop_angles) angles.push_back(shortest_decimal(a));
+    out["drop_angles"] = angles;
     return out.dump();
 }
 

@@ -1,12 +1,15 @@
 #include "io/navmesh_file.h"
 
+#include <nlohmann/json.hpp>
 #include <zlib.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 
 #include "io/byte_stream.h"
+#include "io/json_input.h"
 #include "level/mesh_validation.h"
 #include "navmesh/navmesh_grid.h"
 #include "util/error.h"
@@ -191,7 +194,7 @@ void read_geometry(ByteReader& in, NavMeshInput& out, Quantiser& q) {
     out.detail_starts.push_back(0);
     int64_t base = 0;
     for (uint32_t p = 0; p < polygons; ++p) {
-        const uint32_t triangles = in.count("a polygon's detail triangle count", 4);
+        const uint32_t triangles = in.count("a polygon's detail triangle count", 3);
         base += in.signed_varint("a polygon's first detail vertex");
         const unsigned width = in.u8("a detail corner width");
         if (width < 1 || width > 4) fail(ErrorCode::Parse, in.context(), ": a detail corner width of ", width, " bytes");
@@ -267,7 +270,30 @@ std::string tag_name(const uint8_t* tag) {
     return name;
 }
 
+// A recorded settings text as JSON: the object it holds (read by the bounded reader: a file may say
+// anything), the text itself when it is not JSON, or null when none was recorded.
+nlohmann::json settings_object(const std::string& text) {
+    if (text.empty()) return nullptr;
+    try {
+        return parse_json(text, "recorded settings");
+    } catch (const Error&) {
+        return text;
+    }
+}
+
 }  // namespace
+
+std::string made_for_json(const NavMeshFile& file) {
+    char hash[17];
+    std::snprintf(hash, sizeof hash, "%016llx", static_cast<unsigned long long>(file.made_for.level_hash));
+    const nlohmann::json out = {
+        {"builder", file.made_for.builder.empty() ? nlohmann::json(nullptr) : nlohmann::json(file.made_for.builder)},
+        {"builder_settings", settings_object(file.made_for.builder_settings)},
+        {"link_settings", settings_object(file.made_for.link_settings)},
+        {"level_hash", hash},
+        {"writer", file.writer}};
+    return out.dump();
+}
 
 uint32_t navmesh_file_checksum(const uint8_t* data, size_t size) {
     if (size <= kNavMeshFileHeaderBytes) return static_cast<uint32_t>(crc32_z(0L, Z_NULL, 0));

@@ -49,6 +49,10 @@ std::vector<uint8_t> write_navmesh_file(const NavMesh& navmesh, const std::vecto
 // Allocates no more than a small multiple of `size`, whatever the file says.
 NavMeshFile read_navmesh_file(const uint8_t* data, size_t size);
 
+// What the file was made for, as a JSON object: {"builder", "builder_settings", "link_settings",
+// "level_hash" (16 hex digits), "writer"}; settings are objects (null when not recorded).
+std::string made_for_json(const NavMeshFile& file);
+
 // The CRC-32 a file's header holds for the bytes after it (for tools that patch a file on purpose).
 uint32_t navmesh_file_checksum(const uint8_t* data, size_t size);
 

@@ -2,12 +2,7 @@
 
 #include <tiny_obj_loader.h>
 
-#include <cerrno>
-#include <cstdio>
-#include <cstring>
-#include <filesystem>
-#include <memory>
-
+#include "io/file_bytes.h"
 #include "io/obj_records.h"
 #include "util/error.h"
 
@@ -56,26 +51,11 @@ tinyobj::ObjReaderConfig config() {
     return c;
 }
 
-// The file's bytes, read ourselves so a missing file is NotFound and a failed read Io (not a parse
-// error of what was read before it failed), and .mtl files the level names are never opened.
-std::string file_bytes(const std::string& path) {
-    std::error_code ec;
-    const auto status = std::filesystem::status(path, ec);
-    if (!std::filesystem::exists(status)) fail(ErrorCode::NotFound, "cannot open '", path, "': no such file");
-    if (std::filesystem::is_directory(status)) fail(ErrorCode::Io, "cannot read '", path, "': it is a directory");
-    const std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"), &std::fclose);
-    if (!file) fail(ErrorCode::Io, "cannot open '", path, "': ", std::strerror(errno));
-    std::string bytes;
-    char buffer[1 << 16];
-    size_t count = 0;
-    while ((count = std::fread(buffer, 1, sizeof buffer, file.get())) > 0) bytes.append(buffer, count);
-    if (std::ferror(file.get())) fail(ErrorCode::Io, "cannot read '", path, "': ", std::strerror(errno));
-    return bytes;
-}
-
 }  // namespace
 
-TriangleMesh read_obj_file(const std::string& path) { return read_obj_text(file_bytes(path), path); }
+// The file is read here, so a missing file is NotFound and a failed read Io (not a parse error of
+// what was read before it failed), and .mtl files the level names are never opened.
+TriangleMesh read_obj_file(const std::string& path) { return read_obj_text(read_file_bytes(path), path); }
 
 TriangleMesh read_obj_text(std::string_view text, const std::string& name) {
     tinyobj::ObjReader reader;

@@ -109,20 +109,28 @@ Handle World::build_navmesh(const NavMeshBuildRequest& request) {
 }
 
 Handle World::load_navmesh(const NavMeshFile& file, Handle surface) {
+    if (surface != Handle{}) {
+        std::lock_guard lock(surface_moves_);
+        surface_placement(surface);
+    }
     if (file.rides_surface != (surface != Handle{}))
         fail_field(ErrorCode::InvalidArgument, "surface: ",
                    file.rides_surface ? "the file's navmesh rode a moving mesh (its coordinates are in that mesh's space): "
                                         "give the mesh it rides"
                                       : "the file's navmesh rode no moving mesh (its coordinates are in the world)");
-    if (surface != Handle{}) {
-        std::lock_guard lock(surface_moves_);
-        surface_placement(surface);
-    }
-    std::shared_ptr<const NavMesh> navmesh = nl::build_navmesh(file.navmesh);
+    // What the file holds is not the caller's input: its failures say so, and are about no field.
+    const auto in_the_file = [](const std::string& what, auto&& fn) {
+        try {
+            return fn();
+        } catch (const Error& e) {
+            throw Error(e.code(), concat("the file's ", what, e.what()));
+        }
+    };
+    std::shared_ptr<const NavMesh> navmesh = in_the_file("navmesh: ", [&] { return nl::build_navmesh(file.navmesh); });
     log_repairs(*navmesh);
     std::vector<Link> links = file.links;
     for (size_t i = 0; i < links.size(); ++i)
-        naming_fields(concat("links[", i, "].").c_str(), [&] { place_saved_link(*navmesh, links[i]); });
+        in_the_file(concat("links[", i, "]."), [&] { place_saved_link(*navmesh, links[i]); });
     const Handle h = add_on_surface(std::move(navmesh), surface, file.made_for);
     navmeshes_.replace_links(h, links, file.made_for.link_settings);
     return h;

@@ -81,6 +81,20 @@ _Static_assert(offsetof(nl_navmesh_def, size) == 0 && offsetof(nl_navmesh_build_
                    offsetof(nl_recast_settings, size) == 0 && offsetof(nl_plugin_host, size) == 0 &&
                    offsetof(nl_plugin_info, size) == 0,
                "growable structs start with size");
+/* Baked navmesh files (0.3). */
+_Static_assert(offsetof(nl_navmesh_load_def, size) == 0 && offsetof(nl_navmesh_load_def, surface) == 4 &&
+                   offsetof(nl_navmesh_load_def, flags) == 12 && sizeof(nl_navmesh_load_def) == 16,
+               "nl_navmesh_load_def layout");
+_Static_assert(offsetof(nl_navmesh_file_info, size) == 0 && offsetof(nl_navmesh_file_info, version) == 4 &&
+                   offsetof(nl_navmesh_file_info, file_size) == 8 && offsetof(nl_navmesh_file_info, agent) == 16 &&
+                   offsetof(nl_navmesh_file_info, vertex_count) == 32 && offsetof(nl_navmesh_file_info, polygon_count) == 36 &&
+                   offsetof(nl_navmesh_file_info, detail_triangle_count) == 40 &&
+                   offsetof(nl_navmesh_file_info, link_count) == 44 &&
+                   offsetof(nl_navmesh_file_info, generated_link_count) == 48 &&
+                   offsetof(nl_navmesh_file_info, rides_surface) == 52 && offsetof(nl_navmesh_file_info, quantum) == 56 &&
+                   offsetof(nl_navmesh_file_info, reserved) == 60 && offsetof(nl_navmesh_file_info, level_hash) == 64 &&
+                   sizeof(nl_navmesh_file_info) == 72,
+               "nl_navmesh_file_info layout");
 _Static_assert(offsetof(nl_navmesh_info, vertex_count) == 4 && offsetof(nl_navmesh_info, polygon_count) == 8 &&
                    offsetof(nl_navmesh_info, portal_count) == 12 &&
                    offsetof(nl_navmesh_info, boundary_edge_count) == 16 &&

@@ -1153,6 +1153,7 @@ static void group_defaults(void) {
     DEFAULT_CASE(nl_default_mesh_def, nl_mesh_def, 1)
     DEFAULT_CASE(nl_default_navmesh_def, nl_navmesh_def, 1)
     DEFAULT_CASE(nl_default_navmesh_build_def, nl_navmesh_build_def, 1)
+    DEFAULT_CASE(nl_default_navmesh_load_def, nl_navmesh_load_def, 1)
     DEFAULT_CASE(nl_default_recast_settings, nl_recast_settings, 1)
     DEFAULT_CASE(nl_default_link_def, nl_link_def, 1)
     DEFAULT_CASE(nl_default_link_settings, nl_link_settings, 1)
@@ -2791,6 +2792,310 @@ static void group_navmesh_load_links_json(void) {
 }
 
 /* ---------------------------------------------------------------------------------------------
+ * Baked navmesh files
+ * ------------------------------------------------------------------------------------------- */
+
+/* A's navmesh as a file, malloc'ed. */
+static unsigned char* saved_navmesh(size_t* size) {
+    unsigned char* file;
+    if (NL_FAILED(nl_navmesh_save(A.world, A.navmesh, NULL, 0, size))) fixture_failed("nl_navmesh_save");
+    file = (unsigned char*)malloc(*size);
+    if (!file || NL_FAILED(nl_navmesh_save(A.world, A.navmesh, file, *size, size))) fixture_failed("nl_navmesh_save");
+    return file;
+}
+
+/* nl_navmesh_save into a buffer of the file's size + 64. */
+static unsigned char* g_file_buffer;
+static size_t g_file_room;
+static nl_status save_navmesh_id_call(nl_world* w, raw_id id, void* out) {
+    size_t size;
+    nl_status status;
+    fill(&size, sizeof size);
+    fill(g_file_buffer, g_file_room);
+    status = nl_navmesh_save(w, AS(nl_navmesh_id, id), out ? g_file_buffer : NULL, out ? g_file_room : 0, &size);
+    EXPECT_UNTOUCHED(&size, sizeof size, "out_size");
+    EXPECT_UNTOUCHED(g_file_buffer, g_file_room, "buffer");
+    return status;
+}
+
+static void group_navmesh_save(void) {
+    static const id_function f = {"nl_navmesh_save", "navmesh", "buffer", 16, 0, 0, save_navmesh_id_call, 1};
+    static const save_case cases[] = {
+        {"buffer NULL (allowed with capacity 0: measures)", 0, 0, 0u, NULL},
+        {"capacity huge (buffer NULL)", 0, SIZE_MAX, NL_STATUS_INVALID_ARGUMENT, "buffer"},
+        {"capacity 0 (a buffer given)", 1, 0, NL_STATUS_BUFFER_TOO_SMALL, "capacity"},
+        {"capacity small (one byte short)", 1, SIZE_MAX - 1, NL_STATUS_BUFFER_TOO_SMALL, "capacity"},
+        {"capacity huge (a buffer of size + 64: nothing written past the file)", 1, SIZE_MAX, 0u, NULL},
+    };
+    size_t needed = 0, i;
+    unsigned char* file = saved_navmesh(&needed);
+    g_file_room = needed + 64;
+    g_file_buffer = (unsigned char*)malloc(g_file_room);
+    if (!g_file_buffer) exit(2);
+    id_cases(&f, RAW(A.navmesh), RAW(A.stale_navmesh), RAW(B.navmesh));
+    CASE("nl_navmesh_save", "out_size NULL") {
+        fill(g_file_buffer, g_file_room);
+        EXPECT_INVALID(A.world, nl_navmesh_save(A.world, A.navmesh, g_file_buffer, g_file_room, NULL), "out_size");
+        EXPECT_UNTOUCHED(g_file_buffer, g_file_room, "buffer");
+    }
+    for (i = 0; i < sizeof cases / sizeof *cases; ++i) {
+        CASE("nl_navmesh_save", "%s", cases[i].what) {
+            const size_t capacity = cases[i].capacity == SIZE_MAX - 1 ? needed - 1 : cases[i].capacity;
+            size_t size;
+            nl_status status;
+            fill(g_file_buffer, g_file_room);
+            fill(&size, sizeof size);
+            status = nl_navmesh_save(A.world, A.navmesh, cases[i].with_buffer ? g_file_buffer : NULL, capacity, &size);
+            if (cases[i].detail == 0u) {
+                EXPECT_OK(status);
+                EXPECT(size == needed, "out_size = %u, expected %u", (unsigned)size, (unsigned)needed);
+                if (cases[i].with_buffer) {
+                    EXPECT(memcmp(g_file_buffer, file, needed) == 0, "another file");
+                    EXPECT_UNTOUCHED(g_file_buffer + needed, 64, "the bytes past the file");
+                }
+            } else {
+                EXPECT_FAILURE(A.world, status, cases[i].detail, cases[i].needle);
+                EXPECT_UNTOUCHED(g_file_buffer, g_file_room, "buffer");
+                if (cases[i].detail == NL_STATUS_BUFFER_TOO_SMALL)
+                    EXPECT(size == needed, "out_size = %u, expected the %u needed", (unsigned)size, (unsigned)needed);
+                else
+                    EXPECT_UNTOUCHED(&size, sizeof size, "out_size");
+            }
+        }
+    }
+    free(g_file_buffer);
+    free(file);
+}
+
+static char g_save_path[256];
+static nl_status save_file_id_call(nl_world* w, raw_id id, void* out) {
+    (void)out;
+    return nl_navmesh_save_file(w, AS(nl_navmesh_id, id), g_save_path);
+}
+
+static void group_navmesh_save_file(void) {
+    static const id_function f = {"nl_navmesh_save_file", "navmesh", NULL, 0, 0, 0, save_file_id_call, 0};
+    static const char* made[] = {"saved.nlnav"};
+    make_tmp();
+    snprintf(g_save_path, sizeof g_save_path, "%s/saved.nlnav", g_tmp);
+    id_cases(&f, RAW(A.navmesh), RAW(A.stale_navmesh), RAW(B.navmesh));
+    CASE("nl_navmesh_save_file", "path NULL") { EXPECT_INVALID(A.world, nl_navmesh_save_file(A.world, A.navmesh, NULL), "path"); }
+    CASE("nl_navmesh_save_file", "path empty") { EXPECT_INVALID(A.world, nl_navmesh_save_file(A.world, A.navmesh, ""), "path"); }
+    CASE("nl_navmesh_save_file", "path in a missing folder") {
+        char path[300];
+        snprintf(path, sizeof path, "%s/no-such-folder/x.nlnav", g_tmp);
+        EXPECT_FAILURE(A.world, nl_navmesh_save_file(A.world, A.navmesh, path), NL_STATUS_IO_ERROR, "no-such-folder");
+    }
+    CASE("nl_navmesh_save_file", "path a directory") {
+        char path[300];
+        snprintf(path, sizeof path, "%s/dir.obj", g_tmp);
+        EXPECT_FAILURE(A.world, nl_navmesh_save_file(A.world, A.navmesh, path), NL_STATUS_IO_ERROR, "dir.obj");
+    }
+    CASE("nl_navmesh_save_file", "path writable (allowed: the file is the buffer's)") {
+        size_t size = 0;
+        unsigned char* file = saved_navmesh(&size);
+        FILE* f2;
+        unsigned char* read = (unsigned char*)malloc(size + 1);
+        size_t got = 0;
+        EXPECT_OK(nl_navmesh_save_file(A.world, A.navmesh, g_save_path));
+        f2 = fopen(g_save_path, "rb");
+        if (f2 && read) {
+            got = fread(read, 1, size + 1, f2);
+            fclose(f2);
+        }
+        EXPECT(got == size && memcmp(read, file, size) == 0, "the file holds %u bytes, not the %u saved", (unsigned)got, (unsigned)size);
+        free(read);
+        free(file);
+    }
+    remove_tmp(made, 1);
+}
+
+/* Loads of A's navmesh's file into A's world (the new navmesh removed again by the undo). */
+static unsigned char* g_navmesh_file;
+static size_t g_navmesh_file_size;
+static nl_status load_navmesh_call(nl_world* world, const void* def, void* out) {
+    return nl_navmesh_load(world, g_navmesh_file, g_navmesh_file_size, (const nl_navmesh_load_def*)def, (nl_navmesh_id*)out);
+}
+static nl_status load_navmesh_file_call(nl_world* world, const void* def, void* out) {
+    return nl_navmesh_load_file(world, g_save_path, (const nl_navmesh_load_def*)def, (nl_navmesh_id*)out);
+}
+static const def_function k_navmesh_load = {"nl_navmesh_load", load_navmesh_call, sizeof(nl_navmesh_id), remove_navmesh_out, 1, 0, 0};
+static const def_function k_navmesh_load_file = {"nl_navmesh_load_file", load_navmesh_file_call, sizeof(nl_navmesh_id),
+                                                 remove_navmesh_out, 1, 0, 0};
+
+static const def_case k_load_defs[] = {
+    {"def->flags unknown bits", INVALID, "flags", {SET_U32(nl_navmesh_load_def, flags, 0x80u)}},
+    {"def->flags NL_NAVMESH_LOAD_SAME_LEVEL (allowed: the level is the one it was built from)", ALLOWED, NULL,
+     {SET_U32(nl_navmesh_load_def, flags, NL_NAVMESH_LOAD_SAME_LEVEL)}},
+};
+
+static void load_def_cases(const def_function* f) {
+    const nl_navmesh_load_def valid = nl_default_navmesh_load_def();
+    def_function_cases(f, &valid, sizeof valid);
+    def_cases(f->function, &valid, sizeof valid, k_load_defs, sizeof k_load_defs / sizeof *k_load_defs, def_refuses, def_accepts);
+    optional_id_cases(f, &valid, sizeof valid, offsetof(nl_navmesh_load_def, surface), "def->surface", RAW(A.movable),
+                      RAW(A.stale_mesh), RAW(B.movable));
+}
+
+static void load_data_fails_with(const void* data, size_t size, nl_status detail, const char* needle) {
+    nl_navmesh_id out;
+    fill(&out, sizeof out);
+    EXPECT_FAILURE(A.world, nl_navmesh_load(A.world, data, size, NULL, &out), detail, needle);
+    EXPECT_UNTOUCHED(&out, sizeof out, "out_id");
+}
+
+static void group_navmesh_load(void) {
+    size_t i;
+    unsigned char* bad;
+    g_navmesh_file = saved_navmesh(&g_navmesh_file_size);
+    load_def_cases(&k_navmesh_load);
+    CASE("nl_navmesh_load", "data NULL (size 10)") { load_data_fails_with(NULL, 10, NL_STATUS_INVALID_ARGUMENT, "data"); }
+    CASE("nl_navmesh_load", "size huge (data NULL: not read)") { load_data_fails_with(NULL, SIZE_MAX, NL_STATUS_INVALID_ARGUMENT, "data"); }
+    CASE("nl_navmesh_load", "size 0 (not a navmesh file)") { load_data_fails_with(g_navmesh_file, 0, NL_STATUS_VERSION_MISMATCH, "not a NavLink navmesh file"); }
+    CASE("nl_navmesh_load", "size short (cut in the middle)") {
+        load_data_fails_with(g_navmesh_file, g_navmesh_file_size / 2, NL_STATUS_PARSE_ERROR, "truncated");
+    }
+    CASE("nl_navmesh_load", "size long (a byte past the file)") {
+        bad = (unsigned char*)malloc(g_navmesh_file_size + 1);
+        if (!bad) exit(2);
+        memcpy(bad, g_navmesh_file, g_navmesh_file_size);
+        bad[g_navmesh_file_size] = 0;
+        load_data_fails_with(bad, g_navmesh_file_size + 1, NL_STATUS_PARSE_ERROR, "extra bytes");
+        free(bad);
+    }
+    CASE("nl_navmesh_load", "data a links JSON file") { load_data_fails_with("{\"format\": \"navlink-links\"}", 27, NL_STATUS_VERSION_MISMATCH, "not a NavLink navmesh file"); }
+    CASE("nl_navmesh_load", "data of a newer format version") {
+        bad = (unsigned char*)malloc(g_navmesh_file_size);
+        if (!bad) exit(2);
+        memcpy(bad, g_navmesh_file, g_navmesh_file_size);
+        bad[8] = 9;
+        load_data_fails_with(bad, g_navmesh_file_size, NL_STATUS_VERSION_MISMATCH, "newer");
+        free(bad);
+    }
+    for (i = 40; i < g_navmesh_file_size; i += g_navmesh_file_size / 7) {
+        CASE("nl_navmesh_load", "data with byte %u changed (corrupted)", (unsigned)i) {
+            bad = (unsigned char*)malloc(g_navmesh_file_size);
+            if (!bad) exit(2);
+            memcpy(bad, g_navmesh_file, g_navmesh_file_size);
+            bad[i] ^= 0x5a;
+            load_data_fails_with(bad, g_navmesh_file_size, NL_STATUS_PARSE_ERROR, "corrupted");
+            free(bad);
+        }
+    }
+    free(g_navmesh_file);
+}
+
+static nl_status load_navmesh_at(const char* path, void* out) { return nl_navmesh_load_file(A.world, path, NULL, (nl_navmesh_id*)out); }
+
+static void group_navmesh_load_file(void) {
+    static const char* made[] = {"saved.nlnav", "bad.nlnav"};
+    char path[300];
+    make_tmp();
+    snprintf(g_save_path, sizeof g_save_path, "%s/saved.nlnav", g_tmp);
+    if (NL_FAILED(nl_navmesh_save_file(A.world, A.navmesh, g_save_path))) fixture_failed("nl_navmesh_save_file");
+    load_def_cases(&k_navmesh_load_file);
+    bad_path_cases("nl_navmesh_load_file", load_navmesh_at, sizeof(nl_navmesh_id), k_bad_paths, BAD_PATH_COUNT);
+    CASE("nl_navmesh_load_file", "path an OBJ file (named in the message)") {
+        nl_navmesh_id out;
+        fill(&out, sizeof out);
+        EXPECT_FAILURE(A.world, nl_navmesh_load_file(A.world, g_obj_path, NULL, &out), NL_STATUS_VERSION_MISMATCH, "quad.obj");
+        EXPECT_UNTOUCHED(&out, sizeof out, "out_id");
+    }
+    snprintf(path, sizeof path, "%s/bad.nlnav", g_tmp);
+    write_file(path, "NLNAV");
+    CASE("nl_navmesh_load_file", "path a 5-byte file") {
+        nl_navmesh_id out;
+        fill(&out, sizeof out);
+        EXPECT_FAILURE(A.world, nl_navmesh_load_file(A.world, path, NULL, &out), NL_STATUS_VERSION_MISMATCH, "bad.nlnav");
+        EXPECT_UNTOUCHED(&out, sizeof out, "out_id");
+    }
+    remove_tmp(made, 2);
+}
+
+static void describe_fails_with(const void* data, size_t size, nl_navmesh_file_info* info, char* json, size_t capacity,
+                                size_t* length, nl_status detail, const char* needle) {
+    EXPECT_FAILURE(NULL, nl_navmesh_file_describe(data, size, info, json, capacity, length), detail, needle);
+}
+
+static void group_navmesh_file_describe(void) {
+    size_t size = 0, length, needed = 0;
+    unsigned char* file = saved_navmesh(&size);
+    nl_navmesh_file_info info;
+    char json[4096];
+    if (NL_FAILED(nl_navmesh_file_describe(file, size, NULL, NULL, 0, &needed)) || needed + 1 > sizeof json)
+        fixture_failed("nl_navmesh_file_describe");
+    CASE("nl_navmesh_file_describe", "data NULL (size 10)") {
+        describe_fails_with(NULL, 10, NULL, NULL, 0, &length, NL_STATUS_INVALID_ARGUMENT, "data");
+    }
+    CASE("nl_navmesh_file_describe", "size huge (data NULL: not read)") {
+        describe_fails_with(NULL, SIZE_MAX, NULL, NULL, 0, &length, NL_STATUS_INVALID_ARGUMENT, "data");
+    }
+    CASE("nl_navmesh_file_describe", "size 0 (not a navmesh file)") {
+        describe_fails_with(file, 0, NULL, NULL, 0, &length, NL_STATUS_VERSION_MISMATCH, "not a NavLink navmesh file");
+    }
+    CASE("nl_navmesh_file_describe", "size short (truncated)") {
+        describe_fails_with(file, size - 1, NULL, NULL, 0, &length, NL_STATUS_PARSE_ERROR, "truncated");
+    }
+    CASE("nl_navmesh_file_describe", "out_info NULL (allowed: the JSON only)") {
+        EXPECT_OK(nl_navmesh_file_describe(file, size, NULL, json, sizeof json, &length));
+        EXPECT(length == needed && strstr(json, "\"builder\"") != NULL, "the JSON: %s", json);
+    }
+    {
+        static const char* what[3] = {"0", "small (4)", "large (sizeof + 64: nothing written past the struct)"};
+        int k;
+        for (k = 0; k < 3; ++k) {
+            CASE("nl_navmesh_file_describe", "out_info->size %s", what[k]) {
+                unsigned char buffer[sizeof(nl_navmesh_file_info) + 64];
+                const uint32_t sizes[3] = {0u, 4u, (uint32_t)sizeof buffer};
+                fill(buffer, sizeof buffer);
+                memcpy(buffer, &sizes[k], sizeof sizes[k]);
+                if (k < 2) {
+                    describe_fails_with(file, size, (nl_navmesh_file_info*)buffer, NULL, 0, NULL, NL_STATUS_INVALID_ARGUMENT, "size");
+                    EXPECT_UNTOUCHED(buffer + 4, sizeof buffer - 4, "out_info");
+                } else {
+                    nl_navmesh_file_info got;
+                    EXPECT_OK(nl_navmesh_file_describe(file, size, (nl_navmesh_file_info*)buffer, NULL, 0, NULL));
+                    memcpy(&got, buffer, sizeof got);
+                    EXPECT(got.version == 1 && got.file_size == size && got.polygon_count > 0, "the info read back");
+                    EXPECT_UNTOUCHED(buffer + sizeof got, 64, "the bytes past out_info");
+                }
+            }
+        }
+    }
+    CASE("nl_navmesh_file_describe", "made_for_json NULL (allowed with capacity 0: measures)") {
+        fill(&length, sizeof length);
+        EXPECT_OK(nl_navmesh_file_describe(file, size, NULL, NULL, 0, &length));
+        EXPECT(length == needed, "out_length = %u", (unsigned)length);
+    }
+    CASE("nl_navmesh_file_describe", "capacity 0 (a buffer given)") {
+        fill(json, sizeof json);
+        describe_fails_with(file, size, NULL, json, 0, &length, NL_STATUS_BUFFER_TOO_SMALL, "capacity");
+        EXPECT_UNTOUCHED(json, sizeof json, "made_for_json");
+    }
+    CASE("nl_navmesh_file_describe", "capacity small (the length: no room for the NUL)") {
+        fill(json, sizeof json);
+        describe_fails_with(file, size, NULL, json, needed, &length, NL_STATUS_BUFFER_TOO_SMALL, "capacity");
+        EXPECT_UNTOUCHED(json, sizeof json, "made_for_json");
+    }
+    CASE("nl_navmesh_file_describe", "capacity huge (buffer NULL)") {
+        describe_fails_with(file, size, NULL, NULL, SIZE_MAX, &length, NL_STATUS_INVALID_ARGUMENT, "made_for_json");
+    }
+    CASE("nl_navmesh_file_describe", "out_length NULL (a buffer given)") {
+        fill(json, sizeof json);
+        describe_fails_with(file, size, NULL, json, sizeof json, NULL, NL_STATUS_INVALID_ARGUMENT, "out_length");
+        EXPECT_UNTOUCHED(json, sizeof json, "made_for_json");
+    }
+    CASE("nl_navmesh_file_describe", "out_info with out_length NULL (allowed: the info only)") {
+        memset(&info, 0, sizeof info);
+        info.size = sizeof info;
+        EXPECT_OK(nl_navmesh_file_describe(file, size, &info, NULL, 0, NULL));
+        EXPECT(info.quantum == 1.0f / 1024.0f && info.link_count > 0, "quantum %g, %u links", (double)info.quantum,
+               (unsigned)info.link_count);
+    }
+    free(file);
+}
+
+/* ---------------------------------------------------------------------------------------------
  * Paths
  * ------------------------------------------------------------------------------------------- */
 
@@ -4114,6 +4419,11 @@ static const hostile_group k_groups[] = {
     {"navmesh_update_links_in_box", group_navmesh_update_links_in_box},
     {"navmesh_save_links_json", group_navmesh_save_links_json},
     {"navmesh_load_links_json", group_navmesh_load_links_json},
+    {"navmesh_save", group_navmesh_save},
+    {"navmesh_save_file", group_navmesh_save_file},
+    {"navmesh_load", group_navmesh_load},
+    {"navmesh_load_file", group_navmesh_load_file},
+    {"navmesh_file_describe", group_navmesh_file_describe},
     {"path_find", group_path_find},
     {"path_request", group_path_request},
     {"path_poll", group_path_poll},

@@ -6,6 +6,8 @@
 //                 map of quads
 //   links_json/   links of every kind saved by nl_navmesh_save_links_json from the navmesh the
 //                 links target loads them on
+//   navmesh_file/ navmesh files saved by nl_navmesh_save: the links target's navmesh with each
+//                 count of those links, and a map of quads with areas
 #include <navlink/navlink.h>
 
 #include <cstdio>
@@ -81,7 +83,7 @@ std::string quad_map() {
 }
 
 // Links of each kind on the links target's navmesh (an 8 m map of cells), as the library saves them.
-bool write_links(const fs::path& dir) {
+bool write_links(const fs::path& dir, const fs::path& file_dir) {
     nl_world* world = nullptr;
     if (NL_FAILED(nl_world_create(nullptr, &world))) return false;
     const nl::test::CellNavmesh cells(std::vector<std::string>(8, "........"), 0.4f);
@@ -103,8 +105,29 @@ bool write_links(const fs::path& dir) {
         std::string json(length + 1, '\0');
         ok = ok && NL_SUCCEEDED(nl_navmesh_save_links_json(world, navmesh, json.data(), json.size(), &length));
         if (ok) write(dir / ("links-" + std::to_string(i + 1) + ".json"), json.substr(0, length));
+        size_t size = 0;
+        ok = ok && NL_SUCCEEDED(nl_navmesh_save(world, navmesh, nullptr, 0, &size));
+        std::string file(size, '\0');
+        ok = ok && NL_SUCCEEDED(nl_navmesh_save(world, navmesh, file.data(), file.size(), &size));
+        if (ok) write(file_dir / ("cells-" + std::to_string(i + 1) + ".nlnav"), file);
     }
     if (!ok) std::fprintf(stderr, "navlink-fuzz-seeds: links: %s\n", nl_get_last_error_message());
+    nl_world_destroy(world);
+    return ok;
+}
+
+// The quad map as a navmesh file (areas, no links).
+bool write_quad_file(const fs::path& dir) {
+    nl_world* world = nullptr;
+    if (NL_FAILED(nl_world_create(nullptr, &world))) return false;
+    const nl::test::CellNavmesh cells({"..1.", ".2..", "...."}, 0.4f);
+    nl_navmesh_id navmesh{};
+    size_t size = 0;
+    bool ok = NL_SUCCEEDED(nl_navmesh_add(world, &cells.def, &navmesh)) && NL_SUCCEEDED(nl_navmesh_save(world, navmesh, nullptr, 0, &size));
+    std::string file(size, '\0');
+    ok = ok && NL_SUCCEEDED(nl_navmesh_save(world, navmesh, file.data(), file.size(), &size));
+    if (ok) write(dir / "quad-map.nlnav", file);
+    else std::fprintf(stderr, "navlink-fuzz-seeds: navmesh file: %s\n", nl_get_last_error_message());
     nl_world_destroy(world);
     return ok;
 }
@@ -117,9 +140,9 @@ int main(int argc, char** argv) {
         return 2;
     }
     const fs::path out = argv[1];
-    for (const char* target : {"obj", "navmesh_add", "links_json"}) fs::create_directories(out / target);
+    for (const char* target : {"obj", "navmesh_add", "links_json", "navmesh_file"}) fs::create_directories(out / target);
     write(out / "navmesh_add" / "quad-map.bin", quad_map());
-    if (!write_links(out / "links_json")) return 1;
+    if (!write_links(out / "links_json", out / "navmesh_file") || !write_quad_file(out / "navmesh_file")) return 1;
     for (int i = 2; i < argc; ++i) {
         const std::string name = fs::path(argv[i]).stem().string();
         try {

@@ -90,6 +90,18 @@ TEST_CASE("navlink generate and path on every shared level") {
         const json walk = path_json(dir, level, xyz(a), xyz(b), 0);
         CHECK(walk.at("outcome") == "complete");
 
+        // Baked: the file says what it holds, and a path over it is the path over the level and its
+        // links file, point for point (nothing is rebuilt, and the file holds every coordinate exactly).
+        const ProgramRun bake = navlink({"bake", level, "--out", "level.nlnav"}, dir);
+        REQUIRE_MESSAGE(bake.exit_code == 0, bake.err);
+        const ProgramRun info = navlink({"info", "level.nlnav"}, dir);
+        CHECK_MESSAGE(info.exit_code == 0, info.err);
+        CHECK_MESSAGE(info.out.find("links: " + std::to_string(links.at("links").size()) + " (") != std::string::npos, info.out);
+        CHECK_MESSAGE(info.out.find("\"builder\":\"recast\"") != std::string::npos, info.out);
+        const ProgramRun baked = navlink({"path", "level.nlnav", "--from", xyz(a), "--to", xyz(b), "--json"}, dir);
+        CHECK_MESSAGE(baked.exit_code == 0, baked.err);
+        CHECK(json::parse(baked.out) == walk);
+
         // From a link's start to its end, for the default agent (it takes every default link): the
         // link itself, or a walk no longer than it. The start and goal snap to the navmesh's surface
         // (its detail height), which may lie a little above or below the link's ends: that much

@@ -31,7 +31,7 @@ namespace NavLink.Tests
             {typeof(LogLevel), "NL_LOG_"}, {typeof(MeshFlags), "NL_MESH_"}, {typeof(LinkKind), "NL_LINK_"},
             {typeof(PathOutcome), "NL_PATH_"}, {typeof(AgentState), "NL_AGENT_"}, {typeof(AgentReason), "NL_AGENT_REASON_"},
             {typeof(TrajectoryKind), "NL_TRAJECTORY_"}, {typeof(AgentEventKind), "NL_AGENT_EVENT_"}, {typeof(PluginKinds), "NL_PLUGIN_"},
-            {typeof(RecastPartition), "NL_RECAST_PARTITION_"},
+            {typeof(RecastPartition), "NL_RECAST_PARTITION_"}, {typeof(NavmeshLoadFlags), "NL_NAVMESH_LOAD_"},
         };
         private static readonly Dictionary<string, string> RenamedConstants = new Dictionary<string, string>
         {

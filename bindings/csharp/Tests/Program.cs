@@ -22,6 +22,7 @@ namespace NavLink.Tests
             HostTaskTests.Run(check);
             NavmeshTests.Run(check);
             LinkTests.Run(check);
+            NavmeshFileTests.Run(check);
             PluginTests.Run(check);
             PathTests.Run(check);
             AgentTests.Run(check);

@@ -147,6 +147,13 @@ namespace NavLink
         Replanned = 6u,
     }
 
+    /// <summary>nl_navmesh_load_def.Flags (World.LoadNavmesh's sameLevel).</summary>
+    public static class NavmeshLoadFlags
+    {
+        /// <summary>Refuse a file baked from other level geometry than the world holds now.</summary>
+        public const uint SameLevel = 0x1u;
+    }
+
     public static class PluginKinds
     {
         public const uint NavmeshBuilder = 0x1u;

@@ -20,6 +20,8 @@ pub type LinkDef = sys::nl_link_def;
 pub type LinkRequirements = sys::nl_link_requirements;
 pub type LinkSettings = sys::nl_link_settings;
 pub type LinkGenerationReport = sys::nl_link_generation_report;
+pub type NavmeshLoadDef = sys::nl_navmesh_load_def;
+pub type NavmeshFileInfo = sys::nl_navmesh_file_info;
 pub type PathTicket = sys::nl_path_ticket;
 pub type AgentCapabilities = sys::nl_agent_capabilities;
 pub type PathPoint = sys::nl_path_point;
@@ -86,6 +88,6 @@ pub mod trajectory_kind {
 }
 
 pub use navlink_sys::{
-    NL_MAX_WORKERS as MAX_WORKERS, NL_MESH_MOVABLE as MESH_MOVABLE, NL_NO_POLYGON as NO_POLYGON,
-    NL_WORKERS_AUTO as WORKERS_AUTO,
+    NL_MAX_WORKERS as MAX_WORKERS, NL_MESH_MOVABLE as MESH_MOVABLE, NL_NAVMESH_LOAD_SAME_LEVEL as NAVMESH_LOAD_SAME_LEVEL,
+    NL_NO_POLYGON as NO_POLYGON, NL_WORKERS_AUTO as WORKERS_AUTO,
 };

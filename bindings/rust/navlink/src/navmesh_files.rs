@@ -1,0 +1,110 @@
+//! Baked navmesh files: a navmesh, its links and what they were made for, saved as bytes or a file and
+//! loaded with no Recast build.
+use crate::error::{check, Error, Result};
+use crate::level::{c_string, path_bytes};
+use crate::types::{MeshId, NavmeshFileInfo, NavmeshId, NavmeshLoadDef};
+use crate::world::World;
+use navlink_sys as sys;
+use std::os::raw::c_void;
+use std::path::Path;
+use std::ptr;
+
+/// How to load a navmesh file (`nl_navmesh_load_def`). `Default`: no surface, whatever the level.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct NavmeshLoadOptions {
+    /// For a file whose navmesh rode a movable mesh (`NavmeshFileInfo::rides_surface`): the movable mesh
+    /// it rides now. `None` otherwise.
+    pub surface: Option<MeshId>,
+    /// Refuse (`INVALID_ARGUMENT`) a file baked from other level geometry than the world holds now
+    /// (`NAVMESH_LOAD_SAME_LEVEL`: the level hashes differ).
+    pub same_level: bool,
+}
+
+impl NavmeshLoadOptions {
+    fn def(&self) -> NavmeshLoadDef {
+        let mut def = default_navmesh_load_def();
+        def.surface = self.surface.unwrap_or_default();
+        def.flags = if self.same_level { sys::NL_NAVMESH_LOAD_SAME_LEVEL } else { 0 };
+        def
+    }
+}
+
+/// The null surface and no flags (for a raw `nl_navmesh_load`; `World::load_navmesh` takes
+/// `NavmeshLoadOptions`).
+pub fn default_navmesh_load_def() -> NavmeshLoadDef {
+    unsafe { sys::nl_default_navmesh_load_def() }
+}
+
+/// Reads a navmesh file's bytes without loading it (no world needed): what it holds, and what it was made
+/// for as a JSON object (`{"builder", "builder_settings", "link_settings", "level_hash", "writer"}`).
+/// `VERSION_MISMATCH` (not a NavLink navmesh file, or a newer format), `PARSE_ERROR` (truncated or corrupted).
+pub fn describe_navmesh_file(data: &[u8]) -> Result<(NavmeshFileInfo, String)> {
+    let mut info = NavmeshFileInfo::default(); // size set
+    let mut length = 0usize;
+    check(unsafe {
+        sys::nl_navmesh_file_describe(data.as_ptr().cast(), data.len(), &mut info, ptr::null_mut(), 0, &mut length)
+    })?;
+    let mut buffer = vec![0u8; length + 1];
+    check(unsafe {
+        sys::nl_navmesh_file_describe(
+            data.as_ptr().cast(),
+            data.len(),
+            ptr::null_mut(),
+            buffer.as_mut_ptr().cast(),
+            buffer.len(),
+            &mut length,
+        )
+    })?;
+    buffer.truncate(length);
+    let json = String::from_utf8(buffer)
+        .map_err(|_| Error::binding(sys::NL_STATUS_INTERNAL_ERROR, "made-for JSON is not UTF-8".into()))?;
+    Ok((info, json))
+}
+
+impl World {
+    /// The navmesh, its links (generated and manual, in `links` order) and what they were made for, as a
+    /// navmesh file's bytes. `INVALID_ARGUMENT` for a navmesh with cross links (a file holds one navmesh's
+    /// own links).
+    pub fn save_navmesh(&self, navmesh: NavmeshId) -> Result<Vec<u8>> {
+        loop {
+            let mut size = 0usize;
+            check(unsafe { sys::nl_navmesh_save(self.raw(), navmesh, ptr::null_mut(), 0, &mut size) })?;
+            let mut buffer = vec![0u8; size];
+            let status = unsafe {
+                sys::nl_navmesh_save(self.raw(), navmesh, buffer.as_mut_ptr() as *mut c_void, buffer.len(), &mut size)
+            };
+            if sys::nl_failed(status) && status & sys::NL_STATUS_BUFFER_TOO_SMALL != 0 {
+                continue; // the links changed between the two calls
+            }
+            check(status)?;
+            buffer.truncate(size);
+            return Ok(buffer);
+        }
+    }
+
+    /// `save_navmesh` written to the file at `path`, whole or not at all. `IO_ERROR`: cannot write.
+    pub fn save_navmesh_file(&self, navmesh: NavmeshId, path: impl AsRef<Path>) -> Result<()> {
+        let path = c_string(&path_bytes(path.as_ref()), "path")?;
+        check(unsafe { sys::nl_navmesh_save_file(self.raw(), navmesh, path.as_ptr()) }).map(drop)
+    }
+
+    /// Adds the navmesh and its links held in a navmesh file's bytes (new ids). `VERSION_MISMATCH` (not a
+    /// NavLink navmesh file, or a newer format), `PARSE_ERROR` (truncated or corrupted), `INVALID_ARGUMENT`
+    /// (a surface for a file that rode none or none for one that did; `same_level` and the level differs;
+    /// polygons or links that do not fit). Nothing is added on failure.
+    pub fn load_navmesh(&self, data: &[u8], options: &NavmeshLoadOptions) -> Result<NavmeshId> {
+        let def = options.def();
+        let mut id = NavmeshId::default();
+        check(unsafe { sys::nl_navmesh_load(self.raw(), data.as_ptr().cast(), data.len(), &def, &mut id) })?;
+        Ok(id)
+    }
+
+    /// `load_navmesh` from the file at `path`; also `NOT_FOUND` (no such file) and `IO_ERROR`.
+    pub fn load_navmesh_file(&self, path: impl AsRef<Path>, options: &NavmeshLoadOptions) -> Result<NavmeshId> {
+        let path = c_string(&path_bytes(path.as_ref()), "path")?;
+        let def = options.def();
+        let mut id = NavmeshId::default();
+        check(unsafe { sys::nl_navmesh_load_file(self.raw(), path.as_ptr(), &def, &mut id) })?;
+        Ok(id)
+    }
+}

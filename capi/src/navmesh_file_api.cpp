@@ -1,0 +1,146 @@
+// Baked navmesh files through the C ABI: nl_navmesh_save / _file, nl_navmesh_load / _file and
+// nl_navmesh_file_describe over io/navmesh_file.
+#include <cstddef>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "entry_guard.h"
+#include "host_input.h"
+#include "io/file_bytes.h"
+#include "io/navmesh_file.h"
+#include "level/level_hash.h"
+#include "mapping.h"
+#include "world.h"
+
+using nl::ErrorCode;
+using nl::fail;
+using nl::capi::deref;
+using nl::capi::guarded;
+using nl::capi::require;
+using nl::capi::to_handle;
+
+namespace {
+
+constexpr size_t kLoadDefFirstSize = sizeof(nl_navmesh_load_def);
+constexpr size_t kFileInfoFirstSize = sizeof(nl_navmesh_file_info);
+constexpr uint32_t kKnownLoadFlags = NL_NAVMESH_LOAD_SAME_LEVEL;
+
+std::vector<uint8_t> saved_file(const nl::World& w, nl_navmesh_id navmesh) {
+    const nl::Handle h = to_handle(navmesh);
+    const auto mesh = w.navmeshes().navmesh(h);
+    std::vector<nl::Link> links;
+    for (const nl::StoredLink& l : *w.navmeshes().links(h)) links.push_back(l.link);
+    return nl::write_navmesh_file(*mesh, links, w.navmeshes().made_for(h), w.navmeshes().frame(h) != nullptr);
+}
+
+nl::NavMeshFile read_file(const void* data, size_t size) {
+    if (size > 0) require(data, "data");
+    return nl::read_navmesh_file(static_cast<const uint8_t*>(data), size);
+}
+
+nl_navmesh_id load(nl::World& w, const nl::NavMeshFile& file, const nl_navmesh_load_def* given) {
+    const nl_navmesh_load_def def =
+        given ? nl::capi::read_growable(*given, nl_default_navmesh_load_def(), kLoadDefFirstSize, "def") : nl_default_navmesh_load_def();
+    if (def.flags & ~kKnownLoadFlags) fail(ErrorCode::InvalidArgument, "def->flags has unknown bits 0x", std::hex, def.flags & ~kKnownLoadFlags);
+    const nl::Handle surface = nl::capi::to_handle(def.surface);
+    if ((def.flags & NL_NAVMESH_LOAD_SAME_LEVEL) && file.made_for.level_hash != 0) {
+        const uint64_t now = nl::level_hash(w.level().triangles_to_build(surface));
+        if (now != file.made_for.level_hash)
+            fail(ErrorCode::InvalidArgument, "the level is not the one the file was baked from (its hash is ", std::hex, now,
+                 ", the file's ", file.made_for.level_hash, "): bake it again, or load it without NL_NAVMESH_LOAD_SAME_LEVEL");
+    }
+    return nl::capi::to_id<nl_navmesh_id>(nl::naming_fields("def->", [&] { return w.load_navmesh(file, surface); }));
+}
+
+}  // namespace
+
+extern "C" {
+
+NL_API nl_status nl_navmesh_save(const nl_world* world, nl_navmesh_id navmesh, void* buffer, size_t capacity,
+                                 size_t* out_size) {
+    return guarded("nl_navmesh_save", world, [&] {
+        const nl::World& w = deref(world);
+        require(out_size, "out_size");
+        if (!buffer && capacity > 0) fail(ErrorCode::InvalidArgument, "buffer is null but capacity is ", capacity);
+        const std::vector<uint8_t> file = saved_file(w, navmesh);
+        *out_size = file.size();
+        if (!buffer) return;
+        if (file.size() > capacity) fail(ErrorCode::BufferTooSmall, "capacity is ", capacity, " but ", file.size(), " bytes are needed");
+        std::memcpy(buffer, file.data(), file.size());
+    });
+}
+
+NL_API nl_status nl_navmesh_save_file(const nl_world* world, nl_navmesh_id navmesh, const char* path) {
+    return guarded("nl_navmesh_save_file", world, [&] {
+        const nl::World& w = deref(world);
+        require(path, "path");
+        const std::vector<uint8_t> file = saved_file(w, navmesh);
+        nl::write_file_bytes(path, std::string_view(reinterpret_cast<const char*>(file.data()), file.size()));
+    });
+}
+
+NL_API nl_navmesh_load_def nl_default_navmesh_load_def(void) {
+    nl_navmesh_load_def def;
+    std::memset(&def, 0, sizeof def);
+    def.size = sizeof def;
+    return def;
+}
+
+NL_API nl_status nl_navmesh_load(nl_world* world, const void* data, size_t size, const nl_navmesh_load_def* def,
+                                 nl_navmesh_id* out_id) {
+    return guarded("nl_navmesh_load", world, [&] {
+        nl::World& w = deref(world);
+        require(out_id, "out_id");
+        *out_id = load(w, read_file(data, size), def);
+    });
+}
+
+NL_API nl_status nl_navmesh_load_file(nl_world* world, const char* path, const nl_navmesh_load_def* def,
+                                      nl_navmesh_id* out_id) {
+    return guarded("nl_navmesh_load_file", world, [&] {
+        nl::World& w = deref(world);
+        require(path, "path");
+        require(out_id, "out_id");
+        const std::string bytes = nl::read_file_bytes(path);
+        try {
+            *out_id = load(w, read_file(bytes.data(), bytes.size()), def);
+        } catch (const nl::Error& e) {
+            throw nl::Error(e.code(), nl::concat(path, ": ", e.what()));  // which file, for a host loading several
+        }
+    });
+}
+
+NL_API nl_status nl_navmesh_file_describe(const void* data, size_t size, nl_navmesh_file_info* out_info,
+                                          char* made_for_json, size_t capacity, size_t* out_length) {
+    return guarded("nl_navmesh_file_describe", nullptr, [&] {
+        if (made_for_json && !out_length) fail(ErrorCode::InvalidArgument, "made_for_json is given but out_length is null");
+        if (!made_for_json && capacity > 0) fail(ErrorCode::InvalidArgument, "made_for_json is null but capacity is ", capacity);
+        if (out_info && out_info->size < kFileInfoFirstSize)
+            fail(ErrorCode::InvalidArgument, "out_info->size is ", out_info->size, " (must be at least ", kFileInfoFirstSize, ")");
+        const nl::NavMeshFile file = read_file(data, size);
+        const std::string json = nl::made_for_json(file);
+        if (made_for_json && json.size() >= capacity)
+            fail(ErrorCode::BufferTooSmall, "capacity is ", capacity, " but ", json.size() + 1, " bytes are needed");
+        if (out_info) {
+            nl_navmesh_file_info info;
+            std::memset(&info, 0, sizeof info);
+            info.version = file.version;
+            info.file_size = size;
+            info.agent = nl::capi::to_c(file.navmesh.agent);
+            info.vertex_count = static_cast<uint32_t>(file.navmesh.vertices.size());
+            info.polygon_count = static_cast<uint32_t>(file.navmesh.polygon_sizes.size());
+            info.detail_triangle_count = static_cast<uint32_t>(file.navmesh.detail_indices.size() / 3);
+            info.link_count = static_cast<uint32_t>(file.links.size());
+            for (const nl::Link& l : file.links) info.generated_link_count += l.generated;
+            info.rides_surface = file.rides_surface;
+            info.quantum = file.quantum;
+            info.level_hash = file.made_for.level_hash;
+            nl::capi::write_growable(out_info, info, kFileInfoFirstSize, "out_info");
+        }
+        if (out_length) *out_length = json.size();
+        if (made_for_json) std::memcpy(made_for_json, json.c_str(), json.size() + 1);
+    });
+}
+
+}  // extern "C"

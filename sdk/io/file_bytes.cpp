@@ -1,0 +1,50 @@
+#include "io/file_bytes.h"
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <memory>
+
+#include "util/error.h"
+
+namespace nl {
+
+using File = std::unique_ptr<std::FILE, int (*)(std::FILE*)>;
+
+std::string read_file_bytes(const std::string& path) {
+    std::error_code ec;
+    const auto status = std::filesystem::status(path, ec);
+    if (!std::filesystem::exists(status)) fail(ErrorCode::NotFound, "cannot open '", path, "': no such file");
+    if (std::filesystem::is_directory(status)) fail(ErrorCode::Io, "cannot read '", path, "': it is a directory");
+    const File file(std::fopen(path.c_str(), "rb"), &std::fclose);
+    if (!file) fail(ErrorCode::Io, "cannot open '", path, "': ", std::strerror(errno));
+    std::string bytes;
+    char buffer[1 << 16];
+    size_t count = 0;
+    while ((count = std::fread(buffer, 1, sizeof buffer, file.get())) > 0) bytes.append(buffer, count);
+    if (std::ferror(file.get())) fail(ErrorCode::Io, "cannot read '", path, "': ", std::strerror(errno));
+    return bytes;
+}
+
+void write_file_bytes(const std::string& path, std::string_view bytes) {
+    if (path.empty()) fail(ErrorCode::InvalidArgument, "the path is empty");
+    const std::string partial = path + ".partial";
+    {
+        const File file(std::fopen(partial.c_str(), "wb"), &std::fclose);
+        if (!file) fail(ErrorCode::Io, "cannot write '", path, "': ", std::strerror(errno));
+        const bool written = std::fwrite(bytes.data(), 1, bytes.size(), file.get()) == bytes.size() && std::fflush(file.get()) == 0;
+        if (!written) {
+            const int why = errno;
+            std::remove(partial.c_str());
+            fail(ErrorCode::Io, "cannot write '", path, "': ", std::strerror(why));
+        }
+    }
+    if (std::rename(partial.c_str(), path.c_str()) != 0) {
+        const int why = errno;
+        std::remove(partial.c_str());
+        fail(ErrorCode::Io, "cannot write '", path, "': ", std::strerror(why));
+    }
+}
+
+}  // namespace nl
