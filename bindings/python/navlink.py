@@ -71,6 +71,7 @@ PLUGIN_ABI_VERSION = 1
 PLUGIN_ENTRY_SYMBOL = "nl_plugin_entry"
 RECAST_PARTITION_WATERSHED, RECAST_PARTITION_MONOTONE, RECAST_PARTITION_LAYERS = 0, 1, 2
 NAVMESH_LOAD_SAME_LEVEL = 0x1
+LINKS_LOAD_ANY_BODY = 0x1
 
 
 def succeeded(status):
@@ -501,7 +502,7 @@ _PROTOTYPES = {
     "nl_navmesh_update_links_in_box": (c_uint32, [_w, NavmeshId, POINTER(c_float), POINTER(c_float), ProgressFn,
                                                   c_void_p, POINTER(LinkGenerationReport)]),
     "nl_navmesh_save_links_json": (c_uint32, [_w, NavmeshId, c_char_p, c_size_t, POINTER(c_size_t)]),
-    "nl_navmesh_load_links_json": (c_uint32, [_w, NavmeshId, c_char_p, c_size_t, _u32p]),
+    "nl_navmesh_load_links_json": (c_uint32, [_w, NavmeshId, c_char_p, c_size_t, c_uint32, _u32p]),
     "nl_navmesh_save": (c_uint32, [_w, NavmeshId, c_void_p, c_size_t, POINTER(c_size_t)]),
     "nl_navmesh_save_file": (c_uint32, [_w, NavmeshId, c_char_p]),
     "nl_default_navmesh_load_def": (NavmeshLoadDef, []),
@@ -1205,10 +1206,16 @@ class World:
             _check(status)
             return buffer.raw[:length.value].decode()
 
-    def load_links_json(self, navmesh, json):
+    def load_links_json(self, navmesh, json, any_body=False):
+        """Replaces all of the navmesh's links with those in `json`; returns how many were loaded. A file that
+        records the body its links were generated for ("made_for") must name the navmesh's (radius and
+        height): links for another body are refused (STATUS_INVALID_ARGUMENT, both bodies named) unless
+        any_body (LINKS_LOAD_ANY_BODY), which loads them with a warning to the world's log. Files without
+        "made_for" load whatever the body. On failure nothing changes."""
         data = json.encode()
         count = c_uint32()
-        _check(lib.nl_navmesh_load_links_json(self.pointer, navmesh, data, len(data), byref(count)))
+        flags = LINKS_LOAD_ANY_BODY if any_body else 0
+        _check(lib.nl_navmesh_load_links_json(self.pointer, navmesh, data, len(data), flags, byref(count)))
         return count.value
 
     # --- baked navmesh files ---

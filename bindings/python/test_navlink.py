@@ -675,6 +675,40 @@ class LinkTest(NavLinkTestCase):
             d.end = nl.Vec3(0, 0, 0)
             self.assertFails(nl.STATUS_INVALID_ARGUMENT, "def->end", world.add_link, navmesh, d)
 
+    def test_links_json_for_another_body(self):
+        """Links saved from a navmesh for radius 0.6 are refused by one for radius 0.3 (both bodies named,
+        nothing changed) unless any_body, which loads them with a warning; a navmesh for the same body loads
+        them."""
+        logged = []
+        with nl.World(log=lambda level, status, message: logged.append(message)) as world:
+            add_gap_level(world)
+            wide = world.build_navmesh()  # radius 0.6
+            world.generate_links(wide)
+            d = nl.default_link_def()
+            d.start, d.end = nl.Vec3(-5, 0, 4), nl.Vec3(5, 0, 4)
+            world.add_link(wide, d)
+            count = len(world.links(wide))
+            saved = world.save_links_json(wide)
+            self.assertIn('"made_for"', saved)
+            self.assertIn("made_for", json.loads(saved))
+
+            slim = nl.default_agent_type()
+            slim.radius = 0.3
+            narrow = world.build_navmesh(slim)
+            self.assertFails(nl.STATUS_INVALID_ARGUMENT, "radius 0.6", world.load_links_json, narrow, saved)
+            self.assertFails(nl.STATUS_INVALID_ARGUMENT, "radius 0.3", world.load_links_json, narrow, saved,
+                             any_body=False)
+            self.assertEqual(len(world.links(narrow)), 0, "a refused load changes nothing")
+            del logged[:]
+            self.assertEqual(world.load_links_json(narrow, saved, any_body=True), count)
+            self.assertEqual(len(world.links(narrow)), count)
+            self.assertTrue(any("radius 0.6" in m and "radius 0.3" in m for m in logged),
+                            "any_body warns to the log, naming both bodies: %r" % logged)
+
+            same = world.build_navmesh()
+            self.assertEqual(world.load_links_json(same, saved), count)
+            self.assertEqual(world.load_links_json(wide, saved), count)
+
 
 class NavmeshFileTest(NavLinkTestCase):
     def test_baked_navmesh_file(self):

@@ -391,7 +391,9 @@ NL_API nl_status nl_navmesh_save_links_json(const nl_world* world, nl_navmesh_id
         const auto snapshot = w.navmeshes().links(to_handle(navmesh));
         require(out_length, "out_length");
         if (!buffer && capacity > 0) fail(ErrorCode::InvalidArgument, "buffer is null but capacity is ", capacity);
-        const std::string json = nl::links_to_json(links_of(*snapshot));
+        const std::shared_ptr<const nl::NavMesh> mesh = w.navmeshes().navmesh(to_handle(navmesh));
+        const nl::LinksMadeFor made_for{mesh->agent(), w.navmeshes().made_for(to_handle(navmesh)).link_settings};
+        const std::string json = nl::links_to_json(links_of(*snapshot), &made_for);
         *out_length = json.size();
         if (!buffer) return;
         if (json.size() >= capacity)
@@ -401,14 +403,15 @@ NL_API nl_status nl_navmesh_save_links_json(const nl_world* world, nl_navmesh_id
 }
 
 NL_API nl_status nl_navmesh_load_links_json(nl_world* world, nl_navmesh_id navmesh, const char* json, size_t length,
-                                            uint32_t* out_count) {
+                                            uint32_t flags, uint32_t* out_count) {
     return guarded("nl_navmesh_load_links_json", world, [&] {
         nl::World& w = deref(world);
         w.navmeshes().navmesh(to_handle(navmesh));  // a stale id first, before the text
         if (length > 0) require(json, "json");
-        std::vector<nl::Link> links = nl::links_from_json(std::string_view(json ? json : "", length));
-        const size_t count = links.size();
-        w.load_links(to_handle(navmesh), std::move(links));
+        if (flags & ~NL_LINKS_LOAD_ANY_BODY) fail(ErrorCode::InvalidArgument, "flags has unknown bits 0x", std::hex, flags & ~NL_LINKS_LOAD_ANY_BODY);
+        nl::LinksFile file = nl::read_links_json(std::string_view(json ? json : "", length));
+        const size_t count = file.links.size();
+        w.load_links_file(to_handle(navmesh), std::move(file), (flags & NL_LINKS_LOAD_ANY_BODY) != 0);
         if (out_count) *out_count = static_cast<uint32_t>(count);
     });
 }

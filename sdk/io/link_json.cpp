@@ -107,7 +107,7 @@ const char* link_kind_name(LinkKind kind) {
     }
 }
 
-std::string links_to_json(const std::vector<Link>& links) {
+std::string links_to_json(const std::vector<Link>& links, const LinksMadeFor* made_for) {
     Json list = Json::array();
     for (size_t i = 0; i < links.size(); ++i) {
         const Link& l = links[i];
@@ -135,10 +135,17 @@ std::string links_to_json(const std::vector<Link>& links) {
                           {"clearance_width", l.requirements.clearance_width},
                           {"abilities", l.requirements.abilities}}}});
     }
-    return Json{{"format", "navlink-links"}, {"version", kLinkFileVersion}, {"links", list}}.dump(1);
+    Json file = {{"format", "navlink-links"}, {"version", kLinkFileVersion}};
+    if (made_for) {
+        const AgentType& a = made_for->agent;
+        file["made_for"] = {{"agent", {{"radius", a.radius}, {"height", a.height}, {"max_climb", a.max_climb}, {"max_slope", a.max_slope}}},
+                            {"link_settings", made_for->link_settings.empty() ? Json(nullptr) : parse_json(made_for->link_settings, "link settings")}};
+    }
+    file["links"] = std::move(list);
+    return file.dump(1);
 }
 
-std::vector<Link> links_from_json(std::string_view text) {
+LinksFile read_links_json(std::string_view text) {
     const Json document = parse_json(text, "links JSON");
     const Reader top(document, "links JSON");
     const Json& format = top.at("format");
@@ -150,7 +157,23 @@ std::vector<Link> links_from_json(std::string_view text) {
     const Json& list = top.at("links");
     if (!list.is_array()) fail(ErrorCode::InvalidArgument, "links JSON: links must be an array");
 
-    std::vector<Link> links;
+    LinksFile file;
+    std::vector<Link>& links = file.links;
+    if (const Json* made_for = top.find("made_for")) {
+        const Reader m(*made_for, "links JSON.made_for");
+        const Reader a(m.at("agent"), "links JSON.made_for.agent");
+        LinksMadeFor record;
+        record.agent.radius = a.number("radius", 0.0f);
+        record.agent.height = a.number("height", 0.0f);
+        record.agent.max_climb = a.number("max_climb", 0.0f);
+        record.agent.max_slope = a.number("max_slope", 0.0f);
+        if (const Json* settings = m.find("link_settings"); settings && !settings->is_null()) {
+            LinkSettings checked;
+            apply_settings_json(settings->dump(), checked);
+            record.link_settings = link_settings_to_json(checked);
+        }
+        file.made_for = record;
+    }
     for (size_t i = 0; i < list.size(); ++i) {
         const Reader r(list[i], "links[" + std::to_string(i) + "]");
         Link l;
@@ -184,47 +207,8 @@ std::vector<Link> links_from_json(std::string_view text) {
         }
         links.push_back(l);
     }
-    return links;
+    return file;
 }
-
-namespace {
-
-// Every setting but drop_angles, by name: what the settings JSON reads and writes.
-struct NamedFloat {
-    const char* name;
-    float LinkSettings::*field;
-};
-struct NamedWhole {
-    const char* name;
-    unsigned LinkSettings::*field;
-};
-constexpr NamedFloat kFloatSettings[] = {
-    {"min_edge_length", &LinkSettings::min_edge_length},
-    {"sample_spacing", &LinkSettings::sample_spacing},
-    {"falloff_distance", &LinkSettings::falloff_distance},
-    {"max_jump_gap", &LinkSettings::max_jump_gap},
-    {"min_link_distance", &LinkSettings::min_link_distance},
-    {"short_link_distance", &LinkSettings::short_link_distance},
-    {"max_jump_up", &LinkSettings::max_jump_up},
-    {"jump_arc_height", &LinkSettings::jump_arc_height},
-    {"strict_forward_angle", &LinkSettings::strict_forward_angle},
-    {"permissive_forward_angle", &LinkSettings::permissive_forward_angle},
-    {"strict_incline_angle", &LinkSettings::strict_incline_angle},
-    {"permissive_incline_angle", &LinkSettings::permissive_incline_angle},
-    {"max_drop_distance", &LinkSettings::max_drop_distance},
-    {"drop_steepness", &LinkSettings::drop_steepness},
-    {"merge_distance", &LinkSettings::merge_distance},
-    {"clearance_margin", &LinkSettings::clearance_margin},
-    {"walk_factor", &LinkSettings::walk_factor},
-    {"walk_distance", &LinkSettings::walk_distance},
-};
-constexpr NamedWhole kWholeSettings[] = {
-    {"min_group_size", &LinkSettings::min_group_size},
-    {"max_group_size", &LinkSettings::max_group_size},
-    {"arc_segments", &LinkSettings::arc_segments},
-};
-
-}  // namespace
 
 namespace {
 
@@ -243,8 +227,8 @@ double shortest_decimal(float v) {
 
 std::string link_settings_to_json(const LinkSettings& s) {
     Json out = Json::object();
-    for (const NamedFloat& f : kFloatSettings) out[f.name] = shortest_decimal(s.*f.field);
-    for (const NamedWhole& w : kWholeSettings) out[w.name] = s.*w.field;
+    for (const NamedFloatSetting& f : kFloatSettings) out[f.name] = shortest_decimal(s.*f.field);
+    for (const NamedWholeSetting& w : kWholeSettings) out[w.name] = s.*w.field;
     Json angles = Json::array();
     for (float a : s.drop_angles) angles.push_back(shortest_decimal(a));
     out["drop_angles"] = angles;
@@ -257,12 +241,12 @@ void apply_settings_json(std::string_view text, LinkSettings& s) {
 
     for (const auto& [key, value] : document.items()) {
         bool known = false;
-        for (const NamedFloat& f : kFloatSettings) {
+        for (const NamedFloatSetting& f : kFloatSettings) {
             if (known || key != f.name) continue;
             s.*f.field = r.number(f.name, 0.0f, true);
             known = true;
         }
-        for (const NamedWhole& w : kWholeSettings) {
+        for (const NamedWholeSetting& w : kWholeSettings) {
             if (known || key != w.name) continue;
             const uint64_t v = r.whole(w.name, 0);
             if (v > 100000) fail(ErrorCode::InvalidArgument, "settings.", key, " is too large");

@@ -3,23 +3,41 @@
 #pragma once
 
 #include <string>
+#include <optional>
 #include <string_view>
 #include <vector>
 
 #include "links/link.h"
 #include "links/link_settings.h"
+#include "navmesh/navmesh.h"
 
 namespace nl {
 
 constexpr int kLinkFileVersion = 1;
 
+// What a links file says its links were made for: the body of the navmesh they were generated on,
+// and the generation's settings (JSON; empty when none were recorded).
+struct LinksMadeFor {
+    AgentType agent;
+    std::string link_settings;
+};
+
+// A links file: its links, and what they were made for when it says (files written before 0.3 do not).
+struct LinksFile {
+    std::vector<Link> links;
+    std::optional<LinksMadeFor> made_for;
+};
+
 // Throws InvalidArgument for a cross link (Link::crosses): its landing navmesh cannot be named in a file.
-std::string links_to_json(const std::vector<Link>& links);
+// With `made_for`, the file records it ("made_for": {"agent": {...}, "link_settings": {...}}).
+std::string links_to_json(const std::vector<Link>& links, const LinksMadeFor* made_for = nullptr);
 
 // Throws Parse (malformed JSON, with the parser's position), VersionMismatch (another format or a
 // newer version) or InvalidArgument (a field missing, of the wrong type or out of range, named by its
 // path, e.g. "links[3].start[1]").
-std::vector<Link> links_from_json(std::string_view text);
+LinksFile read_links_json(std::string_view text);
+// The links alone.
+inline std::vector<Link> links_from_json(std::string_view text) { return read_links_json(text).links; }
 
 // Applies the keys of a JSON object to `settings` (keys are LinkSettings' field names; unknown keys
 // are refused so a typo is not silently ignored), then validates the result.

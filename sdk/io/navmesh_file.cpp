@@ -10,6 +10,7 @@
 
 #include "io/byte_stream.h"
 #include "io/json_input.h"
+#include "io/link_json.h"
 #include "level/mesh_validation.h"
 #include "navmesh/navmesh_grid.h"
 #include "util/error.h"
@@ -22,6 +23,7 @@ constexpr char kMade[4] = {'M', 'A', 'D', 'E'}, kGeometry[4] = {'G', 'E', 'O', '
 
 enum LinkFlags : uint8_t { kBidirectional = 1, kGenerated = 2, kEnabled = 4 };
 enum MadeFlags : uint8_t { kRidesSurface = 1 };
+enum FileFlags : uint32_t { kDeflated = 1 };
 
 constexpr unsigned kWidestCoordinate = 6;  // bytes: 2^48 quanta hold any two coordinates within the limit
 constexpr int64_t kMostUnits = int64_t(1) << 50;
@@ -99,12 +101,21 @@ void write_geometry(ByteWriter& out, const NavMeshInput& in, Quantiser& q) {
     }
 }
 
-void write_point(ByteWriter& out, const Vec3& p, const Quantiser& q) {
-    for (int axis = 0; axis < 3; ++axis) out.signed_varint(q.offset(p[axis], axis));
+// A link point in quanta from `from` (in quanta): a link's start from the last link's (generated
+// links come in order along the outline), its end and apex from its start; a few bytes each.
+struct GridPoint {
+    int64_t units[3];
+};
+GridPoint on_grid(const Vec3& p) { return GridPoint{{units(p.x()), units(p.y()), units(p.z())}}; }
+
+void write_point(ByteWriter& out, const Vec3& p, const GridPoint& from) {
+    const GridPoint at = on_grid(p);
+    for (int axis = 0; axis < 3; ++axis) out.signed_varint(at.units[axis] - from.units[axis]);
 }
 
 void write_links(ByteWriter& out, const std::vector<Link>& links, const Quantiser& q) {
     out.varint(links.size());
+    GridPoint last_start{{q.origin[0], q.origin[1], q.origin[2]}};
     for (size_t i = 0; i < links.size(); ++i) {
         const Link& l = links[i];
         if (l.crosses())
@@ -118,9 +129,10 @@ void write_links(ByteWriter& out, const std::vector<Link>& links, const Quantise
         out.varint(l.user_data);
         out.varint(uint32_t(l.start_polygon + 1));  // kNoPolygon is 0
         out.varint(uint32_t(l.end_polygon + 1));
-        write_point(out, l.start, q);
-        write_point(out, l.end, q);
-        write_point(out, l.apex, q);
+        write_point(out, l.start, last_start);
+        last_start = on_grid(l.start);
+        write_point(out, l.end, last_start);
+        write_point(out, l.apex, last_start);
         const LinkRequirements& r = l.requirements;
         for (float v : {r.gap, r.length, r.rise, r.drop, r.clearance_width}) out.f32(v);
         out.varint(r.abilities);
@@ -133,15 +145,39 @@ void write_made_for(ByteWriter& out, const AgentType& agent, const MadeFor& made
     out.u64(made_for.level_hash);
     out.text(made_for.builder);
     out.text(made_for.builder_settings);
-    out.text(made_for.link_settings);
+    // The link settings field by field: a tenth of their JSON.
+    out.u8(made_for.link_settings.empty() ? 0 : 1);
+    if (!made_for.link_settings.empty()) {
+        LinkSettings settings;
+        apply_settings_json(made_for.link_settings, settings);
+        for (const NamedFloatSetting& f : kFloatSettings) out.f32(settings.*f.field);
+        for (const NamedWholeSetting& w : kWholeSettings) out.varint(settings.*w.field);
+        out.varint(settings.drop_angles.size());
+        for (float angle : settings.drop_angles) out.f32(angle);
+    }
     out.text(NAVLINK_CORE_VERSION);
 }
 
-void write_section(ByteWriter& out, const char tag[4], const ByteWriter& payload_writer) {
+void write_section(ByteWriter& out, const char tag[4], ByteWriter& payload_writer) {
     for (int i = 0; i < 4; ++i) out.u8(static_cast<uint8_t>(tag[i]));
     out.u32(0);
     out.u64(payload_writer.size());
-    out.append(const_cast<ByteWriter&>(payload_writer).bytes());
+    out.append(payload_writer.bytes());
+}
+
+// The sections as written, from the deflated bytes after the header. Deflate cannot make data more
+// than 1032 times smaller, so a stated size beyond that is refused before anything is allocated.
+std::vector<uint8_t> inflated(const uint8_t* data, size_t size, const std::string& context) {
+    ByteReader in(data, size, context);
+    const uint64_t inflated_size = in.u64("the inflated size");
+    if (inflated_size > 1032 * uint64_t(in.remaining()) + 64)
+        fail(ErrorCode::Parse, context, ": it claims ", inflated_size, " bytes inflated, more than its ", in.remaining(),
+             " deflated bytes could hold (corrupted)");
+    std::vector<uint8_t> out(static_cast<size_t>(inflated_size));
+    uLongf got = out.size();
+    if (uncompress(out.data(), &got, in.here(), in.remaining()) != Z_OK || got != out.size())
+        fail(ErrorCode::Parse, context, ": its deflated bytes do not inflate to the ", inflated_size, " it states (corrupted)");
+    return out;
 }
 
 // --- reading ---------------------------------------------------------------------------------
@@ -209,13 +245,14 @@ void read_geometry(ByteReader& in, NavMeshInput& out, Quantiser& q) {
     }
 }
 
-Vec3 read_point(ByteReader& in, const Quantiser& q, size_t link, const char* which) {
+Vec3 read_point(ByteReader& in, GridPoint& at, const GridPoint& from, size_t link, const char* which) {
     Vec3 p;
     for (int axis = 0; axis < 3; ++axis) {
         const int64_t offset = in.signed_varint(which);
-        if (offset < -kMostUnits || offset > kMostUnits)
+        if (offset < -kMostUnits || offset > kMostUnits || std::llabs(from.units[axis]) > kMostUnits)
             fail(ErrorCode::Parse, in.context(), ": links[", link, "].", which, " is beyond the coordinate limit");
-        p[axis] = metres(q.origin[axis] + offset);
+        at.units[axis] = from.units[axis] + offset;
+        p[axis] = metres(at.units[axis]);
     }
     if (!within_coordinate_limit(p)) fail(ErrorCode::Parse, in.context(), ": links[", link, "].", which, " is beyond the coordinate limit");
     return p;
@@ -224,6 +261,7 @@ Vec3 read_point(ByteReader& in, const Quantiser& q, size_t link, const char* whi
 void read_links(ByteReader& in, std::vector<Link>& out, const Quantiser& q) {
     const uint32_t count = in.count("the link count", 30);
     out.resize(count);
+    GridPoint start{{q.origin[0], q.origin[1], q.origin[2]}}, other{};
     for (size_t i = 0; i < count; ++i) {
         Link& l = out[i];
         const uint64_t kind = in.varint("a link's kind");
@@ -239,9 +277,10 @@ void read_links(ByteReader& in, std::vector<Link>& out, const Quantiser& q) {
         l.user_data = in.varint("a link's user data");
         l.start_polygon = static_cast<uint32_t>(in.varint("a link's start polygon") - 1);
         l.end_polygon = static_cast<uint32_t>(in.varint("a link's end polygon") - 1);
-        l.start = read_point(in, q, i, "start");
-        l.end = read_point(in, q, i, "end");
-        l.apex = read_point(in, q, i, "apex");
+        const GridPoint last_start = start;
+        l.start = read_point(in, start, last_start, i, "start");
+        l.end = read_point(in, other, start, i, "end");
+        l.apex = read_point(in, other, start, i, "apex");
         LinkRequirements& r = l.requirements;
         for (float* v : {&r.gap, &r.length, &r.rise, &r.drop, &r.clearance_width}) *v = in.f32("a link's requirement");
         r.abilities = in.varint("a link's abilities");
@@ -260,7 +299,23 @@ void read_made_for(ByteReader& in, NavMeshFile& out) {
     out.made_for.level_hash = in.u64("the level hash");
     out.made_for.builder = in.text("the builder's name");
     out.made_for.builder_settings = in.text("the builder's settings");
-    out.made_for.link_settings = in.text("the link settings");
+    if (in.u8("the link settings flag")) {
+        LinkSettings settings;
+        for (const NamedFloatSetting& f : kFloatSettings) settings.*f.field = in.f32("a link setting");
+        for (const NamedWholeSetting& w : kWholeSettings) {
+            const uint64_t v = in.varint("a link setting");
+            if (v > UINT32_MAX) fail(ErrorCode::Parse, in.context(), ": the link setting ", w.name, " is ", v);
+            settings.*w.field = static_cast<unsigned>(v);
+        }
+        settings.drop_angles.resize(in.count("the drop angle count", 4));
+        for (float& angle : settings.drop_angles) angle = in.f32("a drop angle");
+        try {
+            validate(settings);
+        } catch (const Error& e) {
+            fail(ErrorCode::Parse, in.context(), ": the link settings: ", e.what());
+        }
+        out.made_for.link_settings = link_settings_to_json(settings);
+    }
     out.writer = in.text("the writer's version");
 }
 
@@ -309,16 +364,31 @@ std::vector<uint8_t> write_navmesh_file(const NavMesh& navmesh, const std::vecto
     write_geometry(geometry, input, q);
     write_links(link_section, links, q);
 
+    ByteWriter sections;
+    write_section(sections, kMade, made);
+    write_section(sections, kGeometry, geometry);
+    write_section(sections, kLinks, link_section);
+    // Deflated whole when that is smaller (it is, but for the smallest navmeshes).
+    const std::vector<uint8_t>& body = sections.bytes();
+    uLongf packed_size = compressBound(body.size());
+    std::vector<uint8_t> packed(packed_size);
+    const bool deflate = compress2(packed.data(), &packed_size, body.data(), body.size(), Z_BEST_COMPRESSION) == Z_OK &&
+                         packed_size + 8 < body.size();
+
     ByteWriter out;
     for (uint8_t b : kMagic) out.u8(b);
     out.u32(kNavMeshFileVersion);
     out.u32(3);
     out.u64(0);  // the file's bytes, below
     out.u32(0);  // the checksum, below
-    out.u32(0);
-    write_section(out, kMade, made);
-    write_section(out, kGeometry, geometry);
-    write_section(out, kLinks, link_section);
+    out.u32(deflate ? kDeflated : 0u);
+    if (deflate) {
+        packed.resize(packed_size);
+        out.u64(body.size());
+        out.append(packed);
+    } else {
+        out.append(body);
+    }
     out.patch_u64(16, out.size());
     out.patch_u32(24, navmesh_file_checksum(out.bytes().data(), out.size()));
     return std::move(out.bytes());
@@ -339,19 +409,27 @@ NavMeshFile read_navmesh_file(const uint8_t* data, size_t size) {
     const uint32_t sections = header.u32("the section count");
     const uint64_t bytes = header.u64("the file size");
     const uint32_t checksum = header.u32("the checksum");
-    header.u32("reserved bytes");
+    const uint32_t flags = header.u32("the flags");
     if (bytes != size)
         fail(ErrorCode::Parse, "navmesh file: ", size < bytes ? "truncated" : "has extra bytes", ": its header says ", bytes,
              " bytes, there are ", size);
     if (checksum != navmesh_file_checksum(data, size))
         fail(ErrorCode::Parse, "navmesh file: corrupted: the checksum of its contents does not match its header's");
 
+    if (flags & ~uint32_t(kDeflated)) fail(ErrorCode::Parse, "navmesh file: unknown flags 0x", std::hex, flags);
+    std::vector<uint8_t> body;
+    if (flags & kDeflated) {
+        body = inflated(header.here(), header.remaining(), "navmesh file");
+        header = ByteReader(body.data(), body.size(), "navmesh file");
+    }
+
     bool made = false, geometry = false, links = false;
     Quantiser q;
     for (uint32_t s = 0; s < sections; ++s) {
         header.need(16, "a section header");
         const std::string tag = tag_name(header.here());
-        header.skip(8, "a section tag");
+        header.skip(4, "a section tag");
+        header.u32("a section's reserved bytes");
         const uint64_t length = header.u64("a section's size");
         header.need(length, ("the " + tag + " section").c_str());
         ByteReader in(header.here(), static_cast<size_t>(length), "navmesh file: " + tag + " section");

@@ -2,9 +2,10 @@
 //
 // Little-endian. A 32-byte header: the magic bytes 89 'N' 'L' 'N' 'A' 'V' 0D 0A, the format version
 // (u32), the section count (u32), the file's bytes (u64), the CRC-32 of every byte after the header
-// (u32) and 4 reserved bytes. Then sections, each a tag (4 ASCII bytes), 4 reserved bytes, its
-// payload's bytes (u64) and the payload: MADE (the agent type and what it was made with), GEOM (the
-// polygons and their detail) and LINK (the links). A reader skips sections it does not know.
+// (u32) and flags (u32; 1: the rest is deflated by zlib, its inflated size in its first 8 bytes).
+// Then sections, each a tag (4 ASCII bytes), 4 reserved bytes, its payload's bytes (u64) and the
+// payload: MADE (the agent type and what it was made with), GEOM (the polygons and their detail)
+// and LINK (the links). A reader skips sections it does not know.
 //
 // Coordinates are fixed point: whole quanta of the navmesh grid (2^-10 m, navmesh_grid.h, stated in
 // GEOM) from the navmesh's lowest corner. Navmeshes keep every coordinate on that grid, so the file

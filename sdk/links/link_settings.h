@@ -40,6 +40,41 @@ struct LinkSettings {
     unsigned arc_segments = 12;        // pieces of the jump arc in the clearance test
 };
 
+// Every setting but drop_angles, by name (what the settings files read and write).
+struct NamedFloatSetting {
+    const char* name;
+    float LinkSettings::*field;
+};
+struct NamedWholeSetting {
+    const char* name;
+    unsigned LinkSettings::*field;
+};
+inline constexpr NamedFloatSetting kFloatSettings[] = {
+    {"min_edge_length", &LinkSettings::min_edge_length},
+    {"sample_spacing", &LinkSettings::sample_spacing},
+    {"falloff_distance", &LinkSettings::falloff_distance},
+    {"max_jump_gap", &LinkSettings::max_jump_gap},
+    {"min_link_distance", &LinkSettings::min_link_distance},
+    {"short_link_distance", &LinkSettings::short_link_distance},
+    {"max_jump_up", &LinkSettings::max_jump_up},
+    {"jump_arc_height", &LinkSettings::jump_arc_height},
+    {"strict_forward_angle", &LinkSettings::strict_forward_angle},
+    {"permissive_forward_angle", &LinkSettings::permissive_forward_angle},
+    {"strict_incline_angle", &LinkSettings::strict_incline_angle},
+    {"permissive_incline_angle", &LinkSettings::permissive_incline_angle},
+    {"max_drop_distance", &LinkSettings::max_drop_distance},
+    {"drop_steepness", &LinkSettings::drop_steepness},
+    {"merge_distance", &LinkSettings::merge_distance},
+    {"clearance_margin", &LinkSettings::clearance_margin},
+    {"walk_factor", &LinkSettings::walk_factor},
+    {"walk_distance", &LinkSettings::walk_distance},
+};
+inline constexpr NamedWholeSetting kWholeSettings[] = {
+    {"min_group_size", &LinkSettings::min_group_size},
+    {"max_group_size", &LinkSettings::max_group_size},
+    {"arc_segments", &LinkSettings::arc_segments},
+};
+
 // Throws InvalidArgument about the first bad field ("max_jump_gap is -1 (...)", see fail_field).
 void validate(const LinkSettings& settings);
 

@@ -32,6 +32,7 @@
 namespace nl {
 
 struct NavMeshFile;
+struct LinksFile;
 
 struct WorldSettings {
     int worker_count = 1;            // threads for batch work, the caller included (>= 1)
@@ -117,6 +118,10 @@ public:
     // empty: not said) (place_saved_link; an end off the navmesh is a failure about
     // "links[i].start"); nothing changes when one is refused.
     void load_links(Handle navmesh, std::vector<Link> links, std::string link_settings = {});
+    // The same for a links file that may say the body its links were generated for: one made for
+    // another body than the navmesh's (same_body) is refused (InvalidArgument, both bodies named), or,
+    // with `any_body`, loaded with a warning to the log.
+    void load_links_file(Handle navmesh, LinksFile file, bool any_body);
 
     // Generates the navmesh's links (jumps, drops, and each link-kind plugin's) against the level and
     // replaces its generated links with them; manual links stay. The generation is kept for

@@ -91,6 +91,22 @@ void World::load_links(Handle navmesh, std::vector<Link> links, std::string link
     navmeshes_.replace_links(navmesh, links, std::move(link_settings));
 }
 
+void World::load_links_file(Handle navmesh, LinksFile file, bool any_body) {
+    if (file.made_for) {
+        const AgentType ours = navmeshes_.navmesh(navmesh)->agent(), theirs = file.made_for->agent;
+        if (!same_body(ours, theirs)) {
+            const std::string why = concat("the links were generated for a body of radius ", theirs.radius, " m and height ",
+                                           theirs.height, " m; this navmesh was built for radius ", ours.radius,
+                                           " m and height ", ours.height, " m");
+            if (!any_body)
+                fail(ErrorCode::InvalidArgument, why,
+                     ": generate links for this navmesh, or load them anyway with NL_LINKS_LOAD_ANY_BODY");
+            logger_.log(LogLevel::Warning, concat(why, ": loaded anyway (NL_LINKS_LOAD_ANY_BODY)"));
+        }
+    }
+    load_links(navmesh, std::move(file.links), file.made_for ? file.made_for->link_settings : std::string());
+}
+
 std::vector<Link> World::plugin_links(Handle navmesh, const NavMesh& mesh, const PluginSettings& settings,
                                       LinkGenerationReport& report) {
     std::vector<Link> out;

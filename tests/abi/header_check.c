@@ -339,8 +339,15 @@ struct api_table {
     nl_status (*navmesh_update_links_in_box)(nl_world*, nl_navmesh_id, const float*, const float*, nl_progress_fn*,
                                              void*, nl_link_generation_report*);
     nl_status (*navmesh_save_links_json)(const nl_world*, nl_navmesh_id, char*, size_t, size_t*);
-    nl_status (*navmesh_load_links_json)(nl_world*, nl_navmesh_id, const char*, size_t, uint32_t*);
+    nl_status (*navmesh_load_links_json)(nl_world*, nl_navmesh_id, const char*, size_t, uint32_t, uint32_t*);
     nl_progress_fn* progress;
+    /* Baked navmesh files */
+    nl_status (*navmesh_save)(const nl_world*, nl_navmesh_id, void*, size_t, size_t*);
+    nl_status (*navmesh_save_file)(const nl_world*, nl_navmesh_id, const char*);
+    nl_navmesh_load_def (*default_navmesh_load_def)(void);
+    nl_status (*navmesh_load)(nl_world*, const void*, size_t, const nl_navmesh_load_def*, nl_navmesh_id*);
+    nl_status (*navmesh_load_file)(nl_world*, const char*, const nl_navmesh_load_def*, nl_navmesh_id*);
+    nl_status (*navmesh_file_describe)(const void*, size_t, nl_navmesh_file_info*, char*, size_t, size_t*);
     /* Paths */
     nl_agent_capabilities (*default_agent_capabilities)(void);
     nl_path_request_def (*default_path_request_def)(void);
@@ -414,6 +421,8 @@ int main(void) {
         nl_default_link_settings, nl_link_settings_from_json, nl_navmesh_generate_links,
         nl_navmesh_update_links_in_box, nl_navmesh_save_links_json, nl_navmesh_load_links_json,
         generation_progress,
+        nl_navmesh_save,        nl_navmesh_save_file,   nl_default_navmesh_load_def, nl_navmesh_load,
+        nl_navmesh_load_file,   nl_navmesh_file_describe,
         nl_default_agent_capabilities, nl_default_path_request_def, nl_path_find, nl_path_request,
         nl_path_poll,           nl_path_get_result,     nl_path_cancel,      nl_path_release,
         nl_default_path_budget, nl_path_process,        nl_path_take_finished, nl_path_get_queue_stats,

@@ -88,6 +88,10 @@ int main() {
                  &nl_link_settings_from_json, &nl_navmesh_generate_links, &nl_navmesh_update_links_in_box,
                  &nl_navmesh_save_links_json, &nl_navmesh_load_links_json))
         return 1;
+    // ... and of the baked navmesh files.
+    if (!all_set(&nl_navmesh_save, &nl_navmesh_save_file, &nl_default_navmesh_load_def, &nl_navmesh_load,
+                 &nl_navmesh_load_file, &nl_navmesh_file_describe))
+        return 1;
     // ... and of the path functions.
     if (!all_set(&nl_default_agent_capabilities, &nl_default_path_request_def, &nl_path_find, &nl_path_request,
                  &nl_path_poll, &nl_path_get_result, &nl_path_cancel, &nl_path_release, &nl_default_path_budget,

@@ -2646,59 +2646,71 @@ static nl_status save_id_call(nl_world* w, raw_id id, void* out) {
     return status;
 }
 
-typedef struct save_case {
-    const char* what;
-    int with_buffer;
-    size_t capacity; /* SIZE_MAX - 1: the JSON's length */
-    nl_status detail; /* 0: a success */
-    const char* needle;
-} save_case;
+/* A function that writes into a caller's buffer with the two-call pattern (a size_t length):
+   `save` calls it on A's world with (buffer, capacity, out_length). */
+typedef nl_status save_fn(void* buffer, size_t capacity, size_t* out_length);
+
+/* The buffer cases of such a function: `expected` is what it writes (`needed` bytes, then
+   `terminator` more: the NUL of a text), written into a buffer with 64 bytes to spare. */
+static void buffer_cases(const char* function, const char* out_name, save_fn* save, const unsigned char* expected,
+                         size_t needed, size_t terminator) {
+    const size_t room = needed + terminator + 64;
+    unsigned char* buffer = (unsigned char*)malloc(room);
+    size_t length;
+    if (!buffer) exit(2);
+    CASE(function, "%s NULL", out_name) {
+        fill(buffer, room);
+        EXPECT_INVALID(A.world, save(buffer, room, NULL), out_name);
+        EXPECT_UNTOUCHED(buffer, room, "buffer");
+    }
+    CASE(function, "buffer NULL (allowed with capacity 0: measures)") {
+        fill(&length, sizeof length);
+        EXPECT_OK(save(NULL, 0, &length));
+        EXPECT(length == needed, "%s = %u, expected %u", out_name, (unsigned)length, (unsigned)needed);
+    }
+    CASE(function, "capacity huge (buffer NULL)") {
+        fill(&length, sizeof length);
+        EXPECT_INVALID(A.world, save(NULL, SIZE_MAX, &length), "buffer");
+        EXPECT_UNTOUCHED(&length, sizeof length, out_name);
+    }
+    {
+        const size_t too_small[2] = {0, needed + terminator - 1};
+        const char* what[2] = {"capacity 0 (a buffer given)", terminator ? "capacity small (the length: no room for the NUL)"
+                                                                          : "capacity small (one byte short)"};
+        int k;
+        for (k = 0; k < 2; ++k) {
+            CASE(function, "%s", what[k]) {
+                fill(buffer, room);
+                fill(&length, sizeof length);
+                EXPECT_FAILURE(A.world, save(buffer, too_small[k], &length), NL_STATUS_BUFFER_TOO_SMALL, "capacity");
+                EXPECT_UNTOUCHED(buffer, room, "buffer");
+                EXPECT(length == needed, "%s = %u, expected the %u needed", out_name, (unsigned)length, (unsigned)needed);
+            }
+        }
+    }
+    CASE(function, "capacity huge (64 bytes to spare: nothing written past the end)") {
+        fill(buffer, room);
+        EXPECT_OK(save(buffer, room, &length));
+        EXPECT(length == needed, "%s = %u, expected %u", out_name, (unsigned)length, (unsigned)needed);
+        EXPECT(memcmp(buffer, expected, needed + terminator) == 0, "other bytes written");
+        EXPECT_UNTOUCHED(buffer + needed + terminator, 64, "the bytes past the end");
+    }
+    free(buffer);
+}
+
+static nl_status save_links_json_into(void* buffer, size_t capacity, size_t* out_length) {
+    return nl_navmesh_save_links_json(A.world, A.navmesh, (char*)buffer, capacity, out_length);
+}
 
 static void group_navmesh_save_links_json(void) {
     static const id_function f = {"nl_navmesh_save_links_json", "navmesh", "buffer", 16, 0, 0, save_id_call, 1};
-    static const save_case cases[] = {
-        {"buffer NULL (allowed with capacity 0: measures)", 0, 0, 0u, NULL},
-        {"capacity huge (buffer NULL)", 0, SIZE_MAX, NL_STATUS_INVALID_ARGUMENT, "buffer"},
-        {"capacity 0 (a buffer given)", 1, 0, NL_STATUS_BUFFER_TOO_SMALL, "capacity"},
-        {"capacity small (the length: no room for the NUL)", 1, SIZE_MAX - 1, NL_STATUS_BUFFER_TOO_SMALL, "capacity"},
-        {"capacity huge (a buffer of length + 64: nothing written past the NUL)", 1, SIZE_MAX, 0u, NULL},
-    };
-    size_t needed = 0, i;
+    size_t needed = 0;
     char* json = saved_links(&needed);
     g_save_room = needed + 64;
     g_save_buffer = (char*)malloc(g_save_room);
     if (!g_save_buffer) exit(2);
     id_cases(&f, RAW(A.navmesh), RAW(A.stale_navmesh), RAW(B.navmesh));
-    CASE("nl_navmesh_save_links_json", "out_length NULL") {
-        fill(g_save_buffer, g_save_room);
-        EXPECT_INVALID(A.world, nl_navmesh_save_links_json(A.world, A.navmesh, g_save_buffer, g_save_room, NULL), "out_length");
-        EXPECT_UNTOUCHED(g_save_buffer, g_save_room, "buffer");
-    }
-    for (i = 0; i < sizeof cases / sizeof *cases; ++i) {
-        CASE("nl_navmesh_save_links_json", "%s", cases[i].what) {
-            const size_t capacity = cases[i].capacity == SIZE_MAX - 1 ? needed : cases[i].capacity;
-            size_t length;
-            nl_status status;
-            fill(g_save_buffer, g_save_room);
-            fill(&length, sizeof length);
-            status = nl_navmesh_save_links_json(A.world, A.navmesh, cases[i].with_buffer ? g_save_buffer : NULL, capacity, &length);
-            if (cases[i].detail == 0u) {
-                EXPECT_OK(status);
-                EXPECT(length == needed, "out_length = %u, expected %u", (unsigned)length, (unsigned)needed);
-                if (cases[i].with_buffer) {
-                    EXPECT(memcmp(g_save_buffer, json, needed + 1) == 0, "another JSON");
-                    EXPECT_UNTOUCHED(g_save_buffer + needed + 1, 63, "the bytes past the NUL");
-                }
-            } else {
-                EXPECT_FAILURE(A.world, status, cases[i].detail, cases[i].needle);
-                EXPECT_UNTOUCHED(g_save_buffer, g_save_room, "buffer");
-                if (cases[i].detail == NL_STATUS_BUFFER_TOO_SMALL)
-                    EXPECT(length == needed, "out_length = %u, expected the %u needed", (unsigned)length, (unsigned)needed);
-                else
-                    EXPECT_UNTOUCHED(&length, sizeof length, "out_length");
-            }
-        }
-    }
+    buffer_cases("nl_navmesh_save_links_json", "out_length", save_links_json_into, (const unsigned char*)json, needed, 1);
     free(g_save_buffer);
     free(json);
 }
@@ -2724,13 +2736,13 @@ static char* edited_links(const char* json, const char* key, const char* element
 static const char* g_load_json;
 static size_t g_load_length;
 static nl_status load_id_call(nl_world* w, raw_id id, void* out) {
-    return nl_navmesh_load_links_json(w, AS(nl_navmesh_id, id), g_load_json, g_load_length, (uint32_t*)out);
+    return nl_navmesh_load_links_json(w, AS(nl_navmesh_id, id), g_load_json, g_load_length, 0, (uint32_t*)out);
 }
 
 static void load_fails_with(const char* json, size_t length, nl_status detail, const char* needle) {
     uint32_t count;
     fill(&count, sizeof count);
-    EXPECT_FAILURE(A.world, nl_navmesh_load_links_json(A.world, A.navmesh, json, length, &count), detail, needle);
+    EXPECT_FAILURE(A.world, nl_navmesh_load_links_json(A.world, A.navmesh, json, length, 0, &count), detail, needle);
     EXPECT_UNTOUCHED(&count, sizeof count, "out_count");
 }
 
@@ -2779,13 +2791,38 @@ static void group_navmesh_load_links_json(void) {
         uint32_t count = 0;
         if (!exact) exit(2);
         memcpy(exact, json, length);
-        EXPECT_OK(nl_navmesh_load_links_json(A.world, A.navmesh, exact, length, &count));
+        EXPECT_OK(nl_navmesh_load_links_json(A.world, A.navmesh, exact, length, 0, &count));
         EXPECT(count == link_count(A.navmesh), "out_count = %u", (unsigned)count);
         free(exact);
         fixture_refresh(); /* new ids */
     }
+    CASE("nl_navmesh_load_links_json", "flags 0 (allowed: the file's body is the navmesh's)") {
+        uint32_t count = 0;
+        EXPECT_OK(nl_navmesh_load_links_json(A.world, A.navmesh, json, length, 0, &count));
+        fixture_refresh();
+    }
+    CASE("nl_navmesh_load_links_json", "flags NL_LINKS_LOAD_ANY_BODY (allowed)") {
+        uint32_t count = 0;
+        EXPECT_OK(nl_navmesh_load_links_json(A.world, A.navmesh, json, length, NL_LINKS_LOAD_ANY_BODY, &count));
+        fixture_refresh();
+    }
+    CASE("nl_navmesh_load_links_json", "flags huge (unknown bits)") {
+        uint32_t count;
+        fill(&count, sizeof count);
+        EXPECT_FAILURE(A.world, nl_navmesh_load_links_json(A.world, A.navmesh, json, length, 0xffffffffu, &count),
+                       NL_STATUS_INVALID_ARGUMENT, "flags");
+        EXPECT_UNTOUCHED(&count, sizeof count, "out_count");
+    }
+    CASE("nl_navmesh_load_links_json", "json made for another body (radius 0.25)") {
+        const char* at = strstr(json, "\"radius\"");
+        char* other = (char*)malloc(length + 16);
+        if (!at || !other) fixture_failed("the saved links do not say their body");
+        snprintf(other, length + 16, "%.*s\"radius\": 0.25, \"was\": %s", (int)(at - json), json, at + 9);
+        load_fails_with(other, strlen(other), NL_STATUS_INVALID_ARGUMENT, "radius 0.25");
+        free(other);
+    }
     CASE("nl_navmesh_load_links_json", "out_count NULL (allowed)") {
-        EXPECT_OK(nl_navmesh_load_links_json(A.world, A.navmesh, json, length, NULL));
+        EXPECT_OK(nl_navmesh_load_links_json(A.world, A.navmesh, json, length, 0, NULL));
         fixture_refresh();
     }
     free(json);
@@ -2818,51 +2855,19 @@ static nl_status save_navmesh_id_call(nl_world* w, raw_id id, void* out) {
     return status;
 }
 
+static nl_status save_navmesh_into(void* buffer, size_t capacity, size_t* out_size) {
+    return nl_navmesh_save(A.world, A.navmesh, buffer, capacity, out_size);
+}
+
 static void group_navmesh_save(void) {
     static const id_function f = {"nl_navmesh_save", "navmesh", "buffer", 16, 0, 0, save_navmesh_id_call, 1};
-    static const save_case cases[] = {
-        {"buffer NULL (allowed with capacity 0: measures)", 0, 0, 0u, NULL},
-        {"capacity huge (buffer NULL)", 0, SIZE_MAX, NL_STATUS_INVALID_ARGUMENT, "buffer"},
-        {"capacity 0 (a buffer given)", 1, 0, NL_STATUS_BUFFER_TOO_SMALL, "capacity"},
-        {"capacity small (one byte short)", 1, SIZE_MAX - 1, NL_STATUS_BUFFER_TOO_SMALL, "capacity"},
-        {"capacity huge (a buffer of size + 64: nothing written past the file)", 1, SIZE_MAX, 0u, NULL},
-    };
-    size_t needed = 0, i;
+    size_t needed = 0;
     unsigned char* file = saved_navmesh(&needed);
     g_file_room = needed + 64;
     g_file_buffer = (unsigned char*)malloc(g_file_room);
     if (!g_file_buffer) exit(2);
     id_cases(&f, RAW(A.navmesh), RAW(A.stale_navmesh), RAW(B.navmesh));
-    CASE("nl_navmesh_save", "out_size NULL") {
-        fill(g_file_buffer, g_file_room);
-        EXPECT_INVALID(A.world, nl_navmesh_save(A.world, A.navmesh, g_file_buffer, g_file_room, NULL), "out_size");
-        EXPECT_UNTOUCHED(g_file_buffer, g_file_room, "buffer");
-    }
-    for (i = 0; i < sizeof cases / sizeof *cases; ++i) {
-        CASE("nl_navmesh_save", "%s", cases[i].what) {
-            const size_t capacity = cases[i].capacity == SIZE_MAX - 1 ? needed - 1 : cases[i].capacity;
-            size_t size;
-            nl_status status;
-            fill(g_file_buffer, g_file_room);
-            fill(&size, sizeof size);
-            status = nl_navmesh_save(A.world, A.navmesh, cases[i].with_buffer ? g_file_buffer : NULL, capacity, &size);
-            if (cases[i].detail == 0u) {
-                EXPECT_OK(status);
-                EXPECT(size == needed, "out_size = %u, expected %u", (unsigned)size, (unsigned)needed);
-                if (cases[i].with_buffer) {
-                    EXPECT(memcmp(g_file_buffer, file, needed) == 0, "another file");
-                    EXPECT_UNTOUCHED(g_file_buffer + needed, 64, "the bytes past the file");
-                }
-            } else {
-                EXPECT_FAILURE(A.world, status, cases[i].detail, cases[i].needle);
-                EXPECT_UNTOUCHED(g_file_buffer, g_file_room, "buffer");
-                if (cases[i].detail == NL_STATUS_BUFFER_TOO_SMALL)
-                    EXPECT(size == needed, "out_size = %u, expected the %u needed", (unsigned)size, (unsigned)needed);
-                else
-                    EXPECT_UNTOUCHED(&size, sizeof size, "out_size");
-            }
-        }
-    }
+    buffer_cases("nl_navmesh_save", "out_size", save_navmesh_into, file, needed, 0);
     free(g_file_buffer);
     free(file);
 }

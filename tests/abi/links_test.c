@@ -825,7 +825,7 @@ static void refusals(void) {
         CHECK_INVALID(nl_navmesh_remove_generated_links(NULL, navmesh, NULL), "world");
         CHECK_INVALID(nl_navmesh_generate_links(NULL, navmesh, &s, NULL, NULL, NULL), "world");
         CHECK_INVALID(nl_navmesh_save_links_json(NULL, navmesh, NULL, 0, &length), "world");
-        CHECK_INVALID(nl_navmesh_load_links_json(NULL, navmesh, "{}", 2, NULL), "world");
+        CHECK_INVALID(nl_navmesh_load_links_json(NULL, navmesh, "{}", 2, 0, NULL), "world");
     }
     CHECK(nl_link_is_valid(world, id) == 1);
     nl_world_destroy(world);
@@ -1006,7 +1006,7 @@ static void check_load_refused(nl_world* world, nl_navmesh_id navmesh, const cha
     uint32_t n0 = 0, n1 = 0, count = 777u;
     nl_link* before = list_links(world, navmesh, &n0);
     nl_link* after;
-    if (!CHECK_FAIL(nl_navmesh_load_links_json(world, navmesh, json, strlen(json), &count), detail, needle))
+    if (!CHECK_FAIL(nl_navmesh_load_links_json(world, navmesh, json, strlen(json), 0, &count), detail, needle))
         fprintf(stderr, "    (the JSON: %s)\n", json);
     CHECK_MSG(count == 777u, "a refused load wrote out_count (%s)", json);
     after = list_links(world, navmesh, &n1);
@@ -1075,7 +1075,7 @@ static void json(void) {
         return;
     }
     count = 0;
-    CHECK_OK(nl_navmesh_load_links_json(world, navmesh, text, length, &count));
+    CHECK_OK(nl_navmesh_load_links_json(world, navmesh, text, length, 0, &count));
     CHECK(count == n_saved);
     loaded = list_links(world, navmesh, &n_loaded);
     CHECK(n_loaded == n_saved);
@@ -1091,7 +1091,7 @@ static void json(void) {
     {
         nl_world* other = make_world(1);
         const nl_navmesh_id there = build_level(other, LEVEL_GAP);
-        CHECK_OK(nl_navmesh_load_links_json(other, there, text, length, NULL)); /* out_count is optional */
+        CHECK_OK(nl_navmesh_load_links_json(other, there, text, length, 0, NULL)); /* out_count is optional */
         loaded = list_links(other, there, &n_loaded);
         CHECK(n_loaded == n_saved);
         for (i = 0; i < n_loaded && i < n_saved; ++i)
@@ -1144,8 +1144,8 @@ static void json(void) {
         uint32_t n0 = 0, n1 = 0;
         nl_link* before = list_links(world, navmesh, &n0);
         nl_link* after;
-        CHECK_INVALID(nl_navmesh_load_links_json(world, navmesh, NULL, 10, &count), "json");
-        CHECK_FAIL(nl_navmesh_load_links_json(world, navmesh, NULL, 0, &count), NL_STATUS_PARSE_ERROR, "");
+        CHECK_INVALID(nl_navmesh_load_links_json(world, navmesh, NULL, 10, 0, &count), "json");
+        CHECK_FAIL(nl_navmesh_load_links_json(world, navmesh, NULL, 0, 0, &count), NL_STATUS_PARSE_ERROR, "");
         after = list_links(world, navmesh, &n1);
         CHECK(same_list(before, n0, after, n1));
         free(before);
@@ -1157,7 +1157,7 @@ static void json(void) {
         static const char minimal[] =
             LINKS_HEAD "[{\"kind\": \"manual\", \"start\": [-6, 0.5, 0], \"end\": [6, 0, 0]}]}";
         nl_link* l;
-        CHECK_OK(nl_navmesh_load_links_json(world, navmesh, minimal, sizeof minimal - 1u, &count));
+        CHECK_OK(nl_navmesh_load_links_json(world, navmesh, minimal, sizeof minimal - 1u, 0, &count));
         CHECK(count == 1u);
         l = list_links(world, navmesh, &n_loaded);
         if (CHECK(n_loaded == 1u)) {
@@ -1169,13 +1169,13 @@ static void json(void) {
         free(l);
     }
     /* An empty list empties the navmesh. */
-    CHECK_OK(nl_navmesh_load_links_json(world, navmesh, LINKS_HEAD "[]}", strlen(LINKS_HEAD "[]}"), &count));
+    CHECK_OK(nl_navmesh_load_links_json(world, navmesh, LINKS_HEAD "[]}", strlen(LINKS_HEAD "[]}"), 0, &count));
     CHECK(count == 0u && link_count(world, navmesh) == 0u);
 
     /* A stale navmesh. */
     CHECK_OK(nl_navmesh_remove(world, navmesh));
     CHECK_FAIL(nl_navmesh_save_links_json(world, navmesh, NULL, 0, &length), NL_STATUS_INVALID_HANDLE, "navmesh");
-    CHECK_FAIL(nl_navmesh_load_links_json(world, navmesh, LINKS_HEAD "[]}", strlen(LINKS_HEAD "[]}"), &count),
+    CHECK_FAIL(nl_navmesh_load_links_json(world, navmesh, LINKS_HEAD "[]}", strlen(LINKS_HEAD "[]}"), 0, &count),
                NL_STATUS_INVALID_HANDLE, "navmesh");
     free(saved);
     nl_world_destroy(world);

@@ -61,7 +61,7 @@ int main(int argc, char** argv) {
     if (NL_FAILED(nl_navmesh_save_links_json(world, navmesh, json.data(), json.size(), &length))) return failed("save");
     const double load_start = nl::samples::now_ms();
     uint32_t loaded = 0;
-    if (NL_FAILED(nl_navmesh_load_links_json(world, navmesh, json.data(), length, &loaded))) return failed("load");
+    if (NL_FAILED(nl_navmesh_load_links_json(world, navmesh, json.data(), length, 0, &loaded))) return failed("load");
     const double load_ms = nl::samples::now_ms() - load_start;
 
     std::printf("links=%d add_ms=%.1f first_us_per_add=%.2f last_us_per_add=%.2f load_json_ms=%.1f\n", count, all_ms,

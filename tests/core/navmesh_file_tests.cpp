@@ -240,3 +240,32 @@ TEST_CASE("navmesh coordinates are kept on the 1/1024 m grid, and a file holds t
         CHECK(read.quantum == std::ldexp(1.0f, -10));
     }
 }
+
+TEST_CASE("a links file says the body its links were made for: another body's navmesh refuses it, or takes it when asked") {
+    Baked b;
+    nl::AgentType narrow;
+    narrow.radius = 0.3f;
+    const Handle other = nl::test::build_recast_navmesh(*b.world, narrow);
+    const nl::LinksMadeFor made_for{b.world->navmeshes().navmesh(b.navmesh)->agent(),
+                                    b.world->navmeshes().made_for(b.navmesh).link_settings};
+    std::vector<nl::Link> links;
+    for (const nl::StoredLink& l : nl::test::links_of(*b.world, b.navmesh)) links.push_back(l.link);
+    const std::string json = nl::links_to_json(links, &made_for);
+    const nl::LinksFile file = nl::read_links_json(json);
+    REQUIRE(file.made_for);
+    CHECK(file.made_for->agent.radius == nl::AgentType{}.radius);
+    CHECK(file.made_for->link_settings == made_for.link_settings);
+
+    std::string message;
+    CHECK(nl::test::code_of([&] { b.world->load_links_file(other, file, false); }, &message) == nl::ErrorCode::InvalidArgument);
+    CHECK_MESSAGE(message.find("radius 0.6 m") != std::string::npos, message);
+    CHECK_MESSAGE(message.find("radius 0.3 m") != std::string::npos, message);
+    CHECK(nl::test::links_of(*b.world, other).empty());  // nothing loaded
+    // Asked to, it loads them (with a warning to the log).
+    b.world->load_links_file(other, file, true);
+    CHECK(nl::test::links_of(*b.world, other).size() == links.size());
+    // The navmesh of the same body takes them as they are; a file that says no body too.
+    b.world->load_links_file(b.navmesh, file, false);
+    CHECK(nl::test::links_of(*b.world, b.navmesh).size() == links.size());
+    b.world->load_links_file(other, nl::read_links_json(nl::links_to_json(links)), false);
+}

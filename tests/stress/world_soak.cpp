@@ -223,7 +223,7 @@ void edit_links(Round& r, Worker& me) {
                 status = nl_navmesh_save_links_json(r.world, r.navmesh, json.data(), json.size(), &length);
             }
             if (expect(status, "nl_navmesh_save_links_json")) {
-                expect(nl_navmesh_load_links_json(r.world, r.navmesh, json.data(), length, nullptr), "nl_navmesh_load_links_json");
+                expect(nl_navmesh_load_links_json(r.world, r.navmesh, json.data(), length, 0, nullptr), "nl_navmesh_load_links_json");
                 live.clear();
             }
         }

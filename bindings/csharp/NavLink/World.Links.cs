@@ -174,16 +174,21 @@ namespace NavLink
             }
         }
 
-        /// <summary>Replaces all of the navmesh's links with those in json; returns how many were loaded.</summary>
-        public unsafe uint LoadLinksJson(NavmeshId navmesh, string json)
+        /// <summary>Replaces all of the navmesh's links with those in json; returns how many were loaded.
+        /// A file that records the body its links were generated for ("made_for") must name the navmesh's
+        /// (radius and height): links for another body are refused (InvalidArgument, both bodies named)
+        /// unless anyBody (LinksLoadFlags.AnyBody), which loads them with a warning to the world's log.
+        /// Files without "made_for" load whatever the body. On failure nothing changes.</summary>
+        public unsafe uint LoadLinksJson(NavmeshId navmesh, string json, bool anyBody = false)
         {
+            uint flags = anyBody ? LinksLoadFlags.AnyBody : 0u;
             byte[] utf8 = Encoding.UTF8.GetBytes(json ?? "");
             uint count;
             byte empty = 0;
             fixed (byte* j = utf8)
             using (var w = Enter())
                 Status.Check(Native.nl_navmesh_load_links_json(w.Pointer, navmesh, utf8.Length == 0 ? &empty : j,
-                                                               (UIntPtr)utf8.Length, &count));
+                                                               (UIntPtr)utf8.Length, flags, &count));
             return count;
         }
     }

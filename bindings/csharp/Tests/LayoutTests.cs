@@ -32,6 +32,7 @@ namespace NavLink.Tests
             {typeof(PathOutcome), "NL_PATH_"}, {typeof(AgentState), "NL_AGENT_"}, {typeof(AgentReason), "NL_AGENT_REASON_"},
             {typeof(TrajectoryKind), "NL_TRAJECTORY_"}, {typeof(AgentEventKind), "NL_AGENT_EVENT_"}, {typeof(PluginKinds), "NL_PLUGIN_"},
             {typeof(RecastPartition), "NL_RECAST_PARTITION_"}, {typeof(NavmeshLoadFlags), "NL_NAVMESH_LOAD_"},
+            {typeof(LinksLoadFlags), "NL_LINKS_LOAD_"},
         };
         private static readonly Dictionary<string, string> RenamedConstants = new Dictionary<string, string>
         {

@@ -136,6 +136,43 @@ namespace NavLink.Tests
                     check.Throws(StatusBits.InvalidArgument, "def->end", () => world.AddLink(navmesh, def), "a link ending off the navmesh");
                 }
             });
+
+            check.Run("links JSON for another body", () =>
+            {
+                var logged = new List<string>();
+                using (var world = new World(new WorldOptions { Log = (level, status, message) => { lock (logged) logged.Add(message); } }))
+                {
+                    TestLevels.AddGapLevel(world);
+                    NavmeshId wide = world.BuildNavmesh(World.DefaultAgentType());  // radius 0.6
+                    world.GenerateLinks(wide);
+                    LinkDef def = World.DefaultLinkDef();
+                    def.Start = new Vec3(-5, 0, 4);
+                    def.End = new Vec3(5, 0, 4);
+                    world.AddLink(wide, def);
+                    int count = world.GetLinks(wide).Length;
+                    string json = world.SaveLinksJson(wide);
+                    check.That(json.Contains("\"made_for\""), "the saved JSON records what its links were made for");
+
+                    AgentType slim = World.DefaultAgentType();
+                    slim.Radius = 0.3f;
+                    NavmeshId narrow = world.BuildNavmesh(slim);
+                    check.Throws(StatusBits.InvalidArgument, "radius 0.6", () => world.LoadLinksJson(narrow, json),
+                                 "links for radius 0.6 into a navmesh for radius 0.3 (names theirs)");
+                    check.Throws(StatusBits.InvalidArgument, "radius 0.3", () => world.LoadLinksJson(narrow, json, false),
+                                 "links for radius 0.6 into a navmesh for radius 0.3 (names ours)");
+                    check.That(world.GetLinks(narrow).Length == 0, "a refused load changes nothing");
+                    lock (logged) logged.Clear();
+                    check.That(world.LoadLinksJson(narrow, json, anyBody: true) == count, "anyBody loads them all");
+                    check.That(world.GetLinks(narrow).Length == count, "the narrow navmesh has them");
+                    lock (logged)
+                        check.That(logged.Any(m => m.Contains("radius 0.6") && m.Contains("radius 0.3")),
+                                   "anyBody warns to the log, naming both bodies: " + string.Join(" | ", logged));
+
+                    NavmeshId same = world.BuildNavmesh(World.DefaultAgentType());
+                    check.That(world.LoadLinksJson(same, json) == count, "a navmesh for the same body loads them");
+                    check.That(world.LoadLinksJson(wide, json) == count, "and so does the one they were saved from");
+                }
+            });
         }
     }
 }

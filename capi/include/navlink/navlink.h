@@ -929,25 +929,33 @@ NL_API nl_status nl_navmesh_update_links_in_box(nl_world* world, nl_navmesh_id n
                                                 nl_link_generation_report* out_report);
 
 /** Writes the navmesh's links as JSON (schema "navlink-links" version 1, docs/link-generation.md)
- *  into `buffer` (caller-owned, `capacity` bytes, NUL-terminated on success). `*out_length` always
- *  receives the length without the NUL; a NULL buffer only measures (two-call pattern). Returns
- *  SUCCESS, or a failure with BUFFER_TOO_SMALL (capacity must exceed the length), INVALID_HANDLE or
- *  INVALID_ARGUMENT. Thread-safe. */
+ *  into `buffer` (caller-owned, `capacity` bytes, NUL-terminated on success), with what they were made
+ *  for ("made_for": the navmesh's agent type and the settings of the generation that made its
+ *  generated links). `*out_length` always receives the length without the NUL; a NULL buffer only
+ *  measures (two-call pattern). Returns SUCCESS, or a failure with BUFFER_TOO_SMALL (capacity must
+ *  exceed the length), INVALID_HANDLE or INVALID_ARGUMENT. Thread-safe. */
 NL_API nl_status nl_navmesh_save_links_json(const nl_world* world, nl_navmesh_id navmesh, char* buffer,
                                             size_t capacity, size_t* out_length);
+
+/** Load links generated for another body than the navmesh's (see nl_navmesh_load_links_json). */
+#define NL_LINKS_LOAD_ANY_BODY 0x1u
 
 /** Replaces all of the navmesh's links with those in `json` (`length` bytes, borrowed); new ids are
  *  given. Each link is held to nl_link_add's rules: both ends within 1 m of the navmesh. A link
  *  without "requires" asks for what its ends measure; one with it for what it says (an absent key is
- *  0, an absent "length" the ends' horizontal distance). `out_count` (optional)
- *  receives how many were loaded. On failure nothing changes. On success the last generation is
- *  forgotten: nl_navmesh_update_links_in_box returns NOT_FOUND until the next
+ *  0, an absent "length" the ends' horizontal distance). A file that says the body its links were
+ *  generated for ("made_for".agent: radius and height) must say the navmesh's: links for another body
+ *  are refused (INVALID_ARGUMENT, both bodies named), or, with NL_LINKS_LOAD_ANY_BODY in `flags`,
+ *  loaded with a warning to the log callback. Files without "made_for" (written before 0.3) load as
+ *  before. `out_count` (optional) receives how many were loaded. On failure nothing changes. On success
+ *  the last generation is forgotten: nl_navmesh_update_links_in_box returns NOT_FOUND until the next
  *  nl_navmesh_generate_links.
  *  Returns SUCCESS, or a failure with PARSE_ERROR, VERSION_MISMATCH (another format or version),
- *  INVALID_ARGUMENT (a field missing or wrong, nesting deeper than 64 levels, or an end off the
- *  navmesh, named by its path, e.g. "links[3].start"), INVALID_HANDLE. Thread-safe. */
+ *  INVALID_ARGUMENT (a field missing or wrong, nesting deeper than 64 levels, an end off the navmesh,
+ *  named by its path, e.g. "links[3].start"; links for another body; unknown flags), INVALID_HANDLE.
+ *  Thread-safe. Changed in 0.3: `flags` was added. */
 NL_API nl_status nl_navmesh_load_links_json(nl_world* world, nl_navmesh_id navmesh, const char* json, size_t length,
-                                            uint32_t* out_count);
+                                            uint32_t flags, uint32_t* out_count);
 
 /* ---------------------------------------------------------------------------------------------
  * Baked navmesh files: a navmesh, its links and what they were made for in one compact, checked

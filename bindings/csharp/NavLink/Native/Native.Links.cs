@@ -56,8 +56,9 @@ namespace NavLink
         public static extern uint nl_navmesh_save_links_json(IntPtr world, NavmeshId navmesh, byte* buffer,
                                                              UIntPtr capacity, UIntPtr* outLength);
 
+        /// <summary>flags: LinksLoadFlags.AnyBody or 0.</summary>
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         public static extern uint nl_navmesh_load_links_json(IntPtr world, NavmeshId navmesh, byte* json,
-                                                             UIntPtr length, uint* outCount);
+                                                             UIntPtr length, uint flags, uint* outCount);
     }
 }

@@ -147,6 +147,13 @@ namespace NavLink
         Replanned = 6u,
     }
 
+    /// <summary>nl_navmesh_load_links_json's flags (World.LoadLinksJson's anyBody).</summary>
+    public static class LinksLoadFlags
+    {
+        /// <summary>Load links generated for another body than the navmesh's (with a warning to the log).</summary>
+        public const uint AnyBody = 0x1u;
+    }
+
     /// <summary>nl_navmesh_load_def.Flags (World.LoadNavmesh's sameLevel).</summary>
     public static class NavmeshLoadFlags
     {

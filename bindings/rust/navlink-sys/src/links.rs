@@ -166,6 +166,9 @@ pub fn nl_link_generation_report_init() -> nl_link_generation_report {
 }
 default_is_init!(nl_link_generation_report, nl_link_generation_report_init);
 
+/// Load links generated for another body than the navmesh's (see `nl_navmesh_load_links_json`).
+pub const NL_LINKS_LOAD_ANY_BODY: u32 = 0x1;
+
 /// `nl_progress_fn*`: return 0 to cancel. Called on the thread that started the generation.
 pub type nl_progress_fn = Option<unsafe extern "C" fn(user: *mut c_void, fraction: f32, stage: *const c_char) -> i32>;
 
@@ -232,6 +235,7 @@ extern "C" {
         navmesh: nl_navmesh_id,
         json: *const c_char,
         length: usize,
+        flags: u32,
         out_count: *mut u32,
     ) -> nl_status;
 }

@@ -27,7 +27,9 @@ mod world;
 pub use agents::{default_agent_def, AgentInfoExt};
 pub use error::{status_string, Error, Result};
 pub use level::MeshOptions;
-pub use links::{default_link_def, default_link_settings, link_settings_from_json, LinkDefExt, LinkExt, Progress};
+pub use links::{
+    default_link_def, default_link_settings, link_settings_from_json, LinkDefExt, LinkExt, LinksLoadOptions, Progress,
+};
 pub use navmesh::{default_agent_type, default_recast_settings, NavmeshBuild, NavmeshDetail, NavmeshInput};
 pub use navmesh_files::{default_navmesh_load_def, describe_navmesh_file, NavmeshLoadOptions};
 pub use paths::{default_agent_capabilities, FinishedPath, PathBudget, PathOutcome, PathQuery, PathResult};

@@ -19,6 +19,21 @@ pub fn default_link_def() -> LinkDef {
     unsafe { sys::nl_default_link_def() }
 }
 
+/// How to load a links JSON file (`World::load_links_json`). `Default`: only links made for the navmesh's
+/// body (or for no body named).
+#[derive(Clone, Copy, Debug, Default)]
+pub struct LinksLoadOptions {
+    /// Load links generated for another body (radius or height) than the navmesh's, with a warning to the
+    /// world's log, instead of refusing them (`INVALID_ARGUMENT`) (`LINKS_LOAD_ANY_BODY`).
+    pub any_body: bool,
+}
+
+impl LinksLoadOptions {
+    fn flags(&self) -> u32 {
+        if self.any_body { sys::NL_LINKS_LOAD_ANY_BODY } else { 0 }
+    }
+}
+
 /// `Some(id)`, or `None` for the null id.
 fn non_null_navmesh(id: NavmeshId) -> Option<NavmeshId> {
     if id == NavmeshId::default() {
@@ -231,10 +246,15 @@ impl World {
         }
     }
 
-    /// Replaces all of the navmesh's links with those in `json`; returns how many were loaded.
-    pub fn load_links_json(&self, navmesh: NavmeshId, json: &str) -> Result<u32> {
+    /// Replaces all of the navmesh's links with those in `json`; returns how many were loaded. A file that
+    /// records the body its links were generated for (`"made_for"`) must name the navmesh's (radius and
+    /// height): links for another body are refused (`INVALID_ARGUMENT`, both bodies named) unless
+    /// `options.any_body`. Files without `"made_for"` load whatever the body. On failure nothing changes.
+    pub fn load_links_json(&self, navmesh: NavmeshId, json: &str, options: &LinksLoadOptions) -> Result<u32> {
         let mut count = 0;
-        check(unsafe { sys::nl_navmesh_load_links_json(self.raw(), navmesh, non_null(json), json.len(), &mut count) })?;
+        check(unsafe {
+            sys::nl_navmesh_load_links_json(self.raw(), navmesh, non_null(json), json.len(), options.flags(), &mut count)
+        })?;
         Ok(count)
     }
 }

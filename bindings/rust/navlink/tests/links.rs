@@ -4,8 +4,9 @@ mod common;
 use common::*;
 use navlink::{
     default_agent_capabilities, default_agent_type, default_link_def, link_kind, link_settings_from_json, status, AgentCapabilities,
-    NavmeshBuild, NavmeshId, PathOutcome, PathQuery, World,
+    AgentType, LinksLoadOptions, NavmeshBuild, NavmeshId, PathOutcome, PathQuery, World, WorldOptions,
 };
+use std::sync::{Arc, Mutex};
 
 fn gap_world() -> (World, NavmeshId) {
     let world = World::new().unwrap();
@@ -106,11 +107,53 @@ fn manual_links_and_json() {
     world.generate_links(navmesh, None, None, None).unwrap();
     let json = world.save_links_json(navmesh).unwrap();
     assert!(json.contains("navlink-links"));
-    assert_eq!(world.load_links_json(navmesh, &json).unwrap(), generated + 1);
+    assert_eq!(world.load_links_json(navmesh, &json, &LinksLoadOptions::default()).unwrap(), generated + 1);
     assert!(!world.is_link_valid(manual), "loaded links get new ids");
     assert_fails(world.link(manual), status::INVALID_HANDLE, "nl_link_get");
     assert_fails(world.remove_link(manual), status::INVALID_HANDLE, "nl_link_remove");
-    assert_fails(world.load_links_json(navmesh, "[1,"), status::PARSE_ERROR, "nl_navmesh_load_links_json");
+    assert_fails(world.load_links_json(navmesh, "[1,", &LinksLoadOptions::default()), status::PARSE_ERROR, "nl_navmesh_load_links_json");
     def.end = [0.0, 0.0, 0.0]; // over the gap: off the navmesh
     assert_fails(world.add_link(navmesh, &def), status::INVALID_ARGUMENT, "def->end");
+}
+
+#[test]
+fn links_json_for_another_body() {
+    let logged = Arc::new(Mutex::new(Vec::<String>::new()));
+    let sink = Arc::clone(&logged);
+    let world = World::with_options(WorldOptions {
+        log: Some(Box::new(move |_level, _status, message: &str| sink.lock().unwrap().push(message.to_string()))),
+        ..Default::default()
+    })
+    .unwrap();
+    add_gap_level(&world);
+    let wide = world.build_navmesh(&NavmeshBuild::new(default_agent_type())).unwrap(); // radius 0.6
+    world.generate_links(wide, None, None, None).unwrap();
+    let mut def = default_link_def();
+    def.start = [-5.0, 0.0, 4.0];
+    def.end = [5.0, 0.0, 4.0];
+    world.add_link(wide, &def).unwrap();
+    let count = world.links(wide).unwrap().len() as u32;
+    let json = world.save_links_json(wide).unwrap();
+    assert!(json.contains("\"made_for\""), "the saved JSON records what its links were made for");
+
+    let slim = AgentType { radius: 0.3, ..default_agent_type() };
+    let narrow = world.build_navmesh(&NavmeshBuild::new(slim)).unwrap();
+    let refused = world.load_links_json(narrow, &json, &LinksLoadOptions::default()).unwrap_err();
+    assert!(refused.has(status::FAILURE) && refused.has(status::INVALID_ARGUMENT), "{}", refused);
+    assert!(refused.message().contains("radius 0.6") && refused.message().contains("radius 0.3"),
+            "both bodies named: {}", refused.message());
+    assert!(world.links(narrow).unwrap().is_empty(), "a refused load changes nothing");
+    logged.lock().unwrap().clear();
+    let any_body = LinksLoadOptions { any_body: true };
+    assert_eq!(world.load_links_json(narrow, &json, &any_body).unwrap(), count, "any_body loads them all");
+    assert_eq!(world.links(narrow).unwrap().len() as u32, count);
+    {
+        let logged = logged.lock().unwrap();
+        assert!(logged.iter().any(|m| m.contains("radius 0.6") && m.contains("radius 0.3")),
+                "any_body warns to the log, naming both bodies: {:?}", logged);
+    }
+
+    let same = world.build_navmesh(&NavmeshBuild::new(default_agent_type())).unwrap();
+    assert_eq!(world.load_links_json(same, &json, &LinksLoadOptions::default()).unwrap(), count, "the same body loads them");
+    assert_eq!(world.load_links_json(wide, &json, &LinksLoadOptions::default()).unwrap(), count);
 }
