@@ -347,7 +347,8 @@ std::string made_for_json(const NavMeshFile& file) {
         {"link_settings", settings_object(file.made_for.link_settings)},
         {"level_hash", hash},
         {"writer", file.writer}};
-    return out.dump();
+    // The names and texts come from the file: bytes that are not UTF-8 are shown as U+FFFD.
+    return out.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
 }
 
 uint32_t navmesh_file_checksum(const uint8_t* data, size_t size) {

@@ -153,6 +153,13 @@ TEST_CASE("a baked file says what it was made for: the body, the builder, the le
     const Handle loaded = other->load_navmesh(read);
     CHECK(other->navmeshes().made_for(loaded).level_hash == read.made_for.level_hash);
     CHECK(other->navmeshes().made_for(loaded).link_settings == read.made_for.link_settings);
+    // Whatever bytes a file names its builder with, describing it says so in valid JSON (the fuzzer
+    // found a name that is not UTF-8 made the description fail).
+    nl::MadeFor odd = b.world->navmeshes().made_for(b.navmesh);
+    odd.builder = "r\xb3" "cast";
+    const std::vector<uint8_t> file = nl::write_navmesh_file(*b.world->navmeshes().navmesh(b.navmesh), {}, odd, false);
+    const std::string json = nl::made_for_json(nl::read_navmesh_file(file.data(), file.size()));
+    CHECK_MESSAGE(json.find("r\xef\xbf\xbd" "cast") != std::string::npos, json);
 }
 
 TEST_CASE("a truncated, corrupted, foreign or future navmesh file is refused with the reason") {

@@ -7,15 +7,19 @@
 //   links_json/   links of every kind saved by nl_navmesh_save_links_json from the navmesh the
 //                 links target loads them on
 //   navmesh_file/ navmesh files saved by nl_navmesh_save: the links target's navmesh with each
-//                 count of those links, and a map of quads with areas
+//                 count of those links, and a map of quads with areas; each also with its body
+//                 inflated (the flag cleared), so that mutations reach the sections' fields
 #include <navlink/navlink.h>
 
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <map>
 #include <string>
 #include <vector>
+
+#include <zlib.h>
 
 #include "cell_navmesh.h"
 #include "io/obj_reader.h"
@@ -82,6 +86,30 @@ std::string quad_map() {
     return out;
 }
 
+// A navmesh file and, when its body is deflated, the same file with its body inflated (flag 0,
+// checksum made right): both read the same.
+void write_navmesh_file(const fs::path& path, const std::string& file) {
+    write(path, file);
+    uint32_t flags = 0;
+    std::memcpy(&flags, file.data() + 28, 4);
+    if (!(flags & 1u) || file.size() < 40) return;
+    uint64_t inflated_size = 0;
+    std::memcpy(&inflated_size, file.data() + 32, 8);
+    std::string body(inflated_size, '\0');
+    uLongf got = body.size();
+    if (uncompress(reinterpret_cast<Bytef*>(body.data()), &got, reinterpret_cast<const Bytef*>(file.data() + 40), file.size() - 40) != Z_OK)
+        return;
+    std::string plain = file.substr(0, 32) + body;
+    const uint64_t size = plain.size();
+    const uint32_t none = 0;
+    std::memcpy(plain.data() + 16, &size, 8);
+    std::memcpy(plain.data() + 28, &none, 4);
+    const uint32_t crc = static_cast<uint32_t>(
+        crc32_z(crc32_z(0L, Z_NULL, 0), reinterpret_cast<const Bytef*>(plain.data() + 32), plain.size() - 32));
+    std::memcpy(plain.data() + 24, &crc, 4);
+    write(fs::path(path).replace_extension(".plain.nlnav"), plain);
+}
+
 // Links of each kind on the links target's navmesh (an 8 m map of cells), as the library saves them.
 bool write_links(const fs::path& dir, const fs::path& file_dir) {
     nl_world* world = nullptr;
@@ -109,7 +137,7 @@ bool write_links(const fs::path& dir, const fs::path& file_dir) {
         ok = ok && NL_SUCCEEDED(nl_navmesh_save(world, navmesh, nullptr, 0, &size));
         std::string file(size, '\0');
         ok = ok && NL_SUCCEEDED(nl_navmesh_save(world, navmesh, file.data(), file.size(), &size));
-        if (ok) write(file_dir / ("cells-" + std::to_string(i + 1) + ".nlnav"), file);
+        if (ok) write_navmesh_file(file_dir / ("cells-" + std::to_string(i + 1) + ".nlnav"), file);
     }
     if (!ok) std::fprintf(stderr, "navlink-fuzz-seeds: links: %s\n", nl_get_last_error_message());
     nl_world_destroy(world);
@@ -126,7 +154,7 @@ bool write_quad_file(const fs::path& dir) {
     bool ok = NL_SUCCEEDED(nl_navmesh_add(world, &cells.def, &navmesh)) && NL_SUCCEEDED(nl_navmesh_save(world, navmesh, nullptr, 0, &size));
     std::string file(size, '\0');
     ok = ok && NL_SUCCEEDED(nl_navmesh_save(world, navmesh, file.data(), file.size(), &size));
-    if (ok) write(dir / "quad-map.nlnav", file);
+    if (ok) write_navmesh_file(dir / "quad-map.nlnav", file);
     else std::fprintf(stderr, "navlink-fuzz-seeds: navmesh file: %s\n", nl_get_last_error_message());
     nl_world_destroy(world);
     return ok;
