@@ -15,10 +15,10 @@ Vec3 NavMesh::centre(uint32_t p) const {
 }
 
 BoundaryEdge NavMesh::boundary_edge(uint32_t i) const {
-    const auto [p, k] = boundary_[i];
+    const uint32_t p = boundary_[i].polygon, k = boundary_[i].edge;
     const Vec3& a = vertex(corner(p, k));
     const Vec3& b = vertex(corner(p, (k + 1) % corner_count(p)));
-    const Vec3& n = normals_[p];
+    const Vec3 n = normal(p);
     // The polygon lies left of a -> b seen from above, so right (outward) is edge x normal.
     // Recast's polygons are not planar: the normal is first tilted to be square to the edge,
     // so that outward is exactly across the edge and on the outer side.
@@ -38,8 +38,8 @@ std::vector<BoundaryEdge> NavMesh::boundary_edges() const {
 size_t NavMesh::memory_bytes() const {
     auto bytes = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
     return bytes(vertices_) + bytes(first_corner_) + bytes(corners_) + bytes(neighbours_) + bytes(areas_) +
-           bytes(on_outline_) + bytes(normals_) + bytes(polygon_bounds_) + bytes(detail_vertices_) +
-           bytes(detail_triangles_) + bytes(first_detail_triangle_) + bytes(boundary_) + grid_.memory_bytes();
+           bytes(on_outline_) + bytes(polygon_bounds_) + bytes(detail_vertices_) +
+           bytes(detail_triangles_) + bytes(detail_) + bytes(boundary_) + grid_.memory_bytes();
 }
 
 bool NavMesh::over_polygon(uint32_t p, float x, float z) const {
@@ -71,10 +71,10 @@ float NavMesh::surface_height(uint32_t p, float x, float z) const {
         }
         return margin >= 0.0f;
     };
-    if (!first_detail_triangle_.empty()) {
-        for (uint32_t t = first_detail_triangle_[p]; t < first_detail_triangle_[p + 1]; ++t) {
-            const Triangle& tri = detail_triangles_[t];
-            if (consider(detail_vertices_[tri[0]], detail_vertices_[tri[1]], detail_vertices_[tri[2]])) break;
+    if (!detail_.empty()) {
+        for (uint32_t t = detail_[p].first_triangle; t < detail_[p + 1].first_triangle; ++t) {
+            const DetailTriangle& tri = detail_triangles_[t];
+            if (consider(detail_point(p, tri[0]), detail_point(p, tri[1]), detail_point(p, tri[2]))) break;
         }
     } else {
         const Vec3& origin = vertex(corner(p, 0));

@@ -3,6 +3,7 @@
 // can keep its own reference (shared_ptr) while the world replaces it.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -16,6 +17,8 @@ namespace nl {
 constexpr uint32_t kNoPolygon = 0xffffffffu;
 
 constexpr uint32_t kMaxPolygonVertices = 16;
+// A polygon's detail vertices besides its corners, at most (a detail triangle's corner is a byte).
+constexpr uint32_t kMaxDetailVertices = 255 - kMaxPolygonVertices;
 
 struct AgentType {
     float radius = 0.6f;
@@ -54,6 +57,15 @@ struct NavPoint {
 
 struct NavMeshInput;
 
+// The sum of the fan's triangle normals over the ring of `count` vertex indices (Newell's normal,
+// twice the area vector): its y is twice the ring's area seen from above, signed by its winding.
+inline Vec3 fan_normal(const std::vector<Vec3>& vertices, const uint32_t* ring, uint32_t count) {
+    const Vec3& origin = vertices[ring[0]];
+    Vec3 n = Vec3::Zero();
+    for (uint32_t k = 1; k + 1 < count; ++k) n += (vertices[ring[k]] - origin).cross(vertices[ring[k + 1]] - origin);
+    return n;
+}
+
 class NavMesh {
 public:
     uint32_t polygon_count() const { return static_cast<uint32_t>(first_corner_.size() - 1); }
@@ -67,7 +79,8 @@ public:
     const Vec3& vertex(uint32_t v) const { return vertices_[v]; }
     uint32_t vertex_count() const { return static_cast<uint32_t>(vertices_.size()); }
     uint8_t area(uint32_t p) const { return areas_[p]; }
-    const Vec3& normal(uint32_t p) const { return normals_[p]; }
+    // Polygon p's unit normal, pointing up (from its corners: computed when asked, not stored).
+    Vec3 normal(uint32_t p) const { return fan_normal(vertices_, &corners_[first_corner_[p]], corner_count(p)).normalized(); }
     Vec3 centre(uint32_t p) const;
     const Aabb& polygon_bounds(uint32_t p) const { return polygon_bounds_[p]; }
 
@@ -110,15 +123,25 @@ private:
     std::vector<uint32_t> neighbours_;
     std::vector<uint8_t> areas_;
     std::vector<uint8_t> on_outline_;  // per vertex
-    std::vector<Vec3> normals_;
     std::vector<Aabb> polygon_bounds_;
-    // Surface: detail triangles (indices into detail_vertices_) per polygon, when the source had them.
+    // Surface: detail triangles per polygon, when the source had them, as Detour keeps them: each
+    // corner a byte, below the polygon's corner count one of its corners, from there one of its own
+    // detail vertices (those that are not corners; at most kMaxDetailVertices per polygon).
+    using DetailTriangle = std::array<uint8_t, 3>;
+    struct DetailRange {
+        uint32_t first_triangle;
+        uint32_t first_vertex;
+    };
+    Vec3 detail_point(uint32_t p, uint8_t local) const {
+        const uint32_t corners = corner_count(p);
+        return local < corners ? vertices_[corner(p, local)] : detail_vertices_[detail_[p].first_vertex + (local - corners)];
+    }
     std::vector<Vec3> detail_vertices_;
-    std::vector<Triangle> detail_triangles_;
-    std::vector<uint32_t> first_detail_triangle_;  // empty when there is no detail
-    struct EdgeRef {
-        uint32_t polygon;
-        uint32_t edge;
+    std::vector<DetailTriangle> detail_triangles_;
+    std::vector<DetailRange> detail_;  // polygon_count + 1 ranges; empty when there is no detail
+    struct EdgeRef {  // four bytes: corners are fewer than 16, polygons fewer than 2^28
+        uint32_t polygon : 28;
+        uint32_t edge : 4;
     };
     std::vector<EdgeRef> boundary_;
     PolygonGrid grid_;

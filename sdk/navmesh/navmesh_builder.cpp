@@ -33,6 +33,8 @@ private:
         static const char axis[] = {'x', 'y', 'z'};
         if (in_.vertices.empty()) fail_field(ErrorCode::InvalidArgument, "vertex_count is 0");
         if (in_.indices.empty()) fail_field(ErrorCode::InvalidArgument, "polygon_count is 0");
+        if (input_polygon_count() >= (1u << 28))
+            fail_field(ErrorCode::InvalidArgument, "polygon_count is ", input_polygon_count(), " (at most 2^28 - 1)");
         for (size_t i = 0; i < in_.vertices.size(); ++i) {
             for (int k = 0; k < 3; ++k) {
                 const float value = in_.vertices[i][k];
@@ -117,8 +119,9 @@ private:
         NavMesh& m = *mesh_;
         m.first_corner_.push_back(0);
         const bool has_detail = !in_.detail_starts.empty();
-        if (has_detail) m.first_detail_triangle_.push_back(0);
-        std::vector<uint32_t> detail_vertex_remap(in_.detail_vertices.size(), kNoPolygon);
+        if (has_detail) m.detail_.push_back(NavMesh::DetailRange{0, 0});
+        std::vector<uint32_t> detail_vertex_remap(in_.detail_vertices.size(), kNoPolygon);  // input -> local, this polygon
+        std::vector<uint32_t> remapped;  // the input detail vertices this polygon remapped
 
         size_t offset = 0;
         const uint32_t count = input_polygon_count();
@@ -133,7 +136,7 @@ private:
             offset += n;
             while (ring.size() > 1 && ring.front() == ring.back()) ring.pop_back();
 
-            const Vec3 normal = ring.size() >= 3 ? newell_normal(ring) : Vec3::Zero();
+            const Vec3 normal = ring.size() >= 3 ? fan_normal(m.vertices_, ring.data(), static_cast<uint32_t>(ring.size())) : Vec3::Zero();
             // Half the normal's y is the area seen from above: none means nothing to walk on.
             if (ring.size() < 3 || std::fabs(normal.y()) <= 2e-9f) {
                 ++m.repairs_.dropped_polygons;
@@ -152,35 +155,47 @@ private:
             }
             m.first_corner_.push_back(static_cast<uint32_t>(m.corners_.size()));
             m.areas_.push_back(in_.areas.empty() ? 0 : in_.areas[p]);
-            m.normals_.push_back((normal.y() < 0.0f ? -normal : normal).normalized());
             if (has_detail) {
+                // Each triangle corner as a byte: a corner of the polygon where the detail vertex lies
+                // over it (the same x and z on the grid; its height is then the corner's, as Detour
+                // keeps it), else the polygon's own next detail vertex.
+                const uint32_t first_vertex = static_cast<uint32_t>(m.detail_vertices_.size());
                 for (uint32_t t = in_.detail_starts[p]; t < in_.detail_starts[p + 1]; ++t) {
-                    Triangle tri;
+                    NavMesh::DetailTriangle tri;
                     for (int k = 0; k < 3; ++k) {
-                        uint32_t& to = detail_vertex_remap[in_.detail_indices[3 * t + k]];
-                        if (to == kNoPolygon) {
-                            to = static_cast<uint32_t>(m.detail_vertices_.size());
-                            m.detail_vertices_.push_back(on_navmesh_grid(in_.detail_vertices[in_.detail_indices[3 * t + k]]));
+                        const uint32_t input = in_.detail_indices[3 * t + k];
+                        uint32_t& local = detail_vertex_remap[input];
+                        if (local == kNoPolygon) {
+                            const Vec3 point = on_navmesh_grid(in_.detail_vertices[input]);
+                            const auto at = std::find_if(ring.begin(), ring.end(), [&](uint32_t v) {
+                                return m.vertices_[v].x() == point.x() && m.vertices_[v].z() == point.z();
+                            });
+                            if (at != ring.end()) {
+                                local = static_cast<uint32_t>(at - ring.begin());
+                            } else {
+                                if (m.detail_vertices_.size() - first_vertex >= kMaxDetailVertices)
+                                    fail_field(ErrorCode::InvalidArgument, "detail_triangle_starts[", p, "]: polygon ", p,
+                                               " has more than ", kMaxDetailVertices, " detail vertices besides its corners");
+                                local = static_cast<uint32_t>(ring.size() + m.detail_vertices_.size() - first_vertex);
+                                m.detail_vertices_.push_back(point);
+                            }
+                            remapped.push_back(input);
+                            box.grow(local < ring.size() ? m.vertices_[ring[local]] : point);
                         }
-                        tri[k] = to;
-                        box.grow(m.detail_vertices_[to]);
+                        tri[k] = static_cast<uint8_t>(local);
                     }
                     m.detail_triangles_.push_back(tri);
                 }
-                m.first_detail_triangle_.push_back(static_cast<uint32_t>(m.detail_triangles_.size()));
+                for (uint32_t input : remapped) detail_vertex_remap[input] = kNoPolygon;
+                remapped.clear();
+                // The next polygon's range starts where this one's ends.
+                m.detail_.push_back(NavMesh::DetailRange{static_cast<uint32_t>(m.detail_triangles_.size()),
+                                                         static_cast<uint32_t>(m.detail_vertices_.size())});
             }
             m.polygon_bounds_.push_back(box);
         }
         if (m.polygon_count() == 0)
             fail_field(ErrorCode::InvalidArgument, "indices: all ", count, " polygons are degenerate");
-    }
-
-    Vec3 newell_normal(const std::vector<uint32_t>& ring) const {
-        const Vec3& origin = mesh_->vertices_[ring[0]];
-        Vec3 n = Vec3::Zero();
-        for (size_t k = 1; k + 1 < ring.size(); ++k)
-            n += (mesh_->vertices_[ring[k]] - origin).cross(mesh_->vertices_[ring[k + 1]] - origin);
-        return n;
     }
 
     // Navmesh polygons are 2.5D: convex in x-z, heights free (Recast's are not planar).
@@ -266,8 +281,8 @@ private:
         m.grid_.build(m.polygon_bounds_, m.bounds_);
         // A navmesh lives long and is never edited: give back what the building left spare.
         auto fit = [](auto&... arrays) { (arrays.shrink_to_fit(), ...); };
-        fit(m.vertices_, m.first_corner_, m.corners_, m.neighbours_, m.areas_, m.on_outline_, m.normals_,
-            m.polygon_bounds_, m.detail_vertices_, m.detail_triangles_, m.first_detail_triangle_, m.boundary_);
+        fit(m.vertices_, m.first_corner_, m.corners_, m.neighbours_, m.areas_, m.on_outline_,
+            m.polygon_bounds_, m.detail_vertices_, m.detail_triangles_, m.detail_, m.boundary_);
     }
 
     const NavMeshInput& in_;
@@ -299,11 +314,19 @@ NavMeshInput input_of(const NavMesh& m) {
     in.areas = m.areas_;
     in.weld_tolerance = 0.0f;
     in.agent = m.agent_;
-    if (!m.first_detail_triangle_.empty()) {
-        in.detail_vertices = m.detail_vertices_;
-        in.detail_indices.reserve(3 * m.detail_triangles_.size());
-        for (const Triangle& t : m.detail_triangles_) in.detail_indices.insert(in.detail_indices.end(), t.begin(), t.end());
-        in.detail_starts = m.first_detail_triangle_;
+    if (!m.detail_.empty()) {
+        // Global detail vertices again: each polygon's own, and the corners its triangles use
+        // (which the builder turns back into corners).
+        in.detail_starts.reserve(m.detail_.size());
+        for (uint32_t p = 0; p < m.polygon_count(); ++p) {
+            in.detail_starts.push_back(m.detail_[p].first_triangle);
+            const uint32_t base = static_cast<uint32_t>(in.detail_vertices.size());
+            const uint32_t locals = m.corner_count(p) + (m.detail_[p + 1].first_vertex - m.detail_[p].first_vertex);
+            for (uint32_t local = 0; local < locals; ++local) in.detail_vertices.push_back(m.detail_point(p, static_cast<uint8_t>(local)));
+            for (uint32_t t = m.detail_[p].first_triangle; t < m.detail_[p + 1].first_triangle; ++t)
+                for (uint8_t local : m.detail_triangles_[t]) in.detail_indices.push_back(base + local);
+        }
+        in.detail_starts.push_back(m.detail_.back().first_triangle);
     }
     return in;
 }

@@ -475,7 +475,11 @@ typedef struct nl_navmesh_def {
     uint32_t detail_triangle_count;
     const uint32_t* detail_triangle_starts; /**< polygon_count + 1 offsets: polygon p's detail triangles
                                                  are [starts[p], starts[p + 1]); starts[polygon_count]
-                                                 must equal detail_triangle_count. Borrowed. */
+                                                 must equal detail_triangle_count. Borrowed. As Detour
+                                                 keeps it, a detail vertex over one of its polygon's
+                                                 corners (the same x and z) is that corner, at the
+                                                 corner's height; a polygon may have at most 239 detail
+                                                 vertices besides its corners. */
     nl_mesh_id surface;                   /**< A movable mesh (NL_MESH_MOVABLE) the navmesh rides, or the
                                                null id. With one, every coordinate above is in that
                                                mesh's own space, and the navmesh follows the mesh:
