@@ -3,8 +3,11 @@
 // builder, default settings: the anchor for load time), its links generated with the default
 // settings, the whole saved with nl_navmesh_save and loaded back with nl_navmesh_load into a new
 // world. Detour's navmesh data is made by dtCreateNavMeshData from the same Recast polygon mesh
-// (recast_detour.h, as navlink-bench-path): the anchor for bytes. One line per level:
-//   level polys links file_bytes detour_bytes file/detour build_ms load_ms load/build same
+// (recast_detour.h, as navlink-bench-path): the anchor for bytes, of the file and of the navmesh in
+// memory (the loaded navmesh plus its link index, read from the world's internals as
+// navlink-bench-path reads them). One line per level:
+//   level polys links file_bytes detour_bytes file/detour memory_bytes memory/detour build_ms load_ms
+//   load/build same
 // build_ms and load_ms are the best of 20 runs on a level of fewer than 1,000 polygons (their
 // times are tens of microseconds), of 3 on larger ones, of 1 past a million triangles;
 // `same` says the loaded navmesh has the saved one's polygons and links, and saves to the same bytes.
@@ -19,8 +22,10 @@
 #include <vector>
 
 #include "clock.h"
+#include "path/path_graph.h"
 #include "level_generator.h"
 #include "recast_detour.h"
+#include "world.h"
 
 namespace {
 
@@ -107,9 +112,11 @@ bool measure(const Level& level) {
     nl_navmesh_get_info(game, loaded, &b);
     const bool same = a.polygon_count == b.polygon_count && a.vertex_count == b.vertex_count &&
                       link_count(world, navmesh) == link_count(game, loaded) && saved(game, loaded) == file;
-    std::printf("%-18s %8u %6u %11zu %12d %11.3f %9.1f %8.2f %9.4f %4s\n", level.name.c_str(), a.polygon_count,
-                link_count(world, navmesh), file.size(), detour.bytes, double(file.size()) / detour.bytes, build_ms, load_ms,
-                load_ms / build_ms, same ? "yes" : "NO");
+    const auto graph = game->core->navmeshes().path_graph(nl::Handle{loaded.index1, loaded.generation});
+    const size_t memory = graph->navmesh().memory_bytes() + graph->link_index_bytes();
+    std::printf("%-18s %8u %6u %11zu %12d %11.3f %12zu %13.3f %9.1f %8.2f %9.4f %4s\n", level.name.c_str(), a.polygon_count,
+                link_count(world, navmesh), file.size(), detour.bytes, double(file.size()) / detour.bytes, memory,
+                double(memory) / detour.bytes, build_ms, load_ms, load_ms / build_ms, same ? "yes" : "NO");
     if (a.polygon_count != uint32_t(polygons))
         std::printf("  (note: Detour's data holds %d polygons, NavLink's navmesh %u)\n", polygons, a.polygon_count);
     nl_world_destroy(game);
@@ -141,10 +148,11 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "usage: navlink-bench-navmesh-file [--large N] LEVEL.obj...\n");
         return 2;
     }
-    std::printf("Baked navmesh files: bytes against Detour's navmesh data for the same Recast polygon mesh, load\n"
-                "time against building the navmesh with the Recast builder, in this run.\n");
-    std::printf("%-18s %8s %6s %11s %12s %11s %9s %8s %9s %4s\n", "level", "polys", "links", "file_bytes", "detour_bytes",
-                "file/detour", "build_ms", "load_ms", "load/build", "same");
+    std::printf("Baked navmesh files: bytes (of the file, and of the loaded navmesh plus link index in memory) against\n"
+                "Detour's navmesh data for the same Recast polygon mesh, load time against building the navmesh with\n"
+                "the Recast builder, in this run.\n");
+    std::printf("%-18s %8s %6s %11s %12s %11s %12s %13s %9s %8s %9s %4s\n", "level", "polys", "links", "file_bytes",
+                "detour_bytes", "file/detour", "memory_bytes", "memory/detour", "build_ms", "load_ms", "load/build", "same");
     bool ok = true;
     for (const Level& level : levels) {
         try {
