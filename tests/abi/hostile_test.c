@@ -2631,46 +2631,53 @@ static char* saved_links(size_t* length) {
     return json;
 }
 
-/* nl_navmesh_save_links_json into a buffer of the JSON's length + 64 (a size_t count: the list
-   cases of uint32_t counts do not apply). */
-static char* g_save_buffer;
+/* A navmesh's savers (nl_navmesh_save_links_json, nl_navmesh_save): they write into a caller's
+   buffer with the two-call pattern and a size_t length (the list cases of uint32_t counts do not
+   apply). `g_saver` is the one the cases run now, into a buffer of what it writes + 64. */
+typedef nl_status navmesh_saver(const nl_world* world, nl_navmesh_id navmesh, void* buffer, size_t capacity, size_t* out_length);
+static navmesh_saver* g_saver;
+static unsigned char* g_save_buffer;
 static size_t g_save_room;
-static nl_status save_id_call(nl_world* w, raw_id id, void* out) {
+static nl_status saver_id_call(nl_world* w, raw_id id, void* out) {
     size_t length;
     nl_status status;
     fill(&length, sizeof length);
     fill(g_save_buffer, g_save_room);
-    status = nl_navmesh_save_links_json(w, AS(nl_navmesh_id, id), out ? g_save_buffer : NULL, out ? g_save_room : 0, &length);
-    EXPECT_UNTOUCHED(&length, sizeof length, "out_length");
+    status = g_saver(w, AS(nl_navmesh_id, id), out ? g_save_buffer : NULL, out ? g_save_room : 0, &length);
+    EXPECT_UNTOUCHED(&length, sizeof length, "the length");
     EXPECT_UNTOUCHED(g_save_buffer, g_save_room, "buffer");
     return status;
 }
+static nl_status save_links_json_saver(const nl_world* w, nl_navmesh_id n, void* buffer, size_t capacity, size_t* out_length) {
+    return nl_navmesh_save_links_json(w, n, (char*)buffer, capacity, out_length);
+}
 
-/* A function that writes into a caller's buffer with the two-call pattern (a size_t length):
-   `save` calls it on A's world with (buffer, capacity, out_length). */
-typedef nl_status save_fn(void* buffer, size_t capacity, size_t* out_length);
-
-/* The buffer cases of such a function: `expected` is what it writes (`needed` bytes, then
-   `terminator` more: the NUL of a text), written into a buffer with 64 bytes to spare. */
-static void buffer_cases(const char* function, const char* out_name, save_fn* save, const unsigned char* expected,
-                         size_t needed, size_t terminator) {
+/* Every case of a saver: its ids, its output, its buffer. `expected` is what it writes (`needed`
+   bytes, then `terminator` more: the NUL of a text). */
+static void saver_cases(const char* function, const char* out_name, navmesh_saver* saver, const unsigned char* expected,
+                        size_t needed, size_t terminator) {
+    const id_function f = {function, "navmesh", "buffer", 16, 0, 0, saver_id_call, 1};
     const size_t room = needed + terminator + 64;
     unsigned char* buffer = (unsigned char*)malloc(room);
     size_t length;
     if (!buffer) exit(2);
+    g_saver = saver;
+    g_save_buffer = buffer;
+    g_save_room = room;
+    id_cases(&f, RAW(A.navmesh), RAW(A.stale_navmesh), RAW(B.navmesh));
     CASE(function, "%s NULL", out_name) {
         fill(buffer, room);
-        EXPECT_INVALID(A.world, save(buffer, room, NULL), out_name);
+        EXPECT_INVALID(A.world, saver(A.world, A.navmesh, buffer, room, NULL), out_name);
         EXPECT_UNTOUCHED(buffer, room, "buffer");
     }
     CASE(function, "buffer NULL (allowed with capacity 0: measures)") {
         fill(&length, sizeof length);
-        EXPECT_OK(save(NULL, 0, &length));
+        EXPECT_OK(saver(A.world, A.navmesh, NULL, 0, &length));
         EXPECT(length == needed, "%s = %u, expected %u", out_name, (unsigned)length, (unsigned)needed);
     }
     CASE(function, "capacity huge (buffer NULL)") {
         fill(&length, sizeof length);
-        EXPECT_INVALID(A.world, save(NULL, SIZE_MAX, &length), "buffer");
+        EXPECT_INVALID(A.world, saver(A.world, A.navmesh, NULL, SIZE_MAX, &length), "buffer");
         EXPECT_UNTOUCHED(&length, sizeof length, out_name);
     }
     {
@@ -2682,7 +2689,7 @@ static void buffer_cases(const char* function, const char* out_name, save_fn* sa
             CASE(function, "%s", what[k]) {
                 fill(buffer, room);
                 fill(&length, sizeof length);
-                EXPECT_FAILURE(A.world, save(buffer, too_small[k], &length), NL_STATUS_BUFFER_TOO_SMALL, "capacity");
+                EXPECT_FAILURE(A.world, saver(A.world, A.navmesh, buffer, too_small[k], &length), NL_STATUS_BUFFER_TOO_SMALL, "capacity");
                 EXPECT_UNTOUCHED(buffer, room, "buffer");
                 EXPECT(length == needed, "%s = %u, expected the %u needed", out_name, (unsigned)length, (unsigned)needed);
             }
@@ -2690,7 +2697,7 @@ static void buffer_cases(const char* function, const char* out_name, save_fn* sa
     }
     CASE(function, "capacity huge (64 bytes to spare: nothing written past the end)") {
         fill(buffer, room);
-        EXPECT_OK(save(buffer, room, &length));
+        EXPECT_OK(saver(A.world, A.navmesh, buffer, room, &length));
         EXPECT(length == needed, "%s = %u, expected %u", out_name, (unsigned)length, (unsigned)needed);
         EXPECT(memcmp(buffer, expected, needed + terminator) == 0, "other bytes written");
         EXPECT_UNTOUCHED(buffer + needed + terminator, 64, "the bytes past the end");
@@ -2698,20 +2705,10 @@ static void buffer_cases(const char* function, const char* out_name, save_fn* sa
     free(buffer);
 }
 
-static nl_status save_links_json_into(void* buffer, size_t capacity, size_t* out_length) {
-    return nl_navmesh_save_links_json(A.world, A.navmesh, (char*)buffer, capacity, out_length);
-}
-
 static void group_navmesh_save_links_json(void) {
-    static const id_function f = {"nl_navmesh_save_links_json", "navmesh", "buffer", 16, 0, 0, save_id_call, 1};
     size_t needed = 0;
     char* json = saved_links(&needed);
-    g_save_room = needed + 64;
-    g_save_buffer = (char*)malloc(g_save_room);
-    if (!g_save_buffer) exit(2);
-    id_cases(&f, RAW(A.navmesh), RAW(A.stale_navmesh), RAW(B.navmesh));
-    buffer_cases("nl_navmesh_save_links_json", "out_length", save_links_json_into, (const unsigned char*)json, needed, 1);
-    free(g_save_buffer);
+    saver_cases("nl_navmesh_save_links_json", "out_length", save_links_json_saver, (const unsigned char*)json, needed, 1);
     free(json);
 }
 
@@ -2841,34 +2838,10 @@ static unsigned char* saved_navmesh(size_t* size) {
     return file;
 }
 
-/* nl_navmesh_save into a buffer of the file's size + 64. */
-static unsigned char* g_file_buffer;
-static size_t g_file_room;
-static nl_status save_navmesh_id_call(nl_world* w, raw_id id, void* out) {
-    size_t size;
-    nl_status status;
-    fill(&size, sizeof size);
-    fill(g_file_buffer, g_file_room);
-    status = nl_navmesh_save(w, AS(nl_navmesh_id, id), out ? g_file_buffer : NULL, out ? g_file_room : 0, &size);
-    EXPECT_UNTOUCHED(&size, sizeof size, "out_size");
-    EXPECT_UNTOUCHED(g_file_buffer, g_file_room, "buffer");
-    return status;
-}
-
-static nl_status save_navmesh_into(void* buffer, size_t capacity, size_t* out_size) {
-    return nl_navmesh_save(A.world, A.navmesh, buffer, capacity, out_size);
-}
-
 static void group_navmesh_save(void) {
-    static const id_function f = {"nl_navmesh_save", "navmesh", "buffer", 16, 0, 0, save_navmesh_id_call, 1};
     size_t needed = 0;
     unsigned char* file = saved_navmesh(&needed);
-    g_file_room = needed + 64;
-    g_file_buffer = (unsigned char*)malloc(g_file_room);
-    if (!g_file_buffer) exit(2);
-    id_cases(&f, RAW(A.navmesh), RAW(A.stale_navmesh), RAW(B.navmesh));
-    buffer_cases("nl_navmesh_save", "out_size", save_navmesh_into, file, needed, 0);
-    free(g_file_buffer);
+    saver_cases("nl_navmesh_save", "out_size", nl_navmesh_save, file, needed, 0);
     free(file);
 }
 
