@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Sets up a fresh Debian 12 machine and runs every NavLink test: the release build's tests, then the
+# Sets up a fresh Debian 12 machine and runs every NavLink test (as many at once as there are cores:
+# every test is independent of the others): the release build's tests, then the
 # same tests under AddressSanitizer + UndefinedBehaviorSanitizer (built with clang, with the libFuzzer
 # targets), then each fuzz target for a bounded time, then the stress tests and soaks under
 # ThreadSanitizer. Exits non-zero on any failure (a fuzzer's crash included). docs/testing.md.
@@ -23,17 +24,17 @@ configure_and_build() {
 start=$(date +%s)
 echo "== release build and tests (with the C#, Rust and Python binding tests)"
 configure_and_build "$root/build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DNAVLINK_BUILD_BINDINGS=ON
-ctest --test-dir "$root/build" --output-on-failure
+ctest --test-dir "$root/build" --output-on-failure -j "$jobs"
 
 echo "== sanitizer build (address;undefined, clang, with the fuzz targets) and tests"
 configure_and_build "$root/build-asan" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DNAVLINK_SANITIZE="address;undefined" \
   -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ -DNAVLINK_BUILD_FUZZERS=ON \
   -DNAVLINK_BUILD_BENCHMARKS=OFF -DNAVLINK_INSTALL=OFF
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
-ctest --test-dir "$root/build-asan" --output-on-failure -LE "no_sanitizer|fuzz"
+ctest --test-dir "$root/build-asan" --output-on-failure -LE "no_sanitizer|fuzz" -j "$jobs"
 
-echo "== fuzzing: each target for NAVLINK_FUZZ_SECONDS (50 s) from its seeds"
-ctest --test-dir "$root/build-asan" --output-on-failure -L fuzz
+echo "== fuzzing: each target for NAVLINK_FUZZ_SECONDS (50 s) from its seeds, one per core at once"
+ctest --test-dir "$root/build-asan" --output-on-failure -L fuzz -j "$jobs"
 unset ASAN_OPTIONS UBSAN_OPTIONS
 
 echo "== ThreadSanitizer build: the path queue stress test, the world, agents and moving surfaces soaks and the host task system"
