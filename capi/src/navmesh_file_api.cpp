@@ -120,6 +120,7 @@ NL_API nl_status nl_navmesh_file_describe(const void* data, size_t size, nl_navm
             fail(ErrorCode::InvalidArgument, "out_info->size is ", out_info->size, " (must be at least ", kFileInfoFirstSize, ")");
         const nl::NavMeshFile file = read_file(data, size);
         const std::string json = nl::made_for_json(file);
+        if (out_length) *out_length = json.size();  // also when the buffer is too small: the two-call pattern
         if (made_for_json && json.size() >= capacity)
             fail(ErrorCode::BufferTooSmall, "capacity is ", capacity, " but ", json.size() + 1, " bytes are needed");
         if (out_info) {
@@ -138,7 +139,6 @@ NL_API nl_status nl_navmesh_file_describe(const void* data, size_t size, nl_navm
             info.level_hash = file.made_for.level_hash;
             nl::capi::write_growable(out_info, info, kFileInfoFirstSize, "out_info");
         }
-        if (out_length) *out_length = json.size();
         if (made_for_json) std::memcpy(made_for_json, json.c_str(), json.size() + 1);
     });
 }

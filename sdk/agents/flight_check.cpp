@@ -49,7 +49,10 @@ bool flight_is_clear(const LinkMotion& flight, float radius, float height, const
 
     float fastest = 0.0f;
     for (const MeshMotion& m : near) fastest = std::max(fastest, m.fastest_point());
-    const int count = std::clamp(int(std::ceil(fastest * duration / (2.0f * kMostStray))), kLeastPieces, kMostPieces);
+    // A mesh moved by a jump of the host's (or over a step of almost no time) gives no motion to
+    // trust: the flight waits for a step that does.
+    if (!std::isfinite(fastest * duration)) return false;
+    const int count = int(std::clamp(std::ceil(fastest * duration / (2.0f * kMostStray)), float(kLeastPieces), float(kMostPieces)));
     // Uniform in time, and at a fall's corners: each piece is then straight, or an arc's piece, in
     // which x and z move uniformly and y is quadratic, so it strays from its chord most at its middle
     // time, by exactly the midpoint's distance from the chord's.

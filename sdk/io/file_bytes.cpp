@@ -1,10 +1,13 @@
 #include "io/file_bytes.h"
 
+#include <atomic>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <functional>
 #include <memory>
+#include <thread>
 
 #include "util/error.h"
 
@@ -29,11 +32,15 @@ std::string read_file_bytes(const std::string& path) {
 
 void write_file_bytes(const std::string& path, std::string_view bytes) {
     if (path.empty()) fail(ErrorCode::InvalidArgument, "the path is empty");
-    const std::string partial = path + ".partial";
+    // Beside the file, named for this write alone: two writes of one path never share it.
+    static std::atomic<uint64_t> writes{0};
+    const std::string partial = concat(path, ".partial-", std::hash<std::thread::id>{}(std::this_thread::get_id()), "-",
+                                       writes.fetch_add(1));
     {
-        const File file(std::fopen(partial.c_str(), "wb"), &std::fclose);
+        File file(std::fopen(partial.c_str(), "wb"), &std::fclose);
         if (!file) fail(ErrorCode::Io, "cannot write '", path, "': ", std::strerror(errno));
-        const bool written = std::fwrite(bytes.data(), 1, bytes.size(), file.get()) == bytes.size() && std::fflush(file.get()) == 0;
+        bool written = std::fwrite(bytes.data(), 1, bytes.size(), file.get()) == bytes.size();
+        written = std::fclose(file.release()) == 0 && written;  // a failed close may be the failed write
         if (!written) {
             const int why = errno;
             std::remove(partial.c_str());

@@ -227,11 +227,17 @@ void read_geometry(ByteReader& in, NavMeshInput& out, Quantiser& q) {
     const uint32_t detail_vertices = in.count("the detail vertex count", widths[0] + widths[1] + widths[2]);
     read_points(in, out.detail_vertices, detail_vertices, q, widths);
     out.detail_starts.reserve(size_t(polygons) + 1);
+    out.detail_indices.reserve(std::min<size_t>(in.remaining(), size_t(polygons) * 3 * kMaxDetailTriangles));
     out.detail_starts.push_back(0);
     int64_t base = 0;
     for (uint32_t p = 0; p < polygons; ++p) {
         const uint32_t triangles = in.count("a polygon's detail triangle count", 3);
-        base += in.signed_varint("a polygon's first detail vertex");
+        if (triangles > kMaxDetailTriangles)
+            fail(ErrorCode::Parse, in.context(), ": polygon ", p, " has ", triangles, " detail triangles (at most ", kMaxDetailTriangles, ")");
+        const int64_t step = in.signed_varint("a polygon's first detail vertex");
+        if (step < -int64_t(detail_vertices) || step > int64_t(detail_vertices) || base + step < 0 || base + step > int64_t(detail_vertices))
+            fail(ErrorCode::Parse, in.context(), ": polygon ", p, "'s detail vertices start outside the ", detail_vertices, " there are");
+        base += step;
         const unsigned width = in.u8("a detail corner width");
         if (width < 1 || width > 4) fail(ErrorCode::Parse, in.context(), ": a detail corner width of ", width, " bytes");
         in.need(uint64_t(triangles) * 3 * width, "a polygon's detail triangles");

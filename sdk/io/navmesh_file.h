@@ -47,7 +47,8 @@ std::vector<uint8_t> write_navmesh_file(const NavMesh& navmesh, const std::vecto
 // Reads a file written by write_navmesh_file, checking everything but what building it checks
 // (build_navmesh) and placing its links (place_saved_link). Throws VersionMismatch (not a navmesh
 // file, or a newer version) or Parse (truncated, corrupted: the section and what is wrong named).
-// Allocates no more than a small multiple of `size`, whatever the file says.
+// Whatever the file says, allocates no more than a fixed multiple of what its bytes inflate to
+// (deflate's limit: 1032 times `size`).
 NavMeshFile read_navmesh_file(const uint8_t* data, size_t size);
 
 // What the file was made for, as a JSON object: {"builder", "builder_settings", "link_settings",

@@ -19,6 +19,8 @@ constexpr uint32_t kNoPolygon = 0xffffffffu;
 constexpr uint32_t kMaxPolygonVertices = 16;
 // A polygon's detail vertices besides its corners, at most (a detail triangle's corner is a byte).
 constexpr uint32_t kMaxDetailVertices = 255 - kMaxPolygonVertices;
+// A polygon's detail triangles, at most: a triangulation of 255 vertices has fewer.
+constexpr uint32_t kMaxDetailTriangles = 512;
 
 struct AgentType {
     float radius = 0.6f;

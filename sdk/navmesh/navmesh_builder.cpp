@@ -86,6 +86,9 @@ private:
             if (in_.detail_starts[p + 1] <= in_.detail_starts[p])
                 fail_field(ErrorCode::InvalidArgument, "detail_triangle_starts[", p + 1,
                      "]: every polygon needs at least one detail triangle, in order");
+            if (in_.detail_starts[p + 1] - in_.detail_starts[p] > kMaxDetailTriangles)
+                fail_field(ErrorCode::InvalidArgument, "detail_triangle_starts[", p + 1, "]: polygon ", p, " has ",
+                           in_.detail_starts[p + 1] - in_.detail_starts[p], " detail triangles (at most ", kMaxDetailTriangles, ")");
         }
         for (size_t i = 0; i < in_.detail_vertices.size(); ++i) {
             if (!within_coordinate_limit(in_.detail_vertices[i]))
@@ -210,7 +213,10 @@ private:
             // With the normal up, every corner of a convex polygon turns the same way: (e1 x e2).y >= 0.
             const double cross_y = e1z * e2x - e1x * e2z;
             const double lengths = std::sqrt((e1x * e1x + e1z * e1z) * (e2x * e2x + e2z * e2z));
-            if (cross_y < -1e-4 * lengths)
+            // Corners on the navmesh grid moved up to 0.7 mm: a straight corner may turn by that much.
+            const double grid_slack =
+                1.5 * std::ldexp(1.0, kNavMeshGridExponent) * (std::hypot(e1x, e1z) + std::hypot(e2x, e2z));
+            if (cross_y < -std::max(1e-4 * lengths, grid_slack))
                 fail_field(ErrorCode::InvalidArgument, "indices: polygon ", p, " is not convex seen from above (at corner ",
                      (k + 1) % n, ")");
             turning += std::atan2(cross_y, e1x * e2x + e1z * e2z);

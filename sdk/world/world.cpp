@@ -132,7 +132,12 @@ Handle World::load_navmesh(const NavMeshFile& file, Handle surface) {
     for (size_t i = 0; i < links.size(); ++i)
         in_the_file(concat("links[", i, "]."), [&] { place_saved_link(*navmesh, links[i]); });
     const Handle h = add_on_surface(std::move(navmesh), surface, file.made_for);
-    navmeshes_.replace_links(h, links, file.made_for.link_settings);
+    try {
+        navmeshes_.replace_links(h, links, file.made_for.link_settings);
+    } catch (...) {
+        navmeshes_.remove(h);  // out of memory: the world keeps what it had
+        throw;
+    }
     return h;
 }
 

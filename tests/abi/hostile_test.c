@@ -3049,11 +3049,13 @@ static void group_navmesh_file_describe(void) {
         fill(json, sizeof json);
         describe_fails_with(file, size, NULL, json, 0, &length, NL_STATUS_BUFFER_TOO_SMALL, "capacity");
         EXPECT_UNTOUCHED(json, sizeof json, "made_for_json");
+        EXPECT(length == needed, "out_length = %u, expected the %u needed", (unsigned)length, (unsigned)needed);
     }
     CASE("nl_navmesh_file_describe", "capacity small (the length: no room for the NUL)") {
         fill(json, sizeof json);
         describe_fails_with(file, size, NULL, json, needed, &length, NL_STATUS_BUFFER_TOO_SMALL, "capacity");
         EXPECT_UNTOUCHED(json, sizeof json, "made_for_json");
+        EXPECT(length == needed, "out_length = %u, expected the %u needed", (unsigned)length, (unsigned)needed);
     }
     CASE("nl_navmesh_file_describe", "capacity huge (buffer NULL)") {
         describe_fails_with(file, size, NULL, NULL, SIZE_MAX, &length, NL_STATUS_INVALID_ARGUMENT, "made_for_json");

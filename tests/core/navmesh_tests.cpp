@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <random>
+#include <string>
 
 #include "navmesh/navmesh_builder.h"
 #include "navmesh_checks.h"
@@ -171,4 +172,42 @@ TEST_CASE("point location agrees with the brute-force search on a large procedur
     }
     CHECK(found > 5000);
     CHECK(differ == 0);
+}
+
+TEST_CASE("a polygon with a straight corner stays convex on the navmesh grid, wherever it lies") {
+    // Corners moved onto the 1/1024 m grid may turn a straight corner by a fraction of a millimetre:
+    // that is not "not convex". 2,000 places of a 5-corner polygon with one corner on a straight edge.
+    std::mt19937 random(5);
+    std::uniform_real_distribution<float> place(-2000.0f, 2000.0f);
+    int refused = 0;
+    for (int i = 0; i < 2000; ++i) {
+        const float x = place(random), z = place(random);
+        nl::NavMeshInput in;
+        in.vertices = {{x, 0, z}, {x, 0, z + 0.9f}, {x + 0.3f, 0, z + 0.9f}, {x + 0.6f, 0, z + 0.9f}, {x + 0.6f, 0, z}};
+        in.indices = {0, 1, 2, 3, 4};
+        in.polygon_sizes = {5};
+        try {
+            nl::build_navmesh(in);
+        } catch (const nl::Error&) {
+            ++refused;
+        }
+    }
+    CHECK(refused == 0);
+}
+
+TEST_CASE("a polygon's detail is bounded: at most 512 triangles") {
+    nl::NavMeshInput in;
+    in.vertices = {{0, 0, 0}, {0, 0, 1}, {1, 0, 1}, {1, 0, 0}};
+    in.indices = {0, 1, 2, 3};
+    in.polygon_sizes = {4};
+    in.detail_vertices = in.vertices;
+    for (int t = 0; t < 513; ++t) in.detail_indices.insert(in.detail_indices.end(), {0u, 1u, 2u});
+    in.detail_starts = {0, 513};
+    std::string message;
+    try {
+        nl::build_navmesh(in);
+    } catch (const nl::Error& e) {
+        message = e.what();
+    }
+    CHECK_MESSAGE(message.find("at most 512") != std::string::npos, message);
 }

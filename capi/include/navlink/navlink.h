@@ -479,7 +479,7 @@ typedef struct nl_navmesh_def {
                                                  keeps it, a detail vertex over one of its polygon's
                                                  corners (the same x and z) is that corner, at the
                                                  corner's height; a polygon may have at most 239 detail
-                                                 vertices besides its corners. */
+                                                 vertices besides its corners, and 512 detail triangles. */
     nl_mesh_id surface;                   /**< A movable mesh (NL_MESH_MOVABLE) the navmesh rides, or the
                                                null id. With one, every coordinate above is in that
                                                mesh's own space, and the navmesh follows the mesh:
@@ -1002,8 +1002,8 @@ NL_API nl_navmesh_load_def nl_default_navmesh_load_def(void);
 /** Adds the navmesh and its links held in a navmesh file (`data`, `size` bytes, borrowed), as
  *  nl_navmesh_add and nl_link_add would, with new ids (links in the file's order); what it was made
  *  for travels with it (nl_navmesh_save writes it again). `def` may be NULL (the defaults).
- *  Nothing in the world changes unless everything loads. The loader never allocates more than a small
- *  multiple of `size`, whatever the file says.
+ *  Nothing in the world changes unless everything loads. Whatever the file says, the loader allocates
+ *  no more than a fixed multiple of what its bytes inflate to (deflate's limit: 1032 times `size`).
  *  Returns SUCCESS, or a failure with VERSION_MISMATCH (not a NavLink navmesh file, or a newer format
  *  version), PARSE_ERROR (truncated or corrupted: the section and what is wrong named), INVALID_ARGUMENT
  *  (null data with a size, null out_id, bad def size or flags, a surface for a file that rode none or
