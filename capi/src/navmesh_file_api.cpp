@@ -27,11 +27,10 @@ constexpr size_t kFileInfoFirstSize = sizeof(nl_navmesh_file_info);
 constexpr uint32_t kKnownLoadFlags = NL_NAVMESH_LOAD_SAME_LEVEL;
 
 std::vector<uint8_t> saved_file(const nl::World& w, nl_navmesh_id navmesh) {
-    const nl::Handle h = to_handle(navmesh);
-    const auto mesh = w.navmeshes().navmesh(h);
+    const nl::NavMeshRegistry::Saved saved = w.navmeshes().saved(to_handle(navmesh));
     std::vector<nl::Link> links;
-    for (const nl::StoredLink& l : *w.navmeshes().links(h)) links.push_back(l.link);
-    return nl::write_navmesh_file(*mesh, links, w.navmeshes().made_for(h), w.navmeshes().frame(h) != nullptr);
+    for (const nl::StoredLink& l : *saved.links) links.push_back(l.link);
+    return nl::write_navmesh_file(*saved.navmesh, links, saved.made_for, saved.rides_surface);
 }
 
 nl::NavMeshFile read_file(const void* data, size_t size) {

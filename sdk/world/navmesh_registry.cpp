@@ -222,6 +222,12 @@ void NavMeshRegistry::replace_links(Handle navmesh, const std::vector<Link>& lin
     e.made_for.link_settings = std::move(link_settings);
 }
 
+NavMeshRegistry::Saved NavMeshRegistry::saved(Handle navmesh) const {
+    std::unique_lock lock(mutex_);  // alone: the snapshot may need building
+    const Entry& e = entry(navmesh);
+    return Saved{e.navmesh, snapshot_of(e), e.made_for, e.frame != nullptr};
+}
+
 MadeFor NavMeshRegistry::made_for(Handle navmesh) const {
     std::shared_lock lock(mutex_);
     return entry(navmesh).made_for;

@@ -75,6 +75,15 @@ public:
     void replace_links(Handle navmesh, const std::vector<Link>& links, std::string link_settings);
     // What the navmesh and its generated links were made for and with.
     MadeFor made_for(Handle navmesh) const;
+    // The navmesh, its links and what they were made with, read together (a baked file of one moment:
+    // a generation finishing meanwhile is in all of it or in none).
+    struct Saved {
+        std::shared_ptr<const NavMesh> navmesh;
+        std::shared_ptr<const LinkSnapshot> links;
+        MadeFor made_for;
+        bool rides_surface = false;
+    };
+    Saved saved(Handle navmesh) const;
 
     // Generations and updates of one navmesh run one at a time, from reading its last generation to
     // storing its links, so a later one never loses to an earlier one: hold a turn for that span. A
