@@ -3,7 +3,6 @@ mod common;
 
 use common::*;
 use navlink::{status, status_string, sys, MeshOptions, Ray, Segment, World, WorldOptions, MESH_MOVABLE};
-use std::sync::{Arc, Mutex};
 
 const FLOOR: [f32; 12] = [-5.0, 0.0, -5.0, 5.0, 0.0, -5.0, 5.0, 0.0, 5.0, -5.0, 0.0, 5.0];
 const QUAD: [u32; 6] = [0, 2, 1, 0, 3, 2];
@@ -74,13 +73,7 @@ fn meshes_and_rays() {
 
 #[test]
 fn invalid_input_and_the_log_callback() {
-    let logged = Arc::new(Mutex::new(Vec::<String>::new()));
-    let sink = Arc::clone(&logged);
-    let world = World::with_options(WorldOptions {
-        log: Some(Box::new(move |_level, _status, message: &str| sink.lock().unwrap().push(message.to_string()))),
-        ..Default::default()
-    })
-    .unwrap();
+    let (world, logged) = world_keeping_log();
     assert_fails(world.add_mesh(&FLOOR, &[0, 1, 7], &MeshOptions::default()), status::INVALID_ARGUMENT, "indices");
     {
         let logged = logged.lock().unwrap();

@@ -4,9 +4,8 @@ mod common;
 use common::*;
 use navlink::{
     default_agent_capabilities, default_agent_type, default_link_def, link_kind, link_settings_from_json, status, AgentCapabilities,
-    AgentType, LinksLoadOptions, NavmeshBuild, NavmeshId, PathOutcome, PathQuery, World, WorldOptions,
+    AgentType, LinksLoadOptions, NavmeshBuild, NavmeshId, PathOutcome, PathQuery, World,
 };
-use std::sync::{Arc, Mutex};
 
 fn gap_world() -> (World, NavmeshId) {
     let world = World::new().unwrap();
@@ -118,13 +117,7 @@ fn manual_links_and_json() {
 
 #[test]
 fn links_json_for_another_body() {
-    let logged = Arc::new(Mutex::new(Vec::<String>::new()));
-    let sink = Arc::clone(&logged);
-    let world = World::with_options(WorldOptions {
-        log: Some(Box::new(move |_level, _status, message: &str| sink.lock().unwrap().push(message.to_string()))),
-        ..Default::default()
-    })
-    .unwrap();
+    let (world, logged) = world_keeping_log();
     add_gap_level(&world);
     let wide = world.build_navmesh(&NavmeshBuild::new(default_agent_type())).unwrap(); // radius 0.6
     world.generate_links(wide, None, None, None).unwrap();

@@ -3,9 +3,10 @@
 
 use navlink::{
     default_agent_capabilities, default_agent_type, status, AgentCapabilities, Error, MeshId, MeshOptions, NavmeshId, NavmeshInput,
-    World,
+    World, WorldOptions,
 };
 use std::path::PathBuf;
+use std::sync::{Arc, Mutex};
 
 const BOX_INDICES: [u32; 36] = [
     0, 4, 6, 0, 6, 2, 1, 3, 7, 1, 7, 5, 0, 1, 5, 0, 5, 4, 2, 6, 7, 2, 7, 3, 0, 2, 3, 0, 3, 1, 4, 5, 7, 4, 7, 6,
@@ -103,4 +104,16 @@ pub fn assert_fails<T: std::fmt::Debug>(result: Result<T, Error>, bit: u32, part
     let error = result.expect_err("expected a failure");
     assert!(error.has(status::FAILURE) && error.has(bit), "status {:#x} lacks {:#x}: {}", error.status(), bit, error);
     assert!(error.message().contains(part), "message '{}' lacks '{}'", error.message(), part);
+}
+
+/// A world whose log callback keeps every message it is given, and those messages.
+pub fn world_keeping_log() -> (World, Arc<Mutex<Vec<String>>>) {
+    let logged = Arc::new(Mutex::new(Vec::<String>::new()));
+    let sink = Arc::clone(&logged);
+    let world = World::with_options(WorldOptions {
+        log: Some(Box::new(move |_level, _status, message: &str| sink.lock().unwrap().push(message.to_string()))),
+        ..Default::default()
+    })
+    .unwrap();
+    (world, logged)
 }
