@@ -142,13 +142,7 @@ namespace NavLink.Tests
                 var logged = new List<string>();
                 using (var world = new World(new WorldOptions { Log = (level, status, message) => { lock (logged) logged.Add(message); } }))
                 {
-                    TestLevels.AddGapLevel(world);
-                    NavmeshId wide = world.BuildNavmesh(World.DefaultAgentType());  // radius 0.6
-                    world.GenerateLinks(wide);
-                    LinkDef def = World.DefaultLinkDef();
-                    def.Start = new Vec3(-5, 0, 4);
-                    def.End = new Vec3(5, 0, 4);
-                    world.AddLink(wide, def);
+                    NavmeshId wide = TestLevels.AddGapNavmeshWithLinks(world);  // radius 0.6
                     int count = world.GetLinks(wide).Length;
                     string json = world.SaveLinksJson(wide);
                     check.That(json.Contains("\"made_for\""), "the saved JSON records what its links were made for");

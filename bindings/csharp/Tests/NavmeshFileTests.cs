@@ -33,13 +33,7 @@ namespace NavLink.Tests
 
         private static void SaveDescribeLoad(Checks check, World world, string dir)
         {
-            TestLevels.AddGapLevel(world);
-            NavmeshId navmesh = world.BuildNavmesh(World.DefaultAgentType());
-            world.GenerateLinks(navmesh);
-            LinkDef manual = World.DefaultLinkDef();
-            manual.Start = new Vec3(-5, 0, 4);
-            manual.End = new Vec3(5, 0, 4);
-            world.AddLink(navmesh, manual);
+            NavmeshId navmesh = TestLevels.AddGapNavmeshWithLinks(world);
             int linkCount = world.GetLinks(navmesh).Length;
             uint polygons = world.GetNavmeshInfo(navmesh).PolygonCount;
             PathResult original = world.FindPath(new PathQuery(navmesh, TestLevels.WestPoint, TestLevels.EastPoint, TestLevels.Jumper()));

@@ -38,6 +38,22 @@ namespace NavLink.Tests
         }
 
         /// <summary>
+        /// The gap level with Recast's navmesh for the default body, its generated links and one manual
+        /// link across the gap (from (-5, 0, 4) to (5, 0, 4)): a navmesh with links of both kinds.
+        /// </summary>
+        public static NavmeshId AddGapNavmeshWithLinks(World world)
+        {
+            AddGapLevel(world);
+            NavmeshId navmesh = world.BuildNavmesh(World.DefaultAgentType());
+            world.GenerateLinks(navmesh);
+            LinkDef manual = World.DefaultLinkDef();
+            manual.Start = new Vec3(-5, 0, 4);
+            manual.End = new Vec3(5, 0, 4);
+            world.AddLink(navmesh, manual);
+            return navmesh;
+        }
+
+        /// <summary>
         /// "bridge" (tests/abi/agents_test.c's level): two 4 x 10 m platforms (tops at y = 0) 2 m apart along x,
         /// x in [0, 4] and [6, 10], z in [0, 10], joined by a bridge at z 8-10; the host's navmesh is their
         /// tops set in 0.3 m from every rim (five convex polygons, for radius 0.3), its links generated. A
