@@ -391,6 +391,7 @@ HostFindNearestFn = CFUNCTYPE(c_uint32, c_void_p, NavmeshId, POINTER(c_float), c
                               POINTER(NavPoint))
 HostCastRaysFn = CFUNCTYPE(c_uint32, c_void_p, POINTER(Ray), c_uint32, POINTER(RayHit))
 HostSegmentsBlockedFn = CFUNCTYPE(c_uint32, c_void_p, POINTER(Segment), c_uint32, POINTER(c_uint8))
+HostRecordBuildSettingsFn = CFUNCTYPE(c_uint32, c_void_p, c_char_p, c_size_t)
 
 
 class PluginHost(Structure):
@@ -398,7 +399,7 @@ class PluginHost(Structure):
                 ("set_error", HostSetErrorFn), ("get_level_triangles", HostGetLevelTrianglesFn),
                 ("navmesh_get_boundary_edges", HostBoundaryEdgesFn), ("navmesh_get_info", HostNavmeshInfoFn),
                 ("navmesh_find_nearest", HostFindNearestFn), ("cast_rays", HostCastRaysFn),
-                ("segments_blocked", HostSegmentsBlockedFn)]
+                ("segments_blocked", HostSegmentsBlockedFn), ("record_build_settings", HostRecordBuildSettingsFn)]
 
 
 NavmeshSinkFn = CFUNCTYPE(c_uint32, c_void_p, POINTER(NavmeshDef))
@@ -804,8 +805,8 @@ def default_navmesh_load_def():
 def describe_navmesh_file(data):
     """Reads a navmesh file's bytes without loading it (nl_navmesh_file_describe; no world needed): returns
     (NavmeshFileInfo, made-for JSON string), the JSON an object {"builder", "builder_settings",
-    "link_settings", "level_hash", "writer"}. STATUS_VERSION_MISMATCH (not a NavLink navmesh file, or a newer
-    format), STATUS_PARSE_ERROR (truncated or corrupted)."""
+    "link_settings", "link_plugins", "level_hash", "writer"}. STATUS_VERSION_MISMATCH (not a NavLink
+    navmesh file, or a newer format), STATUS_PARSE_ERROR (truncated or corrupted)."""
     data = bytes(data)
     info = NavmeshFileInfo()
     info.size = sizeof(NavmeshFileInfo)

@@ -1166,6 +1166,7 @@ class PluginTest(NavLinkTestCase):
     VERSION = b"1.0"
     DESCRIPTION = b"one square over the whole level"
     NO_TRIANGLES = b"python-roof: the level has no triangles"
+    USED = b'{"at": "the highest vertex"}'
 
     def test_plugins(self):
         """A navmesh builder written in Python: one square over the level's bounds, at its highest vertex."""
@@ -1196,6 +1197,10 @@ class PluginTest(NavLinkTestCase):
             navmesh.polygon_vertex_counts = ctypes.cast(corners, ctypes.POINTER(ctypes.c_uint8))
             navmesh.polygon_count = 1
             navmesh.agent = build_def.contents.agent
+            if host.size >= ctypes.sizeof(nl.PluginHost):  # a host that keeps what a build used
+                status = host.record_build_settings(host.context, self.USED, len(self.USED))
+                if nl.failed(status):
+                    return status
             return sink(sink_context, ctypes.byref(navmesh))
 
         @nl.PluginEntryFn
@@ -1221,8 +1226,11 @@ class PluginTest(NavLinkTestCase):
             self.assertFails(nl.STATUS_INVALID_ARGUMENT, "python-roof", world.register_plugin, entry)
             self.assertFails(nl.STATUS_NOT_FOUND, self.NO_TRIANGLES.decode(), world.build_navmesh, builder="python-roof")
             world.add_mesh([0, 0, 0, 0, 0, 4, 4, 0.5, 4], [0, 1, 2])
-            info = world.navmesh_info(world.build_navmesh(builder="python-roof"))
+            navmesh = world.build_navmesh(builder="python-roof")
+            info = world.navmesh_info(navmesh)
             self.assertEqual((info.polygon_count, info.bounds_max[1], info.bounds_max[0]), (1, 0.5, 4))
+            made_for = json.loads(nl.describe_navmesh_file(world.save_navmesh(navmesh))[1])
+            self.assertEqual((made_for["builder"], made_for["builder_settings"]), ("python-roof", {"at": "the highest vertex"}))
             self.assertFails(nl.STATUS_NOT_FOUND, "nl_plugin_load", world.load_plugin, "/no/such/plugin.so")
 
 

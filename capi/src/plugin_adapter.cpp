@@ -36,7 +36,7 @@ public:
     NavMeshBuilder* navmesh_builder() noexcept override { return (info_.kinds & NL_PLUGIN_NAVMESH_BUILDER) ? this : nullptr; }
     LinkKindProvider* link_kind() noexcept override { return (info_.kinds & NL_PLUGIN_LINK_KIND) ? this : nullptr; }
 
-    std::shared_ptr<const NavMesh> build(World& world, const NavMeshBuildRequest& request) override;
+    BuiltNavMesh build(World& world, const NavMeshBuildRequest& request) override;
     uint32_t kind() const noexcept override { return info_.link_kind.kind; }
     const std::string& kind_name() const noexcept override { return kind_name_; }
     void propose(World& world, Handle navmesh, const std::string& settings_json, FunctionRef<void(Link)> accept) override;
@@ -117,16 +117,26 @@ struct BuildSink {
 };
 
 // The build this thread runs (builders call back on the thread that called them).
-thread_local const NavMeshBuildRequest* running_build = nullptr;
+struct RunningBuild;
+thread_local RunningBuild* running_build = nullptr;
 
 struct RunningBuild {
-    explicit RunningBuild(const NavMeshBuildRequest& request) : outer(running_build) { running_build = &request; }
+    RunningBuild(const CPlugin& builder, const NavMeshBuildRequest& request)
+        : builder(builder), request(request), outer(running_build) {
+        running_build = this;
+    }
     ~RunningBuild() { running_build = outer; }
-    const NavMeshBuildRequest* outer;
+    RunningBuild(const RunningBuild&) = delete;
+    RunningBuild& operator=(const RunningBuild&) = delete;
+
+    const CPlugin& builder;
+    const NavMeshBuildRequest& request;
+    std::string settings_used;  // what the builder recorded (host->record_build_settings)
+    RunningBuild* outer;
 };
 
-std::shared_ptr<const NavMesh> CPlugin::build(World&, const NavMeshBuildRequest& request) {
-    const RunningBuild running(request);
+BuiltNavMesh CPlugin::build(World&, const NavMeshBuildRequest& request) {
+    RunningBuild running(*this, request);
     nl_navmesh_build_def def = nl_default_navmesh_build_def();
     def.surface = to_id<nl_mesh_id>(request.surface);
     def.builder = description_.name.c_str();
@@ -152,7 +162,7 @@ std::shared_ptr<const NavMesh> CPlugin::build(World&, const NavMeshBuildRequest&
     if (NL_FAILED(status))
         throw Error(to_error_code(status), concat("builder '", name, "': ", reason.empty() ? nl_status_string(status) : reason));
     if (sink.calls == 0) fail(ErrorCode::Internal, "builder '", name, "' succeeded without handing over a navmesh");
-    return std::move(sink.navmesh);
+    return {std::move(sink.navmesh), std::move(running.settings_used)};
 }
 
 // What a link-kind plugin hands back through the sink: each link read and given to `accept`, whose
@@ -196,7 +206,13 @@ void CPlugin::propose(World&, Handle navmesh, const std::string& settings_json, 
 
 TriangleMesh level_triangles_for_plugin(void* context) {
     const Level& level = world_of_plugin(context).level();
-    return running_build ? level.triangles_to_build(running_build->surface) : level.world_triangles();
+    return running_build ? level.triangles_to_build(running_build->request.surface) : level.world_triangles();
+}
+
+void record_build_settings(void* context, std::string_view settings_json) {
+    if (!running_build || &running_build->builder != context)
+        fail(ErrorCode::InvalidArgument, "record_build_settings is called from a navmesh build, on its thread");
+    running_build->settings_used.assign(settings_json);
 }
 
 World& world_of_plugin(void* context) { return static_cast<CPlugin*>(context)->world(); }

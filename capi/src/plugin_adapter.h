@@ -5,6 +5,7 @@
 #pragma once
 
 #include <string>
+#include <string_view>
 
 #include "navlink/plugin.h"
 #include "util/handle.h"
@@ -35,5 +36,8 @@ const std::string& name_of_plugin(void* context);
 // for (Level::triangles_to_build: the static meshes, or the surface mesh in its own space);
 // otherwise every mesh in the world.
 TriangleMesh level_triangles_for_plugin(void* context);
+// Keeps what the build running on this thread for the plugin `context` says it used (checked when
+// the build ends); InvalidArgument outside such a build.
+void record_build_settings(void* context, std::string_view settings_json);
 
 }  // namespace nl::capi

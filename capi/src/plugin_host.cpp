@@ -66,6 +66,13 @@ nl_status host_get_level_triangles(void* context, float* vertices, uint32_t vert
     return NL_FAILED(ran) ? ran : status;
 }
 
+nl_status host_record_build_settings(void* context, const char* settings_json, size_t length) {
+    return for_plugin(context, "record_build_settings", [&] {
+        if (!settings_json) fail(ErrorCode::InvalidArgument, "settings_json is NULL");
+        record_build_settings(context, std::string_view(settings_json, length));
+    });
+}
+
 nl_status host_boundary_edges(void* context, nl_navmesh_id navmesh, nl_boundary_edge* out, uint32_t capacity,
                               uint32_t* count) {
     return for_plugin(context, "navmesh_get_boundary_edges",
@@ -112,6 +119,7 @@ nl_plugin_host make_plugin_host(void* context) {
     host.navmesh_find_nearest = host_find_nearest;
     host.cast_rays = host_cast_rays;
     host.segments_blocked = host_segments_blocked;
+    host.record_build_settings = host_record_build_settings;
     return host;
 }
 

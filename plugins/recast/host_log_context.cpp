@@ -20,6 +20,13 @@ void host_set_error(const nl_plugin_host& host, const char* message) noexcept {
         host.set_error(host.context, message);
 }
 
+nl_status host_record_build_settings(const nl_plugin_host& host, const std::string& settings_json) noexcept {
+    if (!host_has(host, offsetof(nl_plugin_host, record_build_settings) + sizeof host.record_build_settings) ||
+        !host.record_build_settings)
+        return NL_STATUS_SUCCESS;
+    return host.record_build_settings(host.context, settings_json.c_str(), settings_json.size());
+}
+
 HostLogContext::HostLogContext(const nl_plugin_host& host) : rcContext(true), host_(host) {
     enableTimer(false);  // Recast's timers are RecastDemo's profiling; nothing here reads them
 }

@@ -28,5 +28,8 @@ private:
 // Calls host.log / host.set_error when the host's table has them; never throws.
 void host_log(const nl_plugin_host& host, nl_log_level level, const char* message) noexcept;
 void host_set_error(const nl_plugin_host& host, const char* message) noexcept;
+// Calls host.record_build_settings when the host's table has it (an older host's has not: nothing is
+// recorded); returns its status.
+nl_status host_record_build_settings(const nl_plugin_host& host, const std::string& settings_json) noexcept;
 
 }  // namespace nl::recast

@@ -15,6 +15,7 @@
 #include "recast_builder.h"
 #include "util/error.h"
 #include "util/excerpt.h"
+#include "util/shortest_decimal.h"
 
 namespace nl::recast {
 namespace {
@@ -246,6 +247,20 @@ nl_recast_settings resolve_settings(const nl_navmesh_build_def& def) {
              def.settings_json_length);
     }
     return s;
+}
+
+std::string settings_to_json(const nl_recast_settings& settings) {
+    nl_recast_settings s = settings;
+    nlohmann::json out = nlohmann::json::object();
+    for (const Field& f : kFields) {
+        switch (f.kind) {
+        case Kind::Float: out[f.name] = nl::shortest_decimal(float_field(s, f)); break;
+        case Kind::Integer: out[f.name] = uint_field(s, f); break;
+        case Kind::Partition: out[f.name] = partition_name(uint_field(s, f)); break;
+        case Kind::Flag: out[f.name] = flag_field(s, f) != 0; break;
+        }
+    }
+    return out.dump();
 }
 
 }  // namespace nl::recast

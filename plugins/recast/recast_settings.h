@@ -3,6 +3,8 @@
 // Every function throws BuildFailure naming the bad field.
 #pragma once
 
+#include <string>
+
 #include "navlink/navlink.h"
 #include "navlink/recast.h"
 
@@ -16,5 +18,9 @@ void validate_agent(const nl_agent_type& agent);
 // of the wrong type or out of range (the field named), PARSE_ERROR for malformed JSON (with the
 // parser's position).
 nl_recast_settings resolve_settings(const nl_navmesh_build_def& def);
+
+// Every setting as a JSON object that resolve_settings reads back to the same settings (the partition
+// by name, the filters as booleans).
+std::string settings_to_json(const nl_recast_settings& settings);
 
 }  // namespace nl::recast

@@ -111,6 +111,15 @@ Json parse_json(std::string_view text, const std::string& what) {
     return builder.take();
 }
 
+Json recorded_json(const std::string& text) {
+    if (text.empty()) return nullptr;
+    try {
+        return parse_json(text, "a recorded text");
+    } catch (const Error&) {
+        return text;
+    }
+}
+
 std::string json_excerpt(const Json& value) {
     switch (value.type()) {
     case Json::value_t::string: return quoted_excerpt(value.get_ref<const std::string&>());

@@ -19,6 +19,10 @@ constexpr int kMaxJsonDepth = 64;
 // naming the value's path ("links[3].start[1]"). `what` names the input in every message.
 nlohmann::json parse_json(std::string_view text, const std::string& what);
 
+// A recorded JSON text (what a navmesh was made with) as JSON: the value it holds, read as parse_json
+// reads (a file may say anything), the text itself when it is not JSON, or null when it is empty.
+nlohmann::json recorded_json(const std::string& text);
+
 // A short rendering of `value` for a message: a scalar as written (a long string cut short), an array
 // or object as its kind and size, so a huge or deep value never lands in a message. (Keys: quoted_excerpt.)
 std::string json_excerpt(const nlohmann::json& value);

@@ -12,6 +12,7 @@
 #include "level/mesh_validation.h"
 #include "util/error.h"
 #include "util/excerpt.h"
+#include "util/shortest_decimal.h"
 
 namespace nl {
 namespace {
@@ -139,7 +140,8 @@ std::string links_to_json(const std::vector<Link>& links, const LinksMadeFor* ma
     if (made_for) {
         const AgentType& a = made_for->agent;
         file["made_for"] = {{"agent", {{"radius", a.radius}, {"height", a.height}, {"max_climb", a.max_climb}, {"max_slope", a.max_slope}}},
-                            {"link_settings", made_for->link_settings.empty() ? Json(nullptr) : parse_json(made_for->link_settings, "link settings")}};
+                            {"link_settings", recorded_json(made_for->made_with.settings)},
+                            {"link_plugins", recorded_json(made_for->made_with.plugins)}};
     }
     file["links"] = std::move(list);
     return file.dump(1);
@@ -170,7 +172,11 @@ LinksFile read_links_json(std::string_view text) {
         if (const Json* settings = m.find("link_settings"); settings && !settings->is_null()) {
             LinkSettings checked;
             apply_settings_json(settings->dump(), checked);
-            record.link_settings = link_settings_to_json(checked);
+            record.made_with.settings = link_settings_to_json(checked);
+        }
+        if (const Json* plugins = m.find("link_plugins"); plugins && !plugins->is_null()) {
+            if (!plugins->is_object()) fail(ErrorCode::InvalidArgument, "links JSON.made_for.link_plugins must be an object or null");
+            record.made_with.plugins = plugins->dump();
         }
         file.made_for = record;
     }
@@ -209,21 +215,6 @@ LinksFile read_links_json(std::string_view text) {
     }
     return file;
 }
-
-namespace {
-
-// The shortest decimal that reads back as `v` (0.1, not 0.10000000149011612).
-double shortest_decimal(float v) {
-    char text[32];
-    for (int digits = 6; digits < 9; ++digits) {
-        std::snprintf(text, sizeof text, "%.*g", digits, double(v));
-        if (std::strtof(text, nullptr) == v) return std::strtod(text, nullptr);
-    }
-    std::snprintf(text, sizeof text, "%.9g", double(v));
-    return std::strtod(text, nullptr);
-}
-
-}  // namespace
 
 std::string link_settings_to_json(const LinkSettings& s) {
     Json out = Json::object();

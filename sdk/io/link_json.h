@@ -9,6 +9,7 @@
 
 #include "links/link.h"
 #include "links/link_settings.h"
+#include "navmesh/made_for.h"
 #include "navmesh/navmesh.h"
 
 namespace nl {
@@ -16,10 +17,10 @@ namespace nl {
 constexpr int kLinkFileVersion = 1;
 
 // What a links file says its links were made for: the body of the navmesh they were generated on,
-// and the generation's settings (JSON; empty when none were recorded).
+// and what the generation ran with (empty when not recorded).
 struct LinksMadeFor {
     AgentType agent;
-    std::string link_settings;
+    LinksMadeWith made_with;
 };
 
 // A links file: its links, and what they were made for when it says (files written before 0.3 do not).
@@ -29,7 +30,8 @@ struct LinksFile {
 };
 
 // Throws InvalidArgument for a cross link (Link::crosses): its landing navmesh cannot be named in a file.
-// With `made_for`, the file records it ("made_for": {"agent": {...}, "link_settings": {...}}).
+// With `made_for`, the file records it ("made_for": {"agent": {...}, "link_settings": {...},
+// "link_plugins": {...}}).
 std::string links_to_json(const std::vector<Link>& links, const LinksMadeFor* made_for = nullptr);
 
 // Throws Parse (malformed JSON, with the parser's position), VersionMismatch (another format or a

@@ -146,15 +146,16 @@ void write_made_for(ByteWriter& out, const AgentType& agent, const MadeFor& made
     out.text(made_for.builder);
     out.text(made_for.builder_settings);
     // The link settings field by field: a tenth of their JSON.
-    out.u8(made_for.link_settings.empty() ? 0 : 1);
-    if (!made_for.link_settings.empty()) {
+    out.u8(made_for.links.settings.empty() ? 0 : 1);
+    if (!made_for.links.settings.empty()) {
         LinkSettings settings;
-        apply_settings_json(made_for.link_settings, settings);
+        apply_settings_json(made_for.links.settings, settings);
         for (const NamedFloatSetting& f : kFloatSettings) out.f32(settings.*f.field);
         for (const NamedWholeSetting& w : kWholeSettings) out.varint(settings.*w.field);
         out.varint(settings.drop_angles.size());
         for (float angle : settings.drop_angles) out.f32(angle);
     }
+    out.text(made_for.links.plugins);
     out.text(NAVLINK_CORE_VERSION);
 }
 
@@ -320,8 +321,11 @@ void read_made_for(ByteReader& in, NavMeshFile& out) {
         } catch (const Error& e) {
             fail(ErrorCode::Parse, in.context(), ": the link settings: ", e.what());
         }
-        out.made_for.link_settings = link_settings_to_json(settings);
+        out.made_for.links.settings = link_settings_to_json(settings);
     }
+    out.made_for.links.plugins = in.text("the link-kind plugins");
+    if (!out.made_for.links.plugins.empty() && !recorded_json(out.made_for.links.plugins).is_object())
+        fail(ErrorCode::Parse, in.context(), ": the link-kind plugins are not a JSON object");
     out.writer = in.text("the writer's version");
 }
 
@@ -331,17 +335,6 @@ std::string tag_name(const uint8_t* tag) {
     return name;
 }
 
-// A recorded settings text as JSON: the object it holds (read by the bounded reader: a file may say
-// anything), the text itself when it is not JSON, or null when none was recorded.
-nlohmann::json settings_object(const std::string& text) {
-    if (text.empty()) return nullptr;
-    try {
-        return parse_json(text, "recorded settings");
-    } catch (const Error&) {
-        return text;
-    }
-}
-
 }  // namespace
 
 std::string made_for_json(const NavMeshFile& file) {
@@ -349,8 +342,9 @@ std::string made_for_json(const NavMeshFile& file) {
     std::snprintf(hash, sizeof hash, "%016llx", static_cast<unsigned long long>(file.made_for.level_hash));
     const nlohmann::json out = {
         {"builder", file.made_for.builder.empty() ? nlohmann::json(nullptr) : nlohmann::json(file.made_for.builder)},
-        {"builder_settings", settings_object(file.made_for.builder_settings)},
-        {"link_settings", settings_object(file.made_for.link_settings)},
+        {"builder_settings", recorded_json(file.made_for.builder_settings)},
+        {"link_settings", recorded_json(file.made_for.links.settings)},
+        {"link_plugins", recorded_json(file.made_for.links.plugins)},
         {"level_hash", hash},
         {"writer", file.writer}};
     // The names and texts come from the file: bytes that are not UTF-8 are shown as U+FFFD.

@@ -7,11 +7,20 @@
 
 namespace nl {
 
+// What a navmesh's links were generated with, as JSON texts (empty: nothing recorded).
+struct LinksMadeWith {
+    std::string settings;  // the link generation settings (link_settings_to_json)
+    // Each link-kind plugin that ran: {"KIND": {"plugin": name, "version": v, "settings": {...}}}.
+    std::string plugins;
+};
+
 struct MadeFor {
-    std::string builder;           // the builder plugin's name; empty: polygons handed over by the host
-    std::string builder_settings;  // the settings the builder was given, as JSON text; empty: its defaults
-    uint64_t level_hash = 0;       // of the triangles it was built from (level_hash.h); 0: not built from the level
-    std::string link_settings;     // the link generation settings of its generated links, as JSON; empty: none
+    std::string builder;  // the builder plugin's name; empty: polygons handed over by the host
+    // The settings it built with, as a JSON object: complete when the builder said what it used
+    // (the Recast builder does), else as it was given; empty: neither.
+    std::string builder_settings;
+    uint64_t level_hash = 0;  // of the triangles it was built from (level_hash.h); 0: not built from the level
+    LinksMadeWith links;      // of its generated links
 };
 
 }  // namespace nl

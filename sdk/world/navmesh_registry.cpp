@@ -212,14 +212,14 @@ uint32_t NavMeshRegistry::remove_generated_links(Handle navmesh) {
     return static_cast<uint32_t>(before - e.link_ids.size());
 }
 
-void NavMeshRegistry::replace_links(Handle navmesh, const std::vector<Link>& links, std::string link_settings) {
+void NavMeshRegistry::replace_links(Handle navmesh, const std::vector<Link>& links, LinksMadeWith made_with) {
     std::unique_lock lock(mutex_);
     Entry& e = entry(navmesh);
     erase_links(e, any_link);
     e.link_ids.reserve(links.size());
     for (const Link& l : links) insert_link(navmesh, e, l);
     e.last = LastGeneration{};
-    e.made_for.link_settings = std::move(link_settings);
+    e.made_for.links = std::move(made_with);
 }
 
 NavMeshRegistry::Saved NavMeshRegistry::saved(Handle navmesh) const {
@@ -251,7 +251,7 @@ LastGeneration NavMeshRegistry::last_generation(Handle navmesh) const {
 }
 
 void NavMeshRegistry::store_generation(Handle navmesh, LastGeneration last, const std::vector<Link>& generated,
-                                       std::string link_settings) {
+                                       LinksMadeWith made_with) {
     std::unique_lock lock(mutex_);
     Entry& e = entry(navmesh);  // a navmesh removed meanwhile keeps nothing
     erase_links(e, generated_within);
@@ -261,7 +261,7 @@ void NavMeshRegistry::store_generation(Handle navmesh, LastGeneration last, cons
         insert_link(navmesh, e, l);
     }
     e.last = std::move(last);
-    e.made_for.link_settings = std::move(link_settings);
+    e.made_for.links = std::move(made_with);
 }
 
 bool NavMeshRegistry::store_update(Handle navmesh, const LinkGeneration* from, const std::vector<Link>& generated) {

@@ -71,8 +71,8 @@ public:
     std::shared_ptr<const LinkSnapshot> links(Handle navmesh) const;
     // Removes the generated links; manual ones stay. The last generation is forgotten with them.
     uint32_t remove_generated_links(Handle navmesh);
-    // Replaces every link (a links file, made with `link_settings`); the last generation is forgotten.
-    void replace_links(Handle navmesh, const std::vector<Link>& links, std::string link_settings);
+    // Replaces every link (a links file, made with `made_with`); the last generation is forgotten.
+    void replace_links(Handle navmesh, const std::vector<Link>& links, LinksMadeWith made_with);
     // What the navmesh and its generated links were made for and with.
     MadeFor made_for(Handle navmesh) const;
     // The navmesh, its links and what they were made with, read together (a baked file of one moment:
@@ -104,8 +104,8 @@ public:
 
     LastGeneration last_generation(Handle navmesh) const;
     // A generation's result: its links replace the generated ones and it becomes the last generation
-    // (made with `link_settings`, as JSON).
-    void store_generation(Handle navmesh, LastGeneration last, const std::vector<Link>& generated, std::string link_settings);
+    // (made with `made_with`).
+    void store_generation(Handle navmesh, LastGeneration last, const std::vector<Link>& generated, LinksMadeWith made_with);
     // An update's result: stored only while `from` is still the navmesh's last generation (not
     // forgotten by a removal or a load meanwhile); returns whether it was.
     bool store_update(Handle navmesh, const LinkGeneration* from, const std::vector<Link>& generated);

@@ -31,13 +31,21 @@ struct NavMeshBuildRequest {
     size_t settings_json_length = 0;
 };
 
+// What a builder hands back.
+struct BuiltNavMesh {
+    std::shared_ptr<const NavMesh> navmesh;
+    // The settings it used, complete (its defaults filled in), as a JSON object; empty: not said (the
+    // world then records the settings JSON it was given).
+    std::string settings_used;
+};
+
 class NavMeshBuilder {
 public:
     virtual ~NavMeshBuilder() = default;
     // A navmesh for request.agent from the world's level geometry, made with build_navmesh. Throws
     // its own failures (bad settings: InvalidArgument or Parse; no walkable surface: NotFound), and
     // Internal when the polygons it made were refused (a builder bug, not the caller's).
-    virtual std::shared_ptr<const NavMesh> build(World& world, const NavMeshBuildRequest& request) = 0;
+    virtual BuiltNavMesh build(World& world, const NavMeshBuildRequest& request) = 0;
 };
 
 class LinkKindProvider {

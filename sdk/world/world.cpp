@@ -2,6 +2,9 @@
 
 #include <string>
 
+#include <nlohmann/json.hpp>
+
+#include "io/json_input.h"
 #include "io/navmesh_file.h"
 #include "level/level_hash.h"
 #include "links/link_placement.h"
@@ -98,12 +101,26 @@ Handle World::build_navmesh(const NavMeshBuildRequest& request) {
         std::lock_guard lock(surface_moves_);
         surface_placement(request.surface);
     }
-    std::shared_ptr<const NavMesh> navmesh = builder->build(*this, request);
-    if (!navmesh) fail(ErrorCode::Internal, "builder '", request.builder, "' succeeded without handing over a navmesh");
-    log_repairs(*navmesh);
+    BuiltNavMesh built = builder->build(*this, request);
+    if (!built.navmesh) fail(ErrorCode::Internal, "builder '", request.builder, "' succeeded without handing over a navmesh");
     MadeFor made_for;
     made_for.builder = request.builder;
-    if (request.settings_json) made_for.builder_settings.assign(request.settings_json, request.settings_json_length);
+    if (!built.settings_used.empty()) {
+        nlohmann::json used;
+        try {
+            used = parse_json(built.settings_used, "the settings it used");
+        } catch (const Error& e) {
+            fail(ErrorCode::Internal, "builder '", request.builder, "' said it used settings that are not JSON: ", e.what());
+        }
+        if (!used.is_object())
+            fail(ErrorCode::Internal, "builder '", request.builder, "' said it used settings that are not a JSON object: ",
+                 json_excerpt(used));
+        made_for.builder_settings = used.dump();
+    } else if (request.settings_json) {
+        made_for.builder_settings.assign(request.settings_json, request.settings_json_length);
+    }
+    std::shared_ptr<const NavMesh> navmesh = std::move(built.navmesh);
+    log_repairs(*navmesh);
     made_for.level_hash = level_hash(level_->triangles_to_build(request.surface));
     return add_on_surface(std::move(navmesh), request.surface, std::move(made_for));
 }
@@ -133,7 +150,7 @@ Handle World::load_navmesh(const NavMeshFile& file, Handle surface) {
         in_the_file(concat("links[", i, "]."), [&] { place_saved_link(*navmesh, links[i]); });
     const Handle h = add_on_surface(std::move(navmesh), surface, file.made_for);
     try {
-        navmeshes_.replace_links(h, links, file.made_for.link_settings);
+        navmeshes_.replace_links(h, links, file.made_for.links);
     } catch (...) {
         navmeshes_.remove(h);  // out of memory: the world keeps what it had
         throw;

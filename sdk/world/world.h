@@ -114,10 +114,10 @@ public:
     bool link_holds(Handle navmesh, const Link& link) const;
     // The navmesh's pose now; the identity for one that rides nothing or is gone.
     SurfacePose navmesh_pose(Handle navmesh) const;
-    // Replaces every link of the navmesh with those of a links file made with `link_settings` (JSON;
-    // empty: not said) (place_saved_link; an end off the navmesh is a failure about
+    // Replaces every link of the navmesh with those of a links file made with `made_with` (empty:
+    // not said) (place_saved_link; an end off the navmesh is a failure about
     // "links[i].start"); nothing changes when one is refused.
-    void load_links(Handle navmesh, std::vector<Link> links, std::string link_settings = {});
+    void load_links(Handle navmesh, std::vector<Link> links, LinksMadeWith made_with = {});
     // The same for a links file that may say the body its links were generated for: one made for
     // another body than the navmesh's (same_body) is refused (InvalidArgument, both bodies named), or,
     // with `any_body`, loaded with a warning to the log.
@@ -149,8 +149,13 @@ public:
     LinkGenerationReport update_links_in_box(Handle navmesh, const Aabb& box, GenerationProgress progress);
 
 private:
-    std::vector<Link> plugin_links(Handle navmesh, const NavMesh& mesh, const PluginSettings& settings,
-                                   LinkGenerationReport& report);
+    // The link-kind plugins' links for `mesh`, and what ran (LinksMadeWith::plugins).
+    struct PluginLinks {
+        std::vector<Link> links;
+        std::string made_with;
+    };
+    PluginLinks plugin_links(Handle navmesh, const NavMesh& mesh, const PluginSettings& settings,
+                             LinkGenerationReport& report);
     void log_repairs(const NavMesh& navmesh) const;
     // InvalidArgument for a navmesh that rides a moving mesh: the generator proves links against the
     // level as it stands, so they would hold at one placement only.

@@ -2,6 +2,9 @@
 #include <cmath>
 #include <string>
 
+#include <nlohmann/json.hpp>
+
+#include "io/json_input.h"
 #include "io/link_json.h"
 #include "links/link_generation.h"
 #include "level/mesh_validation.h"
@@ -83,12 +86,12 @@ void World::refuse_generation_on_surface(Handle navmesh) const {
                                          "hold at one placement only): add its links with nl_link_add");
 }
 
-void World::load_links(Handle navmesh, std::vector<Link> links, std::string link_settings) {
+void World::load_links(Handle navmesh, std::vector<Link> links, LinksMadeWith made_with) {
     const std::shared_ptr<const NavMesh> mesh = navmeshes_.navmesh(navmesh);
     for (size_t i = 0; i < links.size(); ++i) {
         naming_fields(concat("links[", i, "].").c_str(), [&] { place_saved_link(*mesh, links[i]); });
     }
-    navmeshes_.replace_links(navmesh, links, std::move(link_settings));
+    navmeshes_.replace_links(navmesh, links, std::move(made_with));
 }
 
 void World::load_links_file(Handle navmesh, LinksFile file, bool any_body) {
@@ -104,12 +107,13 @@ void World::load_links_file(Handle navmesh, LinksFile file, bool any_body) {
             logger_.log(LogLevel::Warning, concat(why, ": loaded anyway (NL_LINKS_LOAD_ANY_BODY)"));
         }
     }
-    load_links(navmesh, std::move(file.links), file.made_for ? file.made_for->link_settings : std::string());
+    load_links(navmesh, std::move(file.links), file.made_for ? file.made_for->made_with : LinksMadeWith{});
 }
 
-std::vector<Link> World::plugin_links(Handle navmesh, const NavMesh& mesh, const PluginSettings& settings,
-                                      LinkGenerationReport& report) {
+World::PluginLinks World::plugin_links(Handle navmesh, const NavMesh& mesh, const PluginSettings& settings,
+                                       LinkGenerationReport& report) {
     std::vector<Link> out;
+    nlohmann::json ran = nlohmann::json::object();
     for (Plugin* plugin : plugins_.link_kind_plugins()) {
         LinkKindProvider& provider = *plugin->link_kind();
         std::string refusal;  // why the first link the plugin proposed that does not fit was refused
@@ -127,6 +131,10 @@ std::vector<Link> World::plugin_links(Handle navmesh, const NavMesh& mesh, const
             out.push_back(link);
         };
         const auto own = settings.find(provider.kind_name());
+        ran[provider.kind_name()] = {{"plugin", plugin->description().name},
+                                     {"version", plugin->description().version},
+                                     {"settings", own == settings.end() ? nlohmann::json::object()
+                                                                        : parse_json(own->second, "plugin settings")}};
         try {
             provider.propose(*this, navmesh, own == settings.end() ? std::string() : own->second, accept);
         } catch (...) {
@@ -137,7 +145,8 @@ std::vector<Link> World::plugin_links(Handle navmesh, const NavMesh& mesh, const
                  refusal);
     }
     report.plugin_links = static_cast<uint32_t>(out.size());
-    return out;
+    // Names and versions come from plugins: bytes that are not UTF-8 are kept as U+FFFD.
+    return {std::move(out), ran.empty() ? std::string() : ran.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace)};
 }
 
 LinkGenerationReport World::generate_links(Handle navmesh, const LinkSettings& settings, PluginSettings plugin_settings,
@@ -148,10 +157,10 @@ LinkGenerationReport World::generate_links(Handle navmesh, const LinkSettings& s
     const NavMeshRegistry::GenerationTurn one_at_a_time = navmeshes_.take_generation_turn(navmesh);
     LinkGenerationReport report;
     std::vector<Link> links = generation->run(*level_, *tasks_, report, progress);
-    const std::vector<Link> extra = plugin_links(navmesh, *mesh, plugin_settings, report);
-    links.insert(links.end(), extra.begin(), extra.end());
+    PluginLinks extra = plugin_links(navmesh, *mesh, plugin_settings, report);
+    links.insert(links.end(), extra.links.begin(), extra.links.end());
     navmeshes_.store_generation(navmesh, LastGeneration{std::move(generation), std::move(plugin_settings)}, links,
-                                link_settings_to_json(settings));
+                                LinksMadeWith{link_settings_to_json(settings), std::move(extra.made_with)});
     return report;
 }
 
@@ -167,8 +176,8 @@ LinkGenerationReport World::update_links_in_box(Handle navmesh, const Aabb& box,
                                   "removed or replaced by a JSON load since): generate its links first");
     LinkGenerationReport report;
     std::vector<Link> links = last.generation->update(box, *level_, *tasks_, report, progress);
-    const std::vector<Link> extra = plugin_links(navmesh, *mesh, last.plugin_settings, report);
-    links.insert(links.end(), extra.begin(), extra.end());
+    const PluginLinks extra = plugin_links(navmesh, *mesh, last.plugin_settings, report);
+    links.insert(links.end(), extra.links.begin(), extra.links.end());
     if (!navmeshes_.store_update(navmesh, last.generation.get(), links))
         fail(ErrorCode::NotFound, "the navmesh's generated links were removed or replaced by a JSON load during the update");
     return report;

@@ -159,6 +159,13 @@ static void recast(void) {
                 if (NL_FAILED(nl_navmesh_get_polygon(world, id, p, &poly)) || poly.vertex_count != 3) triangles = 0;
             }
             CHECK_THAT(triangles, "settings_json vertices_per_polygon 3 applies over a struct's 6");
+            /* What it was built with is recorded whole: the struct's, the JSON's, the defaults. */
+            {
+                const char* made_for = navmesh_made_for(world, id);
+                CHECK_MSG(strstr(made_for, "\"cell_size\":0.25") && strstr(made_for, "\"vertices_per_polygon\":3") &&
+                              strstr(made_for, "\"cell_height\":0.2") && strstr(made_for, "\"partition\":\"watershed\""),
+                          "the recorded settings: %s", made_for);
+            }
             /* An empty string is not a JSON object. */
             def.settings_json = "";
             def.settings_json_length = 0;

@@ -60,6 +60,17 @@ nl_navmesh_info navmesh_info(const nl_world* world, nl_navmesh_id id) {
 }
 
 /* The navmesh's vertices in a malloc'ed array (3 floats each); NULL on failure. */
+const char* navmesh_made_for(const nl_world* world, nl_navmesh_id id) {
+    static char json[4096];
+    static unsigned char file[65536];
+    size_t size = 0, length = 0;
+    json[0] = '\0';
+    if (NL_FAILED(nl_navmesh_save(world, id, file, sizeof file, &size)) ||
+        NL_FAILED(nl_navmesh_file_describe(file, size, NULL, json, sizeof json, &length)))
+        CHECK_MSG(0, "saving and describing the navmesh failed: %s", nl_get_last_error_message());
+    return json;
+}
+
 float* navmesh_vertices(const nl_world* world, nl_navmesh_id id, uint32_t* out_count) {
     uint32_t count = 0;
     float* xyz;

@@ -36,6 +36,9 @@ int same_agent(nl_agent_type a, nl_agent_type b);
 
 /* The navmesh's info (all zero if the call failed). */
 nl_navmesh_info navmesh_info(const nl_world* world, nl_navmesh_id id);
+/* What a saved file of the navmesh says it was made for (nl_navmesh_file_describe's JSON), in a
+   static buffer ("" and a failed check if saving or describing failed). */
+const char* navmesh_made_for(const nl_world* world, nl_navmesh_id id);
 /* The navmesh's vertices in a malloc'ed array (3 floats each); NULL on failure. */
 float* navmesh_vertices(const nl_world* world, nl_navmesh_id id, uint32_t* out_count);
 /* The navmesh's boundary edges in a malloc'ed array; NULL on failure. */

@@ -24,8 +24,13 @@ enum test_build_mode {
     MODE_BAD_INDEX,             /* hands over a grid with an index out of range, returns the sink's answer */
     MODE_BAD_INDEX_SUCCEED,     /* the same, returning success anyway */
     MODE_REPORT_ERROR,          /* set_error and INVALID_ARGUMENT, no sink */
-    MODE_NULL_NAVMESH           /* calls the sink with NULL */
+    MODE_NULL_NAVMESH,          /* calls the sink with NULL */
+    MODE_RECORD,                /* records the settings it used, then as MODE_GRID */
+    MODE_RECORD_NOT_OBJECT,     /* records a JSON array as its settings, then as MODE_GRID */
+    MODE_RECORD_NULL            /* records NULL (refused), then as MODE_GRID */
 };
+
+static const char k_recorded_settings[] = "{\"flavour\": \"vanilla\", \"scoops\": 2}";
 
 typedef struct test_builder_settings {
     uint32_t size;
@@ -42,6 +47,8 @@ typedef struct test_plugin_state {
     uint32_t level_vertices, level_triangles;
     nl_status short_copy_status; /* get_level_triangles with a buffer one vertex short */
     nl_agent_type agent;
+    nl_status record_status;         /* record_build_settings in the last build */
+    nl_status record_outside_status; /* record_build_settings from the entry function */
 } test_plugin_state;
 
 static test_plugin_state g_plugin;
@@ -92,7 +99,17 @@ static nl_status test_build(void* state, const nl_plugin_host* host, const nl_na
     navmesh.polygon_count = 4;
     navmesh.weld_tolerance = 0.001f;
     navmesh.agent = def->agent;
+    self->record_status = 0u;
     switch (mode) {
+    case MODE_RECORD:
+        self->record_status = host->record_build_settings(host->context, k_recorded_settings, strlen(k_recorded_settings));
+        return self->sink_status[0] = sink(sink_context, &navmesh);
+    case MODE_RECORD_NOT_OBJECT:
+        self->record_status = host->record_build_settings(host->context, "[1, 2]", 6);
+        return self->sink_status[0] = sink(sink_context, &navmesh);
+    case MODE_RECORD_NULL:
+        self->record_status = host->record_build_settings(host->context, NULL, 4);
+        return self->sink_status[0] = sink(sink_context, &navmesh);
     case MODE_GRID:
         return self->sink_status[0] = sink(sink_context, &navmesh);
     case MODE_SINK_TWICE:
@@ -133,6 +150,7 @@ static int entry_preamble(uint32_t host_abi_version, const nl_plugin_host* host,
         out_info->description == NULL && out_info->kinds == 0 && out_info->state == NULL &&
         out_info->destroy == NULL && out_info->navmesh_builder.build == NULL)
         ++g_plugin.entry_checks;
+    g_plugin.record_outside_status = host->record_build_settings(host->context, "{}", 2);
     out_info->abi_version = NL_PLUGIN_ABI_VERSION;
     out_info->version = "2.5.1";
     out_info->description = "C test builder: a 2 x 2 grid";
@@ -374,6 +392,29 @@ static void registered(void) {
     /* The other misbehaving builders (sink twice, no sink, sink then failure) are in
        misbehaving_builders, after running once each in a child process. */
 
+    /* What a build used, as the builder records it, is what a saved file says it was built with. A
+       record that is not a JSON object fails the build (a builder bug), adding nothing; one refused
+       (NULL) leaves the build recorded without settings (a struct alone is not recorded). */
+    CHECK(g_plugin.record_outside_status == (NL_STATUS_FAILURE | NL_STATUS_INVALID_ARGUMENT));
+    settings.mode = MODE_RECORD;
+    CHECK_OK(nl_navmesh_build(world, &def, &id));
+    CHECK(g_plugin.record_status == NL_STATUS_SUCCESS);
+    CHECK_THAT(strstr(navmesh_made_for(world, id), "\"builder_settings\":{\"flavour\":\"vanilla\",\"scoops\":2}") != NULL,
+               "a saved file says the settings the builder recorded");
+    settings.mode = MODE_RECORD_NOT_OBJECT;
+    {
+        const uint32_t before = navmesh_count(world);
+        nl_navmesh_id out = {77u, 77u};
+        CHECK_FAIL(nl_navmesh_build(world, &def, &out), NL_STATUS_INTERNAL_ERROR, "not a JSON object");
+        CHECK(strstr(nl_get_last_error_message(), "c-test-builder") != NULL);
+        CHECK(out.index1 == 77u && navmesh_count(world) == before);
+    }
+    settings.mode = MODE_RECORD_NULL;
+    CHECK_OK(nl_navmesh_build(world, &def, &id));
+    CHECK(g_plugin.record_status == (NL_STATUS_FAILURE | NL_STATUS_INVALID_ARGUMENT));
+    CHECK_THAT(strstr(navmesh_made_for(world, id), "\"builder_settings\":null") != NULL,
+               "a build that recorded nothing, given a settings struct, says no settings");
+
     /* Still works after all the failures. */
     settings.mode = MODE_GRID;
     CHECK_OK(nl_navmesh_build(world, &def, &id));
@@ -381,7 +422,7 @@ static void registered(void) {
     def.settings = NULL;
     def.builder = "c-test-builder-2";
     CHECK_OK(nl_navmesh_build(world, &def, &id));
-    CHECK(navmesh_count(world) == 3);
+    CHECK(navmesh_count(world) == 5);
 
     /* Destroying the world destroys each plugin state the entry made, once. */
     nl_world_destroy(world);

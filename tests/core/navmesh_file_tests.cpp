@@ -3,6 +3,7 @@
 // queries, say what they were made for, and any damaged, foreign or future file is refused with the
 // reason, leaving the world as it was.
 #include <doctest/doctest.h>
+#include <nlohmann/json.hpp>
 
 #include <cmath>
 #include <cstring>
@@ -139,11 +140,17 @@ TEST_CASE("a baked file says what it was made for: the body, the builder, the le
     CHECK(read.navmesh.agent.radius == nl::AgentType{}.radius);
     CHECK(read.navmesh.agent.height == nl::AgentType{}.height);
     CHECK(read.made_for.builder == "recast");
+    // Built with no settings given, it records every setting it used.
+    const nlohmann::json used = nlohmann::json::parse(read.made_for.builder_settings);
+    CHECK(used.size() == 13);
+    CHECK(used["cell_size"] == 0.3);
+    CHECK(used["partition"] == "watershed");
+    CHECK(used["filter_ledge_spans"] == true);
     CHECK(read.made_for.level_hash == nl::level_hash(b.world->level().triangles_to_build(Handle{})));
     CHECK(read.made_for.level_hash != 0);
     nl::LinkSettings settings;
     settings.max_jump_gap = 1.0f;  // not the default: the record must be read back, not assumed
-    nl::apply_settings_json(read.made_for.link_settings, settings);
+    nl::apply_settings_json(read.made_for.links.settings, settings);
     CHECK(settings.max_jump_gap == nl::LinkSettings{}.max_jump_gap);
     CHECK(settings.drop_angles == nl::LinkSettings{}.drop_angles);
     CHECK_FALSE(read.writer.empty());
@@ -152,7 +159,21 @@ TEST_CASE("a baked file says what it was made for: the body, the builder, the le
     auto other = nl::test::make_world(1);
     const Handle loaded = other->load_navmesh(read);
     CHECK(other->navmeshes().made_for(loaded).level_hash == read.made_for.level_hash);
-    CHECK(other->navmeshes().made_for(loaded).link_settings == read.made_for.link_settings);
+    CHECK(other->navmeshes().made_for(loaded).links.settings == read.made_for.links.settings);
+    CHECK(other->navmeshes().made_for(loaded).builder_settings == read.made_for.builder_settings);
+    // The link-kind plugins that ran are kept as recorded; a record that is not an object is refused.
+    nl::MadeFor with_plugins = read.made_for;
+    with_plugins.links.plugins = R"({"rope":{"plugin":"ropes","settings":{"length":3},"version":"1"}})";
+    const nl::NavMesh& mesh = *b.world->navmeshes().navmesh(b.navmesh);
+    const std::vector<uint8_t> plugged = nl::write_navmesh_file(mesh, {}, with_plugins, false);
+    CHECK(nl::read_navmesh_file(plugged.data(), plugged.size()).made_for.links.plugins == with_plugins.links.plugins);
+    CHECK(nl::made_for_json(nl::read_navmesh_file(plugged.data(), plugged.size())).find(R"("link_plugins":{"rope")") !=
+          std::string::npos);
+    with_plugins.links.plugins = "[]";
+    const std::vector<uint8_t> listed = nl::write_navmesh_file(mesh, {}, with_plugins, false);
+    std::string message;
+    CHECK(nl::test::code_of([&] { nl::read_navmesh_file(listed.data(), listed.size()); }, &message) == nl::ErrorCode::Parse);
+    CHECK_MESSAGE(message.find("the link-kind plugins are not a JSON object") != std::string::npos, message);
     // Whatever bytes a file names its builder with, describing it says so in valid JSON (the fuzzer
     // found a name that is not UTF-8 made the description fail).
     nl::MadeFor odd = b.world->navmeshes().made_for(b.navmesh);
@@ -254,14 +275,17 @@ TEST_CASE("a links file says the body its links were made for: another body's na
     narrow.radius = 0.3f;
     const Handle other = nl::test::build_recast_navmesh(*b.world, narrow);
     const nl::LinksMadeFor made_for{b.world->navmeshes().navmesh(b.navmesh)->agent(),
-                                    b.world->navmeshes().made_for(b.navmesh).link_settings};
+                                    b.world->navmeshes().made_for(b.navmesh).links};
     std::vector<nl::Link> links;
     for (const nl::StoredLink& l : nl::test::links_of(*b.world, b.navmesh)) links.push_back(l.link);
     const std::string json = nl::links_to_json(links, &made_for);
     const nl::LinksFile file = nl::read_links_json(json);
     REQUIRE(file.made_for);
     CHECK(file.made_for->agent.radius == nl::AgentType{}.radius);
-    CHECK(file.made_for->link_settings == made_for.link_settings);
+    CHECK(file.made_for->made_with.settings == made_for.made_with.settings);
+    nl::LinksMadeFor plugged = made_for;
+    plugged.made_with.plugins = R"({"rope":{"plugin":"ropes","settings":{},"version":"1"}})";
+    CHECK(nl::read_links_json(nl::links_to_json(links, &plugged)).made_for->made_with.plugins == plugged.made_with.plugins);
 
     std::string message;
     CHECK(nl::test::code_of([&] { b.world->load_links_file(other, file, false); }, &message) == nl::ErrorCode::InvalidArgument);

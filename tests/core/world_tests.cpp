@@ -225,9 +225,10 @@ class Tops final : public nl::Plugin, public nl::NavMeshBuilder {
 public:
     const nl::PluginDescription& description() const noexcept override { return description_; }
     nl::NavMeshBuilder* navmesh_builder() noexcept override { return this; }
-    std::shared_ptr<const nl::NavMesh> build(nl::World&, const nl::NavMeshBuildRequest& request) override {
-        return nl::build_navmesh(platform_tops(request.agent.radius));
+    nl::BuiltNavMesh build(nl::World&, const nl::NavMeshBuildRequest& request) override {
+        return {nl::build_navmesh(platform_tops(request.agent.radius)), settings_used};
     }
+    std::string settings_used;
 
 private:
     nl::PluginDescription description_{"tops", "1", "a test builder", 0, false};
@@ -246,6 +247,9 @@ TEST_CASE("C++ plugins: a link kind's links are placed and generated with the re
         s.world->generate_links(s.navmesh, {}, settings, [](float, const char*) { return true; });
     CHECK(report.plugin_links == 1);
     CHECK(rope_plugin.settings_seen == "{\"length\":3}");
+    // What ran is recorded with the links, as a saved file and a links file say it.
+    CHECK(s.world->navmeshes().made_for(s.navmesh).links.plugins ==
+          "{\"rope\":{\"plugin\":\"ropes\",\"settings\":{\"length\":3},\"version\":\"1\"}}");
     const auto links = s.world->navmeshes().links(s.navmesh);
     const Link& rope = links->back().link;
     CHECK(uint32_t(rope.kind) == 300);
@@ -261,12 +265,32 @@ TEST_CASE("C++ plugins: a link kind's links are placed and generated with the re
 
     CHECK(nl::test::code_of([&] { s.world->plugins().add(std::make_unique<Ropes>()); }) == nl::ErrorCode::InvalidArgument);
 
-    s.world->plugins().add(std::make_unique<Tops>());
+    auto tops_plugin = std::make_unique<Tops>();
+    Tops& tops = *tops_plugin;
+    s.world->plugins().add(std::move(tops_plugin));
     nl::NavMeshBuildRequest request;
     request.builder = "tops";
     request.agent.radius = 0.5f;
     const Handle built = s.world->build_navmesh(request);
     CHECK(s.world->navmeshes().navmesh(built)->agent().radius == 0.5f);
+    CHECK(s.world->navmeshes().made_for(built).builder == "tops");
+    CHECK(s.world->navmeshes().made_for(built).builder_settings.empty());  // none given, none said
+    // What a builder says it used is recorded over what it was given; what is not a JSON object is a
+    // builder bug, and nothing is added.
+    tops.settings_used = "{ \"layers\" : 1 }";
+    const std::string given = "{}";
+    request.settings_json = given.c_str();
+    request.settings_json_length = given.size();
+    CHECK(s.world->navmeshes().made_for(s.world->build_navmesh(request)).builder_settings == "{\"layers\":1}");
+    tops.settings_used.clear();
+    CHECK(s.world->navmeshes().made_for(s.world->build_navmesh(request)).builder_settings == "{}");
+    const size_t navmeshes = s.world->navmeshes().handles().size();
+    tops.settings_used = "[1]";
+    CHECK(nl::test::message_of([&] { s.world->build_navmesh(request); }) ==
+          "builder 'tops' said it used settings that are not a JSON object: an array of 1 value");
+    tops.settings_used = "{";
+    CHECK(nl::test::code_of([&] { s.world->build_navmesh(request); }) == nl::ErrorCode::Internal);
+    CHECK(s.world->navmeshes().handles().size() == navmeshes);
     request.builder = "nobody";
     CHECK(nl::test::message_of([&] { s.world->build_navmesh(request); }) == "no navmesh builder named 'nobody' (loaded: 'tops')");
 }

@@ -7,8 +7,9 @@
 //   links_json/   links of every kind saved by nl_navmesh_save_links_json from the navmesh the
 //                 links target loads them on
 //   navmesh_file/ navmesh files saved by nl_navmesh_save: the links target's navmesh with each
-//                 count of those links, and a map of quads with areas; each also with its body
-//                 inflated (the flag cleared), so that mutations reach the sections' fields
+//                 count of those links, a map of quads with areas, and a navmesh the Recast
+//                 builder built with generated links; each also with its body inflated (the flag
+//                 cleared), so that mutations reach the sections' fields
 #include <navlink/navlink.h>
 
 #include <cstdio>
@@ -110,6 +111,16 @@ void write_navmesh_file(const fs::path& path, const std::string& file) {
     write(fs::path(path).replace_extension(".plain.nlnav"), plain);
 }
 
+// Saves the navmesh with nl_navmesh_save to `path` (and its inflated twin).
+bool save_navmesh_file(nl_world* world, nl_navmesh_id navmesh, const fs::path& path) {
+    size_t size = 0;
+    if (NL_FAILED(nl_navmesh_save(world, navmesh, nullptr, 0, &size))) return false;
+    std::string file(size, '\0');
+    if (NL_FAILED(nl_navmesh_save(world, navmesh, file.data(), file.size(), &size))) return false;
+    write_navmesh_file(path, file);
+    return true;
+}
+
 // Links of each kind on the links target's navmesh (an 8 m map of cells), as the library saves them.
 bool write_links(const fs::path& dir, const fs::path& file_dir) {
     nl_world* world = nullptr;
@@ -133,11 +144,7 @@ bool write_links(const fs::path& dir, const fs::path& file_dir) {
         std::string json(length + 1, '\0');
         ok = ok && NL_SUCCEEDED(nl_navmesh_save_links_json(world, navmesh, json.data(), json.size(), &length));
         if (ok) write(dir / ("links-" + std::to_string(i + 1) + ".json"), json.substr(0, length));
-        size_t size = 0;
-        ok = ok && NL_SUCCEEDED(nl_navmesh_save(world, navmesh, nullptr, 0, &size));
-        std::string file(size, '\0');
-        ok = ok && NL_SUCCEEDED(nl_navmesh_save(world, navmesh, file.data(), file.size(), &size));
-        if (ok) write_navmesh_file(file_dir / ("cells-" + std::to_string(i + 1) + ".nlnav"), file);
+        ok = ok && save_navmesh_file(world, navmesh, file_dir / ("cells-" + std::to_string(i + 1) + ".nlnav"));
     }
     if (!ok) std::fprintf(stderr, "navlink-fuzz-seeds: links: %s\n", nl_get_last_error_message());
     nl_world_destroy(world);
@@ -150,12 +157,39 @@ bool write_quad_file(const fs::path& dir) {
     if (NL_FAILED(nl_world_create(nullptr, &world))) return false;
     const nl::test::CellNavmesh cells({"..1.", ".2..", "...."}, 0.4f);
     nl_navmesh_id navmesh{};
-    size_t size = 0;
-    bool ok = NL_SUCCEEDED(nl_navmesh_add(world, &cells.def, &navmesh)) && NL_SUCCEEDED(nl_navmesh_save(world, navmesh, nullptr, 0, &size));
-    std::string file(size, '\0');
-    ok = ok && NL_SUCCEEDED(nl_navmesh_save(world, navmesh, file.data(), file.size(), &size));
-    if (ok) write_navmesh_file(dir / "quad-map.nlnav", file);
-    else std::fprintf(stderr, "navlink-fuzz-seeds: navmesh file: %s\n", nl_get_last_error_message());
+    const bool ok = NL_SUCCEEDED(nl_navmesh_add(world, &cells.def, &navmesh)) && save_navmesh_file(world, navmesh, dir / "quad-map.nlnav");
+    if (!ok) std::fprintf(stderr, "navlink-fuzz-seeds: navmesh file: %s\n", nl_get_last_error_message());
+    nl_world_destroy(world);
+    return ok;
+}
+
+// Two floors with a 1 m gap, built by the Recast builder with links generated: a file whose MADE
+// section records the builder's settings and the link settings.
+bool write_built_file(const fs::path& dir) {
+    nl_world* world = nullptr;
+    if (NL_FAILED(nl_world_create(nullptr, &world))) return false;
+    bool ok = true;
+    for (float x0 : {0.0f, 5.0f}) {
+        const float x1 = x0 + 4.0f;
+        const float v[] = {x0, 0, 0, x0, 0, 4, x1, 0, 4, x1, 0, 0};
+        const uint32_t quad[] = {0, 1, 2, 0, 2, 3};
+        nl_mesh_def mesh = nl_default_mesh_def();
+        mesh.vertices = v;
+        mesh.vertex_count = 4;
+        mesh.indices = quad;
+        mesh.triangle_count = 2;
+        nl_mesh_id id{};
+        ok = ok && NL_SUCCEEDED(nl_mesh_add(world, &mesh, &id));
+    }
+    nl_navmesh_build_def build = nl_default_navmesh_build_def();
+    build.settings_json = R"({"cell_size": 0.25})";
+    build.settings_json_length = std::strlen(build.settings_json);
+    nl_navmesh_id navmesh{};
+    ok = ok && NL_SUCCEEDED(nl_navmesh_build(world, &build, &navmesh));
+    const nl_link_settings settings = nl_default_link_settings();
+    ok = ok && NL_SUCCEEDED(nl_navmesh_generate_links(world, navmesh, &settings, nullptr, nullptr, nullptr));
+    ok = ok && save_navmesh_file(world, navmesh, dir / "built-gap.nlnav");
+    if (!ok) std::fprintf(stderr, "navlink-fuzz-seeds: built navmesh file: %s\n", nl_get_last_error_message());
     nl_world_destroy(world);
     return ok;
 }
@@ -170,7 +204,9 @@ int main(int argc, char** argv) {
     const fs::path out = argv[1];
     for (const char* target : {"obj", "navmesh_add", "links_json", "navmesh_file"}) fs::create_directories(out / target);
     write(out / "navmesh_add" / "quad-map.bin", quad_map());
-    if (!write_links(out / "links_json", out / "navmesh_file") || !write_quad_file(out / "navmesh_file")) return 1;
+    if (!write_links(out / "links_json", out / "navmesh_file") || !write_quad_file(out / "navmesh_file") ||
+        !write_built_file(out / "navmesh_file"))
+        return 1;
     for (int i = 2; i < argc; ++i) {
         const std::string name = fs::path(argv[i]).stem().string();
         try {

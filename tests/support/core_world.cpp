@@ -75,8 +75,8 @@ public:
     const PluginDescription& description() const noexcept override { return description_; }
     NavMeshBuilder* navmesh_builder() noexcept override { return this; }
 
-    std::shared_ptr<const NavMesh> build(World& world, const NavMeshBuildRequest& request) override {
-        Call call{&world, {}, nullptr, {}};
+    BuiltNavMesh build(World& world, const NavMeshBuildRequest& request) override {
+        Call call{&world, {}, nullptr, {}, {}};
         const nl_plugin_host host = table(&call);
         nl_navmesh_build_def def{};
         def.size = sizeof def;
@@ -88,7 +88,7 @@ public:
         const nl_status status = info_.navmesh_builder.build(info_.state, &host, &def, &Call::receive, &call);
         if (call.error) std::rethrow_exception(call.error);
         if (NL_FAILED(status)) fail(code_of(status), call.reason);
-        return std::move(call.navmesh);
+        return {std::move(call.navmesh), std::move(call.settings_used)};
     }
 
 private:
@@ -97,6 +97,7 @@ private:
         std::string reason;  // the plugin's set_error
         std::shared_ptr<const NavMesh> navmesh;
         std::exception_ptr error;
+        std::string settings_used;
 
         static nl_status receive(void* context, const nl_navmesh_def* def) {
             auto& self = *static_cast<Call*>(context);
@@ -119,6 +120,10 @@ private:
             if (context) static_cast<Call*>(context)->reason = message ? message : "";
         };
         h.get_level_triangles = &level_triangles;
+        h.record_build_settings = [](void* context, const char* json, size_t length) {
+            static_cast<Call*>(context)->settings_used.assign(json, length);
+            return NL_STATUS_SUCCESS;
+        };
         return h;
     }
 

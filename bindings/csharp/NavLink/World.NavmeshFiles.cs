@@ -82,7 +82,7 @@ namespace NavLink
 
         /// <summary>Reads a navmesh file's bytes without loading it (no world needed): what it holds, and in
         /// madeForJson what it was made for as a JSON object ({"builder", "builder_settings", "link_settings",
-        /// "level_hash", "writer"}). VersionMismatch (not a NavLink navmesh file, or a newer format),
+        /// "link_plugins", "level_hash", "writer"}). VersionMismatch (not a NavLink navmesh file, or a newer format),
         /// ParseError (truncated or corrupted).</summary>
         public static unsafe NavmeshFileInfo DescribeNavmeshFile(ReadOnlySpan<byte> data, out string madeForJson)
         {

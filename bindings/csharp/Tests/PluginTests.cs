@@ -34,6 +34,9 @@ namespace NavLink.Tests
                     NavmeshInfo info = world.GetNavmeshInfo(navmesh);
                     check.That(info.PolygonCount == 1 && info.BoundsMax.Y == 0.5f && info.BoundsMax.X == 4,
                                "the roof: " + info.PolygonCount + " polygon at y = " + info.BoundsMax.Y);
+                    string madeFor;
+                    World.DescribeNavmeshFile(world.SaveNavmesh(navmesh), out madeFor);
+                    check.That(madeFor.Contains("\"builder_settings\":" + RoofPlugin.Used), "what the roof recorded: " + madeFor);
 
                     check.Throws(StatusBits.NotFound, "nl_plugin_load", () => world.LoadPlugin("/no/such/plugin.so"), "a missing library");
                 }

@@ -21,6 +21,9 @@ namespace NavLink.Tests
         private static readonly IntPtr VersionUtf8 = Utf8.AllocZ("1.0");
         private static readonly IntPtr DescriptionUtf8 = Utf8.AllocZ("one square over the whole level");
         private static readonly IntPtr NoTrianglesUtf8 = Utf8.AllocZ(NoTrianglesMessage);
+        public const string Used = "{\"at\":\"the highest vertex\"}";
+        private static readonly IntPtr UsedUtf8 = Utf8.AllocZ(Used);
+        private static readonly int UsedLength = System.Text.Encoding.UTF8.GetByteCount(Used);
 
         public static NativeCallbacks.PluginEntryFn EntryFunction { get { return EntryDelegate; } }
 
@@ -91,6 +94,14 @@ namespace NavLink.Tests
                 navmesh.PolygonVertexCounts = (IntPtr)(&corners);
                 navmesh.PolygonCount = 1;
                 navmesh.Agent = def->Agent;
+                if (host->Size >= (uint)sizeof(PluginHost))
+                {
+                    // A host that keeps what a build used.
+                    var record = (NativeCallbacks.HostRecordBuildSettingsFn)Marshal.GetDelegateForFunctionPointer(
+                        host->RecordBuildSettings, typeof(NativeCallbacks.HostRecordBuildSettingsFn));
+                    status = record(host->Context, UsedUtf8, (UIntPtr)UsedLength);
+                    if (StatusBits.Failed(status)) return status;
+                }
                 var send = (NativeCallbacks.NavmeshSinkFn)Marshal.GetDelegateForFunctionPointer(sink, typeof(NativeCallbacks.NavmeshSinkFn));
                 return send(sinkContext, (IntPtr)(&navmesh));
             }

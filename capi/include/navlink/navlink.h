@@ -1038,7 +1038,10 @@ typedef struct nl_navmesh_file_info {
  *  (optional) and writes what it was made for as a JSON object into `made_for_json` (optional,
  *  caller-owned, `capacity` bytes, NUL-terminated; `*out_length`, when given, always receives its
  *  length without the NUL; a NULL buffer only measures): {"builder": name or null, "builder_settings":
- *  object or null, "link_settings": object or null, "level_hash": "16 hex digits", "writer": version}.
+ *  object or null (complete when the builder recorded what it used, as "recast" does, else as
+ *  given), "link_settings": object or null, "link_plugins": {kind name: {"plugin", "version",
+ *  "settings"}} for each link-kind plugin that ran, or null, "level_hash": "16 hex digits",
+ *  "writer": version}.
  *  Returns SUCCESS, or a failure as nl_navmesh_load reading the file (VERSION_MISMATCH, PARSE_ERROR),
  *  BUFFER_TOO_SMALL, INVALID_ARGUMENT (null data with a size; a buffer without out_length; bad info
  *  size). Thread-safe; needs no world (failures reach no log callback). */

@@ -64,6 +64,17 @@ typedef struct nl_plugin_host {
                                       const float* half_extents, nl_nav_point* out);
     nl_status (*cast_rays)(void* context, const nl_ray* rays, uint32_t count, nl_ray_hit* out_hits);
     nl_status (*segments_blocked)(void* context, const nl_segment* segments, uint32_t count, uint8_t* out_blocked);
+
+    /** For a navmesh builder: records the settings this build used, complete (its defaults filled
+     *  in), as a JSON object of `length` bytes (UTF-8; copied). The world keeps it with the navmesh
+     *  as what it was built with: nl_navmesh_save writes it, nl_navmesh_file_describe shows it as
+     *  "builder_settings". Call it from build, on the thread that called build, before returning;
+     *  the last call wins. A build whose record is not a JSON object fails with INTERNAL_ERROR
+     *  naming the builder. A builder that records nothing is recorded with the settings JSON it was
+     *  given (def->settings_json), or none: a settings struct alone is then not recorded.
+     *  Returns SUCCESS, or a failure with INVALID_ARGUMENT (settings_json NULL; called outside a
+     *  build of this plugin on this thread). Present when `size` covers it (added in 0.3). */
+    nl_status (*record_build_settings)(void* context, const char* settings_json, size_t length);
 } nl_plugin_host;
 
 /** Receives a built navmesh; the host copies it before returning. */

@@ -69,6 +69,10 @@ namespace NavLink
         [UnmanagedFunctionPointer(CallingConvention.Cdecl)]
         public delegate void HostSetErrorFn(IntPtr context, IntPtr message);
 
+        /// <summary>nl_plugin_host.record_build_settings (context, settings_json, length).</summary>
+        [UnmanagedFunctionPointer(CallingConvention.Cdecl)]
+        public delegate uint HostRecordBuildSettingsFn(IntPtr context, IntPtr settingsJson, UIntPtr length);
+
         /// <summary>nl_plugin_host.get_level_triangles.</summary>
         [UnmanagedFunctionPointer(CallingConvention.Cdecl)]
         public unsafe delegate uint HostGetLevelTrianglesFn(IntPtr context, float* vertices, uint vertexCapacity,

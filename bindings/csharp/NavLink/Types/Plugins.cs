@@ -37,6 +37,8 @@ namespace NavLink
         public IntPtr NavmeshFindNearest;
         public IntPtr CastRays;
         public IntPtr SegmentsBlocked;
+        /// <summary>Present when Size covers it (added in 0.3).</summary>
+        public IntPtr RecordBuildSettings;
     }
 
     /// <summary>nl_navmesh_builder.</summary>

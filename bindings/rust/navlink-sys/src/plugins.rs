@@ -89,6 +89,9 @@ pub struct nl_plugin_host {
             out_blocked: *mut u8,
         ) -> nl_status,
     >,
+    /// Present when `size` covers it (added in 0.3).
+    pub record_build_settings:
+        Option<unsafe extern "C" fn(context: *mut c_void, settings_json: *const c_char, length: usize) -> nl_status>,
 }
 
 /// `nl_navmesh_sink_fn*`.

@@ -36,7 +36,7 @@ pub fn default_navmesh_load_def() -> NavmeshLoadDef {
 }
 
 /// Reads a navmesh file's bytes without loading it (no world needed): what it holds, and what it was made
-/// for as a JSON object (`{"builder", "builder_settings", "link_settings", "level_hash", "writer"}`).
+/// for as a JSON object (`{"builder", "builder_settings", "link_settings", "link_plugins", "level_hash", "writer"}`).
 /// `VERSION_MISMATCH` (not a NavLink navmesh file, or a newer format), `PARSE_ERROR` (truncated or corrupted).
 pub fn describe_navmesh_file(data: &[u8]) -> Result<(NavmeshFileInfo, String)> {
     let mut info = NavmeshFileInfo::default(); // size set

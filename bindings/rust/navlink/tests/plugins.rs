@@ -9,6 +9,7 @@ use std::os::raw::{c_char, c_void};
 
 const ROOF: &str = "rust-roof";
 const NO_TRIANGLES: &[u8] = b"rust-roof: the level has no triangles\0";
+const USED: &str = r#"{"at":"the highest vertex"}"#;
 
 /// Covers the level's bounds with one square at its highest vertex (the C API guide's "roof" example).
 unsafe extern "C" fn build_roof(
@@ -55,6 +56,13 @@ unsafe extern "C" fn build_roof(
         navmesh.polygon_vertex_counts = corners.as_ptr();
         navmesh.polygon_count = 1;
         navmesh.agent = (*def).agent;
+        if host.size as usize >= std::mem::size_of::<sys::nl_plugin_host>() {
+            // A host that keeps what a build used.
+            let s = (host.record_build_settings.expect("record_build_settings"))(host.context, USED.as_ptr() as *const c_char, USED.len());
+            if sys::nl_failed(s) {
+                return s;
+            }
+        }
         (sink.expect("sink"))(sink_context, &navmesh)
     })
     .unwrap_or(sys::NL_STATUS_FAILURE | sys::NL_STATUS_INTERNAL_ERROR)
@@ -91,8 +99,11 @@ fn plugins() {
     let build = NavmeshBuild { builder: Some(ROOF), ..NavmeshBuild::new(default_agent_type()) };
     assert_fails(world.build_navmesh(&build), status::NOT_FOUND, "rust-roof: the level has no triangles");
     world.add_mesh(&[0.0, 0.0, 0.0, 0.0, 0.0, 4.0, 4.0, 0.5, 4.0], &[0, 1, 2], &MeshOptions::default()).unwrap();
-    let info = world.navmesh_info(world.build_navmesh(&build).unwrap()).unwrap();
+    let navmesh = world.build_navmesh(&build).unwrap();
+    let info = world.navmesh_info(navmesh).unwrap();
     assert!(info.polygon_count == 1 && info.bounds_max[1] == 0.5 && info.bounds_max[0] == 4.0, "{:?}", info);
+    let (_, made_for) = navlink::describe_navmesh_file(&world.save_navmesh(navmesh).unwrap()).unwrap();
+    assert!(made_for.contains(&format!(r#""builder_settings":{}"#, USED)), "{}", made_for);
 
     assert_fails(unsafe { world.load_plugin("/no/such/plugin.so") }, status::NOT_FOUND, "nl_plugin_load");
 }
