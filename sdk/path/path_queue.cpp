@@ -17,6 +17,9 @@ PathResult failed(ErrorCode code) {
     return result;
 }
 
+// Set while this thread runs a path callback.
+thread_local bool in_path_callback = false;
+
 PathResult cancelled() {
     PathResult result;
     result.outcome = PathOutcome::Cancelled;
@@ -212,12 +215,41 @@ void PathQueue::finish(std::unique_lock<std::mutex>& lock, Handle h, PathResult 
             // take_finished will not list it.
         }
     }
+    request_finished_.notify_all();
     if (callback) {
         lock.unlock();
-        callback(h, outcome);
+        const bool outer = in_path_callback;
+        in_path_callback = true;
+        try {
+            callback(h, outcome);
+        } catch (...) {
+            in_path_callback = outer;
+            lock.lock();
+            throw;
+        }
+        in_path_callback = outer;
         lock.lock();
     }
     ++finished_;  // after the callback: a host that waits for `finished` may free what it reads
+}
+
+PathOutcome PathQueue::wait(Handle ticket, std::chrono::steady_clock::duration timeout) {
+    using Clock = std::chrono::steady_clock;
+    if (in_path_callback)
+        fail(ErrorCode::InvalidArgument, "a path callback cannot wait for a path: it runs on a thread that finishes them");
+    const Clock::time_point now = Clock::now();
+    const bool forever = timeout >= Clock::time_point::max() - now;
+    const Clock::time_point deadline = forever ? Clock::time_point::max() : now + timeout;
+    std::unique_lock lock(mutex_);
+    for (;;) {
+        const Ticket& t = find(ticket);
+        if (t.result.outcome != PathOutcome::Pending) return t.result.outcome;
+        if (!forever && Clock::now() >= deadline) return PathOutcome::Pending;
+        uint64_t nodes = 0;
+        if (workers_.empty() && !t.running && run_next(lock, nodes)) continue;
+        if (forever) request_finished_.wait(lock);
+        else request_finished_.wait_until(lock, deadline);
+    }
 }
 
 uint32_t PathQueue::process(const ProcessBudget& budget) {

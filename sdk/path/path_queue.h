@@ -4,6 +4,7 @@
 #pragma once
 
 #include <atomic>
+#include <chrono>
 #include <condition_variable>
 #include <cstdint>
 #include <deque>
@@ -69,6 +70,14 @@ public:
     void cancel(Handle ticket);
     void release(Handle ticket);
 
+    // Blocks until the request has finished or `timeout` has passed, and returns its outcome
+    // (Pending on a timeout; a zero timeout polls). With no path workers, it plans queued requests
+    // (oldest first, their callbacks on this thread) until this one has finished, checking the time
+    // between requests. Throws InvalidHandle for an unknown or released ticket (also one released by
+    // another thread meanwhile), and InvalidArgument from a path callback: it runs on a thread that
+    // finishes requests, so it could wait for itself.
+    PathOutcome wait(Handle ticket, std::chrono::steady_clock::duration timeout);
+
     // Plans queued requests on the calling thread within the budget (at least one when any is
     // queued); returns how many it finished.
     uint32_t process(const ProcessBudget& budget);
@@ -109,6 +118,7 @@ private:
 
     mutable std::mutex mutex_;
     std::condition_variable wake_;
+    std::condition_variable request_finished_;  // notified each time a request finishes
     SlotMap<Ticket> tickets_;
     std::deque<Handle> queue_;  // may hold tickets cancelled or released since: skipped
     // Finished requests not taken yet; may hold released tickets (skipped, and dropped once they are

@@ -3,6 +3,8 @@
 // lock; C++ plugins plug in; failures name fields in the core's own terms.
 #include <doctest/doctest.h>
 
+#include <chrono>
+
 #include <atomic>
 #include <memory>
 #include <string>
@@ -308,6 +310,47 @@ TEST_CASE("the path graph is built once per moment of the links, and an edit mak
     CHECK(r.path_graph(s.navmesh) == second);
     r.remove_link(rope);
     CHECK(r.path_graph(s.navmesh)->links_ptr()->empty());
+}
+
+TEST_CASE("waiting for a path: without workers the waiting thread plans, with them it sleeps; never from a callback") {
+    using namespace std::chrono_literals;
+    constexpr auto forever = std::chrono::steady_clock::duration::max();
+    Scene s;
+    nl::PathQuery query;
+    query.start = Vec3(1.0f, 0.0f, 2.0f);
+    query.goal = Vec3(2.0f, 0.0f, 2.0f);
+    query.agent.radius = 0.3f;
+    nl::PathQueue& queue = s.world->paths();
+    std::string refused;
+    std::vector<Handle> tickets;
+    for (int i = 0; i < 3; ++i) {
+        tickets.push_back(queue.submit(s.world->navmeshes().path_graph(s.navmesh), query, [&](Handle t, nl::PathOutcome) {
+            refused = nl::test::message_of([&] { queue.wait(t, 0s); });
+        }));
+    }
+    CHECK(queue.wait(tickets[1], 0s) == nl::PathOutcome::Pending);  // a zero timeout only looks
+    CHECK(queue.poll(tickets[0]) == nl::PathOutcome::Pending);
+    CHECK(queue.wait(tickets[1], forever) == nl::PathOutcome::Complete);
+    CHECK(queue.poll(tickets[0]) == nl::PathOutcome::Complete);  // planned first: oldest first
+    CHECK(queue.poll(tickets[2]) == nl::PathOutcome::Pending);   // and no further than needed
+    CHECK(refused == "a path callback cannot wait for a path: it runs on a thread that finishes them");
+    CHECK(queue.wait(tickets[2], 1h) == nl::PathOutcome::Complete);
+    queue.release(tickets[2]);
+    CHECK(nl::test::code_of([&] { queue.wait(tickets[2], forever); }) == nl::ErrorCode::InvalidHandle);
+
+    // With path workers the waiting thread sleeps until a worker has finished the request.
+    nl::WorldSettings settings;
+    settings.path_worker_count = 2;
+    auto threaded = std::make_unique<nl::World>(std::move(settings));
+    const Handle navmesh = threaded->add_navmesh(platform_tops());
+    threaded->level().add_mesh(two_platforms(), nl::Transform::Identity(), 0, 0);
+    std::vector<Handle> many;
+    for (int i = 0; i < 64; ++i) many.push_back(threaded->paths().submit(threaded->navmeshes().path_graph(navmesh), query, nullptr));
+    for (Handle t : many) {
+        const nl::PathOutcome outcome = threaded->paths().wait(t, forever);
+        CHECK(outcome == nl::PathOutcome::Complete);
+        CHECK(threaded->paths().poll(t) == outcome);
+    }
 }
 
 TEST_CASE("the path queue: a search-work budget, and finished requests taken once on the host's thread") {
