@@ -211,7 +211,7 @@ TriangleMesh level_triangles_for_plugin(void* context) {
 
 void record_build_settings(void* context, std::string_view settings_json) {
     if (!running_build || &running_build->builder != context)
-        fail(ErrorCode::InvalidArgument, "record_build_settings is called from a navmesh build, on its thread");
+        fail(ErrorCode::InvalidArgument, "record_build_settings was called outside a navmesh build of this plugin on this thread");
     running_build->settings_used.assign(settings_json);
 }
 

@@ -20,6 +20,12 @@ PathResult failed(ErrorCode code) {
 // Set while this thread runs a path callback.
 thread_local bool in_path_callback = false;
 
+struct InPathCallback {
+    InPathCallback() : outer(in_path_callback) { in_path_callback = true; }
+    ~InPathCallback() { in_path_callback = outer; }
+    bool outer;
+};
+
 PathResult cancelled() {
     PathResult result;
     result.outcome = PathOutcome::Cancelled;
@@ -218,16 +224,10 @@ void PathQueue::finish(std::unique_lock<std::mutex>& lock, Handle h, PathResult 
     request_finished_.notify_all();
     if (callback) {
         lock.unlock();
-        const bool outer = in_path_callback;
-        in_path_callback = true;
-        try {
+        {
+            const InPathCallback marked;
             callback(h, outcome);
-        } catch (...) {
-            in_path_callback = outer;
-            lock.lock();
-            throw;
         }
-        in_path_callback = outer;
         lock.lock();
     }
     ++finished_;  // after the callback: a host that waits for `finished` may free what it reads

@@ -89,6 +89,23 @@ void World::remove_mesh(Handle mesh) {
     level_->remove_mesh(mesh);
 }
 
+namespace {
+
+// What builder `name` said it used, as a compact JSON object; Internal (a builder bug) for anything else.
+std::string settings_record(const std::string& name, const std::string& said) {
+    nlohmann::json used;
+    try {
+        used = parse_json(said, "the settings it used");
+    } catch (const Error& e) {
+        fail(ErrorCode::Internal, "builder '", name, "' said it used settings that are not JSON: ", e.what());
+    }
+    if (!used.is_object())
+        fail(ErrorCode::Internal, "builder '", name, "' said it used settings that are not a JSON object: ", json_excerpt(used));
+    return used.dump();
+}
+
+}  // namespace
+
 Handle World::build_navmesh(const NavMeshBuildRequest& request) {
     NavMeshBuilder* builder = plugins_.find_navmesh_builder(request.builder);
     if (!builder) {
@@ -106,16 +123,7 @@ Handle World::build_navmesh(const NavMeshBuildRequest& request) {
     MadeFor made_for;
     made_for.builder = request.builder;
     if (!built.settings_used.empty()) {
-        nlohmann::json used;
-        try {
-            used = parse_json(built.settings_used, "the settings it used");
-        } catch (const Error& e) {
-            fail(ErrorCode::Internal, "builder '", request.builder, "' said it used settings that are not JSON: ", e.what());
-        }
-        if (!used.is_object())
-            fail(ErrorCode::Internal, "builder '", request.builder, "' said it used settings that are not a JSON object: ",
-                 json_excerpt(used));
-        made_for.builder_settings = used.dump();
+        made_for.builder_settings = settings_record(request.builder, built.settings_used);
     } else if (request.settings_json) {
         made_for.builder_settings.assign(request.settings_json, request.settings_json_length);
     }
