@@ -1,42 +1,85 @@
-//! Links libnavlink.so from the CMake build, and writes the C compiler's view of the headers' structs and
-//! constants for `tests/layout.rs`.
+//! Finds and links libnavlink, and writes the C compiler's view of the headers' structs and constants
+//! for `tests/layout.rs`.
 //!
-//! Environment (each optional):
-//! - `NAVLINK_LIB_DIR`: folder holding libnavlink.so (default: `build/capi` of this source tree). Added to
-//!   the link search path and, as an rpath, to this package's test binaries; dependents get it as
-//!   `DEP_NAVLINK_LIB_DIR` (the `navlink` crate adds the rpath to its own).
+//! Where the library is (build/find_library.rs), in this order:
+//! 1. `NAVLINK_LIB_DIR`: the folder holding libnavlink.so (a CMake build's `capi` folder).
+//! 2. pkg-config's `navlink.pc` (an installed NavLink; `PKG_CONFIG_PATH` for a prefix pkg-config does not
+//!    search): its `libdir`, and its `-I` folders for the headers.
+//! 3. Otherwise the build fails, saying what to set.
+//!
+//! The folder goes on the link search path and, as an rpath, into this package's test binaries;
+//! dependents get it as `DEP_NAVLINK_LIB_DIR` (`links = "navlink"`), which the `navlink` crate turns into
+//! an rpath for its own tests and examples. A program of yours needs the same (docs/bindings.md, Rust).
+//!
+//! Other environment (each optional):
+//! - `NAVLINK_STATIC=1`: link libnavlink.a instead, followed by `NAVLINK_STATIC_LIBS` (space-separated
+//!   library names), else navlink.pc's `Libs.private`, else `stdc++ tbb dl pthread`. No rpath then.
 //! - `NAVLINK_INCLUDE_DIRS`: folders holding `navlink/navlink.h`, `recast.h`, `plugin.h` and the generated
-//!   `version.h`, separated as PATH is (default: the source tree's `capi/include` and `plugins/include`, and
-//!   `$NAVLINK_LIB_DIR/include`; for an installed NavLink, `PREFIX/include` alone).
+//!   `version.h`, separated as PATH is (default: pkg-config's; with NAVLINK_LIB_DIR, the source tree's
+//!   `capi/include` and `plugins/include`, and `$NAVLINK_LIB_DIR/include`).
 //! - `CC`: the C compiler for the layout probe (default `cc`).
 use std::env;
 use std::fs;
 use std::path::{Path, PathBuf};
 
+#[path = "build/find_library.rs"]
+mod find_library;
 #[path = "build/layout_probe.rs"]
 mod layout_probe;
+
+use find_library::{Linking, PkgConfig};
 
 fn main() {
     let manifest = PathBuf::from(env::var("CARGO_MANIFEST_DIR").unwrap());
     let source_root = manifest.join("../../..");
-    for var in ["NAVLINK_LIB_DIR", "NAVLINK_INCLUDE_DIRS", "CC"] {
+    for var in [
+        "NAVLINK_LIB_DIR",
+        "NAVLINK_INCLUDE_DIRS",
+        "NAVLINK_STATIC",
+        "NAVLINK_STATIC_LIBS",
+        "PKG_CONFIG",
+        "PKG_CONFIG_PATH",
+        "PKG_CONFIG_LIBDIR",
+        "PKG_CONFIG_SYSROOT_DIR",
+        "CC",
+    ] {
         println!("cargo:rerun-if-env-changed={}", var);
     }
     println!("cargo:rerun-if-changed=build");
 
-    let lib_dir = env::var_os("NAVLINK_LIB_DIR").map(PathBuf::from).unwrap_or_else(|| source_root.join("build/capi"));
-    let lib_dir = fs::canonicalize(&lib_dir).unwrap_or(lib_dir);
-    if !lib_dir.join("libnavlink.so").exists() {
-        println!("cargo:warning=no libnavlink.so in {} (set NAVLINK_LIB_DIR to the CMake build's capi folder)", lib_dir.display());
-    }
+    let linking = if env::var_os("NAVLINK_STATIC").map_or(false, |v| v == "1") { Linking::Static } else { Linking::Shared };
+    let pkg_config = PkgConfig { program: env::var_os("PKG_CONFIG").unwrap_or_else(|| "pkg-config".into()), env: Vec::new() };
+    let target_os = env::var("CARGO_CFG_TARGET_OS").unwrap_or_default();
+    let source_build_dir = fs::canonicalize(source_root.join("build/capi")).unwrap_or_else(|_| source_root.join("build/capi"));
+    let found = match find_library::find(&|name| env::var_os(name), &pkg_config, &target_os, linking, &source_build_dir) {
+        Ok(found) => found,
+        Err(message) => {
+            // Cargo prints a failed build script's stderr: the message is the whole explanation.
+            eprintln!("{}", message);
+            std::process::exit(1);
+        }
+    };
+    let lib_dir = fs::canonicalize(&found.lib_dir).unwrap_or_else(|_| found.lib_dir.clone());
     println!("cargo:rustc-link-search=native={}", lib_dir.display());
-    println!("cargo:rustc-link-lib=dylib=navlink");
-    // So this package's tests find the library without LD_LIBRARY_PATH.
-    println!("cargo:rustc-link-arg=-Wl,-rpath,{}", lib_dir.display());
-    println!("cargo:lib_dir={}", lib_dir.display());
+    match linking {
+        Linking::Shared => {
+            println!("cargo:rustc-link-lib=dylib=navlink");
+            // So this package's tests find the library without LD_LIBRARY_PATH.
+            println!("cargo:rustc-link-arg=-Wl,-rpath,{}", lib_dir.display());
+            // Only a shared library is needed at run time, so only then do dependents get a folder to rpath.
+            println!("cargo:lib_dir={}", lib_dir.display());
+        }
+        Linking::Static => {
+            println!("cargo:rustc-link-lib=static=navlink");
+            for dep in &found.static_deps {
+                println!("cargo:rustc-link-lib=dylib={}", dep);
+            }
+        }
+    }
 
     let include_dirs: Vec<PathBuf> = match env::var_os("NAVLINK_INCLUDE_DIRS") {
         Some(dirs) => env::split_paths(&dirs).collect(),
+        None if !found.include_dirs.is_empty() => found.include_dirs.clone(),
         None => vec![source_root.join("capi/include"), source_root.join("plugins/include"), lib_dir.join("include")],
     };
     let out_dir = PathBuf::from(env::var("OUT_DIR").unwrap());

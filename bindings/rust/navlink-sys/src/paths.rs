@@ -35,6 +35,9 @@ pub const NL_PATH_GOAL_OFF_NAVMESH: nl_path_outcome = 5;
 pub const NL_PATH_CANCELLED: nl_path_outcome = 6;
 pub const NL_PATH_FAILED: nl_path_outcome = 7;
 
+/// `nl_path_wait`'s timeout that never ends.
+pub const NL_PATH_WAIT_FOREVER: u32 = 0xffff_ffff;
+
 /// `nl_path_callback*`: called exactly once per accepted request, from the thread that finished it.
 pub type nl_path_callback =
     Option<unsafe extern "C" fn(user: *mut c_void, ticket: nl_path_ticket, outcome: nl_path_outcome)>;
@@ -163,6 +166,15 @@ extern "C" {
         -> nl_status;
     pub fn nl_path_poll(world: *const nl_world, ticket: nl_path_ticket, out_outcome: *mut nl_path_outcome)
         -> nl_status;
+    /// Blocks until the request finished (SUCCESS) or `timeout_ms` passed (IN_PROGRESS, outcome PENDING);
+    /// with path_worker_count 0 the waiting thread plans queued requests itself. INVALID_ARGUMENT from
+    /// inside a path callback.
+    pub fn nl_path_wait(
+        world: *mut nl_world,
+        ticket: nl_path_ticket,
+        timeout_ms: u32,
+        out_outcome: *mut nl_path_outcome,
+    ) -> nl_status;
     pub fn nl_path_get_result(
         world: *const nl_world,
         ticket: nl_path_ticket,
