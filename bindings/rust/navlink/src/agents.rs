@@ -2,7 +2,7 @@
 //! way. `World::step` moves them all; read their states (`agents`) and the step's events (`agent_events`)
 //! in bulk afterwards.
 use crate::error::{check, Result};
-use crate::list::two_call;
+use crate::list::two_call_as;
 use crate::types::{AgentCapabilities, AgentDef, AgentEvent, AgentId, AgentInfo, AgentTrajectory, MeshId, PathPoint};
 use crate::world::World;
 use navlink_sys as sys;
@@ -10,7 +10,7 @@ use navlink_sys as sys;
 /// A walker (`default_agent_capabilities()`), height 2, speed 3.5, acceleration 8, gravity 9.81, avoidance
 /// on, on the null navmesh at the origin: set `navmesh` and `position`.
 pub fn default_agent_def() -> AgentDef {
-    unsafe { sys::nl_default_agent_def() }
+    AgentDef::default()
 }
 
 /// Where an `AgentInfo` says the agent stands (navlink.h 0.3), as Rust values. The raw fields stay:
@@ -34,11 +34,12 @@ impl AgentInfoExt for AgentInfo {
 }
 
 impl World {
-    /// Adds an agent standing still (`agent_state::IDLE`) at the navmesh point of `def.position`
+    /// Adds an agent standing still (`AgentState::Idle`) at the navmesh point of `def.position`
     /// (NOT_FOUND when it is off the navmesh).
     pub fn add_agent(&self, def: &AgentDef) -> Result<AgentId> {
+        let def = def.to_c(unsafe { sys::nl_default_agent_def() });
         let mut id = AgentId::default();
-        check(unsafe { sys::nl_agent_add(self.raw(), def, &mut id) })?;
+        check(unsafe { sys::nl_agent_add(self.raw(), &def, &mut id) })?;
         Ok(id)
     }
 
@@ -58,7 +59,7 @@ impl World {
         check(unsafe { sys::nl_agent_set_destination(self.raw(), agent, destination.as_ptr()) }).map(drop)
     }
 
-    /// Forgets the destination: the agent stands (`agent_state::IDLE`); one in the air lands first.
+    /// Forgets the destination: the agent stands (`AgentState::Idle`); one in the air lands first.
     pub fn stop_agent(&self, agent: AgentId) -> Result<()> {
         check(unsafe { sys::nl_agent_stop(self.raw(), agent) }).map(drop)
     }
@@ -79,28 +80,28 @@ impl World {
     }
 
     /// Advances every agent by `dt` seconds (finite, >= 0) on the world's workers, with the same result
-    /// whatever their number. An agent's trouble is its `agent_state::FAILED` and its event, not an `Err`.
+    /// whatever their number. An agent's trouble is its `AgentState::Failed` and its event, not an `Err`.
     pub fn step(&self, dt: f32) -> Result<()> {
         check(unsafe { sys::nl_world_step(self.raw(), dt) }).map(drop)
     }
 
     pub fn agent_info(&self, agent: AgentId) -> Result<AgentInfo> {
-        let mut info = AgentInfo::default(); // size set
+        let mut info = sys::nl_agent_info_init();
         check(unsafe { sys::nl_agent_get_info(self.raw(), agent, &mut info) })?;
-        Ok(info)
+        Ok(info.into())
     }
 
     /// Every agent's state, in a stable order until an agent is removed.
     pub fn agents(&self) -> Result<Vec<AgentInfo>> {
-        // two_call's buffer is of AgentInfo::default(), whose size tells the library the element size.
-        two_call(|buffer, capacity, count| unsafe { sys::nl_world_get_agents(self.raw(), buffer, capacity, count) })
+        // two_call's buffer is of nl_agent_info::default(), whose size tells the library the element size.
+        two_call_as(|buffer, capacity, count| unsafe { sys::nl_world_get_agents(self.raw(), buffer, capacity, count) })
     }
 
     /// The path points the agent has yet to reach, the next first: where it walks, and at which point it
     /// takes which link (`segment`, `link`). A route that leaves its navmesh ends at the take-off of the
     /// cross link, with that link.
     pub fn agent_corners(&self, agent: AgentId) -> Result<Vec<PathPoint>> {
-        two_call(|buffer, capacity, count| unsafe { sys::nl_agent_get_corners(self.raw(), agent, buffer, capacity, count) })
+        two_call_as(|buffer, capacity, count| unsafe { sys::nl_agent_get_corners(self.raw(), agent, buffer, capacity, count) })
     }
 
     /// The trajectory of the link the agent is taking now, or `None` while it is on the ground (the
@@ -108,13 +109,13 @@ impl World {
     /// a navmesh that rides a moving mesh is given where the mesh is now; a cross link is flown in the
     /// world, to where its landing was expected to be at landing time.
     pub fn agent_trajectory(&self, agent: AgentId) -> Result<Option<AgentTrajectory>> {
-        let mut trajectory = AgentTrajectory::default(); // size set
+        let mut trajectory = sys::nl_agent_trajectory_init();
         check(unsafe { sys::nl_agent_get_trajectory(self.raw(), agent, &mut trajectory) })?;
-        Ok((trajectory.kind != sys::NL_TRAJECTORY_NONE).then_some(trajectory))
+        Ok((trajectory.kind != sys::NL_TRAJECTORY_NONE).then(|| AgentTrajectory::from(trajectory)))
     }
 
     /// The events of the last `step`, in agent order. They stay until the next step: read them once per step.
     pub fn agent_events(&self) -> Result<Vec<AgentEvent>> {
-        two_call(|buffer, capacity, count| unsafe { sys::nl_world_get_agent_events(self.raw(), buffer, capacity, count) })
+        two_call_as(|buffer, capacity, count| unsafe { sys::nl_world_get_agent_events(self.raw(), buffer, capacity, count) })
     }
 }

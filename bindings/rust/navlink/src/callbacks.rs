@@ -3,11 +3,13 @@
 //! behaviour, so a panic is either carried back to the caller's thread (progress) or reported on
 //! stderr (log and path callbacks, which may run on a NavLink worker with nobody to resume it).
 use crate::error::borrowed_str;
-use crate::paths::PathOutcome;
+use crate::kinds::PathOutcome;
+use crate::paths::{fill_finished_slot, FinishedSlot};
 use crate::types::PathTicket;
 use std::any::Any;
 use std::os::raw::{c_char, c_void};
 use std::panic::{catch_unwind, AssertUnwindSafe};
+use std::sync::{Arc, Mutex};
 
 /// What the log callback's `user` points to.
 pub(crate) type LogBox = Box<dyn Fn(u32, u32, &str) + Send + Sync>;
@@ -43,13 +45,28 @@ pub(crate) unsafe extern "C" fn progress(user: *mut c_void, fraction: f32, stage
     }
 }
 
-/// What a path request's `user` points to: called once, then freed.
+/// A user's path closure: called once, on whatever thread finishes the request.
 pub(crate) type PathBox = Box<dyn FnOnce(PathTicket, PathOutcome) + Send>;
+
+/// What a path request's `user` points to: called back once, then freed.
+pub(crate) struct PathCallback {
+    /// Read by the request's `Future`.
+    pub finished: Arc<Mutex<FinishedSlot>>,
+    pub on_finished: Option<PathBox>,
+}
 
 pub(crate) unsafe extern "C" fn path_finished(user: *mut c_void, ticket: PathTicket, outcome: u32) {
     // navlink.h: exactly once per accepted request, so the box is taken back here.
-    let handler: Box<PathBox> = Box::from_raw(user as *mut PathBox);
-    if catch_unwind(AssertUnwindSafe(move || handler(ticket, PathOutcome::from_raw(outcome)))).is_err() {
-        eprintln!("navlink: a path callback panicked (ignored; the request finished normally)");
+    let callback: Box<PathCallback> = Box::from_raw(user as *mut PathCallback);
+    let outcome = PathOutcome::from_raw(outcome);
+    // The closure first: a task woken by the slot finds what the closure did already done.
+    if let Some(handler) = callback.on_finished {
+        if catch_unwind(AssertUnwindSafe(move || handler(ticket, outcome))).is_err() {
+            eprintln!("navlink: a path callback panicked (ignored; the request finished normally)");
+        }
+    }
+    // A waker is foreign code: it must not unwind into C either.
+    if catch_unwind(AssertUnwindSafe(|| fill_finished_slot(&callback.finished, outcome))).is_err() {
+        eprintln!("navlink: waking a path request's task panicked (ignored)");
     }
 }

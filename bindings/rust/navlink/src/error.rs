@@ -37,7 +37,47 @@ impl Error {
     pub fn has(&self, bit: u32) -> bool {
         self.status & bit != 0
     }
+
+    /// What went wrong, from the status's detail bits (the first of `ERROR_KINDS` that is set).
+    pub fn kind(&self) -> ErrorKind {
+        ERROR_KINDS.iter().find(|(bit, _)| self.has(*bit)).map_or(ErrorKind::Other, |(_, kind)| *kind)
+    }
 }
+
+/// What went wrong in a failed call: the detail of its `nl_status`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[non_exhaustive]
+pub enum ErrorKind {
+    InvalidArgument,
+    /// A stale or null id or ticket (removed, released, or another world's).
+    InvalidHandle,
+    BufferTooSmall,
+    OutOfMemory,
+    Cancelled,
+    NotFound,
+    Internal,
+    Io,
+    Parse,
+    /// Not a NavLink file, or a newer format, or a plugin for another ABI.
+    VersionMismatch,
+    /// A detail this binding has no name for (a newer library's), or none.
+    Other,
+}
+
+/// Detail bits to kinds, in the order `Error::kind` looks (a status may carry several: the caller's
+/// mistake comes before what followed from it).
+const ERROR_KINDS: [(u32, ErrorKind); 10] = [
+    (sys::NL_STATUS_INVALID_HANDLE, ErrorKind::InvalidHandle),
+    (sys::NL_STATUS_INVALID_ARGUMENT, ErrorKind::InvalidArgument),
+    (sys::NL_STATUS_BUFFER_TOO_SMALL, ErrorKind::BufferTooSmall),
+    (sys::NL_STATUS_OUT_OF_MEMORY, ErrorKind::OutOfMemory),
+    (sys::NL_STATUS_CANCELLED, ErrorKind::Cancelled),
+    (sys::NL_STATUS_NOT_FOUND, ErrorKind::NotFound),
+    (sys::NL_STATUS_IO_ERROR, ErrorKind::Io),
+    (sys::NL_STATUS_PARSE_ERROR, ErrorKind::Parse),
+    (sys::NL_STATUS_VERSION_MISMATCH, ErrorKind::VersionMismatch),
+    (sys::NL_STATUS_INTERNAL_ERROR, ErrorKind::Internal),
+];
 
 impl fmt::Display for Error {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {

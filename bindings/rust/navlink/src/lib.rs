@@ -14,25 +14,28 @@
 mod agents;
 mod callbacks;
 mod error;
+mod kinds;
 mod level;
 mod links;
 mod list;
 mod navmesh;
 mod navmesh_files;
 mod paths;
+mod plain;
 mod plugins;
 mod types;
 mod world;
 
 pub use agents::{default_agent_def, AgentInfoExt};
-pub use error::{status_string, Error, Result};
+pub use error::{status_string, Error, ErrorKind, Result};
+pub use kinds::{AgentEventKind, AgentReason, AgentState, LinkKind, PathOutcome, TrajectoryKind};
 pub use level::MeshOptions;
 pub use links::{
     default_link_def, default_link_settings, link_settings_from_json, LinkDefExt, LinkExt, LinksLoadOptions, Progress,
 };
 pub use navmesh::{default_agent_type, default_recast_settings, NavmeshBuild, NavmeshDetail, NavmeshInput};
 pub use navmesh_files::{default_navmesh_load_def, describe_navmesh_file, NavmeshLoadOptions};
-pub use paths::{default_agent_capabilities, FinishedPath, PathBudget, PathOutcome, PathQuery, PathResult};
+pub use paths::{default_agent_capabilities, FinishedPath, PathBudget, PathQuery, PathRequest, PathResult};
 pub use plugins::PluginSummary;
 pub use types::*;
 pub use world::{HostTasks, LogFn, World, WorldOptions};

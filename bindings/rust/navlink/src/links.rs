@@ -87,14 +87,20 @@ impl LinkExt for Link {
 }
 
 pub fn default_link_settings() -> LinkSettings {
-    unsafe { sys::nl_default_link_settings() }
+    LinkSettings::default()
+}
+
+/// The C settings for `settings` (the defaults when `None`).
+fn c_link_settings(settings: Option<&LinkSettings>) -> sys::nl_link_settings {
+    let defaults = unsafe { sys::nl_default_link_settings() };
+    settings.map_or(defaults, |s| s.to_c(defaults))
 }
 
 /// Applies a JSON object's keys to `base` (the defaults when `None`) and validates the result.
 pub fn link_settings_from_json(json: &str, base: Option<LinkSettings>) -> Result<LinkSettings> {
-    let mut settings = base.unwrap_or_else(default_link_settings);
+    let mut settings = c_link_settings(base.as_ref());
     check(unsafe { sys::nl_link_settings_from_json(non_null(json), json.len(), &mut settings) })?;
-    Ok(settings)
+    Ok(settings.into())
 }
 
 /// A pointer to the text, never null (an empty string is still "given").
@@ -174,7 +180,7 @@ impl World {
         plugin_settings_json: Option<&str>,
         progress: Option<Progress<'_>>,
     ) -> Result<LinkGenerationReport> {
-        let mut settings = settings.copied().unwrap_or_else(default_link_settings);
+        let mut settings = c_link_settings(settings);
         if let Some(json) = plugin_settings_json {
             settings.plugin_settings_json = non_null(json);
             settings.plugin_settings_json_length = json.len();
@@ -203,7 +209,7 @@ impl World {
         settings: Option<&LinkSettings>,
         progress: Option<Progress<'_>>,
     ) -> Result<LinkGenerationReport> {
-        let settings = settings.copied().unwrap_or_else(default_link_settings);
+        let settings = c_link_settings(settings);
         let mut report = LinkGenerationReport::default(); // size set
         with_progress(progress, |function, user| unsafe {
             sys::nl_navmesh_generate_cross_links(self.raw(), first, second, tolerance, &settings, function, user, &mut report)

@@ -22,3 +22,8 @@ pub(crate) fn two_call<T: Clone + Default>(mut call: impl FnMut(*mut T, u32, &mu
         return Ok(items);
     }
 }
+
+/// `two_call` over C elements, each turned into its plain Rust struct.
+pub(crate) fn two_call_as<C: Clone + Default, R: From<C>>(call: impl FnMut(*mut C, u32, &mut u32) -> u32) -> Result<Vec<R>> {
+    Ok(two_call(call)?.into_iter().map(R::from).collect())
+}

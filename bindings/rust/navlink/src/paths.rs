@@ -1,42 +1,18 @@
-//! Path requests: planned now (`find_path`) or queued with tickets (`request_path`...).
-use crate::callbacks::{self, PathBox};
-use crate::error::{check, Result};
-use crate::types::{AgentCapabilities, NavmeshId, PathPoint, PathQueueStats, PathTicket};
+//! Path requests: planned now (`find_path`) or queued (`request_path`), each queued one a
+//! [`PathRequest`] to poll, wait for or await, released when dropped.
+use crate::callbacks::{self, PathBox, PathCallback};
+use crate::error::{check, Error, Result};
+use crate::kinds::PathOutcome;
+use crate::types::{AgentCapabilities, NavmeshId, PathPoint, PathQueueStats, PathSummary, PathTicket};
 use crate::world::World;
 use navlink_sys as sys;
+use std::future::Future;
 use std::os::raw::c_void;
+use std::pin::Pin;
 use std::ptr;
-
-/// How a request ended (`nl_path_outcome`).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum PathOutcome {
-    Pending,
-    Complete,
-    Partial,
-    NoPath,
-    StartOffNavmesh,
-    GoalOffNavmesh,
-    Cancelled,
-    Failed,
-    /// A value a newer library may add.
-    Other(u32),
-}
-
-impl PathOutcome {
-    pub fn from_raw(raw: u32) -> PathOutcome {
-        match raw {
-            sys::NL_PATH_PENDING => PathOutcome::Pending,
-            sys::NL_PATH_COMPLETE => PathOutcome::Complete,
-            sys::NL_PATH_PARTIAL => PathOutcome::Partial,
-            sys::NL_PATH_NO_PATH => PathOutcome::NoPath,
-            sys::NL_PATH_START_OFF_NAVMESH => PathOutcome::StartOffNavmesh,
-            sys::NL_PATH_GOAL_OFF_NAVMESH => PathOutcome::GoalOffNavmesh,
-            sys::NL_PATH_CANCELLED => PathOutcome::Cancelled,
-            sys::NL_PATH_FAILED => PathOutcome::Failed,
-            other => PathOutcome::Other(other),
-        }
-    }
-}
+use std::sync::{Arc, Mutex, MutexGuard};
+use std::task::{Context, Poll, Waker};
+use std::time::Duration;
 
 /// A walker: radius 0.6, no jumps, no drops.
 pub fn default_agent_capabilities() -> AgentCapabilities {
@@ -94,13 +70,17 @@ impl PathQuery {
 /// What a finished request found.
 #[derive(Clone, Debug, PartialEq)]
 pub struct PathResult {
-    pub info: sys::nl_path_result,
+    pub summary: PathSummary,
     pub points: Vec<PathPoint>,
 }
 
 impl PathResult {
     pub fn outcome(&self) -> PathOutcome {
-        PathOutcome::from_raw(self.info.outcome)
+        self.summary.outcome
+    }
+
+    fn from_c(summary: sys::nl_path_result, points: Vec<sys::nl_path_point>) -> PathResult {
+        PathResult { summary: summary.into(), points: points.into_iter().map(PathPoint::from).collect() }
     }
 }
 
@@ -180,8 +160,8 @@ impl World {
     /// Plans a path now, on this thread (for tools and tests; games queue requests).
     pub fn find_path(&self, query: &PathQuery) -> Result<PathResult> {
         let def = query.def();
-        // PathPoint::default() sets the size the library lays the points out with.
-        let mut points = vec![PathPoint::default(); FIRST_POINT_CAPACITY];
+        // nl_path_point::default() sets the size the library lays the points out with.
+        let mut points = vec![sys::nl_path_point::default(); FIRST_POINT_CAPACITY];
         loop {
             let mut info = empty_result();
             let mut count = 0;
@@ -190,47 +170,59 @@ impl World {
             };
             if buffer_too_small(status) {
                 // More points than room: this thread kept the plan, the second call copies it.
-                points = vec![PathPoint::default(); count as usize];
+                points = vec![sys::nl_path_point::default(); count as usize];
                 continue;
             }
             check(status)?;
             points.truncate(count as usize);
-            return Ok(PathResult { info, points });
+            return Ok(PathResult::from_c(info, points));
         }
     }
 
-    /// Queues a request; poll its ticket, read the result, release it.
-    pub fn request_path(&self, query: &PathQuery) -> Result<PathTicket> {
+    /// Queues a request: poll, wait for or await the [`PathRequest`]; dropping it releases the ticket.
+    pub fn request_path(&self, query: &PathQuery) -> Result<PathRequest<'_>> {
         self.submit(query, None)
     }
 
     /// Queues a request; `on_finished` runs exactly once when it finishes, on a NavLink path worker, in
-    /// `process_paths`, in `cancel_path` or when the world is dropped. A panic in it is caught and reported.
-    pub fn request_path_with<F>(&self, query: &PathQuery, on_finished: F) -> Result<PathTicket>
+    /// `process_paths` or a wait, in `cancel_path`, or when the request is dropped unfinished (which
+    /// cancels it). A panic in it is caught and reported.
+    pub fn request_path_with<F>(&self, query: &PathQuery, on_finished: F) -> Result<PathRequest<'_>>
     where
         F: FnOnce(PathTicket, PathOutcome) + Send + 'static,
     {
         self.submit(query, Some(Box::new(on_finished)))
     }
 
-    fn submit(&self, query: &PathQuery, on_finished: Option<PathBox>) -> Result<PathTicket> {
+    fn submit(&self, query: &PathQuery, on_finished: Option<PathBox>) -> Result<PathRequest<'_>> {
         let mut def = query.def();
-        let user = on_finished.map(|f| Box::into_raw(Box::new(f)));
-        if let Some(user) = user {
-            def.callback = Some(callbacks::path_finished);
-            def.user = user as *mut c_void;
-        }
+        // Every request calls back, to fill the slot its future reads: the callback may run before
+        // nl_path_request returns, so the slot exists first.
+        let finished = Arc::new(Mutex::new(FinishedSlot::default()));
+        let user = Box::into_raw(Box::new(PathCallback { finished: finished.clone(), on_finished }));
+        def.callback = Some(callbacks::path_finished);
+        def.user = user as *mut c_void;
         let mut ticket = PathTicket::default();
         let status = unsafe { sys::nl_path_request(self.raw(), &def, &mut ticket) };
         if sys::nl_failed(status) {
             let error = check(status).unwrap_err();
-            if let Some(user) = user {
-                // A refused request never calls back: the closure is ours to free.
-                drop(unsafe { Box::from_raw(user) });
-            }
+            // A refused request never calls back: the callback's box is ours to free.
+            drop(unsafe { Box::from_raw(user) });
             return Err(error);
         }
-        Ok(ticket)
+        Ok(PathRequest { world: self, ticket, finished, released: false })
+    }
+
+    /// Blocks until the request has finished or `timeout` has passed (`None`: as long as it takes);
+    /// `Pending` on a timeout. `Some(Duration::ZERO)` only looks. With `path_worker_count` 0 this thread
+    /// plans queued requests itself, oldest first, until this one has finished, checking the time between
+    /// requests (a request is never split, so a wait can overrun its timeout by one request).
+    /// `INVALID_ARGUMENT` from inside a path closure (it would wait for itself), `INVALID_HANDLE` for a
+    /// released ticket.
+    pub fn wait_path(&self, ticket: PathTicket, timeout: Option<Duration>) -> Result<PathOutcome> {
+        let mut outcome = sys::NL_PATH_PENDING;
+        check(unsafe { sys::nl_path_wait(self.raw(), ticket, wait_milliseconds(timeout), &mut outcome) })?;
+        Ok(PathOutcome::from_raw(outcome))
     }
 
     /// The request's outcome (`Pending` while it runs).
@@ -252,7 +244,7 @@ impl World {
             if !buffer_too_small(status) {
                 check(status)?;
             }
-            let mut points = vec![PathPoint::default(); count as usize];
+            let mut points = vec![sys::nl_path_point::default(); count as usize];
             let status =
                 unsafe { sys::nl_path_get_result(self.raw(), ticket, &mut info, points.as_mut_ptr(), count, &mut count) };
             if buffer_too_small(status) {
@@ -260,7 +252,7 @@ impl World {
             }
             check(status)?;
             points.truncate(count as usize);
-            return Ok(Some(PathResult { info, points }));
+            return Ok(Some(PathResult::from_c(info, points)));
         }
     }
 
@@ -310,8 +302,132 @@ impl World {
     }
 
     pub fn path_queue_stats(&self) -> Result<PathQueueStats> {
-        let mut stats = PathQueueStats::default(); // size set
+        let mut stats = sys::nl_path_queue_stats_init();
         check(unsafe { sys::nl_path_get_queue_stats(self.raw(), &mut stats) })?;
-        Ok(stats)
+        Ok(stats.into())
+    }
+}
+
+/// `nl_path_wait`'s milliseconds: rounded up, so a short wait still waits; `NL_PATH_WAIT_FOREVER` for
+/// `None` only (a very long timeout stops just short of it).
+fn wait_milliseconds(timeout: Option<Duration>) -> u32 {
+    match timeout {
+        None => sys::NL_PATH_WAIT_FOREVER,
+        Some(timeout) => {
+            let rounded_up = (timeout.as_nanos() + 999_999) / 1_000_000;
+            rounded_up.min(u128::from(sys::NL_PATH_WAIT_FOREVER - 1)) as u32
+        }
+    }
+}
+
+/// What a request's callback leaves for its [`PathRequest`]'s future: the outcome, and the waker of the
+/// task that polled before it came.
+#[derive(Default)]
+pub(crate) struct FinishedSlot {
+    outcome: Option<PathOutcome>,
+    waker: Option<Waker>,
+}
+
+/// Called by the request's callback (any thread): records the outcome and wakes the polling task.
+pub(crate) fn fill_finished_slot(slot: &Mutex<FinishedSlot>, outcome: PathOutcome) {
+    let waker = {
+        let mut slot = lock(slot);
+        slot.outcome = Some(outcome);
+        slot.waker.take()
+    };
+    // Woken outside the lock: the task may be polled on this very thread, inside wake.
+    if let Some(waker) = waker {
+        waker.wake();
+    }
+}
+
+/// Nothing panics while holding the slot's lock, so a poisoned one still holds consistent data.
+fn lock(slot: &Mutex<FinishedSlot>) -> MutexGuard<'_, FinishedSlot> {
+    slot.lock().unwrap_or_else(|poisoned| poisoned.into_inner())
+}
+
+/// A queued path request. It borrows its world, so it cannot outlive it; dropping it releases the
+/// ticket (cancelling the request if unfinished). Wait for it with [`wait`](PathRequest::wait), or
+/// `.await` it: as a `Future` it resolves to the request's result once a path worker, `process_paths`
+/// or a wait on another thread has finished it (with `path_worker_count` 0 and nobody calling
+/// `process_paths`, it never does). Any executor will do; the crate depends on none.
+pub struct PathRequest<'w> {
+    world: &'w World,
+    ticket: PathTicket,
+    finished: Arc<Mutex<FinishedSlot>>,
+    /// Released already (or handed over by `into_ticket`): `Drop` leaves the ticket alone.
+    released: bool,
+}
+
+impl<'w> PathRequest<'w> {
+    /// The raw ticket, as `take_finished_paths` and the request's closure report it.
+    pub fn ticket(&self) -> PathTicket {
+        self.ticket
+    }
+
+    /// The outcome now (`Pending` while it runs).
+    pub fn poll_outcome(&self) -> Result<PathOutcome> {
+        self.world.poll_path(self.ticket)
+    }
+
+    /// `World::wait_path` for this request.
+    pub fn wait(&self, timeout: Option<Duration>) -> Result<PathOutcome> {
+        self.world.wait_path(self.ticket, timeout)
+    }
+
+    /// The result, or `None` while it is pending.
+    pub fn result(&self) -> Result<Option<PathResult>> {
+        self.world.path_result(self.ticket)
+    }
+
+    /// Asks the request to stop (a queued one finishes at once as `Cancelled`).
+    pub fn cancel(&self) -> Result<()> {
+        self.world.cancel_path(self.ticket)
+    }
+
+    /// Releases the ticket now, with the library's answer (dropping releases too, ignoring it).
+    pub fn release(mut self) -> Result<()> {
+        self.released = true;
+        self.world.release_path(self.ticket)
+    }
+
+    /// Gives up ownership of the ticket: it stays valid until `World::release_path`.
+    pub fn into_ticket(mut self) -> PathTicket {
+        self.released = true;
+        self.ticket
+    }
+}
+
+impl std::fmt::Debug for PathRequest<'_> {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("PathRequest").field("ticket", &self.ticket).field("released", &self.released).finish()
+    }
+}
+
+impl Future for PathRequest<'_> {
+    type Output = Result<PathResult>;
+
+    fn poll(self: Pin<&mut Self>, context: &mut Context<'_>) -> Poll<Result<PathResult>> {
+        {
+            let mut slot = lock(&self.finished);
+            if slot.outcome.is_none() {
+                if !slot.waker.as_ref().map_or(false, |w| w.will_wake(context.waker())) {
+                    slot.waker = Some(context.waker().clone());
+                }
+                return Poll::Pending;
+            }
+        }
+        Poll::Ready(self.result().and_then(|result| {
+            result.ok_or_else(|| Error::binding(sys::NL_STATUS_INTERNAL_ERROR, "a finished path request has no result".into()))
+        }))
+    }
+}
+
+impl Drop for PathRequest<'_> {
+    fn drop(&mut self) {
+        if !self.released {
+            // A ticket released through World::release_path already is refused here; nothing to undo.
+            let _ = self.world.release_path(self.ticket);
+        }
     }
 }

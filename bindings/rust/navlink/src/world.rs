@@ -60,6 +60,11 @@ pub struct HostTasks {
     pub user: *mut c_void,
 }
 
+// `World::with_host_tasks`'s contract already requires the callbacks and `user` to be usable from any
+// thread, so the options that carry them may be built on one thread and used on another.
+unsafe impl Send for HostTasks {}
+unsafe impl Sync for HostTasks {}
+
 /// A NavLink world. Its methods may be called from several threads at once (navlink.h); dropping it
 /// destroys the world, finishing queued path requests as cancelled (their callbacks run then).
 pub struct World {

@@ -7,8 +7,8 @@ mod common;
 
 use common::*;
 use navlink::{
-    agent_event, agent_reason, agent_state, default_agent_def, default_agent_type, default_link_def, link_kind, status, sys,
-    trajectory_kind, AgentEvent, AgentId, AgentInfo, AgentInfoExt, AgentType, LinkDef, LinkDefExt, LinkId, MeshId, MeshOptions,
+    default_agent_def, default_agent_type, default_link_def, link_kind, status, sys,
+    AgentEvent, AgentId, AgentInfo, AgentInfoExt, AgentType, LinkDef, LinkDefExt, LinkId, MeshId, MeshOptions,
     NavmeshId, NavmeshInput, World, WorldOptions, MESH_MOVABLE,
 };
 
@@ -40,8 +40,7 @@ fn is_subsequence<T: PartialEq>(expected: &[T], actual: &[T]) -> bool {
 #[test]
 fn defaults() {
     let def = default_agent_def();
-    assert_eq!(def.size as usize, std::mem::size_of::<navlink::AgentDef>());
-    assert!(def.height == 2.0 && def.max_speed == 3.5 && def.max_acceleration == 8.0 && def.avoidance == 1);
+    assert!(def.height == 2.0 && def.max_speed == 3.5 && def.max_acceleration == 8.0 && def.avoidance);
     assert!((def.gravity - 9.81).abs() < 1e-6 && def.takeoff_speed == 0.0 && def.navmesh == NavmeshId::default());
     assert!(def.capabilities.radius == 0.6 && def.capabilities.max_jump_distance == 0.0);
     assert_eq!(WorldOptions::default().agent_paths_per_step, 32);
@@ -55,7 +54,7 @@ fn walker_goes_round_and_jumper_jumps() {
     let walker = add_agent(&world, navmesh, 1.0, 2.0, 0.0, 11);
     let jumper = add_agent(&world, navmesh, 1.0, 3.0, 3.0, 22);
     assert!(walker != jumper && world.is_agent_valid(walker));
-    assert_eq!(world.agent_info(walker).unwrap().state, agent_state::IDLE);
+    assert_eq!(world.agent_info(walker).unwrap().state, navlink::AgentState::Idle);
     let mut jumper_states = vec![world.agent_info(jumper).unwrap().state];
     world.set_agent_destination(walker, [9.0, 0.0, 2.0]).unwrap();
     world.set_agent_destination(jumper, [9.0, 0.0, 3.0]).unwrap();
@@ -66,14 +65,14 @@ fn walker_goes_round_and_jumper_jumps() {
     let mut trajectory = None;
     let mut in_flight: Option<AgentInfo> = None;
     let mut walker_max_z = 0f32;
-    let arrivals = |events: &[AgentEvent]| events.iter().filter(|e| e.kind == agent_event::ARRIVED).count();
+    let arrivals = |events: &[AgentEvent]| events.iter().filter(|e| e.kind == navlink::AgentEventKind::Arrived).count();
     for _ in 0..MAX_STEPS {
         if arrivals(&events) == 2 {
             break;
         }
         world.step(DT).unwrap();
         let step_events = world.agent_events().unwrap();
-        if step_events.iter().any(|e| e.kind == agent_event::PATH_READY) {
+        if step_events.iter().any(|e| e.kind == navlink::AgentEventKind::PathReady) {
             walker_corners = world.agent_corners(walker).unwrap();
             jumper_corners = world.agent_corners(jumper).unwrap();
         }
@@ -87,7 +86,7 @@ fn walker_goes_round_and_jumper_jumps() {
                 if Some(&info.state) != jumper_states.last() {
                     jumper_states.push(info.state);
                 }
-                if info.state == agent_state::JUMPING {
+                if info.state == navlink::AgentState::Jumping {
                     in_flight = Some(*info);
                     if trajectory.is_none() {
                         trajectory = world.agent_trajectory(jumper).unwrap();
@@ -98,40 +97,39 @@ fn walker_goes_round_and_jumper_jumps() {
     }
 
     for e in &events {
-        assert_eq!(e.size as usize, std::mem::size_of::<AgentEvent>());
         assert_eq!(e.user_data, if e.agent == walker { 11 } else { 22 }, "{:?}", e);
     }
-    let ready: Vec<&AgentEvent> = events.iter().filter(|e| e.kind == agent_event::PATH_READY).collect();
-    assert!(ready.len() == 2 && ready.iter().all(|e| e.reason == agent_reason::DESTINATION_SET), "{:?}", ready);
+    let ready: Vec<&AgentEvent> = events.iter().filter(|e| e.kind == navlink::AgentEventKind::PathReady).collect();
+    assert!(ready.len() == 2 && ready.iter().all(|e| e.reason == navlink::AgentReason::DestinationSet), "{:?}", ready);
     assert_eq!(arrivals(&events), 2);
-    assert_eq!(world.agent_info(walker).unwrap().state, agent_state::ARRIVED);
-    assert_eq!(world.agent_info(jumper).unwrap().state, agent_state::ARRIVED);
+    assert_eq!(world.agent_info(walker).unwrap().state, navlink::AgentState::Arrived);
+    assert_eq!(world.agent_info(jumper).unwrap().state, navlink::AgentState::Arrived);
 
     // The walker takes no link: round by the bridge.
-    assert!(!events.iter().any(|e| e.agent == walker && e.kind == agent_event::LINK_STARTED));
+    assert!(!events.iter().any(|e| e.agent == walker && e.kind == navlink::AgentEventKind::LinkStarted));
     assert!(walker_max_z > 8.0, "the walker reached z {}", walker_max_z);
-    assert!(walker_corners.len() >= 2 && walker_corners.iter().all(|p| p.segment == link_kind::WALK), "{:?}", walker_corners);
-    assert_eq!(jumper_corners.iter().filter(|p| p.segment == link_kind::JUMP).count(), 1, "{:?}", jumper_corners);
+    assert!(walker_corners.len() >= 2 && walker_corners.iter().all(|p| p.segment == navlink::LinkKind::Walk), "{:?}", walker_corners);
+    assert_eq!(jumper_corners.iter().filter(|p| p.segment == navlink::LinkKind::Jump).count(), 1, "{:?}", jumper_corners);
 
     // The jumper starts and finishes one generated jump.
     let of_jumper = |kind| events.iter().filter(|e| e.agent == jumper && e.kind == kind).collect::<Vec<_>>();
-    let (started, finished) = (of_jumper(agent_event::LINK_STARTED), of_jumper(agent_event::LINK_FINISHED));
+    let (started, finished) = (of_jumper(navlink::AgentEventKind::LinkStarted), of_jumper(navlink::AgentEventKind::LinkFinished));
     assert!(started.len() == 1 && finished.len() == 1 && started[0].link == finished[0].link, "{:?}", events);
     let jump = world.link(started[0].link).unwrap();
     assert!(jump.kind == link_kind::JUMP && jump.generated == 1);
     let expected = [
-        agent_state::IDLE,
-        agent_state::WAITING,
-        agent_state::WALKING,
-        agent_state::JUMPING,
-        agent_state::WALKING,
-        agent_state::ARRIVED,
+        navlink::AgentState::Idle,
+        navlink::AgentState::Waiting,
+        navlink::AgentState::Walking,
+        navlink::AgentState::Jumping,
+        navlink::AgentState::Walking,
+        navlink::AgentState::Arrived,
     ];
     assert!(is_subsequence(&expected, &jumper_states), "the jumper's states: {:?}", jumper_states);
 
     // Its trajectory, read in the air.
     let t = trajectory.expect("a trajectory while jumping");
-    assert!(t.kind == trajectory_kind::ARC && t.link == started[0].link, "{:?}", t);
+    assert!(t.kind == navlink::TrajectoryKind::Arc && t.link == started[0].link, "{:?}", t);
     assert!(t.duration > 0.0 && t.elapsed >= 0.0 && t.elapsed <= t.duration, "{:?}", t);
     assert!(t.apex[1] > t.from[1].max(t.to[1]) && t.points[0] == t.from && t.points[3] == t.to, "{:?}", t);
     let in_flight = in_flight.unwrap();
@@ -152,7 +150,7 @@ fn bad_input() {
     let off = navlink::AgentDef { navmesh, position: over_the_gap, ..default_agent_def() };
     assert_fails(world.add_agent(&off), status::NOT_FOUND, "def->position is not on the navmesh");
     assert_fails(world.set_agent_destination(agent, over_the_gap), status::NOT_FOUND, "nearest navmesh point");
-    assert_eq!(world.agent_info(agent).unwrap().has_destination, 0, "a refused destination is not kept");
+    assert_eq!(world.agent_info(agent).unwrap().has_destination, false, "a refused destination is not kept");
     assert_fails(world.set_agent_destination(agent, [f32::NAN, 0.0, 0.0]), status::INVALID_ARGUMENT, "point");
     assert_fails(world.step(f32::NAN), status::INVALID_ARGUMENT, "dt");
     assert_fails(world.set_agent_speed(agent, -1.0, 1.0), status::INVALID_ARGUMENT, "max_speed");
@@ -172,8 +170,8 @@ fn bad_input() {
     world.remove_navmesh(navmesh).unwrap();
     world.step(0.1).unwrap();
     let events = world.agent_events().unwrap();
-    assert!(events.len() == 1 && events[0].kind == agent_event::FAILED && events[0].reason == agent_reason::NAVMESH_REMOVED, "{:?}", events);
-    assert_eq!(world.agent_info(agent).unwrap().state, agent_state::FAILED);
+    assert!(events.len() == 1 && events[0].kind == navlink::AgentEventKind::Failed && events[0].reason == navlink::AgentReason::NavmeshRemoved, "{:?}", events);
+    assert_eq!(world.agent_info(agent).unwrap().state, navlink::AgentState::Failed);
 
     // A removed agent's id is stale everywhere.
     world.remove_agent(agent).unwrap();
@@ -284,21 +282,21 @@ fn a_ferry_carries_walkers_across_a_chasm() {
         world.set_mesh_transform(shuttle, &shuttle_at(x)).unwrap();
         world.step(dt as f32).unwrap();
         for e in world.agent_events().unwrap() {
-            assert_ne!(e.kind, agent_event::FAILED, "t {}: {:?}", t, e);
-            if e.kind == agent_event::LINK_STARTED {
+            assert_ne!(e.kind, navlink::AgentEventKind::Failed, "t {}: {:?}", t, e);
+            if e.kind == navlink::AgentEventKind::LinkStarted {
                 taken.push((e.agent, e.link));
             }
-            if e.kind == agent_event::ARRIVED {
+            if e.kind == navlink::AgentEventKind::Arrived {
                 arrived.push((e.agent, world.agent_info(e.agent).unwrap()));
             }
         }
         for info in world.agents().unwrap() {
-            if info.state == agent_state::WAITING && info.link == board {
+            if info.state == navlink::AgentState::Waiting && info.link == board {
                 waited += 1;
             }
             let context = format!("t {}, the shuttle at x {}: {:?}", t, x, info);
             assert!(info.navmesh == ledges || info.navmesh == deck, "{}", context);
-            if [agent_state::JUMPING, agent_state::FALLING, agent_state::TRAVERSING].contains(&info.state) {
+            if [navlink::AgentState::Jumping, navlink::AgentState::Falling, navlink::AgentState::Traversing].contains(&info.state) {
                 // In the air over a cross link (both gangways are): flown in the world.
                 assert!(distance(info.surface_position, info.position) < 1e-3, "in the air: {}", context);
             } else if info.navmesh == deck {
@@ -320,7 +318,7 @@ fn a_ferry_carries_walkers_across_a_chasm() {
     for &walker in &walkers {
         assert!(taken.contains(&(walker, board)) && taken.contains(&(walker, leave)), "{:?} boarded and got off: {:?}", walker, taken);
         let (_, info) = arrived.iter().find(|(id, _)| *id == walker).expect("arrived");
-        assert_eq!((info.state, info.navmesh, info.surface_mesh()), (agent_state::ARRIVED, ledges, None), "{:?}", info);
+        assert_eq!((info.state, info.navmesh, info.surface_mesh()), (navlink::AgentState::Arrived, ledges, None), "{:?}", info);
         // Two bodies share the goal: they stand round it.
         assert!(horizontal_distance(info.position, FERRY_GOAL) < 1.5, "{:?}", info.position);
     }

@@ -127,7 +127,7 @@ fn navmesh_on_a_moving_surface() {
     // Along the raft: the world's +z to -z is the mesh's -x to +x.
     let path = world.find_path(&PathQuery::new(navmesh, [10.0, 0.0, 3.0], [10.0, 0.0, -3.0], walker())).unwrap();
     assert_eq!(path.outcome(), PathOutcome::Complete);
-    assert!((path.info.length - 6.0).abs() < 1e-4, "{} m", path.info.length);
+    assert!((path.summary.length - 6.0).abs() < 1e-4, "{} m", path.summary.length);
     let (first, last) = (path.points[0], *path.points.last().unwrap());
     assert_near(first.position, [10.0, 0.0, 3.0], "first position (world)");
     assert_near(first.surface_position, [-3.0, 0.0, 0.0], "first surface_position (the mesh's space)");

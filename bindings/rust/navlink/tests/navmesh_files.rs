@@ -215,7 +215,7 @@ fn baked_navmesh_file() {
         assert_eq!(w.links(loaded).unwrap().len() as u32, link_count);
         let path = w.find_path(&PathQuery::new(loaded, WEST, EAST, jumper())).unwrap();
         assert_eq!(path.outcome(), PathOutcome::Complete);
-        assert!((path.info.length - original.info.length).abs() < 1e-4, "{} m, {} m", path.info.length, original.info.length);
+        assert!((path.summary.length - original.summary.length).abs() < 1e-4, "{} m, {} m", path.summary.length, original.summary.length);
     };
 
     let fresh = World::new().unwrap();

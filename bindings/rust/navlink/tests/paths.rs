@@ -23,22 +23,22 @@ fn gap_level_with_links(world: &World) -> NavmeshId {
 fn check_jumper_across(world: &World, r: &PathResult) {
     assert_eq!(r.outcome(), PathOutcome::Complete);
     let p = &r.points;
-    let jumps: Vec<usize> = (0..p.len()).filter(|&i| p[i].segment != link_kind::WALK).collect();
-    assert!(jumps.len() == 1 && p[jumps[0]].segment == link_kind::JUMP && r.info.links_used == 1, "{:?}", p);
+    let jumps: Vec<usize> = (0..p.len()).filter(|&i| p[i].segment != navlink::LinkKind::Walk).collect();
+    assert!(jumps.len() == 1 && p[jumps[0]].segment == navlink::LinkKind::Jump && r.summary.links_used == 1, "{:?}", p);
     let j = jumps[0];
     assert!(j + 1 < p.len() && p[j].position[0] < -1.0 && p[j + 1].position[0] > 1.0, "west rim to east rim");
     let link = world.link(p[j].link).unwrap();
     assert!(link.kind == link_kind::JUMP && link.generated == 1);
     assert!(p[j].apex[1] > p[j].position[1].max(p[j + 1].position[1]), "apex above both ends");
-    assert!(p.last().unwrap().segment == link_kind::WALK && p[0].link == Default::default());
+    assert!(p.last().unwrap().segment == navlink::LinkKind::Walk && p[0].link == Default::default());
     assert!(horizontal_distance(p[0].position, WEST) < 0.01 && horizontal_distance(p.last().unwrap().position, EAST) < 0.01);
-    assert!(r.info.length >= 12.0 && r.info.length < 13.0, "{} m", r.info.length);
+    assert!(r.summary.length >= 12.0 && r.summary.length < 13.0, "{} m", r.summary.length);
 }
 
 /// No link for a walker: the path leads to the reachable point nearest the goal, the west rim.
 fn check_walker_stops_at_gap(r: &PathResult) {
     assert_eq!(r.outcome(), PathOutcome::Partial);
-    assert!(r.info.links_used == 0 && r.points.iter().all(|q| q.segment == link_kind::WALK && q.link == Default::default()));
+    assert!(r.summary.links_used == 0 && r.points.iter().all(|q| q.segment == navlink::LinkKind::Walk && q.link == Default::default()));
     assert!(r.points.len() >= 2 && r.points.iter().all(|q| q.position[0] < -1.0), "stays on the west platform");
     assert!(r.points.last().unwrap().position[0] > -2.1, "ends at the west rim");
 }
@@ -57,12 +57,12 @@ fn walker_and_jumper_planned_now() {
     // A jumper whose jump is shorter than the gap is filtered out of every link.
     let short = navlink::AgentCapabilities { max_jump_distance: 1.8, ..jumper() };
     let too_short = world.find_path(&PathQuery::new(navmesh, WEST, EAST, short)).unwrap();
-    assert!(too_short.outcome() == PathOutcome::Partial && too_short.info.links_used == 0);
+    assert!(too_short.outcome() == PathOutcome::Partial && too_short.summary.links_used == 0);
 
     let stroll = world.find_path(&PathQuery::new(navmesh, [-9.0, 0.0, -3.0], [-3.0, 0.0, 3.0], walker())).unwrap();
-    assert!(stroll.outcome() == PathOutcome::Complete && stroll.info.links_used == 0 && stroll.points.len() >= 2);
-    assert!(stroll.points.iter().all(|q| q.segment == link_kind::WALK));
-    assert!(stroll.info.length >= 8.48 && stroll.info.length < 8.6, "{} m", stroll.info.length);
+    assert!(stroll.outcome() == PathOutcome::Complete && stroll.summary.links_used == 0 && stroll.points.len() >= 2);
+    assert!(stroll.points.iter().all(|q| q.segment == navlink::LinkKind::Walk));
+    assert!(stroll.summary.length >= 8.48 && stroll.summary.length < 8.6, "{} m", stroll.summary.length);
 
     let off_start = world.find_path(&PathQuery::new(navmesh, [0.0, -10.0, 30.0], EAST, jumper())).unwrap();
     assert_eq!(off_start.outcome(), PathOutcome::StartOffNavmesh);
@@ -78,10 +78,12 @@ fn queued_with_path_workers_and_closures() {
     let (walker_done, jumper_done) = (sender.clone(), sender);
     let walker_ticket = world
         .request_path_with(&PathQuery::new(navmesh, WEST, EAST, walker()), move |t, o| walker_done.send(("walker", t, o)).unwrap())
-        .unwrap();
+        .unwrap()
+        .into_ticket();
     let jumper_ticket = world
         .request_path_with(&PathQuery::new(navmesh, WEST, EAST, jumper()), move |t, o| jumper_done.send(("jumper", t, o)).unwrap())
-        .unwrap();
+        .unwrap()
+        .into_ticket();
     assert_ne!(walker_ticket, jumper_ticket);
     let mut calls = Vec::new();
     for _ in 0..2 {
@@ -109,14 +111,15 @@ fn queued_with_path_workers_and_closures() {
 fn queued_and_run_by_the_host() {
     let world = World::with_options(WorldOptions { path_worker_count: 0, ..Default::default() }).unwrap();
     let navmesh = gap_level_with_links(&world);
-    let jumper_ticket = world.request_path(&PathQuery::new(navmesh, WEST, EAST, jumper())).unwrap();
+    let jumper_ticket = world.request_path(&PathQuery::new(navmesh, WEST, EAST, jumper())).unwrap().into_ticket();
     let seen = Arc::new(Mutex::new(None));
     let record = Arc::clone(&seen);
     let doomed = world
         .request_path_with(&PathQuery::new(navmesh, WEST, EAST, walker()), move |_, o| {
             *record.lock().unwrap() = Some((o, std::thread::current().id()))
         })
-        .unwrap();
+        .unwrap()
+        .into_ticket();
     let stats = world.path_queue_stats().unwrap();
     assert!(stats.workers == 0 && stats.queued == 2 && stats.submitted == 2, "{:?}", stats);
     assert_eq!(world.poll_path(jumper_ticket).unwrap(), PathOutcome::Pending);
@@ -133,7 +136,7 @@ fn queued_and_run_by_the_host() {
 
     // A request still queued when the world goes: its closure reports it cancelled, once.
     let (sender, last) = mpsc::channel();
-    world.request_path_with(&PathQuery::new(navmesh, WEST, EAST, jumper()), move |_, o| sender.send(o).unwrap()).unwrap();
+    world.request_path_with(&PathQuery::new(navmesh, WEST, EAST, jumper()), move |_, o| sender.send(o).unwrap()).unwrap().into_ticket();
     drop(world);
     assert_eq!(last.try_recv(), Ok(PathOutcome::Cancelled));
     assert!(last.try_recv().is_err());
@@ -150,13 +153,13 @@ fn budgets_and_finished_requests_taken_by_the_host() {
     assert!(default == PathBudget::unlimited() && default.max_requests == 0 && default.max_milliseconds == 0.0 && default.max_search_nodes == 0);
 
     // Budgets: a request is never split, so each limit lets one request through.
-    let a = world.request_path(&jumper_query).unwrap();
-    let b = world.request_path(&walker_query).unwrap();
+    let a = world.request_path(&jumper_query).unwrap().into_ticket();
+    let b = world.request_path(&walker_query).unwrap().into_ticket();
     assert_eq!(world.process_paths(PathBudget::requests(1)).unwrap(), 1);
     assert!(world.poll_path(a).unwrap() == PathOutcome::Complete && world.poll_path(b).unwrap() == PathOutcome::Pending);
-    let c = world.request_path(&jumper_query).unwrap();
-    let d = world.request_path(&walker_query).unwrap();
-    let e = world.request_path(&jumper_query).unwrap();
+    let c = world.request_path(&jumper_query).unwrap().into_ticket();
+    let d = world.request_path(&walker_query).unwrap().into_ticket();
+    let e = world.request_path(&jumper_query).unwrap().into_ticket();
     assert_eq!(world.process_paths(PathBudget::search_nodes(1)).unwrap(), 1, "the request that crosses the limit");
     assert!(world.poll_path(b).unwrap() == PathOutcome::Partial && world.poll_path(c).unwrap() == PathOutcome::Pending);
     assert_eq!(world.process_paths(PathBudget { max_search_nodes: 1, ..Default::default() }).unwrap(), 1);
@@ -178,10 +181,10 @@ fn budgets_and_finished_requests_taken_by_the_host() {
 
     // Released tickets are not reported, finished or cancelled; cancelled ones are.
     let (sender, calls) = mpsc::channel();
-    let released = world.request_path_with(&jumper_query, move |_, o| sender.send(o).unwrap()).unwrap();
-    let cancelled = world.request_path(&walker_query).unwrap();
-    let kept = world.request_path(&jumper_query).unwrap();
-    let released_later = world.request_path(&walker_query).unwrap();
+    let released = world.request_path_with(&jumper_query, move |_, o| sender.send(o).unwrap()).unwrap().into_ticket();
+    let cancelled = world.request_path(&walker_query).unwrap().into_ticket();
+    let kept = world.request_path(&jumper_query).unwrap().into_ticket();
+    let released_later = world.request_path(&walker_query).unwrap().into_ticket();
     world.release_path(released).unwrap();
     world.cancel_path(cancelled).unwrap();
     assert_eq!(world.process_paths(PathBudget::default()).unwrap(), 2);
@@ -190,7 +193,7 @@ fn budgets_and_finished_requests_taken_by_the_host() {
     assert_eq!(world.take_finished_paths().unwrap(), vec![finished(cancelled, PathOutcome::Cancelled), finished(kept, PathOutcome::Complete)]);
 
     // More than the binding takes in one call (16) come back in one Vec, in order.
-    let many: Vec<_> = (0..40).map(|i| world.request_path(if i % 2 == 0 { &jumper_query } else { &walker_query }).unwrap()).collect();
+    let many: Vec<_> = (0..40).map(|i| world.request_path(if i % 2 == 0 { &jumper_query } else { &walker_query }).unwrap().into_ticket()).collect();
     assert_eq!(world.process_paths(PathBudget::default()).unwrap(), 40);
     let expected: Vec<_> = many
         .iter()
@@ -200,7 +203,7 @@ fn budgets_and_finished_requests_taken_by_the_host() {
     assert_eq!(world.take_finished_paths().unwrap(), expected);
 
     // The raw call: the library reads the element size from out_finished[0].size; a refusal loses nothing.
-    let raw = world.request_path(&jumper_query).unwrap();
+    let raw = world.request_path(&jumper_query).unwrap().into_ticket();
     world.process_paths(PathBudget::default()).unwrap();
     unsafe {
         let mut buffer: [navlink::sys::nl_path_finished; 2] = std::mem::zeroed();
@@ -209,7 +212,7 @@ fn budgets_and_finished_requests_taken_by_the_host() {
         assert!(navlink::sys::nl_failed(s) && s & status::INVALID_ARGUMENT != 0, "an element size left at 0");
         buffer[0] = navlink::sys::nl_path_finished_init();
         let s = navlink::sys::nl_path_take_finished(world.as_ptr(), buffer.as_mut_ptr(), 2, &mut count, &mut remaining);
-        assert!(s == status::SUCCESS && count == 1 && remaining == 0 && buffer[0].ticket == raw && buffer[0].user.is_null());
+        assert!(s == status::SUCCESS && count == 1 && remaining == 0 && buffer[0].ticket == raw);
         assert_eq!(buffer[0].outcome, navlink::sys::NL_PATH_COMPLETE);
         // A budget whose size is too small is refused by name.
         let mut small = navlink::sys::nl_default_path_budget();
@@ -225,7 +228,7 @@ fn budgets_and_finished_requests_taken_by_the_host() {
 fn a_panicking_path_closure_is_contained() {
     let world = World::with_options(WorldOptions { path_worker_count: 0, ..Default::default() }).unwrap();
     let navmesh = gap_level_with_links(&world);
-    let ticket = world.request_path_with(&PathQuery::new(navmesh, WEST, EAST, jumper()), |_, _| panic!("closure panics")).unwrap();
+    let ticket = world.request_path_with(&PathQuery::new(navmesh, WEST, EAST, jumper()), |_, _| panic!("closure panics")).unwrap().into_ticket();
     assert_eq!(world.process_paths(PathBudget::default()).unwrap(), 1);
     assert_eq!(world.poll_path(ticket).unwrap(), PathOutcome::Complete, "the request finished normally");
 }

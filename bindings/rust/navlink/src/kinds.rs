@@ -1,0 +1,120 @@
+//! The header's `u32` kinds, states and outcomes as Rust enums. Each is `#[non_exhaustive]` and keeps a
+//! value it does not know (a newer library's, a plugin's link kind) in `Other(raw)`, so reading a newer
+//! library never fails and never loses the value.
+use navlink_sys as sys;
+
+/// An enum over one of the header's `u32` kinds, with `from_raw` and `to_raw`.
+macro_rules! c_enum {
+    ($(#[$meta:meta])* pub enum $name:ident { $($(#[$variant_meta:meta])* $variant:ident = $raw:path,)* }) => {
+        $(#[$meta])*
+        #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+        #[non_exhaustive]
+        pub enum $name {
+            $($(#[$variant_meta])* $variant,)*
+            /// A value this binding has no name for.
+            Other(u32),
+        }
+
+        impl $name {
+            pub fn from_raw(raw: u32) -> Self {
+                match raw {
+                    $($raw => $name::$variant,)*
+                    other => $name::Other(other),
+                }
+            }
+
+            pub fn to_raw(self) -> u32 {
+                match self {
+                    $($name::$variant => $raw,)*
+                    $name::Other(raw) => raw,
+                }
+            }
+        }
+    };
+}
+
+c_enum! {
+    /// How a request ended (`nl_path_outcome`).
+    pub enum PathOutcome {
+        /// Not finished yet (also what a wait that timed out reports).
+        Pending = sys::NL_PATH_PENDING,
+        Complete = sys::NL_PATH_COMPLETE,
+        /// As close to the goal as the search got (`accept_partial`).
+        Partial = sys::NL_PATH_PARTIAL,
+        NoPath = sys::NL_PATH_NO_PATH,
+        StartOffNavmesh = sys::NL_PATH_START_OFF_NAVMESH,
+        GoalOffNavmesh = sys::NL_PATH_GOAL_OFF_NAVMESH,
+        Cancelled = sys::NL_PATH_CANCELLED,
+        Failed = sys::NL_PATH_FAILED,
+    }
+}
+
+c_enum! {
+    /// How a path segment is travelled: walking, or the kind of link taken (`nl_link_kind`). A plugin's
+    /// kinds are `Other(k)` with `k >= FIRST_PLUGIN_KIND`.
+    pub enum LinkKind {
+        /// A path segment that walks; never a link's kind.
+        Walk = sys::NL_SEGMENT_WALK,
+        Jump = sys::NL_LINK_JUMP,
+        Drop = sys::NL_LINK_DROP,
+        Manual = sys::NL_LINK_MANUAL,
+    }
+}
+
+impl LinkKind {
+    /// A kind a link-kind plugin registered.
+    pub fn is_plugin(self) -> bool {
+        self.to_raw() >= sys::NL_LINK_FIRST_PLUGIN_KIND
+    }
+}
+
+c_enum! {
+    /// What an agent is doing (`AgentInfo::state`).
+    pub enum AgentState {
+        Idle = sys::NL_AGENT_IDLE,
+        Walking = sys::NL_AGENT_WALKING,
+        Jumping = sys::NL_AGENT_JUMPING,
+        Falling = sys::NL_AGENT_FALLING,
+        Traversing = sys::NL_AGENT_TRAVERSING,
+        /// Its path waits its turn (`WorldOptions::agent_paths_per_step`).
+        Waiting = sys::NL_AGENT_WAITING,
+        Arrived = sys::NL_AGENT_ARRIVED,
+        Failed = sys::NL_AGENT_FAILED,
+    }
+}
+
+c_enum! {
+    /// Why an agent planned again or failed (`AgentInfo::reason`, `AgentEvent::reason`).
+    pub enum AgentReason {
+        None = sys::NL_AGENT_REASON_NONE,
+        DestinationSet = sys::NL_AGENT_REASON_DESTINATION_SET,
+        LinkGone = sys::NL_AGENT_REASON_LINK_GONE,
+        WorldChanged = sys::NL_AGENT_REASON_WORLD_CHANGED,
+        OffPath = sys::NL_AGENT_REASON_OFF_PATH,
+        NoPath = sys::NL_AGENT_REASON_NO_PATH,
+        NavmeshRemoved = sys::NL_AGENT_REASON_NAVMESH_REMOVED,
+        CapabilitiesChanged = sys::NL_AGENT_REASON_CAPABILITIES_CHANGED,
+    }
+}
+
+c_enum! {
+    /// What happened to an agent in the last step (`AgentEvent::kind`).
+    pub enum AgentEventKind {
+        PathReady = sys::NL_AGENT_EVENT_PATH_READY,
+        LinkStarted = sys::NL_AGENT_EVENT_LINK_STARTED,
+        LinkFinished = sys::NL_AGENT_EVENT_LINK_FINISHED,
+        Arrived = sys::NL_AGENT_EVENT_ARRIVED,
+        Failed = sys::NL_AGENT_EVENT_FAILED,
+        Replanned = sys::NL_AGENT_EVENT_REPLANNED,
+    }
+}
+
+c_enum! {
+    /// How a link is being taken (`AgentTrajectory::kind`); `World::agent_trajectory` gives `None`
+    /// rather than the library's "none".
+    pub enum TrajectoryKind {
+        Arc = sys::NL_TRAJECTORY_ARC,
+        Fall = sys::NL_TRAJECTORY_FALL,
+        Line = sys::NL_TRAJECTORY_LINE,
+    }
+}

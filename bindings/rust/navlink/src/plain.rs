@@ -1,0 +1,94 @@
+//! Plain Rust structs over the header's growable structs: the same fields without `size` and
+//! `reserved`, `u8` flags as `bool`, kinds as enums. `From<c struct>` reads one; `to_c` writes one over
+//! a C value that already has its `size` (and the header's defaults for fields not mirrored).
+use crate::kinds::{AgentEventKind, AgentReason, AgentState, LinkKind, PathOutcome, TrajectoryKind};
+
+/// A C field's value as its Rust field's type.
+pub(crate) trait FromC<C> {
+    fn from_c(c: C) -> Self;
+}
+
+/// A Rust field's value as its C field's type.
+pub(crate) trait IntoC<C> {
+    fn into_c(self) -> C;
+}
+
+impl<T> FromC<T> for T {
+    fn from_c(c: T) -> T {
+        c
+    }
+}
+
+impl<T> IntoC<T> for T {
+    fn into_c(self) -> T {
+        self
+    }
+}
+
+impl FromC<u8> for bool {
+    fn from_c(c: u8) -> bool {
+        c != 0
+    }
+}
+
+impl IntoC<u8> for bool {
+    fn into_c(self) -> u8 {
+        self as u8
+    }
+}
+
+macro_rules! enum_field {
+    ($($enum:ty),*) => {$(
+        impl FromC<u32> for $enum {
+            fn from_c(c: u32) -> $enum {
+                <$enum>::from_raw(c)
+            }
+        }
+        impl IntoC<u32> for $enum {
+            fn into_c(self) -> u32 {
+                self.to_raw()
+            }
+        }
+    )*};
+}
+enum_field!(AgentEventKind, AgentReason, AgentState, LinkKind, PathOutcome, TrajectoryKind);
+
+/// A plain struct mirroring some fields of a C struct, with `From<C>`, `to_c` and a `Default` taken
+/// from the C side's default value (`$default`).
+macro_rules! plain_struct {
+    (
+        $(#[$meta:meta])*
+        pub struct $name:ident mirrors $c:ty, default $default:expr, derives ($($derive:ident),*) {
+            $($(#[$field_meta:meta])* $field:ident: $ty:ty,)*
+        }
+    ) => {
+        $(#[$meta])*
+        #[derive(Clone, Copy, Debug, $($derive),*)]
+        pub struct $name {
+            $($(#[$field_meta])* pub $field: $ty,)*
+        }
+
+        impl From<$c> for $name {
+            fn from(c: $c) -> $name {
+                $name { $($field: $crate::plain::FromC::from_c(c.$field),)* }
+            }
+        }
+
+        impl Default for $name {
+            fn default() -> $name {
+                let c: $c = $default;
+                $name::from(c)
+            }
+        }
+
+        #[allow(dead_code)] // output-only structs are never written back
+        impl $name {
+            /// `base` (which carries `size` and the fields not mirrored) with this struct's fields.
+            pub(crate) fn to_c(&self, mut base: $c) -> $c {
+                $(base.$field = $crate::plain::IntoC::into_c(self.$field);)*
+                base
+            }
+        }
+    };
+}
+pub(crate) use plain_struct;
