@@ -1,4 +1,5 @@
 // nl_path_*: path requests, synchronous and queued, over the core's planner and queue.
+#include <chrono>
 #include <cmath>
 #include <cstddef>
 #include <memory>
@@ -199,6 +200,21 @@ NL_API nl_status nl_path_poll(const nl_world* world, nl_path_ticket ticket, nl_p
         require(out_outcome, "out_outcome");
         *out_outcome = static_cast<nl_path_outcome>(deref(world).paths().poll(to_handle(ticket)));
     });
+}
+
+NL_API nl_status nl_path_wait(nl_world* world, nl_path_ticket ticket, uint32_t timeout_ms, nl_path_outcome* out_outcome) {
+    nl::PathOutcome outcome = nl::PathOutcome::Pending;
+    const nl_status status = guarded("nl_path_wait", world, [&] {
+        require(out_outcome, "out_outcome");
+        const std::chrono::steady_clock::duration timeout =
+            timeout_ms == NL_PATH_WAIT_FOREVER ? std::chrono::steady_clock::duration::max()
+                                               : std::chrono::milliseconds(timeout_ms);
+        outcome = deref(world).paths().wait(to_handle(ticket), timeout);
+        *out_outcome = static_cast<nl_path_outcome>(outcome);
+    });
+    if (NL_SUCCEEDED(status) && outcome == nl::PathOutcome::Pending)
+        return nl::capi::record(nullptr, nullptr, NL_STATUS_IN_PROGRESS, "");
+    return status;
 }
 
 NL_API nl_status nl_path_get_result(const nl_world* world, nl_path_ticket ticket, nl_path_result* out_result,

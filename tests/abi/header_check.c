@@ -354,6 +354,7 @@ struct api_table {
     nl_status (*path_find)(nl_world*, const nl_path_request_def*, nl_path_result*, nl_path_point*, uint32_t, uint32_t*);
     nl_status (*path_request)(nl_world*, const nl_path_request_def*, nl_path_ticket*);
     nl_status (*path_poll)(const nl_world*, nl_path_ticket, nl_path_outcome*);
+    nl_status (*path_wait)(nl_world*, nl_path_ticket, uint32_t, nl_path_outcome*);
     nl_status (*path_get_result)(const nl_world*, nl_path_ticket, nl_path_result*, nl_path_point*, uint32_t, uint32_t*);
     nl_status (*path_cancel)(nl_world*, nl_path_ticket);
     nl_status (*path_release)(nl_world*, nl_path_ticket);
@@ -424,7 +425,7 @@ int main(void) {
         nl_navmesh_save,        nl_navmesh_save_file,   nl_default_navmesh_load_def, nl_navmesh_load,
         nl_navmesh_load_file,   nl_navmesh_file_describe,
         nl_default_agent_capabilities, nl_default_path_request_def, nl_path_find, nl_path_request,
-        nl_path_poll,           nl_path_get_result,     nl_path_cancel,      nl_path_release,
+        nl_path_poll,           nl_path_wait,           nl_path_get_result,     nl_path_cancel,      nl_path_release,
         nl_default_path_budget, nl_path_process,        nl_path_take_finished, nl_path_get_queue_stats,
         nl_default_agent_def,   nl_agent_add,           nl_agent_remove,     nl_agent_is_valid,
         nl_agent_set_destination, nl_agent_stop,        nl_agent_teleport,   nl_agent_set_capabilities,

@@ -3318,6 +3318,10 @@ static void group_path_request(void) {
 /* The functions that take a ticket. */
 ID_OUT_CALL(poll_call, nl_path_ticket, nl_path_outcome, nl_path_poll)
 ID_CALL(cancel_call, nl_path_ticket, nl_path_cancel)
+/* Waits forever: a bad ticket must fail at once, not hang. */
+static nl_status wait_call(nl_world* w, raw_id id, void* out) {
+    return nl_path_wait(w, AS(nl_path_ticket, id), NL_PATH_WAIT_FOREVER, (nl_path_outcome*)out);
+}
 ID_CALL(release_call, nl_path_ticket, nl_path_release)
 /* The result of a ticket, with its points and count untouched too. */
 static nl_status get_result_call(nl_world* w, raw_id id, void* out) {
@@ -3338,6 +3342,7 @@ static const id_function k_ticket_functions[] = {
     {"nl_path_cancel", "ticket", NULL, 0, 0, 0, cancel_call, 0},
     {"nl_path_release", "ticket", NULL, 0, 0, 0, release_call, 0},
     {"nl_path_get_result", "ticket", "out_result", sizeof(nl_path_result), 1, 0, get_result_call, 1},
+    {"nl_path_wait", "ticket", "out_outcome", sizeof(nl_path_outcome), 0, 0, wait_call, 0},
 };
 
 static void ticket_id_cases(size_t which) {
@@ -3347,6 +3352,25 @@ static void ticket_id_cases(size_t which) {
 static void group_path_poll(void) { ticket_id_cases(0); }
 static void group_path_cancel(void) { ticket_id_cases(1); }
 static void group_path_release(void) { ticket_id_cases(2); }
+static void group_path_wait(void) {
+    ticket_id_cases(4);
+    CASE("nl_path_wait", "timeout_ms 0 on a pending ticket (looks only: IN_PROGRESS, nothing planned)") {
+        nl_path_outcome outcome = 99;
+        EXPECT(nl_path_wait(A.world, A.pending_ticket, 0, &outcome) == NL_STATUS_IN_PROGRESS, "expected IN_PROGRESS");
+        EXPECT(outcome == NL_PATH_PENDING, "outcome %u, expected NL_PATH_PENDING", outcome);
+    }
+    CASE("nl_path_wait", "timeout_ms huge (NL_PATH_WAIT_FOREVER - 1) on a finished ticket (answers at once)") {
+        nl_path_outcome outcome = 99;
+        EXPECT_OK(nl_path_wait(A.world, A.done_ticket, NL_PATH_WAIT_FOREVER - 1u, &outcome));
+        EXPECT(outcome == NL_PATH_COMPLETE, "outcome %u, expected NL_PATH_COMPLETE", outcome);
+    }
+    CASE("nl_path_wait", "timeout_ms huge (NL_PATH_WAIT_FOREVER - 1) on a pending ticket (no workers: this thread plans it)") {
+        nl_path_outcome outcome = 99;
+        EXPECT_OK(nl_path_wait(A.world, A.pending_ticket, NL_PATH_WAIT_FOREVER - 1u, &outcome));
+        EXPECT(outcome != NL_PATH_PENDING, "still pending after the wait");
+        fixture_refresh();
+    }
+}
 
 static nl_status result_of_done(nl_path_result* result, nl_path_point* points, uint32_t capacity, uint32_t* count) {
     return nl_path_get_result(A.world, A.done_ticket, result, points, capacity, count);
@@ -4410,6 +4434,7 @@ static const hostile_group k_groups[] = {
     {"path_get_result", group_path_get_result},
     {"path_cancel", group_path_cancel},
     {"path_release", group_path_release},
+    {"path_wait", group_path_wait},
     {"path_process", group_path_process},
     {"path_take_finished", group_path_take_finished},
     {"path_get_queue_stats", group_path_get_queue_stats},

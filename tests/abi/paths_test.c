@@ -1150,5 +1150,83 @@ static void queue_workers(void) {
     free(tickets);
 }
 
+/* A callback that tries to wait for its own request (refused: it runs on a thread that finishes them). */
+typedef struct waiting_callback {
+    nl_world* world;
+    nl_status status;
+} waiting_callback;
+
+static void wait_in_callback(void* user, nl_path_ticket ticket, nl_path_outcome outcome) {
+    waiting_callback* w = (waiting_callback*)user;
+    nl_path_outcome seen;
+    (void)outcome;
+    w->status = nl_path_wait(w->world, ticket, NL_PATH_WAIT_FOREVER, &seen);
+}
+
+static void waiting(void) {
+    enum { N = 3, WAITED = 32 };
+    /* Without path workers the waiting thread plans, oldest first, and no further than its request. */
+    islands s = make_islands(0);
+    nl_path_ticket tickets[N];
+    call_log logs[N];
+    nl_path_outcome outcome = 99;
+    waiting_callback in_callback;
+    nl_path_request_def def;
+    nl_path_ticket ticket;
+    int i;
+    memset(logs, 0, sizeof logs);
+    for (i = 0; i < N; ++i) {
+        def = jumper(s.navmesh, 0.5f, 5.5f);
+        def.callback = record_call;
+        def.user = &logs[i];
+        CHECK_OK(nl_path_request(s.world, &def, &tickets[i]));
+    }
+    CHECK(nl_path_wait(s.world, tickets[1], 0, &outcome) == NL_STATUS_IN_PROGRESS && outcome == NL_PATH_PENDING);
+    CHECK(nl_get_last_status() == NL_STATUS_IN_PROGRESS && nl_get_last_error_message()[0] == '\0');
+    CHECK(logs[0].calls == 0 && logs[1].calls == 0);
+    CHECK_OK(nl_path_wait(s.world, tickets[1], NL_PATH_WAIT_FOREVER, &outcome));
+    CHECK(outcome == NL_PATH_COMPLETE);
+    CHECK(logs[0].calls == 1 && logs[1].calls == 1 && logs[2].calls == 0);
+    CHECK(pthread_equal(logs[1].thread, pthread_self()));
+    CHECK(poll_outcome(s.world, tickets[2]) == NL_PATH_PENDING);
+    CHECK_OK(nl_path_wait(s.world, tickets[2], 60000, &outcome));
+    CHECK(outcome == NL_PATH_COMPLETE && logs[2].calls == 1);
+    CHECK_OK(nl_path_wait(s.world, tickets[2], 0, &outcome)); /* finished: any timeout answers at once */
+    for (i = 0; i < N; ++i) CHECK_OK(nl_path_release(s.world, tickets[i]));
+    CHECK_FAIL(nl_path_wait(s.world, tickets[0], NL_PATH_WAIT_FOREVER, &outcome), NL_STATUS_INVALID_HANDLE, "ticket");
+
+    in_callback.world = s.world;
+    in_callback.status = 0;
+    def = jumper(s.navmesh, 0.5f, 5.5f);
+    def.callback = wait_in_callback;
+    def.user = &in_callback;
+    CHECK_OK(nl_path_request(s.world, &def, &ticket));
+    CHECK_OK(nl_path_wait(s.world, ticket, NL_PATH_WAIT_FOREVER, &outcome));
+    CHECK_MSG(in_callback.status == (NL_STATUS_FAILURE | NL_STATUS_INVALID_ARGUMENT),
+              "nl_path_wait inside a path callback returned 0x%x", (unsigned)in_callback.status);
+    CHECK_OK(nl_path_release(s.world, ticket));
+    nl_world_destroy(s.world);
+
+    /* With path workers the waiting thread sleeps until a worker has finished its request. */
+    {
+        islands t = make_islands(2);
+        nl_path_ticket many[WAITED];
+        int wrong = 0;
+        for (i = 0; i < WAITED; ++i) {
+            def = jumper(t.navmesh, i % 2 ? 0.5f : 5.5f, i % 2 ? 5.5f : 0.5f);
+            CHECK_OK(nl_path_request(t.world, &def, &many[i]));
+        }
+        for (i = 0; i < WAITED; ++i) {
+            if (NL_FAILED(nl_path_wait(t.world, many[i], NL_PATH_WAIT_FOREVER, &outcome)) || outcome != NL_PATH_COMPLETE ||
+                poll_outcome(t.world, many[i]) != NL_PATH_COMPLETE)
+                ++wrong;
+            CHECK_OK(nl_path_release(t.world, many[i]));
+        }
+        CHECK_MSG(wrong == 0, "%d of %d waits did not end with the complete path", wrong, (int)WAITED);
+        nl_world_destroy(t.world);
+    }
+}
+
 ABI_SECTION(paths, ABI_CASE(defaults), ABI_CASE(find_synchronous), ABI_CASE(costs_and_radius), ABI_CASE(bad_input),
-            ABI_CASE(queue_manual), ABI_CASE(snapshots), ABI_CASE(queue_workers));
+            ABI_CASE(queue_manual), ABI_CASE(snapshots), ABI_CASE(queue_workers),
+            ABI_CASE(waiting));

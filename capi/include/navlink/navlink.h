@@ -1213,6 +1213,23 @@ NL_API nl_status nl_path_request(nl_world* world, const nl_path_request_def* def
  *  INVALID_ARGUMENT. Thread-safe. */
 NL_API nl_status nl_path_poll(const nl_world* world, nl_path_ticket ticket, nl_path_outcome* out_outcome);
 
+/** nl_path_wait's timeout that never ends. */
+#define NL_PATH_WAIT_FOREVER 0xffffffffu
+
+/** Blocks the calling thread until the request has finished or `timeout_ms` milliseconds have
+ *  passed, and writes its outcome to `*out_outcome` (NL_PATH_PENDING on a timeout). A timeout of 0
+ *  only looks, as nl_path_poll; NL_PATH_WAIT_FOREVER waits as long as it takes. With
+ *  path_worker_count 0 nobody else plans requests, so the waiting thread plans queued ones itself
+ *  (oldest first, as nl_path_process, their callbacks on this thread) until this one has finished,
+ *  checking the time between requests: a request is never split, so a wait can overrun its timeout
+ *  by the request being planned. The request's callback may still be running when the wait returns.
+ *  Returns SUCCESS (finished), NL_STATUS_IN_PROGRESS (timed out; `*out_outcome` is NL_PATH_PENDING),
+ *  or a failure with INVALID_HANDLE (null, released or foreign ticket, also one released by another
+ *  thread during the wait) or INVALID_ARGUMENT (null out_outcome; called from a path callback, which
+ *  runs on a thread that finishes requests and so could wait for itself).
+ *  Thread-safe: any number of threads can wait, for the same ticket or others. */
+NL_API nl_status nl_path_wait(nl_world* world, nl_path_ticket ticket, uint32_t timeout_ms, nl_path_outcome* out_outcome);
+
 /** Copies a finished request's result and points, as nl_path_find. Can be called any number of times
  *  until the ticket is released. Returns SUCCESS (with PARTIAL_RESULT for NL_PATH_PARTIAL),
  *  NL_STATUS_IN_PROGRESS (not finished; nothing written), or a failure with INVALID_HANDLE,
