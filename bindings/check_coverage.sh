@@ -32,9 +32,9 @@ grep -h '^[[:space:]]*NL_DEFINE_OUTPUT_INIT(' "$root"/capi/include/navlink/*.h "
 
 # One name per line, as each binding declares its functions: bound ones in $binding, its own
 # initialisers in $binding.inline.
-grep -ho 'static extern [^(]* nl_[a-z0-9_]*(' "$root"/bindings/csharp/NavLink/Native/*.cs |
+grep -ho 'static extern [^(]* nl_[a-z0-9_]*(' "$root"/bindings/csharp/com.navlink.sdk/Runtime/Native/*.cs |
   sed -E 's/.* (nl_[a-z0-9_]+)\($/\1/' | sort -u > "$tmp/csharp"
-grep -hoE 'public static [A-Za-z0-9_]+ nl_[a-z0-9_]*\(' "$root"/bindings/csharp/NavLink/Native/*.cs |
+grep -hoE 'public static [A-Za-z0-9_]+ nl_[a-z0-9_]*\(' "$root"/bindings/csharp/com.navlink.sdk/Runtime/Native/*.cs |
   sed -E 's/.* (nl_[a-z0-9_]+)\($/\1/' | sort -u > "$tmp/csharp.inline"
 # Rust: functions inside `extern "C" {` ... `}` blocks are bound; other `pub fn nl_*` are initialisers.
 awk '/^extern "C" \{/ { in_extern = 1; next }

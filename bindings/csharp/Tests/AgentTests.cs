@@ -261,7 +261,7 @@ namespace NavLink.Tests
 
             check.Run("agents: bad input", () =>
             {
-                check.Throws(StatusBits.InvalidArgument, "agent_paths_per_step", () => new World(new WorldOptions { AgentPathsPerStep = 0 }),
+                check.Throws(StatusCode.InvalidArgument, "agent_paths_per_step", () => new World(new WorldOptions { AgentPathsPerStep = 0 }),
                              "a world that plans no agent paths");
                 using (var world = new World(new WorldOptions { WorkerCount = 1, AgentPathsPerStep = 1 }))
                 {
@@ -270,17 +270,17 @@ namespace NavLink.Tests
                     AgentDef off = World.DefaultAgentDef();
                     off.Navmesh = navmesh;
                     off.Position = new Vec3(5, 0, 2);  // over the gap
-                    check.Throws(StatusBits.NotFound, "def->position is not on the navmesh", () => world.AddAgent(off), "an agent off the navmesh");
-                    check.Throws(StatusBits.NotFound, "nearest navmesh point", () => world.SetAgentDestination(agent, new Vec3(5, 0, 2)),
+                    check.Throws(StatusCode.NotFound, "def->position is not on the navmesh", () => world.AddAgent(off), "an agent off the navmesh");
+                    check.Throws(StatusCode.NotFound, "nearest navmesh point", () => world.SetAgentDestination(agent, new Vec3(5, 0, 2)),
                                  "a destination off the navmesh");
                     check.That(world.GetAgentInfo(agent).HasDestination == 0, "a refused destination is not kept");
-                    check.Throws(StatusBits.InvalidArgument, "point", () => world.SetAgentDestination(agent, new Vec3(float.NaN, 0, 0)),
+                    check.Throws(StatusCode.InvalidArgument, "point", () => world.SetAgentDestination(agent, new Vec3(float.NaN, 0, 0)),
                                  "a NaN destination");
-                    check.Throws(StatusBits.InvalidArgument, "dt", () => world.Step(float.NaN), "a NaN step");
-                    check.Throws(StatusBits.InvalidArgument, "max_speed", () => world.SetAgentSpeed(agent, -1, 1), "a negative speed");
+                    check.Throws(StatusCode.InvalidArgument, "dt", () => world.Step(float.NaN), "a NaN step");
+                    check.Throws(StatusCode.InvalidArgument, "max_speed", () => world.SetAgentSpeed(agent, -1, 1), "a negative speed");
                     AgentCapabilities nanRadius = TestLevels.Walker();
                     nanRadius.Radius = float.NaN;
-                    check.Throws(StatusBits.InvalidArgument, "radius", () => world.SetAgentCapabilities(agent, nanRadius), "a NaN radius");
+                    check.Throws(StatusCode.InvalidArgument, "radius", () => world.SetAgentCapabilities(agent, nanRadius), "a NaN radius");
 
                     // A raw call must set the element size of its output array, as in C.
                     var infos = new AgentInfo[1];
@@ -289,7 +289,7 @@ namespace NavLink.Tests
                     {
                         fixed (AgentInfo* p = infos)
                             check.Status(Native.nl_world_get_agents(world.DangerousGetPointer(), p, 1, &count),
-                                         StatusBits.InvalidArgument, "size", "a raw list with an unset element size");
+                                         StatusCode.InvalidArgument, "size", "a raw list with an unset element size");
                     }
 
                     // Its navmesh removed: the agent fails, with its event.
@@ -305,13 +305,13 @@ namespace NavLink.Tests
                     // A removed agent's id is stale everywhere.
                     world.RemoveAgent(agent);
                     check.That(!world.IsValid(agent) && world.GetAgents().Length == 0, "removed");
-                    check.Throws(StatusBits.InvalidHandle, "nl_agent_set_destination", () => world.SetAgentDestination(agent, new Vec3(3, 0, 5)),
+                    check.Throws(StatusCode.InvalidHandle, "nl_agent_set_destination", () => world.SetAgentDestination(agent, new Vec3(3, 0, 5)),
                                  "a stale agent's destination");
-                    check.Throws(StatusBits.InvalidHandle, "nl_agent_get_info", () => world.GetAgentInfo(agent), "a stale agent's info");
+                    check.Throws(StatusCode.InvalidHandle, "nl_agent_get_info", () => world.GetAgentInfo(agent), "a stale agent's info");
                     AgentTrajectory trajectory;
-                    check.Throws(StatusBits.InvalidHandle, "nl_agent_get_trajectory", () => world.TryGetAgentTrajectory(agent, out trajectory),
+                    check.Throws(StatusCode.InvalidHandle, "nl_agent_get_trajectory", () => world.TryGetAgentTrajectory(agent, out trajectory),
                                  "a stale agent's trajectory (an error, not false)");
-                    check.Throws(StatusBits.InvalidHandle, "nl_agent_remove", () => world.RemoveAgent(agent), "removing twice");
+                    check.Throws(StatusCode.InvalidHandle, "nl_agent_remove", () => world.RemoveAgent(agent), "removing twice");
                 }
             });
         }

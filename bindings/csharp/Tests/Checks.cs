@@ -38,7 +38,7 @@ namespace NavLink.Tests
 
         /// <summary>The call must throw NavLinkException whose status has detailBit and whose message
         /// (the library's last error) contains messagePart.</summary>
-        public void Throws(uint detailBit, string messagePart, Action call, string what)
+        public void Throws(StatusCode detailBit, string messagePart, Action call, string what)
         {
             try
             {
@@ -47,17 +47,16 @@ namespace NavLink.Tests
             }
             catch (NavLinkException e)
             {
-                That(StatusBits.Failed(e.StatusCode) && e.Has(detailBit),
-                     what + ": status 0x" + e.StatusCode.ToString("x8") + " lacks bit 0x" + detailBit.ToString("x"));
+                That(NavLink.Status.Failed(e.StatusCode) && e.Has(detailBit), what + ": status " + e.StatusCode + " lacks " + detailBit);
                 That(e.Message.Contains(messagePart), what + ": message '" + e.Message + "' lacks '" + messagePart + "'");
             }
         }
 
         /// <summary>A raw status must be a failure with detailBit, and the last error must name messagePart.</summary>
-        public void Status(uint status, uint detailBit, string messagePart, string what)
+        public void Status(StatusCode status, StatusCode detailBit, string messagePart, string what)
         {
-            That(StatusBits.Failed(status) && (status & detailBit) != 0u,
-                 what + ": status 0x" + status.ToString("x8") + ", expected a failure with 0x" + detailBit.ToString("x"));
+            That(NavLink.Status.Failed(status) && NavLink.Status.Has(status, detailBit),
+                 what + ": status " + status + ", expected a failure with " + detailBit);
             string message = NavLink.Status.LastErrorMessage();
             That(message.Contains(messagePart), what + ": message '" + message + "' lacks '" + messagePart + "'");
         }

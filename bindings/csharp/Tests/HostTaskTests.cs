@@ -72,7 +72,7 @@ namespace NavLink.Tests
                 }
                 check.That(enqueues > 0 && finishes == 0, enqueues + " enqueues, " + finishes + " finishes");
                 options.TaskFinishFn = IntPtr.Zero;
-                check.Throws(StatusBits.InvalidArgument, "task_finish_fn", () => new World(options), "enqueue without finish");
+                check.Throws(StatusCode.InvalidArgument, "task_finish_fn", () => new World(options), "enqueue without finish");
             });
         }
     }

@@ -17,15 +17,15 @@ namespace NavLink.Tests
                 NavLinkVersion v = World.LibraryVersion;
                 check.That(v.Major == HeaderVersion.Major && v.Minor == HeaderVersion.Minor && v.Patch == HeaderVersion.Patch,
                            "library version " + v + " is the header version the binding was written from");
-                check.That(Status.Describe(StatusBits.Failure | StatusBits.InvalidHandle).Contains("invalid handle"),
-                           "nl_status_string names the detail: " + Status.Describe(StatusBits.Failure | StatusBits.InvalidHandle));
+                check.That(Status.Describe(StatusCode.Failure | StatusCode.InvalidHandle).Contains("invalid handle"),
+                           "nl_status_string names the detail: " + Status.Describe(StatusCode.Failure | StatusCode.InvalidHandle));
             });
 
             check.Run("world options", () =>
             {
                 using (var one = new World(new WorldOptions { WorkerCount = 1, PathWorkerCount = 0 }))
                     check.That(one.WorkerCount == 1, "worker_count 1: " + one.WorkerCount);
-                check.Throws(StatusBits.InvalidArgument, "worker_count", () => new World(new WorldOptions { WorkerCount = -5 }),
+                check.Throws(StatusCode.InvalidArgument, "worker_count", () => new World(new WorldOptions { WorkerCount = -5 }),
                              "worker_count -5");
                 var world = new World();
                 world.Dispose();
@@ -85,8 +85,8 @@ namespace NavLink.Tests
                     // Stale ids are refused, never obeyed.
                     world.RemoveMesh(lift);
                     check.That(!world.IsValid(lift), "a removed mesh is not valid");
-                    check.Throws(StatusBits.InvalidHandle, "nl_mesh_remove", () => world.RemoveMesh(lift), "removing a stale mesh");
-                    check.Throws(StatusBits.InvalidHandle, "nl_mesh_set_transform", () => world.SetMeshTransform(lift, at),
+                    check.Throws(StatusCode.InvalidHandle, "nl_mesh_remove", () => world.RemoveMesh(lift), "removing a stale mesh");
+                    check.Throws(StatusCode.InvalidHandle, "nl_mesh_set_transform", () => world.SetMeshTransform(lift, at),
                                  "moving a stale mesh");
                     MeshInfo unused;
                     check.That(!world.TryGetMeshInfo(lift, out unused), "TryGetMeshInfo of a stale mesh is false");
@@ -98,34 +98,34 @@ namespace NavLink.Tests
                 var logged = new System.Collections.Generic.List<string>();
                 using (var world = new World(new WorldOptions { Log = (level, status, message) => { lock (logged) logged.Add(message); } }))
                 {
-                    check.Throws(StatusBits.InvalidArgument, "indices", () => world.AddMesh(Floor, new uint[] {0, 1, 7}),
+                    check.Throws(StatusCode.InvalidArgument, "indices", () => world.AddMesh(Floor, new uint[] {0, 1, 7}),
                                  "an index past the vertices");
                     check.That(logged.Count == 1 && logged[0].Contains("indices"), "the log callback got the failure: " +
                                string.Join(" | ", logged));
-                    check.Throws(StatusBits.InvalidArgument, "rays", () => world.CastRays(new[] { new Ray(new Vec3(0, 1, 0), new Vec3(0, 0, 0), 1) }),
+                    check.Throws(StatusCode.InvalidArgument, "rays", () => world.CastRays(new[] { new Ray(new Vec3(0, 1, 0), new Vec3(0, 0, 0), 1) }),
                                  "a ray with a zero direction");
-                    check.Throws(StatusBits.ParseError, ":2:", () => world.AddObjMemory(System.Text.Encoding.UTF8.GetBytes("v 0 0 0\nf 1 2 9\n")),
+                    check.Throws(StatusCode.ParseError, ":2:", () => world.AddObjMemory(System.Text.Encoding.UTF8.GetBytes("v 0 0 0\nf 1 2 9\n")),
                                  "a malformed OBJ");
-                    check.Throws(StatusBits.NotFound, "nl_mesh_add_obj_file", () => world.AddObjFile("/no/such/level.obj"),
+                    check.Throws(StatusCode.NotFound, "nl_mesh_add_obj_file", () => world.AddObjFile("/no/such/level.obj"),
                                  "a missing OBJ file");
                     MeshId floor = world.AddMesh(Floor, Quad);
-                    check.Throws(StatusBits.InvalidArgument, "transform", () => world.SetMeshTransform(floor, new float[16]),
+                    check.Throws(StatusCode.InvalidArgument, "transform", () => world.SetMeshTransform(floor, new float[16]),
                                  "an all-zero transform");
                 }
                 unsafe
                 {
                     // Null pointers through the raw layer: the header's INVALID_ARGUMENT, naming the argument.
-                    check.Status(Native.nl_world_create(null, null), StatusBits.InvalidArgument, "out_world", "nl_world_create(NULL, NULL)");
-                    check.Status(Native.nl_world_get_meshes(IntPtr.Zero, null, 0, null), StatusBits.InvalidArgument, "world",
+                    check.Status(Native.nl_world_create(null, null), StatusCode.InvalidArgument, "out_world", "nl_world_create(NULL, NULL)");
+                    check.Status(Native.nl_world_get_meshes(IntPtr.Zero, null, 0, null), StatusCode.InvalidArgument, "world",
                                  "nl_world_get_meshes(NULL, ...)");
-                    check.That(Native.nl_world_get_worker_count(IntPtr.Zero) == 0 && StatusBits.Failed(Native.nl_get_last_status()),
+                    check.That(Native.nl_world_get_worker_count(IntPtr.Zero) == 0 && Status.Failed(Native.nl_get_last_status()),
                                "nl_world_get_worker_count(NULL) is 0 and records a failure");
                     using (var world = new World())
                     {
-                        check.Status(Native.nl_world_get_meshes(world.DangerousGetPointer(), null, 0, null), StatusBits.InvalidArgument,
+                        check.Status(Native.nl_world_get_meshes(world.DangerousGetPointer(), null, 0, null), StatusCode.InvalidArgument,
                                      "out_count", "nl_world_get_meshes without out_count");
                         uint count = 0;
-                        check.That(Native.nl_world_get_meshes(world.DangerousGetPointer(), null, 0, &count) == StatusBits.Success &&
+                        check.That(Native.nl_world_get_meshes(world.DangerousGetPointer(), null, 0, &count) == StatusCode.Success &&
                                    Status.LastErrorMessage() == "", "a success clears the last error message");
 
                         // Output arrays of growable elements: the library reads the element size from the first
@@ -135,10 +135,10 @@ namespace NavLink.Tests
                         var hits = new RayHit[1];
                         fixed (RayHit* h = hits)
                         {
-                            check.Status(Native.nl_world_cast_rays(world.DangerousGetPointer(), &ray, 1, h), StatusBits.InvalidArgument,
+                            check.Status(Native.nl_world_cast_rays(world.DangerousGetPointer(), &ray, 1, h), StatusCode.InvalidArgument,
                                          "out_hits", "nl_world_cast_rays with out_hits[0].size 0");
                             hits[0] = Native.nl_ray_hit_init();
-                            check.That(Native.nl_world_cast_rays(world.DangerousGetPointer(), &ray, 1, h) == StatusBits.Success &&
+                            check.That(Native.nl_world_cast_rays(world.DangerousGetPointer(), &ray, 1, h) == StatusCode.Success &&
                                        hits[0].Hit == 1 && hits[0].Size == (uint)sizeof(RayHit), "with the size set, a hit");
                         }
                     }

@@ -45,13 +45,13 @@ namespace NavLink.Tests
                     LinkGenerationReport none = world.GenerateLinks(navmesh, shortJumps);
                     check.That(none.JumpLinks == 0 && none.RejectedDistance > 0 && world.GetLinks(navmesh).Length == 0,
                                "max_jump_gap 1.8: no jumps, " + none.RejectedDistance + " rejected for distance");
-                    check.Throws(StatusBits.InvalidArgument, "max_link_dist", () => World.LinkSettingsFromJson("{\"max_link_dist\": 3}"),
+                    check.Throws(StatusCode.InvalidArgument, "max_link_dist", () => World.LinkSettingsFromJson("{\"max_link_dist\": 3}"),
                                  "an unknown settings key");
 
                     // Cancelling from progress leaves the links as they were; an exception cancels and comes back.
                     world.GenerateLinks(navmesh);
                     int before = world.GetLinks(navmesh).Length;
-                    check.Throws(StatusBits.Cancelled, "", () => world.GenerateLinks(navmesh, null, (f, s) => false), "a cancelled generation");
+                    check.Throws(StatusCode.Cancelled, "", () => world.GenerateLinks(navmesh, null, (f, s) => false), "a cancelled generation");
                     check.That(world.GetLinks(navmesh).Length == before, "a cancelled generation changes nothing");
                     try
                     {
@@ -60,7 +60,7 @@ namespace NavLink.Tests
                     }
                     catch (NavLinkException e)
                     {
-                        check.That(e.Has(StatusBits.Cancelled) && e.InnerException is InvalidOperationException,
+                        check.That(e.Has(StatusCode.Cancelled) && e.InnerException is InvalidOperationException,
                                    "the callback's exception comes back as the inner exception");
                     }
 
@@ -129,11 +129,11 @@ namespace NavLink.Tests
                     check.That(!world.IsValid(manual), "loaded links get new ids: the old one is stale");
                     Link stale;
                     check.That(!world.TryGetLink(manual, out stale), "TryGetLink of a stale link is false");
-                    check.Throws(StatusBits.InvalidHandle, "nl_link_remove", () => world.RemoveLink(manual), "removing a stale link");
-                    check.Throws(StatusBits.ParseError, "nl_navmesh_load_links_json", () => world.LoadLinksJson(navmesh, "[1,"),
+                    check.Throws(StatusCode.InvalidHandle, "nl_link_remove", () => world.RemoveLink(manual), "removing a stale link");
+                    check.Throws(StatusCode.ParseError, "nl_navmesh_load_links_json", () => world.LoadLinksJson(navmesh, "[1,"),
                                  "malformed links JSON");
                     def.End = new Vec3(0, 0, 0);  // over the gap: off the navmesh
-                    check.Throws(StatusBits.InvalidArgument, "def->end", () => world.AddLink(navmesh, def), "a link ending off the navmesh");
+                    check.Throws(StatusCode.InvalidArgument, "def->end", () => world.AddLink(navmesh, def), "a link ending off the navmesh");
                 }
             });
 
@@ -150,9 +150,9 @@ namespace NavLink.Tests
                     AgentType slim = World.DefaultAgentType();
                     slim.Radius = 0.3f;
                     NavmeshId narrow = world.BuildNavmesh(slim);
-                    check.Throws(StatusBits.InvalidArgument, "radius 0.6", () => world.LoadLinksJson(narrow, json),
+                    check.Throws(StatusCode.InvalidArgument, "radius 0.6", () => world.LoadLinksJson(narrow, json),
                                  "links for radius 0.6 into a navmesh for radius 0.3 (names theirs)");
-                    check.Throws(StatusBits.InvalidArgument, "radius 0.3", () => world.LoadLinksJson(narrow, json, false),
+                    check.Throws(StatusCode.InvalidArgument, "radius 0.3", () => world.LoadLinksJson(narrow, json, false),
                                  "links for radius 0.6 into a navmesh for radius 0.3 (names ours)");
                     check.That(world.GetLinks(narrow).Length == 0, "a refused load changes nothing");
                     lock (logged) logged.Clear();

@@ -81,7 +81,7 @@ namespace NavLink.Tests
             // The level it was baked from: sameLevel refuses a world without it, takes one with it.
             using (var other = new World())
             {
-                check.Throws(StatusBits.InvalidArgument, "baked from", () => other.LoadNavmesh(data, sameLevel: true),
+                check.Throws(StatusCode.InvalidArgument, "baked from", () => other.LoadNavmesh(data, sameLevel: true),
                              "sameLevel in a world without the level");
                 check.That(other.GetNavmeshes().Length == 0, "nothing added");
                 TestLevels.AddGapLevel(other);
@@ -90,13 +90,13 @@ namespace NavLink.Tests
                 int count = other.GetNavmeshes().Length;
                 byte[] half = data.Take(data.Length / 2).ToArray();
                 byte[] hello = Encoding.ASCII.GetBytes("hello");
-                check.Throws(StatusBits.ParseError, "nl_navmesh_load", () => other.LoadNavmesh(half), "truncated bytes");
-                check.Throws(StatusBits.VersionMismatch, "nl_navmesh_load", () => other.LoadNavmesh(hello), "foreign bytes");
-                check.Throws(StatusBits.ParseError, "nl_navmesh_file_describe", () => World.DescribeNavmeshFile(half),
+                check.Throws(StatusCode.ParseError, "nl_navmesh_load", () => other.LoadNavmesh(half), "truncated bytes");
+                check.Throws(StatusCode.VersionMismatch, "nl_navmesh_load", () => other.LoadNavmesh(hello), "foreign bytes");
+                check.Throws(StatusCode.ParseError, "nl_navmesh_file_describe", () => World.DescribeNavmeshFile(half),
                              "describing truncated bytes");
-                check.Throws(StatusBits.VersionMismatch, "nl_navmesh_file_describe", () => World.DescribeNavmeshFile(hello),
+                check.Throws(StatusCode.VersionMismatch, "nl_navmesh_file_describe", () => World.DescribeNavmeshFile(hello),
                              "describing foreign bytes");
-                check.Throws(StatusBits.NotFound, "nl_navmesh_load_file", () => other.LoadNavmeshFile(Path.Combine(dir, "missing.nlnav")),
+                check.Throws(StatusCode.NotFound, "nl_navmesh_load_file", () => other.LoadNavmeshFile(Path.Combine(dir, "missing.nlnav")),
                              "a missing file");
                 check.That(other.GetNavmeshes().Length == count, "nothing added on failure");
             }
@@ -104,7 +104,7 @@ namespace NavLink.Tests
 
         /// <summary>The JSON object as the framework's JSON reader sees it (members as child elements); throws
         /// if it is not JSON.</summary>
-        private static XElement ParseJson(string json)
+        internal static XElement ParseJson(string json)
         {
             using (XmlDictionaryReader reader = JsonReaderWriterFactory.CreateJsonReader(Encoding.UTF8.GetBytes(json),
                                                                                           XmlDictionaryReaderQuotas.Max))

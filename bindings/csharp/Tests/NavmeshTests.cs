@@ -98,16 +98,16 @@ namespace NavLink.Tests
                                Enumerable.Range(0, (int)info.PolygonCount).Any(i => world.GetPolygon(navmesh, (uint)i).VertexCount > 3),
                                "vertices_per_polygon 3: triangles only (the default has larger polygons)");
                     world.RemoveNavmesh(triangulated);
-                    check.Throws(StatusBits.ParseError, "settings", () => world.BuildNavmesh(World.DefaultAgentType(), null, "{oops"),
+                    check.Throws(StatusCode.ParseError, "settings", () => world.BuildNavmesh(World.DefaultAgentType(), null, "{oops"),
                                  "malformed settings JSON");
-                    check.Throws(StatusBits.NotFound, "nope", () => world.BuildNavmesh(World.DefaultAgentType(), null, null, "nope"),
+                    check.Throws(StatusCode.NotFound, "nope", () => world.BuildNavmesh(World.DefaultAgentType(), null, null, "nope"),
                                  "an unknown builder");
                     world.RemoveNavmesh(navmesh);
                     check.That(!world.IsValid(navmesh), "a removed navmesh is not valid");
-                    check.Throws(StatusBits.InvalidHandle, "nl_navmesh_get_info", () => world.GetNavmeshInfo(navmesh), "a stale navmesh");
+                    check.Throws(StatusCode.InvalidHandle, "nl_navmesh_get_info", () => world.GetNavmeshInfo(navmesh), "a stale navmesh");
                 }
                 using (var empty = new World())
-                    check.Throws(StatusBits.NotFound, "walkable", () => empty.BuildNavmesh(World.DefaultAgentType()),
+                    check.Throws(StatusCode.NotFound, "walkable", () => empty.BuildNavmesh(World.DefaultAgentType()),
                                  "a level with nothing walkable");
             });
 
@@ -137,9 +137,9 @@ namespace NavLink.Tests
                         check.That(polygon.VertexCount == 3 && polygon.Area == 5 && linked >= 1 && polygon.Neighbours[15] == Limits.NoPolygon,
                                    "polygon 2: 3 corners, area 5, " + linked + " neighbours, unused entries NO_POLYGON");
                     }
-                    check.Throws(StatusBits.InvalidArgument, "polygon", () => world.GetPolygon(navmesh, 99), "polygon 99");
+                    check.Throws(StatusCode.InvalidArgument, "polygon", () => world.GetPolygon(navmesh, 99), "polygon 99");
                     input.Indices[2] = 40;
-                    check.Throws(StatusBits.InvalidArgument, "indices", () => world.AddNavmesh(input), "an index out of range");
+                    check.Throws(StatusCode.InvalidArgument, "indices", () => world.AddNavmesh(input), "an index out of range");
                 }
             });
 
@@ -182,7 +182,7 @@ namespace NavLink.Tests
                                "surface positions in the mesh's space: " + first.SurfacePosition + " " + last.SurfacePosition);
 
                     // Only rigid moves for a mesh that carries a navmesh, and it cannot go while the navmesh rides it.
-                    check.Throws(StatusBits.InvalidArgument, "nl_mesh_set_transform", () => world.SetMeshTransform(raft, RaftScaled),
+                    check.Throws(StatusCode.InvalidArgument, "nl_mesh_set_transform", () => world.SetMeshTransform(raft, RaftScaled),
                                  "a scaling transform");
                     MeshInfo mesh = world.GetMeshInfo(raft);
                     bool unmoved = true;
@@ -191,14 +191,14 @@ namespace NavLink.Tests
                         for (int k = 0; k < 16; ++k) unmoved &= mesh.Transform[k] == RaftMoved[k];
                     }
                     check.That(unmoved, "a refused move moves nothing");
-                    check.Throws(StatusBits.InvalidArgument, "nl_mesh_remove", () => world.RemoveMesh(raft), "removing the raft");
+                    check.Throws(StatusCode.InvalidArgument, "nl_mesh_remove", () => world.RemoveMesh(raft), "removing the raft");
 
                     // Recast on the raft alone, in its space, riding it; without a surface a build sees static meshes only.
                     NavmeshId built = world.BuildNavmesh(World.DefaultAgentType(), surface: raft);
                     check.That(world.GetNavmeshInfo(built).Surface.Equals(raft), "a navmesh built on the raft rides it");
                     found = world.FindNearest(built, new[] {onRaft, oldPlace}, box);
                     check.That(found[0].Found == 1 && found[1].Found == 0, "the built navmesh is where the raft is");
-                    check.Throws(StatusBits.NotFound, "no triangles", () => world.BuildNavmesh(World.DefaultAgentType()),
+                    check.Throws(StatusCode.NotFound, "no triangles", () => world.BuildNavmesh(World.DefaultAgentType()),
                                  "a build without a surface leaves the movable raft out");
                     world.RemoveNavmesh(built);
                     world.RemoveNavmesh(navmesh);
@@ -264,24 +264,24 @@ namespace NavLink.Tests
                     // Cross links are one-way, lead to another live navmesh, and links files do not hold them.
                     LinkDef twoWay = def;
                     twoWay.Bidirectional = 1;
-                    check.Throws(StatusBits.InvalidArgument, "bidirectional", () => world.AddLink(ledge, twoWay),
+                    check.Throws(StatusCode.InvalidArgument, "bidirectional", () => world.AddLink(ledge, twoWay),
                                  "a two-way cross link");
                     LinkDef ontoItself = def;
                     ontoItself.LandingNavmesh = ledge;
-                    check.Throws(StatusBits.InvalidArgument, "landing_navmesh", () => world.AddLink(ledge, ontoItself),
+                    check.Throws(StatusCode.InvalidArgument, "landing_navmesh", () => world.AddLink(ledge, ontoItself),
                                  "a cross link onto its own navmesh");
                     NavmeshId gone = world.AddNavmesh(Quad(DeckQuad));
                     world.RemoveNavmesh(gone);
                     LinkDef stale = def;
                     stale.LandingNavmesh = gone;
-                    check.Throws(StatusBits.InvalidHandle, "landing_navmesh", () => world.AddLink(ledge, stale),
+                    check.Throws(StatusCode.InvalidHandle, "landing_navmesh", () => world.AddLink(ledge, stale),
                                  "a removed landing navmesh");
                     LinkDef negative = def;
                     negative.Tolerance = -1;
-                    check.Throws(StatusBits.InvalidArgument, "tolerance", () => world.AddLink(ledge, negative),
+                    check.Throws(StatusCode.InvalidArgument, "tolerance", () => world.AddLink(ledge, negative),
                                  "a negative tolerance");
                     check.That(world.GetLinks(ledge).Length == 2, "nothing refused was added");
-                    check.Throws(StatusBits.InvalidArgument, "cross link", () => world.SaveLinksJson(ledge),
+                    check.Throws(StatusCode.InvalidArgument, "cross link", () => world.SaveLinksJson(ledge),
                                  "saving cross links");
                 }
             });
@@ -342,18 +342,18 @@ namespace NavLink.Tests
                                "generated again at the same stop: replaced, not doubled");
 
                     // Refused: the same navmesh twice, a bad tolerance, another body, a stale navmesh; a cancel changes nothing.
-                    check.Throws(StatusBits.InvalidArgument, "nl_navmesh_generate_cross_links",
+                    check.Throws(StatusCode.InvalidArgument, "nl_navmesh_generate_cross_links",
                                  () => world.GenerateCrossLinks(ledge, ledge, 0.25f, settings), "the same navmesh twice");
-                    check.Throws(StatusBits.InvalidArgument, "tolerance", () => world.GenerateCrossLinks(ledge, deck, -1, settings),
+                    check.Throws(StatusCode.InvalidArgument, "tolerance", () => world.GenerateCrossLinks(ledge, deck, -1, settings),
                                  "a negative tolerance");
                     NavmeshId wide = world.AddNavmesh(Quad(PlatformTop));  // the default radius, 0.6
-                    check.Throws(StatusBits.InvalidArgument, "bodies", () => world.GenerateCrossLinks(ledge, wide, 0.25f, settings),
+                    check.Throws(StatusCode.InvalidArgument, "bodies", () => world.GenerateCrossLinks(ledge, wide, 0.25f, settings),
                                  "navmeshes for different bodies");
                     world.RemoveNavmesh(wide);
-                    check.Throws(StatusBits.InvalidHandle, "second", () => world.GenerateCrossLinks(ledge, wide, 0.25f, settings),
+                    check.Throws(StatusCode.InvalidHandle, "second", () => world.GenerateCrossLinks(ledge, wide, 0.25f, settings),
                                  "a removed navmesh");
                     LinkId[] before = ids(world.GetLinks(ledge));
-                    check.Throws(StatusBits.Cancelled, "", () => world.GenerateCrossLinks(ledge, deck, 0.25f, settings, (f, s) => false),
+                    check.Throws(StatusCode.Cancelled, "", () => world.GenerateCrossLinks(ledge, deck, 0.25f, settings, (f, s) => false),
                                  "a cancelled generation");
                     check.That(ids(world.GetLinks(ledge)).SequenceEqual(before), "a cancelled generation changes nothing");
                 }

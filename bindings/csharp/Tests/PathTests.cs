@@ -80,8 +80,8 @@ namespace NavLink.Tests
 
                         world.ReleasePath(walker);
                         world.ReleasePath(jumper);
-                        check.Throws(StatusBits.InvalidHandle, "nl_path_poll", () => world.PollPath(walker), "polling a released ticket");
-                        check.Throws(StatusBits.InvalidHandle, "nl_path_release", () => world.ReleasePath(jumper), "releasing twice");
+                        check.Throws(StatusCode.InvalidHandle, "nl_path_poll", () => world.PollPath(walker), "polling a released ticket");
+                        check.Throws(StatusCode.InvalidHandle, "nl_path_release", () => world.ReleasePath(jumper), "releasing twice");
                         Thread.Sleep(50);
                         check.That(calls[0] == 1 && calls[1] == 1, "each callback ran exactly once");
                     }
@@ -110,13 +110,13 @@ namespace NavLink.Tests
                     world.CancelPath(doomed);
                     check.That(cancelledOutcome == PathOutcome.Cancelled && cancelledOnThread == thread,
                                "a queued request cancels at once, its callback on the cancelling thread: " + cancelledOutcome);
-                    check.Throws(StatusBits.InvalidArgument, "nl_path_process", () => world.ProcessPaths(0, double.NaN), "a NaN budget");
+                    check.Throws(StatusCode.InvalidArgument, "nl_path_process", () => world.ProcessPaths(0, double.NaN), "a NaN budget");
                     PathBudget small = World.DefaultPathBudget();
                     check.That(small.Size == (uint)System.Runtime.InteropServices.Marshal.SizeOf(typeof(PathBudget)) &&
                                small.MaxRequests == 0 && small.MaxMilliseconds == 0 && small.MaxSearchNodes == 0,
                                "the default budget: no limits");
                     small.Size = 8;
-                    check.Throws(StatusBits.InvalidArgument, "budget", () => world.ProcessPaths(small), "a budget whose size is too small");
+                    check.Throws(StatusCode.InvalidArgument, "budget", () => world.ProcessPaths(small), "a budget whose size is too small");
                     check.That(world.ProcessPaths() == 1, "ProcessPaths plans the one request left");
                     PathResult result;
                     check.That(world.TryGetPathResult(jumper, out result) && result.Outcome == PathOutcome.Complete, "planned by the host");
@@ -199,10 +199,10 @@ namespace NavLink.Tests
                         fixed (PathFinished* f = buffer)
                         {
                             check.Status(Native.nl_path_take_finished(world.DangerousGetPointer(), f, 2, &count, &remaining),
-                                         StatusBits.InvalidArgument, "out_finished", "an element size left at 0");
+                                         StatusCode.InvalidArgument, "out_finished", "an element size left at 0");
                             buffer[0] = Native.nl_path_finished_init();
-                            uint status = Native.nl_path_take_finished(world.DangerousGetPointer(), f, 2, &count, &remaining);
-                            check.That(status == StatusBits.Success && count == 1 && remaining == 0 && buffer[0].Ticket.Equals(raw) &&
+                            StatusCode status = Native.nl_path_take_finished(world.DangerousGetPointer(), f, 2, &count, &remaining);
+                            check.That(status == StatusCode.Success && count == 1 && remaining == 0 && buffer[0].Ticket.Equals(raw) &&
                                        buffer[0].Outcome == PathOutcome.Complete && buffer[0].User == IntPtr.Zero,
                                        "a refused take loses nothing: " + count + " taken");
                         }
@@ -216,30 +216,30 @@ namespace NavLink.Tests
                 {
                     NavmeshId navmesh = GapLevelWithLinks(world);
                     int calls = 0;
-                    check.Throws(StatusBits.InvalidHandle, "nl_path_request",
+                    check.Throws(StatusCode.InvalidHandle, "nl_path_request",
                                  () => world.RequestPath(new PathQuery(default(NavmeshId), TestLevels.WestPoint, TestLevels.EastPoint, TestLevels.Walker()),
                                                          (t, o) => ++calls), "a request on the null navmesh");
                     AgentCapabilities negative = TestLevels.Jumper();
                     negative.MaxJumpDistance = -1;
-                    check.Throws(StatusBits.InvalidArgument, "max_jump_distance",
+                    check.Throws(StatusCode.InvalidArgument, "max_jump_distance",
                                  () => world.RequestPath(new PathQuery(navmesh, TestLevels.WestPoint, TestLevels.EastPoint, negative), (t, o) => ++calls),
                                  "a negative jump distance");
-                    check.Throws(StatusBits.InvalidArgument, "start",
+                    check.Throws(StatusCode.InvalidArgument, "start",
                                  () => world.FindPath(new PathQuery(navmesh, new Vec3(float.NaN, 0, 0), TestLevels.EastPoint, TestLevels.Walker())),
                                  "a NaN start");
                     world.ProcessPaths();
                     check.That(calls == 0 && world.GetPathQueueStats().Submitted == 0, "refused requests never call back");
-                    check.Throws(StatusBits.InvalidHandle, "nl_path_cancel", () => world.CancelPath(default(PathTicket)), "cancelling the null ticket");
+                    check.Throws(StatusCode.InvalidHandle, "nl_path_cancel", () => world.CancelPath(default(PathTicket)), "cancelling the null ticket");
                     unsafe
                     {
-                        check.Status(Native.nl_path_get_queue_stats(world.DangerousGetPointer(), null), StatusBits.InvalidArgument,
+                        check.Status(Native.nl_path_get_queue_stats(world.DangerousGetPointer(), null), StatusCode.InvalidArgument,
                                      "out_stats", "nl_path_get_queue_stats without out_stats");
                     }
                 }
             });
         }
 
-        private static NavmeshId GapLevelWithLinks(World world)
+        internal static NavmeshId GapLevelWithLinks(World world)
         {
             TestLevels.AddGapLevel(world);
             NavmeshId navmesh = world.BuildNavmesh(World.DefaultAgentType());

@@ -22,11 +22,11 @@ namespace NavLink.Tests
                     check.That(mine.Name == RoofPlugin.Name && !mine.Builtin && mine.Version == "1.0" && mine.AbiVersion == 1 &&
                                mine.Kinds == PluginKinds.NavmeshBuilder, "the C# plugin describes itself: " + mine.Name);
                     check.That(world.GetPlugins().Length == builtin.Length + 1, "and is listed");
-                    check.Throws(StatusBits.InvalidArgument, RoofPlugin.Name, () => world.RegisterPlugin(RoofPlugin.EntryFunction),
+                    check.Throws(StatusCode.InvalidArgument, RoofPlugin.Name, () => world.RegisterPlugin(RoofPlugin.EntryFunction),
                                  "a second plugin of the same name");
 
                     // Its refusal reaches the caller through host->set_error.
-                    check.Throws(StatusBits.NotFound, RoofPlugin.NoTrianglesMessage,
+                    check.Throws(StatusCode.NotFound, RoofPlugin.NoTrianglesMessage,
                                  () => world.BuildNavmesh(World.DefaultAgentType(), null, null, RoofPlugin.Name), "an empty level");
 
                     world.AddMesh(new float[] {0, 0, 0, 0, 0, 4, 4, 0.5f, 4}, new uint[] {0, 1, 2});
@@ -38,7 +38,7 @@ namespace NavLink.Tests
                     World.DescribeNavmeshFile(world.SaveNavmesh(navmesh), out madeFor);
                     check.That(madeFor.Contains("\"builder_settings\":" + RoofPlugin.Used), "what the roof recorded: " + madeFor);
 
-                    check.Throws(StatusBits.NotFound, "nl_plugin_load", () => world.LoadPlugin("/no/such/plugin.so"), "a missing library");
+                    check.Throws(StatusCode.NotFound, "nl_plugin_load", () => world.LoadPlugin("/no/such/plugin.so"), "a missing library");
                 }
             });
         }

@@ -28,21 +28,21 @@ namespace NavLink.Tests
         public static NativeCallbacks.PluginEntryFn EntryFunction { get { return EntryDelegate; } }
 
         [MonoPInvokeCallback(typeof(NativeCallbacks.PluginEntryFn))]
-        private static unsafe uint Entry(uint hostAbiVersion, IntPtr host, IntPtr outInfo)
+        private static unsafe StatusCode Entry(uint hostAbiVersion, IntPtr host, IntPtr outInfo)
         {
-            if (hostAbiVersion < 1) return StatusBits.Failure | StatusBits.VersionMismatch;
+            if (hostAbiVersion < 1) return StatusCode.Failure | StatusCode.VersionMismatch;
             var info = (PluginInfo*)outInfo;
-            info->AbiVersion = 1;
+            info->AbiVersion = PluginAbi.Version;
             info->Name = NameUtf8;
             info->Version = VersionUtf8;
             info->Description = DescriptionUtf8;
             info->Kinds = PluginKinds.NavmeshBuilder;
             info->NavmeshBuilder.Build = Marshal.GetFunctionPointerForDelegate(BuildDelegate);
-            return StatusBits.Success;
+            return StatusCode.Success;
         }
 
         [MonoPInvokeCallback(typeof(NativeCallbacks.NavmeshBuildFn))]
-        private static unsafe uint Build(IntPtr state, IntPtr hostPointer, IntPtr defPointer, IntPtr sink, IntPtr sinkContext)
+        private static unsafe StatusCode Build(IntPtr state, IntPtr hostPointer, IntPtr defPointer, IntPtr sink, IntPtr sinkContext)
         {
             try
             {
@@ -51,21 +51,21 @@ namespace NavLink.Tests
                 var getTriangles = (NativeCallbacks.HostGetLevelTrianglesFn)Marshal.GetDelegateForFunctionPointer(
                     host->GetLevelTriangles, typeof(NativeCallbacks.HostGetLevelTrianglesFn));
                 uint vertexCount, triangleCount;
-                uint status = getTriangles(host->Context, null, 0, &vertexCount, null, 0, &triangleCount);
-                if (StatusBits.Failed(status)) return status;
+                StatusCode status = getTriangles(host->Context, null, 0, &vertexCount, null, 0, &triangleCount);
+                if (Status.Failed(status)) return status;
                 if (triangleCount == 0)
                 {
                     var setError = (NativeCallbacks.HostSetErrorFn)Marshal.GetDelegateForFunctionPointer(
                         host->SetError, typeof(NativeCallbacks.HostSetErrorFn));
                     setError(host->Context, NoTrianglesUtf8);
-                    return StatusBits.Failure | StatusBits.NotFound;
+                    return StatusCode.Failure | StatusCode.NotFound;
                 }
                 var vertices = new float[3 * vertexCount];
                 var indices = new uint[3 * triangleCount];
                 fixed (float* v = vertices)
                 fixed (uint* t = indices)
                     status = getTriangles(host->Context, v, vertexCount, &vertexCount, t, triangleCount, &triangleCount);
-                if (StatusBits.Failed(status)) return status;
+                if (Status.Failed(status)) return status;
 
                 float minX = float.MaxValue, minZ = float.MaxValue, maxX = float.MinValue, maxY = float.MinValue, maxZ = float.MinValue;
                 for (int i = 0; i < vertexCount; ++i)
@@ -100,7 +100,7 @@ namespace NavLink.Tests
                     var record = (NativeCallbacks.HostRecordBuildSettingsFn)Marshal.GetDelegateForFunctionPointer(
                         host->RecordBuildSettings, typeof(NativeCallbacks.HostRecordBuildSettingsFn));
                     status = record(host->Context, UsedUtf8, (UIntPtr)UsedLength);
-                    if (StatusBits.Failed(status)) return status;
+                    if (Status.Failed(status)) return status;
                 }
                 var send = (NativeCallbacks.NavmeshSinkFn)Marshal.GetDelegateForFunctionPointer(sink, typeof(NativeCallbacks.NavmeshSinkFn));
                 return send(sinkContext, (IntPtr)(&navmesh));
@@ -109,7 +109,7 @@ namespace NavLink.Tests
             {
                 // Never let an exception unwind into the library.
                 Console.Error.WriteLine("csharp-roof: " + e);
-                return StatusBits.Failure | StatusBits.InternalError;
+                return StatusCode.Failure | StatusCode.InternalError;
             }
         }
     }

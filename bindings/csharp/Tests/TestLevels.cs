@@ -12,7 +12,7 @@ namespace NavLink.Tests
 
         /// <summary>A box from (x0, y0, z0) to (x1, y1, z1): corner k takes x from bit 0, y from bit 1, z from bit 2;
         /// transform: column-major 4x4 (null: identity).</summary>
-        public static MeshId AddBox(World world, float x0, float y0, float z0, float x1, float y1, float z1, uint flags = 0,
+        public static MeshId AddBox(World world, float x0, float y0, float z0, float x1, float y1, float z1, MeshFlags flags = MeshFlags.None,
                                     float[] transform = null)
         {
             var v = new float[24];

@@ -1,0 +1,29 @@
+namespace NavLink
+{
+    /// <summary>A navmesh from the host's engine (nl_navmesh_def), as managed arrays. Null arrays are the
+    /// header's NULL: every polygon a triangle, area 0, no detail mesh.</summary>
+    public sealed class NavmeshInput
+    {
+        /// <summary>x y z per vertex, world space (or the Surface mesh's own space).</summary>
+        public float[] Vertices;
+        /// <summary>Polygon corners, polygon after polygon.</summary>
+        public uint[] Indices;
+        /// <summary>Corners of each polygon (3..16); null: triangles.</summary>
+        public byte[] PolygonVertexCounts;
+        public byte[] Areas;
+        public float WeldTolerance = 0.001f;
+        public AgentType Agent;
+        public float[] DetailVertices;
+        public uint[] DetailTriangles;
+        public uint[] DetailTriangleStarts;
+        /// <summary>A movable mesh (MeshFlags.Movable) the navmesh rides, or the null id (default): with one,
+        /// the coordinates are in that mesh's own space and World.SetMeshTransform moves the navmesh with it.</summary>
+        public MeshId Surface;
+
+        public NavmeshInput()
+        {
+            LibraryCheck.EnsureLoaded();
+            Agent = Native.nl_default_agent_type();
+        }
+    }
+}

@@ -1,0 +1,80 @@
+using System;
+using System.Runtime.InteropServices;
+
+namespace NavLink
+{
+    /// <summary>nl_mesh_def: pointers are borrowed for the call (pin the arrays around it).</summary>
+    [StructLayout(LayoutKind.Sequential)]
+    public struct MeshDef
+    {
+        public uint Size;
+        public IntPtr Vertices;
+        public uint VertexCount;
+        public uint VertexStride;
+        public IntPtr Indices;
+        public uint TriangleCount;
+        public MeshFlags Flags;
+        public IntPtr Transform;
+        public ulong UserData;
+    }
+
+    /// <summary>nl_mesh_info. Get one from Native.nl_mesh_info_init() (Size set) before asking.</summary>
+    [StructLayout(LayoutKind.Sequential)]
+    public unsafe struct MeshInfo
+    {
+        public uint Size;
+        public uint VertexCount;
+        public uint TriangleCount;
+        public uint DegenerateTriangleCount;
+        public MeshFlags Flags;
+        public fixed float Transform[16];
+        public Vec3 BoundsMin;
+        public Vec3 BoundsMax;
+        public ulong UserData;
+    }
+
+    /// <summary>nl_ray.</summary>
+    [StructLayout(LayoutKind.Sequential)]
+    public struct Ray
+    {
+        public Vec3 Origin;
+        public Vec3 Direction;
+        public float MaxDistance;
+
+        public Ray(Vec3 origin, Vec3 direction, float maxDistance)
+        {
+            Origin = origin;
+            Direction = direction;
+            MaxDistance = maxDistance;
+        }
+    }
+
+    /// <summary>nl_ray_hit. An array element that may grow: the library lays out an output array with the
+    /// element size in its first element's Size (Native.nl_ray_hit_init(); World.CastRays sets it).</summary>
+    [StructLayout(LayoutKind.Sequential)]
+    public unsafe struct RayHit
+    {
+        public uint Size;
+        public float Distance;
+        public Vec3 Point;
+        public Vec3 Normal;
+        public MeshId Mesh;
+        public uint Triangle;
+        public byte Hit;
+        public fixed byte Reserved[3];
+    }
+
+    /// <summary>nl_segment.</summary>
+    [StructLayout(LayoutKind.Sequential)]
+    public struct Segment
+    {
+        public Vec3 From;
+        public Vec3 To;
+
+        public Segment(Vec3 from, Vec3 to)
+        {
+            From = from;
+            To = to;
+        }
+    }
+}

@@ -1,0 +1,149 @@
+using System;
+using System.Runtime.InteropServices;
+
+namespace NavLink
+{
+    public sealed partial class World
+    {
+        /// <summary>Recast's usual agent: radius 0.6, height 2, climb 0.9, slope 45.</summary>
+        public static AgentType DefaultAgentType() { LibraryCheck.EnsureLoaded(); return Native.nl_default_agent_type(); }
+
+        public static RecastSettings DefaultRecastSettings() { LibraryCheck.EnsureLoaded(); return Native.nl_default_recast_settings(); }
+
+        /// <summary>Builds a navmesh with a builder plugin ("recast" when builder is null) from every static
+        /// mesh, or, with a surface (a MeshFlags.Movable mesh), from that mesh alone in its own space: the
+        /// navmesh then rides it. recast: the Recast builder's settings; settingsJson is applied over them.</summary>
+        public unsafe NavmeshId BuildNavmesh(AgentType agent, RecastSettings? recast = null, string settingsJson = null,
+                                             string builder = null, MeshId surface = default(MeshId))
+        {
+            NavmeshBuildDef def = Native.nl_default_navmesh_build_def();
+            RecastSettings settings = recast ?? default(RecastSettings);
+            byte[] json = settingsJson == null ? null : System.Text.Encoding.UTF8.GetBytes(settingsJson);
+            byte[] name = Utf8.EncodeZ(builder);
+            NavmeshId id;
+            fixed (byte* j = json)
+            fixed (byte* n = name)
+            using (var w = Enter())
+            {
+                def.Agent = agent;
+                def.Builder = (IntPtr)n;
+                def.Settings = recast.HasValue ? (IntPtr)(&settings) : IntPtr.Zero;
+                // A non-null pointer for "", which is not a JSON object: let the library say so.
+                byte empty = 0;
+                def.SettingsJson = json == null ? IntPtr.Zero : json.Length == 0 ? (IntPtr)(&empty) : (IntPtr)j;
+                def.SettingsJsonLength = (UIntPtr)(json == null ? 0 : json.Length);
+                def.Surface = surface;
+                Status.Check(Native.nl_navmesh_build(w.Pointer, &def, &id));
+            }
+            return id;
+        }
+
+        /// <summary>Adds the host's navmesh (copied and repaired as nl_navmesh_add says).</summary>
+        public unsafe NavmeshId AddNavmesh(NavmeshInput input)
+        {
+            if (input == null) throw new ArgumentNullException("input");
+            NavmeshDef def = Native.nl_default_navmesh_def();
+            NavmeshId id;
+            fixed (float* v = input.Vertices)
+            fixed (uint* i = input.Indices)
+            fixed (byte* c = input.PolygonVertexCounts)
+            fixed (byte* a = input.Areas)
+            fixed (float* dv = input.DetailVertices)
+            fixed (uint* dt = input.DetailTriangles)
+            fixed (uint* ds = input.DetailTriangleStarts)
+            using (var w = Enter())
+            {
+                def.Vertices = (IntPtr)v;
+                def.VertexCount = (uint)(input.Vertices == null ? 0 : input.Vertices.Length / 3);
+                def.Indices = (IntPtr)i;
+                def.PolygonVertexCounts = (IntPtr)c;
+                def.PolygonCount = (uint)(input.PolygonVertexCounts != null ? input.PolygonVertexCounts.Length
+                                          : input.Indices == null ? 0 : input.Indices.Length / 3);
+                def.Areas = (IntPtr)a;
+                def.WeldTolerance = input.WeldTolerance;
+                def.Agent = input.Agent;
+                def.DetailVertices = (IntPtr)dv;
+                def.DetailVertexCount = (uint)(input.DetailVertices == null ? 0 : input.DetailVertices.Length / 3);
+                def.DetailTriangles = (IntPtr)dt;
+                def.DetailTriangleCount = (uint)(input.DetailTriangles == null ? 0 : input.DetailTriangles.Length / 3);
+                def.DetailTriangleStarts = (IntPtr)ds;
+                def.Surface = input.Surface;
+                Status.Check(Native.nl_navmesh_add(w.Pointer, &def, &id));
+            }
+            return id;
+        }
+
+        public void RemoveNavmesh(NavmeshId navmesh)
+        {
+            using (var w = Enter()) Status.Check(Native.nl_navmesh_remove(w.Pointer, navmesh));
+        }
+
+        public bool IsValid(NavmeshId navmesh)
+        {
+            using (var w = Enter()) return Native.nl_navmesh_is_valid(w.Pointer, navmesh) != 0;
+        }
+
+        public unsafe NavmeshInfo GetNavmeshInfo(NavmeshId navmesh)
+        {
+            NavmeshInfo info = Native.nl_navmesh_info_init();
+            using (var w = Enter()) Status.Check(Native.nl_navmesh_get_info(w.Pointer, navmesh, &info));
+            return info;
+        }
+
+        /// <summary>The navmesh's vertices after welding.</summary>
+        public unsafe Vec3[] GetNavmeshVertices(NavmeshId navmesh)
+        {
+            using (var w = Enter())
+            {
+                IntPtr world = w.Pointer;
+                return ListTwoCall<Vec3>((buffer, capacity, count) =>
+                    Native.nl_navmesh_get_vertices(world, navmesh, (float*)buffer, capacity, count));
+            }
+        }
+
+        public unsafe NavPolygon GetPolygon(NavmeshId navmesh, uint polygon)
+        {
+            NavPolygon result = Native.nl_nav_polygon_init();
+            using (var w = Enter()) Status.Check(Native.nl_navmesh_get_polygon(w.Pointer, navmesh, polygon, &result));
+            return result;
+        }
+
+        public unsafe BoundaryEdge[] GetBoundaryEdges(NavmeshId navmesh)
+        {
+            using (var w = Enter())
+            {
+                IntPtr world = w.Pointer;
+                return ListTwoCall<BoundaryEdge>((buffer, capacity, count) =>
+                    Native.nl_navmesh_get_boundary_edges(world, navmesh, (BoundaryEdge*)buffer, capacity, count));
+            }
+        }
+
+        /// <summary>The navmesh point nearest each query point within the box point +- halfExtents.</summary>
+        public unsafe void FindNearest(NavmeshId navmesh, ReadOnlySpan<Vec3> points, Vec3 halfExtents, Span<NavPoint> found)
+        {
+            if (found.Length < points.Length) throw new ArgumentException("one result per point", "found");
+            fixed (Vec3* p = &MemoryMarshal.GetReference(points))
+            fixed (NavPoint* f = &MemoryMarshal.GetReference(found))
+            using (var w = Enter())
+                Status.Check(Native.nl_navmesh_find_nearest(w.Pointer, navmesh, (float*)p, (uint)points.Length,
+                                                            (float*)&halfExtents, f));
+        }
+
+        public NavPoint[] FindNearest(NavmeshId navmesh, Vec3[] points, Vec3 halfExtents)
+        {
+            var found = new NavPoint[points.Length];
+            FindNearest(navmesh, points, halfExtents, found);
+            return found;
+        }
+
+        public unsafe NavmeshId[] GetNavmeshes()
+        {
+            using (var w = Enter())
+            {
+                IntPtr world = w.Pointer;
+                return ListTwoCall<NavmeshId>((buffer, capacity, count) =>
+                    Native.nl_world_get_navmeshes(world, (NavmeshId*)buffer, capacity, count));
+            }
+        }
+    }
+}

@@ -1,0 +1,116 @@
+using System;
+using System.Runtime.InteropServices;
+using System.Text;
+
+namespace NavLink
+{
+    public sealed partial class World
+    {
+        /// <summary>The null surface and no flags (for a raw Native.nl_navmesh_load; LoadNavmesh takes surface
+        /// and sameLevel instead).</summary>
+        public static NavmeshLoadDef DefaultNavmeshLoadDef() { LibraryCheck.EnsureLoaded(); return Native.nl_default_navmesh_load_def(); }
+
+        /// <summary>The navmesh, its links (generated and manual, in GetLinks order) and what they were made for,
+        /// as a navmesh file's bytes. InvalidArgument for a navmesh with cross links (a file holds one navmesh's
+        /// own links).</summary>
+        public unsafe byte[] SaveNavmesh(NavmeshId navmesh)
+        {
+            using (var w = Enter())
+            {
+                while (true)
+                {
+                    UIntPtr size;
+                    Status.Check(Native.nl_navmesh_save(w.Pointer, navmesh, null, UIntPtr.Zero, &size));
+                    var buffer = new byte[(ulong)size];
+                    StatusCode status;
+                    fixed (byte* b = buffer)
+                        status = Native.nl_navmesh_save(w.Pointer, navmesh, b, (UIntPtr)buffer.Length, &size);
+                    if (Status.IsBufferTooSmall(status)) continue;  // links changed
+                    Status.Check(status);
+                    if ((ulong)size < (ulong)buffer.Length) Array.Resize(ref buffer, (int)(ulong)size);
+                    return buffer;
+                }
+            }
+        }
+
+        /// <summary>SaveNavmesh written to the file at path, whole or not at all. IoError: cannot write.</summary>
+        public unsafe void SaveNavmeshFile(NavmeshId navmesh, string path)
+        {
+            if (path == null) throw new ArgumentNullException("path");
+            byte[] utf8 = Utf8.EncodeZ(path);
+            fixed (byte* p = utf8)
+            using (var w = Enter())
+                Status.Check(Native.nl_navmesh_save_file(w.Pointer, navmesh, p));
+        }
+
+        private static NavmeshLoadDef LoadDef(MeshId surface, bool sameLevel)
+        {
+            NavmeshLoadDef def = Native.nl_default_navmesh_load_def();
+            def.Surface = surface;
+            def.Flags = sameLevel ? NavmeshLoadFlags.SameLevel : NavmeshLoadFlags.None;
+            return def;
+        }
+
+        /// <summary>Adds the navmesh and its links held in a navmesh file's bytes (new ids). surface: for a file
+        /// whose navmesh rode a movable mesh (NavmeshFileInfo.RidesSurface), the movable mesh it rides now;
+        /// sameLevel: refuse (InvalidArgument) a file baked from other level geometry than the world holds now.
+        /// VersionMismatch (not a NavLink navmesh file, or a newer format), ParseError (truncated or corrupted),
+        /// InvalidArgument (a surface for a file that rode none or none for one that did; polygons or links
+        /// that do not fit). Nothing is added on failure.</summary>
+        public unsafe NavmeshId LoadNavmesh(ReadOnlySpan<byte> data, MeshId surface = default(MeshId), bool sameLevel = false)
+        {
+            NavmeshLoadDef def = LoadDef(surface, sameLevel);
+            NavmeshId id;
+            fixed (byte* d = &MemoryMarshal.GetReference(data))
+            using (var w = Enter())
+                Status.Check(Native.nl_navmesh_load(w.Pointer, d, (UIntPtr)data.Length, &def, &id));
+            return id;
+        }
+
+        /// <summary>LoadNavmesh from the file at path; also NotFound (no such file) and IoError.</summary>
+        public unsafe NavmeshId LoadNavmeshFile(string path, MeshId surface = default(MeshId), bool sameLevel = false)
+        {
+            if (path == null) throw new ArgumentNullException("path");
+            byte[] utf8 = Utf8.EncodeZ(path);
+            NavmeshLoadDef def = LoadDef(surface, sameLevel);
+            NavmeshId id;
+            fixed (byte* p = utf8)
+            using (var w = Enter())
+                Status.Check(Native.nl_navmesh_load_file(w.Pointer, p, &def, &id));
+            return id;
+        }
+
+        /// <summary>Reads a navmesh file's bytes without loading it (no world needed): what it holds, and in
+        /// madeForJson what it was made for as a JSON object ({"builder", "builder_settings", "link_settings",
+        /// "link_plugins", "level_hash", "writer"}). VersionMismatch (not a NavLink navmesh file, or a newer format),
+        /// ParseError (truncated or corrupted).</summary>
+        public static unsafe NavmeshFileInfo DescribeNavmeshFile(ReadOnlySpan<byte> data, out string madeForJson)
+        {
+            LibraryCheck.EnsureLoaded();
+            var info = default(NavmeshFileInfo);
+            info.Size = (uint)sizeof(NavmeshFileInfo);
+            fixed (byte* d = &MemoryMarshal.GetReference(data))
+            {
+                UIntPtr length;
+                Status.Check(Native.nl_navmesh_file_describe(d, (UIntPtr)data.Length, &info, null, UIntPtr.Zero, &length));
+                var buffer = new byte[(ulong)length + 1];
+                fixed (byte* b = buffer)
+                    Status.Check(Native.nl_navmesh_file_describe(d, (UIntPtr)data.Length, null, b, (UIntPtr)buffer.Length,
+                                                                 &length));
+                madeForJson = Encoding.UTF8.GetString(buffer, 0, (int)(ulong)length);
+            }
+            return info;
+        }
+
+        /// <summary>DescribeNavmeshFile without the made-for JSON.</summary>
+        public static unsafe NavmeshFileInfo DescribeNavmeshFile(ReadOnlySpan<byte> data)
+        {
+            LibraryCheck.EnsureLoaded();
+            var info = default(NavmeshFileInfo);
+            info.Size = (uint)sizeof(NavmeshFileInfo);
+            fixed (byte* d = &MemoryMarshal.GetReference(data))
+                Status.Check(Native.nl_navmesh_file_describe(d, (UIntPtr)data.Length, &info, null, UIntPtr.Zero, null));
+            return info;
+        }
+    }
+}
