@@ -1,4 +1,4 @@
-"""NavLink for Python: a ctypes binding of libnavlink.so (standard library only).
+"""NavLink for Python: a ctypes binding of libnavlink (standard library only).
 
 Two layers:
 - ``lib``: the C ABI as is. Every ``nl_*`` function of navlink.h, recast.h and plugin.h with its prototype,
@@ -9,20 +9,43 @@ Two layers:
   ``links = (Link * n)(); links[0] = nl_link_init()`` (ctypes arrays are zeroed, not constructed).
 - ``World``: the world as a Python object (a context manager; ``close()`` destroys it). Failures raise
   ``NavLinkError`` with the status and the library's message; lists come back as Python lists; callbacks
-  are Python callables.
+  are Python callables; geometry is taken from lists or, without copying, from any buffer (numpy arrays,
+  ``array.array``, ``memoryview``, ``bytes``); a queued path is a ``PathRequest`` to wait for, await, and
+  release with ``with``.
 
-The library is found through ``NAVLINK_LIBRARY`` (a path to libnavlink.so), else the loader's search path
-(``LD_LIBRARY_PATH``...). Every World method may be called from several threads (navlink.h); ``close()``
-must not run at the same time as another call on the world.
+The library is the first of: ``NAVLINK_LIBRARY`` (a path to libnavlink.so), pkg-config's ``navlink.pc``
+(its libdir), ``ctypes.util.find_library("navlink")`` (the loader's cache), the installed places
+(``sys.prefix``/lib, /usr/local/lib, /usr/lib...); ``library_path`` says which was loaded, and an
+ImportError lists what was tried. Every World method may be called from several threads (navlink.h);
+``close()`` must not run at the same time as another call on the world.
 """
+from __future__ import annotations
+
 import collections
 import ctypes
 import ctypes.util
+import enum
 import itertools
+import math
 import os
+import subprocess
+import sys
+import sysconfig
 import threading
+import time
 from ctypes import (CFUNCTYPE, POINTER, Structure, byref, c_char_p, c_double, c_float, c_int32, c_size_t,
                     c_uint8, c_uint32, c_uint64, c_void_p, sizeof)
+from typing import (TYPE_CHECKING, Any, Callable, Generator, Iterable, List, NamedTuple, Optional, Sequence, Tuple,
+                    Union)
+
+if TYPE_CHECKING:
+    import asyncio
+
+if sys.version_info >= (3, 12):
+    from collections.abc import Buffer
+else:
+    # typing has no name for "supports the buffer protocol" before 3.12 (PEP 688).
+    Buffer = Any
 
 # ---------------------------------------------------------------------------------------------------------
 # Constants (navlink.h, recast.h, plugin.h)
@@ -57,8 +80,29 @@ NO_POLYGON = 0xFFFFFFFF
 SEGMENT_WALK = 0
 LINK_JUMP, LINK_DROP, LINK_MANUAL, LINK_FIRST_PLUGIN_KIND = 1, 2, 3, 256
 AREA_EXCLUDED = 0.0
-(PATH_PENDING, PATH_COMPLETE, PATH_PARTIAL, PATH_NO_PATH, PATH_START_OFF_NAVMESH, PATH_GOAL_OFF_NAVMESH,
- PATH_CANCELLED, PATH_FAILED) = range(8)
+
+
+class PathOutcome(enum.IntEnum):
+    """How a path request ended (nl_path_outcome); equal to the PATH_* constants."""
+    PENDING = 0
+    COMPLETE = 1
+    PARTIAL = 2
+    NO_PATH = 3
+    START_OFF_NAVMESH = 4
+    GOAL_OFF_NAVMESH = 5
+    CANCELLED = 6
+    FAILED = 7
+
+
+PATH_PENDING = PathOutcome.PENDING
+PATH_COMPLETE = PathOutcome.COMPLETE
+PATH_PARTIAL = PathOutcome.PARTIAL
+PATH_NO_PATH = PathOutcome.NO_PATH
+PATH_START_OFF_NAVMESH = PathOutcome.START_OFF_NAVMESH
+PATH_GOAL_OFF_NAVMESH = PathOutcome.GOAL_OFF_NAVMESH
+PATH_CANCELLED = PathOutcome.CANCELLED
+PATH_FAILED = PathOutcome.FAILED
+PATH_WAIT_FOREVER = 0xFFFFFFFF
 (AGENT_IDLE, AGENT_WALKING, AGENT_JUMPING, AGENT_FALLING, AGENT_TRAVERSING, AGENT_WAITING, AGENT_ARRIVED,
  AGENT_FAILED) = range(8)
 (AGENT_REASON_NONE, AGENT_REASON_DESTINATION_SET, AGENT_REASON_LINK_GONE, AGENT_REASON_WORLD_CHANGED,
@@ -74,12 +118,20 @@ NAVMESH_LOAD_SAME_LEVEL = 0x1
 LINKS_LOAD_ANY_BODY = 0x1
 
 
-def succeeded(status):
+def succeeded(status: int) -> bool:
     return status & STATUS_SUCCESS != 0
 
 
-def failed(status):
+def failed(status: int) -> bool:
     return status & STATUS_FAILURE != 0
+
+
+def _outcome(value: int) -> Union[PathOutcome, int]:
+    """A PathOutcome, or the number itself for an outcome newer than this module."""
+    try:
+        return PathOutcome(value)
+    except ValueError:
+        return value
 
 
 # ---------------------------------------------------------------------------------------------------------
@@ -100,7 +152,7 @@ class _Growable(Structure):
     """An output struct that may grow (``size`` first). A new one has ``size`` set to this module's
     sizeof, as the header's nl_*_init() does, unless a size or positional values are given."""
 
-    def __init__(self, *args, **kwargs):
+    def __init__(self, *args: Any, **kwargs: Any) -> None:
         super().__init__(*args, **kwargs)
         if not args and "size" not in kwargs:
             self.size = sizeof(self)
@@ -121,17 +173,19 @@ class WorldDef(Structure):
 class _Id(Structure):
     _fields_ = [("index1", c_uint32), ("generation", c_uint32)]
 
-    def __eq__(self, other):
-        return type(self) is type(other) and (self.index1, self.generation) == (other.index1, other.generation)
+    def __eq__(self, other: object) -> bool:
+        if type(self) is not type(other):
+            return NotImplemented  # lets a PathRequest compare itself with its PathTicket
+        return (self.index1, self.generation) == (other.index1, other.generation)  # type: ignore[attr-defined]
 
-    def __hash__(self):
+    def __hash__(self) -> int:
         return hash((type(self).__name__, self.index1, self.generation))
 
-    def __repr__(self):
+    def __repr__(self) -> str:
         return "%s(%d, %d)" % (type(self).__name__, self.index1, self.generation)
 
     @property
-    def is_null(self):
+    def is_null(self) -> bool:
         return self.index1 == 0
 
 
@@ -517,6 +571,7 @@ _PROTOTYPES = {
                                 _u32p]),
     "nl_path_request": (c_uint32, [_w, POINTER(PathRequestDef), POINTER(PathTicket)]),
     "nl_path_poll": (c_uint32, [_w, PathTicket, _u32p]),
+    "nl_path_wait": (c_uint32, [_w, PathTicket, c_uint32, _u32p]),
     "nl_path_get_result": (c_uint32, [_w, PathTicket, POINTER(PathResultInfo), POINTER(PathPoint), c_uint32, _u32p]),
     "nl_path_cancel": (c_uint32, [_w, PathTicket]),
     "nl_path_release": (c_uint32, [_w, PathTicket]),
@@ -546,75 +601,156 @@ _PROTOTYPES = {
 }
 
 
-def _load_library():
-    path = os.environ.get("NAVLINK_LIBRARY") or ctypes.util.find_library("navlink") or "libnavlink.so.0"
-    library = ctypes.CDLL(path)
+# The library's file names, newest interface first: the versioned name is the one a runtime install has
+# (Debian's libnavlink0 would ship no unversioned libnavlink.so).
+_LIBRARY_FILE_NAMES = {"darwin": ["libnavlink.0.dylib", "libnavlink.dylib"],
+                       "win32": ["navlink.dll"]}.get(sys.platform, ["libnavlink.so.0", "libnavlink.so"])
+
+
+def _installed_library_dirs() -> List[str]:
+    """Where `cmake --install` puts the library: under this Python's prefix (a virtual environment or a
+    conda-like prefix installed into with --prefix), then the system's prefixes, Debian's multiarch
+    folder included (GNUInstallDirs' libdir for /usr)."""
+    multiarch = sysconfig.get_config_var("MULTIARCH")
+    dirs = []
+    for prefix in (sys.prefix, "/usr/local", "/usr"):
+        dirs += [os.path.join(prefix, "lib", multiarch)] if multiarch else []
+        dirs += [os.path.join(prefix, "lib64"), os.path.join(prefix, "lib")]
+    return list(dict.fromkeys(dirs))
+
+
+def _pkg_config_library_dir() -> Tuple[Optional[str], str]:
+    """(libdir of navlink.pc or None, what pkg-config said)."""
+    try:
+        run = subprocess.run(["pkg-config", "--variable=libdir", "navlink"], capture_output=True, text=True,
+                             timeout=30)
+    except (OSError, subprocess.SubprocessError) as e:
+        return None, "pkg-config did not run (%s)" % e
+    libdir = run.stdout.strip()
+    if run.returncode != 0 or not libdir:
+        said = " ".join(run.stderr.split()) or "exit status %d" % run.returncode
+        return None, "no navlink.pc (%s)" % said
+    return libdir, "libdir %s" % libdir
+
+
+def _library_candidates() -> Iterable[Tuple[str, Optional[str], str]]:
+    """(how it was found, path or loader name to try or None, note) in the order of the lookup."""
+    explicit = os.environ.get("NAVLINK_LIBRARY")
+    if explicit:
+        yield "NAVLINK_LIBRARY", explicit, ""
+        return  # an explicit choice that fails must not be papered over by another library
+    yield "NAVLINK_LIBRARY", None, "not set"
+    libdir, said = _pkg_config_library_dir()
+    found_in_libdir = False
+    for name in _LIBRARY_FILE_NAMES if libdir else []:
+        path = os.path.join(libdir, name)
+        if os.path.exists(path):
+            found_in_libdir = True
+            yield "pkg-config navlink", path, said
+    if not found_in_libdir:
+        yield "pkg-config navlink", None, said if libdir is None else "%s holds none of %s" % (
+            said, ", ".join(_LIBRARY_FILE_NAMES))
+    name = ctypes.util.find_library("navlink")
+    yield 'ctypes.util.find_library("navlink")', name, "" if name else "found nothing"
+    for directory in _installed_library_dirs():
+        for file_name in _LIBRARY_FILE_NAMES:
+            path = os.path.join(directory, file_name)
+            if os.path.exists(path):
+                yield "installed", path, ""
+    yield "installed", None, "none of %s in %s" % (", ".join(_LIBRARY_FILE_NAMES),
+                                                   ", ".join(_installed_library_dirs()))
+
+
+def _open_library() -> Tuple[ctypes.CDLL, str]:
+    """The first candidate that loads, with its path; ImportError listing every attempt otherwise."""
+    attempts = []
+    for how, path, note in _library_candidates():
+        if path is None:
+            attempts.append("%s: %s" % (how, note))
+            continue
+        try:
+            return ctypes.CDLL(path), path
+        except OSError as e:
+            attempts.append("%s: %s did not load (%s)" % (how, path, e))
+    raise ImportError(
+        "navlink: libnavlink not found. Tried, in order:\n  " + "\n  ".join(attempts) +
+        "\nInstall NavLink (cmake --install build, or --prefix somewhere), then set PKG_CONFIG_PATH to the "
+        "folder of its navlink.pc (PREFIX/lib/pkgconfig) unless pkg-config finds it already, or set "
+        "NAVLINK_LIBRARY to the path of libnavlink.so.", name="navlink")
+
+
+def _load_library() -> Tuple[ctypes.CDLL, str]:
+    library, path = _open_library()
     for name, (restype, argtypes) in _PROTOTYPES.items():
-        function = getattr(library, name)  # AttributeError: a library older than this binding
+        try:
+            function = getattr(library, name)
+        except AttributeError:
+            raise ImportError("navlink: %s has no %s: the library is older than this binding (%d.%d.%d)" % (
+                path, name, VERSION_MAJOR, VERSION_MINOR, VERSION_PATCH), name="navlink") from None
         function.restype = restype
         function.argtypes = argtypes
-    return library
+    return library, path
 
 
-lib = _load_library()
+lib, library_path = _load_library()
 
 
 # The header's inline initialisers (NL_DEFINE_OUTPUT_INIT): not exported by the library, so defined here
 # under their C names. Each is a new struct of the class, whose constructor sets `size`.
 
-def nl_mesh_info_init():
+def nl_mesh_info_init() -> MeshInfo:
     return MeshInfo()
 
 
-def nl_ray_hit_init():
+def nl_ray_hit_init() -> RayHit:
     return RayHit()
 
 
-def nl_navmesh_info_init():
+def nl_navmesh_info_init() -> NavmeshInfo:
     return NavmeshInfo()
 
 
-def nl_nav_polygon_init():
+def nl_nav_polygon_init() -> NavPolygon:
     return NavPolygon()
 
 
-def nl_link_init():
+def nl_link_init() -> Link:
     return Link()
 
 
-def nl_link_generation_report_init():
+def nl_link_generation_report_init() -> LinkGenerationReport:
     return LinkGenerationReport()
 
 
-def nl_path_point_init():
+def nl_path_point_init() -> PathPoint:
     return PathPoint()
 
 
-def nl_path_result_init():
+def nl_path_result_init() -> PathResultInfo:
     return PathResultInfo()
 
 
-def nl_path_finished_init():
+def nl_path_finished_init() -> PathFinished:
     return PathFinished()
 
 
-def nl_path_queue_stats_init():
+def nl_path_queue_stats_init() -> PathQueueStats:
     return PathQueueStats()
 
 
-def nl_agent_info_init():
+def nl_agent_info_init() -> AgentInfo:
     return AgentInfo()
 
 
-def nl_agent_trajectory_init():
+def nl_agent_trajectory_init() -> AgentTrajectory:
     return AgentTrajectory()
 
 
-def nl_agent_event_init():
+def nl_agent_event_init() -> AgentEvent:
     return AgentEvent()
 
 
-def nl_plugin_description_init():
+def nl_plugin_description_init() -> PluginDescription:
     return PluginDescription()
 
 # ---------------------------------------------------------------------------------------------------------
@@ -625,36 +761,36 @@ def nl_plugin_description_init():
 class NavLinkError(Exception):
     """A failed call: its nl_status and the library's message (the calling thread's last error)."""
 
-    def __init__(self, status, message):
+    def __init__(self, status: int, message: str) -> None:
         super().__init__("%s (%s)" % (message, status_string(status)))
         self.status = status
         self.message = message
 
-    def has(self, bit):
+    def has(self, bit: int) -> bool:
         return self.status & bit != 0
 
 
-def status_string(status):
+def status_string(status: int) -> str:
     """nl_status_string: "failure: invalid argument"."""
     return lib.nl_status_string(status).decode()
 
 
-def last_error_message():
+def last_error_message() -> str:
     """The calling thread's last error message (read right after the failing call)."""
     return lib.nl_get_last_error_message().decode("utf-8", "replace")
 
 
-def _check(status):
+def _check(status: int) -> int:
     if failed(status):
         raise NavLinkError(status, last_error_message())
     return status
 
 
-def _buffer_too_small(status):
+def _buffer_too_small(status: int) -> bool:
     return failed(status) and status & STATUS_BUFFER_TOO_SMALL != 0
 
 
-def _growable_array(item_type, count):
+def _growable_array(item_type: Any, count: int) -> Any:
     """A zeroed ctypes array; for growable elements, the first has `size` set (the library's stride)."""
     items = (item_type * count)()
     if count > 0 and isinstance(item_type, type) and issubclass(item_type, _Growable):
@@ -662,7 +798,7 @@ def _growable_array(item_type, count):
     return items
 
 
-def _two_call(call, item_type):
+def _two_call(call: Callable[[Any, int, Any], int], item_type: Any) -> list:
     """The header's two-call pattern: count, then fill. The list may grow in between: ask again."""
     while True:
         count = c_uint32(0)
@@ -677,15 +813,108 @@ def _two_call(call, item_type):
         return list(items[:count.value])
 
 
-def _floats(values):
-    return (c_float * len(values))(*values)
+# ---------------------------------------------------------------------------------------------------------
+# Arrays handed to C: lists and tuples are converted; buffers (numpy arrays, array.array, memoryview, bytes)
+# are read in place, as the library copies what it keeps before the call returns.
+# ---------------------------------------------------------------------------------------------------------
+
+FloatValues = Union[Sequence[float], Buffer]
+IndexValues = Union[Sequence[int], Buffer]
+ByteValues = Union[Sequence[int], Buffer]
+Point = Union[Sequence[float], Buffer]  # x y z
+LogHandler = Callable[[int, int, str], None]  # (level, status, message)
+ProgressHandler = Callable[[float, str], Any]  # (fraction, stage) -> false to cancel
+PathHandler = Callable[["PathTicket", Union["PathOutcome", int]], None]  # (ticket, outcome)
+
+# The struct codes of a buffer's items each C type takes (numpy float32 'f', uint32 'I', int32 'i'; 'L' and 'l'
+# where long is 4 bytes); a buffer of raw bytes is taken for any type, as that type's items in native order.
+_ACCEPTED_FORMATS = {c_float: ("f", "32-bit floats (numpy.float32, array('f'))"),
+                     c_uint32: ("IiLl", "32-bit integers (numpy.uint32 or int32, array('I'))"),
+                     c_uint8: ("Bbc", "bytes (numpy.uint8, array('B'), bytes)")}
+_RAW_BYTE_FORMATS = "Bbc"
+_NATIVE_ORDER_PREFIXES = "@=" + ("<" if sys.byteorder == "little" else ">")
 
 
-def _flatten(points):
-    return [c for p in points for c in p]
+class _CArray(NamedTuple):
+    items: Any  # a ctypes array over the caller's buffer when it is writable, else a copy
+    count: int  # its items
+    row: int    # items per row: a 2-D buffer's last dimension, else the group asked for
 
 
-def version():
+def _c_array(name: str, values: Any, item: Any, group: int = 1, wider_rows: bool = False,
+             length: Optional[int] = None) -> _CArray:
+    """`values` as a ctypes array of `item` for C to read, named `name` in errors. A multiple of `group`
+    items (rows of `group` in a 2-D buffer; of `group` or more with wider_rows, the row's length given back
+    for the C stride), or exactly `length`."""
+    if isinstance(values, (list, tuple)):
+        try:
+            items = (item * len(values))(*values)
+        except TypeError as e:
+            raise TypeError("%s: %s" % (name, e)) from None
+        return _checked_length(name, _CArray(items, len(values), group), group, length)
+    try:
+        view = memoryview(values)
+    except TypeError:
+        raise TypeError("%s: a list, a tuple or a buffer (numpy array, array.array, memoryview, bytes) expected, "
+                        "not %s" % (name, type(values).__name__)) from None
+    codes, description = _ACCEPTED_FORMATS[item]
+    size = sizeof(item)
+    raw = view.format in _RAW_BYTE_FORMATS
+    if not raw and (view.format.lstrip(_NATIVE_ORDER_PREFIXES) not in codes or view.itemsize != size):
+        raise TypeError("%s: %s expected, not a buffer of format %r (%d bytes an item)" % (
+            name, description, view.format, view.itemsize))
+    if not view.c_contiguous:
+        raise ValueError("%s: the buffer is not C-contiguous (a strided view): pass a contiguous copy, e.g. "
+                         "numpy.ascontiguousarray(%s)" % (name, name))
+    if view.nbytes % size:
+        raise ValueError("%s: %d bytes, not a whole number of %d-byte items" % (name, view.nbytes, size))
+    row = group
+    if view.ndim > 1 and not raw:
+        row = view.shape[-1]
+        if row != group and not (wider_rows and row > group):
+            raise ValueError("%s: a buffer of shape %s; rows of %d%s expected" % (
+                name, tuple(view.shape), group, " or more" if wider_rows else ""))
+    count = view.nbytes // size
+    flat = view.cast("B")
+    if view.readonly:
+        # ctypes hands C a pointer only into writable memory: one copy.
+        items = (item * count).from_buffer_copy(flat)
+    else:
+        items = (item * count).from_buffer(flat)
+        if ctypes.addressof(items) % ctypes.alignment(item):
+            items = (item * count).from_buffer_copy(flat)  # a slice at an odd offset: C needs aligned items
+    return _checked_length(name, _CArray(items, count, row), row, length)
+
+
+def _checked_length(name: str, array: _CArray, row: int, length: Optional[int]) -> _CArray:
+    if length is not None and array.count != length:
+        raise ValueError("%s: %d values, %d expected" % (name, array.count, length))
+    if array.count % row:
+        raise ValueError("%s: %d values, not a multiple of %d" % (name, array.count, row))
+    return array
+
+
+def _floats(values: FloatValues, name: str = "values", length: Optional[int] = None) -> Any:
+    return _c_array(name, values, c_float, length=length).items
+
+
+def _point(values: FloatValues, name: str) -> Any:
+    """An x y z point for C (it reads three floats)."""
+    return _floats(values, name, length=3)
+
+
+def _points(name: str, points: Union[Sequence[Sequence[float]], FloatValues]) -> _CArray:
+    """Points as (x, y, z) sequences, flat x y z values, or a buffer of them."""
+    if isinstance(points, (list, tuple)) and points and not isinstance(points[0], (int, float)):
+        points = [c for p in points for c in p]
+    return _c_array(name, points, c_float, group=3)
+
+
+def _pointer(array: _CArray, item: Any) -> Any:
+    return ctypes.cast(array.items, POINTER(item))
+
+
+def version() -> Tuple[int, int, int]:
     """The loaded library's version as (major, minor, patch)."""
     v = lib.nl_get_version()
     return (v.major, v.minor, v.patch)
@@ -697,24 +926,24 @@ def version():
 # back to the caller (progress).
 # ---------------------------------------------------------------------------------------------------------
 
-_registry = {}
+_registry: dict = {}
 _registry_lock = threading.Lock()
 _keys = itertools.count(1)
 
 
-def _register(obj):
+def _register(obj: Any) -> int:
     with _registry_lock:
         key = next(_keys)
         _registry[key] = obj
         return key
 
 
-def _lookup(key, remove=False):
+def _lookup(key: int, remove: bool = False) -> Any:
     with _registry_lock:
         return _registry.pop(key, None) if remove else _registry.get(key)
 
 
-def _report(what):
+def _report(what: str) -> None:
     import traceback
     print("navlink: %s raised (ignored):" % what)
     traceback.print_exc()
@@ -729,9 +958,9 @@ def _log_trampoline(user, level, status, message):
 
 
 class _ProgressContext:
-    def __init__(self, handler):
+    def __init__(self, handler: ProgressHandler) -> None:
         self.handler = handler
-        self.error = None
+        self.error: Optional[BaseException] = None
 
 
 @ProgressFn
@@ -746,17 +975,52 @@ def _progress_trampoline(user, fraction, stage):
         return 0
 
 
+class _PathCompletion:
+    """What a queued request's callback tells: the caller's on_finished, then the asyncio futures awaiting
+    it, each woken on its own loop. Apart from the PathRequest, so that the registry holding it until the
+    callback runs does not keep the PathRequest (and its release on __del__) alive."""
+
+    def __init__(self, on_finished: Optional[PathHandler]) -> None:
+        self.on_finished = on_finished
+        self.outcome: Optional[Union[PathOutcome, int]] = None
+        self._lock = threading.Lock()
+        self._waiters: List[Tuple[asyncio.AbstractEventLoop, asyncio.Future]] = []
+
+    def finish(self, ticket: PathTicket, outcome: Union[PathOutcome, int]) -> None:
+        if self.on_finished is not None:
+            try:
+                self.on_finished(ticket, outcome)
+            except Exception:
+                _report("a path callback")
+        with self._lock:
+            self.outcome = outcome
+            waiters, self._waiters = self._waiters, []
+        for loop, future in waiters:
+            try:
+                loop.call_soon_threadsafe(_settle, future, outcome)
+            except RuntimeError:
+                pass  # that loop is closed: nobody is awaiting there any more
+
+    def add_waiter(self, loop: asyncio.AbstractEventLoop, future: asyncio.Future) -> None:
+        with self._lock:
+            if self.outcome is None:
+                self._waiters.append((loop, future))
+                return
+        future.set_result(self.outcome)
+
+
+def _settle(future: asyncio.Future, outcome: Union[PathOutcome, int]) -> None:
+    if not future.done():  # the awaiting task may have been cancelled meanwhile
+        future.set_result(outcome)
+
+
 @PathCallback
-def _path_trampoline(user, ticket, outcome):
+def _path_trampoline(user: int, ticket: PathTicket, outcome: int) -> None:
     # navlink.h: called exactly once per accepted request, so the entry goes.
-    handler = _lookup(user, remove=True)
-    try:
-        handler(PathTicket(ticket.index1, ticket.generation), outcome)
-    except Exception:
-        _report("a path callback")
+    _lookup(user, remove=True).finish(PathTicket(ticket.index1, ticket.generation), _outcome(outcome))
 
 
-def _with_progress(progress, call):
+def _with_progress(progress: Optional[ProgressHandler], call: Callable[[Any, Any], int]) -> int:
     if progress is None:
         return _check(call(ProgressFn(), None))
     context = _ProgressContext(progress)
@@ -778,61 +1042,61 @@ def _with_progress(progress, call):
 # ---------------------------------------------------------------------------------------------------------
 
 
-def default_agent_type():
+def default_agent_type() -> AgentType:
     return lib.nl_default_agent_type()
 
 
-def default_recast_settings():
+def default_recast_settings() -> RecastSettings:
     return lib.nl_default_recast_settings()
 
 
-def default_link_def():
+def default_link_def() -> LinkDef:
     """A manual one-way link, enabled, cost modifier 1, requirements measured from its ends, within one navmesh
     (landing_navmesh null; tolerance 0.25 for when it is set): set start and end."""
     return lib.nl_default_link_def()
 
 
-def default_link_settings():
+def default_link_settings() -> LinkSettings:
     return lib.nl_default_link_settings()
 
 
-def default_navmesh_load_def():
+def default_navmesh_load_def() -> NavmeshLoadDef:
     """The null surface and no flags: a NavmeshLoadDef for a raw nl_navmesh_load (World.load_navmesh takes
     surface and same_level instead)."""
     return lib.nl_default_navmesh_load_def()
 
 
-def describe_navmesh_file(data):
-    """Reads a navmesh file's bytes without loading it (nl_navmesh_file_describe; no world needed): returns
-    (NavmeshFileInfo, made-for JSON string), the JSON an object {"builder", "builder_settings",
-    "link_settings", "link_plugins", "level_hash", "writer"}. STATUS_VERSION_MISMATCH (not a NavLink
-    navmesh file, or a newer format), STATUS_PARSE_ERROR (truncated or corrupted)."""
-    data = bytes(data)
+def describe_navmesh_file(data: ByteValues) -> Tuple[NavmeshFileInfo, str]:
+    """Reads a navmesh file's bytes (any buffer) without loading it (nl_navmesh_file_describe; no world
+    needed): returns (NavmeshFileInfo, made-for JSON string), the JSON an object {"builder",
+    "builder_settings", "link_settings", "link_plugins", "level_hash", "writer"}. STATUS_VERSION_MISMATCH
+    (not a NavLink navmesh file, or a newer format), STATUS_PARSE_ERROR (truncated or corrupted)."""
+    file = _c_array("data", data, c_uint8)
     info = NavmeshFileInfo()
     info.size = sizeof(NavmeshFileInfo)
     length = c_size_t()
-    _check(lib.nl_navmesh_file_describe(data, len(data), byref(info), None, 0, byref(length)))
+    _check(lib.nl_navmesh_file_describe(file.items, file.count, byref(info), None, 0, byref(length)))
     buffer = ctypes.create_string_buffer(length.value + 1)
-    _check(lib.nl_navmesh_file_describe(data, len(data), None, buffer, len(buffer), byref(length)))
+    _check(lib.nl_navmesh_file_describe(file.items, file.count, None, buffer, len(buffer), byref(length)))
     return info, buffer.raw[:length.value].decode()
 
 
-def default_agent_capabilities():
+def default_agent_capabilities() -> AgentCapabilities:
     return lib.nl_default_agent_capabilities()
 
 
-def default_path_budget():
+def default_path_budget() -> PathBudget:
     """No limits: a PathBudget to change the fields of (World.process_paths takes one as `budget`)."""
     return lib.nl_default_path_budget()
 
 
-def default_agent_def():
+def default_agent_def() -> AgentDef:
     """A walker, height 2, speed 3.5, acceleration 8, gravity 9.81, avoidance on, on the null navmesh at the
     origin: set navmesh and position."""
     return lib.nl_default_agent_def()
 
 
-def link_settings_from_json(json, base=None):
+def link_settings_from_json(json: str, base: Optional[LinkSettings] = None) -> LinkSettings:
     """Applies a JSON object's keys to `base` (the defaults when None) and validates the result."""
     settings = LinkSettings.from_buffer_copy(base if base is not None else default_link_settings())
     data = json.encode()
@@ -841,50 +1105,143 @@ def link_settings_from_json(json, base=None):
 
 
 class PathQuery:
-    """One path request, with nl_default_path_request_def's defaults."""
+    """One path request, with nl_default_path_request_def's defaults. area_costs: cost per metre walked in
+    area i (a list or a buffer of 32-bit floats)."""
 
-    def __init__(self, navmesh, start, goal, agent):
+    def __init__(self, navmesh: NavmeshId, start: Sequence[float], goal: Sequence[float],
+                 agent: AgentCapabilities) -> None:
         d = lib.nl_default_path_request_def()
         self.navmesh = navmesh
-        self.start = tuple(start)
-        self.goal = tuple(goal)
-        self.search_half_extents = tuple(d.search_half_extents)
+        self.start: Tuple[float, ...] = tuple(start)
+        self.goal: Tuple[float, ...] = tuple(goal)
+        self.search_half_extents: Tuple[float, ...] = tuple(d.search_half_extents)
         self.agent = agent
-        self.area_costs = []
-        self.link_cost = d.link_cost
-        self.max_nodes = d.max_nodes
-        self.accept_partial = d.accept_partial != 0
+        self.area_costs: FloatValues = []
+        self.link_cost: float = d.link_cost
+        self.max_nodes: int = d.max_nodes
+        self.accept_partial: bool = d.accept_partial != 0
 
-    def _def(self):
+    def _def(self) -> Tuple[PathRequestDef, _CArray]:
         d = lib.nl_default_path_request_def()
         d.navmesh = self.navmesh
         d.start = Vec3(*self.start)
         d.goal = Vec3(*self.goal)
         d.search_half_extents = Vec3(*self.search_half_extents)
         d.agent = self.agent
-        costs = _floats(self.area_costs) if self.area_costs else None
-        d.area_costs = ctypes.cast(costs, POINTER(c_float)) if costs is not None else None
-        d.area_cost_count = len(self.area_costs)
+        costs = _c_array("area_costs", self.area_costs, c_float)
+        d.area_costs = _pointer(costs, c_float) if costs.count else None
+        d.area_cost_count = costs.count
         d.link_cost = self.link_cost
         d.max_nodes = self.max_nodes
         d.accept_partial = 1 if self.accept_partial else 0
         return d, costs  # the caller keeps `costs` alive for the call
 
 
-FinishedPath = collections.namedtuple("FinishedPath", ["ticket", "outcome"])
-FinishedPath.__doc__ = "A request that finished, as World.take_finished_paths reports it."
+class FinishedPath(NamedTuple):
+    """A request that finished, as World.take_finished_paths reports it."""
+    ticket: PathTicket
+    outcome: Union[PathOutcome, int]
 
 
 class PathResult:
     """What a finished request found: `info` (nl_path_result) and its `points`."""
 
-    def __init__(self, info, points):
+    def __init__(self, info: PathResultInfo, points: List[PathPoint]) -> None:
         self.info = info
         self.points = points
 
     @property
-    def outcome(self):
-        return self.info.outcome
+    def outcome(self) -> Union[PathOutcome, int]:
+        return _outcome(self.info.outcome)
+
+
+class PathRequest:
+    """A queued path request (World.request_path). wait() blocks for it, ``await request`` (or
+    ``await request.wait_async()``) awaits it on an asyncio loop, result() reads it. Its ticket is released
+    on leaving ``with world.request_path(...) as request:``, by release(), or when the object is dropped:
+    a request released before it finished is cancelled (its on_finished still runs, with PATH_CANCELLED).
+    detach() keeps the ticket for the caller to release. It equals its PathTicket (``ticket``) and passes for
+    it to World's ticket methods and to raw ``lib`` calls."""
+
+    def __init__(self, world: World, completion: _PathCompletion) -> None:
+        self.world = world
+        self.ticket = PathTicket()
+        self._completion = completion
+        self._owned = False  # the ticket is this object's to release
+
+    @property
+    def _as_parameter_(self) -> PathTicket:  # what ctypes passes for it
+        return self.ticket
+
+    def wait(self, timeout: Optional[float] = None) -> Union[PathOutcome, int]:
+        """World.wait_path: the outcome once finished, PATH_PENDING when `timeout` seconds passed first."""
+        return self.world.wait_path(self, timeout)
+
+    async def wait_async(self) -> Union[PathOutcome, int]:
+        """The outcome, awaited on the running asyncio loop: the request's callback wakes it through
+        loop.call_soon_threadsafe (no thread, no polling). In a world without path workers something must
+        plan the queue meanwhile (process_paths, or a wait on another thread). Cancelling the awaiting task
+        leaves the request queued: cancel() it."""
+        import asyncio  # not at module import: most hosts never await
+        loop = asyncio.get_running_loop()
+        future = loop.create_future()
+        self._completion.add_waiter(loop, future)
+        return await future
+
+    def __await__(self) -> Generator[Any, None, Union[PathOutcome, int]]:
+        return self.wait_async().__await__()
+
+    def poll(self) -> Union[PathOutcome, int]:
+        return self.world.poll_path(self)
+
+    def result(self) -> Optional[PathResult]:
+        """World.path_result: the PathResult, or None while pending."""
+        return self.world.path_result(self)
+
+    def cancel(self) -> None:
+        self.world.cancel_path(self)
+
+    def release(self) -> None:
+        """Releases the ticket (World.release_path) unless it is released or detached already."""
+        if self._owned:
+            self.world.release_path(self)
+
+    def detach(self) -> PathTicket:
+        """The ticket, no longer released by this object: the caller releases it (World.release_path)."""
+        self._owned = False
+        return self.ticket
+
+    def __enter__(self) -> PathRequest:
+        return self
+
+    def __exit__(self, *exc: object) -> None:
+        self.release()
+
+    def __del__(self) -> None:
+        # The safety net: a request dropped without release. Once its world is closed the ticket is gone
+        # with it; at interpreter exit the module may be half torn down.
+        world = getattr(self, "world", None)
+        if getattr(self, "_owned", False) and world is not None and world._pointer is not None:
+            try:
+                self.release()
+            except Exception:
+                pass
+
+    def __eq__(self, other: object) -> bool:
+        if isinstance(other, PathRequest):
+            return self.ticket == other.ticket
+        if isinstance(other, PathTicket):
+            return self.ticket == other
+        return NotImplemented
+
+    def __hash__(self) -> int:
+        return hash(self.ticket)
+
+    def __repr__(self) -> str:
+        return "PathRequest(%d, %d)" % (self.ticket.index1, self.ticket.generation)
+
+
+TicketLike = Union[PathTicket, PathRequest]
 
 
 # ---------------------------------------------------------------------------------------------------------
@@ -898,8 +1255,10 @@ class World:
     # Points fetched in one go by find_path when the path has no more; longer ones are planned again.
     _FIRST_POINT_CAPACITY = 64
 
-    def __init__(self, worker_count=WORKERS_AUTO, path_worker_count=WORKERS_AUTO, log=None, log_level=LOG_WARNING,
-                 task_enqueue_fn=None, task_finish_fn=None, task_user=None, agent_paths_per_step=None):
+    def __init__(self, worker_count: int = WORKERS_AUTO, path_worker_count: int = WORKERS_AUTO,
+                 log: Optional[LogHandler] = None, log_level: int = LOG_WARNING,
+                 task_enqueue_fn: Optional[Callable[..., Any]] = None, task_finish_fn: Optional[Callable[..., Any]] = None,
+                 task_user: Optional[int] = None, agent_paths_per_step: Optional[int] = None) -> None:
         """log: callable(level, status, message), called on the failing thread (maybe a NavLink worker).
 
         agent_paths_per_step: agents' paths planned in one step() at most (None: the library's default, 32);
@@ -941,7 +1300,7 @@ class World:
         self._pointer = pointer
         self._plugin_entries = []
 
-    def close(self):
+    def close(self) -> None:
         """Destroys the world: queued path requests finish as cancelled (their callbacks run now)."""
         if self._pointer is not None:
             lib.nl_world_destroy(self._pointer)
@@ -949,90 +1308,98 @@ class World:
             if self._log_key is not None:
                 _lookup(self._log_key, remove=True)
 
-    def __del__(self):
+    def __del__(self) -> None:
         # A world dropped without close(): nothing else can be using it any more.
         if getattr(self, "_pointer", None) is not None and lib is not None:
             self.close()
 
-    def __enter__(self):
+    def __enter__(self) -> World:
         return self
 
-    def __exit__(self, *exc):
+    def __exit__(self, *exc: object) -> None:
         self.close()
 
     @property
-    def pointer(self):
+    def pointer(self) -> c_void_p:
         """The nl_world* for `lib` calls; ValueError once closed."""
         if self._pointer is None:
             raise ValueError("the world is closed")
         return self._pointer
 
     @property
-    def worker_count(self):
+    def worker_count(self) -> int:
         return lib.nl_world_get_worker_count(self.pointer)
 
     # --- level geometry ---
 
-    def add_mesh(self, vertices, indices, flags=0, transform=None, user_data=0):
-        """Registers a triangle mesh (copied): vertices flat x y z, indices three per triangle."""
-        d = lib.nl_default_mesh_def()
-        v, i = _floats(vertices), (c_uint32 * len(indices))(*indices)
-        t = _floats(transform) if transform is not None else None
-        d.vertices, d.vertex_count = ctypes.cast(v, POINTER(c_float)), len(vertices) // 3
-        d.indices, d.triangle_count = ctypes.cast(i, POINTER(c_uint32)), len(indices) // 3
-        d.flags, d.user_data = flags, user_data
-        d.transform = ctypes.cast(t, POINTER(c_float)) if t is not None else None
+    def add_mesh(self, vertices: FloatValues, indices: IndexValues, flags: int = 0,
+                 transform: Optional[FloatValues] = None, user_data: int = 0) -> MeshId:
+        """Registers a triangle mesh (copied by the library). vertices: x y z floats, flat or in rows (a
+        buffer of shape (n, 3), or (n, k > 3) with x y z first in each row: read with that stride);
+        indices: three per triangle. Each a list, a tuple, or a buffer read in place: a numpy array
+        (float32; uint32 or int32), an array.array ('f'; 'I'), a memoryview, or bytes holding them."""
+        d, keep = self._mesh_def(flags, transform, user_data)
+        v = _c_array("vertices", vertices, c_float, group=3, wider_rows=True)
+        i = _c_array("indices", indices, c_uint32, group=3)
+        d.vertices, d.vertex_count, d.vertex_stride = _pointer(v, c_float), v.count // v.row, v.row * sizeof(c_float)
+        d.indices, d.triangle_count = _pointer(i, c_uint32), i.count // 3
         mesh = MeshId()
         _check(lib.nl_mesh_add(self.pointer, byref(d), byref(mesh)))
         return mesh
 
-    def _options(self, flags, transform, user_data):
+    @staticmethod
+    def _mesh_def(flags: int, transform: Optional[FloatValues], user_data: int) -> Tuple[MeshDef, Any]:
         d = lib.nl_default_mesh_def()
-        t = _floats(transform) if transform is not None else None
+        t = _floats(transform, "transform", length=16) if transform is not None else None
         d.flags, d.user_data = flags, user_data
         d.transform = ctypes.cast(t, POINTER(c_float)) if t is not None else None
         return d, t
 
-    def add_obj_file(self, path, flags=0, transform=None, user_data=0):
-        d, keep = self._options(flags, transform, user_data)
+    def add_obj_file(self, path: Union[str, "os.PathLike[str]"], flags: int = 0,
+                     transform: Optional[FloatValues] = None, user_data: int = 0) -> MeshId:
+        d, keep = self._mesh_def(flags, transform, user_data)
         mesh = MeshId()
         _check(lib.nl_mesh_add_obj_file(self.pointer, os.fsencode(path), byref(d), byref(mesh)))
         return mesh
 
-    def add_obj_memory(self, data, flags=0, transform=None, user_data=0):
-        d, keep = self._options(flags, transform, user_data)
+    def add_obj_memory(self, data: ByteValues, flags: int = 0, transform: Optional[FloatValues] = None,
+                       user_data: int = 0) -> MeshId:
+        """An OBJ file's text from bytes or any buffer (read in place)."""
+        d, keep = self._mesh_def(flags, transform, user_data)
+        text = _c_array("data", data, c_uint8)
         mesh = MeshId()
-        _check(lib.nl_mesh_add_obj_memory(self.pointer, bytes(data), len(data), byref(d), byref(mesh)))
+        _check(lib.nl_mesh_add_obj_memory(self.pointer, ctypes.cast(text.items, c_char_p), text.count, byref(d),
+                                          byref(mesh)))
         return mesh
 
-    def remove_mesh(self, mesh):
+    def remove_mesh(self, mesh: MeshId) -> None:
         """Removes a mesh (STATUS_INVALID_ARGUMENT for a mesh a navmesh rides: remove the navmesh first)."""
         _check(lib.nl_mesh_remove(self.pointer, mesh))
 
-    def set_mesh_transform(self, mesh, transform):
+    def set_mesh_transform(self, mesh: MeshId, transform: FloatValues) -> None:
         """Replaces the mesh's transform (16 floats, column-major, affine). The navmeshes that ride it move
         with it; such a mesh takes rotations and translations only (STATUS_INVALID_ARGUMENT otherwise)."""
-        _check(lib.nl_mesh_set_transform(self.pointer, mesh, _floats(transform)))
+        _check(lib.nl_mesh_set_transform(self.pointer, mesh, _floats(transform, "transform", length=16)))
 
-    def is_mesh_valid(self, mesh):
+    def is_mesh_valid(self, mesh: MeshId) -> bool:
         return lib.nl_mesh_is_valid(self.pointer, mesh) != 0
 
-    def mesh_info(self, mesh):
+    def mesh_info(self, mesh: MeshId) -> MeshInfo:
         info = MeshInfo()
         _check(lib.nl_mesh_get_info(self.pointer, mesh, byref(info)))
         return info
 
-    def meshes(self):
+    def meshes(self) -> List[MeshId]:
         return _two_call(lambda b, c, n: lib.nl_world_get_meshes(self.pointer, b, c, n), MeshId)
 
-    def cast_rays(self, rays):
+    def cast_rays(self, rays: Sequence[Ray]) -> List[RayHit]:
         """rays: Ray structs; returns one RayHit each."""
         rays = (Ray * len(rays))(*rays)
         hits = _growable_array(RayHit, len(rays))
         _check(lib.nl_world_cast_rays(self.pointer, rays, len(rays), hits))
         return list(hits)
 
-    def segments_blocked(self, segments):
+    def segments_blocked(self, segments: Sequence[Tuple[Sequence[float], Sequence[float]]]) -> List[bool]:
         """segments: (from, to) pairs of points; returns a bool each."""
         items = (Segment * len(segments))(*[Segment(Vec3(*a), Vec3(*b)) for a, b in segments])
         blocked = (c_uint8 * len(segments))()
@@ -1041,7 +1408,9 @@ class World:
 
     # --- navmeshes ---
 
-    def build_navmesh(self, agent=None, recast=None, settings_json=None, builder=None, surface=None):
+    def build_navmesh(self, agent: Optional[AgentType] = None, recast: Optional[RecastSettings] = None,
+                      settings_json: Optional[str] = None, builder: Optional[str] = None,
+                      surface: Optional[MeshId] = None) -> NavmeshId:
         """Builds a navmesh with a builder plugin ("recast" when None): from every static mesh, or with
         `surface` (a MeshId of an MESH_MOVABLE mesh) from that mesh alone, in its own space; the navmesh
         then rides it (navmesh_info(...).surface)."""
@@ -1058,76 +1427,98 @@ class World:
         _check(lib.nl_navmesh_build(self.pointer, byref(d), byref(navmesh)))
         return navmesh
 
-    def add_navmesh(self, vertices, indices, polygon_vertex_counts=None, areas=None, weld_tolerance=None,
-                    agent=None, detail=None, surface=None):
-        """The host's navmesh (copied, repaired). detail: (vertices, triangles, triangle_starts) or None.
-        surface: a MeshId of an MESH_MOVABLE mesh the navmesh rides, or None; with one, the coordinates are
-        in that mesh's own space and set_mesh_transform moves the navmesh with the mesh."""
+    def add_navmesh(self, vertices: FloatValues, indices: IndexValues,
+                    polygon_vertex_counts: Optional[ByteValues] = None, areas: Optional[ByteValues] = None,
+                    weld_tolerance: Optional[float] = None, agent: Optional[AgentType] = None,
+                    detail: Optional[Tuple[FloatValues, IndexValues, IndexValues]] = None,
+                    surface: Optional[MeshId] = None) -> NavmeshId:
+        """The host's navmesh (copied, repaired). vertices and indices as add_mesh takes them (rows of x y z
+        first; indices: each polygon's corners, polygon after polygon); polygon_vertex_counts: corners per
+        polygon (bytes), None when every polygon is a triangle; areas: an area id (byte) per polygon or
+        None. detail: (vertices, triangles, triangle_starts: polygon count + 1 of them) or None. Lists or
+        buffers, read in place. surface: a MeshId of an MESH_MOVABLE mesh the navmesh rides, or None; with
+        one, the coordinates are in that mesh's own space and set_mesh_transform moves the navmesh with the
+        mesh."""
         d = lib.nl_default_navmesh_def()
-        keep = [_floats(vertices), (c_uint32 * len(indices))(*indices)]
-        d.vertices, d.vertex_count = ctypes.cast(keep[0], POINTER(c_float)), len(vertices) // 3
-        d.indices = ctypes.cast(keep[1], POINTER(c_uint32))
+        v = _c_array("vertices", vertices, c_float, group=3, wider_rows=True)
+        i = _c_array("indices", indices, c_uint32)
+        keep = [v, i]
+        d.vertices, d.vertex_count, d.vertex_stride = _pointer(v, c_float), v.count // v.row, v.row * sizeof(c_float)
+        d.indices = _pointer(i, c_uint32)
         if polygon_vertex_counts is not None:
-            keep.append((c_uint8 * len(polygon_vertex_counts))(*polygon_vertex_counts))
-            d.polygon_vertex_counts, d.polygon_count = ctypes.cast(keep[-1], POINTER(c_uint8)), len(polygon_vertex_counts)
+            counts = _c_array("polygon_vertex_counts", polygon_vertex_counts, c_uint8)
+            keep.append(counts)
+            # The library reads as many indices as the polygons have corners: more than given must not be read.
+            corners = sum(bytes(counts.items))
+            if corners != i.count:
+                raise ValueError("indices: %d values, but polygon_vertex_counts adds up to %d corners" % (
+                    i.count, corners))
+            d.polygon_vertex_counts, d.polygon_count = _pointer(counts, c_uint8), counts.count
         else:
-            d.polygon_count = len(indices) // 3
+            _checked_length("indices", i, 3, None)
+            d.polygon_count = i.count // 3
         if areas is not None:
-            keep.append((c_uint8 * len(areas))(*areas))
-            d.areas = ctypes.cast(keep[-1], POINTER(c_uint8))
+            keep.append(_c_array("areas", areas, c_uint8, length=d.polygon_count))
+            d.areas = _pointer(keep[-1], c_uint8)
         if weld_tolerance is not None:
             d.weld_tolerance = weld_tolerance
         if agent is not None:
             d.agent = agent
         if detail is not None:
-            dv, dt, ds = detail
-            keep += [_floats(dv), (c_uint32 * len(dt))(*dt), (c_uint32 * len(ds))(*ds)]
-            d.detail_vertices, d.detail_vertex_count = ctypes.cast(keep[-3], POINTER(c_float)), len(dv) // 3
-            d.detail_triangles, d.detail_triangle_count = ctypes.cast(keep[-2], POINTER(c_uint32)), len(dt) // 3
-            d.detail_triangle_starts = ctypes.cast(keep[-1], POINTER(c_uint32))
+            dv, dt, ds = (_c_array("detail vertices", detail[0], c_float, group=3),
+                          _c_array("detail triangles", detail[1], c_uint32, group=3),
+                          _c_array("detail triangle_starts", detail[2], c_uint32, length=d.polygon_count + 1))
+            keep += [dv, dt, ds]
+            d.detail_vertices, d.detail_vertex_count = _pointer(dv, c_float), dv.count // 3
+            d.detail_triangles, d.detail_triangle_count = _pointer(dt, c_uint32), dt.count // 3
+            d.detail_triangle_starts = _pointer(ds, c_uint32)
         if surface is not None:
             d.surface = surface
         navmesh = NavmeshId()
         _check(lib.nl_navmesh_add(self.pointer, byref(d), byref(navmesh)))
         return navmesh
 
-    def remove_navmesh(self, navmesh):
+    def remove_navmesh(self, navmesh: NavmeshId) -> None:
         _check(lib.nl_navmesh_remove(self.pointer, navmesh))
 
-    def is_navmesh_valid(self, navmesh):
+    def is_navmesh_valid(self, navmesh: NavmeshId) -> bool:
         return lib.nl_navmesh_is_valid(self.pointer, navmesh) != 0
 
-    def navmesh_info(self, navmesh):
+    def navmesh_info(self, navmesh: NavmeshId) -> NavmeshInfo:
         info = NavmeshInfo()
         _check(lib.nl_navmesh_get_info(self.pointer, navmesh, byref(info)))
         return info
 
-    def navmesh_vertices(self, navmesh):
+    def navmesh_vertices(self, navmesh: NavmeshId) -> List[Tuple[float, float, float]]:
         """The vertices after welding, as (x, y, z) tuples."""
         vertices = _two_call(lambda b, c, n: lib.nl_navmesh_get_vertices(
             self.pointer, navmesh, ctypes.cast(b, POINTER(c_float)), c, n), Vec3)
         return [tuple(v) for v in vertices]
 
-    def polygon(self, navmesh, index):
+    def polygon(self, navmesh: NavmeshId, index: int) -> NavPolygon:
         polygon = NavPolygon()
         _check(lib.nl_navmesh_get_polygon(self.pointer, navmesh, index, byref(polygon)))
         return polygon
 
-    def boundary_edges(self, navmesh):
+    def boundary_edges(self, navmesh: NavmeshId) -> List[BoundaryEdge]:
         return _two_call(lambda b, c, n: lib.nl_navmesh_get_boundary_edges(self.pointer, navmesh, b, c, n), BoundaryEdge)
 
-    def find_nearest(self, navmesh, points, half_extents):
-        found = (NavPoint * len(points))()
-        _check(lib.nl_navmesh_find_nearest(self.pointer, navmesh, _floats(_flatten(points)), len(points),
-                                           _floats(half_extents), found))
+    def find_nearest(self, navmesh: NavmeshId, points: Union[Sequence[Sequence[float]], FloatValues],
+                     half_extents: Point) -> List[NavPoint]:
+        """The navmesh point nearest each of `points` ((x, y, z) sequences, or flat x y z values or a buffer
+        of them) within the box of half_extents around it."""
+        queried = _points("points", points)
+        found = (NavPoint * (queried.count // 3))()
+        _check(lib.nl_navmesh_find_nearest(self.pointer, navmesh, queried.items, len(found),
+                                           _point(half_extents, "half_extents"), found))
         return list(found)
 
-    def navmeshes(self):
+    def navmeshes(self) -> List[NavmeshId]:
         return _two_call(lambda b, c, n: lib.nl_world_get_navmeshes(self.pointer, b, c, n), NavmeshId)
 
     # --- links ---
 
-    def add_link(self, navmesh, link_def):
+    def add_link(self, navmesh: NavmeshId, link_def: LinkDef) -> LinkId:
         """Adds a link (a LinkDef, from default_link_def()) to the navmesh: both ends within 1 m of it, or,
         with link_def.landing_navmesh set (a cross link), the start within 1 m of `navmesh` and the end within
         1 m of the landing navmesh, both in the world as the navmeshes stand now. A cross link is one-way
@@ -1137,30 +1528,32 @@ class World:
         _check(lib.nl_link_add(self.pointer, navmesh, byref(link_def), byref(link)))
         return link
 
-    def update_link(self, link, link_def):
+    def update_link(self, link: LinkId, link_def: LinkDef) -> None:
         """Replaces the link's fields with link_def's (errors as add_link)."""
         _check(lib.nl_link_update(self.pointer, link, byref(link_def)))
 
-    def remove_link(self, link):
+    def remove_link(self, link: LinkId) -> None:
         _check(lib.nl_link_remove(self.pointer, link))
 
-    def is_link_valid(self, link):
+    def is_link_valid(self, link: LinkId) -> bool:
         return lib.nl_link_is_valid(self.pointer, link) != 0
 
-    def link(self, link):
+    def link(self, link: LinkId) -> Link:
         out = Link()
         _check(lib.nl_link_get(self.pointer, link, byref(out)))
         return out
 
-    def links(self, navmesh):
+    def links(self, navmesh: NavmeshId) -> List[Link]:
         return _two_call(lambda b, c, n: lib.nl_navmesh_get_links(self.pointer, navmesh, b, c, n), Link)
 
-    def remove_generated_links(self, navmesh):
+    def remove_generated_links(self, navmesh: NavmeshId) -> int:
         removed = c_uint32()
         _check(lib.nl_navmesh_remove_generated_links(self.pointer, navmesh, byref(removed)))
         return removed.value
 
-    def generate_links(self, navmesh, settings=None, plugin_settings_json=None, progress=None):
+    def generate_links(self, navmesh: NavmeshId, settings: Optional[LinkSettings] = None,
+                       plugin_settings_json: Optional[str] = None,
+                       progress: Optional[ProgressHandler] = None) -> LinkGenerationReport:
         """Generates the navmesh's links. progress: callable(fraction, stage) -> bool (False cancels); an
         exception it raises cancels the generation and is raised here."""
         s = LinkSettings.from_buffer_copy(settings if settings is not None else default_link_settings())
@@ -1172,7 +1565,9 @@ class World:
             self.pointer, navmesh, byref(s), fn, user, byref(report)))
         return report
 
-    def generate_cross_links(self, first, second, tolerance, settings=None, progress=None):
+    def generate_cross_links(self, first: NavmeshId, second: NavmeshId, tolerance: float,
+                             settings: Optional[LinkSettings] = None,
+                             progress: Optional[ProgressHandler] = None) -> LinkGenerationReport:
         """Generates the jump and drop links between two navmeshes (a ledge and a platform; either may ride a
         moving mesh) for where they stand now, both ways, as cross links (Link.landing_navmesh) that hold while
         the two stay placed so, within `tolerance` metres (0.25 is a good start). They replace the generated
@@ -1188,13 +1583,14 @@ class World:
             self.pointer, first, second, tolerance, byref(s), fn, user, byref(report)))
         return report
 
-    def update_links_in_box(self, navmesh, box_min, box_max, progress=None):
+    def update_links_in_box(self, navmesh: NavmeshId, box_min: Point, box_max: Point,
+                            progress: Optional[ProgressHandler] = None) -> LinkGenerationReport:
         report = LinkGenerationReport()
         _with_progress(progress, lambda fn, user: lib.nl_navmesh_update_links_in_box(
-            self.pointer, navmesh, _floats(box_min), _floats(box_max), fn, user, byref(report)))
+            self.pointer, navmesh, _point(box_min, "box_min"), _point(box_max, "box_max"), fn, user, byref(report)))
         return report
 
-    def save_links_json(self, navmesh):
+    def save_links_json(self, navmesh: NavmeshId) -> str:
         """The navmesh's links as JSON (schema "navlink-links" version 1); STATUS_INVALID_ARGUMENT for a
         navmesh with cross links (links files hold the links within one navmesh)."""
         while True:
@@ -1207,7 +1603,7 @@ class World:
             _check(status)
             return buffer.raw[:length.value].decode()
 
-    def load_links_json(self, navmesh, json, any_body=False):
+    def load_links_json(self, navmesh: NavmeshId, json: str, any_body: bool = False) -> int:
         """Replaces all of the navmesh's links with those in `json`; returns how many were loaded. A file that
         records the body its links were generated for ("made_for") must name the navmesh's (radius and
         height): links for another body are refused (STATUS_INVALID_ARGUMENT, both bodies named) unless
@@ -1221,7 +1617,7 @@ class World:
 
     # --- baked navmesh files ---
 
-    def save_navmesh(self, navmesh):
+    def save_navmesh(self, navmesh: NavmeshId) -> bytes:
         """The navmesh, its links (generated and manual, in links() order) and what they were made for, as a
         navmesh file's bytes. STATUS_INVALID_ARGUMENT for a navmesh with cross links (a file holds one
         navmesh's own links)."""
@@ -1235,31 +1631,32 @@ class World:
             _check(status)
             return buffer.raw[:size.value]
 
-    def save_navmesh_file(self, navmesh, path):
+    def save_navmesh_file(self, navmesh: NavmeshId, path: Union[str, "os.PathLike[str]"]) -> None:
         """save_navmesh written to the file at `path`, whole or not at all. STATUS_IO_ERROR: cannot write."""
         _check(lib.nl_navmesh_save_file(self.pointer, navmesh, os.fsencode(path)))
 
     @staticmethod
-    def _load_def(surface, same_level):
+    def _load_def(surface: Optional[MeshId], same_level: bool) -> NavmeshLoadDef:
         d = lib.nl_default_navmesh_load_def()
         if surface is not None:
             d.surface = surface
         d.flags = NAVMESH_LOAD_SAME_LEVEL if same_level else 0
         return d
 
-    def load_navmesh(self, data, surface=None, same_level=False):
+    def load_navmesh(self, data: ByteValues, surface: Optional[MeshId] = None, same_level: bool = False) -> NavmeshId:
         """Adds the navmesh and its links held in a navmesh file's bytes (new ids); returns its NavmeshId.
         surface: the MESH_MOVABLE mesh it rides now, for a file whose navmesh rode one
         (NavmeshFileInfo.rides_surface), else None. same_level: refuse (STATUS_INVALID_ARGUMENT) a file baked
         from other level geometry than the world holds now. STATUS_VERSION_MISMATCH (not a NavLink navmesh
         file, or a newer format), STATUS_PARSE_ERROR (truncated or corrupted); nothing is added on failure."""
-        data = bytes(data)
+        file = _c_array("data", data, c_uint8)
         d = self._load_def(surface, same_level)
         navmesh = NavmeshId()
-        _check(lib.nl_navmesh_load(self.pointer, data, len(data), byref(d), byref(navmesh)))
+        _check(lib.nl_navmesh_load(self.pointer, file.items, file.count, byref(d), byref(navmesh)))
         return navmesh
 
-    def load_navmesh_file(self, path, surface=None, same_level=False):
+    def load_navmesh_file(self, path: Union[str, "os.PathLike[str]"], surface: Optional[MeshId] = None,
+                          same_level: bool = False) -> NavmeshId:
         """load_navmesh from the file at `path`; also STATUS_NOT_FOUND (no such file), STATUS_IO_ERROR."""
         d = self._load_def(surface, same_level)
         navmesh = NavmeshId()
@@ -1268,7 +1665,7 @@ class World:
 
     # --- paths ---
 
-    def find_path(self, query):
+    def find_path(self, query: PathQuery) -> PathResult:
         """Plans a path now on this thread (for tools and tests; games queue requests)."""
         d, keep = query._def()
         points = _growable_array(PathPoint, self._FIRST_POINT_CAPACITY)
@@ -1283,29 +1680,52 @@ class World:
             _check(status)
             return PathResult(info, list(points[:count.value]))
 
-    def request_path(self, query, on_finished=None):
-        """Queues a request; on_finished(ticket, outcome) runs once when it finishes, on a NavLink path
-        worker, in process_paths, in cancel_path or in close()."""
+    def request_path(self, query: PathQuery, on_finished: Optional[PathHandler] = None) -> PathRequest:
+        """Queues a request and returns its PathRequest: wait for it, await it, read its result, and release
+        its ticket with ``with`` (or release(); dropping it releases it too, cancelling it if pending).
+        on_finished(ticket, outcome) runs once when it finishes, on a NavLink path worker, in process_paths,
+        in a wait without path workers, in cancel_path, in a release of a pending request or in close(); it
+        may run before this returns."""
         d, keep = query._def()
-        key = None
-        if on_finished is not None:
-            key = _register(on_finished)
-            d.callback, d.user = _path_trampoline, key
-        ticket = PathTicket()
-        status = lib.nl_path_request(self.pointer, byref(d), byref(ticket))
+        completion = _PathCompletion(on_finished)
+        key = _register(completion)
+        d.callback, d.user = _path_trampoline, key
+        request = PathRequest(self, completion)
+        status = lib.nl_path_request(self.pointer, byref(d), byref(request.ticket))
         if failed(status):
             message = last_error_message()
-            if key is not None:
-                _lookup(key, remove=True)  # a refused request never calls back
+            _lookup(key, remove=True)  # a refused request never calls back
             raise NavLinkError(status, message)
-        return ticket
+        request._owned = True
+        return request
 
-    def poll_path(self, ticket):
+    def poll_path(self, ticket: TicketLike) -> Union[PathOutcome, int]:
         outcome = c_uint32()
         _check(lib.nl_path_poll(self.pointer, ticket, byref(outcome)))
-        return outcome.value
+        return _outcome(outcome.value)
 
-    def path_result(self, ticket):
+    # A blocking wait returns to Python this often, so that Ctrl-C (a signal handler) can stop a long one.
+    _WAIT_SLICE_SECONDS = 0.25
+
+    def wait_path(self, ticket: TicketLike, timeout: Optional[float] = None) -> Union[PathOutcome, int]:
+        """Blocks until the request has finished or `timeout` seconds have passed (None or inf: as long as it
+        takes; 0 only looks) and returns its outcome: PATH_PENDING on a timeout. Other threads run meanwhile
+        (the GIL is released). With path_worker_count 0 this thread plans queued requests itself, oldest
+        first, their callbacks on it, until this one has finished: a request is never split, so a wait can
+        overrun its timeout by the one being planned. NavLinkError: STATUS_INVALID_HANDLE (released ticket),
+        STATUS_INVALID_ARGUMENT (called from a path callback)."""
+        if timeout is not None and not timeout >= 0:
+            raise ValueError("timeout: seconds >= 0, or None to wait as long as it takes; not %r" % (timeout,))
+        deadline = None if timeout is None or math.isinf(timeout) else time.monotonic() + timeout
+        outcome = c_uint32()
+        while True:
+            left = self._WAIT_SLICE_SECONDS if deadline is None else max(0.0, deadline - time.monotonic())
+            milliseconds = math.ceil(min(left, self._WAIT_SLICE_SECONDS) * 1000)
+            status = _check(lib.nl_path_wait(self.pointer, ticket, milliseconds, byref(outcome)))
+            if not status & STATUS_IN_PROGRESS or (deadline is not None and time.monotonic() >= deadline):
+                return _outcome(outcome.value)
+
+    def path_result(self, ticket: TicketLike) -> Optional[PathResult]:
         """The finished request's PathResult, or None while it is pending."""
         while True:
             info = PathResultInfo()
@@ -1322,13 +1742,18 @@ class World:
             _check(status)
             return PathResult(info, list(points[:count.value]))
 
-    def cancel_path(self, ticket):
+    def cancel_path(self, ticket: TicketLike) -> None:
         _check(lib.nl_path_cancel(self.pointer, ticket))
 
-    def release_path(self, ticket):
+    def release_path(self, ticket: TicketLike) -> None:
+        """Frees the request's result; the ticket is invalid from now on (a pending request is cancelled,
+        its callback still runs once)."""
         _check(lib.nl_path_release(self.pointer, ticket))
+        if isinstance(ticket, PathRequest):
+            ticket._owned = False
 
-    def process_paths(self, max_requests=0, max_milliseconds=0.0, max_search_nodes=0, budget=None):
+    def process_paths(self, max_requests: int = 0, max_milliseconds: float = 0.0, max_search_nodes: int = 0,
+                      budget: Optional[PathBudget] = None) -> int:
         """Plans queued requests on this thread until the queue is empty or a limit is reached (each 0, or
         max_milliseconds <= 0: no limit; max_search_nodes bounds the polygons the searches visit in all);
         returns how many finished here. `budget` (a PathBudget) replaces the three. How a world with
@@ -1343,7 +1768,7 @@ class World:
 
     _FINISHED_CHUNK = 16
 
-    def take_finished_paths(self):
+    def take_finished_paths(self) -> List[FinishedPath]:
         """The requests that finished since the last call, oldest first, each reported once, as
         FinishedPath(ticket, outcome): the way to learn of finished requests on your own thread without a
         callback (callbacks still run too). Requests whose ticket was released are not reported."""
@@ -1352,77 +1777,77 @@ class World:
         while True:
             count, remaining = c_uint32(), c_uint32()
             _check(lib.nl_path_take_finished(self.pointer, buffer, len(buffer), byref(count), byref(remaining)))
-            taken += [FinishedPath(PathTicket(f.ticket.index1, f.ticket.generation), f.outcome)
+            taken += [FinishedPath(PathTicket(f.ticket.index1, f.ticket.generation), _outcome(f.outcome))
                       for f in buffer[:count.value]]
             if remaining.value == 0:
                 return taken
             if remaining.value > len(buffer):
                 buffer = _growable_array(PathFinished, remaining.value)
 
-    def path_queue_stats(self):
+    def path_queue_stats(self) -> PathQueueStats:
         stats = PathQueueStats()
         _check(lib.nl_path_get_queue_stats(self.pointer, byref(stats)))
         return stats
 
     # --- agents ---
 
-    def add_agent(self, agent_def):
+    def add_agent(self, agent_def: AgentDef) -> AgentId:
         """Adds an agent standing still (AGENT_IDLE) at the navmesh point of agent_def.position (NavLinkError
         with STATUS_NOT_FOUND when it is off the navmesh)."""
         agent = AgentId()
         _check(lib.nl_agent_add(self.pointer, byref(agent_def), byref(agent)))
         return agent
 
-    def remove_agent(self, agent):
+    def remove_agent(self, agent: AgentId) -> None:
         _check(lib.nl_agent_remove(self.pointer, agent))
 
-    def is_agent_valid(self, agent):
+    def is_agent_valid(self, agent: AgentId) -> bool:
         return lib.nl_agent_is_valid(self.pointer, agent) != 0
 
-    def set_agent_destination(self, agent, destination):
+    def set_agent_destination(self, agent: AgentId, destination: Point) -> None:
         """Sends the agent to the navmesh point of destination, on its navmesh or else on a navmesh that
         cross links join to it (a platform, a ledge across a chasm); STATUS_NOT_FOUND on none of them (the
         destination is not kept). One on a navmesh that rides a moving mesh moves with the mesh. Its path
         is planned in a coming step()."""
-        _check(lib.nl_agent_set_destination(self.pointer, agent, _floats(destination)))
+        _check(lib.nl_agent_set_destination(self.pointer, agent, _point(destination, "destination")))
 
-    def stop_agent(self, agent):
+    def stop_agent(self, agent: AgentId) -> None:
         """Forgets the destination: the agent stands (AGENT_IDLE); one in the air lands first."""
         _check(lib.nl_agent_stop(self.pointer, agent))
 
-    def teleport_agent(self, agent, position):
+    def teleport_agent(self, agent: AgentId, position: Point) -> None:
         """Puts the agent at the navmesh point of position, keeping its destination (refused while it is
         taking a link)."""
-        _check(lib.nl_agent_teleport(self.pointer, agent, _floats(position)))
+        _check(lib.nl_agent_teleport(self.pointer, agent, _point(position, "position")))
 
-    def set_agent_capabilities(self, agent, capabilities):
+    def set_agent_capabilities(self, agent: AgentId, capabilities: AgentCapabilities) -> None:
         """Changes what the agent's body can do (an AgentCapabilities); it plans again."""
         _check(lib.nl_agent_set_capabilities(self.pointer, agent, byref(capabilities)))
 
-    def set_agent_speed(self, agent, max_speed, max_acceleration):
+    def set_agent_speed(self, agent: AgentId, max_speed: float, max_acceleration: float) -> None:
         _check(lib.nl_agent_set_speed(self.pointer, agent, max_speed, max_acceleration))
 
-    def step(self, dt):
+    def step(self, dt: float) -> None:
         """Advances every agent by dt seconds (finite, >= 0) on the world's workers, with the same result
         whatever their number. An agent's trouble is its AGENT_FAILED state and event, not an exception."""
         _check(lib.nl_world_step(self.pointer, dt))
 
-    def agent_info(self, agent):
+    def agent_info(self, agent: AgentId) -> AgentInfo:
         info = AgentInfo()
         _check(lib.nl_agent_get_info(self.pointer, agent, byref(info)))
         return info
 
-    def agents(self):
+    def agents(self) -> List[AgentInfo]:
         """Every agent's AgentInfo, in a stable order until an agent is removed."""
         return _two_call(lambda b, c, n: lib.nl_world_get_agents(self.pointer, b, c, n), AgentInfo)
 
-    def agent_corners(self, agent):
+    def agent_corners(self, agent: AgentId) -> List[PathPoint]:
         """The PathPoints the agent has yet to reach, the next first: where it walks, and at which point
         it takes which link (segment, link). A route that leaves its navmesh ends at the take-off of the
         cross link, with that link."""
         return _two_call(lambda b, c, n: lib.nl_agent_get_corners(self.pointer, agent, b, c, n), PathPoint)
 
-    def agent_trajectory(self, agent):
+    def agent_trajectory(self, agent: AgentId) -> Optional[AgentTrajectory]:
         """The AgentTrajectory of the link the agent is taking now, or None while it is on the ground (the
         library's kind TRAJECTORY_NONE), also while it waits at a take-off. In the world: a link within a
         navmesh that rides a moving mesh is given where the mesh is now; a cross link is flown in the world,
@@ -1431,31 +1856,31 @@ class World:
         _check(lib.nl_agent_get_trajectory(self.pointer, agent, byref(trajectory)))
         return None if trajectory.kind == TRAJECTORY_NONE else trajectory
 
-    def agent_events(self):
+    def agent_events(self) -> List[AgentEvent]:
         """The AgentEvents of the last step(), in agent order. They stay until the next step: read them
         once per step."""
         return _two_call(lambda b, c, n: lib.nl_world_get_agent_events(self.pointer, b, c, n), AgentEvent)
 
     # --- plugins ---
 
-    def load_plugin(self, path):
+    def load_plugin(self, path: Union[str, "os.PathLike[str]"]) -> PluginId:
         plugin = PluginId()
         _check(lib.nl_plugin_load(self.pointer, os.fsencode(path), byref(plugin)))
         return plugin
 
-    def register_plugin(self, entry):
+    def register_plugin(self, entry: Any) -> PluginId:
         """entry: a PluginEntryFn; kept alive with everything it hands over for as long as the world."""
         self._plugin_entries.append(entry)
         plugin = PluginId()
         _check(lib.nl_plugin_register(self.pointer, entry, byref(plugin)))
         return plugin
 
-    def plugin_description(self, plugin):
+    def plugin_description(self, plugin: PluginId) -> dict:
         """A dict of the description's fields (strings copied)."""
         d = PluginDescription()
         _check(lib.nl_plugin_get_description(self.pointer, plugin, byref(d)))
         return {"name": d.name.decode(), "version": d.version.decode(), "description": d.description.decode(),
                 "kinds": d.kinds, "builtin": d.builtin != 0, "abi_version": d.abi_version}
 
-    def plugins(self):
+    def plugins(self) -> List[PluginId]:
         return _two_call(lambda b, c, n: lib.nl_world_get_plugins(self.pointer, b, c, n), PluginId)

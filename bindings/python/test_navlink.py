@@ -908,8 +908,9 @@ class PathTest(NavLinkTestCase):
             out[0] = nl.nl_path_finished_init()
             self.assertEqual(nl.lib.nl_path_take_finished(world.pointer, out, 2, ctypes.byref(count), ctypes.byref(remaining)),
                              nl.STATUS_SUCCESS)
-            self.assertEqual((count.value, remaining.value, out[0].ticket, out[0].outcome, out[0].user),
-                             (1, 0, raw, nl.PATH_COMPLETE, None))
+            self.assertEqual((count.value, remaining.value, out[0].ticket, out[0].outcome),
+                             (1, 0, raw, nl.PATH_COMPLETE))
+            self.assertIsNotNone(out[0].user, "the request's user: the binding's key to its completion")
 
     def test_invalid_requests(self):
         with nl.World(path_worker_count=0) as world:
