@@ -75,6 +75,11 @@ LOG_ERROR, LOG_WARNING, LOG_INFO, LOG_DEBUG = 0, 1, 2, 3
 WORKERS_AUTO = -1
 MAX_WORKERS = 1024
 MESH_MOVABLE = 0x1
+MESH_CLOCKWISE = 0x2
+MESH_OBSTACLE = 0x4
+MESH_NOT_IN_NAVMESH = 0x8
+MESH_MAX_AREA = 254
+BUILD_AREA_OBSTACLE = 255
 MAX_POLYGON_VERTICES = 16
 NO_POLYGON = 0xFFFFFFFF
 SEGMENT_WALK = 0
@@ -196,13 +201,15 @@ class MeshId(_Id):
 class MeshDef(Structure):
     _fields_ = [("size", c_uint32), ("vertices", POINTER(c_float)), ("vertex_count", c_uint32),
                 ("vertex_stride", c_uint32), ("indices", POINTER(c_uint32)), ("triangle_count", c_uint32),
-                ("flags", c_uint32), ("transform", POINTER(c_float)), ("user_data", c_uint64)]
+                ("flags", c_uint32), ("transform", POINTER(c_float)), ("user_data", c_uint64), ("area", c_uint32),
+                ("reserved", c_uint32)]
 
 
 class MeshInfo(_Growable):
     _fields_ = [("size", c_uint32), ("vertex_count", c_uint32), ("triangle_count", c_uint32),
                 ("degenerate_triangle_count", c_uint32), ("flags", c_uint32), ("transform", c_float * 16),
-                ("bounds_min", Vec3), ("bounds_max", Vec3), ("user_data", c_uint64)]
+                ("bounds_min", Vec3), ("bounds_max", Vec3), ("user_data", c_uint64), ("area", c_uint32),
+                ("reserved", c_uint32)]
 
 
 class Ray(Structure):
@@ -262,7 +269,8 @@ class NavPoint(Structure):
 
 class NavmeshBuildDef(Structure):
     _fields_ = [("size", c_uint32), ("builder", c_char_p), ("agent", AgentType), ("settings", c_void_p),
-                ("settings_json", c_char_p), ("settings_json_length", c_size_t), ("surface", MeshId)]
+                ("settings_json", c_char_p), ("settings_json_length", c_size_t), ("surface", MeshId),
+                ("progress", ProgressFn), ("progress_user", c_void_p)]
 
 
 class LinkId(_Id):
@@ -446,6 +454,9 @@ HostFindNearestFn = CFUNCTYPE(c_uint32, c_void_p, NavmeshId, POINTER(c_float), c
 HostCastRaysFn = CFUNCTYPE(c_uint32, c_void_p, POINTER(Ray), c_uint32, POINTER(RayHit))
 HostSegmentsBlockedFn = CFUNCTYPE(c_uint32, c_void_p, POINTER(Segment), c_uint32, POINTER(c_uint8))
 HostRecordBuildSettingsFn = CFUNCTYPE(c_uint32, c_void_p, c_char_p, c_size_t)
+HostGetBuildTrianglesFn = CFUNCTYPE(c_uint32, c_void_p, POINTER(c_float), c_uint32, POINTER(c_uint32),
+                                    POINTER(c_uint32), POINTER(c_uint8), c_uint32, POINTER(c_uint32))
+HostReportBuildProgressFn = CFUNCTYPE(c_uint32, c_void_p, c_float, c_char_p)
 
 
 class PluginHost(Structure):
@@ -453,7 +464,8 @@ class PluginHost(Structure):
                 ("set_error", HostSetErrorFn), ("get_level_triangles", HostGetLevelTrianglesFn),
                 ("navmesh_get_boundary_edges", HostBoundaryEdgesFn), ("navmesh_get_info", HostNavmeshInfoFn),
                 ("navmesh_find_nearest", HostFindNearestFn), ("cast_rays", HostCastRaysFn),
-                ("segments_blocked", HostSegmentsBlockedFn), ("record_build_settings", HostRecordBuildSettingsFn)]
+                ("segments_blocked", HostSegmentsBlockedFn), ("record_build_settings", HostRecordBuildSettingsFn),
+                ("get_build_triangles", HostGetBuildTrianglesFn), ("report_build_progress", HostReportBuildProgressFn)]
 
 
 NavmeshSinkFn = CFUNCTYPE(c_uint32, c_void_p, POINTER(NavmeshDef))
@@ -622,7 +634,7 @@ def _installed_library_dirs() -> List[str]:
 def _pkg_config_library_dir() -> Tuple[Optional[str], str]:
     """(libdir of navlink.pc or None, what pkg-config said)."""
     try:
-        run = subprocess.run(["pkg-config", "--variable=libdir", "navlink"], capture_output=True, text=True,
+        run = subprocess.run(["pkg-config", "--print-errors", "--variable=libdir", "navlink"], capture_output=True, text=True,
                              timeout=30)
     except (OSError, subprocess.SubprocessError) as e:
         return None, "pkg-config did not run (%s)" % e
