@@ -624,11 +624,12 @@ def _installed_library_dirs() -> List[str]:
     conda-like prefix installed into with --prefix), then the system's prefixes, Debian's multiarch
     folder included (GNUInstallDirs' libdir for /usr)."""
     multiarch = sysconfig.get_config_var("MULTIARCH")
-    dirs = []
+    dirs = {}
     for prefix in (sys.prefix, "/usr/local", "/usr"):
-        dirs += [os.path.join(prefix, "lib", multiarch)] if multiarch else []
-        dirs += [os.path.join(prefix, "lib64"), os.path.join(prefix, "lib")]
-    return list(dict.fromkeys(dirs))
+        for directory in ([os.path.join(prefix, "lib", multiarch)] if multiarch else []) + [
+                os.path.join(prefix, "lib"), os.path.join(prefix, "lib64")]:
+            dirs.setdefault(os.path.realpath(directory), directory)  # a venv's lib64 is its lib
+    return list(dirs.values())
 
 
 def _pkg_config_library_dir() -> Tuple[Optional[str], str]:

@@ -4,13 +4,21 @@ Environment: NAVLINK_LIBRARY (libnavlink.so to test), NAVLINK_LEVELS_DIR (the sh
 ../shared/levels beside the source tree), NAVLINK_INCLUDE_DIRS (PATH-style list of the header folders, for
 the layout check; default: the source tree's and build/capi/include).
 """
+import array
+import ast
+import asyncio
 import ctypes
+import ctypes.util
+import gc
 import json
 import math
 import os
+import subprocess
 import sys
 import tempfile
 import threading
+import time
+import typing
 import unittest
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -84,12 +92,16 @@ def platform_at(x):
     return [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, x, 0, 3, 1]
 
 
-def add_box(world, lo, hi, flags=0, transform=None):
-    """A box: corner k takes x from bit 0, y from bit 1, z from bit 2."""
+def box_vertices(lo, hi):
+    """A box's corners, flat x y z: corner k takes x from bit 0, y from bit 1, z from bit 2."""
     v = []
     for k in range(8):
         v += [hi[0] if k & 1 else lo[0], hi[1] if k & 2 else lo[1], hi[2] if k & 4 else lo[2]]
-    return world.add_mesh(v, BOX_INDICES, flags=flags, transform=transform)
+    return v
+
+
+def add_box(world, lo, hi, flags=0, transform=None):
+    return world.add_mesh(box_vertices(lo, hi), BOX_INDICES, flags=flags, transform=transform)
 
 
 def add_gap_level(world):
@@ -107,17 +119,27 @@ def add_bridge_level(world):
     add_box(world, (0, -1, 0), (4, 0, 10))
     add_box(world, (6, -1, 0), (10, 0, 10))
     add_box(world, (4, -1, 8), (6, 0, 10))
+    vertices, indices, corner_counts = bridge_navmesh_polygons()
+    navmesh = world.add_navmesh(vertices, indices, corner_counts, agent=bridge_agent_type())
+    world.generate_links(navmesh)
+    return navmesh
+
+
+def bridge_navmesh_polygons():
+    """The bridge level's navmesh as lists: (vertices, indices, corners of each polygon)."""
     polygons = [[(0.3, 0.3), (0.3, 8), (3.7, 8), (3.7, 0.3)],
                 [(0.3, 8), (0.3, 9.7), (4, 9.7), (4, 8), (3.7, 8)],
                 [(4, 8), (4, 9.7), (6, 9.7), (6, 8)],
                 [(6, 8), (6, 9.7), (9.7, 9.7), (9.7, 8), (6.3, 8)],
                 [(6.3, 0.3), (6.3, 8), (9.7, 8), (9.7, 0.3)]]
     vertices = [c for polygon in polygons for x, z in polygon for c in (x, 0, z)]
+    return vertices, list(range(len(vertices) // 3)), [len(p) for p in polygons]
+
+
+def bridge_agent_type():
     agent = nl.default_agent_type()
     agent.radius = 0.3
-    navmesh = world.add_navmesh(vertices, list(range(len(vertices) // 3)), [len(p) for p in polygons], agent=agent)
-    world.generate_links(navmesh)
-    return navmesh
+    return agent
 
 
 def walker():
@@ -842,8 +864,9 @@ class PathTest(NavLinkTestCase):
         stats = world.path_queue_stats()
         self.assertEqual((stats.finished, stats.unreleased, stats.queued), (2, 2, 0))
         last = []
-        world.request_path(nl.PathQuery(navmesh, WEST, EAST, jumper()), lambda t, o: last.append(o))
+        pending = world.request_path(nl.PathQuery(navmesh, WEST, EAST, jumper()), lambda t, o: last.append(o))
         world.close()
+        del pending  # its world is gone: nothing left to release
         self.assertEqual(last, [nl.PATH_CANCELLED], "closing the world cancels what is queued")
 
     def test_budgets_and_finished_requests_taken_by_the_host(self):
@@ -1233,6 +1256,465 @@ class PluginTest(NavLinkTestCase):
             made_for = json.loads(nl.describe_navmesh_file(world.save_navmesh(navmesh))[1])
             self.assertEqual((made_for["builder"], made_for["builder_settings"]), ("python-roof", {"at": "the highest vertex"}))
             self.assertFails(nl.STATUS_NOT_FOUND, "nl_plugin_load", world.load_plugin, "/no/such/plugin.so")
+
+
+def numpy_or_skip(test):
+    try:
+        import numpy
+    except ImportError:
+        test.skipTest("numpy is not installed for %s: the numpy cases are skipped (array.array and memoryview "
+                      "cover the same buffer paths)" % sys.executable)
+    return numpy
+
+
+class BufferTest(NavLinkTestCase):
+    """Geometry from lists and from buffers gives the same meshes and navmeshes; writable buffers are read in
+    place, read-only ones copied once; wrong ones are refused naming the argument, before the library."""
+
+    def mesh_summary(self, world, mesh):
+        info = world.mesh_info(mesh)
+        return (info.vertex_count, info.triangle_count, tuple(info.bounds_min), tuple(info.bounds_max))
+
+    def test_a_mesh_from_each_kind_of_buffer(self):
+        lo, hi = (-1, -2, -3), (4, 5, 6)
+        vertices, indices = box_vertices(lo, hi), BOX_INDICES
+        floats, uints = array.array("f", vertices), array.array("I", indices)
+        rows_of_four = array.array("f", [c for k in range(8) for c in vertices[3 * k:3 * k + 3] + [99.0]])
+        inputs = {
+            "array.array": (floats, uints),
+            "memoryview": (memoryview(floats), memoryview(uints)),
+            "memoryview of rows (n, 3)": (memoryview(floats).cast("B").cast("f", (8, 3)),
+                                          memoryview(uints).cast("B").cast("I", (12, 3))),
+            "rows of 4, x y z first (stride 16)": (memoryview(rows_of_four).cast("B").cast("f", (8, 4)), uints),
+            "bytes (read-only)": (floats.tobytes(), uints.tobytes()),
+            "bytearray": (bytearray(floats.tobytes()), bytearray(uints.tobytes())),
+            "int32 indices": (floats, array.array("i", indices)),
+            "tuples": (tuple(vertices), tuple(indices)),
+        }
+        with nl.World() as world:
+            expected = self.mesh_summary(world, world.add_mesh(vertices, indices))
+            self.assertEqual(expected[:2], (8, 12))
+            self.assertNear(expected[2] + expected[3], lo + hi, "the box's bounds")
+            for kind, (v, i) in inputs.items():
+                self.assertEqual(self.mesh_summary(world, world.add_mesh(v, i)), expected, kind)
+            moved = world.add_mesh(floats, uints, transform=array.array("f", RAFT_MOVED))
+            # RAFT_MOVED: x goes to -z, z to x, then 10 m along x.
+            self.assertNear(world.mesh_info(moved).bounds_min, (10 + lo[2], lo[1], -hi[0]), "a transform from a buffer")
+
+    def test_writable_buffers_are_read_in_place(self):
+        floats = array.array("f", FLOOR)
+        given = nl._c_array("vertices", floats, ctypes.c_float, group=3)
+        self.assertEqual(ctypes.addressof(given.items), floats.buffer_info()[0], "no copy of a writable buffer")
+        frozen = floats.tobytes()
+        copied = nl._c_array("vertices", frozen, ctypes.c_float, group=3)
+        self.assertEqual(bytes(copied.items), frozen, "a read-only buffer is copied whole")
+        odd = bytearray(1) + bytearray(frozen)
+        shifted = nl._c_array("vertices", memoryview(odd)[1:], ctypes.c_float, group=3)
+        self.assertEqual(ctypes.addressof(shifted.items) % ctypes.alignment(ctypes.c_float), 0, "aligned for C")
+        self.assertEqual(list(shifted.items), [float(c) for c in FLOOR])
+
+    def test_a_navmesh_from_buffers(self):
+        vertices, indices, corner_counts = bridge_navmesh_polygons()
+        areas = [3, 1, 4, 1, 5]
+        with nl.World() as world:
+            from_lists = world.add_navmesh(vertices, indices, corner_counts, areas=areas, agent=bridge_agent_type())
+            from_buffers = world.add_navmesh(array.array("f", vertices), array.array("I", indices),
+                                             bytes(corner_counts), areas=bytearray(areas), agent=bridge_agent_type())
+            for navmesh in (from_lists, from_buffers):
+                info = world.navmesh_info(navmesh)
+                self.assertEqual(info.polygon_count, 5)
+                self.assertEqual(sorted(world.polygon(navmesh, p).area for p in range(info.polygon_count)),
+                                 sorted(areas))
+            self.assertEqual(world.navmesh_vertices(from_buffers), world.navmesh_vertices(from_lists))
+            near = world.find_nearest(from_buffers, array.array("f", [2, 1, 4, 8, 1, 4]), array.array("f", [1, 2, 1]))
+            self.assertTrue(all(p.found for p in near) and len(near) == 2)
+            self.assertNear(near[1].point, (8, 0, 4), "found through a buffer of points")
+            data = world.save_navmesh(from_buffers)
+            self.assertEqual(nl.describe_navmesh_file(memoryview(data))[0].polygon_count, 5)
+            loaded = world.load_navmesh(bytearray(data))
+            self.assertEqual(world.navmesh_info(loaded).polygon_count, 5)
+            query = nl.PathQuery(from_buffers, (2, 0, 4), (8, 0, 4), walker())
+            query.area_costs = array.array("f", [1, 1, 1, 1, 1, 1])
+            self.assertEqual(world.find_path(query).outcome, nl.PATH_COMPLETE)
+            query.area_costs = array.array("f", [1, nl.AREA_EXCLUDED, 1, 1, 1, 1])
+            self.assertEqual(world.find_path(query).outcome, nl.PATH_PARTIAL, "area 1 (the bridge's end) kept out")
+
+    def test_wrong_buffers_are_refused_naming_the_argument(self):
+        floats, uints = array.array("f", FLOOR), array.array("I", QUAD)
+        cases = [
+            (TypeError, "vertices", "32-bit floats", (array.array("d", FLOOR), uints)),
+            (TypeError, "indices", "32-bit integers", (floats, array.array("q", QUAD))),
+            (TypeError, "indices", "32-bit integers", (floats, array.array("H", QUAD))),
+            (TypeError, "vertices", "not str", ("0 0 0", uints)),
+            (TypeError, "vertices", "", ([0, 0, "x"], uints)),
+            (ValueError, "vertices", "multiple of 3", (array.array("f", FLOOR[:-1]), uints)),
+            (ValueError, "vertices", "multiple of 3", (FLOOR[:-1], QUAD)),
+            (ValueError, "indices", "multiple of 3", (floats, array.array("I", QUAD[:-1]))),
+            (ValueError, "vertices", "whole number of 4-byte items", (floats.tobytes()[:-2], uints)),
+            (ValueError, "vertices", "C-contiguous", (memoryview(array.array("f", FLOOR * 2))[::2], uints)),
+            (ValueError, "vertices", "shape (6, 2)", (memoryview(floats).cast("B").cast("f", (6, 2)), uints)),
+            (ValueError, "indices", "shape (3, 4)", (floats, memoryview(array.array("I", QUAD * 2)).cast("B").cast("I", (3, 4)))),
+        ]
+        with nl.World() as world:
+            for error, name, part, (v, i) in cases:
+                with self.assertRaises(error, msg="%s %s" % (name, part)) as caught:
+                    world.add_mesh(v, i)
+                self.assertTrue(str(caught.exception).startswith(name + ":"), caught.exception)
+                self.assertIn(part, str(caught.exception))
+            self.assertFails(nl.STATUS_INVALID_ARGUMENT, "indices", world.add_mesh, floats, array.array("I", [0, 1, 7]))
+            with self.assertRaisesRegex(ValueError, "^transform: 15 values, 16 expected"):
+                world.add_mesh(floats, uints, transform=RAFT_MOVED[:-1])
+            with self.assertRaisesRegex(ValueError, "^destination: 2 values, 3 expected"):
+                world.set_agent_destination(nl.AgentId(), (1, 2))
+            vertices, indices, corner_counts = bridge_navmesh_polygons()
+            with self.assertRaisesRegex(ValueError, "^areas: 4 values, 5 expected"):
+                world.add_navmesh(vertices, indices, corner_counts, areas=bytes(4))
+            with self.assertRaisesRegex(ValueError, "^indices: %d values, but polygon_vertex_counts adds up to %d" % (
+                    len(indices) - 1, sum(corner_counts))):
+                world.add_navmesh(vertices, indices[:-1], corner_counts)
+            with self.assertRaisesRegex(TypeError, "^polygon_vertex_counts: bytes"):
+                world.add_navmesh(vertices, indices, array.array("I", corner_counts))
+            self.assertEqual(world.meshes(), [], "nothing registered")
+            self.assertEqual(world.navmeshes(), [], "nothing added")
+
+    def test_numpy_arrays(self):
+        numpy = numpy_or_skip(self)
+        vertices = numpy.array(box_vertices((0, 0, 0), (1, 1, 1)), dtype=numpy.float32).reshape(8, 3)
+        with nl.World() as world:
+            for indices in (numpy.array(BOX_INDICES, dtype=numpy.uint32), numpy.array(BOX_INDICES, dtype=numpy.int32)):
+                self.assertEqual(world.mesh_info(world.add_mesh(vertices, indices)).triangle_count, 12)
+            given = nl._c_array("vertices", vertices, ctypes.c_float, group=3)
+            self.assertEqual(ctypes.addressof(given.items), vertices.ctypes.data, "read in place")
+            with self.assertRaisesRegex(TypeError, "^vertices: 32-bit floats"):
+                world.add_mesh(vertices.astype(numpy.float64), BOX_INDICES)
+            with self.assertRaisesRegex(ValueError, "^vertices: the buffer is not C-contiguous"):
+                world.add_mesh(vertices.T, BOX_INDICES)
+
+
+def hold_the_only_worker(test, world, query):
+    """A request whose callback holds a one-worker world's path worker until the returned event is set:
+    requests queued after it stay pending meanwhile."""
+    entered, release = threading.Event(), threading.Event()
+
+    def hold(ticket, outcome):
+        entered.set()
+        release.wait(30)
+    request = world.request_path(query, hold)
+    test.assertTrue(entered.wait(30), "the worker took the request")
+    return request, release
+
+
+def thread_count():
+    return len(os.listdir("/proc/self/task")) if os.path.isdir("/proc/self/task") else None
+
+
+class WaitTest(NavLinkTestCase):
+    """PathRequest: blocking waits with and without path workers, timeouts, asyncio, release by RAII."""
+
+    def test_wait_with_path_workers(self):
+        with nl.World(path_worker_count=1) as world:
+            self.assertEqual(world.path_queue_stats().workers, 1)
+            navmesh = gap_level_with_links(world)
+            jumper_query, walker_query = nl.PathQuery(navmesh, WEST, EAST, jumper()), nl.PathQuery(navmesh, WEST, EAST, walker())
+            with world.request_path(jumper_query) as jumped, world.request_path(walker_query) as walked:
+                self.assertIs(jumped.wait(), nl.PathOutcome.COMPLETE)
+                self.assertEqual(walked.wait(timeout=30), nl.PATH_PARTIAL)
+                self.assertJumperAcross(world, jumped.result())
+                self.assertWalkerStopsAtGap(walked.result())
+
+            held, release = hold_the_only_worker(self, world, jumper_query)
+            with held, world.request_path(jumper_query) as queued:
+                started = time.monotonic()
+                self.assertIs(queued.wait(timeout=0.2), nl.PathOutcome.PENDING, "timed out behind the held worker")
+                self.assertGreaterEqual(time.monotonic() - started, 0.19)
+                self.assertIs(queued.wait(0), nl.PathOutcome.PENDING)
+                waited = []
+                waiter = threading.Thread(target=lambda: waited.append(queued.wait()))
+                waiter.start()
+                waiter.join(0.3)
+                # This thread ran Python while the other was in nl_path_wait: the wait let go of the GIL.
+                self.assertTrue(waiter.is_alive() and not waited, "still waiting while the worker is held")
+                release.set()
+                waiter.join(30)
+                self.assertEqual(waited, [nl.PATH_COMPLETE])
+                self.assertJumperAcross(world, queued.result())
+
+    def test_wait_without_path_workers_plans_on_the_waiting_thread(self):
+        with nl.World(path_worker_count=0) as world:
+            navmesh = gap_level_with_links(world)
+            planned_on = []
+            first = world.request_path(nl.PathQuery(navmesh, WEST, EAST, walker()),
+                                       lambda t, o: planned_on.append(("first", threading.get_ident())))
+            second = world.request_path(nl.PathQuery(navmesh, WEST, EAST, jumper()),
+                                        lambda t, o: planned_on.append(("second", threading.get_ident())))
+            self.assertIs(second.wait(0), nl.PathOutcome.PENDING, "timeout 0 only looks")
+            outcome = ctypes.c_uint32(99)
+            status = nl.lib.nl_path_wait(world.pointer, second, 0, ctypes.byref(outcome))
+            self.assertEqual((status, outcome.value), (nl.STATUS_IN_PROGRESS, nl.PATH_PENDING), "the raw call")
+            self.assertEqual(world.path_queue_stats().queued, 2, "nothing planned by looking")
+            self.assertIs(second.wait(), nl.PathOutcome.COMPLETE)
+            me = threading.get_ident()
+            self.assertEqual(planned_on, [("first", me), ("second", me)], "oldest first, on the waiting thread")
+            self.assertEqual(first.poll(), nl.PATH_PARTIAL)
+            self.assertJumperAcross(world, second.result())
+            first.release()
+            second.release()
+
+    def test_waits_refused(self):
+        with nl.World(path_worker_count=0) as world:
+            navmesh = gap_level_with_links(world)
+            query = nl.PathQuery(navmesh, WEST, EAST, jumper())
+            inside = []
+
+            def wait_inside(ticket, outcome):
+                try:
+                    world.wait_path(ticket, 1)
+                except nl.NavLinkError as e:
+                    inside.append(e)
+            with world.request_path(query, wait_inside) as request:
+                request.wait()
+            self.assertEqual(len(inside), 1)
+            self.assertTrue(inside[0].has(nl.STATUS_INVALID_ARGUMENT), inside[0])
+            self.assertFails(nl.STATUS_INVALID_HANDLE, "nl_path_wait", request.wait)
+            with world.request_path(query) as request:
+                for bad in (-1, float("nan")):
+                    with self.assertRaisesRegex(ValueError, "^timeout"):
+                        request.wait(bad)
+
+    def test_asyncio_awaits_several_requests_at_once(self):
+        with nl.World(path_worker_count=1) as world:
+            navmesh = gap_level_with_links(world)
+            queries = [nl.PathQuery(navmesh, WEST, EAST, jumper() if k % 2 == 0 else walker()) for k in range(6)]
+            expected = [nl.PATH_COMPLETE if k % 2 == 0 else nl.PATH_PARTIAL for k in range(6)]
+            called_back = []
+
+            async def await_them():
+                held, release = hold_the_only_worker(self, world, queries[0])
+                requests = [world.request_path(q, lambda t, o: called_back.append(t)) for q in queries]
+                threads = thread_count()
+                gathering = asyncio.gather(*requests[:3], *(r.wait_async() for r in requests[3:]))
+                await asyncio.sleep(0.1)  # the loop runs while the requests wait behind the held worker
+                self.assertFalse(gathering.done(), "nothing finished while the worker is held")
+                self.assertEqual(thread_count(), threads, "no thread per await")
+                release.set()
+                outcomes = await asyncio.wait_for(gathering, 30)
+                self.assertEqual(sorted(called_back, key=requests.index), requests, "each callback ran before")
+                self.assertIs(await requests[0], nl.PathOutcome.COMPLETE, "a finished request awaits at once")
+                held.release()
+                return requests, outcomes
+            requests, outcomes = asyncio.run(await_them())
+            self.assertEqual(outcomes, expected)
+            self.assertJumperAcross(world, requests[0].result())
+            for request in requests:
+                request.release()
+            self.assertEqual(world.path_queue_stats().unreleased, 0)
+
+    def test_tickets_released_by_with_release_and_drop(self):
+        with nl.World(path_worker_count=0) as world:
+            navmesh = gap_level_with_links(world)
+            query = nl.PathQuery(navmesh, WEST, EAST, jumper())
+            calls = []
+            with world.request_path(query, lambda t, o: calls.append(o)) as pending:
+                self.assertEqual(world.path_queue_stats().unreleased, 1)
+                self.assertTrue(pending == pending.ticket and pending.ticket == pending)
+                self.assertEqual(hash(pending), hash(pending.ticket))
+            self.assertEqual(calls, [nl.PATH_CANCELLED], "leaving `with` released it, cancelling it")
+            self.assertEqual(world.path_queue_stats().unreleased, 0)
+            self.assertFails(nl.STATUS_INVALID_HANDLE, "nl_path_poll", pending.poll)
+            pending.release()  # once released, release() does nothing
+
+            with self.assertRaises(RuntimeError):
+                with world.request_path(query) as request:
+                    raise RuntimeError("the block failed")
+            self.assertEqual(world.path_queue_stats().unreleased, 0, "released on an exception too")
+
+            dropped_calls = []
+            dropped = world.request_path(query, lambda t, o: dropped_calls.append(o))
+            ticket = dropped.ticket
+            del dropped
+            gc.collect()
+            self.assertEqual(dropped_calls, [nl.PATH_CANCELLED], "a dropped request is released")
+            self.assertFails(nl.STATUS_INVALID_HANDLE, "nl_path_poll", world.poll_path, ticket)
+
+            kept = world.request_path(query)
+            ticket = kept.detach()
+            del kept
+            gc.collect()
+            self.assertEqual(world.poll_path(ticket), nl.PATH_PENDING, "a detached ticket outlives its request")
+            world.release_path(ticket)
+
+            with world.request_path(query) as request:
+                world.release_path(request)
+            self.assertFails(nl.STATUS_INVALID_HANDLE, "nl_path_release", world.release_path, request)
+            self.assertEqual(world.path_queue_stats().unreleased, 0)
+
+
+def library_lookup_environment(**variables):
+    """This process's environment without anything that steers the library lookup, plus `variables`."""
+    steering = ("NAVLINK_LIBRARY", "PKG_CONFIG_PATH", "PKG_CONFIG_LIBDIR", "LD_LIBRARY_PATH", "PYTHONPATH")
+    environment = {k: v for k, v in os.environ.items() if k not in steering}
+    environment.update(variables)
+    return environment
+
+
+def write_navlink_pc(folder, libdir):
+    """A navlink.pc whose libdir is `libdir`, as an installed NavLink's is; PKG_CONFIG_PATH and
+    PKG_CONFIG_LIBDIR of the returned dict make it the only one pkg-config sees."""
+    os.makedirs(folder, exist_ok=True)
+    with open(os.path.join(folder, "navlink.pc"), "w") as f:
+        f.write("libdir=%s\nName: NavLink\nDescription: the library under test\nVersion: %d.%d.%d\n"
+                "Libs: -L${libdir} -lnavlink\n" % ((libdir,) + nl.version()))
+    return {"PKG_CONFIG_PATH": folder, "PKG_CONFIG_LIBDIR": folder}
+
+
+PROBE = "import json, navlink; print(json.dumps([navlink.library_path, navlink.__file__, navlink.version()]))"
+
+
+class PackageTest(unittest.TestCase):
+    """Where the module finds libnavlink, and the package pip builds offline from pyproject.toml."""
+
+    @classmethod
+    def setUpClass(cls):
+        cls.library = os.path.realpath(nl.library_path)
+        cls.tmp = tempfile.TemporaryDirectory()
+        cls.have_pkg_config = subprocess.run(["sh", "-c", "command -v pkg-config"], capture_output=True).returncode == 0
+
+    @classmethod
+    def tearDownClass(cls):
+        cls.tmp.cleanup()
+
+    def folder(self, name):
+        path = os.path.join(self.tmp.name, self.id().rsplit(".", 1)[-1], name)
+        os.makedirs(path, exist_ok=True)
+        return path
+
+    def linked_library(self, name):
+        """A folder holding libnavlink.so.0, a link to the library under test."""
+        folder = self.folder(name)
+        os.symlink(self.library, os.path.join(folder, "libnavlink.so.0"))
+        return folder
+
+    def probe(self, environment, python=sys.executable, source_tree=True):
+        if source_tree:
+            environment = dict(environment, PYTHONPATH=HERE)
+        return subprocess.run([python, "-c", PROBE], capture_output=True, text=True, env=environment,
+                              cwd=self.tmp.name, timeout=120)
+
+    def loaded(self, run):
+        self.assertEqual(run.returncode, 0, run.stderr)
+        return json.loads(run.stdout)
+
+    def test_lookup_order_and_what_a_failed_lookup_says(self):
+        if not self.have_pkg_config:
+            self.skipTest("pkg-config is not installed (Debian: pkg-config)")
+        explicit, by_pkg_config = self.linked_library("explicit"), self.linked_library("pkg-config")
+        pc = write_navlink_pc(self.folder("pc"), by_pkg_config)
+        explicit_library = os.path.join(explicit, "libnavlink.so.0")
+        found = self.loaded(self.probe(library_lookup_environment(NAVLINK_LIBRARY=explicit_library, **pc)))
+        self.assertEqual(found[0], explicit_library, "NAVLINK_LIBRARY first")
+        self.assertEqual(found[2], list(nl.version()))
+        found = self.loaded(self.probe(library_lookup_environment(**pc)))
+        self.assertEqual(found[0], os.path.join(by_pkg_config, "libnavlink.so.0"), "then pkg-config's libdir")
+
+        missing = os.path.join(explicit, "no-such-libnavlink.so")
+        run = self.probe(library_lookup_environment(NAVLINK_LIBRARY=missing, **pc))
+        self.assertNotEqual(run.returncode, 0, "an explicit library that does not load is not replaced")
+        self.assertIn("ImportError", run.stderr)
+        self.assertIn("NAVLINK_LIBRARY: %s did not load" % missing, run.stderr)
+
+        nothing = write_navlink_pc(self.folder("empty"), self.folder("no-library-here"))
+        os.remove(os.path.join(self.folder("empty"), "navlink.pc"))
+        installed = [os.path.join(d, n) for d in nl._installed_library_dirs() for n in nl._LIBRARY_FILE_NAMES
+                     if os.path.exists(os.path.join(d, n))]
+        run = self.probe(library_lookup_environment(**nothing))
+        if ctypes.util.find_library("navlink") or installed:
+            found = self.loaded(run)
+            self.assertNotEqual(found[0], self.library, "an installed NavLink answers: %s" % found[0])
+            return
+        self.assertNotEqual(run.returncode, 0)
+        message = run.stderr[run.stderr.index("ImportError"):]
+        for what in ("NAVLINK_LIBRARY: not set", "pkg-config navlink: no navlink.pc", "Package navlink was not found",
+                     'ctypes.util.find_library("navlink"): found nothing', "installed: none of libnavlink.so.0",
+                     os.path.join(sys.prefix, "lib"), "/usr/local/lib", "cmake --install", "PKG_CONFIG_PATH",
+                     "set NAVLINK_LIBRARY"):
+            self.assertIn(what, message)
+        self.assertLess(message.index("NAVLINK_LIBRARY: not set"), message.index("pkg-config navlink"))
+        self.assertLess(message.index("pkg-config navlink"), message.index("ctypes.util.find_library"))
+        self.assertLess(message.index("ctypes.util.find_library"), message.index("installed: none"))
+
+    def pip_or_skip(self, python=sys.executable):
+        if subprocess.run([python, "-m", "pip", "--version"], capture_output=True).returncode != 0:
+            self.skipTest("no pip for %s (Debian: python3-pip)" % python)
+
+    def pip_install(self, *arguments, python_options=()):
+        run = subprocess.run([sys.executable, "-m", "pip"] + list(python_options) +
+                             ["install", "--no-index", "--no-build-isolation", "--no-cache-dir",
+                              "--disable-pip-version-check", "--quiet"] + list(arguments) + [HERE],
+                             capture_output=True, text=True, timeout=300, cwd=self.tmp.name,
+                             env=library_lookup_environment(PIP_NO_INPUT="1"))
+        self.assertEqual(run.returncode, 0, run.stdout + run.stderr)
+
+    def test_pip_install_offline_into_a_folder_found_through_pkg_config(self):
+        self.pip_or_skip()
+        if not self.have_pkg_config:
+            self.skipTest("pkg-config is not installed (Debian: pkg-config)")
+        site = self.folder("site")
+        self.pip_install("--target", site)
+        package = os.path.join(site, "navlink")
+        self.assertTrue(os.path.isfile(os.path.join(package, "py.typed")), "the PEP 561 marker ships")
+        with open(os.path.join(package, "__init__.py"), "rb") as installed, open(nl.__file__, "rb") as source:
+            self.assertEqual(installed.read(), source.read(), "the package is navlink.py")
+        pc = write_navlink_pc(self.folder("pc"), os.path.dirname(self.library))
+        found = self.loaded(self.probe(library_lookup_environment(PYTHONPATH=site, **pc), source_tree=False))
+        self.assertEqual(found[1], os.path.join(package, "__init__.py"), "the installed package was imported")
+        self.assertEqual(os.path.realpath(found[0]), self.library)
+        self.assertEqual(found[2], list(nl.version()))
+
+    def test_pip_install_into_a_fresh_virtual_environment(self):
+        """No variable at all: NavLink installed into the environment's prefix (cmake --install --prefix),
+        as the lookup's installed places have it. PKG_CONFIG_LIBDIR points at an empty folder only so that
+        a NavLink installed on this machine cannot answer instead."""
+        self.pip_or_skip()
+        environment = self.folder("venv")
+        created = subprocess.run([sys.executable, "-m", "venv", "--without-pip", environment], capture_output=True,
+                                 text=True, timeout=120)
+        if created.returncode != 0:
+            self.skipTest("no venv for %s: %s" % (sys.executable, created.stderr.strip()))
+        python = os.path.join(environment, "bin", "python")
+        self.pip_install(python_options=("--python", python))  # pip 22.3+: installs for that interpreter
+        prefix = subprocess.run([python, "-c", "import sys; print(sys.prefix)"], capture_output=True, text=True)
+        libdir = os.path.join(prefix.stdout.strip(), "lib")
+        os.symlink(self.library, os.path.join(libdir, "libnavlink.so.0"))
+        empty = self.folder("no-pc")
+        found = self.loaded(self.probe(library_lookup_environment(PKG_CONFIG_LIBDIR=empty), python=python,
+                                       source_tree=False))
+        self.assertEqual(os.path.realpath(os.path.dirname(found[0])), os.path.realpath(libdir))
+        self.assertTrue(found[1].startswith(environment), found[1])
+
+
+class TypingTest(unittest.TestCase):
+    def test_the_public_api_is_annotated(self):
+        """Every public function and method (and __init__) annotates its parameters and its return, and the
+        annotations name things that exist."""
+        with open(nl.__file__) as f:
+            tree = ast.parse(f.read())
+        public = [(None, node) for node in tree.body if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef))]
+        public += [(cls.name, node) for cls in tree.body if isinstance(cls, ast.ClassDef) and not cls.name.startswith("_")
+                   for node in cls.body if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef))]
+        unannotated = []
+        checked = 0
+        for owner, function in public:
+            if function.name.startswith("_") and not function.name.startswith("__") or owner is None and function.name.startswith("_"):
+                continue
+            arguments = function.args.args + function.args.kwonlyargs
+            missing = [a.arg for a in arguments if a.annotation is None and a.arg not in ("self", "cls")]
+            if missing or function.returns is None:
+                unannotated.append("%s.%s %s" % (owner, function.name, missing))
+            target = getattr(nl, function.name) if owner is None else vars(getattr(nl, owner))[function.name]
+            typing.get_type_hints(getattr(target, "fget", target), vars(nl))
+            checked += 1
+        self.assertEqual(unannotated, [])
+        self.assertGreater(checked, 100)
 
 
 if __name__ == "__main__":

@@ -1,0 +1,117 @@
+"""The PEP 517 build backend of the navlink package (pyproject.toml), standard library only.
+
+The wheel holds navlink.py as navlink/__init__.py beside navlink/py.typed: PEP 561 type information ships
+in packages, not in single-module distributions, while the source tree keeps the one file that its test,
+the coverage check and a user with NAVLINK_LIBRARY import directly.
+"""
+import base64
+import hashlib
+import io
+import os
+import re
+import tarfile
+import zipfile
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+WHEEL_TAG = "py3-none-any"
+# Fixed times make the same sources give the same archive bytes.
+ZIP_TIME = (1980, 1, 1, 0, 0, 0)
+PACKAGE_FILES = {"navlink/__init__.py": "navlink.py", "navlink/py.typed": "py.typed"}
+SDIST_FILES = ["pyproject.toml", "_navlink_build.py", "navlink.py", "py.typed"]
+
+
+def _read(name):
+    with open(os.path.join(HERE, name), "rb") as f:
+        return f.read()
+
+
+def _project():
+    """The [project] table's string values, and the version from navlink.py."""
+    table, project = None, {}
+    for line in _read("pyproject.toml").decode().splitlines():
+        header = re.match(r"\s*\[([^\]]+)\]", line)
+        if header:
+            table = header.group(1).strip()
+            continue
+        pair = re.match(r'\s*([A-Za-z][\w-]*)\s*=\s*"([^"]*)"\s*(#.*)?$', line)
+        if table == "project" and pair:
+            project[pair.group(1)] = pair.group(2)
+    version = re.search(r"^VERSION_MAJOR, VERSION_MINOR, VERSION_PATCH = (\d+), (\d+), (\d+)$",
+                        _read("navlink.py").decode(), flags=re.M)
+    if version is None:
+        raise RuntimeError("_navlink_build: navlink.py has no VERSION_MAJOR, VERSION_MINOR, VERSION_PATCH line")
+    project["version"] = ".".join(version.groups())
+    return project
+
+
+def _metadata(project):
+    lines = ["Metadata-Version: 2.1", "Name: " + project["name"], "Version: " + project["version"],
+             "Summary: " + project["description"], "Requires-Python: " + project["requires-python"],
+             "License: " + project["license"]]
+    return ("\n".join(lines) + "\n").encode()
+
+
+def _dist_info(project):
+    return "%s-%s.dist-info" % (project["name"], project["version"])
+
+
+def _record_line(name, data):
+    digest = base64.urlsafe_b64encode(hashlib.sha256(data).digest()).rstrip(b"=").decode()
+    return "%s,sha256=%s,%d" % (name, digest, len(data))
+
+
+def _write_wheel(directory, project, files):
+    """A wheel of `files` ({name in the wheel: bytes}) and its .dist-info; returns its file name."""
+    dist_info = _dist_info(project)
+    files = dict(files)
+    files[dist_info + "/METADATA"] = _metadata(project)
+    files[dist_info + "/WHEEL"] = ("Wheel-Version: 1.0\nGenerator: navlink _navlink_build\nRoot-Is-Purelib: true\n"
+                                   "Tag: %s\n" % WHEEL_TAG).encode()
+    files[dist_info + "/top_level.txt"] = b"navlink\n"
+    record_name = dist_info + "/RECORD"
+    record = "".join(_record_line(name, data) + "\n" for name, data in files.items()) + record_name + ",,\n"
+    files[record_name] = record.encode()
+    wheel_name = "%s-%s-%s.whl" % (project["name"], project["version"], WHEEL_TAG)
+    with zipfile.ZipFile(os.path.join(directory, wheel_name), "w", zipfile.ZIP_DEFLATED) as wheel:
+        for name, data in files.items():
+            entry = zipfile.ZipInfo(name, ZIP_TIME)
+            entry.external_attr = 0o644 << 16
+            entry.compress_type = zipfile.ZIP_DEFLATED
+            wheel.writestr(entry, data)
+    return wheel_name
+
+
+def get_requires_for_build_wheel(config_settings=None):
+    return []
+
+
+def get_requires_for_build_editable(config_settings=None):
+    return []
+
+
+def get_requires_for_build_sdist(config_settings=None):
+    return []
+
+
+def build_wheel(wheel_directory, config_settings=None, metadata_directory=None):
+    return _write_wheel(wheel_directory, _project(),
+                        {name: _read(source) for name, source in PACKAGE_FILES.items()})
+
+
+def build_editable(wheel_directory, config_settings=None, metadata_directory=None):
+    """A wheel whose .pth puts this folder on sys.path: `import navlink` runs navlink.py where it is."""
+    return _write_wheel(wheel_directory, _project(), {"navlink.pth": (HERE + "\n").encode()})
+
+
+def build_sdist(sdist_directory, config_settings=None):
+    project = _project()
+    base = "%s-%s" % (project["name"], project["version"])
+    members = {name: _read(name) for name in SDIST_FILES}
+    members["PKG-INFO"] = _metadata(project)
+    sdist_name = base + ".tar.gz"
+    with tarfile.open(os.path.join(sdist_directory, sdist_name), "w:gz", format=tarfile.PAX_FORMAT) as sdist:
+        for name, data in members.items():
+            entry = tarfile.TarInfo("%s/%s" % (base, name))
+            entry.size, entry.mode = len(data), 0o644
+            sdist.addfile(entry, io.BytesIO(data))
+    return sdist_name
