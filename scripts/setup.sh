@@ -9,6 +9,7 @@ packages=(
   librecast-dev libsdl2-dev libstb-dev
   zlib1g-dev  # the CRC-32 of baked navmesh files
   mono-devel python3
+  python3-pip python3-venv  # the Python binding's test installs its package with pip, also into a fresh venv
   clang libclang-rt-14-dev  # the sanitizer build and its libFuzzer targets (docs/testing.md)
 )
 # The Rust binding's test needs cargo; a toolchain from rustup (not a Debian package) serves as well, so
