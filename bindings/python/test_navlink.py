@@ -1690,6 +1690,11 @@ class PackageTest(unittest.TestCase):
                                        source_tree=False))
         self.assertEqual(os.path.realpath(os.path.dirname(found[0])), os.path.realpath(libdir))
         self.assertTrue(found[1].startswith(environment), found[1])
+        if self.have_pkg_config:
+            elsewhere = self.linked_library("pkg-config")
+            pc = write_navlink_pc(self.folder("pc"), elsewhere)
+            found = self.loaded(self.probe(library_lookup_environment(**pc), python=python, source_tree=False))
+            self.assertEqual(os.path.dirname(found[0]), elsewhere, "pkg-config before the installed places")
 
 
 class TypingTest(unittest.TestCase):
