@@ -21,7 +21,6 @@ ImportError lists what was tried. Every World method may be called from several 
 """
 from __future__ import annotations
 
-import collections
 import ctypes
 import ctypes.util
 import enum
