@@ -47,10 +47,13 @@ void write_file_bytes(const std::string& path, std::string_view bytes) {
             fail(ErrorCode::Io, "cannot write '", path, "': ", std::strerror(why));
         }
     }
-    if (std::rename(partial.c_str(), path.c_str()) != 0) {
-        const int why = errno;
+    // std::filesystem::rename replaces an existing file on every platform; std::rename does not on
+    // Windows, where the second save of a file would fail.
+    std::error_code renamed;
+    std::filesystem::rename(partial, path, renamed);
+    if (renamed) {
         std::remove(partial.c_str());
-        fail(ErrorCode::Io, "cannot write '", path, "': ", std::strerror(why));
+        fail(ErrorCode::Io, "cannot write '", path, "': ", renamed.message());
     }
 }
 

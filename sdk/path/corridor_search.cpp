@@ -6,6 +6,7 @@
 
 #include "path/link_filter.h"
 #include "path/portal.h"
+#include "platform/compiler.h"
 #include "util/error.h"
 
 namespace nl {
@@ -188,7 +189,7 @@ void find_corridor(const PathGraph& graph, const PathQuery& query, const NavPoin
     float nearest_entry = std::numeric_limits<float>::infinity();  // bounds a partial path's end
     uint32_t nearest_entry_polygon = start.polygon;
     auto relax = [&](uint32_t q, uint32_t parent, uint32_t entry, const Vec3& position, float g,
-                     const PortalSpan* span) __attribute__((always_inline)) {
+                     const PortalSpan* span) NL_ALWAYS_INLINE {
         SearchNode& n = nodes[q];
         if (n.epoch != epoch) {
             if (query.max_nodes != 0 && result.nodes_visited >= query.max_nodes) {
