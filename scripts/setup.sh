@@ -11,6 +11,7 @@ packages=(
   mono-devel python3
   python3-pip python3-venv  # the Python binding's test installs its package with pip, also into a fresh venv
   clang libclang-rt-14-dev  # the sanitizer build and its libFuzzer targets (docs/testing.md)
+  dpkg-dev  # dpkg-shlibdeps: the Debian package's Depends (cpack -G DEB, docs/shipping.md)
 )
 # The Rust binding's test needs cargo; a toolchain from rustup (not a Debian package) serves as well, so
 # Debian's cargo (with its rustc) is added only when no cargo is on the PATH.

@@ -23,12 +23,14 @@ configure_and_build() {
 
 start=$(date +%s)
 echo "== release build and tests (with the C#, Rust and Python binding tests)"
-configure_and_build "$root/build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DNAVLINK_BUILD_BINDINGS=ON
+# Both compilers at -Wall -Wextra -Werror: gcc here, clang in the sanitizer build (its warnings do not
+# depend on the sanitizers), so no third build is needed for clang's warnings.
+configure_and_build "$root/build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DNAVLINK_BUILD_BINDINGS=ON -DNAVLINK_WERROR=ON
 ctest --test-dir "$root/build" --output-on-failure -j "$jobs"
 
 echo "== sanitizer build (address;undefined, clang, with the fuzz targets) and tests"
 configure_and_build "$root/build-asan" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DNAVLINK_SANITIZE="address;undefined" \
-  -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ -DNAVLINK_BUILD_FUZZERS=ON \
+  -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ -DNAVLINK_BUILD_FUZZERS=ON -DNAVLINK_WERROR=ON \
   -DNAVLINK_BUILD_BENCHMARKS=OFF -DNAVLINK_INSTALL=OFF
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 ctest --test-dir "$root/build-asan" --output-on-failure -LE "no_sanitizer|fuzz" -j "$jobs"

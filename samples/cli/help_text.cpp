@@ -19,7 +19,8 @@ const char* const kMainHelp =
     "  info    say what a baked navmesh file holds and what it was made for\n"
     "  level   write the generated default level as an OBJ file\n"
     "\n"
-    "`navlink COMMAND --help` describes a command. Errors are one line on stderr and exit status 2.\n";
+    "`navlink COMMAND --help` describes a command; `navlink --version` prints the tool's and the\n"
+    "library's versions. Errors are one line on stderr and exit status 2.\n";
 
 const char* const kGenerateHelp =
     "usage: navlink generate LEVEL.obj --out LINKS.json [--navmesh NAVMESH.obj] [--agent AGENT.json]\n"

@@ -4,6 +4,9 @@
 #include <exception>
 #include <string>
 
+#include <navlink/navlink.h>
+#include <navlink/version.h>
+
 #include "commands.h"
 #include "help_text.h"
 #include "sample_error.h"
@@ -26,6 +29,13 @@ int main(int argc, char** argv) {
     }
     if (!std::strcmp(argv[1], "--help") || !std::strcmp(argv[1], "-h") || !std::strcmp(argv[1], "help")) {
         std::fputs(nl::cli::kMainHelp, stdout);
+        return 0;
+    }
+    if (!std::strcmp(argv[1], "--version")) {
+        // Both: a tool run against another libnavlink than it was built with shows it here.
+        const nl_version library = nl_get_version();
+        std::printf("navlink %d.%d.%d (libnavlink %d.%d.%d)\n", NL_VERSION_MAJOR, NL_VERSION_MINOR, NL_VERSION_PATCH,
+                    static_cast<int>(library.major), static_cast<int>(library.minor), static_cast<int>(library.patch));
         return 0;
     }
     const std::string command = argv[1];

@@ -1,8 +1,14 @@
 #!/usr/bin/env bash
 # Installs the built project into a fresh prefix under the build tree and uses it as a host would:
-#   1. the installed libnavlink.so exports only nl_* and has the SONAME libnavlink.so.0;
-#   2. a CMake project finds it with find_package(NavLink <major.minor> CONFIG REQUIRED), builds, runs;
-#   3. a plain `cc $(pkg-config --cflags --libs navlink)` build does the same.
+#   1. the installed tree: headers, CMake package, navlink.pc, docs, and when the samples are built the
+#      navlink tool (runs --help and --version from the prefix alone) and the viewer, the plugin
+#      modules; each binary stripped when NAVLINK_INSTALL_STRIPPED is on;
+#   2. a shared libnavlink.so exports only nl_* and has the SONAME libnavlink.so.0; a static
+#      libnavlink.a defines no other global symbol than nl_* (but the weak instances of std templates);
+#   3. a CMake project finds it with find_package(NavLink <major.minor> CONFIG REQUIRED), builds a C
+#      and a C++ program, runs them: a ray on a triangle, and a navmesh built, links generated and a
+#      path found over a jump (every library NavLink links is needed for that);
+#   4. a plain `cc $(pkg-config --cflags --libs navlink)` build does the same (`--static` for libnavlink.a).
 # The consumer sees only the installed headers, never the source tree's.
 #
 # Usage: run_install_test.sh <build-dir> <cmake-command> <source-dir>
@@ -72,32 +78,90 @@ done
 [ -f "$libdir/cmake/NavLink/NavLinkConfig.cmake" ] || fail "NavLinkConfig.cmake is not in $libdir/cmake/NavLink"
 [ -f "$libdir/cmake/NavLink/NavLinkConfigVersion.cmake" ] || fail "NavLinkConfigVersion.cmake is not installed"
 
-# --- The installed library --------------------------------------------------------------------
-lib=$libdir/libnavlink.so
-if [ ! -e "$lib" ]; then
-  fail "libnavlink.so is not in $libdir"
-  finish
+# What the build was configured to install.
+cache_value() { sed -n "s/^$1:[A-Z]*=//p" "$build/CMakeCache.txt" 2>/dev/null; }
+is_on() { case "$1" in ON|on|1|TRUE|true|YES|yes) return 0 ;; *) return 1 ;; esac; }
+shared=ON; is_on "$(cache_value NAVLINK_SHARED)" || shared=OFF
+stripped=ON; is_on "$(cache_value NAVLINK_INSTALL_STRIPPED)" || stripped=OFF
+samples=ON; is_on "$(cache_value NAVLINK_BUILD_SAMPLES)" || samples=OFF
+
+# The debug info is the build tree's; installed binaries have none (39 MB against under 1 MB).
+check_stripped() {
+  if [ "$stripped" = ON ] && readelf -S "$1" 2>/dev/null | grep -q '\.debug_'; then
+    fail "$1 is installed with its debug info (NAVLINK_INSTALL_STRIPPED is on)"
+  fi
+}
+
+# --- The installed tree -----------------------------------------------------------------------
+docdir=$prefix/share/doc/navlink
+for f in README.md CHANGELOG.md LICENSE c-api.md architecture.md platforms.md shipping.md; do
+  [ -f "$docdir/$f" ] || fail "the docs' $f is not in $docdir"
+done
+if [ "$samples" = ON ]; then
+  for program in navlink navlink-viewer; do
+    if [ -x "$prefix/bin/$program" ]; then check_stripped "$prefix/bin/$program"; else fail "bin/$program is not installed"; fi
+  done
+  # Run from the prefix alone: the programs find the installed libnavlink through their RUNPATH.
+  if step "bin/navlink --help" env -u LD_LIBRARY_PATH "$prefix/bin/navlink" --help; then
+    grep -q "^usage: navlink COMMAND" "$log" || fail "bin/navlink --help printed: $(head -n 3 "$log")"
+  fi
+  if step "bin/navlink --version" env -u LD_LIBRARY_PATH "$prefix/bin/navlink" --version; then
+    installed_version=$(sed -n 's/^#define NL_VERSION_[A-Z]* \([0-9]*\)$/\1/p' "$prefix/include/navlink/version.h" | paste -sd.)
+    grep -qx "navlink $installed_version (libnavlink $installed_version)" "$log" ||
+      fail "bin/navlink --version printed '$(cat "$log")', expected version $installed_version"
+  fi
+  plugin=$libdir/navlink/plugins/libnavlink-climb-plugin.so
+  if [ -f "$plugin" ]; then check_stripped "$plugin"; else fail "the climb plugin is not at $plugin"; fi
 fi
-[ -L "$lib" ] || fail "libnavlink.so is not a symlink (to the versioned library)"
-[ -e "$libdir/libnavlink.so.0" ] || fail "libnavlink.so.0 is not installed"
-real=$(readlink -f "$lib")
 
-soname=$(readelf -d "$real" 2>/dev/null | sed -n 's/.*(SONAME).*\[\(.*\)\].*/\1/p')
-[ "$soname" = "libnavlink.so.0" ] || fail "SONAME is '$soname', expected libnavlink.so.0"
+# --- The installed library --------------------------------------------------------------------
+if [ "$shared" = ON ]; then
+  lib=$libdir/libnavlink.so
+  if [ ! -e "$lib" ]; then
+    fail "libnavlink.so is not in $libdir"
+    finish
+  fi
+  [ -L "$lib" ] || fail "libnavlink.so is not a symlink (to the versioned library)"
+  [ -e "$libdir/libnavlink.so.0" ] || fail "libnavlink.so.0 is not installed"
+  real=$(readlink -f "$lib")
+  check_stripped "$real"
 
-if step "nm -D --defined-only $real" nm -D --defined-only "$real"; then
-  # "address type name[@version]"; a named version node in the version script shows up as an absolute
-  # (A) symbol, which is not an export. Everything else must be nl_*.
-  symbols=$(awk 'NF >= 3 && $2 != "A" { print $3 }' "$log")
-  if [ -z "$symbols" ]; then
-    fail "the library exports no symbols"
-  else
-    stray=$(printf '%s\n' "$symbols" | sed 's/@.*//' | grep -v '^nl_' | sort -u)
+  soname=$(readelf -d "$real" 2>/dev/null | sed -n 's/.*(SONAME).*\[\(.*\)\].*/\1/p')
+  [ "$soname" = "libnavlink.so.0" ] || fail "SONAME is '$soname', expected libnavlink.so.0"
+
+  if step "nm -D --defined-only $real" nm -D --defined-only "$real"; then
+    # "address type name[@version]"; a named version node in the version script shows up as an absolute
+    # (A) symbol, which is not an export. Everything else must be nl_*.
+    symbols=$(awk 'NF >= 3 && $2 != "A" { print $3 }' "$log")
+    if [ -z "$symbols" ]; then
+      fail "the library exports no symbols"
+    else
+      stray=$(printf '%s\n' "$symbols" | sed 's/@.*//' | grep -v '^nl_' | sort -u)
+      if [ -n "$stray" ]; then
+        fail "the library exports symbols other than nl_*:"
+        printf '%s\n' "$stray" | head -n 20 | sed 's/^/  | /'
+      fi
+      grep -q '^nl_get_version$' <<<"$symbols" || fail "nl_get_version is not exported"
+    fi
+  fi
+else
+  real=$libdir/libnavlink.a
+  if [ ! -f "$real" ]; then
+    fail "libnavlink.a is not in $libdir"
+    finish
+  fi
+  [ -e "$libdir/libnavlink.so" ] && fail "a static build installed libnavlink.so too"
+  check_stripped "$real"
+  # Strong global definitions (text, data, bss, read-only): only nl_*, or the core's symbols would clash
+  # with a host's. Weak ones (W, V, u) are the std templates' instances, the same in every program.
+  if step "nm -g --defined-only $real" nm -g --defined-only "$real"; then
+    symbols=$(awk 'NF >= 3 && $2 ~ /^[TDBRGSC]$/ { print $3 }' "$log")
+    stray=$(printf '%s\n' "$symbols" | grep -v '^nl_' | sort -u)
     if [ -n "$stray" ]; then
-      fail "the library exports symbols other than nl_*:"
+      fail "libnavlink.a defines global symbols other than nl_*:"
       printf '%s\n' "$stray" | head -n 20 | sed 's/^/  | /'
     fi
-    printf '%s\n' "$symbols" | grep -q '^nl_get_version$' || fail "nl_get_version is not exported"
+    grep -q '^nl_get_version$' <<<"$symbols" || fail "libnavlink.a does not define nl_get_version"
   fi
 fi
 
@@ -121,7 +185,7 @@ if [ -z "$major" ] || [ -z "$minor" ] || [ -z "$patch" ]; then
 fi
 
 # A sanitized build's library needs the sanitizer runtime in the consumer too.
-sanitize=$(sed -n 's/^NAVLINK_SANITIZE:[A-Z]*=//p' "$build/CMakeCache.txt" 2>/dev/null | tr ';' ',')
+sanitize=$(cache_value NAVLINK_SANITIZE | tr ';' ',')
 san_flags=()
 if [ -n "$sanitize" ]; then
   san_flags=("-fsanitize=$sanitize" -fno-omit-frame-pointer)
@@ -130,27 +194,44 @@ fi
 # The consumer's sources are copied out of the tree, so nothing next to them can be included by accident.
 consumer_src=$work/consumer-src
 mkdir -p "$consumer_src"
-cp "$source/tests/install/consumer/CMakeLists.txt" "$source/tests/install/consumer/consumer.c" "$consumer_src/"
+cp "$source"/tests/install/consumer/{CMakeLists.txt,consumer.c,path_consumer.c,path_consumer.cpp} "$consumer_src/"
 
 # Only the installed copy: no package registries, no system prefixes ahead of ours.
 cmake_common=(-DCMAKE_PREFIX_PATH="$prefix" -DCMAKE_FIND_USE_PACKAGE_REGISTRY=OFF
               -DCMAKE_FIND_USE_SYSTEM_PACKAGE_REGISTRY=OFF -DCMAKE_BUILD_TYPE=Release
               -DCMAKE_EXPORT_COMPILE_COMMANDS=ON)
 if [ ${#san_flags[@]} -gt 0 ]; then
-  cmake_common+=(-DCMAKE_C_FLAGS="${san_flags[*]}" -DCMAKE_EXE_LINKER_FLAGS="${san_flags[*]}")
+  cmake_common+=(-DCMAKE_C_FLAGS="${san_flags[*]}" -DCMAKE_CXX_FLAGS="${san_flags[*]}"
+                 -DCMAKE_EXE_LINKER_FLAGS="${san_flags[*]}")
 fi
 
-# Checks that a consumer binary loads the installed library, not the build tree's.
+# Checks that a consumer binary loads the installed library, not the build tree's; linked with
+# libnavlink.a, that it loads no libnavlink at all.
 check_loads_installed() {
   local binary=$1 how=$2
   shift 2
   local resolved
   resolved=$(env "$@" ldd "$binary" 2>/dev/null | awk '/libnavlink\.so/ { print $3 }')
+  if [ "$shared" = OFF ]; then
+    [ -z "$resolved" ] || fail "$how consumer, linked with libnavlink.a, loads a libnavlink.so ($resolved)"
+    return
+  fi
   case "$resolved" in
     "$libdir"/*) ;;
     *) fail "$how consumer resolves libnavlink.so to '$resolved', not into $libdir" ;;
   esac
 }
+
+# Runs a consumer program and checks what it printed: `expected` is a grep pattern of its first line.
+run_consumer() {
+  local what=$1 expected=$2
+  shift 2
+  if step "run $what" "$@"; then
+    grep -q "$expected" "$log" || fail "$what printed: $(cat "$log")"
+  fi
+}
+hit_line="^NavLink $major\.$minor\.$patch: hit"
+path_line="^path over 1 link"
 
 # --- (a) CMake: find_package(NavLink major.minor CONFIG REQUIRED) -------------------------------
 cm_build=$work/cmake-consumer
@@ -168,10 +249,11 @@ if step "configure the CMake consumer (find_package(NavLink $major.$minor))" \
         *) fail "the CMake consumer compiles with the include directory $dir, outside $prefix" ;;
       esac
     done
-    if step "run the CMake consumer" "$cm_build/consumer"; then
-      grep -q "^NavLink $major\.$minor\.$patch: hit" "$log" || fail "the CMake consumer printed: $(cat "$log")"
-    fi
+    run_consumer "the CMake consumer" "$hit_line" "$cm_build/consumer"
+    run_consumer "the CMake path consumer (C)" "$path_line" "$cm_build/path_consumer"
+    run_consumer "the CMake path consumer (C++)" "$path_line" "$cm_build/path_consumer_cxx"
     check_loads_installed "$cm_build/consumer" "the CMake"
+    check_loads_installed "$cm_build/path_consumer" "the CMake path"
   fi
 fi
 
@@ -188,7 +270,9 @@ unset PKG_CONFIG_SYSROOT_DIR
 if step "pkg-config --modversion navlink" pkg-config --modversion navlink; then
   [ "$(cat "$log")" = "$major.$minor.$patch" ] || fail "pkg-config says version '$(cat "$log")', expected $major.$minor.$patch"
 fi
-if step "pkg-config --cflags --libs navlink" pkg-config --cflags --libs navlink; then
+# libnavlink.a needs what it links on the command line too: navlink.pc's Libs.private and Requires.private.
+pc_static=(); [ "$shared" = OFF ] && pc_static=(--static)
+if step "pkg-config ${pc_static[*]} --cflags --libs navlink" pkg-config "${pc_static[@]}" --cflags --libs navlink; then
   read -r -a pc_flags <"$log"
   # The flags must lead into the prefix (the .pc file is relocatable) and nowhere else in the project.
   for flag in "${pc_flags[@]}"; do
@@ -201,15 +285,18 @@ if step "pkg-config --cflags --libs navlink" pkg-config --cflags --libs navlink;
         esac ;;
     esac
   done
-  pc_bin=$work/pkgconfig-consumer
-  if step "build the consumer with cc \$(pkg-config --cflags --libs navlink)" \
-      cc -std=c11 -Wall -Wextra -pedantic -Werror "${san_flags[@]}" "$consumer_src/consumer.c" -o "$pc_bin" \
-      "${pc_flags[@]}" -lm; then
-    if step "run the pkg-config consumer (LD_LIBRARY_PATH=$libdir)" env LD_LIBRARY_PATH="$libdir" "$pc_bin"; then
-      grep -q "^NavLink $major\.$minor\.$patch: hit" "$log" || fail "the pkg-config consumer printed: $(cat "$log")"
+  for program in consumer path_consumer; do
+    pc_bin=$work/pkgconfig-$program
+    if step "build $program.c with cc \$(pkg-config ${pc_static[*]} --cflags --libs navlink)" \
+        cc -std=c11 -Wall -Wextra -pedantic -Werror "${san_flags[@]}" "$consumer_src/$program.c" -o "$pc_bin" \
+        "${pc_flags[@]}" -lm; then
+      check_loads_installed "$pc_bin" "the pkg-config $program" LD_LIBRARY_PATH="$libdir"
     fi
-    check_loads_installed "$pc_bin" "the pkg-config" LD_LIBRARY_PATH="$libdir"
-  fi
+  done
+  run_consumer "the pkg-config consumer (LD_LIBRARY_PATH=$libdir)" "$hit_line" \
+    env LD_LIBRARY_PATH="$libdir" "$work/pkgconfig-consumer"
+  run_consumer "the pkg-config path consumer (LD_LIBRARY_PATH=$libdir)" "$path_line" \
+    env LD_LIBRARY_PATH="$libdir" "$work/pkgconfig-path_consumer"
 fi
 
 finish
