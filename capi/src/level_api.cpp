@@ -20,6 +20,10 @@ namespace {
 constexpr size_t kMeshDefFirstSize = offsetof(nl_mesh_def, user_data) + sizeof(uint64_t);
 constexpr size_t kMeshInfoFirstSize = offsetof(nl_mesh_info, user_data) + sizeof(uint64_t);
 static_assert(NL_COORDINATE_LIMIT == nl::kCoordinateLimit, "header and core disagree on the coordinate limit");
+static_assert(NL_MESH_MOVABLE == nl::kMeshMovable && NL_MESH_CLOCKWISE == nl::kMeshClockwise &&
+                  NL_MESH_OBSTACLE == nl::kMeshObstacle && NL_MESH_NOT_IN_NAVMESH == nl::kMeshNotInNavMesh &&
+                  NL_MESH_MAX_AREA == nl::kMaxMeshArea,
+              "header and core disagree on mesh flags");
 
 using nl::capi::to_handle;
 using nl::capi::to_id;
@@ -45,7 +49,8 @@ nl::TriangleMesh read_def_geometry(const nl_mesh_def& def) {
 
 nl_mesh_id add_mesh(nl::World& world, const nl::TriangleMesh& mesh, const nl_mesh_def& def, const char* function) {
     const nl::Handle h = nl::naming_fields("def->", [&] {
-        return world.level().add_mesh(mesh, read_transform(def.transform), def.flags, def.user_data);
+        if (def.reserved != 0) nl::fail_field(ErrorCode::InvalidArgument, "reserved is ", def.reserved, " (must be 0)");
+        return world.level().add_mesh(mesh, read_transform(def.transform), def.flags, def.user_data, def.area);
     });
     const nl::MeshInfo info = world.level().info(h);
     if (info.degenerate_triangle_count > 0) {
@@ -196,6 +201,7 @@ NL_API nl_status nl_mesh_get_info(const nl_world* world, nl_mesh_id mesh, nl_mes
         out.triangle_count = info.triangle_count;
         out.degenerate_triangle_count = info.degenerate_triangle_count;
         out.flags = info.flags;
+        out.area = info.area;
         Eigen::Map<Eigen::Matrix4f>(out.transform) = info.transform.matrix();
         Eigen::Map<nl::Vec3>(out.bounds_min) = info.bounds.min;
         Eigen::Map<nl::Vec3>(out.bounds_max) = info.bounds.max;

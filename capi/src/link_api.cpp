@@ -177,10 +177,6 @@ nl::PluginSettings plugin_settings_of(const nl_link_settings& given) {
     });
 }
 
-auto progress_of(nl_progress_fn* progress, void* user) {
-    return [progress, user](float fraction, const char* stage) { return !progress || progress(user, fraction, stage) != 0; };
-}
-
 std::vector<nl::Link> links_of(const nl::LinkSnapshot& snapshot) {
     std::vector<nl::Link> out;
     out.reserve(snapshot.size());
@@ -329,7 +325,7 @@ NL_API nl_status nl_navmesh_generate_links(nl_world* world, nl_navmesh_id navmes
         const nl::LinkSettings core_settings = core_settings_of(given);
         nl::PluginSettings plugin_settings = plugin_settings_of(given);
         const nl::LinkGenerationReport report =
-            w.generate_links(to_handle(navmesh), core_settings, std::move(plugin_settings), progress_of(progress, user));
+            w.generate_links(to_handle(navmesh), core_settings, std::move(plugin_settings), nl::capi::progress_of(progress, user));
         if (out_report) nl::capi::write_growable(out_report, to_c(report), kReportFirstSize, "out_report");
     });
 }
@@ -353,7 +349,7 @@ NL_API nl_status nl_navmesh_generate_cross_links(nl_world* world, nl_navmesh_id 
         const nl::LinkSettings core_settings = core_settings_of(given);
         plugin_settings_of(given);  // checked as for any generation; link-kind plugins link within one navmesh
         const nl::LinkGenerationReport report =
-            w.generate_cross_links(to_handle(first), to_handle(second), core_settings, tolerance, progress_of(progress, user));
+            w.generate_cross_links(to_handle(first), to_handle(second), core_settings, tolerance, nl::capi::progress_of(progress, user));
         if (out_report) nl::capi::write_growable(out_report, to_c(report), kReportFirstSize, "out_report");
     });
 }
@@ -374,7 +370,7 @@ NL_API nl_status nl_navmesh_update_links_in_box(nl_world* world, nl_navmesh_id n
         if (out_report) nl::capi::check_growable_output(out_report, kReportFirstSize, "out_report");
         const nl::LinkGenerationReport report = [&] {
             try {
-                return w.update_links_in_box(to_handle(navmesh), box, progress_of(progress, user));
+                return w.update_links_in_box(to_handle(navmesh), box, nl::capi::progress_of(progress, user));
             } catch (const nl::Error& e) {
                 if (e.code() != ErrorCode::NotFound) throw;
                 throw nl::Error(e.code(), nl::concat(e.what(), " (nl_navmesh_generate_links)"));

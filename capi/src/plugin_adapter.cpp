@@ -204,9 +204,20 @@ void CPlugin::propose(World&, Handle navmesh, const std::string& settings_json, 
 
 }  // namespace
 
-TriangleMesh level_triangles_for_plugin(void* context) {
+BuildTriangles level_triangles_for_plugin(void* context) {
     const Level& level = world_of_plugin(context).level();
-    return running_build ? level.triangles_to_build(running_build->request.surface) : level.world_triangles();
+    if (running_build) return level.triangles_to_build(running_build->request.surface);
+    BuildTriangles all;
+    all.mesh = level.world_triangles();
+    all.areas.assign(all.mesh.triangles.size(), 0);
+    return all;
+}
+
+bool report_build_progress(void* context, float fraction, const char* stage) {
+    if (!running_build || &running_build->builder != context)
+        fail(ErrorCode::InvalidArgument, "report_build_progress was called outside a navmesh build of this plugin on this thread");
+    const auto& progress = running_build->request.progress;
+    return !progress || progress(fraction, stage);
 }
 
 void record_build_settings(void* context, std::string_view settings_json) {

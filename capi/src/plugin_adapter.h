@@ -33,9 +33,12 @@ nl_plugin_host make_plugin_host(void* context);
 World& world_of_plugin(void* context);
 const std::string& name_of_plugin(void* context);
 // The level triangles a plugin is shown: during a navmesh build on this thread, what the build is
-// for (Level::triangles_to_build: the static meshes, or the surface mesh in its own space);
-// otherwise every mesh in the world.
-TriangleMesh level_triangles_for_plugin(void* context);
+// for (Level::triangles_to_build: the static meshes, or the surface mesh in its own space, with
+// their areas); otherwise every mesh in the world, each triangle of area 0.
+BuildTriangles level_triangles_for_plugin(void* context);
+// Hands a builder's progress to the build running on this thread for the plugin `context`; false
+// when its caller asked to stop. InvalidArgument outside such a build.
+bool report_build_progress(void* context, float fraction, const char* stage);
 // Keeps what the build running on this thread for the plugin `context` says it used (checked when
 // the build ends); InvalidArgument outside such a build.
 void record_build_settings(void* context, std::string_view settings_json);

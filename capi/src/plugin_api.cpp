@@ -49,6 +49,7 @@ NL_API nl_status nl_navmesh_build(nl_world* world, const nl_navmesh_build_def* d
         request.settings_json = settings.settings_json;
         request.settings_json_length = settings.settings_json_length;
         request.surface = to_handle(settings.surface);
+        if (settings.progress) request.progress = nl::capi::progress_of(settings.progress, settings.progress_user);
         const auto start = std::chrono::steady_clock::now();
         *out_id = to_id<nl_navmesh_id>(nl::naming_fields("def->", [&] { return w.build_navmesh(request); }));
         const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();

@@ -1,6 +1,7 @@
 // The function table a plugin is given: the world's queries, called directly on the core. A failing
 // query returns its status to the plugin and is logged at debug level under the plugin's name; it
 // never records the host thread's last status nor logs as an error of a call the host never made.
+#include <algorithm>
 #include <new>
 
 #include "entry_guard.h"
@@ -9,6 +10,8 @@
 
 namespace nl::capi {
 namespace {
+
+static_assert(NL_BUILD_AREA_OBSTACLE == kObstacleArea, "plugin header and core disagree on the obstacle area");
 
 thread_local std::string plugin_error;
 
@@ -47,23 +50,49 @@ void host_set_error(void*, const char* message) {
     }
 }
 
-nl_status host_get_level_triangles(void* context, float* vertices, uint32_t vertex_capacity, uint32_t* out_vertex_count,
-                                   uint32_t* indices, uint32_t triangle_capacity, uint32_t* out_triangle_count) {
+// The two-call copy of what a build is for; `areas` may be null (get_level_triangles).
+nl_status copy_build_triangles(void* context, const char* query, float* vertices, uint32_t vertex_capacity,
+                               uint32_t* out_vertex_count, uint32_t* indices, uint8_t* areas, bool areas_asked,
+                               uint32_t triangle_capacity, uint32_t* out_triangle_count) {
     nl_status status = NL_STATUS_SUCCESS;
-    const nl_status ran = for_plugin(context, "get_level_triangles", [&] {
-        const TriangleMesh level = level_triangles_for_plugin(context);
-        if (out_vertex_count) *out_vertex_count = static_cast<uint32_t>(level.vertices.size());
-        if (out_triangle_count) *out_triangle_count = static_cast<uint32_t>(level.triangles.size());
+    const nl_status ran = for_plugin(context, query, [&] {
+        const BuildTriangles level = level_triangles_for_plugin(context);
+        const TriangleMesh& mesh = level.mesh;
+        if (out_vertex_count) *out_vertex_count = static_cast<uint32_t>(mesh.vertices.size());
+        if (out_triangle_count) *out_triangle_count = static_cast<uint32_t>(mesh.triangles.size());
         if (vertex_capacity == 0 && triangle_capacity == 0) return;
-        if (!vertices || !indices || level.vertices.size() > vertex_capacity || level.triangles.size() > triangle_capacity) {
+        if (!vertices || !indices || (areas_asked && !areas) || mesh.vertices.size() > vertex_capacity ||
+            mesh.triangles.size() > triangle_capacity) {
             status = NL_STATUS_FAILURE | NL_STATUS_BUFFER_TOO_SMALL;
             return;
         }
-        for (size_t i = 0; i < level.vertices.size(); ++i) Eigen::Map<Vec3>(vertices + 3 * i) = level.vertices[i];
-        for (size_t t = 0; t < level.triangles.size(); ++t)
-            for (int k = 0; k < 3; ++k) indices[3 * t + k] = level.triangles[t][k];
+        for (size_t i = 0; i < mesh.vertices.size(); ++i) Eigen::Map<Vec3>(vertices + 3 * i) = mesh.vertices[i];
+        for (size_t t = 0; t < mesh.triangles.size(); ++t)
+            for (int k = 0; k < 3; ++k) indices[3 * t + k] = mesh.triangles[t][k];
+        if (areas_asked) std::copy(level.areas.begin(), level.areas.end(), areas);
     });
     return NL_FAILED(ran) ? ran : status;
+}
+
+nl_status host_get_level_triangles(void* context, float* vertices, uint32_t vertex_capacity, uint32_t* out_vertex_count,
+                                   uint32_t* indices, uint32_t triangle_capacity, uint32_t* out_triangle_count) {
+    return copy_build_triangles(context, "get_level_triangles", vertices, vertex_capacity, out_vertex_count, indices,
+                                nullptr, false, triangle_capacity, out_triangle_count);
+}
+
+nl_status host_get_build_triangles(void* context, float* vertices, uint32_t vertex_capacity, uint32_t* out_vertex_count,
+                                   uint32_t* indices, uint8_t* areas, uint32_t triangle_capacity,
+                                   uint32_t* out_triangle_count) {
+    return copy_build_triangles(context, "get_build_triangles", vertices, vertex_capacity, out_vertex_count, indices,
+                                areas, true, triangle_capacity, out_triangle_count);
+}
+
+nl_status host_report_build_progress(void* context, float fraction, const char* stage) {
+    bool go_on = true;
+    const nl_status ran = for_plugin(context, "report_build_progress",
+                                     [&] { go_on = report_build_progress(context, fraction, stage); });
+    if (NL_FAILED(ran)) return ran;
+    return go_on ? NL_STATUS_SUCCESS : NL_STATUS_FAILURE | NL_STATUS_CANCELLED;
 }
 
 nl_status host_record_build_settings(void* context, const char* settings_json, size_t length) {
@@ -120,6 +149,8 @@ nl_plugin_host make_plugin_host(void* context) {
     host.cast_rays = host_cast_rays;
     host.segments_blocked = host_segments_blocked;
     host.record_build_settings = host_record_build_settings;
+    host.get_build_triangles = host_get_build_triangles;
+    host.report_build_progress = host_report_build_progress;
     return host;
 }
 

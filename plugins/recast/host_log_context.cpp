@@ -1,29 +1,19 @@
 #include "host_log_context.h"
 
-#include <cstddef>
+#include "host_table.h"
 
 namespace nl::recast {
-namespace {
-
-// True if a host table of `host.size` bytes has the member ending at `end`.
-bool host_has(const nl_plugin_host& host, size_t end) { return host.size >= end; }
-
-}  // namespace
 
 void host_log(const nl_plugin_host& host, nl_log_level level, const char* message) noexcept {
-    if (host_has(host, offsetof(nl_plugin_host, log) + sizeof host.log) && host.log)
-        host.log(host.context, level, message);
+    if (NL_RECAST_HOST_OFFERS(host, log)) host.log(host.context, level, message);
 }
 
 void host_set_error(const nl_plugin_host& host, const char* message) noexcept {
-    if (host_has(host, offsetof(nl_plugin_host, set_error) + sizeof host.set_error) && host.set_error)
-        host.set_error(host.context, message);
+    if (NL_RECAST_HOST_OFFERS(host, set_error)) host.set_error(host.context, message);
 }
 
 nl_status host_record_build_settings(const nl_plugin_host& host, const std::string& settings_json) noexcept {
-    if (!host_has(host, offsetof(nl_plugin_host, record_build_settings) + sizeof host.record_build_settings) ||
-        !host.record_build_settings)
-        return NL_STATUS_SUCCESS;
+    if (!NL_RECAST_HOST_OFFERS(host, record_build_settings)) return NL_STATUS_SUCCESS;
     return host.record_build_settings(host.context, settings_json.c_str(), settings_json.size());
 }
 

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "build_failure.h"
+#include "host_table.h"
 
 namespace nl::recast {
 namespace {
@@ -29,37 +30,49 @@ void check(const LevelTriangles& level) {
 }  // namespace
 
 LevelTriangles fetch_level_triangles(const nl_plugin_host& host) {
-    if (host.size < offsetof(nl_plugin_host, get_level_triangles) + sizeof host.get_level_triangles ||
-        !host.get_level_triangles)
+    const bool with_areas = NL_RECAST_HOST_OFFERS(host, get_build_triangles);
+    if (!with_areas && !NL_RECAST_HOST_OFFERS(host, get_level_triangles))
         fail(NL_STATUS_INVALID_ARGUMENT, "the host offers no get_level_triangles");
+    const char* const query = with_areas ? "get_build_triangles" : "get_level_triangles";
+    LevelTriangles level;
+    auto copy = [&](uint32_t vertex_capacity, uint32_t* vertex_count, uint32_t triangle_capacity, uint32_t* triangle_count) {
+        float* const vertices = vertex_capacity ? level.vertices.data() : nullptr;
+        uint32_t* const indices = triangle_capacity ? level.indices.data() : nullptr;
+        if (with_areas)
+            return host.get_build_triangles(host.context, vertices, vertex_capacity, vertex_count, indices,
+                                            triangle_capacity ? level.areas.data() : nullptr, triangle_capacity,
+                                            triangle_count);
+        return host.get_level_triangles(host.context, vertices, vertex_capacity, vertex_count, indices, triangle_capacity,
+                                        triangle_count);
+    };
 
     uint32_t vertex_count = 0;
     uint32_t triangle_count = 0;
-    nl_status status = host.get_level_triangles(host.context, nullptr, 0, &vertex_count, nullptr, 0, &triangle_count);
-    LevelTriangles level;
+    nl_status status = copy(0, &vertex_count, 0, &triangle_count);
     uint32_t vertex_capacity = 0;
     uint32_t triangle_capacity = 0;
     for (int attempt = 0; attempt < kAttempts; ++attempt) {
         if (NL_FAILED(status) && !(status & NL_STATUS_BUFFER_TOO_SMALL))
-            fail(status & NL_STATUS_DETAIL_MASK, "get_level_triangles failed (status 0x", std::hex, status, ")");
+            fail(status & NL_STATUS_DETAIL_MASK, query, " failed (status 0x", std::hex, status, ")");
         if (vertex_count > INT_MAX / 3 || triangle_count > INT_MAX / 3)
             fail(NL_STATUS_INVALID_ARGUMENT, "the level has ", vertex_count, " vertices and ", triangle_count,
                  " triangles; Recast takes at most ", INT_MAX / 3, " of each");
         if (attempt > 0 && NL_SUCCEEDED(status)) {
             if (vertex_count > vertex_capacity || triangle_count > triangle_capacity)
-                fail(NL_STATUS_INTERNAL_ERROR, "get_level_triangles succeeded with counts beyond the capacities");
+                fail(NL_STATUS_INTERNAL_ERROR, query, " succeeded with counts beyond the capacities");
             level.vertices.resize(size_t{vertex_count} * 3);
             level.indices.resize(size_t{triangle_count} * 3);
+            level.areas.resize(triangle_count);
             check(level);
             return level;
         }
         if (triangle_count == 0 && NL_SUCCEEDED(status)) return level;  // an empty level
         level.vertices.assign(size_t{vertex_count} * 3, 0.0f);
         level.indices.assign(size_t{triangle_count} * 3, 0u);
+        level.areas.assign(triangle_count, 0);  // what an older host's triangles all are
         vertex_capacity = vertex_count;
         triangle_capacity = triangle_count;
-        status = host.get_level_triangles(host.context, level.vertices.data(), vertex_capacity, &vertex_count,
-                                          level.indices.data(), triangle_capacity, &triangle_count);
+        status = copy(vertex_capacity, &vertex_count, triangle_capacity, &triangle_count);
     }
     fail(NL_STATUS_INTERNAL_ERROR, "the level kept changing while its triangles were copied (", kAttempts,
          " attempts)");

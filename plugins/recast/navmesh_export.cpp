@@ -28,8 +28,8 @@ NavMeshExport::NavMeshExport(const rcPolyMesh& pm, const rcPolyMeshDetail& dm) {
         }
         if (count < 3) fail(NL_STATUS_INTERNAL_ERROR, "Recast made polygon ", p, " with ", count, " corners");
         vertex_counts_.push_back(static_cast<uint8_t>(count));
-        // Recast marks walkable ground RC_WALKABLE_AREA; NavLink's default area is 0.
-        areas_.push_back(pm.areas[p] == RC_WALKABLE_AREA ? 0 : pm.areas[p]);
+        // NavLink's area a is Recast's a + 1 (solo_mesh.cpp): Recast's 0 is "not walkable".
+        areas_.push_back(static_cast<uint8_t>(pm.areas[p] - 1));
     }
 
     // Detail: per polygon, meshes[] = vertBase, vertCount, triBase, triCount; triangles have 3 indices

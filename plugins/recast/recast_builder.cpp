@@ -41,10 +41,13 @@ nl_status build(void* /*plugin_state*/, const nl_plugin_host* host, const nl_nav
             fail(NL_STATUS_INVALID_ARGUMENT, "def->size is ", def->size, ", smaller than an nl_navmesh_build_def");
         validate_agent(def->agent);
         const nl_recast_settings settings = resolve_settings(*def);
+        const BuildProgress progress(*host);
+        progress.report(0.0f, "reading the level");
         const LevelTriangles level = fetch_level_triangles(*host);
 
         HostLogContext context(*host);
-        const SoloMesh mesh = build_solo_mesh(context, level, settings, def->agent);
+        const SoloMesh mesh = build_solo_mesh(context, level, settings, def->agent, progress);
+        progress.report(0.98f, "handing over the navmesh");
         const NavMeshExport navmesh(*mesh.polygons, *mesh.detail);
         const nl_navmesh_def navmesh_def = navmesh.def(def->agent);
         const nl_status recorded = host_record_build_settings(*host, settings_to_json(settings));

@@ -46,6 +46,52 @@ void require_step(bool ok, const char* step, const HostLogContext& context) {
          why.empty() ? "" : ": ", why);
 }
 
+// How many triangles rcRasterizeTriangles takes between two progress reports: a few milliseconds.
+constexpr int kRasterizeChunk = 1 << 16;
+
+// Which triangles an agent may walk on, as Recast areas: walkable ones (flat enough, not an
+// obstacle's) carry their mesh's area + 1, the rest RC_NULL_AREA. Fails NOT_FOUND when none is,
+// saying why: every flat triangle an obstacle's, or fronts that face down (wound the other way).
+std::vector<unsigned char> walkable_areas(HostLogContext& ctx, const LevelTriangles& level, const rcConfig& cfg,
+                                          const nl_agent_type& agent) {
+    const int nverts = level.vertex_count();
+    const int ntris = level.triangle_count();
+    const int* tris = reinterpret_cast<const int*>(level.indices.data());
+    for (int i = 0; i < ntris; ++i) {
+        const unsigned area = level.areas[size_t(i)];
+        if (area != NL_BUILD_AREA_OBSTACLE && area > kMaxRecastArea)
+            fail(NL_STATUS_INVALID_ARGUMENT, "a mesh has area ", area, "; the Recast builder carries areas 0..",
+                 kMaxRecastArea, " (Recast keeps 6 bits of area)");
+    }
+    std::vector<unsigned char> areas(static_cast<size_t>(ntris), RC_NULL_AREA);
+    rcMarkWalkableTriangles(&ctx, cfg.walkableSlopeAngle, level.vertices.data(), nverts, tris, ntris, areas.data());
+    bool any = false, any_flat = false;
+    for (size_t i = 0; i < areas.size(); ++i) {
+        if (areas[i] == RC_NULL_AREA) continue;
+        any_flat = true;
+        const bool obstacle = level.areas[i] == NL_BUILD_AREA_OBSTACLE;
+        areas[i] = obstacle ? RC_NULL_AREA : static_cast<unsigned char>(level.areas[i] + 1);
+        any = any || !obstacle;
+    }
+    if (any) return areas;
+    if (any_flat) no_walkable_surface(agent, "every triangle flatter than max slope is an obstacle's (NL_MESH_OBSTACLE)");
+
+    std::vector<int> turned(level.indices.begin(), level.indices.end());
+    for (size_t t = 0; t < turned.size(); t += 3) std::swap(turned[t + 1], turned[t + 2]);
+    std::vector<unsigned char> turned_areas(static_cast<size_t>(ntris), RC_NULL_AREA);
+    rcMarkWalkableTriangles(&ctx, cfg.walkableSlopeAngle, level.vertices.data(), nverts, turned.data(), ntris,
+                            turned_areas.data());
+    size_t would_be = 0;
+    for (size_t i = 0; i < turned_areas.size(); ++i)
+        would_be += turned_areas[i] != RC_NULL_AREA && level.areas[i] != NL_BUILD_AREA_OBSTACLE;
+    if (would_be > 0)
+        no_walkable_surface(agent, std::to_string(would_be) + " of the level's " + std::to_string(ntris) +
+                                       " triangles would be flat enough turned over: their fronts face down. A "
+                                       "triangle's front is the side its corners run counter-clockwise from; register "
+                                       "meshes wound clockwise (Godot's) with NL_MESH_CLOCKWISE");
+    no_walkable_surface(agent, "no triangle of the level is flatter than max slope");
+}
+
 template <typename T, typename Ptr = std::unique_ptr<T, RecastDeleter>>
 Ptr require_allocated(T* p, const char* what) {
     if (!p) fail(NL_STATUS_OUT_OF_MEMORY, "out of memory allocating Recast's ", what);
@@ -115,7 +161,7 @@ rcConfig make_config(const nl_recast_settings& s, const nl_agent_type& agent, co
 }
 
 SoloMesh build_solo_mesh(HostLogContext& ctx, const LevelTriangles& level, const nl_recast_settings& s,
-                         const nl_agent_type& agent) {
+                         const nl_agent_type& agent, const BuildProgress& progress) {
     const int nverts = level.vertex_count();
     const int ntris = level.triangle_count();
     if (ntris == 0) no_walkable_surface(agent, "the level has no triangles");
@@ -128,20 +174,23 @@ SoloMesh build_solo_mesh(HostLogContext& ctx, const LevelTriangles& level, const
     rcCalcBounds(verts, nverts, bmin, bmax);
     const rcConfig cfg = make_config(s, agent, bmin, bmax);
 
-    // Which triangles are flat enough to walk on.
-    std::vector<unsigned char> areas(static_cast<size_t>(ntris), RC_NULL_AREA);
-    rcMarkWalkableTriangles(&ctx, cfg.walkableSlopeAngle, verts, nverts, tris, ntris, areas.data());
-    if (std::none_of(areas.begin(), areas.end(), [](unsigned char a) { return a != RC_NULL_AREA; }))
-        no_walkable_surface(agent, "no triangle of the level is flatter than max slope");
+    progress.report(0.04f, "marking walkable triangles");
+    std::vector<unsigned char> areas = walkable_areas(ctx, level, cfg, agent);
     if (cfg.width < 1 || cfg.height < 1) no_walkable_surface(agent, "the level is narrower than one cell");
 
-    // Voxelise.
+    // Voxelise, in chunks so that the progress moves and a cancel is prompt on a large level.
     HeightfieldPtr solid = require_allocated(rcAllocHeightfield(), "heightfield");
     require_step(rcCreateHeightfield(&ctx, *solid, cfg.width, cfg.height, cfg.bmin, cfg.bmax, cfg.cs, cfg.ch),
                  "rcCreateHeightfield", ctx);
-    require_step(rcRasterizeTriangles(&ctx, verts, nverts, tris, areas.data(), ntris, *solid, cfg.walkableClimb),
-                 "rcRasterizeTriangles", ctx);
+    for (int first = 0; first < ntris; first += kRasterizeChunk) {
+        progress.report(0.05f + 0.45f * float(first) / float(ntris), "rasterising the level");
+        const int count = std::min(kRasterizeChunk, ntris - first);
+        require_step(rcRasterizeTriangles(&ctx, verts, nverts, tris + 3 * size_t(first), areas.data() + first, count,
+                                          *solid, cfg.walkableClimb),
+                     "rcRasterizeTriangles", ctx);
+    }
     std::vector<unsigned char>().swap(areas);
+    progress.report(0.5f, "filtering spans");
 
     // Remove spans no agent could stand on, as configured.
     if (s.filter_low_hanging_obstacles) rcFilterLowHangingWalkableObstacles(&ctx, cfg.walkableClimb, *solid);
@@ -158,12 +207,15 @@ SoloMesh build_solo_mesh(HostLogContext& ctx, const LevelTriangles& level, const
     }
 
     // Compact the walkable spans, keep the agent's radius from walls.
+    progress.report(0.55f, "compacting the heightfield");
     CompactHeightfieldPtr chf = require_allocated(rcAllocCompactHeightfield(), "compact heightfield");
     require_step(rcBuildCompactHeightfield(&ctx, cfg.walkableHeight, cfg.walkableClimb, *solid, *chf),
                  "rcBuildCompactHeightfield", ctx);
     solid.reset();
     if (chf->spanCount == 0) no_walkable_surface(agent, "no walkable span has the agent's headroom");
+    progress.report(0.6f, "eroding by the agent's radius");
     require_step(rcErodeWalkableArea(&ctx, cfg.walkableRadius, *chf), "rcErodeWalkableArea", ctx);
+    progress.report(0.65f, "partitioning into regions");
 
     // Partition into regions.
     switch (s.partition) {
@@ -181,6 +233,7 @@ SoloMesh build_solo_mesh(HostLogContext& ctx, const LevelTriangles& level, const
     }
 
     // Trace and simplify the region outlines.
+    progress.report(0.8f, "tracing contours");
     ContourSetPtr cset = require_allocated(rcAllocContourSet(), "contour set");
     require_step(rcBuildContours(&ctx, *chf, cfg.maxSimplificationError, cfg.maxEdgeLen, *cset), "rcBuildContours",
                  ctx);
@@ -188,12 +241,14 @@ SoloMesh build_solo_mesh(HostLogContext& ctx, const LevelTriangles& level, const
         no_walkable_surface(agent, "every walkable region was eroded by the radius or smaller than region_min_size");
 
     // Convex polygons, and the detail triangles with the surface's real heights.
+    progress.report(0.85f, "building polygons");
     SoloMesh out;
     out.polygons = require_allocated(rcAllocPolyMesh(), "polygon mesh");
     require_step(rcBuildPolyMesh(&ctx, *cset, cfg.maxVertsPerPoly, *out.polygons), "rcBuildPolyMesh", ctx);
     cset.reset();
     if (out.polygons->npolys == 0)
         no_walkable_surface(agent, "Recast made no polygon from the walkable regions' outlines");
+    progress.report(0.9f, "building the detail mesh");
     out.detail = require_allocated(rcAllocPolyMeshDetail(), "detail mesh");
     require_step(rcBuildPolyMeshDetail(&ctx, *out.polygons, *chf, cfg.detailSampleDist, cfg.detailSampleMaxError,
                                        *out.detail),

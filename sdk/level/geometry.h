@@ -21,6 +21,14 @@ struct TriangleMesh {
     std::vector<Triangle> triangles;
 };
 
+// What a navmesh builder builds on: the triangles, and each one's area, or kObstacleArea for a
+// triangle that blocks and is never walked on.
+constexpr uint8_t kObstacleArea = 255;
+struct BuildTriangles {
+    TriangleMesh mesh;
+    std::vector<uint8_t> areas;
+};
+
 // Vertex `index` of a packed x y z float array (Embree's vertex buffers).
 inline Vec3 vertex_at(const float* xyz, size_t index) {
     return Vec3(xyz[3 * index], xyz[3 * index + 1], xyz[3 * index + 2]);

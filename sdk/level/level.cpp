@@ -96,17 +96,25 @@ void check_placement(const Aabb& world_bounds) {
 
 }  // namespace
 
-Handle Level::add_mesh(const TriangleMesh& input, const Transform& transform, uint32_t flags, uint64_t user_data) {
+Handle Level::add_mesh(const TriangleMesh& input, const Transform& transform, uint32_t flags, uint64_t user_data,
+                       uint32_t area) {
     if (flags & ~kMeshKnownFlags)
         fail_field(ErrorCode::InvalidArgument, "flags has unknown bits 0x", std::hex, flags & ~kMeshKnownFlags);
+    if ((flags & kMeshObstacle) && (flags & kMeshNotInNavMesh))
+        fail_field(ErrorCode::InvalidArgument,
+                   "flags has both NL_MESH_OBSTACLE and NL_MESH_NOT_IN_NAVMESH: an obstacle is part of navmesh builds");
+    if (area > kMaxMeshArea) fail_field(ErrorCode::InvalidArgument, "area is ", area, " (at most ", kMaxMeshArea, ")");
     ValidatedTriangles valid = validate_mesh(input);
 
     Mesh mesh;
     mesh.object.vertices = input.vertices;
     mesh.object.triangles = std::move(valid.kept);
+    if (flags & kMeshClockwise)
+        for (Triangle& t : mesh.object.triangles) std::swap(t[1], t[2]);
     mesh.input_index = std::move(valid.input_index);
     mesh.degenerate_count = valid.degenerate_count;
     mesh.flags = flags;
+    mesh.area = static_cast<uint8_t>(area);
     mesh.user_data = user_data;
     mesh.transform = transform;
     mesh.object_bounds = bounds_of(mesh.object, Transform::Identity());
@@ -256,6 +264,7 @@ MeshInfo Level::info(Handle h) const {
     out.triangle_count = static_cast<uint32_t>(mesh->object.triangles.size());
     out.degenerate_triangle_count = mesh->degenerate_count;
     out.flags = mesh->flags;
+    out.area = mesh->area;
     out.transform = mesh->transform;
     out.bounds = mesh->world_bounds;
     out.user_data = mesh->user_data;
@@ -287,11 +296,25 @@ std::vector<Handle> Level::meshes() const {
 
 namespace {
 
+// A mirroring transform (negative determinant) would turn every triangle over in world space; its
+// corners are taken the other way round so each keeps the front it has in its own space, as engines
+// keep a mirrored object's front faces.
 void append_in_world(const TriangleMesh& object, const Transform& transform, TriangleMesh& out) {
     const auto base = static_cast<uint32_t>(out.vertices.size());
+    const bool mirrored = transform.linear().determinant() < 0.0f;
     for (const Vec3& v : object.vertices) out.vertices.push_back(transform * v);
-    for (const Triangle& t : object.triangles) out.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
+    for (const Triangle& t : object.triangles) {
+        if (mirrored) out.triangles.push_back({t[0] + base, t[2] + base, t[1] + base});
+        else out.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
+    }
 }
+
+void append_for_build(const TriangleMesh& object, const Transform& transform, uint8_t area, BuildTriangles& out) {
+    append_in_world(object, transform, out.mesh);
+    out.areas.resize(out.mesh.triangles.size(), area);
+}
+
+uint8_t build_area(uint32_t flags, uint8_t area) { return (flags & kMeshObstacle) ? kObstacleArea : area; }
 
 }  // namespace
 
@@ -302,19 +325,23 @@ TriangleMesh Level::world_triangles() const {
     return out;
 }
 
-TriangleMesh Level::triangles_to_build(Handle surface) const {
+BuildTriangles Level::triangles_to_build(Handle surface) const {
     const auto lock = lock_shared();
-    TriangleMesh out;
+    BuildTriangles out;
     if (surface != Handle{}) {
         const Mesh* m = meshes_.find(surface);
         if (!m) fail_stale("mesh", surface);
         if (!(m->flags & kMeshMovable))
             fail(ErrorCode::InvalidArgument, "the surface mesh is not movable (NL_MESH_MOVABLE): a static mesh's floor is "
                                              "part of the level's navmesh");
-        return m->object;
+        if (m->flags & kMeshNotInNavMesh)
+            fail(ErrorCode::InvalidArgument, "the surface mesh is left out of navmesh builds (NL_MESH_NOT_IN_NAVMESH)");
+        append_for_build(m->object, Transform::Identity(), build_area(m->flags, m->area), out);
+        return out;
     }
     meshes_.for_each([&](Handle, const Mesh& m) {
-        if (!(m.flags & kMeshMovable)) append_in_world(m.object, m.transform, out);
+        if (!(m.flags & (kMeshMovable | kMeshNotInNavMesh)))
+            append_for_build(m.object, m.transform, build_area(m.flags, m.area), out);
     });
     return out;
 }

@@ -26,14 +26,26 @@ namespace nl {
 
 enum MeshFlags : uint32_t {
     kMeshMovable = 1u << 0,
-    kMeshKnownFlags = kMeshMovable,
+    // Front faces wound clockwise seen from their front (Godot's convention): the triangles are
+    // turned over when the mesh is added, so every stored triangle is counter-clockwise.
+    kMeshClockwise = 1u << 1,
+    // In navmesh builds only as something that blocks: never walked on, whatever its slope.
+    kMeshObstacle = 1u << 2,
+    // Left out of navmesh builds; rays and link checks still meet it.
+    kMeshNotInNavMesh = 1u << 3,
+    kMeshKnownFlags = kMeshMovable | kMeshClockwise | kMeshObstacle | kMeshNotInNavMesh,
 };
+
+// The area a navmesh builder gives a mesh's walkable triangles: 0..kMaxMeshArea (kObstacleArea
+// marks an obstacle's triangles in a builder's input).
+constexpr uint32_t kMaxMeshArea = kObstacleArea - 1u;
 
 struct MeshInfo {
     uint32_t vertex_count = 0;
     uint32_t triangle_count = 0;
     uint32_t degenerate_triangle_count = 0;
     uint32_t flags = 0;
+    uint8_t area = 0;
     Transform transform = Transform::Identity();
     Aabb bounds;
     uint64_t user_data = 0;
@@ -110,7 +122,10 @@ public:
 
     // Edits: each validates first and changes nothing when it throws (a bad field is named as
     // validate_mesh names it).
-    Handle add_mesh(const TriangleMesh& mesh, const Transform& transform, uint32_t flags, uint64_t user_data);
+    // kMeshClockwise turns the triangles over; `area` (at most kMaxMeshArea) is what navmesh builds
+    // give its walkable triangles.
+    Handle add_mesh(const TriangleMesh& mesh, const Transform& transform, uint32_t flags, uint64_t user_data,
+                    uint32_t area = 0);
     void remove_mesh(Handle mesh);
     void set_transform(Handle mesh, const Transform& transform);
 
@@ -122,11 +137,12 @@ public:
 
     // World-space triangles of every mesh under its current transform (for reference checks).
     TriangleMesh world_triangles() const;
-    // What a navmesh builder builds on: with a null `surface`, every static mesh in world space (a
-    // movable mesh is left out: a navmesh over it would stay behind when it moves); else the movable
-    // mesh `surface` alone, in its own space. Throws InvalidHandle, or InvalidArgument for a surface
-    // that is not movable.
-    TriangleMesh triangles_to_build(Handle surface) const;
+    // What a navmesh builder builds on: with a null `surface`, every static mesh in world space but
+    // those left out of navmesh builds (a movable mesh is left out too: a navmesh over it would stay
+    // behind when it moves); else the movable mesh `surface` alone, in its own space. Each triangle
+    // carries its mesh's area, or kObstacleArea for an obstacle's. Throws InvalidHandle, or
+    // InvalidArgument for a surface that is not movable or is left out of navmesh builds.
+    BuildTriangles triangles_to_build(Handle surface) const;
     // For each hit, the corners of its triangle (RayHit::mesh, RayHit::primitive) if it is a static
     // mesh's, in world space, exactly as Embree tests them; nothing for a miss, a movable mesh (Embree
     // tests those in their own space) or a mesh removed since the hit. Parallel over the batch.
@@ -160,6 +176,7 @@ private:
         std::vector<uint32_t> input_index;  // kept triangle -> input triangle; empty = identity
         uint32_t degenerate_count = 0;
         uint32_t flags = 0;
+        uint8_t area = 0;
         uint64_t user_data = 0;
         Transform transform = Transform::Identity();
         Eigen::Matrix3f normal_to_world = Eigen::Matrix3f::Identity();  // movable meshes only

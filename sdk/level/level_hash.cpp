@@ -4,7 +4,8 @@
 
 namespace nl {
 
-uint64_t level_hash(const TriangleMesh& mesh) {
+uint64_t level_hash(const BuildTriangles& level) {
+    const TriangleMesh& mesh = level.mesh;
     uint64_t h = 14695981039346656037ull;
     auto mix = [&h](uint32_t word) {
         for (int i = 0; i < 4; ++i) {
@@ -12,14 +13,16 @@ uint64_t level_hash(const TriangleMesh& mesh) {
             h *= 1099511628211ull;
         }
     };
-    for (const Triangle& t : mesh.triangles)
-        for (uint32_t corner : t)
+    for (size_t i = 0; i < mesh.triangles.size(); ++i) {
+        for (uint32_t corner : mesh.triangles[i])
             for (int axis = 0; axis < 3; ++axis) {
                 uint32_t bits;
                 const float v = mesh.vertices[corner][axis];
                 std::memcpy(&bits, &v, 4);
                 mix(bits);
             }
+        if (level.areas[i] != 0) mix(level.areas[i]);
+    }
     return h == 0 ? 1 : h;
 }
 

@@ -9,8 +9,10 @@
 namespace nl {
 
 // 64-bit FNV-1a over the triangles' corners (their coordinates' bits, corner by corner, triangle by
-// triangle): the same triangles in the same order give the same hash, however their vertices are
-// shared. Never 0 (0 means "not built from the level").
-uint64_t level_hash(const TriangleMesh& mesh);
+// triangle), each followed by its area when that is not 0 (an obstacle's is kObstacleArea): the same
+// triangles in the same order with the same areas give the same hash, however their vertices are
+// shared, and a level of area-0 triangles hashes as its corners alone. Never 0 (0 means "not built
+// from the level").
+uint64_t level_hash(const BuildTriangles& level);
 
 }  // namespace nl

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <memory>
 #include <cstddef>
+#include <functional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -29,6 +30,9 @@ struct NavMeshBuildRequest {
     // with a length is the builder's to refuse).
     const char* settings_json = nullptr;
     size_t settings_json_length = 0;
+    // Told of the build's progress (fraction 0..1, never going back; the stage's name); false
+    // cancels the build. Empty: nobody asks.
+    std::function<bool(float fraction, const char* stage)> progress;
 };
 
 // What a builder hands back.

@@ -1,5 +1,7 @@
 #include "world/world.h"
 
+#include <algorithm>
+#include <cmath>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -118,7 +120,30 @@ Handle World::build_navmesh(const NavMeshBuildRequest& request) {
         std::lock_guard lock(surface_moves_);
         surface_placement(request.surface);
     }
-    BuiltNavMesh built = builder->build(*this, request);
+    // The caller sees progress within 0..1 and never going back, whatever the builder reports, and a
+    // stop is remembered: a builder that goes on after it still adds nothing.
+    bool cancelled = false;
+    float reached = 0.0f;
+    NavMeshBuildRequest forwarded = request;
+    forwarded.progress = [&](float fraction, const char* stage) {
+        if (cancelled) return false;
+        if (std::isfinite(fraction)) reached = std::clamp(fraction, reached, 1.0f);
+        cancelled = request.progress && !request.progress(reached, stage ? stage : "building");
+        return !cancelled;
+    };
+    auto fail_if_cancelled = [&] {
+        if (cancelled) fail(ErrorCode::Cancelled, "the navmesh build was cancelled by its progress callback");
+    };
+    forwarded.progress(0.0f, "starting");
+    fail_if_cancelled();
+    BuiltNavMesh built;
+    try {
+        built = builder->build(*this, forwarded);
+    } catch (const Error&) {
+        fail_if_cancelled();  // a builder stopped by the callback may say so in its own words
+        throw;
+    }
+    fail_if_cancelled();
     if (!built.navmesh) fail(ErrorCode::Internal, "builder '", request.builder, "' succeeded without handing over a navmesh");
     MadeFor made_for;
     made_for.builder = request.builder;
@@ -130,6 +155,8 @@ Handle World::build_navmesh(const NavMeshBuildRequest& request) {
     std::shared_ptr<const NavMesh> navmesh = std::move(built.navmesh);
     log_repairs(*navmesh);
     made_for.level_hash = level_hash(level_->triangles_to_build(request.surface));
+    forwarded.progress(1.0f, "adding the navmesh");
+    fail_if_cancelled();
     return add_on_surface(std::move(navmesh), request.surface, std::move(made_for));
 }
 

@@ -1377,10 +1377,30 @@ static nl_status mesh_add_call(nl_world* world, const void* def, void* out) {
 /* What nl_mesh_add and the two OBJ loads share: the def function's cases, the flags, the transform. */
 static void mesh_def_cases(const def_function* f, const nl_mesh_def* valid) {
     def_function_cases(f, valid, sizeof *valid);
-    CASE(f->function, "def->flags unknown (0x2)") {
+    CASE(f->function, "def->flags unknown (0x10)") {
         nl_mesh_def def = *valid;
-        def.flags = 0x2u;
+        def.flags = 0x10u;
         def_refuses(&def, NL_STATUS_INVALID_ARGUMENT, "flags");
+    }
+    CASE(f->function, "def->flags NL_MESH_OBSTACLE | NL_MESH_NOT_IN_NAVMESH (contradictory)") {
+        nl_mesh_def def = *valid;
+        def.flags = NL_MESH_OBSTACLE | NL_MESH_NOT_IN_NAVMESH;
+        def_refuses(&def, NL_STATUS_INVALID_ARGUMENT, "NL_MESH_NOT_IN_NAVMESH");
+    }
+    CASE(f->function, "def->area huge (NL_MESH_MAX_AREA + 1)") {
+        nl_mesh_def def = *valid;
+        def.area = NL_MESH_MAX_AREA + 1u;
+        def_refuses(&def, NL_STATUS_INVALID_ARGUMENT, "area");
+    }
+    CASE(f->function, "def->area huge (UINT32_MAX)") {
+        nl_mesh_def def = *valid;
+        def.area = UINT32_MAX;
+        def_refuses(&def, NL_STATUS_INVALID_ARGUMENT, "area");
+    }
+    CASE(f->function, "def->reserved not 0") {
+        nl_mesh_def def = *valid;
+        def.reserved = 1u;
+        def_refuses(&def, NL_STATUS_INVALID_ARGUMENT, "reserved");
     }
     CASE(f->function, "def->transform NULL (allowed: identity)") { def_accepts(valid); }
     bad_def_transforms(f->function, "", valid, def_refuses);
@@ -2159,8 +2179,13 @@ static const def_case k_build_defs[] = {
     {"def->settings_json inf (1e400)", INVALID, "cell_size", {JSON("{\"cell_size\": 1e400}")}},
     {"def->settings_json -inf (-1e400)", INVALID, "edge_max_error", {JSON("{\"edge_max_error\": -1e400}")}},
     {"def->settings_json NaN (not JSON)", NL_STATUS_PARSE_ERROR, "settings_json", {JSON("{\"cell_size\": NaN}")}},
+    {"def->progress NULL (allowed)", ALLOWED, NULL, {SET_PTR(nl_navmesh_build_def, progress, NULL)}},
 };
 #undef JSON
+
+static int32_t cancel_at_once(void* user, float fraction, const char* stage);
+static int32_t note_user(void* user, float fraction, const char* stage);
+static void* g_user_seen;
 
 static const def_case k_recast_settings[] = {
     {"settings->vertices_per_polygon 0", INVALID, "vertices_per_polygon", {SET_U32(nl_recast_settings, vertices_per_polygon, 0u)}},
@@ -2190,6 +2215,23 @@ static void group_navmesh_build(void) {
         nl_navmesh_build_def small = valid; /* the 4 m lift, eroded by a 0.6 m body, is below Recast's smallest region */
         small.agent.radius = 0.2f;
         surface_cases(&k_build, &valid, &small, sizeof valid, offsetof(nl_navmesh_build_def, surface));
+    }
+    CASE("nl_navmesh_build", "def->progress cancels (returns 0 at once: CANCELLED, nothing added)") {
+        nl_navmesh_build_def def = valid;
+        int calls = 0;
+        def.progress = cancel_at_once;
+        def.progress_user = &calls;
+        def_refuses(&def, NL_STATUS_CANCELLED, "cancelled");
+        EXPECT(calls == 1, "the progress callback was called %d times, expected once (it cancelled)", calls);
+    }
+    CASE("nl_navmesh_build", "def->progress_user NULL (allowed: passed back as it is)") {
+        nl_navmesh_build_def def = valid;
+        int calls = 0;
+        g_user_seen = &calls;
+        def.progress = note_user;
+        def.progress_user = NULL;
+        def_accepts(&def);
+        EXPECT(g_user_seen == NULL, "the progress callback received user %p, not NULL", g_user_seen);
     }
     def_sizes("nl_navmesh_build", "settings", &recast, sizeof recast, build_with_recast_refuses, build_with_recast_accepts);
     def_cases("nl_navmesh_build", &recast, sizeof recast, k_recast_settings, sizeof k_recast_settings / sizeof *k_recast_settings,
@@ -2477,7 +2519,6 @@ static int32_t cancel_at_once(void* user, float fraction, const char* stage) {
     return 0;
 }
 
-static void* g_user_seen;
 static int32_t note_user(void* user, float fraction, const char* stage) {
     (void)fraction;
     (void)stage;

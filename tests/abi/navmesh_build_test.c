@@ -254,4 +254,193 @@ static void recast(void) {
     nl_world_destroy(world);
 }
 
-ABI_SECTION(navmesh_build, ABI_CASE(defaults), ABI_CASE(recast));
+/* ---------------------------------------------------------------------------------------------
+ * What a build takes from the level: winding, mesh roles, areas; and its progress
+ * ------------------------------------------------------------------------------------------- */
+
+/* Registers a horizontal quad x in [x0, x1], z in [z0, z1] at height y, its front up (counter-
+   clockwise seen from above) or, with `front_down`, wound the other way. */
+static nl_mesh_id add_quad(nl_world* world, float x0, float z0, float x1, float z1, float y, int front_down,
+                           uint32_t flags, uint32_t area, const float* transform) {
+    const float v[12] = {x0, y, z0, x0, y, z1, x1, y, z1, x1, y, z0};
+    static const uint32_t up[6] = {0, 1, 2, 0, 2, 3}, down[6] = {0, 2, 1, 0, 3, 2};
+    nl_mesh_def def = nl_default_mesh_def();
+    nl_mesh_id id = {0u, 0u};
+    def.vertices = v;
+    def.vertex_count = 4;
+    def.indices = front_down ? down : up;
+    def.triangle_count = 2;
+    def.flags = flags;
+    def.area = area;
+    def.transform = transform;
+    CHECK_OK(nl_mesh_add(world, &def, &id));
+    return id;
+}
+
+/* A closed crate: x and z in [x0, x0 + side], y in [0, height], every face out. */
+static nl_mesh_id add_crate(nl_world* world, float x0, float z0, float side, float height, uint32_t flags) {
+    const float x1 = x0 + side, z1 = z0 + side;
+    const float v[24] = {x0, 0, z0, x1, 0, z0, x1, 0, z1, x0, 0, z1, x0, height, z0, x1, height, z0, x1, height, z1, x0, height, z1};
+    static const uint32_t t[36] = {4, 7, 6, 4, 6, 5, /* top, up */ 0, 1, 2, 0, 2, 3, /* bottom, down */
+                                   0, 4, 5, 0, 5, 1, 1, 5, 6, 1, 6, 2, 2, 6, 7, 2, 7, 3, 3, 7, 4, 3, 4, 0};
+    nl_mesh_def def = nl_default_mesh_def();
+    nl_mesh_id id = {0u, 0u};
+    def.vertices = v;
+    def.vertex_count = 8;
+    def.indices = t;
+    def.triangle_count = 12;
+    def.flags = flags;
+    CHECK_OK(nl_mesh_add(world, &def, &id));
+    return id;
+}
+
+/* The navmesh polygon within (0.4, 0.3, 0.4) of (x, y, z), or -1; its area into *area. */
+static int polygon_at(const nl_world* world, nl_navmesh_id navmesh, float x, float y, float z, uint32_t* area) {
+    const float p[3] = {x, y, z}, half[3] = {0.4f, 0.3f, 0.4f};
+    nl_nav_point hit;
+    nl_nav_polygon polygon = nl_nav_polygon_init();
+    if (NL_FAILED(nl_navmesh_find_nearest(world, navmesh, p, 1, half, &hit)) || !hit.found) return -1;
+    if (area && NL_SUCCEEDED(nl_navmesh_get_polygon(world, navmesh, hit.polygon, &polygon))) *area = polygon.area;
+    return (int)hit.polygon;
+}
+
+static nl_navmesh_id build(nl_world* world) {
+    nl_navmesh_build_def def = nl_default_navmesh_build_def();
+    nl_navmesh_id id = {0u, 0u};
+    CHECK_OK(nl_navmesh_build(world, &def, &id));
+    return id;
+}
+
+static void winding(void) {
+    static const float mirror_x[16] = {-1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+    nl_navmesh_build_def def = nl_default_navmesh_build_def();
+    nl_mesh_info info = nl_mesh_info_init();
+    nl_world* world = make_world(2);
+    /* Wound clockwise (fronts down): nothing to walk on, and the message says why and what to set. */
+    nl_mesh_id floor = add_quad(world, -10, -10, 10, 10, 0, 1, 0, 0, NULL);
+    CHECK_BUILD_FAILS(world, &def, NL_STATUS_NOT_FOUND, "2 of the level's 2 triangles would be flat enough turned over");
+    CHECK_BUILD_FAILS(world, &def, NL_STATUS_NOT_FOUND, "NL_MESH_CLOCKWISE");
+    CHECK_OK(nl_mesh_remove(world, floor));
+    /* The same triangles flagged clockwise are turned over and walked on; the flag is kept. */
+    floor = add_quad(world, -10, -10, 10, 10, 0, 1, NL_MESH_CLOCKWISE, 0, NULL);
+    CHECK_OK(nl_mesh_get_info(world, floor, &info));
+    CHECK(info.flags == NL_MESH_CLOCKWISE);
+    CHECK(polygon_at(world, build(world), 0, 0, 0, NULL) >= 0);
+    CHECK_OK(nl_mesh_remove(world, floor));
+    /* A mirroring transform keeps the mesh's front up: a counter-clockwise floor mirrored in x stays walkable. */
+    nl_world_destroy(world);
+    world = make_world(2);
+    add_quad(world, 0, -10, 20, 10, 0, 0, 0, 0, mirror_x);
+    CHECK(polygon_at(world, build(world), -10, 0, 0, NULL) >= 0);
+    nl_world_destroy(world);
+}
+
+static void mesh_roles(void) {
+    static const float down[3] = {0, -1, 0};
+    nl_world* world = make_world(2);
+    nl_mesh_id crate, ceiling;
+    nl_navmesh_id navmesh;
+    nl_ray ray;
+    nl_ray_hit hit = nl_ray_hit_init();
+    nl_mesh_info info = nl_mesh_info_init();
+    add_quad(world, -10, -10, 10, 10, 0, 0, 0, 0, NULL);
+
+    /* A crate's top is walkable as any floor; flagged NL_MESH_OBSTACLE it only blocks. */
+    crate = add_crate(world, 3, 3, 4, 1, 0);
+    navmesh = build(world);
+    CHECK_THAT(polygon_at(world, navmesh, 5, 1, 5, NULL) >= 0, "an ordinary crate's top is walkable");
+    CHECK_OK(nl_mesh_remove(world, crate));
+    crate = add_crate(world, 3, 3, 4, 1, NL_MESH_OBSTACLE);
+    CHECK_OK(nl_mesh_get_info(world, crate, &info));
+    CHECK(info.flags == NL_MESH_OBSTACLE);
+    navmesh = build(world);
+    CHECK_THAT(polygon_at(world, navmesh, 5, 1, 5, NULL) < 0, "an obstacle's top is not walked on");
+    CHECK_THAT(polygon_at(world, navmesh, 5, 0, 5, NULL) < 0, "the floor under an obstacle is blocked");
+    CHECK_THAT(polygon_at(world, navmesh, -5, 0, 5, NULL) >= 0, "the floor beside it is walkable");
+
+    /* A slab 1 m over the floor leaves no headroom under it; left out of navmesh builds it leaves
+       the floor walkable, and rays still meet it. */
+    ceiling = add_quad(world, -8, -8, -2, -2, 1.0f, 1, 0, 0, NULL);
+    CHECK_THAT(polygon_at(world, build(world), -5, 0, -5, NULL) < 0, "no headroom under the slab");
+    CHECK_OK(nl_mesh_remove(world, ceiling));
+    ceiling = add_quad(world, -8, -8, -2, -2, 1.0f, 1, NL_MESH_NOT_IN_NAVMESH, 0, NULL);
+    CHECK_THAT(polygon_at(world, build(world), -5, 0, -5, NULL) >= 0, "a slab left out of builds leaves the floor");
+    ray.origin[0] = -5;
+    ray.origin[1] = 5;
+    ray.origin[2] = -5;
+    memcpy(ray.direction, down, sizeof down);
+    ray.max_distance = 10;
+    CHECK_OK(nl_world_cast_rays(world, &ray, 1, &hit));
+    CHECK_MSG(hit.hit == 1 && hit.mesh.index1 == ceiling.index1 && fabsf(hit.point[1] - 1.0f) < 1e-4f,
+              "a ray down onto the left-out slab hits it (hit %d at y %g)", (int)hit.hit, hit.point[1]);
+    nl_world_destroy(world);
+}
+
+static void mesh_areas(void) {
+    nl_navmesh_build_def def = nl_default_navmesh_build_def();
+    nl_mesh_info info = nl_mesh_info_init();
+    nl_world* world = make_world(2);
+    nl_navmesh_id navmesh;
+    nl_mesh_id east;
+    uint32_t area = 99;
+    add_quad(world, -10, -10, 0, 10, 0, 0, 0, 0, NULL);
+    east = add_quad(world, 0, -10, 10, 10, 0, 0, 0, 5, NULL);
+    CHECK_OK(nl_mesh_get_info(world, east, &info));
+    CHECK(info.area == 5u);
+    navmesh = build(world);
+    CHECK(polygon_at(world, navmesh, 5, 0, 0, &area) >= 0 && area == 5u);
+    area = 99;
+    CHECK(polygon_at(world, navmesh, -5, 0, 0, &area) >= 0 && area == 0u);
+    /* Recast keeps 6 bits of area: 62 is the builder's last. */
+    CHECK_OK(nl_mesh_remove(world, east));
+    east = add_quad(world, 0, -10, 10, 10, 0, 0, 0, 62, NULL);
+    CHECK(polygon_at(world, build(world), 5, 0, 0, &area) >= 0 && area == 62u);
+    CHECK_OK(nl_mesh_remove(world, east));
+    add_quad(world, 0, -10, 10, 10, 0, 0, 0, 63, NULL);
+    CHECK_BUILD_FAILS(world, &def, NL_STATUS_INVALID_ARGUMENT, "areas 0..62");
+    nl_world_destroy(world);
+}
+
+typedef struct progress_log {
+    int calls;
+    float fractions[256];
+    int rasterising;       /* calls in the stage "rasterising the level" */
+    const char* cancel_at; /* stop when this stage is reported */
+} progress_log;
+
+static int32_t log_progress(void* user, float fraction, const char* stage) {
+    progress_log* log = (progress_log*)user;
+    if (log->calls < 256) log->fractions[log->calls] = fraction;
+    ++log->calls;
+    if (strcmp(stage, "rasterising the level") == 0) ++log->rasterising;
+    return !(log->cancel_at && strcmp(stage, log->cancel_at) == 0);
+}
+
+static void build_progress(void) {
+    nl_navmesh_build_def def = nl_default_navmesh_build_def();
+    nl_world* world = make_world(2);
+    progress_log log;
+    nl_navmesh_id id = {0u, 0u};
+    int i, ordered = 1;
+    add_floor_box(world);
+    memset(&log, 0, sizeof log);
+    def.progress = log_progress;
+    def.progress_user = &log;
+    CHECK_OK(nl_navmesh_build(world, &def, &id));
+    CHECK_MSG(log.calls >= 10 && log.calls <= 256, "%d progress calls", log.calls);
+    for (i = 1; i < log.calls && i < 256; ++i) ordered = ordered && log.fractions[i] >= log.fractions[i - 1];
+    CHECK_THAT(ordered, "progress never goes back");
+    CHECK(log.fractions[0] == 0.0f && log.fractions[log.calls - 1] == 1.0f);
+    CHECK(log.rasterising >= 1);
+
+    /* Cancelled while rasterising: CANCELLED, nothing added, and the builder stopped there. */
+    memset(&log, 0, sizeof log);
+    log.cancel_at = "rasterising the level";
+    CHECK_BUILD_FAILS(world, &def, NL_STATUS_CANCELLED, "cancelled");
+    CHECK(navmesh_count(world) == 1u);
+    CHECK_MSG(log.rasterising == 1, "the build went on after its cancel: %d rasterising reports", log.rasterising);
+    nl_world_destroy(world);
+}
+
+ABI_SECTION(navmesh_build, ABI_CASE(defaults), ABI_CASE(recast), ABI_CASE(winding), ABI_CASE(mesh_roles),
+            ABI_CASE(mesh_areas), ABI_CASE(build_progress));

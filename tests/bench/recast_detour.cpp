@@ -16,11 +16,13 @@ RecastLevel build_recast_level(const std::string& name, const std::vector<float>
     nl::recast::LevelTriangles triangles;
     triangles.vertices = vertices;
     triangles.indices = indices;
-    const nl_plugin_host no_host{};  // size 0: Recast's log goes nowhere
+    triangles.areas.assign(indices.size() / 3, 0);
+    const nl_plugin_host no_host{};  // size 0: Recast's log goes nowhere, nobody asks for progress
     nl::recast::HostLogContext context(no_host);
     RecastLevel level;
     level.name = name;
-    level.solo = nl::recast::build_solo_mesh(context, triangles, level.settings, level.agent);
+    level.solo = nl::recast::build_solo_mesh(context, triangles, level.settings, level.agent,
+                                             nl::recast::BuildProgress(no_host));
     return level;
 }
 

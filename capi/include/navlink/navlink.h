@@ -263,10 +263,34 @@ typedef struct nl_mesh_id {
     uint32_t generation; /**< Changes each time the slot is reused; never repeats. */
 } nl_mesh_id;
 
-/** Mesh flags. */
+/** Mesh flags.
+ *
+ *  Winding: a triangle's front is the side from which its corners run counter-clockwise (the right-
+ *  hand rule: the front is along (b - a) x (c - a)); navmesh builders walk on fronts that face up
+ *  (the Recast builder: within max_slope of +y). Vertices are read as given (x right-handed with
+ *  y up, or any other frame: the rule is on the numbers). So:
+ *  - OpenGL, glTF, Blender exports, Detour/Recast: counter-clockwise fronts, no flag.
+ *  - Godot: clockwise fronts (ArrayMesh), right-handed y up: set NL_MESH_CLOCKWISE.
+ *  - Unity: clockwise fronts in its left-handed frame. Passed as Unity has them (x, y, z unchanged),
+ *    the numbers already follow the rule: no flag. A host that converts to a right-handed frame by
+ *    negating one axis (z = -z) mirrors the winding too: set NL_MESH_CLOCKWISE, or swap two indices.
+ *  A transform that mirrors (negative determinant) keeps each triangle's front as it is in the mesh's
+ *  own space, as engines draw mirrored objects. When a navmesh build finds no walkable triangle but
+ *  would find some with the triangles turned over, its message says so and names this flag. */
 #define NL_MESH_MOVABLE 0x00000001u /**< The mesh will move: it is held as an Embree instance, so
                                          nl_mesh_set_transform costs a refit of the top level only.
                                          Without it a transform change re-uploads the vertices. */
+#define NL_MESH_CLOCKWISE 0x00000002u      /**< Its fronts are wound clockwise: the triangles are turned
+                                                over when registered (nl_mesh_info.flags keeps the flag). */
+#define NL_MESH_OBSTACLE 0x00000004u       /**< In navmesh builds it only blocks: none of its triangles
+                                                is walked on, whatever its slope (crates, props, walls
+                                                the host does not want agents on top of). */
+#define NL_MESH_NOT_IN_NAVMESH 0x00000008u /**< Left out of navmesh builds (triggers, foliage, debris):
+                                                rays, link checks and agents' bodies still meet it.
+                                                Not together with NL_MESH_OBSTACLE. */
+
+/** The highest nl_mesh_def.area. The Recast builder carries areas 0..62 (Recast keeps 6 bits). */
+#define NL_MESH_MAX_AREA 254u
 
 /** Describes a triangle mesh to register. Get one from nl_default_mesh_def(). */
 typedef struct nl_mesh_def {
@@ -280,6 +304,12 @@ typedef struct nl_mesh_def {
     const float* transform;        /**< Optional 4x4 affine matrix, 16 floats, column-major
                                         (translation in elements 12, 13, 14); NULL = identity. Borrowed. */
     uint64_t user_data;            /**< Returned by nl_mesh_get_info; never interpreted. */
+    uint32_t area;                 /**< The area navmesh builds give the polygons over this mesh's
+                                        walkable triangles (default 0), at most NL_MESH_MAX_AREA:
+                                        what nl_path_request_def.area_costs prices. Where two
+                                        meshes' floors meet within a cell, the higher area wins
+                                        (Recast's rule). Added in 0.3. */
+    uint32_t reserved;             /**< Must be 0. */
 } nl_mesh_def;
 
 /** A def with no geometry, identity transform and no flags. Thread-safe; never fails. */
@@ -291,7 +321,8 @@ NL_API nl_mesh_def nl_default_mesh_def(void);
  *  nothing is registered. `*out_id` receives the id.
  *  Returns SUCCESS, or a failure with INVALID_ARGUMENT (null pointer, zero counts, a stride below 12,
  *  a coordinate not finite or beyond NL_COORDINATE_LIMIT before or after the transform, an index out
- *  of range, a non-affine or singular transform, unknown flags, every triangle degenerate),
+ *  of range, a non-affine or singular transform, unknown flags, NL_MESH_OBSTACLE with
+ *  NL_MESH_NOT_IN_NAVMESH, an area above NL_MESH_MAX_AREA, reserved not 0, every triangle degenerate),
  *  OUT_OF_MEMORY or INTERNAL_ERROR.
  *  Thread-safe; waits for ray queries in flight on this world to finish. */
 NL_API nl_status nl_mesh_add(nl_world* world, const nl_mesh_def* def, nl_mesh_id* out_id);
@@ -346,6 +377,8 @@ typedef struct nl_mesh_info {
     float bounds_min[3];                /**< World-space bounds under the current transform. */
     float bounds_max[3];
     uint64_t user_data;
+    uint32_t area;                      /**< As given in nl_mesh_def (0.3). */
+    uint32_t reserved;
 } nl_mesh_info;
 
 NL_DEFINE_OUTPUT_INIT(nl_mesh_info, nl_mesh_info_init)
@@ -611,6 +644,11 @@ NL_API nl_status nl_world_get_navmeshes(const nl_world* world, nl_navmesh_id* ou
  * Building navmeshes from the level with a navmesh-builder plugin (the Recast builder is built in).
  * ------------------------------------------------------------------------------------------- */
 
+/** Progress of a long call (a navmesh build, a link generation): `fraction` done (0..1, never going
+ *  back) and the stage's name (borrowed for the call). Return 0 to cancel the call; it then fails
+ *  with CANCELLED and changes nothing. Called on the thread that made the call. */
+typedef int32_t nl_progress_fn(void* user, float fraction, const char* stage);
+
 /** How to build a navmesh. Get one from nl_default_navmesh_build_def(). */
 typedef struct nl_navmesh_build_def {
     uint32_t size;              /**< sizeof(nl_navmesh_build_def). */
@@ -628,15 +666,22 @@ typedef struct nl_navmesh_build_def {
                                      (as nl_navmesh_def.surface). Without one, it sees every static
                                      mesh (movable meshes are left out: a navmesh over one would stay
                                      behind when it moves). Added in 0.3. */
+    nl_progress_fn* progress;   /**< Optional: told of the build's progress from its start (the
+                                     builder reports its stages; Recast's rasterisation in steps),
+                                     and can cancel it. Added in 0.3. */
+    void* progress_user;        /**< Passed back to `progress`; not dereferenced. */
 } nl_navmesh_build_def;
 
 /** Builder "recast", default agent type, default settings. Thread-safe; never fails. */
 NL_API nl_navmesh_build_def nl_default_navmesh_build_def(void);
 
 /** Builds a navmesh from every static mesh registered in the world (under their current transforms;
- *  or, with def->surface, from that movable mesh in its own space) and adds
- *  it as nl_navmesh_add would. Returns SUCCESS, or a failure with NOT_FOUND (no builder of that name,
- *  or no walkable surface in the level), INVALID_ARGUMENT (bad agent or settings, the field named;
+ *  or, with def->surface, from that movable mesh in its own space) but those flagged
+ *  NL_MESH_NOT_IN_NAVMESH, walking on none of an NL_MESH_OBSTACLE mesh's triangles and giving each
+ *  mesh's polygons its area, and adds it as nl_navmesh_add would. Returns SUCCESS, or a failure with
+ *  NOT_FOUND (no builder of that name,
+ *  or no walkable surface in the level), CANCELLED (def->progress returned 0: nothing is added),
+ *  INVALID_ARGUMENT (bad agent or settings, the field named;
  *  settings JSON nested deeper than 64 levels; for "recast", a level with more walkable cells than
  *  Recast indexes at that cell_size, which is named), PARSE_ERROR (malformed settings JSON),
  *  OUT_OF_MEMORY, INTERNAL_ERROR (the builder failed).
@@ -874,10 +919,6 @@ typedef struct nl_link_generation_report {
 } nl_link_generation_report;
 
 NL_DEFINE_OUTPUT_INIT(nl_link_generation_report, nl_link_generation_report_init)
-
-/** Link generation progress: `fraction` done (0..1) and the stage's name (borrowed for the call). Return 0 to
- *  cancel the generation. Called on the thread that called nl_navmesh_generate_links. */
-typedef int32_t nl_progress_fn(void* user, float fraction, const char* stage);
 
 /** Generates the navmesh's jump and drop links against the level geometry, and the links of every
  *  loaded link-kind plugin, and replaces its generated links with them; manual links are untouched.

@@ -75,7 +75,31 @@ typedef struct nl_plugin_host {
      *  Returns SUCCESS, or a failure with INVALID_ARGUMENT (settings_json NULL; called outside a
      *  build of this plugin on this thread). Present when `size` covers it (added in 0.3). */
     nl_status (*record_build_settings)(void* context, const char* settings_json, size_t length);
+
+    /** For a navmesh builder: what the build is for, as get_level_triangles, with each triangle's
+     *  area in `areas` (room for `triangle_capacity`; the mesh's nl_mesh_def.area, or
+     *  NL_BUILD_AREA_OBSTACLE for a triangle of an NL_MESH_OBSTACLE mesh, which blocks and is never
+     *  walked on). Meshes flagged NL_MESH_NOT_IN_NAVMESH are left out (get_level_triangles leaves
+     *  them out too, and shows obstacles as any triangle). The counts are always written;
+     *  BUFFER_TOO_SMALL (nothing copied) when a buffer is short; the count-only call (capacities 0)
+     *  succeeds. Outside a build, every mesh of the world with area 0. Present when `size` covers
+     *  it (added in 0.3). */
+    nl_status (*get_build_triangles)(void* context, float* vertices, uint32_t vertex_capacity,
+                                     uint32_t* out_vertex_count, uint32_t* indices, uint8_t* areas,
+                                     uint32_t triangle_capacity, uint32_t* out_triangle_count);
+
+    /** For a navmesh builder: reports the build's progress, `fraction` of it done (0..1; the host
+     *  keeps what the caller sees from going back) in the stage `stage` (NUL-terminated, borrowed
+     *  for the call; NULL: "building"). Returns SUCCESS, or a failure with CANCELLED when the
+     *  host's caller asked to stop: the builder then returns that status at once (the host adds
+     *  nothing whatever it returns), or INVALID_ARGUMENT outside a build of this plugin on this
+     *  thread. Call it often enough that a cancel is prompt (the Recast builder: between Recast's
+     *  steps and every 64k triangles rasterised). Present when `size` covers it (added in 0.3). */
+    nl_status (*report_build_progress)(void* context, float fraction, const char* stage);
 } nl_plugin_host;
+
+/** The area get_build_triangles gives an obstacle's triangles. */
+#define NL_BUILD_AREA_OBSTACLE 255u
 
 /** Receives a built navmesh; the host copies it before returning. */
 typedef nl_status nl_navmesh_sink_fn(void* sink_context, const nl_navmesh_def* navmesh);
