@@ -1,6 +1,5 @@
 #include "plugin_adapter.h"
 
-#include <dlfcn.h>
 
 #include <cstring>
 #include <exception>
@@ -17,13 +16,13 @@ namespace {
 // One C plugin as the core's interfaces.
 class CPlugin final : public Plugin, public NavMeshBuilder, public LinkKindProvider {
 public:
-    CPlugin(World& world, void* library, bool builtin) : world_(world), library_(library), host_(make_plugin_host(this)) {
+    CPlugin(World& world, std::unique_ptr<platform::DynamicLibrary> library, bool builtin)
+        : world_(world), library_(std::move(library)), host_(make_plugin_host(this)) {
         info_.size = sizeof(nl_plugin_info);
         description_.builtin = builtin;
     }
     ~CPlugin() override {
         if (started_ && info_.destroy) info_.destroy(info_.state);
-        if (library_) dlclose(library_);
     }
     CPlugin(const CPlugin&) = delete;
     CPlugin& operator=(const CPlugin&) = delete;
@@ -45,7 +44,7 @@ private:
     void check_description(const std::string& origin) const;
 
     World& world_;
-    void* library_;
+    std::unique_ptr<platform::DynamicLibrary> library_;  // unloaded after the plugin's destroy
     nl_plugin_host host_;
     nl_plugin_info info_{};
     bool started_ = false;
@@ -229,14 +228,9 @@ void record_build_settings(void* context, std::string_view settings_json) {
 World& world_of_plugin(void* context) { return static_cast<CPlugin*>(context)->world(); }
 const std::string& name_of_plugin(void* context) { return static_cast<CPlugin*>(context)->description().name; }
 
-Handle add_c_plugin(World& world, nl_plugin_entry_fn* entry, void* library, bool builtin, const std::string& origin) {
-    std::unique_ptr<CPlugin> plugin;
-    try {
-        plugin = std::make_unique<CPlugin>(world, library, builtin);
-    } catch (...) {
-        if (library) dlclose(library);
-        throw;
-    }
+Handle add_c_plugin(World& world, nl_plugin_entry_fn* entry, std::unique_ptr<platform::DynamicLibrary> library,
+                    bool builtin, const std::string& origin) {
+    auto plugin = std::make_unique<CPlugin>(world, std::move(library), builtin);
     plugin->start(entry, origin);
     return world.plugins().add(std::move(plugin));
 }
@@ -244,20 +238,13 @@ Handle add_c_plugin(World& world, nl_plugin_entry_fn* entry, void* library, bool
 Handle load_c_plugin(World& world, const std::string& path) {
     std::error_code ec;
     if (!std::filesystem::exists(path, ec)) fail(ErrorCode::NotFound, "no plugin library at '", path, "'");
-    void* library = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
-    if (!library) {
-        const char* why = dlerror();
-        fail(ErrorCode::Io, "cannot load '", path, "': ", why ? why : "unknown loader error");
-    }
-    void* symbol = dlsym(library, NL_PLUGIN_ENTRY_SYMBOL);
-    if (!symbol) {
-        dlclose(library);
-        fail(ErrorCode::NotFound, "'", path, "' exports no ", NL_PLUGIN_ENTRY_SYMBOL, " function");
-    }
+    auto library = std::make_unique<platform::DynamicLibrary>(path);
+    void* symbol = library->function(NL_PLUGIN_ENTRY_SYMBOL);
+    if (!symbol) fail(ErrorCode::NotFound, "'", path, "' exports no ", NL_PLUGIN_ENTRY_SYMBOL, " function");
     nl_plugin_entry_fn* entry;
     static_assert(sizeof(entry) == sizeof(symbol), "function and object pointers differ in size");
     std::memcpy(&entry, &symbol, sizeof entry);  // POSIX guarantees the conversion; C++ needs a copy
-    return add_c_plugin(world, entry, library, false, "'" + path + "'");
+    return add_c_plugin(world, entry, std::move(library), false, "'" + path + "'");
 }
 
 }  // namespace nl::capi

@@ -4,22 +4,25 @@
 // LinkKindProvider.
 #pragma once
 
+#include <memory>
 #include <string>
 #include <string_view>
 
 #include "navlink/plugin.h"
+#include "platform/dynamic_library.h"
 #include "util/handle.h"
 #include "world/world.h"
 
 namespace nl::capi {
 
-// Starts a plugin through its entry function and adds it to the world. `library` (a dlopen handle,
+// Starts a plugin through its entry function and adds it to the world. `library` (the loaded module,
 // or null) belongs to the plugin from here on, also when this throws: VersionMismatch (no common ABI
 // version), InvalidArgument (a bad or duplicate description), Internal or OutOfMemory (the plugin
 // refused to start). `origin` names it in messages.
-Handle add_c_plugin(World& world, nl_plugin_entry_fn* entry, void* library, bool builtin, const std::string& origin);
+Handle add_c_plugin(World& world, nl_plugin_entry_fn* entry, std::unique_ptr<platform::DynamicLibrary> library,
+                    bool builtin, const std::string& origin);
 
-// Loads a plugin library (dlopen) and adds the plugin it exports. Throws NotFound (no file, or no
+// Loads a plugin library (platform::DynamicLibrary) and adds the plugin it exports. Throws NotFound (no file, or no
 // entry symbol), Io (the loader refused it), and as add_c_plugin.
 Handle load_c_plugin(World& world, const std::string& path);
 

@@ -33,7 +33,7 @@
 #include "motion/link_motion.h"
 #include "path/path_graph.h"
 #include "util/handle.h"
-#include "util/shared_mutex.h"
+#include "platform/shared_mutex.h"
 #include "util/task_system.h"
 #include "world/navmesh_registry.h"
 

@@ -23,7 +23,7 @@
 #include "path/path_graph.h"
 #include "util/function_ref.h"
 #include "util/handle.h"
-#include "util/shared_mutex.h"
+#include "platform/shared_mutex.h"
 #include "world/plugin_settings.h"
 
 namespace nl {
