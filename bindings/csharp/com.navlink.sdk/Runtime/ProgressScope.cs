@@ -3,9 +3,9 @@ using System.Runtime.InteropServices;
 
 namespace NavLink
 {
-    // The (progress, user) pair of one generation: the static trampoline's pointer and the handler as a GCHandle,
-    // freed when the call is over. Check turns the call's status into an exception; an exception thrown
-    // by the handler wins over the CANCELLED it caused.
+    // The (progress, user) pair of one long call (a link generation, a navmesh build): the static trampoline's
+    // pointer and the handler as a GCHandle, freed when the call is over. Check turns the call's status into an
+    // exception; an exception thrown by the handler wins over the CANCELLED it caused.
     internal struct ProgressScope : IDisposable
     {
         private readonly Trampolines.ProgressContext context;

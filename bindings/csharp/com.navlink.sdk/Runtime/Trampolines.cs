@@ -7,7 +7,7 @@ namespace NavLink
     /// <summary>Receives a log line from a world: level (LogLevel), status, message.</summary>
     public delegate void LogHandler(LogLevel level, StatusCode status, string message);
 
-    /// <summary>Generate progress: return false to cancel the generation.</summary>
+    /// <summary>Progress of a link generation or a navmesh build: return false to cancel it.</summary>
     public delegate bool ProgressHandler(float fraction, string stage);
 
     /// <summary>Called once when a queued path request finishes, on the thread that finished it.</summary>
@@ -41,7 +41,7 @@ namespace NavLink
             }
         }
 
-        /// <summary>The context of one generation's progress callback: the handler, and what it threw.</summary>
+        /// <summary>The context of one call's progress callback: the handler, and what it threw.</summary>
         internal sealed class ProgressContext
         {
             public ProgressHandler Handler;
@@ -58,7 +58,7 @@ namespace NavLink
             }
             catch (Exception e)
             {
-                // Cancel the generation; World rethrows this once the native call has returned.
+                // Cancel the call; World rethrows this once the native call has returned.
                 context.Error = e;
                 return 0;
             }

@@ -6,9 +6,13 @@ namespace NavLink
     public sealed partial class World
     {
         /// <summary>Registers a triangle mesh (copied): x y z per vertex, 3 indices per triangle, an
-        /// optional column-major 4x4 transform (empty: identity).</summary>
+        /// optional column-major 4x4 transform (empty: identity). flags: Movable; Clockwise for fronts wound
+        /// clockwise (Godot's); Obstacle (blocks navmesh builds, never walked on) or NotInNavmesh (left out of
+        /// them). area: what navmesh builds give the polygons over the mesh (0..Limits.MeshMaxArea; the Recast
+        /// builder carries 0..62), priced by PathQuery's area costs.</summary>
         public unsafe MeshId AddMesh(ReadOnlySpan<float> vertices, ReadOnlySpan<uint> indices, MeshFlags flags = MeshFlags.None,
-                                     ReadOnlySpan<float> transform = default(ReadOnlySpan<float>), ulong userData = 0)
+                                     ReadOnlySpan<float> transform = default(ReadOnlySpan<float>), ulong userData = 0,
+                                     uint area = 0)
         {
             MeshDef def = Native.nl_default_mesh_def();
             MeshId id;
@@ -21,17 +25,16 @@ namespace NavLink
                 def.VertexCount = (uint)(vertices.Length / 3);
                 def.Indices = (IntPtr)i;
                 def.TriangleCount = (uint)(indices.Length / 3);
-                def.Flags = flags;
-                def.Transform = transform.IsEmpty ? IntPtr.Zero : (IntPtr)t;
-                def.UserData = userData;
+                SetMeshOptions(ref def, flags, transform.IsEmpty ? IntPtr.Zero : (IntPtr)t, userData, area);
                 Status.Check(Native.nl_mesh_add(w.Pointer, &def, &id));
             }
             return id;
         }
 
-        /// <summary>Loads a Wavefront OBJ file as one mesh.</summary>
+        /// <summary>Loads a Wavefront OBJ file as one mesh (flags and area as for AddMesh).</summary>
         public unsafe MeshId AddObjFile(string path, MeshFlags flags = MeshFlags.None,
-                                        ReadOnlySpan<float> transform = default(ReadOnlySpan<float>), ulong userData = 0)
+                                        ReadOnlySpan<float> transform = default(ReadOnlySpan<float>), ulong userData = 0,
+                                        uint area = 0)
         {
             byte[] utf8 = Utf8.EncodeZ(path);
             MeshDef def = Native.nl_default_mesh_def();
@@ -40,17 +43,16 @@ namespace NavLink
             fixed (float* t = &MemoryMarshal.GetReference(transform))
             using (var w = Enter())
             {
-                def.Flags = flags;
-                def.Transform = transform.IsEmpty ? IntPtr.Zero : (IntPtr)t;
-                def.UserData = userData;
+                SetMeshOptions(ref def, flags, transform.IsEmpty ? IntPtr.Zero : (IntPtr)t, userData, area);
                 Status.Check(Native.nl_mesh_add_obj_file(w.Pointer, p, &def, &id));
             }
             return id;
         }
 
-        /// <summary>Registers OBJ text from memory as one mesh.</summary>
+        /// <summary>Registers OBJ text from memory as one mesh (flags and area as for AddMesh).</summary>
         public unsafe MeshId AddObjMemory(ReadOnlySpan<byte> objText, MeshFlags flags = MeshFlags.None,
-                                          ReadOnlySpan<float> transform = default(ReadOnlySpan<float>), ulong userData = 0)
+                                          ReadOnlySpan<float> transform = default(ReadOnlySpan<float>), ulong userData = 0,
+                                          uint area = 0)
         {
             MeshDef def = Native.nl_default_mesh_def();
             MeshId id;
@@ -58,12 +60,19 @@ namespace NavLink
             fixed (float* t = &MemoryMarshal.GetReference(transform))
             using (var w = Enter())
             {
-                def.Flags = flags;
-                def.Transform = transform.IsEmpty ? IntPtr.Zero : (IntPtr)t;
-                def.UserData = userData;
+                SetMeshOptions(ref def, flags, transform.IsEmpty ? IntPtr.Zero : (IntPtr)t, userData, area);
                 Status.Check(Native.nl_mesh_add_obj_memory(w.Pointer, p, (UIntPtr)objText.Length, &def, &id));
             }
             return id;
+        }
+
+        // What AddMesh, AddObjFile and AddObjMemory take beyond the geometry; transform is pinned by the caller.
+        private static void SetMeshOptions(ref MeshDef def, MeshFlags flags, IntPtr transform, ulong userData, uint area)
+        {
+            def.Flags = flags;
+            def.Transform = transform;
+            def.UserData = userData;
+            def.Area = area;
         }
 
         /// <summary>Removes a mesh (InvalidArgument for a mesh a navmesh rides: remove the navmesh first).</summary>

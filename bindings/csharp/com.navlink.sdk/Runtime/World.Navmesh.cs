@@ -12,9 +12,14 @@ namespace NavLink
 
         /// <summary>Builds a navmesh with a builder plugin ("recast" when builder is null) from every static
         /// mesh, or, with a surface (a MeshFlags.Movable mesh), from that mesh alone in its own space: the
-        /// navmesh then rides it. recast: the Recast builder's settings; settingsJson is applied over them.</summary>
+        /// navmesh then rides it. recast: the Recast builder's settings; settingsJson is applied over them.
+        /// Meshes flagged NotInNavmesh are left out, Obstacle ones only block, and each mesh's area goes to the
+        /// polygons over it. progress is told of the build on this thread (fractions 0 to 1); returning false
+        /// cancels it (NavLinkException with Cancelled, nothing added); an exception thrown by progress
+        /// cancels the build and is rethrown here.</summary>
         public unsafe NavmeshId BuildNavmesh(AgentType agent, RecastSettings? recast = null, string settingsJson = null,
-                                             string builder = null, MeshId surface = default(MeshId))
+                                             string builder = null, MeshId surface = default(MeshId),
+                                             ProgressHandler progress = null)
         {
             NavmeshBuildDef def = Native.nl_default_navmesh_build_def();
             RecastSettings settings = recast ?? default(RecastSettings);
@@ -23,6 +28,7 @@ namespace NavLink
             NavmeshId id;
             fixed (byte* j = json)
             fixed (byte* n = name)
+            using (var scope = new ProgressScope(progress))
             using (var w = Enter())
             {
                 def.Agent = agent;
@@ -33,7 +39,9 @@ namespace NavLink
                 def.SettingsJson = json == null ? IntPtr.Zero : json.Length == 0 ? (IntPtr)(&empty) : (IntPtr)j;
                 def.SettingsJsonLength = (UIntPtr)(json == null ? 0 : json.Length);
                 def.Surface = surface;
-                Status.Check(Native.nl_navmesh_build(w.Pointer, &def, &id));
+                def.Progress = scope.Function;
+                def.ProgressUser = scope.User;
+                scope.Check(Native.nl_navmesh_build(w.Pointer, &def, &id));
             }
             return id;
         }

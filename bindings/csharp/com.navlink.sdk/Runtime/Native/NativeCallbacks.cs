@@ -78,5 +78,17 @@ namespace NavLink
         public unsafe delegate StatusCode HostGetLevelTrianglesFn(IntPtr context, float* vertices, uint vertexCapacity,
                                                             uint* outVertexCount, uint* indices, uint triangleCapacity,
                                                             uint* outTriangleCount);
+
+        /// <summary>nl_plugin_host.get_build_triangles: as get_level_triangles, with each triangle's area
+        /// (Limits.BuildAreaObstacle for an obstacle's) in areas (room for triangleCapacity).</summary>
+        [UnmanagedFunctionPointer(CallingConvention.Cdecl)]
+        public unsafe delegate StatusCode HostGetBuildTrianglesFn(IntPtr context, float* vertices, uint vertexCapacity,
+                                                            uint* outVertexCount, uint* indices, byte* areas,
+                                                            uint triangleCapacity, uint* outTriangleCount);
+
+        /// <summary>nl_plugin_host.report_build_progress (context, fraction, stage): Cancelled when the
+        /// build's caller asked to stop (return that status from the builder at once).</summary>
+        [UnmanagedFunctionPointer(CallingConvention.Cdecl)]
+        public delegate StatusCode HostReportBuildProgressFn(IntPtr context, float fraction, IntPtr stage);
     }
 }

@@ -51,6 +51,11 @@ namespace NavLink
         /// <summary>NL_PATH_WAIT_FOREVER: a raw nl_path_wait timeout that never ends (World.WaitPath takes
         /// a TimeSpan; null waits forever).</summary>
         public const uint PathWaitForever = 0xffffffffu;
+        /// <summary>NL_MESH_MAX_AREA: the highest MeshDef.Area (World.AddMesh's area). The Recast builder
+        /// carries 0..62 and fails the build above.</summary>
+        public const uint MeshMaxArea = 254u;
+        /// <summary>NL_BUILD_AREA_OBSTACLE: the area PluginHost.GetBuildTriangles gives an obstacle's triangles.</summary>
+        public const uint BuildAreaObstacle = 255u;
     }
 
     /// <summary>How much a world logs (WorldOptions.LogLevel), and the level of each line (LogHandler).</summary>
@@ -69,6 +74,12 @@ namespace NavLink
         None = 0u,
         /// <summary>The mesh will move (World.SetMeshTransform); navmeshes can ride it.</summary>
         Movable = 0x00000001u,
+        /// <summary>Its fronts are wound clockwise (Godot's meshes): the triangles are turned over when registered.</summary>
+        Clockwise = 0x00000002u,
+        /// <summary>In navmesh builds it only blocks: none of its triangles is walked on (crates, props).</summary>
+        Obstacle = 0x00000004u,
+        /// <summary>Left out of navmesh builds (triggers, foliage); rays and link checks still meet it. Not with Obstacle.</summary>
+        NotInNavmesh = 0x00000008u,
     }
 
     /// <summary>A link's kind (Link.Kind, LinkDef.Kind), and how a path goes on from a point

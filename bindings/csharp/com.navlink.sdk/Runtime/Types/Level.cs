@@ -16,6 +16,11 @@ namespace NavLink
         public MeshFlags Flags;
         public IntPtr Transform;
         public ulong UserData;
+        /// <summary>The area navmesh builds give the polygons over this mesh (0..Limits.MeshMaxArea; the Recast
+        /// builder carries 0..62). Added in 0.3.</summary>
+        public uint Area;
+        /// <summary>Must be 0.</summary>
+        public uint Reserved;
     }
 
     /// <summary>nl_mesh_info. Get one from Native.nl_mesh_info_init() (Size set) before asking.</summary>
@@ -31,6 +36,9 @@ namespace NavLink
         public Vec3 BoundsMin;
         public Vec3 BoundsMax;
         public ulong UserData;
+        /// <summary>As given in the MeshDef (0.3).</summary>
+        public uint Area;
+        public uint Reserved;
     }
 
     /// <summary>nl_ray.</summary>

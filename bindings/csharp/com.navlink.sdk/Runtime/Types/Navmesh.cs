@@ -107,6 +107,11 @@ namespace NavLink
         /// <summary>A movable mesh to build on (alone, in its own space; the navmesh rides it), or the null
         /// id: every static mesh. Added in 0.3.</summary>
         public MeshId Surface;
+        /// <summary>Optional nl_progress_fn (a NativeCallbacks.ProgressFn pointer): told of the build's progress
+        /// from its start; returning 0 cancels it (Cancelled, nothing added). Added in 0.3.</summary>
+        public IntPtr Progress;
+        /// <summary>Passed back to Progress; not dereferenced.</summary>
+        public IntPtr ProgressUser;
     }
 
     /// <summary>nl_recast_settings (navlink/recast.h).</summary>

@@ -39,6 +39,10 @@ namespace NavLink
         public IntPtr SegmentsBlocked;
         /// <summary>Present when Size covers it (added in 0.3).</summary>
         public IntPtr RecordBuildSettings;
+        /// <summary>NativeCallbacks.HostGetBuildTrianglesFn. Present when Size covers it (added in 0.3).</summary>
+        public IntPtr GetBuildTriangles;
+        /// <summary>NativeCallbacks.HostReportBuildProgressFn. Present when Size covers it (added in 0.3).</summary>
+        public IntPtr ReportBuildProgress;
     }
 
     /// <summary>nl_navmesh_builder.</summary>
