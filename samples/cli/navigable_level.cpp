@@ -15,8 +15,12 @@ NavigableLevel::NavigableLevel(const std::string& level_path, const std::optiona
     level_ = samples::load_level_file(world_.get(), level_path, for_drawing);
     times_.load_ms = now_ms() - start;
     start = now_ms();
-    navmesh_ = navmesh_path ? samples::add_navmesh_from_obj(world_.get(), *navmesh_path, body)
-                            : samples::build_navmesh(world_.get(), body, recast_json);
+    if (navmesh_path) {
+        navmesh_ = samples::add_navmesh_from_obj(world_.get(), *navmesh_path, body);
+    } else {
+        ProgressBar bar;
+        navmesh_ = samples::build_navmesh(world_.get(), body, recast_json, {}, ProgressBar::callback, &bar);
+    }
     times_.navmesh_ms = now_ms() - start;
 }
 
@@ -26,7 +30,8 @@ NavigableLevel::NavigableLevel(const levelgen::GeneratedLevel& generated, const 
     level_ = samples::add_generated_level(world_.get(), generated, name);
     times_.load_ms = now_ms() - start;
     start = now_ms();
-    navmesh_ = samples::build_navmesh(world_.get(), body, recast_json);
+    ProgressBar bar;
+    navmesh_ = samples::build_navmesh(world_.get(), body, recast_json, {}, ProgressBar::callback, &bar);
     times_.navmesh_ms = now_ms() - start;
 }
 

@@ -1,4 +1,4 @@
-// A one-line progress bar for link generation, redrawn in place; only when stdout is a terminal, so
+// A one-line progress bar for a navmesh build or a link generation, redrawn in place; only when stdout is a terminal, so
 // logs and pipes get the report alone.
 #pragma once
 

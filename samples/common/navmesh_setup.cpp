@@ -6,10 +6,12 @@
 namespace nl::samples {
 
 nl_navmesh_id build_navmesh(nl_world* world, const nl_agent_type& body, const std::string& recast_json,
-                            nl_mesh_id surface) {
+                            nl_mesh_id surface, nl_progress_fn* progress, void* progress_user) {
     nl_navmesh_build_def def = nl_default_navmesh_build_def();
     def.agent = body;
     def.surface = surface;
+    def.progress = progress;
+    def.progress_user = progress_user;
     if (!recast_json.empty()) {
         def.settings_json = recast_json.data();
         def.settings_json_length = recast_json.size();
