@@ -13,7 +13,8 @@
 //!
 //! Other environment (each optional):
 //! - `NAVLINK_STATIC=1`: link libnavlink.a instead, followed by `NAVLINK_STATIC_LIBS` (space-separated
-//!   library names), else navlink.pc's `Libs.private`, else `stdc++ tbb dl pthread`. No rpath then.
+//!   library names), else what `pkg-config --static` lists for navlink.pc, else `embree3 Recast
+//!   DetourCrowd Detour tbb z dl stdc++ m`. No rpath then.
 //! - `NAVLINK_INCLUDE_DIRS`: folders holding `navlink/navlink.h`, `recast.h`, `plugin.h` and the generated
 //!   `version.h`, separated as PATH is (default: pkg-config's; with NAVLINK_LIB_DIR, the source tree's
 //!   `capi/include` and `plugins/include`, and `$NAVLINK_LIB_DIR/include`).

@@ -30,9 +30,13 @@ pub struct Found {
     pub origin: &'static str,
 }
 
-/// What libnavlink.a needs when neither `NAVLINK_STATIC_LIBS` nor navlink.pc's `Libs.private` says:
-/// the C++ runtime, oneTBB (the core's threads) and the loader (plugins).
-pub const DEFAULT_STATIC_DEPS: [&str; 4] = ["stdc++", "tbb", "dl", "pthread"];
+/// What libnavlink.a needs when neither `NAVLINK_STATIC_LIBS` nor navlink.pc says: what `pkg-config
+/// --static --libs navlink` lists for a static build (capi/static_library.cmake's `Libs.private` and
+/// `Requires.private`): Embree (rays), the Recast builder's Recast and Detour, oneTBB (the core's
+/// threads and Embree's), zlib, the loader (plugins), the C++ runtime and libm. In link order: a static
+/// link resolves left to right, so each comes before what it needs (embree3 before tbb). glibc 2.34 and
+/// later have pthread in libc.
+pub const DEFAULT_STATIC_DEPS: [&str; 9] = ["embree3", "Recast", "DetourCrowd", "Detour", "tbb", "z", "dl", "stdc++", "m"];
 
 /// Runs the pkg-config program (`PKG_CONFIG`, else `pkg-config`) with extra environment variables.
 pub struct PkgConfig {

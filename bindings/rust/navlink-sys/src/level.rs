@@ -12,6 +12,14 @@ pub struct nl_mesh_id {
 }
 
 pub const NL_MESH_MOVABLE: u32 = 0x0000_0001;
+/// Its fronts are wound clockwise: the triangles are turned over when registered.
+pub const NL_MESH_CLOCKWISE: u32 = 0x0000_0002;
+/// In navmesh builds it only blocks: none of its triangles is walked on.
+pub const NL_MESH_OBSTACLE: u32 = 0x0000_0004;
+/// Left out of navmesh builds; rays, link checks and agents still meet it. Not with `NL_MESH_OBSTACLE`.
+pub const NL_MESH_NOT_IN_NAVMESH: u32 = 0x0000_0008;
+/// The highest `nl_mesh_def::area`. The Recast builder carries areas 0..62.
+pub const NL_MESH_MAX_AREA: u32 = 254;
 
 #[repr(C)]
 #[derive(Clone, Copy, Debug)]
@@ -25,6 +33,10 @@ pub struct nl_mesh_def {
     pub flags: u32,
     pub transform: *const f32,
     pub user_data: u64,
+    /// The area navmesh builds give the polygons over this mesh (0..=`NL_MESH_MAX_AREA`). Added in 0.3.
+    pub area: u32,
+    /// Must be 0.
+    pub reserved: u32,
 }
 
 #[repr(C)]
@@ -39,6 +51,9 @@ pub struct nl_mesh_info {
     pub bounds_min: [f32; 3],
     pub bounds_max: [f32; 3],
     pub user_data: u64,
+    /// As given in `nl_mesh_def` (0.3).
+    pub area: u32,
+    pub reserved: u32,
 }
 
 pub fn nl_mesh_info_init() -> nl_mesh_info {

@@ -1,5 +1,5 @@
 //! navlink.h: "Links".
-use crate::navmesh::nl_navmesh_id;
+use crate::navmesh::{nl_navmesh_id, nl_progress_fn};
 use crate::output_init;
 use crate::status::nl_status;
 use crate::world::nl_world;
@@ -168,9 +168,6 @@ default_is_init!(nl_link_generation_report, nl_link_generation_report_init);
 
 /// Load links generated for another body than the navmesh's (see `nl_navmesh_load_links_json`).
 pub const NL_LINKS_LOAD_ANY_BODY: u32 = 0x1;
-
-/// `nl_progress_fn*`: return 0 to cancel. Called on the thread that started the generation.
-pub type nl_progress_fn = Option<unsafe extern "C" fn(user: *mut c_void, fraction: f32, stage: *const c_char) -> i32>;
 
 extern "C" {
     pub fn nl_default_link_def() -> nl_link_def;

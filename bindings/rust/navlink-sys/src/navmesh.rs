@@ -110,6 +110,10 @@ pub struct nl_nav_point {
     pub reserved: [u8; 3],
 }
 
+/// `nl_progress_fn*` (a navmesh build, a link generation): `fraction` done (0..1, never going back) and the
+/// stage's name; return 0 to cancel the call. Called on the thread that made the call.
+pub type nl_progress_fn = Option<unsafe extern "C" fn(user: *mut c_void, fraction: f32, stage: *const c_char) -> i32>;
+
 #[repr(C)]
 #[derive(Clone, Copy, Debug)]
 pub struct nl_navmesh_build_def {
@@ -122,6 +126,11 @@ pub struct nl_navmesh_build_def {
     /// A movable mesh to build on (alone, in its own space; the navmesh rides it), or the null id: every
     /// static mesh. Added in 0.3.
     pub surface: nl_mesh_id,
+    /// Told of the build's progress from its start; returning 0 cancels it (CANCELLED, nothing added).
+    /// Added in 0.3.
+    pub progress: nl_progress_fn,
+    /// Passed back to `progress`; not dereferenced.
+    pub progress_user: *mut c_void,
 }
 
 extern "C" {

@@ -92,7 +92,27 @@ pub struct nl_plugin_host {
     /// Present when `size` covers it (added in 0.3).
     pub record_build_settings:
         Option<unsafe extern "C" fn(context: *mut c_void, settings_json: *const c_char, length: usize) -> nl_status>,
+    /// As `get_level_triangles`, with each triangle's area (`NL_BUILD_AREA_OBSTACLE` for an obstacle's).
+    /// Present when `size` covers it (added in 0.3).
+    pub get_build_triangles: Option<
+        unsafe extern "C" fn(
+            context: *mut c_void,
+            vertices: *mut f32,
+            vertex_capacity: u32,
+            out_vertex_count: *mut u32,
+            indices: *mut u32,
+            areas: *mut u8,
+            triangle_capacity: u32,
+            out_triangle_count: *mut u32,
+        ) -> nl_status,
+    >,
+    /// CANCELLED when the build's caller asked to stop. Present when `size` covers it (added in 0.3).
+    pub report_build_progress:
+        Option<unsafe extern "C" fn(context: *mut c_void, fraction: f32, stage: *const c_char) -> nl_status>,
 }
+
+/// The area `get_build_triangles` gives an obstacle's triangles.
+pub const NL_BUILD_AREA_OBSTACLE: u32 = 255;
 
 /// `nl_navmesh_sink_fn*`.
 pub type nl_navmesh_sink_fn =

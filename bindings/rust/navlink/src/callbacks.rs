@@ -2,13 +2,15 @@
 //! through the `user` pointer and runs it inside `catch_unwind`: unwinding into C is undefined
 //! behaviour, so a panic is either carried back to the caller's thread (progress) or reported on
 //! stderr (log and path callbacks, which may run on a NavLink worker with nobody to resume it).
-use crate::error::borrowed_str;
+use crate::error::{borrowed_str, check, Result};
 use crate::kinds::PathOutcome;
 use crate::paths::{fill_finished_slot, FinishedSlot};
 use crate::types::PathTicket;
+use navlink_sys as sys;
 use std::any::Any;
 use std::os::raw::{c_char, c_void};
-use std::panic::{catch_unwind, AssertUnwindSafe};
+use std::panic::{catch_unwind, resume_unwind, AssertUnwindSafe};
+use std::ptr;
 use std::sync::{Arc, Mutex};
 
 /// What the log callback's `user` points to.
@@ -22,13 +24,33 @@ pub(crate) unsafe extern "C" fn log(user: *mut c_void, level: u32, status: u32, 
     }
 }
 
-/// The state of one generation's progress callback: the closure, and a panic to resume after the call.
-pub(crate) struct ProgressContext<'a> {
-    pub handler: &'a mut dyn FnMut(f32, &str) -> bool,
-    pub panic: Option<Box<dyn Any + Send>>,
+/// Progress of a link generation or a navmesh build: (fraction done, stage name) -> go on? Called on the
+/// thread that made the call.
+pub type Progress<'a> = &'a mut dyn FnMut(f32, &str) -> bool;
+
+/// The state of one call's progress callback: the closure, and a panic to resume after the call.
+struct ProgressContext<'a> {
+    handler: Progress<'a>,
+    panic: Option<Box<dyn Any + Send>>,
 }
 
-pub(crate) unsafe extern "C" fn progress(user: *mut c_void, fraction: f32, stage: *const c_char) -> i32 {
+/// Runs a call that takes an `nl_progress_fn` and its user pointer with an optional progress closure; a
+/// panic in the closure cancels the call and resumes here, once the C call has returned.
+pub(crate) fn with_progress(handler: Option<Progress<'_>>, call: impl FnOnce(sys::nl_progress_fn, *mut c_void) -> u32) -> Result<()> {
+    let handler = match handler {
+        None => return check(call(None, ptr::null_mut())).map(drop),
+        Some(handler) => handler,
+    };
+    let mut context = ProgressContext { handler, panic: None };
+    let status = call(Some(progress), &mut context as *mut ProgressContext as *mut c_void);
+    let result = check(status).map(drop);
+    if let Some(panic) = context.panic.take() {
+        resume_unwind(panic);
+    }
+    result
+}
+
+unsafe extern "C" fn progress(user: *mut c_void, fraction: f32, stage: *const c_char) -> i32 {
     let context = &mut *(user as *mut ProgressContext);
     if context.panic.is_some() {
         return 0;
@@ -38,7 +60,7 @@ pub(crate) unsafe extern "C" fn progress(user: *mut c_void, fraction: f32, stage
     match catch_unwind(AssertUnwindSafe(|| handler(fraction, &stage))) {
         Ok(go_on) => go_on as i32,
         Err(panic) => {
-            // Cancel the generation; the caller resumes the panic once the C call has returned.
+            // Cancel the call; with_progress resumes the panic once the C call has returned.
             context.panic = Some(panic);
             0
         }

@@ -5,26 +5,86 @@ use crate::types::{MeshId, MeshInfo, Ray, RayHit, Segment};
 use crate::world::World;
 use navlink_sys as sys;
 use std::ffi::CString;
+use std::ops::{BitOr, BitOrAssign};
 use std::path::Path;
 use std::ptr;
+
+/// A mesh's flags (`nl_mesh_def.flags`, `nl_mesh_info.flags`), combined with `|`. Bits this binding has
+/// no name for (a newer library's) are kept as they are.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct MeshFlags(u32);
+
+impl MeshFlags {
+    pub const NONE: MeshFlags = MeshFlags(0);
+    /// The mesh will move (`set_mesh_transform`); navmeshes can ride it.
+    pub const MOVABLE: MeshFlags = MeshFlags(sys::NL_MESH_MOVABLE);
+    /// Its fronts are wound clockwise (Godot's meshes): the triangles are turned over when registered.
+    pub const CLOCKWISE: MeshFlags = MeshFlags(sys::NL_MESH_CLOCKWISE);
+    /// In navmesh builds it only blocks: none of its triangles is walked on (crates, props).
+    pub const OBSTACLE: MeshFlags = MeshFlags(sys::NL_MESH_OBSTACLE);
+    /// Left out of navmesh builds (triggers, foliage); rays, link checks and agents still meet it.
+    /// Not together with `OBSTACLE`.
+    pub const NOT_IN_NAVMESH: MeshFlags = MeshFlags(sys::NL_MESH_NOT_IN_NAVMESH);
+
+    pub const fn from_raw(raw: u32) -> Self {
+        MeshFlags(raw)
+    }
+
+    pub const fn to_raw(self) -> u32 {
+        self.0
+    }
+
+    /// Every bit of `other` is set.
+    pub const fn contains(self, other: MeshFlags) -> bool {
+        self.0 & other.0 == other.0
+    }
+}
+
+impl BitOr for MeshFlags {
+    type Output = MeshFlags;
+    fn bitor(self, other: MeshFlags) -> MeshFlags {
+        MeshFlags(self.0 | other.0)
+    }
+}
+
+impl BitOrAssign for MeshFlags {
+    fn bitor_assign(&mut self, other: MeshFlags) {
+        self.0 |= other.0;
+    }
+}
+
+/// A `MeshInfo`'s flags as [`MeshFlags`] (its raw `flags` is the `u32`; `area` is read as it is).
+pub trait MeshInfoExt {
+    fn mesh_flags(&self) -> MeshFlags;
+}
+
+impl MeshInfoExt for MeshInfo {
+    fn mesh_flags(&self) -> MeshFlags {
+        MeshFlags::from_raw(self.flags)
+    }
+}
 
 /// What a mesh def carries besides geometry.
 #[derive(Clone, Copy, Debug, Default)]
 pub struct MeshOptions {
-    /// `MESH_MOVABLE` for meshes that will move.
-    pub flags: u32,
+    /// `MeshFlags::MOVABLE` for meshes that will move; `CLOCKWISE`, `OBSTACLE`, `NOT_IN_NAVMESH`.
+    pub flags: MeshFlags,
     /// Column-major 4x4 affine matrix (translation in 12, 13, 14); `None`: identity.
     pub transform: Option<[f32; 16]>,
     /// Returned by `mesh_info`, never interpreted.
     pub user_data: u64,
+    /// The area navmesh builds give the polygons over this mesh (0..=`MESH_MAX_AREA`; the Recast builder
+    /// carries 0..=62), priced by a path query's area costs. `mesh_info` reports it.
+    pub area: u32,
 }
 
 impl MeshOptions {
     fn def(&self) -> sys::nl_mesh_def {
         let mut def = unsafe { sys::nl_default_mesh_def() };
-        def.flags = self.flags;
+        def.flags = self.flags.to_raw();
         def.transform = self.transform.as_ref().map_or(ptr::null(), |t| t.as_ptr());
         def.user_data = self.user_data;
+        def.area = self.area;
         def
     }
 }

@@ -29,10 +29,9 @@ mod world;
 pub use agents::{default_agent_def, AgentInfoExt};
 pub use error::{status_string, Error, ErrorKind, Result};
 pub use kinds::{AgentEventKind, AgentReason, AgentState, LinkKind, PathOutcome, TrajectoryKind};
-pub use level::MeshOptions;
-pub use links::{
-    default_link_def, default_link_settings, link_settings_from_json, LinkDefExt, LinkExt, LinksLoadOptions, Progress,
-};
+pub use level::{MeshFlags, MeshInfoExt, MeshOptions};
+pub use callbacks::Progress;
+pub use links::{default_link_def, default_link_settings, link_settings_from_json, LinkDefExt, LinkExt, LinksLoadOptions};
 pub use navmesh::{default_agent_type, default_recast_settings, NavmeshBuild, NavmeshDetail, NavmeshInput};
 pub use navmesh_files::{default_navmesh_load_def, describe_navmesh_file, NavmeshLoadOptions};
 pub use paths::{default_agent_capabilities, FinishedPath, PathBudget, PathQuery, PathRequest, PathResult};

@@ -1,16 +1,12 @@
 //! Links: generation, the link store, JSON.
-use crate::callbacks::{self, ProgressContext};
+use crate::callbacks::{with_progress, Progress};
 use crate::error::{check, Error, Result};
 use crate::list::two_call;
 use crate::types::{LinkGenerationReport, Link, LinkDef, LinkId, LinkSettings, NavmeshId};
 use crate::world::World;
 use navlink_sys as sys;
-use std::os::raw::{c_char, c_void};
-use std::panic::resume_unwind;
+use std::os::raw::c_char;
 use std::ptr;
-
-/// Link generation progress: (fraction done, stage name) -> go on? Called on the thread that started the generation.
-pub type Progress<'a> = &'a mut dyn FnMut(f32, &str) -> bool;
 
 /// A manual one-way link, enabled, cost modifier 1, requirements measured from its ends
 /// (`requirements_as_given` 0), within one navmesh (`landing_navmesh` null; `tolerance` 0.25 for when it
@@ -110,21 +106,6 @@ fn non_null(text: &str) -> *const c_char {
     } else {
         text.as_ptr().cast()
     }
-}
-
-/// Runs a generation with an optional progress closure; a panic in it cancels the generation and resumes here.
-fn with_progress(progress: Option<Progress<'_>>, call: impl FnOnce(sys::nl_progress_fn, *mut c_void) -> u32) -> Result<()> {
-    let handler = match progress {
-        None => return check(call(None, ptr::null_mut())).map(drop),
-        Some(handler) => handler,
-    };
-    let mut context = ProgressContext { handler, panic: None };
-    let status = call(Some(callbacks::progress), &mut context as *mut ProgressContext as *mut c_void);
-    let result = check(status).map(drop);
-    if let Some(panic) = context.panic.take() {
-        resume_unwind(panic);
-    }
-    result
 }
 
 impl World {

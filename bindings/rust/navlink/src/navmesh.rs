@@ -1,4 +1,5 @@
 //! Navmeshes: built from the level by a builder plugin, or handed over by the host.
+use crate::callbacks::{with_progress, Progress};
 use crate::error::{check, Result};
 use crate::level::c_string;
 use crate::list::two_call;
@@ -8,7 +9,9 @@ use navlink_sys as sys;
 use std::os::raw::c_void;
 use std::ptr;
 
-/// How to build a navmesh from the registered meshes: every static one, or one movable mesh (`surface`).
+/// How to build a navmesh from the registered meshes: every static one, or one movable mesh (`surface`);
+/// meshes flagged `NOT_IN_NAVMESH` are left out, `OBSTACLE` ones only block, and each mesh's area goes to
+/// the polygons over it.
 #[derive(Clone, Copy, Debug)]
 pub struct NavmeshBuild<'a> {
     pub agent: AgentType,
@@ -18,7 +21,7 @@ pub struct NavmeshBuild<'a> {
     pub settings_json: Option<&'a str>,
     /// A navmesh-builder plugin's name; `None`: "recast".
     pub builder: Option<&'a str>,
-    /// A movable mesh (`MESH_MOVABLE`) to build on, alone and in its own space; the navmesh rides it.
+    /// A movable mesh (`MeshFlags::MOVABLE`) to build on, alone and in its own space; the navmesh rides it.
     /// `None`: every static mesh (movable meshes are left out).
     pub surface: Option<MeshId>,
 }
@@ -49,7 +52,7 @@ pub struct NavmeshInput<'a> {
     pub weld_tolerance: f32,
     pub agent: AgentType,
     pub detail: Option<NavmeshDetail<'a>>,
-    /// A movable mesh (`MESH_MOVABLE`) the navmesh rides: the coordinates above are then in that mesh's
+    /// A movable mesh (`MeshFlags::MOVABLE`) the navmesh rides: the coordinates above are then in that mesh's
     /// own space, and `set_mesh_transform` moves the navmesh with it. `None`: world space, fixed.
     pub surface: Option<MeshId>,
 }
@@ -82,6 +85,17 @@ pub fn default_recast_settings() -> RecastSettings {
 
 impl World {
     pub fn build_navmesh(&self, build: &NavmeshBuild<'_>) -> Result<NavmeshId> {
+        self.build_navmesh_reporting(build, None)
+    }
+
+    /// `build_navmesh`, telling `progress` of the build on this thread (fractions from 0 to 1, never going
+    /// back, and the stage's name). Returning false cancels the build: an `Error` with CANCELLED, nothing
+    /// added. A panic in `progress` cancels it too and resumes here.
+    pub fn build_navmesh_with_progress(&self, build: &NavmeshBuild<'_>, progress: Progress<'_>) -> Result<NavmeshId> {
+        self.build_navmesh_reporting(build, Some(progress))
+    }
+
+    fn build_navmesh_reporting(&self, build: &NavmeshBuild<'_>, progress: Option<Progress<'_>>) -> Result<NavmeshId> {
         let builder = build.builder.map(|b| c_string(b.as_bytes(), "builder")).transpose()?;
         let mut def = unsafe { sys::nl_default_navmesh_build_def() };
         def.agent = build.agent;
@@ -94,7 +108,11 @@ impl World {
         }
         def.surface = build.surface.unwrap_or_default();
         let mut id = NavmeshId::default();
-        check(unsafe { sys::nl_navmesh_build(self.raw(), &def, &mut id) })?;
+        with_progress(progress, |function, user| {
+            def.progress = function;
+            def.progress_user = user;
+            unsafe { sys::nl_navmesh_build(self.raw(), &def, &mut id) }
+        })?;
         Ok(id)
     }
 

@@ -8,8 +8,8 @@ mod common;
 use common::*;
 use navlink::{
     default_agent_def, default_agent_type, default_link_def, link_kind, status, sys,
-    AgentEvent, AgentId, AgentInfo, AgentInfoExt, AgentType, LinkDef, LinkDefExt, LinkId, MeshId, MeshOptions,
-    NavmeshId, NavmeshInput, World, WorldOptions, MESH_MOVABLE,
+    AgentEvent, AgentId, AgentInfo, AgentInfoExt, AgentType, LinkDef, LinkDefExt, LinkId, MeshFlags, MeshId, MeshOptions,
+    NavmeshId, NavmeshInput, World, WorldOptions,
 };
 
 const DT: f32 = 1.0 / 30.0;
@@ -224,7 +224,7 @@ fn a_ferry_carries_walkers_across_a_chasm() {
     let world = World::new().unwrap();
     add_box(&world, [0.0, -1.0, 0.0], [6.0, 0.0, 6.0]);
     add_box(&world, [16.0, -1.0, 0.0], [22.0, 0.0, 6.0]);
-    let at_far = MeshOptions { flags: MESH_MOVABLE, transform: Some(shuttle_at(FAR_DOCK)), ..Default::default() };
+    let at_far = MeshOptions { flags: MeshFlags::MOVABLE, transform: Some(shuttle_at(FAR_DOCK)), ..Default::default() };
     let shuttle = add_box_with(&world, [-2.0, -0.5, -2.0], [2.0, 0.0, 2.0], &at_far);
     let agent = AgentType { radius: 0.3, ..default_agent_type() };
     let ledges_input = NavmeshInput {

@@ -2,7 +2,7 @@
 mod common;
 
 use common::*;
-use navlink::{status, status_string, sys, MeshOptions, Ray, Segment, World, WorldOptions, MESH_MOVABLE};
+use navlink::{status, status_string, sys, MeshFlags, MeshOptions, Ray, Segment, World, WorldOptions};
 
 const FLOOR: [f32; 12] = [-5.0, 0.0, -5.0, 5.0, 0.0, -5.0, 5.0, 0.0, 5.0, -5.0, 0.0, 5.0];
 const QUAD: [u32; 6] = [0, 2, 1, 0, 3, 2];
@@ -48,7 +48,7 @@ fn meshes_and_rays() {
     // A movable 2 x 2 m tile 1 m up at x = 4, then lifted to 3.5 m.
     let tile = [-1.0, 0.0, -1.0, 1.0, 0.0, -1.0, 1.0, 0.0, 1.0, -1.0, 0.0, 1.0];
     let mut at = [1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 4.0, 1.0, 0.0, 1.0];
-    let lift = world.add_mesh(&tile, &QUAD, &MeshOptions { flags: MESH_MOVABLE, transform: Some(at), user_data: 0 }).unwrap();
+    let lift = world.add_mesh(&tile, &QUAD, &MeshOptions { flags: MeshFlags::MOVABLE, transform: Some(at), ..Default::default() }).unwrap();
     assert!((world.cast_rays(&[down(4.0, 0.0)]).unwrap()[0].point[1] - 1.0).abs() < 1e-4);
     at[13] = 3.5;
     world.set_mesh_transform(lift, &at).unwrap();

@@ -5,8 +5,8 @@ mod common;
 use common::*;
 use navlink::{
     default_agent_type, default_link_def, default_link_settings, default_recast_settings, status, AgentType, Link, LinkDef,
-    LinkDefExt, LinkExt, LinkSettings, MeshId, MeshOptions, NavmeshBuild, NavmeshId, NavmeshInput, PathOutcome, PathQuery, World,
-    MESH_MOVABLE, NO_POLYGON,
+    LinkDefExt, LinkExt, LinkSettings, MeshFlags, MeshId, MeshOptions, NavmeshBuild, NavmeshId, NavmeshInput, PathOutcome, PathQuery, World,
+    NO_POLYGON,
 };
 
 #[test]
@@ -98,7 +98,7 @@ fn assert_near(got: [f32; 3], want: [f32; 3], what: &str) {
 #[test]
 fn navmesh_on_a_moving_surface() {
     let world = World::new().unwrap();
-    let movable = MeshOptions { flags: MESH_MOVABLE, ..Default::default() };
+    let movable = MeshOptions { flags: MeshFlags::MOVABLE, ..Default::default() };
     let raft = add_box_with(&world, [-4.0, -1.0, -2.0], [4.0, 0.0, 2.0], &movable);
     let input = NavmeshInput { polygon_vertex_counts: Some(&[4]), surface: Some(raft), ..NavmeshInput::triangles(&RAFT_QUAD, &[0, 1, 2, 3]) };
     let navmesh = world.add_navmesh(&input).unwrap();
@@ -178,7 +178,7 @@ fn quad(vertices: &[f32]) -> NavmeshInput<'_> {
 fn cross_link_onto_a_moving_surface() {
     let world = World::new().unwrap();
     let ledge = world.add_navmesh(&quad(&LEDGE_QUAD)).unwrap();
-    let movable = MeshOptions { flags: MESH_MOVABLE, ..Default::default() };
+    let movable = MeshOptions { flags: MeshFlags::MOVABLE, ..Default::default() };
     let deck_box = add_box_with(&world, [1.0, -1.0, -2.0], [5.0, 0.0, 2.0], &movable);
     let deck = world.add_navmesh(&NavmeshInput { surface: Some(deck_box), ..quad(&DECK_QUAD) }).unwrap();
     let defaults = default_link_def();
@@ -244,7 +244,7 @@ fn platform_at(x: f32) -> [f32; 16] {
 fn cross_links_generated_for_where_a_platform_stands() {
     let world = World::new().unwrap();
     add_box(&world, [0.0, -1.0, 0.0], [6.0, 0.0, 6.0]);
-    let at_9 = MeshOptions { flags: MESH_MOVABLE, transform: Some(platform_at(9.0)), ..Default::default() };
+    let at_9 = MeshOptions { flags: MeshFlags::MOVABLE, transform: Some(platform_at(9.0)), ..Default::default() };
     let platform = add_box_with(&world, [-2.0, -0.5, -2.0], [2.0, 0.0, 2.0], &at_9);
     let agent = AgentType { radius: 0.3, ..default_agent_type() };
     let ledge = world.add_navmesh(&NavmeshInput { agent, ..quad(&LEDGE_TOP) }).unwrap();
