@@ -982,7 +982,7 @@ def _progress_trampoline(user, fraction, stage):
         return 0
     try:
         return 1 if context.handler(fraction, stage.decode()) else 0
-    except BaseException as e:  # cancel the generation; raised again by the caller
+    except BaseException as e:  # cancel the call (a generation, a build); raised again by the caller
         context.error = e
         return 0
 
@@ -1345,12 +1345,16 @@ class World:
     # --- level geometry ---
 
     def add_mesh(self, vertices: FloatValues, indices: IndexValues, flags: int = 0,
-                 transform: Optional[FloatValues] = None, user_data: int = 0) -> MeshId:
+                 transform: Optional[FloatValues] = None, user_data: int = 0, area: int = 0) -> MeshId:
         """Registers a triangle mesh (copied by the library). vertices: x y z floats, flat or in rows (a
         buffer of shape (n, 3), or (n, k > 3) with x y z first in each row: read with that stride);
         indices: three per triangle. Each a list, a tuple, or a buffer read in place: a numpy array
-        (float32; uint32 or int32), an array.array ('f'; 'I'), a memoryview, or bytes holding them."""
-        d, keep = self._mesh_def(flags, transform, user_data)
+        (float32; uint32 or int32), an array.array ('f'; 'I'), a memoryview, or bytes holding them.
+        flags: MESH_MOVABLE, MESH_CLOCKWISE (fronts wound clockwise, as Godot's), MESH_OBSTACLE (blocks
+        navmesh builds, never walked on) or MESH_NOT_IN_NAVMESH (left out of them), or'd. area: what navmesh
+        builds give the polygons over the mesh (0..MESH_MAX_AREA; the Recast builder carries 0..62), priced
+        by a path query's area costs; mesh_info(...).area reports it."""
+        d, keep = self._mesh_def(flags, transform, user_data, area)
         v = _c_array("vertices", vertices, c_float, group=3, wider_rows=True)
         i = _c_array("indices", indices, c_uint32, group=3)
         d.vertices, d.vertex_count, d.vertex_stride = _pointer(v, c_float), v.count // v.row, v.row * sizeof(c_float)
@@ -1360,24 +1364,25 @@ class World:
         return mesh
 
     @staticmethod
-    def _mesh_def(flags: int, transform: Optional[FloatValues], user_data: int) -> Tuple[MeshDef, Any]:
+    def _mesh_def(flags: int, transform: Optional[FloatValues], user_data: int, area: int) -> Tuple[MeshDef, Any]:
         d = lib.nl_default_mesh_def()
         t = _floats(transform, "transform", length=16) if transform is not None else None
-        d.flags, d.user_data = flags, user_data
+        d.flags, d.user_data, d.area = flags, user_data, area
         d.transform = ctypes.cast(t, POINTER(c_float)) if t is not None else None
         return d, t
 
     def add_obj_file(self, path: Union[str, "os.PathLike[str]"], flags: int = 0,
-                     transform: Optional[FloatValues] = None, user_data: int = 0) -> MeshId:
-        d, keep = self._mesh_def(flags, transform, user_data)
+                     transform: Optional[FloatValues] = None, user_data: int = 0, area: int = 0) -> MeshId:
+        """An OBJ file as one mesh (flags and area as add_mesh takes them)."""
+        d, keep = self._mesh_def(flags, transform, user_data, area)
         mesh = MeshId()
         _check(lib.nl_mesh_add_obj_file(self.pointer, os.fsencode(path), byref(d), byref(mesh)))
         return mesh
 
     def add_obj_memory(self, data: ByteValues, flags: int = 0, transform: Optional[FloatValues] = None,
-                       user_data: int = 0) -> MeshId:
-        """An OBJ file's text from bytes or any buffer (read in place)."""
-        d, keep = self._mesh_def(flags, transform, user_data)
+                       user_data: int = 0, area: int = 0) -> MeshId:
+        """An OBJ file's text from bytes or any buffer (read in place); flags and area as add_mesh takes them."""
+        d, keep = self._mesh_def(flags, transform, user_data, area)
         text = _c_array("data", data, c_uint8)
         mesh = MeshId()
         _check(lib.nl_mesh_add_obj_memory(self.pointer, ctypes.cast(text.items, c_char_p), text.count, byref(d),
@@ -1422,10 +1427,14 @@ class World:
 
     def build_navmesh(self, agent: Optional[AgentType] = None, recast: Optional[RecastSettings] = None,
                       settings_json: Optional[str] = None, builder: Optional[str] = None,
-                      surface: Optional[MeshId] = None) -> NavmeshId:
+                      surface: Optional[MeshId] = None, progress: Optional[ProgressHandler] = None) -> NavmeshId:
         """Builds a navmesh with a builder plugin ("recast" when None): from every static mesh, or with
         `surface` (a MeshId of an MESH_MOVABLE mesh) from that mesh alone, in its own space; the navmesh
-        then rides it (navmesh_info(...).surface)."""
+        then rides it (navmesh_info(...).surface). MESH_NOT_IN_NAVMESH meshes are left out, MESH_OBSTACLE
+        ones only block, and each mesh's area goes to the polygons over it. progress: callable(fraction,
+        stage) -> bool, called on this thread with fractions from 0 to 1; False cancels the build
+        (NavLinkError with STATUS_CANCELLED, nothing added); an exception it raises cancels the build and
+        is raised here."""
         d = lib.nl_default_navmesh_build_def()
         d.agent = agent if agent is not None else default_agent_type()
         if surface is not None:
@@ -1436,7 +1445,11 @@ class World:
             data = settings_json.encode()
             d.settings_json, d.settings_json_length = data, len(data)
         navmesh = NavmeshId()
-        _check(lib.nl_navmesh_build(self.pointer, byref(d), byref(navmesh)))
+
+        def build(progress_fn: Any, progress_user: Any) -> int:
+            d.progress, d.progress_user = progress_fn, progress_user
+            return lib.nl_navmesh_build(self.pointer, byref(d), byref(navmesh))
+        _with_progress(progress, build)
         return navmesh
 
     def add_navmesh(self, vertices: FloatValues, indices: IndexValues,

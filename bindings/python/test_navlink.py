@@ -611,6 +611,102 @@ class NavmeshTest(NavLinkTestCase):
             self.assertEqual([l.id for l in world.links(ledge)], before)
 
 
+# A horizontal quad's triangles: counter-clockwise seen from above (its front faces up), and the same
+# triangles wound the other way.
+FRONT_UP, FRONT_DOWN = [0, 1, 2, 0, 2, 3], [0, 2, 1, 0, 3, 2]
+
+
+def add_quad(world, x0, z0, x1, z1, y, winding, flags=0, area=0):
+    """A horizontal quad, x in [x0, x1], z in [z0, z1] at height y."""
+    return world.add_mesh([x0, y, z0, x0, y, z1, x1, y, z1, x1, y, z0], winding, flags=flags, area=area)
+
+
+def polygon_at(world, navmesh, point):
+    """The navmesh polygon within (0.4, 0.3, 0.4) of the point, or None."""
+    hit = world.find_nearest(navmesh, [point], (0.4, 0.3, 0.4))[0]
+    return world.polygon(navmesh, hit.polygon) if hit.found else None
+
+
+class MeshInputTest(NavLinkTestCase):
+    """What a navmesh build takes from the level (tests/abi/navmesh_build_test.c's winding, mesh_roles,
+    mesh_areas and build_progress, with their geometry), and a build's progress and cancel."""
+
+    def test_a_clockwise_floor_builds_only_with_the_clockwise_flag(self):
+        with nl.World() as world:
+            # Wound clockwise (fronts down): nothing to walk on, and the message names the flag to set.
+            floor = add_quad(world, -10, -10, 10, 10, 0, FRONT_DOWN)
+            self.assertFails(nl.STATUS_NOT_FOUND, "NL_MESH_CLOCKWISE", world.build_navmesh)
+            world.remove_mesh(floor)
+            floor = add_quad(world, -10, -10, 10, 10, 0, FRONT_DOWN, flags=nl.MESH_CLOCKWISE)
+            self.assertEqual(world.mesh_info(floor).flags, nl.MESH_CLOCKWISE)
+            self.assertIsNotNone(polygon_at(world, world.build_navmesh(), (0, 0, 0)),
+                                 "the same floor flagged clockwise is walked on")
+
+    def test_an_obstacle_crate_is_not_walked_on_and_a_left_out_slab_is_not_built(self):
+        with nl.World() as world:
+            add_quad(world, -10, -10, 10, 10, 0, FRONT_UP)
+            # A 4 x 4 x 1 m crate, x and z in [3, 7]: its top is walkable as any floor, unless it is an obstacle.
+            crate = add_box(world, (3, 0, 3), (7, 1, 7))
+            self.assertIsNotNone(polygon_at(world, world.build_navmesh(), (5, 1, 5)), "an ordinary crate's top")
+            world.remove_mesh(crate)
+            crate = add_box(world, (3, 0, 3), (7, 1, 7), flags=nl.MESH_OBSTACLE)
+            self.assertEqual(world.mesh_info(crate).flags, nl.MESH_OBSTACLE)
+            navmesh = world.build_navmesh()
+            self.assertIsNone(polygon_at(world, navmesh, (5, 1, 5)), "an obstacle crate's top is not walked on")
+            self.assertIsNone(polygon_at(world, navmesh, (5, 0, 5)), "the floor under the obstacle is blocked")
+            self.assertIsNotNone(polygon_at(world, navmesh, (-5, 0, 5)), "the floor beside it is walkable")
+
+            # A slab 1 m over the floor leaves no headroom; left out of builds it leaves the floor, and rays meet it.
+            slab = add_quad(world, -8, -8, -2, -2, 1, FRONT_DOWN)
+            self.assertIsNone(polygon_at(world, world.build_navmesh(), (-5, 0, -5)), "no headroom under the slab")
+            world.remove_mesh(slab)
+            slab = add_quad(world, -8, -8, -2, -2, 1, FRONT_DOWN, flags=nl.MESH_NOT_IN_NAVMESH)
+            self.assertIsNotNone(polygon_at(world, world.build_navmesh(), (-5, 0, -5)), "a left-out slab leaves the floor")
+            hit = world.cast_rays([nl.Ray(nl.Vec3(-5, 5, -5), nl.Vec3(0, -1, 0), 10)])[0]
+            self.assertTrue(hit.hit == 1 and hit.mesh == slab and abs(hit.point[1] - 1) < 1e-4, "a ray meets the slab")
+            self.assertFails(nl.STATUS_INVALID_ARGUMENT, "", add_quad, world, 0, 0, 1, 1, 0, FRONT_UP,
+                             flags=nl.MESH_OBSTACLE | nl.MESH_NOT_IN_NAVMESH)
+
+    def test_a_mesh_area_is_carried_into_the_built_polygons(self):
+        with nl.World() as world:
+            add_quad(world, -10, -10, 0, 10, 0, FRONT_UP)
+            east = add_quad(world, 0, -10, 10, 10, 0, FRONT_UP, area=5)
+            self.assertEqual(world.mesh_info(east).area, 5)
+            navmesh = world.build_navmesh()
+            east_polygon, west_polygon = polygon_at(world, navmesh, (5, 0, 0)), polygon_at(world, navmesh, (-5, 0, 0))
+            self.assertTrue(east_polygon is not None and east_polygon.area == 5, "the polygon over the east mesh")
+            self.assertTrue(west_polygon is not None and west_polygon.area == 0, "the polygon over the west mesh")
+            self.assertFails(nl.STATUS_INVALID_ARGUMENT, "area", add_quad, world, 0, 0, 1, 1, 0, FRONT_UP,
+                             area=nl.MESH_MAX_AREA + 1)
+
+    def test_a_build_reports_progress_and_can_be_cancelled(self):
+        with nl.World() as world:
+            add_box(world, (-10, 0, -10), (10, 1, 10))
+            calls = []
+            world.build_navmesh(progress=lambda f, stage: calls.append((f, stage, threading.get_ident())) or True)
+            fractions = [f for f, _, _ in calls]
+            self.assertGreaterEqual(len(fractions), 2)
+            self.assertTrue(all(b >= a for a, b in zip(fractions, fractions[1:])), "never goes back: %s" % fractions)
+            self.assertEqual((fractions[0], fractions[-1]), (0.0, 1.0))
+            self.assertIn("rasterising the level", {stage for _, stage, _ in calls})
+            self.assertEqual({thread for _, _, thread in calls}, {threading.get_ident()}, "on the calling thread")
+
+            # Cancelled while rasterising: STATUS_CANCELLED, no navmesh added, nothing reported after the cancel.
+            stages = []
+
+            def cancel_while_rasterising(fraction, stage):
+                stages.append(stage)
+                return stage != "rasterising the level"
+            self.assertFails(nl.STATUS_CANCELLED, "cancelled", world.build_navmesh, progress=cancel_while_rasterising)
+            self.assertEqual(stages[-1], "rasterising the level", "the build stopped at its cancel: %s" % stages)
+            self.assertEqual(len(world.navmeshes()), 1, "a cancelled build adds no navmesh")
+
+            def boom(fraction, stage):
+                raise KeyError("progress raises")
+            self.assertRaises(KeyError, world.build_navmesh, progress=boom)
+            self.assertEqual(len(world.navmeshes()), 1, "a build whose progress raised adds nothing")
+
+
 class LinkTest(NavLinkTestCase):
     def test_generated_jump_links(self):
         with nl.World() as world:
