@@ -50,8 +50,9 @@ c_enum! {
 }
 
 c_enum! {
-    /// How a path segment is travelled: walking, or the kind of link taken (`nl_link_kind`). A plugin's
-    /// kinds are `Other(k)` with `k >= FIRST_PLUGIN_KIND`.
+    /// How a path segment is travelled: walking, or the kind of link taken (`nl_link_kind`); also a link's
+    /// kind (`Link::kind`, `LinkDef::kind`). A plugin's kinds are `Other(k)` with
+    /// `k >= LinkKind::FIRST_PLUGIN_KIND`.
     pub enum LinkKind {
         /// A path segment that walks; never a link's kind.
         Walk = sys::NL_SEGMENT_WALK,
@@ -62,9 +63,22 @@ c_enum! {
 }
 
 impl LinkKind {
+    /// The first raw kind a link-kind plugin can register (`NL_LINK_FIRST_PLUGIN_KIND`).
+    pub const FIRST_PLUGIN_KIND: u32 = sys::NL_LINK_FIRST_PLUGIN_KIND;
+
     /// A kind a link-kind plugin registered.
     pub fn is_plugin(self) -> bool {
         self.to_raw() >= sys::NL_LINK_FIRST_PLUGIN_KIND
+    }
+}
+
+c_enum! {
+    /// How the Recast builder partitions the walkable area into regions (`RecastSettings::partition`,
+    /// `NL_RECAST_PARTITION_*`).
+    pub enum RecastPartition {
+        Watershed = sys::NL_RECAST_PARTITION_WATERSHED,
+        Monotone = sys::NL_RECAST_PARTITION_MONOTONE,
+        Layers = sys::NL_RECAST_PARTITION_LAYERS,
     }
 }
 

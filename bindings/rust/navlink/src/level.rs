@@ -53,17 +53,6 @@ impl BitOrAssign for MeshFlags {
     }
 }
 
-/// A `MeshInfo`'s flags as [`MeshFlags`] (its raw `flags` is the `u32`; `area` is read as it is).
-pub trait MeshInfoExt {
-    fn mesh_flags(&self) -> MeshFlags;
-}
-
-impl MeshInfoExt for MeshInfo {
-    fn mesh_flags(&self) -> MeshFlags {
-        MeshFlags::from_raw(self.flags)
-    }
-}
-
 /// What a mesh def carries besides geometry.
 #[derive(Clone, Copy, Debug, Default)]
 pub struct MeshOptions {
@@ -150,29 +139,35 @@ impl World {
     }
 
     pub fn mesh_info(&self, mesh: MeshId) -> Result<MeshInfo> {
-        let mut info = MeshInfo::default(); // size set
+        let mut info = sys::nl_mesh_info_init();
         check(unsafe { sys::nl_mesh_get_info(self.raw(), mesh, &mut info) })?;
-        Ok(info)
+        Ok(info.into())
     }
 
     pub fn meshes(&self) -> Result<Vec<MeshId>> {
         two_call(|buffer, capacity, count| unsafe { sys::nl_world_get_meshes(self.raw(), buffer, capacity, count) })
     }
 
-    /// Casts every ray into `hits` (one per ray; their contents are overwritten, `size` included).
+    /// Casts every ray into `hits` (one per ray; the first `rays.len()` are overwritten). The library
+    /// writes `nl_ray_hit`s, copied into `hits`: this saves the caller's allocation, not the binding's.
     pub fn cast_rays_into(&self, rays: &[Ray], hits: &mut [RayHit]) -> Result<()> {
         if hits.len() < rays.len() {
             return Err(Error::binding(sys::NL_STATUS_INVALID_ARGUMENT, "cast_rays_into: fewer hits than rays".into()));
         }
-        if let Some(first) = hits.first_mut() {
-            *first = RayHit::default(); // the element size the library writes with
+        for (hit, c) in hits.iter_mut().zip(self.cast_rays_c(rays)?) {
+            *hit = c.into();
         }
-        check(unsafe { sys::nl_world_cast_rays(self.raw(), rays.as_ptr(), rays.len() as u32, hits.as_mut_ptr()) }).map(drop)
+        Ok(())
     }
 
     pub fn cast_rays(&self, rays: &[Ray]) -> Result<Vec<RayHit>> {
-        let mut hits = vec![RayHit::default(); rays.len()];
-        self.cast_rays_into(rays, &mut hits)?;
+        Ok(self.cast_rays_c(rays)?.into_iter().map(RayHit::from).collect())
+    }
+
+    fn cast_rays_c(&self, rays: &[Ray]) -> Result<Vec<sys::nl_ray_hit>> {
+        // nl_ray_hit_init() sets the element size the library writes with.
+        let mut hits = vec![sys::nl_ray_hit_init(); rays.len()];
+        check(unsafe { sys::nl_world_cast_rays(self.raw(), rays.as_ptr(), rays.len() as u32, hits.as_mut_ptr()) })?;
         Ok(hits)
     }
 

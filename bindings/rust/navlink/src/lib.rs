@@ -6,10 +6,11 @@
 //!   function that takes a world safe to call from several threads at once, except `nl_world_destroy`,
 //!   which only `Drop` calls, when no borrow is left.
 //! - Failures are [`Error`]s: the `nl_status` and the library's message for the failing call.
-//! - Value types (ids, rays, links, path points, agent infos...) are navlink-sys's `#[repr(C)]` structs
-//!   under Rust names; lists come back as `Vec`s, batch queries take slices. Output structs that may grow
-//!   (`Link`, `PathPoint`, `RayHit`, `AgentInfo`...) start with `size`: their `Default` sets it, and every
-//!   method that hands the library an output sets it too.
+//! - Value types are plain Rust structs: those the header lets grow (`Link`, `LinkDef`, `RayHit`,
+//!   `MeshInfo`, `NavmeshInfo`, `RecastSettings`, `PathPoint`, `AgentInfo`...) without `size` and
+//!   `reserved`, with `bool` flags, enums for kinds ([`LinkKind`]...) and `Default` as the header's
+//!   defaults; ids, rays, segments and bodies are navlink-sys's `#[repr(C)]` structs under Rust names
+//!   (they carry neither). Lists come back as `Vec`s, batch queries take slices.
 //! - Callbacks are closures behind trampolines that catch panics: a panic never unwinds into C.
 mod agents;
 mod callbacks;
@@ -28,12 +29,12 @@ mod world;
 
 pub use agents::{default_agent_def, AgentInfoExt};
 pub use error::{status_string, Error, ErrorKind, Result};
-pub use kinds::{AgentEventKind, AgentReason, AgentState, LinkKind, PathOutcome, TrajectoryKind};
-pub use level::{MeshFlags, MeshInfoExt, MeshOptions};
+pub use kinds::{AgentEventKind, AgentReason, AgentState, LinkKind, PathOutcome, RecastPartition, TrajectoryKind};
+pub use level::{MeshFlags, MeshOptions};
 pub use callbacks::Progress;
 pub use links::{default_link_def, default_link_settings, link_settings_from_json, LinkDefExt, LinkExt, LinksLoadOptions};
 pub use navmesh::{default_agent_type, default_recast_settings, NavmeshBuild, NavmeshDetail, NavmeshInput};
-pub use navmesh_files::{default_navmesh_load_def, describe_navmesh_file, NavmeshLoadOptions};
+pub use navmesh_files::{describe_navmesh_file, NavmeshLoadOptions};
 pub use paths::{default_agent_capabilities, FinishedPath, PathBudget, PathQuery, PathRequest, PathResult};
 pub use plugins::PluginSummary;
 pub use types::*;

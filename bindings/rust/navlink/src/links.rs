@@ -1,18 +1,18 @@
 //! Links: generation, the link store, JSON.
 use crate::callbacks::{with_progress, Progress};
 use crate::error::{check, Error, Result};
-use crate::list::two_call;
+use crate::list::two_call_as;
 use crate::types::{LinkGenerationReport, Link, LinkDef, LinkId, LinkSettings, NavmeshId};
 use crate::world::World;
 use navlink_sys as sys;
 use std::os::raw::c_char;
 use std::ptr;
 
-/// A manual one-way link, enabled, cost modifier 1, requirements measured from its ends
-/// (`requirements_as_given` 0), within one navmesh (`landing_navmesh` null; `tolerance` 0.25 for when it
-/// is set): set start and end.
+/// A manual one-way link (`LinkKind::Manual`), enabled, cost modifier 1, requirements measured from its
+/// ends (`requirements_as_given` false), within one navmesh (`landing_navmesh` null; `tolerance` 0.25 for
+/// when it is set): set start and end. Also `LinkDef::default()` (`nl_default_link_def`).
 pub fn default_link_def() -> LinkDef {
-    unsafe { sys::nl_default_link_def() }
+    LinkDef::default()
 }
 
 /// How to load a links JSON file (`World::load_links_json`). `Default`: only links made for the navmesh's
@@ -63,22 +63,15 @@ impl LinkDefExt for LinkDef {
     }
 }
 
-/// A `Link`'s cross-link fields (navlink.h 0.3) as Rust values.
+/// A `Link`'s landing navmesh (navlink.h 0.3) as an `Option` (whether it holds now is `Link::holds`).
 pub trait LinkExt {
     /// The navmesh a cross link's end is on (`landing_navmesh`); `None` for a link within its navmesh.
     fn landing(&self) -> Option<NavmeshId>;
-    /// Whether the link can be taken as the navmeshes stand now (`holds`): always for a link within one
-    /// navmesh; for a cross link, while its end, seen from its start, is within `tolerance` of where it was.
-    fn holds_now(&self) -> bool;
 }
 
 impl LinkExt for Link {
     fn landing(&self) -> Option<NavmeshId> {
         non_null_navmesh(self.landing_navmesh)
-    }
-
-    fn holds_now(&self) -> bool {
-        self.holds != 0
     }
 }
 
@@ -90,6 +83,11 @@ pub fn default_link_settings() -> LinkSettings {
 fn c_link_settings(settings: Option<&LinkSettings>) -> sys::nl_link_settings {
     let defaults = unsafe { sys::nl_default_link_settings() };
     settings.map_or(defaults, |s| s.to_c(defaults))
+}
+
+/// The C def for `def`, over the header's defaults.
+fn c_link_def(def: &LinkDef) -> sys::nl_link_def {
+    def.to_c(unsafe { sys::nl_default_link_def() })
 }
 
 /// Applies a JSON object's keys to `base` (the defaults when `None`) and validates the result.
@@ -114,14 +112,16 @@ impl World {
     /// landing one. `INVALID_ARGUMENT` for a two-way cross link or one that lands on its own navmesh,
     /// `INVALID_HANDLE` for a stale landing navmesh.
     pub fn add_link(&self, navmesh: NavmeshId, def: &LinkDef) -> Result<LinkId> {
+        let def = c_link_def(def);
         let mut id = LinkId::default();
-        check(unsafe { sys::nl_link_add(self.raw(), navmesh, def, &mut id) })?;
+        check(unsafe { sys::nl_link_add(self.raw(), navmesh, &def, &mut id) })?;
         Ok(id)
     }
 
     /// Replaces the link's fields with `def`'s (errors as `add_link`).
     pub fn update_link(&self, link: LinkId, def: &LinkDef) -> Result<()> {
-        check(unsafe { sys::nl_link_update(self.raw(), link, def) }).map(drop)
+        let def = c_link_def(def);
+        check(unsafe { sys::nl_link_update(self.raw(), link, &def) }).map(drop)
     }
 
     pub fn remove_link(&self, link: LinkId) -> Result<()> {
@@ -133,15 +133,15 @@ impl World {
     }
 
     pub fn link(&self, link: LinkId) -> Result<Link> {
-        let mut out = Link::default(); // size set
+        let mut out = sys::nl_link_init();
         check(unsafe { sys::nl_link_get(self.raw(), link, &mut out) })?;
-        Ok(out)
+        Ok(out.into())
     }
 
     /// The navmesh's links (generated and manual), in the order they were added.
     pub fn links(&self, navmesh: NavmeshId) -> Result<Vec<Link>> {
-        // two_call's buffer is of Link::default(), whose size tells the library the element size.
-        two_call(|buffer, capacity, count| unsafe { sys::nl_navmesh_get_links(self.raw(), navmesh, buffer, capacity, count) })
+        // two_call's buffer is of nl_link::default(), whose size tells the library the element size.
+        two_call_as(|buffer, capacity, count| unsafe { sys::nl_navmesh_get_links(self.raw(), navmesh, buffer, capacity, count) })
     }
 
     /// Removes the navmesh's generated links; returns how many went.
@@ -166,11 +166,11 @@ impl World {
             settings.plugin_settings_json = non_null(json);
             settings.plugin_settings_json_length = json.len();
         }
-        let mut report = LinkGenerationReport::default(); // size set
+        let mut report = sys::nl_link_generation_report_init();
         with_progress(progress, |function, user| unsafe {
             sys::nl_navmesh_generate_links(self.raw(), navmesh, &settings, function, user, &mut report)
         })?;
-        Ok(report)
+        Ok(report.into())
     }
 
     /// Generates the jump and drop links between two navmeshes (a ledge and a platform; either may ride a
@@ -191,11 +191,11 @@ impl World {
         progress: Option<Progress<'_>>,
     ) -> Result<LinkGenerationReport> {
         let settings = c_link_settings(settings);
-        let mut report = LinkGenerationReport::default(); // size set
+        let mut report = sys::nl_link_generation_report_init();
         with_progress(progress, |function, user| unsafe {
             sys::nl_navmesh_generate_cross_links(self.raw(), first, second, tolerance, &settings, function, user, &mut report)
         })?;
-        Ok(report)
+        Ok(report.into())
     }
 
     /// Regenerates only what geometry changes inside `[box_min, box_max]` can have affected.
@@ -206,11 +206,11 @@ impl World {
         box_max: [f32; 3],
         progress: Option<Progress<'_>>,
     ) -> Result<LinkGenerationReport> {
-        let mut report = LinkGenerationReport::default(); // size set
+        let mut report = sys::nl_link_generation_report_init();
         with_progress(progress, |function, user| unsafe {
             sys::nl_navmesh_update_links_in_box(self.raw(), navmesh, box_min.as_ptr(), box_max.as_ptr(), function, user, &mut report)
         })?;
-        Ok(report)
+        Ok(report.into())
     }
 
     /// The navmesh's links as JSON (schema "navlink-links" version 1); `INVALID_ARGUMENT` for a navmesh

@@ -4,7 +4,7 @@ use navlink_sys as sys;
 
 /// Asks the count (null buffer), then fills a buffer of that size. The list may grow in between
 /// (another thread adds to it): BUFFER_TOO_SMALL then, and we ask again. The buffer holds `T::default()`,
-/// which for growable elements (`Link`) sets the `size` the library reads the element size from.
+/// which for growable C elements (`nl_link`) sets the `size` the library reads the element size from.
 pub(crate) fn two_call<T: Clone + Default>(mut call: impl FnMut(*mut T, u32, &mut u32) -> u32) -> Result<Vec<T>> {
     loop {
         let mut count = 0u32;

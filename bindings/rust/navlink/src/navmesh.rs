@@ -79,8 +79,9 @@ pub fn default_agent_type() -> AgentType {
     unsafe { sys::nl_default_agent_type() }
 }
 
+/// The Recast builder's defaults (`nl_default_recast_settings`); also `RecastSettings::default()`.
 pub fn default_recast_settings() -> RecastSettings {
-    unsafe { sys::nl_default_recast_settings() }
+    RecastSettings::default()
 }
 
 impl World {
@@ -100,7 +101,8 @@ impl World {
         let mut def = unsafe { sys::nl_default_navmesh_build_def() };
         def.agent = build.agent;
         def.builder = builder.as_ref().map_or(ptr::null(), |b| b.as_ptr());
-        def.settings = build.recast.as_ref().map_or(ptr::null(), |r| r as *const RecastSettings as *const c_void);
+        let recast = build.recast.map(|r| r.to_c(unsafe { sys::nl_default_recast_settings() }));
+        def.settings = recast.as_ref().map_or(ptr::null(), |r| r as *const sys::nl_recast_settings as *const c_void);
         if let Some(json) = build.settings_json {
             // A non-null pointer even for "", which is not a JSON object: the library says so.
             def.settings_json = if json.is_empty() { b"\0".as_ptr().cast() } else { json.as_ptr().cast() };
@@ -149,9 +151,9 @@ impl World {
     }
 
     pub fn navmesh_info(&self, navmesh: NavmeshId) -> Result<NavmeshInfo> {
-        let mut info = NavmeshInfo::default(); // size set
+        let mut info = sys::nl_navmesh_info_init();
         check(unsafe { sys::nl_navmesh_get_info(self.raw(), navmesh, &mut info) })?;
-        Ok(info)
+        Ok(info.into())
     }
 
     /// The navmesh's vertices after welding.
@@ -162,9 +164,9 @@ impl World {
     }
 
     pub fn polygon(&self, navmesh: NavmeshId, polygon: u32) -> Result<NavPolygon> {
-        let mut out = NavPolygon::default(); // size set
+        let mut out = sys::nl_nav_polygon_init();
         check(unsafe { sys::nl_navmesh_get_polygon(self.raw(), navmesh, polygon, &mut out) })?;
-        Ok(out)
+        Ok(out.into())
     }
 
     pub fn boundary_edges(&self, navmesh: NavmeshId) -> Result<Vec<BoundaryEdge>> {
@@ -175,7 +177,7 @@ impl World {
 
     /// The navmesh point nearest each query point within the box `point +- half_extents`.
     pub fn find_nearest(&self, navmesh: NavmeshId, points: &[[f32; 3]], half_extents: [f32; 3]) -> Result<Vec<NavPoint>> {
-        let mut out = vec![NavPoint::default(); points.len()];
+        let mut out = vec![sys::nl_nav_point::default(); points.len()];
         check(unsafe {
             sys::nl_navmesh_find_nearest(
                 self.raw(),
@@ -186,7 +188,7 @@ impl World {
                 out.as_mut_ptr(),
             )
         })?;
-        Ok(out)
+        Ok(out.into_iter().map(NavPoint::from).collect())
     }
 
     pub fn navmeshes(&self) -> Result<Vec<NavmeshId>> {

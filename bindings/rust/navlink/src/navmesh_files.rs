@@ -2,7 +2,7 @@
 //! loaded with no Recast build.
 use crate::error::{check, Error, Result};
 use crate::level::{c_string, path_bytes};
-use crate::types::{MeshId, NavmeshFileInfo, NavmeshId, NavmeshLoadDef};
+use crate::types::{MeshId, NavmeshFileInfo, NavmeshId};
 use crate::world::World;
 use navlink_sys as sys;
 use std::os::raw::c_void;
@@ -21,25 +21,35 @@ pub struct NavmeshLoadOptions {
 }
 
 impl NavmeshLoadOptions {
-    fn def(&self) -> NavmeshLoadDef {
-        let mut def = default_navmesh_load_def();
+    /// The C def: the header's defaults (`nl_default_navmesh_load_def`) with these options.
+    fn def(&self) -> sys::nl_navmesh_load_def {
+        let mut def = unsafe { sys::nl_default_navmesh_load_def() };
         def.surface = self.surface.unwrap_or_default();
-        def.flags = if self.same_level { sys::NL_NAVMESH_LOAD_SAME_LEVEL } else { 0 };
+        if self.same_level {
+            def.flags |= sys::NL_NAVMESH_LOAD_SAME_LEVEL;
+        }
         def
     }
 }
 
-/// The null surface and no flags (for a raw `nl_navmesh_load`; `World::load_navmesh` takes
-/// `NavmeshLoadOptions`).
-pub fn default_navmesh_load_def() -> NavmeshLoadDef {
-    unsafe { sys::nl_default_navmesh_load_def() }
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn default_options_are_the_c_default_def() {
+        assert_eq!(NavmeshLoadOptions::default().def(), unsafe { sys::nl_default_navmesh_load_def() });
+        let options = NavmeshLoadOptions { surface: Some(MeshId { index1: 3, generation: 1 }), same_level: true };
+        let def = options.def();
+        assert_eq!((def.surface, def.flags), (MeshId { index1: 3, generation: 1 }, sys::NL_NAVMESH_LOAD_SAME_LEVEL));
+    }
 }
 
 /// Reads a navmesh file's bytes without loading it (no world needed): what it holds, and what it was made
 /// for as a JSON object (`{"builder", "builder_settings", "link_settings", "link_plugins", "level_hash", "writer"}`).
 /// `VERSION_MISMATCH` (not a NavLink navmesh file, or a newer format), `PARSE_ERROR` (truncated or corrupted).
 pub fn describe_navmesh_file(data: &[u8]) -> Result<(NavmeshFileInfo, String)> {
-    let mut info = NavmeshFileInfo::default(); // size set
+    let mut info = sys::nl_navmesh_file_info::default(); // size set
     let mut length = 0usize;
     check(unsafe {
         sys::nl_navmesh_file_describe(data.as_ptr().cast(), data.len(), &mut info, ptr::null_mut(), 0, &mut length)
@@ -58,7 +68,7 @@ pub fn describe_navmesh_file(data: &[u8]) -> Result<(NavmeshFileInfo, String)> {
     buffer.truncate(length);
     let json = String::from_utf8(buffer)
         .map_err(|_| Error::binding(sys::NL_STATUS_INTERNAL_ERROR, "made-for JSON is not UTF-8".into()))?;
-    Ok((info, json))
+    Ok((NavmeshFileInfo::from(info), json))
 }
 
 impl World {

@@ -1,7 +1,9 @@
-//! Plain Rust structs over the header's growable structs: the same fields without `size` and
-//! `reserved`, `u8` flags as `bool`, kinds as enums. `From<c struct>` reads one; `to_c` writes one over
-//! a C value that already has its `size` (and the header's defaults for fields not mirrored).
-use crate::kinds::{AgentEventKind, AgentReason, AgentState, LinkKind, PathOutcome, TrajectoryKind};
+//! Plain Rust structs over the header's structs that carry `size` or `reserved`: the same fields without
+//! them, `u8` (and `uint32_t` yes/no) flags as `bool`, kinds as enums, flag words as `MeshFlags`, nested
+//! such structs as their plain structs. `From<c struct>` reads one; `to_c` writes one over a C value that
+//! already has its `size` (and the header's defaults for fields not mirrored).
+use crate::kinds::{AgentEventKind, AgentReason, AgentState, LinkKind, PathOutcome, RecastPartition, TrajectoryKind};
+use crate::level::MeshFlags;
 
 /// A C field's value as its Rust field's type.
 pub(crate) trait FromC<C> {
@@ -37,6 +39,31 @@ impl IntoC<u8> for bool {
     }
 }
 
+/// A `uint32_t` yes/no field (`nl_navmesh_file_info::rides_surface`).
+impl FromC<u32> for bool {
+    fn from_c(c: u32) -> bool {
+        c != 0
+    }
+}
+
+impl IntoC<u32> for bool {
+    fn into_c(self) -> u32 {
+        self as u32
+    }
+}
+
+impl FromC<u32> for MeshFlags {
+    fn from_c(c: u32) -> MeshFlags {
+        MeshFlags::from_raw(c)
+    }
+}
+
+impl IntoC<u32> for MeshFlags {
+    fn into_c(self) -> u32 {
+        self.to_raw()
+    }
+}
+
 macro_rules! enum_field {
     ($($enum:ty),*) => {$(
         impl FromC<u32> for $enum {
@@ -51,10 +78,11 @@ macro_rules! enum_field {
         }
     )*};
 }
-enum_field!(AgentEventKind, AgentReason, AgentState, LinkKind, PathOutcome, TrajectoryKind);
+enum_field!(AgentEventKind, AgentReason, AgentState, LinkKind, PathOutcome, RecastPartition, TrajectoryKind);
 
 /// A plain struct mirroring some fields of a C struct, with `From<C>`, `to_c` and a `Default` taken
-/// from the C side's default value (`$default`).
+/// from the C side's default value (`$default`). It is also a field type of other plain structs
+/// (`FromC`/`IntoC`: written back over `$default`).
 macro_rules! plain_struct {
     (
         $(#[$meta:meta])*
@@ -87,6 +115,18 @@ macro_rules! plain_struct {
             pub(crate) fn to_c(&self, mut base: $c) -> $c {
                 $(base.$field = $crate::plain::IntoC::into_c(self.$field);)*
                 base
+            }
+        }
+
+        impl $crate::plain::FromC<$c> for $name {
+            fn from_c(c: $c) -> $name {
+                $name::from(c)
+            }
+        }
+
+        impl $crate::plain::IntoC<$c> for $name {
+            fn into_c(self) -> $c {
+                self.to_c($default)
             }
         }
     };

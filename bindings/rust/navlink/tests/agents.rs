@@ -7,8 +7,8 @@ mod common;
 
 use common::*;
 use navlink::{
-    default_agent_def, default_agent_type, default_link_def, link_kind, status, sys,
-    AgentEvent, AgentId, AgentInfo, AgentInfoExt, AgentType, LinkDef, LinkDefExt, LinkId, MeshFlags, MeshId, MeshOptions,
+    default_agent_def, default_agent_type, default_link_def, status, sys,
+    AgentEvent, AgentId, AgentInfo, AgentInfoExt, AgentType, LinkDef, LinkDefExt, LinkId, LinkKind, MeshFlags, MeshId, MeshOptions,
     NavmeshId, NavmeshInput, World, WorldOptions,
 };
 
@@ -50,7 +50,7 @@ fn defaults() {
 fn walker_goes_round_and_jumper_jumps() {
     let world = World::new().unwrap();
     let navmesh = add_bridge_level(&world);
-    assert!(world.links(navmesh).unwrap().iter().any(|l| l.kind == link_kind::JUMP), "jump links across the gap");
+    assert!(world.links(navmesh).unwrap().iter().any(|l| l.kind == LinkKind::Jump), "jump links across the gap");
     let walker = add_agent(&world, navmesh, 1.0, 2.0, 0.0, 11);
     let jumper = add_agent(&world, navmesh, 1.0, 3.0, 3.0, 22);
     assert!(walker != jumper && world.is_agent_valid(walker));
@@ -116,7 +116,7 @@ fn walker_goes_round_and_jumper_jumps() {
     let (started, finished) = (of_jumper(navlink::AgentEventKind::LinkStarted), of_jumper(navlink::AgentEventKind::LinkFinished));
     assert!(started.len() == 1 && finished.len() == 1 && started[0].link == finished[0].link, "{:?}", events);
     let jump = world.link(started[0].link).unwrap();
-    assert!(jump.kind == link_kind::JUMP && jump.generated == 1);
+    assert!(jump.kind == LinkKind::Jump && jump.generated);
     let expected = [
         navlink::AgentState::Idle,
         navlink::AgentState::Waiting,
@@ -243,14 +243,14 @@ fn a_ferry_carries_walkers_across_a_chasm() {
     // The gangways: manual cross links whose requirements are taken as given (all zero: a gap of 0, walked,
     // not jumped), each placed while the shuttle stands at its dock.
     let gangway = |navmesh: NavmeshId, start: [f32; 3], landing: NavmeshId, end: [f32; 3]| -> LinkId {
-        let def = LinkDef { start, end, requirements_as_given: 1, ..default_link_def() }.with_landing(Some(landing));
-        assert_eq!((def.kind, def.requirements.gap), (link_kind::MANUAL, 0.0));
+        let def = LinkDef { start, end, requirements_as_given: true, ..default_link_def() }.with_landing(Some(landing));
+        assert_eq!((def.kind, def.requirements.gap), (LinkKind::Manual, 0.0));
         world.add_link(navmesh, &def).unwrap()
     };
     let leave = gangway(deck, [15.4, 0.0, 3.0], ledges, [16.6, 0.0, 3.0]);
     world.set_mesh_transform(shuttle, &shuttle_at(NEAR_DOCK)).unwrap();
     let board = gangway(ledges, [5.6, 0.0, 3.0], deck, [6.6, 0.0, 3.0]);
-    assert_eq!((world.link(board).unwrap().holds, world.link(leave).unwrap().holds), (1, 0));
+    assert_eq!((world.link(board).unwrap().holds, world.link(leave).unwrap().holds), (true, false));
 
     let walkers: Vec<AgentId> = [2.0, 4.0]
         .iter()

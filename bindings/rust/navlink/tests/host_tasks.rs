@@ -51,13 +51,13 @@ fn grid_rays() -> Vec<Ray> {
 
 /// A link without its ids (they carry the world's tag), as bit patterns.
 fn shape(l: &Link) -> Vec<u32> {
-    let mut v = vec![l.kind];
+    let mut v = vec![l.kind.to_raw()];
     v.extend(l.start.iter().chain(l.end.iter()).chain(l.apex.iter()).map(|f| f.to_bits()));
     v.extend([l.requirements.gap, l.requirements.rise, l.requirements.drop, l.requirements.length].iter().map(|f| f.to_bits()));
     v
 }
 
-fn run(world: &World) -> (Vec<(u8, u32)>, Vec<Vec<u32>>) {
+fn run(world: &World) -> (Vec<(bool, u32)>, Vec<Vec<u32>>) {
     add_gap_level(world);
     let hits = world.cast_rays(&grid_rays()).unwrap().iter().map(|h| (h.hit, h.distance.to_bits())).collect();
     let navmesh = world.build_navmesh(&NavmeshBuild::new(default_agent_type())).unwrap();

@@ -41,9 +41,10 @@ fn meshes_and_rays() {
             Ray { origin: [8.0, 2.0, 0.0], direction: [0.0, -1.0, 0.0], max_distance: 100.0 },
         ])
         .unwrap();
-    assert!(hits[0].hit == 1 && hits[0].mesh == floor);
+    assert!(hits[0].hit && hits[0].mesh == floor);
     assert!((hits[0].distance - 2.0).abs() < 1e-5 && (hits[0].normal[1] - 1.0).abs() < 1e-5);
-    assert!(hits[1].hit == 0 && hits[1].distance == 0.0);
+    assert!(!hits[1].hit && hits[1].distance == 0.0);
+    assert_eq!(hits[1], navlink::RayHit::default(), "a miss is all zero");
 
     // A movable 2 x 2 m tile 1 m up at x = 4, then lifted to 3.5 m.
     let tile = [-1.0, 0.0, -1.0, 1.0, 0.0, -1.0, 1.0, 0.0, 1.0, -1.0, 0.0, 1.0];
@@ -113,10 +114,15 @@ fn invalid_input_and_the_log_callback() {
         assert_eq!(sys::nl_world_cast_rays(world.as_ptr(), &ray, 1, hits.as_mut_ptr()), status::SUCCESS);
         assert!(hits[0].hit == 1 && hits[0].size as usize == std::mem::size_of::<sys::nl_ray_hit>());
     }
-    // The safe API sets it in a slice the caller made any way it liked.
-    let mut mine: [navlink::RayHit; 2] = unsafe { std::mem::zeroed() };
+    // The safe API's RayHit has no size to set: the binding lays out the C array itself and copies the
+    // hits into the caller's slice, leaving the elements past the rays as they were.
+    let stale = navlink::RayHit { hit: true, distance: 7.0, ..Default::default() };
+    let mut mine = [stale; 3];
     world.cast_rays_into(&[down(0.0, 0.0), down(9.0, 9.0)], &mut mine).unwrap();
-    assert!(mine[0].hit == 1 && mine[1].hit == 0 && mine[1].size == mine[0].size && mine[0].size != 0);
+    assert!(mine[0].hit && (mine[0].distance - 50.0).abs() < 1e-3 && mine[0].triangle < 2, "{:?}", mine[0]);
+    assert_eq!(mine[1], navlink::RayHit::default(), "a miss overwrites the stale hit");
+    assert_eq!(mine[2], stale, "past the rays: untouched");
+    assert_fails(world.cast_rays_into(&[down(0.0, 0.0)], &mut []), status::INVALID_ARGUMENT, "fewer hits than rays");
 }
 
 #[test]
@@ -142,7 +148,7 @@ fn queries_from_several_threads() {
                 for i in 0..50 {
                     let x = -4.0 + (t * 50 + i) as f32 * 0.04;
                     let hit = world.cast_rays(&[down(x, 0.0)]).unwrap()[0];
-                    assert!(hit.hit == 1 && (hit.distance - 50.0).abs() < 1e-3);
+                    assert!(hit.hit && (hit.distance - 50.0).abs() < 1e-3);
                 }
             });
         }

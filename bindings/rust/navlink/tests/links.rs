@@ -3,8 +3,8 @@ mod common;
 
 use common::*;
 use navlink::{
-    default_agent_capabilities, default_agent_type, default_link_def, link_kind, link_settings_from_json, status, AgentCapabilities,
-    AgentType, LinksLoadOptions, NavmeshBuild, NavmeshId, PathOutcome, PathQuery, World,
+    default_agent_capabilities, default_agent_type, default_link_def, link_settings_from_json, status, AgentCapabilities,
+    AgentType, LinkKind, LinksLoadOptions, NavmeshBuild, NavmeshId, PathOutcome, PathQuery, World,
 };
 
 fn gap_world() -> (World, NavmeshId) {
@@ -29,7 +29,7 @@ fn generated_jump_links() {
     let links = world.links(navmesh).unwrap();
     assert!(report.jump_links >= 5 && report.drop_links == 0 && links.len() as u32 == report.jump_links, "{:?}", report);
     for l in &links {
-        assert!(l.kind == link_kind::JUMP && l.generated == 1 && l.bidirectional == 1 && l.navmesh == navmesh);
+        assert!(l.kind == LinkKind::Jump && l.generated && l.bidirectional && l.navmesh == navmesh);
         assert!((l.requirements.gap - 2.0).abs() <= 0.05, "the gap is rim to rim: {}", l.requirements.gap);
         assert!(l.requirements.length >= 3.1 && l.requirements.length <= 3.9);
         assert!((l.requirements.length - horizontal_distance(l.start, l.end)).abs() < 1e-3);
@@ -70,21 +70,21 @@ fn manual_links_and_json() {
     let generated = world.links(navmesh).unwrap().len() as u32;
 
     let mut def = default_link_def();
-    assert!(def.kind == link_kind::MANUAL && def.enabled == 1 && def.cost_modifier == 1.0 && def.requirements_as_given == 0);
+    assert!(def.kind == LinkKind::Manual && def.enabled && def.cost_modifier == 1.0 && !def.requirements_as_given);
     def.start = [-5.0, 0.0, 4.0];
     def.end = [5.0, 0.0, 4.0];
     def.user_data = 7;
     def.requirements.gap = 99.0; // measured from the ends instead
     let manual = world.add_link(navmesh, &def).unwrap();
     let got = world.link(manual).unwrap();
-    assert!(got.kind == link_kind::MANUAL && got.generated == 0 && got.user_data == 7 && got.id == manual && got.navmesh == navmesh);
+    assert!(got.kind == LinkKind::Manual && !got.generated && got.user_data == 7 && got.id == manual && got.navmesh == navmesh);
     assert!((got.requirements.gap - 10.0).abs() < 1e-4, "the gap is measured from the ends: {}", got.requirements.gap);
 
     // Requirements taken as given: a link across the gap that asks only for an ability.
     let mut ability = default_link_def();
     ability.start = [-5.0, 0.0, -4.0];
     ability.end = [5.0, 0.0, -4.0];
-    ability.requirements_as_given = 1;
+    ability.requirements_as_given = true;
     ability.requirements.abilities = 4;
     let ability_link = world.add_link(navmesh, &ability).unwrap();
     let r = world.link(ability_link).unwrap().requirements;
@@ -97,9 +97,9 @@ fn manual_links_and_json() {
     let stuck = world.find_path(&PathQuery::new(navmesh, WEST, EAST, default_agent_capabilities())).unwrap();
     assert_eq!(stuck.outcome(), PathOutcome::Partial, "a walker without it does not");
     world.remove_link(ability_link).unwrap();
-    def.enabled = 0;
+    def.enabled = false;
     world.update_link(manual, &def).unwrap();
-    assert_eq!(world.link(manual).unwrap().enabled, 0);
+    assert!(!world.link(manual).unwrap().enabled);
 
     assert_eq!(world.remove_generated_links(navmesh).unwrap(), generated);
     assert_eq!(world.links(navmesh).unwrap().len(), 1);

@@ -6,7 +6,7 @@ mod common;
 
 use common::*;
 use navlink::{
-    default_agent_type, status, ErrorKind, MeshFlags, MeshId, MeshInfoExt, MeshOptions, NavPolygon, NavmeshBuild, NavmeshId, Ray,
+    default_agent_type, status, ErrorKind, MeshFlags, MeshId, MeshOptions, NavPolygon, NavmeshBuild, NavmeshId, Ray,
     World, MESH_MAX_AREA,
 };
 
@@ -32,7 +32,7 @@ fn build(world: &World) -> NavmeshId {
 /// The polygon within (0.4, 0.3, 0.4) of the point, if any.
 fn polygon_at(world: &World, navmesh: NavmeshId, point: [f32; 3]) -> Option<NavPolygon> {
     let hit = world.find_nearest(navmesh, &[point], [0.4, 0.3, 0.4]).unwrap()[0];
-    (hit.found != 0).then(|| world.polygon(navmesh, hit.polygon).unwrap())
+    hit.found.then(|| world.polygon(navmesh, hit.polygon).unwrap())
 }
 
 fn walkable_at(world: &World, navmesh: NavmeshId, point: [f32; 3]) -> bool {
@@ -49,7 +49,7 @@ fn a_clockwise_floor_builds_only_with_the_clockwise_flag() {
     world.remove_mesh(floor).unwrap();
 
     let floor = add_quad(&world, [-10.0, -10.0, 10.0, 10.0], 0.0, &FRONT_DOWN, &flagged(MeshFlags::CLOCKWISE)).unwrap();
-    assert_eq!(world.mesh_info(floor).unwrap().mesh_flags(), MeshFlags::CLOCKWISE, "the mesh keeps its flag");
+    assert_eq!(world.mesh_info(floor).unwrap().flags, MeshFlags::CLOCKWISE, "the mesh keeps its flag");
     assert!(walkable_at(&world, build(&world), [0.0, 0.0, 0.0]), "the same floor flagged clockwise is walked on");
 }
 
@@ -62,7 +62,7 @@ fn an_obstacle_crate_is_not_walked_on_and_a_left_out_slab_is_not_built() {
     assert!(walkable_at(&world, build(&world), [5.0, 1.0, 5.0]), "an ordinary crate's top is walkable");
     world.remove_mesh(crate_box).unwrap();
     let crate_box = add_box_with(&world, [3.0, 0.0, 3.0], [7.0, 1.0, 7.0], &flagged(MeshFlags::OBSTACLE));
-    assert!(world.mesh_info(crate_box).unwrap().mesh_flags().contains(MeshFlags::OBSTACLE));
+    assert!(world.mesh_info(crate_box).unwrap().flags.contains(MeshFlags::OBSTACLE));
     let navmesh = build(&world);
     assert!(!walkable_at(&world, navmesh, [5.0, 1.0, 5.0]), "an obstacle crate's top is not walked on");
     assert!(!walkable_at(&world, navmesh, [5.0, 0.0, 5.0]), "the floor under the obstacle is blocked");
@@ -76,7 +76,7 @@ fn an_obstacle_crate_is_not_walked_on_and_a_left_out_slab_is_not_built() {
     let slab = add_quad(&world, slab_corners, 1.0, &FRONT_DOWN, &flagged(MeshFlags::NOT_IN_NAVMESH)).unwrap();
     assert!(walkable_at(&world, build(&world), [-5.0, 0.0, -5.0]), "a slab left out of builds leaves the floor walkable");
     let hit = world.cast_rays(&[Ray { origin: [-5.0, 5.0, -5.0], direction: [0.0, -1.0, 0.0], max_distance: 10.0 }]).unwrap()[0];
-    assert!(hit.hit == 1 && hit.mesh == slab && (hit.point[1] - 1.0).abs() < 1e-4, "a ray meets the left-out slab: {:?}", hit);
+    assert!(hit.hit && hit.mesh == slab && (hit.point[1] - 1.0).abs() < 1e-4, "a ray meets the left-out slab: {:?}", hit);
 
     let both = add_quad(&world, [0.0, 0.0, 1.0, 1.0], 0.0, &FRONT_UP, &flagged(MeshFlags::OBSTACLE | MeshFlags::NOT_IN_NAVMESH));
     assert_eq!(both.expect_err("obstacle and left out").kind(), ErrorKind::InvalidArgument);

@@ -31,9 +31,9 @@ fn navmesh_from_the_level() {
     assert!(edges.iter().all(|e| ((e.outward[0].powi(2) + e.outward[2].powi(2)).sqrt() - 1.0).abs() < 1e-3));
 
     let found = world.find_nearest(navmesh, &[[-6.0, 3.0, 0.0], [0.0, 0.0, 0.0], [0.0, 0.0, 30.0]], [2.0, 4.0, 2.0]).unwrap();
-    assert!(found[0].found == 1 && (found[0].point[0] + 6.0).abs() < 1e-3 && found[0].point[1] < 0.5, "{:?}", found[0]);
-    assert!(found[1].found == 1 && found[1].point[0].abs() >= 1.5, "over the gap, a rim: {:?}", found[1]);
-    assert!(found[2].found == 0 && found[2].polygon == NO_POLYGON);
+    assert!(found[0].found && (found[0].point[0] + 6.0).abs() < 1e-3 && found[0].point[1] < 0.5, "{:?}", found[0]);
+    assert!(found[1].found && found[1].point[0].abs() >= 1.5, "over the gap, a rim: {:?}", found[1]);
+    assert!(!found[2].found && found[2].polygon == NO_POLYGON);
 
     assert_eq!(world.navmeshes().unwrap(), vec![navmesh]);
 
@@ -106,7 +106,7 @@ fn navmesh_on_a_moving_surface() {
     assert_eq!((info.surface, info.polygon_count), (raft, 1));
     let (on_raft, old_place) = ([10.0, 0.5, 3.0], [0.0, 0.5, 0.0]);
     let found = world.find_nearest(navmesh, &[old_place, on_raft], [0.5, 2.0, 0.5]).unwrap();
-    assert_eq!((found[0].found, found[1].found), (1, 0), "before the move: at the origin");
+    assert_eq!((found[0].found, found[1].found), (true, false), "before the move: at the origin");
 
     world.set_mesh_transform(raft, &RAFT_MOVED).unwrap();
     let info = world.navmesh_info(navmesh).unwrap();
@@ -120,8 +120,8 @@ fn navmesh_on_a_moving_surface() {
     );
     // (10, 3) is on the quad only if it was turned (its z half-width is 1.6 before).
     let found = world.find_nearest(navmesh, &[old_place, on_raft], [0.5, 2.0, 0.5]).unwrap();
-    assert_eq!(found[0].found, 0, "nothing left at the old place");
-    assert_eq!(found[1].found, 1);
+    assert!(!found[0].found, "nothing left at the old place");
+    assert!(found[1].found);
     assert_near(found[1].point, [10.0, 0.0, 3.0], "the navmesh point on the moved raft");
 
     // Along the raft: the world's +z to -z is the mesh's -x to +x.
@@ -143,7 +143,7 @@ fn navmesh_on_a_moving_surface() {
     let built = world.build_navmesh(&NavmeshBuild { surface: Some(raft), ..NavmeshBuild::new(default_agent_type()) }).unwrap();
     assert_eq!(world.navmesh_info(built).unwrap().surface, raft);
     let found = world.find_nearest(built, &[on_raft, old_place], [0.5, 2.0, 0.5]).unwrap();
-    assert_eq!((found[0].found, found[1].found), (1, 0));
+    assert_eq!((found[0].found, found[1].found), (true, false));
     assert_fails(world.build_navmesh(&NavmeshBuild::new(default_agent_type())), status::NOT_FOUND, "no triangles");
     world.remove_navmesh(built).unwrap();
     world.remove_navmesh(navmesh).unwrap();
@@ -190,8 +190,7 @@ fn cross_link_onto_a_moving_surface() {
     let cross = world.add_link(ledge, &def).unwrap();
     let link = world.link(cross).unwrap();
     assert_eq!((link.navmesh, link.landing(), link.landing_navmesh), (ledge, Some(deck), deck));
-    assert_eq!((link.holds, link.bidirectional), (1, 0));
-    assert!(link.holds_now());
+    assert_eq!((link.holds, link.bidirectional), (true, false));
     assert_eq!(link.tolerance, 0.25);
     assert_ne!(link.end_polygon, NO_POLYGON, "the end is on a polygon of the deck");
     assert_near(link.start, CROSS_START, "start");
@@ -199,26 +198,25 @@ fn cross_link_onto_a_moving_surface() {
 
     world.set_mesh_transform(deck_box, &DECK_AWAY).unwrap();
     let link = world.link(cross).unwrap();
-    assert_eq!(link.holds, 0, "the box moved 2 m away: past the link's tolerance");
-    assert!(!link.holds_now());
+    assert!(!link.holds, "the box moved 2 m away: past the link's tolerance");
     assert_near(link.start, CROSS_START, "the start stays on the ledge");
     assert_near(link.end, CROSS_END_AWAY, "the end moved with the box");
     let listed = world.links(ledge).unwrap();
-    assert_eq!(listed.iter().map(|l| (l.id, l.landing(), l.holds)).collect::<Vec<_>>(), vec![(cross, Some(deck), 0)]);
+    assert_eq!(listed.iter().map(|l| (l.id, l.landing(), l.holds)).collect::<Vec<_>>(), vec![(cross, Some(deck), false)]);
     assert_near(listed[0].end, CROSS_END_AWAY, "the listed end");
 
     world.set_mesh_transform(deck_box, &DECK_HOME).unwrap();
     let link = world.link(cross).unwrap();
-    assert_eq!(link.holds, 1, "the box is back");
+    assert!(link.holds, "the box is back");
     assert_near(link.end, CROSS_END, "the end is back");
 
     // A link within one navmesh: no landing navmesh, always holds, tolerance 0.
     let within = LinkDef { start: [-5.0, 0.0, 0.0], end: [-1.0, 0.0, 0.0], ..default_link_def() };
     let plain = world.link(world.add_link(ledge, &within).unwrap()).unwrap();
-    assert_eq!((plain.landing(), plain.landing_navmesh, plain.holds, plain.tolerance), (None, NavmeshId::default(), 1, 0.0));
+    assert_eq!((plain.landing(), plain.landing_navmesh, plain.holds, plain.tolerance), (None, NavmeshId::default(), true, 0.0));
 
     // Cross links are one-way, lead to another live navmesh, and links files do not hold them.
-    assert_fails(world.add_link(ledge, &LinkDef { bidirectional: 1, ..def }), status::INVALID_ARGUMENT, "bidirectional");
+    assert_fails(world.add_link(ledge, &LinkDef { bidirectional: true, ..def }), status::INVALID_ARGUMENT, "bidirectional");
     assert_fails(world.add_link(ledge, &def.with_landing(Some(ledge))), status::INVALID_ARGUMENT, "landing_navmesh");
     let gone = world.add_navmesh(&quad(&DECK_QUAD)).unwrap();
     world.remove_navmesh(gone).unwrap();
@@ -270,8 +268,7 @@ fn cross_links_generated_for_where_a_platform_stands() {
     let all = world.links(ledge).unwrap().len() + world.links(deck).unwrap().len();
     assert_eq!(all, onto.len() + off.len(), "no links within either navmesh");
     for l in onto.iter().chain(&off) {
-        assert_eq!((l.generated, l.holds, l.bidirectional, l.tolerance), (1, 1, 0, 0.25), "{:?}", l);
-        assert!(l.holds_now());
+        assert_eq!((l.generated, l.holds, l.bidirectional, l.tolerance), (true, true, false, 0.25), "{:?}", l);
         assert_ne!(l.end_polygon, NO_POLYGON);
     }
     // In the world: from the ledge's rim (x 5.7) to the platform's (x 7.3), and back.
@@ -284,7 +281,7 @@ fn cross_links_generated_for_where_a_platform_stands() {
 
     // 3 m off the ledge: nothing holds; beyond a 2 m jump nothing is found, and the links made 1 m off stay.
     world.set_mesh_transform(platform, &platform_at(11.0)).unwrap();
-    assert!(crossing(ledge, deck).iter().chain(&crossing(deck, ledge)).all(|l| l.holds == 0), "none holds 3 m off");
+    assert!(crossing(ledge, deck).iter().chain(&crossing(deck, ledge)).all(|l| !l.holds), "none holds 3 m off");
     let report = world.generate_cross_links(ledge, deck, 0.25, Some(&settings), None).unwrap();
     assert_eq!((report.jump_links, report.drop_links), (0, 0));
     assert_eq!(ids(&crossing(ledge, deck)), ids(&onto), "kept for when it is back");
@@ -292,7 +289,7 @@ fn cross_links_generated_for_where_a_platform_stands() {
 
     // Back 1 m off: they hold again, and generating there again replaces them (not doubled).
     world.set_mesh_transform(platform, &platform_at(9.0)).unwrap();
-    assert!(crossing(ledge, deck).iter().chain(&crossing(deck, ledge)).all(|l| l.holds == 1));
+    assert!(crossing(ledge, deck).iter().chain(&crossing(deck, ledge)).all(|l| l.holds));
     world.generate_cross_links(ledge, deck, 0.25, Some(&settings), None).unwrap();
     assert_eq!((crossing(ledge, deck).len(), crossing(deck, ledge).len()), (onto.len(), off.len()));
 

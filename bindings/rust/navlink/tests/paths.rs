@@ -5,7 +5,7 @@ mod common;
 
 use common::*;
 use navlink::{
-    default_agent_type, link_kind, status, FinishedPath, NavmeshBuild, NavmeshId, PathBudget, PathOutcome, PathQuery, PathResult,
+    default_agent_type, status, FinishedPath, NavmeshBuild, NavmeshId, PathBudget, PathOutcome, PathQuery, PathResult,
     World, WorldOptions,
 };
 use std::sync::mpsc;
@@ -28,7 +28,7 @@ fn check_jumper_across(world: &World, r: &PathResult) {
     let j = jumps[0];
     assert!(j + 1 < p.len() && p[j].position[0] < -1.0 && p[j + 1].position[0] > 1.0, "west rim to east rim");
     let link = world.link(p[j].link).unwrap();
-    assert!(link.kind == link_kind::JUMP && link.generated == 1);
+    assert!(link.kind == navlink::LinkKind::Jump && link.generated);
     assert!(p[j].apex[1] > p[j].position[1].max(p[j + 1].position[1]), "apex above both ends");
     assert!(p.last().unwrap().segment == navlink::LinkKind::Walk && p[0].link == Default::default());
     assert!(horizontal_distance(p[0].position, WEST) < 0.01 && horizontal_distance(p.last().unwrap().position, EAST) < 0.01);

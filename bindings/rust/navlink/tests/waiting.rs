@@ -231,9 +231,9 @@ fn enums_keep_values_they_do_not_know() {
     }
     assert_eq!(PathOutcome::from_raw(navlink::sys::NL_PATH_NO_PATH), PathOutcome::NoPath);
     assert_eq!(PathOutcome::from_raw(99), PathOutcome::Other(99));
-    assert_eq!(LinkKind::from_raw(navlink::link_kind::JUMP), LinkKind::Jump);
-    let plugin_kind = LinkKind::from_raw(navlink::link_kind::FIRST_PLUGIN_KIND + 2);
-    assert!(plugin_kind.is_plugin() && !LinkKind::Drop.is_plugin() && plugin_kind.to_raw() == navlink::link_kind::FIRST_PLUGIN_KIND + 2);
+    assert_eq!(LinkKind::from_raw(navlink::sys::NL_LINK_JUMP), LinkKind::Jump);
+    let plugin_kind = LinkKind::from_raw(LinkKind::FIRST_PLUGIN_KIND + 2);
+    assert!(plugin_kind.is_plugin() && !LinkKind::Drop.is_plugin() && plugin_kind.to_raw() == navlink::sys::NL_LINK_FIRST_PLUGIN_KIND + 2);
 }
 
 fn assert_send<T: Send>() {}
@@ -248,9 +248,12 @@ fn settings_and_defs_are_send() {
     assert_send::<navlink::NavmeshBuild<'static>>();
     assert_send::<navlink::NavmeshInput<'static>>();
     assert_send::<navlink::RecastSettings>();
+    assert_send::<navlink::RecastPartition>();
     assert_send::<navlink::AgentType>();
     assert_send::<navlink::LinkSettings>();
     assert_send::<navlink::LinkDef>();
+    assert_send::<navlink::LinkRequirements>();
+    assert_send::<navlink::LinkKind>();
     assert_send::<navlink::LinksLoadOptions>();
     assert_send::<navlink::NavmeshLoadOptions>();
     assert_send::<navlink::PathQuery>();
@@ -259,4 +262,13 @@ fn settings_and_defs_are_send() {
     assert_send::<navlink::AgentCapabilities>();
     assert_send::<PathRequest<'static>>();
     assert_send::<navlink::Error>();
+    // What the safe API hands back, to move to another thread with its results.
+    assert_send::<navlink::Link>();
+    assert_send::<navlink::MeshInfo>();
+    assert_send::<navlink::RayHit>();
+    assert_send::<navlink::NavmeshInfo>();
+    assert_send::<navlink::NavPolygon>();
+    assert_send::<navlink::NavPoint>();
+    assert_send::<navlink::LinkGenerationReport>();
+    assert_send::<navlink::NavmeshFileInfo>();
 }
