@@ -5,8 +5,10 @@
 #include <exception>
 #include <filesystem>
 #include <memory>
+#include <optional>
 
 #include "entry_guard.h"
+#include "level/level_hash.h"
 #include "host_input.h"
 #include "mapping.h"
 
@@ -131,6 +133,7 @@ struct RunningBuild {
     const CPlugin& builder;
     const NavMeshBuildRequest& request;
     std::string settings_used;  // what the builder recorded (host->record_build_settings)
+    std::optional<BuildTriangles> handed;  // the level as the builder was shown it
     RunningBuild* outer;
 };
 
@@ -161,7 +164,8 @@ BuiltNavMesh CPlugin::build(World&, const NavMeshBuildRequest& request) {
     if (NL_FAILED(status))
         throw Error(to_error_code(status), concat("builder '", name, "': ", reason.empty() ? nl_status_string(status) : reason));
     if (sink.calls == 0) fail(ErrorCode::Internal, "builder '", name, "' succeeded without handing over a navmesh");
-    return {std::move(sink.navmesh), std::move(running.settings_used)};
+    const uint64_t built_from = running.handed ? level_hash(*running.handed) : 0;
+    return {std::move(sink.navmesh), std::move(running.settings_used), built_from};
 }
 
 // What a link-kind plugin hands back through the sink: each link read and given to `accept`, whose
@@ -203,13 +207,18 @@ void CPlugin::propose(World&, Handle navmesh, const std::string& settings_json, 
 
 }  // namespace
 
-BuildTriangles level_triangles_for_plugin(void* context) {
+void with_level_triangles(void* context, FunctionRef<void(const BuildTriangles&)> use) {
     const Level& level = world_of_plugin(context).level();
-    if (running_build) return level.triangles_to_build(running_build->request.surface);
+    if (running_build) {
+        std::optional<BuildTriangles>& handed = running_build->handed;
+        if (!handed) handed = level.triangles_to_build(running_build->request.surface);
+        use(*handed);
+        return;
+    }
     BuildTriangles all;
     all.mesh = level.world_triangles();
     all.areas.assign(all.mesh.triangles.size(), 0);
-    return all;
+    use(all);
 }
 
 bool report_build_progress(void* context, float fraction, const char* stage) {

@@ -10,6 +10,7 @@
 
 #include "navlink/plugin.h"
 #include "platform/dynamic_library.h"
+#include "util/function_ref.h"
 #include "util/handle.h"
 #include "world/world.h"
 
@@ -35,10 +36,12 @@ nl_plugin_host make_plugin_host(void* context);
 // What the table's functions need from their context.
 World& world_of_plugin(void* context);
 const std::string& name_of_plugin(void* context);
-// The level triangles a plugin is shown: during a navmesh build on this thread, what the build is
-// for (Level::triangles_to_build: the static meshes, or the surface mesh in its own space, with
-// their areas); otherwise every mesh in the world, each triangle of area 0.
-BuildTriangles level_triangles_for_plugin(void* context);
+// Calls `use` with the level triangles a plugin is shown: during a navmesh build on this thread,
+// what the build is for (Level::triangles_to_build: the static meshes, or the surface mesh in its
+// own space, with their areas), gathered once per build so that every call of the build (the count,
+// the copy) sees the same level and the navmesh records the hash of what it was built from;
+// otherwise every mesh in the world, each triangle of area 0.
+void with_level_triangles(void* context, FunctionRef<void(const BuildTriangles&)> use);
 // Hands a builder's progress to the build running on this thread for the plugin `context`; false
 // when its caller asked to stop. InvalidArgument outside such a build.
 bool report_build_progress(void* context, float fraction, const char* stage);

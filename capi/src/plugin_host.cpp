@@ -55,8 +55,7 @@ nl_status copy_build_triangles(void* context, const char* query, float* vertices
                                uint32_t* out_vertex_count, uint32_t* indices, uint8_t* areas, bool areas_asked,
                                uint32_t triangle_capacity, uint32_t* out_triangle_count) {
     nl_status status = NL_STATUS_SUCCESS;
-    const nl_status ran = for_plugin(context, query, [&] {
-        const BuildTriangles level = level_triangles_for_plugin(context);
+    auto copy_out = [&](const BuildTriangles& level) {
         const TriangleMesh& mesh = level.mesh;
         if (out_vertex_count) *out_vertex_count = static_cast<uint32_t>(mesh.vertices.size());
         if (out_triangle_count) *out_triangle_count = static_cast<uint32_t>(mesh.triangles.size());
@@ -70,7 +69,8 @@ nl_status copy_build_triangles(void* context, const char* query, float* vertices
         for (size_t t = 0; t < mesh.triangles.size(); ++t)
             for (int k = 0; k < 3; ++k) indices[3 * t + k] = mesh.triangles[t][k];
         if (areas_asked) std::copy(level.areas.begin(), level.areas.end(), areas);
-    });
+    };
+    const nl_status ran = for_plugin(context, query, [&] { with_level_triangles(context, copy_out); });
     return NL_FAILED(ran) ? ran : status;
 }
 

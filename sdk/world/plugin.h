@@ -41,6 +41,9 @@ struct BuiltNavMesh {
     // The settings it used, complete (its defaults filled in), as a JSON object; empty: not said (the
     // world then records the settings JSON it was given).
     std::string settings_used;
+    // level_hash() of the triangles it built from, as it was handed them; 0: not said (the world then
+    // hashes the level as it is when the build returns).
+    uint64_t level_hash = 0;
 };
 
 class NavMeshBuilder {

@@ -154,7 +154,7 @@ Handle World::build_navmesh(const NavMeshBuildRequest& request) {
     }
     std::shared_ptr<const NavMesh> navmesh = std::move(built.navmesh);
     log_repairs(*navmesh);
-    made_for.level_hash = level_hash(level_->triangles_to_build(request.surface));
+    made_for.level_hash = built.level_hash != 0 ? built.level_hash : level_hash(level_->triangles_to_build(request.surface));
     forwarded.progress(1.0f, "adding the navmesh");
     fail_if_cancelled();
     return add_on_surface(std::move(navmesh), request.surface, std::move(made_for));

@@ -442,5 +442,45 @@ static void build_progress(void) {
     nl_world_destroy(world);
 }
 
+/* A progress callback that adds a mesh to the level in the middle of the build. */
+typedef struct level_changer {
+    nl_world* world;
+    nl_mesh_id added;
+} level_changer;
+
+static int32_t add_mesh_mid_build(void* user, float fraction, const char* stage) {
+    level_changer* c = (level_changer*)user;
+    (void)fraction;
+    if (c->added.index1 == 0 && strcmp(stage, "marking walkable triangles") == 0)
+        c->added = add_quad(c->world, 20, 20, 24, 24, 0, 0, 0, 0, NULL);
+    return 1;
+}
+
+/* The level hash a navmesh records is of the level it was built from, even when the level changes
+   while it is built: loading it with NL_NAVMESH_LOAD_SAME_LEVEL matches that level, not the later one. */
+static void level_hash_of_the_built_level(void) {
+    nl_navmesh_build_def def = nl_default_navmesh_build_def();
+    nl_navmesh_load_def load = nl_default_navmesh_load_def();
+    nl_world* world = make_world(2);
+    level_changer changer;
+    nl_navmesh_id id = {0u, 0u}, loaded = {0u, 0u};
+    static unsigned char file[1 << 16];
+    size_t size = 0;
+    add_floor_box(world);
+    memset(&changer, 0, sizeof changer);
+    changer.world = world;
+    def.progress = add_mesh_mid_build;
+    def.progress_user = &changer;
+    CHECK_OK(nl_navmesh_build(world, &def, &id));
+    CHECK_THAT(changer.added.index1 != 0, "the progress callback added a mesh during the build");
+    CHECK_OK(nl_navmesh_save(world, id, file, sizeof file, &size));
+    load.flags = NL_NAVMESH_LOAD_SAME_LEVEL;
+    CHECK_FAIL(nl_navmesh_load(world, file, size, &load, &loaded), NL_STATUS_INVALID_ARGUMENT, "not the one");
+    CHECK_OK(nl_mesh_remove(world, changer.added));
+    CHECK_OK(nl_navmesh_load(world, file, size, &load, &loaded));
+    nl_world_destroy(world);
+}
+
 ABI_SECTION(navmesh_build, ABI_CASE(defaults), ABI_CASE(recast), ABI_CASE(winding), ABI_CASE(mesh_roles),
-            ABI_CASE(mesh_areas), ABI_CASE(build_progress));
+            ABI_CASE(mesh_areas), ABI_CASE(build_progress),
+            ABI_CASE(level_hash_of_the_built_level));

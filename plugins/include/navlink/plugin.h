@@ -47,8 +47,9 @@ typedef struct nl_plugin_host {
      *  positions into `vertices` (room for `vertex_capacity` vertices, 3 floats each) and 3 indices per
      *  triangle into `indices` (room for `triangle_capacity` triangles). The counts are always written;
      *  BUFFER_TOO_SMALL (nothing copied) when either buffer is short. The count-only call (capacities
-     *  0, buffers may be NULL) succeeds. The level may change between two calls: retry on
-     *  BUFFER_TOO_SMALL. */
+     *  0, buffers may be NULL) succeeds. Within one build every call sees the level as it was at the
+     *  build's first call (the navmesh records the hash of that level); outside a build the level may
+     *  change between two calls: retry on BUFFER_TOO_SMALL. */
     nl_status (*get_level_triangles)(void* context, float* vertices, uint32_t vertex_capacity,
                                      uint32_t* out_vertex_count, uint32_t* indices, uint32_t triangle_capacity,
                                      uint32_t* out_triangle_count);
