@@ -9,6 +9,7 @@
 #include "link_files.h"
 #include "navigable_level.h"
 #include "navmesh_contents.h"
+#include "output_paths.h"
 #include "palette.h"
 #include "path_plan.h"
 #include "picture_export.h"
@@ -28,6 +29,11 @@ int run_demo(int argc, char** argv) {
     args.expect_positional(0, "");
     const auto seed = static_cast<uint32_t>(args.whole_number("seed", 0, 4294967295L, 1));
     const std::string dir = args.value("out-dir").value_or(".");
+    samples::prepare_output_folder(dir);
+    const std::string links_path = dir + "/demo.links.json";
+    const std::string png_path = dir + "/demo.png";
+    samples::check_writable_file(links_path);
+    samples::check_writable_file(png_path);
 
     const levelgen::GeneratedLevel generated = levelgen::generate_default_level(seed);
     const std::vector<samples::AgentProfile> agents = samples::demo_agents();
@@ -65,8 +71,6 @@ int run_demo(int argc, char** argv) {
         all_complete = all_complete && path.result.outcome == NL_PATH_COMPLETE;
     }
 
-    const std::string links_path = dir + "/demo.links.json";
-    const std::string png_path = dir + "/demo.png";
     samples::write_text_file(links_path, samples::links_json(level.world(), level.navmesh()));
     PictureRequest request;
     request.path = png_path;

@@ -11,6 +11,7 @@
 #include "navigable_level.h"
 #include "navmesh_contents.h"
 #include "navmesh_files.h"
+#include "output_paths.h"
 #include "picture_export.h"
 #include "sample_error.h"
 #include "text_file.h"
@@ -32,6 +33,9 @@ int generate(int argc, char** argv, Output output) {
     }
     args.expect_positional(1, "LEVEL.obj");
     const std::string out = args.required("out");
+    // Every output is checked before the work, so a bad --png fails before --out is written.
+    samples::check_writable_file(out);
+    if (const auto png = args.value("png")) samples::check_writable_file(*png);
     // Read every input before the slow work, so a bad file fails at once.
     const samples::AgentProfile agent =
         args.has("agent") ? samples::read_agent_file(*args.value("agent")) : samples::default_agent_profile();

@@ -85,7 +85,8 @@ const char* const kDemoHelp =
     "Generates the default level (seed 1 unless --seed), builds its navmesh, generates its links, and plans\n"
     "the same start and goal for three agents: a walker (no jumps, no drops), a short jumper (gaps of\n"
     "2 m, 1 m up, no drops) and a long jumper who may drop (gaps of 3.5 m, 1.5 m up, drops of 4 m).\n"
-    "Prints a table of their routes and writes demo.png and demo.links.json (in DIR, default '.').\n";
+    "Prints a table of their routes and writes demo.png and demo.links.json (in DIR, default '.'; made\n"
+    "if missing, and checked before any work).\n";
 
 const char* const kSimulateHelp =
     "usage: navlink simulate [--seed N] [--out-dir DIR] [--hz N] [--seconds N] [--oblique] [--platforms]\n"
@@ -96,7 +97,8 @@ const char* const kSimulateHelp =
     "Prints each take-off (jump or drop, from where to where, how long in the air), each wait at a\n"
     "take-off and each arrival as it happens, then a table: outcome, time, position, distance to the\n"
     "goal, metres travelled, links taken, seconds waited.\n"
-    "Writes simulate.png (in DIR, default '.'): the level and the track each agent really took.\n"
+    "Writes simulate.png (in DIR, default '.'; made if missing): the level and the track each agent\n"
+    "really took.\n"
     "\n"
     "--platforms: beside the level, a shuttle crosses a chasm, a disc turns in a pit and a lift climbs to\n"
     "an upper floor, each on its timetable (moved before every step, nl_mesh_set_transform), with\n"

@@ -5,6 +5,7 @@
 #include "commands.h"
 #include "help_text.h"
 #include "level_generator.h"
+#include "output_paths.h"
 #include "text_file.h"
 
 namespace nl::cli {
@@ -17,6 +18,7 @@ int run_level(int argc, char** argv) {
     }
     args.expect_positional(0, "");
     const std::string out = args.required("out");
+    samples::check_writable_file(out);
     const auto seed = static_cast<uint32_t>(args.whole_number("seed", 0, 4294967295L, 1));
     const levelgen::GeneratedLevel level = levelgen::generate_default_level(seed);
     samples::write_text_file(out, level.to_obj());

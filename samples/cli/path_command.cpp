@@ -13,6 +13,7 @@
 #include "palette.h"
 #include "path_output.h"
 #include "path_plan.h"
+#include "output_paths.h"
 #include "picture_export.h"
 #include "sample_error.h"
 
@@ -62,6 +63,7 @@ int run_path(int argc, char** argv) {
         return path.result.outcome == NL_PATH_COMPLETE ? 0 : 1;
     }
     const std::string links_path = args.required("links");
+    if (const auto png = args.value("png")) samples::check_writable_file(*png);
     NavigableLevel level(args.positional()[0], args.value("navmesh"), agent.body, settings.recast_json,
                          args.has("png"));
     samples::load_links_file(level.world(), level.navmesh(), links_path);

@@ -12,6 +12,7 @@
 #include "level_generator.h"
 #include "navigable_level.h"
 #include "navmesh_contents.h"
+#include "output_paths.h"
 #include "palette.h"
 #include "picture_export.h"
 #include "simulate_scenes.h"
@@ -62,6 +63,8 @@ int run_simulate(int argc, char** argv) {
     SimulateOptions options;
     options.seed = static_cast<uint32_t>(args.whole_number("seed", 0, 4294967295L, 1));
     options.out_dir = args.value("out-dir").value_or(".");
+    samples::prepare_output_folder(options.out_dir);
+    samples::check_writable_file(options.out_dir + (args.has("platforms") ? "/platforms.png" : "/simulate.png"));
     options.dt = 1.0 / static_cast<double>(args.whole_number("hz", 2, 1000, 60));
     options.seconds = static_cast<double>(args.whole_number("seconds", 1, 3600, 120));
     options.oblique = args.has("oblique");

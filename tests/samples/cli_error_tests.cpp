@@ -1,5 +1,6 @@
 // Bad arguments, missing files and bad JSON: one line on stderr naming the problem, exit status 2.
 #include <algorithm>
+#include <filesystem>
 
 #include "cli_fixture.h"
 
@@ -102,6 +103,24 @@ TEST_CASE("bad arguments, files and JSON give one line and exit status 2") {
         {{"simulate", "--seconds", "1e9"}, "--seconds must be a whole number"},
         {{"level"}, "--out is required"},
         {{"level", "--out", "/nonexistent/level.obj"}, "cannot write"},
+        {{"demo", "--out-dir", "level.obj"}, "--out-dir 'level.obj' is a file, not a folder"},
+        {{"simulate", "--out-dir", "level.obj"}, "--out-dir 'level.obj' is a file, not a folder"},
+        {{"generate", "level.obj", "--out", "."}, "cannot write '.': it is a folder"},
+        {with(path, {"--from", "1,0,1", "--to", "2,0,2", "--png", "/nonexistent/p.png"}),
+         "cannot write '/nonexistent/p.png': the folder '/nonexistent' does not exist"},
     };
     for (const BadCall& call : calls) check_one_line_error(call, dir);
+}
+
+TEST_CASE("every output is checked before the work: a bad --png writes no --out") {
+    const std::string dir = nl::test::scratch_dir("outputs_first");
+    REQUIRE(navlink({"level", "--out", "level.obj"}, dir).exit_code == 0);
+    for (const char* command : {"bake", "generate"}) {
+        INFO(command);
+        const std::string out = std::string("written.") + (std::string(command) == "bake" ? "nlnav" : "json");
+        check_one_line_error({{command, "level.obj", "--out", out, "--png", "/nonexistent/v.png"},
+                              "cannot write '/nonexistent/v.png': the folder '/nonexistent' does not exist"},
+                             dir);
+        CHECK_FALSE(std::filesystem::exists(dir + "/" + out));
+    }
 }

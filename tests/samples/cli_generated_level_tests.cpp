@@ -278,6 +278,9 @@ TEST_CASE("navlink demo prints a route for each of its three agents and writes i
     const json links = nl::test::parse_json_file(dir + "/demo.links.json");
     CHECK(nl::test::count_kinds(links).jump > 0);
     CHECK(navlink({"demo", "--seed", "2", "--out-dir", dir, "--oblique"}, dir).exit_code == 0);  // another level
+    // A folder that does not exist yet is made, parents too.
+    REQUIRE(navlink({"demo", "--out-dir", "fresh/deeper"}, dir).exit_code == 0);
+    CHECK(nl::test::is_png(dir + "/fresh/deeper/demo.png", 1600));
 }
 
 TEST_CASE("navlink simulate: the three bodies arrive as agents, each by the links it can take, and the tracks are drawn") {
