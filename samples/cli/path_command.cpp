@@ -19,11 +19,26 @@
 
 namespace nl::cli {
 
+namespace {
+
+// Prints the plan as text or JSON, with what was asked; the exit status: 0 when it arrives.
+int report_path(const nl_world* world, nl_navmesh_id navmesh, const samples::PlannedPath& path,
+                const std::vector<nl_link>& links, const float from[3], const float to[3], const float search[3],
+                bool json) {
+    const AskedPath asked = asked_path(world, navmesh, path, from, to, search);
+    if (json) std::fputs(path_json(path, links, asked).c_str(), stdout);
+    else print_path_text(stdout, path, links, asked);
+    return path.result.outcome == NL_PATH_COMPLETE ? 0 : 1;
+}
+
+}  // namespace
+
 int run_path(int argc, char** argv) {
     const samples::Arguments args("navlink path", "path", argc, argv, 2,
                                   {{"links", true},
                                    {"from", true},
                                    {"to", true},
+                                   {"search", true},
                                    {"agent", true},
                                    {"navmesh", true},
                                    {"settings", true},
@@ -41,6 +56,13 @@ int run_path(int argc, char** argv) {
     float from[3], to[3];
     samples::parse_point(args.required("from"), "--from", from);
     samples::parse_point(args.required("to"), "--to", to);
+    const nl_path_request_def defaults = nl_default_path_request_def();
+    float search[3] = {defaults.search_half_extents[0], defaults.search_half_extents[1], defaults.search_half_extents[2]};
+    if (const auto box = args.value("search")) {
+        samples::parse_point(*box, "--search", search);
+        if (!(search[0] > 0.0f && search[1] > 0.0f && search[2] > 0.0f))
+            throw samples::SampleError("--search must be three half extents above 0, in metres (got '" + *box + "')");
+    }
     const samples::AgentProfile agent =
         args.has("agent") ? samples::read_agent_file(*args.value("agent")) : samples::default_agent_profile();
     const samples::GenerationSettings settings = args.has("settings")
@@ -56,22 +78,19 @@ int run_path(int argc, char** argv) {
         samples::World world;
         const nl_navmesh_id navmesh = samples::load_navmesh_file(world.get(), args.positional()[0]);
         if (const auto links = args.value("links")) samples::load_links_file(world.get(), navmesh, *links);
-        const samples::PlannedPath path = samples::find_path(world.get(), navmesh, from, to, agent.capabilities);
+        const samples::PlannedPath path = samples::find_path(world.get(), navmesh, from, to, agent.capabilities, search);
         const samples::NavmeshContents contents = samples::read_navmesh_contents(world.get(), navmesh);
-        if (args.has("json")) std::fputs(path_json(path, contents.links).c_str(), stdout);
-        else print_path_text(stdout, path, contents.links);
-        return path.result.outcome == NL_PATH_COMPLETE ? 0 : 1;
+        return report_path(world.get(), navmesh, path, contents.links, from, to, search, args.has("json"));
     }
-    const std::string links_path = args.required("links");
     if (const auto png = args.value("png")) samples::check_writable_file(*png);
     NavigableLevel level(args.positional()[0], args.value("navmesh"), agent.body, settings.recast_json,
                          args.has("png"));
-    samples::load_links_file(level.world(), level.navmesh(), links_path);
-    const samples::PlannedPath path = samples::find_path(level.world(), level.navmesh(), from, to, agent.capabilities);
+    // Without --links the navmesh is walked alone.
+    if (const auto links = args.value("links")) samples::load_links_file(level.world(), level.navmesh(), *links);
+    const samples::PlannedPath path =
+        samples::find_path(level.world(), level.navmesh(), from, to, agent.capabilities, search);
     const samples::NavmeshContents contents = samples::read_navmesh_contents(level.world(), level.navmesh());
-
-    if (args.has("json")) std::fputs(path_json(path, contents.links).c_str(), stdout);
-    else print_path_text(stdout, path, contents.links);
+    const int status = report_path(level.world(), level.navmesh(), path, contents.links, from, to, search, args.has("json"));
 
     if (const auto png = args.value("png")) {
         PictureRequest request;
@@ -85,7 +104,7 @@ int run_path(int argc, char** argv) {
                        {"to", {to[0], to[1], to[2]}, picture::palette::kText}});
         if (!args.has("json")) std::printf("wrote %s\n", png->c_str());
     }
-    return path.result.outcome == NL_PATH_COMPLETE ? 0 : 1;
+    return status;
 }
 
 }  // namespace nl::cli

@@ -1,5 +1,7 @@
 #include "path_output.h"
 
+#include <cmath>
+
 #include <nlohmann/json.hpp>
 
 namespace nl::cli {
@@ -7,7 +9,40 @@ namespace {
 
 nlohmann::json xyz(const float p[3]) { return nlohmann::json::array({p[0], p[1], p[2]}); }
 
+float distance(const float a[3], const float b[3]) {
+    return std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
+}
+
+// "the start (x, y, z) is off the navmesh: ..." with where the navmesh is nearest.
+void print_off_navmesh(std::FILE* out, const char* end, const char* option, const float given[3],
+                       const std::optional<samples::NearestOnNavmesh>& nearest) {
+    std::fprintf(out, "  the %s (%.2f, %.2f, %.2f) is off the navmesh: ", end, given[0], given[1], given[2]);
+    if (nearest)
+        std::fprintf(out, "the nearest navmesh point is (%.2f, %.2f, %.2f), %.2f m away; move %s there or widen --search\n",
+                     nearest->point[0], nearest->point[1], nearest->point[2], nearest->distance, option);
+    else std::fprintf(out, "no navmesh within 1 km of it\n");
+}
+
+nlohmann::json nearest_json(const std::optional<samples::NearestOnNavmesh>& nearest) {
+    if (!nearest) return nullptr;
+    return {{"point", xyz(nearest->point)}, {"distance", nearest->distance}};
+}
+
 }  // namespace
+
+AskedPath asked_path(const nl_world* world, nl_navmesh_id navmesh, const samples::PlannedPath& path, const float from[3],
+                     const float to[3], const float search_half_extents[3]) {
+    AskedPath asked{};
+    for (int k = 0; k < 3; ++k) {
+        asked.from[k] = from[k];
+        asked.to[k] = to[k];
+    }
+    if (path.result.outcome == NL_PATH_START_OFF_NAVMESH)
+        asked.nearest_start = samples::nearest_on_navmesh(world, navmesh, from, search_half_extents);
+    if (path.result.outcome == NL_PATH_GOAL_OFF_NAVMESH)
+        asked.nearest_goal = samples::nearest_on_navmesh(world, navmesh, to, search_half_extents);
+    return asked;
+}
 
 long link_index(const std::vector<nl_link>& links, nl_link_id link) {
     for (size_t i = 0; i < links.size(); ++i)
@@ -15,11 +50,15 @@ long link_index(const std::vector<nl_link>& links, nl_link_id link) {
     return -1;
 }
 
-void print_path_text(std::FILE* out, const samples::PlannedPath& path, const std::vector<nl_link>& links) {
+void print_path_text(std::FILE* out, const samples::PlannedPath& path, const std::vector<nl_link>& links,
+                     const AskedPath& asked) {
     const nl_path_result& r = path.result;
     std::fprintf(out, "path: %s, %.2f m, %s (%u polygons searched)\n", samples::outcome_name(r.outcome), r.length,
                  samples::describe_links(samples::count_links(path)).c_str(), r.nodes_visited);
+    if (r.outcome == NL_PATH_START_OFF_NAVMESH) print_off_navmesh(out, "start", "--from", asked.from, asked.nearest_start);
+    if (r.outcome == NL_PATH_GOAL_OFF_NAVMESH) print_off_navmesh(out, "goal", "--to", asked.to, asked.nearest_goal);
     if (path.points.empty()) return;
+    const bool arrives = r.outcome == NL_PATH_COMPLETE;
     std::fprintf(out, "  from (%.2f, %.2f, %.2f) to (%.2f, %.2f, %.2f) on the navmesh\n", r.start[0], r.start[1],
                  r.start[2], r.goal[0], r.goal[1], r.goal[2]);
     std::fprintf(out, "  %3s  %-28s %-6s %-6s %8s\n", "#", "point", "then", "link", "length");
@@ -29,7 +68,7 @@ void print_path_text(std::FILE* out, const samples::PlannedPath& path, const std
         char position[64];
         std::snprintf(position, sizeof position, "(%.2f, %.2f, %.2f)", p.position[0], p.position[1], p.position[2]);
         if (i + 1 == path.points.size()) {
-            std::fprintf(out, "  %3zu  %-28s %-6s\n", i, position, "arrive");
+            std::fprintf(out, "  %3zu  %-28s %-6s\n", i, position, arrives ? "arrive" : "end");
             break;
         }
         char link[32] = "";
@@ -38,12 +77,20 @@ void print_path_text(std::FILE* out, const samples::PlannedPath& path, const std
         std::fprintf(out, "  %3zu  %-28s %-6s %-6s %8.2f\n", i, position, samples::segment_name(p.segment), link,
                      segments[i].length);
     }
+    if (!arrives)
+        std::fprintf(out, "  %s: it ends %.2f m from the goal (%.2f, %.2f, %.2f)\n", samples::outcome_name(r.outcome),
+                     distance(path.points.back().position, asked.to), asked.to[0], asked.to[1], asked.to[2]);
 }
 
-std::string path_json(const samples::PlannedPath& path, const std::vector<nl_link>& links) {
+std::string path_json(const samples::PlannedPath& path, const std::vector<nl_link>& links, const AskedPath& asked) {
     const nl_path_result& r = path.result;
     nlohmann::json out;
     out["outcome"] = samples::outcome_name(r.outcome);
+    out["from"] = xyz(asked.from);
+    out["to"] = xyz(asked.to);
+    if (!path.points.empty()) out["ends_from_goal"] = distance(path.points.back().position, asked.to);
+    if (r.outcome == NL_PATH_START_OFF_NAVMESH) out["nearest_start"] = nearest_json(asked.nearest_start);
+    if (r.outcome == NL_PATH_GOAL_OFF_NAVMESH) out["nearest_goal"] = nearest_json(asked.nearest_goal);
     out["length"] = r.length;
     out["cost"] = r.cost;
     out["links_used"] = r.links_used;

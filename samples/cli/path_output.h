@@ -6,6 +6,7 @@
 #include <navlink/navlink.h>
 
 #include <cstdio>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -13,11 +14,25 @@
 
 namespace nl::cli {
 
+// What was asked beside what was planned: the points given, and for an end off the navmesh, where
+// the navmesh is nearest it (nothing within 1 km: unset).
+struct AskedPath {
+    float from[3];
+    float to[3];
+    std::optional<samples::NearestOnNavmesh> nearest_start;
+    std::optional<samples::NearestOnNavmesh> nearest_goal;
+};
+
+// Looks up the nearest navmesh points for the ends the plan found off the navmesh.
+AskedPath asked_path(const nl_world* world, nl_navmesh_id navmesh, const samples::PlannedPath& path, const float from[3],
+                     const float to[3], const float search_half_extents[3]);
+
 // The index of `link` in `links`, or -1.
 long link_index(const std::vector<nl_link>& links, nl_link_id link);
 
-void print_path_text(std::FILE* out, const samples::PlannedPath& path, const std::vector<nl_link>& links);
+void print_path_text(std::FILE* out, const samples::PlannedPath& path, const std::vector<nl_link>& links,
+                     const AskedPath& asked);
 
-std::string path_json(const samples::PlannedPath& path, const std::vector<nl_link>& links);
+std::string path_json(const samples::PlannedPath& path, const std::vector<nl_link>& links, const AskedPath& asked);
 
 }  // namespace nl::cli

@@ -1,5 +1,6 @@
 #include "path_plan.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "sample_error.h"
@@ -7,20 +8,42 @@
 namespace nl::samples {
 
 nl_path_request_def path_request(nl_navmesh_id navmesh, const float start[3], const float goal[3],
-                                 const nl_agent_capabilities& agent) {
+                                 const nl_agent_capabilities& agent, const float* search_half_extents) {
     nl_path_request_def def = nl_default_path_request_def();
     def.navmesh = navmesh;
     for (int k = 0; k < 3; ++k) {
         def.start[k] = start[k];
         def.goal[k] = goal[k];
+        if (search_half_extents) def.search_half_extents[k] = search_half_extents[k];
     }
     def.agent = agent;
     return def;
 }
 
+std::optional<NearestOnNavmesh> nearest_on_navmesh(const nl_world* world, nl_navmesh_id navmesh, const float point[3],
+                                                   const float half_extents[3]) {
+    float box[3] = {half_extents[0], half_extents[1], half_extents[2]};
+    for (;;) {
+        nl_nav_point found{};
+        if (NL_FAILED(nl_navmesh_find_nearest(world, navmesh, point, 1, box, &found))) return std::nullopt;
+        if (found.found) {
+            NearestOnNavmesh nearest{};
+            float squared = 0.0f;
+            for (int k = 0; k < 3; ++k) {
+                nearest.point[k] = found.point[k];
+                squared += (found.point[k] - point[k]) * (found.point[k] - point[k]);
+            }
+            nearest.distance = std::sqrt(squared);
+            return nearest;
+        }
+        if (box[0] >= 1000.0f && box[1] >= 1000.0f && box[2] >= 1000.0f) return std::nullopt;
+        for (float& h : box) h = std::min(h * 4.0f, 1000.0f);
+    }
+}
+
 PlannedPath find_path(nl_world* world, nl_navmesh_id navmesh, const float start[3], const float goal[3],
-                      const nl_agent_capabilities& agent) {
-    const nl_path_request_def def = path_request(navmesh, start, goal, agent);
+                      const nl_agent_capabilities& agent, const float* search_half_extents) {
+    const nl_path_request_def def = path_request(navmesh, start, goal, agent, search_half_extents);
     PlannedPath path;
     path.result.size = sizeof path.result;
     path.points.resize(256, nl_path_point_init());

@@ -5,6 +5,7 @@
 #include <navlink/navlink.h>
 
 #include <string>
+#include <optional>
 #include <vector>
 
 namespace nl::samples {
@@ -24,11 +25,21 @@ struct PathSegment {
 // Plans from `start` to `goal` for `agent`. Throws SampleError if the call fails (not when the
 // search finds no path: read result.outcome).
 PlannedPath find_path(nl_world* world, nl_navmesh_id navmesh, const float start[3], const float goal[3],
-                      const nl_agent_capabilities& agent);
+                      const nl_agent_capabilities& agent, const float* search_half_extents = nullptr);
 
-// The request the samples make: default search box and costs, the given agent.
+// The request the samples make: default costs, the given agent, and the default search box unless
+// `search_half_extents` is given.
 nl_path_request_def path_request(nl_navmesh_id navmesh, const float start[3], const float goal[3],
-                                 const nl_agent_capabilities& agent);
+                                 const nl_agent_capabilities& agent, const float* search_half_extents = nullptr);
+
+// Where the navmesh is nearest `point`, found by widening `half_extents` fourfold up to 1 km: for
+// saying how far off the navmesh a start or goal is. Nothing when the navmesh is farther.
+struct NearestOnNavmesh {
+    float point[3];
+    float distance;
+};
+std::optional<NearestOnNavmesh> nearest_on_navmesh(const nl_world* world, nl_navmesh_id navmesh, const float point[3],
+                                                   const float half_extents[3]);
 
 // The result of a finished queued request (nl_path_get_result, two calls when the path is long).
 // The ticket stays valid: release it with nl_path_release. Throws SampleError.

@@ -103,6 +103,8 @@ TEST_CASE("bad arguments, files and JSON give one line and exit status 2") {
         {{"simulate", "--seconds", "1e9"}, "--seconds must be a whole number"},
         {{"level"}, "--out is required"},
         {{"level", "--out", "/nonexistent/level.obj"}, "cannot write"},
+        {with(path, {"--from", "1,0,1", "--to", "2,0,2", "--search", "1,0,1"}),
+         "--search must be three half extents above 0, in metres (got '1,0,1')"},
         {{"demo", "--out-dir", "level.obj"}, "--out-dir 'level.obj' is a file, not a folder"},
         {{"simulate", "--out-dir", "level.obj"}, "--out-dir 'level.obj' is a file, not a folder"},
         {{"generate", "level.obj", "--out", "."}, "cannot write '.': it is a folder"},

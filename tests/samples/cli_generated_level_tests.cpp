@@ -255,11 +255,53 @@ TEST_CASE("navlink path exits 1 when the goal cannot be reached, and says why") 
                               "walker.json", "--json"},
                              files.dir);
     CHECK(run.exit_code == 1);
-    CHECK(json::parse(run.out).at("outcome") == "partial");
+    const json partial = json::parse(run.out);
+    CHECK(partial.at("outcome") == "partial");
+    // It says how far from the goal it ends: the distance from its last point to --to.
+    const json& last = partial.at("points").back().at("position");
+    const json& to = partial.at("to");
+    float squared = 0.0f;
+    for (size_t k = 0; k < 3; ++k) squared += std::pow(last[k].get<float>() - to[k].get<float>(), 2.0f);
+    CHECK(partial.at("ends_from_goal").get<float>() == doctest::Approx(std::sqrt(squared)).epsilon(1e-4));
+    CHECK(partial.at("ends_from_goal").get<float>() > 1.0f);
+    run = navlink({"path", "level.obj", "--links", "links.json", "--from", "2,0,3", "--to", on_p2, "--agent",
+                   "walker.json"},
+                  files.dir);
+    CHECK(run.out.find("partial: it ends ") != std::string::npos);
+    CHECK(run.out.find("arrive") == std::string::npos);
+
+    // A goal off the navmesh: where the navmesh is nearest, and that point is on it.
     run = navlink({"path", "level.obj", "--links", "links.json", "--from", "2,0,3", "--to", "500,0,500", "--json"},
                   files.dir);
     CHECK(run.exit_code == 1);
-    CHECK(json::parse(run.out).at("outcome") == "goal off navmesh");
+    const json off = json::parse(run.out);
+    CHECK(off.at("outcome") == "goal off navmesh");
+    const json& nearest = off.at("nearest_goal");
+    REQUIRE(nearest.is_object());
+    CHECK(nearest.at("distance").get<float>() > 400.0f);
+    const json& p = nearest.at("point");
+    const std::string on_navmesh = std::to_string(p[0].get<float>()) + "," + std::to_string(p[1].get<float>()) + "," +
+                                   std::to_string(p[2].get<float>());
+    run = navlink({"path", "level.obj", "--links", "links.json", "--from", "2,0,3", "--to", on_navmesh, "--json"},
+                  files.dir);
+    CHECK(json::parse(run.out).at("outcome") != "goal off navmesh");
+    run = navlink({"path", "level.obj", "--links", "links.json", "--from", "2,0,3", "--to", "500,0,500"}, files.dir);
+    CHECK(run.out.find("the goal (500.00, 0.00, 500.00) is off the navmesh: the nearest navmesh point is") !=
+          std::string::npos);
+    // A search box the host sets: wide enough, the same goal is found on the navmesh.
+    run = navlink({"path", "level.obj", "--links", "links.json", "--from", "2,0,3", "--to", "500,0,500", "--search",
+                   "1000,1000,1000", "--json"},
+                  files.dir);
+    CHECK(json::parse(run.out).at("outcome") != "goal off navmesh");
+}
+
+TEST_CASE("navlink path without --links walks the navmesh alone") {
+    GeneratedLevelFiles files("path_walk_only");
+    const ProgramRun run = navlink({"path", "level.obj", "--from", "2,0,3", "--to", "4,0,3", "--json"}, files.dir);
+    REQUIRE_MESSAGE(run.exit_code == 0, run.err);
+    const json path = json::parse(run.out);
+    CHECK(path.at("outcome") == "complete");
+    CHECK(path.at("links_used") == 0);
 }
 
 TEST_CASE("navlink demo prints a route for each of its three agents and writes its picture and links") {
