@@ -126,8 +126,9 @@ public:
     // Generates the navmesh's links (jumps, drops, and each link-kind plugin's) against the level and
     // replaces its generated links with them; manual links stay. The generation is kept for
     // update_links_in_box. Throws InvalidHandle (also when the navmesh was removed meanwhile: nothing
-    // is kept), Cancelled (progress said stop: nothing changes), InvalidArgument (settings, or a call
-    // from inside another generation's callbacks), and Internal naming a plugin that failed.
+    // is kept), Cancelled (progress said stop: nothing changes), InvalidArgument (settings; plugin
+    // settings for a kind no loaded plugin provides, found before any work; a call from inside another
+    // generation's callbacks), and Internal naming a plugin that failed.
     LinkGenerationReport generate_links(Handle navmesh, const LinkSettings& settings, PluginSettings plugin_settings,
                                         GenerationProgress progress);
     // Generates the jumps and drops between two navmeshes (either may ride a moving mesh) for where
@@ -156,6 +157,9 @@ private:
     };
     PluginLinks plugin_links(Handle navmesh, const NavMesh& mesh, const PluginSettings& settings,
                              LinkGenerationReport& report);
+    // InvalidArgument naming a kind of `settings` that no loaded link-kind plugin provides: settings
+    // for a plugin that is not there would change nothing, silently (a misspelt or unloaded one).
+    void check_plugin_settings(const PluginSettings& settings) const;
     void log_repairs(const NavMesh& navmesh) const;
     // InvalidArgument for a navmesh that rides a moving mesh: the generator proves links against the
     // level as it stands, so they would hold at one placement only.

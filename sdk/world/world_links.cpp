@@ -1,4 +1,5 @@
 // World's link operations: links placed on their navmesh, and generations with the plugins' links.
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -9,6 +10,7 @@
 #include "links/link_generation.h"
 #include "level/mesh_validation.h"
 #include "links/link_placement.h"
+#include "util/excerpt.h"
 #include "world/world.h"
 
 namespace nl {
@@ -149,8 +151,23 @@ World::PluginLinks World::plugin_links(Handle navmesh, const NavMesh& mesh, cons
     return {std::move(out), ran.empty() ? std::string() : ran.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace)};
 }
 
+void World::check_plugin_settings(const PluginSettings& settings) const {
+    const std::vector<Plugin*> loaded = plugins_.link_kind_plugins();
+    for (const auto& [kind_name, json] : settings) {
+        const bool provided = std::any_of(loaded.begin(), loaded.end(), [&kind = kind_name](Plugin* p) {
+            return p->link_kind()->kind_name() == kind;
+        });
+        if (provided) continue;
+        std::string names;
+        for (Plugin* p : loaded) names += (names.empty() ? "'" : ", '") + p->link_kind()->kind_name() + "'";
+        fail(ErrorCode::InvalidArgument, "plugin_settings_json: no loaded link-kind plugin provides the kind ",
+             quoted_excerpt(kind_name), " (loaded: ", names.empty() ? "none" : names, ")");
+    }
+}
+
 LinkGenerationReport World::generate_links(Handle navmesh, const LinkSettings& settings, PluginSettings plugin_settings,
                                            GenerationProgress progress) {
+    check_plugin_settings(plugin_settings);
     const std::shared_ptr<const NavMesh> mesh = navmeshes_.navmesh(navmesh);
     refuse_generation_on_surface(navmesh);
     auto generation = std::make_shared<LinkGeneration>(mesh, settings, GenerationMethod::Indexed);

@@ -275,6 +275,8 @@ TEST_CASE("plugin settings that are too deep, beyond a double or not an object a
         {"{\"climb\": 3}", {"\"climb\" must be a JSON object", "not 3"}},
         {"{\"climb\": [1, 2]}", {"\"climb\" must be a JSON object", "not an array of 2 values"}},
         {"{\"not_loaded\": \"x\"}", {"\"not_loaded\" must be a JSON object"}},
+        // Settings for a kind no loaded plugin provides would change nothing: a misspelling is named.
+        {"{\"clmb\": {\"max_height\": 3}}", {"no loaded link-kind plugin provides the kind \"clmb\"", "(loaded: 'climb')"}},
     };
     for (const Case& c : cases) {
         CAPTURE(c.json.substr(0, 60));
@@ -285,4 +287,13 @@ TEST_CASE("plugin settings that are too deep, beyond a double or not an object a
         nl_navmesh_get_links(s.world, s.navmesh, nullptr, 0, &count);
         CHECK(count == before);
     }
+}
+
+TEST_CASE("plugin settings for a plugin that is not loaded are refused, naming what is loaded") {
+    BlockScene s;
+    s.generate("{\"climb\": {\"max_height\": 3}}", NL_STATUS_FAILURE | NL_STATUS_INVALID_ARGUMENT);
+    CHECK_MESSAGE(s.generate_error.find("no loaded link-kind plugin provides the kind \"climb\" (loaded: none)") !=
+                      std::string::npos,
+                  s.generate_error);
+    s.generate("{}");  // no plugin settings: the built-in kinds alone
 }

@@ -928,7 +928,8 @@ NL_DEFINE_OUTPUT_INIT(nl_link_generation_report, nl_link_generation_report_init)
  *  Returns SUCCESS, or a failure with INVALID_HANDLE (also when the navmesh was removed while the
  *  links were being generated: nothing is stored), INVALID_ARGUMENT (a setting, named; also a sample_spacing that
  *  would put more than 4,000,000 take-off samples on this navmesh's boundary; plugin_settings_json
- *  nested deeper than 64 levels, or with a value that is not an object, the key named),
+ *  nested deeper than 64 levels, or with a value that is not an object, or naming a kind no loaded
+ *  link-kind plugin provides: the key named, with the kinds loaded),
  *  PARSE_ERROR (malformed plugin_settings_json, found before any work), CANCELLED (progress
  *  returned 0: the navmesh's links are as they were), OUT_OF_MEMORY.
  *  Generations and updates of one navmesh run one after the other; other navmeshes' run at the same
