@@ -26,7 +26,8 @@ int generate(int argc, char** argv, Output output) {
     const bool bake = output == Output::NavMeshFile;
     const samples::Arguments args(
         bake ? "navlink bake" : "navlink generate", bake ? "bake" : "generate", argc, argv, 2,
-        {{"out", true}, {"navmesh", true}, {"agent", true}, {"settings", true}, {"png", true}, {"oblique", false}});
+        {{"out", true}, {"navmesh", true}, {"agent", true}, {"settings", true}, {"plugin", true}, {"png", true},
+         {"oblique", false}});
     if (args.wants_help()) {
         std::fputs(bake ? kBakeHelp : kGenerateHelp, stdout);
         return 0;
@@ -50,7 +51,7 @@ int generate(int argc, char** argv, Output output) {
                                                      : samples::GenerationSettings();
 
     NavigableLevel level(args.positional()[0], args.value("navmesh"), agent.body, settings.recast_json,
-                         args.has("png"));
+                         args.has("png"), args.value("plugin"));
     const nl_link_generation_report report = level.generate_links(settings.links);
     if (bake) samples::save_navmesh_file(level.world(), level.navmesh(), out);
     else samples::write_text_file(out, samples::links_json(level.world(), level.navmesh()));

@@ -24,7 +24,7 @@ const char* const kMainHelp =
 
 const char* const kGenerateHelp =
     "usage: navlink generate LEVEL.obj --out LINKS.json [--navmesh NAVMESH.obj] [--agent AGENT.json]\n"
-    "                    [--settings GEN.json] [--png VIEW.png] [--oblique]\n"
+    "                    [--settings GEN.json] [--plugin PLUGIN.so] [--png VIEW.png] [--oblique]\n"
     "\n"
     "Builds LEVEL's navmesh with the built-in Recast builder (or takes NAVMESH.obj: convex polygons, Y up),\n"
     "generates jump and drop links against the level geometry, writes them to LINKS.json and prints the\n"
@@ -37,13 +37,16 @@ const char* const kGenerateHelp =
     "                        max_slope. Capabilities (max_jump_distance...) are refused here: they\n"
     "                        choose links when a path is planned (navlink path --agent)\n"
     "  --settings GEN.json   link generator settings (docs/link-generation.md), e.g.\n"
-    "                        {\"max_jump_gap\": 6, \"recast\": {\"cell_size\": 0.2}, \"plugins\": {}}\n"
+    "                        {\"max_jump_gap\": 6, \"recast\": {\"cell_size\": 0.2}, \"plugins\": {\"climb\": {}}}\n"
+    "                        \"plugins\" holds each loaded link-kind plugin's settings by its kind name\n"
+    "  --plugin PLUGIN.so    load a link-kind plugin library (nl_plugin_load): its links are generated\n"
+    "                        with the others; settings for a kind no loaded plugin provides are refused\n"
     "  --png VIEW.png        also draw the level, navmesh, outline and links\n"
     "  --oblique             draw the picture from an angle instead of straight down\n";
 
 const char* const kBakeHelp =
     "usage: navlink bake LEVEL.obj --out NAVMESH.nlnav [--navmesh NAVMESH.obj] [--agent AGENT.json]\n"
-    "                    [--settings GEN.json] [--png VIEW.png] [--oblique]\n"
+    "                    [--settings GEN.json] [--plugin PLUGIN.so] [--png VIEW.png] [--oblique]\n"
     "\n"
     "As navlink generate, but writes the navmesh, its links and what they were made for (the body, the\n"
     "builder and its settings, the level's hash, the link settings) as one baked navmesh file: compact,\n"

@@ -10,7 +10,10 @@ namespace nl::cli {
 using nl::samples::now_ms;
 
 NavigableLevel::NavigableLevel(const std::string& level_path, const std::optional<std::string>& navmesh_path,
-                               const nl_agent_type& body, const std::string& recast_json, bool for_drawing) {
+                               const nl_agent_type& body, const std::string& recast_json, bool for_drawing,
+                               const std::optional<std::string>& plugin_path) {
+    // First: a plugin that does not load fails before the level is read and built.
+    if (plugin_path) world_.load_plugin(*plugin_path);
     double start = now_ms();
     level_ = samples::load_level_file(world_.get(), level_path, for_drawing);
     times_.load_ms = now_ms() - start;

@@ -13,4 +13,9 @@ World::World(int32_t path_workers, int32_t workers) {
 
 World::~World() { nl_world_destroy(world_); }
 
+void World::load_plugin(const std::string& path) {
+    nl_plugin_id plugin{};
+    check(nl_plugin_load(world_, path.c_str(), &plugin), "loading the plugin '" + path + "'");
+}
+
 }  // namespace nl::samples

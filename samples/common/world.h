@@ -3,6 +3,8 @@
 
 #include <navlink/navlink.h>
 
+#include <string>
+
 namespace nl::samples {
 
 class World {
@@ -16,6 +18,9 @@ public:
     World& operator=(const World&) = delete;
 
     nl_world* get() const { return world_; }
+
+    // Loads the plugin library at `path` (nl_plugin_load); throws SampleError naming it.
+    void load_plugin(const std::string& path);
 
 private:
     nl_world* world_ = nullptr;

@@ -126,3 +126,27 @@ TEST_CASE("every output is checked before the work: a bad --png writes no --out"
         CHECK_FALSE(std::filesystem::exists(dir + "/" + out));
     }
 }
+
+TEST_CASE("generate --plugin loads a link-kind plugin; settings for one not loaded are refused") {
+    const std::string dir = nl::test::scratch_dir("cli_plugin");
+    // A 2.5 m block on a wide floor: too high to step onto, low enough for the climb plugin.
+    nl::test::write_file(dir + "/block.obj",
+                         "v -10 0 -10\nv 20 0 -10\nv 20 0 20\nv -10 0 20\n"
+                         "v 0 0 0\nv 6 0 0\nv 6 0 10\nv 0 0 10\nv 0 2.5 0\nv 6 2.5 0\nv 6 2.5 10\nv 0 2.5 10\n"
+                         "f 1 4 3\nf 1 3 2\n"
+                         "f 9 12 11\nf 9 11 10\n"
+                         "f 5 6 10\nf 5 10 9\nf 6 7 11\nf 6 11 10\nf 7 8 12\nf 7 12 11\nf 8 5 9\nf 8 9 12\n");
+    nl::test::write_file(dir + "/climb.json", R"({"plugins": {"climb": {}}})");
+    check_one_line_error({{"generate", "block.obj", "--out", "links.json", "--settings", "climb.json"},
+                          "no loaded link-kind plugin provides the kind \"climb\" (loaded: none)"},
+                         dir);
+    check_one_line_error({{"generate", "block.obj", "--out", "links.json", "--plugin", "missing.so"}, "missing.so"},
+                         dir);
+    const ProgramRun run = navlink(
+        {"generate", "block.obj", "--out", "links.json", "--settings", "climb.json", "--plugin", CLIMB_PLUGIN_PATH}, dir);
+    REQUIRE_MESSAGE(run.exit_code == 0, run.err);
+    const auto links = nl::test::parse_json_file(dir + "/links.json").at("links");
+    size_t climbs = 0;
+    for (const auto& link : links) climbs += link.at("kind") != "jump" && link.at("kind") != "drop";
+    CHECK(climbs >= 20);  // four sides of a 6 x 10 m block
+}
