@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 
+#include "json_text.h"
 #include "sample_error.h"
 #include "text_file.h"
 
@@ -19,8 +20,8 @@ void read_number(const Json& object, const char* key, float lo, bool lo_open, fl
                  float& out) {
     const auto it = object.find(key);
     if (it == object.end()) return;
-    const std::string range = std::string(lo_open ? "> " : ">= ") + Json(lo).dump() +
-                              (std::isinf(hi) ? std::string() : " and <= " + Json(hi).dump());
+    const std::string range = std::string(lo_open ? "> " : ">= ") + shortest_float(lo) +
+                              (std::isinf(hi) ? std::string() : " and <= " + shortest_float(hi));
     if (!it->is_number())
         throw SampleError(source + ": " + key + " must be a number " + range + " (got " + it->dump() + ")");
     const double value = it->get<double>();
@@ -45,12 +46,7 @@ AgentProfile default_agent_profile() {
 }
 
 AgentProfile parse_agent_json(const std::string& text, const std::string& source) {
-    Json json;
-    try {
-        json = Json::parse(text);
-    } catch (const Json::parse_error& e) {
-        throw SampleError(source + ": not valid JSON: " + e.what());
-    }
+    const Json json = parse_json_text(text, source);
     if (!json.is_object()) throw SampleError(source + ": an agent must be a JSON object");
     static const char* const known[] = {"name",
                                         "radius",

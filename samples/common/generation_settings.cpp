@@ -2,6 +2,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "json_text.h"
 #include "sample_error.h"
 #include "text_file.h"
 
@@ -17,12 +18,7 @@ GenerationSettings& GenerationSettings::operator=(const GenerationSettings& othe
 }
 
 GenerationSettings parse_generation_settings(const std::string& text, const std::string& source) {
-    nlohmann::json json;
-    try {
-        json = nlohmann::json::parse(text);
-    } catch (const nlohmann::json::parse_error& e) {
-        throw SampleError(source + ": not valid JSON: " + e.what());
-    }
+    nlohmann::json json = parse_json_text(text, source);
     if (!json.is_object()) throw SampleError(source + ": settings must be a JSON object");
     GenerationSettings settings;
     for (const char* key : {"recast", "plugins"}) {
