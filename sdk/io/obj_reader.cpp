@@ -58,6 +58,9 @@ tinyobj::ObjReaderConfig config() {
 TriangleMesh read_obj_file(const std::string& path) { return read_obj_text(read_file_bytes(path), path); }
 
 TriangleMesh read_obj_text(std::string_view text, const std::string& name) {
+    // A binary file would otherwise come out as "no faces"; no OBJ text holds a NUL byte.
+    if (const size_t nul = text.find('\0'); nul != std::string_view::npos)
+        fail(ErrorCode::Parse, name, ": not a text file (a NUL byte at offset ", nul, "): an OBJ file is text");
     tinyobj::ObjReader reader;
     if (!reader.ParseFromString(checked_obj_records(text, name), std::string(), config()))
         fail(ErrorCode::Parse, name, ": ", first_line(reader.Error()));

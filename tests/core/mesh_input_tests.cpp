@@ -126,6 +126,9 @@ TEST_CASE("OBJ: negative (relative) indices resolve to earlier vertices") {
 
 TEST_CASE("OBJ: malformed files are parse errors with the reason") {
     CHECK(code_of([] { nl::read_obj_text(""); }) == ErrorCode::Parse);
+    // A binary file says so, not "no faces".
+    CHECK(message_of([] { nl::read_obj_text(std::string_view("\x7f" "ELF\x02\x01\x01\0\0v 1 2 3\n", 15), "ls.obj"); }) ==
+          "ls.obj: not a text file (a NUL byte at offset 7): an OBJ file is text");
     CHECK(code_of([] { nl::read_obj_text("v 0 0 0\nv 1 0 0\nv 0 0 1\n"); }) == ErrorCode::Parse);
     CHECK(code_of([] { nl::read_obj_text("v 0 0 0\nv 1 0 0\nv 0 0 1\nf 1 2 9\n"); }) == ErrorCode::Parse);
     CHECK(code_of([] { nl::read_obj_text("v 0 0 0\nv 1 0 0\nv 0 0 1\nf 1 2 0\n"); }) == ErrorCode::Parse);
