@@ -347,7 +347,8 @@ NL_API nl_status nl_navmesh_generate_cross_links(nl_world* world, nl_navmesh_id 
         const nl_link_settings given = read_settings(settings);
         if (out_report) nl::capi::check_growable_output(out_report, kReportFirstSize, "out_report");
         const nl::LinkSettings core_settings = core_settings_of(given);
-        plugin_settings_of(given);  // checked as for any generation; link-kind plugins link within one navmesh
+        // Checked as for any generation, though link-kind plugins link within one navmesh.
+        w.check_plugin_settings(plugin_settings_of(given));
         const nl::LinkGenerationReport report =
             w.generate_cross_links(to_handle(first), to_handle(second), core_settings, tolerance, nl::capi::progress_of(progress, user));
         if (out_report) nl::capi::write_growable(out_report, to_c(report), kReportFirstSize, "out_report");

@@ -1,6 +1,5 @@
 #include "plugin_adapter.h"
 
-
 #include <cstring>
 #include <exception>
 #include <filesystem>

@@ -10,10 +10,10 @@
 #include "navigable_level.h"
 #include "navmesh_contents.h"
 #include "navmesh_files.h"
+#include "output_paths.h"
 #include "palette.h"
 #include "path_output.h"
 #include "path_plan.h"
-#include "output_paths.h"
 #include "picture_export.h"
 #include "sample_error.h"
 

@@ -63,6 +63,12 @@ std::vector<Plugin*> PluginRegistry::link_kind_plugins() const {
     return out;
 }
 
+std::string listed_names(const std::vector<std::string>& names) {
+    std::string out;
+    for (const std::string& name : names) out += (out.empty() ? "'" : ", '") + name + "'";
+    return out.empty() ? "none" : out;
+}
+
 std::vector<Handle> PluginRegistry::handles() const {
     std::shared_lock lock(mutex_);
     return order_;

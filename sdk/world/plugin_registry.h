@@ -37,4 +37,7 @@ private:
     std::vector<Handle> order_;
 };
 
+// Plugin names or kinds as a message lists what is loaded: 'a', 'b' ("none" for no name).
+std::string listed_names(const std::vector<std::string>& names);
+
 }  // namespace nl

@@ -110,12 +110,9 @@ std::string settings_record(const std::string& name, const std::string& said) {
 
 Handle World::build_navmesh(const NavMeshBuildRequest& request) {
     NavMeshBuilder* builder = plugins_.find_navmesh_builder(request.builder);
-    if (!builder) {
-        std::string loaded;
-        for (const std::string& name : plugins_.navmesh_builder_names()) loaded += (loaded.empty() ? "'" : ", '") + name + "'";
-        fail(ErrorCode::NotFound, "no navmesh builder named '", request.builder, "' (loaded: ", loaded.empty() ? "none" : loaded,
-             ")");
-    }
+    if (!builder)
+        fail(ErrorCode::NotFound, "no navmesh builder named '", request.builder,
+             "' (loaded: ", listed_names(plugins_.navmesh_builder_names()), ")");
     if (request.surface != Handle{}) {
         std::lock_guard lock(surface_moves_);
         surface_placement(request.surface);

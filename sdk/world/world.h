@@ -148,6 +148,11 @@ public:
     // not finite, beyond the coordinate limit or inverted, NotFound when there is no generation to
     // continue (never generated, or its links removed or replaced since), and as generate_links.
     LinkGenerationReport update_links_in_box(Handle navmesh, const Aabb& box, GenerationProgress progress);
+    // InvalidArgument naming a kind of `settings` that no loaded link-kind plugin provides: settings
+    // for a plugin that is not there would change nothing, silently (a misspelt or unloaded one).
+    // generate_links checks its own; a caller that takes plugin settings without running the plugins
+    // (cross links) checks them the same way.
+    void check_plugin_settings(const PluginSettings& settings) const;
 
 private:
     // The link-kind plugins' links for `mesh`, and what ran (LinksMadeWith::plugins).
@@ -157,9 +162,6 @@ private:
     };
     PluginLinks plugin_links(Handle navmesh, const NavMesh& mesh, const PluginSettings& settings,
                              LinkGenerationReport& report);
-    // InvalidArgument naming a kind of `settings` that no loaded link-kind plugin provides: settings
-    // for a plugin that is not there would change nothing, silently (a misspelt or unloaded one).
-    void check_plugin_settings(const PluginSettings& settings) const;
     void log_repairs(const NavMesh& navmesh) const;
     // InvalidArgument for a navmesh that rides a moving mesh: the generator proves links against the
     // level as it stands, so they would hold at one placement only.

@@ -152,16 +152,12 @@ World::PluginLinks World::plugin_links(Handle navmesh, const NavMesh& mesh, cons
 }
 
 void World::check_plugin_settings(const PluginSettings& settings) const {
-    const std::vector<Plugin*> loaded = plugins_.link_kind_plugins();
-    for (const auto& [kind_name, json] : settings) {
-        const bool provided = std::any_of(loaded.begin(), loaded.end(), [&kind = kind_name](Plugin* p) {
-            return p->link_kind()->kind_name() == kind;
-        });
-        if (provided) continue;
-        std::string names;
-        for (Plugin* p : loaded) names += (names.empty() ? "'" : ", '") + p->link_kind()->kind_name() + "'";
-        fail(ErrorCode::InvalidArgument, "plugin_settings_json: no loaded link-kind plugin provides the kind ",
-             quoted_excerpt(kind_name), " (loaded: ", names.empty() ? "none" : names, ")");
+    std::vector<std::string> kinds;
+    for (Plugin* p : plugins_.link_kind_plugins()) kinds.push_back(p->link_kind()->kind_name());
+    for (const auto& entry : settings) {
+        if (std::find(kinds.begin(), kinds.end(), entry.first) == kinds.end())
+            fail(ErrorCode::InvalidArgument, "plugin_settings_json: no loaded link-kind plugin provides the kind ",
+                 quoted_excerpt(entry.first), " (loaded: ", listed_names(kinds), ")");
     }
 }
 

@@ -296,4 +296,14 @@ TEST_CASE("plugin settings for a plugin that is not loaded are refused, naming w
                       std::string::npos,
                   s.generate_error);
     s.generate("{}");  // no plugin settings: the built-in kinds alone
+    // Cross links run no plugin, but their plugin settings are checked the same way.
+    nl_link_settings settings = nl_default_link_settings();
+    static const char climb[] = "{\"climb\": {}}";
+    settings.plugin_settings_json = climb;
+    settings.plugin_settings_json_length = sizeof climb - 1;
+    CHECK(nl_navmesh_generate_cross_links(s.world, s.navmesh, s.navmesh, 0.5f, &settings, nullptr, nullptr, nullptr) ==
+          (NL_STATUS_FAILURE | NL_STATUS_INVALID_ARGUMENT));
+    CHECK_MESSAGE(std::string(nl_get_last_error_message()).find("no loaded link-kind plugin provides the kind \"climb\"") !=
+                      std::string::npos,
+                  nl_get_last_error_message());
 }
