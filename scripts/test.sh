@@ -25,13 +25,14 @@ start=$(date +%s)
 echo "== release build and tests (with the C#, Rust and Python binding tests)"
 # Both compilers at -Wall -Wextra -Werror: gcc here, clang in the sanitizer build (its warnings do not
 # depend on the sanitizers), so no third build is needed for clang's warnings.
-configure_and_build "$root/build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DNAVLINK_BUILD_BINDINGS=ON -DNAVLINK_WERROR=ON
+configure_and_build "$root/build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DNAVLINK_BUILD_BINDINGS=ON -DNAVLINK_WERROR=ON \
+  -DNAVLINK_UNITY_BUILD=ON
 ctest --test-dir "$root/build" --output-on-failure -j "$jobs"
 
 echo "== sanitizer build (address;undefined, clang, with the fuzz targets) and tests"
 configure_and_build "$root/build-asan" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DNAVLINK_SANITIZE="address;undefined" \
   -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ -DNAVLINK_BUILD_FUZZERS=ON -DNAVLINK_WERROR=ON \
-  -DNAVLINK_BUILD_BENCHMARKS=OFF -DNAVLINK_INSTALL=OFF
+  -DNAVLINK_BUILD_BENCHMARKS=OFF -DNAVLINK_INSTALL=OFF -DNAVLINK_UNITY_BUILD=ON
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 ctest --test-dir "$root/build-asan" --output-on-failure -LE "no_sanitizer|fuzz" -j "$jobs"
 
@@ -41,7 +42,7 @@ unset ASAN_OPTIONS UBSAN_OPTIONS
 
 echo "== ThreadSanitizer build: the path queue stress test, the world, agents and moving surfaces soaks and the host task system"
 configure_and_build "$root/build-tsan" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DNAVLINK_SANITIZE=thread \
-  -DNAVLINK_BUILD_BENCHMARKS=OFF -DNAVLINK_BUILD_SAMPLES=OFF -DNAVLINK_INSTALL=OFF \
+  -DNAVLINK_BUILD_BENCHMARKS=OFF -DNAVLINK_BUILD_SAMPLES=OFF -DNAVLINK_INSTALL=OFF -DNAVLINK_UNITY_BUILD=ON \
   --target navlink-path-stress --target navlink-world-soak --target navlink-agents-soak \
   --target navlink-surfaces-soak --target navlink-abi-host-tasks-test
 # Debian's Embree and TBB are not instrumented: their calls to intercepted functions (malloc, free,

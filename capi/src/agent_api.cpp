@@ -12,6 +12,7 @@ using nl::capi::deref;
 using nl::capi::guarded;
 using nl::capi::require;
 using nl::capi::to_handle;
+using nl::capi::copy_point;
 using nl::capi::to_id;
 
 namespace {
@@ -20,15 +21,12 @@ constexpr size_t kAgentDefFirstSize = sizeof(nl_agent_def);  // their first rele
 constexpr size_t kAgentInfoFirstSize = offsetof(nl_agent_info, user_data) + sizeof(uint64_t);
 constexpr size_t kTrajectoryFirstSize = sizeof(nl_agent_trajectory);
 constexpr size_t kEventFirstSize = sizeof(nl_agent_event);
-constexpr size_t kPointFirstSize = offsetof(nl_path_point, reserved) + 3;
 
 static_assert(uint32_t(nl::AgentState::Failed) == NL_AGENT_FAILED && uint32_t(nl::AgentState::Waiting) == NL_AGENT_WAITING,
               "core and header disagree on agent states");
 static_assert(uint32_t(nl::AgentReason::CapabilitiesChanged) == NL_AGENT_REASON_CAPABILITIES_CHANGED,
               "core and header disagree on agent reasons");
 static_assert(uint32_t(nl::AgentEventKind::Replanned) == NL_AGENT_EVENT_REPLANNED, "core and header disagree on events");
-
-void copy_point(float* out, const nl::Vec3& v) { Eigen::Map<nl::Vec3>{out} = v; }
 
 nl_trajectory_kind trajectory_kind(nl::MotionKind kind) {
     switch (kind) {
@@ -188,7 +186,7 @@ NL_API nl_status nl_agent_get_corners(const nl_world* world, nl_agent_id agent, 
                                       uint32_t* out_count) {
     return guarded("nl_agent_get_corners", world, [&] {
         const std::vector<nl::PathPoint> corners = deref(world).agents().corners(to_handle(agent));
-        nl::capi::list_growable_into(corners, out_points, capacity, out_count, kPointFirstSize, "out_points",
+        nl::capi::list_growable_into(corners, out_points, capacity, out_count, nl::capi::kPathPointFirstSize, "out_points",
                                      [](const nl::PathPoint& p) { return nl::capi::to_c(p); });
     });
 }

@@ -17,6 +17,7 @@ using nl::capi::deref;
 using nl::capi::guarded;
 using nl::capi::require;
 using nl::capi::to_handle;
+using nl::capi::copy_point;
 using nl::capi::to_id;
 
 namespace {
@@ -27,8 +28,6 @@ constexpr size_t kSettingsFirstSize = offsetof(nl_link_settings, plugin_settings
 constexpr size_t kReportFirstSize = offsetof(nl_link_generation_report, milliseconds_total) + sizeof(double);
 constexpr size_t kLinkFirstSize = offsetof(nl_link, requirements) + sizeof(nl_link_requirements);  // its first release with a `size` (0.2)
 constexpr size_t kMaxDropAngles = sizeof(nl_link_settings::drop_angles) / sizeof(float);
-
-void copy_point(float* out, const nl::Vec3& v) { Eigen::Map<nl::Vec3>{out} = v; }
 
 nl::LinkSettings to_core(const nl_link_settings& c) {
     nl::LinkSettings s;

@@ -3,6 +3,8 @@
 // own name (the caller adds "def->" with nl::naming_fields).
 #pragma once
 
+#include <cstddef>
+
 #include "navlink/navlink.h"
 #include "navmesh/navmesh_builder.h"
 #include "links/link.h"
@@ -24,6 +26,12 @@ NavMeshInput navmesh_input_from_def(const nl_navmesh_def& def);
 // A link def (nl_link_add, nl_link_update, a link-kind plugin's sink); the link is not yet placed on
 // a navmesh (World does that).
 Link link_from_def(const nl_link_def& def);
+
+// A point into a host's float[3].
+inline void copy_point(float* out, const Vec3& v) { Eigen::Map<Vec3>{out} = v; }
+
+// nl_path_point's size in its first release with a `size` (0.2).
+constexpr size_t kPathPointFirstSize = offsetof(nl_path_point, reserved) + 3;
 
 // A path point as the host reads it (nl_path_get_points, nl_agent_get_corners).
 nl_path_point to_c(const PathPoint& point);

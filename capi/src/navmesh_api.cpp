@@ -24,11 +24,10 @@ static_assert(NL_MAX_POLYGON_VERTICES == nl::kMaxPolygonVertices, "header and co
 static_assert(NL_NO_POLYGON == nl::kNoPolygon, "header and core disagree");
 
 using nl::capi::to_handle;
+using nl::capi::copy_point;
 using nl::capi::to_id;
 
 using nl::capi::to_c;
-
-void copy_point(float* out, const nl::Vec3& v) { Eigen::Map<nl::Vec3>{out} = v; }
 
 }  // namespace
 

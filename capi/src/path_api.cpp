@@ -26,7 +26,6 @@ namespace {
 constexpr size_t kRequestFirstSize = offsetof(nl_path_request_def, user) + sizeof(void*);
 constexpr size_t kResultFirstSize = offsetof(nl_path_result, goal) + 3 * sizeof(float);
 constexpr size_t kStatsFirstSize = offsetof(nl_path_queue_stats, finished) + sizeof(uint64_t);
-constexpr size_t kPointFirstSize = offsetof(nl_path_point, reserved) + 3;       // their first releases with a `size` (0.2)
 constexpr size_t kFinishedFirstSize = sizeof(nl_path_finished);
 constexpr size_t kBudgetFirstSize = sizeof(nl_path_budget);
 constexpr uint32_t kMaxAreaCosts = 256;
@@ -99,7 +98,7 @@ void write_result(const nl::PathResult& r, nl_path_result* out_result, nl_path_p
     require(out_count, "out_count");
     if (!out_points && capacity > 0) fail(ErrorCode::InvalidArgument, "out_points is null but capacity is ", capacity);
     nl::capi::write_growable(out_result, to_c(r), kResultFirstSize, "out_result");
-    nl::capi::list_growable_into(r.points, out_points, capacity, out_count, kPointFirstSize, "out_points",
+    nl::capi::list_growable_into(r.points, out_points, capacity, out_count, nl::capi::kPathPointFirstSize, "out_points",
                                  [](const nl::PathPoint& p) { return nl::capi::to_c(p); });
 }
 

@@ -1,6 +1,7 @@
 // What a search reads: one navmesh and one moment of its links, with the links indexed by the
 // polygon they leave from. Immutable, so any number of searches share it; an edit to the links makes
-// the next request build a new one while running searches keep theirs.
+// the next request build a new one while running searches keep theirs. The reachability maps of
+// bodies on it are built when first asked for and kept with it (thread-safe).
 #pragma once
 
 #include <cstdint>
@@ -9,6 +10,7 @@
 #include "links/link_snapshot.h"
 #include "navmesh/navmesh.h"
 #include "navmesh/surface_pose.h"
+#include "path/reachability_cache.h"
 
 namespace nl {
 
@@ -44,6 +46,15 @@ public:
     // Heap bytes of the link index (the navmesh counts its own).
     size_t link_index_bytes() const;
 
+    // Where a body (capabilities, area costs as a path request gives them) can go on this graph
+    // (path/reachability.h): built on first use, shared by every body of its class. Throws only for
+    // out-of-memory.
+    std::shared_ptr<const ReachabilityMap> reachability(const AgentCapabilities& agent,
+                                                        const std::vector<float>& area_costs) const {
+        return reachability_.get(*this, agent, area_costs);
+    }
+    size_t reachability_map_count() const { return reachability_.map_count(); }
+
 private:
     std::shared_ptr<const NavMesh> navmesh_;
     std::shared_ptr<const LinkSnapshot> links_;
@@ -52,6 +63,7 @@ private:
     std::vector<LinkExit> exits_;
     float cheapest_link_per_metre_ = 1.0f;
     bool has_cross_links_ = false;
+    mutable ReachabilityCache reachability_;
 };
 
 }  // namespace nl

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "path/corridor_search.h"
+#include "path/reachability.h"
 #include "path/string_pulling.h"
 
 namespace nl {
@@ -115,6 +116,12 @@ void plan_path_in_surface_space(const PathGraph& graph, const PathQuery& query, 
         return;
     }
     result.goal = goal.point;
+    // A goal out of reach fails at once, without a search over everything the body can reach.
+    if (!query.accept_partial && start.polygon != goal.polygon &&
+        !graph.reachability(query.agent, query.area_costs)->reaches(start.polygon, goal.polygon)) {
+        result.outcome = PathOutcome::NoPath;
+        return;
+    }
 
     thread_local CorridorSearch corridor;
     find_corridor(graph, query, start, goal, cancel, corridor);

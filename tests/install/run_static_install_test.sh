@@ -22,10 +22,11 @@ static_build=$build/tests/install/static-library
 log=$build/tests/install/static-library.log
 cache_value() { sed -n "s/^$1:[A-Z]*=//p" "$build/CMakeCache.txt"; }
 
-# Release: the archive is what ships, and without -g it compiles in a third less time.
+# Release: the archive is what ships, and without -g it compiles in a third less time. A unity build
+# (sources compiled in batches) halves the time again: the headers (Eigen, Embree, json) dominate.
 if ! "$cmake" -S "$source" -B "$static_build" -G "$(cache_value CMAKE_GENERATOR)" \
     -DCMAKE_C_COMPILER="$(cache_value CMAKE_C_COMPILER)" -DCMAKE_CXX_COMPILER="$(cache_value CMAKE_CXX_COMPILER)" \
-    -DCMAKE_BUILD_TYPE=Release -DNAVLINK_SHARED=OFF -DNAVLINK_WERROR="$(cache_value NAVLINK_WERROR)" \
+    -DCMAKE_BUILD_TYPE=Release -DNAVLINK_UNITY_BUILD=ON -DNAVLINK_SHARED=OFF -DNAVLINK_WERROR="$(cache_value NAVLINK_WERROR)" \
     -DNAVLINK_BUILD_TESTS=OFF -DNAVLINK_BUILD_SAMPLES=OFF -DNAVLINK_BUILD_BENCHMARKS=OFF \
     -DNAVLINK_BUILD_BINDINGS=OFF -DNAVLINK_INSTALL=ON >"$log" 2>&1; then
   echo "FAILED: configure the static library build in $static_build"

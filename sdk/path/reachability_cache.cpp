@@ -1,0 +1,97 @@
+#include "path/reachability_cache.h"
+
+#include <algorithm>
+
+#include "path/reachability.h"
+
+namespace nl {
+
+struct ReachabilityCache::Class {
+    ReachabilityClass key;
+    MapFuture map;
+};
+
+namespace {
+
+bool same_body(const AgentCapabilities& a, const AgentCapabilities& b) {
+    return a.max_jump_distance == b.max_jump_distance && a.max_jump_height == b.max_jump_height &&
+           a.max_drop_height == b.max_drop_height && a.radius == b.radius && a.abilities == b.abilities;
+}
+
+}  // namespace
+
+std::shared_ptr<const ReachabilityMap> ReachabilityCache::get(const PathGraph& graph, const AgentCapabilities& agent,
+                                                              const std::vector<float>& area_costs) {
+    const std::array<uint64_t, 4> excluded = ReachabilityClass::excluded_areas_of(area_costs);
+    auto known = [&]() -> std::shared_ptr<Class> {
+        for (Body& body : bodies_) {
+            if (body.excluded_areas == excluded && same_body(body.agent, agent)) {
+                body.last_used = ++clock_;
+                return body.map_class;
+            }
+        }
+        return nullptr;
+    };
+    std::shared_ptr<Class> map_class;
+    {
+        std::lock_guard<std::mutex> lock(mutex_);
+        map_class = known();
+    }
+    if (map_class) return map_class->map.get();
+
+    // A new body: which links it can take is a pass over the links, done outside the lock.
+    ReachabilityClass key = ReachabilityClass::of(graph, agent, area_costs);
+    std::promise<std::shared_ptr<const ReachabilityMap>> promise;
+    bool build = false;
+    {
+        std::lock_guard<std::mutex> lock(mutex_);
+        map_class = known();  // another thread may have added it meanwhile
+        if (!map_class) {
+            for (const std::shared_ptr<Class>& c : classes_) {
+                if (c->key == key) map_class = c;
+            }
+            if (!map_class) {
+                map_class = std::make_shared<Class>(Class{std::move(key), promise.get_future().share()});
+                classes_.push_back(map_class);
+                build = true;
+            }
+            remember(Body{agent, excluded, map_class, ++clock_});
+        }
+    }
+    if (build) {
+        try {
+            promise.set_value(std::make_shared<const ReachabilityMap>(graph, map_class->key));
+        } catch (...) {
+            promise.set_exception(std::current_exception());
+            forget(map_class);
+            throw;
+        }
+    }
+    return map_class->map.get();
+}
+
+void ReachabilityCache::remember(const Body& body) {
+    if (bodies_.size() >= kMaxBodies) {
+        const auto oldest = std::min_element(bodies_.begin(), bodies_.end(),
+                                             [](const Body& a, const Body& b) { return a.last_used < b.last_used; });
+        bodies_.erase(oldest);
+    }
+    bodies_.push_back(body);
+    classes_.erase(std::remove_if(classes_.begin(), classes_.end(),
+                                  [](const std::shared_ptr<Class>& c) { return c.use_count() == 1; }),
+                   classes_.end());
+}
+
+void ReachabilityCache::forget(const std::shared_ptr<Class>& map_class) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    bodies_.erase(std::remove_if(bodies_.begin(), bodies_.end(), [&](const Body& b) { return b.map_class == map_class; }),
+                  bodies_.end());
+    classes_.erase(std::remove(classes_.begin(), classes_.end(), map_class), classes_.end());
+}
+
+size_t ReachabilityCache::map_count() const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return classes_.size();
+}
+
+}  // namespace nl
