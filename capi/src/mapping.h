@@ -8,6 +8,7 @@
 #include "navlink/navlink.h"
 #include "navmesh/navmesh_builder.h"
 #include "links/link.h"
+#include "navmesh/surface_pose.h"
 #include "path/path_query.h"
 
 namespace nl::capi {
@@ -32,6 +33,14 @@ inline void copy_point(float* out, const Vec3& v) { Eigen::Map<Vec3>{out} = v; }
 
 // nl_path_point's size in its first release with a `size` (0.2).
 constexpr size_t kPathPointFirstSize = offsetof(nl_path_point, reserved) + 3;
+
+// A navmesh point as the host reads it, in the world (the navmesh's pose applied).
+nl_nav_point to_c(const NavPoint& point, const SurfacePose& pose);
+
+// A body's capabilities and area costs as a path request or a query filter gives them, checked;
+// failures name the fields after `prefix` ("def->", "filter->").
+AgentCapabilities read_capabilities(const nl_agent_capabilities& agent, const char* prefix);
+std::vector<float> read_area_costs(const float* costs, uint32_t count, const char* prefix);
 
 // A path point as the host reads it (nl_path_get_points, nl_agent_get_corners).
 nl_path_point to_c(const PathPoint& point);

@@ -36,6 +36,15 @@ namespace nl::capi {
 AgentType to_core(const nl_agent_type& a) { return AgentType{a.radius, a.height, a.max_climb, a.max_slope}; }
 nl_agent_type to_c(const AgentType& a) { return nl_agent_type{a.radius, a.height, a.max_climb, a.max_slope}; }
 
+nl_nav_point to_c(const NavPoint& p, const SurfacePose& pose) {
+    nl_nav_point r{};
+    r.found = p.found ? 1 : 0;
+    r.polygon = p.polygon;
+    r.distance = p.distance;
+    if (p.found) copy_point(r.point, pose.world_point(p.point));
+    return r;
+}
+
 NavMeshInput navmesh_input_from_def(const nl_navmesh_def& given) {
     const nl_navmesh_def def = read_growable(given, nl_default_navmesh_def(), kNavMeshDefFirstSize, "def");
     NavMeshInput in;
@@ -132,14 +141,16 @@ void navmesh_find_nearest(const World& world, nl_navmesh_id navmesh, const float
     }
     world.tasks().parallel_for(count, 256, [&](uint32_t begin, uint32_t end) {
         for (uint32_t i = begin; i < end; ++i) {
-            const NavPoint p = mesh->find_nearest(pose.surface_point(Eigen::Map<const Vec3>(points + 3 * size_t(i))),
-                                                  pose.surface_extents(extents));
-            nl_nav_point r{};
-            r.found = p.found ? 1 : 0;
-            r.polygon = p.polygon;
-            r.distance = p.distance;
-            if (p.found) copy_point(r.point, pose.world_point(p.point));
-            out[i] = r;
+            const Vec3 point = pose.surface_point(Eigen::Map<const Vec3>(points + 3 * size_t(i)));
+            const NavPoint p = mesh->find_nearest(point, pose.surface_extents(extents));
+            out[i] = to_c(p, pose);
+            if (p.found) continue;
+            // Why nothing was found: where the navmesh is, beyond the box.
+            const NavPoint beyond = mesh->find_nearest_anywhere(point, pose.surface_extents(extents));
+            if (!beyond.found) continue;
+            out[i].beyond_box = 1;
+            out[i].distance = beyond.distance;
+            copy_point(out[i].point, pose.world_point(beyond.point));
         }
     });
 }

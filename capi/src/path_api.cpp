@@ -28,7 +28,6 @@ constexpr size_t kResultFirstSize = offsetof(nl_path_result, goal) + 3 * sizeof(
 constexpr size_t kStatsFirstSize = offsetof(nl_path_queue_stats, finished) + sizeof(uint64_t);
 constexpr size_t kFinishedFirstSize = sizeof(nl_path_finished);
 constexpr size_t kBudgetFirstSize = sizeof(nl_path_budget);
-constexpr uint32_t kMaxAreaCosts = 256;
 
 static_assert(uint32_t(nl::PathOutcome::Failed) == NL_PATH_FAILED && uint32_t(nl::PathOutcome::Partial) == NL_PATH_PARTIAL,
               "core and header disagree on path outcomes");
@@ -40,16 +39,8 @@ nl::PathQuery read_query(const nl_path_request_def& def) {
     q.search_half_extents = nl::capi::read_position(def.search_half_extents, "def->search_half_extents");
     if (!(q.search_half_extents.array() > 0.0f).all())
         fail(ErrorCode::InvalidArgument, "def->search_half_extents must be > 0 in each axis");
-    q.agent.max_jump_distance = read_amount(def.agent.max_jump_distance, "def->agent.max_jump_distance");
-    q.agent.max_jump_height = read_amount(def.agent.max_jump_height, "def->agent.max_jump_height");
-    q.agent.max_drop_height = read_amount(def.agent.max_drop_height, "def->agent.max_drop_height");
-    q.agent.radius = read_amount(def.agent.radius, "def->agent.radius");
-    q.agent.abilities = def.agent.abilities;
-    if (def.area_cost_count > kMaxAreaCosts)
-        fail(ErrorCode::InvalidArgument, "def->area_cost_count is ", def.area_cost_count, " (at most ", kMaxAreaCosts, ")");
-    if (def.area_cost_count > 0) require(def.area_costs, "def->area_costs");
-    for (uint32_t i = 0; i < def.area_cost_count; ++i) read_amount(def.area_costs[i], "def->area_costs[", i, "]");
-    q.area_costs.assign(def.area_costs, def.area_costs + def.area_cost_count);
+    q.agent = nl::capi::read_capabilities(def.agent, "def->");
+    q.area_costs = nl::capi::read_area_costs(def.area_costs, def.area_cost_count, "def->");
     q.link_cost = read_amount(def.link_cost, "def->link_cost");
     q.max_nodes = def.max_nodes;
     q.accept_partial = def.accept_partial != 0;
@@ -297,6 +288,24 @@ NL_API nl_status nl_path_get_queue_stats(const nl_world* world, nl_path_queue_st
 }
 
 }  // extern "C"
+
+nl::AgentCapabilities nl::capi::read_capabilities(const nl_agent_capabilities& agent, const char* prefix) {
+    nl::AgentCapabilities a;
+    a.max_jump_distance = read_amount(agent.max_jump_distance, prefix, "agent.max_jump_distance");
+    a.max_jump_height = read_amount(agent.max_jump_height, prefix, "agent.max_jump_height");
+    a.max_drop_height = read_amount(agent.max_drop_height, prefix, "agent.max_drop_height");
+    a.radius = read_amount(agent.radius, prefix, "agent.radius");
+    a.abilities = agent.abilities;
+    return a;
+}
+
+std::vector<float> nl::capi::read_area_costs(const float* costs, uint32_t count, const char* prefix) {
+    constexpr uint32_t kMaxAreaCosts = 256;
+    if (count > kMaxAreaCosts) fail(ErrorCode::InvalidArgument, prefix, "area_cost_count is ", count, " (at most ", kMaxAreaCosts, ")");
+    if (count > 0 && !costs) fail(ErrorCode::InvalidArgument, prefix, "area_costs is null");
+    for (uint32_t i = 0; i < count; ++i) read_amount(costs[i], prefix, "area_costs[", i, "]");
+    return count > 0 ? std::vector<float>(costs, costs + count) : std::vector<float>{};
+}
 
 nl_path_point nl::capi::to_c(const nl::PathPoint& p) {
     nl_path_point c{};

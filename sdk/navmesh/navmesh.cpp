@@ -149,6 +149,21 @@ NavPoint NavMesh::find_nearest(const Vec3& point, const Vec3& half_extents) cons
     return nearest.best;
 }
 
+NavPoint NavMesh::find_nearest_anywhere(const Vec3& point, const Vec3& half_extents) const {
+    if (polygon_count() == 0) return NavPoint{};
+    Vec3 extents = half_extents.cwiseMax(Vec3::Constant(1e-3f));
+    const Vec3 lo = bounds_.min.cwiseMin(point), hi = bounds_.max.cwiseMax(point);
+    for (;;) {
+        if (((point - extents).array() <= lo.array()).all() && ((point + extents).array() >= hi.array()).all())
+            return find_nearest(point, extents);  // the box holds the whole navmesh
+        const NavPoint first = find_nearest(point, extents);
+        // Polygons beyond this box can still be nearer than one in its corner: look again as far as
+        // the first one found (and a climb more, for a floor straight below or above).
+        if (first.found) return find_nearest(point, extents.cwiseMax(Vec3::Constant(first.distance + agent_.max_climb)));
+        extents *= 2.0f;
+    }
+}
+
 NavPoint NavMesh::find_nearest_brute_force(const Vec3& point, const Vec3& half_extents) const {
     const Vec3 lo = point - half_extents, hi = point + half_extents;
     Nearest nearest{*this, point, {}};

@@ -106,6 +106,9 @@ public:
     NavPoint find_nearest(const Vec3& point, const Vec3& half_extents) const;
     // The same by visiting every polygon: the reference the grid is tested against.
     NavPoint find_nearest_brute_force(const Vec3& point, const Vec3& half_extents) const;
+    // The same over the whole navmesh, starting from the box: what a query that found nothing in its
+    // box was missing. Not found only for a navmesh without polygons.
+    NavPoint find_nearest_anywhere(const Vec3& point, const Vec3& half_extents) const;
     // As Detour: over the polygon (seen from above), the surface point straight below or above
     // `point`, at the detail height; elsewhere the nearest point of the polygon's outline.
     Vec3 closest_point_on_polygon(uint32_t p, const Vec3& point) const;

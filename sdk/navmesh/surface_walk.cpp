@@ -1,7 +1,6 @@
 #include "navmesh/surface_walk.h"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <limits>
 
@@ -19,28 +18,54 @@ Vec3 nearest_on_segment_xz(const Vec3& a, const Vec3& b, const Vec3& p, float& d
     return q;
 }
 
-// A bounded breadth-first visit of polygons through portals (small: agents' moves are short).
-constexpr size_t kMaxVisited = 48;
+// Which polygons a walk has visited, by polygon index: an epoch stamp per polygon stands for
+// clearing them, so a walk costs what it visits. Per thread.
+struct VisitMarks {
+    std::vector<uint32_t> stamps;
+    uint32_t epoch = 0;
+
+    void begin(uint32_t polygons) {
+        if (stamps.size() < polygons) stamps.resize(polygons, 0);
+        if (++epoch == 0) {
+            std::fill(stamps.begin(), stamps.end(), 0);
+            epoch = 1;
+        }
+    }
+    // True the first time p is marked in this walk.
+    bool mark(uint32_t p) {
+        if (stamps[p] == epoch) return false;
+        stamps[p] = epoch;
+        return true;
+    }
+};
+
+bool may_enter(const SurfaceWalkOptions& options, uint32_t p) { return p != kNoPolygon && (!options.passable || (*options.passable)(p)); }
 
 }  // namespace
 
-SurfaceMove move_along_surface(const NavMesh& navmesh, uint32_t polygon, const Vec3& from, const Vec3& to) {
+SurfaceMove move_along_surface(const NavMesh& navmesh, uint32_t polygon, const Vec3& from, const Vec3& to,
+                               const SurfaceWalkOptions& options) {
     // The polygons a circle around the move's middle touches, nearest portals first; the target is
     // the answer if one holds it, else the nearest wall point to it among them.
+    thread_local VisitMarks marks;
+    thread_local std::vector<std::pair<uint32_t, uint32_t>> visited;  // polygon, index of the one it was entered from
+    marks.begin(navmesh.polygon_count());
+    visited.clear();
     const Vec3 middle = 0.5f * (from + to);
     const float reach = 0.5f * Vec3(to.x() - from.x(), 0.0f, to.z() - from.z()).norm() + 0.001f;
-    std::array<uint32_t, kMaxVisited> visited{};
-    size_t count = 0, head = 0;
-    visited[count++] = polygon;
+    const size_t max_visited = std::max<uint32_t>(1, options.max_polygons);
+    visited.emplace_back(polygon, 0);
+    marks.mark(polygon);
+    size_t head = 0, best_index = 0;
     Vec3 best = from;
-    uint32_t best_polygon = polygon;
     float best_distance2 = std::numeric_limits<float>::infinity();
     bool reached = false;
-    while (head < count) {
-        const uint32_t p = visited[head++];
+    while (head < visited.size()) {
+        const size_t index = head++;
+        const uint32_t p = visited[index].first;
         if (navmesh.over_polygon(p, to.x(), to.z())) {
             best = to;
-            best_polygon = p;
+            best_index = index;
             reached = true;
             break;
         }
@@ -50,37 +75,60 @@ SurfaceMove move_along_surface(const NavMesh& navmesh, uint32_t polygon, const V
             const Vec3& b = navmesh.vertex(navmesh.corner(p, (k + 1) % n));
             const uint32_t next = navmesh.neighbour(p, k);
             float distance2;
-            if (next == kNoPolygon) {
+            if (!may_enter(options, next)) {
                 const Vec3 q = nearest_on_segment_xz(a, b, to, distance2);
                 if (distance2 < best_distance2) {
                     best_distance2 = distance2;
                     best = q;
-                    best_polygon = p;
+                    best_index = index;
                 }
                 continue;
             }
             nearest_on_segment_xz(a, b, middle, distance2);
-            if (distance2 > reach * reach || count == kMaxVisited) continue;
-            if (std::find(visited.begin(), visited.begin() + count, next) != visited.begin() + count) continue;
-            visited[count++] = next;
+            if (distance2 > reach * reach || visited.size() == max_visited) continue;
+            if (marks.mark(next)) visited.emplace_back(next, static_cast<uint32_t>(index));
         }
     }
     if (!reached && best_distance2 == std::numeric_limits<float>::infinity()) {
         // No wall among the polygons searched (the search ran out): stay put.
         best = from;
-        best_polygon = polygon;
+        best_index = 0;
     }
+    const uint32_t best_polygon = visited[best_index].first;
     best.y() = navmesh.surface_height(best_polygon, best.x(), best.z());
+    if (options.polygons) {
+        options.polygons->clear();
+        for (size_t i = best_index;; i = visited[i].second) {
+            options.polygons->push_back(visited[i].first);
+            if (i == 0) break;
+        }
+        std::reverse(options.polygons->begin(), options.polygons->end());
+    }
     return SurfaceMove{best, best_polygon, !reached};
 }
 
-bool straight_walk_clear(const NavMesh& navmesh, uint32_t polygon, const Vec3& from, const Vec3& to) {
-    constexpr int kMaxPolygons = 64;
+SurfaceRayHit raycast_surface(const NavMesh& navmesh, uint32_t polygon, const Vec3& from, const Vec3& to,
+                              const SurfaceWalkOptions& options) {
     constexpr float kOnEdge = 1e-4f;  // an edge hit this near one of its ends still counts
     const float dx = to.x() - from.x(), dz = to.z() - from.z();
+    if (options.polygons) options.polygons->clear();
+    SurfaceRayHit result;
+    auto stop_at = [&](uint32_t p, float t) {
+        result.hit = true;
+        result.t = std::clamp(t, 0.0f, 1.0f);
+        result.point = from + result.t * (to - from);
+        result.point.y() = navmesh.surface_height(p, result.point.x(), result.point.z());
+        result.end_polygon = p;
+    };
     uint32_t p = polygon;
-    for (int walked = 0; walked < kMaxPolygons; ++walked) {
-        if (navmesh.over_polygon(p, to.x(), to.z())) return true;
+    float entered_at = 0.0f;
+    for (uint32_t walked = 0; walked < std::max<uint32_t>(1, options.max_polygons); ++walked) {
+        if (options.polygons) options.polygons->push_back(p);
+        if (navmesh.over_polygon(p, to.x(), to.z())) {
+            result.point = Vec3(to.x(), navmesh.surface_height(p, to.x(), to.z()), to.z());
+            result.end_polygon = p;
+            return result;
+        }
         // A convex polygon: the line leaves it through the edge it crosses farthest along.
         const uint32_t n = navmesh.corner_count(p);
         float farthest = -1.0f;
@@ -97,12 +145,32 @@ bool straight_walk_clear(const NavMesh& navmesh, uint32_t polygon, const Vec3& f
             farthest = along;
             exit = k;
         }
-        if (exit == n || farthest < 0.0f) return false;  // numerically lost: not clear
+        if (exit == n || farthest < 0.0f) {  // numerically lost at a corner: nothing known beyond
+            stop_at(p, entered_at);
+            result.gave_up = true;
+            return result;
+        }
         const uint32_t next = navmesh.neighbour(p, exit);
-        if (next == kNoPolygon) return false;  // a wall before the target
+        if (!may_enter(options, next)) {  // a wall before the target
+            stop_at(p, farthest);
+            const Vec3& a = navmesh.vertex(navmesh.corner(p, exit));
+            const Vec3& b = navmesh.vertex(navmesh.corner(p, (exit + 1) % n));
+            // Corners run counter-clockwise seen from above, so the inside is left of a -> b.
+            result.wall_normal = Vec3(b.z() - a.z(), 0.0f, a.x() - b.x()).normalized();
+            return result;
+        }
         p = next;
+        entered_at = farthest;
     }
-    return false;
+    stop_at(p, entered_at);
+    result.gave_up = true;
+    return result;
+}
+
+bool straight_walk_clear(const NavMesh& navmesh, uint32_t polygon, const Vec3& from, const Vec3& to) {
+    SurfaceWalkOptions options;
+    options.max_polygons = 64;
+    return !raycast_surface(navmesh, polygon, from, to, options).hit;
 }
 
 }  // namespace nl

@@ -72,8 +72,13 @@ _Static_assert(offsetof(nl_boundary_edge, start) == 0 && offsetof(nl_boundary_ed
                "nl_boundary_edge layout");
 _Static_assert(offsetof(nl_nav_point, point) == 0 && offsetof(nl_nav_point, distance) == 12 &&
                    offsetof(nl_nav_point, polygon) == 16 && offsetof(nl_nav_point, found) == 20 &&
-                   offsetof(nl_nav_point, reserved) == 21 && sizeof(nl_nav_point) == 24,
+                   offsetof(nl_nav_point, beyond_box) == 21 && offsetof(nl_nav_point, reserved) == 22 &&
+                   sizeof(nl_nav_point) == 24,
                "nl_nav_point layout");
+_Static_assert(offsetof(nl_query_filter, size) == 0 && offsetof(nl_query_filter, agent) == 8 &&
+                   offsetof(nl_query_filter, area_costs) == 32 && offsetof(nl_random_points_def, size) == 0 &&
+                   offsetof(nl_navmesh_raycast_hit, size) == 0 && offsetof(nl_navmesh_raycast_hit, t) == 8,
+               "query struct layouts (growable: set size)");
 _Static_assert(offsetof(nl_navmesh_builder, build) == 0, "nl_navmesh_builder");
 /* Structs with a size field grow at their end: only today's offsets are fixed. */
 _Static_assert(offsetof(nl_navmesh_def, size) == 0 && offsetof(nl_navmesh_build_def, size) == 0 &&
@@ -362,6 +367,21 @@ struct api_table {
     nl_status (*path_process)(nl_world*, const nl_path_budget*, uint32_t*);
     nl_status (*path_take_finished)(nl_world*, nl_path_finished*, uint32_t, uint32_t*, uint32_t*);
     nl_status (*path_get_queue_stats)(const nl_world*, nl_path_queue_stats*);
+    /* Queries */
+    nl_query_filter (*default_query_filter)(void);
+    nl_status (*navmesh_can_reach)(const nl_world*, nl_navmesh_id, const nl_query_filter*, const uint32_t*,
+                                   const uint32_t*, uint32_t, uint8_t*);
+    nl_status (*navmesh_get_reachable_polygons)(const nl_world*, nl_navmesh_id, const nl_query_filter*, uint32_t,
+                                                uint32_t*, uint32_t, uint32_t*);
+    nl_status (*navmesh_get_islands)(const nl_world*, nl_navmesh_id, const nl_query_filter*, uint32_t*, uint32_t,
+                                     uint32_t*, uint32_t*);
+    nl_status (*navmesh_raycast)(const nl_world*, nl_navmesh_id, const nl_query_filter*, uint32_t, const float*,
+                                 const float*, nl_navmesh_raycast_hit*, uint32_t*, uint32_t, uint32_t*);
+    nl_status (*navmesh_move_along_surface)(const nl_world*, nl_navmesh_id, const nl_query_filter*, uint32_t,
+                                            const float*, const float*, nl_nav_point*, uint32_t*, uint32_t, uint32_t*);
+    nl_random_points_def (*default_random_points_def)(void);
+    nl_status (*navmesh_random_points)(const nl_world*, nl_navmesh_id, const nl_random_points_def*, nl_nav_point*,
+                                       uint32_t, uint32_t*);
     /* Agents */
     nl_agent_def (*default_agent_def)(void);
     nl_status (*agent_add)(nl_world*, const nl_agent_def*, nl_agent_id*);
@@ -427,6 +447,8 @@ int main(void) {
         nl_default_agent_capabilities, nl_default_path_request_def, nl_path_find, nl_path_request,
         nl_path_poll,           nl_path_wait,           nl_path_get_result,     nl_path_cancel,      nl_path_release,
         nl_default_path_budget, nl_path_process,        nl_path_take_finished, nl_path_get_queue_stats,
+        nl_default_query_filter, nl_navmesh_can_reach, nl_navmesh_get_reachable_polygons, nl_navmesh_get_islands,
+        nl_navmesh_raycast,     nl_navmesh_move_along_surface, nl_default_random_points_def, nl_navmesh_random_points,
         nl_default_agent_def,   nl_agent_add,           nl_agent_remove,     nl_agent_is_valid,
         nl_agent_set_destination, nl_agent_stop,        nl_agent_teleport,   nl_agent_set_capabilities,
         nl_agent_set_speed,     nl_world_step,          nl_agent_get_info,   nl_world_get_agents,
@@ -461,6 +483,9 @@ int main(void) {
             nl_mesh_info_init().size != sizeof(nl_mesh_info) || nl_navmesh_info_init().size != sizeof(nl_navmesh_info) ||
             nl_link_generation_report_init().size != sizeof(nl_link_generation_report) ||
             nl_path_queue_stats_init().size != sizeof(nl_path_queue_stats) ||
+            nl_navmesh_raycast_hit_init().size != sizeof(nl_navmesh_raycast_hit) ||
+            api.default_query_filter().size != sizeof(nl_query_filter) ||
+            api.default_random_points_def().reachable_from != NL_NO_POLYGON ||
             nl_plugin_description_init().size != sizeof(nl_plugin_description) ||
             api.default_path_budget().size != sizeof(nl_path_budget) || api.default_path_budget().max_requests != 0u)
             return 1;

@@ -720,6 +720,9 @@ static void find_nearest(void) {
     CHECK_NEAR(out[2].distance, 0.5f, TOL);
     CHECK(out[3].found == 0);
     CHECK(out[3].polygon == NL_NO_POLYGON);
+    CHECK_THAT(out[3].beyond_box == 1 && near3(out[3].point, 1.0f, GRID_Y, 1.0f, TOL),
+               "nl_navmesh_find_nearest: a point whose box holds no polygon gets the navmesh's nearest point beyond it");
+    CHECK_NEAR(out[3].distance, sqrtf(32.0f), 1e-4);
     CHECK(out[4].found == 1);
     CHECK_NEAR(out[4].distance, 1.5f, TOL);
     CHECK_MSG(out[4].polygon == (by_quadrant[0] < by_quadrant[1] ? by_quadrant[0] : by_quadrant[1]),
@@ -729,8 +732,9 @@ static void find_nearest(void) {
     CHECK_NEAR(out[5].distance, 1.5f, TOL);
     CHECK_MSG(out[5].polygon == 0, "a tie between all four polygons went to %u, not 0", (unsigned)out[5].polygon);
     for (q = 0; q < 6; ++q) {
-        CHECK_MSG(out[q].reserved[0] == 0 && out[q].reserved[1] == 0 && out[q].reserved[2] == 0,
-                  "out[%d].reserved is not zero", q);
+        CHECK_MSG(out[q].reserved[0] == 0 && out[q].reserved[1] == 0, "out[%d].reserved is not zero", q);
+        CHECK_MSG(out[q].found || out[q].beyond_box, "out[%d] is neither found nor beyond the box", q);
+        CHECK_MSG(!(out[q].found && out[q].beyond_box), "out[%d] is found and beyond the box", q);
     }
 
     /* A smaller box: a point 1.5 m above the grid is out of reach of a box 1 m high. */
@@ -738,6 +742,8 @@ static void find_nearest(void) {
         const float low[3] = {0.5f, 1.0f, 0.5f};
         CHECK_OK(nl_navmesh_find_nearest(world, id, points + 4 * 3, 1, low, out));
         CHECK(out[0].found == 0 && out[0].polygon == NL_NO_POLYGON);
+        CHECK(out[0].beyond_box == 1 && near3(out[0].point, 0.0f, GRID_Y, -0.5f, TOL));
+        CHECK_NEAR(out[0].distance, 1.5f, TOL);
     }
 
     /* Huge boxes on a navmesh of 1 cm squares: "anywhere" (half extents 1e9) from just above quadrant 3

@@ -621,7 +621,11 @@ typedef struct nl_nav_point {
     float distance;   /**< From the query point to `point`, metres. */
     uint32_t polygon; /**< The polygon holding `point`, or NL_NO_POLYGON when none was in the box. */
     uint8_t found;    /**< 1 if a polygon was found within the search box, else 0. */
-    uint8_t reserved[3];
+    uint8_t beyond_box; /**< Why found is 0: 1 when the navmesh's nearest point lies beyond the search
+                             box; `point` and `distance` then give that point (polygon stays
+                             NL_NO_POLYGON), so a host can say how far off the query was or widen
+                             its box. 0 when found. Added in 0.3. */
+    uint8_t reserved[2];
 } nl_nav_point;
 
 /** For each of `count` points (x y z each in `points`, borrowed), finds its navmesh point among the
@@ -630,7 +634,8 @@ typedef struct nl_nav_point {
  *  the point within the navmesh agent's max_climb wins (an agent standing there is on that floor,
  *  even when the rim of a ledge beside it is nearer); otherwise the closest point wins. Ties go to
  *  the lower polygon index, so the answer never depends on thread count. count == 0 succeeds.
- *  Returns SUCCESS (points not found have found = 0), or a failure with INVALID_HANDLE or
+ *  Returns SUCCESS (points not found have found = 0, beyond_box = 1 and the navmesh's nearest point
+ *  beyond the box: a search of the whole navmesh, for the misses only), or a failure with INVALID_HANDLE or
  *  INVALID_ARGUMENT (null pointer, a point not finite or beyond NL_COORDINATE_LIMIT: its index is
  *  named; half_extents not positive and finite). Thread-safe; parallel over the world's workers. */
 NL_API nl_status nl_navmesh_find_nearest(const nl_world* world, nl_navmesh_id navmesh, const float* points,
@@ -1351,6 +1356,142 @@ NL_DEFINE_OUTPUT_INIT(nl_path_queue_stats, nl_path_queue_stats_init)
 
 /** Fills `*out_stats` (caller-owned, `size` set). Returns SUCCESS or INVALID_ARGUMENT. Thread-safe. */
 NL_API nl_status nl_path_get_queue_stats(const nl_world* world, nl_path_queue_stats* out_stats);
+
+/* ---------------------------------------------------------------------------------------------
+ * Queries on a navmesh for one body: where it can get to (reachability), how far it walks in a
+ * straight line (raycast), sliding a point along the surface, random points (docs/queries.md).
+ * ------------------------------------------------------------------------------------------- */
+
+/** The body a query is for, as a path request gives it: its capabilities (the links it can take,
+ *  the room a wider body needs) and its area costs (an area of cost NL_AREA_EXCLUDED is kept out
+ *  of; other costs do not matter to these queries). Get one from nl_default_query_filter(). */
+typedef struct nl_query_filter {
+    uint32_t size;                /**< sizeof(nl_query_filter). */
+    nl_agent_capabilities agent;
+    const float* area_costs;      /**< Optional, borrowed during the call: as nl_path_request_def. */
+    uint32_t area_cost_count;     /**< At most 256. */
+    uint32_t reserved;
+} nl_query_filter;
+
+/** A default walker (nl_default_agent_capabilities) that keeps out of no area. Thread-safe. */
+NL_API nl_query_filter nl_default_query_filter(void);
+
+/** An island with no number: a polygon in an area the filter excludes. */
+#define NL_NO_ISLAND 0xffffffffu
+
+/** For each of `count` pairs, whether the filter's body can get from polygon from_polygons[i] to
+ *  polygon to_polygons[i] of the navmesh by walking and by the links it can take, exactly as a path
+ *  request for it would find (1) or not (0), into out_reachable[i]. A polygon reaches itself; one in
+ *  an excluded area is reached from nowhere else, but a body standing in one walks out of it.
+ *  The answers come from the navmesh's reachability map for the body's class (the links it can
+ *  take, its margin, its excluded areas): built on the first query for a class (linear in polygons
+ *  and links), kept until the navmesh or its links change, shared by bodies of the same class; each
+ *  answer then takes constant time, without a search. Path requests with accept_partial 0 use the
+ *  same map to return NL_PATH_NO_PATH at once.
+ *  [in] filter: borrowed; NULL for nl_default_query_filter(). [in] from_polygons, to_polygons:
+ *  borrowed, `count` each. [out] out_reachable: caller-owned, `count` bytes. count == 0 succeeds.
+ *  Returns SUCCESS, or a failure with INVALID_HANDLE (navmesh), INVALID_ARGUMENT (a null pointer, a
+ *  polygon out of range: its index named, a filter as nl_path_request_def refuses, size too small),
+ *  OUT_OF_MEMORY. Thread-safe: any number of queries at once, a map built once. */
+NL_API nl_status nl_navmesh_can_reach(const nl_world* world, nl_navmesh_id navmesh, const nl_query_filter* filter,
+                                      const uint32_t* from_polygons, const uint32_t* to_polygons, uint32_t count,
+                                      uint8_t* out_reachable);
+
+/** Every polygon the filter's body can reach from `from_polygon` (itself included), ascending, into
+ *  `out_polygons` (caller-owned, `capacity` entries; NULL with capacity 0 to learn the count;
+ *  `*out_count` receives it). Returns SUCCESS, BUFFER_TOO_SMALL (nothing written but the count), or
+ *  a failure as nl_navmesh_can_reach. Thread-safe. */
+NL_API nl_status nl_navmesh_get_reachable_polygons(const nl_world* world, nl_navmesh_id navmesh,
+                                                   const nl_query_filter* filter, uint32_t from_polygon,
+                                                   uint32_t* out_polygons, uint32_t capacity, uint32_t* out_count);
+
+/** The island of every polygon for the filter's body, into `out_islands` (caller-owned, one per
+ *  polygon, `capacity` entries; NULL with capacity 0 to learn the count; `*out_count` receives the
+ *  polygon count): polygons of one island reach each other; from one island the body may reach
+ *  another over one-way links (ask nl_navmesh_can_reach). Islands are numbered 0 up in order of
+ *  their lowest polygon; NL_NO_ISLAND for polygons in excluded areas. `out_island_count` (optional)
+ *  receives the number of islands. For drawing, and for a host's own bookkeeping per body.
+ *  Returns SUCCESS, BUFFER_TOO_SMALL, or a failure as nl_navmesh_can_reach. Thread-safe. */
+NL_API nl_status nl_navmesh_get_islands(const nl_world* world, nl_navmesh_id navmesh, const nl_query_filter* filter,
+                                        uint32_t* out_islands, uint32_t capacity, uint32_t* out_count,
+                                        uint32_t* out_island_count);
+
+/** How far a straight walk along a navmesh went (nl_navmesh_raycast). */
+typedef struct nl_navmesh_raycast_hit {
+    uint32_t size;           /**< Set by the caller to sizeof(nl_navmesh_raycast_hit). */
+    uint8_t hit;             /**< 1 if a wall (the navmesh's outline, or an excluded area) stopped
+                                  the walk before `end`; 0 if it arrived. */
+    uint8_t reserved[3];
+    float t;                 /**< The fraction of start -> end walked (seen from above): 1 if it
+                                  arrived. */
+    float point[3];          /**< Where it stopped (or `end`), on the navmesh surface. */
+    float wall_normal[3];    /**< The wall's normal, horizontal and pointing back the way the walk
+                                  came from (into the last polygon); zero if it arrived. */
+    uint32_t end_polygon;    /**< The polygon holding `point`. */
+    uint32_t polygon_count;  /**< Polygons crossed, the start polygon first and end_polygon last. */
+} nl_navmesh_raycast_hit;
+
+NL_DEFINE_OUTPUT_INIT(nl_navmesh_raycast_hit, nl_navmesh_raycast_hit_init)
+
+/** Walks in a straight line (seen from above) from `start`, on polygon `start_polygon` (from
+ *  nl_navmesh_find_nearest), towards `end` along the navmesh surface, as Detour's raycast: how far a
+ *  body can walk before a wall stops it, the wall, and the polygons crossed. The navmesh's outline
+ *  and polygons in areas the filter excludes are walls; the navmesh is taken as built for its agent
+ *  (a body wider than that is not kept further from walls here; its links are not taken).
+ *  [in] filter: borrowed, NULL for nl_default_query_filter(). [in] start, end: 3 floats each;
+ *  start must lie over start_polygon (within 1 mm, seen from above); end anywhere.
+ *  [out] out_hit: caller-owned, `size` set. [out] out_polygons: caller-owned, `capacity` entries, or
+ *  NULL with capacity 0; the crossed polygons, start first; `*out_count` (optional) receives how many
+ *  were written (the whole count is out_hit->polygon_count).
+ *  Returns SUCCESS (the hit is always written), BUFFER_TOO_SMALL (the hit is written and the first
+ *  `capacity` polygons), or a failure with INVALID_HANDLE, INVALID_ARGUMENT (null pointer, a point
+ *  not finite or beyond NL_COORDINATE_LIMIT, start_polygon out of range or start not over it, a
+ *  filter as nl_navmesh_can_reach refuses). Thread-safe. */
+NL_API nl_status nl_navmesh_raycast(const nl_world* world, nl_navmesh_id navmesh, const nl_query_filter* filter,
+                                    uint32_t start_polygon, const float* start, const float* end,
+                                    nl_navmesh_raycast_hit* out_hit, uint32_t* out_polygons, uint32_t capacity,
+                                    uint32_t* out_count);
+
+/** Slides a point from `start` (over `start_polygon`) towards `target` along the navmesh, as
+ *  Detour's moveAlongSurface: the result is `target` when the straight way there stays on the
+ *  navmesh, else the point nearest to `target` on the walls met within the circle through start and
+ *  target, so a host that steers its own bodies can keep one on the navmesh each frame. Walls are as
+ *  nl_navmesh_raycast's. [out] out_point: its point (at the surface height), polygon and distance to
+ *  `target` (found is 1). [out] out_polygons, capacity, out_count: the polygons visited from the
+ *  start to the result's, as nl_navmesh_raycast's. Returns as nl_navmesh_raycast. Thread-safe. */
+NL_API nl_status nl_navmesh_move_along_surface(const nl_world* world, nl_navmesh_id navmesh,
+                                               const nl_query_filter* filter, uint32_t start_polygon,
+                                               const float* start, const float* target, nl_nav_point* out_point,
+                                               uint32_t* out_polygons, uint32_t capacity, uint32_t* out_count);
+
+/** Which random points nl_navmesh_random_points draws. Get one from nl_default_random_points_def(). */
+typedef struct nl_random_points_def {
+    uint32_t size;                 /**< sizeof(nl_random_points_def). */
+    const nl_query_filter* filter; /**< Optional, borrowed: points stay out of its excluded areas. */
+    float centre[3];               /**< With radius > 0: points within `radius` of it, seen from above. */
+    float radius;                  /**< 0 (default): anywhere on the navmesh. */
+    uint32_t reachable_from;       /**< A polygon, or NL_NO_POLYGON (default): only points the
+                                        filter's body can reach from it (nl_navmesh_can_reach). */
+    uint32_t reserved;
+    uint64_t seed;                 /**< The same seed, navmesh and def give the same points on every
+                                        platform and thread count. */
+} nl_random_points_def;
+
+/** Whole navmesh, no filter, seed 1. Thread-safe; never fails. */
+NL_API nl_random_points_def nl_default_random_points_def(void);
+
+/** Draws `count` points uniformly by surface area over the navmesh polygons `def` allows (within the
+ *  radius of the centre: uniform over the part of the navmesh inside that circle, seen from above,
+ *  weighted by the surface's slope) into `out_points` (caller-owned, `count` entries): each with its
+ *  polygon, at the surface height, found = 1, distance 0. `*out_found` receives how many were
+ *  drawn: `count`, or 0 when no allowed polygon lies in the circle (the rest are left found = 0), or
+ *  fewer when the allowed part inside the circle is so thin that 64 tries per point met it too
+ *  seldom. Returns SUCCESS, or a failure with INVALID_HANDLE, INVALID_ARGUMENT (null pointer, a
+ *  centre or radius not finite or out of range, radius < 0, reachable_from out of range, a filter
+ *  as nl_navmesh_can_reach refuses, size too small). Thread-safe. */
+NL_API nl_status nl_navmesh_random_points(const nl_world* world, nl_navmesh_id navmesh,
+                                          const nl_random_points_def* def, nl_nav_point* out_points, uint32_t count,
+                                          uint32_t* out_found);
 
 /* ---------------------------------------------------------------------------------------------
  * Agents: bodies that walk their navmesh, take the links their body can, and keep out of each

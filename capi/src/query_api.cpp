@@ -1,0 +1,271 @@
+// Queries on a navmesh for one body: reachability, the surface raycast and slide, random points.
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <string>
+
+#include "entry_guard.h"
+#include "host_input.h"
+#include "mapping.h"
+#include "navmesh/random_points.h"
+#include "navmesh/surface_walk.h"
+#include "path/reachability.h"
+#include "world.h"
+
+using nl::ErrorCode;
+using nl::fail;
+using nl::Vec3;
+using nl::capi::copy_point;
+using nl::capi::deref;
+using nl::capi::guarded;
+using nl::capi::require;
+using nl::capi::to_handle;
+
+namespace {
+
+constexpr size_t kFilterFirstSize = sizeof(nl_query_filter);  // their first release (0.3)
+constexpr size_t kRaycastHitFirstSize = sizeof(nl_navmesh_raycast_hit);
+constexpr size_t kRandomPointsDefFirstSize = sizeof(nl_random_points_def);
+static_assert(NL_NO_ISLAND == nl::ReachabilityMap::kNoIsland, "header and core disagree");
+
+struct Body {
+    nl::AgentCapabilities agent;
+    std::vector<float> area_costs;
+    std::array<uint64_t, 4> excluded;
+
+    bool may_enter(const nl::NavMesh& mesh, uint32_t p) const {
+        const uint8_t area = mesh.area(p);
+        return !((excluded[area >> 6] >> (area & 63)) & 1u);
+    }
+};
+
+// `name` is the filter's argument name ("filter", "def->filter").
+Body read_filter(const nl_query_filter* given, const std::string& name) {
+    const nl_query_filter filter =
+        given ? nl::capi::read_growable(*given, nl_default_query_filter(), kFilterFirstSize, name.c_str()) : nl_default_query_filter();
+    const std::string prefix = name + "->";
+    Body body;
+    body.agent = nl::capi::read_capabilities(filter.agent, prefix.c_str());
+    body.area_costs = nl::capi::read_area_costs(filter.area_costs, filter.area_cost_count, prefix.c_str());
+    body.excluded = nl::ReachabilityClass::excluded_areas_of(body.area_costs);
+    return body;
+}
+
+// The navmesh and its links now (the map is built for these), and the body's map.
+std::shared_ptr<const nl::PathGraph> graph_of(const nl::World& world, nl_navmesh_id navmesh) {
+    return world.navmeshes().path_graph(to_handle(navmesh));
+}
+std::shared_ptr<const nl::ReachabilityMap> map_of(const nl::PathGraph& graph, const Body& body) {
+    return graph.reachability(body.agent, body.area_costs);
+}
+
+void check_polygon(const nl::NavMesh& mesh, uint32_t polygon, const char* name) {
+    if (polygon >= mesh.polygon_count())
+        fail(ErrorCode::InvalidArgument, name, " is ", polygon, " but the navmesh has ", mesh.polygon_count(), " polygons");
+}
+
+// A walk's start: in the navmesh's space, over its polygon.
+Vec3 read_start(const nl::NavMesh& mesh, const nl::SurfacePose& pose, uint32_t polygon, const float* start) {
+    check_polygon(mesh, polygon, "start_polygon");
+    require(start, "start");
+    const Vec3 local = pose.surface_point(nl::capi::read_position(start, "start"));
+    const Vec3 on = mesh.closest_point_on_polygon(polygon, local);
+    const float dx = on.x() - local.x(), dz = on.z() - local.z();
+    constexpr float kOverTolerance = 1e-3f;
+    if (dx * dx + dz * dz > kOverTolerance * kOverTolerance)
+        fail(ErrorCode::InvalidArgument, "start is not over start_polygon ", polygon, " (", std::sqrt(dx * dx + dz * dz),
+             " m from it, seen from above)");
+    return local;
+}
+
+// Checked before a walk writes anything.
+void check_polygons_output(const uint32_t* out, uint32_t capacity) {
+    if (!out && capacity > 0) fail(ErrorCode::InvalidArgument, "out_polygons is null but capacity is ", capacity);
+}
+
+// Writes a walk's polygons as the raycast and the slide document.
+void write_polygons(const std::vector<uint32_t>& polygons, uint32_t* out, uint32_t capacity, uint32_t* out_count) {
+    const uint32_t written = out ? static_cast<uint32_t>(std::min<size_t>(capacity, polygons.size())) : 0;
+    std::copy(polygons.begin(), polygons.begin() + written, out);
+    if (out_count) *out_count = written;
+    if (out && written < polygons.size())
+        fail(ErrorCode::BufferTooSmall, "capacity is ", capacity, " but the walk crossed ", polygons.size(), " polygons");
+}
+
+}  // namespace
+
+extern "C" {
+
+NL_API nl_query_filter nl_default_query_filter(void) {
+    nl_query_filter filter{};
+    filter.size = sizeof(nl_query_filter);
+    filter.agent = nl_default_agent_capabilities();
+    return filter;
+}
+
+NL_API nl_random_points_def nl_default_random_points_def(void) {
+    nl_random_points_def def{};
+    def.size = sizeof(nl_random_points_def);
+    def.reachable_from = NL_NO_POLYGON;
+    def.seed = 1;
+    return def;
+}
+
+NL_API nl_status nl_navmesh_can_reach(const nl_world* world, nl_navmesh_id navmesh, const nl_query_filter* filter,
+                                      const uint32_t* from_polygons, const uint32_t* to_polygons, uint32_t count,
+                                      uint8_t* out_reachable) {
+    return guarded("nl_navmesh_can_reach", world, [&] {
+        const nl::World& w = deref(world);
+        const Body body = read_filter(filter, "filter");
+        const auto graph = graph_of(w, navmesh);
+        const uint32_t polygons = graph->navmesh().polygon_count();
+        if (count == 0) return;
+        require(from_polygons, "from_polygons");
+        require(to_polygons, "to_polygons");
+        require(out_reachable, "out_reachable");
+        for (uint32_t i = 0; i < count; ++i) {
+            const bool from_bad = from_polygons[i] >= polygons;
+            if (from_bad || to_polygons[i] >= polygons)
+                fail(ErrorCode::InvalidArgument, from_bad ? "from_polygons[" : "to_polygons[", i, "] is ",
+                     from_bad ? from_polygons[i] : to_polygons[i], " but the navmesh has ", polygons, " polygons");
+        }
+        const auto map = map_of(*graph, body);
+        for (uint32_t i = 0; i < count; ++i) out_reachable[i] = map->reaches(from_polygons[i], to_polygons[i]) ? 1 : 0;
+    });
+}
+
+NL_API nl_status nl_navmesh_get_reachable_polygons(const nl_world* world, nl_navmesh_id navmesh,
+                                                   const nl_query_filter* filter, uint32_t from_polygon,
+                                                   uint32_t* out_polygons, uint32_t capacity, uint32_t* out_count) {
+    return guarded("nl_navmesh_get_reachable_polygons", world, [&] {
+        const nl::World& w = deref(world);
+        const Body body = read_filter(filter, "filter");
+        const auto graph = graph_of(w, navmesh);
+        check_polygon(graph->navmesh(), from_polygon, "from_polygon");
+        std::vector<uint32_t> reached;
+        map_of(*graph, body)->reachable_polygons(from_polygon, reached);
+        nl::capi::list_into(reached, out_polygons, capacity, out_count, "out_polygons", [](uint32_t p) { return p; });
+    });
+}
+
+NL_API nl_status nl_navmesh_get_islands(const nl_world* world, nl_navmesh_id navmesh, const nl_query_filter* filter,
+                                        uint32_t* out_islands, uint32_t capacity, uint32_t* out_count,
+                                        uint32_t* out_island_count) {
+    return guarded("nl_navmesh_get_islands", world, [&] {
+        const nl::World& w = deref(world);
+        const Body body = read_filter(filter, "filter");
+        const auto graph = graph_of(w, navmesh);
+        const auto map = map_of(*graph, body);
+        const uint32_t polygons = graph->navmesh().polygon_count();
+        nl::capi::list_into(polygons, out_islands, capacity, out_count, "out_islands", [&] {
+            for (uint32_t p = 0; p < polygons; ++p) out_islands[p] = map->island(p);
+        });
+        if (out_island_count) *out_island_count = map->island_count();
+    });
+}
+
+NL_API nl_status nl_navmesh_raycast(const nl_world* world, nl_navmesh_id navmesh, const nl_query_filter* filter,
+                                    uint32_t start_polygon, const float* start, const float* end,
+                                    nl_navmesh_raycast_hit* out_hit, uint32_t* out_polygons, uint32_t capacity,
+                                    uint32_t* out_count) {
+    return guarded("nl_navmesh_raycast", world, [&] {
+        const nl::World& w = deref(world);
+        const Body body = read_filter(filter, "filter");
+        const auto mesh = w.navmeshes().navmesh(to_handle(navmesh));
+        const nl::SurfacePose pose = w.navmesh_pose(to_handle(navmesh));
+        const Vec3 from = read_start(*mesh, pose, start_polygon, start);
+        require(end, "end");
+        const Vec3 to = pose.surface_point(nl::capi::read_position(end, "end"));
+        require(out_hit, "out_hit");
+        nl::capi::check_growable_output(out_hit, kRaycastHitFirstSize, "out_hit");
+        check_polygons_output(out_polygons, capacity);
+
+        thread_local std::vector<uint32_t> crossed;
+        const auto passable_fn = [&](uint32_t p) { return body.may_enter(*mesh, p); };
+        const nl::PolygonFilter passable(passable_fn);
+        nl::SurfaceWalkOptions options;
+        options.passable = &passable;
+        options.max_polygons = mesh->polygon_count() + 1;
+        options.polygons = &crossed;
+        const nl::SurfaceRayHit hit = nl::raycast_surface(*mesh, start_polygon, from, to, options);
+        nl_navmesh_raycast_hit c{};
+        c.size = sizeof(c);
+        c.hit = hit.hit ? 1 : 0;
+        c.t = hit.t;
+        copy_point(c.point, pose.world_point(hit.point));
+        copy_point(c.wall_normal, pose.world_vector(hit.wall_normal));
+        c.end_polygon = hit.end_polygon;
+        c.polygon_count = static_cast<uint32_t>(crossed.size());
+        nl::capi::write_growable(out_hit, c, kRaycastHitFirstSize, "out_hit");
+        write_polygons(crossed, out_polygons, capacity, out_count);
+    });
+}
+
+NL_API nl_status nl_navmesh_move_along_surface(const nl_world* world, nl_navmesh_id navmesh,
+                                               const nl_query_filter* filter, uint32_t start_polygon,
+                                               const float* start, const float* target, nl_nav_point* out_point,
+                                               uint32_t* out_polygons, uint32_t capacity, uint32_t* out_count) {
+    return guarded("nl_navmesh_move_along_surface", world, [&] {
+        const nl::World& w = deref(world);
+        const Body body = read_filter(filter, "filter");
+        const auto mesh = w.navmeshes().navmesh(to_handle(navmesh));
+        const nl::SurfacePose pose = w.navmesh_pose(to_handle(navmesh));
+        const Vec3 from = read_start(*mesh, pose, start_polygon, start);
+        require(target, "target");
+        const Vec3 to = pose.surface_point(nl::capi::read_position(target, "target"));
+        require(out_point, "out_point");
+        check_polygons_output(out_polygons, capacity);
+
+        thread_local std::vector<uint32_t> visited;
+        const auto passable_fn = [&](uint32_t p) { return body.may_enter(*mesh, p); };
+        const nl::PolygonFilter passable(passable_fn);
+        nl::SurfaceWalkOptions options;
+        options.passable = &passable;
+        options.max_polygons = mesh->polygon_count();
+        options.polygons = &visited;
+        const nl::SurfaceMove moved = nl::move_along_surface(*mesh, start_polygon, from, to, options);
+        *out_point = nl::capi::to_c(nl::NavPoint{true, moved.position, (moved.position - to).norm(), moved.polygon}, pose);
+        write_polygons(visited, out_polygons, capacity, out_count);
+    });
+}
+
+NL_API nl_status nl_navmesh_random_points(const nl_world* world, nl_navmesh_id navmesh,
+                                          const nl_random_points_def* def, nl_nav_point* out_points, uint32_t count,
+                                          uint32_t* out_found) {
+    return guarded("nl_navmesh_random_points", world, [&] {
+        const nl::World& w = deref(world);
+        require(def, "def");
+        const nl_random_points_def d = nl::capi::read_growable(*def, nl_default_random_points_def(), kRandomPointsDefFirstSize, "def");
+        const Body body = read_filter(d.filter, "def->filter");
+        const auto graph = graph_of(w, navmesh);
+        const nl::NavMesh* mesh = &graph->navmesh();
+        const nl::SurfacePose pose = w.navmesh_pose(to_handle(navmesh));
+        nl::RandomPointsRequest request;
+        request.centre = pose.surface_point(nl::capi::read_position(d.centre, "def->centre"));
+        request.radius = nl::capi::read_amount(d.radius, "def->radius");
+        if (request.radius > nl::kCoordinateLimit) fail(ErrorCode::InvalidArgument, "def->radius is beyond the coordinate limit");
+        request.seed = d.seed;
+        std::shared_ptr<const nl::ReachabilityMap> map;
+        if (d.reachable_from != NL_NO_POLYGON) {
+            check_polygon(*mesh, d.reachable_from, "def->reachable_from");
+            map = map_of(*graph, body);
+        }
+        require(out_found, "out_found");
+        if (count > 0) require(out_points, "out_points");
+        *out_found = 0;
+        if (count == 0) return;
+        const auto allowed_fn = [&](uint32_t p) {
+            return body.may_enter(*mesh, p) && (!map || map->reaches(d.reachable_from, p));
+        };
+        const nl::PolygonFilter allowed(allowed_fn);
+        thread_local std::vector<nl::NavPoint> points;
+        points.resize(count);
+        const uint32_t found = nl::random_points(*mesh, request, &allowed, count, points.data());
+        for (uint32_t i = 0; i < count; ++i) out_points[i] = i < found ? nl::capi::to_c(points[i], pose) : nl_nav_point{};
+        for (uint32_t i = found; i < count; ++i) out_points[i].polygon = NL_NO_POLYGON;
+        *out_found = found;
+    });
+}
+
+}  // extern "C"
