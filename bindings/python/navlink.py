@@ -81,6 +81,7 @@ MESH_MAX_AREA = 254
 BUILD_AREA_OBSTACLE = 255
 MAX_POLYGON_VERTICES = 16
 NO_POLYGON = 0xFFFFFFFF
+NO_ISLAND = 0xFFFFFFFF  # World.islands: a polygon in an area the filter excludes
 SEGMENT_WALK = 0
 LINK_JUMP, LINK_DROP, LINK_MANUAL, LINK_FIRST_PLUGIN_KIND = 1, 2, 3, 256
 AREA_EXCLUDED = 0.0
@@ -262,8 +263,10 @@ class BoundaryEdge(Structure):
 
 
 class NavPoint(Structure):
+    """nl_nav_point. found = 0 with beyond_box = 1 (0.3): the navmesh's nearest point lies beyond the search box,
+    and point and distance give it (polygon stays NO_POLYGON)."""
     _fields_ = [("point", Vec3), ("distance", c_float), ("polygon", c_uint32), ("found", c_uint8),
-                ("reserved", c_uint8 * 3)]
+                ("beyond_box", c_uint8), ("reserved", c_uint8 * 2)]
 
 
 class NavmeshBuildDef(Structure):
@@ -386,6 +389,26 @@ class PathQueueStats(_Growable):
                 ("unreleased", c_uint32), ("reserved", c_uint32), ("submitted", c_uint64), ("finished", c_uint64)]
 
 
+class QueryFilterDef(Structure):
+    """nl_query_filter: the body a navmesh query is for, raw (area_costs borrowed for the call). Start from
+    lib.nl_default_query_filter() (it sets size); World's query methods take a QueryFilter instead."""
+    _fields_ = [("size", c_uint32), ("agent", AgentCapabilities), ("area_costs", POINTER(c_float)),
+                ("area_cost_count", c_uint32), ("reserved", c_uint32)]
+
+
+class NavmeshRaycastHit(_Growable):
+    """nl_navmesh_raycast_hit: how far a straight walk along a navmesh went (World.raycast)."""
+    _fields_ = [("size", c_uint32), ("hit", c_uint8), ("reserved", c_uint8 * 3), ("t", c_float), ("point", Vec3),
+                ("wall_normal", Vec3), ("end_polygon", c_uint32), ("polygon_count", c_uint32)]
+
+
+class RandomPointsDef(Structure):
+    """nl_random_points_def, raw (filter borrowed for the call). Start from lib.nl_default_random_points_def()
+    (it sets size); World.random_points takes its fields as arguments."""
+    _fields_ = [("size", c_uint32), ("filter", POINTER(QueryFilterDef)), ("centre", Vec3), ("radius", c_float),
+                ("reachable_from", c_uint32), ("reserved", c_uint32), ("seed", c_uint64)]
+
+
 class AgentId(_Id):
     pass
 
@@ -502,7 +525,8 @@ C_STRUCTS = {
     "nl_navmesh_load_def": NavmeshLoadDef, "nl_navmesh_file_info": NavmeshFileInfo, "nl_path_ticket": PathTicket,
     "nl_agent_capabilities": AgentCapabilities, "nl_path_request_def": PathRequestDef, "nl_path_point": PathPoint,
     "nl_path_result": PathResultInfo, "nl_path_budget": PathBudget, "nl_path_finished": PathFinished,
-    "nl_path_queue_stats": PathQueueStats, "nl_agent_id": AgentId, "nl_agent_def": AgentDef,
+    "nl_path_queue_stats": PathQueueStats, "nl_query_filter": QueryFilterDef,
+    "nl_navmesh_raycast_hit": NavmeshRaycastHit, "nl_random_points_def": RandomPointsDef, "nl_agent_id": AgentId, "nl_agent_def": AgentDef,
     "nl_agent_info": AgentInfo, "nl_agent_trajectory": AgentTrajectory, "nl_agent_event": AgentEvent,
     "nl_plugin_id": PluginId,
     "nl_plugin_description": PluginDescription, "nl_recast_settings": RecastSettings,
@@ -590,6 +614,19 @@ _PROTOTYPES = {
     "nl_path_process": (c_uint32, [_w, POINTER(PathBudget), _u32p]),
     "nl_path_take_finished": (c_uint32, [_w, POINTER(PathFinished), c_uint32, _u32p, _u32p]),
     "nl_path_get_queue_stats": (c_uint32, [_w, POINTER(PathQueueStats)]),
+    "nl_default_query_filter": (QueryFilterDef, []),
+    "nl_navmesh_can_reach": (c_uint32, [_w, NavmeshId, POINTER(QueryFilterDef), _u32p, _u32p, c_uint32,
+                                        POINTER(c_uint8)]),
+    "nl_navmesh_get_reachable_polygons": (c_uint32, [_w, NavmeshId, POINTER(QueryFilterDef), c_uint32, _u32p, c_uint32,
+                                                     _u32p]),
+    "nl_navmesh_get_islands": (c_uint32, [_w, NavmeshId, POINTER(QueryFilterDef), _u32p, c_uint32, _u32p, _u32p]),
+    "nl_navmesh_raycast": (c_uint32, [_w, NavmeshId, POINTER(QueryFilterDef), c_uint32, POINTER(c_float),
+                                      POINTER(c_float), POINTER(NavmeshRaycastHit), _u32p, c_uint32, _u32p]),
+    "nl_navmesh_move_along_surface": (c_uint32, [_w, NavmeshId, POINTER(QueryFilterDef), c_uint32, POINTER(c_float),
+                                                 POINTER(c_float), POINTER(NavPoint), _u32p, c_uint32, _u32p]),
+    "nl_default_random_points_def": (RandomPointsDef, []),
+    "nl_navmesh_random_points": (c_uint32, [_w, NavmeshId, POINTER(RandomPointsDef), POINTER(NavPoint), c_uint32,
+                                            _u32p]),
     "nl_default_agent_def": (AgentDef, []),
     "nl_agent_add": (c_uint32, [_w, POINTER(AgentDef), POINTER(AgentId)]),
     "nl_agent_remove": (c_uint32, [_w, AgentId]),
@@ -748,6 +785,10 @@ def nl_path_finished_init() -> PathFinished:
 
 def nl_path_queue_stats_init() -> PathQueueStats:
     return PathQueueStats()
+
+
+def nl_navmesh_raycast_hit_init() -> NavmeshRaycastHit:
+    return NavmeshRaycastHit()
 
 
 def nl_agent_info_init() -> AgentInfo:
@@ -1149,6 +1190,38 @@ class PathQuery:
         return d, costs  # the caller keeps `costs` alive for the call
 
 
+class QueryFilter:
+    """The body a navmesh query is for (nl_query_filter), as a PathQuery describes it: its capabilities
+    (default_agent_capabilities() when None: a walker of radius 0.6) and its area costs, cost per metre in
+    area i (a list or a buffer of 32-bit floats, at most 256): an area of cost AREA_EXCLUDED is kept out of;
+    other costs do not matter to these queries. QueryFilter() is nl_default_query_filter()."""
+
+    def __init__(self, agent: Optional[AgentCapabilities] = None, area_costs: FloatValues = ()) -> None:
+        self.agent = agent if agent is not None else lib.nl_default_query_filter().agent
+        self.area_costs: FloatValues = area_costs
+
+    def _def(self) -> Tuple[QueryFilterDef, _CArray]:
+        d = lib.nl_default_query_filter()
+        d.agent = self.agent
+        costs = _c_array("area_costs", self.area_costs, c_float)
+        d.area_costs = _pointer(costs, c_float) if costs.count else None
+        d.area_cost_count = costs.count
+        return d, costs  # the caller keeps `costs` alive for the call
+
+
+def default_query_filter() -> QueryFilter:
+    """A walker of radius 0.6 that keeps out of no area (nl_default_query_filter)."""
+    return QueryFilter()
+
+
+def _filter_def(query_filter: Optional[QueryFilter]) -> Tuple[Any, Any]:
+    """A filter for C (None: NULL, the default filter) and what must stay alive for the call."""
+    if query_filter is None:
+        return None, None
+    d, costs = query_filter._def()
+    return byref(d), (d, costs)
+
+
 class FinishedPath(NamedTuple):
     """A request that finished, as World.take_finished_paths reports it."""
     ticket: PathTicket
@@ -1540,6 +1613,106 @@ class World:
 
     def navmeshes(self) -> List[NavmeshId]:
         return _two_call(lambda b, c, n: lib.nl_world_get_navmeshes(self.pointer, b, c, n), NavmeshId)
+
+    # --- queries on a navmesh for one body (filter None: QueryFilter(), a default walker) ---
+
+    _FIRST_WALK_CAPACITY = 32  # polygons fetched in one go by raycast and move_along_surface
+
+    def can_reach(self, navmesh: NavmeshId, from_polygons: IndexValues, to_polygons: IndexValues,
+                  filter: Optional[QueryFilter] = None) -> List[bool]:
+        """For each pair (from_polygons[i], to_polygons[i]), whether the filter's body can get from the one
+        polygon to the other by walking and by the links it can take, exactly as a path request for it would
+        find. Each answer takes constant time (the navmesh's reachability map for the body's class, built on the
+        first query). Lists or buffers of 32-bit integers, of one length."""
+        sources = _c_array("from_polygons", from_polygons, c_uint32)
+        targets = _c_array("to_polygons", to_polygons, c_uint32, length=sources.count)
+        query_filter, keep = _filter_def(filter)
+        answers = (c_uint8 * sources.count)()
+        _check(lib.nl_navmesh_can_reach(self.pointer, navmesh, query_filter, _pointer(sources, c_uint32),
+                                        _pointer(targets, c_uint32), sources.count, answers))
+        return [a != 0 for a in answers]
+
+    def reachable_polygons(self, navmesh: NavmeshId, from_polygon: int,
+                           filter: Optional[QueryFilter] = None) -> List[int]:
+        """Every polygon the filter's body can reach from from_polygon (itself included), ascending."""
+        query_filter, keep = _filter_def(filter)
+        return _two_call(lambda b, c, n: lib.nl_navmesh_get_reachable_polygons(
+            self.pointer, navmesh, query_filter, from_polygon, b, c, n), c_uint32)
+
+    def islands(self, navmesh: NavmeshId, filter: Optional[QueryFilter] = None) -> Tuple[List[int], int]:
+        """(the island of every polygon, the number of islands) for the filter's body: polygons of one island
+        reach each other; one-way links may lead from one island to another (ask can_reach). Islands are
+        numbered from 0 in order of their lowest polygon; NO_ISLAND for polygons in excluded areas."""
+        query_filter, keep = _filter_def(filter)
+        island_count = c_uint32()
+        islands = _two_call(lambda b, c, n: lib.nl_navmesh_get_islands(
+            self.pointer, navmesh, query_filter, b, c, n, byref(island_count)), c_uint32)
+        return islands, island_count.value
+
+    def raycast(self, navmesh: NavmeshId, start_polygon: int, start: Point, end: Point,
+                filter: Optional[QueryFilter] = None) -> Tuple[NavmeshRaycastHit, List[int]]:
+        """Walks in a straight line (seen from above) from start, over start_polygon (from find_nearest), towards
+        end along the navmesh surface, as Detour's raycast: how far a body walks before a wall (the navmesh's
+        outline, or an area the filter excludes) stops it. Returns the hit and the polygons crossed (the start
+        polygon first, hit.end_polygon last)."""
+        query_filter, keep = _filter_def(filter)
+        origin, target = _point(start, "start"), _point(end, "end")
+        polygons = (c_uint32 * self._FIRST_WALK_CAPACITY)()
+        while True:
+            hit = NavmeshRaycastHit()
+            count = c_uint32()
+            status = lib.nl_navmesh_raycast(self.pointer, navmesh, query_filter, start_polygon, origin, target,
+                                            byref(hit), polygons, len(polygons), byref(count))
+            if _buffer_too_small(status) and hit.polygon_count > len(polygons):
+                polygons = (c_uint32 * hit.polygon_count)()  # the hit says how many: walk again with room
+                continue
+            _check(status)
+            return hit, list(polygons[:count.value])
+
+    def move_along_surface(self, navmesh: NavmeshId, start_polygon: int, start: Point, target: Point,
+                           filter: Optional[QueryFilter] = None) -> Tuple[NavPoint, List[int]]:
+        """Slides a point from start (over start_polygon) towards target along the navmesh, as Detour's
+        moveAlongSurface: target when the straight way there stays on the navmesh, else the point of the walls
+        met nearest to it. Returns that NavPoint (at the surface height, its polygon, found = 1, distance short
+        of target) and the polygons visited from the start's to its."""
+        query_filter, keep = _filter_def(filter)
+        origin, goal = _point(start, "start"), _point(target, "target")
+        visited = (c_uint32 * self._FIRST_WALK_CAPACITY)()
+        while True:
+            moved = NavPoint()
+            count = c_uint32()
+            status = lib.nl_navmesh_move_along_surface(self.pointer, navmesh, query_filter, start_polygon, origin,
+                                                       goal, byref(moved), visited, len(visited), byref(count))
+            if _buffer_too_small(status):
+                # The call does not say how many it visited, only that they did not fit; a slide visits each
+                # polygon at most once, so the navmesh's polygon count is room enough.
+                room = max(2 * len(visited), self.navmesh_info(navmesh).polygon_count)
+                visited = (c_uint32 * room)()
+                continue
+            _check(status)
+            return moved, list(visited[:count.value])
+
+    def random_points(self, navmesh: NavmeshId, count: int, filter: Optional[QueryFilter] = None,
+                      centre: Point = (0.0, 0.0, 0.0), radius: float = 0.0, reachable_from: int = NO_POLYGON,
+                      seed: int = 1) -> List[NavPoint]:
+        """Draws up to `count` points uniformly by surface area over the navmesh polygons allowed: out of the
+        filter's excluded areas, within `radius` of `centre` seen from above (radius 0: anywhere), and, unless
+        reachable_from is NO_POLYGON, only where the filter's body can reach from that polygon. Returns the
+        points drawn (each with its polygon, at the surface height, found = 1, distance 0): `count`, none when
+        no allowed polygon lies in the circle, or fewer when the allowed part inside it is too thin. The same
+        seed, navmesh and arguments give the same points on every platform and thread count."""
+        query_filter, keep = _filter_def(filter)
+        d = lib.nl_default_random_points_def()
+        if query_filter is not None:
+            d.filter = ctypes.pointer(keep[0])
+        d.centre = Vec3(*_point(centre, "centre"))
+        d.radius = radius
+        d.reachable_from = reachable_from
+        d.seed = seed
+        points = (NavPoint * count)()
+        found = c_uint32()
+        _check(lib.nl_navmesh_random_points(self.pointer, navmesh, byref(d), points, count, byref(found)))
+        return list(points[:found.value])
 
     # --- links ---
 

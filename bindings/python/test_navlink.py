@@ -616,6 +616,130 @@ class NavmeshTest(NavLinkTestCase):
 FRONT_UP, FRONT_DOWN = [0, 1, 2, 0, 2, 3], [0, 2, 1, 0, 3, 2]
 
 
+def add_cell_row(world, row):
+    """A navmesh of 1 m cells for radius 0: cell c of `row` ('.', or '#' for none) is x in [c, c + 1], z in
+    [0, 1], y = 0; the cells become polygons in order."""
+    columns = [c for c, cell in enumerate(row) if cell == "."]
+    vertices = [v for c in columns for v in (c, 0, 0, c, 0, 1, c + 1, 0, 1, c + 1, 0, 0)]
+    agent = nl.default_agent_type()
+    agent.radius = 0
+    return world.add_navmesh(vertices, list(range(4 * len(columns))), polygon_vertex_counts=[4] * len(columns),
+                             agent=agent)
+
+
+def cell_body(jump):
+    agent = nl.default_agent_capabilities()
+    agent.radius, agent.max_jump_distance = 0, jump
+    return nl.QueryFilter(agent)
+
+
+class QueryTest(NavLinkTestCase):
+    """navlink.h's "Queries on a navmesh for one body" (tests/abi/queries_test.c's cells): one row of 1 m cells,
+    "..#..#..": polygons 0-1 (x in [0, 2]), 2-3 (x in [3, 5]) and 4-5 (x in [6, 8]), for radius 0; a one-way
+    manual link from cell 1's centre to cell 3's (2 m: its gap). A jumper (3 m) takes it, a walker does not.
+    And find_nearest's point beyond its box. The same checks as the C# and Rust tests."""
+    START = (0.5, 0, 0.5)
+
+    def setUp(self):
+        self.world = nl.World()
+        self.navmesh = add_cell_row(self.world, "..#..#..")
+        link = nl.default_link_def()
+        link.start, link.end = nl.Vec3(1.5, 0, 0.5), nl.Vec3(3.5, 0, 0.5)
+        self.world.add_link(self.navmesh, link)
+        self.walker, self.jumper = cell_body(0), cell_body(3)
+
+    def tearDown(self):
+        self.world.close()
+
+    def test_defaults(self):
+        raw = nl.lib.nl_default_query_filter()
+        self.assertEqual((raw.size, raw.area_cost_count, bool(raw.area_costs)), (ctypes.sizeof(nl.QueryFilterDef), 0, False))
+        default = nl.default_query_filter()
+        self.assertEqual((default.agent.radius, list(default.area_costs)), (nl.default_agent_capabilities().radius, []))
+        d = nl.lib.nl_default_random_points_def()
+        self.assertEqual((d.size, d.radius, d.reachable_from, d.seed, bool(d.filter)),
+                         (ctypes.sizeof(nl.RandomPointsDef), 0.0, nl.NO_POLYGON, 1, False))
+
+    def test_reachability_one_way_across_a_link(self):
+        w, navmesh, walker, jumper = self.world, self.navmesh, self.walker, self.jumper
+        self.assertEqual(w.can_reach(navmesh, [0], [1], walker), [True], "a cell reaches its neighbour")
+        self.assertEqual(w.can_reach(navmesh, [0], [1]), [False],
+                         "the default walker (radius 0.6) does not fit through a 1 m portal")
+        self.assertEqual(w.can_reach(navmesh, [1], [2], walker), [False], "a walker does not cross the gap")
+        self.assertEqual(w.can_reach(navmesh, [0, 3, 5], [3, 0, 4], jumper), [True, False, True],
+                         "the jumper takes the link; it does not lead back")
+        self.assertEqual(w.can_reach(navmesh, array.array("I", [0]), array.array("I", [3]), filter=jumper), [True])
+        self.assertEqual(w.reachable_polygons(navmesh, 1, jumper), [0, 1, 2, 3])
+        self.assertEqual(w.reachable_polygons(navmesh, 1, walker), [0, 1])
+        self.assertEqual(w.islands(navmesh, jumper), ([0, 0, 1, 1, 2, 2], 3))
+        keep_out = nl.QueryFilter(jumper.agent, [nl.AREA_EXCLUDED])
+        self.assertEqual(w.islands(navmesh, keep_out), ([nl.NO_ISLAND] * 6, 0), "keeping out of area 0 leaves no island")
+        self.assertEqual(w.can_reach(navmesh, [0, 0], [1, 0], keep_out), [False, True],
+                         "an excluded polygon is reached from nowhere else, but reaches itself")
+        self.assertFails(nl.STATUS_INVALID_ARGUMENT, "to_polygons[0] is 6", w.can_reach, navmesh, [0], [6], jumper)
+        with self.assertRaises(ValueError):
+            w.can_reach(navmesh, [0, 1], [2])
+
+    def test_raycast_stops_at_a_missing_cell_and_a_slide_follows_the_wall(self):
+        w, navmesh = self.world, self.navmesh
+        hit, crossed = w.raycast(navmesh, 0, self.START, (4.5, 0, 0.5))
+        self.assertEqual(hit.hit, 1, "a raycast into a missing cell stops at its wall")
+        self.assertAlmostEqual(hit.t, 0.375, delta=1e-4)
+        self.assertNear(hit.point, (2, 0, 0.5), "at the wall")
+        self.assertNear(hit.wall_normal, (-1, 0, 0), "facing back")
+        self.assertEqual((hit.end_polygon, hit.polygon_count, crossed), (1, 2, [0, 1]))
+        hit, crossed = w.raycast(navmesh, 0, self.START, (1.5, 0, 0.5), filter=nl.QueryFilter())
+        self.assertEqual((hit.hit, hit.t, list(hit.wall_normal), hit.end_polygon, crossed), (0, 1.0, [0, 0, 0], 1, [0, 1]))
+        self.assertNear(hit.point, (1.5, 0, 0.5), "arrives")
+        self.assertFails(nl.STATUS_INVALID_ARGUMENT, "start is not over start_polygon 2", w.raycast, navmesh, 2,
+                         self.START, (1, 0, 1))
+
+        moved, visited = w.move_along_surface(navmesh, 0, self.START, (2.5, 0, 0.5))
+        self.assertEqual((moved.found, moved.polygon), (1, 1))
+        self.assertNear(moved.point, (2, 0, 0.5), "a slide into a wall stops on it")
+        self.assertAlmostEqual(moved.distance, 0.5, delta=1e-3)
+        self.assertTrue(len(visited) >= 2 and visited[0] == 0 and visited[-1] == 1, visited)
+        moved, _ = w.move_along_surface(navmesh, 0, self.START, (1.5, 0, 0.5), self.walker)
+        self.assertEqual((moved.polygon, moved.distance), (1, 0.0))
+        self.assertNear(moved.point, (1.5, 0, 0.5), "a clear slide arrives")
+
+    def test_random_points_are_on_the_navmesh_and_repeat_with_their_seed(self):
+        w, navmesh = self.world, self.navmesh
+        points = w.random_points(navmesh, 50, seed=7)
+        cell_x = [0, 1, 3, 4, 6, 7]
+        self.assertEqual(len(points), 50)
+        for p in points:
+            self.assertTrue(p.found == 1 and p.distance == 0 and p.point[1] == 0 and p.polygon < 6)
+            self.assertTrue(cell_x[p.polygon] <= p.point[0] <= cell_x[p.polygon] + 1 and 0 <= p.point[2] <= 1,
+                            "on its polygon: %s %d" % (list(p.point), p.polygon))
+        again = w.random_points(navmesh, 50, seed=7)
+        self.assertEqual([bytes(p) for p in again], [bytes(p) for p in points], "the same seed gives the same points")
+        self.assertNotEqual([bytes(p) for p in w.random_points(navmesh, 50, seed=8)], [bytes(p) for p in points])
+        points = w.random_points(navmesh, 50, filter=self.jumper, reachable_from=4, seed=7)
+        self.assertTrue(len(points) == 50 and all(p.polygon in (4, 5) for p in points), "the last island only")
+        points = w.random_points(navmesh, 50, centre=self.START, radius=0.5)
+        self.assertTrue(len(points) == 50 and all(horizontal(p.point, self.START) <= 0.5 + 1e-4 for p in points))
+        keep_out = nl.QueryFilter(area_costs=array.array("f", [nl.AREA_EXCLUDED]))
+        self.assertEqual(w.random_points(navmesh, 10, filter=keep_out), [], "none outside the excluded area")
+
+    def test_find_nearest_reports_the_point_beyond_its_box(self):
+        missed, hit = self.world.find_nearest(self.navmesh, [(12, 0, 0.5), self.START], (1, 1, 1))
+        self.assertEqual((missed.found, missed.beyond_box, missed.polygon), (0, 1, nl.NO_POLYGON))
+        self.assertNear(missed.point, (8, 0, 0.5), "the navmesh's nearest point beyond the box")
+        self.assertAlmostEqual(missed.distance, 4, delta=1e-3)
+        self.assertEqual((hit.found, hit.beyond_box, hit.polygon), (1, 0, 0))
+
+    def test_walks_longer_than_the_first_buffer(self):
+        """40 cells in a row: a walk from the first to the last crosses 40 polygons, more than the binding's
+        first buffer holds, so it asks again."""
+        row = add_cell_row(self.world, "." * 40)
+        hit, crossed = self.world.raycast(row, 0, self.START, (39.5, 0, 0.5))
+        self.assertEqual((hit.hit, hit.polygon_count, crossed), (0, 40, list(range(40))))
+        moved, visited = self.world.move_along_surface(row, 0, self.START, (39.5, 0, 0.5))
+        self.assertEqual((moved.polygon, visited), (39, list(range(40))))
+        self.assertNear(moved.point, (39.5, 0, 0.5), "arrives")
+
+
 def add_quad(world, x0, z0, x1, z1, y, winding, flags=0, area=0):
     """A horizontal quad, x in [x0, x1], z in [z0, z1] at height y."""
     return world.add_mesh([x0, y, z0, x0, y, z1, x1, y, z1, x1, y, z0], winding, flags=flags, area=area)

@@ -15,12 +15,13 @@ namespace NavLink.Tests
     // (the C one's, from calling it), every other byte zero.
     internal static class LayoutTests
     {
-        // C names whose C# type is not "strip nl_, PascalCase": taken by System.Version, and by the
-        // PathResult class that carries the points too.
+        // C names whose C# type is not "strip nl_, PascalCase": taken by System.Version, by the PathResult
+        // class that carries the points too, and by the QueryFilter class that carries its area costs.
         private static readonly Dictionary<string, string> Renamed = new Dictionary<string, string>
         {
             {"nl_version", "NavLinkVersion"},
             {"nl_path_result", "PathResultInfo"},
+            {"nl_query_filter", "QueryFilterDef"},
         };
 
         // The constant classes of Types/Constants.cs and the prefix of the #defines each holds: a C# constant

@@ -31,6 +31,7 @@ namespace NavLink.Tests
             LevelTests.Run(check, levels);
             HostTaskTests.Run(check);
             NavmeshTests.Run(check);
+            QueryTests.Run(check);
             MeshInputTests.Run(check);
             LinkTests.Run(check);
             NavmeshFileTests.Run(check);

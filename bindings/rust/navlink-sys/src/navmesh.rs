@@ -107,7 +107,10 @@ pub struct nl_nav_point {
     pub distance: f32,
     pub polygon: u32,
     pub found: u8,
-    pub reserved: [u8; 3],
+    /// Why `found` is 0: 1 when the navmesh's nearest point lies beyond the search box; `point` and
+    /// `distance` then give that point (`polygon` stays `NL_NO_POLYGON`). 0 when found. Added in 0.3.
+    pub beyond_box: u8,
+    pub reserved: [u8; 2],
 }
 
 /// `nl_progress_fn*` (a navmesh build, a link generation): `fraction` done (0..1, never going back) and the

@@ -24,6 +24,7 @@ mod navmesh_files;
 mod paths;
 mod plain;
 mod plugins;
+mod queries;
 mod types;
 mod world;
 
@@ -37,6 +38,7 @@ pub use navmesh::{default_agent_type, default_recast_settings, NavmeshBuild, Nav
 pub use navmesh_files::{describe_navmesh_file, NavmeshLoadOptions};
 pub use paths::{default_agent_capabilities, FinishedPath, PathBudget, PathQuery, PathRequest, PathResult};
 pub use plugins::PluginSummary;
+pub use queries::{default_query_filter, QueryFilter, RandomPointsOptions};
 pub use types::*;
 pub use world::{HostTasks, LogFn, World, WorldOptions};
 

@@ -32,8 +32,8 @@ pub mod status {
 }
 
 pub use navlink_sys::{
-    NL_LINKS_LOAD_ANY_BODY as LINKS_LOAD_ANY_BODY, NL_MAX_WORKERS as MAX_WORKERS, NL_MESH_MAX_AREA as MESH_MAX_AREA,
-    NL_NAVMESH_LOAD_SAME_LEVEL as NAVMESH_LOAD_SAME_LEVEL, NL_NO_POLYGON as NO_POLYGON, NL_WORKERS_AUTO as WORKERS_AUTO,
+    NL_AREA_EXCLUDED as AREA_EXCLUDED, NL_LINKS_LOAD_ANY_BODY as LINKS_LOAD_ANY_BODY, NL_MAX_WORKERS as MAX_WORKERS, NL_MESH_MAX_AREA as MESH_MAX_AREA,
+    NL_NAVMESH_LOAD_SAME_LEVEL as NAVMESH_LOAD_SAME_LEVEL, NL_NO_ISLAND as NO_ISLAND, NL_NO_POLYGON as NO_POLYGON, NL_WORKERS_AUTO as WORKERS_AUTO,
 };
 
 plain_struct! {
@@ -255,6 +255,27 @@ plain_struct! {
         distance: f32,
         polygon: u32,
         found: bool,
+        /// Why `found` is false: the navmesh's nearest point lies beyond the search box; `point` and
+        /// `distance` then give that point (`polygon` stays `NO_POLYGON`). False when found.
+        beyond_box: bool,
+    }
+}
+
+plain_struct! {
+    /// How far a straight walk along a navmesh went (`nl_navmesh_raycast_hit`, `World::raycast`).
+    pub struct NavmeshRaycastHit mirrors sys::nl_navmesh_raycast_hit, default sys::nl_navmesh_raycast_hit_init(), derives (PartialEq) {
+        /// A wall (the navmesh's outline, or an excluded area) stopped the walk before its end.
+        hit: bool,
+        /// The fraction of start to end walked (seen from above): 1 if it arrived.
+        t: f32,
+        /// Where it stopped (or the end), on the navmesh surface.
+        point: [f32; 3],
+        /// The wall's normal, horizontal, pointing back the way the walk came; zero if it arrived.
+        wall_normal: [f32; 3],
+        /// The polygon holding `point`.
+        end_polygon: u32,
+        /// Polygons crossed, the start polygon first and `end_polygon` last.
+        polygon_count: u32,
     }
 }
 
@@ -473,8 +494,23 @@ mod tests {
         assert!(plain.rides_surface);
         assert_eq!(plain.to_c(sys::nl_navmesh_file_info::default()), file);
 
-        let point = sys::nl_nav_point { point: [1.0, 0.0, 2.0], distance: 0.5, polygon: 9, found: 1, reserved: [0; 3] };
-        assert!(NavPoint::from(point).found);
+        let point = sys::nl_nav_point { point: [1.0, 0.0, 2.0], distance: 0.5, polygon: 9, found: 1, beyond_box: 0, reserved: [0; 2] };
+        assert!(NavPoint::from(point).found && !NavPoint::from(point).beyond_box);
         assert_eq!(NavPoint::from(point).to_c(sys::nl_nav_point::default()), point);
+        let beyond = sys::nl_nav_point { found: 0, beyond_box: 1, polygon: sys::NL_NO_POLYGON, ..point };
+        assert!(NavPoint::from(beyond).beyond_box);
+        assert_eq!(NavPoint::from(beyond).to_c(sys::nl_nav_point::default()), beyond);
+
+        let hit = sys::nl_navmesh_raycast_hit {
+            hit: 1,
+            t: 0.375,
+            point: [2.0, 0.0, 0.5],
+            wall_normal: [-1.0, 0.0, 0.0],
+            end_polygon: 1,
+            polygon_count: 2,
+            ..sys::nl_navmesh_raycast_hit_init()
+        };
+        assert!(NavmeshRaycastHit::from(hit).hit);
+        assert_eq!(NavmeshRaycastHit::from(hit).to_c(sys::nl_navmesh_raycast_hit_init()), hit);
     }
 }

@@ -257,6 +257,8 @@ fn settings_and_defs_are_send() {
     assert_send::<navlink::LinksLoadOptions>();
     assert_send::<navlink::NavmeshLoadOptions>();
     assert_send::<navlink::PathQuery>();
+    assert_send::<navlink::QueryFilter>();
+    assert_send::<navlink::RandomPointsOptions>();
     assert_send::<navlink::PathBudget>();
     assert_send::<navlink::AgentDef>();
     assert_send::<navlink::AgentCapabilities>();
@@ -269,6 +271,7 @@ fn settings_and_defs_are_send() {
     assert_send::<navlink::NavmeshInfo>();
     assert_send::<navlink::NavPolygon>();
     assert_send::<navlink::NavPoint>();
+    assert_send::<navlink::NavmeshRaycastHit>();
     assert_send::<navlink::LinkGenerationReport>();
     assert_send::<navlink::NavmeshFileInfo>();
 }

@@ -33,6 +33,13 @@ namespace NavLink
 
         public static PathQueueStats nl_path_queue_stats_init() { var v = default(PathQueueStats); v.Size = (uint)sizeof(PathQueueStats); return v; }
 
+        public static NavmeshRaycastHit nl_navmesh_raycast_hit_init()
+        {
+            var v = default(NavmeshRaycastHit);
+            v.Size = (uint)sizeof(NavmeshRaycastHit);
+            return v;
+        }
+
         public static AgentInfo nl_agent_info_init() { var v = default(AgentInfo); v.Size = (uint)sizeof(AgentInfo); return v; }
 
         public static AgentTrajectory nl_agent_trajectory_init()

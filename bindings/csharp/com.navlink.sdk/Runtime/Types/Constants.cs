@@ -47,6 +47,8 @@ namespace NavLink
         public const int MaxWorkers = 1024;
         public const int MaxPolygonVertices = 16;
         public const uint NoPolygon = 0xffffffffu;
+        /// <summary>NL_NO_ISLAND: World.GetIslands' island of a polygon in an area the filter excludes.</summary>
+        public const uint NoIsland = 0xffffffffu;
         public const float AreaExcluded = 0.0f;
         /// <summary>NL_PATH_WAIT_FOREVER: a raw nl_path_wait timeout that never ends (World.WaitPath takes
         /// a TimeSpan; null waits forever).</summary>

@@ -91,7 +91,10 @@ namespace NavLink
         public float Distance;
         public uint Polygon;
         public byte Found;
-        public fixed byte Reserved[3];
+        /// <summary>Why Found is 0: 1 when the navmesh's nearest point lies beyond the search box; Point and
+        /// Distance then give that point (Polygon stays Limits.NoPolygon). 0 when found. Added in 0.3.</summary>
+        public byte BeyondBox;
+        public fixed byte Reserved[2];
     }
 
     /// <summary>nl_navmesh_build_def. Builder and SettingsJson are UTF-8 pointers borrowed for the call.</summary>

@@ -1,0 +1,163 @@
+using System;
+using System.Linq;
+using NavLink;
+
+namespace NavLink.Tests
+{
+    // navlink.h's "Queries on a navmesh for one body" (tests/abi/queries_test.c's cells): a navmesh of 1 m cells
+    // in one row, "..#..#..": polygons 0-1 (x in [0, 2]), 2-3 (x in [3, 5]) and 4-5 (x in [6, 8]), z in [0, 1],
+    // y = 0, for radius 0; a one-way manual link from cell 1's centre to cell 3's (2 m: its gap). A jumper
+    // (3 m) takes it, a walker does not. And find_nearest's point beyond its box.
+    internal static class QueryTests
+    {
+        private static readonly Vec3 Start = new Vec3(0.5f, 0, 0.5f);
+
+        /// <summary>The cells of one row, '.' area 0, '#' none, as QueryTests' navmesh, with its link.</summary>
+        public static NavmeshId AddCellRow(World world, string row)
+        {
+            var vertices = new System.Collections.Generic.List<float>();
+            int cells = 0;
+            for (int c = 0; c < row.Length; ++c)
+            {
+                if (row[c] != '.') continue;
+                vertices.AddRange(new float[] {c, 0, 0, c, 0, 1, c + 1, 0, 1, c + 1, 0, 0});
+                ++cells;
+            }
+            var input = new NavmeshInput
+            {
+                Vertices = vertices.ToArray(),
+                Indices = Enumerable.Range(0, 4 * cells).Select(i => (uint)i).ToArray(),
+                PolygonVertexCounts = Enumerable.Repeat((byte)4, cells).ToArray(),
+            };
+            input.Agent.Radius = 0;
+            return world.AddNavmesh(input);
+        }
+
+        private static QueryFilter Body(float jump)
+        {
+            AgentCapabilities agent = World.DefaultAgentCapabilities();
+            agent.Radius = 0;
+            agent.MaxJumpDistance = jump;
+            return new QueryFilter(agent);
+        }
+
+        private static bool Near(Vec3 a, float x, float y, float z)
+        {
+            return Math.Abs(a.X - x) < 1e-3f && Math.Abs(a.Y - y) < 1e-3f && Math.Abs(a.Z - z) < 1e-3f;
+        }
+
+        public static void Run(Checks check)
+        {
+            check.Run("queries for one body: reachability, raycast, slide, random points", () =>
+            {
+                using (var world = new World())
+                {
+                    NavmeshId navmesh = AddCellRow(world, "..#..#..");
+                    LinkDef link = World.DefaultLinkDef();
+                    link.Start = new Vec3(1.5f, 0, 0.5f);
+                    link.End = new Vec3(3.5f, 0, 0.5f);
+                    world.AddLink(navmesh, link);
+                    QueryFilter walker = Body(0), jumper = Body(3);
+                    check.That(new QueryFilter().Agent.Radius == World.DefaultAgentCapabilities().Radius &&
+                               new QueryFilter().AreaCosts == null, "new QueryFilter() is nl_default_query_filter()'s walker");
+                    QueryFilterDef raw = Native.nl_default_query_filter();
+                    check.That(raw.Size == (uint)System.Runtime.InteropServices.Marshal.SizeOf(typeof(QueryFilterDef)) && raw.AreaCosts == IntPtr.Zero && raw.AreaCostCount == 0, "nl_default_query_filter's size and no costs");
+
+                    // Reachability.
+                    check.That(world.CanReach(navmesh, 0, 1, walker), "a cell reaches its neighbour");
+                    check.That(!world.CanReach(navmesh, 0, 1), "the default walker (radius 0.6) does not fit through a 1 m portal");
+                    check.That(!world.CanReach(navmesh, 1, 2, walker), "a walker does not cross the gap");
+                    check.That(world.CanReach(navmesh, 0, 3, jumper), "a jumper takes the link to the next island");
+                    check.That(!world.CanReach(navmesh, 3, 0, jumper), "the one-way link does not lead back");
+                    bool[] answers = world.CanReach(navmesh, new uint[] {0, 3, 5}, new uint[] {3, 0, 4}, jumper);
+                    check.That(answers.SequenceEqual(new[] {true, false, true}), "a batch of pairs: " + string.Join(",", answers));
+                    check.That(world.GetReachablePolygons(navmesh, 1, jumper).SequenceEqual(new uint[] {0, 1, 2, 3}),
+                               "a jumper reaches polygons 0-3 from 1");
+                    check.That(world.GetReachablePolygons(navmesh, 1, walker).SequenceEqual(new uint[] {0, 1}), "a walker 0-1");
+                    uint islandCount;
+                    uint[] islands = world.GetIslands(navmesh, out islandCount, jumper);
+                    check.That(islandCount == 3 && islands.SequenceEqual(new uint[] {0, 0, 1, 1, 2, 2}),
+                               "three islands, numbered by their lowest polygon: " + string.Join(",", islands));
+                    var keepOut = new QueryFilter(jumper.Agent, new[] {Limits.AreaExcluded});
+                    islands = world.GetIslands(navmesh, out islandCount, keepOut);
+                    check.That(islandCount == 0 && islands.Length == 6 && islands.All(i => i == Limits.NoIsland),
+                               "keeping out of area 0 leaves no island");
+                    check.That(!world.CanReach(navmesh, 0, 1, keepOut) && world.CanReach(navmesh, 0, 0, keepOut),
+                               "an excluded polygon is reached from nowhere else, but reaches itself");
+                    check.Throws(StatusCode.InvalidArgument, "to_polygons[0] is 6", () => world.CanReach(navmesh, 0, 6, jumper),
+                                 "a polygon out of range");
+
+                    // The navmesh raycast: into the missing cell 2, its wall at x = 2 stops the walk.
+                    uint[] crossed;
+                    NavmeshRaycastHit hit = world.Raycast(navmesh, 0, Start, new Vec3(4.5f, 0, 0.5f), out crossed);
+                    check.That(hit.Hit == 1 && Math.Abs(hit.T - 0.375f) < 1e-4f && Near(hit.Point, 2, 0, 0.5f) &&
+                               Near(hit.WallNormal, -1, 0, 0) && hit.EndPolygon == 1,
+                               "a raycast into a missing cell stops at its wall: t " + hit.T + " at " + hit.Point + ", normal " + hit.WallNormal);
+                    check.That(hit.PolygonCount == 2 && crossed.SequenceEqual(new uint[] {0, 1}), "crossed 0 and 1: " + string.Join(",", crossed));
+                    hit = world.Raycast(navmesh, 0, Start, new Vec3(1.5f, 0, 0.5f));
+                    check.That(hit.Hit == 0 && hit.T == 1 && Near(hit.Point, 1.5f, 0, 0.5f) && Near(hit.WallNormal, 0, 0, 0) &&
+                               hit.EndPolygon == 1 && hit.PolygonCount == 2, "a raycast within the island arrives");
+                    check.Throws(StatusCode.InvalidArgument, "start is not over start_polygon 2",
+                                 () => world.Raycast(navmesh, 2, Start, new Vec3(1, 0, 1)), "a start off its polygon");
+
+                    // Sliding along the surface: towards the missing cell, to the wall's point nearest the target.
+                    uint[] visited;
+                    NavPoint moved = world.MoveAlongSurface(navmesh, 0, Start, new Vec3(2.5f, 0, 0.5f), out visited);
+                    check.That(moved.Found == 1 && Near(moved.Point, 2, 0, 0.5f) && moved.Polygon == 1 &&
+                               Math.Abs(moved.Distance - 0.5f) < 1e-3f, "a slide into a wall stops on it, 0.5 m short: " + moved.Point);
+                    check.That(visited.Length >= 2 && visited[0] == 0 && visited[visited.Length - 1] == 1,
+                               "visited from 0 to 1: " + string.Join(",", visited));
+                    moved = world.MoveAlongSurface(navmesh, 0, Start, new Vec3(1.5f, 0, 0.5f), walker);
+                    check.That(Near(moved.Point, 1.5f, 0, 0.5f) && moved.Polygon == 1 && moved.Distance == 0, "a clear slide arrives");
+
+                    // Random points: on their cells, the same for the same seed.
+                    NavPoint[] points = world.RandomPoints(navmesh, 50, seed: 7);
+                    check.That(points.Length == 50 && points.All(p => p.Found == 1 && p.Distance == 0 && p.Point.Y == 0 &&
+                                                                      p.Point.Z >= 0 && p.Point.Z <= 1 && p.Polygon < 6),
+                               "50 random points on the navmesh");
+                    float[] cellX = {0, 1, 3, 4, 6, 7};
+                    check.That(points.All(p => p.Point.X >= cellX[p.Polygon] && p.Point.X <= cellX[p.Polygon] + 1),
+                               "each random point on its polygon");
+                    NavPoint[] again = world.RandomPoints(navmesh, 50, seed: 7);
+                    check.That(Enumerable.Range(0, 50).All(i => points[i].Point.Equals(again[i].Point) && points[i].Polygon == again[i].Polygon),
+                               "the same seed gives the same points");
+                    again = world.RandomPoints(navmesh, 50, seed: 8);
+                    check.That(Enumerable.Range(0, 50).Any(i => !points[i].Point.Equals(again[i].Point)), "another seed gives others");
+                    points = world.RandomPoints(navmesh, 50, seed: 7, filter: jumper, reachableFrom: 4);
+                    check.That(points.Length == 50 && points.All(p => p.Polygon == 4 || p.Polygon == 5),
+                               "reachable from polygon 4: the last island only");
+                    points = world.RandomPoints(navmesh, 50, centre: new Vec3(0.5f, 0, 0.5f), radius: 0.5f);
+                    check.That(points.Length == 50 && points.All(p => p.Point.HorizontalDistance(Start) <= 0.5f + 1e-4f),
+                               "within 0.5 m of the centre");
+                    check.That(world.RandomPoints(navmesh, 10, filter: keepOut).Length == 0, "none outside the excluded area");
+                    var span = new NavPoint[4];
+                    check.That(world.RandomPoints(navmesh, span, seed: 7) == 4 && span[3].Found == 1, "into a span");
+
+                    // find_nearest beyond its box: the navmesh's nearest point, 4 m off.
+                    NavPoint[] nearest = world.FindNearest(navmesh, new[] {new Vec3(12, 0, 0.5f), Start}, new Vec3(1, 1, 1));
+                    check.That(nearest[0].Found == 0 && nearest[0].BeyondBox == 1 && nearest[0].Polygon == Limits.NoPolygon &&
+                               Near(nearest[0].Point, 8, 0, 0.5f) && Math.Abs(nearest[0].Distance - 4) < 1e-3f,
+                               "a miss gives the nearest point beyond the box: " + nearest[0].Point + ", " + nearest[0].Distance + " m");
+                    check.That(nearest[1].Found == 1 && nearest[1].BeyondBox == 0 && nearest[1].Polygon == 0, "a hit is not beyond the box");
+                }
+            });
+
+            check.Run("queries for one body: walks longer than the first buffer", () =>
+            {
+                using (var world = new World())
+                {
+                    // 40 cells in a row: a walk from the first to the last crosses 40 polygons, more than the
+                    // binding's first buffer holds, so it asks again.
+                    NavmeshId row = AddCellRow(world, new string('.', 40));
+                    uint[] crossed, visited;
+                    NavmeshRaycastHit hit = world.Raycast(row, 0, Start, new Vec3(39.5f, 0, 0.5f), out crossed);
+                    check.That(hit.Hit == 0 && hit.PolygonCount == 40 && crossed.SequenceEqual(Enumerable.Range(0, 40).Select(i => (uint)i)),
+                               "a raycast across 40 cells lists them all: " + crossed.Length);
+                    NavPoint moved = world.MoveAlongSurface(row, 0, Start, new Vec3(39.5f, 0, 0.5f), out visited);
+                    check.That(moved.Polygon == 39 && Near(moved.Point, 39.5f, 0, 0.5f) && visited.Length == 40 &&
+                               visited[0] == 0 && visited[39] == 39, "a slide across 40 cells lists them all: " + visited.Length);
+                }
+            });
+        }
+    }
+}
