@@ -34,6 +34,7 @@ struct Body {
     std::vector<float> area_costs;
     std::array<uint64_t, 4> excluded;
 
+    bool excludes_any() const { return (excluded[0] | excluded[1] | excluded[2] | excluded[3]) != 0; }
     bool may_enter(const nl::NavMesh& mesh, uint32_t p) const {
         const uint8_t area = mesh.area(p);
         return !((excluded[area >> 6] >> (area & 63)) & 1u);
@@ -42,6 +43,10 @@ struct Body {
 
 // `name` is the filter's argument name ("filter", "def->filter").
 Body read_filter(const nl_query_filter* given, const std::string& name) {
+    if (!given) {  // the default walker: nothing to check
+        static const Body defaults{nl::capi::read_capabilities(nl_default_agent_capabilities(), ""), {}, {}};
+        return defaults;
+    }
     const nl_query_filter filter =
         given ? nl::capi::read_growable(*given, nl_default_query_filter(), kFilterFirstSize, name.c_str()) : nl_default_query_filter();
     const std::string prefix = name + "->";
@@ -65,17 +70,23 @@ void check_polygon(const nl::NavMesh& mesh, uint32_t polygon, const char* name) 
         fail(ErrorCode::InvalidArgument, name, " is ", polygon, " but the navmesh has ", mesh.polygon_count(), " polygons");
 }
 
-// A walk's start: in the navmesh's space, over its polygon.
-Vec3 read_start(const nl::NavMesh& mesh, const nl::SurfacePose& pose, uint32_t polygon, const float* start) {
-    check_polygon(mesh, polygon, "start_polygon");
-    require(start, "start");
-    const Vec3 local = pose.surface_point(nl::capi::read_position(start, "start"));
+// A walk's start: in the navmesh's space, over its polygon. `prefix` parts name the struct the
+// fields are in ("rays[", 3, "]."), or nothing for a walk's own arguments; spelt out on failure only.
+template <typename... Prefix>
+Vec3 read_start(const nl::NavMesh& mesh, const nl::SurfacePose& pose, uint32_t polygon, const float* start,
+                const Prefix&... prefix) {
+    if (polygon >= mesh.polygon_count())
+        fail(ErrorCode::InvalidArgument, prefix..., "start_polygon is ", polygon, " but the navmesh has ", mesh.polygon_count(),
+             " polygons");
+    if (!start) fail(ErrorCode::InvalidArgument, prefix..., "start is null");
+    const Vec3 local = pose.surface_point(nl::capi::read_position(start, prefix..., "start"));
+    if (mesh.over_polygon(polygon, local.x(), local.z())) return local;
     const Vec3 on = mesh.closest_point_on_polygon(polygon, local);
     const float dx = on.x() - local.x(), dz = on.z() - local.z();
     constexpr float kOverTolerance = 1e-3f;
     if (dx * dx + dz * dz > kOverTolerance * kOverTolerance)
-        fail(ErrorCode::InvalidArgument, "start is not over start_polygon ", polygon, " (", std::sqrt(dx * dx + dz * dz),
-             " m from it, seen from above)");
+        fail(ErrorCode::InvalidArgument, prefix..., "start is not over ", prefix..., "start_polygon ", polygon, " (",
+             std::sqrt(dx * dx + dz * dz), " m from it, seen from above)");
     return local;
 }
 
@@ -84,13 +95,13 @@ void check_polygons_output(const uint32_t* out, uint32_t capacity) {
     if (!out && capacity > 0) fail(ErrorCode::InvalidArgument, "out_polygons is null but capacity is ", capacity);
 }
 
-// Writes a walk's polygons as the raycast and the slide document.
+// Writes a slide's polygons: as many as fit, the count of all of them.
 void write_polygons(const std::vector<uint32_t>& polygons, uint32_t* out, uint32_t capacity, uint32_t* out_count) {
     const uint32_t written = out ? static_cast<uint32_t>(std::min<size_t>(capacity, polygons.size())) : 0;
     std::copy(polygons.begin(), polygons.begin() + written, out);
-    if (out_count) *out_count = written;
+    if (out_count) *out_count = static_cast<uint32_t>(polygons.size());
     if (out && written < polygons.size())
-        fail(ErrorCode::BufferTooSmall, "capacity is ", capacity, " but the walk crossed ", polygons.size(), " polygons");
+        fail(ErrorCode::BufferTooSmall, "capacity is ", capacity, " but the walk visited ", polygons.size(), " polygons");
 }
 
 }  // namespace
@@ -166,39 +177,52 @@ NL_API nl_status nl_navmesh_get_islands(const nl_world* world, nl_navmesh_id nav
 }
 
 NL_API nl_status nl_navmesh_raycast(const nl_world* world, nl_navmesh_id navmesh, const nl_query_filter* filter,
-                                    uint32_t start_polygon, const float* start, const float* end,
-                                    nl_navmesh_raycast_hit* out_hit, uint32_t* out_polygons, uint32_t capacity,
-                                    uint32_t* out_count) {
+                                    const nl_navmesh_ray* rays, uint32_t count, nl_navmesh_raycast_hit* out_hits,
+                                    uint32_t* out_polygons, uint32_t polygons_per_ray) {
     return guarded("nl_navmesh_raycast", world, [&] {
         const nl::World& w = deref(world);
         const Body body = read_filter(filter, "filter");
-        const auto mesh = w.navmeshes().navmesh(to_handle(navmesh));
-        const nl::SurfacePose pose = w.navmesh_pose(to_handle(navmesh));
-        const Vec3 from = read_start(*mesh, pose, start_polygon, start);
-        require(end, "end");
-        const Vec3 to = pose.surface_point(nl::capi::read_position(end, "end"));
-        require(out_hit, "out_hit");
-        nl::capi::check_growable_output(out_hit, kRaycastHitFirstSize, "out_hit");
-        check_polygons_output(out_polygons, capacity);
-
-        thread_local std::vector<uint32_t> crossed;
-        const auto passable_fn = [&](uint32_t p) { return body.may_enter(*mesh, p); };
+        const nl::NavMeshRegistry::Placed placed = w.navmeshes().placed(to_handle(navmesh));
+        const nl::NavMesh& mesh = *placed.navmesh;
+        const nl::SurfacePose pose = nl::pose_of(placed.frame);
+        if (count == 0) return;
+        require(rays, "rays");
+        require(out_hits, "out_hits");
+        if (!out_polygons && polygons_per_ray > 0)
+            fail(ErrorCode::InvalidArgument, "out_polygons is null but polygons_per_ray is ", polygons_per_ray);
+        const nl::capi::ElementWriter<nl_navmesh_raycast_hit> hits(out_hits, kRaycastHitFirstSize, "out_hits");
+        // Every ray is checked before any is walked: a refused batch writes nothing.
+        thread_local std::vector<std::pair<Vec3, Vec3>> ends;
+        ends.resize(count);
+        for (uint32_t i = 0; i < count; ++i) {
+            ends[i].first = read_start(mesh, pose, rays[i].start_polygon, rays[i].start, "rays[", i, "].");
+            ends[i].second = pose.surface_point(nl::capi::read_position(rays[i].end, "rays[", i, "].end"));
+        }
+        const auto passable_fn = [&](uint32_t p) { return body.may_enter(mesh, p); };
         const nl::PolygonFilter passable(passable_fn);
-        nl::SurfaceWalkOptions options;
-        options.passable = &passable;
-        options.max_polygons = mesh->polygon_count() + 1;
-        options.polygons = &crossed;
-        const nl::SurfaceRayHit hit = nl::raycast_surface(*mesh, start_polygon, from, to, options);
-        nl_navmesh_raycast_hit c{};
-        c.size = sizeof(c);
-        c.hit = hit.hit ? 1 : 0;
-        c.t = hit.t;
-        copy_point(c.point, pose.world_point(hit.point));
-        copy_point(c.wall_normal, pose.world_vector(hit.wall_normal));
-        c.end_polygon = hit.end_polygon;
-        c.polygon_count = static_cast<uint32_t>(crossed.size());
-        nl::capi::write_growable(out_hit, c, kRaycastHitFirstSize, "out_hit");
-        write_polygons(crossed, out_polygons, capacity, out_count);
+        const std::vector<std::pair<Vec3, Vec3>>& checked = ends;
+        w.tasks().parallel_for(count, 64, [&](uint32_t begin, uint32_t end) {
+            thread_local std::vector<uint32_t> crossed;
+            nl::SurfaceWalkOptions options;
+            options.passable = body.excludes_any() ? &passable : nullptr;
+            options.max_polygons = mesh.polygon_count() + 1;
+            options.polygons = &crossed;
+            for (uint32_t i = begin; i < end; ++i) {
+                const nl::SurfaceRayHit hit =
+                    nl::raycast_surface(mesh, rays[i].start_polygon, checked[i].first, checked[i].second, options);
+                nl_navmesh_raycast_hit c{};
+                c.hit = hit.hit ? 1 : 0;
+                c.t = hit.t;
+                copy_point(c.point, pose.world_point(hit.point));
+                copy_point(c.wall_normal, pose.world_vector(hit.wall_normal));
+                c.end_polygon = hit.end_polygon;
+                c.polygon_count = static_cast<uint32_t>(crossed.size());
+                hits.write(i, c);
+                if (polygons_per_ray > 0)
+                    std::copy_n(crossed.begin(), std::min<size_t>(crossed.size(), polygons_per_ray),
+                                out_polygons + size_t(i) * polygons_per_ray);
+            }
+        });
     });
 }
 
@@ -209,8 +233,9 @@ NL_API nl_status nl_navmesh_move_along_surface(const nl_world* world, nl_navmesh
     return guarded("nl_navmesh_move_along_surface", world, [&] {
         const nl::World& w = deref(world);
         const Body body = read_filter(filter, "filter");
-        const auto mesh = w.navmeshes().navmesh(to_handle(navmesh));
-        const nl::SurfacePose pose = w.navmesh_pose(to_handle(navmesh));
+        const nl::NavMeshRegistry::Placed placed = w.navmeshes().placed(to_handle(navmesh));
+        const nl::NavMesh* mesh = placed.navmesh.get();
+        const nl::SurfacePose pose = nl::pose_of(placed.frame);
         const Vec3 from = read_start(*mesh, pose, start_polygon, start);
         require(target, "target");
         const Vec3 to = pose.surface_point(nl::capi::read_position(target, "target"));
@@ -221,7 +246,7 @@ NL_API nl_status nl_navmesh_move_along_surface(const nl_world* world, nl_navmesh
         const auto passable_fn = [&](uint32_t p) { return body.may_enter(*mesh, p); };
         const nl::PolygonFilter passable(passable_fn);
         nl::SurfaceWalkOptions options;
-        options.passable = &passable;
+        options.passable = body.excludes_any() ? &passable : nullptr;
         options.max_polygons = mesh->polygon_count();
         options.polygons = &visited;
         const nl::SurfaceMove moved = nl::move_along_surface(*mesh, start_polygon, from, to, options);

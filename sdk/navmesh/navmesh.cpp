@@ -56,6 +56,32 @@ bool NavMesh::over_polygon(uint32_t p, float x, float z) const {
 float NavMesh::surface_height(uint32_t p, float x, float z) const {
     // The surface triangle whose x-z projection holds (x, z); on a shared edge any of them gives the
     // same height. Rounding may leave (x, z) just outside all of them: take the least outside.
+    // First the usual case without a division per triangle: the triangle that holds (x, z), or
+    // misses it by rounding alone (a point computed on an edge: a millionth of the triangle's area).
+    auto holds = [&](const Vec3& a, const Vec3& b, const Vec3& c, float& height) {
+        const float area = (b.x() - a.x()) * (c.z() - a.z()) - (c.x() - a.x()) * (b.z() - a.z());
+        const float sign = area < 0.0f ? -1.0f : 1.0f;
+        const float u = sign * ((b.x() - x) * (c.z() - z) - (c.x() - x) * (b.z() - z));
+        const float v = sign * ((c.x() - x) * (a.z() - z) - (a.x() - x) * (c.z() - z));
+        const float w = sign * area - u - v;
+        const float slack = -1e-6f * sign * area;
+        if (!(area != 0.0f && u >= slack && v >= slack && w >= slack)) return false;
+        const float cu = std::max(u, 0.0f), cv = std::max(v, 0.0f), cw = std::max(w, 0.0f);
+        height = (cu * a.y() + cv * b.y() + cw * c.y()) / (cu + cv + cw);
+        return true;
+    };
+    float height = 0.0f;
+    if (!detail_.empty()) {
+        for (uint32_t t = detail_[p].first_triangle; t < detail_[p + 1].first_triangle; ++t) {
+            const DetailTriangle& tri = detail_triangles_[t];
+            if (holds(detail_point(p, tri[0]), detail_point(p, tri[1]), detail_point(p, tri[2]), height)) return height;
+        }
+    } else {
+        const Vec3& origin = vertex(corner(p, 0));
+        for (uint32_t k = 1; k + 1 < corner_count(p); ++k) {
+            if (holds(origin, vertex(corner(p, k)), vertex(corner(p, k + 1)), height)) return height;
+        }
+    }
     float best_margin = -std::numeric_limits<float>::infinity(), best_height = vertex(corner(p, 0)).y();
     auto consider = [&](const Vec3& a, const Vec3& b, const Vec3& c) {
         const float area = (b.x() - a.x()) * (c.z() - a.z()) - (c.x() - a.x()) * (b.z() - a.z());

@@ -78,6 +78,8 @@ public:
     uint32_t neighbour(uint32_t p, uint32_t k) const { return neighbours_[first_corner_[p] + k]; }
     // Polygon p's corner_count(p) neighbours, for loops over its edges.
     const uint32_t* neighbours_of(uint32_t p) const { return &neighbours_[first_corner_[p]]; }
+    // Polygon p's corner_count(p) corners (vertex indices), counter-clockwise seen from above.
+    const uint32_t* corners_of(uint32_t p) const { return &corners_[first_corner_[p]]; }
     const Vec3& vertex(uint32_t v) const { return vertices_[v]; }
     uint32_t vertex_count() const { return static_cast<uint32_t>(vertices_.size()); }
     uint8_t area(uint32_t p) const { return areas_[p]; }

@@ -109,7 +109,6 @@ SurfaceMove move_along_surface(const NavMesh& navmesh, uint32_t polygon, const V
 
 SurfaceRayHit raycast_surface(const NavMesh& navmesh, uint32_t polygon, const Vec3& from, const Vec3& to,
                               const SurfaceWalkOptions& options) {
-    constexpr float kOnEdge = 1e-4f;  // an edge hit this near one of its ends still counts
     const float dx = to.x() - from.x(), dz = to.z() - from.z();
     if (options.polygons) options.polygons->clear();
     SurfaceRayHit result;
@@ -124,43 +123,42 @@ SurfaceRayHit raycast_surface(const NavMesh& navmesh, uint32_t polygon, const Ve
     float entered_at = 0.0f;
     for (uint32_t walked = 0; walked < std::max<uint32_t>(1, options.max_polygons); ++walked) {
         if (options.polygons) options.polygons->push_back(p);
-        if (navmesh.over_polygon(p, to.x(), to.z())) {
+        // A convex polygon, counter-clockwise seen from above: the line is inside while it is left of
+        // every edge, and leaves through the edge it crosses first going right (one pass, as Detour's
+        // dtIntersectSegmentPoly2D).
+        const uint32_t n = navmesh.corner_count(p);
+        const uint32_t* const corners = navmesh.corners_of(p);
+        float leaves_at = std::numeric_limits<float>::infinity();
+        uint32_t exit = n;
+        for (uint32_t k = 0; k < n; ++k) {
+            const Vec3& a = navmesh.vertex(corners[k]);
+            const Vec3& b = navmesh.vertex(corners[k + 1 == n ? 0 : k + 1]);
+            const float ex = b.x() - a.x(), ez = b.z() - a.z();
+            const float towards_outside = dz * ex - dx * ez;  // > 0: the line heads out across this edge's line
+            if (!(towards_outside > 0.0f)) continue;
+            const float t = (ez * (from.x() - a.x()) - ex * (from.z() - a.z())) / towards_outside;
+            if (t < leaves_at) {
+                leaves_at = t;
+                exit = k;
+            }
+        }
+        if (exit == n || leaves_at >= 1.0f) {  // the end is in this polygon (or the line has no length)
             result.point = Vec3(to.x(), navmesh.surface_height(p, to.x(), to.z()), to.z());
             result.end_polygon = p;
             return result;
         }
-        // A convex polygon: the line leaves it through the edge it crosses farthest along.
-        const uint32_t n = navmesh.corner_count(p);
-        float farthest = -1.0f;
-        uint32_t exit = n;
-        for (uint32_t k = 0; k < n; ++k) {
-            const Vec3& a = navmesh.vertex(navmesh.corner(p, k));
-            const Vec3& b = navmesh.vertex(navmesh.corner(p, (k + 1) % n));
-            const float ex = b.x() - a.x(), ez = b.z() - a.z();
-            const float denominator = dx * ez - dz * ex;
-            if (std::fabs(denominator) < 1e-12f) continue;  // parallel to the edge
-            const float along = ((a.x() - from.x()) * ez - (a.z() - from.z()) * ex) / denominator;
-            const float on_edge = ((a.x() - from.x()) * dz - (a.z() - from.z()) * dx) / denominator;
-            if (on_edge < -kOnEdge || on_edge > 1.0f + kOnEdge || along <= farthest) continue;
-            farthest = along;
-            exit = k;
-        }
-        if (exit == n || farthest < 0.0f) {  // numerically lost at a corner: nothing known beyond
-            stop_at(p, entered_at);
-            result.gave_up = true;
-            return result;
-        }
-        const uint32_t next = navmesh.neighbour(p, exit);
-        if (!may_enter(options, next)) {  // a wall before the target
-            stop_at(p, farthest);
-            const Vec3& a = navmesh.vertex(navmesh.corner(p, exit));
-            const Vec3& b = navmesh.vertex(navmesh.corner(p, (exit + 1) % n));
-            // Corners run counter-clockwise seen from above, so the inside is left of a -> b.
+        const float t = std::max(leaves_at, entered_at);  // rounding never walks it back
+        const uint32_t next = navmesh.neighbours_of(p)[exit];
+        if (!may_enter(options, next)) {  // a wall before the end
+            stop_at(p, t);
+            const Vec3& a = navmesh.vertex(corners[exit]);
+            const Vec3& b = navmesh.vertex(corners[exit + 1 == n ? 0 : exit + 1]);
+            // The inside is left of a -> b: the normal into the polygon.
             result.wall_normal = Vec3(b.z() - a.z(), 0.0f, a.x() - b.x()).normalized();
             return result;
         }
         p = next;
-        entered_at = farthest;
+        entered_at = t;
     }
     stop_at(p, entered_at);
     result.gave_up = true;

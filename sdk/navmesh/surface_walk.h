@@ -38,7 +38,7 @@ SurfaceMove move_along_surface(const NavMesh& navmesh, uint32_t polygon, const V
 
 struct SurfaceRayHit {
     bool hit = false;                 // a wall stopped it before `to` (or it ran past max_polygons)
-    bool gave_up = false;             // max_polygons crossed, or lost at a corner: nothing is known beyond
+    bool gave_up = false;             // max_polygons crossed: nothing is known beyond
     float t = 1.0f;                   // fraction of from -> to walked, seen from above
     Vec3 point = Vec3::Zero();        // where it stopped, at the surface height
     Vec3 wall_normal = Vec3::Zero();  // horizontal, into the last polygon; zero unless a wall was hit

@@ -56,6 +56,12 @@ std::shared_ptr<const SurfaceFrame> NavMeshRegistry::frame(Handle navmesh) const
     return entry(navmesh).frame;
 }
 
+NavMeshRegistry::Placed NavMeshRegistry::placed(Handle navmesh) const {
+    std::shared_lock lock(mutex_);
+    const Entry& e = entry(navmesh);
+    return Placed{e.navmesh, e.frame};
+}
+
 bool NavMeshRegistry::carried_by(Handle mesh) const {
     std::shared_lock lock(mutex_);
     return frame_of_mesh(mesh) != nullptr;

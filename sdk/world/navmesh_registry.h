@@ -52,6 +52,12 @@ public:
     std::vector<Handle> handles() const;
     // The frame of the mesh the navmesh rides; null for one that rides nothing.
     std::shared_ptr<const SurfaceFrame> frame(Handle navmesh) const;
+    // Both at once (one lock: queries that read a navmesh where it stands now).
+    struct Placed {
+        std::shared_ptr<const NavMesh> navmesh;
+        std::shared_ptr<const SurfaceFrame> frame;
+    };
+    Placed placed(Handle navmesh) const;
     // Whether any navmesh rides `mesh`.
     bool carried_by(Handle mesh) const;
     // The first navmesh (in the order added) that rides `mesh` and was made for `body` (same_body);

@@ -77,7 +77,9 @@ _Static_assert(offsetof(nl_nav_point, point) == 0 && offsetof(nl_nav_point, dist
                "nl_nav_point layout");
 _Static_assert(offsetof(nl_query_filter, size) == 0 && offsetof(nl_query_filter, agent) == 8 &&
                    offsetof(nl_query_filter, area_costs) == 32 && offsetof(nl_random_points_def, size) == 0 &&
-                   offsetof(nl_navmesh_raycast_hit, size) == 0 && offsetof(nl_navmesh_raycast_hit, t) == 8,
+                   offsetof(nl_navmesh_raycast_hit, size) == 0 && offsetof(nl_navmesh_raycast_hit, t) == 8 &&
+                   offsetof(nl_navmesh_ray, start_polygon) == 12 && offsetof(nl_navmesh_ray, end) == 16 &&
+                   sizeof(nl_navmesh_ray) == 28,
                "query struct layouts (growable: set size)");
 _Static_assert(offsetof(nl_navmesh_builder, build) == 0, "nl_navmesh_builder");
 /* Structs with a size field grow at their end: only today's offsets are fixed. */
@@ -375,8 +377,8 @@ struct api_table {
                                                 uint32_t*, uint32_t, uint32_t*);
     nl_status (*navmesh_get_islands)(const nl_world*, nl_navmesh_id, const nl_query_filter*, uint32_t*, uint32_t,
                                      uint32_t*, uint32_t*);
-    nl_status (*navmesh_raycast)(const nl_world*, nl_navmesh_id, const nl_query_filter*, uint32_t, const float*,
-                                 const float*, nl_navmesh_raycast_hit*, uint32_t*, uint32_t, uint32_t*);
+    nl_status (*navmesh_raycast)(const nl_world*, nl_navmesh_id, const nl_query_filter*, const nl_navmesh_ray*, uint32_t,
+                                 nl_navmesh_raycast_hit*, uint32_t*, uint32_t);
     nl_status (*navmesh_move_along_surface)(const nl_world*, nl_navmesh_id, const nl_query_filter*, uint32_t,
                                             const float*, const float*, nl_nav_point*, uint32_t*, uint32_t, uint32_t*);
     nl_random_points_def (*default_random_points_def)(void);

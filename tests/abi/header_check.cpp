@@ -32,6 +32,7 @@ static_assert(blittable<nl_boundary_edge>(), "nl_boundary_edge");
 static_assert(blittable<nl_nav_point>(), "nl_nav_point");
 static_assert(blittable<nl_query_filter>(), "nl_query_filter");
 static_assert(blittable<nl_navmesh_raycast_hit>(), "nl_navmesh_raycast_hit");
+static_assert(blittable<nl_navmesh_ray>(), "nl_navmesh_ray");
 static_assert(blittable<nl_random_points_def>(), "nl_random_points_def");
 static_assert(blittable<nl_navmesh_build_def>(), "nl_navmesh_build_def");
 static_assert(blittable<nl_plugin_id>(), "nl_plugin_id");

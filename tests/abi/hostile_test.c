@@ -3817,118 +3817,175 @@ static void group_navmesh_get_islands(void) {
     }
 }
 
-/* The walks: nl_navmesh_raycast and nl_navmesh_move_along_surface, one table of point cases for both. */
-typedef nl_status walk_fn(const nl_query_filter* filter, uint32_t start_polygon, const float* start, const float* end,
-                          void* out, uint32_t* polygons, uint32_t capacity, uint32_t* count);
-static nl_status raycast_walk(const nl_query_filter* filter, uint32_t start_polygon, const float* start, const float* end,
-                              void* out, uint32_t* polygons, uint32_t capacity, uint32_t* count) {
-    return nl_navmesh_raycast(A.world, A.navmesh, filter, start_polygon, start, end, (nl_navmesh_raycast_hit*)out, polygons,
-                              capacity, count);
+/* nl_navmesh_move_along_surface from k_walk_start toward k_walk_end. */
+static nl_status move_filter_call(const nl_query_filter* filter, void* out) {
+    return nl_navmesh_move_along_surface(A.world, A.navmesh, filter, near_polygon(), k_walk_start, k_walk_end,
+                                         (nl_nav_point*)out, NULL, 0, NULL);
 }
-static nl_status move_walk(const nl_query_filter* filter, uint32_t start_polygon, const float* start, const float* end,
-                           void* out, uint32_t* polygons, uint32_t capacity, uint32_t* count) {
-    return nl_navmesh_move_along_surface(A.world, A.navmesh, filter, start_polygon, start, end, (nl_nav_point*)out, polygons,
-                                         capacity, count);
+static nl_status move_id_call(nl_world* w, raw_id id, void* out) {
+    return nl_navmesh_move_along_surface(w, AS(nl_navmesh_id, id), NULL, 0, k_walk_start, k_walk_end, (nl_nav_point*)out,
+                                         NULL, 0, NULL);
 }
-static walk_fn* g_walk;
-static size_t g_walk_out_size; /* the output struct; a raycast hit starts with its size */
-
-static void fresh_walk_output(aligned_buffer* out) {
-    fill(out->bytes, sizeof out->bytes);
-    if (g_walk == raycast_walk) set_size(out->bytes, (uint32_t)sizeof(nl_navmesh_raycast_hit));
-}
-static nl_status walk_filter_call(const nl_query_filter* filter, void* out) {
-    if (g_walk == raycast_walk) set_size(out, (uint32_t)sizeof(nl_navmesh_raycast_hit));
-    return g_walk(filter, near_polygon(), k_walk_start, k_walk_end, out, NULL, 0, NULL);
-}
-static nl_status walk_id_call(nl_world* w, raw_id id, void* out) {
-    const nl_navmesh_id navmesh = AS(nl_navmesh_id, id);
-    if (g_walk == raycast_walk) {
-        if (out) set_size(out, (uint32_t)sizeof(nl_navmesh_raycast_hit));
-        return nl_navmesh_raycast(w, navmesh, NULL, 0, k_walk_start, k_walk_end, (nl_navmesh_raycast_hit*)out, NULL, 0, NULL);
-    }
-    return nl_navmesh_move_along_surface(w, navmesh, NULL, 0, k_walk_start, k_walk_end, (nl_nav_point*)out, NULL, 0, NULL);
-}
-static void walk_refused(uint32_t polygon, const float* start, const float* end, uint32_t* polygons, uint32_t capacity,
+static void move_refused(uint32_t polygon, const float* start, const float* target, uint32_t* polygons, uint32_t capacity,
                          const char* needle) {
-    aligned_buffer out;
+    nl_nav_point out;
     uint32_t count;
-    fresh_walk_output(&out);
+    fill(&out, sizeof out);
     fill(&count, sizeof count);
-    EXPECT_INVALID(A.world, g_walk(NULL, polygon, start, end, out.bytes, polygons, capacity, &count), needle);
-    EXPECT_UNTOUCHED(out.bytes + (g_walk == raycast_walk ? 4 : 0), g_walk_out_size - (g_walk == raycast_walk ? 4 : 0),
-                     "the output");
+    EXPECT_INVALID(A.world, nl_navmesh_move_along_surface(A.world, A.navmesh, NULL, polygon, start, target, &out, polygons,
+                                                          capacity, &count),
+                   needle);
+    EXPECT_UNTOUCHED(&out, sizeof out, "out_point");
     EXPECT_UNTOUCHED(&count, sizeof count, "out_count");
 }
 
-static void walk_cases(const char* function, const char* end_name, walk_fn* walk, size_t out_size) {
-    const id_function f = {function, "navmesh", walk == raycast_walk ? "out_hit" : "out_point", out_size,
-                           walk == raycast_walk, 0, walk_id_call, 0};
+static void group_navmesh_move_along_surface(void) {
+    static const char* const function = "nl_navmesh_move_along_surface";
+    static const id_function f = {"nl_navmesh_move_along_surface", "navmesh", "out_point", sizeof(nl_nav_point), 0, 0,
+                                  move_id_call, 0};
+    const float far_platform[3] = {6.0f, 0.0f, 0.0f};
     size_t v;
     int k, which;
-    g_walk = walk;
-    g_walk_out_size = out_size;
     id_cases(&f, RAW(A.navmesh), RAW(A.stale_navmesh), RAW(B.navmesh));
-    filter_cases(function, walk_filter_call, out_size, walk == raycast_walk ? 4 : 0);
+    filter_cases(function, move_filter_call, sizeof(nl_nav_point), 0);
     CASE(function, "start_polygon 0 or any other the start is not over (the far platform's): refused") {
-        const float far_platform[3] = {6.0f, 0.0f, 0.0f};
-        walk_refused(polygon_under(far_platform), k_walk_start, k_walk_end, NULL, 0, "start is not over start_polygon");
+        move_refused(polygon_under(far_platform), k_walk_start, k_walk_end, NULL, 0, "start is not over start_polygon");
     }
-    CASE(function, "start_polygon huge") { walk_refused(UINT32_MAX, k_walk_start, k_walk_end, NULL, 0, "start_polygon"); }
-    CASE(function, "start NULL") { walk_refused(near_polygon(), NULL, k_walk_end, NULL, 0, "start"); }
-    CASE(function, "%s NULL", end_name) { walk_refused(near_polygon(), k_walk_start, NULL, NULL, 0, end_name); }
+    CASE(function, "start_polygon huge") { move_refused(UINT32_MAX, k_walk_start, k_walk_end, NULL, 0, "start_polygon"); }
+    CASE(function, "start NULL") { move_refused(near_polygon(), NULL, k_walk_end, NULL, 0, "start"); }
+    CASE(function, "target NULL") { move_refused(near_polygon(), k_walk_start, NULL, NULL, 0, "target"); }
     for (which = 0; which < 2; ++which) {
         for (k = 0; k < 3; ++k) {
             for (v = 0; v < BAD_FLOAT_COUNT; ++v) {
-                CASE(function, "%s[%d] %s", which == 0 ? "start" : end_name, k, k_bad_floats[v].name) {
-                    float start[3], end[3];
+                CASE(function, "%s[%d] %s", which == 0 ? "start" : "target", k, k_bad_floats[v].name) {
+                    float start[3], target[3];
                     memcpy(start, k_walk_start, sizeof start);
-                    memcpy(end, k_walk_end, sizeof end);
-                    (which == 0 ? start : end)[k] = k_bad_floats[v].value;
-                    walk_refused(near_polygon(), start, end, NULL, 0, which == 0 ? "start" : end_name);
+                    memcpy(target, k_walk_end, sizeof target);
+                    (which == 0 ? start : target)[k] = k_bad_floats[v].value;
+                    move_refused(near_polygon(), start, target, NULL, 0, which == 0 ? "start" : "target");
                 }
             }
         }
     }
-    CASE(function, "%s beyond the limit (2e9)", end_name) {
+    CASE(function, "target beyond the limit (2e9)") {
         const float far[3] = {2.0e9f, 0.0f, 0.0f};
-        walk_refused(near_polygon(), k_walk_start, far, NULL, 0, end_name);
+        move_refused(near_polygon(), k_walk_start, far, NULL, 0, "target");
     }
-    CASE(function, "out_polygons NULL (capacity 1)") { walk_refused(near_polygon(), k_walk_start, k_walk_end, NULL, 1, "out_polygons"); }
+    CASE(function, "out_polygons NULL (capacity 1)") { move_refused(near_polygon(), k_walk_start, k_walk_end, NULL, 1, "out_polygons"); }
     CASE(function, "capacity huge (out_polygons NULL)") {
-        walk_refused(near_polygon(), k_walk_start, k_walk_end, NULL, UINT32_MAX, "out_polygons");
+        move_refused(near_polygon(), k_walk_start, k_walk_end, NULL, UINT32_MAX, "out_polygons");
     }
-    CASE(function, "capacity 0 (a buffer given: BUFFER_TOO_SMALL, the walk written)") {
-        aligned_buffer out;
-        uint32_t polygons[4], count = 77;
-        fresh_walk_output(&out);
+    CASE(function, "capacity 0 (a buffer given: BUFFER_TOO_SMALL, the point written, the count of all)") {
+        nl_nav_point out;
+        uint32_t polygons[4], count = 0;
         fill(polygons, sizeof polygons);
-        EXPECT_FAILURE(A.world, g_walk(NULL, near_polygon(), k_walk_start, k_walk_end, out.bytes, polygons, 0, &count),
+        EXPECT_FAILURE(A.world, nl_navmesh_move_along_surface(A.world, A.navmesh, NULL, near_polygon(), k_walk_start, k_walk_end,
+                                                              &out, polygons, 0, &count),
                        NL_STATUS_BUFFER_TOO_SMALL, "capacity is 0");
-        EXPECT(count == 0, "out_count %u", (unsigned)count);
+        EXPECT(count >= 1 && out.found == 1, "out_count %u, found %u", (unsigned)count, (unsigned)out.found);
         EXPECT_UNTOUCHED(polygons, sizeof polygons, "out_polygons");
     }
     CASE(function, "out_count NULL (allowed)") {
-        aligned_buffer out;
+        nl_nav_point out;
         uint32_t polygons[64];
-        fresh_walk_output(&out);
-        EXPECT_OK(g_walk(NULL, near_polygon(), k_walk_start, k_walk_end, out.bytes, polygons, 64, NULL));
+        EXPECT_OK(nl_navmesh_move_along_surface(A.world, A.navmesh, NULL, near_polygon(), k_walk_start, k_walk_end, &out,
+                                                polygons, 64, NULL));
         EXPECT(polygons[0] == near_polygon(), "the first polygon is %u, not the start's", (unsigned)polygons[0]);
     }
 }
 
+/* nl_navmesh_raycast: two rays from k_walk_start, the second one made bad by the cases. */
+static nl_navmesh_ray walk_ray(void) {
+    nl_navmesh_ray r;
+    memcpy(r.start, k_walk_start, sizeof r.start);
+    memcpy(r.end, k_walk_end, sizeof r.end);
+    r.start_polygon = near_polygon();
+    return r;
+}
+static void raycast_refused(const nl_navmesh_ray* rays, uint32_t count, uint32_t* polygons, uint32_t per_ray,
+                            const char* needle) {
+    nl_navmesh_raycast_hit hits[2];
+    fill(hits, sizeof hits);
+    set_size(hits, (uint32_t)sizeof hits[0]);
+    EXPECT_INVALID(A.world, nl_navmesh_raycast(A.world, A.navmesh, NULL, rays, count, hits, polygons, per_ray), needle);
+    EXPECT_UNTOUCHED((unsigned char*)hits + 4, sizeof hits - 4, "out_hits");
+}
+static nl_status raycast_filter_call(const nl_query_filter* filter, void* out) {
+    const nl_navmesh_ray r = walk_ray();
+    set_size(out, (uint32_t)sizeof(nl_navmesh_raycast_hit));
+    return nl_navmesh_raycast(A.world, A.navmesh, filter, &r, 1, (nl_navmesh_raycast_hit*)out, NULL, 0);
+}
+static nl_status raycast_id_call(nl_world* w, raw_id id, void* out) {
+    nl_navmesh_ray r = walk_ray();
+    r.start_polygon = 0;
+    if (out) set_size(out, (uint32_t)sizeof(nl_navmesh_raycast_hit));
+    return nl_navmesh_raycast(w, AS(nl_navmesh_id, id), NULL, &r, 1, (nl_navmesh_raycast_hit*)out, NULL, 0);
+}
 static nl_status raycast_into(void* out) {
-    return nl_navmesh_raycast(A.world, A.navmesh, NULL, near_polygon(), k_walk_start, k_walk_end, (nl_navmesh_raycast_hit*)out,
-                              NULL, 0, NULL);
+    const nl_navmesh_ray r = walk_ray();
+    return nl_navmesh_raycast(A.world, A.navmesh, NULL, &r, 1, (nl_navmesh_raycast_hit*)out, NULL, 0);
 }
 
 static void group_navmesh_raycast(void) {
-    walk_cases("nl_navmesh_raycast", "end", raycast_walk, sizeof(nl_navmesh_raycast_hit));
-    out_sizes("nl_navmesh_raycast", "out_hit", sizeof(nl_navmesh_raycast_hit), raycast_into);
-}
-
-static void group_navmesh_move_along_surface(void) {
-    walk_cases("nl_navmesh_move_along_surface", "target", move_walk, sizeof(nl_nav_point));
+    static const char* const function = "nl_navmesh_raycast";
+    static const id_function f = {"nl_navmesh_raycast", "navmesh", "out_hits", sizeof(nl_navmesh_raycast_hit), 1, 0,
+                                  raycast_id_call, 0};
+    const float far_platform[3] = {6.0f, 0.0f, 0.0f};
+    nl_navmesh_ray rays[2];
+    size_t v;
+    int k, which;
+    rays[0] = rays[1] = walk_ray();
+    id_cases(&f, RAW(A.navmesh), RAW(A.stale_navmesh), RAW(B.navmesh));
+    filter_cases(function, raycast_filter_call, sizeof(nl_navmesh_raycast_hit), 4);
+    out_sizes(function, "out_hits", sizeof(nl_navmesh_raycast_hit), raycast_into);
+    CASE(function, "rays NULL") { raycast_refused(NULL, 2, NULL, 0, "rays"); }
+    CASE(function, "count 0 (allowed, rays and out_hits NULL)") {
+        EXPECT_OK(nl_navmesh_raycast(A.world, A.navmesh, NULL, NULL, 0, NULL, NULL, 0));
+    }
+    CASE(function, "count huge (rays NULL: not read)") { raycast_refused(NULL, UINT32_MAX, NULL, 0, "rays"); }
+    CASE(function, "rays->start_polygon of another polygon (the far platform's): refused, naming the ray") {
+        nl_navmesh_ray bad[2] = {rays[0], rays[1]};
+        bad[1].start_polygon = polygon_under(far_platform);
+        raycast_refused(bad, 2, NULL, 0, "rays[1].start is not over rays[1].start_polygon");
+    }
+    CASE(function, "rays->start_polygon huge") {
+        nl_navmesh_ray bad[2] = {rays[0], rays[1]};
+        bad[1].start_polygon = UINT32_MAX;
+        raycast_refused(bad, 2, NULL, 0, "rays[1].start_polygon");
+    }
+    for (which = 0; which < 2; ++which) {
+        for (k = 0; k < 3; ++k) {
+            for (v = 0; v < BAD_FLOAT_COUNT; ++v) {
+                CASE(function, "rays->%s[%d] %s (ray 1)", which == 0 ? "start" : "end", k, k_bad_floats[v].name) {
+                    nl_navmesh_ray bad[2] = {rays[0], rays[1]};
+                    (which == 0 ? bad[1].start : bad[1].end)[k] = k_bad_floats[v].value;
+                    raycast_refused(bad, 2, NULL, 0, which == 0 ? "rays[1].start" : "rays[1].end");
+                }
+            }
+        }
+    }
+    CASE(function, "rays->end beyond the limit (2e9, ray 1)") {
+        nl_navmesh_ray bad[2] = {rays[0], rays[1]};
+        bad[1].end[0] = 2.0e9f;
+        raycast_refused(bad, 2, NULL, 0, "rays[1].end");
+    }
+    CASE(function, "out_polygons NULL (polygons_per_ray 1)") { raycast_refused(rays, 2, NULL, 1, "out_polygons"); }
+    CASE(function, "polygons_per_ray huge (out_polygons NULL)") { raycast_refused(rays, 2, NULL, UINT32_MAX, "out_polygons"); }
+    CASE(function, "polygons_per_ray 0 (allowed with out_polygons NULL)") {
+        nl_navmesh_raycast_hit hits[2];
+        hits[0] = nl_navmesh_raycast_hit_init();
+        EXPECT_OK(nl_navmesh_raycast(A.world, A.navmesh, NULL, rays, 2, hits, NULL, 0));
+        EXPECT(hits[1].size == sizeof hits[1] && hits[1].polygon_count >= 1, "second hit: size %u, %u polygons",
+               (unsigned)hits[1].size, (unsigned)hits[1].polygon_count);
+    }
+    CASE(function, "polygons_per_ray 1 (the first polygon of each ray; the count of all)") {
+        nl_navmesh_raycast_hit hits[2];
+        uint32_t polygons[2];
+        hits[0] = nl_navmesh_raycast_hit_init();
+        EXPECT_OK(nl_navmesh_raycast(A.world, A.navmesh, NULL, rays, 2, hits, polygons, 1));
+        EXPECT(polygons[0] == near_polygon() && polygons[1] == near_polygon(), "first polygons %u, %u", (unsigned)polygons[0],
+               (unsigned)polygons[1]);
+    }
 }
 
 /* nl_navmesh_random_points: three points with a def. */

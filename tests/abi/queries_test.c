@@ -168,50 +168,82 @@ static void no_path_at_once(void) {
     nl_world_destroy(world);
 }
 
+static nl_navmesh_ray ray(uint32_t polygon, float x0, float z0, float x1, float z1) {
+    nl_navmesh_ray r;
+    r.start[0] = x0, r.start[1] = 0.0f, r.start[2] = z0;
+    r.start_polygon = polygon;
+    r.end[0] = x1, r.end[1] = 0.0f, r.end[2] = z1;
+    return r;
+}
+
 static void raycast(void) {
     /* A room 4 x 2 with a wall cell at column 0 of row 2; area 5 at column 3 of row 1. */
     const char* rows[] = {"....", "...5", "#..."};
     nl_world* world = make_world(1);
     const nl_navmesh_id navmesh = add_cells(world, rows, 3);
-    nl_navmesh_raycast_hit hit;
-    uint32_t crossed[8], count = 0;
-    const float start[3] = {0.5f, 0.0f, 0.5f};
-    hit = nl_navmesh_raycast_hit_init();
+    /* Along row 0 to its far cell; down column 0 toward z = 4.5 (the missing cell of row 2 is a wall at
+       z = 2); across row 1 into area 5. */
+    const nl_navmesh_ray rays[3] = {ray(0, 0.5f, 0.5f, 3.5f, 0.5f), ray(0, 0.5f, 0.5f, 0.5f, 4.5f), ray(4, 0.5f, 1.5f, 3.9f, 1.5f)};
+    nl_navmesh_raycast_hit hits[3];
+    uint32_t crossed[3 * 8];
+    hits[0] = nl_navmesh_raycast_hit_init();
 
-    {  /* Along row 0 to its far cell: arrives, four cells crossed. */
-        const float end[3] = {3.5f, 0.0f, 0.5f};
-        CHECK_OK(nl_navmesh_raycast(world, navmesh, NULL, 0, start, end, &hit, crossed, 8, &count));
-        CHECK(hit.hit == 0 && hit.t == 1.0f && near3(hit.point, 3.5f, 0.0f, 0.5f, TOL));
-        CHECK(hit.polygon_count == 4 && count == 4 && crossed[0] == 0 && crossed[3] == 3 && hit.end_polygon == 3);
-        CHECK(hit.wall_normal[0] == 0.0f && hit.wall_normal[2] == 0.0f);
+    CHECK_OK(nl_navmesh_raycast(world, navmesh, NULL, rays, 3, hits, crossed, 8));
+    CHECK(hits[0].hit == 0 && hits[0].t == 1.0f && near3(hits[0].point, 3.5f, 0.0f, 0.5f, TOL));
+    CHECK(hits[0].polygon_count == 4 && crossed[0] == 0 && crossed[3] == 3 && hits[0].end_polygon == 3);
+    CHECK(hits[0].wall_normal[0] == 0.0f && hits[0].wall_normal[2] == 0.0f);
+    CHECK_THAT(hits[1].hit == 1, "nl_navmesh_raycast: a walk into a missing cell stops at its wall");
+    CHECK(hits[1].size == sizeof(nl_navmesh_raycast_hit));
+    CHECK_NEAR(hits[1].t, 1.5f / 4.0f, TOL);
+    CHECK(near3(hits[1].point, 0.5f, 0.0f, 2.0f, TOL));
+    CHECK(near3(hits[1].wall_normal, 0.0f, 0.0f, -1.0f, TOL));
+    CHECK(hits[1].polygon_count == 2 && crossed[8] == 0 && crossed[9] == 4 && hits[1].end_polygon == 4);
+    CHECK(hits[2].hit == 0 && hits[2].end_polygon == 7 && hits[2].polygon_count == 4);
+
+    /* Fewer polygons than crossed: the first ones, and the count of all. */
+    {
+        uint32_t two[3 * 2];
+        CHECK_OK(nl_navmesh_raycast(world, navmesh, NULL, rays, 3, hits, two, 2));
+        CHECK(hits[0].polygon_count == 4 && two[0] == 0 && two[1] == 1 && two[2] == 0 && two[3] == 4);
     }
-    {  /* Down column 0 toward z = 4.5: the missing cell of row 2 is a wall at z = 2. */
-        const float end[3] = {0.5f, 0.0f, 4.5f};
-        CHECK_OK(nl_navmesh_raycast(world, navmesh, NULL, 0, start, end, &hit, crossed, 8, &count));
-        CHECK_THAT(hit.hit == 1, "nl_navmesh_raycast: a walk into a missing cell stops at its wall");
-        CHECK_NEAR(hit.t, 1.5f / 4.0f, TOL);
-        CHECK(near3(hit.point, 0.5f, 0.0f, 2.0f, TOL));
-        CHECK(near3(hit.wall_normal, 0.0f, 0.0f, -1.0f, TOL));
-        CHECK(count == 2 && crossed[0] == 0 && crossed[1] == 4 && hit.end_polygon == 4);
-        CHECK_FAIL(nl_navmesh_raycast(world, navmesh, NULL, 0, start, end, &hit, crossed, 1, &count),
-                   NL_STATUS_BUFFER_TOO_SMALL, "crossed 2 polygons");
-        CHECK(count == 1 && hit.polygon_count == 2 && hit.hit == 1);
-    }
-    {  /* Across row 1 into area 5, which a filter keeping out of it makes a wall at x = 3. */
-        const float from[3] = {0.5f, 0.0f, 1.5f}, end[3] = {3.9f, 0.0f, 1.5f};
+    {  /* A filter keeping out of area 5 makes it a wall at x = 3. */
         const float costs[6] = {1, 1, 1, 1, 1, NL_AREA_EXCLUDED};
         nl_query_filter filter = nl_default_query_filter();
         filter.area_costs = costs;
         filter.area_cost_count = 6;
-        CHECK_OK(nl_navmesh_raycast(world, navmesh, NULL, 4, from, end, &hit, NULL, 0, NULL));
-        CHECK(hit.hit == 0 && hit.end_polygon == 7);
-        CHECK_OK(nl_navmesh_raycast(world, navmesh, &filter, 4, from, end, &hit, NULL, 0, NULL));
-        CHECK(hit.hit == 1 && near3(hit.point, 3.0f, 0.0f, 1.5f, TOL) && near3(hit.wall_normal, -1.0f, 0.0f, 0.0f, TOL));
+        CHECK_OK(nl_navmesh_raycast(world, navmesh, &filter, rays + 2, 1, hits, NULL, 0));
+        CHECK(hits[0].hit == 1 && near3(hits[0].point, 3.0f, 0.0f, 1.5f, TOL) &&
+              near3(hits[0].wall_normal, -1.0f, 0.0f, 0.0f, TOL));
     }
-    {  /* A start that is not over its polygon. */
-        const float end[3] = {1.0f, 0.0f, 1.0f};
-        CHECK_INVALID(nl_navmesh_raycast(world, navmesh, NULL, 2, start, end, &hit, NULL, 0, NULL),
-                      "start is not over start_polygon 2");
+    {  /* A ray whose start is not over its polygon: the whole batch is refused, nothing written. */
+        nl_navmesh_ray bad[2];
+        bad[0] = rays[0];
+        bad[1] = ray(2, 0.5f, 0.5f, 1.0f, 1.0f);
+        memset(hits, 0xab, sizeof hits);
+        hits[0] = nl_navmesh_raycast_hit_init();
+        CHECK_INVALID(nl_navmesh_raycast(world, navmesh, NULL, bad, 2, hits, NULL, 0), "rays[1].start is not over rays[1].start_polygon 2");
+        CHECK(hits[0].hit == 0 && hits[0].t == 0.0f && all_bytes(&hits[1], sizeof hits[1], 0xab));
+    }
+    /* The same answers from a world with more workers and a batch large enough to be split. */
+    {
+        nl_world* wide = make_world(2);
+        const nl_navmesh_id wide_navmesh = add_cells(wide, rows, 3);
+        enum { kBatch = 1000 };
+        nl_navmesh_ray* many = (nl_navmesh_ray*)malloc(sizeof(nl_navmesh_ray) * kBatch);
+        nl_navmesh_raycast_hit* one = (nl_navmesh_raycast_hit*)malloc(sizeof(nl_navmesh_raycast_hit) * kBatch);
+        nl_navmesh_raycast_hit* two = (nl_navmesh_raycast_hit*)malloc(sizeof(nl_navmesh_raycast_hit) * kBatch);
+        int i;
+        for (i = 0; i < kBatch; ++i) many[i] = rays[i % 3], many[i].end[0] += 0.001f * (float)(i % 7);
+        one[0] = nl_navmesh_raycast_hit_init();
+        two[0] = nl_navmesh_raycast_hit_init();
+        CHECK_OK(nl_navmesh_raycast(world, navmesh, NULL, many, kBatch, one, NULL, 0));
+        CHECK_OK(nl_navmesh_raycast(wide, wide_navmesh, NULL, many, kBatch, two, NULL, 0));
+        CHECK_THAT(memcmp(one, two, sizeof(nl_navmesh_raycast_hit) * kBatch) == 0,
+                   "nl_navmesh_raycast: the same answers on 1 and 2 workers");
+        free(many);
+        free(one);
+        free(two);
+        nl_world_destroy(wide);
     }
     nl_world_destroy(world);
 }
@@ -228,6 +260,12 @@ static void move_along_surface(void) {
         CHECK_OK(nl_navmesh_move_along_surface(world, navmesh, NULL, 4, start, target, &moved, visited, 16, &count));
         CHECK(moved.found == 1 && near3(moved.point, 2.5f, 0.0f, 0.5f, TOL) && moved.polygon == 2 && moved.distance == 0.0f);
         CHECK(count >= 2 && visited[0] == 4 && visited[count - 1] == 2);
+        {
+            const uint32_t all = count;
+            CHECK_FAIL(nl_navmesh_move_along_surface(world, navmesh, NULL, 4, start, target, &moved, visited, 1, &count),
+                       NL_STATUS_BUFFER_TOO_SMALL, "visited");
+            CHECK_THAT(count == all && visited[0] == 4, "a slide's out_count is how many it visited, also when they did not fit");
+        }
     }
     {  /* Into the missing cell: slides to the nearest point of its wall, z = 2 under the target. */
         const float target[3] = {0.3f, 0.0f, 2.5f};

@@ -1416,49 +1416,65 @@ NL_API nl_status nl_navmesh_get_islands(const nl_world* world, nl_navmesh_id nav
                                         uint32_t* out_islands, uint32_t capacity, uint32_t* out_count,
                                         uint32_t* out_island_count);
 
-/** How far a straight walk along a navmesh went (nl_navmesh_raycast). */
+/** One straight walk for nl_navmesh_raycast. */
+typedef struct nl_navmesh_ray {
+    float start[3];          /**< Over start_polygon (within 1 mm, seen from above). */
+    uint32_t start_polygon;  /**< The polygon under start, from nl_navmesh_find_nearest. */
+    float end[3];            /**< Anywhere: the walk heads for it, seen from above. */
+} nl_navmesh_ray;
+
+/** How far a straight walk along a navmesh went (nl_navmesh_raycast). An array element that may
+ *  grow: set `size` of the first element of the output array (nl_navmesh_raycast_hit_init). */
 typedef struct nl_navmesh_raycast_hit {
-    uint32_t size;           /**< Set by the caller to sizeof(nl_navmesh_raycast_hit). */
+    uint32_t size;           /**< sizeof(nl_navmesh_raycast_hit) as the host knows it; written back. */
     uint8_t hit;             /**< 1 if a wall (the navmesh's outline, or an excluded area) stopped
                                   the walk before `end`; 0 if it arrived. */
     uint8_t reserved[3];
     float t;                 /**< The fraction of start -> end walked (seen from above): 1 if it
                                   arrived. */
-    float point[3];          /**< Where it stopped (or `end`), on the navmesh surface. */
+    float point[3];          /**< Where it stopped (or `end`), at the navmesh surface's height. */
     float wall_normal[3];    /**< The wall's normal, horizontal and pointing back the way the walk
                                   came from (into the last polygon); zero if it arrived. */
     uint32_t end_polygon;    /**< The polygon holding `point`. */
-    uint32_t polygon_count;  /**< Polygons crossed, the start polygon first and end_polygon last. */
+    uint32_t polygon_count;  /**< Polygons crossed, the start polygon first and end_polygon last
+                                  (all of them, also when out_polygons had room for fewer). */
 } nl_navmesh_raycast_hit;
 
 NL_DEFINE_OUTPUT_INIT(nl_navmesh_raycast_hit, nl_navmesh_raycast_hit_init)
 
-/** Walks in a straight line (seen from above) from `start`, on polygon `start_polygon` (from
- *  nl_navmesh_find_nearest), towards `end` along the navmesh surface, as Detour's raycast: how far a
- *  body can walk before a wall stops it, the wall, and the polygons crossed. The navmesh's outline
- *  and polygons in areas the filter excludes are walls; the navmesh is taken as built for its agent
- *  (a body wider than that is not kept further from walls here; its links are not taken).
- *  [in] filter: borrowed, NULL for nl_default_query_filter(). [in] start, end: 3 floats each;
- *  start must lie over start_polygon (within 1 mm, seen from above); end anywhere.
- *  [out] out_hit: caller-owned, `size` set. [out] out_polygons: caller-owned, `capacity` entries, or
- *  NULL with capacity 0; the crossed polygons, start first; `*out_count` (optional) receives how many
- *  were written (the whole count is out_hit->polygon_count).
- *  Returns SUCCESS (the hit is always written), BUFFER_TOO_SMALL (the hit is written and the first
- *  `capacity` polygons), or a failure with INVALID_HANDLE, INVALID_ARGUMENT (null pointer, a point
- *  not finite or beyond NL_COORDINATE_LIMIT, start_polygon out of range or start not over it, a
- *  filter as nl_navmesh_can_reach refuses). Thread-safe. */
+/** Walks each of `count` rays in a straight line (seen from above) from its start toward its end
+ *  along the navmesh surface, as Detour's raycast: how far a body can walk before a wall stops it,
+ *  the wall, and the polygons crossed; for line-of-sight checks, charges, corner cutting. The
+ *  navmesh's outline and polygons in areas the filter excludes are walls; the navmesh is taken as
+ *  built for its agent (a body wider than that is not kept further from walls here; links are not
+ *  taken). Batched, as nl_navmesh_find_nearest: the navmesh is looked up once, and large batches run
+ *  over the world's workers; the answers do not depend on the thread count.
+ *  [in] filter: borrowed, NULL for nl_default_query_filter(). [in] rays: borrowed, `count`.
+ *  [out] out_hits: caller-owned, `count` entries, out_hits[0].size set. [out] out_polygons: optional
+ *  (NULL with polygons_per_ray 0), caller-owned, count * polygons_per_ray entries: ray i's crossed
+ *  polygons from out_polygons[i * polygons_per_ray], at most polygons_per_ray of them (its
+ *  polygon_count says how many it crossed). count == 0 succeeds.
+ *  Returns SUCCESS, or a failure with nothing written: INVALID_HANDLE, INVALID_ARGUMENT (a null
+ *  pointer, a ray's point not finite or beyond NL_COORDINATE_LIMIT, its start_polygon out of range or
+ *  its start not over it: the ray's index named, a filter as nl_navmesh_can_reach refuses,
+ *  out_hits[0].size unset), OUT_OF_MEMORY. Thread-safe. */
 NL_API nl_status nl_navmesh_raycast(const nl_world* world, nl_navmesh_id navmesh, const nl_query_filter* filter,
-                                    uint32_t start_polygon, const float* start, const float* end,
-                                    nl_navmesh_raycast_hit* out_hit, uint32_t* out_polygons, uint32_t capacity,
-                                    uint32_t* out_count);
+                                    const nl_navmesh_ray* rays, uint32_t count, nl_navmesh_raycast_hit* out_hits,
+                                    uint32_t* out_polygons, uint32_t polygons_per_ray);
 
 /** Slides a point from `start` (over `start_polygon`) towards `target` along the navmesh, as
  *  Detour's moveAlongSurface: the result is `target` when the straight way there stays on the
  *  navmesh, else the point nearest to `target` on the walls met within the circle through start and
  *  target, so a host that steers its own bodies can keep one on the navmesh each frame. Walls are as
- *  nl_navmesh_raycast's. [out] out_point: its point (at the surface height), polygon and distance to
- *  `target` (found is 1). [out] out_polygons, capacity, out_count: the polygons visited from the
- *  start to the result's, as nl_navmesh_raycast's. Returns as nl_navmesh_raycast. Thread-safe. */
+ *  nl_navmesh_raycast's. [in] filter: borrowed, NULL for nl_default_query_filter(). [in] start,
+ *  target: 3 floats each; start must lie over start_polygon (within 1 mm, seen from above).
+ *  [out] out_point: its point (at the surface height), polygon and distance to `target` (found is 1).
+ *  [out] out_polygons: caller-owned, `capacity` entries, or NULL with capacity 0: the polygons
+ *  visited on the way from the start polygon to the result's; `*out_count` (optional) receives how
+ *  many it visited, also when fewer fit. Returns SUCCESS, BUFFER_TOO_SMALL (the point is written and
+ *  the first `capacity` polygons), or a failure with INVALID_HANDLE, INVALID_ARGUMENT (null pointer, a point
+ *  not finite or beyond NL_COORDINATE_LIMIT, start_polygon out of range or start not over it, a
+ *  filter as nl_navmesh_can_reach refuses). Thread-safe. */
 NL_API nl_status nl_navmesh_move_along_surface(const nl_world* world, nl_navmesh_id navmesh,
                                                const nl_query_filter* filter, uint32_t start_polygon,
                                                const float* start, const float* target, nl_nav_point* out_point,
