@@ -396,8 +396,19 @@ class QueryFilterDef(Structure):
                 ("area_cost_count", c_uint32), ("reserved", c_uint32)]
 
 
+class NavmeshRay(Structure):
+    """nl_navmesh_ray: one straight walk for World.raycast_batch: `start` over `start_polygon` (from
+    find_nearest), towards `end`. NavmeshRay(start, start_polygon, end) takes any (x, y, z) sequences."""
+    _fields_ = [("start", Vec3), ("start_polygon", c_uint32), ("end", Vec3)]
+
+    def __init__(self, start: Sequence[float] = (0.0, 0.0, 0.0), start_polygon: int = 0,
+                 end: Sequence[float] = (0.0, 0.0, 0.0)) -> None:
+        super().__init__(Vec3(*_point(start, "start")), start_polygon, Vec3(*_point(end, "end")))
+
+
 class NavmeshRaycastHit(_Growable):
-    """nl_navmesh_raycast_hit: how far a straight walk along a navmesh went (World.raycast)."""
+    """nl_navmesh_raycast_hit: how far a straight walk along a navmesh went (World.raycast, World.raycast_batch);
+    an element of an output array that may grow (the first one's size set)."""
     _fields_ = [("size", c_uint32), ("hit", c_uint8), ("reserved", c_uint8 * 3), ("t", c_float), ("point", Vec3),
                 ("wall_normal", Vec3), ("end_polygon", c_uint32), ("polygon_count", c_uint32)]
 
@@ -525,7 +536,7 @@ C_STRUCTS = {
     "nl_navmesh_load_def": NavmeshLoadDef, "nl_navmesh_file_info": NavmeshFileInfo, "nl_path_ticket": PathTicket,
     "nl_agent_capabilities": AgentCapabilities, "nl_path_request_def": PathRequestDef, "nl_path_point": PathPoint,
     "nl_path_result": PathResultInfo, "nl_path_budget": PathBudget, "nl_path_finished": PathFinished,
-    "nl_path_queue_stats": PathQueueStats, "nl_query_filter": QueryFilterDef,
+    "nl_path_queue_stats": PathQueueStats, "nl_query_filter": QueryFilterDef, "nl_navmesh_ray": NavmeshRay,
     "nl_navmesh_raycast_hit": NavmeshRaycastHit, "nl_random_points_def": RandomPointsDef, "nl_agent_id": AgentId, "nl_agent_def": AgentDef,
     "nl_agent_info": AgentInfo, "nl_agent_trajectory": AgentTrajectory, "nl_agent_event": AgentEvent,
     "nl_plugin_id": PluginId,
@@ -620,8 +631,8 @@ _PROTOTYPES = {
     "nl_navmesh_get_reachable_polygons": (c_uint32, [_w, NavmeshId, POINTER(QueryFilterDef), c_uint32, _u32p, c_uint32,
                                                      _u32p]),
     "nl_navmesh_get_islands": (c_uint32, [_w, NavmeshId, POINTER(QueryFilterDef), _u32p, c_uint32, _u32p, _u32p]),
-    "nl_navmesh_raycast": (c_uint32, [_w, NavmeshId, POINTER(QueryFilterDef), c_uint32, POINTER(c_float),
-                                      POINTER(c_float), POINTER(NavmeshRaycastHit), _u32p, c_uint32, _u32p]),
+    "nl_navmesh_raycast": (c_uint32, [_w, NavmeshId, POINTER(QueryFilterDef), POINTER(NavmeshRay), c_uint32,
+                                      POINTER(NavmeshRaycastHit), _u32p, c_uint32]),
     "nl_navmesh_move_along_surface": (c_uint32, [_w, NavmeshId, POINTER(QueryFilterDef), c_uint32, POINTER(c_float),
                                                  POINTER(c_float), POINTER(NavPoint), _u32p, c_uint32, _u32p]),
     "nl_default_random_points_def": (RandomPointsDef, []),
@@ -1616,7 +1627,7 @@ class World:
 
     # --- queries on a navmesh for one body (filter None: QueryFilter(), a default walker) ---
 
-    _FIRST_WALK_CAPACITY = 32  # polygons fetched in one go by raycast and move_along_surface
+    _FIRST_WALK_CAPACITY = 32  # polygons fetched per walk in one go by the raycasts and move_along_surface
 
     def can_reach(self, navmesh: NavmeshId, from_polygons: IndexValues, to_polygons: IndexValues,
                   filter: Optional[QueryFilter] = None) -> List[bool]:
@@ -1649,32 +1660,77 @@ class World:
             self.pointer, navmesh, query_filter, b, c, n, byref(island_count)), c_uint32)
         return islands, island_count.value
 
+    def raycast_batch(self, navmesh: NavmeshId, rays: Sequence[Union[NavmeshRay, Tuple[Point, int, Point]]],
+                      filter: Optional[QueryFilter] = None) -> List[NavmeshRaycastHit]:
+        """Walks each ray (a NavmeshRay, or a (start, start_polygon, end) tuple) in a straight line (seen from
+        above) from its start, over its start_polygon, towards its end along the navmesh surface, as Detour's
+        raycast: how far a body walks before a wall (the navmesh's outline, or an area the filter excludes)
+        stops it. Returns one hit per ray (its polygon_count counts the polygons crossed). The navmesh is
+        looked up once and large batches run over the world's workers; a ray the library refuses (its start
+        not over its polygon...) fails the whole batch, naming its index."""
+        items = self._navmesh_rays(rays)
+        return list(self._raycast_c(navmesh, filter, items, None, 0))
+
+    def raycast_batch_with_polygons(self, navmesh: NavmeshId,
+                                    rays: Sequence[Union[NavmeshRay, Tuple[Point, int, Point]]],
+                                    filter: Optional[QueryFilter] = None) -> List[Tuple[NavmeshRaycastHit, List[int]]]:
+        """raycast_batch with the polygons each ray crossed: (hit, [its start polygon, ..., hit.end_polygon])
+        per ray. Room for 32 per ray is asked first; the rays that crossed more are walked again, together,
+        with room for the most any of them crossed."""
+        items = self._navmesh_rays(rays)
+        room = self._FIRST_WALK_CAPACITY
+        buffer = (c_uint32 * (len(items) * room))()
+        walks = [[hit, []] for hit in self._raycast_c(navmesh, filter, items, buffer, room)]
+        longer = []
+        for i, walk in enumerate(walks):
+            if walk[0].polygon_count > room:
+                longer.append(i)
+            else:
+                walk[1] = list(buffer[i * room:i * room + walk[0].polygon_count])
+        while longer:
+            # The hits say how many: walk those rays again with room for the most of them.
+            again = (NavmeshRay * len(longer))(*[items[i] for i in longer])
+            room = max(walks[i][0].polygon_count for i in longer)
+            buffer = (c_uint32 * (len(longer) * room))()
+            still = []
+            for k, hit in enumerate(self._raycast_c(navmesh, filter, again, buffer, room)):
+                i = longer[k]
+                walks[i][0] = hit
+                if hit.polygon_count > room:
+                    still.append(i)  # cannot happen on a navmesh that never changes; asked again all the same
+                else:
+                    walks[i][1] = list(buffer[k * room:k * room + hit.polygon_count])
+            longer = still
+        return [(hit, polygons) for hit, polygons in walks]
+
     def raycast(self, navmesh: NavmeshId, start_polygon: int, start: Point, end: Point,
                 filter: Optional[QueryFilter] = None) -> Tuple[NavmeshRaycastHit, List[int]]:
         """Walks in a straight line (seen from above) from start, over start_polygon (from find_nearest), towards
         end along the navmesh surface, as Detour's raycast: how far a body walks before a wall (the navmesh's
         outline, or an area the filter excludes) stops it. Returns the hit and the polygons crossed (the start
-        polygon first, hit.end_polygon last)."""
+        polygon first, hit.end_polygon last). A batch of one ray (raycast_batch_with_polygons): room for 32
+        polygons, and a second walk with room for hit.polygon_count when it crossed more."""
+        return self.raycast_batch_with_polygons(navmesh, [NavmeshRay(start, start_polygon, end)], filter)[0]
+
+    @staticmethod
+    def _navmesh_rays(rays: Sequence[Union[NavmeshRay, Tuple[Point, int, Point]]]) -> Any:
+        return (NavmeshRay * len(rays))(*[r if isinstance(r, NavmeshRay) else NavmeshRay(*r) for r in rays])
+
+    def _raycast_c(self, navmesh: NavmeshId, filter: Optional[QueryFilter], rays: Any, polygons: Any,
+                   per_ray: int) -> Any:
+        """nl_navmesh_raycast: the hits (a ctypes array), ray i's first per_ray polygons in polygons[i * per_ray:]."""
         query_filter, keep = _filter_def(filter)
-        origin, target = _point(start, "start"), _point(end, "end")
-        polygons = (c_uint32 * self._FIRST_WALK_CAPACITY)()
-        while True:
-            hit = NavmeshRaycastHit()
-            count = c_uint32()
-            status = lib.nl_navmesh_raycast(self.pointer, navmesh, query_filter, start_polygon, origin, target,
-                                            byref(hit), polygons, len(polygons), byref(count))
-            if _buffer_too_small(status) and hit.polygon_count > len(polygons):
-                polygons = (c_uint32 * hit.polygon_count)()  # the hit says how many: walk again with room
-                continue
-            _check(status)
-            return hit, list(polygons[:count.value])
+        hits = _growable_array(NavmeshRaycastHit, len(rays))
+        _check(lib.nl_navmesh_raycast(self.pointer, navmesh, query_filter, rays, len(rays), hits, polygons, per_ray))
+        return hits
 
     def move_along_surface(self, navmesh: NavmeshId, start_polygon: int, start: Point, target: Point,
                            filter: Optional[QueryFilter] = None) -> Tuple[NavPoint, List[int]]:
         """Slides a point from start (over start_polygon) towards target along the navmesh, as Detour's
         moveAlongSurface: target when the straight way there stays on the navmesh, else the point of the walls
         met nearest to it. Returns that NavPoint (at the surface height, its polygon, found = 1, distance short
-        of target) and the polygons visited from the start's to its."""
+        of target) and the polygons visited from the start's to its (room for 32 first; when more were
+        visited, the call says how many and is made again with that room)."""
         query_filter, keep = _filter_def(filter)
         origin, goal = _point(start, "start"), _point(target, "target")
         visited = (c_uint32 * self._FIRST_WALK_CAPACITY)()
@@ -1683,11 +1739,8 @@ class World:
             count = c_uint32()
             status = lib.nl_navmesh_move_along_surface(self.pointer, navmesh, query_filter, start_polygon, origin,
                                                        goal, byref(moved), visited, len(visited), byref(count))
-            if _buffer_too_small(status):
-                # The call does not say how many it visited, only that they did not fit; a slide visits each
-                # polygon at most once, so the navmesh's polygon count is room enough.
-                room = max(2 * len(visited), self.navmesh_info(navmesh).polygon_count)
-                visited = (c_uint32 * room)()
+            if _buffer_too_small(status) and count.value > len(visited):
+                visited = (c_uint32 * count.value)()  # count is how many it visited: slide again with that room
                 continue
             _check(status)
             return moved, list(visited[:count.value])

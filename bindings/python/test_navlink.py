@@ -691,8 +691,9 @@ class QueryTest(NavLinkTestCase):
         hit, crossed = w.raycast(navmesh, 0, self.START, (1.5, 0, 0.5), filter=nl.QueryFilter())
         self.assertEqual((hit.hit, hit.t, list(hit.wall_normal), hit.end_polygon, crossed), (0, 1.0, [0, 0, 0], 1, [0, 1]))
         self.assertNear(hit.point, (1.5, 0, 0.5), "arrives")
-        self.assertFails(nl.STATUS_INVALID_ARGUMENT, "start is not over start_polygon 2", w.raycast, navmesh, 2,
-                         self.START, (1, 0, 1))
+        # The single ray is a batch of one: the library names it rays[0].
+        self.assertFails(nl.STATUS_INVALID_ARGUMENT, "rays[0].start is not over rays[0].start_polygon 2", w.raycast,
+                         navmesh, 2, self.START, (1, 0, 1))
 
         moved, visited = w.move_along_surface(navmesh, 0, self.START, (2.5, 0, 0.5))
         self.assertEqual((moved.found, moved.polygon), (1, 1))
@@ -702,6 +703,55 @@ class QueryTest(NavLinkTestCase):
         moved, _ = w.move_along_surface(navmesh, 0, self.START, (1.5, 0, 0.5), self.walker)
         self.assertEqual((moved.polygon, moved.distance), (1, 0.0))
         self.assertNear(moved.point, (1.5, 0, 0.5), "a clear slide arrives")
+
+    def assertBatchAsSingleCalls(self, navmesh, rays, filter=None):
+        """Each ray of a batch against the same ray alone, with and without polygons; the batch's walks."""
+        walks = self.world.raycast_batch_with_polygons(navmesh, rays, filter)
+        hits = self.world.raycast_batch(navmesh, rays, filter)
+        self.assertEqual((len(walks), len(hits)), (len(rays), len(rays)), "one answer per ray")
+        for i, ray in enumerate(rays):
+            ray = ray if isinstance(ray, nl.NavmeshRay) else nl.NavmeshRay(*ray)
+            hit, polygons = self.world.raycast(navmesh, ray.start_polygon, ray.start, ray.end, filter)
+            self.assertEqual((bytes(walks[i][0]), walks[i][1]), (bytes(hit), polygons), "ray %d in a batch as alone" % i)
+            self.assertEqual(bytes(hits[i]), bytes(hit), "ray %d without polygons" % i)
+            self.assertEqual(hit.polygon_count, len(polygons), "ray %d: polygon_count counts the list" % i)
+        return walks
+
+    def test_a_batch_of_rays_answers_as_single_calls(self):
+        w, navmesh = self.world, self.navmesh
+        rays = [nl.NavmeshRay(self.START, 0, (4.5, 0, 0.5)),      # into the missing cell
+                (self.START, 0, (1.5, 0, 0.5)),                    # arrives (a tuple in the struct's order)
+                nl.NavmeshRay((3.5, 0, 0.5), 2, (0.5, 0, 0.5)),    # west into the gap
+                nl.NavmeshRay((6.5, 0, 0.25), 4, (7.5, 0, 0.75)),  # across the last island
+                nl.NavmeshRay((1.5, 0, 0.5), 1, (1.5, 0, 3))]      # out through the side
+        walks = self.assertBatchAsSingleCalls(navmesh, rays, self.jumper)
+        self.assertEqual((walks[0][0].hit, walks[0][1], walks[1][0].hit), (1, [0, 1], 0))
+        self.assertNear(walks[0][0].point, (2, 0, 0.5), "at the wall")
+        self.assertEqual((walks[2][0].hit, walks[2][1]), (1, [2]))
+        self.assertNear(walks[2][0].point, (3, 0, 0.5), "at the gap's east wall")
+        self.assertNear(walks[2][0].wall_normal, (1, 0, 0), "facing back east")
+        self.assertEqual((walks[3][0].hit, walks[3][0].end_polygon, walks[3][1]), (0, 5, [4, 5]))
+        self.assertEqual(walks[4][0].hit, 1)
+        self.assertNear(walks[4][0].point, (1.5, 0, 1), "at the side")
+        self.assertNear(walks[4][0].wall_normal, (0, 0, -1), "facing back in")
+        self.assertEqual((w.raycast_batch(navmesh, []), w.raycast_batch_with_polygons(navmesh, [])), ([], []))
+
+        refused = [nl.NavmeshRay.from_buffer_copy(r if isinstance(r, nl.NavmeshRay) else nl.NavmeshRay(*r)) for r in rays]
+        refused[3].start_polygon = 2
+        self.assertFails(nl.STATUS_INVALID_ARGUMENT, "rays[3].start is not over rays[3].start_polygon 2",
+                         w.raycast_batch, navmesh, refused)
+        # Raw: a refused batch writes nothing; a batch's polygons go to i * polygons_per_ray.
+        raw_rays = (nl.NavmeshRay * 5)(*refused)
+        hits = (nl.NavmeshRaycastHit * 5)(*[nl.NavmeshRaycastHit() for _ in range(5)])
+        polygons = (ctypes.c_uint32 * 20)(*[7] * 20)
+        status = nl.lib.nl_navmesh_raycast(w.pointer, navmesh, None, raw_rays, 5, hits, polygons, 4)
+        self.assertTrue(nl.failed(status) and status & nl.STATUS_INVALID_ARGUMENT)
+        self.assertEqual([bytes(h) for h in hits], [bytes(nl.NavmeshRaycastHit())] * 5, "no hit written")
+        self.assertEqual(list(polygons), [7] * 20, "no polygon written")
+        raw_rays[3].start_polygon = 4
+        self.assertEqual(nl.lib.nl_navmesh_raycast(w.pointer, navmesh, None, raw_rays, 5, hits, polygons, 4),
+                         nl.STATUS_SUCCESS)
+        self.assertEqual((hits[3].polygon_count, list(polygons[12:14])), (2, [4, 5]), "ray 3's polygons at 3 * 4")
 
     def test_random_points_are_on_the_navmesh_and_repeat_with_their_seed(self):
         w, navmesh = self.world, self.navmesh
@@ -738,6 +788,17 @@ class QueryTest(NavLinkTestCase):
         moved, visited = self.world.move_along_surface(row, 0, self.START, (39.5, 0, 0.5))
         self.assertEqual((moved.polygon, visited), (39, list(range(40))))
         self.assertNear(moved.point, (39.5, 0, 0.5), "arrives")
+
+        # A batch of long and short walks: those that crossed more than 32 are walked again, together.
+        rays = [nl.NavmeshRay(self.START, 0, (39.5, 0, 0.5)), nl.NavmeshRay(self.START, 0, (1.5, 0, 0.5)),
+                nl.NavmeshRay((39.5, 0, 0.5), 39, (2.5, 0, 0.5)), nl.NavmeshRay((10.5, 0, 0.5), 10, (45, 0, 0.5)),
+                nl.NavmeshRay((20.5, 0, 0.5), 20, (20.5, 0, 0.5))]
+        walks = self.assertBatchAsSingleCalls(row, rays)
+        self.assertEqual([hit.polygon_count for hit, _ in walks], [40, 2, 38, 30, 1])
+        self.assertEqual((walks[0][1], walks[2][1], walks[4][1]), (list(range(40)), list(range(39, 1, -1)), [20]),
+                         "all, backwards, and a ray of no length")
+        self.assertEqual((walks[3][0].hit, walks[4][0].t), (1, 1.0))
+        self.assertNear(walks[3][0].point, (40, 0, 0.5), "out of the row's end")
 
 
 def add_quad(world, x0, z0, x1, z1, y, winding, flags=0, area=0):

@@ -46,6 +46,12 @@ namespace NavLink.Tests
             return Math.Abs(a.X - x) < 1e-3f && Math.Abs(a.Y - y) < 1e-3f && Math.Abs(a.Z - z) < 1e-3f;
         }
 
+        private static bool SameHit(NavmeshRaycastHit a, NavmeshRaycastHit b)
+        {
+            return a.Hit == b.Hit && a.T == b.T && a.Point.Equals(b.Point) && a.WallNormal.Equals(b.WallNormal) &&
+                   a.EndPolygon == b.EndPolygon && a.PolygonCount == b.PolygonCount;
+        }
+
         public static void Run(Checks check)
         {
             check.Run("queries for one body: reachability, raycast, slide, random points", () =>
@@ -97,8 +103,49 @@ namespace NavLink.Tests
                     hit = world.Raycast(navmesh, 0, Start, new Vec3(1.5f, 0, 0.5f));
                     check.That(hit.Hit == 0 && hit.T == 1 && Near(hit.Point, 1.5f, 0, 0.5f) && Near(hit.WallNormal, 0, 0, 0) &&
                                hit.EndPolygon == 1 && hit.PolygonCount == 2, "a raycast within the island arrives");
-                    check.Throws(StatusCode.InvalidArgument, "start is not over start_polygon 2",
+                    // The single ray is a batch of one: the library names it rays[0].
+                    check.Throws(StatusCode.InvalidArgument, "rays[0].start is not over rays[0].start_polygon 2",
                                  () => world.Raycast(navmesh, 2, Start, new Vec3(1, 0, 1)), "a start off its polygon");
+
+                    // A batch of rays gives each the answer a single call gives it.
+                    var rays = new[]
+                    {
+                        new NavmeshRay(Start, 0, new Vec3(4.5f, 0, 0.5f)),           // into the missing cell
+                        new NavmeshRay(Start, 0, new Vec3(1.5f, 0, 0.5f)),           // arrives
+                        new NavmeshRay(new Vec3(3.5f, 0, 0.5f), 2, new Vec3(0.5f, 0, 0.5f)),  // west into the gap
+                        new NavmeshRay(new Vec3(6.5f, 0, 0.25f), 4, new Vec3(7.5f, 0, 0.75f)),  // across the last island
+                        new NavmeshRay(new Vec3(1.5f, 0, 0.5f), 1, new Vec3(1.5f, 0, 3)),  // out through the side
+                    };
+                    uint[][] batchCrossed;
+                    NavmeshRaycastHit[] hits = world.Raycast(navmesh, rays, out batchCrossed, jumper);
+                    NavmeshRaycastHit[] bare = world.Raycast(navmesh, rays, jumper);
+                    check.That(hits.Length == 5 && batchCrossed.Length == 5 && bare.Length == 5, "one hit and one list per ray");
+                    for (int i = 0; i < rays.Length; ++i)
+                    {
+                        uint[] single;
+                        NavmeshRaycastHit one = world.Raycast(navmesh, rays[i].StartPolygon, rays[i].Start, rays[i].End, out single, jumper);
+                        check.That(SameHit(hits[i], one) && SameHit(bare[i], one) && batchCrossed[i].SequenceEqual(single) &&
+                                   one.PolygonCount == single.Length,
+                                   "ray " + i + " in a batch as alone: t " + hits[i].T + " / " + one.T + ", polygons " +
+                                   string.Join(",", batchCrossed[i]) + " / " + string.Join(",", single));
+                    }
+                    check.That(hits[0].Hit == 1 && Near(hits[0].Point, 2, 0, 0.5f) && hits[1].Hit == 0 &&
+                               hits[2].Hit == 1 && Near(hits[2].Point, 3, 0, 0.5f) && Near(hits[2].WallNormal, 1, 0, 0) &&
+                               batchCrossed[2].SequenceEqual(new uint[] {2}) && hits[3].Hit == 0 && hits[3].EndPolygon == 5 &&
+                               hits[4].Hit == 1 && Near(hits[4].Point, 1.5f, 0, 1) && Near(hits[4].WallNormal, 0, 0, -1),
+                               "the batch's own answers: " + hits[2].Point + ", " + hits[4].Point);
+                    var into = new NavmeshRaycastHit[6];
+                    world.Raycast(navmesh, rays, into, jumper);
+                    check.That(Enumerable.Range(0, 5).All(i => SameHit(into[i], hits[i])) && into[0].Size == hits[0].Size,
+                               "into a span of hits");
+                    check.That(world.Raycast(navmesh, new NavmeshRay[0], out batchCrossed).Length == 0 && batchCrossed.Length == 0,
+                               "an empty batch");
+                    rays[3].StartPolygon = 2;
+                    into = new NavmeshRaycastHit[5];
+                    check.Throws(StatusCode.InvalidArgument, "rays[3].start is not over rays[3].start_polygon 2",
+                                 () => world.Raycast(navmesh, rays, into), "a batch with one ray off its polygon is refused");
+                    check.That(into.All(h => h.T == 0 && h.PolygonCount == 0 && h.EndPolygon == 0),
+                               "a refused batch writes no hit (the binding set the first one's Size only)");
 
                     // Sliding along the surface: towards the missing cell, to the wall's point nearest the target.
                     uint[] visited;
@@ -156,6 +203,30 @@ namespace NavLink.Tests
                     NavPoint moved = world.MoveAlongSurface(row, 0, Start, new Vec3(39.5f, 0, 0.5f), out visited);
                     check.That(moved.Polygon == 39 && Near(moved.Point, 39.5f, 0, 0.5f) && visited.Length == 40 &&
                                visited[0] == 0 && visited[39] == 39, "a slide across 40 cells lists them all: " + visited.Length);
+
+                    // A batch of long and short walks: those that crossed more than 32 are walked again, together.
+                    var rays = new[]
+                    {
+                        new NavmeshRay(Start, 0, new Vec3(39.5f, 0, 0.5f)),
+                        new NavmeshRay(Start, 0, new Vec3(1.5f, 0, 0.5f)),
+                        new NavmeshRay(new Vec3(39.5f, 0, 0.5f), 39, new Vec3(2.5f, 0, 0.5f)),
+                        new NavmeshRay(new Vec3(10.5f, 0, 0.5f), 10, new Vec3(45, 0, 0.5f)),
+                        new NavmeshRay(new Vec3(20.5f, 0, 0.5f), 20, new Vec3(20.5f, 0, 0.5f)),
+                    };
+                    uint[][] lists;
+                    NavmeshRaycastHit[] hits = world.Raycast(row, rays, out lists);
+                    uint[] counts = hits.Select(h => h.PolygonCount).ToArray();
+                    check.That(counts.SequenceEqual(new uint[] {40, 2, 38, 30, 1}) && lists.Select(l => (uint)l.Length).SequenceEqual(counts),
+                               "each ray's polygons, the long ones too: " + string.Join(",", counts));
+                    check.That(lists[0].SequenceEqual(crossed) && lists[2].SequenceEqual(Enumerable.Range(2, 38).Reverse().Select(i => (uint)i)) &&
+                               hits[3].Hit == 1 && Near(hits[3].Point, 40, 0, 0.5f) && lists[4].SequenceEqual(new uint[] {20}) && hits[4].T == 1,
+                               "backwards, out of the row's end, and a ray of no length");
+                    for (int i = 0; i < rays.Length; ++i)
+                    {
+                        uint[] single;
+                        NavmeshRaycastHit one = world.Raycast(row, rays[i].StartPolygon, rays[i].Start, rays[i].End, out single);
+                        check.That(SameHit(hits[i], one) && lists[i].SequenceEqual(single), "long ray " + i + " in a batch as alone");
+                    }
                 }
             });
         }

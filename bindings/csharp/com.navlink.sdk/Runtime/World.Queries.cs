@@ -7,9 +7,9 @@ namespace NavLink
     // points. Polygons come from FindNearest; a null filter is new QueryFilter() (a default walker).
     public sealed partial class World
     {
-        // Polygons fetched in one go by Raycast and MoveAlongSurface when a walk crosses no more; longer walks
-        // take a second call.
-        private const int FirstWalkCapacity = 32;
+        // Polygons fetched per walk in one go by Raycast and MoveAlongSurface when a walk crosses no more;
+        // longer walks take a second call with room for them all.
+        private const uint FirstWalkCapacity = 32;
 
         /// <summary>Whether the filter's body can get from polygon fromPolygons[i] to toPolygons[i] by walking and
         /// by the links it can take, exactly as a path request for it would find; one answer per pair. Each
@@ -95,59 +95,132 @@ namespace NavLink
             return GetIslands(navmesh, out islandCount, filter);
         }
 
+        /// <summary>Walks each ray in a straight line (seen from above) from its Start, over its StartPolygon (from
+        /// FindNearest), towards its End along the navmesh surface, as Detour's raycast: how far a body walks
+        /// before a wall (the navmesh's outline, or an area the filter excludes) stops it. One hit per ray into
+        /// hits (their contents are overwritten, Size included); the navmesh is looked up once and large batches
+        /// run over the world's workers. A ray the library refuses (its start not over its polygon...) fails the
+        /// whole batch, naming its index, and nothing is written.</summary>
+        public unsafe void Raycast(NavmeshId navmesh, ReadOnlySpan<NavmeshRay> rays, Span<NavmeshRaycastHit> hits,
+                                   QueryFilter filter = null)
+        {
+            if (hits.Length < rays.Length) throw new ArgumentException("one hit per ray", "hits");
+            if (rays.Length > 0) hits[0] = Native.nl_navmesh_raycast_hit_init();  // the element size the library writes with
+            fixed (NavmeshRay* r = &MemoryMarshal.GetReference(rays))
+            fixed (NavmeshRaycastHit* h = &MemoryMarshal.GetReference(hits))
+                Status.Check(RaycastBatch(navmesh, filter, r, (uint)rays.Length, h, null, 0));
+        }
+
+        /// <summary>Raycast of every ray into a new array of hits (the hits' PolygonCount counts the polygons
+        /// each crossed).</summary>
+        public NavmeshRaycastHit[] Raycast(NavmeshId navmesh, ReadOnlySpan<NavmeshRay> rays, QueryFilter filter = null)
+        {
+            var hits = new NavmeshRaycastHit[rays.Length];
+            Raycast(navmesh, rays, hits, filter);
+            return hits;
+        }
+
+        /// <summary>Raycast of every ray, with the polygons each crossed: polygons[i] for rays[i], its start
+        /// polygon first and its hit's EndPolygon last. Room for 32 per ray is asked first; the rays that
+        /// crossed more are walked again, together, with room for the most any of them crossed.</summary>
+        public unsafe NavmeshRaycastHit[] Raycast(NavmeshId navmesh, ReadOnlySpan<NavmeshRay> rays, out uint[][] polygons,
+                                                  QueryFilter filter = null)
+        {
+            int count = rays.Length;
+            var hits = new NavmeshRaycastHit[count];
+            polygons = new uint[count][];
+            if (count == 0) return hits;
+            var buffer = new uint[count * FirstWalkCapacity];
+            hits[0] = Native.nl_navmesh_raycast_hit_init();
+            fixed (NavmeshRay* r = &MemoryMarshal.GetReference(rays))
+            fixed (NavmeshRaycastHit* h = hits)
+            fixed (uint* p = buffer)
+                Status.Check(RaycastBatch(navmesh, filter, r, (uint)count, h, p, FirstWalkCapacity));
+            var longer = new System.Collections.Generic.List<int>();
+            for (int i = 0; i < count; ++i)
+            {
+                if (hits[i].PolygonCount > FirstWalkCapacity)
+                {
+                    longer.Add(i);
+                    continue;
+                }
+                polygons[i] = new uint[hits[i].PolygonCount];
+                Array.Copy(buffer, i * FirstWalkCapacity, polygons[i], 0, polygons[i].Length);
+            }
+            while (longer.Count > 0)
+            {
+                // The hits say how many: walk those rays again with room for the most of them.
+                var again = new NavmeshRay[longer.Count];
+                uint room = 0;
+                for (int k = 0; k < longer.Count; ++k)
+                {
+                    again[k] = rays[longer[k]];
+                    room = Math.Max(room, hits[longer[k]].PolygonCount);
+                }
+                var againHits = new NavmeshRaycastHit[again.Length];
+                againHits[0] = Native.nl_navmesh_raycast_hit_init();
+                buffer = new uint[(long)again.Length * room];
+                fixed (NavmeshRay* r = again)
+                fixed (NavmeshRaycastHit* h = againHits)
+                fixed (uint* p = buffer)
+                    Status.Check(RaycastBatch(navmesh, filter, r, (uint)again.Length, h, p, room));
+                var still = new System.Collections.Generic.List<int>();
+                for (int k = 0; k < longer.Count; ++k)
+                {
+                    int i = longer[k];
+                    hits[i] = againHits[k];
+                    if (againHits[k].PolygonCount > room)
+                    {
+                        still.Add(i);  // cannot happen on a navmesh that never changes; asked again all the same
+                        continue;
+                    }
+                    polygons[i] = new uint[againHits[k].PolygonCount];
+                    Array.Copy(buffer, (long)k * room, polygons[i], 0, polygons[i].Length);
+                }
+                longer = still;
+            }
+            return hits;
+        }
+
         /// <summary>Walks in a straight line (seen from above) from start, over startPolygon (from FindNearest),
         /// towards end along the navmesh surface, as Detour's raycast: how far a body walks before a wall (the
         /// navmesh's outline, or an area the filter excludes) stops it. polygons: those crossed, the start
-        /// polygon first and the hit's EndPolygon last.</summary>
-        public unsafe NavmeshRaycastHit Raycast(NavmeshId navmesh, uint startPolygon, Vec3 start, Vec3 end,
-                                                out uint[] polygons, QueryFilter filter = null)
+        /// polygon first and the hit's EndPolygon last. A batch of one ray, with room for 32 polygons, walked
+        /// again with room for the hit's PolygonCount when it crossed more.</summary>
+        public NavmeshRaycastHit Raycast(NavmeshId navmesh, uint startPolygon, Vec3 start, Vec3 end,
+                                         out uint[] polygons, QueryFilter filter = null)
         {
-            var buffer = new uint[FirstWalkCapacity];
-            float[] costs = filter == null ? null : filter.AreaCosts;
-            fixed (float* c = costs)
-            using (var w = Enter())
-            {
-                QueryFilterDef def = filter == null ? default(QueryFilterDef) : filter.ToDef(c);
-                while (true)
-                {
-                    NavmeshRaycastHit hit = Native.nl_navmesh_raycast_hit_init();
-                    uint count;
-                    StatusCode status;
-                    fixed (uint* p = buffer)
-                        status = Native.nl_navmesh_raycast(w.Pointer, navmesh, filter == null ? null : &def, startPolygon,
-                                                           (float*)&start, (float*)&end, &hit, p, (uint)buffer.Length, &count);
-                    if (Status.IsBufferTooSmall(status) && hit.PolygonCount > buffer.Length)
-                    {
-                        buffer = new uint[hit.PolygonCount];  // the hit says how many: walk again with room
-                        continue;
-                    }
-                    Status.Check(status);
-                    Array.Resize(ref buffer, (int)count);
-                    polygons = buffer;
-                    return hit;
-                }
-            }
+            uint[][] crossed;
+            NavmeshRaycastHit hit = Raycast(navmesh, new[] {new NavmeshRay(start, startPolygon, end)}, out crossed, filter)[0];
+            polygons = crossed[0];
+            return hit;
         }
 
         /// <summary>Raycast without the polygons crossed (the hit's PolygonCount still counts them).</summary>
-        public unsafe NavmeshRaycastHit Raycast(NavmeshId navmesh, uint startPolygon, Vec3 start, Vec3 end, QueryFilter filter = null)
+        public NavmeshRaycastHit Raycast(NavmeshId navmesh, uint startPolygon, Vec3 start, Vec3 end, QueryFilter filter = null)
         {
-            NavmeshRaycastHit hit = Native.nl_navmesh_raycast_hit_init();
+            return Raycast(navmesh, new[] {new NavmeshRay(start, startPolygon, end)}, filter)[0];
+        }
+
+        // nl_navmesh_raycast with the filter laid out for the call.
+        private unsafe StatusCode RaycastBatch(NavmeshId navmesh, QueryFilter filter, NavmeshRay* rays, uint count,
+                                               NavmeshRaycastHit* hits, uint* polygons, uint polygonsPerRay)
+        {
             float[] costs = filter == null ? null : filter.AreaCosts;
             fixed (float* c = costs)
             using (var w = Enter())
             {
                 QueryFilterDef def = filter == null ? default(QueryFilterDef) : filter.ToDef(c);
-                Status.Check(Native.nl_navmesh_raycast(w.Pointer, navmesh, filter == null ? null : &def, startPolygon,
-                                                       (float*)&start, (float*)&end, &hit, null, 0, null));
+                return Native.nl_navmesh_raycast(w.Pointer, navmesh, filter == null ? null : &def, rays, count, hits,
+                                                 polygons, polygonsPerRay);
             }
-            return hit;
         }
 
         /// <summary>Slides a point from start (over startPolygon) towards target along the navmesh, as Detour's
         /// moveAlongSurface: target when the straight way there stays on the navmesh, else the point of the walls
         /// met nearest to it. The result's Point is at the surface height, Polygon holds it, Distance is how far
-        /// short of target it stopped. visited: the polygons from the start's to the result's.</summary>
+        /// short of target it stopped. visited: the polygons from the start's to the result's (room for 32 first;
+        /// when more were visited, the call says how many and is made again with that room).</summary>
         public unsafe NavPoint MoveAlongSurface(NavmeshId navmesh, uint startPolygon, Vec3 start, Vec3 target,
                                                 out uint[] visited, QueryFilter filter = null)
         {
@@ -166,13 +239,9 @@ namespace NavLink
                         status = Native.nl_navmesh_move_along_surface(w.Pointer, navmesh, filter == null ? null : &def,
                                                                       startPolygon, (float*)&start, (float*)&target, &moved,
                                                                       p, (uint)buffer.Length, &count);
-                    if (Status.IsBufferTooSmall(status))
+                    if (Status.IsBufferTooSmall(status) && count > buffer.Length)
                     {
-                        // The call does not say how many it visited, only that they did not fit; a slide visits
-                        // each polygon at most once, so the navmesh's polygon count is room enough.
-                        NavmeshInfo info = Native.nl_navmesh_info_init();
-                        Status.Check(Native.nl_navmesh_get_info(w.Pointer, navmesh, &info));
-                        buffer = new uint[Math.Max(2 * buffer.Length, (int)info.PolygonCount)];
+                        buffer = new uint[count];  // out_count is how many it visited: slide again with that room
                         continue;
                     }
                     Status.Check(status);

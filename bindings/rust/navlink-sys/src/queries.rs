@@ -21,7 +21,20 @@ pub struct nl_query_filter {
 /// An island with no number: a polygon in an area the filter excludes.
 pub const NL_NO_ISLAND: u32 = 0xffff_ffff;
 
-/// How far a straight walk along a navmesh went (`nl_navmesh_raycast`).
+/// One straight walk for `nl_navmesh_raycast`.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct nl_navmesh_ray {
+    /// Over `start_polygon` (within 1 mm, seen from above).
+    pub start: [f32; 3],
+    /// The polygon under `start`, from `nl_navmesh_find_nearest`.
+    pub start_polygon: u32,
+    /// Anywhere: the walk heads for it, seen from above.
+    pub end: [f32; 3],
+}
+
+/// How far a straight walk along a navmesh went (`nl_navmesh_raycast`). An array element that may grow:
+/// set `size` of the first element of the output array (`nl_navmesh_raycast_hit_init`).
 #[repr(C)]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct nl_navmesh_raycast_hit {
@@ -31,13 +44,14 @@ pub struct nl_navmesh_raycast_hit {
     pub reserved: [u8; 3],
     /// The fraction of start -> end walked (seen from above): 1 if it arrived.
     pub t: f32,
-    /// Where it stopped (or `end`), on the navmesh surface.
+    /// Where it stopped (or `end`), at the navmesh surface's height.
     pub point: [f32; 3],
     /// The wall's normal, horizontal and pointing back the way the walk came from; zero if it arrived.
     pub wall_normal: [f32; 3],
     /// The polygon holding `point`.
     pub end_polygon: u32,
-    /// Polygons crossed, the start polygon first and `end_polygon` last.
+    /// Polygons crossed, the start polygon first and `end_polygon` last (all of them, also when
+    /// `out_polygons` had room for fewer).
     pub polygon_count: u32,
 }
 
@@ -93,18 +107,22 @@ extern "C" {
         out_count: *mut u32,
         out_island_count: *mut u32,
     ) -> nl_status;
+    /// `rays`: `count`; `out_hits`: `count`, `out_hits[0].size` set. `out_polygons`: null with
+    /// `polygons_per_ray` 0, or `count * polygons_per_ray`: ray i's crossed polygons from
+    /// `out_polygons[i * polygons_per_ray]`, at most `polygons_per_ray` of them (its hit's `polygon_count`
+    /// is how many it crossed). A refused batch writes nothing.
     pub fn nl_navmesh_raycast(
         world: *const nl_world,
         navmesh: nl_navmesh_id,
         filter: *const nl_query_filter,
-        start_polygon: u32,
-        start: *const f32,
-        end: *const f32,
-        out_hit: *mut nl_navmesh_raycast_hit,
+        rays: *const nl_navmesh_ray,
+        count: u32,
+        out_hits: *mut nl_navmesh_raycast_hit,
         out_polygons: *mut u32,
-        capacity: u32,
-        out_count: *mut u32,
+        polygons_per_ray: u32,
     ) -> nl_status;
+    /// `*out_count` (optional) receives how many polygons it visited, also when fewer fit
+    /// (`BUFFER_TOO_SMALL`: the point and the first `capacity` polygons are written).
     pub fn nl_navmesh_move_along_surface(
         world: *const nl_world,
         navmesh: nl_navmesh_id,

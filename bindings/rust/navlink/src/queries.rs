@@ -3,13 +3,13 @@
 //! random points. Polygons come from `find_nearest`.
 use crate::error::{check, Error, Result};
 use crate::list::two_call;
-use crate::types::{AgentCapabilities, NavPoint, NavmeshId, NavmeshRaycastHit};
+use crate::types::{AgentCapabilities, NavPoint, NavmeshId, NavmeshRay, NavmeshRaycastHit};
 use crate::world::World;
 use navlink_sys as sys;
 use std::ptr;
 
-/// Polygons fetched in one go by `raycast` and `move_along_surface` when a walk crosses no more; longer
-/// walks take a second call.
+/// Polygons fetched per walk in one go by the raycasts and `move_along_surface` when a walk crosses no more;
+/// longer walks take a second call with room for them all.
 const FIRST_WALK_CAPACITY: usize = 32;
 
 /// The body a query is for (`nl_query_filter`), as a [`PathQuery`](crate::PathQuery) describes it: its
@@ -134,10 +134,66 @@ impl World {
         Ok((islands, island_count))
     }
 
+    /// Walks each ray in a straight line (seen from above) from its `start`, over its `start_polygon`, towards
+    /// its `end` along the navmesh surface, as Detour's raycast: how far a body walks before a wall (the
+    /// navmesh's outline, or an area the filter excludes) stops it. One hit per ray (its `polygon_count`
+    /// counts the polygons crossed); the navmesh is looked up once and large batches run over the world's
+    /// workers. A ray the library refuses (its start not over its polygon...) fails the whole batch, naming
+    /// its index.
+    pub fn raycast_batch(&self, navmesh: NavmeshId, filter: &QueryFilter, rays: &[NavmeshRay]) -> Result<Vec<NavmeshRaycastHit>> {
+        let hits = self.raycast_c(navmesh, &filter.to_c(), rays, &mut [], 0)?;
+        Ok(hits.into_iter().map(NavmeshRaycastHit::from).collect())
+    }
+
+    /// `raycast_batch` with the polygons each ray crossed (its start polygon first, the hit's `end_polygon`
+    /// last). Room for 32 per ray is asked first; the rays that crossed more are walked again, together,
+    /// with room for the most any of them crossed.
+    pub fn raycast_batch_with_polygons(
+        &self,
+        navmesh: NavmeshId,
+        filter: &QueryFilter,
+        rays: &[NavmeshRay],
+    ) -> Result<Vec<(NavmeshRaycastHit, Vec<u32>)>> {
+        let c = filter.to_c();
+        let mut buffer = vec![0u32; rays.len() * FIRST_WALK_CAPACITY];
+        let hits = self.raycast_c(navmesh, &c, rays, &mut buffer, FIRST_WALK_CAPACITY)?;
+        let mut walks: Vec<(sys::nl_navmesh_raycast_hit, Vec<u32>)> = Vec::with_capacity(rays.len());
+        let mut longer: Vec<usize> = Vec::new();
+        for (i, hit) in hits.into_iter().enumerate() {
+            let count = hit.polygon_count as usize;
+            if count > FIRST_WALK_CAPACITY {
+                longer.push(i);
+                walks.push((hit, Vec::new()));
+            } else {
+                walks.push((hit, buffer[i * FIRST_WALK_CAPACITY..i * FIRST_WALK_CAPACITY + count].to_vec()));
+            }
+        }
+        while !longer.is_empty() {
+            // The hits say how many: walk those rays again with room for the most of them.
+            let again: Vec<NavmeshRay> = longer.iter().map(|&i| rays[i]).collect();
+            let room = longer.iter().map(|&i| walks[i].0.polygon_count as usize).max().unwrap_or(0);
+            let mut buffer = vec![0u32; again.len() * room];
+            let hits = self.raycast_c(navmesh, &c, &again, &mut buffer, room)?;
+            let mut still = Vec::new();
+            for (k, hit) in hits.into_iter().enumerate() {
+                let (i, count) = (longer[k], hit.polygon_count as usize);
+                walks[i].0 = hit;
+                if count > room {
+                    still.push(i); // cannot happen on a navmesh that never changes; asked again all the same
+                } else {
+                    walks[i].1 = buffer[k * room..k * room + count].to_vec();
+                }
+            }
+            longer = still;
+        }
+        Ok(walks.into_iter().map(|(hit, polygons)| (hit.into(), polygons)).collect())
+    }
+
     /// Walks in a straight line (seen from above) from `start`, over `start_polygon`, towards `end` along
     /// the navmesh surface, as Detour's raycast: how far a body walks before a wall (the navmesh's outline,
     /// or an area the filter excludes) stops it, and the polygons crossed (the start polygon first, the
-    /// hit's `end_polygon` last).
+    /// hit's `end_polygon` last). A batch of one ray (`raycast_batch_with_polygons`): room for 32 polygons,
+    /// and a second walk with room for the hit's `polygon_count` when it crossed more.
     pub fn raycast(
         &self,
         navmesh: NavmeshId,
@@ -146,40 +202,39 @@ impl World {
         start: [f32; 3],
         end: [f32; 3],
     ) -> Result<(NavmeshRaycastHit, Vec<u32>)> {
-        let c = filter.to_c();
-        let mut polygons = vec![0u32; FIRST_WALK_CAPACITY];
-        loop {
-            let mut hit = sys::nl_navmesh_raycast_hit_init();
-            let mut count = 0u32;
-            let status = unsafe {
-                sys::nl_navmesh_raycast(
-                    self.raw(),
-                    navmesh,
-                    &c,
-                    start_polygon,
-                    start.as_ptr(),
-                    end.as_ptr(),
-                    &mut hit,
-                    polygons.as_mut_ptr(),
-                    polygons.len() as u32,
-                    &mut count,
-                )
-            };
-            if buffer_too_small(status) && hit.polygon_count as usize > polygons.len() {
-                // The hit says how many: walk again with room for them.
-                polygons = vec![0u32; hit.polygon_count as usize];
-                continue;
-            }
-            check(status)?;
-            polygons.truncate(count as usize);
-            return Ok((hit.into(), polygons));
-        }
+        let ray = NavmeshRay { start, start_polygon, end };
+        let mut walks = self.raycast_batch_with_polygons(navmesh, filter, &[ray])?;
+        Ok(walks.remove(0))
+    }
+
+    /// `nl_navmesh_raycast`: one hit per ray, ray i's first `per_ray` polygons in `polygons[i * per_ray..]`.
+    fn raycast_c(
+        &self,
+        navmesh: NavmeshId,
+        filter: &sys::nl_query_filter,
+        rays: &[NavmeshRay],
+        polygons: &mut [u32],
+        per_ray: usize,
+    ) -> Result<Vec<sys::nl_navmesh_raycast_hit>> {
+        assert!(polygons.len() >= rays.len() * per_ray, "room for per_ray polygons per ray");
+        let count = u32::try_from(rays.len())
+            .map_err(|_| Error::binding(sys::NL_STATUS_INVALID_ARGUMENT, format!("raycast: {} rays", rays.len())))?;
+        let per_ray = u32::try_from(per_ray)
+            .map_err(|_| Error::binding(sys::NL_STATUS_INVALID_ARGUMENT, format!("raycast: room for {} polygons", per_ray)))?;
+        // nl_navmesh_raycast_hit_init() sets the element size the library writes with.
+        let mut hits = vec![sys::nl_navmesh_raycast_hit_init(); rays.len()];
+        let out_polygons = if per_ray == 0 { ptr::null_mut() } else { polygons.as_mut_ptr() };
+        check(unsafe {
+            sys::nl_navmesh_raycast(self.raw(), navmesh, filter, rays.as_ptr(), count, hits.as_mut_ptr(), out_polygons, per_ray)
+        })?;
+        Ok(hits)
     }
 
     /// Slides a point from `start` (over `start_polygon`) towards `target` along the navmesh, as Detour's
     /// moveAlongSurface: `target` when the straight way there stays on the navmesh, else the point of the
     /// walls met nearest to it. The point is at the surface height with its polygon, `found`, and its
-    /// `distance` short of `target`; the polygons are those visited from the start's to the result's.
+    /// `distance` short of `target`; the polygons are those visited from the start's to the result's (room
+    /// for 32 first; when more were visited, the call says how many and is made again with that room).
     pub fn move_along_surface(
         &self,
         navmesh: NavmeshId,
@@ -207,11 +262,9 @@ impl World {
                     &mut count,
                 )
             };
-            if buffer_too_small(status) {
-                // The call does not say how many it visited, only that they did not fit; a slide visits each
-                // polygon at most once, so the navmesh's polygon count is room enough.
-                let polygons = self.navmesh_info(navmesh)?.polygon_count as usize;
-                visited = vec![0u32; polygons.max(2 * visited.len())];
+            if buffer_too_small(status) && count as usize > visited.len() {
+                // `count` is how many it visited: slide again with that room.
+                visited = vec![0u32; count as usize];
                 continue;
             }
             check(status)?;

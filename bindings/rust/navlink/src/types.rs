@@ -17,6 +17,8 @@ pub type PathTicket = sys::nl_path_ticket;
 pub type AgentCapabilities = sys::nl_agent_capabilities;
 pub type PluginId = sys::nl_plugin_id;
 pub type AgentId = sys::nl_agent_id;
+/// One straight walk for `World::raycast_batch` (`nl_navmesh_ray`): `start` over `start_polygon`, towards `end`.
+pub type NavmeshRay = sys::nl_navmesh_ray;
 
 /// `nl_status` bits.
 pub mod status {
@@ -268,7 +270,7 @@ plain_struct! {
         hit: bool,
         /// The fraction of start to end walked (seen from above): 1 if it arrived.
         t: f32,
-        /// Where it stopped (or the end), on the navmesh surface.
+        /// Where it stopped (or the end), at the navmesh surface's height.
         point: [f32; 3],
         /// The wall's normal, horizontal, pointing back the way the walk came; zero if it arrived.
         wall_normal: [f32; 3],

@@ -5,7 +5,7 @@
 //! tests.
 use navlink::{
     default_agent_capabilities, default_agent_type, default_query_filter, sys, ErrorKind, LinkDef, NavmeshId, NavmeshInput,
-    QueryFilter, RandomPointsOptions, World, AREA_EXCLUDED, NO_ISLAND, NO_POLYGON,
+    NavmeshRay, QueryFilter, RandomPointsOptions, World, AREA_EXCLUDED, NO_ISLAND, NO_POLYGON,
 };
 
 const START: [f32; 3] = [0.5, 0.0, 0.5];
@@ -90,8 +90,13 @@ fn raycast_stops_at_a_missing_cell_and_a_slide_follows_the_wall() {
     let (hit, crossed) = world.raycast(navmesh, &filter, 0, START, [1.5, 0.0, 0.5]).unwrap();
     assert!(!hit.hit && hit.t == 1.0 && near(hit.point, [1.5, 0.0, 0.5]) && hit.wall_normal == [0.0; 3], "arrives: {:?}", hit);
     assert_eq!((hit.end_polygon, crossed), (1, vec![0, 1]));
+    // The single ray is a batch of one: the library names it rays[0].
     let e = world.raycast(navmesh, &filter, 2, START, [1.0, 0.0, 1.0]).unwrap_err();
-    assert!(e.kind() == ErrorKind::InvalidArgument && e.message().contains("start is not over start_polygon 2"), "{}", e);
+    assert!(
+        e.kind() == ErrorKind::InvalidArgument && e.message().contains("rays[0].start is not over rays[0].start_polygon 2"),
+        "{}",
+        e
+    );
 
     let (moved, visited) = world.move_along_surface(navmesh, &filter, 0, START, [2.5, 0.0, 0.5]).unwrap();
     assert!(moved.found && near(moved.point, [2.0, 0.0, 0.5]) && moved.polygon == 1, "slides to the wall: {:?}", moved);
@@ -99,6 +104,76 @@ fn raycast_stops_at_a_missing_cell_and_a_slide_follows_the_wall() {
     assert!(visited.len() >= 2 && visited[0] == 0 && *visited.last().unwrap() == 1, "{:?}", visited);
     let (moved, _) = world.move_along_surface(navmesh, &body(0.0), 0, START, [1.5, 0.0, 0.5]).unwrap();
     assert!(near(moved.point, [1.5, 0.0, 0.5]) && moved.polygon == 1 && moved.distance == 0.0, "a clear slide arrives: {:?}", moved);
+}
+
+fn ray(start: [f32; 3], start_polygon: u32, end: [f32; 3]) -> NavmeshRay {
+    NavmeshRay { start, start_polygon, end }
+}
+
+/// Each ray of a batch against the same ray alone, with and without polygons.
+fn check_batch_against_single_calls(
+    world: &World,
+    navmesh: NavmeshId,
+    filter: &QueryFilter,
+    rays: &[NavmeshRay],
+) -> Vec<(navlink::NavmeshRaycastHit, Vec<u32>)> {
+    let walks = world.raycast_batch_with_polygons(navmesh, filter, rays).unwrap();
+    let hits = world.raycast_batch(navmesh, filter, rays).unwrap();
+    assert_eq!((walks.len(), hits.len()), (rays.len(), rays.len()), "one answer per ray");
+    for (i, r) in rays.iter().enumerate() {
+        let alone = world.raycast(navmesh, filter, r.start_polygon, r.start, r.end).unwrap();
+        assert_eq!(walks[i], alone, "ray {} in a batch as alone", i);
+        assert_eq!(hits[i], alone.0, "ray {} without polygons", i);
+        assert_eq!(alone.0.polygon_count as usize, alone.1.len(), "ray {}: polygon_count counts the list", i);
+    }
+    walks
+}
+
+#[test]
+fn a_batch_of_rays_answers_as_single_calls() {
+    let world = World::new().unwrap();
+    let navmesh = cells_with_link(&world);
+    let rays = [
+        ray(START, 0, [4.5, 0.0, 0.5]),             // into the missing cell
+        ray(START, 0, [1.5, 0.0, 0.5]),             // arrives
+        ray([3.5, 0.0, 0.5], 2, [0.5, 0.0, 0.5]),   // west into the gap
+        ray([6.5, 0.0, 0.25], 4, [7.5, 0.0, 0.75]), // across the last island
+        ray([1.5, 0.0, 0.5], 1, [1.5, 0.0, 3.0]),   // out through the side
+    ];
+    let walks = check_batch_against_single_calls(&world, navmesh, &body(3.0), &rays);
+    assert!(walks[0].0.hit && near(walks[0].0.point, [2.0, 0.0, 0.5]) && walks[0].1 == vec![0, 1], "{:?}", walks[0]);
+    assert!(!walks[1].0.hit, "{:?}", walks[1]);
+    assert!(walks[2].0.hit && near(walks[2].0.point, [3.0, 0.0, 0.5]) && near(walks[2].0.wall_normal, [1.0, 0.0, 0.0]), "{:?}", walks[2]);
+    assert_eq!(walks[2].1, vec![2]);
+    assert!(!walks[3].0.hit && walks[3].0.end_polygon == 5 && walks[3].1 == vec![4, 5], "{:?}", walks[3]);
+    assert!(walks[4].0.hit && near(walks[4].0.point, [1.5, 0.0, 1.0]) && near(walks[4].0.wall_normal, [0.0, 0.0, -1.0]), "{:?}", walks[4]);
+    assert!(world.raycast_batch_with_polygons(navmesh, &body(3.0), &[]).unwrap().is_empty(), "an empty batch");
+    assert!(world.raycast_batch(navmesh, &body(3.0), &[]).unwrap().is_empty(), "an empty batch");
+
+    let mut refused = rays;
+    refused[3].start_polygon = 2;
+    let e = world.raycast_batch(navmesh, &body(3.0), &refused).unwrap_err();
+    assert!(
+        e.kind() == ErrorKind::InvalidArgument && e.message().contains("rays[3].start is not over rays[3].start_polygon 2"),
+        "a batch with one ray off its polygon is refused, naming it: {}",
+        e
+    );
+
+    // A raw batch the library refuses writes nothing: the hits keep what they held.
+    let mut hits = [sys::nl_navmesh_raycast_hit_init(); 5];
+    let mut polygons = [7u32; 5 * 4];
+    let status = unsafe {
+        let (hits, polygons) = (hits.as_mut_ptr(), polygons.as_mut_ptr());
+        sys::nl_navmesh_raycast(world.as_ptr(), navmesh, std::ptr::null(), refused.as_ptr(), 5, hits, polygons, 4)
+    };
+    assert!(sys::nl_failed(status) && status & sys::NL_STATUS_INVALID_ARGUMENT != 0, "{:#x}", status);
+    assert!(hits.iter().all(|h| *h == sys::nl_navmesh_raycast_hit_init()) && polygons.iter().all(|&p| p == 7), "nothing written");
+    let status = unsafe {
+        let (hits, polygons) = (hits.as_mut_ptr(), polygons.as_mut_ptr());
+        sys::nl_navmesh_raycast(world.as_ptr(), navmesh, std::ptr::null(), rays.as_ptr(), 5, hits, polygons, 4)
+    };
+    assert_eq!(status, sys::NL_STATUS_SUCCESS);
+    assert_eq!((hits[3].polygon_count, &polygons[12..14]), (2, &[4u32, 5][..]), "ray 3's polygons at 3 * 4");
 }
 
 #[test]
@@ -150,4 +225,20 @@ fn walks_longer_than_the_first_buffer() {
     let (moved, visited) = world.move_along_surface(row, &QueryFilter::default(), 0, START, [39.5, 0.0, 0.5]).unwrap();
     assert!(moved.polygon == 39 && near(moved.point, [39.5, 0.0, 0.5]), "{:?}", moved);
     assert_eq!(visited, all);
+
+    // A batch of long and short walks: those that crossed more than 32 are walked again, together.
+    let rays = [
+        ray(START, 0, [39.5, 0.0, 0.5]),
+        ray(START, 0, [1.5, 0.0, 0.5]),
+        ray([39.5, 0.0, 0.5], 39, [2.5, 0.0, 0.5]),
+        ray([10.5, 0.0, 0.5], 10, [45.0, 0.0, 0.5]),
+        ray([20.5, 0.0, 0.5], 20, [20.5, 0.0, 0.5]),
+    ];
+    let walks = check_batch_against_single_calls(&world, row, &QueryFilter::default(), &rays);
+    let counts: Vec<u32> = walks.iter().map(|w| w.0.polygon_count).collect();
+    assert_eq!(counts, vec![40, 2, 38, 30, 1]);
+    assert_eq!(walks[0].1, all);
+    assert_eq!(walks[2].1, (2..40).rev().collect::<Vec<u32>>(), "backwards");
+    assert!(walks[3].0.hit && near(walks[3].0.point, [40.0, 0.0, 0.5]), "out of the row's end: {:?}", walks[3].0);
+    assert!(walks[4].0.t == 1.0 && walks[4].1 == vec![20], "a ray of no length: {:?}", walks[4]);
 }

@@ -27,16 +27,18 @@ namespace NavLink
                                                                uint* outIslands, uint capacity, uint* outCount,
                                                                uint* outIslandCount);
 
-        /// <summary>start, end: 3 floats each; outHit: Size set (nl_navmesh_raycast_hit_init); outPolygons may be
-        /// null with capacity 0; outCount may be null. BufferTooSmall still writes the hit (its PolygonCount is
-        /// the whole count) and the first capacity polygons.</summary>
+        /// <summary>rays: count entries; outHits: count entries, outHits[0].Size set (nl_navmesh_raycast_hit_init).
+        /// outPolygons: null with polygonsPerRay 0, or count * polygonsPerRay entries: ray i's crossed polygons
+        /// from outPolygons[i * polygonsPerRay], at most polygonsPerRay of them (its hit's PolygonCount is how
+        /// many it crossed; no BufferTooSmall). A refused batch writes nothing.</summary>
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         public static extern StatusCode nl_navmesh_raycast(IntPtr world, NavmeshId navmesh, QueryFilterDef* filter,
-                                                           uint startPolygon, float* start, float* end,
-                                                           NavmeshRaycastHit* outHit, uint* outPolygons, uint capacity,
-                                                           uint* outCount);
+                                                           NavmeshRay* rays, uint count, NavmeshRaycastHit* outHits,
+                                                           uint* outPolygons, uint polygonsPerRay);
 
-        /// <summary>start, target: 3 floats each; outPolygons, capacity, outCount as nl_navmesh_raycast's.</summary>
+        /// <summary>start, target: 3 floats each; outPolygons may be null with capacity 0; outCount (may be null)
+        /// receives how many polygons it visited, also when fewer fit (BufferTooSmall: the point is written and
+        /// the first capacity polygons).</summary>
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         public static extern StatusCode nl_navmesh_move_along_surface(IntPtr world, NavmeshId navmesh, QueryFilterDef* filter,
                                                                       uint startPolygon, float* start, float* target,

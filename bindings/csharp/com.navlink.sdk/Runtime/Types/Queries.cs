@@ -19,8 +19,28 @@ namespace NavLink
         public uint Reserved;
     }
 
-    /// <summary>nl_navmesh_raycast_hit: how far a straight walk along a navmesh went. Get one from
-    /// Native.nl_navmesh_raycast_hit_init() (Size set) before asking.</summary>
+    /// <summary>nl_navmesh_ray: one straight walk for Native.nl_navmesh_raycast (World.Raycast takes a span of
+    /// them).</summary>
+    [StructLayout(LayoutKind.Sequential)]
+    public struct NavmeshRay
+    {
+        /// <summary>Over StartPolygon (within 1 mm, seen from above).</summary>
+        public Vec3 Start;
+        /// <summary>The polygon under Start, from World.FindNearest.</summary>
+        public uint StartPolygon;
+        /// <summary>Anywhere: the walk heads for it, seen from above.</summary>
+        public Vec3 End;
+
+        public NavmeshRay(Vec3 start, uint startPolygon, Vec3 end)
+        {
+            Start = start;
+            StartPolygon = startPolygon;
+            End = end;
+        }
+    }
+
+    /// <summary>nl_navmesh_raycast_hit: how far a straight walk along a navmesh went. An element of an output
+    /// array that may grow: set the first one's Size (Native.nl_navmesh_raycast_hit_init()) before asking.</summary>
     [StructLayout(LayoutKind.Sequential)]
     public unsafe struct NavmeshRaycastHit
     {
@@ -31,13 +51,14 @@ namespace NavLink
         public fixed byte Reserved[3];
         /// <summary>The fraction of start to end walked (seen from above): 1 if it arrived.</summary>
         public float T;
-        /// <summary>Where it stopped (or the end), on the navmesh surface.</summary>
+        /// <summary>Where it stopped (or the end), at the navmesh surface's height.</summary>
         public Vec3 Point;
         /// <summary>The wall's normal, horizontal, pointing back the way the walk came; zero if it arrived.</summary>
         public Vec3 WallNormal;
         /// <summary>The polygon holding Point.</summary>
         public uint EndPolygon;
-        /// <summary>Polygons crossed, the start polygon first and EndPolygon last.</summary>
+        /// <summary>Polygons crossed, the start polygon first and EndPolygon last (all of them, also when the
+        /// polygon buffer had room for fewer).</summary>
         public uint PolygonCount;
     }
 
