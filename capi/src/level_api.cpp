@@ -1,6 +1,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstring>
+#include <string>
 #include <vector>
 
 #include "entry_guard.h"
@@ -47,11 +48,40 @@ nl::TriangleMesh read_def_geometry(const nl_mesh_def& def) {
     return mesh;
 }
 
-nl_mesh_id add_mesh(nl::World& world, const nl::TriangleMesh& mesh, const nl_mesh_def& def, const char* function) {
-    const nl::Handle h = nl::naming_fields("def->", [&] {
-        if (def.reserved != 0) nl::fail_field(ErrorCode::InvalidArgument, "reserved is ", def.reserved, " (must be 0)");
-        return world.level().add_mesh(mesh, read_transform(def.transform), def.flags, def.user_data, def.area);
-    });
+// A failure about an OBJ's geometry in the file's own words: "vertex 8" for vertices[7] (its eighth
+// `v` line), "faces" for indices; the other fields are the def's. The reader refuses numbers that are
+// not finite with their line first; what reaches here is the level's own checks.
+std::string obj_words(const std::string& field_message) {
+    if (field_message.rfind("indices", 0) == 0) return "faces" + field_message.substr(7);
+    if (field_message.rfind("vertices[", 0) != 0) return field_message;
+    const size_t close = field_message.find(']');
+    if (close == std::string::npos) return field_message;
+    const unsigned long index = std::stoul(field_message.substr(9, close - 9));
+    const std::string vertex = "vertex " + std::to_string(index + 1);
+    // "vertices[1].x = 2e+09 is ..." reads "vertex 2: x = 2e+09 is ...".
+    if (field_message.compare(close + 1, 1, ".") == 0) return vertex + ": " + field_message.substr(close + 2);
+    return vertex + field_message.substr(close + 1);
+}
+
+bool about_geometry(const std::string& field_message) {
+    return field_message.rfind("vertices", 0) == 0 || field_message.rfind("indices", 0) == 0 ||
+           field_message.rfind("triangle_count", 0) == 0;
+}
+
+// `source`: the OBJ file (or "data") the geometry came from, whose name failures about the geometry
+// carry instead of the def's field names a host using nl_mesh_add would know; null for nl_mesh_add.
+nl_mesh_id add_mesh(nl::World& world, const nl::TriangleMesh& mesh, const nl_mesh_def& def, const char* function,
+                    const char* source = nullptr) {
+    const nl::Handle h = [&] {
+        try {
+            if (def.reserved != 0) nl::fail_field(ErrorCode::InvalidArgument, "reserved is ", def.reserved, " (must be 0)");
+            return world.level().add_mesh(mesh, read_transform(def.transform), def.flags, def.user_data, def.area);
+        } catch (const nl::Error& e) {
+            if (!e.starts_with_field()) throw;
+            if (source && about_geometry(e.what())) throw nl::Error(e.code(), nl::concat(source, ": ", obj_words(e.what())));
+            throw nl::Error(e.code(), nl::concat("def->", e.what()), true);
+        }
+    }();
     const nl::MeshInfo info = world.level().info(h);
     if (info.degenerate_triangle_count > 0) {
         world.logger().log(nl::LogLevel::Warning,
@@ -157,7 +187,7 @@ NL_API nl_status nl_mesh_add_obj_file(nl_world* world, const char* path, const n
         require(path, "path");
         require(out_id, "out_id");
         const nl_mesh_def options = obj_options(def);
-        *out_id = add_mesh(w, nl::read_obj_file(path), options, "nl_mesh_add_obj_file");
+        *out_id = add_mesh(w, nl::read_obj_file(path), options, "nl_mesh_add_obj_file", path);
     });
 }
 
@@ -168,7 +198,8 @@ NL_API nl_status nl_mesh_add_obj_memory(nl_world* world, const char* data, size_
         if (length > 0) require(data, "data");
         require(out_id, "out_id");
         const nl_mesh_def options = obj_options(def);
-        *out_id = add_mesh(w, nl::read_obj_text(std::string_view(data ? data : "", length)), options, "nl_mesh_add_obj_memory");
+        *out_id = add_mesh(w, nl::read_obj_text(std::string_view(data ? data : "", length)), options, "nl_mesh_add_obj_memory",
+                           "data");
     });
 }
 

@@ -47,8 +47,7 @@ Body read_filter(const nl_query_filter* given, const std::string& name) {
         static const Body defaults{nl::capi::read_capabilities(nl_default_agent_capabilities(), ""), {}, {}};
         return defaults;
     }
-    const nl_query_filter filter =
-        given ? nl::capi::read_growable(*given, nl_default_query_filter(), kFilterFirstSize, name.c_str()) : nl_default_query_filter();
+    const nl_query_filter filter = nl::capi::read_growable(*given, nl_default_query_filter(), kFilterFirstSize, name.c_str());
     const std::string prefix = name + "->";
     Body body;
     body.agent = nl::capi::read_capabilities(filter.agent, prefix.c_str());

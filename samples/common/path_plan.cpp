@@ -22,23 +22,13 @@ nl_path_request_def path_request(nl_navmesh_id navmesh, const float start[3], co
 
 std::optional<NearestOnNavmesh> nearest_on_navmesh(const nl_world* world, nl_navmesh_id navmesh, const float point[3],
                                                    const float half_extents[3]) {
-    float box[3] = {half_extents[0], half_extents[1], half_extents[2]};
-    for (;;) {
-        nl_nav_point found{};
-        if (NL_FAILED(nl_navmesh_find_nearest(world, navmesh, point, 1, box, &found))) return std::nullopt;
-        if (found.found) {
-            NearestOnNavmesh nearest{};
-            float squared = 0.0f;
-            for (int k = 0; k < 3; ++k) {
-                nearest.point[k] = found.point[k];
-                squared += (found.point[k] - point[k]) * (found.point[k] - point[k]);
-            }
-            nearest.distance = std::sqrt(squared);
-            return nearest;
-        }
-        if (box[0] >= 1000.0f && box[1] >= 1000.0f && box[2] >= 1000.0f) return std::nullopt;
-        for (float& h : box) h = std::min(h * 4.0f, 1000.0f);
-    }
+    nl_nav_point found{};
+    if (NL_FAILED(nl_navmesh_find_nearest(world, navmesh, point, 1, half_extents, &found))) return std::nullopt;
+    if (!found.found && !found.beyond_box) return std::nullopt;  // a navmesh without polygons
+    NearestOnNavmesh nearest{};
+    std::copy(found.point, found.point + 3, nearest.point);
+    nearest.distance = found.distance;
+    return nearest;
 }
 
 PlannedPath find_path(nl_world* world, nl_navmesh_id navmesh, const float start[3], const float goal[3],

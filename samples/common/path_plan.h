@@ -32,8 +32,9 @@ PlannedPath find_path(nl_world* world, nl_navmesh_id navmesh, const float start[
 nl_path_request_def path_request(nl_navmesh_id navmesh, const float start[3], const float goal[3],
                                  const nl_agent_capabilities& agent, const float* search_half_extents = nullptr);
 
-// Where the navmesh is nearest `point`, found by widening `half_extents` fourfold up to 1 km: for
-// saying how far off the navmesh a start or goal is. Nothing when the navmesh is farther.
+// Where the navmesh is nearest `point`, within `half_extents` or, when nothing is, beyond it (the
+// library's answer for a miss, nl_nav_point.beyond_box): for saying how far off the navmesh a start
+// or goal is.
 struct NearestOnNavmesh {
     float point[3];
     float distance;

@@ -245,7 +245,7 @@ void find_corridor(const PathGraph& graph, const PathQuery& query, const NavPoin
     }
     uint32_t expansions = 0;
     while (!open.empty()) {
-        if ((++expansions & 63u) == 0 && cancel && cancel->load(std::memory_order_relaxed)) {
+        if ((++expansions & (kCancelCheckExpansions - 1)) == 0 && cancel && cancel->load(std::memory_order_relaxed)) {
             result.cancelled = true;
             return;
         }

@@ -37,8 +37,11 @@ struct CorridorSearch {
     Vec3 last_position = Vec3::Zero(); // where the search entered the last polygon
 };
 
+// How often a search looks at its cancel flag: a power of two, in expansions.
+constexpr uint32_t kCancelCheckExpansions = 64;
+
 // Searches from `start` to `goal` (both located on graph's navmesh) into `out`, whose steps' memory
-// is reused. A set `cancel` stops the search within 64 expansions. Uses per-thread scratch memory:
+// is reused. A set `cancel` stops the search within kCancelCheckExpansions expansions. Uses per-thread scratch memory:
 // no allocation after a thread's first searches on a navmesh of this size.
 void find_corridor(const PathGraph& graph, const PathQuery& query, const NavPoint& start, const NavPoint& goal,
                    const std::atomic<bool>* cancel, CorridorSearch& out);

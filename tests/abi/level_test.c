@@ -221,9 +221,22 @@ static void degenerate_triangles(void) {
     {
         nl_mesh_id untouched = {77u, 77u};
         def.triangle_count = 1; /* only {0, 0, 1} */
-        CHECK_INVALID(nl_mesh_add(world, &def, &untouched), "degenerate");
+        CHECK_INVALID(nl_mesh_add(world, &def, &untouched), "def->indices: all 1 triangles are degenerate");
         CHECK(untouched.index1 == 77u && untouched.generation == 77u);
         CHECK(mesh_count(world) == 1);
+    }
+    /* From an OBJ, the same failures in the file's words: its faces and its vertices by their `v`
+       line's number, not a def the host never filled. */
+    {
+        static const char degenerate[] = "v 0 0 0\nv 0 0 0\nv 0 0 0\nf 1 2 3\n";
+        static const char far_away[] = "v 0 0 0\nv 2e9 0 0\nv 0 0 1\nf 1 2 3\n";
+        nl_mesh_id untouched = {77u, 77u};
+        CHECK_INVALID(nl_mesh_add_obj_memory(world, degenerate, sizeof degenerate - 1, NULL, &untouched),
+                      "nl_mesh_add_obj_memory: data: faces: all 1 triangles are degenerate");
+        CHECK_INVALID(nl_mesh_add_obj_memory(world, far_away, sizeof far_away - 1, NULL, &untouched),
+                      "nl_mesh_add_obj_memory: data: vertex 2: x = 2e+09 is beyond the coordinate limit");
+        CHECK(strstr(nl_get_last_error_message(), "def->") == NULL);
+        CHECK(untouched.index1 == 77u && mesh_count(world) == 1);
     }
     nl_world_destroy(world);
 }

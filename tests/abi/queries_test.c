@@ -2,10 +2,14 @@
  * abi.queries: reachability, the navmesh raycast and slide, and random points, on navmeshes drawn as
  * rows of 1 m cells whose answers are known exactly. Strict C11 through the C ABI only.
  */
+/* pthread for the querying threads; strict C11 otherwise. */
+#define _POSIX_C_SOURCE 200809L
+
 #include "abi_test.h"
 #include "navmesh_scene.h"
 
 #include <math.h>
+#include <pthread.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -359,5 +363,64 @@ static void random_points(void) {
     nl_world_destroy(world);
 }
 
+/* Queries from several threads while another one adds and removes links: every answer is one of
+   the two the links allow (a map of the links before or after an edit), never a crash or a race. */
+typedef struct query_job {
+    nl_world* world;
+    nl_navmesh_id navmesh;
+    float jump;       /* the body's jump distance: 0 never reaches, 3 reaches while the link is there */
+    int wrong, failures;
+} query_job;
+
+static void* query_thread(void* arg) {
+    query_job* job = (query_job*)arg;
+    nl_query_filter filter = jumper(job->jump);
+    const uint32_t from[2] = {0, 3}, to[2] = {3, 0};
+    int i;
+    for (i = 0; i < 2000; ++i) {
+        uint8_t answers[2];
+        uint32_t count = 0;
+        filter.agent.max_jump_height = (float)(i % 4);  /* four bodies of one class: one map */
+        if (NL_FAILED(nl_navmesh_can_reach(job->world, job->navmesh, &filter, from, to, 2, answers)) ||
+            NL_FAILED(nl_navmesh_get_reachable_polygons(job->world, job->navmesh, &filter, 1, NULL, 0, &count))) {
+            ++job->failures;
+            continue;
+        }
+        if (answers[1] != 0 || (job->jump == 0.0f && answers[0] != 0) || (count != 2 && count != 4)) ++job->wrong;
+    }
+    return NULL;
+}
+
+static void threads(void) {
+    const char* rows[] = {"..#..#.."};
+    nl_world* world = make_world(2);
+    const nl_navmesh_id navmesh = add_cells(world, rows, 1);
+    enum { kThreads = 4 };
+    query_job jobs[kThreads];
+    pthread_t ids[kThreads];
+    int started[kThreads], i;
+    for (i = 0; i < kThreads; ++i) {
+        jobs[i].world = world;
+        jobs[i].navmesh = navmesh;
+        jobs[i].jump = (i & 1) ? 3.0f : 0.0f;
+        jobs[i].wrong = jobs[i].failures = 0;
+        started[i] = pthread_create(&ids[i], NULL, query_thread, &jobs[i]) == 0;
+    }
+    for (i = 0; i < 200; ++i) {  /* the link comes and goes */
+        nl_link_def def = nl_default_link_def();
+        nl_link_id link;
+        def.start[0] = 1.5f, def.start[2] = 0.5f;
+        def.end[0] = 3.5f, def.end[2] = 0.5f;
+        if (NL_SUCCEEDED(nl_link_add(world, navmesh, &def, &link))) nl_link_remove(world, link);
+    }
+    for (i = 0; i < kThreads; ++i) {
+        if (started[i]) pthread_join(ids[i], NULL);
+        CHECK(started[i]);
+        CHECK_MSG(jobs[i].failures == 0 && jobs[i].wrong == 0, "thread %d: %d failures, %d wrong answers", i, jobs[i].failures,
+                  jobs[i].wrong);
+    }
+    nl_world_destroy(world);
+}
+
 ABI_SECTION(queries, ABI_CASE(reachability), ABI_CASE(no_path_at_once), ABI_CASE(raycast), ABI_CASE(move_along_surface),
-            ABI_CASE(random_points));
+            ABI_CASE(random_points), ABI_CASE(threads));

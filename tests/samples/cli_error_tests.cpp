@@ -50,6 +50,8 @@ TEST_CASE("bad arguments, files and JSON give one line and exit status 2") {
         {"half.json", R"({"format": "navlink-links", "version": 1, "links": [)"},
         {"bad_level.obj", "v 0 0 0\nv 1 0 0\nv 1 0 1\nf 1 2 9\n"},
         {"concave.obj", "v 0 0 0\nv 4 0 0\nv 1 0 1\nv 4 0 4\nv 0 0 4\nf 1 5 4 3 2\n"},
+        {"flat.obj", "v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\n"},
+        {"far.obj", "v 0 0 0\nv 1 0 0\nv 1 0 3e9\nf 1 2 3\n"},
     };
     for (const auto& [name, text] : files) nl::test::write_file(dir + "/" + name, text);
 
@@ -111,6 +113,8 @@ TEST_CASE("bad arguments, files and JSON give one line and exit status 2") {
          "slope.json: max_slope must be a number >= 0 and <= 89.9 (got 95)"},
         {{"generate", "bad_level.obj", "--out", "x.json"},
          "loading the level: bad_level.obj:4: vertex index 9 is past the last one (3)"},
+        {{"generate", "flat.obj", "--out", "x.json"}, "loading the level: flat.obj: faces: all 1 triangles are degenerate"},
+        {{"generate", "far.obj", "--out", "x.json"}, "loading the level: far.obj: vertex 3: z = 3e+09 is beyond the coordinate limit"},
         {{"simulate", "--out-dir", "level.obj"}, "--out-dir 'level.obj' is a file, not a folder"},
         {{"generate", "level.obj", "--out", "."}, "cannot write '.': it is a folder"},
         {with(path, {"--from", "1,0,1", "--to", "2,0,2", "--png", "/nonexistent/p.png"}),

@@ -1454,10 +1454,11 @@ NL_DEFINE_OUTPUT_INIT(nl_navmesh_raycast_hit, nl_navmesh_raycast_hit_init)
  *  (NULL with polygons_per_ray 0), caller-owned, count * polygons_per_ray entries: ray i's crossed
  *  polygons from out_polygons[i * polygons_per_ray], at most polygons_per_ray of them (its
  *  polygon_count says how many it crossed). count == 0 succeeds.
+ *  A ray's polygon slots past those it crossed are left as they were.
  *  Returns SUCCESS, or a failure with nothing written: INVALID_HANDLE, INVALID_ARGUMENT (a null
  *  pointer, a ray's point not finite or beyond NL_COORDINATE_LIMIT, its start_polygon out of range or
  *  its start not over it: the ray's index named, a filter as nl_navmesh_can_reach refuses,
- *  out_hits[0].size unset), OUT_OF_MEMORY. Thread-safe. */
+ *  out_hits[0].size unset); OUT_OF_MEMORY (some rays' hits may be written). Thread-safe. */
 NL_API nl_status nl_navmesh_raycast(const nl_world* world, nl_navmesh_id navmesh, const nl_query_filter* filter,
                                     const nl_navmesh_ray* rays, uint32_t count, nl_navmesh_raycast_hit* out_hits,
                                     uint32_t* out_polygons, uint32_t polygons_per_ray);
