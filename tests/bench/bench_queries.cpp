@@ -10,6 +10,8 @@
 //     NavLink: nl_navmesh_raycast on the whole batch (one worker), and called once per ray, against
 //     Detour's raycast ray by ray from the same polygon and point, fastest of three rounds,
 //     alternately; with how often the two agree (both arrive, or both hit within 1 cm).
+// Then a large host navmesh (a 400 x 400 grid of quads in strips joined by one-way links): the map's
+// build time and an unreachable goal against nl_path_find.
 // One line each:
 //   reach level=NAME polys=N islands=N map_build_ms=X unreachable_pairs=N reach_us=X path_find_us=X
 //     detour_find_path_us=X path_find_ratio=X detour_ratio=X
@@ -210,6 +212,106 @@ void raycasts(const nl::bench::RecastLevel& recast, nl_world* world, nl_navmesh_
     std::fflush(stdout);
 }
 
+// A large host navmesh: a square grid of 1 m quads (`side` x `side`), one in nine cells knocked out
+// and every 16th row a wall with a door closed, so the navmesh falls into strips; one-way links join
+// each strip to the next. What a reachability map costs to build where it matters, and an
+// unreachable goal (the first strip from the last) against the search that finds that out.
+void large_grid(int side) {
+    std::vector<float> vertices;
+    std::vector<uint32_t> indices;
+    std::vector<uint8_t> corners;
+    std::mt19937 rng(99);
+    for (int r = 0; r < side; ++r) {
+        for (int c = 0; c < side; ++c) {
+            if (r % 16 == 15 || rng() % 9 == 0) continue;
+            const float x0 = float(c), z0 = float(r);
+            for (const auto& [x, z] : {std::pair{x0, z0}, {x0, z0 + 1}, {x0 + 1, z0 + 1}, {x0 + 1, z0}}) {
+                indices.push_back(uint32_t(vertices.size() / 3));
+                vertices.insert(vertices.end(), {x, 0.0f, z});
+            }
+            corners.push_back(4);
+        }
+    }
+    nl_world_def world_def = nl_default_world_def();
+    world_def.worker_count = 1;
+    world_def.path_worker_count = 0;
+    nl_world* world = nullptr;
+    nl_world_create(&world_def, &world);
+    nl_navmesh_def def = nl_default_navmesh_def();
+    def.vertices = vertices.data();
+    def.vertex_count = uint32_t(vertices.size() / 3);
+    def.indices = indices.data();
+    def.polygon_vertex_counts = corners.data();
+    def.polygon_count = uint32_t(corners.size());
+    def.agent.radius = 0.0f;
+    def.weld_tolerance = 0.01f;
+    nl_navmesh_id navmesh{};
+    if (NL_FAILED(nl_navmesh_add(world, &def, &navmesh))) {
+        std::fprintf(stderr, "navlink-bench-queries: the grid: %s\n", nl_get_last_error_message());
+        return;
+    }
+    // One-way links from each strip down to the next, at x = 0.5 (the first column kept clear).
+    for (int strip = 0; strip + 1 < side / 16; ++strip) {
+        nl_link_def link = nl_default_link_def();
+        link.start[0] = side * 0.5f + 0.5f, link.start[2] = float(16 * strip + 14) + 0.5f;
+        link.end[0] = side * 0.5f + 0.5f, link.end[2] = float(16 * strip + 16) + 0.5f;
+        nl_link_id id;
+        nl_link_add(world, navmesh, &link, &id);
+    }
+    const nl::Handle handle{navmesh.index1, navmesh.generation};
+    const auto graph = world->core->navmeshes().path_graph(handle);
+    nl::AgentCapabilities jumper;
+    jumper.radius = 0.0f;
+    jumper.max_jump_distance = 3.0f;
+    const nl::ReachabilityClass body = nl::ReachabilityClass::of(*graph, jumper, {});
+    double build_ms = 1e300;
+    uint32_t islands = 0;
+    for (int run = 0; run < 3; ++run) {
+        const double t0 = nl::samples::now_ms();
+        const nl::ReachabilityMap map(*graph, body);
+        build_ms = std::min(build_ms, nl::samples::now_ms() - t0);
+        islands = map.island_count();
+    }
+    // From the middle of the last strip back to the first: out of reach against the one-way links.
+    nl_path_request_def request = nl_default_path_request_def();
+    request.navmesh = navmesh;
+    request.agent = nl_default_agent_capabilities();
+    request.agent.radius = 0.0f;
+    request.agent.max_jump_distance = 3.0f;
+    request.start[0] = side * 0.5f + 0.5f, request.start[2] = float(side - 2) + 0.5f;
+    request.goal[0] = side * 0.5f + 0.5f, request.goal[2] = 0.5f;
+    nl_query_filter filter = nl_default_query_filter();
+    filter.agent = request.agent;
+    nl_nav_point ends[2];
+    const float half[3] = {1, 1, 1};
+    float points[6];
+    std::copy(request.start, request.start + 3, points);
+    std::copy(request.goal, request.goal + 3, points + 3);
+    nl_navmesh_find_nearest(world, navmesh, points, 2, half, ends);
+    double reach_ms = 1e300, search_ms = 1e300;
+    uint8_t reachable = 1;
+    nl_path_result result = nl_path_result_init();
+    for (int run = 0; run < 3; ++run) {
+        const double t0 = nl::samples::now_ms();
+        nl_navmesh_can_reach(world, navmesh, &filter, &ends[0].polygon, &ends[1].polygon, 1, &reachable);
+        const double t1 = nl::samples::now_ms();
+        uint32_t count = 0;
+        // Accepting a partial path, it searches everything the body reaches; a start moved a little
+        // each run keeps nl_path_find from reusing its last plan.
+        request.start[0] += 0.01f;
+        nl_path_find(world, &request, &result, nullptr, 0, &count);
+        const double t2 = nl::samples::now_ms();
+        reach_ms = std::min(reach_ms, t1 - t0);
+        search_ms = std::min(search_ms, t2 - t1);
+    }
+    std::printf("reach level=grid%d polys=%u islands=%u map_build_ms=%.2f reachable=%u reach_us=%.3f "
+                "path_find_us=%.1f path_find_outcome=%u nodes=%u\n",
+                side, def.polygon_count, islands, build_ms, reachable, 1000.0 * reach_ms, 1000.0 * search_ms,
+                result.outcome, result.nodes_visited);
+    std::fflush(stdout);
+    nl_world_destroy(world);
+}
+
 bool bench_level(const char* path) {
     nl::bench::RecastLevel recast = nl::bench::build_recast_level_from_obj(path);
     nl_world_def world_def = nl_default_world_def();
@@ -238,6 +340,7 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "usage: navlink-bench-queries LEVEL.obj...\n");
         return 2;
     }
+    large_grid(400);
     for (int i = 1; i < argc; ++i) {
         try {
             if (!bench_level(argv[i])) return 1;
