@@ -5,6 +5,7 @@
 #include "commands.h"
 #include "demo_setup.h"
 #include "help_text.h"
+#include "island_colors.h"
 #include "level_generator.h"
 #include "link_files.h"
 #include "navigable_level.h"
@@ -21,7 +22,8 @@ namespace nl::cli {
 
 int run_demo(int argc, char** argv) {
     const samples::Arguments args("navlink demo", "demo", argc, argv, 2,
-                                  {{"seed", true}, {"out-dir", true}, {"oblique", false}});
+                                  {{"seed", true}, {"out-dir", true}, {"oblique", false}, {"link-numbers", false},
+                                   {"roofs", false}});
     if (args.wants_help()) {
         std::fputs(kDemoHelp, stdout);
         return 0;
@@ -75,11 +77,14 @@ int run_demo(int argc, char** argv) {
     PictureRequest request;
     request.path = png_path;
     request.oblique = args.has("oblique");
+    request.link_numbers = args.has("link-numbers");
+    request.roofs = args.has("roofs");
+    request.islands = picture::read_islands(level.world(), level.navmesh(), agents[0].capabilities, agents[0].name);
     request.title = "navlink demo: one route, three bodies (seed " + std::to_string(seed) + ")";
-    write_picture(level.level(), contents, layers, request,
-                  {{"start", {start[0], start[1], start[2]}, picture::palette::kText},
-                   {"goal", {goal[0], goal[1], goal[2]}, picture::palette::kText}});
-    std::printf("\nwrote %s and %s\n", links_path.c_str(), png_path.c_str());
+    const std::string counted = write_picture(level.level(), contents, layers, request,
+                                              {{"start", {start[0], start[1], start[2]}, picture::palette::kText},
+                                               {"goal", {goal[0], goal[1], goal[2]}, picture::palette::kText}});
+    std::printf("\nwrote %s and %s (%s)\n", links_path.c_str(), png_path.c_str(), counted.c_str());
     return all_complete ? 0 : 1;
 }
 

@@ -7,6 +7,7 @@
 #include "commands.h"
 #include "generation_settings.h"
 #include "help_text.h"
+#include "island_colors.h"
 #include "link_files.h"
 #include "navigable_level.h"
 #include "navmesh_contents.h"
@@ -27,7 +28,7 @@ int generate(int argc, char** argv, Output output) {
     const samples::Arguments args(
         bake ? "navlink bake" : "navlink generate", bake ? "bake" : "generate", argc, argv, 2,
         {{"out", true}, {"navmesh", true}, {"agent", true}, {"settings", true}, {"plugin", true}, {"png", true},
-         {"oblique", false}});
+         {"oblique", false}, {"link-numbers", false}, {"roofs", false}});
     if (args.wants_help()) {
         std::fputs(bake ? kBakeHelp : kGenerateHelp, stdout);
         return 0;
@@ -67,9 +68,15 @@ int generate(int argc, char** argv, Output output) {
         PictureRequest request;
         request.path = *png;
         request.oblique = args.has("oblique");
-        request.title = "navlink generate " + level.level().name;
-        write_picture(level.level(), contents, {}, request);
-        std::printf("wrote %s\n", png->c_str());
+        request.link_numbers = args.has("link-numbers");
+        request.roofs = args.has("roofs");
+        // Islands for the body navlink path plans for without --agent: one that takes every link the
+        // default settings generate.
+        const samples::AgentProfile body = samples::default_agent_profile();
+        request.islands = picture::read_islands(level.world(), level.navmesh(), body.capabilities, "default body");
+        request.title = std::string(bake ? "navlink bake " : "navlink generate ") + level.level().name;
+        const std::string counted = write_picture(level.level(), contents, {}, request);
+        std::printf("wrote %s (%s)\n", png->c_str(), counted.c_str());
     }
     return 0;
 }

@@ -2,6 +2,18 @@
 
 namespace nl::cli {
 
+// The picture options of generate, bake, path and demo, and what their pictures show.
+#define NL_PICTURE_OPTIONS_HELP                                                                          \
+    "  --link-numbers        number each link in the picture by its index in LINKS.json, as navlink\n"  \
+    "                        path prints it (#N)\n"                                                       \
+    "  --roofs               draw the level whole; by default a surface more than 1.5 m above the\n"     \
+    "                        navmesh under it (a roof, a ceiling) is cut away, so the floor shows\n"     \
+    "\n"                                                                                               \
+    "The picture has a grid labelled in metres (x across, z down) to read --from and --to off, the\n"    \
+    "navmesh coloured by the islands of the body it is about (the polygons it can walk and take links\n" \
+    "between), one arrow per ledge of drops (the legend counts both), and a start or goal off the map\n" \
+    "marked at its edge with an arrow its way.\n"
+
 const char* const kMainHelp =
     "usage: navlink COMMAND [ARGUMENTS]\n"
     "\n"
@@ -25,6 +37,7 @@ const char* const kMainHelp =
 const char* const kGenerateHelp =
     "usage: navlink generate LEVEL.obj --out LINKS.json [--navmesh NAVMESH.obj] [--agent AGENT.json]\n"
     "                    [--settings GEN.json] [--plugin PLUGIN.so] [--png VIEW.png] [--oblique]\n"
+    "                    [--link-numbers] [--roofs]\n"
     "\n"
     "Builds LEVEL's navmesh with the built-in Recast builder (or takes NAVMESH.obj: convex polygons, Y up),\n"
     "generates jump and drop links against the level geometry, writes them to LINKS.json and prints the\n"
@@ -41,12 +54,15 @@ const char* const kGenerateHelp =
     "                        \"plugins\" holds each loaded link-kind plugin's settings by its kind name\n"
     "  --plugin PLUGIN.so    load a link-kind plugin library (nl_plugin_load): its links are generated\n"
     "                        with the others; settings for a kind no loaded plugin provides are refused\n"
-    "  --png VIEW.png        also draw the level, navmesh, outline and links\n"
-    "  --oblique             draw the picture from an angle instead of straight down\n";
+    "  --png VIEW.png        also draw the level, navmesh, outline and links (islands for navlink path's\n"
+    "                        default body)\n"
+    "  --oblique             draw the picture from an angle instead of straight down\n"
+    NL_PICTURE_OPTIONS_HELP;
 
 const char* const kBakeHelp =
     "usage: navlink bake LEVEL.obj --out NAVMESH.nlnav [--navmesh NAVMESH.obj] [--agent AGENT.json]\n"
     "                    [--settings GEN.json] [--plugin PLUGIN.so] [--png VIEW.png] [--oblique]\n"
+    "                    [--link-numbers] [--roofs]\n"
     "\n"
     "As navlink generate, but writes the navmesh, its links and what they were made for (the body, the\n"
     "builder and its settings, the level's hash, the link settings) as one baked navmesh file: compact,\n"
@@ -68,7 +84,7 @@ const char* const kInfoHelp =
 const char* const kPathHelp =
     "usage: navlink path LEVEL.obj --from X,Y,Z --to X,Y,Z [--links LINKS.json] [--agent AGENT.json]\n"
     "                    [--search X,Y,Z] [--navmesh NAVMESH.obj] [--settings GEN.json] [--json]\n"
-    "                    [--png VIEW.png] [--oblique]\n"
+    "                    [--png VIEW.png] [--oblique] [--link-numbers] [--roofs]\n"
     "       navlink path NAVMESH.nlnav --from X,Y,Z --to X,Y,Z [--links LINKS.json] [--agent AGENT.json]\n"
     "                    [--search X,Y,Z] [--json]\n"
     "\n"
@@ -89,20 +105,24 @@ const char* const kPathHelp =
     "  --settings GEN.json   the settings file of navlink generate: its \"recast\" part builds the navmesh\n"
     "                        from LEVEL\n"
     "  --json                print the path as a JSON object instead of text\n"
-    "  --png VIEW.png        also draw the path over the level\n"
+    "  --png VIEW.png        also draw the path over the level (islands for the agent)\n"
     "  --oblique             draw the picture from an angle instead of straight down\n"
+    NL_PICTURE_OPTIONS_HELP
     "\n"
     "Exit status: 0 when the path reaches the goal, 1 when it does not (partial, no path, start or goal\n"
     "off the navmesh), 2 on an error.\n";
 
 const char* const kDemoHelp =
-    "usage: navlink demo [--seed N] [--out-dir DIR] [--oblique]\n"
+    "usage: navlink demo [--seed N] [--out-dir DIR] [--oblique] [--link-numbers] [--roofs]\n"
     "\n"
     "Generates the default level (seed 1 unless --seed), builds its navmesh, generates its links, and plans\n"
     "the same start and goal for three agents: a walker (no jumps, no drops), a short jumper (gaps of\n"
     "2 m, 1 m up, no drops) and a long jumper who may drop (gaps of 3.5 m, 1.5 m up, drops of 4 m).\n"
     "Prints a table of their routes and writes demo.png and demo.links.json (in DIR, default '.'; made\n"
-    "if missing, and checked before any work).\n";
+    "if missing, and checked before any work). The picture's islands are the walker's.\n"
+    "\n"
+    "  --oblique             draw the picture from an angle instead of straight down\n"
+    NL_PICTURE_OPTIONS_HELP;
 
 const char* const kSimulateHelp =
     "usage: navlink simulate [--seed N] [--out-dir DIR] [--hz N] [--seconds N] [--oblique] [--platforms]\n"

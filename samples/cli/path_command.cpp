@@ -6,6 +6,7 @@
 #include "commands.h"
 #include "generation_settings.h"
 #include "help_text.h"
+#include "island_colors.h"
 #include "link_files.h"
 #include "navigable_level.h"
 #include "navmesh_contents.h"
@@ -44,7 +45,9 @@ int run_path(int argc, char** argv) {
                                    {"settings", true},
                                    {"json", false},
                                    {"png", true},
-                                   {"oblique", false}});
+                                   {"oblique", false},
+                                   {"link-numbers", false},
+                                   {"roofs", false}});
     if (args.wants_help()) {
         std::fputs(kPathHelp, stdout);
         return 0;
@@ -71,7 +74,7 @@ int run_path(int argc, char** argv) {
 
     if (baked) {
         // The navmesh and its links as baked: nothing is built, and there is no level to draw.
-        for (const char* level_only : {"navmesh", "settings", "png", "oblique"})
+        for (const char* level_only : {"navmesh", "settings", "png", "oblique", "link-numbers", "roofs"})
             if (args.has(level_only))
                 throw samples::SampleError(std::string("--") + level_only + " needs LEVEL.obj: " + args.positional()[0] +
                                            " is a baked navmesh file, planned over as it is");
@@ -96,13 +99,16 @@ int run_path(int argc, char** argv) {
         PictureRequest request;
         request.path = *png;
         request.oblique = args.has("oblique");
+        request.link_numbers = args.has("link-numbers");
+        request.roofs = args.has("roofs");
+        request.islands = picture::read_islands(level.world(), level.navmesh(), agent.capabilities, agent.name);
         request.title = "navlink path " + level.level().name;
         picture::PathLayer layer{agent.name + ": " + samples::outcome_name(path.result.outcome),
                                  picture::palette::agent(1), path.points};
-        write_picture(level.level(), contents, {layer}, request,
-                      {{"from", {from[0], from[1], from[2]}, picture::palette::kText},
-                       {"to", {to[0], to[1], to[2]}, picture::palette::kText}});
-        if (!args.has("json")) std::printf("wrote %s\n", png->c_str());
+        const std::string counted = write_picture(level.level(), contents, {layer}, request,
+                                                  {{"from", {from[0], from[1], from[2]}, picture::palette::kText},
+                                                   {"to", {to[0], to[1], to[2]}, picture::palette::kText}});
+        if (!args.has("json")) std::printf("wrote %s (%s)\n", png->c_str(), counted.c_str());
     }
     return status;
 }

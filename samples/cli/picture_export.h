@@ -2,6 +2,7 @@
 // as a PNG by samples/sdl.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -15,10 +16,16 @@ struct PictureRequest {
     std::string path;
     std::string title;
     bool oblique = false;
+    bool link_numbers = false;  // --link-numbers: each link's index, as in LINKS.json and navlink path
+    bool roofs = false;         // --roofs: draw the level whole, roofs over the navmesh included
+    std::optional<picture::SceneIslands> islands;  // navmesh polygons coloured by this body's islands
 };
 
-void write_picture(const samples::Level& level, const samples::NavmeshContents& navmesh,
-                   std::vector<picture::PathLayer> paths, const PictureRequest& request,
-                   std::vector<picture::ScenePoint> points = {}, std::vector<picture::ScenePlatform> platforms = {});
+// Writes the picture; returns what it counted that the text output may say: "drops: 141 (38
+// arrows); 5 islands for the walker".
+std::string write_picture(const samples::Level& level, const samples::NavmeshContents& navmesh,
+                          std::vector<picture::PathLayer> paths, const PictureRequest& request,
+                          std::vector<picture::ScenePoint> points = {},
+                          std::vector<picture::ScenePlatform> platforms = {});
 
 }  // namespace nl::cli

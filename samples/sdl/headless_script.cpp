@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <optional>
 
 #include "png_export.h"
 #include "scene_renderer.h"
@@ -54,22 +55,45 @@ int run_headless_script(ViewerSession& session, ViewSettings view, const std::st
         std::printf("%s%s: %s | %s\n", dir.c_str(), name, what.c_str(), session.status().c_str());
     };
     // A click where a point of the current scene is drawn (the session's destination or start), or
-    // at a fraction of the map: picked through the camera as a mouse click would be.
+    // on a polygon of the navmesh: picked through the camera as a mouse click would be. Each pick is
+    // logged with the polygon it found; the places drawn there are on the navmesh, so a click that
+    // finds no polygon fails.
     auto click_at = [&](SDL_FPoint pixel, bool start, const std::string& what) {
-        const auto point = session.pick(pixel, view);
-        if (!point) {
-            std::printf("scripted click at (%.0f, %.0f) found no surface\n", pixel.x, pixel.y);
+        const auto picked = session.pick(pixel, view);
+        if (!picked || picked->polygon == NL_NO_POLYGON) {
+            std::printf("scripted click at (%.0f, %.0f) found no navmesh polygon\n", pixel.x, pixel.y);
             status = 1;
             return;
         }
-        if (start) session.set_start(*point);
-        else session.set_destination(*point);
+        std::printf("scripted click at (%.0f, %.0f): %s picked (%.2f, %.2f, %.2f) on navmesh polygon %u\n", pixel.x,
+                    pixel.y, what.c_str(), picked->point[0], picked->point[1], picked->point[2], picked->polygon);
+        if (start) session.set_start(picked->point);
+        else session.set_destination(picked->point);
         shoot(what);
     };
     auto pixel_of = [&](size_t point_index) {
         const Scene scene = session.scene();
         const Camera camera = scene_camera(scene, view);
         return camera.project(scene.points.at(point_index).position);
+    };
+    // Where the navmesh polygon whose centre is drawn nearest the middle of the map is drawn: any
+    // level has one there, whatever its shape (the middle of the picture may be empty).
+    auto middle_polygon_pixel = [&]() -> std::optional<SDL_FPoint> {
+        const Scene scene = session.scene();
+        const Camera camera = scene_camera(scene, view);
+        const SDL_FRect map = map_rect(scene, camera);
+        const SDL_FPoint middle{map.x + 0.5f * map.w, map.y + 0.5f * map.h};
+        std::optional<SDL_FPoint> best;
+        float best_distance = 0.0f;
+        for (const nl_nav_polygon& polygon : scene.navmesh->polygons) {
+            const SDL_FPoint at = camera.project(polygon.centre);
+            const float distance = std::hypot(at.x - middle.x, at.y - middle.y);
+            if (!best || distance < best_distance) {
+                best = at;
+                best_distance = distance;
+            }
+        }
+        return best;
     };
 
     shoot("all agents to the destination");
@@ -87,12 +111,11 @@ int run_headless_script(ViewerSession& session, ViewSettings view, const std::st
     view.oblique = false;
     status = play_agents(session, shoot) ? status : 1;
     // Clicks, picked through the camera as the mouse's are: on the destination where it is drawn
-    // (the pick must find the same place again), in the middle of the map (a new destination), and
-    // a right click where the start is drawn (the start stays put).
-    // Seen from straight above, a click lands on the same spot (the surface it finds may be a
-    // little above a navmesh point, or a roof over it).
-    auto near = [](const ViewerSession::Point& a, const ViewerSession::Point& b) {
-        return std::hypot(a[0] - b[0], a[2] - b[2]) < 0.25f;
+    // (the pick must find the same place again), on the navmesh in the middle of the map (a new
+    // destination), and a right click where the start is drawn (the start stays put). Seen from
+    // straight above, a click lands on the same spot of the navmesh, or on a floor drawn above it.
+    auto near = [](const ViewerSession::Point& picked, const ViewerSession::Point& placed) {
+        return std::hypot(picked[0] - placed[0], picked[2] - placed[2]) < 0.25f && picked[1] > placed[1] - 0.5f;
     };
     if (const auto destination = session.destination()) {
         click_at(pixel_of(1), false, "click on the destination");
@@ -101,8 +124,7 @@ int run_headless_script(ViewerSession& session, ViewSettings view, const std::st
             status = 1;
         }
     }
-    click_at({0.35f * static_cast<float>(view.width), 0.5f * static_cast<float>(view.height)}, false,
-             "click in the middle of the map");
+    if (const auto middle = middle_polygon_pixel()) click_at(*middle, false, "click in the middle of the map");
     const ViewerSession::Point start = session.start();
     click_at(pixel_of(0), true, "right click on the start");
     if (!near(session.start(), start)) {

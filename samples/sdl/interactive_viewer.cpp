@@ -15,6 +15,7 @@ const char* const kViewerKeys =
     "  left click: destination (the agents walk there)    right click or shift-click: start (they stand there)\n"
     "  1 2 3: walker / short jumper / long jumper    A: all agents at once\n"
     "  L level  N navmesh  B boundary edges  K links  P paths  M agents  G legend  O oblique/top-down\n"
+    "  R roofs (cut away above the navmesh, or drawn)  I link numbers  X grid\n"
     "  S: save viewer.png    Q or Escape: quit\n";
 
 namespace {
@@ -37,6 +38,9 @@ bool handle_key(SDL_Keycode key, ViewerSession& session, ViewSettings& view) {
     case SDLK_m: l.agents = !l.agents; break;
     case SDLK_g: l.legend = !l.legend; break;
     case SDLK_o: view.oblique = !view.oblique; break;
+    case SDLK_r: l.roofs = !l.roofs; break;
+    case SDLK_i: l.link_numbers = !l.link_numbers; break;
+    case SDLK_x: l.grid = !l.grid; break;
     case SDLK_s:
         session.wait_for_paths();  // save what was asked for, not a picture mid-planning
         session.update();
@@ -85,10 +89,10 @@ int run_interactive_viewer(ViewerSession& session, ViewSettings view) {
                 }
                 if (event.type == SDL_MOUSEBUTTONDOWN) {
                     const SDL_FPoint pixel{static_cast<float>(event.button.x), static_cast<float>(event.button.y)};
-                    if (const auto point = session.pick(pixel, view)) {
+                    if (const auto picked = session.pick(pixel, view)) {
                         const bool start = event.button.button == SDL_BUTTON_RIGHT || (SDL_GetModState() & KMOD_SHIFT);
-                        if (start) session.set_start(*point);
-                        else session.set_destination(*point);
+                        if (start) session.set_start(picked->point);
+                        else session.set_destination(picked->point);
                         dirty = true;
                     }
                 }

@@ -1,9 +1,14 @@
 #include "legend.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <vector>
 
+#include "drop_runs.h"
+#include "island_colors.h"
 #include "palette.h"
+#include "scene_renderer.h"
 
 namespace nl::picture {
 namespace {
@@ -60,13 +65,35 @@ std::string format(const char* pattern, double a, double b = 0.0) {
 
 }  // namespace
 
-void draw_legend(Canvas& canvas, const Scene& scene, const ViewSettings& view, const Camera& camera) {
+float grid_step(float pixels_per_metre) {
+    for (float metres : kRoundLengths)
+        if (metres * pixels_per_metre >= 64.0f) return metres;
+    return kRoundLengths[sizeof kRoundLengths / sizeof kRoundLengths[0] - 1];
+}
+
+float grid_height(const Scene& scene) {
+    if (!scene.navmesh || scene.navmesh->polygons.empty()) return scene.level->info.bounds_min[1];
+    std::vector<float> heights;
+    for (const nl_nav_polygon& polygon : scene.navmesh->polygons) heights.push_back(polygon.centre[1]);
+    std::nth_element(heights.begin(), heights.begin() + static_cast<long>(heights.size() / 2), heights.end());
+    return heights[heights.size() / 2];
+}
+
+void drawn_heights(const Scene& scene, const HeightSlice* slice, float& lo, float& hi) {
+    lo = scene.level->info.bounds_min[1];
+    hi = scene.level->info.bounds_max[1];
+    if (slice && slice->active()) hi = std::max(lo, std::min(hi, slice->top()));
+}
+
+void draw_legend(Canvas& canvas, const Scene& scene, const ViewSettings& view, const Camera& camera,
+                 const HeightSlice* slice) {
     const float left = static_cast<float>(view.width) - kLegendWidth;
     canvas.rectangle({left, 0.0f, kLegendWidth, static_cast<float>(view.height)}, palette::kPanel);
     LegendWriter w(canvas, left + 16.0f, 14.0f);
 
     w.heading("LEVEL");
-    const float lo = scene.level->info.bounds_min[1], hi = scene.level->info.bounds_max[1];
+    float lo, hi;
+    drawn_heights(scene, slice, lo, hi);
     for (int i = 0; i < 60; ++i) {
         const float t = static_cast<float>(i) / 59.0f;
         const Rgba a = palette::kLowGround, b = palette::kHighGround;
@@ -78,11 +105,32 @@ void draw_legend(Canvas& canvas, const Scene& scene, const ViewSettings& view, c
     w.note(format("height: y = %.1f m (dark) to %.1f m (light)", lo, hi));
     w.note(std::to_string(scene.level->triangle_count()) + " triangles, " +
            (view.oblique ? "oblique view" : "top-down view"));
+    if (slice && slice->active())
+        w.note(format("roofs cut away: %.1f m above the navmesh", HeightSlice::kClearance));
+    if (view.layers.grid) {
+        w.note(format("grid: every %g m; x across, z down (labels)", grid_step(camera.pixels_per_metre())));
+        if (!camera.top_down()) w.note(format("(the grid lies at y = %.1f m)", grid_height(scene)));
+    }
 
     if (scene.navmesh) {
         w.heading("NAVMESH");
-        w.swatch_box(palette::kNavmeshFill, palette::kNavmeshEdge,
-                     std::to_string(scene.navmesh->polygons.size()) + " walkable polygons");
+        if (scene.islands) {
+            const IslandColors colors = island_colors(*scene.islands);
+            w.note(std::to_string(scene.navmesh->polygons.size()) + " polygons; " + islands_text(*scene.islands) + ":");
+            const size_t shown = std::min<size_t>(colors.by_size.size(), 4);
+            for (size_t rank = 0; rank < shown; ++rank) {
+                const uint32_t island = colors.by_size[rank];
+                w.swatch_box(colors.color[island], palette::kNavmeshEdge,
+                             "island " + std::to_string(island) + ": " + std::to_string(colors.polygons[island]) +
+                                 (colors.polygons[island] == 1 ? " polygon" : " polygons"));
+            }
+            if (colors.by_size.size() > shown)
+                w.note("... " + std::to_string(colors.by_size.size() - shown) + " more (colours repeat after 8)");
+            w.note("it walks and takes links within an island");
+        } else {
+            w.swatch_box(palette::kNavmeshFill, palette::kNavmeshEdge,
+                         std::to_string(scene.navmesh->polygons.size()) + " walkable polygons");
+        }
         w.swatch_line(palette::kBoundary, std::to_string(scene.navmesh->boundary_edges.size()) + " boundary edges");
 
         uint32_t counts[4] = {0, 0, 0, 0};
@@ -94,10 +142,12 @@ void draw_legend(Canvas& canvas, const Scene& scene, const ViewSettings& view, c
         }
         w.heading("LINKS (" + std::to_string(scene.navmesh->links.size()) + ")");
         w.swatch_line(palette::kJump, "jump: " + std::to_string(counts[0]));
-        w.swatch_line(palette::kDrop, "drop: " + std::to_string(counts[1]), true);
+        w.swatch_line(palette::kDrop, "drops: " + drop_summary(scene.navmesh->links), true);
         w.swatch_line(palette::kManual, "manual: " + std::to_string(counts[2]));
         w.swatch_line(palette::kPlugin, "plugin kinds: " + std::to_string(counts[3]));
         w.note("arrow: one way (" + std::to_string(one_way) + "); dots: both ends");
+        w.note("drops along a ledge: a line, one arrow");
+        if (view.layers.link_numbers) w.note("numbers: as in LINKS.json and navlink path");
     }
 
     if (!scene.platforms.empty()) {
@@ -120,15 +170,22 @@ void draw_legend(Canvas& canvas, const Scene& scene, const ViewSettings& view, c
     }
     if (!scene.points.empty()) {
         w.heading("POINTS");
-        for (const ScenePoint& p : scene.points)
-            w.swatch_dot(p.color, p.label + format(" (%.1f, %.1f", p.position[0], p.position[1]) +
-                                      format(", %.1f)", p.position[2]));
+        bool any_off_map = false;
+        for (const ScenePoint& p : scene.points) {
+            bool off_map = false;
+            point_marker(scene, camera, p.position, &off_map);
+            any_off_map = any_off_map || off_map;
+            w.swatch_dot(off_map ? palette::kOffMap : p.color,
+                         p.label + format(" (%.1f, %.1f", p.position[0], p.position[1]) +
+                             format(", %.1f)", p.position[2]) + (off_map ? " off the map" : ""));
+        }
+        if (any_off_map) w.note("off the map: at the edge, the arrow its way");
     }
 
     // A scale bar of a round length near 120 pixels.
     const float ppm = camera.pixels_per_metre();
     float metres = 1.0f;
-    for (float candidate : {1.0f, 2.0f, 5.0f, 10.0f, 20.0f, 50.0f, 100.0f, 200.0f, 500.0f})
+    for (float candidate : kRoundLengths)
         if (candidate * ppm <= 160.0f) metres = candidate;
     w.heading("SCALE");
     const float y = w.y() + 6.0f;

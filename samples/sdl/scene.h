@@ -53,9 +53,18 @@ struct ScenePlatform {
     samples::NavmeshContents navmesh;
 };
 
+// Where one body can get to on the navmesh (nl_navmesh_get_islands): the island of each polygon,
+// NL_NO_ISLAND for one in an area the body keeps out of. Polygons are coloured by island.
+struct SceneIslands {
+    std::string body;                  // whose islands: "walker"
+    std::vector<uint32_t> of_polygon;  // one per navmesh polygon
+    uint32_t count = 0;
+};
+
 struct Scene {
     const samples::Level* level = nullptr;              // required
     const samples::NavmeshContents* navmesh = nullptr;  // optional
+    const SceneIslands* islands = nullptr;              // optional: navmesh polygons coloured by island
     std::vector<ScenePlatform> platforms;
     std::vector<PathLayer> paths;
     std::vector<ScenePoint> points;  // start, goal, ...
@@ -71,6 +80,9 @@ struct Layers {
     bool paths = true;
     bool legend = true;
     bool agents = true;
+    bool grid = true;           // metre lines with x and z labels at the map's edges
+    bool link_numbers = false;  // each link's index in the navmesh's list (LINKS.json, path output)
+    bool roofs = false;         // draw level surfaces above the navmesh too (none cut away)
 };
 
 struct ViewSettings {

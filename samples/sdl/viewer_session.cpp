@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "demo_setup.h"
+#include "island_colors.h"
 #include "link_files.h"
 #include "navmesh_setup.h"
 #include "palette.h"
@@ -39,6 +40,7 @@ ViewerSession::ViewerSession(const ViewerOptions& options) : agents_(samples::de
     contents_ = samples::read_navmesh_contents(world_.get(), navmesh_);
     paths_.resize(agents_.size());
     current_ = agents_.size() - 1;
+    read_islands();
     if (platforms_level_) {
         add_passengers();
         return;
@@ -78,11 +80,37 @@ void ViewerSession::add_passengers() {
     crowd_.emplace(world_.get(), navmesh_, agents_, starts);
     for (size_t i = 0; i < agents_.size(); ++i) crowd_->send(i, platforms_level_->passengers[i].destination);
     contents_.links = samples::read_links(world_.get(), navmesh_);  // with the gangways onto the platforms
+    read_islands();
 }
 
 ViewerSession::~ViewerSession() { cancel_pending(); }
 
-std::optional<ViewerSession::Point> ViewerSession::pick(SDL_FPoint pixel, const ViewSettings& view) const {
+namespace {
+
+// Where the ray origin + t direction (t in [0, max_t]) meets triangle a b c from either side: t, or
+// a negative number (Moller-Trumbore).
+float ray_triangle(const float origin[3], const float direction[3], float max_t, const float* a, const float* b,
+                   const float* c) {
+    const float e1[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+    const float e2[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+    const float p[3] = {direction[1] * e2[2] - direction[2] * e2[1], direction[2] * e2[0] - direction[0] * e2[2],
+                        direction[0] * e2[1] - direction[1] * e2[0]};
+    const float det = e1[0] * p[0] + e1[1] * p[1] + e1[2] * p[2];
+    if (std::fabs(det) < 1e-12f) return -1.0f;
+    const float inv = 1.0f / det;
+    const float s[3] = {origin[0] - a[0], origin[1] - a[1], origin[2] - a[2]};
+    const float u = (s[0] * p[0] + s[1] * p[1] + s[2] * p[2]) * inv;
+    if (u < 0.0f || u > 1.0f) return -1.0f;
+    const float q[3] = {s[1] * e1[2] - s[2] * e1[1], s[2] * e1[0] - s[0] * e1[2], s[0] * e1[1] - s[1] * e1[0]};
+    const float v = (direction[0] * q[0] + direction[1] * q[1] + direction[2] * q[2]) * inv;
+    if (v < 0.0f || u + v > 1.0f) return -1.0f;
+    const float t = (e2[0] * q[0] + e2[1] * q[1] + e2[2] * q[2]) * inv;
+    return t >= 0.0f && t <= max_t ? t : -1.0f;
+}
+
+}  // namespace
+
+std::optional<ViewerSession::Picked> ViewerSession::pick(SDL_FPoint pixel, const ViewSettings& view) const {
     const Camera camera = scene_camera(scene(), view);
     float on_plane[3], direction[3];
     camera.unproject(pixel, on_plane);
@@ -93,16 +121,40 @@ std::optional<ViewerSession::Point> ViewerSession::pick(SDL_FPoint pixel, const 
     float reach = 0.0f;
     for (int k = 0; k < 3; ++k) reach += (hi[k] - lo[k]) * (hi[k] - lo[k]);
     reach = std::sqrt(reach) + 10.0f;
+    float origin[3];
+    for (int k = 0; k < 3; ++k) origin[k] = on_plane[k] - direction[k] * reach;
+
+    // The navmesh polygons first: the nearest one the ray meets (a polygon is convex: a fan).
+    float nearest = -1.0f;
+    uint32_t polygon = NL_NO_POLYGON;
+    for (uint32_t p = 0; p < contents_.polygons.size(); ++p) {
+        const nl_nav_polygon& poly = contents_.polygons[p];
+        const float* first = &contents_.vertices[3 * size_t(poly.vertices[0])];
+        for (uint32_t k = 1; k + 1 < poly.vertex_count; ++k) {
+            const float t = ray_triangle(origin, direction, 2.0f * reach, first,
+                                         &contents_.vertices[3 * size_t(poly.vertices[k])],
+                                         &contents_.vertices[3 * size_t(poly.vertices[k + 1])]);
+            if (t >= 0.0f && (nearest < 0.0f || t < nearest)) {
+                nearest = t;
+                polygon = p;
+            }
+        }
+    }
+    if (polygon != NL_NO_POLYGON)
+        return Picked{{origin[0] + direction[0] * nearest, origin[1] + direction[1] * nearest,
+                       origin[2] + direction[2] * nearest},
+                      polygon};
+
     nl_ray ray{};
     for (int k = 0; k < 3; ++k) {
-        ray.origin[k] = on_plane[k] - direction[k] * reach;
+        ray.origin[k] = origin[k];
         ray.direction[k] = direction[k];
     }
     ray.max_distance = 2.0f * reach;
     nl_ray_hit hit = nl_ray_hit_init();
     // Picking only reads the level; a failure (a point beyond the coordinate limit) is a miss.
     if (NL_FAILED(nl_world_cast_rays(world_.get(), &ray, 1, &hit)) || !hit.hit) return std::nullopt;
-    return Point{hit.point[0], hit.point[1], hit.point[2]};
+    return Picked{{hit.point[0], hit.point[1], hit.point[2]}, NL_NO_POLYGON};
 }
 
 template <typename Visit>
@@ -123,8 +175,13 @@ void ViewerSession::set_destination(const Point& destination) {
     request_paths();
 }
 
+void ViewerSession::read_islands() {
+    islands_ = picture::read_islands(world_.get(), navmesh_, agents_[current_].capabilities, agents_[current_].name);
+}
+
 void ViewerSession::select_agent(size_t index) {
     current_ = index % agents_.size();
+    read_islands();
     all_agents_ = false;
     request_paths();
 }
@@ -145,6 +202,7 @@ bool ViewerSession::advance(float dt) {
     samples::move_platforms(world_.get(), platforms_, time_);
     // The gangways onto the platforms are links of the ground: their ends have moved with them.
     contents_.links = samples::read_links(world_.get(), navmesh_);
+    read_islands();  // a gangway holds or not as its platform comes and goes
     crowd_->step(dt, true);
     return true;
 }
@@ -191,6 +249,7 @@ Scene ViewerSession::scene() const {
     Scene scene;
     scene.level = &level_;
     scene.navmesh = &contents_;
+    scene.islands = &islands_;
     scene.title = level_.name + "  |  agent: " + (all_agents_ ? std::string("all") : agents_[current_].name);
     for (size_t i = 0; i < agents_.size(); ++i) {
         if (!paths_[i]) continue;

@@ -42,8 +42,14 @@ public:
     ViewerSession(const ViewerSession&) = delete;
     ViewerSession& operator=(const ViewerSession&) = delete;
 
-    // The level surface under a pixel of a view (a ray cast through it), if any.
-    std::optional<Point> pick(SDL_FPoint pixel, const ViewSettings& view) const;
+    // What a click on a pixel of a view picks: the nearest navmesh polygon the ray through it meets
+    // (so a roof over the navmesh, cut away in the picture, is not picked), or where there is none,
+    // the level surface the ray meets (`polygon` NL_NO_POLYGON).
+    struct Picked {
+        Point point;
+        uint32_t polygon;
+    };
+    std::optional<Picked> pick(SDL_FPoint pixel, const ViewSettings& view) const;
     void set_start(const Point& start);
     void set_destination(const Point& destination);
     void select_agent(size_t index);
@@ -79,11 +85,13 @@ private:
     template <typename Visit>
     void for_selected(Visit visit);
     void cancel_pending();
+    void read_islands();
 
     samples::World world_;
     samples::Level level_;
     nl_navmesh_id navmesh_{};
     samples::NavmeshContents contents_;
+    SceneIslands islands_;  // the current agent's, drawn in the navmesh's colours
     std::vector<samples::AgentProfile> agents_;
     size_t current_ = 0;
     bool all_agents_ = true;

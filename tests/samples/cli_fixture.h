@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "run_program.h"
+#include "shared_levels.h"
 
 namespace nl::test {
 
@@ -19,6 +20,16 @@ inline std::string scratch_dir(const std::string& name) {
     std::filesystem::remove_all(dir);
     std::filesystem::create_directories(dir);
     return dir.string();
+}
+
+// The shared levels; none, after saying so, when the folder is missing (a failure where CI requires them).
+inline std::vector<std::filesystem::path> shared_levels_or_skip() {
+    const auto levels = shared_levels();
+    if (levels.empty()) {
+        if (levels_required()) FAIL("no shared levels in " << levels_dir());
+        MESSAGE("no shared levels in " << levels_dir() << ": skipped");
+    }
+    return levels;
 }
 
 // Runs `navlink ARGS...` in `dir`.
