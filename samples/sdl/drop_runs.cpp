@@ -9,7 +9,7 @@ namespace nl::picture {
 namespace {
 
 constexpr float kSameHeading = 0.42f;  // cos 65 degrees: the generator's fan of drop angles, not a corner
-constexpr float kSameLedge = 0.3f;     // metres between take-off heights
+constexpr float kSameLedge = 0.3f;     // metres between take-off heights, plus one per metre apart
 
 // The drop's heading seen from above, unit (0, 0 for a drop straight down).
 void heading(const nl_link& link, float out[2]) {
@@ -21,9 +21,10 @@ void heading(const nl_link& link, float out[2]) {
 
 bool same_run(const nl_link& a, const nl_link& b) {
     if (a.enabled != b.enabled || a.holds != b.holds) return false;
-    const float d[3] = {a.start[0] - b.start[0], a.start[1] - b.start[1], a.start[2] - b.start[2]};
-    if (d[0] * d[0] + d[1] * d[1] + d[2] * d[2] > kDropRunSpacing * kDropRunSpacing) return false;
-    if (std::fabs(a.start[1] - b.start[1]) > kSameLedge) return false;
+    // Take-offs near each other seen from above, at one height or up a ramp's edge (at most 45 degrees).
+    const float across = std::hypot(a.start[0] - b.start[0], a.start[2] - b.start[2]);
+    if (across > kDropRunSpacing) return false;
+    if (std::fabs(a.start[1] - b.start[1]) > kSameLedge + across) return false;
     float ha[2], hb[2];
     heading(a, ha);
     heading(b, hb);

@@ -1,8 +1,9 @@
 // Drops along one ledge drawn as one arrow. A level's drops come in rows, one every sample spacing
 // along each ledge and fanned out at a few angles, whose arrows overlap into a smear: drops whose
-// take-offs are neighbours (at most kDropRunSpacing apart, at one height) and that head about the
-// same way (within 65 degrees seen from above: a fan, not the two sides of a corner) make one run,
-// drawn as a line along the ledge with one arrow, its middle drop's.
+// take-offs are neighbours (at most kDropRunSpacing apart seen from above, at one height or up a
+// ramp's edge) and that head about the same way (within 65 degrees seen from above: a fan, not the
+// two sides of a corner) make one run, drawn as a line along the ledge with one arrow, its middle
+// drop's.
 #pragma once
 
 #include <navlink/navlink.h>

@@ -10,7 +10,7 @@
 namespace nl::picture {
 
 constexpr float kLegendWidth = 430.0f;
-constexpr float kLegendMinHeight = 560.0f;  // tall enough for three paths and two points
+constexpr float kLegendMinHeight = 720.0f;  // tall enough for four islands, three paths and two points
 
 // Round lengths in metres, for the scale bar and the grid's step.
 constexpr float kRoundLengths[] = {1.0f, 2.0f, 5.0f, 10.0f, 20.0f, 50.0f, 100.0f, 200.0f, 500.0f, 1000.0f};
