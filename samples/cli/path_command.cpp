@@ -101,7 +101,8 @@ int run_path(int argc, char** argv) {
         request.oblique = args.has("oblique");
         request.link_numbers = args.has("link-numbers");
         request.roofs = args.has("roofs");
-        request.islands = picture::read_islands(level.world(), level.navmesh(), agent.capabilities, agent.name);
+        request.islands = picture::read_islands(level.world(), level.navmesh(), agent.capabilities,
+                                                args.has("agent") ? agent.name : "default body");
         request.title = "navlink path " + level.level().name;
         picture::PathLayer layer{agent.name + ": " + samples::outcome_name(path.result.outcome),
                                  picture::palette::agent(1), path.points};

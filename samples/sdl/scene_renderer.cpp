@@ -289,8 +289,14 @@ void draw_links(Canvas& canvas, const Camera& camera, const samples::NavmeshCont
     }
     if (!numbers) return;
     // The index in the navmesh's link list: the link's place in LINKS.json and its #N in navlink path.
+    // Links from one place (a fan of drops) stack their numbers downwards.
+    std::vector<SDL_FPoint> anchors;
     for (size_t i = 0; i < nav.links.size(); ++i) {
-        const SDL_FPoint at = number_place(camera, nav.links[i]);
+        SDL_FPoint at = number_place(camera, nav.links[i]);
+        int below = 0;
+        for (const SDL_FPoint& other : anchors) below += std::hypot(other.x - at.x, other.y - at.y) < 3.0f;
+        anchors.push_back(at);
+        at.y += 11.0f * static_cast<float>(below);
         const std::string text = std::to_string(i);
         const float w = Canvas::text_width(text, 1.3f);
         canvas.rectangle({at.x + 3.0f, at.y - 12.0f, w + 3.0f, 10.0f}, palette::kShadow);
