@@ -9,7 +9,9 @@
 //   raycast: 10,000 rays from random navmesh points in random directions, 0-10 m long, located by
 //     NavLink: nl_navmesh_raycast on the whole batch (one worker), and called once per ray, against
 //     Detour's raycast ray by ray from the same polygon and point, fastest of three rounds,
-//     alternately; with how often the two agree (both arrive, or both hit within 1 cm).
+//     alternately; with how often the two agree (both arrive, or both hit within 1 cm). On
+//     undulating (coordinates near 5,000 m) about 2% disagree: Detour reports a wall at t = 0 where
+//     its segment-polygon test misses the start polygon by rounding, and NavLink walks on.
 // Then a large host navmesh (a 400 x 400 grid of quads in strips joined by one-way links): the map's
 // build time and an unreachable goal against nl_path_find.
 // One line each:
