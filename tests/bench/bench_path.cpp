@@ -5,8 +5,10 @@
 // Detour findNearestPoly x 2 + findPath + findStraightPath, NavLink nl_path_find (which snaps both ends,
 // searches and string-pulls), each pair three times, its fastest time counting. One line per level:
 //   level=NAME polys=N queries=N nl_us=X detour_us=X ratio=X nl_len=X detour_len=X nl_bytes=N detour_bytes=N
+//     ... exact_pairs=N within_0.1%=X worst_excess=X%
 // (lengths: means over the pairs both complete; bytes: NavLink's navmesh and link index vs Detour's
-// navmesh data), then one line with the queue's throughput on 1 and 2 path workers on the largest level.
+// navmesh data; exactness: the first 500 complete paths' x-z lengths against the exact shortest walk
+// between the same ends, tests/support/shortest_path_reference.h), then one line with the queue's throughput on 1 and 2 path workers on the largest level.
 #include <DetourCommon.h>
 #include <DetourNavMesh.h>
 #include <DetourNavMeshQuery.h>
@@ -18,6 +20,7 @@
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <optional>
 #include <random>
 #include <string>
 #include <thread>
@@ -25,12 +28,14 @@
 
 #include "clock.h"
 #include "recast_detour.h"
+#include "shortest_path_reference.h"
 #include "world.h"
 
 namespace {
 
 constexpr int kPairs = 10000;
 constexpr int kRounds = 3;
+constexpr int kExactPairs = 500;
 constexpr int kMaxPolys = 1024;
 constexpr float kHalfExtents[3] = {2.0f, 4.0f, 2.0f};
 
@@ -169,14 +174,41 @@ bool compare(const char* path, Level& level) {
     }
     double nl_ms = 0.0, detour_ms = 0.0;
     for (int i = 0; i < kPairs; ++i) nl_ms += nl_best[i], detour_ms += detour_best[i];
+
+    // Exactness (issue 20): the first kExactPairs complete paths' x-z lengths (what the funnel
+    // minimises) against the exact shortest walk between the same snapped ends.
+    const nl::test::ShortestPathReference reference(level.world->core->navmeshes().path_graph(
+        nl::Handle{level.navmesh.index1, level.navmesh.generation})->navmesh());
+    int exact_pairs = 0, within = 0;
+    double worst_excess = 0.0;
+    for (int i = 0; i < kPairs && exact_pairs < kExactPairs; ++i) {
+        const nl_path_request_def def = request_for(level, level.pairs[i]);
+        nl_path_result result = nl_path_result_init();
+        uint32_t count = 0;
+        nl_path_find(level.world, &def, &result, points.data(), uint32_t(points.size()), &count);
+        if (result.outcome != NL_PATH_COMPLETE || count == 0) continue;
+        double walked = 0.0;
+        for (uint32_t k = 1; k < count; ++k)
+            walked += std::hypot(double(points[k].position[0]) - points[k - 1].position[0],
+                                 double(points[k].position[2]) - points[k - 1].position[2]);
+        const std::optional<double> shortest = reference.length(nl::Vec3(result.start[0], result.start[1], result.start[2]),
+                                                                nl::Vec3(result.goal[0], result.goal[1], result.goal[2]));
+        if (!shortest) continue;  // the reference finds no walk (the search went where it sees none)
+        ++exact_pairs;
+        const double excess = walked / std::max(*shortest, 1e-9) - 1.0;
+        worst_excess = std::max(worst_excess, excess);
+        within += excess <= 1e-3 ? 1 : 0;
+    }
     const nl::Handle handle{level.navmesh.index1, level.navmesh.generation};
     const auto graph = level.world->core->navmeshes().path_graph(handle);
     const size_t nl_bytes = graph->navmesh().memory_bytes() + graph->link_index_bytes();
     std::printf("level=%s polys=%u queries=%d nl_us=%.2f detour_us=%.2f ratio=%.2f nl_len=%.4f detour_len=%.4f nl_bytes=%zu "
-                "detour_bytes=%d both_complete=%d nl_nodes=%.1f detour_nodes=%.1f\n",
+                "detour_bytes=%d both_complete=%d nl_nodes=%.1f detour_nodes=%.1f exact_pairs=%d within_0.1%%=%.4f "
+                "worst_excess=%.4f%%\n",
                 level.name.c_str(), level.polygons, kPairs, 1000.0 * nl_ms / kPairs, 1000.0 * detour_ms / kPairs,
                 nl_ms / detour_ms, nl_length / std::max(1, both_complete), detour_length / std::max(1, both_complete),
-                nl_bytes, detour.bytes, both_complete, nl_nodes / kPairs, detour_nodes / kPairs);
+                nl_bytes, detour.bytes, both_complete, nl_nodes / kPairs, detour_nodes / kPairs, exact_pairs,
+                double(within) / std::max(1, exact_pairs), 100.0 * worst_excess);
     std::fflush(stdout);
     return true;
 }

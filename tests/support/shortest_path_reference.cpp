@@ -72,15 +72,17 @@ void ShortestPathReference::containing(double x, double z, std::vector<uint32_t>
     }
 }
 
-bool ShortestPathReference::joined(const std::vector<uint32_t>& before, const std::vector<uint32_t>& after,
-                                   const std::vector<uint32_t>& at_cut) const {
+void ShortestPathReference::reached_from(const std::vector<uint32_t>& before, const std::vector<uint32_t>& after,
+                                         const std::vector<uint32_t>& at_cut, std::vector<uint32_t>& out) const {
     // Through the polygons around the cut point, from edge to shared edge: round a corner where
-    // polygons meet, never across a corner where two touch alone.
+    // polygons meet, never across a corner where two touch alone, never onto another floor.
     std::vector<uint32_t> reached(before), frontier(before);
+    out.clear();
     while (!frontier.empty()) {
         const uint32_t p = frontier.back();
         frontier.pop_back();
-        if (std::find(after.begin(), after.end(), p) != after.end()) return true;
+        if (std::find(after.begin(), after.end(), p) != after.end() && std::find(out.begin(), out.end(), p) == out.end())
+            out.push_back(p);
         for (uint32_t k = 0; k < navmesh_.corner_count(p); ++k) {
             const uint32_t q = navmesh_.neighbour(p, k);
             if (q == kNoPolygon || std::find(at_cut.begin(), at_cut.end(), q) == at_cut.end() ||
@@ -90,19 +92,26 @@ bool ShortestPathReference::joined(const std::vector<uint32_t>& before, const st
             frontier.push_back(q);
         }
     }
-    return false;
+}
+
+void ShortestPathReference::on_floor(const Vec3& point, std::vector<uint32_t>& out) const {
+    std::vector<uint32_t> below_or_above;
+    containing(point.x(), point.z(), below_or_above);
+    out.clear();
+    for (const uint32_t p : below_or_above) {
+        if (std::fabs(navmesh_.surface_height(p, point.x(), point.z()) - point.y()) <= navmesh_.agent().max_climb) out.push_back(p);
+    }
 }
 
 bool ShortestPathReference::walkable(const Vec3& from, const Vec3& to) const {
     const Point2 a = seen_from_above(from), b = seen_from_above(to);
     const double dx = b.x - a.x, dz = b.z - a.z, length2 = dx * dx + dz * dz;
-    std::vector<uint32_t> here, previous, at_cut;
-    if (length2 == 0.0) {
-        containing(a.x, a.z, here);
-        return !here.empty();
-    }
+    std::vector<uint32_t> current, here, at_cut, next;
+    on_floor(from, current);
+    if (current.empty()) return false;
+    if (length2 == 0.0) return true;
     // Every place the segment meets a polygon edge splits it; each piece between lies in one polygon
-    // or in none, which its middle tells.
+    // (or two, along a shared edge), which its middle tells.
     std::vector<double> cuts{0.0, 1.0};
     for (uint32_t p = 0; p < navmesh_.polygon_count(); ++p) {
         const uint32_t n = navmesh_.corner_count(p);
@@ -122,35 +131,39 @@ bool ShortestPathReference::walkable(const Vec3& from, const Vec3& to) const {
             if (s >= -1e-9 && s <= 1 + 1e-9) cuts.push_back(t);
         }
     }
-    // Consecutive pieces must be in one polygon or in two that share an edge: polygons touching at a
-    // corner alone have no portal between them, and the search does not squeeze through.
+    // The walk goes piece by piece from the polygons it is in to those of the next piece it reaches
+    // around their cut point (reached_from), starting on the start's floor and ending on the end's.
     std::sort(cuts.begin(), cuts.end());
     for (size_t i = 0; i + 1 < cuts.size(); ++i) {
         const double t0 = std::clamp(cuts[i], 0.0, 1.0), t1 = std::clamp(cuts[i + 1], 0.0, 1.0);
         if (t1 - t0 < 1e-12) continue;
         const double middle = 0.5 * (t0 + t1);
         containing(a.x + middle * dx, a.z + middle * dz, here);
-        if (here.empty()) return false;
-        if (!previous.empty()) {
-            containing(a.x + t0 * dx, a.z + t0 * dz, at_cut);
-            if (!joined(previous, here, at_cut)) return false;
-        }
-        previous.swap(here);
+        containing(a.x + t0 * dx, a.z + t0 * dz, at_cut);
+        reached_from(current, here, at_cut, next);
+        if (next.empty()) return false;
+        current.swap(next);
     }
-    return true;
+    on_floor(to, here);
+    containing(b.x, b.z, at_cut);
+    reached_from(current, here, at_cut, next);
+    return !next.empty();
 }
 
-std::optional<double> ShortestPathReference::length(const Vec3& start, const Vec3& goal) const {
+std::optional<double> ShortestPathReference::length(const Vec3& start, const Vec3& goal, std::vector<Vec3>* bends) const {
+    if (bends) bends->clear();
     if (walkable(start, goal)) return distance(seen_from_above(start), seen_from_above(goal));
     // Dijkstra over the corners, from the start (which sees some of them) to the goal (likewise).
     const size_t n = corners_.size();
     std::vector<double> best(n, kInfinity), to_goal(n, kInfinity);
+    std::vector<size_t> previous(n, n);
     std::vector<bool> done(n, false);
     for (size_t i = 0; i < n; ++i) {
         if (walkable(start, corners_[i])) best[i] = distance(seen_from_above(start), seen_from_above(corners_[i]));
         if (walkable(corners_[i], goal)) to_goal[i] = distance(seen_from_above(corners_[i]), seen_from_above(goal));
     }
     double answer = kInfinity;
+    size_t last = n;
     for (;;) {
         size_t next = n;
         for (size_t i = 0; i < n; ++i) {
@@ -158,12 +171,16 @@ std::optional<double> ShortestPathReference::length(const Vec3& start, const Vec
         }
         if (next == n || best[next] >= answer) break;
         done[next] = true;
-        answer = std::min(answer, best[next] + to_goal[next]);
+        if (best[next] + to_goal[next] < answer) answer = best[next] + to_goal[next], last = next;
         for (size_t j = 0; j < n; ++j) {
-            if (!done[j]) best[j] = std::min(best[j], best[next] + corner_distance_[next][j]);
+            if (!done[j] && best[next] + corner_distance_[next][j] < best[j]) best[j] = best[next] + corner_distance_[next][j], previous[j] = next;
         }
     }
     if (answer == kInfinity) return std::nullopt;
+    if (bends) {
+        for (size_t i = last; i != n; i = previous[i]) bends->push_back(corners_[i]);
+        std::reverse(bends->begin(), bends->end());
+    }
     return answer;
 }
 
