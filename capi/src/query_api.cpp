@@ -168,10 +168,10 @@ NL_API nl_status nl_navmesh_get_islands(const nl_world* world, nl_navmesh_id nav
         const auto graph = graph_of(w, navmesh);
         const auto map = map_of(*graph, body);
         const uint32_t polygons = graph->navmesh().polygon_count();
+        if (out_island_count) *out_island_count = map->island_count();  // also when the polygons do not fit
         nl::capi::list_into(polygons, out_islands, capacity, out_count, "out_islands", [&] {
             for (uint32_t p = 0; p < polygons; ++p) out_islands[p] = map->island(p);
         });
-        if (out_island_count) *out_island_count = map->island_count();
     });
 }
 
@@ -264,7 +264,7 @@ NL_API nl_status nl_navmesh_random_points(const nl_world* world, nl_navmesh_id n
         const Body body = read_filter(d.filter, "def->filter");
         const auto graph = graph_of(w, navmesh);
         const nl::NavMesh* mesh = &graph->navmesh();
-        const nl::SurfacePose pose = w.navmesh_pose(to_handle(navmesh));
+        const nl::SurfacePose pose = nl::pose_of(graph->frame());  // the graph's own navmesh and frame
         nl::RandomPointsRequest request;
         request.centre = pose.surface_point(nl::capi::read_position(d.centre, "def->centre"));
         request.radius = nl::capi::read_amount(d.radius, "def->radius");
@@ -279,8 +279,13 @@ NL_API nl_status nl_navmesh_random_points(const nl_world* world, nl_navmesh_id n
         if (count > 0) require(out_points, "out_points");
         *out_found = 0;
         if (count == 0) return;
+        std::vector<uint8_t> reached_islands;  // one walk of the island graph for every polygon asked about
+        if (map) map->reachable_islands(d.reachable_from, reached_islands);
         const auto allowed_fn = [&](uint32_t p) {
-            return body.may_enter(*mesh, p) && (!map || map->reaches(d.reachable_from, p));
+            if (!body.may_enter(*mesh, p)) return false;
+            if (!map || p == d.reachable_from) return true;
+            const uint32_t island = map->island(p);
+            return island != nl::ReachabilityMap::kNoIsland && reached_islands[island] != 0;
         };
         const nl::PolygonFilter allowed(allowed_fn);
         thread_local std::vector<nl::NavPoint> points;

@@ -177,7 +177,10 @@ NavPoint NavMesh::find_nearest(const Vec3& point, const Vec3& half_extents) cons
 
 NavPoint NavMesh::find_nearest_anywhere(const Vec3& point, const Vec3& half_extents) const {
     if (polygon_count() == 0) return NavPoint{};
-    Vec3 extents = half_extents.cwiseMax(Vec3::Constant(1e-3f));
+    // No polygon is nearer than the navmesh's bounds: start the widening there (a point far off
+    // would otherwise double its box some thirty times).
+    const Vec3 to_bounds = (bounds_.min - point).cwiseMax(point - bounds_.max).cwiseMax(Vec3::Zero());
+    Vec3 extents = half_extents.cwiseMax(Vec3::Constant(1e-3f)).cwiseMax(to_bounds + Vec3::Constant(1e-3f));
     const Vec3 lo = bounds_.min.cwiseMin(point), hi = bounds_.max.cwiseMax(point);
     for (;;) {
         if (((point - extents).array() <= lo.array()).all() && ((point + extents).array() >= hi.array()).all())

@@ -49,6 +49,13 @@ void clip(std::vector<Point2>& ring, const Point2& normal, float limit, std::vec
 // The regular polygon circumscribing the circle that pieces are clipped to: only the slivers between
 // it and the circle are drawn and thrown away (1.3% of its area).
 constexpr int kClipSides = 16;
+// Their outward normals, cos and sin of 2 pi k / 16 written out: a C library's last bit of cos and
+// sin would otherwise make another platform's points differ.
+constexpr float kClipNormals[kClipSides][2] = {
+    {1.0f, 0.0f},           {0.92387953f, 0.38268343f},   {0.70710678f, 0.70710678f},   {0.38268343f, 0.92387953f},
+    {0.0f, 1.0f},           {-0.38268343f, 0.92387953f},  {-0.70710678f, 0.70710678f},  {-0.92387953f, 0.38268343f},
+    {-1.0f, 0.0f},          {-0.92387953f, -0.38268343f}, {-0.70710678f, -0.70710678f}, {-0.38268343f, -0.92387953f},
+    {0.0f, -1.0f},          {0.38268343f, -0.92387953f},  {0.70710678f, -0.70710678f},  {0.92387953f, -0.38268343f}};
 
 // A convex part of one polygon's fan triangle, seen from above, that points are drawn in.
 struct Piece {
@@ -75,13 +82,13 @@ Pieces collect_pieces(const NavMesh& navmesh, const RandomPointsRequest& request
     const Point2 centre(request.centre.x(), request.centre.z());
     std::vector<Point2> ring, scratch;
     for (uint32_t p = 0; p < navmesh.polygon_count(); ++p) {
-        if (allowed && !(*allowed)(p)) continue;
         if (in_circle) {
             const Aabb& box = navmesh.polygon_bounds(p);
             if (box.min.x() > centre.x() + request.radius || box.max.x() < centre.x() - request.radius ||
                 box.min.z() > centre.y() + request.radius || box.max.z() < centre.y() - request.radius)
                 continue;
         }
+        if (allowed && !(*allowed)(p)) continue;
         const uint32_t n = navmesh.corner_count(p);
         const Vec3& a = navmesh.vertex(navmesh.corner(p, 0));
         for (uint32_t k = 1; k + 1 < n; ++k) {
@@ -94,8 +101,7 @@ Pieces collect_pieces(const NavMesh& navmesh, const RandomPointsRequest& request
             const double slope = 0.5 * double((b - a).cross(c - a).norm()) / seen_from_above;
             if (in_circle) {
                 for (int side = 0; side < kClipSides && ring.size() >= 3; ++side) {
-                    const float angle = 6.28318530718f * float(side) / kClipSides;
-                    const Point2 normal(std::cos(angle), std::sin(angle));
+                    const Point2 normal(kClipNormals[side][0], kClipNormals[side][1]);
                     clip(ring, normal, normal.dot(centre) + request.radius, scratch);
                 }
                 if (ring.size() < 3) continue;

@@ -119,7 +119,7 @@ SurfaceRayHit raycast_surface(const NavMesh& navmesh, uint32_t polygon, const Ve
         result.point.y() = navmesh.surface_height(p, result.point.x(), result.point.z());
         result.end_polygon = p;
     };
-    uint32_t p = polygon;
+    uint32_t p = polygon, came_from = kNoPolygon;
     float entered_at = 0.0f;
     for (uint32_t walked = 0; walked < std::max<uint32_t>(1, options.max_polygons); ++walked) {
         if (options.polygons) options.polygons->push_back(p);
@@ -129,26 +129,36 @@ SurfaceRayHit raycast_surface(const NavMesh& navmesh, uint32_t polygon, const Ve
         const uint32_t n = navmesh.corner_count(p);
         const uint32_t* const corners = navmesh.corners_of(p);
         float leaves_at = std::numeric_limits<float>::infinity();
-        uint32_t exit = n;
+        uint32_t exit = n, back_edge = n;
+        float back_at = 0.0f;
         for (uint32_t k = 0; k < n; ++k) {
             const Vec3& a = navmesh.vertex(corners[k]);
             const Vec3& b = navmesh.vertex(corners[k + 1 == n ? 0 : k + 1]);
             const float ex = b.x() - a.x(), ez = b.z() - a.z();
             const float towards_outside = dz * ex - dx * ez;  // > 0: the line heads out across this edge's line
             if (!(towards_outside > 0.0f)) continue;
+            // A straight line never enters a convex polygon twice: the edge it came in by is no way
+            // out. On a navmesh with overlapping polygons it would be, and the walk would bounce
+            // between them: there it is a wall.
             const float t = (ez * (from.x() - a.x()) - ex * (from.z() - a.z())) / towards_outside;
+            if (came_from != kNoPolygon && navmesh.neighbours_of(p)[k] == came_from) {
+                back_edge = k;
+                back_at = t;
+                continue;
+            }
             if (t < leaves_at) {
                 leaves_at = t;
                 exit = k;
             }
         }
+        if (exit == n && back_edge != n) exit = back_edge, leaves_at = back_at;  // only the way back out
         if (exit == n || leaves_at >= 1.0f) {  // the end is in this polygon (or the line has no length)
             result.point = Vec3(to.x(), navmesh.surface_height(p, to.x(), to.z()), to.z());
             result.end_polygon = p;
             return result;
         }
         const float t = std::max(leaves_at, entered_at);  // rounding never walks it back
-        const uint32_t next = navmesh.neighbours_of(p)[exit];
+        const uint32_t next = exit == back_edge ? kNoPolygon : navmesh.neighbours_of(p)[exit];
         if (!may_enter(options, next)) {  // a wall before the end
             stop_at(p, t);
             const Vec3& a = navmesh.vertex(corners[exit]);
@@ -157,6 +167,7 @@ SurfaceRayHit raycast_surface(const NavMesh& navmesh, uint32_t polygon, const Ve
             result.wall_normal = Vec3(b.z() - a.z(), 0.0f, a.x() - b.x()).normalized();
             return result;
         }
+        came_from = p;
         p = next;
         entered_at = t;
     }

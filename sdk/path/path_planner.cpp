@@ -116,11 +116,15 @@ void plan_path_in_surface_space(const PathGraph& graph, const PathQuery& query, 
         return;
     }
     result.goal = goal.point;
-    // A goal out of reach fails at once, without a search over everything the body can reach.
-    if (!query.accept_partial && start.polygon != goal.polygon &&
-        !graph.reachability(query.agent, query.area_costs)->reaches(start.polygon, goal.polygon)) {
-        result.outcome = PathOutcome::NoPath;
-        return;
+    // A goal out of reach fails at once when the body's reachability map is built. A request never
+    // builds one before searching: it would cost a pass over the whole navmesh (uncancellable, past
+    // max_nodes) for a goal two steps away.
+    if (!query.accept_partial && start.polygon != goal.polygon) {
+        const auto map = graph.reachability_if_built(query.agent, query.area_costs);
+        if (map && !map->reaches(start.polygon, goal.polygon)) {
+            result.outcome = PathOutcome::NoPath;
+            return;
+        }
     }
 
     thread_local CorridorSearch corridor;
@@ -133,6 +137,9 @@ void plan_path_in_surface_space(const PathGraph& graph, const PathQuery& query, 
     }
     if (!corridor.reached_goal && !query.accept_partial) {
         result.outcome = PathOutcome::NoPath;
+        // The search went through everything the body reaches: the map costs about as much again,
+        // and answers the next requests for goals out of reach on this graph at once.
+        if (!corridor.out_of_nodes) graph.reachability(query.agent, query.area_costs);
         return;
     }
     Vec3 end = goal.point;

@@ -15,8 +15,14 @@ struct PortalSpan {
     Vec3 right;
 };
 
+// How much wider than the body needs a narrowed portal must be to stay open. Without it a portal
+// exactly twice the margin wide (a 1 m corridor for a body 0.5 m wider than the navmesh's) would stay
+// open or close by float rounding of its width, and when open be a pinhole of no width.
+constexpr float kPortalSlack = 0.001f;
+
 // The opening from polygon p across its edge k (corner k to k + 1), seen walking out of p: left and
-// right as the walker sees them. False if `margin` leaves no room.
+// right as the walker sees them. False if `margin` leaves no room: the portal is not at least
+// kPortalSlack wider than the margins at its outline ends.
 inline bool portal_span(const NavMesh& mesh, uint32_t p, uint32_t k, float margin, PortalSpan& span) {
     const uint32_t n = mesh.corner_count(p);
     const uint32_t a = mesh.corner(p, k), b = mesh.corner(p, k + 1 == n ? 0 : k + 1);
@@ -30,7 +36,7 @@ inline bool portal_span(const NavMesh& mesh, uint32_t p, uint32_t k, float margi
     const Vec3 across = span.right - span.left;
     const float width = std::sqrt(across.x() * across.x() + across.z() * across.z());
     const float needed = margin * (float(left_on_outline) + float(right_on_outline));
-    if (width <= needed) return false;
+    if (width < needed + kPortalSlack) return false;
     const Vec3 step = across * (margin / width);
     if (left_on_outline) span.left += step;
     if (right_on_outline) span.right -= step;

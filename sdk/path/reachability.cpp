@@ -223,16 +223,18 @@ bool ReachabilityMap::island_reaches(uint32_t from, uint32_t to) const {
     const uint32_t from_row = closure_row_[from], to_row = closure_row_[to];
     if (from_row == kNoIsland || to_row == kNoIsland) return false;  // an island no link joins reaches only itself
     if (closure_width_ != 0) return (closure_[size_t(from_row) * closure_width_ + (to_row >> 6)] >> (to_row & 63)) & 1u;
-    std::vector<uint8_t> reached;
-    mark_reachable(from, reached);
+    thread_local std::vector<uint8_t> reached;
+    mark_reachable(&from, 1, reached);
     return reached[to] != 0;
 }
 
-void ReachabilityMap::mark_reachable(uint32_t from, std::vector<uint8_t>& reached) const {
+void ReachabilityMap::mark_reachable(const uint32_t* from, size_t count, std::vector<uint8_t>& reached) const {
     reached.assign(island_count_, 0);
     std::vector<uint32_t>& stack = scratch_marks();
-    stack.assign(1, from);
-    reached[from] = 1;
+    stack.clear();
+    for (size_t i = 0; i < count; ++i) {
+        if (!reached[from[i]]) reached[from[i]] = 1, stack.push_back(from[i]);
+    }
     while (!stack.empty()) {
         const uint32_t island = stack.back();
         stack.pop_back();
@@ -256,19 +258,16 @@ bool ReachabilityMap::reaches(uint32_t from, uint32_t to) const {
     return false;
 }
 
+void ReachabilityMap::reachable_islands(uint32_t from, std::vector<uint8_t>& reached) const {
+    if (island_of_[from] != kNoIsland) return mark_reachable(&island_of_[from], 1, reached);
+    mark_reachable(exits_begin(from), size_t(exits_end(from) - exits_begin(from)), reached);  // out of an excluded polygon
+}
+
 void ReachabilityMap::reachable_polygons(uint32_t from, std::vector<uint32_t>& out) const {
     out.clear();
-    std::vector<uint8_t> reached(island_count_, 0), more;
-    if (island_of_[from] != kNoIsland) {
-        mark_reachable(island_of_[from], reached);
-    } else {
-        out.push_back(from);
-        for (const uint32_t* e = exits_begin(from); e != exits_end(from); ++e) {
-            if (reached[*e]) continue;
-            mark_reachable(*e, more);
-            for (uint32_t i = 0; i < island_count_; ++i) reached[i] |= more[i];
-        }
-    }
+    std::vector<uint8_t> reached;
+    reachable_islands(from, reached);
+    if (island_of_[from] == kNoIsland) out.push_back(from);
     for (uint32_t i = 0; i < island_count_; ++i) {
         if (reached[i]) out.insert(out.end(), polygons_.begin() + first_polygon_[i], polygons_.begin() + first_polygon_[i + 1]);
     }

@@ -48,12 +48,16 @@ public:
     bool reaches(uint32_t from, uint32_t to) const;
     // Every polygon reachable from `from` (itself included), in ascending order, into `out`.
     void reachable_polygons(uint32_t from, std::vector<uint32_t>& out) const;
+    // The islands reachable from `from` (1 each), sized island_count(): one walk of the island
+    // graph for asking about many polygons (an excluded `from` itself has no island: ask for it apart).
+    void reachable_islands(uint32_t from, std::vector<uint8_t>& out) const;
     // The island a polygon belongs to, or kNoIsland for one in an excluded area. Islands are numbered
     // from 0 in order of their lowest polygon.
     uint32_t island(uint32_t polygon) const { return island_of_[polygon]; }
     uint32_t island_count() const { return island_count_; }
     // Whether island-to-island questions read a precomputed closure (true unless the links join more
-    // islands than kMaxClosureIslands; then they walk the island graph).
+    // islands than kMaxClosureIslands; then each question walks the island graph: linear in the
+    // islands and their links, not constant).
     bool has_closure() const { return closure_width_ != 0 || linked_count_ == 0; }
     size_t memory_bytes() const;
 
@@ -63,8 +67,8 @@ public:
 
 private:
     bool island_reaches(uint32_t from, uint32_t to) const;
-    // Marks every island reachable from `from` in `reached` (sized island_count()).
-    void mark_reachable(uint32_t from, std::vector<uint8_t>& reached) const;
+    // Marks every island reachable from the `count` islands at `from` in `reached` (sized island_count()).
+    void mark_reachable(const uint32_t* from, size_t count, std::vector<uint8_t>& reached) const;
     // The islands a polygon in an excluded area leads into, as [begin, end).
     const uint32_t* exits_begin(uint32_t polygon) const;
     const uint32_t* exits_end(uint32_t polygon) const;

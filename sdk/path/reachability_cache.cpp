@@ -1,6 +1,7 @@
 #include "path/reachability_cache.h"
 
 #include <algorithm>
+#include <chrono>
 
 #include "path/reachability.h"
 
@@ -50,12 +51,13 @@ std::shared_ptr<const ReachabilityMap> ReachabilityCache::get(const PathGraph& g
             for (const std::shared_ptr<Class>& c : classes_) {
                 if (c->key == key) map_class = c;
             }
-            if (!map_class) {
-                map_class = std::make_shared<Class>(Class{std::move(key), promise.get_future().share()});
-                classes_.push_back(map_class);
+            const bool new_class = !map_class;
+            if (new_class) map_class = std::make_shared<Class>(Class{std::move(key), promise.get_future().share()});
+            remember(Body{agent, excluded, map_class, ++clock_});
+            if (new_class) {
+                classes_.push_back(map_class);  // after remember(), which may throw: no class without its builder
                 build = true;
             }
-            remember(Body{agent, excluded, map_class, ++clock_});
         }
     }
     if (build) {
@@ -70,16 +72,48 @@ std::shared_ptr<const ReachabilityMap> ReachabilityCache::get(const PathGraph& g
     return map_class->map.get();
 }
 
+std::shared_ptr<const ReachabilityMap> ReachabilityCache::ready(const AgentCapabilities& agent,
+                                                                const std::vector<float>& area_costs) const {
+    const std::array<uint64_t, 4> excluded = ReachabilityClass::excluded_areas_of(area_costs);
+    std::lock_guard<std::mutex> lock(mutex_);
+    for (const Body& body : bodies_) {
+        if (body.excluded_areas != excluded || !same_body(body.agent, agent)) continue;
+        const MapFuture& map = body.map_class->map;
+        if (map.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return nullptr;
+        try {
+            return map.get();
+        } catch (...) {
+            return nullptr;  // a build that failed: the next get() tries again
+        }
+    }
+    return nullptr;
+}
+
 void ReachabilityCache::remember(const Body& body) {
-    if (bodies_.size() >= kMaxBodies) {
+    auto forget_oldest = [&] {
         const auto oldest = std::min_element(bodies_.begin(), bodies_.end(),
                                              [](const Body& a, const Body& b) { return a.last_used < b.last_used; });
         bodies_.erase(oldest);
-    }
+        classes_.erase(std::remove_if(classes_.begin(), classes_.end(),
+                                      [](const std::shared_ptr<Class>& c) { return c.use_count() == 1; }),
+                       classes_.end());
+    };
+    if (bodies_.size() >= kMaxBodies) forget_oldest();
+    // The maps built so far (those still building count when done): a navmesh of a million polygons
+    // makes maps of several megabytes each.
+    auto bytes = [&] {
+        size_t total = 0;
+        for (const std::shared_ptr<Class>& c : classes_) {
+            if (c->map.wait_for(std::chrono::seconds(0)) != std::future_status::ready) continue;
+            try {
+                total += c->map.get()->memory_bytes();
+            } catch (...) {
+            }
+        }
+        return total;
+    };
+    while (!bodies_.empty() && bytes() > kMaxBytes) forget_oldest();
     bodies_.push_back(body);
-    classes_.erase(std::remove_if(classes_.begin(), classes_.end(),
-                                  [](const std::shared_ptr<Class>& c) { return c.use_count() == 1; }),
-                   classes_.end());
 }
 
 void ReachabilityCache::forget(const std::shared_ptr<Class>& map_class) {

@@ -27,12 +27,15 @@ public:
     // again.
     std::shared_ptr<const ReachabilityMap> get(const PathGraph& graph, const AgentCapabilities& agent,
                                                const std::vector<float>& area_costs);
+    // The map for a body when one is built and ready; null otherwise (never builds, never waits).
+    std::shared_ptr<const ReachabilityMap> ready(const AgentCapabilities& agent, const std::vector<float>& area_costs) const;
     // Maps built and kept (for tests and statistics).
     size_t map_count() const;
 
-    // Bodies remembered; beyond it the least recently asked for is forgotten (its map stays while
-    // another body of the same class holds it).
+    // Bodies remembered; beyond it, or beyond kMaxBytes of maps, the least recently asked for is
+    // forgotten (its map stays while another body of the same class holds it, or a caller does).
     static constexpr size_t kMaxBodies = 64;
+    static constexpr size_t kMaxBytes = size_t(256) << 20;
 
 private:
     using MapFuture = std::shared_future<std::shared_ptr<const ReachabilityMap>>;

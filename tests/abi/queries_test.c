@@ -148,7 +148,8 @@ static void reachability(void) {
 }
 
 static void no_path_at_once(void) {
-    /* Two rooms with no way between: a request that does not accept partial paths fails without a search. */
+    /* Two rooms with no way between: a request that does not accept partial paths searches once, and
+       is then answered by the map its search left built. */
     const char* rows[] = {"....#...."};
     nl_world* world = make_world(1);
     const nl_navmesh_id navmesh = add_cells(world, rows, 1);
@@ -164,8 +165,12 @@ static void no_path_at_once(void) {
     def.agent.radius = 0.0f;
     def.accept_partial = 0;
     CHECK_OK(nl_path_find(world, &def, &result, NULL, 0, &count));
+    CHECK(result.outcome == NL_PATH_NO_PATH && result.nodes_visited == 4); /* searched: no map was built */
+    def.goal[0] = 7.5f;
+    CHECK_OK(nl_path_find(world, &def, &result, NULL, 0, &count));
     CHECK(result.outcome == NL_PATH_NO_PATH);
-    CHECK_THAT(result.nodes_visited == 0, "the reachability map answers an unreachable goal without a search");
+    CHECK_THAT(result.nodes_visited == 0,
+               "after a search found a goal out of reach, the reachability map answers the next one without a search");
     def.accept_partial = 1;
     nl_path_find(world, &def, &result, NULL, 0, &count);
     CHECK(result.outcome == NL_PATH_PARTIAL && result.nodes_visited == 4);
@@ -227,6 +232,26 @@ static void raycast(void) {
         hits[0] = nl_navmesh_raycast_hit_init();
         CHECK_INVALID(nl_navmesh_raycast(world, navmesh, NULL, bad, 2, hits, NULL, 0), "rays[1].start is not over rays[1].start_polygon 2");
         CHECK(hits[0].hit == 0 && hits[0].t == 0.0f && all_bytes(&hits[1], sizeof hits[1], 0xab));
+    }
+    /* Two triangles overlapping across a shared edge run the same way (a host navmesh the builder
+       accepts): a ray crossing that edge must not bounce between them; the second one's far side is
+       a wall. */
+    {
+        static const float v[] = {0, 0, 0, 1, 0, 0, 0.5f, 0, 1, 0.5f, 0, 2};
+        static const uint32_t tris[] = {0, 1, 2, 0, 1, 3};
+        static const uint8_t counts[] = {3, 3};
+        nl_navmesh_def def = nl_default_navmesh_def();
+        nl_navmesh_id overlapping;
+        nl_navmesh_ray down = ray(0, 0.5f, 0.3f, 0.5f, -5.0f);
+        uint32_t polygons[8];
+        def.vertices = v, def.vertex_count = 4, def.indices = tris, def.polygon_vertex_counts = counts;
+        def.polygon_count = 2, def.agent.radius = 0.0f;
+        if (CHECK_OK(nl_navmesh_add(world, &def, &overlapping))) {
+            CHECK_OK(nl_navmesh_raycast(world, overlapping, NULL, &down, 1, hits, polygons, 8));
+            CHECK_THAT(hits[0].polygon_count <= 2 && hits[0].hit == 1 && hits[0].t < 0.1f,
+                       "nl_navmesh_raycast: a ray between overlapping polygons stops, never bounces");
+            CHECK(length3(hits[0].wall_normal) > 0.99f);
+        }
     }
     /* The same answers from a world with more workers and a batch large enough to be split. */
     {

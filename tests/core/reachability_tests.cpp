@@ -149,6 +149,21 @@ TEST_CASE("a passage narrower than a wider body is closed to it") {
     const auto wide = m.graph()->reachability(body(0.0f, 0.6f), {});           // needs 1.2 m
     CHECK_FALSE(wide->reaches(0, 12));
     CHECK_FALSE(wide->reaches(0, 6));
+
+    // The exact fit: a body needing the passage's whole metre is kept out (a millimetre to spare is
+    // the rule: kPortalSlack), one needing 2 mm less goes through; the search agrees with the map.
+    for (const auto& [radius, open] : {std::pair{0.5f, false}, std::pair{0.499f, true}}) {
+        INFO("radius ", radius);
+        CHECK(m.graph()->reachability(body(0.0f, radius), {})->reaches(0, 12) == open);
+        nl::PathQuery q;
+        q.start = Vec3(1.5f, 0.0f, 0.5f);
+        q.goal = Vec3(1.5f, 0.0f, 4.5f);
+        q.agent = body(0.0f, radius);
+        q.accept_partial = true;
+        nl::PathResult result;
+        nl::plan_path(*m.graph(), q, nullptr, result);
+        CHECK((result.outcome == nl::PathOutcome::Complete) == open);
+    }
     CHECK(wide->reaches(0, 5));
 }
 
@@ -174,6 +189,8 @@ TEST_CASE("bodies of one class share a map; an edit makes a new graph with new m
 }
 
 TEST_CASE("a path request that does not accept partial paths fails at once for a goal out of reach") {
+    // The first request searches (it never builds a map first) and leaves the map built; the next
+    // ones are answered without a search.
     Map m({"...#..."});
     nl::PathQuery q;
     q.start = Vec3(0.5f, 0.0f, 0.5f);
@@ -181,9 +198,22 @@ TEST_CASE("a path request that does not accept partial paths fails at once for a
     q.agent = body();
     q.accept_partial = false;
     nl::PathResult result;
+    CHECK(m.graph()->reachability_map_count() == 0);
+    nl::plan_path(*m.graph(), q, nullptr, result);
+    CHECK(result.outcome == nl::PathOutcome::NoPath);
+    CHECK(result.nodes_visited == 3);
+    CHECK(m.graph()->reachability_map_count() == 1);
+    q.goal = Vec3(5.5f, 0.0f, 0.5f);
     nl::plan_path(*m.graph(), q, nullptr, result);
     CHECK(result.outcome == nl::PathOutcome::NoPath);
     CHECK(result.nodes_visited == 0);
+    // A search cut short by max_nodes builds nothing: it did not see everything.
+    Map capped({"...#..."});
+    q.max_nodes = 2;
+    nl::plan_path(*capped.graph(), q, nullptr, result);
+    CHECK(result.outcome == nl::PathOutcome::NoPath);
+    CHECK(capped.graph()->reachability_map_count() == 0);
+    q.max_nodes = 0;
     q.accept_partial = true;
     nl::plan_path(*m.graph(), q, nullptr, result);
     CHECK(result.outcome == nl::PathOutcome::Partial);

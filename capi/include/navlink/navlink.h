@@ -635,7 +635,8 @@ typedef struct nl_nav_point {
  *  even when the rim of a ledge beside it is nearer); otherwise the closest point wins. Ties go to
  *  the lower polygon index, so the answer never depends on thread count. count == 0 succeeds.
  *  Returns SUCCESS (points not found have found = 0, beyond_box = 1 and the navmesh's nearest point
- *  beyond the box: a search of the whole navmesh, for the misses only), or a failure with INVALID_HANDLE or
+ *  beyond the box: a miss costs a second search, from the navmesh's bounds out to that point, up to
+ *  the whole navmesh), or a failure with INVALID_HANDLE or
  *  INVALID_ARGUMENT (null pointer, a point not finite or beyond NL_COORDINATE_LIMIT: its index is
  *  named; half_extents not positive and finite). Thread-safe; parallel over the world's workers. */
 NL_API nl_status nl_navmesh_find_nearest(const nl_world* world, nl_navmesh_id navmesh, const float* points,
@@ -1120,8 +1121,9 @@ typedef struct nl_agent_capabilities {
     float max_drop_height;   /**< Deepest drop taken, metres (default 0: no drops). */
     float radius;            /**< Body radius, metres (default 0.6). Where it exceeds the radius the
                                   navmesh was built for (nl_agent_type.radius), the path keeps the
-                                  difference away from the navmesh's outline, and portals that leave
-                                  less room are not crossed. The room is measured along each portal:
+                                  difference away from the navmesh's outline, and portals that do not
+                                  leave that room and 1 mm more are not crossed (an exact fit is
+                                  refused the same way whatever the rounding). The room is measured along each portal:
                                   right for Recast's polygons, generous for long thin triangles laid
                                   across a corridor (a triangle soup), which can let a wider body by. */
     uint64_t abilities;      /**< Ability bits the agent has (default 0), for plugin link kinds. */
@@ -1385,9 +1387,14 @@ NL_API nl_query_filter nl_default_query_filter(void);
  *  an excluded area is reached from nowhere else, but a body standing in one walks out of it.
  *  The answers come from the navmesh's reachability map for the body's class (the links it can
  *  take, its margin, its excluded areas): built on the first query for a class (linear in polygons
- *  and links), kept until the navmesh or its links change, shared by bodies of the same class; each
- *  answer then takes constant time, without a search. Path requests with accept_partial 0 use the
- *  same map to return NL_PATH_NO_PATH at once.
+ *  and links, plus a closure of up to 8 MiB over the islands links join), kept until the navmesh or
+ *  its links change (or until 64 other bodies, or 256 MiB of other maps, were asked for since),
+ *  shared by bodies of the same class; each answer then takes constant time, without a search. When
+ *  links join more than 8192 islands there is no closure and each answer walks the island graph.
+ *  Links to another navmesh are not followed (a map is per navmesh, as a path search is). A path
+ *  request with accept_partial 0 uses the body's map when one is built, to return NL_PATH_NO_PATH at
+ *  once; a request never builds one first, but one whose search found its goal out of reach leaves it
+ *  built.
  *  [in] filter: borrowed; NULL for nl_default_query_filter(). [in] from_polygons, to_polygons:
  *  borrowed, `count` each. [out] out_reachable: caller-owned, `count` bytes. count == 0 succeeds.
  *  Returns SUCCESS, or a failure with INVALID_HANDLE (navmesh), INVALID_ARGUMENT (a null pointer, a
@@ -1410,7 +1417,8 @@ NL_API nl_status nl_navmesh_get_reachable_polygons(const nl_world* world, nl_nav
  *  polygon count): polygons of one island reach each other; from one island the body may reach
  *  another over one-way links (ask nl_navmesh_can_reach). Islands are numbered 0 up in order of
  *  their lowest polygon; NL_NO_ISLAND for polygons in excluded areas. `out_island_count` (optional)
- *  receives the number of islands. For drawing, and for a host's own bookkeeping per body.
+ *  receives the number of islands (also with BUFFER_TOO_SMALL). For drawing, and for a host's own
+ *  bookkeeping per body.
  *  Returns SUCCESS, BUFFER_TOO_SMALL, or a failure as nl_navmesh_can_reach. Thread-safe. */
 NL_API nl_status nl_navmesh_get_islands(const nl_world* world, nl_navmesh_id navmesh, const nl_query_filter* filter,
                                         uint32_t* out_islands, uint32_t capacity, uint32_t* out_count,
@@ -1434,7 +1442,9 @@ typedef struct nl_navmesh_raycast_hit {
                                   arrived. */
     float point[3];          /**< Where it stopped (or `end`), at the navmesh surface's height. */
     float wall_normal[3];    /**< The wall's normal, horizontal and pointing back the way the walk
-                                  came from (into the last polygon); zero if it arrived. */
+                                  came from (into the last polygon); zero if it arrived (and for a
+                                  walk cut short after crossing more polygons than the navmesh has,
+                                  which a navmesh with overlapping polygons alone could make). */
     uint32_t end_polygon;    /**< The polygon holding `point`. */
     uint32_t polygon_count;  /**< Polygons crossed, the start polygon first and end_polygon last
                                   (all of them, also when out_polygons had room for fewer). */
@@ -1464,9 +1474,11 @@ NL_API nl_status nl_navmesh_raycast(const nl_world* world, nl_navmesh_id navmesh
                                     uint32_t* out_polygons, uint32_t polygons_per_ray);
 
 /** Slides a point from `start` (over `start_polygon`) towards `target` along the navmesh, as
- *  Detour's moveAlongSurface: the result is `target` when the straight way there stays on the
- *  navmesh, else the point nearest to `target` on the walls met within the circle through start and
- *  target, so a host that steers its own bodies can keep one on the navmesh each frame. Walls are as
+ *  Detour's moveAlongSurface: the result is `target` when a polygon reached from the start through
+ *  portals within the circle through start and target holds it, else the point nearest to `target`
+ *  on the walls of those polygons, so a host that steers its own bodies can keep one on the navmesh
+ *  each frame. Meant for a frame's step: a long move can round a corner a straight walk could not
+ *  (nl_navmesh_raycast says whether the straight way is clear). Walls are as
  *  nl_navmesh_raycast's. [in] filter: borrowed, NULL for nl_default_query_filter(). [in] start,
  *  target: 3 floats each; start must lie over start_polygon (within 1 mm, seen from above).
  *  [out] out_point: its point (at the surface height), polygon and distance to `target` (found is 1).
@@ -1491,7 +1503,8 @@ typedef struct nl_random_points_def {
                                         filter's body can reach from it (nl_navmesh_can_reach). */
     uint32_t reserved;
     uint64_t seed;                 /**< The same seed, navmesh and def give the same points on every
-                                        platform and thread count. */
+                                        run and thread count (NavLink's own generator and clipping,
+                                        not the C library's random numbers or cos). */
 } nl_random_points_def;
 
 /** Whole navmesh, no filter, seed 1. Thread-safe; never fails. */
