@@ -1753,7 +1753,7 @@ class World:
         reachable_from is NO_POLYGON, only where the filter's body can reach from that polygon. Returns the
         points drawn (each with its polygon, at the surface height, found = 1, distance 0): `count`, none when
         no allowed polygon lies in the circle, or fewer when the allowed part inside it is too thin. The same
-        seed, navmesh and arguments give the same points on every platform and thread count."""
+        seed, navmesh and arguments give the same points on every run and thread count."""
         query_filter, keep = _filter_def(filter)
         d = lib.nl_default_random_points_def()
         if query_filter is not None:

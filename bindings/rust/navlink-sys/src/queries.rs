@@ -74,7 +74,7 @@ pub struct nl_random_points_def {
     /// A polygon, or `NL_NO_POLYGON` (default): only points the filter's body can reach from it.
     pub reachable_from: u32,
     pub reserved: u32,
-    /// The same seed, navmesh and def give the same points on every platform and thread count.
+    /// The same seed, navmesh and def give the same points on every run and thread count.
     pub seed: u64,
 }
 

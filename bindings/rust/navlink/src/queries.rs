@@ -64,7 +64,7 @@ pub struct RandomPointsOptions {
     pub radius: f32,
     /// Only points the filter's body can reach from this polygon (`None`: any).
     pub reachable_from: Option<u32>,
-    /// The same seed, navmesh and options give the same points on every platform and thread count.
+    /// The same seed, navmesh and options give the same points on every run and thread count.
     pub seed: u64,
 }
 

@@ -78,7 +78,7 @@ namespace NavLink
         public uint ReachableFrom;
         /// <summary>Must be 0.</summary>
         public uint Reserved;
-        /// <summary>The same seed, navmesh and def give the same points on every platform and thread count.</summary>
+        /// <summary>The same seed, navmesh and def give the same points on every run and thread count.</summary>
         public ulong Seed;
     }
 }
