@@ -152,7 +152,9 @@ TEST_CASE("a passage narrower than a wider body is closed to it") {
 
     // The exact fit: a body needing the passage's whole metre is kept out (a millimetre to spare is
     // the rule: kPortalSlack), one needing 2 mm less goes through; the search agrees with the map.
-    for (const auto& [radius, open] : {std::pair{0.5f, false}, std::pair{0.499f, true}}) {
+    for (const std::pair<float, bool>& fit : {std::pair{0.5f, false}, std::pair{0.499f, true}}) {
+        const float radius = fit.first;  // (clang: a structured binding cannot be captured by INFO)
+        const bool open = fit.second;
         INFO("radius ", radius);
         CHECK(m.graph()->reachability(body(0.0f, radius), {})->reaches(0, 12) == open);
         nl::PathQuery q;
