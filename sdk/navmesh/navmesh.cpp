@@ -53,6 +53,18 @@ bool NavMesh::over_polygon(uint32_t p, float x, float z) const {
     return true;
 }
 
+namespace {
+
+// The height at barycentric weights (any scale, each >= 0) of a triangle: exactly the corners' height
+// on a level triangle, and never outside its corners' heights, which point location's pruning by
+// polygon bounds relies on.
+float blend_height(const Vec3& a, const Vec3& b, const Vec3& c, float wa, float wb, float wc) {
+    const float height = a.y() + (wb * (b.y() - a.y()) + wc * (c.y() - a.y())) / (wa + wb + wc);
+    return std::clamp(height, std::min({a.y(), b.y(), c.y()}), std::max({a.y(), b.y(), c.y()}));
+}
+
+}  // namespace
+
 float NavMesh::surface_height(uint32_t p, float x, float z) const {
     // The surface triangle whose x-z projection holds (x, z); on a shared edge any of them gives the
     // same height. Rounding may leave (x, z) just outside all of them: take the least outside.
@@ -66,8 +78,7 @@ float NavMesh::surface_height(uint32_t p, float x, float z) const {
         const float w = sign * area - u - v;
         const float slack = -1e-6f * sign * area;
         if (!(area != 0.0f && u >= slack && v >= slack && w >= slack)) return false;
-        const float cu = std::max(u, 0.0f), cv = std::max(v, 0.0f), cw = std::max(w, 0.0f);
-        height = (cu * a.y() + cv * b.y() + cw * c.y()) / (cu + cv + cw);
+        height = blend_height(a, b, c, std::max(u, 0.0f), std::max(v, 0.0f), std::max(w, 0.0f));
         return true;
     };
     float height = 0.0f;
@@ -92,8 +103,7 @@ float NavMesh::surface_height(uint32_t p, float x, float z) const {
         const float margin = std::min({u, v, w});
         if (margin > best_margin) {
             best_margin = margin;
-            const float cu = std::max(u, 0.0f), cv = std::max(v, 0.0f), cw = std::max(w, 0.0f);
-            best_height = (cu * a.y() + cv * b.y() + cw * c.y()) / (cu + cv + cw);
+            best_height = blend_height(a, b, c, std::max(u, 0.0f), std::max(v, 0.0f), std::max(w, 0.0f));
         }
         return margin >= 0.0f;
     };

@@ -211,3 +211,26 @@ TEST_CASE("a polygon's detail is bounded: at most 512 triangles") {
     }
     CHECK_MESSAGE(message.find("at most 512") != std::string::npos, message);
 }
+
+TEST_CASE("a level polygon's surface is exactly its height: point location's pruning by bounds stays exact") {
+    // The two overlapping triangles a fuzzer found (at y = 3, far from the origin): the surface height
+    // of a point over them came out a float step under 3, so the grid's search pruned one by its bounds
+    // and chose another polygon than the brute-force search.
+    NavMeshInput in;
+    in.vertices = {nl::Vec3(15.2070312f, 3, 25.0195312f), nl::Vec3(20.3798828f, 3, 32.5058594f),
+                   nl::Vec3(24.1679688f, 3, 26.7841797f), nl::Vec3(20.0732422f, 3, 32.2060547f),
+                   nl::Vec3(20.0732422f, 3, 32.5058594f), nl::Vec3(40.640625f, 3, 22.1503906f)};
+    in.indices = {0, 1, 2, 3, 4, 5};
+    in.agent.radius = 0.0f;
+    const auto mesh = nl::build_navmesh(in);
+    std::mt19937 random(5);
+    std::uniform_real_distribution<float> x(20.1f, 20.35f), z(32.21f, 32.5f);
+    for (int i = 0; i < 2000; ++i) {
+        const nl::Vec3 point(x(random), 0.5f, z(random));
+        for (uint32_t p = 0; p < mesh->polygon_count(); ++p) {
+            if (mesh->over_polygon(p, point.x(), point.z())) CHECK(mesh->surface_height(p, point.x(), point.z()) == 3.0f);
+        }
+        const nl::NavPoint fast = mesh->find_nearest(point, nl::Vec3(2, 4, 2)), slow = mesh->find_nearest_brute_force(point, nl::Vec3(2, 4, 2));
+        CHECK(fast.polygon == slow.polygon);
+    }
+}
