@@ -76,6 +76,9 @@ public:
     uint32_t corner(uint32_t p, uint32_t k) const { return corners_[first_corner_[p] + k]; }
     // Polygon across the edge from corner k to k + 1, or kNoPolygon.
     uint32_t neighbour(uint32_t p, uint32_t k) const { return neighbours_[first_corner_[p] + k]; }
+    // Edge k of polygon p numbered across the navmesh (0 .. edge_count() - 1), for per-edge flags.
+    uint32_t edge_index(uint32_t p, uint32_t k) const { return first_corner_[p] + k; }
+    uint32_t edge_count() const { return first_corner_.back(); }
     // Polygon p's corner_count(p) neighbours, for loops over its edges.
     const uint32_t* neighbours_of(uint32_t p) const { return &neighbours_[first_corner_[p]]; }
     // Polygon p's corner_count(p) corners (vertex indices), counter-clockwise seen from above.

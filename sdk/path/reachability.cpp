@@ -19,9 +19,8 @@ void for_each_successor(const PathGraph& graph, const ReachabilityClass& body, u
     const uint32_t* const neighbours = mesh.neighbours_of(p);
     for (uint32_t k = 0; k < corners; ++k) {
         const uint32_t q = neighbours[k];
-        if (q == kNoPolygon || body.excludes(mesh.area(q))) continue;
-        PortalSpan span;
-        if (portal_span(mesh, p, k, body.margin, span)) visit(q);
+        if (q == kNoPolygon || body.excludes(mesh.area(q)) || body.closes(mesh.edge_index(p, k))) continue;
+        visit(q);
     }
     for (const LinkExit* exit = graph.exits_begin(p); exit != graph.exits_end(p); ++exit) {
         if (!body.can_take(exit->link, exit->reversed != 0)) continue;
@@ -106,7 +105,22 @@ std::vector<uint32_t>& scratch_marks() {
 ReachabilityClass ReachabilityClass::of(const PathGraph& graph, const AgentCapabilities& agent,
                                         const std::vector<float>& area_costs) {
     ReachabilityClass c;
-    c.margin = std::max(0.0f, agent.radius - graph.navmesh().agent().radius);
+    const NavMesh& mesh = graph.navmesh();
+    const float margin = std::max(0.0f, agent.radius - mesh.agent().radius);
+    if (margin > 0.0f) {
+        bool any = false;
+        std::vector<uint64_t> closed((mesh.edge_count() + 63) / 64, 0);
+        for (uint32_t p = 0; p < mesh.polygon_count(); ++p) {
+            for (uint32_t k = 0; k < mesh.corner_count(p); ++k) {
+                PortalSpan span;
+                if (mesh.neighbour(p, k) == kNoPolygon || portal_span(mesh, p, k, margin, span)) continue;
+                const uint32_t edge = mesh.edge_index(p, k);
+                closed[edge >> 6] |= uint64_t{1} << (edge & 63);
+                any = true;
+            }
+        }
+        if (any) c.closed_portals = std::move(closed);
+    }
     c.excluded_areas = excluded_areas_of(area_costs);
     const LinkSnapshot& links = *graph.links_ptr();
     c.takeable.assign((2 * links.size() + 63) / 64, 0);

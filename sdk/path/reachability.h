@@ -14,11 +14,12 @@
 
 namespace nl {
 
-// What decides where a body can go, as the search reads it: how much wider it is than the navmesh's
-// agent (portals that leave no room are closed), the areas it keeps out of (cost 0) and the link
-// directions it can take. Bodies with equal classes share one map.
+// What decides where a body can go, as the search reads it: the portals its width closes (those
+// that leave it no room, as portal_span decides for its margin over the navmesh's agent), the areas
+// it keeps out of (cost 0) and the link directions it can take. Bodies with equal classes share one
+// map: bodies of slightly different widths that close the same portals too.
 struct ReachabilityClass {
-    float margin = 0.0f;
+    std::vector<uint64_t> closed_portals;      // bit NavMesh::edge_index(p, k); empty when none is closed
     std::array<uint64_t, 4> excluded_areas{};  // bit a: area a is kept out of
     std::vector<uint64_t> takeable;            // bit 2 * link + reversed, for the graph's links
 
@@ -26,12 +27,15 @@ struct ReachabilityClass {
     // Bit a set for each area whose cost is 0 (or below: the C layer refuses those).
     static std::array<uint64_t, 4> excluded_areas_of(const std::vector<float>& area_costs);
     bool excludes(uint8_t area) const { return (excluded_areas[area >> 6] >> (area & 63)) & 1u; }
+    bool closes(uint32_t edge) const {
+        return !closed_portals.empty() && ((closed_portals[edge >> 6] >> (edge & 63)) & 1u);
+    }
     bool can_take(uint32_t link, bool reversed) const {
         const uint32_t bit = 2 * link + (reversed ? 1u : 0u);
         return (takeable[bit >> 6] >> (bit & 63)) & 1u;
     }
     bool operator==(const ReachabilityClass& other) const {
-        return margin == other.margin && excluded_areas == other.excluded_areas && takeable == other.takeable;
+        return closed_portals == other.closed_portals && excluded_areas == other.excluded_areas && takeable == other.takeable;
     }
 };
 

@@ -181,6 +181,13 @@ TEST_CASE("bodies of one class share a map; an edit makes a new graph with new m
     CHECK(walker != a);
     CHECK(graph->reachability_map_count() == 2);
     CHECK(graph->reachability(body(), {1.0f}) == walker);  // area 0 at cost 1: nothing excluded
+    // Widths that close the same portals share a map: every 1 m portal of the row is closed to a
+    // body 0.55 m or 0.6 m wider than the navmesh's; none to one 0.1 m wider.
+    const auto wide = graph->reachability(body(1.0f, 0.55f), {});
+    CHECK(graph->reachability(body(1.0f, 0.6f), {}) == wide);
+    CHECK(wide != a);
+    CHECK(graph->reachability(body(1.0f, 0.1f), {}) == a);
+    CHECK_FALSE(wide->reaches(0, 1));
 
     m.link(3, 1);
     const auto edited = m.graph();
