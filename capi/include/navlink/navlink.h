@@ -1386,7 +1386,7 @@ NL_API nl_query_filter nl_default_query_filter(void);
  *  request for it would find (1) or not (0), into out_reachable[i]. A polygon reaches itself; one in
  *  an excluded area is reached from nowhere else, but a body standing in one walks out of it.
  *  The answers come from the navmesh's reachability map for the body's class (the links it can
- *  take, its margin, its excluded areas): built on the first query for a class (linear in polygons
+ *  take, the portals its width closes, its excluded areas): built on the first query for a class (linear in polygons
  *  and links, plus a closure of up to 8 MiB over the islands links join), kept until the navmesh or
  *  its links change (or until 64 other bodies, or 256 MiB of other maps, were asked for since),
  *  shared by bodies of the same class; each answer then takes constant time, without a search. When
