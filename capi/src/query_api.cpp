@@ -36,8 +36,7 @@ struct Body {
 
     bool excludes_any() const { return (excluded[0] | excluded[1] | excluded[2] | excluded[3]) != 0; }
     bool may_enter(const nl::NavMesh& mesh, uint32_t p) const {
-        const uint8_t area = mesh.area(p);
-        return !((excluded[area >> 6] >> (area & 63)) & 1u);
+        return !nl::ReachabilityClass::area_excluded(excluded, mesh.area(p));
     }
 };
 
@@ -199,6 +198,7 @@ NL_API nl_status nl_navmesh_raycast(const nl_world* world, nl_navmesh_id navmesh
         }
         const auto passable_fn = [&](uint32_t p) { return body.may_enter(mesh, p); };
         const nl::PolygonFilter passable(passable_fn);
+        // The workers read this thread's checked ends: `ends` named inside them would be their own.
         const std::vector<std::pair<Vec3, Vec3>>& checked = ends;
         w.tasks().parallel_for(count, 64, [&](uint32_t begin, uint32_t end) {
             thread_local std::vector<uint32_t> crossed;

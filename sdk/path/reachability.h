@@ -26,7 +26,8 @@ struct ReachabilityClass {
     static ReachabilityClass of(const PathGraph& graph, const AgentCapabilities& agent, const std::vector<float>& area_costs);
     // Bit a set for each area whose cost is 0 (or below: the C layer refuses those).
     static std::array<uint64_t, 4> excluded_areas_of(const std::vector<float>& area_costs);
-    bool excludes(uint8_t area) const { return (excluded_areas[area >> 6] >> (area & 63)) & 1u; }
+    bool excludes(uint8_t area) const { return area_excluded(excluded_areas, area); }
+    static bool area_excluded(const std::array<uint64_t, 4>& mask, uint8_t area) { return (mask[area >> 6] >> (area & 63)) & 1u; }
     bool closes(uint32_t edge) const {
         return !closed_portals.empty() && ((closed_portals[edge >> 6] >> (edge & 63)) & 1u);
     }
