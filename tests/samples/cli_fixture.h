@@ -14,9 +14,12 @@
 
 namespace nl::test {
 
-// A fresh, empty folder under the build tree for one test.
+// A fresh, empty folder under the build tree for one test. The test cases' folders are apart from those
+// of the shell-command tests beside them in the work folder (samples_viewer_headless_nav_test's
+// viewer_nav_test was also the viewer script case's folder for nav_test: run at once, each removed the
+// other's log).
 inline std::string scratch_dir(const std::string& name) {
-    const std::filesystem::path dir = std::filesystem::path(SAMPLES_TEST_WORK_DIR) / name;
+    const std::filesystem::path dir = std::filesystem::path(SAMPLES_TEST_WORK_DIR) / "cases" / name;
     std::filesystem::remove_all(dir);
     std::filesystem::create_directories(dir);
     return dir.string();
