@@ -6,6 +6,7 @@
 
 #include "path/link_filter.h"
 #include "path/portal.h"
+#include "path/search_costs.h"
 #include "platform/compiler.h"
 #include "util/error.h"
 
@@ -149,24 +150,6 @@ bool crosses(const Vec3& a, const Vec3& b, const PortalSpan& span) {
     if (denominator < 0.0f) denominator = -denominator, along_span = -along_span, along_segment = -along_segment;
     return denominator > 1e-12f && along_span >= 0.0f && along_span <= denominator && along_segment >= 0.0f &&
            along_segment <= denominator;
-}
-
-// The cheapest cost per metre this agent can meet, so that the heuristic stays below any real cost:
-// the area costs it was given and the cost modifiers of the links its body can take.
-float heuristic_scale(const PathGraph& graph, const PathQuery& query) {
-    float scale = 1.0f;
-    for (float cost : query.area_costs) {
-        if (cost > 0.0f) scale = std::min(scale, cost);
-    }
-    if (graph.cheapest_link_per_metre() < scale) {
-        for (const StoredLink& stored : *graph.links_ptr()) {
-            const Link& l = stored.link;
-            if (l.enabled && l.cost_modifier < scale &&
-                (can_take(l, false, query.agent) || (l.bidirectional && can_take(l, true, query.agent))))
-                scale = l.cost_modifier;
-        }
-    }
-    return scale;
 }
 
 }  // namespace

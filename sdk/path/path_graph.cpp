@@ -10,6 +10,7 @@ PathGraph::PathGraph(std::shared_ptr<const NavMesh> navmesh, std::shared_ptr<con
       frame_(std::move(frame)) {
     for (const StoredLink& s : *links_) has_cross_links_ = has_cross_links_ || s.link.crosses();
     const uint32_t polygons = navmesh_->polygon_count();
+    index_bends();
     auto usable = [&](const Link& l) {
         // A link to another navmesh leaves this graph: agents plan such routes leg by leg (agents/route.h).
         return l.enabled && !l.crosses() && l.start_polygon < polygons && l.end_polygon < polygons;
@@ -35,6 +36,29 @@ PathGraph::PathGraph(std::shared_ptr<const NavMesh> navmesh, std::shared_ptr<con
         if (!usable(l)) continue;
         exits_[fill[l.start_polygon]++] = LinkExit{i, 0};
         if (l.bidirectional) exits_[fill[l.end_polygon]++] = LinkExit{i, 1};
+    }
+}
+
+void PathGraph::index_bends() {
+    const NavMesh& mesh = *navmesh_;
+    constexpr uint8_t kAnyBody = 1, kWiderBody = 2;
+    bends_.assign(mesh.vertex_count(), 0);
+    constexpr uint16_t kUnseen = 0xffff;
+    std::vector<uint16_t> area_at(mesh.vertex_count(), kUnseen);
+    for (uint32_t v = 0; v < mesh.vertex_count(); ++v)
+        if (mesh.on_outline(v)) bends_[v] = kAnyBody;
+    for (uint32_t p = 0; p < mesh.polygon_count(); ++p) {
+        const uint8_t area = mesh.area(p);
+        areas_present_[area >> 6] |= uint64_t(1) << (area & 63);
+        const uint32_t n = mesh.corner_count(p);
+        for (uint32_t k = 0; k < n; ++k) {
+            const uint32_t v = mesh.corner(p, k), w = mesh.corner(p, k + 1 == n ? 0 : k + 1);
+            if (area_at[v] == kUnseen) area_at[v] = area;
+            else if (area_at[v] != area) bends_[v] |= kAnyBody;
+            if (mesh.neighbour(p, k) == kNoPolygon) continue;
+            if (mesh.on_outline(v)) bends_[w] |= kWiderBody;
+            if (mesh.on_outline(w)) bends_[v] |= kWiderBody;
+        }
     }
 }
 

@@ -4,8 +4,10 @@
 // bodies on it are built when first asked for and kept with it (thread-safe).
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <memory>
+#include <vector>
 
 #include "links/link_snapshot.h"
 #include "navmesh/navmesh.h"
@@ -43,6 +45,14 @@ public:
     // any real cost; 1 without links.
     float cheapest_link_per_metre() const { return cheapest_link_per_metre_; }
 
+    // Bit a set for each area some polygon of the navmesh has.
+    const std::array<uint64_t, 4>& areas_present() const { return areas_present_; }
+    // Whether a shortest walk may bend at vertex v: an obstacle's corner for some body. For every body
+    // the outline's vertices and those where areas meet (an area a body keeps out of is an obstacle
+    // to it); for a body wider than the navmesh's agent also the far ends of portals from the outline
+    // (its width may close such a portal, which then stands as a wall ending there).
+    bool may_bend_at(uint32_t v, bool wider_body) const { return (bends_[v] & (wider_body ? 3u : 1u)) != 0; }
+
     // Heap bytes of the link index (the navmesh counts its own).
     size_t link_index_bytes() const;
 
@@ -61,11 +71,15 @@ public:
     size_t reachability_map_count() const { return reachability_.map_count(); }
 
 private:
+    void index_bends();
+
     std::shared_ptr<const NavMesh> navmesh_;
     std::shared_ptr<const LinkSnapshot> links_;
     std::shared_ptr<const SurfaceFrame> frame_;
     std::vector<uint32_t> first_exit_;  // polygon_count + 1 offsets into exits_; empty without links
     std::vector<LinkExit> exits_;
+    std::array<uint64_t, 4> areas_present_{};
+    std::vector<uint8_t> bends_;  // per vertex: 1 any body may bend there, 2 a wider body may
     float cheapest_link_per_metre_ = 1.0f;
     bool has_cross_links_ = false;
     mutable ReachabilityCache reachability_;

@@ -4,6 +4,8 @@
 
 #include "path/corridor_search.h"
 #include "path/reachability.h"
+#include "path/search_costs.h"
+#include "path/shortest_corridor.h"
 #include "path/string_pulling.h"
 
 namespace nl {
@@ -35,11 +37,10 @@ public:
             takeoff.reversed = reversed;
             ++result_.links_used;
             walk_start = reversed ? link.start : link.end;
+            result_.length += (walk_start - takeoff.position).norm();  // a link: its chord
             first = i;
         }
         walk(first, steps.size() - 1, walk_start, end);
-        for (size_t i = 1; i < result_.points.size(); ++i)
-            result_.length += (result_.points[i].position - result_.points[i - 1].position).norm();
     }
 
 private:
@@ -53,6 +54,7 @@ private:
         }
         pulled_.clear();
         pull_string(from, to, portals_, pulled_);
+        result_.length += walked_length(pulled_, portals_);
         for (const PulledPoint& pulled : pulled_) {
             const size_t step = first + std::min<size_t>(pulled.portal, last - first);
             const PathPoint point{pulled.position, pulled.position, corridor_.steps[step].polygon, kSegmentWalk, Handle{},
@@ -127,8 +129,20 @@ void plan_path_in_surface_space(const PathGraph& graph, const PathQuery& query, 
         }
     }
 
+    // The exact search when walking costs the body the same everywhere it may go; the corridor search
+    // for areas of different costs, and for the partial path to a goal out of reach.
     thread_local CorridorSearch corridor;
-    find_corridor(graph, query, start, goal, cancel, corridor);
+    const float walk_cost = uniform_walk_cost(graph, query);
+    if (walk_cost > 0.0f) {
+        find_shortest_corridor(graph, query, start, goal, walk_cost, cancel, corridor);
+        if (!corridor.reached_goal && !corridor.cancelled && query.accept_partial) {
+            const uint32_t exact_nodes = corridor.nodes_visited;
+            find_corridor(graph, query, start, goal, cancel, corridor);
+            corridor.nodes_visited = std::max(corridor.nodes_visited, exact_nodes);  // both count polygons
+        }
+    } else {
+        find_corridor(graph, query, start, goal, cancel, corridor);
+    }
     result.nodes_visited = corridor.nodes_visited;
     result.out_of_nodes = corridor.out_of_nodes;
     if (corridor.cancelled) {

@@ -1,5 +1,8 @@
 #include "path/string_pulling.h"
 
+#include <algorithm>
+#include <cmath>
+
 namespace nl {
 namespace {
 
@@ -67,6 +70,30 @@ void pull_string(const Vec3& start, const Vec3& end, const std::vector<PortalSpa
     } else {
         out.back() = {end, count - 1};
     }
+}
+
+float walked_length(const std::vector<PulledPoint>& pulled, const std::vector<PortalSpan>& portals) {
+    float length = 0.0f;
+    for (size_t i = 1; i < pulled.size(); ++i) {
+        const Vec3& from = pulled[i - 1].position;
+        const Vec3& to = pulled[i].position;
+        Vec3 here = from;
+        // Pulled point j stands at portal j - 1: the line between two of them crosses the portals
+        // after the first's and before the second's.
+        for (uint32_t k = pulled[i - 1].portal; k + 1 < pulled[i].portal && k < portals.size(); ++k) {
+            const PortalSpan& span = portals[k];
+            const float ex = span.right.x() - span.left.x(), ez = span.right.z() - span.left.z();
+            const float dx = to.x() - from.x(), dz = to.z() - from.z();
+            const float denominator = ex * dz - ez * dx;
+            if (std::fabs(denominator) < 1e-12f) continue;  // along the portal: no crossing to add
+            const float s = ((from.x() - span.left.x()) * dz - (from.z() - span.left.z()) * dx) / denominator;
+            const Vec3 crossing = span.left + std::clamp(s, 0.0f, 1.0f) * (span.right - span.left);
+            length += (crossing - here).norm();
+            here = crossing;
+        }
+        length += (to - here).norm();
+    }
+    return length;
 }
 
 }  // namespace nl

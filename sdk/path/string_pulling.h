@@ -19,4 +19,9 @@ struct PulledPoint {
 void pull_string(const Vec3& start, const Vec3& end, const std::vector<PortalSpan>& portals,
                  std::vector<PulledPoint>& out);
 
+// The length walked along the pulled line `pulled` (from pull_string over `portals`): from corner to
+// corner through every portal crossed on the way, at the portal's height where it is crossed, so a
+// walk over a ridge or down a ramp counts its slopes (the straight line between corners does not).
+float walked_length(const std::vector<PulledPoint>& pulled, const std::vector<PortalSpan>& portals);
+
 }  // namespace nl

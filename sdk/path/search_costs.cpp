@@ -1,0 +1,38 @@
+#include "path/search_costs.h"
+
+#include <algorithm>
+
+#include "path/link_filter.h"
+
+namespace nl {
+
+float heuristic_scale(const PathGraph& graph, const PathQuery& query) {
+    float scale = 1.0f;
+    for (float cost : query.area_costs) {
+        if (cost > 0.0f) scale = std::min(scale, cost);
+    }
+    if (graph.cheapest_link_per_metre() < scale) {
+        for (const StoredLink& stored : *graph.links_ptr()) {
+            const Link& l = stored.link;
+            if (l.enabled && l.cost_modifier < scale &&
+                (can_take(l, false, query.agent) || (l.bidirectional && can_take(l, true, query.agent))))
+                scale = l.cost_modifier;
+        }
+    }
+    return scale;
+}
+
+float uniform_walk_cost(const PathGraph& graph, const PathQuery& query) {
+    float rate = 0.0f;
+    const std::array<uint64_t, 4>& present = graph.areas_present();
+    for (uint32_t area = 0; area < 256; ++area) {
+        if (((present[area >> 6] >> (area & 63)) & 1u) == 0) continue;
+        const float cost = query.area_cost(static_cast<uint8_t>(area));
+        if (cost <= 0.0f) continue;  // kept out of: an obstacle, not a rate
+        if (rate != 0.0f && cost != rate) return 0.0f;
+        rate = cost;
+    }
+    return rate == 0.0f ? 1.0f : rate;
+}
+
+}  // namespace nl

@@ -1,0 +1,409 @@
+#include "path/shortest_corridor.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <unordered_map>
+#include <vector>
+
+#include "path/link_filter.h"
+#include "path/portal.h"
+#include "path/search_costs.h"
+#include "util/error.h"
+
+namespace nl {
+namespace {
+
+constexpr uint32_t kNoNode = 0xffffffffu;
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+// Seen from above, in double: the search compares which side of a line points lie on, and float's
+// rounding would let a walk slip past a corner or lose the one through a vertex.
+struct Flat {
+    double x, z;
+};
+Flat flat(const Vec3& v) { return {v.x(), v.z()}; }
+Flat operator-(Flat a, Flat b) { return {a.x - b.x, a.z - b.z}; }
+Flat operator+(Flat a, Flat b) { return {a.x + b.x, a.z + b.z}; }
+Flat operator*(double s, Flat a) { return {s * a.x, s * a.z}; }
+double cross(Flat a, Flat b) { return a.x * b.z - a.z * b.x; }
+double distance(Flat a, Flat b) { return std::hypot(a.x - b.x, a.z - b.z); }
+
+// Walks from `root` in straight lines through the interval [a, b] of an edge into `polygon` (a toward
+// the polygon's first corner of that edge); or, for a node without an edge (the start, a link's
+// landing), from `root` inside `polygon` to anywhere in it.
+struct IntervalNode {
+    Flat root, a, b;
+    double g;               // cost from the start to the root
+    uint32_t root_id;       // the root's turning id (below), for pruning
+    uint32_t polygon;
+    uint32_t from_polygon;  // the polygon whose edge the interval is on; kNoNode for a node without edge
+    uint32_t entry;         // CorridorStep::entry into `polygon`
+    uint32_t parent;        // node index; kNoNode for the start
+    uint32_t a_turn, b_turn;  // turning ids of a and b when a walk may bend there, else kNoNode
+};
+
+struct OpenEntry {
+    double f;
+    uint32_t node;
+    bool operator>(const OpenEntry& other) const { return f > other.f; }
+};
+
+// Turning ids index the cheapest cost found to each point a walk may bend at or start from: the
+// navmesh's vertices, then the narrowed ends of portals (two per polygon edge), then where links land
+// (two per link, one per direction), then the start.
+struct TurningIds {
+    uint32_t narrowed_base, landing_base, start;
+    TurningIds(const NavMesh& mesh, size_t links)
+        : narrowed_base(mesh.vertex_count()), landing_base(narrowed_base + 2 * mesh.edge_count()),
+          start(landing_base + 2 * static_cast<uint32_t>(links)) {}
+    uint32_t count() const { return start + 1; }
+};
+
+struct ShortestScratch {
+    std::vector<IntervalNode> nodes;
+    std::vector<OpenEntry> open;
+    std::vector<double> best;  // per turning id, valid where best_epoch is current
+    std::vector<uint32_t> best_epoch;
+    std::vector<uint32_t> polygon_epoch;
+    // The cheapest cost at which a root on a polygon's edge saw all of the polygon, per (root, polygon):
+    // round a vertex the sweep from polygon to polygon would otherwise go on circling.
+    std::unordered_map<uint64_t, double> whole_views;
+    uint32_t epoch = 0;
+
+    uint32_t begin(uint32_t turning_ids, uint32_t polygons) {
+        nodes.clear();
+        open.clear();
+        whole_views.clear();
+        if (best.size() < turning_ids) best.resize(turning_ids), best_epoch.resize(turning_ids, 0);
+        if (polygon_epoch.size() < polygons) polygon_epoch.resize(polygons, 0);
+        if (++epoch == 0) {
+            std::fill(best_epoch.begin(), best_epoch.end(), 0);
+            std::fill(polygon_epoch.begin(), polygon_epoch.end(), 0);
+            epoch = 1;
+        }
+        return epoch;
+    }
+};
+
+ShortestScratch& shortest_scratch() {
+    thread_local ShortestScratch scratch;
+    return scratch;
+}
+
+// Narrows [lo, hi] to where s0 + t (s1 - s0) <= 0. False when nothing is left.
+bool keep_nonpositive(double s0, double s1, double& lo, double& hi) {
+    if (s0 <= 0.0 && s1 <= 0.0) return lo <= hi;
+    if (s0 > 0.0 && s1 > 0.0) return false;
+    const double t = s0 / (s0 - s1);
+    if (s0 > 0.0) lo = std::max(lo, t);
+    else hi = std::min(hi, t);
+    return lo <= hi;
+}
+
+// The shortest walk from `root` through the segment [a, b] to `goal`, seen from above: straight when
+// the line crosses the segment (after mirroring a goal on the root's side, which the walk must come
+// back to), else round the nearer end.
+double estimate_through(Flat root, Flat a, Flat b, Flat goal) {
+    const Flat along = b - a;
+    const double root_side = cross(along, root - a), goal_side = cross(along, goal - a);
+    const double length2 = along.x * along.x + along.z * along.z;
+    if (length2 == 0.0) return distance(root, a) + distance(a, goal);
+    if (root_side == 0.0) return distance(root, goal);  // on the edge's line: a bound is enough
+    if ((root_side > 0.0) == (goal_side > 0.0)) {
+        // Mirror the goal across the edge's line.
+        const double t = ((goal - a).x * along.x + (goal - a).z * along.z) / length2;
+        const Flat foot = a + t * along;
+        goal = foot + (-1.0) * (goal - foot);
+    }
+    const Flat direction = goal - root;
+    const double denominator = cross(along, direction);
+    if (denominator != 0.0) {
+        const double u = cross(root - a, direction) / denominator;
+        if (u >= 0.0 && u <= 1.0) return distance(root, goal);
+    }
+    return std::min(distance(root, a) + distance(a, goal), distance(root, b) + distance(b, goal));
+}
+
+class ShortestSearch {
+public:
+    ShortestSearch(const PathGraph& graph, const PathQuery& query, const NavPoint& goal, float walk_cost,
+                   ShortestScratch& scratch, uint32_t epoch, CorridorSearch& result)
+        : graph_(graph), mesh_(graph.navmesh()), query_(query), goal_(goal), goal_flat_(flat(goal.point)),
+          rate_(walk_cost), h_scale_(heuristic_scale(graph, query)),
+          margin_(std::max(0.0f, query.agent.radius - graph.navmesh().agent().radius)), ids_(mesh_, graph.links_ptr()->size()),
+          scratch_(scratch), epoch_(epoch), result_(result) {}
+
+    const TurningIds& ids() const { return ids_; }
+
+    void add_start(const NavPoint& start) {
+        improve(ids_.start, 0.0);
+        push(IntervalNode{flat(start.point), {}, {}, 0.0, ids_.start, start.polygon, kNoNode, CorridorStep::kStart, kNoNode,
+                          kNoNode, kNoNode});
+    }
+
+    // Runs until the goal's cost is the least in the open list.
+    void run(const std::atomic<bool>* cancel) {
+        uint32_t expansions = 0;
+        std::vector<OpenEntry>& open = scratch_.open;
+        while (!open.empty() && open.front().f < best_goal_ && !result_.out_of_nodes) {
+            if ((++expansions & (kCancelCheckExpansions - 1)) == 0 && cancel && cancel->load(std::memory_order_relaxed)) {
+                result_.cancelled = true;
+                return;
+            }
+            std::pop_heap(open.begin(), open.end(), std::greater<OpenEntry>());
+            const uint32_t index = open.back().node;
+            open.pop_back();
+            const IntervalNode node = scratch_.nodes[index];
+            if (worse_than_best(node.root_id, node.g)) continue;  // its root was reached more cheaply since
+            expand(index, node);
+        }
+        // Out of nodes with a walk found: a complete path, though perhaps not the shortest.
+        result_.reached_goal = goal_parent_ != kNoNode;
+    }
+
+    void write_corridor() {
+        result_.cost = static_cast<float>(best_goal_);
+        result_.last_position = goal_.point;
+        const std::vector<IntervalNode>& nodes = scratch_.nodes;
+        for (uint32_t i = goal_parent_, guard = 0; i != kNoNode; i = nodes[i].parent) {
+            if (++guard > nodes.size()) fail(ErrorCode::Internal, "exact path search: corridor does not lead back to the start");
+            result_.steps.push_back(CorridorStep{nodes[i].polygon, nodes[i].entry});
+        }
+        std::reverse(result_.steps.begin(), result_.steps.end());
+    }
+
+private:
+    // Tolerances relative to the costs: two routes of equal length to a corner must both go on (each
+    // bends round it to its own side), one longer by rounding must not double the work.
+    static constexpr double kRelativeSlack = 1e-9;
+
+    bool worse_than_best(uint32_t id, double g) const {
+        return scratch_.best_epoch[id] == epoch_ && g > scratch_.best[id] * (1.0 + kRelativeSlack) + kRelativeSlack;
+    }
+    // Records g for the turning id unless it was reached more cheaply; false then.
+    bool improve(uint32_t id, double g) {
+        if (worse_than_best(id, g)) return false;
+        if (scratch_.best_epoch[id] != epoch_ || g < scratch_.best[id]) scratch_.best[id] = g;
+        scratch_.best_epoch[id] = epoch_;
+        return true;
+    }
+
+    void push(const IntervalNode& node) {
+        uint32_t& seen = scratch_.polygon_epoch[node.polygon];
+        if (seen != epoch_) {
+            if (query_.max_nodes != 0 && result_.nodes_visited >= query_.max_nodes) {
+                result_.out_of_nodes = true;
+                return;
+            }
+            seen = epoch_;
+            ++result_.nodes_visited;
+        }
+        const double h = node.from_polygon == kNoNode ? distance(node.root, goal_flat_)
+                                                    : estimate_through(node.root, node.a, node.b, goal_flat_);
+        scratch_.nodes.push_back(node);
+        scratch_.open.push_back(OpenEntry{node.g + h * h_scale_, static_cast<uint32_t>(scratch_.nodes.size() - 1)});
+        std::push_heap(scratch_.open.begin(), scratch_.open.end(), std::greater<OpenEntry>());
+    }
+
+    // The edge of polygon p shared with `from` across from's edge `from_edge`.
+    uint32_t entry_edge(uint32_t p, uint32_t from, uint32_t from_edge) const {
+        const uint32_t from_corners = mesh_.corner_count(from);
+        const uint32_t far_corner = mesh_.corner(from, from_edge + 1 == from_corners ? 0 : from_edge + 1);
+        const uint32_t n = mesh_.corner_count(p);
+        uint32_t any = kNoNode;
+        for (uint32_t k = 0; k < n; ++k) {
+            if (mesh_.neighbour(p, k) != from) continue;
+            if (mesh_.corner(p, k) == far_corner) return k;
+            any = k;
+        }
+        return any;
+    }
+
+    // The turning id of an end of polygon p's edge k's opening (the end at corner k, or at k + 1),
+    // or kNoNode when no walk bends there.
+    uint32_t turning_id(uint32_t p, uint32_t k, bool far_end) const {
+        const uint32_t n = mesh_.corner_count(p);
+        const uint32_t v = mesh_.corner(p, far_end ? (k + 1 == n ? 0 : k + 1) : k);
+        if (margin_ > 0.0f && mesh_.on_outline(v)) return ids_.narrowed_base + 2 * mesh_.edge_index(p, k) + (far_end ? 1 : 0);
+        return graph_.may_bend_at(v, margin_ > 0.0f) ? v : kNoNode;
+    }
+
+    // Which walks from a node's root reach points of its polygon: straight through the interval, or
+    // bending at one of its ends when the walk may bend there.
+    struct View {
+        Flat root, a, b;
+        double scale = 0.0;  // the sign of the side tests; 0: every point of the polygon is in view
+        double g = 0.0, g_a = kInfinity, g_b = kInfinity;  // costs to the root and to the ends
+        uint32_t a_turn = kNoNode, b_turn = kNoNode;
+
+        // Positive: beyond the ray through b (bending at b); negative: beyond the ray through a.
+        double beyond_b(Flat x) const { return cross(b - root, x - root) * scale; }
+        double beyond_a(Flat x) const { return -cross(a - root, x - root) * scale; }
+    };
+
+    double cost_to(const View& view, Flat target) const {
+        if (view.scale != 0.0) {
+            if (view.beyond_b(target) > 0.0) return view.g_b + rate_ * distance(view.b, target);
+            if (view.beyond_a(target) > 0.0) return view.g_a + rate_ * distance(view.a, target);
+        }
+        return view.g + rate_ * distance(view.root, target);
+    }
+
+    void expand(uint32_t index, const IntervalNode& node) {
+        const uint32_t p = node.polygon;
+        const uint32_t corners = mesh_.corner_count(p);
+        View view{node.root, node.a, node.b};
+        view.g = node.g;
+        uint32_t entry = kNoNode;
+        if (node.from_polygon != kNoNode) {
+            entry = entry_edge(p, node.from_polygon, node.entry);
+            if (entry == kNoNode) return;
+            const Flat first = flat(mesh_.vertex(mesh_.corner(p, entry)));
+            const Flat along = flat(mesh_.vertex(mesh_.corner(p, entry + 1 == corners ? 0 : entry + 1))) - first;
+            const double side = cross(first - node.root, along);
+            const double size = distance(first, node.root) * std::hypot(along.x, along.z);
+            if (std::fabs(side) > 1e-12 * size) {
+                view.scale = side > 0.0 ? 1.0 : -1.0;
+                if (node.a_turn != kNoNode) view.g_a = node.g + rate_ * distance(node.root, node.a), view.a_turn = node.a_turn;
+                if (node.b_turn != kNoNode) view.g_b = node.g + rate_ * distance(node.root, node.b), view.b_turn = node.b_turn;
+                // A root cheaper by another way makes these bends no better than that way's.
+                if (view.a_turn != kNoNode && worse_than_best(view.a_turn, view.g_a)) view.g_a = kInfinity;
+                if (view.b_turn != kNoNode && worse_than_best(view.b_turn, view.g_b)) view.g_b = kInfinity;
+            } else {
+                // The root on the entry edge's line: a corner of this polygon the walk bends at,
+                // from which all of it is in view; a root elsewhere on the line sees nothing through.
+                const Flat ab = node.b - node.a;
+                const double t = std::clamp(((node.root - node.a).x * ab.x + (node.root - node.a).z * ab.z) /
+                                                std::max(ab.x * ab.x + ab.z * ab.z, 1e-300),
+                                            0.0, 1.0);
+                if (distance(node.a + t * ab, node.root) > 1e-6 * (1.0 + size)) return;
+                const auto [seen, first] = scratch_.whole_views.try_emplace((uint64_t(node.root_id) << 32) | p, node.g);
+                if (!first) {
+                    if (seen->second <= node.g) return;
+                    seen->second = node.g;
+                }
+            }
+        }
+
+        if (p == goal_.polygon) {
+            const double cost = cost_to(view, goal_flat_);
+            if (cost < best_goal_) best_goal_ = cost, goal_parent_ = index;
+        }
+        for (const LinkExit* exit = graph_.exits_begin(p); exit != graph_.exits_end(p); ++exit) take_link(index, view, *exit);
+
+        bool bent_a = false, bent_b = false;
+        for (uint32_t k = 0; k < corners; ++k) {
+            if (k == entry) continue;
+            const uint32_t q = mesh_.neighbour(p, k);
+            if (q == kNoPolygon || query_.area_cost(mesh_.area(q)) <= 0.0f) continue;
+            PortalSpan span;
+            if (!portal_span(mesh_, p, k, margin_, span)) continue;
+            const Flat near_end = flat(span.left), far_end = flat(span.right);  // at corners k and k + 1
+            Successor successor{index, p, k, q, near_end, far_end};
+            if (view.scale == 0.0) {
+                add(successor, view.root, node.root_id, view.g, 0.0, 1.0);
+                continue;
+            }
+            const double b0 = view.beyond_b(near_end), b1 = view.beyond_b(far_end);
+            const double a0 = view.beyond_a(near_end), a1 = view.beyond_a(far_end);
+            double lo = 0.0, hi = 1.0;
+            if (keep_nonpositive(b0, b1, lo, hi) && keep_nonpositive(a0, a1, lo, hi))
+                add(successor, view.root, node.root_id, view.g, lo, hi);
+            lo = 0.0, hi = 1.0;
+            if (view.g_b < kInfinity && keep_nonpositive(-b0, -b1, lo, hi)) {
+                add(successor, view.b, view.b_turn, view.g_b, lo, hi);
+                bent_b = true;
+            }
+            lo = 0.0, hi = 1.0;
+            if (view.g_a < kInfinity && keep_nonpositive(-a0, -a1, lo, hi)) {
+                add(successor, view.a, view.a_turn, view.g_a, lo, hi);
+                bent_a = true;
+            }
+        }
+        if (bent_a) improve(view.a_turn, view.g_a);
+        if (bent_b) improve(view.b_turn, view.g_b);
+    }
+
+    // One edge of an expanded polygon, the part [lo, hi] of its opening in view from a root.
+    struct Successor {
+        uint32_t parent, p, k, q;
+        Flat near_end, far_end;
+    };
+
+    void add(const Successor& s, Flat root, uint32_t root_id, double g, double lo, double hi) {
+        const Flat along = s.far_end - s.near_end;
+        // A single point: a walk through a corner of the edge. It goes on into the neighbour only when
+        // it leaves this polygon there: round a vertex, polygon after polygon would pass it on.
+        if (lo == hi && !leaves_across(s, root, s.near_end + lo * along)) return;
+        // In the next polygon the edge runs the other way: its first corner is this one's k + 1.
+        IntervalNode node{root, s.near_end + hi * along, s.near_end + lo * along, g, root_id, s.q, s.p, s.k, s.parent,
+                          hi >= 1.0 ? turning_id(s.p, s.k, true) : kNoNode, lo <= 0.0 ? turning_id(s.p, s.k, false) : kNoNode};
+        push(node);
+    }
+
+    // Whether the line from `root` through `point` (on the edge of s) goes on beyond the edge, away
+    // from the polygon it crosses.
+    bool leaves_across(const Successor& s, Flat root, Flat point) const {
+        const uint32_t n = mesh_.corner_count(s.p);
+        Flat inside{0.0, 0.0};
+        for (uint32_t k = 0; k < n; ++k) inside = inside + flat(mesh_.vertex(mesh_.corner(s.p, k)));
+        inside = (1.0 / n) * inside;
+        const Flat along = s.far_end - s.near_end;
+        const double onward = cross(along, point - root), inward = cross(along, inside - s.near_end);
+        return (onward > 0.0 && inward < 0.0) || (onward < 0.0 && inward > 0.0);
+    }
+
+    void take_link(uint32_t index, const View& view, const LinkExit& exit) {
+        const Link& link = graph_.link(exit.link).link;
+        const bool reversed = exit.reversed != 0;
+        if (!can_take(link, reversed, query_.agent)) return;
+        const uint32_t q = reversed ? link.start_polygon : link.end_polygon;
+        if (query_.area_cost(mesh_.area(q)) <= 0.0f) return;
+        const Vec3& from = reversed ? link.end : link.start;
+        const Vec3& to = reversed ? link.start : link.end;
+        const double walked = cost_to(view, flat(from));
+        if (walked == kInfinity) return;
+        const double g = walked + double((to - from).norm()) * link.cost_modifier + query_.link_cost;
+        const uint32_t id = ids_.landing_base + 2 * exit.link + (reversed ? 1u : 0u);
+        if (!improve(id, g)) return;
+        const uint32_t entry = CorridorStep::kLinkBit | exit.link | (reversed ? CorridorStep::kReversedBit : 0u);
+        push(IntervalNode{flat(to), {}, {}, g, id, q, kNoNode, entry, index, kNoNode, kNoNode});
+    }
+
+    const PathGraph& graph_;
+    const NavMesh& mesh_;
+    const PathQuery& query_;
+    const NavPoint& goal_;
+    const Flat goal_flat_;
+    const double rate_;
+    const double h_scale_;
+    const float margin_;
+    const TurningIds ids_;
+    ShortestScratch& scratch_;
+    const uint32_t epoch_;
+    CorridorSearch& result_;
+    double best_goal_ = kInfinity;
+    uint32_t goal_parent_ = kNoNode;
+};
+
+}  // namespace
+
+void find_shortest_corridor(const PathGraph& graph, const PathQuery& query, const NavPoint& start, const NavPoint& goal,
+                            float walk_cost, const std::atomic<bool>* cancel, CorridorSearch& result) {
+    result.steps.clear();
+    result.reached_goal = result.out_of_nodes = result.cancelled = false;
+    result.nodes_visited = 0;
+    result.cost = 0.0f;
+    result.last_position = start.point;
+    ShortestScratch& scratch = shortest_scratch();
+    const TurningIds ids(graph.navmesh(), graph.links_ptr()->size());
+    const uint32_t epoch = scratch.begin(ids.count(), graph.navmesh().polygon_count());
+    ShortestSearch search(graph, query, goal, walk_cost, scratch, epoch, result);
+    search.add_start(start);
+    search.run(cancel);
+    if (result.cancelled || !result.reached_goal) return;
+    search.write_corridor();
+}
+
+}  // namespace nl
