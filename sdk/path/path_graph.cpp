@@ -1,6 +1,7 @@
 #include "path/path_graph.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace nl {
 
@@ -45,21 +46,42 @@ void PathGraph::index_bends() {
     bends_.assign(mesh.vertex_count(), 0);
     constexpr uint16_t kUnseen = 0xffff;
     std::vector<uint16_t> area_at(mesh.vertex_count(), kUnseen);
+    // The angle the polygons round each vertex fill, seen from above: a shortest walk bends only
+    // round an obstacle's reflex corner, where they fill more than half a turn.
+    std::vector<double> angle(mesh.vertex_count(), 0.0);
     for (uint32_t v = 0; v < mesh.vertex_count(); ++v)
         if (mesh.on_outline(v)) bends_[v] = kAnyBody;
+    twins_.assign(mesh.edge_count(), kNoTwin);
+    dead_ends_.assign(mesh.polygon_count(), 0);
     for (uint32_t p = 0; p < mesh.polygon_count(); ++p) {
         const uint8_t area = mesh.area(p);
+        uint32_t neighbours = 0;
+        for (uint32_t k = 0; k < mesh.corner_count(p); ++k) neighbours += mesh.neighbour(p, k) != kNoPolygon;
+        dead_ends_[p] = neighbours <= 1;
         areas_present_[area >> 6] |= uint64_t(1) << (area & 63);
         const uint32_t n = mesh.corner_count(p);
         for (uint32_t k = 0; k < n; ++k) {
-            const uint32_t v = mesh.corner(p, k), w = mesh.corner(p, k + 1 == n ? 0 : k + 1);
+            const uint32_t u = mesh.corner(p, k == 0 ? n - 1 : k - 1), v = mesh.corner(p, k), w = mesh.corner(p, k + 1 == n ? 0 : k + 1);
+            const double ax = double(mesh.vertex(u).x()) - mesh.vertex(v).x(), az = double(mesh.vertex(u).z()) - mesh.vertex(v).z();
+            const double bx = double(mesh.vertex(w).x()) - mesh.vertex(v).x(), bz = double(mesh.vertex(w).z()) - mesh.vertex(v).z();
+            angle[v] += std::fabs(std::atan2(ax * bz - az * bx, ax * bx + az * bz));
             if (area_at[v] == kUnseen) area_at[v] = area;
             else if (area_at[v] != area) bends_[v] |= kAnyBody;
-            if (mesh.neighbour(p, k) == kNoPolygon) continue;
+            const uint32_t q = mesh.neighbour(p, k);
+            if (q == kNoPolygon) continue;
+            const uint32_t m = mesh.corner_count(q);
+            for (uint32_t j = 0; j < m; ++j) {
+                // The same edge runs the other way in q; of several edges to p (a non-manifold repair), that one.
+                if (mesh.neighbour(q, j) != p) continue;
+                if (twins_[mesh.edge_index(p, k)] == kNoTwin || mesh.corner(q, j) == w) twins_[mesh.edge_index(p, k)] = uint8_t(j);
+            }
             if (mesh.on_outline(v)) bends_[w] |= kWiderBody;
             if (mesh.on_outline(w)) bends_[v] |= kWiderBody;
         }
     }
+    constexpr double kHalfTurn = 3.14159265358979323846;
+    for (uint32_t v = 0; v < mesh.vertex_count(); ++v)
+        if (angle[v] <= kHalfTurn + 1e-9) bends_[v] = 0;
 }
 
 size_t PathGraph::link_index_bytes() const {

@@ -47,11 +47,21 @@ public:
 
     // Bit a set for each area some polygon of the navmesh has.
     const std::array<uint64_t, 4>& areas_present() const { return areas_present_; }
-    // Whether a shortest walk may bend at vertex v: an obstacle's corner for some body. For every body
-    // the outline's vertices and those where areas meet (an area a body keeps out of is an obstacle
-    // to it); for a body wider than the navmesh's agent also the far ends of portals from the outline
-    // (its width may close such a portal, which then stands as a wall ending there).
+    // Whether a shortest walk may bend at vertex v: a reflex corner of an obstacle for some body (the
+    // polygons round it fill more than half a turn seen from above). For every body the outline's
+    // vertices and those where areas meet (an area a body keeps out of is an obstacle to it); for a
+    // body wider than the navmesh's agent also the far ends of portals from the outline (its width
+    // may close such a portal, which then stands as a wall ending there).
     bool may_bend_at(uint32_t v, bool wider_body) const { return (bends_[v] & (wider_body ? 3u : 1u)) != 0; }
+
+    // Whether polygon p has one neighbour at most: a walk that enters it across a portal can only come
+    // back out the same way (unless it ends there or takes a link).
+    bool dead_end(uint32_t p) const { return dead_ends_[p] != 0; }
+
+    // The edge of polygon p's neighbour across edge k that leads back to p (the same edge seen from
+    // the other side), or kNoTwin for an edge without neighbour.
+    static constexpr uint8_t kNoTwin = 0xff;
+    uint8_t twin_edge(uint32_t p, uint32_t k) const { return twins_[navmesh_->edge_index(p, k)]; }
 
     // Heap bytes of the link index (the navmesh counts its own).
     size_t link_index_bytes() const;
@@ -79,7 +89,9 @@ private:
     std::vector<uint32_t> first_exit_;  // polygon_count + 1 offsets into exits_; empty without links
     std::vector<LinkExit> exits_;
     std::array<uint64_t, 4> areas_present_{};
-    std::vector<uint8_t> bends_;  // per vertex: 1 any body may bend there, 2 a wider body may
+    std::vector<uint8_t> bends_;
+    std::vector<uint8_t> twins_;  // per polygon edge
+    std::vector<uint8_t> dead_ends_;  // per polygon  // per vertex: 1 any body may bend there, 2 a wider body may
     float cheapest_link_per_metre_ = 1.0f;
     bool has_cross_links_ = false;
     mutable ReachabilityCache reachability_;

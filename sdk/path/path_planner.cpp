@@ -118,12 +118,14 @@ void plan_path_in_surface_space(const PathGraph& graph, const PathQuery& query, 
         return;
     }
     result.goal = goal.point;
-    // A goal out of reach fails at once when the body's reachability map is built. A request never
-    // builds one before searching: it would cost a pass over the whole navmesh (uncancellable, past
-    // max_nodes) for a goal two steps away.
-    if (!query.accept_partial && start.polygon != goal.polygon) {
+    // A goal out of reach is known at once when the body's reachability map is built: no path, or the
+    // corridor search's partial path. A request never builds one before searching: it would cost a
+    // pass over the whole navmesh (uncancellable, past max_nodes) for a goal two steps away.
+    bool out_of_reach = false;
+    if (start.polygon != goal.polygon) {
         const auto map = graph.reachability_if_built(query.agent, query.area_costs);
-        if (map && !map->reaches(start.polygon, goal.polygon)) {
+        out_of_reach = map && !map->reaches(start.polygon, goal.polygon);
+        if (out_of_reach && !query.accept_partial) {
             result.outcome = PathOutcome::NoPath;
             return;
         }
@@ -133,8 +135,12 @@ void plan_path_in_surface_space(const PathGraph& graph, const PathQuery& query, 
     // for areas of different costs, and for the partial path to a goal out of reach.
     thread_local CorridorSearch corridor;
     const float walk_cost = uniform_walk_cost(graph, query);
-    if (walk_cost > 0.0f) {
+    if (walk_cost > 0.0f && !out_of_reach) {
         find_shortest_corridor(graph, query, start, goal, walk_cost, cancel, corridor);
+        const bool searched_everything = !corridor.reached_goal && !corridor.cancelled && !corridor.out_of_nodes;
+        // It went through everything the body reaches: the map costs about as much again, and
+        // answers the next requests for goals out of reach on this graph at once.
+        if (searched_everything) graph.reachability(query.agent, query.area_costs);
         if (!corridor.reached_goal && !corridor.cancelled && query.accept_partial) {
             const uint32_t exact_nodes = corridor.nodes_visited;
             find_corridor(graph, query, start, goal, cancel, corridor);
@@ -142,6 +148,8 @@ void plan_path_in_surface_space(const PathGraph& graph, const PathQuery& query, 
         }
     } else {
         find_corridor(graph, query, start, goal, cancel, corridor);
+        if (!corridor.reached_goal && !corridor.cancelled && !corridor.out_of_nodes && !query.accept_partial)
+            graph.reachability(query.agent, query.area_costs);
     }
     result.nodes_visited = corridor.nodes_visited;
     result.out_of_nodes = corridor.out_of_nodes;
@@ -151,9 +159,6 @@ void plan_path_in_surface_space(const PathGraph& graph, const PathQuery& query, 
     }
     if (!corridor.reached_goal && !query.accept_partial) {
         result.outcome = PathOutcome::NoPath;
-        // The search went through everything the body reaches: the map costs about as much again,
-        // and answers the next requests for goals out of reach on this graph at once.
-        if (!corridor.out_of_nodes) graph.reachability(query.agent, query.area_costs);
         return;
     }
     Vec3 end = goal.point;

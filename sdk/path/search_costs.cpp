@@ -25,6 +25,7 @@ float heuristic_scale(const PathGraph& graph, const PathQuery& query) {
 float uniform_walk_cost(const PathGraph& graph, const PathQuery& query) {
     float rate = 0.0f;
     const std::array<uint64_t, 4>& present = graph.areas_present();
+    if (query.area_costs.empty()) return 1.0f;
     for (uint32_t area = 0; area < 256; ++area) {
         if (((present[area >> 6] >> (area & 63)) & 1u) == 0) continue;
         const float cost = query.area_cost(static_cast<uint8_t>(area));

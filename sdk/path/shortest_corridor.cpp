@@ -3,12 +3,12 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <unordered_map>
 #include <vector>
 
 #include "path/link_filter.h"
 #include "path/portal.h"
 #include "path/search_costs.h"
+#include "platform/compiler.h"
 #include "util/error.h"
 
 namespace nl {
@@ -27,7 +27,10 @@ Flat operator-(Flat a, Flat b) { return {a.x - b.x, a.z - b.z}; }
 Flat operator+(Flat a, Flat b) { return {a.x + b.x, a.z + b.z}; }
 Flat operator*(double s, Flat a) { return {s * a.x, s * a.z}; }
 double cross(Flat a, Flat b) { return a.x * b.z - a.z * b.x; }
-double distance(Flat a, Flat b) { return std::hypot(a.x - b.x, a.z - b.z); }
+double distance(Flat a, Flat b) {
+    const double dx = a.x - b.x, dz = a.z - b.z;
+    return std::sqrt(dx * dx + dz * dz);
+}
 
 // Walks from `root` in straight lines through the interval [a, b] of an edge into `polygon` (a toward
 // the polygon's first corner of that edge); or, for a node without an edge (the start, a link's
@@ -37,7 +40,7 @@ struct IntervalNode {
     double g;               // cost from the start to the root
     uint32_t root_id;       // the root's turning id (below), for pruning
     uint32_t polygon;
-    uint32_t from_polygon;  // the polygon whose edge the interval is on; kNoNode for a node without edge
+    uint32_t edge;          // the polygon's edge the interval is on; kNoNode for a node without edge
     uint32_t entry;         // CorridorStep::entry into `polygon`
     uint32_t parent;        // node index; kNoNode for the start
     uint32_t a_turn, b_turn;  // turning ids of a and b when a walk may bend there, else kNoNode
@@ -60,20 +63,72 @@ struct TurningIds {
     uint32_t count() const { return start + 1; }
 };
 
+// The cheapest cost at which a root on a polygon's edge saw all of the polygon, per (root, polygon):
+// round a vertex the sweep from polygon to polygon would otherwise go on circling. Open addressing
+// with epoch stamps: a search clears it in constant time (an unordered_map's clear walks its buckets).
+class WholeViews {
+public:
+    void clear() {
+        if (++epoch_ == 0) {
+            for (Slot& slot : slots_) slot.epoch = 0;
+            epoch_ = 1;
+        }
+        used_ = 0;
+    }
+    // True if (root, polygon) was not seen at g or less; records g.
+    bool first_at(uint32_t root, uint32_t polygon, double g) {
+        if (2 * (used_ + 1) > slots_.size()) grow();
+        const uint64_t key = (uint64_t(root) << 32) | polygon;
+        for (size_t i = hash(key);; i = (i + 1) & (slots_.size() - 1)) {
+            Slot& slot = slots_[i];
+            if (slot.epoch != epoch_) {
+                slot = Slot{key, g, epoch_};
+                ++used_;
+                return true;
+            }
+            if (slot.key != key) continue;
+            if (slot.g <= g) return false;
+            slot.g = g;
+            return true;
+        }
+    }
+
+private:
+    struct Slot {
+        uint64_t key;
+        double g;
+        uint32_t epoch;
+    };
+    size_t hash(uint64_t key) const { return size_t((key * 0x9e3779b97f4a7c15ull) >> 32) & (slots_.size() - 1); }
+    void grow() {
+        std::vector<Slot> old = std::move(slots_);
+        slots_.assign(std::max<size_t>(64, 2 * old.size()), Slot{0, 0.0, 0});
+        const uint32_t current = epoch_;
+        epoch_ = 1;
+        used_ = 0;
+        for (const Slot& slot : old)
+            if (slot.epoch == current) first_at(uint32_t(slot.key >> 32), uint32_t(slot.key), slot.g);
+    }
+
+    std::vector<Slot> slots_;
+    uint32_t epoch_ = 1;
+    size_t used_ = 0;
+};
+
 struct ShortestScratch {
     std::vector<IntervalNode> nodes;
     std::vector<OpenEntry> open;
     std::vector<double> best;  // per turning id, valid where best_epoch is current
     std::vector<uint32_t> best_epoch;
     std::vector<uint32_t> polygon_epoch;
-    // The cheapest cost at which a root on a polygon's edge saw all of the polygon, per (root, polygon):
-    // round a vertex the sweep from polygon to polygon would otherwise go on circling.
-    std::unordered_map<uint64_t, double> whole_views;
+    WholeViews whole_views;
+    std::vector<uint32_t> pending;
     uint32_t epoch = 0;
 
     uint32_t begin(uint32_t turning_ids, uint32_t polygons) {
         nodes.clear();
         open.clear();
+        pending.clear();
         whole_views.clear();
         if (best.size() < turning_ids) best.resize(turning_ids), best_epoch.resize(turning_ids, 0);
         if (polygon_epoch.size() < polygons) polygon_epoch.resize(polygons, 0);
@@ -92,7 +147,7 @@ ShortestScratch& shortest_scratch() {
 }
 
 // Narrows [lo, hi] to where s0 + t (s1 - s0) <= 0. False when nothing is left.
-bool keep_nonpositive(double s0, double s1, double& lo, double& hi) {
+inline NL_ALWAYS_INLINE bool keep_nonpositive(double s0, double s1, double& lo, double& hi) {
     if (s0 <= 0.0 && s1 <= 0.0) return lo <= hi;
     if (s0 > 0.0 && s1 > 0.0) return false;
     const double t = s0 / (s0 - s1);
@@ -138,8 +193,9 @@ public:
 
     void add_start(const NavPoint& start) {
         improve(ids_.start, 0.0);
-        push(IntervalNode{flat(start.point), {}, {}, 0.0, ids_.start, start.polygon, kNoNode, CorridorStep::kStart, kNoNode,
-                          kNoNode, kNoNode});
+        generate(IntervalNode{flat(start.point), {}, {}, 0.0, ids_.start, start.polygon, kNoNode, CorridorStep::kStart, kNoNode,
+                              kNoNode, kNoNode});
+        flush();
     }
 
     // Runs until the goal's cost is the least in the open list.
@@ -152,11 +208,22 @@ public:
                 return;
             }
             std::pop_heap(open.begin(), open.end(), std::greater<OpenEntry>());
-            const uint32_t index = open.back().node;
+            uint32_t index = open.back().node;
             open.pop_back();
-            const IntervalNode node = scratch_.nodes[index];
+            IntervalNode node = scratch_.nodes[index];
             if (worse_than_best(node.root_id, node.g)) continue;  // its root was reached more cheaply since
-            expand(index, node);
+            for (;;) {
+                expand(index, node);
+                // A walk with one way on goes on at once (Polyanya's intermediate nodes): its cost
+                // only grows, and the open list need not hold it.
+                if (pending_.size() != 1 || result_.out_of_nodes) break;
+                const IntervalNode& next = scratch_.nodes[pending_[0]];
+                if (next.edge == kNoNode || next.polygon == goal_.polygon) break;
+                index = pending_[0];
+                node = next;
+                pending_.clear();
+            }
+            flush();
         }
         // Out of nodes with a walk found: a complete path, though perhaps not the shortest.
         result_.reached_goal = goal_parent_ != kNoNode;
@@ -189,7 +256,8 @@ private:
         return true;
     }
 
-    void push(const IntervalNode& node) {
+    // A new node, pushed on the open list by flush() unless expanded at once.
+    void generate(const IntervalNode& node) {
         uint32_t& seen = scratch_.polygon_epoch[node.polygon];
         if (seen != epoch_) {
             if (query_.max_nodes != 0 && result_.nodes_visited >= query_.max_nodes) {
@@ -199,25 +267,19 @@ private:
             seen = epoch_;
             ++result_.nodes_visited;
         }
-        const double h = node.from_polygon == kNoNode ? distance(node.root, goal_flat_)
-                                                    : estimate_through(node.root, node.a, node.b, goal_flat_);
         scratch_.nodes.push_back(node);
-        scratch_.open.push_back(OpenEntry{node.g + h * h_scale_, static_cast<uint32_t>(scratch_.nodes.size() - 1)});
-        std::push_heap(scratch_.open.begin(), scratch_.open.end(), std::greater<OpenEntry>());
+        pending_.push_back(static_cast<uint32_t>(scratch_.nodes.size() - 1));
     }
 
-    // The edge of polygon p shared with `from` across from's edge `from_edge`.
-    uint32_t entry_edge(uint32_t p, uint32_t from, uint32_t from_edge) const {
-        const uint32_t from_corners = mesh_.corner_count(from);
-        const uint32_t far_corner = mesh_.corner(from, from_edge + 1 == from_corners ? 0 : from_edge + 1);
-        const uint32_t n = mesh_.corner_count(p);
-        uint32_t any = kNoNode;
-        for (uint32_t k = 0; k < n; ++k) {
-            if (mesh_.neighbour(p, k) != from) continue;
-            if (mesh_.corner(p, k) == far_corner) return k;
-            any = k;
+    void flush() {
+        for (const uint32_t index : pending_) {
+            const IntervalNode& node = scratch_.nodes[index];
+            const double h = node.edge == kNoNode ? distance(node.root, goal_flat_)
+                                                  : estimate_through(node.root, node.a, node.b, goal_flat_);
+            scratch_.open.push_back(OpenEntry{node.g + h * h_scale_, index});
+            std::push_heap(scratch_.open.begin(), scratch_.open.end(), std::greater<OpenEntry>());
         }
-        return any;
+        pending_.clear();
     }
 
     // The turning id of an end of polygon p's edge k's opening (the end at corner k, or at k + 1),
@@ -255,15 +317,14 @@ private:
         const uint32_t corners = mesh_.corner_count(p);
         View view{node.root, node.a, node.b};
         view.g = node.g;
-        uint32_t entry = kNoNode;
-        if (node.from_polygon != kNoNode) {
-            entry = entry_edge(p, node.from_polygon, node.entry);
-            if (entry == kNoNode) return;
+        const uint32_t entry = node.edge;
+        if (entry != kNoNode) {
             const Flat first = flat(mesh_.vertex(mesh_.corner(p, entry)));
             const Flat along = flat(mesh_.vertex(mesh_.corner(p, entry + 1 == corners ? 0 : entry + 1))) - first;
             const double side = cross(first - node.root, along);
-            const double size = distance(first, node.root) * std::hypot(along.x, along.z);
-            if (std::fabs(side) > 1e-12 * size) {
+            const Flat to_root = node.root - first;
+            const double size2 = (to_root.x * to_root.x + to_root.z * to_root.z) * (along.x * along.x + along.z * along.z);
+            if (side * side > 1e-24 * size2) {
                 view.scale = side > 0.0 ? 1.0 : -1.0;
                 if (node.a_turn != kNoNode) view.g_a = node.g + rate_ * distance(node.root, node.a), view.a_turn = node.a_turn;
                 if (node.b_turn != kNoNode) view.g_b = node.g + rate_ * distance(node.root, node.b), view.b_turn = node.b_turn;
@@ -277,12 +338,8 @@ private:
                 const double t = std::clamp(((node.root - node.a).x * ab.x + (node.root - node.a).z * ab.z) /
                                                 std::max(ab.x * ab.x + ab.z * ab.z, 1e-300),
                                             0.0, 1.0);
-                if (distance(node.a + t * ab, node.root) > 1e-6 * (1.0 + size)) return;
-                const auto [seen, first] = scratch_.whole_views.try_emplace((uint64_t(node.root_id) << 32) | p, node.g);
-                if (!first) {
-                    if (seen->second <= node.g) return;
-                    seen->second = node.g;
-                }
+                if (distance(node.a + t * ab, node.root) > 1e-6 * (1.0 + std::sqrt(std::sqrt(size2)))) return;
+                if (!scratch_.whole_views.first_at(node.root_id, p, node.g)) return;
             }
         }
 
@@ -292,21 +349,37 @@ private:
         }
         for (const LinkExit* exit = graph_.exits_begin(p); exit != graph_.exits_end(p); ++exit) take_link(index, view, *exit);
 
+        // Each corner's place and sides once: two edges share it.
+        Flat at[kMaxPolygonVertices];
+        double b_side[kMaxPolygonVertices], a_side[kMaxPolygonVertices];
+        for (uint32_t k = 0; k < corners; ++k) {
+            at[k] = flat(mesh_.vertex(mesh_.corner(p, k)));
+            if (view.scale != 0.0) b_side[k] = view.beyond_b(at[k]), a_side[k] = view.beyond_a(at[k]);
+        }
         bool bent_a = false, bent_b = false;
         for (uint32_t k = 0; k < corners; ++k) {
             if (k == entry) continue;
             const uint32_t q = mesh_.neighbour(p, k);
             if (q == kNoPolygon || query_.area_cost(mesh_.area(q)) <= 0.0f) continue;
-            PortalSpan span;
-            if (!portal_span(mesh_, p, k, margin_, span)) continue;
-            const Flat near_end = flat(span.left), far_end = flat(span.right);  // at corners k and k + 1
+            // A polygon with no other way on than back: only the goal or a link makes it worth entering.
+            if (graph_.dead_end(q) && q != goal_.polygon && graph_.exits_begin(q) == graph_.exits_end(q)) continue;
+            const uint32_t next = k + 1 == corners ? 0 : k + 1;
+            Flat near_end = at[k], far_end = at[next];  // the opening's ends at corners k and k + 1
+            double b0 = b_side[k], b1 = b_side[next], a0 = a_side[k], a1 = a_side[next];
+            if (margin_ > 0.0f && (mesh_.on_outline(mesh_.corner(p, k)) || mesh_.on_outline(mesh_.corner(p, next)))) {
+                PortalSpan span;
+                if (!portal_span(mesh_, p, k, margin_, span)) continue;
+                near_end = flat(span.left), far_end = flat(span.right);
+                if (view.scale != 0.0) {
+                    b0 = view.beyond_b(near_end), b1 = view.beyond_b(far_end);
+                    a0 = view.beyond_a(near_end), a1 = view.beyond_a(far_end);
+                }
+            }
             Successor successor{index, p, k, q, near_end, far_end};
             if (view.scale == 0.0) {
                 add(successor, view.root, node.root_id, view.g, 0.0, 1.0);
                 continue;
             }
-            const double b0 = view.beyond_b(near_end), b1 = view.beyond_b(far_end);
-            const double a0 = view.beyond_a(near_end), a1 = view.beyond_a(far_end);
             double lo = 0.0, hi = 1.0;
             if (keep_nonpositive(b0, b1, lo, hi) && keep_nonpositive(a0, a1, lo, hi))
                 add(successor, view.root, node.root_id, view.g, lo, hi);
@@ -337,9 +410,10 @@ private:
         // it leaves this polygon there: round a vertex, polygon after polygon would pass it on.
         if (lo == hi && !leaves_across(s, root, s.near_end + lo * along)) return;
         // In the next polygon the edge runs the other way: its first corner is this one's k + 1.
-        IntervalNode node{root, s.near_end + hi * along, s.near_end + lo * along, g, root_id, s.q, s.p, s.k, s.parent,
-                          hi >= 1.0 ? turning_id(s.p, s.k, true) : kNoNode, lo <= 0.0 ? turning_id(s.p, s.k, false) : kNoNode};
-        push(node);
+        const uint8_t twin = graph_.twin_edge(s.p, s.k);
+        if (twin == PathGraph::kNoTwin) return;
+        generate(IntervalNode{root, s.near_end + hi * along, s.near_end + lo * along, g, root_id, s.q, twin, s.k, s.parent,
+                              hi >= 1.0 ? turning_id(s.p, s.k, true) : kNoNode, lo <= 0.0 ? turning_id(s.p, s.k, false) : kNoNode});
     }
 
     // Whether the line from `root` through `point` (on the edge of s) goes on beyond the edge, away
@@ -368,7 +442,7 @@ private:
         const uint32_t id = ids_.landing_base + 2 * exit.link + (reversed ? 1u : 0u);
         if (!improve(id, g)) return;
         const uint32_t entry = CorridorStep::kLinkBit | exit.link | (reversed ? CorridorStep::kReversedBit : 0u);
-        push(IntervalNode{flat(to), {}, {}, g, id, q, kNoNode, entry, index, kNoNode, kNoNode});
+        generate(IntervalNode{flat(to), {}, {}, g, id, q, kNoNode, entry, index, kNoNode, kNoNode});
     }
 
     const PathGraph& graph_;
@@ -383,6 +457,7 @@ private:
     ShortestScratch& scratch_;
     const uint32_t epoch_;
     CorridorSearch& result_;
+    std::vector<uint32_t>& pending_ = scratch_.pending;  // generated by the expansion under way
     double best_goal_ = kInfinity;
     uint32_t goal_parent_ = kNoNode;
 };
