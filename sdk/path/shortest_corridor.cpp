@@ -276,7 +276,9 @@ private:
             const IntervalNode& node = scratch_.nodes[index];
             const double h = node.edge == kNoNode ? distance(node.root, goal_flat_)
                                                   : estimate_through(node.root, node.a, node.b, goal_flat_);
-            scratch_.open.push_back(OpenEntry{node.g + h * h_scale_, index});
+            const double f = node.g + h * h_scale_;
+            if (f >= best_goal_) continue;  // never expanded: the goal is already as cheap
+            scratch_.open.push_back(OpenEntry{f, index});
             std::push_heap(scratch_.open.begin(), scratch_.open.end(), std::greater<OpenEntry>());
         }
         pending_.clear();

@@ -4,9 +4,10 @@
 // dtCreateNavMeshData. The same 10,000 random start/goal pairs are then planned by both, alternately:
 // Detour findNearestPoly x 2 + findPath + findStraightPath, NavLink nl_path_find (which snaps both ends,
 // searches and string-pulls), each pair three times, its fastest time counting. One line per level:
-//   level=NAME polys=N queries=N nl_us=X detour_us=X ratio=X nl_len=X detour_len=X nl_bytes=N detour_bytes=N
-//     ... exact_pairs=N within_0.1%=X worst_excess=X%
-// (lengths: means over the pairs both complete; bytes: NavLink's navmesh and link index vs Detour's
+//   level=NAME polys=N queries=N nl_us=X detour_us=X ratio=X nl_len=X detour_len=X nl_walked=X nl_bytes=N
+//     detour_bytes=N ... exact_pairs=N within_0.1%=X worst_excess=X%
+// (lengths: means over the pairs both complete, nl_len and detour_len straight between corners,
+// nl_walked NavLink's reported length, walked along the surface; bytes: NavLink's navmesh and link index vs Detour's
 // navmesh data; exactness: the first 500 complete paths' x-z lengths against the exact shortest walk
 // between the same ends, tests/support/shortest_path_reference.h), then one line with the queue's throughput on 1 and 2 path workers on the largest level.
 #include <DetourCommon.h>
@@ -139,7 +140,7 @@ bool compare(const char* path, Level& level) {
     // Each pair is timed kRounds times on each side, alternately, and its fastest time counts: a
     // shared machine's interruptions land on one side or the other at random; the minimum is the cost.
     std::vector<double> nl_best(kPairs, 1e300), detour_best(kPairs, 1e300);
-    double nl_length = 0.0, detour_length = 0.0, nl_nodes = 0.0, detour_nodes = 0.0;
+    double nl_length = 0.0, nl_walked = 0.0, detour_length = 0.0, nl_nodes = 0.0, detour_nodes = 0.0;
     int both_complete = 0;
     std::vector<nl_path_point> points(4096, nl_path_point_init());
     for (int round = 0; round < kRounds; ++round) {
@@ -167,7 +168,10 @@ bool compare(const char* path, Level& level) {
                                                          base | points[count - 1].polygon, result.goal);
             if (same_ends.complete) {
                 ++both_complete;
-                nl_length += result.length;
+                std::vector<float> corners(3 * count);
+                for (uint32_t k = 0; k < count; ++k) std::copy(points[k].position, points[k].position + 3, &corners[3 * k]);
+                nl_length += polyline_length(corners.data(), int(count));  // as Detour's: straight between corners
+                nl_walked += result.length;
                 detour_length += same_ends.length;
             }
         }
@@ -202,12 +206,12 @@ bool compare(const char* path, Level& level) {
     const nl::Handle handle{level.navmesh.index1, level.navmesh.generation};
     const auto graph = level.world->core->navmeshes().path_graph(handle);
     const size_t nl_bytes = graph->navmesh().memory_bytes() + graph->link_index_bytes();
-    std::printf("level=%s polys=%u queries=%d nl_us=%.2f detour_us=%.2f ratio=%.2f nl_len=%.4f detour_len=%.4f nl_bytes=%zu "
+    std::printf("level=%s polys=%u queries=%d nl_us=%.2f detour_us=%.2f ratio=%.2f nl_len=%.4f detour_len=%.4f nl_walked=%.4f nl_bytes=%zu "
                 "detour_bytes=%d both_complete=%d nl_nodes=%.1f detour_nodes=%.1f exact_pairs=%d within_0.1%%=%.4f "
                 "worst_excess=%.4f%%\n",
                 level.name.c_str(), level.polygons, kPairs, 1000.0 * nl_ms / kPairs, 1000.0 * detour_ms / kPairs,
                 nl_ms / detour_ms, nl_length / std::max(1, both_complete), detour_length / std::max(1, both_complete),
-                nl_bytes, detour.bytes, both_complete, nl_nodes / kPairs, detour_nodes / kPairs, exact_pairs,
+                nl_walked / std::max(1, both_complete), nl_bytes, detour.bytes, both_complete, nl_nodes / kPairs, detour_nodes / kPairs, exact_pairs,
                 double(within) / std::max(1, exact_pairs), 100.0 * worst_excess);
     std::fflush(stdout);
     return true;

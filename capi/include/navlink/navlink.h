@@ -1225,11 +1225,15 @@ typedef struct nl_path_result {
     nl_status status;         /**< For NL_PATH_FAILED: why; NL_STATUS_SUCCESS otherwise. */
     uint32_t point_count;     /**< Points in the path (0 unless COMPLETE or PARTIAL). */
     uint32_t links_used;      /**< Link segments in the path. */
-    uint32_t nodes_visited;   /**< Polygons the search touched. */
+    uint32_t nodes_visited;   /**< Polygons the search entered. */
     uint8_t out_of_nodes;     /**< 1 if max_nodes stopped the search. */
     uint8_t reserved[3];
-    float length;             /**< Metres, along the straight segments between points. */
-    float cost;               /**< The search's cost of the path (area costs, link costs). */
+    float length;             /**< Metres walked: from point to point along the navmesh surface
+                                   (through each portal crossed, at its height there), a link's
+                                   straight chord. */
+    float cost;               /**< The search's cost of the path: its metres times the area costs,
+                                   plus the link costs (the exact search, used when the body's area
+                                   costs are all equal, measures metres seen from above). */
     float start[3];           /**< The start snapped to the navmesh. */
     float goal[3];            /**< The goal snapped to the navmesh (where the path ends if COMPLETE). */
 } nl_path_result;
