@@ -10,8 +10,13 @@ PathGraph::PathGraph(std::shared_ptr<const NavMesh> navmesh, std::shared_ptr<con
     : navmesh_(std::move(navmesh)), links_(links ? std::move(links) : std::make_shared<const LinkSnapshot>()),
       frame_(std::move(frame)) {
     for (const StoredLink& s : *links_) has_cross_links_ = has_cross_links_ || s.link.crosses();
-    const uint32_t polygons = navmesh_->polygon_count();
     index_bends();
+    index_links();
+    index_appendices();
+}
+
+void PathGraph::index_links() {
+    const uint32_t polygons = navmesh_->polygon_count();
     auto usable = [&](const Link& l) {
         // A link to another navmesh leaves this graph: agents plan such routes leg by leg (agents/route.h).
         return l.enabled && !l.crosses() && l.start_polygon < polygons && l.end_polygon < polygons;
@@ -52,12 +57,8 @@ void PathGraph::index_bends() {
     for (uint32_t v = 0; v < mesh.vertex_count(); ++v)
         if (mesh.on_outline(v)) bends_[v] = kAnyBody;
     twins_.assign(mesh.edge_count(), kNoTwin);
-    dead_ends_.assign(mesh.polygon_count(), 0);
     for (uint32_t p = 0; p < mesh.polygon_count(); ++p) {
         const uint8_t area = mesh.area(p);
-        uint32_t neighbours = 0;
-        for (uint32_t k = 0; k < mesh.corner_count(p); ++k) neighbours += mesh.neighbour(p, k) != kNoPolygon;
-        dead_ends_[p] = neighbours <= 1;
         areas_present_[area >> 6] |= uint64_t(1) << (area & 63);
         const uint32_t n = mesh.corner_count(p);
         for (uint32_t k = 0; k < n; ++k) {
@@ -82,6 +83,63 @@ void PathGraph::index_bends() {
     constexpr double kHalfTurn = 3.14159265358979323846;
     for (uint32_t v = 0; v < mesh.vertex_count(); ++v)
         if (angle[v] <= kHalfTurn + 1e-9) bends_[v] = 0;
+}
+
+void PathGraph::index_appendices() {
+    const NavMesh& mesh = *navmesh_;
+    const uint32_t polygons = mesh.polygon_count();
+    // Peel the polygons with one way on at most, again and again (leaves, then what they hung
+    // from): what goes is trees of polygons hanging from the rest, each from the neighbour it had left.
+    hangs_from_.assign(polygons, kNoPolygon);
+    subtree_first_.assign(polygons, kNoPolygon);
+    subtree_last_.assign(polygons, kNoPolygon);
+    subtree_exits_.assign(polygons, 0);
+    std::vector<uint32_t> ways(polygons, 0), order;
+    std::vector<uint8_t> queued(polygons, 0), peeled(polygons, 0);
+    for (uint32_t p = 0; p < polygons; ++p) {
+        for (uint32_t k = 0; k < mesh.corner_count(p); ++k) ways[p] += mesh.neighbour(p, k) != kNoPolygon;
+        if (ways[p] <= 1) order.push_back(p), queued[p] = 1;
+    }
+    for (size_t i = 0; i < order.size(); ++i) {
+        const uint32_t p = order[i];
+        peeled[p] = 1;
+        for (uint32_t k = 0; k < mesh.corner_count(p); ++k) {
+            const uint32_t q = mesh.neighbour(p, k);
+            if (q == kNoPolygon || peeled[q]) continue;
+            hangs_from_[p] = q;
+            if (--ways[q] <= 1 && !queued[q]) order.push_back(q), queued[q] = 1;
+        }
+    }
+    if (order.empty()) return;
+    // Number each tree depth first, so that a polygon's subtree is one range of numbers.
+    std::vector<uint32_t> first_child(polygons + 1, 0), children(order.size());
+    for (const uint32_t p : order)
+        if (hangs_from_[p] != kNoPolygon && peeled[hangs_from_[p]]) ++first_child[hangs_from_[p] + 1];
+    for (uint32_t p = 0; p < polygons; ++p) first_child[p + 1] += first_child[p];
+    std::vector<uint32_t> fill(first_child.begin(), first_child.end() - 1);
+    for (const uint32_t p : order)
+        if (hangs_from_[p] != kNoPolygon && peeled[hangs_from_[p]]) children[fill[hangs_from_[p]]++] = p;
+    uint32_t number = 0;
+    std::vector<std::pair<uint32_t, uint32_t>> stack;  // polygon, next child
+    for (const uint32_t top : order) {
+        if (hangs_from_[top] != kNoPolygon && peeled[hangs_from_[top]]) continue;
+        stack.push_back({top, first_child[top]});
+        subtree_first_[top] = number++;
+        while (!stack.empty()) {
+            auto& [p, next] = stack.back();
+            if (next < first_child[p + 1]) {
+                const uint32_t child = children[next++];
+                subtree_first_[child] = number++;
+                stack.push_back({child, first_child[child]});
+                continue;
+            }
+            subtree_last_[p] = number - 1;
+            subtree_exits_[p] |= exits_begin(p) != exits_end(p);
+            const uint32_t done = p;
+            stack.pop_back();
+            if (!stack.empty()) subtree_exits_[stack.back().first] |= subtree_exits_[done];
+        }
+    }
 }
 
 size_t PathGraph::link_index_bytes() const {

@@ -54,9 +54,16 @@ public:
     // may close such a portal, which then stands as a wall ending there).
     bool may_bend_at(uint32_t v, bool wider_body) const { return (bends_[v] & (wider_body ? 3u : 1u)) != 0; }
 
-    // Whether polygon p has one neighbour at most: a walk that enters it across a portal can only come
-    // back out the same way (unless it ends there or takes a link).
-    bool dead_end(uint32_t p) const { return dead_ends_[p] != 0; }
+    // Whether a walk stepping from polygon `from` into its neighbour `into` goes down a dead end: a
+    // tree of polygons hanging from the rest of the navmesh (from a polygon with one way on, and so
+    // on), entered from its stem, that holds neither `goal` nor a link's way out. Such a walk can only
+    // come back the way it went.
+    bool dead_end(uint32_t from, uint32_t into, uint32_t goal) const {
+        if (hangs_from_[into] != from) return false;
+        const uint32_t goal_number = subtree_first_[goal];
+        const bool goal_inside = goal_number != kNoPolygon && goal_number >= subtree_first_[into] && goal_number <= subtree_last_[into];
+        return !goal_inside && subtree_exits_[into] == 0;
+    }
 
     // The edge of polygon p's neighbour across edge k that leads back to p (the same edge seen from
     // the other side), or kNoTwin for an edge without neighbour.
@@ -82,6 +89,8 @@ public:
 
 private:
     void index_bends();
+    void index_links();
+    void index_appendices();
 
     std::shared_ptr<const NavMesh> navmesh_;
     std::shared_ptr<const LinkSnapshot> links_;
@@ -91,7 +100,10 @@ private:
     std::array<uint64_t, 4> areas_present_{};
     std::vector<uint8_t> bends_;
     std::vector<uint8_t> twins_;  // per polygon edge
-    std::vector<uint8_t> dead_ends_;  // per polygon  // per vertex: 1 any body may bend there, 2 a wider body may
+    // Per polygon: the polygon a peeled one hangs from, and the range of depth-first numbers of its
+    // subtree (kNoPolygon for the polygons that stay); whether a link leaves from its subtree.
+    std::vector<uint32_t> hangs_from_, subtree_first_, subtree_last_;
+    std::vector<uint8_t> subtree_exits_;
     float cheapest_link_per_metre_ = 1.0f;
     bool has_cross_links_ = false;
     mutable ReachabilityCache reachability_;

@@ -363,8 +363,7 @@ private:
             if (k == entry) continue;
             const uint32_t q = mesh_.neighbour(p, k);
             if (q == kNoPolygon || query_.area_cost(mesh_.area(q)) <= 0.0f) continue;
-            // A polygon with no other way on than back: only the goal or a link makes it worth entering.
-            if (graph_.dead_end(q) && q != goal_.polygon && graph_.exits_begin(q) == graph_.exits_end(q)) continue;
+            if (graph_.dead_end(p, q, goal_.polygon)) continue;
             const uint32_t next = k + 1 == corners ? 0 : k + 1;
             Flat near_end = at[k], far_end = at[next];  // the opening's ends at corners k and k + 1
             double b0 = b_side[k], b1 = b_side[next], a0 = a_side[k], a1 = a_side[next];
