@@ -53,15 +53,15 @@ long link_index(const std::vector<nl_link>& links, nl_link_id link) {
 void print_path_text(std::FILE* out, const samples::PlannedPath& path, const std::vector<nl_link>& links,
                      const AskedPath& asked) {
     const nl_path_result& r = path.result;
-    std::fprintf(out, "path: %s, %.2f m, %s (%u polygons searched)\n", samples::outcome_name(r.outcome), r.length,
-                 samples::describe_links(samples::count_links(path)).c_str(), r.nodes_visited);
+    std::fprintf(out, "path: %s, %.2f m walked, %s (%u polygons searched)\n", samples::outcome_name(r.outcome),
+                 r.length, samples::describe_links(samples::count_links(path)).c_str(), r.nodes_visited);
     if (r.outcome == NL_PATH_START_OFF_NAVMESH) print_off_navmesh(out, "start", "--from", asked.from, asked.nearest_start);
     if (r.outcome == NL_PATH_GOAL_OFF_NAVMESH) print_off_navmesh(out, "goal", "--to", asked.to, asked.nearest_goal);
     if (path.points.empty()) return;
     const bool arrives = r.outcome == NL_PATH_COMPLETE;
     std::fprintf(out, "  from (%.2f, %.2f, %.2f) to (%.2f, %.2f, %.2f) on the navmesh\n", r.start[0], r.start[1],
                  r.start[2], r.goal[0], r.goal[1], r.goal[2]);
-    std::fprintf(out, "  %3s  %-28s %-6s %-6s %8s\n", "#", "point", "then", "link", "length");
+    std::fprintf(out, "  %3s  %-28s %-6s %-6s %8s\n", "#", "point", "then", "link", "straight");
     const auto segments = samples::path_segments(path);
     for (size_t i = 0; i < path.points.size(); ++i) {
         const nl_path_point& p = path.points[i];
@@ -91,7 +91,10 @@ std::string path_json(const samples::PlannedPath& path, const std::vector<nl_lin
     if (!path.points.empty()) out["ends_from_goal"] = distance(path.points.back().position, asked.to);
     if (r.outcome == NL_PATH_START_OFF_NAVMESH) out["nearest_start"] = nearest_json(asked.nearest_start);
     if (r.outcome == NL_PATH_GOAL_OFF_NAVMESH) out["nearest_goal"] = nearest_json(asked.nearest_goal);
-    out["length"] = r.length;
+    out["length"] = r.length;  // walked, along the surface
+    float straight = 0.0f;
+    for (const samples::PathSegment& segment : samples::path_segments(path)) straight += segment.length;
+    out["straight_length"] = straight;
     out["cost"] = r.cost;
     out["links_used"] = r.links_used;
     out["nodes_visited"] = r.nodes_visited;
