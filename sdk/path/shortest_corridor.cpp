@@ -52,21 +52,20 @@ struct OpenEntry {
     bool operator>(const OpenEntry& other) const { return f > other.f; }
 };
 
-// Turning ids index the cheapest cost found to each point a walk may bend at or start from: the
-// navmesh's vertices, then the narrowed ends of portals (two per polygon edge), then where links land
-// (two per link, one per direction), then the start.
+// Turning ids name the points a walk may bend at or start from, for the cheapest cost found to each:
+// the navmesh's vertices, then where links land (two per link, one per direction), then the start,
+// held in an array; then the narrowed ends of portals (two per polygon edge, only for a wider body),
+// held in a table (an array would take two entries per edge for every search thread).
 struct TurningIds {
-    uint32_t narrowed_base, landing_base, start;
+    uint32_t landing_base, start, narrowed_base;
     TurningIds(const NavMesh& mesh, size_t links)
-        : narrowed_base(mesh.vertex_count()), landing_base(narrowed_base + 2 * mesh.edge_count()),
-          start(landing_base + 2 * static_cast<uint32_t>(links)) {}
-    uint32_t count() const { return start + 1; }
+        : landing_base(mesh.vertex_count()), start(landing_base + 2 * static_cast<uint32_t>(links)), narrowed_base(start + 1) {}
+    uint32_t dense_count() const { return narrowed_base; }
 };
 
-// The cheapest cost at which a root on a polygon's edge saw all of the polygon, per (root, polygon):
-// round a vertex the sweep from polygon to polygon would otherwise go on circling. Open addressing
-// with epoch stamps: a search clears it in constant time (an unordered_map's clear walks its buckets).
-class WholeViews {
+// Costs by key, open addressing with epoch stamps: a search clears it in constant time (an
+// unordered_map's clear walks its buckets).
+class CostTable {
 public:
     void clear() {
         if (++epoch_ == 0) {
@@ -75,21 +74,28 @@ public:
         }
         used_ = 0;
     }
-    // True if (root, polygon) was not seen at g or less; records g.
-    bool first_at(uint32_t root, uint32_t polygon, double g) {
+    // The cost kept for `key`, or null.
+    const double* find(uint64_t key) const {
+        if (slots_.empty()) return nullptr;
+        for (size_t i = hash(key);; i = (i + 1) & (slots_.size() - 1)) {
+            const Slot& slot = slots_[i];
+            if (slot.epoch != epoch_) return nullptr;
+            if (slot.key == key) return &slot.g;
+        }
+    }
+    // Keeps g for `key` if it has none or a dearer one.
+    void lower(uint64_t key, double g) {
         if (2 * (used_ + 1) > slots_.size()) grow();
-        const uint64_t key = (uint64_t(root) << 32) | polygon;
         for (size_t i = hash(key);; i = (i + 1) & (slots_.size() - 1)) {
             Slot& slot = slots_[i];
             if (slot.epoch != epoch_) {
                 slot = Slot{key, g, epoch_};
                 ++used_;
-                return true;
+                return;
             }
             if (slot.key != key) continue;
-            if (slot.g <= g) return false;
-            slot.g = g;
-            return true;
+            slot.g = std::min(slot.g, g);
+            return;
         }
     }
 
@@ -107,7 +113,7 @@ private:
         epoch_ = 1;
         used_ = 0;
         for (const Slot& slot : old)
-            if (slot.epoch == current) first_at(uint32_t(slot.key >> 32), uint32_t(slot.key), slot.g);
+            if (slot.epoch == current) lower(slot.key, slot.g);
     }
 
     std::vector<Slot> slots_;
@@ -118,10 +124,13 @@ private:
 struct ShortestScratch {
     std::vector<IntervalNode> nodes;
     std::vector<OpenEntry> open;
-    std::vector<double> best;  // per turning id, valid where best_epoch is current
+    std::vector<double> best;  // per dense turning id, valid where best_epoch is current
     std::vector<uint32_t> best_epoch;
+    CostTable best_narrowed;   // per narrowed end's turning id
     std::vector<uint32_t> polygon_epoch;
-    WholeViews whole_views;
+    // The cheapest cost at which a root on a polygon's edge saw all of the polygon, per (root,
+    // polygon): round a vertex the sweep from polygon to polygon would otherwise go on circling.
+    CostTable whole_views;
     std::vector<uint32_t> pending;
     uint32_t epoch = 0;
 
@@ -130,6 +139,7 @@ struct ShortestScratch {
         open.clear();
         pending.clear();
         whole_views.clear();
+        best_narrowed.clear();
         if (best.size() < turning_ids) best.resize(turning_ids), best_epoch.resize(turning_ids, 0);
         if (polygon_epoch.size() < polygons) polygon_epoch.resize(polygons, 0);
         if (++epoch == 0) {
@@ -245,12 +255,21 @@ private:
     // bends round it to its own side), one longer by rounding must not double the work.
     static constexpr double kRelativeSlack = 1e-9;
 
+    static bool worse(double g, double best) { return g > best * (1.0 + kRelativeSlack) + kRelativeSlack; }
     bool worse_than_best(uint32_t id, double g) const {
-        return scratch_.best_epoch[id] == epoch_ && g > scratch_.best[id] * (1.0 + kRelativeSlack) + kRelativeSlack;
+        if (id >= ids_.narrowed_base) {
+            const double* best = scratch_.best_narrowed.find(id);
+            return best && worse(g, *best);
+        }
+        return scratch_.best_epoch[id] == epoch_ && worse(g, scratch_.best[id]);
     }
     // Records g for the turning id unless it was reached more cheaply; false then.
     bool improve(uint32_t id, double g) {
         if (worse_than_best(id, g)) return false;
+        if (id >= ids_.narrowed_base) {
+            scratch_.best_narrowed.lower(id, g);
+            return true;
+        }
         if (scratch_.best_epoch[id] != epoch_ || g < scratch_.best[id]) scratch_.best[id] = g;
         scratch_.best_epoch[id] = epoch_;
         return true;
@@ -341,7 +360,10 @@ private:
                                                 std::max(ab.x * ab.x + ab.z * ab.z, 1e-300),
                                             0.0, 1.0);
                 if (distance(node.a + t * ab, node.root) > 1e-6 * (1.0 + std::sqrt(std::sqrt(size2)))) return;
-                if (!scratch_.whole_views.first_at(node.root_id, p, node.g)) return;
+                const uint64_t view_key = (uint64_t(node.root_id) << 32) | p;
+                const double* seen = scratch_.whole_views.find(view_key);
+                if (seen && *seen <= node.g) return;
+                scratch_.whole_views.lower(view_key, node.g);
             }
         }
 
@@ -474,7 +496,7 @@ void find_shortest_corridor(const PathGraph& graph, const PathQuery& query, cons
     result.last_position = start.point;
     ShortestScratch& scratch = shortest_scratch();
     const TurningIds ids(graph.navmesh(), graph.links_ptr()->size());
-    const uint32_t epoch = scratch.begin(ids.count(), graph.navmesh().polygon_count());
+    const uint32_t epoch = scratch.begin(ids.dense_count(), graph.navmesh().polygon_count());
     ShortestSearch search(graph, query, goal, walk_cost, scratch, epoch, result);
     search.add_start(start);
     search.run(cancel);
