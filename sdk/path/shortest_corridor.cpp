@@ -428,6 +428,13 @@ private:
     };
 
     void add(const Successor& s, Flat root, uint32_t root_id, double g, double lo, double hi) {
+        // An interval that reaches an end of the opening within rounding ends there, where the walk
+        // may bend: a ray along a wall through a corner stops a hair short of it (dungeon: a walk
+        // down a straight wall could not turn at its end, and lost the way on).
+        constexpr double kSnap = 1e-9;
+        if (hi >= 1.0 - kSnap) hi = 1.0;
+        if (lo <= kSnap) lo = 0.0;
+        if (lo > hi) lo = hi;
         const Flat along = s.far_end - s.near_end;
         // A single point: a walk through a corner of the edge. It goes on into the neighbour only when
         // it leaves this polygon there: round a vertex, polygon after polygon would pass it on.
@@ -465,7 +472,9 @@ private:
         const uint32_t id = ids_.landing_base + 2 * exit.link + (reversed ? 1u : 0u);
         if (!improve(id, g)) return;
         const uint32_t entry = CorridorStep::kLinkBit | exit.link | (reversed ? CorridorStep::kReversedBit : 0u);
-        generate(IntervalNode{flat(to), {}, {}, g, id, q, kNoNode, entry, index, kNoNode, kNoNode});
+        // The walk on starts from the landing seen inside its polygon: a link's end a little outside
+        // it (on a neighbour's side of an edge) would see that edge from behind.
+        generate(IntervalNode{flat(mesh_.closest_point_on_polygon(q, to)), {}, {}, g, id, q, kNoNode, entry, index, kNoNode, kNoNode});
     }
 
     const PathGraph& graph_;

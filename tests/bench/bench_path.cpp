@@ -5,11 +5,13 @@
 // Detour findNearestPoly x 2 + findPath + findStraightPath, NavLink nl_path_find (which snaps both ends,
 // searches and string-pulls), each pair three times, its fastest time counting. One line per level:
 //   level=NAME polys=N queries=N nl_us=X detour_us=X ratio=X nl_len=X detour_len=X nl_walked=X nl_bytes=N
-//     detour_bytes=N ... exact_pairs=N within_0.1%=X worst_excess=X%
+//     detour_bytes=N ... exact_pairs=N within_0.1%=X worst_excess=X% links=N linked_pairs=N
+//     linked_within_0.1%=X linked_worst_excess=X%
 // (lengths: means over the pairs both complete, nl_len and detour_len straight between corners,
 // nl_walked NavLink's reported length, walked along the surface; bytes: NavLink's navmesh and link index vs Detour's
 // navmesh data; exactness: the first 500 complete paths' x-z lengths against the exact shortest walk
-// between the same ends, tests/support/shortest_path_reference.h), then one line with the queue's throughput on 1 and 2 path workers on the largest level.
+// between the same ends, tests/support/shortest_path_reference.h; then the same with the level's
+// generated links for a body that takes them, costs against the cheapest route), then one line with the queue's throughput on 1 and 2 path workers on the largest level.
 #include <DetourCommon.h>
 #include <DetourNavMesh.h>
 #include <DetourNavMeshQuery.h>
@@ -119,6 +121,59 @@ nl_path_request_def request_for(const Level& level, const Pair& pair) {
     return def;  // a walker of the navmesh's own radius
 }
 
+// A body that takes the default generated links.
+nl_path_request_def jumper_request_for(const Level& level, const Pair& pair) {
+    nl_path_request_def def = request_for(level, pair);
+    def.agent.max_jump_distance = 4.0f;
+    def.agent.max_jump_height = 2.0f;
+    def.agent.max_drop_height = 6.0f;
+    return def;
+}
+
+struct Exactness {
+    int pairs = 0, within = 0;
+    double worst_excess = 0.0;
+};
+
+// Exactness (issue 20): the first kExactPairs complete paths' costs against the exact cheapest route
+// between the same snapped ends (tests/support/shortest_path_reference.h). Without links and at the
+// default costs, a path's cost is its length seen from above, what the funnel minimises.
+template <typename Request>
+Exactness exactness(const Level& level, Request request, std::vector<nl_path_point>& points) {
+    const auto graph = level.world->core->navmeshes().path_graph(nl::Handle{level.navmesh.index1, level.navmesh.generation});
+    nl::PathQuery body;
+    const nl_path_request_def sample = request(level, level.pairs[0]);
+    body.agent = nl::AgentCapabilities{sample.agent.max_jump_distance, sample.agent.max_jump_height,
+                                       sample.agent.max_drop_height, sample.agent.radius, sample.agent.abilities};
+    body.link_cost = sample.link_cost;
+    const nl::test::ShortestPathReference reference(*graph, body);
+    Exactness out;
+    for (int i = 0; i < kPairs && out.pairs < kExactPairs; ++i) {
+        const nl_path_request_def def = request(level, level.pairs[i]);
+        nl_path_result result = nl_path_result_init();
+        uint32_t count = 0;
+        nl_path_find(level.world, &def, &result, points.data(), uint32_t(points.size()), &count);
+        if (result.outcome != NL_PATH_COMPLETE || count == 0) continue;
+        const std::optional<double> cheapest = reference.length(nl::Vec3(result.start[0], result.start[1], result.start[2]),
+                                                                nl::Vec3(result.goal[0], result.goal[1], result.goal[2]));
+        if (!cheapest) continue;  // the reference finds no route (the search went where it sees none)
+        ++out.pairs;
+        // The points' own length seen from above when no link is taken: the funnel's walk, not the
+        // search's estimate of it.
+        double cost = result.cost;
+        if (result.links_used == 0) {
+            cost = 0.0;
+            for (uint32_t k = 1; k < count; ++k)
+                cost += std::hypot(double(points[k].position[0]) - points[k - 1].position[0],
+                                   double(points[k].position[2]) - points[k - 1].position[2]);
+        }
+        const double excess = cost / std::max(*cheapest, 1e-9) - 1.0;
+        out.worst_excess = std::max(out.worst_excess, excess);
+        out.within += excess <= 1e-3 ? 1 : 0;
+    }
+    return out;
+}
+
 bool compare(const char* path, Level& level) {
     nl::bench::RecastLevel recast = nl::bench::build_recast_level_from_obj(path);
     level.name = recast.name;
@@ -179,40 +234,31 @@ bool compare(const char* path, Level& level) {
     double nl_ms = 0.0, detour_ms = 0.0;
     for (int i = 0; i < kPairs; ++i) nl_ms += nl_best[i], detour_ms += detour_best[i];
 
-    // Exactness (issue 20): the first kExactPairs complete paths' x-z lengths (what the funnel
-    // minimises) against the exact shortest walk between the same snapped ends.
-    const nl::test::ShortestPathReference reference(level.world->core->navmeshes().path_graph(
-        nl::Handle{level.navmesh.index1, level.navmesh.generation})->navmesh());
-    int exact_pairs = 0, within = 0;
-    double worst_excess = 0.0;
-    for (int i = 0; i < kPairs && exact_pairs < kExactPairs; ++i) {
-        const nl_path_request_def def = request_for(level, level.pairs[i]);
-        nl_path_result result = nl_path_result_init();
-        uint32_t count = 0;
-        nl_path_find(level.world, &def, &result, points.data(), uint32_t(points.size()), &count);
-        if (result.outcome != NL_PATH_COMPLETE || count == 0) continue;
-        double walked = 0.0;
-        for (uint32_t k = 1; k < count; ++k)
-            walked += std::hypot(double(points[k].position[0]) - points[k - 1].position[0],
-                                 double(points[k].position[2]) - points[k - 1].position[2]);
-        const std::optional<double> shortest = reference.length(nl::Vec3(result.start[0], result.start[1], result.start[2]),
-                                                                nl::Vec3(result.goal[0], result.goal[1], result.goal[2]));
-        if (!shortest) continue;  // the reference finds no walk (the search went where it sees none)
-        ++exact_pairs;
-        const double excess = walked / std::max(*shortest, 1e-9) - 1.0;
-        worst_excess = std::max(worst_excess, excess);
-        within += excess <= 1e-3 ? 1 : 0;
-    }
+    const Exactness walking = exactness(level, request_for, points);
     const nl::Handle handle{level.navmesh.index1, level.navmesh.generation};
     const auto graph = level.world->core->navmeshes().path_graph(handle);
     const size_t nl_bytes = graph->navmesh().memory_bytes() + graph->link_index_bytes();
     std::printf("level=%s polys=%u queries=%d nl_us=%.2f detour_us=%.2f ratio=%.2f nl_len=%.4f detour_len=%.4f nl_walked=%.4f nl_bytes=%zu "
                 "detour_bytes=%d both_complete=%d nl_nodes=%.1f detour_nodes=%.1f exact_pairs=%d within_0.1%%=%.4f "
-                "worst_excess=%.4f%%\n",
+                "worst_excess=%.4f%%",
                 level.name.c_str(), level.polygons, kPairs, 1000.0 * nl_ms / kPairs, 1000.0 * detour_ms / kPairs,
                 nl_ms / detour_ms, nl_length / std::max(1, both_complete), detour_length / std::max(1, both_complete),
-                nl_walked / std::max(1, both_complete), nl_bytes, detour.bytes, both_complete, nl_nodes / kPairs, detour_nodes / kPairs, exact_pairs,
-                double(within) / std::max(1, exact_pairs), 100.0 * worst_excess);
+                nl_walked / std::max(1, both_complete), nl_bytes, detour.bytes, both_complete, nl_nodes / kPairs, detour_nodes / kPairs, walking.pairs,
+                double(walking.within) / std::max(1, walking.pairs), 100.0 * walking.worst_excess);
+    std::fflush(stdout);
+
+    // With the level's generated links, for a body that takes them: costs (walking seen from above
+    // plus each link's length times its cost modifier) against the reference's cheapest route.
+    nl_mesh_id mesh{};
+    uint32_t links = 0;
+    if (NL_SUCCEEDED(nl_mesh_add_obj_file(level.world, path, nullptr, &mesh)) &&
+        NL_SUCCEEDED(nl_navmesh_generate_links(level.world, level.navmesh, nullptr, nullptr, nullptr, nullptr))) {
+        nl_navmesh_get_links(level.world, level.navmesh, nullptr, 0, &links);
+        const Exactness linked = exactness(level, jumper_request_for, points);
+        std::printf(" links=%u linked_pairs=%d linked_within_0.1%%=%.4f linked_worst_excess=%.4f%%", links, linked.pairs,
+                    double(linked.within) / std::max(1, linked.pairs), 100.0 * linked.worst_excess);
+    }
+    std::printf("\n");
     std::fflush(stdout);
     return true;
 }
