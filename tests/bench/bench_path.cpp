@@ -6,7 +6,8 @@
 // searches and string-pulls), each pair three times, its fastest time counting. One line per level:
 //   level=NAME polys=N queries=N nl_us=X detour_us=X ratio=X nl_len=X detour_len=X nl_walked=X nl_bytes=N
 //     detour_bytes=N ... exact_pairs=N within_0.1%=X worst_excess=X% links=N linked_pairs=N
-//     linked_within_0.1%=X linked_worst_excess=X%
+//     linked_within_0.1%=X linked_worst_excess=X% linked_missed=N
+// (missed: paths the exact search did not find, complete only through the corridor search's fallback)
 // (lengths: means over the pairs both complete, nl_len and detour_len straight between corners,
 // nl_walked NavLink's reported length, walked along the surface; bytes: NavLink's navmesh and link index vs Detour's
 // navmesh data; exactness: the first 500 complete paths' x-z lengths against the exact shortest walk
@@ -131,7 +132,7 @@ nl_path_request_def jumper_request_for(const Level& level, const Pair& pair) {
 }
 
 struct Exactness {
-    int pairs = 0, within = 0;
+    int pairs = 0, within = 0, missed = 0;  // missed: complete only through the corridor search
     double worst_excess = 0.0;
 };
 
@@ -149,11 +150,20 @@ Exactness exactness(const Level& level, Request request, std::vector<nl_path_poi
     const nl::test::ShortestPathReference reference(*graph, body);
     Exactness out;
     for (int i = 0; i < kPairs && out.pairs < kExactPairs; ++i) {
-        const nl_path_request_def def = request(level, level.pairs[i]);
+        nl_path_request_def def = request(level, level.pairs[i]);
         nl_path_result result = nl_path_result_init();
         uint32_t count = 0;
         nl_path_find(level.world, &def, &result, points.data(), uint32_t(points.size()), &count);
         if (result.outcome != NL_PATH_COMPLETE || count == 0) continue;
+        // Again without a partial path to fall back on: a goal the exact search misses is no path.
+        def.accept_partial = 0;
+        nl_path_result alone = nl_path_result_init();
+        nl_path_find(level.world, &def, &alone, points.data(), uint32_t(points.size()), &count);
+        if (alone.outcome != NL_PATH_COMPLETE) {
+            ++out.missed;
+            continue;
+        }
+        result = alone;
         const std::optional<double> cheapest = reference.length(nl::Vec3(result.start[0], result.start[1], result.start[2]),
                                                                 nl::Vec3(result.goal[0], result.goal[1], result.goal[2]));
         if (!cheapest) continue;  // the reference finds no route (the search went where it sees none)
@@ -240,11 +250,11 @@ bool compare(const char* path, Level& level) {
     const size_t nl_bytes = graph->navmesh().memory_bytes() + graph->link_index_bytes();
     std::printf("level=%s polys=%u queries=%d nl_us=%.2f detour_us=%.2f ratio=%.2f nl_len=%.4f detour_len=%.4f nl_walked=%.4f nl_bytes=%zu "
                 "detour_bytes=%d both_complete=%d nl_nodes=%.1f detour_nodes=%.1f exact_pairs=%d within_0.1%%=%.4f "
-                "worst_excess=%.4f%%",
+                "worst_excess=%.4f%% exact_missed=%d",
                 level.name.c_str(), level.polygons, kPairs, 1000.0 * nl_ms / kPairs, 1000.0 * detour_ms / kPairs,
                 nl_ms / detour_ms, nl_length / std::max(1, both_complete), detour_length / std::max(1, both_complete),
                 nl_walked / std::max(1, both_complete), nl_bytes, detour.bytes, both_complete, nl_nodes / kPairs, detour_nodes / kPairs, walking.pairs,
-                double(walking.within) / std::max(1, walking.pairs), 100.0 * walking.worst_excess);
+                double(walking.within) / std::max(1, walking.pairs), 100.0 * walking.worst_excess, walking.missed);
     std::fflush(stdout);
 
     // With the level's generated links, for a body that takes them: costs (walking seen from above
@@ -255,8 +265,8 @@ bool compare(const char* path, Level& level) {
         NL_SUCCEEDED(nl_navmesh_generate_links(level.world, level.navmesh, nullptr, nullptr, nullptr, nullptr))) {
         nl_navmesh_get_links(level.world, level.navmesh, nullptr, 0, &links);
         const Exactness linked = exactness(level, jumper_request_for, points);
-        std::printf(" links=%u linked_pairs=%d linked_within_0.1%%=%.4f linked_worst_excess=%.4f%%", links, linked.pairs,
-                    double(linked.within) / std::max(1, linked.pairs), 100.0 * linked.worst_excess);
+        std::printf(" links=%u linked_pairs=%d linked_within_0.1%%=%.4f linked_worst_excess=%.4f%% linked_missed=%d", links,
+                    linked.pairs, double(linked.within) / std::max(1, linked.pairs), 100.0 * linked.worst_excess, linked.missed);
     }
     std::printf("\n");
     std::fflush(stdout);
