@@ -166,7 +166,7 @@ void find_corridor(const PathGraph& graph, const PathQuery& query, const NavPoin
     const Vec3 goal_point = goal.point;
 
     result.steps.clear();
-    result.reached_goal = result.out_of_nodes = result.cancelled = false;
+    result.reached_goal = result.out_of_nodes = result.cancelled = result.gave_up = false;
     result.nodes_visited = 0;
 
     float nearest_entry = std::numeric_limits<float>::infinity();  // bounds a partial path's end

@@ -137,11 +137,16 @@ void plan_path_in_surface_space(const PathGraph& graph, const PathQuery& query, 
     const float walk_cost = uniform_walk_cost(graph, query);
     if (walk_cost > 0.0f && !out_of_reach) {
         find_shortest_corridor(graph, query, start, goal, walk_cost, cancel, corridor);
-        const bool searched_everything = !corridor.reached_goal && !corridor.cancelled && !corridor.out_of_nodes;
+        const bool searched_everything =
+            !corridor.reached_goal && !corridor.cancelled && !corridor.out_of_nodes && !corridor.gave_up;
         // It went through everything the body reaches: the map costs about as much again, and
-        // answers the next requests for goals out of reach on this graph at once.
-        if (searched_everything) graph.reachability(query.agent, query.area_costs);
-        if (!corridor.reached_goal && !corridor.cancelled && query.accept_partial) {
+        // answers the next requests for goals out of reach on this graph at once. It also says
+        // whether the exact search missed a way there: on a navmesh folded over itself (a neighbour
+        // on the same side of the edge they share, seen from above) its views mean nothing, and the
+        // corridor search finds the way.
+        const bool missed = searched_everything &&
+                            graph.reachability(query.agent, query.area_costs)->reaches(start.polygon, goal.polygon);
+        if (missed || corridor.gave_up || (!corridor.reached_goal && !corridor.cancelled && query.accept_partial)) {
             const uint32_t exact_nodes = corridor.nodes_visited;
             find_corridor(graph, query, start, goal, cancel, corridor);
             corridor.nodes_visited = std::max(corridor.nodes_visited, exact_nodes);  // both count polygons

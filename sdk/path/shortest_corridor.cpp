@@ -212,7 +212,7 @@ public:
     void run(const std::atomic<bool>* cancel) {
         uint32_t expansions = 0;
         std::vector<OpenEntry>& open = scratch_.open;
-        while (!open.empty() && open.front().f < best_goal_ && !result_.out_of_nodes) {
+        while (!open.empty() && open.front().f < best_goal_ && !result_.out_of_nodes && !result_.gave_up) {
             if ((++expansions & (kCancelCheckExpansions - 1)) == 0 && cancel && cancel->load(std::memory_order_relaxed)) {
                 result_.cancelled = true;
                 return;
@@ -226,7 +226,7 @@ public:
                 expand(index, node);
                 // A walk with one way on goes on at once (Polyanya's intermediate nodes): its cost
                 // only grows, and the open list need not hold it.
-                if (pending_.size() != 1 || result_.out_of_nodes) break;
+                if (pending_.size() != 1 || result_.out_of_nodes || result_.gave_up) break;
                 const IntervalNode& next = scratch_.nodes[pending_[0]];
                 if (next.edge == kNoNode || next.polygon == goal_.polygon) break;
                 index = pending_[0];
@@ -236,7 +236,7 @@ public:
             flush();
         }
         // Out of nodes with a walk found: a complete path, though perhaps not the shortest.
-        result_.reached_goal = goal_parent_ != kNoNode;
+        result_.reached_goal = goal_parent_ != kNoNode && !result_.gave_up;
     }
 
     void write_corridor() {
@@ -263,6 +263,9 @@ private:
         }
         return scratch_.best_epoch[id] == epoch_ && worse(g, scratch_.best[id]);
     }
+    bool landed_no_cheaper(uint32_t id, double g) const {
+        return scratch_.best_epoch[id] == epoch_ && !(g < scratch_.best[id] * (1.0 - kRelativeSlack) - kRelativeSlack);
+    }
     // Records g for the turning id unless it was reached more cheaply; false then.
     bool improve(uint32_t id, double g) {
         if (worse_than_best(id, g)) return false;
@@ -286,9 +289,17 @@ private:
             seen = epoch_;
             ++result_.nodes_visited;
         }
+        // A few nodes per polygon is the rule (intervals seen from a root or two), some hundred where
+        // many routes tie exactly (cell maps with links and a wide body: 100 per polygon); far more
+        // means views going round in circles where the navmesh folds over itself seen from above.
+        if (scratch_.nodes.size() > kNodesPerPolygon * size_t(result_.nodes_visited) + kNodesAtLeast) {
+            result_.gave_up = true;
+            return;
+        }
         scratch_.nodes.push_back(node);
         pending_.push_back(static_cast<uint32_t>(scratch_.nodes.size() - 1));
     }
+    static constexpr size_t kNodesPerPolygon = 256, kNodesAtLeast = 65536;
 
     void flush() {
         for (const uint32_t index : pending_) {
@@ -470,11 +481,10 @@ private:
         if (walked == kInfinity) return;
         const double g = walked + double((to - from).norm()) * link.cost_modifier + query_.link_cost;
         const uint32_t id = ids_.landing_base + 2 * exit.link + (reversed ? 1u : 0u);
-        if (!improve(id, g)) return;
+        // A landing reached again at no lower cost sees its polygon as it did: nothing new.
+        if (landed_no_cheaper(id, g) || !improve(id, g)) return;
         const uint32_t entry = CorridorStep::kLinkBit | exit.link | (reversed ? CorridorStep::kReversedBit : 0u);
-        // The walk on starts from the landing seen inside its polygon: a link's end a little outside
-        // it (on a neighbour's side of an edge) would see that edge from behind.
-        generate(IntervalNode{flat(mesh_.closest_point_on_polygon(q, to)), {}, {}, g, id, q, kNoNode, entry, index, kNoNode, kNoNode});
+        generate(IntervalNode{flat(to), {}, {}, g, id, q, kNoNode, entry, index, kNoNode, kNoNode});
     }
 
     const PathGraph& graph_;
@@ -499,7 +509,7 @@ private:
 void find_shortest_corridor(const PathGraph& graph, const PathQuery& query, const NavPoint& start, const NavPoint& goal,
                             float walk_cost, const std::atomic<bool>* cancel, CorridorSearch& result) {
     result.steps.clear();
-    result.reached_goal = result.out_of_nodes = result.cancelled = false;
+    result.reached_goal = result.out_of_nodes = result.cancelled = result.gave_up = false;
     result.nodes_visited = 0;
     result.cost = 0.0f;
     result.last_position = start.point;

@@ -7,7 +7,7 @@
 //   level=NAME polys=N queries=N nl_us=X detour_us=X ratio=X nl_len=X detour_len=X nl_walked=X nl_bytes=N
 //     detour_bytes=N ... exact_pairs=N within_0.1%=X worst_excess=X% links=N linked_pairs=N
 //     linked_within_0.1%=X linked_worst_excess=X% linked_missed=N
-// (missed: paths the exact search did not find, complete only through the corridor search's fallback)
+// (missed: paths the exact search alone does not find, which the corridor search plans instead)
 // (lengths: means over the pairs both complete, nl_len and detour_len straight between corners,
 // nl_walked NavLink's reported length, walked along the surface; bytes: NavLink's navmesh and link index vs Detour's
 // navmesh data; exactness: the first 500 complete paths' x-z lengths against the exact shortest walk
@@ -32,6 +32,7 @@
 
 #include "clock.h"
 #include "recast_detour.h"
+#include "path/shortest_corridor.h"
 #include "shortest_path_reference.h"
 #include "world.h"
 
@@ -150,20 +151,23 @@ Exactness exactness(const Level& level, Request request, std::vector<nl_path_poi
     const nl::test::ShortestPathReference reference(*graph, body);
     Exactness out;
     for (int i = 0; i < kPairs && out.pairs < kExactPairs; ++i) {
-        nl_path_request_def def = request(level, level.pairs[i]);
+        const nl_path_request_def def = request(level, level.pairs[i]);
         nl_path_result result = nl_path_result_init();
         uint32_t count = 0;
         nl_path_find(level.world, &def, &result, points.data(), uint32_t(points.size()), &count);
         if (result.outcome != NL_PATH_COMPLETE || count == 0) continue;
-        // Again without a partial path to fall back on: a goal the exact search misses is no path.
-        def.accept_partial = 0;
-        nl_path_result alone = nl_path_result_init();
-        nl_path_find(level.world, &def, &alone, points.data(), uint32_t(points.size()), &count);
-        if (alone.outcome != NL_PATH_COMPLETE) {
+        // The exact search alone: a way it misses is planned by the corridor search instead.
+        nl::PathQuery alone = body;
+        alone.start = nl::Vec3(def.start[0], def.start[1], def.start[2]);
+        alone.goal = nl::Vec3(def.goal[0], def.goal[1], def.goal[2]);
+        const nl::Vec3 box(def.search_half_extents[0], def.search_half_extents[1], def.search_half_extents[2]);
+        nl::CorridorSearch exact;
+        nl::find_shortest_corridor(*graph, alone, graph->navmesh().find_nearest(alone.start, box),
+                                   graph->navmesh().find_nearest(alone.goal, box), 1.0f, nullptr, exact);
+        if (!exact.reached_goal) {
             ++out.missed;
             continue;
         }
-        result = alone;
         const std::optional<double> cheapest = reference.length(nl::Vec3(result.start[0], result.start[1], result.start[2]),
                                                                 nl::Vec3(result.goal[0], result.goal[1], result.goal[2]));
         if (!cheapest) continue;  // the reference finds no route (the search went where it sees none)

@@ -1,12 +1,18 @@
 // libFuzzer target: a host navmesh through nl_navmesh_add, decoded from the bytes (navmesh_bytes.h).
 // A navmesh that is accepted must locate points as the brute-force search does: near its first
-// vertices, with small, medium and huge search boxes.
+// vertices, with small, medium and huge search boxes; and plan paths between polygons exactly when
+// the body's reachability map says one reaches the other (the exact search alone: no partial path).
 #include <cstddef>
 #include <cstdint>
+
+#include <algorithm>
+#include <cstdio>
 
 #include "fuzz_support.h"
 #include "host_input.h"
 #include "navmesh_bytes.h"
+#include "path/path_planner.h"
+#include "path/reachability.h"
 #include "world.h"
 
 namespace {
@@ -23,6 +29,38 @@ void check_point_location(const nl::NavMesh& mesh) {
     }
 }
 
+void check_paths(const nl::PathGraph& graph) {
+    const nl::NavMesh& mesh = graph.navmesh();
+    nl::PathQuery query;
+    query.agent.radius = mesh.agent().radius;
+    query.accept_partial = false;
+    query.search_half_extents = nl::Vec3(0.01f, 0.01f, 0.01f);
+    const auto map = graph.reachability(query.agent, query.area_costs);
+    const uint32_t polygons = std::min<uint32_t>(mesh.polygon_count(), 6);
+    for (uint32_t from = 0; from < polygons; ++from) {
+        for (uint32_t to = 0; to < polygons; ++to) {
+            query.start = mesh.centre(from);
+            query.goal = mesh.centre(to);
+            const nl::NavPoint start = mesh.find_nearest(query.start, query.search_half_extents);
+            const nl::NavPoint goal = mesh.find_nearest(query.goal, query.search_half_extents);
+            if (!start.found || !goal.found) continue;
+            nl::PathResult result;
+            nl::plan_path(graph, query, nullptr, result);
+            const bool reaches = map->reaches(start.polygon, goal.polygon);
+            if ((result.outcome == nl::PathOutcome::Complete) != reaches) {
+                fprintf(stderr, "MISMATCH from %u to %u outcome %u reaches %d start poly %u goal poly %u polygons %u\n", from, to, uint32_t(result.outcome), reaches, start.polygon, goal.polygon, mesh.polygon_count());
+                for (uint32_t p = 0; p < mesh.polygon_count(); ++p) {
+                    fprintf(stderr, " poly %u area %u:", p, mesh.area(p));
+                    for (uint32_t k = 0; k < mesh.corner_count(p); ++k) { const nl::Vec3& v = mesh.vertex(mesh.corner(p, k)); fprintf(stderr, " v%u(%.9g,%.9g,%.9g)%s n%d", mesh.corner(p,k), v.x(), v.y(), v.z(), mesh.on_outline(mesh.corner(p,k)) ? "o" : "", int(mesh.neighbour(p,k))); }
+                    fprintf(stderr, "\n");
+                }
+                fprintf(stderr, " start (%.9g,%.9g,%.9g) goal (%.9g,%.9g,%.9g)\n", start.point.x(), start.point.y(), start.point.z(), goal.point.x(), goal.point.y(), goal.point.z());
+                __builtin_trap();
+            }
+        }
+    }
+}
+
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
@@ -33,6 +71,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     nl::fuzz::require_reasoned(status);
     if (NL_FAILED(status)) return 0;
     check_point_location(*world->core->navmeshes().navmesh(nl::capi::to_handle(navmesh)));
+    check_paths(*world->core->navmeshes().path_graph(nl::capi::to_handle(navmesh)));
     nl_navmesh_remove(world, navmesh);
     return 0;
 }
