@@ -74,6 +74,8 @@ std::shared_ptr<const ReachabilityMap> ReachabilityCache::get(const PathGraph& g
 
 std::shared_ptr<const ReachabilityMap> ReachabilityCache::ready(const AgentCapabilities& agent,
                                                                 const std::vector<float>& area_costs) const {
+    // Most graphs never build a map (every request finds its goal): no lock for them.
+    if (!remembered_.load(std::memory_order_acquire)) return nullptr;
     const std::array<uint64_t, 4> excluded = ReachabilityClass::excluded_areas_of(area_costs);
     std::lock_guard<std::mutex> lock(mutex_);
     for (const Body& body : bodies_) {
@@ -114,6 +116,7 @@ void ReachabilityCache::remember(const Body& body) {
     };
     while (!bodies_.empty() && bytes() > kMaxBytes) forget_oldest();
     bodies_.push_back(body);
+    remembered_.store(true, std::memory_order_release);
 }
 
 void ReachabilityCache::forget(const std::shared_ptr<Class>& map_class) {

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <array>
+#include <atomic>
 #include <cstdint>
 #include <future>
 #include <memory>
@@ -54,6 +55,7 @@ private:
     void forget(const std::shared_ptr<Class>& map_class);
 
     mutable std::mutex mutex_;
+    std::atomic<bool> remembered_{false};  // a body was ever remembered: ready() may find a map
     std::vector<Body> bodies_;
     std::vector<std::shared_ptr<Class>> classes_;
     uint64_t clock_ = 0;

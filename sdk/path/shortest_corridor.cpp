@@ -197,6 +197,7 @@ public:
         : graph_(graph), mesh_(graph.navmesh()), query_(query), goal_(goal), goal_flat_(flat(goal.point)),
           rate_(walk_cost), h_scale_(heuristic_scale(graph, query)),
           margin_(std::max(0.0f, query.agent.radius - graph.navmesh().agent().radius)), ids_(mesh_, graph.links_ptr()->size()),
+          keeps_out_(std::any_of(query.area_costs.begin(), query.area_costs.end(), [](float cost) { return cost <= 0.0f; })),
           scratch_(scratch), epoch_(epoch), result_(result) {}
 
     const TurningIds& ids() const { return ids_; }
@@ -395,7 +396,7 @@ private:
         for (uint32_t k = 0; k < corners; ++k) {
             if (k == entry) continue;
             const uint32_t q = mesh_.neighbour(p, k);
-            if (q == kNoPolygon || query_.area_cost(mesh_.area(q)) <= 0.0f) continue;
+            if (q == kNoPolygon || (keeps_out_ && query_.area_cost(mesh_.area(q)) <= 0.0f)) continue;
             if (graph_.dead_end(p, q, goal_.polygon)) continue;
             const uint32_t next = k + 1 == corners ? 0 : k + 1;
             Flat near_end = at[k], far_end = at[next];  // the opening's ends at corners k and k + 1
@@ -496,6 +497,7 @@ private:
     const double h_scale_;
     const float margin_;
     const TurningIds ids_;
+    const bool keeps_out_;  // some area costs the body 0: it keeps out of those polygons
     ShortestScratch& scratch_;
     const uint32_t epoch_;
     CorridorSearch& result_;
