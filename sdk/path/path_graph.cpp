@@ -6,13 +6,14 @@
 namespace nl {
 
 PathGraph::PathGraph(std::shared_ptr<const NavMesh> navmesh, std::shared_ptr<const LinkSnapshot> links,
-                     std::shared_ptr<const SurfaceFrame> frame)
+                     std::shared_ptr<const SurfaceFrame> frame, std::shared_ptr<const NavMeshSearchIndex> index)
     : navmesh_(std::move(navmesh)), links_(links ? std::move(links) : std::make_shared<const LinkSnapshot>()),
-      frame_(std::move(frame)) {
+      frame_(std::move(frame)),
+      index_(index && &index->navmesh() == navmesh_.get() ? std::move(index)
+                                                           : std::make_shared<const NavMeshSearchIndex>(navmesh_)) {
     for (const StoredLink& s : *links_) has_cross_links_ = has_cross_links_ || s.link.crosses();
-    index_bends();
     index_links();
-    index_appendices();
+    mark_subtree_exits();
 }
 
 void PathGraph::index_links() {
@@ -45,7 +46,12 @@ void PathGraph::index_links() {
     }
 }
 
-void PathGraph::index_bends() {
+NavMeshSearchIndex::NavMeshSearchIndex(std::shared_ptr<const NavMesh> navmesh) : navmesh_(std::move(navmesh)) {
+    index_bends();
+    index_appendices();
+}
+
+void NavMeshSearchIndex::index_bends() {
     const NavMesh& mesh = *navmesh_;
     constexpr uint8_t kAnyBody = 1, kWiderBody = 2;
     bends_.assign(mesh.vertex_count(), 0);
@@ -85,7 +91,7 @@ void PathGraph::index_bends() {
         if (angle[v] <= kHalfTurn + 1e-9) bends_[v] = 0;
 }
 
-void PathGraph::index_appendices() {
+void NavMeshSearchIndex::index_appendices() {
     const NavMesh& mesh = *navmesh_;
     const uint32_t polygons = mesh.polygon_count();
     // Peel the polygons with one way on at most, again and again (leaves, then what they hung
@@ -93,8 +99,8 @@ void PathGraph::index_appendices() {
     hangs_from_.assign(polygons, kNoPolygon);
     subtree_first_.assign(polygons, kNoPolygon);
     subtree_last_.assign(polygons, kNoPolygon);
-    subtree_exits_.assign(polygons, 0);
-    std::vector<uint32_t> ways(polygons, 0), order;
+    std::vector<uint32_t> ways(polygons, 0);
+    std::vector<uint32_t>& order = peel_order_;
     std::vector<uint8_t> queued(polygons, 0), peeled(polygons, 0);
     for (uint32_t p = 0; p < polygons; ++p) {
         for (uint32_t k = 0; k < mesh.corner_count(p); ++k) ways[p] += mesh.neighbour(p, k) != kNoPolygon;
@@ -134,11 +140,18 @@ void PathGraph::index_appendices() {
                 continue;
             }
             subtree_last_[p] = number - 1;
-            subtree_exits_[p] |= exits_begin(p) != exits_end(p);
-            const uint32_t done = p;
             stack.pop_back();
-            if (!stack.empty()) subtree_exits_[stack.back().first] |= subtree_exits_[done];
         }
+    }
+}
+
+void PathGraph::mark_subtree_exits() {
+    subtree_exits_.assign(navmesh_->polygon_count(), 0);
+    // Leaves are peeled before what they hang from: one pass in peel order gathers each subtree.
+    for (const uint32_t p : index_->peel_order()) {
+        subtree_exits_[p] |= exits_begin(p) != exits_end(p);
+        const uint32_t stem = index_->hangs_from(p);
+        if (stem != kNoPolygon && index_->peeled(stem)) subtree_exits_[stem] |= subtree_exits_[p];
     }
 }
 

@@ -193,14 +193,12 @@ double estimate_through(Flat root, Flat a, Flat b, Flat goal) {
 class ShortestSearch {
 public:
     ShortestSearch(const PathGraph& graph, const PathQuery& query, const NavPoint& goal, float walk_cost,
-                   ShortestScratch& scratch, uint32_t epoch, CorridorSearch& result)
+                   ShortestScratch& scratch, CorridorSearch& result)
         : graph_(graph), mesh_(graph.navmesh()), query_(query), goal_(goal), goal_flat_(flat(goal.point)),
           rate_(walk_cost), h_scale_(heuristic_scale(graph, query)),
           margin_(std::max(0.0f, query.agent.radius - graph.navmesh().agent().radius)), ids_(mesh_, graph.links_ptr()->size()),
           keeps_out_(std::any_of(query.area_costs.begin(), query.area_costs.end(), [](float cost) { return cost <= 0.0f; })),
-          scratch_(scratch), epoch_(epoch), result_(result) {}
-
-    const TurningIds& ids() const { return ids_; }
+          scratch_(scratch), epoch_(scratch.begin(ids_.dense_count(), mesh_.polygon_count())), result_(result) {}
 
     void add_start(const NavPoint& start) {
         improve(ids_.start, 0.0);
@@ -515,10 +513,7 @@ void find_shortest_corridor(const PathGraph& graph, const PathQuery& query, cons
     result.nodes_visited = 0;
     result.cost = 0.0f;
     result.last_position = start.point;
-    ShortestScratch& scratch = shortest_scratch();
-    const TurningIds ids(graph.navmesh(), graph.links_ptr()->size());
-    const uint32_t epoch = scratch.begin(ids.dense_count(), graph.navmesh().polygon_count());
-    ShortestSearch search(graph, query, goal, walk_cost, scratch, epoch, result);
+    ShortestSearch search(graph, query, goal, walk_cost, shortest_scratch(), result);
     search.add_start(start);
     search.run(cancel);
     if (result.cancelled || !result.reached_goal) return;

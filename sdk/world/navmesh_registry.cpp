@@ -287,6 +287,7 @@ std::shared_ptr<const PathGraph> NavMeshRegistry::path_graph(Handle navmesh) con
     std::shared_ptr<const NavMesh> mesh;
     std::shared_ptr<const LinkSnapshot> snapshot;
     std::shared_ptr<const SurfaceFrame> frame;
+    std::shared_ptr<const NavMeshSearchIndex> index;  // the last graph's, when of the same navmesh
     {
         std::shared_lock lock(mutex_);
         const Entry& e = entry(navmesh);
@@ -294,6 +295,7 @@ std::shared_ptr<const PathGraph> NavMeshRegistry::path_graph(Handle navmesh) con
         mesh = e.navmesh;
         frame = e.frame;
         snapshot = e.snapshot;
+        if (e.path_graph) index = e.path_graph->search_index_ptr();
     }
     if (!snapshot) {
         std::unique_lock lock(mutex_);
@@ -302,7 +304,7 @@ std::shared_ptr<const PathGraph> NavMeshRegistry::path_graph(Handle navmesh) con
         if (e.path_graph && e.path_graph->links_ptr() == snapshot) return e.path_graph;
     }
     // Built outside the lock: requests on other navmeshes, and edits, go on meanwhile.
-    auto graph = std::make_shared<const PathGraph>(std::move(mesh), snapshot, std::move(frame));
+    auto graph = std::make_shared<const PathGraph>(std::move(mesh), snapshot, std::move(frame), std::move(index));
     std::unique_lock lock(mutex_);
     if (const Entry* e = navmeshes_.find(navmesh); e && e->snapshot == snapshot) e->path_graph = graph;
     return graph;

@@ -307,6 +307,7 @@ TEST_CASE("the path graph is built once per moment of the links, and an edit mak
     CHECK(second != first);
     CHECK(second->links_ptr()->size() == 1);
     CHECK(first->links_ptr()->empty());  // a search that started before keeps what it read
+    CHECK(second->search_index_ptr() == first->search_index_ptr());  // the navmesh's, built once
     CHECK(r.path_graph(s.navmesh) == second);
     r.remove_link(rope);
     CHECK(r.path_graph(s.navmesh)->links_ptr()->empty());
