@@ -251,101 +251,90 @@ TEST_CASE("the shortest walk reference: its bend points are every place a cheape
     }
 }
 
-// Twelve random maps, each placed by `place`, 250 random pairs each: no links, no margin.
-template <typename Place>
-void shortest_walk_trials(uint32_t seed, const Place& place, const std::string& label) {
+// `maps` random maps, each placed by `place`: `trial` adds to each what it asks for (links) and
+// compares random pairs on it. Every pair within 0.1%, and at least `least_pairs` with a route.
+template <typename Place, typename Trial>
+void random_map_trials(uint32_t seed, int maps, const Place& place, const std::string& label, int least_pairs,
+                       const Trial& trial) {
     std::mt19937 random(seed);
     Tally tally;
-    for (int trial = 0; trial < 12; ++trial) {
+    for (int index = 0; index < maps; ++index) {
         const std::vector<std::string> rows = random_rows(random);
         Map m(rows, place);
         std::vector<Vec3> points = cell_points(rows, random);
         for (Vec3& p : points) p = place(p);
-        compare(m, body(0.0f), points, 250, false, random, tally, "trial " + std::to_string(trial));
+        trial(index, m, points, random, tally);
     }
     tally.report(label);
     CHECK(tally.within == tally.pairs);
-    CHECK(tally.pairs > 1500);
+    CHECK(tally.pairs > least_pairs);
 }
 
+const auto kAsBuilt = [](const Vec3& v) { return v; };
+
 TEST_CASE("on random maps the search is never shorter than the shortest walk") {
-    shortest_walk_trials(2026, [](const Vec3& v) { return v; }, "no links, no margin");
+    random_map_trials(2026, 12, kAsBuilt, "no links, no margin", 1500,
+                      [](int index, Map& m, const std::vector<Vec3>& points, std::mt19937& random, Tally& tally) {
+                          compare(m, body(0.0f), points, 250, false, random, tally, "trial " + std::to_string(index));
+                      });
 }
 
 TEST_CASE("on random maps turned, scaled and moved the search is the shortest walk") {
     // Corners off round numbers and walls at an angle: a walk down a straight wall from one corner
     // reaches the next only within rounding, and must still bend there (dungeon lost such ways).
     const float c = std::cos(0.3f), s = std::sin(0.3f);
-    shortest_walk_trials(
-        2030,
-        [&](const Vec3& v) {
-            return Vec3(1.984375f + 0.7312f * (c * v.x() - s * v.z()), v.y(), -31.2412f + 0.7312f * (s * v.x() + c * v.z()));
-        },
-        "turned, scaled and moved");
+    const auto place = [&](const Vec3& v) {
+        return Vec3(1.984375f + 0.7312f * (c * v.x() - s * v.z()), v.y(), -31.2412f + 0.7312f * (s * v.x() + c * v.z()));
+    };
+    random_map_trials(2030, 12, place, "turned, scaled and moved", 1500,
+                      [](int index, Map& m, const std::vector<Vec3>& points, std::mt19937& random, Tally& tally) {
+                          compare(m, body(0.0f), points, 250, false, random, tally, "trial " + std::to_string(index));
+                      });
 }
 
 TEST_CASE("on random maps with links the search's cost is the cheapest route's") {
-    std::mt19937 random(2027);
-    Tally tally;
     const float modifiers[] = {0.5f, 0.8f, 1.0f, 1.5f, 3.0f};
-    for (int trial = 0; trial < 12; ++trial) {
-        const std::vector<std::string> rows = random_rows(random);
-        Map m(rows);
-        const std::vector<Vec3> points = cell_points(rows, random);
-        // Jumps and drops between random cells: some both ways, some cheaper per metre than walking,
-        // some dearer; drops of 2 m are beyond the body (can_take).
-        for (int l = 0; l < 12; ++l) {
-            const Vec3 from = points[random() % points.size()], to = points[random() % points.size()];
-            m.link(from, to, float(random() % 3), random() % 3 == 0, modifiers[random() % 5],
-                   random() % 2 ? nl::LinkKind::Drop : nl::LinkKind::Jump);
-        }
-        nl::PathQuery query = body(0.0f);
-        query.link_cost = 0.1f * float(1 + random() % 5);
-        compare(m, query, points, 250, true, random, tally, "trial " + std::to_string(trial));
-    }
-    tally.report("links, no margin");
-    CHECK(tally.within == tally.pairs);
-    CHECK(tally.pairs > 1500);
+    random_map_trials(2027, 12, kAsBuilt, "links, no margin", 1500,
+                      [&](int index, Map& m, const std::vector<Vec3>& points, std::mt19937& random, Tally& tally) {
+                          // Jumps and drops between random cells: some both ways, some cheaper per metre
+                          // than walking, some dearer; drops of 2 m are beyond the body (can_take).
+                          for (int l = 0; l < 12; ++l) {
+                              const Vec3 from = points[random() % points.size()], to = points[random() % points.size()];
+                              m.link(from, to, float(random() % 3), random() % 3 == 0, modifiers[random() % 5],
+                                     random() % 2 ? nl::LinkKind::Drop : nl::LinkKind::Jump);
+                          }
+                          nl::PathQuery query = body(0.0f);
+                          query.link_cost = 0.1f * float(1 + random() % 5);
+                          compare(m, query, points, 250, true, random, tally, "trial " + std::to_string(index));
+                      });
 }
 
 TEST_CASE("on random maps with links a wider body's cost is the cheapest route's") {
     // Links as above, some too narrow for the wider bodies (clearance 0.8 m against 2 x radius).
-    std::mt19937 random(2029);
-    Tally tally;
     const float modifiers[] = {0.5f, 1.0f, 2.0f};
     const float radii[] = {0.3f, 0.45f, 0.55f};
-    for (int trial = 0; trial < 6; ++trial) {
-        const std::vector<std::string> rows = random_rows(random);
-        Map m(rows);
-        const std::vector<Vec3> points = cell_points(rows, random);
-        for (int l = 0; l < 12; ++l) {
-            const Vec3 from = points[random() % points.size()], to = points[random() % points.size()];
-            m.link(from, to, float(random() % 2), random() % 3 == 0, modifiers[random() % 3], nl::LinkKind::Jump,
-                   random() % 3 == 0 ? 0.8f : 0.0f);
-        }
-        nl::PathQuery query = body(radii[trial % 3]);
-        query.link_cost = 0.3f;
-        compare(m, query, points, 200, true, random, tally, "trial " + std::to_string(trial) + " radius " + std::to_string(query.agent.radius));
-    }
-    tally.report("links, margin 0.3 to 0.55");
-    CHECK(tally.within == tally.pairs);
-    CHECK(tally.pairs > 500);
+    random_map_trials(2029, 6, kAsBuilt, "links, margin 0.3 to 0.55", 500,
+                      [&](int index, Map& m, const std::vector<Vec3>& points, std::mt19937& random, Tally& tally) {
+                          for (int l = 0; l < 12; ++l) {
+                              const Vec3 from = points[random() % points.size()], to = points[random() % points.size()];
+                              m.link(from, to, float(random() % 2), random() % 3 == 0, modifiers[random() % 3],
+                                     nl::LinkKind::Jump, random() % 3 == 0 ? 0.8f : 0.0f);
+                          }
+                          nl::PathQuery query = body(radii[index % 3]);
+                          query.link_cost = 0.3f;
+                          compare(m, query, points, 200, true, random, tally,
+                                  "trial " + std::to_string(index) + " radius " + std::to_string(query.agent.radius));
+                      });
 }
 
 TEST_CASE("on random maps a wider body's path is the shortest walk through narrowed portals") {
-    std::mt19937 random(2028);
-    Tally tally;
     const float radii[] = {0.15f, 0.3f, 0.45f, 0.55f};
-    for (int trial = 0; trial < 12; ++trial) {
-        const std::vector<std::string> rows = random_rows(random);
-        Map m(rows);
-        const std::vector<Vec3> points = cell_points(rows, random);
-        const float radius = radii[trial % 4];
-        compare(m, body(radius), points, 250, false, random, tally, "trial " + std::to_string(trial) + " radius " + std::to_string(radius));
-    }
-    tally.report("margin 0.15 to 0.55");
-    CHECK(tally.within == tally.pairs);
-    CHECK(tally.pairs > 1000);
+    random_map_trials(2028, 12, kAsBuilt, "margin 0.15 to 0.55", 1000,
+                      [&](int index, Map& m, const std::vector<Vec3>& points, std::mt19937& random, Tally& tally) {
+                          const float radius = radii[index % 4];
+                          compare(m, body(radius), points, 250, false, random, tally,
+                                  "trial " + std::to_string(index) + " radius " + std::to_string(radius));
+                      });
 }
 
 TEST_CASE("a one-way drop that is the only way: a path down it, none back") {
