@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "navmesh/nearest_point.h"
 
 namespace nl {
 
@@ -146,43 +147,15 @@ bool overlaps(const Aabb& b, const Vec3& lo, const Vec3& hi) {
     return (b.min.array() <= hi.array()).all() && (b.max.array() >= lo.array()).all();
 }
 
-// Keeps the best candidate: as Detour's findNearestPoly, a polygon straight below or above the
-// point within the agent's climb counts as touching it (an agent standing there is on that floor,
-// even when the rim of a ledge beside it is nearer); other polygons rank by distance. Equal ranks
-// go to the lower polygon index, so the answer does not depend on the order polygons are visited in.
-struct Nearest {
-    const NavMesh& mesh;
-    const Vec3& point;
-    NavPoint best;
-    float best_rank = 0.0f;
-
-    void consider(uint32_t p) {
-        // Nothing in a box farther than the best rank can beat it (equal may: lower index).
-        if (best.found) {
-            const Aabb& box = mesh.polygon_bounds(p);
-            const float box_distance = (point.cwiseMax(box.min).cwiseMin(box.max) - point).norm();
-            if (box_distance - mesh.agent().max_climb > best_rank) return;
-        }
-        const Vec3 q = mesh.closest_point_on_polygon(p, point);
-        const float d = (q - point).norm();
-        const bool over = q.x() == point.x() && q.z() == point.z();
-        const float rank = over ? std::max(0.0f, std::fabs(q.y() - point.y()) - mesh.agent().max_climb) : d;
-        if (!best.found || rank < best_rank || (rank == best_rank && p < best.polygon)) {
-            best = NavPoint{true, q, d, p};
-            best_rank = rank;
-        }
-    }
-};
-
 }  // namespace
 
 NavPoint NavMesh::find_nearest(const Vec3& point, const Vec3& half_extents) const {
     const Vec3 lo = point - half_extents, hi = point + half_extents;
-    Nearest nearest{*this, point, {}};
+    NearestPoint nearest(*this, point);
     grid_.visit(lo, hi, polygon_bounds_, [&](uint32_t p) {
         if (overlaps(polygon_bounds_[p], lo, hi)) nearest.consider(p);
     });
-    return nearest.best;
+    return nearest.best();
 }
 
 NavPoint NavMesh::find_nearest_anywhere(const Vec3& point, const Vec3& half_extents) const {
@@ -205,11 +178,11 @@ NavPoint NavMesh::find_nearest_anywhere(const Vec3& point, const Vec3& half_exte
 
 NavPoint NavMesh::find_nearest_brute_force(const Vec3& point, const Vec3& half_extents) const {
     const Vec3 lo = point - half_extents, hi = point + half_extents;
-    Nearest nearest{*this, point, {}};
+    NearestPoint nearest(*this, point);
     for (uint32_t p = 0; p < polygon_count(); ++p) {
         if (overlaps(polygon_bounds_[p], lo, hi)) nearest.consider(p);
     }
-    return nearest.best;
+    return nearest.best();
 }
 
 }  // namespace nl

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "navmesh/nearest_point.h"
 #include "path/corridor_search.h"
 #include "path/reachability.h"
 #include "path/search_costs.h"
@@ -99,6 +100,51 @@ void plan_path(const PathGraph& graph, const PathQuery& query, const std::atomic
     result.goal = pose.world_point(result.goal);
 }
 
+namespace {
+
+// Whether a search went through everything the body reaches from the start without finding its goal.
+bool searched_everything(const CorridorSearch& corridor) {
+    return !corridor.reached_goal && !corridor.cancelled && !corridor.out_of_nodes && !corridor.gave_up;
+}
+
+// The corridor from start to target: the exact search when walking costs the body the same everywhere
+// it may go; the corridor search for areas of different costs, for a way the exact search misses,
+// and for the best it can do when max_nodes runs out.
+void search_corridor(const PathGraph& graph, const PathQuery& query, const NavPoint& start, const NavPoint& target,
+                     float walk_cost, const std::atomic<bool>* cancel, CorridorSearch& corridor) {
+    if (walk_cost <= 0.0f) return find_corridor(graph, query, start, target, cancel, corridor);
+    find_shortest_corridor(graph, query, start, target, walk_cost, cancel, corridor);
+    // It went through everything the body reaches: the map costs about as much again, and answers
+    // the next requests for goals out of reach on this graph at once. It also says whether the exact
+    // search missed a way there: on a navmesh folded over itself (a neighbour on the same side of the
+    // edge they share, seen from above) its views mean nothing, and the corridor search finds the way.
+    const bool missed = searched_everything(corridor) &&
+                        graph.reachability(query.agent, query.area_costs)->reaches(start.polygon, target.polygon);
+    const bool ran_out = corridor.out_of_nodes && !corridor.reached_goal && query.accept_partial;
+    if (missed || corridor.gave_up || ran_out) {
+        const uint32_t exact_nodes = corridor.nodes_visited;
+        find_corridor(graph, query, start, target, cancel, corridor);
+        corridor.nodes_visited = std::max(corridor.nodes_visited, exact_nodes);  // both count polygons
+    }
+}
+
+// Where a partial path ends: the navmesh point nearest the goal among the polygons the body reaches
+// from the start (the start's own polygon at least), as located points are ranked (NearestPoint).
+// A pass over the reachable polygons' bounds: a fraction of what a search through them costs.
+NavPoint nearest_reachable(const NavMesh& mesh, const ReachabilityMap& map, const NavPoint& start, const NavPoint& goal) {
+    thread_local std::vector<uint8_t> reached;
+    map.reachable_islands(start.polygon, reached);
+    NearestPoint nearest(mesh, goal.point);
+    nearest.consider(start.polygon);
+    for (uint32_t island = 0; island < map.island_count(); ++island) {
+        if (!reached[island]) continue;
+        for (const uint32_t* p = map.island_begin(island); p != map.island_end(island); ++p) nearest.consider(*p);
+    }
+    return nearest.best();
+}
+
+}  // namespace
+
 void plan_path_in_surface_space(const PathGraph& graph, const PathQuery& query, const std::atomic<bool>* cancel,
                                 PathResult& result) {
     const NavMesh& mesh = graph.navmesh();
@@ -118,43 +164,38 @@ void plan_path_in_surface_space(const PathGraph& graph, const PathQuery& query, 
         return;
     }
     result.goal = goal.point;
-    // A goal out of reach is known at once when the body's reachability map is built: no path, or the
-    // corridor search's partial path. A request never builds one before searching: it would cost a
-    // pass over the whole navmesh (uncancellable, past max_nodes) for a goal two steps away.
-    bool out_of_reach = false;
+    // A goal out of reach is known at once when the body's reachability map is built: no path, or a
+    // path to the nearest point the body reaches. A request never builds one before searching: it
+    // would cost a pass over the whole navmesh (uncancellable, past max_nodes) for a goal two steps
+    // away.
+    NavPoint target = goal;
+    bool toward = false;  // heading for the nearest point the body reaches, the goal being out of reach
     if (start.polygon != goal.polygon) {
         const auto map = graph.reachability_if_built(query.agent, query.area_costs);
-        out_of_reach = map && !map->reaches(start.polygon, goal.polygon);
-        if (out_of_reach && !query.accept_partial) {
-            result.outcome = PathOutcome::NoPath;
-            return;
+        if (map && !map->reaches(start.polygon, goal.polygon)) {
+            if (!query.accept_partial) {
+                result.outcome = PathOutcome::NoPath;
+                return;
+            }
+            target = nearest_reachable(mesh, *map, start, goal);
+            toward = true;
         }
     }
 
-    // The exact search when walking costs the body the same everywhere it may go; the corridor search
-    // for areas of different costs, and for the partial path to a goal out of reach.
     thread_local CorridorSearch corridor;
     const float walk_cost = uniform_walk_cost(graph, query);
-    if (walk_cost > 0.0f && !out_of_reach) {
-        find_shortest_corridor(graph, query, start, goal, walk_cost, cancel, corridor);
-        const bool searched_everything =
-            !corridor.reached_goal && !corridor.cancelled && !corridor.out_of_nodes && !corridor.gave_up;
-        // It went through everything the body reaches: the map costs about as much again, and
-        // answers the next requests for goals out of reach on this graph at once. It also says
-        // whether the exact search missed a way there: on a navmesh folded over itself (a neighbour
-        // on the same side of the edge they share, seen from above) its views mean nothing, and the
-        // corridor search finds the way.
-        const bool missed = searched_everything &&
-                            graph.reachability(query.agent, query.area_costs)->reaches(start.polygon, goal.polygon);
-        if (missed || corridor.gave_up || (!corridor.reached_goal && !corridor.cancelled && query.accept_partial)) {
-            const uint32_t exact_nodes = corridor.nodes_visited;
-            find_corridor(graph, query, start, goal, cancel, corridor);
-            corridor.nodes_visited = std::max(corridor.nodes_visited, exact_nodes);  // both count polygons
+    search_corridor(graph, query, start, target, walk_cost, cancel, corridor);
+    if (!toward && searched_everything(corridor)) {
+        // Out of reach: the map (built once per graph and body) says so at once from now on, and
+        // where the body can go instead.
+        const auto map = graph.reachability(query.agent, query.area_costs);
+        if (query.accept_partial) {
+            target = nearest_reachable(mesh, *map, start, goal);
+            toward = true;
+            const uint32_t first_nodes = corridor.nodes_visited;
+            search_corridor(graph, query, start, target, walk_cost, cancel, corridor);
+            corridor.nodes_visited += first_nodes;
         }
-    } else {
-        find_corridor(graph, query, start, goal, cancel, corridor);
-        if (!corridor.reached_goal && !corridor.cancelled && !corridor.out_of_nodes && !query.accept_partial)
-            graph.reachability(query.agent, query.area_costs);
     }
     result.nodes_visited = corridor.nodes_visited;
     result.out_of_nodes = corridor.out_of_nodes;
@@ -166,15 +207,16 @@ void plan_path_in_surface_space(const PathGraph& graph, const PathQuery& query, 
         result.outcome = PathOutcome::NoPath;
         return;
     }
-    Vec3 end = goal.point;
+    Vec3 end = target.point;
     result.cost = corridor.cost;
     if (!corridor.reached_goal) {
+        // max_nodes ran out: toward the polygon the search got nearest to the goal, as Detour's.
         const uint32_t last = corridor.steps.back().polygon;
         end = mesh.closest_point_on_polygon(last, goal.point);
         result.cost += (end - corridor.last_position).norm() * query.area_cost(mesh.area(last));
     }
     PathAssembler(graph, query, corridor, result).assemble(start.point, end);
-    result.outcome = corridor.reached_goal ? PathOutcome::Complete : PathOutcome::Partial;
+    result.outcome = corridor.reached_goal && !toward ? PathOutcome::Complete : PathOutcome::Partial;
 }
 
 }  // namespace nl

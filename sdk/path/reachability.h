@@ -59,6 +59,9 @@ public:
     // The island a polygon belongs to, or kNoIsland for one in an excluded area. Islands are numbered
     // from 0 in order of their lowest polygon.
     uint32_t island(uint32_t polygon) const { return island_of_[polygon]; }
+    // An island's polygons, ascending, as [begin, end).
+    const uint32_t* island_begin(uint32_t island) const { return polygons_.data() + first_polygon_[island]; }
+    const uint32_t* island_end(uint32_t island) const { return polygons_.data() + first_polygon_[island + 1]; }
     uint32_t island_count() const { return island_count_; }
     // Whether island-to-island questions read a precomputed closure (true unless the links join more
     // islands than kMaxClosureIslands; then each question walks the island graph: linear in the

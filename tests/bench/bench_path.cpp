@@ -211,6 +211,7 @@ bool compare(const char* path, Level& level) {
     std::vector<double> nl_best(kPairs, 1e300), detour_best(kPairs, 1e300);
     double nl_length = 0.0, nl_walked = 0.0, detour_length = 0.0, nl_nodes = 0.0, detour_nodes = 0.0;
     int both_complete = 0;
+    std::vector<char> nl_complete(kPairs, 0);
     std::vector<nl_path_point> points(4096, nl_path_point_init());
     for (int round = 0; round < kRounds; ++round) {
         for (int i = 0; i < kPairs; ++i) {
@@ -230,6 +231,7 @@ bool compare(const char* path, Level& level) {
             nl_nodes += result.nodes_visited;
             detour_nodes += timed.nodes;
             if (result.outcome != NL_PATH_COMPLETE || count == 0) continue;
+            nl_complete[i] = 1;
             // Lengths compare the searches and string pulling alone: Detour plans again, untimed,
             // between the very ends and polygons NavLink located (both locate alike, but points on
             // a polygon border may go to either neighbour).
@@ -245,18 +247,24 @@ bool compare(const char* path, Level& level) {
             }
         }
     }
-    double nl_ms = 0.0, detour_ms = 0.0;
-    for (int i = 0; i < kPairs; ++i) nl_ms += nl_best[i], detour_ms += detour_best[i];
+    double nl_ms = 0.0, detour_ms = 0.0, nl_complete_ms = 0.0, detour_complete_ms = 0.0;
+    int complete = 0;
+    for (int i = 0; i < kPairs; ++i) {
+        nl_ms += nl_best[i], detour_ms += detour_best[i];
+        if (!nl_complete[i]) continue;
+        ++complete, nl_complete_ms += nl_best[i], detour_complete_ms += detour_best[i];
+    }
 
     const Exactness walking = exactness(level, request_for, points);
     const nl::Handle handle{level.navmesh.index1, level.navmesh.generation};
     const auto graph = level.world->core->navmeshes().path_graph(handle);
     const size_t nl_bytes = graph->navmesh().memory_bytes() + graph->link_index_bytes();
-    std::printf("level=%s polys=%u queries=%d nl_us=%.2f detour_us=%.2f ratio=%.2f nl_len=%.4f detour_len=%.4f nl_walked=%.4f nl_bytes=%zu "
+    std::printf("level=%s polys=%u queries=%d nl_us=%.2f detour_us=%.2f ratio=%.2f complete=%d complete_ratio=%.2f rest_ratio=%.2f nl_len=%.4f detour_len=%.4f nl_walked=%.4f nl_bytes=%zu "
                 "detour_bytes=%d both_complete=%d nl_nodes=%.1f detour_nodes=%.1f exact_pairs=%d within_0.1%%=%.4f "
                 "worst_excess=%.4f%% exact_missed=%d",
                 level.name.c_str(), level.polygons, kPairs, 1000.0 * nl_ms / kPairs, 1000.0 * detour_ms / kPairs,
-                nl_ms / detour_ms, nl_length / std::max(1, both_complete), detour_length / std::max(1, both_complete),
+                nl_ms / detour_ms, complete, nl_complete_ms / std::max(1e-12, detour_complete_ms),
+                (nl_ms - nl_complete_ms) / std::max(1e-12, detour_ms - detour_complete_ms), nl_length / std::max(1, both_complete), detour_length / std::max(1, both_complete),
                 nl_walked / std::max(1, both_complete), nl_bytes, detour.bytes, both_complete, nl_nodes / kPairs, detour_nodes / kPairs, walking.pairs,
                 double(walking.within) / std::max(1, walking.pairs), 100.0 * walking.worst_excess, walking.missed);
     std::fflush(stdout);

@@ -1,0 +1,25 @@
+#include "navmesh/nearest_point.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace nl {
+
+void NearestPoint::consider(uint32_t p) {
+    // Nothing in a box farther than the best rank can beat it (equal may: lower index).
+    if (best_.found) {
+        const Aabb& box = mesh_.polygon_bounds(p);
+        const float box_distance = (point_.cwiseMax(box.min).cwiseMin(box.max) - point_).norm();
+        if (box_distance - mesh_.agent().max_climb > best_rank_) return;
+    }
+    const Vec3 q = mesh_.closest_point_on_polygon(p, point_);
+    const float d = (q - point_).norm();
+    const bool over = q.x() == point_.x() && q.z() == point_.z();
+    const float rank = over ? std::max(0.0f, std::fabs(q.y() - point_.y()) - mesh_.agent().max_climb) : d;
+    if (!best_.found || rank < best_rank_ || (rank == best_rank_ && p < best_.polygon)) {
+        best_ = NavPoint{true, q, d, p};
+        best_rank_ = rank;
+    }
+}
+
+}  // namespace nl
