@@ -110,9 +110,11 @@ void PolygonGrid::visit(const Vec3& lo, const Vec3& hi, const std::vector<Aabb>&
                     const uint32_t p = cell_polygons_[i];
                     const Aabb& b = bounds[p];
                     if (b.max.x() < lo.x() || b.min.x() > hi.x() || b.max.z() < lo.z() || b.min.z() > hi.z()) continue;
-                    // A polygon in several visited cells is reported from the first of them only.
-                    if (std::max(level.cell_x(b.min.x(), origin_x_), x0) != x ||
-                        std::max(level.cell_z(b.min.z(), origin_z_), z0) != z)
+                    // A polygon in several visited cells is reported from the first of them only
+                    // (its own first cell, or the box's first column or row: the cell it is listed in
+                    // lies at or past its first).
+                    if ((x != x0 && level.cell_x(b.min.x(), origin_x_) != x) ||
+                        (z != z0 && level.cell_z(b.min.z(), origin_z_) != z))
                         continue;
                     fn(p);
                 }

@@ -184,8 +184,12 @@ double estimate_through(Flat root, Flat a, Flat b, Flat goal) {
     const Flat direction = goal - root;
     const double denominator = cross(along, direction);
     if (denominator != 0.0) {
+        // The length through the edge's line is convex in where it crosses, least where the
+        // straight line does: beyond an end, the walk bends at that end.
         const double u = cross(root - a, direction) / denominator;
-        if (u >= 0.0 && u <= 1.0) return distance(root, goal);
+        if (u < 0.0) return distance(root, a) + distance(a, goal);
+        if (u > 1.0) return distance(root, b) + distance(b, goal);
+        return distance(root, goal);
     }
     return std::min(distance(root, a) + distance(a, goal), distance(root, b) + distance(b, goal));
 }
@@ -197,6 +201,7 @@ public:
         : graph_(graph), mesh_(graph.navmesh()), query_(query), goal_(goal), goal_flat_(flat(goal.point)),
           rate_(walk_cost), h_scale_(heuristic_scale(graph, query)),
           margin_(std::max(0.0f, query.agent.radius - graph.navmesh().agent().radius)), ids_(mesh_, graph.links_ptr()->size()),
+          links_beat_walking_(h_scale_ < rate_),
           keeps_out_(std::any_of(query.area_costs.begin(), query.area_costs.end(), [](float cost) { return cost <= 0.0f; })),
           scratch_(scratch), epoch_(scratch.begin(ids_.dense_count(), mesh_.polygon_count())), result_(result) {}
 
@@ -303,6 +308,18 @@ private:
     void flush() {
         for (const uint32_t index : pending_) {
             const IntervalNode& node = scratch_.nodes[index];
+            if (node.polygon == goal_.polygon) {
+                // The goal's cost through this node, at once: the best found so far bounds what the
+                // open list need hold.
+                View view;
+                if (view_of(node, view)) {
+                    const double cost = cost_to(view, goal_flat_);
+                    if (cost < best_goal_) best_goal_ = cost, goal_parent_ = index;
+                }
+                // Walking on from the goal's polygon and back costs more than walking to the goal
+                // in it (convex) unless some link is cheaper per metre than walking.
+                if (!links_beat_walking_) continue;
+            }
             const double h = node.edge == kNoNode ? distance(node.root, goal_flat_)
                                                   : estimate_through(node.root, node.a, node.b, goal_flat_);
             const double f = node.g + h * h_scale_;
@@ -343,44 +360,51 @@ private:
         return view.g + rate_ * distance(view.root, target);
     }
 
+    // The walks from a node's root into its polygon; false when none goes through its interval (a
+    // root on the entry edge's line away from the interval).
+    bool view_of(const IntervalNode& node, View& view) const {
+        view = View{node.root, node.a, node.b};
+        view.g = node.g;
+        const uint32_t p = node.polygon, entry = node.edge;
+        if (entry == kNoNode) return true;
+        const uint32_t corners = mesh_.corner_count(p);
+        const Flat first = flat(mesh_.vertex(mesh_.corner(p, entry)));
+        const Flat along = flat(mesh_.vertex(mesh_.corner(p, entry + 1 == corners ? 0 : entry + 1))) - first;
+        const double side = cross(first - node.root, along);
+        const Flat to_root = node.root - first;
+        const double size2 = (to_root.x * to_root.x + to_root.z * to_root.z) * (along.x * along.x + along.z * along.z);
+        if (side * side > 1e-24 * size2) {
+            view.scale = side > 0.0 ? 1.0 : -1.0;
+            if (node.a_turn != kNoNode) view.g_a = node.g + rate_ * distance(node.root, node.a), view.a_turn = node.a_turn;
+            if (node.b_turn != kNoNode) view.g_b = node.g + rate_ * distance(node.root, node.b), view.b_turn = node.b_turn;
+            // A root cheaper by another way makes these bends no better than that way's.
+            if (view.a_turn != kNoNode && worse_than_best(view.a_turn, view.g_a)) view.g_a = kInfinity;
+            if (view.b_turn != kNoNode && worse_than_best(view.b_turn, view.g_b)) view.g_b = kInfinity;
+            return true;
+        }
+        // The root on the entry edge's line: a corner of this polygon the walk bends at, from which
+        // all of it is in view; a root elsewhere on the line sees nothing through.
+        const Flat ab = node.b - node.a;
+        const double t = std::clamp(((node.root - node.a).x * ab.x + (node.root - node.a).z * ab.z) /
+                                        std::max(ab.x * ab.x + ab.z * ab.z, 1e-300),
+                                    0.0, 1.0);
+        return distance(node.a + t * ab, node.root) <= 1e-6 * (1.0 + std::sqrt(std::sqrt(size2)));
+    }
+
     void expand(uint32_t index, const IntervalNode& node) {
         const uint32_t p = node.polygon;
         const uint32_t corners = mesh_.corner_count(p);
-        View view{node.root, node.a, node.b};
-        view.g = node.g;
         const uint32_t entry = node.edge;
-        if (entry != kNoNode) {
-            const Flat first = flat(mesh_.vertex(mesh_.corner(p, entry)));
-            const Flat along = flat(mesh_.vertex(mesh_.corner(p, entry + 1 == corners ? 0 : entry + 1))) - first;
-            const double side = cross(first - node.root, along);
-            const Flat to_root = node.root - first;
-            const double size2 = (to_root.x * to_root.x + to_root.z * to_root.z) * (along.x * along.x + along.z * along.z);
-            if (side * side > 1e-24 * size2) {
-                view.scale = side > 0.0 ? 1.0 : -1.0;
-                if (node.a_turn != kNoNode) view.g_a = node.g + rate_ * distance(node.root, node.a), view.a_turn = node.a_turn;
-                if (node.b_turn != kNoNode) view.g_b = node.g + rate_ * distance(node.root, node.b), view.b_turn = node.b_turn;
-                // A root cheaper by another way makes these bends no better than that way's.
-                if (view.a_turn != kNoNode && worse_than_best(view.a_turn, view.g_a)) view.g_a = kInfinity;
-                if (view.b_turn != kNoNode && worse_than_best(view.b_turn, view.g_b)) view.g_b = kInfinity;
-            } else {
-                // The root on the entry edge's line: a corner of this polygon the walk bends at,
-                // from which all of it is in view; a root elsewhere on the line sees nothing through.
-                const Flat ab = node.b - node.a;
-                const double t = std::clamp(((node.root - node.a).x * ab.x + (node.root - node.a).z * ab.z) /
-                                                std::max(ab.x * ab.x + ab.z * ab.z, 1e-300),
-                                            0.0, 1.0);
-                if (distance(node.a + t * ab, node.root) > 1e-6 * (1.0 + std::sqrt(std::sqrt(size2)))) return;
-                const uint64_t view_key = (uint64_t(node.root_id) << 32) | p;
-                const double* seen = scratch_.whole_views.find(view_key);
-                if (seen && *seen <= node.g) return;
-                scratch_.whole_views.lower(view_key, node.g);
-            }
+        View view;
+        if (!view_of(node, view)) return;
+        if (entry != kNoNode && view.scale == 0.0) {
+            // Round a vertex the sweep from polygon to polygon would otherwise go on circling.
+            const uint64_t view_key = (uint64_t(node.root_id) << 32) | p;
+            const double* seen = scratch_.whole_views.find(view_key);
+            if (seen && *seen <= node.g) return;
+            scratch_.whole_views.lower(view_key, node.g);
         }
 
-        if (p == goal_.polygon) {
-            const double cost = cost_to(view, goal_flat_);
-            if (cost < best_goal_) best_goal_ = cost, goal_parent_ = index;
-        }
         for (const LinkExit* exit = graph_.exits_begin(p); exit != graph_.exits_end(p); ++exit) take_link(index, view, *exit);
 
         // Each corner's place and sides once: two edges share it.
@@ -495,6 +519,7 @@ private:
     const double h_scale_;
     const float margin_;
     const TurningIds ids_;
+    const bool links_beat_walking_;  // some link the body takes costs less per metre than walking
     const bool keeps_out_;  // some area costs the body 0: it keeps out of those polygons
     ShortestScratch& scratch_;
     const uint32_t epoch_;

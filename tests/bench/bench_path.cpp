@@ -210,7 +210,7 @@ bool compare(const char* path, Level& level) {
     // shared machine's interruptions land on one side or the other at random; the minimum is the cost.
     std::vector<double> nl_best(kPairs, 1e300), detour_best(kPairs, 1e300);
     double nl_length = 0.0, nl_walked = 0.0, detour_length = 0.0, nl_nodes = 0.0, detour_nodes = 0.0;
-    int both_complete = 0;
+    int both_complete = 0, straight_pairs = 0;
     std::vector<char> nl_complete(kPairs, 0);
     std::vector<nl_path_point> points(4096, nl_path_point_init());
     for (int round = 0; round < kRounds; ++round) {
@@ -232,6 +232,7 @@ bool compare(const char* path, Level& level) {
             detour_nodes += timed.nodes;
             if (result.outcome != NL_PATH_COMPLETE || count == 0) continue;
             nl_complete[i] = 1;
+            if (count == 2) ++straight_pairs;
             // Lengths compare the searches and string pulling alone: Detour plans again, untimed,
             // between the very ends and polygons NavLink located (both locate alike, but points on
             // a polygon border may go to either neighbour).
@@ -267,6 +268,7 @@ bool compare(const char* path, Level& level) {
                 (nl_ms - nl_complete_ms) / std::max(1e-12, detour_ms - detour_complete_ms), nl_length / std::max(1, both_complete), detour_length / std::max(1, both_complete),
                 nl_walked / std::max(1, both_complete), nl_bytes, detour.bytes, both_complete, nl_nodes / kPairs, detour_nodes / kPairs, walking.pairs,
                 double(walking.within) / std::max(1, walking.pairs), 100.0 * walking.worst_excess, walking.missed);
+    std::printf(" straight=%d", straight_pairs);
     std::fflush(stdout);
 
     // With the level's generated links, for a body that takes them: costs (walking seen from above
