@@ -6,11 +6,13 @@
 namespace nl {
 
 void NearestPoint::consider(uint32_t p) {
-    // Nothing in a box farther than the best rank can beat it (equal may: lower index).
+    // A polygon's rank is at least its box's distance less a climb: nothing beyond the best rank can
+    // beat it, nor anything at it but a lower index.
     if (best_.found) {
         const Aabb& box = mesh_.polygon_bounds(p);
         const float box_distance = (point_.cwiseMax(box.min).cwiseMin(box.max) - point_).norm();
-        if (box_distance - mesh_.agent().max_climb > best_rank_) return;
+        const float least_rank = std::max(0.0f, box_distance - mesh_.agent().max_climb);
+        if (least_rank > best_rank_ || (least_rank == best_rank_ && p > best_.polygon)) return;
     }
     const Vec3 q = mesh_.closest_point_on_polygon(p, point_);
     const float d = (q - point_).norm();

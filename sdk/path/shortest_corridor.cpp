@@ -224,17 +224,15 @@ public:
             std::pop_heap(open.begin(), open.end(), std::greater<OpenEntry>());
             uint32_t index = open.back().node;
             open.pop_back();
-            IntervalNode node = scratch_.nodes[index];
-            if (worse_than_best(node.root_id, node.g)) continue;  // its root was reached more cheaply since
+            if (worse_than_best(scratch_.nodes[index].root_id, scratch_.nodes[index].g)) continue;  // its root was reached more cheaply since
             for (;;) {
-                expand(index, node);
+                expand(index);
                 // A walk with one way on goes on at once (Polyanya's intermediate nodes): its cost
                 // only grows, and the open list need not hold it.
                 if (pending_.size() != 1 || result_.out_of_nodes || result_.gave_up) break;
                 const IntervalNode& next = scratch_.nodes[pending_[0]];
                 if (next.edge == kNoNode || next.polygon == goal_.polygon) break;
                 index = pending_[0];
-                node = next;
                 pending_.clear();
             }
             flush();
@@ -363,13 +361,20 @@ private:
     // The walks from a node's root into its polygon; false when none goes through its interval (a
     // root on the entry edge's line away from the interval).
     bool view_of(const IntervalNode& node, View& view) const {
+        if (node.edge == kNoNode) {
+            view = View{node.root, node.a, node.b};
+            view.g = node.g;
+            return true;
+        }
+        const uint32_t p = node.polygon, corners = mesh_.corner_count(p), entry = node.edge;
+        return view_of(node, flat(mesh_.vertex(mesh_.corner(p, entry))),
+                       flat(mesh_.vertex(mesh_.corner(p, entry + 1 == corners ? 0 : entry + 1))), view);
+    }
+    // The same for a node with an entry edge from `first` to `second`.
+    bool view_of(const IntervalNode& node, Flat first, Flat second, View& view) const {
         view = View{node.root, node.a, node.b};
         view.g = node.g;
-        const uint32_t p = node.polygon, entry = node.edge;
-        if (entry == kNoNode) return true;
-        const uint32_t corners = mesh_.corner_count(p);
-        const Flat first = flat(mesh_.vertex(mesh_.corner(p, entry)));
-        const Flat along = flat(mesh_.vertex(mesh_.corner(p, entry + 1 == corners ? 0 : entry + 1))) - first;
+        const Flat along = second - first;
         const double side = cross(first - node.root, along);
         const Flat to_root = node.root - first;
         const double size2 = (to_root.x * to_root.x + to_root.z * to_root.z) * (along.x * along.x + along.z * along.z);
@@ -391,12 +396,21 @@ private:
         return distance(node.a + t * ab, node.root) <= 1e-6 * (1.0 + std::sqrt(std::sqrt(size2)));
     }
 
-    void expand(uint32_t index, const IntervalNode& node) {
-        const uint32_t p = node.polygon;
+    void expand(uint32_t index) {
+        const uint32_t p = scratch_.nodes[index].polygon;
         const uint32_t corners = mesh_.corner_count(p);
+        // Room for every successor first: `node` stays where it is while they are added.
+        const size_t most = scratch_.nodes.size() + 3 * corners + size_t(graph_.exits_end(p) - graph_.exits_begin(p));
+        if (scratch_.nodes.capacity() < most) scratch_.nodes.reserve(std::max(most, 2 * scratch_.nodes.capacity()));
+        const IntervalNode& node = scratch_.nodes[index];
         const uint32_t entry = node.edge;
+
+        // Each corner's place once: two edges share it.
+        Flat at[kMaxPolygonVertices];
+        for (uint32_t k = 0; k < corners; ++k) at[k] = flat(mesh_.vertex(mesh_.corner(p, k)));
         View view;
-        if (!view_of(node, view)) return;
+        if (entry == kNoNode ? !view_of(node, view) : !view_of(node, at[entry], at[entry + 1 == corners ? 0 : entry + 1], view))
+            return;
         if (entry != kNoNode && view.scale == 0.0) {
             // Round a vertex the sweep from polygon to polygon would otherwise go on circling.
             const uint64_t view_key = (uint64_t(node.root_id) << 32) | p;
@@ -407,12 +421,10 @@ private:
 
         for (const LinkExit* exit = graph_.exits_begin(p); exit != graph_.exits_end(p); ++exit) take_link(index, view, *exit);
 
-        // Each corner's place and sides once: two edges share it.
-        Flat at[kMaxPolygonVertices];
+        // Each corner's sides once.
         double b_side[kMaxPolygonVertices], a_side[kMaxPolygonVertices];
-        for (uint32_t k = 0; k < corners; ++k) {
-            at[k] = flat(mesh_.vertex(mesh_.corner(p, k)));
-            if (view.scale != 0.0) b_side[k] = view.beyond_b(at[k]), a_side[k] = view.beyond_a(at[k]);
+        if (view.scale != 0.0) {
+            for (uint32_t k = 0; k < corners; ++k) b_side[k] = view.beyond_b(at[k]), a_side[k] = view.beyond_a(at[k]);
         }
         bool bent_a = false, bent_b = false;
         for (uint32_t k = 0; k < corners; ++k) {
