@@ -168,14 +168,15 @@ inline NL_ALWAYS_INLINE bool keep_nonpositive(double s0, double s1, double& lo, 
 
 // The shortest walk from `root` through the segment [a, b] to `goal`, seen from above: straight when
 // the line crosses the segment (after mirroring a goal on the root's side, which the walk must come
-// back to), else round the nearer end.
-double estimate_through(Flat root, Flat a, Flat b, Flat goal) {
+// back to), else round the nearer end. `straight` is the distance from root to goal.
+double estimate_through(Flat root, Flat a, Flat b, Flat goal, double straight) {
     const Flat along = b - a;
     const double root_side = cross(along, root - a), goal_side = cross(along, goal - a);
     const double length2 = along.x * along.x + along.z * along.z;
     if (length2 == 0.0) return distance(root, a) + distance(a, goal);
-    if (root_side == 0.0) return distance(root, goal);  // on the edge's line: a bound is enough
-    if ((root_side > 0.0) == (goal_side > 0.0)) {
+    if (root_side == 0.0) return straight;  // on the edge's line: a bound is enough
+    const bool mirrored = (root_side > 0.0) == (goal_side > 0.0);
+    if (mirrored) {
         // Mirror the goal across the edge's line.
         const double t = ((goal - a).x * along.x + (goal - a).z * along.z) / length2;
         const Flat foot = a + t * along;
@@ -189,7 +190,7 @@ double estimate_through(Flat root, Flat a, Flat b, Flat goal) {
         const double u = cross(root - a, direction) / denominator;
         if (u < 0.0) return distance(root, a) + distance(a, goal);
         if (u > 1.0) return distance(root, b) + distance(b, goal);
-        return distance(root, goal);
+        return mirrored ? distance(root, goal) : straight;
     }
     return std::min(distance(root, a) + distance(a, goal), distance(root, b) + distance(b, goal));
 }
@@ -209,33 +210,45 @@ public:
         improve(ids_.start, 0.0);
         generate(IntervalNode{flat(start.point), {}, {}, 0.0, ids_.start, start.polygon, kNoNode, CorridorStep::kStart, kNoNode,
                               kNoNode, kNoNode});
-        flush();
+        flush(false);
     }
 
     // Runs until the goal's cost is the least in the open list.
     void run(const std::atomic<bool>* cancel) {
         uint32_t expansions = 0;
         std::vector<OpenEntry>& open = scratch_.open;
-        while (!open.empty() && open.front().f < best_goal_ && !result_.out_of_nodes && !result_.gave_up) {
+        uint32_t index = kNoNode;  // the node to expand next when it skipped the open list
+        for (;;) {
+            if (index == kNoNode) {
+                if (open.empty() || open.front().f >= best_goal_) break;
+                std::pop_heap(open.begin(), open.end(), std::greater<OpenEntry>());
+                index = open.back().node;
+                open.pop_back();
+                if (stale(index)) {
+                    index = kNoNode;
+                    continue;
+                }
+            }
             if ((++expansions & (kCancelCheckExpansions - 1)) == 0 && cancel && cancel->load(std::memory_order_relaxed)) {
                 result_.cancelled = true;
                 return;
             }
-            std::pop_heap(open.begin(), open.end(), std::greater<OpenEntry>());
-            uint32_t index = open.back().node;
-            open.pop_back();
-            if (worse_than_best(scratch_.nodes[index].root_id, scratch_.nodes[index].g)) continue;  // its root was reached more cheaply since
-            for (;;) {
-                expand(index);
-                // A walk with one way on goes on at once (Polyanya's intermediate nodes): its cost
-                // only grows, and the open list need not hold it.
-                if (pending_.size() != 1 || result_.out_of_nodes || result_.gave_up) break;
-                const IntervalNode& next = scratch_.nodes[pending_[0]];
-                if (next.edge == kNoNode || next.polygon == goal_.polygon) break;
-                index = pending_[0];
-                pending_.clear();
+            expand(index);
+            if (result_.out_of_nodes || result_.gave_up) {
+                flush(false);  // a goal reached on the way still counts
+                break;
             }
-            flush();
+            // A walk with one way on goes on at once (Polyanya's intermediate nodes): its cost
+            // only grows, and the open list need not hold it.
+            if (pending_.size() == 1) {
+                const IntervalNode& next = scratch_.nodes[pending_[0]];
+                if (next.edge != kNoNode && next.polygon != goal_.polygon) {
+                    index = pending_[0];
+                    pending_.clear();
+                    continue;
+                }
+            }
+            index = flush(true);
         }
         // Out of nodes with a walk found: a complete path, though perhaps not the shortest.
         result_.reached_goal = goal_parent_ != kNoNode && !result_.gave_up;
@@ -303,7 +316,15 @@ private:
     }
     static constexpr size_t kNodesPerPolygon = 256, kNodesAtLeast = 65536;
 
-    void flush() {
+    // Whether the node's root was reached more cheaply since it was made.
+    bool stale(uint32_t index) const { return worse_than_best(scratch_.nodes[index].root_id, scratch_.nodes[index].g); }
+
+    // Puts the nodes just generated on the open list. With `may_keep`, the cheapest of them is kept
+    // off it and returned when it would be the next out of it anyway (the walk straight on toward
+    // the goal, most often); otherwise kNoNode.
+    uint32_t flush(bool may_keep) {
+        uint32_t kept = kNoNode;
+        double kept_f = kInfinity;
         for (const uint32_t index : pending_) {
             const IntervalNode& node = scratch_.nodes[index];
             if (node.polygon == goal_.polygon) {
@@ -318,14 +339,32 @@ private:
                 // in it (convex) unless some link is cheaper per metre than walking.
                 if (!links_beat_walking_) continue;
             }
-            const double h = node.edge == kNoNode ? distance(node.root, goal_flat_)
-                                                  : estimate_through(node.root, node.a, node.b, goal_flat_);
+            // Siblings share their root: its straight distance to the goal once.
+            if (node.root.x != straight_root_.x || node.root.z != straight_root_.z)
+                straight_root_ = node.root, straight_ = distance(node.root, goal_flat_);
+            if (node.g + straight_ * h_scale_ >= best_goal_) continue;  // no estimate is below the straight line's
+            const double h = node.edge == kNoNode ? straight_ : estimate_through(node.root, node.a, node.b, goal_flat_, straight_);
             const double f = node.g + h * h_scale_;
             if (f >= best_goal_) continue;  // never expanded: the goal is already as cheap
-            scratch_.open.push_back(OpenEntry{f, index});
-            std::push_heap(scratch_.open.begin(), scratch_.open.end(), std::greater<OpenEntry>());
+            if (may_keep && f < kept_f) {
+                if (kept != kNoNode) push(kept_f, kept);
+                kept = index, kept_f = f;
+            } else {
+                push(f, index);
+            }
         }
         pending_.clear();
+        if (kept == kNoNode) return kNoNode;
+        if ((!scratch_.open.empty() && scratch_.open.front().f < kept_f) || stale(kept)) {
+            push(kept_f, kept);
+            return kNoNode;
+        }
+        return kept;
+    }
+
+    void push(double f, uint32_t index) {
+        scratch_.open.push_back(OpenEntry{f, index});
+        std::push_heap(scratch_.open.begin(), scratch_.open.end(), std::greater<OpenEntry>());
     }
 
     // The turning id of an end of polygon p's edge k's opening (the end at corner k, or at k + 1),
@@ -493,15 +532,10 @@ private:
     }
 
     // Whether the line from `root` through `point` (on the edge of s) goes on beyond the edge, away
-    // from the polygon it crosses.
-    bool leaves_across(const Successor& s, Flat root, Flat point) const {
-        const uint32_t n = mesh_.corner_count(s.p);
-        Flat inside{0.0, 0.0};
-        for (uint32_t k = 0; k < n; ++k) inside = inside + flat(mesh_.vertex(mesh_.corner(s.p, k)));
-        inside = (1.0 / n) * inside;
-        const Flat along = s.far_end - s.near_end;
-        const double onward = cross(along, point - root), inward = cross(along, inside - s.near_end);
-        return (onward > 0.0 && inward < 0.0) || (onward < 0.0 && inward > 0.0);
+    // from the polygon it crosses. The navmesh's polygons wind one way (NavMeshBuilder turns them
+    // to face up): each lies on the negative side of its edges, corner k to k + 1.
+    static bool leaves_across(const Successor& s, Flat root, Flat point) {
+        return cross(s.far_end - s.near_end, point - root) > 0.0;
     }
 
     void take_link(uint32_t index, const View& view, const LinkExit& exit) {
@@ -537,6 +571,8 @@ private:
     const uint32_t epoch_;
     CorridorSearch& result_;
     std::vector<uint32_t>& pending_ = scratch_.pending;  // generated by the expansion under way
+    Flat straight_root_{kInfinity, kInfinity};  // the last root flush() measured to the goal, and how far
+    double straight_ = kInfinity;
     double best_goal_ = kInfinity;
     uint32_t goal_parent_ = kNoNode;
 };
