@@ -4,10 +4,14 @@
 // dtCreateNavMeshData. The same 10,000 random start/goal pairs are then planned by both, alternately:
 // Detour findNearestPoly x 2 + findPath + findStraightPath, NavLink nl_path_find (which snaps both ends,
 // searches and string-pulls), each pair three times, its fastest time counting. One line per level:
-//   level=NAME polys=N queries=N nl_us=X detour_us=X ratio=X nl_len=X detour_len=X nl_walked=X nl_bytes=N
+//   level=NAME polys=N queries=N nl_us=X detour_us=X ratio=X complete=N complete_ratio=X rest_ratio=X
+//     nl_len=X detour_len=X nl_walked=X nl_bytes=N
 //     detour_bytes=N ... exact_pairs=N within_0.1%=X worst_excess=X% links=N linked_pairs=N
 //     linked_within_0.1%=X linked_worst_excess=X% linked_missed=N
-// (missed: paths the exact search alone does not find, which the corridor search plans instead)
+// (complete: the pairs NavLink completes; complete_ratio and rest_ratio split the time ratio between
+// them and the others, whose partial paths both sides plan differently: Detour searches through all
+// it reaches, NavLink asks the body's reachability map and walks to the nearest point it reaches;
+// missed: paths the exact search alone does not find, which the corridor search plans instead)
 // (lengths: means over the pairs both complete, nl_len and detour_len straight between corners,
 // nl_walked NavLink's reported length, walked along the surface; bytes: NavLink's navmesh and link index vs Detour's
 // navmesh data; exactness: the first 500 complete paths' x-z lengths against the exact shortest walk
@@ -210,7 +214,7 @@ bool compare(const char* path, Level& level) {
     // shared machine's interruptions land on one side or the other at random; the minimum is the cost.
     std::vector<double> nl_best(kPairs, 1e300), detour_best(kPairs, 1e300);
     double nl_length = 0.0, nl_walked = 0.0, detour_length = 0.0, nl_nodes = 0.0, detour_nodes = 0.0;
-    int both_complete = 0, straight_pairs = 0;
+    int both_complete = 0;
     std::vector<char> nl_complete(kPairs, 0);
     std::vector<nl_path_point> points(4096, nl_path_point_init());
     for (int round = 0; round < kRounds; ++round) {
@@ -232,7 +236,6 @@ bool compare(const char* path, Level& level) {
             detour_nodes += timed.nodes;
             if (result.outcome != NL_PATH_COMPLETE || count == 0) continue;
             nl_complete[i] = 1;
-            if (count == 2) ++straight_pairs;
             // Lengths compare the searches and string pulling alone: Detour plans again, untimed,
             // between the very ends and polygons NavLink located (both locate alike, but points on
             // a polygon border may go to either neighbour).
@@ -268,7 +271,6 @@ bool compare(const char* path, Level& level) {
                 (nl_ms - nl_complete_ms) / std::max(1e-12, detour_ms - detour_complete_ms), nl_length / std::max(1, both_complete), detour_length / std::max(1, both_complete),
                 nl_walked / std::max(1, both_complete), nl_bytes, detour.bytes, both_complete, nl_nodes / kPairs, detour_nodes / kPairs, walking.pairs,
                 double(walking.within) / std::max(1, walking.pairs), 100.0 * walking.worst_excess, walking.missed);
-    std::printf(" straight=%d", straight_pairs);
     std::fflush(stdout);
 
     // With the level's generated links, for a body that takes them: costs (walking seen from above

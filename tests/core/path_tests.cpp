@@ -191,6 +191,43 @@ TEST_CASE("an unreachable goal gives a partial path to the nearest reachable poi
     CHECK(none.result.points.empty());
 }
 
+TEST_CASE("a partial path ends at the nearest point the body reaches, over the links it can take, built map or not") {
+    // Three islands; a one-way drop from the first into the second. The goal is on the third.
+    CellMap map({"..#..#..", "..#..#.."});
+    nl::LinkRequirements declared;
+    declared.gap = 0.2f;
+    declared.drop = 2.0f;
+    map.world->add_link(map.navmesh, map.link(1.9f, 3.1f, nl::LinkKind::Drop, true, declared));
+    const auto graph = map.world->navmeshes().path_graph(map.navmesh);
+
+    nl::PathQuery walker = map.request(0.5f, 0.2f, 7.5f, 1.5f);
+    nl::PathQuery dropper = walker;
+    dropper.agent.max_drop_height = 3.0f;
+    for (const nl::PathQuery& body : {walker, dropper}) {
+        const bool drops = body.agent.max_drop_height > 0.0f;
+        CAPTURE(drops);
+        const size_t maps_before = graph->reachability_map_count();
+        const Path first = find(map, body);  // searches everything, then builds the body's map
+        CHECK(graph->reachability_map_count() == maps_before + 1);
+        const Path again = find(map, body);  // reads the map at once
+        INFO(first.describe());
+        INFO(again.describe());
+        for (const Path* p : {&first, &again}) {
+            CHECK(p->result.outcome == nl::PathOutcome::Partial);
+            CHECK(p->result.goal[0] == doctest::Approx(7.5f));  // the goal asked for, as snapped
+            REQUIRE_FALSE(p->result.points.empty());
+            // The nearest point: the rim of the first island, or of the second for a body that drops.
+            check_point(p->result.points.back(), drops ? 5.0f : 2.0f, 1.5f);
+            CHECK(p->result.links_used == (drops ? 1u : 0u));
+        }
+        REQUIRE(first.result.points.size() == again.result.points.size());
+        for (size_t i = 0; i < first.result.points.size(); ++i) CHECK(first.result.points[i].position == again.result.points[i].position);
+        CHECK(first.result.cost == again.result.cost);
+        // A straight walk when no link is taken: its cost is its length.
+        if (!drops) CHECK(first.result.cost == doctest::Approx(std::hypot(1.5f, 1.3f)));
+    }
+}
+
 TEST_CASE("ends that do not snap to the navmesh have their own outcomes") {
     CellMap map({"...."});
     CHECK(find(map, map.request(-10.0f, 0.5f, 3.5f, 0.5f)).result.outcome == nl::PathOutcome::StartOffNavMesh);

@@ -1139,9 +1139,11 @@ NL_API nl_agent_capabilities nl_default_agent_capabilities(void);
 typedef uint32_t nl_path_outcome;
 #define NL_PATH_PENDING 0u            /**< Queued or being planned. */
 #define NL_PATH_COMPLETE 1u           /**< The path reaches the goal. */
-#define NL_PATH_PARTIAL 2u            /**< The goal is out of reach (or max_nodes ran out); the path
-                                           leads towards it, as Detour's: to the point nearest the goal
-                                           of the polygon whose entry the search found nearest to it. */
+#define NL_PATH_PARTIAL 2u            /**< The goal is out of reach: the path is the shortest walk to
+                                           the navmesh point nearest the goal that the body reaches.
+                                           Or max_nodes ran out: the path leads towards the goal, as
+                                           Detour's (to the point nearest the goal of the polygon whose
+                                           entry the search found nearest to it). */
 #define NL_PATH_NO_PATH 3u            /**< The goal is out of reach and accept_partial was 0. */
 #define NL_PATH_START_OFF_NAVMESH 4u  /**< No polygon within search_half_extents of the start. */
 #define NL_PATH_GOAL_OFF_NAVMESH 5u   /**< No polygon within search_half_extents of the goal. */
@@ -1178,7 +1180,7 @@ typedef struct nl_path_request_def {
                                         A link costs its length times its cost_modifier, plus this. */
     uint32_t max_nodes;            /**< Most polygons the search may visit; 0 (default): no limit. */
     uint8_t accept_partial;        /**< 1 (default): when the goal cannot be reached, the path leads
-                                        as near to it as it can (NL_PATH_PARTIAL);
+                                        as near to it as the body can go (NL_PATH_PARTIAL);
                                         0: the outcome is NL_PATH_NO_PATH. */
     uint8_t reserved[3];
     nl_path_callback* callback;    /**< Optional, for nl_path_request only. */
