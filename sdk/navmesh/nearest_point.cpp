@@ -6,12 +6,15 @@
 namespace nl {
 
 void NearestPoint::consider(uint32_t p) {
-    // A polygon's rank is at least its box's distance less a climb: nothing beyond the best rank can
-    // beat it, nor anything at it but a lower index.
+    // A polygon's rank is at least its box's distance (less a climb when the point is over the box,
+    // where it may be over the polygon): nothing beyond the best rank can beat it, nor anything at it
+    // but a lower index.
     if (best_.found) {
         const Aabb& box = mesh_.polygon_bounds(p);
         const float box_distance = (point_.cwiseMax(box.min).cwiseMin(box.max) - point_).norm();
-        const float least_rank = std::max(0.0f, box_distance - mesh_.agent().max_climb);
+        const bool over_box = point_.x() >= box.min.x() && point_.x() <= box.max.x() && point_.z() >= box.min.z() &&
+                              point_.z() <= box.max.z();
+        const float least_rank = over_box ? std::max(0.0f, box_distance - mesh_.agent().max_climb) : box_distance;
         if (least_rank > best_rank_ || (least_rank == best_rank_ && p > best_.polygon)) return;
     }
     const Vec3 q = mesh_.closest_point_on_polygon(p, point_);
