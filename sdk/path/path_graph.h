@@ -120,8 +120,8 @@ public:
         return reachability_.get(*this, agent, area_costs);
     }
     // The body's map when one is already built: what a path request asks, never paying for a build.
-    std::shared_ptr<const ReachabilityMap> reachability_if_built(const AgentCapabilities& agent,
-                                                                 const std::vector<float>& area_costs) const {
+    // Valid until this thread asks again (ReachabilityCache::ready).
+    const ReachabilityMap* reachability_if_built(const AgentCapabilities& agent, const std::vector<float>& area_costs) const {
         return reachability_.ready(agent, area_costs);
     }
     size_t reachability_map_count() const { return reachability_.map_count(); }

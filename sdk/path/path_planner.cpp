@@ -171,7 +171,7 @@ void plan_path_in_surface_space(const PathGraph& graph, const PathQuery& query, 
     NavPoint target = goal;
     bool toward = false;  // heading for the nearest point the body reaches, the goal being out of reach
     if (start.polygon != goal.polygon) {
-        const auto map = graph.reachability_if_built(query.agent, query.area_costs);
+        const ReachabilityMap* map = graph.reachability_if_built(query.agent, query.area_costs);
         if (map && !map->reaches(start.polygon, goal.polygon)) {
             if (!query.accept_partial) {
                 result.outcome = PathOutcome::NoPath;

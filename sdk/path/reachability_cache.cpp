@@ -72,21 +72,36 @@ std::shared_ptr<const ReachabilityMap> ReachabilityCache::get(const PathGraph& g
     return map_class->map.get();
 }
 
-std::shared_ptr<const ReachabilityMap> ReachabilityCache::ready(const AgentCapabilities& agent,
-                                                                const std::vector<float>& area_costs) const {
+uint64_t ReachabilityCache::next_id() {
+    static std::atomic<uint64_t> next{1};
+    return next.fetch_add(1, std::memory_order_relaxed);
+}
+
+const ReachabilityMap* ReachabilityCache::ready(const AgentCapabilities& agent, const std::vector<float>& area_costs) const {
     // Most graphs never build a map (every request finds its goal): no lock for them.
     if (!remembered_.load(std::memory_order_acquire)) return nullptr;
     const std::array<uint64_t, 4> excluded = ReachabilityClass::excluded_areas_of(area_costs);
+    // This thread's last answer: a map never changes for its graph, and the thread holds it.
+    struct LastAnswer {
+        uint64_t cache = 0;
+        AgentCapabilities agent;
+        std::array<uint64_t, 4> excluded{};
+        std::shared_ptr<const ReachabilityMap> map;
+    };
+    thread_local LastAnswer last;
+    if (last.cache == id_ && last.excluded == excluded && same_body(last.agent, agent)) return last.map.get();
     std::lock_guard<std::mutex> lock(mutex_);
     for (const Body& body : bodies_) {
         if (body.excluded_areas != excluded || !same_body(body.agent, agent)) continue;
         const MapFuture& map = body.map_class->map;
         if (map.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return nullptr;
         try {
-            return map.get();
+            last.map = map.get();
         } catch (...) {
             return nullptr;  // a build that failed: the next get() tries again
         }
+        last.cache = id_, last.agent = agent, last.excluded = excluded;
+        return last.map.get();
     }
     return nullptr;
 }

@@ -29,7 +29,10 @@ public:
     std::shared_ptr<const ReachabilityMap> get(const PathGraph& graph, const AgentCapabilities& agent,
                                                const std::vector<float>& area_costs);
     // The map for a body when one is built and ready; null otherwise (never builds, never waits).
-    std::shared_ptr<const ReachabilityMap> ready(const AgentCapabilities& agent, const std::vector<float>& area_costs) const;
+    // The pointer stays valid until this thread's next call of ready() on any cache: the thread keeps
+    // the last map it was given (alive, even past this cache), so that asking again for the same body
+    // on the same graph takes no lock, as every path request on the graph does.
+    const ReachabilityMap* ready(const AgentCapabilities& agent, const std::vector<float>& area_costs) const;
     // Maps built and kept (for tests and statistics).
     size_t map_count() const;
 
@@ -54,6 +57,8 @@ private:
     // Drops a class whose build failed, and the bodies that point at it.
     void forget(const std::shared_ptr<Class>& map_class);
 
+    const uint64_t id_ = next_id();  // names this cache in a thread's last answer from ready()
+    static uint64_t next_id();
     mutable std::mutex mutex_;
     std::atomic<bool> remembered_{false};  // a body was ever remembered: ready() may find a map
     std::vector<Body> bodies_;
