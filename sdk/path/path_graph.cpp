@@ -155,6 +155,13 @@ void PathGraph::mark_subtree_exits() {
     }
 }
 
+size_t NavMeshSearchIndex::memory_bytes() const {
+    auto bytes = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
+    return bytes(bends_) + bytes(twins_) + bytes(hangs_from_) + bytes(subtree_first_) + bytes(subtree_last_) + bytes(peel_order_);
+}
+
+size_t PathGraph::search_index_bytes() const { return index_->memory_bytes() + subtree_exits_.capacity() * sizeof(uint8_t); }
+
 size_t PathGraph::link_index_bytes() const {
     return first_exit_.capacity() * sizeof(uint32_t) + exits_.capacity() * sizeof(LinkExit);
 }

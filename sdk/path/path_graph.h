@@ -53,6 +53,8 @@ public:
         return peeled(p) && subtree_first_[p] >= subtree_first_[top] && subtree_first_[p] <= subtree_last_[top];
     }
     const std::vector<uint32_t>& peel_order() const { return peel_order_; }
+    // Heap bytes held.
+    size_t memory_bytes() const;
 
 private:
     void index_bends();
@@ -111,6 +113,9 @@ public:
 
     // Heap bytes of the link index (the navmesh counts its own).
     size_t link_index_bytes() const;
+    // Heap bytes of what the exact search reads besides the navmesh and links: the navmesh's search
+    // index (shared by its graphs) and which dead-end trees a link leaves from.
+    size_t search_index_bytes() const;
 
     // Where a body (capabilities, area costs as a path request gives them) can go on this graph
     // (path/reachability.h): built on first use, shared by every body of its class. Throws only for

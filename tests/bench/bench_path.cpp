@@ -13,8 +13,8 @@
 // it reaches, NavLink asks the body's reachability map and walks to the nearest point it reaches;
 // missed: paths the exact search alone does not find, which the corridor search plans instead)
 // (lengths: means over the pairs both complete, nl_len and detour_len straight between corners,
-// nl_walked NavLink's reported length, walked along the surface; bytes: NavLink's navmesh and link index vs Detour's
-// navmesh data; exactness: the first 500 complete paths' x-z lengths against the exact shortest walk
+// nl_walked NavLink's reported length, walked along the surface; bytes: NavLink's navmesh, link index and
+// search index vs Detour's navmesh data; exactness: the first 500 complete paths' x-z lengths against the exact shortest walk
 // between the same ends, tests/support/shortest_path_reference.h; then the same with the level's
 // generated links for a body that takes them, costs against the cheapest route), then one line with the queue's throughput on 1 and 2 path workers on the largest level.
 #include <DetourCommon.h>
@@ -262,7 +262,7 @@ bool compare(const char* path, Level& level) {
     const Exactness walking = exactness(level, request_for, points);
     const nl::Handle handle{level.navmesh.index1, level.navmesh.generation};
     const auto graph = level.world->core->navmeshes().path_graph(handle);
-    const size_t nl_bytes = graph->navmesh().memory_bytes() + graph->link_index_bytes();
+    const size_t nl_bytes = graph->navmesh().memory_bytes() + graph->link_index_bytes() + graph->search_index_bytes();
     std::printf("level=%s polys=%u queries=%d nl_us=%.2f detour_us=%.2f ratio=%.2f complete=%d complete_ratio=%.2f rest_ratio=%.2f nl_len=%.4f detour_len=%.4f nl_walked=%.4f nl_bytes=%zu "
                 "detour_bytes=%d both_complete=%d nl_nodes=%.1f detour_nodes=%.1f exact_pairs=%d within_0.1%%=%.4f "
                 "worst_excess=%.4f%% exact_missed=%d",
