@@ -126,6 +126,10 @@ struct ShortestScratch {
     std::vector<OpenEntry> open;
     std::vector<double> best;  // per dense turning id, valid where best_epoch is current
     std::vector<uint32_t> best_epoch;
+    // Per dense turning id: where the walk that first reached it at its best cost came from (its
+    // root), and the polygon it bent there from.
+    std::vector<Flat> best_from;
+    std::vector<uint32_t> best_polygon;
     CostTable best_narrowed;   // per narrowed end's turning id
     std::vector<uint32_t> polygon_epoch;
     // The cheapest cost at which a root on a polygon's edge saw all of the polygon, per (root,
@@ -140,7 +144,10 @@ struct ShortestScratch {
         pending.clear();
         whole_views.clear();
         best_narrowed.clear();
-        if (best.size() < turning_ids) best.resize(turning_ids), best_epoch.resize(turning_ids, 0);
+        if (best.size() < turning_ids) {
+            best.resize(turning_ids), best_epoch.resize(turning_ids, 0);
+            best_from.resize(turning_ids), best_polygon.resize(turning_ids);
+        }
         if (polygon_epoch.size() < polygons) polygon_epoch.resize(polygons, 0);
         if (++epoch == 0) {
             std::fill(best_epoch.begin(), best_epoch.end(), 0);
@@ -282,15 +289,31 @@ private:
         return scratch_.best_epoch[id] == epoch_ && !(g < scratch_.best[id] * (1.0 - kRelativeSlack) - kRelativeSlack);
     }
     // Records g for the turning id unless it was reached more cheaply; false then.
-    bool improve(uint32_t id, double g) {
+    // `from`, `polygon`: the root of the walk that bends there, and the polygon it bends from (kNoNode
+    // for the start and links' landings).
+    bool improve(uint32_t id, double g, Flat from = {}, uint32_t polygon = kNoNode) {
         if (worse_than_best(id, g)) return false;
         if (id >= ids_.narrowed_base) {
             scratch_.best_narrowed.lower(id, g);
             return true;
         }
-        if (scratch_.best_epoch[id] != epoch_ || g < scratch_.best[id]) scratch_.best[id] = g;
+        if (scratch_.best_epoch[id] != epoch_ || g < scratch_.best[id]) {
+            scratch_.best[id] = g;
+            scratch_.best_from[id] = from;
+            scratch_.best_polygon[id] = polygon;
+        }
         scratch_.best_epoch[id] = epoch_;
         return true;
+    }
+    // Whether a walk from `from` bending at vertex `at` (turning id `id`) out of `polygon` at cost g
+    // does what one already did: as cheap, out of the same polygon, coming the same way (its root on
+    // the same ray into the vertex, as pillars on one grid line put it). Its bent views would be the
+    // same; left to go on, each such vertex in a row would double the nodes after it.
+    bool bent_there_already(uint32_t id, double g, Flat from, Flat at, uint32_t polygon) const {
+        if (id >= ids_.narrowed_base || scratch_.best_epoch[id] != epoch_ || scratch_.best_polygon[id] != polygon) return false;
+        if (g < scratch_.best[id] * (1.0 - kRelativeSlack) - kRelativeSlack) return false;  // cheaper: it goes on
+        const Flat first = at - scratch_.best_from[id], now = at - from;
+        return cross(first, now) == 0.0 && first.x * now.x + first.z * now.z > 0.0;
     }
 
     // A new node, pushed on the open list by flush() unless expanded at once.
@@ -422,8 +445,12 @@ private:
             if (node.a_turn != kNoNode) view.g_a = node.g + rate_ * distance(node.root, node.a), view.a_turn = node.a_turn;
             if (node.b_turn != kNoNode) view.g_b = node.g + rate_ * distance(node.root, node.b), view.b_turn = node.b_turn;
             // A root cheaper by another way makes these bends no better than that way's.
-            if (view.a_turn != kNoNode && worse_than_best(view.a_turn, view.g_a)) view.g_a = kInfinity;
-            if (view.b_turn != kNoNode && worse_than_best(view.b_turn, view.g_b)) view.g_b = kInfinity;
+            if (view.a_turn != kNoNode && (worse_than_best(view.a_turn, view.g_a) ||
+                                           bent_there_already(view.a_turn, view.g_a, node.root, node.a, node.polygon)))
+                view.g_a = kInfinity;
+            if (view.b_turn != kNoNode && (worse_than_best(view.b_turn, view.g_b) ||
+                                           bent_there_already(view.b_turn, view.g_b, node.root, node.b, node.polygon)))
+                view.g_b = kInfinity;
             return true;
         }
         // The root on the entry edge's line: a corner of this polygon the walk bends at, from which
@@ -491,19 +518,24 @@ private:
             double lo = 0.0, hi = 1.0;
             if (keep_nonpositive(b0, b1, lo, hi) && keep_nonpositive(a0, a1, lo, hi))
                 add(successor, view.root, node.root_id, view.g, lo, hi);
+            // Bending at b or a. A corner of this edge on the ray through that end (collinear with
+            // the root, as pillars on one grid line are) is reached as cheaply straight from the root
+            // through the end: the walk bends there from the straight node, not from this one, else
+            // every such corner in a row doubles the nodes after it. Unless the whole edge lies on the
+            // ray: then the straight node sees nothing through it.
             lo = 0.0, hi = 1.0;
             if (view.g_b < kInfinity && keep_nonpositive(-b0, -b1, lo, hi)) {
-                add(successor, view.b, view.b_turn, view.g_b, lo, hi);
+                add(successor, view.b, view.b_turn, view.g_b, lo, hi, !(b0 == 0.0 && b1 != 0.0), !(b1 == 0.0 && b0 != 0.0));
                 bent_b = true;
             }
             lo = 0.0, hi = 1.0;
             if (view.g_a < kInfinity && keep_nonpositive(-a0, -a1, lo, hi)) {
-                add(successor, view.a, view.a_turn, view.g_a, lo, hi);
+                add(successor, view.a, view.a_turn, view.g_a, lo, hi, !(a0 == 0.0 && a1 != 0.0), !(a1 == 0.0 && a0 != 0.0));
                 bent_a = true;
             }
         }
-        if (bent_a) improve(view.a_turn, view.g_a);
-        if (bent_b) improve(view.b_turn, view.g_b);
+        if (bent_a) improve(view.a_turn, view.g_a, node.root, p);
+        if (bent_b) improve(view.b_turn, view.g_b, node.root, p);
     }
 
     // One edge of an expanded polygon, the part [lo, hi] of its opening in view from a root.
@@ -512,7 +544,10 @@ private:
         Flat near_end, far_end;
     };
 
-    void add(const Successor& s, Flat root, uint32_t root_id, double g, double lo, double hi) {
+    // `near_turns`, `far_turns`: whether a walk of this node may bend at the opening's end at corner
+    // k, or k + 1, when the interval reaches it.
+    void add(const Successor& s, Flat root, uint32_t root_id, double g, double lo, double hi, bool near_turns = true,
+             bool far_turns = true) {
         // An interval that reaches an end of the opening within rounding ends there, where the walk
         // may bend: a ray along a wall through a corner stops a hair short of it (dungeon: a walk
         // down a straight wall could not turn at its end, and lost the way on).
@@ -528,7 +563,8 @@ private:
         const uint8_t twin = graph_.twin_edge(s.p, s.k);
         if (twin == PathGraph::kNoTwin) return;
         generate(IntervalNode{root, s.near_end + hi * along, s.near_end + lo * along, g, root_id, s.q, twin, s.k, s.parent,
-                              hi >= 1.0 ? turning_id(s.p, s.k, true) : kNoNode, lo <= 0.0 ? turning_id(s.p, s.k, false) : kNoNode});
+                              hi >= 1.0 && far_turns ? turning_id(s.p, s.k, true) : kNoNode,
+                              lo <= 0.0 && near_turns ? turning_id(s.p, s.k, false) : kNoNode});
     }
 
     // Whether the line from `root` through `point` (on the edge of s) goes on beyond the edge, away
