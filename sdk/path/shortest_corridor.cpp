@@ -518,19 +518,14 @@ private:
             double lo = 0.0, hi = 1.0;
             if (keep_nonpositive(b0, b1, lo, hi) && keep_nonpositive(a0, a1, lo, hi))
                 add(successor, view.root, node.root_id, view.g, lo, hi);
-            // Bending at b or a. A corner of this edge on the ray through that end (collinear with
-            // the root, as pillars on one grid line are) is reached as cheaply straight from the root
-            // through the end: the walk bends there from the straight node, not from this one, else
-            // every such corner in a row doubles the nodes after it. Unless the whole edge lies on the
-            // ray: then the straight node sees nothing through it.
             lo = 0.0, hi = 1.0;
             if (view.g_b < kInfinity && keep_nonpositive(-b0, -b1, lo, hi)) {
-                add(successor, view.b, view.b_turn, view.g_b, lo, hi, !(b0 == 0.0 && b1 != 0.0), !(b1 == 0.0 && b0 != 0.0));
+                add(successor, view.b, view.b_turn, view.g_b, lo, hi);
                 bent_b = true;
             }
             lo = 0.0, hi = 1.0;
             if (view.g_a < kInfinity && keep_nonpositive(-a0, -a1, lo, hi)) {
-                add(successor, view.a, view.a_turn, view.g_a, lo, hi, !(a0 == 0.0 && a1 != 0.0), !(a1 == 0.0 && a0 != 0.0));
+                add(successor, view.a, view.a_turn, view.g_a, lo, hi);
                 bent_a = true;
             }
         }
@@ -544,10 +539,7 @@ private:
         Flat near_end, far_end;
     };
 
-    // `near_turns`, `far_turns`: whether a walk of this node may bend at the opening's end at corner
-    // k, or k + 1, when the interval reaches it.
-    void add(const Successor& s, Flat root, uint32_t root_id, double g, double lo, double hi, bool near_turns = true,
-             bool far_turns = true) {
+    void add(const Successor& s, Flat root, uint32_t root_id, double g, double lo, double hi) {
         // An interval that reaches an end of the opening within rounding ends there, where the walk
         // may bend: a ray along a wall through a corner stops a hair short of it (dungeon: a walk
         // down a straight wall could not turn at its end, and lost the way on).
@@ -563,8 +555,7 @@ private:
         const uint8_t twin = graph_.twin_edge(s.p, s.k);
         if (twin == PathGraph::kNoTwin) return;
         generate(IntervalNode{root, s.near_end + hi * along, s.near_end + lo * along, g, root_id, s.q, twin, s.k, s.parent,
-                              hi >= 1.0 && far_turns ? turning_id(s.p, s.k, true) : kNoNode,
-                              lo <= 0.0 && near_turns ? turning_id(s.p, s.k, false) : kNoNode});
+                              hi >= 1.0 ? turning_id(s.p, s.k, true) : kNoNode, lo <= 0.0 ? turning_id(s.p, s.k, false) : kNoNode});
     }
 
     // Whether the line from `root` through `point` (on the edge of s) goes on beyond the edge, away
