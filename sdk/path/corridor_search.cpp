@@ -168,6 +168,7 @@ void find_corridor(const PathGraph& graph, const PathQuery& query, const NavPoin
     result.steps.clear();
     result.reached_goal = result.out_of_nodes = result.cancelled = result.gave_up = false;
     result.nodes_visited = 0;
+    result.search_nodes = 0;
 
     float nearest_entry = std::numeric_limits<float>::infinity();  // bounds a partial path's end
     uint32_t nearest_entry_polygon = start.polygon;

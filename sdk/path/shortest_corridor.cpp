@@ -127,9 +127,9 @@ struct ShortestScratch {
     std::vector<double> best;  // per dense turning id, valid where best_epoch is current
     std::vector<uint32_t> best_epoch;
     // Per dense turning id: where the walk that first reached it at its best cost came from (its
-    // root), and the polygon it bent there from.
+    // root), and the polygon edge (NavMesh::edge_index) it crossed into the polygon it bent in.
     std::vector<Flat> best_from;
-    std::vector<uint32_t> best_polygon;
+    std::vector<uint32_t> best_entry;
     CostTable best_narrowed;   // per narrowed end's turning id
     std::vector<uint32_t> polygon_epoch;
     // The cheapest cost at which a root on a polygon's edge saw all of the polygon, per (root,
@@ -146,7 +146,7 @@ struct ShortestScratch {
         best_narrowed.clear();
         if (best.size() < turning_ids) {
             best.resize(turning_ids), best_epoch.resize(turning_ids, 0);
-            best_from.resize(turning_ids), best_polygon.resize(turning_ids);
+            best_from.resize(turning_ids), best_entry.resize(turning_ids);
         }
         if (polygon_epoch.size() < polygons) polygon_epoch.resize(polygons, 0);
         if (++epoch == 0) {
@@ -261,6 +261,8 @@ public:
         result_.reached_goal = goal_parent_ != kNoNode && !result_.gave_up;
     }
 
+    uint32_t node_count() const { return static_cast<uint32_t>(scratch_.nodes.size()); }
+
     void write_corridor() {
         result_.cost = static_cast<float>(best_goal_);
         result_.last_position = goal_.point;
@@ -289,9 +291,9 @@ private:
         return scratch_.best_epoch[id] == epoch_ && !(g < scratch_.best[id] * (1.0 - kRelativeSlack) - kRelativeSlack);
     }
     // Records g for the turning id unless it was reached more cheaply; false then.
-    // `from`, `polygon`: the root of the walk that bends there, and the polygon it bends from (kNoNode
-    // for the start and links' landings).
-    bool improve(uint32_t id, double g, Flat from = {}, uint32_t polygon = kNoNode) {
+    // `from`, `entry`: the root of the walk that bends there, and the edge it crossed into the polygon
+    // it bends in (NavMesh::edge_index; kNoNode for the start and links' landings).
+    bool improve(uint32_t id, double g, Flat from = {}, uint32_t entry = kNoNode) {
         if (worse_than_best(id, g)) return false;
         if (id >= ids_.narrowed_base) {
             scratch_.best_narrowed.lower(id, g);
@@ -300,17 +302,18 @@ private:
         if (scratch_.best_epoch[id] != epoch_ || g < scratch_.best[id]) {
             scratch_.best[id] = g;
             scratch_.best_from[id] = from;
-            scratch_.best_polygon[id] = polygon;
+            scratch_.best_entry[id] = entry;
         }
         scratch_.best_epoch[id] = epoch_;
         return true;
     }
-    // Whether a walk from `from` bending at vertex `at` (turning id `id`) out of `polygon` at cost g
-    // does what one already did: as cheap, out of the same polygon, coming the same way (its root on
-    // the same ray into the vertex, as pillars on one grid line put it). Its bent views would be the
-    // same; left to go on, each such vertex in a row would double the nodes after it.
-    bool bent_there_already(uint32_t id, double g, Flat from, Flat at, uint32_t polygon) const {
-        if (id >= ids_.narrowed_base || scratch_.best_epoch[id] != epoch_ || scratch_.best_polygon[id] != polygon) return false;
+    // Whether a walk from `from` bending at vertex `at` (turning id `id`) after crossing edge `entry`
+    // (NavMesh::edge_index) at cost g does what one already did: as cheap, through the same edge,
+    // coming the same way (its root on the same ray into the vertex, as pillars on one grid line put
+    // it). Its bent views would be the same, on the same side of that ray; left to go on, each such
+    // vertex in a row would double the nodes after it.
+    bool bent_there_already(uint32_t id, double g, Flat from, Flat at, uint32_t entry) const {
+        if (id >= ids_.narrowed_base || scratch_.best_epoch[id] != epoch_ || scratch_.best_entry[id] != entry) return false;
         if (g < scratch_.best[id] * (1.0 - kRelativeSlack) - kRelativeSlack) return false;  // cheaper: it goes on
         const Flat first = at - scratch_.best_from[id], now = at - from;
         return cross(first, now) == 0.0 && first.x * now.x + first.z * now.z > 0.0;
@@ -446,10 +449,10 @@ private:
             if (node.b_turn != kNoNode) view.g_b = node.g + rate_ * distance(node.root, node.b), view.b_turn = node.b_turn;
             // A root cheaper by another way makes these bends no better than that way's.
             if (view.a_turn != kNoNode && (worse_than_best(view.a_turn, view.g_a) ||
-                                           bent_there_already(view.a_turn, view.g_a, node.root, node.a, node.polygon)))
+                                           bent_there_already(view.a_turn, view.g_a, node.root, node.a, mesh_.edge_index(node.polygon, node.edge))))
                 view.g_a = kInfinity;
             if (view.b_turn != kNoNode && (worse_than_best(view.b_turn, view.g_b) ||
-                                           bent_there_already(view.b_turn, view.g_b, node.root, node.b, node.polygon)))
+                                           bent_there_already(view.b_turn, view.g_b, node.root, node.b, mesh_.edge_index(node.polygon, node.edge))))
                 view.g_b = kInfinity;
             return true;
         }
@@ -529,8 +532,8 @@ private:
                 bent_a = true;
             }
         }
-        if (bent_a) improve(view.a_turn, view.g_a, node.root, p);
-        if (bent_b) improve(view.b_turn, view.g_b, node.root, p);
+        if (bent_a) improve(view.a_turn, view.g_a, node.root, mesh_.edge_index(p, entry));
+        if (bent_b) improve(view.b_turn, view.g_b, node.root, mesh_.edge_index(p, entry));
     }
 
     // One edge of an expanded polygon, the part [lo, hi] of its opening in view from a root.
@@ -616,6 +619,7 @@ void find_shortest_corridor(const PathGraph& graph, const PathQuery& query, cons
     ShortestSearch search(graph, query, goal, walk_cost, shortest_scratch(), result);
     search.add_start(start);
     search.run(cancel);
+    result.search_nodes = search.node_count();
     if (result.cancelled || !result.reached_goal) return;
     search.write_corridor();
 }

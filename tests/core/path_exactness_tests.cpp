@@ -124,12 +124,14 @@ struct Tally {
     double worst = 0.0;     // the search's largest excess over the reference, relative
     double cheaper = 0.0;   // the most the search's is below the reference's (>= 0), absolute
     double off_cost = 0.0;  // without links: the most the search's cost and its path's x-z length differ
+    double nodes_per_polygon = 0.0;  // the exact search's interval nodes per polygon it entered, at most
 
     void report(const std::string& what) const {
         MESSAGE(what, ": search within 0.1% of the reference on ", within, " of ", pairs, " pairs (", none,
                 " more without a route in both, ", links, " paths over links); worst +", 100.0 * worst, "%, at most ", cheaper,
                 " below it");
         if (links == 0) MESSAGE(what, ": the search's cost and its path's x-z length apart by at most ", off_cost);
+        MESSAGE(what, ": at most ", nodes_per_polygon, " search nodes per polygon entered");
     }
 };
 
@@ -164,6 +166,7 @@ void compare(const Map& map, const nl::PathQuery& query, const std::vector<Vec3>
         nl::find_shortest_corridor(*graph, alone, graph->navmesh().find_nearest(start, query.search_half_extents),
                                    graph->navmesh().find_nearest(goal, query.search_half_extents), 1.0f, nullptr, exact);
         CHECK(exact.reached_goal);
+        tally.nodes_per_polygon = std::max(tally.nodes_per_polygon, double(exact.search_nodes) / std::max(1u, exact.nodes_visited));
         if (result.links_used > 0) ++tally.links;
         const double found = by_cost ? double(result.cost) : xz_length(result);
         CHECK(found >= *cheapest - 1e-4);
