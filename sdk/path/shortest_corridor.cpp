@@ -63,10 +63,22 @@ struct TurningIds {
     uint32_t dense_count() const { return narrowed_base; }
 };
 
-// Costs by key, open addressing with epoch stamps: a search clears it in constant time (an
-// unordered_map's clear walks its buckets).
+// How a walk reached a turning point: from its root, across the edge into the polygon it bent in
+// (NavMesh::edge_index; kNoNode for the start and links' landings).
+struct Arrival {
+    Flat from{0.0, 0.0};
+    uint32_t entry = kNoNode;
+};
+
+// Costs by key, with the arrival of the cheapest, open addressing with epoch stamps: a search clears
+// it in constant time (an unordered_map's clear walks its buckets).
 class CostTable {
 public:
+    struct Entry {
+        double g;
+        Arrival arrival;
+    };
+
     void clear() {
         if (++epoch_ == 0) {
             for (Slot& slot : slots_) slot.epoch = 0;
@@ -74,27 +86,27 @@ public:
         }
         used_ = 0;
     }
-    // The cost kept for `key`, or null.
-    const double* find(uint64_t key) const {
+    // The cost kept for `key` and its arrival, or null.
+    const Entry* find(uint64_t key) const {
         if (slots_.empty()) return nullptr;
         for (size_t i = hash(key);; i = (i + 1) & (slots_.size() - 1)) {
             const Slot& slot = slots_[i];
             if (slot.epoch != epoch_) return nullptr;
-            if (slot.key == key) return &slot.g;
+            if (slot.key == key) return &slot.entry;
         }
     }
-    // Keeps g for `key` if it has none or a dearer one.
-    void lower(uint64_t key, double g) {
+    // Keeps g and its arrival for `key` if it has none or a dearer one.
+    void lower(uint64_t key, double g, const Arrival& arrival = {}) {
         if (2 * (used_ + 1) > slots_.size()) grow();
         for (size_t i = hash(key);; i = (i + 1) & (slots_.size() - 1)) {
             Slot& slot = slots_[i];
             if (slot.epoch != epoch_) {
-                slot = Slot{key, g, epoch_};
+                slot = Slot{key, Entry{g, arrival}, epoch_};
                 ++used_;
                 return;
             }
             if (slot.key != key) continue;
-            slot.g = std::min(slot.g, g);
+            if (g < slot.entry.g) slot.entry = Entry{g, arrival};
             return;
         }
     }
@@ -102,18 +114,18 @@ public:
 private:
     struct Slot {
         uint64_t key;
-        double g;
+        Entry entry;
         uint32_t epoch;
     };
     size_t hash(uint64_t key) const { return size_t((key * 0x9e3779b97f4a7c15ull) >> 32) & (slots_.size() - 1); }
     void grow() {
         std::vector<Slot> old = std::move(slots_);
-        slots_.assign(std::max<size_t>(64, 2 * old.size()), Slot{0, 0.0, 0});
+        slots_.assign(std::max<size_t>(64, 2 * old.size()), Slot{0, Entry{0.0, {}}, 0});
         const uint32_t current = epoch_;
         epoch_ = 1;
         used_ = 0;
         for (const Slot& slot : old)
-            if (slot.epoch == current) lower(slot.key, slot.g);
+            if (slot.epoch == current) lower(slot.key, slot.entry.g, slot.entry.arrival);
     }
 
     std::vector<Slot> slots_;
@@ -126,10 +138,7 @@ struct ShortestScratch {
     std::vector<OpenEntry> open;
     std::vector<double> best;  // per dense turning id, valid where best_epoch is current
     std::vector<uint32_t> best_epoch;
-    // Per dense turning id: where the walk that first reached it at its best cost came from (its
-    // root), and the polygon edge (NavMesh::edge_index) it crossed into the polygon it bent in.
-    std::vector<Flat> best_from;
-    std::vector<uint32_t> best_entry;
+    std::vector<Arrival> best_arrival;  // per dense turning id: how the walk at its best cost came
     CostTable best_narrowed;   // per narrowed end's turning id
     std::vector<uint32_t> polygon_epoch;
     // The cheapest cost at which a root on a polygon's edge saw all of the polygon, per (root,
@@ -146,7 +155,7 @@ struct ShortestScratch {
         best_narrowed.clear();
         if (best.size() < turning_ids) {
             best.resize(turning_ids), best_epoch.resize(turning_ids, 0);
-            best_from.resize(turning_ids), best_entry.resize(turning_ids);
+            best_arrival.resize(turning_ids);
         }
         if (polygon_epoch.size() < polygons) polygon_epoch.resize(polygons, 0);
         if (++epoch == 0) {
@@ -282,8 +291,8 @@ private:
     static bool worse(double g, double best) { return g > best * (1.0 + kRelativeSlack) + kRelativeSlack; }
     bool worse_than_best(uint32_t id, double g) const {
         if (id >= ids_.narrowed_base) {
-            const double* best = scratch_.best_narrowed.find(id);
-            return best && worse(g, *best);
+            const CostTable::Entry* best = scratch_.best_narrowed.find(id);
+            return best && worse(g, best->g);
         }
         return scratch_.best_epoch[id] == epoch_ && worse(g, scratch_.best[id]);
     }
@@ -291,33 +300,42 @@ private:
         return scratch_.best_epoch[id] == epoch_ && !(g < scratch_.best[id] * (1.0 - kRelativeSlack) - kRelativeSlack);
     }
     // Records g for the turning id unless it was reached more cheaply; false then.
-    // `from`, `entry`: the root of the walk that bends there, and the edge it crossed into the polygon
-    // it bends in (NavMesh::edge_index; kNoNode for the start and links' landings).
-    bool improve(uint32_t id, double g, Flat from = {}, uint32_t entry = kNoNode) {
+    // `arrival`: how the walk that bends there came (nothing for the start and links' landings).
+    bool improve(uint32_t id, double g, const Arrival& arrival = {}) {
         if (worse_than_best(id, g)) return false;
         if (id >= ids_.narrowed_base) {
-            scratch_.best_narrowed.lower(id, g);
+            scratch_.best_narrowed.lower(id, g, arrival);
             return true;
         }
         if (scratch_.best_epoch[id] != epoch_ || g < scratch_.best[id]) {
             scratch_.best[id] = g;
-            scratch_.best_from[id] = from;
-            scratch_.best_entry[id] = entry;
+            scratch_.best_arrival[id] = arrival;
         }
         scratch_.best_epoch[id] = epoch_;
         return true;
     }
-    // Whether a walk from `from` bending at vertex `at` (turning id `id`) after crossing edge `entry`
-    // (NavMesh::edge_index) at cost g does what one already did: as cheap, through the same edge,
-    // coming the same way (its root on the same ray into the vertex, as pillars on one grid line put
-    // it). Its bent views would be the same, on the same side of that ray; left to go on, each such
-    // vertex in a row would double the nodes after it.
-    bool bent_there_already(uint32_t id, double g, Flat from, Flat at, uint32_t entry) const {
-        if (id >= ids_.narrowed_base || scratch_.best_epoch[id] != epoch_ || scratch_.best_entry[id] != entry) return false;
-        if (g < scratch_.best[id] * (1.0 - kRelativeSlack) - kRelativeSlack) return false;  // cheaper: it goes on
-        const Flat first = at - scratch_.best_from[id], now = at - from;
-        return cross(first, now) == 0.0 && first.x * now.x + first.z * now.z > 0.0;
+    // Whether a walk bending at `at` (turning id `id`) at cost g after arriving as `now` does what one
+    // already did: as cheap, across the same edge, coming the same way (its root on the same ray into
+    // the turning point, within rounding: pillars on one grid line put them so). Its bent views would
+    // be the same, on the same side of that ray; left to go on, each such corner in a row would double
+    // the nodes after it.
+    bool bent_there_already(uint32_t id, double g, const Arrival& now, Flat at) const {
+        double best;
+        const Arrival* first;
+        if (id >= ids_.narrowed_base) {
+            const CostTable::Entry* entry = scratch_.best_narrowed.find(id);
+            if (!entry) return false;
+            best = entry->g, first = &entry->arrival;
+        } else {
+            if (scratch_.best_epoch[id] != epoch_) return false;
+            best = scratch_.best[id], first = &scratch_.best_arrival[id];
+        }
+        if (first->entry != now.entry || g < best * (1.0 - kRelativeSlack) - kRelativeSlack) return false;
+        const Flat u = at - first->from, v = at - now.from;
+        const double along = u.x * v.x + u.z * v.z, across = cross(u, v);
+        return along > 0.0 && across * across <= kSameRay * (u.x * u.x + u.z * u.z) * (v.x * v.x + v.z * v.z);
     }
+    static constexpr double kSameRay = 1e-18;  // squared sine of the angle between rays taken as one
 
     // A new node, pushed on the open list by flush() unless expanded at once.
     void generate(const IntervalNode& node) {
@@ -448,11 +466,12 @@ private:
             if (node.a_turn != kNoNode) view.g_a = node.g + rate_ * distance(node.root, node.a), view.a_turn = node.a_turn;
             if (node.b_turn != kNoNode) view.g_b = node.g + rate_ * distance(node.root, node.b), view.b_turn = node.b_turn;
             // A root cheaper by another way makes these bends no better than that way's.
-            if (view.a_turn != kNoNode && (worse_than_best(view.a_turn, view.g_a) ||
-                                           bent_there_already(view.a_turn, view.g_a, node.root, node.a, mesh_.edge_index(node.polygon, node.edge))))
+            const Arrival arrival{node.root, mesh_.edge_index(node.polygon, node.edge)};
+            if (view.a_turn != kNoNode &&
+                (worse_than_best(view.a_turn, view.g_a) || bent_there_already(view.a_turn, view.g_a, arrival, node.a)))
                 view.g_a = kInfinity;
-            if (view.b_turn != kNoNode && (worse_than_best(view.b_turn, view.g_b) ||
-                                           bent_there_already(view.b_turn, view.g_b, node.root, node.b, mesh_.edge_index(node.polygon, node.edge))))
+            if (view.b_turn != kNoNode &&
+                (worse_than_best(view.b_turn, view.g_b) || bent_there_already(view.b_turn, view.g_b, arrival, node.b)))
                 view.g_b = kInfinity;
             return true;
         }
@@ -483,8 +502,8 @@ private:
         if (entry != kNoNode && view.scale == 0.0) {
             // Round a vertex the sweep from polygon to polygon would otherwise go on circling.
             const uint64_t view_key = (uint64_t(node.root_id) << 32) | p;
-            const double* seen = scratch_.whole_views.find(view_key);
-            if (seen && *seen <= node.g) return;
+            const CostTable::Entry* seen = scratch_.whole_views.find(view_key);
+            if (seen && seen->g <= node.g) return;
             scratch_.whole_views.lower(view_key, node.g);
         }
 
@@ -532,8 +551,8 @@ private:
                 bent_a = true;
             }
         }
-        if (bent_a) improve(view.a_turn, view.g_a, node.root, mesh_.edge_index(p, entry));
-        if (bent_b) improve(view.b_turn, view.g_b, node.root, mesh_.edge_index(p, entry));
+        if (bent_a) improve(view.a_turn, view.g_a, Arrival{node.root, mesh_.edge_index(p, entry)});
+        if (bent_b) improve(view.b_turn, view.g_b, Arrival{node.root, mesh_.edge_index(p, entry)});
     }
 
     // One edge of an expanded polygon, the part [lo, hi] of its opening in view from a root.
