@@ -144,6 +144,9 @@ struct ShortestScratch {
     // The cheapest cost at which a root on a polygon's edge saw all of the polygon, per (root,
     // polygon): round a vertex the sweep from polygon to polygon would otherwise go on circling.
     CostTable whole_views;
+    // Arrivals at a turning point as cheap as its best but across another edge than the best's, per
+    // (turning id, edge): a corner shared by several polygons is bent at from each.
+    CostTable tied_arrivals;
     std::vector<uint32_t> pending;
     uint32_t epoch = 0;
 
@@ -152,6 +155,7 @@ struct ShortestScratch {
         open.clear();
         pending.clear();
         whole_views.clear();
+        tied_arrivals.clear();
         best_narrowed.clear();
         if (best.size() < turning_ids) {
             best.resize(turning_ids), best_epoch.resize(turning_ids, 0);
@@ -297,21 +301,40 @@ private:
         return scratch_.best_epoch[id] == epoch_ && worse(g, scratch_.best[id]);
     }
     bool landed_no_cheaper(uint32_t id, double g) const {
-        return scratch_.best_epoch[id] == epoch_ && !(g < scratch_.best[id] * (1.0 - kRelativeSlack) - kRelativeSlack);
+        return scratch_.best_epoch[id] == epoch_ && !cheaper(g, scratch_.best[id]);
     }
     // Records g for the turning id unless it was reached more cheaply; false then.
     // `arrival`: how the walk that bends there came (nothing for the start and links' landings).
     bool improve(uint32_t id, double g, const Arrival& arrival = {}) {
         if (worse_than_best(id, g)) return false;
-        if (id >= ids_.narrowed_base) {
-            scratch_.best_narrowed.lower(id, g, arrival);
+        double best;
+        const Arrival* first;
+        if (best_of(id, best, first) && !cheaper(g, best)) {
+            // As cheap: kept when it came across another edge than the first.
+            if (arrival.entry != kNoNode && arrival.entry != first->entry) scratch_.tied_arrivals.lower(tie_key(id, arrival.entry), g, arrival);
             return true;
         }
-        if (scratch_.best_epoch[id] != epoch_ || g < scratch_.best[id]) {
+        if (id >= ids_.narrowed_base) {
+            scratch_.best_narrowed.lower(id, g, arrival);
+        } else {
             scratch_.best[id] = g;
             scratch_.best_arrival[id] = arrival;
+            scratch_.best_epoch[id] = epoch_;
         }
-        scratch_.best_epoch[id] = epoch_;
+        return true;
+    }
+    static bool cheaper(double g, double best) { return g < best * (1.0 - kRelativeSlack) - kRelativeSlack; }
+    static uint64_t tie_key(uint32_t id, uint32_t entry) { return (uint64_t(id) << 32) | entry; }
+    // The best cost kept for a turning id and the first arrival at it; false when there is none.
+    bool best_of(uint32_t id, double& best, const Arrival*& first) const {
+        if (id >= ids_.narrowed_base) {
+            const CostTable::Entry* entry = scratch_.best_narrowed.find(id);
+            if (!entry) return false;
+            best = entry->g, first = &entry->arrival;
+            return true;
+        }
+        if (scratch_.best_epoch[id] != epoch_) return false;
+        best = scratch_.best[id], first = &scratch_.best_arrival[id];
         return true;
     }
     // Whether a walk bending at `at` (turning id `id`) at cost g after arriving as `now` does what one
@@ -321,17 +344,14 @@ private:
     // the nodes after it.
     bool bent_there_already(uint32_t id, double g, const Arrival& now, Flat at) const {
         double best;
-        const Arrival* first;
-        if (id >= ids_.narrowed_base) {
-            const CostTable::Entry* entry = scratch_.best_narrowed.find(id);
-            if (!entry) return false;
-            best = entry->g, first = &entry->arrival;
-        } else {
-            if (scratch_.best_epoch[id] != epoch_) return false;
-            best = scratch_.best[id], first = &scratch_.best_arrival[id];
+        const Arrival* same;
+        if (!best_of(id, best, same) || cheaper(g, best)) return false;
+        if (same->entry != now.entry) {
+            const CostTable::Entry* tied = scratch_.tied_arrivals.find(tie_key(id, now.entry));
+            if (!tied || cheaper(g, tied->g)) return false;
+            same = &tied->arrival;
         }
-        if (first->entry != now.entry || g < best * (1.0 - kRelativeSlack) - kRelativeSlack) return false;
-        const Flat u = at - first->from, v = at - now.from;
+        const Flat u = at - same->from, v = at - now.from;
         const double along = u.x * v.x + u.z * v.z, across = cross(u, v);
         return along > 0.0 && across * across <= kSameRay * (u.x * u.x + u.z * u.z) * (v.x * v.x + v.z * v.z);
     }

@@ -340,6 +340,36 @@ TEST_CASE("on random maps a wider body's path is the shortest walk through narro
                       });
 }
 
+TEST_CASE("in a hall of pillars on grid lines the exact search's nodes stay a few per polygon") {
+    // Pillar corners in rows and columns: a walk along a grid line reaches a corner as cheaply past
+    // each corner before it, the same way. Bending there once (not once per corner behind) keeps the
+    // nodes few; doubling at each corner in a row made hundreds per polygon.
+    std::vector<std::string> rows(15, std::string(31, '.'));
+    for (size_t r = 1; r + 1 < rows.size(); r += 2)
+        for (size_t c = 1; c + 1 < rows[r].size(); c += 2) rows[r][c] = '#';
+    const Map m(rows);
+    const auto graph = m.graph();
+    std::mt19937 random(2031);
+    const std::vector<Vec3> points = cell_points(rows, random);
+    const nl::test::ShortestPathReference reference(*graph, body());
+    double most = 0.0;
+    for (int k = 0; k < 300; ++k) {
+        const Vec3 start = points[random() % points.size()], goal = points[random() % points.size()];
+        nl::PathQuery query = body();
+        query.start = start, query.goal = goal;
+        nl::CorridorSearch exact;
+        nl::find_shortest_corridor(*graph, query, graph->navmesh().find_nearest(start, query.search_half_extents),
+                                   graph->navmesh().find_nearest(goal, query.search_half_extents), 1.0f, nullptr, exact);
+        REQUIRE(exact.reached_goal);
+        most = std::max(most, double(exact.search_nodes) / exact.nodes_visited);
+        const std::optional<double> cheapest = reference.length(start, goal);
+        REQUIRE(cheapest);
+        CHECK(double(exact.cost) == doctest::Approx(*cheapest).epsilon(1e-5));
+    }
+    MESSAGE("at most ", most, " search nodes per polygon entered");
+    CHECK(most < 16.0);
+}
+
 TEST_CASE("a one-way drop that is the only way: a path down it, none back") {
     // Two ledges apart; a drop from (2.5, 0.5) to (4.5, 0.5).
     Map m({"...#..."});
