@@ -178,7 +178,7 @@ NavPoint NavMesh::find_nearest_anywhere(const Vec3& point, const Vec3& half_exte
 
 NavPoint NavMesh::find_nearest_brute_force(const Vec3& point, const Vec3& half_extents) const {
     const Vec3 lo = point - half_extents, hi = point + half_extents;
-    NearestPoint nearest(*this, point);
+    NearestPoint nearest(*this, point, false);
     for (uint32_t p = 0; p < polygon_count(); ++p) {
         if (overlaps(polygon_bounds_[p], lo, hi)) nearest.consider(p);
     }

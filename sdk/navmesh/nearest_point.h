@@ -13,7 +13,9 @@ namespace nl {
 
 class NearestPoint {
 public:
-    NearestPoint(const NavMesh& mesh, const Vec3& point) : mesh_(mesh), point_(point) {}
+    // `skip_by_bounds` false: every polygon offered is measured (the brute-force reference).
+    NearestPoint(const NavMesh& mesh, const Vec3& point, bool skip_by_bounds = true)
+        : mesh_(mesh), point_(point), skip_by_bounds_(skip_by_bounds) {}
 
     // Offers polygon p: skipped at the cost of a box test when its bounds are beyond the best so far.
     void consider(uint32_t p);
@@ -23,6 +25,7 @@ public:
 private:
     const NavMesh& mesh_;
     const Vec3 point_;
+    const bool skip_by_bounds_;
     NavPoint best_;
     float best_rank_ = 0.0f;
 };

@@ -277,8 +277,9 @@ void find_corridor(const PathGraph& graph, const PathQuery& query, const NavPoin
         }
     }
 
-    // A partial path ends on the polygon whose entry point came nearest to the goal, as Detour's
-    // does: scanning every reached polygon for its nearest point costs partial searches a tenth more.
+    // Cut short by max_nodes (plan_path sends a goal out of reach to the nearest point the body
+    // reaches instead), the path ends on the polygon whose entry point came nearest to the goal, as
+    // Detour's does: what the search saw of the rest is all it has.
     const uint32_t last = result.reached_goal ? goal.polygon : nearest_entry_polygon;
     result.cost = nodes[last].g;
     result.last_position = nodes[last].position;

@@ -169,7 +169,7 @@ void plan_path_in_surface_space(const PathGraph& graph, const PathQuery& query, 
     // would cost a pass over the whole navmesh (uncancellable, past max_nodes) for a goal two steps
     // away.
     NavPoint target = goal;
-    bool toward = false;  // heading for the nearest point the body reaches, the goal being out of reach
+    bool heading_to_nearest = false;  // heading for the nearest point the body reaches, the goal being out of reach
     if (start.polygon != goal.polygon) {
         const ReachabilityMap* map = graph.reachability_if_built(query.agent, query.area_costs);
         if (map && !map->reaches(start.polygon, goal.polygon)) {
@@ -178,20 +178,20 @@ void plan_path_in_surface_space(const PathGraph& graph, const PathQuery& query, 
                 return;
             }
             target = nearest_reachable(mesh, *map, start, goal);
-            toward = true;
+            heading_to_nearest = true;
         }
     }
 
     thread_local CorridorSearch corridor;
     const float walk_cost = uniform_walk_cost(graph, query);
     search_corridor(graph, query, start, target, walk_cost, cancel, corridor);
-    if (!toward && searched_everything(corridor)) {
+    if (!heading_to_nearest && searched_everything(corridor)) {
         // Out of reach: the map (built once per graph and body) says so at once from now on, and
         // where the body can go instead.
         const auto map = graph.reachability(query.agent, query.area_costs);
         if (query.accept_partial) {
             target = nearest_reachable(mesh, *map, start, goal);
-            toward = true;
+            heading_to_nearest = true;
             const uint32_t first_nodes = corridor.nodes_visited;
             search_corridor(graph, query, start, target, walk_cost, cancel, corridor);
             corridor.nodes_visited += first_nodes;
@@ -210,13 +210,13 @@ void plan_path_in_surface_space(const PathGraph& graph, const PathQuery& query, 
     Vec3 end = target.point;
     result.cost = corridor.cost;
     if (!corridor.reached_goal) {
-        // max_nodes ran out: toward the polygon the search got nearest to the goal, as Detour's.
+        // max_nodes ran out: heading_to_nearest the polygon the search got nearest to the goal, as Detour's.
         const uint32_t last = corridor.steps.back().polygon;
         end = mesh.closest_point_on_polygon(last, goal.point);
         result.cost += (end - corridor.last_position).norm() * query.area_cost(mesh.area(last));
     }
     PathAssembler(graph, query, corridor, result).assemble(start.point, end);
-    result.outcome = corridor.reached_goal && !toward ? PathOutcome::Complete : PathOutcome::Partial;
+    result.outcome = corridor.reached_goal && !heading_to_nearest ? PathOutcome::Complete : PathOutcome::Partial;
 }
 
 }  // namespace nl

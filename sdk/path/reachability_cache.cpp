@@ -78,10 +78,8 @@ uint64_t ReachabilityCache::next_id() {
 }
 
 const ReachabilityMap* ReachabilityCache::ready(const AgentCapabilities& agent, const std::vector<float>& area_costs) const {
-    // Most graphs never build a map (every request finds its goal): no lock for them.
-    if (!remembered_.load(std::memory_order_acquire)) return nullptr;
-    const std::array<uint64_t, 4> excluded = ReachabilityClass::excluded_areas_of(area_costs);
-    // This thread's last answer: a map never changes for its graph, and the thread holds it.
+    // This thread's last answer: a map never changes for its graph, and the thread holds it (until
+    // it asks about another graph).
     struct LastAnswer {
         uint64_t cache = 0;
         AgentCapabilities agent;
@@ -89,6 +87,10 @@ const ReachabilityMap* ReachabilityCache::ready(const AgentCapabilities& agent, 
         std::shared_ptr<const ReachabilityMap> map;
     };
     thread_local LastAnswer last;
+    if (last.cache != id_ && last.map) last = LastAnswer{};
+    // Most graphs never build a map (every request finds its goal): no lock for them.
+    if (!remembered_.load(std::memory_order_acquire)) return nullptr;
+    const std::array<uint64_t, 4> excluded = ReachabilityClass::excluded_areas_of(area_costs);
     if (last.cache == id_ && last.excluded == excluded && same_body(last.agent, agent)) return last.map.get();
     std::lock_guard<std::mutex> lock(mutex_);
     for (const Body& body : bodies_) {

@@ -1,5 +1,6 @@
 // The reachability maps of one path graph, built when first asked for and kept as long as the graph
-// (an edit to the navmesh or its links makes a new graph, so a map never outlives what it describes).
+// (an edit to the navmesh or its links makes a new graph, so a map is never asked for past what it
+// describes; a thread that was handed one by ready() keeps it until it asks about another graph).
 //
 // Thread-safety: any number of threads may ask at once. A map is built once per class of body: the
 // first thread to ask builds it outside the lock while the others asking for the same class wait for
@@ -30,8 +31,8 @@ public:
                                                const std::vector<float>& area_costs);
     // The map for a body when one is built and ready; null otherwise (never builds, never waits).
     // The pointer stays valid until this thread's next call of ready() on any cache: the thread keeps
-    // the last map it was given (alive, even past this cache), so that asking again for the same body
-    // on the same graph takes no lock, as every path request on the graph does.
+    // the last map it was given (alive, even past this cache, until it asks about another), so that
+    // asking again for the same body on the same graph takes no lock, as every path request does.
     const ReachabilityMap* ready(const AgentCapabilities& agent, const std::vector<float>& area_costs) const;
     // Maps built and kept (for tests and statistics).
     size_t map_count() const;

@@ -7,19 +7,23 @@
 namespace nl {
 
 float heuristic_scale(const PathGraph& graph, const PathQuery& query) {
-    float scale = 1.0f;
+    float scale = 1.0f;  // areas the costs do not list cost 1
     for (float cost : query.area_costs) {
         if (cost > 0.0f) scale = std::min(scale, cost);
     }
-    if (graph.cheapest_link_per_metre() < scale) {
-        for (const StoredLink& stored : *graph.links_ptr()) {
-            const Link& l = stored.link;
-            if (l.enabled && l.cost_modifier < scale &&
-                (can_take(l, false, query.agent) || (l.bidirectional && can_take(l, true, query.agent))))
-                scale = l.cost_modifier;
-        }
+    return cheapest_link_rate(graph, query, scale);
+}
+
+float cheapest_link_rate(const PathGraph& graph, const PathQuery& query, float at_most) {
+    float rate = at_most;
+    if (graph.cheapest_link_per_metre() >= rate) return rate;
+    for (const StoredLink& stored : *graph.links_ptr()) {
+        const Link& l = stored.link;
+        if (l.enabled && l.cost_modifier < rate &&
+            (can_take(l, false, query.agent) || (l.bidirectional && can_take(l, true, query.agent))))
+            rate = l.cost_modifier;
     }
-    return scale;
+    return rate;
 }
 
 float uniform_walk_cost(const PathGraph& graph, const PathQuery& query) {

@@ -10,6 +10,8 @@ namespace nl {
 // The cheapest cost per metre this body can meet: the area costs it was given and the cost modifiers
 // of the links it can take.
 float heuristic_scale(const PathGraph& graph, const PathQuery& query);
+// The least of `at_most` and the cost modifiers of the links this body can take.
+float cheapest_link_rate(const PathGraph& graph, const PathQuery& query, float at_most);
 
 // The cost per metre of walking when every area of the navmesh the body may enter costs it the same
 // (the exact search's case); 0 when they differ.

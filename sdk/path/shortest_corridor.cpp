@@ -220,7 +220,7 @@ public:
     ShortestSearch(const PathGraph& graph, const PathQuery& query, const NavPoint& goal, float walk_cost,
                    ShortestScratch& scratch, CorridorSearch& result)
         : graph_(graph), mesh_(graph.navmesh()), query_(query), goal_(goal), goal_flat_(flat(goal.point)),
-          rate_(walk_cost), h_scale_(heuristic_scale(graph, query)),
+          rate_(walk_cost), h_scale_(cheapest_link_rate(graph, query, walk_cost)),
           margin_(std::max(0.0f, query.agent.radius - graph.navmesh().agent().radius)), ids_(mesh_, graph.links_ptr()->size()),
           links_beat_walking_(h_scale_ < rate_),
           keeps_out_(std::any_of(query.area_costs.begin(), query.area_costs.end(), [](float cost) { return cost <= 0.0f; })),
@@ -418,8 +418,10 @@ private:
             }
         }
         pending_.clear();
-        if (kept == kNoNode) return kNoNode;
-        if ((!scratch_.open.empty() && scratch_.open.front().f < kept_f) || stale(kept)) {
+        // A sibling in the goal's polygon may have priced the goal below it since; its root may
+        // have been reached more cheaply (both for good: costs only fall).
+        if (kept == kNoNode || kept_f >= best_goal_ || stale(kept)) return kNoNode;
+        if (!scratch_.open.empty() && scratch_.open.front().f < kept_f) {
             push(kept_f, kept);
             return kNoNode;
         }
@@ -529,7 +531,7 @@ private:
 
         for (const LinkExit* exit = graph_.exits_begin(p); exit != graph_.exits_end(p); ++exit) take_link(index, view, *exit);
 
-        // Each corner's sides once.
+        // Two edges share each corner: its sides once.
         double b_side[kMaxPolygonVertices], a_side[kMaxPolygonVertices];
         if (view.scale != 0.0) {
             for (uint32_t k = 0; k < corners; ++k) b_side[k] = view.beyond_b(at[k]), a_side[k] = view.beyond_a(at[k]);

@@ -18,11 +18,12 @@ namespace nl {
 // Searches from `start` to `goal` (both located on graph's navmesh) into `out`, as find_corridor does
 // (the same steps, so the funnel turns the corridor into the walk; `cost` is the walk's length seen
 // from above times `walk_cost` plus the links' costs). `nodes_visited` counts polygons reached, against
-// query.max_nodes. A goal out of reach leaves `reached_goal` false and no steps (a partial path
-// leads to the nearest point the body reaches: plan_path). Where the navmesh folds over itself seen from above (a neighbour on the same side
-// of the edge it shares), views through edges mean nothing: the search may miss a way there, or give
-// up (`gave_up`, past 256 nodes per polygon it entered); the corridor search plans such paths. Uses
-// per-thread scratch memory, as find_corridor.
+// query.max_nodes; `search_nodes` the interval nodes made. A goal out of reach leaves `reached_goal`
+// false and no steps (a partial path leads to the nearest point the body reaches: plan_path). Where
+// the navmesh folds over itself seen from above (a neighbour on the same side of the edge it shares),
+// views through edges mean nothing: the search may miss a way there, or give up (`gave_up`, past 256
+// nodes per polygon it entered); the corridor search plans such paths. Uses per-thread scratch
+// memory, as find_corridor.
 void find_shortest_corridor(const PathGraph& graph, const PathQuery& query, const NavPoint& start, const NavPoint& goal,
                             float walk_cost, const std::atomic<bool>* cancel, CorridorSearch& out);
 

@@ -1178,7 +1178,9 @@ typedef struct nl_path_request_def {
     uint32_t area_cost_count;      /**< At most 256. */
     float link_cost;               /**< Extra cost each time a link is taken, metres (default 0; >= 0).
                                         A link costs its length times its cost_modifier, plus this. */
-    uint32_t max_nodes;            /**< Most polygons the search may visit; 0 (default): no limit. */
+    uint32_t max_nodes;            /**< Most polygons a search may visit; 0 (default): no limit. A
+                                        goal found out of reach with no reachability map built yet
+                                        takes two searches (pathfinding.md). */
     uint8_t accept_partial;        /**< 1 (default): when the goal cannot be reached, the path leads
                                         as near to it as the body can go (NL_PATH_PARTIAL);
                                         0: the outcome is NL_PATH_NO_PATH. */
@@ -1227,7 +1229,7 @@ typedef struct nl_path_result {
     nl_status status;         /**< For NL_PATH_FAILED: why; NL_STATUS_SUCCESS otherwise. */
     uint32_t point_count;     /**< Points in the path (0 unless COMPLETE or PARTIAL). */
     uint32_t links_used;      /**< Link segments in the path. */
-    uint32_t nodes_visited;   /**< Polygons the search entered. */
+    uint32_t nodes_visited;   /**< Polygons the searches entered (both, when there were two). */
     uint8_t out_of_nodes;     /**< 1 if max_nodes stopped the search. */
     uint8_t reserved[3];
     float length;             /**< Metres walked: from point to point along the navmesh surface
