@@ -17,7 +17,7 @@ namespace {
 class PathAssembler {
 public:
     PathAssembler(const PathGraph& graph, const PathQuery& query, const CorridorSearch& corridor, PathResult& result)
-        : graph_(graph), mesh_(graph.navmesh()), corridor_(corridor), result_(result),
+        : graph_(graph), mesh_(graph.navmesh()), query_(query), corridor_(corridor), result_(result),
           margin_(std::max(0.0f, query.agent.radius - mesh_.agent().radius)) {}
 
     void assemble(const Vec3& start, const Vec3& end) {
@@ -38,7 +38,9 @@ public:
             takeoff.reversed = reversed;
             ++result_.links_used;
             walk_start = reversed ? link.start : link.end;
-            result_.length += (walk_start - takeoff.position).norm();  // a link: its chord
+            const float chord = (walk_start - takeoff.position).norm();
+            result_.length += chord;  // a link: its chord
+            result_.cost += chord * link.cost_modifier + query_.link_cost;
             first = i;
         }
         walk(first, steps.size() - 1, walk_start, end);
@@ -55,7 +57,11 @@ private:
         }
         pulled_.clear();
         pull_string(from, to, portals_, pulled_);
-        result_.length += walked_length(pulled_, portals_);
+        rates_.clear();
+        for (size_t i = first; i <= last; ++i) rates_.push_back(query_.area_cost(mesh_.area(corridor_.steps[i].polygon)));
+        const WalkedLine walked = walk_line(pulled_, portals_, rates_);
+        result_.length += walked.length;
+        result_.cost += static_cast<float>(walked.cost);
         for (const PulledPoint& pulled : pulled_) {
             const size_t step = first + std::min<size_t>(pulled.portal, last - first);
             const PathPoint point{pulled.position, pulled.position, corridor_.steps[step].polygon, kSegmentWalk, Handle{},
@@ -71,16 +77,19 @@ private:
 
     const PathGraph& graph_;
     const NavMesh& mesh_;
+    const PathQuery& query_;
     const CorridorSearch& corridor_;
     PathResult& result_;
     const float margin_;
     // Per thread and reused: a request allocates only its result.
     static thread_local std::vector<PortalSpan> portals_;
     static thread_local std::vector<PulledPoint> pulled_;
+    static thread_local std::vector<float> rates_;
 };
 
 thread_local std::vector<PortalSpan> PathAssembler::portals_;
 thread_local std::vector<PulledPoint> PathAssembler::pulled_;
+thread_local std::vector<float> PathAssembler::rates_;
 
 }  // namespace
 
@@ -169,7 +178,7 @@ void plan_path_in_surface_space(const PathGraph& graph, const PathQuery& query, 
     // would cost a pass over the whole navmesh (uncancellable, past max_nodes) for a goal two steps
     // away.
     NavPoint target = goal;
-    bool heading_to_nearest = false;  // heading for the nearest point the body reaches, the goal being out of reach
+    bool heading_to_nearest = false;  // the goal is out of reach: for the nearest point the body reaches
     if (start.polygon != goal.polygon) {
         const ReachabilityMap* map = graph.reachability_if_built(query.agent, query.area_costs);
         if (map && !map->reaches(start.polygon, goal.polygon)) {
@@ -208,15 +217,35 @@ void plan_path_in_surface_space(const PathGraph& graph, const PathQuery& query, 
         return;
     }
     Vec3 end = target.point;
-    result.cost = corridor.cost;
-    if (!corridor.reached_goal) {
-        // max_nodes ran out: heading_to_nearest the polygon the search got nearest to the goal, as Detour's.
-        const uint32_t last = corridor.steps.back().polygon;
-        end = mesh.closest_point_on_polygon(last, goal.point);
-        result.cost += (end - corridor.last_position).norm() * query.area_cost(mesh.area(last));
-    }
+    // max_nodes ran out: toward the polygon the search got nearest to the goal, as Detour's.
+    if (!corridor.reached_goal) end = mesh.closest_point_on_polygon(corridor.steps.back().polygon, goal.point);
     PathAssembler(graph, query, corridor, result).assemble(start.point, end);
     result.outcome = corridor.reached_goal && !heading_to_nearest ? PathOutcome::Complete : PathOutcome::Partial;
+
+    // Areas of different costs: the corridor search's path has no bound, so the shortest walk (the
+    // exact search at the cheapest rate) stands against it, and the cheaper goes. Either costs at
+    // most the dearest rate over the cheapest times the cheapest route's cost, as the shortest walk
+    // does: walked at the cheapest rate it costs no more than any route.
+    if (walk_cost > 0.0f || !corridor.reached_goal) return;
+    thread_local CorridorSearch shortest;
+    find_shortest_corridor(graph, query, start, target, cheapest_walk_cost(graph, query), cancel, shortest);
+    result.nodes_visited += shortest.nodes_visited;
+    if (shortest.cancelled) {
+        result.outcome = PathOutcome::Cancelled;
+        result.points.clear();
+        return;
+    }
+    if (!shortest.reached_goal) return;  // missed where the navmesh folds over itself: no bound there
+    thread_local PathResult walked;
+    walked.points.clear();
+    walked.length = walked.cost = 0.0f;
+    walked.links_used = 0;
+    PathAssembler(graph, query, shortest, walked).assemble(start.point, end);
+    if (walked.cost >= result.cost) return;
+    std::swap(result.points, walked.points);
+    result.length = walked.length;
+    result.cost = walked.cost;
+    result.links_used = walked.links_used;
 }
 
 }  // namespace nl

@@ -1,6 +1,7 @@
 #include "path/search_costs.h"
 
 #include <algorithm>
+#include <utility>
 
 #include "path/link_filter.h"
 
@@ -26,18 +27,35 @@ float cheapest_link_rate(const PathGraph& graph, const PathQuery& query, float a
     return rate;
 }
 
-float uniform_walk_cost(const PathGraph& graph, const PathQuery& query) {
-    float rate = 0.0f;
+namespace {
+
+// The least and the most cost per metre of the navmesh's areas the body may enter (areas it keeps
+// out of are obstacles, not rates); both 0 when it may enter none.
+std::pair<float, float> walk_cost_range(const PathGraph& graph, const PathQuery& query) {
+    if (query.area_costs.empty()) return {1.0f, 1.0f};
+    float least = 0.0f, most = 0.0f;
     const std::array<uint64_t, 4>& present = graph.areas_present();
-    if (query.area_costs.empty()) return 1.0f;
     for (uint32_t area = 0; area < 256; ++area) {
         if (((present[area >> 6] >> (area & 63)) & 1u) == 0) continue;
         const float cost = query.area_cost(static_cast<uint8_t>(area));
-        if (cost <= 0.0f) continue;  // kept out of: an obstacle, not a rate
-        if (rate != 0.0f && cost != rate) return 0.0f;
-        rate = cost;
+        if (cost <= 0.0f) continue;
+        least = least == 0.0f ? cost : std::min(least, cost);
+        most = std::max(most, cost);
     }
-    return rate == 0.0f ? 1.0f : rate;
+    return {least, most};
+}
+
+}  // namespace
+
+float uniform_walk_cost(const PathGraph& graph, const PathQuery& query) {
+    const auto [least, most] = walk_cost_range(graph, query);
+    if (least == 0.0f) return 1.0f;
+    return least == most ? least : 0.0f;
+}
+
+float cheapest_walk_cost(const PathGraph& graph, const PathQuery& query) {
+    const float least = walk_cost_range(graph, query).first;
+    return least == 0.0f ? 1.0f : least;
 }
 
 }  // namespace nl

@@ -16,5 +16,7 @@ float cheapest_link_rate(const PathGraph& graph, const PathQuery& query, float a
 // The cost per metre of walking when every area of the navmesh the body may enter costs it the same
 // (the exact search's case); 0 when they differ.
 float uniform_walk_cost(const PathGraph& graph, const PathQuery& query);
+// The least cost per metre of the areas of the navmesh the body may enter (1 when it may enter none).
+float cheapest_walk_cost(const PathGraph& graph, const PathQuery& query);
 
 }  // namespace nl

@@ -72,15 +72,22 @@ void pull_string(const Vec3& start, const Vec3& end, const std::vector<PortalSpa
     }
 }
 
-float walked_length(const std::vector<PulledPoint>& pulled, const std::vector<PortalSpan>& portals) {
-    float length = 0.0f;
+WalkedLine walk_line(const std::vector<PulledPoint>& pulled, const std::vector<PortalSpan>& portals,
+                     const std::vector<float>& rates) {
+    WalkedLine walked;
+    auto stretch = [&](const Vec3& from, const Vec3& to, size_t polygon) {
+        walked.length += (to - from).norm();
+        const double dx = double(to.x()) - from.x(), dz = double(to.z()) - from.z();
+        walked.cost += std::sqrt(dx * dx + dz * dz) * rates[polygon];
+    };
     for (size_t i = 1; i < pulled.size(); ++i) {
         const Vec3& from = pulled[i - 1].position;
         const Vec3& to = pulled[i].position;
         Vec3 here = from;
         // Pulled point j stands at portal j - 1: the line between two of them crosses the portals
-        // after the first's and before the second's.
-        for (uint32_t k = pulled[i - 1].portal; k + 1 < pulled[i].portal && k < portals.size(); ++k) {
+        // after the first's and before the second's, the stretch before portal k lying in polygon k.
+        size_t k = pulled[i - 1].portal;
+        for (; k + 1 < pulled[i].portal && k < portals.size(); ++k) {
             const PortalSpan& span = portals[k];
             const float ex = span.right.x() - span.left.x(), ez = span.right.z() - span.left.z();
             const float dx = to.x() - from.x(), dz = to.z() - from.z();
@@ -88,12 +95,12 @@ float walked_length(const std::vector<PulledPoint>& pulled, const std::vector<Po
             if (std::fabs(denominator) < 1e-12f) continue;  // along the portal: no crossing to add
             const float s = ((from.x() - span.left.x()) * dz - (from.z() - span.left.z()) * dx) / denominator;
             const Vec3 crossing = span.left + std::clamp(s, 0.0f, 1.0f) * (span.right - span.left);
-            length += (crossing - here).norm();
+            stretch(here, crossing, k);
             here = crossing;
         }
-        length += (to - here).norm();
+        stretch(here, to, std::min(k, portals.size()));
     }
-    return length;
+    return walked;
 }
 
 }  // namespace nl

@@ -1235,9 +1235,10 @@ typedef struct nl_path_result {
     float length;             /**< Metres walked: from point to point along the navmesh surface
                                    (through each portal crossed, at its height there), a link's
                                    straight chord. */
-    float cost;               /**< The search's cost of the path: its metres times the area costs,
-                                   plus the link costs (the exact search, used when the body's area
-                                   costs are all equal, measures metres seen from above). */
+    float cost;               /**< What the path costs: its metres seen from above times the area
+                                   cost of each polygon crossed, plus the links' costs. The least
+                                   possible when the areas the body enters cost the same; else at
+                                   most the dearest over the cheapest rate times it. */
     float start[3];           /**< The start snapped to the navmesh. */
     float goal[3];            /**< The goal snapped to the navmesh (where the path ends if COMPLETE). */
 } nl_path_result;
