@@ -44,10 +44,7 @@ size_t NavMesh::memory_bytes() const {
 }
 
 bool NavMesh::over_polygon(uint32_t p, float x, float z) const {
-    // Outside the bounds is outside, whatever the edge tests' float rounding says near the tip of a
-    // long, thin polygon (point location's pruning by bounds relies on it).
-    const Aabb& box = polygon_bounds_[p];
-    if (x < box.min.x() || x > box.max.x() || z < box.min.z() || z > box.max.z()) return false;
+    if (!over_bounds(p, x, z)) return false;  // point location's pruning by bounds relies on it
     const uint32_t n = corner_count(p);
     for (uint32_t k = 0; k < n; ++k) {
         const Vec3& a = vertex(corner(p, k));

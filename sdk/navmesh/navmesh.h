@@ -118,6 +118,12 @@ public:
     // `point`, at the detail height; elsewhere the nearest point of the polygon's outline.
     Vec3 closest_point_on_polygon(uint32_t p, const Vec3& point) const;
     bool over_polygon(uint32_t p, float x, float z) const;
+    // Whether (x, z) lies within polygon p's bounds seen from above: outside them it is never over
+    // the polygon, whatever the edge tests' float rounding says near the tip of a long, thin one.
+    bool over_bounds(uint32_t p, float x, float z) const {
+        const Aabb& box = polygon_bounds_[p];
+        return x >= box.min.x() && x <= box.max.x() && z >= box.min.z() && z <= box.max.z();
+    }
     // Heap bytes held, for comparing memory with other navmesh formats.
     size_t memory_bytes() const;
     // Height of polygon p's surface (detail triangles, or its own fan) at (x, z) over it.

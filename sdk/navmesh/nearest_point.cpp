@@ -6,16 +6,15 @@
 namespace nl {
 
 void NearestPoint::consider(uint32_t p) {
-    const Aabb& box = mesh_.polygon_bounds(p);
-    // Outside its bounds a point is never over a polygon (NavMesh::over_polygon), and ranks by distance.
-    const bool over_box =
-        point_.x() >= box.min.x() && point_.x() <= box.max.x() && point_.z() >= box.min.z() && point_.z() <= box.max.z();
+    // Outside its bounds a point is never over a polygon, and ranks by distance.
+    const bool over_box = mesh_.over_bounds(p, point_.x(), point_.z());
     // A polygon's rank is at least its box's distance (less a climb when the point is over the box,
     // where it may be over the polygon), less the float rounding of a closest point at these
     // coordinates: nothing beyond the best rank can beat it, nor anything at it but a lower index.
     if (best_.found && skip_by_bounds_) {
+        const Aabb& box = mesh_.polygon_bounds(p);
         const float box_distance = (point_.cwiseMax(box.min).cwiseMin(box.max) - point_).norm();
-        const float rounding = 1e-6f * (1.0f + point_.cwiseAbs().maxCoeff() + box.max.cwiseAbs().cwiseMax(box.min.cwiseAbs()).maxCoeff());
+        const float rounding = 1e-6f * (point_scale_ + box.max.cwiseAbs().cwiseMax(box.min.cwiseAbs()).maxCoeff());
         const float least_rank = std::max(0.0f, box_distance - rounding - (over_box ? mesh_.agent().max_climb : 0.0f));
         if (least_rank > best_rank_ || (least_rank == best_rank_ && p > best_.polygon)) return;
     }

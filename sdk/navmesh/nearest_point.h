@@ -15,7 +15,7 @@ class NearestPoint {
 public:
     // `skip_by_bounds` false: every polygon offered is measured (the brute-force reference).
     NearestPoint(const NavMesh& mesh, const Vec3& point, bool skip_by_bounds = true)
-        : mesh_(mesh), point_(point), skip_by_bounds_(skip_by_bounds) {}
+        : mesh_(mesh), point_(point), point_scale_(1.0f + point.cwiseAbs().maxCoeff()), skip_by_bounds_(skip_by_bounds) {}
 
     // Offers polygon p: skipped at the cost of a box test when its bounds are beyond the best so far.
     void consider(uint32_t p);
@@ -25,6 +25,7 @@ public:
 private:
     const NavMesh& mesh_;
     const Vec3 point_;
+    const float point_scale_;  // 1 + its largest coordinate's size: the scale of its rounding
     const bool skip_by_bounds_;
     NavPoint best_;
     float best_rank_ = 0.0f;

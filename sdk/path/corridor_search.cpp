@@ -282,7 +282,6 @@ void find_corridor(const PathGraph& graph, const PathQuery& query, const NavPoin
     // Detour's does: what the search saw of the rest is all it has.
     const uint32_t last = result.reached_goal ? goal.polygon : nearest_entry_polygon;
     result.cost = nodes[last].g;
-    result.last_position = nodes[last].position;
     // Costs never rise along a parent chain and a node only changes parent for a strictly lower cost,
     // so the chain leads back to the start; the bound only guards that.
     for (uint32_t p = last, guard = 0; p != kNone; p = nodes[p].parent) {

@@ -35,8 +35,7 @@ struct CorridorSearch {
     bool gave_up = false;  // the exact search stopped: its views could not be trusted (shortest_corridor.h)
     uint32_t nodes_visited = 0;
     uint32_t search_nodes = 0;         // the exact search's interval nodes (several per polygon); 0 for A*
-    float cost = 0.0f;                 // to the goal point, or to `last_position` when not reached
-    Vec3 last_position = Vec3::Zero(); // where the search entered the last polygon
+    float cost = 0.0f;                 // the search's own: to the goal point, or to where it entered its last polygon
 };
 
 // How often a search looks at its cancel flag: a power of two, in expansions.

@@ -278,7 +278,6 @@ public:
 
     void write_corridor() {
         result_.cost = static_cast<float>(best_goal_);
-        result_.last_position = goal_.point;
         const std::vector<IntervalNode>& nodes = scratch_.nodes;
         for (uint32_t i = goal_parent_, guard = 0; i != kNoNode; i = nodes[i].parent) {
             if (++guard > nodes.size()) fail(ErrorCode::Internal, "exact path search: corridor does not lead back to the start");
@@ -293,38 +292,9 @@ private:
     static constexpr double kRelativeSlack = 1e-9;
 
     static bool worse(double g, double best) { return g > best * (1.0 + kRelativeSlack) + kRelativeSlack; }
-    bool worse_than_best(uint32_t id, double g) const {
-        if (id >= ids_.narrowed_base) {
-            const CostTable::Entry* best = scratch_.best_narrowed.find(id);
-            return best && worse(g, best->g);
-        }
-        return scratch_.best_epoch[id] == epoch_ && worse(g, scratch_.best[id]);
-    }
-    bool landed_no_cheaper(uint32_t id, double g) const {
-        return scratch_.best_epoch[id] == epoch_ && !cheaper(g, scratch_.best[id]);
-    }
-    // Records g for the turning id unless it was reached more cheaply; false then.
-    // `arrival`: how the walk that bends there came (nothing for the start and links' landings).
-    bool improve(uint32_t id, double g, const Arrival& arrival = {}) {
-        if (worse_than_best(id, g)) return false;
-        double best;
-        const Arrival* first;
-        if (best_of(id, best, first) && !cheaper(g, best)) {
-            // As cheap: kept when it came across another edge than the first.
-            if (arrival.entry != kNoNode && arrival.entry != first->entry) scratch_.tied_arrivals.lower(tie_key(id, arrival.entry), g, arrival);
-            return true;
-        }
-        if (id >= ids_.narrowed_base) {
-            scratch_.best_narrowed.lower(id, g, arrival);
-        } else {
-            scratch_.best[id] = g;
-            scratch_.best_arrival[id] = arrival;
-            scratch_.best_epoch[id] = epoch_;
-        }
-        return true;
-    }
     static bool cheaper(double g, double best) { return g < best * (1.0 - kRelativeSlack) - kRelativeSlack; }
     static uint64_t tie_key(uint32_t id, uint32_t entry) { return (uint64_t(id) << 32) | entry; }
+
     // The best cost kept for a turning id and the first arrival at it; false when there is none.
     bool best_of(uint32_t id, double& best, const Arrival*& first) const {
         if (id >= ids_.narrowed_base) {
@@ -337,23 +307,58 @@ private:
         best = scratch_.best[id], first = &scratch_.best_arrival[id];
         return true;
     }
-    // Whether a walk bending at `at` (turning id `id`) at cost g after arriving as `now` does what one
-    // already did: as cheap, across the same edge, coming the same way (its root on the same ray into
-    // the turning point, within rounding: pillars on one grid line put them so). Its bent views would
-    // be the same, on the same side of that ray; left to go on, each such corner in a row would double
-    // the nodes after it.
-    bool bent_there_already(uint32_t id, double g, const Arrival& now, Flat at) const {
+    bool worse_than_best(uint32_t id, double g) const {
+        double best;
+        const Arrival* first;
+        return best_of(id, best, first) && worse(g, best);
+    }
+    bool landed_no_cheaper(uint32_t id, double g) const {
+        double best;
+        const Arrival* first;
+        return best_of(id, best, first) && !cheaper(g, best);
+    }
+    // Records g for the turning id unless it was reached more cheaply; false then.
+    // `arrival`: how the walk that bends there came (nothing for the start and links' landings).
+    bool improve(uint32_t id, double g, const Arrival& arrival = {}) {
+        double best;
+        const Arrival* first;
+        if (best_of(id, best, first)) {
+            if (worse(g, best)) return false;
+            if (!cheaper(g, best)) {
+                // As cheap: kept when it came across another edge than the first.
+                if (arrival.entry != kNoNode && arrival.entry != first->entry)
+                    scratch_.tied_arrivals.lower(tie_key(id, arrival.entry), g, arrival);
+                return true;
+            }
+        }
+        if (id >= ids_.narrowed_base) {
+            scratch_.best_narrowed.lower(id, g, arrival);
+        } else {
+            scratch_.best[id] = g;
+            scratch_.best_arrival[id] = arrival;
+            scratch_.best_epoch[id] = epoch_;
+        }
+        return true;
+    }
+    // Whether a walk arriving as `now` may bend at turning point `at` (turning id `id`) at cost g: not
+    // when the point was reached more cheaply another way, nor when a walk already bent there as
+    // cheaply, across the same edge, coming the same way (its root on the same ray into the point,
+    // within rounding: pillars on one grid line put them so). That one's bent views are the same, on
+    // the same side of the ray; left to go on, each such corner in a row would double the nodes after it.
+    bool may_bend(uint32_t id, double g, const Arrival& now, Flat at) const {
         double best;
         const Arrival* same;
-        if (!best_of(id, best, same) || cheaper(g, best)) return false;
+        if (!best_of(id, best, same)) return true;
+        if (worse(g, best)) return false;
+        if (cheaper(g, best)) return true;
         if (same->entry != now.entry) {
             const CostTable::Entry* tied = scratch_.tied_arrivals.find(tie_key(id, now.entry));
-            if (!tied || cheaper(g, tied->g)) return false;
+            if (!tied || cheaper(g, tied->g)) return true;
             same = &tied->arrival;
         }
         const Flat u = at - same->from, v = at - now.from;
         const double along = u.x * v.x + u.z * v.z, across = cross(u, v);
-        return along > 0.0 && across * across <= kSameRay * (u.x * u.x + u.z * u.z) * (v.x * v.x + v.z * v.z);
+        return !(along > 0.0 && across * across <= kSameRay * (u.x * u.x + u.z * u.z) * (v.x * v.x + v.z * v.z));
     }
     static constexpr double kSameRay = 1e-18;  // squared sine of the angle between rays taken as one
 
@@ -487,14 +492,9 @@ private:
             view.scale = side > 0.0 ? 1.0 : -1.0;
             if (node.a_turn != kNoNode) view.g_a = node.g + rate_ * distance(node.root, node.a), view.a_turn = node.a_turn;
             if (node.b_turn != kNoNode) view.g_b = node.g + rate_ * distance(node.root, node.b), view.b_turn = node.b_turn;
-            // A root cheaper by another way makes these bends no better than that way's.
             const Arrival arrival{node.root, mesh_.edge_index(node.polygon, node.edge)};
-            if (view.a_turn != kNoNode &&
-                (worse_than_best(view.a_turn, view.g_a) || bent_there_already(view.a_turn, view.g_a, arrival, node.a)))
-                view.g_a = kInfinity;
-            if (view.b_turn != kNoNode &&
-                (worse_than_best(view.b_turn, view.g_b) || bent_there_already(view.b_turn, view.g_b, arrival, node.b)))
-                view.g_b = kInfinity;
+            if (view.a_turn != kNoNode && !may_bend(view.a_turn, view.g_a, arrival, node.a)) view.g_a = kInfinity;
+            if (view.b_turn != kNoNode && !may_bend(view.b_turn, view.g_b, arrival, node.b)) view.g_b = kInfinity;
             return true;
         }
         // The root on the entry edge's line: a corner of this polygon the walk bends at, from which
@@ -573,8 +573,10 @@ private:
                 bent_a = true;
             }
         }
-        if (bent_a) improve(view.a_turn, view.g_a, Arrival{node.root, mesh_.edge_index(p, entry)});
-        if (bent_b) improve(view.b_turn, view.g_b, Arrival{node.root, mesh_.edge_index(p, entry)});
+        if (!bent_a && !bent_b) return;
+        const Arrival arrival{node.root, mesh_.edge_index(p, entry)};
+        if (bent_a) improve(view.a_turn, view.g_a, arrival);
+        if (bent_b) improve(view.b_turn, view.g_b, arrival);
     }
 
     // One edge of an expanded polygon, the part [lo, hi] of its opening in view from a root.
@@ -656,7 +658,6 @@ void find_shortest_corridor(const PathGraph& graph, const PathQuery& query, cons
     result.reached_goal = result.out_of_nodes = result.cancelled = result.gave_up = false;
     result.nodes_visited = 0;
     result.cost = 0.0f;
-    result.last_position = start.point;
     ShortestSearch search(graph, query, goal, walk_cost, shortest_scratch(), result);
     search.add_start(start);
     search.run(cancel);

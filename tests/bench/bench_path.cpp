@@ -176,8 +176,8 @@ Exactness exactness(const Level& level, Request request, std::vector<nl_path_poi
                                                                 nl::Vec3(result.goal[0], result.goal[1], result.goal[2]));
         if (!cheapest) continue;  // the reference finds no route (the search went where it sees none)
         ++out.pairs;
-        // The points' own length seen from above when no link is taken: the funnel's walk, not the
-        // search's estimate of it.
+        // Without links, the length of the points themselves seen from above: measured here, apart
+        // from the planner's own cost.
         double cost = result.cost;
         if (result.links_used == 0) {
             cost = 0.0;
