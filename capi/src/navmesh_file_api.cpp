@@ -101,7 +101,7 @@ NL_API nl_status nl_navmesh_load_file(nl_world* world, const char* path, const n
         nl::World& w = deref(world);
         require(path, "path");
         require(out_id, "out_id");
-        const std::string bytes = nl::read_file_bytes(path);
+        const std::string bytes = nl::read_navmesh_file_bytes(path);
         try {
             *out_id = load(w, read_file(bytes.data(), bytes.size()), def);
         } catch (const nl::Error& e) {

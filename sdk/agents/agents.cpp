@@ -102,7 +102,8 @@ bool Agents::locate_across(const NavMeshRegistry& navmeshes, Handle own, const V
     std::vector<std::pair<Handle, Handle>> joins;
     for (Handle h : navmeshes.handles()) {
         try {
-            for (const StoredLink& s : *navmeshes.links(h))
+            const auto links = navmeshes.links(h);  // held: an edit on another thread may publish the next
+            for (const StoredLink& s : *links)
                 if (s.link.crosses()) joins.emplace_back(h, s.link.landing_navmesh);
         } catch (const Error& e) {
             if (e.code() != ErrorCode::InvalidHandle) throw;  // removed meanwhile
@@ -306,7 +307,12 @@ void Agents::step(float dt, const NavMeshRegistry& navmeshes, const Level& level
         AgentBody& a = agents_[i];
         a.step_events.clear();
         a.step_events.reserve(8);  // a step emits a few per agent: the parallel move never allocates for them
-        if (a.state == AgentState::Failed) continue;
+        if (a.state == AgentState::Failed) {
+            // One that failed for another reason says so too: its NO_PATH no longer says why it stands.
+            if (a.reason != AgentReason::NavMeshRemoved && !navmeshes.contains(a.def.navmesh))
+                a.fail(AgentReason::NavMeshRemoved);
+            continue;
+        }
         current[i] = graph_of(a.def.navmesh);
         if (!current[i]) {
             a.motion.reset();

@@ -125,7 +125,7 @@ private:
     // where its landing will be, and its flight is checked against where they will be.
     MeshMotions motions_;
 
-    mutable SharedMutex mutex_;
+    mutable SharedMutex mutex_{"the agents"};
     AgentsSettings settings_;
     SlotMap<uint32_t> ids_;                    // agent handle -> index in agents_
     std::vector<AgentBody> agents_;  // dense, in a stable order between removals

@@ -59,7 +59,7 @@ bool plan_route(const StepNavMeshes& navmeshes, const RouteQuery& query, PathRes
     std::vector<CrossLink> cross;
     for (const StepNavMesh& n : navmeshes.all()) {
         if (!n.graph) continue;
-        for (const StoredLink& s : *n.graph->links_ptr()) {
+        for (const StoredLink& s : n.graph->links()) {
             const Link& l = s.link;
             if (!l.crosses() || !l.enabled || !can_take(l, false, query.agent)) continue;
             const StepNavMesh* landing = navmeshes.find(l.landing_navmesh);

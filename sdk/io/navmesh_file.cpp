@@ -9,6 +9,7 @@
 #include <cstring>
 
 #include "io/byte_stream.h"
+#include "io/file_bytes.h"
 #include "io/json_input.h"
 #include "io/link_json.h"
 #include "level/mesh_validation.h"
@@ -393,6 +394,15 @@ std::vector<uint8_t> write_navmesh_file(const NavMesh& navmesh, const std::vecto
     out.patch_u64(16, out.size());
     out.patch_u32(24, navmesh_file_checksum(out.bytes().data(), out.size()));
     return std::move(out.bytes());
+}
+
+std::string read_navmesh_file_bytes(const std::string& path) {
+    return read_file_bytes_up_to_declared(path, kNavMeshFileHeaderBytes, [](std::string_view header) -> uint64_t {
+        if (header.size() < kNavMeshFileHeaderBytes || std::memcmp(header.data(), kMagic, sizeof(kMagic)) != 0) return 0;
+        ByteReader in(reinterpret_cast<const uint8_t*>(header.data()), header.size(), "navmesh file");
+        in.skip(16, "the magic bytes, the version and the section count");
+        return in.u64("the file size");
+    }, "navmesh file");
 }
 
 NavMeshFile read_navmesh_file(const uint8_t* data, size_t size) {

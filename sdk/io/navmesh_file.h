@@ -51,6 +51,10 @@ std::vector<uint8_t> write_navmesh_file(const NavMesh& navmesh, const std::vecto
 // (deflate's limit: 1032 times `size`).
 NavMeshFile read_navmesh_file(const uint8_t* data, size_t size);
 
+// The file at `path`, read no further than its header says it goes (file_bytes.h): a device is
+// refused (Io), a stream that goes on past it too (Parse); the bytes are for read_navmesh_file.
+std::string read_navmesh_file_bytes(const std::string& path);
+
 // What the file was made for, as a JSON object: {"builder", "builder_settings", "link_settings",
 // "level_hash" (16 hex digits), "writer"}; settings are objects (null when not recorded).
 std::string made_for_json(const NavMeshFile& file);

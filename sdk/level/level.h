@@ -224,7 +224,7 @@ private:
     std::vector<Handle> static_geometry_owner_;  // by geomID in static_scene_
     std::vector<InstanceOwner> instance_owner_;  // by geomID in top_
 
-    mutable SharedMutex mutex_;
+    mutable SharedMutex mutex_{"the level"};
     mutable bool static_dirty_ = false;
     mutable bool top_dirty_ = true;
 };

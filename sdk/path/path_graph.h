@@ -81,6 +81,7 @@ public:
 
     const NavMesh& navmesh() const { return *navmesh_; }
     const std::shared_ptr<const NavMesh>& navmesh_ptr() const { return navmesh_; }
+    const LinkSnapshot& links() const { return *links_; }
     const std::shared_ptr<const LinkSnapshot>& links_ptr() const { return links_; }
     const StoredLink& link(uint32_t index) const { return (*links_)[index]; }
     const std::shared_ptr<const SurfaceFrame>& frame() const { return frame_; }

@@ -122,7 +122,7 @@ ReachabilityClass ReachabilityClass::of(const PathGraph& graph, const AgentCapab
         if (any) c.closed_portals = std::move(closed);
     }
     c.excluded_areas = excluded_areas_of(area_costs);
-    const LinkSnapshot& links = *graph.links_ptr();
+    const LinkSnapshot& links = graph.links();
     c.takeable.assign((2 * links.size() + 63) / 64, 0);
     for (size_t i = 0; i < links.size(); ++i) {
         const Link& link = links[i].link;

@@ -18,7 +18,7 @@ float heuristic_scale(const PathGraph& graph, const PathQuery& query) {
 float cheapest_link_rate(const PathGraph& graph, const PathQuery& query, float at_most) {
     float rate = at_most;
     if (graph.cheapest_link_per_metre() >= rate) return rate;
-    for (const StoredLink& stored : *graph.links_ptr()) {
+    for (const StoredLink& stored : graph.links()) {
         const Link& l = stored.link;
         if (l.enabled && l.cost_modifier < rate &&
             (can_take(l, false, query.agent) || (l.bidirectional && can_take(l, true, query.agent))))

@@ -1,51 +1,58 @@
 // nl::SharedMutex: a reader-writer lock in which a waiting writer goes before readers that arrive
-// after it. The level's lock needs this: query batches from several threads overlap all the time, and
-// with a lock that lets new readers in while a writer waits, a steady stream of them holds off a mesh
-// edit forever. Readers must not lock recursively (a waiting writer would deadlock them).
+// after it, and which refuses to be taken again by a thread that holds it.
 //
-// glibc: std::shared_mutex is a pthread rwlock of glibc's default kind, which prefers readers; the
-// writer-preferring kind (PTHREAD_RWLOCK_PREFER_WRITER_NONRECURSIVE_NP) is a glibc extension, set here.
-// Elsewhere: std::shared_mutex, whose policy is the platform's. Windows' SRW locks and macOS's and musl's
-// rwlocks do not starve writers this way, as far as their documentation goes, but only glibc is tested
-// (docs/platforms.md); a platform whose lock starves writers would show it as a mesh edit (nl_mesh_*)
-// that waits as long as queries keep coming.
+// Writers first: the level's lock needs this. Query batches from several threads overlap all the time,
+// and with a lock that lets new readers in while a writer waits, a steady stream of them holds off a
+// mesh edit forever. On glibc, std::shared_mutex is a pthread rwlock of glibc's default kind, which
+// prefers readers; the writer-preferring kind (PTHREAD_RWLOCK_PREFER_WRITER_NONRECURSIVE_NP) is a glibc
+// extension, set here. Elsewhere: std::shared_mutex, whose policy is the platform's. Windows' SRW locks
+// and macOS's and musl's rwlocks do not starve writers this way, as far as their documentation goes,
+// but only glibc is tested (docs/platforms.md).
+//
+// Never taken twice by one thread: a host callback that NavLink calls while it holds a lock (a task
+// callback during nl_world_step, a progress callback during generation) may call back into NavLink on
+// the same thread. Taken again there, a rwlock either deadlocks (a read lock under a waiting writer, a
+// write lock under one's own read lock) or, as glibc does for a read lock under one's own write lock,
+// fails with EDEADLK, which a lock guard cannot report: the call would run unlocked and its unlock
+// would release the outer holder's lock. So each thread keeps the locks it holds, and taking one of
+// them again throws ErrorCode::Internal naming the lock (`what` at construction) before touching it;
+// so does any error the platform's lock returns. Nothing is locked when it throws.
 #pragma once
 
-#include <shared_mutex>
+#include <mutex>
+#include <shared_mutex>  // std::shared_lock and std::unique_lock take it
 
 #if defined(__GLIBC__)
 #include <pthread.h>
-
-#include <system_error>
 #endif
 
 namespace nl {
 
-#if defined(__GLIBC__)
 class SharedMutex {
 public:
-    SharedMutex() {
-        pthread_rwlockattr_t attributes;
-        pthread_rwlockattr_init(&attributes);
-        pthread_rwlockattr_setkind_np(&attributes, PTHREAD_RWLOCK_PREFER_WRITER_NONRECURSIVE_NP);
-        const int error = pthread_rwlock_init(&lock_, &attributes);
-        pthread_rwlockattr_destroy(&attributes);
-        if (error) throw std::system_error(error, std::generic_category(), "pthread_rwlock_init");
-    }
-    ~SharedMutex() { pthread_rwlock_destroy(&lock_); }
+    // `what` names what the lock guards, in an error message ("the agents"); a string literal.
+    explicit SharedMutex(const char* what);
+    ~SharedMutex();
     SharedMutex(const SharedMutex&) = delete;
     SharedMutex& operator=(const SharedMutex&) = delete;
 
-    void lock() { pthread_rwlock_wrlock(&lock_); }
-    void unlock() { pthread_rwlock_unlock(&lock_); }
-    void lock_shared() { pthread_rwlock_rdlock(&lock_); }
-    void unlock_shared() { pthread_rwlock_unlock(&lock_); }
+    void lock();
+    void unlock();
+    void lock_shared();
+    void unlock_shared();
+
+    // True when the calling thread holds this lock, shared or exclusive.
+    bool held_by_this_thread() const noexcept;
 
 private:
+    void refuse_if_held(const char* mode) const;
+
+    const char* what_;
+#if defined(__GLIBC__)
     pthread_rwlock_t lock_;
-};
 #else
-using SharedMutex = std::shared_mutex;  // untested: see above
+    std::shared_mutex lock_;  // untested: see above
 #endif
+};
 
 }  // namespace nl

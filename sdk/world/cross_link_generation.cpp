@@ -54,6 +54,7 @@ Link reversed(const Link& l) {
 
 LinkGenerationReport World::generate_cross_links(Handle first, Handle second, const LinkSettings& settings, float tolerance,
                                                  GenerationProgress progress) {
+    const NavMeshRegistry::GenerationOnThisThread not_from_inside_another;
     if (first == second) fail(ErrorCode::InvalidArgument, "the two navmeshes are one: its own links come from generate_links");
     if (!(tolerance >= 0.0f) || !std::isfinite(tolerance))
         fail_field(ErrorCode::InvalidArgument, "tolerance", " is ", tolerance, " (must be finite and >= 0)");

@@ -6,19 +6,22 @@
 namespace nl {
 namespace {
 
-thread_local bool holding_generation_turn = false;
+thread_local bool generating_on_this_thread = false;
 
 }  // namespace
 
-NavMeshRegistry::GenerationTurn::GenerationTurn(std::shared_ptr<std::mutex> turn) : turn_(std::move(turn)) {
-    turn_->lock();
-    holding_generation_turn = true;
+NavMeshRegistry::GenerationOnThisThread::GenerationOnThisThread() {
+    if (generating_on_this_thread)
+        fail(ErrorCode::InvalidArgument, "links cannot be generated or updated from inside another generation or update "
+                                         "(its progress callback or a plugin): it could wait for itself");
+    generating_on_this_thread = true;
 }
 
-NavMeshRegistry::GenerationTurn::~GenerationTurn() {
-    holding_generation_turn = false;
-    turn_->unlock();
-}
+NavMeshRegistry::GenerationOnThisThread::~GenerationOnThisThread() { generating_on_this_thread = false; }
+
+NavMeshRegistry::GenerationTurn::GenerationTurn(std::shared_ptr<std::mutex> turn) : turn_(std::move(turn)) { turn_->lock(); }
+
+NavMeshRegistry::GenerationTurn::~GenerationTurn() { turn_->unlock(); }
 
 NavMeshRegistry::Entry& NavMeshRegistry::entry(Handle navmesh) {
     Entry* e = navmeshes_.find(navmesh);
@@ -51,7 +54,7 @@ Handle NavMeshRegistry::add(std::shared_ptr<const NavMesh> navmesh, Handle surfa
     return navmeshes_.insert(std::move(e));
 }
 
-std::shared_ptr<const SurfaceFrame> NavMeshRegistry::frame(Handle navmesh) const {
+HeldPtr<const SurfaceFrame> NavMeshRegistry::frame(Handle navmesh) const {
     std::shared_lock lock(mutex_);
     return entry(navmesh).frame;
 }
@@ -98,7 +101,7 @@ bool NavMeshRegistry::contains(Handle navmesh) const {
     return navmeshes_.find(navmesh) != nullptr;
 }
 
-std::shared_ptr<const NavMesh> NavMeshRegistry::navmesh(Handle navmesh) const {
+HeldPtr<const NavMesh> NavMeshRegistry::navmesh(Handle navmesh) const {
     std::shared_lock lock(mutex_);
     return entry(navmesh).navmesh;
 }
@@ -169,7 +172,7 @@ const std::shared_ptr<const LinkSnapshot>& NavMeshRegistry::snapshot_of(const En
     return e.snapshot;
 }
 
-std::shared_ptr<const LinkSnapshot> NavMeshRegistry::links(Handle navmesh) const {
+HeldPtr<const LinkSnapshot> NavMeshRegistry::links(Handle navmesh) const {
     {
         std::shared_lock lock(mutex_);
         if (const auto& ready = entry(navmesh).snapshot) return ready;
@@ -240,9 +243,6 @@ MadeFor NavMeshRegistry::made_for(Handle navmesh) const {
 }
 
 NavMeshRegistry::GenerationTurn NavMeshRegistry::take_generation_turn(Handle navmesh) {
-    if (holding_generation_turn)
-        fail(ErrorCode::InvalidArgument, "links cannot be generated or updated from inside another generation or update "
-                                         "(its progress callback or a plugin): it could wait for itself");
     std::shared_ptr<std::mutex> turn;
     {
         std::shared_lock lock(mutex_);
@@ -283,7 +283,7 @@ bool NavMeshRegistry::store_update(Handle navmesh, const LinkGeneration* from, c
     return true;
 }
 
-std::shared_ptr<const PathGraph> NavMeshRegistry::path_graph(Handle navmesh) const {
+HeldPtr<const PathGraph> NavMeshRegistry::path_graph(Handle navmesh) const {
     std::shared_ptr<const NavMesh> mesh;
     std::shared_ptr<const LinkSnapshot> snapshot;
     std::shared_ptr<const SurfaceFrame> frame;

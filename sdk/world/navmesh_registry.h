@@ -23,6 +23,7 @@
 #include "path/path_graph.h"
 #include "util/function_ref.h"
 #include "util/handle.h"
+#include "util/held_ptr.h"
 #include "platform/shared_mutex.h"
 #include "world/plugin_settings.h"
 
@@ -48,10 +49,10 @@ public:
     // hold its navmesh, a snapshot or a graph keep them; a generation that finishes later keeps nothing.
     void remove(Handle navmesh);
     bool contains(Handle navmesh) const;
-    std::shared_ptr<const NavMesh> navmesh(Handle navmesh) const;
+    HeldPtr<const NavMesh> navmesh(Handle navmesh) const;
     std::vector<Handle> handles() const;
     // The frame of the mesh the navmesh rides; null for one that rides nothing.
-    std::shared_ptr<const SurfaceFrame> frame(Handle navmesh) const;
+    HeldPtr<const SurfaceFrame> frame(Handle navmesh) const;
     // Both at once (one lock: queries that read a navmesh where it stands now).
     struct Placed {
         std::shared_ptr<const NavMesh> navmesh;
@@ -74,7 +75,7 @@ public:
     bool contains_link(Handle link) const;
     // The link and the navmesh it belongs to.
     std::pair<Handle, Link> link(Handle link) const;
-    std::shared_ptr<const LinkSnapshot> links(Handle navmesh) const;
+    HeldPtr<const LinkSnapshot> links(Handle navmesh) const;
     // Removes the generated links; manual ones stay. The last generation is forgotten with them.
     uint32_t remove_generated_links(Handle navmesh);
     // Replaces every link (a links file, made with `made_with`); the last generation is forgotten.
@@ -96,6 +97,17 @@ public:
     // thread holds one turn at a time: asking for a second (from a progress callback or a plugin of
     // the generation it runs) throws InvalidArgument instead of waiting, because two threads each
     // waiting for the other's navmesh from inside their callbacks would never wake.
+    //
+    // GenerationOnThisThread marks the calling thread as running a generation (a navmesh's own links or
+    // cross links) for as long as it lives, and throws InvalidArgument if it already is: a generation
+    // called from another's progress callback or plugin is refused, whichever kinds they are.
+    class GenerationOnThisThread {
+    public:
+        GenerationOnThisThread();
+        ~GenerationOnThisThread();
+        GenerationOnThisThread(const GenerationOnThisThread&) = delete;
+        GenerationOnThisThread& operator=(const GenerationOnThisThread&) = delete;
+    };
     class GenerationTurn {
     public:
         explicit GenerationTurn(std::shared_ptr<std::mutex> turn);
@@ -104,6 +116,7 @@ public:
         GenerationTurn& operator=(const GenerationTurn&) = delete;
 
     private:
+        GenerationOnThisThread one_per_thread_;
         std::shared_ptr<std::mutex> turn_;
     };
     GenerationTurn take_generation_turn(Handle navmesh);
@@ -123,7 +136,7 @@ public:
                            const std::vector<Link>& links);
 
     // The graph searches read: the navmesh and its links as they are now, built once per snapshot.
-    std::shared_ptr<const PathGraph> path_graph(Handle navmesh) const;
+    HeldPtr<const PathGraph> path_graph(Handle navmesh) const;
 
 private:
     struct Entry {
@@ -152,7 +165,7 @@ private:
     void erase_links(Entry& e, Goes&& goes);
     Handle insert_link(Handle navmesh, Entry& e, const Link& link);
 
-    mutable SharedMutex mutex_;
+    mutable SharedMutex mutex_{"the navmeshes"};
     SlotMap<Entry> navmeshes_;
     SlotMap<LinkEntry> links_;
 };

@@ -32,7 +32,7 @@ public:
     std::vector<Handle> handles() const;
 
 private:
-    mutable SharedMutex mutex_;
+    mutable SharedMutex mutex_{"the plugins"};
     SlotMap<std::unique_ptr<Plugin>> plugins_;
     std::vector<Handle> order_;
 };

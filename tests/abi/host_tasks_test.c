@@ -606,6 +606,80 @@ static void test_reentrant_finish(void) {
     nl_world_destroy(world);
 }
 
+/* Host work that calls the agents' functions while nl_world_step waits for its parallel loop: the step
+   holds the agents' lock on this thread. Both calls are refused, and the lock still works afterwards (a
+   read lock taken again used to fail with EDEADLK unseen, run unlocked, and release the step's lock
+   when it let go: the next step waited forever). */
+typedef struct reentrant_step_host {
+    nl_world* world;
+    int finishes;
+    nl_status get_agents, step;
+    char get_agents_message[512], step_message[512];
+} reentrant_step_host;
+
+static void reentrant_step_finish(void* user, void* host_task) {
+    reentrant_step_host* h = (reentrant_step_host*)user;
+    nl_agent_info infos[4];
+    uint32_t count = 0;
+    (void)host_task;
+    if (h->finishes++) return; /* once is enough; the later steps run undisturbed */
+    infos[0] = nl_agent_info_init();
+    h->get_agents = nl_world_get_agents(h->world, infos, 4u, &count);
+    snprintf(h->get_agents_message, sizeof h->get_agents_message, "%s", nl_get_last_error_message());
+    h->step = nl_world_step(h->world, 1.0f / 30.0f);
+    snprintf(h->step_message, sizeof h->step_message, "%s", nl_get_last_error_message());
+}
+
+static void test_reentrant_step(void) {
+    static reentrant_step_host host;
+    const nl_status refused = NL_STATUS_FAILURE | NL_STATUS_INTERNAL_ERROR;
+    nl_world_def def = nl_default_world_def();
+    nl_navmesh_build_def build = nl_default_navmesh_build_def();
+    nl_agent_def agent = nl_default_agent_def();
+    nl_agent_info infos[4];
+    nl_navmesh_id navmesh;
+    nl_agent_id ids[2];
+    nl_mesh_id mesh;
+    nl_world* world;
+    uint32_t count = 0, i;
+    int k;
+    memset(&host, 0, sizeof host);
+    def.worker_count = 2;
+    def.path_worker_count = 0;
+    def.task_enqueue_fn = reentrant_enqueue;
+    def.task_finish_fn = reentrant_step_finish;
+    def.task_user = &host;
+    world = create_world(&def);
+    host.world = world;
+    REQUIRE_OK(add_box_mesh(world, k_boxes[0][0], k_boxes[0][1], 0u, &mesh)); /* the floor, top at y -4 */
+    REQUIRE_OK(nl_navmesh_build(world, &build, &navmesh));
+    agent.navmesh = navmesh;
+    for (i = 0; i < 2; ++i) {
+        const float to[3] = {i ? -10.0f : 10.0f, -4.0f, 0.0f};
+        agent.position[0] = i ? 10.0f : -10.0f;
+        agent.position[1] = -4.0f;
+        REQUIRE_OK(nl_agent_add(world, &agent, &ids[i]));
+        REQUIRE_OK(nl_agent_set_destination(world, ids[i], to));
+    }
+    /* Two paths to plan: the step hands them to the host as one parallel loop of two items. */
+    CHECK(nl_world_step(world, 1.0f / 30.0f) == NL_STATUS_SUCCESS, "the outer step failed: %s", nl_get_last_error_message());
+    CHECK(host.finishes == 1, "finish was called %d times (expected once: the step's paths)", host.finishes);
+    CHECK(host.get_agents == refused && strstr(host.get_agents_message, "the agents"),
+          "nl_world_get_agents from a task callback during a step returned 0x%08x \"%s\" (expected INTERNAL_ERROR naming "
+          "the agents' lock)", (unsigned)host.get_agents, host.get_agents_message);
+    CHECK(host.step == refused && strstr(host.step_message, "the agents"),
+          "nl_world_step from a task callback during a step returned 0x%08x \"%s\" (expected INTERNAL_ERROR naming the "
+          "agents' lock)", (unsigned)host.step, host.step_message);
+    /* The lock is whole: later steps and reads run (a broken lock hung the next step here). */
+    for (k = 0; k < 30; ++k) REQUIRE_OK(nl_world_step(world, 1.0f / 30.0f));
+    infos[0] = nl_agent_info_init();
+    REQUIRE_OK(nl_world_get_agents(world, infos, 4u, &count));
+    CHECK(count == 2u && infos[0].state == NL_AGENT_WALKING && infos[1].state == NL_AGENT_WALKING,
+          "after the refused calls: %u agents, states %u and %u (expected two walking)", (unsigned)count,
+          (unsigned)infos[0].state, (unsigned)infos[1].state);
+    nl_world_destroy(world);
+}
+
 /* ---------------------------------------------------------------------------------------------
  * A host that breaks the contract fails the call, naming what it did
  * ------------------------------------------------------------------------------------------- */
@@ -802,6 +876,7 @@ int main(void) {
     nl_world_destroy(tbb);
 
     test_reentrant_finish();
+    test_reentrant_step();
     test_broken_host();
     test_defs(&inline_host_state);
 

@@ -314,6 +314,36 @@ TEST_CASE("bad input: a clear error, or a failed agent with its event; never a c
     CHECK_THROWS_AS(agents.remove(agent), nl::Error);
 }
 
+TEST_CASE("an agent that failed for another reason fails again, with its event, when its navmesh is removed") {
+    // Two squares 2 m apart and no link: a walker sent across goes as near as it can and fails NO_PATH.
+    nl::World world{nl::WorldSettings{}};
+    nl::NavMeshInput in;
+    add_polygon(in, {{0, 0}, {0, 4}, {4, 4}, {4, 0}});
+    add_polygon(in, {{6, 0}, {6, 4}, {10, 4}, {10, 0}});
+    in.agent.radius = 0.3f;
+    in.agent.height = 2.0f;
+    const Handle navmesh = world.add_navmesh(in);
+    nl::AgentDef def;
+    def.navmesh = navmesh;
+    def.position = Vec3(1.0f, 0.0f, 2.0f);
+    const Handle agent = world.agents().add(world.navmeshes(), def);
+    world.agents().set_destination(world.navmeshes(), agent, Vec3(8.0f, 0.0f, 2.0f));
+    for (int i = 0; i < 300 && world.agents().info(agent).state != AgentState::Failed; ++i) world.step(1.0f / 30.0f);
+    REQUIRE(world.agents().info(agent).state == AgentState::Failed);
+    REQUIRE(world.agents().info(agent).reason == nl::AgentReason::NoPath);
+
+    world.navmeshes().remove(navmesh);
+    world.step(1.0f / 30.0f);
+    CHECK(world.agents().info(agent).state == AgentState::Failed);
+    CHECK(world.agents().info(agent).reason == nl::AgentReason::NavMeshRemoved);
+    const auto events = world.agents().events();
+    REQUIRE(events.size() == 1);
+    CHECK(events[0].kind == AgentEventKind::Failed);
+    CHECK(events[0].reason == nl::AgentReason::NavMeshRemoved);
+    world.step(1.0f / 30.0f);
+    CHECK(world.agents().events().empty());  // said once
+}
+
 TEST_CASE("on a Recast navmesh the body never pops: no step moves it farther than its speed and fall allow") {
     // Recast's detail surface stands up to a few decimetres above the level's floor, where link ends
     // lie: the feet ease between the two before a take-off and after a landing.

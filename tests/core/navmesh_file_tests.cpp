@@ -33,7 +33,8 @@ struct Baked {
         nl::test::add_level(*world, nl::levelgen::generate_default_level(7));
         navmesh = nl::test::build_recast_navmesh(*world);
         world->generate_links(navmesh, nl::LinkSettings{}, {}, nl::test::keep_going);
-        const nl::NavMesh& mesh = *world->navmeshes().navmesh(navmesh);
+        const auto held = world->navmeshes().navmesh(navmesh);
+        const nl::NavMesh& mesh = *held;
         nl::Link manual;
         manual.start = mesh.centre(0);
         manual.end = mesh.centre(mesh.polygon_count() - 1);
@@ -48,7 +49,8 @@ struct Baked {
     std::vector<uint8_t> save() const {
         std::vector<nl::Link> links;
         for (const nl::StoredLink& l : nl::test::links_of(*world, navmesh)) links.push_back(l.link);
-        return nl::write_navmesh_file(*world->navmeshes().navmesh(navmesh), links, world->navmeshes().made_for(navmesh), false);
+        const auto mesh = world->navmeshes().navmesh(navmesh);
+        return nl::write_navmesh_file(*mesh, links, world->navmeshes().made_for(navmesh), false);
     }
 };
 
@@ -69,8 +71,9 @@ TEST_CASE("a baked navmesh loads as the same polygons and links, bit for bit, an
     nl::test::add_level(*other, nl::levelgen::generate_default_level(7));
     const Handle loaded = other->load_navmesh(read);
 
-    const nl::NavMesh& a = *b.world->navmeshes().navmesh(b.navmesh);
-    const nl::NavMesh& c = *other->navmeshes().navmesh(loaded);
+    const auto held_a = b.world->navmeshes().navmesh(b.navmesh), held_c = other->navmeshes().navmesh(loaded);
+    const nl::NavMesh& a = *held_a;
+    const nl::NavMesh& c = *held_c;
     REQUIRE(c.polygon_count() == a.polygon_count());
     REQUIRE(c.vertex_count() == a.vertex_count());
     CHECK(c.portal_count() == a.portal_count());
@@ -164,7 +167,8 @@ TEST_CASE("a baked file says what it was made for: the body, the builder, the le
     // The link-kind plugins that ran are kept as recorded; a record that is not an object is refused.
     nl::MadeFor with_plugins = read.made_for;
     with_plugins.links.plugins = R"({"rope":{"plugin":"ropes","settings":{"length":3},"version":"1"}})";
-    const nl::NavMesh& mesh = *b.world->navmeshes().navmesh(b.navmesh);
+    const auto held = b.world->navmeshes().navmesh(b.navmesh);
+    const nl::NavMesh& mesh = *held;
     const std::vector<uint8_t> plugged = nl::write_navmesh_file(mesh, {}, with_plugins, false);
     CHECK(nl::read_navmesh_file(plugged.data(), plugged.size()).made_for.links.plugins == with_plugins.links.plugins);
     CHECK(nl::made_for_json(nl::read_navmesh_file(plugged.data(), plugged.size())).find(R"("link_plugins":{"rope")") !=
@@ -178,7 +182,7 @@ TEST_CASE("a baked file says what it was made for: the body, the builder, the le
     // found a name that is not UTF-8 made the description fail).
     nl::MadeFor odd = b.world->navmeshes().made_for(b.navmesh);
     odd.builder = "r\xb3" "cast";
-    const std::vector<uint8_t> file = nl::write_navmesh_file(*b.world->navmeshes().navmesh(b.navmesh), {}, odd, false);
+    const std::vector<uint8_t> file = nl::write_navmesh_file(mesh, {}, odd, false);
     const std::string json = nl::made_for_json(nl::read_navmesh_file(file.data(), file.size()));
     CHECK_MESSAGE(json.find("r\xef\xbf\xbd" "cast") != std::string::npos, json);
 }

@@ -66,13 +66,15 @@ struct LevelWithLinks {
         query.agent = agent;
         query.accept_partial = false;
         Path path;
-        nl::plan_path(*world->navmeshes().path_graph(navmesh), query, nullptr, path.result);
+        const auto graph = world->navmeshes().path_graph(navmesh);
+        nl::plan_path(*graph, query, nullptr, path.result);
         REQUIRE(path.result.outcome != nl::PathOutcome::Failed);
         return path;
     }
     // The stored link a path point takes.
     nl::Link link(nl::Handle id) const {
-        for (const nl::StoredLink& l : *world->navmeshes().links(navmesh))
+        const auto links = world->navmeshes().links(navmesh);
+        for (const nl::StoredLink& l : *links)
             if (l.id == id) return l.link;
         FAIL("no link {", id.index1, ", ", id.generation, "}");
         return {};
@@ -263,7 +265,8 @@ TEST_CASE("on every shared level, paths stay on the navmesh, end where asked, an
         for (int i = 0; i < kPairs; ++i) {
             INFO(path.stem().string(), " pair ", i);
             nl::PathResult sync;
-            nl::plan_path(*world->navmeshes().path_graph(navmesh), queries[i], nullptr, sync);
+            const auto graph = world->navmeshes().path_graph(navmesh);
+            nl::plan_path(*graph, queries[i], nullptr, sync);
             REQUIRE(sync.outcome != nl::PathOutcome::Failed);
             const std::vector<nl::PathPoint>& points = sync.points;
             const size_t count = points.size();

@@ -60,7 +60,8 @@ struct Path {
 // Plans on the navmesh and its links as they are now (the snapshot nl_path_find reads).
 Path find(const CellMap& map, const nl::PathQuery& query) {
     Path path;
-    nl::plan_path(*map.world->navmeshes().path_graph(map.navmesh), query, nullptr, path.result);
+    const auto graph = map.world->navmeshes().path_graph(map.navmesh);
+    nl::plan_path(*graph, query, nullptr, path.result);
     return path;
 }
 

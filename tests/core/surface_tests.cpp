@@ -428,12 +428,14 @@ TEST_CASE("links between a ledge and a platform are generated for where the plat
     settings.max_jump_gap = 2.0f;
     auto cross_count = [&](Handle from, Handle to) {
         size_t n = 0;
-        for (const nl::StoredLink& s : *f.world->navmeshes().links(from)) n += s.link.crosses() && s.link.landing_navmesh == to;
+        const auto links = f.world->navmeshes().links(from);
+        for (const nl::StoredLink& s : *links) n += s.link.crosses() && s.link.landing_navmesh == to;
         return n;
     };
     auto holding = [&](Handle from) {
         size_t n = 0;
-        for (const nl::StoredLink& s : *f.world->navmeshes().links(from)) n += s.link.crosses() && f.world->link_holds(from, s.link);
+        const auto links = f.world->navmeshes().links(from);
+        for (const nl::StoredLink& s : *links) n += s.link.crosses() && f.world->link_holds(from, s.link);
         return n;
     };
     const nl::LinkGenerationReport near = f.world->generate_cross_links(f.ledges, f.deck, settings, 0.25f, nl::test::keep_going);
@@ -443,7 +445,8 @@ TEST_CASE("links between a ledge and a platform are generated for where the plat
     CHECK(on_near > 0);
     CHECK(off_near > 0);
     CHECK(holding(f.ledges) == on_near);
-    for (const nl::StoredLink& s : *f.world->navmeshes().links(f.ledges)) {
+    const auto ledge_links = f.world->navmeshes().links(f.ledges);
+    for (const nl::StoredLink& s : *ledge_links) {
         // Every one from the near ledge's edge to the shuttle's near edge, across the 1 m gap.
         const nl::Link w = f.world->in_world(f.ledges, s.link);
         CHECK(w.start.x() == doctest::Approx(6.0f).epsilon(0.1));
@@ -549,7 +552,8 @@ TEST_CASE("removing the platform's navmesh removes the cross links onto it; an a
     REQUIRE(f.world->agents().info(agent).link == f.board);
     f.world->navmeshes().remove(f.deck);
     CHECK_FALSE(f.world->navmeshes().contains_link(f.board));
-    for (const nl::StoredLink& s : *f.world->navmeshes().links(f.ledges)) CHECK_FALSE(s.link.crosses());
+    const auto ledge_links = f.world->navmeshes().links(f.ledges);
+    for (const nl::StoredLink& s : *ledge_links) CHECK_FALSE(s.link.crosses());
     f.world->step(1.0f / 30.0f);
     f.world->step(1.0f / 30.0f);
     // No way across any more: it went as near as it could and failed, saying why.

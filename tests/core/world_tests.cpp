@@ -174,6 +174,38 @@ TEST_CASE("a generation asked for from inside another's progress callback is ref
     s.world->generate_links(other, {}, {}, [](float, const char*) { return true; });  // afterwards it runs
 }
 
+TEST_CASE("no generation of either kind runs from inside another's progress callback, whichever kinds they are") {
+    Scene s;
+    const Handle other = s.world->add_navmesh(platform_tops());  // the same body: cross links between the two
+    auto everything = [](float, const char*) { return true; };
+    nl::Aabb box;
+    box.min = Vec3(0.0f, -1.0f, 0.0f);
+    box.max = Vec3(10.0f, 3.0f, 4.0f);
+    auto cross = [&] { s.world->generate_cross_links(other, s.navmesh, nl::LinkSettings{}, 0.25f, everything); };
+    auto own = [&] { s.world->generate_links(other, {}, {}, everything); };
+    auto update = [&] { s.world->update_links_in_box(s.navmesh, box, everything); };
+    auto refused = [](const std::string& message) { return message.find("from inside another generation") != std::string::npos; };
+
+    std::string cross_inside_own;
+    s.generate([&](float, const char*) {
+        if (cross_inside_own.empty()) cross_inside_own = nl::test::message_of(cross);
+        return true;
+    });
+    CHECK_MESSAGE(refused(cross_inside_own), cross_inside_own);
+
+    std::vector<std::string> inside_cross;
+    s.world->generate_cross_links(s.navmesh, other, nl::LinkSettings{}, 0.25f, [&](float, const char*) {
+        if (inside_cross.empty()) inside_cross = {nl::test::message_of(own), nl::test::message_of(update), nl::test::message_of(cross)};
+        return true;
+    });
+    REQUIRE(inside_cross.size() == 3);
+    for (const std::string& message : inside_cross) CHECK_MESSAGE(refused(message), message);
+    // Afterwards each runs.
+    own();
+    update();
+    cross();
+}
+
 TEST_CASE("failures name the field in the core's terms; a caller puts its own name in front") {
     Scene s;
     const std::string off = nl::test::message_of([&] { s.world->add_link(s.navmesh, s.manual(3.5f, 60.0f)); });

@@ -66,8 +66,10 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     const nl_status status = nl_navmesh_add(world, &input.def, &navmesh);
     nl::fuzz::require_reasoned(status);
     if (NL_FAILED(status)) return 0;
-    check_point_location(*world->core->navmeshes().navmesh(nl::capi::to_handle(navmesh)));
-    check_paths(*world->core->navmeshes().path_graph(nl::capi::to_handle(navmesh)));
+    const auto held_navmesh = world->core->navmeshes().navmesh(nl::capi::to_handle(navmesh));
+    const auto held_graph = world->core->navmeshes().path_graph(nl::capi::to_handle(navmesh));
+    check_point_location(*held_navmesh);
+    check_paths(*held_graph);
     nl_navmesh_remove(world, navmesh);
     return 0;
 }

@@ -7,7 +7,9 @@
 // it arrives or fails. It fails when a call returns a status its documentation does not allow, when
 // an agent's state is impossible (a position not finite, a state or reason out of range, an event of
 // an agent that does not exist), when the link edits never reached an agent (no LINK_GONE replans),
-// or when a thread stops making progress for `--stall` seconds (the process aborts so the sanitizer
+// when no agent was ever sent to the island (a second navmesh joined to the level's by cross links:
+// set_destination locates such a point over the cross links of every navmesh while the link editor
+// frees their snapshots), or when a thread stops making progress for `--stall` seconds (the process aborts so the sanitizer
 // or a debugger shows every thread).
 //
 //   navlink-agents-soak [--agents N] [--steps N] [--seconds S] [--workers N] [--stall S]
@@ -59,6 +61,8 @@ float random_in(std::mt19937& rng, float lo, float hi) { return std::uniform_rea
 struct Soak {
     nl_world* world = nullptr;
     nl_navmesh_id navmesh{};
+    nl_navmesh_id island{};                // 4 x 4 m, beside the level, joined to it by two cross links
+    std::array<float, 3> shore{}, island_landing{};  // the cross links' ends, on the level and the island
     std::vector<std::array<float, 3>> centres;
     std::atomic<bool> stop{false};
 
@@ -214,6 +218,8 @@ void edit_links(Soak& s, Worker& me, std::atomic<uint64_t>& edits) {
                 def.requirements_as_given = 1;
                 def.requirements = link.requirements;
                 def.cost_modifier = link.cost_modifier;
+                def.landing_navmesh = link.landing_navmesh;  // the island's cross link stays one
+                def.tolerance = link.tolerance;
                 // INVALID_HANDLE: removed or regenerated since it was read.
                 expect(nl_link_update(s.world, link.id, &def), "nl_link_update", {NL_STATUS_INVALID_HANDLE});
             } else {
@@ -224,6 +230,71 @@ void edit_links(Soak& s, Worker& me, std::atomic<uint64_t>& edits) {
         ++edits;
         ++me.steps;
         std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    }
+}
+
+// The island: a square navmesh 4.5 m off the level's westernmost polygon centre (the shore), at its
+// height, and a manual cross link each way (cross links are one-way).
+bool add_island(Soak& s) {
+    s.shore = s.centres.front();
+    for (const auto& c : s.centres)
+        if (c[0] < s.shore[0]) s.shore = c;
+    const float x0 = s.shore[0] - 8.0f, x1 = s.shore[0] - 4.0f, y = s.shore[1], z0 = s.shore[2] - 2.0f, z1 = s.shore[2] + 2.0f;
+    const float vertices[12] = {x0, y, z0, x0, y, z1, x1, y, z1, x1, y, z0};  // counter-clockwise from above
+    const uint32_t indices[6] = {0, 1, 2, 0, 2, 3};
+    nl_navmesh_def def = nl_default_navmesh_def();
+    def.vertices = vertices;
+    def.vertex_count = 4;
+    def.indices = indices;
+    def.polygon_count = 2;
+    def.agent.radius = 0.4f;
+    if (!expect(nl_navmesh_add(s.world, &def, &s.island), "nl_navmesh_add (the island)")) return false;
+    s.island_landing = {s.shore[0] - 4.5f, y, s.shore[2]};
+    return true;
+}
+
+// The cross link from `from` at `a` to `to` at `b` (the editor may have removed the last one).
+void join(Soak& s, nl_navmesh_id from, const std::array<float, 3>& a, nl_navmesh_id to, const std::array<float, 3>& b) {
+    nl_link_def def = nl_default_link_def();
+    std::memcpy(def.start, a.data(), sizeof def.start);
+    std::memcpy(def.end, b.data(), sizeof def.end);
+    def.landing_navmesh = to;
+    def.requirements_as_given = 1;  // and asks for nothing: a ferry every body takes
+    nl_link_id id{};
+    expect(nl_link_add(s.world, from, &def, &id), "nl_link_add (a cross link)");
+}
+
+// Agents sent to the island and back: a destination off the agent's own navmesh, located over the
+// cross links of every navmesh, while the link editor replaces the level's links (and now and then
+// removes a cross link: joined again here).
+void send_across(Soak& s, Worker& me, std::atomic<uint64_t>& sent) {
+    std::mt19937 rng(25);
+    std::vector<nl_agent_info> infos;
+    while (!s.stop) {
+        me.doing = "nl_world_get_agents";
+        uint32_t count = 0;
+        expect(nl_world_get_agents(s.world, nullptr, 0, &count), "nl_world_get_agents (count)");
+        infos.assign(count + 8, nl_agent_info_init());
+        if (!count || !expect(nl_world_get_agents(s.world, infos.data(), count + 8, &count), "nl_world_get_agents",
+                              {NL_STATUS_BUFFER_TOO_SMALL}))
+            continue;
+        const nl_agent_id agent = infos[rng() % count].id;
+        me.doing = "nl_agent_set_destination (on the island)";
+        const std::array<float, 3> to = {s.island_landing[0] - random_in(rng, 0.5f, 3.0f), s.island_landing[1],
+                                         s.island_landing[2] + random_in(rng, -1.5f, 1.5f)};
+        // NOT_FOUND: the editor removed the cross link to the island (or the agent stands on the
+        // island, and the way back is gone); INVALID_HANDLE: the agent was removed meanwhile.
+        const nl_status status = nl_agent_set_destination(s.world, agent, to.data());
+        if (expect(status, "nl_agent_set_destination (on the island)", {NL_STATUS_NOT_FOUND, NL_STATUS_INVALID_HANDLE})) {
+            if (NL_SUCCEEDED(status)) ++sent;
+            if (status == (NL_STATUS_FAILURE | NL_STATUS_NOT_FOUND)) {
+                me.doing = "nl_link_add (joining the island again)";
+                join(s, s.navmesh, s.shore, s.island, s.island_landing);
+                join(s, s.island, s.island_landing, s.navmesh, s.shore);
+            }
+        }
+        ++me.steps;
+        std::this_thread::sleep_for(std::chrono::milliseconds(1));
     }
 }
 
@@ -359,6 +430,10 @@ int main(int argc, char** argv) {
             s.centres.push_back({polygon.centre[0], polygon.centre[1], polygon.centre[2]});
     }
 
+    if (s.centres.empty() || !add_island(s)) return 1;
+    join(s, s.navmesh, s.shore, s.island, s.island_landing);
+    join(s, s.island, s.island_landing, s.navmesh, s.shore);
+
     std::mt19937 rng(20);
     for (uint32_t k = 0; k < o.agents * 4 && info.polygon_count; ++k) {
         uint32_t count = 0;
@@ -374,19 +449,20 @@ int main(int argc, char** argv) {
     if (added < o.agents) fail("only " + std::to_string(added) + " agents could be placed");
 
     Tally tally;
-    std::atomic<uint64_t> steps_done{0}, edits{0};
+    std::atomic<uint64_t> steps_done{0}, edits{0}, sent_across{0};
     Worker stepper{"the stepping thread"}, editor{"the link editor"}, churner{"the agent churner"},
-        requester{"the path requester"};
+        requester{"the path requester"}, ferryman{"the island sender"};
     const Clock::time_point start = Clock::now();
     std::thread watchdog([&] {
-        nl::test::watch_workers("navlink-agents-soak", s.stop, {&stepper, &editor, &churner, &requester}, o.stall);
+        nl::test::watch_workers("navlink-agents-soak", s.stop, {&stepper, &editor, &churner, &requester, &ferryman}, o.stall);
     });
+    std::thread t_across(send_across, std::ref(s), std::ref(ferryman), std::ref(sent_across));
     std::thread t_edit(edit_links, std::ref(s), std::ref(editor), std::ref(edits));
     std::thread t_churn(churn_agents, std::ref(s), std::ref(churner));
     std::thread t_paths(request_paths, std::ref(s), std::ref(requester));
     step_crowd(s, stepper, o, tally, steps_done);
     s.stop = true;
-    for (std::thread* t : {&t_edit, &t_churn, &t_paths, &watchdog}) t->join();
+    for (std::thread* t : {&t_edit, &t_churn, &t_paths, &t_across, &watchdog}) t->join();
     const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
 
     std::printf("  %llu steps (%llu agent-steps) in %.1f s with %llu link edits meanwhile\n",
@@ -410,6 +486,9 @@ int main(int argc, char** argv) {
     if (steps_done >= 100 && tally.replans[NL_AGENT_REASON_LINK_GONE] + tally.replans[NL_AGENT_REASON_WORLD_CHANGED] == 0)
         fail("the link edits never reached an agent's path");
     if (steps_done >= 100 && tally.take_offs == 0) fail("no agent took a link");
+    std::printf("  %llu agents sent to the island (a destination on another navmesh, over cross links)\n",
+                (unsigned long long)sent_across.load());
+    if (steps_done >= 100 && sent_across == 0) fail("no agent was sent to the island");
     nl_world_destroy(s.world);
     if (soak.count()) {
         std::fprintf(stderr, "navlink-agents-soak: %d failures\n", soak.count());

@@ -8,9 +8,9 @@
 // The shuttle's navmesh is built by Recast on it (nl_navmesh_build with def.surface), the disc's and
 // the lift's are handed over in their own space (nl_navmesh_add with def.surface). It fails when a
 // call returns a status its documentation does not allow; when an agent on a surface is off its
-// navmesh there (its world position taken back through the surface's transform, read before and
-// after the agents are read and the same both times, lies outside the navmesh's box in the
-// surface's space by more than 5 cm: the box of a flat navmesh is its plane too); when a path on a
+// navmesh there (its surface_position lies outside the navmesh's box in the surface's space by more
+// than 5 cm: the box of a flat navmesh is its plane too), or its world position is not that point
+// moved by a pose the surface takes at some moment; when a path on a
 // moving navmesh has a surface_position outside that box, or world points that are not its surface
 // points moved by one rigid transform (the distances between consecutive points differ); when an
 // agent's corner read meanwhile is off its navmesh's box; when a queued request finishes other than
@@ -342,10 +342,34 @@ void request_paths(Soak& s, Worker& me, unsigned seed, PathTally& tally) {
 }
 
 struct AgentTally {
-    uint64_t steps = 0, checked = 0, unsettled = 0, arrivals = 0, failures = 0;
+    uint64_t steps = 0, checked = 0, arrivals = 0, failures = 0;
 };
 
 bool finite3(const float* p) { return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]); }
+
+// Whether `world` is `local` moved by a pose that surface s takes at some time (pose_at): the agents'
+// positions are read at poses between the host's reads of them, so each surface's motion is checked
+// for its free parameter (the lift's height, the disc's turn, the shuttle's slide and roll).
+bool placed_by_some_pose(int s, const float* world, const float* local) {
+    constexpr float kRounding = 2e-3f;  // m: float rounding of a transform at tens of metres
+    auto near = [](float a, float b) { return std::fabs(a - b) <= kRounding; };
+    if (s == 2) {  // the lift: (-25, 1..7, 0), not turned
+        const float height = world[1] - local[1];
+        return near(world[0], local[0] - 25.0f) && near(world[2], local[2]) && height >= 1.0f - kRounding && height <= 7.0f + kRounding;
+    }
+    if (s == 1) {  // the disc: turned about y at (0, 1.5, 20)
+        return near(world[1], local[1] + 1.5f) &&
+               near(std::hypot(world[0], world[2] - 20.0f), std::hypot(local[0], local[2]));
+    }
+    if (s == 0) {  // the shuttle: (10..30, 3, -20), rolled about x by at most 0.04 rad
+        const float slide = world[0] - local[0];
+        const float dy = world[1] - 3.0f, dz = world[2] + 20.0f;
+        const float turned = std::atan2(local[1] * dz - local[2] * dy, local[1] * dy + local[2] * dz);
+        return slide >= 10.0f - kRounding && slide <= 30.0f + kRounding &&
+               near(std::hypot(dy, dz), std::hypot(local[1], local[2])) && std::fabs(turned) <= 0.04f + 1e-3f;
+    }
+    return world[0] == local[0] && world[1] == local[1] && world[2] == local[2];  // the floor rides nothing
+}
 
 // The game's main loop: a step, the events, then every agent read and checked against where its
 // surface is, the surfaces' transforms read just before and after the agents.
@@ -369,28 +393,28 @@ void step_agents(Soak& s, Worker& me, const Options& o, AgentTally& tally) {
             }
         }
         me.doing = "nl_world_get_agents";
-        RigidPose before[kSurfaces + 1], after[kSurfaces + 1];
-        for (int k = 0; k <= kSurfaces; ++k) before[k] = s.pose(k);
         expect(nl_world_get_agents(s.world, nullptr, 0, &count), "nl_world_get_agents (count)");
         infos.assign(count, nl_agent_info_init());
         if (count) expect(nl_world_get_agents(s.world, infos.data(), count, &count), "nl_world_get_agents");
-        for (int k = 0; k <= kSurfaces; ++k) after[k] = s.pose(k);
         for (uint32_t i = 0; i < count; ++i) {
             const nl_agent_info& a = infos[i];
             const int surface = int(a.user_data);
-            if (!finite3(a.position) || !finite3(a.velocity)) fail("an agent's position or velocity is not finite");
+            if (!finite3(a.position) || !finite3(a.velocity) || !finite3(a.surface_position))
+                fail("an agent's position, surface position or velocity is not finite");
             if (a.state == NL_AGENT_IDLE) send_somewhere(s, rng, a.id, surface);
-            // A surface that moved meanwhile placed this agent at a pose between the two reads.
-            if (before[surface] != after[surface]) {
-                ++tally.unsettled;
-                continue;
-            }
-            float local[3];
-            after[surface].to_local(a.position, local);
-            if (!s.inside(surface, local))
+            // Where it stands in its surface's space, as the host parents it (surface_position). Not
+            // its world position taken back through nl_mesh_get_info's transform: a move publishes
+            // the mesh's transform a moment before its navmeshes' (nl_mesh_set_transform), so two
+            // reads of the transform that agree do not say the agents were read at that pose (this
+            // check failed so under load, all 40 agents on the lift 0.063 m below it).
+            if (!s.inside(surface, a.surface_position))
                 fail(std::string("an agent on the ") + kNames[surface] + " is off its navmesh there: (" +
-                     std::to_string(local[0]) + ", " + std::to_string(local[1]) + ", " + std::to_string(local[2]) +
-                     ") in its space, state " + std::to_string(a.state));
+                     std::to_string(a.surface_position[0]) + ", " + std::to_string(a.surface_position[1]) + ", " +
+                     std::to_string(a.surface_position[2]) + ") in its space, state " + std::to_string(a.state));
+            if (!placed_by_some_pose(surface, a.position, a.surface_position))
+                fail(std::string("an agent on the ") + kNames[surface] + " at (" + std::to_string(a.position[0]) + ", " +
+                     std::to_string(a.position[1]) + ", " + std::to_string(a.position[2]) +
+                     ") is not its surface position moved by any pose of the surface");
             ++tally.checked;
         }
         ++tally.steps;
@@ -465,17 +489,16 @@ int main(int argc, char** argv) {
     joined = true;
     watchdog.join();
 
-    std::printf("  %llu steps in %.1f s, %llu surface moves meanwhile; %llu agents checked on their navmesh (%llu "
-                "reads skipped: the surface moved during the read); %llu arrivals, %llu failures\n",
+    std::printf("  %llu steps in %.1f s, %llu surface moves meanwhile; %llu agents checked on their navmesh; %llu "
+                "arrivals, %llu failures\n",
                 (unsigned long long)agents.steps, s.seconds(), (unsigned long long)moves.load(),
-                (unsigned long long)agents.checked, (unsigned long long)agents.unsettled,
-                (unsigned long long)agents.arrivals, (unsigned long long)agents.failures);
+                (unsigned long long)agents.checked, (unsigned long long)agents.arrivals, (unsigned long long)agents.failures);
     std::printf("  paths: %llu found at once, %llu queued, %llu checked, %llu with an end off the moved navmesh; %llu "
                 "agent corners checked beside them\n",
                 (unsigned long long)paths.found.load(), (unsigned long long)paths.queued.load(),
                 (unsigned long long)paths.checked.load(), (unsigned long long)paths.off.load(),
                 (unsigned long long)paths.corners.load());
-    if (agents.steps >= 10 && o.agents > 0 && agents.checked == 0) fail("no agent was ever read with its surface still");
+    if (agents.steps >= 10 && o.agents > 0 && agents.checked == 0) fail("no agent was ever checked");
     if (agents.steps >= 10 && paths.checked == 0) fail("no path on a moving navmesh was checked");
     nl_world_destroy(s.world);
     if (soak.count()) {

@@ -17,6 +17,15 @@
  *   data; output pointers are caller-owned buffers. Each function says which.
  * - Unless a function says otherwise, all functions that take a world are safe to call from several
  *   threads at once on the same world; nl_world_destroy must not race with any other call on it.
+ * - Callbacks (task, progress, log, plugin) run while the call that made them holds some of the
+ *   world's locks, on the calling thread. A callback may call NavLink, except for what would take
+ *   again a lock its caller holds: such a call fails at once with NL_STATUS_INTERNAL_ERROR and a
+ *   message naming the lock (never waits for itself, never breaks the lock). So, from a task callback
+ *   during nl_world_step: no nl_agent_* function, nl_world_step or nl_world_get_agent*, and from any
+ *   task callback no level query or edit (nl_world_cast_rays, nl_mesh_*...: refused from every task);
+ *   from a generation's progress callback or a link-kind plugin no other generation or update
+ *   (INVALID_ARGUMENT, nl_navmesh_generate_links). Path requests, link edits and reads of navmeshes
+ *   and links are meant to be called from callbacks.
  * - Structs that may grow start with `uint32_t size`. Inputs: fill them from the nl_default_*_def()
  *   functions, which set it, then change the fields you need; a library newer than the header a
  *   host was built with reads only the `size` bytes the host has and gives later fields their
@@ -184,7 +193,8 @@ typedef void* nl_task_enqueue_fn(void* user, nl_task_fn* task, void* task_contex
  *  it must not wait for anything that needs them, so meanwhile the thread must not run host work
  *  that calls into NavLink (ranges of NavLink's tasks are fine). NavLink marks the thread for that
  *  time: a level query or edit made from there fails with INTERNAL_ERROR instead of waiting on a
- *  lock the thread holds. */
+ *  lock the thread holds, and so does an agent call while nl_world_step waits ("Callbacks" at the
+ *  top). */
 typedef void nl_task_finish_fn(void* user, void* host_task);
 
 /** How to create a world. Get one from nl_default_world_def(). */
@@ -360,6 +370,9 @@ NL_API nl_status nl_mesh_remove(nl_world* world, nl_mesh_id mesh);
  *  Thread-safe: meant to be called from the host's physics or game thread while path workers plan
  *  and nl_world_step runs elsewhere. A path planned meanwhile uses one pose throughout (the one of
  *  the moment its search starts); an agent step reads each surface's pose when it reads the agent.
+ *  The mesh's own transform (nl_mesh_get_info, ray queries) changes a moment before its navmeshes'
+ *  pose: another thread may read the new transform and agents placed at the old pose. To place a
+ *  body on the platform, use nl_agent_info.surface_position with the transform the host set.
  *  Waits for ray queries in flight on this world to finish. */
 NL_API nl_status nl_mesh_set_transform(nl_world* world, nl_mesh_id mesh, const float* transform);
 
@@ -940,9 +953,11 @@ NL_DEFINE_OUTPUT_INIT(nl_link_generation_report, nl_link_generation_report_init)
  *  PARSE_ERROR (malformed plugin_settings_json, found before any work), CANCELLED (progress
  *  returned 0: the navmesh's links are as they were), OUT_OF_MEMORY.
  *  Generations and updates of one navmesh run one after the other; other navmeshes' run at the same
- *  time. From inside a generation or update (its progress callback, a link-kind plugin) links cannot
- *  be generated or updated, on any navmesh: such a call fails with INVALID_ARGUMENT (two threads each
- *  doing so for the other's navmesh would wait for each other forever).
+ *  time. From inside a generation, update or cross-link generation (its progress callback, a
+ *  link-kind plugin) links cannot be generated or updated, on any navmesh and of either kind
+ *  (nl_navmesh_generate_links, nl_navmesh_update_links_in_box, nl_navmesh_generate_cross_links): such
+ *  a call fails with INVALID_ARGUMENT (two threads each doing so for the other's navmesh would wait
+ *  for each other forever).
  *  Thread-safe; parallel over the world's workers; the result does not depend on their number. */
 NL_API nl_status nl_navmesh_generate_links(nl_world* world, nl_navmesh_id navmesh, const nl_link_settings* settings,
                                            nl_progress_fn* progress, void* user, nl_link_generation_report* out_report);
@@ -959,9 +974,11 @@ NL_API nl_status nl_navmesh_generate_links(nl_world* world, nl_navmesh_id navmes
  *  Both navmeshes must be made for the same agent radius and height. `settings`, `progress`, `user`
  *  and `out_report` as for nl_navmesh_generate_links (jump_links and drop_links count the cross
  *  links; link-kind plugins are not run: their links lie within one navmesh, though
- *  plugin_settings_json is checked as there). Returns SUCCESS, or a failure with INVALID_HANDLE (either navmesh), INVALID_ARGUMENT (the
- *  same navmesh twice, different bodies, a bad tolerance or setting, named), CANCELLED (nothing
- *  changed). Thread-safe; two calls for the same pair at once store one's result or the other's. */
+ *  plugin_settings_json is checked as there). Returns SUCCESS, or a failure with INVALID_HANDLE (either
+ *  navmesh), INVALID_ARGUMENT (the same navmesh twice, different bodies, a bad tolerance or setting,
+ *  named; also when called from inside a generation, update or cross-link generation, as
+ *  nl_navmesh_generate_links says), CANCELLED (nothing changed). Thread-safe; two calls for the same
+ *  pair at once store one's result or the other's. */
 NL_API nl_status nl_navmesh_generate_cross_links(nl_world* world, nl_navmesh_id first, nl_navmesh_id second, float tolerance,
                                                  const nl_link_settings* settings, nl_progress_fn* progress, void* user,
                                                  nl_link_generation_report* out_report);
@@ -1028,8 +1045,10 @@ NL_API nl_status nl_navmesh_save(const nl_world* world, nl_navmesh_id navmesh, v
                                  size_t* out_size);
 
 /** The same, written to the file at `path` (NUL-terminated, borrowed): whole or not at all (written
- *  beside it, then renamed over it). Returns SUCCESS, or a failure as nl_navmesh_save, or IO_ERROR
- *  (cannot write; the reason named). Thread-safe. */
+ *  beside it, then renamed over it). A symbolic link at `path` stays: the file it leads to (through
+ *  any chain of links) is written. Returns SUCCESS, or a failure as nl_navmesh_save, or IO_ERROR
+ *  (cannot write; the reason named; also a path that is, or leads to, a directory, a device, a socket
+ *  or a pipe: left as it was). Thread-safe. */
 NL_API nl_status nl_navmesh_save_file(const nl_world* world, nl_navmesh_id navmesh, const char* path);
 
 /** Refuse a file baked from other level geometry than the world holds now (see nl_navmesh_load_def). */
@@ -1061,8 +1080,10 @@ NL_API nl_navmesh_load_def nl_default_navmesh_load_def(void);
 NL_API nl_status nl_navmesh_load(nl_world* world, const void* data, size_t size, const nl_navmesh_load_def* def,
                                  nl_navmesh_id* out_id);
 
-/** The same, from the file at `path` (NUL-terminated, borrowed). Also NOT_FOUND (no such file) and
- *  IO_ERROR (cannot read it). Thread-safe. */
+/** The same, from the file at `path` (NUL-terminated, borrowed): a regular file or a pipe, read no
+ *  further than its header says the file goes. Also NOT_FOUND (no such file), IO_ERROR (cannot read
+ *  it; a directory, a device or a socket), PARSE_ERROR (a pipe that goes on past the file's end).
+ *  Thread-safe. */
 NL_API nl_status nl_navmesh_load_file(nl_world* world, const char* path, const nl_navmesh_load_def* def,
                                       nl_navmesh_id* out_id);
 
@@ -1642,8 +1663,9 @@ NL_API nl_status nl_agent_set_speed(nl_world* world, nl_agent_id agent, float ma
  *  for (at most agent_paths_per_step: agents standing without a path first, then the oldest), steers and moves every agent on the ground,
  *  flies those on links, and checks each link just before take-off. An agent's trouble (no path,
  *  its navmesh removed) is its failure and event, not the call's.
- *  Returns SUCCESS, or INVALID_ARGUMENT (dt NaN, infinite or negative: nothing changes), OUT_OF_MEMORY.
- *  Thread-safe: other agent calls wait for it; must not be called from a task callback. */
+ *  Returns SUCCESS, or INVALID_ARGUMENT (dt NaN, infinite or negative: nothing changes), OUT_OF_MEMORY,
+ *  INTERNAL_ERROR (called from a task callback of a step: refused, see "Callbacks" at the top).
+ *  Thread-safe: other agent calls wait for it; an agent call from one of its task callbacks is refused. */
 NL_API nl_status nl_world_step(nl_world* world, float dt);
 
 /** An agent's state. An array element that may grow: set `size` of the first (nl_agent_info_init). */
