@@ -1,16 +1,19 @@
 // The agents of a world: bodies that follow their paths, take links along the trajectories the
 // generator proved clear, and keep out of each other's way. One step moves every agent by dt.
 //
-// A step runs in phases, so that its result is the same bit for bit whatever the thread count:
-//   1. (serial) each agent checks its navmesh and links against the world as it is now, and asks
-//      for a new path when they changed under it;
-//   2. the paths asked for, at most max_paths_per_step of them (agents standing without a path
-//      first, then the oldest request), are planned in
-//      parallel on the world's task system, each on the navmesh and links as they are now;
-//   3. (parallel) each agent steers, avoids its neighbours and the walls (positions as they were at
-//      the start of the phase), moves over the surface, or flies its link;
-//   4. (serial, in agent order) agents at a link's take-off check that the link is still there,
-//      enabled and within their body, and that its landing is clear, then take off or plan again.
+// A step runs in phases (agents_step.cpp), so that its result is the same bit for bit whatever the
+// thread count:
+//   1. check_against_world (serial): each agent checks its navmesh and links against the world as it
+//      is now, and asks for a new path when they changed under it;
+//   2. plan_asked_paths: the paths asked for, at most max_paths_per_step of them (agents standing
+//      without a path first, then the oldest request), planned in parallel on the world's task
+//      system, each on the navmesh and links as they are now;
+//   3. move (parallel): each agent steers, avoids its neighbours and the walls (positions as they
+//      were at the start of the phase), moves over the surface, or flies its link;
+//   4. land_cross_flights (serial): bodies landed over a cross link go onto the landing navmesh;
+//   5. take_off (serial, in agent order): agents at a link's take-off check that the link is still
+//      there, enabled and within their body, and that its landing is clear, then take off or plan
+//      again.
 // Each agent writes only its own state in a parallel phase; events are gathered in agent order.
 //
 // Positions: a host gives and reads them in the world. Inside, each agent is kept in its navmesh's
@@ -99,6 +102,14 @@ public:
     uint32_t count() const;
 
 private:
+    // The phases of step() (agents_step.cpp), in order, and what they share.
+    struct Step;
+    void check_against_world(Step& s);
+    void plan_asked_paths(Step& s);
+    void move(Step& s);
+    void land_cross_flights(Step& s);
+    void take_off(Step& s);
+
     AgentBody& find(Handle agent);
     const AgentBody& find(Handle agent) const;
     // The agent's navmesh, its pose now and the agent's radius; InvalidHandle for a stale agent, or

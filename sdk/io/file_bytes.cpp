@@ -10,6 +10,8 @@
 #include <memory>
 #include <thread>
 
+#include <sys/stat.h>
+
 #include "util/error.h"
 
 namespace nl {
@@ -25,19 +27,33 @@ const char* kind_of(fs::file_type type) {
         case fs::file_type::character: return "a character device";
         case fs::file_type::socket: return "a socket";
         case fs::file_type::fifo: return "a pipe";
-        default: return "not a regular file";
+        default: return "a special file";
     }
 }
 
-// Opens `path` for reading: a regular file or a pipe (links followed).
+void refuse_unless_readable(const std::string& path, fs::file_type type) {
+    if (type != fs::file_type::regular && type != fs::file_type::fifo)
+        fail(ErrorCode::Io, "cannot read '", path, "': it is ", kind_of(type), ", not a file");
+}
+
+// Opens `path` for reading: a regular file or a pipe (links followed; a pipe waits for its writer).
+// Checked before it is opened (a device is never opened) and again on what was opened (the path may
+// have been replaced in between).
 File open_for_reading(const std::string& path) {
     std::error_code ec;
     const fs::file_status status = fs::status(path, ec);
     if (!fs::exists(status)) fail(ErrorCode::NotFound, "cannot open '", path, "': no such file");
-    if (!fs::is_regular_file(status) && !fs::is_fifo(status))
-        fail(ErrorCode::Io, "cannot read '", path, "': it is ", kind_of(status.type()), ", not a file");
+    refuse_unless_readable(path, status.type());
     File file(std::fopen(path.c_str(), "rb"), &std::fclose);
     if (!file) fail(ErrorCode::Io, "cannot open '", path, "': ", std::strerror(errno));
+    struct stat opened {};
+    if (::fstat(::fileno(file.get()), &opened) != 0) fail(ErrorCode::Io, "cannot read '", path, "': ", std::strerror(errno));
+    refuse_unless_readable(path, S_ISREG(opened.st_mode)    ? fs::file_type::regular
+                                 : S_ISFIFO(opened.st_mode) ? fs::file_type::fifo
+                                 : S_ISDIR(opened.st_mode)  ? fs::file_type::directory
+                                 : S_ISCHR(opened.st_mode)  ? fs::file_type::character
+                                 : S_ISBLK(opened.st_mode)  ? fs::file_type::block
+                                                            : fs::file_type::socket);
     return file;
 }
 
@@ -82,13 +98,15 @@ std::string read_file_bytes(const std::string& path) {
     return bytes;
 }
 
-std::string read_file_bytes_up_to_declared(const std::string& path, size_t header_bytes,
+std::string read_file_bytes_up_to_declared(const std::string& path, size_t header_bytes, uint64_t max_bytes,
                                            FunctionRef<uint64_t(std::string_view header)> declared, const char* what) {
     const File file = open_for_reading(path);
     std::string bytes;
     if (read_into(file.get(), path, bytes, header_bytes)) return bytes;
     const uint64_t total = declared(bytes);
     if (total <= bytes.size()) return bytes;  // not of the format (its parser says so), or all read
+    if (total > max_bytes)
+        fail(ErrorCode::Parse, what, ": '", path, "' says it holds ", total, " bytes, more than ", max_bytes, " (corrupted)");
     if (read_into(file.get(), path, bytes, total - bytes.size())) return bytes;
     std::string more;
     read_into(file.get(), path, more, 1);

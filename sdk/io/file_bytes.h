@@ -18,10 +18,12 @@ namespace nl {
 std::string read_file_bytes(const std::string& path);
 // A file whose header says how long it is: reads `header_bytes` (fewer if it ends first), then up to
 // the length that `declared(header)` gives for the whole file (0 for a header not of the format: the
-// header alone is returned, for its parser to refuse). A file that goes on past it is refused with
-// Parse (`what` names the format), reading one byte more at most: a stream that never ends is not
-// read to the end of memory. A file that ends before is returned short, for its parser to say so.
-std::string read_file_bytes_up_to_declared(const std::string& path, size_t header_bytes,
+// header alone is returned, for its parser to refuse). A length over `max_bytes` is refused with Parse
+// (`what` names the format) before anything more is read, and so is a file that goes on past its
+// length, reading one byte more at most: a stream that never ends is not read to the end of memory.
+// A file that ends before is returned short, for its parser to say so. A pipe is read as its writer
+// writes: the call returns once the writer has closed it or written past the length.
+std::string read_file_bytes_up_to_declared(const std::string& path, size_t header_bytes, uint64_t max_bytes,
                                            FunctionRef<uint64_t(std::string_view header)> declared, const char* what);
 // Writes `bytes` to `path` whole or not at all: into a file beside it, then renamed over it, so a
 // failure never leaves a half-written file where a good one was. A symbolic link at `path` stays: the

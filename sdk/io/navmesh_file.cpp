@@ -397,10 +397,12 @@ std::vector<uint8_t> write_navmesh_file(const NavMesh& navmesh, const std::vecto
 }
 
 std::string read_navmesh_file_bytes(const std::string& path) {
-    return read_file_bytes_up_to_declared(path, kNavMeshFileHeaderBytes, [](std::string_view header) -> uint64_t {
+    return read_file_bytes_up_to_declared(path, kNavMeshFileHeaderBytes, kNavMeshFileMaxBytes, [](std::string_view header) -> uint64_t {
         if (header.size() < kNavMeshFileHeaderBytes || std::memcmp(header.data(), kMagic, sizeof(kMagic)) != 0) return 0;
         ByteReader in(reinterpret_cast<const uint8_t*>(header.data()), header.size(), "navmesh file");
-        in.skip(16, "the magic bytes, the version and the section count");
+        in.skip(sizeof(kMagic), "the magic bytes");
+        if (in.u32("the format version") != kNavMeshFileVersion) return 0;  // read_navmesh_file names it
+        in.skip(4, "the section count");
         return in.u64("the file size");
     }, "navmesh file");
 }

@@ -29,6 +29,9 @@ namespace nl {
 
 constexpr uint32_t kNavMeshFileVersion = 1;
 constexpr size_t kNavMeshFileHeaderBytes = 32;
+// The largest file read_navmesh_file_bytes reads: 4 GiB (a navmesh of some 100 million polygons);
+// a header that says more is refused before anything is read past it.
+constexpr uint64_t kNavMeshFileMaxBytes = uint64_t(4) << 30;
 
 struct NavMeshFile {
     NavMeshInput navmesh;     // weld_tolerance 0: the saved vertices are welded already
@@ -51,8 +54,9 @@ std::vector<uint8_t> write_navmesh_file(const NavMesh& navmesh, const std::vecto
 // (deflate's limit: 1032 times `size`).
 NavMeshFile read_navmesh_file(const uint8_t* data, size_t size);
 
-// The file at `path`, read no further than its header says it goes (file_bytes.h): a device is
-// refused (Io), a stream that goes on past it too (Parse); the bytes are for read_navmesh_file.
+// The file at `path`, read no further than its header says it goes (file_bytes.h), and never more than
+// kNavMeshFileMaxBytes: a device is refused (Io), a stream that goes on past its end or a header that
+// says more than that too (Parse); the bytes are for read_navmesh_file.
 std::string read_navmesh_file_bytes(const std::string& path);
 
 // What the file was made for, as a JSON object: {"builder", "builder_settings", "link_settings",

@@ -70,7 +70,8 @@ Handle World::add_agent(AgentDef def) {
         RayHit hit;
         level_->cast_rays(&down, 1, &hit);
         if (hit.hit && navmeshes_.contains(def.navmesh)) {
-            const Handle on = navmeshes_.riding(hit.mesh, navmeshes_.navmesh(def.navmesh)->agent());
+            const auto navmesh = navmeshes_.navmesh(def.navmesh);
+            const Handle on = navmeshes_.riding(hit.mesh, navmesh->agent());
             if (on != Handle{}) def.navmesh = on;
         }
     }

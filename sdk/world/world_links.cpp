@@ -98,7 +98,8 @@ void World::load_links(Handle navmesh, std::vector<Link> links, LinksMadeWith ma
 
 void World::load_links_file(Handle navmesh, LinksFile file, bool any_body) {
     if (file.made_for) {
-        const AgentType ours = navmeshes_.navmesh(navmesh)->agent(), theirs = file.made_for->agent;
+        const auto mesh = navmeshes_.navmesh(navmesh);
+        const AgentType ours = mesh->agent(), theirs = file.made_for->agent;
         if (!same_body(ours, theirs)) {
             const std::string why = concat("the links were generated for a body of radius ", theirs.radius, " m and height ",
                                            theirs.height, " m; this navmesh was built for radius ", ours.radius,

@@ -3,11 +3,14 @@
 // is read no further than the navmesh file's header says it goes.
 #include <doctest/doctest.h>
 
+#include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <chrono>
 #include <csignal>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <string>
 #include <thread>
@@ -101,13 +104,20 @@ TEST_CASE("a navmesh file is read from a pipe no further than its header says, w
         message.clear();
         REQUIRE(::mkfifo(pipe.c_str(), 0600) == 0);
         std::thread writer([&] {
-            std::FILE* out = std::fopen(pipe.c_str(), "wb");  // waits for the reader to open it
-            if (!out) return;
-            std::setvbuf(out, nullptr, _IONBF, 0);
-            bool open = std::fwrite(prefix.data(), 1, prefix.size(), out) == prefix.size();
+            // Opened without waiting (ENXIO until the reader has it open), for at most 30 s: a reader
+            // that never opens the pipe fails the test instead of hanging it.
+            int fd = -1;
+            for (int tries = 0; fd < 0 && tries < 30000; ++tries) {
+                fd = ::open(pipe.c_str(), O_WRONLY | O_NONBLOCK);
+                if (fd < 0) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+            }
+            if (fd < 0) return;
+            ::fcntl(fd, F_SETFL, 0);  // blocking writes from here on
+            auto write_all = [&](const std::string& bytes) { return ::write(fd, bytes.data(), bytes.size()) == ssize_t(bytes.size()); };
+            bool open = write_all(prefix);
             const std::string more(4096, 'x');
-            while (open && endless) open = std::fwrite(more.data(), 1, more.size(), out) == more.size();
-            std::fclose(out);
+            while (open && endless) open = write_all(more);
+            ::close(fd);
         });
         std::string bytes;
         try {
@@ -128,6 +138,13 @@ TEST_CASE("a navmesh file is read from a pipe no further than its header says, w
     // The file, then bytes without end: refused once one byte past it is read.
     read_from_writer(file, true, message);
     CHECK(message.find("goes on past the " + std::to_string(file.size()) + " bytes its header says") != std::string::npos);
+    // A header that says the file is larger than any navmesh file, then bytes without end: refused
+    // before anything past the header is read.
+    std::string forged = file.substr(0, kNavMeshFileHeaderBytes);
+    const uint64_t huge = uint64_t(1) << 40;
+    std::memcpy(&forged[16], &huge, sizeof huge);  // the file size (little-endian on every tested platform)
+    read_from_writer(forged, true, message);
+    CHECK(message.find("says it holds " + std::to_string(huge) + " bytes, more than") != std::string::npos);
     // Not a navmesh file at all, without end: the header's bytes alone, which its reader refuses.
     const std::string other = read_from_writer("not a navmesh file, and more", true, message);
     CHECK(message.empty());

@@ -278,7 +278,8 @@ TEST_CASE("a links file says the body its links were made for: another body's na
     nl::AgentType narrow;
     narrow.radius = 0.3f;
     const Handle other = nl::test::build_recast_navmesh(*b.world, narrow);
-    const nl::LinksMadeFor made_for{b.world->navmeshes().navmesh(b.navmesh)->agent(),
+    const auto mesh = b.world->navmeshes().navmesh(b.navmesh);
+    const nl::LinksMadeFor made_for{mesh->agent(),
                                     b.world->navmeshes().made_for(b.navmesh).links};
     std::vector<nl::Link> links;
     for (const nl::StoredLink& l : nl::test::links_of(*b.world, b.navmesh)) links.push_back(l.link);

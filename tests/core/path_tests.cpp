@@ -340,7 +340,8 @@ TEST_CASE("a manual link may ask only for an ability: requirements taken as give
     nl::Link ladder = map.link(2.9f, 4.1f, ladder_kind, true, ability);
     const nl::Handle id = map.world->add_link(map.navmesh, ladder);
     // The world keeps it as given (that nl_link_add measures a length left 0: abi.links.manual).
-    const nl::Link got = map.world->navmeshes().links(map.navmesh)->front().link;
+    const auto links = map.world->navmeshes().links(map.navmesh);
+    const nl::Link got = links->front().link;
     CHECK(got.requirements.gap == 0.0f);
     CHECK(got.requirements.length == doctest::Approx(1.2f));  // measured: it was left 0
 

@@ -120,7 +120,8 @@ TEST_CASE("a mesh that carries a navmesh takes rigid transforms only, and is not
     mirrored.scale(Vec3(-1, 1, 1));
     check_refused([&] { p.world->set_mesh_transform(p.mesh, mirrored); }, nl::ErrorCode::InvalidArgument, "not a rotation");
     CHECK(p.world->level().info(p.mesh).transform.isApprox(placed));  // nothing moved
-    CHECK(p.world->navmeshes().frame(p.navmesh)->moves() == 0);
+    const auto frame = p.world->navmeshes().frame(p.navmesh);
+    CHECK(frame->moves() == 0);
 
     check_refused([&] { p.world->remove_mesh(p.mesh); }, nl::ErrorCode::InvalidArgument, "remove the navmesh first");
     CHECK(p.world->level().contains(p.mesh));

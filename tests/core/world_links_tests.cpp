@@ -34,7 +34,10 @@ struct Fixture {
         return world->generate_links(navmesh, settings, {}, nl::test::keep_going);
     }
     // The centre of polygon p: a point on the navmesh.
-    Vec3 centre(uint32_t p) const { return world->navmeshes().navmesh(navmesh)->centre(p); }
+    Vec3 centre(uint32_t p) const {
+        const auto mesh = world->navmeshes().navmesh(navmesh);
+        return mesh->centre(p);
+    }
 };
 
 // A manual link as nl_link_add makes it of nl_default_link_def() with these ends: requirements
@@ -265,7 +268,8 @@ TEST_CASE("a boundary that would need millions of take-off samples is refused be
     CHECK(nl::test::code_of([&] { world->generate_links(navmesh, settings, {}, nl::test::keep_going); }, &message) ==
           nl::ErrorCode::InvalidArgument);
     CHECK(message.find("sample_spacing") != std::string::npos);
-    CHECK(world->navmeshes().links(navmesh)->empty());
+    const auto links = world->navmeshes().links(navmesh);
+    CHECK(links->empty());
 }
 
 TEST_CASE("loading JSON holds links to nl_link_add's rules: ends near the navmesh, requirements from the ends") {

@@ -233,13 +233,14 @@ void edit_links(Soak& s, Worker& me, std::atomic<uint64_t>& edits) {
     }
 }
 
-// The island: a square navmesh 4.5 m off the level's westernmost polygon centre (the shore), at its
-// height, and a manual cross link each way (cross links are one-way).
+// The island: a square navmesh 16 to 20 m west of the level's westernmost polygon centre (the shore),
+// at its height, off the level's navmesh (checked: else a destination there would never be looked for
+// across), and a manual cross link each way (cross links are one-way).
 bool add_island(Soak& s) {
     s.shore = s.centres.front();
     for (const auto& c : s.centres)
         if (c[0] < s.shore[0]) s.shore = c;
-    const float x0 = s.shore[0] - 8.0f, x1 = s.shore[0] - 4.0f, y = s.shore[1], z0 = s.shore[2] - 2.0f, z1 = s.shore[2] + 2.0f;
+    const float x0 = s.shore[0] - 20.0f, x1 = s.shore[0] - 16.0f, y = s.shore[1], z0 = s.shore[2] - 2.0f, z1 = s.shore[2] + 2.0f;
     const float vertices[12] = {x0, y, z0, x0, y, z1, x1, y, z1, x1, y, z0};  // counter-clockwise from above
     const uint32_t indices[6] = {0, 1, 2, 0, 2, 3};
     nl_navmesh_def def = nl_default_navmesh_def();
@@ -249,7 +250,13 @@ bool add_island(Soak& s) {
     def.polygon_count = 2;
     def.agent.radius = 0.4f;
     if (!expect(nl_navmesh_add(s.world, &def, &s.island), "nl_navmesh_add (the island)")) return false;
-    s.island_landing = {s.shore[0] - 4.5f, y, s.shore[2]};
+    s.island_landing = {s.shore[0] - 16.5f, y, s.shore[2]};
+    const float points[9] = {x0, y, z0, x1, y, z1, s.island_landing[0], y, s.island_landing[2]};
+    const float box[3] = {1.0f, 2.0f, 1.0f};  // set_destination's reach, and more
+    nl_nav_point found[3];
+    if (!expect(nl_navmesh_find_nearest(s.world, s.navmesh, points, 3, box, found), "nl_navmesh_find_nearest")) return false;
+    for (const nl_nav_point& p : found)
+        if (p.found) fail("the island lies on the level's navmesh: a destination there is not looked for across");
     return true;
 }
 

@@ -10,7 +10,7 @@
 // call returns a status its documentation does not allow; when an agent on a surface is off its
 // navmesh there (its surface_position lies outside the navmesh's box in the surface's space by more
 // than 5 cm: the box of a flat navmesh is its plane too), or its world position is not that point
-// moved by a pose the surface takes at some moment; when a path on a
+// moved by the surface's pose of one of the moves the mover made during the read; when a path on a
 // moving navmesh has a surface_position outside that box, or world points that are not its surface
 // points moved by one rigid transform (the distances between consecutive points differ); when an
 // agent's corner read meanwhile is off its navmesh's box; when a queued request finishes other than
@@ -85,6 +85,12 @@ struct Soak {
     std::vector<int> agent_surfaces;
     std::atomic<bool> stop{false};
     Clock::time_point start = Clock::now();
+    // The mover's numbered moves: move m put every surface at pose_at(k, times[m % kHistory]); the
+    // number is published before the move is made, so a reader that saw m before reading agents saw
+    // move m - 1 made whole, and none after the number it sees next.
+    static constexpr uint64_t kHistory = 4096;
+    std::atomic<uint64_t> moves_published{0};
+    std::array<std::atomic<double>, kHistory> times{};
 
     double seconds() const { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
@@ -203,6 +209,9 @@ void send_somewhere(Soak& s, std::mt19937& rng, nl_agent_id agent, int surface) 
 void move_surfaces(Soak& s, Worker& me, std::atomic<uint64_t>& moves) {
     while (!s.stop) {
         const double t = s.seconds();
+        const uint64_t m = s.moves_published.load() + 1;
+        s.times[m % Soak::kHistory].store(t);
+        s.moves_published.store(m);
         for (int k = 0; k < kSurfaces; ++k) {
             me.doing = kNames[k];
             expect(nl_mesh_set_transform(s.world, s.meshes[k], pose_at(k, t).m), "nl_mesh_set_transform");
@@ -342,33 +351,20 @@ void request_paths(Soak& s, Worker& me, unsigned seed, PathTally& tally) {
 }
 
 struct AgentTally {
-    uint64_t steps = 0, checked = 0, arrivals = 0, failures = 0;
+    uint64_t steps = 0, checked = 0, placed = 0, arrivals = 0, failures = 0;
 };
 
 bool finite3(const float* p) { return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]); }
 
-// Whether `world` is `local` moved by a pose that surface s takes at some time (pose_at): the agents'
-// positions are read at poses between the host's reads of them, so each surface's motion is checked
-// for its free parameter (the lift's height, the disc's turn, the shuttle's slide and roll).
-bool placed_by_some_pose(int s, const float* world, const float* local) {
+// Whether `world` is `local` moved by surface s's pose of one of the mover's moves first..last.
+bool placed_by_a_move(const Soak& soak, int s, const float* world, const float* local, uint64_t first, uint64_t last) {
     constexpr float kRounding = 2e-3f;  // m: float rounding of a transform at tens of metres
-    auto near = [](float a, float b) { return std::fabs(a - b) <= kRounding; };
-    if (s == 2) {  // the lift: (-25, 1..7, 0), not turned
-        const float height = world[1] - local[1];
-        return near(world[0], local[0] - 25.0f) && near(world[2], local[2]) && height >= 1.0f - kRounding && height <= 7.0f + kRounding;
+    for (uint64_t m = first; m <= last; ++m) {
+        float moved[3];
+        pose_at(s, soak.times[m % Soak::kHistory].load()).to_world(local, moved);
+        if (distance(moved, world) <= kRounding) return true;
     }
-    if (s == 1) {  // the disc: turned about y at (0, 1.5, 20)
-        return near(world[1], local[1] + 1.5f) &&
-               near(std::hypot(world[0], world[2] - 20.0f), std::hypot(local[0], local[2]));
-    }
-    if (s == 0) {  // the shuttle: (10..30, 3, -20), rolled about x by at most 0.04 rad
-        const float slide = world[0] - local[0];
-        const float dy = world[1] - 3.0f, dz = world[2] + 20.0f;
-        const float turned = std::atan2(local[1] * dz - local[2] * dy, local[1] * dy + local[2] * dz);
-        return slide >= 10.0f - kRounding && slide <= 30.0f + kRounding &&
-               near(std::hypot(dy, dz), std::hypot(local[1], local[2])) && std::fabs(turned) <= 0.04f + 1e-3f;
-    }
-    return world[0] == local[0] && world[1] == local[1] && world[2] == local[2];  // the floor rides nothing
+    return false;
 }
 
 // The game's main loop: a step, the events, then every agent read and checked against where its
@@ -395,7 +391,12 @@ void step_agents(Soak& s, Worker& me, const Options& o, AgentTally& tally) {
         me.doing = "nl_world_get_agents";
         expect(nl_world_get_agents(s.world, nullptr, 0, &count), "nl_world_get_agents (count)");
         infos.assign(count, nl_agent_info_init());
+        const uint64_t before = s.moves_published.load();
         if (count) expect(nl_world_get_agents(s.world, infos.data(), count, &count), "nl_world_get_agents");
+        const uint64_t after = s.moves_published.load();
+        // The moves the agents may have been read at: the last made whole before, to the last begun.
+        const uint64_t first = before > 0 ? before - 1 : 0;
+        const bool history = after - first < Soak::kHistory / 2;  // else the ring was written over meanwhile
         for (uint32_t i = 0; i < count; ++i) {
             const nl_agent_info& a = infos[i];
             const int surface = int(a.user_data);
@@ -411,10 +412,14 @@ void step_agents(Soak& s, Worker& me, const Options& o, AgentTally& tally) {
                 fail(std::string("an agent on the ") + kNames[surface] + " is off its navmesh there: (" +
                      std::to_string(a.surface_position[0]) + ", " + std::to_string(a.surface_position[1]) + ", " +
                      std::to_string(a.surface_position[2]) + ") in its space, state " + std::to_string(a.state));
-            if (!placed_by_some_pose(surface, a.position, a.surface_position))
+            tally.placed += surface < kSurfaces && history;
+            if (surface < kSurfaces && history && !placed_by_a_move(s, surface, a.position, a.surface_position, first, after))
                 fail(std::string("an agent on the ") + kNames[surface] + " at (" + std::to_string(a.position[0]) + ", " +
                      std::to_string(a.position[1]) + ", " + std::to_string(a.position[2]) +
-                     ") is not its surface position moved by any pose of the surface");
+                     ") is not its surface position moved to where the surface was during the read (moves " +
+                     std::to_string(first) + " to " + std::to_string(after) + ")");
+            if (surface == kSurfaces && distance(a.position, a.surface_position) != 0.0f)
+                fail("an agent on the floor, which rides nothing, has a surface position that is not its position");
             ++tally.checked;
         }
         ++tally.steps;
@@ -489,16 +494,17 @@ int main(int argc, char** argv) {
     joined = true;
     watchdog.join();
 
-    std::printf("  %llu steps in %.1f s, %llu surface moves meanwhile; %llu agents checked on their navmesh; %llu "
-                "arrivals, %llu failures\n",
+    std::printf("  %llu steps in %.1f s, %llu surface moves meanwhile; %llu agents checked on their navmesh, %llu on a "
+                "moving one where the surface was during the read; %llu arrivals, %llu failures\n",
                 (unsigned long long)agents.steps, s.seconds(), (unsigned long long)moves.load(),
-                (unsigned long long)agents.checked, (unsigned long long)agents.arrivals, (unsigned long long)agents.failures);
+                (unsigned long long)agents.checked, (unsigned long long)agents.placed, (unsigned long long)agents.arrivals,
+                (unsigned long long)agents.failures);
     std::printf("  paths: %llu found at once, %llu queued, %llu checked, %llu with an end off the moved navmesh; %llu "
                 "agent corners checked beside them\n",
                 (unsigned long long)paths.found.load(), (unsigned long long)paths.queued.load(),
                 (unsigned long long)paths.checked.load(), (unsigned long long)paths.off.load(),
                 (unsigned long long)paths.corners.load());
-    if (agents.steps >= 10 && o.agents > 0 && agents.checked == 0) fail("no agent was ever checked");
+    if (agents.steps >= 10 && o.agents > 0 && (agents.checked == 0 || agents.placed == 0)) fail("no agent was ever checked");
     if (agents.steps >= 10 && paths.checked == 0) fail("no path on a moving navmesh was checked");
     nl_world_destroy(s.world);
     if (soak.count()) {

@@ -20,12 +20,13 @@
  * - Callbacks (task, progress, log, plugin) run while the call that made them holds some of the
  *   world's locks, on the calling thread. A callback may call NavLink, except for what would take
  *   again a lock its caller holds: such a call fails at once with NL_STATUS_INTERNAL_ERROR and a
- *   message naming the lock (never waits for itself, never breaks the lock). So, from a task callback
- *   during nl_world_step: no nl_agent_* function, nl_world_step or nl_world_get_agent*, and from any
- *   task callback no level query or edit (nl_world_cast_rays, nl_mesh_*...: refused from every task);
- *   from a generation's progress callback or a link-kind plugin no other generation or update
- *   (INVALID_ARGUMENT, nl_navmesh_generate_links). Path requests, link edits and reads of navmeshes
- *   and links are meant to be called from callbacks.
+ *   message naming the lock (never waits for itself, never breaks the lock); a call from another
+ *   thread waits for the lock as any call does, so a callback must not wait for such a thread. So,
+ *   from a task callback during nl_world_step: no nl_agent_* function, nl_world_step or
+ *   nl_world_get_agent*; from any task callback no level query or edit (nl_world_cast_rays,
+ *   nl_mesh_*...: refused from every task); from a generation's progress callback or a link-kind
+ *   plugin no other generation or update (INVALID_ARGUMENT, nl_navmesh_generate_links). Path
+ *   requests, link edits and reads of navmeshes and links are meant to be called from callbacks.
  * - Structs that may grow start with `uint32_t size`. Inputs: fill them from the nl_default_*_def()
  *   functions, which set it, then change the fields you need; a library newer than the header a
  *   host was built with reads only the `size` bytes the host has and gives later fields their
@@ -194,7 +195,8 @@ typedef void* nl_task_enqueue_fn(void* user, nl_task_fn* task, void* task_contex
  *  that calls into NavLink (ranges of NavLink's tasks are fine). NavLink marks the thread for that
  *  time: a level query or edit made from there fails with INTERNAL_ERROR instead of waiting on a
  *  lock the thread holds, and so does an agent call while nl_world_step waits ("Callbacks" at the
- *  top). */
+ *  top). It must return on the thread that called it (NavLink's locks belong to their thread: a
+ *  fiber scheduler must not move the waiting job to another thread). */
 typedef void nl_task_finish_fn(void* user, void* host_task);
 
 /** How to create a world. Get one from nl_default_world_def(). */
@@ -341,8 +343,9 @@ NL_API nl_status nl_mesh_add(nl_world* world, const nl_mesh_def* def, nl_mesh_id
  *  statements are ignored; a line ends at \n, \r\n or a lone \r) and registers it as one mesh. `path` is a borrowed NUL-terminated UTF-8
  *  path. `def` is optional (NULL = defaults): its flags, transform and user_data apply; its vertex
  *  and index fields must be empty.
+ *  The file is a regular file or a pipe (read until its writer closes it).
  *  Returns SUCCESS, or a failure with INVALID_ARGUMENT, NOT_FOUND (no such file), IO_ERROR (a
- *  directory, no permission, a read error), PARSE_ERROR (malformed: a number that is not a finite
+ *  directory, a device or a socket, no permission, a read error), PARSE_ERROR (malformed: a number that is not a finite
  *  float, a face index that is 0, past the last vertex (or vt, vn) or not an integer, no faces; the
  *  line is named), OUT_OF_MEMORY or INTERNAL_ERROR.
  *  Thread-safe, as nl_mesh_add. */
@@ -1629,7 +1632,8 @@ NL_API nl_status nl_agent_add(nl_world* world, const nl_agent_def* def, nl_agent
 /** Removes an agent. Returns SUCCESS or INVALID_HANDLE. Thread-safe. */
 NL_API nl_status nl_agent_remove(nl_world* world, nl_agent_id agent);
 
-/** Nonzero if `agent` is an agent of `world`. Thread-safe. */
+/** Nonzero if `agent` is an agent of `world`. Thread-safe; from a task callback during nl_world_step
+ *  it cannot look (the step holds the agents) and answers 0 ("Callbacks" at the top). */
 NL_API int32_t nl_agent_is_valid(const nl_world* world, nl_agent_id agent);
 
 /** Sends the agent to `point` (3 floats, borrowed), located at once on its navmesh, or else on a
