@@ -9,6 +9,10 @@ root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 "$root/scripts/setup.sh"
 
 jobs=$(nproc)
+# Every compile goes through ccache (CMake reads these for every configure, the install tests' own
+# included), so a rerun or a fresh clone of the same sources compiles nothing again; 10 GB holds the
+# three builds and the install tests' libraries.
+export CMAKE_C_COMPILER_LAUNCHER=ccache CMAKE_CXX_COMPILER_LAUNCHER=ccache CCACHE_MAXSIZE=10G CCACHE_BASEDIR="$root"
 # configure_and_build DIR [CMAKE OPTIONS...] [--target TARGET]...: configures and builds everything, or
 # only the TARGETs.
 configure_and_build() {

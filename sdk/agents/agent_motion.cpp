@@ -90,6 +90,37 @@ void fly(AgentBody& a, float dt) {
     a.emit(AgentEventKind::LinkFinished, AgentReason::None, link);
 }
 
+// Hexagonal packing's density: k discs fill a circle about sqrt(k / kPacking) radii wide.
+constexpr float kPacking = 0.9069f;
+
+// Whether bodies i and j were sent to one point (CrowdSnapshot::sharing_goal).
+bool shares_goal(uint32_t i, uint32_t j, const CrowdSnapshot& crowd) {
+    return crowd.sharing_goal[i] > 0 && crowd.sharing_goal[j] > 0 &&
+           distance_xz(crowd.goals[i], crowd.goals[j]) < crowd.radii[i] + crowd.radii[j];
+}
+
+// Whether a body `distance` from its destination arrives there among the bodies sent to the same
+// point: k bodies cannot all stand on it, but they fit in a circle of sqrt((k - 1) / kPacking) radii
+// around it (two: one radius each side). Within that circle, a body that touches one that is as near
+// to the point or nearer, and was sent there too or has arrived, has come as near as it can.
+bool arrived_among_others(const AgentBody& a, uint32_t self, const Vec3& goal, float distance, const CrowdSnapshot& crowd) {
+    const uint16_t sharing = crowd.sharing_goal[self];
+    if (sharing < 2) return false;
+    const float radius = a.def.capabilities.radius;
+    // Avoidance keeps a body from closing the last gap to a standing one: half a radius counts as
+    // touching here.
+    const float slack = std::max(kContact, 0.5f * radius);
+    if (distance > radius * std::sqrt(float(sharing - 1) / kPacking) + slack) return false;
+    bool blocked = false;
+    crowd.grid.visit(a.position, radius + crowd.max_radius + slack, [&](uint32_t j) {
+        if (blocked || j == self) return;
+        const float reach = radius + crowd.radii[j] + slack;
+        if (distance_xz(crowd.positions[j], a.position) >= reach) return;
+        blocked = (shares_goal(self, j, crowd) || crowd.arrived[j]) && distance_xz(crowd.positions[j], goal) <= distance + slack;
+    });
+    return blocked;
+}
+
 // Slows down to stop `distance` ahead: the speed from which max_acceleration stops in that distance.
 float braking_speed(const AgentBody& a, float distance) {
     return std::sqrt(2.0f * std::max(a.def.max_acceleration, 0.01f) * std::max(distance, 0.0f));
@@ -99,6 +130,21 @@ void decelerate(AgentBody& a, float dt) {
     const float speed = a.velocity.norm();
     const float slower = std::max(0.0f, speed - a.def.max_acceleration * dt);
     a.velocity = speed > 0.0f ? Vec3(a.velocity * (slower / speed)) : Vec3(Vec3::Zero());
+}
+
+// Giving way: a step back from where it was heading, at half its speed, out of the narrow place
+// (docs/agents.md, "Passing in narrow places").
+void back_off(AgentBody& a, float dt, const NavMesh& navmesh) {
+    const Vec3& target = a.path[a.next].position;
+    Vec3 away(a.position.x() - target.x(), 0.0f, a.position.z() - target.z());
+    const float length = away.norm();
+    a.velocity = length > 1e-6f ? Vec3(away * (0.5f * a.def.max_speed / length)) : Vec3(Vec3::Zero());
+    const SurfaceMove moved = move_along_surface(navmesh, a.polygon, a.position, a.position + a.velocity * dt);
+    const float above = a.position.y() - navmesh.surface_height(a.polygon, a.position.x(), a.position.z());
+    a.walked_since_landing += distance_xz(a.position, moved.position);
+    a.position = moved.position;
+    a.position.y() += above;
+    a.polygon = moved.polygon;
 }
 
 }  // namespace
@@ -126,6 +172,10 @@ void move_agent(AgentBody& a, uint32_t self, float dt, const NavMesh& navmesh, c
         }
         return;
     }
+    if (a.giving_way > 0.0f && !a.path.empty() && !a.at_takeoff) {
+        back_off(a, dt, navmesh);
+        return;
+    }
     if (a.state != AgentState::Walking || a.at_takeoff || a.path.empty()) {
         decelerate(a, dt);
         a.velocity = Vec3::Zero();  // standing agents do not drift over the surface
@@ -147,14 +197,15 @@ void move_agent(AgentBody& a, uint32_t self, float dt, const NavMesh& navmesh, c
     const bool takeoff = target.segment != kSegmentWalk;
     const float distance = distance_xz(a.position, target.position);
 
-    // A destination another body has arrived on is reached as near as the crowd there lets, as RTS
-    // units stop: against an arrived body that stands nearer to it (a cluster grows around it).
-    bool taken = false;
-    if (last && !takeoff && crowd.grounded[self]) {
+    // A destination others share, or another body has arrived on, is reached as near as the crowd
+    // there lets (docs/agents.md, "Arriving among others").
+    bool taken = last && !takeoff && crowd.grounded[self] && arrived_among_others(a, self, target.position, distance, crowd);
+    if (!taken && last && !takeoff && crowd.grounded[self]) {
         const float radius = a.def.capabilities.radius;
         bool against_crowd = false;
         crowd.grid.visit(a.position, radius + crowd.max_radius + kContact, [&](uint32_t j) {
-            against_crowd = against_crowd || (j != self && crowd.arrived[j] &&
+            // Bodies sent to the same point settle by arrived_among_others' bound instead.
+            against_crowd = against_crowd || (j != self && crowd.arrived[j] && !shares_goal(self, j, crowd) &&
                                               distance_xz(crowd.positions[j], a.position) < radius + crowd.radii[j] + kContact &&
                                               distance_xz(crowd.positions[j], target.position) < distance);
         });
@@ -205,6 +256,10 @@ void move_agent(AgentBody& a, uint32_t self, float dt, const NavMesh& navmesh, c
             size_t touching = 0;
             for (size_t k = 0; k < count; ++k) {
                 const uint32_t j = near[k];
+                // A body standing at its destination, or aside, makes room (overlaps.h): a walker goes
+                // its way and pushes it aside, instead of finding a wall of arrived bodies past a door
+                // (one sent to the same point stops as it touches it: arrived_among_others).
+                if (crowd.makes_room[j]) continue;
                 query.addCircle(crowd.positions[j].data(), crowd.radii[j], crowd.velocities[j].data(),
                                 crowd.velocities[j].data());
                 touching += distance_xz(crowd.positions[j], a.position) < radius + crowd.radii[j] + kContact;
@@ -225,31 +280,15 @@ void move_agent(AgentBody& a, uint32_t self, float dt, const NavMesh& navmesh, c
     a.velocity += change;
     a.velocity.y() = 0.0f;
 
-    // Separation: overlapping neighbours push each other apart by half the overlap (read from the
-    // snapshot, so the result does not depend on the order). Only the nearest few, as DetourCrowd
-    // resolves collisions: in a pile of hundreds every body would otherwise visit every other.
-    Vec3 push = Vec3::Zero();
-    for (size_t k = 0; k < count; ++k) {
-        const uint32_t j = near[k];
-        const Vec3 d(a.position.x() - crowd.positions[j].x(), 0.0f, a.position.z() - crowd.positions[j].z());
-        const float gap = d.norm(), reach = radius + crowd.radii[j];
-        if (gap >= reach) continue;
-        // Exactly on top of each other: apart along x, the lower index to the left.
-        const Vec3 away = gap > 1e-6f ? Vec3(d / gap) : Vec3(self < j ? -1.0f : 1.0f, 0.0f, 0.0f);
-        push += away * (0.5f * (reach - gap));
-    }
-
     const Vec3 before = a.position;
-    const SurfaceMove moved = move_along_surface(navmesh, a.polygon, before, before + a.velocity * dt + push);
+    const SurfaceMove moved = move_along_surface(navmesh, a.polygon, before, before + a.velocity * dt);
     a.position = moved.position;
     a.polygon = moved.polygon;
     a.walked_since_landing += distance_xz(before, moved.position);
     a.position.y() = eased_height(a, moved.position, target, distance_xz(moved.position, target.position));
     if (moved.blocked && dt > 0.0f) {
-        // Slid along a wall: keep only the velocity the wall left, never more than the body had. (The
-        // wall also stops the push it was given: taking that away as well from where it got to
-        // turned a push into a speed the other way, beyond max_speed in a crowd against a wall.)
-        const Vec3 went = moved.position - before - push;
+        // Slid along a wall: keep only the velocity the wall left, never more than the body had.
+        const Vec3 went = moved.position - before;
         Vec3 slid(went.x() / dt, 0.0f, went.z() / dt);
         const float had = a.velocity.norm(), speed = slid.norm();
         if (speed > had) slid = speed > 0.0f ? Vec3(slid * (had / speed)) : Vec3(Vec3::Zero());

@@ -52,6 +52,12 @@ struct AgentBody {
     uint32_t landing_polygon = 0;
     bool at_takeoff = false;
     bool off_path = false;  // pushed too far off its path in the last move
+    // Giving way (docs/agents.md, "Passing in narrow places"): how long it has walked without
+    // getting anywhere, and how long it still stands aside (WAITING) for another to pass.
+    float blocked_time = 0.0f;
+    float giving_way = 0.0f;
+    uint32_t progress_next = UINT32_MAX;  // the path point its progress is measured toward
+    float progress_best = 0.0f;           // the nearest it came to it (x-z)
 
     // How far the feet were off the navmesh surface on landing (a link ends on the level's floor,
     // which a Recast detail surface can stand a cell or two above), eased out over the first metre.

@@ -8,6 +8,7 @@
 #include "agents/agent_motion.h"
 #include "agents/agent_state.h"
 #include "agents/flight_check.h"
+#include "agents/giving_way.h"
 #include "agents/path_upkeep.h"
 #include "agents/route.h"
 #include "links/link_placement.h"
@@ -273,7 +274,8 @@ AgentInfo info_of(const AgentBody& a) {
     const SurfacePose pose = pose_of(a.frame);
     AgentInfo info;
     info.id = a.id;
-    info.state = a.state;
+    // Walking without getting anywhere (pressed in a crowd, queueing at a door): waiting for room.
+    info.state = a.state == AgentState::Walking && a.blocked_time >= kStuckSeconds ? AgentState::Waiting : a.state;
     info.reason = a.reason;
     info.position = pose.world_point(a.position);
     info.velocity = pose.world_vector(a.velocity);

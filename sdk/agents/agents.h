@@ -10,8 +10,9 @@
 //      system, each on the navmesh and links as they are now;
 //   3. move (parallel): each agent steers, avoids its neighbours and the walls (positions as they
 //      were at the start of the phase), moves over the surface, or flies its link;
-//   4. land_cross_flights (serial): bodies landed over a cross link go onto the landing navmesh;
-//   5. take_off (serial, in agent order): agents at a link's take-off check that the link is still
+//   4. separate (parallel): bodies on the ground that overlap are pushed apart over the surface;
+//   5. land_cross_flights (serial): bodies landed over a cross link go onto the landing navmesh;
+//   6. take_off (serial, in agent order): agents at a link's take-off check that the link is still
 //      there, enabled and within their body, and that its landing is clear, then take off or plan
 //      again.
 // Each agent writes only its own state in a parallel phase; events are gathered in agent order.
@@ -107,6 +108,7 @@ private:
     void check_against_world(Step& s);
     void plan_asked_paths(Step& s);
     void move(Step& s);
+    void separate(Step& s);
     void land_cross_flights(Step& s);
     void take_off(Step& s);
 

@@ -9,6 +9,8 @@
 #include "agents/agents.h"
 #include "agents/crowd.h"
 #include "agents/flight_check.h"
+#include "agents/giving_way.h"
+#include "agents/overlaps.h"
 #include "agents/path_upkeep.h"
 #include "agents/route.h"
 #include "links/link_placement.h"
@@ -76,6 +78,7 @@ void Agents::step(float dt, const NavMeshRegistry& navmeshes, const Level& level
     check_against_world(s);
     plan_asked_paths(s);
     move(s);
+    separate(s);
     land_cross_flights(s);
     take_off(s);
 
@@ -264,6 +267,22 @@ void Agents::move(Step& s) {
     });
 }
 
+// 4. (parallel) Bodies on the ground that overlap after the move are pushed apart, walkers, arrived,
+// waiting and failed bodies alike, space by space (overlaps.h).
+void Agents::separate(Step& s) {
+    std::vector<std::vector<OverlapBody>> spaces(s.crowds.size());
+    for (size_t i = 0; i < agents_.size(); ++i) {
+        AgentBody& a = agents_[i];
+        if (a.motion || a.landing_navmesh != Handle{}) continue;
+        const std::shared_ptr<const PathGraph> graph = s.current[i] ? s.current[i] : s.graph_of(a.def.navmesh);
+        if (!graph) continue;  // its navmesh was removed: it stands nowhere
+        const bool walking = a.state == AgentState::Walking && !a.at_takeoff;
+        spaces[s.space_of[i]].push_back({&a, &graph->navmesh(), walking ? 1.0f : kStandingGives});  // graph: in s.table
+    }
+    for (const std::vector<OverlapBody>& bodies : spaces) resolve_overlaps(bodies, s.dt, s.tasks);
+    decide_giving_way(agents_, s.space_of, s.index_in_space, s.crowds, s.dt);
+}
+
 // (serial) Landed over a cross link: onto the landing navmesh, in its space, and on from there.
 void Agents::land_cross_flights(Step& s) {
     for (size_t i = 0; i < agents_.size(); ++i) {
@@ -284,7 +303,7 @@ void Agents::land_cross_flights(Step& s) {
     }
 }
 
-// 4. (serial, in agent order) Take-offs: the link checked as it is now, and its landing clear.
+// 5. (serial, in agent order) Take-offs: the link checked as it is now, and its landing clear.
 void Agents::take_off(Step& s) {
     std::vector<uint32_t> flying;  // only bodies in the air can hold a landing
     for (uint32_t j = 0; j < agents_.size(); ++j)

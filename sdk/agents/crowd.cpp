@@ -38,6 +38,30 @@ void choose_first_at_takeoffs(const std::vector<const AgentBody*>& agents, Crowd
     for (const TakeoffClaim& c : claims) crowd.first_at_takeoff[c.agent] = 1;
 }
 
+// How many bodies share each body's destination (CrowdSnapshot::sharing_goal).
+void count_shared_goals(const std::vector<const AgentBody*>& agents, CrowdSnapshot& crowd) {
+    const size_t n = agents.size();
+    crowd.goals.resize(n);
+    crowd.sharing_goal.assign(n, 0);
+    std::vector<uint8_t> has_goal(n, 0);
+    for (size_t i = 0; i < n; ++i) {
+        const AgentBody& a = *agents[i];
+        has_goal[i] = a.has_destination && a.destination_navmesh == a.def.navmesh && !a.motion;
+        crowd.goals[i] = a.destination;
+    }
+    NeighbourGrid grid;
+    grid.build(crowd.goals, has_goal, std::max(crowd.max_radius * 2.0f, 0.5f));
+    for (size_t i = 0; i < n; ++i) {
+        if (!has_goal[i]) continue;
+        uint32_t count = 0;
+        grid.visit(crowd.goals[i], crowd.radii[i] + crowd.max_radius, [&](uint32_t j) {
+            const Vec3 d = crowd.goals[j] - crowd.goals[i];
+            count += std::hypot(d.x(), d.z()) < crowd.radii[i] + crowd.radii[j];
+        });
+        crowd.sharing_goal[i] = static_cast<uint16_t>(std::min<uint32_t>(count, UINT16_MAX));
+    }
+}
+
 }  // namespace
 
 void snapshot_crowd(const std::vector<const AgentBody*>& agents, CrowdSnapshot& crowd) {
@@ -47,6 +71,7 @@ void snapshot_crowd(const std::vector<const AgentBody*>& agents, CrowdSnapshot& 
     crowd.radii.resize(n);
     crowd.grounded.resize(n);
     crowd.arrived.resize(n);
+    crowd.makes_room.resize(n);
     crowd.max_radius = 0.0f;
     for (size_t i = 0; i < n; ++i) {
         const AgentBody& a = *agents[i];
@@ -57,6 +82,7 @@ void snapshot_crowd(const std::vector<const AgentBody*>& agents, CrowdSnapshot& 
         // whose navmesh was removed stands nowhere.
         crowd.grounded[i] = !a.motion && !(a.state == AgentState::Failed && a.reason == AgentReason::NavMeshRemoved);
         crowd.arrived[i] = a.state == AgentState::Arrived;
+        crowd.makes_room[i] = crowd.arrived[i] || a.giving_way > 0.0f;
         if (!crowd.grounded[i]) continue;
         crowd.max_radius = std::max(crowd.max_radius, crowd.radii[i]);
     }
@@ -65,6 +91,7 @@ void snapshot_crowd(const std::vector<const AgentBody*>& agents, CrowdSnapshot& 
     // as the avoidance range, 12 radii, held hundreds of bodies each in a dense crowd).
     crowd.grid.build(crowd.positions, crowd.grounded, std::max(crowd.max_radius * 3.0f, 0.5f));
     choose_first_at_takeoffs(agents, crowd);
+    count_shared_goals(agents, crowd);
 }
 
 }  // namespace nl

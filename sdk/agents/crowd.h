@@ -17,6 +17,14 @@ struct CrowdSnapshot {
     std::vector<float> radii;
     std::vector<uint8_t> grounded;  // on the ground, with avoidance on: others steer around it
     std::vector<uint8_t> arrived;   // standing at its destination
+    // Standing aside: arrived, or giving way to another. Walkers do not steer around these; they
+    // walk on and push them aside (overlaps.h), so a crowd that has arrived never walls a way off.
+    std::vector<uint8_t> makes_room;
+    // Its destination (in the space's coordinates) and how many bodies, itself included, are sent to
+    // one so near it that they cannot all stand there (their discs at the two destinations overlap):
+    // 0 for a body without a destination in this space.
+    std::vector<Vec3> goals;
+    std::vector<uint16_t> sharing_goal;
     // The nearest of the bodies close to one take-off (the lower index on a tie): it walks straight
     // onto the take-off point, the others make way, so that no two block each other there.
     std::vector<uint8_t> first_at_takeoff;

@@ -1,0 +1,26 @@
+// Who gives way in a narrow place (docs/agents.md, "Passing in narrow places"): walkers that press
+// against each other without getting anywhere would stand so for ever (two at a door's mouth, each
+// in the other's way). When walkers in contact have both been stuck a while, one of them stands aside
+// (WAITING, making room: others push it out of their way) for a moment while the other goes on.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "agents/agent_state.h"
+#include "agents/crowd.h"
+
+namespace nl {
+
+// A walker that has got no nearer its next path point by kProgressStep for kStuckSeconds is stuck:
+// a host reads it as WAITING (for room), and in contact with another stuck walker one gives way.
+constexpr float kProgressStep = 0.1f;
+constexpr float kStuckSeconds = 0.5f;
+
+// After a step's move: counts how long each walker has been stuck and picks those that give way;
+// ends the turns of those whose time is up. `crowds[space_of[i]]` holds agent i at index_in_space[i]
+// (positions as the move began). Serial, in agent order: the same for any thread count.
+void decide_giving_way(std::vector<AgentBody>& agents, const std::vector<uint32_t>& space_of,
+                       const std::vector<uint32_t>& index_in_space, const std::vector<CrowdSnapshot>& crowds, float dt);
+
+}  // namespace nl

@@ -1,0 +1,91 @@
+#include "agents/overlaps.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include "agents/neighbours.h"
+#include "navmesh/surface_walk.h"
+
+namespace nl {
+namespace {
+
+// Rounds of pushing: each halves most overlaps; four leave a pressed crowd a few millimetres deep,
+// as DetourCrowd's four iterations.
+constexpr int kRounds = 4;
+// The contacts a body is pushed by: its nearest, found once per step from where the move left them
+// (a round moves bodies by millimetres to centimetres: the same bodies stay nearest).
+constexpr size_t kContacts = 8;
+constexpr float kReachSlack = 0.1f;  // m: bodies this much apart may touch after the first rounds
+
+}  // namespace
+
+void resolve_overlaps(const std::vector<OverlapBody>& bodies, float dt, TaskSystem& tasks) {
+    const size_t n = bodies.size();
+    if (n < 2) return;
+    std::vector<Vec3> positions(n), next(n);
+    std::vector<uint32_t> polygons(n);
+    std::vector<uint8_t> everyone(n, 1);
+    float widest = 0.0f;
+    for (size_t i = 0; i < n; ++i) {
+        positions[i] = bodies[i].agent->position;
+        polygons[i] = bodies[i].agent->polygon;
+        widest = std::max(widest, bodies[i].agent->def.capabilities.radius);
+    }
+    NeighbourGrid grid;
+    grid.build(positions, everyone, std::max(widest * 3.0f, 0.5f));
+    std::vector<std::array<uint32_t, kContacts>> contacts(n);
+    std::vector<uint8_t> contact_count(n, 0);
+    bool any = false;
+    for (size_t i = 0; i < n; ++i) {
+        const float reach = bodies[i].agent->def.capabilities.radius + widest + kReachSlack;
+        contact_count[i] = static_cast<uint8_t>(grid.nearest(positions[i], reach, static_cast<uint32_t>(i), contacts[i].data(), kContacts));
+        any = any || contact_count[i] > 0;
+    }
+    if (!any) return;
+
+    for (int round = 0; round < kRounds; ++round) {
+        tasks.parallel_for(static_cast<uint32_t>(n), 64, [&](uint32_t begin, uint32_t end) {
+            for (uint32_t i = begin; i < end; ++i) {
+                const AgentBody& a = *bodies[i].agent;
+                Vec3 push = Vec3::Zero();
+                for (uint8_t k = 0; k < contact_count[i]; ++k) {
+                    const uint32_t j = contacts[i][k];
+                    const Vec3 d(positions[i].x() - positions[j].x(), 0.0f, positions[i].z() - positions[j].z());
+                    const float gap = d.norm(), reach = a.def.capabilities.radius + bodies[j].agent->def.capabilities.radius;
+                    if (gap >= reach) continue;
+                    // Exactly on top of each other: apart along x, the lower index to the left.
+                    const Vec3 away = gap > 1e-6f ? Vec3(d / gap) : Vec3(i < j ? -1.0f : 1.0f, 0.0f, 0.0f);
+                    push += away * ((reach - gap) * bodies[i].give / (bodies[i].give + bodies[j].give));
+                }
+                next[i] = positions[i];
+                if (push.squaredNorm() == 0.0f) continue;
+                const NavMesh& navmesh = *bodies[i].navmesh;
+                const SurfaceMove moved = move_along_surface(navmesh, polygons[i], positions[i], positions[i] + push);
+                // The feet keep their height over the surface (eased near a take-off or a landing).
+                const float above = positions[i].y() - navmesh.surface_height(polygons[i], positions[i].x(), positions[i].z());
+                next[i] = moved.position;
+                next[i].y() += above;
+                polygons[i] = moved.polygon;
+            }
+        });
+        positions.swap(next);
+    }
+    for (size_t i = 0; i < n; ++i) {
+        AgentBody& a = *bodies[i].agent;
+        const Vec3 moved(positions[i].x() - a.position.x(), 0.0f, positions[i].z() - a.position.z());
+        a.walked_since_landing += moved.norm();
+        a.position = positions[i];
+        a.polygon = polygons[i];
+        // A walker keeps only the velocity its contacts left it (as position-based dynamics update
+        // velocities): pressed on by others, it stops pressing into them, or the next step's move
+        // would sink it back as deep (a ring closing on its centre presses every body sideways, and
+        // no push along the ring undoes that).
+        if (a.state != AgentState::Walking || dt <= 0.0f) continue;
+        a.velocity += moved / dt;
+        const float speed = a.velocity.norm();
+        if (speed > a.def.max_speed) a.velocity *= a.def.max_speed / speed;
+    }
+}
+
+}  // namespace nl
