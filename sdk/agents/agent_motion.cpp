@@ -90,6 +90,34 @@ void fly(AgentBody& a, float dt) {
     a.emit(AgentEventKind::LinkFinished, AgentReason::None, link);
 }
 
+// Walkers meeting head-on both keep to their right (seen from above, y up: forward x up), so that
+// they pass on opposite sides and a two-way flow forms lanes, instead of both dodging the same way:
+// with another walker ahead within kOncomingRange coming the other way, the desired velocity turns
+// right by up to kKeepRight radians, the more the nearer it is. (Velocity obstacles alone are
+// symmetric: two bodies on one line choose mirror velocities and meet again.)
+constexpr float kOncomingRange = 4.0f;  // m
+constexpr float kKeepRight = 0.5f;      // rad
+Vec3 keep_right(const AgentBody& a, const Vec3& desired, const CrowdSnapshot& crowd, const uint32_t* near, size_t count) {
+    const float speed = desired.norm();
+    if (speed <= 0.0f) return desired;
+    const Vec3 forward = desired / speed;
+    float turn = 0.0f;
+    for (size_t k = 0; k < count; ++k) {
+        const uint32_t j = near[k];
+        if (crowd.makes_room[j]) continue;
+        const Vec3 ahead(crowd.positions[j].x() - a.position.x(), 0.0f, crowd.positions[j].z() - a.position.z());
+        const float along = ahead.dot(forward), distance = ahead.norm();
+        const Vec3& v = crowd.velocities[j];
+        const float towards = -(v.x() * forward.x() + v.z() * forward.z());  // its speed against our way
+        if (along <= 0.0f || distance > kOncomingRange || towards < 0.5f * std::hypot(v.x(), v.z()) || towards <= 0.0f) continue;
+        turn = std::max(turn, kKeepRight * (1.0f - distance / kOncomingRange));
+    }
+    if (turn <= 0.0f) return desired;
+    const Vec3 right(forward.z() * -1.0f, 0.0f, forward.x());  // forward x up, for y up: (-z, 0, x)
+    const Vec3 turned = forward * std::cos(turn) + right * std::sin(turn);
+    return turned * speed;
+}
+
 // Hexagonal packing's density: k discs fill a circle about sqrt(k / kPacking) radii wide.
 constexpr float kPacking = 0.9069f;
 
@@ -251,6 +279,7 @@ void move_agent(AgentBody& a, uint32_t self, float dt, const NavMesh& navmesh, c
         // by the surface move. A body on that eroded edge touches it, and DetourCrowd's sampling
         // takes a touched wall for an immediate collision: bodies rounding a corner would crawl.
         if (count > 0) {
+            desired = keep_right(a, desired, crowd, near.data(), count);
             dtObstacleAvoidanceQuery& query = avoidance_query();
             query.reset();
             size_t touching = 0;

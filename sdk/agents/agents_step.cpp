@@ -385,6 +385,8 @@ void Agents::take_off(Step& s) {
         }
         a.at_takeoff = false;
         a.motion = motion;
+        a.position = motion.from();  // it stopped within kStopReach of it: in the air it is on the curve
+        a.velocity = Vec3::Zero();
         a.motion_time = 0.0f;
         a.link = point.link;
         a.landing_polygon = point.reversed ? link.start_polygon : link.end_polygon;
@@ -414,11 +416,11 @@ bool Agents::take_off_across(AgentBody& a, const Link& link, Handle id, const Bo
     if (!flight_is_clear(motion, a.def.capabilities.radius, a.def.height, level,
                          motions_.motions(level.movable_meshes()), as_proven))
         return false;
-    a.position = from.pose.world_point(a.position);
     a.velocity = Vec3::Zero();
     a.frame.reset();  // in the air over no surface: world space until it lands
     a.at_takeoff = false;
     a.motion = motion;
+    a.position = motion.from();
     a.motion_time = 0.0f;
     a.link = id;
     a.landing_navmesh = link.landing_navmesh;

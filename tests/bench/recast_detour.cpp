@@ -12,7 +12,7 @@
 namespace nl::bench {
 
 RecastLevel build_recast_level(const std::string& name, const std::vector<float>& vertices,
-                               const std::vector<uint32_t>& indices) {
+                               const std::vector<uint32_t>& indices, float radius) {
     nl::recast::LevelTriangles triangles;
     triangles.vertices = vertices;
     triangles.indices = indices;
@@ -21,6 +21,7 @@ RecastLevel build_recast_level(const std::string& name, const std::vector<float>
     nl::recast::HostLogContext context(no_host);
     RecastLevel level;
     level.name = name;
+    if (radius > 0.0f) level.agent.radius = radius;
     level.solo = nl::recast::build_solo_mesh(context, triangles, level.settings, level.agent,
                                              nl::recast::BuildProgress(no_host));
     return level;

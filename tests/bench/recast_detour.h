@@ -24,9 +24,10 @@ struct RecastLevel {
     nl::recast::SoloMesh solo;
 };
 
-// Throws what the OBJ reader and the Recast pipeline throw.
+// Throws what the OBJ reader and the Recast pipeline throw. `radius`: the agent type's (0: the
+// default agent type's).
 RecastLevel build_recast_level(const std::string& name, const std::vector<float>& vertices,
-                               const std::vector<uint32_t>& indices);
+                               const std::vector<uint32_t>& indices, float radius = 0.0f);
 RecastLevel build_recast_level_from_obj(const char* path);  // named after the file's stem
 
 struct DetourMesh {

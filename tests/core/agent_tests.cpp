@@ -261,6 +261,24 @@ TEST_CASE("two agents walking head-on through a corridor pass each other without
     CHECK(closest > 0.5f);  // two 0.3 m bodies: 0.6 m apart when touching
 }
 
+TEST_CASE("at the step it takes off, an agent stands on its trajectory's start, and on the curve after") {
+    GapLevel g(1, false);
+    add_jump(g, false);
+    const Handle agent = g.add_agent(Vec3(1.0f, 0.0f, 2.0f), 3.0f);
+    g.world->agents().set_destination(g.world->navmeshes(), agent, Vec3(9.0f, 0.0f, 2.0f));
+    int in_air = 0;
+    for (int i = 0; i < 300 && g.world->agents().info(agent).state != AgentState::Arrived; ++i) {
+        g.world->step(1.0f / 30.0f);
+        const nl::Agents::Flight flight = g.world->agents().flight(agent);
+        if (!flight.motion) continue;
+        const Vec3 on_curve = flight.motion->at(flight.elapsed);
+        CHECK((g.world->agents().info(agent).position - on_curve).norm() < 1e-5f);
+        if (in_air++ == 0) CHECK((g.world->agents().info(agent).position - flight.motion->from()).norm() < 1e-5f);
+    }
+    CHECK(in_air > 0);
+    CHECK(g.world->agents().info(agent).state == AgentState::Arrived);
+}
+
 TEST_CASE("two agents at one link's take-off: one flies to the landing at a time") {
     GapLevel g(1, false);
     add_jump(g, false);

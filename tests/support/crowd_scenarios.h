@@ -20,6 +20,9 @@ struct CrowdAgent {
 struct CrowdScenario {
     std::string name;
     NavMeshInput navmesh;           // y = 0, eroded by `radius`
+    // The same place as level geometry (boxes: a floor 1 m thick, its top at y = 0, and walls 2.5 m
+    // high), for a navmesh built by Recast (the crowd bench, beside DetourCrowd).
+    std::vector<std::pair<Vec3, Vec3>> boxes;
     float radius = 0.6f;
     std::vector<CrowdAgent> agents;
     float seconds = 60.0f;          // everyone arrives within this
@@ -35,8 +38,11 @@ NavMeshInput rooms_with_door(float half, float door, float wall, float radius);
 // head-on; `quarter` puts the second at 90 degrees instead).
 CrowdScenario one_point(int count, float distance, bool quarter = false);
 // `per_side` agents on each side of a door, each sent to the other side (`both_ways` false: only the
-// first side goes).
-CrowdScenario door_counterflow(int per_side, float door, bool both_ways = true);
+// first side goes), bodies of `radius` (rows spaced to fit them).
+CrowdScenario door_counterflow(int per_side, float door, bool both_ways = true, float radius = 0.6f);
+// A corridor `width` metres wide and 30 m long, `per_end` agents at each end sent to the other end
+// (`crossing`: a second corridor across its middle at 90 degrees, its agents crossing too).
+CrowdScenario corridor(int per_end, float width, bool crossing);
 
 // What a run of a scenario measured.
 struct CrowdOutcome {

@@ -1,0 +1,294 @@
+// navlink-bench-crowds [--threads 1|2] [--only NAME]: NavLink's agents against DetourCrowd in crowd
+// scenarios with known answers (tests/support/crowd_scenarios.h), side by side in one run.
+//
+// What is compared, exactly:
+// - The place: each scenario's boxes (a floor 1 m thick, walls 2.5 m high), built by the built-in
+//   Recast builder's pipeline with default settings and agent type (radius 0.6 m, height 2 m; the
+//   bottleneck scenarios radius 0.25 m, people's size in the published experiments); the
+//   same polygon mesh goes to NavLink (nl_navmesh_add) and to Detour (dtCreateNavMeshData), as in
+//   navlink-bench-agents (recast_detour.h).
+// - The agents: the scenario's starts and goals, bodies of the navmesh's radius and height, max speed
+//   3.5 m/s and acceleration 8 m/s^2 (nl_default_agent_def's) on both sides. NavLink: a world of
+//   --threads workers (default 1), agents with avoidance on. DetourCrowd: RecastDemo's crowd tool
+//   flags (anticipate turns, optimise visibility and topology, obstacle avoidance), its default
+//   avoidance parameters, collision query range 12 radii, path optimisation range 30 radii.
+// - Steps of 1/30 s for the scenario's time, each side's step timed alone (nl_world_step,
+//   dtCrowd::update).
+//
+// One row per scenario and side:
+//   arrived: agents that arrived at least once. NavLink: NL_AGENT_EVENT_ARRIVED. DetourCrowd has no
+//     arrival: an agent counts as arrived when it is within 0.1 m of its target, or slower than
+//     0.1 m/s within the circle its goal's group packs into (r * sqrt((k - 1) / 0.9069) plus half a
+//     radius, k the agents sent to the same point): the same bound NavLink's arrival rule keeps.
+//   stuck: agents that, not yet arrived, went 5 s without getting 0.1 m nearer their goal.
+//   all_by: seconds until every agent had arrived ("-" if some never did).
+//   deepest, mean: overlap of two bodies (the sum of radii less their distance, x-z), over every
+//     overlapping pair of every step, metres.
+//   flow: for the door scenarios, bodies through the door per metre of its width per second, from the
+//     first to the last crossing of its middle.
+//   us_step: microseconds per agent-step (the steps' total wall time over steps times agents).
+#include <DetourCommon.h>
+#include <DetourCrowd.h>
+#include <navlink/navlink.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "clock.h"
+#include "crowd_scenarios.h"
+#include "level_generator.h"
+#include "recast_detour.h"
+
+namespace {
+
+using nl::test::CrowdScenario;
+
+constexpr float kDt = 1.0f / 30.0f;
+constexpr float kArrive = 0.1f;     // m, x-z
+constexpr float kProgress = 0.1f;   // m
+constexpr float kStuck = 5.0f;      // s
+constexpr float kStill = 0.1f;      // m/s
+constexpr float kHalfExtents[3] = {2.0f, 4.0f, 2.0f};
+
+struct Outcome {
+    int arrived = 0, stuck = 0, agents = 0;
+    float all_by = -1.0f, deepest = 0.0f, mean = 0.0f, flow = -1.0f;
+    double us_step = 0.0;
+};
+
+// What both sides measure the same way, step by step, from positions and velocities.
+struct Tally {
+    const CrowdScenario* scenario;
+    float door = 0.0f;  // metres; 0: not a door scenario
+    std::vector<uint8_t> arrived, stuck;
+    std::vector<float> best, since, tolerance;
+    std::vector<float> side;  // the sign of x at the start: a crossing of x = 0 flips it
+    std::vector<float> crossings;
+    double overlap_sum = 0.0;
+    long overlaps = 0;
+    Outcome out;
+
+    explicit Tally(const CrowdScenario& s, float door_width) : scenario(&s), door(door_width) {
+        const size_t n = s.agents.size();
+        arrived.assign(n, 0);
+        stuck.assign(n, 0);
+        since.assign(n, 0.0f);
+        for (size_t i = 0; i < n; ++i) {
+            const auto& a = s.agents[i];
+            best.push_back(std::hypot(a.start.x() - a.goal.x(), a.start.z() - a.goal.z()));
+            side.push_back(a.start.x() < 0 ? -1.0f : 1.0f);
+            int k = 0;
+            for (const auto& b : s.agents) k += std::hypot(a.goal.x() - b.goal.x(), a.goal.z() - b.goal.z()) < 2 * s.radius;
+            tolerance.push_back(k > 1 ? s.radius * std::sqrt(float(k - 1) / 0.9069f) + 0.5f * s.radius : kArrive);
+        }
+        out.agents = int(n);
+    }
+
+    // Positions and velocities (x y z each) after the step ending at `now`; `says_arrived[i]`: the
+    // side's own word (NavLink's event), or -1 for the geometric rule.
+    void add(float now, const std::vector<float>& positions, const std::vector<float>& velocities,
+             const std::vector<int>& says_arrived) {
+        const CrowdScenario& s = *scenario;
+        const size_t n = s.agents.size();
+        for (size_t i = 0; i < n; ++i) {
+            const float* p = &positions[3 * i];
+            const float d = std::hypot(p[0] - s.agents[i].goal.x(), p[2] - s.agents[i].goal.z());
+            const float speed = std::hypot(velocities[3 * i], velocities[3 * i + 2]);
+            const bool here = says_arrived[i] >= 0 ? says_arrived[i] == 1 : (d < kArrive || (d < tolerance[i] && speed < kStill));
+            if (here) arrived[i] = 1;
+            if (d < best[i] - kProgress || arrived[i]) best[i] = std::min(best[i], d), since[i] = now;
+            if (!arrived[i] && now - since[i] > kStuck) stuck[i] = 1;
+            if (door > 0.0f && (p[0] < 0 ? -1.0f : 1.0f) != side[i]) side[i] = -side[i], crossings.push_back(now);
+            for (size_t j = i + 1; j < n; ++j) {
+                const float* q = &positions[3 * j];
+                const float overlap = 2 * s.radius - std::hypot(p[0] - q[0], p[2] - q[2]);
+                if (overlap <= 0.0f) continue;
+                out.deepest = std::max(out.deepest, overlap);
+                overlap_sum += overlap;
+                ++overlaps;
+            }
+        }
+        if (out.all_by < 0 && std::count(arrived.begin(), arrived.end(), 1) == long(n)) out.all_by = now;
+    }
+
+    Outcome finish(double total_ms, int steps) {
+        out.arrived = int(std::count(arrived.begin(), arrived.end(), 1));
+        out.stuck = int(std::count(stuck.begin(), stuck.end(), 1));
+        out.mean = overlaps ? float(overlap_sum / double(overlaps)) : 0.0f;
+        if (door > 0.0f && crossings.size() > 1)
+            out.flow = float(crossings.size() - 1) / (crossings.back() - crossings.front()) / door;
+        out.us_step = 1000.0 * total_ms / double(steps) / double(std::max<size_t>(1, scenario->agents.size()));
+        return out;
+    }
+};
+
+bool run_navlink(const nl::bench::RecastLevel& level, const CrowdScenario& s, int threads, Tally& tally) {
+    nl_world_def def = nl_default_world_def();
+    def.worker_count = threads;
+    def.path_worker_count = 0;
+    nl_world* world = nullptr;
+    if (NL_FAILED(nl_world_create(&def, &world))) return false;
+    nl_navmesh_id navmesh{};
+    uint32_t polygons = 0;
+    bool ok = nl::bench::add_navlink_navmesh(world, level, &navmesh, &polygons);
+    const size_t n = s.agents.size();
+    std::vector<nl_agent_id> ids(n);
+    for (size_t i = 0; ok && i < n; ++i) {
+        nl_agent_def agent = nl_default_agent_def();
+        agent.navmesh = navmesh;
+        agent.height = level.agent.height;
+        agent.capabilities.radius = level.agent.radius;
+        agent.user_data = i;
+        std::memcpy(agent.position, s.agents[i].start.data(), sizeof agent.position);
+        ok = NL_SUCCEEDED(nl_agent_add(world, &agent, &ids[i])) && NL_SUCCEEDED(nl_agent_set_destination(world, ids[i], s.agents[i].goal.data()));
+    }
+    if (!ok) std::fprintf(stderr, "navlink-bench-crowds: %s: NavLink: %s\n", s.name.c_str(), nl_get_last_error_message());
+    std::vector<float> positions(3 * n), velocities(3 * n);
+    std::vector<int> says(n, 0);
+    std::vector<nl_agent_info> infos(n, nl_agent_info_init());
+    std::vector<nl_agent_event> events;
+    double total = 0.0;
+    const int steps = int(s.seconds / kDt);
+    for (int step = 1; ok && step <= steps; ++step) {
+        const double t0 = nl::samples::now_ms();
+        nl_world_step(world, kDt);
+        total += nl::samples::now_ms() - t0;
+        uint32_t count = 0;
+        nl_world_get_agent_events(world, nullptr, 0, &count);
+        events.assign(count, nl_agent_event_init());
+        if (count) nl_world_get_agent_events(world, events.data(), count, &count);
+        for (const nl_agent_event& e : events)
+            if (e.kind == NL_AGENT_EVENT_ARRIVED) says[e.user_data] = 1;
+        infos[0] = nl_agent_info_init();
+        nl_world_get_agents(world, infos.data(), uint32_t(n), &count);
+        for (size_t i = 0; i < n; ++i) {
+            std::memcpy(&positions[3 * i], infos[i].position, 3 * sizeof(float));
+            std::memcpy(&velocities[3 * i], infos[i].velocity, 3 * sizeof(float));
+        }
+        tally.add(float(step) * kDt, positions, velocities, says);
+    }
+    nl_world_destroy(world);
+    tally.out.us_step = total;  // finished below
+    return ok;
+}
+
+bool run_detour_crowd(nl::bench::RecastLevel& level, const CrowdScenario& s, Tally& tally, double& total) {
+    nl::bench::DetourMesh detour;
+    if (!nl::bench::build_detour(level, detour)) return false;
+    dtCrowd* crowd = dtAllocCrowd();
+    const size_t n = s.agents.size();
+    bool ok = crowd && crowd->init(int(n), level.agent.radius, detour.mesh);
+    dtCrowdAgentParams params{};
+    params.radius = level.agent.radius;
+    params.height = level.agent.height;
+    const nl_agent_def defaults = nl_default_agent_def();
+    params.maxAcceleration = defaults.max_acceleration;
+    params.maxSpeed = defaults.max_speed;
+    params.collisionQueryRange = params.radius * 12.0f;
+    params.pathOptimizationRange = params.radius * 30.0f;
+    params.separationWeight = 2.0f;
+    params.updateFlags = DT_CROWD_ANTICIPATE_TURNS | DT_CROWD_OPTIMIZE_VIS | DT_CROWD_OPTIMIZE_TOPO | DT_CROWD_OBSTACLE_AVOIDANCE;
+    const dtQueryFilter filter;
+    for (size_t i = 0; ok && i < n; ++i) {
+        float nearest[3], target[3];
+        dtPolyRef ref = 0, goal = 0;
+        detour.query->findNearestPoly(s.agents[i].start.data(), kHalfExtents, &filter, &ref, nearest);
+        detour.query->findNearestPoly(s.agents[i].goal.data(), kHalfExtents, &filter, &goal, target);
+        ok = ref && goal && crowd->addAgent(nearest, &params) == int(i) && crowd->requestMoveTarget(int(i), goal, target);
+    }
+    if (!ok) std::fprintf(stderr, "navlink-bench-crowds: %s: DetourCrowd would not take the agents\n", s.name.c_str());
+    std::vector<float> positions(3 * n), velocities(3 * n);
+    const std::vector<int> geometric(n, -1);
+    const int steps = int(s.seconds / kDt);
+    for (int step = 1; ok && step <= steps; ++step) {
+        const double t0 = nl::samples::now_ms();
+        crowd->update(kDt, nullptr);
+        total += nl::samples::now_ms() - t0;
+        for (size_t i = 0; i < n; ++i) {
+            const dtCrowdAgent* a = crowd->getAgent(int(i));
+            std::memcpy(&positions[3 * i], a->npos, 3 * sizeof(float));
+            std::memcpy(&velocities[3 * i], a->vel, 3 * sizeof(float));
+        }
+        tally.add(float(step) * kDt, positions, velocities, geometric);
+    }
+    dtFreeCrowd(crowd);
+    return ok;
+}
+
+std::string figure(float value, const char* format) {
+    if (value < 0) return "-";
+    char text[32];
+    std::snprintf(text, sizeof text, format, double(value));
+    return text;
+}
+
+void print(const char* side, const Outcome& o) {
+    std::printf("  %-11s %3d/%-3d arrived %3d stuck  all_by %6s s  deepest %.3f m  mean %.3f m  flow %5s /m/s  %6.2f us/agent-step\n",
+                side, o.arrived, o.agents, o.stuck, figure(o.all_by, "%.1f").c_str(), double(o.deepest), double(o.mean),
+                figure(o.flow, "%.2f").c_str(), o.us_step);
+}
+
+struct Case {
+    CrowdScenario scenario;
+    float door = 0.0f;
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    int threads = 1;
+    std::string only;
+    for (int i = 1; i + 1 < argc; i += 2) {
+        const std::string name = argv[i];
+        if (name == "--threads") threads = std::atoi(argv[i + 1]);
+        else if (name == "--only") only = argv[i + 1];
+        else {
+            std::fprintf(stderr, "usage: navlink-bench-crowds [--threads 1|2] [--only NAME]\n");
+            return 2;
+        }
+    }
+    std::vector<Case> cases;
+    cases.push_back({nl::test::one_point(2, 8.0f)});
+    cases.push_back({nl::test::one_point(2, 8.0f, true)});
+    cases.push_back({nl::test::one_point(8, 8.0f)});
+    cases.push_back({nl::test::one_point(24, 10.0f)});
+    for (const int per_side : {3, 10, 50}) cases.push_back({nl::test::door_counterflow(per_side, 2.0f), 2.0f});
+    cases.push_back({nl::test::door_counterflow(50, 2.0f, false), 2.0f});
+    cases.push_back({nl::test::corridor(10, 5.0f, false)});
+    cases.push_back({nl::test::corridor(10, 5.0f, true)});
+    // Bottlenecks as in the published experiments (Seyfried et al. 2009, Kretz et al. 2006): people
+    // about 0.5 m across (radius 0.25 m here), doors 1.2 to 3 m, 50 through one way.
+    for (const float width : {1.2f, 1.6f, 2.0f, 2.5f, 3.0f}) {
+        Case c{nl::test::door_counterflow(50, width, false, 0.25f), width};
+        c.scenario.name += ", radius 0.25 m, door " + figure(width, "%.1f") + " m";
+        cases.push_back(c);
+    }
+    std::printf("navlink-bench-crowds: NavLink on %d thread%s against DetourCrowd, steps of 1/30 s, bodies of radius 0.6 m "
+                "unless said\n",
+                threads, threads == 1 ? "" : "s");
+    int failures = 0;
+    for (Case& c : cases) {
+        const CrowdScenario& s = c.scenario;
+        if (!only.empty() && s.name.find(only) == std::string::npos) continue;
+        nl::levelgen::GeneratedLevel geometry;
+        for (const auto& [lo, hi] : s.boxes) geometry.add_box({{lo.x(), lo.y(), lo.z()}, {hi.x(), hi.y(), hi.z()}});
+        nl::bench::RecastLevel level = nl::bench::build_recast_level(s.name, geometry.positions, geometry.indices, s.radius);
+        Tally nl_tally(s, c.door), dc_tally(s, c.door);
+        double dc_ms = 0.0;
+        if (!run_navlink(level, s, threads, nl_tally) || !run_detour_crowd(level, s, dc_tally, dc_ms)) {
+            ++failures;
+            continue;
+        }
+        const int steps = int(s.seconds / kDt);
+        const Outcome nl_outcome = nl_tally.finish(nl_tally.out.us_step, steps), dc_outcome = dc_tally.finish(dc_ms, steps);
+        std::printf("%s (%zu agents, %.0f s)\n", s.name.c_str(), s.agents.size(), double(s.seconds));
+        print("NavLink", nl_outcome);
+        print("DetourCrowd", dc_outcome);
+        std::fflush(stdout);
+    }
+    return failures ? 1 : 0;
+}
