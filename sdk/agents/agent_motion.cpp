@@ -257,9 +257,13 @@ void move_agent(AgentBody& a, uint32_t self, float dt, const NavMesh& navmesh, c
         return;
     }
 
-    // Pushed off the stretch it walks (by other agents): plan again from where it stands.
+    // Pushed off the stretch it walks (by other agents): while it still sees the point it heads for
+    // (a straight walk over the surface), its path holds from where it stands, as Detour's corridor
+    // re-anchors on the polygon it was pushed onto; behind a wall now, it plans again from there.
     const Vec3& from = a.next > 0 ? path[a.next - 1].position : a.position;
-    if (distance_to_segment_xz(a.position, from, target.position) > a.def.capabilities.radius + kOffPathSlack) a.off_path = true;
+    if (distance_to_segment_xz(a.position, from, target.position) > a.def.capabilities.radius + kOffPathSlack &&
+        !straight_walk_clear(navmesh, a.polygon, a.position, target.position))
+        a.off_path = true;
 
     // Desired velocity: toward the target at full speed, braking for a stop.
     Vec3 toward(target.position.x() - a.position.x(), 0.0f, target.position.z() - a.position.z());

@@ -7,6 +7,7 @@ namespace {
 
 constexpr float kGivingWaySeconds = 1.5f;  // it stands aside this long, then walks on
 constexpr float kContactSlack = 0.5f;   // of its radius: this near another body counts as contact
+constexpr float kStraightInto = 0.9f;   // cosine: a body this near straight ahead is in the way
 
 // Walking on the ground toward a point (not standing at a take-off, not in the air).
 bool walking(const AgentBody& a) { return a.state == AgentState::Walking && !a.at_takeoff && !a.motion && !a.path.empty(); }
@@ -65,7 +66,8 @@ void decide_giving_way(std::vector<AgentBody>& agents, const std::vector<uint32_
             const Vec3 d(crowd.positions[k].x() - crowd.positions[self].x(), 0.0f, crowd.positions[k].z() - crowd.positions[self].z());
             if (d.norm() >= radius + b.def.capabilities.radius + slack) return;
             if (b.giving_way > 0.0f) {
-                gives[i] = heading.dot(d) > 0.0f;  // pressing into one that stands aside
+                // Pressing straight into one that stands aside (it is in the way ahead, not beside).
+                gives[i] = heading.dot(d) > kStraightInto * heading.norm() * d.norm();
                 return;
             }
             if (b.blocked_time < kStuckSeconds) return;

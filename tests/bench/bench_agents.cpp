@@ -75,6 +75,8 @@
 
 #include "clock.h"
 #include "level_generator.h"
+#include "destinations.h"
+#include "crowd_params.h"
 #include "recast_detour.h"
 #include "spread.h"
 
@@ -94,36 +96,6 @@ struct Options {
     bool nl1 = true, nl2 = true, dcrowd = true;
     uint32_t paths_per_step = 0;  // NavLink's agent_paths_per_step; 0: the world's default
     bool verbose = false;  // NavLink's event counts, both sides' mean speed and distance left, on stderr
-};
-
-// Agent i's k-th point (k = 0: its start), the same for every side.
-struct Destinations {
-    const rcPolyMesh* pm = nullptr;
-    std::vector<int> polygons;  // the largest connected part
-    uint32_t seed = 0;
-
-    void point(uint32_t agent, uint32_t k, float out[3]) const {
-        std::seed_seq sequence{seed, agent, k};
-        std::mt19937 rng(sequence);
-        std::uniform_int_distribution<size_t> pick(0, polygons.size() - 1);
-        nl::bench::random_point_in_polygon(*pm, polygons[pick(rng)], rng, out);
-    }
-
-    // The x-z area of the part, m^2 (how crowded `count` bodies make it).
-    double area() const {
-        double total = 0.0;
-        for (const int p : polygons) {
-            const unsigned short* poly = &pm->polys[size_t(p) * 2 * pm->nvp];
-            int n = 0;
-            while (n < pm->nvp && poly[n] != RC_MESH_NULL_IDX) ++n;
-            for (int k = 1; k + 1 < n; ++k) {
-                const unsigned short *a = &pm->verts[3 * poly[0]], *b = &pm->verts[3 * poly[k]], *c = &pm->verts[3 * poly[k + 1]];
-                const double abx = b[0] - a[0], abz = b[2] - a[2], acx = c[0] - a[0], acz = c[2] - a[2];
-                total += 0.5 * std::fabs(abx * acz - abz * acx) * pm->cs * pm->cs;
-            }
-        }
-        return total;
-    }
 };
 
 bool fail(const std::string& level, const char* what) {
@@ -148,7 +120,7 @@ struct NavLinkSide {
     NavLinkSide& operator=(const NavLinkSide&) = delete;
     ~NavLinkSide() { nl_world_destroy(world); }
 
-    bool setup(const nl::bench::RecastLevel& level, int workers, int count, const Destinations& where,
+    bool setup(const nl::bench::RecastLevel& level, int workers, int count, const nl::bench::Destinations& where,
                uint32_t paths_per_step) {
         nl_world_def def = nl_default_world_def();
         def.worker_count = workers;
@@ -174,7 +146,7 @@ struct NavLinkSide {
 
     // Sends agent i to its next destination (one off the navmesh, which cannot happen with points
     // drawn on it, is counted and skipped).
-    void send(uint32_t i, const Destinations& where) {
+    void send(uint32_t i, const nl::bench::Destinations& where) {
         for (int attempt = 0; attempt < 4; ++attempt) {
             float goal[3];
             where.point(i, trips[i]++, goal);
@@ -183,7 +155,7 @@ struct NavLinkSide {
         }
     }
 
-    void step(float dt, bool timed, const Destinations& where) {
+    void step(float dt, bool timed, const nl::bench::Destinations& where) {
         const double t0 = nl::samples::now_ms();
         nl_world_step(world, dt);
         const double t1 = nl::samples::now_ms();
@@ -240,21 +212,10 @@ struct DetourCrowdSide {
     DetourCrowdSide& operator=(const DetourCrowdSide&) = delete;
     ~DetourCrowdSide() { dtFreeCrowd(crowd); }
 
-    bool setup(const nl::bench::RecastLevel& level, const nl::bench::DetourMesh& detour, int count, const Destinations& where) {
+    bool setup(const nl::bench::RecastLevel& level, const nl::bench::DetourMesh& detour, int count, const nl::bench::Destinations& where) {
         mesh = &detour;
         if (!crowd || !crowd->init(count, level.agent.radius, detour.mesh)) return fail(level.name, "dtCrowd::init");
-        dtCrowdAgentParams params{};
-        params.radius = level.agent.radius;
-        params.height = level.agent.height;
-        const nl_agent_def defaults = nl_default_agent_def();
-        params.maxAcceleration = defaults.max_acceleration;
-        params.maxSpeed = defaults.max_speed;
-        params.collisionQueryRange = params.radius * 12.0f;
-        params.pathOptimizationRange = params.radius * 30.0f;
-        params.separationWeight = 2.0f;
-        params.updateFlags = DT_CROWD_ANTICIPATE_TURNS | DT_CROWD_OPTIMIZE_VIS | DT_CROWD_OPTIMIZE_TOPO | DT_CROWD_OBSTACLE_AVOIDANCE;
-        params.obstacleAvoidanceType = 0;
-        params.queryFilterType = 0;
+        const dtCrowdAgentParams params = nl::bench::detour_crowd_agent(level);
         trips.assign(count, 1);
         const dtQueryFilter filter;
         for (int i = 0; i < count; ++i) {
@@ -271,7 +232,7 @@ struct DetourCrowdSide {
         return true;
     }
 
-    void send(uint32_t i, const Destinations& where) {
+    void send(uint32_t i, const nl::bench::Destinations& where) {
         const dtQueryFilter filter;
         for (int attempt = 0; attempt < 4; ++attempt) {
             float goal[3], nearest[3];
@@ -283,7 +244,7 @@ struct DetourCrowdSide {
         }
     }
 
-    void step(float dt, bool timed, const Destinations& where) {
+    void step(float dt, bool timed, const nl::bench::Destinations& where) {
         const double t0 = nl::samples::now_ms();
         crowd->update(dt, nullptr);
         const double t1 = nl::samples::now_ms();
@@ -332,7 +293,7 @@ bool run(nl::bench::RecastLevel& level, uint32_t seed, const Options& options) {
         std::fprintf(stderr, "navlink-bench-agents: %s: Detour could not build its navmesh\n", level.name.c_str());
         return false;
     }
-    Destinations where;
+    nl::bench::Destinations where;
     where.pm = level.solo.polygons.get();
     where.polygons = nl::bench::largest_connected_polygons(*level.solo.polygons);
     where.seed = seed;

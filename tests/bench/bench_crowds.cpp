@@ -1,5 +1,9 @@
-// navlink-bench-crowds [--threads 1|2] [--only NAME]: NavLink's agents against DetourCrowd in crowd
-// scenarios with known answers (tests/support/crowd_scenarios.h), side by side in one run.
+// navlink-bench-crowds [--threads 1|2] [--only NAME] [--seconds S] [--covers P,P,...] [LEVEL.obj...]:
+// NavLink's agents against DetourCrowd in crowd scenarios with known answers
+// (tests/support/crowd_scenarios.h), and with random destinations on real levels at P% of the walkable
+// area covered by bodies (default 5, 10, 20 and 40)
+// (S seconds each, default 60; each agent sent on to its next point when it arrives), side by side in
+// one run. On a level, "never arrived" counts the agents that reached none of their destinations.
 //
 // What is compared, exactly:
 // - The place: each scenario's boxes (a floor 1 m thick, walls 2.5 m high), built by the built-in
@@ -35,12 +39,16 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <sstream>
 #include <string>
 #include <vector>
 
 #include "clock.h"
+#include "agents/neighbours.h"
 #include "crowd_scenarios.h"
+#include "destinations.h"
 #include "level_generator.h"
+#include "crowd_params.h"
 #include "recast_detour.h"
 
 namespace {
@@ -126,6 +134,20 @@ struct Tally {
     }
 };
 
+// One NavLink step of kDt, timed alone; then its events and every agent's state. Returns its ms.
+double step_navlink(nl_world* world, std::vector<nl_agent_event>& events, std::vector<nl_agent_info>& infos) {
+    const double t0 = nl::samples::now_ms();
+    nl_world_step(world, kDt);
+    const double ms = nl::samples::now_ms() - t0;
+    uint32_t count = 0;
+    nl_world_get_agent_events(world, nullptr, 0, &count);
+    events.assign(count, nl_agent_event_init());
+    if (count) nl_world_get_agent_events(world, events.data(), count, &count);
+    infos[0] = nl_agent_info_init();
+    nl_world_get_agents(world, infos.data(), uint32_t(infos.size()), &count);
+    return ms;
+}
+
 bool run_navlink(const nl::bench::RecastLevel& level, const CrowdScenario& s, int threads, Tally& tally) {
     nl_world_def def = nl_default_world_def();
     def.worker_count = threads;
@@ -154,17 +176,9 @@ bool run_navlink(const nl::bench::RecastLevel& level, const CrowdScenario& s, in
     double total = 0.0;
     const int steps = int(s.seconds / kDt);
     for (int step = 1; ok && step <= steps; ++step) {
-        const double t0 = nl::samples::now_ms();
-        nl_world_step(world, kDt);
-        total += nl::samples::now_ms() - t0;
-        uint32_t count = 0;
-        nl_world_get_agent_events(world, nullptr, 0, &count);
-        events.assign(count, nl_agent_event_init());
-        if (count) nl_world_get_agent_events(world, events.data(), count, &count);
+        total += step_navlink(world, events, infos);
         for (const nl_agent_event& e : events)
             if (e.kind == NL_AGENT_EVENT_ARRIVED) says[e.user_data] = 1;
-        infos[0] = nl_agent_info_init();
-        nl_world_get_agents(world, infos.data(), uint32_t(n), &count);
         for (size_t i = 0; i < n; ++i) {
             std::memcpy(&positions[3 * i], infos[i].position, 3 * sizeof(float));
             std::memcpy(&velocities[3 * i], infos[i].velocity, 3 * sizeof(float));
@@ -176,22 +190,26 @@ bool run_navlink(const nl::bench::RecastLevel& level, const CrowdScenario& s, in
     return ok;
 }
 
+// One DetourCrowd update of kDt, timed alone; then every agent's position and velocity. Returns its ms.
+double step_detour_crowd(dtCrowd* crowd, std::vector<float>& positions, std::vector<float>& velocities) {
+    const double t0 = nl::samples::now_ms();
+    crowd->update(kDt, nullptr);
+    const double ms = nl::samples::now_ms() - t0;
+    for (size_t i = 0; 3 * i < positions.size(); ++i) {
+        const dtCrowdAgent* a = crowd->getAgent(int(i));
+        std::memcpy(&positions[3 * i], a->npos, 3 * sizeof(float));
+        std::memcpy(&velocities[3 * i], a->vel, 3 * sizeof(float));
+    }
+    return ms;
+}
+
 bool run_detour_crowd(nl::bench::RecastLevel& level, const CrowdScenario& s, Tally& tally, double& total) {
     nl::bench::DetourMesh detour;
     if (!nl::bench::build_detour(level, detour)) return false;
     dtCrowd* crowd = dtAllocCrowd();
     const size_t n = s.agents.size();
     bool ok = crowd && crowd->init(int(n), level.agent.radius, detour.mesh);
-    dtCrowdAgentParams params{};
-    params.radius = level.agent.radius;
-    params.height = level.agent.height;
-    const nl_agent_def defaults = nl_default_agent_def();
-    params.maxAcceleration = defaults.max_acceleration;
-    params.maxSpeed = defaults.max_speed;
-    params.collisionQueryRange = params.radius * 12.0f;
-    params.pathOptimizationRange = params.radius * 30.0f;
-    params.separationWeight = 2.0f;
-    params.updateFlags = DT_CROWD_ANTICIPATE_TURNS | DT_CROWD_OPTIMIZE_VIS | DT_CROWD_OPTIMIZE_TOPO | DT_CROWD_OBSTACLE_AVOIDANCE;
+    const dtCrowdAgentParams params = nl::bench::detour_crowd_agent(level);
     const dtQueryFilter filter;
     for (size_t i = 0; ok && i < n; ++i) {
         float nearest[3], target[3];
@@ -205,14 +223,7 @@ bool run_detour_crowd(nl::bench::RecastLevel& level, const CrowdScenario& s, Tal
     const std::vector<int> geometric(n, -1);
     const int steps = int(s.seconds / kDt);
     for (int step = 1; ok && step <= steps; ++step) {
-        const double t0 = nl::samples::now_ms();
-        crowd->update(kDt, nullptr);
-        total += nl::samples::now_ms() - t0;
-        for (size_t i = 0; i < n; ++i) {
-            const dtCrowdAgent* a = crowd->getAgent(int(i));
-            std::memcpy(&positions[3 * i], a->npos, 3 * sizeof(float));
-            std::memcpy(&velocities[3 * i], a->vel, 3 * sizeof(float));
-        }
+        total += step_detour_crowd(crowd, positions, velocities);
         tally.add(float(step) * kDt, positions, velocities, geometric);
     }
     dtFreeCrowd(crowd);
@@ -237,17 +248,179 @@ struct Case {
     float door = 0.0f;
 };
 
+// A crowd on a real level: bodies that cover `cover` of the walkable area, each sent to a random
+// reachable point and to the next one whenever it arrives (or, NavLink, fails).
+struct LevelTally {
+    size_t n;
+    float radius;
+    std::vector<long> arrivals;
+    std::vector<float> best, since;
+    std::vector<uint8_t> stuck;
+    double overlap_sum = 0.0;
+    long overlaps = 0;
+    float deepest = 0.0f;
+
+    LevelTally(size_t agents, float r) : n(agents), radius(r), arrivals(agents, 0), best(agents, 1e9f), since(agents, 0.0f), stuck(agents, 0) {}
+
+    // A new goal for agent i at `now`: its progress is measured afresh.
+    void retarget(size_t i, float now) { best[i] = 1e9f, since[i] = now; }
+    void add(float now, const std::vector<float>& positions, const std::vector<float>& goals) {
+        std::vector<nl::Vec3> at(n);
+        for (size_t i = 0; i < n; ++i) at[i] = nl::Vec3(positions[3 * i], positions[3 * i + 1], positions[3 * i + 2]);
+        nl::NeighbourGrid grid;
+        grid.build(at, std::vector<uint8_t>(n, 1), 3 * radius);
+        for (size_t i = 0; i < n; ++i) {
+            const float d = std::hypot(at[i].x() - goals[3 * i], at[i].z() - goals[3 * i + 2]);
+            if (d < best[i] - kProgress) best[i] = d, since[i] = now;
+            if (now - since[i] > kStuck) stuck[i] = 1;
+            grid.visit(at[i], 2 * radius, [&](uint32_t j) {
+                if (j <= i) return;
+                const float overlap = 2 * radius - std::hypot(at[i].x() - at[j].x(), at[i].z() - at[j].z());
+                if (overlap <= 0.0f) return;
+                deepest = std::max(deepest, overlap);
+                overlap_sum += overlap;
+                ++overlaps;
+            });
+        }
+    }
+    void print(const char* side, double total_ms, int steps) const {
+        long total = 0, never = 0;
+        for (const long a : arrivals) total += a, never += a == 0;
+        std::printf("  %-11s %6ld arrivals %4ld/%-4zu never arrived %4ld stuck  deepest %.3f m  mean %.3f m  %6.2f us/agent-step\n",
+                    side, total, never, n, long(std::count(stuck.begin(), stuck.end(), 1)), double(deepest),
+                    overlaps ? overlap_sum / double(overlaps) : 0.0, 1000.0 * total_ms / double(steps) / double(n));
+    }
+};
+
+void run_level(nl::bench::RecastLevel& level, float cover, float seconds, int threads) {
+    nl::bench::Destinations where;
+    where.pm = level.solo.polygons.get();
+    where.polygons = nl::bench::largest_connected_polygons(*level.solo.polygons);
+    where.seed = 7;
+    const float r = level.agent.radius;
+    const size_t n = size_t(std::lround(cover * where.area() / (M_PI * r * r)));
+    if (n < 2) return;
+    const int steps = int(seconds / kDt);
+    std::printf("%s, %.0f%% covered (%zu agents, %.0f s, random destinations, a new one on arrival)\n", level.name.c_str(),
+                double(100 * cover), n, double(seconds));
+    std::vector<float> positions(3 * n), velocities(3 * n), goals(3 * n);
+    std::vector<uint32_t> trips(n, 1);
+    {   // NavLink
+        nl_world_def def = nl_default_world_def();
+        def.worker_count = threads;
+        def.path_worker_count = 0;
+        nl_world* world = nullptr;
+        nl_navmesh_id navmesh{};
+        uint32_t polygons = 0;
+        if (NL_FAILED(nl_world_create(&def, &world)) || !nl::bench::add_navlink_navmesh(world, level, &navmesh, &polygons)) return;
+        std::vector<nl_agent_id> ids(n);
+        LevelTally tally(n, r);
+        auto send = [&](size_t i, float now) {
+            for (int attempt = 0; attempt < 4; ++attempt) {
+                where.point(uint32_t(i), trips[i]++, &goals[3 * i]);
+                if (NL_SUCCEEDED(nl_agent_set_destination(world, ids[i], &goals[3 * i]))) break;
+            }
+            tally.retarget(i, now);
+        };
+        for (size_t i = 0; i < n; ++i) {
+            nl_agent_def agent = nl_default_agent_def();
+            agent.navmesh = navmesh;
+            agent.height = level.agent.height;
+            agent.capabilities.radius = r;
+            agent.user_data = i;
+            where.point(uint32_t(i), 0, agent.position);
+            if (NL_FAILED(nl_agent_add(world, &agent, &ids[i]))) return;
+            send(i, 0.0f);
+        }
+        std::vector<nl_agent_info> infos(n, nl_agent_info_init());
+        std::vector<nl_agent_event> events;
+        double total = 0.0;
+        for (int step = 1; step <= steps; ++step) {
+            const float now = float(step) * kDt;
+            total += step_navlink(world, events, infos);
+            for (const nl_agent_event& e : events) {
+                if (e.kind != NL_AGENT_EVENT_ARRIVED && e.kind != NL_AGENT_EVENT_FAILED) continue;
+                tally.arrivals[e.user_data] += e.kind == NL_AGENT_EVENT_ARRIVED;
+                send(e.user_data, now);
+            }
+            for (size_t i = 0; i < n; ++i) std::memcpy(&positions[3 * i], infos[i].position, 3 * sizeof(float));
+            tally.add(now, positions, goals);
+        }
+        nl_world_destroy(world);
+        tally.print("NavLink", total, steps);
+    }
+    {   // DetourCrowd, arriving within 0.1 m of its target (it has no arrival of its own)
+        nl::bench::DetourMesh detour;
+        if (!nl::bench::build_detour(level, detour)) return;
+        dtCrowd* crowd = dtAllocCrowd();
+        if (!crowd || !crowd->init(int(n), r, detour.mesh)) return;
+        const dtCrowdAgentParams params = nl::bench::detour_crowd_agent(level);
+        const dtQueryFilter filter;
+        LevelTally tally(n, r);
+        std::fill(trips.begin(), trips.end(), 1u);
+        auto send = [&](size_t i, float now) {
+            for (int attempt = 0; attempt < 4; ++attempt) {
+                float nearest[3];
+                dtPolyRef ref = 0;
+                where.point(uint32_t(i), trips[i]++, &goals[3 * i]);
+                detour.query->findNearestPoly(&goals[3 * i], kHalfExtents, &filter, &ref, nearest);
+                if (ref && crowd->requestMoveTarget(int(i), ref, nearest)) {
+                    std::memcpy(&goals[3 * i], nearest, sizeof nearest);
+                    break;
+                }
+            }
+            tally.retarget(i, now);
+        };
+        for (size_t i = 0; i < n; ++i) {
+            float start[3], nearest[3];
+            dtPolyRef ref = 0;
+            where.point(uint32_t(i), 0, start);
+            detour.query->findNearestPoly(start, kHalfExtents, &filter, &ref, nearest);
+            if (!ref || crowd->addAgent(nearest, &params) != int(i)) return;
+            send(i, 0.0f);
+        }
+        double total = 0.0;
+        for (int step = 1; step <= steps; ++step) {
+            const float now = float(step) * kDt;
+            total += step_detour_crowd(crowd, positions, velocities);
+            for (size_t i = 0; i < n; ++i) {
+                if (std::hypot(positions[3 * i] - goals[3 * i], positions[3 * i + 2] - goals[3 * i + 2]) < kArrive) {
+                    ++tally.arrivals[i];
+                    send(i, now);
+                }
+            }
+            tally.add(now, positions, goals);
+        }
+        dtFreeCrowd(crowd);
+        tally.print("DetourCrowd", total, steps);
+    }
+    std::fflush(stdout);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
     int threads = 1;
+    float seconds = 60.0f;
     std::string only;
-    for (int i = 1; i + 1 < argc; i += 2) {
+    std::vector<std::string> levels;
+    std::vector<float> covers{0.05f, 0.10f, 0.20f, 0.40f};
+    for (int i = 1; i < argc; ++i) {
         const std::string name = argv[i];
-        if (name == "--threads") threads = std::atoi(argv[i + 1]);
-        else if (name == "--only") only = argv[i + 1];
-        else {
-            std::fprintf(stderr, "usage: navlink-bench-crowds [--threads 1|2] [--only NAME]\n");
+        if (name.rfind("--", 0) != 0) {
+            levels.push_back(name);
+        } else if (i + 1 < argc && name == "--threads") {
+            threads = std::atoi(argv[++i]);
+        } else if (i + 1 < argc && name == "--only") {
+            only = argv[++i];
+        } else if (i + 1 < argc && name == "--seconds") {
+            seconds = float(std::atof(argv[++i]));
+        } else if (i + 1 < argc && name == "--covers") {
+            covers.clear();
+            std::istringstream list(argv[++i]);
+            for (std::string percent; std::getline(list, percent, ',');) covers.push_back(std::stof(percent) / 100.0f);
+        } else {
+            std::fprintf(stderr, "usage: navlink-bench-crowds [--threads 1|2] [--only NAME] [--seconds S] [--covers P,P,...] [LEVEL.obj...]\n");
             return 2;
         }
     }
@@ -289,6 +462,11 @@ int main(int argc, char** argv) {
         print("NavLink", nl_outcome);
         print("DetourCrowd", dc_outcome);
         std::fflush(stdout);
+    }
+    // Real levels: random destinations at 5, 10, 20 and 40% of the walkable area covered by bodies.
+    for (const std::string& path : levels) {
+        nl::bench::RecastLevel level = nl::bench::build_recast_level_from_obj(path.c_str());
+        for (const float cover : covers) run_level(level, cover, seconds, threads);
     }
     return failures ? 1 : 0;
 }
