@@ -116,3 +116,7 @@ TEST_CASE("crowd: ten on each side of a 2 m door all get through in counterflow"
 }
 
 TEST_CASE("crowd: twenty through a 2 m door one way all get through") { check(nl::test::door_counterflow(20, 2.0f, false)); }
+
+TEST_CASE("crowd: ten from each end of two 5 m corridors crossing at 90 degrees all get through") {
+    check(nl::test::corridor(10, 5.0f, true));
+}
