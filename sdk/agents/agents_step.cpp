@@ -224,6 +224,7 @@ void Agents::plan_asked_paths(Step& s) {
         a.next = a.path.size() > 1 && a.path[0].segment == kSegmentWalk ? 1 : 0;
         a.partial = r.outcome == PathOutcome::Partial;
         a.state = AgentState::Walking;
+        a.giving_way = a.blocked_time = 0.0f;  // a new way: whoever held it up is not known to be in it
         a.reason = a.plan_reason;
         a.emit(AgentEventKind::PathReady, a.plan_reason);
     }
