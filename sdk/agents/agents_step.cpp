@@ -223,8 +223,8 @@ void Agents::plan_asked_paths(Step& s) {
         // A path that starts on a take-off (the agent stands on it) heads for that take-off first.
         a.next = a.path.size() > 1 && a.path[0].segment == kSegmentWalk ? 1 : 0;
         a.partial = r.outcome == PathOutcome::Partial;
-        a.state = AgentState::Walking;
-        a.giving_way = a.blocked_time = 0.0f;  // a new way: whoever held it up is not known to be in it
+        // One giving way stands aside until its time is up (decide_giving_way), on its new path too.
+        a.state = a.giving_way > 0.0f ? AgentState::Waiting : AgentState::Walking;
         a.reason = a.plan_reason;
         a.emit(AgentEventKind::PathReady, a.plan_reason);
     }
