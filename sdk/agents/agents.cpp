@@ -183,6 +183,7 @@ void Agents::set_destination(const NavMeshRegistry& navmeshes, Handle agent, con
     }
     std::unique_lock lock(mutex_);
     AgentBody& a = find(agent);
+    stop_giving_way(a);  // sent, stopped or put elsewhere: whatever held it up is behind it
     a.has_destination = true;
     a.destination = on_navmesh;
     a.destination_navmesh = there;
@@ -202,6 +203,7 @@ void Agents::set_destination(const NavMeshRegistry& navmeshes, Handle agent, con
 void Agents::stop(Handle agent) {
     std::unique_lock lock(mutex_);
     AgentBody& a = find(agent);
+    stop_giving_way(a);  // sent, stopped or put elsewhere: whatever held it up is behind it
     a.has_destination = false;
     a.wants_path = false;
     a.at_takeoff = false;
@@ -227,6 +229,7 @@ void Agents::teleport(const NavMeshRegistry& navmeshes, Handle agent, const Vec3
     std::unique_lock lock(mutex_);
     AgentBody& a = find(agent);
     if (a.motion) fail(ErrorCode::InvalidArgument, "the agent is taking a link (teleport it after it lands)");
+    stop_giving_way(a);  // sent, stopped or put elsewhere: whatever held it up is behind it
     a.put_on_surface(on_navmesh);
     a.polygon = polygon;
     a.velocity = Vec3::Zero();

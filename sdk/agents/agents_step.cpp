@@ -225,6 +225,7 @@ void Agents::plan_asked_paths(Step& s) {
         a.partial = r.outcome == PathOutcome::Partial;
         // One giving way stands aside until its time is up (decide_giving_way), on its new path too.
         a.state = a.giving_way > 0.0f ? AgentState::Waiting : AgentState::Walking;
+        forget_progress(a);
         a.reason = a.plan_reason;
         a.emit(AgentEventKind::PathReady, a.plan_reason);
     }
@@ -269,7 +270,7 @@ void Agents::move(Step& s) {
 }
 
 // 4. (parallel) Bodies on the ground that overlap after the move are pushed apart, walkers, arrived,
-// waiting and failed bodies alike, space by space (overlaps.h).
+// waiting and failed bodies alike, space by space (overlaps.h); then (serial) who gives way.
 void Agents::separate(Step& s) {
     std::vector<std::vector<OverlapBody>> spaces(s.crowds.size());
     for (size_t i = 0; i < agents_.size(); ++i) {
@@ -277,8 +278,10 @@ void Agents::separate(Step& s) {
         if (a.motion || a.landing_navmesh != Handle{}) continue;
         const std::shared_ptr<const PathGraph> graph = s.current[i] ? s.current[i] : s.graph_of(a.def.navmesh);
         if (!graph) continue;  // its navmesh was removed: it stands nowhere
-        const bool walking = a.state == AgentState::Walking && !a.at_takeoff;
-        spaces[s.space_of[i]].push_back({&a, &graph->navmesh(), walking ? 1.0f : kStandingGives});  // graph: in s.table
+        // One at a take-off holds its place (it takes off from there); a walker gives one share, a
+        // standing body kStandingGives.
+        const float give = a.at_takeoff ? 0.0f : a.state == AgentState::Walking ? 1.0f : kStandingGives;
+        spaces[s.space_of[i]].push_back({&a, &graph->navmesh(), give});  // graph: in s.table
     }
     for (const std::vector<OverlapBody>& bodies : spaces) resolve_overlaps(bodies, s.dt, s.tasks);
     decide_giving_way(agents_, s.space_of, s.index_in_space, s.crowds, s.dt);
@@ -304,7 +307,7 @@ void Agents::land_cross_flights(Step& s) {
     }
 }
 
-// 5. (serial, in agent order) Take-offs: the link checked as it is now, and its landing clear.
+// 6. (serial, in agent order) Take-offs: the link checked as it is now, and its landing clear.
 void Agents::take_off(Step& s) {
     std::vector<uint32_t> flying;  // only bodies in the air can hold a landing
     for (uint32_t j = 0; j < agents_.size(); ++j)

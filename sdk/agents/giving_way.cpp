@@ -1,5 +1,6 @@
 #include "agents/giving_way.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace nl {
@@ -26,13 +27,12 @@ void decide_giving_way(std::vector<AgentBody>& agents, const std::vector<uint32_
             a.giving_way -= dt;
             if (a.giving_way > 0.0f) continue;
             a.giving_way = 0.0f;
-            a.blocked_time = 0.0f;
+            forget_progress(a);  // it stepped back: its best so far is not a mark to beat
             if (a.state == AgentState::Waiting && !a.wants_path && !a.path.empty()) a.state = AgentState::Walking;
             continue;
         }
         if (!walking(a)) {
-            a.blocked_time = 0.0f;
-            a.progress_next = UINT32_MAX;
+            forget_progress(a);
             continue;
         }
         const Vec3& target = a.path[a.next].position;
@@ -65,6 +65,7 @@ void decide_giving_way(std::vector<AgentBody>& agents, const std::vector<uint32_
             const AgentBody& b = agents[j];
             const Vec3 d(crowd.positions[k].x() - crowd.positions[self].x(), 0.0f, crowd.positions[k].z() - crowd.positions[self].z());
             if (d.norm() >= radius + b.def.capabilities.radius + slack) return;
+            if (std::fabs(crowd.positions[k].y() - crowd.positions[self].y()) > std::max(a.def.height, b.def.height)) return;
             if (b.giving_way > 0.0f) {
                 // Pressing straight into one that stands aside (it is in the way ahead, not beside).
                 gives[i] = heading.dot(d) > kStraightInto * heading.norm() * d.norm();

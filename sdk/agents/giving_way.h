@@ -18,6 +18,19 @@ namespace nl {
 constexpr float kProgressStep = 0.1f;
 constexpr float kStuckSeconds = 0.75f;
 
+// Forgets how far the agent has come toward its next path point, and that it was stuck: when it was
+// moved otherwise than by its walk (it gave way, got a new path, was sent or put elsewhere).
+inline void forget_progress(AgentBody& a) {
+    a.blocked_time = 0.0f;
+    a.progress_next = UINT32_MAX;
+}
+
+// Ends its giving way, if it was, and forgets its progress (a new destination, a stop, a teleport).
+inline void stop_giving_way(AgentBody& a) {
+    a.giving_way = 0.0f;
+    forget_progress(a);
+}
+
 // After a step's move: counts how long each walker has been stuck and picks those that give way;
 // ends the turns of those whose time is up. `crowds[space_of[i]]` holds agent i at index_in_space[i]
 // (positions as the move began). Serial, in agent order: the same for any thread count.

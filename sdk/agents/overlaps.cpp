@@ -36,13 +36,13 @@ void resolve_overlaps(const std::vector<OverlapBody>& bodies, float dt, TaskSyst
     grid.build(positions, everyone, std::max(widest * 3.0f, 0.5f));
     std::vector<std::array<uint32_t, kContacts>> contacts(n);
     std::vector<uint8_t> contact_count(n, 0);
-    bool any = false;
-    for (size_t i = 0; i < n; ++i) {
-        const float reach = bodies[i].agent->def.capabilities.radius + widest + kReachSlack;
-        contact_count[i] = static_cast<uint8_t>(grid.nearest(positions[i], reach, static_cast<uint32_t>(i), contacts[i].data(), kContacts));
-        any = any || contact_count[i] > 0;
-    }
-    if (!any) return;
+    tasks.parallel_for(static_cast<uint32_t>(n), 64, [&](uint32_t begin, uint32_t end) {
+        for (uint32_t i = begin; i < end; ++i) {
+            const float reach = bodies[i].agent->def.capabilities.radius + widest + kReachSlack;
+            contact_count[i] = static_cast<uint8_t>(grid.nearest(positions[i], reach, i, contacts[i].data(), kContacts));
+        }
+    });
+    if (std::all_of(contact_count.begin(), contact_count.end(), [](uint8_t c) { return c == 0; })) return;
 
     for (int round = 0; round < kRounds; ++round) {
         tasks.parallel_for(static_cast<uint32_t>(n), 64, [&](uint32_t begin, uint32_t end) {
@@ -51,12 +51,17 @@ void resolve_overlaps(const std::vector<OverlapBody>& bodies, float dt, TaskSyst
                 Vec3 push = Vec3::Zero();
                 for (uint8_t k = 0; k < contact_count[i]; ++k) {
                     const uint32_t j = contacts[i][k];
+                    const AgentBody& b = *bodies[j].agent;
                     const Vec3 d(positions[i].x() - positions[j].x(), 0.0f, positions[i].z() - positions[j].z());
-                    const float gap = d.norm(), reach = a.def.capabilities.radius + bodies[j].agent->def.capabilities.radius;
+                    const float gap = d.norm(), reach = a.def.capabilities.radius + b.def.capabilities.radius;
                     if (gap >= reach) continue;
+                    // On floors apart (one world space holds every floor of a level): no contact.
+                    if (std::fabs(positions[i].y() - positions[j].y()) > std::max(a.def.height, b.def.height)) continue;
+                    const float gives = bodies[i].give + bodies[j].give;
+                    if (gives <= 0.0f) continue;  // both hold their places
                     // Exactly on top of each other: apart along x, the lower index to the left.
                     const Vec3 away = gap > 1e-6f ? Vec3(d / gap) : Vec3(i < j ? -1.0f : 1.0f, 0.0f, 0.0f);
-                    push += away * ((reach - gap) * bodies[i].give / (bodies[i].give + bodies[j].give));
+                    push += away * ((reach - gap) * bodies[i].give / gives);
                 }
                 next[i] = positions[i];
                 if (push.squaredNorm() == 0.0f) continue;

@@ -18,7 +18,7 @@ struct OverlapBody {
     AgentBody* agent;
     const NavMesh* navmesh;  // the agent's
     // How readily it gives way: of an overlap between two bodies, each moves its share of their sum
-    // (a standing body makes room for a walker: kStandingGives to 1).
+    // (a standing body makes room for a walker: kStandingGives to 1; 0 holds its place).
     float give = 1.0f;
 };
 constexpr float kStandingGives = 4.0f;
