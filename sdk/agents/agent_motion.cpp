@@ -167,15 +167,19 @@ void back_off(AgentBody& a, float dt, const NavMesh& navmesh) {
     Vec3 away(a.position.x() - target.x(), 0.0f, a.position.z() - target.z());
     const float length = away.norm();
     a.velocity = length > 1e-6f ? Vec3(away * (0.5f * a.def.max_speed / length)) : Vec3(Vec3::Zero());
-    const SurfaceMove moved = move_along_surface(navmesh, a.polygon, a.position, a.position + a.velocity * dt);
-    const float above = a.position.y() - navmesh.surface_height(a.polygon, a.position.x(), a.position.z());
+    const SurfaceMove moved = move_keeping_height(navmesh, a.polygon, a.position, a.position + a.velocity * dt);
     a.walked_since_landing += distance_xz(a.position, moved.position);
     a.position = moved.position;
-    a.position.y() += above;
     a.polygon = moved.polygon;
 }
 
 }  // namespace
+
+SurfaceMove move_keeping_height(const NavMesh& navmesh, uint32_t polygon, const Vec3& from, const Vec3& to) {
+    SurfaceMove moved = move_along_surface(navmesh, polygon, from, to);
+    moved.position.y() += from.y() - navmesh.surface_height(polygon, from.x(), from.z());
+    return moved;
+}
 
 // The feet's height over (x, z) of the surface point `on_surface`: the surface's, eased from the
 // landing's floor over the first kHeightEase walked, and toward the take-off's floor over the last.

@@ -4,8 +4,8 @@
 #include <array>
 #include <cmath>
 
+#include "agents/agent_motion.h"
 #include "agents/neighbours.h"
-#include "navmesh/surface_walk.h"
 
 namespace nl {
 namespace {
@@ -65,12 +65,8 @@ void resolve_overlaps(const std::vector<OverlapBody>& bodies, float dt, TaskSyst
                 }
                 next[i] = positions[i];
                 if (push.squaredNorm() == 0.0f) continue;
-                const NavMesh& navmesh = *bodies[i].navmesh;
-                const SurfaceMove moved = move_along_surface(navmesh, polygons[i], positions[i], positions[i] + push);
-                // The feet keep their height over the surface (eased near a take-off or a landing).
-                const float above = positions[i].y() - navmesh.surface_height(polygons[i], positions[i].x(), positions[i].z());
+                const SurfaceMove moved = move_keeping_height(*bodies[i].navmesh, polygons[i], positions[i], positions[i] + push);
                 next[i] = moved.position;
-                next[i].y() += above;
                 polygons[i] = moved.polygon;
             }
         });
