@@ -111,10 +111,11 @@ PATH_WAIT_FOREVER = 0xFFFFFFFF
 (AGENT_IDLE, AGENT_WALKING, AGENT_JUMPING, AGENT_FALLING, AGENT_TRAVERSING, AGENT_WAITING, AGENT_ARRIVED,
  AGENT_FAILED) = range(8)
 (AGENT_REASON_NONE, AGENT_REASON_DESTINATION_SET, AGENT_REASON_LINK_GONE, AGENT_REASON_WORLD_CHANGED,
- AGENT_REASON_OFF_PATH, AGENT_REASON_NO_PATH, AGENT_REASON_NAVMESH_REMOVED, AGENT_REASON_CAPABILITIES_CHANGED) = range(8)
+ AGENT_REASON_OFF_PATH, AGENT_REASON_NO_PATH, AGENT_REASON_NAVMESH_REMOVED, AGENT_REASON_CAPABILITIES_CHANGED,
+ AGENT_REASON_CROWD) = range(9)
 TRAJECTORY_NONE, TRAJECTORY_ARC, TRAJECTORY_FALL, TRAJECTORY_LINE = range(4)
 (AGENT_EVENT_PATH_READY, AGENT_EVENT_LINK_STARTED, AGENT_EVENT_LINK_FINISHED, AGENT_EVENT_ARRIVED, AGENT_EVENT_FAILED,
- AGENT_EVENT_REPLANNED) = range(1, 7)
+ AGENT_EVENT_REPLANNED, AGENT_EVENT_WAITING) = range(1, 8)
 PLUGIN_NAVMESH_BUILDER, PLUGIN_LINK_KIND = 0x1, 0x2
 PLUGIN_ABI_VERSION = 1
 PLUGIN_ENTRY_SYMBOL = "nl_plugin_entry"
@@ -425,11 +426,13 @@ class AgentId(_Id):
 
 
 class AgentDef(Structure):
-    """nl_agent_def: how to add an agent (default_agent_def(): set navmesh and position)."""
+    """nl_agent_def: how to add an agent (default_agent_def(): set navmesh and position). Since 0.3,
+    give_up_seconds (default 0: never): held up this long by bodies heading the other way without getting 1 m
+    nearer its destination along its path, it gives the destination up (AGENT_FAILED, AGENT_REASON_CROWD)."""
     _fields_ = [("size", c_uint32), ("navmesh", NavmeshId), ("height", c_float), ("capabilities", AgentCapabilities),
                 ("max_speed", c_float), ("max_acceleration", c_float), ("gravity", c_float),
                 ("takeoff_speed", c_float), ("position", Vec3), ("avoidance", c_uint8), ("reserved", c_uint8 * 3),
-                ("user_data", c_uint64)]
+                ("user_data", c_uint64), ("give_up_seconds", c_float), ("reserved2", c_uint32)]
 
 
 class AgentInfo(_Growable):
@@ -1155,8 +1158,8 @@ def default_path_budget() -> PathBudget:
 
 
 def default_agent_def() -> AgentDef:
-    """A walker, height 2, speed 3.5, acceleration 8, gravity 9.81, avoidance on, on the null navmesh at the
-    origin: set navmesh and position."""
+    """A walker, height 2, speed 3.5, acceleration 8, gravity 9.81, avoidance on, never giving
+    up (give_up_seconds 0), on the null navmesh at the origin: set navmesh and position."""
     return lib.nl_default_agent_def()
 
 

@@ -1262,6 +1262,8 @@ class AgentTest(NavLinkTestCase):
         d = nl.default_agent_def()
         self.assertEqual(d.size, ctypes.sizeof(nl.AgentDef))
         self.assertEqual((d.height, d.max_speed, d.max_acceleration, d.takeoff_speed, d.avoidance), (2, 3.5, 8, 0, 1))
+        self.assertEqual(d.give_up_seconds, 0)
+        self.assertEqual((nl.AGENT_EVENT_WAITING, nl.AGENT_REASON_CROWD), (7, 8))
         self.assertAlmostEqual(d.gravity, 9.81, places=5)
         self.assertTrue(d.navmesh.is_null and d.capabilities.max_jump_distance == 0)
         self.assertAlmostEqual(d.capabilities.radius, 0.6, places=6)

@@ -17,16 +17,16 @@ using nl::capi::to_id;
 
 namespace {
 
-constexpr size_t kAgentDefFirstSize = sizeof(nl_agent_def);  // their first release (0.2)
+constexpr size_t kAgentDefFirstSize = offsetof(nl_agent_def, give_up_seconds);  // their first release (0.2)
 constexpr size_t kAgentInfoFirstSize = offsetof(nl_agent_info, user_data) + sizeof(uint64_t);
 constexpr size_t kTrajectoryFirstSize = sizeof(nl_agent_trajectory);
 constexpr size_t kEventFirstSize = sizeof(nl_agent_event);
 
 static_assert(uint32_t(nl::AgentState::Failed) == NL_AGENT_FAILED && uint32_t(nl::AgentState::Waiting) == NL_AGENT_WAITING,
               "core and header disagree on agent states");
-static_assert(uint32_t(nl::AgentReason::CapabilitiesChanged) == NL_AGENT_REASON_CAPABILITIES_CHANGED,
+static_assert(uint32_t(nl::AgentReason::Crowd) == NL_AGENT_REASON_CROWD,
               "core and header disagree on agent reasons");
-static_assert(uint32_t(nl::AgentEventKind::Replanned) == NL_AGENT_EVENT_REPLANNED, "core and header disagree on events");
+static_assert(uint32_t(nl::AgentEventKind::Waiting) == NL_AGENT_EVENT_WAITING, "core and header disagree on events");
 
 nl_trajectory_kind trajectory_kind(nl::MotionKind kind) {
     switch (kind) {
@@ -60,6 +60,7 @@ nl::AgentDef agent_from_def(const nl_agent_def& given) {
     out.position = nl::capi::read_position(def.position, "position");
     out.user_data = def.user_data;
     out.avoidance = def.avoidance != 0;
+    out.give_up_seconds = def.give_up_seconds;
     return out;
 }
 
@@ -99,6 +100,7 @@ NL_API nl_agent_def nl_default_agent_def(void) {
     def.gravity = core.gravity;
     def.takeoff_speed = core.takeoff_speed;
     def.avoidance = 1;
+    def.give_up_seconds = core.give_up_seconds;
     return def;
 }
 

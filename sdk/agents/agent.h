@@ -31,6 +31,7 @@ enum class AgentReason : uint32_t {
     NoPath = 5,           // the destination cannot be reached (it went as near as it could)
     NavMeshRemoved = 6,   // its navmesh was removed
     CapabilitiesChanged = 7,
+    Crowd = 8,            // other bodies are in its way: waiting for room, or given up (give_up_seconds)
 };
 
 enum class AgentEventKind : uint32_t {
@@ -40,6 +41,7 @@ enum class AgentEventKind : uint32_t {
     Arrived = 4,
     Failed = 5,
     Replanned = 6,
+    Waiting = 7,   // it stopped for room (reason Crowd): stuck among other bodies, or giving way
 };
 
 struct AgentDef {
@@ -53,6 +55,9 @@ struct AgentDef {
     Vec3 position = Vec3::Zero();
     uint64_t user_data = 0;
     bool avoidance = true;          // steer around other agents and walls
+    // Seconds without getting kGiveUpProgress nearer its destination, held up by bodies heading the
+    // other way, after which it gives its destination up (Failed, Crowd); 0: never.
+    float give_up_seconds = 0.0f;
 };
 
 struct AgentEvent {

@@ -22,6 +22,7 @@ constexpr float kContact = 0.1f;        // bodies this near each other's surface
 constexpr float kOffPathSlack = 1.0f;   // how far past its radius an agent may be pushed off its path
 constexpr size_t kMaxNeighbours = 6;    // as DetourCrowd: the nearest count
 constexpr size_t kHemmedIn = 4;         // touching this many of them: a jam (coarser avoidance)
+constexpr size_t kSlidesPastAtMost = 2; // touching at most this many walkers, it slides past them
 
 float distance_xz(const Vec3& a, const Vec3& b) { return std::hypot(a.x() - b.x(), a.z() - b.z()); }
 
@@ -116,6 +117,52 @@ Vec3 keep_right(const AgentBody& a, const Vec3& desired, const CrowdSnapshot& cr
     const Vec3 right(forward.z() * -1.0f, 0.0f, forward.x());  // forward x up, for y up: (-z, 0, x)
     const Vec3 turned = forward * std::cos(turn) + right * std::sin(turn);
     return turned * speed;
+}
+
+// A walker that touches a body it walks into slides around it, as around a wall's corner, keeping
+// to its right: the part of its velocity into the other is taken away, and, when less than half its
+// speed is left (head-on), half its speed goes to the right of the contact. Velocity obstacles
+// cannot do this: for bodies in contact every velocity toward the other collides at once, and the
+// least bad is to stand, so two walkers pressed together in counterflow stood for good. Then no
+// contact is pressed into faster than it moves away. Bodies that make room are pushed aside
+// instead (overlaps.h), and one that walks away at half our speed or more is followed, not slid
+// past. Returns whether it touched a body it walks into (`desired` changed), else leaves it.
+constexpr float kSlideSpeed = 0.5f;  // of its desired speed: head-on, the sidestep to the right
+bool slide_past(const AgentBody& a, Vec3& desired, const CrowdSnapshot& crowd, const uint32_t* near, size_t count) {
+    const float speed = desired.norm();
+    if (speed <= 0.0f) return false;
+    const float radius = a.def.capabilities.radius;
+    // The unit normal from a toward body j, if they touch.
+    auto contact = [&](uint32_t j, Vec3& normal) {
+        normal = Vec3(crowd.positions[j].x() - a.position.x(), 0.0f, crowd.positions[j].z() - a.position.z());
+        const float d = normal.norm();
+        if (crowd.makes_room[j] || d >= radius + crowd.radii[j] + kContact || d < 1e-5f) return false;
+        normal /= d;
+        return true;
+    };
+    auto away = [&](uint32_t j, const Vec3& normal) {
+        return crowd.velocities[j].x() * normal.x() + crowd.velocities[j].z() * normal.z();
+    };
+    bool slid = false;
+    Vec3 normal;
+    for (size_t k = 0; k < count; ++k) {
+        if (!contact(near[k], normal)) continue;
+        const float into = desired.dot(normal);
+        if (into <= 0.0f || away(near[k], normal) > kSlideSpeed * speed) continue;
+        desired -= normal * into;
+        if (desired.norm() < kSlideSpeed * speed) desired += Vec3(-normal.z(), 0.0f, normal.x()) * (kSlideSpeed * speed);
+        slid = true;
+    }
+    if (!slid) return false;
+    if (desired.norm() > speed) desired *= speed / desired.norm();
+    for (int pass = 0; pass < 2; ++pass) {
+        for (size_t k = 0; k < count; ++k) {
+            if (!contact(near[k], normal)) continue;
+            const float into = desired.dot(normal) - std::max(0.0f, away(near[k], normal));
+            if (into > 0.0f) desired -= normal * into;
+        }
+    }
+    return true;
 }
 
 // Hexagonal packing's density: k discs fill a circle about sqrt(k / kPacking) radii wide.
@@ -301,11 +348,15 @@ void move_agent(AgentBody& a, uint32_t self, float dt, const NavMesh& navmesh, c
                                 crowd.velocities[j].data());
                 touching += distance_xz(crowd.positions[j], a.position) < radius + crowd.radii[j] + kContact;
             }
-            const dtObstacleAvoidanceParams params = avoidance_params(touching >= kHemmedIn);
-            Vec3 chosen = desired;
-            query.sampleVelocityAdaptive(a.position.data(), radius, a.def.max_speed, a.velocity.data(), desired.data(),
-                                         chosen.data(), &params);
-            desired = Vec3(chosen.x(), 0.0f, chosen.z());
+            // Pressed against one or two bodies, it slides past them; hemmed in by more, it has no
+            // side to slide to, and the velocity obstacles choose.
+            if (touching > kSlidesPastAtMost || !slide_past(a, desired, crowd, near.data(), count)) {
+                const dtObstacleAvoidanceParams params = avoidance_params(touching >= kHemmedIn);
+                Vec3 chosen = desired;
+                query.sampleVelocityAdaptive(a.position.data(), radius, a.def.max_speed, a.velocity.data(), desired.data(),
+                                             chosen.data(), &params);
+                desired = Vec3(chosen.x(), 0.0f, chosen.z());
+            }
         }
     }
 

@@ -1,6 +1,7 @@
 // One agent's whole state, as the step works on it (sdk/agents internals).
 #pragma once
 
+#include <limits>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -58,6 +59,13 @@ struct AgentBody {
     float giving_way = 0.0f;
     uint32_t progress_next = UINT32_MAX;  // the path point its progress is measured toward
     float progress_best = 0.0f;           // the nearest it came to it (x-z)
+    bool waiting_for_room = false;        // a host reads WAITING (stuck or giving way): said once
+    // Giving up (AgentDef::give_up_seconds): the shortest way left it has had along its path, how
+    // long it has been held up since it last got kGiveUpProgress shorter, and whether what holds it
+    // up is a body heading the other way (a queue, all one way, is waited out however long).
+    float best_remaining = std::numeric_limits<float>::infinity();
+    float no_progress_time = 0.0f;
+    bool held_by_counterflow = false;
 
     // How far the feet were off the navmesh surface on landing (a link ends on the level's floor,
     // which a Recast detail surface can stand a cell or two above), eased out over the first metre.

@@ -127,6 +127,7 @@ Handle Agents::add(const NavMeshRegistry& navmeshes, const AgentDef& def) {
     check_positive(def.max_acceleration, "max_acceleration");
     check_positive(def.gravity, "gravity");
     check_amount(def.takeoff_speed, "takeoff_speed");
+    check_amount(def.give_up_seconds, "give_up_seconds");
     check_point(def.position, "position");
     const std::shared_ptr<const NavMesh> navmesh = navmeshes.navmesh(def.navmesh);
     AgentBody body;
@@ -278,8 +279,8 @@ AgentInfo info_of(const AgentBody& a) {
     AgentInfo info;
     info.id = a.id;
     // Walking without getting anywhere (pressed in a crowd, queueing at a door): waiting for room.
-    info.state = a.state == AgentState::Walking && a.blocked_time >= kStuckSeconds ? AgentState::Waiting : a.state;
-    info.reason = a.reason;
+    info.state = a.waiting_for_room ? AgentState::Waiting : a.state;
+    info.reason = a.waiting_for_room ? AgentReason::Crowd : a.reason;
     info.position = pose.world_point(a.position);
     info.velocity = pose.world_vector(a.velocity);
     info.polygon = a.polygon;

@@ -226,6 +226,9 @@ void Agents::plan_asked_paths(Step& s) {
         // One giving way stands aside until its time is up (decide_giving_way), on its new path too.
         a.state = a.giving_way > 0.0f ? AgentState::Waiting : AgentState::Walking;
         forget_progress(a);
+        // A new way to go counts afresh toward giving up; one planned because the crowd pushed it
+        // off its path is the same way, held up by the same crowd.
+        if (a.plan_reason != AgentReason::OffPath) forget_patience(a);
         a.reason = a.plan_reason;
         a.emit(AgentEventKind::PathReady, a.plan_reason);
     }

@@ -13,6 +13,49 @@ constexpr float kStraightInto = 0.9f;   // cosine: a body this near straight ahe
 // Walking on the ground toward a point (not standing at a take-off, not in the air).
 bool walking(const AgentBody& a) { return a.state == AgentState::Walking && !a.at_takeoff && !a.motion && !a.path.empty(); }
 
+// What a host reads as waiting for room: stuck while walking, or standing aside.
+bool waits_for_room(const AgentBody& a) {
+    return (walking(a) && a.blocked_time >= kStuckSeconds) || (a.giving_way > 0.0f && a.state == AgentState::Waiting);
+}
+
+// How far it still has to go along its path (x-z to the next point, then the path's legs).
+float remaining_way(const AgentBody& a) {
+    const Vec3& next = a.path[a.next].position;
+    float way = std::hypot(a.position.x() - next.x(), a.position.z() - next.z());
+    for (size_t k = a.next; k + 1 < a.path.size(); ++k) way += (a.path[k + 1].position - a.path[k].position).norm();
+    return way;
+}
+
+// Says when a body starts waiting for room, and gives up the destination of one that has got no
+// kGiveUpProgress nearer it for its give_up_seconds held up by bodies heading the other way, walking
+// or giving way on the ground.
+void keep_patience(AgentBody& a, float dt) {
+    const bool waits = waits_for_room(a);
+    if (waits && !a.waiting_for_room) a.emit(AgentEventKind::Waiting, AgentReason::Crowd);
+    a.waiting_for_room = waits;
+    const bool on_its_way = !a.path.empty() && !a.motion && !a.wants_path &&
+                            (a.state == AgentState::Walking || (a.state == AgentState::Waiting && a.giving_way > 0.0f));
+    if (!on_its_way || a.at_takeoff) {
+        // At a take-off or in the air it got somewhere; waiting for its path, it did not walk.
+        if (a.at_takeoff || a.motion) forget_patience(a);
+        return;
+    }
+    const float remaining = remaining_way(a);
+    if (remaining < a.best_remaining - kGiveUpProgress || a.best_remaining == std::numeric_limits<float>::infinity()) {
+        a.best_remaining = remaining;
+        a.no_progress_time = 0.0f;
+        a.held_by_counterflow = false;
+        return;
+    }
+    if (a.held_by_counterflow) a.no_progress_time += dt;
+    if (a.def.give_up_seconds <= 0.0f || a.no_progress_time < a.def.give_up_seconds) return;
+    a.giving_way = 0.0f;
+    a.waiting_for_room = false;
+    forget_progress(a);
+    forget_patience(a);
+    a.fail(AgentReason::Crowd);
+}
+
 }  // namespace
 
 void decide_giving_way(std::vector<AgentBody>& agents, const std::vector<uint32_t>& space_of,
@@ -49,10 +92,11 @@ void decide_giving_way(std::vector<AgentBody>& agents, const std::vector<uint32_
     // other gives way, and so do the stuck walkers pressing into one that gives way (a queue behind
     // it would hold it in the other's path). Decided from the state above for all at once, then
     // applied: a queue gives way one body further each step.
-    std::vector<uint8_t> gives(n, 0);
+    std::vector<uint8_t> gives(n, 0), stuck(n, 0), against_counterflow(n, 0);
     for (uint32_t i = 0; i < n; ++i) {
         const AgentBody& a = agents[i];
         if (a.blocked_time < kStuckSeconds || a.giving_way > 0.0f) continue;
+        stuck[i] = 1;
         const CrowdSnapshot& crowd = crowds[space_of[i]];
         const uint32_t self = index_in_space[i];
         const float radius = a.def.capabilities.radius;
@@ -61,11 +105,17 @@ void decide_giving_way(std::vector<AgentBody>& agents, const std::vector<uint32_
         const Vec3 heading(target.x() - a.position.x(), 0.0f, target.z() - a.position.z());
         crowd.grid.visit(crowd.positions[self], radius + crowd.max_radius + slack, [&](uint32_t k) {
             const uint32_t j = members[space_of[i]][k];
-            if (gives[i] || j == i) return;
+            if (j == i) return;
             const AgentBody& b = agents[j];
             const Vec3 d(crowd.positions[k].x() - crowd.positions[self].x(), 0.0f, crowd.positions[k].z() - crowd.positions[self].z());
             if (d.norm() >= radius + b.def.capabilities.radius + slack) return;
             if (std::fabs(crowd.positions[k].y() - crowd.positions[self].y()) > std::max(a.def.height, b.def.height)) return;
+            if (!b.path.empty() && !b.motion) {
+                const Vec3& its_target = b.path[b.next].position;
+                const Vec3 its_heading(its_target.x() - crowd.positions[k].x(), 0.0f, its_target.z() - crowd.positions[k].z());
+                against_counterflow[i] |= its_heading.dot(heading) < 0.0f;
+            }
+            if (gives[i]) return;
             if (b.giving_way > 0.0f) {
                 // Pressing straight into one that stands aside (it is in the way ahead, not beside).
                 gives[i] = heading.dot(d) > kStraightInto * heading.norm() * d.norm();
@@ -81,6 +131,12 @@ void decide_giving_way(std::vector<AgentBody>& agents, const std::vector<uint32_
         a.giving_way = kGivingWaySeconds;
         a.blocked_time = 0.0f;
         a.state = AgentState::Waiting;
+    }
+    for (uint32_t i = 0; i < n; ++i) {
+        AgentBody& a = agents[i];
+        // Giving way, it keeps what held it up when it stepped aside.
+        if (stuck[i]) a.held_by_counterflow = against_counterflow[i];
+        keep_patience(a, dt);
     }
 }
 

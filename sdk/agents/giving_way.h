@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "agents/agent_state.h"
@@ -25,14 +26,30 @@ inline void forget_progress(AgentBody& a) {
     a.progress_next = UINT32_MAX;
 }
 
-// Ends its giving way, if it was, and forgets its progress (a new destination, a stop, a teleport).
+// A body that gives its destination up has made no kGiveUpProgress toward it for its
+// give_up_seconds while held up by others (docs/agents.md, "When the crowd does not let it through").
+constexpr float kGiveUpProgress = 1.0f;
+
+// Starts its count toward giving up afresh: its way ahead changed (a new destination or path, a
+// teleport), or it made progress otherwise than by walking (it reached a link).
+inline void forget_patience(AgentBody& a) {
+    a.best_remaining = std::numeric_limits<float>::infinity();
+    a.no_progress_time = 0.0f;
+    a.held_by_counterflow = false;
+}
+
+// Ends its giving way, if it was, and forgets its progress and patience (a new destination, a stop,
+// a teleport).
 inline void stop_giving_way(AgentBody& a) {
     a.giving_way = 0.0f;
+    a.waiting_for_room = false;
     forget_progress(a);
+    forget_patience(a);
 }
 
 // After a step's move: counts how long each walker has been stuck and picks those that give way;
-// ends the turns of those whose time is up. `crowds[space_of[i]]` holds agent i at index_in_space[i]
+// ends the turns of those whose time is up; says when one starts waiting for room (Waiting, Crowd)
+// and fails one that has waited past its give_up_seconds (Failed, Crowd). `crowds[space_of[i]]` holds agent i at index_in_space[i]
 // (positions as the move began). Serial, in agent order: the same for any thread count.
 void decide_giving_way(std::vector<AgentBody>& agents, const std::vector<uint32_t>& space_of,
                        const std::vector<uint32_t>& index_in_space, const std::vector<CrowdSnapshot>& crowds, float dt);

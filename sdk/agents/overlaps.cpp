@@ -12,7 +12,7 @@ namespace {
 
 // Rounds of pushing: each halves most overlaps. DetourCrowd runs four; six keep a crowd pressed
 // against a door's walls within 2-3 cm (four left 6 cm in ten-a-side counterflow).
-constexpr int kRounds = 6;
+constexpr int kRounds = 8;
 // The contacts a body is pushed by: its nearest, found once per step from where the move left them
 // (a round moves bodies by millimetres to centimetres: the same bodies stay nearest).
 constexpr size_t kContacts = 8;

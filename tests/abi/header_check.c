@@ -40,7 +40,8 @@ _Static_assert(offsetof(nl_world_def, agent_paths_per_step) == 64 && offsetof(nl
 _Static_assert(offsetof(nl_agent_def, navmesh) == 4 && offsetof(nl_agent_def, height) == 12 &&
                    offsetof(nl_agent_def, capabilities) == 16 && offsetof(nl_agent_def, max_speed) == 40 &&
                    offsetof(nl_agent_def, position) == 56 && offsetof(nl_agent_def, avoidance) == 68 &&
-                   offsetof(nl_agent_def, user_data) == 72 && sizeof(nl_agent_def) == 80,
+                   offsetof(nl_agent_def, user_data) == 72 && offsetof(nl_agent_def, give_up_seconds) == 80 &&
+                   sizeof(nl_agent_def) == 88,
                "nl_agent_def (no hidden padding)");
 _Static_assert(offsetof(nl_mesh_def, vertices) == 8 && offsetof(nl_mesh_def, vertex_stride) == 20 &&
                    offsetof(nl_mesh_def, indices) == 24 && offsetof(nl_mesh_def, flags) == 36 &&

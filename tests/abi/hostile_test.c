@@ -4122,12 +4122,15 @@ static const float_field k_agent_def_floats[] = {
     FLOAT_FIELD(nl_agent_def, gravity, 1),
     FLOAT_FIELD(nl_agent_def, takeoff_speed, 1),
     FLOAT_FIELD(nl_agent_def, position, 3),
+    FLOAT_FIELD(nl_agent_def, give_up_seconds, 1),
 };
 
 #define SET_U8(type, member, v) {offsetof(type, member), sizeof(uint8_t), {.u32 = (v)}}
 static const def_case k_agent_defs[] = {
-    {"def->size small (sizeof - 8: short of the first release)", INVALID, "def->size",
-     {SET_U32(nl_agent_def, size, (uint32_t)sizeof(nl_agent_def) - 8u)}},
+    {"def->size small (8 short of the first release)", INVALID, "def->size",
+     {SET_U32(nl_agent_def, size, (uint32_t)offsetof(nl_agent_def, give_up_seconds) - 8u)}},
+    {"def->size of the first release (allowed: give_up_seconds its default)", ALLOWED, NULL,
+     {SET_U32(nl_agent_def, size, (uint32_t)offsetof(nl_agent_def, give_up_seconds))}},
     {"def->size odd (sizeof + 1: no struct's size)", INVALID, "def->size", {SET_U32(nl_agent_def, size, (uint32_t)sizeof(nl_agent_def) + 1u)}},
     {"def->height 0", INVALID, "def->height", {SET_F32(nl_agent_def, height, 0.0f)}},
     {"def->height negative", INVALID, "def->height", {SET_F32(nl_agent_def, height, -2.0f)}},
@@ -4138,6 +4141,8 @@ static const def_case k_agent_defs[] = {
     {"def->gravity 0", INVALID, "def->gravity", {SET_F32(nl_agent_def, gravity, 0.0f)}},
     {"def->gravity negative (upward)", INVALID, "def->gravity", {SET_F32(nl_agent_def, gravity, -9.81f)}},
     {"def->takeoff_speed negative", INVALID, "def->takeoff_speed", {SET_F32(nl_agent_def, takeoff_speed, -1.0f)}},
+    {"def->give_up_seconds negative", INVALID, "def->give_up_seconds", {SET_F32(nl_agent_def, give_up_seconds, -1.0f)}},
+    {"def->give_up_seconds 5 (allowed)", ALLOWED, NULL, {SET_F32(nl_agent_def, give_up_seconds, 5.0f)}},
     {"def->capabilities.max_jump_distance negative", INVALID, "def->capabilities.max_jump_distance",
      {SET_F32(nl_agent_def, capabilities.max_jump_distance, -1.0f)}},
     {"def->capabilities.max_jump_height negative", INVALID, "def->capabilities.max_jump_height",

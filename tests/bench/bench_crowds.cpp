@@ -1,9 +1,14 @@
-// navlink-bench-crowds [--threads 1|2] [--only NAME] [--seconds S] [--covers P,P,...] [LEVEL.obj...]:
+// navlink-bench-crowds [--threads 1|2] [--only NAME] [--seconds S] [--covers P,P,...] [--give-up G]
+//                      [--navlink-only] [LEVEL.obj...]:
 // NavLink's agents against DetourCrowd in crowd scenarios with known answers
 // (tests/support/crowd_scenarios.h), and with random destinations on real levels at P% of the walkable
 // area covered by bodies (default 5, 10, 20 and 40)
 // (S seconds each, default 60; each agent sent on to its next point when it arrives), side by side in
 // one run. On a level, "never arrived" counts the agents that reached none of their destinations.
+// On a level, NavLink's agents give their destination up after G seconds held up in counterflow
+// (nl_agent_def.give_up_seconds; default 10, 0: never) and are sent on to the next point, as a host
+// whose agents roam would; in the scenarios they never give up (the default). --navlink-only skips
+// DetourCrowd on the levels.
 //
 // What is compared, exactly:
 // - The place: each scenario's boxes (a floor 1 m thick, walls 2.5 m high), built by the built-in
@@ -27,7 +32,8 @@
 //   stuck: agents that, not yet arrived, went 5 s without getting 0.1 m nearer their goal.
 //   all_by: seconds until every agent had arrived ("-" if some never did).
 //   deepest, mean: overlap of two bodies (the sum of radii less their distance, x-z), over every
-//     overlapping pair of every step, metres.
+//     overlapping pair of every step, metres; on a level from 2 s on (the bodies are put down at
+//     random points, some on others, and pushed apart in the first steps).
 //   flow: for the door scenarios, bodies through the door per metre of its width per second, from the
 //     first to the last crossing of its middle.
 //   us_step: microseconds per agent-step (the steps' total wall time over steps times agents).
@@ -274,7 +280,7 @@ struct LevelTally {
             if (d < best[i] - kProgress) best[i] = d, since[i] = now;
             if (now - since[i] > kStuck) stuck[i] = 1;
             grid.visit(at[i], 2 * radius, [&](uint32_t j) {
-                if (j <= i) return;
+                if (j <= i || now < 2.0f) return;
                 const float overlap = 2 * radius - std::hypot(at[i].x() - at[j].x(), at[i].z() - at[j].z());
                 if (overlap <= 0.0f) return;
                 deepest = std::max(deepest, overlap);
@@ -292,7 +298,7 @@ struct LevelTally {
     }
 };
 
-void run_level(nl::bench::RecastLevel& level, float cover, float seconds, int threads) {
+void run_level(nl::bench::RecastLevel& level, float cover, float seconds, int threads, float give_up, bool navlink_only) {
     nl::bench::Destinations where;
     where.pm = level.solo.polygons.get();
     where.polygons = nl::bench::largest_connected_polygons(*level.solo.polygons);
@@ -301,8 +307,9 @@ void run_level(nl::bench::RecastLevel& level, float cover, float seconds, int th
     const size_t n = size_t(std::lround(cover * where.area() / (M_PI * r * r)));
     if (n < 2) return;
     const int steps = int(seconds / kDt);
-    std::printf("%s, %.0f%% covered (%zu agents, %.0f s, random destinations, a new one on arrival)\n", level.name.c_str(),
-                double(100 * cover), n, double(seconds));
+    std::printf("%s, %.0f%% covered (%zu agents, %.0f s, random destinations, a new one on arrival; NavLink's give up after "
+                "%.0f s in counterflow)\n",
+                level.name.c_str(), double(100 * cover), n, double(seconds), double(give_up));
     std::vector<float> positions(3 * n), velocities(3 * n), goals(3 * n);
     std::vector<uint32_t> trips(n, 1);
     {   // NavLink
@@ -328,6 +335,7 @@ void run_level(nl::bench::RecastLevel& level, float cover, float seconds, int th
             agent.height = level.agent.height;
             agent.capabilities.radius = r;
             agent.user_data = i;
+            agent.give_up_seconds = give_up;
             where.point(uint32_t(i), 0, agent.position);
             if (NL_FAILED(nl_agent_add(world, &agent, &ids[i]))) return;
             send(i, 0.0f);
@@ -349,7 +357,7 @@ void run_level(nl::bench::RecastLevel& level, float cover, float seconds, int th
         nl_world_destroy(world);
         tally.print("NavLink", total, steps);
     }
-    {   // DetourCrowd, arriving within 0.1 m of its target (it has no arrival of its own)
+    if (!navlink_only) {   // DetourCrowd, arriving within 0.1 m of its target (it has no arrival of its own)
         nl::bench::DetourMesh detour;
         if (!nl::bench::build_detour(level, detour)) return;
         dtCrowd* crowd = dtAllocCrowd();
@@ -401,7 +409,8 @@ void run_level(nl::bench::RecastLevel& level, float cover, float seconds, int th
 
 int main(int argc, char** argv) {
     int threads = 1;
-    float seconds = 60.0f;
+    float seconds = 60.0f, give_up = 10.0f;
+    bool navlink_only = false;
     std::string only;
     std::vector<std::string> levels;
     std::vector<float> covers{0.05f, 0.10f, 0.20f, 0.40f};
@@ -413,6 +422,10 @@ int main(int argc, char** argv) {
             threads = std::atoi(argv[++i]);
         } else if (i + 1 < argc && name == "--only") {
             only = argv[++i];
+        } else if (name == "--navlink-only") {
+            navlink_only = true;
+        } else if (i + 1 < argc && name == "--give-up") {
+            give_up = float(std::atof(argv[++i]));
         } else if (i + 1 < argc && name == "--seconds") {
             seconds = float(std::atof(argv[++i]));
         } else if (i + 1 < argc && name == "--covers") {
@@ -420,7 +433,8 @@ int main(int argc, char** argv) {
             std::istringstream list(argv[++i]);
             for (std::string percent; std::getline(list, percent, ',');) covers.push_back(std::stof(percent) / 100.0f);
         } else {
-            std::fprintf(stderr, "usage: navlink-bench-crowds [--threads 1|2] [--only NAME] [--seconds S] [--covers P,P,...] [LEVEL.obj...]\n");
+            std::fprintf(stderr, "usage: navlink-bench-crowds [--threads 1|2] [--only NAME] [--seconds S] [--covers P,P,...] [--give-up G] "
+                                 "[--navlink-only] [LEVEL.obj...]\n");
             return 2;
         }
     }
@@ -466,7 +480,7 @@ int main(int argc, char** argv) {
     // Real levels: random destinations at 5, 10, 20 and 40% of the walkable area covered by bodies.
     for (const std::string& path : levels) {
         nl::bench::RecastLevel level = nl::bench::build_recast_level_from_obj(path.c_str());
-        for (const float cover : covers) run_level(level, cover, seconds, threads);
+        for (const float cover : covers) run_level(level, cover, seconds, threads, give_up, navlink_only);
     }
     return failures ? 1 : 0;
 }

@@ -90,6 +90,7 @@ bool add_agent(Soak& s, std::mt19937& rng, uint32_t kind, nl_agent_id* out) {
     const std::array<float, 3> at = s.somewhere(rng);
     std::memcpy(def.position, at.data(), sizeof def.position);
     def.user_data = kind;
+    def.give_up_seconds = 5.0f;  // a crowd of a thousand on a small level: some give up, and are sent on
     return expect(nl_agent_add(s.world, &def, out), "nl_agent_add", {NL_STATUS_NOT_FOUND});
 }
 
@@ -106,9 +107,9 @@ void send_somewhere(Soak& s, std::mt19937& rng, nl_agent_id agent) {
 }
 
 struct Tally {
-    uint64_t agent_steps = 0, arrivals = 0, failures = 0, take_offs = 0, landings = 0;
-    uint64_t replans[8] = {};
-    uint64_t failed_because[8] = {};
+    uint64_t agent_steps = 0, arrivals = 0, failures = 0, take_offs = 0, landings = 0, waits = 0;
+    uint64_t replans[NL_AGENT_REASON_CROWD + 1] = {};
+    uint64_t failed_because[NL_AGENT_REASON_CROWD + 1] = {};
 };
 
 bool finite3(const float* p) { return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]); }
@@ -132,11 +133,14 @@ void step_crowd(Soak& s, Worker& me, const Options& o, Tally& tally, std::atomic
         if (count && expect(nl_world_get_agent_events(s.world, events.data(), count, &count), "nl_world_get_agent_events")) {
             for (const nl_agent_event& e : events) {
                 if (e.kind == NL_AGENT_EVENT_ARRIVED) ++tally.arrivals;
-                if (e.kind == NL_AGENT_EVENT_FAILED) ++tally.failures, ++tally.failed_because[e.reason < 8 ? e.reason : 0];
+                if (e.kind == NL_AGENT_EVENT_FAILED) ++tally.failures, ++tally.failed_because[e.reason <= NL_AGENT_REASON_CROWD ? e.reason : 0];
                 if (e.kind == NL_AGENT_EVENT_LINK_STARTED) ++tally.take_offs;
                 if (e.kind == NL_AGENT_EVENT_LINK_FINISHED) ++tally.landings;
-                if (e.kind == NL_AGENT_EVENT_REPLANNED) ++tally.replans[e.reason < 8 ? e.reason : 0];
-                if (e.kind < NL_AGENT_EVENT_PATH_READY || e.kind > NL_AGENT_EVENT_REPLANNED)
+                if (e.kind == NL_AGENT_EVENT_REPLANNED) ++tally.replans[e.reason <= NL_AGENT_REASON_CROWD ? e.reason : 0];
+                if (e.kind == NL_AGENT_EVENT_WAITING) ++tally.waits;
+                if (e.kind == NL_AGENT_EVENT_WAITING && e.reason != NL_AGENT_REASON_CROWD)
+                    fail("a WAITING event with reason " + std::to_string(e.reason));
+                if (e.kind < NL_AGENT_EVENT_PATH_READY || e.kind > NL_AGENT_EVENT_WAITING)
                     fail("an event of kind " + std::to_string(e.kind));
                 if ((e.kind == NL_AGENT_EVENT_ARRIVED || e.kind == NL_AGENT_EVENT_FAILED) &&
                     nl_agent_is_valid(s.world, e.agent))
@@ -157,7 +161,7 @@ void step_crowd(Soak& s, Worker& me, const Options& o, Tally& tally, std::atomic
                 const nl_agent_info& info = infos[k];
                 if (!finite3(info.position) || !finite3(info.velocity))
                     fail("agent " + std::to_string(k) + " is at a position or velocity that is not finite");
-                if (info.state > NL_AGENT_FAILED || info.reason > NL_AGENT_REASON_CAPABILITIES_CHANGED)
+                if (info.state > NL_AGENT_FAILED || info.reason > NL_AGENT_REASON_CROWD)
                     fail("agent " + std::to_string(k) + " has state " + std::to_string(info.state) + ", reason " +
                          std::to_string(info.reason));
                 if (info.state == NL_AGENT_IDLE) send_somewhere(s, rng, info.id);  // a stopped one, sent again
@@ -484,11 +488,14 @@ int main(int argc, char** argv) {
                 (unsigned long long)tally.replans[NL_AGENT_REASON_WORLD_CHANGED],
                 (unsigned long long)tally.replans[NL_AGENT_REASON_OFF_PATH],
                 (unsigned long long)tally.replans[NL_AGENT_REASON_CAPABILITIES_CHANGED]);
-    std::printf("  failures: %llu no path, %llu navmesh removed, %llu other\n",
+    std::printf("  failures: %llu no path, %llu navmesh removed, %llu given up in counterflow, %llu other; %llu waits for room\n",
                 (unsigned long long)tally.failed_because[NL_AGENT_REASON_NO_PATH],
                 (unsigned long long)tally.failed_because[NL_AGENT_REASON_NAVMESH_REMOVED],
+                (unsigned long long)tally.failed_because[NL_AGENT_REASON_CROWD],
                 (unsigned long long)(tally.failures - tally.failed_because[NL_AGENT_REASON_NO_PATH] -
-                                     tally.failed_because[NL_AGENT_REASON_NAVMESH_REMOVED]));
+                                     tally.failed_because[NL_AGENT_REASON_NAVMESH_REMOVED] -
+                                     tally.failed_because[NL_AGENT_REASON_CROWD]),
+                (unsigned long long)tally.waits);
     // A hundred steps give the crowd time to reach links the editor changes.
     if (steps_done >= 100 && tally.replans[NL_AGENT_REASON_LINK_GONE] + tally.replans[NL_AGENT_REASON_WORLD_CHANGED] == 0)
         fail("the link edits never reached an agent's path");

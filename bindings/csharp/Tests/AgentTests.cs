@@ -52,8 +52,12 @@ namespace NavLink.Tests
                 AgentDef defaults = World.DefaultAgentDef();
                 check.That(defaults.Size == (uint)Marshal.SizeOf(typeof(AgentDef)) && defaults.Height == 2 && defaults.MaxSpeed == 3.5f &&
                            defaults.MaxAcceleration == 8 && Math.Abs(defaults.Gravity - 9.81f) < 1e-6f && defaults.Avoidance == 1 &&
-                           defaults.Capabilities.Radius == 0.6f && defaults.Navmesh.IsNull,
+                           defaults.Capabilities.Radius == 0.6f && defaults.Navmesh.IsNull && defaults.TakeoffSpeed == 0 &&
+                           defaults.GiveUpSeconds == 0,
                            "the default agent def");
+                check.That((uint)AgentEventKind.Waiting == 7u && (uint)AgentReason.Crowd == 8u,
+                           "waiting for room: AgentEventKind.Waiting " + (uint)AgentEventKind.Waiting + ", AgentReason.Crowd " +
+                           (uint)AgentReason.Crowd);
                 check.That(new WorldOptions().AgentPathsPerStep == 32, "32 agent paths per step by default");
 
                 using (var world = new World())

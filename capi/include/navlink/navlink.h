@@ -1596,6 +1596,11 @@ typedef uint32_t nl_agent_reason;
 #define NL_AGENT_REASON_NO_PATH 5u             /**< The destination cannot be reached (it went as near as it could). */
 #define NL_AGENT_REASON_NAVMESH_REMOVED 6u     /**< Its navmesh was removed. */
 #define NL_AGENT_REASON_CAPABILITIES_CHANGED 7u
+#define NL_AGENT_REASON_CROWD 8u               /**< Other bodies are in its way: it waits for room (the
+                                                    WAITING event; nl_agent_info reads WAITING with this
+                                                    reason meanwhile), or it gave its destination up after
+                                                    nl_agent_def.give_up_seconds in counterflow (FAILED).
+                                                    Added in 0.3. */
 
 /** How to add an agent. Get one from nl_default_agent_def(). */
 typedef struct nl_agent_def {
@@ -1617,10 +1622,19 @@ typedef struct nl_agent_def {
     uint8_t avoidance;                  /**< 1 (default): steers around other agents (docs/agents.md). */
     uint8_t reserved[3];
     uint64_t user_data;                 /**< The host's, handed back in infos and events. */
+    float give_up_seconds;              /**< 0 (default): never. > 0: held up this long by bodies
+                                             heading the other way (walking or giving way on the
+                                             ground) without getting 1 m nearer its destination along
+                                             its path, it gives the destination up: FAILED, reason
+                                             NL_AGENT_REASON_CROWD, for a host that would rather send
+                                             it elsewhere (docs/agents.md, "When the crowd does not
+                                             let it through"). A queue, all one way, never counts.
+                                             Added in 0.3. */
+    uint32_t reserved2;
 } nl_agent_def;
 
 /** Default capabilities (a walker), height 2, speed 3.5, acceleration 8, gravity 9.81, avoidance
- *  on, the null navmesh at (0,0,0): set navmesh and position. Thread-safe; never fails. */
+ *  on, never giving up, the null navmesh at (0,0,0): set navmesh and position. Thread-safe; never fails. */
 NL_API nl_agent_def nl_default_agent_def(void);
 
 /** Adds an agent, standing still (NL_AGENT_IDLE) at the navmesh point of def->position.
@@ -1680,7 +1694,8 @@ typedef struct nl_agent_info {
     float position[3];        /**< Feet, on the surface (in the air: on the link's trajectory). */
     float velocity[3];
     uint32_t polygon;         /**< The navmesh polygon it stands on (its take-off's while in the air). */
-    nl_agent_reason reason;   /**< Why it failed, or why its current path was planned. */
+    nl_agent_reason reason;   /**< Why it failed, or why its current path was planned; CROWD while it
+                                   waits for room. */
     nl_link_id link;          /**< The link it is taking, or waits to take; null otherwise. */
     float link_progress;      /**< 0..1 of the link's time. */
     float destination[3];     /**< Its destination, if has_destination: in the world, where it is now
@@ -1755,6 +1770,10 @@ typedef uint32_t nl_agent_event_kind;
 #define NL_AGENT_EVENT_ARRIVED 4u
 #define NL_AGENT_EVENT_FAILED 5u         /**< `reason` says why. */
 #define NL_AGENT_EVENT_REPLANNED 6u      /**< It asked for a new path (`reason`; `link` for LINK_GONE). */
+#define NL_AGENT_EVENT_WAITING 7u        /**< It stopped for room (reason NL_AGENT_REASON_CROWD): stuck
+                                              among other bodies for 0.75 s, or giving way to one; its
+                                              nl_agent_info reads WAITING, reason CROWD, until it walks
+                                              on. Said once per wait. Added in 0.3. */
 
 /** An array element that may grow: set `size` of the first (nl_agent_event_init). */
 typedef struct nl_agent_event {

@@ -5,7 +5,8 @@ namespace NavLink
     public sealed partial class World
     {
         /// <summary>A walker (World.DefaultAgentCapabilities()), height 2, speed 3.5, acceleration 8, gravity
-        /// 9.81, avoidance on, on the null navmesh at the origin: set Navmesh and Position.</summary>
+        /// 9.81, avoidance on, never giving up (GiveUpSeconds 0), on the null navmesh at the origin:
+        /// set Navmesh and Position.</summary>
         public static AgentDef DefaultAgentDef() { LibraryCheck.EnsureLoaded(); return Native.nl_default_agent_def(); }
 
         /// <summary>Adds an agent standing still (AgentState.Idle) at the navmesh point of def.Position

@@ -33,6 +33,10 @@ pub const NL_AGENT_REASON_OFF_PATH: nl_agent_reason = 4;
 pub const NL_AGENT_REASON_NO_PATH: nl_agent_reason = 5;
 pub const NL_AGENT_REASON_NAVMESH_REMOVED: nl_agent_reason = 6;
 pub const NL_AGENT_REASON_CAPABILITIES_CHANGED: nl_agent_reason = 7;
+/// Other bodies are in its way: it waits for room (the WAITING event; `nl_agent_info` reads WAITING with
+/// this reason meanwhile), or it gave its destination up after `nl_agent_def.give_up_seconds` (FAILED).
+/// Added in 0.3.
+pub const NL_AGENT_REASON_CROWD: nl_agent_reason = 8;
 
 /// How to add an agent. Get one from `nl_default_agent_def()`.
 #[repr(C)]
@@ -50,6 +54,11 @@ pub struct nl_agent_def {
     pub avoidance: u8,
     pub reserved: [u8; 3],
     pub user_data: u64,
+    /// 0 (default): never. Held up this long by bodies heading the other way (walking or giving way on
+    /// the ground) without getting 1 m nearer its destination along its path, it gives the destination
+    /// up: FAILED, reason `NL_AGENT_REASON_CROWD`. A queue, all one way, never counts. Added in 0.3.
+    pub give_up_seconds: f32,
+    pub reserved2: u32,
 }
 
 /// An agent's state. An array element that may grow: the library lays out an output array with the
@@ -122,6 +131,10 @@ pub const NL_AGENT_EVENT_LINK_FINISHED: nl_agent_event_kind = 3;
 pub const NL_AGENT_EVENT_ARRIVED: nl_agent_event_kind = 4;
 pub const NL_AGENT_EVENT_FAILED: nl_agent_event_kind = 5;
 pub const NL_AGENT_EVENT_REPLANNED: nl_agent_event_kind = 6;
+/// It stopped for room (reason `NL_AGENT_REASON_CROWD`): stuck among other bodies for 0.75 s, or giving
+/// way to one; its `nl_agent_info` reads WAITING, reason CROWD, until it walks on. Said once per wait.
+/// Added in 0.3.
+pub const NL_AGENT_EVENT_WAITING: nl_agent_event_kind = 7;
 
 /// What happened to an agent in the last step. An array element that may grow.
 #[repr(C)]

@@ -8,7 +8,7 @@ use crate::world::World;
 use navlink_sys as sys;
 
 /// A walker (`default_agent_capabilities()`), height 2, speed 3.5, acceleration 8, gravity 9.81, avoidance
-/// on, on the null navmesh at the origin: set `navmesh` and `position`.
+/// on, never giving up, on the null navmesh at the origin: set `navmesh` and `position`.
 pub fn default_agent_def() -> AgentDef {
     AgentDef::default()
 }

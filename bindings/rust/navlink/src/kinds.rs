@@ -108,6 +108,10 @@ c_enum! {
         NoPath = sys::NL_AGENT_REASON_NO_PATH,
         NavmeshRemoved = sys::NL_AGENT_REASON_NAVMESH_REMOVED,
         CapabilitiesChanged = sys::NL_AGENT_REASON_CAPABILITIES_CHANGED,
+        /// Other bodies are in its way: it waits for room (`AgentEventKind::Waiting`; `AgentInfo` reads
+        /// `AgentState::Waiting` with this reason meanwhile), or it gave its destination up after
+        /// `AgentDef::give_up_seconds` (`AgentState::Failed`).
+        Crowd = sys::NL_AGENT_REASON_CROWD,
     }
 }
 
@@ -120,6 +124,10 @@ c_enum! {
         Arrived = sys::NL_AGENT_EVENT_ARRIVED,
         Failed = sys::NL_AGENT_EVENT_FAILED,
         Replanned = sys::NL_AGENT_EVENT_REPLANNED,
+        /// It stopped for room (`AgentReason::Crowd`): stuck among other bodies for 0.75 s, or giving way
+        /// to one; its `AgentInfo` reads `AgentState::Waiting`, reason `Crowd`, until it walks on. Said
+        /// once per wait.
+        Waiting = sys::NL_AGENT_EVENT_WAITING,
     }
 }
 

@@ -101,6 +101,10 @@ plain_struct! {
         position: [f32; 3],
         avoidance: bool,
         user_data: u64,
+        /// Seconds held up by bodies heading the other way without getting 1 m nearer its destination
+        /// along its path before it gives the destination up (`AgentState::Failed`,
+        /// `AgentReason::Crowd`); 0 (default): never.
+        give_up_seconds: f32,
     }
 }
 

@@ -43,6 +43,10 @@ fn defaults() {
     assert!(def.height == 2.0 && def.max_speed == 3.5 && def.max_acceleration == 8.0 && def.avoidance);
     assert!((def.gravity - 9.81).abs() < 1e-6 && def.takeoff_speed == 0.0 && def.navmesh == NavmeshId::default());
     assert!(def.capabilities.radius == 0.6 && def.capabilities.max_jump_distance == 0.0);
+    assert_eq!(def.give_up_seconds, 0.0);
+    assert_eq!((navlink::AgentEventKind::Waiting.to_raw(), navlink::AgentReason::Crowd.to_raw()), (7, 8));
+    assert_eq!(navlink::AgentReason::from_raw(sys::NL_AGENT_REASON_CROWD), navlink::AgentReason::Crowd);
+    assert_eq!(navlink::AgentEventKind::from_raw(sys::NL_AGENT_EVENT_WAITING), navlink::AgentEventKind::Waiting);
     assert_eq!(WorldOptions::default().agent_paths_per_step, 32);
 }
 

@@ -3,7 +3,8 @@ using System.Runtime.InteropServices;
 namespace NavLink
 {
     /// <summary>nl_agent_def: how to add an agent. Get one from World.DefaultAgentDef() (a walker, height 2,
-    /// speed 3.5, acceleration 8, gravity 9.81, avoidance on) and set Navmesh and Position.</summary>
+    /// speed 3.5, acceleration 8, gravity 9.81, avoidance on, never giving up) and set Navmesh
+    /// and Position.</summary>
     [StructLayout(LayoutKind.Sequential)]
     public unsafe struct AgentDef
     {
@@ -26,6 +27,12 @@ namespace NavLink
         public fixed byte Reserved[3];
         /// <summary>The host's, handed back in AgentInfo and AgentEvent.</summary>
         public ulong UserData;
+        /// <summary>0 (default): never. Held up this long by bodies heading the other way (walking or giving
+        /// way on the ground) without getting 1 m nearer its destination along its path, it gives the
+        /// destination up: AgentState.Failed, AgentReason.Crowd. A queue, all one way, never counts. Added in
+        /// 0.3.</summary>
+        public float GiveUpSeconds;
+        public uint Reserved2;
     }
 
     /// <summary>nl_agent_info: an agent's state. An array element that may grow: the library lays out an

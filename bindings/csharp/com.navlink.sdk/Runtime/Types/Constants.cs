@@ -144,6 +144,10 @@ namespace NavLink
         NoPath = 5u,
         NavmeshRemoved = 6u,
         CapabilitiesChanged = 7u,
+        /// <summary>Other bodies are in its way: it waits for room (AgentEventKind.Waiting; AgentInfo reads
+        /// AgentState.Waiting with this reason meanwhile), or it gave its destination up after
+        /// AgentDef.GiveUpSeconds (AgentState.Failed). Added in 0.3.</summary>
+        Crowd = 8u,
     }
 
     /// <summary>nl_trajectory_kind: how a link is being taken (AgentTrajectory.Kind).</summary>
@@ -173,6 +177,10 @@ namespace NavLink
         Failed = 5u,
         /// <summary>It asked for a new path (Reason; Link for LinkGone).</summary>
         Replanned = 6u,
+        /// <summary>It stopped for room (Reason Crowd): stuck among other bodies for 0.75 s, or giving way to
+        /// one; its AgentInfo reads AgentState.Waiting, AgentReason.Crowd, until it walks on. Said once per
+        /// wait. Added in 0.3.</summary>
+        Waiting = 7u,
     }
 
     /// <summary>nl_navmesh_load_links_json's flags (World.LoadLinksJson's anyBody).</summary>
