@@ -137,3 +137,122 @@ TEST_CASE("crowd: a hundred and forty at a door in counterflow move the same on 
 TEST_CASE("crowd: ten from each end of two 5 m corridors crossing at 90 degrees all get through") {
     check(nl::test::corridor(10, 5.0f, true));
 }
+
+namespace {
+
+// Two agents head-on in a corridor too narrow for them to pass (1.6 m: the walkable strip the body's
+// radius leaves is 0.4 m wide), each giving its destination up after `give_up` seconds (0: never).
+// Returns, per agent, the step's events and states over `seconds`.
+struct NarrowRun {
+    std::vector<std::vector<nl::AgentEvent>> events;  // per agent
+    std::vector<std::vector<nl::AgentInfo>> states;   // per agent, every step
+};
+
+NarrowRun head_on_in_narrow_corridor(const float give_up[2], float seconds) {
+    const CrowdScenario s = nl::test::corridor(1, 1.6f, false);
+    REQUIRE(s.agents.size() == 2);
+    nl::WorldSettings settings;
+    settings.worker_count = 1;
+    nl::World world(std::move(settings));
+    const Handle navmesh = world.add_navmesh(s.navmesh);
+    std::vector<Handle> ids;
+    for (size_t i = 0; i < 2; ++i) {
+        nl::AgentDef def;
+        def.navmesh = navmesh;
+        def.position = s.agents[i].start;
+        def.capabilities.radius = s.radius;
+        def.user_data = i;
+        def.give_up_seconds = give_up[i];
+        ids.push_back(world.agents().add(world.navmeshes(), def));
+        world.agents().set_destination(world.navmeshes(), ids.back(), s.agents[i].goal);
+    }
+    NarrowRun r;
+    r.events.resize(2);
+    r.states.resize(2);
+    for (int step = 0; step < int(seconds / kDt); ++step) {
+        world.step(kDt);
+        for (const nl::AgentEvent& e : world.agents().events()) r.events[e.user_data].push_back(e);
+        const std::vector<nl::AgentInfo> infos = world.agents().infos();
+        for (size_t i = 0; i < 2; ++i) r.states[i].push_back(infos[i]);
+    }
+    return r;
+}
+
+size_t count_events(const std::vector<nl::AgentEvent>& events, nl::AgentEventKind kind, nl::AgentReason reason) {
+    return size_t(std::count_if(events.begin(), events.end(), [&](const nl::AgentEvent& e) { return e.kind == kind && e.reason == reason; }));
+}
+
+}  // namespace
+
+TEST_CASE("crowd: two head-on in a corridor too narrow to pass say they wait for room, and never stand WALKING still") {
+    const float never[2] = {0.0f, 0.0f};
+    const NarrowRun r = head_on_in_narrow_corridor(never, 40.0f);
+    for (size_t i = 0; i < 2; ++i) {
+        CAPTURE(i);
+        // They meet, and one at least waits for the other (stuck, or stepping back to give way).
+        CHECK(count_events(r.events[i], nl::AgentEventKind::Waiting, nl::AgentReason::Crowd) >= 1);
+        CHECK(count_events(r.events[i], nl::AgentEventKind::Failed, nl::AgentReason::Crowd) == 0);
+        float standing_walking = 0.0f, longest = 0.0f;
+        bool waited = false;
+        for (const nl::AgentInfo& a : r.states[i]) {
+            // A host reads every wait for room as WAITING with the reason CROWD; and a body that reads
+            // WALKING is walking (slower than 0.1 m/s for at most a second: turning, starting).
+            if (a.state == AgentState::Waiting && a.reason == nl::AgentReason::Crowd) waited = true;
+            if (a.state == AgentState::Walking && std::hypot(a.velocity.x(), a.velocity.z()) < 0.1f) standing_walking += kDt;
+            else standing_walking = 0.0f;
+            longest = std::max(longest, standing_walking);
+        }
+        CHECK(waited);
+        CHECK(longest <= 1.0f);
+        CHECK(r.states[i].back().state != AgentState::Failed);
+    }
+}
+
+TEST_CASE("crowd: of two head-on in a corridor too narrow to pass, the one told to gives its destination up") {
+    const float first_gives_up[2] = {4.0f, 0.0f};
+    const NarrowRun r = head_on_in_narrow_corridor(first_gives_up, 40.0f);
+    CHECK(count_events(r.events[0], nl::AgentEventKind::Failed, nl::AgentReason::Crowd) == 1);
+    CHECK(count_events(r.events[1], nl::AgentEventKind::Failed, nl::AgentReason::Crowd) == 0);
+    // It failed once held up 4 s without getting 1 m nearer: not before it met the other (they start
+    // 27 m apart and walk 3.5 m/s), and not long after.
+    size_t failed_at = 0;
+    while (failed_at < r.states[0].size() && r.states[0][failed_at].state != AgentState::Failed) ++failed_at;
+    REQUIRE(failed_at < r.states[0].size());
+    const float when = float(failed_at + 1) * kDt;
+    MESSAGE("gave up at " << when << " s");
+    CHECK(when >= 4.0f + 3.0f);
+    CHECK(when <= 30.0f);
+    CHECK(r.states[0].back().state == AgentState::Failed);
+    CHECK(r.states[0].back().reason == nl::AgentReason::Crowd);
+}
+
+TEST_CASE("crowd: a queue through a door, all one way, never gives up however long it waits") {
+    CrowdScenario s = nl::test::door_counterflow(20, 2.0f, false);
+    nl::WorldSettings settings;
+    settings.worker_count = 1;
+    nl::World world(std::move(settings));
+    const Handle navmesh = world.add_navmesh(s.navmesh);
+    for (const nl::test::CrowdAgent& a : s.agents) {
+        nl::AgentDef def;
+        def.navmesh = navmesh;
+        def.position = a.start;
+        def.capabilities.radius = s.radius;
+        def.give_up_seconds = 1.0f;  // held up 1 s in counterflow would do
+        const Handle id = world.agents().add(world.navmeshes(), def);
+        world.agents().set_destination(world.navmeshes(), id, a.goal);
+    }
+    size_t waits = 0, failures = 0, arrivals = 0;
+    for (int step = 0; step < int(s.seconds / kDt); ++step) {
+        world.step(kDt);
+        for (const nl::AgentEvent& e : world.agents().events()) {
+            waits += e.kind == nl::AgentEventKind::Waiting;
+            failures += e.kind == nl::AgentEventKind::Failed;
+            if (e.kind == nl::AgentEventKind::Failed) MESSAGE("failed: reason " << int(e.reason) << " at " << step * kDt);
+            arrivals += e.kind == nl::AgentEventKind::Arrived;
+        }
+    }
+    MESSAGE(waits << " waits for room, " << arrivals << " arrivals");
+    CHECK(waits >= 1);  // the queue did wait
+    CHECK(failures == 0);
+    CHECK(arrivals == s.agents.size());
+}
