@@ -125,9 +125,11 @@ Vec3 keep_right(const AgentBody& a, const Vec3& desired, const CrowdSnapshot& cr
 // cannot do this: for bodies in contact every velocity toward the other collides at once, and the
 // least bad is to stand, so two walkers pressed together in counterflow stood for good. Then no
 // contact is pressed into faster than it moves away. Bodies that make room are pushed aside
-// instead (overlaps.h), and one that walks away at half our speed or more is followed, not slid
-// past. Returns whether it touched a body it walks into (`desired` changed), else leaves it.
+// instead (overlaps.h); one on its way our way that moves along it (a queue: overtaking it by the
+// side jammed a door's mouth), and one that walks away at half our speed or more, are followed, not
+// slid past; one our way that stands (stuck) is walked round. Returns whether it touched a body it walks into (`desired` changed), else leaves it.
 constexpr float kSlideSpeed = 0.5f;  // of its desired speed: head-on, the sidestep to the right
+constexpr float kMovesOn = 0.1f;     // of its desired speed: a body our way this fast along it is followed
 bool slide_past(const AgentBody& a, Vec3& desired, const CrowdSnapshot& crowd, const uint32_t* near, size_t count) {
     const float speed = desired.norm();
     if (speed <= 0.0f) return false;
@@ -148,7 +150,10 @@ bool slide_past(const AgentBody& a, Vec3& desired, const CrowdSnapshot& crowd, c
     for (size_t k = 0; k < count; ++k) {
         if (!contact(near[k], normal)) continue;
         const float into = desired.dot(normal);
-        if (into <= 0.0f || away(near[k], normal) > kSlideSpeed * speed) continue;
+        // Followed, not slid past: one on its way our way that moves along it (a queue that moves), or
+        // one walking off faster than half our speed.
+        const bool our_way = crowd.ways[near[k]].dot(desired) > 0.0f && crowd.velocities[near[k]].dot(desired) > kMovesOn * speed * speed;
+        if (into <= 0.0f || our_way || away(near[k], normal) > kSlideSpeed * speed) continue;
         desired -= normal * into;
         if (desired.norm() < kSlideSpeed * speed) desired += Vec3(-normal.z(), 0.0f, normal.x()) * (kSlideSpeed * speed);
         slid = true;

@@ -64,6 +64,16 @@ void count_shared_goals(const std::vector<const AgentBody*>& agents, CrowdSnapsh
 
 }  // namespace
 
+bool on_its_way(const AgentBody& a) {
+    return !a.motion && !a.at_takeoff && !a.path.empty() && (a.state == AgentState::Walking || a.giving_way > 0.0f);
+}
+
+Vec3 way_ahead(const AgentBody& a) {
+    const Vec3& to = a.path[a.next].position;
+    const Vec3& from = a.next > 0 ? a.path[a.next - 1].position : a.position;
+    return Vec3(to.x() - from.x(), 0.0f, to.z() - from.z());
+}
+
 void snapshot_crowd(const std::vector<const AgentBody*>& agents, CrowdSnapshot& crowd) {
     const size_t n = agents.size();
     crowd.positions.resize(n);
@@ -72,6 +82,7 @@ void snapshot_crowd(const std::vector<const AgentBody*>& agents, CrowdSnapshot& 
     crowd.grounded.resize(n);
     crowd.arrived.resize(n);
     crowd.makes_room.resize(n);
+    crowd.ways.resize(n);
     crowd.max_radius = 0.0f;
     for (size_t i = 0; i < n; ++i) {
         const AgentBody& a = *agents[i];
@@ -83,6 +94,7 @@ void snapshot_crowd(const std::vector<const AgentBody*>& agents, CrowdSnapshot& 
         crowd.grounded[i] = !a.motion && !(a.state == AgentState::Failed && a.reason == AgentReason::NavMeshRemoved);
         crowd.arrived[i] = a.state == AgentState::Arrived;
         crowd.makes_room[i] = crowd.arrived[i] || a.giving_way > 0.0f;
+        crowd.ways[i] = on_its_way(a) ? way_ahead(a) : Vec3(Vec3::Zero());
         if (!crowd.grounded[i]) continue;
         crowd.max_radius = std::max(crowd.max_radius, crowd.radii[i]);
     }

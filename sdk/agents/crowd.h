@@ -20,6 +20,8 @@ struct CrowdSnapshot {
     // Standing aside: arrived, or giving way to another. Walkers do not steer around these; they
     // walk on and push them aside (overlaps.h), so a crowd that has arrived never walls a way off.
     std::vector<uint8_t> makes_room;
+    // The leg of its path it walks, walking or giving way (on_its_way): zero for any other body.
+    std::vector<Vec3> ways;
     // Its destination (in the space's coordinates) and how many bodies, itself included, are sent to
     // one so near it that they cannot all stand there (their discs at the two destinations overlap):
     // 0 for a body without a destination in this space.
@@ -31,6 +33,14 @@ struct CrowdSnapshot {
     NeighbourGrid grid;
     float max_radius = 0.0f;        // the widest body on the ground
 };
+
+// Walking its path on the ground, or standing aside for a moment to let another pass.
+bool on_its_way(const AgentBody& a);
+
+// The direction of the leg of its path a body on its way walks (x-z): from the point before the next
+// to the next, whatever way the crowd has pushed it (past a corner, its heading to the next point
+// turns back); on the first leg, from where it stands.
+Vec3 way_ahead(const AgentBody& a);
 
 // Fills `crowd` (in place: its grid refers to its positions) from the agents as they are: the bodies
 // that share one space (the world, or one moving surface), in agent order; crowd index k is members[k].

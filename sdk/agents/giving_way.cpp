@@ -13,15 +13,6 @@ constexpr float kStraightInto = 0.9f;   // cosine: a body this near straight ahe
 // Walking on the ground toward a point (not standing at a take-off, not in the air).
 bool walking(const AgentBody& a) { return a.state == AgentState::Walking && !a.at_takeoff && !a.motion && !a.path.empty(); }
 
-// The direction of the leg of its path it walks (x-z): from the point before the next to the next,
-// whatever way the crowd has pushed it (past a corner, its own heading to the next point turns
-// back); on the first leg, from where it stands.
-Vec3 way_ahead(const AgentBody& a) {
-    const Vec3& to = a.path[a.next].position;
-    const Vec3& from = a.next > 0 ? a.path[a.next - 1].position : a.position;
-    return Vec3(to.x() - from.x(), 0.0f, to.z() - from.z());
-}
-
 // What a host reads as waiting for room: stuck while walking, or standing aside.
 bool waits_for_room(const AgentBody& a) {
     return (walking(a) && a.blocked_time >= kStuckSeconds) || (a.giving_way > 0.0f && a.state == AgentState::Waiting);
@@ -42,9 +33,9 @@ void keep_patience(AgentBody& a, float dt) {
     const bool waits = waits_for_room(a);
     if (waits && !a.waiting_for_room) a.emit(AgentEventKind::Waiting, AgentReason::Crowd);
     a.waiting_for_room = waits;
-    const bool on_its_way = !a.path.empty() && !a.motion && !a.wants_path &&
-                            (a.state == AgentState::Walking || (a.state == AgentState::Waiting && a.giving_way > 0.0f));
-    if (!on_its_way || a.at_takeoff) {
+    const bool counting = !a.path.empty() && !a.motion && !a.wants_path &&
+                          (a.state == AgentState::Walking || (a.state == AgentState::Waiting && a.giving_way > 0.0f));
+    if (!counting || a.at_takeoff) {
         // At a take-off or in the air it got somewhere; waiting for its path, it did not walk.
         if (a.at_takeoff || a.motion) forget_patience(a);
         return;
@@ -120,7 +111,7 @@ void decide_giving_way(std::vector<AgentBody>& agents, const std::vector<uint32_
             if (d.norm() >= radius + b.def.capabilities.radius + slack) return;
             if (std::fabs(crowd.positions[k].y() - crowd.positions[self].y()) > std::max(a.def.height, b.def.height)) return;
             // On its way (not standing where it arrived), along a leg that runs against ours.
-            if (walking(b) || b.giving_way > 0.0f) against_counterflow[i] |= way_ahead(b).dot(way_ahead(a)) < 0.0f;
+            if (on_its_way(b)) against_counterflow[i] |= way_ahead(b).dot(way_ahead(a)) < 0.0f;
             if (gives[i]) return;
             if (b.giving_way > 0.0f) {
                 // Pressing straight into one that stands aside (it is in the way ahead, not beside).
