@@ -170,6 +170,8 @@ bool run_navlink(const nl::bench::RecastLevel& level, const CrowdScenario& s, in
         agent.navmesh = navmesh;
         agent.height = level.agent.height;
         agent.capabilities.radius = level.agent.radius;
+        agent.max_speed = s.max_speed;
+        agent.max_acceleration = s.max_acceleration;
         agent.user_data = i;
         std::memcpy(agent.position, s.agents[i].start.data(), sizeof agent.position);
         ok = NL_SUCCEEDED(nl_agent_add(world, &agent, &ids[i])) && NL_SUCCEEDED(nl_agent_set_destination(world, ids[i], s.agents[i].goal.data()));
@@ -215,7 +217,9 @@ bool run_detour_crowd(nl::bench::RecastLevel& level, const CrowdScenario& s, Tal
     dtCrowd* crowd = dtAllocCrowd();
     const size_t n = s.agents.size();
     bool ok = crowd && crowd->init(int(n), level.agent.radius, detour.mesh);
-    const dtCrowdAgentParams params = nl::bench::detour_crowd_agent(level);
+    dtCrowdAgentParams params = nl::bench::detour_crowd_agent(level);
+    params.maxSpeed = s.max_speed;
+    params.maxAcceleration = s.max_acceleration;
     const dtQueryFilter filter;
     for (size_t i = 0; ok && i < n; ++i) {
         float nearest[3], target[3];
@@ -252,7 +256,10 @@ void print(const char* side, const Outcome& o) {
 struct Case {
     CrowdScenario scenario;
     float door = 0.0f;
+    float cell_size = 0.0f;  // Recast's voxel width (0: its default)
 };
+
+constexpr float kPeopleCells = 0.05f;  // m: Recast cells for the bottleneck experiments' doors
 
 // A crowd on a real level: bodies that cover `cover` of the walkable area, each sent to a random
 // reachable point and to the next one whenever it arrives (or, NavLink, fails).
@@ -448,10 +455,14 @@ int main(int argc, char** argv) {
     cases.push_back({nl::test::corridor(10, 5.0f, false)});
     cases.push_back({nl::test::corridor(10, 5.0f, true)});
     // Bottlenecks as in the published experiments (Seyfried et al. 2009, Kretz et al. 2006): people
-    // about 0.5 m across (radius 0.25 m here), doors 1.2 to 3 m, 50 through one way.
+    // about 0.5 m across (radius 0.25 m here) at a person's free walking speed (1.34 m/s; 2.7 m/s^2,
+    // that speed in half a second), doors 1.2 to 3 m, 50 through one way, on a navmesh of 5 cm cells
+    // (at the default 30 cm, doors 40 cm apart in width open alike once eroded).
     for (const float width : {1.2f, 1.6f, 2.0f, 2.5f, 3.0f}) {
-        Case c{nl::test::door_counterflow(50, width, false, 0.25f), width};
-        c.scenario.name += ", radius 0.25 m, door " + figure(width, "%.1f") + " m";
+        Case c{nl::test::door_counterflow(50, width, false, 0.25f), width, kPeopleCells};
+        c.scenario.name += ", people (radius 0.25 m, 1.34 m/s), door " + figure(width, "%.1f") + " m";
+        c.scenario.max_speed = 1.34f;
+        c.scenario.max_acceleration = 2.7f;
         cases.push_back(c);
     }
     std::printf("navlink-bench-crowds: NavLink on %d thread%s against DetourCrowd, steps of 1/30 s, bodies of radius 0.6 m "
@@ -463,7 +474,7 @@ int main(int argc, char** argv) {
         if (!only.empty() && s.name.find(only) == std::string::npos) continue;
         nl::levelgen::GeneratedLevel geometry;
         for (const auto& [lo, hi] : s.boxes) geometry.add_box({{lo.x(), lo.y(), lo.z()}, {hi.x(), hi.y(), hi.z()}});
-        nl::bench::RecastLevel level = nl::bench::build_recast_level(s.name, geometry.positions, geometry.indices, s.radius);
+        nl::bench::RecastLevel level = nl::bench::build_recast_level(s.name, geometry.positions, geometry.indices, s.radius, c.cell_size);
         Tally nl_tally(s, c.door), dc_tally(s, c.door);
         double dc_ms = 0.0;
         if (!run_navlink(level, s, threads, nl_tally) || !run_detour_crowd(level, s, dc_tally, dc_ms)) {

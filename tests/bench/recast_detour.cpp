@@ -12,7 +12,7 @@
 namespace nl::bench {
 
 RecastLevel build_recast_level(const std::string& name, const std::vector<float>& vertices,
-                               const std::vector<uint32_t>& indices, float radius) {
+                               const std::vector<uint32_t>& indices, float radius, float cell_size) {
     nl::recast::LevelTriangles triangles;
     triangles.vertices = vertices;
     triangles.indices = indices;
@@ -22,6 +22,7 @@ RecastLevel build_recast_level(const std::string& name, const std::vector<float>
     RecastLevel level;
     level.name = name;
     if (radius > 0.0f) level.agent.radius = radius;
+    if (cell_size > 0.0f) level.settings.cell_size = cell_size;
     level.solo = nl::recast::build_solo_mesh(context, triangles, level.settings, level.agent,
                                              nl::recast::BuildProgress(no_host));
     return level;

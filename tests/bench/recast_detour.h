@@ -25,9 +25,9 @@ struct RecastLevel {
 };
 
 // Throws what the OBJ reader and the Recast pipeline throw. `radius`: the agent type's (0: the
-// default agent type's).
+// default agent type's); `cell_size`: Recast's voxel width (0: the default settings').
 RecastLevel build_recast_level(const std::string& name, const std::vector<float>& vertices,
-                               const std::vector<uint32_t>& indices, float radius = 0.0f);
+                               const std::vector<uint32_t>& indices, float radius = 0.0f, float cell_size = 0.0f);
 RecastLevel build_recast_level_from_obj(const char* path);  // named after the file's stem
 
 struct DetourMesh {

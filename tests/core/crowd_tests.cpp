@@ -42,6 +42,8 @@ Run run(const CrowdScenario& s, int workers) {
         def.navmesh = navmesh;
         def.position = a.start;
         def.capabilities.radius = s.radius;
+        def.max_speed = s.max_speed;
+        def.max_acceleration = s.max_acceleration;
         ids.push_back(world.agents().add(world.navmeshes(), def));
         world.agents().set_destination(world.navmeshes(), ids.back(), a.goal);
     }

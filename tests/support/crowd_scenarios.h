@@ -24,6 +24,8 @@ struct CrowdScenario {
     // high), for a navmesh built by Recast (the crowd bench, beside DetourCrowd).
     std::vector<std::pair<Vec3, Vec3>> boxes;
     float radius = 0.6f;
+    float max_speed = 3.5f;         // m/s, nl_default_agent_def's
+    float max_acceleration = 8.0f;  // m/s^2
     std::vector<CrowdAgent> agents;
     float seconds = 60.0f;          // everyone arrives within this
 };
