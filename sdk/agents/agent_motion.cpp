@@ -212,11 +212,17 @@ void decelerate(AgentBody& a, float dt) {
     a.velocity = speed > 0.0f ? Vec3(a.velocity * (slower / speed)) : Vec3(Vec3::Zero());
 }
 
-// Giving way: a step back from where it was heading, at half its speed, out of the narrow place
-// (docs/agents.md, "Passing in narrow places").
+// Giving way: a step back from where it was heading and kStepAside to its right, at half its speed,
+// out of the narrow place (docs/agents.md, "Passing in narrow places"). Straight back, the crowd
+// behind a body that gave way at a door's mouth pushed it back in: 60 of 100 crossed a 2 m door in
+// counterflow in 220 s; stepping back to the right, as keeping right passes, clears the door's lane
+// (all 100 by 173 s; 0.35-0.5 rad did alike, 0.65 let 90 through).
+constexpr float kStepAside = 0.4f;  // rad
 void back_off(AgentBody& a, float dt, const NavMesh& navmesh) {
     const Vec3& target = a.path[a.next].position;
-    Vec3 away(a.position.x() - target.x(), 0.0f, a.position.z() - target.z());
+    const Vec3 back(a.position.x() - target.x(), 0.0f, a.position.z() - target.z());
+    const Vec3 right(back.z(), 0.0f, -back.x());  // its right, facing the target
+    const Vec3 away = back * std::cos(kStepAside) + right * std::sin(kStepAside);
     const float length = away.norm();
     a.velocity = length > 1e-6f ? Vec3(away * (0.5f * a.def.max_speed / length)) : Vec3(Vec3::Zero());
     const SurfaceMove moved = move_keeping_height(navmesh, a.polygon, a.position, a.position + a.velocity * dt);

@@ -7,7 +7,10 @@ namespace nl {
 namespace {
 
 constexpr float kGivingWaySeconds = 1.5f;  // it stands aside this long, then walks on
-constexpr float kContactSlack = 0.5f;   // of its radius: this near another body counts as contact
+// Of its radius: two stuck walkers this near each other's surface are in each other's way. Touching is
+// not needed: two heading for one corner from either side stood 0.6 m apart for good, the velocity
+// obstacles holding each short of it (0.5 radii let that be, in the corridors crossing at 90 degrees).
+constexpr float kContactSlack = 1.5f;
 constexpr float kStraightInto = 0.9f;   // cosine: a body this near straight ahead is in the way
 
 // Walking on the ground toward a point (not standing at a take-off, not in the air).

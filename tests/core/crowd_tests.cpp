@@ -94,6 +94,11 @@ void check(const CrowdScenario& s) {
         CHECK(one.last[i].position == two.last[i].position);
         CHECK(one.last[i].state == two.last[i].state);
     }
+    for (size_t i = 0; i < one.last.size(); ++i)
+        if (one.last[i].state != AgentState::Arrived)
+            MESSAGE("agent " << i << " ends " << int(one.last[i].state) << " reason " << int(one.last[i].reason) << " at "
+                              << one.last[i].position.transpose() << " speed " << one.last[i].velocity.norm() << ", sent to "
+                              << s.agents[i].goal.transpose());
     CHECK(o.never_arrived == 0);
     CHECK(o.stuck == 0);
     CHECK(o.deepest_overlap <= 0.05f);
