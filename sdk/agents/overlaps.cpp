@@ -50,9 +50,16 @@ void resolve_overlaps(const std::vector<OverlapBody>& bodies, float dt, TaskSyst
     if (std::all_of(contact_count.begin(), contact_count.end(), [](uint8_t c) { return c == 0; })) return;
 
     std::vector<float> deepest(n, 0.0f);  // each body's deepest overlap as a round found it
-    for (int round = 0; round < kMostRounds; ++round) {
-        tasks.parallel_for(static_cast<uint32_t>(n), 64, [&](uint32_t begin, uint32_t end) {
-            for (uint32_t i = begin; i < end; ++i) {
+    // The bodies a round pushes: all of them for kRounds; past them, those still in an overlap and
+    // their contacts (the rest neither push nor are pushed: a dense crowd's later rounds are cheap).
+    std::vector<uint32_t> active(n);
+    for (uint32_t i = 0; i < n; ++i) active[i] = i;
+    std::vector<uint8_t> in_active(n, 0);
+    next = positions;
+    for (int round = 0; round < kMostRounds && !active.empty(); ++round) {
+        tasks.parallel_for(static_cast<uint32_t>(active.size()), 64, [&](uint32_t begin, uint32_t end) {
+            for (uint32_t slot = begin; slot < end; ++slot) {
+                const uint32_t i = active[slot];
                 const AgentBody& a = *bodies[i].agent;
                 Vec3 push = Vec3::Zero();
                 deepest[i] = 0.0f;
@@ -73,17 +80,41 @@ void resolve_overlaps(const std::vector<OverlapBody>& bodies, float dt, TaskSyst
                 }
                 next[i] = positions[i];
                 if (push.squaredNorm() == 0.0f) continue;
-                const SurfaceMove moved = move_keeping_height(*bodies[i].navmesh, polygons[i], positions[i], positions[i] + push);
+                // In x-z only: the feet's height is set once, after the rounds.
+                SurfaceWalkOptions flat;
+                flat.surface_height = false;
+                const SurfaceMove moved = move_along_surface(*bodies[i].navmesh, polygons[i], positions[i], positions[i] + push, flat);
                 next[i] = moved.position;
                 polygons[i] = moved.polygon;
             }
         });
-        positions.swap(next);
-        if (round + 1 >= kRounds && *std::max_element(deepest.begin(), deepest.end()) < kSettled) break;
+        for (const uint32_t i : active) positions[i] = next[i];
+        if (round + 1 < kRounds) continue;
+        // Serial, in index order: the next round's bodies are the same for any thread count.
+        float worst = 0.0f;
+        for (const uint32_t i : active) worst = std::max(worst, deepest[i]);
+        if (worst < kSettled) break;
+        std::vector<uint32_t> still;
+        for (const uint32_t i : active) {
+            if (deepest[i] < kSettled) continue;
+            if (!in_active[i]) in_active[i] = 1, still.push_back(i);
+            for (uint8_t k = 0; k < contact_count[i]; ++k)
+                if (!in_active[contacts[i][k]]) in_active[contacts[i][k]] = 1, still.push_back(contacts[i][k]);
+        }
+        for (const uint32_t i : still) in_active[i] = 0;
+        std::sort(still.begin(), still.end());
+        active.swap(still);
     }
     for (size_t i = 0; i < n; ++i) {
         AgentBody& a = *bodies[i].agent;
         const Vec3 moved(positions[i].x() - a.position.x(), 0.0f, positions[i].z() - a.position.z());
+        // Pushed over the surface, its feet keep their height over it (eased near a take-off or a
+        // landing), as move_keeping_height does for one move.
+        if (moved.x() != 0.0f || moved.z() != 0.0f) {
+            const NavMesh& navmesh = *bodies[i].navmesh;
+            positions[i].y() = a.position.y() - navmesh.surface_height(a.polygon, a.position.x(), a.position.z()) +
+                               navmesh.surface_height(polygons[i], positions[i].x(), positions[i].z());
+        }
         a.walked_since_landing += moved.norm();
         a.position = positions[i];
         a.polygon = polygons[i];

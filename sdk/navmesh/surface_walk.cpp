@@ -95,7 +95,7 @@ SurfaceMove move_along_surface(const NavMesh& navmesh, uint32_t polygon, const V
         best_index = 0;
     }
     const uint32_t best_polygon = visited[best_index].first;
-    best.y() = navmesh.surface_height(best_polygon, best.x(), best.z());
+    best.y() = options.surface_height ? navmesh.surface_height(best_polygon, best.x(), best.z()) : from.y();
     if (options.polygons) {
         options.polygons->clear();
         for (size_t i = best_index;; i = visited[i].second) {

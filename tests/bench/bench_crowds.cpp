@@ -32,8 +32,9 @@
 //   stuck: agents that, not yet arrived, went 5 s without getting 0.1 m nearer their goal.
 //   all_by: seconds until every agent had arrived ("-" if some never did).
 //   deepest, mean: overlap of two bodies (the sum of radii less their distance, x-z), over every
-//     overlapping pair of every step, metres; on a level from 2 s on (the bodies are put down at
-//     random points, some on others, and pushed apart in the first steps).
+//     overlapping pair of every step, metres; on a level from 5 s on (the bodies are put down at
+//     random points, some on others, and pushed apart in the first steps), and only between bodies
+//     less than a body's height apart in y (undulating's overhangs hold floors over floors).
 //   flow: for the door scenarios, bodies through the door per metre of its width per second, from the
 //     first to the last crossing of its middle.
 //   us_step: microseconds per agent-step (the steps' total wall time over steps times agents).
@@ -66,6 +67,7 @@ constexpr float kArrive = 0.1f;     // m, x-z
 constexpr float kProgress = 0.1f;   // m
 constexpr float kStuck = 5.0f;      // s
 constexpr float kStill = 0.1f;      // m/s
+constexpr float kSettling = 5.0f;   // s: bodies put down at random points on a level, some on others, part meanwhile
 constexpr float kHalfExtents[3] = {2.0f, 4.0f, 2.0f};
 
 struct Outcome {
@@ -265,7 +267,7 @@ constexpr float kPeopleCells = 0.05f;  // m: Recast cells for the bottleneck exp
 // reachable point and to the next one whenever it arrives (or, NavLink, fails).
 struct LevelTally {
     size_t n;
-    float radius;
+    float radius, height;
     std::vector<long> arrivals;
     std::vector<float> best, since;
     std::vector<uint8_t> stuck;
@@ -273,7 +275,7 @@ struct LevelTally {
     long overlaps = 0;
     float deepest = 0.0f;
 
-    LevelTally(size_t agents, float r) : n(agents), radius(r), arrivals(agents, 0), best(agents, 1e9f), since(agents, 0.0f), stuck(agents, 0) {}
+    LevelTally(size_t agents, float r, float h) : n(agents), radius(r), height(h), arrivals(agents, 0), best(agents, 1e9f), since(agents, 0.0f), stuck(agents, 0) {}
 
     // A new goal for agent i at `now`: its progress is measured afresh.
     void retarget(size_t i, float now) { best[i] = 1e9f, since[i] = now; }
@@ -287,7 +289,8 @@ struct LevelTally {
             if (d < best[i] - kProgress) best[i] = d, since[i] = now;
             if (now - since[i] > kStuck) stuck[i] = 1;
             grid.visit(at[i], 2 * radius, [&](uint32_t j) {
-                if (j <= i || now < 2.0f) return;
+                // A body on a floor over another's (undulating has overhangs) is not in contact with it.
+                if (j <= i || now < kSettling || std::fabs(at[i].y() - at[j].y()) >= height) return;
                 const float overlap = 2 * radius - std::hypot(at[i].x() - at[j].x(), at[i].z() - at[j].z());
                 if (overlap <= 0.0f) return;
                 deepest = std::max(deepest, overlap);
@@ -328,7 +331,7 @@ void run_level(nl::bench::RecastLevel& level, float cover, float seconds, int th
         uint32_t polygons = 0;
         if (NL_FAILED(nl_world_create(&def, &world)) || !nl::bench::add_navlink_navmesh(world, level, &navmesh, &polygons)) return;
         std::vector<nl_agent_id> ids(n);
-        LevelTally tally(n, r);
+        LevelTally tally(n, r, level.agent.height);
         auto send = [&](size_t i, float now) {
             for (int attempt = 0; attempt < 4; ++attempt) {
                 where.point(uint32_t(i), trips[i]++, &goals[3 * i]);
@@ -371,7 +374,7 @@ void run_level(nl::bench::RecastLevel& level, float cover, float seconds, int th
         if (!crowd || !crowd->init(int(n), r, detour.mesh)) return;
         const dtCrowdAgentParams params = nl::bench::detour_crowd_agent(level);
         const dtQueryFilter filter;
-        LevelTally tally(n, r);
+        LevelTally tally(n, r, level.agent.height);
         std::fill(trips.begin(), trips.end(), 1u);
         auto send = [&](size_t i, float now) {
             for (int attempt = 0; attempt < 4; ++attempt) {
@@ -456,9 +459,10 @@ int main(int argc, char** argv) {
     cases.push_back({nl::test::corridor(10, 5.0f, true)});
     // Bottlenecks as in the published experiments (Seyfried et al. 2009, Kretz et al. 2006): people
     // about 0.5 m across (radius 0.25 m here) at a person's free walking speed (1.34 m/s; 2.7 m/s^2,
-    // that speed in half a second), doors 1.2 to 3 m, 50 through one way, on a navmesh of 5 cm cells
+    // that speed in half a second), doors 0.8 to 3 m (one at a time below about 1 m), 50 through one
+    // way, on a navmesh of 5 cm cells
     // (at the default 30 cm, doors 40 cm apart in width open alike once eroded).
-    for (const float width : {1.2f, 1.6f, 2.0f, 2.5f, 3.0f}) {
+    for (const float width : {0.8f, 1.0f, 1.2f, 1.6f, 2.0f, 2.5f, 3.0f}) {
         Case c{nl::test::door_counterflow(50, width, false, 0.25f), width, kPeopleCells};
         c.scenario.name += ", people (radius 0.25 m, 1.34 m/s), door " + figure(width, "%.1f") + " m";
         c.scenario.max_speed = 1.34f;

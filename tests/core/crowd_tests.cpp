@@ -136,7 +136,7 @@ TEST_CASE("crowd: a hundred and forty at a door in counterflow move the same on 
         CHECK(one.last[i].velocity == two.last[i].velocity);
         CHECK(one.last[i].state == two.last[i].state);
     }
-    // Pressed 70 deep against a door, bodies still sink 9 cm at the deepest (the 5 cm of the other
+    // Pressed 70 deep against a door, bodies still sink 7 cm at the deepest (the 5 cm of the other
     // scenarios holds up to ten a side): issue 32's closing note.
     CHECK(one.outcome.deepest_overlap <= 0.1f);
 }
