@@ -249,7 +249,8 @@ class NavmeshInfo(_Growable):
                 ("portal_count", c_uint32), ("boundary_edge_count", c_uint32), ("welded_vertex_count", c_uint32),
                 ("flipped_polygon_count", c_uint32), ("dropped_polygon_count", c_uint32),
                 ("non_manifold_edge_count", c_uint32), ("agent", AgentType), ("bounds_min", Vec3),
-                ("bounds_max", Vec3), ("surface", MeshId)]
+                ("bounds_max", Vec3), ("surface", MeshId), ("turned_over_mesh_count", c_uint32),
+                ("reserved", c_uint32)]
 
 
 class NavPolygon(_Growable):
@@ -1518,10 +1519,13 @@ class World:
         """Builds a navmesh with a builder plugin ("recast" when None): from every static mesh, or with
         `surface` (a MeshId of an MESH_MOVABLE mesh) from that mesh alone, in its own space; the navmesh
         then rides it (navmesh_info(...).surface). MESH_NOT_IN_NAVMESH meshes are left out, MESH_OBSTACLE
-        ones only block, and each mesh's area goes to the polygons over it. progress: callable(fraction,
-        stage) -> bool, called on this thread with fractions from 0 to 1; False cancels the build
-        (NavLinkError with STATUS_CANCELLED, nothing added); an exception it raises cancels the build and
-        is raised here."""
+        ones only block, and each mesh's area goes to the polygons over it. Meshes that look wound clockwise
+        (turned over, they would hold much more floor for the agent than as given) are named in a logged
+        warning with MESH_CLOCKWISE and counted in navmesh_info(...).turned_over_mesh_count (0 for a
+        navmesh added from polygons or loaded from a file); the build still succeeds. progress:
+        callable(fraction, stage) -> bool, called on this thread with fractions from 0 to 1; False cancels
+        the build (NavLinkError with STATUS_CANCELLED, nothing added); an exception it raises cancels the
+        build and is raised here."""
         d = lib.nl_default_navmesh_build_def()
         d.agent = agent if agent is not None else default_agent_type()
         if surface is not None:

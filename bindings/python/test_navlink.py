@@ -390,6 +390,7 @@ class NavmeshTest(NavLinkTestCase):
             navmesh = world.build_navmesh(recast=recast, settings_json='{"edge_max_length": 6}')
             info = world.navmesh_info(navmesh)
             self.assertTrue(info.polygon_count >= 2 and info.boundary_edge_count >= 8)
+            self.assertEqual(info.turned_over_mesh_count, 0, "the level's fronts are wound counter-clockwise")
             # Three islands: the platforms and the pit floor 20 m down, walkable but unreachable.
             self.assertTrue(-12 <= info.bounds_min[0] and info.bounds_max[0] <= 12 and info.bounds_max[1] < 0.5)
             self.assertTrue(-20.1 < info.bounds_min[1] < -19.5, info.bounds_min[1])

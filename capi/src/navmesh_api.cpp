@@ -105,6 +105,7 @@ void navmesh_get_info(const World& world, nl_navmesh_id navmesh, nl_navmesh_info
     copy_point(info.bounds_min, bounds.min);
     copy_point(info.bounds_max, bounds.max);
     if (frame) info.surface = to_id<nl_mesh_id>(frame->mesh());
+    info.turned_over_mesh_count = static_cast<uint32_t>(world.navmeshes().made_for(to_handle(navmesh)).turned_over_meshes.size());
     write_growable(out_info, info, kNavMeshInfoFirstSize, "out_info");
 }
 

@@ -28,7 +28,7 @@ int generate(int argc, char** argv, Output output) {
     const samples::Arguments args(
         bake ? "navlink bake" : "navlink generate", bake ? "bake" : "generate", argc, argv, 2,
         {{"out", true}, {"navmesh", true}, {"agent", true}, {"settings", true}, {"plugin", true}, {"png", true},
-         {"oblique", false}, {"link-numbers", false}, {"roofs", false}});
+         {"oblique", false}, {"link-numbers", false}, {"roofs", false}, {"clockwise", false}});
     if (args.wants_help()) {
         std::fputs(bake ? kBakeHelp : kGenerateHelp, stdout);
         return 0;
@@ -52,7 +52,7 @@ int generate(int argc, char** argv, Output output) {
                                                      : samples::GenerationSettings();
 
     NavigableLevel level(args.positional()[0], args.value("navmesh"), agent.body, settings.recast_json,
-                         args.has("png"), args.value("plugin"));
+                         args.has("png"), args.value("plugin"), args.has("clockwise") ? NL_MESH_CLOCKWISE : 0u);
     const nl_link_generation_report report = level.generate_links(settings.links);
     if (bake) samples::save_navmesh_file(level.world(), level.navmesh(), out);
     else samples::write_text_file(out, samples::links_json(level.world(), level.navmesh()));

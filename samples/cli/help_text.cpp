@@ -37,13 +37,15 @@ const char* const kMainHelp =
 const char* const kGenerateHelp =
     "usage: navlink generate LEVEL.obj --out LINKS.json [--navmesh NAVMESH.obj] [--agent AGENT.json]\n"
     "                    [--settings GEN.json] [--plugin PLUGIN.so] [--png VIEW.png] [--oblique]\n"
-    "                    [--link-numbers] [--roofs]\n"
+    "                    [--link-numbers] [--roofs] [--clockwise]\n"
     "\n"
     "Builds LEVEL's navmesh with the built-in Recast builder (or takes NAVMESH.obj: convex polygons, Y up),\n"
     "generates jump and drop links against the level geometry, writes them to LINKS.json and prints the\n"
     "generation report: links by kind, rejections by reason, milliseconds per stage.\n"
     "\n"
     "  --out LINKS.json      where the links go (schema \"navlink-links\" 1)\n"
+    "  --clockwise           LEVEL's fronts are wound clockwise (Godot's convention; NL_MESH_CLOCKWISE).\n"
+    "                        A level that looks wound so without it is warned about on stderr\n"
     "  --navmesh NAVMESH.obj use this navmesh instead of building one\n"
     "  --agent AGENT.json    the body the navmesh is built for; default Recast's (radius 0.6, height 2,\n"
     "                        max_climb 0.9, max_slope 45). Keys: name, radius, height, max_climb,\n"
@@ -62,7 +64,7 @@ const char* const kGenerateHelp =
 const char* const kBakeHelp =
     "usage: navlink bake LEVEL.obj --out NAVMESH.nlnav [--navmesh NAVMESH.obj] [--agent AGENT.json]\n"
     "                    [--settings GEN.json] [--plugin PLUGIN.so] [--png VIEW.png] [--oblique]\n"
-    "                    [--link-numbers] [--roofs]\n"
+    "                    [--link-numbers] [--roofs] [--clockwise]\n"
     "\n"
     "As navlink generate, but writes the navmesh, its links and what they were made for (the body, the\n"
     "builder and its settings, the level's hash, the link settings) as one baked navmesh file: compact,\n"
@@ -84,7 +86,7 @@ const char* const kInfoHelp =
 const char* const kPathHelp =
     "usage: navlink path LEVEL.obj --from X,Y,Z --to X,Y,Z [--links LINKS.json] [--agent AGENT.json]\n"
     "                    [--search X,Y,Z] [--navmesh NAVMESH.obj] [--settings GEN.json] [--json]\n"
-    "                    [--png VIEW.png] [--oblique] [--link-numbers] [--roofs]\n"
+    "                    [--png VIEW.png] [--oblique] [--link-numbers] [--roofs] [--clockwise]\n"
     "       navlink path NAVMESH.nlnav --from X,Y,Z --to X,Y,Z [--links LINKS.json] [--agent AGENT.json]\n"
     "                    [--search X,Y,Z] [--json]\n"
     "\n"
@@ -107,6 +109,7 @@ const char* const kPathHelp =
     "  --settings GEN.json   the settings file of navlink generate: its \"recast\" part builds the navmesh\n"
     "                        from LEVEL\n"
     "  --json                print the path as a JSON object instead of text\n"
+    "  --clockwise           LEVEL's fronts are wound clockwise (Godot's convention; NL_MESH_CLOCKWISE)\n"
     "  --png VIEW.png        also draw the path over the level (islands for the agent)\n"
     "  --oblique             draw the picture from an angle instead of straight down\n"
     NL_PICTURE_OPTIONS_HELP

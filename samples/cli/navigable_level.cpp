@@ -1,5 +1,7 @@
 #include "navigable_level.h"
 
+#include <cstdio>
+
 #include "clock.h"
 #include "navmesh_setup.h"
 #include "progress_bar.h"
@@ -11,11 +13,11 @@ using nl::samples::now_ms;
 
 NavigableLevel::NavigableLevel(const std::string& level_path, const std::optional<std::string>& navmesh_path,
                                const nl_agent_type& body, const std::string& recast_json, bool for_drawing,
-                               const std::optional<std::string>& plugin_path) {
+                               const std::optional<std::string>& plugin_path, uint32_t mesh_flags) {
     // First: a plugin that does not load fails before the level is read and built.
     if (plugin_path) world_.load_plugin(*plugin_path);
     double start = now_ms();
-    level_ = samples::load_level_file(world_.get(), level_path, for_drawing);
+    level_ = samples::load_level_file(world_.get(), level_path, for_drawing, mesh_flags);
     times_.load_ms = now_ms() - start;
     start = now_ms();
     if (navmesh_path) {
@@ -23,6 +25,11 @@ NavigableLevel::NavigableLevel(const std::string& level_path, const std::optiona
     } else {
         ProgressBar bar;
         navmesh_ = samples::build_navmesh(world_.get(), body, recast_json, {}, ProgressBar::callback, &bar);
+        nl_navmesh_info info = nl_navmesh_info_init();
+        // The library's warning (stderr) names NL_MESH_CLOCKWISE; the tool's way to set it:
+        if (NL_SUCCEEDED(nl_navmesh_get_info(world_.get(), navmesh_, &info)) && info.turned_over_mesh_count > 0)
+            std::fprintf(stderr, "hint: if %s was exported with clockwise fronts (Godot's convention), pass --clockwise\n",
+                         level_path.c_str());
     }
     times_.navmesh_ms = now_ms() - start;
 }

@@ -47,7 +47,8 @@ int run_path(int argc, char** argv) {
                                    {"png", true},
                                    {"oblique", false},
                                    {"link-numbers", false},
-                                   {"roofs", false}});
+                                   {"roofs", false},
+                                   {"clockwise", false}});
     if (args.wants_help()) {
         std::fputs(kPathHelp, stdout);
         return 0;
@@ -87,7 +88,7 @@ int run_path(int argc, char** argv) {
     }
     if (const auto png = args.value("png")) samples::check_writable_file(*png);
     NavigableLevel level(args.positional()[0], args.value("navmesh"), agent.body, settings.recast_json,
-                         args.has("png"));
+                         args.has("png"), std::nullopt, args.has("clockwise") ? NL_MESH_CLOCKWISE : 0u);
     // Without --links the navmesh is walked alone.
     if (const auto links = args.value("links")) samples::load_links_file(level.world(), level.navmesh(), *links);
     const samples::PlannedPath path =

@@ -13,10 +13,12 @@ void read_info(nl_world* world, Level& level) {
 
 }  // namespace
 
-Level load_level_file(nl_world* world, const std::string& path, bool for_drawing) {
+Level load_level_file(nl_world* world, const std::string& path, bool for_drawing, uint32_t mesh_flags) {
     Level level;
     level.name = path;
-    check(nl_mesh_add_obj_file(world, path.c_str(), nullptr, &level.mesh), "loading the level");
+    nl_mesh_def def = nl_default_mesh_def();
+    def.flags = mesh_flags;
+    check(nl_mesh_add_obj_file(world, path.c_str(), &def, &level.mesh), "loading the level");
     if (for_drawing) {
         const ObjPolygons obj = read_obj_file(path);
         level.positions = obj.positions;

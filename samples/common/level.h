@@ -23,10 +23,10 @@ struct Level {
     uint32_t triangle_count() const { return static_cast<uint32_t>(triangles.size() / 3); }
 };
 
-// Registers an OBJ file with nl_mesh_add_obj_file (its errors are the library's, with the line) and,
-// when `for_drawing`, reads its triangles again to draw them (the C ABI does not give them back).
-// Throws SampleError.
-Level load_level_file(nl_world* world, const std::string& path, bool for_drawing);
+// Registers an OBJ file with nl_mesh_add_obj_file (its errors are the library's, with the line) with
+// `mesh_flags` (NL_MESH_CLOCKWISE: its fronts are wound clockwise) and, when `for_drawing`, reads its
+// triangles again to draw them (the C ABI does not give them back). Throws SampleError.
+Level load_level_file(nl_world* world, const std::string& path, bool for_drawing, uint32_t mesh_flags = 0);
 
 // Registers a generated level with nl_mesh_add. Throws SampleError.
 Level add_generated_level(nl_world* world, const levelgen::GeneratedLevel& generated, const std::string& name);

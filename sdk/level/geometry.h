@@ -9,6 +9,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "util/handle.h"
+
 namespace nl {
 
 using Vec3 = Eigen::Vector3f;
@@ -27,6 +29,12 @@ constexpr uint8_t kObstacleArea = 255;
 struct BuildTriangles {
     TriangleMesh mesh;
     std::vector<uint8_t> areas;
+    // Where each mesh's triangles begin, in order: the mesh, and the index of its first triangle.
+    struct MeshStart {
+        Handle mesh;
+        size_t first = 0;
+    };
+    std::vector<MeshStart> mesh_starts;
 };
 
 // Vertex `index` of a packed x y z float array (Embree's vertex buffers).

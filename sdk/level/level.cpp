@@ -309,7 +309,8 @@ void append_in_world(const TriangleMesh& object, const Transform& transform, Tri
     }
 }
 
-void append_for_build(const TriangleMesh& object, const Transform& transform, uint8_t area, BuildTriangles& out) {
+void append_for_build(Handle mesh, const TriangleMesh& object, const Transform& transform, uint8_t area, BuildTriangles& out) {
+    out.mesh_starts.push_back({mesh, out.mesh.triangles.size()});
     append_in_world(object, transform, out.mesh);
     out.areas.resize(out.mesh.triangles.size(), area);
 }
@@ -336,12 +337,12 @@ BuildTriangles Level::triangles_to_build(Handle surface) const {
                                              "part of the level's navmesh");
         if (m->flags & kMeshNotInNavMesh)
             fail(ErrorCode::InvalidArgument, "the surface mesh is left out of navmesh builds (NL_MESH_NOT_IN_NAVMESH)");
-        append_for_build(m->object, Transform::Identity(), build_area(m->flags, m->area), out);
+        append_for_build(surface, m->object, Transform::Identity(), build_area(m->flags, m->area), out);
         return out;
     }
-    meshes_.for_each([&](Handle, const Mesh& m) {
+    meshes_.for_each([&](Handle handle, const Mesh& m) {
         if (!(m.flags & (kMeshMovable | kMeshNotInNavMesh)))
-            append_for_build(m.object, m.transform, build_area(m.flags, m.area), out);
+            append_for_build(handle, m.object, m.transform, build_area(m.flags, m.area), out);
     });
     return out;
 }

@@ -4,6 +4,9 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
+
+#include "util/handle.h"
 
 namespace nl {
 
@@ -21,6 +24,9 @@ struct MadeFor {
     std::string builder_settings;
     uint64_t level_hash = 0;  // of the triangles it was built from (level_hash.h); 0: not built from the level
     LinksMadeWith links;      // of its generated links
+    // The meshes it was built on that looked wound clockwise (level/winding_check.h): the build's
+    // warning. Not kept in navmesh files.
+    std::vector<Handle> turned_over_meshes;
 };
 
 }  // namespace nl

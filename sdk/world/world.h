@@ -163,6 +163,9 @@ private:
     PluginLinks plugin_links(Handle navmesh, const NavMesh& mesh, const PluginSettings& settings,
                              LinkGenerationReport& report);
     void log_repairs(const NavMesh& navmesh) const;
+    // The meshes of a build's input that look wound clockwise (level/winding_check.h), said in a
+    // warning in the log.
+    std::vector<Handle> warn_turned_over(const BuildTriangles& triangles, const AgentType& agent) const;
     // InvalidArgument for a navmesh that rides a moving mesh: the generator proves links against the
     // level as it stands, so they would hold at one placement only.
     void refuse_generation_on_surface(Handle navmesh) const;

@@ -110,7 +110,8 @@ _Static_assert(offsetof(nl_navmesh_info, vertex_count) == 4 && offsetof(nl_navme
                    offsetof(nl_navmesh_info, flipped_polygon_count) == 24 &&
                    offsetof(nl_navmesh_info, dropped_polygon_count) == 28 &&
                    offsetof(nl_navmesh_info, non_manifold_edge_count) == 32 && offsetof(nl_navmesh_info, agent) == 36 &&
-                   offsetof(nl_navmesh_info, bounds_min) == 52 && offsetof(nl_navmesh_info, bounds_max) == 64,
+                   offsetof(nl_navmesh_info, bounds_min) == 52 && offsetof(nl_navmesh_info, bounds_max) == 64 &&
+                   offsetof(nl_navmesh_info, turned_over_mesh_count) == 84 && sizeof(nl_navmesh_info) == 92,
                "nl_navmesh_info");
 _Static_assert(offsetof(nl_recast_settings, cell_size) == 4 && offsetof(nl_recast_settings, cell_height) == 8 &&
                    offsetof(nl_recast_settings, region_min_size) == 12 &&

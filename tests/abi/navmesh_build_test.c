@@ -311,6 +311,59 @@ static nl_navmesh_id build(nl_world* world) {
     return id;
 }
 
+/* The warnings a world logged, joined (each on its own line). */
+typedef struct warnings {
+    char text[4096];
+    int count;
+} warnings;
+
+static void keep_warning(void* user, nl_log_level level, nl_status status, const char* message) {
+    warnings* w = (warnings*)user;
+    size_t used = strlen(w->text);
+    (void)status;
+    if (level != NL_LOG_WARNING) return;
+    ++w->count;
+    snprintf(w->text + used, sizeof w->text - used, "%s\n", message);
+}
+
+static nl_world* make_listening_world(warnings* heard) {
+    nl_world_def def = nl_default_world_def();
+    nl_world* world = NULL;
+    memset(heard, 0, sizeof *heard);
+    def.worker_count = 2;
+    def.log_fn = keep_warning;
+    def.log_user = heard;
+    CHECK_OK(nl_world_create(&def, &world));
+    return world;
+}
+
+/* A level whose big floor is wound clockwise and not flagged, beside a small platform wound right:
+   the build succeeds on the platform, and says the floor looks turned over (the log, the navmesh's
+   info); flagged NL_MESH_CLOCKWISE, nothing is said. */
+static void turned_over_warning(void) {
+    warnings heard;
+    nl_navmesh_info info = nl_navmesh_info_init();
+    nl_world* world = make_listening_world(&heard);
+    add_quad(world, -20, -20, 20, 20, 0, 1, 0, 0, NULL);
+    add_quad(world, 30, 0, 34, 4, 0, 0, 0, 0, NULL);
+    CHECK_OK(nl_navmesh_get_info(world, build(world), &info));
+    CHECK(info.turned_over_mesh_count == 1);
+    CHECK(heard.count == 1);
+    CHECK(strstr(heard.text, "1 mesh that looks wound clockwise") != NULL);
+    CHECK(strstr(heard.text, "turned over, it would hold 1600 m2 of floor for this agent, as given 0 m2") != NULL);
+    CHECK(strstr(heard.text, "NL_MESH_CLOCKWISE") != NULL);
+    nl_world_destroy(world);
+
+    world = make_listening_world(&heard);
+    add_quad(world, -20, -20, 20, 20, 0, 1, NL_MESH_CLOCKWISE, 0, NULL);
+    add_quad(world, 30, 0, 34, 4, 0, 0, 0, 0, NULL);
+    info = nl_navmesh_info_init();
+    CHECK_OK(nl_navmesh_get_info(world, build(world), &info));
+    CHECK(info.turned_over_mesh_count == 0);
+    CHECK(heard.count == 0);
+    nl_world_destroy(world);
+}
+
 static void winding(void) {
     static const float mirror_x[16] = {-1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
     nl_navmesh_build_def def = nl_default_navmesh_build_def();
@@ -481,6 +534,6 @@ static void level_hash_of_the_built_level(void) {
     nl_world_destroy(world);
 }
 
-ABI_SECTION(navmesh_build, ABI_CASE(defaults), ABI_CASE(recast), ABI_CASE(winding), ABI_CASE(mesh_roles),
+ABI_SECTION(navmesh_build, ABI_CASE(defaults), ABI_CASE(recast), ABI_CASE(winding), ABI_CASE(turned_over_warning), ABI_CASE(mesh_roles),
             ABI_CASE(mesh_areas), ABI_CASE(build_progress),
             ABI_CASE(level_hash_of_the_built_level));

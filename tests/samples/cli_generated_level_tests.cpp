@@ -3,6 +3,7 @@
 #include <cmath>
 #include <map>
 #include <regex>
+#include <sstream>
 
 #include "cli_fixture.h"
 #include "level_generator.h"
@@ -367,4 +368,33 @@ TEST_CASE("navlink --help and COMMAND --help describe the tool and exit 0") {
         CHECK(help.exit_code == 0);
         CHECK(help.out.rfind(std::string("usage: navlink ") + command, 0) == 0);
     }
+}
+
+// The default level with every face turned over (Godot's export of it): generate builds on it and
+// says it looks wound clockwise, naming --clockwise; with --clockwise it is the level as exported
+// counter-clockwise, and nothing is said.
+TEST_CASE("navlink generate says when a level looks wound clockwise, and --clockwise reads it so") {
+    GeneratedLevelFiles files("clockwise");
+    std::string obj = nl::test::read_file(files.dir + "/level.obj"), turned;
+    const std::regex face(R"(^f (\S+) (\S+) (\S+)$)");
+    std::istringstream lines(obj);
+    for (std::string line; std::getline(lines, line);) turned += std::regex_replace(line, face, "f $1 $3 $2") + "\n";
+    REQUIRE(turned != obj);
+    nl::test::write_file(files.dir + "/clockwise.obj", turned);
+
+    const ProgramRun as_given = navlink({"generate", "level.obj", "--out", "given.json"}, files.dir);
+    REQUIRE_MESSAGE(as_given.exit_code == 0, as_given.err);
+    CHECK(as_given.err.find("wound clockwise") == std::string::npos);
+
+    const ProgramRun unflagged = navlink({"generate", "clockwise.obj", "--out", "unflagged.json"}, files.dir);
+    REQUIRE_MESSAGE(unflagged.exit_code == 0, unflagged.err);
+    CHECK(unflagged.err.find("warning: the navmesh was built on 1 mesh that looks wound clockwise") != std::string::npos);
+    CHECK(unflagged.err.find("pass --clockwise") != std::string::npos);
+
+    const ProgramRun flagged = navlink({"generate", "clockwise.obj", "--clockwise", "--out", "flagged.json"}, files.dir);
+    REQUIRE_MESSAGE(flagged.exit_code == 0, flagged.err);
+    CHECK(flagged.err.find("wound clockwise") == std::string::npos);
+    // Read as wound clockwise, it is the level as given: the same navmesh and links.
+    CHECK(flagged.out.substr(flagged.out.find("navmesh:"), 40) == as_given.out.substr(as_given.out.find("navmesh:"), 40));
+    CHECK(nl::test::read_file(files.dir + "/flagged.json").size() == nl::test::read_file(files.dir + "/given.json").size());
 }

@@ -575,6 +575,13 @@ typedef struct nl_navmesh_info {
                                             box that holds it where the mesh is now. */
     float bounds_max[3];
     nl_mesh_id surface;                /**< The movable mesh it rides; the null id for none. Added in 0.3. */
+    uint32_t turned_over_mesh_count;   /**< Meshes nl_navmesh_build built it on that look wound
+                                            clockwise: turned over, they would hold much more floor
+                                            for its agent than as given (the build also logs a
+                                            warning naming them and NL_MESH_CLOCKWISE; see
+                                            nl_mesh_def's winding rule). 0 for a navmesh added from
+                                            polygons or loaded from a file. Added in 0.3. */
+    uint32_t reserved;
 } nl_navmesh_info;
 
 NL_DEFINE_OUTPUT_INIT(nl_navmesh_info, nl_navmesh_info_init)
@@ -700,7 +707,10 @@ NL_API nl_navmesh_build_def nl_default_navmesh_build_def(void);
 /** Builds a navmesh from every static mesh registered in the world (under their current transforms;
  *  or, with def->surface, from that movable mesh in its own space) but those flagged
  *  NL_MESH_NOT_IN_NAVMESH, walking on none of an NL_MESH_OBSTACLE mesh's triangles and giving each
- *  mesh's polygons its area, and adds it as nl_navmesh_add would. Returns SUCCESS, or a failure with
+ *  mesh's polygons its area, and adds it as nl_navmesh_add would. A mesh that looks wound clockwise
+ *  (turned over, it would hold more than twice the floor for the agent) does not fail the build: it
+ *  is named in a warning in the log and counted in nl_navmesh_info.turned_over_mesh_count (docs/c-api.md,
+ *  "Winding"). Returns SUCCESS, or a failure with
  *  NOT_FOUND (no builder of that name,
  *  or no walkable surface in the level), CANCELLED (def->progress returned 0: nothing is added),
  *  INVALID_ARGUMENT (bad agent or settings, the field named;

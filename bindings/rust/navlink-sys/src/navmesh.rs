@@ -65,6 +65,11 @@ pub struct nl_navmesh_info {
     pub bounds_max: [f32; 3],
     /// The movable mesh it rides; the null id for none. Added in 0.3.
     pub surface: nl_mesh_id,
+    /// Meshes `nl_navmesh_build` built it on that look wound clockwise: turned over, they would hold much
+    /// more floor for its agent than as given (the build also logs a warning naming them and
+    /// `NL_MESH_CLOCKWISE`). 0 for a navmesh added from polygons or loaded from a file. Added in 0.3.
+    pub turned_over_mesh_count: u32,
+    pub reserved: u32,
 }
 
 pub fn nl_navmesh_info_init() -> nl_navmesh_info {

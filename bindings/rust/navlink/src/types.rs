@@ -238,6 +238,10 @@ plain_struct! {
         bounds_max: [f32; 3],
         /// The movable mesh it rides; the null id for none.
         surface: MeshId,
+        /// Meshes `World::build_navmesh` built it on that look wound clockwise: turned over, they would hold
+        /// much more floor for its agent than as given (the build also logs a warning naming them and
+        /// `MeshFlags::CLOCKWISE`). 0 for a navmesh added from polygons or loaded from a file.
+        turned_over_mesh_count: u32,
     }
 }
 

@@ -21,6 +21,7 @@ fn navmesh_from_the_level() {
     let info = world.navmesh_info(navmesh).unwrap();
     assert!(info.polygon_count >= 2 && info.boundary_edge_count >= 8, "{:?}", info);
     assert!((info.agent.radius - 0.6).abs() < 1e-6);
+    assert_eq!(info.turned_over_mesh_count, 0, "the level's fronts are wound counter-clockwise");
     // Three islands: the platforms (top y = 0) and the pit floor 20 m down, walkable but unreachable.
     assert!(info.bounds_min[0] >= -12.0 && info.bounds_max[0] <= 12.0 && info.bounds_max[1] < 0.5);
     assert!(info.bounds_min[1] > -20.1 && info.bounds_min[1] < -19.5, "{:?}", info.bounds_min);

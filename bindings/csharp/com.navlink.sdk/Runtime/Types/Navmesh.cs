@@ -56,6 +56,11 @@ namespace NavLink
         public Vec3 BoundsMax;
         /// <summary>The movable mesh it rides; the null id for none. Added in 0.3.</summary>
         public MeshId Surface;
+        /// <summary>Meshes World.BuildNavmesh built it on that look wound clockwise: turned over, they would hold
+        /// much more floor for its agent than as given (the build also logs a warning naming them and
+        /// MeshFlags.Clockwise). 0 for a navmesh added from polygons or loaded from a file. Added in 0.3.</summary>
+        public uint TurnedOverMeshCount;
+        public uint Reserved;
     }
 
     /// <summary>nl_nav_polygon. May grow: Size set by Native.nl_nav_polygon_init() (World.GetPolygon sets it).</summary>
