@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include "generated_mesh.h"
 #include "io/obj_reader.h"
 #include "level_generator.h"
 #include "level/winding_check.h"
@@ -22,14 +23,7 @@ namespace {
 using nl::TriangleMesh;
 using nl::Vec3;
 
-TriangleMesh mesh_of(const nl::levelgen::GeneratedLevel& level) {
-    TriangleMesh mesh;
-    for (size_t i = 0; i + 2 < level.positions.size(); i += 3)
-        mesh.vertices.emplace_back(level.positions[i], level.positions[i + 1], level.positions[i + 2]);
-    for (size_t i = 0; i + 2 < level.indices.size(); i += 3)
-        mesh.triangles.push_back({level.indices[i], level.indices[i + 1], level.indices[i + 2]});
-    return mesh;
-}
+TriangleMesh mesh_of(const nl::levelgen::GeneratedLevel& level) { return nl::test::to_triangle_mesh(level); }
 
 TriangleMesh turned_over(TriangleMesh mesh) {
     for (nl::Triangle& t : mesh.triangles) std::swap(t[1], t[2]);
