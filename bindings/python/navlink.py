@@ -79,6 +79,10 @@ MESH_OBSTACLE = 0x4
 MESH_NOT_IN_NAVMESH = 0x8
 MESH_MAX_AREA = 254
 BUILD_AREA_OBSTACLE = 255
+UP_AXIS_NOT_SAID, UP_AXIS_Y, UP_AXIS_Z = 0, 1, 2
+BUILD_WARNING_CLOCKWISE = 0x1
+BUILD_WARNING_UNITS = 0x2
+BUILD_WARNING_Z_UP = 0x4
 MAX_POLYGON_VERTICES = 16
 NO_POLYGON = 0xFFFFFFFF
 NO_ISLAND = 0xFFFFFFFF  # World.islands: a polygon in an area the filter excludes
@@ -203,14 +207,14 @@ class MeshDef(Structure):
     _fields_ = [("size", c_uint32), ("vertices", POINTER(c_float)), ("vertex_count", c_uint32),
                 ("vertex_stride", c_uint32), ("indices", POINTER(c_uint32)), ("triangle_count", c_uint32),
                 ("flags", c_uint32), ("transform", POINTER(c_float)), ("user_data", c_uint64), ("area", c_uint32),
-                ("reserved", c_uint32)]
+                ("reserved", c_uint32), ("metres_per_unit", c_float), ("up_axis", c_uint32)]
 
 
 class MeshInfo(_Growable):
     _fields_ = [("size", c_uint32), ("vertex_count", c_uint32), ("triangle_count", c_uint32),
                 ("degenerate_triangle_count", c_uint32), ("flags", c_uint32), ("transform", c_float * 16),
                 ("bounds_min", Vec3), ("bounds_max", Vec3), ("user_data", c_uint64), ("area", c_uint32),
-                ("reserved", c_uint32)]
+                ("reserved", c_uint32), ("metres_per_unit", c_float), ("up_axis", c_uint32)]
 
 
 class Ray(Structure):
@@ -250,7 +254,7 @@ class NavmeshInfo(_Growable):
                 ("flipped_polygon_count", c_uint32), ("dropped_polygon_count", c_uint32),
                 ("non_manifold_edge_count", c_uint32), ("agent", AgentType), ("bounds_min", Vec3),
                 ("bounds_max", Vec3), ("surface", MeshId), ("turned_over_mesh_count", c_uint32),
-                ("reserved", c_uint32)]
+                ("build_warnings", c_uint32)]
 
 
 class NavPolygon(_Growable):
@@ -1433,7 +1437,8 @@ class World:
     # --- level geometry ---
 
     def add_mesh(self, vertices: FloatValues, indices: IndexValues, flags: int = 0,
-                 transform: Optional[FloatValues] = None, user_data: int = 0, area: int = 0) -> MeshId:
+                 transform: Optional[FloatValues] = None, user_data: int = 0, area: int = 0,
+                 metres_per_unit: float = 0.0, up_axis: int = UP_AXIS_NOT_SAID) -> MeshId:
         """Registers a triangle mesh (copied by the library). vertices: x y z floats, flat or in rows (a
         buffer of shape (n, 3), or (n, k > 3) with x y z first in each row: read with that stride);
         indices: three per triangle. Each a list, a tuple, or a buffer read in place: a numpy array
@@ -1441,8 +1446,14 @@ class World:
         flags: MESH_MOVABLE, MESH_CLOCKWISE (fronts wound clockwise, as Godot's), MESH_OBSTACLE (blocks
         navmesh builds, never walked on) or MESH_NOT_IN_NAVMESH (left out of them), or'd. area: what navmesh
         builds give the polygons over the mesh (0..MESH_MAX_AREA; the Recast builder carries 0..62), priced
-        by a path query's area costs; mesh_info(...).area reports it."""
-        d, keep = self._mesh_def(flags, transform, user_data, area)
+        by a path query's area costs; mesh_info(...).area reports it. metres_per_unit: the length of one
+        unit of the vertices in metres (0.01 for centimetres, 0.0254 for inches, 1 for metres; 1e-6..1e6);
+        0, not said, is read as metres and a navmesh build warns when the level looks otherwise
+        (BUILD_WARNING_UNITS). up_axis: UP_AXIS_Z for vertices with z up (Blender's, Unreal's), turned to
+        NavLink's y up; UP_AXIS_Y says y up; UP_AXIS_NOT_SAID is read as y up and a build warns when the
+        level looks z up (BUILD_WARNING_Z_UP). Both apply to the vertices before the transform, which is in
+        metres as every other position and length; mesh_info(...) reports them as given."""
+        d, keep = self._mesh_def(flags, transform, user_data, area, metres_per_unit, up_axis)
         v = _c_array("vertices", vertices, c_float, group=3, wider_rows=True)
         i = _c_array("indices", indices, c_uint32, group=3)
         d.vertices, d.vertex_count, d.vertex_stride = _pointer(v, c_float), v.count // v.row, v.row * sizeof(c_float)
@@ -1452,25 +1463,30 @@ class World:
         return mesh
 
     @staticmethod
-    def _mesh_def(flags: int, transform: Optional[FloatValues], user_data: int, area: int) -> Tuple[MeshDef, Any]:
+    def _mesh_def(flags: int, transform: Optional[FloatValues], user_data: int, area: int, metres_per_unit: float,
+                  up_axis: int) -> Tuple[MeshDef, Any]:
         d = lib.nl_default_mesh_def()
         t = _floats(transform, "transform", length=16) if transform is not None else None
         d.flags, d.user_data, d.area = flags, user_data, area
+        d.metres_per_unit, d.up_axis = metres_per_unit, up_axis
         d.transform = ctypes.cast(t, POINTER(c_float)) if t is not None else None
         return d, t
 
     def add_obj_file(self, path: Union[str, "os.PathLike[str]"], flags: int = 0,
-                     transform: Optional[FloatValues] = None, user_data: int = 0, area: int = 0) -> MeshId:
-        """An OBJ file as one mesh (flags and area as add_mesh takes them)."""
-        d, keep = self._mesh_def(flags, transform, user_data, area)
+                     transform: Optional[FloatValues] = None, user_data: int = 0, area: int = 0,
+                     metres_per_unit: float = 0.0, up_axis: int = UP_AXIS_NOT_SAID) -> MeshId:
+        """An OBJ file as one mesh (flags, area, metres_per_unit and up_axis as add_mesh takes them)."""
+        d, keep = self._mesh_def(flags, transform, user_data, area, metres_per_unit, up_axis)
         mesh = MeshId()
         _check(lib.nl_mesh_add_obj_file(self.pointer, os.fsencode(path), byref(d), byref(mesh)))
         return mesh
 
     def add_obj_memory(self, data: ByteValues, flags: int = 0, transform: Optional[FloatValues] = None,
-                       user_data: int = 0, area: int = 0) -> MeshId:
-        """An OBJ file's text from bytes or any buffer (read in place); flags and area as add_mesh takes them."""
-        d, keep = self._mesh_def(flags, transform, user_data, area)
+                       user_data: int = 0, area: int = 0, metres_per_unit: float = 0.0,
+                       up_axis: int = UP_AXIS_NOT_SAID) -> MeshId:
+        """An OBJ file's text from bytes or any buffer (read in place); flags, area, metres_per_unit and
+        up_axis as add_mesh takes them."""
+        d, keep = self._mesh_def(flags, transform, user_data, area, metres_per_unit, up_axis)
         text = _c_array("data", data, c_uint8)
         mesh = MeshId()
         _check(lib.nl_mesh_add_obj_memory(self.pointer, ctypes.cast(text.items, c_char_p), text.count, byref(d),
@@ -1521,11 +1537,14 @@ class World:
         then rides it (navmesh_info(...).surface). MESH_NOT_IN_NAVMESH meshes are left out, MESH_OBSTACLE
         ones only block, and each mesh's area goes to the polygons over it. Meshes that look wound clockwise
         (turned over, they would hold much more floor for the agent than as given) are named in a logged
-        warning with MESH_CLOCKWISE and counted in navmesh_info(...).turned_over_mesh_count (0 for a
-        navmesh added from polygons or loaded from a file); the build still succeeds. progress:
-        callable(fraction, stage) -> bool, called on this thread with fractions from 0 to 1; False cancels
-        the build (NavLinkError with STATUS_CANCELLED, nothing added); an exception it raises cancels the
-        build and is raised here."""
+        warning with MESH_CLOCKWISE and counted in navmesh_info(...).turned_over_mesh_count. A level that
+        looks given in other units than metres, or with z up, where its meshes did not say (add_mesh's
+        metres_per_unit and up_axis) is said in a logged warning too; navmesh_info(...).build_warnings has a
+        BUILD_WARNING_* bit for each of the three (CLOCKWISE, UNITS, Z_UP). Both are 0 for a navmesh added
+        from polygons or loaded from a file, and the build still succeeds. progress: callable(fraction,
+        stage) -> bool, called on this thread with fractions from 0 to 1; False cancels the build
+        (NavLinkError with STATUS_CANCELLED, nothing added); an exception it raises cancels the build and
+        is raised here."""
         d = lib.nl_default_navmesh_build_def()
         d.agent = agent if agent is not None else default_agent_type()
         if surface is not None:

@@ -391,6 +391,7 @@ class NavmeshTest(NavLinkTestCase):
             info = world.navmesh_info(navmesh)
             self.assertTrue(info.polygon_count >= 2 and info.boundary_edge_count >= 8)
             self.assertEqual(info.turned_over_mesh_count, 0, "the level's fronts are wound counter-clockwise")
+            self.assertEqual(info.build_warnings, 0, "the level is in metres with y up")
             # Three islands: the platforms and the pit floor 20 m down, walkable but unreachable.
             self.assertTrue(-12 <= info.bounds_min[0] and info.bounds_max[0] <= 12 and info.bounds_max[1] < 0.5)
             self.assertTrue(-20.1 < info.bounds_min[1] < -19.5, info.bounds_min[1])
@@ -815,7 +816,7 @@ def polygon_at(world, navmesh, point):
 
 class MeshInputTest(NavLinkTestCase):
     """What a navmesh build takes from the level (tests/abi/navmesh_build_test.c's winding, mesh_roles,
-    mesh_areas and build_progress, with their geometry), and a build's progress and cancel."""
+    mesh_areas and build_progress, with their geometry), a mesh's units, and a build's progress and cancel."""
 
     def test_a_clockwise_floor_builds_only_with_the_clockwise_flag(self):
         with nl.World() as world:
@@ -864,6 +865,24 @@ class MeshInputTest(NavLinkTestCase):
             self.assertTrue(west_polygon is not None and west_polygon.area == 0, "the polygon over the west mesh")
             self.assertFails(nl.STATUS_INVALID_ARGUMENT, "area", add_quad, world, 0, 0, 1, 1, 0, FRONT_UP,
                              area=nl.MESH_MAX_AREA + 1)
+
+    def test_a_level_in_centimetres_is_registered_in_metres(self):
+        # The 10 x 10 m box, 1 m thick, as an exporter in centimetres writes it.
+        box = box_vertices((-500, -100, -500), (500, 0, 500))
+        logged = []
+        with nl.World(log=lambda level, status, message: logged.append((level, message))) as world:
+            mesh = world.add_mesh(box, BOX_INDICES, metres_per_unit=0.01, up_axis=nl.UP_AXIS_Y)
+            info = world.mesh_info(mesh)
+            self.assertEqual((info.metres_per_unit, info.up_axis), (ctypes.c_float(0.01).value, nl.UP_AXIS_Y))
+            self.assertNear(info.bounds_min, (-5, -1, -5), "the bounds in metres")
+            self.assertNear(info.bounds_max, (5, 0, 5), "the bounds in metres")
+            self.assertEqual(world.navmesh_info(world.build_navmesh()).build_warnings, 0)
+            world.remove_mesh(mesh)
+            # Not said, its walls are 100 m tall for a body of 2 m. Coarse cells: read as metres it is 1 km wide.
+            world.add_mesh(box, BOX_INDICES)
+            navmesh = world.build_navmesh(settings_json='{"cell_size": 2.0, "cell_height": 0.5}')
+            self.assertEqual(world.navmesh_info(navmesh).build_warnings, nl.BUILD_WARNING_UNITS)
+            self.assertIn("metres_per_unit", " ".join(m for level, m in logged if level == nl.LOG_WARNING))
 
     def test_a_build_reports_progress_and_can_be_cancelled(self):
         with nl.World() as world:

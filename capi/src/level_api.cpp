@@ -34,6 +34,16 @@ nl::Transform read_transform(const float* m) {
     return nl::validate_transform(Eigen::Map<const Eigen::Matrix4f>(m), "transform");
 }
 
+static_assert(NL_UP_AXIS_NOT_SAID == uint32_t(nl::UpAxis::NotSaid) && NL_UP_AXIS_Y == uint32_t(nl::UpAxis::Y) &&
+                  NL_UP_AXIS_Z == uint32_t(nl::UpAxis::Z),
+              "header and core disagree on up axes");
+
+nl::MeshFrame read_frame(const nl_mesh_def& def) {
+    if (def.up_axis > NL_UP_AXIS_Z)
+        nl::fail_field(ErrorCode::InvalidArgument, "up_axis is ", def.up_axis, " (NL_UP_AXIS_NOT_SAID, NL_UP_AXIS_Y or NL_UP_AXIS_Z)");
+    return {def.metres_per_unit, nl::UpAxis(def.up_axis)};
+}
+
 nl_mesh_def read_def(const nl_mesh_def& def) {
     return nl::capi::read_growable(def, nl_default_mesh_def(), kMeshDefFirstSize, "def");
 }
@@ -75,7 +85,7 @@ nl_mesh_id add_mesh(nl::World& world, const nl::TriangleMesh& mesh, const nl_mes
     const nl::Handle h = [&] {
         try {
             if (def.reserved != 0) nl::fail_field(ErrorCode::InvalidArgument, "reserved is ", def.reserved, " (must be 0)");
-            return world.level().add_mesh(mesh, read_transform(def.transform), def.flags, def.user_data, def.area);
+            return world.level().add_mesh(mesh, read_transform(def.transform), def.flags, def.user_data, def.area, read_frame(def));
         } catch (const nl::Error& e) {
             if (!e.starts_with_field()) throw;
             if (source && about_geometry(e.what())) throw nl::Error(e.code(), nl::concat(source, ": ", obj_words(e.what())));
@@ -96,7 +106,7 @@ nl_mesh_def obj_options(const nl_mesh_def* in) {
     if (!in) return nl_default_mesh_def();
     const nl_mesh_def def = read_def(*in);
     if (def.vertices || def.indices || def.vertex_count || def.triangle_count)
-        fail(ErrorCode::InvalidArgument, "def carries geometry; for an OBJ load only flags, transform and user_data apply");
+        fail(ErrorCode::InvalidArgument, "def carries geometry; for an OBJ load only flags, transform, user_data, area, metres_per_unit and up_axis apply");
     return def;
 }
 
@@ -237,6 +247,8 @@ NL_API nl_status nl_mesh_get_info(const nl_world* world, nl_mesh_id mesh, nl_mes
         Eigen::Map<nl::Vec3>(out.bounds_min) = info.bounds.min;
         Eigen::Map<nl::Vec3>(out.bounds_max) = info.bounds.max;
         out.user_data = info.user_data;
+        out.metres_per_unit = info.frame.metres_per_unit;
+        out.up_axis = uint32_t(info.frame.up);
         nl::capi::write_growable(out_info, out, kMeshInfoFirstSize, "out_info");
     });
 }

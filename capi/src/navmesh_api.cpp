@@ -16,6 +16,10 @@ using nl::capi::require;
 
 namespace {
 
+static_assert(NL_BUILD_WARNING_CLOCKWISE == nl::kWarnedClockwise && NL_BUILD_WARNING_UNITS == nl::kWarnedUnits &&
+                  NL_BUILD_WARNING_Z_UP == nl::kWarnedZUp,
+              "header and core disagree on build warnings");
+
 constexpr size_t kNavMeshDefFirstSize = offsetof(nl_navmesh_def, detail_triangle_starts) + sizeof(const uint32_t*);
 constexpr uint32_t kMaxCorners = NL_MAX_POLYGON_VERTICES;
 constexpr size_t kNavMeshInfoFirstSize = offsetof(nl_navmesh_info, bounds_max) + 3 * sizeof(float);
@@ -105,7 +109,9 @@ void navmesh_get_info(const World& world, nl_navmesh_id navmesh, nl_navmesh_info
     copy_point(info.bounds_min, bounds.min);
     copy_point(info.bounds_max, bounds.max);
     if (frame) info.surface = to_id<nl_mesh_id>(frame->mesh());
-    info.turned_over_mesh_count = static_cast<uint32_t>(world.navmeshes().made_for(to_handle(navmesh)).turned_over_meshes.size());
+    const nl::MadeFor made_for = world.navmeshes().made_for(to_handle(navmesh));
+    info.turned_over_mesh_count = static_cast<uint32_t>(made_for.turned_over_meshes.size());
+    info.build_warnings = made_for.warnings;
     write_growable(out_info, info, kNavMeshInfoFirstSize, "out_info");
 }
 

@@ -4,6 +4,7 @@
 #include <climits>
 #include <cmath>
 #include <cstring>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,16 @@ constexpr int kMaxWalkableHeight = 255;
 // walkable surface" for a 1.24 km floor at 0.3 m cells) and monotone ones silently drop part of it.
 constexpr int kMaxCompactSpans = (1 << 24) - 1;
 constexpr float kNoDetailSampling = 1e30f;
+
+// A level too large for its cells is most often a level in centimetres read as metres: said with the
+// remedy for each.
+std::string units_hint(const float* bmin, const float* bmax) {
+    std::ostringstream out;
+    out << "; the level is " << std::lround(bmax[0] - bmin[0]) << " x " << std::lround(bmax[2] - bmin[2]) << " m and "
+        << std::lround(bmax[1] - bmin[1]) << " m tall: if that is not its size in metres, register its meshes with nl_mesh_def.metres_per_unit "
+           "(0.01 for centimetres)";
+    return out.str();
+}
 
 std::string describe(const nl_agent_type& a) {
     std::ostringstream out;
@@ -140,11 +151,12 @@ rcConfig make_config(const nl_recast_settings& s, const nl_agent_type& agent, co
     if (width > kMaxGridSide || depth > kMaxGridSide || width * depth > kMaxGridCells)
         fail(NL_STATUS_INVALID_ARGUMENT, "cell_size ", cfg.cs, " m makes a grid of ", std::floor(width), " x ",
              std::floor(depth), " cells over the level; Recast's solo mesh takes at most ", kMaxGridSide,
-             " per side and ", kMaxGridCells, " in all (raise cell_size)");
+             " per side and ", kMaxGridCells, " in all (raise cell_size)", units_hint(bmin, bmax));
     const double layers = (double(bmax[1]) - bmin[1]) / cfg.ch;
     if (layers > RC_SPAN_MAX_HEIGHT)
         fail(NL_STATUS_INVALID_ARGUMENT, "cell_height ", cfg.ch, " m makes the level ", std::ceil(layers),
-             " cells tall; Recast's heightfield holds at most ", RC_SPAN_MAX_HEIGHT, " (raise cell_height)");
+             " cells tall; Recast's heightfield holds at most ", RC_SPAN_MAX_HEIGHT, " (raise cell_height)",
+             units_hint(bmin, bmax));
     // The navmesh's vertices lie on the grid, up to two cells above the highest voxel (Recast rounds
     // voxel tops up): all of it must stay within the coordinate limit the navmesh is held to, or a
     // cell of 1e18 m makes a navmesh nl_navmesh_add refuses.
@@ -203,7 +215,7 @@ SoloMesh build_solo_mesh(HostLogContext& ctx, const LevelTriangles& level, const
         fail(NL_STATUS_INVALID_ARGUMENT, "the level has ", walkable_spans, " walkable cells of cell_size ", cfg.cs,
              " m; Recast's compact heightfield indexes at most ", kMaxCompactSpans,
              " (24 bits): raise cell_size to at least ", std::ceil(cfg.cs * finer * 1000.0) / 1000.0,
-             " m, or build the level in parts");
+             " m, or build the level in parts", units_hint(cfg.bmin, cfg.bmax));
     }
 
     // Compact the walkable spans, keep the agent's radius from walls.

@@ -9,6 +9,7 @@
 #include "help_text.h"
 #include "island_colors.h"
 #include "link_files.h"
+#include "level_frame_options.h"
 #include "navigable_level.h"
 #include "navmesh_contents.h"
 #include "navmesh_files.h"
@@ -27,8 +28,8 @@ int generate(int argc, char** argv, Output output) {
     const bool bake = output == Output::NavMeshFile;
     const samples::Arguments args(
         bake ? "navlink bake" : "navlink generate", bake ? "bake" : "generate", argc, argv, 2,
-        {{"out", true}, {"navmesh", true}, {"agent", true}, {"settings", true}, {"plugin", true}, {"png", true},
-         {"oblique", false}, {"link-numbers", false}, {"roofs", false}, {"clockwise", false}});
+        with_level_frame_options({{"out", true}, {"navmesh", true}, {"agent", true}, {"settings", true}, {"plugin", true}, {"png", true},
+         {"oblique", false}, {"link-numbers", false}, {"roofs", false}}));
     if (args.wants_help()) {
         std::fputs(bake ? kBakeHelp : kGenerateHelp, stdout);
         return 0;
@@ -52,7 +53,7 @@ int generate(int argc, char** argv, Output output) {
                                                      : samples::GenerationSettings();
 
     NavigableLevel level(args.positional()[0], args.value("navmesh"), agent.body, settings.recast_json,
-                         args.has("png"), args.value("plugin"), args.has("clockwise") ? NL_MESH_CLOCKWISE : 0u);
+                         args.has("png"), args.value("plugin"), level_frame(args));
     const nl_link_generation_report report = level.generate_links(settings.links);
     if (bake) samples::save_navmesh_file(level.world(), level.navmesh(), out);
     else samples::write_text_file(out, samples::links_json(level.world(), level.navmesh()));

@@ -2,6 +2,16 @@
 
 namespace nl::cli {
 
+// How LEVEL.obj is given, for generate, bake and path.
+#define NL_LEVEL_FRAME_OPTIONS_HELP                                                                      \
+    "  --clockwise           LEVEL's fronts are wound clockwise (Godot's convention; NL_MESH_CLOCKWISE)\n" \
+    "  --units U             LEVEL's unit: m, cm, mm, km, in, ft, or the metres in one unit (0.01 for\n"   \
+    "                        centimetres); nl_mesh_def.metres_per_unit. Without it LEVEL is read as metres\n" \
+    "                        and a size that suggests other units is warned about on stderr\n"          \
+    "  --up y|z              LEVEL's up axis (z: Blender's, 3ds Max's own frame; nl_mesh_def.up_axis).\n" \
+    "                        Without it y is up, and a level that looks z up is warned about on stderr;\n" \
+    "                        so is one that looks wound clockwise without --clockwise\n"
+
 // The picture options of generate, bake, path and demo, and what their pictures show.
 #define NL_PICTURE_OPTIONS_HELP                                                                          \
     "  --link-numbers        number each link in the picture by its index in LINKS.json, as navlink\n"  \
@@ -37,15 +47,15 @@ const char* const kMainHelp =
 const char* const kGenerateHelp =
     "usage: navlink generate LEVEL.obj --out LINKS.json [--navmesh NAVMESH.obj] [--agent AGENT.json]\n"
     "                    [--settings GEN.json] [--plugin PLUGIN.so] [--png VIEW.png] [--oblique]\n"
-    "                    [--link-numbers] [--roofs] [--clockwise]\n"
+    "                    [--link-numbers] [--roofs]\n"
+    "                    [--clockwise] [--units U] [--up y|z]\n"
     "\n"
     "Builds LEVEL's navmesh with the built-in Recast builder (or takes NAVMESH.obj: convex polygons, Y up),\n"
     "generates jump and drop links against the level geometry, writes them to LINKS.json and prints the\n"
     "generation report: links by kind, rejections by reason, milliseconds per stage.\n"
     "\n"
     "  --out LINKS.json      where the links go (schema \"navlink-links\" 1)\n"
-    "  --clockwise           LEVEL's fronts are wound clockwise (Godot's convention; NL_MESH_CLOCKWISE).\n"
-    "                        A level that looks wound so without it is warned about on stderr\n"
+    NL_LEVEL_FRAME_OPTIONS_HELP
     "  --navmesh NAVMESH.obj use this navmesh instead of building one\n"
     "  --agent AGENT.json    the body the navmesh is built for; default Recast's (radius 0.6, height 2,\n"
     "                        max_climb 0.9, max_slope 45). Keys: name, radius, height, max_climb,\n"
@@ -64,7 +74,8 @@ const char* const kGenerateHelp =
 const char* const kBakeHelp =
     "usage: navlink bake LEVEL.obj --out NAVMESH.nlnav [--navmesh NAVMESH.obj] [--agent AGENT.json]\n"
     "                    [--settings GEN.json] [--plugin PLUGIN.so] [--png VIEW.png] [--oblique]\n"
-    "                    [--link-numbers] [--roofs] [--clockwise]\n"
+    "                    [--link-numbers] [--roofs]\n"
+    "                    [--clockwise] [--units U] [--up y|z]\n"
     "\n"
     "As navlink generate, but writes the navmesh, its links and what they were made for (the body, the\n"
     "builder and its settings, the level's hash, the link settings) as one baked navmesh file: compact,\n"
@@ -86,7 +97,8 @@ const char* const kInfoHelp =
 const char* const kPathHelp =
     "usage: navlink path LEVEL.obj --from X,Y,Z --to X,Y,Z [--links LINKS.json] [--agent AGENT.json]\n"
     "                    [--search X,Y,Z] [--navmesh NAVMESH.obj] [--settings GEN.json] [--json]\n"
-    "                    [--png VIEW.png] [--oblique] [--link-numbers] [--roofs] [--clockwise]\n"
+    "                    [--png VIEW.png] [--oblique] [--link-numbers] [--roofs]\n"
+    "                    [--clockwise] [--units U] [--up y|z]\n"
     "       navlink path NAVMESH.nlnav --from X,Y,Z --to X,Y,Z [--links LINKS.json] [--agent AGENT.json]\n"
     "                    [--search X,Y,Z] [--json]\n"
     "\n"
@@ -109,7 +121,7 @@ const char* const kPathHelp =
     "  --settings GEN.json   the settings file of navlink generate: its \"recast\" part builds the navmesh\n"
     "                        from LEVEL\n"
     "  --json                print the path as a JSON object instead of text\n"
-    "  --clockwise           LEVEL's fronts are wound clockwise (Godot's convention; NL_MESH_CLOCKWISE)\n"
+    NL_LEVEL_FRAME_OPTIONS_HELP
     "  --png VIEW.png        also draw the path over the level (islands for the agent)\n"
     "  --oblique             draw the picture from an angle instead of straight down\n"
     NL_PICTURE_OPTIONS_HELP

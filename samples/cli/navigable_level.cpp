@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "clock.h"
+#include "level_frame_options.h"
 #include "navmesh_setup.h"
 #include "progress_bar.h"
 #include "sample_error.h"
@@ -13,23 +14,27 @@ using nl::samples::now_ms;
 
 NavigableLevel::NavigableLevel(const std::string& level_path, const std::optional<std::string>& navmesh_path,
                                const nl_agent_type& body, const std::string& recast_json, bool for_drawing,
-                               const std::optional<std::string>& plugin_path, uint32_t mesh_flags) {
+                               const std::optional<std::string>& plugin_path, const samples::LevelFrame& frame) {
     // First: a plugin that does not load fails before the level is read and built.
     if (plugin_path) world_.load_plugin(*plugin_path);
     double start = now_ms();
-    level_ = samples::load_level_file(world_.get(), level_path, for_drawing, mesh_flags);
+    level_ = samples::load_level_file(world_.get(), level_path, for_drawing, frame);
     times_.load_ms = now_ms() - start;
     start = now_ms();
     if (navmesh_path) {
         navmesh_ = samples::add_navmesh_from_obj(world_.get(), *navmesh_path, body);
     } else {
         ProgressBar bar;
-        navmesh_ = samples::build_navmesh(world_.get(), body, recast_json, {}, ProgressBar::callback, &bar);
+        try {
+            navmesh_ = samples::build_navmesh(world_.get(), body, recast_json, {}, ProgressBar::callback, &bar);
+        } catch (const samples::SampleError& e) {
+            // The library names nl_mesh_def's field; the tool's way to set it:
+            if (std::string(e.what()).find("metres_per_unit") == std::string::npos) throw;
+            throw samples::SampleError(std::string(e.what()) + "; navlink's --units says " + level_path +
+                                       "'s unit (cm, mm, in, ft, km or the metres in one unit)");
+        }
         nl_navmesh_info info = nl_navmesh_info_init();
-        // The library's warning (stderr) names NL_MESH_CLOCKWISE; the tool's way to set it:
-        if (NL_SUCCEEDED(nl_navmesh_get_info(world_.get(), navmesh_, &info)) && info.turned_over_mesh_count > 0)
-            std::fprintf(stderr, "hint: if %s was exported with clockwise fronts (Godot's convention), pass --clockwise\n",
-                         level_path.c_str());
+        if (NL_SUCCEEDED(nl_navmesh_get_info(world_.get(), navmesh_, &info))) hint_level_frame(info, level_path);
     }
     times_.navmesh_ms = now_ms() - start;
 }

@@ -17,13 +17,13 @@ namespace nl::cli {
 
 class NavigableLevel {
 public:
-    // Loads the plugin library `plugin_path` (if given) and LEVEL.obj with `mesh_flags` (and its
+    // Loads the plugin library `plugin_path` (if given) and LEVEL.obj given as `frame` says (and its
     // triangles too when `for_drawing`); builds the navmesh for `body` with `recast_json` settings
-    // unless `navmesh_path` is given, and says on stderr when the level looks wound clockwise without
-    // --clockwise. Throws SampleError.
+    // unless `navmesh_path` is given, and names on stderr the option that would answer each of the
+    // build's warnings (a level wound clockwise, in other units, with z up). Throws SampleError.
     NavigableLevel(const std::string& level_path, const std::optional<std::string>& navmesh_path,
                    const nl_agent_type& body, const std::string& recast_json, bool for_drawing,
-                   const std::optional<std::string>& plugin_path = std::nullopt, uint32_t mesh_flags = 0);
+                   const std::optional<std::string>& plugin_path = std::nullopt, const samples::LevelFrame& frame = {});
     // Registers a generated level and builds its navmesh.
     NavigableLevel(const levelgen::GeneratedLevel& generated, const std::string& name, const nl_agent_type& body,
                    const std::string& recast_json);

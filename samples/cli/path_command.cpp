@@ -8,6 +8,7 @@
 #include "help_text.h"
 #include "island_colors.h"
 #include "link_files.h"
+#include "level_frame_options.h"
 #include "navigable_level.h"
 #include "navmesh_contents.h"
 #include "navmesh_files.h"
@@ -36,7 +37,7 @@ int report_path(const nl_world* world, nl_navmesh_id navmesh, const samples::Pla
 
 int run_path(int argc, char** argv) {
     const samples::Arguments args("navlink path", "path", argc, argv, 2,
-                                  {{"links", true},
+                                  with_level_frame_options({{"links", true},
                                    {"from", true},
                                    {"to", true},
                                    {"search", true},
@@ -47,8 +48,7 @@ int run_path(int argc, char** argv) {
                                    {"png", true},
                                    {"oblique", false},
                                    {"link-numbers", false},
-                                   {"roofs", false},
-                                   {"clockwise", false}});
+                                   {"roofs", false}}));
     if (args.wants_help()) {
         std::fputs(kPathHelp, stdout);
         return 0;
@@ -75,7 +75,7 @@ int run_path(int argc, char** argv) {
 
     if (baked) {
         // The navmesh and its links as baked: nothing is built, and there is no level to draw.
-        for (const char* level_only : {"navmesh", "settings", "png", "oblique", "link-numbers", "roofs"})
+        for (const char* level_only : {"navmesh", "settings", "png", "oblique", "link-numbers", "roofs", "clockwise", "units", "up"})
             if (args.has(level_only))
                 throw samples::SampleError(std::string("--") + level_only + " needs LEVEL.obj: " + args.positional()[0] +
                                            " is a baked navmesh file, planned over as it is");
@@ -88,7 +88,7 @@ int run_path(int argc, char** argv) {
     }
     if (const auto png = args.value("png")) samples::check_writable_file(*png);
     NavigableLevel level(args.positional()[0], args.value("navmesh"), agent.body, settings.recast_json,
-                         args.has("png"), std::nullopt, args.has("clockwise") ? NL_MESH_CLOCKWISE : 0u);
+                         args.has("png"), std::nullopt, level_frame(args));
     // Without --links the navmesh is walked alone.
     if (const auto links = args.value("links")) samples::load_links_file(level.world(), level.navmesh(), *links);
     const samples::PlannedPath path =

@@ -13,16 +13,25 @@ void read_info(nl_world* world, Level& level) {
 
 }  // namespace
 
-Level load_level_file(nl_world* world, const std::string& path, bool for_drawing, uint32_t mesh_flags) {
+Level load_level_file(nl_world* world, const std::string& path, bool for_drawing, const LevelFrame& frame) {
     Level level;
     level.name = path;
     nl_mesh_def def = nl_default_mesh_def();
-    def.flags = mesh_flags;
+    def.flags = frame.flags;
+    def.metres_per_unit = frame.metres_per_unit;
+    def.up_axis = frame.up_axis;
     check(nl_mesh_add_obj_file(world, path.c_str(), &def, &level.mesh), "loading the level");
     if (for_drawing) {
         const ObjPolygons obj = read_obj_file(path);
         level.positions = obj.positions;
         level.triangles = obj.fan_triangles();
+        const float scale = frame.metres_per_unit > 0.0f ? frame.metres_per_unit : 1.0f;
+        for (size_t i = 0; i + 2 < level.positions.size(); i += 3) {
+            float* p = &level.positions[i];
+            const float y = p[1], z = p[2];
+            if (frame.up_axis == NL_UP_AXIS_Z) p[1] = z, p[2] = -y;
+            for (int k = 0; k < 3; ++k) p[k] *= scale;
+        }
     }
     read_info(world, level);
     return level;

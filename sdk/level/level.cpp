@@ -20,6 +20,25 @@ Aabb bounds_of(const TriangleMesh& mesh, const Transform& t) {
     return box;
 }
 
+// The vertices brought from the host's units and up axis into NavLink's frame; empty when they are
+// in it already.
+TriangleMesh in_navlink_frame(const TriangleMesh& given, const MeshFrame& frame) {
+    if (!(frame.metres_per_unit == 0.0f ||
+          (frame.metres_per_unit >= kLeastMetresPerUnit && frame.metres_per_unit <= kMostMetresPerUnit)))
+        fail_field(ErrorCode::InvalidArgument, "metres_per_unit is ", frame.metres_per_unit, " (0 for metres not said, or ",
+                   kLeastMetresPerUnit, " to ", kMostMetresPerUnit, ": 0.01 for centimetres, 0.0254 for inches)");
+    if (frame.up != UpAxis::NotSaid && frame.up != UpAxis::Y && frame.up != UpAxis::Z)
+        fail_field(ErrorCode::InvalidArgument, "up_axis is ", int(frame.up), " (NL_UP_AXIS_NOT_SAID, NL_UP_AXIS_Y or NL_UP_AXIS_Z)");
+    if (frame.identity()) return {};
+    const float scale = frame.metres_per_unit == 0.0f ? 1.0f : frame.metres_per_unit;
+    TriangleMesh out;
+    out.triangles = given.triangles;
+    out.vertices.reserve(given.vertices.size());
+    for (const Vec3& v : given.vertices)
+        out.vertices.push_back(scale * (frame.up == UpAxis::Z ? Vec3(v.x(), v.z(), -v.y()) : v));
+    return out;
+}
+
 template <typename Owner>
 void store_owner(std::vector<Owner>& table, unsigned id, Owner owner) {
     if (table.size() <= id) table.resize(id + 1);
@@ -96,14 +115,16 @@ void check_placement(const Aabb& world_bounds) {
 
 }  // namespace
 
-Handle Level::add_mesh(const TriangleMesh& input, const Transform& transform, uint32_t flags, uint64_t user_data,
-                       uint32_t area) {
+Handle Level::add_mesh(const TriangleMesh& given, const Transform& transform, uint32_t flags, uint64_t user_data,
+                       uint32_t area, const MeshFrame& frame) {
     if (flags & ~kMeshKnownFlags)
         fail_field(ErrorCode::InvalidArgument, "flags has unknown bits 0x", std::hex, flags & ~kMeshKnownFlags);
     if ((flags & kMeshObstacle) && (flags & kMeshNotInNavMesh))
         fail_field(ErrorCode::InvalidArgument,
                    "flags has both NL_MESH_OBSTACLE and NL_MESH_NOT_IN_NAVMESH: an obstacle is part of navmesh builds");
     if (area > kMaxMeshArea) fail_field(ErrorCode::InvalidArgument, "area is ", area, " (at most ", kMaxMeshArea, ")");
+    const TriangleMesh framed = in_navlink_frame(given, frame);
+    const TriangleMesh& input = frame.identity() ? given : framed;
     ValidatedTriangles valid = validate_mesh(input);
 
     Mesh mesh;
@@ -116,6 +137,7 @@ Handle Level::add_mesh(const TriangleMesh& input, const Transform& transform, ui
     mesh.flags = flags;
     mesh.area = static_cast<uint8_t>(area);
     mesh.user_data = user_data;
+    mesh.frame = frame;
     mesh.transform = transform;
     mesh.object_bounds = bounds_of(mesh.object, Transform::Identity());
     mesh.world_bounds = bounds_of(mesh.object, transform);
@@ -268,6 +290,7 @@ MeshInfo Level::info(Handle h) const {
     out.transform = mesh->transform;
     out.bounds = mesh->world_bounds;
     out.user_data = mesh->user_data;
+    out.frame = mesh->frame;
     return out;
 }
 

@@ -40,6 +40,22 @@ enum MeshFlags : uint32_t {
 // marks an obstacle's triangles in a builder's input).
 constexpr uint32_t kMaxMeshArea = kObstacleArea - 1u;
 
+// The frame a host's vertices are given in; NavLink's own is metres with y up. Vertices are brought
+// into it when a mesh is registered, before its transform (which, as every other position, is in
+// NavLink's frame).
+enum class UpAxis : uint8_t { NotSaid, Y, Z };  // not said: y, and a navmesh build says when z looks up
+struct MeshFrame {
+    // Metres per unit of the vertices; 0 = not said (metres, and a navmesh build says when the level's
+    // size suggests other units), 1 = metres said.
+    float metres_per_unit = 0.0f;
+    // Z: the vertices have z up (Blender's, Unreal's, 3ds Max's own frame): (x, y, z) becomes
+    // (x, z, -y), a rotation, so fronts stay fronts.
+    UpAxis up = UpAxis::NotSaid;
+    bool identity() const { return (metres_per_unit == 0.0f || metres_per_unit == 1.0f) && up != UpAxis::Z; }
+};
+// Least and most metres per unit taken: from micrometres to kilometres and beyond.
+constexpr float kLeastMetresPerUnit = 1e-6f, kMostMetresPerUnit = 1e6f;
+
 struct MeshInfo {
     uint32_t vertex_count = 0;
     uint32_t triangle_count = 0;
@@ -49,6 +65,7 @@ struct MeshInfo {
     Transform transform = Transform::Identity();
     Aabb bounds;
     uint64_t user_data = 0;
+    MeshFrame frame;
 };
 
 // Direction must be unit length; max_distance > 0 (may be infinite).
@@ -123,9 +140,9 @@ public:
     // Edits: each validates first and changes nothing when it throws (a bad field is named as
     // validate_mesh names it).
     // kMeshClockwise turns the triangles over; `area` (at most kMaxMeshArea) is what navmesh builds
-    // give its walkable triangles.
+    // give its walkable triangles; `frame` says the units and up axis of the vertices.
     Handle add_mesh(const TriangleMesh& mesh, const Transform& transform, uint32_t flags, uint64_t user_data,
-                    uint32_t area = 0);
+                    uint32_t area = 0, const MeshFrame& frame = {});
     void remove_mesh(Handle mesh);
     void set_transform(Handle mesh, const Transform& transform);
 
@@ -178,6 +195,7 @@ private:
         uint32_t flags = 0;
         uint8_t area = 0;
         uint64_t user_data = 0;
+        MeshFrame frame;
         Transform transform = Transform::Identity();
         Eigen::Matrix3f normal_to_world = Eigen::Matrix3f::Identity();  // movable meshes only
         Aabb object_bounds;

@@ -32,7 +32,7 @@ WindingEstimate estimate_winding(const TriangleMesh& mesh, size_t first, size_t 
     const float spacing = std::max(kLeastColumnSpacing, std::max(max_x - min_x, max_z - min_z) / float(kWindingColumns));
     const uint32_t nx = uint32_t(std::floor((max_x - min_x) / spacing)) + 1, nz = uint32_t(std::floor((max_z - min_z) / spacing)) + 1;
     std::vector<std::vector<Crossing>> columns(size_t(nx) * nz);
-    const float walkable = std::cos(max_slope_degrees * kDegrees);
+    const float walkable = walkable_normal_y(max_slope_degrees);
     for (size_t t = first; t < first + count; ++t) {
         const Vec3& a = mesh.vertices[mesh.triangles[t][0]];
         const Vec3& b = mesh.vertices[mesh.triangles[t][1]];
@@ -81,6 +81,8 @@ WindingEstimate estimate_winding(const TriangleMesh& mesh, size_t first, size_t 
     }
     return out;
 }
+
+float walkable_normal_y(float max_slope_degrees) { return std::cos(max_slope_degrees * kDegrees); }
 
 bool looks_turned_over(const WindingEstimate& estimate) {
     return estimate.floor_turned_over > 2.0f * estimate.floor_as_given && estimate.floor_turned_over > estimate.floor_as_given + 1.0f;

@@ -25,6 +25,9 @@ struct WindingEstimate {
 constexpr uint32_t kWindingColumns = 128;
 WindingEstimate estimate_winding(const TriangleMesh& mesh, size_t first, size_t count, float max_slope_degrees, float height);
 
+// The least y of a unit normal facing up within `max_slope_degrees`: a floor's.
+float walkable_normal_y(float max_slope_degrees);
+
 // Turned over, the floor would be more than twice as large, and at least a square metre larger.
 bool looks_turned_over(const WindingEstimate& estimate);
 

@@ -27,6 +27,15 @@ struct MadeFor {
     // The meshes it was built on that looked wound clockwise (level/winding_check.h): the build's
     // warning. Not kept in navmesh files.
     std::vector<Handle> turned_over_meshes;
+    // What the build warned of about its level: BuildWarning bits. Not kept in navmesh files.
+    uint32_t warnings = 0;
+};
+
+// A navmesh build's warnings about the level it was given (the log says each in words).
+enum BuildWarning : uint32_t {
+    kWarnedClockwise = 1u << 0,  // meshes look wound clockwise (turned_over_meshes)
+    kWarnedUnits = 1u << 1,      // the level's size against the agent's suggests other units than metres
+    kWarnedZUp = 1u << 2,        // the level would hold much more floor with z up
 };
 
 }  // namespace nl

@@ -9,7 +9,6 @@
 #include "io/json_input.h"
 #include "io/navmesh_file.h"
 #include "level/level_hash.h"
-#include "level/winding_check.h"
 #include "links/link_placement.h"
 
 namespace nl {
@@ -33,34 +32,6 @@ void World::log_repairs(const NavMesh& navmesh) const {
                                               r.dropped_polygons, " degenerate polygons dropped, ", r.non_manifold_edges,
                                               " edges shared by 3+ polygons left unconnected"));
     }
-}
-
-std::vector<Handle> World::warn_turned_over(const BuildTriangles& triangles, const AgentType& agent) const {
-    std::vector<Handle> turned;
-    std::string said;
-    float as_given = 0.0f, turned_over = 0.0f;
-    const auto& starts = triangles.mesh_starts;
-    for (size_t k = 0; k < starts.size(); ++k) {
-        const size_t end = k + 1 < starts.size() ? starts[k + 1].first : triangles.mesh.triangles.size();
-        // An obstacle is never walked on, whichever way it faces.
-        if (end == starts[k].first || triangles.areas[starts[k].first] == kObstacleArea) continue;
-        const WindingEstimate e = estimate_winding(triangles.mesh, starts[k].first, end - starts[k].first, agent.max_slope, agent.height);
-        if (!looks_turned_over(e)) continue;
-        turned.push_back(starts[k].mesh);
-        as_given += e.floor_as_given;
-        turned_over += e.floor_turned_over;
-        if (turned.size() <= 8) said += concat(turned.size() > 1 ? ", " : "", "{", starts[k].mesh.index1 & kHandleSlotMask, ", ",
-                                                starts[k].mesh.generation, "}");
-    }
-    const bool one = turned.size() == 1;
-    if (!turned.empty())
-        logger_.log(LogLevel::Warning,
-                    concat("the navmesh was built on ", turned.size(), one ? " mesh that looks" : " meshes that look",
-                           " wound clockwise (nl_mesh_id ", said, turned.size() > 8 ? ", ..." : "", "): turned over, ",
-                           one ? "it" : "they", " would hold ", std::lround(turned_over), " m2 of floor for this agent, as given ",
-                           std::lround(as_given), " m2. A triangle's front is the side its corners run counter-clockwise from; "
-                           "register meshes wound clockwise (Godot's) with NL_MESH_CLOCKWISE"));
-    return turned;
 }
 
 Transform World::surface_placement(Handle surface) const {
@@ -163,6 +134,10 @@ Handle World::build_navmesh(const NavMeshBuildRequest& request) {
     };
     forwarded.progress(0.0f, "starting");
     fail_if_cancelled();
+    // Said before the build: a level in the wrong units can take long to build, or fail for it.
+    const BuildTriangles triangles = level_->triangles_to_build(request.surface);
+    MadeFor made_for;
+    warn_of_level(triangles, request.agent, made_for);
     BuiltNavMesh built;
     try {
         built = builder->build(*this, forwarded);
@@ -172,7 +147,6 @@ Handle World::build_navmesh(const NavMeshBuildRequest& request) {
     }
     fail_if_cancelled();
     if (!built.navmesh) fail(ErrorCode::Internal, "builder '", request.builder, "' succeeded without handing over a navmesh");
-    MadeFor made_for;
     made_for.builder = request.builder;
     if (!built.settings_used.empty()) {
         made_for.builder_settings = settings_record(request.builder, built.settings_used);
@@ -181,9 +155,7 @@ Handle World::build_navmesh(const NavMeshBuildRequest& request) {
     }
     std::shared_ptr<const NavMesh> navmesh = std::move(built.navmesh);
     log_repairs(*navmesh);
-    const BuildTriangles triangles = level_->triangles_to_build(request.surface);
     made_for.level_hash = built.level_hash != 0 ? built.level_hash : level_hash(triangles);
-    made_for.turned_over_meshes = warn_turned_over(triangles, request.agent);
     forwarded.progress(1.0f, "adding the navmesh");
     fail_if_cancelled();
     return add_on_surface(std::move(navmesh), request.surface, std::move(made_for));

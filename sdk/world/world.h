@@ -163,9 +163,11 @@ private:
     PluginLinks plugin_links(Handle navmesh, const NavMesh& mesh, const PluginSettings& settings,
                              LinkGenerationReport& report);
     void log_repairs(const NavMesh& navmesh) const;
-    // The meshes of a build's input that look wound clockwise (level/winding_check.h), said in a
-    // warning in the log.
+    // What a build's input looks wrong in (winding_check.h, frame_check.h), each said in a warning
+    // in the log: the meshes that look wound clockwise, and MadeFor::warnings.
+    void warn_of_level(const BuildTriangles& triangles, const AgentType& agent, MadeFor& made_for) const;
     std::vector<Handle> warn_turned_over(const BuildTriangles& triangles, const AgentType& agent) const;
+    uint32_t warn_of_frame(const BuildTriangles& triangles, const AgentType& agent) const;
     // InvalidArgument for a navmesh that rides a moving mesh: the generator proves links against the
     // level as it stands, so they would hold at one placement only.
     void refuse_generation_on_surface(Handle navmesh) const;

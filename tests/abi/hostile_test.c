@@ -1404,6 +1404,32 @@ static void mesh_def_cases(const def_function* f, const nl_mesh_def* valid) {
     }
     CASE(f->function, "def->transform NULL (allowed: identity)") { def_accepts(valid); }
     bad_def_transforms(f->function, "", valid, def_refuses);
+    {
+        static const struct {
+            const char* name;
+            float value;
+        } bad_units[] = {{"def->metres_per_unit NaN", NAN}, {"def->metres_per_unit inf", INFINITY},
+                         {"def->metres_per_unit -inf", -INFINITY}, {"def->metres_per_unit negative", -0.01f},
+                         {"def->metres_per_unit tiny (1e-7)", 1e-7f}, {"def->metres_per_unit huge (1e7)", 1e7f}};
+        size_t i;
+        for (i = 0; i < sizeof bad_units / sizeof bad_units[0]; ++i) {
+            CASE(f->function, "%s", bad_units[i].name) {
+                nl_mesh_def def = *valid;
+                def.metres_per_unit = bad_units[i].value;
+                def_refuses(&def, NL_STATUS_INVALID_ARGUMENT, "metres_per_unit");
+            }
+        }
+    }
+    CASE(f->function, "def->up_axis 3") {
+        nl_mesh_def def = *valid;
+        def.up_axis = 3u;
+        def_refuses(&def, NL_STATUS_INVALID_ARGUMENT, "up_axis");
+    }
+    CASE(f->function, "def->up_axis huge (UINT32_MAX)") {
+        nl_mesh_def def = *valid;
+        def.up_axis = UINT32_MAX;
+        def_refuses(&def, NL_STATUS_INVALID_ARGUMENT, "up_axis");
+    }
 }
 
 static const geometry_fields k_mesh_geometry = {GEOMETRY_FIELDS(nl_mesh_def), {k_tile_nan, k_tile_inf, k_tile_minus_inf}, "vertices[2]"};

@@ -311,32 +311,6 @@ static nl_navmesh_id build(nl_world* world) {
     return id;
 }
 
-/* The warnings a world logged, joined (each on its own line). */
-typedef struct warnings {
-    char text[4096];
-    int count;
-} warnings;
-
-static void keep_warning(void* user, nl_log_level level, nl_status status, const char* message) {
-    warnings* w = (warnings*)user;
-    size_t used = strlen(w->text);
-    (void)status;
-    if (level != NL_LOG_WARNING) return;
-    ++w->count;
-    snprintf(w->text + used, sizeof w->text - used, "%s\n", message);
-}
-
-static nl_world* make_listening_world(warnings* heard) {
-    nl_world_def def = nl_default_world_def();
-    nl_world* world = NULL;
-    memset(heard, 0, sizeof *heard);
-    def.worker_count = 2;
-    def.log_fn = keep_warning;
-    def.log_user = heard;
-    CHECK_OK(nl_world_create(&def, &world));
-    return world;
-}
-
 /* A level whose big floor is wound clockwise and not flagged, beside a small platform wound right:
    the build succeeds on the platform, and says the floor looks turned over (the log, the navmesh's
    info); flagged NL_MESH_CLOCKWISE, nothing is said. */

@@ -5,6 +5,7 @@
 #include "scene.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -397,4 +398,24 @@ nl_plugin_description describe(const nl_world* world, nl_plugin_id id) {
     d.size = sizeof d;
     if (NL_FAILED(nl_plugin_get_description(world, id, &d))) memset(&d, 0, sizeof d);
     return d;
+}
+
+static void keep_warning(void* user, nl_log_level level, nl_status status, const char* message) {
+    warnings* w = (warnings*)user;
+    size_t used = strlen(w->text);
+    (void)status;
+    if (level != NL_LOG_WARNING) return;
+    ++w->count;
+    snprintf(w->text + used, sizeof w->text - used, "%s\n", message);
+}
+
+nl_world* make_listening_world(warnings* heard) {
+    nl_world_def def = nl_default_world_def();
+    nl_world* world = NULL;
+    memset(heard, 0, sizeof *heard);
+    def.worker_count = 2;
+    def.log_fn = keep_warning;
+    def.log_user = heard;
+    CHECK_OK(nl_world_create(&def, &world));
+    return world;
 }

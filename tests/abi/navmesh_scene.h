@@ -67,6 +67,15 @@ void check_grid_navmesh(const nl_world* world, nl_navmesh_id id, uint32_t polygo
 /* Registers a box 20 m x 1 m x 20 m, its top at y = 1 (a checked nl_mesh_add). */
 nl_mesh_id add_floor_box(nl_world* world);
 
+/* The warnings a world logged, joined (each on its own line). */
+typedef struct warnings {
+    char text[4096];
+    int count;
+} warnings;
+
+/* A world of 2 workers whose log's warnings go into `heard` (cleared first). */
+nl_world* make_listening_world(warnings* heard);
+
 /* One refused nl_navmesh_build: `detail` naming `needle`, nothing added, out_id untouched. */
 #define CHECK_BUILD_FAILS(world, def, detail, needle) \
     check_build_fails((world), (def), (detail), (needle), __FILE__, __LINE__)

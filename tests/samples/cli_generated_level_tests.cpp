@@ -1,6 +1,10 @@
 // navlink level, generate, path and demo on the generated default level: exit statuses, the links file,
 // the JSON path, and links where the level's features put them.
+#include <array>
 #include <cmath>
+#include <cstdio>
+#include <functional>
+#include <iomanip>
 #include <map>
 #include <regex>
 #include <sstream>
@@ -397,4 +401,76 @@ TEST_CASE("navlink generate says when a level looks wound clockwise, and --clock
     // Read as wound clockwise, it is the level as given: the same navmesh and links.
     CHECK(flagged.out.substr(flagged.out.find("navmesh:"), 40) == as_given.out.substr(as_given.out.find("navmesh:"), 40));
     CHECK(nl::test::read_file(files.dir + "/flagged.json").size() == nl::test::read_file(files.dir + "/given.json").size());
+}
+
+namespace {
+
+// LEVEL.obj's vertices, each (x, y, z) written as `rewrite` gives it.
+std::string with_vertices(const std::string& obj, const std::function<std::array<double, 3>(double, double, double)>& rewrite) {
+    std::istringstream lines(obj);
+    std::ostringstream out;
+    out << std::setprecision(10);
+    for (std::string line; std::getline(lines, line);) {
+        double x, y, z;
+        if (line.rfind("v ", 0) == 0 && std::sscanf(line.c_str(), "v %lf %lf %lf", &x, &y, &z) == 3) {
+            const std::array<double, 3> p = rewrite(x, y, z);
+            out << "v " << p[0] << ' ' << p[1] << ' ' << p[2] << '\n';
+        } else {
+            out << line << '\n';
+        }
+    }
+    return out.str();
+}
+
+std::string navmesh_line(const ProgramRun& run) { return run.out.substr(run.out.find("navmesh:"), 40); }
+
+}  // namespace
+
+// The default level written in centimetres, and with z up (Blender's own frame): generate builds on
+// each, warns of what it looks like and names the option; with --units cm or --up z it is the level
+// in metres with y up, the same navmesh and links, and nothing is said.
+TEST_CASE("navlink generate says when a level looks given in centimetres or with z up, and --units and --up read it so") {
+    GeneratedLevelFiles files("level_frame");
+    const std::string obj = nl::test::read_file(files.dir + "/level.obj");
+    nl::test::write_file(files.dir + "/cm.obj", with_vertices(obj, [](double x, double y, double z) {
+                             return std::array<double, 3>{100 * x, 100 * y, 100 * z};
+                         }));
+    nl::test::write_file(files.dir + "/z_up.obj", with_vertices(obj, [](double x, double y, double z) {
+                             return std::array<double, 3>{x, -z, y};
+                         }));
+    // Read as metres, the centimetre level is 4 km across: coarse cells keep its build short.
+    nl::test::write_file(files.dir + "/coarse.json", R"({"recast": {"cell_size": 3.0, "cell_height": 2.0}})");
+
+    const ProgramRun as_given = navlink({"generate", "level.obj", "--out", "given.json"}, files.dir);
+    REQUIRE_MESSAGE(as_given.exit_code == 0, as_given.err);
+    CHECK(as_given.err.find("warning") == std::string::npos);
+
+    const ProgramRun cm_unsaid = navlink({"generate", "cm.obj", "--settings", "coarse.json", "--out", "cm_unsaid.json"}, files.dir);
+    REQUIRE_MESSAGE(cm_unsaid.exit_code == 0, cm_unsaid.err);
+    CHECK_MESSAGE(cm_unsaid.err.find("warning: the level's walls are ") != std::string::npos, cm_unsaid.err);
+    CHECK(cm_unsaid.err.find("are its units metres?") != std::string::npos);
+    CHECK(cm_unsaid.err.find("hint: if cm.obj is not in metres, pass --units") != std::string::npos);
+    const ProgramRun cm = navlink({"generate", "cm.obj", "--units", "cm", "--out", "cm.json"}, files.dir);
+    REQUIRE_MESSAGE(cm.exit_code == 0, cm.err);
+    CHECK(cm.err.find("warning") == std::string::npos);
+    CHECK(navmesh_line(cm) == navmesh_line(as_given));
+    CHECK(cm.out.substr(cm.out.find("links:"), 40) == as_given.out.substr(as_given.out.find("links:"), 40));
+
+    const ProgramRun z_unsaid = navlink({"generate", "z_up.obj", "--out", "z_unsaid.json"}, files.dir);
+    REQUIRE_MESSAGE(z_unsaid.exit_code == 0, z_unsaid.err);
+    CHECK_MESSAGE(z_unsaid.err.find("warning: the level looks as if z were its up axis") != std::string::npos, z_unsaid.err);
+    CHECK(z_unsaid.err.find("pass --up z") != std::string::npos);
+    CHECK(navmesh_line(z_unsaid) != navmesh_line(as_given));
+    const ProgramRun z_up = navlink({"generate", "z_up.obj", "--up", "z", "--out", "z_up.json"}, files.dir);
+    REQUIRE_MESSAGE(z_up.exit_code == 0, z_up.err);
+    CHECK(z_up.err.find("warning") == std::string::npos);
+    CHECK(navmesh_line(z_up) == navmesh_line(as_given));
+    CHECK(nl::test::read_file(files.dir + "/z_up.json").size() == nl::test::read_file(files.dir + "/given.json").size());
+
+    const ProgramRun bad_units = navlink({"generate", "cm.obj", "--units", "furlong", "--out", "bad.json"}, files.dir);
+    CHECK(bad_units.exit_code != 0);
+    CHECK(bad_units.err.find("--units must be m, cm, mm, km, in, ft or the metres in one unit") != std::string::npos);
+    const ProgramRun bad_up = navlink({"generate", "z_up.obj", "--up", "x", "--out", "bad.json"}, files.dir);
+    CHECK(bad_up.exit_code != 0);
+    CHECK(bad_up.err.find("--up must be y or z, got 'x'") != std::string::npos);
 }

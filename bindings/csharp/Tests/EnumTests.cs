@@ -12,7 +12,8 @@ namespace NavLink.Tests
     {
         // Members whose name says they hold a kind, flags, a status or an outcome.
         private static readonly string[] KindLikeNames =
-            { "Kind", "Kinds", "Flags", "Status", "StatusCode", "Level", "LogLevel", "Segment", "Partition", "Outcome", "State", "Reason" };
+            { "Kind", "Kinds", "Flags", "Status", "StatusCode", "Level", "LogLevel", "Segment", "Partition", "Outcome", "State", "Reason",
+              "UpAxis", "BuildWarnings" };
 
         public static void Run(Checks check)
         {
@@ -33,7 +34,8 @@ namespace NavLink.Tests
                 }
                 check.That(bare.Count == 0, "uint where an enum belongs: " + string.Join(", ", bare));
                 check.That(typeof(MeshFlags).IsDefined(typeof(FlagsAttribute), false) && typeof(StatusCode).IsDefined(typeof(FlagsAttribute), false) &&
-                           typeof(PluginKinds).IsDefined(typeof(FlagsAttribute), false) && !typeof(LinkKind).IsDefined(typeof(FlagsAttribute), false),
+                           typeof(PluginKinds).IsDefined(typeof(FlagsAttribute), false) && !typeof(LinkKind).IsDefined(typeof(FlagsAttribute), false) &&
+                           typeof(BuildWarnings).IsDefined(typeof(FlagsAttribute), false) && !typeof(UpAxis).IsDefined(typeof(FlagsAttribute), false),
                            "bit sets are [Flags], kinds are not");
             });
 

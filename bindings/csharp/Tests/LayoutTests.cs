@@ -29,7 +29,8 @@ namespace NavLink.Tests
         private static readonly Dictionary<Type, string> ConstantPrefixes = new Dictionary<Type, string>
         {
             {typeof(HeaderVersion), "NL_VERSION_"}, {typeof(StatusCode), "NL_STATUS_"}, {typeof(Limits), "NL_"},
-            {typeof(LogLevel), "NL_LOG_"}, {typeof(MeshFlags), "NL_MESH_"}, {typeof(LinkKind), "NL_LINK_"},
+            {typeof(LogLevel), "NL_LOG_"}, {typeof(MeshFlags), "NL_MESH_"}, {typeof(UpAxis), "NL_UP_AXIS_"},
+            {typeof(BuildWarnings), "NL_BUILD_WARNING_"}, {typeof(LinkKind), "NL_LINK_"},
             {typeof(PathOutcome), "NL_PATH_"}, {typeof(AgentState), "NL_AGENT_"}, {typeof(AgentReason), "NL_AGENT_REASON_"},
             {typeof(TrajectoryKind), "NL_TRAJECTORY_"}, {typeof(AgentEventKind), "NL_AGENT_EVENT_"}, {typeof(PluginKinds), "NL_PLUGIN_"},
             {typeof(PluginAbi), "NL_PLUGIN_ABI_"},

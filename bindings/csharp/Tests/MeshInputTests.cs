@@ -7,8 +7,8 @@ namespace NavLink.Tests
 {
     // What a navmesh build takes from the level (tests/abi/navmesh_build_test.c's winding, mesh_roles,
     // mesh_areas and build_progress, with their geometry): the winding of a mesh's triangles, obstacles and
-    // meshes left out of builds, each mesh's area in the polygons built over it; and a build's progress and
-    // cancel.
+    // meshes left out of builds, each mesh's area in the polygons built over it, a mesh's units; and a
+    // build's progress and cancel.
     internal static class MeshInputTests
     {
         // A horizontal quad's corners, x in [x0, x1], z in [z0, z1] at height y; FrontUp is counter-clockwise
@@ -33,6 +33,12 @@ namespace NavLink.Tests
         private static bool WalkableAt(World world, NavmeshId navmesh, float x, float y, float z)
         {
             return PolygonAt(world, navmesh, x, y, z).HasValue;
+        }
+
+        // Scaled in floats: 500 x 0.01 is 5 to within rounding.
+        private static bool Near(Vec3 a, Vec3 b)
+        {
+            return Math.Abs(a.X - b.X) < 1e-4f && Math.Abs(a.Y - b.Y) < 1e-4f && Math.Abs(a.Z - b.Z) < 1e-4f;
         }
 
         public static void Run(Checks check)
@@ -98,6 +104,32 @@ namespace NavLink.Tests
                     check.That(westPolygon.HasValue && westPolygon.Value.Area == 0, "the polygon over the west mesh has area 0");
                     check.Throws(StatusCode.InvalidArgument, "", () => AddQuad(world, 0, 0, 1, 1, 0, FrontUp, area: Limits.MeshMaxArea + 1),
                                  "an area above MeshMaxArea");
+                }
+            });
+
+            check.Run("mesh units: a level in centimetres registered in metres", () =>
+            {
+                var warnings = new List<string>();
+                var options = new WorldOptions { Log = (level, status, message) => { if (level == LogLevel.Warning) lock (warnings) warnings.Add(message); } };
+                using (var world = new World(options))
+                {
+                    // The 10 x 10 m box, 1 m thick, as an exporter in centimetres writes it.
+                    MeshId box = TestLevels.AddBox(world, -500, -100, -500, 500, 0, 500, metresPerUnit: 0.01f, upAxis: UpAxis.Y);
+                    MeshInfo info = world.GetMeshInfo(box);
+                    check.That(info.MetresPerUnit == 0.01f && info.UpAxis == UpAxis.Y, "the mesh info reports its frame: " +
+                               info.MetresPerUnit + " m per unit, " + info.UpAxis + " up");
+                    check.That(Near(info.BoundsMin, new Vec3(-5, -1, -5)) && Near(info.BoundsMax, new Vec3(5, 0, 5)),
+                               "the bounds in metres: " + info.BoundsMin + " " + info.BoundsMax);
+                    BuildWarnings said = world.GetNavmeshInfo(world.BuildNavmesh(World.DefaultAgentType())).BuildWarnings;
+                    check.That(said == BuildWarnings.None, "a level that said its frame builds without warnings: " + said);
+                    world.RemoveMesh(box);
+                    // Not said, its walls are 100 m tall for a body of 2 m. Coarse cells: read as metres it is 1 km wide.
+                    TestLevels.AddBox(world, -500, -100, -500, 500, 0, 500);
+                    NavmeshId navmesh = world.BuildNavmesh(World.DefaultAgentType(), settingsJson: "{\"cell_size\": 2.0, \"cell_height\": 0.5}");
+                    BuildWarnings unsaid = world.GetNavmeshInfo(navmesh).BuildWarnings;
+                    check.That(unsaid == BuildWarnings.Units, "a level in centimetres read as metres is warned of: " + unsaid);
+                    lock (warnings)
+                        check.That(warnings.Any(m => m.Contains("metres_per_unit")), "the log's warning names the option: " + string.Join("\n", warnings));
                 }
             });
 

@@ -69,6 +69,7 @@ namespace NavLink.Tests
                     check.Near(info.Agent.Radius, 0.6f, 1e-6f, "the navmesh remembers its agent");
                     check.That(info.TurnedOverMeshCount == 0,
                                "the level's fronts are wound counter-clockwise: " + info.TurnedOverMeshCount + " meshes turned over");
+                    check.That(info.BuildWarnings == BuildWarnings.None, "the level is in metres with y up: " + info.BuildWarnings);
                     // Three islands: the platforms (top y = 0) and the pit floor 20 m down, walkable but unreachable.
                     check.That(info.BoundsMin.X >= -12 && info.BoundsMax.X <= 12 && info.BoundsMax.Y < 0.5f &&
                                info.BoundsMin.Y > -20.1f && info.BoundsMin.Y < -19.5f,

@@ -11,9 +11,9 @@ namespace NavLink.Tests
                                                      2, 6, 7, 2, 7, 3, 0, 2, 3, 0, 3, 1, 4, 5, 7, 4, 7, 6};
 
         /// <summary>A box from (x0, y0, z0) to (x1, y1, z1): corner k takes x from bit 0, y from bit 1, z from bit 2;
-        /// transform: column-major 4x4 (null: identity).</summary>
+        /// transform: column-major 4x4 (null: identity); metresPerUnit and upAxis as World.AddMesh takes them.</summary>
         public static MeshId AddBox(World world, float x0, float y0, float z0, float x1, float y1, float z1, MeshFlags flags = MeshFlags.None,
-                                    float[] transform = null)
+                                    float[] transform = null, float metresPerUnit = 0, UpAxis upAxis = UpAxis.NotSaid)
         {
             var v = new float[24];
             for (int k = 0; k < 8; ++k)
@@ -22,7 +22,7 @@ namespace NavLink.Tests
                 v[3 * k + 1] = (k & 2) != 0 ? y1 : y0;
                 v[3 * k + 2] = (k & 4) != 0 ? z1 : z0;
             }
-            return world.AddMesh(v, BoxIndices, flags, transform);
+            return world.AddMesh(v, BoxIndices, flags, transform, metresPerUnit: metresPerUnit, upAxis: upAxis);
         }
 
         /// <summary>

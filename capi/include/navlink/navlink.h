@@ -322,7 +322,27 @@ typedef struct nl_mesh_def {
                                         meshes' floors meet within a cell, the higher area wins
                                         (Recast's rule). Added in 0.3. */
     uint32_t reserved;             /**< Must be 0. */
+    float metres_per_unit;         /**< The length of one unit of `vertices` in metres: 0.01 for
+                                        centimetres (Unreal's, many exporters'), 0.0254 for inches,
+                                        1 for metres; 1e-6..1e6. 0 (the default) means metres, not
+                                        said: a navmesh build then warns when the level's size
+                                        against its agent's suggests other units
+                                        (NL_BUILD_WARNING_UNITS); 1 says metres and silences it.
+                                        The vertices are scaled when registered, before `transform`:
+                                        the transform, as every other position and length in this
+                                        API, is in metres. Added in 0.3. */
+    uint32_t up_axis;              /**< NL_UP_AXIS_*: which axis of `vertices` points up. Vertices
+                                        with z up (Blender's, Unreal's, 3ds Max's own frame) are
+                                        turned to NavLink's y up when registered, before `transform`:
+                                        (x, y, z) becomes (x, z, -y), a rotation, so fronts stay
+                                        fronts. Added in 0.3. */
 } nl_mesh_def;
+
+/** nl_mesh_def.up_axis. NavLink's own frame is right-handed with y up. */
+#define NL_UP_AXIS_NOT_SAID 0u /**< The default: y up, and a navmesh build warns when the level would
+                                    hold much more floor with z up (NL_BUILD_WARNING_Z_UP). */
+#define NL_UP_AXIS_Y 1u        /**< Y up, said: no such warning. */
+#define NL_UP_AXIS_Z 2u        /**< Z up: turned to y up when registered. */
 
 /** A def with no geometry, identity transform and no flags. Thread-safe; never fails. */
 NL_API nl_mesh_def nl_default_mesh_def(void);
@@ -341,7 +361,7 @@ NL_API nl_status nl_mesh_add(nl_world* world, const nl_mesh_def* def, nl_mesh_id
 
 /** Loads a Wavefront OBJ file (positions and faces; polygons are fan-triangulated; Y is up; other
  *  statements are ignored; a line ends at \n, \r\n or a lone \r) and registers it as one mesh. `path` is a borrowed NUL-terminated UTF-8
- *  path. `def` is optional (NULL = defaults): its flags, transform and user_data apply; its vertex
+ *  path. `def` is optional (NULL = defaults): its flags, transform, user_data, area, metres_per_unit and up_axis apply; its vertex
  *  and index fields must be empty.
  *  The file is a regular file or a pipe (read until its writer closes it).
  *  Returns SUCCESS, or a failure with INVALID_ARGUMENT, NOT_FOUND (no such file), IO_ERROR (a
@@ -395,6 +415,8 @@ typedef struct nl_mesh_info {
     uint64_t user_data;
     uint32_t area;                      /**< As given in nl_mesh_def (0.3). */
     uint32_t reserved;
+    float metres_per_unit;              /**< As given in nl_mesh_def (0 = not said) (0.3). */
+    uint32_t up_axis;                   /**< As given in nl_mesh_def, NL_UP_AXIS_* (0.3). */
 } nl_mesh_info;
 
 NL_DEFINE_OUTPUT_INIT(nl_mesh_info, nl_mesh_info_init)
@@ -581,8 +603,20 @@ typedef struct nl_navmesh_info {
                                             warning naming them and NL_MESH_CLOCKWISE; see
                                             nl_mesh_def's winding rule). 0 for a navmesh added from
                                             polygons or loaded from a file. Added in 0.3. */
-    uint32_t reserved;
+    uint32_t build_warnings;           /**< NL_BUILD_WARNING_* bits: what nl_navmesh_build found wrong
+                                            with its level (each also said in a warning in the log).
+                                            0 for a navmesh added from polygons or loaded from a
+                                            file. Added in 0.3. */
 } nl_navmesh_info;
+
+/** nl_navmesh_info.build_warnings: a build succeeded on a level that looks given wrong. */
+#define NL_BUILD_WARNING_CLOCKWISE 0x1u /**< Meshes look wound clockwise (turned_over_mesh_count). */
+#define NL_BUILD_WARNING_UNITS 0x2u     /**< Meshes that did not say their units (nl_mesh_def.
+                                             metres_per_unit 0) look given in other units than
+                                             metres: walls more than 25 agents tall, or the whole
+                                             level narrower than two. */
+#define NL_BUILD_WARNING_Z_UP 0x4u      /**< Meshes that did not say their up axis would hold more
+                                             than 1.5 times the floor for the agent with z up. */
 
 NL_DEFINE_OUTPUT_INIT(nl_navmesh_info, nl_navmesh_info_init)
 

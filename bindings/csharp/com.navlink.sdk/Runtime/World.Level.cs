@@ -9,10 +9,13 @@ namespace NavLink
         /// optional column-major 4x4 transform (empty: identity). flags: Movable; Clockwise for fronts wound
         /// clockwise (Godot's); Obstacle (blocks navmesh builds, never walked on) or NotInNavmesh (left out of
         /// them). area: what navmesh builds give the polygons over the mesh (0..Limits.MeshMaxArea; the Recast
-        /// builder carries 0..62), priced by PathQuery's area costs.</summary>
+        /// builder carries 0..62), priced by PathQuery's area costs. metresPerUnit: the length of one unit of
+        /// the vertices in metres (0.01 for centimetres; 0, not said: metres, and a navmesh build warns when
+        /// the level looks otherwise); upAxis: UpAxis.Z for z-up vertices (Blender's, Unreal's). Both apply
+        /// before the transform, which is in metres with y up (MeshDef.MetresPerUnit, MeshDef.UpAxis).</summary>
         public unsafe MeshId AddMesh(ReadOnlySpan<float> vertices, ReadOnlySpan<uint> indices, MeshFlags flags = MeshFlags.None,
                                      ReadOnlySpan<float> transform = default(ReadOnlySpan<float>), ulong userData = 0,
-                                     uint area = 0)
+                                     uint area = 0, float metresPerUnit = 0, UpAxis upAxis = UpAxis.NotSaid)
         {
             MeshDef def = Native.nl_default_mesh_def();
             MeshId id;
@@ -25,16 +28,16 @@ namespace NavLink
                 def.VertexCount = (uint)(vertices.Length / 3);
                 def.Indices = (IntPtr)i;
                 def.TriangleCount = (uint)(indices.Length / 3);
-                SetMeshOptions(ref def, flags, transform.IsEmpty ? IntPtr.Zero : (IntPtr)t, userData, area);
+                SetMeshOptions(ref def, flags, transform.IsEmpty ? IntPtr.Zero : (IntPtr)t, userData, area, metresPerUnit, upAxis);
                 Status.Check(Native.nl_mesh_add(w.Pointer, &def, &id));
             }
             return id;
         }
 
-        /// <summary>Loads a Wavefront OBJ file as one mesh (flags and area as for AddMesh).</summary>
+        /// <summary>Loads a Wavefront OBJ file as one mesh (flags, area, metresPerUnit and upAxis as for AddMesh).</summary>
         public unsafe MeshId AddObjFile(string path, MeshFlags flags = MeshFlags.None,
                                         ReadOnlySpan<float> transform = default(ReadOnlySpan<float>), ulong userData = 0,
-                                        uint area = 0)
+                                        uint area = 0, float metresPerUnit = 0, UpAxis upAxis = UpAxis.NotSaid)
         {
             byte[] utf8 = Utf8.EncodeZ(path);
             MeshDef def = Native.nl_default_mesh_def();
@@ -43,16 +46,17 @@ namespace NavLink
             fixed (float* t = &MemoryMarshal.GetReference(transform))
             using (var w = Enter())
             {
-                SetMeshOptions(ref def, flags, transform.IsEmpty ? IntPtr.Zero : (IntPtr)t, userData, area);
+                SetMeshOptions(ref def, flags, transform.IsEmpty ? IntPtr.Zero : (IntPtr)t, userData, area, metresPerUnit, upAxis);
                 Status.Check(Native.nl_mesh_add_obj_file(w.Pointer, p, &def, &id));
             }
             return id;
         }
 
-        /// <summary>Registers OBJ text from memory as one mesh (flags and area as for AddMesh).</summary>
+        /// <summary>Registers OBJ text from memory as one mesh (flags, area, metresPerUnit and upAxis as for
+        /// AddMesh).</summary>
         public unsafe MeshId AddObjMemory(ReadOnlySpan<byte> objText, MeshFlags flags = MeshFlags.None,
                                           ReadOnlySpan<float> transform = default(ReadOnlySpan<float>), ulong userData = 0,
-                                          uint area = 0)
+                                          uint area = 0, float metresPerUnit = 0, UpAxis upAxis = UpAxis.NotSaid)
         {
             MeshDef def = Native.nl_default_mesh_def();
             MeshId id;
@@ -60,19 +64,22 @@ namespace NavLink
             fixed (float* t = &MemoryMarshal.GetReference(transform))
             using (var w = Enter())
             {
-                SetMeshOptions(ref def, flags, transform.IsEmpty ? IntPtr.Zero : (IntPtr)t, userData, area);
+                SetMeshOptions(ref def, flags, transform.IsEmpty ? IntPtr.Zero : (IntPtr)t, userData, area, metresPerUnit, upAxis);
                 Status.Check(Native.nl_mesh_add_obj_memory(w.Pointer, p, (UIntPtr)objText.Length, &def, &id));
             }
             return id;
         }
 
         // What AddMesh, AddObjFile and AddObjMemory take beyond the geometry; transform is pinned by the caller.
-        private static void SetMeshOptions(ref MeshDef def, MeshFlags flags, IntPtr transform, ulong userData, uint area)
+        private static void SetMeshOptions(ref MeshDef def, MeshFlags flags, IntPtr transform, ulong userData, uint area,
+                                           float metresPerUnit, UpAxis upAxis)
         {
             def.Flags = flags;
             def.Transform = transform;
             def.UserData = userData;
             def.Area = area;
+            def.MetresPerUnit = metresPerUnit;
+            def.UpAxis = upAxis;
         }
 
         /// <summary>Removes a mesh (InvalidArgument for a mesh a navmesh rides: remove the navmesh first).</summary>

@@ -14,9 +14,11 @@ namespace NavLink
         /// mesh, or, with a surface (a MeshFlags.Movable mesh), from that mesh alone in its own space: the
         /// navmesh then rides it. recast: the Recast builder's settings; settingsJson is applied over them.
         /// Meshes flagged NotInNavmesh are left out, Obstacle ones only block, and each mesh's area goes to the
-        /// polygons over it. progress is told of the build on this thread (fractions 0 to 1); returning false
-        /// cancels it (NavLinkException with Cancelled, nothing added); an exception thrown by progress
-        /// cancels the build and is rethrown here.</summary>
+        /// polygons over it. A level that looks wound clockwise, given in other units than metres or with z up
+        /// (where its meshes did not say: AddMesh's metresPerUnit and upAxis) still builds: the log says why in
+        /// a warning and NavmeshInfo.BuildWarnings has a bit for each. progress is told of the build on this
+        /// thread (fractions 0 to 1); returning false cancels it (NavLinkException with Cancelled, nothing
+        /// added); an exception thrown by progress cancels the build and is rethrown here.</summary>
         public unsafe NavmeshId BuildNavmesh(AgentType agent, RecastSettings? recast = null, string settingsJson = null,
                                              string builder = null, MeshId surface = default(MeshId),
                                              ProgressHandler progress = null)

@@ -37,7 +37,26 @@ pub struct nl_mesh_def {
     pub area: u32,
     /// Must be 0.
     pub reserved: u32,
+    /// The length of one unit of `vertices` in metres: 0.01 for centimetres (Unreal's, many exporters'),
+    /// 0.0254 for inches, 1 for metres; 1e-6..1e6. 0 (the default) means metres, not said: a navmesh build
+    /// then warns when the level's size against its agent's suggests other units (`NL_BUILD_WARNING_UNITS`);
+    /// 1 says metres and silences it. The vertices are scaled when registered, before `transform`: the
+    /// transform, as every other position and length in this API, is in metres. Added in 0.3.
+    pub metres_per_unit: f32,
+    /// `NL_UP_AXIS_*`: which axis of `vertices` points up. Vertices with z up (Blender's, Unreal's, 3ds Max's
+    /// own frame) are turned to NavLink's y up when registered, before `transform`: (x, y, z) becomes
+    /// (x, z, -y), a rotation, so fronts stay fronts. Added in 0.3.
+    pub up_axis: u32,
 }
+
+// `nl_mesh_def::up_axis`. NavLink's own frame is right-handed with y up.
+/// The default: y up, and a navmesh build warns when the level would hold much more floor with z up
+/// (`NL_BUILD_WARNING_Z_UP`).
+pub const NL_UP_AXIS_NOT_SAID: u32 = 0;
+/// Y up, said: no such warning.
+pub const NL_UP_AXIS_Y: u32 = 1;
+/// Z up: turned to y up when registered.
+pub const NL_UP_AXIS_Z: u32 = 2;
 
 #[repr(C)]
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -54,6 +73,10 @@ pub struct nl_mesh_info {
     /// As given in `nl_mesh_def` (0.3).
     pub area: u32,
     pub reserved: u32,
+    /// As given in `nl_mesh_def` (0 = not said) (0.3).
+    pub metres_per_unit: f32,
+    /// As given in `nl_mesh_def`, `NL_UP_AXIS_*` (0.3).
+    pub up_axis: u32,
 }
 
 pub fn nl_mesh_info_init() -> nl_mesh_info {

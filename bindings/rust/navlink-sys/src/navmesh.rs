@@ -69,8 +69,19 @@ pub struct nl_navmesh_info {
     /// more floor for its agent than as given (the build also logs a warning naming them and
     /// `NL_MESH_CLOCKWISE`). 0 for a navmesh added from polygons or loaded from a file. Added in 0.3.
     pub turned_over_mesh_count: u32,
-    pub reserved: u32,
+    /// `NL_BUILD_WARNING_*` bits: what `nl_navmesh_build` found wrong with its level (each also said in a
+    /// warning in the log). 0 for a navmesh added from polygons or loaded from a file. Added in 0.3.
+    pub build_warnings: u32,
 }
+
+// `nl_navmesh_info::build_warnings`: a build succeeded on a level that looks given wrong.
+/// Meshes look wound clockwise (`turned_over_mesh_count`).
+pub const NL_BUILD_WARNING_CLOCKWISE: u32 = 0x1;
+/// Meshes that did not say their units (`nl_mesh_def::metres_per_unit` 0) look given in other units than
+/// metres: walls more than 25 agents tall, or the whole level narrower than two.
+pub const NL_BUILD_WARNING_UNITS: u32 = 0x2;
+/// Meshes that did not say their up axis would hold more than 1.5 times the floor for the agent with z up.
+pub const NL_BUILD_WARNING_Z_UP: u32 = 0x4;
 
 pub fn nl_navmesh_info_init() -> nl_navmesh_info {
     unsafe { output_init() }

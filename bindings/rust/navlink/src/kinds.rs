@@ -132,6 +132,27 @@ c_enum! {
 }
 
 c_enum! {
+    /// Which axis of a mesh's vertices points up (`MeshOptions::up_axis`, `MeshInfo::up_axis`). NavLink's own
+    /// frame is right-handed with y up.
+    pub enum UpAxis {
+        /// The default: y up, and a navmesh build warns when the level would hold much more floor with z up
+        /// (`BuildWarnings::Z_UP`).
+        NotSaid = sys::NL_UP_AXIS_NOT_SAID,
+        /// Y up, said: no such warning.
+        Y = sys::NL_UP_AXIS_Y,
+        /// Z up (Blender's, Unreal's, 3ds Max's own frame): turned to y up when registered, (x, y, z) becoming
+        /// (x, z, -y), a rotation, so fronts stay fronts.
+        Z = sys::NL_UP_AXIS_Z,
+    }
+}
+
+impl Default for UpAxis {
+    fn default() -> Self {
+        UpAxis::NotSaid
+    }
+}
+
+c_enum! {
     /// How a link is being taken (`AgentTrajectory::kind`); `World::agent_trajectory` gives `None`
     /// rather than the library's "none".
     pub enum TrajectoryKind {

@@ -1,5 +1,6 @@
 //! Level geometry and batch ray queries.
 use crate::error::{check, Error, Result};
+use crate::kinds::UpAxis;
 use crate::list::two_call;
 use crate::types::{MeshId, MeshInfo, Ray, RayHit, Segment};
 use crate::world::World;
@@ -65,6 +66,15 @@ pub struct MeshOptions {
     /// The area navmesh builds give the polygons over this mesh (0..=`MESH_MAX_AREA`; the Recast builder
     /// carries 0..=62), priced by a path query's area costs. `mesh_info` reports it.
     pub area: u32,
+    /// The length of one unit of the vertices in metres: 0.01 for centimetres (Unreal's, many exporters'),
+    /// 0.0254 for inches, 1 for metres; 1e-6..=1e6. 0 (the default) means metres, not said: a navmesh build
+    /// then warns when the level looks given in other units (`BuildWarnings::UNITS`); 1 says metres and
+    /// silences it. Applied before `transform`, which is in metres as every other position and length.
+    pub metres_per_unit: f32,
+    /// Which axis of the vertices points up: `UpAxis::Z` turns z-up vertices to NavLink's y up, before
+    /// `transform`. `UpAxis::NotSaid` (the default) reads them as y up and a navmesh build warns when the
+    /// level looks z up (`BuildWarnings::Z_UP`).
+    pub up_axis: UpAxis,
 }
 
 impl MeshOptions {
@@ -74,6 +84,8 @@ impl MeshOptions {
         def.transform = self.transform.as_ref().map_or(ptr::null(), |t| t.as_ptr());
         def.user_data = self.user_data;
         def.area = self.area;
+        def.metres_per_unit = self.metres_per_unit;
+        def.up_axis = self.up_axis.to_raw();
         def
     }
 }

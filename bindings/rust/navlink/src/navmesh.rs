@@ -6,12 +6,59 @@ use crate::list::two_call;
 use crate::types::{AgentType, BoundaryEdge, MeshId, NavPoint, NavPolygon, NavmeshId, NavmeshInfo, RecastSettings};
 use crate::world::World;
 use navlink_sys as sys;
+use std::ops::{BitOr, BitOrAssign};
 use std::os::raw::c_void;
 use std::ptr;
 
+/// What a navmesh build found wrong with its level (`NavmeshInfo::build_warnings`,
+/// `nl_navmesh_info.build_warnings`), each also said in a warning in the log; the build still succeeded.
+/// Bits this binding has no name for (a newer library's) are kept as they are.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct BuildWarnings(u32);
+
+impl BuildWarnings {
+    pub const NONE: BuildWarnings = BuildWarnings(0);
+    /// Meshes look wound clockwise (`NavmeshInfo::turned_over_mesh_count`; `MeshFlags::CLOCKWISE`).
+    pub const CLOCKWISE: BuildWarnings = BuildWarnings(sys::NL_BUILD_WARNING_CLOCKWISE);
+    /// Meshes that did not say their units (`MeshOptions::metres_per_unit` 0) look given in other units than
+    /// metres: walls more than 25 agents tall, or the whole level narrower than two.
+    pub const UNITS: BuildWarnings = BuildWarnings(sys::NL_BUILD_WARNING_UNITS);
+    /// Meshes that did not say their up axis (`MeshOptions::up_axis`) would hold more than 1.5 times the
+    /// floor for the agent with z up.
+    pub const Z_UP: BuildWarnings = BuildWarnings(sys::NL_BUILD_WARNING_Z_UP);
+
+    pub const fn from_raw(raw: u32) -> Self {
+        BuildWarnings(raw)
+    }
+
+    pub const fn to_raw(self) -> u32 {
+        self.0
+    }
+
+    /// Every bit of `other` is set.
+    pub const fn contains(self, other: BuildWarnings) -> bool {
+        self.0 & other.0 == other.0
+    }
+}
+
+impl BitOr for BuildWarnings {
+    type Output = BuildWarnings;
+    fn bitor(self, other: BuildWarnings) -> BuildWarnings {
+        BuildWarnings(self.0 | other.0)
+    }
+}
+
+impl BitOrAssign for BuildWarnings {
+    fn bitor_assign(&mut self, other: BuildWarnings) {
+        self.0 |= other.0;
+    }
+}
+
 /// How to build a navmesh from the registered meshes: every static one, or one movable mesh (`surface`);
 /// meshes flagged `NOT_IN_NAVMESH` are left out, `OBSTACLE` ones only block, and each mesh's area goes to
-/// the polygons over it.
+/// the polygons over it. A level that looks wound clockwise, given in other units than metres or with z up
+/// (where its meshes did not say: `MeshOptions::metres_per_unit`, `up_axis`) still builds: the log says why
+/// in a warning, and `NavmeshInfo::build_warnings` has a bit for each.
 #[derive(Clone, Copy, Debug)]
 pub struct NavmeshBuild<'a> {
     pub agent: AgentType,

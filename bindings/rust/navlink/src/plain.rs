@@ -1,9 +1,10 @@
 //! Plain Rust structs over the header's structs that carry `size` or `reserved`: the same fields without
-//! them, `u8` (and `uint32_t` yes/no) flags as `bool`, kinds as enums, flag words as `MeshFlags`, nested
-//! such structs as their plain structs. `From<c struct>` reads one; `to_c` writes one over a C value that
-//! already has its `size` (and the header's defaults for fields not mirrored).
-use crate::kinds::{AgentEventKind, AgentReason, AgentState, LinkKind, PathOutcome, RecastPartition, TrajectoryKind};
+//! them, `u8` (and `uint32_t` yes/no) flags as `bool`, kinds as enums, flag words as `MeshFlags` or
+//! `BuildWarnings`, nested such structs as their plain structs. `From<c struct>` reads one; `to_c` writes
+//! one over a C value that already has its `size` (and the header's defaults for fields not mirrored).
+use crate::kinds::{AgentEventKind, AgentReason, AgentState, LinkKind, PathOutcome, RecastPartition, TrajectoryKind, UpAxis};
 use crate::level::MeshFlags;
+use crate::navmesh::BuildWarnings;
 
 /// A C field's value as its Rust field's type.
 pub(crate) trait FromC<C> {
@@ -64,6 +65,18 @@ impl IntoC<u32> for MeshFlags {
     }
 }
 
+impl FromC<u32> for BuildWarnings {
+    fn from_c(c: u32) -> BuildWarnings {
+        BuildWarnings::from_raw(c)
+    }
+}
+
+impl IntoC<u32> for BuildWarnings {
+    fn into_c(self) -> u32 {
+        self.to_raw()
+    }
+}
+
 macro_rules! enum_field {
     ($($enum:ty),*) => {$(
         impl FromC<u32> for $enum {
@@ -78,7 +91,7 @@ macro_rules! enum_field {
         }
     )*};
 }
-enum_field!(AgentEventKind, AgentReason, AgentState, LinkKind, PathOutcome, RecastPartition, TrajectoryKind);
+enum_field!(AgentEventKind, AgentReason, AgentState, LinkKind, PathOutcome, RecastPartition, TrajectoryKind, UpAxis);
 
 /// A plain struct mirroring some fields of a C struct, with `From<C>`, `to_c` and a `Default` taken
 /// from the C side's default value (`$default`). It is also a field type of other plain structs

@@ -1,7 +1,8 @@
 //! navlink-sys's plain-data structs (ids, rays, bodies: no `size`, no `reserved`) under Rust names, plain
 //! Rust structs for the ones that carry `size` or `reserved`, and the header's constants grouped by meaning.
-use crate::kinds::{AgentEventKind, AgentReason, AgentState, LinkKind, PathOutcome, RecastPartition, TrajectoryKind};
+use crate::kinds::{AgentEventKind, AgentReason, AgentState, LinkKind, PathOutcome, RecastPartition, TrajectoryKind, UpAxis};
 use crate::level::MeshFlags;
+use crate::navmesh::BuildWarnings;
 use crate::plain::plain_struct;
 use navlink_sys as sys;
 
@@ -205,6 +206,10 @@ plain_struct! {
         user_data: u64,
         /// As given in the mesh's options (`MeshOptions::area`).
         area: u32,
+        /// As given in the mesh's options (`MeshOptions::metres_per_unit`; 0 = not said).
+        metres_per_unit: f32,
+        /// As given in the mesh's options (`MeshOptions::up_axis`).
+        up_axis: UpAxis,
     }
 }
 
@@ -242,6 +247,9 @@ plain_struct! {
         /// much more floor for its agent than as given (the build also logs a warning naming them and
         /// `MeshFlags::CLOCKWISE`). 0 for a navmesh added from polygons or loaded from a file.
         turned_over_mesh_count: u32,
+        /// What `World::build_navmesh` found wrong with its level (each also said in a warning in the log).
+        /// `BuildWarnings::NONE` for a navmesh added from polygons or loaded from a file.
+        build_warnings: BuildWarnings,
     }
 }
 
@@ -493,8 +501,11 @@ mod tests {
         let mut info = sys::nl_mesh_info_init();
         info.flags = sys::NL_MESH_MOVABLE | sys::NL_MESH_OBSTACLE | 0x100;
         info.area = 3;
+        info.metres_per_unit = 0.01;
+        info.up_axis = sys::NL_UP_AXIS_Z;
         let plain = MeshInfo::from(info);
         assert!(plain.flags.contains(MeshFlags::MOVABLE | MeshFlags::OBSTACLE) && plain.flags.to_raw() & 0x100 != 0);
+        assert_eq!((plain.metres_per_unit, plain.up_axis), (0.01, UpAxis::Z));
         assert_eq!(plain.to_c(sys::nl_mesh_info_init()), info);
 
         let mut file = sys::nl_navmesh_file_info::default();

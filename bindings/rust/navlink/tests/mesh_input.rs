@@ -1,13 +1,13 @@
 //! What a navmesh build takes from the level (tests/abi/navmesh_build_test.c's winding, mesh_roles,
 //! mesh_areas and build_progress, with their geometry): the winding of a mesh's triangles, obstacles and
-//! meshes left out of builds, each mesh's area in the polygons built over it; and a build's progress and
-//! cancel.
+//! meshes left out of builds, each mesh's area in the polygons built over it, a mesh's units; and a build's
+//! progress and cancel.
 mod common;
 
 use common::*;
 use navlink::{
-    default_agent_type, status, ErrorKind, MeshFlags, MeshId, MeshOptions, NavPolygon, NavmeshBuild, NavmeshId, Ray,
-    World, MESH_MAX_AREA,
+    default_agent_type, status, BuildWarnings, ErrorKind, MeshFlags, MeshId, MeshOptions, NavPolygon, NavmeshBuild, NavmeshId,
+    Ray, UpAxis, World, MESH_MAX_AREA,
 };
 
 /// A horizontal quad's triangles: counter-clockwise seen from above (its front faces up), and the same
@@ -94,6 +94,29 @@ fn a_mesh_area_is_carried_into_the_built_polygons() {
 
     let too_high = MeshOptions { area: MESH_MAX_AREA + 1, ..Default::default() };
     assert_fails(add_quad(&world, [0.0, 0.0, 1.0, 1.0], 0.0, &FRONT_UP, &too_high), status::INVALID_ARGUMENT, "area");
+}
+
+#[test]
+fn a_level_in_centimetres_is_registered_in_metres() {
+    // The 10 x 10 m box, 1 m thick, as an exporter in centimetres writes it.
+    let (lo, hi) = ([-500.0, -100.0, -500.0], [500.0, 0.0, 500.0]);
+    let (world, logged) = world_keeping_log();
+    let centimetres = MeshOptions { metres_per_unit: 0.01, up_axis: UpAxis::Y, ..Default::default() };
+    let mesh = add_box_with(&world, lo, hi, &centimetres);
+    let info = world.mesh_info(mesh).unwrap();
+    assert_eq!((info.metres_per_unit, info.up_axis), (0.01, UpAxis::Y), "the mesh info reports its frame");
+    let near = |a: [f32; 3], b: [f32; 3]| a.iter().zip(b).all(|(a, b)| (a - b).abs() < 1e-4);
+    assert!(near(info.bounds_min, [-5.0, -1.0, -5.0]) && near(info.bounds_max, [5.0, 0.0, 5.0]), "the bounds in metres: {:?}", info);
+    assert_eq!(world.navmesh_info(build(&world)).unwrap().build_warnings, BuildWarnings::NONE);
+    world.remove_mesh(mesh).unwrap();
+
+    // Not said, its walls are 100 m tall for a body of 2 m. Coarse cells: read as metres it is 1 km wide.
+    add_box(&world, lo, hi);
+    let coarse = NavmeshBuild { settings_json: Some("{\"cell_size\": 2.0, \"cell_height\": 0.5}"), ..NavmeshBuild::new(default_agent_type()) };
+    let navmesh = world.build_navmesh(&coarse).unwrap();
+    assert_eq!(world.navmesh_info(navmesh).unwrap().build_warnings, BuildWarnings::UNITS);
+    let logged = logged.lock().unwrap();
+    assert!(logged.iter().any(|m| m.contains("metres_per_unit")), "the log's warning names the option: {:?}", logged);
 }
 
 #[test]

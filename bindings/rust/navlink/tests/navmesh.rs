@@ -4,7 +4,7 @@ mod common;
 
 use common::*;
 use navlink::{
-    default_agent_type, default_link_def, default_link_settings, default_recast_settings, status, AgentType, Link, LinkDef,
+    default_agent_type, default_link_def, default_link_settings, default_recast_settings, status, AgentType, BuildWarnings, Link, LinkDef,
     LinkDefExt, LinkExt, LinkSettings, MeshFlags, MeshId, MeshOptions, NavmeshBuild, NavmeshId, NavmeshInput, PathOutcome, PathQuery, World,
     NO_POLYGON,
 };
@@ -22,6 +22,7 @@ fn navmesh_from_the_level() {
     assert!(info.polygon_count >= 2 && info.boundary_edge_count >= 8, "{:?}", info);
     assert!((info.agent.radius - 0.6).abs() < 1e-6);
     assert_eq!(info.turned_over_mesh_count, 0, "the level's fronts are wound counter-clockwise");
+    assert_eq!(info.build_warnings, BuildWarnings::NONE, "the level is in metres with y up");
     // Three islands: the platforms (top y = 0) and the pit floor 20 m down, walkable but unreachable.
     assert!(info.bounds_min[0] >= -12.0 && info.bounds_max[0] <= 12.0 && info.bounds_max[1] < 0.5);
     assert!(info.bounds_min[1] > -20.1 && info.bounds_min[1] < -19.5, "{:?}", info.bounds_min);

@@ -84,6 +84,35 @@ namespace NavLink
         NotInNavmesh = 0x00000008u,
     }
 
+    /// <summary>nl_mesh_def.up_axis (World.AddMesh's upAxis, MeshInfo.UpAxis). NavLink's own frame is
+    /// right-handed with y up.</summary>
+    public enum UpAxis : uint
+    {
+        /// <summary>The default: y up, and a navmesh build warns when the level would hold much more floor with z
+        /// up (BuildWarnings.ZUp).</summary>
+        NotSaid = 0u,
+        /// <summary>Y up, said: no such warning.</summary>
+        Y = 1u,
+        /// <summary>Z up: turned to y up when registered.</summary>
+        Z = 2u,
+    }
+
+    /// <summary>nl_navmesh_info.build_warnings (NavmeshInfo.BuildWarnings): a build succeeded on a level that
+    /// looks given wrong.</summary>
+    [Flags]
+    public enum BuildWarnings : uint
+    {
+        None = 0u,
+        /// <summary>Meshes look wound clockwise (NavmeshInfo.TurnedOverMeshCount).</summary>
+        Clockwise = 0x1u,
+        /// <summary>Meshes that did not say their units (MetresPerUnit 0) look given in other units than metres:
+        /// walls more than 25 agents tall, or the whole level narrower than two.</summary>
+        Units = 0x2u,
+        /// <summary>Meshes that did not say their up axis would hold more than 1.5 times the floor for the agent
+        /// with z up.</summary>
+        ZUp = 0x4u,
+    }
+
     /// <summary>A link's kind (Link.Kind, LinkDef.Kind), and how a path goes on from a point
     /// (PathPoint.Segment: Walk, or the kind of the link taken). Plugins' kinds are FirstPluginKind and up:
     /// cast them, (LinkKind)(LinkKind.FirstPluginKind + n).</summary>

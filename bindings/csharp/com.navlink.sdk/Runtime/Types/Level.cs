@@ -21,6 +21,16 @@ namespace NavLink
         public uint Area;
         /// <summary>Must be 0.</summary>
         public uint Reserved;
+        /// <summary>The length of one unit of Vertices in metres: 0.01 for centimetres (Unreal's, many exporters'),
+        /// 0.0254 for inches, 1 for metres; 1e-6..1e6. 0 (the default) means metres, not said: a navmesh build
+        /// then warns when the level's size against its agent's suggests other units (BuildWarnings.Units); 1
+        /// says metres and silences it. The vertices are scaled when registered, before Transform, which is in
+        /// metres as every other position and length. Added in 0.3.</summary>
+        public float MetresPerUnit;
+        /// <summary>Which axis of Vertices points up. Z-up vertices (Blender's, Unreal's, 3ds Max's own frame) are
+        /// turned to NavLink's y up when registered, before Transform: (x, y, z) becomes (x, z, -y), a rotation,
+        /// so fronts stay fronts. Added in 0.3.</summary>
+        public UpAxis UpAxis;
     }
 
     /// <summary>nl_mesh_info. Get one from Native.nl_mesh_info_init() (Size set) before asking.</summary>
@@ -39,6 +49,10 @@ namespace NavLink
         /// <summary>As given in the MeshDef (0.3).</summary>
         public uint Area;
         public uint Reserved;
+        /// <summary>As given in the MeshDef (0 = not said) (0.3).</summary>
+        public float MetresPerUnit;
+        /// <summary>As given in the MeshDef (0.3).</summary>
+        public UpAxis UpAxis;
     }
 
     /// <summary>nl_ray.</summary>

@@ -60,7 +60,9 @@ namespace NavLink
         /// much more floor for its agent than as given (the build also logs a warning naming them and
         /// MeshFlags.Clockwise). 0 for a navmesh added from polygons or loaded from a file. Added in 0.3.</summary>
         public uint TurnedOverMeshCount;
-        public uint Reserved;
+        /// <summary>What World.BuildNavmesh found wrong with its level (each also said in a warning in the log). 0
+        /// for a navmesh added from polygons or loaded from a file. Added in 0.3.</summary>
+        public BuildWarnings BuildWarnings;
     }
 
     /// <summary>nl_nav_polygon. May grow: Size set by Native.nl_nav_polygon_init() (World.GetPolygon sets it).</summary>
