@@ -112,6 +112,42 @@ PATH_GOAL_OFF_NAVMESH = PathOutcome.GOAL_OFF_NAVMESH
 PATH_CANCELLED = PathOutcome.CANCELLED
 PATH_FAILED = PathOutcome.FAILED
 PATH_WAIT_FOREVER = 0xFFFFFFFF
+
+
+class PathShortfallReason(enum.IntEnum):
+    """Why a path falls short of its goal (nl_path_shortfall.reason); equal to the PATH_SHORTFALL_* constants."""
+    NONE = 0  # it reaches the goal, or an end is off the navmesh (the outcome says so)
+    OUT_OF_NODES = 1  # max_nodes stopped the search
+    BODY_TOO_WIDE = 2  # a body of the navmesh's radius would get there: passages are too narrow for this one
+    AREAS_EXCLUDED = 3  # areas the request keeps the body out of stand in the way
+    LINK_BEYOND_BODY = 4  # a link would get there, and the body cannot take it (limit, needed, has, link)
+    NO_LINKS = 5  # the goal is on another island of the navmesh, and the navmesh has no links
+    NOT_CONNECTED = 6  # no passage or link leads there, whatever the body
+
+
+class LinkLimit(enum.IntEnum):
+    """What a link asks that the body lacks (nl_path_shortfall.limit); equal to the LINK_LIMIT_* constants."""
+    NONE = 0
+    JUMP_DISTANCE = 1  # the gap, against max_jump_distance
+    JUMP_HEIGHT = 2  # the rise, against max_jump_height
+    DROP_HEIGHT = 3  # the drop, against max_drop_height
+    WIDTH = 4  # the body's diameter, against the link's clearance
+    ABILITIES = 5  # ability bits the body lacks (missing_abilities)
+
+
+PATH_SHORTFALL_NONE = PathShortfallReason.NONE
+PATH_SHORTFALL_OUT_OF_NODES = PathShortfallReason.OUT_OF_NODES
+PATH_SHORTFALL_BODY_TOO_WIDE = PathShortfallReason.BODY_TOO_WIDE
+PATH_SHORTFALL_AREAS_EXCLUDED = PathShortfallReason.AREAS_EXCLUDED
+PATH_SHORTFALL_LINK_BEYOND_BODY = PathShortfallReason.LINK_BEYOND_BODY
+PATH_SHORTFALL_NO_LINKS = PathShortfallReason.NO_LINKS
+PATH_SHORTFALL_NOT_CONNECTED = PathShortfallReason.NOT_CONNECTED
+LINK_LIMIT_NONE = LinkLimit.NONE
+LINK_LIMIT_JUMP_DISTANCE = LinkLimit.JUMP_DISTANCE
+LINK_LIMIT_JUMP_HEIGHT = LinkLimit.JUMP_HEIGHT
+LINK_LIMIT_DROP_HEIGHT = LinkLimit.DROP_HEIGHT
+LINK_LIMIT_WIDTH = LinkLimit.WIDTH
+LINK_LIMIT_ABILITIES = LinkLimit.ABILITIES
 (AGENT_IDLE, AGENT_WALKING, AGENT_JUMPING, AGENT_FALLING, AGENT_TRAVERSING, AGENT_WAITING, AGENT_ARRIVED,
  AGENT_FAILED) = range(8)
 (AGENT_REASON_NONE, AGENT_REASON_DESTINATION_SET, AGENT_REASON_LINK_GONE, AGENT_REASON_WORLD_CHANGED,
@@ -140,6 +176,14 @@ def _outcome(value: int) -> Union[PathOutcome, int]:
     """A PathOutcome, or the number itself for an outcome newer than this module."""
     try:
         return PathOutcome(value)
+    except ValueError:
+        return value
+
+
+def _enum_or_int(kind: Any, value: int) -> Any:
+    """A member of the IntEnum `kind`, or the number itself for a value newer than this module."""
+    try:
+        return kind(value)
     except ValueError:
         return value
 
@@ -379,6 +423,14 @@ class PathResultInfo(_Growable):
                 ("reserved", c_uint8 * 3), ("length", c_float), ("cost", c_float), ("start", Vec3), ("goal", Vec3)]
 
 
+class PathShortfallInfo(_Growable):
+    """nl_path_shortfall (PathShortfall is the Python object, with `text` as a str): why a request's path falls
+    short of its goal (nl_path_explain). `text` is a NUL-terminated UTF-8 sentence (ctypes reads it as bytes)."""
+    _fields_ = [("size", c_uint32), ("reason", c_uint32), ("limit", c_uint32), ("needed", c_float), ("has", c_float),
+                ("reversed", c_uint32), ("missing_abilities", c_uint64), ("link", LinkId), ("link_start", Vec3),
+                ("text", ctypes.c_char * 256)]
+
+
 class PathBudget(Structure):
     """nl_path_budget: how much nl_path_process may do (default_path_budget(): no limits)."""
     _fields_ = [("size", c_uint32), ("max_requests", c_uint32), ("max_milliseconds", c_double),
@@ -543,7 +595,7 @@ C_STRUCTS = {
     "nl_link_settings": LinkSettings, "nl_link_generation_report": LinkGenerationReport,
     "nl_navmesh_load_def": NavmeshLoadDef, "nl_navmesh_file_info": NavmeshFileInfo, "nl_path_ticket": PathTicket,
     "nl_agent_capabilities": AgentCapabilities, "nl_path_request_def": PathRequestDef, "nl_path_point": PathPoint,
-    "nl_path_result": PathResultInfo, "nl_path_budget": PathBudget, "nl_path_finished": PathFinished,
+    "nl_path_result": PathResultInfo, "nl_path_shortfall": PathShortfallInfo, "nl_path_budget": PathBudget, "nl_path_finished": PathFinished,
     "nl_path_queue_stats": PathQueueStats, "nl_query_filter": QueryFilterDef, "nl_navmesh_ray": NavmeshRay,
     "nl_navmesh_raycast_hit": NavmeshRaycastHit, "nl_random_points_def": RandomPointsDef, "nl_agent_id": AgentId, "nl_agent_def": AgentDef,
     "nl_agent_info": AgentInfo, "nl_agent_trajectory": AgentTrajectory, "nl_agent_event": AgentEvent,
@@ -623,6 +675,7 @@ _PROTOTYPES = {
     "nl_default_path_request_def": (PathRequestDef, []),
     "nl_path_find": (c_uint32, [_w, POINTER(PathRequestDef), POINTER(PathResultInfo), POINTER(PathPoint), c_uint32,
                                 _u32p]),
+    "nl_path_explain": (c_uint32, [_w, POINTER(PathRequestDef), POINTER(PathShortfallInfo)]),
     "nl_path_request": (c_uint32, [_w, POINTER(PathRequestDef), POINTER(PathTicket)]),
     "nl_path_poll": (c_uint32, [_w, PathTicket, _u32p]),
     "nl_path_wait": (c_uint32, [_w, PathTicket, c_uint32, _u32p]),
@@ -796,6 +849,10 @@ def nl_path_point_init() -> PathPoint:
 
 def nl_path_result_init() -> PathResultInfo:
     return PathResultInfo()
+
+
+def nl_path_shortfall_init() -> PathShortfallInfo:
+    return PathShortfallInfo()
 
 
 def nl_path_finished_init() -> PathFinished:
@@ -1257,6 +1314,31 @@ class PathResult:
     @property
     def outcome(self) -> Union[PathOutcome, int]:
         return _outcome(self.info.outcome)
+
+
+class PathShortfall:
+    """Why a request's path falls short of its goal (World.explain_path): `info` (nl_path_shortfall) read as
+    Python values. reason: a PathShortfallReason (NONE when the path reaches the goal or an end is off the
+    navmesh); limit: a LinkLimit, for LINK_BEYOND_BODY; needed, has: metres (LINK_BEYOND_BODY: what the link
+    needs and what the body can, for WIDTH the body's diameter and the link's clearance; BODY_TOO_WIDE: the
+    body's radius and the navmesh's); reversed; missing_abilities (LINK_LIMIT_ABILITIES); link (a LinkId, null
+    but for LINK_BEYOND_BODY) and link_start (where the body would take it); text: the same as a sentence
+    naming the field to change ("" for NONE)."""
+
+    def __init__(self, info: PathShortfallInfo) -> None:
+        self.info = info
+        self.reason: Union[PathShortfallReason, int] = _enum_or_int(PathShortfallReason, info.reason)
+        self.limit: Union[LinkLimit, int] = _enum_or_int(LinkLimit, info.limit)
+        self.needed: float = info.needed
+        self.has: float = info.has
+        self.reversed: bool = info.reversed != 0
+        self.missing_abilities: int = info.missing_abilities
+        self.link: LinkId = LinkId(info.link.index1, info.link.generation)
+        self.link_start: Tuple[float, ...] = tuple(info.link_start)
+        self.text: str = info.text.decode("utf-8", "replace")
+
+    def __repr__(self) -> str:
+        return "PathShortfall(%s, %r)" % (getattr(self.reason, "name", self.reason), self.text)
 
 
 class PathRequest:
@@ -1956,6 +2038,17 @@ class World:
                 continue
             _check(status)
             return PathResult(info, list(points[:count.value]))
+
+    def explain_path(self, query: PathQuery) -> PathShortfall:
+        """Why the query's path falls short of its goal (nl_path_explain): plans it as find_path does and, for a
+        PATH_PARTIAL or PATH_NO_PATH outcome, plans again with one limit lifted at a time (the body's width,
+        the excluded areas, the links the body cannot take) and names the first that gets there; reason
+        PATH_SHORTFALL_NONE when the path reaches the goal or an end is off the navmesh. Up to five searches
+        on this thread: for tools, logs and debugging."""
+        d, keep = query._def()
+        info = PathShortfallInfo()
+        _check(lib.nl_path_explain(self.pointer, byref(d), byref(info)))
+        return PathShortfall(info)
 
     def request_path(self, query: PathQuery, on_finished: Optional[PathHandler] = None) -> PathRequest:
         """Queues a request and returns its PathRequest: wait for it, await it, read its result, and release

@@ -1120,6 +1120,28 @@ class PathTest(NavLinkTestCase):
             off = world.find_path(nl.PathQuery(navmesh, WEST, (0, -10, 30), jumper()))
             self.assertEqual(off.outcome, nl.PATH_GOAL_OFF_NAVMESH)
 
+    def test_why_a_path_falls_short(self):
+        with nl.World() as world:
+            # A platform 4.2 m above a floor, no stairs, no links: its top is an island of the navmesh.
+            add_box(world, (-10, -1, -10), (20, 0, 10))
+            add_box(world, (0, 0, -3), (6, 4.2, 3))
+            navmesh = world.build_navmesh()
+            down = nl.PathQuery(navmesh, (3, 4.2, 0), (15, 0, 0), walker())
+            down.accept_partial = True
+            stuck = world.explain_path(down)
+            self.assertIs(stuck.reason, nl.PathShortfallReason.NO_LINKS, stuck)
+            self.assertEqual(stuck.reason, nl.PATH_SHORTFALL_NO_LINKS)
+            self.assertTrue(stuck.limit == nl.LINK_LIMIT_NONE and stuck.link.is_null, stuck)
+            self.assertIsInstance(stuck.text, str)
+            self.assertIn("the navmesh has no links", stuck.text)
+            stroll = world.explain_path(nl.PathQuery(navmesh, (15, 0, 0), (18, 0, 0), walker()))
+            self.assertEqual((stroll.reason, stroll.text), (nl.PATH_SHORTFALL_NONE, ""))
+            d = nl.lib.nl_default_path_request_def()
+            d.navmesh = navmesh
+            status = nl.lib.nl_path_explain(world.pointer, ctypes.byref(d), None)
+            self.assertTrue(nl.failed(status) and status & nl.STATUS_INVALID_ARGUMENT, hex(status))
+            self.assertIn("out_shortfall", nl.last_error_message())
+
     def test_queued_with_path_workers_and_callbacks(self):
         with nl.World() as world:
             navmesh = gap_level_with_links(world)

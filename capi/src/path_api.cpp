@@ -2,14 +2,16 @@
 #include <chrono>
 #include <cmath>
 #include <cstddef>
+#include <cstdio>
 #include <memory>
 #include <optional>
 #include <vector>
 
 #include "entry_guard.h"
-#include "mapping.h"
 #include "host_input.h"
+#include "mapping.h"
 #include "path/path_planner.h"
+#include "path/path_shortfall.h"
 #include "world.h"
 
 using nl::ErrorCode;
@@ -151,6 +153,35 @@ NL_API nl_status nl_path_find(nl_world* world, const nl_path_request_def* def, n
         write_result(last.result, out_result, out_points, capacity, out_count);
     });
     return with_detail(status, partial);
+}
+
+static_assert(NL_PATH_SHORTFALL_NOT_CONNECTED == uint32_t(nl::PathShortfall::NotConnected) &&
+                  NL_PATH_SHORTFALL_LINK_BEYOND_BODY == uint32_t(nl::PathShortfall::LinkBeyondBody) &&
+                  NL_LINK_LIMIT_ABILITIES == uint32_t(nl::LinkLimit::Abilities) &&
+                  NL_LINK_LIMIT_WIDTH == uint32_t(nl::LinkLimit::Width),
+              "header and core disagree on path shortfalls");
+
+NL_API nl_status nl_path_explain(nl_world* world, const nl_path_request_def* def, nl_path_shortfall* out_shortfall) {
+    return guarded("nl_path_explain", world, [&] {
+        require(out_shortfall, "out_shortfall");
+        const Request request = read_request(deref(world), def);
+        nl::PathResult planned;
+        nl::plan_path(*request.graph, request.query, nullptr, planned);
+        const nl::PathShortfallReport report = nl::explain_shortfall(*request.graph, request.query, planned);
+        nl_path_shortfall out{};
+        out.size = sizeof out;
+        out.reason = uint32_t(report.why);
+        out.limit = uint32_t(report.limit);
+        out.needed = report.needed;
+        out.has = report.has;
+        out.reversed = report.reversed ? 1u : 0u;
+        out.missing_abilities = report.missing_abilities;
+        out.link = to_id<nl_link_id>(report.link);
+        for (int i = 0; i < 3; ++i) out.link_start[i] = report.link_start[i];
+        const std::string text = nl::describe(report, request.query);
+        std::snprintf(out.text, sizeof out.text, "%s", text.c_str());
+        nl::capi::write_growable(out_shortfall, out, sizeof(nl_path_shortfall), "out_shortfall");
+    });
 }
 
 NL_API nl_path_request_def nl_default_path_request_def(void) {

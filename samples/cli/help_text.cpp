@@ -143,7 +143,16 @@ const char* const kDemoHelp =
 
 const char* const kSimulateHelp =
     "usage: navlink simulate [--seed N] [--out-dir DIR] [--hz N] [--seconds N] [--oblique] [--platforms]\n"
+    "       navlink simulate LEVEL.obj --from X,Y,Z --to X,Y,Z [--agent AGENT.json] [--links LINKS.json]\n"
+    "                    [--settings GEN.json] [--clockwise] [--units U] [--up y|z] [--out-dir DIR] [--hz N]\n"
+    "                    [--seconds N] [--oblique]\n"
     "\n"
+    "With LEVEL.obj: builds its navmesh and generates its links (or loads --links), then sends one agent\n"
+    "of AGENT.json's body and capabilities (without --agent, the demo's walker, short jumper and long\n"
+    "jumper) from --from to --to, as below. --clockwise, --units and --up say how LEVEL is given, as for\n"
+    "navlink generate.\n"
+    "\n"
+    "Without LEVEL.obj:\n"
     "Generates the default level and its links as navlink demo does, then adds the demo's three bodies as\n"
     "agents at the start (nl_agent_add), sends them to the goal and steps the world N times a second\n"
     "(--hz, default 60) until every agent has arrived or failed, or --seconds (default 120) have passed.\n"

@@ -24,10 +24,10 @@ namespace nl::cli {
 namespace {
 
 // Prints the plan as text or JSON, with what was asked; the exit status: 0 when it arrives.
-int report_path(const nl_world* world, nl_navmesh_id navmesh, const samples::PlannedPath& path,
+int report_path(nl_world* world, nl_navmesh_id navmesh, const samples::PlannedPath& path,
                 const std::vector<nl_link>& links, const float from[3], const float to[3], const float search[3],
-                bool json) {
-    const AskedPath asked = asked_path(world, navmesh, path, from, to, search);
+                const nl_agent_capabilities& agent, bool json) {
+    const AskedPath asked = asked_path(world, navmesh, path, from, to, search, agent);
     if (json) std::fputs(path_json(path, links, asked).c_str(), stdout);
     else print_path_text(stdout, path, links, asked);
     return path.result.outcome == NL_PATH_COMPLETE ? 0 : 1;
@@ -84,7 +84,7 @@ int run_path(int argc, char** argv) {
         if (const auto links = args.value("links")) samples::load_links_file(world.get(), navmesh, *links);
         const samples::PlannedPath path = samples::find_path(world.get(), navmesh, from, to, agent.capabilities, search);
         const samples::NavmeshContents contents = samples::read_navmesh_contents(world.get(), navmesh);
-        return report_path(world.get(), navmesh, path, contents.links, from, to, search, args.has("json"));
+        return report_path(world.get(), navmesh, path, contents.links, from, to, search, agent.capabilities, args.has("json"));
     }
     if (const auto png = args.value("png")) samples::check_writable_file(*png);
     NavigableLevel level(args.positional()[0], args.value("navmesh"), agent.body, settings.recast_json,
@@ -94,7 +94,8 @@ int run_path(int argc, char** argv) {
     const samples::PlannedPath path =
         samples::find_path(level.world(), level.navmesh(), from, to, agent.capabilities, search);
     const samples::NavmeshContents contents = samples::read_navmesh_contents(level.world(), level.navmesh());
-    const int status = report_path(level.world(), level.navmesh(), path, contents.links, from, to, search, args.has("json"));
+    const int status = report_path(level.world(), level.navmesh(), path, contents.links, from, to, search, agent.capabilities,
+                                   args.has("json"));
 
     if (const auto png = args.value("png")) {
         PictureRequest request;

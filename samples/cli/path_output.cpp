@@ -4,6 +4,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "sample_error.h"
+
 namespace nl::cli {
 namespace {
 
@@ -23,6 +25,17 @@ void print_off_navmesh(std::FILE* out, const char* end, const char* option, cons
     else std::fprintf(out, "no navmesh within 1 km of it\n");
 }
 
+// Why a path falls short, with the link's index in LINKS.json; a navmesh without links is walked
+// alone unless --links gives them.
+void print_shortfall(std::FILE* out, const AskedPath& asked, const std::vector<nl_link>& links) {
+    if (!asked.shortfall || asked.shortfall->reason == NL_PATH_SHORTFALL_NONE) return;
+    std::fprintf(out, "  why: %s", asked.shortfall->text);
+    if (asked.shortfall->reason == NL_PATH_SHORTFALL_LINK_BEYOND_BODY)
+        std::fprintf(out, " (link #%ld; --agent sets the body's capabilities)", link_index(links, asked.shortfall->link));
+    if (asked.shortfall->reason == NL_PATH_SHORTFALL_NO_LINKS) std::fprintf(out, " (--links LINKS.json)");
+    std::fprintf(out, "\n");
+}
+
 nlohmann::json nearest_json(const std::optional<samples::NearestOnNavmesh>& nearest) {
     if (!nearest) return nullptr;
     return {{"point", xyz(nearest->point)}, {"distance", nearest->distance}};
@@ -30,9 +43,19 @@ nlohmann::json nearest_json(const std::optional<samples::NearestOnNavmesh>& near
 
 }  // namespace
 
-AskedPath asked_path(const nl_world* world, nl_navmesh_id navmesh, const samples::PlannedPath& path, const float from[3],
-                     const float to[3], const float search_half_extents[3]) {
+AskedPath asked_path(nl_world* world, nl_navmesh_id navmesh, const samples::PlannedPath& path, const float from[3],
+                     const float to[3], const float search_half_extents[3], const nl_agent_capabilities& agent) {
     AskedPath asked{};
+    nl_navmesh_info info = nl_navmesh_info_init();
+    samples::check(nl_navmesh_get_info(world, navmesh, &info), "reading the navmesh");
+    asked.body_radius = agent.radius;
+    asked.navmesh_radius = info.agent.radius;
+    if (path.result.outcome == NL_PATH_PARTIAL || path.result.outcome == NL_PATH_NO_PATH) {
+        const nl_path_request_def request = samples::path_request(navmesh, from, to, agent, search_half_extents);
+        nl_path_shortfall shortfall = nl_path_shortfall_init();
+        samples::check(nl_path_explain(world, &request, &shortfall), "explaining the path");
+        asked.shortfall = shortfall;
+    }
     for (int k = 0; k < 3; ++k) {
         asked.from[k] = from[k];
         asked.to[k] = to[k];
@@ -55,8 +78,12 @@ void print_path_text(std::FILE* out, const samples::PlannedPath& path, const std
     const nl_path_result& r = path.result;
     std::fprintf(out, "path: %s, %.2f m walked, %s (%u polygons searched)\n", samples::outcome_name(r.outcome),
                  r.length, samples::describe_links(samples::count_links(path)).c_str(), r.nodes_visited);
+    if (asked.body_radius > asked.navmesh_radius)
+        std::fprintf(out, "  the body (radius %.2f m) is wider than the navmesh's (%.2f m): it keeps %.2f m more from walls\n",
+                     asked.body_radius, asked.navmesh_radius, asked.body_radius - asked.navmesh_radius);
     if (r.outcome == NL_PATH_START_OFF_NAVMESH) print_off_navmesh(out, "start", "--from", asked.from, asked.nearest_start);
     if (r.outcome == NL_PATH_GOAL_OFF_NAVMESH) print_off_navmesh(out, "goal", "--to", asked.to, asked.nearest_goal);
+    print_shortfall(out, asked, links);
     if (path.points.empty()) return;
     const bool arrives = r.outcome == NL_PATH_COMPLETE;
     std::fprintf(out, "  from (%.2f, %.2f, %.2f) to (%.2f, %.2f, %.2f) on the navmesh\n", r.start[0], r.start[1],
@@ -91,6 +118,10 @@ std::string path_json(const samples::PlannedPath& path, const std::vector<nl_lin
     if (!path.points.empty()) out["ends_from_goal"] = distance(path.points.back().position, asked.to);
     if (r.outcome == NL_PATH_START_OFF_NAVMESH) out["nearest_start"] = nearest_json(asked.nearest_start);
     if (r.outcome == NL_PATH_GOAL_OFF_NAVMESH) out["nearest_goal"] = nearest_json(asked.nearest_goal);
+    if (asked.shortfall && asked.shortfall->reason != NL_PATH_SHORTFALL_NONE) {
+        out["why"] = asked.shortfall->text;
+        if (asked.shortfall->reason == NL_PATH_SHORTFALL_LINK_BEYOND_BODY) out["why_link"] = link_index(links, asked.shortfall->link);
+    }
     out["length"] = r.length;  // walked, along the surface
     float straight = 0.0f;
     for (const samples::PathSegment& segment : samples::path_segments(path)) straight += segment.length;

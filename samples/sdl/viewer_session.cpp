@@ -163,16 +163,20 @@ void ViewerSession::for_selected(Visit visit) {
         if (all_agents_ || i == current_) visit(i);
 }
 
-void ViewerSession::set_start(const Point& start) {
+bool ViewerSession::set_start(const Point& start) {
     start_ = start;
-    for_selected([&](size_t i) { crowd_->teleport(i, start); });
+    bool all = true;
+    for_selected([&](size_t i) { all = crowd_->teleport(i, start) && all; });
     request_paths();
+    return all;
 }
 
-void ViewerSession::set_destination(const Point& destination) {
+bool ViewerSession::set_destination(const Point& destination) {
     destination_ = destination;
-    for_selected([&](size_t i) { crowd_->send(i, destination); });
+    bool all = true;
+    for_selected([&](size_t i) { all = crowd_->send(i, destination) && all; });
     request_paths();
+    return all;
 }
 
 void ViewerSession::read_islands() {

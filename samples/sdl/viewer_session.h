@@ -50,8 +50,9 @@ public:
         uint32_t polygon;
     };
     std::optional<Picked> pick(SDL_FPoint pixel, const ViewSettings& view) const;
-    void set_start(const Point& start);
-    void set_destination(const Point& destination);
+    // Each returns false when an agent could not be placed or sent there (said on stdout).
+    bool set_start(const Point& start);
+    bool set_destination(const Point& destination);
     void select_agent(size_t index);
     void toggle_all_agents();
 

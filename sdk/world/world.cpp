@@ -75,7 +75,33 @@ Handle World::add_agent(AgentDef def) {
             if (on != Handle{}) def.navmesh = on;
         }
     }
-    return agents_.add(navmeshes_, def);
+    const Handle agent = agents_.add(navmeshes_, def);
+    warn_if_wider_than_navmesh(def);
+    return agent;
+}
+
+void World::warn_if_wider_than_navmesh(const AgentDef& def) {
+    float navmesh_radius = 0.0f;
+    try {
+        const auto navmesh = navmeshes_.navmesh(def.navmesh);
+        navmesh_radius = navmesh->agent().radius;
+    } catch (const Error& e) {
+        if (e.code() != ErrorCode::InvalidHandle) throw;
+        return;  // removed since the agent was added: nothing to say of it
+    }
+    const float radius = def.capabilities.radius;
+    if (!(radius > navmesh_radius)) return;
+    {
+        std::lock_guard lock(wide_bodies_mutex_);
+        const uint64_t navmesh = uint64_t(def.navmesh.index1) << 32 | def.navmesh.generation;
+        if (!wide_bodies_warned_.insert({navmesh, radius}).second) return;
+    }
+    logger_.log(LogLevel::Warning,
+                concat("agents of radius ", radius, " m on a navmesh built for radius ", navmesh_radius, " m (nl_navmesh_id {",
+                       def.navmesh.index1 & kHandleSlotMask, ", ", def.navmesh.generation, "}) keep ", radius - navmesh_radius,
+                       " m more from walls than the navmesh's edges, and cannot pass where the navmesh is narrower than ",
+                       2.0f * (radius - navmesh_radius), " m of width; when their paths fall short, nl_path_explain says "
+                       "whether that is why (a navmesh built for their radius serves them best)"));
 }
 
 void World::set_mesh_transform(Handle mesh, const Transform& transform) {

@@ -15,6 +15,8 @@
 
 #include <memory>
 #include <mutex>
+#include <set>
+#include <utility>
 #include <vector>
 
 #include "agents/agents.h"
@@ -188,6 +190,11 @@ private:
     // Mesh moves and removals, and navmeshes placed on a mesh, one at a time: a mesh and the
     // navmeshes riding it never end in different places.
     std::mutex surface_moves_;
+    // The (navmesh, body radius) pairs warned of as a body wider than its navmesh's: once each, so
+    // a thousand tanks on a navmesh for people say it once. Owned by add_agent, under its mutex.
+    std::mutex wide_bodies_mutex_;
+    std::set<std::pair<uint64_t, float>> wide_bodies_warned_;  // navmesh index1 << 32 | generation
+    void warn_if_wider_than_navmesh(const AgentDef& def);
 };
 
 }  // namespace nl

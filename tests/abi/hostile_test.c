@@ -3195,22 +3195,29 @@ static void count_callback(void* user, nl_path_ticket ticket, nl_path_outcome ou
     ++g_callbacks;
 }
 
-/* nl_path_find or nl_path_request (g_queued) with a def: refused with nothing written, no ticket
-   made (the queue's counters, compared after each case, say so) and no callback run. */
-static int g_queued;
+/* nl_path_find, nl_path_request (g_queued) or nl_path_explain (g_explained) with a def: refused with
+   nothing written, no ticket made (the queue's counters, compared after each case, say so) and no
+   callback run. */
+static int g_queued, g_explained;
 static void request_refuses(const void* def, nl_status detail, const char* needle) {
     nl_path_result result;
     nl_path_point points[64];
     points[0] = nl_path_point_init();
     uint32_t count;
     nl_path_ticket ticket;
+    nl_path_shortfall shortfall;
     const int callbacks = g_callbacks;
     fill(&result, sizeof result);
     result.size = sizeof result;
     fill(points, sizeof points);
     fill(&count, sizeof count);
     fill(&ticket, sizeof ticket);
-    if (g_queued) {
+    fill(&shortfall, sizeof shortfall);
+    shortfall.size = sizeof shortfall;
+    if (g_explained) {
+        EXPECT_FAILURE(A.world, nl_path_explain(A.world, (const nl_path_request_def*)def, &shortfall), detail, needle);
+        EXPECT_UNTOUCHED_AFTER_SIZE(&shortfall, sizeof shortfall, "out_shortfall");
+    } else if (g_queued) {
         EXPECT_FAILURE(A.world, nl_path_request(A.world, (const nl_path_request_def*)def, &ticket), detail, needle);
         EXPECT_UNTOUCHED(&ticket, sizeof ticket, "out_ticket");
         EXPECT(g_callbacks == callbacks, "the callback of a refused request ran");
@@ -3224,7 +3231,12 @@ static void request_refuses(const void* def, nl_status detail, const char* needl
 
 /* A def accepted: it plans as the valid one does (a queued one is released again). */
 static void request_accepts(const void* def) {
-    if (g_queued) {
+    if (g_explained) {
+        nl_path_shortfall shortfall = nl_path_shortfall_init();
+        EXPECT_OK(nl_path_explain(A.world, (const nl_path_request_def*)def, &shortfall));
+        EXPECT(shortfall.reason == NL_PATH_SHORTFALL_NONE && shortfall.text[0] == '\0', "reason %u: %s", (unsigned)shortfall.reason,
+               shortfall.text);
+    } else if (g_queued) {
         nl_path_ticket ticket = {0u, 0u};
         EXPECT_OK(nl_path_request(A.world, (const nl_path_request_def*)def, &ticket));
         EXPECT_OK(nl_path_release(A.world, ticket));
@@ -3249,6 +3261,7 @@ static nl_status request_id_call(nl_world* w, raw_id id, void* out) {
     uint32_t count;
     nl_status status;
     def.navmesh = AS(nl_navmesh_id, id);
+    if (g_explained) return nl_path_explain(w, &def, (nl_path_shortfall*)out);
     if (g_queued) return nl_path_request(w, &def, (nl_path_ticket*)out);
     fill(points, sizeof points);
     points[0].size = sizeof points[0];
@@ -3264,9 +3277,10 @@ static void request_def_cases(const char* function) {
     nl_path_request_def valid = gap_request(A.navmesh);
     const id_function find = {function, "def->navmesh", "out_result", sizeof(nl_path_result), 1, 0, request_id_call, 1};
     const id_function request = {function, "def->navmesh", "out_ticket", sizeof(nl_path_ticket), 0, 0, request_id_call, 1};
+    const id_function explain = {function, "def->navmesh", "out_shortfall", sizeof(nl_path_shortfall), 1, 0, request_id_call, 1};
     valid.callback = count_callback;
     g_request = &valid;
-    id_cases(g_queued ? &request : &find, RAW(A.navmesh), RAW(A.stale_navmesh), RAW(B.navmesh));
+    id_cases(g_explained ? &explain : g_queued ? &request : &find, RAW(A.navmesh), RAW(A.stale_navmesh), RAW(B.navmesh));
     CASE(function, "def NULL") { request_refuses(NULL, NL_STATUS_INVALID_ARGUMENT, "def"); }
     def_sizes(function, "def", &valid, sizeof valid, request_refuses, request_accepts);
     def_cases(function, &valid, sizeof valid, k_request_defs, sizeof k_request_defs / sizeof *k_request_defs, request_refuses,
@@ -3357,6 +3371,23 @@ static void group_path_find(void) {
     result_cases("nl_path_find", find_known);
     out_sizes("nl_path_find", "out_result", sizeof(nl_path_result), find_into);
     out_element_sizes("nl_path_find", "out_points", sizeof(nl_path_point), find_points);
+}
+
+static nl_status explain_into(void* shortfall) {
+    const nl_path_request_def def = gap_request(A.navmesh);
+    return nl_path_explain(A.world, &def, (nl_path_shortfall*)shortfall);
+}
+
+static void group_path_explain(void) {
+    g_queued = 0;
+    g_explained = 1;
+    CASE("nl_path_explain", "out_shortfall NULL") {
+        const nl_path_request_def def = gap_request(A.navmesh);
+        EXPECT_INVALID(A.world, nl_path_explain(A.world, &def, NULL), "out_shortfall");
+    }
+    request_def_cases("nl_path_explain");
+    out_sizes("nl_path_explain", "out_shortfall", sizeof(nl_path_shortfall), explain_into);
+    g_explained = 0;
 }
 
 static void group_path_request(void) {
@@ -4930,6 +4961,7 @@ static const hostile_group k_groups[] = {
     {"navmesh_load_file", group_navmesh_load_file},
     {"navmesh_file_describe", group_navmesh_file_describe},
     {"path_find", group_path_find},
+    {"path_explain", group_path_explain},
     {"path_request", group_path_request},
     {"path_poll", group_path_poll},
     {"path_get_result", group_path_get_result},

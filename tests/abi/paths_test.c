@@ -1227,6 +1227,57 @@ static void waiting(void) {
     }
 }
 
+/* nl_path_explain on the islands (cells 0-2, 4-6 and 8-10 along x): the jump across the first gap
+   is 1.2 m end to end; the drop is 2 m down from x = 8.1 to 6.9, and a jump of 2 m up the other way. */
+static nl_path_shortfall explain(nl_world* world, const nl_path_request_def* def) {
+    nl_path_shortfall out = nl_path_shortfall_init();
+    CHECK_OK(nl_path_explain(world, def, &out));
+    return out;
+}
+
+static void explain_shortfalls(void) {
+    islands s = make_islands(0);
+    nl_path_request_def def = jumper(s.navmesh, 0.5f, 5.5f);
+    nl_path_shortfall why;
+    nl_navmesh_id bare;
+
+    def.agent.max_jump_distance = 1.0f;
+    why = explain(s.world, &def);
+    CHECK(why.reason == NL_PATH_SHORTFALL_LINK_BEYOND_BODY && why.limit == NL_LINK_LIMIT_JUMP_DISTANCE);
+    CHECK(fabsf(why.needed - 1.2f) < 1e-3f && why.has == 1.0f);
+    CHECK(same_link(why.link, s.jump) && why.reversed == 0);
+    CHECK_THAT(strstr(why.text, "it needs a jump of 1.2 m across, and the body jumps 1 m (max_jump_distance)") != NULL, why.text);
+
+    /* Up the drop: a jump of 2 m up, the drop taken from its end. */
+    def = jumper(s.navmesh, 5.5f, 9.5f);
+    why = explain(s.world, &def);
+    CHECK(why.reason == NL_PATH_SHORTFALL_LINK_BEYOND_BODY && why.limit == NL_LINK_LIMIT_JUMP_HEIGHT);
+    CHECK(why.needed == 2.0f && why.has == 0.0f && why.reversed == 1 && same_link(why.link, s.drop));
+    CHECK(fabsf(why.link_start[0] - 6.9f) < 0.05f && fabsf(why.link_start[2] - 0.5f) < 0.05f);
+    CHECK_THAT(strstr(why.text, "a drop taken back up at (6.9, 0, 0.5) would get there") != NULL, why.text);
+
+    /* Down it with a body that drops 1 m. */
+    def = jumper(s.navmesh, 9.5f, 5.5f);
+    def.agent.max_drop_height = 1.0f;
+    why = explain(s.world, &def);
+    CHECK(why.reason == NL_PATH_SHORTFALL_LINK_BEYOND_BODY && why.limit == NL_LINK_LIMIT_DROP_HEIGHT);
+    CHECK(why.needed == 2.0f && why.has == 1.0f && why.reversed == 0);
+
+    /* Able enough: nothing to say, whatever the outcome needs. */
+    def.agent.max_drop_height = 2.0f;
+    why = explain(s.world, &def);
+    CHECK(why.reason == NL_PATH_SHORTFALL_NONE && why.text[0] == '\0' && why.link.index1 == 0u);
+
+    /* The same map without links. */
+    bare = add_cells(s.world, k_islands, 1, 0.0f);
+    def = jumper(bare, 0.5f, 5.5f);
+    why = explain(s.world, &def);
+    CHECK(why.reason == NL_PATH_SHORTFALL_NO_LINKS);
+    CHECK_THAT(strstr(why.text, "the navmesh has no links") != NULL, why.text);
+    nl_world_destroy(s.world);
+}
+
 ABI_SECTION(paths, ABI_CASE(defaults), ABI_CASE(find_synchronous), ABI_CASE(costs_and_radius), ABI_CASE(bad_input),
+            ABI_CASE(explain_shortfalls),
             ABI_CASE(queue_manual), ABI_CASE(snapshots), ABI_CASE(queue_workers),
             ABI_CASE(waiting));

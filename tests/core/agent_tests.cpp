@@ -494,3 +494,36 @@ TEST_CASE("a two-way link made one-way is not taken against its way; new capabil
     for (int i = 0; i < 600 && world.agents().info(walker).state != AgentState::Arrived; ++i) world.step(1.0f / 30.0f);
     CHECK(world.agents().info(walker).state == AgentState::Arrived);
 }
+
+TEST_CASE("a body wider than its navmesh's is said once per radius, with the margin it keeps") {
+    std::vector<std::string> warnings;
+    nl::WorldSettings settings;
+    settings.logger = nl::Logger([&](nl::LogLevel level, std::optional<nl::ErrorCode>, const std::string& message) {
+        if (level == nl::LogLevel::Warning) warnings.push_back(message);
+    }, nl::LogLevel::Warning);
+    nl::World world(std::move(settings));
+    nl::NavMeshInput in;
+    add_polygon(in, {{0, 0}, {0, 10}, {10, 10}, {10, 0}});
+    in.agent.radius = 0.6f;
+    in.agent.height = 2.0f;
+    const Handle navmesh = world.add_navmesh(in);
+    auto add = [&](float radius) {
+        nl::AgentDef def;
+        def.navmesh = navmesh;
+        def.position = Vec3(5.0f, 0.0f, 5.0f);
+        def.capabilities.radius = radius;
+        world.add_agent(def);
+    };
+    add(0.6f);
+    add(0.4f);
+    CHECK(warnings.empty());
+    add(1.5f);
+    add(1.5f);
+    REQUIRE(warnings.size() == 1);
+    CHECK_MESSAGE(warnings[0].find("agents of radius 1.5 m on a navmesh built for radius 0.6 m") == 0, warnings[0]);
+    CHECK(warnings[0].find("keep 0.9 m more from walls") != std::string::npos);
+    CHECK(warnings[0].find("cannot pass where the navmesh is narrower than 1.8 m") != std::string::npos);
+    CHECK(warnings[0].find("nl_path_explain") != std::string::npos);
+    add(1.0f);
+    CHECK(warnings.size() == 2);
+}

@@ -474,3 +474,88 @@ TEST_CASE("navlink generate says when a level looks given in centimetres or with
     CHECK(bad_up.exit_code != 0);
     CHECK(bad_up.err.find("--up must be y or z, got 'x'") != std::string::npos);
 }
+
+// A platform 4.2 m above a floor with no stairs, and two rooms joined by a corridor 1.6 m wide: a
+// partial path says why (the drop the body cannot take, with its depth and the link's number; no
+// links loaded; a body too wide for the corridor), and a body wider than the navmesh is said to be.
+TEST_CASE("navlink path says why a path falls short, and when the body is wider than the navmesh") {
+    const std::string dir = nl::test::scratch_dir("path_shortfall");
+    nl::levelgen::GeneratedLevel level;
+    level.add_box({{-10, -1, -10}, {20, 0, 10}});
+    level.add_box({{0, 0, -3}, {6, 4.2f, 3}});
+    level.add_box({{30, -1, -10}, {70, 0, 10}});
+    level.add_box({{49, 0, -10}, {51, 3, -0.8f}});
+    level.add_box({{49, 0, 0.8f}, {51, 3, 10}});
+    nl::test::write_file(dir + "/level.obj", level.to_obj());
+    nl::test::write_file(dir + "/drops_4.json", R"({"max_drop_height": 4})");
+    nl::test::write_file(dir + "/wide.json", R"({"radius": 1.0})");
+    const ProgramRun generated = navlink({"generate", "level.obj", "--out", "links.json"}, dir);
+    REQUIRE_MESSAGE(generated.exit_code == 0, generated.err);
+
+    const ProgramRun short_drop =
+        navlink({"path", "level.obj", "--links", "links.json", "--agent", "drops_4.json", "--from", "3,4.2,0", "--to", "15,0,0"}, dir);
+    CHECK(short_drop.exit_code == 1);
+    CHECK_MESSAGE(short_drop.out.find("why: a drop at (") != std::string::npos, short_drop.out);
+    CHECK(std::regex_search(short_drop.out, std::regex(R"(it needs a drop of 4\.[0-4]\d? m, and the body drops 4 m \(max_drop_height\) \(link #\d+;)")));
+    const ProgramRun no_links = navlink({"path", "level.obj", "--agent", "drops_4.json", "--from", "3,4.2,0", "--to", "15,0,0"}, dir);
+    CHECK_MESSAGE(no_links.out.find("the navmesh has no links: generate or load them (--links LINKS.json)") != std::string::npos,
+                  no_links.out);
+    const ProgramRun json_out = navlink(
+        {"path", "level.obj", "--links", "links.json", "--agent", "drops_4.json", "--from", "3,4.2,0", "--to", "15,0,0", "--json"}, dir);
+    const json parsed = json::parse(json_out.out);
+    CHECK(parsed.at("why").get<std::string>().find("(max_drop_height)") != std::string::npos);
+    CHECK(parsed.at("why_link").get<long>() >= 0);
+
+    // Built for the body, the navmesh leaves the corridor out, and says so.
+    const ProgramRun built_wide = navlink({"path", "level.obj", "--agent", "wide.json", "--from", "40,0,0", "--to", "60,0,0"}, dir);
+    CHECK(built_wide.exit_code == 1);
+    CHECK_MESSAGE(built_wide.out.find("(built for a body of radius 1 m, it leaves out passages narrower than 2 m)") != std::string::npos,
+                  built_wide.out);
+    // Baked for the default body (radius 0.6 m), planned for a wider one.
+    const ProgramRun baked = navlink({"bake", "level.obj", "--out", "level.nlnav"}, dir);
+    REQUIRE_MESSAGE(baked.exit_code == 0, baked.err);
+    const ProgramRun wide = navlink({"path", "level.nlnav", "--agent", "wide.json", "--from", "40,0,0", "--to", "60,0,0"}, dir);
+    CHECK(wide.exit_code == 1);
+    CHECK_MESSAGE(wide.out.find("the body (radius 1.00 m) is wider than the navmesh's (0.60 m): it keeps 0.40 m more from walls") !=
+                      std::string::npos,
+                  wide.out);
+    CHECK(wide.out.find("why: the body (radius 1 m) is too wide for the passages on the way") != std::string::npos);
+    const ProgramRun fits = navlink({"path", "level.nlnav", "--from", "40,0,0", "--to", "60,0,0"}, dir);
+    CHECK(fits.exit_code == 0);
+    CHECK(fits.out.find("why:") == std::string::npos);
+}
+
+// Agents on the host's own level: a platform 4.2 m above a floor, with no stairs and drops the demo's
+// bodies cannot take. From the floor to the floor every agent arrives (exit 0); from the platform to
+// the floor none does, and both tools say so and exit 1; a destination off the navmesh is an error.
+TEST_CASE("navlink simulate LEVEL and navlink-viewer --from --to exit 0 only when every agent arrived") {
+    const std::string dir = nl::test::scratch_dir("own_level_trips");
+    nl::levelgen::GeneratedLevel level;
+    level.add_box({{-10, -1, -10}, {20, 0, 10}});
+    level.add_box({{0, 0, -3}, {6, 4.2f, 3}});
+    nl::test::write_file(dir + "/tower.obj", level.to_obj());
+
+    const ProgramRun floor = navlink({"simulate", "tower.obj", "--from", "15,0,0", "--to", "10,0,7", "--seconds", "30"}, dir);
+    CHECK_MESSAGE(floor.exit_code == 0, floor.out << floor.err);
+    CHECK(floor.out.find("NavLink simulate: tower.obj") != std::string::npos);
+    CHECK(floor.out.find("not every agent arrived") == std::string::npos);
+    const ProgramRun down = navlink({"simulate", "tower.obj", "--from", "3,4.2,0", "--to", "15,0,0", "--seconds", "20"}, dir);
+    CHECK_MESSAGE(down.exit_code == 1, down.out << down.err);
+    CHECK(down.out.find("not every agent arrived") != std::string::npos);
+    const ProgramRun generated_only = navlink({"simulate", "tower.obj", "--from", "15,0,0", "--to", "10,0,7", "--platforms"}, dir);
+    CHECK(generated_only.exit_code == 2);
+    CHECK(generated_only.err.find("--platforms is for the generated default level") != std::string::npos);
+
+    const auto viewer = [&](const std::string& from, const std::string& to) {
+        return nl::test::run_program({NAVLINK_VIEWER_PATH, "tower.obj", "--headless", "--frames", dir, "--from", from, "--to", to}, dir);
+    };
+    const ProgramRun viewer_floor = viewer("15,0,0", "10,0,7");
+    CHECK_MESSAGE(viewer_floor.exit_code == 0, viewer_floor.out << viewer_floor.err);
+    CHECK(viewer_floor.out.find("agents: every agent arrived") != std::string::npos);
+    const ProgramRun viewer_down = viewer("3,4.2,0", "15,0,0");
+    CHECK_MESSAGE(viewer_down.exit_code == 1, viewer_down.out << viewer_down.err);
+    CHECK(viewer_down.out.find("agents: not every agent arrived") != std::string::npos);
+    const ProgramRun viewer_off = viewer("15,0,0", "60,0,0");
+    CHECK(viewer_off.exit_code == 2);
+    CHECK(viewer_off.err.find("--to 60,0,0: not every agent can go there") != std::string::npos);
+}

@@ -16,11 +16,13 @@ namespace NavLink.Tests
     internal static class LayoutTests
     {
         // C names whose C# type is not "strip nl_, PascalCase": taken by System.Version, by the PathResult
-        // class that carries the points too, and by the QueryFilter class that carries its area costs.
+        // class that carries the points too, by the PathShortfall class that carries its text as a string,
+        // and by the QueryFilter class that carries its area costs.
         private static readonly Dictionary<string, string> Renamed = new Dictionary<string, string>
         {
             {"nl_version", "NavLinkVersion"},
             {"nl_path_result", "PathResultInfo"},
+            {"nl_path_shortfall", "PathShortfallInfo"},
             {"nl_query_filter", "QueryFilterDef"},
         };
 
@@ -31,7 +33,8 @@ namespace NavLink.Tests
             {typeof(HeaderVersion), "NL_VERSION_"}, {typeof(StatusCode), "NL_STATUS_"}, {typeof(Limits), "NL_"},
             {typeof(LogLevel), "NL_LOG_"}, {typeof(MeshFlags), "NL_MESH_"}, {typeof(UpAxis), "NL_UP_AXIS_"},
             {typeof(BuildWarnings), "NL_BUILD_WARNING_"}, {typeof(LinkKind), "NL_LINK_"},
-            {typeof(PathOutcome), "NL_PATH_"}, {typeof(AgentState), "NL_AGENT_"}, {typeof(AgentReason), "NL_AGENT_REASON_"},
+            {typeof(PathOutcome), "NL_PATH_"}, {typeof(PathShortfallReason), "NL_PATH_SHORTFALL_"}, {typeof(LinkLimit), "NL_LINK_LIMIT_"},
+            {typeof(AgentState), "NL_AGENT_"}, {typeof(AgentReason), "NL_AGENT_REASON_"},
             {typeof(TrajectoryKind), "NL_TRAJECTORY_"}, {typeof(AgentEventKind), "NL_AGENT_EVENT_"}, {typeof(PluginKinds), "NL_PLUGIN_"},
             {typeof(PluginAbi), "NL_PLUGIN_ABI_"},
             {typeof(RecastPartition), "NL_RECAST_PARTITION_"}, {typeof(NavmeshLoadFlags), "NL_NAVMESH_LOAD_"},

@@ -48,6 +48,32 @@ namespace NavLink.Tests
                 }
             });
 
+            check.Run("paths: why a path falls short (nl_path_explain)", () =>
+            {
+                using (var world = new World())
+                {
+                    // A platform 4.2 m above a floor, no stairs, no links: its top is an island of the navmesh.
+                    TestLevels.AddBox(world, -10, -1, -10, 20, 0, 10);
+                    TestLevels.AddBox(world, 0, 0, -3, 6, 4.2f, 3);
+                    NavmeshId navmesh = world.BuildNavmesh(World.DefaultAgentType());
+                    var down = new PathQuery(navmesh, new Vec3(3, 4.2f, 0), new Vec3(15, 0, 0), TestLevels.Walker()) { AcceptPartial = true };
+                    PathShortfall stuck = world.ExplainPath(down);
+                    check.That(stuck.Reason == PathShortfallReason.NoLinks && stuck.Limit == LinkLimit.None && stuck.Link.IsNull,
+                               "off the platform without links: " + stuck.Reason + ", " + stuck.Limit);
+                    check.That(stuck.Text.Contains("the navmesh has no links"), "the sentence: \"" + stuck.Text + "\"");
+                    PathShortfall stroll = world.ExplainPath(new PathQuery(navmesh, new Vec3(15, 0, 0), new Vec3(18, 0, 0), TestLevels.Walker()));
+                    check.That(stroll.Reason == PathShortfallReason.None && stroll.Text == "",
+                               "a walk on the floor: " + stroll.Reason + ", \"" + stroll.Text + "\"");
+                    unsafe
+                    {
+                        PathRequestDef def = Native.nl_default_path_request_def();
+                        def.Navmesh = navmesh;
+                        check.Status(Native.nl_path_explain(world.DangerousGetPointer(), &def, null), StatusCode.InvalidArgument,
+                                     "out_shortfall", "nl_path_explain without out_shortfall");
+                    }
+                }
+            });
+
             check.Run("paths: queued, with path workers and callbacks", () =>
             {
                 using (var world = new World())

@@ -1327,6 +1327,60 @@ NL_DEFINE_OUTPUT_INIT(nl_path_result, nl_path_result_init)
 NL_API nl_status nl_path_find(nl_world* world, const nl_path_request_def* def, nl_path_result* out_result,
                               nl_path_point* out_points, uint32_t capacity, uint32_t* out_count);
 
+/** Why a path falls short of its goal: nl_path_shortfall.reason. */
+#define NL_PATH_SHORTFALL_NONE 0u             /**< It reaches the goal, or an end is off the navmesh
+                                                   (the outcome says so). */
+#define NL_PATH_SHORTFALL_OUT_OF_NODES 1u     /**< max_nodes stopped the search. */
+#define NL_PATH_SHORTFALL_BODY_TOO_WIDE 2u    /**< A body of the navmesh's radius would get there:
+                                                   passages on the way are too narrow for this one. */
+#define NL_PATH_SHORTFALL_AREAS_EXCLUDED 3u   /**< Areas the request keeps the body out of stand in the way. */
+#define NL_PATH_SHORTFALL_LINK_BEYOND_BODY 4u /**< A link would get there, and the body cannot take it
+                                                   (`limit`, `needed`, `has`, `link`). */
+#define NL_PATH_SHORTFALL_NO_LINKS 5u         /**< The goal is on another island of the navmesh, and the
+                                                   navmesh has no links. */
+#define NL_PATH_SHORTFALL_NOT_CONNECTED 6u    /**< No passage or link leads there, whatever the body. */
+
+/** What a link asks that the body lacks: nl_path_shortfall.limit. */
+#define NL_LINK_LIMIT_NONE 0u
+#define NL_LINK_LIMIT_JUMP_DISTANCE 1u /**< The gap, against max_jump_distance. */
+#define NL_LINK_LIMIT_JUMP_HEIGHT 2u   /**< The rise, against max_jump_height. */
+#define NL_LINK_LIMIT_DROP_HEIGHT 3u   /**< The drop, against max_drop_height. */
+#define NL_LINK_LIMIT_WIDTH 4u         /**< The body's diameter, against the link's clearance. */
+#define NL_LINK_LIMIT_ABILITIES 5u     /**< Ability bits the body lacks (missing_abilities). */
+
+/** Why a request's path falls short of its goal (nl_path_explain). */
+typedef struct nl_path_shortfall {
+    uint32_t size;               /**< Set by the caller to sizeof(nl_path_shortfall). */
+    uint32_t reason;             /**< NL_PATH_SHORTFALL_*. */
+    uint32_t limit;              /**< NL_LINK_LIMIT_* for LINK_BEYOND_BODY. */
+    float needed;                /**< LINK_BEYOND_BODY: what the link needs, metres (for WIDTH the
+                                      body's diameter); BODY_TOO_WIDE: the body's radius. */
+    float has;                   /**< LINK_BEYOND_BODY: what the body can, metres (for WIDTH the
+                                      link's clearance); BODY_TOO_WIDE: the navmesh's radius. */
+    uint32_t reversed;           /**< 1 if the link would be taken from its end to its start. */
+    uint64_t missing_abilities;  /**< LIMIT_ABILITIES: the bits the body lacks. */
+    nl_link_id link;             /**< LINK_BEYOND_BODY: the link (of the request's navmesh, or a cross
+                                      link of another); the null id otherwise. */
+    float link_start[3];         /**< Where the body would take it, in the world. */
+    char text[256];              /**< The same as a sentence naming the field to change, NUL-
+                                      terminated ("" for NONE), e.g. "a drop at (12, 4, 3) would get
+                                      there: it needs a drop of 4.2 m, and the body drops 4 m
+                                      (max_drop_height)". */
+} nl_path_shortfall;
+
+NL_DEFINE_OUTPUT_INIT(nl_path_shortfall, nl_path_shortfall_init)
+
+/** Plans the request `def` (borrowed; its callback is ignored) as nl_path_find does and, when the path
+ *  does not reach the goal (PARTIAL, NO_PATH), says why in `*out_shortfall` (caller-owned, `size`
+ *  set): it plans again with one limit lifted at a time (the body's width down to the navmesh's
+ *  radius, the excluded areas, what links the body can take; then all of them) and the first that
+ *  reaches the goal is the reason; a link on that path the body cannot take is named with the
+ *  capability it lacks and by how much (the cheapest way with every link allowed). For tools, logs
+ *  and a host's debugging: up to five searches, on the calling thread.
+ *  Returns SUCCESS (whatever the reason, NONE included), or a failure as nl_path_find's.
+ *  Thread-safe. */
+NL_API nl_status nl_path_explain(nl_world* world, const nl_path_request_def* def, nl_path_shortfall* out_shortfall);
+
 /** Queues a path request and returns at once with its ticket in `*out_ticket`. The request reads the
  *  navmesh and links as they are now. `def` is borrowed and copied. Path workers plan it (or
  *  nl_path_process when path_worker_count is 0); poll the ticket or receive the callback, read the

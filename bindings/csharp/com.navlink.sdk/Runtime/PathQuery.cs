@@ -53,4 +53,40 @@ namespace NavLink
         public float Cost { get { return Info.Cost; } }
         public uint LinksUsed { get { return Info.LinksUsed; } }
     }
+
+    /// <summary>Why a request's path falls short of its goal (World.ExplainPath, nl_path_shortfall): Reason
+    /// None when it reaches the goal or an end is off the navmesh; Text says the same as a sentence naming
+    /// the field to change ("" for None).</summary>
+    public sealed class PathShortfall
+    {
+        public unsafe PathShortfall(PathShortfallInfo info)
+        {
+            Info = info;
+            Text = Utf8.Decode(info.Text, 256);
+        }
+
+        public PathShortfallInfo Info { get; private set; }
+        public PathShortfallReason Reason { get { return Info.Reason; } }
+        /// <summary>For PathShortfallReason.LinkBeyondBody: what the link asks that the body lacks.</summary>
+        public LinkLimit Limit { get { return Info.Limit; } }
+        /// <summary>LinkBeyondBody: what the link needs, metres (for LinkLimit.Width the body's diameter);
+        /// BodyTooWide: the body's radius.</summary>
+        public float Needed { get { return Info.Needed; } }
+        /// <summary>LinkBeyondBody: what the body can, metres (for LinkLimit.Width the link's clearance);
+        /// BodyTooWide: the navmesh's radius.</summary>
+        public float Has { get { return Info.Has; } }
+        /// <summary>The link would be taken from its end to its start.</summary>
+        public bool Reversed { get { return Info.Reversed != 0; } }
+        /// <summary>LinkLimit.Abilities: the bits the body lacks.</summary>
+        public ulong MissingAbilities { get { return Info.MissingAbilities; } }
+        /// <summary>LinkBeyondBody: the link (of the request's navmesh, or a cross link of another); the null id otherwise.</summary>
+        public LinkId Link { get { return Info.Link; } }
+        /// <summary>Where the body would take the link, in the world.</summary>
+        public Vec3 LinkStart { get { return Info.LinkStart; } }
+        /// <summary>The sentence, e.g. "a drop at (12, 4, 3) would get there: it needs a drop of 4.2 m, and the
+        /// body drops 4 m (max_drop_height)"; "" for PathShortfallReason.None.</summary>
+        public string Text { get; private set; }
+
+        public override string ToString() { return Text.Length > 0 ? Text : Reason.ToString(); }
+    }
 }

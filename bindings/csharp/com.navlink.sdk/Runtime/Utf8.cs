@@ -28,6 +28,15 @@ namespace NavLink
             return Encoding.UTF8.GetString(s, n);
         }
 
+        /// <summary>The string in a NUL-terminated UTF-8 char array of `capacity` bytes (a struct's fixed
+        /// buffer); all of it when no NUL comes first.</summary>
+        public static unsafe string Decode(byte* s, int capacity)
+        {
+            int n = 0;
+            while (n < capacity && s[n] != 0) ++n;
+            return Encoding.UTF8.GetString(s, n);
+        }
+
         /// <summary>Copies s into unmanaged memory as NUL-terminated UTF-8, for strings a plugin must
         /// keep alive (free with Marshal.FreeHGlobal).</summary>
         public static IntPtr AllocZ(string s)

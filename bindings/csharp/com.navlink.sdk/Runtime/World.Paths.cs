@@ -44,6 +44,24 @@ namespace NavLink
             }
         }
 
+        /// <summary>Why the query's path falls short of its goal (nl_path_explain): plans it as FindPath does and,
+        /// for a Partial or NoPath outcome, plans again with one limit lifted at a time (the body's width, the
+        /// excluded areas, the links the body cannot take) and names the first that gets there. Reason None
+        /// when the path reaches the goal or an end is off the navmesh. Up to five searches on the calling
+        /// thread: for tools, logs and debugging.</summary>
+        public unsafe PathShortfall ExplainPath(PathQuery query)
+        {
+            float[] costs = query.AreaCosts;
+            fixed (float* c = costs)
+            using (var w = Enter())
+            {
+                PathRequestDef def = ToDef(query, c);
+                PathShortfallInfo info = Native.nl_path_shortfall_init();
+                Status.Check(Native.nl_path_explain(w.Pointer, &def, &info));
+                return new PathShortfall(info);
+            }
+        }
+
         /// <summary>Queues a request; onFinished (optional) runs once when it finishes, on a NavLink path
         /// worker, in ProcessPaths, WaitPath, CancelPath, ReleasePath or Dispose. Release the ticket when done
         /// with it (ReleasePath); QueuePath returns a PathRequest that does so itself.</summary>

@@ -4,7 +4,7 @@ use crate::navmesh::nl_navmesh_id;
 use crate::output_init;
 use crate::status::nl_status;
 use crate::world::nl_world;
-use std::os::raw::c_void;
+use std::os::raw::{c_char, c_void};
 
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
@@ -108,6 +108,45 @@ pub fn nl_path_result_init() -> nl_path_result {
 }
 default_is_init!(nl_path_result, nl_path_result_init);
 
+/// Why a path falls short of its goal: `nl_path_shortfall::reason`.
+pub const NL_PATH_SHORTFALL_NONE: u32 = 0;
+pub const NL_PATH_SHORTFALL_OUT_OF_NODES: u32 = 1;
+pub const NL_PATH_SHORTFALL_BODY_TOO_WIDE: u32 = 2;
+pub const NL_PATH_SHORTFALL_AREAS_EXCLUDED: u32 = 3;
+pub const NL_PATH_SHORTFALL_LINK_BEYOND_BODY: u32 = 4;
+pub const NL_PATH_SHORTFALL_NO_LINKS: u32 = 5;
+pub const NL_PATH_SHORTFALL_NOT_CONNECTED: u32 = 6;
+
+/// What a link asks that the body lacks: `nl_path_shortfall::limit`.
+pub const NL_LINK_LIMIT_NONE: u32 = 0;
+pub const NL_LINK_LIMIT_JUMP_DISTANCE: u32 = 1;
+pub const NL_LINK_LIMIT_JUMP_HEIGHT: u32 = 2;
+pub const NL_LINK_LIMIT_DROP_HEIGHT: u32 = 3;
+pub const NL_LINK_LIMIT_WIDTH: u32 = 4;
+pub const NL_LINK_LIMIT_ABILITIES: u32 = 5;
+
+/// Why a request's path falls short of its goal (`nl_path_explain`). `text` is a NUL-terminated UTF-8
+/// sentence ("" for `NL_PATH_SHORTFALL_NONE`).
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct nl_path_shortfall {
+    pub size: u32,
+    pub reason: u32,
+    pub limit: u32,
+    pub needed: f32,
+    pub has: f32,
+    pub reversed: u32,
+    pub missing_abilities: u64,
+    pub link: nl_link_id,
+    pub link_start: [f32; 3],
+    pub text: [c_char; 256],
+}
+
+pub fn nl_path_shortfall_init() -> nl_path_shortfall {
+    unsafe { output_init() }
+}
+default_is_init!(nl_path_shortfall, nl_path_shortfall_init);
+
 /// How much `nl_path_process` may do in one call. Get one from `nl_default_path_budget()`.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -161,6 +200,13 @@ extern "C" {
         out_points: *mut nl_path_point,
         capacity: u32,
         out_count: *mut u32,
+    ) -> nl_status;
+    /// Plans the request as `nl_path_find` does and, for a PARTIAL or NO_PATH outcome, says why (up to five
+    /// searches on the calling thread); `NL_PATH_SHORTFALL_NONE` otherwise.
+    pub fn nl_path_explain(
+        world: *mut nl_world,
+        def: *const nl_path_request_def,
+        out_shortfall: *mut nl_path_shortfall,
     ) -> nl_status;
     pub fn nl_path_request(world: *mut nl_world, def: *const nl_path_request_def, out_ticket: *mut nl_path_ticket)
         -> nl_status;

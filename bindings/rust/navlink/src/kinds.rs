@@ -50,6 +50,43 @@ c_enum! {
 }
 
 c_enum! {
+    /// Why a path falls short of its goal (`PathShortfall::reason`, `NL_PATH_SHORTFALL_*`).
+    pub enum PathShortfallReason {
+        /// It reaches the goal, or an end is off the navmesh (the outcome says so).
+        None = sys::NL_PATH_SHORTFALL_NONE,
+        /// `max_nodes` stopped the search.
+        OutOfNodes = sys::NL_PATH_SHORTFALL_OUT_OF_NODES,
+        /// A body of the navmesh's radius would get there: passages on the way are too narrow for this one.
+        BodyTooWide = sys::NL_PATH_SHORTFALL_BODY_TOO_WIDE,
+        /// Areas the request keeps the body out of stand in the way.
+        AreasExcluded = sys::NL_PATH_SHORTFALL_AREAS_EXCLUDED,
+        /// A link would get there, and the body cannot take it (`limit`, `needed`, `has`, `link`).
+        LinkBeyondBody = sys::NL_PATH_SHORTFALL_LINK_BEYOND_BODY,
+        /// The goal is on another island of the navmesh, and the navmesh has no links.
+        NoLinks = sys::NL_PATH_SHORTFALL_NO_LINKS,
+        /// No passage or link leads there, whatever the body.
+        NotConnected = sys::NL_PATH_SHORTFALL_NOT_CONNECTED,
+    }
+}
+
+c_enum! {
+    /// What a link asks that the body lacks (`PathShortfall::limit`, `NL_LINK_LIMIT_*`).
+    pub enum LinkLimit {
+        None = sys::NL_LINK_LIMIT_NONE,
+        /// The gap, against `max_jump_distance`.
+        JumpDistance = sys::NL_LINK_LIMIT_JUMP_DISTANCE,
+        /// The rise, against `max_jump_height`.
+        JumpHeight = sys::NL_LINK_LIMIT_JUMP_HEIGHT,
+        /// The drop, against `max_drop_height`.
+        DropHeight = sys::NL_LINK_LIMIT_DROP_HEIGHT,
+        /// The body's diameter, against the link's clearance.
+        Width = sys::NL_LINK_LIMIT_WIDTH,
+        /// Ability bits the body lacks (`missing_abilities`).
+        Abilities = sys::NL_LINK_LIMIT_ABILITIES,
+    }
+}
+
+c_enum! {
     /// How a path segment is travelled: walking, or the kind of link taken (`nl_link_kind`); also a link's
     /// kind (`Link::kind`, `LinkDef::kind`). A plugin's kinds are `Other(k)` with
     /// `k >= LinkKind::FIRST_PLUGIN_KIND`.

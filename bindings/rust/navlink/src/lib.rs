@@ -30,13 +30,16 @@ mod world;
 
 pub use agents::{default_agent_def, AgentInfoExt};
 pub use error::{status_string, Error, ErrorKind, Result};
-pub use kinds::{AgentEventKind, AgentReason, AgentState, LinkKind, PathOutcome, RecastPartition, TrajectoryKind, UpAxis};
+pub use kinds::{
+    AgentEventKind, AgentReason, AgentState, LinkKind, LinkLimit, PathOutcome, PathShortfallReason, RecastPartition, TrajectoryKind,
+    UpAxis,
+};
 pub use level::{MeshFlags, MeshOptions};
 pub use callbacks::Progress;
 pub use links::{default_link_def, default_link_settings, link_settings_from_json, LinkDefExt, LinkExt, LinksLoadOptions};
 pub use navmesh::{default_agent_type, default_recast_settings, BuildWarnings, NavmeshBuild, NavmeshDetail, NavmeshInput};
 pub use navmesh_files::{describe_navmesh_file, NavmeshLoadOptions};
-pub use paths::{default_agent_capabilities, FinishedPath, PathBudget, PathQuery, PathRequest, PathResult};
+pub use paths::{default_agent_capabilities, FinishedPath, PathBudget, PathQuery, PathRequest, PathResult, PathShortfall};
 pub use plugins::PluginSummary;
 pub use queries::{default_query_filter, QueryFilter, RandomPointsOptions};
 pub use types::*;

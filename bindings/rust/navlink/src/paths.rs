@@ -2,8 +2,8 @@
 //! [`PathRequest`] to poll, wait for or await, released when dropped.
 use crate::callbacks::{self, PathBox, PathCallback};
 use crate::error::{check, Error, Result};
-use crate::kinds::PathOutcome;
-use crate::types::{AgentCapabilities, NavmeshId, PathPoint, PathQueueStats, PathSummary, PathTicket};
+use crate::kinds::{LinkLimit, PathOutcome, PathShortfallReason};
+use crate::types::{AgentCapabilities, LinkId, NavmeshId, PathPoint, PathQueueStats, PathSummary, PathTicket};
 use crate::world::World;
 use navlink_sys as sys;
 use std::future::Future;
@@ -81,6 +81,50 @@ impl PathResult {
 
     fn from_c(summary: sys::nl_path_result, points: Vec<sys::nl_path_point>) -> PathResult {
         PathResult { summary: summary.into(), points: points.into_iter().map(PathPoint::from).collect() }
+    }
+}
+
+/// Why a request's path falls short of its goal (`World::explain_path`, `nl_path_shortfall`).
+#[derive(Clone, Debug, PartialEq)]
+pub struct PathShortfall {
+    /// `None` when the path reaches the goal or an end is off the navmesh.
+    pub reason: PathShortfallReason,
+    /// For `LinkBeyondBody`: what the link asks that the body lacks.
+    pub limit: LinkLimit,
+    /// `LinkBeyondBody`: what the link needs, metres (for `LinkLimit::Width` the body's diameter);
+    /// `BodyTooWide`: the body's radius.
+    pub needed: f32,
+    /// `LinkBeyondBody`: what the body can, metres (for `LinkLimit::Width` the link's clearance);
+    /// `BodyTooWide`: the navmesh's radius.
+    pub has: f32,
+    /// The link would be taken from its end to its start.
+    pub reversed: bool,
+    /// `LinkLimit::Abilities`: the bits the body lacks.
+    pub missing_abilities: u64,
+    /// `LinkBeyondBody`: the link (of the request's navmesh, or a cross link of another); the null id otherwise.
+    pub link: LinkId,
+    /// Where the body would take the link, in the world.
+    pub link_start: [f32; 3],
+    /// The same as a sentence naming the field to change, e.g. "a drop at (12, 4, 3) would get there: it
+    /// needs a drop of 4.2 m, and the body drops 4 m (max_drop_height)"; empty for `None`.
+    pub text: String,
+}
+
+impl From<sys::nl_path_shortfall> for PathShortfall {
+    fn from(c: sys::nl_path_shortfall) -> PathShortfall {
+        // A NUL-terminated UTF-8 sentence in a char[256].
+        let bytes: Vec<u8> = c.text.iter().take_while(|&&b| b != 0).map(|&b| b as u8).collect();
+        PathShortfall {
+            reason: PathShortfallReason::from_raw(c.reason),
+            limit: LinkLimit::from_raw(c.limit),
+            needed: c.needed,
+            has: c.has,
+            reversed: c.reversed != 0,
+            missing_abilities: c.missing_abilities,
+            link: c.link,
+            link_start: c.link_start,
+            text: String::from_utf8_lossy(&bytes).into_owned(),
+        }
     }
 }
 
@@ -177,6 +221,18 @@ impl World {
             points.truncate(count as usize);
             return Ok(PathResult::from_c(info, points));
         }
+    }
+
+    /// Why the query's path falls short of its goal (`nl_path_explain`): plans it as `find_path` does and,
+    /// for a `Partial` or `NoPath` outcome, plans again with one limit lifted at a time (the body's width,
+    /// the excluded areas, the links the body cannot take) and names the first that gets there;
+    /// `PathShortfallReason::None` when the path reaches the goal or an end is off the navmesh. Up to five
+    /// searches on this thread: for tools, logs and debugging.
+    pub fn explain_path(&self, query: &PathQuery) -> Result<PathShortfall> {
+        let def = query.def();
+        let mut shortfall = sys::nl_path_shortfall_init();
+        check(unsafe { sys::nl_path_explain(self.raw(), &def, &mut shortfall) })?;
+        Ok(PathShortfall::from(shortfall))
     }
 
     /// Queues a request: poll, wait for or await the [`PathRequest`]; dropping it releases the ticket.

@@ -5,8 +5,8 @@ mod common;
 
 use common::*;
 use navlink::{
-    default_agent_type, status, FinishedPath, NavmeshBuild, NavmeshId, PathBudget, PathOutcome, PathQuery, PathResult,
-    World, WorldOptions,
+    default_agent_type, status, FinishedPath, LinkLimit, NavmeshBuild, NavmeshId, PathBudget, PathOutcome, PathQuery,
+    PathResult, PathShortfallReason, World, WorldOptions,
 };
 use std::sync::mpsc;
 use std::sync::{Arc, Mutex};
@@ -68,6 +68,23 @@ fn walker_and_jumper_planned_now() {
     assert_eq!(off_start.outcome(), PathOutcome::StartOffNavmesh);
     let off_goal = world.find_path(&PathQuery::new(navmesh, WEST, [0.0, -10.0, 30.0], jumper())).unwrap();
     assert_eq!(off_goal.outcome(), PathOutcome::GoalOffNavmesh);
+}
+
+#[test]
+fn why_a_path_falls_short() {
+    let world = World::new().unwrap();
+    // A platform 4.2 m above a floor, no stairs, no links: its top is an island of the navmesh.
+    add_box(&world, [-10.0, -1.0, -10.0], [20.0, 0.0, 10.0]);
+    add_box(&world, [0.0, 0.0, -3.0], [6.0, 4.2, 3.0]);
+    let navmesh = world.build_navmesh(&NavmeshBuild::new(default_agent_type())).unwrap();
+    let down = PathQuery { accept_partial: true, ..PathQuery::new(navmesh, [3.0, 4.2, 0.0], [15.0, 0.0, 0.0], walker()) };
+    let stuck = world.explain_path(&down).unwrap();
+    assert_eq!(stuck.reason, PathShortfallReason::NoLinks, "{:?}", stuck);
+    assert!(stuck.limit == LinkLimit::None && stuck.link == Default::default(), "{:?}", stuck);
+    assert!(stuck.text.contains("the navmesh has no links"), "{:?}", stuck.text);
+    let stroll = world.explain_path(&PathQuery::new(navmesh, [15.0, 0.0, 0.0], [18.0, 0.0, 0.0], walker())).unwrap();
+    assert_eq!(stroll.reason, PathShortfallReason::None, "{:?}", stroll);
+    assert_eq!(stroll.text, "");
 }
 
 #[test]

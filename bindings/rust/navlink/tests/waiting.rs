@@ -228,6 +228,8 @@ fn enums_keep_values_they_do_not_know() {
         assert_eq!(AgentReason::from_raw(raw).to_raw(), raw);
         assert_eq!(AgentEventKind::from_raw(raw).to_raw(), raw);
         assert_eq!(TrajectoryKind::from_raw(raw).to_raw(), raw);
+        assert_eq!(navlink::PathShortfallReason::from_raw(raw).to_raw(), raw);
+        assert_eq!(navlink::LinkLimit::from_raw(raw).to_raw(), raw);
     }
     assert_eq!(PathOutcome::from_raw(navlink::sys::NL_PATH_NO_PATH), PathOutcome::NoPath);
     assert_eq!(PathOutcome::from_raw(99), PathOutcome::Other(99));
@@ -274,4 +276,5 @@ fn settings_and_defs_are_send() {
     assert_send::<navlink::NavmeshRaycastHit>();
     assert_send::<navlink::LinkGenerationReport>();
     assert_send::<navlink::NavmeshFileInfo>();
+    assert_send::<navlink::PathShortfall>();
 }

@@ -29,6 +29,13 @@ namespace NavLink
 
         public static PathResultInfo nl_path_result_init() { var v = default(PathResultInfo); v.Size = (uint)sizeof(PathResultInfo); return v; }
 
+        public static PathShortfallInfo nl_path_shortfall_init()
+        {
+            var v = default(PathShortfallInfo);
+            v.Size = (uint)sizeof(PathShortfallInfo);
+            return v;
+        }
+
         public static PathFinished nl_path_finished_init() { var v = default(PathFinished); v.Size = (uint)sizeof(PathFinished); return v; }
 
         public static PathQueueStats nl_path_queue_stats_init() { var v = default(PathQueueStats); v.Size = (uint)sizeof(PathQueueStats); return v; }

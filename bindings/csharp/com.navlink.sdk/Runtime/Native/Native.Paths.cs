@@ -15,6 +15,11 @@ namespace NavLink
         public static extern StatusCode nl_path_find(IntPtr world, PathRequestDef* def, PathResultInfo* outResult,
                                                PathPoint* outPoints, uint capacity, uint* outCount);
 
+        /// <summary>outShortfall: Native.nl_path_shortfall_init() (Size set). Plans the request as nl_path_find
+        /// does and, for a Partial or NoPath outcome, says why (PathShortfallReason.None otherwise).</summary>
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        public static extern StatusCode nl_path_explain(IntPtr world, PathRequestDef* def, PathShortfallInfo* outShortfall);
+
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         public static extern StatusCode nl_path_request(IntPtr world, PathRequestDef* def, PathTicket* outTicket);
 

@@ -139,6 +139,41 @@ namespace NavLink
         Failed = 7u,
     }
 
+    /// <summary>nl_path_shortfall.reason: why a path falls short of its goal (World.ExplainPath).</summary>
+    public enum PathShortfallReason : uint
+    {
+        /// <summary>It reaches the goal, or an end is off the navmesh (the outcome says so).</summary>
+        None = 0u,
+        /// <summary>MaxNodes stopped the search.</summary>
+        OutOfNodes = 1u,
+        /// <summary>A body of the navmesh's radius would get there: passages on the way are too narrow for this one.</summary>
+        BodyTooWide = 2u,
+        /// <summary>Areas the request keeps the body out of stand in the way.</summary>
+        AreasExcluded = 3u,
+        /// <summary>A link would get there, and the body cannot take it (Limit, Needed, Has, Link).</summary>
+        LinkBeyondBody = 4u,
+        /// <summary>The goal is on another island of the navmesh, and the navmesh has no links.</summary>
+        NoLinks = 5u,
+        /// <summary>No passage or link leads there, whatever the body.</summary>
+        NotConnected = 6u,
+    }
+
+    /// <summary>nl_path_shortfall.limit: what a link asks that the body lacks (PathShortfallReason.LinkBeyondBody).</summary>
+    public enum LinkLimit : uint
+    {
+        None = 0u,
+        /// <summary>The gap, against MaxJumpDistance.</summary>
+        JumpDistance = 1u,
+        /// <summary>The rise, against MaxJumpHeight.</summary>
+        JumpHeight = 2u,
+        /// <summary>The drop, against MaxDropHeight.</summary>
+        DropHeight = 3u,
+        /// <summary>The body's diameter, against the link's clearance.</summary>
+        Width = 4u,
+        /// <summary>Ability bits the body lacks (MissingAbilities).</summary>
+        Abilities = 5u,
+    }
+
     /// <summary>nl_agent_state: what an agent is doing.</summary>
     public enum AgentState : uint
     {

@@ -74,6 +74,34 @@ namespace NavLink
         public Vec3 Goal;
     }
 
+    /// <summary>nl_path_shortfall: why a request's path falls short of its goal (Native.nl_path_explain). Get one
+    /// from Native.nl_path_shortfall_init() (Size set) before asking. World.ExplainPath returns a PathShortfall
+    /// instead, with Text as a string.</summary>
+    [StructLayout(LayoutKind.Sequential)]
+    public unsafe struct PathShortfallInfo
+    {
+        public uint Size;
+        public PathShortfallReason Reason;
+        /// <summary>For PathShortfallReason.LinkBeyondBody: what the link asks that the body lacks.</summary>
+        public LinkLimit Limit;
+        /// <summary>LinkBeyondBody: what the link needs, metres (for LinkLimit.Width the body's diameter);
+        /// BodyTooWide: the body's radius.</summary>
+        public float Needed;
+        /// <summary>LinkBeyondBody: what the body can, metres (for LinkLimit.Width the link's clearance);
+        /// BodyTooWide: the navmesh's radius.</summary>
+        public float Has;
+        /// <summary>1 if the link would be taken from its end to its start.</summary>
+        public uint Reversed;
+        /// <summary>LinkLimit.Abilities: the bits the body lacks.</summary>
+        public ulong MissingAbilities;
+        /// <summary>LinkBeyondBody: the link; the null id otherwise.</summary>
+        public LinkId Link;
+        /// <summary>Where the body would take the link, in the world.</summary>
+        public Vec3 LinkStart;
+        /// <summary>The same as a NUL-terminated UTF-8 sentence naming the field to change ("" for None).</summary>
+        public fixed byte Text[256];
+    }
+
     /// <summary>How much World.ProcessPaths (nl_path_process) may do in one call: nl_path_budget. Get one from
     /// World.DefaultPathBudget() (no limits). A request is never split: the budget is checked between
     /// requests, so a call that finds the queue non-empty plans at least one.</summary>
