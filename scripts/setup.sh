@@ -10,6 +10,7 @@ packages=(
   zlib1g-dev  # the CRC-32 of baked navmesh files
   mono-devel python3
   python3-pip python3-venv  # the Python binding's test installs its package with pip, also into a fresh venv
+  python3-numpy  # the Python binding's numpy cases (bindings/python/test_navlink.py; skipped without it)
   clang libclang-rt-14-dev  # the sanitizer build and its libFuzzer targets (docs/testing.md)
   dpkg-dev  # dpkg-shlibdeps: the Debian package's Depends (cpack -G DEB, docs/shipping.md)
   ccache  # scripts/test.sh compiles through it: a second run, or a fresh clone, rebuilds nothing unchanged

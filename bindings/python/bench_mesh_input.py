@@ -54,10 +54,15 @@ def main():
         "array.array": (floats, uints),
         "memoryview (n, 3)": (memoryview(floats).cast("B").cast("f", (len(floats) // 3, 3)), memoryview(uints)),
         "bytes (read-only: copied once)": (floats.tobytes(), uints.tobytes()),
+        "array d/q (converted once)": (array.array("d", vertices), array.array("q", indices)),
+        "lists of (x, y, z) and triangles": ([tuple(vertices[k:k + 3]) for k in range(0, len(vertices), 3)],
+                                             [indices[k:k + 3] for k in range(0, len(indices), 3)]),
     }
     try:
         import numpy
         inputs["numpy float32/uint32"] = (numpy.asarray(floats).reshape(-1, 3), numpy.asarray(uints))
+        inputs["numpy float64/int64 (converted)"] = (numpy.asarray(vertices).reshape(-1, 3),
+                                                     numpy.asarray(indices).reshape(-1, 3))
     except ImportError:
         print("(numpy is not installed for %s: no numpy row)" % sys.executable)
 

@@ -3,15 +3,20 @@
 Two layers:
 - ``lib``: the C ABI as is. Every ``nl_*`` function of navlink.h, recast.h and plugin.h with its prototype,
   and a ctypes.Structure per C struct (class ``MeshDef`` for ``nl_mesh_def``..., fields under their C
-  names; ``C_STRUCTS`` maps C names to classes). Output structs that may grow start with ``size``: a new
-  one (``Link()``...) has it set, as the header's inline ``nl_*_init()`` does (also defined here under
-  those names). For an output array of them the library reads the element size from the FIRST element:
-  ``links = (Link * n)(); links[0] = nl_link_init()`` (ctypes arrays are zeroed, not constructed).
+  names; ``C_STRUCTS`` maps C names to classes; each prints its fields by name, and fields of the
+  header's kinds read as IntEnums: ``AgentInfo.state`` is an ``AgentState``...). Output structs that may
+  grow start with ``size``: a new one (``Link()``...) has it set, as the header's inline ``nl_*_init()``
+  does (also defined here under those names). For an output array of them the library reads the element
+  size from the FIRST element: ``links = (Link * n)(); links[0] = nl_link_init()`` (ctypes arrays are
+  zeroed, not constructed).
 - ``World``: the world as a Python object (a context manager; ``close()`` destroys it). Failures raise
   ``NavLinkError`` with the status and the library's message; lists come back as Python lists; callbacks
-  are Python callables; geometry is taken from lists or, without copying, from any buffer (numpy arrays,
-  ``array.array``, ``memoryview``, ``bytes``); a queued path is a ``PathRequest`` to wait for, await, and
-  release with ``with``.
+  are Python callables; geometry is taken from lists (flat, or of points such as ``[(x, y, z), ...]``),
+  without copying from a buffer of the C type (numpy float32 or uint32 arrays, ``array.array``,
+  ``memoryview``, ``bytes``), and converted once from any other numbers (numpy float64 or int64 arrays...;
+  numpy itself is never imported); a queued path is a ``PathRequest`` to wait for, await, and release with
+  ``with``. States, reasons, kinds and outcomes are IntEnums (``AgentState``, ``PathOutcome``...; the
+  ``AGENT_*``, ``PATH_*``... constants are their members).
 
 The library is the first of: ``NAVLINK_LIBRARY`` (a path to libnavlink.so), pkg-config's ``navlink.pc``
 (its libdir), ``ctypes.util.find_library("navlink")`` (the loader's cache), the installed places
@@ -21,17 +26,20 @@ ImportError lists what was tried. Every World method may be called from several 
 """
 from __future__ import annotations
 
+import collections.abc
 import ctypes
 import ctypes.util
 import enum
 import itertools
 import math
+import numbers
 import os
 import subprocess
 import sys
 import sysconfig
 import threading
 import time
+from array import array as _NumberArray
 from ctypes import (CFUNCTYPE, POINTER, Structure, byref, c_char_p, c_double, c_float, c_int32, c_size_t,
                     c_uint8, c_uint32, c_uint64, c_void_p, sizeof)
 from typing import (TYPE_CHECKING, Any, Callable, Generator, Iterable, List, NamedTuple, Optional, Sequence, Tuple,
@@ -86,8 +94,6 @@ BUILD_WARNING_Z_UP = 0x4
 MAX_POLYGON_VERTICES = 16
 NO_POLYGON = 0xFFFFFFFF
 NO_ISLAND = 0xFFFFFFFF  # World.islands: a polygon in an area the filter excludes
-SEGMENT_WALK = 0
-LINK_JUMP, LINK_DROP, LINK_MANUAL, LINK_FIRST_PLUGIN_KIND = 1, 2, 3, 256
 AREA_EXCLUDED = 0.0
 
 
@@ -148,14 +154,108 @@ LINK_LIMIT_JUMP_HEIGHT = LinkLimit.JUMP_HEIGHT
 LINK_LIMIT_DROP_HEIGHT = LinkLimit.DROP_HEIGHT
 LINK_LIMIT_WIDTH = LinkLimit.WIDTH
 LINK_LIMIT_ABILITIES = LinkLimit.ABILITIES
-(AGENT_IDLE, AGENT_WALKING, AGENT_JUMPING, AGENT_FALLING, AGENT_TRAVERSING, AGENT_WAITING, AGENT_ARRIVED,
- AGENT_FAILED) = range(8)
-(AGENT_REASON_NONE, AGENT_REASON_DESTINATION_SET, AGENT_REASON_LINK_GONE, AGENT_REASON_WORLD_CHANGED,
- AGENT_REASON_OFF_PATH, AGENT_REASON_NO_PATH, AGENT_REASON_NAVMESH_REMOVED, AGENT_REASON_CAPABILITIES_CHANGED,
- AGENT_REASON_CROWD) = range(9)
-TRAJECTORY_NONE, TRAJECTORY_ARC, TRAJECTORY_FALL, TRAJECTORY_LINE = range(4)
-(AGENT_EVENT_PATH_READY, AGENT_EVENT_LINK_STARTED, AGENT_EVENT_LINK_FINISHED, AGENT_EVENT_ARRIVED, AGENT_EVENT_FAILED,
- AGENT_EVENT_REPLANNED, AGENT_EVENT_WAITING) = range(1, 8)
+
+
+# The header's other kinds as IntEnums (each member equal to its number, so comparisons with numbers and the
+# constants below work as before); the module-level constants are their members. Values this module has no
+# name for (a newer library's, a plugin's link kind) come back as plain ints.
+
+class SegmentKind(enum.IntEnum):
+    """How a path goes on from a point (nl_segment_kind: PathPoint.segment): walking, or the kind of link taken
+    (a plugin's link kinds, from LINK_FIRST_PLUGIN_KIND on, come back as ints)."""
+    WALK = 0
+    JUMP = 1
+    DROP = 2
+    MANUAL = 3
+
+
+class LinkKind(enum.IntEnum):
+    """A link's kind (nl_link_kind: Link.kind, LinkDef.kind); equal to the LINK_* constants. Plugin kinds are
+    numbered from LINK_FIRST_PLUGIN_KIND and come back as ints."""
+    JUMP = 1
+    DROP = 2
+    MANUAL = 3
+
+
+class AgentState(enum.IntEnum):
+    """What an agent is doing (nl_agent_state: AgentInfo.state); equal to the AGENT_* constants."""
+    IDLE = 0
+    WALKING = 1
+    JUMPING = 2
+    FALLING = 3
+    TRAVERSING = 4
+    WAITING = 5  # for its path to be planned, for a link's landing to clear, or for room (reason CROWD)
+    ARRIVED = 6
+    FAILED = 7  # reason says why
+
+
+class AgentReason(enum.IntEnum):
+    """Why an agent planned again or failed (nl_agent_reason: AgentInfo.reason, AgentEvent.reason); equal to
+    the AGENT_REASON_* constants."""
+    NONE = 0
+    DESTINATION_SET = 1
+    LINK_GONE = 2
+    WORLD_CHANGED = 3
+    OFF_PATH = 4
+    NO_PATH = 5
+    NAVMESH_REMOVED = 6
+    CAPABILITIES_CHANGED = 7
+    CROWD = 8
+
+
+class AgentEventKind(enum.IntEnum):
+    """What happened to an agent in the last step (nl_agent_event_kind: AgentEvent.kind); equal to the
+    AGENT_EVENT_* constants."""
+    PATH_READY = 1
+    LINK_STARTED = 2
+    LINK_FINISHED = 3
+    ARRIVED = 4
+    FAILED = 5
+    REPLANNED = 6
+    WAITING = 7
+
+
+class TrajectoryKind(enum.IntEnum):
+    """How a link is being taken (nl_agent_trajectory.kind); equal to the TRAJECTORY_* constants."""
+    NONE = 0
+    ARC = 1
+    FALL = 2
+    LINE = 3
+
+
+SEGMENT_WALK = SegmentKind.WALK
+LINK_JUMP = LinkKind.JUMP
+LINK_DROP = LinkKind.DROP
+LINK_MANUAL = LinkKind.MANUAL
+LINK_FIRST_PLUGIN_KIND = 256
+AGENT_IDLE = AgentState.IDLE
+AGENT_WALKING = AgentState.WALKING
+AGENT_JUMPING = AgentState.JUMPING
+AGENT_FALLING = AgentState.FALLING
+AGENT_TRAVERSING = AgentState.TRAVERSING
+AGENT_WAITING = AgentState.WAITING
+AGENT_ARRIVED = AgentState.ARRIVED
+AGENT_FAILED = AgentState.FAILED
+AGENT_REASON_NONE = AgentReason.NONE
+AGENT_REASON_DESTINATION_SET = AgentReason.DESTINATION_SET
+AGENT_REASON_LINK_GONE = AgentReason.LINK_GONE
+AGENT_REASON_WORLD_CHANGED = AgentReason.WORLD_CHANGED
+AGENT_REASON_OFF_PATH = AgentReason.OFF_PATH
+AGENT_REASON_NO_PATH = AgentReason.NO_PATH
+AGENT_REASON_NAVMESH_REMOVED = AgentReason.NAVMESH_REMOVED
+AGENT_REASON_CAPABILITIES_CHANGED = AgentReason.CAPABILITIES_CHANGED
+AGENT_REASON_CROWD = AgentReason.CROWD
+AGENT_EVENT_PATH_READY = AgentEventKind.PATH_READY
+AGENT_EVENT_LINK_STARTED = AgentEventKind.LINK_STARTED
+AGENT_EVENT_LINK_FINISHED = AgentEventKind.LINK_FINISHED
+AGENT_EVENT_ARRIVED = AgentEventKind.ARRIVED
+AGENT_EVENT_FAILED = AgentEventKind.FAILED
+AGENT_EVENT_REPLANNED = AgentEventKind.REPLANNED
+AGENT_EVENT_WAITING = AgentEventKind.WAITING
+TRAJECTORY_NONE = TrajectoryKind.NONE
+TRAJECTORY_ARC = TrajectoryKind.ARC
+TRAJECTORY_FALL = TrajectoryKind.FALL
+TRAJECTORY_LINE = TrajectoryKind.LINE
 PLUGIN_NAVMESH_BUILDER, PLUGIN_LINK_KIND = 0x1, 0x2
 PLUGIN_ABI_VERSION = 1
 PLUGIN_ENTRY_SYMBOL = "nl_plugin_entry"
@@ -202,7 +302,56 @@ TaskFinishFn = CFUNCTYPE(None, c_void_p, c_void_p)
 ProgressFn = CFUNCTYPE(c_int32, c_void_p, c_float, c_char_p)
 
 
-class _Growable(Structure):
+def _shown(value: Any) -> str:
+    """A field's value as a struct's repr shows it: enum members by name, floats short, fixed arrays as
+    tuples, pointers as NULL or an address."""
+    if isinstance(value, enum.Enum):
+        return value.name
+    if isinstance(value, float):
+        return "%.6g" % value
+    if isinstance(value, ctypes.Array):
+        return "(%s)" % ", ".join(_shown(v) for v in value)
+    if isinstance(value, (ctypes._Pointer, ctypes._CFuncPtr)):  # type: ignore[attr-defined]
+        return "0x%x" % ctypes.cast(value, c_void_p).value if value else "NULL"
+    return repr(value)
+
+
+class _Struct(Structure):
+    """A C struct whose repr names its fields and their values (without size and reserved ones)."""
+
+    def __repr__(self) -> str:
+        shown = ["%s=%s" % (name, _shown(getattr(self, name))) for name, *_ in self._fields_
+                 if name != "size" and not name.startswith("reserved")]
+        return "%s(%s)" % (type(self).__name__, ", ".join(shown))
+
+
+class _EnumField:
+    """A struct field of one of the header's kinds, read as a member of its IntEnum (or the number itself, for
+    a value newer than this module) and written as a number. Keeps the ctypes field's offset and size."""
+
+    def __init__(self, field: Any, kind: Any) -> None:
+        self.field = field
+        self.kind = kind
+        self.offset, self.size = field.offset, field.size
+        self.members = {member.value: member for member in kind}
+
+    def __get__(self, struct: Any, owner: Any = None) -> Any:
+        if struct is None:
+            return self
+        value = self.field.__get__(struct, owner)
+        return self.members.get(value, value)
+
+    def __set__(self, struct: Any, value: Any) -> None:
+        self.field.__set__(struct, value)
+
+
+def _read_as_enums(struct_type: Any, **kinds: Any) -> None:
+    """Makes the named fields of struct_type read as their IntEnums."""
+    for name, kind in kinds.items():
+        setattr(struct_type, name, _EnumField(struct_type.__dict__[name], kind))
+
+
+class _Growable(_Struct):
     """An output struct that may grow (``size`` first). A new one has ``size`` set to this module's
     sizeof, as the header's nl_*_init() does, unless a size or positional values are given."""
 
@@ -212,11 +361,11 @@ class _Growable(Structure):
             self.size = sizeof(self)
 
 
-class Version(Structure):
+class Version(_Struct):
     _fields_ = [("major", c_int32), ("minor", c_int32), ("patch", c_int32)]
 
 
-class WorldDef(Structure):
+class WorldDef(_Struct):
     _fields_ = [("size", c_uint32), ("worker_count", c_int32), ("log_fn", LogFn), ("log_user", c_void_p),
                 ("log_level", c_uint32), ("reserved", c_uint32),
                 ("path_worker_count", c_int32), ("task_enqueue_fn", TaskEnqueueFn),
@@ -224,8 +373,14 @@ class WorldDef(Structure):
                 ("reserved2", c_uint32)]
 
 
-class _Id(Structure):
+class _Id(_Struct):
+    """An id ({index1, generation}, passed by value). Prints as MeshId(index=3, generation=1): the slot index
+    and how many times the slot has been used, read from the two fields (MeshId(null) for the null id)."""
     _fields_ = [("index1", c_uint32), ("generation", c_uint32)]
+    # docs/c-api.md, "Ids": index1's low 28 bits are the slot index + 1 (its top 4 the kind of object), and
+    # generation's low 20 bits count the slot's reuse (its top 12 name the world). For reading ids only.
+    _SLOT_MASK = (1 << 28) - 1
+    _GENERATION_MASK = (1 << 20) - 1
 
     def __eq__(self, other: object) -> bool:
         if type(self) is not type(other):
@@ -236,18 +391,26 @@ class _Id(Structure):
         return hash((type(self).__name__, self.index1, self.generation))
 
     def __repr__(self) -> str:
-        return "%s(%d, %d)" % (type(self).__name__, self.index1, self.generation)
+        if self.is_null:
+            return "%s(null)" % type(self).__name__
+        return "%s(index=%d, generation=%d)" % (
+            type(self).__name__, self.slot_index, self.generation & self._GENERATION_MASK)
 
     @property
     def is_null(self) -> bool:
         return self.index1 == 0
+
+    @property
+    def slot_index(self) -> int:
+        """The index of the object's slot, from 0 (-1 for the null id): what the repr shows, for reading only."""
+        return (self.index1 & self._SLOT_MASK) - 1
 
 
 class MeshId(_Id):
     pass
 
 
-class MeshDef(Structure):
+class MeshDef(_Struct):
     _fields_ = [("size", c_uint32), ("vertices", POINTER(c_float)), ("vertex_count", c_uint32),
                 ("vertex_stride", c_uint32), ("indices", POINTER(c_uint32)), ("triangle_count", c_uint32),
                 ("flags", c_uint32), ("transform", POINTER(c_float)), ("user_data", c_uint64), ("area", c_uint32),
@@ -261,7 +424,7 @@ class MeshInfo(_Growable):
                 ("reserved", c_uint32), ("metres_per_unit", c_float), ("up_axis", c_uint32)]
 
 
-class Ray(Structure):
+class Ray(_Struct):
     _fields_ = [("origin", Vec3), ("direction", Vec3), ("max_distance", c_float)]
 
 
@@ -270,7 +433,7 @@ class RayHit(_Growable):
                 ("triangle", c_uint32), ("hit", c_uint8), ("reserved", c_uint8 * 3)]
 
 
-class Segment(Structure):
+class Segment(_Struct):
     _fields_ = [("from", Vec3), ("to", Vec3)]
 
 
@@ -278,11 +441,11 @@ class NavmeshId(_Id):
     pass
 
 
-class AgentType(Structure):
+class AgentType(_Struct):
     _fields_ = [("radius", c_float), ("height", c_float), ("max_climb", c_float), ("max_slope", c_float)]
 
 
-class NavmeshDef(Structure):
+class NavmeshDef(_Struct):
     _fields_ = [("size", c_uint32), ("vertices", POINTER(c_float)), ("vertex_count", c_uint32),
                 ("vertex_stride", c_uint32), ("indices", POINTER(c_uint32)),
                 ("polygon_vertex_counts", POINTER(c_uint8)), ("polygon_count", c_uint32),
@@ -307,19 +470,19 @@ class NavPolygon(_Growable):
                 ("centre", Vec3)]
 
 
-class BoundaryEdge(Structure):
+class BoundaryEdge(_Struct):
     _fields_ = [("start", Vec3), ("end", Vec3), ("outward", Vec3), ("normal", Vec3), ("polygon", c_uint32),
                 ("edge", c_uint32)]
 
 
-class NavPoint(Structure):
+class NavPoint(_Struct):
     """nl_nav_point. found = 0 with beyond_box = 1 (0.3): the navmesh's nearest point lies beyond the search box,
     and point and distance give it (polygon stays NO_POLYGON)."""
     _fields_ = [("point", Vec3), ("distance", c_float), ("polygon", c_uint32), ("found", c_uint8),
                 ("beyond_box", c_uint8), ("reserved", c_uint8 * 2)]
 
 
-class NavmeshBuildDef(Structure):
+class NavmeshBuildDef(_Struct):
     _fields_ = [("size", c_uint32), ("builder", c_char_p), ("agent", AgentType), ("settings", c_void_p),
                 ("settings_json", c_char_p), ("settings_json_length", c_size_t), ("surface", MeshId),
                 ("progress", ProgressFn), ("progress_user", c_void_p)]
@@ -329,7 +492,7 @@ class LinkId(_Id):
     pass
 
 
-class LinkRequirements(Structure):
+class LinkRequirements(_Struct):
     _fields_ = [("gap", c_float), ("rise", c_float), ("drop", c_float), ("clearance_width", c_float),
                 ("abilities", c_uint64), ("length", c_float), ("reserved", c_uint32)]
 
@@ -343,7 +506,7 @@ class Link(_Growable):
                 ("holds", c_uint8), ("reserved3", c_uint8 * 3)]
 
 
-class LinkDef(Structure):
+class LinkDef(_Struct):
     _fields_ = [("size", c_uint32), ("kind", c_uint32), ("start", Vec3), ("end", Vec3),
                 ("bidirectional", c_uint8), ("enabled", c_uint8), ("requirements_as_given", c_uint8),
                 ("reserved", c_uint8), ("cost_modifier", c_float), ("user_data", c_uint64),
@@ -351,7 +514,7 @@ class LinkDef(Structure):
                 ("reserved2", c_uint32)]
 
 
-class LinkSettings(Structure):
+class LinkSettings(_Struct):
     _fields_ = [("size", c_uint32), ("min_edge_length", c_float), ("min_group_size", c_uint32),
                 ("max_group_size", c_uint32), ("sample_spacing", c_float), ("falloff_distance", c_float),
                 ("max_jump_gap", c_float), ("min_link_distance", c_float), ("short_link_distance", c_float),
@@ -378,11 +541,11 @@ class LinkGenerationReport(_Growable):
         "rejected_walkable", "rejected_too_shallow", "rejected_too_deep", "reserved")]
 
 
-class NavmeshLoadDef(Structure):
+class NavmeshLoadDef(_Struct):
     _fields_ = [("size", c_uint32), ("surface", MeshId), ("flags", c_uint32)]
 
 
-class NavmeshFileInfo(Structure):
+class NavmeshFileInfo(_Struct):
     """What a navmesh file holds (nl_navmesh_file_describe). Not an nl_*_init struct: set `size` before a
     raw call (describe_navmesh_file does)."""
     _fields_ = [("size", c_uint32), ("version", c_uint32), ("file_size", c_uint64), ("agent", AgentType),
@@ -395,7 +558,7 @@ class PathTicket(_Id):
     pass
 
 
-class AgentCapabilities(Structure):
+class AgentCapabilities(_Struct):
     _fields_ = [("max_jump_distance", c_float), ("max_jump_height", c_float), ("max_drop_height", c_float),
                 ("radius", c_float), ("abilities", c_uint64)]
 
@@ -403,7 +566,7 @@ class AgentCapabilities(Structure):
 PathCallback = CFUNCTYPE(None, c_void_p, PathTicket, c_uint32)
 
 
-class PathRequestDef(Structure):
+class PathRequestDef(_Struct):
     _fields_ = [("size", c_uint32), ("navmesh", NavmeshId), ("start", Vec3), ("goal", Vec3),
                 ("search_half_extents", Vec3), ("agent", AgentCapabilities), ("area_costs", POINTER(c_float)),
                 ("area_cost_count", c_uint32), ("link_cost", c_float), ("max_nodes", c_uint32),
@@ -412,6 +575,8 @@ class PathRequestDef(Structure):
 
 
 class PathPoint(_Growable):
+    """nl_path_point: segment (a SegmentKind, or a plugin's link kind as an int) says how the path goes on from
+    position: walking, or taking `link`."""
     _fields_ = [("size", c_uint32), ("position", Vec3), ("polygon", c_uint32), ("segment", c_uint32), ("link", LinkId),
                 ("apex", Vec3), ("reversed", c_uint8), ("reserved", c_uint8 * 3), ("surface_position", Vec3)]
 
@@ -431,7 +596,7 @@ class PathShortfallInfo(_Growable):
                 ("text", ctypes.c_char * 256)]
 
 
-class PathBudget(Structure):
+class PathBudget(_Struct):
     """nl_path_budget: how much nl_path_process may do (default_path_budget(): no limits)."""
     _fields_ = [("size", c_uint32), ("max_requests", c_uint32), ("max_milliseconds", c_double),
                 ("max_search_nodes", c_uint64)]
@@ -447,14 +612,14 @@ class PathQueueStats(_Growable):
                 ("unreleased", c_uint32), ("reserved", c_uint32), ("submitted", c_uint64), ("finished", c_uint64)]
 
 
-class QueryFilterDef(Structure):
+class QueryFilterDef(_Struct):
     """nl_query_filter: the body a navmesh query is for, raw (area_costs borrowed for the call). Start from
     lib.nl_default_query_filter() (it sets size); World's query methods take a QueryFilter instead."""
     _fields_ = [("size", c_uint32), ("agent", AgentCapabilities), ("area_costs", POINTER(c_float)),
                 ("area_cost_count", c_uint32), ("reserved", c_uint32)]
 
 
-class NavmeshRay(Structure):
+class NavmeshRay(_Struct):
     """nl_navmesh_ray: one straight walk for World.raycast_batch: `start` over `start_polygon` (from
     find_nearest), towards `end`. NavmeshRay(start, start_polygon, end) takes any (x, y, z) sequences."""
     _fields_ = [("start", Vec3), ("start_polygon", c_uint32), ("end", Vec3)]
@@ -471,7 +636,7 @@ class NavmeshRaycastHit(_Growable):
                 ("wall_normal", Vec3), ("end_polygon", c_uint32), ("polygon_count", c_uint32)]
 
 
-class RandomPointsDef(Structure):
+class RandomPointsDef(_Struct):
     """nl_random_points_def, raw (filter borrowed for the call). Start from lib.nl_default_random_points_def()
     (it sets size); World.random_points takes its fields as arguments."""
     _fields_ = [("size", c_uint32), ("filter", POINTER(QueryFilterDef)), ("centre", Vec3), ("radius", c_float),
@@ -482,7 +647,7 @@ class AgentId(_Id):
     pass
 
 
-class AgentDef(Structure):
+class AgentDef(_Struct):
     """nl_agent_def: how to add an agent (default_agent_def(): set navmesh and position). Since 0.3,
     give_up_seconds (default 0: never): held up this long by bodies heading the other way without getting 1 m
     nearer its destination along its path, it gives the destination up (AGENT_FAILED, AGENT_REASON_CROWD)."""
@@ -493,7 +658,7 @@ class AgentDef(Structure):
 
 
 class AgentInfo(_Growable):
-    """nl_agent_info: an agent's state (state: AGENT_*, reason: AGENT_REASON_*). Since 0.3, where it stands:
+    """nl_agent_info: an agent's state (state: an AgentState, reason: an AgentReason). Since 0.3, where it stands:
     navmesh (the one it stands on now; it changes when it takes a cross link; in the air, the one it took
     off from), surface (the MESH_MOVABLE mesh that navmesh rides, .is_null: none) and surface_position
     (position in that mesh's own space, to parent the body to the platform; position itself on no surface
@@ -506,13 +671,14 @@ class AgentInfo(_Growable):
 
 
 class AgentTrajectory(_Growable):
-    """nl_agent_trajectory: the link an agent is taking (kind: TRAJECTORY_*), with its timing."""
+    """nl_agent_trajectory: the link an agent is taking (kind: a TrajectoryKind), with its timing."""
     _fields_ = [("size", c_uint32), ("kind", c_uint32), ("link", LinkId), ("from", Vec3), ("to", Vec3),
                 ("apex", Vec3), ("points", Vec3 * 4), ("duration", c_float), ("elapsed", c_float)]
 
 
 class AgentEvent(_Growable):
-    """nl_agent_event: what happened to an agent in the last step (kind: AGENT_EVENT_*)."""
+    """nl_agent_event: what happened to an agent in the last step (kind: an AgentEventKind, reason: an
+    AgentReason)."""
     _fields_ = [("size", c_uint32), ("kind", c_uint32), ("agent", AgentId), ("link", LinkId), ("reason", c_uint32),
                 ("reserved", c_uint32), ("user_data", c_uint64)]
 
@@ -526,7 +692,7 @@ class PluginDescription(_Growable):
                 ("name", c_char_p), ("version", c_char_p), ("description", c_char_p)]
 
 
-class RecastSettings(Structure):
+class RecastSettings(_Struct):
     _fields_ = [("size", c_uint32), ("cell_size", c_float), ("cell_height", c_float), ("region_min_size", c_float),
                 ("region_merge_size", c_float), ("edge_max_length", c_float), ("edge_max_error", c_float),
                 ("vertices_per_polygon", c_uint32), ("detail_sample_distance", c_float),
@@ -552,7 +718,7 @@ HostGetBuildTrianglesFn = CFUNCTYPE(c_uint32, c_void_p, POINTER(c_float), c_uint
 HostReportBuildProgressFn = CFUNCTYPE(c_uint32, c_void_p, c_float, c_char_p)
 
 
-class PluginHost(Structure):
+class PluginHost(_Struct):
     _fields_ = [("size", c_uint32), ("abi_version", c_uint32), ("context", c_void_p), ("log", HostLogFn),
                 ("set_error", HostSetErrorFn), ("get_level_triangles", HostGetLevelTrianglesFn),
                 ("navmesh_get_boundary_edges", HostBoundaryEdgesFn), ("navmesh_get_info", HostNavmeshInfoFn),
@@ -568,15 +734,15 @@ LinkGenerateFn = CFUNCTYPE(c_uint32, c_void_p, POINTER(PluginHost), NavmeshId, c
 PluginDestroyFn = CFUNCTYPE(None, c_void_p)
 
 
-class NavmeshBuilder(Structure):
+class NavmeshBuilder(_Struct):
     _fields_ = [("build", NavmeshBuildFn)]
 
 
-class LinkKindProvider(Structure):
+class LinkKindProvider(_Struct):
     _fields_ = [("kind", c_uint32), ("kind_name", c_char_p), ("generate", LinkGenerateFn)]
 
 
-class PluginInfo(Structure):
+class PluginInfo(_Struct):
     _fields_ = [("size", c_uint32), ("abi_version", c_uint32), ("name", c_char_p), ("version", c_char_p),
                 ("description", c_char_p), ("kinds", c_uint32), ("state", c_void_p), ("destroy", PluginDestroyFn),
                 ("navmesh_builder", NavmeshBuilder), ("link_kind", LinkKindProvider)]
@@ -604,6 +770,17 @@ C_STRUCTS = {
     "nl_plugin_host": PluginHost, "nl_navmesh_builder": NavmeshBuilder,
     "nl_link_kind_provider": LinkKindProvider, "nl_plugin_info": PluginInfo,
 }
+
+# Fields of the header's kinds read as their IntEnums (AgentInfo.state is an AgentState...); set as numbers.
+_read_as_enums(PathPoint, segment=SegmentKind)
+_read_as_enums(PathResultInfo, outcome=PathOutcome)
+_read_as_enums(PathFinished, outcome=PathOutcome)
+_read_as_enums(PathShortfallInfo, reason=PathShortfallReason, limit=LinkLimit)
+_read_as_enums(Link, kind=LinkKind)
+_read_as_enums(LinkDef, kind=LinkKind)
+_read_as_enums(AgentInfo, state=AgentState, reason=AgentReason)
+_read_as_enums(AgentEvent, kind=AgentEventKind, reason=AgentReason)
+_read_as_enums(AgentTrajectory, kind=TrajectoryKind)
 
 # ---------------------------------------------------------------------------------------------------------
 # Functions: every public nl_* function with its prototype.
@@ -943,76 +1120,170 @@ def _two_call(call: Callable[[Any, int, Any], int], item_type: Any) -> list:
 
 
 # ---------------------------------------------------------------------------------------------------------
-# Arrays handed to C: lists and tuples are converted; buffers (numpy arrays, array.array, memoryview, bytes)
-# are read in place, as the library copies what it keeps before the call returns.
+# Arrays handed to C: lists and tuples (flat or of rows) are converted; buffers of the C type (numpy arrays,
+# array.array, memoryview, bytes) are read in place, as the library copies what it keeps before the call
+# returns; buffers of other numbers are converted once.
 # ---------------------------------------------------------------------------------------------------------
 
-FloatValues = Union[Sequence[float], Buffer]
-IndexValues = Union[Sequence[int], Buffer]
+FloatValues = Union[Sequence[float], Sequence[Sequence[float]], Buffer]  # flat, in rows, or a buffer
+IndexValues = Union[Sequence[int], Sequence[Sequence[int]], Buffer]
 ByteValues = Union[Sequence[int], Buffer]
 Point = Union[Sequence[float], Buffer]  # x y z
 LogHandler = Callable[[int, int, str], None]  # (level, status, message)
 ProgressHandler = Callable[[float, str], Any]  # (fraction, stage) -> false to cancel
 PathHandler = Callable[["PathTicket", Union["PathOutcome", int]], None]  # (ticket, outcome)
 
-# The struct codes of a buffer's items each C type takes (numpy float32 'f', uint32 'I', int32 'i'; 'L' and 'l'
-# where long is 4 bytes); a buffer of raw bytes is taken for any type, as that type's items in native order.
-_ACCEPTED_FORMATS = {c_float: ("f", "32-bit floats (numpy.float32, array('f'))"),
-                     c_uint32: ("IiLl", "32-bit integers (numpy.uint32 or int32, array('I'))"),
-                     c_uint8: ("Bbc", "bytes (numpy.uint8, array('B'), bytes)")}
+# A buffer's items each C type takes in place, by struct code (numpy float32 'f', uint32 'I', int32 'i'; 'L'
+# and 'l' where long is 4 bytes); a buffer of raw bytes is taken for any type, as that type's items in native
+# order. Any other numbers (numpy float64, int64, uint16..., array('d'), a strided or byte-swapped view,
+# nested lists of points) are converted once, to the array.array of the C type's code: floats to 32-bit
+# floats, integers to 32-bit unsigned ones (or bytes) with their range checked.
+_IN_PLACE_FORMATS = {c_float: "f", c_uint32: "IiLl", c_uint8: "Bbc"}
+_ARRAY_CODES = {c_float: "f", c_uint32: "I", c_uint8: "B"}
+_EXPECTED = {c_float: "numbers", c_uint32: "integers from 0 to 4294967295", c_uint8: "integers from 0 to 255"}
 _RAW_BYTE_FORMATS = "Bbc"
 _NATIVE_ORDER_PREFIXES = "@=" + ("<" if sys.byteorder == "little" else ">")
+_NUMBER_CODES = "bBhHiIlLqQfd"  # the struct codes array.array reads from bytes (in native sizes)
 
 
 class _CArray(NamedTuple):
     items: Any  # a ctypes array over the caller's buffer when it is writable, else a copy
     count: int  # its items
-    row: int    # items per row: a 2-D buffer's last dimension, else the group asked for
+    row: int    # items per row: a 2-D buffer's (or nested rows') last dimension, else the group asked for
 
 
 def _c_array(name: str, values: Any, item: Any, group: int = 1, wider_rows: bool = False,
              length: Optional[int] = None) -> _CArray:
     """`values` as a ctypes array of `item` for C to read, named `name` in errors. A multiple of `group`
-    items (rows of `group` in a 2-D buffer; of `group` or more with wider_rows, the row's length given back
-    for the C stride), or exactly `length`."""
+    items (rows of `group` in a 2-D buffer or in nested sequences; of `group` or more with wider_rows, the
+    row's length given back for the C stride; with group 1, rows of any length are read one after the
+    other), or exactly `length`. Taken: lists and tuples of numbers or of rows of numbers ([x, y, z]
+    lists or tuples, numpy rows...); any buffer, read in place when its items are the C type's, else
+    converted once; an object with tolist() (an array-like without the buffer protocol); another iterable."""
     if isinstance(values, (list, tuple)):
-        try:
-            items = (item * len(values))(*values)
-        except TypeError as e:
-            raise TypeError("%s: %s" % (name, e)) from None
-        return _checked_length(name, _CArray(items, len(values), group), group, length)
+        return _from_numbers(name, values, item, group, wider_rows, length)
+    if isinstance(values, str):
+        raise TypeError("%s: numbers expected (a list, a tuple, rows of them or a buffer), not str" % name)
     try:
         view = memoryview(values)
     except TypeError:
-        raise TypeError("%s: a list, a tuple or a buffer (numpy array, array.array, memoryview, bytes) expected, "
-                        "not %s" % (name, type(values).__name__)) from None
-    codes, description = _ACCEPTED_FORMATS[item]
+        view = None
+    if view is not None:
+        in_place = _buffer_in_place(name, view, item, group, wider_rows, length)
+        if in_place is not None:
+            return in_place
+        numbers, rows_of = _buffer_numbers(name, view, values)
+        return _from_numbers(name, numbers, item, group, wider_rows, length, rows_of)
+    tolist = getattr(values, "tolist", None)
+    if callable(tolist):
+        listed = tolist()
+        return _from_numbers(name, listed if isinstance(listed, (list, tuple)) else [listed], item, group,
+                             wider_rows, length)
+    if isinstance(values, collections.abc.Iterable) and not isinstance(values, (dict, set, frozenset)):
+        return _from_numbers(name, list(values), item, group, wider_rows, length)
+    raise TypeError("%s: numbers expected: a list or tuple (flat, or of rows such as [x, y, z]), a buffer (numpy "
+                    "array, array.array, memoryview, bytes) or an array with tolist(), not %s" % (
+                        name, type(values).__name__))
+
+
+def _rows_checked(name: str, row: int, group: int, wider_rows: bool, shape: Any = None) -> int:
+    """The row length C reads with: `row` (a 2-D buffer's or nested rows' last dimension) when it fits the
+    group, the group for group 1 (rows read one after the other); ValueError otherwise."""
+    if group == 1:
+        return 1
+    if row != group and not (wider_rows and row > group):
+        given = "a buffer of shape %s" % (tuple(shape),) if shape is not None else "rows of %d values" % row
+        raise ValueError("%s: %s; rows of %d%s expected" % (name, given, group, " or more" if wider_rows else ""))
+    return row
+
+
+def _buffer_in_place(name: str, view: memoryview, item: Any, group: int, wider_rows: bool,
+                     length: Optional[int]) -> Optional[_CArray]:
+    """A buffer whose items are the C type's (or raw bytes) as a ctypes array over it (a copy when it is
+    read-only, strided or misaligned); None for other numbers, to be converted."""
     size = sizeof(item)
     raw = view.format in _RAW_BYTE_FORMATS
-    if not raw and (view.format.lstrip(_NATIVE_ORDER_PREFIXES) not in codes or view.itemsize != size):
-        raise TypeError("%s: %s expected, not a buffer of format %r (%d bytes an item)" % (
-            name, description, view.format, view.itemsize))
-    if not view.c_contiguous:
-        raise ValueError("%s: the buffer is not C-contiguous (a strided view): pass a contiguous copy, e.g. "
-                         "numpy.ascontiguousarray(%s)" % (name, name))
+    if not raw and (view.format.lstrip(_NATIVE_ORDER_PREFIXES) not in _IN_PLACE_FORMATS[item]
+                    or view.itemsize != size):
+        return None
     if view.nbytes % size:
         raise ValueError("%s: %d bytes, not a whole number of %d-byte items" % (name, view.nbytes, size))
     row = group
     if view.ndim > 1 and not raw:
-        row = view.shape[-1]
-        if row != group and not (wider_rows and row > group):
-            raise ValueError("%s: a buffer of shape %s; rows of %d%s expected" % (
-                name, tuple(view.shape), group, " or more" if wider_rows else ""))
+        row = _rows_checked(name, view.shape[-1], group, wider_rows, view.shape)
     count = view.nbytes // size
-    flat = view.cast("B")
-    if view.readonly:
+    if not view.c_contiguous:
+        # A strided view (a numpy slice, a transposed array): its items in C order, one copy.
+        items = (item * count).from_buffer_copy(view.tobytes())
+    elif view.readonly:
         # ctypes hands C a pointer only into writable memory: one copy.
-        items = (item * count).from_buffer_copy(flat)
+        items = (item * count).from_buffer_copy(view.cast("B"))
     else:
+        flat = view.cast("B")
         items = (item * count).from_buffer(flat)
         if ctypes.addressof(items) % ctypes.alignment(item):
             items = (item * count).from_buffer_copy(flat)  # a slice at an odd offset: C needs aligned items
     return _checked_length(name, _CArray(items, count, row), row, length)
+
+
+def _buffer_numbers(name: str, view: memoryview, values: Any) -> Tuple[Any, Optional[int]]:
+    """A buffer of other numbers, read: (an array.array of its items in C order and the length of its rows,
+    or None for a flat one) when array.array reads its format, else (its tolist(): nested lists, None)."""
+    code = view.format.lstrip(_NATIVE_ORDER_PREFIXES)
+    if len(code) == 1 and code in _NUMBER_CODES and _NumberArray(code).itemsize == view.itemsize:
+        items = _NumberArray(code)
+        items.frombytes(view.tobytes() if not view.c_contiguous else view.cast("B"))
+        return items, view.shape[-1] if view.ndim > 1 else None
+    try:
+        return view.tolist(), None  # half floats, bools...
+    except (NotImplementedError, TypeError, ValueError):
+        tolist = getattr(values, "tolist", None)  # a byte-swapped numpy array: numpy reads it
+        if callable(tolist):
+            return tolist(), None
+    raise TypeError("%s: numbers expected, not a buffer of format %r (%d bytes an item)" % (
+        name, view.format, view.itemsize))
+
+
+def _from_numbers(name: str, values: Any, item: Any, group: int, wider_rows: bool, length: Optional[int],
+                  rows_of: Optional[int] = None) -> _CArray:
+    """Numbers as a C array of `item`, converted once (an array.array of its code; ints out of the C type's
+    range and floats for integers refused): `values` flat, or rows of numbers (lists, tuples, numpy rows,
+    Vec3s...), flattened; rows_of: the rows' length of flat `values` read from a 2-D buffer."""
+    if rows_of is None and len(values) and not isinstance(values[0], numbers.Number):
+        rows = values if set(map(type, values)) <= {list, tuple} else [_row(name, r) for r in values]
+        lengths = sorted(set(map(len, rows)))
+        if group > 1 and len(lengths) > 1:
+            raise ValueError("%s: rows of %s values; rows of one length (%d%s) expected" % (
+                name, " and ".join(str(n) for n in lengths), group, " or more" if wider_rows else ""))
+        rows_of = lengths[-1] if lengths else None
+        values = [c for r in rows for c in r]
+    row = group if rows_of is None else _rows_checked(name, rows_of, group, wider_rows)
+    try:
+        converted = _NumberArray(_ARRAY_CODES[item], values)
+    except OverflowError as e:
+        raise ValueError("%s: %s expected (%s)" % (name, _EXPECTED[item], e)) from None
+    except TypeError as e:
+        raise TypeError("%s: %s expected (%s)" % (name, _EXPECTED[item], e)) from None
+    count = len(converted)
+    items = (item * count).from_buffer(converted) if count else (item * 0)()
+    return _checked_length(name, _CArray(items, count, row), row, length)
+
+
+def _row(name: str, row: Any) -> Sequence[Any]:
+    """One row of nested input (a point's x y z, a triangle's corners) as a sequence of numbers."""
+    if isinstance(row, (list, tuple)):
+        return row
+    if isinstance(row, (str, bytes)):
+        raise TypeError("%s: numbers or rows of numbers expected, not %s" % (name, type(row).__name__))
+    tolist = getattr(row, "tolist", None)
+    if callable(tolist):
+        listed = tolist()
+        if isinstance(listed, list):
+            return listed
+    try:
+        return list(row)
+    except TypeError:
+        raise TypeError("%s: numbers or rows of numbers expected, not %s" % (name, type(row).__name__)) from None
 
 
 def _checked_length(name: str, array: _CArray, row: int, length: Optional[int]) -> _CArray:
@@ -1034,8 +1305,6 @@ def _point(values: FloatValues, name: str) -> Any:
 
 def _points(name: str, points: Union[Sequence[Sequence[float]], FloatValues]) -> _CArray:
     """Points as (x, y, z) sequences, flat x y z values, or a buffer of them."""
-    if isinstance(points, (list, tuple)) and points and not isinstance(points[0], (int, float)):
-        points = [c for p in points for c in p]
     return _c_array(name, points, c_float, group=3)
 
 
@@ -1234,15 +1503,16 @@ def link_settings_from_json(json: str, base: Optional[LinkSettings] = None) -> L
 
 
 class PathQuery:
-    """One path request, with nl_default_path_request_def's defaults. area_costs: cost per metre walked in
-    area i (a list or a buffer of 32-bit floats)."""
+    """One path request, with nl_default_path_request_def's defaults. start, goal: x y z (a tuple, a list, a
+    numpy array of any float type...). area_costs: cost per metre walked in area i (a list or a buffer of
+    numbers)."""
 
-    def __init__(self, navmesh: NavmeshId, start: Sequence[float], goal: Sequence[float],
-                 agent: AgentCapabilities) -> None:
+    def __init__(self, navmesh: NavmeshId, start: Point, goal: Point, agent: AgentCapabilities) -> None:
         d = lib.nl_default_path_request_def()
         self.navmesh = navmesh
         self.start: Tuple[float, ...] = tuple(start)
         self.goal: Tuple[float, ...] = tuple(goal)
+        _point(self.start, "start"), _point(self.goal, "goal")  # refused here rather than when planned
         self.search_half_extents: Tuple[float, ...] = tuple(d.search_half_extents)
         self.agent = agent
         self.area_costs: FloatValues = []
@@ -1253,9 +1523,9 @@ class PathQuery:
     def _def(self) -> Tuple[PathRequestDef, _CArray]:
         d = lib.nl_default_path_request_def()
         d.navmesh = self.navmesh
-        d.start = Vec3(*self.start)
-        d.goal = Vec3(*self.goal)
-        d.search_half_extents = Vec3(*self.search_half_extents)
+        d.start = _point(self.start, "start")
+        d.goal = _point(self.goal, "goal")
+        d.search_half_extents = _point(self.search_half_extents, "search_half_extents")
         d.agent = self.agent
         costs = _c_array("area_costs", self.area_costs, c_float)
         d.area_costs = _pointer(costs, c_float) if costs.count else None
@@ -1305,7 +1575,10 @@ class FinishedPath(NamedTuple):
 
 
 class PathResult:
-    """What a finished request found: `info` (nl_path_result) and its `points`."""
+    """What a finished request found: `info` (nl_path_result) and its `points` (PathPoints), with info's
+    figures read as attributes: outcome (a PathOutcome), length and cost (of the path found), links_used,
+    nodes_visited, out_of_nodes, status, start and goal (snapped to the navmesh), and positions (each
+    point's (x, y, z)). Prints as PathResult(outcome=COMPLETE, length=58.90 m, points=12, links=1)."""
 
     def __init__(self, info: PathResultInfo, points: List[PathPoint]) -> None:
         self.info = info
@@ -1314,6 +1587,53 @@ class PathResult:
     @property
     def outcome(self) -> Union[PathOutcome, int]:
         return _outcome(self.info.outcome)
+
+    @property
+    def length(self) -> float:
+        """Metres walked, from point to point along the navmesh surface (a link's straight chord)."""
+        return self.info.length
+
+    @property
+    def cost(self) -> float:
+        """What the path costs: its metres seen from above times each area's cost, plus the links' costs."""
+        return self.info.cost
+
+    @property
+    def links_used(self) -> int:
+        return self.info.links_used
+
+    @property
+    def nodes_visited(self) -> int:
+        return self.info.nodes_visited
+
+    @property
+    def out_of_nodes(self) -> bool:
+        """The search stopped at max_nodes."""
+        return self.info.out_of_nodes != 0
+
+    @property
+    def status(self) -> int:
+        """For PATH_FAILED, the nl_status saying why; STATUS_SUCCESS otherwise."""
+        return self.info.status
+
+    @property
+    def start(self) -> Tuple[float, float, float]:
+        """The start snapped to the navmesh."""
+        return tuple(self.info.start)  # type: ignore[return-value]
+
+    @property
+    def goal(self) -> Tuple[float, float, float]:
+        """The goal snapped to the navmesh (where the path ends if COMPLETE)."""
+        return tuple(self.info.goal)  # type: ignore[return-value]
+
+    @property
+    def positions(self) -> List[Tuple[float, float, float]]:
+        """Each point's position as an (x, y, z) tuple."""
+        return [tuple(p.position) for p in self.points]  # type: ignore[misc]
+
+    def __repr__(self) -> str:
+        return "PathResult(outcome=%s, length=%.2f m, points=%d, links=%d)" % (
+            getattr(self.outcome, "name", self.outcome), self.length, len(self.points), self.links_used)
 
 
 class PathShortfall:
@@ -1365,13 +1685,20 @@ class PathRequest:
 
     async def wait_async(self) -> Union[PathOutcome, int]:
         """The outcome, awaited on the running asyncio loop: the request's callback wakes it through
-        loop.call_soon_threadsafe (no thread, no polling). In a world without path workers something must
-        plan the queue meanwhile (process_paths, or a wait on another thread). Cancelling the awaiting task
-        leaves the request queued: cancel() it."""
+        loop.call_soon_threadsafe (no thread, no polling). In a world without path workers
+        (path_worker_count 0) nobody else would plan it, so the await plans the queue itself on the loop's
+        thread, as wait() does: one request at a time (nl_path_process), oldest first, letting the loop run
+        between requests, until this one has finished (or another thread has taken the rest of the queue).
+        Cancelling the awaiting task leaves the request queued: cancel() it."""
         import asyncio  # not at module import: most hosts never await
         loop = asyncio.get_running_loop()
         future = loop.create_future()
         self._completion.add_waiter(loop, future)
+        if not future.done() and self.world.path_queue_stats().workers == 0:
+            while not future.done():
+                if self.world.process_paths(max_requests=1) == 0:
+                    break  # the queue is empty: another thread is planning this one, and its callback wakes us
+                await asyncio.sleep(0)  # lets the loop run, and settle the future if that was this request
         return await future
 
     def __await__(self) -> Generator[Any, None, Union[PathOutcome, int]]:
@@ -1424,7 +1751,7 @@ class PathRequest:
         return hash(self.ticket)
 
     def __repr__(self) -> str:
-        return "PathRequest(%d, %d)" % (self.ticket.index1, self.ticket.generation)
+        return "PathRequest(%r)" % (self.ticket,)
 
 
 TicketLike = Union[PathTicket, PathRequest]
@@ -1521,10 +1848,13 @@ class World:
     def add_mesh(self, vertices: FloatValues, indices: IndexValues, flags: int = 0,
                  transform: Optional[FloatValues] = None, user_data: int = 0, area: int = 0,
                  metres_per_unit: float = 0.0, up_axis: int = UP_AXIS_NOT_SAID) -> MeshId:
-        """Registers a triangle mesh (copied by the library). vertices: x y z floats, flat or in rows (a
-        buffer of shape (n, 3), or (n, k > 3) with x y z first in each row: read with that stride);
-        indices: three per triangle. Each a list, a tuple, or a buffer read in place: a numpy array
-        (float32; uint32 or int32), an array.array ('f'; 'I'), a memoryview, or bytes holding them.
+        """Registers a triangle mesh (copied by the library). vertices: x y z numbers, flat or in rows
+        ([(x, y, z), ...], a buffer of shape (n, 3), or (n, k > 3) with x y z first in each row: read with
+        that stride); indices: three per triangle, flat or in rows of three. Each a list or tuple (of
+        numbers, or of rows: lists, tuples, numpy rows), or a buffer: read in place when it holds the C
+        type (a numpy float32 array; uint32 or int32), an array.array ('f'; 'I'), a memoryview, or bytes
+        holding them), converted once from other numbers (numpy float64, int64, uint16..., array('d'), a
+        strided view); integers out of range or floats given as indices are refused (ValueError, TypeError).
         flags: MESH_MOVABLE, MESH_CLOCKWISE (fronts wound clockwise, as Godot's), MESH_OBSTACLE (blocks
         navmesh builds, never walked on) or MESH_NOT_IN_NAVMESH (left out of them), or'd. area: what navmesh
         builds give the polygons over the mesh (0..MESH_MAX_AREA; the Recast builder carries 0..62), priced
@@ -1604,7 +1934,9 @@ class World:
 
     def segments_blocked(self, segments: Sequence[Tuple[Sequence[float], Sequence[float]]]) -> List[bool]:
         """segments: (from, to) pairs of points; returns a bool each."""
-        items = (Segment * len(segments))(*[Segment(Vec3(*a), Vec3(*b)) for a, b in segments])
+        items = (Segment * len(segments))(*[
+            Segment(_point(a, "segments[%d] from" % k), _point(b, "segments[%d] to" % k))
+            for k, (a, b) in enumerate(segments)])
         blocked = (c_uint8 * len(segments))()
         _check(lib.nl_world_segments_blocked(self.pointer, items, len(segments), blocked))
         return [b != 0 for b in blocked]
@@ -1652,10 +1984,10 @@ class World:
         """The host's navmesh (copied, repaired). vertices and indices as add_mesh takes them (rows of x y z
         first; indices: each polygon's corners, polygon after polygon); polygon_vertex_counts: corners per
         polygon (bytes), None when every polygon is a triangle; areas: an area id (byte) per polygon or
-        None. detail: (vertices, triangles, triangle_starts: polygon count + 1 of them) or None. Lists or
-        buffers, read in place. surface: a MeshId of an MESH_MOVABLE mesh the navmesh rides, or None; with
-        one, the coordinates are in that mesh's own space and set_mesh_transform moves the navmesh with the
-        mesh."""
+        None. detail: (vertices, triangles, triangle_starts: polygon count + 1 of them) or None. Lists
+        (flat or of rows) or buffers, read in place or converted once as add_mesh reads them. surface: a
+        MeshId of an MESH_MOVABLE mesh the navmesh rides, or None; with one, the coordinates are in that
+        mesh's own space and set_mesh_transform moves the navmesh with the mesh."""
         d = lib.nl_default_navmesh_def()
         v = _c_array("vertices", vertices, c_float, group=3, wider_rows=True)
         i = _c_array("indices", indices, c_uint32)

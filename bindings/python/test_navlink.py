@@ -9,6 +9,7 @@ import ast
 import asyncio
 import ctypes
 import ctypes.util
+import enum
 import gc
 import json
 import math
@@ -1508,6 +1509,110 @@ class AgentTest(NavLinkTestCase):
             self.assertFails(nl.STATUS_INVALID_HANDLE, "nl_agent_remove", world.remove_agent, agent)
 
 
+class ReadableTest(NavLinkTestCase):
+    """What the binding gives back reads as a new user would guess (issue 33, item 8): states, reasons, kinds
+    and outcomes are IntEnums equal to the old constants, and results print their names and figures."""
+
+    def test_kinds_are_enums_equal_to_the_constants(self):
+        for kind, prefix in ((nl.AgentState, "AGENT_"), (nl.AgentReason, "AGENT_REASON_"),
+                             (nl.AgentEventKind, "AGENT_EVENT_"), (nl.SegmentKind, "SEGMENT_"),
+                             (nl.LinkKind, "LINK_"), (nl.TrajectoryKind, "TRAJECTORY_"), (nl.PathOutcome, "PATH_")):
+            self.assertTrue(issubclass(kind, enum.IntEnum), kind)
+            for member in kind:
+                if kind is nl.SegmentKind and member.name != "WALK":
+                    self.assertEqual(member, getattr(nl, "LINK_" + member.name), "a segment is a link's kind")
+                    continue
+                self.assertIs(getattr(nl, prefix + member.name), member, "the constant is the member")
+        self.assertEqual((nl.AGENT_ARRIVED, nl.AGENT_REASON_CROWD, nl.AGENT_EVENT_WAITING, nl.LINK_MANUAL), (6, 8, 7, 3))
+        self.assertEqual(nl.LINK_FIRST_PLUGIN_KIND, 256)
+        # A value this module has no name for (a plugin's link kind, a newer library's state) stays a number.
+        self.assertIs(type(nl.PathPoint(segment=300).segment), int)
+        self.assertIs(type(nl.AgentInfo(state=99).state), int)
+        link = nl.Link()
+        link.kind = nl.LINK_DROP
+        self.assertIs(link.kind, nl.LinkKind.DROP)
+        self.assertEqual((nl.Link.kind.offset, nl.Link.kind.size), (4, 4), "the field keeps its layout")
+
+    def test_values_returned_are_enums(self):
+        with nl.World() as world:
+            navmesh = gap_level_with_links(world)
+            path = world.find_path(nl.PathQuery(navmesh, WEST, EAST, jumper()))
+            self.assertIs(path.outcome, nl.PathOutcome.COMPLETE)
+            self.assertIs(path.info.outcome, nl.PathOutcome.COMPLETE)
+            self.assertEqual([p.segment for p in path.points if p.segment != nl.SEGMENT_WALK], [nl.SegmentKind.JUMP])
+            self.assertTrue(all(type(p.segment) is nl.SegmentKind for p in path.points))
+            self.assertTrue(all(type(link.kind) is nl.LinkKind for link in world.links(navmesh)))
+
+            d = nl.default_agent_def()
+            d.navmesh, d.position, d.capabilities = navmesh, nl.Vec3(*WEST), jumper()
+            agent = world.add_agent(d)
+            self.assertIs(world.agent_info(agent).state, nl.AgentState.IDLE)
+            self.assertIs(world.agent_info(agent).reason, nl.AgentReason.NONE)
+            world.set_agent_destination(agent, EAST)
+            events, states, trajectories = [], set(), set()
+            for _ in range(30 * 20):
+                world.step(1 / 30)
+                events += world.agent_events()
+                states |= {info.state for info in world.agents()}
+                trajectory = world.agent_trajectory(agent)
+                if trajectory is not None:
+                    trajectories.add(trajectory.kind)
+                if world.agent_info(agent).state == nl.AGENT_ARRIVED:
+                    break
+            self.assertIs(world.agent_info(agent).state, nl.AgentState.ARRIVED)
+            self.assertTrue(states and all(type(s) is nl.AgentState for s in states), states)
+            self.assertIn(nl.AgentState.JUMPING, states)
+            self.assertTrue(events and all(type(e.kind) is nl.AgentEventKind and type(e.reason) is nl.AgentReason
+                                           for e in events), events)
+            self.assertEqual((events[0].kind, events[0].reason),
+                             (nl.AgentEventKind.PATH_READY, nl.AgentReason.DESTINATION_SET))
+            self.assertIn(nl.AgentEventKind.LINK_STARTED, [e.kind for e in events])
+            self.assertEqual(trajectories, {nl.TrajectoryKind.ARC})
+            self.assertTrue(all(type(p.segment) is nl.SegmentKind for p in world.agent_corners(agent)))
+            finished = world.request_path(nl.PathQuery(navmesh, WEST, EAST, jumper()))
+            finished.wait()
+            self.assertTrue(all(type(f.outcome) is nl.PathOutcome for f in world.take_finished_paths()))
+            finished.release()
+
+    def test_results_print_readably(self):
+        with nl.World() as world:
+            navmesh = gap_level_with_links(world)
+            path = world.find_path(nl.PathQuery(navmesh, WEST, EAST, jumper()))
+            self.assertRegex(repr(path), r"^PathResult\(outcome=COMPLETE, length=12\.\d\d m, points=%d, links=1\)$"
+                             % len(path.points))
+            self.assertEqual((path.length, path.cost, path.links_used, path.nodes_visited, path.status),
+                             (path.info.length, path.info.cost, 1, path.info.nodes_visited, nl.STATUS_SUCCESS))
+            self.assertFalse(path.out_of_nodes)
+            self.assertEqual((path.start, path.goal), (tuple(path.info.start), tuple(path.info.goal)))
+            self.assertEqual(path.positions, [tuple(p.position) for p in path.points])
+            self.assertLess(horizontal(path.positions[-1], EAST), 0.01)
+            walked = world.find_path(nl.PathQuery(navmesh, WEST, EAST, walker()))
+            self.assertRegex(repr(walked), r"^PathResult\(outcome=PARTIAL, length=\d+\.\d\d m, points=\d+, links=0\)$")
+            jump = next(p for p in path.points if p.segment == nl.LINK_JUMP)
+            self.assertRegex(repr(jump), r"^PathPoint\(position=\(-[\d.]+, [-\d.e]+, [-\d.e]+\), polygon=\d+, "
+                                         r"segment=JUMP, link=LinkId\(index=\d+, generation=1\), apex=\(.*\), reversed=0, "
+                                         r"surface_position=\(.*\)\)$")
+            self.assertNotIn("size=", repr(jump))
+            self.assertNotIn("reserved", repr(jump))
+
+            d = nl.default_agent_def()
+            d.navmesh, d.position = navmesh, nl.Vec3(*WEST)
+            info = world.agent_info(world.add_agent(d))
+            self.assertTrue(repr(info).startswith("AgentInfo(state=IDLE, id=AgentId(index=0, generation=1), position=(-6, "),
+                            repr(info))
+            self.assertIn("reason=NONE", repr(info))
+            self.assertIn("navmesh=NavmeshId(index=0, generation=1), surface=MeshId(null)", repr(info))
+            self.assertEqual(repr(nl.LinkId()), "LinkId(null)")
+            world.remove_agent(info.id)
+            again = world.add_agent(d)
+            self.assertEqual((repr(again), again.slot_index), ("AgentId(index=0, generation=2)", 0), "the slot reused")
+            near = world.find_nearest(navmesh, [EAST], (1, 2, 1))[0]
+            self.assertRegex(repr(near), r"^NavPoint\(point=\(6, [\d.]+, 0\), distance=[\d.]+, polygon=\d+, found=1, "
+                                         r"beyond_box=0\)$")
+            self.assertEqual(repr(nl.MeshDef()).split(", ")[0], "MeshDef(vertices=NULL")
+            self.assertIn("transform=NULL", repr(nl.MeshDef()))
+
+
 class PluginTest(NavLinkTestCase):
     # plugin.h: the strings a plugin hands over are static storage. Class constants live as long as the
     # program, and ctypes points a c_char_p field at the bytes object's own buffer.
@@ -1583,13 +1688,28 @@ class PluginTest(NavLinkTestCase):
             self.assertFails(nl.STATUS_NOT_FOUND, "nl_plugin_load", world.load_plugin, "/no/such/plugin.so")
 
 
+# Debian's python3-numpy (scripts/setup.sh) is installed for /usr/bin/python3; a Python of the same version
+# built elsewhere (pyenv's, which ctest may run) loads the same extension modules.
+DEBIAN_DIST_PACKAGES = "/usr/lib/python3/dist-packages"
+
+
 def numpy_or_skip(test):
     try:
         import numpy
+        return numpy
     except ImportError:
-        test.skipTest("numpy is not installed for %s: the numpy cases are skipped (array.array and memoryview "
-                      "cover the same buffer paths)" % sys.executable)
-    return numpy
+        pass
+    if os.path.isdir(os.path.join(DEBIAN_DIST_PACKAGES, "numpy")) and DEBIAN_DIST_PACKAGES not in sys.path:
+        sys.path.append(DEBIAN_DIST_PACKAGES)  # last: it shadows nothing this Python has itself
+        try:
+            import numpy
+            return numpy
+        except Exception:  # built for another Python version
+            sys.path.remove(DEBIAN_DIST_PACKAGES)
+            for name in [m for m in sys.modules if m == "numpy" or m.startswith("numpy.")]:
+                del sys.modules[name]
+    test.skipTest("numpy is not installed for %s (scripts/setup.sh installs Debian's python3-numpy): the numpy "
+                  "cases are skipped (array.array and memoryview cover the same paths)" % sys.executable)
 
 
 class BufferTest(NavLinkTestCase):
@@ -1667,18 +1787,25 @@ class BufferTest(NavLinkTestCase):
     def test_wrong_buffers_are_refused_naming_the_argument(self):
         floats, uints = array.array("f", FLOOR), array.array("I", QUAD)
         cases = [
-            (TypeError, "vertices", "32-bit floats", (array.array("d", FLOOR), uints)),
-            (TypeError, "indices", "32-bit integers", (floats, array.array("q", QUAD))),
-            (TypeError, "indices", "32-bit integers", (floats, array.array("H", QUAD))),
+            (TypeError, "indices", "integers from 0 to 4294967295", (floats, array.array("d", QUAD))),
+            (TypeError, "indices", "integers", (floats, [0, 2, 1.5, 0, 3, 2])),
+            (ValueError, "indices", "integers from 0 to 4294967295", (floats, array.array("q", [-1] + QUAD[1:]))),
+            (ValueError, "indices", "integers from 0 to 4294967295", (floats, [0, 2, 1, 0, 3, -2])),
+            (ValueError, "indices", "integers from 0 to 4294967295", (floats, array.array("q", [2 ** 32] + QUAD[1:]))),
             (TypeError, "vertices", "not str", ("0 0 0", uints)),
+            (TypeError, "vertices", "not str", (["0 0 0"], uints)),
             (TypeError, "vertices", "", ([0, 0, "x"], uints)),
+            (TypeError, "vertices", "not object", (object(), uints)),
             (ValueError, "vertices", "multiple of 3", (array.array("f", FLOOR[:-1]), uints)),
             (ValueError, "vertices", "multiple of 3", (FLOOR[:-1], QUAD)),
+            (ValueError, "vertices", "multiple of 3", (array.array("d", FLOOR[:-1]), QUAD)),
             (ValueError, "indices", "multiple of 3", (floats, array.array("I", QUAD[:-1]))),
             (ValueError, "vertices", "whole number of 4-byte items", (floats.tobytes()[:-2], uints)),
-            (ValueError, "vertices", "C-contiguous", (memoryview(array.array("f", FLOOR * 2))[::2], uints)),
             (ValueError, "vertices", "shape (6, 2)", (memoryview(floats).cast("B").cast("f", (6, 2)), uints)),
+            (ValueError, "vertices", "rows of 2 values; rows of 3 or more", ([(0, 0)] * 6, uints)),
+            (ValueError, "vertices", "rows of 2 and 3 values", ([(0, 0, 0)] * 3 + [(0, 0)], uints)),
             (ValueError, "indices", "shape (3, 4)", (floats, memoryview(array.array("I", QUAD * 2)).cast("B").cast("I", (3, 4)))),
+            (ValueError, "indices", "rows of 2 values; rows of 3 expected", (floats, [(0, 2), (1, 0), (3, 2)])),
         ]
         with nl.World() as world:
             for error, name, part, (v, i) in cases:
@@ -1697,10 +1824,72 @@ class BufferTest(NavLinkTestCase):
             with self.assertRaisesRegex(ValueError, "^indices: %d values, but polygon_vertex_counts adds up to %d" % (
                     len(indices) - 1, sum(corner_counts))):
                 world.add_navmesh(vertices, indices[:-1], corner_counts)
-            with self.assertRaisesRegex(TypeError, "^polygon_vertex_counts: bytes"):
-                world.add_navmesh(vertices, indices, array.array("I", corner_counts))
+            with self.assertRaisesRegex(ValueError, "^polygon_vertex_counts: integers from 0 to 255 expected"):
+                world.add_navmesh(vertices, indices, array.array("I", [256] + corner_counts[1:]))
             self.assertEqual(world.meshes(), [], "nothing registered")
             self.assertEqual(world.navmeshes(), [], "nothing added")
+
+    def test_other_numbers_and_nested_points_are_converted(self):
+        """Points as [(x, y, z), ...] or [[x, y, z], ...], triangles as rows, and buffers of other numbers
+        (doubles, 64- and 16-bit integers, a strided view) are converted once to the C layout rather than
+        refused: the same mesh as from flat lists (issue 33, item 8)."""
+        lo, hi = (-1, -2, -3), (4, 5, 6)
+        vertices, indices = box_vertices(lo, hi), BOX_INDICES
+        points = [tuple(vertices[k:k + 3]) for k in range(0, len(vertices), 3)]
+        triangles = [indices[k:k + 3] for k in range(0, len(indices), 3)]
+        doubles = array.array("d", vertices)
+        inputs = {
+            "a list of (x, y, z) tuples": (points, indices),
+            "a list of [x, y, z] lists, triangles as rows": ([list(p) for p in points], triangles),
+            "a tuple of tuples": (tuple(points), tuple(tuple(t) for t in triangles)),
+            "rows of 4, x y z first": ([list(p) + [99.0] for p in points], indices),
+            "Vec3 rows": ([nl.Vec3(*p) for p in points], indices),
+            "array('d')": (doubles, indices),
+            "a memoryview of doubles in rows (n, 3)": (memoryview(doubles).cast("B").cast("d", (8, 3)), indices),
+            "int64 and uint16 indices": (doubles, array.array("q", indices)),
+            "uint16 indices": (vertices, array.array("H", indices)),
+            "integer vertices": (array.array("i", vertices), indices),
+            "a strided view": (memoryview(array.array("f", [c for v in vertices for c in (v, -7.0)]))[::2], indices),
+            "a range of indices": (vertices[:9], range(3)),
+            "a generator": ((c for c in vertices), iter(indices)),
+        }
+        with nl.World() as world:
+            expected = self.mesh_summary(world, world.add_mesh(vertices, indices))
+            for kind, (v, i) in inputs.items():
+                summary = self.mesh_summary(world, world.add_mesh(v, i))
+                if kind == "a range of indices":
+                    self.assertEqual(summary[:2], (3, 1), kind)
+                else:
+                    self.assertEqual(summary, expected, kind)
+            self.assertEqual(nl._c_array("vertices", [list(p) + [9.0] for p in points], ctypes.c_float, group=3,
+                                         wider_rows=True).row, 4, "nested rows of 4 are read with a stride of 4")
+            moved = world.add_mesh(points, triangles, transform=array.array("d", RAFT_MOVED))
+            self.assertNear(world.mesh_info(moved).bounds_min, (10 + lo[2], lo[1], -hi[0]), "a transform of doubles")
+
+            # A navmesh from nested polygons (rows of any length are read one after the other), points and
+            # destinations from doubles.
+            flat_vertices, flat_indices, corner_counts = bridge_navmesh_polygons()
+            rows = [flat_vertices[k:k + 3] for k in range(0, len(flat_vertices), 3)]
+            polygons, start = [], 0
+            for n in corner_counts:
+                polygons.append(flat_indices[start:start + n])
+                start += n
+            navmesh = world.add_navmesh(rows, polygons, corner_counts, areas=array.array("q", [3, 1, 4, 1, 5]),
+                                        agent=bridge_agent_type())
+            self.assertEqual(world.navmesh_vertices(navmesh),
+                             world.navmesh_vertices(world.add_navmesh(flat_vertices, flat_indices, corner_counts,
+                                                                      agent=bridge_agent_type())))
+            near = world.find_nearest(navmesh, [(2, 1, 4), [8, 1, 4]], array.array("d", [1, 2, 1]))
+            self.assertTrue(all(p.found for p in near) and len(near) == 2)
+            self.assertNear(near[1].point, (8, 0, 4), "points as a list of rows")
+            query = nl.PathQuery(navmesh, array.array("d", (2, 0, 4)), [[8, 0, 4]], walker())
+            query.area_costs = array.array("d", [1] * 6)
+            self.assertEqual(world.find_path(query).outcome, nl.PATH_COMPLETE)
+            with self.assertRaisesRegex(ValueError, "^goal: 2 values, 3 expected"):
+                nl.PathQuery(navmesh, (2, 0, 4), (8, 0), walker())
+            self.assertEqual(world.segments_blocked([(array.array("d", (-10, 3, 0)), [10.0, 3.0, 0.0])]), [True])
+            with self.assertRaisesRegex(ValueError, r"^areas: integers from 0 to 255 expected"):
+                world.add_navmesh(rows, polygons, corner_counts, areas=[3, 1, 4, 1, 256])
 
     def test_numpy_arrays(self):
         numpy = numpy_or_skip(self)
@@ -1710,10 +1899,39 @@ class BufferTest(NavLinkTestCase):
                 self.assertEqual(world.mesh_info(world.add_mesh(vertices, indices)).triangle_count, 12)
             given = nl._c_array("vertices", vertices, ctypes.c_float, group=3)
             self.assertEqual(ctypes.addressof(given.items), vertices.ctypes.data, "read in place")
-            with self.assertRaisesRegex(TypeError, "^vertices: 32-bit floats"):
-                world.add_mesh(vertices.astype(numpy.float64), BOX_INDICES)
-            with self.assertRaisesRegex(ValueError, "^vertices: the buffer is not C-contiguous"):
-                world.add_mesh(vertices.T, BOX_INDICES)
+            expected = self.mesh_summary(world, world.add_mesh(vertices, BOX_INDICES))
+            triangles = numpy.array(BOX_INDICES).reshape(12, 3)  # numpy's default integers: int64
+            inputs = {
+                "float64 (n, 3), int64 (m, 3)": (vertices.astype(numpy.float64), triangles),
+                "float64 flat, uint16": (vertices.astype(numpy.float64).ravel(), triangles.astype(numpy.uint16)),
+                "big-endian float32": (vertices.astype(">f4"), triangles),
+                "half floats": (vertices.astype(numpy.float16), triangles),
+                "Fortran order (strided)": (numpy.asfortranarray(vertices.astype(numpy.float64)), triangles.T.copy().T),
+                "a list of numpy rows": (list(vertices.astype(numpy.float64)), list(triangles)),
+                "numpy scalars in lists": ([numpy.float64(c) for c in vertices.ravel()],
+                                           [numpy.int64(i) for i in BOX_INDICES]),
+            }
+            for kind, (v, i) in inputs.items():
+                self.assertEqual(self.mesh_summary(world, world.add_mesh(v, i)), expected, kind)
+            with self.assertRaisesRegex(ValueError, r"^vertices: a buffer of shape \(8, 2\); rows of 3 or more"):
+                world.add_mesh(vertices[:, :2], BOX_INDICES)
+            with self.assertRaisesRegex(ValueError, "^indices: integers from 0 to 4294967295 expected"):
+                world.add_mesh(vertices, -triangles)
+            with self.assertRaisesRegex(TypeError, "^indices: integers"):
+                world.add_mesh(vertices, triangles.astype(numpy.float64))
+
+            navmesh = gap_level_with_links(world)
+            west, east = numpy.array(WEST), numpy.array(EAST)  # float64
+            result = world.find_path(nl.PathQuery(navmesh, west, east, jumper()))
+            self.assertJumperAcross(world, result)
+            near = world.find_nearest(navmesh, numpy.array([WEST, EAST]), numpy.array([1.0, 2.0, 1.0]))
+            self.assertTrue(near[1].found and horizontal(near[1].point, EAST) < 0.01, "points from a float64 (n, 3) array")
+            d = nl.default_agent_def()
+            d.navmesh, d.position = navmesh, nl.Vec3(*west)
+            agent = world.add_agent(d)
+            world.set_agent_destination(agent, east - numpy.array([3.0, 0.0, 0.0]))
+            world.teleport_agent(agent, west + numpy.array([1.0, 0.0, 0.0]))
+            self.assertLess(horizontal(world.agent_info(agent).position, (WEST[0] + 1, 0, 0)), 0.01, "a float64 position")
 
 
 def hold_the_only_worker(test, world, query):
@@ -1829,6 +2047,47 @@ class WaitTest(NavLinkTestCase):
                 return requests, outcomes
             requests, outcomes = asyncio.run(await_them())
             self.assertEqual(outcomes, expected)
+            self.assertJumperAcross(world, requests[0].result())
+            for request in requests:
+                request.release()
+            self.assertEqual(world.path_queue_stats().unreleased, 0)
+
+    def test_await_without_path_workers_plans_on_the_loop(self):
+        """With path_worker_count 0 nobody else plans a queued request: awaiting it plans the queue on the
+        loop's thread (nl_path_process), oldest first, one request at a time with the loop running between
+        them, instead of waiting for ever (issue 33, item 8)."""
+        with nl.World(path_worker_count=0) as world:
+            self.assertEqual(world.path_queue_stats().workers, 0)
+            navmesh = gap_level_with_links(world)
+            planned_on = []
+            queries = [nl.PathQuery(navmesh, WEST, EAST, jumper() if k % 2 == 0 else walker()) for k in range(4)]
+
+            async def await_them():
+                loop_thread = threading.get_ident()
+                ticks = []
+
+                async def tick():
+                    while True:
+                        ticks.append(world.path_queue_stats().queued)
+                        await asyncio.sleep(0)
+                ticker = asyncio.ensure_future(tick())
+                requests = [world.request_path(q, lambda t, o: planned_on.append((t, threading.get_ident())))
+                            for q in queries]
+                self.assertEqual(world.path_queue_stats().queued, 4)
+                last = await asyncio.wait_for(requests[-1], 10)  # plans the three before it first
+                self.assertEqual([t for t, _ in planned_on], requests, "oldest first")
+                self.assertTrue(all(thread == loop_thread for _, thread in planned_on), "on the loop's thread")
+                self.assertIn(2, ticks, "the loop ran between two requests")
+                self.assertIs(await requests[0], nl.PathOutcome.COMPLETE, "already finished: at once")
+                more = [world.request_path(q) for q in queries]
+                outcomes = await asyncio.wait_for(asyncio.gather(*more), 10)
+                for request in more:
+                    request.release()
+                ticker.cancel()
+                return requests, last, outcomes
+            requests, last, outcomes = asyncio.run(await_them())
+            self.assertIs(last, nl.PathOutcome.PARTIAL)
+            self.assertEqual(outcomes, [nl.PATH_COMPLETE, nl.PATH_PARTIAL] * 2)
             self.assertJumperAcross(world, requests[0].result())
             for request in requests:
                 request.release()

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <cstdlib>
 
+#include "link_files.h"
 #include "sample_error.h"
 
 namespace nl::cli {
@@ -45,6 +46,15 @@ samples::LevelFrame level_frame(const samples::Arguments& args) {
         else throw samples::SampleError("--up must be y or z, got '" + *up + "'");
     }
     return frame;
+}
+
+uint32_t load_links_option(const samples::Arguments& args, nl_world* world, nl_navmesh_id navmesh, const std::string& path) {
+    try {
+        return samples::load_links_file(world, navmesh, path, args.has("any-body") ? NL_LINKS_LOAD_ANY_BODY : 0u);
+    } catch (const samples::SampleError& e) {
+        if (std::string(e.what()).find("NL_LINKS_LOAD_ANY_BODY") == std::string::npos) throw;
+        throw samples::SampleError(std::string(e.what()) + " (navlink: --any-body)");
+    }
 }
 
 void hint_level_frame(const nl_navmesh_info& info, const std::string& level_path) {

@@ -48,7 +48,8 @@ int run_path(int argc, char** argv) {
                                    {"png", true},
                                    {"oblique", false},
                                    {"link-numbers", false},
-                                   {"roofs", false}}));
+                                   {"roofs", false},
+                                   {"any-body", false}}));
     if (args.wants_help()) {
         std::fputs(kPathHelp, stdout);
         return 0;
@@ -81,7 +82,7 @@ int run_path(int argc, char** argv) {
                                            " is a baked navmesh file, planned over as it is");
         samples::World world;
         const nl_navmesh_id navmesh = samples::load_navmesh_file(world.get(), args.positional()[0]);
-        if (const auto links = args.value("links")) samples::load_links_file(world.get(), navmesh, *links);
+        if (const auto links = args.value("links")) load_links_option(args, world.get(), navmesh, *links);
         const samples::PlannedPath path = samples::find_path(world.get(), navmesh, from, to, agent.capabilities, search);
         const samples::NavmeshContents contents = samples::read_navmesh_contents(world.get(), navmesh);
         return report_path(world.get(), navmesh, path, contents.links, from, to, search, agent.capabilities, args.has("json"));
@@ -90,7 +91,7 @@ int run_path(int argc, char** argv) {
     NavigableLevel level(args.positional()[0], args.value("navmesh"), agent.body, settings.recast_json,
                          args.has("png"), std::nullopt, level_frame(args));
     // Without --links the navmesh is walked alone.
-    if (const auto links = args.value("links")) samples::load_links_file(level.world(), level.navmesh(), *links);
+    if (const auto links = args.value("links")) load_links_option(args, level.world(), level.navmesh(), *links);
     const samples::PlannedPath path =
         samples::find_path(level.world(), level.navmesh(), from, to, agent.capabilities, search);
     const samples::NavmeshContents contents = samples::read_navmesh_contents(level.world(), level.navmesh());

@@ -80,7 +80,7 @@ int simulate_level(const samples::Arguments& args, const SimulateOptions& option
     NavigableLevel level(args.positional()[0], std::nullopt, profiles[0].body, settings.recast_json, true, std::nullopt,
                          level_frame(args));
     nl_link_generation_report report = nl_link_generation_report_init();
-    if (const auto links = args.value("links")) samples::load_links_file(level.world(), level.navmesh(), *links);
+    if (const auto links = args.value("links")) load_links_option(args, level.world(), level.navmesh(), *links);
     else report = level.generate_links(settings.links);
     if (args.has("links")) {
         const samples::NavmeshContents contents = samples::read_navmesh_contents(level.world(), level.navmesh());
@@ -96,7 +96,8 @@ int run_simulate(int argc, char** argv) {
     const samples::Arguments args("navlink simulate", "simulate", argc, argv, 2,
                                   with_level_frame_options({{"seed", true}, {"out-dir", true}, {"oblique", false}, {"hz", true},
                                                             {"seconds", true}, {"platforms", false}, {"from", true}, {"to", true},
-                                                            {"agent", true}, {"links", true}, {"settings", true}}));
+                                                            {"agent", true}, {"links", true}, {"settings", true},
+                                                            {"any-body", false}}));
     if (args.wants_help()) {
         std::fputs(kSimulateHelp, stdout);
         return 0;
@@ -109,7 +110,7 @@ int run_simulate(int argc, char** argv) {
                 throw samples::SampleError(std::string("--") + generated_only + " is for the generated default level, not " +
                                            args.positional()[0]);
     } else {
-        for (const char* level_only : {"from", "to", "agent", "links", "settings", "clockwise", "units", "up"})
+        for (const char* level_only : {"from", "to", "agent", "links", "settings", "clockwise", "units", "up", "any-body"})
             if (args.has(level_only)) throw samples::SampleError(std::string("--") + level_only + " needs LEVEL.obj");
     }
     SimulateOptions options;

@@ -14,10 +14,10 @@ std::string links_json(nl_world* world, nl_navmesh_id navmesh) {
     return text;
 }
 
-uint32_t load_links_file(nl_world* world, nl_navmesh_id navmesh, const std::string& path) {
+uint32_t load_links_file(nl_world* world, nl_navmesh_id navmesh, const std::string& path, uint32_t flags) {
     const std::string text = read_text_file(path);
     uint32_t count = 0;
-    check(nl_navmesh_load_links_json(world, navmesh, text.data(), text.size(), 0, &count), path);
+    check(nl_navmesh_load_links_json(world, navmesh, text.data(), text.size(), flags, &count), path);
     return count;
 }
 

@@ -274,6 +274,13 @@ namespace {
 
 // What a host reads, in the world: on a moving surface, at the surface's pose of this moment (the
 // velocity is the body's own, turned with the surface, without the surface's motion).
+// The path points the agent has yet to reach: in the air `next` is still the take-off point (it
+// moves on at the landing); arrived (perhaps beside its goal, among others), none.
+size_t points_ahead(const AgentBody& a) {
+    if (a.next >= a.path.size() || a.state == AgentState::Arrived) return 0;
+    return a.path.size() - a.next - (a.motion ? 1 : 0);
+}
+
 AgentInfo info_of(const AgentBody& a) {
     const SurfacePose pose = pose_of(a.frame);
     AgentInfo info;
@@ -288,7 +295,7 @@ AgentInfo info_of(const AgentBody& a) {
     info.link_progress = a.motion ? std::clamp(a.motion_time / a.motion->duration(), 0.0f, 1.0f) : 0.0f;
     info.destination = pose_of(a.destination_frame).world_point(a.destination);
     info.has_destination = a.has_destination;
-    info.corners_ahead = a.path.empty() ? 0u : static_cast<uint32_t>(a.path.size() - a.next);
+    info.corners_ahead = static_cast<uint32_t>(points_ahead(a));
     info.user_data = a.def.user_data;
     info.navmesh = a.def.navmesh;
     info.surface = a.frame ? a.frame->mesh() : Handle{};
@@ -314,8 +321,20 @@ std::vector<AgentInfo> Agents::infos() const {
 std::vector<PathPoint> Agents::corners(Handle agent) const {
     std::shared_lock lock(mutex_);
     const AgentBody& a = find(agent);
-    if (a.path.empty()) return {};
-    std::vector<PathPoint> out(a.path.begin() + a.next, a.path.end());
+    if (points_ahead(a) == 0) return {};
+    // Where it is now, going on as it does: flying the link it took off on, or walking. Without it a
+    // straight walk to the goal would be one point, the stretch being walked missing.
+    // In the air `next` is still the take-off point (it moves on at the landing).
+    PathPoint here;
+    if (a.motion) here = a.path[a.next];
+    else here.apex = a.position;
+    here.surface_position = a.position;
+    here.polygon = a.polygon;
+    const size_t ahead = a.next + (a.motion ? 1 : 0);
+    std::vector<PathPoint> out;
+    out.reserve(a.path.size() - ahead + 1);
+    out.push_back(here);
+    out.insert(out.end(), a.path.begin() + std::min(ahead, a.path.size()), a.path.end());
     const SurfacePose pose = pose_of(a.frame);
     for (PathPoint& p : out) {
         p.position = pose.world_point(p.surface_position);

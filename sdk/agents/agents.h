@@ -87,7 +87,8 @@ public:
 
     AgentInfo info(Handle agent) const;
     std::vector<AgentInfo> infos() const;  // every agent, in a stable order (until one is removed)
-    // The path points the agent has yet to reach, the next first.
+    // Where the agent is (how it goes on from there: walking, or the link it flies), then the path
+    // points it has yet to reach, the next first; empty with no path, or once it has arrived.
     std::vector<PathPoint> corners(Handle agent) const;
     // The link the agent is taking, read at one moment: its motion (empty on the ground), the link,
     // and the seconds since take-off.

@@ -17,6 +17,20 @@
 namespace nl {
 namespace {
 
+// A level hash as the navmesh file's description writes it: 16 hex digits.
+std::string hex_hash(uint64_t hash) {
+    char text[17];
+    std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(hash));
+    return text;
+}
+
+uint64_t parse_hex_hash(const Json& value) {
+    const std::string text = value.is_string() ? value.get<std::string>() : std::string();
+    if (text.size() != 16 || text.find_first_not_of("0123456789abcdefABCDEF") != std::string::npos)
+        fail(ErrorCode::InvalidArgument, "links JSON.made_for.level_hash must be a string of 16 hex digits");
+    return std::stoull(text, nullptr, 16);
+}
+
 using Json = nlohmann::json;
 
 Json point(const Vec3& v) { return Json::array({v.x(), v.y(), v.z()}); }
@@ -142,6 +156,7 @@ std::string links_to_json(const std::vector<Link>& links, const LinksMadeFor* ma
         file["made_for"] = {{"agent", {{"radius", a.radius}, {"height", a.height}, {"max_climb", a.max_climb}, {"max_slope", a.max_slope}}},
                             {"link_settings", recorded_json(made_for->made_with.settings)},
                             {"link_plugins", recorded_json(made_for->made_with.plugins)}};
+        if (made_for->level_hash != 0) file["made_for"]["level_hash"] = hex_hash(made_for->level_hash);
     }
     file["links"] = std::move(list);
     return file.dump(1);
@@ -178,6 +193,7 @@ LinksFile read_links_json(std::string_view text) {
             if (!plugins->is_object()) fail(ErrorCode::InvalidArgument, "links JSON.made_for.link_plugins must be an object or null");
             record.made_with.plugins = plugins->dump();
         }
+        if (const Json* hash = m.find("level_hash"); hash && !hash->is_null()) record.level_hash = parse_hex_hash(*hash);
         file.made_for = record;
     }
     for (size_t i = 0; i < list.size(); ++i) {

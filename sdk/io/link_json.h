@@ -21,6 +21,7 @@ constexpr int kLinkFileVersion = 1;
 struct LinksMadeFor {
     AgentType agent;
     LinksMadeWith made_with;
+    uint64_t level_hash = 0;  // of the level the navmesh was built from (level_hash.h); 0: not recorded
 };
 
 // A links file: its links, and what they were made for when it says (files written before 0.3 do not).
@@ -31,7 +32,7 @@ struct LinksFile {
 
 // Throws InvalidArgument for a cross link (Link::crosses): its landing navmesh cannot be named in a file.
 // With `made_for`, the file records it ("made_for": {"agent": {...}, "link_settings": {...},
-// "link_plugins": {...}}).
+// "link_plugins": {...}, "level_hash": "16 hex digits", when known}).
 std::string links_to_json(const std::vector<Link>& links, const LinksMadeFor* made_for = nullptr);
 
 // Throws Parse (malformed JSON, with the parser's position), VersionMismatch (another format or a

@@ -110,7 +110,21 @@ void World::load_links_file(Handle navmesh, LinksFile file, bool any_body) {
             logger_.log(LogLevel::Warning, concat(why, ": loaded anyway (NL_LINKS_LOAD_ANY_BODY)"));
         }
     }
-    load_links(navmesh, std::move(file.links), file.made_for ? file.made_for->made_with : LinksMadeWith{});
+    // Made for another level (both hashes known and unequal): a link end off the navmesh is most
+    // likely why, and the failure says so; links that do fit load, with a warning.
+    const uint64_t ours = navmeshes_.made_for(navmesh).level_hash, theirs = file.made_for ? file.made_for->level_hash : 0;
+    const bool other_level = ours != 0 && theirs != 0 && ours != theirs;
+    const std::string level_words =
+        other_level ? concat("these links were made for another level (level hash ", std::hex, theirs, "; this navmesh was built from ",
+                             ours, ")")
+                    : std::string();
+    try {
+        load_links(navmesh, std::move(file.links), file.made_for ? file.made_for->made_with : LinksMadeWith{});
+    } catch (const Error& e) {
+        if (!other_level || e.code() != ErrorCode::InvalidArgument) throw;
+        throw Error(e.code(), concat(level_words, ": ", e.what()));
+    }
+    if (other_level) logger_.log(LogLevel::Warning, concat(level_words, ": every end lies on this navmesh, so they were loaded"));
 }
 
 World::PluginLinks World::plugin_links(Handle navmesh, const NavMesh& mesh, const PluginSettings& settings,

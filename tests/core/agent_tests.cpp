@@ -527,3 +527,36 @@ TEST_CASE("a body wider than its navmesh's is said once per radius, with the mar
     add(1.0f);
     CHECK(warnings.size() == 2);
 }
+
+TEST_CASE("an agent's corners start where it is: a straight walk is two points, and in the air the first is the link it flies") {
+    GapLevel g;
+    const Handle walker = g.add_agent(Vec3(1.0f, 0.0f, 2.0f));
+    g.world->agents().set_destination(g.world->navmeshes(), walker, Vec3(3.0f, 0.0f, 5.0f));
+    g.world->step(1.0f / 30.0f);
+    g.world->step(1.0f / 30.0f);
+    const std::vector<nl::PathPoint> walk = g.world->agents().corners(walker);
+    REQUIRE(walk.size() == 2);
+    CHECK(walk[0].position.isApprox(g.world->agents().info(walker).position, 1e-5f));
+    CHECK(walk[0].segment == nl::kSegmentWalk);
+    CHECK(walk[1].position.isApprox(Vec3(3.0f, walk[1].position.y(), 5.0f), 1e-3f));
+    CHECK(g.world->agents().info(walker).corners_ahead == 1);
+
+    const Handle jumper = g.add_agent(Vec3(1.0f, 0.0f, 2.0f), 3.0f);
+    g.world->agents().set_destination(g.world->navmeshes(), jumper, Vec3(9.0f, 0.0f, 2.0f));
+    bool checked_in_air = false;
+    for (int i = 0; i < 600 && !checked_in_air; ++i) {
+        g.world->step(1.0f / 60.0f);
+        const nl::AgentInfo info = g.world->agents().info(jumper);
+        if (info.state != AgentState::Jumping) continue;
+        const std::vector<nl::PathPoint> flying = g.world->agents().corners(jumper);
+        REQUIRE(flying.size() >= 2);
+        CHECK(flying[0].position.isApprox(info.position, 1e-4f));
+        CHECK(flying[0].segment == uint32_t(nl::LinkKind::Jump));
+        CHECK(flying[0].link == info.link);
+        CHECK(flying.size() == info.corners_ahead + 1);
+        checked_in_air = true;
+    }
+    CHECK(checked_in_air);
+    g.run(20.0f);
+    CHECK(g.world->agents().corners(walker).empty());  // arrived: nothing left to reach
+}

@@ -72,7 +72,7 @@ if [ -z "$pc" ]; then
 fi
 libdir=$(dirname "$(dirname "$pc")")
 
-for f in include/navlink/navlink.h include/navlink/export.h include/navlink/version.h; do
+for f in include/navlink/navlink.h include/navlink/navlink.hpp include/navlink/export.h include/navlink/version.h; do
   [ -f "$prefix/$f" ] || fail "$f is not installed"
 done
 [ -f "$libdir/cmake/NavLink/NavLinkConfig.cmake" ] || fail "NavLinkConfig.cmake is not in $libdir/cmake/NavLink"
@@ -249,11 +249,12 @@ if step "configure the CMake consumer (find_package(NavLink $major.$minor))" \
         *) fail "the CMake consumer compiles with the include directory $dir, outside $prefix" ;;
       esac
     done
-    run_consumer "the CMake consumer" "$hit_line" "$cm_build/consumer"
-    run_consumer "the CMake path consumer (C)" "$path_line" "$cm_build/path_consumer"
-    run_consumer "the CMake path consumer (C++)" "$path_line" "$cm_build/path_consumer_cxx"
-    check_loads_installed "$cm_build/consumer" "the CMake"
-    check_loads_installed "$cm_build/path_consumer" "the CMake path"
+    # Found through the build runpath CMake gives programs linking an imported library.
+    run_consumer "the CMake consumer" "$hit_line" env -u LD_LIBRARY_PATH "$cm_build/consumer"
+    run_consumer "the CMake path consumer (C)" "$path_line" env -u LD_LIBRARY_PATH "$cm_build/path_consumer"
+    run_consumer "the CMake path consumer (C++)" "$path_line" env -u LD_LIBRARY_PATH "$cm_build/path_consumer_cxx"
+    check_loads_installed "$cm_build/consumer" "the CMake" -u LD_LIBRARY_PATH
+    check_loads_installed "$cm_build/path_consumer" "the CMake path" -u LD_LIBRARY_PATH
   fi
 fi
 
@@ -277,26 +278,32 @@ if step "pkg-config ${pc_static[*]} --cflags --libs navlink" pkg-config "${pc_st
   # The flags must lead into the prefix (the .pc file is relocatable) and nowhere else in the project.
   for flag in "${pc_flags[@]}"; do
     case "$flag" in
-      -I*|-L*)
-        dir=$(cd "${flag:2}" 2>/dev/null && pwd -P)
+      -I*|-L*|-Wl,-rpath,*)
+        path=${flag#-Wl,-rpath,}
+        [ "$path" = "$flag" ] && path=${flag:2}
+        dir=$(cd "$path" 2>/dev/null && pwd -P)
         case "$dir" in
           "$prefix"/*) ;;
           *) fail "pkg-config flag $flag does not lead into $prefix" ;;
         esac ;;
     esac
   done
+  if [ "$shared" = ON ]; then
+    printf '%s\n' "${pc_flags[@]}" | grep -q '^-Wl,-rpath,' || fail "navlink.pc's Libs carry no runpath to $libdir"
+  fi
   for program in consumer path_consumer; do
     pc_bin=$work/pkgconfig-$program
     if step "build $program.c with cc \$(pkg-config ${pc_static[*]} --cflags --libs navlink)" \
         cc -std=c11 -Wall -Wextra -pedantic -Werror "${san_flags[@]}" "$consumer_src/$program.c" -o "$pc_bin" \
         "${pc_flags[@]}" -lm; then
-      check_loads_installed "$pc_bin" "the pkg-config $program" LD_LIBRARY_PATH="$libdir"
+      # navlink.pc's runpath: the program finds the library it was built against with no
+      # LD_LIBRARY_PATH (a program built so used to exit 127, libnavlink.so.0 not found).
+      check_loads_installed "$pc_bin" "the pkg-config $program" -u LD_LIBRARY_PATH
     fi
   done
-  run_consumer "the pkg-config consumer (LD_LIBRARY_PATH=$libdir)" "$hit_line" \
-    env LD_LIBRARY_PATH="$libdir" "$work/pkgconfig-consumer"
-  run_consumer "the pkg-config path consumer (LD_LIBRARY_PATH=$libdir)" "$path_line" \
-    env LD_LIBRARY_PATH="$libdir" "$work/pkgconfig-path_consumer"
+  run_consumer "the pkg-config consumer (no LD_LIBRARY_PATH)" "$hit_line" env -u LD_LIBRARY_PATH "$work/pkgconfig-consumer"
+  run_consumer "the pkg-config path consumer (no LD_LIBRARY_PATH)" "$path_line" \
+    env -u LD_LIBRARY_PATH "$work/pkgconfig-path_consumer"
 fi
 
 finish

@@ -37,6 +37,7 @@ contents=$(dpkg-deb -c "$deb" | awk '{ print $6 }' | sed 's|^\./|/|')
 has() { grep -qE "$1" <<<"$contents" || fail "the package holds no $2 ($1)"; }
 has '^/usr/lib/([^/]+/)?libnavlink\.(so\.[0-9.]+|a)$' "libnavlink"
 has '^/usr/include/navlink/navlink\.h$' "navlink.h"
+has '^/usr/include/navlink/navlink\.hpp$' "navlink.hpp"
 has '^/usr/include/navlink/plugin\.h$' "plugin.h"
 has '^/usr/lib/([^/]+/)?cmake/NavLink/NavLinkConfig\.cmake$' "CMake package"
 has '^/usr/lib/([^/]+/)?pkgconfig/navlink\.pc$' "navlink.pc"

@@ -559,3 +559,53 @@ TEST_CASE("navlink simulate LEVEL and navlink-viewer --from --to exit 0 only whe
     CHECK(viewer_off.exit_code == 2);
     CHECK(viewer_off.err.find("--to 60,0,0: not every agent can go there") != std::string::npos);
 }
+
+// The README shows the demo's output: its counts and every agent's row are what the demo prints now
+// (the milliseconds aside), so the README cannot fall behind the program.
+TEST_CASE("the README's demo output is what navlink demo prints") {
+    const std::string dir = nl::test::scratch_dir("readme_demo");
+    const ProgramRun run = navlink({"demo"}, dir);
+    REQUIRE_MESSAGE(run.exit_code == 0, run.err);
+    const std::string readme = nl::test::read_file(std::string(NAVLINK_SOURCE_DIR) + "/README.md");
+    const auto without_times = [](const std::string& text) { return std::regex_replace(text, std::regex(R"( in \d+ ms)"), ""); };
+    const std::string printed = without_times(run.out), shown = without_times(readme);
+    std::istringstream lines(printed);
+    int compared = 0;
+    for (std::string line; std::getline(lines, line);) {
+        const bool row = std::regex_search(line, std::regex(R"(^(walker|short jumper|long jumper) .*\| )"));
+        const bool count = line.rfind("NavLink demo:", 0) == 0 || line.rfind("  navmesh:", 0) == 0 || line.rfind("  links:", 0) == 0 ||
+                           line.rfind("  route:", 0) == 0;
+        if (!row && !count) continue;
+        CHECK_MESSAGE(shown.find(line + "\n") != std::string::npos, "README.md does not show: " << line);
+        ++compared;
+    }
+    CHECK(compared == 7);
+}
+
+// Links from another level are refused saying so; links for another body are refused naming
+// --any-body, and load with a warning with it.
+TEST_CASE("navlink path says when links were made for another level, and --any-body loads links made for another body") {
+    GeneratedLevelFiles files("links_elsewhere");
+    nl::levelgen::GeneratedLevel tower;
+    tower.add_box({{-10, -1, -10}, {20, 0, 10}});
+    tower.add_box({{0, 0, -3}, {6, 4.2f, 3}});
+    nl::test::write_file(files.dir + "/tower.obj", tower.to_obj());
+    nl::test::write_file(files.dir + "/thin.json", R"({"radius": 0.4})");
+    REQUIRE(navlink({"generate", "level.obj", "--out", "links.json"}, files.dir).exit_code == 0);
+
+    const ProgramRun elsewhere = navlink({"path", "tower.obj", "--links", "links.json", "--from", "15,0,0", "--to", "10,0,7"}, files.dir);
+    CHECK(elsewhere.exit_code == 2);
+    CHECK_MESSAGE(elsewhere.err.find("these links were made for another level (level hash ") != std::string::npos, elsewhere.err);
+
+    const std::vector<std::string> thin = {"path", "level.obj", "--links", "links.json", "--agent", "thin.json", "--from", "2,0,3",
+                                           "--to", "33.9,-1,3.5"};
+    const ProgramRun refused = navlink(thin, files.dir);
+    CHECK(refused.exit_code == 2);
+    CHECK_MESSAGE(refused.err.find("load them anyway with NL_LINKS_LOAD_ANY_BODY (navlink: --any-body)") != std::string::npos, refused.err);
+    std::vector<std::string> any_body = thin;
+    any_body.push_back("--any-body");
+    const ProgramRun loaded = navlink(any_body, files.dir);
+    CHECK_MESSAGE(loaded.exit_code != 2, loaded.err);
+    CHECK(loaded.err.find("warning: the links were generated for a body of radius 0.6 m") != std::string::npos);
+    CHECK(loaded.err.find("loaded anyway (NL_LINKS_LOAD_ANY_BODY)") != std::string::npos);
+}

@@ -1800,7 +1800,8 @@ typedef struct nl_agent_info {
                                    (on a moving surface it moves with the surface). */
     uint8_t has_destination;
     uint8_t reserved[3];
-    uint32_t corners_ahead;   /**< Path points still to reach (nl_agent_get_corners). */
+    uint32_t corners_ahead;   /**< Path points still to reach (nl_agent_get_corners gives them after
+                                   where the agent is). */
     uint64_t user_data;
     nl_navmesh_id navmesh;    /**< The navmesh it stands on now (it changes when the agent takes a cross
                                    link; while in the air, the one it took off from). Added in 0.3. */
@@ -1824,8 +1825,12 @@ NL_API nl_status nl_agent_get_info(const nl_world* world, nl_agent_id agent, nl_
 NL_API nl_status nl_world_get_agents(const nl_world* world, nl_agent_info* out_infos, uint32_t capacity,
                                      uint32_t* out_count);
 
-/** The path points the agent has yet to reach, the next first (two-call pattern; out_points[0].size
- *  set): where it walks, and at which point it takes which link. Thread-safe. */
+/** Where the agent is, then the path points it has yet to reach, the next first (two-call pattern;
+ *  out_points[0].size set): where it walks, and at which point it takes which link. The first point
+ *  is its position now and how it goes on from there (NL_SEGMENT_WALK, or the link it is flying, with
+ *  that link's apex), so a straight walk to the goal is two points; corners_ahead + 1 points in all
+ *  (since 0.3; before, the stretch being walked was missing). None when it has no path or has
+ *  arrived. Thread-safe. */
 NL_API nl_status nl_agent_get_corners(const nl_world* world, nl_agent_id agent, nl_path_point* out_points,
                                       uint32_t capacity, uint32_t* out_count);
 

@@ -8,11 +8,12 @@ use crate::status::nl_status;
 use crate::world::nl_world;
 
 #[repr(C)]
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+#[derive(Clone, Copy, Default, PartialEq, Eq, Hash)]
 pub struct nl_agent_id {
     pub index1: u32,
     pub generation: u32,
 }
+id_debug!(nl_agent_id, "AgentId");
 
 pub type nl_agent_state = u32;
 pub const NL_AGENT_IDLE: nl_agent_state = 0;

@@ -5,11 +5,12 @@ use crate::world::nl_world;
 use std::os::raw::c_char;
 
 #[repr(C)]
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+#[derive(Clone, Copy, Default, PartialEq, Eq, Hash)]
 pub struct nl_mesh_id {
     pub index1: u32,
     pub generation: u32,
 }
+id_debug!(nl_mesh_id, "MeshId");
 
 pub const NL_MESH_MOVABLE: u32 = 0x0000_0001;
 /// Its fronts are wound clockwise: the triangles are turned over when registered.

@@ -34,6 +34,32 @@ macro_rules! default_is_init {
     };
 }
 
+/// `impl Debug` for an id, under the safe crate's name and by what it means rather than its raw fields:
+/// `MeshId { index: 3, generation: 1 }` (the slot index, from 0, and how many objects the slot has held),
+/// or `MeshId(null)` for the all-zero id. docs/c-api.md, "Ids": the low 28 bits of `index1` are the slot
+/// index + 1 (the top 4 the kind of object) and the low 20 bits of `generation` count the slot's reuse
+/// (the top 12 name the world); ids stay opaque values: compare both raw fields.
+macro_rules! id_debug {
+    ($t:ident, $name:literal) => {
+        impl std::fmt::Debug for $t {
+            fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+                if self.index1 == 0 {
+                    return write!(f, concat!($name, "(null)"));
+                }
+                f.debug_struct($name)
+                    .field("index", &(i64::from(self.index1 & crate::ID_SLOT_MASK) - 1))
+                    .field("generation", &(self.generation & crate::ID_GENERATION_MASK))
+                    .finish()
+            }
+        }
+    };
+}
+
+/// The bits of an id's `index1` that hold its slot index + 1 (for reading ids: `Debug`).
+const ID_SLOT_MASK: u32 = (1 << 28) - 1;
+/// The bits of an id's `generation` that count its slot's reuse.
+const ID_GENERATION_MASK: u32 = (1 << 20) - 1;
+
 mod agents;
 mod level;
 mod links;
@@ -57,3 +83,34 @@ pub use queries::*;
 pub use recast::*;
 pub use status::*;
 pub use world::*;
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn ids_debug_by_slot_and_generation() {
+        // As the library issues them: the kind of object in index1's top 4 bits, the world in generation's top 12.
+        let mesh = nl_mesh_id { index1: 1 << 28 | 4, generation: 5 << 20 | 1 };
+        assert_eq!(format!("{:?}", mesh), "MeshId { index: 3, generation: 1 }");
+        assert_eq!(format!("{:?}", nl_navmesh_id { index1: 1, generation: 2 }), "NavmeshId { index: 0, generation: 2 }");
+        assert_eq!(format!("{:?}", nl_link_id { index1: 3 << 28 | 12, generation: 7 }), "LinkId { index: 11, generation: 7 }");
+        assert_eq!(format!("{:?}", nl_path_ticket { index1: 2, generation: 1 }), "PathTicket { index: 1, generation: 1 }");
+        assert_eq!(format!("{:?}", nl_agent_id { index1: 6 << 28 | 1, generation: 1 }), "AgentId { index: 0, generation: 1 }");
+        assert_eq!(format!("{:?}", nl_plugin_id { index1: 9, generation: 3 }), "PluginId { index: 8, generation: 3 }");
+        assert_eq!(format!("{:#?}", nl_mesh_id { index1: 4, generation: 1 }), "MeshId {\n    index: 3,\n    generation: 1,\n}");
+    }
+
+    #[test]
+    fn null_ids_debug_as_null() {
+        assert_eq!(format!("{:?}", nl_mesh_id::default()), "MeshId(null)");
+        assert_eq!(format!("{:?}", nl_navmesh_id::default()), "NavmeshId(null)");
+        assert_eq!(format!("{:?}", nl_link_id::default()), "LinkId(null)");
+        assert_eq!(format!("{:?}", nl_path_ticket::default()), "PathTicket(null)");
+        assert_eq!(format!("{:?}", nl_agent_id::default()), "AgentId(null)");
+        assert_eq!(format!("{:?}", nl_plugin_id::default()), "PluginId(null)");
+        // A struct holding ids shows them so too.
+        let link = nl_link_init();
+        assert!(format!("{:?}", link).contains("id: LinkId(null), navmesh: NavmeshId(null)"), "{:?}", link);
+    }
+}

@@ -6,11 +6,12 @@ use crate::world::nl_world;
 use std::os::raw::{c_char, c_void};
 
 #[repr(C)]
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+#[derive(Clone, Copy, Default, PartialEq, Eq, Hash)]
 pub struct nl_link_id {
     pub index1: u32,
     pub generation: u32,
 }
+id_debug!(nl_link_id, "LinkId");
 
 pub type nl_link_kind = u32;
 pub const NL_LINK_JUMP: nl_link_kind = 1;

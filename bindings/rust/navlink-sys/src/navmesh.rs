@@ -6,11 +6,12 @@ use crate::world::nl_world;
 use std::os::raw::{c_char, c_void};
 
 #[repr(C)]
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+#[derive(Clone, Copy, Default, PartialEq, Eq, Hash)]
 pub struct nl_navmesh_id {
     pub index1: u32,
     pub generation: u32,
 }
+id_debug!(nl_navmesh_id, "NavmeshId");
 
 pub const NL_MAX_POLYGON_VERTICES: usize = 16;
 pub const NL_NO_POLYGON: u32 = 0xffff_ffff;

@@ -7,11 +7,12 @@ use crate::world::nl_world;
 use std::os::raw::{c_char, c_void};
 
 #[repr(C)]
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+#[derive(Clone, Copy, Default, PartialEq, Eq, Hash)]
 pub struct nl_path_ticket {
     pub index1: u32,
     pub generation: u32,
 }
+id_debug!(nl_path_ticket, "PathTicket");
 
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq)]

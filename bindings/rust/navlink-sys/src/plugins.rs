@@ -8,11 +8,12 @@ use crate::world::{nl_log_level, nl_world};
 use std::os::raw::{c_char, c_void};
 
 #[repr(C)]
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+#[derive(Clone, Copy, Default, PartialEq, Eq, Hash)]
 pub struct nl_plugin_id {
     pub index1: u32,
     pub generation: u32,
 }
+id_debug!(nl_plugin_id, "PluginId");
 
 pub const NL_PLUGIN_NAVMESH_BUILDER: u32 = 0x1;
 pub const NL_PLUGIN_LINK_KIND: u32 = 0x2;

@@ -29,7 +29,7 @@ mod types;
 mod world;
 
 pub use agents::{default_agent_def, AgentInfoExt};
-pub use error::{status_string, Error, ErrorKind, Result};
+pub use error::{status_string, Error, ErrorKind, Result, Status};
 pub use kinds::{
     AgentEventKind, AgentReason, AgentState, LinkKind, LinkLimit, PathOutcome, PathShortfallReason, RecastPartition, TrajectoryKind,
     UpAxis,

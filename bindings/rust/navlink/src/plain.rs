@@ -2,6 +2,7 @@
 //! them, `u8` (and `uint32_t` yes/no) flags as `bool`, kinds as enums, flag words as `MeshFlags` or
 //! `BuildWarnings`, nested such structs as their plain structs. `From<c struct>` reads one; `to_c` writes
 //! one over a C value that already has its `size` (and the header's defaults for fields not mirrored).
+use crate::error::Status;
 use crate::kinds::{AgentEventKind, AgentReason, AgentState, LinkKind, PathOutcome, RecastPartition, TrajectoryKind, UpAxis};
 use crate::level::MeshFlags;
 use crate::navmesh::BuildWarnings;
@@ -74,6 +75,18 @@ impl FromC<u32> for BuildWarnings {
 impl IntoC<u32> for BuildWarnings {
     fn into_c(self) -> u32 {
         self.to_raw()
+    }
+}
+
+impl FromC<u32> for Status {
+    fn from_c(c: u32) -> Status {
+        Status(c)
+    }
+}
+
+impl IntoC<u32> for Status {
+    fn into_c(self) -> u32 {
+        self.0
     }
 }
 

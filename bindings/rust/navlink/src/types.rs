@@ -1,5 +1,6 @@
 //! navlink-sys's plain-data structs (ids, rays, bodies: no `size`, no `reserved`) under Rust names, plain
 //! Rust structs for the ones that carry `size` or `reserved`, and the header's constants grouped by meaning.
+use crate::error::Status;
 use crate::kinds::{AgentEventKind, AgentReason, AgentState, LinkKind, PathOutcome, RecastPartition, TrajectoryKind, UpAxis};
 use crate::level::MeshFlags;
 use crate::navmesh::BuildWarnings;
@@ -61,8 +62,8 @@ plain_struct! {
     /// What a finished request found, besides its points (`nl_path_result`).
     pub struct PathSummary mirrors sys::nl_path_result, default sys::nl_path_result_init(), derives (PartialEq) {
         outcome: PathOutcome,
-        /// The request's `nl_status` (PARTIAL_RESULT for `PathOutcome::Partial`).
-        status: u32,
+        /// For `PathOutcome::Failed`, the `nl_status` saying why; `SUCCESS` otherwise. Prints by name.
+        status: Status,
         point_count: u32,
         links_used: u32,
         nodes_visited: u32,
