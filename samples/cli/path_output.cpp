@@ -4,6 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "route_text.h"
 #include "sample_error.h"
 
 namespace nl::cli {
@@ -104,6 +105,8 @@ void print_path_text(std::FILE* out, const samples::PlannedPath& path, const std
         std::fprintf(out, "  %3zu  %-28s %-6s %-6s %8.2f\n", i, position, samples::segment_name(p.segment), link,
                      segments[i].length);
     }
+    // The legs in one line, consecutive walking merged (a walker's eleven corners are one walk).
+    std::fprintf(out, "  route: %s\n", route_text(path).c_str());
     if (!arrives)
         std::fprintf(out, "  %s: it ends %.2f m from the goal (%.2f, %.2f, %.2f)\n", samples::outcome_name(r.outcome),
                      distance(path.points.back().position, asked.to), asked.to[0], asked.to[1], asked.to[2]);

@@ -1,5 +1,6 @@
 // navlink level, generate, path and demo on the generated default level: exit statuses, the links file,
 // the JSON path, and links where the level's features put them.
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -608,4 +609,19 @@ TEST_CASE("navlink path says when links were made for another level, and --any-b
     CHECK_MESSAGE(loaded.exit_code != 2, loaded.err);
     CHECK(loaded.err.find("warning: the links were generated for a body of radius 0.6 m") != std::string::npos);
     CHECK(loaded.err.find("loaded anyway (NL_LINKS_LOAD_ANY_BODY)") != std::string::npos);
+}
+
+// A walker's path round the default level turns at many corners; its route line is one walk.
+TEST_CASE("navlink path prints the route in one line, consecutive walking merged") {
+    GeneratedLevelFiles files("route_line");
+    REQUIRE(navlink({"generate", "level.obj", "--out", "links.json"}, files.dir).exit_code == 0);
+    const ProgramRun walker = navlink({"path", "level.obj", "--from", "2,0,3", "--to", "33.9,-1,3.5"}, files.dir);
+    REQUIRE_MESSAGE(walker.exit_code == 0, walker.out << walker.err);
+    std::smatch route;
+    REQUIRE(std::regex_search(walker.out, route, std::regex(R"(\n  route: (.*)\n)")));
+    CHECK_MESSAGE(std::regex_match(route[1].str(), std::regex(R"(walk [0-9.]+)")), route[1].str());
+    CHECK(std::count(walker.out.begin(), walker.out.end(), '\n') > 6);  // many corners in the table above it
+    const ProgramRun jumper = navlink({"path", "level.obj", "--links", "links.json", "--from", "2,0,3", "--to", "33.9,-1,3.5"}, files.dir);
+    REQUIRE(std::regex_search(jumper.out, route, std::regex(R"(\n  route: (.*)\n)")));
+    CHECK_MESSAGE(std::regex_search(route[1].str(), std::regex(R"(^walk [0-9.]+, (jump|drop) [0-9.]+, walk )")), route[1].str());
 }
