@@ -2,13 +2,16 @@
 
 The wheel holds navlink.py as navlink/__init__.py beside navlink/py.typed: PEP 561 type information ships
 in packages, not in single-module distributions, while the source tree keeps the one file that its test,
-the coverage check and a user with NAVLINK_LIBRARY import directly.
+the coverage check and a user with NAVLINK_LIBRARY import directly. It also holds
+navlink/_built_against.py, the folder of the library pkg-config named when it was built, which the
+module tries before looking the library up again.
 """
 import base64
 import hashlib
 import io
 import os
 import re
+import subprocess
 import tarfile
 import zipfile
 
@@ -93,9 +96,27 @@ def get_requires_for_build_sdist(config_settings=None):
     return []
 
 
+def _built_against():
+    """navlink/_built_against.py: the folder of the libnavlink pkg-config names at build time (with the
+    PKG_CONFIG_PATH the installer set), so the installed package finds that library once the variable
+    is gone. None when pkg-config finds no navlink.pc: the module looks the library up at import."""
+    try:
+        run = subprocess.run(["pkg-config", "--variable=libdir", "navlink"], capture_output=True, text=True, timeout=30)
+    except (OSError, subprocess.SubprocessError):
+        return None
+    libdir = run.stdout.strip()
+    if run.returncode != 0 or not libdir:
+        return None
+    return ("# The folder of the libnavlink this package was built against (pkg-config at pip install time).\n"
+            "LIBRARY_DIR = %r\n" % os.path.realpath(libdir)).encode()
+
+
 def build_wheel(wheel_directory, config_settings=None, metadata_directory=None):
-    return _write_wheel(wheel_directory, _project(),
-                        {name: _read(source) for name, source in PACKAGE_FILES.items()})
+    files = {name: _read(source) for name, source in PACKAGE_FILES.items()}
+    built_against = _built_against()
+    if built_against is not None:
+        files["navlink/_built_against.py"] = built_against
+    return _write_wheel(wheel_directory, _project(), files)
 
 
 def build_editable(wheel_directory, config_settings=None, metadata_directory=None):

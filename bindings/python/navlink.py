@@ -18,8 +18,9 @@ Two layers:
   ``with``. States, reasons, kinds and outcomes are IntEnums (``AgentState``, ``PathOutcome``...; the
   ``AGENT_*``, ``PATH_*``... constants are their members).
 
-The library is the first of: ``NAVLINK_LIBRARY`` (a path to libnavlink.so), pkg-config's ``navlink.pc``
-(its libdir), ``ctypes.util.find_library("navlink")`` (the loader's cache), the installed places
+The library is the first of: ``NAVLINK_LIBRARY`` (a path to libnavlink.so), the library an installed
+package was built against (``pip install`` records the folder pkg-config named then, so it is found once
+``PKG_CONFIG_PATH`` is gone), pkg-config's ``navlink.pc`` (its libdir), ``ctypes.util.find_library("navlink")`` (the loader's cache), the installed places
 (``sys.prefix``/lib, /usr/local/lib, /usr/lib...); ``library_path`` says which was loaded, and an
 ImportError lists what was tried. Every World method may be called from several threads (navlink.h);
 ``close()`` must not run at the same time as another call on the world.
@@ -917,6 +918,18 @@ def _installed_library_dirs() -> List[str]:
     return list(dirs.values())
 
 
+def _built_against_library_dir() -> Optional[str]:
+    """The folder pkg-config named when this package was built into a wheel (pip install), or None (the
+    source tree's navlink.py, or a wheel built where pkg-config found no navlink.pc)."""
+    if not __package__:
+        return None
+    try:
+        from . import _built_against  # type: ignore[attr-defined]
+    except ImportError:
+        return None
+    return getattr(_built_against, "LIBRARY_DIR", None)
+
+
 def _pkg_config_library_dir() -> Tuple[Optional[str], str]:
     """(libdir of navlink.pc or None, what pkg-config said)."""
     try:
@@ -938,6 +951,14 @@ def _library_candidates() -> Iterable[Tuple[str, Optional[str], str]]:
         yield "NAVLINK_LIBRARY", explicit, ""
         return  # an explicit choice that fails must not be papered over by another library
     yield "NAVLINK_LIBRARY", None, "not set"
+    built_against = _built_against_library_dir()
+    if built_against:
+        paths = [os.path.join(built_against, name) for name in _LIBRARY_FILE_NAMES]
+        for path in [p for p in paths if os.path.exists(p)]:
+            yield "the library this package was installed against", path, ""
+        if not any(os.path.exists(p) for p in paths):
+            yield "the library this package was installed against", None, "%s holds none of %s" % (
+                built_against, ", ".join(_LIBRARY_FILE_NAMES))
     libdir, said = _pkg_config_library_dir()
     found_in_libdir = False
     for name in _LIBRARY_FILE_NAMES if libdir else []:

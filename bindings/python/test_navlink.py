@@ -2306,5 +2306,42 @@ class TypingTest(unittest.TestCase):
         self.assertGreater(checked, 100)
 
 
+class InstalledPackageTest(unittest.TestCase):
+    """A package built (pip install) while PKG_CONFIG_PATH named the library finds that library once the
+    variable is gone: the wheel records the folder pkg-config named then."""
+
+    def test_the_wheel_remembers_the_library_it_was_built_against(self):
+        import shutil
+        import zipfile
+        import _navlink_build
+        if shutil.which("pkg-config") is None:
+            self.skipTest("no pkg-config")
+        library_dir = os.path.dirname(os.path.realpath(nl.library_path))
+        with tempfile.TemporaryDirectory() as pc_dir, tempfile.TemporaryDirectory() as wheel_dir, \
+                tempfile.TemporaryDirectory() as site:
+            with open(os.path.join(pc_dir, "navlink.pc"), "w") as pc:
+                pc.write("libdir=%s\nName: NavLink\nDescription: test\nVersion: %d.%d.%d\nLibs: -L${libdir} -lnavlink\n"
+                         "Cflags:\n" % (library_dir, nl.VERSION_MAJOR, nl.VERSION_MINOR, nl.VERSION_PATCH))
+            saved = os.environ.get("PKG_CONFIG_PATH")
+            os.environ["PKG_CONFIG_PATH"] = pc_dir
+            try:
+                wheel = _navlink_build.build_wheel(wheel_dir)
+            finally:
+                if saved is None:
+                    del os.environ["PKG_CONFIG_PATH"]
+                else:
+                    os.environ["PKG_CONFIG_PATH"] = saved
+            with zipfile.ZipFile(os.path.join(wheel_dir, wheel)) as archive:
+                self.assertIn("navlink/_built_against.py", archive.namelist())
+                archive.extractall(site)
+            env = {k: v for k, v in os.environ.items()
+                   if k not in ("PKG_CONFIG_PATH", "NAVLINK_LIBRARY", "LD_LIBRARY_PATH", "PYTHONPATH")}
+            env["PYTHONPATH"] = site
+            run = subprocess.run([sys.executable, "-c", "import navlink; print(navlink.library_path)"], cwd=site, env=env,
+                                 capture_output=True, text=True, timeout=60)
+            self.assertEqual(run.returncode, 0, run.stderr)
+            self.assertEqual(os.path.dirname(os.path.realpath(run.stdout.strip())), library_dir)
+
+
 if __name__ == "__main__":
     unittest.main()
