@@ -177,7 +177,7 @@ NL_API nl_status nl_path_explain(nl_world* world, const nl_path_request_def* def
         out.reversed = report.reversed ? 1u : 0u;
         out.missing_abilities = report.missing_abilities;
         out.link = to_id<nl_link_id>(report.link);
-        for (int i = 0; i < 3; ++i) out.link_start[i] = report.link_start[i];
+        nl::capi::copy_point(out.link_start, report.link_start);
         const std::string text = nl::describe(report, request.query);
         std::snprintf(out.text, sizeof out.text, "%s", text.c_str());
         nl::capi::write_growable(out_shortfall, out, sizeof(nl_path_shortfall), "out_shortfall");

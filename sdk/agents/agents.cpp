@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <mutex>
 #include <shared_mutex>
 
@@ -272,8 +273,6 @@ uint32_t Agents::count() const {
 
 namespace {
 
-// What a host reads, in the world: on a moving surface, at the surface's pose of this moment (the
-// velocity is the body's own, turned with the surface, without the surface's motion).
 // The path points the agent has yet to reach: in the air `next` is still the take-off point (it
 // moves on at the landing); arrived (perhaps beside its goal, among others), none.
 size_t points_ahead(const AgentBody& a) {
@@ -281,6 +280,8 @@ size_t points_ahead(const AgentBody& a) {
     return a.path.size() - a.next - (a.motion ? 1 : 0);
 }
 
+// What a host reads, in the world: on a moving surface, at the surface's pose of this moment (the
+// velocity is the body's own, turned with the surface, without the surface's motion).
 AgentInfo info_of(const AgentBody& a) {
     const SurfacePose pose = pose_of(a.frame);
     AgentInfo info;
@@ -321,20 +322,19 @@ std::vector<AgentInfo> Agents::infos() const {
 std::vector<PathPoint> Agents::corners(Handle agent) const {
     std::shared_lock lock(mutex_);
     const AgentBody& a = find(agent);
-    if (points_ahead(a) == 0) return {};
-    // Where it is now, going on as it does: flying the link it took off on, or walking. Without it a
-    // straight walk to the goal would be one point, the stretch being walked missing.
-    // In the air `next` is still the take-off point (it moves on at the landing).
+    const size_t ahead = points_ahead(a);
+    if (ahead == 0) return {};
+    // Where it is now, going on as it does: flying the link it took off on (the point `next` still
+    // names), or walking. Without it a straight walk to the goal would be one point.
     PathPoint here;
     if (a.motion) here = a.path[a.next];
     else here.apex = a.position;
     here.surface_position = a.position;
     here.polygon = a.polygon;
-    const size_t ahead = a.next + (a.motion ? 1 : 0);
     std::vector<PathPoint> out;
-    out.reserve(a.path.size() - ahead + 1);
+    out.reserve(ahead + 1);
     out.push_back(here);
-    out.insert(out.end(), a.path.begin() + std::min(ahead, a.path.size()), a.path.end());
+    out.insert(out.end(), a.path.end() - static_cast<std::ptrdiff_t>(ahead), a.path.end());
     const SurfacePose pose = pose_of(a.frame);
     for (PathPoint& p : out) {
         p.position = pose.world_point(p.surface_position);

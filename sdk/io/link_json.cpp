@@ -9,6 +9,7 @@
 #include <limits>
 
 #include "io/json_input.h"
+#include "level/level_hash.h"
 #include "level/mesh_validation.h"
 #include "util/error.h"
 #include "util/excerpt.h"
@@ -16,13 +17,6 @@
 
 namespace nl {
 namespace {
-
-// A level hash as the navmesh file's description writes it: 16 hex digits.
-std::string hex_hash(uint64_t hash) {
-    char text[17];
-    std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(hash));
-    return text;
-}
 
 uint64_t parse_hex_hash(const Json& value) {
     const std::string text = value.is_string() ? value.get<std::string>() : std::string();
@@ -156,7 +150,7 @@ std::string links_to_json(const std::vector<Link>& links, const LinksMadeFor* ma
         file["made_for"] = {{"agent", {{"radius", a.radius}, {"height", a.height}, {"max_climb", a.max_climb}, {"max_slope", a.max_slope}}},
                             {"link_settings", recorded_json(made_for->made_with.settings)},
                             {"link_plugins", recorded_json(made_for->made_with.plugins)}};
-        if (made_for->level_hash != 0) file["made_for"]["level_hash"] = hex_hash(made_for->level_hash);
+        if (made_for->level_hash != 0) file["made_for"]["level_hash"] = level_hash_text(made_for->level_hash);
     }
     file["links"] = std::move(list);
     return file.dump(1);

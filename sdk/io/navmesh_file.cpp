@@ -12,6 +12,7 @@
 #include "io/file_bytes.h"
 #include "io/json_input.h"
 #include "io/link_json.h"
+#include "level/level_hash.h"
 #include "level/mesh_validation.h"
 #include "navmesh/navmesh_grid.h"
 #include "util/error.h"
@@ -339,14 +340,12 @@ std::string tag_name(const uint8_t* tag) {
 }  // namespace
 
 std::string made_for_json(const NavMeshFile& file) {
-    char hash[17];
-    std::snprintf(hash, sizeof hash, "%016llx", static_cast<unsigned long long>(file.made_for.level_hash));
     const nlohmann::json out = {
         {"builder", file.made_for.builder.empty() ? nlohmann::json(nullptr) : nlohmann::json(file.made_for.builder)},
         {"builder_settings", recorded_json(file.made_for.builder_settings)},
         {"link_settings", recorded_json(file.made_for.links.settings)},
         {"link_plugins", recorded_json(file.made_for.links.plugins)},
-        {"level_hash", hash},
+        {"level_hash", level_hash_text(file.made_for.level_hash)},
         {"writer", file.writer}};
     // The names and texts come from the file: bytes that are not UTF-8 are shown as U+FFFD.
     return out.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);

@@ -35,6 +35,9 @@ struct BuildTriangles {
         size_t first = 0;
     };
     std::vector<MeshStart> mesh_starts;
+
+    // One past mesh_starts[k]'s last triangle.
+    size_t mesh_end(size_t k) const { return k + 1 < mesh_starts.size() ? mesh_starts[k + 1].first : mesh.triangles.size(); }
 };
 
 // Vertex `index` of a packed x y z float array (Embree's vertex buffers).

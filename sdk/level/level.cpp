@@ -28,7 +28,7 @@ TriangleMesh in_navlink_frame(const TriangleMesh& given, const MeshFrame& frame)
         fail_field(ErrorCode::InvalidArgument, "metres_per_unit is ", frame.metres_per_unit, " (0 for metres not said, or ",
                    kLeastMetresPerUnit, " to ", kMostMetresPerUnit, ": 0.01 for centimetres, 0.0254 for inches)");
     if (frame.up != UpAxis::NotSaid && frame.up != UpAxis::Y && frame.up != UpAxis::Z)
-        fail_field(ErrorCode::InvalidArgument, "up_axis is ", int(frame.up), " (NL_UP_AXIS_NOT_SAID, NL_UP_AXIS_Y or NL_UP_AXIS_Z)");
+        fail_field(ErrorCode::InvalidArgument, "up_axis is ", uint32_t(frame.up), " (NL_UP_AXIS_NOT_SAID, NL_UP_AXIS_Y or NL_UP_AXIS_Z)");
     if (frame.identity()) return {};
     const float scale = frame.metres_per_unit == 0.0f ? 1.0f : frame.metres_per_unit;
     TriangleMesh out;

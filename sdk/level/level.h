@@ -43,7 +43,7 @@ constexpr uint32_t kMaxMeshArea = kObstacleArea - 1u;
 // The frame a host's vertices are given in; NavLink's own is metres with y up. Vertices are brought
 // into it when a mesh is registered, before its transform (which, as every other position, is in
 // NavLink's frame).
-enum class UpAxis : uint8_t { NotSaid, Y, Z };  // not said: y, and a navmesh build says when z looks up
+enum class UpAxis : uint32_t { NotSaid, Y, Z };  // not said: y, and a navmesh build says when z looks up
 struct MeshFrame {
     // Metres per unit of the vertices; 0 = not said (metres, and a navmesh build says when the level's
     // size suggests other units), 1 = metres said.

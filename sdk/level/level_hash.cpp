@@ -1,8 +1,15 @@
 #include "level/level_hash.h"
 
+#include <cstdio>
 #include <cstring>
 
 namespace nl {
+
+std::string level_hash_text(uint64_t hash) {
+    char text[17];
+    std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(hash));
+    return text;
+}
 
 uint64_t level_hash(const BuildTriangles& level) {
     const TriangleMesh& mesh = level.mesh;

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 
 #include "level/geometry.h"
 
@@ -14,5 +15,8 @@ namespace nl {
 // shared, and a level of area-0 triangles hashes as its corners alone. Never 0 (0 means "not built
 // from the level").
 uint64_t level_hash(const BuildTriangles& level);
+
+// A hash as files and messages write it: 16 hex digits.
+std::string level_hash_text(uint64_t hash);
 
 }  // namespace nl

@@ -57,22 +57,18 @@ bool name_the_link(const PathGraph& graph, const PathQuery& query, const PathQue
     for (const PathPoint& point : result.points) {
         if (point.link == Handle{}) continue;
         const Link* link = find_link(graph, point.link);
-        if (!link || can_take(*link, point.reversed, query.agent)) continue;
-        const LinkRequirements& r = link->requirements;
-        const AgentCapabilities& a = query.agent;
-        const float rise = point.reversed ? r.drop : r.rise, drop = point.reversed ? r.rise : r.drop;
-        const bool stepping_off = link->kind == LinkKind::Drop && !point.reversed;
+        if (!link) continue;
+        const LinkShortfall stops = what_stops(*link, point.reversed, query.agent);
+        if (stops.limit == LinkLimit::None) continue;
         out.why = PathShortfall::LinkBeyondBody;
+        out.limit = stops.limit;
+        out.needed = stops.needed;
+        out.has = stops.has;
+        out.missing_abilities = stops.missing_abilities;
         out.link = point.link;
         out.link_kind = link->kind;
         out.reversed = point.reversed;
         out.link_start = point.position;
-        if (!stepping_off && r.gap > a.max_jump_distance) out.limit = LinkLimit::JumpDistance, out.needed = r.gap, out.has = a.max_jump_distance;
-        else if (rise > a.max_jump_height) out.limit = LinkLimit::JumpHeight, out.needed = rise, out.has = a.max_jump_height;
-        else if (drop > a.max_drop_height) out.limit = LinkLimit::DropHeight, out.needed = drop, out.has = a.max_drop_height;
-        else if (r.clearance_width > 0.0f && r.clearance_width < 2.0f * a.radius)
-            out.limit = LinkLimit::Width, out.needed = 2.0f * a.radius, out.has = r.clearance_width;
-        else out.limit = LinkLimit::Abilities, out.missing_abilities = r.abilities & ~a.abilities;
         return true;
     }
     return false;
@@ -91,7 +87,7 @@ PathShortfallReport explain_shortfall(const PathGraph& graph, const PathQuery& q
     PathQuery unlimited = query;
     unlimited.max_nodes = 0;
     unlimited.accept_partial = false;
-    const float navmesh_radius = graph.navmesh().agent().radius;
+    const float navmesh_radius = out.navmesh_radius;
     const bool wider = query.agent.radius > navmesh_radius;
     if (wider && reaches(graph, with_navmesh_width(unlimited, navmesh_radius))) {
         out.why = PathShortfall::BodyTooWide;

@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <string>
 
+#include "path/link_filter.h"
 #include "path/path_graph.h"
 #include "path/path_query.h"
 #include "util/handle.h"
@@ -25,9 +26,6 @@ enum class PathShortfall : uint32_t {
     NoLinks = 5,          // the goal is on another island of the navmesh, and the navmesh has no links
     NotConnected = 6,     // no passage or link leads there, whatever the body could do
 };
-
-// What a link asks that the body does not have.
-enum class LinkLimit : uint32_t { None = 0, JumpDistance = 1, JumpHeight = 2, DropHeight = 3, Width = 4, Abilities = 5 };
 
 struct PathShortfallReport {
     PathShortfall why = PathShortfall::None;

@@ -34,7 +34,7 @@ std::vector<Handle> World::warn_turned_over(const BuildTriangles& triangles, con
     float as_given = 0.0f, turned_over = 0.0f;
     const auto& starts = triangles.mesh_starts;
     for (size_t k = 0; k < starts.size(); ++k) {
-        const size_t end = k + 1 < starts.size() ? starts[k + 1].first : triangles.mesh.triangles.size();
+        const size_t end = triangles.mesh_end(k);
         // An obstacle is never walked on, whichever way it faces.
         if (end == starts[k].first || triangles.areas[starts[k].first] == kObstacleArea) continue;
         const WindingEstimate e = estimate_winding(triangles.mesh, starts[k].first, end - starts[k].first, agent.max_slope, agent.height);
@@ -62,7 +62,7 @@ uint32_t World::warn_of_frame(const BuildTriangles& triangles, const AgentType& 
     std::vector<uint32_t> sized, floors;
     const auto& starts = triangles.mesh_starts;
     for (size_t k = 0; k < starts.size(); ++k) {
-        const size_t end = k + 1 < starts.size() ? starts[k + 1].first : triangles.mesh.triangles.size();
+        const size_t end = triangles.mesh_end(k);
         MeshFrame frame;
         try {
             frame = level_->info(starts[k].mesh).frame;

@@ -93,8 +93,7 @@ void World::warn_if_wider_than_navmesh(const AgentDef& def) {
     if (!(radius > navmesh_radius)) return;
     {
         std::lock_guard lock(wide_bodies_mutex_);
-        const uint64_t navmesh = uint64_t(def.navmesh.index1) << 32 | def.navmesh.generation;
-        if (!wide_bodies_warned_.insert({navmesh, radius}).second) return;
+        if (!wide_bodies_warned_.insert({def.navmesh.packed(), radius}).second) return;
     }
     logger_.log(LogLevel::Warning,
                 concat("agents of radius ", radius, " m on a navmesh built for radius ", navmesh_radius, " m (nl_navmesh_id {",

@@ -193,7 +193,7 @@ private:
     // The (navmesh, body radius) pairs warned of as a body wider than its navmesh's: once each, so
     // a thousand tanks on a navmesh for people say it once. Owned by add_agent, under its mutex.
     std::mutex wide_bodies_mutex_;
-    std::set<std::pair<uint64_t, float>> wide_bodies_warned_;  // navmesh index1 << 32 | generation
+    std::set<std::pair<uint64_t, float>> wide_bodies_warned_;  // (Handle::packed(), radius)
     void warn_if_wider_than_navmesh(const AgentDef& def);
 };
 

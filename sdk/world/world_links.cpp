@@ -115,8 +115,8 @@ void World::load_links_file(Handle navmesh, LinksFile file, bool any_body) {
     const uint64_t ours = navmeshes_.made_for(navmesh).level_hash, theirs = file.made_for ? file.made_for->level_hash : 0;
     const bool other_level = ours != 0 && theirs != 0 && ours != theirs;
     const std::string level_words =
-        other_level ? concat("these links were made for another level (level hash ", std::hex, theirs, "; this navmesh was built from ",
-                             ours, ")")
+        other_level ? concat("these links were made for another level (level hash ", level_hash_text(theirs),
+                             "; this navmesh was built from ", level_hash_text(ours), ")")
                     : std::string();
     try {
         load_links(navmesh, std::move(file.links), file.made_for ? file.made_for->made_with : LinksMadeWith{});

@@ -1047,8 +1047,8 @@ NL_API nl_status nl_navmesh_update_links_in_box(nl_world* world, nl_navmesh_id n
 
 /** Writes the navmesh's links as JSON (schema "navlink-links" version 1, docs/link-generation.md)
  *  into `buffer` (caller-owned, `capacity` bytes, NUL-terminated on success), with what they were made
- *  for ("made_for": the navmesh's agent type and the settings of the generation that made its
- *  generated links). `*out_length` always receives the length without the NUL; a NULL buffer only
+ *  for ("made_for": the navmesh's agent type, the settings of the generation that made its
+ *  generated links, and the hash of the level a built navmesh came from, "level_hash"). `*out_length` always receives the length without the NUL; a NULL buffer only
  *  measures (two-call pattern). Returns SUCCESS, or a failure with BUFFER_TOO_SMALL (capacity must
  *  exceed the length), INVALID_HANDLE or INVALID_ARGUMENT. Thread-safe. */
 NL_API nl_status nl_navmesh_save_links_json(const nl_world* world, nl_navmesh_id navmesh, char* buffer,
@@ -1063,7 +1063,9 @@ NL_API nl_status nl_navmesh_save_links_json(const nl_world* world, nl_navmesh_id
  *  0, an absent "length" the ends' horizontal distance). A file that says the body its links were
  *  generated for ("made_for".agent: radius and height) must say the navmesh's: links for another body
  *  are refused (INVALID_ARGUMENT, both bodies named), or, with NL_LINKS_LOAD_ANY_BODY in `flags`,
- *  loaded with a warning to the log callback. Files without "made_for" (written before 0.3) load as
+ *  loaded with a warning to the log callback. A file whose "level_hash" differs from the navmesh's
+ *  was made for another level: a link end off the navmesh then fails saying so first, and links that
+ *  all fit load with a warning. Files without "made_for" (written before 0.3) load as
  *  before. `out_count` (optional) receives how many were loaded. On failure nothing changes. On success
  *  the last generation is forgotten: nl_navmesh_update_links_in_box returns NOT_FOUND until the next
  *  nl_navmesh_generate_links.
