@@ -6,7 +6,8 @@ namespace NavLink.Tests
     // The C# binding's test: drives libnavlink.so through the binding as a Unity game would.
     // Usage: mono NavLinkTests.exe --levels DIR --layout FILE --package DIR --project FILE --library-dir DIR
     //   (FILE from bindings/layout/c_layout.py; the package folder com.navlink.sdk; NavLink.csproj; the folder
-    //   of libnavlink.so, which the missing-library test keeps out of reach)
+    //   of libnavlink.so, which NavLink.dll.config must map navlink to, and which the missing-library test
+    //   keeps out of reach)
     // or:    mono NavLinkTests.exe --missing-library   (what MissingLibraryTests runs without the library)
     internal static class Program
     {

@@ -77,9 +77,12 @@ namespace NavLink
             string search = RuntimeInformation.IsOSPlatform(OSPlatform.Windows) ? "a folder on PATH"
                           : RuntimeInformation.IsOSPlatform(OSPlatform.OSX) ? "a folder on DYLD_LIBRARY_PATH"
                           : "a folder on LD_LIBRARY_PATH";
-            return "Put " + FileName() + " next to the executable (or NavLink.dll) or in " + search +
-                   "; with Mono, a <dllmap dll=\"" + Native.Library + "\" target=\"/path/to/" + FileName() +
-                   "\"/> in NavLink.dll.config also works. In Unity, put it in the package's Plugins/ folder (Plugins/README.md).";
+            // Mono reads NavLink.dll.config beside NavLink.dll; NavLink.csproj writes it (write_dll_config.sh).
+            return "With Mono, NavLink.dll.config beside NavLink.dll maps the name to the library: <dllmap dll=\"" +
+                   Native.Library + "\" target=\"/path/to/" + FileName() + "\"/>; NavLink.csproj writes it when it builds " +
+                   "NavLink.dll, from /p:NavLinkLibraryDir=DIR or else pkg-config's navlink.pc, so rebuild it if the library " +
+                   "moved. Otherwise put " + FileName() + " next to the executable (or NavLink.dll) or in " + search +
+                   ". In Unity, put it in the package's Plugins/ folder (Plugins/README.md).";
 #endif
         }
     }
