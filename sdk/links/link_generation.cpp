@@ -10,6 +10,7 @@
 
 #include "links/clearance.h"
 #include "links/link_merge.h"
+#include "links/rim_search.h"
 #include "motion/trajectory.h"
 #include "navmesh/walk_graph.h"
 #include "util/error.h"
@@ -20,8 +21,6 @@ namespace {
 constexpr float kDegrees = 3.14159265358979f / 180.0f;
 constexpr float kProbeLift = 0.5f;  // probes start this far above the navmesh: clear of the floor,
                                     // and below any ceiling (the navmesh has agent height above it)
-constexpr float kRimStep = 0.25f;   // spacing of the probes that look for the rim past an edge
-constexpr int kRimHalvings = 4;     // then the rim's step is halved this often: found to 1.6 cm
 constexpr float kFloorReach = 2.0f; // a link end's floor is looked for this far below kProbeLift
 constexpr float kPastRim = 0.2f;    // a drop's fall starts this far past the rim
 constexpr float kPad = 1e-3f;       // bounds are padded: a surface exactly on them still counts
@@ -44,31 +43,14 @@ Aabb bounds_of(std::initializer_list<Vec3> points) {
     return box;
 }
 
+void grow(Aabb& box, const Aabb& other) {
+    box.grow(other.min);
+    box.grow(other.max);
+}
+
 bool touches(const Aabb& a, const Aabb* box) {
     if (!box) return true;  // a full generation recomputes everything
     return (a.min.array() - kPad <= box->max.array()).all() && (a.max.array() + kPad >= box->min.array()).all();
-}
-
-// Whether the vertical segment from `top` down `reach` crosses the (static, world-space) triangle a
-// millimetre inside its edges and ends (more far from the origin, where floats are coarser), so that
-// casting it could only report a hit.
-bool crosses_well_inside(const std::array<Vec3, 3>& t, const Vec3& top, float reach) {
-    const float kInside = 1e-3f + 16.0f * std::numeric_limits<float>::epsilon() * top.cwiseAbs().maxCoeff();
-    const Eigen::Vector2f a(t[0].x(), t[0].z()), b(t[1].x(), t[1].z()), c(t[2].x(), t[2].z()), p(top.x(), top.z());
-    auto cross = [](const Eigen::Vector2f& u, const Eigen::Vector2f& v) { return u.x() * v.y() - u.y() * v.x(); };
-    const float area = cross(b - a, c - a);
-    if (std::fabs(area) < 1e-6f) return false;  // (nearly) vertical as seen from above
-    const float side = area > 0.0f ? 1.0f : -1.0f;
-    const Eigen::Vector2f corners[3] = {a, b, c};
-    for (int i = 0; i < 3; ++i) {
-        const Eigen::Vector2f& from = corners[i];
-        const Eigen::Vector2f& to = corners[(i + 1) % 3];
-        const float length = (to - from).norm();
-        if (side * cross(to - from, p - from) < kInside * length) return false;
-    }
-    const float u = cross(p - a, c - a) / area, v = cross(b - a, p - a) / area;
-    const float y = t[0].y() + u * (t[1].y() - t[0].y()) + v * (t[2].y() - t[0].y());
-    return y <= top.y() - kInside && y >= top.y() - reach + kInside;
 }
 
 // One generation or update: fills `next` from the old cache and new rays.
@@ -78,7 +60,13 @@ public:
           const LinkGeneration::Cache& old, const Aabb* box, const Level& level, TaskSystem& tasks, LinkGenerationReport& report,
           GenerationProgress progress)
         : mesh_(mesh), samples_(sampling.samples), s_(s), method_(method), old_(old), box_(box), level_(level),
-          tasks_(tasks), report_(report), progress_(progress), body_{mesh.agent().radius, mesh.agent().height}, walk_(mesh) {}
+          tasks_(tasks), report_(report), progress_(progress), body_{mesh.agent().radius, mesh.agent().height}, walk_(mesh) {
+        // Probes start above the floor by at most half the body (a low ceiling over the edge is not
+        // ground) and count as ground anything within a walkable step below it.
+        rim_probing_.lift = std::min(kProbeLift, 0.5f * body_.height);
+        rim_probing_.step_reach = rim_probing_.lift + mesh.agent().max_climb + 0.05f;
+        rim_probing_.floor_shortcut = method == GenerationMethod::Indexed;
+    }
 
     std::vector<Link> run(LinkGeneration::Cache& next) {
         Stopwatch stage;
@@ -124,7 +112,7 @@ private:
     }
 
     // Take-off points: samples past whose edge the ground falls away (the rim: the first probe, every
-    // kRimStep out to falloff_distance, with no ground within a step below), with nothing solid
+    // RimSearch::kStep out to falloff_distance, with no ground within a step below), with nothing solid
     // between the edge and the rim. Recast leaves its edges 0.6 to 0.9 m inside the rim, depending
     // on how the voxel grid falls, so the rim is searched for, not assumed.
     void probe_takeoffs(LinkGeneration::Cache& next) {
@@ -134,82 +122,27 @@ private:
             if (old_.takeoffs.size() == samples_.size() && !touches(old_.takeoffs[i].bounds, box_)) next.takeoffs[i] = old_.takeoffs[i];
             else redo.push_back(i);
         }
-        const float probe = std::min(kProbeLift, 0.5f * body_.height);
         std::vector<Ray> ground_rays;
-        for (uint32_t i : redo) ground_rays.push_back(Ray{samples_[i].point + Vec3(0, probe, 0), Vec3(0, -1, 0), probe + 1.5f});
+        for (uint32_t i : redo) ground_rays.push_back(Ray{samples_[i].point + Vec3(0, rim_probing_.lift, 0), Vec3(0, -1, 0), rim_probing_.lift + 1.5f});
         const std::vector<RayHit> ground = cast(ground_rays);
-
-        const auto steps = static_cast<uint32_t>(std::ceil(s_.falloff_distance / kRimStep));
-        const float climb = mesh_.agent().max_climb;
-        const float step_reach = probe + climb + 0.05f;
-        auto probe_top = [&](size_t k, uint32_t step) {
-            const EdgeSample& e = samples_[redo[k]];
-            const Vec3 out = e.point + e.outward * std::min(step * kRimStep, s_.falloff_distance);
-            return Vec3(out.x(), next.takeoffs[redo[k]].ground_y + probe, out.z());
-        };
         // Indexed generations first try the last triangle found under the sample (by the ground ray, then
         // by each probe cast): a probe that crosses it well inside is on ground without a ray.
-        const bool floor_shortcut = method_ == GenerationMethod::Indexed;
-        std::vector<std::optional<std::array<Vec3, 3>>> floor(floor_shortcut ? redo.size() : 0);
-        if (floor_shortcut) level_.static_triangles(ground.data(), static_cast<uint32_t>(ground.size()), floor.data());
-        tasks_.parallel_for(static_cast<uint32_t>(redo.size()), 256, [&](uint32_t begin, uint32_t end) {
-            for (uint32_t k = begin; k < end; ++k) {
-                const EdgeSample& e = samples_[redo[k]];
-                LinkGeneration::TakeoffState& t = next.takeoffs[redo[k]];
-                t = LinkGeneration::TakeoffState{};
-                // Correction for navmeshes that sit above the floor (Recast's rounds up) or sink into it.
-                t.ground_y = ground[k].hit ? ground[k].point.y() : e.point.y();
-                t.rim = -1.0f;
-                // Every probe the rim search may cast, so a change anywhere along it redoes the sample.
-                t.bounds = bounds_of({e.point + Vec3(0, probe, 0), e.point - Vec3(0, 1.5f, 0)});
-                for (uint32_t j = 1; j <= steps; ++j) {
-                    t.bounds.grow(probe_top(k, j));
-                    t.bounds.grow(probe_top(k, j) - Vec3(0, step_reach, 0));
-                }
-            }
-        });
-        // One step out at a time, for the samples still on ground: only a hit or a miss is needed,
-        // and a sample stops at its rim.
-        std::vector<size_t> looking(redo.size());
-        for (size_t k = 0; k < redo.size(); ++k) looking[k] = k;
-        for (uint32_t j = 1; j <= steps && !looking.empty(); ++j) {
-            std::vector<uint8_t> on_ground(looking.size(), 1), proven(looking.size(), 0);
-            if (floor_shortcut)
-                tasks_.parallel_for(static_cast<uint32_t>(looking.size()), 512, [&](uint32_t begin, uint32_t end) {
-                    for (uint32_t n = begin; n < end; ++n) {
-                        const size_t k = looking[n];
-                        proven[n] = floor[k] && crosses_well_inside(*floor[k], probe_top(k, j), step_reach);
-                    }
-                });
-            std::vector<Segment> below;
-            std::vector<size_t> cast_for;  // positions in `looking` of the probes cast
-            for (size_t n = 0; n < looking.size(); ++n) {
-                if (proven[n]) continue;
-                const Vec3 top = probe_top(looking[n], j);
-                below.push_back(Segment{top, top - Vec3(0, step_reach, 0)});
-                cast_for.push_back(n);
-            }
-            if (floor_shortcut) {
-                // Cast for the triangle too: the next step out may cross it.
-                const std::vector<RayHit> hits = first_hits(below);
-                std::vector<std::optional<std::array<Vec3, 3>>> found(hits.size());
-                level_.static_triangles(hits.data(), static_cast<uint32_t>(hits.size()), found.data());
-                for (size_t c = 0; c < cast_for.size(); ++c) {
-                    on_ground[cast_for[c]] = hits[c].hit;
-                    if (hits[c].hit) floor[looking[cast_for[c]]] = found[c];
-                }
-            } else {
-                const std::vector<uint8_t> ground_below = blocked(below);
-                for (size_t c = 0; c < cast_for.size(); ++c) on_ground[cast_for[c]] = ground_below[c];
-            }
-            size_t still = 0;
-            for (size_t n = 0; n < looking.size(); ++n) {
-                if (on_ground[n]) looking[still++] = looking[n];
-                else next.takeoffs[redo[looking[n]]].rim = std::min(j * kRimStep, s_.falloff_distance);
-            }
-            looking.resize(still);
+        std::vector<std::optional<std::array<Vec3, 3>>> floor(redo.size());
+        if (rim_probing_.floor_shortcut) level_.static_triangles(ground.data(), static_cast<uint32_t>(ground.size()), floor.data());
+        std::vector<RimQuery> queries(redo.size());
+        for (size_t k = 0; k < redo.size(); ++k) {
+            const EdgeSample& e = samples_[redo[k]];
+            LinkGeneration::TakeoffState& t = next.takeoffs[redo[k]];
+            t = LinkGeneration::TakeoffState{};
+            // Correction for navmeshes that sit above the floor (Recast's rounds up) or sink into it.
+            t.ground_y = ground[k].hit ? ground[k].point.y() : e.point.y();
+            queries[k] = RimQuery{e.point, e.outward, t.ground_y, s_.falloff_distance, floor[k]};
+            // Every probe the rim search may cast, so a change anywhere along it redoes the sample.
+            t.bounds = bounds_of({e.point + Vec3(0, rim_probing_.lift, 0), e.point - Vec3(0, 1.5f, 0)});
+            grow(t.bounds, rim_search_bounds(queries[k], rim_probing_));
         }
-        refine_rims(next, redo, probe, step_reach);
+        const std::vector<float> rims = find_rims(level_, tasks_, std::move(queries), rim_probing_, report_.rays_cast);
+        for (size_t k = 0; k < redo.size(); ++k) next.takeoffs[redo[k]].rim = rims[k];
 
         std::vector<Segment> walls;
         std::vector<uint32_t> ledges;
@@ -235,48 +168,15 @@ private:
         }
     }
 
-    // The rim lies between the last step out on ground and the first without: halve that step a few
-    // times, all samples in one batch per halving, so a gap is measured to a couple of centimetres.
-    // The rim is then the outer end of what is left (known to be past the ground), so a gap never
-    // reads wider than it is: a body allowed exactly a designed gap can take it.
-    void refine_rims(LinkGeneration::Cache& next, const std::vector<uint32_t>& redo, float probe, float step_reach) {
-        std::vector<uint32_t> found;  // samples with a rim
-        std::vector<float> ground, air;  // distances out known on ground and off it
-        for (uint32_t i : redo) {
-            const LinkGeneration::TakeoffState& t = next.takeoffs[i];
-            if (t.rim < 0.0f) continue;
-            found.push_back(i);
-            air.push_back(t.rim);
-            ground.push_back(std::max(0.0f, std::ceil(t.rim / kRimStep - 1e-3f) * kRimStep - kRimStep));
-        }
-        std::vector<Segment> below(found.size());
-        for (int halving = 0; halving < kRimHalvings; ++halving) {
-            for (size_t n = 0; n < found.size(); ++n) {
-                const EdgeSample& e = samples_[found[n]];
-                const Vec3 out = e.point + e.outward * (0.5f * (ground[n] + air[n]));
-                const Vec3 top(out.x(), next.takeoffs[found[n]].ground_y + probe, out.z());
-                below[n] = Segment{top, top - Vec3(0, step_reach, 0)};
-            }
-            const std::vector<uint8_t> hit = blocked(below);
-            for (size_t n = 0; n < found.size(); ++n) (hit[n] ? ground[n] : air[n]) = 0.5f * (ground[n] + air[n]);
-        }
-        for (size_t n = 0; n < found.size(); ++n) next.takeoffs[found[n]].rim = air[n];
-    }
-
     // The floor under a take-off point: its sample's x and z, the height of the level found under it.
     Vec3 floor_point(const LinkGeneration::Cache& c, uint32_t i) const {
         return Vec3(samples_[i].point.x(), c.takeoffs[i].ground_y, samples_[i].point.z());
     }
 
-    // How far the body flies over open ground between two rims (or a rim and a landing): the ends'
-    // horizontal distance, less how far each end lies inside its rim along the line between them
-    // (a rim runs along its edge, `rim` out from it).
-    static float air_gap(float length, const Vec3& heading, const Vec3& outward_a, float rim_a, const Vec3& outward_b, float rim_b) {
-        float gap = length;
-        const float cos_a = outward_a.dot(heading), cos_b = outward_b.dot(-heading);
-        if (rim_a > 0.0f) gap -= cos_a > 1e-3f ? rim_a / cos_a : 0.0f;
-        if (rim_b > 0.0f) gap -= cos_b > 1e-3f ? rim_b / cos_b : 0.0f;
-        return std::max(0.0f, gap);
+    // How far out along `heading` a take-off point's rim is looked for: as far as falloff_distance
+    // straight out reaches along it, and never past the other end.
+    float rim_reach(const Vec3& outward, const Vec3& heading, float length) const {
+        return std::min(s_.falloff_distance / std::max(outward.dot(heading), 1e-3f), length);
     }
 
     // What the geometry-free tests say of a pair of take-off points, for the report.
@@ -333,8 +233,9 @@ private:
 
     // The constraints that need no ray, between the floor points of two take-off points: gap,
     // rise, facing, incline, and whether walking is about as short. Both directions at
-    // once: every one of them is symmetric in the two ends. `gap` receives the air gap.
-    PairVerdict judge_pair(const LinkGeneration::Cache& c, uint32_t i, uint32_t j, float& gap) const {
+    // once: every one of them is symmetric in the two ends. The gap is measured later, per candidate
+    // (measure_jump_gaps); here only its lower bound counts: the length less both rims' reach.
+    PairVerdict judge_pair(const LinkGeneration::Cache& c, uint32_t i, uint32_t j) const {
         const EdgeSample &a = samples_[i], &b = samples_[j];
         const Vec3 d = floor_point(c, j) - floor_point(c, i);
         const Vec3 flat(d.x(), 0.0f, d.z());
@@ -343,7 +244,7 @@ private:
         const bool is_short = distance < s_.short_link_distance;
         const float forward = std::cos((is_short ? s_.permissive_forward_angle : s_.strict_forward_angle) * kDegrees);
         const bool facing = length > 0.0f && a.outward.dot(heading) >= forward && b.outward.dot(-heading) >= forward;
-        gap = air_gap(length, heading, a.outward, c.takeoffs[i].rim, b.outward, c.takeoffs[j].rim);
+        const float gap = length - rim_reach(a.outward, heading, length) - rim_reach(b.outward, -heading, length);
         // Only edges that face each other are worth reporting as too far apart.
         if (gap > s_.max_jump_gap) return facing ? PairVerdict::Distance : PairVerdict::Ignored;
         if (length < s_.min_link_distance) return PairVerdict::Distance;
@@ -369,15 +270,16 @@ private:
 
     // A pair that met every geometry-free constraint: reused from the old cache (with its sweep, if it
     // had one) when the box cannot have changed it and its ends are where they were; else a new
-    // candidate, to be swept if the ranking reaches it (decide_jumps).
-    void add_jump_candidate(uint32_t a, uint32_t b, float gap, LinkGeneration::Cache& next) {
+    // candidate, to be swept if the ranking reaches it (decide_jumps). `unmeasured` receives the keys
+    // of the candidates whose gap is to be measured (new ones, and those whose rims the box may move).
+    void add_jump_candidate(uint32_t a, uint32_t b, LinkGeneration::Cache& next, std::vector<uint64_t>& unmeasured) {
         const uint64_t key = pair_key(a, b);
         const Vec3 start = floor_point(next, a), end = floor_point(next, b);
         const auto cached = old_.jumps.find(key);
         if (cached != old_.jumps.end() && !touches(cached->second.sweep.bounds, box_) && cached->second.link.start == start &&
             cached->second.link.end == end) {
-            // The rims may have moved (a change near them, not under the ends): the gap is today's.
-            next.jumps.emplace(key, cached->second).first->second.link.requirements.gap = gap;
+            next.jumps.emplace(key, cached->second);
+            if (touches(cached->second.rim_bounds, box_)) unmeasured.push_back(key);
             return;
         }
         LinkGeneration::JumpCandidate c;
@@ -393,8 +295,45 @@ private:
         c.link.start_polygon = samples_[a].polygon;
         c.link.end_polygon = samples_[b].polygon;
         set_requirements_from_ends(c.link);
-        c.link.requirements.gap = gap;
         next.jumps.emplace(key, c);
+        unmeasured.push_back(key);
+    }
+
+    // The gap of each candidate in `keys`, measured where the body flies: the line between its ends less
+    // how far the ground reaches out along that line from each end. A candidate whose gap is then
+    // wider than max_jump_gap is out, as is one along whose line the ground does not fall away within
+    // an end's reach (the ends' take-off points each have a rim straight out, not along every line).
+    void measure_jump_gaps(LinkGeneration::Cache& next, std::vector<uint64_t> keys) {
+        std::sort(keys.begin(), keys.end());  // the rays' order, whatever the map's
+        std::vector<RimQuery> queries;
+        for (uint64_t key : keys) {
+            const LinkGeneration::JumpCandidate& c = next.jumps.at(key);
+            Vec3 flat = c.link.end - c.link.start;
+            flat.y() = 0.0f;
+            const float length = flat.norm();
+            const Vec3 heading = flat / length;  // judge_pair kept only ends apart
+            const uint32_t ends[2] = {c.a, c.b};
+            for (int side = 0; side < 2; ++side) {
+                const Vec3 out = side == 0 ? heading : Vec3(-heading);
+                const float reach = rim_reach(samples_[ends[side]].outward, out, length);
+                const LinkGeneration::TakeoffState& t = next.takeoffs[ends[side]];
+                queries.push_back(RimQuery{samples_[ends[side]].point, out, t.ground_y, reach, std::nullopt});
+            }
+        }
+        std::vector<Aabb> bounds(queries.size());
+        for (size_t q = 0; q < queries.size(); ++q) bounds[q] = rim_search_bounds(queries[q], rim_probing_);
+        const std::vector<float> rims = find_rims(level_, tasks_, std::move(queries), rim_probing_, report_.rays_cast);
+        for (size_t n = 0; n < keys.size(); ++n) {
+            LinkGeneration::JumpCandidate& c = next.jumps.at(keys[n]);
+            const float rim_a = rims[2 * n], rim_b = rims[2 * n + 1];
+            c.rim_bounds = bounds[2 * n];
+            grow(c.rim_bounds, bounds[2 * n + 1]);
+            Vec3 flat = c.link.end - c.link.start;
+            flat.y() = 0.0f;
+            const float gap = std::max(0.0f, flat.norm() - rim_a - rim_b);
+            c.gap_within = rim_a >= 0.0f && rim_b >= 0.0f && gap <= s_.max_jump_gap;
+            c.link.requirements.gap = gap;
+        }
     }
 
     // A take-off point faces a whole edge across a gap: of its clear jumps to that edge, only the
@@ -416,7 +355,8 @@ private:
         };
         std::vector<std::pair<float, const LinkGeneration::JumpCandidate*>> ranked;
         ranked.reserve(c.jumps.size());
-        for (const auto& [key, j] : c.jumps) ranked.emplace_back(squareness(j), &j);
+        for (const auto& [key, j] : c.jumps)
+            if (j.gap_within) ranked.emplace_back(squareness(j), &j);
         std::sort(ranked.begin(), ranked.end(), [](const auto& x, const auto& y) {
             if (x.first != y.first) return x.first > y.first;
             if (x.second->link.requirements.gap != y.second->link.requirements.gap)
@@ -558,7 +498,8 @@ private:
             for (uint32_t i : valid) grid[cell_of(samples_[i].point)].push_back(i);
 
         constexpr size_t kBlock = 2048;
-        std::vector<std::vector<std::pair<uint32_t, float>>> candidates(kBlock);  // (partner, gap)
+        std::vector<std::vector<uint32_t>> candidates(kBlock);  // partners
+        std::vector<uint64_t> unmeasured;
         std::vector<std::array<uint32_t, 6>> verdicts(kBlock);
         for (size_t block = 0; block < valid.size(); block += kBlock) {
             if (block > 0) step(0.15f + 0.2f * float(block) / float(valid.size()), "jumps");
@@ -572,19 +513,20 @@ private:
                     candidates[n].clear();
                     verdicts[n] = {};
                     for (uint32_t b : partners) {
-                        float gap = 0.0f;
-                        const PairVerdict verdict = judge_pair(next, a, b, gap);
+                        const PairVerdict verdict = judge_pair(next, a, b);
                         ++verdicts[n][static_cast<size_t>(verdict)];
-                        if (verdict == PairVerdict::Candidate) candidates[n].emplace_back(b, gap);
+                        if (verdict == PairVerdict::Candidate) candidates[n].push_back(b);
                     }
                 }
             });
             for (uint32_t n = 0; n < size; ++n) {
                 for (size_t v = 0; v < verdicts[n].size(); ++v) count(static_cast<PairVerdict>(v), verdicts[n][v]);
-                for (const auto& [b, gap] : candidates[n]) add_jump_candidate(valid[block + n], b, gap, next);
+                for (uint32_t b : candidates[n]) add_jump_candidate(valid[block + n], b, next, unmeasured);
             }
         }
-        report_.jump_candidates = static_cast<uint32_t>(next.jumps.size());
+        measure_jump_gaps(next, std::move(unmeasured));
+        report_.jump_candidates = 0;
+        for (const auto& [key, j] : next.jumps) (j.gap_within ? report_.jump_candidates : report_.rejected_distance) += 1;
         step(0.35f, "jump clearance");
         decide_jumps(next);
     }
@@ -615,18 +557,41 @@ private:
                 next.drops.emplace_back().key = key;
             }
         }
-        std::vector<Ray> probes(probed.size());
+        // Each turned probe's own rim: where the ground falls away along its heading (straight out, the
+        // take-off point's). A turned heading along which the ground does not fall away within reach
+        // has no drop.
         std::vector<Vec3> headings(probed.size());
-        tasks_.parallel_for(static_cast<uint32_t>(probed.size()), 256, [&](uint32_t begin, uint32_t end) {
-            for (uint32_t k = begin; k < end; ++k) {
-                LinkGeneration::DropProbe& d = next.drops[probed[k]];
-                const auto i = static_cast<uint32_t>(d.key >> 32), angle = static_cast<uint32_t>(d.key);
-                const EdgeSample& e = samples_[i];
-                const Eigen::AngleAxisf turn(s_.drop_angles[angle] * kDegrees, Vec3::UnitY());
-                headings[k] = turn * e.outward;
-                const Vec3 falloff = e.point + headings[k] * (rim_along(next, i, angle) + kPastRim);
+        std::vector<RimQuery> turned;
+        std::vector<uint32_t> turned_of;  // positions in `probed`
+        for (uint32_t k = 0; k < probed.size(); ++k) {
+            LinkGeneration::DropProbe& d = next.drops[probed[k]];
+            const auto i = static_cast<uint32_t>(d.key >> 32), angle = static_cast<uint32_t>(d.key);
+            const EdgeSample& e = samples_[i];
+            headings[k] = Eigen::AngleAxisf(s_.drop_angles[angle] * kDegrees, Vec3::UnitY()) * e.outward;
+            d.rim = next.takeoffs[i].rim;
+            d.bounds = Aabb{};
+            if (s_.drop_angles[angle] == 0.0f) continue;
+            const float reach = s_.falloff_distance / std::cos(s_.drop_angles[angle] * kDegrees);
+            turned.push_back(RimQuery{e.point, headings[k], next.takeoffs[i].ground_y, reach, std::nullopt});
+            grow(d.bounds, rim_search_bounds(turned.back(), rim_probing_));
+            turned_of.push_back(k);
+        }
+        const std::vector<float> rims = find_rims(level_, tasks_, std::move(turned), rim_probing_, report_.rays_cast);
+        for (size_t n = 0; n < turned_of.size(); ++n) next.drops[probed[turned_of[n]]].rim = rims[n];
+        std::vector<uint32_t> off_rim;  // positions in `probed` of the probes cast
+        for (uint32_t k = 0; k < probed.size(); ++k) {
+            LinkGeneration::DropProbe& d = next.drops[probed[k]];
+            if (d.rim >= 0.0f) off_rim.push_back(k);
+            else d.outcome = 1;
+        }
+        std::vector<Ray> probes(off_rim.size());
+        tasks_.parallel_for(static_cast<uint32_t>(off_rim.size()), 256, [&](uint32_t begin, uint32_t end) {
+            for (uint32_t n = begin; n < end; ++n) {
+                const uint32_t k = off_rim[n];
+                const LinkGeneration::DropProbe& d = next.drops[probed[k]];
+                const Vec3 falloff = samples_[d.key >> 32].point + headings[k] * (d.rim + kPastRim);
                 const Vec3 direction = (headings[k] * std::cos(steep) + Vec3(0, -std::sin(steep), 0)).normalized();
-                probes[k] = Ray{falloff + Vec3(0, kProbeLift, 0), direction, reach};
+                probes[n] = Ray{falloff + Vec3(0, kProbeLift, 0), direction, reach};
             }
         });
         const std::vector<RayHit> hits = cast(probes);
@@ -634,28 +599,29 @@ private:
 
         // Where each probe came down on the navmesh, then the floor under that point.
         const Vec3 landing_box(std::max(body_.radius * 1.5f, 0.3f), 1.0f, std::max(body_.radius * 1.5f, 0.3f));
-        std::vector<NavPoint> landings(probed.size());
-        tasks_.parallel_for(static_cast<uint32_t>(probed.size()), 256, [&](uint32_t begin, uint32_t end) {
-            for (uint32_t k = begin; k < end; ++k) {
-                LinkGeneration::DropProbe& d = next.drops[probed[k]];
-                d.bounds = bounds_of({probes[k].origin, probes[k].origin + probes[k].direction * (hits[k].hit ? hits[k].distance : reach)});
+        std::vector<NavPoint> landings(off_rim.size());
+        tasks_.parallel_for(static_cast<uint32_t>(off_rim.size()), 256, [&](uint32_t begin, uint32_t end) {
+            for (uint32_t n = begin; n < end; ++n) {
+                LinkGeneration::DropProbe& d = next.drops[probed[off_rim[n]]];
+                d.bounds.grow(probes[n].origin);
+                d.bounds.grow(probes[n].origin + probes[n].direction * (hits[n].hit ? hits[n].distance : reach));
                 d.outcome = 1;
-                if (!hits[k].hit) continue;
-                landings[k] = locate(hits[k].point, landing_box);
-                if (landings[k].polygon == samples_[d.key >> 32].polygon) landings[k].found = false;
+                if (!hits[n].hit) continue;
+                landings[n] = locate(hits[n].point, landing_box);
+                if (landings[n].polygon == samples_[d.key >> 32].polygon) landings[n].found = false;
             }
         });
-        std::vector<uint32_t> landed;  // positions in `probed`
+        std::vector<uint32_t> landed;  // positions in `off_rim`
         std::vector<Ray> floor_rays;
-        for (uint32_t k = 0; k < probed.size(); ++k) {
-            if (!landings[k].found) continue;
-            landed.push_back(k);
-            floor_rays.push_back(floor_ray(landings[k].point));
+        for (uint32_t n = 0; n < off_rim.size(); ++n) {
+            if (!landings[n].found) continue;
+            landed.push_back(n);
+            floor_rays.push_back(floor_ray(landings[n].point));
         }
         const std::vector<RayHit> floors = cast(floor_rays);
-        for (size_t n = 0; n < landed.size(); ++n) {
-            const uint32_t k = landed[n];
-            settle(next, next.drops[probed[k]], headings[k], landings[k], floor_rays[n], floors[n]);
+        for (size_t m = 0; m < landed.size(); ++m) {
+            const uint32_t n = landed[m];
+            settle(next, next.drops[probed[off_rim[n]]], headings[off_rim[n]], landings[n], floor_rays[m], floors[m]);
         }
         // Sweeps known: the reused probes' whose bounds the box does not touch. Of each take-off point's
         // probes landing on one surface only the most head-on clear one is kept, so they are swept in
@@ -738,12 +704,6 @@ private:
         return nullptr;
     }
 
-    // How far out along drop probe `angle`'s heading the ground falls away: the rim found straight
-    // out, taken as a line along the edge.
-    float rim_along(const LinkGeneration::Cache& c, uint32_t i, uint32_t angle) const {
-        return c.takeoffs[i].rim / std::cos(s_.drop_angles[angle] * kDegrees);
-    }
-
     // A ray down to the floor under a navmesh point: navmeshes float above the floor (Recast's by up
     // to a few decimetres, more over stairs) or sink into it.
     static Ray floor_ray(const Vec3& on_navmesh) {
@@ -777,13 +737,12 @@ private:
         l.start_polygon = samples_[i].polygon;
         l.end_polygon = landing.polygon;
         set_requirements_from_ends(l);
-        const float rim = rim_along(c, i, static_cast<uint32_t>(d.key));
-        const Vec3 crossing = start + heading * rim;
+        const Vec3 crossing = start + heading * d.rim;
         l.requirements.gap = Vec3(end.x() - crossing.x(), 0.0f, end.z() - crossing.z()).norm();
         // Low and near enough to jump back up (whether the body fits that arc is swept later).
         l.bidirectional = drop <= s_.max_jump_up && l.requirements.gap <= s_.max_jump_gap;
         l.arc_height = s_.jump_arc_height;  // the jump back up's arc, when the drop works both ways
-        d.fall = fall_path(start, heading, rim + kPastRim, end);
+        d.fall = fall_path(start, heading, d.rim + kPastRim, end);
         l.apex = d.fall[1];  // where the body leaves the ground: the top of the fall, and its heading
     }
 
@@ -860,6 +819,7 @@ private:
     GenerationProgress progress_;
     Body body_;
     WalkGraph walk_;
+    RimProbing rim_probing_{};
 };
 
 }  // namespace

@@ -44,13 +44,17 @@ public:
     };
     struct JumpCandidate {
         uint32_t a = 0, b = 0;  // take-off samples
-        Link link;
+        Link link;              // its requirements.gap measured along the line between the ends
         Sweep sweep;
+        Aabb rim_bounds;        // the searches for the rims along that line
+        bool gap_within = true; // the gap measured is max_jump_gap or narrower (kept, unswept, if not: an
+                                // update reuses the measurement)
     };
     struct DropProbe {
         uint64_t key = 0;       // (sample, angle)
-        uint8_t outcome = 0;    // 0: landed, 1: no landing, 2: too shallow (walked), 3: too deep
-        Aabb bounds;            // the probe ray and the ray to the floor under the landing
+        uint8_t outcome = 0;    // 0: landed, 1: no landing (or no rim along the heading), 2: too shallow (walked), 3: too deep
+        float rim = -1.0f;      // how far out along the probe's heading the ground falls away (-1: not within reach)
+        Aabb bounds;            // the rim search along the heading, the probe ray and the ray to the floor under the landing
         Link link;
         std::array<Vec3, 4> fall;  // out over the rim, across, down (when landed)
         Sweep sweep;

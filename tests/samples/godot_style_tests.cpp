@@ -41,12 +41,13 @@ void check_within_capabilities(const NavigationAgent& agent) {
 // Where a crowd sent to one point stops (docs/agents.md, "Arriving among others"): each body at the
 // point, or within the circle the whole group packs into around it, against a body that stands as
 // near to it or nearer (touching: within half a radius, and a few centimetres the bodies were pushed
-// by those arriving after them).
+// by those arriving after them; the body at the point may be pushed off it by as much).
 void check_crowded_arrival(const DemoScene& scene) {
     const float group = float(scene.agents.size());
     for (const NavigationAgent* a : scene.agents) {
         INFO(a->name());
-        const float radius = a->profile().capabilities.radius, slack = 0.5f * radius + 0.05f;
+        constexpr float kPushed = 0.05f;
+        const float radius = a->profile().capabilities.radius, slack = 0.5f * radius + kPushed;
         const float own = horizontal_distance(a->position(), scene.target);
         bool stopped_by_crowd = false;
         for (const NavigationAgent* b : scene.agents) {
@@ -54,7 +55,7 @@ void check_crowded_arrival(const DemoScene& scene) {
             stopped_by_crowd = stopped_by_crowd || (b != a && horizontal_distance(a->position(), b->position()) < reach &&
                                                     horizontal_distance(b->position(), scene.target) <= own + slack);
         }
-        CHECK((own < 0.1f || stopped_by_crowd));
+        CHECK((own < 0.1f + kPushed || stopped_by_crowd));
         CHECK(own <= radius * std::sqrt((group - 1.0f) / 0.9069f) + slack);
     }
 }
