@@ -29,9 +29,14 @@ public:
     std::vector<Link> update(const Aabb& box, const Level& level, TaskSystem& tasks, LinkGenerationReport& report,
                              GenerationProgress progress);
 
+    enum class TakeoffRejection : uint8_t {
+        None,
+        Wall,   // something solid between the edge and the rim, at chest height
+        NoRim,  // ground within a step below all the way to falloff_distance
+    };
     struct TakeoffState {
         bool valid = false;
-        uint8_t rejected = 0;  // 1: wall between the edge and the rim, 2: no rim (ground a step below)
+        TakeoffRejection rejected = TakeoffRejection::None;
         float ground_y = 0.0f; // the floor under the sample
         float rim = 0.0f;      // how far out along the sample's outward direction the ground falls away
         Aabb bounds;           // everything its probes touched
