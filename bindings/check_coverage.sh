@@ -5,9 +5,9 @@
 #
 # The headers' static inline initialisers (NL_DEFINE_OUTPUT_INIT(T, nl_*_init)) are not exported: each
 # binding writes its own, under the same name, and it must have every one and no other. They are found
-# apart from the bound functions: C# `public static T nl_*()` in Native/ (not extern), Rust `pub fn nl_*()`
-# outside navlink-sys's `extern "C"` blocks, Python `def nl_*():` at module level. Their behaviour (the
-# `size` they set) is each binding's layout test's job.
+# apart from the bound functions: C# `public static T nl_*()` in Runtime/Generated/ or Runtime/Native/ (not
+# extern), Rust `pub fn nl_*()` outside navlink-sys's `extern "C"` blocks, Python `def nl_*():` at module
+# level. Their behaviour (the `size` they set) is each binding's layout test's job.
 #
 # Constants: each binding's layout test requires every integer #define of the headers with its value. A
 # constant the headers no longer define is caught by the C# and Python tests too; navlink-sys's `pub const
@@ -32,9 +32,9 @@ grep -h '^[[:space:]]*NL_DEFINE_OUTPUT_INIT(' "$root"/capi/include/navlink/*.h "
 
 # One name per line, as each binding declares its functions: bound ones in $binding, its own
 # initialisers in $binding.inline.
-grep -ho 'static extern [^(]* nl_[a-z0-9_]*(' "$root"/bindings/csharp/com.navlink.sdk/Runtime/Native/*.cs |
+grep -ho 'static extern [^(]* nl_[a-z0-9_]*(' "$root"/bindings/csharp/com.navlink.sdk/Runtime/{Generated,Native}/*.cs |
   sed -E 's/.* (nl_[a-z0-9_]+)\($/\1/' | sort -u > "$tmp/csharp"
-grep -hoE 'public static [A-Za-z0-9_]+ nl_[a-z0-9_]*\(' "$root"/bindings/csharp/com.navlink.sdk/Runtime/Native/*.cs |
+grep -hoE 'public static [A-Za-z0-9_]+ nl_[a-z0-9_]*\(' "$root"/bindings/csharp/com.navlink.sdk/Runtime/{Generated,Native}/*.cs |
   sed -E 's/.* (nl_[a-z0-9_]+)\($/\1/' | sort -u > "$tmp/csharp.inline"
 # Rust: functions inside `extern "C" {` ... `}` blocks are bound; other `pub fn nl_*` are initialisers.
 awk '/^extern "C" \{/ { in_extern = 1; next }
@@ -46,9 +46,9 @@ awk '/^extern "C" \{/ { in_extern = 1; next }
 touch "$tmp/rust.unsorted" "$tmp/rust.inline.unsorted"
 sort -u "$tmp/rust.unsorted" > "$tmp/rust"
 sort -u "$tmp/rust.inline.unsorted" > "$tmp/rust.inline"
-grep -ho '^    "nl_[a-z0-9_]*": (' "$root"/bindings/python/navlink.py | sed -E 's/^    "(nl_[a-z0-9_]+)".*/\1/' |
+grep -ho '^    "nl_[a-z0-9_]*": (' "$root"/bindings/python/_navlink_abi.py | sed -E 's/^    "(nl_[a-z0-9_]+)".*/\1/' |
   sort -u > "$tmp/python"
-{ grep -ho '^def nl_[a-z0-9_]*(' "$root"/bindings/python/navlink.py || true; } | sed -E 's/^def (nl_[a-z0-9_]+)\(/\1/' |
+{ grep -ho '^def nl_[a-z0-9_]*(' "$root"/bindings/python/_navlink_abi.py || true; } | sed -E 's/^def (nl_[a-z0-9_]+)\(/\1/' |
   sort -u > "$tmp/python.inline"
 
 # Object-like #define NL_* of the headers (version.h from its template), and navlink-sys's constants.

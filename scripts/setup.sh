@@ -14,6 +14,7 @@ packages=(
   clang libclang-rt-14-dev  # the sanitizer build and its libFuzzer targets (docs/testing.md)
   dpkg-dev  # dpkg-shlibdeps: the Debian package's Depends (cpack -G DEB, docs/shipping.md)
   ccache  # scripts/test.sh compiles through it: a second run, or a fresh clone, rebuilds nothing unchanged
+  python3-clang  # libclang for Python: bindings/generate reads the public headers with it
 )
 # The Rust binding's test needs cargo; a toolchain from rustup (not a Debian package) serves as well, so
 # Debian's cargo (with its rustc) is added only when no cargo is on the PATH.

@@ -1,8 +1,9 @@
 """The PEP 517 build backend of the navlink package (pyproject.toml), standard library only.
 
 The wheel holds navlink.py as navlink/__init__.py beside navlink/py.typed: PEP 561 type information ships
-in packages, not in single-module distributions, while the source tree keeps the one file that its test,
-the coverage check and a user with NAVLINK_LIBRARY import directly. It also holds
+in packages, not in single-module distributions, while the source tree keeps the files that its test and
+a user with NAVLINK_LIBRARY import directly (navlink.py with the generated raw layer _navlink_abi.py and its
+base classes _navlink_structs.py, which go into the package beside it). It also holds
 navlink/_built_against.py, the folder of the library pkg-config named when it was built, which the
 module tries before looking the library up again.
 """
@@ -19,8 +20,9 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 WHEEL_TAG = "py3-none-any"
 # Fixed times make the same sources give the same archive bytes.
 ZIP_TIME = (1980, 1, 1, 0, 0, 0)
-PACKAGE_FILES = {"navlink/__init__.py": "navlink.py", "navlink/py.typed": "py.typed"}
-SDIST_FILES = ["pyproject.toml", "_navlink_build.py", "navlink.py", "py.typed"]
+PACKAGE_FILES = {"navlink/__init__.py": "navlink.py", "navlink/_navlink_abi.py": "_navlink_abi.py",
+                 "navlink/_navlink_structs.py": "_navlink_structs.py", "navlink/py.typed": "py.typed"}
+SDIST_FILES = ["pyproject.toml", "_navlink_build.py", "navlink.py", "_navlink_abi.py", "_navlink_structs.py", "py.typed"]
 
 
 def _read(name):
@@ -29,7 +31,7 @@ def _read(name):
 
 
 def _project():
-    """The [project] table's string values, and the version from navlink.py."""
+    """The [project] table's string values, and the version: the headers' (_navlink_abi.py)."""
     table, project = None, {}
     for line in _read("pyproject.toml").decode().splitlines():
         header = re.match(r"\s*\[([^\]]+)\]", line)
@@ -39,11 +41,11 @@ def _project():
         pair = re.match(r'\s*([A-Za-z][\w-]*)\s*=\s*"([^"]*)"\s*(#.*)?$', line)
         if table == "project" and pair:
             project[pair.group(1)] = pair.group(2)
-    version = re.search(r"^VERSION_MAJOR, VERSION_MINOR, VERSION_PATCH = (\d+), (\d+), (\d+)$",
-                        _read("navlink.py").decode(), flags=re.M)
-    if version is None:
-        raise RuntimeError("_navlink_build: navlink.py has no VERSION_MAJOR, VERSION_MINOR, VERSION_PATCH line")
-    project["version"] = ".".join(version.groups())
+    abi = _read("_navlink_abi.py").decode()
+    parts = [re.search(r"^VERSION_%s = (\d+)$" % part, abi, flags=re.M) for part in ("MAJOR", "MINOR", "PATCH")]
+    if not all(parts):
+        raise RuntimeError("_navlink_build: _navlink_abi.py has no VERSION_MAJOR, VERSION_MINOR and VERSION_PATCH lines")
+    project["version"] = ".".join(m.group(1) for m in parts)
     return project
 
 

@@ -2,6 +2,8 @@
 #include <cstddef>
 
 #include "entry_guard.h"
+#include "first_sizes.h"
+#include "field_copy.h"
 #include "mapping.h"
 #include "host_input.h"
 #include "world.h"
@@ -17,10 +19,6 @@ using nl::capi::to_id;
 
 namespace {
 
-constexpr size_t kAgentDefFirstSize = offsetof(nl_agent_def, give_up_seconds);  // their first release (0.2)
-constexpr size_t kAgentInfoFirstSize = offsetof(nl_agent_info, user_data) + sizeof(uint64_t);
-constexpr size_t kTrajectoryFirstSize = sizeof(nl_agent_trajectory);
-constexpr size_t kEventFirstSize = sizeof(nl_agent_event);
 
 static_assert(uint32_t(nl::AgentState::Failed) == NL_AGENT_FAILED && uint32_t(nl::AgentState::Waiting) == NL_AGENT_WAITING,
               "core and header disagree on agent states");
@@ -39,16 +37,12 @@ nl_trajectory_kind trajectory_kind(nl::MotionKind kind) {
 
 nl::AgentCapabilities to_core(const nl_agent_capabilities& c) {
     nl::AgentCapabilities out;
-    out.max_jump_distance = c.max_jump_distance;
-    out.max_jump_height = c.max_jump_height;
-    out.max_drop_height = c.max_drop_height;
-    out.radius = c.radius;
-    out.abilities = c.abilities;
+    NL_COPY_FIELDS(NL_AGENT_CAPABILITIES_FIELDS, out, c);
     return out;
 }
 
 nl::AgentDef agent_from_def(const nl_agent_def& given) {
-    const nl_agent_def def = nl::capi::read_growable(given, nl_default_agent_def(), kAgentDefFirstSize, "def");
+    const nl_agent_def def = nl::capi::read_growable(given, nl_default_agent_def(), nl::capi::kFirstSize<nl_agent_def>, "def");
     nl::AgentDef out;
     out.navmesh = to_handle(def.navmesh);
     out.capabilities = to_core(def.capabilities);
@@ -172,14 +166,14 @@ NL_API nl_status nl_agent_get_info(const nl_world* world, nl_agent_id agent, nl_
     return guarded("nl_agent_get_info", world, [&] {
         const nl::AgentInfo info = deref(world).agents().info(to_handle(agent));
         require(out_info, "out_info");
-        nl::capi::write_growable(out_info, to_c(info), kAgentInfoFirstSize, "out_info");
+        nl::capi::write_growable(out_info, to_c(info), nl::capi::kFirstSize<nl_agent_info>, "out_info");
     });
 }
 
 NL_API nl_status nl_world_get_agents(const nl_world* world, nl_agent_info* out_infos, uint32_t capacity, uint32_t* out_count) {
     return guarded("nl_world_get_agents", world, [&] {
         const std::vector<nl::AgentInfo> infos = deref(world).agents().infos();
-        nl::capi::list_growable_into(infos, out_infos, capacity, out_count, kAgentInfoFirstSize, "out_infos",
+        nl::capi::list_growable_into(infos, out_infos, capacity, out_count, nl::capi::kFirstSize<nl_agent_info>, "out_infos",
                                      [](const nl::AgentInfo& a) { return to_c(a); });
     });
 }
@@ -188,7 +182,7 @@ NL_API nl_status nl_agent_get_corners(const nl_world* world, nl_agent_id agent, 
                                       uint32_t* out_count) {
     return guarded("nl_agent_get_corners", world, [&] {
         const std::vector<nl::PathPoint> corners = deref(world).agents().corners(to_handle(agent));
-        nl::capi::list_growable_into(corners, out_points, capacity, out_count, nl::capi::kPathPointFirstSize, "out_points",
+        nl::capi::list_growable_into(corners, out_points, capacity, out_count, nl::capi::kFirstSize<nl_path_point>, "out_points",
                                      [](const nl::PathPoint& p) { return nl::capi::to_c(p); });
     });
 }
@@ -197,12 +191,12 @@ NL_API nl_status nl_agent_get_trajectory(const nl_world* world, nl_agent_id agen
     return guarded("nl_agent_get_trajectory", world, [&] {
         const nl::Agents::Flight flight = deref(world).agents().flight(to_handle(agent));
         require(out_trajectory, "out_trajectory");
-        nl::capi::check_growable_output(out_trajectory, kTrajectoryFirstSize, "out_trajectory");
+        nl::capi::check_growable_output(out_trajectory, nl::capi::kFirstSize<nl_agent_trajectory>, "out_trajectory");
         nl_agent_trajectory t{};
         t.size = sizeof t;
         t.kind = NL_TRAJECTORY_NONE;
         if (!flight.motion) {  // on the ground: an answer, not an error (hosts ask every frame)
-            nl::capi::write_growable(out_trajectory, t, kTrajectoryFirstSize, "out_trajectory");
+            nl::capi::write_growable(out_trajectory, t, nl::capi::kFirstSize<nl_agent_trajectory>, "out_trajectory");
             return;
         }
         const std::optional<nl::LinkMotion>& motion = flight.motion;
@@ -219,7 +213,7 @@ NL_API nl_status nl_agent_get_trajectory(const nl_world* world, nl_agent_id agen
                        pose.world_point(motion->kind() == nl::MotionKind::Fall ? fall[k] : (k < 2 ? motion->from() : motion->to())));
         t.duration = motion->duration();
         t.elapsed = flight.elapsed;
-        nl::capi::write_growable(out_trajectory, t, kTrajectoryFirstSize, "out_trajectory");
+        nl::capi::write_growable(out_trajectory, t, nl::capi::kFirstSize<nl_agent_trajectory>, "out_trajectory");
     });
 }
 
@@ -227,7 +221,7 @@ NL_API nl_status nl_world_get_agent_events(const nl_world* world, nl_agent_event
                                            uint32_t* out_count) {
     return guarded("nl_world_get_agent_events", world, [&] {
         const std::vector<nl::AgentEvent> events = deref(world).agents().events();
-        nl::capi::list_growable_into(events, out_events, capacity, out_count, kEventFirstSize, "out_events",
+        nl::capi::list_growable_into(events, out_events, capacity, out_count, nl::capi::kFirstSize<nl_agent_event>, "out_events",
                                      [](const nl::AgentEvent& e) {
                                          nl_agent_event c{};
                                          c.size = sizeof c;

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "entry_guard.h"
+#include "first_sizes.h"
 #include "host_input.h"
 #include "io/obj_reader.h"
 #include "queries.h"
@@ -18,8 +19,6 @@ using nl::capi::require;
 
 namespace {
 
-constexpr size_t kMeshDefFirstSize = offsetof(nl_mesh_def, user_data) + sizeof(uint64_t);
-constexpr size_t kMeshInfoFirstSize = offsetof(nl_mesh_info, user_data) + sizeof(uint64_t);
 static_assert(NL_COORDINATE_LIMIT == nl::kCoordinateLimit, "header and core disagree on the coordinate limit");
 static_assert(NL_MESH_MOVABLE == nl::kMeshMovable && NL_MESH_CLOCKWISE == nl::kMeshClockwise &&
                   NL_MESH_OBSTACLE == nl::kMeshObstacle && NL_MESH_NOT_IN_NAVMESH == nl::kMeshNotInNavMesh &&
@@ -42,7 +41,7 @@ static_assert(NL_UP_AXIS_NOT_SAID == uint32_t(nl::UpAxis::NotSaid) && NL_UP_AXIS
 nl::MeshFrame read_frame(const nl_mesh_def& def) { return {def.metres_per_unit, nl::UpAxis(def.up_axis)}; }
 
 nl_mesh_def read_def(const nl_mesh_def& def) {
-    return nl::capi::read_growable(def, nl_default_mesh_def(), kMeshDefFirstSize, "def");
+    return nl::capi::read_growable(def, nl_default_mesh_def(), nl::capi::kFirstSize<nl_mesh_def>, "def");
 }
 
 nl::TriangleMesh read_def_geometry(const nl_mesh_def& def) {
@@ -108,7 +107,6 @@ nl_mesh_def obj_options(const nl_mesh_def* in) {
 }
 
 // nl_ray_hit's first release with a `size` (0.2): every field up to `reserved`.
-constexpr size_t kRayHitFirstSize = sizeof(nl_ray_hit);
 
 nl_ray_hit to_c(const nl::RayHit& hit) {
     nl_ray_hit out{};
@@ -151,7 +149,7 @@ void cast_rays(const World& world, const nl_ray* rays, uint32_t count, nl_ray_hi
             fail(ErrorCode::InvalidArgument, "rays[", i, "].max_distance is ", r.max_distance, " (must be > 0)");
         batch[i] = Ray{read_point(r.origin, "rays", i, "origin"), read_direction(r.direction, i), r.max_distance};
     }
-    const ElementWriter<nl_ray_hit> writer(out_hits, kRayHitFirstSize, "out_hits");
+    const ElementWriter<nl_ray_hit> writer(out_hits, nl::capi::kFirstSize<nl_ray_hit>, "out_hits");
     std::vector<RayHit> hits(count);
     world.level().cast_rays(batch.data(), count, hits.data());
     for (uint32_t i = 0; i < count; ++i) writer.write(i, to_c(hits[i]));
@@ -246,7 +244,7 @@ NL_API nl_status nl_mesh_get_info(const nl_world* world, nl_mesh_id mesh, nl_mes
         out.user_data = info.user_data;
         out.metres_per_unit = info.frame.metres_per_unit;
         out.up_axis = uint32_t(info.frame.up);
-        nl::capi::write_growable(out_info, out, kMeshInfoFirstSize, "out_info");
+        nl::capi::write_growable(out_info, out, nl::capi::kFirstSize<nl_mesh_info>, "out_info");
     });
 }
 

@@ -5,6 +5,8 @@
 #include <string>
 
 #include "entry_guard.h"
+#include "first_sizes.h"
+#include "field_copy.h"
 #include "host_input.h"
 #include "io/link_json.h"
 #include "links/link_placement.h"
@@ -23,67 +25,23 @@ using nl::capi::to_id;
 namespace {
 
 // The first release ended with the requirements before their length.
-constexpr size_t kLinkDefFirstSize = offsetof(nl_link_def, requirements) + offsetof(nl_link_requirements, length);
-constexpr size_t kSettingsFirstSize = offsetof(nl_link_settings, plugin_settings_json_length) + sizeof(size_t);
-constexpr size_t kReportFirstSize = offsetof(nl_link_generation_report, milliseconds_total) + sizeof(double);
-constexpr size_t kLinkFirstSize = offsetof(nl_link, requirements) + sizeof(nl_link_requirements);  // its first release with a `size` (0.2)
 constexpr size_t kMaxDropAngles = sizeof(nl_link_settings::drop_angles) / sizeof(float);
 
 nl::LinkSettings to_core(const nl_link_settings& c) {
     nl::LinkSettings s;
-    s.min_edge_length = c.min_edge_length;
-    s.min_group_size = c.min_group_size;
-    s.max_group_size = c.max_group_size;
-    s.sample_spacing = c.sample_spacing;
-    s.falloff_distance = c.falloff_distance;
-    s.max_jump_gap = c.max_jump_gap;
-    s.min_link_distance = c.min_link_distance;
-    s.short_link_distance = c.short_link_distance;
-    s.max_jump_up = c.max_jump_up;
-    s.jump_arc_height = c.jump_arc_height;
-    s.strict_forward_angle = c.strict_forward_angle;
-    s.permissive_forward_angle = c.permissive_forward_angle;
-    s.strict_incline_angle = c.strict_incline_angle;
-    s.permissive_incline_angle = c.permissive_incline_angle;
-    s.max_drop_distance = c.max_drop_distance;
+    NL_COPY_FIELDS(NL_LINK_SETTINGS_FIELDS, s, c);
     if (c.drop_angle_count > kMaxDropAngles)
         fail(ErrorCode::InvalidArgument, "settings->drop_angle_count is ", c.drop_angle_count, " (at most ", kMaxDropAngles, ")");
     s.drop_angles.assign(c.drop_angles, c.drop_angles + c.drop_angle_count);
-    s.drop_steepness = c.drop_steepness;
-    s.merge_distance = c.merge_distance;
-    s.clearance_margin = c.clearance_margin;
-    s.arc_segments = c.arc_segments;
-    s.walk_factor = c.walk_factor;
-    s.walk_distance = c.walk_distance;
     return s;
 }
 
 nl_link_settings to_c(const nl::LinkSettings& s) {
     nl_link_settings c{};
     c.size = sizeof c;
-    c.min_edge_length = s.min_edge_length;
-    c.min_group_size = s.min_group_size;
-    c.max_group_size = s.max_group_size;
-    c.sample_spacing = s.sample_spacing;
-    c.falloff_distance = s.falloff_distance;
-    c.max_jump_gap = s.max_jump_gap;
-    c.min_link_distance = s.min_link_distance;
-    c.short_link_distance = s.short_link_distance;
-    c.max_jump_up = s.max_jump_up;
-    c.jump_arc_height = s.jump_arc_height;
-    c.strict_forward_angle = s.strict_forward_angle;
-    c.permissive_forward_angle = s.permissive_forward_angle;
-    c.strict_incline_angle = s.strict_incline_angle;
-    c.permissive_incline_angle = s.permissive_incline_angle;
-    c.max_drop_distance = s.max_drop_distance;
+    NL_COPY_FIELDS(NL_LINK_SETTINGS_FIELDS, c, s);
     c.drop_angle_count = static_cast<uint32_t>(std::min(s.drop_angles.size(), kMaxDropAngles));
     std::copy_n(s.drop_angles.begin(), c.drop_angle_count, c.drop_angles);
-    c.drop_steepness = s.drop_steepness;
-    c.merge_distance = s.merge_distance;
-    c.clearance_margin = s.clearance_margin;
-    c.arc_segments = s.arc_segments;
-    c.walk_factor = s.walk_factor;
-    c.walk_distance = s.walk_distance;
     return c;
 }
 
@@ -115,35 +73,7 @@ nl_link to_c(const nl::StoredLink& stored, nl::Handle navmesh, bool holds) {
 nl_link_generation_report to_c(const nl::LinkGenerationReport& r) {
     nl_link_generation_report c{};
     c.size = sizeof c;
-    c.edges = r.edges;
-    c.groups = r.groups;
-    c.samples = r.samples;
-    c.takeoff_points = r.takeoff_points;
-    c.jump_candidates = r.jump_candidates;
-    c.drop_candidates = r.drop_candidates;
-    c.jump_links = r.jump_links;
-    c.drop_links = r.drop_links;
-    c.plugin_links = r.plugin_links;
-    c.rejected_wall = r.rejected_wall;
-    c.rejected_not_ledge = r.rejected_not_ledge;
-    c.rejected_distance = r.rejected_distance;
-    c.rejected_rise = r.rejected_rise;
-    c.rejected_angle = r.rejected_angle;
-    c.rejected_no_landing = r.rejected_no_landing;
-    c.rejected_clearance = r.rejected_clearance;
-    c.rejected_duplicate = r.rejected_duplicate;
-    c.rays_cast = r.rays_cast;
-    c.milliseconds_edges = r.milliseconds_edges;
-    c.milliseconds_takeoff = r.milliseconds_takeoff;
-    c.milliseconds_jumps = r.milliseconds_jumps;
-    c.milliseconds_drops = r.milliseconds_drops;
-    c.milliseconds_merge = r.milliseconds_merge;
-    c.milliseconds_total = r.milliseconds_total;
-    c.box_queries = r.box_queries;
-    c.body_tests = r.body_tests;
-    c.rejected_walkable = r.rejected_walkable;
-    c.rejected_too_shallow = r.rejected_too_shallow;
-    c.rejected_too_deep = r.rejected_too_deep;
+    NL_COPY_FIELDS(NL_LINK_GENERATION_REPORT_FIELDS, c, r);
     return c;
 }
 
@@ -152,7 +82,7 @@ nl_link_generation_report to_c(const nl::LinkGenerationReport& r) {
 // only `size` bytes.
 nl_link_settings read_settings(const nl_link_settings* settings) {
     const nl_link_settings given =
-        settings ? nl::capi::read_growable(*settings, nl_default_link_settings(), kSettingsFirstSize, "settings")
+        settings ? nl::capi::read_growable(*settings, nl_default_link_settings(), nl::capi::kFirstSize<nl_link_settings>, "settings")
                  : nl_default_link_settings();
     if (!given.plugin_settings_json && given.plugin_settings_json_length != 0)
         fail(ErrorCode::InvalidArgument, "settings->plugin_settings_json is null but settings->plugin_settings_json_length is ",
@@ -188,7 +118,7 @@ std::vector<nl::Link> links_of(const nl::LinkSnapshot& snapshot) {
 namespace nl::capi {
 
 Link link_from_def(const nl_link_def& given) {
-    const nl_link_def def = read_growable(given, nl_default_link_def(), kLinkDefFirstSize, "def");
+    const nl_link_def def = read_growable(given, nl_default_link_def(), nl::capi::kFirstSize<nl_link_def>, "def");
     const LinkKind kind = static_cast<LinkKind>(def.kind);
     if (kind != LinkKind::Jump && kind != LinkKind::Drop && kind != LinkKind::Manual && def.kind < NL_LINK_FIRST_PLUGIN_KIND)
         fail_field(ErrorCode::InvalidArgument, "kind is ", def.kind, " (NL_LINK_* or a plugin kind >= 256)");
@@ -271,7 +201,7 @@ NL_API nl_status nl_link_get(const nl_world* world, nl_link_id link, nl_link* ou
         require(out_link, "out_link");
         nl::capi::write_growable(out_link,
                                  to_c(nl::StoredLink{to_handle(link), w.in_world(navmesh, stored)}, navmesh, w.link_holds(navmesh, stored)),
-                                 kLinkFirstSize, "out_link");
+                                 nl::capi::kFirstSize<nl_link>, "out_link");
     });
 }
 
@@ -281,7 +211,7 @@ NL_API nl_status nl_navmesh_get_links(const nl_world* world, nl_navmesh_id navme
         const nl::Handle mesh = to_handle(navmesh);
         const nl::World& w = deref(world);
         const auto snapshot = w.navmeshes().links(mesh);
-        nl::capi::list_growable_into(*snapshot, out_links, capacity, out_count, kLinkFirstSize, "out_links",
+        nl::capi::list_growable_into(*snapshot, out_links, capacity, out_count, nl::capi::kFirstSize<nl_link>, "out_links",
                                      [&](const nl::StoredLink& s) {
                                          return to_c(nl::StoredLink{s.id, w.in_world(mesh, s.link)}, mesh, w.link_holds(mesh, s.link));
                                      });
@@ -301,7 +231,7 @@ NL_API nl_status nl_link_settings_from_json(const char* json, size_t length, nl_
     return guarded("nl_link_settings_from_json", nullptr, [&] {
         require(settings, "settings");
         if (length > 0) require(json, "json");
-        const nl_link_settings given = nl::capi::read_growable(*settings, nl_default_link_settings(), kSettingsFirstSize, "settings");
+        const nl_link_settings given = nl::capi::read_growable(*settings, nl_default_link_settings(), nl::capi::kFirstSize<nl_link_settings>, "settings");
         nl::LinkSettings s = to_core(given);
         nl::apply_settings_json(std::string_view(json ? json : "", length), s);
         if (s.drop_angles.size() > kMaxDropAngles)
@@ -310,7 +240,7 @@ NL_API nl_status nl_link_settings_from_json(const char* json, size_t length, nl_
         // The plugins' settings are the host's pointer, not the JSON's business.
         out.plugin_settings_json = given.plugin_settings_json;
         out.plugin_settings_json_length = given.plugin_settings_json_length;
-        nl::capi::write_growable(settings, out, kSettingsFirstSize, "settings");
+        nl::capi::write_growable(settings, out, nl::capi::kFirstSize<nl_link_settings>, "settings");
     });
 }
 
@@ -320,12 +250,12 @@ NL_API nl_status nl_navmesh_generate_links(nl_world* world, nl_navmesh_id navmes
         nl::World& w = deref(world);
         w.navmeshes().navmesh(to_handle(navmesh));  // a stale id first, before the settings
         const nl_link_settings given = read_settings(settings);
-        if (out_report) nl::capi::check_growable_output(out_report, kReportFirstSize, "out_report");
+        if (out_report) nl::capi::check_growable_output(out_report, nl::capi::kFirstSize<nl_link_generation_report>, "out_report");
         const nl::LinkSettings core_settings = core_settings_of(given);
         nl::PluginSettings plugin_settings = plugin_settings_of(given);
         const nl::LinkGenerationReport report =
             w.generate_links(to_handle(navmesh), core_settings, std::move(plugin_settings), nl::capi::progress_of(progress, user));
-        if (out_report) nl::capi::write_growable(out_report, to_c(report), kReportFirstSize, "out_report");
+        if (out_report) nl::capi::write_growable(out_report, to_c(report), nl::capi::kFirstSize<nl_link_generation_report>, "out_report");
     });
 }
 
@@ -344,13 +274,13 @@ NL_API nl_status nl_navmesh_generate_cross_links(nl_world* world, nl_navmesh_id 
             }
         }
         const nl_link_settings given = read_settings(settings);
-        if (out_report) nl::capi::check_growable_output(out_report, kReportFirstSize, "out_report");
+        if (out_report) nl::capi::check_growable_output(out_report, nl::capi::kFirstSize<nl_link_generation_report>, "out_report");
         const nl::LinkSettings core_settings = core_settings_of(given);
         // Checked as for any generation, though link-kind plugins link within one navmesh.
         w.check_plugin_settings(plugin_settings_of(given));
         const nl::LinkGenerationReport report =
             w.generate_cross_links(to_handle(first), to_handle(second), core_settings, tolerance, nl::capi::progress_of(progress, user));
-        if (out_report) nl::capi::write_growable(out_report, to_c(report), kReportFirstSize, "out_report");
+        if (out_report) nl::capi::write_growable(out_report, to_c(report), nl::capi::kFirstSize<nl_link_generation_report>, "out_report");
     });
 }
 
@@ -367,7 +297,7 @@ NL_API nl_status nl_navmesh_update_links_in_box(nl_world* world, nl_navmesh_id n
         box.max = nl::Vec3(box_max[0], box_max[1], box_max[2]);
         if (!nl::within_coordinate_limit(box.min) || !nl::within_coordinate_limit(box.max) || box.empty())
             fail(ErrorCode::InvalidArgument, "box_min and box_max must be finite, within the limit, and min <= max");
-        if (out_report) nl::capi::check_growable_output(out_report, kReportFirstSize, "out_report");
+        if (out_report) nl::capi::check_growable_output(out_report, nl::capi::kFirstSize<nl_link_generation_report>, "out_report");
         const nl::LinkGenerationReport report = [&] {
             try {
                 return w.update_links_in_box(to_handle(navmesh), box, nl::capi::progress_of(progress, user));
@@ -376,7 +306,7 @@ NL_API nl_status nl_navmesh_update_links_in_box(nl_world* world, nl_navmesh_id n
                 throw nl::Error(e.code(), nl::concat(e.what(), " (nl_navmesh_generate_links)"));
             }
         }();
-        if (out_report) nl::capi::write_growable(out_report, to_c(report), kReportFirstSize, "out_report");
+        if (out_report) nl::capi::write_growable(out_report, to_c(report), nl::capi::kFirstSize<nl_link_generation_report>, "out_report");
     });
 }
 

@@ -31,9 +31,6 @@ Link link_from_def(const nl_link_def& def);
 // A point into a host's float[3].
 inline void copy_point(float* out, const Vec3& v) { Eigen::Map<Vec3>{out} = v; }
 
-// nl_path_point's size in its first release with a `size` (0.2).
-constexpr size_t kPathPointFirstSize = offsetof(nl_path_point, reserved) + 3;
-
 // A navmesh point as the host reads it, in the world (the navmesh's pose applied).
 nl_nav_point to_c(const NavPoint& point, const SurfacePose& pose);
 

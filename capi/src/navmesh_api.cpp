@@ -2,6 +2,7 @@
 #include <cstring>
 
 #include "entry_guard.h"
+#include "first_sizes.h"
 #include "host_input.h"
 #include "mapping.h"
 #include "navmesh/navmesh_builder.h"
@@ -20,10 +21,7 @@ static_assert(NL_BUILD_WARNING_CLOCKWISE == nl::kWarnedClockwise && NL_BUILD_WAR
                   NL_BUILD_WARNING_Z_UP == nl::kWarnedZUp,
               "header and core disagree on build warnings");
 
-constexpr size_t kNavMeshDefFirstSize = offsetof(nl_navmesh_def, detail_triangle_starts) + sizeof(const uint32_t*);
 constexpr uint32_t kMaxCorners = NL_MAX_POLYGON_VERTICES;
-constexpr size_t kNavMeshInfoFirstSize = offsetof(nl_navmesh_info, bounds_max) + 3 * sizeof(float);
-constexpr size_t kNavPolygonFirstSize = sizeof(nl_nav_polygon);  // its first release with a `size` (0.2)
 static_assert(NL_MAX_POLYGON_VERTICES == nl::kMaxPolygonVertices, "header and core disagree");
 static_assert(NL_NO_POLYGON == nl::kNoPolygon, "header and core disagree");
 
@@ -50,7 +48,7 @@ nl_nav_point to_c(const NavPoint& p, const SurfacePose& pose) {
 }
 
 NavMeshInput navmesh_input_from_def(const nl_navmesh_def& given) {
-    const nl_navmesh_def def = read_growable(given, nl_default_navmesh_def(), kNavMeshDefFirstSize, "def");
+    const nl_navmesh_def def = read_growable(given, nl_default_navmesh_def(), nl::capi::kFirstSize<nl_navmesh_def>, "def");
     NavMeshInput in;
     in.vertices = read_vertices(def.vertices, def.vertex_count, def.vertex_stride);
     require_field(def.indices, "indices");
@@ -112,7 +110,7 @@ void navmesh_get_info(const World& world, nl_navmesh_id navmesh, nl_navmesh_info
     const nl::MadeFor made_for = world.navmeshes().made_for(to_handle(navmesh));
     info.turned_over_mesh_count = static_cast<uint32_t>(made_for.turned_over_meshes.size());
     info.build_warnings = made_for.warnings;
-    write_growable(out_info, info, kNavMeshInfoFirstSize, "out_info");
+    write_growable(out_info, info, nl::capi::kFirstSize<nl_navmesh_info>, "out_info");
 }
 
 void navmesh_get_boundary_edges(const World& world, nl_navmesh_id navmesh, nl_boundary_edge* out_edges, uint32_t capacity,
@@ -181,7 +179,7 @@ NL_API nl_status nl_navmesh_add(nl_world* world, const nl_navmesh_def* def, nl_n
         nl::World& w = deref(world);
         require(def, "def");
         require(out_id, "out_id");
-        const nl_navmesh_def full = nl::capi::read_growable(*def, nl_default_navmesh_def(), kNavMeshDefFirstSize, "def");
+        const nl_navmesh_def full = nl::capi::read_growable(*def, nl_default_navmesh_def(), nl::capi::kFirstSize<nl_navmesh_def>, "def");
         *out_id = to_id<nl_navmesh_id>(nl::naming_fields(
             "def->", [&] { return w.add_navmesh(nl::capi::navmesh_input_from_def(*def), to_handle(full.surface)); }));
     });
@@ -233,7 +231,7 @@ NL_API nl_status nl_navmesh_get_polygon(const nl_world* world, nl_navmesh_id nav
         out.area = mesh->area(polygon);
         copy_point(out.normal, pose.world_vector(mesh->normal(polygon)));
         copy_point(out.centre, pose.world_point(mesh->centre(polygon)));
-        nl::capi::write_growable(out_polygon, out, kNavPolygonFirstSize, "out_polygon");
+        nl::capi::write_growable(out_polygon, out, nl::capi::kFirstSize<nl_nav_polygon>, "out_polygon");
     });
 }
 

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "entry_guard.h"
+#include "first_sizes.h"
 #include "host_input.h"
 #include "io/file_bytes.h"
 #include "io/navmesh_file.h"
@@ -22,8 +23,6 @@ using nl::capi::to_handle;
 
 namespace {
 
-constexpr size_t kLoadDefFirstSize = sizeof(nl_navmesh_load_def);
-constexpr size_t kFileInfoFirstSize = sizeof(nl_navmesh_file_info);
 constexpr uint32_t kKnownLoadFlags = NL_NAVMESH_LOAD_SAME_LEVEL;
 
 std::vector<uint8_t> saved_file(const nl::World& w, nl_navmesh_id navmesh) {
@@ -40,7 +39,7 @@ nl::NavMeshFile read_file(const void* data, size_t size) {
 
 nl_navmesh_id load(nl::World& w, const nl::NavMeshFile& file, const nl_navmesh_load_def* given) {
     const nl_navmesh_load_def def =
-        given ? nl::capi::read_growable(*given, nl_default_navmesh_load_def(), kLoadDefFirstSize, "def") : nl_default_navmesh_load_def();
+        given ? nl::capi::read_growable(*given, nl_default_navmesh_load_def(), nl::capi::kFirstSize<nl_navmesh_load_def>, "def") : nl_default_navmesh_load_def();
     if (def.flags & ~kKnownLoadFlags) fail(ErrorCode::InvalidArgument, "def->flags has unknown bits 0x", std::hex, def.flags & ~kKnownLoadFlags);
     const nl::Handle surface = nl::capi::to_handle(def.surface);
     if ((def.flags & NL_NAVMESH_LOAD_SAME_LEVEL) && file.made_for.level_hash != 0) {
@@ -115,8 +114,8 @@ NL_API nl_status nl_navmesh_file_describe(const void* data, size_t size, nl_navm
     return guarded("nl_navmesh_file_describe", nullptr, [&] {
         if (made_for_json && !out_length) fail(ErrorCode::InvalidArgument, "made_for_json is given but out_length is null");
         if (!made_for_json && capacity > 0) fail(ErrorCode::InvalidArgument, "made_for_json is null but capacity is ", capacity);
-        if (out_info && out_info->size < kFileInfoFirstSize)
-            fail(ErrorCode::InvalidArgument, "out_info->size is ", out_info->size, " (must be at least ", kFileInfoFirstSize, ")");
+        if (out_info && out_info->size < nl::capi::kFirstSize<nl_navmesh_file_info>)
+            fail(ErrorCode::InvalidArgument, "out_info->size is ", out_info->size, " (must be at least ", nl::capi::kFirstSize<nl_navmesh_file_info>, ")");
         const nl::NavMeshFile file = read_file(data, size);
         const std::string json = nl::made_for_json(file);
         if (out_length) *out_length = json.size();  // also when the buffer is too small: the two-call pattern
@@ -136,7 +135,7 @@ NL_API nl_status nl_navmesh_file_describe(const void* data, size_t size, nl_navm
             info.rides_surface = file.rides_surface;
             info.quantum = file.quantum;
             info.level_hash = file.made_for.level_hash;
-            nl::capi::write_growable(out_info, info, kFileInfoFirstSize, "out_info");
+            nl::capi::write_growable(out_info, info, nl::capi::kFirstSize<nl_navmesh_file_info>, "out_info");
         }
         if (made_for_json) std::memcpy(made_for_json, json.c_str(), json.size() + 1);
     });

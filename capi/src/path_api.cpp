@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "entry_guard.h"
+#include "first_sizes.h"
 #include "host_input.h"
 #include "mapping.h"
 #include "path/path_planner.h"
@@ -25,11 +26,6 @@ using nl::capi::to_id;
 
 namespace {
 
-constexpr size_t kRequestFirstSize = offsetof(nl_path_request_def, user) + sizeof(void*);
-constexpr size_t kResultFirstSize = offsetof(nl_path_result, goal) + 3 * sizeof(float);
-constexpr size_t kStatsFirstSize = offsetof(nl_path_queue_stats, finished) + sizeof(uint64_t);
-constexpr size_t kFinishedFirstSize = sizeof(nl_path_finished);
-constexpr size_t kBudgetFirstSize = sizeof(nl_path_budget);
 
 static_assert(uint32_t(nl::PathOutcome::Failed) == NL_PATH_FAILED && uint32_t(nl::PathOutcome::Partial) == NL_PATH_PARTIAL,
               "core and header disagree on path outcomes");
@@ -59,7 +55,7 @@ struct Request {
 Request read_request(const nl::World& w, const nl_path_request_def* in) {
     require(in, "def");
     Request r;
-    r.def = nl::capi::read_growable(*in, nl_default_path_request_def(), kRequestFirstSize, "def");
+    r.def = nl::capi::read_growable(*in, nl_default_path_request_def(), nl::capi::kFirstSize<nl_path_request_def>, "def");
     r.query = read_query(r.def);
     r.graph = w.navmeshes().path_graph(to_handle(r.def.navmesh));
     return r;
@@ -90,8 +86,8 @@ void write_result(const nl::PathResult& r, nl_path_result* out_result, nl_path_p
     require(out_result, "out_result");
     require(out_count, "out_count");
     if (!out_points && capacity > 0) fail(ErrorCode::InvalidArgument, "out_points is null but capacity is ", capacity);
-    nl::capi::write_growable(out_result, to_c(r), kResultFirstSize, "out_result");
-    nl::capi::list_growable_into(r.points, out_points, capacity, out_count, nl::capi::kPathPointFirstSize, "out_points",
+    nl::capi::write_growable(out_result, to_c(r), nl::capi::kFirstSize<nl_path_result>, "out_result");
+    nl::capi::list_growable_into(r.points, out_points, capacity, out_count, nl::capi::kFirstSize<nl_path_point>, "out_points",
                                  [](const nl::PathPoint& p) { return nl::capi::to_c(p); });
 }
 
@@ -271,7 +267,7 @@ NL_API nl_status nl_path_process(nl_world* world, const nl_path_budget* budget, 
     return guarded("nl_path_process", world, [&] {
         nl::World& w = deref(world);
         const nl_path_budget given =
-            budget ? nl::capi::read_growable(*budget, nl_default_path_budget(), kBudgetFirstSize, "budget") : nl_default_path_budget();
+            budget ? nl::capi::read_growable(*budget, nl_default_path_budget(), nl::capi::kFirstSize<nl_path_budget>, "budget") : nl_default_path_budget();
         if (std::isnan(given.max_milliseconds)) fail(ErrorCode::InvalidArgument, "budget->max_milliseconds is NaN");
         const uint32_t processed =
             w.paths().process(nl::ProcessBudget{given.max_requests, given.max_milliseconds, given.max_search_nodes});
@@ -287,7 +283,7 @@ NL_API nl_status nl_path_take_finished(nl_world* world, nl_path_finished* out_fi
         if (!out_finished && capacity > 0) fail(ErrorCode::InvalidArgument, "out_finished is null but capacity is ", capacity);
         // Checked before anything is taken: a refusal must lose no finished request.
         std::optional<nl::capi::ElementWriter<nl_path_finished>> writer;
-        if (capacity > 0) writer.emplace(out_finished, kFinishedFirstSize, "out_finished");
+        if (capacity > 0) writer.emplace(out_finished, nl::capi::kFirstSize<nl_path_finished>, "out_finished");
         thread_local std::vector<nl::FinishedRequest> taken;
         const uint32_t remaining = w.paths().take_finished(capacity, taken);
         for (size_t i = 0; i < taken.size(); ++i) {
@@ -314,7 +310,7 @@ NL_API nl_status nl_path_get_queue_stats(const nl_world* world, nl_path_queue_st
         c.unreleased = s.unreleased;
         c.submitted = s.submitted;
         c.finished = s.finished;
-        nl::capi::write_growable(out_stats, c, kStatsFirstSize, "out_stats");
+        nl::capi::write_growable(out_stats, c, nl::capi::kFirstSize<nl_path_queue_stats>, "out_stats");
     });
 }
 

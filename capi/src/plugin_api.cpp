@@ -3,6 +3,7 @@
 #include <exception>
 
 #include "entry_guard.h"
+#include "first_sizes.h"
 #include "host_input.h"
 #include "mapping.h"
 #include "navlink/plugin.h"
@@ -17,8 +18,6 @@ using nl::capi::require;
 
 namespace {
 
-constexpr size_t kBuildDefFirstSize = offsetof(nl_navmesh_build_def, settings_json_length) + sizeof(size_t);
-constexpr size_t kDescriptionFirstSize = offsetof(nl_plugin_description, description) + sizeof(const char*);
 
 using nl::capi::to_handle;
 using nl::capi::to_id;
@@ -41,7 +40,7 @@ NL_API nl_status nl_navmesh_build(nl_world* world, const nl_navmesh_build_def* d
         require(def, "def");
         require(out_id, "out_id");
         const nl_navmesh_build_def settings =
-            nl::capi::read_growable(*def, nl_default_navmesh_build_def(), kBuildDefFirstSize, "def");
+            nl::capi::read_growable(*def, nl_default_navmesh_build_def(), nl::capi::kFirstSize<nl_navmesh_build_def>, "def");
         nl::NavMeshBuildRequest request;
         request.builder = settings.builder ? settings.builder : "recast";
         request.agent = nl::capi::to_core(settings.agent);
@@ -89,7 +88,7 @@ NL_API nl_status nl_plugin_get_description(const nl_world* world, nl_plugin_id p
         d.name = described.name.c_str();
         d.version = described.version.c_str();
         d.description = described.description.c_str();
-        nl::capi::write_growable(out_description, d, kDescriptionFirstSize, "out_description");
+        nl::capi::write_growable(out_description, d, nl::capi::kFirstSize<nl_plugin_description>, "out_description");
     });
 }
 

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "entry_guard.h"
+#include "first_sizes.h"
 #include "host_input.h"
 #include "mapping.h"
 #include "navmesh/random_points.h"
@@ -24,9 +25,6 @@ using nl::capi::to_handle;
 
 namespace {
 
-constexpr size_t kFilterFirstSize = sizeof(nl_query_filter);  // their first release (0.3)
-constexpr size_t kRaycastHitFirstSize = sizeof(nl_navmesh_raycast_hit);
-constexpr size_t kRandomPointsDefFirstSize = sizeof(nl_random_points_def);
 static_assert(NL_NO_ISLAND == nl::ReachabilityMap::kNoIsland, "header and core disagree");
 
 struct Body {
@@ -46,7 +44,7 @@ Body read_filter(const nl_query_filter* given, const std::string& name) {
         static const Body defaults{nl::capi::read_capabilities(nl_default_agent_capabilities(), ""), {}, {}};
         return defaults;
     }
-    const nl_query_filter filter = nl::capi::read_growable(*given, nl_default_query_filter(), kFilterFirstSize, name.c_str());
+    const nl_query_filter filter = nl::capi::read_growable(*given, nl_default_query_filter(), nl::capi::kFirstSize<nl_query_filter>, name.c_str());
     const std::string prefix = name + "->";
     Body body;
     body.agent = nl::capi::read_capabilities(filter.agent, prefix.c_str());
@@ -188,7 +186,7 @@ NL_API nl_status nl_navmesh_raycast(const nl_world* world, nl_navmesh_id navmesh
         require(out_hits, "out_hits");
         if (!out_polygons && polygons_per_ray > 0)
             fail(ErrorCode::InvalidArgument, "out_polygons is null but polygons_per_ray is ", polygons_per_ray);
-        const nl::capi::ElementWriter<nl_navmesh_raycast_hit> hits(out_hits, kRaycastHitFirstSize, "out_hits");
+        const nl::capi::ElementWriter<nl_navmesh_raycast_hit> hits(out_hits, nl::capi::kFirstSize<nl_navmesh_raycast_hit>, "out_hits");
         // Every ray is checked before any is walked: a refused batch writes nothing.
         thread_local std::vector<std::pair<Vec3, Vec3>> ends;
         ends.resize(count);
@@ -260,7 +258,7 @@ NL_API nl_status nl_navmesh_random_points(const nl_world* world, nl_navmesh_id n
     return guarded("nl_navmesh_random_points", world, [&] {
         const nl::World& w = deref(world);
         require(def, "def");
-        const nl_random_points_def d = nl::capi::read_growable(*def, nl_default_random_points_def(), kRandomPointsDefFirstSize, "def");
+        const nl_random_points_def d = nl::capi::read_growable(*def, nl_default_random_points_def(), nl::capi::kFirstSize<nl_random_points_def>, "def");
         const Body body = read_filter(d.filter, "def->filter");
         const auto graph = graph_of(w, navmesh);
         const nl::NavMesh* mesh = &graph->navmesh();

@@ -7,6 +7,7 @@
 
 #include "builtin_plugins.h"
 #include "entry_guard.h"
+#include "first_sizes.h"
 #include "plugin_adapter.h"
 #include "util/host_task_system.h"
 #include "world.h"
@@ -17,7 +18,6 @@ using nl::capi::guarded;
 
 namespace {
 
-constexpr size_t kWorldDefFirstSize = offsetof(nl_world_def, log_level) + sizeof(nl_log_level);
 // The task callbacks come as a group: a size that ends inside it is no header's sizeof.
 constexpr size_t kWorldDefTasksBegin = offsetof(nl_world_def, task_enqueue_fn);
 constexpr size_t kWorldDefTasksEnd = offsetof(nl_world_def, task_user) + sizeof(void*);
@@ -95,7 +95,7 @@ NL_API nl_status nl_world_create(const nl_world_def* def, nl_world** out_world) 
     return guarded("nl_world_create", nullptr, [&] {
         nl::capi::require(out_world, "out_world");
         const nl_world_def settings =
-            def ? nl::capi::read_growable(*def, nl_default_world_def(), kWorldDefFirstSize, "def") : nl_default_world_def();
+            def ? nl::capi::read_growable(*def, nl_default_world_def(), nl::capi::kFirstSize<nl_world_def>, "def") : nl_default_world_def();
         if (def && def->size > kWorldDefTasksBegin && def->size < kWorldDefTasksEnd)
             fail(ErrorCode::InvalidArgument, "def->size is ", def->size, ", which ends inside the task callbacks (bytes ",
                  kWorldDefTasksBegin, " to ", kWorldDefTasksEnd, "; initialise it from nl_default_world_def or with sizeof)");

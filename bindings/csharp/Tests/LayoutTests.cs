@@ -26,8 +26,9 @@ namespace NavLink.Tests
             {"nl_query_filter", "QueryFilterDef"},
         };
 
-        // The constant classes of Types/Constants.cs and the prefix of the #defines each holds: a C# constant
-        // is PREFIX + its name in UPPER_SNAKE (InvalidArgument: NL_STATUS_INVALID_ARGUMENT), but for Renamed.
+        // The constant classes and enums of Generated/Constants.g.cs and the prefix of the #defines each holds: a
+        // C# constant is PREFIX + its name in UPPER_SNAKE (InvalidArgument: NL_STATUS_INVALID_ARGUMENT), but for
+        // RenamedConstants.
         private static readonly Dictionary<Type, string> ConstantPrefixes = new Dictionary<Type, string>
         {
             {typeof(HeaderVersion), "NL_VERSION_"}, {typeof(StatusCode), "NL_STATUS_"}, {typeof(Limits), "NL_"},
@@ -43,6 +44,12 @@ namespace NavLink.Tests
         private static readonly Dictionary<string, string> RenamedConstants = new Dictionary<string, string>
         {
             {"LinkKind.Walk", "NL_SEGMENT_WALK"},
+        };
+        // #defines a C# constant of another name stands for, with the same value: LinkKind is also the header's
+        // nl_segment_kind (PathPoint.Segment).
+        private static readonly Dictionary<string, string> SameAs = new Dictionary<string, string>
+        {
+            {"NL_SEGMENT_JUMP", "NL_LINK_JUMP"}, {"NL_SEGMENT_DROP", "NL_LINK_DROP"}, {"NL_SEGMENT_MANUAL", "NL_LINK_MANUAL"},
         };
 
         public static void Run(Checks check, string layoutFile)
@@ -107,7 +114,7 @@ namespace NavLink.Tests
                     // A [Flags] enum's None (no bit set) is C#'s convention; the headers write 0.
                     if (type.IsDefined(typeof(FlagsAttribute), false) && c.Key == "None" && Convert.ToInt64(c.Value) == 0) continue;
                     string prefix;
-                    if (!check.That(ConstantPrefixes.TryGetValue(type, out prefix), type.Name + "." + c.Key + ": a constant outside the classes of Constants.cs"))
+                    if (!check.That(ConstantPrefixes.TryGetValue(type, out prefix), type.Name + "." + c.Key + ": a constant outside the classes of Constants.g.cs"))
                         continue;
                     string cName;
                     if (!RenamedConstants.TryGetValue(type.Name + "." + c.Key, out cName)) cName = prefix + UpperSnake(c.Key);
@@ -119,7 +126,14 @@ namespace NavLink.Tests
                 }
             }
             foreach (var entry in header)
-                check.That(mine.ContainsKey(entry.Key), entry.Key + " (" + entry.Value + ") has no C# constant");
+            {
+                string other;
+                if (SameAs.TryGetValue(entry.Key, out other))
+                    check.That(mine.ContainsKey(other) && mine[other] == entry.Value,
+                               entry.Key + " (" + entry.Value + ") is not the C# constant of " + other);
+                else
+                    check.That(mine.ContainsKey(entry.Key), entry.Key + " (" + entry.Value + ") has no C# constant");
+            }
         }
 
         private static string UpperSnake(string pascal)

@@ -768,12 +768,14 @@ typedef struct nl_link_id {
     uint32_t generation;
 } nl_link_id;
 
+/** The first link kind a plugin may use (nl_link_kind). */
+#define NL_LINK_FIRST_PLUGIN_KIND 256u
+
 /** Link kinds. Plugin kinds are numbered from NL_LINK_FIRST_PLUGIN_KIND. */
 typedef uint32_t nl_link_kind;
 #define NL_LINK_JUMP 1u   /**< Edge to edge across a gap, along a parabolic arc. */
 #define NL_LINK_DROP 2u   /**< Off an edge down to the floor below. */
 #define NL_LINK_MANUAL 3u /**< Placed by the host. */
-#define NL_LINK_FIRST_PLUGIN_KIND 256u
 
 /** What taking a link asks of an agent, going from its start to its end. Going the other way over
  *  a bidirectional link swaps rise and drop. */
@@ -1267,6 +1269,9 @@ NL_API nl_path_request_def nl_default_path_request_def(void);
  *  (NL_LINK_JUMP, NL_LINK_DROP, NL_LINK_MANUAL or a plugin kind). */
 typedef uint32_t nl_segment_kind;
 #define NL_SEGMENT_WALK 0u
+#define NL_SEGMENT_JUMP 1u   /**< NL_LINK_JUMP. */
+#define NL_SEGMENT_DROP 2u   /**< NL_LINK_DROP. */
+#define NL_SEGMENT_MANUAL 3u /**< NL_LINK_MANUAL. */
 
 /** One point of a path. An array element that may grow: set `size` of the first element of an
  *  output array (nl_path_point_init). */
@@ -1330,6 +1335,7 @@ NL_API nl_status nl_path_find(nl_world* world, const nl_path_request_def* def, n
                               nl_path_point* out_points, uint32_t capacity, uint32_t* out_count);
 
 /** Why a path falls short of its goal: nl_path_shortfall.reason. */
+typedef uint32_t nl_path_shortfall_reason;
 #define NL_PATH_SHORTFALL_NONE 0u             /**< It reaches the goal, or an end is off the navmesh
                                                    (the outcome says so). */
 #define NL_PATH_SHORTFALL_OUT_OF_NODES 1u     /**< max_nodes stopped the search. */
@@ -1343,6 +1349,7 @@ NL_API nl_status nl_path_find(nl_world* world, const nl_path_request_def* def, n
 #define NL_PATH_SHORTFALL_NOT_CONNECTED 6u    /**< No passage or link leads there, whatever the body. */
 
 /** What a link asks that the body lacks: nl_path_shortfall.limit. */
+typedef uint32_t nl_link_limit;
 #define NL_LINK_LIMIT_NONE 0u
 #define NL_LINK_LIMIT_JUMP_DISTANCE 1u /**< The gap, against max_jump_distance. */
 #define NL_LINK_LIMIT_JUMP_HEIGHT 2u   /**< The rise, against max_jump_height. */
@@ -1353,8 +1360,8 @@ NL_API nl_status nl_path_find(nl_world* world, const nl_path_request_def* def, n
 /** Why a request's path falls short of its goal (nl_path_explain). */
 typedef struct nl_path_shortfall {
     uint32_t size;               /**< Set by the caller to sizeof(nl_path_shortfall). */
-    uint32_t reason;             /**< NL_PATH_SHORTFALL_*. */
-    uint32_t limit;              /**< NL_LINK_LIMIT_* for LINK_BEYOND_BODY. */
+    nl_path_shortfall_reason reason; /**< NL_PATH_SHORTFALL_*. */
+    nl_link_limit limit;         /**< NL_LINK_LIMIT_* for LINK_BEYOND_BODY. */
     float needed;                /**< LINK_BEYOND_BODY: what the link needs, metres (for WIDTH the
                                       body's diameter); BODY_TOO_WIDE: the body's radius. */
     float has;                   /**< LINK_BEYOND_BODY: what the body can, metres (for WIDTH the

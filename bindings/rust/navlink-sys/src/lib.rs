@@ -1,14 +1,22 @@
 //! Raw bindings to NavLink's C ABI: `navlink/navlink.h`, `navlink/recast.h` and `navlink/plugin.h`, one
 //! to one. Types keep their C names and layouts (`#[repr(C)]`, checked against the C compiler by
 //! `tests/layout.rs`), functions their C signatures. Every function is `unsafe`: the header's comments
-//! say what each pointer must be. The safe API is the `navlink` crate.
+//! (the items' documentation here) say what each pointer must be. The safe API is the `navlink` crate.
+//!
+//! The declarations are generated from the headers (`bindings/generate/generate.py`, emit_rust.py):
+//! `constants_generated.rs` (the kinds as `u32` aliases, every `NL_*` constant), `types_generated.rs` (the
+//! structs, callback types and inline initialisers) and `functions_generated.rs` (the `extern "C"` block).
+//! What is written here by hand is what is not mechanical: `output_init`, the ids' `Debug`, and
+//! `nl_succeeded` / `nl_failed` (status.rs: the header's function-like macros).
 //!
 //! Callback types are `Option<unsafe extern "C" fn ...>`: `None` is the header's NULL.
 //!
 //! Output structs that may grow start with `size`. The header's inline initialisers
 //! (`NL_DEFINE_OUTPUT_INIT`: `nl_link_init()`...) are not exported by the library; they are defined here
 //! under the same names, and each such struct's `Default` is its initialiser, so `vec![nl_link::default(); n]`
-//! is an output array the library can lay out (it reads the element size from the first element).
+//! is an output array the library can lay out (it reads the element size from the first element). A struct
+//! that starts with `size` and that no function returns (`nl_navmesh_file_info`, the plugin ABI's) is
+//! `Default` zeroed with `size` set too.
 #![allow(non_camel_case_types)]
 
 /// What the header's `NL_DEFINE_OUTPUT_INIT` functions return: a zeroed `T` with its leading `size` set.
@@ -20,18 +28,6 @@ pub(crate) unsafe fn output_init<T>() -> T {
     let mut value: T = std::mem::zeroed();
     *(&mut value as *mut T as *mut u32) = std::mem::size_of::<T>() as u32;
     value
-}
-
-/// `impl Default` as the struct's inline initialiser.
-macro_rules! default_is_init {
-    ($t:ident, $init:ident) => {
-        impl Default for $t {
-            /// The header's initialiser: zeroed, with `size` set.
-            fn default() -> Self {
-                $init()
-            }
-        }
-    };
 }
 
 /// `impl Debug` for an id, under the safe crate's name and by what it means rather than its raw fields:
@@ -60,29 +56,20 @@ const ID_SLOT_MASK: u32 = (1 << 28) - 1;
 /// The bits of an id's `generation` that count its slot's reuse.
 const ID_GENERATION_MASK: u32 = (1 << 20) - 1;
 
-mod agents;
-mod level;
-mod links;
-mod navmesh;
-mod navmesh_files;
-mod paths;
-mod plugins;
-mod queries;
-mod recast;
-mod status;
-mod world;
+// Generated from the headers (bindings/generate/emit_rust.py); rustfmt leaves them as the generator writes them.
+#[rustfmt::skip]
+mod constants_generated;
+#[rustfmt::skip]
+mod functions_generated;
+#[rustfmt::skip]
+mod types_generated;
 
-pub use agents::*;
-pub use level::*;
-pub use links::*;
-pub use navmesh::*;
-pub use navmesh_files::*;
-pub use paths::*;
-pub use plugins::*;
-pub use queries::*;
-pub use recast::*;
+mod status;
+
+pub use constants_generated::*;
+pub use functions_generated::*;
 pub use status::*;
-pub use world::*;
+pub use types_generated::*;
 
 #[cfg(test)]
 mod tests {

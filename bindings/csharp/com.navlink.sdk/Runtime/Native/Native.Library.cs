@@ -1,8 +1,8 @@
 namespace NavLink
 {
-    // The raw C ABI: one extern per nl_* function, named and typed as in navlink.h (pointers stay
-    // pointers, so NULL can be passed where the header allows it). Everything goes through the one
-    // library name below. Prefer World and its methods; this class is for what they do not cover.
+    // The raw C ABI: one extern per nl_* function, generated from the headers (Generated/Native.g.cs),
+    // everything through the one library name below. Prefer World and its methods; this class is for what
+    // they do not cover.
     public static unsafe partial class Native
     {
         // libnavlink.so on Linux/Android, libnavlink.dylib on macOS, navlink.dll on Windows: the runtime
