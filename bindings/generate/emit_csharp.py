@@ -408,7 +408,7 @@ STRUCT_FILES = [
                   "function that returns it, whose values are the defaults."),
     ("Outputs.g.cs", "The structs the library writes that may grow: each from its initialiser (Native.nl_*_init: "
                      "Size set); of an output array, the first element's Size gives the element size."),
-    ("Structs.g.cs", "The other structs of navlink/navlink.h and navlink/recast.h."),
+    ("Structs.g.cs", "The other structs of navlink/navlink.h's parts and navlink/recast.h."),
     ("Plugin.g.cs", "The structs of navlink/plugin.h, for plugins written in C# (registered with "
                     "Native.nl_plugin_register): a function pointer is IntPtr; NativeCallbacks has its delegate type "
                     "(Marshal.GetDelegateForFunctionPointer turns the host's into delegates; fill the plugin's from "

@@ -25,7 +25,9 @@ ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)),
 
 def outputs(model):
     """Every generated file: its path from the repository's root, and its text."""
-    sources = header_model.CONSTANT_HEADERS + header_model.HEADERS
+    # How the generated files name their sources: navlink.h stands for the parts it includes.
+    sources = [h + " (with its parts)" if h == "navlink/navlink.h" else h
+               for h in header_model.CONSTANT_HEADERS + header_model.HEADERS]
     files = {}
     for emitter in (emit_c, emit_python, emit_csharp, emit_rust):
         files.update(emitter.outputs(model, sources))

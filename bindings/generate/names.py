@@ -27,6 +27,5 @@ def is_id(struct):
 def ordered_items(model):
     """Callbacks and structs in header order (a struct's by-value fields and a callback's types are
     declared before it): [("callback" | "struct", item)]."""
-    headers = ["navlink/navlink.h", "navlink/recast.h", "navlink/plugin.h"]
     items = [("callback", c) for c in model["callbacks"]] + [("struct", s) for s in model["structs"]]
-    return sorted(items, key=lambda item: (headers.index(item[1]["header"]), item[1]["order"]))
+    return sorted(items, key=lambda item: (model["headers"].index(item[1]["header"]), item[1]["order"]))

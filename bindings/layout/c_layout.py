@@ -72,6 +72,24 @@ def parse_integer_constants(text):
     return names
 
 
+def header_parts(text):
+    """The parts an umbrella header includes (`#include "navlink/X.h"`, in order), but export.h and version.h."""
+    names = re.findall(r'^\s*#\s*include\s+"(navlink/\w+\.h)"', text, flags=re.M)
+    return [n for n in names if n not in ("navlink/export.h", "navlink/version.h")]
+
+
+def expanded_headers(include_dirs, headers):
+    """`headers` with each one's parts (header_parts) inserted after it, each header once."""
+    out = []
+    for header in headers:
+        if header in out:
+            continue
+        out.append(header)
+        with open(find_header(include_dirs, header), encoding="utf-8") as f:
+            out += [p for p in expanded_headers(include_dirs, header_parts(f.read())) if p not in out]
+    return out
+
+
 def find_header(include_dirs, header):
     for d in include_dirs:
         path = os.path.join(d, header)
@@ -98,10 +116,11 @@ def probe_program(structs, inits=(), constants=()):
 
 def layout_lines(include_dirs, compiler="cc"):
     structs, inits, constants = [], [], []
-    for header in CONSTANT_HEADERS + HEADERS:
+    headers = expanded_headers(include_dirs, HEADERS)
+    for header in CONSTANT_HEADERS + headers:
         with open(find_header(include_dirs, header), encoding="utf-8") as f:
             text = f.read()
-        if header in HEADERS:
+        if header in headers:
             structs += parse_structs(text)
             inits += parse_output_inits(text)
         constants += parse_integer_constants(text)

@@ -1,4 +1,4 @@
-"""The C ABI of libnavlink for ctypes: generated from navlink/version.h, navlink/navlink.h, navlink/recast.h, navlink/plugin.h by bindings/generate/generate.py.
+"""The C ABI of libnavlink for ctypes: generated from navlink/version.h, navlink/navlink.h (with its parts), navlink/recast.h, navlink/plugin.h by bindings/generate/generate.py.
 
 Do not edit: change the header and run the generator (docs/bindings.md, "Generated layers"). navlink.py
 imports everything here and builds the idiomatic layer on top.
@@ -234,12 +234,32 @@ class Version(_Struct):
     """Semantic version of the library. (nl_version)"""
 
 
-class WorldDef(_Struct):
-    """How to create a world. Get one from nl_default_world_def(). (nl_world_def)"""
-
-
 class MeshId(_Id):
     """A registered mesh. Zero-initialised is the null id. (nl_mesh_id)"""
+
+
+class NavmeshId(_Id):
+    """A navmesh in a world. Zero-initialised is the null id. (nl_navmesh_id)"""
+
+
+class LinkId(_Id):
+    """A link in a world. Zero-initialised is the null id. (nl_link_id)"""
+
+
+class PathTicket(_Id):
+    """A queued path request. Zero-initialised is the null ticket. (nl_path_ticket)"""
+
+
+class AgentId(_Id):
+    """An agent in a world. Zero-initialised is the null id. (nl_agent_id)"""
+
+
+class PluginId(_Id):
+    """A plugin loaded in a world. Zero-initialised is the null id. (nl_plugin_id)"""
+
+
+class WorldDef(_Struct):
+    """How to create a world. Get one from nl_default_world_def(). (nl_world_def)"""
 
 
 class MeshDef(_Struct):
@@ -260,10 +280,6 @@ class RayHit(_Growable):
 
 class Segment(_Struct):
     """A straight segment between two points. (nl_segment)"""
-
-
-class NavmeshId(_Id):
-    """A navmesh in a world. Zero-initialised is the null id. (nl_navmesh_id)"""
 
 
 class AgentType(_Struct):
@@ -294,10 +310,6 @@ class NavmeshBuildDef(_Struct):
     """How to build a navmesh. Get one from nl_default_navmesh_build_def(). (nl_navmesh_build_def)"""
 
 
-class LinkId(_Id):
-    """A link in a world. Zero-initialised is the null id. (nl_link_id)"""
-
-
 class LinkRequirements(_Struct):
     """What taking a link asks of an agent, going from its start to its end. Going the other way over a bidirectional link swaps rise and drop. (nl_link_requirements)"""
 
@@ -324,10 +336,6 @@ class NavmeshLoadDef(_Struct):
 
 class NavmeshFileInfo(_Struct):
     """What a navmesh file holds and was made for (nl_navmesh_file_describe). (nl_navmesh_file_info)"""
-
-
-class PathTicket(_Id):
-    """A queued path request. Zero-initialised is the null ticket. (nl_path_ticket)"""
 
 
 class AgentCapabilities(_Struct):
@@ -378,10 +386,6 @@ class RandomPointsDef(_Struct):
     """Which random points nl_navmesh_random_points draws. Get one from nl_default_random_points_def(). (nl_random_points_def)"""
 
 
-class AgentId(_Id):
-    """An agent in a world. Zero-initialised is the null id. (nl_agent_id)"""
-
-
 class AgentDef(_Struct):
     """How to add an agent. Get one from nl_default_agent_def(). (nl_agent_def)"""
 
@@ -396,10 +400,6 @@ class AgentTrajectory(_Growable):
 
 class AgentEvent(_Growable):
     """An array element that may grow: set `size` of the first (nl_agent_event_init). (nl_agent_event)"""
-
-
-class PluginId(_Id):
-    """A plugin loaded in a world. Zero-initialised is the null id. (nl_plugin_id)"""
 
 
 class PluginDescription(_Growable):
@@ -625,21 +625,21 @@ _read_as_enums(LinkKindProvider, kind=LinkKind)
 
 # Every C struct by its C name.
 C_STRUCTS = {
-    "nl_version": Version, "nl_world_def": WorldDef, "nl_mesh_id": MeshId, "nl_mesh_def": MeshDef,
-    "nl_mesh_info": MeshInfo, "nl_ray": Ray, "nl_ray_hit": RayHit, "nl_segment": Segment,
-    "nl_navmesh_id": NavmeshId, "nl_agent_type": AgentType, "nl_navmesh_def": NavmeshDef,
-    "nl_navmesh_info": NavmeshInfo, "nl_nav_polygon": NavPolygon, "nl_boundary_edge": BoundaryEdge,
-    "nl_nav_point": NavPoint, "nl_navmesh_build_def": NavmeshBuildDef, "nl_link_id": LinkId,
-    "nl_link_requirements": LinkRequirements, "nl_link": Link, "nl_link_def": LinkDef,
-    "nl_link_settings": LinkSettings, "nl_link_generation_report": LinkGenerationReport,
-    "nl_navmesh_load_def": NavmeshLoadDef, "nl_navmesh_file_info": NavmeshFileInfo, "nl_path_ticket": PathTicket,
+    "nl_version": Version, "nl_mesh_id": MeshId, "nl_navmesh_id": NavmeshId, "nl_link_id": LinkId,
+    "nl_path_ticket": PathTicket, "nl_agent_id": AgentId, "nl_plugin_id": PluginId, "nl_world_def": WorldDef,
+    "nl_mesh_def": MeshDef, "nl_mesh_info": MeshInfo, "nl_ray": Ray, "nl_ray_hit": RayHit, "nl_segment": Segment,
+    "nl_agent_type": AgentType, "nl_navmesh_def": NavmeshDef, "nl_navmesh_info": NavmeshInfo,
+    "nl_nav_polygon": NavPolygon, "nl_boundary_edge": BoundaryEdge, "nl_nav_point": NavPoint,
+    "nl_navmesh_build_def": NavmeshBuildDef, "nl_link_requirements": LinkRequirements, "nl_link": Link,
+    "nl_link_def": LinkDef, "nl_link_settings": LinkSettings, "nl_link_generation_report": LinkGenerationReport,
+    "nl_navmesh_load_def": NavmeshLoadDef, "nl_navmesh_file_info": NavmeshFileInfo,
     "nl_agent_capabilities": AgentCapabilities, "nl_path_request_def": PathRequestDef,
     "nl_path_point": PathPoint, "nl_path_result": PathResultInfo, "nl_path_shortfall": PathShortfallInfo,
     "nl_path_budget": PathBudget, "nl_path_finished": PathFinished, "nl_path_queue_stats": PathQueueStats,
     "nl_query_filter": QueryFilterDef, "nl_navmesh_ray": NavmeshRay, "nl_navmesh_raycast_hit": NavmeshRaycastHit,
-    "nl_random_points_def": RandomPointsDef, "nl_agent_id": AgentId, "nl_agent_def": AgentDef,
-    "nl_agent_info": AgentInfo, "nl_agent_trajectory": AgentTrajectory, "nl_agent_event": AgentEvent,
-    "nl_plugin_id": PluginId, "nl_plugin_description": PluginDescription, "nl_recast_settings": RecastSettings,
+    "nl_random_points_def": RandomPointsDef, "nl_agent_def": AgentDef, "nl_agent_info": AgentInfo,
+    "nl_agent_trajectory": AgentTrajectory, "nl_agent_event": AgentEvent,
+    "nl_plugin_description": PluginDescription, "nl_recast_settings": RecastSettings,
     "nl_plugin_host": PluginHost, "nl_navmesh_builder": NavmeshBuilder,
     "nl_link_kind_provider": LinkKindProvider, "nl_plugin_info": PluginInfo,
 }

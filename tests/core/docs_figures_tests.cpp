@@ -50,9 +50,9 @@ TEST_CASE("the figures the documentation states are the code's") {
                                (1024.0 * 1024.0);
     CHECK(stated("docs/queries.md", R"(the closure would pass (\d+) MiB)") == closure_mib);
     CHECK(stated("sdk/path/reachability.h", R"(kMaxClosureIslands\^2 bits \((\d+) MiB\))") == closure_mib);
-    CHECK(stated("capi/include/navlink/navlink.h", R"(so thin that (\d+) tries per point)") == nl::kTriesPerPoint);
-    CHECK(stated("capi/include/navlink/navlink.h", R"(may have at most (\d+) detail vertices)") == nl::kMaxDetailVertices);
-    CHECK(stated("capi/include/navlink/navlink.h", R"(besides its corners, and (\d+) detail triangles)") ==
+    CHECK(stated("capi/include/navlink/queries.h", R"(so thin that (\d+) tries per point)") == nl::kTriesPerPoint);
+    CHECK(stated("capi/include/navlink/navmesh.h", R"(may have at most (\d+) detail vertices)") == nl::kMaxDetailVertices);
+    CHECK(stated("capi/include/navlink/navmesh.h", R"(besides its corners, and (\d+) detail triangles)") ==
           nl::kMaxDetailTriangles);
 }
 

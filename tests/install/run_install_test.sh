@@ -72,7 +72,7 @@ if [ -z "$pc" ]; then
 fi
 libdir=$(dirname "$(dirname "$pc")")
 
-for f in include/navlink/navlink.h include/navlink/navlink.hpp include/navlink/export.h include/navlink/version.h; do
+for f in include/navlink/navlink.h include/navlink/base.h include/navlink/agents.h include/navlink/navlink.hpp include/navlink/export.h include/navlink/version.h; do
   [ -f "$prefix/$f" ] || fail "$f is not installed"
 done
 [ -f "$libdir/cmake/NavLink/NavLinkConfig.cmake" ] || fail "NavLinkConfig.cmake is not in $libdir/cmake/NavLink"

@@ -10,17 +10,37 @@ use std::process::Command;
 
 const HEADERS: [&str; 4] = ["navlink/version.h", "navlink/navlink.h", "navlink/recast.h", "navlink/plugin.h"];
 
+/// The parts an umbrella header includes (`#include "navlink/X.h"`, in order), but export.h and version.h.
+fn parts_of(text: &str) -> Vec<String> {
+    text.lines()
+        .filter_map(|line| line.trim().strip_prefix("#include \"navlink/"))
+        .filter_map(|rest| rest.strip_suffix('"'))
+        .filter(|name| *name != "export.h" && *name != "version.h")
+        .map(|name| format!("navlink/{}", name))
+        .collect()
+}
+
 pub fn run(include_dirs: &[PathBuf], out_dir: &Path, compiler: &str) -> Result<String, String> {
     let mut structs = Vec::new();
     let mut constants = Vec::new();
     let mut inits = Vec::new();
-    for header in HEADERS {
+    let mut headers: Vec<String> = HEADERS.iter().map(|h| h.to_string()).collect();
+    let mut next = 0;
+    while next < headers.len() {
+        let header = headers[next].clone();
+        next += 1;
         let path = include_dirs
             .iter()
-            .map(|d| d.join(header))
+            .map(|d| d.join(&header))
             .find(|p| p.is_file())
             .ok_or_else(|| format!("{} is in none of {:?}", header, include_dirs))?;
-        let text = strip_comments(&fs::read_to_string(&path).map_err(|e| format!("{}: {}", path.display(), e))?);
+        let raw = fs::read_to_string(&path).map_err(|e| format!("{}: {}", path.display(), e))?;
+        for (k, part) in parts_of(&raw).into_iter().enumerate() {
+            if !headers.contains(&part) {
+                headers.insert(next + k, part);  // navlink.h's parts, read where it includes them
+            }
+        }
+        let text = strip_comments(&raw);
         structs.extend(parse_structs(&text)?);
         constants.extend(parse_integer_defines(&text));
         inits.extend(parse_output_inits(&text));

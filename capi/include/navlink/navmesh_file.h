@@ -1,0 +1,109 @@
+/*
+ * navlink/navmesh_file.h: Baked navmesh files: a navmesh and its links in one checked file.
+ * A part of navlink/navlink.h, which includes every part; its opening comment has the conventions.
+ */
+#ifndef NAVLINK_NAVMESH_FILE_H
+#define NAVLINK_NAVMESH_FILE_H
+
+#include "navlink/links.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* ---------------------------------------------------------------------------------------------
+ * Baked navmesh files: a navmesh, its links and what they were made for in one compact, checked
+ * binary file (docs/baking.md), saved in an editor or build step and loaded at run time with no
+ * Recast build. Navmeshes keep their coordinates on a grid of 1/1024 m, so a file holds them exactly:
+ * a loaded navmesh answers every query as the saved one did.
+ * ------------------------------------------------------------------------------------------- */
+
+/** Writes the navmesh, its links (generated and manual, in the order nl_navmesh_get_links lists them)
+ *  and what they were made for (agent type, builder and its settings, the level's hash, the link
+ *  generation settings) as a navmesh file into `buffer` (caller-owned, `capacity` bytes). `*out_size`
+ *  always receives the file's size; a NULL buffer only measures (two-call pattern).
+ *  Returns SUCCESS, or a failure with BUFFER_TOO_SMALL (nothing written), INVALID_HANDLE,
+ *  INVALID_ARGUMENT (out_size NULL; buffer NULL with a capacity; a navmesh with cross links: a file
+ *  holds one navmesh's own links). Thread-safe. */
+NL_API nl_status nl_navmesh_save(const nl_world* world, nl_navmesh_id navmesh, void* buffer, size_t capacity,
+                                 size_t* out_size);
+
+/** The same, written to the file at `path` (NUL-terminated, borrowed): whole or not at all (written
+ *  beside it, then renamed over it). A symbolic link at `path` stays: the file it leads to (through
+ *  any chain of links) is written. Returns SUCCESS, or a failure as nl_navmesh_save, or IO_ERROR
+ *  (cannot write; the reason named; also a path that is, or leads to, a directory, a device, a socket
+ *  or a pipe: left as it was). Thread-safe. */
+NL_API nl_status nl_navmesh_save_file(const nl_world* world, nl_navmesh_id navmesh, const char* path);
+
+/** Refuse a file baked from other level geometry than the world holds now (see nl_navmesh_load_def). */
+#define NL_NAVMESH_LOAD_SAME_LEVEL 0x1u
+
+/** How to load a navmesh file. Get one from nl_default_navmesh_load_def(). */
+typedef struct nl_navmesh_load_def {
+    uint32_t size;       /**< sizeof(nl_navmesh_load_def). */
+    nl_mesh_id surface;  /**< For a file whose navmesh rode a movable mesh (nl_navmesh_file_info.rides_surface):
+                              the movable mesh it rides now. The null id otherwise. */
+    uint32_t flags;      /**< NL_NAVMESH_LOAD_SAME_LEVEL: compare the hash of the level it was baked from
+                              with the world's (its static meshes, or the surface mesh in its own space)
+                              and refuse a mismatch. 0: load it whatever the level. */
+} nl_navmesh_load_def;
+
+/** The null surface and no flags. Thread-safe; never fails. */
+NL_API nl_navmesh_load_def nl_default_navmesh_load_def(void);
+
+/** Adds the navmesh and its links held in a navmesh file (`data`, `size` bytes, borrowed), as
+ *  nl_navmesh_add and nl_link_add would, with new ids (links in the file's order); what it was made
+ *  for travels with it (nl_navmesh_save writes it again). `def` may be NULL (the defaults).
+ *  Nothing in the world changes unless everything loads. Whatever the file says, the loader allocates
+ *  no more than a fixed multiple of what its bytes inflate to (deflate's limit: 1032 times `size`).
+ *  Returns SUCCESS, or a failure with VERSION_MISMATCH (not a NavLink navmesh file, or a newer format
+ *  version), PARSE_ERROR (truncated or corrupted: the section and what is wrong named), INVALID_ARGUMENT
+ *  (null data with a size, null out_id, bad def size or flags, a surface for a file that rode none or
+ *  none for one that did, NL_NAVMESH_LOAD_SAME_LEVEL and the level differs, polygons or links that do
+ *  not fit, named as "links[3].start"), INVALID_HANDLE (the surface), OUT_OF_MEMORY. Thread-safe. */
+NL_API nl_status nl_navmesh_load(nl_world* world, const void* data, size_t size, const nl_navmesh_load_def* def,
+                                 nl_navmesh_id* out_id);
+
+/** The same, from the file at `path` (NUL-terminated, borrowed): a regular file or a pipe, read no
+ *  further than its header says the file goes. Also NOT_FOUND (no such file), IO_ERROR (cannot read
+ *  it; a directory, a device or a socket), PARSE_ERROR (a pipe that goes on past the file's end).
+ *  Thread-safe. */
+NL_API nl_status nl_navmesh_load_file(nl_world* world, const char* path, const nl_navmesh_load_def* def,
+                                      nl_navmesh_id* out_id);
+
+/** What a navmesh file holds and was made for (nl_navmesh_file_describe). */
+typedef struct nl_navmesh_file_info {
+    uint32_t size;                  /**< sizeof(nl_navmesh_file_info); set by the caller. */
+    uint32_t version;               /**< The file's format version. */
+    uint64_t file_size;             /**< Bytes. */
+    nl_agent_type agent;            /**< The body the navmesh was made for. */
+    uint32_t vertex_count;
+    uint32_t polygon_count;
+    uint32_t detail_triangle_count; /**< 0: no height detail. */
+    uint32_t link_count;
+    uint32_t generated_link_count;  /**< Of link_count, made by link generation. */
+    uint32_t rides_surface;         /**< 1: its coordinates are in the space of a movable mesh it rode. */
+    float quantum;                  /**< Metres per step of its fixed-point coordinates (1/1024). */
+    uint32_t reserved;
+    uint64_t level_hash;            /**< Of the level triangles it was built from; 0: handed over by the host. */
+} nl_navmesh_file_info;
+
+/** Reads a navmesh file (`data`, `size` bytes, borrowed) without loading it: fills `out_info`
+ *  (optional) and writes what it was made for as a JSON object into `made_for_json` (optional,
+ *  caller-owned, `capacity` bytes, NUL-terminated; `*out_length`, when given, always receives its
+ *  length without the NUL; a NULL buffer only measures): {"builder": name or null, "builder_settings":
+ *  object or null (complete when the builder recorded what it used, as "recast" does, else as
+ *  given), "link_settings": object or null, "link_plugins": {kind name: {"plugin", "version",
+ *  "settings"}} for each link-kind plugin that ran, or null, "level_hash": "16 hex digits",
+ *  "writer": version}.
+ *  Returns SUCCESS, or a failure as nl_navmesh_load reading the file (VERSION_MISMATCH, PARSE_ERROR),
+ *  BUFFER_TOO_SMALL, INVALID_ARGUMENT (null data with a size; a buffer without out_length; bad info
+ *  size). Thread-safe; needs no world (failures reach no log callback). */
+NL_API nl_status nl_navmesh_file_describe(const void* data, size_t size, nl_navmesh_file_info* out_info,
+                                          char* made_for_json, size_t capacity, size_t* out_length);
+
+#ifdef __cplusplus
+} /* extern "C" */
+#endif
+
+#endif /* NAVLINK_NAVMESH_FILE_H */
