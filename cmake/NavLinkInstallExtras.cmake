@@ -4,7 +4,9 @@
 # Debian's docs go in /usr/share/doc/<package>, and the package is navlink (GNUInstallDirs would say NavLink).
 set(NAVLINK_INSTALL_DOCDIR ${CMAKE_INSTALL_DATAROOTDIR}/doc/navlink CACHE PATH "Where the docs are installed")
 install(FILES README.md CHANGELOG.md LICENSE DESTINATION ${NAVLINK_INSTALL_DOCDIR})
-install(DIRECTORY docs/ DESTINATION ${NAVLINK_INSTALL_DOCDIR} FILES_MATCHING PATTERN "*.md")
+install(DIRECTORY docs/ DESTINATION ${NAVLINK_INSTALL_DOCDIR} FILES_MATCHING PATTERN "*.md" PATTERN "README.md" EXCLUDE)
+# docs/README.md, the index of the docs, beside the project's README.md.
+install(FILES docs/README.md DESTINATION ${NAVLINK_INSTALL_DOCDIR} RENAME docs.md)
 install(FILES samples/README.md DESTINATION ${NAVLINK_INSTALL_DOCDIR} RENAME samples.md)
 
 # `cpack -G DEB` in the build folder: one package (library, headers, CMake package and navlink.pc,

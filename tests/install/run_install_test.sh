@@ -94,7 +94,7 @@ check_stripped() {
 
 # --- The installed tree -----------------------------------------------------------------------
 docdir=$prefix/share/doc/navlink
-for f in README.md CHANGELOG.md LICENSE c-api.md architecture.md platforms.md shipping.md; do
+for f in README.md CHANGELOG.md LICENSE docs.md c-api.md architecture.md platforms.md shipping.md; do
   [ -f "$docdir/$f" ] || fail "the docs' $f is not in $docdir"
 done
 if [ "$samples" = ON ]; then
