@@ -132,7 +132,7 @@ Link link_from_def(const nl_link_def& given) {
     l.kind = kind;
     l.start = read_position(def.start, "start");
     l.end = read_position(def.end, "end");
-    l.apex = l.start.y() > l.end.y() ? l.start : l.end;
+    l.apex = nl::higher_end(l);
     l.bidirectional = def.bidirectional != 0;
     l.enabled = def.enabled != 0;
     l.cost_modifier = def.cost_modifier;

@@ -39,7 +39,7 @@
 #include "util/handle.h"
 #include "platform/shared_mutex.h"
 #include "util/task_system.h"
-#include "world/navmesh_registry.h"
+#include "registry/navmesh_registry.h"
 
 namespace nl {
 

@@ -196,7 +196,7 @@ LinksFile read_links_json(std::string_view text) {
         l.kind = kind_from(r.at("kind"), r.path());
         l.start = r.point("start", true);
         l.end = r.point("end", true);
-        l.apex = r.find("apex") ? r.point("apex", true) : Vec3(l.start.y() > l.end.y() ? l.start : l.end);
+        l.apex = r.find("apex") ? r.point("apex", true) : higher_end(l);
         l.bidirectional = r.flag("bidirectional", false);
         l.cost_modifier = r.number("cost_modifier", 1.0f);
         if (l.cost_modifier < 0.0f) fail(ErrorCode::InvalidArgument, r.path(), ".cost_modifier must be >= 0");

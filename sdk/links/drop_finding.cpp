@@ -4,7 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include "motion/trajectory.h"
+#include "links/trajectory.h"
 
 namespace nl::generation {
 namespace {

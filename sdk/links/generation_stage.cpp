@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <array>
 
-#include "motion/trajectory.h"
+#include "links/trajectory.h"
 #include "util/error.h"
 
 namespace nl::generation {

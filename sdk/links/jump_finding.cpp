@@ -6,7 +6,7 @@
 #include <cmath>
 #include <unordered_map>
 #include <unordered_set>
-#include "motion/trajectory.h"
+#include "links/trajectory.h"
 
 namespace nl::generation {
 namespace {

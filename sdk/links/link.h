@@ -68,6 +68,9 @@ inline Link on_navmesh_grid(Link link) {
     return link;
 }
 
+// The apex of a link made outside the generator (the host's, a file's without one): its higher end.
+inline Vec3 higher_end(const Link& l) { return l.start.y() > l.end.y() ? l.start : l.end; }
+
 // How far a cross link's end may move, seen from its start, before it stops holding (default).
 constexpr float kDefaultCrossTolerance = 0.25f;
 

@@ -1,5 +1,5 @@
 // How a body moves along a link over time, on the very path the generator proved clear
-// (motion/trajectory.h): a jump flies its parabola, a drop walks out past the rim, across, and falls
+// (links/trajectory.h): a jump flies its parabola, a drop walks out past the rim, across, and falls
 // straight down with gravity, and any other link (manual, a plugin's) is a straight line. Agents
 // follow it; a host can sample it to animate the body.
 #pragma once
@@ -9,7 +9,7 @@
 
 #include "level/geometry.h"
 #include "links/link.h"
-#include "motion/trajectory.h"
+#include "links/trajectory.h"
 
 namespace nl {
 

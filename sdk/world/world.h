@@ -27,9 +27,9 @@
 #include "util/handle_tag.h"
 #include "util/log.h"
 #include "util/task_system.h"
-#include "world/navmesh_registry.h"
+#include "registry/navmesh_registry.h"
 #include "world/plugin_registry.h"
-#include "world/plugin_settings.h"
+#include "io/plugin_settings.h"
 
 namespace nl {
 

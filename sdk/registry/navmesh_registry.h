@@ -25,7 +25,7 @@
 #include "util/handle.h"
 #include "util/held_ptr.h"
 #include "platform/shared_mutex.h"
-#include "world/plugin_settings.h"
+#include "io/plugin_settings.h"
 
 namespace nl {
 

@@ -1,4 +1,4 @@
-#include "world/plugin_settings.h"
+#include "io/plugin_settings.h"
 
 #include "io/json_input.h"
 #include "util/error.h"

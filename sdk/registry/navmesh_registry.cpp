@@ -1,4 +1,4 @@
-#include "world/navmesh_registry.h"
+#include "registry/navmesh_registry.h"
 
 #include <algorithm>
 #include <shared_mutex>

@@ -1,4 +1,4 @@
-#include "motion/trajectory.h"
+#include "links/trajectory.h"
 
 #include <algorithm>
 #include <cmath>
