@@ -13,7 +13,10 @@ The model, in header order:
   comment) and whether the header defines an output initialiser for it (``NL_DEFINE_OUTPUT_INIT``);
 - ``callbacks``: each ``typedef RET (*nl_NAME)(ARGS);``;
 - ``handles``: each opaque ``typedef struct nl_NAME nl_NAME;``;
-- ``functions``: each exported ``nl_*`` function, its return type and parameters (name, C type).
+- ``functions``: each exported ``nl_*`` function, its return type and parameters (name, C type, and from the
+  function's doc comment its direction, ``in``, ``out`` or ``in,out``, and whether it may be NULL, ``optional``:
+  each parameter has one ``@param[DIRECTION] name`` or ``@param[DIRECTION,opt] name`` line, and ``read``
+  refuses a function without one for each parameter, or with one for a name it has no parameter of).
 
 Needs Debian's python3-clang (``/usr/bin/python3``; scripts/setup.sh installs it).
 """
@@ -143,6 +146,36 @@ def _macro_docs(cursor):
     return trailing or block, block
 
 
+_PARAM_LINE = re.compile(r"@param\b(\S*)\s*(\S*)")  # @param[in,opt] name: ("[in,opt]", "name")
+_PARAM_TAG = re.compile(r"^\[(in|out|in,out)(,opt)?\]$")
+
+
+def _parameter_tags(function, header, names):
+    """({name: (direction, optional)}, [problem]) of a function whose parameters are `names`, from the
+    `@param[DIRECTION] name` lines of its doc comment (DIRECTION: in, out or in,out, then ,opt for a pointer that
+    may be NULL). A problem is a parameter without a line, a line for a name that is no parameter, a malformed
+    line or a second line for a parameter, each naming the function."""
+    tags, problems, named = {}, [], set()
+    where = "%s (%s)" % (function.spelling, header)
+    for tag, name in _PARAM_LINE.findall(function.raw_comment or ""):
+        m = _PARAM_TAG.match(tag)
+        if name not in names:
+            problems.append("%s: `@param%s %s` names no parameter (its parameters: %s)"
+                            % (where, tag, name, ", ".join(names) or "none"))
+        elif not m:
+            problems.append("%s: parameter %s: `@param%s` is none of @param[in], @param[out], @param[in,out], "
+                            "each with ,opt after the direction or not" % (where, name, tag))
+        elif name in named:
+            problems.append("%s: parameter %s has two @param lines" % (where, name))
+        else:
+            tags[name] = (m.group(1), m.group(2) is not None)
+        named.add(name)
+    for name in names:
+        if name not in named:
+            problems.append("%s: parameter %s has no `@param[DIRECTION] %s` line" % (where, name or "(unnamed)", name))
+    return tags, problems
+
+
 def read(include_dirs):
     """The model of the headers found in `include_dirs` (capi/include, plugins/include, the build's
     capi/include for the generated version.h)."""
@@ -170,6 +203,7 @@ def read(include_dirs):
     cursors.sort(key=lambda x: (headers.index(x[0]), x[1]))
 
     current_kind = None  # the kind the #defines that follow belong to
+    tag_problems = []  # functions' parameters without their @param[...] line, or lines without a parameter
     for order, (header, line, c) in enumerate(cursors):
         k = c.kind
         if k == cindex.CursorKind.MACRO_DEFINITION:
@@ -230,9 +264,20 @@ def read(include_dirs):
         elif k == cindex.CursorKind.FUNCTION_DECL and c.spelling.startswith("nl_"):
             if c.storage_class == cindex.StorageClass.STATIC:
                 continue  # the inline initialisers, recorded through NL_DEFINE_OUTPUT_INIT
-            params = [{"name": p.spelling, "type": p.type.spelling} for p in c.get_arguments()]
+            arguments = list(c.get_arguments())
+            tags, problems = _parameter_tags(c, header, [p.spelling for p in arguments])
+            tag_problems += problems
+            params = []
+            for p in arguments:
+                direction, optional = tags.get(p.spelling, (None, False))
+                params.append({"name": p.spelling, "type": p.type.spelling, "direction": direction,
+                               "optional": optional})
             model["functions"].append({"name": c.spelling, "header": header, "returns": c.result_type.spelling,
                                        "params": params, "doc": c.brief_comment or ""})
+    if tag_problems:
+        raise SystemExit("header_model.py: each parameter of an NL_API function needs one line "
+                         "`@param[DIRECTION] name` in the function's doc comment, DIRECTION in, out or in,out, then "
+                         ",opt if it may be NULL (docs/c-api.md):\n  " + "\n  ".join(tag_problems))
     for struct, function in inits.items():
         if struct not in structs:
             raise SystemExit("header_model.py: %s initialises %s, which is no struct of the headers" % (function, struct))

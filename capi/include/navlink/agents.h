@@ -90,14 +90,21 @@ NL_API nl_agent_def nl_default_agent_def(void);
 /** Adds an agent, standing still (NL_AGENT_IDLE) at the navmesh point of def->position.
  *  Returns SUCCESS, or a failure with INVALID_HANDLE (navmesh), INVALID_ARGUMENT (null pointer, size
  *  too small, a field not finite or out of range: named), NOT_FOUND (position not on the navmesh:
- *  the message says how far the nearest navmesh point is). Thread-safe (waits for a step running). */
+ *  the message says how far the nearest navmesh point is). Thread-safe (waits for a step running).
+ *  @param[in] world  The world.
+ *  @param[in] def  The agent to add.
+ *  @param[out] out_id  Receives its id. */
 NL_API nl_status nl_agent_add(nl_world* world, const nl_agent_def* def, nl_agent_id* out_id);
 
-/** Removes an agent. Returns SUCCESS or INVALID_HANDLE. Thread-safe. */
+/** Removes an agent. Returns SUCCESS or INVALID_HANDLE. Thread-safe.
+ *  @param[in] world  The world.
+ *  @param[in] agent  The agent to remove. */
 NL_API nl_status nl_agent_remove(nl_world* world, nl_agent_id agent);
 
 /** Nonzero if `agent` is an agent of `world`. Thread-safe; from a task callback during nl_world_step
- *  it cannot look (the step holds the agents) and answers 0 ("Callbacks" at the top). */
+ *  it cannot look (the step holds the agents) and answers 0 ("Callbacks" at the top).
+ *  @param[in] world  The world.
+ *  @param[in] agent  The id to check. */
 NL_API int32_t nl_agent_is_valid(const nl_world* world, nl_agent_id agent);
 
 /** Sends the agent to `point` (3 floats, borrowed), located at once on its navmesh, or else on a
@@ -106,24 +113,39 @@ NL_API int32_t nl_agent_is_valid(const nl_world* world, nl_agent_id agent);
  *  that rides a moving mesh is kept in the mesh's space: it moves with the mesh, and the agent
  *  arrives where it is at arrival (docs/moving-surfaces.md). The path is planned in a coming nl_world_step (an agent
  *  in the air lands first). Returns SUCCESS, or INVALID_HANDLE (also for an agent whose navmesh was
- *  removed), INVALID_ARGUMENT, NOT_FOUND. Thread-safe. */
+ *  removed), INVALID_ARGUMENT, NOT_FOUND. Thread-safe.
+ *  @param[in] world  The world.
+ *  @param[in] agent  The agent.
+ *  @param[in] point  The destination, 3 floats. */
 NL_API nl_status nl_agent_set_destination(nl_world* world, nl_agent_id agent, const float* point);
 
 /** Forgets the destination: the agent stops and stands (NL_AGENT_IDLE); one in the air lands first;
- *  one whose navmesh was removed stays NL_AGENT_FAILED. Returns SUCCESS or INVALID_HANDLE. Thread-safe. */
+ *  one whose navmesh was removed stays NL_AGENT_FAILED. Returns SUCCESS or INVALID_HANDLE. Thread-safe.
+ *  @param[in] world  The world.
+ *  @param[in] agent  The agent to stop. */
 NL_API nl_status nl_agent_stop(nl_world* world, nl_agent_id agent);
 
 /** Puts the agent at the navmesh point of `point`, standing, keeping its destination (it plans again
  *  from there). Returns SUCCESS, or INVALID_HANDLE (also for an agent whose navmesh was removed),
- *  INVALID_ARGUMENT (also while it is taking a link), NOT_FOUND. Thread-safe. */
+ *  INVALID_ARGUMENT (also while it is taking a link), NOT_FOUND. Thread-safe.
+ *  @param[in] world  The world.
+ *  @param[in] agent  The agent.
+ *  @param[in] point  Where to put it, 3 floats. */
 NL_API nl_status nl_agent_teleport(nl_world* world, nl_agent_id agent, const float* point);
 
 /** Changes what the agent's body can do (copied); it plans again. Returns SUCCESS, or INVALID_HANDLE,
- *  INVALID_ARGUMENT (a negative or non-finite figure). Thread-safe. */
+ *  INVALID_ARGUMENT (a negative or non-finite figure). Thread-safe.
+ *  @param[in] world  The world.
+ *  @param[in] agent  The agent.
+ *  @param[in] capabilities  What its body can do now. */
 NL_API nl_status nl_agent_set_capabilities(nl_world* world, nl_agent_id agent, const nl_agent_capabilities* capabilities);
 
 /** Changes the agent's walking speed and acceleration (each finite and > 0). Returns SUCCESS, or
- *  INVALID_HANDLE, INVALID_ARGUMENT. Thread-safe. */
+ *  INVALID_HANDLE, INVALID_ARGUMENT. Thread-safe.
+ *  @param[in] world  The world.
+ *  @param[in] agent  The agent.
+ *  @param[in] max_speed  Walking speed, m/s.
+ *  @param[in] max_acceleration  Acceleration, m/s^2. */
 NL_API nl_status nl_agent_set_speed(nl_world* world, nl_agent_id agent, float max_speed, float max_acceleration);
 
 /** Advances every agent by `dt` seconds (finite, >= 0; 0 does nothing), in parallel on the world's
@@ -133,7 +155,9 @@ NL_API nl_status nl_agent_set_speed(nl_world* world, nl_agent_id agent, float ma
  *  its navmesh removed) is its failure and event, not the call's.
  *  Returns SUCCESS, or INVALID_ARGUMENT (dt NaN, infinite or negative: nothing changes), OUT_OF_MEMORY,
  *  INTERNAL_ERROR (called from a task callback of a step: refused, see "Callbacks" at the top).
- *  Thread-safe: other agent calls wait for it; an agent call from one of its task callbacks is refused. */
+ *  Thread-safe: other agent calls wait for it; an agent call from one of its task callbacks is refused.
+ *  @param[in] world  The world.
+ *  @param[in] dt  Seconds to advance. */
 NL_API nl_status nl_world_step(nl_world* world, float dt);
 
 /** An agent's state. An array element that may grow: set `size` of the first (nl_agent_info_init). */
@@ -169,11 +193,18 @@ typedef struct nl_agent_info {
 NL_DEFINE_OUTPUT_INIT(nl_agent_info, nl_agent_info_init)
 
 /** Fills `*out_info` (caller-owned, `size` set). Returns SUCCESS, INVALID_HANDLE or INVALID_ARGUMENT.
- *  Thread-safe. */
+ *  Thread-safe.
+ *  @param[in] world  The world.
+ *  @param[in] agent  The agent.
+ *  @param[out] out_info  Receives its state. */
 NL_API nl_status nl_agent_get_info(const nl_world* world, nl_agent_id agent, nl_agent_info* out_info);
 
 /** Every agent's state, in bulk, in a stable order until an agent is removed (two-call pattern as
- *  nl_world_get_meshes; out_infos[0].size set when out_infos is not NULL). Thread-safe. */
+ *  nl_world_get_meshes; out_infos[0].size set when out_infos is not NULL). Thread-safe.
+ *  @param[in] world  The world.
+ *  @param[out,opt] out_infos  Receives each agent's state, or NULL to count only.
+ *  @param[in] capacity  Entries `out_infos` has room for.
+ *  @param[out] out_count  Receives the number of agents. */
 NL_API nl_status nl_world_get_agents(const nl_world* world, nl_agent_info* out_infos, uint32_t capacity,
                                      uint32_t* out_count);
 
@@ -182,7 +213,12 @@ NL_API nl_status nl_world_get_agents(const nl_world* world, nl_agent_info* out_i
  *  is its position now and how it goes on from there (NL_SEGMENT_WALK, or the link it is flying, with
  *  that link's apex), so a straight walk to the goal is two points; corners_ahead + 1 points in all
  *  (since 0.3; before, the stretch being walked was missing). None when it has no path or has
- *  arrived. Thread-safe. */
+ *  arrived. Thread-safe.
+ *  @param[in] world  The world.
+ *  @param[in] agent  The agent.
+ *  @param[out,opt] out_points  Receives the points, or NULL to count only.
+ *  @param[in] capacity  Points `out_points` has room for.
+ *  @param[out] out_count  Receives the number of points. */
 NL_API nl_status nl_agent_get_corners(const nl_world* world, nl_agent_id agent, nl_path_point* out_points,
                                       uint32_t capacity, uint32_t* out_count);
 
@@ -214,7 +250,10 @@ NL_DEFINE_OUTPUT_INIT(nl_agent_trajectory, nl_agent_trajectory_init)
  *  while it is on the ground, also while it waits at a take-off), in the world: a link within a
  *  navmesh that rides a moving mesh is flown in the mesh's space and given where the mesh is now; a
  *  cross link is flown in the world, to where its landing was expected to be at landing time. Returns SUCCESS, INVALID_HANDLE
- *  or INVALID_ARGUMENT. Thread-safe. */
+ *  or INVALID_ARGUMENT. Thread-safe.
+ *  @param[in] world  The world.
+ *  @param[in] agent  The agent.
+ *  @param[out] out_trajectory  Receives the trajectory. */
 NL_API nl_status nl_agent_get_trajectory(const nl_world* world, nl_agent_id agent, nl_agent_trajectory* out_trajectory);
 
 /** What happened to an agent in the last step. */
@@ -245,7 +284,11 @@ NL_DEFINE_OUTPUT_INIT(nl_agent_event, nl_agent_event_init)
 
 /** The events of the last nl_world_step, in agent order (two-call pattern; out_events[0].size set):
  *  the host drains them on its own thread, as Box2D's event arrays. They stay until the next step.
- *  Thread-safe. */
+ *  Thread-safe.
+ *  @param[in] world  The world.
+ *  @param[out,opt] out_events  Receives the events, or NULL to count only.
+ *  @param[in] capacity  Entries `out_events` has room for.
+ *  @param[out] out_count  Receives the number of events. */
 NL_API nl_status nl_world_get_agent_events(const nl_world* world, nl_agent_event* out_events, uint32_t capacity,
                                            uint32_t* out_count);
 

@@ -64,7 +64,8 @@ typedef uint32_t nl_status;
 #define NL_FAILED(status) (((status) & NL_STATUS_FAILURE) != 0u)
 
 /** A short static English description of a status, e.g. "failure: invalid argument".
- *  The string is owned by the library and lives as long as it is loaded. Thread-safe. */
+ *  The string is owned by the library and lives as long as it is loaded. Thread-safe.
+ *  @param[in] status  The status to describe. */
 NL_API const char* nl_status_string(nl_status status);
 
 /** The status returned by the most recent nl_* call on the calling thread that returns a status or

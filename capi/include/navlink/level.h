@@ -96,7 +96,10 @@ NL_API nl_mesh_def nl_default_mesh_def(void);
  *  of range, a non-affine or singular transform, unknown flags, NL_MESH_OBSTACLE with
  *  NL_MESH_NOT_IN_NAVMESH, an area above NL_MESH_MAX_AREA, reserved not 0, every triangle degenerate),
  *  OUT_OF_MEMORY or INTERNAL_ERROR.
- *  Thread-safe; waits for ray queries in flight on this world to finish. */
+ *  Thread-safe; waits for ray queries in flight on this world to finish.
+ *  @param[in] world  The world.
+ *  @param[in] def  The mesh to register.
+ *  @param[out] out_id  Receives the mesh's id. */
 NL_API nl_status nl_mesh_add(nl_world* world, const nl_mesh_def* def, nl_mesh_id* out_id);
 
 /** Loads a Wavefront OBJ file (positions and faces; polygons are fan-triangulated; Y is up; other
@@ -108,18 +111,29 @@ NL_API nl_status nl_mesh_add(nl_world* world, const nl_mesh_def* def, nl_mesh_id
  *  directory, a device or a socket, no permission, a read error), PARSE_ERROR (malformed: a number that is not a finite
  *  float, a face index that is 0, past the last vertex (or vt, vn) or not an integer, no faces; the
  *  line is named), OUT_OF_MEMORY or INTERNAL_ERROR.
- *  Thread-safe, as nl_mesh_add. */
+ *  Thread-safe, as nl_mesh_add.
+ *  @param[in] world  The world.
+ *  @param[in] path  The OBJ file.
+ *  @param[in,opt] def  Flags, transform and the like, or NULL for the defaults.
+ *  @param[out] out_id  Receives the mesh's id. */
 NL_API nl_status nl_mesh_add_obj_file(nl_world* world, const char* path, const nl_mesh_def* def,
                                       nl_mesh_id* out_id);
 
 /** As nl_mesh_add_obj_file, from `length` bytes of OBJ text in memory (borrowed, not necessarily
- *  NUL-terminated). */
+ *  NUL-terminated).
+ *  @param[in] world  The world.
+ *  @param[in] data  The OBJ text, `length` bytes.
+ *  @param[in] length  The bytes of `data`.
+ *  @param[in,opt] def  Flags, transform and the like, or NULL for the defaults.
+ *  @param[out] out_id  Receives the mesh's id. */
 NL_API nl_status nl_mesh_add_obj_memory(nl_world* world, const char* data, size_t length,
                                         const nl_mesh_def* def, nl_mesh_id* out_id);
 
 /** Removes a mesh. Returns SUCCESS, or INVALID_HANDLE for a null, stale or another world's id, or
  *  INVALID_ARGUMENT for a mesh a navmesh rides (remove the navmesh first).
- *  Thread-safe; waits for ray queries in flight on this world to finish. */
+ *  Thread-safe; waits for ray queries in flight on this world to finish.
+ *  @param[in] world  The world.
+ *  @param[in] mesh  The mesh to remove. */
 NL_API nl_status nl_mesh_remove(nl_world* world, nl_mesh_id mesh);
 
 /** Moves a mesh: `transform` (16 floats, column-major, affine, invertible; borrowed) replaces the
@@ -136,10 +150,15 @@ NL_API nl_status nl_mesh_remove(nl_world* world, nl_mesh_id mesh);
  *  The mesh's own transform (nl_mesh_get_info, ray queries) changes a moment before its navmeshes'
  *  pose: another thread may read the new transform and agents placed at the old pose. To place a
  *  body on the platform, use nl_agent_info.surface_position with the transform the host set.
- *  Waits for ray queries in flight on this world to finish. */
+ *  Waits for ray queries in flight on this world to finish.
+ *  @param[in] world  The world.
+ *  @param[in] mesh  The mesh to move.
+ *  @param[in] transform  Its new transform, 16 floats. */
 NL_API nl_status nl_mesh_set_transform(nl_world* world, nl_mesh_id mesh, const float* transform);
 
-/** Nonzero if `mesh` refers to a mesh registered in `world` and not removed. Thread-safe. */
+/** Nonzero if `mesh` refers to a mesh registered in `world` and not removed. Thread-safe.
+ *  @param[in] world  The world.
+ *  @param[in] mesh  The id to check. */
 NL_API int32_t nl_mesh_is_valid(const nl_world* world, nl_mesh_id mesh);
 
 /** What a registered mesh holds. */
@@ -163,14 +182,21 @@ NL_DEFINE_OUTPUT_INIT(nl_mesh_info, nl_mesh_info_init)
 
 /** Fills `*out_info` (caller-owned; set its `size` field to sizeof(nl_mesh_info) first: the library
  *  writes that many bytes at most). Returns SUCCESS, INVALID_HANDLE (null, stale or another world's
- *  id) or INVALID_ARGUMENT. Thread-safe. */
+ *  id) or INVALID_ARGUMENT. Thread-safe.
+ *  @param[in] world  The world.
+ *  @param[in] mesh  The mesh.
+ *  @param[out] out_info  Receives what it holds. */
 NL_API nl_status nl_mesh_get_info(const nl_world* world, nl_mesh_id mesh, nl_mesh_info* out_info);
 
 /** Lists the ids of all registered meshes (the two-call pattern of every list): with out_ids NULL,
  *  only `*out_count` is written (the number of meshes) and the call succeeds; with a buffer
  *  (caller-owned, `capacity` entries) the ids are copied, or, if they do not fit, the call fails with
  *  BUFFER_TOO_SMALL, copies nothing and still writes `*out_count`. INVALID_ARGUMENT for a null
- *  world or out_count. Thread-safe. */
+ *  world or out_count. Thread-safe.
+ *  @param[in] world  The world.
+ *  @param[out,opt] out_ids  Receives the ids, or NULL to count only.
+ *  @param[in] capacity  Entries `out_ids` has room for.
+ *  @param[out] out_count  Receives the number of meshes. */
 NL_API nl_status nl_world_get_meshes(const nl_world* world, nl_mesh_id* out_ids, uint32_t capacity,
                                      uint32_t* out_count);
 
@@ -209,7 +235,11 @@ NL_DEFINE_OUTPUT_INIT(nl_ray_hit, nl_ray_hit_init)
  *  Returns SUCCESS, or INVALID_ARGUMENT (null pointer; a ray with an origin not finite or beyond
  *  NL_COORDINATE_LIMIT, a zero or non-finite direction, or max_distance <= 0 or NaN: its index is
  *  named, nothing is written).
- *  Thread-safe: many threads may query at once; mesh edits wait for queries in flight. */
+ *  Thread-safe: many threads may query at once; mesh edits wait for queries in flight.
+ *  @param[in] world  The world.
+ *  @param[in] rays  The rays, `count` of them.
+ *  @param[in] count  The number of rays.
+ *  @param[out] out_hits  Receives each ray's closest hit. */
 NL_API nl_status nl_world_cast_rays(nl_world* world, const nl_ray* rays, uint32_t count,
                                     nl_ray_hit* out_hits);
 
@@ -225,7 +255,11 @@ typedef struct nl_segment {
  *  margin to ignore the floor a test stands on. A zero-length segment is clear. `segments` is borrowed.
  *  Returns SUCCESS, or INVALID_ARGUMENT (null pointer, a coordinate not finite or beyond
  *  NL_COORDINATE_LIMIT: its index is named).
- *  Thread-safe, as nl_world_cast_rays. */
+ *  Thread-safe, as nl_world_cast_rays.
+ *  @param[in] world  The world.
+ *  @param[in] segments  The segments, `count` of them.
+ *  @param[in] count  The number of segments.
+ *  @param[out] out_blocked  Receives 1 or 0 per segment. */
 NL_API nl_status nl_world_segments_blocked(nl_world* world, const nl_segment* segments,
                                            uint32_t count, uint8_t* out_blocked);
 

@@ -119,34 +119,56 @@ NL_API nl_link_def nl_default_link_def(void);
  *  Returns SUCCESS, or a failure with INVALID_HANDLE (navmesh, landing_navmesh),
  *  INVALID_ARGUMENT (null pointer, a coordinate not finite or beyond the limit, an end off the navmesh,
  *  a negative cost modifier, requirement or tolerance, a two-way cross link, landing_navmesh equal to
- *  navmesh, size too small). Thread-safe. */
+ *  navmesh, size too small). Thread-safe.
+ *  @param[in] world  The world.
+ *  @param[in] navmesh  The navmesh the link starts on.
+ *  @param[in] def  The link to add.
+ *  @param[out] out_id  Receives the link's id. */
 NL_API nl_status nl_link_add(nl_world* world, nl_navmesh_id navmesh, const nl_link_def* def, nl_link_id* out_id);
 
 /** Replaces a link's fields with `def`'s (any link, generated ones too: to disable one, for instance).
  *  It stays on its navmesh and keeps whether it was generated; a generation replaces generated links,
- *  edited or not. Errors as nl_link_add, and INVALID_HANDLE for the link. Thread-safe. */
+ *  edited or not. Errors as nl_link_add, and INVALID_HANDLE for the link. Thread-safe.
+ *  @param[in] world  The world.
+ *  @param[in] link  The link to change.
+ *  @param[in] def  Its new fields. */
 NL_API nl_status nl_link_update(nl_world* world, nl_link_id link, const nl_link_def* def);
 
-/** Removes a link. Returns SUCCESS or INVALID_HANDLE. Thread-safe. */
+/** Removes a link. Returns SUCCESS or INVALID_HANDLE. Thread-safe.
+ *  @param[in] world  The world.
+ *  @param[in] link  The link to remove. */
 NL_API nl_status nl_link_remove(nl_world* world, nl_link_id link);
 
-/** Nonzero if `link` is a link of `world`. Thread-safe. */
+/** Nonzero if `link` is a link of `world`. Thread-safe.
+ *  @param[in] world  The world.
+ *  @param[in] link  The id to check. */
 NL_API int32_t nl_link_is_valid(const nl_world* world, nl_link_id link);
 
 /** Fills `*out_link` (caller-owned, `size` set). Returns SUCCESS, INVALID_HANDLE or INVALID_ARGUMENT
- *  (null pointer, `size` too small). Thread-safe. */
+ *  (null pointer, `size` too small). Thread-safe.
+ *  @param[in] world  The world.
+ *  @param[in] link  The link.
+ *  @param[out] out_link  Receives the link. */
 NL_API nl_status nl_link_get(const nl_world* world, nl_link_id link, nl_link* out_link);
 
 /** Lists a navmesh's links, in the order they were added (two-call pattern as nl_world_get_meshes;
  *  out_links[0].size set when out_links is not NULL).
- *  Thread-safe: the list is one consistent moment even while other threads edit. */
+ *  Thread-safe: the list is one consistent moment even while other threads edit.
+ *  @param[in] world  The world.
+ *  @param[in] navmesh  The navmesh.
+ *  @param[out,opt] out_links  Receives the links, or NULL to count only.
+ *  @param[in] capacity  Entries `out_links` has room for.
+ *  @param[out] out_count  Receives the number of links. */
 NL_API nl_status nl_navmesh_get_links(const nl_world* world, nl_navmesh_id navmesh, nl_link* out_links,
                                       uint32_t capacity, uint32_t* out_count);
 
 /** Removes the navmesh's generated links; manual ones stay. `out_removed` (optional) receives how many
  *  went. The last generation is forgotten with them: nl_navmesh_update_links_in_box then returns
  *  NOT_FOUND until the next nl_navmesh_generate_links (an update never brings removed links back).
- *  Returns SUCCESS or INVALID_HANDLE. Thread-safe. */
+ *  Returns SUCCESS or INVALID_HANDLE. Thread-safe.
+ *  @param[in] world  The world.
+ *  @param[in] navmesh  The navmesh.
+ *  @param[out,opt] out_removed  Receives how many links went, or NULL. */
 NL_API nl_status nl_navmesh_remove_generated_links(nl_world* world, nl_navmesh_id navmesh, uint32_t* out_removed);
 
 /** How links are generated (docs/link-generation.md explains each). Get one from
@@ -192,7 +214,10 @@ NL_API nl_link_settings nl_default_link_settings(void);
  *  (caller-owned, in and out) and validates the result. On failure `*settings` is unchanged.
  *  Returns SUCCESS, or a failure with PARSE_ERROR (malformed JSON, with the position) or
  *  INVALID_ARGUMENT (an unknown key, a wrong type or value, nesting deeper than 64 levels: the key is
- *  named). Thread-safe. */
+ *  named). Thread-safe.
+ *  @param[in] json  The JSON object, `length` bytes.
+ *  @param[in] length  The bytes of `json`.
+ *  @param[in,out] settings  The settings to change. */
 NL_API nl_status nl_link_settings_from_json(const char* json, size_t length, nl_link_settings* settings);
 
 /** What a generation did: answers "why is there no link here?". */
@@ -255,7 +280,13 @@ NL_DEFINE_OUTPUT_INIT(nl_link_generation_report, nl_link_generation_report_init)
  *  (nl_navmesh_generate_links, nl_navmesh_update_links_in_box, nl_navmesh_generate_cross_links): such
  *  a call fails with INVALID_ARGUMENT (two threads each doing so for the other's navmesh would wait
  *  for each other forever).
- *  Thread-safe; parallel over the world's workers; the result does not depend on their number. */
+ *  Thread-safe; parallel over the world's workers; the result does not depend on their number.
+ *  @param[in] world  The world.
+ *  @param[in] navmesh  The navmesh.
+ *  @param[in,opt] settings  How to generate them, or NULL for the defaults.
+ *  @param[in,opt] progress  Told of the progress and may cancel, or NULL.
+ *  @param[in,opt] user  Passed back to `progress`.
+ *  @param[out,opt] out_report  Receives what the generation did, or NULL. */
 NL_API nl_status nl_navmesh_generate_links(nl_world* world, nl_navmesh_id navmesh, const nl_link_settings* settings,
                                            nl_progress_fn* progress, void* user, nl_link_generation_report* out_report);
 
@@ -275,7 +306,15 @@ NL_API nl_status nl_navmesh_generate_links(nl_world* world, nl_navmesh_id navmes
  *  navmesh), INVALID_ARGUMENT (the same navmesh twice, different bodies, a bad tolerance or setting,
  *  named; also when called from inside a generation, update or cross-link generation, as
  *  nl_navmesh_generate_links says), CANCELLED (nothing changed). Thread-safe; two calls for the same
- *  pair at once store one's result or the other's. */
+ *  pair at once store one's result or the other's.
+ *  @param[in] world  The world.
+ *  @param[in] first  One navmesh.
+ *  @param[in] second  The other navmesh.
+ *  @param[in] tolerance  How far a link's end may move and the link hold, metres.
+ *  @param[in,opt] settings  How to generate them, or NULL for the defaults.
+ *  @param[in,opt] progress  Told of the progress and may cancel, or NULL.
+ *  @param[in,opt] user  Passed back to `progress`.
+ *  @param[out,opt] out_report  Receives what the generation did, or NULL. */
 NL_API nl_status nl_navmesh_generate_cross_links(nl_world* world, nl_navmesh_id first, nl_navmesh_id second, float tolerance,
                                                  const nl_link_settings* settings, nl_progress_fn* progress, void* user,
                                                  nl_link_generation_report* out_report);
@@ -290,7 +329,14 @@ NL_API nl_status nl_navmesh_generate_cross_links(nl_world* world, nl_navmesh_id 
  *  Returns SUCCESS, or a failure with NOT_FOUND (never generated, or the generated links were removed or
  *  replaced by a JSON load since or meanwhile: nothing is stored), INVALID_HANDLE, INVALID_ARGUMENT
  *  (a null, non-finite or inverted box; also when called from inside a generation or update, as
- *  nl_navmesh_generate_links says), CANCELLED (nothing changed). Thread-safe. */
+ *  nl_navmesh_generate_links says), CANCELLED (nothing changed). Thread-safe.
+ *  @param[in] world  The world.
+ *  @param[in] navmesh  The navmesh.
+ *  @param[in] box_min  The box's lower corner, 3 floats.
+ *  @param[in] box_max  The box's upper corner, 3 floats.
+ *  @param[in,opt] progress  Told of the progress and may cancel, or NULL.
+ *  @param[in,opt] user  Passed back to `progress`.
+ *  @param[out,opt] out_report  Receives what the generation did, or NULL. */
 NL_API nl_status nl_navmesh_update_links_in_box(nl_world* world, nl_navmesh_id navmesh, const float* box_min,
                                                 const float* box_max, nl_progress_fn* progress, void* user,
                                                 nl_link_generation_report* out_report);
@@ -300,7 +346,12 @@ NL_API nl_status nl_navmesh_update_links_in_box(nl_world* world, nl_navmesh_id n
  *  for ("made_for": the navmesh's agent type, the settings of the generation that made its
  *  generated links, and the hash of the level a built navmesh came from, "level_hash"). `*out_length` always receives the length without the NUL; a NULL buffer only
  *  measures (two-call pattern). Returns SUCCESS, or a failure with BUFFER_TOO_SMALL (capacity must
- *  exceed the length), INVALID_HANDLE or INVALID_ARGUMENT. Thread-safe. */
+ *  exceed the length), INVALID_HANDLE or INVALID_ARGUMENT. Thread-safe.
+ *  @param[in] world  The world.
+ *  @param[in] navmesh  The navmesh.
+ *  @param[out,opt] buffer  Receives the JSON, or NULL to measure only.
+ *  @param[in] capacity  The bytes `buffer` has room for.
+ *  @param[out] out_length  Receives the JSON's length. */
 NL_API nl_status nl_navmesh_save_links_json(const nl_world* world, nl_navmesh_id navmesh, char* buffer,
                                             size_t capacity, size_t* out_length);
 
@@ -322,7 +373,13 @@ NL_API nl_status nl_navmesh_save_links_json(const nl_world* world, nl_navmesh_id
  *  Returns SUCCESS, or a failure with PARSE_ERROR, VERSION_MISMATCH (another format or version),
  *  INVALID_ARGUMENT (a field missing or wrong, nesting deeper than 64 levels, an end off the navmesh,
  *  named by its path, e.g. "links[3].start"; links for another body; unknown flags), INVALID_HANDLE.
- *  Thread-safe. Changed in 0.3: `flags` was added. */
+ *  Thread-safe. Changed in 0.3: `flags` was added.
+ *  @param[in] world  The world.
+ *  @param[in] navmesh  The navmesh.
+ *  @param[in] json  The links file, `length` bytes.
+ *  @param[in] length  The bytes of `json`.
+ *  @param[in] flags  NL_LINKS_LOAD_* flags.
+ *  @param[out,opt] out_count  Receives how many links were loaded, or NULL. */
 NL_API nl_status nl_navmesh_load_links_json(nl_world* world, nl_navmesh_id navmesh, const char* json, size_t length,
                                             uint32_t flags, uint32_t* out_count);
 

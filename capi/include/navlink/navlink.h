@@ -17,7 +17,9 @@
  *   and never reaches another object: a slot is retired before its generation could repeat, and no
  *   two live worlds tag their ids alike (docs/c-api.md, "Ids").
  * - Input pointers are borrowed for the duration of the call and copied where NavLink keeps the
- *   data; output pointers are caller-owned buffers. Each function says which.
+ *   data; output pointers are caller-owned buffers. Each function says which: its comment ends with
+ *   one @param[in], @param[out] or @param[in,out] line per parameter, with ",opt" after the direction
+ *   where the pointer may be NULL (@param[in,opt] def).
  * - Unless a function says otherwise, all functions that take a world are safe to call from several
  *   threads at once on the same world; nl_world_destroy must not race with any other call on it.
  * - Callbacks (task, progress, log, plugin) run while the call that made them holds some of the

@@ -86,15 +86,22 @@ NL_API nl_navmesh_def nl_default_navmesh_def(void);
  *  than NL_MAX_POLYGON_VERTICES corners, a polygon not convex seen from above (navmesh polygons are
  *  2.5D: convex in x-z, heights free, as Recast's), a negative or NaN
  *  tolerance or agent field, bad detail data, every polygon degenerate: the item is named and nothing
- *  is added), OUT_OF_MEMORY. Thread-safe. */
+ *  is added), OUT_OF_MEMORY. Thread-safe.
+ *  @param[in] world  The world.
+ *  @param[in] def  The polygons to add.
+ *  @param[out] out_id  Receives the navmesh's id. */
 NL_API nl_status nl_navmesh_add(nl_world* world, const nl_navmesh_def* def, nl_navmesh_id* out_id);
 
 /** Removes a navmesh and its links, and the cross links of other navmeshes that land on it.
  *  Queries already running on it finish on their own copy.
- *  Returns SUCCESS or INVALID_HANDLE. Thread-safe. */
+ *  Returns SUCCESS or INVALID_HANDLE. Thread-safe.
+ *  @param[in] world  The world.
+ *  @param[in] navmesh  The navmesh to remove. */
 NL_API nl_status nl_navmesh_remove(nl_world* world, nl_navmesh_id navmesh);
 
-/** Nonzero if `navmesh` is a navmesh of `world`. Thread-safe. */
+/** Nonzero if `navmesh` is a navmesh of `world`. Thread-safe.
+ *  @param[in] world  The world.
+ *  @param[in] navmesh  The id to check. */
 NL_API int32_t nl_navmesh_is_valid(const nl_world* world, nl_navmesh_id navmesh);
 
 /** Sizes of a navmesh and what was repaired when it was added. */
@@ -137,12 +144,20 @@ typedef struct nl_navmesh_info {
 NL_DEFINE_OUTPUT_INIT(nl_navmesh_info, nl_navmesh_info_init)
 
 /** Fills `*out_info` (caller-owned; set its `size` first). Returns SUCCESS, INVALID_HANDLE or
- *  INVALID_ARGUMENT. Thread-safe. */
+ *  INVALID_ARGUMENT. Thread-safe.
+ *  @param[in] world  The world.
+ *  @param[in] navmesh  The navmesh.
+ *  @param[out] out_info  Receives its sizes and repairs. */
 NL_API nl_status nl_navmesh_get_info(const nl_world* world, nl_navmesh_id navmesh, nl_navmesh_info* out_info);
 
 /** Copies the navmesh's vertices (x y z each, after welding) into `out_xyz` (caller-owned, room for
  *  `capacity` vertices, i.e. 3 * capacity floats), with the two-call pattern of nl_world_get_meshes.
- *  Returns SUCCESS, or a failure with BUFFER_TOO_SMALL, INVALID_HANDLE or INVALID_ARGUMENT. Thread-safe. */
+ *  Returns SUCCESS, or a failure with BUFFER_TOO_SMALL, INVALID_HANDLE or INVALID_ARGUMENT. Thread-safe.
+ *  @param[in] world  The world.
+ *  @param[in] navmesh  The navmesh.
+ *  @param[out,opt] out_xyz  Receives x y z per vertex, or NULL to count only.
+ *  @param[in] capacity  Vertices `out_xyz` has room for.
+ *  @param[out] out_count  Receives the number of vertices. */
 NL_API nl_status nl_navmesh_get_vertices(const nl_world* world, nl_navmesh_id navmesh, float* out_xyz,
                                          uint32_t capacity, uint32_t* out_count);
 
@@ -165,7 +180,11 @@ NL_DEFINE_OUTPUT_INIT(nl_nav_polygon, nl_nav_polygon_init)
  *  the order they were given in, less the dropped ones; a polygon's corners start at its first given
  *  corner (reversed when it was turned over). Entries past vertex_count are 0 (vertices) and
  *  NL_NO_POLYGON (neighbours). Returns SUCCESS, INVALID_HANDLE, or INVALID_ARGUMENT (null pointer,
- *  polygon out of range). Thread-safe. */
+ *  polygon out of range). Thread-safe.
+ *  @param[in] world  The world.
+ *  @param[in] navmesh  The navmesh.
+ *  @param[in] polygon  The polygon's index.
+ *  @param[out] out_polygon  Receives the polygon. */
 NL_API nl_status nl_navmesh_get_polygon(const nl_world* world, nl_navmesh_id navmesh, uint32_t polygon,
                                         nl_nav_polygon* out_polygon);
 
@@ -181,7 +200,12 @@ typedef struct nl_boundary_edge {
 
 /** Copies the boundary edges into `out_edges` (caller-owned, `capacity` entries), with the two-call
  *  pattern of nl_world_get_meshes. Returns SUCCESS, or a failure with BUFFER_TOO_SMALL, INVALID_HANDLE
- *  or INVALID_ARGUMENT. Thread-safe. */
+ *  or INVALID_ARGUMENT. Thread-safe.
+ *  @param[in] world  The world.
+ *  @param[in] navmesh  The navmesh.
+ *  @param[out,opt] out_edges  Receives the edges, or NULL to count only.
+ *  @param[in] capacity  Entries `out_edges` has room for.
+ *  @param[out] out_count  Receives the number of boundary edges. */
 NL_API nl_status nl_navmesh_get_boundary_edges(const nl_world* world, nl_navmesh_id navmesh,
                                                nl_boundary_edge* out_edges, uint32_t capacity,
                                                uint32_t* out_count);
@@ -211,11 +235,21 @@ typedef struct nl_nav_point {
  *  beyond the box: a miss costs a second search, from the navmesh's bounds out to that point, up to
  *  the whole navmesh), or a failure with INVALID_HANDLE or
  *  INVALID_ARGUMENT (null pointer, a point not finite or beyond NL_COORDINATE_LIMIT: its index is
- *  named; half_extents not positive and finite). Thread-safe; parallel over the world's workers. */
+ *  named; half_extents not positive and finite). Thread-safe; parallel over the world's workers.
+ *  @param[in] world  The world.
+ *  @param[in] navmesh  The navmesh.
+ *  @param[in] points  x y z per point, `count` points.
+ *  @param[in] count  The number of points.
+ *  @param[in] half_extents  The search box's half size, 3 floats.
+ *  @param[out] out  Receives each point's navmesh point. */
 NL_API nl_status nl_navmesh_find_nearest(const nl_world* world, nl_navmesh_id navmesh, const float* points,
                                          uint32_t count, const float* half_extents, nl_nav_point* out);
 
-/** Lists the world's navmeshes into `out_ids` (two-call pattern as nl_world_get_meshes). */
+/** Lists the world's navmeshes into `out_ids` (two-call pattern as nl_world_get_meshes).
+ *  @param[in] world  The world.
+ *  @param[out,opt] out_ids  Receives the ids, or NULL to count only.
+ *  @param[in] capacity  Entries `out_ids` has room for.
+ *  @param[out] out_count  Receives the number of navmeshes. */
 NL_API nl_status nl_world_get_navmeshes(const nl_world* world, nl_navmesh_id* out_ids, uint32_t capacity,
                                         uint32_t* out_count);
 
@@ -270,7 +304,10 @@ NL_API nl_navmesh_build_def nl_default_navmesh_build_def(void);
  *  A builder's output that nl_navmesh_add would refuse is INTERNAL_ERROR (a builder bug), with
  *  the reason; nothing is added unless the builder succeeds.
  *  Thread-safe; long-running (a flat 650k-triangle level: about 0.2 s; it grows with the walkable
- *  area and the cell size more than with the triangles): give def->progress to show it and cancel. */
+ *  area and the cell size more than with the triangles): give def->progress to show it and cancel.
+ *  @param[in] world  The world.
+ *  @param[in] def  How to build it.
+ *  @param[out] out_id  Receives the navmesh's id. */
 NL_API nl_status nl_navmesh_build(nl_world* world, const nl_navmesh_build_def* def, nl_navmesh_id* out_id);
 
 #ifdef __cplusplus

@@ -24,7 +24,12 @@ extern "C" {
  *  always receives the file's size; a NULL buffer only measures (two-call pattern).
  *  Returns SUCCESS, or a failure with BUFFER_TOO_SMALL (nothing written), INVALID_HANDLE,
  *  INVALID_ARGUMENT (out_size NULL; buffer NULL with a capacity; a navmesh with cross links: a file
- *  holds one navmesh's own links). Thread-safe. */
+ *  holds one navmesh's own links). Thread-safe.
+ *  @param[in] world  The world.
+ *  @param[in] navmesh  The navmesh to save.
+ *  @param[out,opt] buffer  Receives the file, or NULL to measure only.
+ *  @param[in] capacity  The bytes `buffer` has room for.
+ *  @param[out] out_size  Receives the file's size. */
 NL_API nl_status nl_navmesh_save(const nl_world* world, nl_navmesh_id navmesh, void* buffer, size_t capacity,
                                  size_t* out_size);
 
@@ -32,7 +37,10 @@ NL_API nl_status nl_navmesh_save(const nl_world* world, nl_navmesh_id navmesh, v
  *  beside it, then renamed over it). A symbolic link at `path` stays: the file it leads to (through
  *  any chain of links) is written. Returns SUCCESS, or a failure as nl_navmesh_save, or IO_ERROR
  *  (cannot write; the reason named; also a path that is, or leads to, a directory, a device, a socket
- *  or a pipe: left as it was). Thread-safe. */
+ *  or a pipe: left as it was). Thread-safe.
+ *  @param[in] world  The world.
+ *  @param[in] navmesh  The navmesh to save.
+ *  @param[in] path  The file to write. */
 NL_API nl_status nl_navmesh_save_file(const nl_world* world, nl_navmesh_id navmesh, const char* path);
 
 /** Refuse a file baked from other level geometry than the world holds now (see nl_navmesh_load_def). */
@@ -60,14 +68,23 @@ NL_API nl_navmesh_load_def nl_default_navmesh_load_def(void);
  *  version), PARSE_ERROR (truncated or corrupted: the section and what is wrong named), INVALID_ARGUMENT
  *  (null data with a size, null out_id, bad def size or flags, a surface for a file that rode none or
  *  none for one that did, NL_NAVMESH_LOAD_SAME_LEVEL and the level differs, polygons or links that do
- *  not fit, named as "links[3].start"), INVALID_HANDLE (the surface), OUT_OF_MEMORY. Thread-safe. */
+ *  not fit, named as "links[3].start"), INVALID_HANDLE (the surface), OUT_OF_MEMORY. Thread-safe.
+ *  @param[in] world  The world.
+ *  @param[in] data  The file's bytes, `size` of them.
+ *  @param[in] size  The bytes of `data`.
+ *  @param[in,opt] def  How to load it, or NULL for the defaults.
+ *  @param[out] out_id  Receives the navmesh's id. */
 NL_API nl_status nl_navmesh_load(nl_world* world, const void* data, size_t size, const nl_navmesh_load_def* def,
                                  nl_navmesh_id* out_id);
 
 /** The same, from the file at `path` (NUL-terminated, borrowed): a regular file or a pipe, read no
  *  further than its header says the file goes. Also NOT_FOUND (no such file), IO_ERROR (cannot read
  *  it; a directory, a device or a socket), PARSE_ERROR (a pipe that goes on past the file's end).
- *  Thread-safe. */
+ *  Thread-safe.
+ *  @param[in] world  The world.
+ *  @param[in] path  The file to read.
+ *  @param[in,opt] def  How to load it, or NULL for the defaults.
+ *  @param[out] out_id  Receives the navmesh's id. */
 NL_API nl_status nl_navmesh_load_file(nl_world* world, const char* path, const nl_navmesh_load_def* def,
                                       nl_navmesh_id* out_id);
 
@@ -98,7 +115,13 @@ typedef struct nl_navmesh_file_info {
  *  "writer": version}.
  *  Returns SUCCESS, or a failure as nl_navmesh_load reading the file (VERSION_MISMATCH, PARSE_ERROR),
  *  BUFFER_TOO_SMALL, INVALID_ARGUMENT (null data with a size; a buffer without out_length; bad info
- *  size). Thread-safe; needs no world (failures reach no log callback). */
+ *  size). Thread-safe; needs no world (failures reach no log callback).
+ *  @param[in] data  The file's bytes, `size` of them.
+ *  @param[in] size  The bytes of `data`.
+ *  @param[out,opt] out_info  Receives what the file holds, or NULL.
+ *  @param[out,opt] made_for_json  Receives what it was made for, or NULL.
+ *  @param[in] capacity  The bytes `made_for_json` has room for.
+ *  @param[out,opt] out_length  Receives the JSON's length, or NULL when `made_for_json` is. */
 NL_API nl_status nl_navmesh_file_describe(const void* data, size_t size, nl_navmesh_file_info* out_info,
                                           char* made_for_json, size_t capacity, size_t* out_length);
 

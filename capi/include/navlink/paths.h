@@ -166,7 +166,13 @@ NL_DEFINE_OUTPUT_INIT(nl_path_result, nl_path_result_init)
  *  Returns SUCCESS when the search ran, whatever it found (PARTIAL_RESULT is set for NL_PATH_PARTIAL;
  *  read the outcome), or a failure with INVALID_HANDLE (navmesh), INVALID_ARGUMENT (null pointer, a
  *  coordinate not finite, a negative capability or cost, size too small: named), BUFFER_TOO_SMALL
- *  (the result is written, the points are not), OUT_OF_MEMORY. Thread-safe. */
+ *  (the result is written, the points are not), OUT_OF_MEMORY. Thread-safe.
+ *  @param[in] world  The world.
+ *  @param[in] def  The request.
+ *  @param[out] out_result  Receives the result.
+ *  @param[out,opt] out_points  Receives the points, or NULL to count only.
+ *  @param[in] capacity  Points `out_points` has room for.
+ *  @param[out] out_count  Receives the number of points. */
 NL_API nl_status nl_path_find(nl_world* world, const nl_path_request_def* def, nl_path_result* out_result,
                               nl_path_point* out_points, uint32_t capacity, uint32_t* out_count);
 
@@ -223,7 +229,10 @@ NL_DEFINE_OUTPUT_INIT(nl_path_shortfall, nl_path_shortfall_init)
  *  capability it lacks and by how much (the cheapest way with every link allowed). For tools, logs
  *  and a host's debugging: up to five searches, on the calling thread.
  *  Returns SUCCESS (whatever the reason, NONE included), or a failure as nl_path_find's.
- *  Thread-safe. */
+ *  Thread-safe.
+ *  @param[in] world  The world.
+ *  @param[in] def  The request.
+ *  @param[out] out_shortfall  Receives why its path falls short. */
 NL_API nl_status nl_path_explain(nl_world* world, const nl_path_request_def* def, nl_path_shortfall* out_shortfall);
 
 /** Queues a path request and returns at once with its ticket in `*out_ticket`. The request reads the
@@ -231,12 +240,18 @@ NL_API nl_status nl_path_explain(nl_world* world, const nl_path_request_def* def
  *  nl_path_process when path_worker_count is 0); poll the ticket or receive the callback, read the
  *  result, then release the ticket. Every accepted request finishes exactly once.
  *  Returns SUCCESS, or a failure with INVALID_HANDLE (navmesh), INVALID_ARGUMENT (as nl_path_find),
- *  OUT_OF_MEMORY; on failure no ticket is made and the callback is never called. Thread-safe. */
+ *  OUT_OF_MEMORY; on failure no ticket is made and the callback is never called. Thread-safe.
+ *  @param[in] world  The world.
+ *  @param[in] def  The request.
+ *  @param[out] out_ticket  Receives its ticket. */
 NL_API nl_status nl_path_request(nl_world* world, const nl_path_request_def* def, nl_path_ticket* out_ticket);
 
 /** Writes the request's outcome (NL_PATH_PENDING while it runs) to `*out_outcome`.
  *  Returns SUCCESS, or a failure with INVALID_HANDLE (null, released or foreign ticket) or
- *  INVALID_ARGUMENT. Thread-safe. */
+ *  INVALID_ARGUMENT. Thread-safe.
+ *  @param[in] world  The world.
+ *  @param[in] ticket  The request.
+ *  @param[out] out_outcome  Receives its outcome. */
 NL_API nl_status nl_path_poll(const nl_world* world, nl_path_ticket ticket, nl_path_outcome* out_outcome);
 
 /** nl_path_wait's timeout that never ends. */
@@ -253,25 +268,39 @@ NL_API nl_status nl_path_poll(const nl_world* world, nl_path_ticket ticket, nl_p
  *  or a failure with INVALID_HANDLE (null, released or foreign ticket, also one released by another
  *  thread during the wait) or INVALID_ARGUMENT (null out_outcome; called from a path callback, which
  *  runs on a thread that finishes requests and so could wait for itself).
- *  Thread-safe: any number of threads can wait, for the same ticket or others. */
+ *  Thread-safe: any number of threads can wait, for the same ticket or others.
+ *  @param[in] world  The world.
+ *  @param[in] ticket  The request.
+ *  @param[in] timeout_ms  How long to wait at most, or NL_PATH_WAIT_FOREVER.
+ *  @param[out] out_outcome  Receives its outcome. */
 NL_API nl_status nl_path_wait(nl_world* world, nl_path_ticket ticket, uint32_t timeout_ms, nl_path_outcome* out_outcome);
 
 /** Copies a finished request's result and points, as nl_path_find. Can be called any number of times
  *  until the ticket is released. Returns SUCCESS (with PARTIAL_RESULT for NL_PATH_PARTIAL),
  *  NL_STATUS_IN_PROGRESS (not finished; nothing written), or a failure with INVALID_HANDLE,
- *  INVALID_ARGUMENT or BUFFER_TOO_SMALL (result written, points not). Thread-safe. */
+ *  INVALID_ARGUMENT or BUFFER_TOO_SMALL (result written, points not). Thread-safe.
+ *  @param[in] world  The world.
+ *  @param[in] ticket  The request.
+ *  @param[out] out_result  Receives the result.
+ *  @param[out,opt] out_points  Receives the points, or NULL to count only.
+ *  @param[in] capacity  Points `out_points` has room for.
+ *  @param[out] out_count  Receives the number of points. */
 NL_API nl_status nl_path_get_result(const nl_world* world, nl_path_ticket ticket, nl_path_result* out_result,
                                     nl_path_point* out_points, uint32_t capacity, uint32_t* out_count);
 
 /** Asks a request to stop. A request not started yet finishes at once as NL_PATH_CANCELLED (its
  *  callback runs on this thread); a running one stops at its next check (every 64 polygons the
  *  search expands) unless it finishes first; a finished one is unchanged.
- *  Returns SUCCESS or INVALID_HANDLE. Thread-safe. */
+ *  Returns SUCCESS or INVALID_HANDLE. Thread-safe.
+ *  @param[in] world  The world.
+ *  @param[in] ticket  The request to stop. */
 NL_API nl_status nl_path_cancel(nl_world* world, nl_path_ticket ticket);
 
 /** Frees a request's result; the ticket becomes invalid at once. Releasing an unfinished request
  *  cancels it; its callback still runs once (on this thread if it had not started). Returns SUCCESS
- *  or INVALID_HANDLE. Thread-safe. */
+ *  or INVALID_HANDLE. Thread-safe.
+ *  @param[in] world  The world.
+ *  @param[in] ticket  The ticket to release. */
 NL_API nl_status nl_path_release(nl_world* world, nl_path_ticket ticket);
 
 /** How much nl_path_process may do in one call. Get one from nl_default_path_budget() (no limits).
@@ -292,7 +321,10 @@ NL_API nl_path_budget nl_default_path_budget(void);
 /** Plans queued requests on the calling thread until the queue is empty or the budget (borrowed;
  *  NULL: no limits) is spent. The way a host with path_worker_count 0 runs the queue in its frame;
  *  with workers it helps them. `out_processed` (optional) receives how many requests finished here.
- *  Returns SUCCESS or INVALID_ARGUMENT (NaN milliseconds, `size` too small). Thread-safe. */
+ *  Returns SUCCESS or INVALID_ARGUMENT (NaN milliseconds, `size` too small). Thread-safe.
+ *  @param[in] world  The world.
+ *  @param[in,opt] budget  How much to do, or NULL for no limits.
+ *  @param[out,opt] out_processed  Receives how many requests finished here, or NULL. */
 NL_API nl_status nl_path_process(nl_world* world, const nl_path_budget* budget, uint32_t* out_processed);
 
 /** A request that finished, as nl_path_take_finished reports it. An array element that may grow: set
@@ -314,7 +346,12 @@ NL_DEFINE_OUTPUT_INIT(nl_path_finished, nl_path_finished_init)
  *  `*out_remaining` (optional) how many still wait for the next call. A request whose ticket was
  *  released is not reported (so what waits is bounded by the tickets not yet released).
  *  Returns SUCCESS, or INVALID_ARGUMENT (null out_count, NULL out_finished with capacity > 0, `size`
- *  too small). Thread-safe: each finished request is taken by one call only. */
+ *  too small). Thread-safe: each finished request is taken by one call only.
+ *  @param[in] world  The world.
+ *  @param[out,opt] out_finished  Receives the finished requests, or NULL to take none.
+ *  @param[in] capacity  Entries `out_finished` has room for.
+ *  @param[out] out_count  Receives how many were written.
+ *  @param[out,opt] out_remaining  Receives how many still wait, or NULL. */
 NL_API nl_status nl_path_take_finished(nl_world* world, nl_path_finished* out_finished, uint32_t capacity,
                                        uint32_t* out_count, uint32_t* out_remaining);
 
@@ -332,7 +369,9 @@ typedef struct nl_path_queue_stats {
 
 NL_DEFINE_OUTPUT_INIT(nl_path_queue_stats, nl_path_queue_stats_init)
 
-/** Fills `*out_stats` (caller-owned, `size` set). Returns SUCCESS or INVALID_ARGUMENT. Thread-safe. */
+/** Fills `*out_stats` (caller-owned, `size` set). Returns SUCCESS or INVALID_ARGUMENT. Thread-safe.
+ *  @param[in] world  The world.
+ *  @param[out] out_stats  Receives the counters. */
 NL_API nl_status nl_path_get_queue_stats(const nl_world* world, nl_path_queue_stats* out_stats);
 
 #ifdef __cplusplus

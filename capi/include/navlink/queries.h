@@ -52,7 +52,14 @@ NL_API nl_query_filter nl_default_query_filter(void);
  *  borrowed, `count` each. [out] out_reachable: caller-owned, `count` bytes. count == 0 succeeds.
  *  Returns SUCCESS, or a failure with INVALID_HANDLE (navmesh), INVALID_ARGUMENT (a null pointer, a
  *  polygon out of range: its index named, a filter as nl_path_request_def refuses, size too small),
- *  OUT_OF_MEMORY. Thread-safe: any number of queries at once, a map built once. */
+ *  OUT_OF_MEMORY. Thread-safe: any number of queries at once, a map built once.
+ *  @param[in] world  The world.
+ *  @param[in] navmesh  The navmesh.
+ *  @param[in,opt] filter  The body, or NULL for the default walker.
+ *  @param[in] from_polygons  The pairs' start polygons, `count` of them.
+ *  @param[in] to_polygons  The pairs' goal polygons, `count` of them.
+ *  @param[in] count  The number of pairs.
+ *  @param[out] out_reachable  Receives 1 or 0 per pair. */
 NL_API nl_status nl_navmesh_can_reach(const nl_world* world, nl_navmesh_id navmesh, const nl_query_filter* filter,
                                       const uint32_t* from_polygons, const uint32_t* to_polygons, uint32_t count,
                                       uint8_t* out_reachable);
@@ -60,7 +67,14 @@ NL_API nl_status nl_navmesh_can_reach(const nl_world* world, nl_navmesh_id navme
 /** Every polygon the filter's body can reach from `from_polygon` (itself included), ascending, into
  *  `out_polygons` (caller-owned, `capacity` entries; NULL with capacity 0 to learn the count;
  *  `*out_count` receives it). Returns SUCCESS, BUFFER_TOO_SMALL (nothing written but the count), or
- *  a failure as nl_navmesh_can_reach. Thread-safe. */
+ *  a failure as nl_navmesh_can_reach. Thread-safe.
+ *  @param[in] world  The world.
+ *  @param[in] navmesh  The navmesh.
+ *  @param[in,opt] filter  The body, or NULL for the default walker.
+ *  @param[in] from_polygon  The polygon to start from.
+ *  @param[out,opt] out_polygons  Receives the polygons, or NULL to count only.
+ *  @param[in] capacity  Entries `out_polygons` has room for.
+ *  @param[out] out_count  Receives the number of polygons reached. */
 NL_API nl_status nl_navmesh_get_reachable_polygons(const nl_world* world, nl_navmesh_id navmesh,
                                                    const nl_query_filter* filter, uint32_t from_polygon,
                                                    uint32_t* out_polygons, uint32_t capacity, uint32_t* out_count);
@@ -72,7 +86,14 @@ NL_API nl_status nl_navmesh_get_reachable_polygons(const nl_world* world, nl_nav
  *  their lowest polygon; NL_NO_ISLAND for polygons in excluded areas. `out_island_count` (optional)
  *  receives the number of islands (also with BUFFER_TOO_SMALL). For drawing, and for a host's own
  *  bookkeeping per body.
- *  Returns SUCCESS, BUFFER_TOO_SMALL, or a failure as nl_navmesh_can_reach. Thread-safe. */
+ *  Returns SUCCESS, BUFFER_TOO_SMALL, or a failure as nl_navmesh_can_reach. Thread-safe.
+ *  @param[in] world  The world.
+ *  @param[in] navmesh  The navmesh.
+ *  @param[in,opt] filter  The body, or NULL for the default walker.
+ *  @param[out,opt] out_islands  Receives each polygon's island, or NULL to count only.
+ *  @param[in] capacity  Entries `out_islands` has room for.
+ *  @param[out] out_count  Receives the number of polygons.
+ *  @param[out,opt] out_island_count  Receives the number of islands, or NULL. */
 NL_API nl_status nl_navmesh_get_islands(const nl_world* world, nl_navmesh_id navmesh, const nl_query_filter* filter,
                                         uint32_t* out_islands, uint32_t capacity, uint32_t* out_count,
                                         uint32_t* out_island_count);
@@ -121,7 +142,15 @@ NL_DEFINE_OUTPUT_INIT(nl_navmesh_raycast_hit, nl_navmesh_raycast_hit_init)
  *  Returns SUCCESS, or a failure with nothing written: INVALID_HANDLE, INVALID_ARGUMENT (a null
  *  pointer, a ray's point not finite or beyond NL_COORDINATE_LIMIT, its start_polygon out of range or
  *  its start not over it: the ray's index named, a filter as nl_navmesh_can_reach refuses,
- *  out_hits[0].size unset); OUT_OF_MEMORY (some rays' hits may be written). Thread-safe. */
+ *  out_hits[0].size unset); OUT_OF_MEMORY (some rays' hits may be written). Thread-safe.
+ *  @param[in] world  The world.
+ *  @param[in] navmesh  The navmesh.
+ *  @param[in,opt] filter  The body, or NULL for the default walker.
+ *  @param[in] rays  The walks, `count` of them.
+ *  @param[in] count  The number of walks.
+ *  @param[out] out_hits  Receives how far each walk went.
+ *  @param[out,opt] out_polygons  Receives the polygons each walk crossed, or NULL.
+ *  @param[in] polygons_per_ray  Entries of `out_polygons` per walk. */
 NL_API nl_status nl_navmesh_raycast(const nl_world* world, nl_navmesh_id navmesh, const nl_query_filter* filter,
                                     const nl_navmesh_ray* rays, uint32_t count, nl_navmesh_raycast_hit* out_hits,
                                     uint32_t* out_polygons, uint32_t polygons_per_ray);
@@ -140,7 +169,17 @@ NL_API nl_status nl_navmesh_raycast(const nl_world* world, nl_navmesh_id navmesh
  *  many it visited, also when fewer fit. Returns SUCCESS, BUFFER_TOO_SMALL (the point is written and
  *  the first `capacity` polygons), or a failure with INVALID_HANDLE, INVALID_ARGUMENT (null pointer, a point
  *  not finite or beyond NL_COORDINATE_LIMIT, start_polygon out of range or start not over it, a
- *  filter as nl_navmesh_can_reach refuses). Thread-safe. */
+ *  filter as nl_navmesh_can_reach refuses). Thread-safe.
+ *  @param[in] world  The world.
+ *  @param[in] navmesh  The navmesh.
+ *  @param[in,opt] filter  The body, or NULL for the default walker.
+ *  @param[in] start_polygon  The polygon under `start`.
+ *  @param[in] start  Where the move starts, 3 floats.
+ *  @param[in] target  Where it heads, 3 floats.
+ *  @param[out] out_point  Receives where it ends.
+ *  @param[out,opt] out_polygons  Receives the polygons visited, or NULL.
+ *  @param[in] capacity  Entries `out_polygons` has room for.
+ *  @param[out,opt] out_count  Receives how many polygons it visited, or NULL. */
 NL_API nl_status nl_navmesh_move_along_surface(const nl_world* world, nl_navmesh_id navmesh,
                                                const nl_query_filter* filter, uint32_t start_polygon,
                                                const float* start, const float* target, nl_nav_point* out_point,
@@ -171,7 +210,13 @@ NL_API nl_random_points_def nl_default_random_points_def(void);
  *  fewer when the allowed part inside the circle is so thin that 64 tries per point met it too
  *  seldom. Returns SUCCESS, or a failure with INVALID_HANDLE, INVALID_ARGUMENT (null pointer, a
  *  centre or radius not finite or out of range, radius < 0, reachable_from out of range, a filter
- *  as nl_navmesh_can_reach refuses, size too small). Thread-safe. */
+ *  as nl_navmesh_can_reach refuses, size too small). Thread-safe.
+ *  @param[in] world  The world.
+ *  @param[in] navmesh  The navmesh.
+ *  @param[in] def  Which points to draw.
+ *  @param[out] out_points  Receives the points, `count` of them.
+ *  @param[in] count  The number of points to draw.
+ *  @param[out] out_found  Receives how many were drawn. */
 NL_API nl_status nl_navmesh_random_points(const nl_world* world, nl_navmesh_id navmesh,
                                           const nl_random_points_def* def, nl_nav_point* out_points, uint32_t count,
                                           uint32_t* out_found);

@@ -129,17 +129,21 @@ NL_API nl_world_def nl_default_world_def(void);
  *  NL_MAX_WORKERS, one task callback without the other, worker_count < 1 with task callbacks),
  *  OUT_OF_MEMORY (also when about 1,000 worlds exist at once: each world's Embree device takes one
  *  of the process's 1,024 thread-local keys) or INTERNAL_ERROR (the system refused a thread).
- *  Thread-safe. */
+ *  Thread-safe.
+ *  @param[in,opt] def  How to create the world, or NULL for the defaults.
+ *  @param[out] out_world  Receives the new world. */
 NL_API nl_status nl_world_create(const nl_world_def* def, nl_world** out_world);
 
 /** Destroys a world and everything it owns; every id from it becomes invalid. NULL is ignored.
  *  Queued path requests first finish as NL_PATH_CANCELLED (their callbacks run, on this thread, and
  *  may still use the world's path functions); running ones are asked to stop and waited for.
- *  Must not run at the same time as any other call on this world. */
+ *  Must not run at the same time as any other call on this world.
+ *  @param[in,opt] world  The world to destroy, or NULL. */
 NL_API void nl_world_destroy(nl_world* world);
 
 /** The number of threads the world uses for batch work (1 when everything runs on the caller; with
- *  task callbacks, the host's worker_count). Returns 0 for a null world. Thread-safe. */
+ *  task callbacks, the host's worker_count). Returns 0 for a null world. Thread-safe.
+ *  @param[in] world  The world. */
 NL_API int32_t nl_world_get_worker_count(const nl_world* world);
 
 #ifdef __cplusplus

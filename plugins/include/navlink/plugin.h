@@ -151,7 +151,10 @@ typedef nl_status nl_plugin_entry_fn(uint32_t host_abi_version, const nl_plugin_
                                      nl_plugin_info* out_info);
 
 /** Registers a plugin compiled into the host program, through its entry function. Errors as
- *  nl_plugin_load, without the file ones. Thread-safe. */
+ *  nl_plugin_load, without the file ones. Thread-safe.
+ *  @param[in] world  The world.
+ *  @param[in] entry  The plugin's entry function.
+ *  @param[out] out_id  Receives the plugin's id. */
 NL_API nl_status nl_plugin_register(nl_world* world, nl_plugin_entry_fn* entry, nl_plugin_id* out_id);
 
 #ifdef __cplusplus
