@@ -1,9 +1,12 @@
 /*
- * navlink-abi-hostile-test: every public nl_* function called with bad input (hostile_test.c
- * has the cases), run group by group in child processes (hostile_runner.c), and held against
- * the public headers: each function, and each of its parameters, needs the hostile cases its type
- * calls for (hostile_coverage.c derives them from the declarations). Strict C11 through the C
- * ABI only.
+ * navlink-abi-hostile-test: every public nl_* function called with bad input, run group by group
+ * in child processes (hostile_runner.c), and held against the public headers: each function, and
+ * each of its parameters, needs the hostile cases its type calls for (hostile_coverage.c derives
+ * them from the declarations). The cases are in one file per part of the headers,
+ * hostile_<part>_test.c (base, world, level, navmesh, links, navmesh_file, paths, queries,
+ * agents, plugins; plugin_abi for plugin.h), on the worlds and with the helpers of
+ * hostile_fixtures.c; hostile_main.c runs the parts in the headers' order. Strict C11 through the
+ * C ABI only.
  */
 #ifndef NAVLINK_ABI_HOSTILE_H
 #define NAVLINK_ABI_HOSTILE_H
@@ -71,6 +74,17 @@ typedef struct hostile_group {
     const char* name;
     void (*run)(void);
 } hostile_group;
+
+/* The groups of one part of the headers, in its file's table (hostile_<part>_test.c). A group holds
+   the cases of one function (or a few the part declares together); hostile_main.c runs the parts in
+   the order navlink.h includes them, plugin.h last. */
+typedef struct hostile_part {
+    const hostile_group* groups;
+    size_t count;
+} hostile_part;
+extern const hostile_part hostile_base_part, hostile_world_part, hostile_level_part, hostile_navmesh_part,
+    hostile_links_part, hostile_navmesh_file_part, hostile_paths_part, hostile_queries_part, hostile_agents_part,
+    hostile_plugins_part, hostile_plugin_abi_part;
 
 /* What the runner needs from the test: `setup` builds the worlds in the child before its group;
    `unchanged` runs after every case and says (in `why`) what differs from the worlds as they were
