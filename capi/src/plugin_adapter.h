@@ -9,7 +9,7 @@
 #include <string_view>
 
 #include "navlink/plugin.h"
-#include "platform/dynamic_library.h"
+#include "os/dynamic_library.h"
 #include "util/function_ref.h"
 #include "util/handle.h"
 #include "world/world.h"

@@ -37,7 +37,7 @@
 #include "motion/link_motion.h"
 #include "path/path_graph.h"
 #include "util/handle.h"
-#include "platform/shared_mutex.h"
+#include "os/shared_mutex.h"
 #include "util/task_system.h"
 #include "registry/navmesh_registry.h"
 

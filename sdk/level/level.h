@@ -19,7 +19,7 @@
 #include "level/oriented_box.h"
 #include "level/swept_body.h"
 #include "util/handle.h"
-#include "platform/shared_mutex.h"
+#include "os/shared_mutex.h"
 #include "util/task_system.h"
 
 namespace nl {

@@ -15,9 +15,9 @@ public:
 
     // Drops: probes down from past the rim along rotated outward directions, then the fall's sweep.
     void run(LinkGeneration::Cache& next) {
-        const float steep = s_.drop_steepness * kDegrees;
-        const float reach = (s_.max_drop_distance + kProbeLift + 1.0f) / std::sin(steep);
-        const auto angles = static_cast<uint32_t>(s_.drop_angles.size());
+        const float steep = settings_.drop_steepness * kDegrees;
+        const float reach = (settings_.max_drop_distance + kProbeLift + 1.0f) / std::sin(steep);
+        const auto angles = static_cast<uint32_t>(settings_.drop_angles.size());
         // Every take-off point's probes, in key order: reused from the old cache (also in key order)
         // when neither the take-off point nor the probe's reach changed, else probed again.
         std::vector<uint32_t> probed;  // indices into next.drops
@@ -49,11 +49,11 @@ public:
             LinkGeneration::DropProbe& d = next.drops[probed[k]];
             const auto i = static_cast<uint32_t>(d.key >> 32), angle = static_cast<uint32_t>(d.key);
             const EdgeSample& e = samples_[i];
-            headings[k] = Eigen::AngleAxisf(s_.drop_angles[angle] * kDegrees, Vec3::UnitY()) * e.outward;
+            headings[k] = Eigen::AngleAxisf(settings_.drop_angles[angle] * kDegrees, Vec3::UnitY()) * e.outward;
             d.rim = next.takeoffs[i].rim;
             d.bounds = Aabb{};
-            if (s_.drop_angles[angle] == 0.0f) continue;
-            const float reach = s_.falloff_distance / std::cos(s_.drop_angles[angle] * kDegrees);
+            if (settings_.drop_angles[angle] == 0.0f) continue;
+            const float reach = settings_.falloff_distance / std::cos(settings_.drop_angles[angle] * kDegrees);
             turned.push_back(RimQuery{e.point, headings[k], next.takeoffs[i].ground_y, reach, std::nullopt});
             grow(d.bounds, rim_search_bounds(turned.back(), rim_probing_));
             turned_of.push_back(k);
@@ -158,7 +158,7 @@ public:
             landed.clear();
             for (size_t k = first; k < last; ++k)
                 if (c.drops[k].outcome == 0) landed.push_back(static_cast<uint32_t>(k));
-            auto turn = [&](uint32_t k) { return std::fabs(s_.drop_angles[static_cast<uint32_t>(c.drops[k].key)]); };
+            auto turn = [&](uint32_t k) { return std::fabs(settings_.drop_angles[static_cast<uint32_t>(c.drops[k].key)]); };
             std::stable_sort(landed.begin(), landed.end(), [&](uint32_t x, uint32_t y) { return turn(x) < turn(y); });
             ways.clear();
             for (uint32_t k : landed) {
@@ -206,7 +206,7 @@ public:
             d.outcome = 2;
             return;
         }
-        if (drop > s_.max_drop_distance) {
+        if (drop > settings_.max_drop_distance) {
             d.outcome = 3;
             return;
         }
@@ -222,8 +222,8 @@ public:
         const Vec3 crossing = start + heading * d.rim;
         l.requirements.gap = Vec3(end.x() - crossing.x(), 0.0f, end.z() - crossing.z()).norm();
         // Low and near enough to jump back up (whether the body fits that arc is swept later).
-        l.bidirectional = drop <= s_.max_jump_up && l.requirements.gap <= s_.max_jump_gap;
-        l.arc_height = s_.jump_arc_height;  // the jump back up's arc, when the drop works both ways
+        l.bidirectional = drop <= settings_.max_jump_up && l.requirements.gap <= settings_.max_jump_gap;
+        l.arc_height = settings_.jump_arc_height;  // the jump back up's arc, when the drop works both ways
         d.fall = fall_path(start, heading, d.rim + kPastRim, end);
         l.apex = d.fall[1];  // where the body leaves the ground: the top of the fall, and its heading
     }

@@ -1,4 +1,4 @@
-#include "links/link_generator.h"
+#include "links/generate_links.h"
 
 #include "links/link_generation.h"
 

@@ -21,7 +21,7 @@ PassInputs::PassInputs(const NavMesh& mesh, const EdgeSampling& sampling, const 
 }
 
 GenerationStage::GenerationStage(PassInputs& in)
-    : mesh_(in.mesh), samples_(in.samples), s_(in.settings), method_(in.method), old_(in.old), box_(in.box), level_(in.level),
+    : mesh_(in.mesh), samples_(in.samples), settings_(in.settings), method_(in.method), old_(in.old), box_(in.box), level_(in.level),
       tasks_(in.tasks), report_(in.report), progress_(in.progress), body_(in.body), walk_(in.walk), rim_probing_(in.rim_probing) {}
 
 void check_progress(const GenerationProgress& progress, float fraction, const char* stage) {
@@ -61,7 +61,7 @@ std::vector<LinkGeneration::Sweep> GenerationStage::sweep(const std::vector<Path
     const float widest = kSweepRadii[kSweepRadiusCount - 1] * body_.radius;
     tasks_.parallel_for(static_cast<uint32_t>(paths.size()), 64, [&](uint32_t begin, uint32_t end) {
         for (uint32_t i = begin; i < end; ++i) {
-            pieces[i] = sweep_pieces(paths[i], s_.clearance_margin, body_.radius);
+            pieces[i] = sweep_pieces(paths[i], settings_.clearance_margin, body_.radius);
             if (method_ == GenerationMethod::Indexed) runs[i] = straight_runs(pieces[i]);
             Aabb& b = out[i].bounds;
             for (size_t n = 0; n < paths[i].count; ++n) b.grow(paths[i].points[n]);
@@ -111,12 +111,12 @@ std::vector<LinkGeneration::Sweep> GenerationStage::sweep(const std::vector<Path
 }
 
 std::vector<LinkGeneration::Sweep> GenerationStage::sweep_arcs(const std::vector<std::pair<Vec3, Vec3>>& ends) {
-    const double piece = 1.0 / s_.arc_segments;
+    const double piece = 1.0 / settings_.arc_segments;
     std::vector<std::vector<Vec3>> arcs(ends.size());
     std::vector<PathPoints> paths(ends.size());
     for (size_t n = 0; n < ends.size(); ++n) {
-        const JumpArc arc(ends[n].first, ends[n].second, s_.jump_arc_height);
-        arcs[n] = arc.points(s_.arc_segments);
+        const JumpArc arc(ends[n].first, ends[n].second, settings_.jump_arc_height);
+        arcs[n] = arc.points(settings_.arc_segments);
         paths[n] = PathPoints{arcs[n].data(), arcs[n].size(), arc.sagitta(0.0, piece)};
     }
     return sweep(paths);

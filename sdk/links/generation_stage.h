@@ -85,7 +85,7 @@ protected:
 
     const NavMesh& mesh_;
     const std::vector<EdgeSample>& samples_;
-    const LinkSettings& s_;
+    const LinkSettings& settings_;
     GenerationMethod method_;
     const LinkGeneration::Cache& old_;
     const Aabb* box_;

@@ -18,7 +18,7 @@ public:
     // How far out along `heading` a take-off point's rim is looked for: as far as falloff_distance
     // straight out reaches along it, and never past the other end.
     float rim_reach(const Vec3& outward, const Vec3& heading, float length) const {
-        return std::min(s_.falloff_distance / std::max(outward.dot(heading), 1e-3f), length);
+        return std::min(settings_.falloff_distance / std::max(outward.dot(heading), 1e-3f), length);
     }
 
     // What the geometry-free tests say of a pair of take-off points, for the report.
@@ -42,7 +42,7 @@ public:
     // the other (so the report can say that two facing edges were too far apart). Never finer than
     // a centimetre: cell keys stay far inside int64 within the coordinate limit.
     float pair_reach() const {
-        return std::max(2.0f * s_.max_jump_gap + 2.0f * s_.falloff_distance + s_.max_jump_up, 0.01f);
+        return std::max(2.0f * settings_.max_jump_gap + 2.0f * settings_.falloff_distance + settings_.max_jump_up, 0.01f);
     }
 
     CellKey cell_of(const Vec3& p) const {
@@ -83,19 +83,19 @@ public:
         const Vec3 flat(d.x(), 0.0f, d.z());
         const float distance = d.norm(), length = flat.norm();
         const Vec3 heading = length > 0.0f ? Vec3(flat / length) : Vec3::Zero();
-        const bool is_short = distance < s_.short_link_distance;
-        const float forward = std::cos((is_short ? s_.permissive_forward_angle : s_.strict_forward_angle) * kDegrees);
+        const bool is_short = distance < settings_.short_link_distance;
+        const float forward = std::cos((is_short ? settings_.permissive_forward_angle : settings_.strict_forward_angle) * kDegrees);
         const bool facing = length > 0.0f && a.outward.dot(heading) >= forward && b.outward.dot(-heading) >= forward;
         const float gap = length - rim_reach(a.outward, heading, length) - rim_reach(b.outward, -heading, length);
         // Only edges that face each other are worth reporting as too far apart.
-        if (gap > s_.max_jump_gap) return facing ? PairVerdict::Distance : PairVerdict::Ignored;
-        if (length < s_.min_link_distance) return PairVerdict::Distance;
-        if (std::fabs(d.y()) > s_.max_jump_up) return PairVerdict::Rise;
-        const float incline = std::sin((is_short ? s_.permissive_incline_angle : s_.strict_incline_angle) * kDegrees);
+        if (gap > settings_.max_jump_gap) return facing ? PairVerdict::Distance : PairVerdict::Ignored;
+        if (length < settings_.min_link_distance) return PairVerdict::Distance;
+        if (std::fabs(d.y()) > settings_.max_jump_up) return PairVerdict::Rise;
+        const float incline = std::sin((is_short ? settings_.permissive_incline_angle : settings_.strict_incline_angle) * kDegrees);
         const Vec3 direction = d / distance;
         if (!facing || std::fabs(direction.dot(a.normal)) > incline || std::fabs(direction.dot(b.normal)) > incline)
             return PairVerdict::Angle;
-        const float walk = walk_.walk_within(a.point, a.polygon, b.point, b.polygon, s_.walk_factor * length + s_.walk_distance);
+        const float walk = walk_.walk_within(a.point, a.polygon, b.point, b.polygon, settings_.walk_factor * length + settings_.walk_distance);
         return std::isfinite(walk) ? PairVerdict::Walkable : PairVerdict::Candidate;
     }
 
@@ -130,8 +130,8 @@ public:
         c.link.kind = LinkKind::Jump;
         c.link.start = start;
         c.link.end = end;
-        c.link.apex = JumpArc(start, end, s_.jump_arc_height).apex();
-        c.link.arc_height = s_.jump_arc_height;
+        c.link.apex = JumpArc(start, end, settings_.jump_arc_height).apex();
+        c.link.arc_height = settings_.jump_arc_height;
         c.link.bidirectional = true;  // every jump constraint holds both ways
         c.link.generated = true;
         c.link.start_polygon = samples_[a].polygon;
@@ -173,7 +173,7 @@ public:
             Vec3 flat = c.link.end - c.link.start;
             flat.y() = 0.0f;
             const float gap = std::max(0.0f, flat.norm() - rim_a - rim_b);
-            c.gap_within = rim_a >= 0.0f && rim_b >= 0.0f && gap <= s_.max_jump_gap;
+            c.gap_within = rim_a >= 0.0f && rim_b >= 0.0f && gap <= settings_.max_jump_gap;
             c.link.requirements.gap = gap;
         }
     }

@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "links/edge_samples.h"
-#include "links/link_generator.h"
+#include "links/generate_links.h"
 
 namespace nl {
 

@@ -36,7 +36,7 @@ public:
             t = LinkGeneration::TakeoffState{};
             // Correction for navmeshes that sit above the floor (Recast's rounds up) or sink into it.
             t.ground_y = ground[k].hit ? ground[k].point.y() : e.point.y();
-            queries[k] = RimQuery{e.point, e.outward, t.ground_y, s_.falloff_distance, floor[k]};
+            queries[k] = RimQuery{e.point, e.outward, t.ground_y, settings_.falloff_distance, floor[k]};
             // Every probe the rim search may cast, so a change anywhere along it redoes the sample.
             t.bounds = bounds_of({e.point + Vec3(0, rim_probing_.lift, 0), e.point - Vec3(0, 1.5f, 0)});
             grow(t.bounds, rim_search_bounds(queries[k], rim_probing_));

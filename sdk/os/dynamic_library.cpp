@@ -1,4 +1,4 @@
-#include "platform/dynamic_library.h"
+#include "os/dynamic_library.h"
 
 #include <utility>
 

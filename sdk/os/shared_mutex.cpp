@@ -1,4 +1,4 @@
-#include "platform/shared_mutex.h"
+#include "os/shared_mutex.h"
 
 #include <cstring>
 #include <system_error>

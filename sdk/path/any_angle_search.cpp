@@ -1,4 +1,4 @@
-#include "path/shortest_corridor.h"
+#include "path/any_angle_search.h"
 
 #include <algorithm>
 #include <cmath>
@@ -8,7 +8,7 @@
 #include "path/link_filter.h"
 #include "path/portal.h"
 #include "path/search_costs.h"
-#include "platform/compiler.h"
+#include "os/compiler.h"
 #include "util/error.h"
 
 namespace nl {

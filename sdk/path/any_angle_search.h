@@ -11,7 +11,7 @@
 
 #include <atomic>
 
-#include "path/corridor_search.h"
+#include "path/polygon_astar.h"
 
 namespace nl {
 

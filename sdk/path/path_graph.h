@@ -22,7 +22,7 @@ struct LinkExit {
     uint32_t reversed;  // 1: from the link's end to its start
 };
 
-// What the exact search (shortest_corridor.h) reads of a navmesh alone, whatever its links: built
+// What the exact search (any_angle_search.h) reads of a navmesh alone, whatever its links: built
 // once per navmesh and shared by the path graphs of its link snapshots. Immutable.
 class NavMeshSearchIndex {
 public:

@@ -3,10 +3,10 @@
 #include <algorithm>
 
 #include "navmesh/nearest_point.h"
-#include "path/corridor_search.h"
+#include "path/polygon_astar.h"
 #include "path/reachability.h"
 #include "path/search_costs.h"
-#include "path/shortest_corridor.h"
+#include "path/any_angle_search.h"
 #include "path/string_pulling.h"
 
 namespace nl {

@@ -1,4 +1,4 @@
-#include "path/corridor_search.h"
+#include "path/polygon_astar.h"
 
 #include <algorithm>
 #include <cmath>
@@ -7,7 +7,7 @@
 #include "path/link_filter.h"
 #include "path/portal.h"
 #include "path/search_costs.h"
-#include "platform/compiler.h"
+#include "os/compiler.h"
 #include "util/error.h"
 
 namespace nl {

@@ -24,7 +24,7 @@
 #include "util/function_ref.h"
 #include "util/handle.h"
 #include "util/held_ptr.h"
-#include "platform/shared_mutex.h"
+#include "os/shared_mutex.h"
 #include "io/plugin_settings.h"
 
 namespace nl {

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "util/handle.h"
-#include "platform/shared_mutex.h"
+#include "os/shared_mutex.h"
 #include "world/plugin.h"
 
 namespace nl {

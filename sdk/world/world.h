@@ -21,7 +21,7 @@
 
 #include "agents/agents.h"
 #include "level/level.h"
-#include "links/link_generator.h"
+#include "links/generate_links.h"
 #include "links/link_settings.h"
 #include "path/path_queue.h"
 #include "util/handle_tag.h"

@@ -29,7 +29,7 @@
 
 #include "clock.h"
 #include "level_generator.h"
-#include "links/link_generator.h"
+#include "links/generate_links.h"
 #include "world.h"
 
 namespace {

@@ -36,7 +36,7 @@
 
 #include "clock.h"
 #include "recast_detour.h"
-#include "path/shortest_corridor.h"
+#include "path/any_angle_search.h"
 #include "shortest_path_reference.h"
 #include "world.h"
 

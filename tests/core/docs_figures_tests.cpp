@@ -15,7 +15,7 @@
 #include "core_world.h"
 #include "navmesh/navmesh.h"
 #include "navmesh/random_points.h"
-#include "path/corridor_search.h"
+#include "path/polygon_astar.h"
 #include "path/reachability.h"
 #include "util/handle_tag.h"
 

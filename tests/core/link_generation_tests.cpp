@@ -6,7 +6,7 @@
 
 #include "core_world.h"
 #include "link_test_helpers.h"
-#include "links/link_generator.h"
+#include "links/generate_links.h"
 
 using nl::Link;
 using nl::LinkKind;

@@ -11,7 +11,7 @@
 
 #include "core_world.h"
 #include "level_generator.h"
-#include "links/link_generator.h"
+#include "links/generate_links.h"
 #include "link_test_helpers.h"
 #include "shared_levels.h"
 

@@ -34,7 +34,7 @@
 #include "link_test_helpers.h"
 #include "independent_link_checker.h"
 #include "level_generator.h"
-#include "links/link_generator.h"
+#include "links/generate_links.h"
 #include "path/path_graph.h"
 #include "path/path_planner.h"
 #include "shared_levels.h"

@@ -15,7 +15,7 @@
 
 #include "core_world.h"
 #include "path/path_planner.h"
-#include "path/shortest_corridor.h"
+#include "path/any_angle_search.h"
 #include "shortest_path_reference.h"
 
 using nl::Vec3;

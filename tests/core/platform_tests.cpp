@@ -1,4 +1,4 @@
-// sdk/platform/: the plugin loader against a real plugin module (the climb plugin) and a file that is
+// sdk/os/: the plugin loader against a real plugin module (the climb plugin) and a file that is
 // not one; the lock's refusal to be taken again by its holder. The writer-preferring order is exercised
 // by every level test and the soaks.
 #include <doctest/doctest.h>
@@ -9,8 +9,8 @@
 #include <thread>
 
 #include "core_errors.h"
-#include "platform/dynamic_library.h"
-#include "platform/shared_mutex.h"
+#include "os/dynamic_library.h"
+#include "os/shared_mutex.h"
 
 namespace nl {
 namespace {

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "core_world.h"
-#include "path/corridor_search.h"
+#include "path/polygon_astar.h"
 #include "path/path_planner.h"
 #include "path/reachability.h"
 
