@@ -55,7 +55,7 @@ DECK_QUAD = [1.2, 0, -1.8, 1.2, 0, 1.8, 4.8, 0, 1.8, 4.8, 0, -1.8]
 DECK_HOME = [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1]
 DECK_AWAY = [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 2, 0, 0, 1]  # 2 m along x
 CROSS_START, CROSS_END, CROSS_END_AWAY = (-0.4, 0, 0), (1.6, 0, 0), (3.6, 0, 0)
-# Generated cross links (tests/core/surface_tests.cpp's ferry): a static 6 x 6 m ledge (box x in [0, 6], z in
+# Generated cross links (tests/core/world/surface_tests.cpp's ferry): a static 6 x 6 m ledge (box x in [0, 6], z in
 # [0, 6], top y = 0) whose navmesh is its top eroded 0.3 m, and a 4 x 4 m movable box (top y = 0 in its own
 # space, centred on its origin) carrying its top eroded 0.3 m as a navmesh, placed 1 m off the ledge's edge
 # (centre x = 9, z = 3), then 3 m off (x = 11). Both navmeshes for radius 0.3; jumps up to 2 m across.
@@ -64,7 +64,7 @@ LEDGE_TOP = [0.3, 0, 0.3, 0.3, 0, 5.7, 5.7, 0, 5.7, 5.7, 0, 0.3]
 PLATFORM_LO, PLATFORM_HI = (-2, -0.5, -2), (2, 0, 2)
 PLATFORM_TOP = [-1.7, 0, -1.7, -1.7, 0, 1.7, 1.7, 0, 1.7, 1.7, 0, -1.7]
 
-# A ferry (tests/core/surface_tests.cpp's): two 6 x 6 m ledges (boxes x in [0, 6] and [16, 22], z in [0, 6], tops
+# A ferry (tests/core/world/surface_tests.cpp's): two 6 x 6 m ledges (boxes x in [0, 6] and [16, 22], z in [0, 6], tops
 # y = 0) with one static navmesh of their tops eroded 0.3 m (one quad each), and the platform's box as a shuttle
 # carrying PLATFORM_TOP, on a timetable: docked at the near ledge (centre x = 8) for 3 s, 4 s across, docked at
 # the far one (x = 14) for 3 s, 4 s back.
@@ -1386,7 +1386,7 @@ class AgentTest(NavLinkTestCase):
             self.assertLessEqual(len(world.agent_corners(walker_id)), 1, "an arrived agent has no corners left")
 
     def test_a_ferry_carries_walkers_across_a_chasm(self):
-        """tests/core/surface_tests.cpp's ferry through the ABI: two walkers wait at the near ledge's gangway for
+        """tests/core/world/surface_tests.cpp's ferry through the ABI: two walkers wait at the near ledge's gangway for
         the shuttle, ride it across (info.navmesh: its deck; info.surface: the shuttle; surface_position: in the
         shuttle's space), and get off onto the far ledge by the other gangway."""
         with nl.World() as world:

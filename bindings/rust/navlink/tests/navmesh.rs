@@ -228,7 +228,7 @@ fn cross_link_onto_a_moving_surface() {
     assert_fails(world.save_links_json(ledge), status::INVALID_ARGUMENT, "cross link");
 }
 
-/// Generated cross links (tests/core/surface_tests.cpp's ferry): a static 6 x 6 m ledge (box x in [0, 6], z in
+/// Generated cross links (tests/core/world/surface_tests.cpp's ferry): a static 6 x 6 m ledge (box x in [0, 6], z in
 /// [0, 6], top y = 0) whose navmesh is its top eroded 0.3 m, and a 4 x 4 m movable box (top y = 0 in its own
 /// space, centred on its origin) carrying its top eroded 0.3 m as a navmesh, placed 1 m off the ledge's edge
 /// (centre x = 9, z = 3), then 3 m off (x = 11). Both navmeshes for radius 0.3; jumps up to 2 m across.
