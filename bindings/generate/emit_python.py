@@ -7,8 +7,9 @@ nl_agent_state the IntEnum AgentState whose members drop the kind's common prefi
 AgentState.IDLE; the module constant AGENT_IDLE is that member); every other NL_NAME is the constant NAME.
 """
 import re
+import textwrap
 
-from names import camel, enum_prefix, is_id, ordered_items
+from names import camel, enum_prefix, generated_notice, is_id, ordered_items
 
 # Classes whose plain name the idiomatic layer gives to a friendlier class.
 CLASS_NAMES = {"nl_path_result": "PathResultInfo", "nl_path_shortfall": "PathShortfallInfo",
@@ -99,12 +100,9 @@ def _doc(text):
 
 def emit(model, sources):
     t = Types(model)
-    out = ['"""The C ABI of libnavlink for ctypes: generated from %s by bindings/generate/generate.py.' % ", ".join(sources),
-           "",
-           "Do not edit: change the header and run the generator (docs/bindings.md, \"Generated layers\"). navlink.py",
-           "imports everything here and builds the idiomatic layer on top.",
-           '"""',
-           "# Generated file. Do not edit.",
+    out = ['"""The C ABI of libnavlink for ctypes; navlink.py imports everything here and builds the idiomatic',
+           "layer on top.",
+           ""] + textwrap.wrap(generated_notice(sources), 110) + ['"""',
            "# flake8: noqa",
            "import enum",
            "from ctypes import (CFUNCTYPE, POINTER, c_char, c_char_p, c_double, c_float, c_int, c_int32, c_size_t,",

@@ -150,10 +150,8 @@ public:
         std::vector<RimQuery> queries;
         for (uint64_t key : keys) {
             const LinkGeneration::JumpCandidate& c = next.jumps.at(key);
-            Vec3 flat = c.link.end - c.link.start;
-            flat.y() = 0.0f;
-            const float length = flat.norm();
-            const Vec3 heading = flat / length;  // judge_pair kept only ends apart
+            const float length = c.link.requirements.length;  // horizontal, > 0: judge_pair kept only ends apart
+            const Vec3 heading = Vec3(c.link.end.x() - c.link.start.x(), 0.0f, c.link.end.z() - c.link.start.z()) / length;
             const uint32_t ends[2] = {c.a, c.b};
             for (int side = 0; side < 2; ++side) {
                 const Vec3 out = side == 0 ? heading : Vec3(-heading);
@@ -170,9 +168,7 @@ public:
             const float rim_a = rims[2 * n], rim_b = rims[2 * n + 1];
             c.rim_bounds = bounds[2 * n];
             grow(c.rim_bounds, bounds[2 * n + 1]);
-            Vec3 flat = c.link.end - c.link.start;
-            flat.y() = 0.0f;
-            const float gap = std::max(0.0f, flat.norm() - rim_a - rim_b);
+            const float gap = std::max(0.0f, c.link.requirements.length - rim_a - rim_b);
             c.gap_within = rim_a >= 0.0f && rim_b >= 0.0f && gap <= settings_.max_jump_gap;
             c.link.requirements.gap = gap;
         }
