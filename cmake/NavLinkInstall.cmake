@@ -10,7 +10,7 @@ set(NAVLINK_INSTALL_PLUGINDIR ${CMAKE_INSTALL_LIBDIR}/navlink/plugins)
 # the build tree keeps the debug info for debugging. `cmake --install --strip` does the same for
 # every install; this makes it the default.
 function(navlink_strip_installed target destination)
-  if(NOT NAVLINK_INSTALL_STRIPPED OR NOT CMAKE_STRIP OR APPLE OR WIN32)  # GNU binutils' strip only
+  if(NOT CMAKE_STRIP OR APPLE OR WIN32)  # GNU binutils' strip only
     return()
   endif()
   get_target_property(type ${target} TYPE)
@@ -20,7 +20,14 @@ function(navlink_strip_installed target destination)
     set(what --strip-unneeded)  # keeps the dynamic symbols, drops the rest and the debug info
   endif()
   set(file "\$ENV{DESTDIR}\${CMAKE_INSTALL_PREFIX}/${destination}/$<TARGET_FILE_NAME:${target}>")
-  install(CODE "execute_process(COMMAND \"${CMAKE_STRIP}\" ${what} \"${file}\" COMMAND_ERROR_IS_FATAL ANY)")
+  set(strip "execute_process(COMMAND \"${CMAKE_STRIP}\" ${what} \"${file}\" COMMAND_ERROR_IS_FATAL ANY)")
+  if(NAVLINK_INSTALL_STRIPPED)
+    install(CODE "${strip}")
+  elseif(type STREQUAL "STATIC_LIBRARY")
+    # CMake's own stripping (`--strip`, and CPack's, which packages stripped) passes archives over, as a
+    # full strip would drop the symbols they are linked by: their debug info goes then too.
+    install(CODE "if(CMAKE_INSTALL_DO_STRIP)\n  ${strip}\nendif()")
+  endif()
 endfunction()
 
 # navlink_install_program(<target>): installs a program into bin/, finding libnavlink.so in the

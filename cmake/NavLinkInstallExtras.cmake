@@ -9,9 +9,9 @@ install(DIRECTORY docs/ DESTINATION ${NAVLINK_INSTALL_DOCDIR} FILES_MATCHING PAT
 install(FILES docs/README.md DESTINATION ${NAVLINK_INSTALL_DOCDIR} RENAME docs.md)
 install(FILES samples/README.md DESTINATION ${NAVLINK_INSTALL_DOCDIR} RENAME samples.md)
 
-# `cpack -G DEB` in the build folder: one package (library, headers, CMake package and navlink.pc,
-# the navlink tool, the viewer, the plugin modules, the docs), its run-time dependencies read from
-# what the binaries link (dpkg-shlibdeps). docs/shipping.md.
+# `cpack -G DEB` in the build folder: one package (libnavlink.so and libnavlink.a, headers, CMake package,
+# the .pc files, the navlink tool, the viewer, the plugin modules, the docs), its run-time dependencies
+# read from what the binaries link (dpkg-shlibdeps). docs/shipping.md.
 set(NAVLINK_PACKAGE_CONTACT "NavLink maintainers" CACHE STRING "The Debian package's Maintainer field")
 set(CPACK_PACKAGE_NAME navlink)
 set(CPACK_PACKAGE_VENDOR NavLink)
@@ -31,8 +31,12 @@ set(CPACK_DEBIAN_PACKAGE_SECTION libdevel)
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
 # libnavlink.so.0 is in the package itself: dpkg-shlibdeps finds it there for the programs.
 set(CPACK_DEBIAN_PACKAGE_GENERATE_SHLIBS ON)
-if(NOT NAVLINK_SHARED)
-  # A static libnavlink.a is linked with what it links: their -dev packages (navlink.pc's Libs.private).
-  set(CPACK_DEBIAN_PACKAGE_DEPENDS "libembree-dev, libtbb-dev, zlib1g-dev, librecast-dev")
+# libnavlink.a is linked with what it links: their -dev packages (navlink-static.pc's Libs.private). Beside
+# libnavlink.so only the hosts that link the archive need them; without the .so, every host does.
+set(_navlink_static_dev_packages "libembree-dev, libtbb-dev, zlib1g-dev, librecast-dev")
+if(NAVLINK_SHARED)
+  set(CPACK_DEBIAN_PACKAGE_SUGGESTS "${_navlink_static_dev_packages}")
+else()
+  set(CPACK_DEBIAN_PACKAGE_DEPENDS "${_navlink_static_dev_packages}")
 endif()
 include(CPack)

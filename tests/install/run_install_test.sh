@@ -1,5 +1,7 @@
 #!/usr/bin/env bash
-# Installs the built project into a fresh prefix under the build tree and uses it as a host would:
+# Installs the built project into a fresh prefix under the build tree and uses it as a host would,
+# linking the library given (default: the one the build makes; `static` for the libnavlink.a a shared
+# build installs beside libnavlink.so):
 #   1. the installed tree: headers, CMake package, navlink.pc, docs, and when the samples are built the
 #      navlink tool (runs --help and --version from the prefix alone) and the viewer, the plugin
 #      modules; each binary stripped when NAVLINK_INSTALL_STRIPPED is on;
@@ -9,21 +11,44 @@
 #      and a C++ program, runs them: a ray on a triangle, and a navmesh built, links generated and a
 #      path found over a jump (every library NavLink links is needed for that);
 #   4. a plain `cc $(pkg-config --cflags --libs navlink)` build does the same (`--static` for libnavlink.a).
-# The consumer sees only the installed headers, never the source tree's.
+# Beside libnavlink.so, the archive is asked for as a host would: find_package(NavLink ... COMPONENTS
+# static) and NavLink::navlink_static, `pkg-config --static navlink-static`; its programs must not load
+# libnavlink.so. The consumer sees only the installed headers, never the source tree's.
 #
-# Usage: run_install_test.sh <build-dir> <cmake-command> <source-dir>
+# Usage: run_install_test.sh <build-dir> <cmake-command> <source-dir> [shared|static]
 # Quiet on success; on failure prints what failed and the output of the failing step.
 set -uo pipefail
 
-if [ $# -ne 3 ]; then
-  echo "usage: $0 <build-dir> <cmake-command> <source-dir>" >&2
+usage="usage: $0 <build-dir> <cmake-command> <source-dir> [shared|static]"
+if [ $# -lt 3 ] || [ $# -gt 4 ]; then
+  echo "$usage" >&2
   exit 2
 fi
 build=$(cd "$1" && pwd -P) || exit 2
 cmake=$2
 source=$(cd "$3" && pwd -P) || exit 2
 
-work=$build/tests/install/work
+# What the build was configured to install.
+cache_value() { sed -n "s/^$1:[A-Z]*=//p" "$build/CMakeCache.txt" 2>/dev/null; }
+is_on() { case "$1" in ON|on|1|TRUE|true|YES|yes) return 0 ;; *) return 1 ;; esac; }
+shared=ON; is_on "$(cache_value NAVLINK_SHARED)" || shared=OFF
+stripped=ON; is_on "$(cache_value NAVLINK_INSTALL_STRIPPED)" || stripped=OFF
+samples=ON; is_on "$(cache_value NAVLINK_BUILD_SAMPLES)" || samples=OFF
+
+# The library the consumers link.
+linking=${4:-$([ "$shared" = ON ] && echo shared || echo static)}
+case "$linking" in
+  static) ;;
+  shared)
+    if [ "$shared" = OFF ]; then
+      echo "FAILED: $build is a static build (NAVLINK_SHARED=OFF): it has no libnavlink.so"
+      exit 1
+    fi ;;
+  *) echo "$usage" >&2; exit 2 ;;
+esac
+
+# One folder per library, so that both tests can run at once.
+work=$build/tests/install/work-$linking
 prefix=$work/prefix
 log=$work/step.log
 failures=0
@@ -78,13 +103,6 @@ done
 [ -f "$libdir/cmake/NavLink/NavLinkConfig.cmake" ] || fail "NavLinkConfig.cmake is not in $libdir/cmake/NavLink"
 [ -f "$libdir/cmake/NavLink/NavLinkConfigVersion.cmake" ] || fail "NavLinkConfigVersion.cmake is not installed"
 
-# What the build was configured to install.
-cache_value() { sed -n "s/^$1:[A-Z]*=//p" "$build/CMakeCache.txt" 2>/dev/null; }
-is_on() { case "$1" in ON|on|1|TRUE|true|YES|yes) return 0 ;; *) return 1 ;; esac; }
-shared=ON; is_on "$(cache_value NAVLINK_SHARED)" || shared=OFF
-stripped=ON; is_on "$(cache_value NAVLINK_INSTALL_STRIPPED)" || stripped=OFF
-samples=ON; is_on "$(cache_value NAVLINK_BUILD_SAMPLES)" || samples=OFF
-
 # The debug info is the build tree's; installed binaries have none (39 MB against under 1 MB).
 check_stripped() {
   if [ "$stripped" = ON ] && readelf -S "$1" 2>/dev/null | grep -q '\.debug_'; then
@@ -115,7 +133,7 @@ if [ "$samples" = ON ]; then
 fi
 
 # --- The installed library --------------------------------------------------------------------
-if [ "$shared" = ON ]; then
+if [ "$linking" = shared ]; then
   lib=$libdir/libnavlink.so
   if [ ! -e "$lib" ]; then
     fail "libnavlink.so is not in $libdir"
@@ -150,7 +168,12 @@ else
     fail "libnavlink.a is not in $libdir"
     finish
   fi
-  [ -e "$libdir/libnavlink.so" ] && fail "a static build installed libnavlink.so too"
+  if [ "$shared" = OFF ]; then
+    [ -e "$libdir/libnavlink.so" ] && fail "a static build installed libnavlink.so too"
+  else
+    [ -f "$libdir/cmake/NavLink/NavLinkStaticTargets.cmake" ] || fail "NavLinkStaticTargets.cmake is not installed"
+  fi
+  [ -f "$libdir/pkgconfig/navlink-static.pc" ] || fail "navlink-static.pc is not in $libdir/pkgconfig"
   check_stripped "$real"
   # Strong global definitions (text, data, bss, read-only): only nl_*, or the core's symbols would clash
   # with a host's. Weak ones (W, V, u) are the std templates' instances, the same in every program.
@@ -205,6 +228,17 @@ if [ ${#san_flags[@]} -gt 0 ]; then
                  -DCMAKE_EXE_LINKER_FLAGS="${san_flags[*]}")
 fi
 
+# How the consumers ask for the library: beside libnavlink.so, the archive by the names it has there.
+# libnavlink.a needs what it links on the command line too: the .pc file's Libs.private and Requires.private.
+cm_static=(); pc_module=navlink; pc_static=()
+if [ "$linking" = static ]; then
+  pc_static=(--static)
+  if [ "$shared" = ON ]; then
+    cm_static=(-DNAVLINK_CONSUMER_STATIC=ON)
+    pc_module=navlink-static
+  fi
+fi
+
 # Checks that a consumer binary loads the installed library, not the build tree's; linked with
 # libnavlink.a, that it loads no libnavlink at all.
 check_loads_installed() {
@@ -212,8 +246,11 @@ check_loads_installed() {
   shift 2
   local resolved
   resolved=$(env "$@" ldd "$binary" 2>/dev/null | awk '/libnavlink\.so/ { print $3 }')
-  if [ "$shared" = OFF ]; then
+  if [ "$linking" = static ]; then
     [ -z "$resolved" ] || fail "$how consumer, linked with libnavlink.a, loads a libnavlink.so ($resolved)"
+    if readelf -d "$binary" 2>/dev/null | grep -q '(NEEDED).*\[libnavlink'; then
+      fail "$how consumer, linked with libnavlink.a, names libnavlink in its NEEDED entries"
+    fi
     return
   fi
   case "$resolved" in
@@ -235,8 +272,9 @@ path_line="^path over 1 link"
 
 # --- (a) CMake: find_package(NavLink major.minor CONFIG REQUIRED) -------------------------------
 cm_build=$work/cmake-consumer
-if step "configure the CMake consumer (find_package(NavLink $major.$minor))" \
-    "$cmake" -S "$consumer_src" -B "$cm_build" -DNAVLINK_CONSUMER_VERSION="$major.$minor" "${cmake_common[@]}"; then
+if step "configure the CMake consumer (find_package(NavLink $major.$minor${cm_static[*]:+ COMPONENTS static}))" \
+    "$cmake" -S "$consumer_src" -B "$cm_build" -DNAVLINK_CONSUMER_VERSION="$major.$minor" "${cm_static[@]}" \
+    "${cmake_common[@]}"; then
   found=$(sed -n 's/^NavLink_DIR:PATH=//p' "$cm_build/CMakeCache.txt")
   [ "$found" = "$libdir/cmake/NavLink" ] || fail "find_package found NavLink in '$found', not in $libdir/cmake/NavLink"
   if step "build the CMake consumer" "$cmake" --build "$cm_build"; then
@@ -255,45 +293,46 @@ if step "configure the CMake consumer (find_package(NavLink $major.$minor))" \
     run_consumer "the CMake path consumer (C++)" "$path_line" env -u LD_LIBRARY_PATH "$cm_build/path_consumer_cxx"
     check_loads_installed "$cm_build/consumer" "the CMake" -u LD_LIBRARY_PATH
     check_loads_installed "$cm_build/path_consumer" "the CMake path" -u LD_LIBRARY_PATH
+    check_loads_installed "$cm_build/path_consumer_cxx" "the CMake C++ path" -u LD_LIBRARY_PATH
   fi
 fi
 
 # A newer minor (or major, from 1.0 on) than the installed one must be refused by the version file.
 if [ "$major" -eq 0 ]; then newer="0.$((minor + 1))"; else newer="$((major + 1)).0"; fi
 if "$cmake" -S "$consumer_src" -B "$work/cmake-consumer-newer" -DNAVLINK_CONSUMER_VERSION="$newer" \
-    "${cmake_common[@]}" >"$log" 2>&1; then
+    "${cm_static[@]}" "${cmake_common[@]}" >"$log" 2>&1; then
   fail "find_package(NavLink $newer) accepted the installed $major.$minor.$patch"
 fi
 
 # --- (b) pkg-config -----------------------------------------------------------------------------
 export PKG_CONFIG_PATH=$libdir/pkgconfig
 unset PKG_CONFIG_SYSROOT_DIR
-if step "pkg-config --modversion navlink" pkg-config --modversion navlink; then
+if step "pkg-config --modversion $pc_module" pkg-config --modversion "$pc_module"; then
   [ "$(cat "$log")" = "$major.$minor.$patch" ] || fail "pkg-config says version '$(cat "$log")', expected $major.$minor.$patch"
 fi
-# libnavlink.a needs what it links on the command line too: navlink.pc's Libs.private and Requires.private.
-pc_static=(); [ "$shared" = OFF ] && pc_static=(--static)
-if step "pkg-config ${pc_static[*]} --cflags --libs navlink" pkg-config "${pc_static[@]}" --cflags --libs navlink; then
+pc_command="pkg-config ${pc_static[*]:+${pc_static[*]} }--cflags --libs $pc_module"
+if step "$pc_command" pkg-config "${pc_static[@]}" --cflags --libs "$pc_module"; then
   read -r -a pc_flags <"$log"
   # The flags must lead into the prefix (the .pc file is relocatable) and nowhere else in the project.
   for flag in "${pc_flags[@]}"; do
     case "$flag" in
-      -I*|-L*|-Wl,-rpath,*)
-        path=${flag#-Wl,-rpath,}
-        [ "$path" = "$flag" ] && path=${flag:2}
-        dir=$(cd "$path" 2>/dev/null && pwd -P)
-        case "$dir" in
-          "$prefix"/*) ;;
-          *) fail "pkg-config flag $flag does not lead into $prefix" ;;
-        esac ;;
+      -I*|-L*) path=${flag:2} ;;
+      -Wl,-rpath,*) path=${flag#-Wl,-rpath,} ;;
+      /*) path=$(dirname "$flag") ;;  # navlink-static.pc's archive
+      *) continue ;;
+    esac
+    dir=$(cd "$path" 2>/dev/null && pwd -P)
+    case "$dir" in
+      "$prefix"/*) ;;
+      *) fail "pkg-config flag $flag does not lead into $prefix" ;;
     esac
   done
-  if [ "$shared" = ON ]; then
+  if [ "$linking" = shared ]; then
     printf '%s\n' "${pc_flags[@]}" | grep -q '^-Wl,-rpath,' || fail "navlink.pc's Libs carry no runpath to $libdir"
   fi
   for program in consumer path_consumer; do
     pc_bin=$work/pkgconfig-$program
-    if step "build $program.c with cc \$(pkg-config ${pc_static[*]} --cflags --libs navlink)" \
+    if step "build $program.c with cc \$($pc_command)" \
         cc -std=c11 -Wall -Wextra -pedantic -Werror "${san_flags[@]}" "$consumer_src/$program.c" -o "$pc_bin" \
         "${pc_flags[@]}" -lm; then
       # navlink.pc's runpath: the program finds the library it was built against with no

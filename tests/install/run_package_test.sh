@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # Builds the Debian package of a built tree (`cpack -G DEB`, into a fresh folder under it) and checks
-# what it holds (`dpkg-deb -c`: the library, headers, CMake package, navlink.pc, docs, and the
-# programs and plugin modules when the samples are built), that every binary in it is stripped, and
-# that its Depends were read from the binaries (dpkg-shlibdeps: Embree and TBB among them).
+# what it holds (`dpkg-deb -c`: libnavlink.so and libnavlink.a beside it, or the archive alone in a
+# static build, headers, CMake package, the .pc files, docs, and the programs and plugin modules when
+# the samples are built), that every binary in it is stripped (the archive keeping its nl_* symbols),
+# that its Depends were read from the binaries (dpkg-shlibdeps: Embree and TBB among them), and that
+# it names the -dev packages the archive's consumers link with.
 #
 # Usage: run_package_test.sh <build-dir>
 set -uo pipefail
@@ -35,12 +37,19 @@ contents=$(dpkg-deb -c "$deb" | awk '{ print $6 }' | sed 's|^\./|/|')
 # A here-string, not a pipe: grep -q stops at the first match, and under pipefail the writer's SIGPIPE
 # would count as a failure.
 has() { grep -qE "$1" <<<"$contents" || fail "the package holds no $2 ($1)"; }
-has '^/usr/lib/([^/]+/)?libnavlink\.(so\.[0-9.]+|a)$' "libnavlink"
+shared=OFF
+grep -q '^NAVLINK_SHARED:BOOL=ON' "$build/CMakeCache.txt" && shared=ON
+if [ "$shared" = ON ]; then
+  has '^/usr/lib/([^/]+/)?libnavlink\.so\.[0-9.]+$' "libnavlink.so"
+  has '^/usr/lib/([^/]+/)?cmake/NavLink/NavLinkStaticTargets\.cmake$' "NavLink::navlink_static"
+fi
+has '^/usr/lib/([^/]+/)?libnavlink\.a$' "libnavlink.a"
 has '^/usr/include/navlink/navlink\.h$' "navlink.h"
 has '^/usr/include/navlink/navlink\.hpp$' "navlink.hpp"
 has '^/usr/include/navlink/plugin\.h$' "plugin.h"
 has '^/usr/lib/([^/]+/)?cmake/NavLink/NavLinkConfig\.cmake$' "CMake package"
 has '^/usr/lib/([^/]+/)?pkgconfig/navlink\.pc$' "navlink.pc"
+has '^/usr/lib/([^/]+/)?pkgconfig/navlink-static\.pc$' "navlink-static.pc"
 has '^/usr/share/doc/navlink/shipping\.md$' "docs"
 if grep -q '^NAVLINK_BUILD_SAMPLES:BOOL=ON' "$build/CMakeCache.txt"; then
   has '^/usr/bin/navlink$' "navlink tool"
@@ -56,11 +65,20 @@ while IFS= read -r -d '' file; do
     fail "${file#"$unpacked"} is packaged with its debug info"
   fi
 done < <(find "$unpacked" -type f -print0)
+# Stripped of its debug info only: what its consumers link against is still there.
+archive=$(find "$unpacked" -name libnavlink.a | head -n 1)
+if [ -n "$archive" ] && ! grep -q ' T nl_get_version$' <<<"$(nm -g --defined-only "$archive" 2>/dev/null)"; then
+  fail "the packaged libnavlink.a does not define nl_get_version"
+fi
 
 depends=$(dpkg-deb -f "$deb" Depends)
 for library in libembree3 libtbb libc6; do
   grep -q "$library" <<<"$depends" || fail "Depends has no $library: '$depends'"
 done
+# What libnavlink.a links: needed by every host of a static build, suggested beside libnavlink.so.
+dev_field=Depends; [ "$shared" = ON ] && dev_field=Suggests
+dev_packages=$(dpkg-deb -f "$deb" "$dev_field")
+grep -q "libembree-dev" <<<"$dev_packages" || fail "$dev_field has no libembree-dev: '$dev_packages'"
 
 if [ "$failures" -ne 0 ]; then
   echo "package test: $failures check(s) failed (work directory kept: $work)"
