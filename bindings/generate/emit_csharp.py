@@ -383,10 +383,10 @@ def _id(s, t):
              "    public partial struct %s : IEquatable<%s>" % (name, name), "    {"] + fields + [
              "",
              "        public bool IsNull { get { return Index1 == 0u; } }",
-             "        public bool Equals(%s o) { return Index1 == o.Index1 && Generation == o.Generation; }" % name,
+             "        public bool Equals(%s o) { return Index1 == o.Index1 && Revision == o.Revision; }" % name,
              "        public override bool Equals(object o) { return o is %s && Equals((%s)o); }" % (name, name),
-             "        public override int GetHashCode() { return (int)(Index1 * 31u + Generation); }",
-             "        public override string ToString() { return \"%s{\" + Index1 + \",\" + Generation + \"}\"; }"
+             "        public override int GetHashCode() { return (int)(Index1 * 31u + Revision); }",
+             "        public override string ToString() { return \"%s{\" + Index1 + \",\" + Revision + \"}\"; }"
              % short,
              "    }", ""])
 
@@ -400,7 +400,7 @@ def _struct(s, t):
 
 
 STRUCT_FILES = [
-    ("Ids.g.cs", "The ids: {index1, generation} passed by value, all zero the null id; each its own type, so that a "
+    ("Ids.g.cs", "The ids: {index1, revision} passed by value, all zero the null id; each its own type, so that a "
                  "mesh id cannot be passed where a link id is expected."),
     ("Defs.g.cs", "The structs a caller fills for the library (defs and settings): each from the nl_default_* "
                   "function that returns it, whose values are the defaults."),

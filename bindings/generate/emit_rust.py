@@ -10,7 +10,7 @@ else its literal's (`1u` u32, `1` i32, `1.0f` f32, a string NUL-terminated `&[u8
 an array field's length is written as is a `usize`.
 
 What is derived, by the fields' types (tests/layout.rs checks the result against the C compiler):
-- every struct: `Clone, Copy`; `Debug`, except ids (`index1` and `generation`), whose `Debug` lib.rs's
+- every struct: `Clone, Copy`; `Debug`, except ids (`index1` and `revision`), whose `Debug` lib.rs's
   `id_debug!` writes by what they mean; ids also `Default, PartialEq, Eq, Hash`;
 - `PartialEq` unless a field is (or holds) a function pointer; `Eq` too unless one is a float;
 - `Default`: a struct the header defines an initialiser for (NL_DEFINE_OUTPUT_INIT) gets that function,

@@ -26,8 +26,8 @@ def enum_prefix(names):
 
 
 def is_id(struct):
-    """An id (nl_mesh_id, nl_path_ticket...): a struct of exactly `index1` and `generation`."""
-    return [f["name"] for f in struct["fields"]] == ["index1", "generation"]
+    """An id (nl_mesh_id, nl_path_ticket...): a struct of exactly `index1` and `revision`."""
+    return [f["name"] for f in struct["fields"]] == ["index1", "revision"]
 
 
 def ordered_items(model):

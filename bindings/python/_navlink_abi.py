@@ -453,16 +453,16 @@ AgentType._fields_ = [("radius", c_float), ("height", c_float), ("max_climb", c_
 NavmeshDef._fields_ = [("size", c_uint32), ("vertices", POINTER(c_float)), ("vertex_count", c_uint32),
                         ("vertex_stride", c_uint32), ("indices", POINTER(c_uint32)),
                         ("polygon_vertex_counts", POINTER(c_uint8)), ("polygon_count", c_uint32),
-                        ("areas", POINTER(c_uint8)), ("weld_tolerance", c_float), ("agent", AgentType),
+                        ("areas", POINTER(c_uint8)), ("weld_tolerance", c_float), ("agent_type", AgentType),
                         ("detail_vertices", POINTER(c_float)), ("detail_vertex_count", c_uint32),
                         ("detail_triangles", POINTER(c_uint32)), ("detail_triangle_count", c_uint32),
-                        ("detail_triangle_starts", POINTER(c_uint32)), ("surface", MeshId)]
+                        ("detail_triangle_starts", POINTER(c_uint32)), ("carrier", MeshId)]
 NavmeshInfo._fields_ = [("size", c_uint32), ("vertex_count", c_uint32), ("polygon_count", c_uint32),
                          ("portal_count", c_uint32), ("boundary_edge_count", c_uint32),
                          ("welded_vertex_count", c_uint32), ("flipped_polygon_count", c_uint32),
                          ("dropped_polygon_count", c_uint32), ("non_manifold_edge_count", c_uint32),
-                         ("agent", AgentType), ("bounds_min", c_float * 3), ("bounds_max", c_float * 3),
-                         ("surface", MeshId), ("turned_over_mesh_count", c_uint32), ("build_warnings", c_uint32)]
+                         ("agent_type", AgentType), ("bounds_min", c_float * 3), ("bounds_max", c_float * 3),
+                         ("carrier", MeshId), ("turned_over_mesh_count", c_uint32), ("build_warnings", c_uint32)]
 NavPolygon._fields_ = [("size", c_uint32), ("vertex_count", c_uint32), ("vertices", c_uint32 * 16),
                         ("neighbours", c_uint32 * 16), ("area", c_uint32), ("normal", c_float * 3),
                         ("centre", c_float * 3)]
@@ -471,9 +471,9 @@ BoundaryEdge._fields_ = [("start", c_float * 3), ("end", c_float * 3), ("outward
 NavPoint._fields_ = [("point", c_float * 3), ("distance", c_float), ("polygon", c_uint32), ("found", c_uint8),
                       ("beyond_box", c_uint8), ("reserved", c_uint8 * 2)]
 ProgressFn = CFUNCTYPE(c_int32, c_void_p, c_float, c_char_p)
-NavmeshBuildDef._fields_ = [("size", c_uint32), ("builder", c_char_p), ("agent", AgentType), ("settings", c_void_p),
-                             ("settings_json", c_char_p), ("settings_json_length", c_size_t), ("surface", MeshId),
-                             ("progress", ProgressFn), ("progress_user", c_void_p)]
+NavmeshBuildDef._fields_ = [("size", c_uint32), ("builder", c_char_p), ("agent_type", AgentType),
+                             ("settings", c_void_p), ("settings_json", c_char_p), ("settings_json_length", c_size_t),
+                             ("carrier", MeshId), ("progress", ProgressFn), ("progress_user", c_void_p)]
 LinkRequirements._fields_ = [("gap", c_float), ("rise", c_float), ("drop", c_float), ("clearance_width", c_float),
                               ("abilities", c_uint64), ("length", c_float), ("reserved", c_uint32)]
 Link._fields_ = [("size", c_uint32), ("kind", c_uint32), ("id", LinkId), ("navmesh", NavmeshId),
@@ -512,24 +512,24 @@ LinkGenerationReport._fields_ = [("size", c_uint32), ("edges", c_uint32), ("grou
                                   ("box_queries", c_uint64), ("body_tests", c_uint64),
                                   ("rejected_walkable", c_uint32), ("rejected_too_shallow", c_uint32),
                                   ("rejected_too_deep", c_uint32), ("reserved", c_uint32)]
-NavmeshLoadDef._fields_ = [("size", c_uint32), ("surface", MeshId), ("flags", c_uint32)]
+NavmeshLoadDef._fields_ = [("size", c_uint32), ("carrier", MeshId), ("flags", c_uint32)]
 NavmeshFileInfo._fields_ = [("size", c_uint32), ("version", c_uint32), ("file_size", c_uint64),
-                             ("agent", AgentType), ("vertex_count", c_uint32), ("polygon_count", c_uint32),
+                             ("agent_type", AgentType), ("vertex_count", c_uint32), ("polygon_count", c_uint32),
                              ("detail_triangle_count", c_uint32), ("link_count", c_uint32),
-                             ("generated_link_count", c_uint32), ("rides_surface", c_uint32), ("quantum", c_float),
+                             ("generated_link_count", c_uint32), ("rides_carrier", c_uint32), ("quantum", c_float),
                              ("reserved", c_uint32), ("level_hash", c_uint64)]
 AgentCapabilities._fields_ = [("max_jump_distance", c_float), ("max_jump_height", c_float),
                                ("max_drop_height", c_float), ("radius", c_float), ("abilities", c_uint64)]
 PathCallback = CFUNCTYPE(None, c_void_p, PathTicket, c_uint32)
 PathRequestDef._fields_ = [("size", c_uint32), ("navmesh", NavmeshId), ("start", c_float * 3),
                             ("goal", c_float * 3), ("search_half_extents", c_float * 3),
-                            ("agent", AgentCapabilities), ("area_costs", POINTER(c_float)),
+                            ("capabilities", AgentCapabilities), ("area_costs", POINTER(c_float)),
                             ("area_cost_count", c_uint32), ("link_cost", c_float), ("max_nodes", c_uint32),
                             ("accept_partial", c_uint8), ("reserved", c_uint8 * 3), ("callback", PathCallback),
                             ("user", c_void_p)]
 PathPoint._fields_ = [("size", c_uint32), ("position", c_float * 3), ("polygon", c_uint32), ("segment", c_uint32),
                        ("link", LinkId), ("apex", c_float * 3), ("reversed", c_uint8), ("reserved", c_uint8 * 3),
-                       ("surface_position", c_float * 3)]
+                       ("carrier_position", c_float * 3)]
 PathResultInfo._fields_ = [("size", c_uint32), ("outcome", c_uint32), ("status", c_uint32),
                             ("point_count", c_uint32), ("links_used", c_uint32), ("nodes_visited", c_uint32),
                             ("out_of_nodes", c_uint8), ("reserved", c_uint8 * 3), ("length", c_float),
@@ -543,8 +543,8 @@ PathFinished._fields_ = [("size", c_uint32), ("outcome", c_uint32), ("ticket", P
 PathQueueStats._fields_ = [("size", c_uint32), ("workers", c_uint32), ("queued", c_uint32), ("running", c_uint32),
                             ("unreleased", c_uint32), ("reserved", c_uint32), ("submitted", c_uint64),
                             ("finished", c_uint64)]
-QueryFilterDef._fields_ = [("size", c_uint32), ("agent", AgentCapabilities), ("area_costs", POINTER(c_float)),
-                            ("area_cost_count", c_uint32), ("reserved", c_uint32)]
+QueryFilterDef._fields_ = [("size", c_uint32), ("capabilities", AgentCapabilities),
+                            ("area_costs", POINTER(c_float)), ("area_cost_count", c_uint32), ("reserved", c_uint32)]
 NavmeshRay._fields_ = [("start", c_float * 3), ("start_polygon", c_uint32), ("end", c_float * 3)]
 NavmeshRaycastHit._fields_ = [("size", c_uint32), ("hit", c_uint8), ("reserved", c_uint8 * 3), ("t", c_float),
                                ("point", c_float * 3), ("wall_normal", c_float * 3), ("end_polygon", c_uint32),
@@ -561,7 +561,7 @@ AgentInfo._fields_ = [("size", c_uint32), ("state", c_uint32), ("id", AgentId), 
                        ("velocity", c_float * 3), ("polygon", c_uint32), ("reason", c_uint32), ("link", LinkId),
                        ("link_progress", c_float), ("destination", c_float * 3), ("has_destination", c_uint8),
                        ("reserved", c_uint8 * 3), ("corners_ahead", c_uint32), ("user_data", c_uint64),
-                       ("navmesh", NavmeshId), ("surface", MeshId), ("surface_position", c_float * 3),
+                       ("navmesh", NavmeshId), ("carrier", MeshId), ("carrier_position", c_float * 3),
                        ("reserved2", c_uint32)]
 AgentTrajectory._fields_ = [("size", c_uint32), ("kind", c_uint32), ("link", LinkId), ("from", c_float * 3),
                              ("to", c_float * 3), ("apex", c_float * 3), ("points", (c_float * 3) * 4),

@@ -1,5 +1,5 @@
 """The base classes of the ctypes structs in _navlink_abi.py (generated): field-naming reprs, output structs
-that set their own ``size``, ids that print as slot and generation, and fields read as the header's kinds."""
+that set their own ``size``, ids that print as slot and revision, and fields read as the header's kinds."""
 import ctypes
 import enum
 from ctypes import Structure, c_uint32, c_void_p, sizeof
@@ -66,27 +66,27 @@ class _Growable(_Struct):
 
 
 class _Id(_Struct):
-    """An id ({index1, generation}, passed by value). Prints as MeshId(index=3, generation=1): the slot index
+    """An id ({index1, revision}, passed by value). Prints as MeshId(index=3, revision=1): the slot index
     and how many times the slot has been used, read from the two fields (MeshId(null) for the null id)."""
-    _fields_ = [("index1", c_uint32), ("generation", c_uint32)]
+    _fields_ = [("index1", c_uint32), ("revision", c_uint32)]
     # docs/c-api.md, "Ids": index1's low 28 bits are the slot index + 1 (its top 4 the kind of object), and
-    # generation's low 20 bits count the slot's reuse (its top 12 name the world). For reading ids only.
+    # revision's low 20 bits count the slot's reuse (its top 12 name the world). For reading ids only.
     _SLOT_MASK = (1 << 28) - 1
-    _GENERATION_MASK = (1 << 20) - 1
+    _REVISION_MASK = (1 << 20) - 1
 
     def __eq__(self, other: object) -> bool:
         if type(self) is not type(other):
             return NotImplemented  # lets a PathRequest compare itself with its PathTicket
-        return (self.index1, self.generation) == (other.index1, other.generation)  # type: ignore[attr-defined]
+        return (self.index1, self.revision) == (other.index1, other.revision)  # type: ignore[attr-defined]
 
     def __hash__(self) -> int:
-        return hash((type(self).__name__, self.index1, self.generation))
+        return hash((type(self).__name__, self.index1, self.revision))
 
     def __repr__(self) -> str:
         if self.is_null:
             return "%s(null)" % type(self).__name__
-        return "%s(index=%d, generation=%d)" % (
-            type(self).__name__, self.slot_index, self.generation & self._GENERATION_MASK)
+        return "%s(index=%d, revision=%d)" % (
+            type(self).__name__, self.slot_index, self.revision & self._REVISION_MASK)
 
     @property
     def is_null(self) -> bool:

@@ -595,7 +595,7 @@ def _settle(future: asyncio.Future, outcome: Union[PathOutcome, int]) -> None:
 @PathCallback
 def _path_trampoline(user: int, ticket: PathTicket, outcome: int) -> None:
     # navlink.h: called exactly once per accepted request, so the entry goes.
-    _lookup(user, remove=True).finish(PathTicket(ticket.index1, ticket.generation), _outcome(outcome))
+    _lookup(user, remove=True).finish(PathTicket(ticket.index1, ticket.revision), _outcome(outcome))
 
 
 def _with_progress(progress: Optional[ProgressHandler], call: Callable[[Any, Any], int]) -> int:
@@ -639,8 +639,8 @@ def default_link_settings() -> LinkSettings:
 
 
 def default_navmesh_load_def() -> NavmeshLoadDef:
-    """The null surface and no flags: a NavmeshLoadDef for a raw nl_navmesh_load (World.load_navmesh takes
-    surface and same_level instead)."""
+    """The null carrier and no flags: a NavmeshLoadDef for a raw nl_navmesh_load (World.load_navmesh takes
+    carrier and same_level instead)."""
     return lib.nl_default_navmesh_load_def()
 
 
@@ -687,14 +687,14 @@ class PathQuery:
     numpy array of any float type...). area_costs: cost per metre walked in area i (a list or a buffer of
     numbers)."""
 
-    def __init__(self, navmesh: NavmeshId, start: Point, goal: Point, agent: AgentCapabilities) -> None:
+    def __init__(self, navmesh: NavmeshId, start: Point, goal: Point, capabilities: AgentCapabilities) -> None:
         d = lib.nl_default_path_request_def()
         self.navmesh = navmesh
         self.start: Tuple[float, ...] = tuple(start)
         self.goal: Tuple[float, ...] = tuple(goal)
         _point(self.start, "start"), _point(self.goal, "goal")  # refused here rather than when planned
         self.search_half_extents: Tuple[float, ...] = tuple(d.search_half_extents)
-        self.agent = agent
+        self.capabilities = capabilities
         self.area_costs: FloatValues = []
         self.link_cost: float = d.link_cost
         self.max_nodes: int = d.max_nodes
@@ -706,7 +706,7 @@ class PathQuery:
         d.start = _point(self.start, "start")
         d.goal = _point(self.goal, "goal")
         d.search_half_extents = _point(self.search_half_extents, "search_half_extents")
-        d.agent = self.agent
+        d.capabilities = self.capabilities
         costs = _c_array("area_costs", self.area_costs, c_float)
         d.area_costs = _pointer(costs, c_float) if costs.count else None
         d.area_cost_count = costs.count
@@ -722,13 +722,14 @@ class QueryFilter:
     area i (a list or a buffer of 32-bit floats, at most 256): an area of cost AREA_EXCLUDED is kept out of;
     other costs do not matter to these queries. QueryFilter() is nl_default_query_filter()."""
 
-    def __init__(self, agent: Optional[AgentCapabilities] = None, area_costs: FloatValues = ()) -> None:
-        self.agent = agent if agent is not None else lib.nl_default_query_filter().agent
+    def __init__(self, capabilities: Optional[AgentCapabilities] = None, area_costs: FloatValues = ()) -> None:
+        self.capabilities = (capabilities if capabilities is not None
+                             else lib.nl_default_query_filter().capabilities)
         self.area_costs: FloatValues = area_costs
 
     def _def(self) -> Tuple[QueryFilterDef, _CArray]:
         d = lib.nl_default_query_filter()
-        d.agent = self.agent
+        d.capabilities = self.capabilities
         costs = _c_array("area_costs", self.area_costs, c_float)
         d.area_costs = _pointer(costs, c_float) if costs.count else None
         d.area_cost_count = costs.count
@@ -833,7 +834,7 @@ class PathShortfall:
         self.has: float = info.has
         self.reversed: bool = info.reversed != 0
         self.missing_abilities: int = info.missing_abilities
-        self.link: LinkId = LinkId(info.link.index1, info.link.generation)
+        self.link: LinkId = LinkId(info.link.index1, info.link.revision)
         self.link_start: Tuple[float, ...] = tuple(info.link_start)
         self.text: str = info.text.decode("utf-8", "replace")
 
@@ -1123,12 +1124,12 @@ class World:
 
     # --- navmeshes ---
 
-    def build_navmesh(self, agent: Optional[AgentType] = None, recast: Optional[RecastSettings] = None,
+    def build_navmesh(self, agent_type: Optional[AgentType] = None, recast: Optional[RecastSettings] = None,
                       settings_json: Optional[str] = None, builder: Optional[str] = None,
-                      surface: Optional[MeshId] = None, progress: Optional[ProgressHandler] = None) -> NavmeshId:
+                      carrier: Optional[MeshId] = None, progress: Optional[ProgressHandler] = None) -> NavmeshId:
         """Builds a navmesh with a builder plugin ("recast" when None): from every static mesh, or with
-        `surface` (a MeshId of an MESH_MOVABLE mesh) from that mesh alone, in its own space; the navmesh
-        then rides it (navmesh_info(...).surface). MESH_NOT_IN_NAVMESH meshes are left out, MESH_OBSTACLE
+        `carrier` (a MeshId of an MESH_MOVABLE mesh) from that mesh alone, in its own space; the navmesh
+        then rides it (navmesh_info(...).carrier). MESH_NOT_IN_NAVMESH meshes are left out, MESH_OBSTACLE
         ones only block, and each mesh's area goes to the polygons over it. Meshes that look wound clockwise
         (turned over, they would hold much more floor for the agent than as given) are named in a logged
         warning with MESH_CLOCKWISE and counted in navmesh_info(...).turned_over_mesh_count. A level that
@@ -1140,9 +1141,9 @@ class World:
         (NavLinkError with STATUS_CANCELLED, nothing added); an exception it raises cancels the build and
         is raised here."""
         d = lib.nl_default_navmesh_build_def()
-        d.agent = agent if agent is not None else default_agent_type()
-        if surface is not None:
-            d.surface = surface
+        d.agent_type = agent_type if agent_type is not None else default_agent_type()
+        if carrier is not None:
+            d.carrier = carrier
         d.builder = builder.encode() if builder is not None else None
         d.settings = ctypes.addressof(recast) if recast is not None else None
         if settings_json is not None:
@@ -1158,14 +1159,14 @@ class World:
 
     def add_navmesh(self, vertices: FloatValues, indices: IndexValues,
                     polygon_vertex_counts: Optional[ByteValues] = None, areas: Optional[ByteValues] = None,
-                    weld_tolerance: Optional[float] = None, agent: Optional[AgentType] = None,
+                    weld_tolerance: Optional[float] = None, agent_type: Optional[AgentType] = None,
                     detail: Optional[Tuple[FloatValues, IndexValues, IndexValues]] = None,
-                    surface: Optional[MeshId] = None) -> NavmeshId:
+                    carrier: Optional[MeshId] = None) -> NavmeshId:
         """The host's navmesh (copied, repaired). vertices and indices as add_mesh takes them (rows of x y z
         first; indices: each polygon's corners, polygon after polygon); polygon_vertex_counts: corners per
         polygon (bytes), None when every polygon is a triangle; areas: an area id (byte) per polygon or
         None. detail: (vertices, triangles, triangle_starts: polygon count + 1 of them) or None. Lists
-        (flat or of rows) or buffers, read in place or converted once as add_mesh reads them. surface: a
+        (flat or of rows) or buffers, read in place or converted once as add_mesh reads them. carrier: a
         MeshId of an MESH_MOVABLE mesh the navmesh rides, or None; with one, the coordinates are in that
         mesh's own space and set_mesh_transform moves the navmesh with the mesh."""
         d = lib.nl_default_navmesh_def()
@@ -1191,8 +1192,8 @@ class World:
             d.areas = _pointer(keep[-1], c_uint8)
         if weld_tolerance is not None:
             d.weld_tolerance = weld_tolerance
-        if agent is not None:
-            d.agent = agent
+        if agent_type is not None:
+            d.agent_type = agent_type
         if detail is not None:
             dv, dt, ds = (_c_array("detail vertices", detail[0], c_float, group=3),
                           _c_array("detail triangles", detail[1], c_uint32, group=3),
@@ -1201,8 +1202,8 @@ class World:
             d.detail_vertices, d.detail_vertex_count = _pointer(dv, c_float), dv.count // 3
             d.detail_triangles, d.detail_triangle_count = _pointer(dt, c_uint32), dt.count // 3
             d.detail_triangle_starts = _pointer(ds, c_uint32)
-        if surface is not None:
-            d.surface = surface
+        if carrier is not None:
+            d.carrier = carrier
         navmesh = NavmeshId()
         _check(lib.nl_navmesh_add(self.pointer, byref(d), byref(navmesh)))
         return navmesh
@@ -1507,29 +1508,29 @@ class World:
         _check(lib.nl_navmesh_save_file(self.pointer, navmesh, os.fsencode(path)))
 
     @staticmethod
-    def _load_def(surface: Optional[MeshId], same_level: bool) -> NavmeshLoadDef:
+    def _load_def(carrier: Optional[MeshId], same_level: bool) -> NavmeshLoadDef:
         d = lib.nl_default_navmesh_load_def()
-        if surface is not None:
-            d.surface = surface
+        if carrier is not None:
+            d.carrier = carrier
         d.flags = NAVMESH_LOAD_SAME_LEVEL if same_level else 0
         return d
 
-    def load_navmesh(self, data: ByteValues, surface: Optional[MeshId] = None, same_level: bool = False) -> NavmeshId:
+    def load_navmesh(self, data: ByteValues, carrier: Optional[MeshId] = None, same_level: bool = False) -> NavmeshId:
         """Adds the navmesh and its links held in a navmesh file's bytes (new ids); returns its NavmeshId.
-        surface: the MESH_MOVABLE mesh it rides now, for a file whose navmesh rode one
-        (NavmeshFileInfo.rides_surface), else None. same_level: refuse (STATUS_INVALID_ARGUMENT) a file baked
+        carrier: the MESH_MOVABLE mesh it rides now, for a file whose navmesh rode one
+        (NavmeshFileInfo.rides_carrier), else None. same_level: refuse (STATUS_INVALID_ARGUMENT) a file baked
         from other level geometry than the world holds now. STATUS_VERSION_MISMATCH (not a NavLink navmesh
         file, or a newer format), STATUS_PARSE_ERROR (truncated or corrupted); nothing is added on failure."""
         file = _c_array("data", data, c_uint8)
-        d = self._load_def(surface, same_level)
+        d = self._load_def(carrier, same_level)
         navmesh = NavmeshId()
         _check(lib.nl_navmesh_load(self.pointer, file.items, file.count, byref(d), byref(navmesh)))
         return navmesh
 
-    def load_navmesh_file(self, path: Union[str, "os.PathLike[str]"], surface: Optional[MeshId] = None,
+    def load_navmesh_file(self, path: Union[str, "os.PathLike[str]"], carrier: Optional[MeshId] = None,
                           same_level: bool = False) -> NavmeshId:
         """load_navmesh from the file at `path`; also STATUS_NOT_FOUND (no such file), STATUS_IO_ERROR."""
-        d = self._load_def(surface, same_level)
+        d = self._load_def(carrier, same_level)
         navmesh = NavmeshId()
         _check(lib.nl_navmesh_load_file(self.pointer, os.fsencode(path), byref(d), byref(navmesh)))
         return navmesh
@@ -1659,7 +1660,7 @@ class World:
         while True:
             count, remaining = c_uint32(), c_uint32()
             _check(lib.nl_path_take_finished(self.pointer, buffer, len(buffer), byref(count), byref(remaining)))
-            taken += [FinishedPath(PathTicket(f.ticket.index1, f.ticket.generation), _outcome(f.outcome))
+            taken += [FinishedPath(PathTicket(f.ticket.index1, f.ticket.revision), _outcome(f.outcome))
                       for f in buffer[:count.value]]
             if remaining.value == 0:
                 return taken

@@ -121,7 +121,7 @@ def add_bridge_level(world):
     add_box(world, (6, -1, 0), (10, 0, 10))
     add_box(world, (4, -1, 8), (6, 0, 10))
     vertices, indices, corner_counts = bridge_navmesh_polygons()
-    navmesh = world.add_navmesh(vertices, indices, corner_counts, agent=bridge_agent_type())
+    navmesh = world.add_navmesh(vertices, indices, corner_counts, agent_type=bridge_agent_type())
     world.generate_links(navmesh)
     return navmesh
 
@@ -440,20 +440,20 @@ class NavmeshTest(NavLinkTestCase):
 
 
     def test_navmesh_on_a_moving_surface(self):
-        """A navmesh that rides a movable mesh (surface): given in the mesh's space, answered in the world
+        """A navmesh that rides a movable mesh (its carrier): given in the mesh's space, answered in the world
         where the mesh is now; only rigid moves, and the mesh stays while the navmesh rides it."""
         with nl.World() as world:
             raft = add_box(world, RAFT_LO, RAFT_HI, flags=nl.MESH_MOVABLE)
-            navmesh = world.add_navmesh(RAFT_QUAD, [0, 1, 2, 3], [4], surface=raft)
+            navmesh = world.add_navmesh(RAFT_QUAD, [0, 1, 2, 3], [4], carrier=raft)
             info = world.navmesh_info(navmesh)
-            self.assertEqual((info.surface, info.polygon_count), (raft, 1))
+            self.assertEqual((info.carrier, info.polygon_count), (raft, 1))
             on_raft, old_place = (10, 0.5, 3), (0, 0.5, 0)
             found = world.find_nearest(navmesh, [old_place, on_raft], (0.5, 2, 0.5))
             self.assertEqual([p.found for p in found], [1, 0], "before the move: at the origin")
 
             world.set_mesh_transform(raft, RAFT_MOVED)
             info = world.navmesh_info(navmesh)
-            self.assertEqual(info.surface, raft)
+            self.assertEqual(info.carrier, raft)
             self.assertTrue(info.bounds_min[0] <= 8.4 + 1e-3 and info.bounds_max[0] >= 11.6 - 1e-3 and
                             info.bounds_min[2] <= -3.6 + 1e-3 and info.bounds_max[2] >= 3.6 - 1e-3,
                             (list(info.bounds_min), list(info.bounds_max)))
@@ -472,8 +472,8 @@ class NavmeshTest(NavLinkTestCase):
             for point, world_xyz, mesh_xyz in ((first, (10, 0, 3), (-3, 0, 0)), (last, (10, 0, -3), (3, 0, 0))):
                 for got, want in zip(point.position, world_xyz):
                     self.assertAlmostEqual(got, want, places=4, msg="position (world)")
-                for got, want in zip(point.surface_position, mesh_xyz):
-                    self.assertAlmostEqual(got, want, places=4, msg="surface_position (the mesh's space)")
+                for got, want in zip(point.carrier_position, mesh_xyz):
+                    self.assertAlmostEqual(got, want, places=4, msg="carrier_position (the mesh's space)")
 
             # Only rigid moves for a mesh that carries a navmesh, and it cannot go while the navmesh rides it.
             self.assertFails(nl.STATUS_INVALID_ARGUMENT, "nl_mesh_set_transform", world.set_mesh_transform, raft,
@@ -481,20 +481,20 @@ class NavmeshTest(NavLinkTestCase):
             self.assertEqual(list(world.mesh_info(raft).transform), RAFT_MOVED, "a refused move moves nothing")
             self.assertFails(nl.STATUS_INVALID_ARGUMENT, "nl_mesh_remove", world.remove_mesh, raft)
 
-            # Recast on the raft alone, in its space, riding it; without a surface a build sees static meshes only.
-            built = world.build_navmesh(surface=raft)
-            self.assertEqual(world.navmesh_info(built).surface, raft)
+            # Recast on the raft alone, in its space, riding it; without a carrier a build sees static meshes only.
+            built = world.build_navmesh(carrier=raft)
+            self.assertEqual(world.navmesh_info(built).carrier, raft)
             self.assertEqual([p.found for p in world.find_nearest(built, [on_raft, old_place], (0.5, 2, 0.5))], [1, 0])
             self.assertFails(nl.STATUS_NOT_FOUND, "no triangles", world.build_navmesh)
             world.remove_navmesh(built)
             world.remove_navmesh(navmesh)
             world.remove_mesh(raft)
 
-            # A navmesh on no surface reports the null id, and its path points' surface_position is position.
+            # A navmesh on no carrier reports the null id, and its path points' carrier_position is position.
             ground = world.add_navmesh(FLOOR, QUAD)
-            self.assertTrue(world.navmesh_info(ground).surface.is_null)
+            self.assertTrue(world.navmesh_info(ground).carrier.is_null)
             stroll = world.find_path(nl.PathQuery(ground, (-4, 0, -4), (4, 0, 4), walker()))
-            self.assertTrue(all(list(q.surface_position) == list(q.position) for q in stroll.points))
+            self.assertTrue(all(list(q.carrier_position) == list(q.position) for q in stroll.points))
 
     def test_cross_link_onto_a_moving_surface(self):
         """A cross link (landing_navmesh) from a static ledge onto a navmesh riding a movable box: it holds while
@@ -502,7 +502,7 @@ class NavmeshTest(NavLinkTestCase):
         with nl.World() as world:
             ledge = world.add_navmesh(LEDGE_QUAD, [0, 1, 2, 3], [4])
             deck_box = add_box(world, DECK_LO, DECK_HI, flags=nl.MESH_MOVABLE)
-            deck = world.add_navmesh(DECK_QUAD, [0, 1, 2, 3], [4], surface=deck_box)
+            deck = world.add_navmesh(DECK_QUAD, [0, 1, 2, 3], [4], carrier=deck_box)
             d = nl.default_link_def()
             self.assertTrue(d.landing_navmesh.is_null, "a link within one navmesh by default")
             self.assertAlmostEqual(d.tolerance, 0.25, places=6)
@@ -558,8 +558,8 @@ class NavmeshTest(NavLinkTestCase):
             platform = add_box(world, PLATFORM_LO, PLATFORM_HI, flags=nl.MESH_MOVABLE, transform=platform_at(9))
             agent = nl.default_agent_type()
             agent.radius = 0.3
-            ledge = world.add_navmesh(LEDGE_TOP, [0, 1, 2, 3], [4], agent=agent)
-            deck = world.add_navmesh(PLATFORM_TOP, [0, 1, 2, 3], [4], agent=agent, surface=platform)
+            ledge = world.add_navmesh(LEDGE_TOP, [0, 1, 2, 3], [4], agent_type=agent)
+            deck = world.add_navmesh(PLATFORM_TOP, [0, 1, 2, 3], [4], agent_type=agent, carrier=platform)
             settings = nl.default_link_settings()
             settings.max_jump_gap = 2.0
 
@@ -627,7 +627,7 @@ def add_cell_row(world, row):
     agent = nl.default_agent_type()
     agent.radius = 0
     return world.add_navmesh(vertices, list(range(4 * len(columns))), polygon_vertex_counts=[4] * len(columns),
-                             agent=agent)
+                             agent_type=agent)
 
 
 def cell_body(jump):
@@ -658,7 +658,7 @@ class QueryTest(NavLinkTestCase):
         raw = nl.lib.nl_default_query_filter()
         self.assertEqual((raw.size, raw.area_cost_count, bool(raw.area_costs)), (ctypes.sizeof(nl.QueryFilterDef), 0, False))
         default = nl.default_query_filter()
-        self.assertEqual((default.agent.radius, list(default.area_costs)), (nl.default_agent_capabilities().radius, []))
+        self.assertEqual((default.capabilities.radius, list(default.area_costs)), (nl.default_agent_capabilities().radius, []))
         d = nl.lib.nl_default_random_points_def()
         self.assertEqual((d.size, d.radius, d.reachable_from, d.seed, bool(d.filter)),
                          (ctypes.sizeof(nl.RandomPointsDef), 0.0, nl.NO_POLYGON, 1, False))
@@ -675,7 +675,7 @@ class QueryTest(NavLinkTestCase):
         self.assertEqual(w.reachable_polygons(navmesh, 1, jumper), [0, 1, 2, 3])
         self.assertEqual(w.reachable_polygons(navmesh, 1, walker), [0, 1])
         self.assertEqual(w.islands(navmesh, jumper), ([0, 0, 1, 1, 2, 2], 3))
-        keep_out = nl.QueryFilter(jumper.agent, [nl.AREA_EXCLUDED])
+        keep_out = nl.QueryFilter(jumper.capabilities, [nl.AREA_EXCLUDED])
         self.assertEqual(w.islands(navmesh, keep_out), ([nl.NO_ISLAND] * 6, 0), "keeping out of area 0 leaves no island")
         self.assertEqual(w.can_reach(navmesh, [0, 0], [1, 0], keep_out), [False, True],
                          "an excluded polygon is reached from nowhere else, but reaches itself")
@@ -1055,9 +1055,9 @@ class NavmeshFileTest(NavLinkTestCase):
             self.assertGreaterEqual(info.version, 1)
             self.assertEqual(info.polygon_count, polygons)
             self.assertEqual((info.link_count, info.generated_link_count), (link_count, link_count - 1))
-            self.assertAlmostEqual(info.agent.radius, 0.6, places=6)
+            self.assertAlmostEqual(info.agent_type.radius, 0.6, places=6)
             self.assertEqual(info.quantum, 1 / 1024)
-            self.assertEqual(info.rides_surface, 0)
+            self.assertEqual(info.rides_carrier, 0)
             made_for = json.loads(made_for)
             self.assertIn("builder", made_for)
             self.assertEqual(made_for["builder"], "recast")
@@ -1387,7 +1387,7 @@ class AgentTest(NavLinkTestCase):
 
     def test_a_ferry_carries_walkers_across_a_chasm(self):
         """tests/core/world/surface_tests.cpp's ferry through the ABI: two walkers wait at the near ledge's gangway for
-        the shuttle, ride it across (info.navmesh: its deck; info.surface: the shuttle; surface_position: in the
+        the shuttle, ride it across (info.navmesh: its deck; info.carrier: the shuttle; carrier_position: in the
         shuttle's space), and get off onto the far ledge by the other gangway."""
         with nl.World() as world:
             add_box(world, FERRY_NEAR_LO, FERRY_NEAR_HI)
@@ -1395,8 +1395,8 @@ class AgentTest(NavLinkTestCase):
             shuttle = add_box(world, PLATFORM_LO, PLATFORM_HI, flags=nl.MESH_MOVABLE, transform=platform_at(FERRY_FAR_DOCK))
             agent = nl.default_agent_type()
             agent.radius = 0.3
-            ledges = world.add_navmesh(FERRY_LEDGES, list(range(8)), [4, 4], agent=agent)
-            deck = world.add_navmesh(PLATFORM_TOP, [0, 1, 2, 3], [4], agent=agent, surface=shuttle)
+            ledges = world.add_navmesh(FERRY_LEDGES, list(range(8)), [4, 4], agent_type=agent)
+            deck = world.add_navmesh(PLATFORM_TOP, [0, 1, 2, 3], [4], agent_type=agent, carrier=shuttle)
 
             def gangway(navmesh, start, landing, end):
                 d = nl.default_link_def()  # NL_LINK_MANUAL, tolerance 0.25
@@ -1418,8 +1418,8 @@ class AgentTest(NavLinkTestCase):
                 walkers.append(world.add_agent(d))
                 world.set_agent_destination(walkers[-1], FERRY_GOAL)
             start = world.agent_info(walkers[0])
-            self.assertEqual((start.navmesh, start.surface.is_null), (ledges, True), "standing on the near ledge")
-            self.assertEqual(list(start.surface_position), list(start.position))
+            self.assertEqual((start.navmesh, start.carrier.is_null), (ledges, True), "standing on the near ledge")
+            self.assertEqual(list(start.carrier_position), list(start.position))
 
             t = 4.0  # the shuttle has just left: the first to reach the gangway waits for it
             arrived, waited, riding, taken, failed = {}, 0, 0, [], []
@@ -1438,35 +1438,35 @@ class AgentTest(NavLinkTestCase):
                     self.assertIn(info.navmesh, (ledges, deck))
                     if info.state in (nl.AGENT_JUMPING, nl.AGENT_FALLING, nl.AGENT_TRAVERSING):
                         # In the air over a cross link (both gangways are): flown in the world.
-                        self.assertLess(distance(info.surface_position, info.position), 1e-3, "in the air")
+                        self.assertLess(distance(info.carrier_position, info.position), 1e-3, "in the air")
                     elif info.navmesh == deck:
                         # On the deck: it rides the shuttle, whose centre is at (x, 0, 3), unturned.
                         riding += 1
-                        self.assertEqual(info.surface, shuttle, "on the deck, riding the shuttle")
-                        self.assertLess(distance(info.surface_position, (info.position[0] - x, info.position[1],
+                        self.assertEqual(info.carrier, shuttle, "on the deck, riding the shuttle")
+                        self.assertLess(distance(info.carrier_position, (info.position[0] - x, info.position[1],
                                                                          info.position[2] - 3)), 1e-3,
                                         "on the shuttle: %s at %s with its centre at x = %.3f"
-                                        % (list(info.surface_position), list(info.position), x))
+                                        % (list(info.carrier_position), list(info.position), x))
                     else:
-                        self.assertTrue(info.surface.is_null, "the ledges ride nothing")
-                        self.assertLess(distance(info.surface_position, info.position), 1e-3, "on no surface")
+                        self.assertTrue(info.carrier.is_null, "the ledges ride nothing")
+                        self.assertLess(distance(info.carrier_position, info.position), 1e-3, "on no carrier")
                 for e in events:
                     if e.kind == nl.AGENT_EVENT_ARRIVED:
                         info = world.agent_info(e.agent)
-                        arrived[e.agent] = (info.navmesh, info.surface.is_null, info.position)
+                        arrived[e.agent] = (info.navmesh, info.carrier.is_null, info.position)
 
             self.assertEqual(failed, [])
             self.assertEqual(set(arrived), set(walkers), "both arrived by t = %.1f s" % t)
             self.assertGreater(waited, 0, "an agent waited at the gangway for the shuttle (WAITING, info.link)")
-            self.assertGreater(riding, 0, "an agent stood on the shuttle's deck (info.navmesh, info.surface)")
+            self.assertGreater(riding, 0, "an agent stood on the shuttle's deck (info.navmesh, info.carrier)")
             for walker_id in walkers:
                 self.assertIn((walker_id, board), taken, "boarded by the near gangway")
                 self.assertIn((walker_id, leave), taken, "got off by the far gangway")
-                navmesh, no_surface, position = arrived[walker_id]
-                self.assertTrue(navmesh == ledges and no_surface, "arrived on the far ledge, on no surface")
+                navmesh, no_carrier, position = arrived[walker_id]
+                self.assertTrue(navmesh == ledges and no_carrier, "arrived on the far ledge, on no carrier")
                 self.assertLess(horizontal(position, FERRY_GOAL), 1.5, list(position))  # two bodies share the goal
                 info = world.agent_info(walker_id)
-                self.assertEqual((info.state, info.navmesh, info.surface.is_null), (nl.AGENT_ARRIVED, ledges, True))
+                self.assertEqual((info.state, info.navmesh, info.carrier.is_null), (nl.AGENT_ARRIVED, ledges, True))
 
     def test_bad_input(self):
         self.assertFails(nl.STATUS_INVALID_ARGUMENT, "agent_paths_per_step", nl.World, agent_paths_per_step=0)
@@ -1590,22 +1590,22 @@ class ReadableTest(NavLinkTestCase):
             self.assertRegex(repr(walked), r"^PathResult\(outcome=PARTIAL, length=\d+\.\d\d m, points=\d+, links=0\)$")
             jump = next(p for p in path.points if p.segment == nl.LINK_JUMP)
             self.assertRegex(repr(jump), r"^PathPoint\(position=\(-[\d.]+, [-\d.e]+, [-\d.e]+\), polygon=\d+, "
-                                         r"segment=JUMP, link=LinkId\(index=\d+, generation=1\), apex=\(.*\), reversed=0, "
-                                         r"surface_position=\(.*\)\)$")
+                                         r"segment=JUMP, link=LinkId\(index=\d+, revision=1\), apex=\(.*\), reversed=0, "
+                                         r"carrier_position=\(.*\)\)$")
             self.assertNotIn("size=", repr(jump))
             self.assertNotIn("reserved", repr(jump))
 
             d = nl.default_agent_def()
             d.navmesh, d.position = navmesh, nl.Vec3(*WEST)
             info = world.agent_info(world.add_agent(d))
-            self.assertTrue(repr(info).startswith("AgentInfo(state=IDLE, id=AgentId(index=0, generation=1), position=(-6, "),
+            self.assertTrue(repr(info).startswith("AgentInfo(state=IDLE, id=AgentId(index=0, revision=1), position=(-6, "),
                             repr(info))
             self.assertIn("reason=NONE", repr(info))
-            self.assertIn("navmesh=NavmeshId(index=0, generation=1), surface=MeshId(null)", repr(info))
+            self.assertIn("navmesh=NavmeshId(index=0, revision=1), carrier=MeshId(null)", repr(info))
             self.assertEqual(repr(nl.LinkId()), "LinkId(null)")
             world.remove_agent(info.id)
             again = world.add_agent(d)
-            self.assertEqual((repr(again), again.slot_index), ("AgentId(index=0, generation=2)", 0), "the slot reused")
+            self.assertEqual((repr(again), again.slot_index), ("AgentId(index=0, revision=2)", 0), "the slot reused")
             near = world.find_nearest(navmesh, [EAST], (1, 2, 1))[0]
             self.assertRegex(repr(near), r"^NavPoint\(point=\(6, [\d.]+, 0\), distance=[\d.]+, polygon=\d+, found=1, "
                                          r"beyond_box=0\)$")
@@ -1650,7 +1650,7 @@ class PluginTest(NavLinkTestCase):
             navmesh.indices = ctypes.cast(square, ctypes.POINTER(ctypes.c_uint32))
             navmesh.polygon_vertex_counts = ctypes.cast(corners, ctypes.POINTER(ctypes.c_uint8))
             navmesh.polygon_count = 1
-            navmesh.agent = build_def.contents.agent
+            navmesh.agent_type = build_def.contents.agent_type
             if host.size >= ctypes.sizeof(nl.PluginHost):  # a host that keeps what a build used
                 status = host.record_build_settings(host.context, self.USED, len(self.USED))
                 if nl.failed(status):
@@ -1762,9 +1762,9 @@ class BufferTest(NavLinkTestCase):
         vertices, indices, corner_counts = bridge_navmesh_polygons()
         areas = [3, 1, 4, 1, 5]
         with nl.World() as world:
-            from_lists = world.add_navmesh(vertices, indices, corner_counts, areas=areas, agent=bridge_agent_type())
+            from_lists = world.add_navmesh(vertices, indices, corner_counts, areas=areas, agent_type=bridge_agent_type())
             from_buffers = world.add_navmesh(array.array("f", vertices), array.array("I", indices),
-                                             bytes(corner_counts), areas=bytearray(areas), agent=bridge_agent_type())
+                                             bytes(corner_counts), areas=bytearray(areas), agent_type=bridge_agent_type())
             for navmesh in (from_lists, from_buffers):
                 info = world.navmesh_info(navmesh)
                 self.assertEqual(info.polygon_count, 5)
@@ -1875,10 +1875,10 @@ class BufferTest(NavLinkTestCase):
                 polygons.append(flat_indices[start:start + n])
                 start += n
             navmesh = world.add_navmesh(rows, polygons, corner_counts, areas=array.array("q", [3, 1, 4, 1, 5]),
-                                        agent=bridge_agent_type())
+                                        agent_type=bridge_agent_type())
             self.assertEqual(world.navmesh_vertices(navmesh),
                              world.navmesh_vertices(world.add_navmesh(flat_vertices, flat_indices, corner_counts,
-                                                                      agent=bridge_agent_type())))
+                                                                      agent_type=bridge_agent_type())))
             near = world.find_nearest(navmesh, [(2, 1, 4), [8, 1, 4]], array.array("d", [1, 2, 1]))
             self.assertTrue(all(p.found for p in near) and len(near) == 2)
             self.assertNear(near[1].point, (8, 0, 4), "points as a list of rows")

@@ -73,8 +73,8 @@ nl_agent_info to_c(const nl::AgentInfo& a) {
     c.has_destination = a.has_destination ? 1 : 0;
     c.corners_ahead = a.corners_ahead;
     c.navmesh = to_id<nl_navmesh_id>(a.navmesh);
-    c.surface = to_id<nl_mesh_id>(a.surface);
-    copy_point(c.surface_position, a.surface_position);
+    c.carrier = to_id<nl_mesh_id>(a.carrier);
+    copy_point(c.carrier_position, a.carrier_position);
     c.user_data = a.user_data;
     return c;
 }
@@ -202,8 +202,8 @@ NL_API nl_status nl_agent_get_trajectory(const nl_world* world, nl_agent_id agen
         const std::optional<nl::LinkMotion>& motion = flight.motion;
         t.kind = trajectory_kind(motion->kind());
         t.link = to_id<nl_link_id>(flight.link);
-        // Flown in its navmesh's space: on a moving surface, shown where the surface is now.
-        const nl::SurfacePose& pose = flight.pose;
+        // Flown in its navmesh's space: on a moving carrier, shown where the carrier is now.
+        const nl::CarrierPose& pose = flight.pose;
         copy_point(t.from, pose.world_point(motion->from()));
         copy_point(t.to, pose.world_point(motion->to()));
         copy_point(t.apex, pose.world_point(motion->apex()));

@@ -12,15 +12,15 @@
 
 namespace nl::capi {
 
-// Every nl_*_id is {index1, generation}, as a core Handle.
+// Every nl_*_id is {index1, revision}, as a core Handle.
 template <typename Id>
 Handle to_handle(Id id) {
-    return Handle{id.index1, id.generation};
+    return Handle{id.index1, id.revision};
 }
 
 template <typename Id>
 Id to_id(Handle h) {
-    return Id{h.index1, h.generation};
+    return Id{h.index1, h.revision};
 }
 
 // A position the host passed (3 floats), refused when not finite or beyond the coordinate limit;

@@ -8,7 +8,7 @@
 #include "navlink/navlink.h"
 #include "navmesh/navmesh_builder.h"
 #include "links/link.h"
-#include "navmesh/surface_pose.h"
+#include "navmesh/carrier_pose.h"
 #include "path/path_query.h"
 
 namespace nl::capi {
@@ -32,7 +32,7 @@ Link link_from_def(const nl_link_def& def);
 inline void copy_point(float* out, const Vec3& v) { Eigen::Map<Vec3>{out} = v; }
 
 // A navmesh point as the host reads it, in the world (the navmesh's pose applied).
-nl_nav_point to_c(const NavPoint& point, const SurfacePose& pose);
+nl_nav_point to_c(const NavPoint& point, const CarrierPose& pose);
 
 // A body's capabilities and area costs as a path request or a query filter gives them, checked;
 // failures name the fields after `prefix` ("def->", "filter->").

@@ -38,7 +38,7 @@ namespace nl::capi {
 AgentType to_core(const nl_agent_type& a) { return AgentType{a.radius, a.height, a.max_climb, a.max_slope}; }
 nl_agent_type to_c(const AgentType& a) { return nl_agent_type{a.radius, a.height, a.max_climb, a.max_slope}; }
 
-nl_nav_point to_c(const NavPoint& p, const SurfacePose& pose) {
+nl_nav_point to_c(const NavPoint& p, const CarrierPose& pose) {
     nl_nav_point r{};
     r.found = p.found ? 1 : 0;
     r.polygon = p.polygon;
@@ -68,7 +68,7 @@ NavMeshInput navmesh_input_from_def(const nl_navmesh_def& given) {
     in.indices.assign(def.indices, def.indices + index_count);
     if (def.areas) in.areas.assign(def.areas, def.areas + def.polygon_count);
     in.weld_tolerance = def.weld_tolerance;
-    in.agent = to_core(def.agent);
+    in.agent_type = to_core(def.agent_type);
 
     const bool any_detail = def.detail_vertices || def.detail_triangles || def.detail_triangle_starts ||
                             def.detail_vertex_count || def.detail_triangle_count;
@@ -90,7 +90,7 @@ NavMeshInput navmesh_input_from_def(const nl_navmesh_def& given) {
 void navmesh_get_info(const World& world, nl_navmesh_id navmesh, nl_navmesh_info* out_info) {
     const auto mesh = world.navmeshes().navmesh(to_handle(navmesh));
     const auto frame = world.navmeshes().frame(to_handle(navmesh));
-    const nl::SurfacePose pose = nl::pose_of(frame);
+    const nl::CarrierPose pose = nl::pose_of(frame);
     require(out_info, "out_info");
     nl_navmesh_info info{};
     info.size = sizeof info;
@@ -102,11 +102,11 @@ void navmesh_get_info(const World& world, nl_navmesh_id navmesh, nl_navmesh_info
     info.flipped_polygon_count = mesh->repairs().flipped_polygons;
     info.dropped_polygon_count = mesh->repairs().dropped_polygons;
     info.non_manifold_edge_count = mesh->repairs().non_manifold_edges;
-    info.agent = to_c(mesh->agent());
+    info.agent_type = to_c(mesh->agent());
     const nl::Aabb bounds = pose.world_box(mesh->bounds());
     copy_point(info.bounds_min, bounds.min);
     copy_point(info.bounds_max, bounds.max);
-    if (frame) info.surface = to_id<nl_mesh_id>(frame->mesh());
+    if (frame) info.carrier = to_id<nl_mesh_id>(frame->mesh());
     const nl::MadeFor made_for = world.navmeshes().made_for(to_handle(navmesh));
     info.turned_over_mesh_count = static_cast<uint32_t>(made_for.turned_over_meshes.size());
     info.build_warnings = made_for.warnings;
@@ -116,7 +116,7 @@ void navmesh_get_info(const World& world, nl_navmesh_id navmesh, nl_navmesh_info
 void navmesh_get_boundary_edges(const World& world, nl_navmesh_id navmesh, nl_boundary_edge* out_edges, uint32_t capacity,
                                 uint32_t* out_count) {
     const auto mesh = world.navmeshes().navmesh(to_handle(navmesh));
-    const nl::SurfacePose pose = world.navmesh_pose(to_handle(navmesh));
+    const nl::CarrierPose pose = world.navmesh_pose(to_handle(navmesh));
     list_into(mesh->boundary_edges(), out_edges, capacity, out_count, "out_edges", [&](const BoundaryEdge& e) {
         nl_boundary_edge out{};
         copy_point(out.start, pose.world_point(e.start));
@@ -132,7 +132,7 @@ void navmesh_get_boundary_edges(const World& world, nl_navmesh_id navmesh, nl_bo
 void navmesh_find_nearest(const World& world, nl_navmesh_id navmesh, const float* points, uint32_t count,
                           const float* half_extents, nl_nav_point* out) {
     const auto mesh = world.navmeshes().navmesh(to_handle(navmesh));
-    const nl::SurfacePose pose = world.navmesh_pose(to_handle(navmesh));
+    const nl::CarrierPose pose = world.navmesh_pose(to_handle(navmesh));
     require(half_extents, "half_extents");
     const Vec3 extents(half_extents[0], half_extents[1], half_extents[2]);
     if (!(extents.array() > 0.0f).all() || !within_coordinate_limit(extents))
@@ -146,12 +146,12 @@ void navmesh_find_nearest(const World& world, nl_navmesh_id navmesh, const float
     }
     world.tasks().parallel_for(count, 256, [&](uint32_t begin, uint32_t end) {
         for (uint32_t i = begin; i < end; ++i) {
-            const Vec3 point = pose.surface_point(Eigen::Map<const Vec3>(points + 3 * size_t(i)));
-            const NavPoint p = mesh->find_nearest(point, pose.surface_extents(extents));
+            const Vec3 point = pose.carrier_point(Eigen::Map<const Vec3>(points + 3 * size_t(i)));
+            const NavPoint p = mesh->find_nearest(point, pose.carrier_extents(extents));
             out[i] = to_c(p, pose);
             if (p.found) continue;
             // Why nothing was found: where the navmesh is, beyond the box.
-            const NavPoint beyond = mesh->find_nearest_anywhere(point, pose.surface_extents(extents));
+            const NavPoint beyond = mesh->find_nearest_anywhere(point, pose.carrier_extents(extents));
             if (!beyond.found) continue;
             out[i].beyond_box = 1;
             out[i].distance = beyond.distance;
@@ -170,7 +170,7 @@ NL_API nl_navmesh_def nl_default_navmesh_def(void) {
     nl_navmesh_def def{};
     def.size = sizeof(nl_navmesh_def);
     def.weld_tolerance = 0.001f;
-    def.agent = nl_default_agent_type();
+    def.agent_type = nl_default_agent_type();
     return def;
 }
 
@@ -181,7 +181,7 @@ NL_API nl_status nl_navmesh_add(nl_world* world, const nl_navmesh_def* def, nl_n
         require(out_id, "out_id");
         const nl_navmesh_def full = nl::capi::read_growable(*def, nl_default_navmesh_def(), nl::capi::kFirstSize<nl_navmesh_def>, "def");
         *out_id = to_id<nl_navmesh_id>(nl::naming_fields(
-            "def->", [&] { return w.add_navmesh(nl::capi::navmesh_input_from_def(*def), to_handle(full.surface)); }));
+            "def->", [&] { return w.add_navmesh(nl::capi::navmesh_input_from_def(*def), to_handle(full.carrier)); }));
     });
 }
 
@@ -205,7 +205,7 @@ NL_API nl_status nl_navmesh_get_vertices(const nl_world* world, nl_navmesh_id na
                                          uint32_t capacity, uint32_t* out_count) {
     return guarded("nl_navmesh_get_vertices", world, [&] {
         const auto mesh = deref(world).navmeshes().navmesh(to_handle(navmesh));
-        const nl::SurfacePose pose = deref(world).navmesh_pose(to_handle(navmesh));
+        const nl::CarrierPose pose = deref(world).navmesh_pose(to_handle(navmesh));
         nl::capi::list_into(mesh->vertex_count(), out_xyz, capacity, out_count, "out_xyz", [&] {
             for (uint32_t i = 0; i < mesh->vertex_count(); ++i) copy_point(out_xyz + 3 * size_t(i), pose.world_point(mesh->vertex(i)));
         });
@@ -216,7 +216,7 @@ NL_API nl_status nl_navmesh_get_polygon(const nl_world* world, nl_navmesh_id nav
                                         nl_nav_polygon* out_polygon) {
     return guarded("nl_navmesh_get_polygon", world, [&] {
         const auto mesh = deref(world).navmeshes().navmesh(to_handle(navmesh));
-        const nl::SurfacePose pose = deref(world).navmesh_pose(to_handle(navmesh));
+        const nl::CarrierPose pose = deref(world).navmesh_pose(to_handle(navmesh));
         require(out_polygon, "out_polygon");
         if (polygon >= mesh->polygon_count())
             fail(ErrorCode::InvalidArgument, "polygon ", polygon, " is out of range (polygon_count = ", mesh->polygon_count(), ")");

@@ -29,7 +29,7 @@ std::vector<uint8_t> saved_file(const nl::World& w, nl_navmesh_id navmesh) {
     const nl::NavMeshRegistry::Saved saved = w.navmeshes().saved(to_handle(navmesh));
     std::vector<nl::Link> links;
     for (const nl::StoredLink& l : *saved.links) links.push_back(l.link);
-    return nl::write_navmesh_file(*saved.navmesh, links, saved.made_for, saved.rides_surface);
+    return nl::write_navmesh_file(*saved.navmesh, links, saved.made_for, saved.rides_carrier);
 }
 
 nl::NavMeshFile read_file(const void* data, size_t size) {
@@ -41,14 +41,14 @@ nl_navmesh_id load(nl::World& w, const nl::NavMeshFile& file, const nl_navmesh_l
     const nl_navmesh_load_def def =
         given ? nl::capi::read_growable(*given, nl_default_navmesh_load_def(), nl::capi::kFirstSize<nl_navmesh_load_def>, "def") : nl_default_navmesh_load_def();
     if (def.flags & ~kKnownLoadFlags) fail(ErrorCode::InvalidArgument, "def->flags has unknown bits 0x", std::hex, def.flags & ~kKnownLoadFlags);
-    const nl::Handle surface = nl::capi::to_handle(def.surface);
+    const nl::Handle carrier = nl::capi::to_handle(def.carrier);
     if ((def.flags & NL_NAVMESH_LOAD_SAME_LEVEL) && file.made_for.level_hash != 0) {
-        const uint64_t now = nl::level_hash(w.level().triangles_to_build(surface));
+        const uint64_t now = nl::level_hash(w.level().triangles_to_build(carrier));
         if (now != file.made_for.level_hash)
             fail(ErrorCode::InvalidArgument, "the level is not the one the file was baked from (its hash is ", std::hex, now,
                  ", the file's ", file.made_for.level_hash, "): bake it again, or load it without NL_NAVMESH_LOAD_SAME_LEVEL");
     }
-    return nl::capi::to_id<nl_navmesh_id>(nl::naming_fields("def->", [&] { return w.load_navmesh(file, surface); }));
+    return nl::capi::to_id<nl_navmesh_id>(nl::naming_fields("def->", [&] { return w.load_navmesh(file, carrier); }));
 }
 
 }  // namespace
@@ -126,13 +126,13 @@ NL_API nl_status nl_navmesh_file_describe(const void* data, size_t size, nl_navm
             std::memset(&info, 0, sizeof info);
             info.version = file.version;
             info.file_size = size;
-            info.agent = nl::capi::to_c(file.navmesh.agent);
+            info.agent_type = nl::capi::to_c(file.navmesh.agent_type);
             info.vertex_count = static_cast<uint32_t>(file.navmesh.vertices.size());
             info.polygon_count = static_cast<uint32_t>(file.navmesh.polygon_sizes.size());
             info.detail_triangle_count = static_cast<uint32_t>(file.navmesh.detail_indices.size() / 3);
             info.link_count = static_cast<uint32_t>(file.links.size());
             for (const nl::Link& l : file.links) info.generated_link_count += l.generated;
-            info.rides_surface = file.rides_surface;
+            info.rides_carrier = file.rides_carrier;
             info.quantum = file.quantum;
             info.level_hash = file.made_for.level_hash;
             nl::capi::write_growable(out_info, info, nl::capi::kFirstSize<nl_navmesh_file_info>, "out_info");

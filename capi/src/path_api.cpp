@@ -37,7 +37,7 @@ nl::PathQuery read_query(const nl_path_request_def& def) {
     q.search_half_extents = nl::capi::read_position(def.search_half_extents, "def->search_half_extents");
     if (!(q.search_half_extents.array() > 0.0f).all())
         fail(ErrorCode::InvalidArgument, "def->search_half_extents must be > 0 in each axis");
-    q.agent = nl::capi::read_capabilities(def.agent, "def->");
+    q.capabilities = nl::capi::read_capabilities(def.capabilities, "def->");
     q.area_costs = nl::capi::read_area_costs(def.area_costs, def.area_cost_count, "def->");
     q.link_cost = read_amount(def.link_cost, "def->link_cost");
     q.max_nodes = def.max_nodes;
@@ -104,17 +104,17 @@ struct LastPlan {
     std::weak_ptr<const nl::PathGraph> graph;  // weak: a kept plan must not keep a removed navmesh
     nl::PathQuery query;
     nl::PathResult result;
-    uint64_t surface_moves = 0;  // of the navmesh's surface when planned: a plan from before a move is stale
+    uint64_t carrier_moves = 0;  // of the navmesh's carrier when planned: a plan from before a move is stale
     bool reusable = false;
 };
 
-uint64_t surface_moves(const nl::PathGraph& graph) { return graph.frame() ? graph.frame()->moves() : 0; }
+uint64_t carrier_moves(const nl::PathGraph& graph) { return graph.frame() ? graph.frame()->moves() : 0; }
 
 bool same_query(const nl::PathQuery& a, const nl::PathQuery& b) {
     return a.start == b.start && a.goal == b.goal && a.search_half_extents == b.search_half_extents &&
-           a.agent.max_jump_distance == b.agent.max_jump_distance && a.agent.max_jump_height == b.agent.max_jump_height &&
-           a.agent.max_drop_height == b.agent.max_drop_height && a.agent.radius == b.agent.radius &&
-           a.agent.abilities == b.agent.abilities && a.area_costs == b.area_costs && a.link_cost == b.link_cost &&
+           a.capabilities.max_jump_distance == b.capabilities.max_jump_distance && a.capabilities.max_jump_height == b.capabilities.max_jump_height &&
+           a.capabilities.max_drop_height == b.capabilities.max_drop_height && a.capabilities.radius == b.capabilities.radius &&
+           a.capabilities.abilities == b.capabilities.abilities && a.area_costs == b.area_costs && a.link_cost == b.link_cost &&
            a.max_nodes == b.max_nodes && a.accept_partial == b.accept_partial;
 }
 
@@ -136,9 +136,9 @@ NL_API nl_status nl_path_find(nl_world* world, const nl_path_request_def* def, n
         Request request = read_request(deref(world), def);
         thread_local LastPlan last;
         if (!(last.reusable && last.graph.lock() == request.graph && same_query(last.query, request.query) &&
-              last.surface_moves == surface_moves(*request.graph))) {
+              last.carrier_moves == carrier_moves(*request.graph))) {
             last.reusable = false;
-            last.surface_moves = surface_moves(*request.graph);
+            last.carrier_moves = carrier_moves(*request.graph);
             nl::plan_path(*request.graph, request.query, nullptr, last.result);
             last.graph = request.graph;
             last.query = std::move(request.query);
@@ -185,7 +185,7 @@ NL_API nl_path_request_def nl_default_path_request_def(void) {
     nl_path_request_def def{};
     def.size = sizeof(nl_path_request_def);
     for (int i = 0; i < 3; ++i) def.search_half_extents[i] = core.search_half_extents[i];
-    def.agent = nl_default_agent_capabilities();
+    def.capabilities = nl_default_agent_capabilities();
     def.link_cost = core.link_cost;
     def.max_nodes = core.max_nodes;
     def.accept_partial = core.accept_partial ? 1 : 0;
@@ -316,13 +316,13 @@ NL_API nl_status nl_path_get_queue_stats(const nl_world* world, nl_path_queue_st
 
 }  // extern "C"
 
-nl::AgentCapabilities nl::capi::read_capabilities(const nl_agent_capabilities& agent, const char* prefix) {
+nl::AgentCapabilities nl::capi::read_capabilities(const nl_agent_capabilities& capabilities, const char* prefix) {
     nl::AgentCapabilities a;
-    a.max_jump_distance = read_amount(agent.max_jump_distance, prefix, "agent.max_jump_distance");
-    a.max_jump_height = read_amount(agent.max_jump_height, prefix, "agent.max_jump_height");
-    a.max_drop_height = read_amount(agent.max_drop_height, prefix, "agent.max_drop_height");
-    a.radius = read_amount(agent.radius, prefix, "agent.radius");
-    a.abilities = agent.abilities;
+    a.max_jump_distance = read_amount(capabilities.max_jump_distance, prefix, "capabilities.max_jump_distance");
+    a.max_jump_height = read_amount(capabilities.max_jump_height, prefix, "capabilities.max_jump_height");
+    a.max_drop_height = read_amount(capabilities.max_drop_height, prefix, "capabilities.max_drop_height");
+    a.radius = read_amount(capabilities.radius, prefix, "capabilities.radius");
+    a.abilities = capabilities.abilities;
     return a;
 }
 
@@ -343,6 +343,6 @@ nl_path_point nl::capi::to_c(const nl::PathPoint& p) {
     c.link = to_id<nl_link_id>(p.link);
     Eigen::Map<nl::Vec3>(c.apex) = p.apex;
     c.reversed = p.reversed ? 1 : 0;
-    Eigen::Map<nl::Vec3>(c.surface_position) = p.surface_position;
+    Eigen::Map<nl::Vec3>(c.carrier_position) = p.carrier_position;
     return c;
 }

@@ -139,9 +139,9 @@ struct RunningBuild {
 BuiltNavMesh CPlugin::build(World&, const NavMeshBuildRequest& request) {
     RunningBuild running(*this, request);
     nl_navmesh_build_def def = nl_default_navmesh_build_def();
-    def.surface = to_id<nl_mesh_id>(request.surface);
+    def.carrier = to_id<nl_mesh_id>(request.carrier);
     def.builder = description_.name.c_str();
-    def.agent = to_c(request.agent);
+    def.agent_type = to_c(request.agent_type);
     def.settings = request.builder_settings;
     def.settings_json = request.settings_json;
     def.settings_json_length = request.settings_json_length;
@@ -210,7 +210,7 @@ void with_level_triangles(void* context, FunctionRef<void(const BuildTriangles&)
     const Level& level = world_of_plugin(context).level();
     if (running_build) {
         std::optional<BuildTriangles>& handed = running_build->handed;
-        if (!handed) handed = level.triangles_to_build(running_build->request.surface);
+        if (!handed) handed = level.triangles_to_build(running_build->request.carrier);
         use(*handed);
         return;
     }

@@ -37,7 +37,7 @@ nl_plugin_host make_plugin_host(void* context);
 World& world_of_plugin(void* context);
 const std::string& name_of_plugin(void* context);
 // Calls `use` with the level triangles a plugin is shown: during a navmesh build on this thread,
-// what the build is for (Level::triangles_to_build: the static meshes, or the surface mesh in its
+// what the build is for (Level::triangles_to_build: the static meshes, or the carrier mesh in its
 // own space, with their areas), gathered once per build so that every call of the build (the count,
 // the copy) sees the same level and the navmesh records the hash of what it was built from;
 // otherwise every mesh in the world, each triangle of area 0.

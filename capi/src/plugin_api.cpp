@@ -30,7 +30,7 @@ NL_API nl_navmesh_build_def nl_default_navmesh_build_def(void) {
     nl_navmesh_build_def def{};
     def.size = sizeof(nl_navmesh_build_def);
     def.builder = "recast";
-    def.agent = nl_default_agent_type();
+    def.agent_type = nl_default_agent_type();
     return def;
 }
 
@@ -43,11 +43,11 @@ NL_API nl_status nl_navmesh_build(nl_world* world, const nl_navmesh_build_def* d
             nl::capi::read_growable(*def, nl_default_navmesh_build_def(), nl::capi::kFirstSize<nl_navmesh_build_def>, "def");
         nl::NavMeshBuildRequest request;
         request.builder = settings.builder ? settings.builder : "recast";
-        request.agent = nl::capi::to_core(settings.agent);
+        request.agent_type = nl::capi::to_core(settings.agent_type);
         request.builder_settings = settings.settings;
         request.settings_json = settings.settings_json;
         request.settings_json_length = settings.settings_json_length;
-        request.surface = to_handle(settings.surface);
+        request.carrier = to_handle(settings.carrier);
         if (settings.progress) request.progress = nl::capi::progress_of(settings.progress, settings.progress_user);
         const auto start = std::chrono::steady_clock::now();
         *out_id = to_id<nl_navmesh_id>(nl::naming_fields("def->", [&] { return w.build_navmesh(request); }));

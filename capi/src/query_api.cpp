@@ -28,7 +28,7 @@ namespace {
 static_assert(NL_NO_ISLAND == nl::ReachabilityMap::kNoIsland, "header and core disagree");
 
 struct Body {
-    nl::AgentCapabilities agent;
+    nl::AgentCapabilities capabilities;
     std::vector<float> area_costs;
     std::array<uint64_t, 4> excluded;
 
@@ -47,7 +47,7 @@ Body read_filter(const nl_query_filter* given, const std::string& name) {
     const nl_query_filter filter = nl::capi::read_growable(*given, nl_default_query_filter(), nl::capi::kFirstSize<nl_query_filter>, name.c_str());
     const std::string prefix = name + "->";
     Body body;
-    body.agent = nl::capi::read_capabilities(filter.agent, prefix.c_str());
+    body.capabilities = nl::capi::read_capabilities(filter.capabilities, prefix.c_str());
     body.area_costs = nl::capi::read_area_costs(filter.area_costs, filter.area_cost_count, prefix.c_str());
     body.excluded = nl::ReachabilityClass::excluded_areas_of(body.area_costs);
     return body;
@@ -58,7 +58,7 @@ std::shared_ptr<const nl::PathGraph> graph_of(const nl::World& world, nl_navmesh
     return world.navmeshes().path_graph(to_handle(navmesh));
 }
 std::shared_ptr<const nl::ReachabilityMap> map_of(const nl::PathGraph& graph, const Body& body) {
-    return graph.reachability(body.agent, body.area_costs);
+    return graph.reachability(body.capabilities, body.area_costs);
 }
 
 void check_polygon(const nl::NavMesh& mesh, uint32_t polygon, const char* name) {
@@ -69,13 +69,13 @@ void check_polygon(const nl::NavMesh& mesh, uint32_t polygon, const char* name) 
 // A walk's start: in the navmesh's space, over its polygon. `prefix` parts name the struct the
 // fields are in ("rays[", 3, "]."), or nothing for a walk's own arguments; spelt out on failure only.
 template <typename... Prefix>
-Vec3 read_start(const nl::NavMesh& mesh, const nl::SurfacePose& pose, uint32_t polygon, const float* start,
+Vec3 read_start(const nl::NavMesh& mesh, const nl::CarrierPose& pose, uint32_t polygon, const float* start,
                 const Prefix&... prefix) {
     if (polygon >= mesh.polygon_count())
         fail(ErrorCode::InvalidArgument, prefix..., "start_polygon is ", polygon, " but the navmesh has ", mesh.polygon_count(),
              " polygons");
     if (!start) fail(ErrorCode::InvalidArgument, prefix..., "start is null");
-    const Vec3 local = pose.surface_point(nl::capi::read_position(start, prefix..., "start"));
+    const Vec3 local = pose.carrier_point(nl::capi::read_position(start, prefix..., "start"));
     if (mesh.over_polygon(polygon, local.x(), local.z())) return local;
     const Vec3 on = mesh.closest_point_on_polygon(polygon, local);
     const float dx = on.x() - local.x(), dz = on.z() - local.z();
@@ -107,7 +107,7 @@ extern "C" {
 NL_API nl_query_filter nl_default_query_filter(void) {
     nl_query_filter filter{};
     filter.size = sizeof(nl_query_filter);
-    filter.agent = nl_default_agent_capabilities();
+    filter.capabilities = nl_default_agent_capabilities();
     return filter;
 }
 
@@ -180,7 +180,7 @@ NL_API nl_status nl_navmesh_raycast(const nl_world* world, nl_navmesh_id navmesh
         const Body body = read_filter(filter, "filter");
         const nl::NavMeshRegistry::Placed placed = w.navmeshes().placed(to_handle(navmesh));
         const nl::NavMesh& mesh = *placed.navmesh;
-        const nl::SurfacePose pose = nl::pose_of(placed.frame);
+        const nl::CarrierPose pose = nl::pose_of(placed.frame);
         if (count == 0) return;
         require(rays, "rays");
         require(out_hits, "out_hits");
@@ -192,7 +192,7 @@ NL_API nl_status nl_navmesh_raycast(const nl_world* world, nl_navmesh_id navmesh
         ends.resize(count);
         for (uint32_t i = 0; i < count; ++i) {
             ends[i].first = read_start(mesh, pose, rays[i].start_polygon, rays[i].start, "rays[", i, "].");
-            ends[i].second = pose.surface_point(nl::capi::read_position(rays[i].end, "rays[", i, "].end"));
+            ends[i].second = pose.carrier_point(nl::capi::read_position(rays[i].end, "rays[", i, "].end"));
         }
         const auto passable_fn = [&](uint32_t p) { return body.may_enter(mesh, p); };
         const nl::PolygonFilter passable(passable_fn);
@@ -232,10 +232,10 @@ NL_API nl_status nl_navmesh_move_along_surface(const nl_world* world, nl_navmesh
         const Body body = read_filter(filter, "filter");
         const nl::NavMeshRegistry::Placed placed = w.navmeshes().placed(to_handle(navmesh));
         const nl::NavMesh* mesh = placed.navmesh.get();
-        const nl::SurfacePose pose = nl::pose_of(placed.frame);
+        const nl::CarrierPose pose = nl::pose_of(placed.frame);
         const Vec3 from = read_start(*mesh, pose, start_polygon, start);
         require(target, "target");
-        const Vec3 to = pose.surface_point(nl::capi::read_position(target, "target"));
+        const Vec3 to = pose.carrier_point(nl::capi::read_position(target, "target"));
         require(out_point, "out_point");
         check_polygons_output(out_polygons, capacity);
 
@@ -262,9 +262,9 @@ NL_API nl_status nl_navmesh_random_points(const nl_world* world, nl_navmesh_id n
         const Body body = read_filter(d.filter, "def->filter");
         const auto graph = graph_of(w, navmesh);
         const nl::NavMesh* mesh = &graph->navmesh();
-        const nl::SurfacePose pose = nl::pose_of(graph->frame());  // the graph's own navmesh and frame
+        const nl::CarrierPose pose = nl::pose_of(graph->frame());  // the graph's own navmesh and frame
         nl::RandomPointsRequest request;
-        request.centre = pose.surface_point(nl::capi::read_position(d.centre, "def->centre"));
+        request.centre = pose.carrier_point(nl::capi::read_position(d.centre, "def->centre"));
         request.radius = nl::capi::read_amount(d.radius, "def->radius");
         if (request.radius > nl::kCoordinateLimit) fail(ErrorCode::InvalidArgument, "def->radius is beyond the coordinate limit");
         request.seed = d.seed;

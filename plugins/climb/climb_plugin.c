@@ -132,15 +132,15 @@ static nl_status generate(void* state, const nl_plugin_host* host, nl_navmesh_id
             nl_ray_hit hit = nl_ray_hit_init();
             uint8_t blocked[2] = {0, 0};
             nl_nav_point top;
-            const float extents[3] = {info.agent.radius * 2.0f + 0.5f, 1.0f, info.agent.radius * 2.0f + 0.5f};
+            const float extents[3] = {info.agent_type.radius * 2.0f + 0.5f, 1.0f, info.agent_type.radius * 2.0f + 0.5f};
             nl_link_def link;
 
             /* A wall just past the edge, at chest height. */
-            chest.from[0] = p[0]; chest.from[1] = p[1] + 0.5f * info.agent.height; chest.from[2] = p[2];
+            chest.from[0] = p[0]; chest.from[1] = p[1] + 0.5f * info.agent_type.height; chest.from[2] = p[2];
             chest.to[0] = p[0] + ox * s.reach; chest.to[1] = chest.from[1]; chest.to[2] = p[2] + oz * s.reach;
             /* Room above the climber: straight up from the edge to above the top. */
             headroom.from[0] = p[0]; headroom.from[1] = p[1] + 0.1f; headroom.from[2] = p[2];
-            headroom.to[0] = p[0]; headroom.to[1] = p[1] + s.max_height + 0.5f * info.agent.height; headroom.to[2] = p[2];
+            headroom.to[0] = p[0]; headroom.to[1] = p[1] + s.max_height + 0.5f * info.agent_type.height; headroom.to[2] = p[2];
             {
                 const nl_segment both[2] = {chest, headroom};
                 status = host->segments_blocked(host->context, both, 2, blocked);
@@ -149,9 +149,9 @@ static nl_status generate(void* state, const nl_plugin_host* host, nl_navmesh_id
 
             /* The top: straight down from above the wall, a radius and a bit past its face. */
             memset(&down, 0, sizeof down);
-            down.origin[0] = p[0] + ox * (s.reach + info.agent.radius);
+            down.origin[0] = p[0] + ox * (s.reach + info.agent_type.radius);
             down.origin[1] = p[1] + s.max_height + 0.25f;
-            down.origin[2] = p[2] + oz * (s.reach + info.agent.radius);
+            down.origin[2] = p[2] + oz * (s.reach + info.agent_type.radius);
             down.direction[1] = -1.0f;
             down.max_distance = s.max_height + 0.25f;
             status = host->cast_rays(host->context, &down, 1, &hit);

@@ -71,7 +71,7 @@ nl_navmesh_def NavMeshExport::def(const nl_agent_type& agent) const {
     d.polygon_count = polygon_count();
     d.areas = areas_.data();
     d.weld_tolerance = 0.0f;  // Recast shares vertices between polygons already
-    d.agent = agent;
+    d.agent_type = agent;
     d.detail_vertices = detail_vertices_.data();
     d.detail_vertex_count = static_cast<uint32_t>(detail_vertices_.size() / 3);
     d.detail_triangles = detail_triangles_.data();

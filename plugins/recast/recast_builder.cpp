@@ -39,17 +39,17 @@ nl_status build(void* /*plugin_state*/, const nl_plugin_host* host, const nl_nav
         if (!sink) fail(NL_STATUS_INVALID_ARGUMENT, "sink is NULL");
         if (def->size < offsetof(nl_navmesh_build_def, settings_json_length) + sizeof def->settings_json_length)
             fail(NL_STATUS_INVALID_ARGUMENT, "def->size is ", def->size, ", smaller than an nl_navmesh_build_def");
-        validate_agent(def->agent);
+        validate_agent(def->agent_type);
         const nl_recast_settings settings = resolve_settings(*def);
         const BuildProgress progress(*host);
         progress.report(0.0f, "reading the level");
         const LevelTriangles level = fetch_level_triangles(*host);
 
         HostLogContext context(*host);
-        const SoloMesh mesh = build_solo_mesh(context, level, settings, def->agent, progress);
+        const SoloMesh mesh = build_solo_mesh(context, level, settings, def->agent_type, progress);
         progress.report(0.98f, "handing over the navmesh");
         const NavMeshExport navmesh(*mesh.polygons, *mesh.detail);
-        const nl_navmesh_def navmesh_def = navmesh.def(def->agent);
+        const nl_navmesh_def navmesh_def = navmesh.def(def->agent_type);
         const nl_status recorded = host_record_build_settings(*host, settings_to_json(settings));
         if (NL_FAILED(recorded)) fail(recorded & ~NL_STATUS_FAILURE, "the host refused the record of the settings used");
         // The sink reports its own failures; its status is the build's.

@@ -211,7 +211,7 @@ void apply_json(nl_recast_settings& s, const char* text, size_t length) {
 }
 
 void check_agent_field(const char* name, float v, bool ok, const char* rule) {
-    if (!std::isfinite(v) || !ok) fail(NL_STATUS_INVALID_ARGUMENT, "agent.", name, " must be ", rule, " (got ", v, ")");
+    if (!std::isfinite(v) || !ok) fail(NL_STATUS_INVALID_ARGUMENT, "agent_type.", name, " must be ", rule, " (got ", v, ")");
 }
 
 }  // namespace

@@ -120,7 +120,7 @@ rcConfig make_config(const nl_recast_settings& s, const nl_agent_type& agent, co
 
     const double height_cells = std::ceil(double(agent.height) / cfg.ch);
     if (height_cells > kMaxWalkableHeight)
-        fail(NL_STATUS_INVALID_ARGUMENT, "agent.height of ", agent.height, " m is ", height_cells,
+        fail(NL_STATUS_INVALID_ARGUMENT, "agent_type.height of ", agent.height, " m is ", height_cells,
              " cells of cell_height ", cfg.ch, " m; Recast handles at most ", kMaxWalkableHeight,
              " (raise cell_height)");
     cfg.walkableHeight = static_cast<int>(height_cells);
@@ -128,7 +128,7 @@ rcConfig make_config(const nl_recast_settings& s, const nl_agent_type& agent, co
     cfg.walkableClimb = static_cast<int>(std::min(std::floor(double(agent.max_climb) / cfg.ch), double(RC_SPAN_MAX_HEIGHT)));
     const double radius_cells = std::ceil(double(agent.radius) / cfg.cs);
     if (radius_cells > kMaxErodeRadius)
-        fail(NL_STATUS_INVALID_ARGUMENT, "agent.radius of ", agent.radius, " m is ", radius_cells,
+        fail(NL_STATUS_INVALID_ARGUMENT, "agent_type.radius of ", agent.radius, " m is ", radius_cells,
              " cells of cell_size ", cfg.cs, " m; Recast erodes at most ", kMaxErodeRadius, " (raise cell_size)");
     cfg.walkableRadius = static_cast<int>(radius_cells);
 

@@ -50,7 +50,7 @@ AskedPath asked_path(nl_world* world, nl_navmesh_id navmesh, const samples::Plan
     nl_navmesh_info info = nl_navmesh_info_init();
     samples::check(nl_navmesh_get_info(world, navmesh, &info), "reading the navmesh");
     asked.body_radius = agent.radius;
-    asked.navmesh_radius = info.agent.radius;
+    asked.navmesh_radius = info.agent_type.radius;
     if (path.result.outcome == NL_PATH_PARTIAL || path.result.outcome == NL_PATH_NO_PATH) {
         const nl_path_request_def request = samples::path_request(navmesh, from, to, agent, search_half_extents);
         nl_path_shortfall shortfall = nl_path_shortfall_init();
@@ -70,7 +70,7 @@ AskedPath asked_path(nl_world* world, nl_navmesh_id navmesh, const samples::Plan
 
 long link_index(const std::vector<nl_link>& links, nl_link_id link) {
     for (size_t i = 0; i < links.size(); ++i)
-        if (links[i].id.index1 == link.index1 && links[i].id.generation == link.generation) return static_cast<long>(i);
+        if (links[i].id.index1 == link.index1 && links[i].id.revision == link.revision) return static_cast<long>(i);
     return -1;
 }
 

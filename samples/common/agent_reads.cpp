@@ -56,7 +56,7 @@ bool in_the_air(nl_agent_state state) {
     return state == NL_AGENT_JUMPING || state == NL_AGENT_FALLING || state == NL_AGENT_TRAVERSING;
 }
 
-bool same_agent(nl_agent_id a, nl_agent_id b) { return a.index1 == b.index1 && a.generation == b.generation; }
+bool same_agent(nl_agent_id a, nl_agent_id b) { return a.index1 == b.index1 && a.revision == b.revision; }
 
 const char* agent_state_name(nl_agent_state state) {
     switch (state) {

@@ -95,7 +95,7 @@ void remove_moving_platform(nl_world* world, const MovingPlatform& platform) {
     if (platform.mesh.index1) nl_mesh_remove(world, platform.mesh);
 }
 
-bool same_link(nl_link_id a, nl_link_id b) { return a.index1 == b.index1 && a.generation == b.generation; }
+bool same_link(nl_link_id a, nl_link_id b) { return a.index1 == b.index1 && a.revision == b.revision; }
 
 std::optional<GangwayLink> find_gangway(const std::vector<MovingPlatform>& platforms, nl_link_id link) {
     for (const MovingPlatform& platform : platforms)

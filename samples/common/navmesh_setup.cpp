@@ -6,10 +6,10 @@
 namespace nl::samples {
 
 nl_navmesh_id build_navmesh(nl_world* world, const nl_agent_type& body, const std::string& recast_json,
-                            nl_mesh_id surface, nl_progress_fn* progress, void* progress_user) {
+                            nl_mesh_id carrier, nl_progress_fn* progress, void* progress_user) {
     nl_navmesh_build_def def = nl_default_navmesh_build_def();
-    def.agent = body;
-    def.surface = surface;
+    def.agent_type = body;
+    def.carrier = carrier;
     def.progress = progress;
     def.progress_user = progress_user;
     if (!recast_json.empty()) {
@@ -29,7 +29,7 @@ nl_navmesh_id add_navmesh_from_obj(nl_world* world, const std::string& path, con
     def.indices = obj.indices.data();
     def.polygon_vertex_counts = obj.corner_counts.data();
     def.polygon_count = obj.polygon_count();
-    def.agent = body;
+    def.agent_type = body;
     nl_navmesh_id navmesh{};
     check(nl_navmesh_add(world, &def, &navmesh), "adding the navmesh from '" + path + "'");
     return navmesh;

@@ -16,7 +16,7 @@ nl_path_request_def path_request(nl_navmesh_id navmesh, const float start[3], co
         def.goal[k] = goal[k];
         if (search_half_extents) def.search_half_extents[k] = search_half_extents[k];
     }
-    def.agent = agent;
+    def.capabilities = agent;
     return def;
 }
 

@@ -34,7 +34,7 @@ std::string islands_text(const SceneIslands& islands) {
 SceneIslands read_islands(const nl_world* world, nl_navmesh_id navmesh, const nl_agent_capabilities& capabilities,
                           const std::string& body) {
     nl_query_filter filter = nl_default_query_filter();
-    filter.agent = capabilities;
+    filter.capabilities = capabilities;
     SceneIslands out;
     out.body = body;
     uint32_t count = 0;

@@ -82,8 +82,8 @@ struct AgentInfo {
     uint32_t corners_ahead = 0;
     uint64_t user_data = 0;
     Handle navmesh;                        // it stands on now
-    Handle surface;                        // the movable mesh that navmesh rides; null for none
-    Vec3 surface_position = Vec3::Zero();  // position in that mesh's space
+    Handle carrier;                        // the movable mesh that navmesh rides; null for none
+    Vec3 carrier_position = Vec3::Zero();  // position in that mesh's space
 };
 
 }  // namespace nl

@@ -8,7 +8,7 @@
 
 #include "agents/agent.h"
 #include "motion/link_motion.h"
-#include "navmesh/surface_pose.h"
+#include "navmesh/carrier_pose.h"
 #include "path/path_graph.h"
 #include "path/path_query.h"
 
@@ -19,7 +19,7 @@ namespace nl {
 // integrated), and its destination and path stay where they were set on the surface.
 struct AgentBody {
     AgentDef def;
-    std::shared_ptr<const SurfaceFrame> frame;  // its navmesh's; null on a navmesh that rides nothing
+    std::shared_ptr<const CarrierFrame> frame;  // its navmesh's; null on a navmesh that rides nothing
     AgentState state = AgentState::Idle;
     AgentReason reason = AgentReason::None;
     Handle id;
@@ -30,7 +30,7 @@ struct AgentBody {
     bool has_destination = false;
     Vec3 destination = Vec3::Zero();  // in its navmesh's space (the one it was located on)
     Handle destination_navmesh;       // the agent's own, or one it reaches over cross links
-    std::shared_ptr<const SurfaceFrame> destination_frame;
+    std::shared_ptr<const CarrierFrame> destination_frame;
 
     // The path it follows, the snapshot it was planned on, and the next point to reach.
     std::shared_ptr<const PathGraph> graph;

@@ -49,13 +49,13 @@ AgentBody& Agents::find(Handle agent) {
 }
 const AgentBody& Agents::find(Handle agent) const { return const_cast<Agents*>(this)->find(agent); }
 
-uint32_t Agents::locate(const NavMesh& navmesh, const SurfacePose& pose, const Vec3& world_point, float radius,
+uint32_t Agents::locate(const NavMesh& navmesh, const CarrierPose& pose, const Vec3& world_point, float radius,
                         const char* field, Vec3& on_navmesh) const {
     // Over the navmesh, or within the body's radius of its edge (half a metre at least), and within
     // 2 m above or below it; farther is refused, saying how far the nearest navmesh is.
     const float across = std::max(0.5f, radius);
-    const Vec3 point = pose.surface_point(world_point);
-    const NavPoint near = navmesh.find_nearest(point, pose.surface_extents(Vec3(across, 2.0f, across)));
+    const Vec3 point = pose.carrier_point(world_point);
+    const NavPoint near = navmesh.find_nearest(point, pose.carrier_extents(Vec3(across, 2.0f, across)));
     if (near.found) {
         on_navmesh = near.point;
         return near.polygon;
@@ -68,7 +68,7 @@ uint32_t Agents::locate(const NavMesh& navmesh, const SurfacePose& pose, const V
 }
 
 std::shared_ptr<const NavMesh> Agents::navmesh_of(const NavMeshRegistry& navmeshes, Handle agent, float& radius,
-                                                  SurfacePose& pose) const {
+                                                  CarrierPose& pose) const {
     Handle navmesh;
     {
         std::shared_lock lock(mutex_);
@@ -81,13 +81,13 @@ std::shared_ptr<const NavMesh> Agents::navmesh_of(const NavMeshRegistry& navmesh
         return navmeshes.navmesh(navmesh);
     } catch (const Error& e) {
         if (e.code() != ErrorCode::InvalidHandle) throw;
-        fail(ErrorCode::InvalidHandle, "the agent's navmesh {", navmesh.index1, ", ", navmesh.generation,
+        fail(ErrorCode::InvalidHandle, "the agent's navmesh {", navmesh.index1, ", ", navmesh.revision,
              "} was removed: the agent cannot go anywhere (it fails at the next step; remove it)");
     }
 }
 
 bool Agents::locate_across(const NavMeshRegistry& navmeshes, Handle own, const Vec3& point, float radius, Vec3& on_navmesh,
-                           Handle& navmesh, std::shared_ptr<const SurfaceFrame>& frame) const {
+                           Handle& navmesh, std::shared_ptr<const CarrierFrame>& frame) const {
     // The navmeshes cross links join to the agent's, nearest hop first (either way: a platform the
     // agent can ride away from its own navmesh and back).
     std::vector<std::pair<Handle, Handle>> joins;
@@ -108,7 +108,7 @@ bool Agents::locate_across(const NavMeshRegistry& navmeshes, Handle own, const V
             seen.push_back(other);
             try {
                 const std::shared_ptr<const NavMesh> mesh = navmeshes.navmesh(other);
-                std::shared_ptr<const SurfaceFrame> other_frame = navmeshes.frame(other);
+                std::shared_ptr<const CarrierFrame> other_frame = navmeshes.frame(other);
                 locate(*mesh, pose_of(other_frame), point, radius, "point", on_navmesh);
                 navmesh = other;
                 frame = std::move(other_frame);
@@ -166,7 +166,7 @@ bool Agents::contains(Handle agent) const {
 void Agents::set_destination(const NavMeshRegistry& navmeshes, Handle agent, const Vec3& destination, const char* field) {
     check_point(destination, field);
     float radius;
-    SurfacePose pose;
+    CarrierPose pose;
     const std::shared_ptr<const NavMesh> mesh = navmesh_of(navmeshes, agent, radius, pose);
     Handle own;
     {
@@ -175,7 +175,7 @@ void Agents::set_destination(const NavMeshRegistry& navmeshes, Handle agent, con
     }
     Vec3 on_navmesh;
     Handle there = own;
-    std::shared_ptr<const SurfaceFrame> there_frame = navmeshes.frame(own);
+    std::shared_ptr<const CarrierFrame> there_frame = navmeshes.frame(own);
     // Located on the surface now, and kept there: it moves with the surface until the agent arrives.
     try {
         locate(*mesh, pose, destination, radius, field, on_navmesh);
@@ -224,7 +224,7 @@ void Agents::stop(Handle agent) {
 void Agents::teleport(const NavMeshRegistry& navmeshes, Handle agent, const Vec3& position, const char* field) {
     check_point(position, field);
     float radius;
-    SurfacePose pose;
+    CarrierPose pose;
     const std::shared_ptr<const NavMesh> mesh = navmesh_of(navmeshes, agent, radius, pose);
     Vec3 on_navmesh;
     const uint32_t polygon = locate(*mesh, pose, position, radius, field, on_navmesh);
@@ -280,10 +280,10 @@ size_t points_ahead(const AgentBody& a) {
     return a.path.size() - a.next - (a.motion ? 1 : 0);
 }
 
-// What a host reads, in the world: on a moving surface, at the surface's pose of this moment (the
+// What a host reads, in the world: on a moving surface, at the carrier's pose of this moment (the
 // velocity is the body's own, turned with the surface, without the surface's motion).
 AgentInfo info_of(const AgentBody& a) {
-    const SurfacePose pose = pose_of(a.frame);
+    const CarrierPose pose = pose_of(a.frame);
     AgentInfo info;
     info.id = a.id;
     // Walking without getting anywhere (pressed in a crowd, queueing at a door): waiting for room.
@@ -299,8 +299,8 @@ AgentInfo info_of(const AgentBody& a) {
     info.corners_ahead = static_cast<uint32_t>(points_ahead(a));
     info.user_data = a.def.user_data;
     info.navmesh = a.def.navmesh;
-    info.surface = a.frame ? a.frame->mesh() : Handle{};
-    info.surface_position = a.position;
+    info.carrier = a.frame ? a.frame->mesh() : Handle{};
+    info.carrier_position = a.position;
     return info;
 }
 
@@ -329,15 +329,15 @@ std::vector<PathPoint> Agents::corners(Handle agent) const {
     PathPoint here;
     if (a.motion) here = a.path[a.next];
     else here.apex = a.position;
-    here.surface_position = a.position;
+    here.carrier_position = a.position;
     here.polygon = a.polygon;
     std::vector<PathPoint> out;
     out.reserve(ahead + 1);
     out.push_back(here);
     out.insert(out.end(), a.path.end() - static_cast<std::ptrdiff_t>(ahead), a.path.end());
-    const SurfacePose pose = pose_of(a.frame);
+    const CarrierPose pose = pose_of(a.frame);
     for (PathPoint& p : out) {
-        p.position = pose.world_point(p.surface_position);
+        p.position = pose.world_point(p.carrier_position);
         p.apex = pose.world_point(p.apex);
     }
     return out;

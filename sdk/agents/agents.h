@@ -96,7 +96,7 @@ public:
         std::optional<LinkMotion> motion;  // in the navmesh's space: `pose` places it in the world
         Handle link;
         float elapsed = 0.0f;
-        SurfacePose pose;
+        CarrierPose pose;
     };
     Flight flight(Handle agent) const;
     // The last step's events, in agent order.
@@ -118,14 +118,14 @@ private:
     // The agent's navmesh, its pose now and the agent's radius; InvalidHandle for a stale agent, or
     // one whose navmesh is gone.
     std::shared_ptr<const NavMesh> navmesh_of(const NavMeshRegistry& navmeshes, Handle agent, float& radius,
-                                              SurfacePose& pose) const;
+                                              CarrierPose& pose) const;
     // Locates a world point on the navmesh placed at `pose`: the point found is in the navmesh's space.
-    uint32_t locate(const NavMesh& navmesh, const SurfacePose& pose, const Vec3& point, float radius, const char* field,
+    uint32_t locate(const NavMesh& navmesh, const CarrierPose& pose, const Vec3& point, float radius, const char* field,
                     Vec3& on_navmesh) const;
     // Locates a world point on a navmesh that cross links join to `own` (found: its navmesh, frame
     // and the point in its space).
     bool locate_across(const NavMeshRegistry& navmeshes, Handle own, const Vec3& point, float radius, Vec3& on_navmesh,
-                       Handle& navmesh, std::shared_ptr<const SurfaceFrame>& frame) const;
+                       Handle& navmesh, std::shared_ptr<const CarrierFrame>& frame) const;
 
     // Take-off over a cross link that holds: the body flies in world space to where the landing
     // point will be when it lands (the landing surface's motion over the last step carried on).

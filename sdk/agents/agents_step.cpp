@@ -176,7 +176,7 @@ void Agents::plan_asked_paths(Step& s) {
         PathQuery& q = queries[k];
         q.start = a.position;
         q.goal = a.destination;
-        q.agent = a.def.capabilities;
+        q.capabilities = a.def.capabilities;
         q.accept_partial = true;
         routes = routes || a.destination_navmesh != a.def.navmesh;
     }
@@ -190,7 +190,7 @@ void Agents::plan_asked_paths(Step& s) {
             const AgentBody& a = agents_[asking[k]];
             try {
                 const bool here = a.destination_navmesh == a.def.navmesh;
-                if (here) plan_path_in_surface_space(*s.current[asking[k]], queries[k], nullptr, results[k]);
+                if (here) plan_path_in_carrier_space(*s.current[asking[k]], queries[k], nullptr, results[k]);
                 if (!routes || (here && results[k].outcome == PathOutcome::Complete)) continue;
                 // Off this navmesh and back, or onto another: over cross links that hold now, else
                 // over one that will (the agent waits for it at its take-off: a ferry).
@@ -239,12 +239,12 @@ void Agents::plan_asked_paths(Step& s) {
 // others and moves over the surface, or flies its link.
 void Agents::move(Step& s) {
     const size_t n = agents_.size();
-    std::vector<const SurfaceFrame*> spaces;
+    std::vector<const CarrierFrame*> spaces;
     s.space_of.assign(n, 0);
     s.index_in_space.assign(n, 0);
     std::vector<std::vector<const AgentBody*>> members;
     for (uint32_t i = 0; i < n; ++i) {
-        const SurfaceFrame* frame = agents_[i].frame.get();
+        const CarrierFrame* frame = agents_[i].frame.get();
         const auto found = std::find(spaces.begin(), spaces.end(), frame);
         s.space_of[i] = static_cast<uint32_t>(found - spaces.begin());
         if (found == spaces.end()) {
@@ -419,7 +419,7 @@ bool Agents::take_off_across(AgentBody& a, const Link& link, Handle id, const Bo
     // Off the placed arc (the surface moves, or stands elsewhere within the link's tolerance), the
     // generator's proof does not cover it; nor does it cover meshes that move near it since.
     const bool as_proven = (flight.end - aim).norm() < kSameEnd &&
-                           (from.pose.surface_point(to.pose.world_point(link.end)) - link.placed_end).norm() < kSameEnd;
+                           (from.pose.carrier_point(to.pose.world_point(link.end)) - link.placed_end).norm() < kSameEnd;
     if (!flight_is_clear(motion, a.def.capabilities.radius, a.def.height, level,
                          motions_.motions(level.movable_meshes()), as_proven))
         return false;
@@ -444,8 +444,8 @@ void Agents::land_across(AgentBody& a, Handle navmesh, const std::shared_ptr<con
         a.fail(AgentReason::NavMeshRemoved);
         return;
     }
-    const SurfacePose pose = table.find(navmesh)->pose;
-    const Vec3 feet = pose.surface_point(a.position);
+    const CarrierPose pose = table.find(navmesh)->pose;
+    const Vec3 feet = pose.carrier_point(a.position);
     const float across = std::max(0.5f, a.def.capabilities.radius);
     NavPoint on = graph->navmesh().find_nearest(feet, Vec3(across, 2.0f, across));
     // The surface changed its motion during the flight (a platform that left as the body jumped):

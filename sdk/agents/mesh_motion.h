@@ -33,7 +33,7 @@ public:
     // The motion of each of `now` since the last remember(): a mesh not seen then (or one seen
     // before a step of no time) stands still.
     std::vector<MeshMotion> motions(const std::vector<MovableMesh>& now) const;
-    // The motion of one mesh that stands at `now` (a surface's pose read by the step).
+    // The motion of one mesh that stands at `now` (a carrier's pose read by the step).
     MeshMotion motion(const MovableMesh& now) const;
 
 private:

@@ -26,9 +26,9 @@ float walk_cost(const PathGraph& graph, const Vec3& from, const Vec3& to, const 
     PathQuery q;
     q.start = from;
     q.goal = to;
-    q.agent = agent;
+    q.capabilities = agent;
     q.accept_partial = false;
-    plan_path_in_surface_space(graph, q, nullptr, scratch);
+    plan_path_in_carrier_space(graph, q, nullptr, scratch);
     return scratch.outcome == PathOutcome::Complete ? scratch.cost : std::numeric_limits<float>::infinity();
 }
 
@@ -37,7 +37,7 @@ float walk_cost(const PathGraph& graph, const Vec3& from, const Vec3& to, const 
 void StepNavMeshes::add(Handle navmesh, std::shared_ptr<const PathGraph> graph) {
     StepNavMesh n;
     n.navmesh = navmesh;
-    n.pose = graph ? pose_of(graph->frame()) : SurfacePose{};
+    n.pose = graph ? pose_of(graph->frame()) : CarrierPose{};
     n.graph = std::move(graph);
     navmeshes_.push_back(std::move(n));
 }
@@ -61,7 +61,7 @@ bool plan_route(const StepNavMeshes& navmeshes, const RouteQuery& query, PathRes
         if (!n.graph) continue;
         for (const StoredLink& s : n.graph->links()) {
             const Link& l = s.link;
-            if (!l.crosses() || !l.enabled || !can_take(l, false, query.agent)) continue;
+            if (!l.crosses() || !l.enabled || !can_take(l, false, query.capabilities)) continue;
             const StepNavMesh* landing = navmeshes.find(l.landing_navmesh);
             if (!landing || !landing->graph || l.end_polygon >= landing->graph->navmesh().polygon_count()) continue;
             if (!query.through_waiting && !navmeshes.holds(n.navmesh, l)) continue;
@@ -82,7 +82,7 @@ bool plan_route(const StepNavMeshes& navmeshes, const RouteQuery& query, PathRes
     PathResult scratch;
     for (uint32_t k = 0; k < cross.size(); ++k) {
         if (cross[k].navmesh != query.from_navmesh) continue;
-        const float walk = walk_cost(*start->graph, query.from, cross[k].stored->link.start, query.agent, scratch);
+        const float walk = walk_cost(*start->graph, query.from, cross[k].stored->link.start, query.capabilities, scratch);
         reached[k] = walk + cross[k].cost;
         first[k] = k;
     }
@@ -98,12 +98,12 @@ bool plan_route(const StepNavMeshes& navmeshes, const RouteQuery& query, PathRes
         const Link& landed = cross[k].stored->link;
         const StepNavMesh* there = navmeshes.find(landed.landing_navmesh);
         if (landed.landing_navmesh == query.to_navmesh) {
-            const float total = lowest + walk_cost(*there->graph, landed.end, query.goal, query.agent, scratch);
+            const float total = lowest + walk_cost(*there->graph, landed.end, query.goal, query.capabilities, scratch);
             if (total < best) best = total, best_first = first[k];
         }
         for (uint32_t m = 0; m < cross.size(); ++m) {
             if (done[m] || cross[m].navmesh != landed.landing_navmesh) continue;
-            const float cost = lowest + walk_cost(*there->graph, landed.end, cross[m].stored->link.start, query.agent, scratch) +
+            const float cost = lowest + walk_cost(*there->graph, landed.end, cross[m].stored->link.start, query.capabilities, scratch) +
                                cross[m].cost;
             if (cost < reached[m]) reached[m] = cost, first[m] = first[k];
         }
@@ -115,9 +115,9 @@ bool plan_route(const StepNavMeshes& navmeshes, const RouteQuery& query, PathRes
     PathQuery q;
     q.start = query.from;
     q.goal = takeoff.stored->link.start;
-    q.agent = query.agent;
+    q.capabilities = query.capabilities;
     q.accept_partial = false;
-    plan_path_in_surface_space(*start->graph, q, nullptr, out);
+    plan_path_in_carrier_space(*start->graph, q, nullptr, out);
     if (out.outcome != PathOutcome::Complete || out.points.empty()) return false;
     PathPoint& last = out.points.back();
     last.segment = static_cast<uint32_t>(takeoff.stored->link.kind);

@@ -8,7 +8,7 @@
 #include <memory>
 #include <vector>
 
-#include "navmesh/surface_pose.h"
+#include "navmesh/carrier_pose.h"
 #include "path/path_graph.h"
 #include "path/path_query.h"
 #include "util/handle.h"
@@ -20,7 +20,7 @@ namespace nl {
 struct StepNavMesh {
     Handle navmesh;
     std::shared_ptr<const PathGraph> graph;  // null: removed
-    SurfacePose pose;
+    CarrierPose pose;
 };
 
 class StepNavMeshes {
@@ -41,7 +41,7 @@ struct RouteQuery {
     Vec3 from = Vec3::Zero();  // in from_navmesh's space
     Handle to_navmesh;
     Vec3 goal = Vec3::Zero();  // in to_navmesh's space
-    AgentCapabilities agent;
+    AgentCapabilities capabilities;
     // Also over cross links that do not hold now: the agent will wait at the take-off (a ferry).
     bool through_waiting = false;
 };

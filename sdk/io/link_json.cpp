@@ -146,7 +146,7 @@ std::string links_to_json(const std::vector<Link>& links, const LinksMadeFor* ma
     }
     Json file = {{"format", "navlink-links"}, {"version", kLinkFileVersion}};
     if (made_for) {
-        const AgentType& a = made_for->agent;
+        const AgentType& a = made_for->agent_type;
         file["made_for"] = {{"agent", {{"radius", a.radius}, {"height", a.height}, {"max_climb", a.max_climb}, {"max_slope", a.max_slope}}},
                             {"link_settings", recorded_json(made_for->made_with.settings)},
                             {"link_plugins", recorded_json(made_for->made_with.plugins)}};
@@ -174,10 +174,10 @@ LinksFile read_links_json(std::string_view text) {
         const Reader m(*made_for, "links JSON.made_for");
         const Reader a(m.at("agent"), "links JSON.made_for.agent");
         LinksMadeFor record;
-        record.agent.radius = a.number("radius", 0.0f);
-        record.agent.height = a.number("height", 0.0f);
-        record.agent.max_climb = a.number("max_climb", 0.0f);
-        record.agent.max_slope = a.number("max_slope", 0.0f);
+        record.agent_type.radius = a.number("radius", 0.0f);
+        record.agent_type.height = a.number("height", 0.0f);
+        record.agent_type.max_climb = a.number("max_climb", 0.0f);
+        record.agent_type.max_slope = a.number("max_slope", 0.0f);
         if (const Json* settings = m.find("link_settings"); settings && !settings->is_null()) {
             LinkSettings checked;
             apply_settings_json(settings->dump(), checked);

@@ -19,7 +19,7 @@ constexpr int kLinkFileVersion = 1;
 // What a links file says its links were made for: the body of the navmesh they were generated on,
 // and what the generation ran with (empty when not recorded).
 struct LinksMadeFor {
-    AgentType agent;
+    AgentType agent_type;
     LinksMadeWith made_with;
     uint64_t level_hash = 0;  // of the level the navmesh was built from (level_hash.h); 0: not recorded
 };

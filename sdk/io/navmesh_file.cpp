@@ -24,7 +24,7 @@ constexpr uint8_t kMagic[8] = {0x89, 'N', 'L', 'N', 'A', 'V', 0x0D, 0x0A};
 constexpr char kMade[4] = {'M', 'A', 'D', 'E'}, kGeometry[4] = {'G', 'E', 'O', 'M'}, kLinks[4] = {'L', 'I', 'N', 'K'};
 
 enum LinkFlags : uint8_t { kBidirectional = 1, kGenerated = 2, kEnabled = 4 };
-enum MadeFlags : uint8_t { kRidesSurface = 1 };
+enum MadeFlags : uint8_t { kRidesCarrier = 1 };
 enum FileFlags : uint32_t { kDeflated = 1 };
 
 constexpr unsigned kWidestCoordinate = 6;  // bytes: 2^48 quanta hold any two coordinates within the limit
@@ -141,9 +141,9 @@ void write_links(ByteWriter& out, const std::vector<Link>& links, const Quantise
     }
 }
 
-void write_made_for(ByteWriter& out, const AgentType& agent, const MadeFor& made_for, bool rides_surface) {
+void write_made_for(ByteWriter& out, const AgentType& agent, const MadeFor& made_for, bool rides_carrier) {
     for (float v : {agent.radius, agent.height, agent.max_climb, agent.max_slope}) out.f32(v);
-    out.u8(rides_surface ? kRidesSurface : 0);
+    out.u8(rides_carrier ? kRidesCarrier : 0);
     out.u64(made_for.level_hash);
     out.text(made_for.builder);
     out.text(made_for.builder_settings);
@@ -301,10 +301,10 @@ void read_links(ByteReader& in, std::vector<Link>& out, const Quantiser& q) {
 }
 
 void read_made_for(ByteReader& in, NavMeshFile& out) {
-    AgentType& a = out.navmesh.agent;
+    AgentType& a = out.navmesh.agent_type;
     for (float* v : {&a.radius, &a.height, &a.max_climb, &a.max_slope}) *v = in.f32("the agent type");
     const uint8_t flags = in.u8("the flags");
-    out.rides_surface = flags & kRidesSurface;
+    out.rides_carrier = flags & kRidesCarrier;
     out.made_for.level_hash = in.u64("the level hash");
     out.made_for.builder = in.text("the builder's name");
     out.made_for.builder_settings = in.text("the builder's settings");
@@ -357,11 +357,11 @@ uint32_t navmesh_file_checksum(const uint8_t* data, size_t size) {
 }
 
 std::vector<uint8_t> write_navmesh_file(const NavMesh& navmesh, const std::vector<Link>& links, const MadeFor& made_for,
-                                        bool rides_surface) {
+                                        bool rides_carrier) {
     const NavMeshInput input = input_of(navmesh);
     Quantiser q;
     ByteWriter made, geometry, link_section;
-    write_made_for(made, navmesh.agent(), made_for, rides_surface);
+    write_made_for(made, navmesh.agent(), made_for, rides_carrier);
     write_geometry(geometry, input, q);
     write_links(link_section, links, q);
 

@@ -37,7 +37,7 @@ struct NavMeshFile {
     NavMeshInput navmesh;     // weld_tolerance 0: the saved vertices are welded already
     std::vector<Link> links;  // in the order they were saved; their polygons as saved
     MadeFor made_for;
-    bool rides_surface = false;  // the coordinates are in the space of the mesh it rode
+    bool rides_carrier = false;  // the coordinates are in the space of the mesh it rode
     uint32_t version = 0;
     float quantum = 0.0f;        // metres (2^-10)
     std::string writer;          // the NavLink version that wrote it
@@ -45,7 +45,7 @@ struct NavMeshFile {
 
 // The file for `navmesh` and its `links` (none may be a cross link: InvalidArgument).
 std::vector<uint8_t> write_navmesh_file(const NavMesh& navmesh, const std::vector<Link>& links, const MadeFor& made_for,
-                                        bool rides_surface);
+                                        bool rides_carrier);
 
 // Reads a file written by write_navmesh_file, checking everything but what building it checks
 // (build_navmesh) and placing its links (place_saved_link). Throws VersionMismatch (not a navmesh

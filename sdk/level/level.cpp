@@ -349,18 +349,18 @@ TriangleMesh Level::world_triangles() const {
     return out;
 }
 
-BuildTriangles Level::triangles_to_build(Handle surface) const {
+BuildTriangles Level::triangles_to_build(Handle carrier) const {
     const auto lock = lock_shared();
     BuildTriangles out;
-    if (surface != Handle{}) {
-        const Mesh* m = meshes_.find(surface);
-        if (!m) fail_stale("mesh", surface);
+    if (carrier != Handle{}) {
+        const Mesh* m = meshes_.find(carrier);
+        if (!m) fail_stale("mesh", carrier);
         if (!(m->flags & kMeshMovable))
-            fail(ErrorCode::InvalidArgument, "the surface mesh is not movable (NL_MESH_MOVABLE): a static mesh's floor is "
+            fail(ErrorCode::InvalidArgument, "the carrier mesh is not movable (NL_MESH_MOVABLE): a static mesh's floor is "
                                              "part of the level's navmesh");
         if (m->flags & kMeshNotInNavMesh)
-            fail(ErrorCode::InvalidArgument, "the surface mesh is left out of navmesh builds (NL_MESH_NOT_IN_NAVMESH)");
-        append_for_build(surface, m->object, Transform::Identity(), build_area(m->flags, m->area), out);
+            fail(ErrorCode::InvalidArgument, "the carrier mesh is left out of navmesh builds (NL_MESH_NOT_IN_NAVMESH)");
+        append_for_build(carrier, m->object, Transform::Identity(), build_area(m->flags, m->area), out);
         return out;
     }
     meshes_.for_each([&](Handle handle, const Mesh& m) {

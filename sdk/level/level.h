@@ -159,7 +159,7 @@ public:
     // behind when it moves); else the movable mesh `surface` alone, in its own space. Each triangle
     // carries its mesh's area, or kObstacleArea for an obstacle's. Throws InvalidHandle, or
     // InvalidArgument for a surface that is not movable or is left out of navmesh builds.
-    BuildTriangles triangles_to_build(Handle surface) const;
+    BuildTriangles triangles_to_build(Handle carrier) const;
     // For each hit, the corners of its triangle (RayHit::mesh, RayHit::primitive) if it is a static
     // mesh's, in world space, exactly as Embree tests them; nothing for a miss, a movable mesh (Embree
     // tests those in their own space) or a mesh removed since the hit. Parallel over the batch.

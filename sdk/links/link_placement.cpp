@@ -36,8 +36,8 @@ void place_cross_link(const NavMesh& from, const NavMesh& to, Link& link) {
     link.end_polygon = polygon_near(to, link.end, "end");
 }
 
-bool cross_link_holds(const Link& link, const SurfacePose& from, const SurfacePose& to) {
-    return (from.surface_point(to.world_point(link.end)) - link.placed_end).norm() <= link.tolerance;
+bool cross_link_holds(const Link& link, const CarrierPose& from, const CarrierPose& to) {
+    return (from.carrier_point(to.world_point(link.end)) - link.placed_end).norm() <= link.tolerance;
 }
 
 void place_saved_link(const NavMesh& navmesh, Link& link) {
@@ -45,21 +45,21 @@ void place_saved_link(const NavMesh& navmesh, Link& link) {
     link.end_polygon = polygon_still_under(navmesh, link.end, link.end_polygon, "end");
 }
 
-Link link_in_world(Link link, const SurfacePose& pose) {
+Link link_in_world(Link link, const CarrierPose& pose) {
     link.start = pose.world_point(link.start);
     link.end = pose.world_point(link.end);
     link.apex = pose.world_point(link.apex);
     return link;
 }
 
-Link link_in_surface(Link link, const SurfacePose& pose) {
-    link.start = pose.surface_point(link.start);
-    link.end = pose.surface_point(link.end);
-    link.apex = pose.surface_point(link.apex);
+Link link_in_carrier_space(Link link, const CarrierPose& pose) {
+    link.start = pose.carrier_point(link.start);
+    link.end = pose.carrier_point(link.end);
+    link.apex = pose.carrier_point(link.apex);
     return link;
 }
 
-Link link_in_world(Link link, const SurfacePose& from, const SurfacePose& to) {
+Link link_in_world(Link link, const CarrierPose& from, const CarrierPose& to) {
     const Vec3 end = to.world_point(link.end);
     link = link_in_world(link, from);
     link.end = end;

@@ -6,7 +6,7 @@
 
 #include "links/link.h"
 #include "navmesh/navmesh.h"
-#include "navmesh/surface_pose.h"
+#include "navmesh/carrier_pose.h"
 
 namespace nl {
 
@@ -27,14 +27,14 @@ void place_cross_link(const NavMesh& from, const NavMesh& to, Link& link);
 
 // Whether a cross link holds with its navmeshes placed at `from` (its start's) and `to` (its end's):
 // its end, seen from the start's navmesh, is within its tolerance of where it was placed.
-bool cross_link_holds(const Link& link, const SurfacePose& from, const SurfacePose& to);
+bool cross_link_holds(const Link& link, const CarrierPose& from, const CarrierPose& to);
 
 // The link with its points (ends, apex) carried by `pose` to the world, or from the world to the
 // surface: a link on a navmesh that rides a moving mesh is kept in the mesh's space. What it asks of
 // a body (rise, drop, length) stays: the surface's up is taken as the world's.
-Link link_in_world(Link link, const SurfacePose& pose);
-Link link_in_surface(Link link, const SurfacePose& pose);
+Link link_in_world(Link link, const CarrierPose& pose);
+Link link_in_carrier_space(Link link, const CarrierPose& pose);
 // For a link whose end lies on another navmesh (a cross link): start and apex by `from`, end by `to`.
-Link link_in_world(Link link, const SurfacePose& from, const SurfacePose& to);
+Link link_in_world(Link link, const CarrierPose& from, const CarrierPose& to);
 
 }  // namespace nl

@@ -66,7 +66,7 @@ private:
                  " polygons");
         if (!(in_.weld_tolerance >= 0.0f && in_.weld_tolerance <= 1.0f))
             fail_field(ErrorCode::InvalidArgument, "weld_tolerance is ", in_.weld_tolerance, " (must be 0..1 m)");
-        naming_fields("agent.", [&] { validate_agent(in_.agent); });
+        naming_fields("agent_type.", [&] { validate_agent(in_.agent_type); });
         validate_detail();
     }
 
@@ -283,7 +283,7 @@ private:
             m.bounds_.grow(box.min);
             m.bounds_.grow(box.max);
         }
-        m.agent_ = in_.agent;
+        m.agent_ = in_.agent_type;
         m.grid_.build(m.polygon_bounds_, m.bounds_);
         // A navmesh lives long and is never edited: give back what the building left spare.
         auto fit = [](auto&... arrays) { (arrays.shrink_to_fit(), ...); };
@@ -319,7 +319,7 @@ NavMeshInput input_of(const NavMesh& m) {
     for (uint32_t p = 0; p < m.polygon_count(); ++p) in.polygon_sizes.push_back(static_cast<uint8_t>(m.corner_count(p)));
     in.areas = m.areas_;
     in.weld_tolerance = 0.0f;
-    in.agent = m.agent_;
+    in.agent_type = m.agent_;
     if (!m.detail_.empty()) {
         // Global detail vertices again: each polygon's own, and the corners its triangles use
         // (which the builder turns back into corners).

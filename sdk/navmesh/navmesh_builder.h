@@ -15,13 +15,13 @@ struct NavMeshInput {
     std::vector<uint8_t> polygon_sizes;   // corners per polygon; empty means all triangles
     std::vector<uint8_t> areas;           // per polygon; empty means area 0
     float weld_tolerance = 0.001f;
-    AgentType agent;
+    AgentType agent_type;
     std::vector<Vec3> detail_vertices;
     std::vector<uint32_t> detail_indices;  // 3 per detail triangle
     std::vector<uint32_t> detail_starts;   // polygon_count + 1 offsets in triangles; empty = no detail
 };
 
-// Throws InvalidArgument naming the bad field of the input ("vertices[3].y", "agent.radius": a
+// Throws InvalidArgument naming the bad field of the input ("vertices[3].y", "agent_type.radius": a
 // failure about a field, see fail_field) and adds nothing anywhere: the result is a new, complete
 // navmesh or an exception.
 std::shared_ptr<const NavMesh> build_navmesh(const NavMeshInput& input);

@@ -221,7 +221,7 @@ public:
                    ShortestScratch& scratch, CorridorSearch& result)
         : graph_(graph), mesh_(graph.navmesh()), query_(query), goal_(goal), goal_flat_(flat(goal.point)),
           rate_(walk_cost), h_scale_(cheapest_link_rate(graph, query, walk_cost)),
-          margin_(std::max(0.0f, query.agent.radius - graph.navmesh().agent().radius)), ids_(mesh_, graph.links_ptr()->size()),
+          margin_(std::max(0.0f, query.capabilities.radius - graph.navmesh().agent().radius)), ids_(mesh_, graph.links_ptr()->size()),
           links_beat_walking_(h_scale_ < rate_),
           keeps_out_(std::any_of(query.area_costs.begin(), query.area_costs.end(), [](float cost) { return cost <= 0.0f; })),
           scratch_(scratch), epoch_(scratch.begin(ids_.dense_count(), mesh_.polygon_count())), result_(result) {}
@@ -614,7 +614,7 @@ private:
     void take_link(uint32_t index, const View& view, const LinkExit& exit) {
         const Link& link = graph_.link(exit.link).link;
         const bool reversed = exit.reversed != 0;
-        if (!can_take(link, reversed, query_.agent)) return;
+        if (!can_take(link, reversed, query_.capabilities)) return;
         const uint32_t q = reversed ? link.start_polygon : link.end_polygon;
         if (query_.area_cost(mesh_.area(q)) <= 0.0f) return;
         const Vec3& from = reversed ? link.end : link.start;

@@ -6,7 +6,7 @@
 namespace nl {
 
 PathGraph::PathGraph(std::shared_ptr<const NavMesh> navmesh, std::shared_ptr<const LinkSnapshot> links,
-                     std::shared_ptr<const SurfaceFrame> frame, std::shared_ptr<const NavMeshSearchIndex> index)
+                     std::shared_ptr<const CarrierFrame> frame, std::shared_ptr<const NavMeshSearchIndex> index)
     : navmesh_(std::move(navmesh)), links_(links ? std::move(links) : std::make_shared<const LinkSnapshot>()),
       frame_(std::move(frame)),
       index_(index && &index->navmesh() == navmesh_.get() ? std::move(index)

@@ -11,7 +11,7 @@
 
 #include "links/link_snapshot.h"
 #include "navmesh/navmesh.h"
-#include "navmesh/surface_pose.h"
+#include "navmesh/carrier_pose.h"
 #include "path/reachability_cache.h"
 
 namespace nl {
@@ -77,14 +77,14 @@ public:
     // `index`: the navmesh's search index from an earlier graph of it, so that a link edit does not
     // build it again (null, or another navmesh's: built here).
     PathGraph(std::shared_ptr<const NavMesh> navmesh, std::shared_ptr<const LinkSnapshot> links,
-              std::shared_ptr<const SurfaceFrame> frame = nullptr, std::shared_ptr<const NavMeshSearchIndex> index = nullptr);
+              std::shared_ptr<const CarrierFrame> frame = nullptr, std::shared_ptr<const NavMeshSearchIndex> index = nullptr);
 
     const NavMesh& navmesh() const { return *navmesh_; }
     const std::shared_ptr<const NavMesh>& navmesh_ptr() const { return navmesh_; }
     const LinkSnapshot& links() const { return *links_; }
     const std::shared_ptr<const LinkSnapshot>& links_ptr() const { return links_; }
     const StoredLink& link(uint32_t index) const { return (*links_)[index]; }
-    const std::shared_ptr<const SurfaceFrame>& frame() const { return frame_; }
+    const std::shared_ptr<const CarrierFrame>& frame() const { return frame_; }
     // Whether any of its links leads to another navmesh (Link::crosses; not in the exits).
     bool has_cross_links() const { return has_cross_links_; }
 
@@ -138,7 +138,7 @@ private:
 
     std::shared_ptr<const NavMesh> navmesh_;
     std::shared_ptr<const LinkSnapshot> links_;
-    std::shared_ptr<const SurfaceFrame> frame_;
+    std::shared_ptr<const CarrierFrame> frame_;
     std::shared_ptr<const NavMeshSearchIndex> index_;
     std::vector<uint32_t> first_exit_;  // polygon_count + 1 offsets into exits_; empty without links
     std::vector<LinkExit> exits_;

@@ -18,7 +18,7 @@ class PathAssembler {
 public:
     PathAssembler(const PathGraph& graph, const PathQuery& query, const CorridorSearch& corridor, PathResult& result)
         : graph_(graph), mesh_(graph.navmesh()), query_(query), corridor_(corridor), result_(result),
-          margin_(std::max(0.0f, query.agent.radius - mesh_.agent().radius)) {}
+          margin_(std::max(0.0f, query.capabilities.radius - mesh_.agent().radius)) {}
 
     void assemble(const Vec3& start, const Vec3& end) {
         const std::vector<CorridorStep>& steps = corridor_.steps;
@@ -94,15 +94,15 @@ thread_local std::vector<float> PathAssembler::rates_;
 }  // namespace
 
 void plan_path(const PathGraph& graph, const PathQuery& query, const std::atomic<bool>* cancel, PathResult& result) {
-    const SurfacePose pose = pose_of(graph.frame());
-    if (pose.is_identity()) return plan_path_in_surface_space(graph, query, cancel, result);
+    const CarrierPose pose = pose_of(graph.frame());
+    if (pose.is_identity()) return plan_path_in_carrier_space(graph, query, cancel, result);
     PathQuery local = query;
-    local.start = pose.surface_point(query.start);
-    local.goal = pose.surface_point(query.goal);
-    local.search_half_extents = pose.surface_extents(query.search_half_extents);
-    plan_path_in_surface_space(graph, local, cancel, result);
+    local.start = pose.carrier_point(query.start);
+    local.goal = pose.carrier_point(query.goal);
+    local.search_half_extents = pose.carrier_extents(query.search_half_extents);
+    plan_path_in_carrier_space(graph, local, cancel, result);
     for (PathPoint& p : result.points) {
-        p.position = pose.world_point(p.surface_position);
+        p.position = pose.world_point(p.carrier_position);
         p.apex = pose.world_point(p.apex);
     }
     result.start = pose.world_point(result.start);
@@ -128,7 +128,7 @@ void search_corridor(const PathGraph& graph, const PathQuery& query, const NavPo
     // search missed a way there: on a navmesh folded over itself (a neighbour on the same side of the
     // edge they share, seen from above) its views mean nothing, and the corridor search finds the way.
     const bool missed = searched_everything(corridor) &&
-                        graph.reachability(query.agent, query.area_costs)->reaches(start.polygon, target.polygon);
+                        graph.reachability(query.capabilities, query.area_costs)->reaches(start.polygon, target.polygon);
     const bool ran_out = corridor.out_of_nodes && !corridor.reached_goal && query.accept_partial;
     if (missed || corridor.gave_up || ran_out) {
         const uint32_t exact_nodes = corridor.nodes_visited;
@@ -154,7 +154,7 @@ NavPoint nearest_reachable(const NavMesh& mesh, const ReachabilityMap& map, cons
 
 }  // namespace
 
-void plan_path_in_surface_space(const PathGraph& graph, const PathQuery& query, const std::atomic<bool>* cancel,
+void plan_path_in_carrier_space(const PathGraph& graph, const PathQuery& query, const std::atomic<bool>* cancel,
                                 PathResult& result) {
     const NavMesh& mesh = graph.navmesh();
     std::vector<PathPoint> points = std::move(result.points);
@@ -180,7 +180,7 @@ void plan_path_in_surface_space(const PathGraph& graph, const PathQuery& query, 
     NavPoint target = goal;
     bool heading_to_nearest = false;  // the goal is out of reach: for the nearest point the body reaches
     if (start.polygon != goal.polygon) {
-        const ReachabilityMap* map = graph.reachability_if_built(query.agent, query.area_costs);
+        const ReachabilityMap* map = graph.reachability_if_built(query.capabilities, query.area_costs);
         if (map && !map->reaches(start.polygon, goal.polygon)) {
             if (!query.accept_partial) {
                 result.outcome = PathOutcome::NoPath;
@@ -197,7 +197,7 @@ void plan_path_in_surface_space(const PathGraph& graph, const PathQuery& query, 
     if (!heading_to_nearest && searched_everything(corridor)) {
         // Out of reach: the map (built once per graph and body) says so at once from now on, and
         // where the body can go instead.
-        const auto map = graph.reachability(query.agent, query.area_costs);
+        const auto map = graph.reachability(query.capabilities, query.area_costs);
         if (query.accept_partial) {
             target = nearest_reachable(mesh, *map, start, goal);
             heading_to_nearest = true;

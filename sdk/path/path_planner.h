@@ -13,12 +13,12 @@ namespace nl {
 // unreachable goal or an end off the navmesh (the outcome says so); throws only for out-of-memory or
 // an internal error. A set `cancel` makes the outcome Cancelled. On a navmesh that rides a moving
 // mesh, the mesh's pose is read once: the search runs in its space, and each point is given at that
-// pose in the world (position) and in the surface's space (surface_position), where it stays.
+// pose in the world (position) and in the surface's space (carrier_position), where it stays.
 void plan_path(const PathGraph& graph, const PathQuery& query, const std::atomic<bool>* cancel, PathResult& out);
 
 // The same with the query's ends (and search box) and the result in the navmesh's own space: what
 // agents on a surface plan with. On a navmesh that rides nothing it is plan_path.
-void plan_path_in_surface_space(const PathGraph& graph, const PathQuery& query, const std::atomic<bool>* cancel,
+void plan_path_in_carrier_space(const PathGraph& graph, const PathQuery& query, const std::atomic<bool>* cancel,
                                 PathResult& out);
 
 }  // namespace nl

@@ -22,7 +22,7 @@ struct PathQuery {
     Vec3 start = Vec3::Zero();
     Vec3 goal = Vec3::Zero();
     Vec3 search_half_extents = Vec3(2.0f, 4.0f, 2.0f);
-    AgentCapabilities agent;
+    AgentCapabilities capabilities;
     std::vector<float> area_costs;  // per area id; missing ids cost 1, 0 keeps the agent out
     float link_cost = 0.0f;         // added to every link taken
     uint32_t max_nodes = 0;         // 0: no limit
@@ -47,7 +47,7 @@ constexpr uint32_t kSegmentWalk = 0;
 
 struct PathPoint {
     Vec3 position = Vec3::Zero();          // in the world (as the request's ends are)
-    Vec3 surface_position = Vec3::Zero();  // in the navmesh's own space: where it stays on a moving surface
+    Vec3 carrier_position = Vec3::Zero();  // in the navmesh's own space: where it stays on a moving surface
     uint32_t polygon = 0xffffffffu;
     uint32_t segment = kSegmentWalk;
     Handle link;                  // null for walking

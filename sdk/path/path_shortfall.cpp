@@ -20,7 +20,7 @@ bool reaches(const PathGraph& graph, const PathQuery& query) {
 }
 
 PathQuery with_navmesh_width(PathQuery q, float navmesh_radius) {
-    q.agent.radius = std::min(q.agent.radius, navmesh_radius);
+    q.capabilities.radius = std::min(q.capabilities.radius, navmesh_radius);
     return q;
 }
 
@@ -31,14 +31,14 @@ PathQuery with_every_area(PathQuery q) {
 }
 
 PathQuery with_every_link(PathQuery q) {
-    q.agent.max_jump_distance = q.agent.max_jump_height = q.agent.max_drop_height = kAnyDistance;
-    q.agent.abilities = ~uint64_t(0);
+    q.capabilities.max_jump_distance = q.capabilities.max_jump_height = q.capabilities.max_drop_height = kAnyDistance;
+    q.capabilities.abilities = ~uint64_t(0);
     return q;
 }
 
 // A body that fits any link's clearance; walking keeps the navmesh's own radius.
 PathQuery with_any_width(PathQuery q) {
-    q.agent.radius = 0.0f;
+    q.capabilities.radius = 0.0f;
     return q;
 }
 
@@ -58,7 +58,7 @@ bool name_the_link(const PathGraph& graph, const PathQuery& query, const PathQue
         if (point.link == Handle{}) continue;
         const Link* link = find_link(graph, point.link);
         if (!link) continue;
-        const LinkShortfall stops = what_stops(*link, point.reversed, query.agent);
+        const LinkShortfall stops = what_stops(*link, point.reversed, query.capabilities);
         if (stops.limit == LinkLimit::None) continue;
         out.why = PathShortfall::LinkBeyondBody;
         out.limit = stops.limit;
@@ -88,10 +88,10 @@ PathShortfallReport explain_shortfall(const PathGraph& graph, const PathQuery& q
     unlimited.max_nodes = 0;
     unlimited.accept_partial = false;
     const float navmesh_radius = out.navmesh_radius;
-    const bool wider = query.agent.radius > navmesh_radius;
+    const bool wider = query.capabilities.radius > navmesh_radius;
     if (wider && reaches(graph, with_navmesh_width(unlimited, navmesh_radius))) {
         out.why = PathShortfall::BodyTooWide;
-        out.needed = query.agent.radius;
+        out.needed = query.capabilities.radius;
         out.has = navmesh_radius;
         return out;
     }
@@ -106,7 +106,7 @@ PathShortfallReport explain_shortfall(const PathGraph& graph, const PathQuery& q
     if (name_the_link(graph, query, everything, out)) return out;
     if (reaches(graph, everything)) {
         out.why = wider ? PathShortfall::BodyTooWide : PathShortfall::AreasExcluded;
-        out.needed = wider ? query.agent.radius : 0.0f;
+        out.needed = wider ? query.capabilities.radius : 0.0f;
         out.has = wider ? navmesh_radius : 0.0f;
         return out;
     }

@@ -161,7 +161,7 @@ void find_corridor(const PathGraph& graph, const PathQuery& query, const NavPoin
     const uint32_t epoch = scratch.begin(mesh.polygon_count());
     SearchNode* nodes = scratch.nodes.data();
     OpenList open(scratch.open, nodes);
-    const float margin = std::max(0.0f, query.agent.radius - mesh.agent().radius);
+    const float margin = std::max(0.0f, query.capabilities.radius - mesh.agent().radius);
     const float h_scale = heuristic_scale(graph, query);
     const Vec3 goal_point = goal.point;
 
@@ -264,7 +264,7 @@ void find_corridor(const PathGraph& graph, const PathQuery& query, const NavPoin
         }
         for (const LinkExit* exit = graph.exits_begin(p); exit != graph.exits_end(p); ++exit) {
             const Link& link = graph.link(exit->link).link;
-            if (!can_take(link, exit->reversed != 0, query.agent)) continue;
+            if (!can_take(link, exit->reversed != 0, query.capabilities)) continue;
             const uint32_t q = exit->reversed ? link.start_polygon : link.end_polygon;
             const float cost_there = query.area_cost(mesh.area(q));
             if (cost_there <= 0.0f) continue;

@@ -26,7 +26,7 @@ std::shared_ptr<const ReachabilityMap> ReachabilityCache::get(const PathGraph& g
     const std::array<uint64_t, 4> excluded = ReachabilityClass::excluded_areas_of(area_costs);
     auto known = [&]() -> std::shared_ptr<Class> {
         for (Body& body : bodies_) {
-            if (body.excluded_areas == excluded && same_body(body.agent, agent)) {
+            if (body.excluded_areas == excluded && same_body(body.capabilities, agent)) {
                 body.last_used = ++clock_;
                 return body.map_class;
             }
@@ -82,7 +82,7 @@ const ReachabilityMap* ReachabilityCache::ready(const AgentCapabilities& agent, 
     // it asks about another graph).
     struct LastAnswer {
         uint64_t cache = 0;
-        AgentCapabilities agent;
+        AgentCapabilities capabilities;
         std::array<uint64_t, 4> excluded{};
         std::shared_ptr<const ReachabilityMap> map;
     };
@@ -91,10 +91,10 @@ const ReachabilityMap* ReachabilityCache::ready(const AgentCapabilities& agent, 
     // Most graphs never build a map (every request finds its goal): no lock for them.
     if (!remembered_.load(std::memory_order_acquire)) return nullptr;
     const std::array<uint64_t, 4> excluded = ReachabilityClass::excluded_areas_of(area_costs);
-    if (last.cache == id_ && last.excluded == excluded && same_body(last.agent, agent)) return last.map.get();
+    if (last.cache == id_ && last.excluded == excluded && same_body(last.capabilities, agent)) return last.map.get();
     std::lock_guard<std::mutex> lock(mutex_);
     for (const Body& body : bodies_) {
-        if (body.excluded_areas != excluded || !same_body(body.agent, agent)) continue;
+        if (body.excluded_areas != excluded || !same_body(body.capabilities, agent)) continue;
         const MapFuture& map = body.map_class->map;
         if (map.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return nullptr;
         try {
@@ -102,7 +102,7 @@ const ReachabilityMap* ReachabilityCache::ready(const AgentCapabilities& agent, 
         } catch (...) {
             return nullptr;  // a build that failed: the next get() tries again
         }
-        last.cache = id_, last.agent = agent, last.excluded = excluded;
+        last.cache = id_, last.capabilities = agent, last.excluded = excluded;
         return last.map.get();
     }
     return nullptr;

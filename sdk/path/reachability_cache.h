@@ -46,7 +46,7 @@ private:
     using MapFuture = std::shared_future<std::shared_ptr<const ReachabilityMap>>;
     struct Class;
     struct Body {
-        AgentCapabilities agent;
+        AgentCapabilities capabilities;
         std::array<uint64_t, 4> excluded_areas;
         std::shared_ptr<Class> map_class;
         uint64_t last_used;

@@ -21,7 +21,7 @@ float cheapest_link_rate(const PathGraph& graph, const PathQuery& query, float a
     for (const StoredLink& stored : graph.links()) {
         const Link& l = stored.link;
         if (l.enabled && l.cost_modifier < rate &&
-            (can_take(l, false, query.agent) || (l.bidirectional && can_take(l, true, query.agent))))
+            (can_take(l, false, query.capabilities) || (l.bidirectional && can_take(l, true, query.capabilities))))
             rate = l.cost_modifier;
     }
     return rate;

@@ -33,28 +33,28 @@ const NavMeshRegistry::Entry& NavMeshRegistry::entry(Handle navmesh) const {
     return const_cast<NavMeshRegistry*>(this)->entry(navmesh);
 }
 
-std::shared_ptr<SurfaceFrame> NavMeshRegistry::frame_of_mesh(Handle mesh) const {
-    std::shared_ptr<SurfaceFrame> found;
+std::shared_ptr<CarrierFrame> NavMeshRegistry::frame_of_mesh(Handle mesh) const {
+    std::shared_ptr<CarrierFrame> found;
     navmeshes_.for_each([&](Handle, const Entry& e) {
         if (!found && e.frame && e.frame->mesh() == mesh) found = e.frame;
     });
     return found;
 }
 
-Handle NavMeshRegistry::add(std::shared_ptr<const NavMesh> navmesh, Handle surface, const Transform& to_world,
+Handle NavMeshRegistry::add(std::shared_ptr<const NavMesh> navmesh, Handle carrier, const Transform& to_world,
                             MadeFor made_for) {
     Entry e;
     e.navmesh = std::move(navmesh);
     e.made_for = std::move(made_for);
     std::unique_lock lock(mutex_);
-    if (surface != Handle{}) {
-        e.frame = frame_of_mesh(surface);
-        if (!e.frame) e.frame = std::make_shared<SurfaceFrame>(surface, to_world);
+    if (carrier != Handle{}) {
+        e.frame = frame_of_mesh(carrier);
+        if (!e.frame) e.frame = std::make_shared<CarrierFrame>(carrier, to_world);
     }
     return navmeshes_.insert(std::move(e));
 }
 
-HeldPtr<const SurfaceFrame> NavMeshRegistry::frame(Handle navmesh) const {
+HeldPtr<const CarrierFrame> NavMeshRegistry::frame(Handle navmesh) const {
     std::shared_lock lock(mutex_);
     return entry(navmesh).frame;
 }
@@ -79,9 +79,9 @@ Handle NavMeshRegistry::riding(Handle mesh, const AgentType& body) const {
     return found;
 }
 
-void NavMeshRegistry::move_surface(Handle mesh, const Transform& to_world) {
+void NavMeshRegistry::move_carrier(Handle mesh, const Transform& to_world) {
     std::shared_lock lock(mutex_);
-    if (const std::shared_ptr<SurfaceFrame> frame = frame_of_mesh(mesh)) frame->move(to_world);
+    if (const std::shared_ptr<CarrierFrame> frame = frame_of_mesh(mesh)) frame->move(to_world);
 }
 
 void NavMeshRegistry::remove(Handle navmesh) {
@@ -286,7 +286,7 @@ bool NavMeshRegistry::store_update(Handle navmesh, const LinkGeneration* from, c
 HeldPtr<const PathGraph> NavMeshRegistry::path_graph(Handle navmesh) const {
     std::shared_ptr<const NavMesh> mesh;
     std::shared_ptr<const LinkSnapshot> snapshot;
-    std::shared_ptr<const SurfaceFrame> frame;
+    std::shared_ptr<const CarrierFrame> frame;
     std::shared_ptr<const NavMeshSearchIndex> index;  // the last graph's, when of the same navmesh
     {
         std::shared_lock lock(mutex_);

@@ -19,7 +19,7 @@
 #include "links/link_snapshot.h"
 #include "navmesh/made_for.h"
 #include "navmesh/navmesh.h"
-#include "navmesh/surface_pose.h"
+#include "navmesh/carrier_pose.h"
 #include "path/path_graph.h"
 #include "util/function_ref.h"
 #include "util/handle.h"
@@ -40,9 +40,9 @@ public:
     explicit NavMeshRegistry(uint32_t handle_tag) : navmeshes_(handle_tag, HandleKind::NavMesh), links_(handle_tag, HandleKind::Link) {}
 
     // Navmeshes. Lookups throw InvalidHandle for a null, removed or foreign handle.
-    // `surface`: the movable mesh the navmesh rides (null: none), the navmesh in its space, placed at
+    // `carrier`: the movable mesh the navmesh rides (null: none), the navmesh in its space, placed at
     // `to_world` now; navmeshes on one mesh share its frame.
-    Handle add(std::shared_ptr<const NavMesh> navmesh, Handle surface = Handle{},
+    Handle add(std::shared_ptr<const NavMesh> navmesh, Handle carrier = Handle{},
                const Transform& to_world = Transform::Identity(), MadeFor made_for = {});
     // Removes the navmesh, its links, its last generation and its path graph together, and the cross
     // links of other navmeshes that land on it. Readers that
@@ -52,11 +52,11 @@ public:
     HeldPtr<const NavMesh> navmesh(Handle navmesh) const;
     std::vector<Handle> handles() const;
     // The frame of the mesh the navmesh rides; null for one that rides nothing.
-    HeldPtr<const SurfaceFrame> frame(Handle navmesh) const;
+    HeldPtr<const CarrierFrame> frame(Handle navmesh) const;
     // Both at once (one lock: queries that read a navmesh where it stands now).
     struct Placed {
         std::shared_ptr<const NavMesh> navmesh;
-        std::shared_ptr<const SurfaceFrame> frame;
+        std::shared_ptr<const CarrierFrame> frame;
     };
     Placed placed(Handle navmesh) const;
     // Whether any navmesh rides `mesh`.
@@ -65,7 +65,7 @@ public:
     // null when none does.
     Handle riding(Handle mesh, const AgentType& body) const;
     // Places the navmeshes that ride `mesh` (if any) at `to_world`; nothing else changes.
-    void move_surface(Handle mesh, const Transform& to_world);
+    void move_carrier(Handle mesh, const Transform& to_world);
 
     // Links. Each edit publishes: the next snapshot reader sees it.
     Handle add_link(Handle navmesh, const Link& link);
@@ -88,7 +88,7 @@ public:
         std::shared_ptr<const NavMesh> navmesh;
         std::shared_ptr<const LinkSnapshot> links;
         MadeFor made_for;
-        bool rides_surface = false;
+        bool rides_carrier = false;
     };
     Saved saved(Handle navmesh) const;
 
@@ -141,7 +141,7 @@ public:
 private:
     struct Entry {
         std::shared_ptr<const NavMesh> navmesh;
-        std::shared_ptr<SurfaceFrame> frame;            // null: rides nothing
+        std::shared_ptr<CarrierFrame> frame;            // null: rides nothing
         std::vector<Handle> link_ids;                   // in the order they were added
         mutable std::shared_ptr<const LinkSnapshot> snapshot;  // null after an edit, until read
         mutable std::shared_ptr<const PathGraph> path_graph;   // for some snapshot; checked on read
@@ -156,7 +156,7 @@ private:
 
     Entry& entry(Handle navmesh);
     // The frame of `mesh` if a navmesh rides it; null otherwise. Needs the lock.
-    std::shared_ptr<SurfaceFrame> frame_of_mesh(Handle mesh) const;
+    std::shared_ptr<CarrierFrame> frame_of_mesh(Handle mesh) const;
     const Entry& entry(Handle navmesh) const;
     // Builds the entry's snapshot if an edit made it stale; needs the lock held alone.
     const std::shared_ptr<const LinkSnapshot>& snapshot_of(const Entry& e) const;

@@ -1,4 +1,4 @@
-// Generational handles and the slot map that issues them (Box2D-style ids: index + 1, generation),
+// Handles with revisions and the slot map that issues them (Box2D-style ids: index + 1, revision),
 // each carrying the kind of thing it names.
 #pragma once
 
@@ -19,13 +19,13 @@ enum class HandleKind : uint32_t { None = 0, Mesh, NavMesh, Link, Plugin, PathTi
 
 struct Handle {
     uint32_t index1 = 0;  // kind << kHandleSlotBits | (slot index + 1); 0 is the null handle
-    uint32_t generation = 0;
+    uint32_t revision = 0;
 
     bool is_null() const noexcept { return index1 == 0; }
     // Both halves in one number, as a hash key.
-    uint64_t packed() const noexcept { return (uint64_t(index1) << 32) | generation; }
+    uint64_t packed() const noexcept { return (uint64_t(index1) << 32) | revision; }
     friend bool operator==(Handle a, Handle b) noexcept {
-        return a.index1 == b.index1 && a.generation == b.generation;
+        return a.index1 == b.index1 && a.revision == b.revision;
     }
     friend bool operator!=(Handle a, Handle b) noexcept { return !(a == b); }
 };
@@ -35,14 +35,14 @@ constexpr uint32_t kHandleSlotMask = (1u << kHandleSlotBits) - 1;  // also the m
 
 // Throws InvalidHandle for a handle that a slot map did not recognise; `what` names its kind.
 [[noreturn]] inline void fail_stale(const char* what, Handle h) {
-    fail(ErrorCode::InvalidHandle, what, " {", h.index1, ", ", h.generation, "} is null, removed or from another world");
+    fail(ErrorCode::InvalidHandle, what, " {", h.index1, ", ", h.revision, "} is null, removed or from another world");
 }
 
-// Stores values in reusable slots. A removed slot's generation is bumped, so an old handle to it is
-// recognised as stale instead of reaching the slot's next occupant. A slot whose generation counter
+// Stores values in reusable slots. A removed slot's revision is bumped, so an old handle to it is
+// recognised as stale instead of reaching the slot's next occupant. A slot whose revision counter
 // is used up is retired, never reused: a handle can never come back to life, however long the
 // program runs (a retired slot costs its size once per 2^20 - 1 lifetimes of it). The top bits of
-// every generation carry the owner's tag, so a handle from another owner (another world) is refused
+// every revision carry the owner's tag, so a handle from another owner (another world) is refused
 // as well.
 template <typename T>
 class SlotMap {
@@ -73,7 +73,7 @@ public:
         Slot& slot = slots_[index];
         slot.value.emplace(std::move(value));
         ++live_;
-        return Handle{kind_bits_ | (index + 1), generation_of(slot)};
+        return Handle{kind_bits_ | (index + 1), revision_of(slot)};
     }
 
     T* find(Handle h) noexcept {
@@ -88,7 +88,7 @@ public:
         slot->value.reset();
         --live_;
         if (slot->counter == kCounterMask) {
-            ++retired_;  // its next generation would repeat an old one
+            ++retired_;  // its next revision would repeat an old one
         } else {
             ++slot->counter;
             free_.push_back((h.index1 & kHandleSlotMask) - 1);
@@ -98,7 +98,7 @@ public:
 
     // Handle of the occupied slot at `index`; used to map back from internal indices.
     Handle handle_at(uint32_t index) const noexcept {
-        return Handle{kind_bits_ | (index + 1), generation_of(slots_[index])};
+        return Handle{kind_bits_ | (index + 1), revision_of(slots_[index])};
     }
 
     template <typename Fn>
@@ -115,7 +115,7 @@ public:
     }
 
     uint32_t size() const noexcept { return live_; }
-    // Slots whose generations are used up.
+    // Slots whose revisions are used up.
     uint32_t retired() const noexcept { return retired_; }
 
 private:
@@ -124,13 +124,13 @@ private:
         uint32_t counter = 1;
     };
 
-    uint32_t generation_of(const Slot& slot) const noexcept { return tag_bits_ | slot.counter; }
+    uint32_t revision_of(const Slot& slot) const noexcept { return tag_bits_ | slot.counter; }
 
     Slot* slot_of(Handle h) noexcept {
         const uint32_t slot1 = h.index1 & kHandleSlotMask;
         if ((h.index1 & ~kHandleSlotMask) != kind_bits_ || slot1 == 0 || slot1 > slots_.size()) return nullptr;
         Slot& slot = slots_[slot1 - 1];
-        return slot.value && generation_of(slot) == h.generation ? &slot : nullptr;
+        return slot.value && revision_of(slot) == h.revision ? &slot : nullptr;
     }
 
     std::vector<Slot> slots_;
@@ -143,8 +143,8 @@ private:
 
 // The handles removed from one owner's slot map, for a store that keeps state beside it and must
 // refuse a removed handle for good (a link store asked to keep links for a navmesh removed while they
-// were being generated). One word per slot, not one per removal: a slot's generations only grow (the
-// slot map retires a slot before its counter could wrap), so a handle is removed when its generation
+// were being generated). One word per slot, not one per removal: a slot's revisions only grow (the
+// slot map retires a slot before its counter could wrap), so a handle is removed when its revision
 // is at most the last one removed from its slot. Only handles the owner issued may be added.
 class RemovedHandles {
 public:
@@ -153,11 +153,11 @@ public:
         if (slot1 == 0) return;  // the null handle was never issued
         if (slot1 > last_removed_.size()) last_removed_.resize(slot1, 0);
         uint32_t& last = last_removed_[slot1 - 1];
-        if (h.generation > last) last = h.generation;
+        if (h.revision > last) last = h.revision;
     }
     bool contains(Handle h) const noexcept {
         const uint32_t slot1 = h.index1 & kHandleSlotMask;
-        return slot1 != 0 && slot1 <= last_removed_.size() && h.generation <= last_removed_[slot1 - 1];
+        return slot1 != 0 && slot1 <= last_removed_.size() && h.revision <= last_removed_[slot1 - 1];
     }
 
 private:

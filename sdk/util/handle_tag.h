@@ -1,4 +1,4 @@
-// The tag a world's handles carry (SlotMap's top generation bits), so that a handle of one live world
+// The tag a world's handles carry (SlotMap's top revision bits), so that a handle of one live world
 // is refused by every other: no two live worlds hold the same tag. Tags are handed out round-robin,
 // skipping those in use, so a destroyed world's tag comes back only after every other tag was used.
 #pragma once

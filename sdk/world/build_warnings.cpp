@@ -43,7 +43,7 @@ std::vector<Handle> World::warn_turned_over(const BuildTriangles& triangles, con
         as_given += e.floor_as_given;
         turned_over += e.floor_turned_over;
         if (turned.size() <= 8) said += concat(turned.size() > 1 ? ", " : "", "{", starts[k].mesh.index1 & kHandleSlotMask, ", ",
-                                                starts[k].mesh.generation, "}");
+                                                starts[k].mesh.revision, "}");
     }
     const bool one = turned.size() == 1;
     if (!turned.empty())

@@ -27,7 +27,7 @@ Aabb grown(Aabb box, const LinkSettings& s) {
 }
 
 // Appends the polygons of `mesh` (placed at `pose`) whose world bounds meet `near`, marked `area`.
-void append_near(const NavMesh& mesh, const SurfacePose& pose, const Aabb& near, uint8_t area, NavMeshInput& out) {
+void append_near(const NavMesh& mesh, const CarrierPose& pose, const Aabb& near, uint8_t area, NavMeshInput& out) {
     for (uint32_t p = 0; p < mesh.polygon_count(); ++p) {
         if (!overlaps(pose.world_box(mesh.polygon_bounds(p)), near)) continue;
         for (uint32_t k = 0; k < mesh.corner_count(p); ++k) {
@@ -59,7 +59,7 @@ LinkGenerationReport World::generate_cross_links(Handle first, Handle second, co
     if (!(tolerance >= 0.0f) || !std::isfinite(tolerance))
         fail_field(ErrorCode::InvalidArgument, "tolerance", " is ", tolerance, " (must be finite and >= 0)");
     const std::shared_ptr<const NavMesh> a = navmeshes_.navmesh(first), b = navmeshes_.navmesh(second);
-    const SurfacePose pa = pose_of(navmeshes_.frame(first)), pb = pose_of(navmeshes_.frame(second));
+    const CarrierPose pa = pose_of(navmeshes_.frame(first)), pb = pose_of(navmeshes_.frame(second));
     if (!same_body(a->agent(), b->agent()))
         fail(ErrorCode::InvalidArgument, "the two navmeshes were made for different bodies (radius ", a->agent().radius, " and ",
              b->agent().radius, ", height ", a->agent().height, " and ", b->agent().height, "): a link between them fits neither");
@@ -67,7 +67,7 @@ LinkGenerationReport World::generate_cross_links(Handle first, Handle second, co
     // Told at once, even when the two are out of each other's reach and nothing is generated.
     if (!progress(0.0f, "cross links")) fail(ErrorCode::Cancelled, "cross link generation cancelled");
     NavMeshInput joined;
-    joined.agent = a->agent();
+    joined.agent_type = a->agent();
     joined.weld_tolerance = 0.0f;
     const Aabb near_b = grown(pb.world_box(b->bounds()), settings), near_a = grown(pa.world_box(a->bounds()), settings);
     append_near(*a, pa, near_b, kFromFirst, joined);
@@ -86,12 +86,12 @@ LinkGenerationReport World::generate_cross_links(Handle first, Handle second, co
             if (found.bidirectional) ways.push_back(reversed(found));
             for (Link l : ways) {
                 const bool forward = mesh->area(l.start_polygon) == kFromFirst;
-                const SurfacePose& ps = forward ? pa : pb;
-                const SurfacePose& pe = forward ? pb : pa;
+                const CarrierPose& ps = forward ? pa : pb;
+                const CarrierPose& pe = forward ? pb : pa;
                 const Vec3 end = l.end;
-                l = link_in_surface(l, ps);
-                l.end = pe.surface_point(end);
-                l.placed_end = ps.surface_point(end);
+                l = link_in_carrier_space(l, ps);
+                l.end = pe.carrier_point(end);
+                l.placed_end = ps.carrier_point(end);
                 l.landing_navmesh = forward ? second : first;
                 l.tolerance = tolerance;
                 l.bidirectional = false;

@@ -23,8 +23,8 @@ class World;
 // What a navmesh build asks of a builder.
 struct NavMeshBuildRequest {
     std::string builder;               // the builder's name
-    AgentType agent;                   // the body the navmesh is for
-    Handle surface;                    // a movable mesh to build on, in its own space; null: the static level
+    AgentType agent_type;                  // the body the navmesh is for
+    Handle carrier;                    // a movable mesh to build on, in its own space; null: the static level
     const void* builder_settings = nullptr;  // the builder's own settings struct, borrowed; opaque here
     // The builder's settings as JSON text, borrowed; null: none. Handed over as given (a null text
     // with a length is the builder's to refuse).

@@ -34,34 +34,34 @@ void World::log_repairs(const NavMesh& navmesh) const {
     }
 }
 
-Transform World::surface_placement(Handle surface) const {
+Transform World::carrier_placement(Handle carrier) const {
     MeshInfo info;
     try {
-        info = level_->info(surface);
+        info = level_->info(carrier);
     } catch (const Error& e) {
         if (e.code() != ErrorCode::InvalidHandle) throw;
-        fail_field(ErrorCode::InvalidHandle, "surface", ": ", e.what());
+        fail_field(ErrorCode::InvalidHandle, "carrier", ": ", e.what());
     }
     if (!(info.flags & kMeshMovable))
-        fail_field(ErrorCode::InvalidArgument, "surface", " is not a movable mesh (NL_MESH_MOVABLE): only those carry navmeshes");
-    if (!is_rigid(info.transform)) fail_field(ErrorCode::InvalidArgument, "surface", "'s transform", kNotRigid);
+        fail_field(ErrorCode::InvalidArgument, "carrier", " is not a movable mesh (NL_MESH_MOVABLE): only those carry navmeshes");
+    if (!is_rigid(info.transform)) fail_field(ErrorCode::InvalidArgument, "carrier", "'s transform", kNotRigid);
     return info.transform;
 }
 
-Handle World::add_on_surface(std::shared_ptr<const NavMesh> navmesh, Handle surface, MadeFor made_for) {
-    if (surface == Handle{}) return navmeshes_.add(std::move(navmesh), Handle{}, Transform::Identity(), std::move(made_for));
-    std::lock_guard lock(surface_moves_);
-    return navmeshes_.add(std::move(navmesh), surface, surface_placement(surface), std::move(made_for));
+Handle World::add_on_carrier(std::shared_ptr<const NavMesh> navmesh, Handle carrier, MadeFor made_for) {
+    if (carrier == Handle{}) return navmeshes_.add(std::move(navmesh), Handle{}, Transform::Identity(), std::move(made_for));
+    std::lock_guard lock(carrier_moves_);
+    return navmeshes_.add(std::move(navmesh), carrier, carrier_placement(carrier), std::move(made_for));
 }
 
-Handle World::add_navmesh(const NavMeshInput& input, Handle surface) {
-    if (surface != Handle{}) {
-        std::lock_guard lock(surface_moves_);
-        surface_placement(surface);  // a bad surface before the polygons' work
+Handle World::add_navmesh(const NavMeshInput& input, Handle carrier) {
+    if (carrier != Handle{}) {
+        std::lock_guard lock(carrier_moves_);
+        carrier_placement(carrier);  // a bad carrier before the polygons' work
     }
     std::shared_ptr<const NavMesh> navmesh = nl::build_navmesh(input);
     log_repairs(*navmesh);
-    return add_on_surface(std::move(navmesh), surface);
+    return add_on_carrier(std::move(navmesh), carrier);
 }
 
 Handle World::add_agent(AgentDef def) {
@@ -97,21 +97,21 @@ void World::warn_if_wider_than_navmesh(const AgentDef& def) {
     }
     logger_.log(LogLevel::Warning,
                 concat("agents of radius ", radius, " m on a navmesh built for radius ", navmesh_radius, " m (nl_navmesh_id {",
-                       def.navmesh.index1 & kHandleSlotMask, ", ", def.navmesh.generation, "}) keep ", radius - navmesh_radius,
+                       def.navmesh.index1 & kHandleSlotMask, ", ", def.navmesh.revision, "}) keep ", radius - navmesh_radius,
                        " m more from walls than the navmesh's edges, and cannot pass where the navmesh is narrower than ",
                        2.0f * (radius - navmesh_radius), " m of width; when their paths fall short, nl_path_explain says "
                        "whether that is why (a navmesh built for their radius serves them best)"));
 }
 
 void World::set_mesh_transform(Handle mesh, const Transform& transform) {
-    std::lock_guard lock(surface_moves_);
+    std::lock_guard lock(carrier_moves_);
     if (navmeshes_.carried_by(mesh) && !is_rigid(transform)) fail_field(ErrorCode::InvalidArgument, "transform", kNotRigid);
     level_->set_transform(mesh, transform);
-    navmeshes_.move_surface(mesh, transform);
+    navmeshes_.move_carrier(mesh, transform);
 }
 
 void World::remove_mesh(Handle mesh) {
-    std::lock_guard lock(surface_moves_);
+    std::lock_guard lock(carrier_moves_);
     if (navmeshes_.carried_by(mesh))
         fail(ErrorCode::InvalidArgument, "the mesh carries a navmesh (it rides the mesh): remove the navmesh first");
     level_->remove_mesh(mesh);
@@ -139,9 +139,9 @@ Handle World::build_navmesh(const NavMeshBuildRequest& request) {
     if (!builder)
         fail(ErrorCode::NotFound, "no navmesh builder named '", request.builder,
              "' (loaded: ", listed_names(plugins_.navmesh_builder_names()), ")");
-    if (request.surface != Handle{}) {
-        std::lock_guard lock(surface_moves_);
-        surface_placement(request.surface);
+    if (request.carrier != Handle{}) {
+        std::lock_guard lock(carrier_moves_);
+        carrier_placement(request.carrier);
     }
     // The caller sees progress within 0..1 and never going back, whatever the builder reports, and a
     // stop is remembered: a builder that goes on after it still adds nothing.
@@ -160,9 +160,9 @@ Handle World::build_navmesh(const NavMeshBuildRequest& request) {
     forwarded.progress(0.0f, "starting");
     fail_if_cancelled();
     // Said before the build: a level in the wrong units can take long to build, or fail for it.
-    const BuildTriangles triangles = level_->triangles_to_build(request.surface);
+    const BuildTriangles triangles = level_->triangles_to_build(request.carrier);
     MadeFor made_for;
-    warn_of_level(triangles, request.agent, made_for);
+    warn_of_level(triangles, request.agent_type, made_for);
     BuiltNavMesh built;
     try {
         built = builder->build(*this, forwarded);
@@ -183,17 +183,17 @@ Handle World::build_navmesh(const NavMeshBuildRequest& request) {
     made_for.level_hash = built.level_hash != 0 ? built.level_hash : level_hash(triangles);
     forwarded.progress(1.0f, "adding the navmesh");
     fail_if_cancelled();
-    return add_on_surface(std::move(navmesh), request.surface, std::move(made_for));
+    return add_on_carrier(std::move(navmesh), request.carrier, std::move(made_for));
 }
 
-Handle World::load_navmesh(const NavMeshFile& file, Handle surface) {
-    if (surface != Handle{}) {
-        std::lock_guard lock(surface_moves_);
-        surface_placement(surface);
+Handle World::load_navmesh(const NavMeshFile& file, Handle carrier) {
+    if (carrier != Handle{}) {
+        std::lock_guard lock(carrier_moves_);
+        carrier_placement(carrier);
     }
-    if (file.rides_surface != (surface != Handle{}))
-        fail_field(ErrorCode::InvalidArgument, "surface: ",
-                   file.rides_surface ? "the file's navmesh rode a moving mesh (its coordinates are in that mesh's space): "
+    if (file.rides_carrier != (carrier != Handle{}))
+        fail_field(ErrorCode::InvalidArgument, "carrier: ",
+                   file.rides_carrier ? "the file's navmesh rode a moving mesh (its coordinates are in that mesh's space): "
                                         "give the mesh it rides"
                                       : "the file's navmesh rode no moving mesh (its coordinates are in the world)");
     // What the file holds is not the caller's input: its failures say so, and are about no field.
@@ -209,7 +209,7 @@ Handle World::load_navmesh(const NavMeshFile& file, Handle surface) {
     std::vector<Link> links = file.links;
     for (size_t i = 0; i < links.size(); ++i)
         in_the_file(concat("links[", i, "]."), [&] { place_saved_link(*navmesh, links[i]); });
-    const Handle h = add_on_surface(std::move(navmesh), surface, file.made_for);
+    const Handle h = add_on_carrier(std::move(navmesh), carrier, file.made_for);
     try {
         navmeshes_.replace_links(h, links, file.made_for.links);
     } catch (...) {

@@ -77,20 +77,20 @@ public:
     void step(float dt) { agents_.step(dt, navmeshes_, *level_, *tasks_); }
 
     // A host's navmesh: validated, repaired (logged as a warning) and added. Throws as build_navmesh.
-    // `surface`: the movable mesh it rides (null: none); its polygons are then in that mesh's own
-    // space, and it follows the mesh's transform. Throws InvalidArgument (about "surface") for a mesh
+    // `carrier`: the movable mesh it rides (null: none); its polygons are then in that mesh's own
+    // space, and it follows the mesh's transform. Throws InvalidArgument (about "carrier") for a mesh
     // that is not movable or whose transform is not rigid, InvalidHandle for a stale one.
-    Handle add_navmesh(const NavMeshInput& input, Handle surface = Handle{});
-    // Builds a navmesh with the named builder plugin from the level (request.surface: from that
+    Handle add_navmesh(const NavMeshInput& input, Handle carrier = Handle{});
+    // Builds a navmesh with the named builder plugin from the level (request.carrier: from that
     // movable mesh in its own space, riding it) and adds it. Throws NotFound (no such builder) and the
     // builder's failures.
     Handle build_navmesh(const NavMeshBuildRequest& request);
-    // Adds a baked navmesh and its links (read_navmesh_file), on `surface` for a file whose navmesh
+    // Adds a baked navmesh and its links (read_navmesh_file), on `carrier` for a file whose navmesh
     // rode one (its coordinates are in that mesh's space). Every link is placed before anything is
     // added (place_saved_link; "links[i].start" named); nothing changes when anything is refused:
-    // InvalidArgument (a surface given for a file that rode none, or none for one that did; the
-    // polygons, as add_navmesh), InvalidHandle (the surface).
-    Handle load_navmesh(const NavMeshFile& file, Handle surface = Handle{});
+    // InvalidArgument (a carrier given for a file that rode none, or none for one that did; the
+    // polygons, as add_navmesh), InvalidHandle (the carrier).
+    Handle load_navmesh(const NavMeshFile& file, Handle carrier = Handle{});
 
     // Moves a mesh, and the navmeshes that ride it with it (no rebuild, no new snapshot). A mesh that
     // carries a navmesh takes rigid transforms only (InvalidArgument otherwise, nothing moved).
@@ -115,7 +115,7 @@ public:
     // for a link within one navmesh).
     bool link_holds(Handle navmesh, const Link& link) const;
     // The navmesh's pose now; the identity for one that rides nothing or is gone.
-    SurfacePose navmesh_pose(Handle navmesh) const;
+    CarrierPose navmesh_pose(Handle navmesh) const;
     // Replaces every link of the navmesh with those of a links file made with `made_with` (empty:
     // not said) (place_saved_link; an end off the navmesh is a failure about
     // "links[i].start"); nothing changes when one is refused.
@@ -139,7 +139,7 @@ public:
     // with them; those made for another placement (a platform's other stop) and the navmeshes' own
     // links stay. Only the
     // polygons within a link's reach of the other navmesh are looked at, so a platform's links cost
-    // what its neighbourhood does: call it when a surface comes to rest, or has moved beyond the
+    // what its neighbourhood does: call it when a carrier comes to rest, or has moved beyond the
     // tolerance, as often as the host likes. Both navmeshes must be made for the same body. Throws
     // InvalidHandle, InvalidArgument (one navmesh twice, another body, a bad tolerance), Cancelled
     // (nothing changes). Two calls for the same pair at once store one's result or the other's, whole.
@@ -172,12 +172,12 @@ private:
     uint32_t warn_of_frame(const BuildTriangles& triangles, const AgentType& agent) const;
     // InvalidArgument for a navmesh that rides a moving mesh: the generator proves links against the
     // level as it stands, so they would hold at one placement only.
-    void refuse_generation_on_surface(Handle navmesh) const;
+    void refuse_generation_on_carrier(Handle navmesh) const;
     // Puts a host's link (world space) on its navmesh, or across to its landing navmesh.
     void place_host_link(Handle navmesh, Link& link) const;
-    // The surface's transform now, checked as a navmesh's placement; needs surface_moves_ held.
-    Transform surface_placement(Handle surface) const;
-    Handle add_on_surface(std::shared_ptr<const NavMesh> navmesh, Handle surface, MadeFor made_for = {});
+    // The carrier's transform now, checked as a navmesh's placement; needs carrier_moves_ held.
+    Transform carrier_placement(Handle carrier) const;
+    Handle add_on_carrier(std::shared_ptr<const NavMesh> navmesh, Handle carrier, MadeFor made_for = {});
 
     HandleTag handle_tag_;  // released last, after every handle it tagged
     Logger logger_;
@@ -189,7 +189,7 @@ private:
     Agents agents_;
     // Mesh moves and removals, and navmeshes placed on a mesh, one at a time: a mesh and the
     // navmeshes riding it never end in different places.
-    std::mutex surface_moves_;
+    std::mutex carrier_moves_;
     // The (navmesh, body radius) pairs warned of as a body wider than its navmesh's: once each, so
     // a thousand tanks on a navmesh for people say it once. Owned by add_agent, under its mutex.
     std::mutex wide_bodies_mutex_;

@@ -15,25 +15,25 @@
 
 namespace nl {
 
-SurfacePose World::navmesh_pose(Handle navmesh) const {
+CarrierPose World::navmesh_pose(Handle navmesh) const {
     try {
         return pose_of(navmeshes_.frame(navmesh));
     } catch (const Error& e) {
         if (e.code() != ErrorCode::InvalidHandle) throw;
-        return SurfacePose{};  // a cross link's landing navmesh removed since: the link leads nowhere
+        return CarrierPose{};  // a cross link's landing navmesh removed since: the link leads nowhere
     }
 }
 
 void World::place_host_link(Handle navmesh, Link& link) const {
     const std::shared_ptr<const NavMesh> from = navmeshes_.navmesh(navmesh);
-    const SurfacePose from_pose = pose_of(navmeshes_.frame(navmesh));
+    const CarrierPose from_pose = pose_of(navmeshes_.frame(navmesh));
     if (!link.crosses()) {
-        link = link_in_surface(link, from_pose);
+        link = link_in_carrier_space(link, from_pose);
         place_link(*from, link);
         return;
     }
     std::shared_ptr<const NavMesh> to;
-    SurfacePose to_pose;
+    CarrierPose to_pose;
     try {
         to = navmeshes_.navmesh(link.landing_navmesh);
         to_pose = pose_of(navmeshes_.frame(link.landing_navmesh));
@@ -50,9 +50,9 @@ void World::place_host_link(Handle navmesh, Link& link) const {
         fail_field(ErrorCode::InvalidArgument, "tolerance", " is ", link.tolerance, " (must be finite and >= 0)");
     // Placed as the two navmeshes stand now: it holds while they stay so (cross_link_holds).
     const Vec3 end = link.end;
-    link = link_in_surface(link, from_pose);
-    link.end = to_pose.surface_point(end);
-    link.placed_end = from_pose.surface_point(end);
+    link = link_in_carrier_space(link, from_pose);
+    link.end = to_pose.carrier_point(end);
+    link.placed_end = from_pose.carrier_point(end);
     place_cross_link(*from, *to, link);
 }
 
@@ -69,7 +69,7 @@ void World::update_link(Handle link, Link replacement) {
 }
 
 Link World::in_world(Handle navmesh, const Link& link) const {
-    const SurfacePose from = navmesh_pose(navmesh);
+    const CarrierPose from = navmesh_pose(navmesh);
     return link.crosses() ? nl::link_in_world(link, from, navmesh_pose(link.landing_navmesh)) : nl::link_in_world(link, from);
 }
 
@@ -82,7 +82,7 @@ bool World::link_holds(Handle navmesh, const Link& link) const {
     return !link.crosses() || cross_link_holds(link, navmesh_pose(navmesh), navmesh_pose(link.landing_navmesh));
 }
 
-void World::refuse_generation_on_surface(Handle navmesh) const {
+void World::refuse_generation_on_carrier(Handle navmesh) const {
     if (navmeshes_.frame(navmesh))
         fail(ErrorCode::InvalidArgument, "links are not generated on a navmesh that rides a moving mesh (its links would "
                                          "hold at one placement only): add its links with nl_link_add");
@@ -99,7 +99,7 @@ void World::load_links(Handle navmesh, std::vector<Link> links, LinksMadeWith ma
 void World::load_links_file(Handle navmesh, LinksFile file, bool any_body) {
     if (file.made_for) {
         const auto mesh = navmeshes_.navmesh(navmesh);
-        const AgentType ours = mesh->agent(), theirs = file.made_for->agent;
+        const AgentType ours = mesh->agent(), theirs = file.made_for->agent_type;
         if (!same_body(ours, theirs)) {
             const std::string why = concat("the links were generated for a body of radius ", theirs.radius, " m and height ",
                                            theirs.height, " m; this navmesh was built for radius ", ours.radius,
@@ -180,7 +180,7 @@ LinkGenerationReport World::generate_links(Handle navmesh, const LinkSettings& s
                                            GenerationProgress progress) {
     check_plugin_settings(plugin_settings);
     const std::shared_ptr<const NavMesh> mesh = navmeshes_.navmesh(navmesh);
-    refuse_generation_on_surface(navmesh);
+    refuse_generation_on_carrier(navmesh);
     auto generation = std::make_shared<LinkGeneration>(mesh, settings, GenerationMethod::Indexed);
     const NavMeshRegistry::GenerationTurn one_at_a_time = navmeshes_.take_generation_turn(navmesh);
     LinkGenerationReport report;
@@ -194,7 +194,7 @@ LinkGenerationReport World::generate_links(Handle navmesh, const LinkSettings& s
 
 LinkGenerationReport World::update_links_in_box(Handle navmesh, const Aabb& box, GenerationProgress progress) {
     const std::shared_ptr<const NavMesh> mesh = navmeshes_.navmesh(navmesh);
-    refuse_generation_on_surface(navmesh);
+    refuse_generation_on_carrier(navmesh);
     if (!within_coordinate_limit(box.min) || !within_coordinate_limit(box.max) || box.empty())
         fail(ErrorCode::InvalidArgument, "the box's corners must be finite, within the coordinate limit, and min <= max");
     const NavMeshRegistry::GenerationTurn one_at_a_time = navmeshes_.take_generation_turn(navmesh);

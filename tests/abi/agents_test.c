@@ -57,7 +57,7 @@ static gap_level make_gap_level(int32_t workers) {
     def.indices = idx;
     def.polygon_vertex_counts = counts;
     def.polygon_count = np;
-    def.agent.radius = 0.3f;
+    def.agent_type.radius = 0.3f;
     CHECK_OK(nl_navmesh_add(g.world, &def, &g.navmesh));
     g.report = nl_link_generation_report_init();
     CHECK_OK(nl_navmesh_generate_links(g.world, g.navmesh, NULL, NULL, NULL, &g.report));
@@ -83,7 +83,7 @@ static nl_agent_info info_of(nl_world* world, nl_agent_id agent) {
     return info;
 }
 
-static int same_agent(nl_agent_id a, nl_agent_id b) { return a.index1 == b.index1 && a.generation == b.generation; }
+static int same_agent(nl_agent_id a, nl_agent_id b) { return a.index1 == b.index1 && a.revision == b.revision; }
 
 static void defaults(void) {
     const nl_agent_def def = nl_default_agent_def();
@@ -230,10 +230,10 @@ static void same_on_any_thread_count(void) {
         CHECK(n == 30u);
         /* Every handle's generation carries its world's tag, which differs from world to world. */
         for (k = 0; k < n; ++k) {
-            result[w][k].id.generation = 0;
-            result[w][k].link.generation = 0;
-            result[w][k].navmesh.generation = 0;
-            result[w][k].surface.generation = 0;
+            result[w][k].id.revision = 0;
+            result[w][k].link.revision = 0;
+            result[w][k].navmesh.revision = 0;
+            result[w][k].carrier.revision = 0;
         }
         nl_world_destroy(g.world);
     }

@@ -30,7 +30,7 @@ uint32_t mesh_count(const nl_world* world) {
     return count;
 }
 
-int same_id(nl_mesh_id a, nl_mesh_id b) { return a.index1 == b.index1 && a.generation == b.generation; }
+int same_id(nl_mesh_id a, nl_mesh_id b) { return a.index1 == b.index1 && a.revision == b.revision; }
 
 nl_ray down_ray(float x, float z, float from_y, float max_distance) {
     nl_ray r;

@@ -53,8 +53,8 @@ _Static_assert(offsetof(nl_mesh_info, transform) == 20 && offsetof(nl_mesh_info,
 #endif
 
 /* Navmeshes. Structs without a size field are fixed forever: every offset and the size. */
-_Static_assert(sizeof(nl_navmesh_id) == 8 && offsetof(nl_navmesh_id, generation) == 4, "nl_navmesh_id");
-_Static_assert(sizeof(nl_plugin_id) == 8 && offsetof(nl_plugin_id, generation) == 4, "nl_plugin_id");
+_Static_assert(sizeof(nl_navmesh_id) == 8 && offsetof(nl_navmesh_id, revision) == 4, "nl_navmesh_id");
+_Static_assert(sizeof(nl_plugin_id) == 8 && offsetof(nl_plugin_id, revision) == 4, "nl_plugin_id");
 _Static_assert(NL_MAX_POLYGON_VERTICES == 16, "NL_MAX_POLYGON_VERTICES");
 _Static_assert(NL_NO_POLYGON == 0xffffffffu, "NL_NO_POLYGON");
 _Static_assert(offsetof(nl_agent_type, radius) == 0 && offsetof(nl_agent_type, height) == 4 &&
@@ -76,7 +76,7 @@ _Static_assert(offsetof(nl_nav_point, point) == 0 && offsetof(nl_nav_point, dist
                    offsetof(nl_nav_point, beyond_box) == 21 && offsetof(nl_nav_point, reserved) == 22 &&
                    sizeof(nl_nav_point) == 24,
                "nl_nav_point layout");
-_Static_assert(offsetof(nl_query_filter, size) == 0 && offsetof(nl_query_filter, agent) == 8 &&
+_Static_assert(offsetof(nl_query_filter, size) == 0 && offsetof(nl_query_filter, capabilities) == 8 &&
                    offsetof(nl_query_filter, area_costs) == 32 && offsetof(nl_random_points_def, size) == 0 &&
                    offsetof(nl_navmesh_raycast_hit, size) == 0 && offsetof(nl_navmesh_raycast_hit, t) == 8 &&
                    offsetof(nl_navmesh_ray, start_polygon) == 12 && offsetof(nl_navmesh_ray, end) == 16 &&
@@ -90,16 +90,16 @@ _Static_assert(offsetof(nl_navmesh_def, size) == 0 && offsetof(nl_navmesh_build_
                    offsetof(nl_plugin_info, size) == 0,
                "growable structs start with size");
 /* Baked navmesh files (0.3). */
-_Static_assert(offsetof(nl_navmesh_load_def, size) == 0 && offsetof(nl_navmesh_load_def, surface) == 4 &&
+_Static_assert(offsetof(nl_navmesh_load_def, size) == 0 && offsetof(nl_navmesh_load_def, carrier) == 4 &&
                    offsetof(nl_navmesh_load_def, flags) == 12 && sizeof(nl_navmesh_load_def) == 16,
                "nl_navmesh_load_def layout");
 _Static_assert(offsetof(nl_navmesh_file_info, size) == 0 && offsetof(nl_navmesh_file_info, version) == 4 &&
-                   offsetof(nl_navmesh_file_info, file_size) == 8 && offsetof(nl_navmesh_file_info, agent) == 16 &&
+                   offsetof(nl_navmesh_file_info, file_size) == 8 && offsetof(nl_navmesh_file_info, agent_type) == 16 &&
                    offsetof(nl_navmesh_file_info, vertex_count) == 32 && offsetof(nl_navmesh_file_info, polygon_count) == 36 &&
                    offsetof(nl_navmesh_file_info, detail_triangle_count) == 40 &&
                    offsetof(nl_navmesh_file_info, link_count) == 44 &&
                    offsetof(nl_navmesh_file_info, generated_link_count) == 48 &&
-                   offsetof(nl_navmesh_file_info, rides_surface) == 52 && offsetof(nl_navmesh_file_info, quantum) == 56 &&
+                   offsetof(nl_navmesh_file_info, rides_carrier) == 52 && offsetof(nl_navmesh_file_info, quantum) == 56 &&
                    offsetof(nl_navmesh_file_info, reserved) == 60 && offsetof(nl_navmesh_file_info, level_hash) == 64 &&
                    sizeof(nl_navmesh_file_info) == 72,
                "nl_navmesh_file_info layout");
@@ -109,7 +109,7 @@ _Static_assert(offsetof(nl_navmesh_info, vertex_count) == 4 && offsetof(nl_navme
                    offsetof(nl_navmesh_info, welded_vertex_count) == 20 &&
                    offsetof(nl_navmesh_info, flipped_polygon_count) == 24 &&
                    offsetof(nl_navmesh_info, dropped_polygon_count) == 28 &&
-                   offsetof(nl_navmesh_info, non_manifold_edge_count) == 32 && offsetof(nl_navmesh_info, agent) == 36 &&
+                   offsetof(nl_navmesh_info, non_manifold_edge_count) == 32 && offsetof(nl_navmesh_info, agent_type) == 36 &&
                    offsetof(nl_navmesh_info, bounds_min) == 52 && offsetof(nl_navmesh_info, bounds_max) == 64 &&
                    offsetof(nl_navmesh_info, turned_over_mesh_count) == 84 && sizeof(nl_navmesh_info) == 92,
                "nl_navmesh_info");
@@ -132,14 +132,14 @@ _Static_assert(offsetof(nl_navmesh_def, vertices) == 8 && offsetof(nl_navmesh_de
                    offsetof(nl_navmesh_def, vertex_stride) == 20 && offsetof(nl_navmesh_def, indices) == 24 &&
                    offsetof(nl_navmesh_def, polygon_vertex_counts) == 32 &&
                    offsetof(nl_navmesh_def, polygon_count) == 40 && offsetof(nl_navmesh_def, areas) == 48 &&
-                   offsetof(nl_navmesh_def, weld_tolerance) == 56 && offsetof(nl_navmesh_def, agent) == 60 &&
+                   offsetof(nl_navmesh_def, weld_tolerance) == 56 && offsetof(nl_navmesh_def, agent_type) == 60 &&
                    offsetof(nl_navmesh_def, detail_vertices) == 80 &&
                    offsetof(nl_navmesh_def, detail_vertex_count) == 88 &&
                    offsetof(nl_navmesh_def, detail_triangles) == 96 &&
                    offsetof(nl_navmesh_def, detail_triangle_count) == 104 &&
                    offsetof(nl_navmesh_def, detail_triangle_starts) == 112,
                "nl_navmesh_def on LP64");
-_Static_assert(offsetof(nl_navmesh_build_def, builder) == 8 && offsetof(nl_navmesh_build_def, agent) == 16 &&
+_Static_assert(offsetof(nl_navmesh_build_def, builder) == 8 && offsetof(nl_navmesh_build_def, agent_type) == 16 &&
                    offsetof(nl_navmesh_build_def, settings) == 32 &&
                    offsetof(nl_navmesh_build_def, settings_json) == 40 &&
                    offsetof(nl_navmesh_build_def, settings_json_length) == 48,
@@ -161,14 +161,14 @@ _Static_assert(offsetof(nl_plugin_info, abi_version) == 4 && offsetof(nl_plugin_
 #endif
 
 /* Agents: growable outputs, no hidden padding. */
-_Static_assert(sizeof(nl_agent_id) == 8 && offsetof(nl_agent_id, generation) == 4, "nl_agent_id");
+_Static_assert(sizeof(nl_agent_id) == 8 && offsetof(nl_agent_id, revision) == 4, "nl_agent_id");
 _Static_assert(offsetof(nl_agent_info, state) == 4 && offsetof(nl_agent_info, id) == 8 && offsetof(nl_agent_info, position) == 16 &&
                    offsetof(nl_agent_info, velocity) == 28 && offsetof(nl_agent_info, polygon) == 40 &&
                    offsetof(nl_agent_info, reason) == 44 && offsetof(nl_agent_info, link) == 48 &&
                    offsetof(nl_agent_info, link_progress) == 56 && offsetof(nl_agent_info, destination) == 60 &&
                    offsetof(nl_agent_info, has_destination) == 72 && offsetof(nl_agent_info, corners_ahead) == 76 &&
                    offsetof(nl_agent_info, user_data) == 80 && offsetof(nl_agent_info, navmesh) == 88 &&
-                   offsetof(nl_agent_info, surface) == 96 && offsetof(nl_agent_info, surface_position) == 104 &&
+                   offsetof(nl_agent_info, carrier) == 96 && offsetof(nl_agent_info, carrier_position) == 104 &&
                    offsetof(nl_agent_info, reserved2) == 116 && sizeof(nl_agent_info) == 120,
                "nl_agent_info layout");
 _Static_assert(offsetof(nl_agent_event, kind) == 4 && offsetof(nl_agent_event, agent) == 8 && offsetof(nl_agent_event, link) == 16 &&
@@ -182,7 +182,7 @@ _Static_assert(offsetof(nl_agent_trajectory, link) == 8 && offsetof(nl_agent_tra
 
 /* Links. nl_link_id and nl_link_requirements have no size field: fixed from 1.0 (CHANGELOG.md lists
    their changes before it). nl_link grows at its end (its size field). */
-_Static_assert(sizeof(nl_link_id) == 8 && offsetof(nl_link_id, index1) == 0 && offsetof(nl_link_id, generation) == 4,
+_Static_assert(sizeof(nl_link_id) == 8 && offsetof(nl_link_id, index1) == 0 && offsetof(nl_link_id, revision) == 4,
                "nl_link_id");
 _Static_assert(sizeof(nl_link_kind) == 4, "nl_link_kind is a uint32");
 _Static_assert(NL_LINK_JUMP == 1u && NL_LINK_DROP == 2u && NL_LINK_MANUAL == 3u && NL_LINK_FIRST_PLUGIN_KIND == 256u,

@@ -126,13 +126,13 @@ void status_and_check() {
 
 void ids() {
     const navlink::MeshId null_id;
-    CHECK(!null_id && null_id.index1 == 0u && null_id.generation == 0u);
+    CHECK(!null_id && null_id.index1 == 0u && null_id.revision == 0u);
     const nl_mesh_id raw = {3, 7};
     const navlink::MeshId id = raw;
     CHECK(static_cast<bool>(id) && id == raw && raw == id && id != null_id);
     const nl_mesh_id other = {3, 8};
     CHECK(id != other && navlink::MeshId(other) != id);
-    CHECK(id.raw().index1 == 3u && id.raw().generation == 7u);
+    CHECK(id.raw().index1 == 3u && id.raw().revision == 7u);
     CHECK(navlink::MeshId(nl_mesh_id{0, 1}));  // only the all-zero id is null
 }
 

@@ -366,7 +366,7 @@ typedef struct results {
     uint32_t jumps, drops, jumps_after_update;
 } results;
 
-#define UNTAG(id) ((id).generation &= 0xfffffu)
+#define UNTAG(id) ((id).revision &= 0xfffffu)
 
 static void cast_rays(nl_world* world, nl_ray_hit* hits) {
     uint32_t i;
@@ -427,9 +427,9 @@ static void run_scenario(nl_world* world, results* r) {
     request.navmesh = navmesh;
     request.start[0] = -10.0f;
     request.goal[0] = 26.0f;
-    request.agent.max_jump_distance = 4.5f;
-    request.agent.max_jump_height = 1.5f;
-    request.agent.max_drop_height = 6.0f;
+    request.capabilities.max_jump_distance = 4.5f;
+    request.capabilities.max_jump_height = 1.5f;
+    request.capabilities.max_drop_height = 6.0f;
     memset(&r->path, 0, sizeof r->path);
     memset(r->points, 0, sizeof r->points);
     r->path.size = sizeof r->path;

@@ -427,7 +427,7 @@ static void group_agent_get_info(void) {
         fill(&info, sizeof info);
         info.size = sizeof info;
         EXPECT_OK(nl_agent_get_info(A.world, A.agent, &info));
-        EXPECT(info.size == sizeof info && info.id.index1 == A.agent.index1 && info.id.generation == A.agent.generation &&
+        EXPECT(info.size == sizeof info && info.id.index1 == A.agent.index1 && info.id.revision == A.agent.revision &&
                    info.state == NL_AGENT_WALKING && info.user_data == 7u && info.has_destination == 1u &&
                    info.corners_ahead > 0u && finite3(info.position),
                "size %u, state %u, user_data %llu", (unsigned)info.size, (unsigned)info.state, (unsigned long long)info.user_data);
@@ -503,7 +503,7 @@ static void group_agent_get_trajectory(void) {
         t.size = sizeof t;
         EXPECT_OK(nl_agent_get_trajectory(A.world, A.flyer, &t));
         EXPECT(t.kind == NL_TRAJECTORY_ARC || t.kind == NL_TRAJECTORY_FALL || t.kind == NL_TRAJECTORY_LINE, "kind %u", (unsigned)t.kind);
-        EXPECT(t.link.index1 == info.link.index1 && t.link.generation == info.link.generation && t.link.index1 != 0u,
+        EXPECT(t.link.index1 == info.link.index1 && t.link.revision == info.link.revision && t.link.index1 != 0u,
                "the trajectory's link is not the agent's");
         EXPECT(isfinite(t.duration) && t.duration > 0.0f && t.elapsed >= 0.0f && t.elapsed <= t.duration && finite3(t.from) &&
                    finite3(t.to) && finite3(t.apex),
@@ -545,7 +545,7 @@ static int failed_events_of(nl_agent_id agent) {
     EXPECT(NL_SUCCEEDED(nl_world_get_agent_events(A.world, events, 16, &n)), "nl_world_get_agent_events: %s",
            nl_get_last_error_message());
     for (i = 0; i < n && i < 16; ++i) {
-        if (events[i].agent.index1 != agent.index1 || events[i].agent.generation != agent.generation) continue;
+        if (events[i].agent.index1 != agent.index1 || events[i].agent.revision != agent.revision) continue;
         EXPECT(events[i].kind == NL_AGENT_EVENT_FAILED && events[i].reason == NL_AGENT_REASON_NAVMESH_REMOVED &&
                    events[i].user_data == 7u,
                "event kind %u, reason %u", (unsigned)events[i].kind, (unsigned)events[i].reason);

@@ -126,7 +126,7 @@ static void group_defaults(void) {
     CASE("nl_default_agent_def", "values as documented (a walker, height 2, 3.5 m/s, 8 m/s2, gravity 9.81, avoidance on)") {
         const nl_agent_def d = nl_default_agent_def();
         const nl_agent_capabilities c = nl_default_agent_capabilities();
-        EXPECT(d.navmesh.index1 == 0u && d.navmesh.generation == 0u && d.height == 2.0f && d.max_speed == 3.5f &&
+        EXPECT(d.navmesh.index1 == 0u && d.navmesh.revision == 0u && d.height == 2.0f && d.max_speed == 3.5f &&
                    d.max_acceleration == 8.0f && d.gravity == 9.81f && d.takeoff_speed == 0.0f && d.position[0] == 0.0f &&
                    d.position[1] == 0.0f && d.position[2] == 0.0f && d.avoidance == 1u && d.user_data == 0u &&
                    memcmp(&d.capabilities, &c, sizeof c) == 0,

@@ -228,11 +228,11 @@ static const struct_decl* find_struct(const declarations* d, const char* name) {
     return NULL;
 }
 
-/* Ids are {uint32_t index1; uint32_t generation;}, passed by value. */
+/* Ids are {uint32_t index1; uint32_t revision;}, passed by value. */
 static int is_id(const declarations* d, const char* type) {
     const struct_decl* s = find_struct(d, type);
     return s && s->field_count == 2 && strcmp(s->fields[0].name, "index1") == 0 &&
-           strcmp(s->fields[1].name, "generation") == 0;
+           strcmp(s->fields[1].name, "revision") == 0;
 }
 
 static int has_size_field(const struct_decl* s) {

@@ -24,9 +24,9 @@ const bad_float k_bad_floats[3] = {{"NaN", NAN}, {"inf", INFINITY}, {"-inf", -IN
 size_t bad_ids(raw_id live, raw_id stale, raw_id foreign, bad_id* out) {
     size_t n = 0, k;
     const raw_id garbage[] = {
-        {live.index1, live.generation + 1u},         /* the slot's next counter */
-        {live.index1, live.generation ^ 0x80000000u}, /* another world's tag, same counter */
-        {live.index1 + 1000u, live.generation},      /* past the last slot */
+        {live.index1, live.revision + 1u},         /* the slot's next counter */
+        {live.index1, live.revision ^ 0x80000000u}, /* another world's tag, same counter */
+        {live.index1 + 1000u, live.revision},      /* past the last slot */
         {0xffffffffu, 0xffffffffu},
         {0x7fffffffu, 1u},
         {0x9e3779b9u, 0x7f4a7c15u}, /* pseudo-random */
@@ -34,19 +34,19 @@ size_t bad_ids(raw_id live, raw_id stale, raw_id foreign, bad_id* out) {
     };
     snprintf(out[n].what, sizeof out[n].what, "null");
     out[n++].id = (raw_id){0u, 0u};
-    snprintf(out[n].what, sizeof out[n].what, "null {0, %u} (a live generation)", (unsigned)live.generation);
-    out[n++].id = (raw_id){0u, live.generation};
+    snprintf(out[n].what, sizeof out[n].what, "null {0, %u} (a live revision)", (unsigned)live.revision);
+    out[n++].id = (raw_id){0u, live.revision};
     if (stale.index1 != 0u) {
         snprintf(out[n].what, sizeof out[n].what, "stale {%u, %u} (slot reused)", (unsigned)stale.index1,
-                 (unsigned)stale.generation);
+                 (unsigned)stale.revision);
         out[n++].id = stale;
     }
     for (k = 0; k < sizeof garbage / sizeof *garbage; ++k) {
         snprintf(out[n].what, sizeof out[n].what, "garbage {%u, %u}", (unsigned)garbage[k].index1,
-                 (unsigned)garbage[k].generation);
+                 (unsigned)garbage[k].revision);
         out[n++].id = garbage[k];
     }
-    snprintf(out[n].what, sizeof out[n].what, "foreign {%u, %u}", (unsigned)foreign.index1, (unsigned)foreign.generation);
+    snprintf(out[n].what, sizeof out[n].what, "foreign {%u, %u}", (unsigned)foreign.index1, (unsigned)foreign.revision);
     out[n++].id = foreign;
     return n;
 }
@@ -94,9 +94,9 @@ nl_path_request_def gap_request(nl_navmesh_id navmesh) {
     def.navmesh = navmesh;
     def.start[0] = -6.0f;
     def.goal[0] = 6.0f;
-    def.agent.max_jump_distance = 6.0f;
-    def.agent.max_jump_height = 1.5f;
-    def.agent.max_drop_height = 2.0f;
+    def.capabilities.max_jump_distance = 6.0f;
+    def.capabilities.max_jump_height = 1.5f;
+    def.capabilities.max_drop_height = 2.0f;
     return def;
 }
 
@@ -480,8 +480,8 @@ static void setup_worlds(void) {
             fixture_failed("the pending ticket is not pending");
         if (A.mesh.index1 != A.stale_mesh.index1 || A.navmesh.index1 != A.stale_navmesh.index1 ||
             A.pending_ticket.index1 != A.stale_ticket.index1 || A.link.index1 != B.link.index1 ||
-            (A.link.generation & 0xfffffu) != (B.link.generation & 0xfffffu) || A.agent.index1 != A.stale_agent.index1 ||
-            A.agent.index1 != B.agent.index1 || (A.agent.generation & 0xfffffu) != (B.agent.generation & 0xfffffu) ||
+            (A.link.revision & 0xfffffu) != (B.link.revision & 0xfffffu) || A.agent.index1 != A.stale_agent.index1 ||
+            A.agent.index1 != B.agent.index1 || (A.agent.revision & 0xfffffu) != (B.agent.revision & 0xfffffu) ||
             A.flyer.index1 != B.flyer.index1 || A.agent_events == 0u)
             fixture_failed("stale and foreign ids do not share slots with live ones");
     }
@@ -652,7 +652,7 @@ void optional_id_cases(const def_function* f, const void* valid, size_t size, si
         def_accepts(def.bytes);
     }
     FOR_BAD_IDS(bad, live, stale, foreign) {
-        if (bad->id.index1 == 0u && bad->id.generation == 0u) continue; /* the null id: allowed above */
+        if (bad->id.index1 == 0u && bad->id.revision == 0u) continue; /* the null id: allowed above */
         CASE(f->function, "%s %s", field, bad->what) {
             memcpy(def.bytes, valid, size);
             memcpy(def.bytes + offset, &bad->id, sizeof bad->id);

@@ -23,12 +23,12 @@ typedef struct bad_float {
 extern const bad_float k_bad_floats[3]; /* NaN, inf, -inf */
 #define BAD_FLOAT_COUNT (sizeof k_bad_floats / sizeof *k_bad_floats)
 
-/* Ids by value, whatever their type: every nl_*_id is {index1, generation}. */
+/* Ids by value, whatever their type: every nl_*_id is {index1, revision}. */
 typedef struct raw_id {
-    uint32_t index1, generation;
+    uint32_t index1, revision;
 } raw_id;
-#define RAW(id) ((raw_id){(id).index1, (id).generation})
-#define AS(type, r) ((type){(r).index1, (r).generation})
+#define RAW(id) ((raw_id){(id).index1, (id).revision})
+#define AS(type, r) ((type){(r).index1, (r).revision})
 
 typedef struct bad_id {
     char what[64]; /* "null", "stale", "garbage {1, 2}", "foreign" */
@@ -236,7 +236,7 @@ typedef struct geometry_fields {
     offsetof(type, vertices), offsetof(type, vertex_count), offsetof(type, vertex_stride), offsetof(type, indices)
 void geometry_cases(const char* function, const void* valid, size_t size, const geometry_fields* g);
 
-/* A def's optional id at `offset`, named `field` ("def->surface"): the null id is allowed (the
+/* A def's optional id at `offset`, named `field` ("def->carrier"): the null id is allowed (the
    def's default), every other bad id is INVALID_HANDLE naming the field. */
 void optional_id_cases(const def_function* f, const void* valid, size_t size, size_t offset, const char* field, raw_id live,
                        raw_id stale, raw_id foreign);

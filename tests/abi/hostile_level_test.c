@@ -65,7 +65,7 @@ static void bad_def_transforms(const char* function, const char* suffix, const n
 static void remove_mesh_out(const void* out) {
     nl_mesh_id id;
     memcpy(&id, out, sizeof id);
-    EXPECT(nl_mesh_is_valid(A.world, id) == 1, "the new mesh {%u, %u} is not valid", (unsigned)id.index1, (unsigned)id.generation);
+    EXPECT(nl_mesh_is_valid(A.world, id) == 1, "the new mesh {%u, %u} is not valid", (unsigned)id.index1, (unsigned)id.revision);
     EXPECT_OK(nl_mesh_remove(A.world, id));
 }
 

@@ -90,7 +90,7 @@ static void load_def_cases(const def_function* f) {
     const nl_navmesh_load_def valid = nl_default_navmesh_load_def();
     def_function_cases(f, &valid, sizeof valid);
     def_cases(f->function, &valid, sizeof valid, k_load_defs, sizeof k_load_defs / sizeof *k_load_defs, def_refuses, def_accepts);
-    optional_id_cases(f, &valid, sizeof valid, offsetof(nl_navmesh_load_def, surface), "def->surface", RAW(A.movable),
+    optional_id_cases(f, &valid, sizeof valid, offsetof(nl_navmesh_load_def, carrier), "def->carrier", RAW(A.movable),
                       RAW(A.stale_mesh), RAW(B.movable));
 }
 

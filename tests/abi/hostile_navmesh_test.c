@@ -50,7 +50,7 @@ static const def_case k_navmesh_defs[] = {
     {"def->areas NULL (allowed: area 0)", ALLOWED, NULL, {SET_PTR(nl_navmesh_def, areas, NULL)}},
     {"def->weld_tolerance negative", INVALID, "weld_tolerance", {SET_F32(nl_navmesh_def, weld_tolerance, -1.0f)}},
     {"def->weld_tolerance 2 (more than 1 m)", INVALID, "weld_tolerance", {SET_F32(nl_navmesh_def, weld_tolerance, 2.0f)}},
-    {"def->agent.radius negative", INVALID, "radius", {SET_F32(nl_navmesh_def, agent.radius, -0.5f)}},
+    {"def->agent_type.radius negative", INVALID, "radius", {SET_F32(nl_navmesh_def, agent_type.radius, -0.5f)}},
     {"def->detail_vertices NULL (allowed with no detail at all)", ALLOWED, NULL, {NO_DETAIL}},
     {"def->detail_vertices NULL (the rest of the detail given)", INVALID, "detail_vertices",
      {SET_PTR(nl_navmesh_def, detail_vertices, NULL)}},
@@ -80,13 +80,13 @@ static const float_field k_agent_type_floats[] = {
     FLOAT_FIELD(nl_agent_type, radius, 1), FLOAT_FIELD(nl_agent_type, height, 1),
     FLOAT_FIELD(nl_agent_type, max_climb, 1), FLOAT_FIELD(nl_agent_type, max_slope, 1)};
 
-/* The agent type's floats at `offset` in a def, named "agent.FIELD". */
+/* The agent type's floats at `offset` in a def, named "agent_type.FIELD". */
 static void bad_agent_floats(const char* function, const void* valid, size_t size, size_t offset, refuse_fn* refuse) {
     float_field fields[4];
     char names[4][32];
     size_t i;
     for (i = 0; i < 4; ++i) {
-        snprintf(names[i], sizeof names[i], "agent.%s", k_agent_type_floats[i].name);
+        snprintf(names[i], sizeof names[i], "agent_type.%s", k_agent_type_floats[i].name);
         fields[i].name = names[i];
         fields[i].offset = offset + k_agent_type_floats[i].offset;
         fields[i].count = 1;
@@ -94,20 +94,20 @@ static void bad_agent_floats(const char* function, const void* valid, size_t siz
     bad_float_fields(function, "def", valid, size, fields, 4, refuse);
 }
 
-/* A def's `surface` mesh id (at `offset`): the movable lift is allowed too (the navmesh rides it;
+/* A def's `carrier` mesh id (at `offset`): the movable lift is allowed too (the navmesh rides it;
    `riding` is a def that fits on the lift), a static mesh is INVALID_ARGUMENT. */
-static void surface_cases(const def_function* f, const void* valid, const void* riding, size_t size, size_t offset) {
+static void carrier_cases(const def_function* f, const void* valid, const void* riding, size_t size, size_t offset) {
     aligned_buffer def;
-    optional_id_cases(f, valid, size, offset, "def->surface", RAW(A.movable), RAW(A.stale_mesh), RAW(B.movable));
-    CASE(f->function, "def->surface the movable lift (allowed: the navmesh rides it)") {
+    optional_id_cases(f, valid, size, offset, "def->carrier", RAW(A.movable), RAW(A.stale_mesh), RAW(B.movable));
+    CASE(f->function, "def->carrier the movable lift (allowed: the navmesh rides it)") {
         memcpy(def.bytes, riding, size);
         memcpy(def.bytes + offset, &A.movable, sizeof A.movable);
         def_accepts(def.bytes);
     }
-    CASE(f->function, "def->surface a static mesh") {
+    CASE(f->function, "def->carrier a static mesh") {
         memcpy(def.bytes, valid, size);
         memcpy(def.bytes + offset, &A.mesh, sizeof A.mesh);
-        def_refuses(def.bytes, NL_STATUS_INVALID_ARGUMENT, "def->surface is not a movable mesh");
+        def_refuses(def.bytes, NL_STATUS_INVALID_ARGUMENT, "def->carrier is not a movable mesh");
     }
 }
 
@@ -120,8 +120,8 @@ static void group_navmesh_add(void) {
     def_cases("nl_navmesh_add", &valid, sizeof valid, k_navmesh_defs, sizeof k_navmesh_defs / sizeof *k_navmesh_defs,
               def_refuses, def_accepts);
     bad_float_fields("nl_navmesh_add", "def", &valid, sizeof valid, weld, 1, def_refuses);
-    bad_agent_floats("nl_navmesh_add", &valid, sizeof valid, offsetof(nl_navmesh_def, agent), def_refuses);
-    surface_cases(&add, &valid, &valid, sizeof valid, offsetof(nl_navmesh_def, surface));
+    bad_agent_floats("nl_navmesh_add", &valid, sizeof valid, offsetof(nl_navmesh_def, agent_type), def_refuses);
+    carrier_cases(&add, &valid, &valid, sizeof valid, offsetof(nl_navmesh_def, carrier));
 }
 
 /* The functions that take a navmesh id and no more than an output. */
@@ -321,11 +321,11 @@ static void group_navmesh_build(void) {
     def_function_cases(&k_build, &valid, sizeof valid);
     def_cases("nl_navmesh_build", &valid, sizeof valid, k_build_defs, sizeof k_build_defs / sizeof *k_build_defs, def_refuses,
               def_accepts);
-    bad_agent_floats("nl_navmesh_build", &valid, sizeof valid, offsetof(nl_navmesh_build_def, agent), def_refuses);
+    bad_agent_floats("nl_navmesh_build", &valid, sizeof valid, offsetof(nl_navmesh_build_def, agent_type), def_refuses);
     {
         nl_navmesh_build_def small = valid; /* the 4 m lift, eroded by a 0.6 m body, is below Recast's smallest region */
-        small.agent.radius = 0.2f;
-        surface_cases(&k_build, &valid, &small, sizeof valid, offsetof(nl_navmesh_build_def, surface));
+        small.agent_type.radius = 0.2f;
+        carrier_cases(&k_build, &valid, &small, sizeof valid, offsetof(nl_navmesh_build_def, carrier));
     }
     CASE("nl_navmesh_build", "def->progress cancels (returns 0 at once: CANCELLED, nothing added)") {
         nl_navmesh_build_def def = valid;

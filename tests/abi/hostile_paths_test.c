@@ -13,10 +13,10 @@ static const float_field k_request_floats[] = {
     FLOAT_FIELD(nl_path_request_def, start, 3),
     FLOAT_FIELD(nl_path_request_def, goal, 3),
     FLOAT_FIELD(nl_path_request_def, search_half_extents, 3),
-    FLOAT_FIELD(nl_path_request_def, agent.max_jump_distance, 1),
-    FLOAT_FIELD(nl_path_request_def, agent.max_jump_height, 1),
-    FLOAT_FIELD(nl_path_request_def, agent.max_drop_height, 1),
-    FLOAT_FIELD(nl_path_request_def, agent.radius, 1),
+    FLOAT_FIELD(nl_path_request_def, capabilities.max_jump_distance, 1),
+    FLOAT_FIELD(nl_path_request_def, capabilities.max_jump_height, 1),
+    FLOAT_FIELD(nl_path_request_def, capabilities.max_drop_height, 1),
+    FLOAT_FIELD(nl_path_request_def, capabilities.radius, 1),
     FLOAT_FIELD(nl_path_request_def, link_cost, 1),
 };
 
@@ -25,7 +25,7 @@ static const def_case k_request_defs[] = {
     {"def->search_half_extents 0", INVALID, "search_half_extents", {SET_F32(nl_path_request_def, search_half_extents[1], 0.0f)}},
     {"def->search_half_extents negative", INVALID, "search_half_extents",
      {SET_F32(nl_path_request_def, search_half_extents[1], -1.0f)}},
-    {"def->agent.radius negative", INVALID, "radius", {SET_F32(nl_path_request_def, agent.radius, -1.0f)}},
+    {"def->capabilities.radius negative", INVALID, "radius", {SET_F32(nl_path_request_def, capabilities.radius, -1.0f)}},
     {"def->link_cost negative", INVALID, "link_cost", {SET_F32(nl_path_request_def, link_cost, -1.0f)}},
     {"def->area_costs NULL (area_cost_count 3)", INVALID, "area_costs", {SET_U32(nl_path_request_def, area_cost_count, 3u)}},
     {"def->area_cost_count huge (area_costs NULL: not read)", INVALID, "area_cost_count",

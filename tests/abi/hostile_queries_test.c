@@ -25,14 +25,14 @@ static uint32_t near_polygon(void) {
 }
 
 static const float_field k_filter_floats[] = {
-    FLOAT_FIELD(nl_query_filter, agent.max_jump_distance, 1),
-    FLOAT_FIELD(nl_query_filter, agent.max_jump_height, 1),
-    FLOAT_FIELD(nl_query_filter, agent.max_drop_height, 1),
-    FLOAT_FIELD(nl_query_filter, agent.radius, 1),
+    FLOAT_FIELD(nl_query_filter, capabilities.max_jump_distance, 1),
+    FLOAT_FIELD(nl_query_filter, capabilities.max_jump_height, 1),
+    FLOAT_FIELD(nl_query_filter, capabilities.max_drop_height, 1),
+    FLOAT_FIELD(nl_query_filter, capabilities.radius, 1),
 };
 
 static const def_case k_filter_defs[] = {
-    {"filter->agent.radius negative", INVALID, "radius", {SET_F32(nl_query_filter, agent.radius, -1.0f)}},
+    {"filter->capabilities.radius negative", INVALID, "radius", {SET_F32(nl_query_filter, capabilities.radius, -1.0f)}},
     {"filter->area_costs NULL (area_cost_count 3)", INVALID, "area_costs", {SET_U32(nl_query_filter, area_cost_count, 3u)}},
     {"filter->area_cost_count huge (area_costs NULL: not read)", INVALID, "area_cost_count",
      {SET_U32(nl_query_filter, area_cost_count, UINT32_MAX)}},
@@ -86,7 +86,7 @@ static void group_default_query_filter(void) {
         const nl_query_filter f = nl_default_query_filter();
         const nl_agent_capabilities walker = nl_default_agent_capabilities();
         EXPECT(f.size == sizeof f && f.area_costs == NULL && f.area_cost_count == 0 && f.reserved == 0 &&
-                   memcmp(&f.agent, &walker, sizeof walker) == 0,
+                   memcmp(&f.capabilities, &walker, sizeof walker) == 0,
                "not a default walker keeping out of no area");
     }
 }
@@ -367,7 +367,7 @@ static const def_case k_random_defs[] = {
     {"def->radius beyond the limit (2e9)", INVALID, "radius", {SET_F32(nl_random_points_def, radius, 2.0e9f)}},
     {"def->centre beyond the limit (2e9)", INVALID, "centre", {SET_F32(nl_random_points_def, centre[2], 2.0e9f)}},
     {"def->filter NULL (allowed: every polygon)", ALLOWED, NULL, {SET_PTR(nl_random_points_def, filter, NULL)}},
-    {"def->filter refused (a negative drop)", INVALID, "def->filter->agent.max_drop_height",
+    {"def->filter refused (a negative drop)", INVALID, "def->filter->capabilities.max_drop_height",
      {SET_PTR(nl_random_points_def, filter, &k_bad_filter)}},
     {"def->reachable_from out of range", INVALID, "reachable_from",
      {SET_U32(nl_random_points_def, reachable_from, 1000000u)}},

@@ -222,7 +222,7 @@ static void degenerate_triangles(void) {
         nl_mesh_id untouched = {77u, 77u};
         def.triangle_count = 1; /* only {0, 0, 1} */
         CHECK_INVALID(nl_mesh_add(world, &def, &untouched), "def->indices: all 1 triangles are degenerate");
-        CHECK(untouched.index1 == 77u && untouched.generation == 77u);
+        CHECK(untouched.index1 == 77u && untouched.revision == 77u);
         CHECK(mesh_count(world) == 1);
     }
     /* From an OBJ, the same failures in the file's words: its faces and its vertices by their `v`
@@ -249,7 +249,7 @@ static void check_rejected_mesh(nl_world* world, const nl_mesh_def* def, const c
     nl_mesh_id out = {77u, 77u};
     const nl_status status = nl_mesh_add(world, def, &out);
     check_fail_at(status, NL_STATUS_INVALID_ARGUMENT, needle, "nl_mesh_add", file, line);
-    check_at(out.index1 == 77u && out.generation == 77u, file, line, "out_id was written on failure (%s)", needle);
+    check_at(out.index1 == 77u && out.revision == 77u, file, line, "out_id was written on failure (%s)", needle);
     check_at(mesh_count(world) == before, file, line, "a mesh was registered on failure (%s)", needle);
 }
 
@@ -346,7 +346,7 @@ static void mesh_rejections(void) {
         CHECK_INVALID(nl_mesh_add(world, NULL, &out), "def");
         CHECK_INVALID(nl_mesh_add(world, &def, NULL), "out_id");
         CHECK_INVALID(nl_mesh_add(NULL, &def, &out), "world");
-        CHECK(out.index1 == 77u && out.generation == 77u);
+        CHECK(out.index1 == 77u && out.revision == 77u);
     }
     CHECK(mesh_count(world) == 1);
     nl_world_destroy(world);
@@ -434,13 +434,13 @@ static void stale_ids(void) {
 
     /* Ids that were never issued. */
     {
-        const nl_mesh_id far = {1000u, 1u}, wrong_generation = {other.index1, other.generation + 1u};
+        const nl_mesh_id far = {1000u, 1u}, wrong_revision = {other.index1, other.revision + 1u};
         const nl_mesh_id zero_generation = {other.index1, 0u};
         CHECK(nl_mesh_is_valid(world, far) == 0);
-        CHECK(nl_mesh_is_valid(world, wrong_generation) == 0);
+        CHECK(nl_mesh_is_valid(world, wrong_revision) == 0);
         CHECK(nl_mesh_is_valid(world, zero_generation) == 0);
         CHECK_FAIL(nl_mesh_remove(world, far), NL_STATUS_INVALID_HANDLE, "nl_mesh_remove");
-        CHECK_FAIL(nl_mesh_remove(world, wrong_generation), NL_STATUS_INVALID_HANDLE, "nl_mesh_remove");
+        CHECK_FAIL(nl_mesh_remove(world, wrong_revision), NL_STATUS_INVALID_HANDLE, "nl_mesh_remove");
         CHECK(nl_mesh_is_valid(world, other) == 1);
     }
 
@@ -449,7 +449,7 @@ static void stale_ids(void) {
     CHECK_OK(nl_mesh_add(world, &def, &reused));
     CHECK(!same_id(reused, id));
     CHECK_MSG(reused.index1 == id.index1, "slot not reused (old {%u,%u}, new {%u,%u}); the reuse checks are vacuous",
-              (unsigned)id.index1, (unsigned)id.generation, (unsigned)reused.index1, (unsigned)reused.generation);
+              (unsigned)id.index1, (unsigned)id.revision, (unsigned)reused.index1, (unsigned)reused.revision);
     CHECK(nl_mesh_is_valid(world, id) == 0);
     CHECK(nl_mesh_is_valid(world, reused) == 1);
     CHECK_FAIL(nl_mesh_remove(world, id), NL_STATUS_INVALID_HANDLE, "nl_mesh_remove");
@@ -609,7 +609,7 @@ static void check_parse_error(nl_world* world, const char* text, size_t length, 
                  strstr(nl_get_last_error_message(), "nl_mesh_add_obj_memory") != NULL,
              file, line, "OBJ text gave 0x%08x (%s), expected a parse error: \"%.*s\"", (unsigned)status,
              nl_status_string(status), (int)(length > 60 ? 60 : length), text ? text : "");
-    check_at(out.index1 == 77u && out.generation == 77u && mesh_count(world) == before, file, line,
+    check_at(out.index1 == 77u && out.revision == 77u && mesh_count(world) == before, file, line,
              "a malformed OBJ registered something");
 }
 
@@ -748,7 +748,7 @@ static void obj(void) {
         nl_mesh_id out = {77u, 77u};
         CHECK_FAIL(nl_mesh_add_obj_file(world, "no/such/dir/missing-level.obj", NULL, &out), NL_STATUS_NOT_FOUND,
                    "missing-level.obj");
-        CHECK(out.index1 == 77u && out.generation == 77u);
+        CHECK(out.index1 == 77u && out.revision == 77u);
         CHECK_FAIL(nl_mesh_add_obj_file(world, "", NULL, &out), NL_STATUS_NOT_FOUND, "nl_mesh_add_obj_file");
         /* A directory cannot be read as a file, and a file that fails while it is read (/proc/self/mem
            from offset 0: EIO) is an I/O error, not a parse error of the bytes read before. */
@@ -770,7 +770,7 @@ static void obj(void) {
         CHECK_INVALID(nl_mesh_add_obj_memory(world, NULL, 10, NULL, &out), "data");
         CHECK_INVALID(nl_mesh_add_obj_memory(world, k_quad_obj, strlen(k_quad_obj), NULL, NULL), "out_id");
         CHECK_INVALID(nl_mesh_add_obj_memory(NULL, k_quad_obj, strlen(k_quad_obj), NULL, &out), "world");
-        CHECK(out.index1 == 77u && out.generation == 77u);
+        CHECK(out.index1 == 77u && out.revision == 77u);
     }
     CHECK(mesh_count(world) == 0);
     nl_world_destroy(world);

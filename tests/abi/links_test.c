@@ -100,9 +100,9 @@ static uint32_t count_kind(const nl_link* links, uint32_t n, nl_link_kind kind) 
     return k;
 }
 
-static int same_link_id(nl_link_id a, nl_link_id b) { return a.index1 == b.index1 && a.generation == b.generation; }
+static int same_link_id(nl_link_id a, nl_link_id b) { return a.index1 == b.index1 && a.revision == b.revision; }
 static int same_navmesh_id(nl_navmesh_id a, nl_navmesh_id b) {
-    return a.index1 == b.index1 && a.generation == b.generation;
+    return a.index1 == b.index1 && a.revision == b.revision;
 }
 
 /* Two lists equal byte for byte (ids included): "nothing changed". */
@@ -662,7 +662,7 @@ static void check_def_refused(nl_world* world, nl_navmesh_id navmesh, nl_link_id
     nl_link* after;
     if (!CHECK_FAIL(nl_link_add(world, navmesh, def, &out), NL_STATUS_INVALID_ARGUMENT, needle))
         fprintf(stderr, "    (nl_link_add: %s)\n", what);
-    CHECK_MSG(out.index1 == 77u && out.generation == 77u, "nl_link_add (%s) wrote out_id", what);
+    CHECK_MSG(out.index1 == 77u && out.revision == 77u, "nl_link_add (%s) wrote out_id", what);
     if (!CHECK_FAIL(nl_link_update(world, existing, def), NL_STATUS_INVALID_ARGUMENT, needle))
         fprintf(stderr, "    (nl_link_update: %s)\n", what);
     after = list_links(world, navmesh, &n1);
@@ -1517,7 +1517,7 @@ static void navmesh_removed_during_generation(void) {
         for (k = 1; k <= 4; ++k) {
             nl_link_id probe = old[i].id;
             nl_link got = nl_link_init();
-            probe.generation += k;
+            probe.revision += k;
             if (nl_link_is_valid(world, probe) && NL_SUCCEEDED(nl_link_get(world, probe, &got))) ++live;
         }
     }

@@ -21,7 +21,7 @@ static void defaults(void) {
     CHECK(build.size == sizeof(nl_navmesh_build_def));
     CHECK_THAT(build.builder == NULL || strcmp(build.builder, "recast") == 0,
                "nl_default_navmesh_build_def: builder \"recast\" (or NULL, which means it)");
-    CHECK(same_agent(build.agent, agent));
+    CHECK(same_agent(build.agent_type, agent));
     CHECK(build.settings == NULL && build.settings_json == NULL && build.settings_json_length == 0);
 
     CHECK(recast.size == sizeof(nl_recast_settings));
@@ -51,8 +51,8 @@ static void check_box_navmesh(const nl_world* world, nl_navmesh_id id, nl_agent_
     CHECK_MSG(info.polygon_count > 0 && info.vertex_count >= 3 && info.boundary_edge_count >= 3,
               "%s: %u polygons, %u vertices, %u boundary edges", label, (unsigned)info.polygon_count,
               (unsigned)info.vertex_count, (unsigned)info.boundary_edge_count);
-    CHECK_MSG(same_agent(info.agent, agent), "%s: info.agent is (%g %g %g %g), the def's (%g %g %g %g)", label,
-              info.agent.radius, info.agent.height, info.agent.max_climb, info.agent.max_slope, agent.radius,
+    CHECK_MSG(same_agent(info.agent_type, agent), "%s: info.agent is (%g %g %g %g), the def's (%g %g %g %g)", label,
+              info.agent_type.radius, info.agent_type.height, info.agent_type.max_climb, info.agent_type.max_slope, agent.radius,
               agent.height, agent.max_climb, agent.max_slope);
     /* On the top, inside the box, reaching near its edges (less the agent's radius). */
     CHECK_MSG(info.bounds_min[0] >= -10.0f && info.bounds_max[0] <= 10.0f && info.bounds_min[2] >= -10.0f &&
@@ -100,7 +100,7 @@ static void recast(void) {
     agent.height = 1.8f;
     agent.max_climb = 0.4f;
     agent.max_slope = 40.0f;
-    def.agent = agent;
+    def.agent_type = agent;
     CHECK_OK(nl_navmesh_build(world, &def, &id));
     CHECK(nl_navmesh_is_valid(world, id) == 1);
     CHECK(navmesh_count(world) == 1);
@@ -231,15 +231,15 @@ static void recast(void) {
     def.builder = "recast";
 
     /* A bad agent, a bad def. */
-    def.agent.radius = -1.0f;
+    def.agent_type.radius = -1.0f;
     CHECK_BUILD_FAILS(world, &def, NL_STATUS_INVALID_ARGUMENT, "radius");
-    def.agent = agent;
-    def.agent.height = 0.0f;
+    def.agent_type = agent;
+    def.agent_type.height = 0.0f;
     CHECK_BUILD_FAILS(world, &def, NL_STATUS_INVALID_ARGUMENT, "height");
-    def.agent = agent;
-    def.agent.max_slope = 90.0f;
+    def.agent_type = agent;
+    def.agent_type.max_slope = 90.0f;
     CHECK_BUILD_FAILS(world, &def, NL_STATUS_INVALID_ARGUMENT, "max_slope");
-    def.agent = agent;
+    def.agent_type = agent;
     def.size = 0;
     CHECK_BUILD_FAILS(world, &def, NL_STATUS_INVALID_ARGUMENT, "size");
     def.size = sizeof def;

@@ -41,11 +41,11 @@ uint32_t plugin_count(const nl_world* world) {
 }
 
 int same_navmesh(nl_navmesh_id a, nl_navmesh_id b) {
-    return a.index1 == b.index1 && a.generation == b.generation;
+    return a.index1 == b.index1 && a.revision == b.revision;
 }
 
 int same_plugin(nl_plugin_id a, nl_plugin_id b) {
-    return a.index1 == b.index1 && a.generation == b.generation;
+    return a.index1 == b.index1 && a.revision == b.revision;
 }
 
 int same_agent(nl_agent_type a, nl_agent_type b) {
@@ -388,7 +388,7 @@ void check_build_fails(nl_world* world, const nl_navmesh_build_def* def, nl_stat
     check_fail_at(status, detail, needle, "nl_navmesh_build", file, line);
     check_at(strstr(nl_get_last_error_message(), "nl_navmesh_build") != NULL, file, line,
              "the message does not name nl_navmesh_build (%s)", needle);
-    check_at(out.index1 == 77u && out.generation == 77u, file, line, "out_id was written on failure (%s)", needle);
+    check_at(out.index1 == 77u && out.revision == 77u, file, line, "out_id was written on failure (%s)", needle);
     check_at(navmesh_count(world) == before, file, line, "a navmesh was added on failure (%s)", needle);
 }
 

@@ -108,7 +108,7 @@ static void defaults(void) {
     CHECK(def.vertices == NULL && def.vertex_count == 0 && def.vertex_stride == 0);
     CHECK(def.indices == NULL && def.polygon_vertex_counts == NULL && def.polygon_count == 0 && def.areas == NULL);
     CHECK(def.weld_tolerance == 0.001f);
-    CHECK(same_agent(def.agent, agent));
+    CHECK(same_agent(def.agent_type, agent));
     CHECK(def.detail_vertices == NULL && def.detail_vertex_count == 0 && def.detail_triangles == NULL &&
           def.detail_triangle_starts == NULL);
 
@@ -136,7 +136,7 @@ static void add_grid(void) {
     info = navmesh_info(world, id);
     CHECK(info.welded_vertex_count == 0);
     CHECK(info.flipped_polygon_count == 0);
-    CHECK(same_agent(info.agent, nl_default_agent_type()));
+    CHECK(same_agent(info.agent_type, nl_default_agent_type()));
     check_grid_navmesh(world, id, 4, NULL, "quads");
 
     /* Exact neighbours, found by position: across each inner edge lies the quadrant on the other side. */
@@ -336,9 +336,9 @@ static void add_variants(void) {
         agent.max_climb = 0.3f;
         agent.max_slope = 30.0f;
         def = grid_def();
-        def.agent = agent;
+        def.agent_type = agent;
         CHECK_OK(nl_navmesh_add(world, &def, &id));
-        CHECK(same_agent(navmesh_info(world, id).agent, agent));
+        CHECK(same_agent(navmesh_info(world, id).agent_type, agent));
     }
 
     /* Repairs: a polygon of no area is dropped; an edge of three polygons connects none of them. */
@@ -466,7 +466,7 @@ static void check_rejected_navmesh(nl_world* world, const nl_navmesh_def* def, c
     check_fail_at(status, NL_STATUS_INVALID_ARGUMENT, needle, "nl_navmesh_add", file, line);
     check_at(strstr(nl_get_last_error_message(), "nl_navmesh_add") != NULL, file, line,
              "the message does not name nl_navmesh_add (%s)", needle);
-    check_at(out.index1 == 77u && out.generation == 77u, file, line, "out_id was written on failure (%s)", needle);
+    check_at(out.index1 == 77u && out.revision == 77u, file, line, "out_id was written on failure (%s)", needle);
     check_at(navmesh_count(world) == before, file, line, "a navmesh was added on failure (%s)", needle);
 }
 
@@ -495,7 +495,7 @@ static void rejections(void) {
         CHECK_INVALID(nl_navmesh_add(NULL, &def, &out), "world");
         CHECK_INVALID(nl_navmesh_add(world, NULL, &out), "def");
         CHECK_INVALID(nl_navmesh_add(world, &def, NULL), "out_id");
-        CHECK(out.index1 == 77u && out.generation == 77u);
+        CHECK(out.index1 == 77u && out.revision == 77u);
         CHECK(navmesh_count(world) == 2);
     }
     def.vertices = NULL;
@@ -550,18 +550,18 @@ static void rejections(void) {
     def.weld_tolerance = 0.001f;
 
     /* A bad agent. */
-    def.agent.radius = -1.0f;
-    CHECK_REJECTED_NAVMESH(world, &def, "agent.radius");
-    def.agent = nl_default_agent_type();
-    def.agent.height = 0.0f;
-    CHECK_REJECTED_NAVMESH(world, &def, "agent.height");
-    def.agent = nl_default_agent_type();
-    def.agent.max_slope = 90.0f;
-    CHECK_REJECTED_NAVMESH(world, &def, "agent.max_slope");
-    def.agent = nl_default_agent_type();
-    def.agent.max_climb = NAN;
-    CHECK_REJECTED_NAVMESH(world, &def, "agent.max_climb");
-    def.agent = nl_default_agent_type();
+    def.agent_type.radius = -1.0f;
+    CHECK_REJECTED_NAVMESH(world, &def, "agent_type.radius");
+    def.agent_type = nl_default_agent_type();
+    def.agent_type.height = 0.0f;
+    CHECK_REJECTED_NAVMESH(world, &def, "agent_type.height");
+    def.agent_type = nl_default_agent_type();
+    def.agent_type.max_slope = 90.0f;
+    CHECK_REJECTED_NAVMESH(world, &def, "agent_type.max_slope");
+    def.agent_type = nl_default_agent_type();
+    def.agent_type.max_climb = NAN;
+    CHECK_REJECTED_NAVMESH(world, &def, "agent_type.max_climb");
+    def.agent_type = nl_default_agent_type();
 
     /* def->size too small (a zeroed def, one from a header that never existed). */
     def.size = 0;
@@ -1076,10 +1076,10 @@ static void ids(void) {
     CHECK_BAD_NAVMESH_ID(world, a);
     CHECK_BAD_NAVMESH_ID(world, null_id);
     {
-        const nl_navmesh_id far = {1000u, 1u}, wrong_generation = {b.index1, b.generation + 1u};
+        const nl_navmesh_id far = {1000u, 1u}, wrong_revision = {b.index1, b.revision + 1u};
         const nl_navmesh_id zero_generation = {b.index1, 0u};
         CHECK_BAD_NAVMESH_ID(world, far);
-        CHECK_BAD_NAVMESH_ID(world, wrong_generation);
+        CHECK_BAD_NAVMESH_ID(world, wrong_revision);
         CHECK_BAD_NAVMESH_ID(world, zero_generation);
     }
 
@@ -1087,7 +1087,7 @@ static void ids(void) {
     CHECK_OK(nl_navmesh_add(world, &def, &reused));
     CHECK(!same_navmesh(reused, a));
     CHECK_MSG(reused.index1 == a.index1, "slot not reused (old {%u,%u}, new {%u,%u}); the reuse check is vacuous",
-              (unsigned)a.index1, (unsigned)a.generation, (unsigned)reused.index1, (unsigned)reused.generation);
+              (unsigned)a.index1, (unsigned)a.revision, (unsigned)reused.index1, (unsigned)reused.revision);
     CHECK_BAD_NAVMESH_ID(world, a);
     CHECK(nl_navmesh_is_valid(world, reused) == 1);
 
@@ -1096,7 +1096,7 @@ static void ids(void) {
     CHECK(nl_navmesh_is_valid(other, theirs) == 1);
     CHECK_MSG(theirs.index1 == reused.index1 || theirs.index1 == b.index1,
               "the other world's id {%u,%u} shares no slot number with this world's; the check is weaker",
-              (unsigned)theirs.index1, (unsigned)theirs.generation);
+              (unsigned)theirs.index1, (unsigned)theirs.revision);
     CHECK_BAD_NAVMESH_ID(world, theirs);
     CHECK_BAD_NAVMESH_ID(other, b);
     CHECK_BAD_NAVMESH_ID(other, reused);

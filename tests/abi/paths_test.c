@@ -44,9 +44,9 @@ static void set3(float* p, float x, float y, float z) {
     p[2] = z;
 }
 
-static int same_link(nl_link_id a, nl_link_id b) { return a.index1 == b.index1 && a.generation == b.generation; }
+static int same_link(nl_link_id a, nl_link_id b) { return a.index1 == b.index1 && a.revision == b.revision; }
 static int same_ticket(nl_path_ticket a, nl_path_ticket b) {
-    return a.index1 == b.index1 && a.generation == b.generation;
+    return a.index1 == b.index1 && a.revision == b.revision;
 }
 
 /* A world with one batch thread and `path_workers` path workers; exits the test if it cannot be made. */
@@ -96,7 +96,7 @@ static nl_navmesh_id add_cells(nl_world* world, const char* const* rows, int row
     def.polygon_vertex_counts = counts;
     def.polygon_count = cells;
     def.areas = areas;
-    def.agent.radius = agent_radius;
+    def.agent_type.radius = agent_radius;
     if (NL_FAILED(nl_navmesh_add(world, &def, &id))) {
         CHECK_MSG(0, "nl_navmesh_add of a cell map failed: %s", nl_get_last_error_message());
     }
@@ -139,14 +139,14 @@ static nl_path_request_def request(nl_navmesh_id navmesh, float sx, float sz, fl
     def.navmesh = navmesh;
     set3(def.start, sx, 0.0f, sz);
     set3(def.goal, gx, 0.0f, gz);
-    def.agent.radius = 0.0f;
+    def.capabilities.radius = 0.0f;
     return def;
 }
 
 /* A jumper: gaps up to 1.5 m, no rise, no drop. */
 static nl_path_request_def jumper(nl_navmesh_id navmesh, float sx, float gx) {
     nl_path_request_def def = request(navmesh, sx, 0.5f, gx, 0.5f);
-    def.agent.max_jump_distance = 1.5f;
+    def.capabilities.max_jump_distance = 1.5f;
     return def;
 }
 
@@ -241,11 +241,11 @@ static void defaults(void) {
     CHECK(a.radius == 0.6f);
     CHECK(a.abilities == 0u);
     CHECK(d.size == sizeof(nl_path_request_def));
-    CHECK(d.navmesh.index1 == 0u && d.navmesh.generation == 0u);
+    CHECK(d.navmesh.index1 == 0u && d.navmesh.revision == 0u);
     CHECK(d.start[0] == 0.0f && d.start[1] == 0.0f && d.start[2] == 0.0f);
     CHECK(d.goal[0] == 0.0f && d.goal[1] == 0.0f && d.goal[2] == 0.0f);
     CHECK(d.search_half_extents[0] == 2.0f && d.search_half_extents[1] == 4.0f && d.search_half_extents[2] == 2.0f);
-    CHECK(memcmp(&d.agent, &a, sizeof a) == 0);
+    CHECK(memcmp(&d.capabilities, &a, sizeof a) == 0);
     CHECK(d.area_costs == NULL && d.area_cost_count == 0u);
     CHECK(d.link_cost == 0.0f);
     CHECK(d.max_nodes == 0u);
@@ -343,9 +343,9 @@ static void find_synchronous(void) {
     /* The gap of 1.2 m against max_jump_distance. */
     def = jumper(s.navmesh, 0.5f, 5.5f);
     def.accept_partial = 0;
-    def.agent.max_jump_distance = 1.19f;
+    def.capabilities.max_jump_distance = 1.19f;
     CHECK(outcome_of(s.world, &def) == NL_PATH_NO_PATH);
-    def.agent.max_jump_distance = 1.21f;
+    def.capabilities.max_jump_distance = 1.21f;
     CHECK(outcome_of(s.world, &def) == NL_PATH_COMPLETE);
 
     /* Back over the bidirectional jump: the same link, reversed. */
@@ -358,28 +358,28 @@ static void find_synchronous(void) {
     /* Down the drop: a step off the edge, so its gap (1.2 m) is not held against max_jump_distance (0). */
     def = request(s.navmesh, 9.5f, 0.5f, 5.5f, 0.5f);
     def.accept_partial = 0;
-    def.agent.max_drop_height = 2.0f;
+    def.capabilities.max_drop_height = 2.0f;
     p = find(s.world, &def);
     CHECK(p.result.outcome == NL_PATH_COMPLETE && p.count == 4u);
     CHECK(at(&p.points[1], 8.1f, 0.5f) && at(&p.points[2], 6.9f, 0.5f));
     CHECK(p.points[1].segment == NL_LINK_DROP && p.points[1].reversed == 0 && same_link(p.points[1].link, s.drop));
-    def.agent.max_drop_height = 1.9f;
+    def.capabilities.max_drop_height = 1.9f;
     CHECK(outcome_of(s.world, &def) == NL_PATH_NO_PATH);
 
     /* Back up the drop: a jump with the drop's 2 m as its rise, and the gap held against the jump
        distance. The point's segment is NL_LINK_JUMP, reversed. */
     def = request(s.navmesh, 5.5f, 0.5f, 9.5f, 0.5f);
     def.accept_partial = 0;
-    def.agent.max_drop_height = 2.0f;
-    def.agent.max_jump_distance = 1.5f;
+    def.capabilities.max_drop_height = 2.0f;
+    def.capabilities.max_jump_distance = 1.5f;
     CHECK(outcome_of(s.world, &def) == NL_PATH_NO_PATH); /* no rise allowed */
-    def.agent.max_jump_height = 1.9f;
+    def.capabilities.max_jump_height = 1.9f;
     CHECK(outcome_of(s.world, &def) == NL_PATH_NO_PATH);
-    def.agent.max_jump_height = 2.0f;
-    def.agent.max_jump_distance = 1.0f;
+    def.capabilities.max_jump_height = 2.0f;
+    def.capabilities.max_jump_distance = 1.0f;
     CHECK(outcome_of(s.world, &def) == NL_PATH_NO_PATH); /* 1.2 m gap */
-    def.agent.max_jump_distance = 1.5f;
-    def.agent.max_drop_height = 0.0f; /* going up, the link asks for no drop */
+    def.capabilities.max_jump_distance = 1.5f;
+    def.capabilities.max_drop_height = 0.0f; /* going up, the link asks for no drop */
     p = find(s.world, &def);
     CHECK(p.result.outcome == NL_PATH_COMPLETE && p.count == 4u);
     CHECK(at(&p.points[1], 6.9f, 0.5f) && at(&p.points[2], 8.1f, 0.5f));
@@ -481,9 +481,9 @@ static void costs_and_radius(void) {
 
     /* A body wider than the navmesh's (radius 0) keeps the difference from the outline: a 1 m wide
        corridor closes for a radius of 0.5 or more (no room left in its portals). */
-    def.agent.radius = 0.45f;
+    def.capabilities.radius = 0.45f;
     CHECK(outcome_of(world, &def) == NL_PATH_COMPLETE);
-    def.agent.radius = 0.5f;
+    def.capabilities.radius = 0.5f;
     def.accept_partial = 0;
     CHECK(outcome_of(world, &def) == NL_PATH_NO_PATH);
     nl_world_destroy(world);
@@ -530,7 +530,7 @@ static void check_refused_at(nl_world* world, const nl_path_request_def* def, nl
     }
     check_fail_at(nl_path_request(world, def, &ticket), detail, needle, "nl_path_request", __FILE__, line);
     after = queue_stats(world);
-    check_at(ticket.index1 == 0xdeadu && ticket.generation == 0xbeefu && memcmp(&before, &after, sizeof before) == 0,
+    check_at(ticket.index1 == 0xdeadu && ticket.revision == 0xbeefu && memcmp(&before, &after, sizeof before) == 0,
              __FILE__, line, "a refused nl_path_request made no ticket and left the queue as it was (%s)", needle);
 }
 #define CHECK_REFUSED(world, def, detail, needle) check_refused_at((world), (def), (detail), (needle), __LINE__)
@@ -614,19 +614,19 @@ static void bad_input(void) {
 
     /* Capabilities. */
     def = good;
-    def.agent.max_jump_distance = -1.0f;
-    CHECK_REFUSED(s.world, &def, NL_STATUS_INVALID_ARGUMENT, "agent.max_jump_distance");
+    def.capabilities.max_jump_distance = -1.0f;
+    CHECK_REFUSED(s.world, &def, NL_STATUS_INVALID_ARGUMENT, "capabilities.max_jump_distance");
     def = good;
-    def.agent.max_jump_height = -0.5f;
-    CHECK_REFUSED(s.world, &def, NL_STATUS_INVALID_ARGUMENT, "agent.max_jump_height");
+    def.capabilities.max_jump_height = -0.5f;
+    CHECK_REFUSED(s.world, &def, NL_STATUS_INVALID_ARGUMENT, "capabilities.max_jump_height");
     def = good;
-    def.agent.max_drop_height = INFINITY;
-    CHECK_REFUSED(s.world, &def, NL_STATUS_INVALID_ARGUMENT, "agent.max_drop_height");
+    def.capabilities.max_drop_height = INFINITY;
+    CHECK_REFUSED(s.world, &def, NL_STATUS_INVALID_ARGUMENT, "capabilities.max_drop_height");
     def = good;
-    def.agent.radius = NAN;
-    CHECK_REFUSED(s.world, &def, NL_STATUS_INVALID_ARGUMENT, "agent.radius");
-    def.agent.radius = -0.1f;
-    CHECK_REFUSED(s.world, &def, NL_STATUS_INVALID_ARGUMENT, "agent.radius");
+    def.capabilities.radius = NAN;
+    CHECK_REFUSED(s.world, &def, NL_STATUS_INVALID_ARGUMENT, "capabilities.radius");
+    def.capabilities.radius = -0.1f;
+    CHECK_REFUSED(s.world, &def, NL_STATUS_INVALID_ARGUMENT, "capabilities.radius");
 
     /* Costs. */
     def = good;
@@ -758,7 +758,7 @@ static void queue_manual(void) {
 
     for (i = 0; i < N; ++i) {
         defs[i] = jumper(s.navmesh, 0.5f, 5.5f);
-        if (i == 1) defs[i].agent.max_jump_distance = 0.0f; /* a walker: partial */
+        if (i == 1) defs[i].capabilities.max_jump_distance = 0.0f; /* a walker: partial */
         defs[i].callback = record_call;
         defs[i].user = &logs[i];
         logs[i].world = s.world;
@@ -1022,7 +1022,7 @@ static nl_path_request_def variant(const islands* s, int v) {
         case 1: def = request(s->navmesh, 0.5f + offset, 0.5f, 6.5f, 0.7f); break; /* walker: partial */
         case 2:
             def = request(s->navmesh, 10.5f - offset, 0.5f, 4.5f, 0.3f);
-            def.agent.max_drop_height = 2.0f;
+            def.capabilities.max_drop_height = 2.0f;
             break;
         default:
             def = jumper(s->navmesh, 6.5f - offset, 1.5f);
@@ -1241,7 +1241,7 @@ static void explain_shortfalls(void) {
     nl_path_shortfall why;
     nl_navmesh_id bare;
 
-    def.agent.max_jump_distance = 1.0f;
+    def.capabilities.max_jump_distance = 1.0f;
     why = explain(s.world, &def);
     CHECK(why.reason == NL_PATH_SHORTFALL_LINK_BEYOND_BODY && why.limit == NL_LINK_LIMIT_JUMP_DISTANCE);
     CHECK(fabsf(why.needed - 1.2f) < 1e-3f && why.has == 1.0f);
@@ -1258,13 +1258,13 @@ static void explain_shortfalls(void) {
 
     /* Down it with a body that drops 1 m. */
     def = jumper(s.navmesh, 9.5f, 5.5f);
-    def.agent.max_drop_height = 1.0f;
+    def.capabilities.max_drop_height = 1.0f;
     why = explain(s.world, &def);
     CHECK(why.reason == NL_PATH_SHORTFALL_LINK_BEYOND_BODY && why.limit == NL_LINK_LIMIT_DROP_HEIGHT);
     CHECK(why.needed == 2.0f && why.has == 1.0f && why.reversed == 0);
 
     /* Able enough: nothing to say, whatever the outcome needs. */
-    def.agent.max_drop_height = 2.0f;
+    def.capabilities.max_drop_height = 2.0f;
     why = explain(s.world, &def);
     CHECK(why.reason == NL_PATH_SHORTFALL_NONE && why.text[0] == '\0' && why.link.index1 == 0u);
 

@@ -72,7 +72,7 @@ static nl_status test_build(void* state, const nl_plugin_host* host, const nl_na
     nl_navmesh_def navmesh;
     nl_status status;
     ++self->builds;
-    self->agent = def->agent;
+    self->agent = def->agent_type;
     self->sink_status[0] = self->sink_status[1] = 0u;
     self->level_vertices = self->level_triangles = 0xdeadbeefu;
     self->short_copy_status = 0u;
@@ -98,7 +98,7 @@ static nl_status test_build(void* state, const nl_plugin_host* host, const nl_na
     navmesh.polygon_vertex_counts = k_quad_counts;
     navmesh.polygon_count = 4;
     navmesh.weld_tolerance = 0.001f;
-    navmesh.agent = def->agent;
+    navmesh.agent_type = def->agent_type;
     self->record_status = 0u;
     switch (mode) {
     case MODE_RECORD:
@@ -248,7 +248,7 @@ static void check_register_fails(nl_world* world, nl_plugin_entry_fn* entry, nl_
     nl_plugin_id out = {77u, 77u};
     const nl_status status = nl_plugin_register(world, entry, &out);
     check_fail_at(status, detail, needle, "nl_plugin_register", file, line);
-    check_at(out.index1 == 77u && out.generation == 77u, file, line, "out_id was written on failure (%s)", needle);
+    check_at(out.index1 == 77u && out.revision == 77u, file, line, "out_id was written on failure (%s)", needle);
     check_at(plugin_count(world) == before, file, line, "a plugin was registered on failure (%s)", needle);
 }
 
@@ -287,16 +287,16 @@ static void registered(void) {
     /* Built through nl_navmesh_build with builder = its name: the builder got the def's agent, its
        state, the host's table and the level (the box: 8 vertices, 12 triangles). */
     def.builder = "c-test-builder";
-    def.agent.radius = 0.35f;
+    def.agent_type.radius = 0.35f;
     CHECK_OK(nl_navmesh_build(world, &def, &id));
     CHECK(g_plugin.builds == 1 && g_plugin.build_checks == 1);
-    CHECK(same_agent(g_plugin.agent, def.agent));
+    CHECK(same_agent(g_plugin.agent, def.agent_type));
     CHECK_MSG(g_plugin.level_vertices == 8 && g_plugin.level_triangles == 12, "the level has %u vertices, %u triangles",
               (unsigned)g_plugin.level_vertices, (unsigned)g_plugin.level_triangles);
     CHECK(g_plugin.short_copy_status == (NL_STATUS_FAILURE | NL_STATUS_BUFFER_TOO_SMALL));
     CHECK(g_plugin.sink_status[0] == NL_STATUS_SUCCESS);
     check_grid_navmesh(world, id, 4, NULL, "built by the C test builder");
-    CHECK(same_agent(navmesh_info(world, id).agent, def.agent));
+    CHECK(same_agent(navmesh_info(world, id).agent_type, def.agent_type));
     CHECK(navmesh_count(world) == 1);
 
     /* Registering it again is refused by name; so is a plugin named like the built-in one. */
@@ -509,7 +509,7 @@ static void misbehaving_builders(void) {
                   (unsigned)status, nl_status_string(status));
         CHECK_MSG(strstr(nl_get_last_error_message(), "c-test-builder") != NULL,
                   "%s: the message names the builder: \"%s\"", k_misbehaviours[m].what, nl_get_last_error_message());
-        CHECK_MSG(out.index1 == 77u && out.generation == 77u, "%s: out_id was written", k_misbehaviours[m].what);
+        CHECK_MSG(out.index1 == 77u && out.revision == 77u, "%s: out_id was written", k_misbehaviours[m].what);
         CHECK_MSG(navmesh_count(world) == 0, "%s: the failed build left %u navmesh(es) in the world",
                   k_misbehaviours[m].what, (unsigned)navmesh_count(world));
         nl_world_destroy(world);

@@ -86,7 +86,7 @@ static void listed(void) {
             CHECK_FAIL(nl_plugin_load(world, text_path, &out), NL_STATUS_IO_ERROR, text_path);
             remove(text_path);
         }
-        CHECK(out.index1 == 77u && out.generation == 77u);
+        CHECK(out.index1 == 77u && out.revision == 77u);
         CHECK(plugin_count(world) == 1);
     }
     nl_world_destroy(world);

@@ -53,7 +53,7 @@ static nl_navmesh_def cell_def(cell_navmesh* m, const char* const* rows, int row
     def.polygon_vertex_counts = m->counts;
     def.polygon_count = m->polygons;
     def.areas = m->areas;
-    def.agent.radius = 0.0f;
+    def.agent_type.radius = 0.0f;
     return def;
 }
 
@@ -78,8 +78,8 @@ static void add_link(nl_world* world, nl_navmesh_id navmesh, float from_x, float
 
 static nl_query_filter jumper(float distance) {
     nl_query_filter f = nl_default_query_filter();
-    f.agent.radius = 0.0f;
-    f.agent.max_jump_distance = distance;
+    f.capabilities.radius = 0.0f;
+    f.capabilities.max_jump_distance = distance;
     return f;
 }
 
@@ -138,10 +138,10 @@ static void reachability(void) {
     {
         uint32_t bad = 6, good = 0;
         nl_query_filter negative = able;
-        negative.agent.max_drop_height = -1.0f;
+        negative.capabilities.max_drop_height = -1.0f;
         CHECK_INVALID(nl_navmesh_can_reach(world, navmesh, &able, &good, &bad, 1, answers), "to_polygons[0] is 6");
         CHECK_INVALID(nl_navmesh_can_reach(world, navmesh, &negative, &good, &good, 1, answers),
-                      "filter->agent.max_drop_height");
+                      "filter->capabilities.max_drop_height");
         CHECK_INVALID(nl_navmesh_get_reachable_polygons(world, navmesh, &walker, 9, NULL, 0, &count), "from_polygon is 9");
     }
     nl_world_destroy(world);
@@ -162,7 +162,7 @@ static void no_path_at_once(void) {
     def.start[2] = 0.5f;
     def.goal[0] = 8.5f;
     def.goal[2] = 0.5f;
-    def.agent.radius = 0.0f;
+    def.capabilities.radius = 0.0f;
     def.accept_partial = 0;
     CHECK_OK(nl_path_find(world, &def, &result, NULL, 0, &count));
     /* Searched (no map was built): the cells it could walk through, not the dead end at the wall. */
@@ -246,7 +246,7 @@ static void raycast(void) {
         nl_navmesh_ray down = ray(0, 0.5f, 0.3f, 0.5f, -5.0f);
         uint32_t polygons[8];
         def.vertices = v, def.vertex_count = 4, def.indices = tris, def.polygon_vertex_counts = counts;
-        def.polygon_count = 2, def.agent.radius = 0.0f;
+        def.polygon_count = 2, def.agent_type.radius = 0.0f;
         if (CHECK_OK(nl_navmesh_add(world, &def, &overlapping))) {
             CHECK_OK(nl_navmesh_raycast(world, overlapping, NULL, &down, 1, hits, polygons, 8));
             CHECK_THAT(hits[0].polygon_count <= 2 && hits[0].hit == 1 && hits[0].t < 0.1f,
@@ -364,7 +364,7 @@ static void random_points(void) {
         const float costs[3] = {1, 1, NL_AREA_EXCLUDED};
         nl_query_filter filter = nl_default_query_filter();
         uint32_t only_first_two = 1;
-        filter.agent.radius = 0.0f;
+        filter.capabilities.radius = 0.0f;
         filter.area_costs = costs;
         filter.area_cost_count = 3;
         def.radius = 0.0f;
@@ -406,7 +406,7 @@ static void* query_thread(void* arg) {
     for (i = 0; i < 2000; ++i) {
         uint8_t answers[2];
         uint32_t count = 0;
-        filter.agent.max_jump_height = (float)(i % 4);  /* four bodies of one class: one map */
+        filter.capabilities.max_jump_height = (float)(i % 4);  /* four bodies of one class: one map */
         if (NL_FAILED(nl_navmesh_can_reach(job->world, job->navmesh, &filter, from, to, 2, answers)) ||
             NL_FAILED(nl_navmesh_get_reachable_polygons(job->world, job->navmesh, &filter, 1, NULL, 0, &count))) {
             ++job->failures;

@@ -185,7 +185,7 @@ bool measure(const Source& source) {
     const double build_start = nl::samples::now_ms();
     if (NL_FAILED(nl_navmesh_build(two.world, &build, &id))) return fail(source, "navmesh build");
     const double build_ms = nl::samples::now_ms() - build_start;
-    const auto navmesh = two.world->core->navmeshes().navmesh(nl::Handle{id.index1, id.generation});
+    const auto navmesh = two.world->core->navmeshes().navmesh(nl::Handle{id.index1, id.revision});
     if (g_stages)
         std::fprintf(stderr, "  %s: navmesh %u polygons, %zu boundary edges, built in %.0f ms\n", source.name.c_str(),
                      navmesh->polygon_count(), navmesh->boundary_edges().size(), build_ms);

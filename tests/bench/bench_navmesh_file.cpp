@@ -112,7 +112,7 @@ bool measure(const Level& level) {
     nl_navmesh_get_info(game, loaded, &b);
     const bool same = a.polygon_count == b.polygon_count && a.vertex_count == b.vertex_count &&
                       link_count(world, navmesh) == link_count(game, loaded) && saved(game, loaded) == file;
-    const auto graph = game->core->navmeshes().path_graph(nl::Handle{loaded.index1, loaded.generation});
+    const auto graph = game->core->navmeshes().path_graph(nl::Handle{loaded.index1, loaded.revision});
     const size_t memory = graph->navmesh().memory_bytes() + graph->link_index_bytes();
     std::printf("%-18s %8u %6u %11zu %12d %11.3f %12zu %13.3f %9.1f %8.2f %9.4f %4s\n", level.name.c_str(), a.polygon_count,
                 link_count(world, navmesh), file.size(), detour.bytes, double(file.size()) / detour.bytes, memory,

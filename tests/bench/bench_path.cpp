@@ -130,9 +130,9 @@ nl_path_request_def request_for(const Level& level, const Pair& pair) {
 // A body that takes the default generated links.
 nl_path_request_def jumper_request_for(const Level& level, const Pair& pair) {
     nl_path_request_def def = request_for(level, pair);
-    def.agent.max_jump_distance = 4.0f;
-    def.agent.max_jump_height = 2.0f;
-    def.agent.max_drop_height = 6.0f;
+    def.capabilities.max_jump_distance = 4.0f;
+    def.capabilities.max_jump_height = 2.0f;
+    def.capabilities.max_drop_height = 6.0f;
     return def;
 }
 
@@ -146,11 +146,11 @@ struct Exactness {
 // default costs, a path's cost is its length seen from above, what the funnel minimises.
 template <typename Request>
 Exactness exactness(const Level& level, Request request, std::vector<nl_path_point>& points) {
-    const auto graph = level.world->core->navmeshes().path_graph(nl::Handle{level.navmesh.index1, level.navmesh.generation});
+    const auto graph = level.world->core->navmeshes().path_graph(nl::Handle{level.navmesh.index1, level.navmesh.revision});
     nl::PathQuery body;
     const nl_path_request_def sample = request(level, level.pairs[0]);
-    body.agent = nl::AgentCapabilities{sample.agent.max_jump_distance, sample.agent.max_jump_height,
-                                       sample.agent.max_drop_height, sample.agent.radius, sample.agent.abilities};
+    body.capabilities = nl::AgentCapabilities{sample.capabilities.max_jump_distance, sample.capabilities.max_jump_height,
+                                       sample.capabilities.max_drop_height, sample.capabilities.radius, sample.capabilities.abilities};
     body.link_cost = sample.link_cost;
     const nl::test::ShortestPathReference reference(*graph, body);
     Exactness out;
@@ -260,7 +260,7 @@ bool compare(const char* path, Level& level) {
     }
 
     const Exactness walking = exactness(level, request_for, points);
-    const nl::Handle handle{level.navmesh.index1, level.navmesh.generation};
+    const nl::Handle handle{level.navmesh.index1, level.navmesh.revision};
     const auto graph = level.world->core->navmeshes().path_graph(handle);
     const size_t nl_bytes = graph->navmesh().memory_bytes() + graph->link_index_bytes() + graph->search_index_bytes();
     std::printf("level=%s polys=%u queries=%d nl_us=%.2f detour_us=%.2f ratio=%.2f complete=%d complete_ratio=%.2f rest_ratio=%.2f nl_len=%.4f detour_len=%.4f nl_walked=%.4f nl_bytes=%zu "
@@ -320,7 +320,7 @@ double queue_throughput(const Level& level, int workers) {
     navmesh_def.polygon_vertex_counts = corners.data();
     navmesh_def.polygon_count = info.polygon_count;
     navmesh_def.areas = areas.data();
-    navmesh_def.agent = info.agent;
+    navmesh_def.agent_type = info.agent_type;
     nl_navmesh_id navmesh{};
     nl_navmesh_add(world, &navmesh_def, &navmesh);
 

@@ -65,7 +65,7 @@ bool locate(nl_world* world, nl_navmesh_id navmesh, const rcPolyMesh& pm, std::m
 
 void reachability(const nl::bench::RecastLevel& recast, nl_world* world, nl_navmesh_id navmesh, uint32_t polygons,
                   const nl::bench::DetourMesh& detour) {
-    const nl::Handle handle{navmesh.index1, navmesh.generation};
+    const nl::Handle handle{navmesh.index1, navmesh.revision};
     const auto graph = world->core->navmeshes().path_graph(handle);
     nl::AgentCapabilities walker;
     walker.radius = recast.agent.radius;
@@ -83,7 +83,7 @@ void reachability(const nl::bench::RecastLevel& recast, nl_world* world, nl_navm
     std::mt19937 rng(12345);
     std::vector<std::pair<Located, Located>> pairs;
     nl_query_filter filter = nl_default_query_filter();
-    filter.agent.radius = recast.agent.radius;
+    filter.capabilities.radius = recast.agent.radius;
     for (int i = 0; i < kPairs; ++i) {
         Located a, b;
         if (!locate(world, navmesh, *recast.solo.polygons, rng, a) || !locate(world, navmesh, *recast.solo.polygons, rng, b))
@@ -110,7 +110,7 @@ void reachability(const nl::bench::RecastLevel& recast, nl_world* world, nl_navm
             def.navmesh = navmesh;
             std::copy(a.point, a.point + 3, def.start);
             std::copy(b.point, b.point + 3, def.goal);
-            def.agent.radius = recast.agent.radius;
+            def.capabilities.radius = recast.agent.radius;
             nl_path_result result = nl_path_result_init();
             uint32_t count = 0;
             nl_path_find(world, &def, &result, points.data(), uint32_t(points.size()), &count);
@@ -245,7 +245,7 @@ void large_grid(int side) {
     def.indices = indices.data();
     def.polygon_vertex_counts = corners.data();
     def.polygon_count = uint32_t(corners.size());
-    def.agent.radius = 0.0f;
+    def.agent_type.radius = 0.0f;
     def.weld_tolerance = 0.01f;
     nl_navmesh_id navmesh{};
     if (NL_FAILED(nl_navmesh_add(world, &def, &navmesh))) {
@@ -260,7 +260,7 @@ void large_grid(int side) {
         nl_link_id id;
         nl_link_add(world, navmesh, &link, &id);
     }
-    const nl::Handle handle{navmesh.index1, navmesh.generation};
+    const nl::Handle handle{navmesh.index1, navmesh.revision};
     const auto graph = world->core->navmeshes().path_graph(handle);
     nl::AgentCapabilities jumper;
     jumper.radius = 0.0f;
@@ -277,13 +277,13 @@ void large_grid(int side) {
     // From the middle of the last strip back to the first: out of reach against the one-way links.
     nl_path_request_def request = nl_default_path_request_def();
     request.navmesh = navmesh;
-    request.agent = nl_default_agent_capabilities();
-    request.agent.radius = 0.0f;
-    request.agent.max_jump_distance = 3.0f;
+    request.capabilities = nl_default_agent_capabilities();
+    request.capabilities.radius = 0.0f;
+    request.capabilities.max_jump_distance = 3.0f;
     request.start[0] = side * 0.5f + 0.5f, request.start[2] = float(side - 2) + 0.5f;
     request.goal[0] = side * 0.5f + 0.5f, request.goal[2] = 0.5f;
     nl_query_filter filter = nl_default_query_filter();
-    filter.agent = request.agent;
+    filter.capabilities = request.capabilities;
     nl_nav_point ends[2];
     const float half[3] = {1, 1, 1};
     float points[6];

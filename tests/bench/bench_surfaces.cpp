@@ -6,7 +6,7 @@
 // - box-12: a 12 x 12 m box 0.5 m thick (12 triangles);
 // - grid-40: a 40 x 40 m open grid of 0.5 m cells (12,800 triangles) carrying a lattice of 10 x 10
 //   crates 1 x 1 x 1.5 m, 4 m apart (1,200 triangles more), so that paths turn around them.
-// Each carries the navmesh the Recast builder makes on it (nl_navmesh_build with def.surface; radius
+// Each carries the navmesh the Recast builder makes on it (nl_navmesh_build with def.carrier; radius
 // 0.3 m, other settings default) and moves along a rigid path: it sways, bobs, turns and rolls, its
 // pose computed from the time, never accumulated. Its static copy is the same triangles as a static
 // mesh at the identity in a world of its own, with the navmesh Recast builds there: the same
@@ -29,7 +29,7 @@
 //   stepped on the static copy, batch for batch with the moving ones.
 // - path, moving: nl_path_find between --paths (200) random pairs of points of the platform, asked
 //   in the world where the platform is (moved between repeats); path, static: the same pairs on the
-//   static copy. "agree" counts pairs whose paths have the same points (surface_position against the
+//   static copy. "agree" counts pairs whose paths have the same points (carrier_position against the
 //   copy's position, within 1 cm). On a turned platform the ends' search box ((2, 4, 2) m in world
 //   axes) is searched as the box in the platform's axes that holds it: a larger box, more polygons.
 // - links: see run_links (cross links generated for a docked platform against the level's own links).
@@ -139,8 +139,8 @@ struct Side {
     }
     bool build(bool on_surface, nl_navmesh_id* out) {
         nl_navmesh_build_def def = nl_default_navmesh_build_def();
-        def.agent.radius = kRadius;
-        if (on_surface) def.surface = mesh;
+        def.agent_type.radius = kRadius;
+        if (on_surface) def.carrier = mesh;
         return NL_SUCCEEDED(nl_navmesh_build(world, &def, out)) || fail(name, "nl_navmesh_build");
     }
     uint32_t polygons() const {
@@ -203,7 +203,7 @@ struct Side {
                    std::vector<nl_path_point>& points) {
         nl_path_request_def def = nl_default_path_request_def();
         def.navmesh = navmesh;
-        def.agent.radius = kRadius;
+        def.capabilities.radius = kRadius;
         pose.to_world(local_start, def.start);
         pose.to_world(local_goal, def.goal);
         result = nl_path_result_init();
@@ -217,7 +217,7 @@ bool same_path(const nl_path_result& a, const std::vector<nl_path_point>& moving
                const std::vector<nl_path_point>& copy) {
     if (a.outcome != b.outcome || a.point_count != b.point_count) return false;
     for (uint32_t k = 0; k < a.point_count; ++k) {
-        const float* p = moving[k].surface_position;
+        const float* p = moving[k].carrier_position;
         const float* q = copy[k].position;
         if (std::hypot(p[0] - q[0], p[1] - q[1], p[2] - q[2]) > 0.01f) return false;
     }

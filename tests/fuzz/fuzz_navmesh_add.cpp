@@ -32,10 +32,10 @@ void check_point_location(const nl::NavMesh& mesh) {
 void check_paths(const nl::PathGraph& graph) {
     const nl::NavMesh& mesh = graph.navmesh();
     nl::PathQuery query;
-    query.agent.radius = mesh.agent().radius;
+    query.capabilities.radius = mesh.agent().radius;
     query.accept_partial = false;
     query.search_half_extents = nl::Vec3(0.01f, 0.01f, 0.01f);
-    const auto map = graph.reachability(query.agent, query.area_costs);
+    const auto map = graph.reachability(query.capabilities, query.area_costs);
     const uint32_t polygons = std::min<uint32_t>(mesh.polygon_count(), 6);
     for (uint32_t from = 0; from < polygons; ++from) {
         for (uint32_t to = 0; to < polygons; ++to) {

@@ -62,7 +62,7 @@ struct NavmeshBytes {
         const uint32_t polygon_count = std::min<uint32_t>(in.read<uint16_t>(), kMaxPolygons);
         if (flags & kAgent) {
             def.weld_tolerance = in.read<float>();
-            def.agent = nl_agent_type{in.read<float>(), in.read<float>(), in.read<float>(), in.read<float>()};
+            def.agent_type = nl_agent_type{in.read<float>(), in.read<float>(), in.read<float>(), in.read<float>()};
         }
         for (uint32_t i = 0; i < 3 * vertex_count; ++i) vertices.push_back(in.read<float>());
         size_t corners = 0;

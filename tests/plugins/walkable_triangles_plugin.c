@@ -25,7 +25,7 @@ static nl_status build(void* state, const nl_plugin_host* host, const nl_navmesh
     float* vertices;
     uint32_t* indices;
     nl_status status;
-    const float min_up = cosf(def->agent.max_slope * 3.14159265f / 180.0f);
+    const float min_up = cosf(def->agent_type.max_slope * 3.14159265f / 180.0f);
     (void)state;
 
     status = host->get_level_triangles(host->context, NULL, 0, &vertex_count, NULL, 0, &triangle_count);
@@ -70,7 +70,7 @@ static nl_status build(void* state, const nl_plugin_host* host, const nl_navmesh
             navmesh.vertex_count = vertex_count;
             navmesh.indices = indices;
             navmesh.polygon_count = kept;
-            navmesh.agent = def->agent;
+            navmesh.agent_type = def->agent_type;
             status = sink(sink_context, &navmesh);
         }
     }

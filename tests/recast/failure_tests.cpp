@@ -41,7 +41,7 @@ TEST_CASE("recast: a level with no walkable surface is NOT_FOUND, never an empty
         FakeHost host = QuadLevel().quad({0, 0, 0}, {10, 0, 0}, {10, rise, 10}, {0, rise, 10}).host();
         check_no_walkable_surface(run_build(host, default_build_def()));
         nl_navmesh_build_def steep = default_build_def();
-        steep.agent.max_slope = 55.0f;
+        steep.agent_type.max_slope = 55.0f;
         const BuildOutcome out = run_build(host, steep);
         CHECK_MESSAGE(out.status == NL_STATUS_SUCCESS, out.error);
         CHECK(out.mesh.polygon_count() > 0);
@@ -58,8 +58,8 @@ TEST_CASE("recast: a level with no walkable surface is NOT_FOUND, never an empty
         FakeHost host = QuadLevel().floor(0, 0, 10, 10, 0).ceiling(-1, -1, 11, 11, 1.2f).host();
         check_no_walkable_surface(run_build(host, default_build_def()));
         nl_navmesh_build_def short_agent = default_build_def();
-        short_agent.agent.height = 0.6f;
-        short_agent.agent.max_climb = 0.2f;
+        short_agent.agent_type.height = 0.6f;
+        short_agent.agent_type.max_climb = 0.2f;
         const BuildOutcome out = run_build(host, short_agent);
         CHECK_MESSAGE(out.status == NL_STATUS_SUCCESS, out.error);
     }
@@ -86,18 +86,18 @@ TEST_CASE("recast: bad agent types are INVALID_ARGUMENT naming the field") {
         const char* field;
     };
     const Case cases[] = {
-        {{-0.1f, 2.0f, 0.9f, 45.0f}, "agent.radius"},   {{nan, 2.0f, 0.9f, 45.0f}, "agent.radius"},
-        {{inf, 2.0f, 0.9f, 45.0f}, "agent.radius"},     {{0.6f, 0.0f, 0.9f, 45.0f}, "agent.height"},
-        {{0.6f, -2.0f, 0.9f, 45.0f}, "agent.height"},   {{0.6f, 2.0f, -0.5f, 45.0f}, "agent.max_climb"},
-        {{0.6f, 2.0f, nan, 45.0f}, "agent.max_climb"},  {{0.6f, 2.0f, 0.9f, 90.0f}, "agent.max_slope"},
-        {{0.6f, 2.0f, 0.9f, -1.0f}, "agent.max_slope"}, {{0.6f, 2.0f, 0.9f, nan}, "agent.max_slope"},
+        {{-0.1f, 2.0f, 0.9f, 45.0f}, "agent_type.radius"},   {{nan, 2.0f, 0.9f, 45.0f}, "agent_type.radius"},
+        {{inf, 2.0f, 0.9f, 45.0f}, "agent_type.radius"},     {{0.6f, 0.0f, 0.9f, 45.0f}, "agent_type.height"},
+        {{0.6f, -2.0f, 0.9f, 45.0f}, "agent_type.height"},   {{0.6f, 2.0f, -0.5f, 45.0f}, "agent_type.max_climb"},
+        {{0.6f, 2.0f, nan, 45.0f}, "agent_type.max_climb"},  {{0.6f, 2.0f, 0.9f, 90.0f}, "agent_type.max_slope"},
+        {{0.6f, 2.0f, 0.9f, -1.0f}, "agent_type.max_slope"}, {{0.6f, 2.0f, 0.9f, nan}, "agent_type.max_slope"},
         // Beyond what Recast can represent at the default cell size.
-        {{100.0f, 2.0f, 0.9f, 45.0f}, "agent.radius"},  {{0.6f, 100.0f, 0.9f, 45.0f}, "agent.height"},
+        {{100.0f, 2.0f, 0.9f, 45.0f}, "agent_type.radius"},  {{0.6f, 100.0f, 0.9f, 45.0f}, "agent_type.height"},
     };
     for (const Case& c : cases) {
         CAPTURE(c.field);
         nl_navmesh_build_def def = default_build_def();
-        def.agent = c.agent;
+        def.agent_type = c.agent;
         const BuildOutcome out = run_build(host, def);
         CHECK(out.status == kInvalid);
         CHECK(out.sink_calls == 0);
@@ -106,9 +106,9 @@ TEST_CASE("recast: bad agent types are INVALID_ARGUMENT naming the field") {
     }
     // Zero radius and climb are fine.
     nl_navmesh_build_def def = default_build_def();
-    def.agent = {0.0f, 2.0f, 0.0f, 0.0f};
+    def.agent_type = {0.0f, 2.0f, 0.0f, 0.0f};
     CHECK(run_build(host, def).status == kNotFound);  // slope 0: nothing is flatter than flat
-    def.agent.max_slope = 10.0f;
+    def.agent_type.max_slope = 10.0f;
     CHECK(run_build(host, def).status == NL_STATUS_SUCCESS);
 }
 

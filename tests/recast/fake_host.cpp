@@ -105,7 +105,7 @@ nl_navmesh_build_def default_build_def() {
     nl_navmesh_build_def def{};
     def.size = sizeof def;
     def.builder = "recast";
-    def.agent = default_agent();
+    def.agent_type = default_agent();
     return def;
 }
 
@@ -131,7 +131,7 @@ nl_status capture(void* context, const nl_navmesh_def* def) {
     m.size = def->size;
     m.vertex_stride = def->vertex_stride;
     m.weld_tolerance = def->weld_tolerance;
-    m.agent = def->agent;
+    m.agent = def->agent_type;
     const uint32_t stride_floats = (def->vertex_stride ? def->vertex_stride : 12) / sizeof(float);
     m.vertices.clear();
     for (uint32_t v = 0; v < def->vertex_count; ++v)

@@ -27,7 +27,7 @@ TEST_CASE("recast builds a well-formed navmesh on every shared level") {
         const BuildOutcome out = run_build(host, def);
         REQUIRE_MESSAGE(out.status == NL_STATUS_SUCCESS, out.error);
         CHECK(out.sink_calls == 1);
-        check_navmesh(out.mesh, host, def.agent);
+        check_navmesh(out.mesh, host, def.agent_type);
         const uint32_t up = count_upward_polygons(out.mesh);
         MESSAGE(stem, ": ", host.triangle_count(), " triangles -> ", out.mesh.polygon_count(), " polygons, ",
                 out.mesh.vertex_count(), " vertices, ", out.mesh.detail_starts.back(), " detail triangles, ", up,

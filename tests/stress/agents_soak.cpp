@@ -252,7 +252,7 @@ bool add_island(Soak& s) {
     def.vertex_count = 4;
     def.indices = indices;
     def.polygon_count = 2;
-    def.agent.radius = 0.4f;
+    def.agent_type.radius = 0.4f;
     if (!expect(nl_navmesh_add(s.world, &def, &s.island), "nl_navmesh_add (the island)")) return false;
     s.island_landing = {s.shore[0] - 16.5f, y, s.shore[2]};
     const float points[9] = {x0, y, z0, x1, y, z1, s.island_landing[0], y, s.island_landing[2]};
@@ -385,7 +385,7 @@ void request_paths(Soak& s, Worker& me) {
         const std::array<float, 3> a = s.somewhere(rng), b = s.somewhere(rng);
         std::memcpy(def.start, a.data(), sizeof def.start);
         std::memcpy(def.goal, b.data(), sizeof def.goal);
-        def.agent = body(rng() % 3);
+        def.capabilities = body(rng() % 3);
         nl_path_result result{};
         result.size = sizeof result;
         uint32_t count = 0;
@@ -427,7 +427,7 @@ int main(int argc, char** argv) {
     const nl::levelgen::GeneratedLevel level = nl::levelgen::generate_large_level(7, 5, 2.0f);
     expect(nl::test::add_generated_level(s.world, level), "nl_mesh_add");
     nl_navmesh_build_def build = nl_default_navmesh_build_def();
-    build.agent.radius = 0.4f;
+    build.agent_type.radius = 0.4f;
     if (!expect(nl_navmesh_build(s.world, &build, &s.navmesh), "nl_navmesh_build")) return 1;
     nl_link_generation_report report{};
     report.size = sizeof report;

@@ -78,7 +78,7 @@ int main() {
         request.navmesh = navmesh;
         request.start[0] = 0.5f, request.start[2] = 0.5f;
         request.goal[0] = 3.5f, request.goal[2] = 3.5f;
-        request.agent.radius = 0.0f;
+        request.capabilities.radius = 0.0f;
         nl_path_ticket ticket{};
         uint32_t done = 0;
         nl_path_budget one = nl_default_path_budget();

@@ -96,8 +96,8 @@ void submit(nl_world* world, nl_navmesh_id navmesh, std::vector<Slot>& slots, in
         def.navmesh = navmesh;
         def.start[0] = coordinate(rng), def.start[2] = coordinate(rng);
         def.goal[0] = coordinate(rng), def.goal[2] = coordinate(rng);
-        def.agent.radius = 0.0f;
-        def.agent.max_jump_distance = (i % 2) ? 3.0f : 0.0f;
+        def.capabilities.radius = 0.0f;
+        def.capabilities.max_jump_distance = (i % 2) ? 3.0f : 0.0f;
         def.accept_partial = uint8_t(i % 3 != 0);
         def.callback = on_done;
         def.user = &slot;

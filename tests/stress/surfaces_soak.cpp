@@ -8,10 +8,10 @@
 // The shuttle's navmesh is built by Recast on it (nl_navmesh_build with def.surface), the disc's and
 // the lift's are handed over in their own space (nl_navmesh_add with def.surface). It fails when a
 // call returns a status its documentation does not allow; when an agent on a surface is off its
-// navmesh there (its surface_position lies outside the navmesh's box in the surface's space by more
+// navmesh there (its carrier_position lies outside the navmesh's box in the surface's space by more
 // than 5 cm: the box of a flat navmesh is its plane too), or its world position is not that point
 // moved by the surface's pose of one of the moves the mover made during the read; when a path on a
-// moving navmesh has a surface_position outside that box, or world points that are not its surface
+// moving navmesh has a carrier_position outside that box, or world points that are not its surface
 // points moved by one rigid transform (the distances between consecutive points differ); when an
 // agent's corner read meanwhile is off its navmesh's box; when a queued request finishes other than
 // exactly once; or when a thread stops making progress for `--stall` seconds (the process aborts,
@@ -157,9 +157,9 @@ bool set_up(Soak& s, const Options& o) {
         return false;
 
     nl_navmesh_build_def build = nl_default_navmesh_build_def();
-    build.agent.radius = kRadius;
+    build.agent_type.radius = kRadius;
     if (!expect(nl_navmesh_build(s.world, &build, &s.navmeshes[kSurfaces]), "nl_navmesh_build (floor)")) return false;
-    build.surface = s.meshes[0];
+    build.carrier = s.meshes[0];
     if (!expect(nl_navmesh_build(s.world, &build, &s.navmeshes[0]), "nl_navmesh_build (shuttle)")) return false;
 
     std::vector<float> fan = {0, 0, 0};
@@ -175,11 +175,11 @@ bool set_up(Soak& s, const Options& o) {
     disc.vertex_count = uint32_t(fan.size() / 3);
     disc.indices = corners.data();
     disc.polygon_count = sides;
-    disc.agent.radius = kRadius;
-    disc.surface = s.meshes[1];
+    disc.agent_type.radius = kRadius;
+    disc.carrier = s.meshes[1];
     if (!expect(nl_navmesh_add(s.world, &disc, &s.navmeshes[1]), "nl_navmesh_add (disc)")) return false;
     nl::test::CellNavmesh cells(std::vector<std::string>(6, std::string(6, '.')), kRadius);
-    cells.def.surface = s.meshes[2];
+    cells.def.carrier = s.meshes[2];
     if (!expect(nl_navmesh_add(s.world, &cells.def, &s.navmeshes[2]), "nl_navmesh_add (lift)")) return false;
 
     for (int k = 0; k <= kSurfaces; ++k) {
@@ -229,7 +229,7 @@ struct PathTally {
 
 float distance(const float* a, const float* b) { return std::hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]); }
 
-// A path's points on surface s: each surface_position within its navmesh's box, and the world points
+// A path's points on surface s: each carrier_position within its navmesh's box, and the world points
 // the surface points moved by one rigid transform (consecutive distances the same in both).
 void check_path(const Soak& s, int surface, const nl_path_result& result, const std::vector<nl_path_point>& points,
                 uint32_t count, PathTally& tally) {
@@ -244,13 +244,13 @@ void check_path(const Soak& s, int surface, const nl_path_result& result, const 
     if (count != result.point_count || count == 0) fail("a path's point count is " + std::to_string(count));
     for (uint32_t k = 0; k < count; ++k) {
         const nl_path_point& p = points[k];
-        if (!s.inside(surface, p.surface_position))
+        if (!s.inside(surface, p.carrier_position))
             fail(std::string("a path point on the ") + kNames[surface] + " is outside its navmesh in its space: (" +
-                 std::to_string(p.surface_position[0]) + ", " + std::to_string(p.surface_position[1]) + ", " +
-                 std::to_string(p.surface_position[2]) + ")");
+                 std::to_string(p.carrier_position[0]) + ", " + std::to_string(p.carrier_position[1]) + ", " +
+                 std::to_string(p.carrier_position[2]) + ")");
         if (k == 0) continue;
         const nl_path_point& q = points[k - 1];
-        const float in_world = distance(p.position, q.position), on_surface = distance(p.surface_position, q.surface_position);
+        const float in_world = distance(p.position, q.position), on_surface = distance(p.carrier_position, q.carrier_position);
         if (std::fabs(in_world - on_surface) > 1e-3f)
             fail(std::string("a path on the ") + kNames[surface] + " has a segment of " + std::to_string(on_surface) +
                  " m on the surface and " + std::to_string(in_world) + " m in the world");
@@ -294,7 +294,7 @@ void read_beside(Soak& s, Worker& me, std::mt19937& rng, const nl_path_request_d
     if (!s.agents.empty() && expect(nl_agent_get_corners(s.world, s.agents[k], points.data(), uint32_t(points.size()), &count),
                "nl_agent_get_corners", {NL_STATUS_BUFFER_TOO_SMALL})) {
         for (uint32_t c = 0; c < count; ++c)
-            if (!s.inside(s.agent_surfaces[k], points[c].surface_position))
+            if (!s.inside(s.agent_surfaces[k], points[c].carrier_position))
                 fail(std::string("a corner of an agent on the ") + kNames[s.agent_surfaces[k]] + " is off its navmesh");
         tally.corners += count;
     }
@@ -316,7 +316,7 @@ void request_paths(Soak& s, Worker& me, unsigned seed, PathTally& tally) {
         const int surface = int(rng() % kSurfaces);
         nl_path_request_def def = nl_default_path_request_def();
         def.navmesh = s.navmeshes[surface];
-        def.agent.radius = kRadius;
+        def.capabilities.radius = kRadius;
         const std::array<float, 3> a = s.somewhere(surface, rng), b = s.somewhere(surface, rng);
         std::memcpy(def.start, a.data(), sizeof def.start);
         std::memcpy(def.goal, b.data(), sizeof def.goal);
@@ -400,25 +400,25 @@ void step_agents(Soak& s, Worker& me, const Options& o, AgentTally& tally) {
         for (uint32_t i = 0; i < count; ++i) {
             const nl_agent_info& a = infos[i];
             const int surface = int(a.user_data);
-            if (!finite3(a.position) || !finite3(a.velocity) || !finite3(a.surface_position))
+            if (!finite3(a.position) || !finite3(a.velocity) || !finite3(a.carrier_position))
                 fail("an agent's position, surface position or velocity is not finite");
             if (a.state == NL_AGENT_IDLE) send_somewhere(s, rng, a.id, surface);
-            // Where it stands in its surface's space, as the host parents it (surface_position). Not
+            // Where it stands in its surface's space, as the host parents it (carrier_position). Not
             // its world position taken back through nl_mesh_get_info's transform: a move publishes
             // the mesh's transform a moment before its navmeshes' (nl_mesh_set_transform), so two
             // reads of the transform that agree do not say the agents were read at that pose (this
             // check failed so under load, all 40 agents on the lift 0.063 m below it).
-            if (!s.inside(surface, a.surface_position))
+            if (!s.inside(surface, a.carrier_position))
                 fail(std::string("an agent on the ") + kNames[surface] + " is off its navmesh there: (" +
-                     std::to_string(a.surface_position[0]) + ", " + std::to_string(a.surface_position[1]) + ", " +
-                     std::to_string(a.surface_position[2]) + ") in its space, state " + std::to_string(a.state));
+                     std::to_string(a.carrier_position[0]) + ", " + std::to_string(a.carrier_position[1]) + ", " +
+                     std::to_string(a.carrier_position[2]) + ") in its space, state " + std::to_string(a.state));
             tally.placed += surface < kSurfaces && history;
-            if (surface < kSurfaces && history && !placed_by_a_move(s, surface, a.position, a.surface_position, first, after))
+            if (surface < kSurfaces && history && !placed_by_a_move(s, surface, a.position, a.carrier_position, first, after))
                 fail(std::string("an agent on the ") + kNames[surface] + " at (" + std::to_string(a.position[0]) + ", " +
                      std::to_string(a.position[1]) + ", " + std::to_string(a.position[2]) +
                      ") is not its surface position moved to where the surface was during the read (moves " +
                      std::to_string(first) + " to " + std::to_string(after) + ")");
-            if (surface == kSurfaces && distance(a.position, a.surface_position) != 0.0f)
+            if (surface == kSurfaces && distance(a.position, a.carrier_position) != 0.0f)
                 fail("an agent on the floor, which rides nothing, has a surface position that is not its position");
             ++tally.checked;
         }

@@ -242,10 +242,10 @@ nl_path_request_def request_on(nl_navmesh_id navmesh, std::mt19937& rng, float x
     def.navmesh = navmesh;
     def.start[0] = random_in(rng, 0, x1), def.start[2] = random_in(rng, 0, z1);
     def.goal[0] = random_in(rng, 0, x1), def.goal[2] = random_in(rng, 0, z1);
-    def.agent.max_jump_distance = rng() % 2 ? 4.0f : 0.0f;
-    def.agent.max_jump_height = 1.0f;
-    def.agent.max_drop_height = rng() % 2 ? 4.0f : 0.0f;
-    def.agent.radius = 0.3f;
+    def.capabilities.max_jump_distance = rng() % 2 ? 4.0f : 0.0f;
+    def.capabilities.max_jump_height = 1.0f;
+    def.capabilities.max_drop_height = rng() % 2 ? 4.0f : 0.0f;
+    def.capabilities.radius = 0.3f;
     return def;
 }
 
@@ -380,7 +380,7 @@ bool set_up(Round& r, int32_t workers) {
     r.crate = add_box(r.world, {{30, 0, 14}, {31, 1, 15}}, 0);
     const nl_navmesh_build_def build = nl_default_navmesh_build_def();
     nl_navmesh_build_def thin = nl_default_navmesh_build_def();
-    thin.agent.radius = 0.3f;
+    thin.agent_type.radius = 0.3f;
     return expect(nl_navmesh_build(r.world, &build, &r.navmesh), "nl_navmesh_build") &&
            expect(nl_navmesh_build(r.world, &thin, &r.thin), "nl_navmesh_build (thin)");
 }

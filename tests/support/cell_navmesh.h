@@ -23,7 +23,7 @@ struct CellNavmesh : CellMap {
         def.polygon_vertex_counts = counts.data();
         def.polygon_count = uint32_t(counts.size());
         def.areas = areas.data();
-        def.agent.radius = agent_radius;
+        def.agent_type.radius = agent_radius;
     }
     CellNavmesh(const CellNavmesh&) = delete;
     CellNavmesh& operator=(const CellNavmesh&) = delete;

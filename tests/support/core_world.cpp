@@ -49,7 +49,7 @@ NavMeshInput input_of(const nl_navmesh_def& def) {
     in.indices.assign(def.indices, def.indices + index_count);
     if (def.areas) in.areas.assign(def.areas, def.areas + def.polygon_count);
     in.weld_tolerance = def.weld_tolerance;
-    in.agent = AgentType{def.agent.radius, def.agent.height, def.agent.max_climb, def.agent.max_slope};
+    in.agent_type = AgentType{def.agent_type.radius, def.agent_type.height, def.agent_type.max_climb, def.agent_type.max_slope};
     if (def.detail_triangle_starts) {
         in.detail_starts.assign(def.detail_triangle_starts, def.detail_triangle_starts + def.polygon_count + 1);
         for (uint32_t i = 0; i < def.detail_vertex_count; ++i)
@@ -81,7 +81,7 @@ public:
         nl_navmesh_build_def def{};
         def.size = sizeof def;
         def.builder = description_.name.c_str();
-        def.agent = nl_agent_type{request.agent.radius, request.agent.height, request.agent.max_climb, request.agent.max_slope};
+        def.agent_type = nl_agent_type{request.agent_type.radius, request.agent_type.height, request.agent_type.max_climb, request.agent_type.max_slope};
         def.settings = request.builder_settings;
         def.settings_json = request.settings_json;
         def.settings_json_length = request.settings_json_length;
@@ -172,7 +172,7 @@ Handle build_recast_navmesh(World& world, const AgentType& agent) {
     add_recast_builder(world);
     NavMeshBuildRequest request;
     request.builder = "recast";
-    request.agent = agent;
+    request.agent_type = agent;
     return world.build_navmesh(request);
 }
 
@@ -211,7 +211,7 @@ NavMeshInput cell_navmesh(const std::vector<std::string>& rows, float agent_radi
     in.indices = map.indices;
     in.polygon_sizes = map.counts;
     in.areas = map.areas;
-    in.agent.radius = agent_radius;
+    in.agent_type.radius = agent_radius;
     return in;
 }
 

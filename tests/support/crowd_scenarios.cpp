@@ -17,8 +17,8 @@ void add_rectangle(NavMeshInput& in, float x0, float x1, float z0, float z1) {
 
 NavMeshInput body(float radius) {
     NavMeshInput in;
-    in.agent.radius = radius;
-    in.agent.height = 2.0f;
+    in.agent_type.radius = radius;
+    in.agent_type.height = 2.0f;
     return in;
 }
 
@@ -102,8 +102,8 @@ CrowdScenario corridor(int per_end, float width, bool crossing) {
         add_rectangle(s.navmesh, -in, in, -end, -in);
         add_rectangle(s.navmesh, -in, in, in, end);
     }
-    s.navmesh.agent.radius = r;
-    s.navmesh.agent.height = 2.0f;
+    s.navmesh.agent_type.radius = r;
+    s.navmesh.agent_type.height = 2.0f;
     const float spacing = 2.5f * r, first = half_length - 1.5f;
     const int across = std::max(1, int((width - 2 * r) / spacing) + 1);
     for (int end = 0; end < 2; ++end) {

@@ -25,7 +25,7 @@ double cross(double ox, double oz, double ax, double az, double bx, double bz) {
 
 PathQuery thin_body(const NavMesh& navmesh) {
     PathQuery query;
-    query.agent.radius = navmesh.agent().radius;
+    query.capabilities.radius = navmesh.agent().radius;
     return query;
 }
 
@@ -49,7 +49,7 @@ ShortestPathReference::ShortestPathReference(const PathGraph& graph, const PathQ
 void ShortestPathReference::build(const PathQuery& query, const LinkSnapshot& links, bool every_vertex) {
     const NavMesh& mesh = navmesh_;
     const uint32_t polygons = mesh.polygon_count();
-    margin_ = std::max(0.0f, query.agent.radius - mesh.agent().radius);
+    margin_ = std::max(0.0f, query.capabilities.radius - mesh.agent().radius);
 
     // Polygons seen from above, which are open to the body, and the walking rate.
     first_.assign(polygons + 1, 0);
@@ -150,7 +150,7 @@ void ShortestPathReference::build(const PathQuery& query, const LinkSnapshot& li
         if (!link.enabled || link.crosses() || link.start_polygon >= polygons || link.end_polygon >= polygons) continue;
         for (const bool reversed : {false, true}) {
             if (reversed && !link.bidirectional) continue;
-            if (!can_take(link, reversed, query.agent)) continue;
+            if (!can_take(link, reversed, query.capabilities)) continue;
             const uint32_t from_polygon = reversed ? link.end_polygon : link.start_polygon;
             const uint32_t to_polygon = reversed ? link.start_polygon : link.end_polygon;
             if (!open_[from_polygon] || !open_[to_polygon]) continue;

@@ -10,7 +10,7 @@ namespace NavLink.Tests
     // while a walker goes round by the bridge, as the states read in bulk and the step's events say; the
     // trajectory of the jump mid-flight; bad input refused. And a ferry (tests/core/world/surface_tests.cpp's): walkers
     // wait at a gangway for a shuttle, ride it across a chasm and get off on the far side, AgentInfo saying which
-    // navmesh and surface they stand on.
+    // navmesh and carrier they stand on.
     internal static class AgentTests
     {
         private const float Dt = 1.0f / 30.0f;
@@ -161,12 +161,12 @@ namespace NavLink.Tests
                     NavmeshId ledges = world.AddNavmesh(new NavmeshInput
                     {
                         Vertices = FerryLedges, Indices = new uint[] {0, 1, 2, 3, 4, 5, 6, 7}, PolygonVertexCounts = new byte[] {4, 4},
-                        Agent = body,
+                        AgentType = body,
                     });
                     NavmeshId deck = world.AddNavmesh(new NavmeshInput
                     {
-                        Vertices = ShuttleTop, Indices = new uint[] {0, 1, 2, 3}, PolygonVertexCounts = new byte[] {4}, Agent = body,
-                        Surface = shuttle,
+                        Vertices = ShuttleTop, Indices = new uint[] {0, 1, 2, 3}, PolygonVertexCounts = new byte[] {4}, AgentType = body,
+                        Carrier = shuttle,
                     });
                     // The gangways: manual cross links whose requirements are taken as given (all zero: a gap of 0,
                     // walked, not jumped), each placed while the shuttle stands at its dock.
@@ -197,8 +197,8 @@ namespace NavLink.Tests
                         world.SetAgentDestination(walkers.Last(), FerryGoal);
                     }
                     AgentInfo first = world.GetAgentInfo(walkers[0]);
-                    check.That(first.Navmesh.Equals(ledges) && first.Surface.IsNull && first.SurfacePosition.Equals(first.Position),
-                               "standing on the near ledge, on no surface: " + first.Navmesh + " " + first.Surface);
+                    check.That(first.Navmesh.Equals(ledges) && first.Carrier.IsNull && first.CarrierPosition.Equals(first.Position),
+                               "standing on the near ledge, on no carrier: " + first.Navmesh + " " + first.Carrier);
 
                     var arrivedInfo = new Dictionary<AgentId, AgentInfo>();
                     var taken = new List<KeyValuePair<AgentId, LinkId>>();
@@ -221,24 +221,24 @@ namespace NavLink.Tests
                         foreach (AgentInfo info in world.GetAgents())
                         {
                             if (info.State == AgentState.Waiting && info.Link.Equals(board)) ++waited;
-                            string where = "t " + t + ", shuttle at x " + x + ": " + info.State + " on " + info.Navmesh + ", surface " +
-                                           info.Surface + ", at " + info.Position + ", in its space " + info.SurfacePosition;
+                            string where = "t " + t + ", shuttle at x " + x + ": " + info.State + " on " + info.Navmesh + ", carrier " +
+                                           info.Carrier + ", at " + info.Position + ", in its space " + info.CarrierPosition;
                             if (!info.Navmesh.Equals(ledges) && !info.Navmesh.Equals(deck))
                                 failures.Add(where + ": on neither navmesh");
                             else if (info.State == AgentState.Jumping || info.State == AgentState.Falling || info.State == AgentState.Traversing)
                             {
                                 // In the air over a cross link (both gangways are): flown in the world.
-                                if (Distance(info.SurfacePosition, info.Position) > 1e-3f) failures.Add(where + ": in the air");
+                                if (Distance(info.CarrierPosition, info.Position) > 1e-3f) failures.Add(where + ": in the air");
                             }
                             else if (info.Navmesh.Equals(deck))
                             {
                                 // On the deck: riding the shuttle, whose centre is at (x, 0, 3), unturned.
                                 ++riding;
-                                if (!info.Surface.Equals(shuttle) ||
-                                    Distance(info.SurfacePosition, new Vec3(info.Position.X - x, info.Position.Y, info.Position.Z - 3)) > 1e-3f)
+                                if (!info.Carrier.Equals(shuttle) ||
+                                    Distance(info.CarrierPosition, new Vec3(info.Position.X - x, info.Position.Y, info.Position.Z - 3)) > 1e-3f)
                                     failures.Add(where + ": on the deck");
                             }
-                            else if (!info.Surface.IsNull || Distance(info.SurfacePosition, info.Position) > 1e-3f)
+                            else if (!info.Carrier.IsNull || Distance(info.CarrierPosition, info.Position) > 1e-3f)
                                 failures.Add(where + ": on a ledge");
                         }
                     }
@@ -246,7 +246,7 @@ namespace NavLink.Tests
                     check.That(failures.Count == 0, failures.Count + " bad steps; the first: " + failures.FirstOrDefault());
                     check.That(arrivedInfo.Count == walkers.Count, arrivedInfo.Count + " of " + walkers.Count + " arrived by t = " + t + " s");
                     check.That(waited > 0, "an agent waited at the gangway for the shuttle (Waiting, Link the gangway): " + waited + " agent steps");
-                    check.That(riding > 0, "an agent stood on the shuttle's deck (Navmesh, Surface, SurfacePosition): " + riding + " agent steps");
+                    check.That(riding > 0, "an agent stood on the shuttle's deck (Navmesh, Carrier, CarrierPosition): " + riding + " agent steps");
                     foreach (AgentId walker in walkers)
                     {
                         check.That(taken.Contains(new KeyValuePair<AgentId, LinkId>(walker, board)) &&
@@ -254,8 +254,8 @@ namespace NavLink.Tests
                                    walker + " boarded by the near gangway and got off by the far one");
                         AgentInfo arrived;
                         if (!check.That(arrivedInfo.TryGetValue(walker, out arrived), walker + " arrived")) continue;
-                        check.That(arrived.Navmesh.Equals(ledges) && arrived.Surface.IsNull && arrived.State == AgentState.Arrived,
-                                   "at arrival on the ledges' navmesh, on no surface: " + arrived.Navmesh + " " + arrived.Surface);
+                        check.That(arrived.Navmesh.Equals(ledges) && arrived.Carrier.IsNull && arrived.State == AgentState.Arrived,
+                                   "at arrival on the ledges' navmesh, on no carrier: " + arrived.Navmesh + " " + arrived.Carrier);
                         // Two bodies share the goal: they stand round it.
                         check.That(arrived.Position.HorizontalDistance(FerryGoal) < 1.5f,
                                    "at the goal: " + arrived.Position);

@@ -47,8 +47,8 @@ namespace NavLink.Tests
             check.That(info.PolygonCount == polygons, info.PolygonCount + " polygons described, the navmesh has " + polygons);
             check.That(info.LinkCount == linkCount && info.GeneratedLinkCount == linkCount - 1,
                        info.LinkCount + " links (" + info.GeneratedLinkCount + " generated) described, " + linkCount + " listed");
-            check.Near(info.Agent.Radius, 0.6f, 1e-6f, "the agent radius described");
-            check.That(info.Quantum == 1.0f / 1024.0f && info.RidesSurface == 0, "quantum " + info.Quantum + ", rides nothing");
+            check.Near(info.AgentType.Radius, 0.6f, 1e-6f, "the agent radius described");
+            check.That(info.Quantum == 1.0f / 1024.0f && info.RidesCarrier == 0, "quantum " + info.Quantum + ", rides nothing");
             check.That(World.DescribeNavmeshFile(data).PolygonCount == polygons, "described without the JSON");
             XElement madeFor = ParseJson(madeForJson);
             XElement builder = madeFor.Element("builder");

@@ -36,11 +36,11 @@ namespace NavLink.Tests
         /// <summary>The platform's transform: its centre at (x, 0, 3) (column-major).</summary>
         private static float[] PlatformAt(float x) { return new float[] {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, x, 0, 3, 1}; }
 
-        private static NavmeshInput Quad(float[] vertices, MeshId surface = default(MeshId))
+        private static NavmeshInput Quad(float[] vertices, MeshId carrier = default(MeshId))
         {
             return new NavmeshInput
             {
-                Vertices = vertices, Indices = new uint[] {0, 1, 2, 3}, PolygonVertexCounts = new byte[] {4}, Surface = surface,
+                Vertices = vertices, Indices = new uint[] {0, 1, 2, 3}, PolygonVertexCounts = new byte[] {4}, Carrier = carrier,
             };
         }
 
@@ -66,7 +66,7 @@ namespace NavLink.Tests
                     NavmeshInfo info = world.GetNavmeshInfo(navmesh);
                     check.That(info.PolygonCount >= 2 && info.BoundaryEdgeCount >= 8,
                                info.PolygonCount + " polygons, " + info.BoundaryEdgeCount + " boundary edges");
-                    check.Near(info.Agent.Radius, 0.6f, 1e-6f, "the navmesh remembers its agent");
+                    check.Near(info.AgentType.Radius, 0.6f, 1e-6f, "the navmesh remembers its agent");
                     check.That(info.TurnedOverMeshCount == 0,
                                "the level's fronts are wound counter-clockwise: " + info.TurnedOverMeshCount + " meshes turned over");
                     check.That(info.BuildWarnings == BuildWarnings.None, "the level is in metres with y up: " + info.BuildWarnings);
@@ -153,18 +153,18 @@ namespace NavLink.Tests
                     MeshId raft = TestLevels.AddBox(world, -4, -1, -2, 4, 0, 2, MeshFlags.Movable);
                     var input = new NavmeshInput
                     {
-                        Vertices = RaftQuad, Indices = new uint[] {0, 1, 2, 3}, PolygonVertexCounts = new byte[] {4}, Surface = raft,
+                        Vertices = RaftQuad, Indices = new uint[] {0, 1, 2, 3}, PolygonVertexCounts = new byte[] {4}, Carrier = raft,
                     };
                     NavmeshId navmesh = world.AddNavmesh(input);
                     NavmeshInfo info = world.GetNavmeshInfo(navmesh);
-                    check.That(info.Surface.Equals(raft) && info.PolygonCount == 1, "the navmesh rides the raft: " + info.Surface);
+                    check.That(info.Carrier.Equals(raft) && info.PolygonCount == 1, "the navmesh rides the raft: " + info.Carrier);
                     Vec3 onRaft = new Vec3(10, 0.5f, 3), oldPlace = new Vec3(0, 0.5f, 0), box = new Vec3(0.5f, 2, 0.5f);
                     NavPoint[] found = world.FindNearest(navmesh, new[] {oldPlace, onRaft}, box);
                     check.That(found[0].Found == 1 && found[1].Found == 0, "before the move: at the origin");
 
                     world.SetMeshTransform(raft, RaftMoved);
                     info = world.GetNavmeshInfo(navmesh);
-                    check.That(info.Surface.Equals(raft), "still riding the raft");
+                    check.That(info.Carrier.Equals(raft), "still riding the raft");
                     check.That(info.BoundsMin.X <= 8.4f + 1e-3f && info.BoundsMax.X >= 11.6f - 1e-3f &&
                                info.BoundsMin.Z <= -3.6f + 1e-3f && info.BoundsMax.Z >= 3.6f - 1e-3f,
                                "the bounds hold the moved quad: " + info.BoundsMin + " " + info.BoundsMax);
@@ -181,8 +181,8 @@ namespace NavLink.Tests
                     PathPoint first = path.Points[0], last = path.Points[path.Points.Length - 1];
                     check.That(Near(first.Position, new Vec3(10, 0, 3)) && Near(last.Position, new Vec3(10, 0, -3)),
                                "positions in the world: " + first.Position + " " + last.Position);
-                    check.That(Near(first.SurfacePosition, new Vec3(-3, 0, 0)) && Near(last.SurfacePosition, new Vec3(3, 0, 0)),
-                               "surface positions in the mesh's space: " + first.SurfacePosition + " " + last.SurfacePosition);
+                    check.That(Near(first.CarrierPosition, new Vec3(-3, 0, 0)) && Near(last.CarrierPosition, new Vec3(3, 0, 0)),
+                               "carrier positions in the mesh's space: " + first.CarrierPosition + " " + last.CarrierPosition);
 
                     // Only rigid moves for a mesh that carries a navmesh, and it cannot go while the navmesh rides it.
                     check.Throws(StatusCode.InvalidArgument, "nl_mesh_set_transform", () => world.SetMeshTransform(raft, RaftScaled),
@@ -196,27 +196,27 @@ namespace NavLink.Tests
                     check.That(unmoved, "a refused move moves nothing");
                     check.Throws(StatusCode.InvalidArgument, "nl_mesh_remove", () => world.RemoveMesh(raft), "removing the raft");
 
-                    // Recast on the raft alone, in its space, riding it; without a surface a build sees static meshes only.
-                    NavmeshId built = world.BuildNavmesh(World.DefaultAgentType(), surface: raft);
-                    check.That(world.GetNavmeshInfo(built).Surface.Equals(raft), "a navmesh built on the raft rides it");
+                    // Recast on the raft alone, in its space, riding it; without a carrier a build sees static meshes only.
+                    NavmeshId built = world.BuildNavmesh(World.DefaultAgentType(), carrier: raft);
+                    check.That(world.GetNavmeshInfo(built).Carrier.Equals(raft), "a navmesh built on the raft rides it");
                     found = world.FindNearest(built, new[] {onRaft, oldPlace}, box);
                     check.That(found[0].Found == 1 && found[1].Found == 0, "the built navmesh is where the raft is");
                     check.Throws(StatusCode.NotFound, "no triangles", () => world.BuildNavmesh(World.DefaultAgentType()),
-                                 "a build without a surface leaves the movable raft out");
+                                 "a build without a carrier leaves the movable raft out");
                     world.RemoveNavmesh(built);
                     world.RemoveNavmesh(navmesh);
                     world.RemoveMesh(raft);
                     check.That(!world.IsValid(raft), "the raft goes once no navmesh rides it");
 
-                    // A navmesh on no surface reports the null id, and its path points' SurfacePosition is Position.
+                    // A navmesh on no carrier reports the null id, and its path points' CarrierPosition is Position.
                     NavmeshId ground = world.AddNavmesh(new NavmeshInput
                     {
                         Vertices = new float[] {-5, 0, -5, 5, 0, -5, 5, 0, 5, -5, 0, 5}, Indices = new uint[] {0, 2, 1, 0, 3, 2},
                     });
-                    check.That(world.GetNavmeshInfo(ground).Surface.IsNull, "a navmesh on no surface");
+                    check.That(world.GetNavmeshInfo(ground).Carrier.IsNull, "a navmesh on no carrier");
                     PathResult stroll = world.FindPath(new PathQuery(ground, new Vec3(-4, 0, -4), new Vec3(4, 0, 4), TestLevels.Walker()));
-                    check.That(stroll.Points.Length >= 2 && stroll.Points.All(q => Same(q.SurfacePosition, q.Position)),
-                               "SurfacePosition is Position on a navmesh that rides nothing");
+                    check.That(stroll.Points.Length >= 2 && stroll.Points.All(q => Same(q.CarrierPosition, q.Position)),
+                               "CarrierPosition is Position on a navmesh that rides nothing");
                 }
             });
 
@@ -298,7 +298,7 @@ namespace NavLink.Tests
                     AgentType agent = World.DefaultAgentType();
                     agent.Radius = 0.3f;
                     NavmeshInput ledgeInput = Quad(LedgeTop), deckInput = Quad(PlatformTop, platform);
-                    ledgeInput.Agent = deckInput.Agent = agent;
+                    ledgeInput.AgentType = deckInput.AgentType = agent;
                     NavmeshId ledge = world.AddNavmesh(ledgeInput), deck = world.AddNavmesh(deckInput);
                     LinkSettings settings = World.DefaultLinkSettings();
                     settings.MaxJumpGap = 2.0f;

@@ -29,7 +29,7 @@ namespace NavLink.Tests
                 Indices = Enumerable.Range(0, 4 * cells).Select(i => (uint)i).ToArray(),
                 PolygonVertexCounts = Enumerable.Repeat((byte)4, cells).ToArray(),
             };
-            input.Agent.Radius = 0;
+            input.AgentType.Radius = 0;
             return world.AddNavmesh(input);
         }
 
@@ -64,7 +64,7 @@ namespace NavLink.Tests
                     link.End = new Vec3(3.5f, 0, 0.5f);
                     world.AddLink(navmesh, link);
                     QueryFilter walker = Body(0), jumper = Body(3);
-                    check.That(new QueryFilter().Agent.Radius == World.DefaultAgentCapabilities().Radius &&
+                    check.That(new QueryFilter().Capabilities.Radius == World.DefaultAgentCapabilities().Radius &&
                                new QueryFilter().AreaCosts == null, "new QueryFilter() is nl_default_query_filter()'s walker");
                     QueryFilterDef raw = Native.nl_default_query_filter();
                     check.That(raw.Size == (uint)System.Runtime.InteropServices.Marshal.SizeOf(typeof(QueryFilterDef)) && raw.AreaCosts == IntPtr.Zero && raw.AreaCostCount == 0, "nl_default_query_filter's size and no costs");
@@ -84,7 +84,7 @@ namespace NavLink.Tests
                     uint[] islands = world.GetIslands(navmesh, out islandCount, jumper);
                     check.That(islandCount == 3 && islands.SequenceEqual(new uint[] {0, 0, 1, 1, 2, 2}),
                                "three islands, numbered by their lowest polygon: " + string.Join(",", islands));
-                    var keepOut = new QueryFilter(jumper.Agent, new[] {Limits.AreaExcluded});
+                    var keepOut = new QueryFilter(jumper.Capabilities, new[] {Limits.AreaExcluded});
                     islands = world.GetIslands(navmesh, out islandCount, keepOut);
                     check.That(islandCount == 0 && islands.Length == 6 && islands.All(i => i == Limits.NoIsland),
                                "keeping out of area 0 leaves no island");

@@ -93,7 +93,7 @@ namespace NavLink.Tests
                 navmesh.Indices = (IntPtr)square;
                 navmesh.PolygonVertexCounts = (IntPtr)(&corners);
                 navmesh.PolygonCount = 1;
-                navmesh.Agent = def->Agent;
+                navmesh.AgentType = def->AgentType;
                 if (host->Size >= (uint)sizeof(PluginHost))
                 {
                     // A host that keeps what a build used.

@@ -82,7 +82,7 @@ namespace NavLink.Tests
             input.Vertices = vertices.ToArray();
             input.Indices = new uint[input.Vertices.Length / 3];
             for (uint i = 0; i < input.Indices.Length; ++i) input.Indices[i] = i;
-            input.Agent.Radius = 0.3f;
+            input.AgentType.Radius = 0.3f;
             NavmeshId navmesh = world.AddNavmesh(input);
             world.GenerateLinks(navmesh);
             return navmesh;

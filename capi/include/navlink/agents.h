@@ -181,11 +181,11 @@ typedef struct nl_agent_info {
     uint64_t user_data;
     nl_navmesh_id navmesh;    /**< The navmesh it stands on now (it changes when the agent takes a cross
                                    link; while in the air, the one it took off from). Added in 0.3. */
-    nl_mesh_id surface;       /**< The movable mesh that navmesh rides (the agent rides it too), or the
-                                   null id; also the null id while it flies a cross link (in the world,
-                                   not on a surface). Added in 0.3. */
-    float surface_position[3]; /**< `position` in that mesh's own space (equal to `position` on no
-                                    surface, and in the air over a cross link): to parent the body to
+    nl_mesh_id carrier;       /**< The movable mesh that navmesh rides, its carrier (the agent rides it
+                                   too), or the null id; also the null id while it flies a cross link
+                                   (in the world, on no carrier). Added in 0.3. */
+    float carrier_position[3]; /**< `position` in the carrier's own space (equal to `position` on no
+                                    carrier, and in the air over a cross link): to parent the body to
                                     the platform in the host's scene. Added in 0.3. */
     uint32_t reserved2;
 } nl_agent_info;

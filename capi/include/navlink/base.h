@@ -99,44 +99,44 @@ NL_API const char* nl_get_last_error_message(void);
 #define NL_COORDINATE_LIMIT 1.0e9f
 
 /* ---------------------------------------------------------------------------------------------
- * Ids: objects are referred to by ids passed by value, {index1, generation}; the all-zero id is
+ * Ids: objects are referred to by ids passed by value, {index1, revision}; the all-zero id is
  * null. An id whose object was removed is stale: using it returns NL_STATUS_INVALID_HANDLE.
  * ------------------------------------------------------------------------------------------- */
 
 /** A registered mesh. Zero-initialised is the null id. */
 typedef struct nl_mesh_id {
     uint32_t index1;     /**< Slot index + 1; 0 means null. */
-    uint32_t generation; /**< Changes each time the slot is reused; never repeats. */
+    uint32_t revision;   /**< Changes each time the slot is reused; never repeats. */
 } nl_mesh_id;
 
 /** A navmesh in a world. Zero-initialised is the null id. */
 typedef struct nl_navmesh_id {
     uint32_t index1;
-    uint32_t generation;
+    uint32_t revision;
 } nl_navmesh_id;
 
 /** A link in a world. Zero-initialised is the null id. */
 typedef struct nl_link_id {
     uint32_t index1;
-    uint32_t generation;
+    uint32_t revision;
 } nl_link_id;
 
 /** A queued path request. Zero-initialised is the null ticket. */
 typedef struct nl_path_ticket {
     uint32_t index1;
-    uint32_t generation;
+    uint32_t revision;
 } nl_path_ticket;
 
 /** An agent in a world. Zero-initialised is the null id. */
 typedef struct nl_agent_id {
     uint32_t index1;
-    uint32_t generation;
+    uint32_t revision;
 } nl_agent_id;
 
 /** A plugin loaded in a world. Zero-initialised is the null id. */
 typedef struct nl_plugin_id {
     uint32_t index1;
-    uint32_t generation;
+    uint32_t revision;
 } nl_plugin_id;
 
 #ifdef __cplusplus

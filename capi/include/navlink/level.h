@@ -138,7 +138,7 @@ NL_API nl_status nl_mesh_remove(nl_world* world, nl_mesh_id mesh);
 
 /** Moves a mesh: `transform` (16 floats, column-major, affine, invertible; borrowed) replaces the
  *  mesh's transform. Cheap for NL_MESH_MOVABLE meshes; otherwise the vertices are re-uploaded.
- *  The navmeshes that ride the mesh (nl_navmesh_def.surface) move with it when this returns: no
+ *  The navmeshes that ride the mesh (nl_navmesh_def.carrier) move with it when this returns: no
  *  rebuild and no new snapshot; their point location, paths and link ends answer in the world where
  *  the mesh is now, and agents on them ride along (docs/moving-surfaces.md). Such a mesh takes only
  *  rotations and translations.
@@ -146,10 +146,10 @@ NL_API nl_status nl_mesh_remove(nl_world* world, nl_mesh_id mesh);
  *  not rigid for a mesh a navmesh rides; nothing moves).
  *  Thread-safe: meant to be called from the host's physics or game thread while path workers plan
  *  and nl_world_step runs elsewhere. A path planned meanwhile uses one pose throughout (the one of
- *  the moment its search starts); an agent step reads each surface's pose when it reads the agent.
+ *  the moment its search starts); an agent step reads each carrier's pose when it reads the agent.
  *  The mesh's own transform (nl_mesh_get_info, ray queries) changes a moment before its navmeshes'
  *  pose: another thread may read the new transform and agents placed at the old pose. To place a
- *  body on the platform, use nl_agent_info.surface_position with the transform the host set.
+ *  body on the platform, use nl_agent_info.carrier_position with the transform the host set.
  *  Waits for ray queries in flight on this world to finish.
  *  @param[in] world  The world.
  *  @param[in] mesh  The mesh to move.

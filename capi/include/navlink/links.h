@@ -291,13 +291,13 @@ NL_API nl_status nl_navmesh_generate_links(nl_world* world, nl_navmesh_id navmes
                                            nl_progress_fn* progress, void* user, nl_link_generation_report* out_report);
 
 /** Generates the jump and drop links between two navmeshes (a ledge and a platform; either may ride
- *  a moving mesh, nl_navmesh_def.surface) for where they stand now, both ways, as cross links
+ *  a moving mesh, nl_navmesh_def.carrier) for where they stand now, both ways, as cross links
  *  (nl_link_def.landing_navmesh) that hold while the two stay placed so, within `tolerance` metres
  *  (0.25 is a good start). They replace the generated cross links between the two that hold now
  *  (made for this placement); those made for another placement (the platform's other stop) stay for
  *  when it is back, and each navmesh's own links stay. Only the polygons within a link's reach of
  *  the other navmesh are looked at, so a platform's links cost what its neighbourhood does: call it
- *  when a surface comes to rest, or when its links stop holding, as often as suits the host (nothing
+ *  when a carrier comes to rest, or when its links stop holding, as often as suits the host (nothing
  *  calls it for you). Links are proven against the level as it stands (the platform where it is).
  *  Both navmeshes must be made for the same agent radius and height. `settings`, `progress`, `user`
  *  and `out_report` as for nl_navmesh_generate_links (jump_links and drop_links count the cross

@@ -12,7 +12,7 @@
  *   of a list that did not fit), change no state, and leave a message naming the failing argument
  *   in the calling thread's last error
  *   (nl_get_last_error_message) and, if the world has one, pass it to the world's log callback.
- * - Objects are referred to by ids passed by value: {index1, generation}; the all-zero id is null.
+ * - Objects are referred to by ids passed by value: {index1, revision}; the all-zero id is null.
  *   An id whose object was removed is stale: using it returns NL_STATUS_INVALID_HANDLE, never crashes,
  *   and never reaches another object: a slot is retired before its generation could repeat, and no
  *   two live worlds tag their ids alike (docs/c-api.md, "Ids").

@@ -109,18 +109,18 @@ inline uint32_t count32(std::size_t n, const char* what) {
 
 /// A C id struct (nl_mesh_id...) with == and != (both fields) and `explicit operator bool` (not the
 /// all-zero null id). It is the C struct: it converts from it implicitly, passes to nl_* functions as
-/// is, and reads as `id.index1`, `id.generation`. Compare a raw C id with a wrapped one (`event.agent
+/// is, and reads as `id.index1`, `id.revision`. Compare a raw C id with a wrapped one (`event.agent
 /// == agent`), or wrap it first (`navlink::MeshId(hit.mesh)`). Validity in a world: World::is_valid.
 template <typename C>
 struct Id : C {
     constexpr Id() noexcept : C{} {}  ///< The null id.
     constexpr Id(const C& id) noexcept : C(id) {}  ///< From the C id (implicit).
 
-    constexpr explicit operator bool() const noexcept { return this->index1 != 0u || this->generation != 0u; }
+    constexpr explicit operator bool() const noexcept { return this->index1 != 0u || this->revision != 0u; }
     constexpr const C& raw() const noexcept { return *this; }
 
     friend constexpr bool operator==(const Id& a, const Id& b) noexcept {
-        return a.index1 == b.index1 && a.generation == b.generation;
+        return a.index1 == b.index1 && a.revision == b.revision;
     }
     friend constexpr bool operator!=(const Id& a, const Id& b) noexcept { return !(a == b); }
 };
@@ -177,7 +177,7 @@ inline nl_path_request_def path_request(NavmeshId navmesh, const float (&start)[
         def.start[k] = start[k];
         def.goal[k] = goal[k];
     }
-    def.agent = agent;
+    def.capabilities = agent;
     return def;
 }
 

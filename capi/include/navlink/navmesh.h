@@ -51,7 +51,7 @@ typedef struct nl_navmesh_def {
                                                polygons that only touch (Unity repeats vertices per
                                                triangle) are connected. Default 0.001; 0 welds exact
                                                duplicates only. */
-    nl_agent_type agent;                  /**< The agent type this navmesh was made for. */
+    nl_agent_type agent_type;             /**< The agent type this navmesh was made for. */
     /* Optional height detail, as Recast's detail mesh: triangles over each polygon that follow the
        surface more closely than the polygon does, used for point location. All NULL/0 means the
        polygons are the surface. (Recast's, like Detour's, sit up to two cell heights above the
@@ -67,10 +67,11 @@ typedef struct nl_navmesh_def {
                                                  corners (the same x and z) is that corner, at the
                                                  corner's height; a polygon may have at most 239 detail
                                                  vertices besides its corners, and 512 detail triangles. */
-    nl_mesh_id surface;                   /**< A movable mesh (NL_MESH_MOVABLE) the navmesh rides, or the
-                                               null id. With one, every coordinate above is in that
-                                               mesh's own space, and the navmesh follows the mesh:
-                                               nl_mesh_set_transform moves it (no rebuild). Added in 0.3. */
+    nl_mesh_id carrier;                   /**< The navmesh's carrier: a movable mesh (NL_MESH_MOVABLE)
+                                               it rides, or the null id. With one, every coordinate above
+                                               is in that mesh's own space, and the navmesh follows
+                                               the mesh: nl_mesh_set_transform moves it (no rebuild).
+                                               Added in 0.3. */
 } nl_navmesh_def;
 
 /** A def with no geometry, weld tolerance 0.001 and the default agent type. Thread-safe. */
@@ -115,11 +116,11 @@ typedef struct nl_navmesh_info {
     uint32_t flipped_polygon_count;    /**< Polygons turned over to face up. */
     uint32_t dropped_polygon_count;    /**< Degenerate polygons dropped. */
     uint32_t non_manifold_edge_count;  /**< Edges shared by three or more polygons (connect none). */
-    nl_agent_type agent;
+    nl_agent_type agent_type;
     float bounds_min[3];               /**< In the world; for a navmesh that rides a moving mesh, a
                                             box that holds it where the mesh is now. */
     float bounds_max[3];
-    nl_mesh_id surface;                /**< The movable mesh it rides; the null id for none. Added in 0.3. */
+    nl_mesh_id carrier;                /**< The movable mesh it rides; the null id for none. Added in 0.3. */
     uint32_t turned_over_mesh_count;   /**< Meshes nl_navmesh_build built it on that look wound
                                             clockwise: turned over, they would hold much more floor
                                             for its agent than as given (the build also logs a
@@ -266,7 +267,7 @@ typedef int32_t nl_progress_fn(void* user, float fraction, const char* stage);
 typedef struct nl_navmesh_build_def {
     uint32_t size;              /**< sizeof(nl_navmesh_build_def). */
     const char* builder;        /**< Name of a navmesh-builder plugin, NUL-terminated; NULL = "recast". */
-    nl_agent_type agent;        /**< The agent type to build for. */
+    nl_agent_type agent_type;   /**< The agent type to build for. */
     const void* settings;       /**< Optional builder-specific settings struct starting with
                                      `uint32_t size` (nl_recast_settings for "recast"); borrowed. */
     const char* settings_json;  /**< Optional settings as a JSON object (UTF-8, `settings_json_length`
@@ -274,9 +275,9 @@ typedef struct nl_navmesh_build_def {
                                      means none (length must then be 0); an empty string is not a
                                      JSON object (PARSE_ERROR). */
     size_t settings_json_length;
-    nl_mesh_id surface;         /**< A movable mesh to build on, or the null id. With one, the builder
+    nl_mesh_id carrier;         /**< A movable mesh to build on, or the null id. With one, the builder
                                      sees that mesh alone, in its own space, and the navmesh rides it
-                                     (as nl_navmesh_def.surface). Without one, it sees every static
+                                     (as nl_navmesh_def.carrier). Without one, it sees every static
                                      mesh (movable meshes are left out: a navmesh over one would stay
                                      behind when it moves). Added in 0.3. */
     nl_progress_fn* progress;   /**< Optional: told of the build's progress from its start (the
@@ -289,7 +290,7 @@ typedef struct nl_navmesh_build_def {
 NL_API nl_navmesh_build_def nl_default_navmesh_build_def(void);
 
 /** Builds a navmesh from every static mesh registered in the world (under their current transforms;
- *  or, with def->surface, from that movable mesh in its own space) but those flagged
+ *  or, with def->carrier, from that movable mesh in its own space) but those flagged
  *  NL_MESH_NOT_IN_NAVMESH, walking on none of an NL_MESH_OBSTACLE mesh's triangles and giving each
  *  mesh's polygons its area, and adds it as nl_navmesh_add would. A mesh that looks wound clockwise
  *  (turned over, it would hold more than twice the floor for the agent) does not fail the build: it

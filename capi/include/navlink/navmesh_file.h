@@ -49,14 +49,14 @@ NL_API nl_status nl_navmesh_save_file(const nl_world* world, nl_navmesh_id navme
 /** How to load a navmesh file. Get one from nl_default_navmesh_load_def(). */
 typedef struct nl_navmesh_load_def {
     uint32_t size;       /**< sizeof(nl_navmesh_load_def). */
-    nl_mesh_id surface;  /**< For a file whose navmesh rode a movable mesh (nl_navmesh_file_info.rides_surface):
+    nl_mesh_id carrier;  /**< For a file whose navmesh rode a movable mesh (nl_navmesh_file_info.rides_carrier):
                               the movable mesh it rides now. The null id otherwise. */
     uint32_t flags;      /**< NL_NAVMESH_LOAD_SAME_LEVEL: compare the hash of the level it was baked from
-                              with the world's (its static meshes, or the surface mesh in its own space)
+                              with the world's (its static meshes, or the carrier in its own space)
                               and refuse a mismatch. 0: load it whatever the level. */
 } nl_navmesh_load_def;
 
-/** The null surface and no flags. Thread-safe; never fails. */
+/** The null carrier and no flags. Thread-safe; never fails. */
 NL_API nl_navmesh_load_def nl_default_navmesh_load_def(void);
 
 /** Adds the navmesh and its links held in a navmesh file (`data`, `size` bytes, borrowed), as
@@ -66,9 +66,9 @@ NL_API nl_navmesh_load_def nl_default_navmesh_load_def(void);
  *  no more than a fixed multiple of what its bytes inflate to (deflate's limit: 1032 times `size`).
  *  Returns SUCCESS, or a failure with VERSION_MISMATCH (not a NavLink navmesh file, or a newer format
  *  version), PARSE_ERROR (truncated or corrupted: the section and what is wrong named), INVALID_ARGUMENT
- *  (null data with a size, null out_id, bad def size or flags, a surface for a file that rode none or
+ *  (null data with a size, null out_id, bad def size or flags, a carrier for a file that rode none or
  *  none for one that did, NL_NAVMESH_LOAD_SAME_LEVEL and the level differs, polygons or links that do
- *  not fit, named as "links[3].start"), INVALID_HANDLE (the surface), OUT_OF_MEMORY. Thread-safe.
+ *  not fit, named as "links[3].start"), INVALID_HANDLE (the carrier), OUT_OF_MEMORY. Thread-safe.
  *  @param[in] world  The world.
  *  @param[in] data  The file's bytes, `size` of them.
  *  @param[in] size  The bytes of `data`.
@@ -93,13 +93,13 @@ typedef struct nl_navmesh_file_info {
     uint32_t size;                  /**< sizeof(nl_navmesh_file_info); set by the caller. */
     uint32_t version;               /**< The file's format version. */
     uint64_t file_size;             /**< Bytes. */
-    nl_agent_type agent;            /**< The body the navmesh was made for. */
+    nl_agent_type agent_type;       /**< The body the navmesh was made for. */
     uint32_t vertex_count;
     uint32_t polygon_count;
     uint32_t detail_triangle_count; /**< 0: no height detail. */
     uint32_t link_count;
     uint32_t generated_link_count;  /**< Of link_count, made by link generation. */
-    uint32_t rides_surface;         /**< 1: its coordinates are in the space of a movable mesh it rode. */
+    uint32_t rides_carrier;         /**< 1: its coordinates are in the space of a movable mesh it rode. */
     float quantum;                  /**< Metres per step of its fixed-point coordinates (1/1024). */
     uint32_t reserved;
     uint64_t level_hash;            /**< Of the level triangles it was built from; 0: handed over by the host. */

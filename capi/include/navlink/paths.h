@@ -79,7 +79,7 @@ typedef struct nl_path_request_def {
     float goal[3];
     float search_half_extents[3];  /**< Start and goal snap to the navmesh within this box around them
                                         (default 2, 4, 2 m); each > 0. */
-    nl_agent_capabilities agent;
+    nl_agent_capabilities capabilities;
     const float* area_costs;       /**< Optional, borrowed (copied): cost per metre walked in area i,
                                         for i < area_cost_count; other areas cost 1. Each finite and
                                         >= 0; NL_AREA_EXCLUDED (0) keeps the agent out. */
@@ -125,7 +125,7 @@ typedef struct nl_path_point {
                                   higher end; for walking the point itself. */
     uint8_t reversed;        /**< 1 if the link is taken from its end to its start. */
     uint8_t reserved[3];
-    float surface_position[3]; /**< The point in its navmesh's own space: where it stays on a navmesh
+    float carrier_position[3]; /**< The point in its navmesh's own space: where it stays on a navmesh
                                     that rides a moving mesh (`position` and `apex` are in the world,
                                     at the mesh's pose when the path was planned). Equal to
                                     `position` on a navmesh that rides nothing. Added in 0.3. */

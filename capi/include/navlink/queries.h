@@ -22,7 +22,7 @@ extern "C" {
  *  of; other costs do not matter to these queries). Get one from nl_default_query_filter(). */
 typedef struct nl_query_filter {
     uint32_t size;                /**< sizeof(nl_query_filter). */
-    nl_agent_capabilities agent;
+    nl_agent_capabilities capabilities;
     const float* area_costs;      /**< Optional, borrowed during the call: as nl_path_request_def. */
     uint32_t area_cost_count;     /**< At most 256. */
     uint32_t reserved;

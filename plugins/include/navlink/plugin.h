@@ -42,7 +42,7 @@ typedef struct nl_plugin_host {
 
     /** Copies the world-space triangles of every registered mesh (under current transforms); called
      *  from a navmesh builder's build (on the thread that called it), the triangles that build is for
-     *  instead: every static mesh in world space, or with def->surface, that movable mesh alone in
+     *  instead: every static mesh in world space, or with def->carrier, that movable mesh alone in
      *  its own space. Vertex
      *  positions into `vertices` (room for `vertex_capacity` vertices, 3 floats each) and 3 indices per
      *  triangle into `indices` (room for `triangle_capacity` triangles). The counts are always written;

@@ -55,8 +55,8 @@ struct GapLevel {
         add_polygon(in, {{4, 8}, {4, 10 - r}, {6, 10 - r}, {6, 8}});
         add_polygon(in, {{6, 8}, {6, 10 - r}, {10 - r, 10 - r}, {10 - r, 8}, {6 + r, 8}});
         add_polygon(in, {{6 + r, r}, {6 + r, 8}, {10 - r, 8}, {10 - r, r}});
-        in.agent.radius = r;
-        in.agent.height = 2.0f;
+        in.agent_type.radius = r;
+        in.agent_type.height = 2.0f;
         navmesh = world->add_navmesh(in);
         if (generate) report = world->generate_links(navmesh, nl::LinkSettings{}, {}, [](float, const char*) { return true; });
     }
@@ -338,8 +338,8 @@ TEST_CASE("an agent that failed for another reason fails again, with its event, 
     nl::NavMeshInput in;
     add_polygon(in, {{0, 0}, {0, 4}, {4, 4}, {4, 0}});
     add_polygon(in, {{6, 0}, {6, 4}, {10, 4}, {10, 0}});
-    in.agent.radius = 0.3f;
-    in.agent.height = 2.0f;
+    in.agent_type.radius = 0.3f;
+    in.agent_type.height = 2.0f;
     const Handle navmesh = world.add_navmesh(in);
     nl::AgentDef def;
     def.navmesh = navmesh;
@@ -476,7 +476,7 @@ TEST_CASE("a two-way link made one-way is not taken against its way; new capabil
     nl::NavMeshInput in;
     add_polygon(in, {{0.3f, 0.3f}, {0.3f, 3.7f}, {3.7f, 3.7f}, {3.7f, 0.3f}});
     add_polygon(in, {{6.3f, 0.3f}, {6.3f, 3.7f}, {9.7f, 3.7f}, {9.7f, 0.3f}});
-    in.agent.radius = 0.3f;
+    in.agent_type.radius = 0.3f;
     const Handle navmesh = world.add_navmesh(in);
     add_jump(world, navmesh, false);
     nl::AgentDef def;
@@ -504,8 +504,8 @@ TEST_CASE("a body wider than its navmesh's is said once per radius, with the mar
     nl::World world(std::move(settings));
     nl::NavMeshInput in;
     add_polygon(in, {{0, 0}, {0, 10}, {10, 10}, {10, 0}});
-    in.agent.radius = 0.6f;
-    in.agent.height = 2.0f;
+    in.agent_type.radius = 0.6f;
+    in.agent_type.height = 2.0f;
     const Handle navmesh = world.add_navmesh(in);
     auto add = [&](float radius) {
         nl::AgentDef def;

@@ -122,10 +122,10 @@ TEST_CASE("a baked navmesh loads as the same polygons and links, bit for bit, an
         nl::PathQuery q;
         q.start = a.centre(pick(random));
         q.goal = a.centre(pick(random));
-        q.agent.radius = a.agent().radius;
-        q.agent.max_jump_distance = 10.0f;
-        q.agent.max_jump_height = 5.0f;
-        q.agent.max_drop_height = 10.0f;
+        q.capabilities.radius = a.agent().radius;
+        q.capabilities.max_jump_distance = 10.0f;
+        q.capabilities.max_jump_height = 5.0f;
+        q.capabilities.max_drop_height = 10.0f;
         nl::PathResult ra, rc;
         nl::plan_path(*graph_a, q, nullptr, ra);
         nl::plan_path(*graph_c, q, nullptr, rc);
@@ -140,8 +140,8 @@ TEST_CASE("a baked navmesh loads as the same polygons and links, bit for bit, an
 TEST_CASE("a baked file says what it was made for: the body, the builder, the level's hash and the link settings") {
     Baked b;
     const nl::NavMeshFile read = nl::read_navmesh_file(b.file.data(), b.file.size());
-    CHECK(read.navmesh.agent.radius == nl::AgentType{}.radius);
-    CHECK(read.navmesh.agent.height == nl::AgentType{}.height);
+    CHECK(read.navmesh.agent_type.radius == nl::AgentType{}.radius);
+    CHECK(read.navmesh.agent_type.height == nl::AgentType{}.height);
     CHECK(read.made_for.builder == "recast");
     // Built with no settings given, it records every setting it used.
     const nlohmann::json used = nlohmann::json::parse(read.made_for.builder_settings);
@@ -157,7 +157,7 @@ TEST_CASE("a baked file says what it was made for: the body, the builder, the le
     CHECK(settings.max_jump_gap == nl::LinkSettings{}.max_jump_gap);
     CHECK(settings.drop_angles == nl::LinkSettings{}.drop_angles);
     CHECK_FALSE(read.writer.empty());
-    CHECK_FALSE(read.rides_surface);
+    CHECK_FALSE(read.rides_carrier);
     // The record travels with the navmesh: a loaded one saves it again.
     auto other = nl::test::make_world(1);
     const Handle loaded = other->load_navmesh(read);
@@ -245,7 +245,7 @@ TEST_CASE("a file whose link no longer fits is refused with the link named, and 
     CHECK(other->navmeshes().handles().empty());
     // A navmesh that rode a moving mesh needs the mesh; one that did not refuses one.
     read = nl::read_navmesh_file(b.file.data(), b.file.size());
-    read.rides_surface = true;
+    read.rides_carrier = true;
     CHECK(nl::test::code_of([&] { other->load_navmesh(read); }, &message) == nl::ErrorCode::InvalidArgument);
     CHECK_MESSAGE(message.find("give the mesh it rides") != std::string::npos, message);
     CHECK(other->navmeshes().handles().empty());
@@ -286,7 +286,7 @@ TEST_CASE("a links file says the body its links were made for: another body's na
     const std::string json = nl::links_to_json(links, &made_for);
     const nl::LinksFile file = nl::read_links_json(json);
     REQUIRE(file.made_for);
-    CHECK(file.made_for->agent.radius == nl::AgentType{}.radius);
+    CHECK(file.made_for->agent_type.radius == nl::AgentType{}.radius);
     CHECK(file.made_for->made_with.settings == made_for.made_with.settings);
     nl::LinksMadeFor plugged = made_for;
     plugged.made_with.plugins = R"({"rope":{"plugin":"ropes","settings":{},"version":"1"}})";

@@ -141,8 +141,8 @@ TEST_CASE("bad navmesh input is refused with the item named") {
     in.polygon_sizes = {2, 4};
     CHECK(error_of(in).find("polygon_vertex_counts[0] = 2") != std::string::npos);
     in = unity_style_grid(1);
-    in.agent.height = -1.0f;
-    CHECK(error_of(in).find("def->agent.height") != std::string::npos);
+    in.agent_type.height = -1.0f;
+    CHECK(error_of(in).find("def->agent_type.height") != std::string::npos);
     in = unity_style_grid(1);
     in.weld_tolerance = std::nanf("");
     CHECK(error_of(in).find("weld_tolerance") != std::string::npos);
@@ -222,7 +222,7 @@ TEST_CASE("a level polygon's surface is exactly its height: point location's pru
                    nl::Vec3(24.1679688f, 3, 26.7841797f), nl::Vec3(20.0732422f, 3, 32.2060547f),
                    nl::Vec3(20.0732422f, 3, 32.5058594f), nl::Vec3(40.640625f, 3, 22.1503906f)};
     in.indices = {0, 1, 2, 3, 4, 5};
-    in.agent.radius = 0.0f;
+    in.agent_type.radius = 0.0f;
     const auto mesh = nl::build_navmesh(in);
     std::mt19937 random(5);
     std::uniform_real_distribution<float> x(20.1f, 20.35f), z(32.21f, 32.5f);
@@ -240,7 +240,7 @@ TEST_CASE("point location's ranking does not depend on the order it meets polygo
     // A skinny triangle's float test for "over" may take a point a hair outside its box for over it;
     // skipping by bounds must allow for that, or the answer depends on which polygon came first.
     NavMeshInput in;
-    in.agent.max_climb = 0.5f;
+    in.agent_type.max_climb = 0.5f;
     in.vertices = {Vec3(0, 0, 0), Vec3(100, 0, -50), Vec3(1, 0, 0),                     // the skinny triangle
                    Vec3(-1.8f, 1, -0.5f), Vec3(-1.8f, 1, 0.5f), Vec3(-0.8f, 1, 0.5f), Vec3(-0.8f, 1, -0.5f)};  // a floor 0.8 m off
     in.indices = {0, 1, 2, 3, 4, 5, 6};

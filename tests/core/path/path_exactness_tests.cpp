@@ -62,10 +62,10 @@ struct Map {
 // A body of this radius that drops and jumps up to 1 m, over gaps up to 1 m.
 nl::PathQuery body(float radius = 0.0f) {
     nl::PathQuery query;
-    query.agent.radius = radius;
-    query.agent.max_drop_height = 1.0f;
-    query.agent.max_jump_height = 1.0f;
-    query.agent.max_jump_distance = 1.0f;
+    query.capabilities.radius = radius;
+    query.capabilities.max_drop_height = 1.0f;
+    query.capabilities.max_jump_height = 1.0f;
+    query.capabilities.max_jump_distance = 1.0f;
     query.search_half_extents = Vec3(0.1f, 1.0f, 0.1f);
     return query;
 }
@@ -326,7 +326,7 @@ TEST_CASE("on random maps with links a wider body's cost is the cheapest route's
                           nl::PathQuery query = body(radii[index % 3]);
                           query.link_cost = 0.3f;
                           compare(m, query, points, 200, true, random, tally,
-                                  "trial " + std::to_string(index) + " radius " + std::to_string(query.agent.radius));
+                                  "trial " + std::to_string(index) + " radius " + std::to_string(query.capabilities.radius));
                       });
 }
 
@@ -471,7 +471,7 @@ TEST_CASE("a one-way drop that is the only way: a path down it, none back") {
     CHECK_FALSE(reference.length(Vec3(6.5f, 0, 0.5f), Vec3(0.5f, 0, 0.5f)));
     // A body that drops less far has no way down either.
     nl::PathQuery timid = body();
-    timid.agent.max_drop_height = 0.5f;
+    timid.capabilities.max_drop_height = 0.5f;
     timid.accept_partial = false;
     CHECK(plan(*graph, timid, Vec3(0.5f, 0, 0.5f), Vec3(6.5f, 0, 0.5f)).outcome == nl::PathOutcome::NoPath);
     CHECK_FALSE(nl::test::ShortestPathReference(*graph, timid).length(Vec3(0.5f, 0, 0.5f), Vec3(6.5f, 0, 0.5f)));
@@ -489,7 +489,7 @@ TEST_CASE("a link is taken when it is cheaper than walking round, not when its c
         m.link(Vec3(1.5f, 0, 0.5f), Vec3(1.5f, 0, 2.5f), 0.0f, true, modifier, nl::LinkKind::Jump);
         const auto graph = m.graph();
         nl::PathQuery query = body();
-        query.agent.max_jump_distance = 3.0f;
+        query.capabilities.max_jump_distance = 3.0f;
         query.link_cost = 0.5f;
         const nl::test::ShortestPathReference reference(*graph, query);
         const nl::PathResult result = plan(*graph, query, start, goal);

@@ -63,7 +63,7 @@ struct LevelWithLinks {
         nl::PathQuery query;
         query.start = nl::Vec3(from[0], from[1], from[2]);
         query.goal = nl::Vec3(to[0], to[1], to[2]);
-        query.agent = agent;
+        query.capabilities = agent;
         query.accept_partial = false;
         Path path;
         const auto graph = world->navmeshes().path_graph(navmesh);
@@ -76,7 +76,7 @@ struct LevelWithLinks {
         const auto links = world->navmeshes().links(navmesh);
         for (const nl::StoredLink& l : *links)
             if (l.id == id) return l.link;
-        FAIL("no link {", id.index1, ", ", id.generation, "}");
+        FAIL("no link {", id.index1, ", ", id.revision, "}");
         return {};
     }
 };

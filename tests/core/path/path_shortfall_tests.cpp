@@ -38,7 +38,7 @@ struct Level {
         nl::PathQuery query;
         query.start = from;
         query.goal = to;
-        query.agent = agent;
+        query.capabilities = agent;
         query.max_nodes = max_nodes;
         Explained out;
         const auto graph = world->navmeshes().path_graph(navmesh);

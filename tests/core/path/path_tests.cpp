@@ -25,7 +25,7 @@ struct CellMap {
         nl::PathQuery q;
         q.start = Vec3(sx, 0.0f, sz);
         q.goal = Vec3(gx, 0.0f, gz);
-        q.agent.radius = 0.0f;  // as thin as the navmesh assumes: no margin
+        q.capabilities.radius = 0.0f;  // as thin as the navmesh assumes: no margin
         return q;
     }
 
@@ -88,7 +88,7 @@ TEST_CASE("a straight run is two points and its length") {
 
     // 1 m wide, for a body 1.2 m wide: no way through.
     nl::PathQuery wide = map.request(0.5f, 0.5f, 5.5f, 0.5f);
-    wide.agent.radius = 0.6f;
+    wide.capabilities.radius = 0.6f;
     wide.accept_partial = false;
     CHECK(find(map, wide).result.outcome == nl::PathOutcome::NoPath);
 }
@@ -109,7 +109,7 @@ TEST_CASE("a U-turn bends at the two inner corners, and a wider agent keeps its 
         // The navmesh was made for radius 0: a 0.25 m body crosses each portal 0.25 m from the
         // outline, so it rounds the corners on a chamfer.
         nl::PathQuery def = map.request(0.5f, 0.5f, 0.5f, 2.5f);
-        def.agent.radius = 0.25f;
+        def.capabilities.radius = 0.25f;
         const Path p = find(map, def);
         INFO(p.describe());
         REQUIRE(p.result.points.size() == 6);
@@ -122,7 +122,7 @@ TEST_CASE("a U-turn bends at the two inner corners, and a wider agent keeps its 
         // The same navmesh declared as made for radius 0.25: a 0.25 agent fits it as it is.
         CellMap eroded({".....", "####.", "....."}, 0.25f);
         nl::PathQuery def = eroded.request(0.5f, 0.5f, 0.5f, 2.5f);
-        def.agent.radius = 0.25f;
+        def.capabilities.radius = 0.25f;
         const Path p = find(eroded, def);
         REQUIRE(p.result.points.size() == 4);
         check_point(p.result.points[1], 4.0f, 1.0f);
@@ -133,14 +133,14 @@ TEST_CASE("a wide agent takes the long way round a corridor narrower than its bo
     // The direct way, through column 4 of rows 2-4, is 1 m wide; the way round, columns 8-9, is 2 m.
     CellMap map({"..........", "..........", "####.###..", "####.###..", "####.###..", "..........", ".........."});
     nl::PathQuery def = map.request(4.5f, 1.0f, 4.5f, 6.0f);
-    def.agent.radius = 0.4f;
+    def.capabilities.radius = 0.4f;
     const Path narrow = find(map, def);
     INFO(narrow.describe());
     REQUIRE(narrow.result.outcome == nl::PathOutcome::Complete);
     CHECK(narrow.result.points.size() == 2);
     CHECK(narrow.result.length == doctest::Approx(5.0f));
 
-    def.agent.radius = 0.6f;
+    def.capabilities.radius = 0.6f;
     const Path wide = find(map, def);
     INFO(wide.describe());
     REQUIRE(wide.result.outcome == nl::PathOutcome::Complete);
@@ -149,7 +149,7 @@ TEST_CASE("a wide agent takes the long way round a corridor narrower than its bo
         if (p.position[2] > 2.0f && p.position[2] < 5.0f) CHECK(p.position[0] >= 8.6f - 1e-4f);
     }
 
-    def.agent.radius = 1.1f;  // wider than any way through
+    def.capabilities.radius = 1.1f;  // wider than any way through
     def.accept_partial = false;
     CHECK(find(map, def).result.outcome == nl::PathOutcome::NoPath);
 }
@@ -203,9 +203,9 @@ TEST_CASE("a partial path ends at the nearest point the body reaches, over the l
 
     nl::PathQuery walker = map.request(0.5f, 0.2f, 7.5f, 1.5f);
     nl::PathQuery dropper = walker;
-    dropper.agent.max_drop_height = 3.0f;
+    dropper.capabilities.max_drop_height = 3.0f;
     for (const nl::PathQuery& body : {walker, dropper}) {
-        const bool drops = body.agent.max_drop_height > 0.0f;
+        const bool drops = body.capabilities.max_drop_height > 0.0f;
         CAPTURE(drops);
         const size_t maps_before = graph->reachability_map_count();
         const Path first = find(map, body);  // searches everything, then builds the body's map
@@ -267,9 +267,9 @@ TEST_CASE("links join islands for the agents whose bodies can take them") {
     nl::PathQuery def = map.request(0.5f, 0.5f, 5.5f, 0.5f);
     def.accept_partial = false;
     CHECK(find(map, def).result.outcome == nl::PathOutcome::NoPath);  // a walker
-    def.agent.max_jump_distance = 1.0f;
+    def.capabilities.max_jump_distance = 1.0f;
     CHECK(find(map, def).result.outcome == nl::PathOutcome::NoPath);  // the gap is 1.2 m
-    def.agent.max_jump_distance = 1.5f;
+    def.capabilities.max_jump_distance = 1.5f;
     Path p = find(map, def);
     INFO(p.describe());
     REQUIRE(p.result.outcome == nl::PathOutcome::Complete);
@@ -277,7 +277,7 @@ TEST_CASE("links join islands for the agents whose bodies can take them") {
     CHECK(p.result.links_used == 1);
     CHECK(p.result.points[1].segment == uint32_t(nl::LinkKind::Jump));
     CHECK(p.result.points[1].link.index1 == jump_id.index1);
-    CHECK(p.result.points[1].link.generation == jump_id.generation);
+    CHECK(p.result.points[1].link.revision == jump_id.revision);
     CHECK_FALSE(p.result.points[1].reversed);
     check_point(p.result.points[1], 2.9f, 0.5f);
     check_point(p.result.points[2], 4.1f, 0.5f);
@@ -287,7 +287,7 @@ TEST_CASE("links join islands for the agents whose bodies can take them") {
     p = find(map, map.request(5.5f, 0.5f, 0.5f, 0.5f));
     CHECK(p.result.outcome == nl::PathOutcome::Partial);  // a walker again
     def = map.request(5.5f, 0.5f, 0.5f, 0.5f);
-    def.agent.max_jump_distance = 1.5f;
+    def.capabilities.max_jump_distance = 1.5f;
     p = find(map, def);
     REQUIRE(p.result.points.size() == 4);
     CHECK(p.result.points[1].reversed);
@@ -297,17 +297,17 @@ TEST_CASE("links join islands for the agents whose bodies can take them") {
     def = map.request(9.5f, 0.5f, 5.5f, 0.5f);
     def.accept_partial = false;
     CHECK(find(map, def).result.outcome == nl::PathOutcome::NoPath);
-    def.agent.max_drop_height = 2.0f;
+    def.capabilities.max_drop_height = 2.0f;
     p = find(map, def);
     INFO(p.describe());
     REQUIRE(p.result.outcome == nl::PathOutcome::Complete);
     CHECK(p.result.points[1].segment == uint32_t(nl::LinkKind::Drop));
     def = map.request(5.5f, 0.5f, 9.5f, 0.5f);
     def.accept_partial = false;
-    def.agent.max_drop_height = 2.0f;
-    def.agent.max_jump_distance = 1.0f;
+    def.capabilities.max_drop_height = 2.0f;
+    def.capabilities.max_jump_distance = 1.0f;
     CHECK(find(map, def).result.outcome == nl::PathOutcome::NoPath);
-    def.agent.max_jump_height = 2.0f;
+    def.capabilities.max_jump_height = 2.0f;
     p = find(map, def);
     REQUIRE(p.result.outcome == nl::PathOutcome::Complete);
     CHECK(p.result.points[1].segment == uint32_t(nl::LinkKind::Jump));  // a drop climbed back is a jump
@@ -319,7 +319,7 @@ TEST_CASE("links join islands for the agents whose bodies can take them") {
     disabled.enabled = false;
     map.world->update_link(jump_id, disabled);
     def = map.request(0.5f, 0.5f, 5.5f, 0.5f);
-    def.agent.max_jump_distance = 1.5f;
+    def.capabilities.max_jump_distance = 1.5f;
     def.accept_partial = false;
     CHECK(find(map, def).result.outcome == nl::PathOutcome::NoPath);
     nl::Link costly = jump;
@@ -348,14 +348,14 @@ TEST_CASE("a manual link may ask only for an ability: requirements taken as give
     nl::PathQuery def = map.request(0.5f, 0.5f, 5.5f, 0.5f);
     def.accept_partial = false;
     CHECK(find(map, def).result.outcome == nl::PathOutcome::NoPath);  // no ability
-    def.agent.abilities = 0x2;                                      // and no jump at all
+    def.capabilities.abilities = 0x2;                                      // and no jump at all
     CHECK(find(map, def).result.outcome == nl::PathOutcome::Complete);
 
     // The same link measured from its ends asks for a 1.2 m jump as well.
     ladder = map.link(2.9f, 4.1f, ladder_kind, false, ability);
     map.world->update_link(id, ladder);
     CHECK(find(map, def).result.outcome == nl::PathOutcome::NoPath);
-    def.agent.max_jump_distance = 1.2f;
+    def.capabilities.max_jump_distance = 1.2f;
     CHECK(find(map, def).result.outcome == nl::PathOutcome::Complete);
 }
 
@@ -372,13 +372,13 @@ TEST_CASE("ability bits and clearance width filter links") {
                                               false, needs));
     nl::PathQuery def = map.request(0.5f, 0.5f, 5.5f, 0.5f);
     def.accept_partial = false;
-    def.agent.max_jump_distance = 2.0f;  // the gap is computed from the ends: 1.2 m
-    def.agent.radius = 0.3f;
+    def.capabilities.max_jump_distance = 2.0f;  // the gap is computed from the ends: 1.2 m
+    def.capabilities.radius = 0.3f;
     CHECK(find(map, def).result.outcome == nl::PathOutcome::NoPath);
-    def.agent.abilities = 0x5;
+    def.capabilities.abilities = 0x5;
     const Path p = find(map, def);
     REQUIRE(p.result.outcome == nl::PathOutcome::Complete);
     CHECK(p.result.points[1].segment == uint32_t(nl::LinkKind::FirstPluginKind) + 5);
-    def.agent.radius = 0.6f;  // 1.2 m wide body, link measured clear for 1.0 m
+    def.capabilities.radius = 0.6f;  // 1.2 m wide body, link measured clear for 1.0 m
     CHECK(find(map, def).result.outcome == nl::PathOutcome::NoPath);
 }

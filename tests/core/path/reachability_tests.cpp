@@ -160,7 +160,7 @@ TEST_CASE("a passage narrower than a wider body is closed to it") {
         nl::PathQuery q;
         q.start = Vec3(1.5f, 0.0f, 0.5f);
         q.goal = Vec3(1.5f, 0.0f, 4.5f);
-        q.agent = body(0.0f, radius);
+        q.capabilities = body(0.0f, radius);
         q.accept_partial = true;
         nl::PathResult result;
         nl::plan_path(*m.graph(), q, nullptr, result);
@@ -204,7 +204,7 @@ TEST_CASE("a path request that does not accept partial paths fails at once for a
     nl::PathQuery q;
     q.start = Vec3(0.5f, 0.0f, 0.5f);
     q.goal = Vec3(6.5f, 0.0f, 0.5f);
-    q.agent = body();
+    q.capabilities = body();
     q.accept_partial = false;
     nl::PathResult result;
     CHECK(m.graph()->reachability_map_count() == 0);
@@ -284,9 +284,9 @@ TEST_CASE("on random maps with random links and areas the map agrees with the se
         for (const float drop : {0.0f, 1.0f, 2.0f}) {
             for (const std::vector<float>& area_costs : costs) {
                 nl::PathQuery q;
-                q.agent = body(drop);
+                q.capabilities = body(drop);
                 q.area_costs = area_costs;
-                const auto map = graph->reachability(q.agent, q.area_costs);
+                const auto map = graph->reachability(q.capabilities, q.area_costs);
                 for (uint32_t from = 0; from < polygons; ++from) {
                     std::vector<uint32_t> listed;
                     map->reachable_polygons(from, listed);

@@ -20,7 +20,7 @@ TEST_CASE("slot map: stale handles are recognised after their slot is reused") {
     CHECK(map.find(a) == nullptr);
     const nl::Handle c = map.insert(3);  // reuses a's slot
     CHECK(c.index1 == a.index1);
-    CHECK(c.generation != a.generation);
+    CHECK(c.revision != a.revision);
     CHECK(map.find(a) == nullptr);
     CHECK(*map.find(c) == 3);
     CHECK(*map.find(b) == 2);
@@ -70,7 +70,7 @@ TEST_CASE("slot map: a handle of another kind is refused, even in a slot of the 
     const nl::Handle navmesh = navmeshes.insert(1);
     const nl::Handle agent = agents.insert(2);
     CHECK((navmesh.index1 & nl::kHandleSlotMask) == (agent.index1 & nl::kHandleSlotMask));  // the same slot
-    CHECK(navmesh.generation == agent.generation);
+    CHECK(navmesh.revision == agent.revision);
     CHECK(navmesh != agent);
     CHECK(agents.find(navmesh) == nullptr);
     CHECK_FALSE(agents.erase(navmesh));
@@ -103,7 +103,7 @@ TEST_CASE("slot map: a slot whose generations are used up is retired, so no hand
             break;
         }
         ++reuses;
-        CHECK(h.generation != first.generation);
+        CHECK(h.revision != first.revision);
         last = h;
         map.erase(h);
         REQUIRE(reuses <= nl::SlotMap<int>::kCounterMask);

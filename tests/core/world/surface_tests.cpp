@@ -52,7 +52,7 @@ struct Platform {
         in.vertices = {{-e, 0, -e}, {-e, 0, e}, {e, 0, e}, {e, 0, -e}};
         in.indices = {0, 1, 2, 3};
         in.polygon_sizes = {4};
-        in.agent.radius = 0.3f;
+        in.agent_type.radius = 0.3f;
         navmesh = world->add_navmesh(in, mesh);
     }
 
@@ -91,15 +91,15 @@ TEST_CASE("a navmesh on a movable mesh follows its transform: no rebuild, no new
     nl::PathQuery q;
     q.start = moved * from_local;
     q.goal = moved * to_local;
-    q.agent.radius = 0.3f;
+    q.capabilities.radius = 0.3f;
     nl::PathResult r;
     nl::plan_path(*before, q, nullptr, r);
     REQUIRE(r.outcome == nl::PathOutcome::Complete);
     REQUIRE(r.points.size() == 2);
     CHECK(distance(r.points.front().position, q.start) < 1e-4f);
     CHECK(distance(r.points.back().position, q.goal) < 1e-4f);
-    CHECK(distance(r.points.front().surface_position, from_local) < 1e-4f);
-    CHECK(distance(r.points.back().surface_position, to_local) < 1e-4f);
+    CHECK(distance(r.points.front().carrier_position, from_local) < 1e-4f);
+    CHECK(distance(r.points.back().carrier_position, to_local) < 1e-4f);
     CHECK(distance(r.start, q.start) < 1e-4f);
 
     // Where the platform's corner was, there is no navmesh now (it turned 1 rad away).
@@ -143,10 +143,10 @@ TEST_CASE("a navmesh is placed only on a movable mesh with a rigid transform") {
     in.indices = {0, 1, 2, 3};
     in.polygon_sizes = {4};
     const size_t before = p.world->navmeshes().handles().size();
-    check_refused([&] { p.world->add_navmesh(in, fixed); }, nl::ErrorCode::InvalidArgument, "surface is not a movable mesh");
+    check_refused([&] { p.world->add_navmesh(in, fixed); }, nl::ErrorCode::InvalidArgument, "carrier is not a movable mesh");
     check_refused([&] { p.world->add_navmesh(in, squashed); }, nl::ErrorCode::InvalidArgument,
-                           "surface's transform is not a rotation");
-    check_refused([&] { p.world->add_navmesh(in, Handle{7, 3}); }, nl::ErrorCode::InvalidHandle, "surface");
+                           "carrier's transform is not a rotation");
+    check_refused([&] { p.world->add_navmesh(in, Handle{7, 3}); }, nl::ErrorCode::InvalidHandle, "carrier");
     CHECK(p.world->navmeshes().handles().size() == before);
     // A second navmesh on the same mesh shares its frame: one move places both.
     const Handle second = p.world->add_navmesh(in, p.mesh);
@@ -228,7 +228,7 @@ TEST_CASE("bodies on a moving surface avoid each other there, and not bodies on 
     in.vertices = {{10.3f, -1, -9.7f}, {10.3f, -1, 9.7f}, {29.7f, -1, 9.7f}, {29.7f, -1, -9.7f}};
     in.indices = {0, 1, 2, 3};
     in.polygon_sizes = {4};
-    in.agent.radius = 0.3f;
+    in.agent_type.radius = 0.3f;
     const Handle floor = p.world->add_navmesh(in);
     // Two on the platform heading through each other, one on the ground right under one of them.
     const Transform pose = platform_pose(0.0);
@@ -300,13 +300,13 @@ struct Ferry {
                          {16.3f, 0, 0.3f}, {16.3f, 0, 5.7f}, {21.7f, 0, 5.7f}, {21.7f, 0, 0.3f}};
         both.indices = {0, 1, 2, 3, 4, 5, 6, 7};
         both.polygon_sizes = {4, 4};
-        both.agent.radius = 0.3f;
+        both.agent_type.radius = 0.3f;
         ledges = world->add_navmesh(both);
         nl::NavMeshInput top;
         top.vertices = {{-1.7f, 0, -1.7f}, {-1.7f, 0, 1.7f}, {1.7f, 0, 1.7f}, {1.7f, 0, -1.7f}};
         top.indices = {0, 1, 2, 3};
         top.polygon_sizes = {4};
-        top.agent.radius = 0.3f;
+        top.agent_type.radius = 0.3f;
         deck = world->add_navmesh(top, shuttle);
         if (gangways) leave = add_cross(deck, Vec3(15.4f, 0, 3), ledges, Vec3(16.6f, 0, 3));  // placed docked at the far ledge
         world->set_mesh_transform(shuttle, at(near_dock));
@@ -520,7 +520,7 @@ TEST_CASE("an agent put on a platform stands on the platform's navmesh: found by
     def.position = Vec3(8.5f, 0.0f, 3.5f);  // on the shuttle, docked at the near ledge
     const Handle rider = f.world->add_agent(def);
     CHECK(f.world->agents().info(rider).navmesh == f.deck);
-    CHECK(f.world->agents().info(rider).surface == f.shuttle);
+    CHECK(f.world->agents().info(rider).carrier == f.shuttle);
     def.position = Vec3(2.0f, 0.0f, 3.0f);  // on the ledge
     CHECK(f.world->agents().info(f.world->add_agent(def)).navmesh == f.ledges);
     // A body the platform's navmesh was not made for stays on the navmesh it was given.
@@ -528,7 +528,7 @@ TEST_CASE("an agent put on a platform stands on the platform's navmesh: found by
     wide.vertices = {{0.6f, 0, 0.6f}, {0.6f, 0, 5.4f}, {5.4f, 0, 5.4f}, {5.4f, 0, 0.6f}};
     wide.indices = {0, 1, 2, 3};
     wide.polygon_sizes = {4};
-    wide.agent.radius = 0.6f;
+    wide.agent_type.radius = 0.6f;
     def.navmesh = f.world->add_navmesh(wide);
     def.position = Vec3(8.5f, 0.0f, 3.5f);
     def.capabilities.radius = 0.6f;
@@ -574,7 +574,7 @@ TEST_CASE("a body that comes down on another platform than the one it aimed at l
     top.vertices = {{-1.7f, 0, -1.7f}, {-1.7f, 0, 1.7f}, {1.7f, 0, 1.7f}, {1.7f, 0, -1.7f}};
     top.indices = {0, 1, 2, 3};
     top.polygon_sizes = {4};
-    top.agent.radius = 0.3f;
+    top.agent_type.radius = 0.3f;
     const Handle spare_deck = f.world->add_navmesh(top, spare);
     nl::AgentDef def;
     def.navmesh = f.ledges;
@@ -596,7 +596,7 @@ TEST_CASE("a body that comes down on another platform than the one it aimed at l
     REQUIRE(swapped);
     const nl::AgentInfo info = f.world->agents().info(walker);
     CHECK(info.navmesh == spare_deck);
-    CHECK(info.surface == spare);
+    CHECK(info.carrier == spare);
     // Its destination is on the shuttle it aimed at, which no link joins to the spare one: it says so.
     CHECK(info.state == AgentState::Failed);
     CHECK(info.reason == nl::AgentReason::NoPath);

@@ -42,8 +42,8 @@ nl::NavMeshInput platform_tops(float radius = 0.3f) {
         }
         in.polygon_sizes.push_back(4);
     }
-    in.agent.radius = radius;
-    in.agent.height = 2.0f;
+    in.agent_type.radius = radius;
+    in.agent_type.height = 2.0f;
     return in;
 }
 
@@ -262,7 +262,7 @@ public:
     const nl::PluginDescription& description() const noexcept override { return description_; }
     nl::NavMeshBuilder* navmesh_builder() noexcept override { return this; }
     nl::BuiltNavMesh build(nl::World&, const nl::NavMeshBuildRequest& request) override {
-        return {nl::build_navmesh(platform_tops(request.agent.radius)), settings_used};
+        return {nl::build_navmesh(platform_tops(request.agent_type.radius)), settings_used};
     }
     std::string settings_used;
 
@@ -307,7 +307,7 @@ TEST_CASE("C++ plugins: a link kind's links are placed and generated with the re
     s.world->plugins().add(std::move(tops_plugin));
     nl::NavMeshBuildRequest request;
     request.builder = "tops";
-    request.agent.radius = 0.5f;
+    request.agent_type.radius = 0.5f;
     const Handle built = s.world->build_navmesh(request);
     const auto mesh = s.world->navmeshes().navmesh(built);
     CHECK(mesh->agent().radius == 0.5f);
@@ -357,7 +357,7 @@ TEST_CASE("waiting for a path: without workers the waiting thread plans, with th
     nl::PathQuery query;
     query.start = Vec3(1.0f, 0.0f, 2.0f);
     query.goal = Vec3(2.0f, 0.0f, 2.0f);
-    query.agent.radius = 0.3f;
+    query.capabilities.radius = 0.3f;
     nl::PathQueue& queue = s.world->paths();
     std::string refused;
     std::vector<Handle> tickets;
@@ -397,8 +397,8 @@ TEST_CASE("the path queue: a search-work budget, and finished requests taken onc
     nl::PathQuery query;
     query.start = Vec3(1.0f, 0.0f, 2.0f);
     query.goal = Vec3(9.0f, 0.0f, 2.0f);
-    query.agent.radius = 0.3f;
-    query.agent.max_jump_distance = 3.0f;
+    query.capabilities.radius = 0.3f;
+    query.capabilities.max_jump_distance = 3.0f;
     nl::PathQueue& queue = s.world->paths();
     int users[3] = {0, 1, 2};
     std::vector<Handle> tickets;

@@ -42,7 +42,7 @@ int main(void) {
         return fail("nl_world_cast_rays");
     }
     ok = hit.hit == 1 && fabsf(hit.distance - 2.0f) < 1e-5f && hit.mesh.index1 == mesh.index1 &&
-         hit.mesh.generation == mesh.generation && hit.triangle == 0;
+         hit.mesh.revision == mesh.revision && hit.triangle == 0;
     nl_world_destroy(world);
     if (!ok) {
         fprintf(stderr, "consumer: wrong hit (hit %d, distance %g)\n", (int)hit.hit, (double)hit.distance);

@@ -43,9 +43,9 @@ static int find_path(nl_world* world) {
     request.start[2] = 4.0f;
     request.goal[0] = 14.0f;
     request.goal[2] = 4.0f;
-    request.agent.max_jump_distance = 3.0f;
-    request.agent.max_jump_height = 1.0f;
-    request.agent.max_drop_height = 1.0f;
+    request.capabilities.max_jump_distance = 3.0f;
+    request.capabilities.max_jump_height = 1.0f;
+    request.capabilities.max_drop_height = 1.0f;
     request.accept_partial = 0;
     if (NL_FAILED(nl_path_find(world, &request, &result, NULL, 0, &point_count))) return failed("nl_path_find");
     if (result.outcome != NL_PATH_COMPLETE || result.links_used != 1) {

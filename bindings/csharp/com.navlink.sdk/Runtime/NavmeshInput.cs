@@ -4,7 +4,7 @@ namespace NavLink
     /// header's NULL: every polygon a triangle, area 0, no detail mesh.</summary>
     public sealed class NavmeshInput
     {
-        /// <summary>x y z per vertex, world space (or the Surface mesh's own space).</summary>
+        /// <summary>x y z per vertex, world space (or the Carrier mesh's own space).</summary>
         public float[] Vertices;
         /// <summary>Polygon corners, polygon after polygon.</summary>
         public uint[] Indices;
@@ -12,18 +12,19 @@ namespace NavLink
         public byte[] PolygonVertexCounts;
         public byte[] Areas;
         public float WeldTolerance = 0.001f;
-        public AgentType Agent;
+        public AgentType AgentType;
         public float[] DetailVertices;
         public uint[] DetailTriangles;
         public uint[] DetailTriangleStarts;
-        /// <summary>A movable mesh (MeshFlags.Movable) the navmesh rides, or the null id (default): with one,
-        /// the coordinates are in that mesh's own space and World.SetMeshTransform moves the navmesh with it.</summary>
-        public MeshId Surface;
+        /// <summary>The navmesh's carrier: a movable mesh (MeshFlags.Movable) it rides, or the null id (default):
+        /// with one, the coordinates are in that mesh's own space and World.SetMeshTransform moves the navmesh
+        /// with it.</summary>
+        public MeshId Carrier;
 
         public NavmeshInput()
         {
             LibraryCheck.EnsureLoaded();
-            Agent = Native.nl_default_agent_type();
+            AgentType = Native.nl_default_agent_type();
         }
     }
 }

@@ -1,14 +1,14 @@
 namespace NavLink
 {
     /// <summary>One path request (nl_path_request_def) with the header's defaults: set Navmesh, Start,
-    /// Goal and Agent.</summary>
+    /// Goal and Capabilities.</summary>
     public sealed class PathQuery
     {
         public NavmeshId Navmesh;
         public Vec3 Start;
         public Vec3 Goal;
         public Vec3 SearchHalfExtents;
-        public AgentCapabilities Agent;
+        public AgentCapabilities Capabilities;
         /// <summary>Cost per metre in area i; null: every area costs 1. Limits.AreaExcluded keeps the agent out.</summary>
         public float[] AreaCosts;
         public float LinkCost;
@@ -20,18 +20,18 @@ namespace NavLink
             LibraryCheck.EnsureLoaded();
             PathRequestDef d = Native.nl_default_path_request_def();
             SearchHalfExtents = d.SearchHalfExtents;
-            Agent = d.Agent;
+            Capabilities = d.Capabilities;
             LinkCost = d.LinkCost;
             MaxNodes = d.MaxNodes;
             AcceptPartial = d.AcceptPartial != 0;
         }
 
-        public PathQuery(NavmeshId navmesh, Vec3 start, Vec3 goal, AgentCapabilities agent) : this()
+        public PathQuery(NavmeshId navmesh, Vec3 start, Vec3 goal, AgentCapabilities capabilities) : this()
         {
             Navmesh = navmesh;
             Start = start;
             Goal = goal;
-            Agent = agent;
+            Capabilities = capabilities;
         }
     }
 

@@ -9,20 +9,20 @@ namespace NavLink
     /// for that too.</summary>
     public sealed class QueryFilter
     {
-        public AgentCapabilities Agent;
+        public AgentCapabilities Capabilities;
         /// <summary>Cost per metre in area i (at most 256); null: no area is excluded.</summary>
         public float[] AreaCosts;
 
         public QueryFilter()
         {
             LibraryCheck.EnsureLoaded();
-            Agent = Native.nl_default_query_filter().Agent;
+            Capabilities = Native.nl_default_query_filter().Capabilities;
         }
 
-        public QueryFilter(AgentCapabilities agent, float[] areaCosts = null)
+        public QueryFilter(AgentCapabilities capabilities, float[] areaCosts = null)
         {
             LibraryCheck.EnsureLoaded();
-            Agent = agent;
+            Capabilities = capabilities;
             AreaCosts = areaCosts;
         }
 
@@ -30,7 +30,7 @@ namespace NavLink
         internal unsafe QueryFilterDef ToDef(float* areaCosts)
         {
             QueryFilterDef def = Native.nl_default_query_filter();
-            def.Agent = Agent;
+            def.Capabilities = Capabilities;
             def.AreaCosts = (IntPtr)areaCosts;
             def.AreaCostCount = (uint)(AreaCosts == null ? 0 : AreaCosts.Length);
             return def;

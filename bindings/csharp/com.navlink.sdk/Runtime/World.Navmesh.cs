@@ -11,7 +11,7 @@ namespace NavLink
         public static RecastSettings DefaultRecastSettings() { LibraryCheck.EnsureLoaded(); return Native.nl_default_recast_settings(); }
 
         /// <summary>Builds a navmesh with a builder plugin ("recast" when builder is null) from every static
-        /// mesh, or, with a surface (a MeshFlags.Movable mesh), from that mesh alone in its own space: the
+        /// mesh, or, with a carrier (a MeshFlags.Movable mesh), from that mesh alone in its own space: the
         /// navmesh then rides it. recast: the Recast builder's settings; settingsJson is applied over them.
         /// Meshes flagged NotInNavmesh are left out, Obstacle ones only block, and each mesh's area goes to the
         /// polygons over it. A level that looks wound clockwise, given in other units than metres or with z up
@@ -19,8 +19,8 @@ namespace NavLink
         /// a warning and NavmeshInfo.BuildWarnings has a bit for each. progress is told of the build on this
         /// thread (fractions 0 to 1); returning false cancels it (NavLinkException with Cancelled, nothing
         /// added); an exception thrown by progress cancels the build and is rethrown here.</summary>
-        public unsafe NavmeshId BuildNavmesh(AgentType agent, RecastSettings? recast = null, string settingsJson = null,
-                                             string builder = null, MeshId surface = default(MeshId),
+        public unsafe NavmeshId BuildNavmesh(AgentType agentType, RecastSettings? recast = null, string settingsJson = null,
+                                             string builder = null, MeshId carrier = default(MeshId),
                                              ProgressHandler progress = null)
         {
             NavmeshBuildDef def = Native.nl_default_navmesh_build_def();
@@ -33,14 +33,14 @@ namespace NavLink
             using (var scope = new ProgressScope(progress))
             using (var w = Enter())
             {
-                def.Agent = agent;
+                def.AgentType = agentType;
                 def.Builder = (IntPtr)n;
                 def.Settings = recast.HasValue ? (IntPtr)(&settings) : IntPtr.Zero;
                 // A non-null pointer for "", which is not a JSON object: let the library say so.
                 byte empty = 0;
                 def.SettingsJson = json == null ? IntPtr.Zero : json.Length == 0 ? (IntPtr)(&empty) : (IntPtr)j;
                 def.SettingsJsonLength = (UIntPtr)(json == null ? 0 : json.Length);
-                def.Surface = surface;
+                def.Carrier = carrier;
                 def.Progress = scope.Function;
                 def.ProgressUser = scope.User;
                 scope.Check(Native.nl_navmesh_build(w.Pointer, &def, &id));
@@ -71,13 +71,13 @@ namespace NavLink
                                           : input.Indices == null ? 0 : input.Indices.Length / 3);
                 def.Areas = (IntPtr)a;
                 def.WeldTolerance = input.WeldTolerance;
-                def.Agent = input.Agent;
+                def.AgentType = input.AgentType;
                 def.DetailVertices = (IntPtr)dv;
                 def.DetailVertexCount = (uint)(input.DetailVertices == null ? 0 : input.DetailVertices.Length / 3);
                 def.DetailTriangles = (IntPtr)dt;
                 def.DetailTriangleCount = (uint)(input.DetailTriangles == null ? 0 : input.DetailTriangles.Length / 3);
                 def.DetailTriangleStarts = (IntPtr)ds;
-                def.Surface = input.Surface;
+                def.Carrier = input.Carrier;
                 Status.Check(Native.nl_navmesh_add(w.Pointer, &def, &id));
             }
             return id;

@@ -6,7 +6,7 @@ namespace NavLink
 {
     public sealed partial class World
     {
-        /// <summary>The null surface and no flags (for a raw Native.nl_navmesh_load; LoadNavmesh takes surface
+        /// <summary>The null carrier and no flags (for a raw Native.nl_navmesh_load; LoadNavmesh takes carrier
         /// and sameLevel instead).</summary>
         public static NavmeshLoadDef DefaultNavmeshLoadDef() { LibraryCheck.EnsureLoaded(); return Native.nl_default_navmesh_load_def(); }
 
@@ -43,23 +43,23 @@ namespace NavLink
                 Status.Check(Native.nl_navmesh_save_file(w.Pointer, navmesh, p));
         }
 
-        private static NavmeshLoadDef LoadDef(MeshId surface, bool sameLevel)
+        private static NavmeshLoadDef LoadDef(MeshId carrier, bool sameLevel)
         {
             NavmeshLoadDef def = Native.nl_default_navmesh_load_def();
-            def.Surface = surface;
+            def.Carrier = carrier;
             def.Flags = sameLevel ? NavmeshLoadFlags.SameLevel : NavmeshLoadFlags.None;
             return def;
         }
 
-        /// <summary>Adds the navmesh and its links held in a navmesh file's bytes (new ids). surface: for a file
-        /// whose navmesh rode a movable mesh (NavmeshFileInfo.RidesSurface), the movable mesh it rides now;
+        /// <summary>Adds the navmesh and its links held in a navmesh file's bytes (new ids). carrier: for a file
+        /// whose navmesh rode a movable mesh (NavmeshFileInfo.RidesCarrier), the movable mesh it rides now;
         /// sameLevel: refuse (InvalidArgument) a file baked from other level geometry than the world holds now.
         /// VersionMismatch (not a NavLink navmesh file, or a newer format), ParseError (truncated or corrupted),
-        /// InvalidArgument (a surface for a file that rode none or none for one that did; polygons or links
+        /// InvalidArgument (a carrier for a file that rode none or none for one that did; polygons or links
         /// that do not fit). Nothing is added on failure.</summary>
-        public unsafe NavmeshId LoadNavmesh(ReadOnlySpan<byte> data, MeshId surface = default(MeshId), bool sameLevel = false)
+        public unsafe NavmeshId LoadNavmesh(ReadOnlySpan<byte> data, MeshId carrier = default(MeshId), bool sameLevel = false)
         {
-            NavmeshLoadDef def = LoadDef(surface, sameLevel);
+            NavmeshLoadDef def = LoadDef(carrier, sameLevel);
             NavmeshId id;
             fixed (byte* d = &MemoryMarshal.GetReference(data))
             using (var w = Enter())
@@ -68,11 +68,11 @@ namespace NavLink
         }
 
         /// <summary>LoadNavmesh from the file at path; also NotFound (no such file) and IoError.</summary>
-        public unsafe NavmeshId LoadNavmeshFile(string path, MeshId surface = default(MeshId), bool sameLevel = false)
+        public unsafe NavmeshId LoadNavmeshFile(string path, MeshId carrier = default(MeshId), bool sameLevel = false)
         {
             if (path == null) throw new ArgumentNullException("path");
             byte[] utf8 = Utf8.EncodeZ(path);
-            NavmeshLoadDef def = LoadDef(surface, sameLevel);
+            NavmeshLoadDef def = LoadDef(carrier, sameLevel);
             NavmeshId id;
             fixed (byte* p = utf8)
             using (var w = Enter())

@@ -268,7 +268,7 @@ namespace NavLink
             def.Start = query.Start;
             def.Goal = query.Goal;
             def.SearchHalfExtents = query.SearchHalfExtents;
-            def.Agent = query.Agent;
+            def.Capabilities = query.Capabilities;
             def.AreaCosts = (IntPtr)areaCosts;
             def.AreaCostCount = (uint)(query.AreaCosts == null ? 0 : query.AreaCosts.Length);
             def.LinkCost = query.LinkCost;

@@ -31,9 +31,9 @@ pub(crate) unsafe fn output_init<T>() -> T {
 }
 
 /// `impl Debug` for an id, under the safe crate's name and by what it means rather than its raw fields:
-/// `MeshId { index: 3, generation: 1 }` (the slot index, from 0, and how many objects the slot has held),
+/// `MeshId { index: 3, revision: 1 }` (the slot index, from 0, and how many objects the slot has held),
 /// or `MeshId(null)` for the all-zero id. docs/c-api.md, "Ids": the low 28 bits of `index1` are the slot
-/// index + 1 (the top 4 the kind of object) and the low 20 bits of `generation` count the slot's reuse
+/// index + 1 (the top 4 the kind of object) and the low 20 bits of `revision` count the slot's reuse
 /// (the top 12 name the world); ids stay opaque values: compare both raw fields.
 macro_rules! id_debug {
     ($t:ident, $name:literal) => {
@@ -44,7 +44,7 @@ macro_rules! id_debug {
                 }
                 f.debug_struct($name)
                     .field("index", &(i64::from(self.index1 & crate::ID_SLOT_MASK) - 1))
-                    .field("generation", &(self.generation & crate::ID_GENERATION_MASK))
+                    .field("revision", &(self.revision & crate::ID_REVISION_MASK))
                     .finish()
             }
         }
@@ -53,8 +53,8 @@ macro_rules! id_debug {
 
 /// The bits of an id's `index1` that hold its slot index + 1 (for reading ids: `Debug`).
 const ID_SLOT_MASK: u32 = (1 << 28) - 1;
-/// The bits of an id's `generation` that count its slot's reuse.
-const ID_GENERATION_MASK: u32 = (1 << 20) - 1;
+/// The bits of an id's `revision` that count its slot's reuse.
+const ID_REVISION_MASK: u32 = (1 << 20) - 1;
 
 // Generated from the headers (bindings/generate/emit_rust.py); rustfmt leaves them as the generator writes them.
 #[rustfmt::skip]
@@ -76,16 +76,16 @@ mod tests {
     use super::*;
 
     #[test]
-    fn ids_debug_by_slot_and_generation() {
-        // As the library issues them: the kind of object in index1's top 4 bits, the world in generation's top 12.
-        let mesh = nl_mesh_id { index1: 1 << 28 | 4, generation: 5 << 20 | 1 };
-        assert_eq!(format!("{:?}", mesh), "MeshId { index: 3, generation: 1 }");
-        assert_eq!(format!("{:?}", nl_navmesh_id { index1: 1, generation: 2 }), "NavmeshId { index: 0, generation: 2 }");
-        assert_eq!(format!("{:?}", nl_link_id { index1: 3 << 28 | 12, generation: 7 }), "LinkId { index: 11, generation: 7 }");
-        assert_eq!(format!("{:?}", nl_path_ticket { index1: 2, generation: 1 }), "PathTicket { index: 1, generation: 1 }");
-        assert_eq!(format!("{:?}", nl_agent_id { index1: 6 << 28 | 1, generation: 1 }), "AgentId { index: 0, generation: 1 }");
-        assert_eq!(format!("{:?}", nl_plugin_id { index1: 9, generation: 3 }), "PluginId { index: 8, generation: 3 }");
-        assert_eq!(format!("{:#?}", nl_mesh_id { index1: 4, generation: 1 }), "MeshId {\n    index: 3,\n    generation: 1,\n}");
+    fn ids_debug_by_slot_and_revision() {
+        // As the library issues them: the kind of object in index1's top 4 bits, the world in revision's top 12.
+        let mesh = nl_mesh_id { index1: 1 << 28 | 4, revision: 5 << 20 | 1 };
+        assert_eq!(format!("{:?}", mesh), "MeshId { index: 3, revision: 1 }");
+        assert_eq!(format!("{:?}", nl_navmesh_id { index1: 1, revision: 2 }), "NavmeshId { index: 0, revision: 2 }");
+        assert_eq!(format!("{:?}", nl_link_id { index1: 3 << 28 | 12, revision: 7 }), "LinkId { index: 11, revision: 7 }");
+        assert_eq!(format!("{:?}", nl_path_ticket { index1: 2, revision: 1 }), "PathTicket { index: 1, revision: 1 }");
+        assert_eq!(format!("{:?}", nl_agent_id { index1: 6 << 28 | 1, revision: 1 }), "AgentId { index: 0, revision: 1 }");
+        assert_eq!(format!("{:?}", nl_plugin_id { index1: 9, revision: 3 }), "PluginId { index: 8, revision: 3 }");
+        assert_eq!(format!("{:#?}", nl_mesh_id { index1: 4, revision: 1 }), "MeshId {\n    index: 3,\n    revision: 1,\n}");
     }
 
     #[test]

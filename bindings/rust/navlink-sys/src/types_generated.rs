@@ -29,7 +29,7 @@ pub struct nl_mesh_id {
     /// Slot index + 1; 0 means null.
     pub index1: u32,
     /// Changes each time the slot is reused; never repeats.
-    pub generation: u32,
+    pub revision: u32,
 }
 id_debug!(nl_mesh_id, "MeshId");
 
@@ -38,7 +38,7 @@ id_debug!(nl_mesh_id, "MeshId");
 #[derive(Clone, Copy, Default, PartialEq, Eq, Hash)]
 pub struct nl_navmesh_id {
     pub index1: u32,
-    pub generation: u32,
+    pub revision: u32,
 }
 id_debug!(nl_navmesh_id, "NavmeshId");
 
@@ -47,7 +47,7 @@ id_debug!(nl_navmesh_id, "NavmeshId");
 #[derive(Clone, Copy, Default, PartialEq, Eq, Hash)]
 pub struct nl_link_id {
     pub index1: u32,
-    pub generation: u32,
+    pub revision: u32,
 }
 id_debug!(nl_link_id, "LinkId");
 
@@ -56,7 +56,7 @@ id_debug!(nl_link_id, "LinkId");
 #[derive(Clone, Copy, Default, PartialEq, Eq, Hash)]
 pub struct nl_path_ticket {
     pub index1: u32,
-    pub generation: u32,
+    pub revision: u32,
 }
 id_debug!(nl_path_ticket, "PathTicket");
 
@@ -65,7 +65,7 @@ id_debug!(nl_path_ticket, "PathTicket");
 #[derive(Clone, Copy, Default, PartialEq, Eq, Hash)]
 pub struct nl_agent_id {
     pub index1: u32,
-    pub generation: u32,
+    pub revision: u32,
 }
 id_debug!(nl_agent_id, "AgentId");
 
@@ -74,7 +74,7 @@ id_debug!(nl_agent_id, "AgentId");
 #[derive(Clone, Copy, Default, PartialEq, Eq, Hash)]
 pub struct nl_plugin_id {
     pub index1: u32,
-    pub generation: u32,
+    pub revision: u32,
 }
 id_debug!(nl_plugin_id, "PluginId");
 
@@ -335,7 +335,7 @@ pub struct nl_navmesh_def {
     /// triangle) are connected. Default 0.001; 0 welds exact duplicates only.
     pub weld_tolerance: f32,
     /// The agent type this navmesh was made for.
-    pub agent: nl_agent_type,
+    pub agent_type: nl_agent_type,
     /// x y z per detail vertex; borrowed.
     pub detail_vertices: *const f32,
     pub detail_vertex_count: u32,
@@ -347,9 +347,10 @@ pub struct nl_navmesh_def {
     /// of its polygon's corners (the same x and z) is that corner, at the corner's height; a polygon may have at most
     /// 239 detail vertices besides its corners, and 512 detail triangles.
     pub detail_triangle_starts: *const u32,
-    /// A movable mesh (NL_MESH_MOVABLE) the navmesh rides, or the null id. With one, every coordinate above is in that
-    /// mesh's own space, and the navmesh follows the mesh: nl_mesh_set_transform moves it (no rebuild). Added in 0.3.
-    pub surface: nl_mesh_id,
+    /// The navmesh's carrier: a movable mesh (NL_MESH_MOVABLE) it rides, or the null id. With one, every coordinate
+    /// above is in that mesh's own space, and the navmesh follows the mesh: nl_mesh_set_transform moves it (no
+    /// rebuild). Added in 0.3.
+    pub carrier: nl_mesh_id,
 }
 
 /// Sizes of a navmesh and what was repaired when it was added.
@@ -374,12 +375,12 @@ pub struct nl_navmesh_info {
     pub dropped_polygon_count: u32,
     /// Edges shared by three or more polygons (connect none).
     pub non_manifold_edge_count: u32,
-    pub agent: nl_agent_type,
+    pub agent_type: nl_agent_type,
     /// In the world; for a navmesh that rides a moving mesh, a box that holds it where the mesh is now.
     pub bounds_min: [f32; 3],
     pub bounds_max: [f32; 3],
     /// The movable mesh it rides; the null id for none. Added in 0.3.
-    pub surface: nl_mesh_id,
+    pub carrier: nl_mesh_id,
     /// Meshes nl_navmesh_build built it on that look wound clockwise: turned over, they would hold much more floor for
     /// its agent than as given (the build also logs a warning naming them and NL_MESH_CLOCKWISE; see nl_mesh_def's
     /// winding rule). 0 for a navmesh added from polygons or loaded from a file. Added in 0.3.
@@ -486,7 +487,7 @@ pub struct nl_navmesh_build_def {
     /// Name of a navmesh-builder plugin, NUL-terminated; NULL = "recast".
     pub builder: *const c_char,
     /// The agent type to build for.
-    pub agent: nl_agent_type,
+    pub agent_type: nl_agent_type,
     /// Optional builder-specific settings struct starting with `uint32_t size` (nl_recast_settings for "recast");
     /// borrowed.
     pub settings: *const c_void,
@@ -495,9 +496,9 @@ pub struct nl_navmesh_build_def {
     pub settings_json: *const c_char,
     pub settings_json_length: usize,
     /// A movable mesh to build on, or the null id. With one, the builder sees that mesh alone, in its own space, and
-    /// the navmesh rides it (as nl_navmesh_def.surface). Without one, it sees every static mesh (movable meshes are
+    /// the navmesh rides it (as nl_navmesh_def.carrier). Without one, it sees every static mesh (movable meshes are
     /// left out: a navmesh over one would stay behind when it moves). Added in 0.3.
-    pub surface: nl_mesh_id,
+    pub carrier: nl_mesh_id,
     /// Optional: told of the build's progress from its start (the builder reports its stages; Recast's rasterisation in
     /// steps), and can cancel it. Added in 0.3.
     pub progress: nl_progress_fn,
@@ -757,11 +758,11 @@ impl Default for nl_link_generation_report {
 pub struct nl_navmesh_load_def {
     /// sizeof(nl_navmesh_load_def).
     pub size: u32,
-    /// For a file whose navmesh rode a movable mesh (nl_navmesh_file_info.rides_surface): the movable mesh it rides
+    /// For a file whose navmesh rode a movable mesh (nl_navmesh_file_info.rides_carrier): the movable mesh it rides
     /// now. The null id otherwise.
-    pub surface: nl_mesh_id,
+    pub carrier: nl_mesh_id,
     /// NL_NAVMESH_LOAD_SAME_LEVEL: compare the hash of the level it was baked from with the world's (its static meshes,
-    /// or the surface mesh in its own space) and refuse a mismatch. 0: load it whatever the level.
+    /// or the carrier in its own space) and refuse a mismatch. 0: load it whatever the level.
     pub flags: u32,
 }
 
@@ -776,7 +777,7 @@ pub struct nl_navmesh_file_info {
     /// Bytes.
     pub file_size: u64,
     /// The body the navmesh was made for.
-    pub agent: nl_agent_type,
+    pub agent_type: nl_agent_type,
     pub vertex_count: u32,
     pub polygon_count: u32,
     /// 0: no height detail.
@@ -785,7 +786,7 @@ pub struct nl_navmesh_file_info {
     /// Of link_count, made by link generation.
     pub generated_link_count: u32,
     /// 1: its coordinates are in the space of a movable mesh it rode.
-    pub rides_surface: u32,
+    pub rides_carrier: u32,
     /// Metres per step of its fixed-point coordinates (1/1024).
     pub quantum: f32,
     pub reserved: u32,
@@ -851,7 +852,7 @@ pub struct nl_path_request_def {
     pub goal: [f32; 3],
     /// Start and goal snap to the navmesh within this box around them (default 2, 4, 2 m); each > 0.
     pub search_half_extents: [f32; 3],
-    pub agent: nl_agent_capabilities,
+    pub capabilities: nl_agent_capabilities,
     /// Optional, borrowed (copied): cost per metre walked in area i, for i < area_cost_count; other areas cost 1. Each
     /// finite and >= 0; NL_AREA_EXCLUDED (0) keeps the agent out.
     pub area_costs: *const f32,
@@ -897,7 +898,7 @@ pub struct nl_path_point {
     /// The point in its navmesh's own space: where it stays on a navmesh that rides a moving mesh (`position` and
     /// `apex` are in the world, at the mesh's pose when the path was planned). Equal to `position` on a navmesh that
     /// rides nothing. Added in 0.3.
-    pub surface_position: [f32; 3],
+    pub carrier_position: [f32; 3],
 }
 
 /// The header's inline initialiser (NL_DEFINE_OUTPUT_INIT; the library does not export it): a
@@ -1089,7 +1090,7 @@ impl Default for nl_path_queue_stats {
 pub struct nl_query_filter {
     /// sizeof(nl_query_filter).
     pub size: u32,
-    pub agent: nl_agent_capabilities,
+    pub capabilities: nl_agent_capabilities,
     /// Optional, borrowed during the call: as nl_path_request_def.
     pub area_costs: *const f32,
     /// At most 256.
@@ -1238,12 +1239,12 @@ pub struct nl_agent_info {
     /// The navmesh it stands on now (it changes when the agent takes a cross link; while in the air, the one it took
     /// off from). Added in 0.3.
     pub navmesh: nl_navmesh_id,
-    /// The movable mesh that navmesh rides (the agent rides it too), or the null id; also the null id while it flies a
-    /// cross link (in the world, not on a surface). Added in 0.3.
-    pub surface: nl_mesh_id,
-    /// `position` in that mesh's own space (equal to `position` on no surface, and in the air over a cross link): to
+    /// The movable mesh that navmesh rides, its carrier (the agent rides it too), or the null id; also the null id
+    /// while it flies a cross link (in the world, on no carrier). Added in 0.3.
+    pub carrier: nl_mesh_id,
+    /// `position` in the carrier's own space (equal to `position` on no carrier, and in the air over a cross link): to
     /// parent the body to the platform in the host's scene. Added in 0.3.
-    pub surface_position: [f32; 3],
+    pub carrier_position: [f32; 3],
     pub reserved2: u32,
 }
 
@@ -1406,7 +1407,7 @@ pub struct nl_plugin_host {
     pub set_error: Option<unsafe extern "C" fn(context: *mut c_void, message: *const c_char)>,
     /// Copies the world-space triangles of every registered mesh (under current transforms); called from a navmesh
     /// builder's build (on the thread that called it), the triangles that build is for instead: every static mesh in
-    /// world space, or with def->surface, that movable mesh alone in its own space. Vertex positions into `vertices`
+    /// world space, or with def->carrier, that movable mesh alone in its own space. Vertex positions into `vertices`
     /// (room for `vertex_capacity` vertices, 3 floats each) and 3 indices per triangle into `indices` (room for
     /// `triangle_capacity` triangles). The counts are always written; BUFFER_TOO_SMALL (nothing copied) when either
     /// buffer is short. The count-only call (capacities 0, buffers may be NULL) succeeds. Within one build every call

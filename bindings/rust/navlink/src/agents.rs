@@ -15,20 +15,20 @@ pub fn default_agent_def() -> AgentDef {
 
 /// Where an `AgentInfo` says the agent stands (navlink.h 0.3), as Rust values. The raw fields stay:
 /// `navmesh` (the navmesh it stands on now; it changes when the agent takes a cross link, and in the air
-/// it is the one it took off from; never null) and `surface_position` (`position` in the surface's own
-/// space, to parent the body to the platform; `position` itself on no surface and in the air over a
+/// it is the one it took off from; never null) and `carrier_position` (`position` in the carrier's own
+/// space, to parent the body to the platform; `position` itself on no carrier and in the air over a
 /// cross link).
 pub trait AgentInfoExt {
-    /// The movable mesh the agent's navmesh rides (`surface`), the agent with it; `None` for the null id.
-    fn surface_mesh(&self) -> Option<MeshId>;
+    /// The movable mesh the agent's navmesh rides (`carrier`), the agent with it; `None` for the null id.
+    fn carrier_mesh(&self) -> Option<MeshId>;
 }
 
 impl AgentInfoExt for AgentInfo {
-    fn surface_mesh(&self) -> Option<MeshId> {
-        if self.surface == MeshId::default() {
+    fn carrier_mesh(&self) -> Option<MeshId> {
+        if self.carrier == MeshId::default() {
             None
         } else {
-            Some(self.surface)
+            Some(self.carrier)
         }
     }
 }

@@ -54,14 +54,14 @@ impl BitOrAssign for BuildWarnings {
     }
 }
 
-/// How to build a navmesh from the registered meshes: every static one, or one movable mesh (`surface`);
+/// How to build a navmesh from the registered meshes: every static one, or one movable mesh (`carrier`);
 /// meshes flagged `NOT_IN_NAVMESH` are left out, `OBSTACLE` ones only block, and each mesh's area goes to
 /// the polygons over it. A level that looks wound clockwise, given in other units than metres or with z up
 /// (where its meshes did not say: `MeshOptions::metres_per_unit`, `up_axis`) still builds: the log says why
 /// in a warning, and `NavmeshInfo::build_warnings` has a bit for each.
 #[derive(Clone, Copy, Debug)]
 pub struct NavmeshBuild<'a> {
-    pub agent: AgentType,
+    pub agent_type: AgentType,
     /// The Recast builder's settings (`None`: its defaults).
     pub recast: Option<RecastSettings>,
     /// Settings as a JSON object, applied over `recast`.
@@ -70,12 +70,12 @@ pub struct NavmeshBuild<'a> {
     pub builder: Option<&'a str>,
     /// A movable mesh (`MeshFlags::MOVABLE`) to build on, alone and in its own space; the navmesh rides it.
     /// `None`: every static mesh (movable meshes are left out).
-    pub surface: Option<MeshId>,
+    pub carrier: Option<MeshId>,
 }
 
 impl<'a> NavmeshBuild<'a> {
-    pub fn new(agent: AgentType) -> Self {
-        NavmeshBuild { agent, recast: None, settings_json: None, builder: None, surface: None }
+    pub fn new(agent_type: AgentType) -> Self {
+        NavmeshBuild { agent_type, recast: None, settings_json: None, builder: None, carrier: None }
     }
 }
 
@@ -97,11 +97,11 @@ pub struct NavmeshInput<'a> {
     pub polygon_vertex_counts: Option<&'a [u8]>,
     pub areas: Option<&'a [u8]>,
     pub weld_tolerance: f32,
-    pub agent: AgentType,
+    pub agent_type: AgentType,
     pub detail: Option<NavmeshDetail<'a>>,
     /// A movable mesh (`MeshFlags::MOVABLE`) the navmesh rides: the coordinates above are then in that mesh's
     /// own space, and `set_mesh_transform` moves the navmesh with it. `None`: world space, fixed.
-    pub surface: Option<MeshId>,
+    pub carrier: Option<MeshId>,
 }
 
 impl<'a> NavmeshInput<'a> {
@@ -114,9 +114,9 @@ impl<'a> NavmeshInput<'a> {
             polygon_vertex_counts: None,
             areas: None,
             weld_tolerance: def.weld_tolerance,
-            agent: def.agent,
+            agent_type: def.agent_type,
             detail: None,
-            surface: None,
+            carrier: None,
         }
     }
 }
@@ -146,7 +146,7 @@ impl World {
     fn build_navmesh_reporting(&self, build: &NavmeshBuild<'_>, progress: Option<Progress<'_>>) -> Result<NavmeshId> {
         let builder = build.builder.map(|b| c_string(b.as_bytes(), "builder")).transpose()?;
         let mut def = unsafe { sys::nl_default_navmesh_build_def() };
-        def.agent = build.agent;
+        def.agent_type = build.agent_type;
         def.builder = builder.as_ref().map_or(ptr::null(), |b| b.as_ptr());
         let recast = build.recast.map(|r| r.to_c(unsafe { sys::nl_default_recast_settings() }));
         def.settings = recast.as_ref().map_or(ptr::null(), |r| r as *const sys::nl_recast_settings as *const c_void);
@@ -155,7 +155,7 @@ impl World {
             def.settings_json = if json.is_empty() { b"\0".as_ptr().cast() } else { json.as_ptr().cast() };
             def.settings_json_length = json.len();
         }
-        def.surface = build.surface.unwrap_or_default();
+        def.carrier = build.carrier.unwrap_or_default();
         let mut id = NavmeshId::default();
         with_progress(progress, |function, user| {
             def.progress = function;
@@ -175,7 +175,7 @@ impl World {
         def.polygon_count = input.polygon_vertex_counts.map_or(input.indices.len() / 3, |c| c.len()) as u32;
         def.areas = input.areas.map_or(ptr::null(), |a| a.as_ptr());
         def.weld_tolerance = input.weld_tolerance;
-        def.agent = input.agent;
+        def.agent_type = input.agent_type;
         if let Some(detail) = &input.detail {
             def.detail_vertices = detail.vertices.as_ptr();
             def.detail_vertex_count = (detail.vertices.len() / 3) as u32;
@@ -183,7 +183,7 @@ impl World {
             def.detail_triangle_count = (detail.triangles.len() / 3) as u32;
             def.detail_triangle_starts = detail.triangle_starts.as_ptr();
         }
-        def.surface = input.surface.unwrap_or_default();
+        def.carrier = input.carrier.unwrap_or_default();
         let mut id = NavmeshId::default();
         check(unsafe { sys::nl_navmesh_add(self.raw(), &def, &mut id) })?;
         Ok(id)

@@ -9,12 +9,12 @@ use std::os::raw::c_void;
 use std::path::Path;
 use std::ptr;
 
-/// How to load a navmesh file (`nl_navmesh_load_def`). `Default`: no surface, whatever the level.
+/// How to load a navmesh file (`nl_navmesh_load_def`). `Default`: no carrier, whatever the level.
 #[derive(Clone, Copy, Debug, Default)]
 pub struct NavmeshLoadOptions {
-    /// For a file whose navmesh rode a movable mesh (`NavmeshFileInfo::rides_surface`): the movable mesh
+    /// For a file whose navmesh rode a movable mesh (`NavmeshFileInfo::rides_carrier`): the movable mesh
     /// it rides now. `None` otherwise.
-    pub surface: Option<MeshId>,
+    pub carrier: Option<MeshId>,
     /// Refuse (`INVALID_ARGUMENT`) a file baked from other level geometry than the world holds now
     /// (`NAVMESH_LOAD_SAME_LEVEL`: the level hashes differ).
     pub same_level: bool,
@@ -24,7 +24,7 @@ impl NavmeshLoadOptions {
     /// The C def: the header's defaults (`nl_default_navmesh_load_def`) with these options.
     fn def(&self) -> sys::nl_navmesh_load_def {
         let mut def = unsafe { sys::nl_default_navmesh_load_def() };
-        def.surface = self.surface.unwrap_or_default();
+        def.carrier = self.carrier.unwrap_or_default();
         if self.same_level {
             def.flags |= sys::NL_NAVMESH_LOAD_SAME_LEVEL;
         }
@@ -39,9 +39,9 @@ mod tests {
     #[test]
     fn default_options_are_the_c_default_def() {
         assert_eq!(NavmeshLoadOptions::default().def(), unsafe { sys::nl_default_navmesh_load_def() });
-        let options = NavmeshLoadOptions { surface: Some(MeshId { index1: 3, generation: 1 }), same_level: true };
+        let options = NavmeshLoadOptions { carrier: Some(MeshId { index1: 3, revision: 1 }), same_level: true };
         let def = options.def();
-        assert_eq!((def.surface, def.flags), (MeshId { index1: 3, generation: 1 }, sys::NL_NAVMESH_LOAD_SAME_LEVEL));
+        assert_eq!((def.carrier, def.flags), (MeshId { index1: 3, revision: 1 }, sys::NL_NAVMESH_LOAD_SAME_LEVEL));
     }
 }
 
@@ -100,7 +100,7 @@ impl World {
 
     /// Adds the navmesh and its links held in a navmesh file's bytes (new ids). `VERSION_MISMATCH` (not a
     /// NavLink navmesh file, or a newer format), `PARSE_ERROR` (truncated or corrupted), `INVALID_ARGUMENT`
-    /// (a surface for a file that rode none or none for one that did; `same_level` and the level differs;
+    /// (a carrier for a file that rode none or none for one that did; `same_level` and the level differs;
     /// polygons or links that do not fit). Nothing is added on failure.
     pub fn load_navmesh(&self, data: &[u8], options: &NavmeshLoadOptions) -> Result<NavmeshId> {
         let def = options.def();

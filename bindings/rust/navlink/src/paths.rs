@@ -26,7 +26,7 @@ pub struct PathQuery {
     pub start: [f32; 3],
     pub goal: [f32; 3],
     pub search_half_extents: [f32; 3],
-    pub agent: AgentCapabilities,
+    pub capabilities: AgentCapabilities,
     /// Cost per metre in area i; empty: every area costs 1.
     pub area_costs: Vec<f32>,
     pub link_cost: f32,
@@ -35,14 +35,14 @@ pub struct PathQuery {
 }
 
 impl PathQuery {
-    pub fn new(navmesh: NavmeshId, start: [f32; 3], goal: [f32; 3], agent: AgentCapabilities) -> PathQuery {
+    pub fn new(navmesh: NavmeshId, start: [f32; 3], goal: [f32; 3], capabilities: AgentCapabilities) -> PathQuery {
         let def = unsafe { sys::nl_default_path_request_def() };
         PathQuery {
             navmesh,
             start,
             goal,
             search_half_extents: def.search_half_extents,
-            agent,
+            capabilities,
             area_costs: Vec::new(),
             link_cost: def.link_cost,
             max_nodes: def.max_nodes,
@@ -57,7 +57,7 @@ impl PathQuery {
         def.start = self.start;
         def.goal = self.goal;
         def.search_half_extents = self.search_half_extents;
-        def.agent = self.agent;
+        def.capabilities = self.capabilities;
         def.area_costs = if self.area_costs.is_empty() { ptr::null() } else { self.area_costs.as_ptr() };
         def.area_cost_count = self.area_costs.len() as u32;
         def.link_cost = self.link_cost;

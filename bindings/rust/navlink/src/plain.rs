@@ -41,7 +41,7 @@ impl IntoC<u8> for bool {
     }
 }
 
-/// A `uint32_t` yes/no field (`nl_navmesh_file_info::rides_surface`).
+/// A `uint32_t` yes/no field (`nl_navmesh_file_info::rides_carrier`).
 impl FromC<u32> for bool {
     fn from_c(c: u32) -> bool {
         c != 0

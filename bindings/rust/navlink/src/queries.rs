@@ -18,7 +18,7 @@ const FIRST_WALK_CAPACITY: usize = 32;
 /// `nl_default_query_filter()`: a default walker that keeps out of no area.
 #[derive(Clone, Debug, PartialEq)]
 pub struct QueryFilter {
-    pub agent: AgentCapabilities,
+    pub capabilities: AgentCapabilities,
     /// Cost per metre in area i (at most 256); empty: no area is excluded.
     pub area_costs: Vec<f32>,
 }
@@ -26,14 +26,14 @@ pub struct QueryFilter {
 impl Default for QueryFilter {
     fn default() -> Self {
         let c = unsafe { sys::nl_default_query_filter() };
-        QueryFilter { agent: c.agent, area_costs: Vec::new() }
+        QueryFilter { capabilities: c.capabilities, area_costs: Vec::new() }
     }
 }
 
 impl QueryFilter {
-    /// The body of `agent`, excluding no area.
-    pub fn new(agent: AgentCapabilities) -> Self {
-        QueryFilter { agent, area_costs: Vec::new() }
+    /// The body of `capabilities`, excluding no area.
+    pub fn new(capabilities: AgentCapabilities) -> Self {
+        QueryFilter { capabilities, area_costs: Vec::new() }
     }
 
     /// The same body with these area costs.
@@ -44,7 +44,7 @@ impl QueryFilter {
     /// The C struct; borrows `self.area_costs`.
     fn to_c(&self) -> sys::nl_query_filter {
         let mut c = unsafe { sys::nl_default_query_filter() };
-        c.agent = self.agent;
+        c.capabilities = self.capabilities;
         c.area_costs = if self.area_costs.is_empty() { ptr::null() } else { self.area_costs.as_ptr() };
         c.area_cost_count = self.area_costs.len() as u32;
         c

@@ -43,7 +43,7 @@ pub use navlink_sys::{
 plain_struct! {
     /// One point of a path (`nl_path_point`).
     pub struct PathPoint mirrors sys::nl_path_point, default sys::nl_path_point_init(), derives (PartialEq) {
-        /// In the world, at the surface's pose when the path was planned.
+        /// In the world, at the carrier's pose when the path was planned.
         position: [f32; 3],
         polygon: u32,
         /// How the path goes on from here: walking, or the link taken.
@@ -54,7 +54,7 @@ plain_struct! {
         /// The link is taken end to start.
         reversed: bool,
         /// `position` in the navmesh's own space (equal to it on a navmesh that rides nothing).
-        surface_position: [f32; 3],
+        carrier_position: [f32; 3],
     }
 }
 
@@ -121,7 +121,7 @@ plain_struct! {
         reason: AgentReason,
         link: LinkId,
         link_progress: f32,
-        /// In the world, where it is now (on a moving surface it moves with the surface).
+        /// In the world, where it is now (on a carrier it moves with the carrier).
         destination: [f32; 3],
         has_destination: bool,
         corners_ahead: u32,
@@ -129,10 +129,10 @@ plain_struct! {
         /// The navmesh it stands on now (it changes when the agent takes a cross link; in the air, the one
         /// it took off from).
         navmesh: NavmeshId,
-        /// The movable mesh that navmesh rides (the agent rides it too), or the null id.
-        surface: MeshId,
+        /// The movable mesh that navmesh rides, its carrier (the agent rides it too), or the null id.
+        carrier: MeshId,
         /// `position` in that mesh's own space.
-        surface_position: [f32; 3],
+        carrier_position: [f32; 3],
     }
 }
 
@@ -238,12 +238,12 @@ plain_struct! {
         flipped_polygon_count: u32,
         dropped_polygon_count: u32,
         non_manifold_edge_count: u32,
-        agent: AgentType,
+        agent_type: AgentType,
         /// In the world; for a navmesh that rides a moving mesh, a box that holds it where the mesh is now.
         bounds_min: [f32; 3],
         bounds_max: [f32; 3],
-        /// The movable mesh it rides; the null id for none.
-        surface: MeshId,
+        /// The movable mesh it rides (its carrier); the null id for none.
+        carrier: MeshId,
         /// Meshes `World::build_navmesh` built it on that look wound clockwise: turned over, they would hold
         /// much more floor for its agent than as given (the build also logs a warning naming them and
         /// `MeshFlags::CLOCKWISE`). 0 for a navmesh added from polygons or loaded from a file.
@@ -424,7 +424,7 @@ plain_struct! {
         /// Bytes.
         file_size: u64,
         /// The body the navmesh was made for.
-        agent: AgentType,
+        agent_type: AgentType,
         vertex_count: u32,
         polygon_count: u32,
         /// 0: no height detail.
@@ -433,8 +433,8 @@ plain_struct! {
         /// Of `link_count`, made by link generation.
         generated_link_count: u32,
         /// Its coordinates are in the space of a movable mesh it rode (load it with
-        /// `NavmeshLoadOptions::surface`).
-        rides_surface: bool,
+        /// `NavmeshLoadOptions::carrier`).
+        rides_carrier: bool,
         /// Metres per step of its fixed-point coordinates (1/1024).
         quantum: f32,
         /// Of the level triangles it was built from; 0: handed over by the host.
@@ -467,8 +467,8 @@ mod tests {
     fn link_round_trips_with_every_field() {
         let mut c = sys::nl_link_init();
         c.kind = sys::NL_LINK_FIRST_PLUGIN_KIND + 4;
-        c.id = LinkId { index1: 2, generation: 3 };
-        c.navmesh = NavmeshId { index1: 1, generation: 1 };
+        c.id = LinkId { index1: 2, revision: 3 };
+        c.navmesh = NavmeshId { index1: 1, revision: 1 };
         c.start = [1.0, 2.0, 3.0];
         c.end = [4.0, 5.0, 6.0];
         c.apex = [2.5, 7.0, 4.5];
@@ -480,7 +480,7 @@ mod tests {
         c.end_polygon = 8;
         c.user_data = 99;
         c.requirements = sys::nl_link_requirements { gap: 1.0, rise: 2.0, drop: 3.0, clearance_width: 0.5, abilities: 6, length: 4.0, reserved: 0 };
-        c.landing_navmesh = NavmeshId { index1: 5, generation: 2 };
+        c.landing_navmesh = NavmeshId { index1: 5, revision: 2 };
         c.tolerance = 0.3;
         c.holds = 1;
         let plain = Link::from(c);
@@ -495,7 +495,7 @@ mod tests {
         let mut hit = sys::nl_ray_hit_init();
         hit.distance = 2.0;
         hit.hit = 1;
-        hit.mesh = MeshId { index1: 1, generation: 4 };
+        hit.mesh = MeshId { index1: 1, revision: 4 };
         assert_eq!(RayHit::from(hit).to_c(sys::nl_ray_hit_init()), hit);
         assert!(RayHit::from(hit).hit);
 
@@ -510,10 +510,10 @@ mod tests {
         assert_eq!(plain.to_c(sys::nl_mesh_info_init()), info);
 
         let mut file = sys::nl_navmesh_file_info::default();
-        file.rides_surface = 1;
+        file.rides_carrier = 1;
         file.level_hash = 0xfeed;
         let plain = NavmeshFileInfo::from(file);
-        assert!(plain.rides_surface);
+        assert!(plain.rides_carrier);
         assert_eq!(plain.to_c(sys::nl_navmesh_file_info::default()), file);
 
         let point = sys::nl_nav_point { point: [1.0, 0.0, 2.0], distance: 0.5, polygon: 9, found: 1, beyond_box: 0, reserved: [0; 2] };

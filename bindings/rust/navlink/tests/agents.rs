@@ -2,7 +2,7 @@
 //! while a walker goes round by the bridge, as the states read in bulk and the step's events say; the
 //! trajectory of the jump mid-flight; bad input refused. And a ferry (tests/core/world/surface_tests.cpp's):
 //! walkers wait at a gangway for a shuttle, ride it across a chasm and get off on the far side, `AgentInfo`
-//! saying which navmesh and surface they stand on.
+//! saying which navmesh and carrier they stand on.
 mod common;
 
 use common::*;
@@ -230,17 +230,17 @@ fn a_ferry_carries_walkers_across_a_chasm() {
     add_box(&world, [16.0, -1.0, 0.0], [22.0, 0.0, 6.0]);
     let at_far = MeshOptions { flags: MeshFlags::MOVABLE, transform: Some(shuttle_at(FAR_DOCK)), ..Default::default() };
     let shuttle = add_box_with(&world, [-2.0, -0.5, -2.0], [2.0, 0.0, 2.0], &at_far);
-    let agent = AgentType { radius: 0.3, ..default_agent_type() };
+    let agent_type = AgentType { radius: 0.3, ..default_agent_type() };
     let ledges_input = NavmeshInput {
         polygon_vertex_counts: Some(&[4, 4]),
-        agent,
+        agent_type,
         ..NavmeshInput::triangles(&FERRY_LEDGES, &[0, 1, 2, 3, 4, 5, 6, 7])
     };
     let ledges = world.add_navmesh(&ledges_input).unwrap();
     let deck_input = NavmeshInput {
         polygon_vertex_counts: Some(&[4]),
-        agent,
-        surface: Some(shuttle),
+        agent_type,
+        carrier: Some(shuttle),
         ..NavmeshInput::triangles(&SHUTTLE_TOP, &[0, 1, 2, 3])
     };
     let deck = world.add_navmesh(&deck_input).unwrap();
@@ -269,8 +269,8 @@ fn a_ferry_carries_walkers_across_a_chasm() {
         })
         .collect();
     let first = world.agent_info(walkers[0]).unwrap();
-    assert_eq!((first.navmesh, first.surface_mesh(), first.surface), (ledges, None, MeshId::default()), "on the near ledge");
-    assert_eq!(first.surface_position, first.position);
+    assert_eq!((first.navmesh, first.carrier_mesh(), first.carrier), (ledges, None, MeshId::default()), "on the near ledge");
+    assert_eq!(first.carrier_position, first.position);
 
     let mut arrived: Vec<(AgentId, AgentInfo)> = Vec::new();
     let mut taken: Vec<(AgentId, LinkId)> = Vec::new();
@@ -302,27 +302,27 @@ fn a_ferry_carries_walkers_across_a_chasm() {
             assert!(info.navmesh == ledges || info.navmesh == deck, "{}", context);
             if [navlink::AgentState::Jumping, navlink::AgentState::Falling, navlink::AgentState::Traversing].contains(&info.state) {
                 // In the air over a cross link (both gangways are): flown in the world.
-                assert!(distance(info.surface_position, info.position) < 1e-3, "in the air: {}", context);
+                assert!(distance(info.carrier_position, info.position) < 1e-3, "in the air: {}", context);
             } else if info.navmesh == deck {
                 // On the deck: riding the shuttle, whose centre is at (x, 0, 3), unturned.
                 riding += 1;
-                assert_eq!(info.surface_mesh(), Some(shuttle), "on the deck: {}", context);
+                assert_eq!(info.carrier_mesh(), Some(shuttle), "on the deck: {}", context);
                 let mapped = [info.position[0] - x, info.position[1], info.position[2] - 3.0];
-                assert!(distance(info.surface_position, mapped) < 1e-3, "on the deck: {}", context);
+                assert!(distance(info.carrier_position, mapped) < 1e-3, "on the deck: {}", context);
             } else {
-                assert_eq!(info.surface_mesh(), None, "on a ledge: {}", context);
-                assert!(distance(info.surface_position, info.position) < 1e-3, "on a ledge: {}", context);
+                assert_eq!(info.carrier_mesh(), None, "on a ledge: {}", context);
+                assert!(distance(info.carrier_position, info.position) < 1e-3, "on a ledge: {}", context);
             }
         }
     }
 
     assert_eq!(arrived.len(), walkers.len(), "both arrived by t = {} s", t);
     assert!(waited > 0, "an agent waited at the gangway for the shuttle (WAITING, info.link)");
-    assert!(riding > 0, "an agent stood on the shuttle's deck (navmesh, surface, surface_position)");
+    assert!(riding > 0, "an agent stood on the shuttle's deck (navmesh, carrier, carrier_position)");
     for &walker in &walkers {
         assert!(taken.contains(&(walker, board)) && taken.contains(&(walker, leave)), "{:?} boarded and got off: {:?}", walker, taken);
         let (_, info) = arrived.iter().find(|(id, _)| *id == walker).expect("arrived");
-        assert_eq!((info.state, info.navmesh, info.surface_mesh()), (navlink::AgentState::Arrived, ledges, None), "{:?}", info);
+        assert_eq!((info.state, info.navmesh, info.carrier_mesh()), (navlink::AgentState::Arrived, ledges, None), "{:?}", info);
         // Two bodies share the goal: they stand round it.
         assert!(horizontal_distance(info.position, FERRY_GOAL) < 1.5, "{:?}", info.position);
     }

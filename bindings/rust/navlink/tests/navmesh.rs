@@ -20,7 +20,7 @@ fn navmesh_from_the_level() {
     let navmesh = world.build_navmesh(&build).unwrap();
     let info = world.navmesh_info(navmesh).unwrap();
     assert!(info.polygon_count >= 2 && info.boundary_edge_count >= 8, "{:?}", info);
-    assert!((info.agent.radius - 0.6).abs() < 1e-6);
+    assert!((info.agent_type.radius - 0.6).abs() < 1e-6);
     assert_eq!(info.turned_over_mesh_count, 0, "the level's fronts are wound counter-clockwise");
     assert_eq!(info.build_warnings, BuildWarnings::NONE, "the level is in metres with y up");
     // Three islands: the platforms (top y = 0) and the pit floor 20 m down, walkable but unreachable.
@@ -102,17 +102,17 @@ fn navmesh_on_a_moving_surface() {
     let world = World::new().unwrap();
     let movable = MeshOptions { flags: MeshFlags::MOVABLE, ..Default::default() };
     let raft = add_box_with(&world, [-4.0, -1.0, -2.0], [4.0, 0.0, 2.0], &movable);
-    let input = NavmeshInput { polygon_vertex_counts: Some(&[4]), surface: Some(raft), ..NavmeshInput::triangles(&RAFT_QUAD, &[0, 1, 2, 3]) };
+    let input = NavmeshInput { polygon_vertex_counts: Some(&[4]), carrier: Some(raft), ..NavmeshInput::triangles(&RAFT_QUAD, &[0, 1, 2, 3]) };
     let navmesh = world.add_navmesh(&input).unwrap();
     let info = world.navmesh_info(navmesh).unwrap();
-    assert_eq!((info.surface, info.polygon_count), (raft, 1));
+    assert_eq!((info.carrier, info.polygon_count), (raft, 1));
     let (on_raft, old_place) = ([10.0, 0.5, 3.0], [0.0, 0.5, 0.0]);
     let found = world.find_nearest(navmesh, &[old_place, on_raft], [0.5, 2.0, 0.5]).unwrap();
     assert_eq!((found[0].found, found[1].found), (true, false), "before the move: at the origin");
 
     world.set_mesh_transform(raft, &RAFT_MOVED).unwrap();
     let info = world.navmesh_info(navmesh).unwrap();
-    assert_eq!(info.surface, raft);
+    assert_eq!(info.carrier, raft);
     assert!(
         info.bounds_min[0] <= 8.4 + 1e-3 && info.bounds_max[0] >= 11.6 - 1e-3 && info.bounds_min[2] <= -3.6 + 1e-3
             && info.bounds_max[2] >= 3.6 - 1e-3,
@@ -132,18 +132,18 @@ fn navmesh_on_a_moving_surface() {
     assert!((path.summary.length - 6.0).abs() < 1e-4, "{} m", path.summary.length);
     let (first, last) = (path.points[0], *path.points.last().unwrap());
     assert_near(first.position, [10.0, 0.0, 3.0], "first position (world)");
-    assert_near(first.surface_position, [-3.0, 0.0, 0.0], "first surface_position (the mesh's space)");
+    assert_near(first.carrier_position, [-3.0, 0.0, 0.0], "first carrier_position (the mesh's space)");
     assert_near(last.position, [10.0, 0.0, -3.0], "last position (world)");
-    assert_near(last.surface_position, [3.0, 0.0, 0.0], "last surface_position (the mesh's space)");
+    assert_near(last.carrier_position, [3.0, 0.0, 0.0], "last carrier_position (the mesh's space)");
 
     // Only rigid moves for a mesh that carries a navmesh, and it cannot go while the navmesh rides it.
     assert_fails(world.set_mesh_transform(raft, &RAFT_SCALED), status::INVALID_ARGUMENT, "nl_mesh_set_transform");
     assert_eq!(world.mesh_info(raft).unwrap().transform, RAFT_MOVED, "a refused move moves nothing");
     assert_fails(world.remove_mesh(raft), status::INVALID_ARGUMENT, "nl_mesh_remove");
 
-    // Recast on the raft alone, in its space, riding it; without a surface a build sees static meshes only.
-    let built = world.build_navmesh(&NavmeshBuild { surface: Some(raft), ..NavmeshBuild::new(default_agent_type()) }).unwrap();
-    assert_eq!(world.navmesh_info(built).unwrap().surface, raft);
+    // Recast on the raft alone, in its space, riding it; without a carrier a build sees static meshes only.
+    let built = world.build_navmesh(&NavmeshBuild { carrier: Some(raft), ..NavmeshBuild::new(default_agent_type()) }).unwrap();
+    assert_eq!(world.navmesh_info(built).unwrap().carrier, raft);
     let found = world.find_nearest(built, &[on_raft, old_place], [0.5, 2.0, 0.5]).unwrap();
     assert_eq!((found[0].found, found[1].found), (true, false));
     assert_fails(world.build_navmesh(&NavmeshBuild::new(default_agent_type())), status::NOT_FOUND, "no triangles");
@@ -151,12 +151,12 @@ fn navmesh_on_a_moving_surface() {
     world.remove_navmesh(navmesh).unwrap();
     world.remove_mesh(raft).unwrap();
 
-    // A navmesh on no surface reports the null id, and its path points' surface_position is position.
+    // A navmesh on no carrier reports the null id, and its path points' carrier_position is position.
     let floor = [-5.0, 0.0, -5.0, 5.0, 0.0, -5.0, 5.0, 0.0, 5.0, -5.0, 0.0, 5.0];
     let ground = world.add_navmesh(&NavmeshInput::triangles(&floor, &[0, 2, 1, 0, 3, 2])).unwrap();
-    assert_eq!(world.navmesh_info(ground).unwrap().surface, MeshId::default());
+    assert_eq!(world.navmesh_info(ground).unwrap().carrier, MeshId::default());
     let stroll = world.find_path(&PathQuery::new(ground, [-4.0, 0.0, -4.0], [4.0, 0.0, 4.0], walker())).unwrap();
-    assert!(stroll.points.iter().all(|q| q.surface_position == q.position), "{:?}", stroll.points);
+    assert!(stroll.points.iter().all(|q| q.carrier_position == q.position), "{:?}", stroll.points);
 }
 
 /// A cross link onto a moving surface: a static 6 x 4 m ledge navmesh (x in [-6, 0], z in [-2, 2], y = 0) and,
@@ -182,7 +182,7 @@ fn cross_link_onto_a_moving_surface() {
     let ledge = world.add_navmesh(&quad(&LEDGE_QUAD)).unwrap();
     let movable = MeshOptions { flags: MeshFlags::MOVABLE, ..Default::default() };
     let deck_box = add_box_with(&world, [1.0, -1.0, -2.0], [5.0, 0.0, 2.0], &movable);
-    let deck = world.add_navmesh(&NavmeshInput { surface: Some(deck_box), ..quad(&DECK_QUAD) }).unwrap();
+    let deck = world.add_navmesh(&NavmeshInput { carrier: Some(deck_box), ..quad(&DECK_QUAD) }).unwrap();
     let defaults = default_link_def();
     assert_eq!(defaults.landing(), None, "a link within one navmesh by default");
     assert_eq!(defaults.tolerance, 0.25);
@@ -246,9 +246,9 @@ fn cross_links_generated_for_where_a_platform_stands() {
     add_box(&world, [0.0, -1.0, 0.0], [6.0, 0.0, 6.0]);
     let at_9 = MeshOptions { flags: MeshFlags::MOVABLE, transform: Some(platform_at(9.0)), ..Default::default() };
     let platform = add_box_with(&world, [-2.0, -0.5, -2.0], [2.0, 0.0, 2.0], &at_9);
-    let agent = AgentType { radius: 0.3, ..default_agent_type() };
-    let ledge = world.add_navmesh(&NavmeshInput { agent, ..quad(&LEDGE_TOP) }).unwrap();
-    let deck = world.add_navmesh(&NavmeshInput { agent, surface: Some(platform), ..quad(&PLATFORM_TOP) }).unwrap();
+    let agent_type = AgentType { radius: 0.3, ..default_agent_type() };
+    let ledge = world.add_navmesh(&NavmeshInput { agent_type, ..quad(&LEDGE_TOP) }).unwrap();
+    let deck = world.add_navmesh(&NavmeshInput { agent_type, carrier: Some(platform), ..quad(&PLATFORM_TOP) }).unwrap();
     let settings = LinkSettings { max_jump_gap: 2.0, ..default_link_settings() };
     let crossing = |navmesh: NavmeshId, landing: NavmeshId| -> Vec<Link> {
         world.links(navmesh).unwrap().into_iter().filter(|l| l.landing() == Some(landing)).collect()

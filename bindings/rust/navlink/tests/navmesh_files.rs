@@ -202,9 +202,9 @@ fn baked_navmesh_file() {
     assert!(info.version >= 1, "version {}", info.version);
     assert_eq!(info.polygon_count, polygons);
     assert_eq!((info.link_count, info.generated_link_count), (link_count, link_count - 1));
-    assert!((info.agent.radius - 0.6).abs() < 1e-6, "radius {}", info.agent.radius);
+    assert!((info.agent_type.radius - 0.6).abs() < 1e-6, "radius {}", info.agent_type.radius);
     assert_eq!(info.quantum, 1.0 / 1024.0);
-    assert!(!info.rides_surface);
+    assert!(!info.rides_carrier);
     let made_for = parse_json(&made_for).unwrap_or_else(|e| panic!("made-for JSON {}: {}", made_for, e));
     assert_eq!(made_for.get("builder"), Some(&Json::String("recast".into())));
     assert_eq!(made_for.get("level_hash"), Some(&Json::String(format!("{:016x}", info.level_hash))));

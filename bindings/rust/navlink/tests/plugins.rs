@@ -55,7 +55,7 @@ unsafe extern "C" fn build_roof(
         navmesh.indices = square.as_ptr();
         navmesh.polygon_vertex_counts = corners.as_ptr();
         navmesh.polygon_count = 1;
-        navmesh.agent = (*def).agent;
+        navmesh.agent_type = (*def).agent_type;
         if host.size as usize >= std::mem::size_of::<sys::nl_plugin_host>() {
             // A host that keeps what a build used.
             let s = (host.record_build_settings.expect("record_build_settings"))(host.context, USED.as_ptr() as *const c_char, USED.len());

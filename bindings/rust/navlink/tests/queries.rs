@@ -18,7 +18,7 @@ fn add_cell_row(world: &World, row: &str) -> NavmeshId {
     let counts = vec![4u8; columns.len()];
     let input = NavmeshInput {
         polygon_vertex_counts: Some(&counts),
-        agent: navlink::AgentType { radius: 0.0, ..default_agent_type() },
+        agent_type: navlink::AgentType { radius: 0.0, ..default_agent_type() },
         ..NavmeshInput::triangles(&vertices, &indices)
     };
     world.add_navmesh(&input).expect("the cells")
@@ -43,8 +43,8 @@ fn near(a: [f32; 3], b: [f32; 3]) -> bool {
 fn the_default_filter_is_the_headers() {
     let c = unsafe { sys::nl_default_query_filter() };
     assert_eq!(c.size as usize, std::mem::size_of::<sys::nl_query_filter>());
-    assert_eq!(default_query_filter(), QueryFilter { agent: default_agent_capabilities(), area_costs: vec![] });
-    assert_eq!(QueryFilter::default().agent, c.agent);
+    assert_eq!(default_query_filter(), QueryFilter { capabilities: default_agent_capabilities(), area_costs: vec![] });
+    assert_eq!(QueryFilter::default().capabilities, c.capabilities);
     let d = unsafe { sys::nl_default_random_points_def() };
     let options = RandomPointsOptions::default();
     assert_eq!((options.filter, options.radius, options.reachable_from, options.seed), (None, 0.0, None, 1));

@@ -131,7 +131,7 @@ namespace NavLink
         /// vertices per triangle) are connected. Default 0.001; 0 welds exact duplicates only.</summary>
         public float WeldTolerance;
         /// <summary>The agent type this navmesh was made for.</summary>
-        public AgentType Agent;
+        public AgentType AgentType;
         /// <summary>x y z per detail vertex; borrowed.</summary>
         public IntPtr DetailVertices;
         public uint DetailVertexCount;
@@ -143,10 +143,10 @@ namespace NavLink
         /// one of its polygon's corners (the same x and z) is that corner, at the corner's height; a polygon may have
         /// at most 239 detail vertices besides its corners, and 512 detail triangles.</summary>
         public IntPtr DetailTriangleStarts;
-        /// <summary>A movable mesh (NL_MESH_MOVABLE) the navmesh rides, or the null id. With one, every coordinate
-        /// above is in that mesh's own space, and the navmesh follows the mesh: nl_mesh_set_transform moves it (no
-        /// rebuild). Added in 0.3.</summary>
-        public MeshId Surface;
+        /// <summary>The navmesh's carrier: a movable mesh (NL_MESH_MOVABLE) it rides, or the null id. With one, every
+        /// coordinate above is in that mesh's own space, and the navmesh follows the mesh: nl_mesh_set_transform moves
+        /// it (no rebuild). Added in 0.3.</summary>
+        public MeshId Carrier;
     }
 
     /// <summary>How to build a navmesh. Get one from nl_default_navmesh_build_def(). (nl_navmesh_build_def)</summary>
@@ -158,7 +158,7 @@ namespace NavLink
         /// <summary>Name of a navmesh-builder plugin, NUL-terminated; NULL = "recast".</summary>
         public IntPtr Builder;
         /// <summary>The agent type to build for.</summary>
-        public AgentType Agent;
+        public AgentType AgentType;
         /// <summary>Optional builder-specific settings struct starting with <c>uint32_t size</c> (nl_recast_settings
         /// for "recast"); borrowed.</summary>
         public IntPtr Settings;
@@ -168,9 +168,9 @@ namespace NavLink
         public IntPtr SettingsJson;
         public UIntPtr SettingsJsonLength;
         /// <summary>A movable mesh to build on, or the null id. With one, the builder sees that mesh alone, in its own
-        /// space, and the navmesh rides it (as nl_navmesh_def.surface). Without one, it sees every static mesh (movable
+        /// space, and the navmesh rides it (as nl_navmesh_def.carrier). Without one, it sees every static mesh (movable
         /// meshes are left out: a navmesh over one would stay behind when it moves). Added in 0.3.</summary>
-        public MeshId Surface;
+        public MeshId Carrier;
         /// <summary>Optional: told of the build's progress from its start (the builder reports its stages; Recast's
         /// rasterisation in steps), and can cancel it. Added in 0.3. (NativeCallbacks.ProgressFn)</summary>
         public IntPtr Progress;
@@ -283,11 +283,11 @@ namespace NavLink
     {
         /// <summary>sizeof(nl_navmesh_load_def).</summary>
         public uint Size;
-        /// <summary>For a file whose navmesh rode a movable mesh (nl_navmesh_file_info.rides_surface): the movable mesh
+        /// <summary>For a file whose navmesh rode a movable mesh (nl_navmesh_file_info.rides_carrier): the movable mesh
         /// it rides now. The null id otherwise.</summary>
-        public MeshId Surface;
+        public MeshId Carrier;
         /// <summary>NL_NAVMESH_LOAD_SAME_LEVEL: compare the hash of the level it was baked from with the world's (its
-        /// static meshes, or the surface mesh in its own space) and refuse a mismatch. 0: load it whatever the
+        /// static meshes, or the carrier in its own space) and refuse a mismatch. 0: load it whatever the
         /// level.</summary>
         public NavmeshLoadFlags Flags;
     }
@@ -329,7 +329,7 @@ namespace NavLink
         /// <summary>Start and goal snap to the navmesh within this box around them (default 2, 4, 2 m); each &gt;
         /// 0.</summary>
         public Vec3 SearchHalfExtents;
-        public AgentCapabilities Agent;
+        public AgentCapabilities Capabilities;
         /// <summary>Optional, borrowed (copied): cost per metre walked in area i, for i &lt; area_cost_count; other
         /// areas cost 1. Each finite and &gt;= 0; NL_AREA_EXCLUDED (0) keeps the agent out.</summary>
         public IntPtr AreaCosts;
@@ -376,7 +376,7 @@ namespace NavLink
     {
         /// <summary>sizeof(nl_query_filter).</summary>
         public uint Size;
-        public AgentCapabilities Agent;
+        public AgentCapabilities Capabilities;
         /// <summary>Optional, borrowed during the call: as nl_path_request_def.</summary>
         public IntPtr AreaCosts;
         /// <summary>At most 256.</summary>

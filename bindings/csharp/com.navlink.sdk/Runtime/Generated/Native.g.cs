@@ -105,16 +105,16 @@ namespace NavLink
 
         /// <summary>Moves a mesh: <c>transform</c> (16 floats, column-major, affine, invertible; borrowed) replaces the
         /// mesh's transform. Cheap for NL_MESH_MOVABLE meshes; otherwise the vertices are re-uploaded. The navmeshes
-        /// that ride the mesh (nl_navmesh_def.surface) move with it when this returns: no rebuild and no new snapshot;
+        /// that ride the mesh (nl_navmesh_def.carrier) move with it when this returns: no rebuild and no new snapshot;
         /// their point location, paths and link ends answer in the world where the mesh is now, and agents on them ride
         /// along (docs/moving-surfaces.md). Such a mesh takes only rotations and translations. Returns SUCCESS, or
         /// INVALID_HANDLE, or INVALID_ARGUMENT (null, non-finite, non-affine, singular; not rigid for a mesh a navmesh
         /// rides; nothing moves). Thread-safe: meant to be called from the host's physics or game thread while path
         /// workers plan and nl_world_step runs elsewhere. A path planned meanwhile uses one pose throughout (the one of
-        /// the moment its search starts); an agent step reads each surface's pose when it reads the agent. The mesh's
+        /// the moment its search starts); an agent step reads each carrier's pose when it reads the agent. The mesh's
         /// own transform (nl_mesh_get_info, ray queries) changes a moment before its navmeshes' pose: another thread
         /// may read the new transform and agents placed at the old pose. To place a body on the platform, use
-        /// nl_agent_info.surface_position with the transform the host set. Waits for ray queries in flight on this
+        /// nl_agent_info.carrier_position with the transform the host set. Waits for ray queries in flight on this
         /// world to finish.</summary>
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         public static extern StatusCode nl_mesh_set_transform(IntPtr world, MeshId mesh, float* transform);
@@ -245,7 +245,7 @@ namespace NavLink
         public static extern NavmeshBuildDef nl_default_navmesh_build_def();
 
         /// <summary>Builds a navmesh from every static mesh registered in the world (under their current transforms;
-        /// or, with def-&gt;surface, from that movable mesh in its own space) but those flagged NL_MESH_NOT_IN_NAVMESH,
+        /// or, with def-&gt;carrier, from that movable mesh in its own space) but those flagged NL_MESH_NOT_IN_NAVMESH,
         /// walking on none of an NL_MESH_OBSTACLE mesh's triangles and giving each mesh's polygons its area, and adds
         /// it as nl_navmesh_add would. A mesh that looks wound clockwise (turned over, it would hold more than twice
         /// the floor for the agent) does not fail the build: it is named in a warning in the log and counted in
@@ -344,12 +344,12 @@ namespace NavLink
                                                                   LinkGenerationReport* outReport);
 
         /// <summary>Generates the jump and drop links between two navmeshes (a ledge and a platform; either may ride a
-        /// moving mesh, nl_navmesh_def.surface) for where they stand now, both ways, as cross links
+        /// moving mesh, nl_navmesh_def.carrier) for where they stand now, both ways, as cross links
         /// (nl_link_def.landing_navmesh) that hold while the two stay placed so, within <c>tolerance</c> metres (0.25
         /// is a good start). They replace the generated cross links between the two that hold now (made for this
         /// placement); those made for another placement (the platform's other stop) stay for when it is back, and each
         /// navmesh's own links stay. Only the polygons within a link's reach of the other navmesh are looked at, so a
-        /// platform's links cost what its neighbourhood does: call it when a surface comes to rest, or when its links
+        /// platform's links cost what its neighbourhood does: call it when a carrier comes to rest, or when its links
         /// stop holding, as often as suits the host (nothing calls it for you). Links are proven against the level as
         /// it stands (the platform where it is). Both navmeshes must be made for the same agent radius and height.
         /// <c>settings</c>, <c>progress</c>, <c>user</c> and <c>out_report</c> as for nl_navmesh_generate_links
@@ -430,7 +430,7 @@ namespace NavLink
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         public static extern StatusCode nl_navmesh_save_file(IntPtr world, NavmeshId navmesh, byte* path);
 
-        /// <summary>The null surface and no flags. Thread-safe; never fails.</summary>
+        /// <summary>The null carrier and no flags. Thread-safe; never fails.</summary>
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         public static extern NavmeshLoadDef nl_default_navmesh_load_def();
 
@@ -441,9 +441,9 @@ namespace NavLink
         /// multiple of what its bytes inflate to (deflate's limit: 1032 times <c>size</c>). Returns SUCCESS, or a
         /// failure with VERSION_MISMATCH (not a NavLink navmesh file, or a newer format version), PARSE_ERROR
         /// (truncated or corrupted: the section and what is wrong named), INVALID_ARGUMENT (null data with a size, null
-        /// out_id, bad def size or flags, a surface for a file that rode none or none for one that did,
+        /// out_id, bad def size or flags, a carrier for a file that rode none or none for one that did,
         /// NL_NAVMESH_LOAD_SAME_LEVEL and the level differs, polygons or links that do not fit, named as
-        /// "links[3].start"), INVALID_HANDLE (the surface), OUT_OF_MEMORY. Thread-safe.</summary>
+        /// "links[3].start"), INVALID_HANDLE (the carrier), OUT_OF_MEMORY. Thread-safe.</summary>
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         public static extern StatusCode nl_navmesh_load(IntPtr world, byte* data, UIntPtr size, NavmeshLoadDef* def,
                                                         NavmeshId* outId);

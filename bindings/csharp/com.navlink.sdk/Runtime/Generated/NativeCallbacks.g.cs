@@ -82,7 +82,7 @@ namespace NavLink
 
         /// <summary>Copies the world-space triangles of every registered mesh (under current transforms); called from a
         /// navmesh builder's build (on the thread that called it), the triangles that build is for instead: every
-        /// static mesh in world space, or with def-&gt;surface, that movable mesh alone in its own space. Vertex
+        /// static mesh in world space, or with def-&gt;carrier, that movable mesh alone in its own space. Vertex
         /// positions into <c>vertices</c> (room for <c>vertex_capacity</c> vertices, 3 floats each) and 3 indices per
         /// triangle into <c>indices</c> (room for <c>triangle_capacity</c> triangles). The counts are always written;
         /// BUFFER_TOO_SMALL (nothing copied) when either buffer is short. The count-only call (capacities 0, buffers

@@ -81,13 +81,13 @@ namespace NavLink
         public uint DroppedPolygonCount;
         /// <summary>Edges shared by three or more polygons (connect none).</summary>
         public uint NonManifoldEdgeCount;
-        public AgentType Agent;
+        public AgentType AgentType;
         /// <summary>In the world; for a navmesh that rides a moving mesh, a box that holds it where the mesh is
         /// now.</summary>
         public Vec3 BoundsMin;
         public Vec3 BoundsMax;
         /// <summary>The movable mesh it rides; the null id for none. Added in 0.3.</summary>
-        public MeshId Surface;
+        public MeshId Carrier;
         /// <summary>Meshes nl_navmesh_build built it on that look wound clockwise: turned over, they would hold much
         /// more floor for its agent than as given (the build also logs a warning naming them and NL_MESH_CLOCKWISE; see
         /// nl_mesh_def's winding rule). 0 for a navmesh added from polygons or loaded from a file. Added in
@@ -245,7 +245,7 @@ namespace NavLink
         /// <summary>The point in its navmesh's own space: where it stays on a navmesh that rides a moving mesh
         /// (<c>position</c> and <c>apex</c> are in the world, at the mesh's pose when the path was planned). Equal to
         /// <c>position</c> on a navmesh that rides nothing. Added in 0.3.</summary>
-        public Vec3 SurfacePosition;
+        public Vec3 CarrierPosition;
     }
 
     /// <summary>What a finished request found. (nl_path_result)</summary>
@@ -402,12 +402,12 @@ namespace NavLink
         /// <summary>The navmesh it stands on now (it changes when the agent takes a cross link; while in the air, the
         /// one it took off from). Added in 0.3.</summary>
         public NavmeshId Navmesh;
-        /// <summary>The movable mesh that navmesh rides (the agent rides it too), or the null id; also the null id
-        /// while it flies a cross link (in the world, not on a surface). Added in 0.3.</summary>
-        public MeshId Surface;
-        /// <summary><c>position</c> in that mesh's own space (equal to <c>position</c> on no surface, and in the air
+        /// <summary>The movable mesh that navmesh rides, its carrier (the agent rides it too), or the null id; also the
+        /// null id while it flies a cross link (in the world, on no carrier). Added in 0.3.</summary>
+        public MeshId Carrier;
+        /// <summary><c>position</c> in the carrier's own space (equal to <c>position</c> on no carrier, and in the air
         /// over a cross link): to parent the body to the platform in the host's scene. Added in 0.3.</summary>
-        public Vec3 SurfacePosition;
+        public Vec3 CarrierPosition;
         public uint Reserved2;
     }
 

@@ -106,7 +106,7 @@ namespace NavLink
         /// <summary>Bytes.</summary>
         public ulong FileSize;
         /// <summary>The body the navmesh was made for.</summary>
-        public AgentType Agent;
+        public AgentType AgentType;
         public uint VertexCount;
         public uint PolygonCount;
         /// <summary>0: no height detail.</summary>
@@ -115,7 +115,7 @@ namespace NavLink
         /// <summary>Of link_count, made by link generation.</summary>
         public uint GeneratedLinkCount;
         /// <summary>1: its coordinates are in the space of a movable mesh it rode.</summary>
-        public uint RidesSurface;
+        public uint RidesCarrier;
         /// <summary>Metres per step of its fixed-point coordinates (1/1024).</summary>
         public float Quantum;
         public uint Reserved;

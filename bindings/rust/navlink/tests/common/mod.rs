@@ -57,7 +57,7 @@ pub fn add_bridge_level(world: &World) -> NavmeshId {
     let counts: Vec<u8> = polygons.iter().map(|p| p.len() as u8).collect();
     let input = NavmeshInput {
         polygon_vertex_counts: Some(&counts),
-        agent: navlink::AgentType { radius: 0.3, ..default_agent_type() },
+        agent_type: navlink::AgentType { radius: 0.3, ..default_agent_type() },
         ..NavmeshInput::triangles(&vertices, &indices)
     };
     let navmesh = world.add_navmesh(&input).expect("the bridge navmesh");
