@@ -18,6 +18,7 @@ import emit_c  # noqa: E402
 import emit_csharp  # noqa: E402
 import emit_python  # noqa: E402
 import emit_rust  # noqa: E402
+import emit_rust_plain  # noqa: E402
 import header_model  # noqa: E402
 
 ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
@@ -29,7 +30,7 @@ def outputs(model):
     sources = [h + " (with its parts)" if h == "navlink/navlink.h" else h
                for h in header_model.CONSTANT_HEADERS + header_model.HEADERS]
     files = {}
-    for emitter in (emit_c, emit_python, emit_csharp, emit_rust):
+    for emitter in (emit_c, emit_python, emit_csharp, emit_rust, emit_rust_plain):
         files.update(emitter.outputs(model, sources))
     return files
 

@@ -3,7 +3,8 @@
 //! library never fails and never loses the value.
 use navlink_sys as sys;
 
-/// An enum over one of the header's `u32` kinds, with `from_raw` and `to_raw`.
+/// An enum over one of the header's `u32` kinds, with `from_raw` and `to_raw`, and the conversions a plain
+/// struct's field of it needs (plain.rs's `FromC`, `IntoC`).
 macro_rules! c_enum {
     ($(#[$meta:meta])* pub enum $name:ident { $($(#[$variant_meta:meta])* $variant:ident = $raw:path,)* }) => {
         $(#[$meta])*
@@ -28,6 +29,19 @@ macro_rules! c_enum {
                     $($name::$variant => $raw,)*
                     $name::Other(raw) => raw,
                 }
+            }
+        }
+
+        // A plain struct's field of this kind (plain.rs; the generated plain structs use any enum here).
+        impl crate::plain::FromC<u32> for $name {
+            fn from_c(c: u32) -> $name {
+                $name::from_raw(c)
+            }
+        }
+
+        impl crate::plain::IntoC<u32> for $name {
+            fn into_c(self) -> u32 {
+                self.to_raw()
             }
         }
     };

@@ -23,6 +23,9 @@ mod navmesh;
 mod navmesh_files;
 mod paths;
 mod plain;
+// Generated from the headers (bindings/generate/emit_rust_plain.py); rustfmt leaves it as the generator writes it.
+#[rustfmt::skip]
+mod plain_generated;
 mod plugins;
 mod queries;
 mod types;

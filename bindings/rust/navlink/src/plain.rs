@@ -2,8 +2,12 @@
 //! them, `u8` (and `uint32_t` yes/no) flags as `bool`, kinds as enums, flag words as `MeshFlags` or
 //! `BuildWarnings`, nested such structs as their plain structs. `From<c struct>` reads one; `to_c` writes
 //! one over a C value that already has its `size` (and the header's defaults for fields not mirrored).
+//!
+//! The `plain_struct!` invocations are generated from the headers (plain_generated.rs, by
+//! bindings/generate/emit_rust_plain.py, which says how each field's type is found); this file holds the
+//! macro and the conversions of a field's value: the enums' are in kinds.rs's `c_enum!`, the flag words'
+//! (`MeshFlags`, `BuildWarnings`: emit_rust_plain.py's FLAG_WORDS) and `Status`'s here.
 use crate::error::Status;
-use crate::kinds::{AgentEventKind, AgentReason, AgentState, LinkKind, PathOutcome, RecastPartition, TrajectoryKind, UpAxis};
 use crate::level::MeshFlags;
 use crate::navmesh::BuildWarnings;
 
@@ -89,22 +93,6 @@ impl IntoC<u32> for Status {
         self.0
     }
 }
-
-macro_rules! enum_field {
-    ($($enum:ty),*) => {$(
-        impl FromC<u32> for $enum {
-            fn from_c(c: u32) -> $enum {
-                <$enum>::from_raw(c)
-            }
-        }
-        impl IntoC<u32> for $enum {
-            fn into_c(self) -> u32 {
-                self.to_raw()
-            }
-        }
-    )*};
-}
-enum_field!(AgentEventKind, AgentReason, AgentState, LinkKind, PathOutcome, RecastPartition, TrajectoryKind, UpAxis);
 
 /// A plain struct mirroring some fields of a C struct, with `From<C>`, `to_c` and a `Default` taken
 /// from the C side's default value (`$default`). It is also a field type of other plain structs
