@@ -22,12 +22,12 @@ tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 
 "${NM:-nm}" -D --defined-only "$library" | awk '$3 ~ /^nl_/ { print $3 }' | sort -u > "$tmp/exported"
-grep -h '^NL_API' "$root"/capi/include/navlink/*.h "$root"/plugins/include/navlink/*.h |
+grep -h '^NL_API' "$root"/capi/include/navlink/*.h |
   sed -E 's/^[^(]*[ *](nl_[a-z0-9_]+)\(.*/\1/' | sort -u > "$tmp/declared"
 sort -u "$tmp/exported" "$tmp/declared" > "$tmp/public"
 
 # The inline initialisers the headers define (the macro's own #define line excluded).
-grep -h '^[[:space:]]*NL_DEFINE_OUTPUT_INIT(' "$root"/capi/include/navlink/*.h "$root"/plugins/include/navlink/*.h |
+grep -h '^[[:space:]]*NL_DEFINE_OUTPUT_INIT(' "$root"/capi/include/navlink/*.h |
   sed -E 's/^[[:space:]]*NL_DEFINE_OUTPUT_INIT\( *[a-z0-9_]+ *, *(nl_[a-z0-9_]+) *\).*/\1/' | sort -u > "$tmp/inline"
 
 # One name per line, as each binding declares its functions: bound ones in $binding, its own
@@ -52,7 +52,7 @@ grep -ho '^    "nl_[a-z0-9_]*": (' "$root"/bindings/python/_navlink_abi.py | sed
   sort -u > "$tmp/python.inline"
 
 # Object-like #define NL_* of the headers (version.h from its template), and navlink-sys's constants.
-cat "$root"/capi/include/navlink/*.h "$root"/capi/include/navlink/version.h.in "$root"/plugins/include/navlink/*.h |
+cat "$root"/capi/include/navlink/*.h "$root"/capi/include/navlink/version.h.in |
   sed -nE 's/^#[[:space:]]*define[[:space:]]+(NL_[A-Z0-9_]+)([[:space:]].*)?$/\1/p' | sort -u > "$tmp/defines"
 { grep -hoE '^pub const NL_[A-Z0-9_]+' "$root"/bindings/rust/navlink-sys/src/*.rs || true; } | awk '{ print $3 }' |
   sort -u > "$tmp/rust.constants"

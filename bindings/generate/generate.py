@@ -2,7 +2,7 @@
 """Writes the bindings' generated layers from NavLink's public headers (header_model.py reads them).
 
 Usage: generate.py -I DIR [-I DIR ...] [--check]
-  DIRs: capi/include, plugins/include, and a build's capi/include (the generated navlink/version.h).
+  DIRs: capi/include and a build's capi/include (the generated navlink/version.h).
   --check: write nothing; exit 1 naming every generated file that differs from what the headers give
            (the test suite's bindings_generated runs this).
 
@@ -59,7 +59,7 @@ def main():
             print("generate.py: wrote %s" % path)
     if stale:
         print("generate.py: these generated files are not what the headers give: %s\n"
-              "Run /usr/bin/python3 bindings/generate/generate.py -I capi/include -I plugins/include "
+              "Run /usr/bin/python3 bindings/generate/generate.py -I capi/include "
               "-I BUILD/capi/include, and commit the result." % ", ".join(stale))
         return 1
     return 0

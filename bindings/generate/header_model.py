@@ -177,7 +177,7 @@ def _parameter_tags(function, header, names):
 
 
 def read(include_dirs):
-    """The model of the headers found in `include_dirs` (capi/include, plugins/include, the build's
+    """The model of the headers found in `include_dirs` (capi/include, the build's
     capi/include for the generated version.h)."""
     headers = CONSTANT_HEADERS + expanded_headers(include_dirs, HEADERS)  # navlink.h's parts where it includes them
     paths = {_find(include_dirs, h): h for h in headers}

@@ -11,7 +11,7 @@ binding's layout test compares its own structs with. Output, one item per line:
                                           <size> is the `size` it sets, from calling it)
     const <name> <value>                 (each `#define NL_... <integer>`, value in decimal)
 
-Usage: c_layout.py -I DIR [-I DIR ...] [-o FILE]   (DIRs: capi/include, plugins/include and the build's
+Usage: c_layout.py -I DIR [-I DIR ...] [-o FILE]   (DIRs: capi/include and the build's
 capi/include with the generated navlink/version.h)
 """
 import argparse

@@ -113,7 +113,7 @@ def add_gap_level(world):
 
 
 def add_bridge_level(world):
-    """tests/abi/agents_test.c's level: two 4 x 10 m platforms (tops at y = 0) 2 m apart along x, x in [0, 4]
+    """tests/abi/agents_tests.c's level: two 4 x 10 m platforms (tops at y = 0) 2 m apart along x, x in [0, 4]
     and [6, 10], z in [0, 10], joined by a bridge at z 8-10; the host's navmesh is their tops set in 0.3 m
     from every rim (five convex polygons, for radius 0.3), its links generated. A walker goes round by the
     bridge; a jumper jumps the gap."""
@@ -637,7 +637,7 @@ def cell_body(jump):
 
 
 class QueryTest(NavLinkTestCase):
-    """navlink.h's "Queries on a navmesh for one body" (tests/abi/queries_test.c's cells): one row of 1 m cells,
+    """navlink.h's "Queries on a navmesh for one body" (tests/abi/queries_tests.c's cells): one row of 1 m cells,
     "..#..#..": polygons 0-1 (x in [0, 2]), 2-3 (x in [3, 5]) and 4-5 (x in [6, 8]), for radius 0; a one-way
     manual link from cell 1's centre to cell 3's (2 m: its gap). A jumper (3 m) takes it, a walker does not.
     And find_nearest's point beyond its box. The same checks as the C# and Rust tests."""
@@ -816,7 +816,7 @@ def polygon_at(world, navmesh, point):
 
 
 class MeshInputTest(NavLinkTestCase):
-    """What a navmesh build takes from the level (tests/abi/navmesh_build_test.c's winding, mesh_roles,
+    """What a navmesh build takes from the level (tests/abi/navmesh_build_tests.c's winding, mesh_roles,
     mesh_areas and build_progress, with their geometry), a mesh's units, and a build's progress and cancel."""
 
     def test_a_clockwise_floor_builds_only_with_the_clockwise_flag(self):

@@ -32,7 +32,7 @@ Name: NavLink
 Description: this build tree's library, as an installed one
 Version: 0.0.0
 Libs: -L\${libdir} -lnavlink
-Cflags: -I$root/capi/include -I$root/plugins/include -I$generated_include
+Cflags: -I$root/capi/include -I$generated_include
 PC
 # The consumer: its own workspace, the example as its program.
 cat > "$tmp/consumer/Cargo.toml" <<TOML

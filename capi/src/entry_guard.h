@@ -27,10 +27,10 @@ nl_status record(const char* function, const nl_world* world, nl_status status, 
 
 inline nl_status record_success() noexcept { return record(nullptr, nullptr, NL_STATUS_SUCCESS, ""); }
 
-template <typename Body>
-nl_status guarded(const char* function, const nl_world* world, Body&& body) noexcept {
+template <typename Call>
+nl_status guarded(const char* function, const nl_world* world, Call&& call) noexcept {
     try {
-        body();
+        call();
         return record_success();
     } catch (const Error& e) {
         return record(function, world, NL_STATUS_FAILURE | to_status(e.code()), e.what());

@@ -318,8 +318,8 @@ NL_API nl_status nl_navmesh_save_links_json(const nl_world* world, nl_navmesh_id
         require(out_length, "out_length");
         if (!buffer && capacity > 0) fail(ErrorCode::InvalidArgument, "buffer is null but capacity is ", capacity);
         const std::shared_ptr<const nl::NavMesh> mesh = w.navmeshes().navmesh(to_handle(navmesh));
-        const nl::MadeFor recorded = w.navmeshes().made_for(to_handle(navmesh));
-        const nl::LinksMadeFor made_for{mesh->agent(), recorded.links, recorded.level_hash};
+        const nl::NavMeshProvenance recorded = w.navmeshes().made_for(to_handle(navmesh));
+        const nl::LinksFileProvenance made_for{mesh->agent(), recorded.links, recorded.level_hash};
         const std::string json = nl::links_to_json(links_of(*snapshot), &made_for);
         *out_length = json.size();
         if (!buffer) return;

@@ -107,7 +107,7 @@ void navmesh_get_info(const World& world, nl_navmesh_id navmesh, nl_navmesh_info
     copy_point(info.bounds_min, bounds.min);
     copy_point(info.bounds_max, bounds.max);
     if (frame) info.carrier = to_id<nl_mesh_id>(frame->mesh());
-    const nl::MadeFor made_for = world.navmeshes().made_for(to_handle(navmesh));
+    const nl::NavMeshProvenance made_for = world.navmeshes().made_for(to_handle(navmesh));
     info.turned_over_mesh_count = static_cast<uint32_t>(made_for.turned_over_meshes.size());
     info.build_warnings = made_for.warnings;
     write_growable(out_info, info, nl::capi::kFirstSize<nl_navmesh_info>, "out_info");

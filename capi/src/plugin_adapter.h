@@ -1,4 +1,4 @@
-// C plugins (plugins/include/navlink/plugin.h) as the core's plugin interfaces (sdk/world/plugin.h):
+// C plugins (capi/include/navlink/plugin.h) as the core's plugin interfaces (sdk/world/plugin.h):
 // an adapter per plugin negotiates with its entry function, hands it a function table over the core
 // world (plugin_host.cpp), and turns its builder and link-kind functions into NavMeshBuilder and
 // LinkKindProvider.

@@ -16,10 +16,10 @@ static_assert(NL_BUILD_AREA_OBSTACLE == kObstacleArea, "plugin header and core d
 thread_local std::string plugin_error;
 
 // Runs a query for a plugin: its status, never an exception.
-template <typename Body>
-nl_status for_plugin(void* context, const char* query, Body&& body) noexcept {
+template <typename Call>
+nl_status for_plugin(void* context, const char* query, Call&& call) noexcept {
     try {
-        body();
+        call();
         return NL_STATUS_SUCCESS;
     } catch (const Error& e) {
         try {

@@ -27,7 +27,7 @@ namespace {
 
 static_assert(NL_NO_ISLAND == nl::ReachabilityMap::kNoIsland, "header and core disagree");
 
-struct Body {
+struct Filter {
     nl::AgentCapabilities capabilities;
     std::vector<float> area_costs;
     std::array<uint64_t, 4> excluded;
@@ -39,14 +39,14 @@ struct Body {
 };
 
 // `name` is the filter's argument name ("filter", "def->filter").
-Body read_filter(const nl_query_filter* given, const std::string& name) {
+Filter read_filter(const nl_query_filter* given, const std::string& name) {
     if (!given) {  // the default walker: nothing to check
-        static const Body defaults{nl::capi::read_capabilities(nl_default_agent_capabilities(), ""), {}, {}};
+        static const Filter defaults{nl::capi::read_capabilities(nl_default_agent_capabilities(), ""), {}, {}};
         return defaults;
     }
     const nl_query_filter filter = nl::capi::read_growable(*given, nl_default_query_filter(), nl::capi::kFirstSize<nl_query_filter>, name.c_str());
     const std::string prefix = name + "->";
-    Body body;
+    Filter body;
     body.capabilities = nl::capi::read_capabilities(filter.capabilities, prefix.c_str());
     body.area_costs = nl::capi::read_area_costs(filter.area_costs, filter.area_cost_count, prefix.c_str());
     body.excluded = nl::ReachabilityClass::excluded_areas_of(body.area_costs);
@@ -57,7 +57,7 @@ Body read_filter(const nl_query_filter* given, const std::string& name) {
 std::shared_ptr<const nl::PathGraph> graph_of(const nl::World& world, nl_navmesh_id navmesh) {
     return world.navmeshes().path_graph(to_handle(navmesh));
 }
-std::shared_ptr<const nl::ReachabilityMap> map_of(const nl::PathGraph& graph, const Body& body) {
+std::shared_ptr<const nl::ReachabilityMap> map_of(const nl::PathGraph& graph, const Filter& body) {
     return graph.reachability(body.capabilities, body.area_costs);
 }
 
@@ -124,7 +124,7 @@ NL_API nl_status nl_navmesh_can_reach(const nl_world* world, nl_navmesh_id navme
                                       uint8_t* out_reachable) {
     return guarded("nl_navmesh_can_reach", world, [&] {
         const nl::World& w = deref(world);
-        const Body body = read_filter(filter, "filter");
+        const Filter body = read_filter(filter, "filter");
         const auto graph = graph_of(w, navmesh);
         const uint32_t polygons = graph->navmesh().polygon_count();
         if (count == 0) return;
@@ -147,7 +147,7 @@ NL_API nl_status nl_navmesh_get_reachable_polygons(const nl_world* world, nl_nav
                                                    uint32_t* out_polygons, uint32_t capacity, uint32_t* out_count) {
     return guarded("nl_navmesh_get_reachable_polygons", world, [&] {
         const nl::World& w = deref(world);
-        const Body body = read_filter(filter, "filter");
+        const Filter body = read_filter(filter, "filter");
         const auto graph = graph_of(w, navmesh);
         check_polygon(graph->navmesh(), from_polygon, "from_polygon");
         std::vector<uint32_t> reached;
@@ -161,7 +161,7 @@ NL_API nl_status nl_navmesh_get_islands(const nl_world* world, nl_navmesh_id nav
                                         uint32_t* out_island_count) {
     return guarded("nl_navmesh_get_islands", world, [&] {
         const nl::World& w = deref(world);
-        const Body body = read_filter(filter, "filter");
+        const Filter body = read_filter(filter, "filter");
         const auto graph = graph_of(w, navmesh);
         const auto map = map_of(*graph, body);
         const uint32_t polygons = graph->navmesh().polygon_count();
@@ -177,7 +177,7 @@ NL_API nl_status nl_navmesh_raycast(const nl_world* world, nl_navmesh_id navmesh
                                     uint32_t* out_polygons, uint32_t polygons_per_ray) {
     return guarded("nl_navmesh_raycast", world, [&] {
         const nl::World& w = deref(world);
-        const Body body = read_filter(filter, "filter");
+        const Filter body = read_filter(filter, "filter");
         const nl::NavMeshRegistry::Placed placed = w.navmeshes().placed(to_handle(navmesh));
         const nl::NavMesh& mesh = *placed.navmesh;
         const nl::CarrierPose pose = nl::pose_of(placed.frame);
@@ -229,7 +229,7 @@ NL_API nl_status nl_navmesh_move_along_surface(const nl_world* world, nl_navmesh
                                                uint32_t* out_polygons, uint32_t capacity, uint32_t* out_count) {
     return guarded("nl_navmesh_move_along_surface", world, [&] {
         const nl::World& w = deref(world);
-        const Body body = read_filter(filter, "filter");
+        const Filter body = read_filter(filter, "filter");
         const nl::NavMeshRegistry::Placed placed = w.navmeshes().placed(to_handle(navmesh));
         const nl::NavMesh* mesh = placed.navmesh.get();
         const nl::CarrierPose pose = nl::pose_of(placed.frame);
@@ -259,7 +259,7 @@ NL_API nl_status nl_navmesh_random_points(const nl_world* world, nl_navmesh_id n
         const nl::World& w = deref(world);
         require(def, "def");
         const nl_random_points_def d = nl::capi::read_growable(*def, nl_default_random_points_def(), nl::capi::kFirstSize<nl_random_points_def>, "def");
-        const Body body = read_filter(d.filter, "def->filter");
+        const Filter body = read_filter(d.filter, "def->filter");
         const auto graph = graph_of(w, navmesh);
         const nl::NavMesh* mesh = &graph->navmesh();
         const nl::CarrierPose pose = nl::pose_of(graph->frame());  // the graph's own navmesh and frame

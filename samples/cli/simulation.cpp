@@ -4,7 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "agent_reads.h"
+#include "world_agents.h"
 #include "palette.h"
 #include "sample_error.h"
 

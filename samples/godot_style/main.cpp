@@ -5,7 +5,7 @@
 #include <cstdio>
 #include <string>
 
-#include "agent_reads.h"
+#include "world_agents.h"
 #include "arguments.h"
 #include "demo_scene.h"
 #include "path_plan.h"

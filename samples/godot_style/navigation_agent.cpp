@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "agent_reads.h"
+#include "world_agents.h"
 #include "navigation_region.h"
 #include "sample_error.h"
 #include "scene_tree.h"

@@ -1,6 +1,6 @@
 #include "navigation_server.h"
 
-#include "agent_reads.h"
+#include "world_agents.h"
 #include "navigation_agent.h"
 #include "sample_error.h"
 

@@ -4,7 +4,7 @@
 #include <set>
 #include <vector>
 
-#include "agent_reads.h"
+#include "world_agents.h"
 #include "png_export.h"
 #include "sample_error.h"
 

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "agent_reads.h"
+#include "world_agents.h"
 #include "link_shape.h"
 #include "palette.h"
 #include "sample_error.h"

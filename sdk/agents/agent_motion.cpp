@@ -73,7 +73,7 @@ size_t nearest_neighbours(uint32_t self, const CrowdSnapshot& crowd, float range
     return crowd.grid.nearest(crowd.positions[self], range, self, out.data(), out.size());
 }
 
-void fly(AgentBody& a, float dt) {
+void fly(Agent& a, float dt) {
     a.motion_time += dt;
     a.position = a.motion->at(a.motion_time, &a.velocity);
     if (a.motion_time < a.motion->duration()) return;
@@ -98,7 +98,7 @@ void fly(AgentBody& a, float dt) {
 // symmetric: two bodies on one line choose mirror velocities and meet again.)
 constexpr float kOncomingRange = 4.0f;  // m
 constexpr float kKeepRight = 0.5f;      // rad
-Vec3 keep_right(const AgentBody& a, const Vec3& desired, const CrowdSnapshot& crowd, const uint32_t* near, size_t count) {
+Vec3 keep_right(const Agent& a, const Vec3& desired, const CrowdSnapshot& crowd, const uint32_t* near, size_t count) {
     const float speed = desired.norm();
     if (speed <= 0.0f) return desired;
     const Vec3 forward = desired / speed;
@@ -130,7 +130,7 @@ Vec3 keep_right(const AgentBody& a, const Vec3& desired, const CrowdSnapshot& cr
 // slid past; one our way that stands (stuck) is walked round. Returns whether it touched a body it walks into (`desired` changed), else leaves it.
 constexpr float kSlideSpeed = 0.5f;  // of its desired speed: head-on, the sidestep to the right
 constexpr float kMovesOn = 0.1f;     // of its desired speed: a body our way this fast along it is followed
-bool slide_past(const AgentBody& a, Vec3& desired, const CrowdSnapshot& crowd, const uint32_t* near, size_t count) {
+bool slide_past(const Agent& a, Vec3& desired, const CrowdSnapshot& crowd, const uint32_t* near, size_t count) {
     const float speed = desired.norm();
     if (speed <= 0.0f) return false;
     const float radius = a.def.capabilities.radius;
@@ -183,7 +183,7 @@ bool shares_goal(uint32_t i, uint32_t j, const CrowdSnapshot& crowd) {
 // point: k bodies cannot all stand on it, but they fit in a circle of sqrt((k - 1) / kPacking) radii
 // around it (two: one radius each side). Within that circle, a body that touches one that is as near
 // to the point or nearer, and was sent there too or has arrived, has come as near as it can.
-bool arrived_among_others(const AgentBody& a, uint32_t self, const Vec3& goal, float distance, const CrowdSnapshot& crowd) {
+bool arrived_among_others(const Agent& a, uint32_t self, const Vec3& goal, float distance, const CrowdSnapshot& crowd) {
     const uint16_t sharing = crowd.sharing_goal[self];
     if (sharing < 2) return false;
     const float radius = a.def.capabilities.radius;
@@ -202,11 +202,11 @@ bool arrived_among_others(const AgentBody& a, uint32_t self, const Vec3& goal, f
 }
 
 // Slows down to stop `distance` ahead: the speed from which max_acceleration stops in that distance.
-float braking_speed(const AgentBody& a, float distance) {
+float braking_speed(const Agent& a, float distance) {
     return std::sqrt(2.0f * std::max(a.def.max_acceleration, 0.01f) * std::max(distance, 0.0f));
 }
 
-void decelerate(AgentBody& a, float dt) {
+void decelerate(Agent& a, float dt) {
     const float speed = a.velocity.norm();
     const float slower = std::max(0.0f, speed - a.def.max_acceleration * dt);
     a.velocity = speed > 0.0f ? Vec3(a.velocity * (slower / speed)) : Vec3(Vec3::Zero());
@@ -218,7 +218,7 @@ void decelerate(AgentBody& a, float dt) {
 // counterflow in 220 s; stepping back to the right, as keeping right passes, clears the door's lane
 // (all 100 by 173 s; 0.35-0.5 rad did alike, 0.65 let 90 through).
 constexpr float kStepAside = 0.4f;  // rad
-void back_off(AgentBody& a, float dt, const NavMesh& navmesh) {
+void back_off(Agent& a, float dt, const NavMesh& navmesh) {
     const Vec3& target = a.path[a.next].position;
     const Vec3 back(a.position.x() - target.x(), 0.0f, a.position.z() - target.z());
     const Vec3 right(back.z(), 0.0f, -back.x());  // its right, facing the target
@@ -241,7 +241,7 @@ SurfaceMove move_keeping_height(const NavMesh& navmesh, uint32_t polygon, const 
 
 // The feet's height over (x, z) of the surface point `on_surface`: the surface's, eased from the
 // landing's floor over the first kHeightEase walked, and toward the take-off's floor over the last.
-float eased_height(const AgentBody& a, const Vec3& on_surface, const PathPoint& target, float distance) {
+float eased_height(const Agent& a, const Vec3& on_surface, const PathPoint& target, float distance) {
     float y = on_surface.y();
     if (a.walked_since_landing < kHeightEase) y += a.landing_offset * (1.0f - a.walked_since_landing / kHeightEase);
     if (target.segment != kSegmentWalk && distance < kHeightEase + kStopReach) {
@@ -251,7 +251,7 @@ float eased_height(const AgentBody& a, const Vec3& on_surface, const PathPoint& 
     return y;
 }
 
-void move_agent(AgentBody& a, uint32_t self, float dt, const NavMesh& navmesh, const CrowdSnapshot& crowd) {
+void move_agent(Agent& a, uint32_t self, float dt, const NavMesh& navmesh, const CrowdSnapshot& crowd) {
     if (a.motion) {
         fly(a, dt);
         // Landed on the floor: how far that is from the surface it walks on now (one that landed on

@@ -14,7 +14,7 @@ namespace nl {
 
 // Moves agent `self` (its index in the snapshot) by dt on `navmesh` (its own). May mark it off its
 // path or at a take-off (the serial phase acts on those); never changes another agent.
-void move_agent(AgentBody& agent, uint32_t self, float dt, const NavMesh& navmesh, const CrowdSnapshot& crowd);
+void move_agent(Agent& agent, uint32_t self, float dt, const NavMesh& navmesh, const CrowdSnapshot& crowd);
 
 // A body moved over the surface from `from` (on `polygon`) toward `to` by something other than its
 // walk (a push, a step back): its feet keep their height over the surface (eased near a take-off or a

@@ -17,7 +17,7 @@ namespace nl {
 // Every point and vector of a body is in its navmesh's own space: on a navmesh that rides a moving
 // mesh the body rides with it (no drift: its world position is the mesh's pose applied to it, never
 // integrated), and its destination and path stay where they were set on the surface.
-struct AgentBody {
+struct Agent {
     AgentDef def;
     std::shared_ptr<const CarrierFrame> frame;  // its navmesh's; null on a navmesh that rides nothing
     AgentState state = AgentState::Idle;

@@ -42,12 +42,12 @@ void check_point(const Vec3& p, const char* field) {
 Agents::Agents(uint32_t handle_tag, AgentsSettings settings) : settings_(settings), ids_(handle_tag, HandleKind::Agent) {}
 Agents::~Agents() = default;
 
-AgentBody& Agents::find(Handle agent) {
+Agent& Agents::find(Handle agent) {
     uint32_t* index = ids_.find(agent);
     if (!index) fail_stale("agent", agent);
     return agents_[*index];
 }
-const AgentBody& Agents::find(Handle agent) const { return const_cast<Agents*>(this)->find(agent); }
+const Agent& Agents::find(Handle agent) const { return const_cast<Agents*>(this)->find(agent); }
 
 uint32_t Agents::locate(const NavMesh& navmesh, const CarrierPose& pose, const Vec3& world_point, float radius,
                         const char* field, Vec3& on_navmesh) const {
@@ -72,7 +72,7 @@ std::shared_ptr<const NavMesh> Agents::navmesh_of(const NavMeshRegistry& navmesh
     Handle navmesh;
     {
         std::shared_lock lock(mutex_);
-        const AgentBody& a = find(agent);
+        const Agent& a = find(agent);
         navmesh = a.def.navmesh;
         radius = a.def.capabilities.radius;
         pose = pose_of(a.frame);
@@ -131,7 +131,7 @@ Handle Agents::add(const NavMeshRegistry& navmeshes, const AgentDef& def) {
     check_amount(def.give_up_seconds, "give_up_seconds");
     check_point(def.position, "position");
     const std::shared_ptr<const NavMesh> navmesh = navmeshes.navmesh(def.navmesh);
-    AgentBody body;
+    Agent body;
     body.def = def;
     body.frame = navmeshes.frame(def.navmesh);
     body.polygon = locate(*navmesh, pose_of(body.frame), def.position, def.capabilities.radius, "position", body.position);
@@ -184,7 +184,7 @@ void Agents::set_destination(const NavMeshRegistry& navmeshes, Handle agent, con
         if (!locate_across(navmeshes, own, destination, radius, on_navmesh, there, there_frame)) throw;
     }
     std::unique_lock lock(mutex_);
-    AgentBody& a = find(agent);
+    Agent& a = find(agent);
     stop_giving_way(a);  // sent, stopped or put elsewhere: whatever held it up is behind it
     a.has_destination = true;
     a.destination = on_navmesh;
@@ -204,7 +204,7 @@ void Agents::set_destination(const NavMeshRegistry& navmeshes, Handle agent, con
 
 void Agents::stop(Handle agent) {
     std::unique_lock lock(mutex_);
-    AgentBody& a = find(agent);
+    Agent& a = find(agent);
     stop_giving_way(a);  // sent, stopped or put elsewhere: whatever held it up is behind it
     a.has_destination = false;
     a.wants_path = false;
@@ -229,7 +229,7 @@ void Agents::teleport(const NavMeshRegistry& navmeshes, Handle agent, const Vec3
     Vec3 on_navmesh;
     const uint32_t polygon = locate(*mesh, pose, position, radius, field, on_navmesh);
     std::unique_lock lock(mutex_);
-    AgentBody& a = find(agent);
+    Agent& a = find(agent);
     if (a.motion) fail(ErrorCode::InvalidArgument, "the agent is taking a link (teleport it after it lands)");
     stop_giving_way(a);  // sent, stopped or put elsewhere: whatever held it up is behind it
     a.put_on_surface(on_navmesh);
@@ -247,7 +247,7 @@ void Agents::teleport(const NavMeshRegistry& navmeshes, Handle agent, const Vec3
 void Agents::set_capabilities(Handle agent, const AgentCapabilities& capabilities) {
     check_capabilities(capabilities);
     std::unique_lock lock(mutex_);
-    AgentBody& a = find(agent);
+    Agent& a = find(agent);
     a.def.capabilities = capabilities;
     // A body that could not reach its destination may now (one whose navmesh was removed may not).
     const bool stranded = a.state == AgentState::Failed && a.reason == AgentReason::NavMeshRemoved;
@@ -261,7 +261,7 @@ void Agents::set_speed(Handle agent, float max_speed, float max_acceleration) {
     check_positive(max_speed, "max_speed");
     check_positive(max_acceleration, "max_acceleration");
     std::unique_lock lock(mutex_);
-    AgentBody& a = find(agent);
+    Agent& a = find(agent);
     a.def.max_speed = max_speed;
     a.def.max_acceleration = max_acceleration;
 }
@@ -275,14 +275,14 @@ namespace {
 
 // The path points the agent has yet to reach: in the air `next` is still the take-off point (it
 // moves on at the landing); arrived (perhaps beside its goal, among others), none.
-size_t points_ahead(const AgentBody& a) {
+size_t points_ahead(const Agent& a) {
     if (a.next >= a.path.size() || a.state == AgentState::Arrived) return 0;
     return a.path.size() - a.next - (a.motion ? 1 : 0);
 }
 
 // What a host reads, in the world: on a moving surface, at the carrier's pose of this moment (the
 // velocity is the body's own, turned with the surface, without the surface's motion).
-AgentInfo info_of(const AgentBody& a) {
+AgentInfo info_of(const Agent& a) {
     const CarrierPose pose = pose_of(a.frame);
     AgentInfo info;
     info.id = a.id;
@@ -315,13 +315,13 @@ std::vector<AgentInfo> Agents::infos() const {
     std::shared_lock lock(mutex_);
     std::vector<AgentInfo> out;
     out.reserve(agents_.size());
-    for (const AgentBody& a : agents_) out.push_back(info_of(a));
+    for (const Agent& a : agents_) out.push_back(info_of(a));
     return out;
 }
 
 std::vector<PathPoint> Agents::corners(Handle agent) const {
     std::shared_lock lock(mutex_);
-    const AgentBody& a = find(agent);
+    const Agent& a = find(agent);
     const size_t ahead = points_ahead(a);
     if (ahead == 0) return {};
     // Where it is now, going on as it does: flying the link it took off on (the point `next` still
@@ -345,7 +345,7 @@ std::vector<PathPoint> Agents::corners(Handle agent) const {
 
 Agents::Flight Agents::flight(Handle agent) const {
     std::shared_lock lock(mutex_);
-    const AgentBody& a = find(agent);
+    const Agent& a = find(agent);
     if (!a.motion) return {};
     return Flight{a.motion, a.link, a.motion_time, pose_of(a.frame)};
 }

@@ -43,7 +43,7 @@
 
 namespace nl {
 
-struct AgentBody;
+struct Agent;
 
 struct AgentsSettings {
     uint32_t max_paths_per_step = 32;  // paths planned in one step at most; the rest wait their turn
@@ -113,8 +113,8 @@ private:
     void land_cross_flights(Step& s);
     void take_off(Step& s);
 
-    AgentBody& find(Handle agent);
-    const AgentBody& find(Handle agent) const;
+    Agent& find(Handle agent);
+    const Agent& find(Handle agent) const;
     // The agent's navmesh, its pose now and the agent's radius; InvalidHandle for a stale agent, or
     // one whose navmesh is gone.
     std::shared_ptr<const NavMesh> navmesh_of(const NavMeshRegistry& navmeshes, Handle agent, float& radius,
@@ -130,11 +130,11 @@ private:
     // Take-off over a cross link that holds: the body flies in world space to where the landing
     // point will be when it lands (the landing surface's motion over the last step carried on).
     // Returns false, changing nothing, when that flight would meet the level (it waits and tries again).
-    bool take_off_across(AgentBody& a, const Link& link, Handle id, const BodyMotion& body, const StepNavMeshes& table,
+    bool take_off_across(Agent& a, const Link& link, Handle id, const BodyMotion& body, const StepNavMeshes& table,
                          const Level& level);
     // A body landed over a cross link goes onto `navmesh` (`graph`, null if removed): the link's
     // landing navmesh, or the one a ray down found under it.
-    void land_across(AgentBody& a, Handle navmesh, const std::shared_ptr<const PathGraph>& graph, const StepNavMeshes& table);
+    void land_across(Agent& a, Handle navmesh, const std::shared_ptr<const PathGraph>& graph, const StepNavMeshes& table);
     // How the level's movable meshes moved over the last step: a jump onto a moving surface aims
     // where its landing will be, and its flight is checked against where they will be.
     MeshMotions motions_;
@@ -142,7 +142,7 @@ private:
     mutable SharedMutex mutex_{"the agents"};
     AgentsSettings settings_;
     SlotMap<uint32_t> ids_;                    // agent handle -> index in agents_
-    std::vector<AgentBody> agents_;  // dense, in a stable order between removals
+    std::vector<Agent> agents_;  // dense, in a stable order between removals
     std::vector<AgentEvent> events_;
     uint64_t next_path_order_ = 0;
 };

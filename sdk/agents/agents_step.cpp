@@ -83,7 +83,7 @@ void Agents::step(float dt, const NavMeshRegistry& navmeshes, const Level& level
     take_off(s);
 
     motions_.remember(level.movable_meshes(), dt);
-    for (const AgentBody& a : agents_) events_.insert(events_.end(), a.step_events.begin(), a.step_events.end());
+    for (const Agent& a : agents_) events_.insert(events_.end(), a.step_events.begin(), a.step_events.end());
     const size_t stuck = static_cast<size_t>(std::count(s.unmoved.begin(), s.unmoved.end(), uint8_t{1}));
     if (stuck > 0) fail(ErrorCode::OutOfMemory, stuck, " agents could not move in this step (out of memory); the others did");
 }
@@ -94,7 +94,7 @@ void Agents::check_against_world(Step& s) {
     s.current.assign(agents_.size(), nullptr);
     LinkLookup links;
     for (size_t i = 0; i < agents_.size(); ++i) {
-        AgentBody& a = agents_[i];
+        Agent& a = agents_[i];
         a.step_events.clear();
         a.step_events.reserve(8);  // a step emits a few per agent: the parallel move never allocates for them
         if (a.state == AgentState::Failed) {
@@ -149,13 +149,13 @@ void Agents::check_against_world(Step& s) {
 void Agents::plan_asked_paths(Step& s) {
     std::vector<uint32_t> asking;
     for (uint32_t i = 0; i < agents_.size(); ++i) {
-        const AgentBody& a = agents_[i];
+        const Agent& a = agents_[i];
         if (a.wants_path && !a.motion && a.state != AgentState::Failed) asking.push_back(i);
     }
     // Agents with no path to walk meanwhile (a new destination, a link gone at the take-off) first,
     // then the oldest request.
     std::sort(asking.begin(), asking.end(), [&](uint32_t x, uint32_t y) {
-        const AgentBody &a = agents_[x], &b = agents_[y];
+        const Agent &a = agents_[x], &b = agents_[y];
         const bool a_stands = a.path.empty() || a.at_takeoff || a.state == AgentState::Waiting;
         const bool b_stands = b.path.empty() || b.at_takeoff || b.state == AgentState::Waiting;
         return a_stands != b_stands ? a_stands : a.path_order < b.path_order;
@@ -163,7 +163,7 @@ void Agents::plan_asked_paths(Step& s) {
     if (asking.size() > settings_.max_paths_per_step) {
         // Their turn comes in a later step; meanwhile one with a path walks on (it takes no link).
         for (size_t k = settings_.max_paths_per_step; k < asking.size(); ++k) {
-            AgentBody& a = agents_[asking[k]];
+            Agent& a = agents_[asking[k]];
             if (a.path.empty()) a.state = AgentState::Waiting;
         }
         asking.resize(settings_.max_paths_per_step);
@@ -172,7 +172,7 @@ void Agents::plan_asked_paths(Step& s) {
     std::vector<PathResult> results(asking.size());
     bool routes = false;  // some agent may need to leave its navmesh: every navmesh is looked at
     for (size_t k = 0; k < asking.size(); ++k) {
-        const AgentBody& a = agents_[asking[k]];
+        const Agent& a = agents_[asking[k]];
         PathQuery& q = queries[k];
         q.start = a.position;
         q.goal = a.destination;
@@ -187,7 +187,7 @@ void Agents::plan_asked_paths(Step& s) {
         for (Handle h : s.navmeshes.handles()) s.graph_of(h);
     s.tasks.parallel_for(static_cast<uint32_t>(asking.size()), 1, [&](uint32_t begin, uint32_t end) {
         for (uint32_t k = begin; k < end; ++k) {
-            const AgentBody& a = agents_[asking[k]];
+            const Agent& a = agents_[asking[k]];
             try {
                 const bool here = a.destination_navmesh == a.def.navmesh;
                 if (here) plan_path_in_carrier_space(*s.current[asking[k]], queries[k], nullptr, results[k]);
@@ -209,7 +209,7 @@ void Agents::plan_asked_paths(Step& s) {
         }
     });
     for (size_t k = 0; k < asking.size(); ++k) {
-        AgentBody& a = agents_[asking[k]];
+        Agent& a = agents_[asking[k]];
         PathResult& r = results[k];
         a.wants_path = false;
         a.at_takeoff = false;
@@ -242,7 +242,7 @@ void Agents::move(Step& s) {
     std::vector<const CarrierFrame*> spaces;
     s.space_of.assign(n, 0);
     s.index_in_space.assign(n, 0);
-    std::vector<std::vector<const AgentBody*>> members;
+    std::vector<std::vector<const Agent*>> members;
     for (uint32_t i = 0; i < n; ++i) {
         const CarrierFrame* frame = agents_[i].frame.get();
         const auto found = std::find(spaces.begin(), spaces.end(), frame);
@@ -261,7 +261,7 @@ void Agents::move(Step& s) {
     s.unmoved.assign(n, 0);
     s.tasks.parallel_for(static_cast<uint32_t>(n), 64, [&](uint32_t begin, uint32_t end) {
         for (uint32_t i = begin; i < end; ++i) {
-            AgentBody& a = agents_[i];
+            Agent& a = agents_[i];
             if (a.state == AgentState::Failed || !s.current[i]) continue;
             try {
                 move_agent(a, s.index_in_space[i], s.dt, s.current[i]->navmesh(), s.crowds[s.space_of[i]]);
@@ -277,7 +277,7 @@ void Agents::move(Step& s) {
 void Agents::separate(Step& s) {
     std::vector<std::vector<OverlapBody>> spaces(s.crowds.size());
     for (size_t i = 0; i < agents_.size(); ++i) {
-        AgentBody& a = agents_[i];
+        Agent& a = agents_[i];
         if (a.motion || a.landing_navmesh != Handle{}) continue;
         const std::shared_ptr<const PathGraph> graph = s.current[i] ? s.current[i] : s.graph_of(a.def.navmesh);
         if (!graph) continue;  // its navmesh was removed: it stands nowhere
@@ -293,7 +293,7 @@ void Agents::separate(Step& s) {
 // (serial) Landed over a cross link: onto the landing navmesh, in its space, and on from there.
 void Agents::land_cross_flights(Step& s) {
     for (size_t i = 0; i < agents_.size(); ++i) {
-        AgentBody& a = agents_[i];
+        Agent& a = agents_[i];
         if (a.motion || a.landing_navmesh == Handle{} || a.state == AgentState::Failed) continue;
         // Found by a ray down: the surface under the body, if a navmesh for its body rides it (the
         // aim was off and it came down on another platform), else the link's landing navmesh.
@@ -316,7 +316,7 @@ void Agents::take_off(Step& s) {
     for (uint32_t j = 0; j < agents_.size(); ++j)
         if (agents_[j].motion) flying.push_back(j);
     for (size_t i = 0; i < agents_.size(); ++i) {
-        AgentBody& a = agents_[i];
+        Agent& a = agents_[i];
         if (!a.at_takeoff || a.motion) continue;
         if (a.wants_path) {
             a.state = AgentState::Waiting;  // its new path may not take this link: it waits for it
@@ -378,7 +378,7 @@ void Agents::take_off(Step& s) {
         const Vec3 landing = motion.to();
         bool busy = false;
         for (size_t k = 0; k < flying.size() && !busy; ++k) {
-            const AgentBody& b = agents_[flying[k]];
+            const Agent& b = agents_[flying[k]];
             const float reach = a.def.capabilities.radius + b.def.capabilities.radius;
             const Vec3 there = b.motion->to();
             busy = b.link == point.link ||
@@ -403,7 +403,7 @@ void Agents::take_off(Step& s) {
     }
 }
 
-bool Agents::take_off_across(AgentBody& a, const Link& link, Handle id, const BodyMotion& body, const StepNavMeshes& table,
+bool Agents::take_off_across(Agent& a, const Link& link, Handle id, const BodyMotion& body, const StepNavMeshes& table,
                              const Level& level) {
     const StepNavMesh& from = *table.find(a.def.navmesh);
     const StepNavMesh& to = *table.find(link.landing_navmesh);
@@ -437,7 +437,7 @@ bool Agents::take_off_across(AgentBody& a, const Link& link, Handle id, const Bo
     return true;
 }
 
-void Agents::land_across(AgentBody& a, Handle navmesh, const std::shared_ptr<const PathGraph>& graph,
+void Agents::land_across(Agent& a, Handle navmesh, const std::shared_ptr<const PathGraph>& graph,
                          const StepNavMeshes& table) {
     a.landing_navmesh = Handle{};
     if (!graph) {

@@ -16,10 +16,10 @@ struct TakeoffClaim {
     uint32_t agent;
 };
 
-void choose_first_at_takeoffs(const std::vector<const AgentBody*>& agents, CrowdSnapshot& crowd) {
+void choose_first_at_takeoffs(const std::vector<const Agent*>& agents, CrowdSnapshot& crowd) {
     std::vector<TakeoffClaim> claims;
     for (uint32_t i = 0; i < agents.size(); ++i) {
-        const AgentBody& a = *agents[i];
+        const Agent& a = *agents[i];
         // One waiting at the take-off holds it too: the next in the queue makes way for it.
         if (a.motion || (a.state != AgentState::Walking && !a.at_takeoff) || a.next >= a.path.size()) continue;
         const PathPoint& takeoff = a.path[a.next];
@@ -39,13 +39,13 @@ void choose_first_at_takeoffs(const std::vector<const AgentBody*>& agents, Crowd
 }
 
 // How many bodies share each body's destination (CrowdSnapshot::sharing_goal).
-void count_shared_goals(const std::vector<const AgentBody*>& agents, CrowdSnapshot& crowd) {
+void count_shared_goals(const std::vector<const Agent*>& agents, CrowdSnapshot& crowd) {
     const size_t n = agents.size();
     crowd.goals.resize(n);
     crowd.sharing_goal.assign(n, 0);
     std::vector<uint8_t> has_goal(n, 0);
     for (size_t i = 0; i < n; ++i) {
-        const AgentBody& a = *agents[i];
+        const Agent& a = *agents[i];
         has_goal[i] = a.has_destination && a.destination_navmesh == a.def.navmesh && !a.motion;
         crowd.goals[i] = a.destination;
     }
@@ -64,17 +64,17 @@ void count_shared_goals(const std::vector<const AgentBody*>& agents, CrowdSnapsh
 
 }  // namespace
 
-bool on_its_way(const AgentBody& a) {
+bool on_its_way(const Agent& a) {
     return !a.motion && !a.at_takeoff && !a.path.empty() && (a.state == AgentState::Walking || a.giving_way > 0.0f);
 }
 
-Vec3 way_ahead(const AgentBody& a) {
+Vec3 way_ahead(const Agent& a) {
     const Vec3& to = a.path[a.next].position;
     const Vec3& from = a.next > 0 ? a.path[a.next - 1].position : a.position;
     return Vec3(to.x() - from.x(), 0.0f, to.z() - from.z());
 }
 
-void snapshot_crowd(const std::vector<const AgentBody*>& agents, CrowdSnapshot& crowd) {
+void snapshot_crowd(const std::vector<const Agent*>& agents, CrowdSnapshot& crowd) {
     const size_t n = agents.size();
     crowd.positions.resize(n);
     crowd.velocities.resize(n);
@@ -85,7 +85,7 @@ void snapshot_crowd(const std::vector<const AgentBody*>& agents, CrowdSnapshot& 
     crowd.ways.resize(n);
     crowd.max_radius = 0.0f;
     for (size_t i = 0; i < n; ++i) {
-        const AgentBody& a = *agents[i];
+        const Agent& a = *agents[i];
         crowd.positions[i] = a.position;
         crowd.velocities[i] = a.velocity;
         crowd.radii[i] = a.def.capabilities.radius;

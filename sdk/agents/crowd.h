@@ -35,15 +35,15 @@ struct CrowdSnapshot {
 };
 
 // Walking its path on the ground, or standing aside for a moment to let another pass.
-bool on_its_way(const AgentBody& a);
+bool on_its_way(const Agent& a);
 
 // The direction of the leg of its path a body on its way walks (x-z): from the point before the next
 // to the next, whatever way the crowd has pushed it (past a corner, its heading to the next point
 // turns back); on the first leg, from where it stands.
-Vec3 way_ahead(const AgentBody& a);
+Vec3 way_ahead(const Agent& a);
 
 // Fills `crowd` (in place: its grid refers to its positions) from the agents as they are: the bodies
 // that share one space (the world, or one moving surface), in agent order; crowd index k is members[k].
-void snapshot_crowd(const std::vector<const AgentBody*>& members, CrowdSnapshot& crowd);
+void snapshot_crowd(const std::vector<const Agent*>& members, CrowdSnapshot& crowd);
 
 }  // namespace nl

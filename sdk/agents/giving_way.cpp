@@ -14,15 +14,15 @@ constexpr float kContactSlack = 1.5f;
 constexpr float kStraightInto = 0.9f;   // cosine: a body this near straight ahead is in the way
 
 // Walking on the ground toward a point (not standing at a take-off, not in the air).
-bool walking(const AgentBody& a) { return a.state == AgentState::Walking && !a.at_takeoff && !a.motion && !a.path.empty(); }
+bool walking(const Agent& a) { return a.state == AgentState::Walking && !a.at_takeoff && !a.motion && !a.path.empty(); }
 
 // What a host reads as waiting for room: stuck while walking, or standing aside.
-bool waits_for_room(const AgentBody& a) {
+bool waits_for_room(const Agent& a) {
     return (walking(a) && a.blocked_time >= kStuckSeconds) || (a.giving_way > 0.0f && a.state == AgentState::Waiting);
 }
 
 // How far it still has to go along its path (x-z to the next point, then the path's legs).
-float remaining_way(const AgentBody& a) {
+float remaining_way(const Agent& a) {
     const Vec3& next = a.path[a.next].position;
     float way = std::hypot(a.position.x() - next.x(), a.position.z() - next.z());
     for (size_t k = a.next; k + 1 < a.path.size(); ++k) way += (a.path[k + 1].position - a.path[k].position).norm();
@@ -32,7 +32,7 @@ float remaining_way(const AgentBody& a) {
 // Says when a body starts waiting for room, and gives up the destination of one that has got no
 // kGiveUpProgress nearer it for its give_up_seconds held up by bodies heading the other way, walking
 // or giving way on the ground.
-void keep_patience(AgentBody& a, float dt) {
+void keep_patience(Agent& a, float dt) {
     const bool waits = waits_for_room(a);
     if (waits && !a.waiting_for_room) a.emit(AgentEventKind::Waiting, AgentReason::Crowd);
     a.waiting_for_room = waits;
@@ -61,14 +61,14 @@ void keep_patience(AgentBody& a, float dt) {
 
 }  // namespace
 
-void decide_giving_way(std::vector<AgentBody>& agents, const std::vector<uint32_t>& space_of,
+void decide_giving_way(std::vector<Agent>& agents, const std::vector<uint32_t>& space_of,
                        const std::vector<uint32_t>& index_in_space, const std::vector<CrowdSnapshot>& crowds, float dt) {
     const size_t n = agents.size();
     std::vector<std::vector<uint32_t>> members(crowds.size());
     for (size_t s = 0; s < crowds.size(); ++s) members[s].resize(crowds[s].positions.size());
     for (uint32_t i = 0; i < n; ++i) members[space_of[i]][index_in_space[i]] = i;
 
-    for (AgentBody& a : agents) {
+    for (Agent& a : agents) {
         if (a.giving_way > 0.0f) {
             a.giving_way -= dt;
             if (a.giving_way > 0.0f) continue;
@@ -97,7 +97,7 @@ void decide_giving_way(std::vector<AgentBody>& agents, const std::vector<uint32_
     // applied: a queue gives way one body further each step.
     std::vector<uint8_t> gives(n, 0), stuck(n, 0), against_counterflow(n, 0);
     for (uint32_t i = 0; i < n; ++i) {
-        const AgentBody& a = agents[i];
+        const Agent& a = agents[i];
         if (a.blocked_time < kStuckSeconds || a.giving_way > 0.0f) continue;
         stuck[i] = 1;
         const CrowdSnapshot& crowd = crowds[space_of[i]];
@@ -109,7 +109,7 @@ void decide_giving_way(std::vector<AgentBody>& agents, const std::vector<uint32_
         crowd.grid.visit(crowd.positions[self], radius + crowd.max_radius + slack, [&](uint32_t k) {
             const uint32_t j = members[space_of[i]][k];
             if (j == i) return;
-            const AgentBody& b = agents[j];
+            const Agent& b = agents[j];
             const Vec3 d(crowd.positions[k].x() - crowd.positions[self].x(), 0.0f, crowd.positions[k].z() - crowd.positions[self].z());
             if (d.norm() >= radius + b.def.capabilities.radius + slack) return;
             if (std::fabs(crowd.positions[k].y() - crowd.positions[self].y()) > std::max(a.def.height, b.def.height)) return;
@@ -127,13 +127,13 @@ void decide_giving_way(std::vector<AgentBody>& agents, const std::vector<uint32_
     }
     for (uint32_t i = 0; i < n; ++i) {
         if (!gives[i]) continue;
-        AgentBody& a = agents[i];
+        Agent& a = agents[i];
         a.giving_way = kGivingWaySeconds;
         a.blocked_time = 0.0f;
         a.state = AgentState::Waiting;
     }
     for (uint32_t i = 0; i < n; ++i) {
-        AgentBody& a = agents[i];
+        Agent& a = agents[i];
         // Giving way, it keeps what held it up when it stepped aside.
         if (stuck[i]) a.held_by_counterflow = against_counterflow[i];
         keep_patience(a, dt);

@@ -21,7 +21,7 @@ constexpr float kStuckSeconds = 0.75f;
 
 // Forgets how far the agent has come toward its next path point, and that it was stuck: when it was
 // moved otherwise than by its walk (it gave way, got a new path, was sent or put elsewhere).
-inline void forget_progress(AgentBody& a) {
+inline void forget_progress(Agent& a) {
     a.blocked_time = 0.0f;
     a.progress_next = UINT32_MAX;
 }
@@ -32,7 +32,7 @@ constexpr float kGiveUpProgress = 1.0f;
 
 // Starts its count toward giving up afresh: its way ahead changed (a new destination or path, a
 // teleport), or it made progress otherwise than by walking (it reached a link).
-inline void forget_patience(AgentBody& a) {
+inline void forget_patience(Agent& a) {
     a.best_remaining = std::numeric_limits<float>::infinity();
     a.no_progress_time = 0.0f;
     a.held_by_counterflow = false;
@@ -40,7 +40,7 @@ inline void forget_patience(AgentBody& a) {
 
 // Ends its giving way, if it was, and forgets its progress and patience (a new destination, a stop,
 // a teleport).
-inline void stop_giving_way(AgentBody& a) {
+inline void stop_giving_way(Agent& a) {
     a.giving_way = 0.0f;
     a.waiting_for_room = false;
     forget_progress(a);
@@ -51,7 +51,7 @@ inline void stop_giving_way(AgentBody& a) {
 // ends the turns of those whose time is up; says when one starts waiting for room (Waiting, Crowd)
 // and fails one that has waited past its give_up_seconds (Failed, Crowd). `crowds[space_of[i]]` holds agent i at index_in_space[i]
 // (positions as the move began). Serial, in agent order: the same for any thread count.
-void decide_giving_way(std::vector<AgentBody>& agents, const std::vector<uint32_t>& space_of,
+void decide_giving_way(std::vector<Agent>& agents, const std::vector<uint32_t>& space_of,
                        const std::vector<uint32_t>& index_in_space, const std::vector<CrowdSnapshot>& crowds, float dt);
 
 }  // namespace nl

@@ -60,12 +60,12 @@ void resolve_overlaps(const std::vector<OverlapBody>& bodies, float dt, TaskSyst
         tasks.parallel_for(static_cast<uint32_t>(active.size()), 64, [&](uint32_t begin, uint32_t end) {
             for (uint32_t slot = begin; slot < end; ++slot) {
                 const uint32_t i = active[slot];
-                const AgentBody& a = *bodies[i].agent;
+                const Agent& a = *bodies[i].agent;
                 Vec3 push = Vec3::Zero();
                 deepest[i] = 0.0f;
                 for (uint8_t k = 0; k < contact_count[i]; ++k) {
                     const uint32_t j = contacts[i][k];
-                    const AgentBody& b = *bodies[j].agent;
+                    const Agent& b = *bodies[j].agent;
                     const Vec3 d(positions[i].x() - positions[j].x(), 0.0f, positions[i].z() - positions[j].z());
                     const float gap = d.norm(), reach = a.def.capabilities.radius + b.def.capabilities.radius;
                     if (gap >= reach) continue;
@@ -106,7 +106,7 @@ void resolve_overlaps(const std::vector<OverlapBody>& bodies, float dt, TaskSyst
         active.swap(still);
     }
     for (size_t i = 0; i < n; ++i) {
-        AgentBody& a = *bodies[i].agent;
+        Agent& a = *bodies[i].agent;
         const Vec3 moved(positions[i].x() - a.position.x(), 0.0f, positions[i].z() - a.position.z());
         // Pushed over the surface, its feet keep their height over it (eased near a take-off or a
         // landing), as move_keeping_height does for one move.

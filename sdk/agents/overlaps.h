@@ -15,7 +15,7 @@ namespace nl {
 
 // One body of a space (the bodies on the ground that share the world, or one moving surface).
 struct OverlapBody {
-    AgentBody* agent;
+    Agent* agent;
     const NavMesh* navmesh;  // the agent's
     // How readily it gives way: of an overlap between two bodies, each moves its share of their sum
     // (a standing body makes room for a walker: kStandingGives to 1; 0 holds its place).

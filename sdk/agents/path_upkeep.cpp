@@ -21,7 +21,7 @@ const Link* LinkLookup::find(const PathGraph& graph, Handle link) {
     return found == known->second.end() ? nullptr : found->second;
 }
 
-PathUpkeep check_path(const AgentBody& agent, const PathGraph& now, LinkLookup& links) {
+PathUpkeep check_path(const Agent& agent, const PathGraph& now, LinkLookup& links) {
     // Polygon indices of another navmesh mean nothing: the path and the polygon it stands on go.
     if (!agent.graph || agent.graph->navmesh_ptr() != now.navmesh_ptr()) return {PathUpkeep::NavMeshChanged, {}};
     for (size_t k = agent.next; k < agent.path.size(); ++k) {

@@ -27,6 +27,6 @@ struct PathUpkeep {
     Handle link;  // LinkGone: the first link of the path that no longer serves
 };
 
-PathUpkeep check_path(const AgentBody& agent, const PathGraph& now, LinkLookup& links);
+PathUpkeep check_path(const Agent& agent, const PathGraph& now, LinkLookup& links);
 
 }  // namespace nl

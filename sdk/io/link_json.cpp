@@ -116,7 +116,7 @@ const char* link_kind_name(LinkKind kind) {
     }
 }
 
-std::string links_to_json(const std::vector<Link>& links, const LinksMadeFor* made_for) {
+std::string links_to_json(const std::vector<Link>& links, const LinksFileProvenance* made_for) {
     Json list = Json::array();
     for (size_t i = 0; i < links.size(); ++i) {
         const Link& l = links[i];
@@ -173,7 +173,7 @@ LinksFile read_links_json(std::string_view text) {
     if (const Json* made_for = top.find("made_for")) {
         const Reader m(*made_for, "links JSON.made_for");
         const Reader a(m.at("agent"), "links JSON.made_for.agent");
-        LinksMadeFor record;
+        LinksFileProvenance record;
         record.agent_type.radius = a.number("radius", 0.0f);
         record.agent_type.height = a.number("height", 0.0f);
         record.agent_type.max_climb = a.number("max_climb", 0.0f);

@@ -9,7 +9,7 @@
 
 #include "links/link.h"
 #include "links/link_settings.h"
-#include "navmesh/made_for.h"
+#include "navmesh/provenance.h"
 #include "navmesh/navmesh.h"
 
 namespace nl {
@@ -18,22 +18,22 @@ constexpr int kLinkFileVersion = 1;
 
 // What a links file says its links were made for: the body of the navmesh they were generated on,
 // and what the generation ran with (empty when not recorded).
-struct LinksMadeFor {
+struct LinksFileProvenance {
     AgentType agent_type;
-    LinksMadeWith made_with;
+    LinkProvenance made_with;
     uint64_t level_hash = 0;  // of the level the navmesh was built from (level_hash.h); 0: not recorded
 };
 
 // A links file: its links, and what they were made for when it says (files written before 0.3 do not).
 struct LinksFile {
     std::vector<Link> links;
-    std::optional<LinksMadeFor> made_for;
+    std::optional<LinksFileProvenance> made_for;
 };
 
 // Throws InvalidArgument for a cross link (Link::crosses): its landing navmesh cannot be named in a file.
 // With `made_for`, the file records it ("made_for": {"agent": {...}, "link_settings": {...},
 // "link_plugins": {...}, "level_hash": "16 hex digits", when known}).
-std::string links_to_json(const std::vector<Link>& links, const LinksMadeFor* made_for = nullptr);
+std::string links_to_json(const std::vector<Link>& links, const LinksFileProvenance* made_for = nullptr);
 
 // Throws Parse (malformed JSON, with the parser's position), VersionMismatch (another format or a
 // newer version) or InvalidArgument (a field missing, of the wrong type or out of range, named by its

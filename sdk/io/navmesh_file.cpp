@@ -141,7 +141,7 @@ void write_links(ByteWriter& out, const std::vector<Link>& links, const Quantise
     }
 }
 
-void write_made_for(ByteWriter& out, const AgentType& agent, const MadeFor& made_for, bool rides_carrier) {
+void write_made_for(ByteWriter& out, const AgentType& agent, const NavMeshProvenance& made_for, bool rides_carrier) {
     for (float v : {agent.radius, agent.height, agent.max_climb, agent.max_slope}) out.f32(v);
     out.u8(rides_carrier ? kRidesCarrier : 0);
     out.u64(made_for.level_hash);
@@ -356,7 +356,7 @@ uint32_t navmesh_file_checksum(const uint8_t* data, size_t size) {
     return static_cast<uint32_t>(crc32_z(crc32_z(0L, Z_NULL, 0), data + kNavMeshFileHeaderBytes, size - kNavMeshFileHeaderBytes));
 }
 
-std::vector<uint8_t> write_navmesh_file(const NavMesh& navmesh, const std::vector<Link>& links, const MadeFor& made_for,
+std::vector<uint8_t> write_navmesh_file(const NavMesh& navmesh, const std::vector<Link>& links, const NavMeshProvenance& made_for,
                                         bool rides_carrier) {
     const NavMeshInput input = input_of(navmesh);
     Quantiser q;

@@ -22,7 +22,7 @@
 #include <vector>
 
 #include "links/link.h"
-#include "navmesh/made_for.h"
+#include "navmesh/provenance.h"
 #include "navmesh/navmesh_builder.h"
 
 namespace nl {
@@ -36,7 +36,7 @@ constexpr uint64_t kNavMeshFileMaxBytes = uint64_t(4) << 30;
 struct NavMeshFile {
     NavMeshInput navmesh;     // weld_tolerance 0: the saved vertices are welded already
     std::vector<Link> links;  // in the order they were saved; their polygons as saved
-    MadeFor made_for;
+    NavMeshProvenance made_for;
     bool rides_carrier = false;  // the coordinates are in the space of the mesh it rode
     uint32_t version = 0;
     float quantum = 0.0f;        // metres (2^-10)
@@ -44,7 +44,7 @@ struct NavMeshFile {
 };
 
 // The file for `navmesh` and its `links` (none may be a cross link: InvalidArgument).
-std::vector<uint8_t> write_navmesh_file(const NavMesh& navmesh, const std::vector<Link>& links, const MadeFor& made_for,
+std::vector<uint8_t> write_navmesh_file(const NavMesh& navmesh, const std::vector<Link>& links, const NavMeshProvenance& made_for,
                                         bool rides_carrier);
 
 // Reads a file written by write_navmesh_file, checking everything but what building it checks

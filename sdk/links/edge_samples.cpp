@@ -24,9 +24,9 @@ std::pair<uint32_t, uint32_t> vertices_of(const NavMesh& m, const BoundaryEdge& 
 
 }  // namespace
 
-EdgeSampling sample_edges(const NavMesh& mesh, const LinkSettings& s) {
+EdgeSampling sample_edges(const NavMesh& navmesh, const LinkSettings& s) {
     EdgeSampling out;
-    const std::vector<BoundaryEdge> edges = mesh.boundary_edges();
+    const std::vector<BoundaryEdge> edges = navmesh.boundary_edges();
     out.edges = static_cast<uint32_t>(edges.size());
 
     // Counted before anything is allocated: a huge navmesh with a fine spacing is refused, not a
@@ -61,14 +61,14 @@ EdgeSampling sample_edges(const NavMesh& mesh, const LinkSettings& s) {
     // manifold outline. Walk each chain from an end (or anywhere, for a closed ring).
     std::unordered_map<uint32_t, std::vector<uint32_t>> at_vertex;
     for (uint32_t i : short_edges) {
-        const auto [a, b] = vertices_of(mesh, edges[i]);
+        const auto [a, b] = vertices_of(navmesh, edges[i]);
         at_vertex[a].push_back(i);
         at_vertex[b].push_back(i);
     }
     std::unordered_map<uint32_t, bool> visited;
     auto neighbours = [&](uint32_t i) {
         std::vector<uint32_t> n;
-        const auto [a, b] = vertices_of(mesh, edges[i]);
+        const auto [a, b] = vertices_of(navmesh, edges[i]);
         for (uint32_t v : {a, b})
             for (uint32_t j : at_vertex[v])
                 if (j != i) n.push_back(j);

@@ -30,6 +30,6 @@ struct EdgeSampling {
 constexpr double kMaxEdgeSamples = 4'000'000;
 
 // Throws InvalidArgument when the boundary would need more than kMaxEdgeSamples samples.
-EdgeSampling sample_edges(const NavMesh& mesh, const LinkSettings& settings);
+EdgeSampling sample_edges(const NavMesh& navmesh, const LinkSettings& settings);
 
 }  // namespace nl

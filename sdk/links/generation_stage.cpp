@@ -8,20 +8,20 @@
 
 namespace nl::generation {
 
-PassInputs::PassInputs(const NavMesh& mesh, const EdgeSampling& sampling, const LinkSettings& settings, GenerationMethod method,
+PassInputs::PassInputs(const NavMesh& navmesh, const EdgeSampling& sampling, const LinkSettings& settings, GenerationMethod method,
                        const LinkGeneration::Cache& old, const Aabb* box, const Level& level, TaskSystem& tasks,
                        LinkGenerationReport& report, GenerationProgress progress)
-    : mesh(mesh), samples(sampling.samples), settings(settings), method(method), old(old), box(box), level(level), tasks(tasks),
-      report(report), progress(progress), body{mesh.agent().radius, mesh.agent().height}, walk(mesh) {
+    : navmesh(navmesh), samples(sampling.samples), settings(settings), method(method), old(old), box(box), level(level), tasks(tasks),
+      report(report), progress(progress), body{navmesh.agent().radius, navmesh.agent().height}, walk(navmesh) {
     // Probes start above the floor by at most half the body (a low ceiling over the edge is not
     // ground) and count as ground anything within a walkable step below it.
     rim_probing.lift = std::min(kProbeLift, 0.5f * body.height);
-    rim_probing.step_reach = rim_probing.lift + mesh.agent().max_climb + 0.05f;
+    rim_probing.step_reach = rim_probing.lift + navmesh.agent().max_climb + 0.05f;
     rim_probing.floor_shortcut = method == GenerationMethod::Indexed;
 }
 
 GenerationStage::GenerationStage(PassInputs& in)
-    : mesh_(in.mesh), samples_(in.samples), settings_(in.settings), method_(in.method), old_(in.old), box_(in.box), level_(in.level),
+    : mesh_(in.navmesh), samples_(in.samples), settings_(in.settings), method_(in.method), old_(in.old), box_(in.box), level_(in.level),
       tasks_(in.tasks), report_(in.report), progress_(in.progress), body_(in.body), walk_(in.walk), rim_probing_(in.rim_probing) {}
 
 void check_progress(const GenerationProgress& progress, float fraction, const char* stage) {

@@ -45,11 +45,11 @@ void check_progress(const GenerationProgress& progress, float fraction, const ch
 
 // One generation or update: what it reads, the old cache it may reuse, the report it fills.
 struct PassInputs {
-    PassInputs(const NavMesh& mesh, const EdgeSampling& sampling, const LinkSettings& settings, GenerationMethod method,
+    PassInputs(const NavMesh& navmesh, const EdgeSampling& sampling, const LinkSettings& settings, GenerationMethod method,
                const LinkGeneration::Cache& old, const Aabb* box, const Level& level, TaskSystem& tasks,
                LinkGenerationReport& report, GenerationProgress progress);
 
-    const NavMesh& mesh;
+    const NavMesh& navmesh;
     const std::vector<EdgeSample>& samples;
     const LinkSettings& settings;
     GenerationMethod method;

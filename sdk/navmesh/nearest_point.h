@@ -14,8 +14,8 @@ namespace nl {
 class NearestPoint {
 public:
     // `skip_by_bounds` false: every polygon offered is measured (the brute-force reference).
-    NearestPoint(const NavMesh& mesh, const Vec3& point, bool skip_by_bounds = true)
-        : mesh_(mesh), point_(point), point_scale_(1.0f + point.cwiseAbs().maxCoeff()), skip_by_bounds_(skip_by_bounds) {}
+    NearestPoint(const NavMesh& navmesh, const Vec3& point, bool skip_by_bounds = true)
+        : navmesh_(navmesh), point_(point), point_scale_(1.0f + point.cwiseAbs().maxCoeff()), skip_by_bounds_(skip_by_bounds) {}
 
     // Offers polygon p: skipped at the cost of a box test when its bounds are beyond the best so far.
     void consider(uint32_t p);
@@ -23,7 +23,7 @@ public:
     const NavPoint& best() const { return best_; }
 
 private:
-    const NavMesh& mesh_;
+    const NavMesh& navmesh_;
     const Vec3 point_;
     const float point_scale_;  // 1 + its largest coordinate's size: the scale of its rounding
     const bool skip_by_bounds_;

@@ -7,19 +7,19 @@
 
 namespace nl {
 
-WalkGraph::WalkGraph(const NavMesh& mesh) : mesh_(mesh) {
+WalkGraph::WalkGraph(const NavMesh& navmesh) : navmesh_(navmesh) {
     // Surfaces: a flood through portals from each polygon not yet reached, in polygon order.
-    surface_.assign(mesh.polygon_count(), kNoPolygon);
+    surface_.assign(navmesh.polygon_count(), kNoPolygon);
     std::vector<uint32_t> stack;
-    for (uint32_t first = 0; first < mesh.polygon_count(); ++first) {
+    for (uint32_t first = 0; first < navmesh.polygon_count(); ++first) {
         if (surface_[first] != kNoPolygon) continue;
         surface_[first] = first;
         stack.push_back(first);
         while (!stack.empty()) {
             const uint32_t p = stack.back();
             stack.pop_back();
-            for (uint32_t k = 0; k < mesh.corner_count(p); ++k) {
-                const uint32_t q = mesh.neighbour(p, k);
+            for (uint32_t k = 0; k < navmesh.corner_count(p); ++k) {
+                const uint32_t q = navmesh.neighbour(p, k);
                 if (q == kNoPolygon || surface_[q] != kNoPolygon) continue;
                 surface_[q] = first;
                 stack.push_back(q);
@@ -30,7 +30,7 @@ WalkGraph::WalkGraph(const NavMesh& mesh) : mesh_(mesh) {
 
 float WalkGraph::walk_within(const Vec3& from, uint32_t from_polygon, const Vec3& to, uint32_t to_polygon, float limit) const {
     constexpr float kNone = std::numeric_limits<float>::infinity();
-    if (from_polygon >= mesh_.polygon_count() || to_polygon >= mesh_.polygon_count()) return kNone;
+    if (from_polygon >= navmesh_.polygon_count() || to_polygon >= navmesh_.polygon_count()) return kNone;
     if (from_polygon == to_polygon) {
         const float d = (to - from).norm();
         return d <= limit ? d : kNone;
@@ -42,7 +42,7 @@ float WalkGraph::walk_within(const Vec3& from, uint32_t from_polygon, const Vec3
     using Entry = std::pair<float, uint64_t>;  // (walked + straight line to the goal, state)
     std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> open;
     auto reach = [&](uint32_t polygon, uint32_t v, float walked) {
-        const float estimate = walked + (to - mesh_.vertex(v)).norm();
+        const float estimate = walked + (to - navmesh_.vertex(v)).norm();
         if (estimate > limit) return;
         const auto [it, fresh] = best.emplace(state(polygon, v), walked);
         if (!fresh) {
@@ -51,9 +51,9 @@ float WalkGraph::walk_within(const Vec3& from, uint32_t from_polygon, const Vec3
         }
         open.emplace(estimate, state(polygon, v));
     };
-    for (uint32_t k = 0; k < mesh_.corner_count(from_polygon); ++k) {
-        const uint32_t v = mesh_.corner(from_polygon, k);
-        reach(from_polygon, v, (mesh_.vertex(v) - from).norm());
+    for (uint32_t k = 0; k < navmesh_.corner_count(from_polygon); ++k) {
+        const uint32_t v = navmesh_.corner(from_polygon, k);
+        reach(from_polygon, v, (navmesh_.vertex(v) - from).norm());
     }
     float found = kNone;
     while (!open.empty()) {
@@ -62,19 +62,19 @@ float WalkGraph::walk_within(const Vec3& from, uint32_t from_polygon, const Vec3
         if (estimate >= found) break;  // nothing left can be shorter
         const auto p = static_cast<uint32_t>(s >> 32), v = static_cast<uint32_t>(s);
         const float walked = best[s];
-        if (walked + (to - mesh_.vertex(v)).norm() < estimate) continue;  // a stale entry
+        if (walked + (to - navmesh_.vertex(v)).norm() < estimate) continue;  // a stale entry
         if (p == to_polygon) {
-            found = std::min(found, walked + (to - mesh_.vertex(v)).norm());
+            found = std::min(found, walked + (to - navmesh_.vertex(v)).norm());
             continue;
         }
-        const uint32_t corners = mesh_.corner_count(p);
+        const uint32_t corners = navmesh_.corner_count(p);
         for (uint32_t k = 0; k < corners; ++k) {
-            const uint32_t w = mesh_.corner(p, k);
-            if (w != v) reach(p, w, walked + (mesh_.vertex(w) - mesh_.vertex(v)).norm());
+            const uint32_t w = navmesh_.corner(p, k);
+            if (w != v) reach(p, w, walked + (navmesh_.vertex(w) - navmesh_.vertex(v)).norm());
             if (w != v) continue;
             // Across the two edges at v, where they are portals.
             for (const uint32_t edge : {k, (k + corners - 1) % corners}) {
-                const uint32_t q = mesh_.neighbour(p, edge);
+                const uint32_t q = navmesh_.neighbour(p, edge);
                 if (q != kNoPolygon) reach(q, v, walked);
             }
         }

@@ -19,7 +19,7 @@ namespace nl {
 
 class WalkGraph {
 public:
-    explicit WalkGraph(const NavMesh& mesh);
+    explicit WalkGraph(const NavMesh& navmesh);
 
     // The length of a walk from `from` (on polygon from_polygon) to `to` (on to_polygon) if one of at
     // most `limit` metres is found; +infinity otherwise. Searches only what could be within the limit
@@ -31,7 +31,7 @@ public:
     uint32_t surface(uint32_t polygon) const { return surface_[polygon]; }
 
 private:
-    const NavMesh& mesh_;
+    const NavMesh& navmesh_;
     std::vector<uint32_t> surface_;  // by polygon: its lowest-numbered connected polygon
 };
 

@@ -58,8 +58,8 @@ struct OpenEntry {
 // held in a table (an array would take two entries per edge for every search thread).
 struct TurningIds {
     uint32_t landing_base, start, narrowed_base;
-    TurningIds(const NavMesh& mesh, size_t links)
-        : landing_base(mesh.vertex_count()), start(landing_base + 2 * static_cast<uint32_t>(links)), narrowed_base(start + 1) {}
+    TurningIds(const NavMesh& navmesh, size_t links)
+        : landing_base(navmesh.vertex_count()), start(landing_base + 2 * static_cast<uint32_t>(links)), narrowed_base(start + 1) {}
     uint32_t dense_count() const { return narrowed_base; }
 };
 

@@ -52,48 +52,48 @@ NavMeshSearchIndex::NavMeshSearchIndex(std::shared_ptr<const NavMesh> navmesh) :
 }
 
 void NavMeshSearchIndex::index_bends() {
-    const NavMesh& mesh = *navmesh_;
+    const NavMesh& navmesh = *navmesh_;
     constexpr uint8_t kAnyBody = 1, kWiderBody = 2;
-    bends_.assign(mesh.vertex_count(), 0);
+    bends_.assign(navmesh.vertex_count(), 0);
     constexpr uint16_t kUnseen = 0xffff;
-    std::vector<uint16_t> area_at(mesh.vertex_count(), kUnseen);
+    std::vector<uint16_t> area_at(navmesh.vertex_count(), kUnseen);
     // The angle the polygons round each vertex fill, seen from above: a shortest walk bends only
     // round an obstacle's reflex corner, where they fill more than half a turn.
-    std::vector<double> angle(mesh.vertex_count(), 0.0);
-    for (uint32_t v = 0; v < mesh.vertex_count(); ++v)
-        if (mesh.on_outline(v)) bends_[v] = kAnyBody;
-    twins_.assign(mesh.edge_count(), kNoTwin);
-    for (uint32_t p = 0; p < mesh.polygon_count(); ++p) {
-        const uint8_t area = mesh.area(p);
+    std::vector<double> angle(navmesh.vertex_count(), 0.0);
+    for (uint32_t v = 0; v < navmesh.vertex_count(); ++v)
+        if (navmesh.on_outline(v)) bends_[v] = kAnyBody;
+    twins_.assign(navmesh.edge_count(), kNoTwin);
+    for (uint32_t p = 0; p < navmesh.polygon_count(); ++p) {
+        const uint8_t area = navmesh.area(p);
         areas_present_[area >> 6] |= uint64_t(1) << (area & 63);
-        const uint32_t n = mesh.corner_count(p);
+        const uint32_t n = navmesh.corner_count(p);
         for (uint32_t k = 0; k < n; ++k) {
-            const uint32_t u = mesh.corner(p, k == 0 ? n - 1 : k - 1), v = mesh.corner(p, k), w = mesh.corner(p, k + 1 == n ? 0 : k + 1);
-            const double ax = double(mesh.vertex(u).x()) - mesh.vertex(v).x(), az = double(mesh.vertex(u).z()) - mesh.vertex(v).z();
-            const double bx = double(mesh.vertex(w).x()) - mesh.vertex(v).x(), bz = double(mesh.vertex(w).z()) - mesh.vertex(v).z();
+            const uint32_t u = navmesh.corner(p, k == 0 ? n - 1 : k - 1), v = navmesh.corner(p, k), w = navmesh.corner(p, k + 1 == n ? 0 : k + 1);
+            const double ax = double(navmesh.vertex(u).x()) - navmesh.vertex(v).x(), az = double(navmesh.vertex(u).z()) - navmesh.vertex(v).z();
+            const double bx = double(navmesh.vertex(w).x()) - navmesh.vertex(v).x(), bz = double(navmesh.vertex(w).z()) - navmesh.vertex(v).z();
             angle[v] += std::fabs(std::atan2(ax * bz - az * bx, ax * bx + az * bz));
             if (area_at[v] == kUnseen) area_at[v] = area;
             else if (area_at[v] != area) bends_[v] |= kAnyBody;
-            const uint32_t q = mesh.neighbour(p, k);
+            const uint32_t q = navmesh.neighbour(p, k);
             if (q == kNoPolygon) continue;
-            const uint32_t m = mesh.corner_count(q);
+            const uint32_t m = navmesh.corner_count(q);
             for (uint32_t j = 0; j < m; ++j) {
                 // The same edge runs the other way in q; of several edges to p (a non-manifold repair), that one.
-                if (mesh.neighbour(q, j) != p) continue;
-                if (twins_[mesh.edge_index(p, k)] == kNoTwin || mesh.corner(q, j) == w) twins_[mesh.edge_index(p, k)] = uint8_t(j);
+                if (navmesh.neighbour(q, j) != p) continue;
+                if (twins_[navmesh.edge_index(p, k)] == kNoTwin || navmesh.corner(q, j) == w) twins_[navmesh.edge_index(p, k)] = uint8_t(j);
             }
-            if (mesh.on_outline(v)) bends_[w] |= kWiderBody;
-            if (mesh.on_outline(w)) bends_[v] |= kWiderBody;
+            if (navmesh.on_outline(v)) bends_[w] |= kWiderBody;
+            if (navmesh.on_outline(w)) bends_[v] |= kWiderBody;
         }
     }
     constexpr double kHalfTurn = 3.14159265358979323846;
-    for (uint32_t v = 0; v < mesh.vertex_count(); ++v)
+    for (uint32_t v = 0; v < navmesh.vertex_count(); ++v)
         if (angle[v] <= kHalfTurn + 1e-9) bends_[v] = 0;
 }
 
 void NavMeshSearchIndex::index_appendices() {
-    const NavMesh& mesh = *navmesh_;
-    const uint32_t polygons = mesh.polygon_count();
+    const NavMesh& navmesh = *navmesh_;
+    const uint32_t polygons = navmesh.polygon_count();
     // Peel the polygons with one way on at most, again and again (leaves, then what they hung
     // from): what goes is trees of polygons hanging from the rest, each from the neighbour it had left.
     hangs_from_.assign(polygons, kNoPolygon);
@@ -103,14 +103,14 @@ void NavMeshSearchIndex::index_appendices() {
     std::vector<uint32_t>& order = peel_order_;
     std::vector<uint8_t> queued(polygons, 0), peeled(polygons, 0);
     for (uint32_t p = 0; p < polygons; ++p) {
-        for (uint32_t k = 0; k < mesh.corner_count(p); ++k) ways[p] += mesh.neighbour(p, k) != kNoPolygon;
+        for (uint32_t k = 0; k < navmesh.corner_count(p); ++k) ways[p] += navmesh.neighbour(p, k) != kNoPolygon;
         if (ways[p] <= 1) order.push_back(p), queued[p] = 1;
     }
     for (size_t i = 0; i < order.size(); ++i) {
         const uint32_t p = order[i];
         peeled[p] = 1;
-        for (uint32_t k = 0; k < mesh.corner_count(p); ++k) {
-            const uint32_t q = mesh.neighbour(p, k);
+        for (uint32_t k = 0; k < navmesh.corner_count(p); ++k) {
+            const uint32_t q = navmesh.neighbour(p, k);
             if (q == kNoPolygon || peeled[q]) continue;
             hangs_from_[p] = q;
             if (--ways[q] <= 1 && !queued[q]) order.push_back(q), queued[q] = 1;

@@ -140,10 +140,10 @@ void search_corridor(const PathGraph& graph, const PathQuery& query, const NavPo
 // Where a partial path ends: the navmesh point nearest the goal among the polygons the body reaches
 // from the start (the start's own polygon at least), as located points are ranked (NearestPoint).
 // A pass over the reachable polygons' bounds: a fraction of what a search through them costs.
-NavPoint nearest_reachable(const NavMesh& mesh, const ReachabilityMap& map, const NavPoint& start, const NavPoint& goal) {
+NavPoint nearest_reachable(const NavMesh& navmesh, const ReachabilityMap& map, const NavPoint& start, const NavPoint& goal) {
     thread_local std::vector<uint8_t> reached;
     map.reachable_islands(start.polygon, reached);
-    NearestPoint nearest(mesh, goal.point);
+    NearestPoint nearest(navmesh, goal.point);
     nearest.consider(start.polygon);
     for (uint32_t island = 0; island < map.island_count(); ++island) {
         if (!reached[island]) continue;
@@ -156,17 +156,17 @@ NavPoint nearest_reachable(const NavMesh& mesh, const ReachabilityMap& map, cons
 
 void plan_path_in_carrier_space(const PathGraph& graph, const PathQuery& query, const std::atomic<bool>* cancel,
                                 PathResult& result) {
-    const NavMesh& mesh = graph.navmesh();
+    const NavMesh& navmesh = graph.navmesh();
     std::vector<PathPoint> points = std::move(result.points);
     points.clear();
     result = PathResult{};
     result.points = std::move(points);
-    const NavPoint start = mesh.find_nearest(query.start, query.search_half_extents);
+    const NavPoint start = navmesh.find_nearest(query.start, query.search_half_extents);
     if (!start.found) {
         result.outcome = PathOutcome::StartOffNavMesh;
         return;
     }
-    const NavPoint goal = mesh.find_nearest(query.goal, query.search_half_extents);
+    const NavPoint goal = navmesh.find_nearest(query.goal, query.search_half_extents);
     result.start = start.point;
     if (!goal.found) {
         result.outcome = PathOutcome::GoalOffNavMesh;
@@ -186,7 +186,7 @@ void plan_path_in_carrier_space(const PathGraph& graph, const PathQuery& query, 
                 result.outcome = PathOutcome::NoPath;
                 return;
             }
-            target = nearest_reachable(mesh, *map, start, goal);
+            target = nearest_reachable(navmesh, *map, start, goal);
             heading_to_nearest = true;
         }
     }
@@ -199,7 +199,7 @@ void plan_path_in_carrier_space(const PathGraph& graph, const PathQuery& query, 
         // where the body can go instead.
         const auto map = graph.reachability(query.capabilities, query.area_costs);
         if (query.accept_partial) {
-            target = nearest_reachable(mesh, *map, start, goal);
+            target = nearest_reachable(navmesh, *map, start, goal);
             heading_to_nearest = true;
             const uint32_t first_nodes = corridor.nodes_visited;
             search_corridor(graph, query, start, target, walk_cost, cancel, corridor);
@@ -218,7 +218,7 @@ void plan_path_in_carrier_space(const PathGraph& graph, const PathQuery& query, 
     }
     Vec3 end = target.point;
     // max_nodes ran out: toward the polygon the search got nearest to the goal, as Detour's.
-    if (!corridor.reached_goal) end = mesh.closest_point_on_polygon(corridor.steps.back().polygon, goal.point);
+    if (!corridor.reached_goal) end = navmesh.closest_point_on_polygon(corridor.steps.back().polygon, goal.point);
     PathAssembler(graph, query, corridor, result).assemble(start.point, end);
     result.outcome = corridor.reached_goal && !heading_to_nearest ? PathOutcome::Complete : PathOutcome::Partial;
 

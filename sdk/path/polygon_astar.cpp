@@ -156,12 +156,12 @@ bool crosses(const Vec3& a, const Vec3& b, const PortalSpan& span) {
 
 void find_corridor(const PathGraph& graph, const PathQuery& query, const NavPoint& start, const NavPoint& goal,
                    const std::atomic<bool>* cancel, CorridorSearch& result) {
-    const NavMesh& mesh = graph.navmesh();
+    const NavMesh& navmesh = graph.navmesh();
     SearchScratch& scratch = thread_scratch();
-    const uint32_t epoch = scratch.begin(mesh.polygon_count());
+    const uint32_t epoch = scratch.begin(navmesh.polygon_count());
     SearchNode* nodes = scratch.nodes.data();
     OpenList open(scratch.open, nodes);
-    const float margin = std::max(0.0f, query.capabilities.radius - mesh.agent().radius);
+    const float margin = std::max(0.0f, query.capabilities.radius - navmesh.agent().radius);
     const float h_scale = heuristic_scale(graph, query);
     const Vec3 goal_point = goal.point;
 
@@ -211,7 +211,7 @@ void find_corridor(const PathGraph& graph, const PathQuery& query, const NavPoin
         for (uint32_t depth = 0; depth < kStraightenDepth; ++depth) {
             const SearchNode& later = nodes[last];
             if (later.parent == kNone || later.entry >= CorridorStep::kLinkBit) break;
-            if (query.area_cost(mesh.area(later.parent)) != cost_here) break;
+            if (query.area_cost(navmesh.area(later.parent)) != cost_here) break;
             const SearchNode& anchor = nodes[later.parent];
             for (uint32_t x = p;; x = nodes[x].parent) {
                 if (!crosses(anchor.position, crossing, nodes[x].entry_span)) return best_cost;
@@ -225,7 +225,7 @@ void find_corridor(const PathGraph& graph, const PathQuery& query, const NavPoin
 
     relax(start.polygon, kNone, CorridorStep::kStart, start.point, 0.0f, nullptr);
     if (start.polygon == goal.polygon) {
-        nodes[start.polygon].g = (goal_point - start.point).norm() * query.area_cost(mesh.area(start.polygon));
+        nodes[start.polygon].g = (goal_point - start.point).norm() * query.area_cost(navmesh.area(start.polygon));
     }
     uint32_t expansions = 0;
     while (!open.empty()) {
@@ -242,18 +242,18 @@ void find_corridor(const PathGraph& graph, const PathQuery& query, const NavPoin
         const Vec3 here = node.position;
         const float g_here = node.g;
         const uint32_t came_from = node.parent;
-        const float cost_here = query.area_cost(mesh.area(p));
+        const float cost_here = query.area_cost(navmesh.area(p));
 
-        const uint32_t corners = mesh.corner_count(p);
-        const uint32_t* const neighbours = mesh.neighbours_of(p);
+        const uint32_t corners = navmesh.corner_count(p);
+        const uint32_t* const neighbours = navmesh.neighbours_of(p);
         const LineToGoal line(here, goal_point);
         for (uint32_t k = 0; k < corners; ++k) {
             const uint32_t q = neighbours[k];
             if (q == kNoPolygon || q == came_from) continue;
-            const float cost_there = query.area_cost(mesh.area(q));
+            const float cost_there = query.area_cost(navmesh.area(q));
             if (cost_there <= 0.0f) continue;
             PortalSpan span;
-            if (!portal_span(mesh, p, k, margin, span)) continue;
+            if (!portal_span(navmesh, p, k, margin, span)) continue;
             const Vec3 crossing = crossing_point(span, line);
             float g = g_here + (crossing - here).norm() * cost_here;
             // Never below the cost here: a child cheaper than its parent could later become its
@@ -266,7 +266,7 @@ void find_corridor(const PathGraph& graph, const PathQuery& query, const NavPoin
             const Link& link = graph.link(exit->link).link;
             if (!can_take(link, exit->reversed != 0, query.capabilities)) continue;
             const uint32_t q = exit->reversed ? link.start_polygon : link.end_polygon;
-            const float cost_there = query.area_cost(mesh.area(q));
+            const float cost_there = query.area_cost(navmesh.area(q));
             if (cost_there <= 0.0f) continue;
             const Vec3& from = exit->reversed ? link.end : link.start;
             const Vec3& to = exit->reversed ? link.start : link.end;

@@ -23,15 +23,15 @@ constexpr float kPortalSlack = 0.001f;
 // The opening from polygon p across its edge k (corner k to k + 1), seen walking out of p: left and
 // right as the walker sees them. False if `margin` leaves no room: the portal is not at least
 // kPortalSlack wider than the margins at its outline ends.
-inline bool portal_span(const NavMesh& mesh, uint32_t p, uint32_t k, float margin, PortalSpan& span) {
-    const uint32_t n = mesh.corner_count(p);
-    const uint32_t a = mesh.corner(p, k), b = mesh.corner(p, k + 1 == n ? 0 : k + 1);
+inline bool portal_span(const NavMesh& navmesh, uint32_t p, uint32_t k, float margin, PortalSpan& span) {
+    const uint32_t n = navmesh.corner_count(p);
+    const uint32_t a = navmesh.corner(p, k), b = navmesh.corner(p, k + 1 == n ? 0 : k + 1);
     // Corners run counter-clockwise seen from above (x right, z up), so walking out across a -> b,
     // a is on the left.
-    span.left = mesh.vertex(a);
-    span.right = mesh.vertex(b);
+    span.left = navmesh.vertex(a);
+    span.right = navmesh.vertex(b);
     if (margin <= 0.0f) return true;
-    const bool left_on_outline = mesh.on_outline(a), right_on_outline = mesh.on_outline(b);
+    const bool left_on_outline = navmesh.on_outline(a), right_on_outline = navmesh.on_outline(b);
     if (!left_on_outline && !right_on_outline) return true;
     const Vec3 across = span.right - span.left;
     const float width = std::sqrt(across.x() * across.x() + across.z() * across.z());

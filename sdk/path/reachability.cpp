@@ -14,19 +14,19 @@ constexpr uint32_t kNoIsland = ReachabilityMap::kNoIsland;
 // links it can take, never into an excluded area.
 template <typename Visit>
 void for_each_successor(const PathGraph& graph, const ReachabilityClass& body, uint32_t p, Visit&& visit) {
-    const NavMesh& mesh = graph.navmesh();
-    const uint32_t corners = mesh.corner_count(p);
-    const uint32_t* const neighbours = mesh.neighbours_of(p);
+    const NavMesh& navmesh = graph.navmesh();
+    const uint32_t corners = navmesh.corner_count(p);
+    const uint32_t* const neighbours = navmesh.neighbours_of(p);
     for (uint32_t k = 0; k < corners; ++k) {
         const uint32_t q = neighbours[k];
-        if (q == kNoPolygon || body.excludes(mesh.area(q)) || body.closes(mesh.edge_index(p, k))) continue;
+        if (q == kNoPolygon || body.excludes(navmesh.area(q)) || body.closes(navmesh.edge_index(p, k))) continue;
         visit(q);
     }
     for (const LinkExit* exit = graph.exits_begin(p); exit != graph.exits_end(p); ++exit) {
         if (!body.can_take(exit->link, exit->reversed != 0)) continue;
         const Link& link = graph.link(exit->link).link;
         const uint32_t q = exit->reversed ? link.start_polygon : link.end_polygon;
-        if (!body.excludes(mesh.area(q))) visit(q);
+        if (!body.excludes(navmesh.area(q))) visit(q);
     }
 }
 
@@ -39,8 +39,8 @@ struct Components {
 };
 
 Components strongly_connected(const PathGraph& graph, const ReachabilityClass& body) {
-    const NavMesh& mesh = graph.navmesh();
-    const uint32_t polygons = mesh.polygon_count();
+    const NavMesh& navmesh = graph.navmesh();
+    const uint32_t polygons = navmesh.polygon_count();
     Components result;
     result.of.assign(polygons, kNoIsland);
     std::vector<uint32_t> order(polygons, kNoIsland), low(polygons, 0);
@@ -60,7 +60,7 @@ Components strongly_connected(const PathGraph& graph, const ReachabilityClass& b
         calls.emplace_back(p, first_successor.back());
     };
     for (uint32_t root = 0; root < polygons; ++root) {
-        if (order[root] != kNoIsland || body.excludes(mesh.area(root))) continue;
+        if (order[root] != kNoIsland || body.excludes(navmesh.area(root))) continue;
         open(root);
         while (!calls.empty()) {
             auto& [p, next] = calls.back();  // not used after open(): it may move the calls
@@ -105,16 +105,16 @@ std::vector<uint32_t>& scratch_marks() {
 ReachabilityClass ReachabilityClass::of(const PathGraph& graph, const AgentCapabilities& agent,
                                         const std::vector<float>& area_costs) {
     ReachabilityClass c;
-    const NavMesh& mesh = graph.navmesh();
-    const float margin = std::max(0.0f, agent.radius - mesh.agent().radius);
+    const NavMesh& navmesh = graph.navmesh();
+    const float margin = std::max(0.0f, agent.radius - navmesh.agent().radius);
     if (margin > 0.0f) {
         bool any = false;
-        std::vector<uint64_t> closed((mesh.edge_count() + 63) / 64, 0);
-        for (uint32_t p = 0; p < mesh.polygon_count(); ++p) {
-            for (uint32_t k = 0; k < mesh.corner_count(p); ++k) {
+        std::vector<uint64_t> closed((navmesh.edge_count() + 63) / 64, 0);
+        for (uint32_t p = 0; p < navmesh.polygon_count(); ++p) {
+            for (uint32_t k = 0; k < navmesh.corner_count(p); ++k) {
                 PortalSpan span;
-                if (mesh.neighbour(p, k) == kNoPolygon || portal_span(mesh, p, k, margin, span)) continue;
-                const uint32_t edge = mesh.edge_index(p, k);
+                if (navmesh.neighbour(p, k) == kNoPolygon || portal_span(navmesh, p, k, margin, span)) continue;
+                const uint32_t edge = navmesh.edge_index(p, k);
                 closed[edge >> 6] |= uint64_t{1} << (edge & 63);
                 any = true;
             }
@@ -143,8 +143,8 @@ std::array<uint64_t, 4> ReachabilityClass::excluded_areas_of(const std::vector<f
 }
 
 ReachabilityMap::ReachabilityMap(const PathGraph& graph, const ReachabilityClass& body) {
-    const NavMesh& mesh = graph.navmesh();
-    const uint32_t polygons = mesh.polygon_count();
+    const NavMesh& navmesh = graph.navmesh();
+    const uint32_t polygons = navmesh.polygon_count();
     const Components components = strongly_connected(graph, body);
     island_count_ = components.count;
 

@@ -25,7 +25,7 @@ std::shared_ptr<const ReachabilityMap> ReachabilityCache::get(const PathGraph& g
                                                               const std::vector<float>& area_costs) {
     const std::array<uint64_t, 4> excluded = ReachabilityClass::excluded_areas_of(area_costs);
     auto known = [&]() -> std::shared_ptr<Class> {
-        for (Body& body : bodies_) {
+        for (BodyEntry& body : bodies_) {
             if (body.excluded_areas == excluded && same_body(body.capabilities, agent)) {
                 body.last_used = ++clock_;
                 return body.map_class;
@@ -53,7 +53,7 @@ std::shared_ptr<const ReachabilityMap> ReachabilityCache::get(const PathGraph& g
             }
             const bool new_class = !map_class;
             if (new_class) map_class = std::make_shared<Class>(Class{std::move(key), promise.get_future().share()});
-            remember(Body{agent, excluded, map_class, ++clock_});
+            remember(BodyEntry{agent, excluded, map_class, ++clock_});
             if (new_class) {
                 classes_.push_back(map_class);  // after remember(), which may throw: no class without its builder
                 build = true;
@@ -93,7 +93,7 @@ const ReachabilityMap* ReachabilityCache::ready(const AgentCapabilities& agent, 
     const std::array<uint64_t, 4> excluded = ReachabilityClass::excluded_areas_of(area_costs);
     if (last.cache == id_ && last.excluded == excluded && same_body(last.capabilities, agent)) return last.map.get();
     std::lock_guard<std::mutex> lock(mutex_);
-    for (const Body& body : bodies_) {
+    for (const BodyEntry& body : bodies_) {
         if (body.excluded_areas != excluded || !same_body(body.capabilities, agent)) continue;
         const MapFuture& map = body.map_class->map;
         if (map.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return nullptr;
@@ -108,10 +108,10 @@ const ReachabilityMap* ReachabilityCache::ready(const AgentCapabilities& agent, 
     return nullptr;
 }
 
-void ReachabilityCache::remember(const Body& body) {
+void ReachabilityCache::remember(const BodyEntry& body) {
     auto forget_oldest = [&] {
         const auto oldest = std::min_element(bodies_.begin(), bodies_.end(),
-                                             [](const Body& a, const Body& b) { return a.last_used < b.last_used; });
+                                             [](const BodyEntry& a, const BodyEntry& b) { return a.last_used < b.last_used; });
         bodies_.erase(oldest);
         classes_.erase(std::remove_if(classes_.begin(), classes_.end(),
                                       [](const std::shared_ptr<Class>& c) { return c.use_count() == 1; }),
@@ -138,7 +138,7 @@ void ReachabilityCache::remember(const Body& body) {
 
 void ReachabilityCache::forget(const std::shared_ptr<Class>& map_class) {
     std::lock_guard<std::mutex> lock(mutex_);
-    bodies_.erase(std::remove_if(bodies_.begin(), bodies_.end(), [&](const Body& b) { return b.map_class == map_class; }),
+    bodies_.erase(std::remove_if(bodies_.begin(), bodies_.end(), [&](const BodyEntry& b) { return b.map_class == map_class; }),
                   bodies_.end());
     classes_.erase(std::remove(classes_.begin(), classes_.end(), map_class), classes_.end());
 }

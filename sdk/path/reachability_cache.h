@@ -45,7 +45,7 @@ public:
 private:
     using MapFuture = std::shared_future<std::shared_ptr<const ReachabilityMap>>;
     struct Class;
-    struct Body {
+    struct BodyEntry {
         AgentCapabilities capabilities;
         std::array<uint64_t, 4> excluded_areas;
         std::shared_ptr<Class> map_class;
@@ -54,7 +54,7 @@ private:
 
     // Adds a body (once), forgetting the least recently used beyond kMaxBodies and the classes no
     // body holds any more; mutex_ held.
-    void remember(const Body& body);
+    void remember(const BodyEntry& body);
     // Drops a class whose build failed, and the bodies that point at it.
     void forget(const std::shared_ptr<Class>& map_class);
 
@@ -62,7 +62,7 @@ private:
     static uint64_t next_id();
     mutable std::mutex mutex_;
     std::atomic<bool> remembered_{false};  // a body was ever remembered: ready() may find a map
-    std::vector<Body> bodies_;
+    std::vector<BodyEntry> bodies_;
     std::vector<std::shared_ptr<Class>> classes_;
     uint64_t clock_ = 0;
 };

@@ -42,7 +42,7 @@ std::shared_ptr<CarrierFrame> NavMeshRegistry::frame_of_mesh(Handle mesh) const 
 }
 
 Handle NavMeshRegistry::add(std::shared_ptr<const NavMesh> navmesh, Handle carrier, const Transform& to_world,
-                            MadeFor made_for) {
+                            NavMeshProvenance made_for) {
     Entry e;
     e.navmesh = std::move(navmesh);
     e.made_for = std::move(made_for);
@@ -221,7 +221,7 @@ uint32_t NavMeshRegistry::remove_generated_links(Handle navmesh) {
     return static_cast<uint32_t>(before - e.link_ids.size());
 }
 
-void NavMeshRegistry::replace_links(Handle navmesh, const std::vector<Link>& links, LinksMadeWith made_with) {
+void NavMeshRegistry::replace_links(Handle navmesh, const std::vector<Link>& links, LinkProvenance made_with) {
     std::unique_lock lock(mutex_);
     Entry& e = entry(navmesh);
     erase_links(e, any_link);
@@ -237,7 +237,7 @@ NavMeshRegistry::Saved NavMeshRegistry::saved(Handle navmesh) const {
     return Saved{e.navmesh, snapshot_of(e), e.made_for, e.frame != nullptr};
 }
 
-MadeFor NavMeshRegistry::made_for(Handle navmesh) const {
+NavMeshProvenance NavMeshRegistry::made_for(Handle navmesh) const {
     std::shared_lock lock(mutex_);
     return entry(navmesh).made_for;
 }
@@ -257,7 +257,7 @@ LastGeneration NavMeshRegistry::last_generation(Handle navmesh) const {
 }
 
 void NavMeshRegistry::store_generation(Handle navmesh, LastGeneration last, const std::vector<Link>& generated,
-                                       LinksMadeWith made_with) {
+                                       LinkProvenance made_with) {
     std::unique_lock lock(mutex_);
     Entry& e = entry(navmesh);  // a navmesh removed meanwhile keeps nothing
     erase_links(e, generated_within);

@@ -17,7 +17,7 @@
 
 #include "links/link_generation.h"
 #include "links/link_snapshot.h"
-#include "navmesh/made_for.h"
+#include "navmesh/provenance.h"
 #include "navmesh/navmesh.h"
 #include "navmesh/carrier_pose.h"
 #include "path/path_graph.h"
@@ -43,7 +43,7 @@ public:
     // `carrier`: the movable mesh the navmesh rides (null: none), the navmesh in its space, placed at
     // `to_world` now; navmeshes on one mesh share its frame.
     Handle add(std::shared_ptr<const NavMesh> navmesh, Handle carrier = Handle{},
-               const Transform& to_world = Transform::Identity(), MadeFor made_for = {});
+               const Transform& to_world = Transform::Identity(), NavMeshProvenance made_for = {});
     // Removes the navmesh, its links, its last generation and its path graph together, and the cross
     // links of other navmeshes that land on it. Readers that
     // hold its navmesh, a snapshot or a graph keep them; a generation that finishes later keeps nothing.
@@ -79,15 +79,15 @@ public:
     // Removes the generated links; manual ones stay. The last generation is forgotten with them.
     uint32_t remove_generated_links(Handle navmesh);
     // Replaces every link (a links file, made with `made_with`); the last generation is forgotten.
-    void replace_links(Handle navmesh, const std::vector<Link>& links, LinksMadeWith made_with);
+    void replace_links(Handle navmesh, const std::vector<Link>& links, LinkProvenance made_with);
     // What the navmesh and its generated links were made for and with.
-    MadeFor made_for(Handle navmesh) const;
+    NavMeshProvenance made_for(Handle navmesh) const;
     // The navmesh, its links and what they were made with, read together (a baked file of one moment:
     // a generation finishing meanwhile is in all of it or in none).
     struct Saved {
         std::shared_ptr<const NavMesh> navmesh;
         std::shared_ptr<const LinkSnapshot> links;
-        MadeFor made_for;
+        NavMeshProvenance made_for;
         bool rides_carrier = false;
     };
     Saved saved(Handle navmesh) const;
@@ -124,7 +124,7 @@ public:
     LastGeneration last_generation(Handle navmesh) const;
     // A generation's result: its links replace the generated ones and it becomes the last generation
     // (made with `made_with`).
-    void store_generation(Handle navmesh, LastGeneration last, const std::vector<Link>& generated, LinksMadeWith made_with);
+    void store_generation(Handle navmesh, LastGeneration last, const std::vector<Link>& generated, LinkProvenance made_with);
     // An update's result: stored only while `from` is still the navmesh's last generation (not
     // forgotten by a removal or a load meanwhile); returns whether it was.
     bool store_update(Handle navmesh, const LinkGeneration* from, const std::vector<Link>& generated);
@@ -146,7 +146,7 @@ private:
         mutable std::shared_ptr<const LinkSnapshot> snapshot;  // null after an edit, until read
         mutable std::shared_ptr<const PathGraph> path_graph;   // for some snapshot; checked on read
         LastGeneration last;
-        MadeFor made_for;
+        NavMeshProvenance made_for;
         std::shared_ptr<std::mutex> generation_turn = std::make_shared<std::mutex>();
     };
     struct LinkEntry {

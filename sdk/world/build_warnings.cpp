@@ -23,7 +23,7 @@ std::string figure(float x) {
 
 }  // namespace
 
-void World::warn_of_level(const BuildTriangles& triangles, const AgentType& agent, MadeFor& made_for) const {
+void World::warn_of_level(const BuildTriangles& triangles, const AgentType& agent, NavMeshProvenance& made_for) const {
     made_for.turned_over_meshes = warn_turned_over(triangles, agent);
     made_for.warnings = warn_of_frame(triangles, agent) | (made_for.turned_over_meshes.empty() ? 0u : uint32_t(kWarnedClockwise));
 }

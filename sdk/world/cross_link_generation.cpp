@@ -27,14 +27,14 @@ Aabb grown(Aabb box, const LinkSettings& s) {
 }
 
 // Appends the polygons of `mesh` (placed at `pose`) whose world bounds meet `near`, marked `area`.
-void append_near(const NavMesh& mesh, const CarrierPose& pose, const Aabb& near, uint8_t area, NavMeshInput& out) {
-    for (uint32_t p = 0; p < mesh.polygon_count(); ++p) {
-        if (!overlaps(pose.world_box(mesh.polygon_bounds(p)), near)) continue;
-        for (uint32_t k = 0; k < mesh.corner_count(p); ++k) {
+void append_near(const NavMesh& navmesh, const CarrierPose& pose, const Aabb& near, uint8_t area, NavMeshInput& out) {
+    for (uint32_t p = 0; p < navmesh.polygon_count(); ++p) {
+        if (!overlaps(pose.world_box(navmesh.polygon_bounds(p)), near)) continue;
+        for (uint32_t k = 0; k < navmesh.corner_count(p); ++k) {
             out.indices.push_back(static_cast<uint32_t>(out.vertices.size()));
-            out.vertices.push_back(pose.world_point(mesh.vertex(mesh.corner(p, k))));
+            out.vertices.push_back(pose.world_point(navmesh.vertex(navmesh.corner(p, k))));
         }
-        out.polygon_sizes.push_back(static_cast<uint8_t>(mesh.corner_count(p)));
+        out.polygon_sizes.push_back(static_cast<uint8_t>(navmesh.corner_count(p)));
         out.areas.push_back(area);
     }
 }

@@ -1,5 +1,5 @@
 // What plugins give a world, as C++ interfaces: a navmesh builder and a link-kind provider. The core
-// knows plugins only through these; capi/ adapts the C plugin ABI (plugins/include/navlink/plugin.h)
+// knows plugins only through these; capi/ adapts the C plugin ABI (capi/include/navlink/plugin.h)
 // to them, and a C++ host or test may implement them directly.
 #pragma once
 

@@ -48,7 +48,7 @@ Transform World::carrier_placement(Handle carrier) const {
     return info.transform;
 }
 
-Handle World::add_on_carrier(std::shared_ptr<const NavMesh> navmesh, Handle carrier, MadeFor made_for) {
+Handle World::add_on_carrier(std::shared_ptr<const NavMesh> navmesh, Handle carrier, NavMeshProvenance made_for) {
     if (carrier == Handle{}) return navmeshes_.add(std::move(navmesh), Handle{}, Transform::Identity(), std::move(made_for));
     std::lock_guard lock(carrier_moves_);
     return navmeshes_.add(std::move(navmesh), carrier, carrier_placement(carrier), std::move(made_for));
@@ -161,7 +161,7 @@ Handle World::build_navmesh(const NavMeshBuildRequest& request) {
     fail_if_cancelled();
     // Said before the build: a level in the wrong units can take long to build, or fail for it.
     const BuildTriangles triangles = level_->triangles_to_build(request.carrier);
-    MadeFor made_for;
+    NavMeshProvenance made_for;
     warn_of_level(triangles, request.agent_type, made_for);
     BuiltNavMesh built;
     try {

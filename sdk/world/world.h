@@ -119,7 +119,7 @@ public:
     // Replaces every link of the navmesh with those of a links file made with `made_with` (empty:
     // not said) (place_saved_link; an end off the navmesh is a failure about
     // "links[i].start"); nothing changes when one is refused.
-    void load_links(Handle navmesh, std::vector<Link> links, LinksMadeWith made_with = {});
+    void load_links(Handle navmesh, std::vector<Link> links, LinkProvenance made_with = {});
     // The same for a links file that may say the body its links were generated for: one made for
     // another body than the navmesh's (same_body) is refused (InvalidArgument, both bodies named), or,
     // with `any_body`, loaded with a warning to the log.
@@ -157,7 +157,7 @@ public:
     void check_plugin_settings(const PluginSettings& settings) const;
 
 private:
-    // The link-kind plugins' links for `mesh`, and what ran (LinksMadeWith::plugins).
+    // The link-kind plugins' links for `mesh`, and what ran (LinkProvenance::plugins).
     struct PluginLinks {
         std::vector<Link> links;
         std::string made_with;
@@ -166,8 +166,8 @@ private:
                              LinkGenerationReport& report);
     void log_repairs(const NavMesh& navmesh) const;
     // What a build's input looks wrong in (winding_check.h, frame_check.h), each said in a warning
-    // in the log: the meshes that look wound clockwise, and MadeFor::warnings.
-    void warn_of_level(const BuildTriangles& triangles, const AgentType& agent, MadeFor& made_for) const;
+    // in the log: the meshes that look wound clockwise, and NavMeshProvenance::warnings.
+    void warn_of_level(const BuildTriangles& triangles, const AgentType& agent, NavMeshProvenance& made_for) const;
     std::vector<Handle> warn_turned_over(const BuildTriangles& triangles, const AgentType& agent) const;
     uint32_t warn_of_frame(const BuildTriangles& triangles, const AgentType& agent) const;
     // InvalidArgument for a navmesh that rides a moving mesh: the generator proves links against the
@@ -177,7 +177,7 @@ private:
     void place_host_link(Handle navmesh, Link& link) const;
     // The carrier's transform now, checked as a navmesh's placement; needs carrier_moves_ held.
     Transform carrier_placement(Handle carrier) const;
-    Handle add_on_carrier(std::shared_ptr<const NavMesh> navmesh, Handle carrier, MadeFor made_for = {});
+    Handle add_on_carrier(std::shared_ptr<const NavMesh> navmesh, Handle carrier, NavMeshProvenance made_for = {});
 
     HandleTag handle_tag_;  // released last, after every handle it tagged
     Logger logger_;

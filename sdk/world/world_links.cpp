@@ -88,7 +88,7 @@ void World::refuse_generation_on_carrier(Handle navmesh) const {
                                          "hold at one placement only): add its links with nl_link_add");
 }
 
-void World::load_links(Handle navmesh, std::vector<Link> links, LinksMadeWith made_with) {
+void World::load_links(Handle navmesh, std::vector<Link> links, LinkProvenance made_with) {
     const std::shared_ptr<const NavMesh> mesh = navmeshes_.navmesh(navmesh);
     for (size_t i = 0; i < links.size(); ++i) {
         naming_fields(concat("links[", i, "].").c_str(), [&] { place_saved_link(*mesh, links[i]); });
@@ -119,7 +119,7 @@ void World::load_links_file(Handle navmesh, LinksFile file, bool any_body) {
                              "; this navmesh was built from ", level_hash_text(ours), ")")
                     : std::string();
     try {
-        load_links(navmesh, std::move(file.links), file.made_for ? file.made_for->made_with : LinksMadeWith{});
+        load_links(navmesh, std::move(file.links), file.made_for ? file.made_for->made_with : LinkProvenance{});
     } catch (const Error& e) {
         if (!other_level || e.code() != ErrorCode::InvalidArgument) throw;
         throw Error(e.code(), concat(level_words, ": ", e.what()));
@@ -188,7 +188,7 @@ LinkGenerationReport World::generate_links(Handle navmesh, const LinkSettings& s
     PluginLinks extra = plugin_links(navmesh, *mesh, plugin_settings, report);
     links.insert(links.end(), extra.links.begin(), extra.links.end());
     navmeshes_.store_generation(navmesh, LastGeneration{std::move(generation), std::move(plugin_settings)}, links,
-                                LinksMadeWith{link_settings_to_json(settings), std::move(extra.made_with)});
+                                LinkProvenance{link_settings_to_json(settings), std::move(extra.made_with)});
     return report;
 }
 

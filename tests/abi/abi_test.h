@@ -1,16 +1,16 @@
 /*
  * What the files of navlink-abi-tests share: the counted checks, the case tables and the runner
- * (abi_test.c). Strict C11 through the C ABI only.
+ * (abi_tests.c). Strict C11 through the C ABI only.
  *
- * Each <section>_test.c file tests one section of navlink.h (plugin_abi_test.c: plugin.h). A case is
+ * Each <section>_tests.c file tests one section of navlink.h (plugin_abi_tests.c: plugin.h). A case is
  * a static void function listed in its file's table, and is named abi.<section>.<function>:
  *
  *     static void stale_ids(void) { ... CHECK(...); ... }
  *     ...
- *     ABI_SECTION(level, ABI_CASE(mesh_add_and_info), ABI_CASE(stale_ids), ...);   (in level_test.c)
+ *     ABI_SECTION(level, ABI_CASE(mesh_add_and_info), ABI_CASE(stale_ids), ...);   (in level_tests.c)
  *
  * A case left out of the table is an unused static function, which the strict warnings make a build
- * error. A new section is a new <section>_test.c named in tests/abi/CMakeLists.txt's section list,
+ * error. A new section is a new <section>_tests.c named in tests/abi/CMakeLists.txt's section list,
  * which also lists it for the runner (abi_sections.h). `navlink-abi-tests --list` prints the names;
  * ctest registers each as its own test (the build runs --list once the program is linked), so a case
  * added to a table shows up in ctest by itself.
@@ -85,7 +85,7 @@ typedef struct abi_section {
 
 #define ABI_CASE(fn) {#fn, fn}
 
-/* Defines the section `abi_section_<name>` (listed in abi_test.c) with the cases given. */
+/* Defines the section `abi_section_<name>` (listed in abi_tests.c) with the cases given. */
 #define ABI_SECTION(name, ...)                                  \
     static const abi_case abi_cases_##name[] = {__VA_ARGS__}; \
     const abi_section abi_section_##name = {#name, abi_cases_##name, sizeof abi_cases_##name / sizeof abi_cases_##name[0]}

@@ -3,7 +3,7 @@
  * in child processes (hostile_runner.c), and held against the public headers: each function, and
  * each of its parameters, needs the hostile cases its type calls for (hostile_coverage.c derives
  * them from the declarations). The cases are in one file per part of the headers,
- * hostile_<part>_test.c (base, world, level, navmesh, links, navmesh_file, paths, queries,
+ * hostile_<part>_tests.c (base, world, level, navmesh, links, navmesh_file, paths, queries,
  * agents, plugins; plugin_abi for plugin.h), on the worlds and with the helpers of
  * hostile_fixtures.c; hostile_main.c runs the parts in the headers' order. Strict C11 through the
  * C ABI only.
@@ -75,7 +75,7 @@ typedef struct hostile_group {
     void (*run)(void);
 } hostile_group;
 
-/* The groups of one part of the headers, in its file's table (hostile_<part>_test.c). A group holds
+/* The groups of one part of the headers, in its file's table (hostile_<part>_tests.c). A group holds
    the cases of one function (or a few the part declares together); hostile_main.c runs the parts in
    the order navlink.h includes them, plugin.h last. */
 typedef struct hostile_part {

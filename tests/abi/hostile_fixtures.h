@@ -1,7 +1,7 @@
 /*
  * What the cases of navlink-abi-hostile-test share (hostile_fixtures.c): the bad values, the two
  * worlds every group runs against, and the shapes the cases take (defs made bad field by field,
- * sizes, ids, lists, paths, savers). Each hostile_<part>_test.c includes it and holds the cases of
+ * sizes, ids, lists, paths, savers). Each hostile_<part>_tests.c includes it and holds the cases of
  * the functions its part of the headers declares. Strict C11 through the C ABI only.
  */
 #ifndef NAVLINK_ABI_HOSTILE_FIXTURES_H

@@ -23,7 +23,7 @@
  *
  * Two worlds, A (under test) and B (foreign), are built the same way in each child process (see
  * build_world in hostile_fixtures.c). The cases are in one file per part of the headers,
- * hostile_<part>_test.c, each with its table of groups; this file runs the parts in the headers'
+ * hostile_<part>_tests.c, each with its table of groups; this file runs the parts in the headers'
  * order. Each group runs in its own child (hostile_runner.c), so a crash names its case. At the
  * end, the coverage check (hostile_coverage.c) reads the public headers and fails for any NL_API
  * function, parameter or input field without its cases.

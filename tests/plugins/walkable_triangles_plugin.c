@@ -1,6 +1,6 @@
 /*
  * A navmesh-builder plugin loaded at run time by the plugin tests, written in C against
- * plugins/include/navlink/plugin.h only. Builder "walkable-triangles": every level triangle no steeper
+ * capi/include/navlink/plugin.h only. Builder "walkable-triangles": every level triangle no steeper
  * than the agent's max slope becomes a navmesh triangle. Compiled several times with one of:
  *   TEST_PLUGIN_OK          the working plugin
  *   TEST_PLUGIN_NO_ENTRY    exports no nl_plugin_entry

@@ -6,7 +6,7 @@ using NavLink;
 
 namespace NavLink.Tests
 {
-    // Agents on the bridge level (tests/abi/agents_test.c's): a jumper takes a generated jump across the gap
+    // Agents on the bridge level (tests/abi/agents_tests.c's): a jumper takes a generated jump across the gap
     // while a walker goes round by the bridge, as the states read in bulk and the step's events say; the
     // trajectory of the jump mid-flight; bad input refused. And a ferry (tests/core/world/surface_tests.cpp's): walkers
     // wait at a gangway for a shuttle, ride it across a chasm and get off on the far side, AgentInfo saying which

@@ -23,7 +23,7 @@
 //!   DetourCrowd Detour tbb z dl stdc++ m`. Nothing to find at run time then, so no check.
 //! - `NAVLINK_INCLUDE_DIRS`: folders holding `navlink/navlink.h`, `recast.h`, `plugin.h` and the generated
 //!   `version.h`, separated as PATH is (default: pkg-config's; with NAVLINK_LIB_DIR, the source tree's
-//!   `capi/include` and `plugins/include`, and `$NAVLINK_LIB_DIR/include`).
+//!   `capi/include` and `$NAVLINK_LIB_DIR/include`).
 //! - `CC`: the C compiler for the layout probe (default `cc`).
 use std::env;
 use std::fs;
@@ -90,7 +90,7 @@ fn main() {
     let include_dirs: Vec<PathBuf> = match env::var_os("NAVLINK_INCLUDE_DIRS") {
         Some(dirs) => env::split_paths(&dirs).collect(),
         None if !found.include_dirs.is_empty() => found.include_dirs.clone(),
-        None => vec![source_root.join("capi/include"), source_root.join("plugins/include"), lib_dir.join("include")],
+        None => vec![source_root.join("capi/include"), lib_dir.join("include")],
     };
     let out_dir = PathBuf::from(env::var("OUT_DIR").unwrap());
     write_layout(&include_dirs, &out_dir);

@@ -1,5 +1,5 @@
 /*
- * navlink/plugins.h: Plugins as the host loads them (plugins/include/navlink/plugin.h is the plugin's side).
+ * navlink/plugins.h: Plugins as the host loads them (capi/include/navlink/plugin.h is the plugin's side).
  * A part of navlink/navlink.h, which includes every part; its opening comment has the conventions.
  */
 #ifndef NAVLINK_PLUGINS_H
@@ -12,7 +12,7 @@ extern "C" {
 #endif
 
 /* ---------------------------------------------------------------------------------------------
- * Plugins (plugins/include/navlink/plugin.h has the plugin side of the ABI).
+ * Plugins (capi/include/navlink/plugin.h has the plugin side of the ABI).
  * ------------------------------------------------------------------------------------------- */
 
 /** Plugin kinds (bits of nl_plugin_description.kinds and nl_plugin_info.kinds). */

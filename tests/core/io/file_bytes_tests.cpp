@@ -47,7 +47,7 @@ std::string square_file() {
         in.vertices.emplace_back(x, 0.0f, z);
     }
     in.polygon_sizes.push_back(4);
-    const std::vector<uint8_t> bytes = write_navmesh_file(*build_navmesh(in), {}, MadeFor{}, false);
+    const std::vector<uint8_t> bytes = write_navmesh_file(*build_navmesh(in), {}, NavMeshProvenance{}, false);
     return std::string(bytes.begin(), bytes.end());
 }
 

@@ -165,7 +165,7 @@ TEST_CASE("a baked file says what it was made for: the body, the builder, the le
     CHECK(other->navmeshes().made_for(loaded).links.settings == read.made_for.links.settings);
     CHECK(other->navmeshes().made_for(loaded).builder_settings == read.made_for.builder_settings);
     // The link-kind plugins that ran are kept as recorded; a record that is not an object is refused.
-    nl::MadeFor with_plugins = read.made_for;
+    nl::NavMeshProvenance with_plugins = read.made_for;
     with_plugins.links.plugins = R"({"rope":{"plugin":"ropes","settings":{"length":3},"version":"1"}})";
     const auto held = b.world->navmeshes().navmesh(b.navmesh);
     const nl::NavMesh& mesh = *held;
@@ -180,7 +180,7 @@ TEST_CASE("a baked file says what it was made for: the body, the builder, the le
     CHECK_MESSAGE(message.find("the link-kind plugins are not a JSON object") != std::string::npos, message);
     // Whatever bytes a file names its builder with, describing it says so in valid JSON (the fuzzer
     // found a name that is not UTF-8 made the description fail).
-    nl::MadeFor odd = b.world->navmeshes().made_for(b.navmesh);
+    nl::NavMeshProvenance odd = b.world->navmeshes().made_for(b.navmesh);
     odd.builder = "r\xb3" "cast";
     const std::vector<uint8_t> file = nl::write_navmesh_file(mesh, {}, odd, false);
     const std::string json = nl::made_for_json(nl::read_navmesh_file(file.data(), file.size()));
@@ -279,7 +279,7 @@ TEST_CASE("a links file says the body its links were made for: another body's na
     narrow.radius = 0.3f;
     const Handle other = nl::test::build_recast_navmesh(*b.world, narrow);
     const auto mesh = b.world->navmeshes().navmesh(b.navmesh);
-    const nl::LinksMadeFor made_for{mesh->agent(),
+    const nl::LinksFileProvenance made_for{mesh->agent(),
                                     b.world->navmeshes().made_for(b.navmesh).links};
     std::vector<nl::Link> links;
     for (const nl::StoredLink& l : nl::test::links_of(*b.world, b.navmesh)) links.push_back(l.link);
@@ -288,7 +288,7 @@ TEST_CASE("a links file says the body its links were made for: another body's na
     REQUIRE(file.made_for);
     CHECK(file.made_for->agent_type.radius == nl::AgentType{}.radius);
     CHECK(file.made_for->made_with.settings == made_for.made_with.settings);
-    nl::LinksMadeFor plugged = made_for;
+    nl::LinksFileProvenance plugged = made_for;
     plugged.made_with.plugins = R"({"rope":{"plugin":"ropes","settings":{},"version":"1"}})";
     CHECK(nl::read_links_json(nl::links_to_json(links, &plugged)).made_for->made_with.plugins == plugged.made_with.plugins);
 

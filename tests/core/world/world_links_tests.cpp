@@ -2,7 +2,7 @@
 // them, edits, stale ids, JSON round trips, settings from JSON, cancelling, the generation report.
 // What the C layer adds on top (statuses, "def->" in messages, reading and checking nl_link_def and
 // nl_link_settings, buffers too small, outputs untouched on failure) is tested from C in
-// tests/abi/links_test.c; each case below says where.
+// tests/abi/links_tests.c; each case below says where.
 #include <doctest/doctest.h>
 
 #include <cmath>

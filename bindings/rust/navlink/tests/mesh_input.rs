@@ -1,4 +1,4 @@
-//! What a navmesh build takes from the level (tests/abi/navmesh_build_test.c's winding, mesh_roles,
+//! What a navmesh build takes from the level (tests/abi/navmesh_build_tests.c's winding, mesh_roles,
 //! mesh_areas and build_progress, with their geometry): the winding of a mesh's triangles, obstacles and
 //! meshes left out of builds, each mesh's area in the polygons built over it, a mesh's units; and a build's
 //! progress and cancel.

@@ -1,4 +1,4 @@
-//! navlink.h's "Queries on a navmesh for one body" (tests/abi/queries_test.c's cells): a navmesh of 1 m cells
+//! navlink.h's "Queries on a navmesh for one body" (tests/abi/queries_tests.c's cells): a navmesh of 1 m cells
 //! in one row, "..#..#..": polygons 0-1 (x in [0, 2]), 2-3 (x in [3, 5]) and 4-5 (x in [6, 8]), z in [0, 1],
 //! y = 0, for radius 0; a one-way manual link from cell 1's centre to cell 3's (2 m: its gap). A jumper (3 m)
 //! takes it, a walker does not. And find_nearest's point beyond its box. The same checks as the C# and Python

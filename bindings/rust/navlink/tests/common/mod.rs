@@ -37,7 +37,7 @@ pub fn add_gap_level(world: &World) {
     add_box(world, [-12.0, -21.0, -6.0], [12.0, -20.0, 6.0]);
 }
 
-/// "bridge" (tests/abi/agents_test.c's level): two 4 x 10 m platforms (tops at y = 0) 2 m apart along x,
+/// "bridge" (tests/abi/agents_tests.c's level): two 4 x 10 m platforms (tops at y = 0) 2 m apart along x,
 /// x in [0, 4] and [6, 10], z in [0, 10], joined by a bridge at z 8-10; the host's navmesh is their tops
 /// set in 0.3 m from every rim (five convex polygons, for radius 0.3), its links generated. A walker goes
 /// round by the bridge; a jumper jumps the gap.

@@ -1,7 +1,7 @@
 /*
  * Plugins (navlink.h): the built-in plugin listed and described, the two-call pattern, and
  * nl_plugin_load's refusals of files that are not plugins. (Plugins registered from this program, the
- * plugin side of the ABI, are in plugin_abi_test.c.)
+ * plugin side of the ABI, are in plugin_abi_tests.c.)
  */
 #include "abi_test.h"
 #include "navmesh_scene.h"

@@ -1,4 +1,4 @@
-// What a navmesh and its links were made for and with, kept beside them in the world and saved with
+// Provenance: what a navmesh and its links were made for and with, kept beside them in the world and saved with
 // them, so that a baked file says what it was baked for (navlink info, nl_navmesh_load).
 #pragma once
 
@@ -11,19 +11,19 @@
 namespace nl {
 
 // What a navmesh's links were generated with, as JSON texts (empty: nothing recorded).
-struct LinksMadeWith {
+struct LinkProvenance {
     std::string settings;  // the link generation settings (link_settings_to_json)
     // Each link-kind plugin that ran: {"KIND": {"plugin": name, "version": v, "settings": {...}}}.
     std::string plugins;
 };
 
-struct MadeFor {
+struct NavMeshProvenance {
     std::string builder;  // the builder plugin's name; empty: polygons handed over by the host
     // The settings it built with, as a JSON object: complete when the builder said what it used
     // (the Recast builder does), else as it was given; empty: neither.
     std::string builder_settings;
     uint64_t level_hash = 0;  // of the triangles it was built from (level_hash.h); 0: not built from the level
-    LinksMadeWith links;      // of its generated links
+    LinkProvenance links;      // of its generated links
     // The meshes it was built on that looked wound clockwise (level/winding_check.h): the build's
     // warning. Not kept in navmesh files.
     std::vector<Handle> turned_over_meshes;

@@ -27,7 +27,7 @@
 
 /* ---------------------------------------------------------------------------------------------
  * The sections, in the header's order: abi_sections.h is written by CMake from the list of
- * <section>_test.c files it builds (tests/abi/CMakeLists.txt), one ABI_SECTION_ENTRY(section) each.
+ * <section>_tests.c files it builds (tests/abi/CMakeLists.txt), one ABI_SECTION_ENTRY(section) each.
  * ------------------------------------------------------------------------------------------- */
 
 #define ABI_SECTION_ENTRY(section) extern const abi_section abi_section_##section;

@@ -1,4 +1,4 @@
-#include "agent_reads.h"
+#include "world_agents.h"
 
 #include "sample_error.h"
 
