@@ -12,8 +12,8 @@ class Random {
 public:
     explicit Random(uint32_t seed) : engine_(seed) {}
     float uniform(float lo, float hi) {
-        const double unit = static_cast<double>(engine_() - engine_.min()) /
-                            (static_cast<double>(engine_.max() - engine_.min()) + 1.0);
+        const double unit =
+            static_cast<double>(engine_() - engine_.min()) / (static_cast<double>(engine_.max() - engine_.min()) + 1.0);
         return lo + static_cast<float>(unit) * (hi - lo);
     }
 
@@ -190,71 +190,76 @@ GeneratedLevel generate_large_level(uint32_t seed, uint32_t blocks, float ground
             const bool flip = rng.uniform(0.0f, 1.0f) < 0.5f;  // features run along x or along z
             // A box in block-local coordinates (u along the feature, v across it), y absolute.
             auto put = [&](float u0, float y0, float v0, float u1, float y1, float v1) {
-                if (flip) level.add_box(box(ox + v0, y0, oz + u0, ox + v1, y1, oz + u1));
-                else level.add_box(box(ox + u0, y0, oz + v0, ox + u1, y1, oz + v1));
+                if (flip)
+                    level.add_box(box(ox + v0, y0, oz + u0, ox + v1, y1, oz + u1));
+                else
+                    level.add_box(box(ox + u0, y0, oz + v0, ox + u1, y1, oz + v1));
             };
             const auto kind = static_cast<int>(rng.uniform(0.0f, 7.0f));
             switch (kind) {
-            case 0: {  // two platforms across a gap (jumpable below about 2.8 m, given the agent radius)
-                const float length = rng.uniform(3.5f, 4.5f), gap = rng.uniform(1.0f, 3.5f);
-                const float v0 = rng.uniform(1.0f, 3.0f), v1 = v0 + rng.uniform(4.0f, 7.0f);
-                const float top = rng.uniform(1.2f, 3.5f), other = top + rng.uniform(-0.8f, 0.8f);
-                put(1.0f, base, v0, 1.0f + length, top, v1);
-                put(1.0f + length + gap, base, v0, 11.0f, other, v1);
-                break;
-            }
-            case 1: {  // terraces stepping up 1.2 m (too high to walk up), with small gaps between
-                const float first = rng.uniform(1.0f, 1.4f), depth = rng.uniform(5.0f, 9.0f);
-                float u = 1.5f;
-                for (int step = 0; step < 3; ++step) {
-                    put(u, base, 1.5f, u + 2.8f, first + 1.2f * step, 1.5f + depth);
-                    u += 2.8f + rng.uniform(0.0f, 0.8f);
+                case 0: {  // two platforms across a gap (jumpable below about 2.8 m, given the agent radius)
+                    const float length = rng.uniform(3.5f, 4.5f), gap = rng.uniform(1.0f, 3.5f);
+                    const float v0 = rng.uniform(1.0f, 3.0f), v1 = v0 + rng.uniform(4.0f, 7.0f);
+                    const float top = rng.uniform(1.2f, 3.5f), other = top + rng.uniform(-0.8f, 0.8f);
+                    put(1.0f, base, v0, 1.0f + length, top, v1);
+                    put(1.0f + length + gap, base, v0, 11.0f, other, v1);
+                    break;
                 }
-                break;
-            }
-            case 2: {  // parkour pillars: a 2 x 2 grid, some too tall to drop from
-                const float size = rng.uniform(2.5f, 3.0f);
-                const float gap_u = rng.uniform(1.0f, 2.5f), gap_v = rng.uniform(1.0f, 2.5f);
-                for (int i = 0; i < 2; ++i)
-                    for (int j = 0; j < 2; ++j) {
-                        const float u0 = 1.5f + i * (size + gap_u), v0 = 1.5f + j * (size + gap_v);
-                        put(u0, base, v0, u0 + size, rng.uniform(1.0f, 7.0f), v0 + size);
+                case 1: {  // terraces stepping up 1.2 m (too high to walk up), with small gaps between
+                    const float first = rng.uniform(1.0f, 1.4f), depth = rng.uniform(5.0f, 9.0f);
+                    float u = 1.5f;
+                    for (int step = 0; step < 3; ++step) {
+                        put(u, base, 1.5f, u + 2.8f, first + 1.2f * step, 1.5f + depth);
+                        u += 2.8f + rng.uniform(0.0f, 0.8f);
                     }
-                break;
-            }
-            case 3: {  // a 2 m jump blocked by a wall in the gap, or by a low slab over it
-                const float top = rng.uniform(1.5f, 2.5f), v1 = rng.uniform(7.0f, 10.0f);
-                put(1.0f, base, 1.0f, 5.0f, top, v1);
-                put(7.0f, base, 1.0f, 11.0f, top, v1);
-                if (rng.uniform(0.0f, 1.0f) < 0.5f) put(5.8f, base, 0.5f, 6.2f, top + 3.0f, v1 + 0.5f);
-                else put(3.5f, top + 1.6f, 0.5f, 8.5f, top + 2.0f, v1 + 0.5f);
-                break;
-            }
-            case 4: {  // a deck around a pit (jumped across, or dropped into), with stairs up to it
-                const float top = rng.uniform(2.4f, 3.0f);
-                const float p0 = rng.uniform(4.0f, 4.5f), p1 = p0 + rng.uniform(2.5f, 3.0f);
-                const float q0 = rng.uniform(4.5f, 5.5f), q1 = q0 + rng.uniform(2.5f, 3.0f);
-                put(2.0f, base, 2.0f, 11.0f, top, p0);    // in front of the pit
-                put(2.0f, base, p1, 11.0f, top, 10.5f);   // behind it
-                put(2.0f, base, p0, q0, top, p1);         // beside it
-                put(q1, base, p0, 11.0f, top, p1);        // on its other side
-                const int steps = static_cast<int>(std::ceil(top / 0.3f));
-                const float tread = 1.7f / steps;
-                for (int k = 0; k < steps; ++k)  // in front of the deck, rising towards it
-                    put(4.0f, base, 0.3f + tread * k, 7.0f, top * (k + 1) / steps, 2.0f);
-                break;
-            }
-            case 5: {  // open ground with a low wall (too high to step over, too thin to stand on)
-                const float v = rng.uniform(3.0f, 9.0f), u0 = rng.uniform(1.0f, 3.0f), u1 = rng.uniform(8.0f, 11.0f);
-                put(u0, base, v, u1, 1.2f, v + 0.3f);
-                break;
-            }
-            default: {  // a tower with a ledge part-way down
-                const float top = rng.uniform(5.5f, 7.0f), ledge = rng.uniform(2.5f, 3.5f);
-                put(1.5f, base, 2.0f, 7.5f, top, 9.0f);
-                put(7.5f, base, 2.0f, 10.5f, ledge, 9.0f);
-                break;
-            }
+                    break;
+                }
+                case 2: {  // parkour pillars: a 2 x 2 grid, some too tall to drop from
+                    const float size = rng.uniform(2.5f, 3.0f);
+                    const float gap_u = rng.uniform(1.0f, 2.5f), gap_v = rng.uniform(1.0f, 2.5f);
+                    for (int i = 0; i < 2; ++i)
+                        for (int j = 0; j < 2; ++j) {
+                            const float u0 = 1.5f + i * (size + gap_u), v0 = 1.5f + j * (size + gap_v);
+                            put(u0, base, v0, u0 + size, rng.uniform(1.0f, 7.0f), v0 + size);
+                        }
+                    break;
+                }
+                case 3: {  // a 2 m jump blocked by a wall in the gap, or by a low slab over it
+                    const float top = rng.uniform(1.5f, 2.5f), v1 = rng.uniform(7.0f, 10.0f);
+                    put(1.0f, base, 1.0f, 5.0f, top, v1);
+                    put(7.0f, base, 1.0f, 11.0f, top, v1);
+                    if (rng.uniform(0.0f, 1.0f) < 0.5f)
+                        put(5.8f, base, 0.5f, 6.2f, top + 3.0f, v1 + 0.5f);
+                    else
+                        put(3.5f, top + 1.6f, 0.5f, 8.5f, top + 2.0f, v1 + 0.5f);
+                    break;
+                }
+                case 4: {  // a deck around a pit (jumped across, or dropped into), with stairs up to it
+                    const float top = rng.uniform(2.4f, 3.0f);
+                    const float p0 = rng.uniform(4.0f, 4.5f), p1 = p0 + rng.uniform(2.5f, 3.0f);
+                    const float q0 = rng.uniform(4.5f, 5.5f), q1 = q0 + rng.uniform(2.5f, 3.0f);
+                    put(2.0f, base, 2.0f, 11.0f, top, p0);   // in front of the pit
+                    put(2.0f, base, p1, 11.0f, top, 10.5f);  // behind it
+                    put(2.0f, base, p0, q0, top, p1);        // beside it
+                    put(q1, base, p0, 11.0f, top, p1);       // on its other side
+                    const int steps = static_cast<int>(std::ceil(top / 0.3f));
+                    const float tread = 1.7f / steps;
+                    for (int k = 0; k < steps; ++k)  // in front of the deck, rising towards it
+                        put(4.0f, base, 0.3f + tread * k, 7.0f, top * (k + 1) / steps, 2.0f);
+                    break;
+                }
+                case 5: {  // open ground with a low wall (too high to step over, too thin to stand on)
+                    const float v = rng.uniform(3.0f, 9.0f), u0 = rng.uniform(1.0f, 3.0f),
+                                u1 = rng.uniform(8.0f, 11.0f);
+                    put(u0, base, v, u1, 1.2f, v + 0.3f);
+                    break;
+                }
+                default: {  // a tower with a ledge part-way down
+                    const float top = rng.uniform(5.5f, 7.0f), ledge = rng.uniform(2.5f, 3.5f);
+                    put(1.5f, base, 2.0f, 7.5f, top, 9.0f);
+                    put(7.5f, base, 2.0f, 10.5f, ledge, 9.0f);
+                    break;
+                }
             }
         }
     }

@@ -19,11 +19,10 @@ using nl::capi::to_id;
 
 namespace {
 
-
-static_assert(uint32_t(nl::AgentState::Failed) == NL_AGENT_FAILED && uint32_t(nl::AgentState::Waiting) == NL_AGENT_WAITING,
+static_assert(uint32_t(nl::AgentState::Failed) == NL_AGENT_FAILED &&
+                  uint32_t(nl::AgentState::Waiting) == NL_AGENT_WAITING,
               "core and header disagree on agent states");
-static_assert(uint32_t(nl::AgentReason::Crowd) == NL_AGENT_REASON_CROWD,
-              "core and header disagree on agent reasons");
+static_assert(uint32_t(nl::AgentReason::Crowd) == NL_AGENT_REASON_CROWD, "core and header disagree on agent reasons");
 static_assert(uint32_t(nl::AgentEventKind::Waiting) == NL_AGENT_EVENT_WAITING, "core and header disagree on events");
 
 nl_trajectory_kind trajectory_kind(nl::MotionKind kind) {
@@ -42,7 +41,8 @@ nl::AgentCapabilities to_core(const nl_agent_capabilities& c) {
 }
 
 nl::AgentDef agent_from_def(const nl_agent_def& given) {
-    const nl_agent_def def = nl::capi::read_growable(given, nl_default_agent_def(), nl::capi::kFirstSize<nl_agent_def>, "def");
+    const nl_agent_def def =
+        nl::capi::read_growable(given, nl_default_agent_def(), nl::capi::kFirstSize<nl_agent_def>, "def");
     nl::AgentDef out;
     out.navmesh = to_handle(def.navmesh);
     out.capabilities = to_core(def.capabilities);
@@ -141,7 +141,8 @@ NL_API nl_status nl_agent_teleport(nl_world* world, nl_agent_id agent, const flo
     });
 }
 
-NL_API nl_status nl_agent_set_capabilities(nl_world* world, nl_agent_id agent, const nl_agent_capabilities* capabilities) {
+NL_API nl_status nl_agent_set_capabilities(nl_world* world, nl_agent_id agent,
+                                           const nl_agent_capabilities* capabilities) {
     return guarded("nl_agent_set_capabilities", world, [&] {
         nl::World& w = deref(world);
         w.agents().info(to_handle(agent));
@@ -170,24 +171,26 @@ NL_API nl_status nl_agent_get_info(const nl_world* world, nl_agent_id agent, nl_
     });
 }
 
-NL_API nl_status nl_world_get_agents(const nl_world* world, nl_agent_info* out_infos, uint32_t capacity, uint32_t* out_count) {
+NL_API nl_status nl_world_get_agents(const nl_world* world, nl_agent_info* out_infos, uint32_t capacity,
+                                     uint32_t* out_count) {
     return guarded("nl_world_get_agents", world, [&] {
         const std::vector<nl::AgentInfo> infos = deref(world).agents().infos();
-        nl::capi::list_growable_into(infos, out_infos, capacity, out_count, nl::capi::kFirstSize<nl_agent_info>, "out_infos",
-                                     [](const nl::AgentInfo& a) { return to_c(a); });
+        nl::capi::list_growable_into(infos, out_infos, capacity, out_count, nl::capi::kFirstSize<nl_agent_info>,
+                                     "out_infos", [](const nl::AgentInfo& a) { return to_c(a); });
     });
 }
 
-NL_API nl_status nl_agent_get_corners(const nl_world* world, nl_agent_id agent, nl_path_point* out_points, uint32_t capacity,
-                                      uint32_t* out_count) {
+NL_API nl_status nl_agent_get_corners(const nl_world* world, nl_agent_id agent, nl_path_point* out_points,
+                                      uint32_t capacity, uint32_t* out_count) {
     return guarded("nl_agent_get_corners", world, [&] {
         const std::vector<nl::PathPoint> corners = deref(world).agents().corners(to_handle(agent));
-        nl::capi::list_growable_into(corners, out_points, capacity, out_count, nl::capi::kFirstSize<nl_path_point>, "out_points",
-                                     [](const nl::PathPoint& p) { return nl::capi::to_c(p); });
+        nl::capi::list_growable_into(corners, out_points, capacity, out_count, nl::capi::kFirstSize<nl_path_point>,
+                                     "out_points", [](const nl::PathPoint& p) { return nl::capi::to_c(p); });
     });
 }
 
-NL_API nl_status nl_agent_get_trajectory(const nl_world* world, nl_agent_id agent, nl_agent_trajectory* out_trajectory) {
+NL_API nl_status nl_agent_get_trajectory(const nl_world* world, nl_agent_id agent,
+                                         nl_agent_trajectory* out_trajectory) {
     return guarded("nl_agent_get_trajectory", world, [&] {
         const nl::Agents::Flight flight = deref(world).agents().flight(to_handle(agent));
         require(out_trajectory, "out_trajectory");
@@ -209,8 +212,9 @@ NL_API nl_status nl_agent_get_trajectory(const nl_world* world, nl_agent_id agen
         copy_point(t.apex, pose.world_point(motion->apex()));
         const auto& fall = motion->fall_points();
         for (int k = 0; k < 4; ++k)
-            copy_point(t.points[k],
-                       pose.world_point(motion->kind() == nl::MotionKind::Fall ? fall[k] : (k < 2 ? motion->from() : motion->to())));
+            copy_point(t.points[k], pose.world_point(motion->kind() == nl::MotionKind::Fall
+                                                         ? fall[k]
+                                                         : (k < 2 ? motion->from() : motion->to())));
         t.duration = motion->duration();
         t.elapsed = flight.elapsed;
         nl::capi::write_growable(out_trajectory, t, nl::capi::kFirstSize<nl_agent_trajectory>, "out_trajectory");
@@ -221,8 +225,8 @@ NL_API nl_status nl_world_get_agent_events(const nl_world* world, nl_agent_event
                                            uint32_t* out_count) {
     return guarded("nl_world_get_agent_events", world, [&] {
         const std::vector<nl::AgentEvent> events = deref(world).agents().events();
-        nl::capi::list_growable_into(events, out_events, capacity, out_count, nl::capi::kFirstSize<nl_agent_event>, "out_events",
-                                     [](const nl::AgentEvent& e) {
+        nl::capi::list_growable_into(events, out_events, capacity, out_count, nl::capi::kFirstSize<nl_agent_event>,
+                                     "out_events", [](const nl::AgentEvent& e) {
                                          nl_agent_event c{};
                                          c.size = sizeof c;
                                          c.kind = static_cast<nl_agent_event_kind>(e.kind);

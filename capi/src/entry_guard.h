@@ -62,7 +62,8 @@ void list_into(size_t count, const void* out, uint32_t capacity, uint32_t* out_c
     if (!out && capacity > 0) fail(ErrorCode::InvalidArgument, out_name, " is null but capacity is ", capacity);
     *out_count = static_cast<uint32_t>(count);
     if (!out) return;
-    if (count > capacity) fail(ErrorCode::BufferTooSmall, "capacity is ", capacity, " but ", count, " entries are needed");
+    if (count > capacity)
+        fail(ErrorCode::BufferTooSmall, "capacity is ", capacity, " but ", count, " entries are needed");
     write_all();
 }
 
@@ -84,11 +85,12 @@ public:
     // most uninitialised memory (a malloc'd array whose first `size` was never set).
     static constexpr uint32_t kLargestElement = 4096;
 
-    ElementWriter(T* out, size_t first_version_size, const char* out_name) : bytes_(reinterpret_cast<unsigned char*>(out)) {
+    ElementWriter(T* out, size_t first_version_size, const char* out_name)
+        : bytes_(reinterpret_cast<unsigned char*>(out)) {
         stride_ = out->size;
         if (stride_ < first_version_size || stride_ > kLargestElement || stride_ % alignof(T) != 0)
-            fail(ErrorCode::InvalidArgument, out_name, "[0].size is ", stride_, ", expected sizeof (at least ", first_version_size,
-                 ", a multiple of ", alignof(T), "; set it with its nl_*_init function)");
+            fail(ErrorCode::InvalidArgument, out_name, "[0].size is ", stride_, ", expected sizeof (at least ",
+                 first_version_size, ", a multiple of ", alignof(T), "; set it with its nl_*_init function)");
     }
     void write(size_t i, T value) const {
         value.size = stride_;
@@ -122,8 +124,9 @@ void list_growable_into(const std::vector<Item>& items, Out* out, uint32_t capac
 template <typename T>
 T read_growable(const T& in, T defaults, size_t first_version_size, const char* name) {
     if (in.size < first_version_size || in.size % alignof(T) != 0)
-        fail(ErrorCode::InvalidArgument, name, "->size is ", in.size, ", expected sizeof (at least ", first_version_size,
-             ", a multiple of ", alignof(T), "; initialise it from its nl_default_* function or with sizeof)");
+        fail(ErrorCode::InvalidArgument, name, "->size is ", in.size, ", expected sizeof (at least ",
+             first_version_size, ", a multiple of ", alignof(T),
+             "; initialise it from its nl_default_* function or with sizeof)");
     std::memcpy(&defaults, &in, std::min<size_t>(in.size, sizeof(T)));
     defaults.size = static_cast<uint32_t>(sizeof(T));
     return defaults;
@@ -134,8 +137,8 @@ T read_growable(const T& in, T defaults, size_t first_version_size, const char* 
 template <typename T>
 void check_growable_output(const T* out, size_t first_version_size, const char* name) {
     if (out->size < first_version_size || out->size % alignof(T) != 0)
-        fail(ErrorCode::InvalidArgument, name, "->size is ", out->size, ", expected sizeof (at least ", first_version_size,
-             ", a multiple of ", alignof(T), "; set it to sizeof or with its nl_*_init function)");
+        fail(ErrorCode::InvalidArgument, name, "->size is ", out->size, ", expected sizeof (at least ",
+             first_version_size, ", a multiple of ", alignof(T), "; set it to sizeof or with its nl_*_init function)");
 }
 
 // Writes an output struct into as many bytes as the caller's struct has (its `size`, kept as is).

@@ -5,10 +5,10 @@
 
 #include "generated_fields.h"
 
-#define NL_COPY_FIELDS(FIELDS, to, from)      \
-    do {                                      \
-        auto& nl_copy_to_ = (to);             \
-        const auto& nl_copy_from_ = (from);   \
-        FIELDS(NL_COPY_ONE_FIELD_)            \
+#define NL_COPY_FIELDS(FIELDS, to, from)    \
+    do {                                    \
+        auto& nl_copy_to_ = (to);           \
+        const auto& nl_copy_from_ = (from); \
+        FIELDS(NL_COPY_ONE_FIELD_)          \
     } while (0)
 #define NL_COPY_ONE_FIELD_(field) nl_copy_to_.field = nl_copy_from_.field;

@@ -26,11 +26,15 @@ inline constexpr size_t kFirstSize<nl_agent_trajectory> = sizeof(nl_agent_trajec
 template <>
 inline constexpr size_t kFirstSize<nl_link> = offsetof(nl_link, requirements) + sizeof(nl_link_requirements);
 template <>
-inline constexpr size_t kFirstSize<nl_link_def> = offsetof(nl_link_def, requirements) + offsetof(nl_link_requirements, length);
+inline constexpr size_t kFirstSize<nl_link_def> = offsetof(nl_link_def, requirements) +
+                                                  offsetof(nl_link_requirements, length);
 template <>
-inline constexpr size_t kFirstSize<nl_link_generation_report> = offsetof(nl_link_generation_report, milliseconds_total) + sizeof(double);
+inline constexpr size_t kFirstSize<nl_link_generation_report> = offsetof(nl_link_generation_report,
+                                                                         milliseconds_total) +
+                                                                sizeof(double);
 template <>
-inline constexpr size_t kFirstSize<nl_link_settings> = offsetof(nl_link_settings, plugin_settings_json_length) + sizeof(size_t);
+inline constexpr size_t kFirstSize<nl_link_settings> = offsetof(nl_link_settings, plugin_settings_json_length) +
+                                                       sizeof(size_t);
 template <>
 inline constexpr size_t kFirstSize<nl_mesh_def> = offsetof(nl_mesh_def, user_data) + sizeof(uint64_t);
 template <>
@@ -38,9 +42,11 @@ inline constexpr size_t kFirstSize<nl_mesh_info> = offsetof(nl_mesh_info, user_d
 template <>
 inline constexpr size_t kFirstSize<nl_nav_polygon> = sizeof(nl_nav_polygon);
 template <>
-inline constexpr size_t kFirstSize<nl_navmesh_build_def> = offsetof(nl_navmesh_build_def, settings_json_length) + sizeof(size_t);
+inline constexpr size_t kFirstSize<nl_navmesh_build_def> = offsetof(nl_navmesh_build_def, settings_json_length) +
+                                                           sizeof(size_t);
 template <>
-inline constexpr size_t kFirstSize<nl_navmesh_def> = offsetof(nl_navmesh_def, detail_triangle_starts) + sizeof(const uint32_t*);
+inline constexpr size_t kFirstSize<nl_navmesh_def> = offsetof(nl_navmesh_def, detail_triangle_starts) +
+                                                     sizeof(const uint32_t*);
 template <>
 inline constexpr size_t kFirstSize<nl_navmesh_file_info> = sizeof(nl_navmesh_file_info);
 template <>
@@ -62,7 +68,8 @@ inline constexpr size_t kFirstSize<nl_path_request_def> = offsetof(nl_path_reque
 template <>
 inline constexpr size_t kFirstSize<nl_path_result> = offsetof(nl_path_result, goal) + 3 * sizeof(float);
 template <>
-inline constexpr size_t kFirstSize<nl_plugin_description> = offsetof(nl_plugin_description, description) + sizeof(const char*);
+inline constexpr size_t kFirstSize<nl_plugin_description> = offsetof(nl_plugin_description, description) +
+                                                            sizeof(const char*);
 template <>
 inline constexpr size_t kFirstSize<nl_query_filter> = sizeof(nl_query_filter);
 template <>

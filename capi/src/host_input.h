@@ -30,7 +30,8 @@ Vec3 read_position(const float* p, const Name&... name) {
     const Vec3 v(p[0], p[1], p[2]);
     if (!v.allFinite()) fail_field(ErrorCode::InvalidArgument, name..., " is not finite");
     if (!within_coordinate_limit(v))
-        fail_field(ErrorCode::InvalidArgument, name..., " is beyond the coordinate limit of +-", kCoordinateLimit, " m");
+        fail_field(ErrorCode::InvalidArgument, name..., " is beyond the coordinate limit of +-", kCoordinateLimit,
+                   " m");
     return v;
 }
 

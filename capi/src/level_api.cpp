@@ -80,19 +80,22 @@ nl_mesh_id add_mesh(nl::World& world, const nl::TriangleMesh& mesh, const nl_mes
                     const char* source = nullptr) {
     const nl::Handle h = [&] {
         try {
-            if (def.reserved != 0) nl::fail_field(ErrorCode::InvalidArgument, "reserved is ", def.reserved, " (must be 0)");
-            return world.level().add_mesh(mesh, read_transform(def.transform), def.flags, def.user_data, def.area, read_frame(def));
+            if (def.reserved != 0)
+                nl::fail_field(ErrorCode::InvalidArgument, "reserved is ", def.reserved, " (must be 0)");
+            return world.level().add_mesh(mesh, read_transform(def.transform), def.flags, def.user_data, def.area,
+                                          read_frame(def));
         } catch (const nl::Error& e) {
             if (!e.starts_with_field()) throw;
-            if (source && about_geometry(e.what())) throw nl::Error(e.code(), nl::concat(source, ": ", obj_words(e.what())));
+            if (source && about_geometry(e.what()))
+                throw nl::Error(e.code(), nl::concat(source, ": ", obj_words(e.what())));
             throw nl::Error(e.code(), nl::concat("def->", e.what()), true);
         }
     }();
     const nl::MeshInfo info = world.level().info(h);
     if (info.degenerate_triangle_count > 0) {
-        world.logger().log(nl::LogLevel::Warning,
-                           nl::concat(function, ": skipped ", info.degenerate_triangle_count, " degenerate triangles of ",
-                                      info.degenerate_triangle_count + info.triangle_count));
+        world.logger().log(nl::LogLevel::Warning, nl::concat(function, ": skipped ", info.degenerate_triangle_count,
+                                                             " degenerate triangles of ",
+                                                             info.degenerate_triangle_count + info.triangle_count));
     }
     return to_id<nl_mesh_id>(h);
 }
@@ -102,7 +105,9 @@ nl_mesh_def obj_options(const nl_mesh_def* in) {
     if (!in) return nl_default_mesh_def();
     const nl_mesh_def def = read_def(*in);
     if (def.vertices || def.indices || def.vertex_count || def.triangle_count)
-        fail(ErrorCode::InvalidArgument, "def carries geometry; for an OBJ load only flags, transform, user_data, area, metres_per_unit and up_axis apply");
+        fail(ErrorCode::InvalidArgument,
+             "def carries geometry; for an OBJ load only flags, transform, user_data, area, metres_per_unit and "
+             "up_axis apply");
     return def;
 }
 
@@ -161,7 +166,8 @@ void segments_blocked(const World& world, const nl_segment* segments, uint32_t c
     require(out_blocked, "out_blocked");
     std::vector<Segment> batch(count);
     for (uint32_t i = 0; i < count; ++i)
-        batch[i] = Segment{read_point(segments[i].from, "segments", i, "from"), read_point(segments[i].to, "segments", i, "to")};
+        batch[i] = Segment{read_point(segments[i].from, "segments", i, "from"),
+                           read_point(segments[i].to, "segments", i, "to")};
     world.level().segments_blocked(batch.data(), count, out_blocked);
 }
 
@@ -181,12 +187,12 @@ NL_API nl_status nl_mesh_add(nl_world* world, const nl_mesh_def* def, nl_mesh_id
         require(def, "def");
         require(out_id, "out_id");
         const nl_mesh_def settings = read_def(*def);
-        *out_id = add_mesh(w, nl::naming_fields("def->", [&] { return read_def_geometry(settings); }), settings, "nl_mesh_add");
+        *out_id = add_mesh(w, nl::naming_fields("def->", [&] { return read_def_geometry(settings); }), settings,
+                           "nl_mesh_add");
     });
 }
 
-NL_API nl_status nl_mesh_add_obj_file(nl_world* world, const char* path, const nl_mesh_def* def,
-                                      nl_mesh_id* out_id) {
+NL_API nl_status nl_mesh_add_obj_file(nl_world* world, const char* path, const nl_mesh_def* def, nl_mesh_id* out_id) {
     return guarded("nl_mesh_add_obj_file", world, [&] {
         nl::World& w = deref(world);
         require(path, "path");
@@ -196,15 +202,15 @@ NL_API nl_status nl_mesh_add_obj_file(nl_world* world, const char* path, const n
     });
 }
 
-NL_API nl_status nl_mesh_add_obj_memory(nl_world* world, const char* data, size_t length,
-                                        const nl_mesh_def* def, nl_mesh_id* out_id) {
+NL_API nl_status nl_mesh_add_obj_memory(nl_world* world, const char* data, size_t length, const nl_mesh_def* def,
+                                        nl_mesh_id* out_id) {
     return guarded("nl_mesh_add_obj_memory", world, [&] {
         nl::World& w = deref(world);
         if (length > 0) require(data, "data");
         require(out_id, "out_id");
         const nl_mesh_def options = obj_options(def);
-        *out_id = add_mesh(w, nl::read_obj_text(std::string_view(data ? data : "", length)), options, "nl_mesh_add_obj_memory",
-                           "data");
+        *out_id = add_mesh(w, nl::read_obj_text(std::string_view(data ? data : "", length)), options,
+                           "nl_mesh_add_obj_memory", "data");
     });
 }
 

@@ -31,7 +31,8 @@ nl::LinkSettings to_core(const nl_link_settings& c) {
     nl::LinkSettings s;
     NL_COPY_FIELDS(NL_LINK_SETTINGS_FIELDS, s, c);
     if (c.drop_angle_count > kMaxDropAngles)
-        fail(ErrorCode::InvalidArgument, "settings->drop_angle_count is ", c.drop_angle_count, " (at most ", kMaxDropAngles, ")");
+        fail(ErrorCode::InvalidArgument, "settings->drop_angle_count is ", c.drop_angle_count, " (at most ",
+             kMaxDropAngles, ")");
     s.drop_angles.assign(c.drop_angles, c.drop_angles + c.drop_angle_count);
     return s;
 }
@@ -81,11 +82,13 @@ nl_link_generation_report to_c(const nl::LinkGenerationReport& r) {
 // The caller's settings (NULL: the defaults), every field read from the copy: a caller's struct holds
 // only `size` bytes.
 nl_link_settings read_settings(const nl_link_settings* settings) {
-    const nl_link_settings given =
-        settings ? nl::capi::read_growable(*settings, nl_default_link_settings(), nl::capi::kFirstSize<nl_link_settings>, "settings")
-                 : nl_default_link_settings();
+    const nl_link_settings given = settings
+                                       ? nl::capi::read_growable(*settings, nl_default_link_settings(),
+                                                                 nl::capi::kFirstSize<nl_link_settings>, "settings")
+                                       : nl_default_link_settings();
     if (!given.plugin_settings_json && given.plugin_settings_json_length != 0)
-        fail(ErrorCode::InvalidArgument, "settings->plugin_settings_json is null but settings->plugin_settings_json_length is ",
+        fail(ErrorCode::InvalidArgument,
+             "settings->plugin_settings_json is null but settings->plugin_settings_json_length is ",
              given.plugin_settings_json_length);
     return given;
 }
@@ -100,9 +103,9 @@ nl::LinkSettings core_settings_of(const nl_link_settings& given) {
 
 nl::PluginSettings plugin_settings_of(const nl_link_settings& given) {
     return nl::naming_fields("settings->", [&] {
-        return nl::plugin_settings_from_json(given.plugin_settings_json
-                                                 ? std::string_view(given.plugin_settings_json, given.plugin_settings_json_length)
-                                                 : std::string_view());
+        return nl::plugin_settings_from_json(
+            given.plugin_settings_json ? std::string_view(given.plugin_settings_json, given.plugin_settings_json_length)
+                                       : std::string_view());
     });
 }
 
@@ -120,13 +123,15 @@ namespace nl::capi {
 Link link_from_def(const nl_link_def& given) {
     const nl_link_def def = read_growable(given, nl_default_link_def(), nl::capi::kFirstSize<nl_link_def>, "def");
     const LinkKind kind = static_cast<LinkKind>(def.kind);
-    if (kind != LinkKind::Jump && kind != LinkKind::Drop && kind != LinkKind::Manual && def.kind < NL_LINK_FIRST_PLUGIN_KIND)
+    if (kind != LinkKind::Jump && kind != LinkKind::Drop && kind != LinkKind::Manual &&
+        def.kind < NL_LINK_FIRST_PLUGIN_KIND)
         fail_field(ErrorCode::InvalidArgument, "kind is ", def.kind, " (NL_LINK_* or a plugin kind >= 256)");
     read_amount(def.cost_modifier, "cost_modifier");
     read_amount(def.tolerance, "tolerance");
     for (const auto& [value, name] :
-         {std::pair{def.requirements.gap, "gap"}, std::pair{def.requirements.rise, "rise"}, std::pair{def.requirements.drop, "drop"},
-          std::pair{def.requirements.clearance_width, "clearance_width"}, std::pair{def.requirements.length, "length"}})
+         {std::pair{def.requirements.gap, "gap"}, std::pair{def.requirements.rise, "rise"},
+          std::pair{def.requirements.drop, "drop"}, std::pair{def.requirements.clearance_width, "clearance_width"},
+          std::pair{def.requirements.length, "length"}})
         read_amount(value, "requirements.", name);
     Link l;
     l.kind = kind;
@@ -190,7 +195,8 @@ NL_API nl_status nl_link_remove(nl_world* world, nl_link_id link) {
 
 NL_API int32_t nl_link_is_valid(const nl_world* world, nl_link_id link) {
     int32_t valid = 0;
-    guarded("nl_link_is_valid", world, [&] { valid = deref(world).navmeshes().contains_link(to_handle(link)) ? 1 : 0; });
+    guarded("nl_link_is_valid", world,
+            [&] { valid = deref(world).navmeshes().contains_link(to_handle(link)) ? 1 : 0; });
     return valid;
 }
 
@@ -199,9 +205,10 @@ NL_API nl_status nl_link_get(const nl_world* world, nl_link_id link, nl_link* ou
         const nl::World& w = deref(world);
         const auto [navmesh, stored] = w.navmeshes().link(to_handle(link));
         require(out_link, "out_link");
-        nl::capi::write_growable(out_link,
-                                 to_c(nl::StoredLink{to_handle(link), w.in_world(navmesh, stored)}, navmesh, w.link_holds(navmesh, stored)),
-                                 nl::capi::kFirstSize<nl_link>, "out_link");
+        nl::capi::write_growable(
+            out_link,
+            to_c(nl::StoredLink{to_handle(link), w.in_world(navmesh, stored)}, navmesh, w.link_holds(navmesh, stored)),
+            nl::capi::kFirstSize<nl_link>, "out_link");
     });
 }
 
@@ -211,10 +218,11 @@ NL_API nl_status nl_navmesh_get_links(const nl_world* world, nl_navmesh_id navme
         const nl::Handle mesh = to_handle(navmesh);
         const nl::World& w = deref(world);
         const auto snapshot = w.navmeshes().links(mesh);
-        nl::capi::list_growable_into(*snapshot, out_links, capacity, out_count, nl::capi::kFirstSize<nl_link>, "out_links",
-                                     [&](const nl::StoredLink& s) {
-                                         return to_c(nl::StoredLink{s.id, w.in_world(mesh, s.link)}, mesh, w.link_holds(mesh, s.link));
-                                     });
+        nl::capi::list_growable_into(
+            *snapshot, out_links, capacity, out_count, nl::capi::kFirstSize<nl_link>, "out_links",
+            [&](const nl::StoredLink& s) {
+                return to_c(nl::StoredLink{s.id, w.in_world(mesh, s.link)}, mesh, w.link_holds(mesh, s.link));
+            });
     });
 }
 
@@ -231,7 +239,8 @@ NL_API nl_status nl_link_settings_from_json(const char* json, size_t length, nl_
     return guarded("nl_link_settings_from_json", nullptr, [&] {
         require(settings, "settings");
         if (length > 0) require(json, "json");
-        const nl_link_settings given = nl::capi::read_growable(*settings, nl_default_link_settings(), nl::capi::kFirstSize<nl_link_settings>, "settings");
+        const nl_link_settings given = nl::capi::read_growable(*settings, nl_default_link_settings(),
+                                                               nl::capi::kFirstSize<nl_link_settings>, "settings");
         nl::LinkSettings s = to_core(given);
         nl::apply_settings_json(std::string_view(json ? json : "", length), s);
         if (s.drop_angles.size() > kMaxDropAngles)
@@ -245,22 +254,27 @@ NL_API nl_status nl_link_settings_from_json(const char* json, size_t length, nl_
 }
 
 NL_API nl_status nl_navmesh_generate_links(nl_world* world, nl_navmesh_id navmesh, const nl_link_settings* settings,
-                                           nl_progress_fn* progress, void* user, nl_link_generation_report* out_report) {
+                                           nl_progress_fn* progress, void* user,
+                                           nl_link_generation_report* out_report) {
     return guarded("nl_navmesh_generate_links", world, [&] {
         nl::World& w = deref(world);
         w.navmeshes().navmesh(to_handle(navmesh));  // a stale id first, before the settings
         const nl_link_settings given = read_settings(settings);
-        if (out_report) nl::capi::check_growable_output(out_report, nl::capi::kFirstSize<nl_link_generation_report>, "out_report");
+        if (out_report)
+            nl::capi::check_growable_output(out_report, nl::capi::kFirstSize<nl_link_generation_report>, "out_report");
         const nl::LinkSettings core_settings = core_settings_of(given);
         nl::PluginSettings plugin_settings = plugin_settings_of(given);
-        const nl::LinkGenerationReport report =
-            w.generate_links(to_handle(navmesh), core_settings, std::move(plugin_settings), nl::capi::progress_of(progress, user));
-        if (out_report) nl::capi::write_growable(out_report, to_c(report), nl::capi::kFirstSize<nl_link_generation_report>, "out_report");
+        const nl::LinkGenerationReport report = w.generate_links(
+            to_handle(navmesh), core_settings, std::move(plugin_settings), nl::capi::progress_of(progress, user));
+        if (out_report)
+            nl::capi::write_growable(out_report, to_c(report), nl::capi::kFirstSize<nl_link_generation_report>,
+                                     "out_report");
     });
 }
 
-NL_API nl_status nl_navmesh_generate_cross_links(nl_world* world, nl_navmesh_id first, nl_navmesh_id second, float tolerance,
-                                                 const nl_link_settings* settings, nl_progress_fn* progress, void* user,
+NL_API nl_status nl_navmesh_generate_cross_links(nl_world* world, nl_navmesh_id first, nl_navmesh_id second,
+                                                 float tolerance, const nl_link_settings* settings,
+                                                 nl_progress_fn* progress, void* user,
                                                  nl_link_generation_report* out_report) {
     return guarded("nl_navmesh_generate_cross_links", world, [&] {
         nl::World& w = deref(world);
@@ -274,13 +288,16 @@ NL_API nl_status nl_navmesh_generate_cross_links(nl_world* world, nl_navmesh_id 
             }
         }
         const nl_link_settings given = read_settings(settings);
-        if (out_report) nl::capi::check_growable_output(out_report, nl::capi::kFirstSize<nl_link_generation_report>, "out_report");
+        if (out_report)
+            nl::capi::check_growable_output(out_report, nl::capi::kFirstSize<nl_link_generation_report>, "out_report");
         const nl::LinkSettings core_settings = core_settings_of(given);
         // Checked as for any generation, though link-kind plugins link within one navmesh.
         w.check_plugin_settings(plugin_settings_of(given));
-        const nl::LinkGenerationReport report =
-            w.generate_cross_links(to_handle(first), to_handle(second), core_settings, tolerance, nl::capi::progress_of(progress, user));
-        if (out_report) nl::capi::write_growable(out_report, to_c(report), nl::capi::kFirstSize<nl_link_generation_report>, "out_report");
+        const nl::LinkGenerationReport report = w.generate_cross_links(
+            to_handle(first), to_handle(second), core_settings, tolerance, nl::capi::progress_of(progress, user));
+        if (out_report)
+            nl::capi::write_growable(out_report, to_c(report), nl::capi::kFirstSize<nl_link_generation_report>,
+                                     "out_report");
     });
 }
 
@@ -297,7 +314,8 @@ NL_API nl_status nl_navmesh_update_links_in_box(nl_world* world, nl_navmesh_id n
         box.max = nl::Vec3(box_max[0], box_max[1], box_max[2]);
         if (!nl::within_coordinate_limit(box.min) || !nl::within_coordinate_limit(box.max) || box.empty())
             fail(ErrorCode::InvalidArgument, "box_min and box_max must be finite, within the limit, and min <= max");
-        if (out_report) nl::capi::check_growable_output(out_report, nl::capi::kFirstSize<nl_link_generation_report>, "out_report");
+        if (out_report)
+            nl::capi::check_growable_output(out_report, nl::capi::kFirstSize<nl_link_generation_report>, "out_report");
         const nl::LinkGenerationReport report = [&] {
             try {
                 return w.update_links_in_box(to_handle(navmesh), box, nl::capi::progress_of(progress, user));
@@ -306,7 +324,9 @@ NL_API nl_status nl_navmesh_update_links_in_box(nl_world* world, nl_navmesh_id n
                 throw nl::Error(e.code(), nl::concat(e.what(), " (nl_navmesh_generate_links)"));
             }
         }();
-        if (out_report) nl::capi::write_growable(out_report, to_c(report), nl::capi::kFirstSize<nl_link_generation_report>, "out_report");
+        if (out_report)
+            nl::capi::write_growable(out_report, to_c(report), nl::capi::kFirstSize<nl_link_generation_report>,
+                                     "out_report");
     });
 }
 
@@ -335,7 +355,8 @@ NL_API nl_status nl_navmesh_load_links_json(nl_world* world, nl_navmesh_id navme
         nl::World& w = deref(world);
         w.navmeshes().navmesh(to_handle(navmesh));  // a stale id first, before the text
         if (length > 0) require(json, "json");
-        if (flags & ~NL_LINKS_LOAD_ANY_BODY) fail(ErrorCode::InvalidArgument, "flags has unknown bits 0x", std::hex, flags & ~NL_LINKS_LOAD_ANY_BODY);
+        if (flags & ~NL_LINKS_LOAD_ANY_BODY)
+            fail(ErrorCode::InvalidArgument, "flags has unknown bits 0x", std::hex, flags & ~NL_LINKS_LOAD_ANY_BODY);
         nl::LinksFile file = nl::read_links_json(std::string_view(json ? json : "", length));
         const size_t count = file.links.size();
         w.load_links_file(to_handle(navmesh), std::move(file), (flags & NL_LINKS_LOAD_ANY_BODY) != 0);

@@ -18,7 +18,9 @@ nl_agent_type to_c(const AgentType& agent);
 
 // A host's progress callback as the core asks it: true to go on (always, when there is none).
 inline auto progress_of(nl_progress_fn* progress, void* user) {
-    return [progress, user](float fraction, const char* stage) { return !progress || progress(user, fraction, stage) != 0; };
+    return [progress, user](float fraction, const char* stage) {
+        return !progress || progress(user, fraction, stage) != 0;
+    };
 }
 
 // A navmesh def (nl_navmesh_add, a builder's sink), read whole; build_navmesh checks the rest.

@@ -48,7 +48,8 @@ nl_nav_point to_c(const NavPoint& p, const CarrierPose& pose) {
 }
 
 NavMeshInput navmesh_input_from_def(const nl_navmesh_def& given) {
-    const nl_navmesh_def def = read_growable(given, nl_default_navmesh_def(), nl::capi::kFirstSize<nl_navmesh_def>, "def");
+    const nl_navmesh_def def =
+        read_growable(given, nl_default_navmesh_def(), nl::capi::kFirstSize<nl_navmesh_def>, "def");
     NavMeshInput in;
     in.vertices = read_vertices(def.vertices, def.vertex_count, def.vertex_stride);
     require_field(def.indices, "indices");
@@ -61,7 +62,8 @@ NavMeshInput navmesh_input_from_def(const nl_navmesh_def& given) {
         for (size_t p = 0; p < in.polygon_sizes.size(); ++p) {
             const uint32_t n = in.polygon_sizes[p];
             if (n < 3 || n > kMaxCorners)
-                fail_field(ErrorCode::InvalidArgument, "polygon_vertex_counts[", p, "] = ", n, " (must be 3..", kMaxCorners, ")");
+                fail_field(ErrorCode::InvalidArgument, "polygon_vertex_counts[", p, "] = ", n, " (must be 3..",
+                           kMaxCorners, ")");
             index_count += n;
         }
     }
@@ -77,7 +79,8 @@ NavMeshInput navmesh_input_from_def(const nl_navmesh_def& given) {
         require_field(def.detail_triangles, "detail_triangles");
         require_field(def.detail_triangle_starts, "detail_triangle_starts");
         if (def.detail_vertex_count == 0 || def.detail_triangle_count == 0)
-            fail_field(ErrorCode::InvalidArgument, "detail_vertex_count and detail_triangle_count must be > 0 with detail");
+            fail_field(ErrorCode::InvalidArgument,
+                       "detail_vertex_count and detail_triangle_count must be > 0 with detail");
         in.detail_starts.assign(def.detail_triangle_starts, def.detail_triangle_starts + def.polygon_count + 1);
         in.detail_vertices.resize(def.detail_vertex_count);
         for (uint32_t i = 0; i < def.detail_vertex_count; ++i)
@@ -113,8 +116,8 @@ void navmesh_get_info(const World& world, nl_navmesh_id navmesh, nl_navmesh_info
     write_growable(out_info, info, nl::capi::kFirstSize<nl_navmesh_info>, "out_info");
 }
 
-void navmesh_get_boundary_edges(const World& world, nl_navmesh_id navmesh, nl_boundary_edge* out_edges, uint32_t capacity,
-                                uint32_t* out_count) {
+void navmesh_get_boundary_edges(const World& world, nl_navmesh_id navmesh, nl_boundary_edge* out_edges,
+                                uint32_t capacity, uint32_t* out_count) {
     const auto mesh = world.navmeshes().navmesh(to_handle(navmesh));
     const nl::CarrierPose pose = world.navmesh_pose(to_handle(navmesh));
     list_into(mesh->boundary_edges(), out_edges, capacity, out_count, "out_edges", [&](const BoundaryEdge& e) {
@@ -179,21 +182,21 @@ NL_API nl_status nl_navmesh_add(nl_world* world, const nl_navmesh_def* def, nl_n
         nl::World& w = deref(world);
         require(def, "def");
         require(out_id, "out_id");
-        const nl_navmesh_def full = nl::capi::read_growable(*def, nl_default_navmesh_def(), nl::capi::kFirstSize<nl_navmesh_def>, "def");
+        const nl_navmesh_def full =
+            nl::capi::read_growable(*def, nl_default_navmesh_def(), nl::capi::kFirstSize<nl_navmesh_def>, "def");
         *out_id = to_id<nl_navmesh_id>(nl::naming_fields(
             "def->", [&] { return w.add_navmesh(nl::capi::navmesh_input_from_def(*def), to_handle(full.carrier)); }));
     });
 }
 
 NL_API nl_status nl_navmesh_remove(nl_world* world, nl_navmesh_id navmesh) {
-    return guarded("nl_navmesh_remove", world, [&] {
-        deref(world).navmeshes().remove(to_handle(navmesh));
-    });
+    return guarded("nl_navmesh_remove", world, [&] { deref(world).navmeshes().remove(to_handle(navmesh)); });
 }
 
 NL_API int32_t nl_navmesh_is_valid(const nl_world* world, nl_navmesh_id navmesh) {
     int32_t valid = 0;
-    guarded("nl_navmesh_is_valid", world, [&] { valid = deref(world).navmeshes().contains(to_handle(navmesh)) ? 1 : 0; });
+    guarded("nl_navmesh_is_valid", world,
+            [&] { valid = deref(world).navmeshes().contains(to_handle(navmesh)) ? 1 : 0; });
     return valid;
 }
 
@@ -207,7 +210,8 @@ NL_API nl_status nl_navmesh_get_vertices(const nl_world* world, nl_navmesh_id na
         const auto mesh = deref(world).navmeshes().navmesh(to_handle(navmesh));
         const nl::CarrierPose pose = deref(world).navmesh_pose(to_handle(navmesh));
         nl::capi::list_into(mesh->vertex_count(), out_xyz, capacity, out_count, "out_xyz", [&] {
-            for (uint32_t i = 0; i < mesh->vertex_count(); ++i) copy_point(out_xyz + 3 * size_t(i), pose.world_point(mesh->vertex(i)));
+            for (uint32_t i = 0; i < mesh->vertex_count(); ++i)
+                copy_point(out_xyz + 3 * size_t(i), pose.world_point(mesh->vertex(i)));
         });
     });
 }
@@ -219,7 +223,8 @@ NL_API nl_status nl_navmesh_get_polygon(const nl_world* world, nl_navmesh_id nav
         const nl::CarrierPose pose = deref(world).navmesh_pose(to_handle(navmesh));
         require(out_polygon, "out_polygon");
         if (polygon >= mesh->polygon_count())
-            fail(ErrorCode::InvalidArgument, "polygon ", polygon, " is out of range (polygon_count = ", mesh->polygon_count(), ")");
+            fail(ErrorCode::InvalidArgument, "polygon ", polygon,
+                 " is out of range (polygon_count = ", mesh->polygon_count(), ")");
         nl_nav_polygon out{};
         out.size = sizeof out;
         out.vertex_count = mesh->corner_count(polygon);
@@ -244,15 +249,15 @@ NL_API nl_status nl_navmesh_get_boundary_edges(const nl_world* world, nl_navmesh
 
 NL_API nl_status nl_navmesh_find_nearest(const nl_world* world, nl_navmesh_id navmesh, const float* points,
                                          uint32_t count, const float* half_extents, nl_nav_point* out) {
-    return guarded("nl_navmesh_find_nearest", world, [&] {
-        nl::capi::navmesh_find_nearest(deref(world), navmesh, points, count, half_extents, out);
-    });
+    return guarded("nl_navmesh_find_nearest", world,
+                   [&] { nl::capi::navmesh_find_nearest(deref(world), navmesh, points, count, half_extents, out); });
 }
 
 NL_API nl_status nl_world_get_navmeshes(const nl_world* world, nl_navmesh_id* out_ids, uint32_t capacity,
                                         uint32_t* out_count) {
     return guarded("nl_world_get_navmeshes", world, [&] {
-        nl::capi::list_into(deref(world).navmeshes().handles(), out_ids, capacity, out_count, "out_ids", to_id<nl_navmesh_id>);
+        nl::capi::list_into(deref(world).navmeshes().handles(), out_ids, capacity, out_count, "out_ids",
+                            to_id<nl_navmesh_id>);
     });
 }
 

@@ -38,15 +38,18 @@ nl::NavMeshFile read_file(const void* data, size_t size) {
 }
 
 nl_navmesh_id load(nl::World& w, const nl::NavMeshFile& file, const nl_navmesh_load_def* given) {
-    const nl_navmesh_load_def def =
-        given ? nl::capi::read_growable(*given, nl_default_navmesh_load_def(), nl::capi::kFirstSize<nl_navmesh_load_def>, "def") : nl_default_navmesh_load_def();
-    if (def.flags & ~kKnownLoadFlags) fail(ErrorCode::InvalidArgument, "def->flags has unknown bits 0x", std::hex, def.flags & ~kKnownLoadFlags);
+    const nl_navmesh_load_def def = given ? nl::capi::read_growable(*given, nl_default_navmesh_load_def(),
+                                                                    nl::capi::kFirstSize<nl_navmesh_load_def>, "def")
+                                          : nl_default_navmesh_load_def();
+    if (def.flags & ~kKnownLoadFlags)
+        fail(ErrorCode::InvalidArgument, "def->flags has unknown bits 0x", std::hex, def.flags & ~kKnownLoadFlags);
     const nl::Handle carrier = nl::capi::to_handle(def.carrier);
     if ((def.flags & NL_NAVMESH_LOAD_SAME_LEVEL) && file.made_for.level_hash != 0) {
         const uint64_t now = nl::level_hash(w.level().triangles_to_build(carrier));
         if (now != file.made_for.level_hash)
-            fail(ErrorCode::InvalidArgument, "the level is not the one the file was baked from (its hash is ", std::hex, now,
-                 ", the file's ", file.made_for.level_hash, "): bake it again, or load it without NL_NAVMESH_LOAD_SAME_LEVEL");
+            fail(ErrorCode::InvalidArgument, "the level is not the one the file was baked from (its hash is ", std::hex,
+                 now, ", the file's ", file.made_for.level_hash,
+                 "): bake it again, or load it without NL_NAVMESH_LOAD_SAME_LEVEL");
     }
     return nl::capi::to_id<nl_navmesh_id>(nl::naming_fields("def->", [&] { return w.load_navmesh(file, carrier); }));
 }
@@ -64,7 +67,8 @@ NL_API nl_status nl_navmesh_save(const nl_world* world, nl_navmesh_id navmesh, v
         const std::vector<uint8_t> file = saved_file(w, navmesh);
         *out_size = file.size();
         if (!buffer) return;
-        if (file.size() > capacity) fail(ErrorCode::BufferTooSmall, "capacity is ", capacity, " but ", file.size(), " bytes are needed");
+        if (file.size() > capacity)
+            fail(ErrorCode::BufferTooSmall, "capacity is ", capacity, " but ", file.size(), " bytes are needed");
         std::memcpy(buffer, file.data(), file.size());
     });
 }
@@ -112,10 +116,13 @@ NL_API nl_status nl_navmesh_load_file(nl_world* world, const char* path, const n
 NL_API nl_status nl_navmesh_file_describe(const void* data, size_t size, nl_navmesh_file_info* out_info,
                                           char* made_for_json, size_t capacity, size_t* out_length) {
     return guarded("nl_navmesh_file_describe", nullptr, [&] {
-        if (made_for_json && !out_length) fail(ErrorCode::InvalidArgument, "made_for_json is given but out_length is null");
-        if (!made_for_json && capacity > 0) fail(ErrorCode::InvalidArgument, "made_for_json is null but capacity is ", capacity);
+        if (made_for_json && !out_length)
+            fail(ErrorCode::InvalidArgument, "made_for_json is given but out_length is null");
+        if (!made_for_json && capacity > 0)
+            fail(ErrorCode::InvalidArgument, "made_for_json is null but capacity is ", capacity);
         if (out_info && out_info->size < nl::capi::kFirstSize<nl_navmesh_file_info>)
-            fail(ErrorCode::InvalidArgument, "out_info->size is ", out_info->size, " (must be at least ", nl::capi::kFirstSize<nl_navmesh_file_info>, ")");
+            fail(ErrorCode::InvalidArgument, "out_info->size is ", out_info->size, " (must be at least ",
+                 nl::capi::kFirstSize<nl_navmesh_file_info>, ")");
         const nl::NavMeshFile file = read_file(data, size);
         const std::string json = nl::made_for_json(file);
         if (out_length) *out_length = json.size();  // also when the buffer is too small: the two-call pattern

@@ -26,8 +26,8 @@ using nl::capi::to_id;
 
 namespace {
 
-
-static_assert(uint32_t(nl::PathOutcome::Failed) == NL_PATH_FAILED && uint32_t(nl::PathOutcome::Partial) == NL_PATH_PARTIAL,
+static_assert(uint32_t(nl::PathOutcome::Failed) == NL_PATH_FAILED &&
+                  uint32_t(nl::PathOutcome::Partial) == NL_PATH_PARTIAL,
               "core and header disagree on path outcomes");
 
 nl::PathQuery read_query(const nl_path_request_def& def) {
@@ -55,7 +55,8 @@ struct Request {
 Request read_request(const nl::World& w, const nl_path_request_def* in) {
     require(in, "def");
     Request r;
-    r.def = nl::capi::read_growable(*in, nl_default_path_request_def(), nl::capi::kFirstSize<nl_path_request_def>, "def");
+    r.def =
+        nl::capi::read_growable(*in, nl_default_path_request_def(), nl::capi::kFirstSize<nl_path_request_def>, "def");
     r.query = read_query(r.def);
     r.graph = w.navmeshes().path_graph(to_handle(r.def.navmesh));
     return r;
@@ -87,8 +88,8 @@ void write_result(const nl::PathResult& r, nl_path_result* out_result, nl_path_p
     require(out_count, "out_count");
     if (!out_points && capacity > 0) fail(ErrorCode::InvalidArgument, "out_points is null but capacity is ", capacity);
     nl::capi::write_growable(out_result, to_c(r), nl::capi::kFirstSize<nl_path_result>, "out_result");
-    nl::capi::list_growable_into(r.points, out_points, capacity, out_count, nl::capi::kFirstSize<nl_path_point>, "out_points",
-                                 [](const nl::PathPoint& p) { return nl::capi::to_c(p); });
+    nl::capi::list_growable_into(r.points, out_points, capacity, out_count, nl::capi::kFirstSize<nl_path_point>,
+                                 "out_points", [](const nl::PathPoint& p) { return nl::capi::to_c(p); });
 }
 
 // The status of a call that returned a result: partial paths carry PARTIAL_RESULT, as Detour's do.
@@ -112,10 +113,12 @@ uint64_t carrier_moves(const nl::PathGraph& graph) { return graph.frame() ? grap
 
 bool same_query(const nl::PathQuery& a, const nl::PathQuery& b) {
     return a.start == b.start && a.goal == b.goal && a.search_half_extents == b.search_half_extents &&
-           a.capabilities.max_jump_distance == b.capabilities.max_jump_distance && a.capabilities.max_jump_height == b.capabilities.max_jump_height &&
-           a.capabilities.max_drop_height == b.capabilities.max_drop_height && a.capabilities.radius == b.capabilities.radius &&
-           a.capabilities.abilities == b.capabilities.abilities && a.area_costs == b.area_costs && a.link_cost == b.link_cost &&
-           a.max_nodes == b.max_nodes && a.accept_partial == b.accept_partial;
+           a.capabilities.max_jump_distance == b.capabilities.max_jump_distance &&
+           a.capabilities.max_jump_height == b.capabilities.max_jump_height &&
+           a.capabilities.max_drop_height == b.capabilities.max_drop_height &&
+           a.capabilities.radius == b.capabilities.radius && a.capabilities.abilities == b.capabilities.abilities &&
+           a.area_costs == b.area_costs && a.link_cost == b.link_cost && a.max_nodes == b.max_nodes &&
+           a.accept_partial == b.accept_partial;
 }
 
 }  // namespace
@@ -192,8 +195,6 @@ NL_API nl_path_request_def nl_default_path_request_def(void) {
     return def;
 }
 
-
-
 NL_API nl_status nl_path_request(nl_world* world, const nl_path_request_def* def, nl_path_ticket* out_ticket) {
     return guarded("nl_path_request", world, [&] {
         require(out_ticket, "out_ticket");
@@ -219,13 +220,14 @@ NL_API nl_status nl_path_poll(const nl_world* world, nl_path_ticket ticket, nl_p
     });
 }
 
-NL_API nl_status nl_path_wait(nl_world* world, nl_path_ticket ticket, uint32_t timeout_ms, nl_path_outcome* out_outcome) {
+NL_API nl_status nl_path_wait(nl_world* world, nl_path_ticket ticket, uint32_t timeout_ms,
+                              nl_path_outcome* out_outcome) {
     nl::PathOutcome outcome = nl::PathOutcome::Pending;
     const nl_status status = guarded("nl_path_wait", world, [&] {
         require(out_outcome, "out_outcome");
-        const std::chrono::steady_clock::duration timeout =
-            timeout_ms == NL_PATH_WAIT_FOREVER ? std::chrono::steady_clock::duration::max()
-                                               : std::chrono::milliseconds(timeout_ms);
+        const std::chrono::steady_clock::duration timeout = timeout_ms == NL_PATH_WAIT_FOREVER
+                                                                ? std::chrono::steady_clock::duration::max()
+                                                                : std::chrono::milliseconds(timeout_ms);
         outcome = deref(world).paths().wait(to_handle(ticket), timeout);
         *out_outcome = static_cast<nl_path_outcome>(outcome);
     });
@@ -266,8 +268,9 @@ NL_API nl_path_budget nl_default_path_budget(void) {
 NL_API nl_status nl_path_process(nl_world* world, const nl_path_budget* budget, uint32_t* out_processed) {
     return guarded("nl_path_process", world, [&] {
         nl::World& w = deref(world);
-        const nl_path_budget given =
-            budget ? nl::capi::read_growable(*budget, nl_default_path_budget(), nl::capi::kFirstSize<nl_path_budget>, "budget") : nl_default_path_budget();
+        const nl_path_budget given = budget ? nl::capi::read_growable(*budget, nl_default_path_budget(),
+                                                                      nl::capi::kFirstSize<nl_path_budget>, "budget")
+                                            : nl_default_path_budget();
         if (std::isnan(given.max_milliseconds)) fail(ErrorCode::InvalidArgument, "budget->max_milliseconds is NaN");
         const uint32_t processed =
             w.paths().process(nl::ProcessBudget{given.max_requests, given.max_milliseconds, given.max_search_nodes});
@@ -280,7 +283,8 @@ NL_API nl_status nl_path_take_finished(nl_world* world, nl_path_finished* out_fi
     return guarded("nl_path_take_finished", world, [&] {
         nl::World& w = deref(world);
         require(out_count, "out_count");
-        if (!out_finished && capacity > 0) fail(ErrorCode::InvalidArgument, "out_finished is null but capacity is ", capacity);
+        if (!out_finished && capacity > 0)
+            fail(ErrorCode::InvalidArgument, "out_finished is null but capacity is ", capacity);
         // Checked before anything is taken: a refusal must lose no finished request.
         std::optional<nl::capi::ElementWriter<nl_path_finished>> writer;
         if (capacity > 0) writer.emplace(out_finished, nl::capi::kFirstSize<nl_path_finished>, "out_finished");
@@ -328,7 +332,8 @@ nl::AgentCapabilities nl::capi::read_capabilities(const nl_agent_capabilities& c
 
 std::vector<float> nl::capi::read_area_costs(const float* costs, uint32_t count, const char* prefix) {
     constexpr uint32_t kMaxAreaCosts = 256;
-    if (count > kMaxAreaCosts) fail(ErrorCode::InvalidArgument, prefix, "area_cost_count is ", count, " (at most ", kMaxAreaCosts, ")");
+    if (count > kMaxAreaCosts)
+        fail(ErrorCode::InvalidArgument, prefix, "area_cost_count is ", count, " (at most ", kMaxAreaCosts, ")");
     if (count > 0 && !costs) fail(ErrorCode::InvalidArgument, prefix, "area_costs is null");
     for (uint32_t i = 0; i < count; ++i) read_amount(costs[i], prefix, "area_costs[", i, "]");
     return count > 0 ? std::vector<float>(costs, costs + count) : std::vector<float>{};

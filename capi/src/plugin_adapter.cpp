@@ -33,13 +33,16 @@ public:
     World& world() noexcept { return world_; }
 
     const PluginDescription& description() const noexcept override { return description_; }
-    NavMeshBuilder* navmesh_builder() noexcept override { return (info_.kinds & NL_PLUGIN_NAVMESH_BUILDER) ? this : nullptr; }
+    NavMeshBuilder* navmesh_builder() noexcept override {
+        return (info_.kinds & NL_PLUGIN_NAVMESH_BUILDER) ? this : nullptr;
+    }
     LinkKindProvider* link_kind() noexcept override { return (info_.kinds & NL_PLUGIN_LINK_KIND) ? this : nullptr; }
 
     BuiltNavMesh build(World& world, const NavMeshBuildRequest& request) override;
     uint32_t kind() const noexcept override { return info_.link_kind.kind; }
     const std::string& kind_name() const noexcept override { return kind_name_; }
-    void propose(World& world, Handle navmesh, const std::string& settings_json, FunctionRef<void(Link)> accept) override;
+    void propose(World& world, Handle navmesh, const std::string& settings_json,
+                 FunctionRef<void(Link)> accept) override;
 
 private:
     void check_description(const std::string& origin) const;
@@ -56,11 +59,13 @@ private:
 void CPlugin::check_description(const std::string& origin) const {
     if (!info_.name || !*info_.name) fail(ErrorCode::InvalidArgument, "plugin ", origin, " has no name");
     if ((info_.kinds & NL_PLUGIN_NAVMESH_BUILDER) && !info_.navmesh_builder.build)
-        fail(ErrorCode::InvalidArgument, "plugin '", info_.name, "' says it builds navmeshes but gives no build function");
+        fail(ErrorCode::InvalidArgument, "plugin '", info_.name,
+             "' says it builds navmeshes but gives no build function");
     if ((info_.kinds & NL_PLUGIN_LINK_KIND) &&
         (!info_.link_kind.generate || !info_.link_kind.kind_name || info_.link_kind.kind < NL_LINK_FIRST_PLUGIN_KIND))
         fail(ErrorCode::InvalidArgument, "plugin '", info_.name,
-             "' says it provides a link kind but its kind is below NL_LINK_FIRST_PLUGIN_KIND or has no name or generate function");
+             "' says it provides a link kind but its kind is below NL_LINK_FIRST_PLUGIN_KIND or has no name or "
+             "generate function");
     if (info_.kinds & ~(NL_PLUGIN_NAVMESH_BUILDER | NL_PLUGIN_LINK_KIND))
         fail(ErrorCode::InvalidArgument, "plugin '", info_.name, "' has unknown kinds 0x", std::hex, info_.kinds);
 }
@@ -71,16 +76,16 @@ void CPlugin::start(nl_plugin_entry_fn* entry, const std::string& origin) {
     const std::string reason = take_plugin_error();
     if (NL_FAILED(status)) {
         if (status & NL_STATUS_VERSION_MISMATCH)
-            fail(ErrorCode::VersionMismatch, "plugin ", origin, " speaks no plugin ABI version <= ", NL_PLUGIN_ABI_VERSION,
-                 reason.empty() ? "" : ": ", reason);
+            fail(ErrorCode::VersionMismatch, "plugin ", origin,
+                 " speaks no plugin ABI version <= ", NL_PLUGIN_ABI_VERSION, reason.empty() ? "" : ": ", reason);
         throw Error(to_error_code(status) == ErrorCode::OutOfMemory ? ErrorCode::OutOfMemory : ErrorCode::Internal,
-                    concat("plugin ", origin, " refused to start (", nl_status_string(status), ")", reason.empty() ? "" : ": ",
-                           reason));
+                    concat("plugin ", origin, " refused to start (", nl_status_string(status), ")",
+                           reason.empty() ? "" : ": ", reason));
     }
     started_ = true;  // from here on its destroy function is owed
     if (info_.abi_version == 0 || info_.abi_version > NL_PLUGIN_ABI_VERSION)
-        fail(ErrorCode::VersionMismatch, "plugin ", origin, " answered ABI version ", info_.abi_version, "; this library speaks 1..",
-             NL_PLUGIN_ABI_VERSION);
+        fail(ErrorCode::VersionMismatch, "plugin ", origin, " answered ABI version ", info_.abi_version,
+             "; this library speaks 1..", NL_PLUGIN_ABI_VERSION);
     check_description(origin);
     description_.name = info_.name;
     description_.version = info_.version ? info_.version : "";
@@ -131,7 +136,7 @@ struct RunningBuild {
 
     const CPlugin& builder;
     const NavMeshBuildRequest& request;
-    std::string settings_used;  // what the builder recorded (host->record_build_settings)
+    std::string settings_used;             // what the builder recorded (host->record_build_settings)
     std::optional<BuildTriangles> handed;  // the level as the builder was shown it
     RunningBuild* outer;
 };
@@ -159,9 +164,11 @@ BuiltNavMesh CPlugin::build(World&, const NavMeshBuildRequest& request) {
             fail(ErrorCode::Internal, "builder '", name, "' made a navmesh that was refused: ", e.what());
         }
     }
-    if (sink.calls > 1) fail(ErrorCode::Internal, "builder '", name, "' handed over ", sink.calls, " navmeshes, not one");
+    if (sink.calls > 1)
+        fail(ErrorCode::Internal, "builder '", name, "' handed over ", sink.calls, " navmeshes, not one");
     if (NL_FAILED(status))
-        throw Error(to_error_code(status), concat("builder '", name, "': ", reason.empty() ? nl_status_string(status) : reason));
+        throw Error(to_error_code(status),
+                    concat("builder '", name, "': ", reason.empty() ? nl_status_string(status) : reason));
     if (sink.calls == 0) fail(ErrorCode::Internal, "builder '", name, "' succeeded without handing over a navmesh");
     const uint64_t built_from = running.handed ? level_hash(*running.handed) : 0;
     return {std::move(sink.navmesh), std::move(running.settings_used), built_from};
@@ -200,8 +207,8 @@ void CPlugin::propose(World&, Handle navmesh, const std::string& settings_json, 
     const std::string reason = take_plugin_error();
     if (sink.out_of_memory) throw std::bad_alloc();
     if (NL_FAILED(status))
-        throw Error(to_error_code(status), concat("link-kind plugin '", description_.name, "': ",
-                                                  reason.empty() ? nl_status_string(status) : reason));
+        throw Error(to_error_code(status), concat("link-kind plugin '", description_.name,
+                                                  "': ", reason.empty() ? nl_status_string(status) : reason));
 }
 
 }  // namespace
@@ -222,14 +229,16 @@ void with_level_triangles(void* context, FunctionRef<void(const BuildTriangles&)
 
 bool report_build_progress(void* context, float fraction, const char* stage) {
     if (!running_build || &running_build->builder != context)
-        fail(ErrorCode::InvalidArgument, "report_build_progress was called outside a navmesh build of this plugin on this thread");
+        fail(ErrorCode::InvalidArgument,
+             "report_build_progress was called outside a navmesh build of this plugin on this thread");
     const auto& progress = running_build->request.progress;
     return !progress || progress(fraction, stage);
 }
 
 void record_build_settings(void* context, std::string_view settings_json) {
     if (!running_build || &running_build->builder != context)
-        fail(ErrorCode::InvalidArgument, "record_build_settings was called outside a navmesh build of this plugin on this thread");
+        fail(ErrorCode::InvalidArgument,
+             "record_build_settings was called outside a navmesh build of this plugin on this thread");
     running_build->settings_used.assign(settings_json);
 }
 

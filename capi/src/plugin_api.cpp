@@ -18,7 +18,6 @@ using nl::capi::require;
 
 namespace {
 
-
 using nl::capi::to_handle;
 using nl::capi::to_id;
 
@@ -39,8 +38,8 @@ NL_API nl_status nl_navmesh_build(nl_world* world, const nl_navmesh_build_def* d
         nl::World& w = deref(world);
         require(def, "def");
         require(out_id, "out_id");
-        const nl_navmesh_build_def settings =
-            nl::capi::read_growable(*def, nl_default_navmesh_build_def(), nl::capi::kFirstSize<nl_navmesh_build_def>, "def");
+        const nl_navmesh_build_def settings = nl::capi::read_growable(
+            *def, nl_default_navmesh_build_def(), nl::capi::kFirstSize<nl_navmesh_build_def>, "def");
         nl::NavMeshBuildRequest request;
         request.builder = settings.builder ? settings.builder : "recast";
         request.agent_type = nl::capi::to_core(settings.agent_type);
@@ -52,7 +51,8 @@ NL_API nl_status nl_navmesh_build(nl_world* world, const nl_navmesh_build_def* d
         const auto start = std::chrono::steady_clock::now();
         *out_id = to_id<nl_navmesh_id>(nl::naming_fields("def->", [&] { return w.build_navmesh(request); }));
         const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-        w.logger().log(nl::LogLevel::Info, nl::concat("nl_navmesh_build: '", request.builder, "' built a navmesh in ", ms, " ms"));
+        w.logger().log(nl::LogLevel::Info,
+                       nl::concat("nl_navmesh_build: '", request.builder, "' built a navmesh in ", ms, " ms"));
     });
 }
 
@@ -95,7 +95,8 @@ NL_API nl_status nl_plugin_get_description(const nl_world* world, nl_plugin_id p
 NL_API nl_status nl_world_get_plugins(const nl_world* world, nl_plugin_id* out_ids, uint32_t capacity,
                                       uint32_t* out_count) {
     return guarded("nl_world_get_plugins", world, [&] {
-        nl::capi::list_into(deref(world).plugins().handles(), out_ids, capacity, out_count, "out_ids", to_id<nl_plugin_id>);
+        nl::capi::list_into(deref(world).plugins().handles(), out_ids, capacity, out_count, "out_ids",
+                            to_id<nl_plugin_id>);
     });
 }
 

@@ -23,10 +23,9 @@ nl_status for_plugin(void* context, const char* query, Call&& call) noexcept {
         return NL_STATUS_SUCCESS;
     } catch (const Error& e) {
         try {
-            world_of_plugin(context).logger().log(LogLevel::Debug,
-                                                  concat("plugin '", name_of_plugin(context), "': ", query, ": ", e.what()));
-        } catch (...) {
-        }
+            world_of_plugin(context).logger().log(
+                LogLevel::Debug, concat("plugin '", name_of_plugin(context), "': ", query, ": ", e.what()));
+        } catch (...) {}
         return NL_STATUS_FAILURE | to_status(e.code());
     } catch (const std::bad_alloc&) {
         return NL_STATUS_FAILURE | NL_STATUS_OUT_OF_MEMORY;
@@ -39,15 +38,13 @@ void host_log(void* context, nl_log_level level, const char* message) {
     if (level > NL_LOG_DEBUG) level = NL_LOG_DEBUG;
     try {
         world_of_plugin(context).logger().log(static_cast<LogLevel>(level), message ? message : "");
-    } catch (...) {
-    }
+    } catch (...) {}
 }
 
 void host_set_error(void*, const char* message) {
     try {
         plugin_error = message ? message : "";
-    } catch (...) {
-    }
+    } catch (...) {}
 }
 
 // The two-call copy of what a build is for; `areas` may be null (get_level_triangles).
@@ -89,8 +86,8 @@ nl_status host_get_build_triangles(void* context, float* vertices, uint32_t vert
 
 nl_status host_report_build_progress(void* context, float fraction, const char* stage) {
     bool go_on = true;
-    const nl_status ran = for_plugin(context, "report_build_progress",
-                                     [&] { go_on = report_build_progress(context, fraction, stage); });
+    const nl_status ran =
+        for_plugin(context, "report_build_progress", [&] { go_on = report_build_progress(context, fraction, stage); });
     if (NL_FAILED(ran)) return ran;
     return go_on ? NL_STATUS_SUCCESS : NL_STATUS_FAILURE | NL_STATUS_CANCELLED;
 }
@@ -114,8 +111,9 @@ nl_status host_navmesh_info(void* context, nl_navmesh_id navmesh, nl_navmesh_inf
 
 nl_status host_find_nearest(void* context, nl_navmesh_id navmesh, const float* points, uint32_t count,
                             const float* half_extents, nl_nav_point* out) {
-    return for_plugin(context, "navmesh_find_nearest",
-                      [&] { navmesh_find_nearest(world_of_plugin(context), navmesh, points, count, half_extents, out); });
+    return for_plugin(context, "navmesh_find_nearest", [&] {
+        navmesh_find_nearest(world_of_plugin(context), navmesh, points, count, half_extents, out);
+    });
 }
 
 nl_status host_cast_rays(void* context, const nl_ray* rays, uint32_t count, nl_ray_hit* hits) {

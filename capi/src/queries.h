@@ -13,8 +13,8 @@ namespace nl::capi {
 void cast_rays(const World& world, const nl_ray* rays, uint32_t count, nl_ray_hit* out_hits);
 void segments_blocked(const World& world, const nl_segment* segments, uint32_t count, uint8_t* out_blocked);
 void navmesh_get_info(const World& world, nl_navmesh_id navmesh, nl_navmesh_info* out_info);
-void navmesh_get_boundary_edges(const World& world, nl_navmesh_id navmesh, nl_boundary_edge* out_edges, uint32_t capacity,
-                                uint32_t* out_count);
+void navmesh_get_boundary_edges(const World& world, nl_navmesh_id navmesh, nl_boundary_edge* out_edges,
+                                uint32_t capacity, uint32_t* out_count);
 void navmesh_find_nearest(const World& world, nl_navmesh_id navmesh, const float* points, uint32_t count,
                           const float* half_extents, nl_nav_point* out);
 

@@ -44,7 +44,8 @@ Filter read_filter(const nl_query_filter* given, const std::string& name) {
         static const Filter defaults{nl::capi::read_capabilities(nl_default_agent_capabilities(), ""), {}, {}};
         return defaults;
     }
-    const nl_query_filter filter = nl::capi::read_growable(*given, nl_default_query_filter(), nl::capi::kFirstSize<nl_query_filter>, name.c_str());
+    const nl_query_filter filter =
+        nl::capi::read_growable(*given, nl_default_query_filter(), nl::capi::kFirstSize<nl_query_filter>, name.c_str());
     const std::string prefix = name + "->";
     Filter body;
     body.capabilities = nl::capi::read_capabilities(filter.capabilities, prefix.c_str());
@@ -63,7 +64,8 @@ std::shared_ptr<const nl::ReachabilityMap> map_of(const nl::PathGraph& graph, co
 
 void check_polygon(const nl::NavMesh& mesh, uint32_t polygon, const char* name) {
     if (polygon >= mesh.polygon_count())
-        fail(ErrorCode::InvalidArgument, name, " is ", polygon, " but the navmesh has ", mesh.polygon_count(), " polygons");
+        fail(ErrorCode::InvalidArgument, name, " is ", polygon, " but the navmesh has ", mesh.polygon_count(),
+             " polygons");
 }
 
 // A walk's start: in the navmesh's space, over its polygon. `prefix` parts name the struct the
@@ -72,8 +74,8 @@ template <typename... Prefix>
 Vec3 read_start(const nl::NavMesh& mesh, const nl::CarrierPose& pose, uint32_t polygon, const float* start,
                 const Prefix&... prefix) {
     if (polygon >= mesh.polygon_count())
-        fail(ErrorCode::InvalidArgument, prefix..., "start_polygon is ", polygon, " but the navmesh has ", mesh.polygon_count(),
-             " polygons");
+        fail(ErrorCode::InvalidArgument, prefix..., "start_polygon is ", polygon, " but the navmesh has ",
+             mesh.polygon_count(), " polygons");
     if (!start) fail(ErrorCode::InvalidArgument, prefix..., "start is null");
     const Vec3 local = pose.carrier_point(nl::capi::read_position(start, prefix..., "start"));
     if (mesh.over_polygon(polygon, local.x(), local.z())) return local;
@@ -97,7 +99,8 @@ void write_polygons(const std::vector<uint32_t>& polygons, uint32_t* out, uint32
     std::copy(polygons.begin(), polygons.begin() + written, out);
     if (out_count) *out_count = static_cast<uint32_t>(polygons.size());
     if (out && written < polygons.size())
-        fail(ErrorCode::BufferTooSmall, "capacity is ", capacity, " but the walk visited ", polygons.size(), " polygons");
+        fail(ErrorCode::BufferTooSmall, "capacity is ", capacity, " but the walk visited ", polygons.size(),
+             " polygons");
 }
 
 }  // namespace
@@ -186,7 +189,8 @@ NL_API nl_status nl_navmesh_raycast(const nl_world* world, nl_navmesh_id navmesh
         require(out_hits, "out_hits");
         if (!out_polygons && polygons_per_ray > 0)
             fail(ErrorCode::InvalidArgument, "out_polygons is null but polygons_per_ray is ", polygons_per_ray);
-        const nl::capi::ElementWriter<nl_navmesh_raycast_hit> hits(out_hits, nl::capi::kFirstSize<nl_navmesh_raycast_hit>, "out_hits");
+        const nl::capi::ElementWriter<nl_navmesh_raycast_hit> hits(
+            out_hits, nl::capi::kFirstSize<nl_navmesh_raycast_hit>, "out_hits");
         // Every ray is checked before any is walked: a refused batch writes nothing.
         thread_local std::vector<std::pair<Vec3, Vec3>> ends;
         ends.resize(count);
@@ -247,18 +251,19 @@ NL_API nl_status nl_navmesh_move_along_surface(const nl_world* world, nl_navmesh
         options.max_polygons = mesh->polygon_count();
         options.polygons = &visited;
         const nl::SurfaceMove moved = nl::move_along_surface(*mesh, start_polygon, from, to, options);
-        *out_point = nl::capi::to_c(nl::NavPoint{true, moved.position, (moved.position - to).norm(), moved.polygon}, pose);
+        *out_point =
+            nl::capi::to_c(nl::NavPoint{true, moved.position, (moved.position - to).norm(), moved.polygon}, pose);
         write_polygons(visited, out_polygons, capacity, out_count);
     });
 }
 
-NL_API nl_status nl_navmesh_random_points(const nl_world* world, nl_navmesh_id navmesh,
-                                          const nl_random_points_def* def, nl_nav_point* out_points, uint32_t count,
-                                          uint32_t* out_found) {
+NL_API nl_status nl_navmesh_random_points(const nl_world* world, nl_navmesh_id navmesh, const nl_random_points_def* def,
+                                          nl_nav_point* out_points, uint32_t count, uint32_t* out_found) {
     return guarded("nl_navmesh_random_points", world, [&] {
         const nl::World& w = deref(world);
         require(def, "def");
-        const nl_random_points_def d = nl::capi::read_growable(*def, nl_default_random_points_def(), nl::capi::kFirstSize<nl_random_points_def>, "def");
+        const nl_random_points_def d = nl::capi::read_growable(*def, nl_default_random_points_def(),
+                                                               nl::capi::kFirstSize<nl_random_points_def>, "def");
         const Filter body = read_filter(d.filter, "def->filter");
         const auto graph = graph_of(w, navmesh);
         const nl::NavMesh* mesh = &graph->navmesh();
@@ -266,7 +271,8 @@ NL_API nl_status nl_navmesh_random_points(const nl_world* world, nl_navmesh_id n
         nl::RandomPointsRequest request;
         request.centre = pose.carrier_point(nl::capi::read_position(d.centre, "def->centre"));
         request.radius = nl::capi::read_amount(d.radius, "def->radius");
-        if (request.radius > nl::kCoordinateLimit) fail(ErrorCode::InvalidArgument, "def->radius is beyond the coordinate limit");
+        if (request.radius > nl::kCoordinateLimit)
+            fail(ErrorCode::InvalidArgument, "def->radius is beyond the coordinate limit");
         request.seed = d.seed;
         std::shared_ptr<const nl::ReachabilityMap> map;
         if (d.reachable_from != NL_NO_POLYGON) {
@@ -289,7 +295,8 @@ NL_API nl_status nl_navmesh_random_points(const nl_world* world, nl_navmesh_id n
         thread_local std::vector<nl::NavPoint> points;
         points.resize(count);
         const uint32_t found = nl::random_points(*mesh, request, &allowed, count, points.data());
-        for (uint32_t i = 0; i < count; ++i) out_points[i] = i < found ? nl::capi::to_c(points[i], pose) : nl_nav_point{};
+        for (uint32_t i = 0; i < count; ++i)
+            out_points[i] = i < found ? nl::capi::to_c(points[i], pose) : nl_nav_point{};
         for (uint32_t i = found; i < count; ++i) out_points[i].polygon = NL_NO_POLYGON;
         *out_found = found;
     });

@@ -35,9 +35,15 @@ nl_status to_status(ErrorCode code) noexcept {
 }
 
 ErrorCode to_error_code(nl_status status) noexcept {
-    static const ErrorCode codes[] = {ErrorCode::InvalidHandle, ErrorCode::InvalidArgument, ErrorCode::BufferTooSmall,
-                                      ErrorCode::OutOfMemory,   ErrorCode::Cancelled,       ErrorCode::NotFound,
-                                      ErrorCode::Io,            ErrorCode::Parse,           ErrorCode::VersionMismatch};
+    static const ErrorCode codes[] = {ErrorCode::InvalidHandle,
+                                      ErrorCode::InvalidArgument,
+                                      ErrorCode::BufferTooSmall,
+                                      ErrorCode::OutOfMemory,
+                                      ErrorCode::Cancelled,
+                                      ErrorCode::NotFound,
+                                      ErrorCode::Io,
+                                      ErrorCode::Parse,
+                                      ErrorCode::VersionMismatch};
     for (ErrorCode code : codes) {
         if (status & to_status(code)) return code;
     }
@@ -64,9 +70,7 @@ nl_status record(const char* function, const nl_world* world, nl_status status, 
 
 extern "C" {
 
-NL_API nl_version nl_get_version(void) {
-    return nl_version{NL_VERSION_MAJOR, NL_VERSION_MINOR, NL_VERSION_PATCH};
-}
+NL_API nl_version nl_get_version(void) { return nl_version{NL_VERSION_MAJOR, NL_VERSION_MINOR, NL_VERSION_PATCH}; }
 
 NL_API const char* nl_status_string(nl_status status) {
     if (NL_SUCCEEDED(status)) {

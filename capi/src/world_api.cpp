@@ -69,7 +69,8 @@ void check_task_callbacks(const nl_world_def& def) {
              enqueue ? "task_enqueue_fn" : "task_finish_fn", " is set (set both task callbacks or neither)");
     if (enqueue && def.worker_count < 1)
         fail(ErrorCode::InvalidArgument, "def->worker_count is ", def.worker_count,
-             " (with task callbacks it is the number of the host's workers: 1 to NL_MAX_WORKERS = ", NL_MAX_WORKERS, ")");
+             " (with task callbacks it is the number of the host's workers: 1 to NL_MAX_WORKERS = ", NL_MAX_WORKERS,
+             ")");
 }
 
 }  // namespace
@@ -95,10 +96,12 @@ NL_API nl_status nl_world_create(const nl_world_def* def, nl_world** out_world) 
     return guarded("nl_world_create", nullptr, [&] {
         nl::capi::require(out_world, "out_world");
         const nl_world_def settings =
-            def ? nl::capi::read_growable(*def, nl_default_world_def(), nl::capi::kFirstSize<nl_world_def>, "def") : nl_default_world_def();
+            def ? nl::capi::read_growable(*def, nl_default_world_def(), nl::capi::kFirstSize<nl_world_def>, "def")
+                : nl_default_world_def();
         if (def && def->size > kWorldDefTasksBegin && def->size < kWorldDefTasksEnd)
-            fail(ErrorCode::InvalidArgument, "def->size is ", def->size, ", which ends inside the task callbacks (bytes ",
-                 kWorldDefTasksBegin, " to ", kWorldDefTasksEnd, "; initialise it from nl_default_world_def or with sizeof)");
+            fail(ErrorCode::InvalidArgument, "def->size is ", def->size,
+                 ", which ends inside the task callbacks (bytes ", kWorldDefTasksBegin, " to ", kWorldDefTasksEnd,
+                 "; initialise it from nl_default_world_def or with sizeof)");
         // Bounded above too: TBB sizes an arena by its count (2^31 slots crash its first use), and
         // the path queue starts one thread each.
         for (const auto& [count, name] : {std::pair{settings.worker_count, "worker_count"},
@@ -110,13 +113,15 @@ NL_API nl_status nl_world_create(const nl_world_def* def, nl_world** out_world) 
         if (settings.log_level > NL_LOG_DEBUG)
             fail(ErrorCode::InvalidArgument, "def->log_level is ", settings.log_level, " (at most NL_LOG_DEBUG)");
         check_task_callbacks(settings);
-        if (settings.agent_paths_per_step == 0) fail(ErrorCode::InvalidArgument, "def->agent_paths_per_step is 0 (at least 1)");
+        if (settings.agent_paths_per_step == 0)
+            fail(ErrorCode::InvalidArgument, "def->agent_paths_per_step is 0 (at least 1)");
         nl::WorldSettings core;
         core.agents.max_paths_per_step = settings.agent_paths_per_step;
         core.worker_count = resolve_worker_count(settings.worker_count);
         if (settings.task_enqueue_fn) core.tasks = host_tasks_of(settings);  // else TBB with worker_count threads
-        core.path_worker_count =
-            settings.path_worker_count == 0 ? 0u : static_cast<unsigned>(resolve_worker_count(settings.path_worker_count));
+        core.path_worker_count = settings.path_worker_count == 0
+                                     ? 0u
+                                     : static_cast<unsigned>(resolve_worker_count(settings.path_worker_count));
         core.logger = logger_of(settings);
         auto world = std::make_unique<nl_world>();
         world->core = std::make_unique<nl::World>(std::move(core));

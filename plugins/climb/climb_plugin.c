@@ -80,8 +80,9 @@ static int read_settings(const char* json, size_t length, climb_settings* s, cha
     free(text);
     if (!(s->max_height > s->min_height && s->min_height >= 0.0f && s->ability_bit < 64 && s->sample_spacing >= 0.1f &&
           s->reach > 0.0f)) {
-        snprintf(error, error_size, "climb settings: need max_height > min_height >= 0, ability_bit < 64, "
-                                    "sample_spacing >= 0.1, reach > 0");
+        snprintf(error, error_size,
+                 "climb settings: need max_height > min_height >= 0, ability_bit < 64, "
+                 "sample_spacing >= 0.1, reach > 0");
         return 0;
     }
     return 1;
@@ -136,11 +137,19 @@ static nl_status generate(void* state, const nl_plugin_host* host, nl_navmesh_id
             nl_link_def link;
 
             /* A wall just past the edge, at chest height. */
-            chest.from[0] = p[0]; chest.from[1] = p[1] + 0.5f * info.agent_type.height; chest.from[2] = p[2];
-            chest.to[0] = p[0] + ox * s.reach; chest.to[1] = chest.from[1]; chest.to[2] = p[2] + oz * s.reach;
+            chest.from[0] = p[0];
+            chest.from[1] = p[1] + 0.5f * info.agent_type.height;
+            chest.from[2] = p[2];
+            chest.to[0] = p[0] + ox * s.reach;
+            chest.to[1] = chest.from[1];
+            chest.to[2] = p[2] + oz * s.reach;
             /* Room above the climber: straight up from the edge to above the top. */
-            headroom.from[0] = p[0]; headroom.from[1] = p[1] + 0.1f; headroom.from[2] = p[2];
-            headroom.to[0] = p[0]; headroom.to[1] = p[1] + s.max_height + 0.5f * info.agent_type.height; headroom.to[2] = p[2];
+            headroom.from[0] = p[0];
+            headroom.from[1] = p[1] + 0.1f;
+            headroom.from[2] = p[2];
+            headroom.to[0] = p[0];
+            headroom.to[1] = p[1] + s.max_height + 0.5f * info.agent_type.height;
+            headroom.to[2] = p[2];
             {
                 const nl_segment both[2] = {chest, headroom};
                 status = host->segments_blocked(host->context, both, 2, blocked);
@@ -157,7 +166,8 @@ static nl_status generate(void* state, const nl_plugin_host* host, nl_navmesh_id
             status = host->cast_rays(host->context, &down, 1, &hit);
             if (NL_FAILED(status) || !hit.hit || hit.point[1] - p[1] < s.min_height) continue;
             status = host->navmesh_find_nearest(host->context, navmesh, hit.point, 1, extents, &top);
-            if (NL_FAILED(status) || !top.found || top.point[1] - p[1] < s.min_height || top.point[1] - p[1] > s.max_height + 0.5f)
+            if (NL_FAILED(status) || !top.found || top.point[1] - p[1] < s.min_height ||
+                top.point[1] - p[1] > s.max_height + 0.5f)
                 continue;
 
             memset(&link, 0, sizeof link);

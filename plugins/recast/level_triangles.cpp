@@ -35,15 +35,16 @@ LevelTriangles fetch_level_triangles(const nl_plugin_host& host) {
         fail(NL_STATUS_INVALID_ARGUMENT, "the host offers no get_level_triangles");
     const char* const query = with_areas ? "get_build_triangles" : "get_level_triangles";
     LevelTriangles level;
-    auto copy = [&](uint32_t vertex_capacity, uint32_t* vertex_count, uint32_t triangle_capacity, uint32_t* triangle_count) {
+    auto copy = [&](uint32_t vertex_capacity, uint32_t* vertex_count, uint32_t triangle_capacity,
+                    uint32_t* triangle_count) {
         float* const vertices = vertex_capacity ? level.vertices.data() : nullptr;
         uint32_t* const indices = triangle_capacity ? level.indices.data() : nullptr;
         if (with_areas)
             return host.get_build_triangles(host.context, vertices, vertex_capacity, vertex_count, indices,
                                             triangle_capacity ? level.areas.data() : nullptr, triangle_capacity,
                                             triangle_count);
-        return host.get_level_triangles(host.context, vertices, vertex_capacity, vertex_count, indices, triangle_capacity,
-                                        triangle_count);
+        return host.get_level_triangles(host.context, vertices, vertex_capacity, vertex_count, indices,
+                                        triangle_capacity, triangle_count);
     };
 
     uint32_t vertex_count = 0;

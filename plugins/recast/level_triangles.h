@@ -10,9 +10,9 @@
 namespace nl::recast {
 
 struct LevelTriangles {
-    std::vector<float> vertices;   // x y z per vertex
-    std::vector<uint32_t> indices; // 3 per triangle
-    std::vector<uint8_t> areas;    // 1 per triangle: the mesh's area, or NL_BUILD_AREA_OBSTACLE
+    std::vector<float> vertices;    // x y z per vertex
+    std::vector<uint32_t> indices;  // 3 per triangle
+    std::vector<uint8_t> areas;     // 1 per triangle: the mesh's area, or NL_BUILD_AREA_OBSTACLE
 
     int vertex_count() const { return static_cast<int>(vertices.size() / 3); }
     int triangle_count() const { return static_cast<int>(indices.size() / 3); }

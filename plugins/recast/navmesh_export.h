@@ -23,11 +23,11 @@ public:
     uint32_t polygon_count() const { return static_cast<uint32_t>(vertex_counts_.size()); }
 
 private:
-    std::vector<float> vertices_;          // x y z per vertex, world space
-    std::vector<uint32_t> indices_;        // polygon corners, polygon after polygon
-    std::vector<uint8_t> vertex_counts_;   // corners per polygon
+    std::vector<float> vertices_;         // x y z per vertex, world space
+    std::vector<uint32_t> indices_;       // polygon corners, polygon after polygon
+    std::vector<uint8_t> vertex_counts_;  // corners per polygon
     std::vector<uint8_t> areas_;
-    std::vector<float> detail_vertices_;   // x y z per detail vertex, world space
+    std::vector<float> detail_vertices_;            // x y z per detail vertex, world space
     std::vector<uint32_t> detail_triangles_;        // 3 absolute detail-vertex indices per triangle
     std::vector<uint32_t> detail_triangle_starts_;  // polygon_count + 1 offsets
 };

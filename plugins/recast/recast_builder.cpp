@@ -51,7 +51,8 @@ nl_status build(void* /*plugin_state*/, const nl_plugin_host* host, const nl_nav
         const NavMeshExport navmesh(*mesh.polygons, *mesh.detail);
         const nl_navmesh_def navmesh_def = navmesh.def(def->agent_type);
         const nl_status recorded = host_record_build_settings(*host, settings_to_json(settings));
-        if (NL_FAILED(recorded)) fail(recorded & ~NL_STATUS_FAILURE, "the host refused the record of the settings used");
+        if (NL_FAILED(recorded))
+            fail(recorded & ~NL_STATUS_FAILURE, "the host refused the record of the settings used");
         // The sink reports its own failures; its status is the build's.
         return sink(sink_context, &navmesh_def);
     } catch (const BuildFailure& e) {

@@ -39,7 +39,8 @@ struct Field {
     size_t offset;
 };
 
-#define NL_RECAST_FIELD(name, kind) Field{#name, Kind::kind, offsetof(nl_recast_settings, name)}
+#define NL_RECAST_FIELD(name, kind) \
+    Field { #name, Kind::kind, offsetof(nl_recast_settings, name) }
 constexpr Field kFields[] = {
     NL_RECAST_FIELD(cell_size, Float),
     NL_RECAST_FIELD(cell_height, Float),
@@ -69,10 +70,10 @@ uint8_t& flag_field(nl_recast_settings& s, const Field& f) {
 
 const char* partition_name(uint32_t p) {
     switch (p) {
-    case NL_RECAST_PARTITION_WATERSHED: return "watershed";
-    case NL_RECAST_PARTITION_MONOTONE: return "monotone";
-    case NL_RECAST_PARTITION_LAYERS: return "layers";
-    default: return nullptr;
+        case NL_RECAST_PARTITION_WATERSHED: return "watershed";
+        case NL_RECAST_PARTITION_MONOTONE: return "monotone";
+        case NL_RECAST_PARTITION_LAYERS: return "layers";
+        default: return nullptr;
     }
 }
 
@@ -105,23 +106,22 @@ std::string float_problem(const std::string& name, double v) {
 std::string field_problem(nl_recast_settings& s, const Field& f) {
     std::ostringstream out;
     switch (f.kind) {
-    case Kind::Float: return float_problem(f.name, float_field(s, f));
-    case Kind::Integer: {
-        const uint32_t v = uint_field(s, f);
-        if (v < 3 || v > 6) out << "must be in 3..6 (got " << v << ")";
-        break;
-    }
-    case Kind::Partition: {
-        const uint32_t v = uint_field(s, f);
-        if (!partition_name(v))
-            out << "must be 0 (watershed), 1 (monotone) or 2 (layers) (got " << v << ")";
-        break;
-    }
-    case Kind::Flag: {
-        const unsigned v = flag_field(s, f);
-        if (v > 1) out << "must be 0 or 1 (got " << v << ")";
-        break;
-    }
+        case Kind::Float: return float_problem(f.name, float_field(s, f));
+        case Kind::Integer: {
+            const uint32_t v = uint_field(s, f);
+            if (v < 3 || v > 6) out << "must be in 3..6 (got " << v << ")";
+            break;
+        }
+        case Kind::Partition: {
+            const uint32_t v = uint_field(s, f);
+            if (!partition_name(v)) out << "must be 0 (watershed), 1 (monotone) or 2 (layers) (got " << v << ")";
+            break;
+        }
+        case Kind::Flag: {
+            const unsigned v = flag_field(s, f);
+            if (v > 1) out << "must be 0 or 1 (got " << v << ")";
+            break;
+        }
     }
     return out.str();
 }
@@ -145,47 +145,48 @@ bool integer_in(const nlohmann::json& v, int64_t lo, int64_t hi, int64_t* out) {
 void apply_json_value(nl_recast_settings& s, const Field& f, const nlohmann::json& v) {
     const std::string where = std::string("settings_json: ") + f.name;
     switch (f.kind) {
-    case Kind::Float: {
-        if (!v.is_number()) fail(NL_STATUS_INVALID_ARGUMENT, where, " must be a number, not ", json_type(v));
-        const double d = v.get<double>();
-        const std::string problem = float_problem(f.name, d);
-        if (!problem.empty()) fail(NL_STATUS_INVALID_ARGUMENT, where, " ", problem);
-        float_field(s, f) = static_cast<float>(d);
-        return;
-    }
-    case Kind::Integer: {
-        if (!v.is_number_integer())
-            fail(NL_STATUS_INVALID_ARGUMENT, where, " must be an integer, not ", nl::json_excerpt(v));
-        int64_t n = 0;
-        if (!integer_in(v, 3, 6, &n)) fail(NL_STATUS_INVALID_ARGUMENT, where, " must be in 3..6 (got ", nl::json_excerpt(v), ")");
-        uint_field(s, f) = static_cast<uint32_t>(n);
-        return;
-    }
-    case Kind::Partition: {
-        if (v.is_string()) {
-            const std::string name = v.get<std::string>();
-            for (uint32_t p = 0; partition_name(p); ++p) {
-                if (name == partition_name(p)) {
-                    uint_field(s, f) = p;
-                    return;
-                }
-            }
-            fail(NL_STATUS_INVALID_ARGUMENT, where, " must be \"watershed\", \"monotone\" or \"layers\" (got ",
-                 nl::json_excerpt(v), ")");
+        case Kind::Float: {
+            if (!v.is_number()) fail(NL_STATUS_INVALID_ARGUMENT, where, " must be a number, not ", json_type(v));
+            const double d = v.get<double>();
+            const std::string problem = float_problem(f.name, d);
+            if (!problem.empty()) fail(NL_STATUS_INVALID_ARGUMENT, where, " ", problem);
+            float_field(s, f) = static_cast<float>(d);
+            return;
         }
-        if (!v.is_number_integer())
-            fail(NL_STATUS_INVALID_ARGUMENT, where, " must be a string or an integer, not ", json_type(v));
-        int64_t p = 0;
-        if (!integer_in(v, 0, 2, &p))
-            fail(NL_STATUS_INVALID_ARGUMENT, where, " must be 0 (watershed), 1 (monotone) or 2 (layers) (got ",
-                 nl::json_excerpt(v), ")");
-        uint_field(s, f) = static_cast<uint32_t>(p);
-        return;
-    }
-    case Kind::Flag:
-        if (!v.is_boolean()) fail(NL_STATUS_INVALID_ARGUMENT, where, " must be true or false, not ", json_type(v));
-        flag_field(s, f) = v.get<bool>() ? 1 : 0;
-        return;
+        case Kind::Integer: {
+            if (!v.is_number_integer())
+                fail(NL_STATUS_INVALID_ARGUMENT, where, " must be an integer, not ", nl::json_excerpt(v));
+            int64_t n = 0;
+            if (!integer_in(v, 3, 6, &n))
+                fail(NL_STATUS_INVALID_ARGUMENT, where, " must be in 3..6 (got ", nl::json_excerpt(v), ")");
+            uint_field(s, f) = static_cast<uint32_t>(n);
+            return;
+        }
+        case Kind::Partition: {
+            if (v.is_string()) {
+                const std::string name = v.get<std::string>();
+                for (uint32_t p = 0; partition_name(p); ++p) {
+                    if (name == partition_name(p)) {
+                        uint_field(s, f) = p;
+                        return;
+                    }
+                }
+                fail(NL_STATUS_INVALID_ARGUMENT, where, " must be \"watershed\", \"monotone\" or \"layers\" (got ",
+                     nl::json_excerpt(v), ")");
+            }
+            if (!v.is_number_integer())
+                fail(NL_STATUS_INVALID_ARGUMENT, where, " must be a string or an integer, not ", json_type(v));
+            int64_t p = 0;
+            if (!integer_in(v, 0, 2, &p))
+                fail(NL_STATUS_INVALID_ARGUMENT, where, " must be 0 (watershed), 1 (monotone) or 2 (layers) (got ",
+                     nl::json_excerpt(v), ")");
+            uint_field(s, f) = static_cast<uint32_t>(p);
+            return;
+        }
+        case Kind::Flag:
+            if (!v.is_boolean()) fail(NL_STATUS_INVALID_ARGUMENT, where, " must be true or false, not ", json_type(v));
+            flag_field(s, f) = v.get<bool>() ? 1 : 0;
+            return;
     }
 }
 
@@ -196,22 +197,22 @@ void apply_json(nl_recast_settings& s, const char* text, size_t length) {
     } catch (const nl::Error& e) {
         fail(e.code() == nl::ErrorCode::Parse ? NL_STATUS_PARSE_ERROR : NL_STATUS_INVALID_ARGUMENT, e.what());
     }
-    if (!doc.is_object())
-        fail(NL_STATUS_INVALID_ARGUMENT, "settings_json must be a JSON object, not ", json_type(doc));
+    if (!doc.is_object()) fail(NL_STATUS_INVALID_ARGUMENT, "settings_json must be a JSON object, not ", json_type(doc));
     for (const auto& [key, value] : doc.items()) {
         const Field* field = nullptr;
         for (const Field& f : kFields) {
             if (key == f.name) field = &f;
         }
         if (!field)
-            fail(NL_STATUS_INVALID_ARGUMENT, "settings_json: unknown key ", nl::quoted_excerpt(key), " (known keys: ",
-                 known_keys(), ")");
+            fail(NL_STATUS_INVALID_ARGUMENT, "settings_json: unknown key ", nl::quoted_excerpt(key),
+                 " (known keys: ", known_keys(), ")");
         apply_json_value(s, *field, value);
     }
 }
 
 void check_agent_field(const char* name, float v, bool ok, const char* rule) {
-    if (!std::isfinite(v) || !ok) fail(NL_STATUS_INVALID_ARGUMENT, "agent_type.", name, " must be ", rule, " (got ", v, ")");
+    if (!std::isfinite(v) || !ok)
+        fail(NL_STATUS_INVALID_ARGUMENT, "agent_type.", name, " must be ", rule, " (got ", v, ")");
 }
 
 }  // namespace
@@ -220,8 +221,7 @@ void validate_agent(const nl_agent_type& a) {
     check_agent_field("radius", a.radius, a.radius >= 0.0f, "finite and >= 0");
     check_agent_field("height", a.height, a.height > 0.0f, "finite and > 0");
     check_agent_field("max_climb", a.max_climb, a.max_climb >= 0.0f, "finite and >= 0");
-    check_agent_field("max_slope", a.max_slope, a.max_slope >= 0.0f && a.max_slope < 90.0f,
-                      "in [0, 90) degrees");
+    check_agent_field("max_slope", a.max_slope, a.max_slope >= 0.0f && a.max_slope < 90.0f, "in [0, 90) degrees");
 }
 
 nl_recast_settings resolve_settings(const nl_navmesh_build_def& def) {
@@ -254,10 +254,10 @@ std::string settings_to_json(const nl_recast_settings& settings) {
     nlohmann::json out = nlohmann::json::object();
     for (const Field& f : kFields) {
         switch (f.kind) {
-        case Kind::Float: out[f.name] = nl::shortest_decimal(float_field(s, f)); break;
-        case Kind::Integer: out[f.name] = uint_field(s, f); break;
-        case Kind::Partition: out[f.name] = partition_name(uint_field(s, f)); break;
-        case Kind::Flag: out[f.name] = flag_field(s, f) != 0; break;
+            case Kind::Float: out[f.name] = nl::shortest_decimal(float_field(s, f)); break;
+            case Kind::Integer: out[f.name] = uint_field(s, f); break;
+            case Kind::Partition: out[f.name] = partition_name(uint_field(s, f)); break;
+            case Kind::Flag: out[f.name] = flag_field(s, f) != 0; break;
         }
     }
     return out.dump();

@@ -31,7 +31,8 @@ constexpr float kNoDetailSampling = 1e30f;
 std::string units_hint(const float* bmin, const float* bmax) {
     std::ostringstream out;
     out << "; the level is " << std::lround(bmax[0] - bmin[0]) << " x " << std::lround(bmax[2] - bmin[2]) << " m and "
-        << std::lround(bmax[1] - bmin[1]) << " m tall: if that is not its size in metres, register its meshes with nl_mesh_def.metres_per_unit "
+        << std::lround(bmax[1] - bmin[1])
+        << " m tall: if that is not its size in metres, register its meshes with nl_mesh_def.metres_per_unit "
            "(0.01 for centimetres)";
     return out.str();
 }
@@ -52,7 +53,8 @@ std::string describe(const nl_agent_type& a) {
 void require_step(bool ok, const char* step, const HostLogContext& context) {
     if (ok) return;
     const std::string& why = context.last_error();
-    const bool out_of_memory = why.find("Out of memory") != std::string::npos || why.find("out of memory") != std::string::npos;
+    const bool out_of_memory =
+        why.find("Out of memory") != std::string::npos || why.find("out of memory") != std::string::npos;
     fail(out_of_memory ? NL_STATUS_OUT_OF_MEMORY : NL_STATUS_INTERNAL_ERROR, "Recast step ", step, " failed",
          why.empty() ? "" : ": ", why);
 }
@@ -85,7 +87,8 @@ std::vector<unsigned char> walkable_areas(HostLogContext& ctx, const LevelTriang
         any = any || !obstacle;
     }
     if (any) return areas;
-    if (any_flat) no_walkable_surface(agent, "every triangle flatter than max slope is an obstacle's (NL_MESH_OBSTACLE)");
+    if (any_flat)
+        no_walkable_surface(agent, "every triangle flatter than max slope is an obstacle's (NL_MESH_OBSTACLE)");
 
     std::vector<int> turned(level.indices.begin(), level.indices.end());
     for (size_t t = 0; t < turned.size(); t += 3) std::swap(turned[t + 1], turned[t + 2]);
@@ -125,7 +128,8 @@ rcConfig make_config(const nl_recast_settings& s, const nl_agent_type& agent, co
              " (raise cell_height)");
     cfg.walkableHeight = static_cast<int>(height_cells);
     // A climb beyond the heightfield's height is no different from one of its full height.
-    cfg.walkableClimb = static_cast<int>(std::min(std::floor(double(agent.max_climb) / cfg.ch), double(RC_SPAN_MAX_HEIGHT)));
+    cfg.walkableClimb =
+        static_cast<int>(std::min(std::floor(double(agent.max_climb) / cfg.ch), double(RC_SPAN_MAX_HEIGHT)));
     const double radius_cells = std::ceil(double(agent.radius) / cfg.cs);
     if (radius_cells > kMaxErodeRadius)
         fail(NL_STATUS_INVALID_ARGUMENT, "agent_type.radius of ", agent.radius, " m is ", radius_cells,
@@ -164,7 +168,8 @@ rcConfig make_config(const nl_recast_settings& s, const nl_agent_type& agent, co
     if (!(top <= NL_COORDINATE_LIMIT))
         fail(NL_STATUS_INVALID_ARGUMENT, "cell_height ", cfg.ch, " m puts the navmesh up to ", top,
              " m high, beyond the coordinate limit of ", NL_COORDINATE_LIMIT, " m (lower cell_height)");
-    const double far = std::max(double(bmin[0]) + (std::ceil(width) + 1.0) * cfg.cs, double(bmin[2]) + (std::ceil(depth) + 1.0) * cfg.cs);
+    const double far = std::max(double(bmin[0]) + (std::ceil(width) + 1.0) * cfg.cs,
+                                double(bmin[2]) + (std::ceil(depth) + 1.0) * cfg.cs);
     if (!(far <= NL_COORDINATE_LIMIT))
         fail(NL_STATUS_INVALID_ARGUMENT, "cell_size ", cfg.cs, " m puts the navmesh's grid out to ", far,
              " m, beyond the coordinate limit of ", NL_COORDINATE_LIMIT, " m (lower cell_size)");
@@ -231,17 +236,17 @@ SoloMesh build_solo_mesh(HostLogContext& ctx, const LevelTriangles& level, const
 
     // Partition into regions.
     switch (s.partition) {
-    case NL_RECAST_PARTITION_MONOTONE:
-        require_step(rcBuildRegionsMonotone(&ctx, *chf, 0, cfg.minRegionArea, cfg.mergeRegionArea),
-                     "rcBuildRegionsMonotone", ctx);
-        break;
-    case NL_RECAST_PARTITION_LAYERS:
-        require_step(rcBuildLayerRegions(&ctx, *chf, 0, cfg.minRegionArea), "rcBuildLayerRegions", ctx);
-        break;
-    default:
-        require_step(rcBuildDistanceField(&ctx, *chf), "rcBuildDistanceField", ctx);
-        require_step(rcBuildRegions(&ctx, *chf, 0, cfg.minRegionArea, cfg.mergeRegionArea), "rcBuildRegions", ctx);
-        break;
+        case NL_RECAST_PARTITION_MONOTONE:
+            require_step(rcBuildRegionsMonotone(&ctx, *chf, 0, cfg.minRegionArea, cfg.mergeRegionArea),
+                         "rcBuildRegionsMonotone", ctx);
+            break;
+        case NL_RECAST_PARTITION_LAYERS:
+            require_step(rcBuildLayerRegions(&ctx, *chf, 0, cfg.minRegionArea), "rcBuildLayerRegions", ctx);
+            break;
+        default:
+            require_step(rcBuildDistanceField(&ctx, *chf), "rcBuildDistanceField", ctx);
+            require_step(rcBuildRegions(&ctx, *chf, 0, cfg.minRegionArea, cfg.mergeRegionArea), "rcBuildRegions", ctx);
+            break;
     }
 
     // Trace and simplify the region outlines.
@@ -262,9 +267,9 @@ SoloMesh build_solo_mesh(HostLogContext& ctx, const LevelTriangles& level, const
         no_walkable_surface(agent, "Recast made no polygon from the walkable regions' outlines");
     progress.report(0.9f, "building the detail mesh");
     out.detail = require_allocated(rcAllocPolyMeshDetail(), "detail mesh");
-    require_step(rcBuildPolyMeshDetail(&ctx, *out.polygons, *chf, cfg.detailSampleDist, cfg.detailSampleMaxError,
-                                       *out.detail),
-                 "rcBuildPolyMeshDetail", ctx);
+    require_step(
+        rcBuildPolyMeshDetail(&ctx, *out.polygons, *chf, cfg.detailSampleDist, cfg.detailSampleMaxError, *out.detail),
+        "rcBuildPolyMeshDetail", ctx);
     return out;
 }
 

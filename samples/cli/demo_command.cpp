@@ -21,9 +21,9 @@
 namespace nl::cli {
 
 int run_demo(int argc, char** argv) {
-    const samples::Arguments args("navlink demo", "demo", argc, argv, 2,
-                                  {{"seed", true}, {"out-dir", true}, {"oblique", false}, {"link-numbers", false},
-                                   {"roofs", false}});
+    const samples::Arguments args(
+        "navlink demo", "demo", argc, argv, 2,
+        {{"seed", true}, {"out-dir", true}, {"oblique", false}, {"link-numbers", false}, {"roofs", false}});
     if (args.wants_help()) {
         std::fputs(kDemoHelp, stdout);
         return 0;

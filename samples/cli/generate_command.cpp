@@ -26,10 +26,16 @@ enum class Output { LinksJson, NavMeshFile };
 
 int generate(int argc, char** argv, Output output) {
     const bool bake = output == Output::NavMeshFile;
-    const samples::Arguments args(
-        bake ? "navlink bake" : "navlink generate", bake ? "bake" : "generate", argc, argv, 2,
-        with_level_frame_options({{"out", true}, {"navmesh", true}, {"agent", true}, {"settings", true}, {"plugin", true}, {"png", true},
-         {"oblique", false}, {"link-numbers", false}, {"roofs", false}}));
+    const samples::Arguments args(bake ? "navlink bake" : "navlink generate", bake ? "bake" : "generate", argc, argv, 2,
+                                  with_level_frame_options({{"out", true},
+                                                            {"navmesh", true},
+                                                            {"agent", true},
+                                                            {"settings", true},
+                                                            {"plugin", true},
+                                                            {"png", true},
+                                                            {"oblique", false},
+                                                            {"link-numbers", false},
+                                                            {"roofs", false}}));
     if (args.wants_help()) {
         std::fputs(bake ? kBakeHelp : kGenerateHelp, stdout);
         return 0;
@@ -52,11 +58,13 @@ int generate(int argc, char** argv, Output output) {
                                                      ? samples::read_generation_settings_file(*args.value("settings"))
                                                      : samples::GenerationSettings();
 
-    NavigableLevel level(args.positional()[0], args.value("navmesh"), agent.body, settings.recast_json,
-                         args.has("png"), args.value("plugin"), level_frame(args));
+    NavigableLevel level(args.positional()[0], args.value("navmesh"), agent.body, settings.recast_json, args.has("png"),
+                         args.value("plugin"), level_frame(args));
     const nl_link_generation_report report = level.generate_links(settings.links);
-    if (bake) samples::save_navmesh_file(level.world(), level.navmesh(), out);
-    else samples::write_text_file(out, samples::links_json(level.world(), level.navmesh()));
+    if (bake)
+        samples::save_navmesh_file(level.world(), level.navmesh(), out);
+    else
+        samples::write_text_file(out, samples::links_json(level.world(), level.navmesh()));
 
     const samples::NavmeshContents contents = samples::read_navmesh_contents(level.world(), level.navmesh());
     std::printf("level: %s (%u triangles)\n", level.level().name.c_str(), level.level().info.triangle_count);

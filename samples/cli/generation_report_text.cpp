@@ -3,7 +3,7 @@
 namespace nl::cli {
 
 void print_generation_report(std::FILE* out, const nl_link_generation_report& r, const std::vector<nl_link>& links,
-                       const GenerationTimes& times) {
+                             const GenerationTimes& times) {
     uint32_t jumps = 0, drops = 0, manual = 0, plugin = 0, one_way = 0;
     for (const nl_link& l : links) {
         jumps += l.kind == NL_LINK_JUMP;

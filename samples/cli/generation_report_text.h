@@ -14,6 +14,6 @@ struct GenerationTimes {
 };
 
 void print_generation_report(std::FILE* out, const nl_link_generation_report& report, const std::vector<nl_link>& links,
-                       const GenerationTimes& times);
+                             const GenerationTimes& times);
 
 }  // namespace nl::cli

@@ -3,22 +3,22 @@
 namespace nl::cli {
 
 // How LEVEL.obj is given, for generate, bake and path.
-#define NL_LEVEL_FRAME_OPTIONS_HELP                                                                      \
-    "  --clockwise           LEVEL's fronts are wound clockwise (Godot's convention; NL_MESH_CLOCKWISE)\n" \
-    "  --units U             LEVEL's unit: m, cm, mm, km, in, ft, or the metres in one unit (0.01 for\n"   \
+#define NL_LEVEL_FRAME_OPTIONS_HELP                                                                           \
+    "  --clockwise           LEVEL's fronts are wound clockwise (Godot's convention; NL_MESH_CLOCKWISE)\n"    \
+    "  --units U             LEVEL's unit: m, cm, mm, km, in, ft, or the metres in one unit (0.01 for\n"      \
     "                        centimetres); nl_mesh_def.metres_per_unit. Without it LEVEL is read as metres\n" \
-    "                        and a size that suggests other units is warned about on stderr\n"          \
-    "  --up y|z              LEVEL's up axis (z: Blender's, 3ds Max's own frame; nl_mesh_def.up_axis).\n" \
-    "                        Without it y is up, and a level that looks z up is warned about on stderr;\n" \
+    "                        and a size that suggests other units is warned about on stderr\n"                \
+    "  --up y|z              LEVEL's up axis (z: Blender's, 3ds Max's own frame; nl_mesh_def.up_axis).\n"     \
+    "                        Without it y is up, and a level that looks z up is warned about on stderr;\n"    \
     "                        so is one that looks wound clockwise without --clockwise\n"
 
 // The picture options of generate, bake, path and demo, and what their pictures show.
 #define NL_PICTURE_OPTIONS_HELP                                                                          \
-    "  --link-numbers        number each link in the picture by its index in LINKS.json, as navlink\n"  \
-    "                        path prints it (#N)\n"                                                       \
+    "  --link-numbers        number each link in the picture by its index in LINKS.json, as navlink\n"   \
+    "                        path prints it (#N)\n"                                                      \
     "  --roofs               draw the level whole; by default a surface more than 1.5 m above the\n"     \
     "                        navmesh under it (a roof, a ceiling) is cut away, so the floor shows\n"     \
-    "\n"                                                                                               \
+    "\n"                                                                                                 \
     "The picture has a grid labelled in metres (x across, z down) to read --from and --to off, the\n"    \
     "navmesh coloured by the islands of the body it is about (the polygons it can walk and take links\n" \
     "between), one arrow per ledge of drops (the legend counts both), and a start or goal off the map\n" \
@@ -54,8 +54,7 @@ const char* const kGenerateHelp =
     "generates jump and drop links against the level geometry, writes them to LINKS.json and prints the\n"
     "generation report: links by kind, rejections by reason, milliseconds per stage.\n"
     "\n"
-    "  --out LINKS.json      where the links go (schema \"navlink-links\" 1)\n"
-    NL_LEVEL_FRAME_OPTIONS_HELP
+    "  --out LINKS.json      where the links go (schema \"navlink-links\" 1)\n" NL_LEVEL_FRAME_OPTIONS_HELP
     "  --navmesh NAVMESH.obj use this navmesh instead of building one\n"
     "  --agent AGENT.json    the body the navmesh is built for; default Recast's (radius 0.6, height 2,\n"
     "                        max_climb 0.9, max_slope 45). Keys: name, radius, height, max_climb,\n"
@@ -68,8 +67,7 @@ const char* const kGenerateHelp =
     "                        with the others; settings for a kind no loaded plugin provides are refused\n"
     "  --png VIEW.png        also draw the level, navmesh, outline and links (islands for navlink path's\n"
     "                        default body)\n"
-    "  --oblique             draw the picture from an angle instead of straight down\n"
-    NL_PICTURE_OPTIONS_HELP;
+    "  --oblique             draw the picture from an angle instead of straight down\n" NL_PICTURE_OPTIONS_HELP;
 
 const char* const kBakeHelp =
     "usage: navlink bake LEVEL.obj --out NAVMESH.nlnav [--navmesh NAVMESH.obj] [--agent AGENT.json]\n"
@@ -123,11 +121,9 @@ const char* const kPathHelp =
     "                        from LEVEL\n"
     "  --any-body            load LINKS.json even when its links were generated for another body than\n"
     "                        the navmesh's (NL_LINKS_LOAD_ANY_BODY): a warning instead of a refusal\n"
-    "  --json                print the path as a JSON object instead of text\n"
-    NL_LEVEL_FRAME_OPTIONS_HELP
+    "  --json                print the path as a JSON object instead of text\n" NL_LEVEL_FRAME_OPTIONS_HELP
     "  --png VIEW.png        also draw the path over the level (islands for the agent)\n"
-    "  --oblique             draw the picture from an angle instead of straight down\n"
-    NL_PICTURE_OPTIONS_HELP
+    "  --oblique             draw the picture from an angle instead of straight down\n" NL_PICTURE_OPTIONS_HELP
     "\n"
     "Exit status: 0 when the path reaches the goal, 1 when it does not (partial, no path, start or goal\n"
     "off the navmesh), 2 on an error.\n";
@@ -141,8 +137,7 @@ const char* const kDemoHelp =
     "Prints a table of their routes and writes demo.png and demo.links.json (in DIR, default '.'; made\n"
     "if missing, and checked before any work). The picture's islands are the walker's.\n"
     "\n"
-    "  --oblique             draw the picture from an angle instead of straight down\n"
-    NL_PICTURE_OPTIONS_HELP;
+    "  --oblique             draw the picture from an angle instead of straight down\n" NL_PICTURE_OPTIONS_HELP;
 
 const char* const kSimulateHelp =
     "usage: navlink simulate [--seed N] [--out-dir DIR] [--hz N] [--seconds N] [--oblique] [--platforms]\n"

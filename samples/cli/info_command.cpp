@@ -25,15 +25,18 @@ int run_info(int argc, char** argv) {
     }
     std::printf("%s: NavLink navmesh file, format version %u, %llu bytes\n", path.c_str(), i.version,
                 static_cast<unsigned long long>(i.file_size));
-    std::printf("navmesh: %u polygons, %u vertices, %u detail triangles; coordinates in steps of %g m%s\n", i.polygon_count,
-                i.vertex_count, i.detail_triangle_count, double(i.quantum),
+    std::printf("navmesh: %u polygons, %u vertices, %u detail triangles; coordinates in steps of %g m%s\n",
+                i.polygon_count, i.vertex_count, i.detail_triangle_count, double(i.quantum),
                 i.rides_carrier ? " (in the space of the movable mesh it rode)" : "");
     std::printf("links: %u (%u generated, %u added by the host)\n", i.link_count, i.generated_link_count,
                 i.link_count - i.generated_link_count);
-    std::printf("made for a body of radius %g m, height %g m, climbing %g m, slopes up to %g degrees\n", double(i.agent_type.radius),
-                double(i.agent_type.height), double(i.agent_type.max_climb), double(i.agent_type.max_slope));
-    if (i.level_hash) std::printf("built from a level whose hash is %016llx\n", static_cast<unsigned long long>(i.level_hash));
-    else std::printf("handed over by the host (not built from a level)\n");
+    std::printf("made for a body of radius %g m, height %g m, climbing %g m, slopes up to %g degrees\n",
+                double(i.agent_type.radius), double(i.agent_type.height), double(i.agent_type.max_climb),
+                double(i.agent_type.max_slope));
+    if (i.level_hash)
+        std::printf("built from a level whose hash is %016llx\n", static_cast<unsigned long long>(i.level_hash));
+    else
+        std::printf("handed over by the host (not built from a level)\n");
     std::printf("made with: %s\n", file.made_for_json.c_str());
     return 0;
 }

@@ -21,7 +21,8 @@ samples::LevelFrame level_frame(const samples::Arguments& args);
 
 // Loads LINKS.json into the navmesh, with NL_LINKS_LOAD_ANY_BODY when --any-body is given; a refusal
 // of links for another body names --any-body. Throws SampleError.
-uint32_t load_links_option(const samples::Arguments& args, nl_world* world, nl_navmesh_id navmesh, const std::string& path);
+uint32_t load_links_option(const samples::Arguments& args, nl_world* world, nl_navmesh_id navmesh,
+                           const std::string& path);
 
 // Says on stderr which option would answer each of the build's warnings (the library's own warning,
 // printed before, names the C API's field).

@@ -24,7 +24,9 @@ std::string one_line(std::string text) {
 
 int main(int argc, char** argv) {
     if (argc < 2) {
-        std::fprintf(stderr, "navlink: missing command: demo, simulate, generate, bake, path, info or level (see navlink --help)\n");
+        std::fprintf(
+            stderr,
+            "navlink: missing command: demo, simulate, generate, bake, path, info or level (see navlink --help)\n");
         return 2;
     }
     if (!std::strcmp(argv[1], "--help") || !std::strcmp(argv[1], "-h") || !std::strcmp(argv[1], "help")) {

@@ -21,9 +21,11 @@ void print_off_navmesh(std::FILE* out, const char* end, const char* option, cons
                        const std::optional<samples::NearestOnNavmesh>& nearest) {
     std::fprintf(out, "  the %s (%.2f, %.2f, %.2f) is off the navmesh: ", end, given[0], given[1], given[2]);
     if (nearest)
-        std::fprintf(out, "the nearest navmesh point is (%.2f, %.2f, %.2f), %.2f m away; move %s there or widen --search\n",
+        std::fprintf(out,
+                     "the nearest navmesh point is (%.2f, %.2f, %.2f), %.2f m away; move %s there or widen --search\n",
                      nearest->point[0], nearest->point[1], nearest->point[2], nearest->distance, option);
-    else std::fprintf(out, "no navmesh within 1 km of it\n");
+    else
+        std::fprintf(out, "no navmesh within 1 km of it\n");
 }
 
 // Why a path falls short, with the link's index in LINKS.json; a navmesh without links is walked
@@ -32,7 +34,8 @@ void print_shortfall(std::FILE* out, const AskedPath& asked, const std::vector<n
     if (!asked.shortfall || asked.shortfall->reason == NL_PATH_SHORTFALL_NONE) return;
     std::fprintf(out, "  why: %s", asked.shortfall->text);
     if (asked.shortfall->reason == NL_PATH_SHORTFALL_LINK_BEYOND_BODY)
-        std::fprintf(out, " (link #%ld; --agent sets the body's capabilities)", link_index(links, asked.shortfall->link));
+        std::fprintf(out, " (link #%ld; --agent sets the body's capabilities)",
+                     link_index(links, asked.shortfall->link));
     if (asked.shortfall->reason == NL_PATH_SHORTFALL_NO_LINKS) std::fprintf(out, " (--links LINKS.json)");
     std::fprintf(out, "\n");
 }
@@ -80,9 +83,11 @@ void print_path_text(std::FILE* out, const samples::PlannedPath& path, const std
     std::fprintf(out, "path: %s, %.2f m walked, %s (%u polygons searched)\n", samples::outcome_name(r.outcome),
                  r.length, samples::describe_links(samples::count_links(path)).c_str(), r.nodes_visited);
     if (asked.body_radius > asked.navmesh_radius)
-        std::fprintf(out, "  the body (radius %.2f m) is wider than the navmesh's (%.2f m): it keeps %.2f m more from walls\n",
-                     asked.body_radius, asked.navmesh_radius, asked.body_radius - asked.navmesh_radius);
-    if (r.outcome == NL_PATH_START_OFF_NAVMESH) print_off_navmesh(out, "start", "--from", asked.from, asked.nearest_start);
+        std::fprintf(
+            out, "  the body (radius %.2f m) is wider than the navmesh's (%.2f m): it keeps %.2f m more from walls\n",
+            asked.body_radius, asked.navmesh_radius, asked.body_radius - asked.navmesh_radius);
+    if (r.outcome == NL_PATH_START_OFF_NAVMESH)
+        print_off_navmesh(out, "start", "--from", asked.from, asked.nearest_start);
     if (r.outcome == NL_PATH_GOAL_OFF_NAVMESH) print_off_navmesh(out, "goal", "--to", asked.to, asked.nearest_goal);
     print_shortfall(out, asked, links);
     if (path.points.empty()) return;
@@ -123,7 +128,8 @@ std::string path_json(const samples::PlannedPath& path, const std::vector<nl_lin
     if (r.outcome == NL_PATH_GOAL_OFF_NAVMESH) out["nearest_goal"] = nearest_json(asked.nearest_goal);
     if (asked.shortfall && asked.shortfall->reason != NL_PATH_SHORTFALL_NONE) {
         out["why"] = asked.shortfall->text;
-        if (asked.shortfall->reason == NL_PATH_SHORTFALL_LINK_BEYOND_BODY) out["why_link"] = link_index(links, asked.shortfall->link);
+        if (asked.shortfall->reason == NL_PATH_SHORTFALL_LINK_BEYOND_BODY)
+            out["why_link"] = link_index(links, asked.shortfall->link);
     }
     out["length"] = r.length;  // walked, along the surface
     float straight = 0.0f;

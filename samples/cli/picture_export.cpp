@@ -24,8 +24,7 @@ std::string write_picture(const samples::Level& level, const samples::NavmeshCon
     view.height = 0;  // as tall as the level needs
     picture::write_png(scene, view, request.path);
     std::string counted = "drops: " + picture::drop_summary(navmesh.links);
-    if (request.islands)
-        counted += "; " + picture::islands_text(*request.islands);
+    if (request.islands) counted += "; " + picture::islands_text(*request.islands);
     return counted;
 }
 

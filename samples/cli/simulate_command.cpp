@@ -30,11 +30,14 @@ namespace {
 
 // The agents of `profiles` leave `start` for `goal` on `level`, stepped as `options` say; prints their
 // run and writes simulate.png. Returns 0 when every agent arrived, 1 when one did not.
-int play(NavigableLevel& level, const nl_link_generation_report& report, const std::vector<samples::AgentProfile>& profiles,
-         const float start[3], const float goal[3], const SimulateOptions& options, const std::string& picture_title) {
-    std::printf("NavLink simulate: %s, %u jumps and %u drops\n", level.level().name.c_str(), report.jump_links, report.drop_links);
-    std::printf("  %zu agent%s leave (%.1f, %.1f, %.1f) for (%.1f, %.1f, %.1f), stepped every %.1f ms\n\n", profiles.size(),
-                profiles.size() == 1 ? "" : "s", start[0], start[1], start[2], goal[0], goal[1], goal[2], options.dt * 1000.0);
+int play(NavigableLevel& level, const nl_link_generation_report& report,
+         const std::vector<samples::AgentProfile>& profiles, const float start[3], const float goal[3],
+         const SimulateOptions& options, const std::string& picture_title) {
+    std::printf("NavLink simulate: %s, %u jumps and %u drops\n", level.level().name.c_str(), report.jump_links,
+                report.drop_links);
+    std::printf("  %zu agent%s leave (%.1f, %.1f, %.1f) for (%.1f, %.1f, %.1f), stepped every %.1f ms\n\n",
+                profiles.size(), profiles.size() == 1 ? "" : "s", start[0], start[1], start[2], goal[0], goal[1],
+                goal[2], options.dt * 1000.0);
 
     Simulation simulation(level.world());
     for (const samples::AgentProfile& profile : profiles) simulation.add_agent(profile, level.navmesh(), start, goal);
@@ -62,8 +65,8 @@ int simulate_default_level(const SimulateOptions& options) {
     const std::string seed = std::to_string(options.seed);
     NavigableLevel level(generated, "generated default level (seed " + seed + ")", profiles[0].body, "");
     const nl_link_generation_report report = level.generate_links(nl_default_link_settings());
-    return play(level, report, profiles, generated.marker("start")->position, generated.marker("goal")->position, options,
-                "navlink simulate: the tracks three agents took (seed " + seed + ")");
+    return play(level, report, profiles, generated.marker("start")->position, generated.marker("goal")->position,
+                options, "navlink simulate: the tracks three agents took (seed " + seed + ")");
 }
 
 int simulate_level(const samples::Arguments& args, const SimulateOptions& options) {
@@ -73,15 +76,18 @@ int simulate_level(const samples::Arguments& args, const SimulateOptions& option
     // One agent of --agent's body and capabilities, or the demo's three (a walker, a short jumper, a
     // long jumper) on the navmesh built for the first one's body.
     const std::vector<samples::AgentProfile> profiles =
-        args.has("agent") ? std::vector<samples::AgentProfile>{samples::read_agent_file(*args.value("agent"))} : samples::demo_agents();
+        args.has("agent") ? std::vector<samples::AgentProfile>{samples::read_agent_file(*args.value("agent"))}
+                          : samples::demo_agents();
     const samples::GenerationSettings settings = args.has("settings")
                                                      ? samples::read_generation_settings_file(*args.value("settings"))
                                                      : samples::GenerationSettings();
     NavigableLevel level(args.positional()[0], std::nullopt, profiles[0].body, settings.recast_json, true, std::nullopt,
                          level_frame(args));
     nl_link_generation_report report = nl_link_generation_report_init();
-    if (const auto links = args.value("links")) load_links_option(args, level.world(), level.navmesh(), *links);
-    else report = level.generate_links(settings.links);
+    if (const auto links = args.value("links"))
+        load_links_option(args, level.world(), level.navmesh(), *links);
+    else
+        report = level.generate_links(settings.links);
     if (args.has("links")) {
         const samples::NavmeshContents contents = samples::read_navmesh_contents(level.world(), level.navmesh());
         for (const nl_link& link : contents.links) {
@@ -94,9 +100,17 @@ int simulate_level(const samples::Arguments& args, const SimulateOptions& option
 
 int run_simulate(int argc, char** argv) {
     const samples::Arguments args("navlink simulate", "simulate", argc, argv, 2,
-                                  with_level_frame_options({{"seed", true}, {"out-dir", true}, {"oblique", false}, {"hz", true},
-                                                            {"seconds", true}, {"platforms", false}, {"from", true}, {"to", true},
-                                                            {"agent", true}, {"links", true}, {"settings", true},
+                                  with_level_frame_options({{"seed", true},
+                                                            {"out-dir", true},
+                                                            {"oblique", false},
+                                                            {"hz", true},
+                                                            {"seconds", true},
+                                                            {"platforms", false},
+                                                            {"from", true},
+                                                            {"to", true},
+                                                            {"agent", true},
+                                                            {"links", true},
+                                                            {"settings", true},
                                                             {"any-body", false}}));
     if (args.wants_help()) {
         std::fputs(kSimulateHelp, stdout);
@@ -107,10 +121,11 @@ int run_simulate(int argc, char** argv) {
         args.expect_positional(1, "LEVEL.obj");
         for (const char* generated_only : {"seed", "platforms"})
             if (args.has(generated_only))
-                throw samples::SampleError(std::string("--") + generated_only + " is for the generated default level, not " +
-                                           args.positional()[0]);
+                throw samples::SampleError(std::string("--") + generated_only +
+                                           " is for the generated default level, not " + args.positional()[0]);
     } else {
-        for (const char* level_only : {"from", "to", "agent", "links", "settings", "clockwise", "units", "up", "any-body"})
+        for (const char* level_only :
+             {"from", "to", "agent", "links", "settings", "clockwise", "units", "up", "any-body"})
             if (args.has(level_only)) throw samples::SampleError(std::string("--") + level_only + " needs LEVEL.obj");
     }
     SimulateOptions options;

@@ -63,7 +63,8 @@ int simulate_platforms(const SimulateOptions& options) {
     request.path = options.out_dir + "/platforms.png";
     request.oblique = options.oblique;
     request.title =
-        "navlink simulate --platforms: the tracks of passengers riding a shuttle, a disc and a lift (seed " + seed + ")";
+        "navlink simulate --platforms: the tracks of passengers riding a shuttle, a disc and a lift (seed " + seed +
+        ")";
     write_picture(level.level(), samples::read_navmesh_contents(level.world(), level.navmesh()), simulation.tracks(),
                   request, simulation.destinations(destination_names),
                   picture::scene_platforms(level.world(), platforms, simulation.elapsed()));

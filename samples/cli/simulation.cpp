@@ -54,9 +54,10 @@ void Simulation::add_agent(const samples::AgentProfile& profile, nl_navmesh_id n
 
 std::string Simulation::link_word(nl_trajectory_kind kind, nl_link_id link) const {
     const auto gangway = platforms_ ? samples::find_gangway(*platforms_, link) : std::nullopt;
-    std::string word = kind == NL_TRAJECTORY_ARC ? "jumps" : kind == NL_TRAJECTORY_FALL ? "drops"
-                       : gangway                 ? "walks"
-                                                 : "takes a link";
+    std::string word = kind == NL_TRAJECTORY_ARC    ? "jumps"
+                       : kind == NL_TRAJECTORY_FALL ? "drops"
+                       : gangway                    ? "walks"
+                                                    : "takes a link";
     if (gangway) word += (gangway->gangway->onto ? " onto the " : " off the ") + gangway->platform->layout->name;
     return word;
 }
@@ -161,7 +162,7 @@ void Simulation::print_table() const {
                 "travelled", "links taken");
     for (const AgentRun& run : runs_) {
         const nl_agent_info info = samples::read_agent(world_, run.id);
-        const std::string outcome = run.arrived ? "arrived"
+        const std::string outcome = run.arrived    ? "arrived"
                                     : run.ended_at ? std::string("failed: ") + samples::agent_reason_name(run.failure)
                                                    : "on its way";
         char where[48];

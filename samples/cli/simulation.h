@@ -53,9 +53,9 @@ private:
         float travelled = 0.0f;
         samples::LinkCounts links_taken;  // as flown: a drop climbed back up is a jump
         int replans = 0;
-        nl_link_id waiting_for{};   // the take-off it stands at, waiting; null when it is not
-        float waited_there = 0.0f;  // seconds, at that take-off
-        float waited = 0.0f;        // seconds, at every take-off
+        nl_link_id waiting_for{};       // the take-off it stands at, waiting; null when it is not
+        float waited_there = 0.0f;      // seconds, at that take-off
+        float waited = 0.0f;            // seconds, at every take-off
         std::optional<float> ended_at;  // seconds into the run
         bool arrived = false;
         nl_agent_reason failure = NL_AGENT_REASON_NONE;

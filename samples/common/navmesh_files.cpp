@@ -35,8 +35,8 @@ NavmeshFileContents describe_navmesh_file(const std::string& path) {
     size_t length = 0;
     check(nl_navmesh_file_describe(bytes.data(), bytes.size(), &out.info, nullptr, 0, &length), path);
     out.made_for_json.assign(length + 1, '\0');
-    check(nl_navmesh_file_describe(bytes.data(), bytes.size(), nullptr, out.made_for_json.data(), out.made_for_json.size(),
-                                   &length),
+    check(nl_navmesh_file_describe(bytes.data(), bytes.size(), nullptr, out.made_for_json.data(),
+                                   out.made_for_json.size(), &length),
           path);
     out.made_for_json.resize(length);
     return out;

@@ -77,15 +77,15 @@ std::vector<PathSegment> path_segments(const PlannedPath& path) {
 
 const char* outcome_name(nl_path_outcome outcome) {
     switch (outcome) {
-    case NL_PATH_PENDING: return "pending";
-    case NL_PATH_COMPLETE: return "complete";
-    case NL_PATH_PARTIAL: return "partial";
-    case NL_PATH_NO_PATH: return "no path";
-    case NL_PATH_START_OFF_NAVMESH: return "start off navmesh";
-    case NL_PATH_GOAL_OFF_NAVMESH: return "goal off navmesh";
-    case NL_PATH_CANCELLED: return "cancelled";
-    case NL_PATH_FAILED: return "failed";
-    default: return "unknown";
+        case NL_PATH_PENDING: return "pending";
+        case NL_PATH_COMPLETE: return "complete";
+        case NL_PATH_PARTIAL: return "partial";
+        case NL_PATH_NO_PATH: return "no path";
+        case NL_PATH_START_OFF_NAVMESH: return "start off navmesh";
+        case NL_PATH_GOAL_OFF_NAVMESH: return "goal off navmesh";
+        case NL_PATH_CANCELLED: return "cancelled";
+        case NL_PATH_FAILED: return "failed";
+        default: return "unknown";
     }
 }
 
@@ -100,10 +100,14 @@ const char* segment_name(nl_segment_kind kind) {
 LinkCounts count_links(const PlannedPath& path) { return count_links(path.points); }
 
 void count_link(LinkCounts& counts, nl_segment_kind kind) {
-    if (kind == NL_LINK_JUMP) ++counts.jumps;
-    else if (kind == NL_LINK_DROP) ++counts.drops;
-    else if (kind == NL_LINK_MANUAL) ++counts.manual;
-    else if (kind != NL_SEGMENT_WALK) ++counts.plugin;
+    if (kind == NL_LINK_JUMP)
+        ++counts.jumps;
+    else if (kind == NL_LINK_DROP)
+        ++counts.drops;
+    else if (kind == NL_LINK_MANUAL)
+        ++counts.manual;
+    else if (kind != NL_SEGMENT_WALK)
+        ++counts.plugin;
 }
 
 LinkCounts count_links(const std::vector<nl_path_point>& points) {

@@ -7,9 +7,9 @@ namespace nl::samples {
 std::array<float, 16> PlatformPose::transform() const {
     const float c = std::cos(yaw), s = std::sin(yaw);
     // A turn about +y (x towards -z when counter-clockwise seen from above), then the translation.
-    return {c,   0.0f, -s,  0.0f,  //
-            0.0f, 1.0f, 0.0f, 0.0f,  //
-            s,   0.0f, c,   0.0f,  //
+    return {c,           0.0f,        -s,          0.0f,  //
+            0.0f,        1.0f,        0.0f,        0.0f,  //
+            s,           0.0f,        c,           0.0f,  //
             position[0], position[1], position[2], 1.0f};
 }
 
@@ -55,10 +55,14 @@ float Timetable::progress(double time) const {
     if (turns_) return static_cast<float>(u / period_);
     // Out in the first half of the cycle, back in the second.
     double along = 0.0;
-    if (u < docked_) along = 0.0;
-    else if (u < docked_ + travel_) along = (u - docked_) / travel_;
-    else if (u < 2.0 * docked_ + travel_) along = 1.0;
-    else along = 1.0 - (u - 2.0 * docked_ - travel_) / travel_;
+    if (u < docked_)
+        along = 0.0;
+    else if (u < docked_ + travel_)
+        along = (u - docked_) / travel_;
+    else if (u < 2.0 * docked_ + travel_)
+        along = 1.0;
+    else
+        along = 1.0 - (u - 2.0 * docked_ - travel_) / travel_;
     return static_cast<float>(0.5 - 0.5 * std::cos(M_PI * along));
 }
 

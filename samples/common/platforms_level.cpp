@@ -10,11 +10,11 @@ namespace {
 using levelgen::Box;
 using levelgen::GeneratedLevel;
 
-constexpr float kThickness = 0.5f;     // of every slab, ground or platform
-constexpr float kClearance = 0.05f;    // between a platform and the ground it docks against
-constexpr float kInset = 1.2f;         // a gangway's ends from the rims: well inside the navmeshes
-constexpr float kStepUp = 0.6f;        // the far ledge above the shuttle's deck: a jump, not a walk
-constexpr float kUpperFloor = 4.0f;    // above the lower floor: too high for any jump
+constexpr float kThickness = 0.5f;   // of every slab, ground or platform
+constexpr float kClearance = 0.05f;  // between a platform and the ground it docks against
+constexpr float kInset = 1.2f;       // a gangway's ends from the rims: well inside the navmeshes
+constexpr float kStepUp = 0.6f;      // the far ledge above the shuttle's deck: a jump, not a walk
+constexpr float kUpperFloor = 4.0f;  // above the lower floor: too high for any jump
 constexpr float kDiscRadius = 3.5f;
 constexpr int kDiscSides = 24;
 
@@ -97,10 +97,9 @@ PlatformsLevel generate_platforms_level(uint32_t seed) {
     const float exit_rim = axis[2] + kDiscRadius + 0.5f;
     level.add_box(Box{{kDiscX - 4.0f, floor - kThickness, exit_rim}, {kDiscX + 4.0f, floor, exit_rim + 6.0f}});
     PlatformLayout turntable{"disc", disc(), Timetable::turntable(axis, 16.0f, 0.0f), {}};
-    turntable.gangways = {
-        gangway("walk onto the disc", NL_LINK_MANUAL, true, 0.0, {kDiscX, floor, rim - kInset}, axis),
-        gangway("walk off the disc", NL_LINK_MANUAL, false, 9.0, {kDiscX, floor, exit_rim - 0.5f - kInset},
-                {kDiscX, floor, exit_rim + kInset})};
+    turntable.gangways = {gangway("walk onto the disc", NL_LINK_MANUAL, true, 0.0, {kDiscX, floor, rim - kInset}, axis),
+                          gangway("walk off the disc", NL_LINK_MANUAL, false, 9.0,
+                                  {kDiscX, floor, exit_rim - 0.5f - kInset}, {kDiscX, floor, exit_rim + kInset})};
 
     // The lift: 4 x 3.9 m in a 4 m trench between the apron and an upper floor 4 m up. Docked 3 s at
     // each floor, 4 s between; it is at the top when the scene starts and on its way down when its
@@ -109,11 +108,10 @@ PlatformsLevel generate_platforms_level(uint32_t seed) {
     level.add_box(Box{{kLiftX - 4.0f, floor - kThickness, wall}, {kLiftX + 4.0f, upper, wall + 8.0f}});
     const Point bottom{kLiftX, floor, rim + 2.0f}, top{kLiftX, upper, rim + 2.0f};
     PlatformLayout lift{"lift", deck(2.0f, 2.0f - kClearance), Timetable::shuttle(bottom, top, 3.0f, 4.0f, 7.0f), {}};
-    lift.gangways = {
-        gangway("gangway onto the lift", NL_LINK_MANUAL, true, 7.0,  // at the bottom
-                {kLiftX, floor, rim - kInset}, {kLiftX, floor, rim + kClearance + kInset}),
-        gangway("gangway off the lift", NL_LINK_MANUAL, false, 0.0,  // at the top
-                {kLiftX, upper, wall - kClearance - kInset}, {kLiftX, upper, wall + kInset})};
+    lift.gangways = {gangway("gangway onto the lift", NL_LINK_MANUAL, true, 7.0,  // at the bottom
+                             {kLiftX, floor, rim - kInset}, {kLiftX, floor, rim + kClearance + kInset}),
+                     gangway("gangway off the lift", NL_LINK_MANUAL, false, 0.0,  // at the top
+                             {kLiftX, upper, wall - kClearance - kInset}, {kLiftX, upper, wall + kInset})};
     out.platforms = {std::move(shuttle), std::move(turntable), std::move(lift)};
 
     // The passengers line up on the apron. The ferry's jumps off (the long jumper: the jump is 2.45 m

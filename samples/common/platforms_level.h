@@ -28,7 +28,7 @@ struct Gangway {
 };
 
 struct PlatformLayout {
-    std::string name;              // "shuttle", "disc", "lift"
+    std::string name;               // "shuttle", "disc", "lift"
     levelgen::GeneratedLevel body;  // its triangles in its own space, its deck's top at y = 0
     Timetable timetable;
     std::vector<Gangway> gangways;
@@ -37,8 +37,8 @@ struct PlatformLayout {
 struct Passenger {
     AgentProfile profile;  // named for where it goes
     Point start;
-    Point destination;  // in the world at time 0
-    std::string destination_name;  // "across the chasm"
+    Point destination;               // in the world at time 0
+    std::string destination_name;    // "across the chasm"
     bool destination_rides = false;  // on a platform: it moves with it
 };
 

@@ -29,15 +29,21 @@ nl_agent_def agent_def(const AgentProfile& profile, nl_navmesh_id navmesh, const
 }
 
 std::vector<nl_agent_info> read_agents(const nl_world* world) {
-    return read_all(nl_agent_info_init(), [world](nl_agent_info* out, uint32_t capacity, uint32_t* count) {
-        return nl_world_get_agents(world, out, capacity, count);
-    }, "reading the agents");
+    return read_all(
+        nl_agent_info_init(),
+        [world](nl_agent_info* out, uint32_t capacity, uint32_t* count) {
+            return nl_world_get_agents(world, out, capacity, count);
+        },
+        "reading the agents");
 }
 
 std::vector<nl_agent_event> read_agent_events(const nl_world* world) {
-    return read_all(nl_agent_event_init(), [world](nl_agent_event* out, uint32_t capacity, uint32_t* count) {
-        return nl_world_get_agent_events(world, out, capacity, count);
-    }, "reading the agents' events");
+    return read_all(
+        nl_agent_event_init(),
+        [world](nl_agent_event* out, uint32_t capacity, uint32_t* count) {
+            return nl_world_get_agent_events(world, out, capacity, count);
+        },
+        "reading the agents' events");
 }
 
 nl_agent_info read_agent(const nl_world* world, nl_agent_id agent) {
@@ -47,9 +53,12 @@ nl_agent_info read_agent(const nl_world* world, nl_agent_id agent) {
 }
 
 std::vector<nl_path_point> read_corners(const nl_world* world, nl_agent_id agent) {
-    return read_all(nl_path_point_init(), [world, agent](nl_path_point* out, uint32_t capacity, uint32_t* count) {
-        return nl_agent_get_corners(world, agent, out, capacity, count);
-    }, "reading an agent's corners");
+    return read_all(
+        nl_path_point_init(),
+        [world, agent](nl_path_point* out, uint32_t capacity, uint32_t* count) {
+            return nl_agent_get_corners(world, agent, out, capacity, count);
+        },
+        "reading an agent's corners");
 }
 
 bool in_the_air(nl_agent_state state) {

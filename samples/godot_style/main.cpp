@@ -40,9 +40,9 @@ void connect_printing(NavigationAgent* agent, const SceneTree& tree) {
                     nl::samples::describe_links(nl::samples::count_links(corners)).c_str());
     });
     agent->link_reached.connect([name, &tree](const TakenLink& t) {
-        std::printf("%6.2f s  %-13s takes a %s link%s: gap %.1f m, rise %.1f m, drop %.1f m", tree.time(),
-                    name.c_str(), nl::samples::segment_name(t.link.kind), t.reversed ? " backwards" : "",
-                    t.link.requirements.gap, t.reversed ? t.link.requirements.drop : t.link.requirements.rise,
+        std::printf("%6.2f s  %-13s takes a %s link%s: gap %.1f m, rise %.1f m, drop %.1f m", tree.time(), name.c_str(),
+                    nl::samples::segment_name(t.link.kind), t.reversed ? " backwards" : "", t.link.requirements.gap,
+                    t.reversed ? t.link.requirements.drop : t.link.requirements.rise,
                     t.reversed ? t.link.requirements.rise : t.link.requirements.drop);
         if (t.waited > 0.0) std::printf(", after waiting %.1f s", t.waited);
         std::printf("\n");
@@ -97,9 +97,9 @@ int play(SceneTree& tree, const std::vector<NavigationAgent*>& agents, bool trac
 
 int main(int argc, char** argv) {
     try {
-        const nl::samples::Arguments args("navlink-godot-style", "navlink-godot-style", argc, argv, 1,
-                                          {{"seed", true}, {"remove-ladder-at", true}, {"workers", true}, {"trace", false},
-                                           {"platforms", false}});
+        const nl::samples::Arguments args(
+            "navlink-godot-style", "navlink-godot-style", argc, argv, 1,
+            {{"seed", true}, {"remove-ladder-at", true}, {"workers", true}, {"trace", false}, {"platforms", false}});
         if (args.wants_help()) {
             std::fputs(kHelp, stdout);
             return 0;

@@ -78,7 +78,8 @@ void NavigationAgent::take_off(nl_link_id link_id) {
     nl_agent_trajectory trajectory = nl_agent_trajectory_init();
     samples::check(nl_link_get(world, link_id, &taken.link), name() + ": reading the link it took");
     samples::check(nl_agent_get_trajectory(world, agent_, &trajectory), name() + ": reading its trajectory");
-    taken.reversed = distance_squared(trajectory.from, taken.link.end) < distance_squared(trajectory.from, taken.link.start);
+    taken.reversed =
+        distance_squared(trajectory.from, taken.link.end) < distance_squared(trajectory.from, taken.link.start);
     taken.as = travelled_as(trajectory, taken.link);
     taken.apex_height = trajectory.apex[1];
     taken.peak_height = std::max(trajectory.from[1], position_[1]);

@@ -23,13 +23,13 @@ using Vec3 = std::array<float, 3>;
 
 // A link the agent took, as it was when the agent took off.
 struct TakenLink {
-    nl_link link = nl_link_init();  // the link's record (kind, ends, requirements)
-    uint8_t reversed = 0;           // taken from its end to its start
+    nl_link link = nl_link_init();         // the link's record (kind, ends, requirements)
+    uint8_t reversed = 0;                  // taken from its end to its start
     nl_segment_kind as = NL_SEGMENT_WALK;  // how it was travelled (a drop climbed back up is a jump)
-    float apex_height = 0.0f;       // the top of the arc the generator checked (jumps)
-    float peak_height = 0.0f;       // the highest the body went on it
-    double waited = 0.0;            // seconds it stood at the take-off first: for a platform that
-                                    // was away, or for the landing to clear
+    float apex_height = 0.0f;              // the top of the arc the generator checked (jumps)
+    float peak_height = 0.0f;              // the highest the body went on it
+    double waited = 0.0;                   // seconds it stood at the take-off first: for a platform that
+                                           // was away, or for the landing to clear
 };
 
 class NavigationAgent : public Node {

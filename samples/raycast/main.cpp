@@ -40,9 +40,10 @@ void print_height_map(const std::vector<nl_ray_hit>& hits, int columns, int rows
 
 int main(int argc, char** argv) {
     if (argc > 2 || (argc == 2 && (!std::strcmp(argv[1], "--help") || !std::strcmp(argv[1], "-h")))) {
-        std::printf("usage: navlink-raycast [LEVEL.obj]\n"
-                    "Loads LEVEL.obj (default: the generated demo level), casts rays down onto it and\n"
-                    "prints a height map and the ray throughput of the batch queries.\n");
+        std::printf(
+            "usage: navlink-raycast [LEVEL.obj]\n"
+            "Loads LEVEL.obj (default: the generated demo level), casts rays down onto it and\n"
+            "prints a height map and the ray throughput of the batch queries.\n");
         return argc > 2 ? 2 : 0;
     }
     const nl_version v = nl_get_version();
@@ -78,10 +79,12 @@ int main(int argc, char** argv) {
     nl_mesh_info info{};
     info.size = sizeof info;
     nl_mesh_get_info(world, mesh, &info);
-    std::printf("level: %s\n  %u triangles (%u degenerate skipped), bounds (%.1f %.1f %.1f) .. (%.1f %.1f %.1f), loaded in %.1f ms\n",
-                name.c_str(), info.triangle_count, info.degenerate_triangle_count, info.bounds_min[0], info.bounds_min[1],
-                info.bounds_min[2], info.bounds_max[0], info.bounds_max[1], info.bounds_max[2],
-                nl::samples::now_ms() - load_start);
+    std::printf(
+        "level: %s\n  %u triangles (%u degenerate skipped), bounds (%.1f %.1f %.1f) .. (%.1f %.1f %.1f), loaded in "
+        "%.1f ms\n",
+        name.c_str(), info.triangle_count, info.degenerate_triangle_count, info.bounds_min[0], info.bounds_min[1],
+        info.bounds_min[2], info.bounds_max[0], info.bounds_max[1], info.bounds_max[2],
+        nl::samples::now_ms() - load_start);
 
     // A grid of rays straight down over the level's footprint: the top surface, as a height map.
     const int columns = 72, rows = 28;
@@ -99,7 +102,8 @@ int main(int argc, char** argv) {
     }
     std::vector<nl_ray_hit> hits(grid.size(), nl_ray_hit_init());
     const double first_start = nl::samples::now_ms();
-    if (NL_FAILED(nl_world_cast_rays(world, grid.data(), uint32_t(grid.size()), hits.data()))) return fail("casting rays");
+    if (NL_FAILED(nl_world_cast_rays(world, grid.data(), uint32_t(grid.size()), hits.data())))
+        return fail("casting rays");
     const double first_ms = nl::samples::now_ms() - first_start;  // includes building the BVH
     size_t hit_count = 0;
     for (const auto& h : hits) hit_count += h.hit;
@@ -130,13 +134,16 @@ int main(int argc, char** argv) {
     if (NL_FAILED(nl_world_cast_rays(world, rays.data(), count, random_hits.data()))) return fail("casting rays");
     const double rays_ms = nl::samples::now_ms() - start;
     start = nl::samples::now_ms();
-    if (NL_FAILED(nl_world_segments_blocked(world, segments.data(), count, blocked.data()))) return fail("testing segments");
+    if (NL_FAILED(nl_world_segments_blocked(world, segments.data(), count, blocked.data())))
+        return fail("testing segments");
     const double segments_ms = nl::samples::now_ms() - start;
     size_t blocked_count = 0;
     for (uint8_t b : blocked) blocked_count += b;
-    std::printf("%u random rays: %.1f ms (%.2f Mrays/s); %u random segments: %.1f ms (%.2f M/s), %.0f%% blocked; %d worker threads\n",
-                count, rays_ms, count / rays_ms / 1000.0, count, segments_ms, count / segments_ms / 1000.0,
-                100.0 * blocked_count / count, nl_world_get_worker_count(world));
+    std::printf(
+        "%u random rays: %.1f ms (%.2f Mrays/s); %u random segments: %.1f ms (%.2f M/s), %.0f%% blocked; %d worker "
+        "threads\n",
+        count, rays_ms, count / rays_ms / 1000.0, count, segments_ms, count / segments_ms / 1000.0,
+        100.0 * blocked_count / count, nl_world_get_worker_count(world));
     nl_world_destroy(world);
     return 0;
 }

@@ -81,8 +81,10 @@ int run_headless_script(ViewerSession& session, ViewSettings view, const std::st
         }
         std::printf("scripted click at (%.0f, %.0f): %s picked (%.2f, %.2f, %.2f) on navmesh polygon %u\n", pixel.x,
                     pixel.y, what.c_str(), picked->point[0], picked->point[1], picked->point[2], picked->polygon);
-        if (start) session.set_start(picked->point);
-        else session.set_destination(picked->point);
+        if (start)
+            session.set_start(picked->point);
+        else
+            session.set_destination(picked->point);
         shoot(what);
     };
     auto pixel_of = [&](size_t point_index) {

@@ -21,8 +21,10 @@ float distance_xz(const std::vector<std::array<float, 2>>& corners, float x, flo
         const float ex = b[0] - a[0], ez = b[1] - a[1];
         const float cross = ex * (z - a[1]) - ez * (x - a[0]);
         if (cross != 0.0f) {
-            if (side_sign == 0.0f) side_sign = cross > 0 ? 1.0f : -1.0f;
-            else if ((cross > 0 ? 1.0f : -1.0f) != side_sign) inside = false;
+            if (side_sign == 0.0f)
+                side_sign = cross > 0 ? 1.0f : -1.0f;
+            else if ((cross > 0 ? 1.0f : -1.0f) != side_sign)
+                inside = false;
         }
         const float length2 = ex * ex + ez * ez;
         const float t = length2 > 0.0f ? std::clamp(((x - a[0]) * ex + (z - a[1]) * ez) / length2, 0.0f, 1.0f) : 0.0f;

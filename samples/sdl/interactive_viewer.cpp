@@ -24,30 +24,30 @@ namespace {
 bool handle_key(SDL_Keycode key, ViewerSession& session, ViewSettings& view) {
     Layers& l = view.layers;
     switch (key) {
-    case SDLK_ESCAPE:
-    case SDLK_q: return false;
-    case SDLK_1: session.select_agent(0); break;
-    case SDLK_2: session.select_agent(1); break;
-    case SDLK_3: session.select_agent(2); break;
-    case SDLK_a: session.toggle_all_agents(); break;
-    case SDLK_l: l.level = !l.level; break;
-    case SDLK_n: l.navmesh = !l.navmesh; break;
-    case SDLK_b: l.boundary = !l.boundary; break;
-    case SDLK_k: l.links = !l.links; break;
-    case SDLK_p: l.paths = !l.paths; break;
-    case SDLK_m: l.agents = !l.agents; break;
-    case SDLK_g: l.legend = !l.legend; break;
-    case SDLK_o: view.oblique = !view.oblique; break;
-    case SDLK_r: l.roofs = !l.roofs; break;
-    case SDLK_i: l.link_numbers = !l.link_numbers; break;
-    case SDLK_x: l.grid = !l.grid; break;
-    case SDLK_s:
-        session.wait_for_paths();  // save what was asked for, not a picture mid-planning
-        session.update();
-        write_png(session.scene(), view, "viewer.png");
-        std::printf("wrote viewer.png\n");
-        break;
-    default: break;
+        case SDLK_ESCAPE:
+        case SDLK_q: return false;
+        case SDLK_1: session.select_agent(0); break;
+        case SDLK_2: session.select_agent(1); break;
+        case SDLK_3: session.select_agent(2); break;
+        case SDLK_a: session.toggle_all_agents(); break;
+        case SDLK_l: l.level = !l.level; break;
+        case SDLK_n: l.navmesh = !l.navmesh; break;
+        case SDLK_b: l.boundary = !l.boundary; break;
+        case SDLK_k: l.links = !l.links; break;
+        case SDLK_p: l.paths = !l.paths; break;
+        case SDLK_m: l.agents = !l.agents; break;
+        case SDLK_g: l.legend = !l.legend; break;
+        case SDLK_o: view.oblique = !view.oblique; break;
+        case SDLK_r: l.roofs = !l.roofs; break;
+        case SDLK_i: l.link_numbers = !l.link_numbers; break;
+        case SDLK_x: l.grid = !l.grid; break;
+        case SDLK_s:
+            session.wait_for_paths();  // save what was asked for, not a picture mid-planning
+            session.update();
+            write_png(session.scene(), view, "viewer.png");
+            std::printf("wrote viewer.png\n");
+            break;
+        default: break;
     }
     return true;
 }
@@ -91,8 +91,10 @@ int run_interactive_viewer(ViewerSession& session, ViewSettings view) {
                     const SDL_FPoint pixel{static_cast<float>(event.button.x), static_cast<float>(event.button.y)};
                     if (const auto picked = session.pick(pixel, view)) {
                         const bool start = event.button.button == SDL_BUTTON_RIGHT || (SDL_GetModState() & KMOD_SHIFT);
-                        if (start) session.set_start(picked->point);
-                        else session.set_destination(picked->point);
+                        if (start)
+                            session.set_start(picked->point);
+                        else
+                            session.set_destination(picked->point);
                         dirty = true;
                     }
                 }

@@ -105,8 +105,7 @@ void draw_legend(Canvas& canvas, const Scene& scene, const ViewSettings& view, c
     w.note(format("height: y = %.1f m (dark) to %.1f m (light)", lo, hi));
     w.note(std::to_string(scene.level->triangle_count()) + " triangles, " +
            (view.oblique ? "oblique view" : "top-down view"));
-    if (slice && slice->active())
-        w.note(format("roofs cut away: %.1f m above the navmesh", HeightSlice::kClearance));
+    if (slice && slice->active()) w.note(format("roofs cut away: %.1f m above the navmesh", HeightSlice::kClearance));
     if (view.layers.grid) {
         w.note(format("grid: every %g m; x across, z down (labels)", grid_step(camera.pixels_per_metre())));
         if (!camera.top_down()) w.note(format("(the grid lies at y = %.1f m)", grid_height(scene)));
@@ -164,8 +163,7 @@ void draw_legend(Canvas& canvas, const Scene& scene, const ViewSettings& view, c
     }
     if (view.layers.agents && !scene.agents.empty()) {
         w.heading("AGENTS");
-        for (const SceneAgent& a : scene.agents)
-            w.swatch_dot(a.color, a.label + (a.in_air ? " (in the air)" : ""));
+        for (const SceneAgent& a : scene.agents) w.swatch_dot(a.color, a.label + (a.in_air ? " (in the air)" : ""));
         w.note("a line behind each: its track; white: the flight");
     }
     if (!scene.points.empty()) {

@@ -29,13 +29,13 @@ constexpr Rgba kAgents[] = {
 
 constexpr Rgba kGrid{255, 255, 255, 46};
 constexpr Rgba kGridLabel{200, 205, 212, 255};
-constexpr Rgba kOffMap{255, 70, 200, 255};  // a start or goal off the map: its marker at the edge
+constexpr Rgba kOffMap{255, 70, 200, 255};    // a start or goal off the map: its marker at the edge
 constexpr Rgba kNoIsland{150, 150, 150, 90};  // a navmesh polygon in an area the body keeps out of
 
 // Reachability islands: the first is the navmesh's usual green, the others hues apart from it and
 // from the links' colours, with the navmesh fill's transparency.
-constexpr Rgba kIslands[] = {kNavmeshFill,         {235, 120, 60, 125}, {90, 140, 255, 125}, {225, 80, 200, 125},
-                             {230, 215, 60, 125},  {60, 215, 215, 125}, {180, 110, 60, 125}, {160, 120, 255, 125}};
+constexpr Rgba kIslands[] = {kNavmeshFill,        {235, 120, 60, 125}, {90, 140, 255, 125}, {225, 80, 200, 125},
+                             {230, 215, 60, 125}, {60, 215, 215, 125}, {180, 110, 60, 125}, {160, 120, 255, 125}};
 
 inline Rgba island(uint32_t index) { return kIslands[index % (sizeof kIslands / sizeof kIslands[0])]; }
 

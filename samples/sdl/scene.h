@@ -47,7 +47,7 @@ struct SceneAgent {
 // A platform the host moves, where it stands now: its triangles and its navmesh (polygons, outline
 // and the gangways off it) in the world.
 struct ScenePlatform {
-    std::string label;  // "shuttle at (4.0, -3.7, 19.2), moving"
+    std::string label;             // "shuttle at (4.0, -3.7, 19.2), moving"
     std::vector<float> positions;  // x y z per vertex
     std::vector<uint32_t> triangles;
     samples::NavmeshContents navmesh;

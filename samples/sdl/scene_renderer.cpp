@@ -85,9 +85,12 @@ void split_triangle(const Point3& a, const Point3& b, const Point3& c, int depth
 // sorting by the centre works for big floors next to small walls.
 void subdivide(const Point3& a, const Point3& b, const Point3& c, float max_edge, int depth,
                std::vector<std::array<Point3, 3>>& out) {
-    split_triangle(a, b, c, depth, [max_edge](const Point3& p, const Point3& q, const Point3& r, bool last) {
-        return last || longest_edge_squared(p, q, r) <= max_edge * max_edge ? Piece::Keep : Piece::Split;
-    }, out);
+    split_triangle(
+        a, b, c, depth,
+        [max_edge](const Point3& p, const Point3& q, const Point3& r, bool last) {
+            return last || longest_edge_squared(p, q, r) <= max_edge * max_edge ? Piece::Keep : Piece::Split;
+        },
+        out);
 }
 
 // The parts of triangle a b c not above the slice's cut (all of it without a slice): a triangle the
@@ -98,15 +101,18 @@ void below_cut(const Point3& a, const Point3& b, const Point3& c, const HeightSl
         out.push_back({a, b, c});
         return;
     }
-    split_triangle(a, b, c, depth, [slice](const Point3& p, const Point3& q, const Point3& r, bool last) {
-        const Point3 centre{(p[0] + q[0] + r[0]) / 3.0f, (p[1] + q[1] + r[1]) / 3.0f, (p[2] + q[2] + r[2]) / 3.0f};
-        const int above = slice->above(p.data()) + slice->above(q.data()) + slice->above(r.data()) +
-                          slice->above(centre.data());
-        if (above == 0) return Piece::Keep;
-        if (above == 4 || last || longest_edge_squared(p, q, r) <= slice->cell_size() * slice->cell_size())
-            return slice->above(centre.data()) ? Piece::Drop : Piece::Keep;
-        return Piece::Split;
-    }, out);
+    split_triangle(
+        a, b, c, depth,
+        [slice](const Point3& p, const Point3& q, const Point3& r, bool last) {
+            const Point3 centre{(p[0] + q[0] + r[0]) / 3.0f, (p[1] + q[1] + r[1]) / 3.0f, (p[2] + q[2] + r[2]) / 3.0f};
+            const int above =
+                slice->above(p.data()) + slice->above(q.data()) + slice->above(r.data()) + slice->above(centre.data());
+            if (above == 0) return Piece::Keep;
+            if (above == 4 || last || longest_edge_squared(p, q, r) <= slice->cell_size() * slice->cell_size())
+                return slice->above(centre.data()) ? Piece::Drop : Piece::Keep;
+            return Piece::Split;
+        },
+        out);
 }
 
 // Triangles (x y z per vertex in `positions`, 3 indices each) lit from above, each piece coloured by
@@ -159,16 +165,19 @@ void collect_level(const Scene& scene, const Camera& camera, const HeightSlice* 
     const samples::Level& level = *scene.level;
     float lo, hi;
     drawn_heights(scene, slice, lo, hi);
-    collect_triangles(level.positions, level.triangles, camera, [lo, hi](float y) {
-        return mix(palette::kLowGround, palette::kHighGround, hi > lo ? (y - lo) / (hi - lo) : 0.5f);
-    }, slice, out);
+    collect_triangles(
+        level.positions, level.triangles, camera,
+        [lo, hi](float y) {
+            return mix(palette::kLowGround, palette::kHighGround, hi > lo ? (y - lo) / (hi - lo) : 0.5f);
+        },
+        slice, out);
 }
 
 // Platforms in one colour whatever their height, so that they stand out from the level they cross.
 void collect_platforms(const Scene& scene, const Camera& camera, std::vector<Surface>& out) {
     for (const ScenePlatform& platform : scene.platforms)
-        collect_triangles(platform.positions, platform.triangles, camera, [](float) { return palette::kPlatform; },
-                          nullptr, out);
+        collect_triangles(
+            platform.positions, platform.triangles, camera, [](float) { return palette::kPlatform; }, nullptr, out);
 }
 
 // A navmesh's polygons (coloured by island when `islands` is given), and its outline.
@@ -211,8 +220,10 @@ void draw_surfaces(Canvas& canvas, std::vector<Surface>& surfaces) {
             canvas.line(s.corners[0], s.corners[1], 2.5f, s.color);
             continue;
         }
-        if (s.corners.size() == 3) canvas.triangle(s.corners[0], s.corners[1], s.corners[2], s.color);
-        else canvas.convex_polygon(s.corners, s.color);
+        if (s.corners.size() == 3)
+            canvas.triangle(s.corners[0], s.corners[1], s.corners[2], s.color);
+        else
+            canvas.convex_polygon(s.corners, s.color);
         if (s.kind == Surface::NavPolygon) {
             std::vector<SDL_FPoint> ring = s.corners;
             ring.push_back(ring.front());
@@ -242,8 +253,10 @@ void draw_link(Canvas& canvas, const Camera& camera, const nl_link& link, float 
     canvas.polyline(curve, width + 2.0f, shadow);
     canvas.polyline(curve, width, color);
     canvas.dot(curve.front(), width + 1.0f, color);
-    if (link.bidirectional) canvas.dot(curve.back(), width + 1.0f, color);
-    else canvas.arrow_head(curve[curve.size() - 3], curve.back(), 4.0f + 3.0f * width, color);
+    if (link.bidirectional)
+        canvas.dot(curve.back(), width + 1.0f, color);
+    else
+        canvas.arrow_head(curve[curve.size() - 3], curve.back(), 4.0f + 3.0f * width, color);
 }
 
 // A run of drops along one ledge: a line through their take-offs, and one arrow.
@@ -449,8 +462,8 @@ SDL_FRect map_rect(const Scene& scene, const Camera& camera) {
 SDL_FPoint point_marker(const Scene& scene, const Camera& camera, const float p[3], bool* off_map) {
     const SDL_FPoint at = camera.project(p);
     const SDL_FRect map = map_rect(scene, camera);
-    const bool off = at.x < map.x - 1.0f || at.x > map.x + map.w + 1.0f || at.y < map.y - 1.0f ||
-                     at.y > map.y + map.h + 1.0f;
+    const bool off =
+        at.x < map.x - 1.0f || at.x > map.x + map.w + 1.0f || at.y < map.y - 1.0f || at.y > map.y + map.h + 1.0f;
     if (off_map) *off_map = off;
     if (!off) return at;
     const float inset = kOffMapInset;

@@ -84,8 +84,8 @@ bool ViewerAgents::step(float dt, bool surfaces_move) {
             event.kind == NL_AGENT_EVENT_FAILED)
             std::printf("%7.2f s  %s %s%s%s at (%.1f, %.1f, %.1f)\n", time_, profiles_[i].name.c_str(),
                         samples::agent_event_name(event.kind), event.kind == NL_AGENT_EVENT_FAILED ? ": " : "",
-                        event.kind == NL_AGENT_EVENT_FAILED ? samples::agent_reason_name(event.reason) : "", p[0],
-                        p[1], p[2]);
+                        event.kind == NL_AGENT_EVENT_FAILED ? samples::agent_reason_name(event.reason) : "", p[0], p[1],
+                        p[2]);
     }
     return true;
 }

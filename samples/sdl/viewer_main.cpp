@@ -45,10 +45,15 @@ bool display_available() {
 
 int main(int argc, char** argv) {
     try {
-        const nl::samples::Arguments args(
-            "navlink-viewer", "navlink-viewer", argc, argv, 1,
-            {{"links", true}, {"seed", true}, {"oblique", false}, {"headless", false}, {"frames", true},
-             {"platforms", false}, {"from", true}, {"to", true}});
+        const nl::samples::Arguments args("navlink-viewer", "navlink-viewer", argc, argv, 1,
+                                          {{"links", true},
+                                           {"seed", true},
+                                           {"oblique", false},
+                                           {"headless", false},
+                                           {"frames", true},
+                                           {"platforms", false},
+                                           {"from", true},
+                                           {"to", true}});
         if (args.wants_help()) {
             std::printf("%s%s", kHelp, nl::picture::kViewerKeys);
             return 0;
@@ -62,8 +67,9 @@ int main(int argc, char** argv) {
         options.seed = static_cast<uint32_t>(args.whole_number("seed", 0, 4294967295L, 1));
         options.platforms = args.has("platforms");
         if (options.platforms && options.level_path)
-            throw nl::samples::SampleError("--platforms stand beside the generated default level: give no LEVEL.obj "
-                                           "(see navlink-viewer --help)");
+            throw nl::samples::SampleError(
+                "--platforms stand beside the generated default level: give no LEVEL.obj "
+                "(see navlink-viewer --help)");
         nl::picture::ViewSettings view;
         view.oblique = args.has("oblique");
 
@@ -75,11 +81,13 @@ int main(int argc, char** argv) {
         // cannot start or go there is an error.
         if (const auto from = args.value("from")) {
             nl::samples::parse_point(*from, "--from", point.data());
-            if (!session.set_start(point)) throw nl::samples::SampleError("--from " + *from + ": not every agent can stand there (above)");
+            if (!session.set_start(point))
+                throw nl::samples::SampleError("--from " + *from + ": not every agent can stand there (above)");
         }
         if (const auto to = args.value("to")) {
             nl::samples::parse_point(*to, "--to", point.data());
-            if (!session.set_destination(point)) throw nl::samples::SampleError("--to " + *to + ": not every agent can go there (above)");
+            if (!session.set_destination(point))
+                throw nl::samples::SampleError("--to " + *to + ": not every agent can go there (above)");
         }
         const bool headless = args.has("headless") || !display_available();
         const std::string frames = args.value("frames").value_or(".");

@@ -131,9 +131,9 @@ std::optional<ViewerSession::Picked> ViewerSession::pick(SDL_FPoint pixel, const
         const nl_nav_polygon& poly = contents_.polygons[p];
         const float* first = &contents_.vertices[3 * size_t(poly.vertices[0])];
         for (uint32_t k = 1; k + 1 < poly.vertex_count; ++k) {
-            const float t = ray_triangle(origin, direction, 2.0f * reach, first,
-                                         &contents_.vertices[3 * size_t(poly.vertices[k])],
-                                         &contents_.vertices[3 * size_t(poly.vertices[k + 1])]);
+            const float t =
+                ray_triangle(origin, direction, 2.0f * reach, first, &contents_.vertices[3 * size_t(poly.vertices[k])],
+                             &contents_.vertices[3 * size_t(poly.vertices[k + 1])]);
             if (t >= 0.0f && (nearest < 0.0f || t < nearest)) {
                 nearest = t;
                 polygon = p;
@@ -287,7 +287,8 @@ Scene ViewerSession::scene() const {
 
 bool ViewerSession::every_path_complete() const {
     for (size_t i = 0; i < agents_.size(); ++i)
-        if ((all_agents_ || i == current_) && (!paths_[i] || paths_[i]->result.outcome != NL_PATH_COMPLETE)) return false;
+        if ((all_agents_ || i == current_) && (!paths_[i] || paths_[i]->result.outcome != NL_PATH_COMPLETE))
+            return false;
     return true;
 }
 

@@ -104,7 +104,7 @@ private:
     };
     std::vector<Pending> pending_;
     std::vector<std::optional<samples::PlannedPath>> paths_;  // per agent, for the current destination
-    std::optional<ViewerAgents> crowd_;  // the same bodies as agents, sent to each destination
+    std::optional<ViewerAgents> crowd_;                       // the same bodies as agents, sent to each destination
     std::optional<samples::PlatformsLevel> platforms_level_;  // with platforms: where they go, and who rides
     std::vector<samples::MovingPlatform> platforms_;
     double time_ = 0.0;

@@ -24,14 +24,14 @@ enum class AgentState : uint32_t {
 // Why an agent planned again, or failed.
 enum class AgentReason : uint32_t {
     None = 0,
-    DestinationSet = 1,   // a new destination
-    LinkGone = 2,         // a link of its path was removed, disabled, moved, or is beyond its body now
-    WorldChanged = 3,     // its navmesh changed under it
-    OffPath = 4,          // pushed too far off its path
-    NoPath = 5,           // the destination cannot be reached (it went as near as it could)
-    NavMeshRemoved = 6,   // its navmesh was removed
+    DestinationSet = 1,  // a new destination
+    LinkGone = 2,        // a link of its path was removed, disabled, moved, or is beyond its body now
+    WorldChanged = 3,    // its navmesh changed under it
+    OffPath = 4,         // pushed too far off its path
+    NoPath = 5,          // the destination cannot be reached (it went as near as it could)
+    NavMeshRemoved = 6,  // its navmesh was removed
     CapabilitiesChanged = 7,
-    Crowd = 8,            // other bodies are in its way: waiting for room, or given up (give_up_seconds)
+    Crowd = 8,  // other bodies are in its way: waiting for room, or given up (give_up_seconds)
 };
 
 enum class AgentEventKind : uint32_t {
@@ -41,7 +41,7 @@ enum class AgentEventKind : uint32_t {
     Arrived = 4,
     Failed = 5,
     Replanned = 6,
-    Waiting = 7,   // it stopped for room (reason Crowd): stuck among other bodies, or giving way
+    Waiting = 7,  // it stopped for room (reason Crowd): stuck among other bodies, or giving way
 };
 
 struct AgentDef {
@@ -54,7 +54,7 @@ struct AgentDef {
     float takeoff_speed = 0.0f;     // m/s; > 0: a jump's timing from this speed instead of gravity
     Vec3 position = Vec3::Zero();
     uint64_t user_data = 0;
-    bool avoidance = true;          // steer around other agents and walls
+    bool avoidance = true;  // steer around other agents and walls
     // Seconds without getting kGiveUpProgress nearer its destination, held up by bodies heading the
     // other way, after which it gives its destination up (Failed, Crowd); 0: never.
     float give_up_seconds = 0.0f;
@@ -75,8 +75,8 @@ struct AgentInfo {
     Vec3 position = Vec3::Zero();
     Vec3 velocity = Vec3::Zero();
     uint32_t polygon = 0xffffffffu;
-    Handle link;                // the link being taken (Jumping, Falling, Traversing) or waited for
-    float link_progress = 0.0f; // 0..1 of the way along it
+    Handle link;                 // the link being taken (Jumping, Falling, Traversing) or waited for
+    float link_progress = 0.0f;  // 0..1 of the way along it
     Vec3 destination = Vec3::Zero();
     bool has_destination = false;
     uint32_t corners_ahead = 0;

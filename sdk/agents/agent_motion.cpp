@@ -12,17 +12,17 @@
 namespace nl {
 namespace {
 
-constexpr float kCornerReach = 0.15f;   // a corner on the way counts as reached this near (x-z)
-constexpr float kStopReach = 0.05f;     // the destination and a take-off are reached this near
+constexpr float kCornerReach = 0.15f;  // a corner on the way counts as reached this near (x-z)
+constexpr float kStopReach = 0.05f;    // the destination and a take-off are reached this near
 // A link's ends lie on the level's floor, the walking height on the navmesh's surface, and the two
 // can differ by a Recast cell or two: over this last (and first) stretch the feet ease from one to
 // the other, so a body never pops up or down at a take-off or a landing.
 constexpr float kHeightEase = 1.0f;
-constexpr float kContact = 0.1f;        // bodies this near each other's surface touch
-constexpr float kOffPathSlack = 1.0f;   // how far past its radius an agent may be pushed off its path
-constexpr size_t kMaxNeighbours = 6;    // as DetourCrowd: the nearest count
-constexpr size_t kHemmedIn = 4;         // touching this many of them: a jam (coarser avoidance)
-constexpr size_t kSlidesPastAtMost = 2; // touching at most this many walkers, it slides past them
+constexpr float kContact = 0.1f;         // bodies this near each other's surface touch
+constexpr float kOffPathSlack = 1.0f;    // how far past its radius an agent may be pushed off its path
+constexpr size_t kMaxNeighbours = 6;     // as DetourCrowd: the nearest count
+constexpr size_t kHemmedIn = 4;          // touching this many of them: a jam (coarser avoidance)
+constexpr size_t kSlidesPastAtMost = 2;  // touching at most this many walkers, it slides past them
 
 float distance_xz(const Vec3& a, const Vec3& b) { return std::hypot(a.x() - b.x(), a.z() - b.z()); }
 
@@ -30,7 +30,8 @@ float distance_xz(const Vec3& a, const Vec3& b) { return std::hypot(a.x() - b.x(
 float distance_to_segment_xz(const Vec3& p, const Vec3& a, const Vec3& b) {
     const float dx = b.x() - a.x(), dz = b.z() - a.z();
     const float length2 = dx * dx + dz * dz;
-    const float t = length2 > 0.0f ? std::clamp(((p.x() - a.x()) * dx + (p.z() - a.z()) * dz) / length2, 0.0f, 1.0f) : 0.0f;
+    const float t =
+        length2 > 0.0f ? std::clamp(((p.x() - a.x()) * dx + (p.z() - a.z()) * dz) / length2, 0.0f, 1.0f) : 0.0f;
     return std::hypot(a.x() + t * dx - p.x(), a.z() + t * dz - p.z());
 }
 
@@ -69,7 +70,8 @@ dtObstacleAvoidanceParams avoidance_params(bool hemmed_in) {
 
 // The neighbours an agent steers around: the nearest kMaxNeighbours within its range (nearest first,
 // the lower index on a tie, so the answer does not depend on the grid's order).
-size_t nearest_neighbours(uint32_t self, const CrowdSnapshot& crowd, float range, std::array<uint32_t, kMaxNeighbours>& out) {
+size_t nearest_neighbours(uint32_t self, const CrowdSnapshot& crowd, float range,
+                          std::array<uint32_t, kMaxNeighbours>& out) {
     return crowd.grid.nearest(crowd.positions[self], range, self, out.data(), out.size());
 }
 
@@ -110,7 +112,8 @@ Vec3 keep_right(const Agent& a, const Vec3& desired, const CrowdSnapshot& crowd,
         const float along = ahead.dot(forward), distance = ahead.norm();
         const Vec3& v = crowd.velocities[j];
         const float towards = -(v.x() * forward.x() + v.z() * forward.z());  // its speed against our way
-        if (along <= 0.0f || distance > kOncomingRange || towards < 0.5f * std::hypot(v.x(), v.z()) || towards <= 0.0f) continue;
+        if (along <= 0.0f || distance > kOncomingRange || towards < 0.5f * std::hypot(v.x(), v.z()) || towards <= 0.0f)
+            continue;
         turn = std::max(turn, kKeepRight * (1.0f - distance / kOncomingRange));
     }
     if (turn <= 0.0f) return desired;
@@ -127,7 +130,8 @@ Vec3 keep_right(const Agent& a, const Vec3& desired, const CrowdSnapshot& crowd,
 // contact is pressed into faster than it moves away. Bodies that make room are pushed aside
 // instead (overlaps.h); one on its way our way that moves along it (a queue: overtaking it by the
 // side jammed a door's mouth), and one that walks away at half our speed or more, are followed, not
-// slid past; one our way that stands (stuck) is walked round. Returns whether it touched a body it walks into (`desired` changed), else leaves it.
+// slid past; one our way that stands (stuck) is walked round. Returns whether it touched a body it
+// walks into (`desired` changed), else leaves it.
 constexpr float kSlideSpeed = 0.5f;  // of its desired speed: head-on, the sidestep to the right
 constexpr float kMovesOn = 0.1f;     // of its desired speed: a body our way this fast along it is followed
 bool slide_past(const Agent& a, Vec3& desired, const CrowdSnapshot& crowd, const uint32_t* near, size_t count) {
@@ -152,10 +156,12 @@ bool slide_past(const Agent& a, Vec3& desired, const CrowdSnapshot& crowd, const
         const float into = desired.dot(normal);
         // Followed, not slid past: one on its way our way that moves along it (a queue that moves), or
         // one walking off faster than half our speed.
-        const bool our_way = crowd.ways[near[k]].dot(desired) > 0.0f && crowd.velocities[near[k]].dot(desired) > kMovesOn * speed * speed;
+        const bool our_way = crowd.ways[near[k]].dot(desired) > 0.0f &&
+                             crowd.velocities[near[k]].dot(desired) > kMovesOn * speed * speed;
         if (into <= 0.0f || our_way || away(near[k], normal) > kSlideSpeed * speed) continue;
         desired -= normal * into;
-        if (desired.norm() < kSlideSpeed * speed) desired += Vec3(-normal.z(), 0.0f, normal.x()) * (kSlideSpeed * speed);
+        if (desired.norm() < kSlideSpeed * speed)
+            desired += Vec3(-normal.z(), 0.0f, normal.x()) * (kSlideSpeed * speed);
         slid = true;
     }
     if (!slid) return false;
@@ -196,7 +202,8 @@ bool arrived_among_others(const Agent& a, uint32_t self, const Vec3& goal, float
         if (blocked || j == self) return;
         const float reach = radius + crowd.radii[j] + slack;
         if (distance_xz(crowd.positions[j], a.position) >= reach) return;
-        blocked = (shares_goal(self, j, crowd) || crowd.arrived[j]) && distance_xz(crowd.positions[j], goal) <= distance + slack;
+        blocked = (shares_goal(self, j, crowd) || crowd.arrived[j]) &&
+                  distance_xz(crowd.positions[j], goal) <= distance + slack;
     });
     return blocked;
 }
@@ -289,15 +296,17 @@ void move_agent(Agent& a, uint32_t self, float dt, const NavMesh& navmesh, const
 
     // A destination others share, or another body has arrived on, is reached as near as the crowd
     // there lets (docs/agents.md, "Arriving among others").
-    bool taken = last && !takeoff && crowd.grounded[self] && arrived_among_others(a, self, target.position, distance, crowd);
+    bool taken =
+        last && !takeoff && crowd.grounded[self] && arrived_among_others(a, self, target.position, distance, crowd);
     if (!taken && last && !takeoff && crowd.grounded[self]) {
         const float radius = a.def.capabilities.radius;
         bool against_crowd = false;
         crowd.grid.visit(a.position, radius + crowd.max_radius + kContact, [&](uint32_t j) {
             // Bodies sent to the same point settle by arrived_among_others' bound instead.
-            against_crowd = against_crowd || (j != self && crowd.arrived[j] && !shares_goal(self, j, crowd) &&
-                                              distance_xz(crowd.positions[j], a.position) < radius + crowd.radii[j] + kContact &&
-                                              distance_xz(crowd.positions[j], target.position) < distance);
+            against_crowd =
+                against_crowd || (j != self && crowd.arrived[j] && !shares_goal(self, j, crowd) &&
+                                  distance_xz(crowd.positions[j], a.position) < radius + crowd.radii[j] + kContact &&
+                                  distance_xz(crowd.positions[j], target.position) < distance);
         });
         if (against_crowd) {
             crowd.grid.visit(target.position, radius + crowd.max_radius, [&](uint32_t j) {
@@ -364,8 +373,8 @@ void move_agent(Agent& a, uint32_t self, float dt, const NavMesh& navmesh, const
             if (touching > kSlidesPastAtMost || !slide_past(a, desired, crowd, near.data(), count)) {
                 const dtObstacleAvoidanceParams params = avoidance_params(touching >= kHemmedIn);
                 Vec3 chosen = desired;
-                query.sampleVelocityAdaptive(a.position.data(), radius, a.def.max_speed, a.velocity.data(), desired.data(),
-                                             chosen.data(), &params);
+                query.sampleVelocityAdaptive(a.position.data(), radius, a.def.max_speed, a.velocity.data(),
+                                             desired.data(), chosen.data(), &params);
                 desired = Vec3(chosen.x(), 0.0f, chosen.z());
             }
         }

@@ -19,9 +19,9 @@
 namespace nl {
 namespace {
 
-
 void check_positive(float value, const char* field) {
-    if (!(value > 0.0f) || !std::isfinite(value)) fail_field(ErrorCode::InvalidArgument, field, " is ", value, " (must be finite and > 0)");
+    if (!(value > 0.0f) || !std::isfinite(value))
+        fail_field(ErrorCode::InvalidArgument, field, " is ", value, " (must be finite and > 0)");
 }
 void check_amount(float value, const char* field) {
     if (!(value >= 0.0f) || !std::isfinite(value))
@@ -34,12 +34,14 @@ void check_capabilities(const AgentCapabilities& c) {
     check_amount(c.radius, "capabilities.radius");
 }
 void check_point(const Vec3& p, const char* field) {
-    if (!within_coordinate_limit(p)) fail_field(ErrorCode::InvalidArgument, field, " is not finite or beyond the coordinate limit");
+    if (!within_coordinate_limit(p))
+        fail_field(ErrorCode::InvalidArgument, field, " is not finite or beyond the coordinate limit");
 }
 
 }  // namespace
 
-Agents::Agents(uint32_t handle_tag, AgentsSettings settings) : settings_(settings), ids_(handle_tag, HandleKind::Agent) {}
+Agents::Agents(uint32_t handle_tag, AgentsSettings settings)
+    : settings_(settings), ids_(handle_tag, HandleKind::Agent) {}
 Agents::~Agents() = default;
 
 Agent& Agents::find(Handle agent) {
@@ -86,8 +88,8 @@ std::shared_ptr<const NavMesh> Agents::navmesh_of(const NavMeshRegistry& navmesh
     }
 }
 
-bool Agents::locate_across(const NavMeshRegistry& navmeshes, Handle own, const Vec3& point, float radius, Vec3& on_navmesh,
-                           Handle& navmesh, std::shared_ptr<const CarrierFrame>& frame) const {
+bool Agents::locate_across(const NavMeshRegistry& navmeshes, Handle own, const Vec3& point, float radius,
+                           Vec3& on_navmesh, Handle& navmesh, std::shared_ptr<const CarrierFrame>& frame) const {
     // The navmeshes cross links join to the agent's, nearest hop first (either way: a platform the
     // agent can ride away from its own navmesh and back).
     std::vector<std::pair<Handle, Handle>> joins;
@@ -134,7 +136,8 @@ Handle Agents::add(const NavMeshRegistry& navmeshes, const AgentDef& def) {
     Agent body;
     body.def = def;
     body.frame = navmeshes.frame(def.navmesh);
-    body.polygon = locate(*navmesh, pose_of(body.frame), def.position, def.capabilities.radius, "position", body.position);
+    body.polygon =
+        locate(*navmesh, pose_of(body.frame), def.position, def.capabilities.radius, "position", body.position);
     std::unique_lock lock(mutex_);
     // Nothing may throw once the id is taken. Grown geometrically: adding n agents one by one
     // copies O(n) bodies in all, not O(n^2).
@@ -163,7 +166,8 @@ bool Agents::contains(Handle agent) const {
     return ids_.find(agent) != nullptr;
 }
 
-void Agents::set_destination(const NavMeshRegistry& navmeshes, Handle agent, const Vec3& destination, const char* field) {
+void Agents::set_destination(const NavMeshRegistry& navmeshes, Handle agent, const Vec3& destination,
+                             const char* field) {
     check_point(destination, field);
     float radius;
     CarrierPose pose;
@@ -327,8 +331,10 @@ std::vector<PathPoint> Agents::corners(Handle agent) const {
     // Where it is now, going on as it does: flying the link it took off on (the point `next` still
     // names), or walking. Without it a straight walk to the goal would be one point.
     PathPoint here;
-    if (a.motion) here = a.path[a.next];
-    else here.apex = a.position;
+    if (a.motion)
+        here = a.path[a.next];
+    else
+        here.apex = a.position;
     here.carrier_position = a.position;
     here.polygon = a.polygon;
     std::vector<PathPoint> out;

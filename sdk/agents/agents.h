@@ -134,14 +134,15 @@ private:
                          const Level& level);
     // A body landed over a cross link goes onto `navmesh` (`graph`, null if removed): the link's
     // landing navmesh, or the one a ray down found under it.
-    void land_across(Agent& a, Handle navmesh, const std::shared_ptr<const PathGraph>& graph, const StepNavMeshes& table);
+    void land_across(Agent& a, Handle navmesh, const std::shared_ptr<const PathGraph>& graph,
+                     const StepNavMeshes& table);
     // How the level's movable meshes moved over the last step: a jump onto a moving surface aims
     // where its landing will be, and its flight is checked against where they will be.
     MeshMotions motions_;
 
     mutable SharedMutex mutex_{"the agents"};
     AgentsSettings settings_;
-    SlotMap<uint32_t> ids_;                    // agent handle -> index in agents_
+    SlotMap<uint32_t> ids_;      // agent handle -> index in agents_
     std::vector<Agent> agents_;  // dense, in a stable order between removals
     std::vector<AgentEvent> events_;
     uint64_t next_path_order_ = 0;

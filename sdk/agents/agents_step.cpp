@@ -20,7 +20,7 @@
 namespace nl {
 namespace {
 
-constexpr float kSameEnd = 0.01f;  // a link end within this of where the path has it has not moved
+constexpr float kSameEnd = 0.01f;       // a link end within this of where the path has it has not moved
 constexpr float kMissedLanding = 2.0f;  // how far from a moving surface a flight may end and still land on it
 
 AgentState state_of(MotionKind kind) {
@@ -66,7 +66,8 @@ struct Agents::Step {
 };
 
 void Agents::step(float dt, const NavMeshRegistry& navmeshes, const Level& level, TaskSystem& tasks) {
-    if (!(dt >= 0.0f) || !std::isfinite(dt)) fail_field(ErrorCode::InvalidArgument, "dt is ", dt, " (must be finite and >= 0)");
+    if (!(dt >= 0.0f) || !std::isfinite(dt))
+        fail_field(ErrorCode::InvalidArgument, "dt is ", dt, " (must be finite and >= 0)");
     if (dt == 0.0f) return;  // does nothing: the last step's events stay too
     std::unique_lock lock(mutex_);
     events_.clear();
@@ -85,7 +86,8 @@ void Agents::step(float dt, const NavMeshRegistry& navmeshes, const Level& level
     motions_.remember(level.movable_meshes(), dt);
     for (const Agent& a : agents_) events_.insert(events_.end(), a.step_events.begin(), a.step_events.end());
     const size_t stuck = static_cast<size_t>(std::count(s.unmoved.begin(), s.unmoved.end(), uint8_t{1}));
-    if (stuck > 0) fail(ErrorCode::OutOfMemory, stuck, " agents could not move in this step (out of memory); the others did");
+    if (stuck > 0)
+        fail(ErrorCode::OutOfMemory, stuck, " agents could not move in this step (out of memory); the others did");
 }
 
 // 1. (serial) Each agent against the world as it is now: its navmesh still there, its path's links
@@ -194,15 +196,18 @@ void Agents::plan_asked_paths(Step& s) {
                 if (!routes || (here && results[k].outcome == PathOutcome::Complete)) continue;
                 // Off this navmesh and back, or onto another: over cross links that hold now, else
                 // over one that will (the agent waits for it at its take-off: a ferry).
-                RouteQuery route{a.def.navmesh, a.position, a.destination_navmesh, a.destination, a.def.capabilities, false};
+                RouteQuery route{a.def.navmesh, a.position,         a.destination_navmesh,
+                                 a.destination, a.def.capabilities, false};
                 PathResult leg;
                 bool found = plan_route(s.table, route, leg);
                 if (!found) {
                     route.through_waiting = true;
                     found = plan_route(s.table, route, leg);
                 }
-                if (found) results[k] = std::move(leg);
-                else if (!here) results[k].outcome = PathOutcome::NoPath;
+                if (found)
+                    results[k] = std::move(leg);
+                else if (!here)
+                    results[k].outcome = PathOutcome::NoPath;
             } catch (...) {
                 results[k].outcome = PathOutcome::Failed;
             }
@@ -338,7 +343,8 @@ void Agents::take_off(Step& s) {
         // Moved since the path was planned (by another thread, after this step's upkeep): the path's
         // take-off and landing are not the link's any more.
         if (usable && a.next + 1 < a.path.size())
-            usable = (motion.from() - point.position).norm() < kSameEnd && (motion.to() - a.path[a.next + 1].position).norm() < kSameEnd;
+            usable = (motion.from() - point.position).norm() < kSameEnd &&
+                     (motion.to() - a.path[a.next + 1].position).norm() < kSameEnd;
         // A cross link whose landing navmesh was removed meanwhile leads nowhere: plan again.
         if (usable && link.crosses() && !s.graph_of(link.landing_navmesh)) usable = false;
         if (!usable) {
@@ -469,6 +475,5 @@ void Agents::land_across(Agent& a, Handle navmesh, const std::shared_ptr<const P
         a.ask_path(AgentReason::None, next_path_order_);
     }
 }
-
 
 }  // namespace nl

@@ -31,7 +31,7 @@ struct CrowdSnapshot {
     // onto the take-off point, the others make way, so that no two block each other there.
     std::vector<uint8_t> first_at_takeoff;
     NeighbourGrid grid;
-    float max_radius = 0.0f;        // the widest body on the ground
+    float max_radius = 0.0f;  // the widest body on the ground
 };
 
 // Walking its path on the ground, or standing aside for a moment to let another pass.

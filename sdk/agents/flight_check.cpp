@@ -52,7 +52,8 @@ bool flight_is_clear(const LinkMotion& flight, float radius, float height, const
     // A mesh moved by a jump of the host's (or over a step of almost no time) gives no motion to
     // trust: the flight waits for a step that does.
     if (!std::isfinite(fastest * duration)) return false;
-    const int count = int(std::clamp(std::ceil(fastest * duration / (2.0f * kMostStray)), float(kLeastPieces), float(kMostPieces)));
+    const int count =
+        int(std::clamp(std::ceil(fastest * duration / (2.0f * kMostStray)), float(kLeastPieces), float(kMostPieces)));
     // Uniform in time, and at a fall's corners: each piece is then straight, or an arc's piece, in
     // which x and z move uniformly and y is quadratic, so it strays from its chord most at its middle
     // time, by exactly the midpoint's distance from the chord's.
@@ -74,8 +75,8 @@ bool flight_is_clear(const LinkMotion& flight, float radius, float height, const
     const float stray = 0.5f * fastest * longest;
 
     const Body body{radius + stray, height};
-    const std::vector<SweepPiece> pieces = sweep_pieces(PathPoints{points.data(), points.size(), slack + stray},
-                                                        LinkSettings{}.clearance_margin, radius);
+    const std::vector<SweepPiece> pieces =
+        sweep_pieces(PathPoints{points.data(), points.size(), slack + stray}, LinkSettings{}.clearance_margin, radius);
     if (pieces.empty()) return true;
     std::vector<BodyStretch> stretches;
     std::vector<MeshPlacement> placements;

@@ -11,7 +11,7 @@ constexpr float kGivingWaySeconds = 1.5f;  // it stands aside this long, then wa
 // not needed: two heading for one corner from either side stood 0.6 m apart for good, the velocity
 // obstacles holding each short of it (0.5 radii let that be, in the corridors crossing at 90 degrees).
 constexpr float kContactSlack = 1.5f;
-constexpr float kStraightInto = 0.9f;   // cosine: a body this near straight ahead is in the way
+constexpr float kStraightInto = 0.9f;  // cosine: a body this near straight ahead is in the way
 
 // Walking on the ground toward a point (not standing at a take-off, not in the air).
 bool walking(const Agent& a) { return a.state == AgentState::Walking && !a.at_takeoff && !a.motion && !a.path.empty(); }
@@ -62,7 +62,8 @@ void keep_patience(Agent& a, float dt) {
 }  // namespace
 
 void decide_giving_way(std::vector<Agent>& agents, const std::vector<uint32_t>& space_of,
-                       const std::vector<uint32_t>& index_in_space, const std::vector<CrowdSnapshot>& crowds, float dt) {
+                       const std::vector<uint32_t>& index_in_space, const std::vector<CrowdSnapshot>& crowds,
+                       float dt) {
     const size_t n = agents.size();
     std::vector<std::vector<uint32_t>> members(crowds.size());
     for (size_t s = 0; s < crowds.size(); ++s) members[s].resize(crowds[s].positions.size());
@@ -110,9 +111,11 @@ void decide_giving_way(std::vector<Agent>& agents, const std::vector<uint32_t>& 
             const uint32_t j = members[space_of[i]][k];
             if (j == i) return;
             const Agent& b = agents[j];
-            const Vec3 d(crowd.positions[k].x() - crowd.positions[self].x(), 0.0f, crowd.positions[k].z() - crowd.positions[self].z());
+            const Vec3 d(crowd.positions[k].x() - crowd.positions[self].x(), 0.0f,
+                         crowd.positions[k].z() - crowd.positions[self].z());
             if (d.norm() >= radius + b.def.capabilities.radius + slack) return;
-            if (std::fabs(crowd.positions[k].y() - crowd.positions[self].y()) > std::max(a.def.height, b.def.height)) return;
+            if (std::fabs(crowd.positions[k].y() - crowd.positions[self].y()) > std::max(a.def.height, b.def.height))
+                return;
             // On its way (not standing where it arrived), along a leg that runs against ours.
             if (on_its_way(b)) against_counterflow[i] |= way_ahead(b).dot(way_ahead(a)) < 0.0f;
             if (gives[i]) return;

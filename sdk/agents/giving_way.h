@@ -49,8 +49,8 @@ inline void stop_giving_way(Agent& a) {
 
 // After a step's move: counts how long each walker has been stuck and picks those that give way;
 // ends the turns of those whose time is up; says when one starts waiting for room (Waiting, Crowd)
-// and fails one that has waited past its give_up_seconds (Failed, Crowd). `crowds[space_of[i]]` holds agent i at index_in_space[i]
-// (positions as the move began). Serial, in agent order: the same for any thread count.
+// and fails one that has waited past its give_up_seconds (Failed, Crowd). `crowds[space_of[i]]` holds
+// agent i at index_in_space[i] (positions as the move began). Serial, in agent order: the same for any thread count.
 void decide_giving_way(std::vector<Agent>& agents, const std::vector<uint32_t>& space_of,
                        const std::vector<uint32_t>& index_in_space, const std::vector<CrowdSnapshot>& crowds, float dt);
 

@@ -34,7 +34,8 @@ MeshMotion MeshMotions::motion(const MovableMesh& now) const {
         m.velocity = (now.transform.translation() - before.transform.translation()) / dt_;
         // The rotation part of each (a movable mesh may be scaled): the turn over the step, about
         // the origin, as an angle of at most half a turn.
-        const Eigen::AngleAxisf turned(Eigen::Matrix3f(now.transform.rotation() * before.transform.rotation().transpose()));
+        const Eigen::AngleAxisf turned(
+            Eigen::Matrix3f(now.transform.rotation() * before.transform.rotation().transpose()));
         if (turned.angle() > 0.0f) m.turn = turned.axis() * (turned.angle() / dt_);
     }
     return m;

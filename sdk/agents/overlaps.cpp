@@ -44,7 +44,8 @@ void resolve_overlaps(const std::vector<OverlapBody>& bodies, float dt, TaskSyst
     tasks.parallel_for(static_cast<uint32_t>(n), 64, [&](uint32_t begin, uint32_t end) {
         for (uint32_t i = begin; i < end; ++i) {
             const float reach = bodies[i].agent->def.capabilities.radius + widest + kReachSlack;
-            contact_count[i] = static_cast<uint8_t>(grid.nearest(positions[i], reach, i, contacts[i].data(), kContacts));
+            contact_count[i] =
+                static_cast<uint8_t>(grid.nearest(positions[i], reach, i, contacts[i].data(), kContacts));
         }
     });
     if (std::all_of(contact_count.begin(), contact_count.end(), [](uint8_t c) { return c == 0; })) return;
@@ -83,7 +84,8 @@ void resolve_overlaps(const std::vector<OverlapBody>& bodies, float dt, TaskSyst
                 // In x-z only: the feet's height is set once, after the rounds.
                 SurfaceWalkOptions flat;
                 flat.surface_height = false;
-                const SurfaceMove moved = move_along_surface(*bodies[i].navmesh, polygons[i], positions[i], positions[i] + push, flat);
+                const SurfaceMove moved =
+                    move_along_surface(*bodies[i].navmesh, polygons[i], positions[i], positions[i] + push, flat);
                 next[i] = moved.position;
                 polygons[i] = moved.polygon;
             }

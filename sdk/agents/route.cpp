@@ -17,12 +17,13 @@ constexpr size_t kMaxCrossLinks = 256;
 struct CrossLink {
     Handle navmesh;  // where it takes off
     const StoredLink* stored;
-    float cost;      // taking it
+    float cost;  // taking it
 };
 
 // The cost of walking from `from` to `to` on one navmesh (in its space), or infinity when no whole
 // path joins them.
-float walk_cost(const PathGraph& graph, const Vec3& from, const Vec3& to, const AgentCapabilities& agent, PathResult& scratch) {
+float walk_cost(const PathGraph& graph, const Vec3& from, const Vec3& to, const AgentCapabilities& agent,
+                PathResult& scratch) {
     PathQuery q;
     q.start = from;
     q.goal = to;
@@ -82,7 +83,8 @@ bool plan_route(const StepNavMeshes& navmeshes, const RouteQuery& query, PathRes
     PathResult scratch;
     for (uint32_t k = 0; k < cross.size(); ++k) {
         if (cross[k].navmesh != query.from_navmesh) continue;
-        const float walk = walk_cost(*start->graph, query.from, cross[k].stored->link.start, query.capabilities, scratch);
+        const float walk =
+            walk_cost(*start->graph, query.from, cross[k].stored->link.start, query.capabilities, scratch);
         reached[k] = walk + cross[k].cost;
         first[k] = k;
     }
@@ -103,8 +105,10 @@ bool plan_route(const StepNavMeshes& navmeshes, const RouteQuery& query, PathRes
         }
         for (uint32_t m = 0; m < cross.size(); ++m) {
             if (done[m] || cross[m].navmesh != landed.landing_navmesh) continue;
-            const float cost = lowest + walk_cost(*there->graph, landed.end, cross[m].stored->link.start, query.capabilities, scratch) +
-                               cross[m].cost;
+            const float cost =
+                lowest +
+                walk_cost(*there->graph, landed.end, cross[m].stored->link.start, query.capabilities, scratch) +
+                cross[m].cost;
             if (cost < reached[m]) reached[m] = cost, first[m] = first[k];
         }
     }

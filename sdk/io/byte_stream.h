@@ -61,7 +61,8 @@ private:
 // ("navmesh file: GEOM section") and say what was being read.
 class ByteReader {
 public:
-    ByteReader(const uint8_t* data, size_t size, std::string context) : data_(data), size_(size), context_(std::move(context)) {}
+    ByteReader(const uint8_t* data, size_t size, std::string context)
+        : data_(data), size_(size), context_(std::move(context)) {}
 
     size_t position() const { return at_; }
     size_t remaining() const { return size_ - at_; }

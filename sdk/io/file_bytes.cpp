@@ -47,7 +47,8 @@ File open_for_reading(const std::string& path) {
     File file(std::fopen(path.c_str(), "rb"), &std::fclose);
     if (!file) fail(ErrorCode::Io, "cannot open '", path, "': ", std::strerror(errno));
     struct stat opened {};
-    if (::fstat(::fileno(file.get()), &opened) != 0) fail(ErrorCode::Io, "cannot read '", path, "': ", std::strerror(errno));
+    if (::fstat(::fileno(file.get()), &opened) != 0)
+        fail(ErrorCode::Io, "cannot read '", path, "': ", std::strerror(errno));
     refuse_unless_readable(path, S_ISREG(opened.st_mode)    ? fs::file_type::regular
                                  : S_ISFIFO(opened.st_mode) ? fs::file_type::fifo
                                  : S_ISDIR(opened.st_mode)  ? fs::file_type::directory
@@ -78,8 +79,10 @@ fs::path write_target(const std::string& path) {
         const fs::file_status status = fs::symlink_status(target, ec);
         if (!fs::is_symlink(status)) {
             if (fs::exists(status) && !fs::is_regular_file(status))
-                fail(ErrorCode::Io, "cannot write '", path, "': ", target == fs::path(path) ? "it" : concat("the link leads to ", target.string(), ", which"),
-                     " is ", kind_of(status.type()), ", not a file (NavLink writes a file beside it and renames it over)");
+                fail(ErrorCode::Io, "cannot write '", path,
+                     "': ", target == fs::path(path) ? "it" : concat("the link leads to ", target.string(), ", which"),
+                     " is ", kind_of(status.type()),
+                     ", not a file (NavLink writes a file beside it and renames it over)");
             return target;
         }
         if (hops == 40) fail(ErrorCode::Io, "cannot write '", path, "': too many levels of symbolic links");
@@ -106,11 +109,13 @@ std::string read_file_bytes_up_to_declared(const std::string& path, size_t heade
     const uint64_t total = declared(bytes);
     if (total <= bytes.size()) return bytes;  // not of the format (its parser says so), or all read
     if (total > max_bytes)
-        fail(ErrorCode::Parse, what, ": '", path, "' says it holds ", total, " bytes, more than ", max_bytes, " (corrupted)");
+        fail(ErrorCode::Parse, what, ": '", path, "' says it holds ", total, " bytes, more than ", max_bytes,
+             " (corrupted)");
     if (read_into(file.get(), path, bytes, total - bytes.size())) return bytes;
     std::string more;
     read_into(file.get(), path, more, 1);
-    if (!more.empty()) fail(ErrorCode::Parse, what, ": '", path, "' goes on past the ", total, " bytes its header says it holds");
+    if (!more.empty())
+        fail(ErrorCode::Parse, what, ": '", path, "' goes on past the ", total, " bytes its header says it holds");
     return bytes;
 }
 
@@ -119,8 +124,9 @@ void write_file_bytes(const std::string& path, std::string_view bytes) {
     const fs::path target = write_target(path);
     // Beside the file, named for this write alone: two writes of one path never share it.
     static std::atomic<uint64_t> writes{0};
-    const std::string partial = concat(target.string(), ".partial-", std::hash<std::thread::id>{}(std::this_thread::get_id()),
-                                       "-", writes.fetch_add(1));
+    const std::string partial =
+        concat(target.string(), ".partial-", std::hash<std::thread::id>{}(std::this_thread::get_id()), "-",
+               writes.fetch_add(1));
     {
         File file(std::fopen(partial.c_str(), "wb"), &std::fclose);
         if (!file) fail(ErrorCode::Io, "cannot write '", path, "': ", std::strerror(errno));

@@ -45,7 +45,8 @@ public:
     bool parse_error(std::size_t byte, const std::string& token, const Json::exception& e) override {
         // 406 is nlohmann's "number overflow": valid JSON, but no double holds it.
         if (e.id == 406)
-            fail(ErrorCode::InvalidArgument, where(), " is ", cut_text(token, kExcerptBytes), ", a number beyond the range of a double");
+            fail(ErrorCode::InvalidArgument, where(), " is ", cut_text(token, kExcerptBytes),
+                 ", a number beyond the range of a double");
         // The parser's message ends with the token it last read, which may be a whole long string.
         fail(ErrorCode::Parse, what_, ": malformed JSON at byte ", byte, ": ", cut_text(e.what(), kParserMessageBytes));
     }
@@ -70,7 +71,8 @@ private:
     }
     bool open(Json&& empty) {
         if (open_.size() >= size_t(kMaxJsonDepth))
-            fail(ErrorCode::InvalidArgument, where(), " nests deeper than ", kMaxJsonDepth, " levels, the most NavLink reads");
+            fail(ErrorCode::InvalidArgument, where(), " nests deeper than ", kMaxJsonDepth,
+                 " levels, the most NavLink reads");
         Json& container = slot();
         container = std::move(empty);
         open_.push_back(Open{&container, {}});
@@ -122,10 +124,10 @@ Json recorded_json(const std::string& text) {
 
 std::string json_excerpt(const Json& value) {
     switch (value.type()) {
-    case Json::value_t::string: return quoted_excerpt(value.get_ref<const std::string&>());
-    case Json::value_t::array: return "an array of " + counted(value.size(), "value");
-    case Json::value_t::object: return "an object of " + counted(value.size(), "member");
-    default: return value.dump();  // null, a boolean or a number: short by nature
+        case Json::value_t::string: return quoted_excerpt(value.get_ref<const std::string&>());
+        case Json::value_t::array: return "an array of " + counted(value.size(), "value");
+        case Json::value_t::object: return "an object of " + counted(value.size(), "member");
+        default: return value.dump();  // null, a boolean or a number: short by nature
     }
 }
 

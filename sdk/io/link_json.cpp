@@ -67,7 +67,8 @@ public:
     uint64_t whole(const char* key, uint64_t fallback) const {
         const Json* value = find(key);
         if (!value) return fallback;
-        if (!value->is_number_unsigned()) fail(ErrorCode::InvalidArgument, path_, ".", key, " must be a whole number >= 0");
+        if (!value->is_number_unsigned())
+            fail(ErrorCode::InvalidArgument, path_, ".", key, " must be a whole number >= 0");
         return value->get<uint64_t>();
     }
     Vec3 point(const char* key, bool required) const {
@@ -78,7 +79,8 @@ public:
         Vec3 v;
         for (int k = 0; k < 3; ++k) {
             if (!(*value)[k].is_number() || !(std::fabs((*value)[k].get<double>()) <= kCoordinateLimit))
-                fail(ErrorCode::InvalidArgument, path_, ".", key, "[", k, "] must be a number within the coordinate limit");
+                fail(ErrorCode::InvalidArgument, path_, ".", key, "[", k,
+                     "] must be a number within the coordinate limit");
             v[k] = (*value)[k].get<float>();
         }
         if (!within_coordinate_limit(v))
@@ -102,7 +104,8 @@ LinkKind kind_from(const Json& value, const std::string& path) {
                value.get<uint64_t>() <= UINT32_MAX) {
         return static_cast<LinkKind>(value.get<uint32_t>());
     }
-    fail(ErrorCode::InvalidArgument, path, ".kind must be \"jump\", \"drop\", \"manual\" or a plugin kind number >= 256");
+    fail(ErrorCode::InvalidArgument, path,
+         ".kind must be \"jump\", \"drop\", \"manual\" or a plugin kind number >= 256");
 }
 
 }  // namespace
@@ -122,8 +125,9 @@ std::string links_to_json(const std::vector<Link>& links, const LinksFileProvena
         const Link& l = links[i];
         // Its landing navmesh's id means nothing in another run: saving it would lose where it leads.
         if (l.crosses())
-            fail(ErrorCode::InvalidArgument, "link ", i, " leads to another navmesh (a cross link): links files hold the "
-                                             "links within one navmesh; add cross links again after loading");
+            fail(ErrorCode::InvalidArgument, "link ", i,
+                 " leads to another navmesh (a cross link): links files hold the "
+                 "links within one navmesh; add cross links again after loading");
         Json kind = l.kind < LinkKind::FirstPluginKind ? Json(link_kind_name(l.kind)) : Json(uint32_t(l.kind));
         list.push_back({{"kind", kind},
                         {"start", point(l.start)},
@@ -147,9 +151,11 @@ std::string links_to_json(const std::vector<Link>& links, const LinksFileProvena
     Json file = {{"format", "navlink-links"}, {"version", kLinkFileVersion}};
     if (made_for) {
         const AgentType& a = made_for->agent_type;
-        file["made_for"] = {{"agent", {{"radius", a.radius}, {"height", a.height}, {"max_climb", a.max_climb}, {"max_slope", a.max_slope}}},
-                            {"link_settings", recorded_json(made_for->made_with.settings)},
-                            {"link_plugins", recorded_json(made_for->made_with.plugins)}};
+        file["made_for"] = {
+            {"agent",
+             {{"radius", a.radius}, {"height", a.height}, {"max_climb", a.max_climb}, {"max_slope", a.max_slope}}},
+            {"link_settings", recorded_json(made_for->made_with.settings)},
+            {"link_plugins", recorded_json(made_for->made_with.plugins)}};
         if (made_for->level_hash != 0) file["made_for"]["level_hash"] = level_hash_text(made_for->level_hash);
     }
     file["links"] = std::move(list);
@@ -164,7 +170,8 @@ LinksFile read_links_json(std::string_view text) {
         fail(ErrorCode::VersionMismatch, "links JSON: format is not \"navlink-links\"");
     const uint64_t version = top.whole("version", 0);
     if (version != uint64_t(kLinkFileVersion))
-        fail(ErrorCode::VersionMismatch, "links JSON: version ", version, " is not supported (this library reads ", kLinkFileVersion, ")");
+        fail(ErrorCode::VersionMismatch, "links JSON: version ", version, " is not supported (this library reads ",
+             kLinkFileVersion, ")");
     const Json& list = top.at("links");
     if (!list.is_array()) fail(ErrorCode::InvalidArgument, "links JSON: links must be an array");
 
@@ -184,10 +191,12 @@ LinksFile read_links_json(std::string_view text) {
             record.made_with.settings = link_settings_to_json(checked);
         }
         if (const Json* plugins = m.find("link_plugins"); plugins && !plugins->is_null()) {
-            if (!plugins->is_object()) fail(ErrorCode::InvalidArgument, "links JSON.made_for.link_plugins must be an object or null");
+            if (!plugins->is_object())
+                fail(ErrorCode::InvalidArgument, "links JSON.made_for.link_plugins must be an object or null");
             record.made_with.plugins = plugins->dump();
         }
-        if (const Json* hash = m.find("level_hash"); hash && !hash->is_null()) record.level_hash = parse_hex_hash(*hash);
+        if (const Json* hash = m.find("level_hash"); hash && !hash->is_null())
+            record.level_hash = parse_hex_hash(*hash);
         file.made_for = record;
     }
     for (size_t i = 0; i < list.size(); ++i) {
@@ -217,8 +226,8 @@ LinksFile read_links_json(std::string_view text) {
             l.requirements.drop = q.number("drop", 0.0f);
             l.requirements.clearance_width = q.number("clearance_width", 0.0f);
             l.requirements.abilities = q.whole("abilities", 0);
-            if (l.requirements.gap < 0 || l.requirements.length < 0 || l.requirements.rise < 0 || l.requirements.drop < 0 ||
-                l.requirements.clearance_width < 0)
+            if (l.requirements.gap < 0 || l.requirements.length < 0 || l.requirements.rise < 0 ||
+                l.requirements.drop < 0 || l.requirements.clearance_width < 0)
                 fail(ErrorCode::InvalidArgument, r.path(), ".requires: distances must be >= 0");
         }
         links.push_back(l);
@@ -259,12 +268,14 @@ void apply_settings_json(std::string_view text, LinkSettings& s) {
             s.drop_angles.clear();
             for (size_t i = 0; i < value.size(); ++i) {
                 if (!within_float_range(value[i]))
-                    fail(ErrorCode::InvalidArgument, "settings.drop_angles[", i, "] must be a number within float range");
+                    fail(ErrorCode::InvalidArgument, "settings.drop_angles[", i,
+                         "] must be a number within float range");
                 s.drop_angles.push_back(value[i].get<float>());
             }
             known = true;
         }
-        if (!known) fail(ErrorCode::InvalidArgument, "settings: ", quoted_excerpt(key), " is not a link generation setting");
+        if (!known)
+            fail(ErrorCode::InvalidArgument, "settings: ", quoted_excerpt(key), " is not a link generation setting");
     }
     naming_fields("settings.", [&] { validate(s); });
 }

@@ -80,7 +80,8 @@ void write_geometry(ByteWriter& out, const NavMeshInput& in, Quantiser& q) {
     for (uint32_t v : in.indices) out.little(v, corner_width);
     const bool areas = std::any_of(in.areas.begin(), in.areas.end(), [](uint8_t a) { return a != 0; });
     out.u8(areas ? 1 : 0);
-    if (areas) for (uint8_t a : in.areas) out.u8(a);
+    if (areas)
+        for (uint8_t a : in.areas) out.u8(a);
 
     const bool detail = !in.detail_starts.empty();
     out.u8(detail ? 1 : 0);
@@ -93,7 +94,8 @@ void write_geometry(ByteWriter& out, const NavMeshInput& in, Quantiser& q) {
     for (uint32_t p = 0; p < polygons; ++p) {
         const uint32_t first = in.detail_starts[p], end = in.detail_starts[p + 1];
         const auto begin_index = in.detail_indices.begin() + 3 * first, end_index = in.detail_indices.begin() + 3 * end;
-        const uint32_t base = *std::min_element(begin_index, end_index), top = *std::max_element(begin_index, end_index);
+        const uint32_t base = *std::min_element(begin_index, end_index),
+                       top = *std::max_element(begin_index, end_index);
         const unsigned width = width_for(top - base);
         out.varint(end - first);
         out.signed_varint(int64_t(base) - last_base);
@@ -121,8 +123,9 @@ void write_links(ByteWriter& out, const std::vector<Link>& links, const Quantise
     for (size_t i = 0; i < links.size(); ++i) {
         const Link& l = links[i];
         if (l.crosses())
-            fail(ErrorCode::InvalidArgument, "links[", i, "] lands on another navmesh (a cross link): a navmesh file holds "
-                                             "one navmesh's own links");
+            fail(ErrorCode::InvalidArgument, "links[", i,
+                 "] lands on another navmesh (a cross link): a navmesh file holds "
+                 "one navmesh's own links");
         out.varint(static_cast<uint32_t>(l.kind));
         out.u8(static_cast<uint8_t>((l.bidirectional ? kBidirectional : 0) | (l.generated ? kGenerated : 0) |
                                     (l.enabled ? kEnabled : 0)));
@@ -174,36 +177,42 @@ std::vector<uint8_t> inflated(const uint8_t* data, size_t size, const std::strin
     ByteReader in(data, size, context);
     const uint64_t inflated_size = in.u64("the inflated size");
     if (inflated_size > 1032 * uint64_t(in.remaining()) + 64)
-        fail(ErrorCode::Parse, context, ": it claims ", inflated_size, " bytes inflated, more than its ", in.remaining(),
-             " deflated bytes could hold (corrupted)");
+        fail(ErrorCode::Parse, context, ": it claims ", inflated_size, " bytes inflated, more than its ",
+             in.remaining(), " deflated bytes could hold (corrupted)");
     std::vector<uint8_t> out(static_cast<size_t>(inflated_size));
     uLongf got = out.size();
     if (uncompress(out.data(), &got, in.here(), in.remaining()) != Z_OK || got != out.size())
-        fail(ErrorCode::Parse, context, ": its deflated bytes do not inflate to the ", inflated_size, " it states (corrupted)");
+        fail(ErrorCode::Parse, context, ": its deflated bytes do not inflate to the ", inflated_size,
+             " it states (corrupted)");
     return out;
 }
 
 // --- reading ---------------------------------------------------------------------------------
 
-void read_points(ByteReader& in, std::vector<Vec3>& points, uint32_t count, const Quantiser& q, const unsigned widths[3]) {
+void read_points(ByteReader& in, std::vector<Vec3>& points, uint32_t count, const Quantiser& q,
+                 const unsigned widths[3]) {
     points.resize(count);
     for (Vec3& p : points)
-        for (int axis = 0; axis < 3; ++axis) p[axis] = metres(q.origin[axis] + int64_t(in.little(widths[axis], "a vertex")));
+        for (int axis = 0; axis < 3; ++axis)
+            p[axis] = metres(q.origin[axis] + int64_t(in.little(widths[axis], "a vertex")));
 }
 
 void read_geometry(ByteReader& in, NavMeshInput& out, Quantiser& q) {
     const int exponent = static_cast<int8_t>(in.u8("the quantum"));
     if (exponent != kNavMeshGridExponent)
-        fail(ErrorCode::Parse, in.context(), ": a quantum of 2^", exponent, " m (this version writes 2^", kNavMeshGridExponent, ")");
+        fail(ErrorCode::Parse, in.context(), ": a quantum of 2^", exponent, " m (this version writes 2^",
+             kNavMeshGridExponent, ")");
     for (int64_t& origin : q.origin) {
         origin = in.signed_varint("the origin");
-        if (origin < -kMostUnits || origin > kMostUnits) fail(ErrorCode::Parse, in.context(), ": the origin is beyond the coordinate limit");
+        if (origin < -kMostUnits || origin > kMostUnits)
+            fail(ErrorCode::Parse, in.context(), ": the origin is beyond the coordinate limit");
     }
     unsigned widths[3];
     for (unsigned& w : widths) {
         w = in.u8("a coordinate width");
         if (w < 1 || w > kWidestCoordinate)
-            fail(ErrorCode::Parse, in.context(), ": a coordinate width of ", w, " bytes (must be 1 to ", kWidestCoordinate, ")");
+            fail(ErrorCode::Parse, in.context(), ": a coordinate width of ", w, " bytes (must be 1 to ",
+                 kWidestCoordinate, ")");
     }
     const uint32_t vertices = in.count("the vertex count", widths[0] + widths[1] + widths[2]);
     read_points(in, out.vertices, vertices, q, widths);
@@ -216,7 +225,8 @@ void read_geometry(ByteReader& in, NavMeshInput& out, Quantiser& q) {
         corners += n;
     }
     const unsigned corner_width = in.u8("the corner width");
-    if (corner_width < 1 || corner_width > 4) fail(ErrorCode::Parse, in.context(), ": a corner width of ", corner_width, " bytes");
+    if (corner_width < 1 || corner_width > 4)
+        fail(ErrorCode::Parse, in.context(), ": a corner width of ", corner_width, " bytes");
     in.need(corners * corner_width, "the polygons' corners");
     out.indices.resize(corners);
     for (uint32_t& v : out.indices) v = static_cast<uint32_t>(in.little(corner_width, "a corner"));
@@ -236,18 +246,23 @@ void read_geometry(ByteReader& in, NavMeshInput& out, Quantiser& q) {
     for (uint32_t p = 0; p < polygons; ++p) {
         const uint32_t triangles = in.count("a polygon's detail triangle count", 3);
         if (triangles > kMaxDetailTriangles)
-            fail(ErrorCode::Parse, in.context(), ": polygon ", p, " has ", triangles, " detail triangles (at most ", kMaxDetailTriangles, ")");
+            fail(ErrorCode::Parse, in.context(), ": polygon ", p, " has ", triangles, " detail triangles (at most ",
+                 kMaxDetailTriangles, ")");
         const int64_t step = in.signed_varint("a polygon's first detail vertex");
-        if (step < -int64_t(detail_vertices) || step > int64_t(detail_vertices) || base + step < 0 || base + step > int64_t(detail_vertices))
-            fail(ErrorCode::Parse, in.context(), ": polygon ", p, "'s detail vertices start outside the ", detail_vertices, " there are");
+        if (step < -int64_t(detail_vertices) || step > int64_t(detail_vertices) || base + step < 0 ||
+            base + step > int64_t(detail_vertices))
+            fail(ErrorCode::Parse, in.context(), ": polygon ", p, "'s detail vertices start outside the ",
+                 detail_vertices, " there are");
         base += step;
         const unsigned width = in.u8("a detail corner width");
-        if (width < 1 || width > 4) fail(ErrorCode::Parse, in.context(), ": a detail corner width of ", width, " bytes");
+        if (width < 1 || width > 4)
+            fail(ErrorCode::Parse, in.context(), ": a detail corner width of ", width, " bytes");
         in.need(uint64_t(triangles) * 3 * width, "a polygon's detail triangles");
         for (uint32_t k = 0; k < 3 * triangles; ++k) {
             const int64_t v = base + int64_t(in.little(width, "a detail corner"));
             if (v < 0 || v >= int64_t(detail_vertices))
-                fail(ErrorCode::Parse, in.context(), ": polygon ", p, "'s detail triangles use vertex ", v, " of ", detail_vertices);
+                fail(ErrorCode::Parse, in.context(), ": polygon ", p, "'s detail triangles use vertex ", v, " of ",
+                     detail_vertices);
             out.detail_indices.push_back(static_cast<uint32_t>(v));
         }
         out.detail_starts.push_back(out.detail_starts.back() + triangles);
@@ -263,7 +278,8 @@ Vec3 read_point(ByteReader& in, GridPoint& at, const GridPoint& from, size_t lin
         at.units[axis] = from.units[axis] + offset;
         p[axis] = metres(at.units[axis]);
     }
-    if (!within_coordinate_limit(p)) fail(ErrorCode::Parse, in.context(), ": links[", link, "].", which, " is beyond the coordinate limit");
+    if (!within_coordinate_limit(p))
+        fail(ErrorCode::Parse, in.context(), ": links[", link, "].", which, " is beyond the coordinate limit");
     return p;
 }
 
@@ -275,7 +291,8 @@ void read_links(ByteReader& in, std::vector<Link>& out, const Quantiser& q) {
         Link& l = out[i];
         const uint64_t kind = in.varint("a link's kind");
         if (!(kind >= 1 && kind <= 3) && !(kind >= uint64_t(LinkKind::FirstPluginKind) && kind <= UINT32_MAX))
-            fail(ErrorCode::Parse, in.context(), ": links[", i, "].kind is ", kind, " (jump 1, drop 2, manual 3, or a plugin's >= 256)");
+            fail(ErrorCode::Parse, in.context(), ": links[", i, "].kind is ", kind,
+                 " (jump 1, drop 2, manual 3, or a plugin's >= 256)");
         l.kind = static_cast<LinkKind>(kind);
         const uint8_t flags = in.u8("a link's flags");
         l.bidirectional = flags & kBidirectional;
@@ -353,11 +370,12 @@ std::string made_for_json(const NavMeshFile& file) {
 
 uint32_t navmesh_file_checksum(const uint8_t* data, size_t size) {
     if (size <= kNavMeshFileHeaderBytes) return static_cast<uint32_t>(crc32_z(0L, Z_NULL, 0));
-    return static_cast<uint32_t>(crc32_z(crc32_z(0L, Z_NULL, 0), data + kNavMeshFileHeaderBytes, size - kNavMeshFileHeaderBytes));
+    return static_cast<uint32_t>(
+        crc32_z(crc32_z(0L, Z_NULL, 0), data + kNavMeshFileHeaderBytes, size - kNavMeshFileHeaderBytes));
 }
 
-std::vector<uint8_t> write_navmesh_file(const NavMesh& navmesh, const std::vector<Link>& links, const NavMeshProvenance& made_for,
-                                        bool rides_carrier) {
+std::vector<uint8_t> write_navmesh_file(const NavMesh& navmesh, const std::vector<Link>& links,
+                                        const NavMeshProvenance& made_for, bool rides_carrier) {
     const NavMeshInput input = input_of(navmesh);
     Quantiser q;
     ByteWriter made, geometry, link_section;
@@ -396,22 +414,27 @@ std::vector<uint8_t> write_navmesh_file(const NavMesh& navmesh, const std::vecto
 }
 
 std::string read_navmesh_file_bytes(const std::string& path) {
-    return read_file_bytes_up_to_declared(path, kNavMeshFileHeaderBytes, kNavMeshFileMaxBytes, [](std::string_view header) -> uint64_t {
-        if (header.size() < kNavMeshFileHeaderBytes || std::memcmp(header.data(), kMagic, sizeof(kMagic)) != 0) return 0;
-        ByteReader in(reinterpret_cast<const uint8_t*>(header.data()), header.size(), "navmesh file");
-        in.skip(sizeof(kMagic), "the magic bytes");
-        if (in.u32("the format version") != kNavMeshFileVersion) return 0;  // read_navmesh_file names it
-        in.skip(4, "the section count");
-        return in.u64("the file size");
-    }, "navmesh file");
+    return read_file_bytes_up_to_declared(
+        path, kNavMeshFileHeaderBytes, kNavMeshFileMaxBytes,
+        [](std::string_view header) -> uint64_t {
+            if (header.size() < kNavMeshFileHeaderBytes || std::memcmp(header.data(), kMagic, sizeof(kMagic)) != 0)
+                return 0;
+            ByteReader in(reinterpret_cast<const uint8_t*>(header.data()), header.size(), "navmesh file");
+            in.skip(sizeof(kMagic), "the magic bytes");
+            if (in.u32("the format version") != kNavMeshFileVersion) return 0;  // read_navmesh_file names it
+            in.skip(4, "the section count");
+            return in.u64("the file size");
+        },
+        "navmesh file");
 }
 
 NavMeshFile read_navmesh_file(const uint8_t* data, size_t size) {
     if (!data) size = 0;
     ByteReader header(data, size, "navmesh file");
     if (size < sizeof(kMagic) || std::memcmp(data, kMagic, sizeof(kMagic)) != 0)
-        fail(ErrorCode::VersionMismatch, "navmesh file: not a NavLink navmesh file (it does not start with the magic bytes "
-                                         "89 'NLNAV' 0D 0A)");
+        fail(ErrorCode::VersionMismatch,
+             "navmesh file: not a NavLink navmesh file (it does not start with the magic bytes "
+             "89 'NLNAV' 0D 0A)");
     header.skip(sizeof(kMagic), "the magic bytes");
     NavMeshFile out;
     out.version = header.u32("the format version");
@@ -423,8 +446,8 @@ NavMeshFile read_navmesh_file(const uint8_t* data, size_t size) {
     const uint32_t checksum = header.u32("the checksum");
     const uint32_t flags = header.u32("the flags");
     if (bytes != size)
-        fail(ErrorCode::Parse, "navmesh file: ", size < bytes ? "truncated" : "has extra bytes", ": its header says ", bytes,
-             " bytes, there are ", size);
+        fail(ErrorCode::Parse, "navmesh file: ", size < bytes ? "truncated" : "has extra bytes", ": its header says ",
+             bytes, " bytes, there are ", size);
     if (checksum != navmesh_file_checksum(data, size))
         fail(ErrorCode::Parse, "navmesh file: corrupted: the checksum of its contents does not match its header's");
 
@@ -462,11 +485,17 @@ NavMeshFile read_navmesh_file(const uint8_t* data, size_t size) {
         }
         if (*seen) fail(ErrorCode::Parse, "navmesh file: two ", tag, " sections");
         *seen = true;
-        if (in.remaining() != 0) fail(ErrorCode::Parse, in.context(), ": ", in.remaining(), " bytes left over after it");
+        if (in.remaining() != 0)
+            fail(ErrorCode::Parse, in.context(), ": ", in.remaining(), " bytes left over after it");
     }
-    if (header.remaining() != 0) fail(ErrorCode::Parse, "navmesh file: ", header.remaining(), " bytes after its last section");
+    if (header.remaining() != 0)
+        fail(ErrorCode::Parse, "navmesh file: ", header.remaining(), " bytes after its last section");
     if (!made || !geometry || !links)
-        fail(ErrorCode::Parse, "navmesh file: the ", !made ? "MADE" : !geometry ? "GEOM" : "LINK", " section is missing");
+        fail(ErrorCode::Parse, "navmesh file: the ",
+             !made       ? "MADE"
+             : !geometry ? "GEOM"
+                         : "LINK",
+             " section is missing");
     out.navmesh.weld_tolerance = 0.0f;
     out.quantum = std::ldexp(1.0f, kNavMeshGridExponent);
     return out;

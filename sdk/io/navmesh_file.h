@@ -39,13 +39,13 @@ struct NavMeshFile {
     NavMeshProvenance made_for;
     bool rides_carrier = false;  // the coordinates are in the space of the mesh it rode
     uint32_t version = 0;
-    float quantum = 0.0f;        // metres (2^-10)
-    std::string writer;          // the NavLink version that wrote it
+    float quantum = 0.0f;  // metres (2^-10)
+    std::string writer;    // the NavLink version that wrote it
 };
 
 // The file for `navmesh` and its `links` (none may be a cross link: InvalidArgument).
-std::vector<uint8_t> write_navmesh_file(const NavMesh& navmesh, const std::vector<Link>& links, const NavMeshProvenance& made_for,
-                                        bool rides_carrier);
+std::vector<uint8_t> write_navmesh_file(const NavMesh& navmesh, const std::vector<Link>& links,
+                                        const NavMeshProvenance& made_for, bool rides_carrier);
 
 // Reads a file written by write_navmesh_file, checking everything but what building it checks
 // (build_navmesh) and placing its links (place_saved_link). Throws VersionMismatch (not a navmesh

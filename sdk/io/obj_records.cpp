@@ -53,19 +53,24 @@ public:
         line_ = number;
         const auto tokens = tokens_of(line);
         if (tokens.empty()) return;
-        if (tokens[0] == "v") vertex(tokens);
-        else if (tokens[0] == "vt") ++count_[kTexture];
-        else if (tokens[0] == "vn") ++count_[kNormal];
-        else if (tokens[0] == "f") face(tokens);
-        else if (tokens[0] == "o" || tokens[0] == "g") group(tokens);
+        if (tokens[0] == "v")
+            vertex(tokens);
+        else if (tokens[0] == "vt")
+            ++count_[kTexture];
+        else if (tokens[0] == "vn")
+            ++count_[kNormal];
+        else if (tokens[0] == "f")
+            face(tokens);
+        else if (tokens[0] == "o" || tokens[0] == "g")
+            group(tokens);
     }
 
     std::string finish() {
         // Positive indices may point forward, to data listed later: checked once all of it is known.
         for (int kind = 0; kind < kKinds; ++kind) {
             if (largest_[kind].index > count_[kind])
-                fail(ErrorCode::Parse, name_, ":", largest_[kind].line, ": ", kKindNames[kind], " index ", largest_[kind].index,
-                     " is past the last one (", count_[kind], ")");
+                fail(ErrorCode::Parse, name_, ":", largest_[kind].line, ": ", kKindNames[kind], " index ",
+                     largest_[kind].index, " is past the last one (", count_[kind], ")");
         }
         return std::move(out_);
     }
@@ -103,7 +108,8 @@ private:
         std::string_view parts[kKinds];
         size_t count = 0;
         for (std::string_view rest = corner;; ++count) {
-            if (count == kKinds) fail(ErrorCode::Parse, name_, ":", line_, ": ", quoted_excerpt(corner), " is not a face corner");
+            if (count == kKinds)
+                fail(ErrorCode::Parse, name_, ":", line_, ": ", quoted_excerpt(corner), " is not a face corner");
             const size_t slash = rest.find('/');
             parts[count] = rest.substr(0, slash);
             if (slash == std::string_view::npos) break;
@@ -126,7 +132,8 @@ private:
         int64_t index = 0;
         const auto [at, ec] = std::from_chars(part.data(), part.data() + part.size(), index);
         if (ec != std::errc() || at != part.data() + part.size())
-            fail(ErrorCode::Parse, name_, ":", line_, ": ", quoted_excerpt(corner), " is not a ", kKindNames[kind], " index");
+            fail(ErrorCode::Parse, name_, ":", line_, ": ", quoted_excerpt(corner), " is not a ", kKindNames[kind],
+                 " index");
         if (index == 0 || index < -count_[kind] || index > std::numeric_limits<int32_t>::max())
             fail(ErrorCode::Parse, name_, ":", line_, ": ", kKindNames[kind], " index ", index, " is out of range");
         if (index > largest_[kind].index) largest_[kind] = Largest{index, line_};

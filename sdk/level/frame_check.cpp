@@ -42,8 +42,8 @@ TriangleMesh only(const TriangleMesh& mesh, const std::vector<uint32_t>& triangl
 
 }  // namespace
 
-FrameEstimate estimate_frame(const TriangleMesh& mesh, const std::vector<uint32_t>& sized, const std::vector<uint32_t>& floors,
-                             float max_slope_degrees, float height) {
+FrameEstimate estimate_frame(const TriangleMesh& mesh, const std::vector<uint32_t>& sized,
+                             const std::vector<uint32_t>& floors, float max_slope_degrees, float height) {
     FrameEstimate out;
     if (!floors.empty()) {
         const TriangleMesh y_up = only(mesh, floors, false), z_up = only(mesh, floors, true);
@@ -60,7 +60,9 @@ FrameEstimate estimate_frame(const TriangleMesh& mesh, const std::vector<uint32_
     return out;
 }
 
-bool looks_larger_than_metres(const FrameEstimate& estimate, float height) { return estimate.wall_height > 25.0f * height; }
+bool looks_larger_than_metres(const FrameEstimate& estimate, float height) {
+    return estimate.wall_height > 25.0f * height;
+}
 
 bool looks_smaller_than_metres(const FrameEstimate& estimate, float height) {
     return estimate.across > 0.0f && estimate.across < 2.0f * height;

@@ -26,8 +26,8 @@ struct FrameEstimate {
 // Walls and width over `sized` (indices into mesh.triangles; obstacles included: they are walls
 // too), floors over `floors` (walkable triangles only). When the level looks z up, its walls and
 // width are measured with z up too.
-FrameEstimate estimate_frame(const TriangleMesh& mesh, const std::vector<uint32_t>& sized, const std::vector<uint32_t>& floors,
-                             float max_slope_degrees, float height);
+FrameEstimate estimate_frame(const TriangleMesh& mesh, const std::vector<uint32_t>& sized,
+                             const std::vector<uint32_t>& floors, float max_slope_degrees, float height);
 
 // Walls more than 25 bodies tall: a tall building's walls in metres are a few storeys a triangle,
 // centimetres make every wall a hundred bodies tall.

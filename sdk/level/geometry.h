@@ -37,7 +37,9 @@ struct BuildTriangles {
     std::vector<MeshStart> mesh_starts;
 
     // One past mesh_starts[k]'s last triangle.
-    size_t mesh_end(size_t k) const { return k + 1 < mesh_starts.size() ? mesh_starts[k + 1].first : mesh.triangles.size(); }
+    size_t mesh_end(size_t k) const {
+        return k + 1 < mesh_starts.size() ? mesh_starts[k + 1].first : mesh.triangles.size();
+    }
 };
 
 // Vertex `index` of a packed x y z float array (Embree's vertex buffers).

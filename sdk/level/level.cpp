@@ -25,10 +25,12 @@ Aabb bounds_of(const TriangleMesh& mesh, const Transform& t) {
 TriangleMesh in_navlink_frame(const TriangleMesh& given, const MeshFrame& frame) {
     if (!(frame.metres_per_unit == 0.0f ||
           (frame.metres_per_unit >= kLeastMetresPerUnit && frame.metres_per_unit <= kMostMetresPerUnit)))
-        fail_field(ErrorCode::InvalidArgument, "metres_per_unit is ", frame.metres_per_unit, " (0 for metres not said, or ",
-                   kLeastMetresPerUnit, " to ", kMostMetresPerUnit, ": 0.01 for centimetres, 0.0254 for inches)");
+        fail_field(ErrorCode::InvalidArgument, "metres_per_unit is ", frame.metres_per_unit,
+                   " (0 for metres not said, or ", kLeastMetresPerUnit, " to ", kMostMetresPerUnit,
+                   ": 0.01 for centimetres, 0.0254 for inches)");
     if (frame.up != UpAxis::NotSaid && frame.up != UpAxis::Y && frame.up != UpAxis::Z)
-        fail_field(ErrorCode::InvalidArgument, "up_axis is ", uint32_t(frame.up), " (NL_UP_AXIS_NOT_SAID, NL_UP_AXIS_Y or NL_UP_AXIS_Z)");
+        fail_field(ErrorCode::InvalidArgument, "up_axis is ", uint32_t(frame.up),
+                   " (NL_UP_AXIS_NOT_SAID, NL_UP_AXIS_Y or NL_UP_AXIS_Z)");
     if (frame.identity()) return {};
     const float scale = frame.metres_per_unit == 0.0f ? 1.0f : frame.metres_per_unit;
     TriangleMesh out;
@@ -100,8 +102,10 @@ void Level::commit(RTCScene scene, bool exclusive, const char* what) const {
         rtcCommitScene(scene);
         error = rtcGetDeviceError(device_);
     };
-    if (exclusive) tasks_.execute_exclusive(build);
-    else tasks_.execute(build);
+    if (exclusive)
+        tasks_.execute_exclusive(build);
+    else
+        tasks_.execute(build);
     check_embree_error(error, what);
 }
 
@@ -151,8 +155,10 @@ Handle Level::add_mesh(const TriangleMesh& given, const Transform& transform, ui
     }
     const auto lock = lock_exclusive();
     try {
-        if (flags & kMeshMovable) attach_movable(mesh);
-        else upload_static(mesh);
+        if (flags & kMeshMovable)
+            attach_movable(mesh);
+        else
+            upload_static(mesh);
         check_embree("registering a mesh");
     } catch (...) {
         detach(mesh);
@@ -160,8 +166,10 @@ Handle Level::add_mesh(const TriangleMesh& given, const Transform& transform, ui
     }
     const Handle h = meshes_.insert(std::move(mesh));
     Mesh& stored = *meshes_.find(h);
-    if (stored.flags & kMeshMovable) store_owner(instance_owner_, stored.instance_id, InstanceOwner{false, h});
-    else store_owner(static_geometry_owner_, stored.geometry_id, h);
+    if (stored.flags & kMeshMovable)
+        store_owner(instance_owner_, stored.instance_id, InstanceOwner{false, h});
+    else
+        store_owner(static_geometry_owner_, stored.geometry_id, h);
     return h;
 }
 
@@ -172,10 +180,10 @@ void Level::upload_static(Mesh& mesh) {
     RTCGeometry g = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
     if (!g) check_embree("creating a triangle geometry");
     mesh.geometry = g;
-    auto* vb = static_cast<float*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
-                                                           3 * sizeof(float), vertex_count));
-    auto* ib = static_cast<unsigned*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
-                                                              3 * sizeof(unsigned), triangle_count));
+    auto* vb = static_cast<float*>(
+        rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), vertex_count));
+    auto* ib = static_cast<unsigned*>(
+        rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), triangle_count));
     if (!vb || !ib) check_embree("allocating mesh buffers");
     for (size_t i = 0; i < vertex_count; ++i) {
         Eigen::Map<Vec3>(vb + 3 * i) = mesh.transform * mesh.object.vertices[i];
@@ -194,10 +202,10 @@ void Level::prepare_movable(Mesh& mesh) {
     mesh.geometry = g;
     const auto vertex_count = mesh.object.vertices.size();
     const auto triangle_count = mesh.object.triangles.size();
-    auto* vb = static_cast<float*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
-                                                           3 * sizeof(float), vertex_count));
-    auto* ib = static_cast<unsigned*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
-                                                              3 * sizeof(unsigned), triangle_count));
+    auto* vb = static_cast<float*>(
+        rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), vertex_count));
+    auto* ib = static_cast<unsigned*>(
+        rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), triangle_count));
     if (!vb || !ib) check_embree("allocating mesh buffers");
     std::copy_n(mesh.object.vertices.front().data(), 3 * vertex_count, vb);
     std::copy_n(mesh.object.triangles.front().data(), 3 * triangle_count, ib);
@@ -303,7 +311,8 @@ std::vector<MovableMesh> Level::movable_meshes() const {
         float reach = 0.0f;  // the farthest corner of its object bounds, mapped to the world
         for (float x : {b.min.x(), b.max.x()})
             for (float y : {b.min.y(), b.max.y()})
-                for (float z : {b.min.z(), b.max.z()}) reach = std::max(reach, (m.transform.linear() * Vec3(x, y, z)).norm());
+                for (float z : {b.min.z(), b.max.z()})
+                    reach = std::max(reach, (m.transform.linear() * Vec3(x, y, z)).norm());
         out.push_back(MovableMesh{h, m.transform, reach});
     });
     return out;
@@ -327,12 +336,15 @@ void append_in_world(const TriangleMesh& object, const Transform& transform, Tri
     const bool mirrored = transform.linear().determinant() < 0.0f;
     for (const Vec3& v : object.vertices) out.vertices.push_back(transform * v);
     for (const Triangle& t : object.triangles) {
-        if (mirrored) out.triangles.push_back({t[0] + base, t[2] + base, t[1] + base});
-        else out.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
+        if (mirrored)
+            out.triangles.push_back({t[0] + base, t[2] + base, t[1] + base});
+        else
+            out.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
     }
 }
 
-void append_for_build(Handle mesh, const TriangleMesh& object, const Transform& transform, uint8_t area, BuildTriangles& out) {
+void append_for_build(Handle mesh, const TriangleMesh& object, const Transform& transform, uint8_t area,
+                      BuildTriangles& out) {
     out.mesh_starts.push_back({mesh, out.mesh.triangles.size()});
     append_in_world(object, transform, out.mesh);
     out.areas.resize(out.mesh.triangles.size(), area);
@@ -356,8 +368,9 @@ BuildTriangles Level::triangles_to_build(Handle carrier) const {
         const Mesh* m = meshes_.find(carrier);
         if (!m) fail_stale("mesh", carrier);
         if (!(m->flags & kMeshMovable))
-            fail(ErrorCode::InvalidArgument, "the carrier mesh is not movable (NL_MESH_MOVABLE): a static mesh's floor is "
-                                             "part of the level's navmesh");
+            fail(ErrorCode::InvalidArgument,
+                 "the carrier mesh is not movable (NL_MESH_MOVABLE): a static mesh's floor is "
+                 "part of the level's navmesh");
         if (m->flags & kMeshNotInNavMesh)
             fail(ErrorCode::InvalidArgument, "the carrier mesh is left out of navmesh builds (NL_MESH_NOT_IN_NAVMESH)");
         append_for_build(carrier, m->object, Transform::Identity(), build_area(m->flags, m->area), out);
@@ -378,9 +391,11 @@ void Level::static_triangles(const RayHit* hits, uint32_t count, std::optional<s
             const Mesh* mesh = hits[i].hit ? meshes_.find(hits[i].mesh) : nullptr;
             if (!mesh || mesh->own_scene || hits[i].primitive >= mesh->object.triangles.size()) continue;
             // Embree's own buffer: the world-space corners it intersects.
-            const auto* vertices = static_cast<const float*>(rtcGetGeometryBufferData(mesh->geometry, RTC_BUFFER_TYPE_VERTEX, 0));
+            const auto* vertices =
+                static_cast<const float*>(rtcGetGeometryBufferData(mesh->geometry, RTC_BUFFER_TYPE_VERTEX, 0));
             const Triangle& t = mesh->object.triangles[hits[i].primitive];
-            out[i] = std::array<Vec3, 3>{vertex_at(vertices, t[0]), vertex_at(vertices, t[1]), vertex_at(vertices, t[2])};
+            out[i] =
+                std::array<Vec3, 3>{vertex_at(vertices, t[0]), vertex_at(vertices, t[1]), vertex_at(vertices, t[2])};
         }
     });
 }
@@ -389,7 +404,8 @@ namespace {
 
 void refuse_inside_task() {
     if (TaskSystem::inside_task())
-        fail(ErrorCode::Internal, "the level was called from inside a parallel task (it must be called by the calling thread)");
+        fail(ErrorCode::Internal,
+             "the level was called from inside a parallel task (it must be called by the calling thread)");
 }
 
 }  // namespace

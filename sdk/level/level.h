@@ -184,8 +184,8 @@ public:
     // The same, the stretches in groups: each group's box must hold its stretches' boxes. Answers
     // what bodies_clear answers, with one gathering of triangles per group; returns how many
     // stretches met a triangle in their box (and were tested exactly).
-    uint64_t bodies_clear(const BodyGroup* groups, uint32_t group_count, const BodyStretch* stretches, const float* radii,
-                          uint32_t radius_count, uint8_t* out_cleared) const;
+    uint64_t bodies_clear(const BodyGroup* groups, uint32_t group_count, const BodyStretch* stretches,
+                          const float* radii, uint32_t radius_count, uint8_t* out_cleared) const;
 
 private:
     struct Mesh {
@@ -200,10 +200,10 @@ private:
         Eigen::Matrix3f normal_to_world = Eigen::Matrix3f::Identity();  // movable meshes only
         Aabb object_bounds;
         Aabb world_bounds;
-        RTCGeometry geometry = nullptr;     // triangles, in static_scene_ or own_scene
+        RTCGeometry geometry = nullptr;  // triangles, in static_scene_ or own_scene
         unsigned geometry_id = RTC_INVALID_GEOMETRY_ID;
-        RTCScene own_scene = nullptr;       // movable only
-        RTCGeometry instance = nullptr;     // movable only
+        RTCScene own_scene = nullptr;    // movable only
+        RTCGeometry instance = nullptr;  // movable only
         unsigned instance_id = RTC_INVALID_GEOMETRY_ID;
     };
     struct InstanceOwner {

@@ -53,8 +53,8 @@ void Level::boxes_empty(const OrientedBox* boxes, uint32_t count, uint8_t* out_e
     tasks_.parallel_for(count, 64, [&](uint32_t begin, uint32_t end) {
         for (uint32_t i = begin; i < end; ++i) {
             const OrientedBox& box = boxes[i];
-            const bool touched =
-                near.visit_near(box, [&](const Vec3& a, const Vec3& b, const Vec3& c) { return triangle_overlaps_box(a, b, c, box); });
+            const bool touched = near.visit_near(
+                box, [&](const Vec3& a, const Vec3& b, const Vec3& c) { return triangle_overlaps_box(a, b, c, box); });
             out_empty[i] = touched ? 0 : 1;
         }
     });
@@ -67,8 +67,8 @@ void Level::bodies_clear(const BodyStretch* stretches, uint32_t count, const flo
     bodies_clear(singles.data(), count, stretches, radii, radius_count, out_cleared);
 }
 
-uint64_t Level::bodies_clear(const BodyGroup* groups, uint32_t group_count, const BodyStretch* stretches, const float* radii,
-                             uint32_t radius_count, uint8_t* out_cleared) const {
+uint64_t Level::bodies_clear(const BodyGroup* groups, uint32_t group_count, const BodyStretch* stretches,
+                             const float* radii, uint32_t radius_count, uint8_t* out_cleared) const {
     const auto lock = lock_committed();
     const NearTriangles near = near_triangles();
     std::atomic<uint64_t> tested{0};
@@ -82,8 +82,10 @@ uint64_t Level::bodies_clear(const BodyGroup* groups, uint32_t group_count, cons
                 if (triangle_overlaps_box(a, b, c, group.bounds)) inside.push_back({a, b, c});
                 return false;
             };
-            if (group.placed_count == 0) near.visit_near(group.bounds, gather);
-            else near.visit_near(group.bounds, near.placed(group.placed, group.placed_count), gather);
+            if (group.placed_count == 0)
+                near.visit_near(group.bounds, gather);
+            else
+                near.visit_near(group.bounds, near.placed(group.placed, group.placed_count), gather);
             for (uint32_t i = group.first; i < group.first + group.count; ++i) {
                 const BodyStretch& s = stretches[i];
                 const double margin = body_margin(s.body.from.cwiseAbs().cwiseMax(s.body.to.cwiseAbs()));

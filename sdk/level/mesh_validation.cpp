@@ -30,7 +30,7 @@ ValidatedTriangles validate_mesh(const TriangleMesh& mesh) {
                 fail_field(ErrorCode::InvalidArgument, "vertices[", i, "].", axis[k], " is not finite (", value, ")");
             if (std::fabs(value) > kCoordinateLimit)
                 fail_field(ErrorCode::InvalidArgument, "vertices[", i, "].", axis[k], " = ", value,
-                     " is beyond the coordinate limit of +-", kCoordinateLimit, " m");
+                           " is beyond the coordinate limit of +-", kCoordinateLimit, " m");
         }
     }
 
@@ -42,7 +42,7 @@ ValidatedTriangles validate_mesh(const TriangleMesh& mesh) {
         for (int k = 0; k < 3; ++k) {
             if (tri[k] >= vertex_count)
                 fail_field(ErrorCode::InvalidArgument, "indices[", t * 3 + k, "] = ", tri[k],
-                     " is out of range (vertex_count = ", vertex_count, ")");
+                           " is out of range (vertex_count = ", vertex_count, ")");
         }
         const bool repeated = tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2];
         if (repeated || is_degenerate(mesh.vertices[tri[0]], mesh.vertices[tri[1]], mesh.vertices[tri[2]])) {
@@ -71,8 +71,7 @@ Transform validate_transform(const Eigen::Matrix4f& m, const char* name) {
     const Eigen::Matrix3f linear = m.topLeftCorner<3, 3>();
     const Eigen::Vector3f lengths = linear.colwise().norm();
     const float shape = lengths.minCoeff() > 0.0f ? (linear * lengths.cwiseInverse().asDiagonal()).determinant() : 0.0f;
-    if (!(std::fabs(shape) > 1e-6f))
-        fail_field(ErrorCode::InvalidArgument, name, " is singular (it flattens space)");
+    if (!(std::fabs(shape) > 1e-6f)) fail_field(ErrorCode::InvalidArgument, name, " is singular (it flattens space)");
     Transform t;
     t.matrix() = m;
     return t;

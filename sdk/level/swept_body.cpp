@@ -76,9 +76,9 @@ Vec3d closest_on_triangle(Simplex& s, int ia, int ib, int ic) {
     if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0) {
         const double v = d1 / (d1 - d3);
         {
-        keep(s, {ia, ib});
-        return a + v * ab;
-    }
+            keep(s, {ia, ib});
+            return a + v * ab;
+        }
     }
     const double d5 = -ab.dot(c), d6 = -ac.dot(c);
     if (d6 >= 0.0 && d5 <= d6) {
@@ -89,17 +89,17 @@ Vec3d closest_on_triangle(Simplex& s, int ia, int ib, int ic) {
     if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0) {
         const double w = d2 / (d2 - d6);
         {
-        keep(s, {ia, ic});
-        return a + w * ac;
-    }
+            keep(s, {ia, ic});
+            return a + w * ac;
+        }
     }
     const double va = d3 * d6 - d5 * d4;
     if (va <= 0.0 && d4 - d3 >= 0.0 && d5 - d6 >= 0.0) {
         const double w = (d4 - d3) / ((d4 - d3) + (d5 - d6));
         {
-        keep(s, {ib, ic});
-        return b + w * (c - b);
-    }
+            keep(s, {ib, ic});
+            return b + w * (c - b);
+        }
     }
     const double sum = va + vb + vc;
     if (!(std::fabs(sum) > 0.0)) {

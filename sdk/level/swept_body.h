@@ -22,8 +22,8 @@ namespace nl {
 struct SweptCylinder {
     Vec3 from = Vec3::Zero();  // the path point (the feet) at the stretch's start and end
     Vec3 to = Vec3::Zero();
-    float radius = 0.0f;       // >= 0
-    float low = 0.0f;          // the body's bottom and top above the path point (low <= high)
+    float radius = 0.0f;  // >= 0
+    float low = 0.0f;     // the body's bottom and top above the path point (low <= high)
     float high = 0.0f;
 };
 

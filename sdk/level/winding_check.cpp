@@ -19,7 +19,8 @@ struct Crossing {
 
 }  // namespace
 
-WindingEstimate estimate_winding(const TriangleMesh& mesh, size_t first, size_t count, float max_slope_degrees, float height) {
+WindingEstimate estimate_winding(const TriangleMesh& mesh, size_t first, size_t count, float max_slope_degrees,
+                                 float height) {
     WindingEstimate out;
     if (count == 0) return out;
     float min_x = INFINITY, min_z = INFINITY, max_x = -INFINITY, max_z = -INFINITY;
@@ -29,8 +30,10 @@ WindingEstimate estimate_winding(const TriangleMesh& mesh, size_t first, size_t 
             min_x = std::min(min_x, p.x()), max_x = std::max(max_x, p.x());
             min_z = std::min(min_z, p.z()), max_z = std::max(max_z, p.z());
         }
-    const float spacing = std::max(kLeastColumnSpacing, std::max(max_x - min_x, max_z - min_z) / float(kWindingColumns));
-    const uint32_t nx = uint32_t(std::floor((max_x - min_x) / spacing)) + 1, nz = uint32_t(std::floor((max_z - min_z) / spacing)) + 1;
+    const float spacing =
+        std::max(kLeastColumnSpacing, std::max(max_x - min_x, max_z - min_z) / float(kWindingColumns));
+    const uint32_t nx = uint32_t(std::floor((max_x - min_x) / spacing)) + 1,
+                   nz = uint32_t(std::floor((max_z - min_z) / spacing)) + 1;
     std::vector<std::vector<Crossing>> columns(size_t(nx) * nz);
     const float walkable = walkable_normal_y(max_slope_degrees);
     for (size_t t = first; t < first + count; ++t) {
@@ -85,7 +88,8 @@ WindingEstimate estimate_winding(const TriangleMesh& mesh, size_t first, size_t 
 float walkable_normal_y(float max_slope_degrees) { return std::cos(max_slope_degrees * kDegrees); }
 
 bool looks_turned_over(const WindingEstimate& estimate) {
-    return estimate.floor_turned_over > 2.0f * estimate.floor_as_given && estimate.floor_turned_over > estimate.floor_as_given + 1.0f;
+    return estimate.floor_turned_over > 2.0f * estimate.floor_as_given &&
+           estimate.floor_turned_over > estimate.floor_as_given + 1.0f;
 }
 
 }  // namespace nl

@@ -23,7 +23,8 @@ struct WindingEstimate {
 // walks slopes up to `max_slope_degrees`. Columns are at most kWindingColumns a side over the run's
 // extent, and at least 10 cm apart.
 constexpr uint32_t kWindingColumns = 128;
-WindingEstimate estimate_winding(const TriangleMesh& mesh, size_t first, size_t count, float max_slope_degrees, float height);
+WindingEstimate estimate_winding(const TriangleMesh& mesh, size_t first, size_t count, float max_slope_degrees,
+                                 float height);
 
 // The least y of a unit normal facing up within `max_slope_degrees`: a floor's.
 float walkable_normal_y(float max_slope_degrees);

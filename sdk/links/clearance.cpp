@@ -36,7 +36,9 @@ SweptCylinder body_along(const SweepPiece& piece, const Body& body, float radius
 }
 
 // Twice the margin the exact test keeps: a triangle outside the box is proven apart.
-float box_pad(const SweepPiece& piece) { return 2.0f * body_margin(piece.from.cwiseAbs().cwiseMax(piece.to.cwiseAbs())); }
+float box_pad(const SweepPiece& piece) {
+    return 2.0f * body_margin(piece.from.cwiseAbs().cwiseMax(piece.to.cwiseAbs()));
+}
 
 }  // namespace
 
@@ -50,8 +52,10 @@ std::vector<PieceRun> straight_runs(const std::vector<SweepPiece>& pieces) {
     std::vector<PieceRun> runs;
     uint32_t first = 0;
     for (uint32_t k = 1; k <= pieces.size(); ++k) {
-        const bool ends = k == pieces.size() ||
-                          (pieces[k - 1].to - pieces[k - 1].from).normalized().dot((pieces[k].to - pieces[k].from).normalized()) < kMostTurn;
+        const bool ends =
+            k == pieces.size() ||
+            (pieces[k - 1].to - pieces[k - 1].from).normalized().dot((pieces[k].to - pieces[k].from).normalized()) <
+                kMostTurn;
         if (!ends) continue;
         if (k - first >= 2) runs.push_back(PieceRun{first, k});
         first = k;
@@ -67,7 +71,8 @@ OrientedBox run_box(const std::vector<SweepPiece>& pieces, PieceRun run, const B
         const OrientedBox b = stretch_of(pieces[k], body, widest).bounds;
         for (float x : {-1.0f, 1.0f})
             for (float y : {-1.0f, 1.0f})
-                for (float z : {-1.0f, 1.0f}) corners.push_back(b.center + b.axes * b.half_extents.cwiseProduct(Vec3(x, y, z)));
+                for (float z : {-1.0f, 1.0f})
+                    corners.push_back(b.center + b.axes * b.half_extents.cwiseProduct(Vec3(x, y, z)));
         pad = std::max(pad, box_pad(pieces[k]));
     }
     Vec3 along = pieces[run.last - 1].to - pieces[run.first].from;

@@ -63,8 +63,10 @@ public:
         std::vector<uint32_t> off_rim;  // positions in `probed` of the probes cast
         for (uint32_t k = 0; k < probed.size(); ++k) {
             LinkGeneration::DropProbe& d = next.drops[probed[k]];
-            if (d.rim >= 0.0f) off_rim.push_back(k);
-            else d.outcome = 1;
+            if (d.rim >= 0.0f)
+                off_rim.push_back(k);
+            else
+                d.outcome = 1;
         }
         std::vector<Ray> probes(off_rim.size());
         tasks_.parallel_for(static_cast<uint32_t>(off_rim.size()), 256, [&](uint32_t begin, uint32_t end) {
@@ -127,7 +129,8 @@ public:
             });
             if (round.empty()) break;
             std::vector<PathPoints> paths;
-            for (uint32_t k : round) paths.push_back(PathPoints{next.drops[k].fall.data(), next.drops[k].fall.size(), 0.0f});
+            for (uint32_t k : round)
+                paths.push_back(PathPoints{next.drops[k].fall.data(), next.drops[k].fall.size(), 0.0f});
             const std::vector<LinkGeneration::Sweep> swept = sweep(paths);
             for (size_t n = 0; n < round.size(); ++n) next.drops[round[n]].sweep = swept[n];
         }
@@ -158,7 +161,9 @@ public:
             landed.clear();
             for (size_t k = first; k < last; ++k)
                 if (c.drops[k].outcome == 0) landed.push_back(static_cast<uint32_t>(k));
-            auto turn = [&](uint32_t k) { return std::fabs(settings_.drop_angles[static_cast<uint32_t>(c.drops[k].key)]); };
+            auto turn = [&](uint32_t k) {
+                return std::fabs(settings_.drop_angles[static_cast<uint32_t>(c.drops[k].key)]);
+            };
             std::stable_sort(landed.begin(), landed.end(), [&](uint32_t x, uint32_t y) { return turn(x) < turn(y); });
             ways.clear();
             for (uint32_t k : landed) {
@@ -168,8 +173,10 @@ public:
                     return walk_.surface(a.end_polygon) == walk_.surface(b.end_polygon) &&
                            std::fabs(a.end.y() - b.end.y()) <= mesh_.agent().max_climb;
                 });
-                if (same != ways.end()) same->push_back(k);
-                else ways.push_back({k});
+                if (same != ways.end())
+                    same->push_back(k);
+                else
+                    ways.push_back({k});
             }
             for (const auto& way : ways) each(way);
             first = last;
@@ -194,8 +201,8 @@ public:
 
     // What a probe that came down on the navmesh found, floor to floor: a landing too shallow (a
     // step, walked) or too deep, or a drop link with its fall (out over the rim, across, down).
-    void settle(const LinkGeneration::Cache& c, LinkGeneration::DropProbe& d, const Vec3& heading, const NavPoint& landing,
-                const Ray& floor_ray, const RayHit& floor) const {
+    void settle(const LinkGeneration::Cache& c, LinkGeneration::DropProbe& d, const Vec3& heading,
+                const NavPoint& landing, const Ray& floor_ray, const RayHit& floor) const {
         const auto i = static_cast<uint32_t>(d.key >> 32);
         d.bounds.grow(floor_ray.origin);
         d.bounds.grow(floor_ray.origin + floor_ray.direction * floor_ray.max_distance);
@@ -232,17 +239,23 @@ public:
     // probe. The ways' other probes are duplicates, unless blocked.
     std::vector<Link> one_drop_per_way_down(const LinkGeneration::Cache& c) {
         for (const LinkGeneration::DropProbe& d : c.drops) {
-            if (d.outcome == 1) ++report_.rejected_no_landing;
-            else if (d.outcome == 2) ++report_.rejected_too_shallow;
-            else if (d.outcome == 3) ++report_.rejected_too_deep;
+            if (d.outcome == 1)
+                ++report_.rejected_no_landing;
+            else if (d.outcome == 2)
+                ++report_.rejected_too_shallow;
+            else if (d.outcome == 3)
+                ++report_.rejected_too_deep;
         }
         std::vector<uint32_t> kept;
         for_each_way_down(c, [&](const std::vector<uint32_t>& way) {
             const uint32_t* keep = kept_probe(c, way);
             for (const uint32_t& k : way) {
-                if (&k == keep) kept.push_back(k);
-                else if (c.drops[k].sweep.swept && !c.drops[k].sweep.clear) ++report_.rejected_clearance;
-                else ++report_.rejected_duplicate;
+                if (&k == keep)
+                    kept.push_back(k);
+                else if (c.drops[k].sweep.swept && !c.drops[k].sweep.clear)
+                    ++report_.rejected_clearance;
+                else
+                    ++report_.rejected_duplicate;
             }
         });
         std::sort(kept.begin(), kept.end());
@@ -264,6 +277,8 @@ public:
 
 void find_drops(PassInputs& in, LinkGeneration::Cache& next) { DropFinding(in).run(next); }
 
-std::vector<Link> one_drop_per_way_down(PassInputs& in, const LinkGeneration::Cache& c) { return DropFinding(in).one_drop_per_way_down(c); }
+std::vector<Link> one_drop_per_way_down(PassInputs& in, const LinkGeneration::Cache& c) {
+    return DropFinding(in).one_drop_per_way_down(c);
+}
 
 }  // namespace nl::generation

@@ -32,7 +32,8 @@ EdgeSampling sample_edges(const NavMesh& navmesh, const LinkSettings& s) {
     // Counted before anything is allocated: a huge navmesh with a fine spacing is refused, not a
     // generation that runs out of memory or overflows its counts.
     double planned = 0.0;
-    for (const BoundaryEdge& e : edges) planned += std::max(1.0, std::round(double((e.end - e.start).norm()) / s.sample_spacing));
+    for (const BoundaryEdge& e : edges)
+        planned += std::max(1.0, std::round(double((e.end - e.start).norm()) / s.sample_spacing));
     if (planned > kMaxEdgeSamples)
         fail(ErrorCode::InvalidArgument, "sample_spacing ", s.sample_spacing, " m would give ", planned,
              " take-off samples along this navmesh's boundary (at most ", kMaxEdgeSamples, "): raise it");

@@ -19,30 +19,30 @@ namespace nl {
 
 // Answers a level designer's "why is there no link here?": what each stage saw and refused.
 struct LinkGenerationReport {
-    uint32_t edges = 0;              // boundary edges of the navmesh
-    uint32_t groups = 0;             // groups of short edges
-    uint32_t samples = 0;            // take-off samples on edges
-    uint32_t takeoff_points = 0;     // samples that really hang over a drop or gap
-    uint32_t jump_candidates = 0;    // edge pairs within reach, tested further
-    uint32_t drop_candidates = 0;    // landings found below take-off points, tested further
+    uint32_t edges = 0;            // boundary edges of the navmesh
+    uint32_t groups = 0;           // groups of short edges
+    uint32_t samples = 0;          // take-off samples on edges
+    uint32_t takeoff_points = 0;   // samples that really hang over a drop or gap
+    uint32_t jump_candidates = 0;  // edge pairs within reach, tested further
+    uint32_t drop_candidates = 0;  // landings found below take-off points, tested further
     uint32_t jump_links = 0;
     uint32_t drop_links = 0;
     uint32_t plugin_links = 0;  // filled by the caller that runs link-kind plugins
     // Rejections, by reason.
-    uint32_t rejected_wall = 0;          // something solid between the edge and the rim
-    uint32_t rejected_not_ledge = 0;     // walkable ground a step below the take-off point
-    uint32_t rejected_distance = 0;      // a jump's gap too wide or too narrow
-    uint32_t rejected_rise = 0;          // a jump higher than max_jump_up
-    uint32_t rejected_angle = 0;         // not facing the other edge, or too steep
-    uint32_t rejected_no_landing = 0;    // no navmesh where the agent would land
-    uint32_t rejected_clearance = 0;     // the agent's body would touch geometry on the way
-    uint32_t rejected_duplicate = 0;     // the same traversal as a link already kept
-    uint32_t rejected_walkable = 0;      // a jump whose ends are about as near on foot
-    uint32_t rejected_too_shallow = 0;   // a drop no deeper than max_climb, floor to floor (walked)
-    uint32_t rejected_too_deep = 0;      // a drop deeper than max_drop_distance, floor to floor
-    uint64_t rays_cast = 0;              // rays and occlusion segments sent to Embree
-    uint64_t box_queries = 0;            // boxes whose triangles the level gathered for the exact body tests
-    uint64_t body_tests = 0;             // sweep pieces tested exactly against the triangles near them
+    uint32_t rejected_wall = 0;         // something solid between the edge and the rim
+    uint32_t rejected_not_ledge = 0;    // walkable ground a step below the take-off point
+    uint32_t rejected_distance = 0;     // a jump's gap too wide or too narrow
+    uint32_t rejected_rise = 0;         // a jump higher than max_jump_up
+    uint32_t rejected_angle = 0;        // not facing the other edge, or too steep
+    uint32_t rejected_no_landing = 0;   // no navmesh where the agent would land
+    uint32_t rejected_clearance = 0;    // the agent's body would touch geometry on the way
+    uint32_t rejected_duplicate = 0;    // the same traversal as a link already kept
+    uint32_t rejected_walkable = 0;     // a jump whose ends are about as near on foot
+    uint32_t rejected_too_shallow = 0;  // a drop no deeper than max_climb, floor to floor (walked)
+    uint32_t rejected_too_deep = 0;     // a drop deeper than max_drop_distance, floor to floor
+    uint64_t rays_cast = 0;             // rays and occlusion segments sent to Embree
+    uint64_t box_queries = 0;           // boxes whose triangles the level gathered for the exact body tests
+    uint64_t body_tests = 0;            // sweep pieces tested exactly against the triangles near them
     double milliseconds_edges = 0, milliseconds_takeoff = 0, milliseconds_jumps = 0, milliseconds_drops = 0,
            milliseconds_merge = 0, milliseconds_total = 0;
 };
@@ -62,7 +62,8 @@ enum class GenerationMethod { Indexed, BruteForce };
 // false cancels the generation (generate_links then throws Cancelled).
 using GenerationProgress = FunctionRef<bool(float fraction, const char* stage)>;
 
-std::vector<Link> generate_links(const NavMesh& navmesh, const Level& level, TaskSystem& tasks, const LinkSettings& settings,
-                                 GenerationMethod method, LinkGenerationReport& report, GenerationProgress progress);
+std::vector<Link> generate_links(const NavMesh& navmesh, const Level& level, TaskSystem& tasks,
+                                 const LinkSettings& settings, GenerationMethod method, LinkGenerationReport& report,
+                                 GenerationProgress progress);
 
 }  // namespace nl

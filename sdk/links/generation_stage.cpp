@@ -8,11 +8,21 @@
 
 namespace nl::generation {
 
-PassInputs::PassInputs(const NavMesh& navmesh, const EdgeSampling& sampling, const LinkSettings& settings, GenerationMethod method,
-                       const LinkGeneration::Cache& old, const Aabb* box, const Level& level, TaskSystem& tasks,
-                       LinkGenerationReport& report, GenerationProgress progress)
-    : navmesh(navmesh), samples(sampling.samples), settings(settings), method(method), old(old), box(box), level(level), tasks(tasks),
-      report(report), progress(progress), body{navmesh.agent().radius, navmesh.agent().height}, walk(navmesh) {
+PassInputs::PassInputs(const NavMesh& navmesh, const EdgeSampling& sampling, const LinkSettings& settings,
+                       GenerationMethod method, const LinkGeneration::Cache& old, const Aabb* box, const Level& level,
+                       TaskSystem& tasks, LinkGenerationReport& report, GenerationProgress progress)
+    : navmesh(navmesh),
+      samples(sampling.samples),
+      settings(settings),
+      method(method),
+      old(old),
+      box(box),
+      level(level),
+      tasks(tasks),
+      report(report),
+      progress(progress),
+      body{navmesh.agent().radius, navmesh.agent().height},
+      walk(navmesh) {
     // Probes start above the floor by at most half the body (a low ceiling over the edge is not
     // ground) and count as ground anything within a walkable step below it.
     rim_probing.lift = std::min(kProbeLift, 0.5f * body.height);
@@ -21,8 +31,19 @@ PassInputs::PassInputs(const NavMesh& navmesh, const EdgeSampling& sampling, con
 }
 
 GenerationStage::GenerationStage(PassInputs& in)
-    : mesh_(in.navmesh), samples_(in.samples), settings_(in.settings), method_(in.method), old_(in.old), box_(in.box), level_(in.level),
-      tasks_(in.tasks), report_(in.report), progress_(in.progress), body_(in.body), walk_(in.walk), rim_probing_(in.rim_probing) {}
+    : mesh_(in.navmesh),
+      samples_(in.samples),
+      settings_(in.settings),
+      method_(in.method),
+      old_(in.old),
+      box_(in.box),
+      level_(in.level),
+      tasks_(in.tasks),
+      report_(in.report),
+      progress_(in.progress),
+      body_(in.body),
+      walk_(in.walk),
+      rim_probing_(in.rim_probing) {}
 
 void check_progress(const GenerationProgress& progress, float fraction, const char* stage) {
     if (!progress(fraction, stage)) fail(ErrorCode::Cancelled, "the generation was cancelled during '", stage, "'");
@@ -91,7 +112,8 @@ std::vector<LinkGeneration::Sweep> GenerationStage::sweep(const std::vector<Path
                 groups[g++] = BodyGroup{run_box(pieces[i], run, body_, widest), base + run.first, run.last - run.first};
                 next = run.last;
             }
-            for (; next < pieces[i].size(); ++next) groups[g++] = BodyGroup{stretches[base + next].bounds, base + next, 1};
+            for (; next < pieces[i].size(); ++next)
+                groups[g++] = BodyGroup{stretches[base + next].bounds, base + next, 1};
         }
     });
     std::array<float, kSweepRadiusCount> radii;
@@ -124,7 +146,7 @@ std::vector<LinkGeneration::Sweep> GenerationStage::sweep_arcs(const std::vector
 
 NavPoint GenerationStage::locate(const Vec3& point, const Vec3& half_extents) const {
     return method_ == GenerationMethod::Indexed ? mesh_.find_nearest(point, half_extents)
-                                          : mesh_.find_nearest_brute_force(point, half_extents);
+                                                : mesh_.find_nearest_brute_force(point, half_extents);
 }
 
 }  // namespace nl::generation

@@ -15,11 +15,11 @@
 namespace nl::generation {
 
 constexpr float kDegrees = 3.14159265358979f / 180.0f;
-constexpr float kProbeLift = 0.5f;  // probes start this far above the navmesh: clear of the floor,
-                                    // and below any ceiling (the navmesh has agent height above it)
-constexpr float kFloorReach = 2.0f; // a link end's floor is looked for this far below kProbeLift
-constexpr float kPastRim = 0.2f;    // a drop's fall starts this far past the rim
-constexpr float kPad = 1e-3f;       // bounds are padded: a surface exactly on them still counts
+constexpr float kProbeLift = 0.5f;   // probes start this far above the navmesh: clear of the floor,
+                                     // and below any ceiling (the navmesh has agent height above it)
+constexpr float kFloorReach = 2.0f;  // a link end's floor is looked for this far below kProbeLift
+constexpr float kPastRim = 0.2f;     // a drop's fall starts this far past the rim
+constexpr float kPad = 1e-3f;        // bounds are padded: a surface exactly on them still counts
 
 inline uint64_t pair_key(uint32_t a, uint32_t b) { return (uint64_t(a) << 32) | b; }
 
@@ -45,9 +45,9 @@ void check_progress(const GenerationProgress& progress, float fraction, const ch
 
 // One generation or update: what it reads, the old cache it may reuse, the report it fills.
 struct PassInputs {
-    PassInputs(const NavMesh& navmesh, const EdgeSampling& sampling, const LinkSettings& settings, GenerationMethod method,
-               const LinkGeneration::Cache& old, const Aabb* box, const Level& level, TaskSystem& tasks,
-               LinkGenerationReport& report, GenerationProgress progress);
+    PassInputs(const NavMesh& navmesh, const EdgeSampling& sampling, const LinkSettings& settings,
+               GenerationMethod method, const LinkGeneration::Cache& old, const Aabb* box, const Level& level,
+               TaskSystem& tasks, LinkGenerationReport& report, GenerationProgress progress);
 
     const NavMesh& navmesh;
     const std::vector<EdgeSample>& samples;
@@ -100,11 +100,11 @@ protected:
 
 // The stages, in the order a pass runs them (each fills its part of `next`, reusing the old cache's
 // where the box cannot have changed it).
-void probe_takeoffs(PassInputs& in, LinkGeneration::Cache& next);                     // takeoff_probing.cpp
-void find_jumps(PassInputs& in, LinkGeneration::Cache& next);                         // jump_finding.cpp
-void find_drops(PassInputs& in, LinkGeneration::Cache& next);                         // drop_finding.cpp
+void probe_takeoffs(PassInputs& in, LinkGeneration::Cache& next);  // takeoff_probing.cpp
+void find_jumps(PassInputs& in, LinkGeneration::Cache& next);      // jump_finding.cpp
+void find_drops(PassInputs& in, LinkGeneration::Cache& next);      // drop_finding.cpp
 // Selection (no rays, over the whole cache): the kept jumps in take-off order, the kept drops in key order.
-std::vector<Link> straightest_jumps(PassInputs& in, const LinkGeneration::Cache& c);  // jump_finding.cpp
+std::vector<Link> straightest_jumps(PassInputs& in, const LinkGeneration::Cache& c);      // jump_finding.cpp
 std::vector<Link> one_drop_per_way_down(PassInputs& in, const LinkGeneration::Cache& c);  // drop_finding.cpp
 
 }  // namespace nl::generation

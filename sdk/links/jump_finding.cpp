@@ -42,17 +42,20 @@ public:
     // the other (so the report can say that two facing edges were too far apart). Never finer than
     // a centimetre: cell keys stay far inside int64 within the coordinate limit.
     float pair_reach() const {
-        return std::max(2.0f * settings_.max_jump_gap + 2.0f * settings_.falloff_distance + settings_.max_jump_up, 0.01f);
+        return std::max(2.0f * settings_.max_jump_gap + 2.0f * settings_.falloff_distance + settings_.max_jump_up,
+                        0.01f);
     }
 
     CellKey cell_of(const Vec3& p) const {
         const float reach = pair_reach();
-        return CellKey{int64_t(std::floor(p.x() / reach)), int64_t(std::floor(p.y() / reach)), int64_t(std::floor(p.z() / reach))};
+        return CellKey{int64_t(std::floor(p.x() / reach)), int64_t(std::floor(p.y() / reach)),
+                       int64_t(std::floor(p.z() / reach))};
     }
 
     // Appends the take-off points after `valid[x]` (by sample index) within reach of it, in order:
     // from the grid's 27 cells (Indexed) or from every later one (BruteForce).
-    void partners_after(const std::vector<uint32_t>& valid, size_t x, const TakeoffGrid& grid, std::vector<uint32_t>& out) const {
+    void partners_after(const std::vector<uint32_t>& valid, size_t x, const TakeoffGrid& grid,
+                        std::vector<uint32_t>& out) const {
         const uint32_t i = valid[x];
         const Vec3& p = samples_[i].point;
         const float reach = pair_reach();
@@ -84,18 +87,21 @@ public:
         const float distance = d.norm(), length = flat.norm();
         const Vec3 heading = length > 0.0f ? Vec3(flat / length) : Vec3::Zero();
         const bool is_short = distance < settings_.short_link_distance;
-        const float forward = std::cos((is_short ? settings_.permissive_forward_angle : settings_.strict_forward_angle) * kDegrees);
+        const float forward =
+            std::cos((is_short ? settings_.permissive_forward_angle : settings_.strict_forward_angle) * kDegrees);
         const bool facing = length > 0.0f && a.outward.dot(heading) >= forward && b.outward.dot(-heading) >= forward;
         const float gap = length - rim_reach(a.outward, heading, length) - rim_reach(b.outward, -heading, length);
         // Only edges that face each other are worth reporting as too far apart.
         if (gap > settings_.max_jump_gap) return facing ? PairVerdict::Distance : PairVerdict::Ignored;
         if (length < settings_.min_link_distance) return PairVerdict::Distance;
         if (std::fabs(d.y()) > settings_.max_jump_up) return PairVerdict::Rise;
-        const float incline = std::sin((is_short ? settings_.permissive_incline_angle : settings_.strict_incline_angle) * kDegrees);
+        const float incline =
+            std::sin((is_short ? settings_.permissive_incline_angle : settings_.strict_incline_angle) * kDegrees);
         const Vec3 direction = d / distance;
         if (!facing || std::fabs(direction.dot(a.normal)) > incline || std::fabs(direction.dot(b.normal)) > incline)
             return PairVerdict::Angle;
-        const float walk = walk_.walk_within(a.point, a.polygon, b.point, b.polygon, settings_.walk_factor * length + settings_.walk_distance);
+        const float walk = walk_.walk_within(a.point, a.polygon, b.point, b.polygon,
+                                             settings_.walk_factor * length + settings_.walk_distance);
         return std::isfinite(walk) ? PairVerdict::Walkable : PairVerdict::Candidate;
     }
 
@@ -118,8 +124,8 @@ public:
         const uint64_t key = pair_key(a, b);
         const Vec3 start = floor_point(next, a), end = floor_point(next, b);
         const auto cached = old_.jumps.find(key);
-        if (cached != old_.jumps.end() && !touches(cached->second.sweep.bounds, box_) && cached->second.link.start == start &&
-            cached->second.link.end == end) {
+        if (cached != old_.jumps.end() && !touches(cached->second.sweep.bounds, box_) &&
+            cached->second.link.start == start && cached->second.link.end == end) {
             next.jumps.emplace(key, cached->second);
             if (touches(cached->second.rim_bounds, box_)) unmeasured.push_back(key);
             return;
@@ -151,7 +157,8 @@ public:
         for (uint64_t key : keys) {
             const LinkGeneration::JumpCandidate& c = next.jumps.at(key);
             const float length = c.link.requirements.length;  // horizontal, > 0: judge_pair kept only ends apart
-            const Vec3 heading = Vec3(c.link.end.x() - c.link.start.x(), 0.0f, c.link.end.z() - c.link.start.z()) / length;
+            const Vec3 heading =
+                Vec3(c.link.end.x() - c.link.start.x(), 0.0f, c.link.end.z() - c.link.start.z()) / length;
             const uint32_t ends[2] = {c.a, c.b};
             for (int side = 0; side < 2; ++side) {
                 const Vec3 out = side == 0 ? heading : Vec3(-heading);
@@ -183,8 +190,9 @@ public:
     // swept) or fills `pending` with the candidates to sweep next (those the walk reached unswept,
     // and no later one that the outcome of theirs could exclude). `report` counts the rejections of
     // a finished walk.
-    std::vector<const LinkGeneration::JumpCandidate*> walk_jump_ranking(const LinkGeneration::Cache& c, std::vector<uint64_t>* pending,
-                                                                  LinkGenerationReport* report) const {
+    std::vector<const LinkGeneration::JumpCandidate*> walk_jump_ranking(const LinkGeneration::Cache& c,
+                                                                        std::vector<uint64_t>* pending,
+                                                                        LinkGenerationReport* report) const {
         auto squareness = [&](const LinkGeneration::JumpCandidate& j) {
             Vec3 heading = j.link.end - j.link.start;
             heading.y() = 0.0f;
@@ -282,7 +290,8 @@ public:
         }
         measure_jump_gaps(next, std::move(unmeasured));
         report_.jump_candidates = 0;
-        for (const auto& [key, j] : next.jumps) (j.gap_within ? report_.jump_candidates : report_.rejected_distance) += 1;
+        for (const auto& [key, j] : next.jumps)
+            (j.gap_within ? report_.jump_candidates : report_.rejected_distance) += 1;
         step(0.35f, "jump clearance");
         decide_jumps(next);
     }
@@ -290,7 +299,8 @@ public:
     // The kept jumps (walk_jump_ranking), in take-off order.
     std::vector<Link> straightest_jumps(const LinkGeneration::Cache& c) {
         std::vector<const LinkGeneration::JumpCandidate*> kept = walk_jump_ranking(c, nullptr, &report_);
-        std::sort(kept.begin(), kept.end(), [](const auto* x, const auto* y) { return std::make_pair(x->a, x->b) < std::make_pair(y->a, y->b); });
+        std::sort(kept.begin(), kept.end(),
+                  [](const auto* x, const auto* y) { return std::make_pair(x->a, x->b) < std::make_pair(y->a, y->b); });
         std::vector<Link> links;
         for (const auto* j : kept) {
             links.push_back(j->link);
@@ -304,6 +314,8 @@ public:
 
 void find_jumps(PassInputs& in, LinkGeneration::Cache& next) { JumpFinding(in).run(next); }
 
-std::vector<Link> straightest_jumps(PassInputs& in, const LinkGeneration::Cache& c) { return JumpFinding(in).straightest_jumps(c); }
+std::vector<Link> straightest_jumps(PassInputs& in, const LinkGeneration::Cache& c) {
+    return JumpFinding(in).straightest_jumps(c);
+}
 
 }  // namespace nl::generation

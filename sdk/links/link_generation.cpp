@@ -45,7 +45,8 @@ std::vector<Link> run_pass(generation::PassInputs& in, LinkGeneration::Cache& ne
     links.insert(links.end(), drops.begin(), drops.end());
     report.drop_candidates = 0;
     for (const LinkGeneration::DropProbe& d : next.drops) report.drop_candidates += d.outcome == 0;
-    MergedLinks merged = merge_links(std::move(links), in.settings.merge_distance, in.method == GenerationMethod::BruteForce);
+    MergedLinks merged =
+        merge_links(std::move(links), in.settings.merge_distance, in.method == GenerationMethod::BruteForce);
     report.rejected_duplicate += merged.duplicates;
     links = std::move(merged.kept);
     for (const Link& l : links) (l.kind == LinkKind::Jump ? report.jump_links : report.drop_links)++;
@@ -55,24 +56,26 @@ std::vector<Link> run_pass(generation::PassInputs& in, LinkGeneration::Cache& ne
 
 }  // namespace
 
-LinkGeneration::LinkGeneration(std::shared_ptr<const NavMesh> navmesh, const LinkSettings& settings, GenerationMethod method)
+LinkGeneration::LinkGeneration(std::shared_ptr<const NavMesh> navmesh, const LinkSettings& settings,
+                               GenerationMethod method)
     : navmesh_(std::move(navmesh)), settings_(settings), method_(method) {
     validate(settings_);
 }
 
-std::vector<Link> LinkGeneration::run(const Level& level, TaskSystem& tasks, LinkGenerationReport& report, GenerationProgress progress) {
+std::vector<Link> LinkGeneration::run(const Level& level, TaskSystem& tasks, LinkGenerationReport& report,
+                                      GenerationProgress progress) {
     std::lock_guard lock(mutex_);
     return generate(nullptr, level, tasks, report, progress);
 }
 
-std::vector<Link> LinkGeneration::update(const Aabb& box, const Level& level, TaskSystem& tasks, LinkGenerationReport& report,
-                                   GenerationProgress progress) {
+std::vector<Link> LinkGeneration::update(const Aabb& box, const Level& level, TaskSystem& tasks,
+                                         LinkGenerationReport& report, GenerationProgress progress) {
     std::lock_guard lock(mutex_);
     return generate(generated_ ? &box : nullptr, level, tasks, report, progress);
 }
 
-std::vector<Link> LinkGeneration::generate(const Aabb* box, const Level& level, TaskSystem& tasks, LinkGenerationReport& report,
-                                 GenerationProgress progress) {
+std::vector<Link> LinkGeneration::generate(const Aabb* box, const Level& level, TaskSystem& tasks,
+                                           LinkGenerationReport& report, GenerationProgress progress) {
     Stopwatch total, stage;
     report = LinkGenerationReport{};
     generation::check_progress(progress, 0.0f, "edges");
@@ -84,7 +87,8 @@ std::vector<Link> LinkGeneration::generate(const Aabb* box, const Level& level, 
 
     const Cache empty;
     Cache next;
-    generation::PassInputs in(*navmesh_, sampling_, settings_, method_, generated_ ? cache_ : empty, box, level, tasks, report, progress);
+    generation::PassInputs in(*navmesh_, sampling_, settings_, method_, generated_ ? cache_ : empty, box, level, tasks,
+                              report, progress);
     std::vector<Link> links = run_pass(in, next);
     if (!progress(1.0f, "done")) fail(ErrorCode::Cancelled, "the generation was cancelled at its end");
     cache_ = std::move(next);  // only a generation that finished replaces the cache

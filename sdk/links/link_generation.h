@@ -23,7 +23,8 @@ public:
     LinkGeneration(std::shared_ptr<const NavMesh> navmesh, const LinkSettings& settings, GenerationMethod method);
 
     // Casts everything.
-    std::vector<Link> run(const Level& level, TaskSystem& tasks, LinkGenerationReport& report, GenerationProgress progress);
+    std::vector<Link> run(const Level& level, TaskSystem& tasks, LinkGenerationReport& report,
+                          GenerationProgress progress);
     // Casts again what geometry inside `box` can have changed. Throws (Cancelled, ...) leaving the
     // generation as it was.
     std::vector<Link> update(const Aabb& box, const Level& level, TaskSystem& tasks, LinkGenerationReport& report,
@@ -37,33 +38,34 @@ public:
     struct TakeoffState {
         bool valid = false;
         TakeoffRejection rejected = TakeoffRejection::None;
-        float ground_y = 0.0f; // the floor under the sample
-        float rim = 0.0f;      // how far out along the sample's outward direction the ground falls away
-        Aabb bounds;           // everything its probes touched
+        float ground_y = 0.0f;  // the floor under the sample
+        float rim = 0.0f;       // how far out along the sample's outward direction the ground falls away
+        Aabb bounds;            // everything its probes touched
     };
     struct Sweep {
-        bool swept = false;    // the rest is known (a drop probe is swept only if it may be kept)
+        bool swept = false;  // the rest is known (a drop probe is swept only if it may be kept)
         bool clear = false;
-        float width = 0.0f;    // widest body found clear (2, 3 or 4 agent radii)
-        Aabb bounds;           // the widest sweep's reach
+        float width = 0.0f;  // widest body found clear (2, 3 or 4 agent radii)
+        Aabb bounds;         // the widest sweep's reach
     };
     struct JumpCandidate {
         uint32_t a = 0, b = 0;  // take-off samples
         Link link;              // its requirements.gap measured along the line between the ends
         Sweep sweep;
-        Aabb rim_bounds;        // the searches for the rims along that line
-        bool gap_within = true; // the gap measured is max_jump_gap or narrower (kept, unswept, if not: an
-                                // update reuses the measurement)
+        Aabb rim_bounds;         // the searches for the rims along that line
+        bool gap_within = true;  // the gap measured is max_jump_gap or narrower (kept, unswept, if not: an
+                                 // update reuses the measurement)
     };
     struct DropProbe {
-        uint64_t key = 0;       // (sample, angle)
-        uint8_t outcome = 0;    // 0: landed, 1: no landing (or no rim along the heading), 2: too shallow (walked), 3: too deep
-        float rim = -1.0f;      // how far out along the probe's heading the ground falls away (-1: not within reach)
-        Aabb bounds;            // the rim search along the heading, the probe ray and the ray to the floor under the landing
+        uint64_t key = 0;  // (sample, angle)
+        uint8_t outcome =
+            0;  // 0: landed, 1: no landing (or no rim along the heading), 2: too shallow (walked), 3: too deep
+        float rim = -1.0f;  // how far out along the probe's heading the ground falls away (-1: not within reach)
+        Aabb bounds;  // the rim search along the heading, the probe ray and the ray to the floor under the landing
         Link link;
         std::array<Vec3, 4> fall;  // out over the rim, across, down (when landed)
         Sweep sweep;
-        Sweep back;             // the jump back up, for a drop no deeper than max_jump_up
+        Sweep back;  // the jump back up, for a drop no deeper than max_jump_up
     };
     struct Cache {
         std::vector<TakeoffState> takeoffs;                 // by sample
@@ -73,7 +75,7 @@ public:
 
 private:
     std::vector<Link> generate(const Aabb* box, const Level& level, TaskSystem& tasks, LinkGenerationReport& report,
-                           GenerationProgress progress);
+                               GenerationProgress progress);
 
     std::shared_ptr<const NavMesh> navmesh_;
     LinkSettings settings_;

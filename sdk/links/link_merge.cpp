@@ -13,7 +13,9 @@ MergedLinks merge_links(std::vector<Link> links, float merge_distance, bool brut
     std::vector<std::pair<OrderKey, uint32_t>> order(links.size());
     for (uint32_t k = 0; k < links.size(); ++k) {
         const Link& l = links[k];
-        order[k] = {OrderKey{static_cast<uint32_t>(l.kind), l.start.x(), l.start.z(), l.start.y(), l.end.x(), l.end.z(), l.end.y()}, k};
+        order[k] = {OrderKey{static_cast<uint32_t>(l.kind), l.start.x(), l.start.z(), l.start.y(), l.end.x(), l.end.z(),
+                             l.end.y()},
+                    k};
     }
     std::sort(order.begin(), order.end());  // ties keep input order: the index is the last key
     const float r = merge_distance;
@@ -54,7 +56,8 @@ MergedLinks merge_links(std::vector<Link> links, float merge_distance, bool brut
             for (int64_t dz = -1; dz <= 1 && !duplicate; ++dz)
                 for (int64_t dx = -1; dx <= 1 && !duplicate; ++dx) {
                     const auto it = cell_head.find(Key{k.x + dx, k.z + dz});
-                    for (uint32_t e = it == cell_head.end() ? kNone : it->second; e != kNone && !duplicate; e = next_in_cell[e])
+                    for (uint32_t e = it == cell_head.end() ? kNone : it->second; e != kNone && !duplicate;
+                         e = next_in_cell[e])
                         duplicate = same_traversal(kept[e / 2], l);
                 }
         }

@@ -45,25 +45,30 @@ uint32_t step_count(const RimQuery& q) { return static_cast<uint32_t>(std::ceil(
 
 }  // namespace
 
-std::vector<float> find_rims(const Level& level, TaskSystem& tasks, std::vector<RimQuery> queries, const RimProbing& probing,
-                             uint64_t& rays_cast) {
+std::vector<float> find_rims(const Level& level, TaskSystem& tasks, std::vector<RimQuery> queries,
+                             const RimProbing& probing, uint64_t& rays_cast) {
     const size_t count = queries.size();
     std::vector<float> ground(count, 0.0f), air(count, -1.0f);  // distances out known on ground and off it
-    auto distance_of = [&](size_t k, uint32_t step) { return std::min(static_cast<float>(step) * RimSearch::kStep, queries[k].reach); };
+    auto distance_of = [&](size_t k, uint32_t step) {
+        return std::min(static_cast<float>(step) * RimSearch::kStep, queries[k].reach);
+    };
 
     // One step out at a time, for the queries still on ground: only a hit or a miss is needed, and a
     // query stops at its rim or its reach.
     std::vector<size_t> looking(count);
     for (size_t k = 0; k < count; ++k) looking[k] = k;
     for (uint32_t j = 1; !looking.empty(); ++j) {
-        looking.erase(std::remove_if(looking.begin(), looking.end(), [&](size_t k) { return j > step_count(queries[k]); }),
-                      looking.end());
+        looking.erase(
+            std::remove_if(looking.begin(), looking.end(), [&](size_t k) { return j > step_count(queries[k]); }),
+            looking.end());
         std::vector<uint8_t> on_ground(looking.size(), 1), proven(looking.size(), 0);
         if (probing.floor_shortcut)
             tasks.parallel_for(static_cast<uint32_t>(looking.size()), 512, [&](uint32_t begin, uint32_t end) {
                 for (uint32_t n = begin; n < end; ++n) {
                     const RimQuery& q = queries[looking[n]];
-                    proven[n] = q.floor && crosses_well_inside(*q.floor, probe_top(q, distance_of(looking[n], j), probing), probing.step_reach);
+                    proven[n] =
+                        q.floor && crosses_well_inside(*q.floor, probe_top(q, distance_of(looking[n], j), probing),
+                                                       probing.step_reach);
                 }
             });
         std::vector<Segment> below;
@@ -110,7 +115,8 @@ std::vector<float> find_rims(const Level& level, TaskSystem& tasks, std::vector<
     std::vector<Segment> below(found.size());
     std::vector<uint8_t> hit(found.size());
     for (int halving = 0; halving < RimSearch::kHalvings; ++halving) {
-        for (size_t n = 0; n < found.size(); ++n) below[n] = probe_at(queries[found[n]], 0.5f * (ground[found[n]] + air[found[n]]), probing);
+        for (size_t n = 0; n < found.size(); ++n)
+            below[n] = probe_at(queries[found[n]], 0.5f * (ground[found[n]] + air[found[n]]), probing);
         level.segments_blocked(below.data(), static_cast<uint32_t>(below.size()), hit.data());
         rays_cast += below.size();
         for (size_t n = 0; n < found.size(); ++n) {

@@ -19,10 +19,10 @@ class TaskSystem;
 
 // One search: from a point on (or over) an edge, out along a horizontal unit heading.
 struct RimQuery {
-    Vec3 from;         // x and z of the start; its height is ignored (ground_y is the floor's)
-    Vec3 heading;      // horizontal, unit length
-    float ground_y;    // the floor's height under `from`
-    float reach;       // how far out to look (> 0)
+    Vec3 from;       // x and z of the start; its height is ignored (ground_y is the floor's)
+    Vec3 heading;    // horizontal, unit length
+    float ground_y;  // the floor's height under `from`
+    float reach;     // how far out to look (> 0)
     // A static triangle known to be under `from` (Level::static_triangles of the floor ray's hit), if
     // any: probes that cross it well inside are on ground without a ray. Only for Indexed generations.
     std::optional<std::array<Vec3, 3>> floor;
@@ -46,8 +46,8 @@ struct RimSearch {
 // interval halved (known to be past the ground, so a gap measured to it never reads wider than it
 // is), or -1 when there is ground all the way to the reach. `rays_cast` is increased by the probes
 // cast. Deterministic for any thread count.
-std::vector<float> find_rims(const Level& level, TaskSystem& tasks, std::vector<RimQuery> queries, const RimProbing& probing,
-                             uint64_t& rays_cast);
+std::vector<float> find_rims(const Level& level, TaskSystem& tasks, std::vector<RimQuery> queries,
+                             const RimProbing& probing, uint64_t& rays_cast);
 
 // Everything a query's probes can touch (its start to its reach, the probes' tops and bottoms), so a
 // cache knows when a change in the level may move the rim.

@@ -19,16 +19,21 @@ public:
         next.takeoffs.resize(samples_.size());
         std::vector<uint32_t> redo;
         for (uint32_t i = 0; i < samples_.size(); ++i) {
-            if (old_.takeoffs.size() == samples_.size() && !touches(old_.takeoffs[i].bounds, box_)) next.takeoffs[i] = old_.takeoffs[i];
-            else redo.push_back(i);
+            if (old_.takeoffs.size() == samples_.size() && !touches(old_.takeoffs[i].bounds, box_))
+                next.takeoffs[i] = old_.takeoffs[i];
+            else
+                redo.push_back(i);
         }
         std::vector<Ray> ground_rays;
-        for (uint32_t i : redo) ground_rays.push_back(Ray{samples_[i].point + Vec3(0, rim_probing_.lift, 0), Vec3(0, -1, 0), rim_probing_.lift + 1.5f});
+        for (uint32_t i : redo)
+            ground_rays.push_back(
+                Ray{samples_[i].point + Vec3(0, rim_probing_.lift, 0), Vec3(0, -1, 0), rim_probing_.lift + 1.5f});
         const std::vector<RayHit> ground = cast(ground_rays);
         // Indexed generations first try the last triangle found under the sample (by the ground ray, then
         // by each probe cast): a probe that crosses it well inside is on ground without a ray.
         std::vector<std::optional<std::array<Vec3, 3>>> floor(redo.size());
-        if (rim_probing_.floor_shortcut) level_.static_triangles(ground.data(), static_cast<uint32_t>(ground.size()), floor.data());
+        if (rim_probing_.floor_shortcut)
+            level_.static_triangles(ground.data(), static_cast<uint32_t>(ground.size()), floor.data());
         std::vector<RimQuery> queries(redo.size());
         for (size_t k = 0; k < redo.size(); ++k) {
             const EdgeSample& e = samples_[redo[k]];

@@ -21,7 +21,9 @@ Vec3 JumpArc::at(double t) const {
     return Vec3(flat.x(), static_cast<float>(start_.y() + b_ * t + c_ * t * t), flat.z());
 }
 
-float JumpArc::sagitta(double t0, double t1) const { return static_cast<float>(std::fabs(c_) * (t1 - t0) * (t1 - t0) / 4.0); }
+float JumpArc::sagitta(double t0, double t1) const {
+    return static_cast<float>(std::fabs(c_) * (t1 - t0) * (t1 - t0) / 4.0);
+}
 
 std::vector<Vec3> JumpArc::points(unsigned pieces) const {
     std::vector<Vec3> out;
@@ -32,7 +34,8 @@ std::vector<Vec3> JumpArc::points(unsigned pieces) const {
 
 std::array<Vec3, 4> fall_path(const Vec3& takeoff, const Vec3& heading, float out, const Vec3& landing) {
     const Vec3 past_rim = takeoff + heading * out;
-    return {takeoff, Vec3(past_rim.x(), takeoff.y(), past_rim.z()), Vec3(landing.x(), takeoff.y(), landing.z()), landing};
+    return {takeoff, Vec3(past_rim.x(), takeoff.y(), past_rim.z()), Vec3(landing.x(), takeoff.y(), landing.z()),
+            landing};
 }
 
 }  // namespace nl

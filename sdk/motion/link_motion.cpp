@@ -51,9 +51,7 @@ LinkMotion::LinkMotion(const Link& link, bool reversed, const BodyMotion& body)
             duration_ = walk_time_ + std::sqrt(2.0f * height / gravity_);
             break;
         }
-        case MotionKind::Line:
-            duration_ = (to_ - from_).norm() / speed_;
-            break;
+        case MotionKind::Line: duration_ = (to_ - from_).norm() / speed_; break;
     }
     duration_ = std::max(duration_, 1e-3f);
 }
@@ -79,8 +77,9 @@ Vec3 LinkMotion::at(float time, Vec3* velocity) const {
             const double u = t / duration_;
             if (velocity) {
                 const Vec3 across = (to_ - from_) / duration_;
-                *velocity = Vec3(across.x(), static_cast<float>((arc_.slope() + 2.0 * arc_.curvature() * u) / duration_),
-                                 across.z());
+                *velocity =
+                    Vec3(across.x(), static_cast<float>((arc_.slope() + 2.0 * arc_.curvature() * u) / duration_),
+                         across.z());
             }
             return arc_.at(u);
         }

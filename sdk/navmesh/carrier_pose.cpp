@@ -1,6 +1,5 @@
 #include "navmesh/carrier_pose.h"
 
-
 namespace nl {
 
 bool is_rigid(const Transform& t) {

@@ -35,9 +35,7 @@ public:
     Vec3 world_vector(const Vec3& v) const { return identity_ ? v : Vec3(to_world_.linear() * v); }
     Vec3 carrier_vector(const Vec3& v) const { return identity_ ? v : Vec3(to_carrier_.linear() * v); }
     // The half extents, in carrier axes, of a box that holds the world-axis box of half extents `h`.
-    Vec3 carrier_extents(const Vec3& h) const {
-        return identity_ ? h : Vec3(to_carrier_.linear().cwiseAbs() * h);
-    }
+    Vec3 carrier_extents(const Vec3& h) const { return identity_ ? h : Vec3(to_carrier_.linear().cwiseAbs() * h); }
     // The world box that holds a carrier-space box.
     Aabb world_box(const Aabb& carrier_box) const;
 
@@ -79,6 +77,8 @@ private:
 };
 
 // The pose of `frame` now; the identity for a navmesh that rides nothing (null).
-inline CarrierPose pose_of(const std::shared_ptr<const CarrierFrame>& frame) { return frame ? frame->pose() : CarrierPose{}; }
+inline CarrierPose pose_of(const std::shared_ptr<const CarrierFrame>& frame) {
+    return frame ? frame->pose() : CarrierPose{};
+}
 
 }  // namespace nl

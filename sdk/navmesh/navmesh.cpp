@@ -39,8 +39,8 @@ std::vector<BoundaryEdge> NavMesh::boundary_edges() const {
 size_t NavMesh::memory_bytes() const {
     auto bytes = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
     return bytes(vertices_) + bytes(first_corner_) + bytes(corners_) + bytes(neighbours_) + bytes(areas_) +
-           bytes(on_outline_) + bytes(polygon_bounds_) + bytes(detail_vertices_) +
-           bytes(detail_triangles_) + bytes(detail_) + bytes(boundary_) + grid_.memory_bytes();
+           bytes(on_outline_) + bytes(polygon_bounds_) + bytes(detail_vertices_) + bytes(detail_triangles_) +
+           bytes(detail_) + bytes(boundary_) + grid_.memory_bytes();
 }
 
 bool NavMesh::over_polygon(uint32_t p, float x, float z) const {
@@ -124,7 +124,8 @@ float NavMesh::surface_height(uint32_t p, float x, float z) const {
 }
 
 Vec3 NavMesh::closest_point_on_polygon(uint32_t p, const Vec3& point) const {
-    if (over_polygon(p, point.x(), point.z())) return Vec3(point.x(), surface_height(p, point.x(), point.z()), point.z());
+    if (over_polygon(p, point.x(), point.z()))
+        return Vec3(point.x(), surface_height(p, point.x(), point.z()), point.z());
     Vec3 best = Vec3::Zero();
     float best_distance = std::numeric_limits<float>::infinity();
     const uint32_t n = corner_count(p);
@@ -172,7 +173,8 @@ NavPoint NavMesh::find_nearest_anywhere(const Vec3& point, const Vec3& half_exte
         const NavPoint first = find_nearest(point, extents);
         // Polygons beyond this box can still be nearer than one in its corner: look again as far as
         // the first one found (and a climb more, for a floor straight below or above).
-        if (first.found) return find_nearest(point, extents.cwiseMax(Vec3::Constant(first.distance + agent_.max_climb)));
+        if (first.found)
+            return find_nearest(point, extents.cwiseMax(Vec3::Constant(first.distance + agent_.max_climb)));
         extents *= 2.0f;
     }
 }

@@ -34,7 +34,7 @@ struct AgentType {
 inline bool same_body(const AgentType& a, const AgentType& b) { return a.radius == b.radius && a.height == b.height; }
 
 struct BoundaryEdge {
-    Vec3 start;    // in the polygon's counter-clockwise order
+    Vec3 start;  // in the polygon's counter-clockwise order
     Vec3 end;
     Vec3 outward;  // unit, in the polygon's plane, away from it
     Vec3 normal;   // the polygon's unit normal
@@ -87,7 +87,9 @@ public:
     uint32_t vertex_count() const { return static_cast<uint32_t>(vertices_.size()); }
     uint8_t area(uint32_t p) const { return areas_[p]; }
     // Polygon p's unit normal, pointing up (from its corners: computed when asked, not stored).
-    Vec3 normal(uint32_t p) const { return fan_normal(vertices_, &corners_[first_corner_[p]], corner_count(p)).normalized(); }
+    Vec3 normal(uint32_t p) const {
+        return fan_normal(vertices_, &corners_[first_corner_[p]], corner_count(p)).normalized();
+    }
     Vec3 centre(uint32_t p) const;
     const Aabb& polygon_bounds(uint32_t p) const { return polygon_bounds_[p]; }
 
@@ -150,12 +152,13 @@ private:
     };
     Vec3 detail_point(uint32_t p, uint8_t local) const {
         const uint32_t corners = corner_count(p);
-        return local < corners ? vertices_[corner(p, local)] : detail_vertices_[detail_[p].first_vertex + (local - corners)];
+        return local < corners ? vertices_[corner(p, local)]
+                               : detail_vertices_[detail_[p].first_vertex + (local - corners)];
     }
     std::vector<Vec3> detail_vertices_;
     std::vector<DetailTriangle> detail_triangles_;
     std::vector<DetailRange> detail_;  // polygon_count + 1 ranges; empty when there is no detail
-    struct EdgeRef {  // four bytes: corners are fewer than 16, polygons fewer than 2^28
+    struct EdgeRef {                   // four bytes: corners are fewer than 16, polygons fewer than 2^28
         uint32_t polygon : 28;
         uint32_t edge : 4;
     };

@@ -40,7 +40,7 @@ private:
                 const float value = in_.vertices[i][k];
                 if (!std::isfinite(value) || std::fabs(value) > kCoordinateLimit)
                     fail_field(ErrorCode::InvalidArgument, "vertices[", i, "].", axis[k], " = ", value,
-                         " is not finite or beyond the coordinate limit");
+                               " is not finite or beyond the coordinate limit");
             }
         }
         if (in_.polygon_sizes.empty() && in_.indices.size() % 3 != 0)
@@ -50,20 +50,20 @@ private:
             const uint32_t n = in_.polygon_sizes[p];
             if (n < 3 || n > kMaxPolygonVertices)
                 fail_field(ErrorCode::InvalidArgument, "polygon_vertex_counts[", p, "] = ", n, " (must be 3..",
-                     kMaxPolygonVertices, ")");
+                           kMaxPolygonVertices, ")");
             expected += n;
         }
         if (!in_.polygon_sizes.empty() && expected != in_.indices.size())
-            fail_field(ErrorCode::InvalidArgument, "indices has ", in_.indices.size(), " entries but the polygon sizes add up to ",
-                 expected);
+            fail_field(ErrorCode::InvalidArgument, "indices has ", in_.indices.size(),
+                       " entries but the polygon sizes add up to ", expected);
         for (size_t i = 0; i < in_.indices.size(); ++i) {
             if (in_.indices[i] >= in_.vertices.size())
                 fail_field(ErrorCode::InvalidArgument, "indices[", i, "] = ", in_.indices[i],
-                     " is out of range (vertex_count = ", in_.vertices.size(), ")");
+                           " is out of range (vertex_count = ", in_.vertices.size(), ")");
         }
         if (!in_.areas.empty() && in_.areas.size() != input_polygon_count())
-            fail_field(ErrorCode::InvalidArgument, "areas has ", in_.areas.size(), " entries for ", input_polygon_count(),
-                 " polygons");
+            fail_field(ErrorCode::InvalidArgument, "areas has ", in_.areas.size(), " entries for ",
+                       input_polygon_count(), " polygons");
         if (!(in_.weld_tolerance >= 0.0f && in_.weld_tolerance <= 1.0f))
             fail_field(ErrorCode::InvalidArgument, "weld_tolerance is ", in_.weld_tolerance, " (must be 0..1 m)");
         naming_fields("agent_type.", [&] { validate_agent(in_.agent_type); });
@@ -73,31 +73,35 @@ private:
     void validate_detail() const {
         if (in_.detail_starts.empty()) {
             if (!in_.detail_indices.empty() || !in_.detail_vertices.empty())
-                fail_field(ErrorCode::InvalidArgument, "detail_triangle_starts: detail triangles are given without detail_triangle_starts");
+                fail_field(ErrorCode::InvalidArgument,
+                           "detail_triangle_starts: detail triangles are given without detail_triangle_starts");
             return;
         }
         if (in_.detail_starts.size() != input_polygon_count() + 1)
-            fail_field(ErrorCode::InvalidArgument, "detail_triangle_starts needs polygon_count + 1 = ",
-                 input_polygon_count() + 1, " entries");
+            fail_field(ErrorCode::InvalidArgument,
+                       "detail_triangle_starts needs polygon_count + 1 = ", input_polygon_count() + 1, " entries");
         const uint32_t triangles = static_cast<uint32_t>(in_.detail_indices.size() / 3);
         if (in_.detail_starts.front() != 0 || in_.detail_starts.back() != triangles)
-            fail_field(ErrorCode::InvalidArgument, "detail_triangle_starts must run from 0 to the detail triangle count");
+            fail_field(ErrorCode::InvalidArgument,
+                       "detail_triangle_starts must run from 0 to the detail triangle count");
         for (size_t p = 0; p + 1 < in_.detail_starts.size(); ++p) {
             if (in_.detail_starts[p + 1] <= in_.detail_starts[p])
                 fail_field(ErrorCode::InvalidArgument, "detail_triangle_starts[", p + 1,
-                     "]: every polygon needs at least one detail triangle, in order");
+                           "]: every polygon needs at least one detail triangle, in order");
             if (in_.detail_starts[p + 1] - in_.detail_starts[p] > kMaxDetailTriangles)
                 fail_field(ErrorCode::InvalidArgument, "detail_triangle_starts[", p + 1, "]: polygon ", p, " has ",
-                           in_.detail_starts[p + 1] - in_.detail_starts[p], " detail triangles (at most ", kMaxDetailTriangles, ")");
+                           in_.detail_starts[p + 1] - in_.detail_starts[p], " detail triangles (at most ",
+                           kMaxDetailTriangles, ")");
         }
         for (size_t i = 0; i < in_.detail_vertices.size(); ++i) {
             if (!within_coordinate_limit(in_.detail_vertices[i]))
-                fail_field(ErrorCode::InvalidArgument, "detail_vertices[", i, "] is not finite or beyond the coordinate limit");
+                fail_field(ErrorCode::InvalidArgument, "detail_vertices[", i,
+                           "] is not finite or beyond the coordinate limit");
         }
         for (size_t i = 0; i < in_.detail_indices.size(); ++i) {
             if (in_.detail_indices[i] >= in_.detail_vertices.size())
                 fail_field(ErrorCode::InvalidArgument, "detail_triangles[", i, "] = ", in_.detail_indices[i],
-                     " is out of range (detail_vertex_count = ", in_.detail_vertices.size(), ")");
+                           " is out of range (detail_vertex_count = ", in_.detail_vertices.size(), ")");
         }
     }
 
@@ -123,8 +127,9 @@ private:
         m.first_corner_.push_back(0);
         const bool has_detail = !in_.detail_starts.empty();
         if (has_detail) m.detail_.push_back(NavMesh::DetailRange{0, 0});
-        std::vector<uint32_t> detail_vertex_remap(in_.detail_vertices.size(), kNoPolygon);  // input -> local, this polygon
-        std::vector<uint32_t> remapped;  // the input detail vertices this polygon remapped
+        std::vector<uint32_t> detail_vertex_remap(in_.detail_vertices.size(),
+                                                  kNoPolygon);  // input -> local, this polygon
+        std::vector<uint32_t> remapped;                         // the input detail vertices this polygon remapped
 
         size_t offset = 0;
         const uint32_t count = input_polygon_count();
@@ -139,7 +144,9 @@ private:
             offset += n;
             while (ring.size() > 1 && ring.front() == ring.back()) ring.pop_back();
 
-            const Vec3 normal = ring.size() >= 3 ? fan_normal(m.vertices_, ring.data(), static_cast<uint32_t>(ring.size())) : Vec3::Zero();
+            const Vec3 normal = ring.size() >= 3
+                                    ? fan_normal(m.vertices_, ring.data(), static_cast<uint32_t>(ring.size()))
+                                    : Vec3::Zero();
             // Half the normal's y is the area seen from above: none means nothing to walk on.
             if (ring.size() < 3 || std::fabs(normal.y()) <= 2e-9f) {
                 ++m.repairs_.dropped_polygons;
@@ -177,8 +184,9 @@ private:
                                 local = static_cast<uint32_t>(at - ring.begin());
                             } else {
                                 if (m.detail_vertices_.size() - first_vertex >= kMaxDetailVertices)
-                                    fail_field(ErrorCode::InvalidArgument, "detail_triangle_starts[", p, "]: polygon ", p,
-                                               " has more than ", kMaxDetailVertices, " detail vertices besides its corners");
+                                    fail_field(ErrorCode::InvalidArgument, "detail_triangle_starts[", p, "]: polygon ",
+                                               p, " has more than ", kMaxDetailVertices,
+                                               " detail vertices besides its corners");
                                 local = static_cast<uint32_t>(ring.size() + m.detail_vertices_.size() - first_vertex);
                                 m.detail_vertices_.push_back(point);
                             }
@@ -217,8 +225,8 @@ private:
             const double grid_slack =
                 1.5 * std::ldexp(1.0, kNavMeshGridExponent) * (std::hypot(e1x, e1z) + std::hypot(e2x, e2z));
             if (cross_y < -std::max(1e-4 * lengths, grid_slack))
-                fail_field(ErrorCode::InvalidArgument, "indices: polygon ", p, " is not convex seen from above (at corner ",
-                     (k + 1) % n, ")");
+                fail_field(ErrorCode::InvalidArgument, "indices: polygon ", p,
+                           " is not convex seen from above (at corner ", (k + 1) % n, ")");
             turning += std::atan2(cross_y, e1x * e2x + e1z * e2z);
         }
         // A star (self-crossing) polygon turns every corner the same way but winds twice.
@@ -245,9 +253,8 @@ private:
                 edges.push_back({key, m.first_corner_[p] + k, p});
             }
         }
-        std::sort(edges.begin(), edges.end(), [](const EdgeRef& x, const EdgeRef& y) {
-            return x.key != y.key ? x.key < y.key : x.slot < y.slot;
-        });
+        std::sort(edges.begin(), edges.end(),
+                  [](const EdgeRef& x, const EdgeRef& y) { return x.key != y.key ? x.key < y.key : x.slot < y.slot; });
         m.neighbours_.assign(m.corners_.size(), kNoPolygon);
         m.on_outline_.assign(m.vertices_.size(), 0);
         for (size_t i = 0; i < edges.size();) {
@@ -287,8 +294,8 @@ private:
         m.grid_.build(m.polygon_bounds_, m.bounds_);
         // A navmesh lives long and is never edited: give back what the building left spare.
         auto fit = [](auto&... arrays) { (arrays.shrink_to_fit(), ...); };
-        fit(m.vertices_, m.first_corner_, m.corners_, m.neighbours_, m.areas_, m.on_outline_,
-            m.polygon_bounds_, m.detail_vertices_, m.detail_triangles_, m.detail_, m.boundary_);
+        fit(m.vertices_, m.first_corner_, m.corners_, m.neighbours_, m.areas_, m.on_outline_, m.polygon_bounds_,
+            m.detail_vertices_, m.detail_triangles_, m.detail_, m.boundary_);
     }
 
     const NavMeshInput& in_;
@@ -307,16 +314,15 @@ void validate_agent(const AgentType& a) {
     check(a.max_slope, "max_slope", a.max_slope >= 0.0f && a.max_slope < 90.0f);
 }
 
-std::shared_ptr<const NavMesh> build_navmesh(const NavMeshInput& input) {
-    return NavMeshBuilder(input).build();
-}
+std::shared_ptr<const NavMesh> build_navmesh(const NavMeshInput& input) { return NavMeshBuilder(input).build(); }
 
 NavMeshInput input_of(const NavMesh& m) {
     NavMeshInput in;
     in.vertices = m.vertices_;
     in.indices = m.corners_;
     in.polygon_sizes.reserve(m.polygon_count());
-    for (uint32_t p = 0; p < m.polygon_count(); ++p) in.polygon_sizes.push_back(static_cast<uint8_t>(m.corner_count(p)));
+    for (uint32_t p = 0; p < m.polygon_count(); ++p)
+        in.polygon_sizes.push_back(static_cast<uint8_t>(m.corner_count(p)));
     in.areas = m.areas_;
     in.weld_tolerance = 0.0f;
     in.agent_type = m.agent_;
@@ -328,7 +334,8 @@ NavMeshInput input_of(const NavMesh& m) {
             in.detail_starts.push_back(m.detail_[p].first_triangle);
             const uint32_t base = static_cast<uint32_t>(in.detail_vertices.size());
             const uint32_t locals = m.corner_count(p) + (m.detail_[p + 1].first_vertex - m.detail_[p].first_vertex);
-            for (uint32_t local = 0; local < locals; ++local) in.detail_vertices.push_back(m.detail_point(p, static_cast<uint8_t>(local)));
+            for (uint32_t local = 0; local < locals; ++local)
+                in.detail_vertices.push_back(m.detail_point(p, static_cast<uint8_t>(local)));
             for (uint32_t t = m.detail_[p].first_triangle; t < m.detail_[p + 1].first_triangle; ++t)
                 for (uint8_t local : m.detail_triangles_[t]) in.detail_indices.push_back(base + local);
         }

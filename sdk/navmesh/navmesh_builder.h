@@ -11,9 +11,9 @@ namespace nl {
 
 struct NavMeshInput {
     std::vector<Vec3> vertices;
-    std::vector<uint32_t> indices;        // polygon corners, polygon after polygon
-    std::vector<uint8_t> polygon_sizes;   // corners per polygon; empty means all triangles
-    std::vector<uint8_t> areas;           // per polygon; empty means area 0
+    std::vector<uint32_t> indices;       // polygon corners, polygon after polygon
+    std::vector<uint8_t> polygon_sizes;  // corners per polygon; empty means all triangles
+    std::vector<uint8_t> areas;          // per polygon; empty means area 0
     float weld_tolerance = 0.001f;
     AgentType agent_type;
     std::vector<Vec3> detail_vertices;

@@ -12,8 +12,11 @@ namespace nl {
 // point (io/navmesh_file.h) and a loaded navmesh answers every query as the saved one did.
 constexpr int kNavMeshGridExponent = -10;
 inline float on_navmesh_grid(float v) {
-    return static_cast<float>(std::nearbyint(std::ldexp(double(v), -kNavMeshGridExponent)) * std::ldexp(1.0, kNavMeshGridExponent));
+    return static_cast<float>(std::nearbyint(std::ldexp(double(v), -kNavMeshGridExponent)) *
+                              std::ldexp(1.0, kNavMeshGridExponent));
 }
-inline Vec3 on_navmesh_grid(const Vec3& v) { return Vec3(on_navmesh_grid(v.x()), on_navmesh_grid(v.y()), on_navmesh_grid(v.z())); }
+inline Vec3 on_navmesh_grid(const Vec3& v) {
+    return Vec3(on_navmesh_grid(v.x()), on_navmesh_grid(v.y()), on_navmesh_grid(v.z()));
+}
 
 }  // namespace nl

@@ -15,7 +15,8 @@ void NearestPoint::consider(uint32_t p) {
         const Aabb& box = navmesh_.polygon_bounds(p);
         const float box_distance = (point_.cwiseMax(box.min).cwiseMin(box.max) - point_).norm();
         const float rounding = 1e-6f * (point_scale_ + box.max.cwiseAbs().cwiseMax(box.min.cwiseAbs()).maxCoeff());
-        const float least_rank = std::max(0.0f, box_distance - rounding - (over_box ? navmesh_.agent().max_climb : 0.0f));
+        const float least_rank =
+            std::max(0.0f, box_distance - rounding - (over_box ? navmesh_.agent().max_climb : 0.0f));
         if (least_rank > best_rank_ || (least_rank == best_rank_ && p > best_.polygon)) return;
     }
     const Vec3 q = navmesh_.closest_point_on_polygon(p, point_);

@@ -15,7 +15,10 @@ class NearestPoint {
 public:
     // `skip_by_bounds` false: every polygon offered is measured (the brute-force reference).
     NearestPoint(const NavMesh& navmesh, const Vec3& point, bool skip_by_bounds = true)
-        : navmesh_(navmesh), point_(point), point_scale_(1.0f + point.cwiseAbs().maxCoeff()), skip_by_bounds_(skip_by_bounds) {}
+        : navmesh_(navmesh),
+          point_(point),
+          point_scale_(1.0f + point.cwiseAbs().maxCoeff()),
+          skip_by_bounds_(skip_by_bounds) {}
 
     // Offers polygon p: skipped at the cost of a box test when its bounds are beyond the best so far.
     void consider(uint32_t p);

@@ -17,15 +17,21 @@ namespace {
 constexpr int kSpan = 4;
 
 // Clamped before the conversion: a search box far larger than the grid must not overflow an int.
-int clamp_cell(double cell, int count) { return static_cast<int>(std::clamp(std::floor(cell), 0.0, double(count - 1))); }
+int clamp_cell(double cell, int count) {
+    return static_cast<int>(std::clamp(std::floor(cell), 0.0, double(count - 1)));
+}
 
 float extent_of(const Aabb& b) { return std::max(b.max.x() - b.min.x(), b.max.z() - b.min.z()); }
 
 }  // namespace
 
-int PolygonGrid::Level::cell_x(float x, float origin) const { return clamp_cell((double(x) - origin) * inverse_cell, columns); }
+int PolygonGrid::Level::cell_x(float x, float origin) const {
+    return clamp_cell((double(x) - origin) * inverse_cell, columns);
+}
 
-int PolygonGrid::Level::cell_z(float z, float origin) const { return clamp_cell((double(z) - origin) * inverse_cell, rows); }
+int PolygonGrid::Level::cell_z(float z, float origin) const {
+    return clamp_cell((double(z) - origin) * inverse_cell, rows);
+}
 
 void PolygonGrid::build(const std::vector<Aabb>& bounds, const Aabb& all) {
     const size_t count = bounds.size();
@@ -68,10 +74,11 @@ void PolygonGrid::build(const std::vector<Aabb>& bounds, const Aabb& all) {
         const double cell = base * std::pow(double(kSpan), k);
         const double cells = cells_for(cell);
         if (total_cells + cells >= double(std::numeric_limits<uint32_t>::max()))
-            fail(ErrorCode::OutOfMemory, "the navmesh's point-location grid would need ", total_cells + cells, " cells");
+            fail(ErrorCode::OutOfMemory, "the navmesh's point-location grid would need ", total_cells + cells,
+                 " cells");
         grid_of[size_t(k)] = static_cast<int>(levels_.size());
-        levels_.push_back(Level{1.0 / cell, static_cast<int>(std::ceil(width / cell)), static_cast<int>(std::ceil(depth / cell)),
-                                static_cast<uint32_t>(total_cells)});
+        levels_.push_back(Level{1.0 / cell, static_cast<int>(std::ceil(width / cell)),
+                                static_cast<int>(std::ceil(depth / cell)), static_cast<uint32_t>(total_cells)});
         total_cells += cells;
     }
 
@@ -85,7 +92,8 @@ void PolygonGrid::build(const std::vector<Aabb>& bounds, const Aabb& all) {
             for (int x = x0; x <= x1; ++x) fn(level.first_cell + size_t(z) * size_t(level.columns) + size_t(x));
     };
     cell_start_.assign(size_t(total_cells) + 1, 0);
-    for (size_t p = 0; p < count; ++p) for_cells(p, [&](size_t c) { ++cell_start_[c + 1]; });  // a cell lists a polygon once
+    for (size_t p = 0; p < count; ++p)
+        for_cells(p, [&](size_t c) { ++cell_start_[c + 1]; });  // a cell lists a polygon once
     uint64_t entries = 0;
     for (uint32_t& start : cell_start_) {
         entries += start;
@@ -95,7 +103,8 @@ void PolygonGrid::build(const std::vector<Aabb>& bounds, const Aabb& all) {
     }
     cell_polygons_.resize(cell_start_.back());
     std::vector<uint32_t> fill(cell_start_.begin(), cell_start_.end() - 1);
-    for (size_t p = 0; p < count; ++p) for_cells(p, [&](size_t c) { cell_polygons_[fill[c]++] = static_cast<uint32_t>(p); });
+    for (size_t p = 0; p < count; ++p)
+        for_cells(p, [&](size_t c) { cell_polygons_[fill[c]++] = static_cast<uint32_t>(p); });
 }
 
 void PolygonGrid::visit(const Vec3& lo, const Vec3& hi, const std::vector<Aabb>& bounds,

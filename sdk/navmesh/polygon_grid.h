@@ -28,7 +28,8 @@ public:
                FunctionRef<void(uint32_t)> visit) const;
 
     size_t memory_bytes() const {
-        return levels_.capacity() * sizeof(Level) + (cell_start_.capacity() + cell_polygons_.capacity()) * sizeof(uint32_t);
+        return levels_.capacity() * sizeof(Level) +
+               (cell_start_.capacity() + cell_polygons_.capacity()) * sizeof(uint32_t);
     }
 
 private:
@@ -42,8 +43,8 @@ private:
     };
 
     float origin_x_ = 0.0f, origin_z_ = 0.0f;
-    std::vector<Level> levels_;          // finest first
-    std::vector<uint32_t> cell_start_;   // every level's cells, then one end: offsets into cell_polygons_
+    std::vector<Level> levels_;         // finest first
+    std::vector<uint32_t> cell_start_;  // every level's cells, then one end: offsets into cell_polygons_
     std::vector<uint32_t> cell_polygons_;
 };
 

@@ -23,7 +23,7 @@ struct NavMeshProvenance {
     // (the Recast builder does), else as it was given; empty: neither.
     std::string builder_settings;
     uint64_t level_hash = 0;  // of the triangles it was built from (level_hash.h); 0: not built from the level
-    LinkProvenance links;      // of its generated links
+    LinkProvenance links;     // of its generated links
     // The meshes it was built on that looked wound clockwise (level/winding_check.h): the build's
     // warning. Not kept in navmesh files.
     std::vector<Handle> turned_over_meshes;

@@ -19,7 +19,7 @@ struct SeededRandom {
         z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
         return z ^ (z >> 31);
     }
-    float unit() { return float(next() >> 40) * (1.0f / 16777216.0f); }               // [0, 1)
+    float unit() { return float(next() >> 40) * (1.0f / 16777216.0f); }                 // [0, 1)
     double unit_double() { return double(next() >> 11) * (1.0 / 9007199254740992.0); }  // [0, 1)
 };
 
@@ -52,10 +52,10 @@ constexpr int kClipSides = 16;
 // Their outward normals, cos and sin of 2 pi k / 16 written out: a C library's last bit of cos and
 // sin would otherwise make another platform's points differ.
 constexpr float kClipNormals[kClipSides][2] = {
-    {1.0f, 0.0f},           {0.92387953f, 0.38268343f},   {0.70710678f, 0.70710678f},   {0.38268343f, 0.92387953f},
-    {0.0f, 1.0f},           {-0.38268343f, 0.92387953f},  {-0.70710678f, 0.70710678f},  {-0.92387953f, 0.38268343f},
-    {-1.0f, 0.0f},          {-0.92387953f, -0.38268343f}, {-0.70710678f, -0.70710678f}, {-0.38268343f, -0.92387953f},
-    {0.0f, -1.0f},          {0.38268343f, -0.92387953f},  {0.70710678f, -0.70710678f},  {0.92387953f, -0.38268343f}};
+    {1.0f, 0.0f},  {0.92387953f, 0.38268343f},   {0.70710678f, 0.70710678f},   {0.38268343f, 0.92387953f},
+    {0.0f, 1.0f},  {-0.38268343f, 0.92387953f},  {-0.70710678f, 0.70710678f},  {-0.92387953f, 0.38268343f},
+    {-1.0f, 0.0f}, {-0.92387953f, -0.38268343f}, {-0.70710678f, -0.70710678f}, {-0.38268343f, -0.92387953f},
+    {0.0f, -1.0f}, {0.38268343f, -0.92387953f},  {0.70710678f, -0.70710678f},  {0.92387953f, -0.38268343f}};
 
 // A convex part of one polygon's fan triangle, seen from above, that points are drawn in.
 struct Piece {

@@ -39,7 +39,9 @@ struct VisitMarks {
     }
 };
 
-bool may_enter(const SurfaceWalkOptions& options, uint32_t p) { return p != kNoPolygon && (!options.passable || (*options.passable)(p)); }
+bool may_enter(const SurfaceWalkOptions& options, uint32_t p) {
+    return p != kNoPolygon && (!options.passable || (*options.passable)(p));
+}
 
 }  // namespace
 

@@ -25,7 +25,7 @@ using PolygonFilter = FunctionRef<bool(uint32_t)>;
 // queries lift the bounds and ask for the polygons.
 struct SurfaceWalkOptions {
     const PolygonFilter* passable = nullptr;
-    uint32_t max_polygons = 48;              // visited (a move) or crossed (a ray) at most
+    uint32_t max_polygons = 48;                 // visited (a move) or crossed (a ray) at most
     std::vector<uint32_t>* polygons = nullptr;  // receives the polygons: see each function
     // A move's result at the surface's height; false: at `from`'s, for a caller that moves a body
     // many times in a row and sets its height once at the end (a detail surface's height costs a

@@ -37,7 +37,8 @@ std::vector<uint32_t> weld_vertices(const std::vector<Vec3>& vertices, float tol
     const int reach = tolerance > 0.0f ? 1 : 0;
     for (uint32_t i = 0; i < count; ++i) {
         const Vec3& v = vertices[i];
-        const CellKey key{static_cast<int64_t>(std::floor(v.x() / cell)), static_cast<int64_t>(std::floor(v.y() / cell)),
+        const CellKey key{static_cast<int64_t>(std::floor(v.x() / cell)),
+                          static_cast<int64_t>(std::floor(v.y() / cell)),
                           static_cast<int64_t>(std::floor(v.z() / cell))};
         uint32_t match = i;
         for (int dz = -reach; dz <= reach && match == i; ++dz) {

@@ -28,7 +28,8 @@ WalkGraph::WalkGraph(const NavMesh& navmesh) : navmesh_(navmesh) {
     }
 }
 
-float WalkGraph::walk_within(const Vec3& from, uint32_t from_polygon, const Vec3& to, uint32_t to_polygon, float limit) const {
+float WalkGraph::walk_within(const Vec3& from, uint32_t from_polygon, const Vec3& to, uint32_t to_polygon,
+                             float limit) const {
     constexpr float kNone = std::numeric_limits<float>::infinity();
     if (from_polygon >= navmesh_.polygon_count() || to_polygon >= navmesh_.polygon_count()) return kNone;
     if (from_polygon == to_polygon) {

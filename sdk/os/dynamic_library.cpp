@@ -21,7 +21,8 @@ DynamicLibrary::DynamicLibrary(const std::string& path) {
     // The path is UTF-8 as everywhere in the C ABI; the wide call takes any file name.
     const std::wstring wide = std::filesystem::u8path(path).wstring();
     handle_ = LoadLibraryW(wide.c_str());
-    if (!handle_) fail(ErrorCode::Io, "cannot load '", path, "': Windows error ", static_cast<unsigned long>(GetLastError()));
+    if (!handle_)
+        fail(ErrorCode::Io, "cannot load '", path, "': Windows error ", static_cast<unsigned long>(GetLastError()));
 }
 
 DynamicLibrary::~DynamicLibrary() {

@@ -106,11 +106,13 @@ bool SharedMutex::held_by_this_thread() const noexcept { return held.contains(th
 void SharedMutex::refuse_if_held(const char* mode) const {
     if (held.contains(this))
         fail(ErrorCode::Internal, "NavLink was called back on a thread that holds the lock of ", what_,
-             " (taking it again ", mode, " would deadlock or break it): a task, progress or log callback "
+             " (taking it again ", mode,
+             " would deadlock or break it): a task, progress or log callback "
              "must not call NavLink functions that lock what the call it runs under holds (navlink.h, "
              "\"Callbacks\")");
     if (held.count == HeldLocks::capacity)
-        fail(ErrorCode::Internal, "a thread holds ", HeldLocks::capacity, " of NavLink's locks at once (taking ", what_, "'s)");
+        fail(ErrorCode::Internal, "a thread holds ", HeldLocks::capacity, " of NavLink's locks at once (taking ", what_,
+             "'s)");
 }
 
 }  // namespace nl

@@ -37,12 +37,12 @@ double distance(Flat a, Flat b) {
 // landing), from `root` inside `polygon` to anywhere in it.
 struct IntervalNode {
     Flat root, a, b;
-    double g;               // cost from the start to the root
-    uint32_t root_id;       // the root's turning id (below), for pruning
+    double g;          // cost from the start to the root
+    uint32_t root_id;  // the root's turning id (below), for pruning
     uint32_t polygon;
-    uint32_t edge;          // the polygon's edge the interval is on; kNoNode for a node without edge
-    uint32_t entry;         // CorridorStep::entry into `polygon`
-    uint32_t parent;        // node index; kNoNode for the start
+    uint32_t edge;            // the polygon's edge the interval is on; kNoNode for a node without edge
+    uint32_t entry;           // CorridorStep::entry into `polygon`
+    uint32_t parent;          // node index; kNoNode for the start
     uint32_t a_turn, b_turn;  // turning ids of a and b when a walk may bend there, else kNoNode
 };
 
@@ -59,7 +59,9 @@ struct OpenEntry {
 struct TurningIds {
     uint32_t landing_base, start, narrowed_base;
     TurningIds(const NavMesh& navmesh, size_t links)
-        : landing_base(navmesh.vertex_count()), start(landing_base + 2 * static_cast<uint32_t>(links)), narrowed_base(start + 1) {}
+        : landing_base(navmesh.vertex_count()),
+          start(landing_base + 2 * static_cast<uint32_t>(links)),
+          narrowed_base(start + 1) {}
     uint32_t dense_count() const { return narrowed_base; }
 };
 
@@ -139,7 +141,7 @@ struct ShortestScratch {
     std::vector<double> best;  // per dense turning id, valid where best_epoch is current
     std::vector<uint32_t> best_epoch;
     std::vector<Arrival> best_arrival;  // per dense turning id: how the walk at its best cost came
-    CostTable best_narrowed;   // per narrowed end's turning id
+    CostTable best_narrowed;            // per narrowed end's turning id
     std::vector<uint32_t> polygon_epoch;
     // The cheapest cost at which a root on a polygon's edge saw all of the polygon, per (root,
     // polygon): round a vertex the sweep from polygon to polygon would otherwise go on circling.
@@ -181,8 +183,10 @@ inline NL_ALWAYS_INLINE bool keep_nonpositive(double s0, double s1, double& lo, 
     if (s0 <= 0.0 && s1 <= 0.0) return lo <= hi;
     if (s0 > 0.0 && s1 > 0.0) return false;
     const double t = s0 / (s0 - s1);
-    if (s0 > 0.0) lo = std::max(lo, t);
-    else hi = std::min(hi, t);
+    if (s0 > 0.0)
+        lo = std::max(lo, t);
+    else
+        hi = std::min(hi, t);
     return lo <= hi;
 }
 
@@ -219,17 +223,35 @@ class ShortestSearch {
 public:
     ShortestSearch(const PathGraph& graph, const PathQuery& query, const NavPoint& goal, float walk_cost,
                    ShortestScratch& scratch, CorridorSearch& result)
-        : graph_(graph), mesh_(graph.navmesh()), query_(query), goal_(goal), goal_flat_(flat(goal.point)),
-          rate_(walk_cost), h_scale_(cheapest_link_rate(graph, query, walk_cost)),
-          margin_(std::max(0.0f, query.capabilities.radius - graph.navmesh().agent().radius)), ids_(mesh_, graph.links_ptr()->size()),
+        : graph_(graph),
+          mesh_(graph.navmesh()),
+          query_(query),
+          goal_(goal),
+          goal_flat_(flat(goal.point)),
+          rate_(walk_cost),
+          h_scale_(cheapest_link_rate(graph, query, walk_cost)),
+          margin_(std::max(0.0f, query.capabilities.radius - graph.navmesh().agent().radius)),
+          ids_(mesh_, graph.links_ptr()->size()),
           links_beat_walking_(h_scale_ < rate_),
-          keeps_out_(std::any_of(query.area_costs.begin(), query.area_costs.end(), [](float cost) { return cost <= 0.0f; })),
-          scratch_(scratch), epoch_(scratch.begin(ids_.dense_count(), mesh_.polygon_count())), result_(result) {}
+          keeps_out_(
+              std::any_of(query.area_costs.begin(), query.area_costs.end(), [](float cost) { return cost <= 0.0f; })),
+          scratch_(scratch),
+          epoch_(scratch.begin(ids_.dense_count(), mesh_.polygon_count())),
+          result_(result) {}
 
     void add_start(const NavPoint& start) {
         improve(ids_.start, 0.0);
-        generate(IntervalNode{flat(start.point), {}, {}, 0.0, ids_.start, start.polygon, kNoNode, CorridorStep::kStart, kNoNode,
-                              kNoNode, kNoNode});
+        generate(IntervalNode{flat(start.point),
+                              {},
+                              {},
+                              0.0,
+                              ids_.start,
+                              start.polygon,
+                              kNoNode,
+                              CorridorStep::kStart,
+                              kNoNode,
+                              kNoNode,
+                              kNoNode});
         flush(false);
     }
 
@@ -249,7 +271,8 @@ public:
                     continue;
                 }
             }
-            if ((++expansions & (kCancelCheckExpansions - 1)) == 0 && cancel && cancel->load(std::memory_order_relaxed)) {
+            if ((++expansions & (kCancelCheckExpansions - 1)) == 0 && cancel &&
+                cancel->load(std::memory_order_relaxed)) {
                 result_.cancelled = true;
                 return;
             }
@@ -280,7 +303,8 @@ public:
         result_.cost = static_cast<float>(best_goal_);
         const std::vector<IntervalNode>& nodes = scratch_.nodes;
         for (uint32_t i = goal_parent_, guard = 0; i != kNoNode; i = nodes[i].parent) {
-            if (++guard > nodes.size()) fail(ErrorCode::Internal, "exact path search: corridor does not lead back to the start");
+            if (++guard > nodes.size())
+                fail(ErrorCode::Internal, "exact path search: corridor does not lead back to the start");
             result_.steps.push_back(CorridorStep{nodes[i].polygon, nodes[i].entry});
         }
         std::reverse(result_.steps.begin(), result_.steps.end());
@@ -412,7 +436,8 @@ private:
             if (node.root.x != straight_root_.x || node.root.z != straight_root_.z)
                 straight_root_ = node.root, straight_ = distance(node.root, goal_flat_);
             if (node.g + straight_ * h_scale_ >= best_goal_) continue;  // no estimate is below the straight line's
-            const double h = node.edge == kNoNode ? straight_ : estimate_through(node.root, node.a, node.b, goal_flat_, straight_);
+            const double h =
+                node.edge == kNoNode ? straight_ : estimate_through(node.root, node.a, node.b, goal_flat_, straight_);
             const double f = node.g + h * h_scale_;
             if (f >= best_goal_) continue;  // never expanded: the goal is already as cheap
             if (may_keep && f < kept_f) {
@@ -443,7 +468,8 @@ private:
     uint32_t turning_id(uint32_t p, uint32_t k, bool far_end) const {
         const uint32_t n = mesh_.corner_count(p);
         const uint32_t v = mesh_.corner(p, far_end ? (k + 1 == n ? 0 : k + 1) : k);
-        if (margin_ > 0.0f && mesh_.on_outline(v)) return ids_.narrowed_base + 2 * mesh_.edge_index(p, k) + (far_end ? 1 : 0);
+        if (margin_ > 0.0f && mesh_.on_outline(v))
+            return ids_.narrowed_base + 2 * mesh_.edge_index(p, k) + (far_end ? 1 : 0);
         return graph_.may_bend_at(v, margin_ > 0.0f) ? v : kNoNode;
     }
 
@@ -490,8 +516,10 @@ private:
         const double size2 = (to_root.x * to_root.x + to_root.z * to_root.z) * (along.x * along.x + along.z * along.z);
         if (side * side > 1e-24 * size2) {
             view.scale = side > 0.0 ? 1.0 : -1.0;
-            if (node.a_turn != kNoNode) view.g_a = node.g + rate_ * distance(node.root, node.a), view.a_turn = node.a_turn;
-            if (node.b_turn != kNoNode) view.g_b = node.g + rate_ * distance(node.root, node.b), view.b_turn = node.b_turn;
+            if (node.a_turn != kNoNode)
+                view.g_a = node.g + rate_ * distance(node.root, node.a), view.a_turn = node.a_turn;
+            if (node.b_turn != kNoNode)
+                view.g_b = node.g + rate_ * distance(node.root, node.b), view.b_turn = node.b_turn;
             const Arrival arrival{node.root, mesh_.edge_index(node.polygon, node.edge)};
             if (view.a_turn != kNoNode && !may_bend(view.a_turn, view.g_a, arrival, node.a)) view.g_a = kInfinity;
             if (view.b_turn != kNoNode && !may_bend(view.b_turn, view.g_b, arrival, node.b)) view.g_b = kInfinity;
@@ -519,7 +547,8 @@ private:
         Flat at[kMaxPolygonVertices];
         for (uint32_t k = 0; k < corners; ++k) at[k] = flat(mesh_.vertex(mesh_.corner(p, k)));
         View view;
-        if (entry == kNoNode ? !view_of(node, view) : !view_of(node, at[entry], at[entry + 1 == corners ? 0 : entry + 1], view))
+        if (entry == kNoNode ? !view_of(node, view)
+                             : !view_of(node, at[entry], at[entry + 1 == corners ? 0 : entry + 1], view))
             return;
         if (entry != kNoNode && view.scale == 0.0) {
             // Round a vertex the sweep from polygon to polygon would otherwise go on circling.
@@ -529,7 +558,8 @@ private:
             scratch_.whole_views.lower(view_key, node.g);
         }
 
-        for (const LinkExit* exit = graph_.exits_begin(p); exit != graph_.exits_end(p); ++exit) take_link(index, view, *exit);
+        for (const LinkExit* exit = graph_.exits_begin(p); exit != graph_.exits_end(p); ++exit)
+            take_link(index, view, *exit);
 
         // Two edges share each corner: its sides once.
         double b_side[kMaxPolygonVertices], a_side[kMaxPolygonVertices];
@@ -600,8 +630,9 @@ private:
         // In the next polygon the edge runs the other way: its first corner is this one's k + 1.
         const uint8_t twin = graph_.twin_edge(s.p, s.k);
         if (twin == PathGraph::kNoTwin) return;
-        generate(IntervalNode{root, s.near_end + hi * along, s.near_end + lo * along, g, root_id, s.q, twin, s.k, s.parent,
-                              hi >= 1.0 ? turning_id(s.p, s.k, true) : kNoNode, lo <= 0.0 ? turning_id(s.p, s.k, false) : kNoNode});
+        generate(IntervalNode{root, s.near_end + hi * along, s.near_end + lo * along, g, root_id, s.q, twin, s.k,
+                              s.parent, hi >= 1.0 ? turning_id(s.p, s.k, true) : kNoNode,
+                              lo <= 0.0 ? turning_id(s.p, s.k, false) : kNoNode});
     }
 
     // Whether the line from `root` through `point` (on the edge of s) goes on beyond the edge, away
@@ -639,12 +670,12 @@ private:
     const float margin_;
     const TurningIds ids_;
     const bool links_beat_walking_;  // some link the body takes costs less per metre than walking
-    const bool keeps_out_;  // some area costs the body 0: it keeps out of those polygons
+    const bool keeps_out_;           // some area costs the body 0: it keeps out of those polygons
     ShortestScratch& scratch_;
     const uint32_t epoch_;
     CorridorSearch& result_;
     std::vector<uint32_t>& pending_ = scratch_.pending;  // generated by the expansion under way
-    Flat straight_root_{kInfinity, kInfinity};  // the last root flush() measured to the goal, and how far
+    Flat straight_root_{kInfinity, kInfinity};           // the last root flush() measured to the goal, and how far
     double straight_ = kInfinity;
     double best_goal_ = kInfinity;
     uint32_t goal_parent_ = kNoNode;

@@ -7,10 +7,11 @@ namespace nl {
 
 PathGraph::PathGraph(std::shared_ptr<const NavMesh> navmesh, std::shared_ptr<const LinkSnapshot> links,
                      std::shared_ptr<const CarrierFrame> frame, std::shared_ptr<const NavMeshSearchIndex> index)
-    : navmesh_(std::move(navmesh)), links_(links ? std::move(links) : std::make_shared<const LinkSnapshot>()),
+    : navmesh_(std::move(navmesh)),
+      links_(links ? std::move(links) : std::make_shared<const LinkSnapshot>()),
       frame_(std::move(frame)),
       index_(index && &index->navmesh() == navmesh_.get() ? std::move(index)
-                                                           : std::make_shared<const NavMeshSearchIndex>(navmesh_)) {
+                                                          : std::make_shared<const NavMeshSearchIndex>(navmesh_)) {
     for (const StoredLink& s : *links_) has_cross_links_ = has_cross_links_ || s.link.crosses();
     index_links();
     mark_subtree_exits();
@@ -68,19 +69,25 @@ void NavMeshSearchIndex::index_bends() {
         areas_present_[area >> 6] |= uint64_t(1) << (area & 63);
         const uint32_t n = navmesh.corner_count(p);
         for (uint32_t k = 0; k < n; ++k) {
-            const uint32_t u = navmesh.corner(p, k == 0 ? n - 1 : k - 1), v = navmesh.corner(p, k), w = navmesh.corner(p, k + 1 == n ? 0 : k + 1);
-            const double ax = double(navmesh.vertex(u).x()) - navmesh.vertex(v).x(), az = double(navmesh.vertex(u).z()) - navmesh.vertex(v).z();
-            const double bx = double(navmesh.vertex(w).x()) - navmesh.vertex(v).x(), bz = double(navmesh.vertex(w).z()) - navmesh.vertex(v).z();
+            const uint32_t u = navmesh.corner(p, k == 0 ? n - 1 : k - 1), v = navmesh.corner(p, k),
+                           w = navmesh.corner(p, k + 1 == n ? 0 : k + 1);
+            const double ax = double(navmesh.vertex(u).x()) - navmesh.vertex(v).x(),
+                         az = double(navmesh.vertex(u).z()) - navmesh.vertex(v).z();
+            const double bx = double(navmesh.vertex(w).x()) - navmesh.vertex(v).x(),
+                         bz = double(navmesh.vertex(w).z()) - navmesh.vertex(v).z();
             angle[v] += std::fabs(std::atan2(ax * bz - az * bx, ax * bx + az * bz));
-            if (area_at[v] == kUnseen) area_at[v] = area;
-            else if (area_at[v] != area) bends_[v] |= kAnyBody;
+            if (area_at[v] == kUnseen)
+                area_at[v] = area;
+            else if (area_at[v] != area)
+                bends_[v] |= kAnyBody;
             const uint32_t q = navmesh.neighbour(p, k);
             if (q == kNoPolygon) continue;
             const uint32_t m = navmesh.corner_count(q);
             for (uint32_t j = 0; j < m; ++j) {
                 // The same edge runs the other way in q; of several edges to p (a non-manifold repair), that one.
                 if (navmesh.neighbour(q, j) != p) continue;
-                if (twins_[navmesh.edge_index(p, k)] == kNoTwin || navmesh.corner(q, j) == w) twins_[navmesh.edge_index(p, k)] = uint8_t(j);
+                if (twins_[navmesh.edge_index(p, k)] == kNoTwin || navmesh.corner(q, j) == w)
+                    twins_[navmesh.edge_index(p, k)] = uint8_t(j);
             }
             if (navmesh.on_outline(v)) bends_[w] |= kWiderBody;
             if (navmesh.on_outline(w)) bends_[v] |= kWiderBody;
@@ -157,10 +164,13 @@ void PathGraph::mark_subtree_exits() {
 
 size_t NavMeshSearchIndex::memory_bytes() const {
     auto bytes = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
-    return bytes(bends_) + bytes(twins_) + bytes(hangs_from_) + bytes(subtree_first_) + bytes(subtree_last_) + bytes(peel_order_);
+    return bytes(bends_) + bytes(twins_) + bytes(hangs_from_) + bytes(subtree_first_) + bytes(subtree_last_) +
+           bytes(peel_order_);
 }
 
-size_t PathGraph::search_index_bytes() const { return index_->memory_bytes() + subtree_exits_.capacity() * sizeof(uint8_t); }
+size_t PathGraph::search_index_bytes() const {
+    return index_->memory_bytes() + subtree_exits_.capacity() * sizeof(uint8_t);
+}
 
 size_t PathGraph::link_index_bytes() const {
     return first_exit_.capacity() * sizeof(uint32_t) + exits_.capacity() * sizeof(LinkExit);

@@ -77,7 +77,8 @@ public:
     // `index`: the navmesh's search index from an earlier graph of it, so that a link edit does not
     // build it again (null, or another navmesh's: built here).
     PathGraph(std::shared_ptr<const NavMesh> navmesh, std::shared_ptr<const LinkSnapshot> links,
-              std::shared_ptr<const CarrierFrame> frame = nullptr, std::shared_ptr<const NavMeshSearchIndex> index = nullptr);
+              std::shared_ptr<const CarrierFrame> frame = nullptr,
+              std::shared_ptr<const NavMeshSearchIndex> index = nullptr);
 
     const NavMesh& navmesh() const { return *navmesh_; }
     const std::shared_ptr<const NavMesh>& navmesh_ptr() const { return navmesh_; }
@@ -127,7 +128,8 @@ public:
     }
     // The body's map when one is already built: what a path request asks, never paying for a build.
     // Valid until this thread asks again (ReachabilityCache::ready).
-    const ReachabilityMap* reachability_if_built(const AgentCapabilities& agent, const std::vector<float>& area_costs) const {
+    const ReachabilityMap* reachability_if_built(const AgentCapabilities& agent,
+                                                 const std::vector<float>& area_costs) const {
         return reachability_.ready(agent, area_costs);
     }
     size_t reachability_map_count() const { return reachability_.map_count(); }

@@ -17,7 +17,11 @@ namespace {
 class PathAssembler {
 public:
     PathAssembler(const PathGraph& graph, const PathQuery& query, const CorridorSearch& corridor, PathResult& result)
-        : graph_(graph), mesh_(graph.navmesh()), query_(query), corridor_(corridor), result_(result),
+        : graph_(graph),
+          mesh_(graph.navmesh()),
+          query_(query),
+          corridor_(corridor),
+          result_(result),
           margin_(std::max(0.0f, query.capabilities.radius - mesh_.agent().radius)) {}
 
     void assemble(const Vec3& start, const Vec3& end) {
@@ -58,14 +62,20 @@ private:
         pulled_.clear();
         pull_string(from, to, portals_, pulled_);
         rates_.clear();
-        for (size_t i = first; i <= last; ++i) rates_.push_back(query_.area_cost(mesh_.area(corridor_.steps[i].polygon)));
+        for (size_t i = first; i <= last; ++i)
+            rates_.push_back(query_.area_cost(mesh_.area(corridor_.steps[i].polygon)));
         const WalkedLine walked = walk_line(pulled_, portals_, rates_);
         result_.length += walked.length;
         result_.cost += static_cast<float>(walked.cost);
         for (const PulledPoint& pulled : pulled_) {
             const size_t step = first + std::min<size_t>(pulled.portal, last - first);
-            const PathPoint point{pulled.position, pulled.position, corridor_.steps[step].polygon, kSegmentWalk, Handle{},
-                                  pulled.position, false};
+            const PathPoint point{pulled.position,
+                                  pulled.position,
+                                  corridor_.steps[step].polygon,
+                                  kSegmentWalk,
+                                  Handle{},
+                                  pulled.position,
+                                  false};
             // A link landing where the next one takes off, or a walk of no length, adds no point.
             if (!result_.points.empty() && result_.points.back().position == point.position &&
                 result_.points.back().segment == kSegmentWalk) {
@@ -127,8 +137,9 @@ void search_corridor(const PathGraph& graph, const PathQuery& query, const NavPo
     // the next requests for goals out of reach on this graph at once. It also says whether the exact
     // search missed a way there: on a navmesh folded over itself (a neighbour on the same side of the
     // edge they share, seen from above) its views mean nothing, and the corridor search finds the way.
-    const bool missed = searched_everything(corridor) &&
-                        graph.reachability(query.capabilities, query.area_costs)->reaches(start.polygon, target.polygon);
+    const bool missed =
+        searched_everything(corridor) &&
+        graph.reachability(query.capabilities, query.area_costs)->reaches(start.polygon, target.polygon);
     const bool ran_out = corridor.out_of_nodes && !corridor.reached_goal && query.accept_partial;
     if (missed || corridor.gave_up || ran_out) {
         const uint32_t exact_nodes = corridor.nodes_visited;
@@ -140,7 +151,8 @@ void search_corridor(const PathGraph& graph, const PathQuery& query, const NavPo
 // Where a partial path ends: the navmesh point nearest the goal among the polygons the body reaches
 // from the start (the start's own polygon at least), as located points are ranked (NearestPoint).
 // A pass over the reachable polygons' bounds: a fraction of what a search through them costs.
-NavPoint nearest_reachable(const NavMesh& navmesh, const ReachabilityMap& map, const NavPoint& start, const NavPoint& goal) {
+NavPoint nearest_reachable(const NavMesh& navmesh, const ReachabilityMap& map, const NavPoint& start,
+                           const NavPoint& goal) {
     thread_local std::vector<uint8_t> reached;
     map.reachable_islands(start.polygon, reached);
     NearestPoint nearest(navmesh, goal.point);

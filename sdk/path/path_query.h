@@ -50,7 +50,7 @@ struct PathPoint {
     Vec3 carrier_position = Vec3::Zero();  // in the navmesh's own space: where it stays on a moving surface
     uint32_t polygon = 0xffffffffu;
     uint32_t segment = kSegmentWalk;
-    Handle link;                  // null for walking
+    Handle link;  // null for walking
     Vec3 apex = Vec3::Zero();
     bool reversed = false;
 };

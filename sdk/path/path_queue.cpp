@@ -236,7 +236,8 @@ void PathQueue::finish(std::unique_lock<std::mutex>& lock, Handle h, PathResult 
 PathOutcome PathQueue::wait(Handle ticket, std::chrono::steady_clock::duration timeout) {
     using Clock = std::chrono::steady_clock;
     if (in_path_callback)
-        fail(ErrorCode::InvalidArgument, "a path callback cannot wait for a path: it runs on a thread that finishes them");
+        fail(ErrorCode::InvalidArgument,
+             "a path callback cannot wait for a path: it runs on a thread that finishes them");
     const Clock::time_point now = Clock::now();
     const bool forever = timeout >= Clock::time_point::max() - now;
     const Clock::time_point deadline = forever ? Clock::time_point::max() : now + timeout;
@@ -247,8 +248,10 @@ PathOutcome PathQueue::wait(Handle ticket, std::chrono::steady_clock::duration t
         if (!forever && Clock::now() >= deadline) return PathOutcome::Pending;
         uint64_t nodes = 0;
         if (workers_.empty() && !t.running && run_next(lock, nodes)) continue;
-        if (forever) request_finished_.wait(lock);
-        else request_finished_.wait_until(lock, deadline);
+        if (forever)
+            request_finished_.wait(lock);
+        else
+            request_finished_.wait_until(lock, deadline);
     }
 }
 

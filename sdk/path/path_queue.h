@@ -127,7 +127,7 @@ private:
     uint32_t queued_ = 0;
     uint32_t running_ = 0;
     uint64_t submitted_ = 0;
-    uint64_t finished_ = 0;   // callbacks returned too
+    uint64_t finished_ = 0;          // callbacks returned too
     uint32_t released_running_ = 0;  // released tickets kept until their request finishes
     bool stopping_ = false;
     std::vector<std::thread> workers_;

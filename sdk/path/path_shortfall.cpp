@@ -50,7 +50,8 @@ const Link* find_link(const PathGraph& graph, Handle id) {
 
 // The first link on the path to the goal with every link allowed that the body cannot take, and
 // the first of its requirements the body falls short of.
-bool name_the_link(const PathGraph& graph, const PathQuery& query, const PathQuery& every_link, PathShortfallReport& out) {
+bool name_the_link(const PathGraph& graph, const PathQuery& query, const PathQuery& every_link,
+                   PathShortfallReport& out) {
     PathResult result;
     plan_path(graph, every_link, nullptr, result);
     if (result.outcome != PathOutcome::Complete) return false;
@@ -120,9 +121,12 @@ namespace {
 double cm(float metres) { return std::round(double(metres) * 100.0) / 100.0; }
 
 std::string link_words(const PathShortfallReport& r, LinkKind kind) {
-    const char* what = kind == LinkKind::Jump ? "a jump" : kind == LinkKind::Drop ? (r.reversed ? "a drop taken back up" : "a drop")
-                       : kind == LinkKind::Manual ? "a manual link" : "a plugin's link";
-    return concat(what, " at (", cm(r.link_start.x()), ", ", cm(r.link_start.y()), ", ", cm(r.link_start.z()), ") would get there");
+    const char* what = kind == LinkKind::Jump     ? "a jump"
+                       : kind == LinkKind::Drop   ? (r.reversed ? "a drop taken back up" : "a drop")
+                       : kind == LinkKind::Manual ? "a manual link"
+                                                  : "a plugin's link";
+    return concat(what, " at (", cm(r.link_start.x()), ", ", cm(r.link_start.y()), ", ", cm(r.link_start.z()),
+                  ") would get there");
 }
 
 // Passages narrower than its body are not in a navmesh at all: no path search can tell them.
@@ -135,36 +139,43 @@ std::string built_for(const PathShortfallReport& r) {
 
 std::string describe(const PathShortfallReport& r, const PathQuery& query) {
     switch (r.why) {
-    case PathShortfall::None: return {};
-    case PathShortfall::OutOfNodes:
-        return concat("max_nodes (", query.max_nodes, ") stopped the search before it reached the goal: raise it, or 0 for no limit");
-    case PathShortfall::BodyTooWide:
-        return concat("the body (radius ", cm(r.needed), " m) is too wide for the passages on the way: a body of the navmesh's radius (",
-                      cm(r.has), " m) would get there; build a navmesh for this body");
-    case PathShortfall::AreasExcluded:
-        return "areas the request keeps the body out of (area_costs 0) stand in the way";
-    case PathShortfall::LinkBeyondBody: {
-        std::string out = link_words(r, r.link_kind);
-        switch (r.limit) {
-        case LinkLimit::JumpDistance:
-            return concat(out, ": it needs a jump of ", cm(r.needed), " m across, and the body jumps ", cm(r.has), " m (max_jump_distance)");
-        case LinkLimit::JumpHeight:
-            return concat(out, ": it needs a jump of ", cm(r.needed), " m up, and the body jumps ", cm(r.has), " m up (max_jump_height)");
-        case LinkLimit::DropHeight:
-            return concat(out, ": it needs a drop of ", cm(r.needed), " m, and the body drops ", cm(r.has), " m (max_drop_height)");
-        case LinkLimit::Width:
-            return concat(out, ": it is clear for a body ", cm(r.has), " m wide, and the body is ", cm(r.needed), " m wide (radius)");
-        case LinkLimit::Abilities:
-        case LinkLimit::None:
-            return concat(out, ": it needs abilities the body lacks (abilities 0x", std::hex, r.missing_abilities, ")");
+        case PathShortfall::None: return {};
+        case PathShortfall::OutOfNodes:
+            return concat("max_nodes (", query.max_nodes,
+                          ") stopped the search before it reached the goal: raise it, or 0 for no limit");
+        case PathShortfall::BodyTooWide:
+            return concat("the body (radius ", cm(r.needed),
+                          " m) is too wide for the passages on the way: a body of the navmesh's radius (", cm(r.has),
+                          " m) would get there; build a navmesh for this body");
+        case PathShortfall::AreasExcluded:
+            return "areas the request keeps the body out of (area_costs 0) stand in the way";
+        case PathShortfall::LinkBeyondBody: {
+            std::string out = link_words(r, r.link_kind);
+            switch (r.limit) {
+                case LinkLimit::JumpDistance:
+                    return concat(out, ": it needs a jump of ", cm(r.needed), " m across, and the body jumps ",
+                                  cm(r.has), " m (max_jump_distance)");
+                case LinkLimit::JumpHeight:
+                    return concat(out, ": it needs a jump of ", cm(r.needed), " m up, and the body jumps ", cm(r.has),
+                                  " m up (max_jump_height)");
+                case LinkLimit::DropHeight:
+                    return concat(out, ": it needs a drop of ", cm(r.needed), " m, and the body drops ", cm(r.has),
+                                  " m (max_drop_height)");
+                case LinkLimit::Width:
+                    return concat(out, ": it is clear for a body ", cm(r.has), " m wide, and the body is ",
+                                  cm(r.needed), " m wide (radius)");
+                case LinkLimit::Abilities:
+                case LinkLimit::None:
+                    return concat(out, ": it needs abilities the body lacks (abilities 0x", std::hex,
+                                  r.missing_abilities, ")");
+            }
+            return out;
         }
-        return out;
-    }
-    case PathShortfall::NoLinks:
-        return concat("the goal is on another island of the navmesh (", built_for(r),
-                      "), and the navmesh has no links: generate or load them");
-    case PathShortfall::NotConnected:
-        return concat("no passage or link leads to the goal, whatever the body could do (", built_for(r), ")");
+        case PathShortfall::NoLinks:
+            return concat("the goal is on another island of the navmesh (", built_for(r),
+                          "), and the navmesh has no links: generate or load them");
+        case PathShortfall::NotConnected:
+            return concat("no passage or link leads to the goal, whatever the body could do (", built_for(r), ")");
     }
     return {};
 }

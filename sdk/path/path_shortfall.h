@@ -18,13 +18,13 @@
 namespace nl {
 
 enum class PathShortfall : uint32_t {
-    None = 0,             // the path reaches the goal, or an end is off the navmesh (the outcome says so)
-    OutOfNodes = 1,       // max_nodes stopped the search
-    BodyTooWide = 2,      // a body of the navmesh's radius would get there: passages on the way are too narrow
-    AreasExcluded = 3,    // areas the request keeps the body out of (cost 0) stand in the way
-    LinkBeyondBody = 4,   // a link would get there, and the body cannot take it (`limit`)
-    NoLinks = 5,          // the goal is on another island of the navmesh, and the navmesh has no links
-    NotConnected = 6,     // no passage or link leads there, whatever the body could do
+    None = 0,            // the path reaches the goal, or an end is off the navmesh (the outcome says so)
+    OutOfNodes = 1,      // max_nodes stopped the search
+    BodyTooWide = 2,     // a body of the navmesh's radius would get there: passages on the way are too narrow
+    AreasExcluded = 3,   // areas the request keeps the body out of (cost 0) stand in the way
+    LinkBeyondBody = 4,  // a link would get there, and the body cannot take it (`limit`)
+    NoLinks = 5,         // the goal is on another island of the navmesh, and the navmesh has no links
+    NotConnected = 6,    // no passage or link leads there, whatever the body could do
 };
 
 struct PathShortfallReport {
@@ -35,11 +35,11 @@ struct PathShortfallReport {
     // radius and the navmesh's.
     float needed = 0.0f, has = 0.0f;
     uint64_t missing_abilities = 0;
-    Handle link;                        // LinkBeyondBody
+    Handle link;  // LinkBeyondBody
     LinkKind link_kind = LinkKind::Manual;
-    bool reversed = false;              // taken from its end to its start
-    Vec3 link_start = Vec3::Zero();     // where the body would take it (world)
-    float navmesh_radius = 0.0f;        // the body the navmesh was built for: it leaves out passages narrower
+    bool reversed = false;           // taken from its end to its start
+    Vec3 link_start = Vec3::Zero();  // where the body would take it (world)
+    float navmesh_radius = 0.0f;     // the body the navmesh was built for: it leaves out passages narrower
 };
 
 // `result` is what `query` planned to on `graph` (plan_path).

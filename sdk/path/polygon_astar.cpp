@@ -17,10 +17,10 @@ constexpr uint32_t kNone = 0xffffffffu;
 constexpr uint32_t kStraightenDepth = 1;
 
 struct SearchNode {
-    Vec3 position;  // where the corridor enters the polygon
+    Vec3 position;          // where the corridor enters the polygon
     PortalSpan entry_span;  // the portal it enters by (unset for the start and links)
-    float g;        // cost from the start to `position` (to the goal point for the goal polygon)
-    float f;        // g + heuristic
+    float g;                // cost from the start to `position` (to the goal point for the goal polygon)
+    float f;                // g + heuristic
     uint32_t parent;
     uint32_t entry;
     uint32_t epoch;  // the search that last touched the node; older means untouched
@@ -36,7 +36,8 @@ struct SearchScratch {
 
     uint32_t begin(uint32_t polygons) {
         if (nodes.size() < polygons)
-            nodes.resize(polygons, SearchNode{Vec3::Zero(), {Vec3::Zero(), Vec3::Zero()}, 0, 0, kNone, kNone, 0, kNone});
+            nodes.resize(polygons,
+                         SearchNode{Vec3::Zero(), {Vec3::Zero(), Vec3::Zero()}, 0, 0, kNone, kNone, 0, kNone});
         open.clear();
         if (++epoch == 0) {  // wrapped: old stamps could look current
             for (SearchNode& n : nodes) n.epoch = 0;
@@ -128,7 +129,8 @@ struct LineToGoal {
     Vec3 direction;  // goal - from
     float length2;   // direction . direction
 
-    LineToGoal(const Vec3& from_point, const Vec3& goal) : from(from_point), direction(goal - from_point), length2(direction.dot(direction)) {}
+    LineToGoal(const Vec3& from_point, const Vec3& goal)
+        : from(from_point), direction(goal - from_point), length2(direction.dot(direction)) {}
 };
 
 Vec3 crossing_point(const PortalSpan& span, const LineToGoal& line) {
@@ -172,34 +174,34 @@ void find_corridor(const PathGraph& graph, const PathQuery& query, const NavPoin
 
     float nearest_entry = std::numeric_limits<float>::infinity();  // bounds a partial path's end
     uint32_t nearest_entry_polygon = start.polygon;
-    auto relax = [&](uint32_t q, uint32_t parent, uint32_t entry, const Vec3& position, float g,
-                     const PortalSpan* span) NL_ALWAYS_INLINE {
-        SearchNode& n = nodes[q];
-        if (n.epoch != epoch) {
-            if (query.max_nodes != 0 && result.nodes_visited >= query.max_nodes) {
-                result.out_of_nodes = true;
-                return;
-            }
-            ++result.nodes_visited;
-            n.epoch = epoch;
-            n.heap = kNone;
-        } else if (g >= n.g) {
-            return;
-        }
-        n.position = position;
-        if (span) n.entry_span = *span;
-        n.g = g;
-        n.parent = parent;
-        n.entry = entry;
-        const float distance = (goal_point - position).norm();
-        n.f = q == goal.polygon ? g : g + distance * h_scale;
-        if (distance < nearest_entry) nearest_entry = distance, nearest_entry_polygon = q;
-        if (n.heap == kNone) {
-            open.push(q);
-        } else {
-            open.changed(q);
-        }
-    };
+    auto relax = [&](uint32_t q, uint32_t parent, uint32_t entry, const Vec3& position, float g, const PortalSpan* span)
+                     NL_ALWAYS_INLINE {
+                         SearchNode& n = nodes[q];
+                         if (n.epoch != epoch) {
+                             if (query.max_nodes != 0 && result.nodes_visited >= query.max_nodes) {
+                                 result.out_of_nodes = true;
+                                 return;
+                             }
+                             ++result.nodes_visited;
+                             n.epoch = epoch;
+                             n.heap = kNone;
+                         } else if (g >= n.g) {
+                             return;
+                         }
+                         n.position = position;
+                         if (span) n.entry_span = *span;
+                         n.g = g;
+                         n.parent = parent;
+                         n.entry = entry;
+                         const float distance = (goal_point - position).norm();
+                         n.f = q == goal.polygon ? g : g + distance * h_scale;
+                         if (distance < nearest_entry) nearest_entry = distance, nearest_entry_polygon = q;
+                         if (n.heap == kNone) {
+                             open.push(q);
+                         } else {
+                             open.changed(q);
+                         }
+                     };
 
     // Theta*-style: the cost to `crossing` straight from an earlier node, when the straight line
     // stays inside the corridor (passes through every portal between), up to kStraightenDepth
@@ -270,9 +272,11 @@ void find_corridor(const PathGraph& graph, const PathQuery& query, const NavPoin
             if (cost_there <= 0.0f) continue;
             const Vec3& from = exit->reversed ? link.end : link.start;
             const Vec3& to = exit->reversed ? link.start : link.end;
-            float g = g_here + (from - here).norm() * cost_here + (to - from).norm() * link.cost_modifier + query.link_cost;
+            float g =
+                g_here + (from - here).norm() * cost_here + (to - from).norm() * link.cost_modifier + query.link_cost;
             if (q == goal.polygon) g += (goal_point - to).norm() * cost_there;
-            const uint32_t entry = CorridorStep::kLinkBit | exit->link | (exit->reversed ? CorridorStep::kReversedBit : 0u);
+            const uint32_t entry =
+                CorridorStep::kLinkBit | exit->link | (exit->reversed ? CorridorStep::kReversedBit : 0u);
             relax(q, p, entry, to, g, nullptr);
         }
     }
@@ -285,7 +289,8 @@ void find_corridor(const PathGraph& graph, const PathQuery& query, const NavPoin
     // Costs never rise along a parent chain and a node only changes parent for a strictly lower cost,
     // so the chain leads back to the start; the bound only guards that.
     for (uint32_t p = last, guard = 0; p != kNone; p = nodes[p].parent) {
-        if (++guard > result.nodes_visited + 1) fail(ErrorCode::Internal, "path search: corridor does not lead back to the start");
+        if (++guard > result.nodes_visited + 1)
+            fail(ErrorCode::Internal, "path search: corridor does not lead back to the start");
         result.steps.push_back(CorridorStep{p, nodes[p].entry});
     }
     std::reverse(result.steps.begin(), result.steps.end());

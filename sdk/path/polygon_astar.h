@@ -34,8 +34,8 @@ struct CorridorSearch {
     bool cancelled = false;
     bool gave_up = false;  // the exact search stopped: its views could not be trusted (any_angle_search.h)
     uint32_t nodes_visited = 0;
-    uint32_t search_nodes = 0;         // the exact search's interval nodes (several per polygon); 0 for A*
-    float cost = 0.0f;                 // the search's own: to the goal point, or to where it entered its last polygon
+    uint32_t search_nodes = 0;  // the exact search's interval nodes (several per polygon); 0 for A*
+    float cost = 0.0f;          // the search's own: to the goal point, or to where it entered its last polygon
 };
 
 // How often a search looks at its cancel flag: a power of two, in expansions.

@@ -44,11 +44,11 @@ Components strongly_connected(const PathGraph& graph, const ReachabilityClass& b
     Components result;
     result.of.assign(polygons, kNoIsland);
     std::vector<uint32_t> order(polygons, kNoIsland), low(polygons, 0);
-    std::vector<uint32_t> stack;               // Tarjan's stack of open polygons
+    std::vector<uint32_t> stack;  // Tarjan's stack of open polygons
     std::vector<uint8_t> on_stack(polygons, 0);
     std::vector<std::pair<uint32_t, uint32_t>> calls;  // (polygon, next successor to look at)
-    std::vector<uint32_t> successors;          // of every polygon on `calls`, concatenated
-    std::vector<uint32_t> first_successor;     // per entry of `calls`: offset into `successors`
+    std::vector<uint32_t> successors;                  // of every polygon on `calls`, concatenated
+    std::vector<uint32_t> first_successor;             // per entry of `calls`: offset into `successors`
     uint32_t next_order = 0;
 
     auto open = [&](uint32_t p) {
@@ -229,8 +229,12 @@ ReachabilityMap::ReachabilityMap(const PathGraph& graph, const ReachabilityClass
     }
 }
 
-const uint32_t* ReachabilityMap::exits_begin(uint32_t polygon) const { return exits_.data() + first_exit_[excluded_index_[polygon]]; }
-const uint32_t* ReachabilityMap::exits_end(uint32_t polygon) const { return exits_.data() + first_exit_[excluded_index_[polygon] + 1]; }
+const uint32_t* ReachabilityMap::exits_begin(uint32_t polygon) const {
+    return exits_.data() + first_exit_[excluded_index_[polygon]];
+}
+const uint32_t* ReachabilityMap::exits_end(uint32_t polygon) const {
+    return exits_.data() + first_exit_[excluded_index_[polygon] + 1];
+}
 
 bool ReachabilityMap::island_reaches(uint32_t from, uint32_t to) const {
     if (from == to) return true;
@@ -274,7 +278,8 @@ bool ReachabilityMap::reaches(uint32_t from, uint32_t to) const {
 
 void ReachabilityMap::reachable_islands(uint32_t from, std::vector<uint8_t>& reached) const {
     if (island_of_[from] != kNoIsland) return mark_reachable(&island_of_[from], 1, reached);
-    mark_reachable(exits_begin(from), size_t(exits_end(from) - exits_begin(from)), reached);  // out of an excluded polygon
+    mark_reachable(exits_begin(from), size_t(exits_end(from) - exits_begin(from)),
+                   reached);  // out of an excluded polygon
 }
 
 void ReachabilityMap::reachable_polygons(uint32_t from, std::vector<uint32_t>& out) const {
@@ -283,7 +288,8 @@ void ReachabilityMap::reachable_polygons(uint32_t from, std::vector<uint32_t>& o
     reachable_islands(from, reached);
     if (island_of_[from] == kNoIsland) out.push_back(from);
     for (uint32_t i = 0; i < island_count_; ++i) {
-        if (reached[i]) out.insert(out.end(), polygons_.begin() + first_polygon_[i], polygons_.begin() + first_polygon_[i + 1]);
+        if (reached[i])
+            out.insert(out.end(), polygons_.begin() + first_polygon_[i], polygons_.begin() + first_polygon_[i + 1]);
     }
     std::sort(out.begin(), out.end());
 }

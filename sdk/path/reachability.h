@@ -23,11 +23,14 @@ struct ReachabilityClass {
     std::array<uint64_t, 4> excluded_areas{};  // bit a: area a is kept out of
     std::vector<uint64_t> takeable;            // bit 2 * link + reversed, for the graph's links
 
-    static ReachabilityClass of(const PathGraph& graph, const AgentCapabilities& agent, const std::vector<float>& area_costs);
+    static ReachabilityClass of(const PathGraph& graph, const AgentCapabilities& agent,
+                                const std::vector<float>& area_costs);
     // Bit a set for each area whose cost is 0 (or below: the C layer refuses those).
     static std::array<uint64_t, 4> excluded_areas_of(const std::vector<float>& area_costs);
     bool excludes(uint8_t area) const { return area_excluded(excluded_areas, area); }
-    static bool area_excluded(const std::array<uint64_t, 4>& mask, uint8_t area) { return (mask[area >> 6] >> (area & 63)) & 1u; }
+    static bool area_excluded(const std::array<uint64_t, 4>& mask, uint8_t area) {
+        return (mask[area >> 6] >> (area & 63)) & 1u;
+    }
     bool closes(uint32_t edge) const {
         return !closed_portals.empty() && ((closed_portals[edge >> 6] >> (edge & 63)) & 1u);
     }
@@ -36,7 +39,8 @@ struct ReachabilityClass {
         return (takeable[bit >> 6] >> (bit & 63)) & 1u;
     }
     bool operator==(const ReachabilityClass& other) const {
-        return closed_portals == other.closed_portals && excluded_areas == other.excluded_areas && takeable == other.takeable;
+        return closed_portals == other.closed_portals && excluded_areas == other.excluded_areas &&
+               takeable == other.takeable;
     }
 };
 
@@ -82,17 +86,17 @@ private:
     const uint32_t* exits_end(uint32_t polygon) const;
 
     uint32_t island_count_ = 0;
-    std::vector<uint32_t> island_of_;          // per polygon
-    std::vector<uint32_t> first_polygon_;      // island_count + 1 offsets into polygons_
-    std::vector<uint32_t> polygons_;           // by island, ascending within each
-    std::vector<uint32_t> first_successor_;    // island_count + 1 offsets into successors_ (the DAG)
+    std::vector<uint32_t> island_of_;        // per polygon
+    std::vector<uint32_t> first_polygon_;    // island_count + 1 offsets into polygons_
+    std::vector<uint32_t> polygons_;         // by island, ascending within each
+    std::vector<uint32_t> first_successor_;  // island_count + 1 offsets into successors_ (the DAG)
     std::vector<uint32_t> successors_;
-    std::vector<uint32_t> excluded_index_;     // per polygon: its row in first_exit_, or kNoIsland
-    std::vector<uint32_t> first_exit_;         // for excluded polygons: offsets into exits_
-    std::vector<uint32_t> exits_;              // islands
-    uint32_t linked_count_ = 0;                // islands with a link to or from another
-    std::vector<uint32_t> closure_row_;        // per island: its closure row, or kNoIsland
-    uint32_t closure_width_ = 0;               // 64-bit words per row
+    std::vector<uint32_t> excluded_index_;  // per polygon: its row in first_exit_, or kNoIsland
+    std::vector<uint32_t> first_exit_;      // for excluded polygons: offsets into exits_
+    std::vector<uint32_t> exits_;           // islands
+    uint32_t linked_count_ = 0;             // islands with a link to or from another
+    std::vector<uint32_t> closure_row_;     // per island: its closure row, or kNoIsland
+    uint32_t closure_width_ = 0;            // 64-bit words per row
     std::vector<uint64_t> closure_;
 };
 

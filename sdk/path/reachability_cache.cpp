@@ -77,7 +77,8 @@ uint64_t ReachabilityCache::next_id() {
     return next.fetch_add(1, std::memory_order_relaxed);
 }
 
-const ReachabilityMap* ReachabilityCache::ready(const AgentCapabilities& agent, const std::vector<float>& area_costs) const {
+const ReachabilityMap* ReachabilityCache::ready(const AgentCapabilities& agent,
+                                                const std::vector<float>& area_costs) const {
     // This thread's last answer: a map never changes for its graph, and the thread holds it (until
     // it asks about another graph).
     struct LastAnswer {
@@ -110,8 +111,9 @@ const ReachabilityMap* ReachabilityCache::ready(const AgentCapabilities& agent, 
 
 void ReachabilityCache::remember(const BodyEntry& body) {
     auto forget_oldest = [&] {
-        const auto oldest = std::min_element(bodies_.begin(), bodies_.end(),
-                                             [](const BodyEntry& a, const BodyEntry& b) { return a.last_used < b.last_used; });
+        const auto oldest =
+            std::min_element(bodies_.begin(), bodies_.end(),
+                             [](const BodyEntry& a, const BodyEntry& b) { return a.last_used < b.last_used; });
         bodies_.erase(oldest);
         classes_.erase(std::remove_if(classes_.begin(), classes_.end(),
                                       [](const std::shared_ptr<Class>& c) { return c.use_count() == 1; }),
@@ -126,8 +128,7 @@ void ReachabilityCache::remember(const BodyEntry& body) {
             if (c->map.wait_for(std::chrono::seconds(0)) != std::future_status::ready) continue;
             try {
                 total += c->map.get()->memory_bytes();
-            } catch (...) {
-            }
+            } catch (...) {}
         }
         return total;
     };
@@ -138,8 +139,9 @@ void ReachabilityCache::remember(const BodyEntry& body) {
 
 void ReachabilityCache::forget(const std::shared_ptr<Class>& map_class) {
     std::lock_guard<std::mutex> lock(mutex_);
-    bodies_.erase(std::remove_if(bodies_.begin(), bodies_.end(), [&](const BodyEntry& b) { return b.map_class == map_class; }),
-                  bodies_.end());
+    bodies_.erase(
+        std::remove_if(bodies_.begin(), bodies_.end(), [&](const BodyEntry& b) { return b.map_class == map_class; }),
+        bodies_.end());
     classes_.erase(std::remove(classes_.begin(), classes_.end(), map_class), classes_.end());
 }
 

@@ -12,14 +12,17 @@ thread_local bool generating_on_this_thread = false;
 
 NavMeshRegistry::GenerationOnThisThread::GenerationOnThisThread() {
     if (generating_on_this_thread)
-        fail(ErrorCode::InvalidArgument, "links cannot be generated or updated from inside another generation or update "
-                                         "(its progress callback or a plugin): it could wait for itself");
+        fail(ErrorCode::InvalidArgument,
+             "links cannot be generated or updated from inside another generation or update "
+             "(its progress callback or a plugin): it could wait for itself");
     generating_on_this_thread = true;
 }
 
 NavMeshRegistry::GenerationOnThisThread::~GenerationOnThisThread() { generating_on_this_thread = false; }
 
-NavMeshRegistry::GenerationTurn::GenerationTurn(std::shared_ptr<std::mutex> turn) : turn_(std::move(turn)) { turn_->lock(); }
+NavMeshRegistry::GenerationTurn::GenerationTurn(std::shared_ptr<std::mutex> turn) : turn_(std::move(turn)) {
+    turn_->lock();
+}
 
 NavMeshRegistry::GenerationTurn::~GenerationTurn() { turn_->unlock(); }
 
@@ -91,9 +94,8 @@ void NavMeshRegistry::remove(Handle navmesh) {
     navmeshes_.erase(navmesh);
     // The cross links that land on it lead nowhere now. Last: should one of these erasures fail to
     // allocate, the navmesh is gone all the same, and a link left behind never holds.
-    navmeshes_.for_each([&](Handle, Entry& other) {
-        erase_links(other, [&](const Link& l) { return l.landing_navmesh == navmesh; });
-    });
+    navmeshes_.for_each(
+        [&](Handle, Entry& other) { erase_links(other, [&](const Link& l) { return l.landing_navmesh == navmesh; }); });
 }
 
 bool NavMeshRegistry::contains(Handle navmesh) const {
@@ -187,8 +189,10 @@ void NavMeshRegistry::erase_links(Entry& e, Goes&& goes) {
     std::vector<Handle> kept;
     kept.reserve(e.link_ids.size());  // nothing below may throw once links are being erased
     for (Handle id : e.link_ids) {
-        if (!goes(links_.find(id)->link)) kept.push_back(id);
-        else links_.erase(id);
+        if (!goes(links_.find(id)->link))
+            kept.push_back(id);
+        else
+            links_.erase(id);
     }
     e.link_ids = std::move(kept);
     e.snapshot.reset();

@@ -37,7 +37,8 @@ struct LastGeneration {
 
 class NavMeshRegistry {
 public:
-    explicit NavMeshRegistry(uint32_t handle_tag) : navmeshes_(handle_tag, HandleKind::NavMesh), links_(handle_tag, HandleKind::Link) {}
+    explicit NavMeshRegistry(uint32_t handle_tag)
+        : navmeshes_(handle_tag, HandleKind::NavMesh), links_(handle_tag, HandleKind::Link) {}
 
     // Navmeshes. Lookups throw InvalidHandle for a null, removed or foreign handle.
     // `carrier`: the movable mesh the navmesh rides (null: none), the navmesh in its space, placed at
@@ -124,7 +125,8 @@ public:
     LastGeneration last_generation(Handle navmesh) const;
     // A generation's result: its links replace the generated ones and it becomes the last generation
     // (made with `made_with`).
-    void store_generation(Handle navmesh, LastGeneration last, const std::vector<Link>& generated, LinkProvenance made_with);
+    void store_generation(Handle navmesh, LastGeneration last, const std::vector<Link>& generated,
+                          LinkProvenance made_with);
     // An update's result: stored only while `from` is still the navmesh's last generation (not
     // forgotten by a removal or a load meanwhile); returns whether it was.
     bool store_update(Handle navmesh, const LinkGeneration* from, const std::vector<Link>& generated);
@@ -141,8 +143,8 @@ public:
 private:
     struct Entry {
         std::shared_ptr<const NavMesh> navmesh;
-        std::shared_ptr<CarrierFrame> frame;            // null: rides nothing
-        std::vector<Handle> link_ids;                   // in the order they were added
+        std::shared_ptr<CarrierFrame> frame;                   // null: rides nothing
+        std::vector<Handle> link_ids;                          // in the order they were added
         mutable std::shared_ptr<const LinkSnapshot> snapshot;  // null after an edit, until read
         mutable std::shared_ptr<const PathGraph> path_graph;   // for some snapshot; checked on read
         LastGeneration last;

@@ -24,9 +24,7 @@ struct Handle {
     bool is_null() const noexcept { return index1 == 0; }
     // Both halves in one number, as a hash key.
     uint64_t packed() const noexcept { return (uint64_t(index1) << 32) | revision; }
-    friend bool operator==(Handle a, Handle b) noexcept {
-        return a.index1 == b.index1 && a.revision == b.revision;
-    }
+    friend bool operator==(Handle a, Handle b) noexcept { return a.index1 == b.index1 && a.revision == b.revision; }
     friend bool operator!=(Handle a, Handle b) noexcept { return !(a == b); }
 };
 
@@ -65,9 +63,11 @@ public:
         } else {
             index = static_cast<uint32_t>(slots_.size());
             if (index >= kHandleSlotMask)
-                fail(ErrorCode::OutOfMemory, "more than ", kHandleSlotMask, " ids of one kind in use or retired at once");
+                fail(ErrorCode::OutOfMemory, "more than ", kHandleSlotMask,
+                     " ids of one kind in use or retired at once");
             // Room in free_ for every slot, grown geometrically: erase then never allocates (nor throws).
-            if (free_.capacity() <= slots_.size()) free_.reserve(std::max<size_t>(2 * free_.capacity(), slots_.size() + 16));
+            if (free_.capacity() <= slots_.size())
+                free_.reserve(std::max<size_t>(2 * free_.capacity(), slots_.size() + 16));
             slots_.push_back(Slot{});
         }
         Slot& slot = slots_[index];

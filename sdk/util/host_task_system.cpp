@@ -65,8 +65,8 @@ private:
         void check() {
             std::lock_guard lock(mutex_);
             if (host_error_)
-                fail(ErrorCode::Internal, "the host's task system ran items [", bad_begin_, ", ", bad_end_, ") on worker ",
-                     bad_worker_, " of a task of ", count_, " items with ", workers_,
+                fail(ErrorCode::Internal, "the host's task system ran items [", bad_begin_, ", ", bad_end_,
+                     ") on worker ", bad_worker_, " of a task of ", count_, " items with ", workers_,
                      " workers (each range must lie in [0, item count) and each worker index be below worker_count)");
             if (exception_) std::rethrow_exception(exception_);
             const uint64_t ran = ran_.load(std::memory_order_relaxed);

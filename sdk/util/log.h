@@ -22,12 +22,12 @@ public:
 
     bool wants(LogLevel level) const noexcept { return sink_ && level <= most_verbose_; }
     // Never throws: a failing sink loses the message, not the call that logs it.
-    void log(LogLevel level, const std::string& message, std::optional<ErrorCode> failure = std::nullopt) const noexcept {
+    void log(LogLevel level, const std::string& message,
+             std::optional<ErrorCode> failure = std::nullopt) const noexcept {
         if (!wants(level)) return;
         try {
             sink_(level, failure, message);
-        } catch (...) {
-        }
+        } catch (...) {}
     }
 
 private:

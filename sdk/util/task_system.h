@@ -28,8 +28,7 @@ public:
     // Calls body(begin, end) on disjoint ranges covering [0, count), each about `grain` long, possibly
     // in parallel; returns when all are done. An exception from a body is rethrown here. Bodies run
     // inside a TaskScope; they may call parallel_for again, but must not block on a lock.
-    virtual void parallel_for(uint32_t count, uint32_t grain,
-                              FunctionRef<void(uint32_t begin, uint32_t end)> body) = 0;
+    virtual void parallel_for(uint32_t count, uint32_t grain, FunctionRef<void(uint32_t begin, uint32_t end)> body) = 0;
 
     // Runs fn inside the task system's thread limit, so that parallelism inside libraries called by
     // fn (Embree's BVH builds) uses at most thread_count() threads. fn may run on another thread than

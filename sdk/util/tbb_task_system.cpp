@@ -17,8 +17,7 @@ public:
 
     int thread_count() const noexcept override { return threads_; }
 
-    void parallel_for(uint32_t count, uint32_t grain,
-                      FunctionRef<void(uint32_t, uint32_t)> body) override {
+    void parallel_for(uint32_t count, uint32_t grain, FunctionRef<void(uint32_t, uint32_t)> body) override {
         if (count == 0) return;
         grain = std::max<uint32_t>(1, grain);
         if (threads_ == 1 || count <= grain) {
@@ -29,14 +28,15 @@ public:
         char started = 0, finished = 0;  // ThreadSanitizer's view of what TBB guarantees
         tsan_release(&started);
         work_arena_.execute([&] {
-            tbb::parallel_for(tbb::blocked_range<uint32_t>(0, count, grain), [&](const tbb::blocked_range<uint32_t>& r) {
-                tsan_acquire(&started);
-                {
-                    TaskScope scope;
-                    body(r.begin(), r.end());
-                }
-                tsan_release(&finished);
-            });
+            tbb::parallel_for(tbb::blocked_range<uint32_t>(0, count, grain),
+                              [&](const tbb::blocked_range<uint32_t>& r) {
+                                  tsan_acquire(&started);
+                                  {
+                                      TaskScope scope;
+                                      body(r.begin(), r.end());
+                                  }
+                                  tsan_release(&finished);
+                              });
         });
         tsan_acquire(&finished);
     }
@@ -67,8 +67,6 @@ private:
 
 }  // namespace
 
-std::unique_ptr<TaskSystem> make_tbb_task_system(int threads) {
-    return std::make_unique<TbbTaskSystem>(threads);
-}
+std::unique_ptr<TaskSystem> make_tbb_task_system(int threads) { return std::make_unique<TbbTaskSystem>(threads); }
 
 }  // namespace nl

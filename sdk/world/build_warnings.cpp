@@ -25,7 +25,8 @@ std::string figure(float x) {
 
 void World::warn_of_level(const BuildTriangles& triangles, const AgentType& agent, NavMeshProvenance& made_for) const {
     made_for.turned_over_meshes = warn_turned_over(triangles, agent);
-    made_for.warnings = warn_of_frame(triangles, agent) | (made_for.turned_over_meshes.empty() ? 0u : uint32_t(kWarnedClockwise));
+    made_for.warnings =
+        warn_of_frame(triangles, agent) | (made_for.turned_over_meshes.empty() ? 0u : uint32_t(kWarnedClockwise));
 }
 
 std::vector<Handle> World::warn_turned_over(const BuildTriangles& triangles, const AgentType& agent) const {
@@ -37,21 +38,24 @@ std::vector<Handle> World::warn_turned_over(const BuildTriangles& triangles, con
         const size_t end = triangles.mesh_end(k);
         // An obstacle is never walked on, whichever way it faces.
         if (end == starts[k].first || triangles.areas[starts[k].first] == kObstacleArea) continue;
-        const WindingEstimate e = estimate_winding(triangles.mesh, starts[k].first, end - starts[k].first, agent.max_slope, agent.height);
+        const WindingEstimate e =
+            estimate_winding(triangles.mesh, starts[k].first, end - starts[k].first, agent.max_slope, agent.height);
         if (!looks_turned_over(e)) continue;
         turned.push_back(starts[k].mesh);
         as_given += e.floor_as_given;
         turned_over += e.floor_turned_over;
-        if (turned.size() <= 8) said += concat(turned.size() > 1 ? ", " : "", "{", starts[k].mesh.index1 & kHandleSlotMask, ", ",
-                                                starts[k].mesh.revision, "}");
+        if (turned.size() <= 8)
+            said += concat(turned.size() > 1 ? ", " : "", "{", starts[k].mesh.index1 & kHandleSlotMask, ", ",
+                           starts[k].mesh.revision, "}");
     }
     const bool one = turned.size() == 1;
     if (!turned.empty())
         logger_.log(LogLevel::Warning,
                     concat("the navmesh was built on ", turned.size(), one ? " mesh that looks" : " meshes that look",
                            " wound clockwise (nl_mesh_id ", said, turned.size() > 8 ? ", ..." : "", "): turned over, ",
-                           one ? "it" : "they", " would hold ", std::lround(turned_over), " m2 of floor for this agent, as given ",
-                           std::lround(as_given), " m2. A triangle's front is the side its corners run counter-clockwise from; "
+                           one ? "it" : "they", " would hold ", std::lround(turned_over),
+                           " m2 of floor for this agent, as given ", std::lround(as_given),
+                           " m2. A triangle's front is the side its corners run counter-clockwise from; "
                            "register meshes wound clockwise (Godot's) with NL_MESH_CLOCKWISE"));
     return turned;
 }
@@ -75,34 +79,41 @@ uint32_t World::warn_of_frame(const BuildTriangles& triangles, const AgentType& 
         }
     }
     const FrameEstimate e = estimate_frame(triangles.mesh, sized, floors, agent.max_slope, agent.height);
-    logger_.log(LogLevel::Debug, concat("the level's frame, measured for the agent: floor with y up ", std::lround(e.floor_y_up),
-                                        " m2, with z up ", std::lround(e.floor_z_up), " m2; walls ", figure(e.wall_height),
-                                        " m tall; ", figure(e.across), " m across"));
+    logger_.log(LogLevel::Debug,
+                concat("the level's frame, measured for the agent: floor with y up ", std::lround(e.floor_y_up),
+                       " m2, with z up ", std::lround(e.floor_z_up), " m2; walls ", figure(e.wall_height), " m tall; ",
+                       figure(e.across), " m across"));
     uint32_t warned = 0;
     if (looks_z_up(e)) {
         warned |= kWarnedZUp;
-        logger_.log(LogLevel::Warning,
-                    concat("the level looks as if z were its up axis: with z up it would hold ", std::lround(e.floor_z_up),
-                           " m2 of floor for this agent, with y up ", std::lround(e.floor_y_up),
-                           " m2. NavLink's y is up; register meshes made with z up (Blender's, 3ds Max's own frame) with "
-                           "nl_mesh_def.up_axis NL_UP_AXIS_Z, or NL_UP_AXIS_Y to say y is up"));
+        logger_.log(
+            LogLevel::Warning,
+            concat("the level looks as if z were its up axis: with z up it would hold ", std::lround(e.floor_z_up),
+                   " m2 of floor for this agent, with y up ", std::lround(e.floor_y_up),
+                   " m2. NavLink's y is up; register meshes made with z up (Blender's, 3ds Max's own frame) with "
+                   "nl_mesh_def.up_axis NL_UP_AXIS_Z, or NL_UP_AXIS_Y to say y is up"));
     }
     const std::string said_metres = "; a mesh registered with nl_mesh_def.metres_per_unit 1 says metres";
     if (looks_larger_than_metres(e, agent.height)) {
         warned |= kWarnedUnits;
-        logger_.log(LogLevel::Warning,
-                    concat("the level's walls are ", figure(e.wall_height), " m tall (the median by area of its triangles too steep "
-                           "to walk) for an agent ", figure(agent.height), " m tall, and the level is ", figure(e.across),
-                           " m across: are its units metres? Register meshes in other units with nl_mesh_def.metres_per_unit "
-                           "(0.01 for centimetres, 0.001 for millimetres, 0.0254 for inches)",
-                           said_metres));
+        logger_.log(
+            LogLevel::Warning,
+            concat("the level's walls are ", figure(e.wall_height),
+                   " m tall (the median by area of its triangles too steep "
+                   "to walk) for an agent ",
+                   figure(agent.height), " m tall, and the level is ", figure(e.across),
+                   " m across: are its units metres? Register meshes in other units with nl_mesh_def.metres_per_unit "
+                   "(0.01 for centimetres, 0.001 for millimetres, 0.0254 for inches)",
+                   said_metres));
     } else if (looks_smaller_than_metres(e, agent.height)) {
         warned |= kWarnedUnits;
-        logger_.log(LogLevel::Warning,
-                    concat("the whole level is ", figure(e.across), " m across, less than two agents are tall (", figure(agent.height),
-                           " m): are the level's units metres, and the agent's lengths? Register meshes in other units with "
-                           "nl_mesh_def.metres_per_unit (1000 for kilometres)",
-                           said_metres));
+        logger_.log(
+            LogLevel::Warning,
+            concat("the whole level is ", figure(e.across), " m across, less than two agents are tall (",
+                   figure(agent.height),
+                   " m): are the level's units metres, and the agent's lengths? Register meshes in other units with "
+                   "nl_mesh_def.metres_per_unit (1000 for kilometres)",
+                   said_metres));
     }
     return warned;
 }

@@ -15,7 +15,9 @@ namespace {
 // The area that marks which navmesh a polygon of the joined navmesh came from.
 constexpr uint8_t kFromFirst = 0, kFromSecond = 1;
 
-bool overlaps(const Aabb& a, const Aabb& b) { return (a.min.array() <= b.max.array()).all() && (b.min.array() <= a.max.array()).all(); }
+bool overlaps(const Aabb& a, const Aabb& b) {
+    return (a.min.array() <= b.max.array()).all() && (b.min.array() <= a.max.array()).all();
+}
 
 Aabb grown(Aabb box, const LinkSettings& s) {
     // As far as a link can reach: across a gap with its run-up, and down a drop or up a jump.
@@ -52,17 +54,19 @@ Link reversed(const Link& l) {
 
 }  // namespace
 
-LinkGenerationReport World::generate_cross_links(Handle first, Handle second, const LinkSettings& settings, float tolerance,
-                                                 GenerationProgress progress) {
+LinkGenerationReport World::generate_cross_links(Handle first, Handle second, const LinkSettings& settings,
+                                                 float tolerance, GenerationProgress progress) {
     const NavMeshRegistry::GenerationOnThisThread not_from_inside_another;
-    if (first == second) fail(ErrorCode::InvalidArgument, "the two navmeshes are one: its own links come from generate_links");
+    if (first == second)
+        fail(ErrorCode::InvalidArgument, "the two navmeshes are one: its own links come from generate_links");
     if (!(tolerance >= 0.0f) || !std::isfinite(tolerance))
         fail_field(ErrorCode::InvalidArgument, "tolerance", " is ", tolerance, " (must be finite and >= 0)");
     const std::shared_ptr<const NavMesh> a = navmeshes_.navmesh(first), b = navmeshes_.navmesh(second);
     const CarrierPose pa = pose_of(navmeshes_.frame(first)), pb = pose_of(navmeshes_.frame(second));
     if (!same_body(a->agent(), b->agent()))
-        fail(ErrorCode::InvalidArgument, "the two navmeshes were made for different bodies (radius ", a->agent().radius, " and ",
-             b->agent().radius, ", height ", a->agent().height, " and ", b->agent().height, "): a link between them fits neither");
+        fail(ErrorCode::InvalidArgument, "the two navmeshes were made for different bodies (radius ", a->agent().radius,
+             " and ", b->agent().radius, ", height ", a->agent().height, " and ", b->agent().height,
+             "): a link between them fits neither");
 
     // Told at once, even when the two are out of each other's reach and nothing is generated.
     if (!progress(0.0f, "cross links")) fail(ErrorCode::Cancelled, "cross link generation cancelled");
@@ -104,8 +108,10 @@ LinkGenerationReport World::generate_cross_links(Handle first, Handle second, co
     }
     // The links generated for this placement (those that hold now) are replaced; links placed for
     // another (a platform's other stop) stay for when it is back there.
-    navmeshes_.store_cross_links(first, second, [&](const Link& l) { return cross_link_holds(l, pa, pb); }, first_to_second);
-    navmeshes_.store_cross_links(second, first, [&](const Link& l) { return cross_link_holds(l, pb, pa); }, second_to_first);
+    navmeshes_.store_cross_links(
+        first, second, [&](const Link& l) { return cross_link_holds(l, pa, pb); }, first_to_second);
+    navmeshes_.store_cross_links(
+        second, first, [&](const Link& l) { return cross_link_holds(l, pb, pa); }, second_to_first);
     return report;
 }
 

@@ -22,9 +22,9 @@ class World;
 
 // What a navmesh build asks of a builder.
 struct NavMeshBuildRequest {
-    std::string builder;               // the builder's name
-    AgentType agent_type;                  // the body the navmesh is for
-    Handle carrier;                    // a movable mesh to build on, in its own space; null: the static level
+    std::string builder;                     // the builder's name
+    AgentType agent_type;                    // the body the navmesh is for
+    Handle carrier;                          // a movable mesh to build on, in its own space; null: the static level
     const void* builder_settings = nullptr;  // the builder's own settings struct, borrowed; opaque here
     // The builder's settings as JSON text, borrowed; null: none. Handed over as given (a null text
     // with a length is the builder's to refuse).
@@ -64,7 +64,8 @@ public:
     // navmesh (place_link) and throws when it does not fit (a provider over a C plugin tells the
     // plugin so); the World then refuses the whole generation. `settings_json`: the object given under
     // kind_name() in the generation's plugin settings, empty when none was. Throws its own failures.
-    virtual void propose(World& world, Handle navmesh, const std::string& settings_json, FunctionRef<void(Link)> accept) = 0;
+    virtual void propose(World& world, Handle navmesh, const std::string& settings_json,
+                         FunctionRef<void(Link)> accept) = 0;
 };
 
 struct PluginDescription {

@@ -18,8 +18,8 @@ Handle PluginRegistry::add(std::unique_ptr<Plugin> plugin) {
         if (other.description().name == described.name)
             fail(ErrorCode::InvalidArgument, "a plugin named '", described.name, "' is already loaded");
         if (kind && other.link_kind() && other.link_kind()->kind() == kind->kind())
-            fail(ErrorCode::InvalidArgument, "plugin '", described.name, "' claims link kind ", kind->kind(), ", which plugin '",
-                 other.description().name, "' has");
+            fail(ErrorCode::InvalidArgument, "plugin '", described.name, "' claims link kind ", kind->kind(),
+                 ", which plugin '", other.description().name, "' has");
     }
     order_.reserve(order_.size() + 1);  // nothing may throw once the plugin is in
     const Handle h = plugins_.insert(std::move(plugin));

@@ -28,9 +28,10 @@ World::~World() { paths_.shutdown(); }
 void World::log_repairs(const NavMesh& navmesh) const {
     const NavMeshRepairs& r = navmesh.repairs();
     if (r.flipped_polygons || r.dropped_polygons || r.non_manifold_edges) {
-        logger_.log(LogLevel::Warning, concat("repaired the navmesh: ", r.flipped_polygons, " polygons turned to face up, ",
-                                              r.dropped_polygons, " degenerate polygons dropped, ", r.non_manifold_edges,
-                                              " edges shared by 3+ polygons left unconnected"));
+        logger_.log(LogLevel::Warning,
+                    concat("repaired the navmesh: ", r.flipped_polygons, " polygons turned to face up, ",
+                           r.dropped_polygons, " degenerate polygons dropped, ", r.non_manifold_edges,
+                           " edges shared by 3+ polygons left unconnected"));
     }
 }
 
@@ -43,13 +44,15 @@ Transform World::carrier_placement(Handle carrier) const {
         fail_field(ErrorCode::InvalidHandle, "carrier", ": ", e.what());
     }
     if (!(info.flags & kMeshMovable))
-        fail_field(ErrorCode::InvalidArgument, "carrier", " is not a movable mesh (NL_MESH_MOVABLE): only those carry navmeshes");
+        fail_field(ErrorCode::InvalidArgument, "carrier",
+                   " is not a movable mesh (NL_MESH_MOVABLE): only those carry navmeshes");
     if (!is_rigid(info.transform)) fail_field(ErrorCode::InvalidArgument, "carrier", "'s transform", kNotRigid);
     return info.transform;
 }
 
 Handle World::add_on_carrier(std::shared_ptr<const NavMesh> navmesh, Handle carrier, NavMeshProvenance made_for) {
-    if (carrier == Handle{}) return navmeshes_.add(std::move(navmesh), Handle{}, Transform::Identity(), std::move(made_for));
+    if (carrier == Handle{})
+        return navmeshes_.add(std::move(navmesh), Handle{}, Transform::Identity(), std::move(made_for));
     std::lock_guard lock(carrier_moves_);
     return navmeshes_.add(std::move(navmesh), carrier, carrier_placement(carrier), std::move(made_for));
 }
@@ -95,17 +98,20 @@ void World::warn_if_wider_than_navmesh(const AgentDef& def) {
         std::lock_guard lock(wide_bodies_mutex_);
         if (!wide_bodies_warned_.insert({def.navmesh.packed(), radius}).second) return;
     }
-    logger_.log(LogLevel::Warning,
-                concat("agents of radius ", radius, " m on a navmesh built for radius ", navmesh_radius, " m (nl_navmesh_id {",
-                       def.navmesh.index1 & kHandleSlotMask, ", ", def.navmesh.revision, "}) keep ", radius - navmesh_radius,
-                       " m more from walls than the navmesh's edges, and cannot pass where the navmesh is narrower than ",
-                       2.0f * (radius - navmesh_radius), " m of width; when their paths fall short, nl_path_explain says "
-                       "whether that is why (a navmesh built for their radius serves them best)"));
+    logger_.log(
+        LogLevel::Warning,
+        concat("agents of radius ", radius, " m on a navmesh built for radius ", navmesh_radius, " m (nl_navmesh_id {",
+               def.navmesh.index1 & kHandleSlotMask, ", ", def.navmesh.revision, "}) keep ", radius - navmesh_radius,
+               " m more from walls than the navmesh's edges, and cannot pass where the navmesh is narrower than ",
+               2.0f * (radius - navmesh_radius),
+               " m of width; when their paths fall short, nl_path_explain says "
+               "whether that is why (a navmesh built for their radius serves them best)"));
 }
 
 void World::set_mesh_transform(Handle mesh, const Transform& transform) {
     std::lock_guard lock(carrier_moves_);
-    if (navmeshes_.carried_by(mesh) && !is_rigid(transform)) fail_field(ErrorCode::InvalidArgument, "transform", kNotRigid);
+    if (navmeshes_.carried_by(mesh) && !is_rigid(transform))
+        fail_field(ErrorCode::InvalidArgument, "transform", kNotRigid);
     level_->set_transform(mesh, transform);
     navmeshes_.move_carrier(mesh, transform);
 }
@@ -128,7 +134,8 @@ std::string settings_record(const std::string& name, const std::string& said) {
         fail(ErrorCode::Internal, "builder '", name, "' said it used settings that are not JSON: ", e.what());
     }
     if (!used.is_object())
-        fail(ErrorCode::Internal, "builder '", name, "' said it used settings that are not a JSON object: ", json_excerpt(used));
+        fail(ErrorCode::Internal, "builder '", name,
+             "' said it used settings that are not a JSON object: ", json_excerpt(used));
     return used.dump();
 }
 
@@ -171,7 +178,8 @@ Handle World::build_navmesh(const NavMeshBuildRequest& request) {
         throw;
     }
     fail_if_cancelled();
-    if (!built.navmesh) fail(ErrorCode::Internal, "builder '", request.builder, "' succeeded without handing over a navmesh");
+    if (!built.navmesh)
+        fail(ErrorCode::Internal, "builder '", request.builder, "' succeeded without handing over a navmesh");
     made_for.builder = request.builder;
     if (!built.settings_used.empty()) {
         made_for.builder_settings = settings_record(request.builder, built.settings_used);
@@ -193,9 +201,10 @@ Handle World::load_navmesh(const NavMeshFile& file, Handle carrier) {
     }
     if (file.rides_carrier != (carrier != Handle{}))
         fail_field(ErrorCode::InvalidArgument, "carrier: ",
-                   file.rides_carrier ? "the file's navmesh rode a moving mesh (its coordinates are in that mesh's space): "
-                                        "give the mesh it rides"
-                                      : "the file's navmesh rode no moving mesh (its coordinates are in the world)");
+                   file.rides_carrier
+                       ? "the file's navmesh rode a moving mesh (its coordinates are in that mesh's space): "
+                         "give the mesh it rides"
+                       : "the file's navmesh rode no moving mesh (its coordinates are in the world)");
     // What the file holds is not the caller's input: its failures say so, and are about no field.
     const auto in_the_file = [](const std::string& what, auto&& fn) {
         try {

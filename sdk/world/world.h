@@ -143,8 +143,8 @@ public:
     // tolerance, as often as the host likes. Both navmeshes must be made for the same body. Throws
     // InvalidHandle, InvalidArgument (one navmesh twice, another body, a bad tolerance), Cancelled
     // (nothing changes). Two calls for the same pair at once store one's result or the other's, whole.
-    LinkGenerationReport generate_cross_links(Handle first, Handle second, const LinkSettings& settings, float tolerance,
-                                              GenerationProgress progress);
+    LinkGenerationReport generate_cross_links(Handle first, Handle second, const LinkSettings& settings,
+                                              float tolerance, GenerationProgress progress);
     // Generates again what level geometry inside `box` can have changed, continuing the last
     // generation (the plugins' links are proposed again in full). Throws InvalidArgument for a box
     // not finite, beyond the coordinate limit or inverted, NotFound when there is no generation to

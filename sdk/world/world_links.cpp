@@ -42,10 +42,12 @@ void World::place_host_link(Handle navmesh, Link& link) const {
         fail_field(ErrorCode::InvalidHandle, "landing_navmesh", ": ", e.what());
     }
     if (link.landing_navmesh == navmesh)
-        fail_field(ErrorCode::InvalidArgument, "landing_navmesh", " is the link's own navmesh (leave it null for a link within it)");
+        fail_field(ErrorCode::InvalidArgument, "landing_navmesh",
+                   " is the link's own navmesh (leave it null for a link within it)");
     if (link.bidirectional)
-        fail_field(ErrorCode::InvalidArgument, "bidirectional", " is set on a link to another navmesh: such links are one-way "
-                                                                "(add one each way)");
+        fail_field(ErrorCode::InvalidArgument, "bidirectional",
+                   " is set on a link to another navmesh: such links are one-way "
+                   "(add one each way)");
     if (!(link.tolerance >= 0.0f) || !std::isfinite(link.tolerance))
         fail_field(ErrorCode::InvalidArgument, "tolerance", " is ", link.tolerance, " (must be finite and >= 0)");
     // Placed as the two navmeshes stand now: it holds while they stay so (cross_link_holds).
@@ -70,7 +72,8 @@ void World::update_link(Handle link, Link replacement) {
 
 Link World::in_world(Handle navmesh, const Link& link) const {
     const CarrierPose from = navmesh_pose(navmesh);
-    return link.crosses() ? nl::link_in_world(link, from, navmesh_pose(link.landing_navmesh)) : nl::link_in_world(link, from);
+    return link.crosses() ? nl::link_in_world(link, from, navmesh_pose(link.landing_navmesh))
+                          : nl::link_in_world(link, from);
 }
 
 std::pair<Handle, Link> World::link_in_world(Handle link) const {
@@ -84,8 +87,9 @@ bool World::link_holds(Handle navmesh, const Link& link) const {
 
 void World::refuse_generation_on_carrier(Handle navmesh) const {
     if (navmeshes_.frame(navmesh))
-        fail(ErrorCode::InvalidArgument, "links are not generated on a navmesh that rides a moving mesh (its links would "
-                                         "hold at one placement only): add its links with nl_link_add");
+        fail(ErrorCode::InvalidArgument,
+             "links are not generated on a navmesh that rides a moving mesh (its links would "
+             "hold at one placement only): add its links with nl_link_add");
 }
 
 void World::load_links(Handle navmesh, std::vector<Link> links, LinkProvenance made_with) {
@@ -101,9 +105,9 @@ void World::load_links_file(Handle navmesh, LinksFile file, bool any_body) {
         const auto mesh = navmeshes_.navmesh(navmesh);
         const AgentType ours = mesh->agent(), theirs = file.made_for->agent_type;
         if (!same_body(ours, theirs)) {
-            const std::string why = concat("the links were generated for a body of radius ", theirs.radius, " m and height ",
-                                           theirs.height, " m; this navmesh was built for radius ", ours.radius,
-                                           " m and height ", ours.height, " m");
+            const std::string why =
+                concat("the links were generated for a body of radius ", theirs.radius, " m and height ", theirs.height,
+                       " m; this navmesh was built for radius ", ours.radius, " m and height ", ours.height, " m");
             if (!any_body)
                 fail(ErrorCode::InvalidArgument, why,
                      ": generate links for this navmesh, or load them anyway with NL_LINKS_LOAD_ANY_BODY");
@@ -112,7 +116,8 @@ void World::load_links_file(Handle navmesh, LinksFile file, bool any_body) {
     }
     // Made for another level (both hashes known and unequal): a link end off the navmesh is most
     // likely why, and the failure says so; links that do fit load, with a warning.
-    const uint64_t ours = navmeshes_.made_for(navmesh).level_hash, theirs = file.made_for ? file.made_for->level_hash : 0;
+    const uint64_t ours = navmeshes_.made_for(navmesh).level_hash,
+                   theirs = file.made_for ? file.made_for->level_hash : 0;
     const bool other_level = ours != 0 && theirs != 0 && ours != theirs;
     const std::string level_words =
         other_level ? concat("these links were made for another level (level hash ", level_hash_text(theirs),
@@ -124,7 +129,8 @@ void World::load_links_file(Handle navmesh, LinksFile file, bool any_body) {
         if (!other_level || e.code() != ErrorCode::InvalidArgument) throw;
         throw Error(e.code(), concat(level_words, ": ", e.what()));
     }
-    if (other_level) logger_.log(LogLevel::Warning, concat(level_words, ": every end lies on this navmesh, so they were loaded"));
+    if (other_level)
+        logger_.log(LogLevel::Warning, concat(level_words, ": every end lies on this navmesh, so they were loaded"));
 }
 
 World::PluginLinks World::plugin_links(Handle navmesh, const NavMesh& mesh, const PluginSettings& settings,
@@ -137,8 +143,8 @@ World::PluginLinks World::plugin_links(Handle navmesh, const NavMesh& mesh, cons
         auto accept = [&](Link link) {
             try {
                 if (static_cast<uint32_t>(link.kind) != provider.kind())
-                    fail(ErrorCode::InvalidArgument, "its kind is ", static_cast<uint32_t>(link.kind), ", not the plugin's kind ",
-                         provider.kind());
+                    fail(ErrorCode::InvalidArgument, "its kind is ", static_cast<uint32_t>(link.kind),
+                         ", not the plugin's kind ", provider.kind());
                 place_link(mesh, link);
             } catch (const Error& e) {
                 if (e.code() != ErrorCode::OutOfMemory && refusal.empty()) refusal = e.what();
@@ -158,12 +164,13 @@ World::PluginLinks World::plugin_links(Handle navmesh, const NavMesh& mesh, cons
             if (refusal.empty()) throw;  // its own failure
         }
         if (!refusal.empty())
-            fail(ErrorCode::Internal, "link-kind plugin '", plugin->description().name, "' proposed a link that was refused: ",
-                 refusal);
+            fail(ErrorCode::Internal, "link-kind plugin '", plugin->description().name,
+                 "' proposed a link that was refused: ", refusal);
     }
     report.plugin_links = static_cast<uint32_t>(out.size());
     // Names and versions come from plugins: bytes that are not UTF-8 are kept as U+FFFD.
-    return {std::move(out), ran.empty() ? std::string() : ran.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace)};
+    return {std::move(out),
+            ran.empty() ? std::string() : ran.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace)};
 }
 
 void World::check_plugin_settings(const PluginSettings& settings) const {
@@ -196,18 +203,21 @@ LinkGenerationReport World::update_links_in_box(Handle navmesh, const Aabb& box,
     const std::shared_ptr<const NavMesh> mesh = navmeshes_.navmesh(navmesh);
     refuse_generation_on_carrier(navmesh);
     if (!within_coordinate_limit(box.min) || !within_coordinate_limit(box.max) || box.empty())
-        fail(ErrorCode::InvalidArgument, "the box's corners must be finite, within the coordinate limit, and min <= max");
+        fail(ErrorCode::InvalidArgument,
+             "the box's corners must be finite, within the coordinate limit, and min <= max");
     const NavMeshRegistry::GenerationTurn one_at_a_time = navmeshes_.take_generation_turn(navmesh);
     const LastGeneration last = navmeshes_.last_generation(navmesh);
     if (!last.generation)
-        fail(ErrorCode::NotFound, "the navmesh has no generation to update (never generated, or its generated links were "
-                                  "removed or replaced by a JSON load since): generate its links first");
+        fail(ErrorCode::NotFound,
+             "the navmesh has no generation to update (never generated, or its generated links were "
+             "removed or replaced by a JSON load since): generate its links first");
     LinkGenerationReport report;
     std::vector<Link> links = last.generation->update(box, *level_, *tasks_, report, progress);
     const PluginLinks extra = plugin_links(navmesh, *mesh, last.plugin_settings, report);
     links.insert(links.end(), extra.links.begin(), extra.links.end());
     if (!navmeshes_.store_update(navmesh, last.generation.get(), links))
-        fail(ErrorCode::NotFound, "the navmesh's generated links were removed or replaced by a JSON load during the update");
+        fail(ErrorCode::NotFound,
+             "the navmesh's generated links were removed or replaced by a JSON load during the update");
     return report;
 }
 

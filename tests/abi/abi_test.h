@@ -25,7 +25,8 @@
 #include <navlink/navlink.h>
 
 /* An nl_path_process budget of requests and milliseconds, as a pointer (C11 compound literal). */
-#define NL_TEST_BUDGET(requests, milliseconds) (&(nl_path_budget){sizeof(nl_path_budget), (requests), (milliseconds), 0})
+#define NL_TEST_BUDGET(requests, milliseconds) \
+    (&(nl_path_budget){sizeof(nl_path_budget), (requests), (milliseconds), 0})
 
 #include <stddef.h>
 
@@ -83,12 +84,14 @@ typedef struct abi_section {
     size_t count;
 } abi_section;
 
-#define ABI_CASE(fn) {#fn, fn}
+#define ABI_CASE(fn) \
+    { #fn, fn }
 
 /* Defines the section `abi_section_<name>` (listed in abi_tests.c) with the cases given. */
-#define ABI_SECTION(name, ...)                                  \
-    static const abi_case abi_cases_##name[] = {__VA_ARGS__}; \
-    const abi_section abi_section_##name = {#name, abi_cases_##name, sizeof abi_cases_##name / sizeof abi_cases_##name[0]}
+#define ABI_SECTION(name, ...)                                       \
+    static const abi_case abi_cases_##name[] = {__VA_ARGS__};        \
+    const abi_section abi_section_##name = {#name, abi_cases_##name, \
+                                            sizeof abi_cases_##name / sizeof abi_cases_##name[0]}
 
 /* The directory of the shared levels (dungeon.obj), or NULL when the test was given none. */
 const char* abi_levels_dir(void);

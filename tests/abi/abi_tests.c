@@ -71,20 +71,19 @@ int check_at(int ok, const char* file, int line, const char* what, ...) {
 }
 
 int check_ok_at(nl_status got, const char* expr, const char* file, int line) {
-    return check_at(got == NL_STATUS_SUCCESS && nl_get_last_status() == NL_STATUS_SUCCESS &&
-                        nl_get_last_error_message()[0] == '\0',
-                    file, line, "%s returned 0x%08x (%s): %s", expr, (unsigned)got, nl_status_string(got),
-                    nl_get_last_error_message());
+    return check_at(
+        got == NL_STATUS_SUCCESS && nl_get_last_status() == NL_STATUS_SUCCESS && nl_get_last_error_message()[0] == '\0',
+        file, line, "%s returned 0x%08x (%s): %s", expr, (unsigned)got, nl_status_string(got),
+        nl_get_last_error_message());
 }
 
 int check_fail_at(nl_status got, nl_status detail, const char* needle, const char* expr, const char* file, int line) {
     const nl_status expected = NL_STATUS_FAILURE | detail;
     const char* message = nl_get_last_error_message();
-    return check_at(got == expected && nl_get_last_status() == expected && message != NULL &&
-                        strstr(message, needle) != NULL,
-                    file, line, "%s returned 0x%08x (%s), expected 0x%08x (%s) with a message containing \"%s\"",
-                    expr, (unsigned)got, nl_status_string(got), (unsigned)expected, nl_status_string(expected),
-                    needle);
+    return check_at(
+        got == expected && nl_get_last_status() == expected && message != NULL && strstr(message, needle) != NULL, file,
+        line, "%s returned 0x%08x (%s), expected 0x%08x (%s) with a message containing \"%s\"", expr, (unsigned)got,
+        nl_status_string(got), (unsigned)expected, nl_status_string(expected), needle);
 }
 
 int check_near_at(double a, double b, double tol, const char* ea, const char* eb, const char* file, int line) {
@@ -144,14 +143,14 @@ static _Noreturn void finish_case(int skipped) {
         fprintf(stderr, "FAILED [%s]: the case made no check\n", g_section);
         status = EXIT_FAILURE;
     }
-    if (g_report < 0) printf("%s: %d passed, %d failed%s\n", g_section, g_passed, g_failed, skipped ? " (skipped)" : "");
+    if (g_report < 0)
+        printf("%s: %d passed, %d failed%s\n", g_section, g_passed, g_failed, skipped ? " (skipped)" : "");
     fflush(stdout);
     fflush(stderr);
     if (g_report >= 0) {
         char line[64];
         const int n = snprintf(line, sizeof line, "%d %d\n", g_passed, g_failed);
-        if (n > 0 && write(g_report, line, (size_t)n) != n) {
-        }
+        if (n > 0 && write(g_report, line, (size_t)n) != n) {}
         close(g_report);
     }
     exit(status);
@@ -241,7 +240,8 @@ static int run_all(void) {
                 run_case(name, &k_sections[s]->cases[c]);
             }
             close(fds[1]);
-            while (got < sizeof counts - 1 && (n = read(fds[0], counts + got, sizeof counts - 1 - got)) > 0) got += (size_t)n;
+            while (got < sizeof counts - 1 && (n = read(fds[0], counts + got, sizeof counts - 1 - got)) > 0)
+                got += (size_t)n;
             counts[got] = '\0';
             close(fds[0]);
             if (waitpid(pid, &status, 0) != pid) status = -1;

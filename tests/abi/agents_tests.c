@@ -30,7 +30,8 @@ static void add_quad(float* v, uint32_t* idx, uint8_t* counts, uint32_t* nv, uin
 }
 
 static gap_level make_gap_level(int32_t workers) {
-    static const float lo[3][3] = {{0, -1, 0}, {6, -1, 0}, {4, -1, 8}}, hi[3][3] = {{4, 0, 10}, {10, 0, 10}, {6, 0, 10}};
+    static const float lo[3][3] = {{0, -1, 0}, {6, -1, 0}, {4, -1, 8}},
+                       hi[3][3] = {{4, 0, 10}, {10, 0, 10}, {6, 0, 10}};
     static const float a1[4][2] = {{0.3f, 0.3f}, {0.3f, 8}, {3.7f, 8}, {3.7f, 0.3f}};
     static const float a2[5][2] = {{0.3f, 8}, {0.3f, 9.7f}, {4, 9.7f}, {4, 8}, {3.7f, 8}};
     static const float bridge[4][2] = {{4, 8}, {4, 9.7f}, {6, 9.7f}, {6, 8}};
@@ -127,7 +128,8 @@ static void walker_and_jumper(void) {
         CHECK_OK(nl_world_get_agents(g.world, infos, 4, &n));
         CHECK(n == 2u);
         for (k = 0; k < n; ++k) {
-            if (same_agent(infos[k].id, walker) && infos[k].position[2] > walker_max_z) walker_max_z = infos[k].position[2];
+            if (same_agent(infos[k].id, walker) && infos[k].position[2] > walker_max_z)
+                walker_max_z = infos[k].position[2];
             if (same_agent(infos[k].id, jumper) && infos[k].state == NL_AGENT_JUMPING) {
                 nl_agent_trajectory t = nl_agent_trajectory_init();
                 CHECK_OK(nl_agent_get_trajectory(g.world, jumper, &t));
@@ -237,7 +239,9 @@ static void same_on_any_thread_count(void) {
         }
         nl_world_destroy(g.world);
     }
-    CHECK_MSG(memcmp(result[0], result[1], 30 * sizeof result[0][0]) == 0, "1 and 2 workers moved the agents differently");
+    CHECK_MSG(memcmp(result[0], result[1], 30 * sizeof result[0][0]) == 0,
+              "1 and 2 workers moved the agents differently");
 }
 
-ABI_SECTION(agents, ABI_CASE(defaults), ABI_CASE(walker_and_jumper), ABI_CASE(bad_input), ABI_CASE(same_on_any_thread_count));
+ABI_SECTION(agents, ABI_CASE(defaults), ABI_CASE(walker_and_jumper), ABI_CASE(bad_input),
+            ABI_CASE(same_on_any_thread_count));

@@ -95,13 +95,14 @@ _Static_assert(offsetof(nl_navmesh_load_def, size) == 0 && offsetof(nl_navmesh_l
                "nl_navmesh_load_def layout");
 _Static_assert(offsetof(nl_navmesh_file_info, size) == 0 && offsetof(nl_navmesh_file_info, version) == 4 &&
                    offsetof(nl_navmesh_file_info, file_size) == 8 && offsetof(nl_navmesh_file_info, agent_type) == 16 &&
-                   offsetof(nl_navmesh_file_info, vertex_count) == 32 && offsetof(nl_navmesh_file_info, polygon_count) == 36 &&
+                   offsetof(nl_navmesh_file_info, vertex_count) == 32 &&
+                   offsetof(nl_navmesh_file_info, polygon_count) == 36 &&
                    offsetof(nl_navmesh_file_info, detail_triangle_count) == 40 &&
                    offsetof(nl_navmesh_file_info, link_count) == 44 &&
                    offsetof(nl_navmesh_file_info, generated_link_count) == 48 &&
-                   offsetof(nl_navmesh_file_info, rides_carrier) == 52 && offsetof(nl_navmesh_file_info, quantum) == 56 &&
-                   offsetof(nl_navmesh_file_info, reserved) == 60 && offsetof(nl_navmesh_file_info, level_hash) == 64 &&
-                   sizeof(nl_navmesh_file_info) == 72,
+                   offsetof(nl_navmesh_file_info, rides_carrier) == 52 &&
+                   offsetof(nl_navmesh_file_info, quantum) == 56 && offsetof(nl_navmesh_file_info, reserved) == 60 &&
+                   offsetof(nl_navmesh_file_info, level_hash) == 64 && sizeof(nl_navmesh_file_info) == 72,
                "nl_navmesh_file_info layout");
 _Static_assert(offsetof(nl_navmesh_info, vertex_count) == 4 && offsetof(nl_navmesh_info, polygon_count) == 8 &&
                    offsetof(nl_navmesh_info, portal_count) == 12 &&
@@ -109,8 +110,9 @@ _Static_assert(offsetof(nl_navmesh_info, vertex_count) == 4 && offsetof(nl_navme
                    offsetof(nl_navmesh_info, welded_vertex_count) == 20 &&
                    offsetof(nl_navmesh_info, flipped_polygon_count) == 24 &&
                    offsetof(nl_navmesh_info, dropped_polygon_count) == 28 &&
-                   offsetof(nl_navmesh_info, non_manifold_edge_count) == 32 && offsetof(nl_navmesh_info, agent_type) == 36 &&
-                   offsetof(nl_navmesh_info, bounds_min) == 52 && offsetof(nl_navmesh_info, bounds_max) == 64 &&
+                   offsetof(nl_navmesh_info, non_manifold_edge_count) == 32 &&
+                   offsetof(nl_navmesh_info, agent_type) == 36 && offsetof(nl_navmesh_info, bounds_min) == 52 &&
+                   offsetof(nl_navmesh_info, bounds_max) == 64 &&
                    offsetof(nl_navmesh_info, turned_over_mesh_count) == 84 && sizeof(nl_navmesh_info) == 92,
                "nl_navmesh_info");
 _Static_assert(offsetof(nl_recast_settings, cell_size) == 4 && offsetof(nl_recast_settings, cell_height) == 8 &&
@@ -146,8 +148,7 @@ _Static_assert(offsetof(nl_navmesh_build_def, builder) == 8 && offsetof(nl_navme
                "nl_navmesh_build_def on LP64");
 _Static_assert(offsetof(nl_plugin_description, abi_version) == 4 && offsetof(nl_plugin_description, kinds) == 8 &&
                    offsetof(nl_plugin_description, builtin) == 12 && offsetof(nl_plugin_description, name) == 16 &&
-                   offsetof(nl_plugin_description, version) == 24 &&
-                   offsetof(nl_plugin_description, description) == 32,
+                   offsetof(nl_plugin_description, version) == 24 && offsetof(nl_plugin_description, description) == 32,
                "nl_plugin_description on LP64");
 _Static_assert(offsetof(nl_plugin_host, abi_version) == 4 && offsetof(nl_plugin_host, context) == 8 &&
                    offsetof(nl_plugin_host, log) == 16 && offsetof(nl_plugin_host, set_error) == 24 &&
@@ -162,18 +163,19 @@ _Static_assert(offsetof(nl_plugin_info, abi_version) == 4 && offsetof(nl_plugin_
 
 /* Agents: growable outputs, no hidden padding. */
 _Static_assert(sizeof(nl_agent_id) == 8 && offsetof(nl_agent_id, revision) == 4, "nl_agent_id");
-_Static_assert(offsetof(nl_agent_info, state) == 4 && offsetof(nl_agent_info, id) == 8 && offsetof(nl_agent_info, position) == 16 &&
-                   offsetof(nl_agent_info, velocity) == 28 && offsetof(nl_agent_info, polygon) == 40 &&
-                   offsetof(nl_agent_info, reason) == 44 && offsetof(nl_agent_info, link) == 48 &&
-                   offsetof(nl_agent_info, link_progress) == 56 && offsetof(nl_agent_info, destination) == 60 &&
-                   offsetof(nl_agent_info, has_destination) == 72 && offsetof(nl_agent_info, corners_ahead) == 76 &&
-                   offsetof(nl_agent_info, user_data) == 80 && offsetof(nl_agent_info, navmesh) == 88 &&
-                   offsetof(nl_agent_info, carrier) == 96 && offsetof(nl_agent_info, carrier_position) == 104 &&
-                   offsetof(nl_agent_info, reserved2) == 116 && sizeof(nl_agent_info) == 120,
+_Static_assert(offsetof(nl_agent_info, state) == 4 && offsetof(nl_agent_info, id) == 8 &&
+                   offsetof(nl_agent_info, position) == 16 && offsetof(nl_agent_info, velocity) == 28 &&
+                   offsetof(nl_agent_info, polygon) == 40 && offsetof(nl_agent_info, reason) == 44 &&
+                   offsetof(nl_agent_info, link) == 48 && offsetof(nl_agent_info, link_progress) == 56 &&
+                   offsetof(nl_agent_info, destination) == 60 && offsetof(nl_agent_info, has_destination) == 72 &&
+                   offsetof(nl_agent_info, corners_ahead) == 76 && offsetof(nl_agent_info, user_data) == 80 &&
+                   offsetof(nl_agent_info, navmesh) == 88 && offsetof(nl_agent_info, carrier) == 96 &&
+                   offsetof(nl_agent_info, carrier_position) == 104 && offsetof(nl_agent_info, reserved2) == 116 &&
+                   sizeof(nl_agent_info) == 120,
                "nl_agent_info layout");
-_Static_assert(offsetof(nl_agent_event, kind) == 4 && offsetof(nl_agent_event, agent) == 8 && offsetof(nl_agent_event, link) == 16 &&
-                   offsetof(nl_agent_event, reason) == 24 && offsetof(nl_agent_event, user_data) == 32 &&
-                   sizeof(nl_agent_event) == 40,
+_Static_assert(offsetof(nl_agent_event, kind) == 4 && offsetof(nl_agent_event, agent) == 8 &&
+                   offsetof(nl_agent_event, link) == 16 && offsetof(nl_agent_event, reason) == 24 &&
+                   offsetof(nl_agent_event, user_data) == 32 && sizeof(nl_agent_event) == 40,
                "nl_agent_event layout");
 _Static_assert(offsetof(nl_agent_trajectory, link) == 8 && offsetof(nl_agent_trajectory, from) == 16 &&
                    offsetof(nl_agent_trajectory, points) == 52 && offsetof(nl_agent_trajectory, duration) == 100 &&
@@ -204,58 +206,61 @@ _Static_assert(offsetof(nl_link, size) == 0 && offsetof(nl_link, kind) == 4 && o
                    offsetof(nl_link, reserved3) == 133 && sizeof(nl_link) == 136,
                "nl_link layout (no hidden padding)");
 /* Growable link structs: only today's offsets are fixed. */
-_Static_assert(offsetof(nl_link_def, size) == 0 && offsetof(nl_link_def, kind) == 4 && offsetof(nl_link_def, start) == 8 &&
-                   offsetof(nl_link_def, end) == 20 && offsetof(nl_link_def, bidirectional) == 32 &&
-                   offsetof(nl_link_def, enabled) == 33 && offsetof(nl_link_def, requirements_as_given) == 34 &&
-                   offsetof(nl_link_def, reserved) == 35 &&
+_Static_assert(offsetof(nl_link_def, size) == 0 && offsetof(nl_link_def, kind) == 4 &&
+                   offsetof(nl_link_def, start) == 8 && offsetof(nl_link_def, end) == 20 &&
+                   offsetof(nl_link_def, bidirectional) == 32 && offsetof(nl_link_def, enabled) == 33 &&
+                   offsetof(nl_link_def, requirements_as_given) == 34 && offsetof(nl_link_def, reserved) == 35 &&
                    offsetof(nl_link_def, cost_modifier) == 36 && offsetof(nl_link_def, user_data) == 40 &&
                    offsetof(nl_link_def, requirements) == 48 && offsetof(nl_link_def, landing_navmesh) == 80 &&
-                   offsetof(nl_link_def, tolerance) == 88 && offsetof(nl_link_def, reserved2) == 92 && sizeof(nl_link_def) == 96,
+                   offsetof(nl_link_def, tolerance) == 88 && offsetof(nl_link_def, reserved2) == 92 &&
+                   sizeof(nl_link_def) == 96,
                "nl_link_def");
-_Static_assert(offsetof(nl_link_settings, size) == 0 && offsetof(nl_link_settings, min_edge_length) == 4 &&
-                   offsetof(nl_link_settings, min_group_size) == 8 && offsetof(nl_link_settings, max_group_size) == 12 &&
-                   offsetof(nl_link_settings, sample_spacing) == 16 &&
-                   offsetof(nl_link_settings, falloff_distance) == 20 &&
-                   offsetof(nl_link_settings, max_jump_gap) == 24 &&
-                   offsetof(nl_link_settings, min_link_distance) == 28 &&
-                   offsetof(nl_link_settings, short_link_distance) == 32 &&
-                   offsetof(nl_link_settings, max_jump_up) == 36 && offsetof(nl_link_settings, jump_arc_height) == 40 &&
-                   offsetof(nl_link_settings, strict_forward_angle) == 44 &&
-                   offsetof(nl_link_settings, permissive_forward_angle) == 48 &&
-                   offsetof(nl_link_settings, strict_incline_angle) == 52 &&
-                   offsetof(nl_link_settings, permissive_incline_angle) == 56 &&
-                   offsetof(nl_link_settings, max_drop_distance) == 60 &&
-                   offsetof(nl_link_settings, drop_angles) == 64 &&
-                   sizeof(((nl_link_settings*)0)->drop_angles) == 16 * sizeof(float) &&
-                   offsetof(nl_link_settings, drop_angle_count) == 128 &&
-                   offsetof(nl_link_settings, drop_steepness) == 132 &&
-                   offsetof(nl_link_settings, merge_distance) == 136 &&
-                   offsetof(nl_link_settings, clearance_margin) == 140 &&
-                   offsetof(nl_link_settings, arc_segments) == 144,
-               "nl_link_settings");
+_Static_assert(
+    offsetof(nl_link_settings, size) == 0 && offsetof(nl_link_settings, min_edge_length) == 4 &&
+        offsetof(nl_link_settings, min_group_size) == 8 && offsetof(nl_link_settings, max_group_size) == 12 &&
+        offsetof(nl_link_settings, sample_spacing) == 16 && offsetof(nl_link_settings, falloff_distance) == 20 &&
+        offsetof(nl_link_settings, max_jump_gap) == 24 && offsetof(nl_link_settings, min_link_distance) == 28 &&
+        offsetof(nl_link_settings, short_link_distance) == 32 && offsetof(nl_link_settings, max_jump_up) == 36 &&
+        offsetof(nl_link_settings, jump_arc_height) == 40 && offsetof(nl_link_settings, strict_forward_angle) == 44 &&
+        offsetof(nl_link_settings, permissive_forward_angle) == 48 &&
+        offsetof(nl_link_settings, strict_incline_angle) == 52 &&
+        offsetof(nl_link_settings, permissive_incline_angle) == 56 &&
+        offsetof(nl_link_settings, max_drop_distance) == 60 && offsetof(nl_link_settings, drop_angles) == 64 &&
+        sizeof(((nl_link_settings*)0)->drop_angles) == 16 * sizeof(float) &&
+        offsetof(nl_link_settings, drop_angle_count) == 128 && offsetof(nl_link_settings, drop_steepness) == 132 &&
+        offsetof(nl_link_settings, merge_distance) == 136 && offsetof(nl_link_settings, clearance_margin) == 140 &&
+        offsetof(nl_link_settings, arc_segments) == 144,
+    "nl_link_settings");
 _Static_assert(offsetof(nl_link_generation_report, size) == 0 && offsetof(nl_link_generation_report, edges) == 4 &&
-                   offsetof(nl_link_generation_report, groups) == 8 && offsetof(nl_link_generation_report, samples) == 12 &&
-                   offsetof(nl_link_generation_report, takeoff_points) == 16 && offsetof(nl_link_generation_report, jump_candidates) == 20 &&
-                   offsetof(nl_link_generation_report, drop_candidates) == 24 && offsetof(nl_link_generation_report, jump_links) == 28 &&
-                   offsetof(nl_link_generation_report, drop_links) == 32 && offsetof(nl_link_generation_report, plugin_links) == 36 &&
+                   offsetof(nl_link_generation_report, groups) == 8 &&
+                   offsetof(nl_link_generation_report, samples) == 12 &&
+                   offsetof(nl_link_generation_report, takeoff_points) == 16 &&
+                   offsetof(nl_link_generation_report, jump_candidates) == 20 &&
+                   offsetof(nl_link_generation_report, drop_candidates) == 24 &&
+                   offsetof(nl_link_generation_report, jump_links) == 28 &&
+                   offsetof(nl_link_generation_report, drop_links) == 32 &&
+                   offsetof(nl_link_generation_report, plugin_links) == 36 &&
                    offsetof(nl_link_generation_report, rejected_wall) == 40 &&
                    offsetof(nl_link_generation_report, rejected_not_ledge) == 44 &&
-                   offsetof(nl_link_generation_report, rejected_distance) == 48 && offsetof(nl_link_generation_report, rejected_rise) == 52 &&
+                   offsetof(nl_link_generation_report, rejected_distance) == 48 &&
+                   offsetof(nl_link_generation_report, rejected_rise) == 52 &&
                    offsetof(nl_link_generation_report, rejected_angle) == 56 &&
                    offsetof(nl_link_generation_report, rejected_no_landing) == 60 &&
                    offsetof(nl_link_generation_report, rejected_clearance) == 64 &&
-                   offsetof(nl_link_generation_report, rejected_duplicate) == 68 && offsetof(nl_link_generation_report, rays_cast) == 72 &&
+                   offsetof(nl_link_generation_report, rejected_duplicate) == 68 &&
+                   offsetof(nl_link_generation_report, rays_cast) == 72 &&
                    offsetof(nl_link_generation_report, milliseconds_edges) == 80 &&
                    offsetof(nl_link_generation_report, milliseconds_takeoff) == 88 &&
                    offsetof(nl_link_generation_report, milliseconds_jumps) == 96 &&
                    offsetof(nl_link_generation_report, milliseconds_drops) == 104 &&
                    offsetof(nl_link_generation_report, milliseconds_merge) == 112 &&
                    offsetof(nl_link_generation_report, milliseconds_total) == 120 &&
-                   offsetof(nl_link_generation_report, box_queries) == 128 && offsetof(nl_link_generation_report, body_tests) == 136 &&
+                   offsetof(nl_link_generation_report, box_queries) == 128 &&
+                   offsetof(nl_link_generation_report, body_tests) == 136 &&
                    offsetof(nl_link_generation_report, rejected_walkable) == 144 &&
                    offsetof(nl_link_generation_report, rejected_too_shallow) == 148 &&
-                   offsetof(nl_link_generation_report, rejected_too_deep) == 152 && offsetof(nl_link_generation_report, reserved) == 156 &&
-                   sizeof(nl_link_generation_report) == 160,
+                   offsetof(nl_link_generation_report, rejected_too_deep) == 152 &&
+                   offsetof(nl_link_generation_report, reserved) == 156 && sizeof(nl_link_generation_report) == 160,
                "nl_link_generation_report (no hidden padding)");
 #if UINTPTR_MAX == 0xffffffffffffffffu
 /* On LP64 the pointer after arc_segments leaves 4 bytes of padding at 148. */
@@ -276,8 +281,8 @@ _Static_assert(NL_RECAST_PARTITION_WATERSHED == 0u && NL_RECAST_PARTITION_MONOTO
 _Static_assert((NL_STATUS_FAILURE & NL_STATUS_SUCCESS) == 0u, "kinds are distinct");
 _Static_assert(((NL_STATUS_INVALID_ARGUMENT | NL_STATUS_INVALID_HANDLE | NL_STATUS_BUFFER_TOO_SMALL |
                  NL_STATUS_OUT_OF_MEMORY | NL_STATUS_CANCELLED | NL_STATUS_PARTIAL_RESULT | NL_STATUS_NOT_FOUND |
-                 NL_STATUS_INTERNAL_ERROR | NL_STATUS_IO_ERROR | NL_STATUS_PARSE_ERROR |
-                 NL_STATUS_VERSION_MISMATCH) & ~NL_STATUS_DETAIL_MASK) == 0u,
+                 NL_STATUS_INTERNAL_ERROR | NL_STATUS_IO_ERROR | NL_STATUS_PARSE_ERROR | NL_STATUS_VERSION_MISMATCH) &
+                ~NL_STATUS_DETAIL_MASK) == 0u,
                "detail bits stay in the detail mask");
 _Static_assert(NL_WORKERS_AUTO == -1, "NL_WORKERS_AUTO");
 
@@ -379,8 +384,8 @@ struct api_table {
                                                 uint32_t*, uint32_t, uint32_t*);
     nl_status (*navmesh_get_islands)(const nl_world*, nl_navmesh_id, const nl_query_filter*, uint32_t*, uint32_t,
                                      uint32_t*, uint32_t*);
-    nl_status (*navmesh_raycast)(const nl_world*, nl_navmesh_id, const nl_query_filter*, const nl_navmesh_ray*, uint32_t,
-                                 nl_navmesh_raycast_hit*, uint32_t*, uint32_t);
+    nl_status (*navmesh_raycast)(const nl_world*, nl_navmesh_id, const nl_query_filter*, const nl_navmesh_ray*,
+                                 uint32_t, nl_navmesh_raycast_hit*, uint32_t*, uint32_t);
     nl_status (*navmesh_move_along_surface)(const nl_world*, nl_navmesh_id, const nl_query_filter*, uint32_t,
                                             const float*, const float*, nl_nav_point*, uint32_t*, uint32_t, uint32_t*);
     nl_random_points_def (*default_random_points_def)(void);
@@ -430,34 +435,103 @@ static nl_status navmesh_sink(void* sink_context, const nl_navmesh_def* navmesh)
 
 int main(void) {
     const struct api_table api = {
-        nl_get_version,         nl_status_string,      nl_get_last_status,   nl_get_last_error_message,
-        nl_default_world_def,   nl_world_create,       nl_world_destroy,     nl_world_get_worker_count,
-        nl_default_mesh_def,    nl_mesh_add,           nl_mesh_add_obj_file, nl_mesh_add_obj_memory,
-        nl_mesh_remove,         nl_mesh_set_transform, nl_mesh_is_valid,     nl_mesh_get_info,
-        nl_world_get_meshes,    nl_world_cast_rays,    nl_world_segments_blocked,
+        nl_get_version,
+        nl_status_string,
+        nl_get_last_status,
+        nl_get_last_error_message,
+        nl_default_world_def,
+        nl_world_create,
+        nl_world_destroy,
+        nl_world_get_worker_count,
+        nl_default_mesh_def,
+        nl_mesh_add,
+        nl_mesh_add_obj_file,
+        nl_mesh_add_obj_memory,
+        nl_mesh_remove,
+        nl_mesh_set_transform,
+        nl_mesh_is_valid,
+        nl_mesh_get_info,
+        nl_world_get_meshes,
+        nl_world_cast_rays,
+        nl_world_segments_blocked,
         log_sink,
-        nl_default_agent_type,  nl_default_navmesh_def, nl_navmesh_add,      nl_navmesh_remove,
-        nl_navmesh_is_valid,    nl_navmesh_get_info,    nl_navmesh_get_vertices, nl_navmesh_get_polygon,
-        nl_navmesh_get_boundary_edges, nl_navmesh_find_nearest, nl_world_get_navmeshes,
-        nl_default_navmesh_build_def, nl_navmesh_build, nl_default_recast_settings,
-        nl_plugin_load,         nl_plugin_get_description, nl_world_get_plugins, nl_plugin_register,
-        nl_default_link_def,    nl_link_add,            nl_link_update,      nl_link_remove,
-        nl_link_is_valid,       nl_link_get,            nl_navmesh_get_links, nl_navmesh_remove_generated_links,
-        nl_default_link_settings, nl_link_settings_from_json, nl_navmesh_generate_links,
-        nl_navmesh_update_links_in_box, nl_navmesh_save_links_json, nl_navmesh_load_links_json,
+        nl_default_agent_type,
+        nl_default_navmesh_def,
+        nl_navmesh_add,
+        nl_navmesh_remove,
+        nl_navmesh_is_valid,
+        nl_navmesh_get_info,
+        nl_navmesh_get_vertices,
+        nl_navmesh_get_polygon,
+        nl_navmesh_get_boundary_edges,
+        nl_navmesh_find_nearest,
+        nl_world_get_navmeshes,
+        nl_default_navmesh_build_def,
+        nl_navmesh_build,
+        nl_default_recast_settings,
+        nl_plugin_load,
+        nl_plugin_get_description,
+        nl_world_get_plugins,
+        nl_plugin_register,
+        nl_default_link_def,
+        nl_link_add,
+        nl_link_update,
+        nl_link_remove,
+        nl_link_is_valid,
+        nl_link_get,
+        nl_navmesh_get_links,
+        nl_navmesh_remove_generated_links,
+        nl_default_link_settings,
+        nl_link_settings_from_json,
+        nl_navmesh_generate_links,
+        nl_navmesh_update_links_in_box,
+        nl_navmesh_save_links_json,
+        nl_navmesh_load_links_json,
         generation_progress,
-        nl_navmesh_save,        nl_navmesh_save_file,   nl_default_navmesh_load_def, nl_navmesh_load,
-        nl_navmesh_load_file,   nl_navmesh_file_describe,
-        nl_default_agent_capabilities, nl_default_path_request_def, nl_path_find, nl_path_request,
-        nl_path_poll,           nl_path_wait,           nl_path_get_result,     nl_path_cancel,      nl_path_release,
-        nl_default_path_budget, nl_path_process,        nl_path_take_finished, nl_path_get_queue_stats,
-        nl_default_query_filter, nl_navmesh_can_reach, nl_navmesh_get_reachable_polygons, nl_navmesh_get_islands,
-        nl_navmesh_raycast,     nl_navmesh_move_along_surface, nl_default_random_points_def, nl_navmesh_random_points,
-        nl_default_agent_def,   nl_agent_add,           nl_agent_remove,     nl_agent_is_valid,
-        nl_agent_set_destination, nl_agent_stop,        nl_agent_teleport,   nl_agent_set_capabilities,
-        nl_agent_set_speed,     nl_world_step,          nl_agent_get_info,   nl_world_get_agents,
-        nl_agent_get_corners,   nl_agent_get_trajectory, nl_world_get_agent_events,
-        plugin_entry,           navmesh_sink,
+        nl_navmesh_save,
+        nl_navmesh_save_file,
+        nl_default_navmesh_load_def,
+        nl_navmesh_load,
+        nl_navmesh_load_file,
+        nl_navmesh_file_describe,
+        nl_default_agent_capabilities,
+        nl_default_path_request_def,
+        nl_path_find,
+        nl_path_request,
+        nl_path_poll,
+        nl_path_wait,
+        nl_path_get_result,
+        nl_path_cancel,
+        nl_path_release,
+        nl_default_path_budget,
+        nl_path_process,
+        nl_path_take_finished,
+        nl_path_get_queue_stats,
+        nl_default_query_filter,
+        nl_navmesh_can_reach,
+        nl_navmesh_get_reachable_polygons,
+        nl_navmesh_get_islands,
+        nl_navmesh_raycast,
+        nl_navmesh_move_along_surface,
+        nl_default_random_points_def,
+        nl_navmesh_random_points,
+        nl_default_agent_def,
+        nl_agent_add,
+        nl_agent_remove,
+        nl_agent_is_valid,
+        nl_agent_set_destination,
+        nl_agent_stop,
+        nl_agent_teleport,
+        nl_agent_set_capabilities,
+        nl_agent_set_speed,
+        nl_world_step,
+        nl_agent_get_info,
+        nl_world_get_agents,
+        nl_agent_get_corners,
+        nl_agent_get_trajectory,
+        nl_world_get_agent_events,
+        plugin_entry,
+        navmesh_sink,
     };
     const nl_link_id null_link = {0u, 0u};
     const nl_navmesh_id null_navmesh = {0u, 0u};
@@ -484,7 +558,8 @@ int main(void) {
         if (link.size != sizeof link || link.kind != 0u || link.user_data != 0u || point.size != sizeof point ||
             point.polygon != 0u || hit.size != sizeof hit || hit.hit != 0u || polygon.size != sizeof polygon ||
             finished.size != sizeof finished || finished.user != NULL || result.size != sizeof result ||
-            nl_mesh_info_init().size != sizeof(nl_mesh_info) || nl_navmesh_info_init().size != sizeof(nl_navmesh_info) ||
+            nl_mesh_info_init().size != sizeof(nl_mesh_info) ||
+            nl_navmesh_info_init().size != sizeof(nl_navmesh_info) ||
             nl_link_generation_report_init().size != sizeof(nl_link_generation_report) ||
             nl_path_queue_stats_init().size != sizeof(nl_path_queue_stats) ||
             nl_navmesh_raycast_hit_init().size != sizeof(nl_navmesh_raycast_hit) ||

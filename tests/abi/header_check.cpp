@@ -98,8 +98,8 @@ int main() {
         return 1;
     // ... and of the path functions.
     if (!all_set(&nl_default_agent_capabilities, &nl_default_path_request_def, &nl_path_find, &nl_path_request,
-                 &nl_path_poll, &nl_path_wait, &nl_path_get_result, &nl_path_cancel, &nl_path_release, &nl_default_path_budget,
-                 &nl_path_process, &nl_path_take_finished, &nl_path_get_queue_stats))
+                 &nl_path_poll, &nl_path_wait, &nl_path_get_result, &nl_path_cancel, &nl_path_release,
+                 &nl_default_path_budget, &nl_path_process, &nl_path_take_finished, &nl_path_get_queue_stats))
         return 1;
     // ... and of the agent functions.
     if (!all_set(&nl_default_agent_def, &nl_agent_add, &nl_agent_remove, &nl_agent_is_valid, &nl_agent_set_destination,

@@ -17,12 +17,12 @@ namespace {
 
 int g_failures = 0;
 
-#define CHECK(cond)                                                                      \
-    do {                                                                                 \
-        if (!(cond)) {                                                                   \
+#define CHECK(cond)                                                                       \
+    do {                                                                                  \
+        if (!(cond)) {                                                                    \
             std::fprintf(stderr, "%s:%d: CHECK failed: %s\n", __FILE__, __LINE__, #cond); \
-            ++g_failures;                                                                \
-        }                                                                                \
+            ++g_failures;                                                                 \
+        }                                                                                 \
     } while (0)
 
 // Runs `body`, which must throw navlink::Error; returns it (a default Error if nothing was thrown).
@@ -53,7 +53,8 @@ static_assert(std::is_standard_layout<navlink::LinkId>::value && std::is_trivial
               "an id wrapper is blittable");
 static_assert(!std::is_convertible<navlink::MeshId, bool>::value && std::is_constructible<bool, navlink::MeshId>::value,
               "ids test as bool explicitly only");
-static_assert(!std::is_copy_constructible<navlink::World>::value && std::is_nothrow_move_constructible<navlink::World>::value &&
+static_assert(!std::is_copy_constructible<navlink::World>::value &&
+                  std::is_nothrow_move_constructible<navlink::World>::value &&
                   std::is_nothrow_move_assignable<navlink::World>::value,
               "World is move-only");
 static_assert(std::is_base_of<std::runtime_error, navlink::Error>::value, "Error is a std::runtime_error");
@@ -281,14 +282,15 @@ void two_call_helper() {
     CHECK(meshes.size() == 2u && meshes[0] == level.floor && meshes[1] == level.platform);
     const std::vector<navlink::NavmeshId> navmeshes = level.world.navmeshes();
     CHECK(navmeshes.size() == 1u && navmeshes[0] == level.navmesh);
-    const auto raw_navmeshes = navlink::two_call<nl_navmesh_id>(
-        [&level](nl_navmesh_id* out, uint32_t capacity, uint32_t* count) {
+    const auto raw_navmeshes =
+        navlink::two_call<nl_navmesh_id>([&level](nl_navmesh_id* out, uint32_t capacity, uint32_t* count) {
             return nl_world_get_navmeshes(level.world.get(), out, capacity, count);
         });
     CHECK(raw_navmeshes.size() == 1u && raw_navmeshes[0] == level.navmesh);
 
     const std::vector<nl_link> links = level.world.links(level.navmesh);
-    CHECK(!links.empty() && links.size() == level.report.jump_links + level.report.drop_links + level.report.plugin_links);
+    CHECK(!links.empty() &&
+          links.size() == level.report.jump_links + level.report.drop_links + level.report.plugin_links);
     for (const nl_link& l : links) {
         CHECK(l.size == sizeof(nl_link) && l.kind == NL_LINK_DROP && l.generated == 1 && l.bidirectional == 1);
         CHECK(std::fabs(l.requirements.drop - 1.2f) < 0.05f && level.world.is_valid(navlink::LinkId(l.id)));
@@ -298,12 +300,14 @@ void two_call_helper() {
     const std::vector<navlink::PluginId> plugins = level.world.plugins();
     CHECK(!plugins.empty());
     bool recast = false;
-    for (const navlink::PluginId plugin : plugins) recast |= std::strcmp(level.world.plugin_description(plugin).name, "recast") == 0;
+    for (const navlink::PluginId plugin : plugins)
+        recast |= std::strcmp(level.world.plugin_description(plugin).name, "recast") == 0;
     CHECK(recast);
 
     // A ray onto the platform.
     const std::vector<nl_ray_hit> hits = level.world.cast_rays({nl_ray{{5, 5, 0}, {0, -1, 0}, 10}});
-    CHECK(hits.size() == 1u && hits[0].hit == 1 && hits[0].mesh == level.platform && std::fabs(hits[0].point[1] - 1.2f) < 1e-5f);
+    CHECK(hits.size() == 1u && hits[0].hit == 1 && hits[0].mesh == level.platform &&
+          std::fabs(hits[0].point[1] - 1.2f) < 1e-5f);
 }
 
 void paths() {
@@ -311,7 +315,8 @@ void paths() {
     navlink::World& world = level.world;
 
     // A jumper gets onto the platform: a drop link taken back up, as a jump.
-    const navlink::Path path = world.find_path(navlink::path_request(level.navmesh, k_on_floor, k_on_platform, jumper()));
+    const navlink::Path path =
+        world.find_path(navlink::path_request(level.navmesh, k_on_floor, k_on_platform, jumper()));
     CHECK(path.complete() && !path.partial() && path.result.size == sizeof(nl_path_result));
     CHECK(path.points.size() == path.result.point_count && path.points.size() >= 3u && path.result.links_used == 1u);
     const std::vector<nl_link> links = world.links(level.navmesh);
@@ -333,13 +338,15 @@ void paths() {
     CHECK(std::fabs(last.position[0] - 5.0f) < 0.01f && std::fabs(last.position[2]) < 0.01f && last.position[1] > 1.1f);
 
     // Nothing to explain about a path that gets there.
-    const nl_path_shortfall none = world.explain_path(navlink::path_request(level.navmesh, k_on_floor, k_on_platform, jumper()));
+    const nl_path_shortfall none =
+        world.explain_path(navlink::path_request(level.navmesh, k_on_floor, k_on_platform, jumper()));
     CHECK(none.reason == NL_PATH_SHORTFALL_NONE && none.text[0] == '\0');
 
     // A walker's path stops at the platform's foot: partial, and explained.
     const nl_path_request_def request = navlink::path_request(level.navmesh, k_on_floor, k_on_platform, walker());
     const navlink::Path short_path = world.find_path(request);
-    CHECK(short_path.partial() && short_path.points.size() == short_path.result.point_count && !short_path.points.empty());
+    CHECK(short_path.partial() && short_path.points.size() == short_path.result.point_count &&
+          !short_path.points.empty());
     CHECK(short_path.points.back().position[1] < 0.5f);
     const nl_path_shortfall why = world.explain_path(request);
     CHECK(why.size == sizeof(nl_path_shortfall) && why.reason == NL_PATH_SHORTFALL_LINK_BEYOND_BODY);
@@ -407,9 +414,13 @@ struct Case {
 }  // namespace
 
 int main() {
-    const Case cases[] = {{"status_and_check", status_and_check}, {"ids", ids},       {"world_raii", world_raii},
-                          {"errors_as_exceptions", errors_as_exceptions}, {"two_call", two_call_helper},
-                          {"paths", paths},                       {"agents", agents}};
+    const Case cases[] = {{"status_and_check", status_and_check},
+                          {"ids", ids},
+                          {"world_raii", world_raii},
+                          {"errors_as_exceptions", errors_as_exceptions},
+                          {"two_call", two_call_helper},
+                          {"paths", paths},
+                          {"agents", agents}};
     for (const Case& c : cases) {
         const int before = g_failures;
         try {

@@ -29,12 +29,12 @@
 #include <stdlib.h>
 #include <string.h>
 
-
 static int g_failures = 0;
 
 /* The box from lo to hi as one mesh: 8 corners (corner k at x from bit 0, y from bit 1, z from bit 2),
    12 triangles facing out. (Its own copy, so this file needs no other test file.) */
-static nl_status add_box_mesh(nl_world* world, const float lo[3], const float hi[3], uint32_t flags, nl_mesh_id* out_id) {
+static nl_status add_box_mesh(nl_world* world, const float lo[3], const float hi[3], uint32_t flags,
+                              nl_mesh_id* out_id) {
     const float v[24] = {lo[0], lo[1], lo[2], hi[0], lo[1], lo[2], lo[0], hi[1], lo[2], hi[0], hi[1], lo[2],
                          lo[0], lo[1], hi[2], hi[0], lo[1], hi[2], lo[0], hi[1], hi[2], hi[0], hi[1], hi[2]};
     static const uint32_t box[36] = {0, 4, 6, 0, 6, 2, 1, 3, 7, 1, 7, 5, 0, 1, 5, 0, 5, 4,
@@ -61,13 +61,13 @@ static void check_at(int ok, const char* file, int line, const char* format, ...
 #define CHECK(cond, ...) check_at((cond) != 0, __FILE__, __LINE__, __VA_ARGS__)
 
 /* Stops the test at once: what follows would only repeat the failure. */
-#define REQUIRE_OK(call)                                                                                  \
-    do {                                                                                                  \
-        const nl_status required_ = (call);                                                               \
-        if (NL_FAILED(required_)) {                                                                       \
+#define REQUIRE_OK(call)                                                                                       \
+    do {                                                                                                       \
+        const nl_status required_ = (call);                                                                    \
+        if (NL_FAILED(required_)) {                                                                            \
             fprintf(stderr, "%s:%d: %s failed: %s\n", __FILE__, __LINE__, #call, nl_get_last_error_message()); \
-            exit(1);                                                                                      \
-        }                                                                                                 \
+            exit(1);                                                                                           \
+        }                                                                                                      \
     } while (0)
 
 /* ---------------------------------------------------------------------------------------------
@@ -111,8 +111,7 @@ static void run_range(pool* p, nl_task_fn* task, void* context, uint32_t begin, 
         return;
     }
     seen = atomic_load(&p->max_worker);
-    while (worker > seen && !atomic_compare_exchange_weak(&p->max_worker, &seen, worker)) {
-    }
+    while (worker > seen && !atomic_compare_exchange_weak(&p->max_worker, &seen, worker)) {}
     pthread_mutex_lock(&p->owner_mutex);
     if (p->running[worker] > 0 && !pthread_equal(p->owner[worker], pthread_self())) atomic_fetch_add(&p->clashes, 1u);
     p->owner[worker] = pthread_self();
@@ -218,8 +217,7 @@ static void* pool_enqueue(void* user, nl_task_fn* task, void* task_context, uint
     job->chunk = share > min_range ? share : (min_range > 0u ? min_range : 1u);
     job->chunks = (item_count + job->chunk - 1u) / job->chunk;
     pthread_mutex_lock(&p->mutex);
-    for (tail = &p->jobs; *tail; tail = &(*tail)->next_job) {
-    }
+    for (tail = &p->jobs; *tail; tail = &(*tail)->next_job) {}
     *tail = job;
     pthread_cond_broadcast(&p->work);
     pthread_mutex_unlock(&p->mutex);
@@ -246,12 +244,10 @@ static void pool_finish(void* user, void* host_task) {
         worker = slot >= 0 ? (uint32_t)slot : 0u;
     }
     if (t_pool_worker != 0 || slot >= 0)
-        while (run_one(p, job, worker)) {
-        }
+        while (run_one(p, job, worker)) {}
     while (job->done != job->chunks) pthread_cond_wait(&p->done, &p->mutex);
     if (slot >= 0) p->slot_taken[slot] = 0;
-    for (at = &p->jobs; *at != job; at = &(*at)->next_job) {
-    }
+    for (at = &p->jobs; *at != job; at = &(*at)->next_job) {}
     *at = job->next_job;
     pthread_mutex_unlock(&p->mutex);
     free(job);
@@ -286,10 +282,10 @@ static void inline_finish(void* user, void* host_task) {
 /* Platforms (tops at y 0, 0, 0.5 and 0) across gaps of 2, 3 and 2 m over a floor at y -4; a wall in
    part of the first gap, a pillar on the second platform, a low ceiling over part of the second gap. */
 static const float k_boxes[][2][3] = {
-    {{-20.0f, -5.0f, -8.0f}, {45.0f, -4.0f, 8.0f}},  {{-16.0f, -1.0f, -6.0f}, {-1.0f, 0.0f, 6.0f}},
-    {{1.0f, -1.0f, -6.0f}, {9.0f, 0.0f, 6.0f}},      {{12.0f, -0.5f, -6.0f}, {20.0f, 0.5f, 6.0f}},
-    {{22.0f, -1.0f, -6.0f}, {30.0f, 0.0f, 6.0f}},    {{-0.2f, -1.0f, -6.0f}, {0.2f, 3.0f, -2.0f}},
-    {{4.0f, 0.0f, -1.0f}, {5.0f, 3.0f, 1.0f}},       {{9.0f, 1.6f, 2.0f}, {12.0f, 2.0f, 6.0f}},
+    {{-20.0f, -5.0f, -8.0f}, {45.0f, -4.0f, 8.0f}}, {{-16.0f, -1.0f, -6.0f}, {-1.0f, 0.0f, 6.0f}},
+    {{1.0f, -1.0f, -6.0f}, {9.0f, 0.0f, 6.0f}},     {{12.0f, -0.5f, -6.0f}, {20.0f, 0.5f, 6.0f}},
+    {{22.0f, -1.0f, -6.0f}, {30.0f, 0.0f, 6.0f}},   {{-0.2f, -1.0f, -6.0f}, {0.2f, 3.0f, -2.0f}},
+    {{4.0f, 0.0f, -1.0f}, {5.0f, 3.0f, 1.0f}},      {{9.0f, 1.6f, 2.0f}, {12.0f, 2.0f, 6.0f}},
 };
 #define BOX_COUNT (sizeof k_boxes / sizeof *k_boxes)
 
@@ -316,7 +312,8 @@ static void make_queries(void) {
     uint32_t i, x, z, n = 0;
     for (x = 0; x < GRID_X; ++x) {
         for (z = 0; z < GRID_Z; ++z, ++n) {
-            const nl_ray r = {{-20.0f + 0.25f * (float)x, 10.0f, -8.0f + 0.25f * (float)z}, {0.0f, -1.0f, 0.0f}, 100.0f};
+            const nl_ray r = {
+                {-20.0f + 0.25f * (float)x, 10.0f, -8.0f + 0.25f * (float)z}, {0.0f, -1.0f, 0.0f}, 100.0f};
             g_rays[n] = r;
         }
     }
@@ -454,8 +451,9 @@ static int same_results(const char* what, const results* a, const results* b) {
     CHECK(memcmp(a->nearest, b->nearest, sizeof a->nearest) == 0, "%s: point location differs", what);
     CHECK(a->link_count == b->link_count && memcmp(a->links, b->links, sizeof(nl_link) * a->link_count) == 0,
           "%s: links differ (%u and %u)", what, (unsigned)a->link_count, (unsigned)b->link_count);
-    CHECK(a->updated_count == b->updated_count && memcmp(a->updated, b->updated, sizeof(nl_link) * a->updated_count) == 0,
-          "%s: links after the update differ (%u and %u)", what, (unsigned)a->updated_count, (unsigned)b->updated_count);
+    CHECK(
+        a->updated_count == b->updated_count && memcmp(a->updated, b->updated, sizeof(nl_link) * a->updated_count) == 0,
+        "%s: links after the update differ (%u and %u)", what, (unsigned)a->updated_count, (unsigned)b->updated_count);
     CHECK(memcmp(&a->path, &b->path, sizeof a->path) == 0 && a->point_count == b->point_count &&
               memcmp(a->points, b->points, sizeof(nl_path_point) * a->point_count) == 0,
           "%s: the path differs", what);
@@ -565,7 +563,8 @@ typedef struct reentrant_host {
     int finishes;
 } reentrant_host;
 
-static void* reentrant_enqueue(void* user, nl_task_fn* task, void* task_context, uint32_t item_count, uint32_t min_range) {
+static void* reentrant_enqueue(void* user, nl_task_fn* task, void* task_context, uint32_t item_count,
+                               uint32_t min_range) {
     (void)min_range;
     task(task_context, 0u, item_count, 0u);
     return user; /* any non-NULL handle */
@@ -597,12 +596,13 @@ static void test_reentrant_finish(void) {
     host.world = world;
     REQUIRE_OK(add_box_mesh(world, k_boxes[0][0], k_boxes[0][1], 0u, &mesh));
     hits[0] = nl_ray_hit_init();
-    CHECK(nl_world_cast_rays(world, g_rays, RAY_COUNT, hits) == NL_STATUS_SUCCESS,
-          "the outer ray batch failed: %s", nl_get_last_error_message());
+    CHECK(nl_world_cast_rays(world, g_rays, RAY_COUNT, hits) == NL_STATUS_SUCCESS, "the outer ray batch failed: %s",
+          nl_get_last_error_message());
     CHECK(host.finishes == 1, "finish was called %d times", host.finishes);
-    CHECK(host.inner == (NL_STATUS_FAILURE | NL_STATUS_INTERNAL_ERROR) && strstr(host.message, "inside a parallel task"),
-          "a ray batch from inside the finish callback returned 0x%08x \"%s\" (expected INTERNAL_ERROR, refused)",
-          (unsigned)host.inner, host.message);
+    CHECK(
+        host.inner == (NL_STATUS_FAILURE | NL_STATUS_INTERNAL_ERROR) && strstr(host.message, "inside a parallel task"),
+        "a ray batch from inside the finish callback returned 0x%08x \"%s\" (expected INTERNAL_ERROR, refused)",
+        (unsigned)host.inner, host.message);
     nl_world_destroy(world);
 }
 
@@ -662,14 +662,18 @@ static void test_reentrant_step(void) {
         REQUIRE_OK(nl_agent_set_destination(world, ids[i], to));
     }
     /* Two paths to plan: the step hands them to the host as one parallel loop of two items. */
-    CHECK(nl_world_step(world, 1.0f / 30.0f) == NL_STATUS_SUCCESS, "the outer step failed: %s", nl_get_last_error_message());
+    CHECK(nl_world_step(world, 1.0f / 30.0f) == NL_STATUS_SUCCESS, "the outer step failed: %s",
+          nl_get_last_error_message());
     CHECK(host.finishes == 1, "finish was called %d times (expected once: the step's paths)", host.finishes);
-    CHECK(host.get_agents == refused && strstr(host.get_agents_message, "the agents"),
-          "nl_world_get_agents from a task callback during a step returned 0x%08x \"%s\" (expected INTERNAL_ERROR naming "
-          "the agents' lock)", (unsigned)host.get_agents, host.get_agents_message);
+    CHECK(
+        host.get_agents == refused && strstr(host.get_agents_message, "the agents"),
+        "nl_world_get_agents from a task callback during a step returned 0x%08x \"%s\" (expected INTERNAL_ERROR naming "
+        "the agents' lock)",
+        (unsigned)host.get_agents, host.get_agents_message);
     CHECK(host.step == refused && strstr(host.step_message, "the agents"),
           "nl_world_step from a task callback during a step returned 0x%08x \"%s\" (expected INTERNAL_ERROR naming the "
-          "agents' lock)", (unsigned)host.step, host.step_message);
+          "agents' lock)",
+          (unsigned)host.step, host.step_message);
     /* The lock is whole: later steps and reads run (a broken lock hung the next step here). */
     for (k = 0; k < 30; ++k) REQUIRE_OK(nl_world_step(world, 1.0f / 30.0f));
     infos[0] = nl_agent_info_init();
@@ -691,8 +695,10 @@ typedef struct broken_host {
 static void* broken_enqueue(void* user, nl_task_fn* task, void* task_context, uint32_t item_count, uint32_t min_range) {
     const broken_host* h = (const broken_host*)user;
     (void)min_range;
-    if (h->skip_last) task(task_context, 0u, item_count - 1u, 0u);
-    else task(task_context, 0u, item_count, 7u);
+    if (h->skip_last)
+        task(task_context, 0u, item_count - 1u, 0u);
+    else
+        task(task_context, 0u, item_count, 7u);
     return NULL;
 }
 
@@ -849,11 +855,12 @@ int main(void) {
     CHECK(atomic_load(&p.clashes) == 0u, "a worker index was used by two threads at once");
     CHECK(atomic_load(&p.bad_request) == 0u, "%u enqueues had no task, min_range 0 or item_count <= min_range",
           (unsigned)atomic_load(&p.bad_request));
-    printf("pool: %u enqueues (%u from its own threads), %u finishes, %u ranges (%u on its threads), worker indices "
-           "up to %u\n",
-           (unsigned)atomic_load(&p.enqueues), (unsigned)atomic_load(&p.enqueues_on_pool),
-           (unsigned)atomic_load(&p.finishes), (unsigned)atomic_load(&p.ranges), (unsigned)atomic_load(&p.ranges_on_pool),
-           (unsigned)atomic_load(&p.max_worker));
+    printf(
+        "pool: %u enqueues (%u from its own threads), %u finishes, %u ranges (%u on its threads), worker indices "
+        "up to %u\n",
+        (unsigned)atomic_load(&p.enqueues), (unsigned)atomic_load(&p.enqueues_on_pool),
+        (unsigned)atomic_load(&p.finishes), (unsigned)atomic_load(&p.ranges), (unsigned)atomic_load(&p.ranges_on_pool),
+        (unsigned)atomic_load(&p.max_worker));
     nl_world_destroy(pooled);
     pool_stop(&p);
 

@@ -14,7 +14,8 @@
 #include <navlink/navlink.h>
 
 /* An nl_path_process budget of requests and milliseconds, as a pointer (C11 compound literal). */
-#define NL_TEST_BUDGET(requests, milliseconds) (&(nl_path_budget){sizeof(nl_path_budget), (requests), (milliseconds), 0})
+#define NL_TEST_BUDGET(requests, milliseconds) \
+    (&(nl_path_budget){sizeof(nl_path_budget), (requests), (milliseconds), 0})
 
 #include <stddef.h>
 
@@ -28,7 +29,8 @@
 
 int case_begin(const char* function, const char* format, ...);
 int case_end(void);
-#define CASE(function, ...) for (int case_open_ = case_begin((function), __VA_ARGS__); case_open_; case_open_ = case_end())
+#define CASE(function, ...) \
+    for (int case_open_ = case_begin((function), __VA_ARGS__); case_open_; case_open_ = case_end())
 
 void case_failed(const char* file, int line, const char* format, ...);
 #define EXPECT(cond, ...) ((cond) ? (void)0 : case_failed(__FILE__, __LINE__, __VA_ARGS__))
@@ -38,7 +40,8 @@ void case_failed(const char* file, int line, const char* format, ...);
    once with the same status and message (no log at all when `world` is NULL). */
 void expect_failure_at(const char* file, int line, const nl_world* world, nl_status got, nl_status detail,
                        const char* needle);
-#define EXPECT_FAILURE(world, got, detail, needle) expect_failure_at(__FILE__, __LINE__, (world), (got), (detail), (needle))
+#define EXPECT_FAILURE(world, got, detail, needle) \
+    expect_failure_at(__FILE__, __LINE__, (world), (got), (detail), (needle))
 #define EXPECT_INVALID(world, got, needle) EXPECT_FAILURE((world), (got), NL_STATUS_INVALID_ARGUMENT, (needle))
 #define EXPECT_BAD_HANDLE(world, got, needle) EXPECT_FAILURE((world), (got), NL_STATUS_INVALID_HANDLE, (needle))
 /* The call returned `expected` (a success kind), recorded it, left an empty message and logged nothing. */
@@ -52,8 +55,9 @@ void fill(void* p, size_t n);
 void expect_untouched_at(const char* file, int line, const void* p, size_t n, const char* name);
 #define EXPECT_UNTOUCHED(p, n, name) expect_untouched_at(__FILE__, __LINE__, (p), (n), (name))
 /* A growable output struct: untouched but for its `size` field, which the caller set. */
-#define EXPECT_UNTOUCHED_AFTER_SIZE(p, n, name) \
-    expect_untouched_at(__FILE__, __LINE__, (const unsigned char*)(p) + sizeof(uint32_t), (n) - sizeof(uint32_t), (name))
+#define EXPECT_UNTOUCHED_AFTER_SIZE(p, n, name)                                                                   \
+    expect_untouched_at(__FILE__, __LINE__, (const unsigned char*)(p) + sizeof(uint32_t), (n) - sizeof(uint32_t), \
+                        (name))
 
 /* A case whose failure is a known defect of the library that needs a core change: the runner prints
    "KNOWN FAILURE: ..." instead of failing the run, and fails it if the case starts to pass. */

@@ -48,7 +48,8 @@ static void remove_agent_out(const void* out) {
     EXPECT(agent_info(id).state == NL_AGENT_IDLE, "the new agent is not idle");
     EXPECT_OK(nl_agent_remove(A.world, id));
 }
-static const def_function k_agent_add = {"nl_agent_add", agent_add_def_call, sizeof(nl_agent_id), remove_agent_out, 0, 0, 1};
+static const def_function k_agent_add = {
+    "nl_agent_add", agent_add_def_call, sizeof(nl_agent_id), remove_agent_out, 0, 0, 1};
 
 static const float_field k_agent_def_floats[] = {
     FLOAT_FIELD(nl_agent_def, height, 1),
@@ -64,51 +65,87 @@ static const float_field k_agent_def_floats[] = {
     FLOAT_FIELD(nl_agent_def, give_up_seconds, 1),
 };
 
-#define SET_U8(type, member, v) {offsetof(type, member), sizeof(uint8_t), {.u32 = (v)}}
+#define SET_U8(type, member, v)                                 \
+    {                                                           \
+        offsetof(type, member), sizeof(uint8_t), { .u32 = (v) } \
+    }
 static const def_case k_agent_defs[] = {
-    {"def->size small (8 short of the first release)", INVALID, "def->size",
+    {"def->size small (8 short of the first release)",
+     INVALID,
+     "def->size",
      {SET_U32(nl_agent_def, size, (uint32_t)offsetof(nl_agent_def, give_up_seconds) - 8u)}},
-    {"def->size of the first release (allowed: give_up_seconds its default)", ALLOWED, NULL,
+    {"def->size of the first release (allowed: give_up_seconds its default)",
+     ALLOWED,
+     NULL,
      {SET_U32(nl_agent_def, size, (uint32_t)offsetof(nl_agent_def, give_up_seconds))}},
-    {"def->size odd (sizeof + 1: no struct's size)", INVALID, "def->size", {SET_U32(nl_agent_def, size, (uint32_t)sizeof(nl_agent_def) + 1u)}},
+    {"def->size odd (sizeof + 1: no struct's size)",
+     INVALID,
+     "def->size",
+     {SET_U32(nl_agent_def, size, (uint32_t)sizeof(nl_agent_def) + 1u)}},
     {"def->height 0", INVALID, "def->height", {SET_F32(nl_agent_def, height, 0.0f)}},
     {"def->height negative", INVALID, "def->height", {SET_F32(nl_agent_def, height, -2.0f)}},
     {"def->max_speed 0", INVALID, "def->max_speed", {SET_F32(nl_agent_def, max_speed, 0.0f)}},
     {"def->max_speed negative", INVALID, "def->max_speed", {SET_F32(nl_agent_def, max_speed, -3.5f)}},
     {"def->max_acceleration 0", INVALID, "def->max_acceleration", {SET_F32(nl_agent_def, max_acceleration, 0.0f)}},
-    {"def->max_acceleration negative", INVALID, "def->max_acceleration", {SET_F32(nl_agent_def, max_acceleration, -8.0f)}},
+    {"def->max_acceleration negative",
+     INVALID,
+     "def->max_acceleration",
+     {SET_F32(nl_agent_def, max_acceleration, -8.0f)}},
     {"def->gravity 0", INVALID, "def->gravity", {SET_F32(nl_agent_def, gravity, 0.0f)}},
     {"def->gravity negative (upward)", INVALID, "def->gravity", {SET_F32(nl_agent_def, gravity, -9.81f)}},
     {"def->takeoff_speed negative", INVALID, "def->takeoff_speed", {SET_F32(nl_agent_def, takeoff_speed, -1.0f)}},
     {"def->give_up_seconds negative", INVALID, "def->give_up_seconds", {SET_F32(nl_agent_def, give_up_seconds, -1.0f)}},
     {"def->give_up_seconds 5 (allowed)", ALLOWED, NULL, {SET_F32(nl_agent_def, give_up_seconds, 5.0f)}},
-    {"def->capabilities.max_jump_distance negative", INVALID, "def->capabilities.max_jump_distance",
+    {"def->capabilities.max_jump_distance negative",
+     INVALID,
+     "def->capabilities.max_jump_distance",
      {SET_F32(nl_agent_def, capabilities.max_jump_distance, -1.0f)}},
-    {"def->capabilities.max_jump_height negative", INVALID, "def->capabilities.max_jump_height",
+    {"def->capabilities.max_jump_height negative",
+     INVALID,
+     "def->capabilities.max_jump_height",
      {SET_F32(nl_agent_def, capabilities.max_jump_height, -1.0f)}},
-    {"def->capabilities.max_drop_height negative", INVALID, "def->capabilities.max_drop_height",
+    {"def->capabilities.max_drop_height negative",
+     INVALID,
+     "def->capabilities.max_drop_height",
      {SET_F32(nl_agent_def, capabilities.max_drop_height, -1.0f)}},
-    {"def->capabilities.radius negative", INVALID, "def->capabilities.radius", {SET_F32(nl_agent_def, capabilities.radius, -0.4f)}},
-    {"def->position off the navmesh (10 m above)", NL_STATUS_NOT_FOUND, "def->position is not on the navmesh",
+    {"def->capabilities.radius negative",
+     INVALID,
+     "def->capabilities.radius",
+     {SET_F32(nl_agent_def, capabilities.radius, -0.4f)}},
+    {"def->position off the navmesh (10 m above)",
+     NL_STATUS_NOT_FOUND,
+     "def->position is not on the navmesh",
      {SET_F32(nl_agent_def, position[1], 10.0f)}},
-    {"def->position off the navmesh (nothing within 25 m)", NL_STATUS_NOT_FOUND, "def->position is not on the navmesh",
+    {"def->position off the navmesh (nothing within 25 m)",
+     NL_STATUS_NOT_FOUND,
+     "def->position is not on the navmesh",
      {SET_F32(nl_agent_def, position[0], 100.0f)}},
     {"def->position beyond the limit (2e9)", INVALID, "def->position", {SET_F32(nl_agent_def, position[2], 2.0e9f)}},
-    {"def->position 1 m above the navmesh (allowed: put on it)", ALLOWED, NULL, {SET_F32(nl_agent_def, position[1], 1.0f)}},
-    {"def->capabilities.radius 0 (allowed: a point body)", ALLOWED, NULL, {SET_F32(nl_agent_def, capabilities.radius, 0.0f)}},
-    {"def->takeoff_speed 12 (allowed: a jump's time from it)", ALLOWED, NULL, {SET_F32(nl_agent_def, takeoff_speed, 12.0f)}},
+    {"def->position 1 m above the navmesh (allowed: put on it)",
+     ALLOWED,
+     NULL,
+     {SET_F32(nl_agent_def, position[1], 1.0f)}},
+    {"def->capabilities.radius 0 (allowed: a point body)",
+     ALLOWED,
+     NULL,
+     {SET_F32(nl_agent_def, capabilities.radius, 0.0f)}},
+    {"def->takeoff_speed 12 (allowed: a jump's time from it)",
+     ALLOWED,
+     NULL,
+     {SET_F32(nl_agent_def, takeoff_speed, 12.0f)}},
     {"def->avoidance 0 (allowed)", ALLOWED, NULL, {SET_U8(nl_agent_def, avoidance, 0u)}},
 };
 #undef SET_U8
 
 static void group_agent_add(void) {
-    static const id_function f = {"nl_agent_add", "def->navmesh", "out_id", sizeof(nl_agent_id), 0, 0, agent_add_id_call, 0};
+    static const id_function f = {
+        "nl_agent_add", "def->navmesh", "out_id", sizeof(nl_agent_id), 0, 0, agent_add_id_call, 0};
     const nl_agent_def valid = jumper_def(A.navmesh, -6.0f, -1.0f);
     g_agent_def = &valid;
     id_cases(&f, RAW(A.navmesh), RAW(A.stale_navmesh), RAW(B.navmesh));
     def_function_cases(&k_agent_add, &valid, sizeof valid);
-    def_cases("nl_agent_add", &valid, sizeof valid, k_agent_defs, sizeof k_agent_defs / sizeof *k_agent_defs, def_refuses,
-              def_accepts);
+    def_cases("nl_agent_add", &valid, sizeof valid, k_agent_defs, sizeof k_agent_defs / sizeof *k_agent_defs,
+              def_refuses, def_accepts);
     bad_float_fields("nl_agent_add", "def", &valid, sizeof valid, k_agent_def_floats,
                      sizeof k_agent_def_floats / sizeof *k_agent_def_floats, def_refuses);
     CASE("nl_agent_add", "def->navmesh the lift's (allowed: an agent of another navmesh)") {
@@ -163,7 +200,8 @@ static const id_function k_agent_functions[] = {
     {"nl_agent_set_speed", "agent", NULL, 0, 0, 0, agent_set_speed_call, 0},
     {"nl_agent_get_info", "agent", "out_info", sizeof(nl_agent_info), 1, 0, agent_get_info_call, 0},
     {"nl_agent_get_corners", "agent", "out_points", sizeof(nl_path_point), 1, 0, agent_corners_id_call, 1},
-    {"nl_agent_get_trajectory", "agent", "out_trajectory", sizeof(nl_agent_trajectory), 1, 0, agent_get_trajectory_call, 0},
+    {"nl_agent_get_trajectory", "agent", "out_trajectory", sizeof(nl_agent_trajectory), 1, 0, agent_get_trajectory_call,
+     0},
 };
 
 /* An id of another kind passed as an agent's: refused as any bad id (an nl_agent_is_valid answers 0). */
@@ -175,8 +213,10 @@ static void wrong_kind_case(const id_function* f, const char* what, raw_id id) {
         fill(out.bytes, sizeof out.bytes);
         if (f->growable) set_size(out.bytes, (uint32_t)f->out_size);
         status = f->call(A.world, id, f->out_name ? out.bytes : NULL);
-        if (f->answers) EXPECT_OK(status);
-        else EXPECT_BAD_HANDLE(A.world, status, "agent");
+        if (f->answers)
+            EXPECT_OK(status);
+        else
+            EXPECT_BAD_HANDLE(A.world, status, "agent");
         EXPECT_UNTOUCHED(out.bytes + skip, sizeof out.bytes - skip, f->out_name ? f->out_name : "memory");
     }
 }
@@ -200,7 +240,8 @@ static void group_agent_remove(void) { agent_id_cases(0); }
 static void group_agent_is_valid(void) {
     CASE("nl_agent_is_valid", "agent live (1, the record SUCCESS)") {
         fail_on_purpose();
-        EXPECT(nl_agent_is_valid(A.world, A.agent) == 1 && nl_agent_is_valid(A.world, A.flyer) == 1, "a live agent is not valid");
+        EXPECT(nl_agent_is_valid(A.world, A.agent) == 1 && nl_agent_is_valid(A.world, A.flyer) == 1,
+               "a live agent is not valid");
         EXPECT(nl_get_last_status() == NL_STATUS_SUCCESS, "the record is not SUCCESS");
     }
     agent_id_cases(1);
@@ -245,7 +286,8 @@ static void agent_point_cases(const char* function, agent_point_fn* call, const 
     }
     CASE(function, "point off the navmesh (nothing within 25 m)") {
         const float p[3] = {200.0f, 0.0f, 0.0f};
-        EXPECT_FAILURE(A.world, call(A.world, A.agent, p), NL_STATUS_NOT_FOUND, "point is not on the navmesh (nothing within 25 m)");
+        EXPECT_FAILURE(A.world, call(A.world, A.agent, p), NL_STATUS_NOT_FOUND,
+                       "point is not on the navmesh (nothing within 25 m)");
     }
 }
 
@@ -282,16 +324,28 @@ static const float_field k_capability_floats[] = {
     FLOAT_FIELD(nl_agent_capabilities, radius, 1),
 };
 static const def_case k_capability_defs[] = {
-    {"capabilities->max_jump_distance negative", INVALID, "max_jump_distance", {SET_F32(nl_agent_capabilities, max_jump_distance, -1.0f)}},
-    {"capabilities->max_jump_height negative", INVALID, "max_jump_height", {SET_F32(nl_agent_capabilities, max_jump_height, -1.0f)}},
-    {"capabilities->max_drop_height negative", INVALID, "max_drop_height", {SET_F32(nl_agent_capabilities, max_drop_height, -1.0f)}},
+    {"capabilities->max_jump_distance negative",
+     INVALID,
+     "max_jump_distance",
+     {SET_F32(nl_agent_capabilities, max_jump_distance, -1.0f)}},
+    {"capabilities->max_jump_height negative",
+     INVALID,
+     "max_jump_height",
+     {SET_F32(nl_agent_capabilities, max_jump_height, -1.0f)}},
+    {"capabilities->max_drop_height negative",
+     INVALID,
+     "max_drop_height",
+     {SET_F32(nl_agent_capabilities, max_drop_height, -1.0f)}},
     {"capabilities->radius negative", INVALID, "radius", {SET_F32(nl_agent_capabilities, radius, -0.4f)}},
     {"capabilities->radius -0 (allowed: 0)", ALLOWED, NULL, {SET_F32(nl_agent_capabilities, radius, -0.0f)}},
-    {"capabilities->max_jump_distance 0 (allowed: no jumps, it plans again)", ALLOWED, NULL,
+    {"capabilities->max_jump_distance 0 (allowed: no jumps, it plans again)",
+     ALLOWED,
+     NULL,
      {SET_F32(nl_agent_capabilities, max_jump_distance, 0.0f)}},
 };
 static void capabilities_refused(const void* capabilities, nl_status detail, const char* needle) {
-    EXPECT_FAILURE(A.world, nl_agent_set_capabilities(A.world, A.agent, (const nl_agent_capabilities*)capabilities), detail, needle);
+    EXPECT_FAILURE(A.world, nl_agent_set_capabilities(A.world, A.agent, (const nl_agent_capabilities*)capabilities),
+                   detail, needle);
 }
 /* Accepted: the agent keeps walking (it plans again); the worlds as they are now are the reference. */
 static void capabilities_accepted(const void* capabilities) {
@@ -346,7 +400,8 @@ static void expect_agents_sane(const char* when) {
     uint32_t n = 0, i;
     memset(infos, 0, sizeof infos);
     infos[0].size = sizeof infos[0];
-    EXPECT(NL_SUCCEEDED(nl_world_get_agents(A.world, infos, 8, &n)), "nl_world_get_agents: %s", nl_get_last_error_message());
+    EXPECT(NL_SUCCEEDED(nl_world_get_agents(A.world, infos, 8, &n)), "nl_world_get_agents: %s",
+           nl_get_last_error_message());
     for (i = 0; i < n && i < 8; ++i) {
         const nl_agent_info* a = &infos[i];
         EXPECT(finite3(a->position) && finite3(a->velocity) && isfinite(a->link_progress),
@@ -354,8 +409,8 @@ static void expect_agents_sane(const char* when) {
                a->position[2], a->velocity[0], a->velocity[1], a->velocity[2]);
         EXPECT(a->state <= NL_AGENT_FAILED, "%s: agent %u in state %u", when, (unsigned)i, (unsigned)a->state);
         if (!in_the_air(a->state))
-            EXPECT(on_navmesh(A.navmesh, a->position, 0.5f), "%s: agent %u at (%g, %g, %g) is off its navmesh", when, (unsigned)i,
-                   a->position[0], a->position[1], a->position[2]);
+            EXPECT(on_navmesh(A.navmesh, a->position, 0.5f), "%s: agent %u at (%g, %g, %g) is off its navmesh", when,
+                   (unsigned)i, a->position[0], a->position[1], a->position[2]);
     }
 }
 
@@ -376,7 +431,9 @@ static void group_world_step(void) {
             EXPECT_INVALID(A.world, nl_world_step(A.world, bad[i].dt), "dt");
         }
     }
-    CASE("nl_world_step", "dt 0 (allowed: nothing changes, the last step's events stay)") { EXPECT_OK(nl_world_step(A.world, 0.0f)); }
+    CASE("nl_world_step", "dt 0 (allowed: nothing changes, the last step's events stay)") {
+        EXPECT_OK(nl_world_step(A.world, 0.0f));
+    }
     CASE("nl_world_step", "dt -0 (allowed: 0)") { EXPECT_OK(nl_world_step(A.world, -0.0f)); }
     CASE("nl_world_step", "dt FLT_TRUE_MIN (allowed: a step too short to move)") {
         EXPECT_OK(nl_world_step(A.world, FLT_TRUE_MIN));
@@ -430,7 +487,8 @@ static void group_agent_get_info(void) {
         EXPECT(info.size == sizeof info && info.id.index1 == A.agent.index1 && info.id.revision == A.agent.revision &&
                    info.state == NL_AGENT_WALKING && info.user_data == 7u && info.has_destination == 1u &&
                    info.corners_ahead > 0u && finite3(info.position),
-               "size %u, state %u, user_data %llu", (unsigned)info.size, (unsigned)info.state, (unsigned long long)info.user_data);
+               "size %u, state %u, user_data %llu", (unsigned)info.size, (unsigned)info.state,
+               (unsigned long long)info.user_data);
     }
     agent_id_cases(7);
     out_element_sizes("nl_agent_get_info", "out_info", sizeof(nl_agent_info), agent_info_into);
@@ -439,7 +497,9 @@ static void group_agent_get_info(void) {
 static nl_status get_agents(const nl_world* w, void* out, uint32_t capacity, uint32_t* count) {
     return nl_world_get_agents(w, (nl_agent_info*)out, capacity, count);
 }
-static nl_status agents_into(void* out, uint32_t* written) { return nl_world_get_agents(A.world, (nl_agent_info*)out, 256u, written); }
+static nl_status agents_into(void* out, uint32_t* written) {
+    return nl_world_get_agents(A.world, (nl_agent_info*)out, 256u, written);
+}
 
 static void group_world_get_agents(void) {
     g_growable_items = 1;
@@ -484,7 +544,9 @@ static void group_agent_get_corners(void) {
     }
 }
 
-static nl_status trajectory_into(void* out) { return nl_agent_get_trajectory(A.world, A.flyer, (nl_agent_trajectory*)out); }
+static nl_status trajectory_into(void* out) {
+    return nl_agent_get_trajectory(A.world, A.flyer, (nl_agent_trajectory*)out);
+}
 
 static void group_agent_get_trajectory(void) {
     CASE("nl_agent_get_trajectory", "agent on the ground (allowed: kind NONE, the rest zero)") {
@@ -502,11 +564,12 @@ static void group_agent_get_trajectory(void) {
         fill(&t, sizeof t);
         t.size = sizeof t;
         EXPECT_OK(nl_agent_get_trajectory(A.world, A.flyer, &t));
-        EXPECT(t.kind == NL_TRAJECTORY_ARC || t.kind == NL_TRAJECTORY_FALL || t.kind == NL_TRAJECTORY_LINE, "kind %u", (unsigned)t.kind);
+        EXPECT(t.kind == NL_TRAJECTORY_ARC || t.kind == NL_TRAJECTORY_FALL || t.kind == NL_TRAJECTORY_LINE, "kind %u",
+               (unsigned)t.kind);
         EXPECT(t.link.index1 == info.link.index1 && t.link.revision == info.link.revision && t.link.index1 != 0u,
                "the trajectory's link is not the agent's");
-        EXPECT(isfinite(t.duration) && t.duration > 0.0f && t.elapsed >= 0.0f && t.elapsed <= t.duration && finite3(t.from) &&
-                   finite3(t.to) && finite3(t.apex),
+        EXPECT(isfinite(t.duration) && t.duration > 0.0f && t.elapsed >= 0.0f && t.elapsed <= t.duration &&
+                   finite3(t.from) && finite3(t.to) && finite3(t.apex),
                "duration %g, elapsed %g", t.duration, t.elapsed);
     }
     CASE("nl_agent_get_trajectory", "out_trajectory->size 0 (agent on the ground: refused all the same)") {
@@ -529,7 +592,8 @@ static nl_status agent_events_into(void* out, uint32_t* written) {
 
 static void group_world_get_agent_events(void) {
     g_growable_items = 1;
-    world_list_cases("nl_world_get_agent_events", "out_events", sizeof(nl_agent_event), A.agent_events, get_agent_events);
+    world_list_cases("nl_world_get_agent_events", "out_events", sizeof(nl_agent_event), A.agent_events,
+                     get_agent_events);
     g_growable_items = 0;
     out_element_sizes("nl_world_get_agent_events", "out_events", sizeof(nl_agent_event), agent_events_into);
 }
@@ -581,7 +645,8 @@ static void group_agent_navmesh_removed(void) {
         EXPECT_OK(nl_world_step(A.world, 0.05f));
         expect_failed_for_navmesh(lost);
         EXPECT(failed_events_of(lost) == 1, "not one FAILED event");
-        EXPECT(agent_info(A.agent).state != NL_AGENT_FAILED && in_the_air(agent_info(A.flyer).state), "the others stopped");
+        EXPECT(agent_info(A.agent).state != NL_AGENT_FAILED && in_the_air(agent_info(A.flyer).state),
+               "the others stopped");
         fixture_refresh();
     }
     CASE("nl_agent_set_destination", "agent's navmesh removed (INVALID_HANDLE naming it, nothing changed)") {
@@ -590,7 +655,9 @@ static void group_agent_navmesh_removed(void) {
     CASE("nl_agent_teleport", "agent's navmesh removed (INVALID_HANDLE naming it, nothing changed)") {
         EXPECT_BAD_HANDLE(A.world, nl_agent_teleport(A.world, lost, lift_goal), "agent's navmesh");
     }
-    CASE("nl_agent_get_info", "agent's navmesh removed (allowed: FAILED, NAVMESH_REMOVED)") { expect_failed_for_navmesh(lost); }
+    CASE("nl_agent_get_info", "agent's navmesh removed (allowed: FAILED, NAVMESH_REMOVED)") {
+        expect_failed_for_navmesh(lost);
+    }
     CASE("nl_agent_get_corners", "agent's navmesh removed (allowed: no corners)") {
         uint32_t count = 0xdeadbeefu;
         EXPECT_OK(nl_agent_get_corners(A.world, lost, NULL, 0, &count));

@@ -32,10 +32,18 @@ static void group_version(void) {
 }
 
 static void group_status_string(void) {
-    static const nl_status statuses[] = {0u, UINT32_MAX, NL_STATUS_FAILURE, NL_STATUS_SUCCESS | NL_STATUS_FAILURE,
-                                         NL_STATUS_IN_PROGRESS | NL_STATUS_FAILURE, NL_STATUS_DETAIL_MASK};
-    static const char* names[] = {"status 0", "status huge (0xffffffff)", "status FAILURE without a detail",
-                                  "status SUCCESS|FAILURE", "status IN_PROGRESS|FAILURE", "status DETAIL_MASK without a kind"};
+    static const nl_status statuses[] = {0u,
+                                         UINT32_MAX,
+                                         NL_STATUS_FAILURE,
+                                         NL_STATUS_SUCCESS | NL_STATUS_FAILURE,
+                                         NL_STATUS_IN_PROGRESS | NL_STATUS_FAILURE,
+                                         NL_STATUS_DETAIL_MASK};
+    static const char* names[] = {"status 0",
+                                  "status huge (0xffffffff)",
+                                  "status FAILURE without a detail",
+                                  "status SUCCESS|FAILURE",
+                                  "status IN_PROGRESS|FAILURE",
+                                  "status DETAIL_MASK without a kind"};
     size_t i;
     for (i = 0; i < sizeof statuses / sizeof *statuses; ++i) {
         CASE("nl_status_string", "%s", names[i]) {
@@ -74,7 +82,8 @@ static void group_last_error(void) {
             fail_on_purpose();
             EXPECT(pthread_create(&thread, NULL, fresh_thread_record, &ok) == 0, "pthread_create failed");
             pthread_join(thread, NULL);
-            EXPECT(ok, "a thread that made no call has a last status other than SUCCESS, or a NULL or non-empty message");
+            EXPECT(ok,
+                   "a thread that made no call has a last status other than SUCCESS, or a NULL or non-empty message");
             EXPECT(record_is_the_failure(), "another thread's failure changed this thread's record");
         }
     }
@@ -90,18 +99,18 @@ static void group_last_error(void) {
  * Defaults: never fail, set `size`, leave the record alone
  * ------------------------------------------------------------------------------------------- */
 
-#define DEFAULT_CASE(function, type, has_size)                                                         \
-    CASE(#function, "record untouched (never fails)") {                                               \
-        type value;                                                                                   \
-        fail_on_purpose();                                                                            \
-        value = function();                                                                           \
-        EXPECT(record_is_the_failure(), #function " changed the last error record");                 \
-        if (has_size) {                                                                               \
-            uint32_t size;                                                                            \
-            memcpy(&size, &value, sizeof size);                                                       \
-            EXPECT(size == sizeof(type), #function "().size = %u, not sizeof = %u", (unsigned)size,  \
-                   (unsigned)sizeof(type));                                                          \
-        }                                                                                             \
+#define DEFAULT_CASE(function, type, has_size)                                                      \
+    CASE(#function, "record untouched (never fails)") {                                             \
+        type value;                                                                                 \
+        fail_on_purpose();                                                                          \
+        value = function();                                                                         \
+        EXPECT(record_is_the_failure(), #function " changed the last error record");                \
+        if (has_size) {                                                                             \
+            uint32_t size;                                                                          \
+            memcpy(&size, &value, sizeof size);                                                     \
+            EXPECT(size == sizeof(type), #function "().size = %u, not sizeof = %u", (unsigned)size, \
+                   (unsigned)sizeof(type));                                                         \
+        }                                                                                           \
     }
 
 static void group_defaults(void) {
@@ -123,20 +132,21 @@ static void group_defaults(void) {
         EXPECT(a.radius == 0.6f && a.height == 2.0f && a.max_climb == 0.9f && a.max_slope == 45.0f,
                "nl_default_agent_type() = {%g, %g, %g, %g}", a.radius, a.height, a.max_climb, a.max_slope);
     }
-    CASE("nl_default_agent_def", "values as documented (a walker, height 2, 3.5 m/s, 8 m/s2, gravity 9.81, avoidance on)") {
+    CASE("nl_default_agent_def",
+         "values as documented (a walker, height 2, 3.5 m/s, 8 m/s2, gravity 9.81, avoidance on)") {
         const nl_agent_def d = nl_default_agent_def();
         const nl_agent_capabilities c = nl_default_agent_capabilities();
         EXPECT(d.navmesh.index1 == 0u && d.navmesh.revision == 0u && d.height == 2.0f && d.max_speed == 3.5f &&
-                   d.max_acceleration == 8.0f && d.gravity == 9.81f && d.takeoff_speed == 0.0f && d.position[0] == 0.0f &&
-                   d.position[1] == 0.0f && d.position[2] == 0.0f && d.avoidance == 1u && d.user_data == 0u &&
-                   memcmp(&d.capabilities, &c, sizeof c) == 0,
-               "nl_default_agent_def() = {height %g, speed %g, acceleration %g, gravity %g, avoidance %u}", d.height, d.max_speed,
-               d.max_acceleration, d.gravity, (unsigned)d.avoidance);
+                   d.max_acceleration == 8.0f && d.gravity == 9.81f && d.takeoff_speed == 0.0f &&
+                   d.position[0] == 0.0f && d.position[1] == 0.0f && d.position[2] == 0.0f && d.avoidance == 1u &&
+                   d.user_data == 0u && memcmp(&d.capabilities, &c, sizeof c) == 0,
+               "nl_default_agent_def() = {height %g, speed %g, acceleration %g, gravity %g, avoidance %u}", d.height,
+               d.max_speed, d.max_acceleration, d.gravity, (unsigned)d.avoidance);
     }
     CASE("nl_default_agent_capabilities", "values as documented (a walker: radius 0.6, no jumps)") {
         const nl_agent_capabilities a = nl_default_agent_capabilities();
-        EXPECT(a.radius == 0.6f && a.max_jump_distance == 0.0f && a.max_jump_height == 0.0f && a.max_drop_height == 0.0f &&
-                   a.abilities == 0u,
+        EXPECT(a.radius == 0.6f && a.max_jump_distance == 0.0f && a.max_jump_height == 0.0f &&
+                   a.max_drop_height == 0.0f && a.abilities == 0u,
                "nl_default_agent_capabilities() = {%g, %g, %g, %g}", a.max_jump_distance, a.max_jump_height,
                a.max_drop_height, a.radius);
     }

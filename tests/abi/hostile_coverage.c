@@ -59,8 +59,10 @@ static void strip(char* s) {
                 if (*p != '\n') *p = ' ';
             continue;
         }
-        if (*p == '\n') line_start = 1;
-        else if (!isspace((unsigned char)*p)) line_start = 0;
+        if (*p == '\n')
+            line_start = 1;
+        else if (!isspace((unsigned char)*p))
+            line_start = 0;
         ++p;
     }
 }
@@ -90,10 +92,10 @@ static void tokenise(const char* s, tokens* t) {
  * ------------------------------------------------------------------------------------------- */
 
 typedef struct declarator {
-    char type[64];   /* the last type word: "float", "nl_mesh_def", "nl_progress_fn" */
+    char type[64]; /* the last type word: "float", "nl_mesh_def", "nl_progress_fn" */
     char name[64];
-    int pointer;     /* '*' count; a function pointer field counts as 1 */
-    int is_const;    /* const before the type (the pointee for pointers) */
+    int pointer;  /* '*' count; a function pointer field counts as 1 */
+    int is_const; /* const before the type (the pointee for pointers) */
     int is_array;
 } declarator;
 
@@ -145,9 +147,12 @@ static int parse_declarator(char** tok, size_t b, size_t e, declarator* d) {
     if (name_at - b < 2) return 0; /* "void", or a type without a name; else the name ends it */
     snprintf(d->name, sizeof d->name, "%s", tok[name_at - 1]);
     for (i = b; i < name_at - 1; ++i) {
-        if (strcmp(tok[i], "*") == 0) ++d->pointer;
-        else if (strcmp(tok[i], "const") == 0) d->is_const |= d->pointer == 0;
-        else if (!is_type_qualifier(tok[i])) snprintf(d->type, sizeof d->type, "%s", tok[i]);
+        if (strcmp(tok[i], "*") == 0)
+            ++d->pointer;
+        else if (strcmp(tok[i], "const") == 0)
+            d->is_const |= d->pointer == 0;
+        else if (!is_type_qualifier(tok[i]))
+            snprintf(d->type, sizeof d->type, "%s", tok[i]);
     }
     return d->type[0] != '\0' && (isalpha((unsigned char)d->name[0]) || d->name[0] == '_');
 }
@@ -179,8 +184,8 @@ static size_t matching(char** tok, size_t count, size_t open) {
     return count;
 }
 
-static const char* k_integer_types[] = {"uint8_t", "uint16_t", "uint32_t", "uint64_t", "int8_t", "int16_t",
-                                        "int32_t", "int64_t", "size_t",   "int",      "unsigned"};
+static const char* k_integer_types[] = {"uint8_t", "uint16_t", "uint32_t", "uint64_t", "int8_t",  "int16_t",
+                                        "int32_t", "int64_t",  "size_t",   "int",      "unsigned"};
 
 static int is_integer(const declarations* d, const char* type) {
     size_t i;
@@ -382,8 +387,8 @@ static int satisfied(const requirement* q, const case_record* cases, size_t case
 static const coverage_exemption* exempt(const requirement* q, const coverage_exemption* e, size_t n) {
     size_t i;
     for (i = 0; i < n; ++i) {
-        if ((e[i].function == NULL || strcmp(e[i].function, q->function) == 0) && strcmp(e[i].subject, q->subject) == 0 &&
-            strcmp(e[i].condition, q->condition) == 0)
+        if ((e[i].function == NULL || strcmp(e[i].function, q->function) == 0) &&
+            strcmp(e[i].subject, q->subject) == 0 && strcmp(e[i].condition, q->condition) == 0)
             return &e[i];
     }
     return NULL;
@@ -463,7 +468,8 @@ int check_coverage(const char* const* header_dirs, size_t dir_count, const case_
     for (i = 0; i < case_count; ++i) {
         size_t k;
         int declared = 0;
-        for (k = 0; k < d->function_count && !declared; ++k) declared = strcmp(d->functions[k].name, cases[i].function) == 0;
+        for (k = 0; k < d->function_count && !declared; ++k)
+            declared = strcmp(d->functions[k].name, cases[i].function) == 0;
         if (!declared && (i == 0 || strcmp(cases[i - 1].function, cases[i].function) != 0)) {
             ++gaps;
             printf("coverage: UNKNOWN: cases for %s, which no public header declares\n", cases[i].function);
@@ -481,7 +487,8 @@ int check_coverage(const char* const* header_dirs, size_t dir_count, const case_
         if (!used) {
             ++gaps;
             printf("coverage: STALE EXEMPTION: %s: %s %s matches no requirement\n",
-                   exemptions[i].function ? exemptions[i].function : "*", exemptions[i].subject, exemptions[i].condition);
+                   exemptions[i].function ? exemptions[i].function : "*", exemptions[i].subject,
+                   exemptions[i].condition);
         }
     }
     gaps += (int)missing;

@@ -24,9 +24,9 @@ const bad_float k_bad_floats[3] = {{"NaN", NAN}, {"inf", INFINITY}, {"-inf", -IN
 size_t bad_ids(raw_id live, raw_id stale, raw_id foreign, bad_id* out) {
     size_t n = 0, k;
     const raw_id garbage[] = {
-        {live.index1, live.revision + 1u},         /* the slot's next counter */
+        {live.index1, live.revision + 1u},          /* the slot's next counter */
         {live.index1, live.revision ^ 0x80000000u}, /* another world's tag, same counter */
-        {live.index1 + 1000u, live.revision},      /* past the last slot */
+        {live.index1 + 1000u, live.revision},       /* past the last slot */
         {0xffffffffu, 0xffffffffu},
         {0x7fffffffu, 1u},
         {0x9e3779b9u, 0x7f4a7c15u}, /* pseudo-random */
@@ -150,31 +150,38 @@ static void build_world(world_fixture* f) {
     wd.log_level = NL_LOG_ERROR;
     if (NL_FAILED(nl_world_create(&wd, &f->world))) fixture_failed("nl_world_create");
     /* Stale ids whose slots live objects took again (slots are reused last freed first). */
-    if (NL_FAILED(add_box_mesh(f->world, lift_lo, lift_hi, 0u, &f->stale_mesh)) || NL_FAILED(nl_mesh_remove(f->world, f->stale_mesh)))
+    if (NL_FAILED(add_box_mesh(f->world, lift_lo, lift_hi, 0u, &f->stale_mesh)) ||
+        NL_FAILED(nl_mesh_remove(f->world, f->stale_mesh)))
         fixture_failed("the doomed mesh");
     if (NL_FAILED(add_box_mesh(f->world, platform_lo[0], platform_hi[0], 0u, &f->mesh)) ||
         NL_FAILED(add_box_mesh(f->world, platform_lo[1], platform_hi[1], 0u, &scratch)) ||
         NL_FAILED(add_box_mesh(f->world, pit_lo, pit_hi, 0u, &scratch)) ||
         NL_FAILED(add_box_mesh(f->world, lift_lo, lift_hi, NL_MESH_MOVABLE, &f->movable)))
         fixture_failed("the level");
-    if (NL_FAILED(nl_navmesh_add(f->world, &quad, &doomed_navmesh)) || NL_FAILED(nl_navmesh_remove(f->world, doomed_navmesh)))
+    if (NL_FAILED(nl_navmesh_add(f->world, &quad, &doomed_navmesh)) ||
+        NL_FAILED(nl_navmesh_remove(f->world, doomed_navmesh)))
         fixture_failed("the doomed navmesh");
     f->stale_navmesh = doomed_navmesh;
     if (NL_FAILED(nl_navmesh_build(f->world, &build, &f->navmesh))) fixture_failed("nl_navmesh_build");
     if (NL_FAILED(nl_navmesh_add(f->world, &quad, &f->host_navmesh))) fixture_failed("nl_navmesh_add");
-    if (NL_FAILED(nl_link_add(f->world, f->navmesh, &link, &doomed_link)) || NL_FAILED(nl_link_remove(f->world, doomed_link)))
+    if (NL_FAILED(nl_link_add(f->world, f->navmesh, &link, &doomed_link)) ||
+        NL_FAILED(nl_link_remove(f->world, doomed_link)))
         fixture_failed("the doomed link");
     f->stale_link = doomed_link;
-    if (NL_FAILED(nl_navmesh_generate_links(f->world, f->navmesh, NULL, NULL, NULL, NULL))) fixture_failed("generate_links");
+    if (NL_FAILED(nl_navmesh_generate_links(f->world, f->navmesh, NULL, NULL, NULL, NULL)))
+        fixture_failed("generate_links");
     if (NL_FAILED(nl_link_add(f->world, f->navmesh, &link, &f->link))) fixture_failed("nl_link_add");
     {
         uint32_t count = 0;
         if (NL_FAILED(nl_world_get_plugins(f->world, &f->plugin, 1, &count))) fixture_failed("nl_world_get_plugins");
     }
     request = gap_request(f->navmesh);
-    if (NL_FAILED(nl_path_request(f->world, &request, &f->done_ticket)) || NL_FAILED(nl_path_process(f->world, NL_TEST_BUDGET(0, 0.0), NULL)) ||
-        NL_FAILED(nl_path_request(f->world, &request, &f->stale_ticket)) || NL_FAILED(nl_path_process(f->world, NL_TEST_BUDGET(0, 0.0), NULL)) ||
-        NL_FAILED(nl_path_release(f->world, f->stale_ticket)) || NL_FAILED(nl_path_request(f->world, &request, &f->pending_ticket)))
+    if (NL_FAILED(nl_path_request(f->world, &request, &f->done_ticket)) ||
+        NL_FAILED(nl_path_process(f->world, NL_TEST_BUDGET(0, 0.0), NULL)) ||
+        NL_FAILED(nl_path_request(f->world, &request, &f->stale_ticket)) ||
+        NL_FAILED(nl_path_process(f->world, NL_TEST_BUDGET(0, 0.0), NULL)) ||
+        NL_FAILED(nl_path_release(f->world, f->stale_ticket)) ||
+        NL_FAILED(nl_path_request(f->world, &request, &f->pending_ticket)))
         fixture_failed("the path tickets");
     {
         /* The agents: a stale id whose slot the walker took; the flyer stepped until it is on a link
@@ -183,17 +190,21 @@ static void build_world(world_fixture* f) {
         static const float walker_goal[3] = {8.0f, 0.0f, 3.0f}, flyer_goal[3] = {4.0f, 0.0f, -3.0f};
         nl_agent_info info = nl_agent_info_init();
         int step;
-        if (NL_FAILED(nl_agent_add(f->world, &walker, &f->stale_agent)) || NL_FAILED(nl_agent_remove(f->world, f->stale_agent)))
+        if (NL_FAILED(nl_agent_add(f->world, &walker, &f->stale_agent)) ||
+            NL_FAILED(nl_agent_remove(f->world, f->stale_agent)))
             fixture_failed("the doomed agent");
-        if (NL_FAILED(nl_agent_add(f->world, &walker, &f->agent)) || NL_FAILED(nl_agent_add(f->world, &flyer, &f->flyer)) ||
+        if (NL_FAILED(nl_agent_add(f->world, &walker, &f->agent)) ||
+            NL_FAILED(nl_agent_add(f->world, &flyer, &f->flyer)) ||
             NL_FAILED(nl_agent_set_destination(f->world, f->flyer, flyer_goal)))
             fixture_failed("the agents");
         for (step = 0; step < 300 && !in_the_air(info.state); ++step) {
-            if (NL_FAILED(nl_world_step(f->world, 1.0f / 30.0f)) || NL_FAILED(nl_agent_get_info(f->world, f->flyer, &info)))
+            if (NL_FAILED(nl_world_step(f->world, 1.0f / 30.0f)) ||
+                NL_FAILED(nl_agent_get_info(f->world, f->flyer, &info)))
                 fixture_failed("the flyer's steps");
         }
         if (!in_the_air(info.state)) fixture_failed("the flyer never took off");
-        if (NL_FAILED(nl_agent_set_destination(f->world, f->agent, walker_goal)) || NL_FAILED(nl_world_step(f->world, 0.001f)) ||
+        if (NL_FAILED(nl_agent_set_destination(f->world, f->agent, walker_goal)) ||
+            NL_FAILED(nl_world_step(f->world, 0.001f)) ||
             NL_FAILED(nl_world_get_agent_events(f->world, NULL, 0, &f->agent_events)) ||
             NL_FAILED(nl_agent_get_info(f->world, f->flyer, &info)) || !in_the_air(info.state))
             fixture_failed("the walker's path");
@@ -293,8 +304,8 @@ static void put_links(blob* s, nl_world* w) {
 /* A path's result and points, from the done ticket or planned now. */
 typedef nl_status path_fn(const world_fixture* f, nl_path_result* result, nl_path_point* points, uint32_t capacity,
                           uint32_t* count);
-static nl_status done_ticket_path(const world_fixture* f, nl_path_result* result, nl_path_point* points, uint32_t capacity,
-                                  uint32_t* count) {
+static nl_status done_ticket_path(const world_fixture* f, nl_path_result* result, nl_path_point* points,
+                                  uint32_t capacity, uint32_t* count) {
     return nl_path_get_result(f->world, f->done_ticket, result, points, capacity, count);
 }
 static nl_status known_path(const world_fixture* f, nl_path_result* result, nl_path_point* points, uint32_t capacity,
@@ -384,8 +395,9 @@ static void fingerprint(world_fixture* f) {
     blob all = {NULL, 0, 0}, s = {NULL, 0, 0};
     int k;
     for (k = 0; k < 9; ++k) {
-        static const char* names[9] = {"meshes",     "navmeshes",  "links",          "plugins",
-                                       "path queue", "done ticket", "the known path", "the manual link and rays", "agents"};
+        static const char* names[9] = {"meshes",     "navmeshes",   "links",          "plugins",
+                                       "path queue", "done ticket", "the known path", "the manual link and rays",
+                                       "agents"};
         s.size = 0;
         switch (k) {
             case 0: put_each(&s, f->world, get_meshes, mesh_get_info_call, sizeof(nl_mesh_info)); break;
@@ -407,7 +419,8 @@ static void fingerprint(world_fixture* f) {
 }
 
 /* The first section of `now` that differs from `then`, or NULL. */
-static const char* first_difference(const unsigned char* then, size_t then_size, const unsigned char* now, size_t now_size) {
+static const char* first_difference(const unsigned char* then, size_t then_size, const unsigned char* now,
+                                    size_t now_size) {
     size_t a = 0, b = 0;
     while (a < then_size && b < now_size) {
         const char* name = (const char*)then + a;
@@ -415,7 +428,8 @@ static const char* first_difference(const unsigned char* then, size_t then_size,
         const size_t la = strlen(name) + 1, lb = strlen((const char*)now + b) + 1;
         memcpy(&na, then + a + la, sizeof na);
         memcpy(&nb, now + b + lb, sizeof nb);
-        if (strcmp(name, (const char*)now + b) != 0 || na != nb || memcmp(then + a + la + 8, now + b + lb + 8, (size_t)na) != 0)
+        if (strcmp(name, (const char*)now + b) != 0 || na != nb ||
+            memcmp(then + a + la + 8, now + b + lb + 8, (size_t)na) != 0)
             return name;
         a += la + 8 + (size_t)na;
         b += lb + 8 + (size_t)nb;
@@ -441,7 +455,8 @@ static int worlds_unchanged(char* why, size_t why_size) {
         differs = first_difference(then, then_size, worlds[k]->fingerprint, worlds[k]->fingerprint_size);
         if (differs) {
             const size_t used = strlen(why);
-            snprintf(why + used, why_size - used, "%sworld %c: %s differ", same ? "" : "; ", k == 0 ? 'A' : 'B', differs);
+            snprintf(why + used, why_size - used, "%sworld %c: %s differ", same ? "" : "; ", k == 0 ? 'A' : 'B',
+                     differs);
             same = 0;
         }
         /* Keep the reference: a later case is compared with the group's start, not with this one. */
@@ -473,8 +488,8 @@ static void setup_worlds(void) {
         nl_path_outcome pending = 99;
         memset(&result, 0, sizeof result);
         result.size = sizeof result;
-        if (NL_FAILED(nl_path_find(A.world, &request, &result, NULL, 0, &count)) || result.outcome != NL_PATH_COMPLETE ||
-            result.links_used == 0)
+        if (NL_FAILED(nl_path_find(A.world, &request, &result, NULL, 0, &count)) ||
+            result.outcome != NL_PATH_COMPLETE || result.links_used == 0)
             fixture_failed("the known path does not take a link");
         if (NL_FAILED(nl_path_poll(A.world, A.pending_ticket, &pending)) || pending != NL_PATH_PENDING)
             fixture_failed("the pending ticket is not pending");
@@ -511,8 +526,10 @@ void def_cases(const char* function, const void* valid, size_t size, const def_c
             unsigned char* def = (unsigned char*)copy_def(&buffer, valid, size);
             for (k = 0; k < sizeof cases[i].set / sizeof *cases[i].set; ++k)
                 memcpy(def + cases[i].set[k].offset, &cases[i].set[k].as, cases[i].set[k].size);
-            if (cases[i].detail == ALLOWED) accept(def);
-            else refuse(def, cases[i].detail, cases[i].needle);
+            if (cases[i].detail == ALLOWED)
+                accept(def);
+            else
+                refuse(def, cases[i].detail, cases[i].needle);
         }
     }
 }
@@ -525,8 +542,10 @@ void bad_float_fields(const char* function, const char* param, const void* valid
         for (k = 0; k < fields[i].count; ++k) {
             for (v = 0; v < BAD_FLOAT_COUNT; ++v) {
                 char subject[96];
-                if (fields[i].count > 1) snprintf(subject, sizeof subject, "%s->%s[%u]", param, fields[i].name, k);
-                else snprintf(subject, sizeof subject, "%s->%s", param, fields[i].name);
+                if (fields[i].count > 1)
+                    snprintf(subject, sizeof subject, "%s->%s[%u]", param, fields[i].name, k);
+                else
+                    snprintf(subject, sizeof subject, "%s->%s", param, fields[i].name);
                 CASE(function, "%s %s", subject, k_bad_floats[v].name) {
                     aligned_buffer buffer;
                     unsigned char* def = (unsigned char*)copy_def(&buffer, valid, size);
@@ -548,8 +567,10 @@ void def_sizes(const char* function, const char* param, const void* valid, size_
             aligned_buffer buffer;
             void* def = copy_def(&buffer, valid, size);
             set_size(def, sizes[k]);
-            if (k < 2) refuse(def, NL_STATUS_INVALID_ARGUMENT, "size");
-            else accept(def);
+            if (k < 2)
+                refuse(def, NL_STATUS_INVALID_ARGUMENT, "size");
+            else
+                accept(def);
         }
     }
 }
@@ -582,11 +603,15 @@ void def_function_cases(const def_function* f, const void* valid, size_t size) {
     }
     if (f->out_size > 0) {
         CASE(f->function, "%s NULL", f->no_world ? "out_world" : "out_id") {
-            EXPECT_INVALID(f->no_world ? NULL : A.world, f->call(A.world, valid, NULL), f->no_world ? "out_world" : "out_id");
+            EXPECT_INVALID(f->no_world ? NULL : A.world, f->call(A.world, valid, NULL),
+                           f->no_world ? "out_world" : "out_id");
         }
     }
-    if (f->def_optional) CASE(f->function, "def NULL (allowed: defaults)") { def_accepts(NULL); }
-    else CASE(f->function, "def NULL") { def_refuses(NULL, NL_STATUS_INVALID_ARGUMENT, "def"); }
+    if (f->def_optional) CASE(f->function, "def NULL (allowed: defaults)") {
+            def_accepts(NULL);
+        }
+    else
+        CASE(f->function, "def NULL") { def_refuses(NULL, NL_STATUS_INVALID_ARGUMENT, "def"); }
     def_sizes(f->function, "def", valid, size, def_refuses, def_accepts);
 }
 
@@ -604,7 +629,9 @@ static const geometry_row k_geometry_rows[] = {
     {"def->vertices inf", NULL, {GEOMETRY_VERTICES, -1}, {VALUE_INF_VERTICES, 0}},
     {"def->vertices -inf", NULL, {GEOMETRY_VERTICES, -1}, {VALUE_MINUS_INF_VERTICES, 0}},
     {"def->vertex_count 0", "vertex_count", {GEOMETRY_VERTEX_COUNT, -1}, {VALUE_0, 0}},
-    {"def->vertex_count huge (vertices NULL: not read)", "vertices", {GEOMETRY_VERTICES, GEOMETRY_VERTEX_COUNT},
+    {"def->vertex_count huge (vertices NULL: not read)",
+     "vertices",
+     {GEOMETRY_VERTICES, GEOMETRY_VERTEX_COUNT},
      {VALUE_NULL, VALUE_HUGE}},
     {"def->vertex_stride 11 (below 12)", "vertex_stride", {GEOMETRY_VERTEX_STRIDE, -1}, {VALUE_11, 0}},
     {"def->indices NULL", "indices", {GEOMETRY_INDICES, -1}, {VALUE_NULL, 0}},
@@ -637,7 +664,8 @@ void geometry_cases(const char* function, const void* valid, size_t size, const 
         rows[i].description = k_geometry_rows[i].description;
         rows[i].detail = NL_STATUS_INVALID_ARGUMENT;
         rows[i].needle = k_geometry_rows[i].needle ? k_geometry_rows[i].needle : g->bad_vertex;
-        for (k = 0; k < 2; ++k) rows[i].set[k] = geometry_value(g, k_geometry_rows[i].field[k], k_geometry_rows[i].value[k]);
+        for (k = 0; k < 2; ++k)
+            rows[i].set[k] = geometry_value(g, k_geometry_rows[i].field[k], k_geometry_rows[i].value[k]);
     }
     def_cases(function, valid, size, rows, GEOMETRY_ROW_COUNT, def_refuses, def_accepts);
 }
@@ -735,8 +763,10 @@ void out_element_sizes(const char* function, const char* param, size_t size, ele
     int k;
     if (!buffer) exit(2);
     for (k = 0; k < 3; ++k) {
-        CASE(function, k == 0 ? "%s->size 0 (the first element's: unset)" : k == 1 ? "%s->size small (4)"
-                                                                            : "%s->size small (sizeof - 1: no struct's size)",
+        CASE(function,
+             k == 0   ? "%s->size 0 (the first element's: unset)"
+             : k == 1 ? "%s->size small (4)"
+                      : "%s->size small (sizeof - 1: no struct's size)",
              param) {
             uint32_t written = 0;
             fill(buffer, room);
@@ -765,28 +795,33 @@ void id_cases(const id_function* f, raw_id live, raw_id stale, raw_id foreign) {
     aligned_buffer out;
     void* o = f->out_name ? out.bytes : NULL;
     const char* word = strrchr(f->param, '>') ? strrchr(f->param, '>') + 1 : f->param;
-#define FRESH_OUTPUT()                                          \
-    do {                                                        \
-        fill(out.bytes, sizeof out.bytes);                      \
+#define FRESH_OUTPUT()                                               \
+    do {                                                             \
+        fill(out.bytes, sizeof out.bytes);                           \
         if (f->growable) set_size(out.bytes, (uint32_t)f->out_size); \
     } while (0)
-#define CHECK_OUTPUT_UNTOUCHED() \
-    EXPECT_UNTOUCHED(out.bytes + (f->growable ? 4 : 0), sizeof out.bytes - (f->growable ? 4 : 0), f->out_name ? f->out_name : "memory")
+#define CHECK_OUTPUT_UNTOUCHED()                                                                  \
+    EXPECT_UNTOUCHED(out.bytes + (f->growable ? 4 : 0), sizeof out.bytes - (f->growable ? 4 : 0), \
+                     f->out_name ? f->out_name : "memory")
     CASE(f->function, "world NULL") {
         FRESH_OUTPUT();
         EXPECT_INVALID(NULL, f->call(NULL, live, o), "world");
         CHECK_OUTPUT_UNTOUCHED();
     }
     if (f->out_name && !f->out_null_elsewhere) {
-        CASE(f->function, "%s NULL", f->out_name) { EXPECT_INVALID(A.world, f->call(A.world, live, NULL), f->out_name); }
+        CASE(f->function, "%s NULL", f->out_name) {
+            EXPECT_INVALID(A.world, f->call(A.world, live, NULL), f->out_name);
+        }
     }
     FOR_BAD_IDS(bad, live, stale, foreign) {
         CASE(f->function, "%s %s%s", f->param, bad->what, f->answers ? " (an answer, not an error)" : "") {
             nl_status status;
             FRESH_OUTPUT();
             status = f->call(A.world, bad->id, o);
-            if (f->answers) EXPECT_OK(status);
-            else EXPECT_BAD_HANDLE(A.world, status, word);
+            if (f->answers)
+                EXPECT_OK(status);
+            else
+                EXPECT_BAD_HANDLE(A.world, status, word);
             CHECK_OUTPUT_UNTOUCHED();
         }
     }
@@ -810,8 +845,7 @@ static void fill_items(unsigned char* items, size_t room, size_t item_size) {
 }
 static size_t skipped(void) { return g_growable_items ? sizeof(uint32_t) : 0u; }
 
-void list_cases(const char* function, const char* out_name, size_t item_size, uint32_t expected,
-                list_call_fn* call) {
+void list_cases(const char* function, const char* out_name, size_t item_size, uint32_t expected, list_call_fn* call) {
     const size_t room = (expected + 4u) * item_size;
     unsigned char* items = (unsigned char*)malloc(room);
     uint32_t count;
@@ -863,13 +897,16 @@ void list_cases(const char* function, const char* out_name, size_t item_size, ui
             CASE(function, "%s", what[k]) {
                 fill_items(items, room, item_size);
                 count = 0xdeadbeefu;
-                EXPECT_FAILURE(A.world, call(items, k == 0 ? 0u : expected - 1u, &count), NL_STATUS_BUFFER_TOO_SMALL, "capacity");
-                EXPECT(count == expected, "out_count = %u, expected the %u needed", (unsigned)count, (unsigned)expected);
+                EXPECT_FAILURE(A.world, call(items, k == 0 ? 0u : expected - 1u, &count), NL_STATUS_BUFFER_TOO_SMALL,
+                               "capacity");
+                EXPECT(count == expected, "out_count = %u, expected the %u needed", (unsigned)count,
+                       (unsigned)expected);
                 EXPECT_UNTOUCHED(items + skipped(), room - skipped(), out_name);
             }
         }
     }
-    CASE(function, "capacity huge (a buffer of %u + 4 entries: only %u written)", (unsigned)expected, (unsigned)expected) {
+    CASE(function, "capacity huge (a buffer of %u + 4 entries: only %u written)", (unsigned)expected,
+         (unsigned)expected) {
         fill_items(items, room, item_size);
         count = 0xdeadbeefu;
         EXPECT_OK(call(items, UINT32_MAX, &count));
@@ -880,7 +917,9 @@ void list_cases(const char* function, const char* out_name, size_t item_size, ui
 }
 
 static world_list_fn* g_world_list;
-static nl_status call_world_list(void* out, uint32_t capacity, uint32_t* count) { return g_world_list(A.world, out, capacity, count); }
+static nl_status call_world_list(void* out, uint32_t capacity, uint32_t* count) {
+    return g_world_list(A.world, out, capacity, count);
+}
 
 void world_list_cases(const char* function, const char* out_name, size_t item_size, uint32_t expected,
                       world_list_fn* call) {
@@ -959,16 +998,19 @@ void saver_cases(const char* function, const char* out_name, navmesh_saver* save
     }
     {
         const size_t too_small[2] = {0, needed + terminator - 1};
-        const char* what[2] = {"capacity 0 (a buffer given)", terminator ? "capacity small (the length: no room for the NUL)"
-                                                                          : "capacity small (one byte short)"};
+        const char* what[2] = {"capacity 0 (a buffer given)", terminator
+                                                                  ? "capacity small (the length: no room for the NUL)"
+                                                                  : "capacity small (one byte short)"};
         int k;
         for (k = 0; k < 2; ++k) {
             CASE(function, "%s", what[k]) {
                 fill(buffer, room);
                 fill(&length, sizeof length);
-                EXPECT_FAILURE(A.world, saver(A.world, A.navmesh, buffer, too_small[k], &length), NL_STATUS_BUFFER_TOO_SMALL, "capacity");
+                EXPECT_FAILURE(A.world, saver(A.world, A.navmesh, buffer, too_small[k], &length),
+                               NL_STATUS_BUFFER_TOO_SMALL, "capacity");
                 EXPECT_UNTOUCHED(buffer, room, "buffer");
-                EXPECT(length == needed, "%s = %u, expected the %u needed", out_name, (unsigned)length, (unsigned)needed);
+                EXPECT(length == needed, "%s = %u, expected the %u needed", out_name, (unsigned)length,
+                       (unsigned)needed);
             }
         }
     }

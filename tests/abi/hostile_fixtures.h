@@ -40,9 +40,9 @@ typedef struct bad_id {
 size_t bad_ids(raw_id live, raw_id stale, raw_id foreign, bad_id* out);
 
 /* Runs the block once per bad id, with `bad` naming the current one. */
-#define FOR_BAD_IDS(bad, live, stale, foreign)                                                          \
-    for (bad_id bad##_all_[MAX_BAD_IDS], *bad = bad##_all_,                                             \
-                *bad##_end_ = bad##_all_ + bad_ids(RAW(live), RAW(stale), RAW(foreign), bad##_all_); \
+#define FOR_BAD_IDS(bad, live, stale, foreign)                                                                   \
+    for (bad_id bad##_all_[MAX_BAD_IDS],                                                                         \
+         *bad = bad##_all_, *bad##_end_ = bad##_all_ + bad_ids(RAW(live), RAW(stale), RAW(foreign), bad##_all_); \
          bad < bad##_end_; ++bad)
 
 /* A buffer aligned for any struct, for defs copied and made bad. */
@@ -61,13 +61,13 @@ extern float k_costs_257[257];
 
 typedef struct world_fixture {
     nl_world* world;
-    nl_mesh_id mesh, movable, stale_mesh;                    /* mesh took stale_mesh's slot */
-    nl_navmesh_id navmesh, host_navmesh, stale_navmesh;      /* navmesh took stale_navmesh's */
-    nl_link_id link, stale_link;                             /* the manual link; a generated one took stale_link's */
-    nl_plugin_id plugin;                                     /* the built-in Recast builder */
+    nl_mesh_id mesh, movable, stale_mesh;                     /* mesh took stale_mesh's slot */
+    nl_navmesh_id navmesh, host_navmesh, stale_navmesh;       /* navmesh took stale_navmesh's */
+    nl_link_id link, stale_link;                              /* the manual link; a generated one took stale_link's */
+    nl_plugin_id plugin;                                      /* the built-in Recast builder */
     nl_path_ticket done_ticket, pending_ticket, stale_ticket; /* pending took stale_ticket's */
-    nl_agent_id agent, flyer, stale_agent;                   /* agent walks (took stale_agent's slot); flyer is in the air */
-    uint32_t agent_events;                                   /* the events of the fixture's last step */
+    nl_agent_id agent, flyer, stale_agent; /* agent walks (took stale_agent's slot); flyer is in the air */
+    uint32_t agent_events;                 /* the events of the fixture's last step */
     unsigned char* fingerprint;
     size_t fingerprint_size;
 } world_fixture;
@@ -109,17 +109,15 @@ typedef nl_status world_list_fn(const nl_world* world, void* out, uint32_t capac
 
 /* Adapters of the id-taking functions to id_call_fn: with no output, with an output of a type, and
    the nl_*_is_valid functions (answered() turns the 0 they must return into the recorded status). */
-#define ID_CALL_THROUGH(name, id_type, function, through)       \
-    static nl_status name(nl_world* w, raw_id id, void* out) {     \
-        (void)out;                                                  \
-        return through(function(w, AS(id_type, id)));               \
+#define ID_CALL_THROUGH(name, id_type, function, through)      \
+    static nl_status name(nl_world* w, raw_id id, void* out) { \
+        (void)out;                                             \
+        return through(function(w, AS(id_type, id)));          \
     }
 #define ID_CALL(name, id_type, function) ID_CALL_THROUGH(name, id_type, function, )
 #define ID_VALID_CALL(name, id_type, function) ID_CALL_THROUGH(name, id_type, function, answered)
-#define ID_OUT_CALL(name, id_type, out_type, function)             \
-    static nl_status name(nl_world* w, raw_id id, void* out) {     \
-        return function(w, AS(id_type, id), (out_type*)out);        \
-    }
+#define ID_OUT_CALL(name, id_type, out_type, function) \
+    static nl_status name(nl_world* w, raw_id id, void* out) { return function(w, AS(id_type, id), (out_type*)out); }
 /* What an nl_*_is_valid returned, as the recorded status; a 1 for a bad id is reported. */
 nl_status answered(int32_t valid);
 
@@ -157,11 +155,26 @@ typedef struct field_value {
         const void* pointer;
     } as;
 } field_value;
-#define SET_U32(type, member, v) {offsetof(type, member), sizeof(uint32_t), {.u32 = (v)}}
-#define SET_I32(type, member, v) {offsetof(type, member), sizeof(int32_t), {.i32 = (v)}}
-#define SET_LENGTH(type, member, v) {offsetof(type, member), sizeof(size_t), {.length = (v)}}
-#define SET_F32(type, member, v) {offsetof(type, member), sizeof(float), {.f32 = (v)}}
-#define SET_PTR(type, member, v) {offsetof(type, member), sizeof(const void*), {.pointer = (v)}}
+#define SET_U32(type, member, v)                                 \
+    {                                                            \
+        offsetof(type, member), sizeof(uint32_t), { .u32 = (v) } \
+    }
+#define SET_I32(type, member, v)                                \
+    {                                                           \
+        offsetof(type, member), sizeof(int32_t), { .i32 = (v) } \
+    }
+#define SET_LENGTH(type, member, v)                               \
+    {                                                             \
+        offsetof(type, member), sizeof(size_t), { .length = (v) } \
+    }
+#define SET_F32(type, member, v)                              \
+    {                                                         \
+        offsetof(type, member), sizeof(float), { .f32 = (v) } \
+    }
+#define SET_PTR(type, member, v)                                        \
+    {                                                                   \
+        offsetof(type, member), sizeof(const void*), { .pointer = (v) } \
+    }
 
 /* A def made bad (or unusual but allowed) by up to six fields: detail 0 means it is accepted. */
 typedef struct def_case {
@@ -174,8 +187,8 @@ typedef struct def_case {
 #define INVALID NL_STATUS_INVALID_ARGUMENT
 
 /* Each case a copy of `valid` with its fields set, refused or accepted as the case says. */
-void def_cases(const char* function, const void* valid, size_t size, const def_case* cases, size_t count, refuse_fn* refuse,
-               accept_fn* accept);
+void def_cases(const char* function, const void* valid, size_t size, const def_case* cases, size_t count,
+               refuse_fn* refuse, accept_fn* accept);
 
 /* A text a function reads, (data, length) as given (OBJ, JSON), and how it must refuse it. */
 typedef struct text_case {
@@ -194,15 +207,17 @@ typedef struct float_field {
     size_t offset;
     unsigned count;
 } float_field;
-#define FLOAT_FIELD(type, member, n) {#member, offsetof(type, member), (n)}
+#define FLOAT_FIELD(type, member, n) \
+    { #member, offsetof(type, member), (n) }
 
 /* Each float of each field set to each bad value in turn ("def->start[1] NaN"), refused naming it. */
-void bad_float_fields(const char* function, const char* param, const void* valid, size_t size, const float_field* fields,
-                      size_t field_count, refuse_fn* refuse);
+void bad_float_fields(const char* function, const char* param, const void* valid, size_t size,
+                      const float_field* fields, size_t field_count, refuse_fn* refuse);
 
 /* A def's `size` 0, too small (4: the size field alone) and larger than the library's struct (the
    bytes past it are garbage the library must not read as fields). */
-void def_sizes(const char* function, const char* param, const void* valid, size_t size, refuse_fn* refuse, accept_fn* accept);
+void def_sizes(const char* function, const char* param, const void* valid, size_t size, refuse_fn* refuse,
+               accept_fn* accept);
 
 /* A function that makes something from a def: `call` runs it on `world` with `def`, writing the
    new object's id (or world) to `out`; `undo` checks an accepted def's object and removes it. */
@@ -212,8 +227,8 @@ typedef struct def_function {
     def_call_fn* call;
     size_t out_size;
     void (*undo)(const void* out);
-    int def_optional; /* a NULL def means the defaults */
-    int no_world;     /* nl_world_create: no world to pass (nor log) */
+    int def_optional;         /* a NULL def means the defaults */
+    int no_world;             /* nl_world_create: no world to pass (nor log) */
     int world_null_elsewhere; /* its world NULL case is its id cases' */
 } def_function;
 extern const def_function* g_def; /* the function the def cases run now */
@@ -238,8 +253,8 @@ void geometry_cases(const char* function, const void* valid, size_t size, const 
 
 /* A def's optional id at `offset`, named `field` ("def->carrier"): the null id is allowed (the
    def's default), every other bad id is INVALID_HANDLE naming the field. */
-void optional_id_cases(const def_function* f, const void* valid, size_t size, size_t offset, const char* field, raw_id live,
-                       raw_id stale, raw_id foreign);
+void optional_id_cases(const def_function* f, const void* valid, size_t size, size_t offset, const char* field,
+                       raw_id live, raw_id stale, raw_id foreign);
 
 /* A navmesh added (built, loaded) as documented is valid, and is removed: an undo of def_function. */
 void remove_navmesh_out(const void* out);
@@ -277,8 +292,8 @@ typedef struct id_function {
     const char* param;    /* the id's parameter, and the word the message names it by */
     const char* out_name; /* NULL: no output */
     size_t out_size;
-    int growable;         /* the output starts with `size`, set by the caller */
-    int answers;          /* an nl_*_is_valid: a bad id is an answer (0), not an error */
+    int growable; /* the output starts with `size`, set by the caller */
+    int answers;  /* an nl_*_is_valid: a bad id is an answer (0), not an error */
     id_call_fn* call;
     int out_null_elsewhere; /* the output NULL has cases of its own (optional, or a list's) */
 } id_function;
@@ -295,7 +310,8 @@ extern int g_growable_items;
 void list_cases(const char* function, const char* out_name, size_t item_size, uint32_t expected, list_call_fn* call);
 
 /* A list with a world of its own: the world NULL too. */
-void world_list_cases(const char* function, const char* out_name, size_t item_size, uint32_t expected, world_list_fn* call);
+void world_list_cases(const char* function, const char* out_name, size_t item_size, uint32_t expected,
+                      world_list_fn* call);
 
 /* The list functions of a navmesh, with their id cases: `call` lists from A's navmesh. */
 typedef nl_status navmesh_list_fn(const nl_world* world, nl_navmesh_id navmesh, void* out, uint32_t capacity,
@@ -307,7 +323,8 @@ void navmesh_list_cases(const char* function, const char* out_name, size_t item_
    buffer with the two-call pattern and a size_t length (the list cases of uint32_t counts do not
    apply). Every case of a saver: its ids, its output, its buffer. `expected` is what it writes
    (`needed` bytes, then `terminator` more: the NUL of a text). */
-typedef nl_status navmesh_saver(const nl_world* world, nl_navmesh_id navmesh, void* buffer, size_t capacity, size_t* out_length);
+typedef nl_status navmesh_saver(const nl_world* world, nl_navmesh_id navmesh, void* buffer, size_t capacity,
+                                size_t* out_length);
 void saver_cases(const char* function, const char* out_name, navmesh_saver* saver, const unsigned char* expected,
                  size_t needed, size_t terminator);
 

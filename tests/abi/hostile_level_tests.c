@@ -33,9 +33,15 @@ typedef struct transform_change {
     float value;
 } transform_change;
 static const transform_change k_bad_transforms[] = {
-    {"[0] NaN", 0, NAN},          {"[5] inf", 5, INFINITY}, {"[10] -inf", 10, -INFINITY},
-    {"[12] NaN", 12, NAN},        {"[13] inf", 13, INFINITY}, {"[15] NaN", 15, NAN},
-    {"[3] non-affine (1)", 3, 1}, {"[15] non-affine (2)", 15, 2}, {"[0] singular (0: flattens x)", 0, 0},
+    {"[0] NaN", 0, NAN},
+    {"[5] inf", 5, INFINITY},
+    {"[10] -inf", 10, -INFINITY},
+    {"[12] NaN", 12, NAN},
+    {"[13] inf", 13, INFINITY},
+    {"[15] NaN", 15, NAN},
+    {"[3] non-affine (1)", 3, 1},
+    {"[15] non-affine (2)", 15, 2},
+    {"[0] singular (0: flattens x)", 0, 0},
     {"[14] beyond the limit (2e9)", 14, 2.0e9f},
 };
 #define BAD_TRANSFORM_COUNT (sizeof k_bad_transforms / sizeof *k_bad_transforms)
@@ -65,7 +71,8 @@ static void bad_def_transforms(const char* function, const char* suffix, const n
 static void remove_mesh_out(const void* out) {
     nl_mesh_id id;
     memcpy(&id, out, sizeof id);
-    EXPECT(nl_mesh_is_valid(A.world, id) == 1, "the new mesh {%u, %u} is not valid", (unsigned)id.index1, (unsigned)id.revision);
+    EXPECT(nl_mesh_is_valid(A.world, id) == 1, "the new mesh {%u, %u} is not valid", (unsigned)id.index1,
+           (unsigned)id.revision);
     EXPECT_OK(nl_mesh_remove(A.world, id));
 }
 
@@ -107,8 +114,8 @@ static void mesh_def_cases(const def_function* f, const nl_mesh_def* valid) {
         static const struct {
             const char* name;
             float value;
-        } bad_units[] = {{"def->metres_per_unit NaN", NAN}, {"def->metres_per_unit inf", INFINITY},
-                         {"def->metres_per_unit -inf", -INFINITY}, {"def->metres_per_unit negative", -0.01f},
+        } bad_units[] = {{"def->metres_per_unit NaN", NAN},           {"def->metres_per_unit inf", INFINITY},
+                         {"def->metres_per_unit -inf", -INFINITY},    {"def->metres_per_unit negative", -0.01f},
                          {"def->metres_per_unit tiny (1e-7)", 1e-7f}, {"def->metres_per_unit huge (1e7)", 1e7f}};
         size_t i;
         for (i = 0; i < sizeof bad_units / sizeof bad_units[0]; ++i) {
@@ -131,14 +138,20 @@ static void mesh_def_cases(const def_function* f, const nl_mesh_def* valid) {
     }
 }
 
-static const geometry_fields k_mesh_geometry = {GEOMETRY_FIELDS(nl_mesh_def), {k_tile_nan, k_tile_inf, k_tile_minus_inf}, "vertices[2]"};
+static const geometry_fields k_mesh_geometry = {
+    GEOMETRY_FIELDS(nl_mesh_def), {k_tile_nan, k_tile_inf, k_tile_minus_inf}, "vertices[2]"};
 static const def_case k_mesh_defs[] = {
     {"def->vertices beyond the limit (2e9)", INVALID, "vertices[1]", {SET_PTR(nl_mesh_def, vertices, k_tile_far)}},
     {"def->indices out of range (4)", INVALID, "indices[4]", {SET_PTR(nl_mesh_def, indices, k_tile_index_4)}},
-    {"def->indices out of range (UINT32_MAX)", INVALID, "indices[4]", {SET_PTR(nl_mesh_def, indices, k_tile_index_huge)}},
+    {"def->indices out of range (UINT32_MAX)",
+     INVALID,
+     "indices[4]",
+     {SET_PTR(nl_mesh_def, indices, k_tile_index_huge)}},
     {"def->indices degenerate (every triangle)", INVALID, "degenerate", {SET_PTR(nl_mesh_def, indices, k_tile_flat)}},
     {"def->triangle_count 0", INVALID, "triangle_count", {SET_U32(nl_mesh_def, triangle_count, 0u)}},
-    {"def->triangle_count huge (indices NULL: not read)", INVALID, "indices",
+    {"def->triangle_count huge (indices NULL: not read)",
+     INVALID,
+     "indices",
      {SET_PTR(nl_mesh_def, indices, NULL), SET_U32(nl_mesh_def, triangle_count, UINT32_MAX)}},
     {"def->flags unknown (0x80000000)", INVALID, "flags", {SET_U32(nl_mesh_def, flags, 0x80000000u)}},
 };
@@ -150,7 +163,8 @@ static void group_mesh_add(void) {
     movable.flags = NL_MESH_MOVABLE;
     mesh_def_cases(&add, &valid);
     geometry_cases("nl_mesh_add", &valid, sizeof valid, &k_mesh_geometry);
-    def_cases("nl_mesh_add", &valid, sizeof valid, k_mesh_defs, sizeof k_mesh_defs / sizeof *k_mesh_defs, def_refuses, def_accepts);
+    def_cases("nl_mesh_add", &valid, sizeof valid, k_mesh_defs, sizeof k_mesh_defs / sizeof *k_mesh_defs, def_refuses,
+              def_accepts);
     bad_def_transforms("nl_mesh_add", " (movable)", &movable, def_refuses);
 }
 
@@ -164,23 +178,34 @@ static nl_status add_obj_file(nl_world* world, const void* def, void* out) {
 static nl_status add_obj_memory(nl_world* world, const void* def, void* out) {
     return nl_mesh_add_obj_memory(world, g_obj_text, g_obj_length, (const nl_mesh_def*)def, (nl_mesh_id*)out);
 }
-static const def_function k_obj_file = {"nl_mesh_add_obj_file", add_obj_file, sizeof(nl_mesh_id), remove_mesh_out, 1, 0, 0};
-static const def_function k_obj_memory = {"nl_mesh_add_obj_memory", add_obj_memory, sizeof(nl_mesh_id), remove_mesh_out, 1, 0, 0};
+static const def_function k_obj_file = {
+    "nl_mesh_add_obj_file", add_obj_file, sizeof(nl_mesh_id), remove_mesh_out, 1, 0, 0};
+static const def_function k_obj_memory = {
+    "nl_mesh_add_obj_memory", add_obj_memory, sizeof(nl_mesh_id), remove_mesh_out, 1, 0, 0};
 
 /* An OBJ def may set flags, transform and user_data only. */
 static const def_case k_obj_defs[] = {
     {"def->vertices NULL (allowed: an OBJ def has no geometry)", ALLOWED, NULL, {SET_PTR(nl_mesh_def, vertices, NULL)}},
     {"def->vertices set (geometry in an OBJ def)", INVALID, "geometry", {SET_PTR(nl_mesh_def, vertices, k_tile)}},
-    {"def->vertices NaN (geometry in an OBJ def)", INVALID, "geometry",
+    {"def->vertices NaN (geometry in an OBJ def)",
+     INVALID,
+     "geometry",
      {SET_PTR(nl_mesh_def, vertices, k_tile_nan), SET_U32(nl_mesh_def, vertex_count, 4u)}},
-    {"def->vertices inf (geometry in an OBJ def)", INVALID, "geometry",
+    {"def->vertices inf (geometry in an OBJ def)",
+     INVALID,
+     "geometry",
      {SET_PTR(nl_mesh_def, vertices, k_tile_inf), SET_U32(nl_mesh_def, vertex_count, 4u)}},
     {"def->vertex_count 0 (allowed: the default)", ALLOWED, NULL, {SET_U32(nl_mesh_def, vertex_count, 0u)}},
-    {"def->vertex_count huge (geometry in an OBJ def)", INVALID, "geometry", {SET_U32(nl_mesh_def, vertex_count, UINT32_MAX)}},
+    {"def->vertex_count huge (geometry in an OBJ def)",
+     INVALID,
+     "geometry",
+     {SET_U32(nl_mesh_def, vertex_count, UINT32_MAX)}},
     {"def->indices NULL (allowed: the default)", ALLOWED, NULL, {SET_PTR(nl_mesh_def, indices, NULL)}},
     {"def->indices set (geometry in an OBJ def)", INVALID, "geometry", {SET_PTR(nl_mesh_def, indices, k_tile_indices)}},
     {"def->triangle_count 0 (allowed: the default)", ALLOWED, NULL, {SET_U32(nl_mesh_def, triangle_count, 0u)}},
-    {"def->triangle_count huge (geometry in an OBJ def)", INVALID, "geometry",
+    {"def->triangle_count huge (geometry in an OBJ def)",
+     INVALID,
+     "geometry",
      {SET_U32(nl_mesh_def, triangle_count, UINT32_MAX)}},
 };
 
@@ -195,7 +220,8 @@ static const bad_obj k_bad_objs[] = {
     {"text inf coordinate", "v 0 0 0\nv 1 0 0\nv 1 inf 1\nf 1 2 3\n", ":3:"},
     {"text -inf coordinate", "v 0 0 0\nv -inf 0 0\nv 1 0 1\nf 1 2 3\n", ":2:"},
     {"text coordinate overflowing float (1e39)", "v 0 0 0\nv 1 0 0\nv 1 0 1e39\nf 1 2 3\n", ":3:"},
-    {"text face index past the vertices", "v 0 0 0\nv 1 0 0\nv 1 0 1\nf 1 2 4\n", ":4: vertex index 4 is past the last one"},
+    {"text face index past the vertices", "v 0 0 0\nv 1 0 0\nv 1 0 1\nf 1 2 4\n",
+     ":4: vertex index 4 is past the last one"},
     {"text face index huge", "v 0 0 0\nv 1 0 0\nv 1 0 1\nf 1 2 99999999999999999999\n", ":4:"},
     {"text no faces", "v 0 0 0\nv 1 0 0\n", "face"},
 };
@@ -225,7 +251,8 @@ static void bad_obj_cases(const char* function, int from_file) {
 static void obj_def_cases(const def_function* f) {
     const nl_mesh_def valid = nl_default_mesh_def();
     mesh_def_cases(f, &valid);
-    def_cases(f->function, &valid, sizeof valid, k_obj_defs, sizeof k_obj_defs / sizeof *k_obj_defs, def_refuses, def_accepts);
+    def_cases(f->function, &valid, sizeof valid, k_obj_defs, sizeof k_obj_defs / sizeof *k_obj_defs, def_refuses,
+              def_accepts);
 }
 
 static nl_status load_obj_at(const char* path, void* out) {
@@ -246,8 +273,9 @@ static void group_mesh_add_obj_file(void) {
         long_path[8000] = '\0';
         fill(&out, sizeof out);
         status = nl_mesh_add_obj_file(A.world, long_path, NULL, &out);
-        EXPECT(status == (NL_STATUS_FAILURE | NL_STATUS_NOT_FOUND) || status == (NL_STATUS_FAILURE | NL_STATUS_IO_ERROR),
-               "returned 0x%08x (%s), expected NOT_FOUND or IO_ERROR", (unsigned)status, nl_status_string(status));
+        EXPECT(
+            status == (NL_STATUS_FAILURE | NL_STATUS_NOT_FOUND) || status == (NL_STATUS_FAILURE | NL_STATUS_IO_ERROR),
+            "returned 0x%08x (%s), expected NOT_FOUND or IO_ERROR", (unsigned)status, nl_status_string(status));
         EXPECT_FAILURE(A.world, status, status & NL_STATUS_DETAIL_MASK, "aaaa");
         EXPECT_UNTOUCHED(&out, sizeof out, "out_id");
         free(long_path);
@@ -273,8 +301,8 @@ static void group_mesh_add_obj_memory(void) {
         CASE("nl_mesh_add_obj_memory", "%s", texts[i].what) {
             nl_mesh_id out;
             fill(&out, sizeof out);
-            EXPECT_FAILURE(A.world, nl_mesh_add_obj_memory(A.world, texts[i].data, texts[i].length, NULL, &out), texts[i].detail,
-                           texts[i].needle);
+            EXPECT_FAILURE(A.world, nl_mesh_add_obj_memory(A.world, texts[i].data, texts[i].length, NULL, &out),
+                           texts[i].detail, texts[i].needle);
             EXPECT_UNTOUCHED(&out, sizeof out, "out_id");
         }
     }
@@ -307,7 +335,9 @@ static const id_function k_mesh_functions[] = {
     {"nl_mesh_get_info", "mesh", "out_info", sizeof(nl_mesh_info), 1, 0, mesh_get_info_call, 0},
 };
 
-static void mesh_id_cases(size_t which) { id_cases(&k_mesh_functions[which], RAW(A.mesh), RAW(A.stale_mesh), RAW(B.mesh)); }
+static void mesh_id_cases(size_t which) {
+    id_cases(&k_mesh_functions[which], RAW(A.mesh), RAW(A.stale_mesh), RAW(B.mesh));
+}
 
 static void group_mesh_remove(void) { mesh_id_cases(0); }
 
@@ -327,7 +357,8 @@ static void group_mesh_set_transform(void) {
             CASE("nl_mesh_set_transform", "transform%s%s", k_bad_transforms[i].what, suffix) {
                 float m[16];
                 transform_from(&k_bad_transforms[i], m);
-                EXPECT_INVALID(A.world, nl_mesh_set_transform(A.world, mesh, m), transform_needle(&k_bad_transforms[i]));
+                EXPECT_INVALID(A.world, nl_mesh_set_transform(A.world, mesh, m),
+                               transform_needle(&k_bad_transforms[i]));
             }
         }
     }
@@ -342,7 +373,9 @@ static void group_mesh_get_info(void) {
     out_sizes("nl_mesh_get_info", "out_info", sizeof(nl_mesh_info), mesh_info_into);
 }
 
-static void group_world_get_meshes(void) { world_list_cases("nl_world_get_meshes", "out_ids", sizeof(nl_mesh_id), 4u, get_meshes); }
+static void group_world_get_meshes(void) {
+    world_list_cases("nl_world_get_meshes", "out_ids", sizeof(nl_mesh_id), 4u, get_meshes);
+}
 
 /* Batches of three items, the last one made bad: nothing is written for any. `batch` calls the
    function with (items, count, out) for the case's items. */
@@ -374,7 +407,9 @@ static void batch_pointer_cases(const batch_function* f, const void* valid) {
         EXPECT_INVALID(A.world, f->call(A.world, NULL, UINT32_MAX, out), f->items_name);
         EXPECT_UNTOUCHED(out, sizeof out, f->out_name);
     }
-    CASE(f->function, "%s NULL", f->out_name) { EXPECT_INVALID(A.world, f->call(A.world, valid, 3, NULL), f->out_name); }
+    CASE(f->function, "%s NULL", f->out_name) {
+        EXPECT_INVALID(A.world, f->call(A.world, valid, 3, NULL), f->out_name);
+    }
     CASE(f->function, "count huge (%s NULL: the items past the first not read)", f->out_name) {
         EXPECT_INVALID(A.world, f->call(A.world, valid, UINT32_MAX, NULL), f->out_name);
     }
@@ -398,7 +433,7 @@ static void batch_refuses(const void* items, nl_status detail, const char* field
 typedef struct extra_value {
     const char* what; /* "rays->max_distance 0" */
     const char* field;
-    size_t offset;    /* in the item */
+    size_t offset; /* in the item */
     float value;
 } extra_value;
 
@@ -437,8 +472,10 @@ static nl_status cast_known_rays(void* out, uint32_t* written) {
 }
 
 static void group_world_cast_rays(void) {
-    static const batch_function f = {"nl_world_cast_rays", "rays", "out_hits", sizeof(nl_ray), sizeof(nl_ray_hit), cast_rays};
-    const nl_ray valid[3] = {{{-6, 5, 0}, {0, -1, 0}, 100}, {{6, 5, 0}, {0, -1, 0}, 100}, {{42, 5, 0}, {0, -1, 0}, 100}};
+    static const batch_function f = {"nl_world_cast_rays", "rays",   "out_hits", sizeof(nl_ray),
+                                     sizeof(nl_ray_hit),   cast_rays};
+    const nl_ray valid[3] = {
+        {{-6, 5, 0}, {0, -1, 0}, 100}, {{6, 5, 0}, {0, -1, 0}, 100}, {{42, 5, 0}, {0, -1, 0}, 100}};
     static const float_field fields[] = {FLOAT_FIELD(nl_ray, origin, 3), FLOAT_FIELD(nl_ray, direction, 3)};
     static const extra_value extra[] = {
         {"rays->origin beyond the limit (2e9)", "origin", offsetof(nl_ray, origin[1]), 2.0e9f},
@@ -463,11 +500,12 @@ static void group_world_cast_rays(void) {
 }
 
 static void group_world_segments_blocked(void) {
-    static const batch_function f = {"nl_world_segments_blocked", "segments", "out_blocked", sizeof(nl_segment), 1,
-                                     segments_blocked};
+    static const batch_function f = {"nl_world_segments_blocked", "segments", "out_blocked",
+                                     sizeof(nl_segment),          1,          segments_blocked};
     const nl_segment valid[3] = {{{-6, 5, 0}, {-6, -5, 0}}, {{-6, 5, 0}, {6, 5, 0}}, {{42, 5, 0}, {42, -5, 0}}};
     static const float_field fields[] = {FLOAT_FIELD(nl_segment, from, 3), FLOAT_FIELD(nl_segment, to, 3)};
-    static const extra_value extra[] = {{"segments->to beyond the limit (-2e9)", "to", offsetof(nl_segment, to[1]), -2.0e9f}};
+    static const extra_value extra[] = {
+        {"segments->to beyond the limit (-2e9)", "to", offsetof(nl_segment, to[1]), -2.0e9f}};
     batch_pointer_cases(&f, valid);
     batch_float_cases(&f, valid, fields, 2, extra, 1);
 }

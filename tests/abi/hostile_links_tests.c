@@ -11,10 +11,14 @@
 #include <string.h>
 
 static const float_field k_link_def_floats[] = {
-    FLOAT_FIELD(nl_link_def, start, 3),           FLOAT_FIELD(nl_link_def, end, 3),
-    FLOAT_FIELD(nl_link_def, cost_modifier, 1),   FLOAT_FIELD(nl_link_def, requirements.gap, 1),
-    FLOAT_FIELD(nl_link_def, requirements.rise, 1), FLOAT_FIELD(nl_link_def, requirements.drop, 1),
-    FLOAT_FIELD(nl_link_def, requirements.clearance_width, 1), FLOAT_FIELD(nl_link_def, requirements.length, 1),
+    FLOAT_FIELD(nl_link_def, start, 3),
+    FLOAT_FIELD(nl_link_def, end, 3),
+    FLOAT_FIELD(nl_link_def, cost_modifier, 1),
+    FLOAT_FIELD(nl_link_def, requirements.gap, 1),
+    FLOAT_FIELD(nl_link_def, requirements.rise, 1),
+    FLOAT_FIELD(nl_link_def, requirements.drop, 1),
+    FLOAT_FIELD(nl_link_def, requirements.clearance_width, 1),
+    FLOAT_FIELD(nl_link_def, requirements.length, 1),
     FLOAT_FIELD(nl_link_def, tolerance, 1),
 };
 
@@ -27,7 +31,9 @@ static const def_case k_link_defs[] = {
     {"def->cost_modifier negative", INVALID, "cost_modifier", {SET_F32(nl_link_def, cost_modifier, -1.0f)}},
     {"def->requirements.gap negative", INVALID, "gap", {SET_F32(nl_link_def, requirements.gap, -1.0f)}},
     {"def->requirements.length negative", INVALID, "length", {SET_F32(nl_link_def, requirements.length, -1.0f)}},
-    {"def->requirements.clearance_width negative", INVALID, "clearance_width",
+    {"def->requirements.clearance_width negative",
+     INVALID,
+     "clearance_width",
      {SET_F32(nl_link_def, requirements.clearance_width, -1.0f)}},
 };
 
@@ -54,7 +60,8 @@ static const def_function k_link_update = {"nl_link_update", link_update_def_cal
 static void link_def_cases(const def_function* f) {
     const nl_link_def valid = gap_link_def();
     def_function_cases(f, &valid, sizeof valid);
-    def_cases(f->function, &valid, sizeof valid, k_link_defs, sizeof k_link_defs / sizeof *k_link_defs, def_refuses, def_accepts);
+    def_cases(f->function, &valid, sizeof valid, k_link_defs, sizeof k_link_defs / sizeof *k_link_defs, def_refuses,
+              def_accepts);
     bad_float_fields(f->function, "def", &valid, sizeof valid, k_link_def_floats,
                      sizeof k_link_def_floats / sizeof *k_link_def_floats, def_refuses);
     optional_id_cases(f, &valid, sizeof valid, offsetof(nl_link_def, landing_navmesh), "def->landing_navmesh",
@@ -101,8 +108,10 @@ static const id_function k_link_functions[] = {
 static void link_id_cases(size_t which) {
     const nl_link_def def = gap_link_def();
     g_link_def = &def;
-    if (which == 0) id_cases(&k_link_functions[0], RAW(A.navmesh), RAW(A.stale_navmesh), RAW(B.navmesh));
-    else id_cases(&k_link_functions[which], RAW(A.link), RAW(A.stale_link), RAW(B.link));
+    if (which == 0)
+        id_cases(&k_link_functions[0], RAW(A.navmesh), RAW(A.stale_navmesh), RAW(B.navmesh));
+    else
+        id_cases(&k_link_functions[which], RAW(A.link), RAW(A.stale_link), RAW(B.link));
 }
 
 static void group_link_add(void) {
@@ -148,8 +157,14 @@ static void group_navmesh_get_links(void) {
 ID_OUT_CALL(remove_generated_call, nl_navmesh_id, uint32_t, nl_navmesh_remove_generated_links)
 
 static void group_navmesh_remove_generated_links(void) {
-    static const id_function f = {"nl_navmesh_remove_generated_links", "navmesh", "out_removed", sizeof(uint32_t), 0, 0,
-                                  remove_generated_call, 1};
+    static const id_function f = {"nl_navmesh_remove_generated_links",
+                                  "navmesh",
+                                  "out_removed",
+                                  sizeof(uint32_t),
+                                  0,
+                                  0,
+                                  remove_generated_call,
+                                  1};
     id_cases(&f, RAW(A.navmesh), RAW(A.stale_navmesh), RAW(B.navmesh));
     CASE("nl_navmesh_remove_generated_links", "out_removed NULL (allowed: the manual link stays)") {
         const uint32_t before = link_count(A.navmesh);
@@ -163,15 +178,15 @@ static void group_navmesh_remove_generated_links(void) {
 
 /* Link settings: every float of the struct. */
 static const float_field k_link_settings_floats[] = {
-    FLOAT_FIELD(nl_link_settings, min_edge_length, 1),          FLOAT_FIELD(nl_link_settings, sample_spacing, 1),
-    FLOAT_FIELD(nl_link_settings, falloff_distance, 1),         FLOAT_FIELD(nl_link_settings, max_jump_gap, 1),
-    FLOAT_FIELD(nl_link_settings, min_link_distance, 1),        FLOAT_FIELD(nl_link_settings, short_link_distance, 1),
-    FLOAT_FIELD(nl_link_settings, max_jump_up, 1),              FLOAT_FIELD(nl_link_settings, jump_arc_height, 1),
-    FLOAT_FIELD(nl_link_settings, strict_forward_angle, 1),     FLOAT_FIELD(nl_link_settings, permissive_forward_angle, 1),
-    FLOAT_FIELD(nl_link_settings, strict_incline_angle, 1),     FLOAT_FIELD(nl_link_settings, permissive_incline_angle, 1),
-    FLOAT_FIELD(nl_link_settings, max_drop_distance, 1),        FLOAT_FIELD(nl_link_settings, drop_angles, 3),
-    FLOAT_FIELD(nl_link_settings, drop_steepness, 1),           FLOAT_FIELD(nl_link_settings, merge_distance, 1),
-    FLOAT_FIELD(nl_link_settings, clearance_margin, 1),         FLOAT_FIELD(nl_link_settings, walk_factor, 1),
+    FLOAT_FIELD(nl_link_settings, min_edge_length, 1),      FLOAT_FIELD(nl_link_settings, sample_spacing, 1),
+    FLOAT_FIELD(nl_link_settings, falloff_distance, 1),     FLOAT_FIELD(nl_link_settings, max_jump_gap, 1),
+    FLOAT_FIELD(nl_link_settings, min_link_distance, 1),    FLOAT_FIELD(nl_link_settings, short_link_distance, 1),
+    FLOAT_FIELD(nl_link_settings, max_jump_up, 1),          FLOAT_FIELD(nl_link_settings, jump_arc_height, 1),
+    FLOAT_FIELD(nl_link_settings, strict_forward_angle, 1), FLOAT_FIELD(nl_link_settings, permissive_forward_angle, 1),
+    FLOAT_FIELD(nl_link_settings, strict_incline_angle, 1), FLOAT_FIELD(nl_link_settings, permissive_incline_angle, 1),
+    FLOAT_FIELD(nl_link_settings, max_drop_distance, 1),    FLOAT_FIELD(nl_link_settings, drop_angles, 3),
+    FLOAT_FIELD(nl_link_settings, drop_steepness, 1),       FLOAT_FIELD(nl_link_settings, merge_distance, 1),
+    FLOAT_FIELD(nl_link_settings, clearance_margin, 1),     FLOAT_FIELD(nl_link_settings, walk_factor, 1),
     FLOAT_FIELD(nl_link_settings, walk_distance, 1),
 };
 
@@ -209,12 +224,15 @@ static const text_case k_settings_json[] = {
     {"json wrong type", TEXT("{\"sample_spacing\": \"far\"}"), NL_STATUS_INVALID_ARGUMENT, "sample_spacing"},
     {"json inf (1e400)", TEXT("{\"sample_spacing\": 1e400}"), NL_STATUS_INVALID_ARGUMENT, "sample_spacing"},
     {"json -inf (-1e400)", TEXT("{\"merge_distance\": -1e400}"), NL_STATUS_INVALID_ARGUMENT, "merge_distance"},
-    {"json drop_angles 17 entries", TEXT("{\"drop_angles\": [0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0]}"), NL_STATUS_INVALID_ARGUMENT,
-     "drop_angles"},
+    {"json drop_angles 17 entries", TEXT("{\"drop_angles\": [0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0]}"),
+     NL_STATUS_INVALID_ARGUMENT, "drop_angles"},
 };
 
 static const def_case k_settings_counts[] = {
-    {"settings->drop_angle_count huge", INVALID, "drop_angle_count", {SET_U32(nl_link_settings, drop_angle_count, UINT32_MAX)}},
+    {"settings->drop_angle_count huge",
+     INVALID,
+     "drop_angle_count",
+     {SET_U32(nl_link_settings, drop_angle_count, UINT32_MAX)}},
 };
 
 static void group_link_settings_from_json(void) {
@@ -234,7 +252,8 @@ static void group_link_settings_from_json(void) {
     def_sizes("nl_link_settings_from_json", "settings", &valid, sizeof valid, from_json_refuses, from_json_accepts);
     bad_float_fields("nl_link_settings_from_json", "settings", &valid, sizeof valid, k_link_settings_floats,
                      sizeof k_link_settings_floats / sizeof *k_link_settings_floats, from_json_refuses);
-    def_cases("nl_link_settings_from_json", &valid, sizeof valid, k_settings_counts, 1, from_json_refuses, from_json_accepts);
+    def_cases("nl_link_settings_from_json", &valid, sizeof valid, k_settings_counts, 1, from_json_refuses,
+              from_json_accepts);
 }
 
 /* nl_navmesh_generate_links and nl_navmesh_update_links_in_box on A's navmesh: refused before any
@@ -249,7 +268,8 @@ static float g_tolerance = 0.25f;
 static nl_status generate_call(nl_world* world, nl_navmesh_id navmesh, const nl_link_settings* settings,
                                nl_progress_fn* progress, void* user, nl_link_generation_report* report) {
     if (g_cross)
-        return nl_navmesh_generate_cross_links(world, navmesh, A.host_navmesh, g_tolerance, settings, progress, user, report);
+        return nl_navmesh_generate_cross_links(world, navmesh, A.host_navmesh, g_tolerance, settings, progress, user,
+                                               report);
     return g_update ? nl_navmesh_update_links_in_box(world, navmesh, g_box_min, g_box_max, progress, user, report)
                     : nl_navmesh_generate_links(world, navmesh, settings, progress, user, report);
 }
@@ -259,8 +279,8 @@ static void generate_fails_with(nl_navmesh_id navmesh, const void* settings, nl_
     nl_link_generation_report report;
     fill(&report, sizeof report);
     report.size = sizeof report;
-    EXPECT_FAILURE(A.world, generate_call(A.world, navmesh, (const nl_link_settings*)settings, progress, user, &report), detail,
-                   needle);
+    EXPECT_FAILURE(A.world, generate_call(A.world, navmesh, (const nl_link_settings*)settings, progress, user, &report),
+                   detail, needle);
     EXPECT_UNTOUCHED_AFTER_SIZE(&report, sizeof report, "out_report");
 }
 
@@ -308,23 +328,48 @@ static void generation_cases_of(const char* function, const char* param) {
 static void generation_cases(const char* function) { generation_cases_of(function, "navmesh"); }
 
 static const def_case k_generation_settings[] = {
-    {"settings->drop_angle_count huge", INVALID, "drop_angle_count", {SET_U32(nl_link_settings, drop_angle_count, UINT32_MAX)}},
-    {"settings->drop_angle_count 0 (allowed: no drop probes)", ALLOWED, NULL, {SET_U32(nl_link_settings, drop_angle_count, 0u)}},
+    {"settings->drop_angle_count huge",
+     INVALID,
+     "drop_angle_count",
+     {SET_U32(nl_link_settings, drop_angle_count, UINT32_MAX)}},
+    {"settings->drop_angle_count 0 (allowed: no drop probes)",
+     ALLOWED,
+     NULL,
+     {SET_U32(nl_link_settings, drop_angle_count, 0u)}},
     {"settings->min_group_size 0", INVALID, "min_group_size", {SET_U32(nl_link_settings, min_group_size, 0u)}},
-    {"settings->max_group_size huge", INVALID, "max_group_size", {SET_U32(nl_link_settings, max_group_size, UINT32_MAX)}},
+    {"settings->max_group_size huge",
+     INVALID,
+     "max_group_size",
+     {SET_U32(nl_link_settings, max_group_size, UINT32_MAX)}},
     {"settings->arc_segments 0", INVALID, "arc_segments", {SET_U32(nl_link_settings, arc_segments, 0u)}},
     {"settings->arc_segments 1", INVALID, "arc_segments", {SET_U32(nl_link_settings, arc_segments, 1u)}},
     {"settings->arc_segments huge", INVALID, "arc_segments", {SET_U32(nl_link_settings, arc_segments, UINT32_MAX)}},
-    {"settings->sample_spacing tiny (1e-6: far too many samples)", INVALID, "sample_spacing",
+    {"settings->sample_spacing tiny (1e-6: far too many samples)",
+     INVALID,
+     "sample_spacing",
      {SET_F32(nl_link_settings, sample_spacing, 1.0e-6f)}},
-    {"settings->plugin_settings_json NULL (allowed: none)", ALLOWED, NULL, {SET_PTR(nl_link_settings, plugin_settings_json, NULL)}},
-    {"settings->plugin_settings_json not an object", INVALID, "plugin_settings_json",
-     {SET_PTR(nl_link_settings, plugin_settings_json, "[1]"), SET_LENGTH(nl_link_settings, plugin_settings_json_length, 3)}},
-    {"settings->plugin_settings_json malformed", NL_STATUS_PARSE_ERROR, "plugin_settings_json",
-     {SET_PTR(nl_link_settings, plugin_settings_json, "{\"climb\": "), SET_LENGTH(nl_link_settings, plugin_settings_json_length, 10)}},
-    {"settings->plugin_settings_json_length 0 (allowed: none)", ALLOWED, NULL,
-     {SET_PTR(nl_link_settings, plugin_settings_json, "{}"), SET_LENGTH(nl_link_settings, plugin_settings_json_length, 0)}},
-    {"settings->plugin_settings_json_length huge (plugin_settings_json NULL: not read)", INVALID, "plugin_settings_json",
+    {"settings->plugin_settings_json NULL (allowed: none)",
+     ALLOWED,
+     NULL,
+     {SET_PTR(nl_link_settings, plugin_settings_json, NULL)}},
+    {"settings->plugin_settings_json not an object",
+     INVALID,
+     "plugin_settings_json",
+     {SET_PTR(nl_link_settings, plugin_settings_json, "[1]"),
+      SET_LENGTH(nl_link_settings, plugin_settings_json_length, 3)}},
+    {"settings->plugin_settings_json malformed",
+     NL_STATUS_PARSE_ERROR,
+     "plugin_settings_json",
+     {SET_PTR(nl_link_settings, plugin_settings_json, "{\"climb\": "),
+      SET_LENGTH(nl_link_settings, plugin_settings_json_length, 10)}},
+    {"settings->plugin_settings_json_length 0 (allowed: none)",
+     ALLOWED,
+     NULL,
+     {SET_PTR(nl_link_settings, plugin_settings_json, "{}"),
+      SET_LENGTH(nl_link_settings, plugin_settings_json_length, 0)}},
+    {"settings->plugin_settings_json_length huge (plugin_settings_json NULL: not read)",
+     INVALID,
+     "plugin_settings_json",
      {SET_LENGTH(nl_link_settings, plugin_settings_json_length, SIZE_MAX)}},
 };
 
@@ -348,7 +393,8 @@ static nl_status cross_second_call(nl_world* w, raw_id id, void* out) {
 
 static void group_navmesh_generate_cross_links(void) {
     static const char* const function = "nl_navmesh_generate_cross_links";
-    const id_function second = {function, "second", "out_report", sizeof(nl_link_generation_report), 1, 0, cross_second_call, 1};
+    const id_function second = {function, "second", "out_report",      sizeof(nl_link_generation_report),
+                                1,        0,        cross_second_call, 1};
     const nl_link_settings valid = nl_default_link_settings();
     size_t v;
     g_update = 0;
@@ -357,8 +403,8 @@ static void group_navmesh_generate_cross_links(void) {
     id_cases(&second, RAW(A.host_navmesh), RAW(A.stale_navmesh), RAW(B.navmesh));
     CASE(function, "settings NULL (allowed: defaults)") { generate_accepts(NULL); }
     def_sizes(function, "settings", &valid, sizeof valid, generate_refuses, generate_accepts);
-    def_cases(function, &valid, sizeof valid, k_generation_settings, sizeof k_generation_settings / sizeof *k_generation_settings,
-              generate_refuses, generate_accepts);
+    def_cases(function, &valid, sizeof valid, k_generation_settings,
+              sizeof k_generation_settings / sizeof *k_generation_settings, generate_refuses, generate_accepts);
     bad_float_fields(function, "settings", &valid, sizeof valid, k_link_settings_floats,
                      sizeof k_link_settings_floats / sizeof *k_link_settings_floats, generate_refuses);
     for (v = 0; v < sizeof k_bad_floats / sizeof *k_bad_floats; ++v) {
@@ -377,7 +423,8 @@ static void group_navmesh_generate_cross_links(void) {
         nl_link_generation_report report;
         fill(&report, sizeof report);
         report.size = sizeof report;
-        EXPECT_FAILURE(A.world, nl_navmesh_generate_cross_links(A.world, A.navmesh, A.navmesh, 0.25f, NULL, NULL, NULL, &report),
+        EXPECT_FAILURE(A.world,
+                       nl_navmesh_generate_cross_links(A.world, A.navmesh, A.navmesh, 0.25f, NULL, NULL, NULL, &report),
                        NL_STATUS_INVALID_ARGUMENT, "one");
         EXPECT_UNTOUCHED_AFTER_SIZE(&report, sizeof report, "out_report");
     }
@@ -400,7 +447,8 @@ static void group_navmesh_update_links_in_box(void) {
         }
         for (k = 0; k < 3; ++k) {
             for (v = 0; v < BAD_FLOAT_COUNT; ++v) {
-                CASE("nl_navmesh_update_links_in_box", "%s[%d] %s", end ? "box_max" : "box_min", k, k_bad_floats[v].name) {
+                CASE("nl_navmesh_update_links_in_box", "%s[%d] %s", end ? "box_max" : "box_min", k,
+                     k_bad_floats[v].name) {
                     float lo[3], hi[3];
                     memcpy(lo, k_box_min, sizeof lo);
                     memcpy(hi, k_box_max, sizeof hi);
@@ -431,14 +479,16 @@ static char* saved_links(size_t* length) {
     return json;
 }
 
-static nl_status save_links_json_saver(const nl_world* w, nl_navmesh_id n, void* buffer, size_t capacity, size_t* out_length) {
+static nl_status save_links_json_saver(const nl_world* w, nl_navmesh_id n, void* buffer, size_t capacity,
+                                       size_t* out_length) {
     return nl_navmesh_save_links_json(w, n, (char*)buffer, capacity, out_length);
 }
 
 static void group_navmesh_save_links_json(void) {
     size_t needed = 0;
     char* json = saved_links(&needed);
-    saver_cases("nl_navmesh_save_links_json", "out_length", save_links_json_saver, (const unsigned char*)json, needed, 1);
+    saver_cases("nl_navmesh_save_links_json", "out_length", save_links_json_saver, (const unsigned char*)json, needed,
+                1);
     free(json);
 }
 
@@ -474,7 +524,8 @@ static void load_fails_with(const char* json, size_t length, nl_status detail, c
 }
 
 static void group_navmesh_load_links_json(void) {
-    static const id_function f = {"nl_navmesh_load_links_json", "navmesh", "out_count", sizeof(uint32_t), 0, 0, load_id_call, 1};
+    static const id_function f = {
+        "nl_navmesh_load_links_json", "navmesh", "out_count", sizeof(uint32_t), 0, 0, load_id_call, 1};
     static const char* values[][2] = {{"1e400", "inf"}, {"-1e400", "-inf"}, {"null", "null"}, {"\"x\"", "a string"}};
     size_t length, i;
     char* json = saved_links(&length);
@@ -488,7 +539,9 @@ static void group_navmesh_load_links_json(void) {
     g_load_length = length;
     id_cases(&f, RAW(A.navmesh), RAW(A.stale_navmesh), RAW(B.navmesh));
     for (i = 0; i < sizeof texts / sizeof *texts; ++i) {
-        CASE("nl_navmesh_load_links_json", "%s", texts[i].what) { load_fails_with(texts[i].data, texts[i].length, texts[i].detail, texts[i].needle); }
+        CASE("nl_navmesh_load_links_json", "%s", texts[i].what) {
+            load_fails_with(texts[i].data, texts[i].length, texts[i].detail, texts[i].needle);
+        }
     }
     CASE("nl_navmesh_load_links_json", "json another format") {
         char* other = (char*)malloc(length + 1);

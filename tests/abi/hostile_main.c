@@ -42,9 +42,9 @@
 
 /* The parts in the order navlink.h includes them, then plugin.h: their groups run in this order. */
 static const hostile_part* const k_parts[] = {
-    &hostile_base_part,  &hostile_world_part,   &hostile_level_part,   &hostile_navmesh_part,
-    &hostile_links_part, &hostile_navmesh_file_part, &hostile_paths_part, &hostile_queries_part,
-    &hostile_agents_part, &hostile_plugins_part, &hostile_plugin_abi_part,
+    &hostile_base_part,   &hostile_world_part,        &hostile_level_part,      &hostile_navmesh_part,
+    &hostile_links_part,  &hostile_navmesh_file_part, &hostile_paths_part,      &hostile_queries_part,
+    &hostile_agents_part, &hostile_plugins_part,      &hostile_plugin_abi_part,
 };
 #define PART_COUNT (sizeof k_parts / sizeof *k_parts)
 
@@ -52,7 +52,8 @@ const char* g_library_path;
 const char* g_plugin_path;
 
 static const coverage_exemption k_exemptions[] = {
-    {"nl_plugin_get_description", "plugin", "stale", "plugins stay loaded until the world is destroyed: no plugin id goes stale"},
+    {"nl_plugin_get_description", "plugin", "stale",
+     "plugins stay loaded until the world is destroyed: no plugin id goes stale"},
 };
 
 /* Defects whose fix belongs in the core (sdk/) or a plugin, not in the C mapping layer. An entry is
@@ -73,13 +74,19 @@ int main(int argc, char** argv) {
     hostile_group* selected;
     int failed, gaps = 0, i, mode = 0;
     for (i = 1; i < argc; ++i) {
-        if (strcmp(argv[i], "--headers") == 0) mode = 1;
-        else if (strcmp(argv[i], "--library") == 0 && i + 1 < argc) g_library_path = argv[++i];
-        else if (strcmp(argv[i], "--plugin") == 0 && i + 1 < argc) g_plugin_path = argv[++i];
-        else if (strcmp(argv[i], "--only") == 0 && i + 1 < argc) only = argv[++i];
-        else if (mode == 1 && dir_count < sizeof header_dirs / sizeof *header_dirs) header_dirs[dir_count++] = argv[i];
+        if (strcmp(argv[i], "--headers") == 0)
+            mode = 1;
+        else if (strcmp(argv[i], "--library") == 0 && i + 1 < argc)
+            g_library_path = argv[++i];
+        else if (strcmp(argv[i], "--plugin") == 0 && i + 1 < argc)
+            g_plugin_path = argv[++i];
+        else if (strcmp(argv[i], "--only") == 0 && i + 1 < argc)
+            only = argv[++i];
+        else if (mode == 1 && dir_count < sizeof header_dirs / sizeof *header_dirs)
+            header_dirs[dir_count++] = argv[i];
         else {
-            fprintf(stderr, "usage: %s --headers DIR... [--library LIBNAVLINK] [--plugin PLUGIN] [--only GROUP]\n", argv[0]);
+            fprintf(stderr, "usage: %s --headers DIR... [--library LIBNAVLINK] [--plugin PLUGIN] [--only GROUP]\n",
+                    argv[0]);
             return 2;
         }
     }
@@ -88,7 +95,8 @@ int main(int argc, char** argv) {
     if (!selected) return 2;
     for (p = 0; p < PART_COUNT; ++p)
         for (g = 0; g < k_parts[p]->count; ++g)
-            if (!only || strcmp(only, k_parts[p]->groups[g].name) == 0) selected[selected_count++] = k_parts[p]->groups[g];
+            if (!only || strcmp(only, k_parts[p]->groups[g].name) == 0)
+                selected[selected_count++] = k_parts[p]->groups[g];
     failed = run_groups(selected, selected_count, &hostile_worlds, &cases, &case_count);
     free(selected);
     if (only) {
@@ -97,7 +105,8 @@ int main(int argc, char** argv) {
         printf("coverage: FAILED: no --headers given, so no check that every function has its cases\n");
         gaps = 1;
     } else {
-        gaps = check_coverage(header_dirs, dir_count, cases, case_count, k_exemptions, sizeof k_exemptions / sizeof *k_exemptions);
+        gaps = check_coverage(header_dirs, dir_count, cases, case_count, k_exemptions,
+                              sizeof k_exemptions / sizeof *k_exemptions);
     }
     free(cases);
     printf("%s\n", failed == 0 && gaps == 0 ? "PASSED" : "FAILED");

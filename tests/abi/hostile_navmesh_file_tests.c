@@ -36,8 +36,12 @@ static void group_navmesh_save_file(void) {
     make_tmp();
     snprintf(g_save_path, sizeof g_save_path, "%s/saved.nlnav", g_tmp);
     id_cases(&f, RAW(A.navmesh), RAW(A.stale_navmesh), RAW(B.navmesh));
-    CASE("nl_navmesh_save_file", "path NULL") { EXPECT_INVALID(A.world, nl_navmesh_save_file(A.world, A.navmesh, NULL), "path"); }
-    CASE("nl_navmesh_save_file", "path empty") { EXPECT_INVALID(A.world, nl_navmesh_save_file(A.world, A.navmesh, ""), "path"); }
+    CASE("nl_navmesh_save_file", "path NULL") {
+        EXPECT_INVALID(A.world, nl_navmesh_save_file(A.world, A.navmesh, NULL), "path");
+    }
+    CASE("nl_navmesh_save_file", "path empty") {
+        EXPECT_INVALID(A.world, nl_navmesh_save_file(A.world, A.navmesh, ""), "path");
+    }
     CASE("nl_navmesh_save_file", "path in a missing folder") {
         char path[300];
         snprintf(path, sizeof path, "%s/no-such-folder/x.nlnav", g_tmp);
@@ -60,7 +64,8 @@ static void group_navmesh_save_file(void) {
             got = fread(read, 1, size + 1, f2);
             fclose(f2);
         }
-        EXPECT(got == size && memcmp(read, file, size) == 0, "the file holds %u bytes, not the %u saved", (unsigned)got, (unsigned)size);
+        EXPECT(got == size && memcmp(read, file, size) == 0, "the file holds %u bytes, not the %u saved", (unsigned)got,
+               (unsigned)size);
         free(read);
         free(file);
     }
@@ -71,25 +76,30 @@ static void group_navmesh_save_file(void) {
 static unsigned char* g_navmesh_file;
 static size_t g_navmesh_file_size;
 static nl_status load_navmesh_call(nl_world* world, const void* def, void* out) {
-    return nl_navmesh_load(world, g_navmesh_file, g_navmesh_file_size, (const nl_navmesh_load_def*)def, (nl_navmesh_id*)out);
+    return nl_navmesh_load(world, g_navmesh_file, g_navmesh_file_size, (const nl_navmesh_load_def*)def,
+                           (nl_navmesh_id*)out);
 }
 static nl_status load_navmesh_file_call(nl_world* world, const void* def, void* out) {
     return nl_navmesh_load_file(world, g_save_path, (const nl_navmesh_load_def*)def, (nl_navmesh_id*)out);
 }
-static const def_function k_navmesh_load = {"nl_navmesh_load", load_navmesh_call, sizeof(nl_navmesh_id), remove_navmesh_out, 1, 0, 0};
-static const def_function k_navmesh_load_file = {"nl_navmesh_load_file", load_navmesh_file_call, sizeof(nl_navmesh_id),
-                                                 remove_navmesh_out, 1, 0, 0};
+static const def_function k_navmesh_load = {
+    "nl_navmesh_load", load_navmesh_call, sizeof(nl_navmesh_id), remove_navmesh_out, 1, 0, 0};
+static const def_function k_navmesh_load_file = {
+    "nl_navmesh_load_file", load_navmesh_file_call, sizeof(nl_navmesh_id), remove_navmesh_out, 1, 0, 0};
 
 static const def_case k_load_defs[] = {
     {"def->flags unknown bits", INVALID, "flags", {SET_U32(nl_navmesh_load_def, flags, 0x80u)}},
-    {"def->flags NL_NAVMESH_LOAD_SAME_LEVEL (allowed: the level is the one it was built from)", ALLOWED, NULL,
+    {"def->flags NL_NAVMESH_LOAD_SAME_LEVEL (allowed: the level is the one it was built from)",
+     ALLOWED,
+     NULL,
      {SET_U32(nl_navmesh_load_def, flags, NL_NAVMESH_LOAD_SAME_LEVEL)}},
 };
 
 static void load_def_cases(const def_function* f) {
     const nl_navmesh_load_def valid = nl_default_navmesh_load_def();
     def_function_cases(f, &valid, sizeof valid);
-    def_cases(f->function, &valid, sizeof valid, k_load_defs, sizeof k_load_defs / sizeof *k_load_defs, def_refuses, def_accepts);
+    def_cases(f->function, &valid, sizeof valid, k_load_defs, sizeof k_load_defs / sizeof *k_load_defs, def_refuses,
+              def_accepts);
     optional_id_cases(f, &valid, sizeof valid, offsetof(nl_navmesh_load_def, carrier), "def->carrier", RAW(A.movable),
                       RAW(A.stale_mesh), RAW(B.movable));
 }
@@ -106,9 +116,15 @@ static void group_navmesh_load(void) {
     unsigned char* bad;
     g_navmesh_file = saved_navmesh(&g_navmesh_file_size);
     load_def_cases(&k_navmesh_load);
-    CASE("nl_navmesh_load", "data NULL (size 10)") { load_data_fails_with(NULL, 10, NL_STATUS_INVALID_ARGUMENT, "data"); }
-    CASE("nl_navmesh_load", "size huge (data NULL: not read)") { load_data_fails_with(NULL, SIZE_MAX, NL_STATUS_INVALID_ARGUMENT, "data"); }
-    CASE("nl_navmesh_load", "size 0 (not a navmesh file)") { load_data_fails_with(g_navmesh_file, 0, NL_STATUS_VERSION_MISMATCH, "not a NavLink navmesh file"); }
+    CASE("nl_navmesh_load", "data NULL (size 10)") {
+        load_data_fails_with(NULL, 10, NL_STATUS_INVALID_ARGUMENT, "data");
+    }
+    CASE("nl_navmesh_load", "size huge (data NULL: not read)") {
+        load_data_fails_with(NULL, SIZE_MAX, NL_STATUS_INVALID_ARGUMENT, "data");
+    }
+    CASE("nl_navmesh_load", "size 0 (not a navmesh file)") {
+        load_data_fails_with(g_navmesh_file, 0, NL_STATUS_VERSION_MISMATCH, "not a NavLink navmesh file");
+    }
     CASE("nl_navmesh_load", "size short (cut in the middle)") {
         load_data_fails_with(g_navmesh_file, g_navmesh_file_size / 2, NL_STATUS_PARSE_ERROR, "truncated");
     }
@@ -120,7 +136,10 @@ static void group_navmesh_load(void) {
         load_data_fails_with(bad, g_navmesh_file_size + 1, NL_STATUS_PARSE_ERROR, "extra bytes");
         free(bad);
     }
-    CASE("nl_navmesh_load", "data a links JSON file") { load_data_fails_with("{\"format\": \"navlink-links\"}", 27, NL_STATUS_VERSION_MISMATCH, "not a NavLink navmesh file"); }
+    CASE("nl_navmesh_load", "data a links JSON file") {
+        load_data_fails_with("{\"format\": \"navlink-links\"}", 27, NL_STATUS_VERSION_MISMATCH,
+                             "not a NavLink navmesh file");
+    }
     CASE("nl_navmesh_load", "data of a newer format version") {
         bad = (unsigned char*)malloc(g_navmesh_file_size);
         if (!bad) exit(2);
@@ -142,7 +161,9 @@ static void group_navmesh_load(void) {
     free(g_navmesh_file);
 }
 
-static nl_status load_navmesh_at(const char* path, void* out) { return nl_navmesh_load_file(A.world, path, NULL, (nl_navmesh_id*)out); }
+static nl_status load_navmesh_at(const char* path, void* out) {
+    return nl_navmesh_load_file(A.world, path, NULL, (nl_navmesh_id*)out);
+}
 
 static void group_navmesh_load_file(void) {
     static const char* made[] = {"saved.nlnav", "bad.nlnav"};
@@ -155,7 +176,8 @@ static void group_navmesh_load_file(void) {
     CASE("nl_navmesh_load_file", "path an OBJ file (named in the message)") {
         nl_navmesh_id out;
         fill(&out, sizeof out);
-        EXPECT_FAILURE(A.world, nl_navmesh_load_file(A.world, g_obj_path, NULL, &out), NL_STATUS_VERSION_MISMATCH, "quad.obj");
+        EXPECT_FAILURE(A.world, nl_navmesh_load_file(A.world, g_obj_path, NULL, &out), NL_STATUS_VERSION_MISMATCH,
+                       "quad.obj");
         EXPECT_UNTOUCHED(&out, sizeof out, "out_id");
     }
     snprintf(path, sizeof path, "%s/bad.nlnav", g_tmp);
@@ -163,7 +185,8 @@ static void group_navmesh_load_file(void) {
     CASE("nl_navmesh_load_file", "path a 5-byte file") {
         nl_navmesh_id out;
         fill(&out, sizeof out);
-        EXPECT_FAILURE(A.world, nl_navmesh_load_file(A.world, path, NULL, &out), NL_STATUS_VERSION_MISMATCH, "bad.nlnav");
+        EXPECT_FAILURE(A.world, nl_navmesh_load_file(A.world, path, NULL, &out), NL_STATUS_VERSION_MISMATCH,
+                       "bad.nlnav");
         EXPECT_UNTOUCHED(&out, sizeof out, "out_id");
     }
     remove_tmp(made, 2);
@@ -207,7 +230,8 @@ static void group_navmesh_file_describe(void) {
                 fill(buffer, sizeof buffer);
                 memcpy(buffer, &sizes[k], sizeof sizes[k]);
                 if (k < 2) {
-                    describe_fails_with(file, size, (nl_navmesh_file_info*)buffer, NULL, 0, NULL, NL_STATUS_INVALID_ARGUMENT, "size");
+                    describe_fails_with(file, size, (nl_navmesh_file_info*)buffer, NULL, 0, NULL,
+                                        NL_STATUS_INVALID_ARGUMENT, "size");
                     EXPECT_UNTOUCHED(buffer + 4, sizeof buffer - 4, "out_info");
                 } else {
                     nl_navmesh_file_info got;

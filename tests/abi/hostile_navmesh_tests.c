@@ -29,9 +29,9 @@ static const uint8_t k_corners_2[1] = {2}, k_corners_17[1] = {17}, k_corners_0[1
 static const uint32_t k_detail_starts_short[2] = {0, 1};
 static const uint32_t k_detail_triangles_9[6] = {0, 1, 2, 0, 2, 9};
 
-#define NO_DETAIL                                                                                                \
-    SET_PTR(nl_navmesh_def, detail_vertices, NULL), SET_U32(nl_navmesh_def, detail_vertex_count, 0u),          \
-        SET_PTR(nl_navmesh_def, detail_triangles, NULL), SET_U32(nl_navmesh_def, detail_triangle_count, 0u),   \
+#define NO_DETAIL                                                                                            \
+    SET_PTR(nl_navmesh_def, detail_vertices, NULL), SET_U32(nl_navmesh_def, detail_vertex_count, 0u),        \
+        SET_PTR(nl_navmesh_def, detail_triangles, NULL), SET_U32(nl_navmesh_def, detail_triangle_count, 0u), \
         SET_PTR(nl_navmesh_def, detail_triangle_starts, NULL)
 static const geometry_fields k_navmesh_geometry = {
     GEOMETRY_FIELDS(nl_navmesh_def), {k_quad_nan, k_quad_inf, k_quad_minus_inf}, "vertices[1]"};
@@ -39,39 +39,75 @@ static const def_case k_navmesh_defs[] = {
     {"def->indices out of range (4)", INVALID, "indices[3]", {SET_PTR(nl_navmesh_def, indices, k_quad_index_4)}},
     {"def->indices concave polygon", INVALID, "convex", {SET_PTR(nl_navmesh_def, vertices, k_dart), NO_DETAIL}},
     {"def->polygon_count 0", INVALID, "polygon_count", {SET_U32(nl_navmesh_def, polygon_count, 0u)}},
-    {"def->polygon_count huge (indices NULL: no per-polygon array read)", INVALID, "indices",
+    {"def->polygon_count huge (indices NULL: no per-polygon array read)",
+     INVALID,
+     "indices",
      {SET_PTR(nl_navmesh_def, indices, NULL), SET_U32(nl_navmesh_def, polygon_count, UINT32_MAX)}},
-    {"def->polygon_vertex_counts NULL (allowed: triangles)", ALLOWED, NULL,
+    {"def->polygon_vertex_counts NULL (allowed: triangles)",
+     ALLOWED,
+     NULL,
      {SET_PTR(nl_navmesh_def, polygon_vertex_counts, NULL), NO_DETAIL}},
-    {"def->polygon_vertex_counts 2", INVALID, "polygon_vertex_counts[0]", {SET_PTR(nl_navmesh_def, polygon_vertex_counts, k_corners_2)}},
-    {"def->polygon_vertex_counts 17", INVALID, "polygon_vertex_counts[0]",
+    {"def->polygon_vertex_counts 2",
+     INVALID,
+     "polygon_vertex_counts[0]",
+     {SET_PTR(nl_navmesh_def, polygon_vertex_counts, k_corners_2)}},
+    {"def->polygon_vertex_counts 17",
+     INVALID,
+     "polygon_vertex_counts[0]",
      {SET_PTR(nl_navmesh_def, polygon_vertex_counts, k_corners_17)}},
-    {"def->polygon_vertex_counts 0", INVALID, "polygon_vertex_counts[0]", {SET_PTR(nl_navmesh_def, polygon_vertex_counts, k_corners_0)}},
+    {"def->polygon_vertex_counts 0",
+     INVALID,
+     "polygon_vertex_counts[0]",
+     {SET_PTR(nl_navmesh_def, polygon_vertex_counts, k_corners_0)}},
     {"def->areas NULL (allowed: area 0)", ALLOWED, NULL, {SET_PTR(nl_navmesh_def, areas, NULL)}},
     {"def->weld_tolerance negative", INVALID, "weld_tolerance", {SET_F32(nl_navmesh_def, weld_tolerance, -1.0f)}},
-    {"def->weld_tolerance 2 (more than 1 m)", INVALID, "weld_tolerance", {SET_F32(nl_navmesh_def, weld_tolerance, 2.0f)}},
+    {"def->weld_tolerance 2 (more than 1 m)",
+     INVALID,
+     "weld_tolerance",
+     {SET_F32(nl_navmesh_def, weld_tolerance, 2.0f)}},
     {"def->agent_type.radius negative", INVALID, "radius", {SET_F32(nl_navmesh_def, agent_type.radius, -0.5f)}},
     {"def->detail_vertices NULL (allowed with no detail at all)", ALLOWED, NULL, {NO_DETAIL}},
-    {"def->detail_vertices NULL (the rest of the detail given)", INVALID, "detail_vertices",
+    {"def->detail_vertices NULL (the rest of the detail given)",
+     INVALID,
+     "detail_vertices",
      {SET_PTR(nl_navmesh_def, detail_vertices, NULL)}},
-    {"def->detail_vertices NaN (detail vertex 2)", INVALID, "detail_vertices[2]",
+    {"def->detail_vertices NaN (detail vertex 2)",
+     INVALID,
+     "detail_vertices[2]",
      {SET_PTR(nl_navmesh_def, detail_vertices, k_quad_detail_nan)}},
-    {"def->detail_vertices inf (detail vertex 2)", INVALID, "detail_vertices[2]",
+    {"def->detail_vertices inf (detail vertex 2)",
+     INVALID,
+     "detail_vertices[2]",
      {SET_PTR(nl_navmesh_def, detail_vertices, k_quad_detail_inf)}},
-    {"def->detail_vertices -inf (detail vertex 2)", INVALID, "detail_vertices[2]",
+    {"def->detail_vertices -inf (detail vertex 2)",
+     INVALID,
+     "detail_vertices[2]",
      {SET_PTR(nl_navmesh_def, detail_vertices, k_quad_detail_minus_inf)}},
     {"def->detail_vertex_count 0", INVALID, "detail_vertex_count", {SET_U32(nl_navmesh_def, detail_vertex_count, 0u)}},
-    {"def->detail_vertex_count huge (detail_vertices NULL: not read)", INVALID, "detail_vertices",
+    {"def->detail_vertex_count huge (detail_vertices NULL: not read)",
+     INVALID,
+     "detail_vertices",
      {SET_PTR(nl_navmesh_def, detail_vertices, NULL), SET_U32(nl_navmesh_def, detail_vertex_count, UINT32_MAX)}},
     {"def->detail_triangles NULL", INVALID, "detail_triangles", {SET_PTR(nl_navmesh_def, detail_triangles, NULL)}},
-    {"def->detail_triangles out of range (9)", INVALID, "detail_triangles[5]",
+    {"def->detail_triangles out of range (9)",
+     INVALID,
+     "detail_triangles[5]",
      {SET_PTR(nl_navmesh_def, detail_triangles, k_detail_triangles_9)}},
-    {"def->detail_triangle_count 0", INVALID, "detail_triangle_count", {SET_U32(nl_navmesh_def, detail_triangle_count, 0u)}},
-    {"def->detail_triangle_count huge (detail_triangles NULL: not read)", INVALID, "detail_triangles",
+    {"def->detail_triangle_count 0",
+     INVALID,
+     "detail_triangle_count",
+     {SET_U32(nl_navmesh_def, detail_triangle_count, 0u)}},
+    {"def->detail_triangle_count huge (detail_triangles NULL: not read)",
+     INVALID,
+     "detail_triangles",
      {SET_PTR(nl_navmesh_def, detail_triangles, NULL), SET_U32(nl_navmesh_def, detail_triangle_count, UINT32_MAX)}},
-    {"def->detail_triangle_starts NULL", INVALID, "detail_triangle_starts",
+    {"def->detail_triangle_starts NULL",
+     INVALID,
+     "detail_triangle_starts",
      {SET_PTR(nl_navmesh_def, detail_triangle_starts, NULL)}},
-    {"def->detail_triangle_starts not ending at the count", INVALID, "detail_triangle_starts",
+    {"def->detail_triangle_starts not ending at the count",
+     INVALID,
+     "detail_triangle_starts",
      {SET_PTR(nl_navmesh_def, detail_triangle_starts, k_detail_starts_short)}},
 };
 #undef NO_DETAIL
@@ -112,7 +148,8 @@ static void carrier_cases(const def_function* f, const void* valid, const void* 
 }
 
 static void group_navmesh_add(void) {
-    static const def_function add = {"nl_navmesh_add", navmesh_add_call, sizeof(nl_navmesh_id), remove_navmesh_out, 0, 0, 0};
+    static const def_function add = {
+        "nl_navmesh_add", navmesh_add_call, sizeof(nl_navmesh_id), remove_navmesh_out, 0, 0, 0};
     static const float_field weld[] = {FLOAT_FIELD(nl_navmesh_def, weld_tolerance, 1)};
     const nl_navmesh_def valid = quad_navmesh_def();
     def_function_cases(&add, &valid, sizeof valid);
@@ -164,7 +201,8 @@ static void group_navmesh_get_polygon(void) {
     CASE("nl_navmesh_get_polygon", "polygon 0 (allowed: the first)") {
         nl_nav_polygon out = nl_nav_polygon_init();
         EXPECT_OK(nl_navmesh_get_polygon(A.world, A.navmesh, 0, &out));
-        EXPECT(out.vertex_count >= 3 && out.vertex_count <= NL_MAX_POLYGON_VERTICES, "vertex_count %u", (unsigned)out.vertex_count);
+        EXPECT(out.vertex_count >= 3 && out.vertex_count <= NL_MAX_POLYGON_VERTICES, "vertex_count %u",
+               (unsigned)out.vertex_count);
     }
     for (k = 0; k < 2; ++k) {
         CASE("nl_navmesh_get_polygon", k == 0 ? "polygon out of range (polygon_count)" : "polygon huge") {
@@ -185,8 +223,8 @@ static nl_status list_edges(const nl_world* w, nl_navmesh_id n, void* out, uint3
 }
 
 static void group_navmesh_get_vertices(void) {
-    navmesh_list_cases("nl_navmesh_get_vertices", "out_xyz", 3 * sizeof(float), navmesh_info(&A, A.navmesh).vertex_count,
-                       list_vertices);
+    navmesh_list_cases("nl_navmesh_get_vertices", "out_xyz", 3 * sizeof(float),
+                       navmesh_info(&A, A.navmesh).vertex_count, list_vertices);
 }
 
 static void group_navmesh_get_boundary_edges(void) {
@@ -200,7 +238,8 @@ static const float k_extents[3] = {2, 4, 2};
 static const float* g_nearest_points = k_points;
 static const float* g_nearest_extents = k_extents;
 static nl_status find_nearest_call(nl_world* w, raw_id id, void* out) {
-    return nl_navmesh_find_nearest(w, AS(nl_navmesh_id, id), g_nearest_points, 2, g_nearest_extents, (nl_nav_point*)out);
+    return nl_navmesh_find_nearest(w, AS(nl_navmesh_id, id), g_nearest_points, 2, g_nearest_extents,
+                                   (nl_nav_point*)out);
 }
 
 static void nearest_refused(const float* points, uint32_t count, const float* extents, const char* needle) {
@@ -211,14 +250,18 @@ static void nearest_refused(const float* points, uint32_t count, const float* ex
 }
 
 static void group_navmesh_find_nearest(void) {
-    static const id_function f = {"nl_navmesh_find_nearest", "navmesh", "out", 2 * sizeof(nl_nav_point), 0, 0, find_nearest_call, 0};
+    static const id_function f = {"nl_navmesh_find_nearest", "navmesh", "out", 2 * sizeof(nl_nav_point), 0, 0,
+                                  find_nearest_call,         0};
     size_t v;
     int k, which;
     id_cases(&f, RAW(A.navmesh), RAW(A.stale_navmesh), RAW(B.navmesh));
     CASE("nl_navmesh_find_nearest", "points NULL") { nearest_refused(NULL, 2, k_extents, "points"); }
-    CASE("nl_navmesh_find_nearest", "count huge (points NULL: not read)") { nearest_refused(NULL, UINT32_MAX, k_extents, "points"); }
+    CASE("nl_navmesh_find_nearest", "count huge (points NULL: not read)") {
+        nearest_refused(NULL, UINT32_MAX, k_extents, "points");
+    }
     CASE("nl_navmesh_find_nearest", "count huge (out NULL: points past the first not read)") {
-        EXPECT_INVALID(A.world, nl_navmesh_find_nearest(A.world, A.navmesh, k_points, UINT32_MAX, k_extents, NULL), "out");
+        EXPECT_INVALID(A.world, nl_navmesh_find_nearest(A.world, A.navmesh, k_points, UINT32_MAX, k_extents, NULL),
+                       "out");
     }
     CASE("nl_navmesh_find_nearest", "count 0 (allowed, with points and out NULL)") {
         EXPECT_OK(nl_navmesh_find_nearest(A.world, A.navmesh, NULL, 0, k_extents, NULL));
@@ -236,8 +279,10 @@ static void group_navmesh_find_nearest(void) {
                     float p[6], e[3];
                     memcpy(p, k_points, sizeof p);
                     memcpy(e, k_extents, sizeof e);
-                    if (which == 0) p[3 + k] = value;
-                    else e[k] = value;
+                    if (which == 0)
+                        p[3 + k] = value;
+                    else
+                        e[k] = value;
                     nearest_refused(p, 2, e, which == 0 ? "points[1]" : "half_extents");
                 }
             }
@@ -262,7 +307,8 @@ static void group_world_get_navmeshes(void) {
 static nl_status build_call(nl_world* world, const void* def, void* out) {
     return nl_navmesh_build(world, (const nl_navmesh_build_def*)def, (nl_navmesh_id*)out);
 }
-static const def_function k_build = {"nl_navmesh_build", build_call, sizeof(nl_navmesh_id), remove_navmesh_out, 0, 0, 0};
+static const def_function k_build = {
+    "nl_navmesh_build", build_call, sizeof(nl_navmesh_id), remove_navmesh_out, 0, 0, 0};
 
 /* Recast's settings made bad, through def->settings. */
 static void build_with_recast_refuses(const void* settings, nl_status detail, const char* needle) {
@@ -278,16 +324,28 @@ static void build_with_recast_accepts(const void* settings) {
     def_accepts(&def);
 }
 
-#define JSON(text) SET_PTR(nl_navmesh_build_def, settings_json, text), SET_LENGTH(nl_navmesh_build_def, settings_json_length, sizeof text - 1)
+#define JSON(text)                                      \
+    SET_PTR(nl_navmesh_build_def, settings_json, text), \
+        SET_LENGTH(nl_navmesh_build_def, settings_json_length, sizeof text - 1)
 static const def_case k_build_defs[] = {
     {"def->builder NULL (allowed: recast)", ALLOWED, NULL, {SET_PTR(nl_navmesh_build_def, builder, NULL)}},
     {"def->builder empty", NL_STATUS_NOT_FOUND, "''", {SET_PTR(nl_navmesh_build_def, builder, "")}},
-    {"def->builder unknown", NL_STATUS_NOT_FOUND, "no-such-builder", {SET_PTR(nl_navmesh_build_def, builder, "no-such-builder")}},
+    {"def->builder unknown",
+     NL_STATUS_NOT_FOUND,
+     "no-such-builder",
+     {SET_PTR(nl_navmesh_build_def, builder, "no-such-builder")}},
     {"def->settings NULL (allowed: Recast's defaults)", ALLOWED, NULL, {SET_PTR(nl_navmesh_build_def, settings, NULL)}},
-    {"def->settings_json NULL (allowed with length 0)", ALLOWED, NULL, {SET_PTR(nl_navmesh_build_def, settings_json, NULL)}},
-    {"def->settings_json_length huge (settings_json NULL: not read)", INVALID, "settings_json",
+    {"def->settings_json NULL (allowed with length 0)",
+     ALLOWED,
+     NULL,
+     {SET_PTR(nl_navmesh_build_def, settings_json, NULL)}},
+    {"def->settings_json_length huge (settings_json NULL: not read)",
+     INVALID,
+     "settings_json",
      {SET_LENGTH(nl_navmesh_build_def, settings_json_length, SIZE_MAX)}},
-    {"def->settings_json_length 0 (an empty string is not a JSON object)", NL_STATUS_PARSE_ERROR, "settings_json",
+    {"def->settings_json_length 0 (an empty string is not a JSON object)",
+     NL_STATUS_PARSE_ERROR,
+     "settings_json",
      {SET_PTR(nl_navmesh_build_def, settings_json, "{}")}},
     {"def->settings_json not an object", INVALID, "settings_json", {JSON("[1]")}},
     {"def->settings_json malformed", NL_STATUS_PARSE_ERROR, "settings_json", {JSON("{\"cell_size\": ")}},
@@ -299,31 +357,45 @@ static const def_case k_build_defs[] = {
 #undef JSON
 
 static const def_case k_recast_settings[] = {
-    {"settings->vertices_per_polygon 0", INVALID, "vertices_per_polygon", {SET_U32(nl_recast_settings, vertices_per_polygon, 0u)}},
-    {"settings->vertices_per_polygon 2", INVALID, "vertices_per_polygon", {SET_U32(nl_recast_settings, vertices_per_polygon, 2u)}},
-    {"settings->vertices_per_polygon 7", INVALID, "vertices_per_polygon", {SET_U32(nl_recast_settings, vertices_per_polygon, 7u)}},
-    {"settings->vertices_per_polygon huge", INVALID, "vertices_per_polygon",
+    {"settings->vertices_per_polygon 0",
+     INVALID,
+     "vertices_per_polygon",
+     {SET_U32(nl_recast_settings, vertices_per_polygon, 0u)}},
+    {"settings->vertices_per_polygon 2",
+     INVALID,
+     "vertices_per_polygon",
+     {SET_U32(nl_recast_settings, vertices_per_polygon, 2u)}},
+    {"settings->vertices_per_polygon 7",
+     INVALID,
+     "vertices_per_polygon",
+     {SET_U32(nl_recast_settings, vertices_per_polygon, 7u)}},
+    {"settings->vertices_per_polygon huge",
+     INVALID,
+     "vertices_per_polygon",
      {SET_U32(nl_recast_settings, vertices_per_polygon, UINT32_MAX)}},
     {"settings->partition 3", INVALID, "partition", {SET_U32(nl_recast_settings, partition, 3u)}},
     {"settings->partition huge", INVALID, "partition", {SET_U32(nl_recast_settings, partition, UINT32_MAX)}},
 };
 
-static const float_field k_recast_floats[] = {
-    FLOAT_FIELD(nl_recast_settings, cell_size, 1),          FLOAT_FIELD(nl_recast_settings, cell_height, 1),
-    FLOAT_FIELD(nl_recast_settings, region_min_size, 1),    FLOAT_FIELD(nl_recast_settings, region_merge_size, 1),
-    FLOAT_FIELD(nl_recast_settings, edge_max_length, 1),    FLOAT_FIELD(nl_recast_settings, edge_max_error, 1),
-    FLOAT_FIELD(nl_recast_settings, detail_sample_distance, 1),
-    FLOAT_FIELD(nl_recast_settings, detail_sample_max_error, 1)};
+static const float_field k_recast_floats[] = {FLOAT_FIELD(nl_recast_settings, cell_size, 1),
+                                              FLOAT_FIELD(nl_recast_settings, cell_height, 1),
+                                              FLOAT_FIELD(nl_recast_settings, region_min_size, 1),
+                                              FLOAT_FIELD(nl_recast_settings, region_merge_size, 1),
+                                              FLOAT_FIELD(nl_recast_settings, edge_max_length, 1),
+                                              FLOAT_FIELD(nl_recast_settings, edge_max_error, 1),
+                                              FLOAT_FIELD(nl_recast_settings, detail_sample_distance, 1),
+                                              FLOAT_FIELD(nl_recast_settings, detail_sample_max_error, 1)};
 
 static void group_navmesh_build(void) {
     const nl_navmesh_build_def valid = nl_default_navmesh_build_def();
     const nl_recast_settings recast = nl_default_recast_settings();
     def_function_cases(&k_build, &valid, sizeof valid);
-    def_cases("nl_navmesh_build", &valid, sizeof valid, k_build_defs, sizeof k_build_defs / sizeof *k_build_defs, def_refuses,
-              def_accepts);
+    def_cases("nl_navmesh_build", &valid, sizeof valid, k_build_defs, sizeof k_build_defs / sizeof *k_build_defs,
+              def_refuses, def_accepts);
     bad_agent_floats("nl_navmesh_build", &valid, sizeof valid, offsetof(nl_navmesh_build_def, agent_type), def_refuses);
     {
-        nl_navmesh_build_def small = valid; /* the 4 m lift, eroded by a 0.6 m body, is below Recast's smallest region */
+        nl_navmesh_build_def small =
+            valid; /* the 4 m lift, eroded by a 0.6 m body, is below Recast's smallest region */
         small.agent_type.radius = 0.2f;
         carrier_cases(&k_build, &valid, &small, sizeof valid, offsetof(nl_navmesh_build_def, carrier));
     }
@@ -344,9 +416,11 @@ static void group_navmesh_build(void) {
         def_accepts(&def);
         EXPECT(g_user_seen == NULL, "the progress callback received user %p, not NULL", g_user_seen);
     }
-    def_sizes("nl_navmesh_build", "settings", &recast, sizeof recast, build_with_recast_refuses, build_with_recast_accepts);
-    def_cases("nl_navmesh_build", &recast, sizeof recast, k_recast_settings, sizeof k_recast_settings / sizeof *k_recast_settings,
-              build_with_recast_refuses, build_with_recast_accepts);
+    def_sizes("nl_navmesh_build", "settings", &recast, sizeof recast, build_with_recast_refuses,
+              build_with_recast_accepts);
+    def_cases("nl_navmesh_build", &recast, sizeof recast, k_recast_settings,
+              sizeof k_recast_settings / sizeof *k_recast_settings, build_with_recast_refuses,
+              build_with_recast_accepts);
     bad_float_fields("nl_navmesh_build", "settings", &recast, sizeof recast, k_recast_floats,
                      sizeof k_recast_floats / sizeof *k_recast_floats, build_with_recast_refuses);
 }

@@ -22,26 +22,54 @@ static const float_field k_request_floats[] = {
 
 static const def_case k_request_defs[] = {
     {"def->start beyond the limit (2e9)", INVALID, "start", {SET_F32(nl_path_request_def, start[0], 2.0e9f)}},
-    {"def->search_half_extents 0", INVALID, "search_half_extents", {SET_F32(nl_path_request_def, search_half_extents[1], 0.0f)}},
-    {"def->search_half_extents negative", INVALID, "search_half_extents",
+    {"def->search_half_extents 0",
+     INVALID,
+     "search_half_extents",
+     {SET_F32(nl_path_request_def, search_half_extents[1], 0.0f)}},
+    {"def->search_half_extents negative",
+     INVALID,
+     "search_half_extents",
      {SET_F32(nl_path_request_def, search_half_extents[1], -1.0f)}},
-    {"def->capabilities.radius negative", INVALID, "radius", {SET_F32(nl_path_request_def, capabilities.radius, -1.0f)}},
+    {"def->capabilities.radius negative",
+     INVALID,
+     "radius",
+     {SET_F32(nl_path_request_def, capabilities.radius, -1.0f)}},
     {"def->link_cost negative", INVALID, "link_cost", {SET_F32(nl_path_request_def, link_cost, -1.0f)}},
-    {"def->area_costs NULL (area_cost_count 3)", INVALID, "area_costs", {SET_U32(nl_path_request_def, area_cost_count, 3u)}},
-    {"def->area_cost_count huge (area_costs NULL: not read)", INVALID, "area_cost_count",
+    {"def->area_costs NULL (area_cost_count 3)",
+     INVALID,
+     "area_costs",
+     {SET_U32(nl_path_request_def, area_cost_count, 3u)}},
+    {"def->area_cost_count huge (area_costs NULL: not read)",
+     INVALID,
+     "area_cost_count",
      {SET_U32(nl_path_request_def, area_cost_count, UINT32_MAX)}},
-    {"def->area_cost_count 257", INVALID, "area_cost_count",
+    {"def->area_cost_count 257",
+     INVALID,
+     "area_cost_count",
      {SET_PTR(nl_path_request_def, area_costs, k_costs_257), SET_U32(nl_path_request_def, area_cost_count, 257u)}},
-    {"def->area_costs NaN ([1])", INVALID, "area_costs[1]",
+    {"def->area_costs NaN ([1])",
+     INVALID,
+     "area_costs[1]",
      {SET_PTR(nl_path_request_def, area_costs, k_costs_nan), SET_U32(nl_path_request_def, area_cost_count, 3u)}},
-    {"def->area_costs inf ([1])", INVALID, "area_costs[1]",
+    {"def->area_costs inf ([1])",
+     INVALID,
+     "area_costs[1]",
      {SET_PTR(nl_path_request_def, area_costs, k_costs_inf), SET_U32(nl_path_request_def, area_cost_count, 3u)}},
-    {"def->area_costs -inf ([1])", INVALID, "area_costs[1]",
+    {"def->area_costs -inf ([1])",
+     INVALID,
+     "area_costs[1]",
      {SET_PTR(nl_path_request_def, area_costs, k_costs_minus_inf), SET_U32(nl_path_request_def, area_cost_count, 3u)}},
-    {"def->area_costs negative ([2])", INVALID, "area_costs[2]",
+    {"def->area_costs negative ([2])",
+     INVALID,
+     "area_costs[2]",
      {SET_PTR(nl_path_request_def, area_costs, k_costs_negative), SET_U32(nl_path_request_def, area_cost_count, 3u)}},
-    {"def->area_costs NULL (allowed with area_cost_count 0)", ALLOWED, NULL, {SET_PTR(nl_path_request_def, area_costs, NULL)}},
-    {"def->area_cost_count 0 (allowed: area_costs not read)", ALLOWED, NULL,
+    {"def->area_costs NULL (allowed with area_cost_count 0)",
+     ALLOWED,
+     NULL,
+     {SET_PTR(nl_path_request_def, area_costs, NULL)}},
+    {"def->area_cost_count 0 (allowed: area_costs not read)",
+     ALLOWED,
+     NULL,
      {SET_PTR(nl_path_request_def, area_costs, "not floats"), SET_U32(nl_path_request_def, area_cost_count, 0u)}},
     {"def->callback NULL (allowed)", ALLOWED, NULL, {SET_PTR(nl_path_request_def, callback, NULL)}},
     {"def->user NULL (allowed: never dereferenced)", ALLOWED, NULL, {SET_PTR(nl_path_request_def, user, NULL)}},
@@ -82,7 +110,8 @@ static void request_refuses(const void* def, nl_status detail, const char* needl
         EXPECT_UNTOUCHED(&ticket, sizeof ticket, "out_ticket");
         EXPECT(g_callbacks == callbacks, "the callback of a refused request ran");
     } else {
-        EXPECT_FAILURE(A.world, nl_path_find(A.world, (const nl_path_request_def*)def, &result, points, 64, &count), detail, needle);
+        EXPECT_FAILURE(A.world, nl_path_find(A.world, (const nl_path_request_def*)def, &result, points, 64, &count),
+                       detail, needle);
         EXPECT_UNTOUCHED_AFTER_SIZE(&result, sizeof result, "out_result");
         EXPECT_UNTOUCHED(points, sizeof points, "out_points");
         EXPECT_UNTOUCHED(&count, sizeof count, "out_count");
@@ -94,8 +123,8 @@ static void request_accepts(const void* def) {
     if (g_explained) {
         nl_path_shortfall shortfall = nl_path_shortfall_init();
         EXPECT_OK(nl_path_explain(A.world, (const nl_path_request_def*)def, &shortfall));
-        EXPECT(shortfall.reason == NL_PATH_SHORTFALL_NONE && shortfall.text[0] == '\0', "reason %u: %s", (unsigned)shortfall.reason,
-               shortfall.text);
+        EXPECT(shortfall.reason == NL_PATH_SHORTFALL_NONE && shortfall.text[0] == '\0', "reason %u: %s",
+               (unsigned)shortfall.reason, shortfall.text);
     } else if (g_queued) {
         nl_path_ticket ticket = {0u, 0u};
         EXPECT_OK(nl_path_request(A.world, (const nl_path_request_def*)def, &ticket));
@@ -136,17 +165,22 @@ static nl_status request_id_call(nl_world* w, raw_id id, void* out) {
 static void request_def_cases(const char* function) {
     nl_path_request_def valid = gap_request(A.navmesh);
     const id_function find = {function, "def->navmesh", "out_result", sizeof(nl_path_result), 1, 0, request_id_call, 1};
-    const id_function request = {function, "def->navmesh", "out_ticket", sizeof(nl_path_ticket), 0, 0, request_id_call, 1};
-    const id_function explain = {function, "def->navmesh", "out_shortfall", sizeof(nl_path_shortfall), 1, 0, request_id_call, 1};
+    const id_function request = {function, "def->navmesh", "out_ticket", sizeof(nl_path_ticket), 0, 0, request_id_call,
+                                 1};
+    const id_function explain = {
+        function, "def->navmesh", "out_shortfall", sizeof(nl_path_shortfall), 1, 0, request_id_call, 1};
     valid.callback = count_callback;
     g_request = &valid;
-    id_cases(g_explained ? &explain : g_queued ? &request : &find, RAW(A.navmesh), RAW(A.stale_navmesh), RAW(B.navmesh));
+    id_cases(g_explained ? &explain
+             : g_queued  ? &request
+                         : &find,
+             RAW(A.navmesh), RAW(A.stale_navmesh), RAW(B.navmesh));
     CASE(function, "def NULL") { request_refuses(NULL, NL_STATUS_INVALID_ARGUMENT, "def"); }
     def_sizes(function, "def", &valid, sizeof valid, request_refuses, request_accepts);
-    def_cases(function, &valid, sizeof valid, k_request_defs, sizeof k_request_defs / sizeof *k_request_defs, request_refuses,
-              request_accepts);
-    bad_float_fields(function, "def", &valid, sizeof valid, k_request_floats, sizeof k_request_floats / sizeof *k_request_floats,
-                     request_refuses);
+    def_cases(function, &valid, sizeof valid, k_request_defs, sizeof k_request_defs / sizeof *k_request_defs,
+              request_refuses, request_accepts);
+    bad_float_fields(function, "def", &valid, sizeof valid, k_request_floats,
+                     sizeof k_request_floats / sizeof *k_request_floats, request_refuses);
 }
 
 /* The result and points of nl_path_find and nl_path_get_result: `call` runs one of them with the
@@ -166,7 +200,8 @@ static void result_cases(const char* function, result_call_fn* call) {
         {"out_count NULL", 1, 1, 0, 64, NL_STATUS_INVALID_ARGUMENT, "out_count"},
         {"out_points NULL (allowed with capacity 0: counts)", 1, 0, 1, 0, 0u, NULL},
         {"capacity huge (out_points NULL)", 1, 0, 1, UINT32_MAX, NL_STATUS_INVALID_ARGUMENT, "out_points"},
-        {"capacity 0 (points given: the result is written, the points are not)", 1, 1, 1, 0, NL_STATUS_BUFFER_TOO_SMALL, "capacity"},
+        {"capacity 0 (points given: the result is written, the points are not)", 1, 1, 1, 0, NL_STATUS_BUFFER_TOO_SMALL,
+         "capacity"},
         {"capacity small (one less than the points)", 1, 1, 1, UINT32_MAX - 1, NL_STATUS_BUFFER_TOO_SMALL, "capacity"},
         {"capacity huge (room for 68: only the points written)", 1, 1, 1, UINT32_MAX, 0u, NULL},
     };
@@ -175,7 +210,8 @@ static void result_cases(const char* function, result_call_fn* call) {
     size_t i;
     memset(&expected, 0, sizeof expected);
     expected.size = sizeof expected;
-    if (NL_FAILED(call(&expected, NULL, 0, &needed)) || needed < 2 || needed >= 68) fixture_failed("the known path's points");
+    if (NL_FAILED(call(&expected, NULL, 0, &needed)) || needed < 2 || needed >= 68)
+        fixture_failed("the known path's points");
     for (i = 0; i < sizeof cases / sizeof *cases; ++i) {
         const result_case* c = &cases[i];
         CASE(function, "%s", c->what) {
@@ -193,12 +229,16 @@ static void result_cases(const char* function, result_call_fn* call) {
             status = call(c->result ? &result : NULL, c->points ? points : NULL, capacity, c->count ? &count : NULL);
             if (c->detail == 0u || c->detail == NL_STATUS_BUFFER_TOO_SMALL) {
                 /* The result and the count are written; the points only when they fit. */
-                if (c->detail == 0u) EXPECT_OK(status);
-                else EXPECT_FAILURE(A.world, status, c->detail, c->needle);
+                if (c->detail == 0u)
+                    EXPECT_OK(status);
+                else
+                    EXPECT_FAILURE(A.world, status, c->detail, c->needle);
                 EXPECT(count == needed && memcmp(&result, &expected, sizeof result) == 0, "count %u, or another result",
                        (unsigned)count);
-                if (c->detail == 0u) EXPECT_UNTOUCHED(points + needed, (68 - needed) * sizeof *points, "the points past out_count");
-                else EXPECT_UNTOUCHED_AFTER_SIZE(points, sizeof points, "out_points");
+                if (c->detail == 0u)
+                    EXPECT_UNTOUCHED(points + needed, (68 - needed) * sizeof *points, "the points past out_count");
+                else
+                    EXPECT_UNTOUCHED_AFTER_SIZE(points, sizeof points, "out_points");
             } else {
                 EXPECT_FAILURE(A.world, status, c->detail, c->needle);
                 EXPECT_UNTOUCHED_AFTER_SIZE(&result, sizeof result, "out_result");
@@ -322,7 +362,8 @@ static void group_path_wait(void) {
         EXPECT_OK(nl_path_wait(A.world, A.done_ticket, NL_PATH_WAIT_FOREVER - 1u, &outcome));
         EXPECT(outcome == NL_PATH_COMPLETE, "outcome %u, expected NL_PATH_COMPLETE", outcome);
     }
-    CASE("nl_path_wait", "timeout_ms huge (NL_PATH_WAIT_FOREVER - 1) on a pending ticket (no workers: this thread plans it)") {
+    CASE("nl_path_wait",
+         "timeout_ms huge (NL_PATH_WAIT_FOREVER - 1) on a pending ticket (no workers: this thread plans it)") {
         nl_path_outcome outcome = 99;
         EXPECT_OK(nl_path_wait(A.world, A.pending_ticket, NL_PATH_WAIT_FOREVER - 1u, &outcome));
         EXPECT(outcome != NL_PATH_PENDING, "still pending after the wait");
@@ -390,15 +431,17 @@ static void group_path_process(void) {
             uint32_t processed;
             nl_status status;
             fill(&processed, sizeof processed);
-            status = nl_path_process(A.world, NL_TEST_BUDGET(cases[i].max_requests, cases[i].max_milliseconds), cases[i].with_out ? &processed : NULL);
+            status = nl_path_process(A.world, NL_TEST_BUDGET(cases[i].max_requests, cases[i].max_milliseconds),
+                                     cases[i].with_out ? &processed : NULL);
             if (cases[i].detail) {
                 EXPECT_INVALID(A.world, status, "max_milliseconds");
                 EXPECT_UNTOUCHED(&processed, sizeof processed, "out_processed");
             } else {
                 EXPECT_OK(status);
                 if (cases[i].with_out)
-                    EXPECT(processed == cases[i].processed, "planned %u requests, expected %u (the pending one, then none)",
-                           (unsigned)processed, (unsigned)cases[i].processed);
+                    EXPECT(processed == cases[i].processed,
+                           "planned %u requests, expected %u (the pending one, then none)", (unsigned)processed,
+                           (unsigned)cases[i].processed);
                 fixture_refresh(); /* the pending request finished */
             }
         }
@@ -550,7 +593,9 @@ static void group_path_get_queue_stats(void) {
         EXPECT_INVALID(NULL, nl_path_get_queue_stats(NULL, &stats), "world");
         EXPECT_UNTOUCHED_AFTER_SIZE(&stats, sizeof stats, "out_stats");
     }
-    CASE("nl_path_get_queue_stats", "out_stats NULL") { EXPECT_INVALID(A.world, nl_path_get_queue_stats(A.world, NULL), "out_stats"); }
+    CASE("nl_path_get_queue_stats", "out_stats NULL") {
+        EXPECT_INVALID(A.world, nl_path_get_queue_stats(A.world, NULL), "out_stats");
+    }
     out_sizes("nl_path_get_queue_stats", "out_stats", sizeof(nl_path_queue_stats), stats_into);
 }
 

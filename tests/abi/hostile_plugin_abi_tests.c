@@ -42,11 +42,14 @@ typedef struct wrong_plugin {
     int no_build;
 } wrong_plugin;
 static const wrong_plugin k_wrong_plugins[] = {
-    {"entry describes no name", NL_STATUS_INVALID_ARGUMENT, "name", NULL, NL_PLUGIN_ABI_VERSION, NL_PLUGIN_NAVMESH_BUILDER, 0},
-    {"entry describes an empty name", NL_STATUS_INVALID_ARGUMENT, "name", "", NL_PLUGIN_ABI_VERSION, NL_PLUGIN_NAVMESH_BUILDER, 0},
-    {"entry describes the name of the built-in builder", NL_STATUS_INVALID_ARGUMENT, "recast", "recast", NL_PLUGIN_ABI_VERSION,
+    {"entry describes no name", NL_STATUS_INVALID_ARGUMENT, "name", NULL, NL_PLUGIN_ABI_VERSION,
      NL_PLUGIN_NAVMESH_BUILDER, 0},
-    {"entry describes ABI version 0", NL_STATUS_VERSION_MISMATCH, "version", "hostile", 0u, NL_PLUGIN_NAVMESH_BUILDER, 0},
+    {"entry describes an empty name", NL_STATUS_INVALID_ARGUMENT, "name", "", NL_PLUGIN_ABI_VERSION,
+     NL_PLUGIN_NAVMESH_BUILDER, 0},
+    {"entry describes the name of the built-in builder", NL_STATUS_INVALID_ARGUMENT, "recast", "recast",
+     NL_PLUGIN_ABI_VERSION, NL_PLUGIN_NAVMESH_BUILDER, 0},
+    {"entry describes ABI version 0", NL_STATUS_VERSION_MISMATCH, "version", "hostile", 0u, NL_PLUGIN_NAVMESH_BUILDER,
+     0},
     {"entry describes an ABI version newer than the host's", NL_STATUS_VERSION_MISMATCH, "version", "hostile",
      NL_PLUGIN_ABI_VERSION + 1u, NL_PLUGIN_NAVMESH_BUILDER, 0},
     {"entry describes a builder without a build function", NL_STATUS_INVALID_ARGUMENT, "build", "hostile",
@@ -83,7 +86,9 @@ static void group_plugin_register(void) {
         EXPECT_UNTOUCHED(&out, sizeof out, "out_id");
     }
     CASE("nl_plugin_register", "entry NULL") { plugin_register_fails_with(NULL, NL_STATUS_INVALID_ARGUMENT, "entry"); }
-    CASE("nl_plugin_register", "out_id NULL") { EXPECT_INVALID(A.world, nl_plugin_register(A.world, entry_refuses, NULL), "out_id"); }
+    CASE("nl_plugin_register", "out_id NULL") {
+        EXPECT_INVALID(A.world, nl_plugin_register(A.world, entry_refuses, NULL), "out_id");
+    }
     CASE("nl_plugin_register", "entry refuses (with a reason)") {
         plugin_register_fails_with(entry_refuses, NL_STATUS_INTERNAL_ERROR, "this plugin always refuses");
     }

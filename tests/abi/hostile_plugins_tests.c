@@ -8,12 +8,14 @@
 
 #include <stdio.h>
 
-static nl_status load_plugin_at(const char* path, void* out) { return nl_plugin_load(A.world, path, (nl_plugin_id*)out); }
+static nl_status load_plugin_at(const char* path, void* out) {
+    return nl_plugin_load(A.world, path, (nl_plugin_id*)out);
+}
 
 static void group_plugin_load(void) {
     static const char* made[] = {"not-a-library.so"};
-    static const bad_path not_a_library = {"path not a library (a text file)", "not-a-library.so", NULL, NL_STATUS_IO_ERROR,
-                                           "not-a-library.so"};
+    static const bad_path not_a_library = {"path not a library (a text file)", "not-a-library.so", NULL,
+                                           NL_STATUS_IO_ERROR, "not-a-library.so"};
     char path[160];
     make_tmp();
     snprintf(path, sizeof path, "%s/not-a-library.so", g_tmp);
@@ -47,8 +49,14 @@ static void group_plugin_load(void) {
 static nl_status description_into(void* out) { return description_call(A.world, RAW(A.plugin), out); }
 
 static void group_plugin_get_description(void) {
-    static const id_function f = {"nl_plugin_get_description", "plugin", "out_description", sizeof(nl_plugin_description), 1, 0,
-                                  description_call, 0};
+    static const id_function f = {"nl_plugin_get_description",
+                                  "plugin",
+                                  "out_description",
+                                  sizeof(nl_plugin_description),
+                                  1,
+                                  0,
+                                  description_call,
+                                  0};
     id_cases(&f, RAW(A.plugin), (raw_id){0u, 0u}, RAW(B.plugin));
     out_sizes("nl_plugin_get_description", "out_description", sizeof(nl_plugin_description), description_into);
 }

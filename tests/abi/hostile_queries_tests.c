@@ -17,7 +17,7 @@ static uint32_t polygon_under(const float* point) {
     const float extents[3] = {1.0f, 2.0f, 1.0f};
     nl_nav_point p;
     return NL_SUCCEEDED(nl_navmesh_find_nearest(A.world, A.navmesh, point, 1, extents, &p)) && p.found ? p.polygon
-                                                                                                      : NL_NO_POLYGON;
+                                                                                                       : NL_NO_POLYGON;
 }
 static uint32_t near_polygon(void) {
     if (g_near == NL_NO_POLYGON) g_near = polygon_under(k_walk_start);
@@ -33,18 +33,33 @@ static const float_field k_filter_floats[] = {
 
 static const def_case k_filter_defs[] = {
     {"filter->capabilities.radius negative", INVALID, "radius", {SET_F32(nl_query_filter, capabilities.radius, -1.0f)}},
-    {"filter->area_costs NULL (area_cost_count 3)", INVALID, "area_costs", {SET_U32(nl_query_filter, area_cost_count, 3u)}},
-    {"filter->area_cost_count huge (area_costs NULL: not read)", INVALID, "area_cost_count",
+    {"filter->area_costs NULL (area_cost_count 3)",
+     INVALID,
+     "area_costs",
+     {SET_U32(nl_query_filter, area_cost_count, 3u)}},
+    {"filter->area_cost_count huge (area_costs NULL: not read)",
+     INVALID,
+     "area_cost_count",
      {SET_U32(nl_query_filter, area_cost_count, UINT32_MAX)}},
-    {"filter->area_cost_count 257", INVALID, "area_cost_count",
+    {"filter->area_cost_count 257",
+     INVALID,
+     "area_cost_count",
      {SET_PTR(nl_query_filter, area_costs, k_costs_257), SET_U32(nl_query_filter, area_cost_count, 257u)}},
-    {"filter->area_costs NaN ([1])", INVALID, "area_costs[1]",
+    {"filter->area_costs NaN ([1])",
+     INVALID,
+     "area_costs[1]",
      {SET_PTR(nl_query_filter, area_costs, k_costs_nan), SET_U32(nl_query_filter, area_cost_count, 3u)}},
-    {"filter->area_costs inf ([1])", INVALID, "area_costs[1]",
+    {"filter->area_costs inf ([1])",
+     INVALID,
+     "area_costs[1]",
      {SET_PTR(nl_query_filter, area_costs, k_costs_inf), SET_U32(nl_query_filter, area_cost_count, 3u)}},
-    {"filter->area_costs negative ([2])", INVALID, "area_costs[2]",
+    {"filter->area_costs negative ([2])",
+     INVALID,
+     "area_costs[2]",
      {SET_PTR(nl_query_filter, area_costs, k_costs_negative), SET_U32(nl_query_filter, area_cost_count, 3u)}},
-    {"filter->area_cost_count 0 (allowed: area_costs not read)", ALLOWED, NULL,
+    {"filter->area_cost_count 0 (allowed: area_costs not read)",
+     ALLOWED,
+     NULL,
      {SET_PTR(nl_query_filter, area_costs, "not floats"), SET_U32(nl_query_filter, area_cost_count, 0u)}},
 };
 
@@ -75,10 +90,10 @@ static void filter_cases(const char* function, query_call_fn* call, size_t out_s
     g_query_out_skip = out_skip;
     CASE(function, "filter NULL (allowed: the default walker)") { query_accepts(NULL); }
     def_sizes(function, "filter", &valid, sizeof valid, query_refuses, query_accepts);
-    def_cases(function, &valid, sizeof valid, k_filter_defs, sizeof k_filter_defs / sizeof *k_filter_defs, query_refuses,
-              query_accepts);
-    bad_float_fields(function, "filter", &valid, sizeof valid, k_filter_floats, sizeof k_filter_floats / sizeof *k_filter_floats,
-                     query_refuses);
+    def_cases(function, &valid, sizeof valid, k_filter_defs, sizeof k_filter_defs / sizeof *k_filter_defs,
+              query_refuses, query_accepts);
+    bad_float_fields(function, "filter", &valid, sizeof valid, k_filter_floats,
+                     sizeof k_filter_floats / sizeof *k_filter_floats, query_refuses);
 }
 
 static void group_default_query_filter(void) {
@@ -111,7 +126,8 @@ static void group_navmesh_can_reach(void) {
     filter_cases("nl_navmesh_can_reach", can_reach_call, sizeof answer, 0);
     CASE("nl_navmesh_can_reach", "from_polygons NULL") {
         fill(answer, sizeof answer);
-        EXPECT_INVALID(A.world, nl_navmesh_can_reach(A.world, A.navmesh, NULL, NULL, &zero, 1, answer), "from_polygons");
+        EXPECT_INVALID(A.world, nl_navmesh_can_reach(A.world, A.navmesh, NULL, NULL, &zero, 1, answer),
+                       "from_polygons");
         EXPECT_UNTOUCHED(answer, sizeof answer, "out_reachable");
     }
     CASE("nl_navmesh_can_reach", "to_polygons NULL") {
@@ -123,16 +139,19 @@ static void group_navmesh_can_reach(void) {
         EXPECT_OK(nl_navmesh_can_reach(A.world, A.navmesh, NULL, NULL, NULL, 0, NULL));
     }
     CASE("nl_navmesh_can_reach", "count huge (from_polygons NULL: not read)") {
-        EXPECT_INVALID(A.world, nl_navmesh_can_reach(A.world, A.navmesh, NULL, NULL, &zero, UINT32_MAX, answer), "from_polygons");
+        EXPECT_INVALID(A.world, nl_navmesh_can_reach(A.world, A.navmesh, NULL, NULL, &zero, UINT32_MAX, answer),
+                       "from_polygons");
     }
     CASE("nl_navmesh_can_reach", "from_polygons out of range (1000000)") {
         fill(answer, sizeof answer);
-        EXPECT_INVALID(A.world, nl_navmesh_can_reach(A.world, A.navmesh, NULL, &beyond, &zero, 1, answer), "from_polygons[0]");
+        EXPECT_INVALID(A.world, nl_navmesh_can_reach(A.world, A.navmesh, NULL, &beyond, &zero, 1, answer),
+                       "from_polygons[0]");
         EXPECT_UNTOUCHED(answer, sizeof answer, "out_reachable");
     }
     CASE("nl_navmesh_can_reach", "to_polygons NL_NO_POLYGON") {
         const uint32_t none = NL_NO_POLYGON;
-        EXPECT_INVALID(A.world, nl_navmesh_can_reach(A.world, A.navmesh, NULL, &zero, &none, 1, answer), "to_polygons[0]");
+        EXPECT_INVALID(A.world, nl_navmesh_can_reach(A.world, A.navmesh, NULL, &zero, &none, 1, answer),
+                       "to_polygons[0]");
     }
 }
 
@@ -156,7 +175,8 @@ static void group_navmesh_get_reachable_polygons(void) {
     }
     CASE("nl_navmesh_get_reachable_polygons", "from_polygon huge") {
         fill(&count, sizeof count);
-        EXPECT_INVALID(A.world, nl_navmesh_get_reachable_polygons(A.world, A.navmesh, NULL, UINT32_MAX, NULL, 0, &count),
+        EXPECT_INVALID(A.world,
+                       nl_navmesh_get_reachable_polygons(A.world, A.navmesh, NULL, UINT32_MAX, NULL, 0, &count),
                        "from_polygon");
         EXPECT_UNTOUCHED(&count, sizeof count, "out_count");
     }
@@ -171,8 +191,8 @@ static nl_status islands_call(const nl_query_filter* filter, void* out) {
 }
 
 static void group_navmesh_get_islands(void) {
-    navmesh_list_cases("nl_navmesh_get_islands", "out_islands", sizeof(uint32_t), navmesh_info(&A, A.navmesh).polygon_count,
-                       list_islands);
+    navmesh_list_cases("nl_navmesh_get_islands", "out_islands", sizeof(uint32_t),
+                       navmesh_info(&A, A.navmesh).polygon_count, list_islands);
     filter_cases("nl_navmesh_get_islands", islands_call, 8, 0);
     CASE("nl_navmesh_get_islands", "out_island_count NULL (allowed)") {
         uint32_t count = 0;
@@ -191,17 +211,18 @@ static nl_status move_filter_call(const nl_query_filter* filter, void* out) {
                                          (nl_nav_point*)out, NULL, 0, NULL);
 }
 static nl_status move_id_call(nl_world* w, raw_id id, void* out) {
-    return nl_navmesh_move_along_surface(w, AS(nl_navmesh_id, id), NULL, 0, k_walk_start, k_walk_end, (nl_nav_point*)out,
-                                         NULL, 0, NULL);
+    return nl_navmesh_move_along_surface(w, AS(nl_navmesh_id, id), NULL, 0, k_walk_start, k_walk_end,
+                                         (nl_nav_point*)out, NULL, 0, NULL);
 }
-static void move_refused(uint32_t polygon, const float* start, const float* target, uint32_t* polygons, uint32_t capacity,
-                         const char* needle) {
+static void move_refused(uint32_t polygon, const float* start, const float* target, uint32_t* polygons,
+                         uint32_t capacity, const char* needle) {
     nl_nav_point out;
     uint32_t count;
     fill(&out, sizeof out);
     fill(&count, sizeof count);
-    EXPECT_INVALID(A.world, nl_navmesh_move_along_surface(A.world, A.navmesh, NULL, polygon, start, target, &out, polygons,
-                                                          capacity, &count),
+    EXPECT_INVALID(A.world,
+                   nl_navmesh_move_along_surface(A.world, A.navmesh, NULL, polygon, start, target, &out, polygons,
+                                                 capacity, &count),
                    needle);
     EXPECT_UNTOUCHED(&out, sizeof out, "out_point");
     EXPECT_UNTOUCHED(&count, sizeof count, "out_count");
@@ -209,8 +230,8 @@ static void move_refused(uint32_t polygon, const float* start, const float* targ
 
 static void group_navmesh_move_along_surface(void) {
     static const char* const function = "nl_navmesh_move_along_surface";
-    static const id_function f = {"nl_navmesh_move_along_surface", "navmesh", "out_point", sizeof(nl_nav_point), 0, 0,
-                                  move_id_call, 0};
+    static const id_function f = {
+        "nl_navmesh_move_along_surface", "navmesh", "out_point", sizeof(nl_nav_point), 0, 0, move_id_call, 0};
     const float far_platform[3] = {6.0f, 0.0f, 0.0f};
     size_t v;
     int k, which;
@@ -219,7 +240,9 @@ static void group_navmesh_move_along_surface(void) {
     CASE(function, "start_polygon 0 or any other the start is not over (the far platform's): refused") {
         move_refused(polygon_under(far_platform), k_walk_start, k_walk_end, NULL, 0, "start is not over start_polygon");
     }
-    CASE(function, "start_polygon huge") { move_refused(UINT32_MAX, k_walk_start, k_walk_end, NULL, 0, "start_polygon"); }
+    CASE(function, "start_polygon huge") {
+        move_refused(UINT32_MAX, k_walk_start, k_walk_end, NULL, 0, "start_polygon");
+    }
     CASE(function, "start NULL") { move_refused(near_polygon(), NULL, k_walk_end, NULL, 0, "start"); }
     CASE(function, "target NULL") { move_refused(near_polygon(), k_walk_start, NULL, NULL, 0, "target"); }
     for (which = 0; which < 2; ++which) {
@@ -239,7 +262,9 @@ static void group_navmesh_move_along_surface(void) {
         const float far[3] = {2.0e9f, 0.0f, 0.0f};
         move_refused(near_polygon(), k_walk_start, far, NULL, 0, "target");
     }
-    CASE(function, "out_polygons NULL (capacity 1)") { move_refused(near_polygon(), k_walk_start, k_walk_end, NULL, 1, "out_polygons"); }
+    CASE(function, "out_polygons NULL (capacity 1)") {
+        move_refused(near_polygon(), k_walk_start, k_walk_end, NULL, 1, "out_polygons");
+    }
     CASE(function, "capacity huge (out_polygons NULL)") {
         move_refused(near_polygon(), k_walk_start, k_walk_end, NULL, UINT32_MAX, "out_polygons");
     }
@@ -247,8 +272,9 @@ static void group_navmesh_move_along_surface(void) {
         nl_nav_point out;
         uint32_t polygons[4], count = 0;
         fill(polygons, sizeof polygons);
-        EXPECT_FAILURE(A.world, nl_navmesh_move_along_surface(A.world, A.navmesh, NULL, near_polygon(), k_walk_start, k_walk_end,
-                                                              &out, polygons, 0, &count),
+        EXPECT_FAILURE(A.world,
+                       nl_navmesh_move_along_surface(A.world, A.navmesh, NULL, near_polygon(), k_walk_start, k_walk_end,
+                                                     &out, polygons, 0, &count),
                        NL_STATUS_BUFFER_TOO_SMALL, "capacity is 0");
         EXPECT(count >= 1 && out.found == 1, "out_count %u, found %u", (unsigned)count, (unsigned)out.found);
         EXPECT_UNTOUCHED(polygons, sizeof polygons, "out_polygons");
@@ -256,8 +282,8 @@ static void group_navmesh_move_along_surface(void) {
     CASE(function, "out_count NULL (allowed)") {
         nl_nav_point out;
         uint32_t polygons[64];
-        EXPECT_OK(nl_navmesh_move_along_surface(A.world, A.navmesh, NULL, near_polygon(), k_walk_start, k_walk_end, &out,
-                                                polygons, 64, NULL));
+        EXPECT_OK(nl_navmesh_move_along_surface(A.world, A.navmesh, NULL, near_polygon(), k_walk_start, k_walk_end,
+                                                &out, polygons, 64, NULL));
         EXPECT(polygons[0] == near_polygon(), "the first polygon is %u, not the start's", (unsigned)polygons[0]);
     }
 }
@@ -297,7 +323,7 @@ static nl_status raycast_into(void* out) {
 static void group_navmesh_raycast(void) {
     static const char* const function = "nl_navmesh_raycast";
     static const id_function f = {"nl_navmesh_raycast", "navmesh", "out_hits", sizeof(nl_navmesh_raycast_hit), 1, 0,
-                                  raycast_id_call, 0};
+                                  raycast_id_call,      0};
     const float far_platform[3] = {6.0f, 0.0f, 0.0f};
     nl_navmesh_ray rays[2];
     size_t v;
@@ -338,7 +364,9 @@ static void group_navmesh_raycast(void) {
         raycast_refused(bad, 2, NULL, 0, "rays[1].end");
     }
     CASE(function, "out_polygons NULL (polygons_per_ray 1)") { raycast_refused(rays, 2, NULL, 1, "out_polygons"); }
-    CASE(function, "polygons_per_ray huge (out_polygons NULL)") { raycast_refused(rays, 2, NULL, UINT32_MAX, "out_polygons"); }
+    CASE(function, "polygons_per_ray huge (out_polygons NULL)") {
+        raycast_refused(rays, 2, NULL, UINT32_MAX, "out_polygons");
+    }
     CASE(function, "polygons_per_ray 0 (allowed with out_polygons NULL)") {
         nl_navmesh_raycast_hit hits[2];
         hits[0] = nl_navmesh_raycast_hit_init();
@@ -351,8 +379,8 @@ static void group_navmesh_raycast(void) {
         uint32_t polygons[2];
         hits[0] = nl_navmesh_raycast_hit_init();
         EXPECT_OK(nl_navmesh_raycast(A.world, A.navmesh, NULL, rays, 2, hits, polygons, 1));
-        EXPECT(polygons[0] == near_polygon() && polygons[1] == near_polygon(), "first polygons %u, %u", (unsigned)polygons[0],
-               (unsigned)polygons[1]);
+        EXPECT(polygons[0] == near_polygon() && polygons[1] == near_polygon(), "first polygons %u, %u",
+               (unsigned)polygons[0], (unsigned)polygons[1]);
     }
 }
 
@@ -367,9 +395,13 @@ static const def_case k_random_defs[] = {
     {"def->radius beyond the limit (2e9)", INVALID, "radius", {SET_F32(nl_random_points_def, radius, 2.0e9f)}},
     {"def->centre beyond the limit (2e9)", INVALID, "centre", {SET_F32(nl_random_points_def, centre[2], 2.0e9f)}},
     {"def->filter NULL (allowed: every polygon)", ALLOWED, NULL, {SET_PTR(nl_random_points_def, filter, NULL)}},
-    {"def->filter refused (a negative drop)", INVALID, "def->filter->capabilities.max_drop_height",
+    {"def->filter refused (a negative drop)",
+     INVALID,
+     "def->filter->capabilities.max_drop_height",
      {SET_PTR(nl_random_points_def, filter, &k_bad_filter)}},
-    {"def->reachable_from out of range", INVALID, "reachable_from",
+    {"def->reachable_from out of range",
+     INVALID,
+     "reachable_from",
      {SET_U32(nl_random_points_def, reachable_from, 1000000u)}},
     {"def->reachable_from 0 (allowed)", ALLOWED, NULL, {SET_U32(nl_random_points_def, reachable_from, 0u)}},
 };
@@ -379,7 +411,8 @@ static void random_refuses(const void* def, nl_status detail, const char* needle
     uint32_t found;
     fill(points, sizeof points);
     fill(&found, sizeof found);
-    EXPECT_FAILURE(A.world, nl_navmesh_random_points(A.world, A.navmesh, (const nl_random_points_def*)def, points, 3, &found),
+    EXPECT_FAILURE(A.world,
+                   nl_navmesh_random_points(A.world, A.navmesh, (const nl_random_points_def*)def, points, 3, &found),
                    detail, needle);
     EXPECT_UNTOUCHED(points, sizeof points, "out_points");
     EXPECT_UNTOUCHED(&found, sizeof found, "out_found");
@@ -399,22 +432,23 @@ static nl_status random_id_call(nl_world* w, raw_id id, void* out) {
 static void group_default_random_points_def(void) {
     CASE("nl_default_random_points_def", "the defaults") {
         const nl_random_points_def d = nl_default_random_points_def();
-        EXPECT(d.size == sizeof d && d.filter == NULL && d.radius == 0.0f && d.reachable_from == NL_NO_POLYGON && d.seed == 1u,
+        EXPECT(d.size == sizeof d && d.filter == NULL && d.radius == 0.0f && d.reachable_from == NL_NO_POLYGON &&
+                   d.seed == 1u,
                "not the whole navmesh with seed 1");
     }
 }
 
 static void group_navmesh_random_points(void) {
-    static const id_function f = {"nl_navmesh_random_points", "navmesh", "out_points", 2 * sizeof(nl_nav_point), 0, 0,
-                                  random_id_call, 0};
+    static const id_function f = {
+        "nl_navmesh_random_points", "navmesh", "out_points", 2 * sizeof(nl_nav_point), 0, 0, random_id_call, 0};
     const nl_random_points_def valid = nl_default_random_points_def();
     nl_nav_point points[2];
     uint32_t found;
     id_cases(&f, RAW(A.navmesh), RAW(A.stale_navmesh), RAW(B.navmesh));
     CASE("nl_navmesh_random_points", "def NULL") { random_refuses(NULL, NL_STATUS_INVALID_ARGUMENT, "def"); }
     def_sizes("nl_navmesh_random_points", "def", &valid, sizeof valid, random_refuses, random_accepts);
-    def_cases("nl_navmesh_random_points", &valid, sizeof valid, k_random_defs, sizeof k_random_defs / sizeof *k_random_defs,
-              random_refuses, random_accepts);
+    def_cases("nl_navmesh_random_points", &valid, sizeof valid, k_random_defs,
+              sizeof k_random_defs / sizeof *k_random_defs, random_refuses, random_accepts);
     bad_float_fields("nl_navmesh_random_points", "def", &valid, sizeof valid, k_random_floats,
                      sizeof k_random_floats / sizeof *k_random_floats, random_refuses);
     CASE("nl_navmesh_random_points", "count 0 (allowed, out_points NULL)") {
@@ -424,7 +458,8 @@ static void group_navmesh_random_points(void) {
     }
     CASE("nl_navmesh_random_points", "count huge (out_points NULL)") {
         fill(&found, sizeof found);
-        EXPECT_INVALID(A.world, nl_navmesh_random_points(A.world, A.navmesh, &valid, NULL, UINT32_MAX, &found), "out_points");
+        EXPECT_INVALID(A.world, nl_navmesh_random_points(A.world, A.navmesh, &valid, NULL, UINT32_MAX, &found),
+                       "out_points");
         EXPECT_UNTOUCHED(&found, sizeof found, "out_found");
     }
     CASE("nl_navmesh_random_points", "out_found NULL") {

@@ -135,11 +135,13 @@ static int returned(const char* file, int line, nl_status got, nl_status expecte
     const char* message = nl_get_last_error_message();
     if (got != expected) {
         case_failed(file, line, "returned 0x%08x (%s), expected 0x%08x (%s); message \"%s\"", (unsigned)got,
-                    nl_status_string(got), (unsigned)expected, nl_status_string(expected), message ? message : "(null)");
+                    nl_status_string(got), (unsigned)expected, nl_status_string(expected),
+                    message ? message : "(null)");
         return 0;
     }
     if (nl_get_last_status() != got)
-        case_failed(file, line, "returned 0x%08x but the last status is 0x%08x", (unsigned)got, (unsigned)nl_get_last_status());
+        case_failed(file, line, "returned 0x%08x but the last status is 0x%08x", (unsigned)got,
+                    (unsigned)nl_get_last_status());
     return 1;
 }
 
@@ -185,8 +187,7 @@ void expect_untouched_at(const char* file, int line, const void* p, size_t n, co
     size_t i;
     for (i = 0; i < n; ++i) {
         if (b[i] != SENTINEL) {
-            case_failed(file, line, "%s was written (byte %u of %u is 0x%02x)", name, (unsigned)i,
-                        (unsigned)n, b[i]);
+            case_failed(file, line, "%s was written (byte %u of %u is 0x%02x)", name, (unsigned)i, (unsigned)n, b[i]);
             return;
         }
     }
@@ -200,7 +201,8 @@ typedef struct tally {
     size_t cases, passed, failed, known;
 } tally;
 
-static void add_record(case_record** cases, size_t* count, size_t* capacity, const char* function, const char* description) {
+static void add_record(case_record** cases, size_t* count, size_t* capacity, const char* function,
+                       const char* description) {
     if (*count == *capacity) {
         *capacity = *capacity ? 2 * *capacity : 1024;
         *cases = (case_record*)realloc(*cases, *capacity * sizeof **cases);
@@ -271,9 +273,7 @@ static int parse_report(const char* group, char* text, tally* t, case_record** c
                     printf("FAILED [%s] %s: listed as a known failure but passes now: take it off the list\n", group,
                            last_case);
                     break;
-                default:
-                    ++t->failed;
-                    printf("FAILED [%s] %s\n%s", group, last_case, failures);
+                default: ++t->failed; printf("FAILED [%s] %s\n%s", group, last_case, failures);
             }
             *in_case = 0;
         } else if (line[0] == 'D') {
@@ -318,23 +318,25 @@ int run_groups(const hostile_group* groups, size_t count, const hostile_fixture*
         close(fds[1]);
         text = read_all(fds[0]);
         close(fds[0]);
-        while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
-        }
+        while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {}
         done = parse_report(groups[g].name, text, &t, out_cases, out_case_count, &capacity, last_case, sizeof last_case,
                             &in_case);
         free(text);
         if (!done || !WIFEXITED(status) || WEXITSTATUS(status) != 0) {
             char how[64];
             if (WIFSIGNALED(status))
-                snprintf(how, sizeof how, "signal %d%s", WTERMSIG(status), WTERMSIG(status) == SIGALRM ? ": a hang" : "");
+                snprintf(how, sizeof how, "signal %d%s", WTERMSIG(status),
+                         WTERMSIG(status) == SIGALRM ? ": a hang" : "");
             else
                 snprintf(how, sizeof how, "exit code %d", WIFEXITED(status) ? WEXITSTATUS(status) : -1);
             if (in_case)
-                printf("FAILED [%s] the child stopped (%s) in %s; the rest of the group did not run\n", groups[g].name, how,
-                       last_case);
+                printf("FAILED [%s] the child stopped (%s) in %s; the rest of the group did not run\n", groups[g].name,
+                       how, last_case);
             else if (last_case[0])
-                printf("FAILED [%s] the child stopped (%s) after its last case, %s: destroying the worlds, or at exit "
-                       "(a leak report?)\n", groups[g].name, how, last_case);
+                printf(
+                    "FAILED [%s] the child stopped (%s) after its last case, %s: destroying the worlds, or at exit "
+                    "(a leak report?)\n",
+                    groups[g].name, how, last_case);
             else
                 printf("FAILED [%s] the child stopped (%s) before its first case\n", groups[g].name, how);
             ++t.failed;

@@ -37,13 +37,20 @@ static const def_case k_world_defs[] = {
     {"def->worker_count -2", INVALID, "worker_count", {SET_I32(nl_world_def, worker_count, -2)}},
     {"def->worker_count INT32_MIN", INVALID, "worker_count", {SET_I32(nl_world_def, worker_count, INT32_MIN)}},
     {"def->worker_count huge (INT32_MAX)", INVALID, "worker_count", {SET_I32(nl_world_def, worker_count, INT32_MAX)}},
-    {"def->worker_count huge (NL_MAX_WORKERS + 1)", INVALID, "NL_MAX_WORKERS",
+    {"def->worker_count huge (NL_MAX_WORKERS + 1)",
+     INVALID,
+     "NL_MAX_WORKERS",
      {SET_I32(nl_world_def, worker_count, NL_MAX_WORKERS + 1)}},
     {"def->worker_count 0 (allowed: the calling thread only)", ALLOWED, NULL, {SET_I32(nl_world_def, worker_count, 0)}},
     {"def->path_worker_count -2", INVALID, "path_worker_count", {SET_I32(nl_world_def, path_worker_count, -2)}},
-    {"def->path_worker_count huge (INT32_MAX)", INVALID, "path_worker_count",
+    {"def->path_worker_count huge (INT32_MAX)",
+     INVALID,
+     "path_worker_count",
      {SET_I32(nl_world_def, path_worker_count, INT32_MAX)}},
-    {"def->path_worker_count 0 (allowed: the host runs the queue)", ALLOWED, NULL, {SET_I32(nl_world_def, path_worker_count, 0)}},
+    {"def->path_worker_count 0 (allowed: the host runs the queue)",
+     ALLOWED,
+     NULL,
+     {SET_I32(nl_world_def, path_worker_count, 0)}},
     {"def->log_level 4", INVALID, "log_level", {SET_U32(nl_world_def, log_level, 4u)}},
     {"def->log_level huge", INVALID, "log_level", {SET_U32(nl_world_def, log_level, UINT32_MAX)}},
     {"def->log_fn NULL (allowed)", ALLOWED, NULL, {SET_PTR(nl_world_def, log_fn, NULL)}},
@@ -65,30 +72,49 @@ static void hostile_task_finish(void* user, void* host_task) {
 
 /* Made bad from a def with both task callbacks set and worker_count 2. */
 static const def_case k_world_task_defs[] = {
-    {"def->task_enqueue_fn NULL (task_finish_fn set)", INVALID, "def->task_enqueue_fn is NULL",
+    {"def->task_enqueue_fn NULL (task_finish_fn set)",
+     INVALID,
+     "def->task_enqueue_fn is NULL",
      {SET_PTR(nl_world_def, task_enqueue_fn, NULL)}},
-    {"def->task_finish_fn NULL (task_enqueue_fn set)", INVALID, "def->task_finish_fn is NULL",
+    {"def->task_finish_fn NULL (task_enqueue_fn set)",
+     INVALID,
+     "def->task_finish_fn is NULL",
      {SET_PTR(nl_world_def, task_finish_fn, NULL)}},
-    {"def->task_enqueue_fn NULL and task_finish_fn NULL (allowed: TBB)", ALLOWED, NULL,
+    {"def->task_enqueue_fn NULL and task_finish_fn NULL (allowed: TBB)",
+     ALLOWED,
+     NULL,
      {SET_PTR(nl_world_def, task_enqueue_fn, NULL), SET_PTR(nl_world_def, task_finish_fn, NULL)}},
     {"def->task_user NULL (allowed: never dereferenced)", ALLOWED, NULL, {SET_PTR(nl_world_def, task_user, NULL)}},
-    {"def->worker_count 0 (with task callbacks: the host's workers, at least 1)", INVALID, "worker_count",
+    {"def->worker_count 0 (with task callbacks: the host's workers, at least 1)",
+     INVALID,
+     "worker_count",
      {SET_I32(nl_world_def, worker_count, 0)}},
-    {"def->worker_count -1 (NL_WORKERS_AUTO, with task callbacks)", INVALID, "worker_count",
+    {"def->worker_count -1 (NL_WORKERS_AUTO, with task callbacks)",
+     INVALID,
+     "worker_count",
      {SET_I32(nl_world_def, worker_count, NL_WORKERS_AUTO)}},
-    {"def->worker_count huge (NL_MAX_WORKERS + 1, with task callbacks)", INVALID, "NL_MAX_WORKERS",
+    {"def->worker_count huge (NL_MAX_WORKERS + 1, with task callbacks)",
+     INVALID,
+     "NL_MAX_WORKERS",
      {SET_I32(nl_world_def, worker_count, NL_MAX_WORKERS + 1)}},
-    {"def->worker_count NL_MAX_WORKERS (allowed with task callbacks: no thread starts)", ALLOWED, NULL,
+    {"def->worker_count NL_MAX_WORKERS (allowed with task callbacks: no thread starts)",
+     ALLOWED,
+     NULL,
      {SET_I32(nl_world_def, worker_count, NL_MAX_WORKERS)}},
-    {"def->size small (ends inside the task callbacks)", INVALID, "def->size",
+    {"def->size small (ends inside the task callbacks)",
+     INVALID,
+     "def->size",
      {SET_U32(nl_world_def, size, (uint32_t)offsetof(nl_world_def, task_finish_fn))}},
-    {"def->size small (before the task callbacks: they are not read)", ALLOWED, NULL,
+    {"def->size small (before the task callbacks: they are not read)",
+     ALLOWED,
+     NULL,
      {SET_U32(nl_world_def, size, (uint32_t)offsetof(nl_world_def, task_enqueue_fn)),
       SET_PTR(nl_world_def, task_finish_fn, NULL)}},
 };
 
 static void group_world_create(void) {
-    static const def_function create = {"nl_world_create", world_create_call, sizeof(nl_world*), world_destroy_out, 1, 1, 0};
+    static const def_function create = {
+        "nl_world_create", world_create_call, sizeof(nl_world*), world_destroy_out, 1, 1, 0};
     nl_world_def with_tasks;
     nl_world_def valid = nl_default_world_def();
 #if !defined(NAVLINK_HOSTILE_SANITIZED)
@@ -104,8 +130,8 @@ static void group_world_create(void) {
     valid.path_worker_count = 0;
     valid.log_fn = hostile_log; /* nl_world_create never logs: there is no world yet */
     def_function_cases(&create, &valid, sizeof valid);
-    def_cases("nl_world_create", &valid, sizeof valid, k_world_defs, sizeof k_world_defs / sizeof *k_world_defs, def_refuses,
-              def_accepts);
+    def_cases("nl_world_create", &valid, sizeof valid, k_world_defs, sizeof k_world_defs / sizeof *k_world_defs,
+              def_refuses, def_accepts);
     with_tasks = valid;
     with_tasks.worker_count = 2;
     with_tasks.task_enqueue_fn = hostile_task_enqueue;

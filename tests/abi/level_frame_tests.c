@@ -16,11 +16,17 @@
 #include "navmesh_scene.h"
 
 /* `units` numbers a metre; with `z_up`, given z up. */
-static nl_status add_room(nl_world* world, float units, int z_up, float metres_per_unit, uint32_t up_axis, nl_mesh_id* out) {
-    static const float corners[8][3] = {{0, 0, 0}, {9, 0, 0}, {9, 0, 9}, {0, 0, 9}, {0, 4, 0}, {9, 4, 0}, {9, 4, 9}, {0, 4, 9}};
+static nl_status add_room(nl_world* world, float units, int z_up, float metres_per_unit, uint32_t up_axis,
+                          nl_mesh_id* out) {
+    static const float corners[8][3] = {{0, 0, 0}, {9, 0, 0}, {9, 0, 9}, {0, 0, 9},
+                                        {0, 4, 0}, {9, 4, 0}, {9, 4, 9}, {0, 4, 9}};
     /* A crate's faces (out) wound the other way: in. */
-    static const uint32_t inward[36] = {4, 6, 7, 4, 5, 6, /* ceiling, down */ 0, 2, 1, 0, 3, 2, /* floor, up */
-                                        0, 5, 4, 0, 1, 5, 1, 6, 5, 1, 2, 6, 2, 7, 6, 2, 3, 7, 3, 4, 7, 3, 0, 4};
+    static const uint32_t inward[36] = {4, 6, 7, 4, 5, 6, /* ceiling, down */ 0,
+                                        2, 1, 0, 3, 2, /* floor, up */
+                                        0, 5, 4, 0, 1, 5, 1,
+                                        6, 5, 1, 2, 6, 2, 7,
+                                        6, 2, 3, 7, 3, 4, 7,
+                                        3, 0, 4};
     float v[24];
     int i;
     nl_mesh_def def = nl_default_mesh_def();
@@ -42,7 +48,8 @@ static nl_status add_room(nl_world* world, float units, int z_up, float metres_p
 static int walkable_at_middle(nl_world* world, nl_navmesh_id navmesh) {
     const float p[3] = {4.5f, 0.0f, 4.5f}, half[3] = {0.5f, 0.5f, 0.5f};
     nl_nav_point hit;
-    return NL_SUCCEEDED(nl_navmesh_find_nearest(world, navmesh, p, 1, half, &hit)) && hit.found && fabsf(hit.point[1]) < 0.3f;
+    return NL_SUCCEEDED(nl_navmesh_find_nearest(world, navmesh, p, 1, half, &hit)) && hit.found &&
+           fabsf(hit.point[1]) < 0.3f;
 }
 
 static nl_navmesh_id build_coarse(nl_world* world) {
@@ -109,7 +116,8 @@ static void too_small(void) {
     nl_world* world = make_listening_world(&heard);
     CHECK_OK(add_room(world, 0.001f, 0, 0.0f, NL_UP_AXIS_NOT_SAID, &room));
     CHECK(nl_navmesh_build(world, &def, &navmesh) == (NL_STATUS_FAILURE | NL_STATUS_NOT_FOUND));
-    CHECK_THAT(strstr(heard.text, "the whole level is 0.009 m across, less than two agents are tall") != NULL, heard.text);
+    CHECK_THAT(strstr(heard.text, "the whole level is 0.009 m across, less than two agents are tall") != NULL,
+               heard.text);
     nl_world_destroy(world);
     /* Said in kilometres, it is the room. */
     world = make_listening_world(&heard);
@@ -131,7 +139,8 @@ static void z_up(void) {
     info = navmesh_info(world, navmesh);
     CHECK(info.build_warnings == NL_BUILD_WARNING_Z_UP);
     CHECK(!walkable_at_middle(world, navmesh));
-    CHECK_THAT(strstr(heard.text, "with z up it would hold 81 m2 of floor for this agent, with y up 36 m2") != NULL, heard.text);
+    CHECK_THAT(strstr(heard.text, "with z up it would hold 81 m2 of floor for this agent, with y up 36 m2") != NULL,
+               heard.text);
     CHECK(strstr(heard.text, "NL_UP_AXIS_Z") != NULL);
     nl_world_destroy(world);
 
@@ -165,7 +174,8 @@ static void bad_frames(void) {
     const float bad_units[] = {-1.0f, 1e-7f, 2e6f, NAN, INFINITY};
     size_t i;
     for (i = 0; i < sizeof bad_units / sizeof bad_units[0]; ++i) {
-        CHECK(add_room(world, 1.0f, 0, bad_units[i], NL_UP_AXIS_NOT_SAID, &room) == (NL_STATUS_FAILURE | NL_STATUS_INVALID_ARGUMENT));
+        CHECK(add_room(world, 1.0f, 0, bad_units[i], NL_UP_AXIS_NOT_SAID, &room) ==
+              (NL_STATUS_FAILURE | NL_STATUS_INVALID_ARGUMENT));
         CHECK_THAT(strstr(nl_get_last_error_message(), "def->metres_per_unit is") != NULL, nl_get_last_error_message());
     }
     CHECK(add_room(world, 1.0f, 0, 0.0f, 3u, &room) == (NL_STATUS_FAILURE | NL_STATUS_INVALID_ARGUMENT));
@@ -174,7 +184,8 @@ static void bad_frames(void) {
     {
         /* A scale that takes the level past the coordinate limit is refused too. */
         const float far = 0.5f * NL_COORDINATE_LIMIT;
-        CHECK(add_room(world, far, 0, 1e6f, NL_UP_AXIS_NOT_SAID, &room) == (NL_STATUS_FAILURE | NL_STATUS_INVALID_ARGUMENT));
+        CHECK(add_room(world, far, 0, 1e6f, NL_UP_AXIS_NOT_SAID, &room) ==
+              (NL_STATUS_FAILURE | NL_STATUS_INVALID_ARGUMENT));
     }
     {
         uint32_t count = 1u;

@@ -58,7 +58,8 @@ static void mesh_add_and_info(void) {
     CHECK_OK(nl_mesh_get_info(world, moved, &info));
     CHECK(info.flags == NL_MESH_MOVABLE);
     CHECK(info.transform[12] == 100.0f && info.transform[13] == 2.0f && info.transform[14] == -3.0f);
-    CHECK(info.transform[0] == 1.0f && info.transform[5] == 1.0f && info.transform[10] == 1.0f && info.transform[15] == 1.0f);
+    CHECK(info.transform[0] == 1.0f && info.transform[5] == 1.0f && info.transform[10] == 1.0f &&
+          info.transform[15] == 1.0f);
     CHECK(info.bounds_min[0] == 90.0f && info.bounds_min[1] == 3.0f && info.bounds_min[2] == -13.0f);
     CHECK(info.bounds_max[0] == 110.0f && info.bounds_max[1] == 3.0f && info.bounds_max[2] == 7.0f);
     CHECK(info.user_data == 7u);
@@ -173,8 +174,8 @@ static void degenerate_triangles(void) {
     nl_world* world = make_world(1);
     /* Input triangles: 0 repeated index, 1 real (floor tri 0), 2 collinear, 3 real (floor tri 1). */
     static const float vertices[] = {
-        -10.0f, 1.0f, -10.0f, -10.0f, 1.0f, 10.0f, 10.0f, 1.0f, 10.0f, 10.0f, 1.0f, -10.0f,
-        0.0f,   1.0f, 0.0f, /* 4: on the diagonal v0-v2 */
+        -10.0f, 1.0f,  -10.0f, -10.0f, 1.0f, 10.0f, 10.0f, 1.0f,
+        10.0f,  10.0f, 1.0f,   -10.0f, 0.0f, 1.0f,  0.0f, /* 4: on the diagonal v0-v2 */
     };
     static const uint32_t indices[] = {0, 0, 1, 0, 1, 2, 0, 4, 2, 0, 2, 3};
     nl_mesh_def def = nl_default_mesh_def();
@@ -646,8 +647,9 @@ static void obj(void) {
 
     /* Relative (negative) indices, a pentagon (3 triangles) and a triangle, CRLF line ends. */
     {
-        static const char text[] = "v 0 0 0\r\nv 1 0 0\r\nv 1 0 1\r\nv 0.5 0 1.5\r\nv 0 0 1\r\n"
-                                   "f -5 -1 -2 -3 -4\r\nf 1 3 2\r\n";
+        static const char text[] =
+            "v 0 0 0\r\nv 1 0 0\r\nv 1 0 1\r\nv 0.5 0 1.5\r\nv 0 0 1\r\n"
+            "f -5 -1 -2 -3 -4\r\nf 1 3 2\r\n";
         CHECK_OK(nl_mesh_add_obj_memory(world, text, sizeof text - 1, NULL, &id));
         CHECK_OK(nl_mesh_get_info(world, id, &info));
         CHECK(info.vertex_count == 5 && info.triangle_count + info.degenerate_triangle_count == 4);
@@ -656,10 +658,12 @@ static void obj(void) {
 
     /* Texture and normal indices are accepted (and ignored); several objects make one mesh. */
     {
-        static const char with_vt_vn[] = "mtllib missing.mtl\nv 0 0 0\nv 1 0 0\nv 1 0 1\nvt 0 0\nvn 0 1 0\n"
-                                         "usemtl stone\ns off\nf 1/1/1 3/1/1 2/1/1\nl 1 2\n";
-        static const char two_objects[] = "o a\nv 0 0 0\nv 1 0 0\nv 1 0 1\nf 1 2 3\n"
-                                          "o b\ng part\nv 0 1 0\nv 1 1 0\nv 1 1 1\nf 4 5 6\nf -3 -2 -1\n";
+        static const char with_vt_vn[] =
+            "mtllib missing.mtl\nv 0 0 0\nv 1 0 0\nv 1 0 1\nvt 0 0\nvn 0 1 0\n"
+            "usemtl stone\ns off\nf 1/1/1 3/1/1 2/1/1\nl 1 2\n";
+        static const char two_objects[] =
+            "o a\nv 0 0 0\nv 1 0 0\nv 1 0 1\nf 1 2 3\n"
+            "o b\ng part\nv 0 1 0\nv 1 1 0\nv 1 1 1\nf 4 5 6\nf -3 -2 -1\n";
         CHECK_OK(nl_mesh_add_obj_memory(world, with_vt_vn, sizeof with_vt_vn - 1, NULL, &id));
         CHECK_OK(nl_mesh_get_info(world, id, &info));
         CHECK(info.vertex_count == 3 && info.triangle_count == 1);
@@ -721,8 +725,9 @@ static void obj(void) {
             static const char bad_number[] = "v abc 0 0\nv 1 0 0\nv 1 0 1\nf 1 2 3\n";
             nl_mesh_id out = {0u, 0u};
             const nl_status st = nl_mesh_add_obj_memory(world, bad_number, sizeof bad_number - 1, NULL, &out);
-            CHECK_THAT(st == (NL_STATUS_FAILURE | NL_STATUS_PARSE_ERROR),
-                        "nl_mesh_add_obj_memory: a coordinate that is not a number (\"v abc 0 0\") is a PARSE_ERROR, not 0");
+            CHECK_THAT(
+                st == (NL_STATUS_FAILURE | NL_STATUS_PARSE_ERROR),
+                "nl_mesh_add_obj_memory: a coordinate that is not a number (\"v abc 0 0\") is a PARSE_ERROR, not 0");
             if (NL_SUCCEEDED(st)) nl_mesh_remove(world, out);
         }
     }
@@ -818,7 +823,8 @@ static void dungeon_obj(void) {
     CHECK_OK(nl_mesh_add_obj_file(world, path, NULL, &id));
     info.size = sizeof info;
     CHECK_OK(nl_mesh_get_info(world, id, &info));
-    CHECK_MSG(info.vertex_count == vertices, "vertex_count %u, the file has %lu", (unsigned)info.vertex_count, vertices);
+    CHECK_MSG(info.vertex_count == vertices, "vertex_count %u, the file has %lu", (unsigned)info.vertex_count,
+              vertices);
     CHECK_MSG(info.triangle_count + info.degenerate_triangle_count == triangles,
               "%u kept + %u degenerate triangles, the file's faces fan into %lu", (unsigned)info.triangle_count,
               (unsigned)info.degenerate_triangle_count, triangles);
@@ -854,7 +860,7 @@ static void contract_edges(void) {
         def.indices = indices;
         (void)nl_mesh_add(world, &def, &out);
         CHECK_THAT(strstr(nl_get_last_error_message(), "def->indices[4] = 120") != NULL,
-                    "nl_mesh_add: an index out of range is named as the def's field, \"def->indices[4] = 120\"");
+                   "nl_mesh_add: an index out of range is named as the def's field, \"def->indices[4] = 120\"");
         def.indices = k_floor_indices;
     }
 
@@ -867,7 +873,7 @@ static void contract_edges(void) {
         CHECK(nl_mesh_is_valid(world, floor) == 1);
         mine = floor;
         CHECK_THAT(!same_id(mine, theirs) ? nl_mesh_is_valid(other, mine) == 0 : 0,
-                    "an id from another world is not valid here");
+                   "an id from another world is not valid here");
         nl_world_destroy(other);
     }
     nl_world_destroy(world);

@@ -218,10 +218,10 @@ static void defaults(void) {
 
 typedef struct progress_log {
     int calls;
-    int decreasing;    /* a fraction lower than the one before */
-    int out_of_range;  /* a fraction outside [0, 1] */
-    int bad_stage;     /* a NULL or empty stage name */
-    int other_thread;  /* called on a thread other than the caller's */
+    int decreasing;   /* a fraction lower than the one before */
+    int out_of_range; /* a fraction outside [0, 1] */
+    int bad_stage;    /* a NULL or empty stage name */
+    int other_thread; /* called on a thread other than the caller's */
     float first, last;
     pthread_t caller;
     int cancel_at_call;          /* 1-based call to return 0 from (0: never) */
@@ -232,8 +232,10 @@ typedef struct progress_log {
 static int record_progress(void* user, float fraction, const char* stage) {
     progress_log* log = (progress_log*)user;
     ++log->calls;
-    if (log->calls == 1) log->first = fraction;
-    else if (fraction < log->last) ++log->decreasing;
+    if (log->calls == 1)
+        log->first = fraction;
+    else if (fraction < log->last)
+        ++log->decreasing;
     if (!(fraction >= 0.0f && fraction <= 1.0f)) ++log->out_of_range;
     if (!stage || !stage[0]) ++log->bad_stage;
     if (!pthread_equal(pthread_self(), log->caller)) ++log->other_thread;
@@ -324,7 +326,8 @@ static void generation_gap(void) {
         /* The arc's top: jump_arc_height (1 m) above the higher end, between the ends. */
         bad_apex += !(fabsf(l->apex[1] - (fmaxf(l->start[1], l->end[1]) + 1.0f)) <= 0.01f && l->apex[0] > west[0] &&
                       l->apex[0] < east[0]);
-        bad_polygon += !(l->start_polygon < polygons && l->end_polygon < polygons && l->start_polygon != l->end_polygon);
+        bad_polygon +=
+            !(l->start_polygon < polygons && l->end_polygon < polygons && l->start_polygon != l->end_polygon);
         if (NL_FAILED(nl_link_get(world, l->id, &got)) || memcmp(&got, l, sizeof got) != 0) ++get_differs;
         if (l->start[2] < min_z) min_z = l->start[2];
         if (l->start[2] > max_z) max_z = l->start[2];
@@ -340,8 +343,8 @@ static void generation_gap(void) {
     CHECK_MSG(bad_apex == 0, "%d links: apex is not 1 m above the higher end, between the ends", bad_apex);
     CHECK_MSG(bad_polygon == 0, "%d links: start/end polygons out of range or equal", bad_polygon);
     CHECK_MSG(get_differs == 0, "%d links: nl_link_get does not return what nl_navmesh_get_links listed", get_differs);
-    CHECK_MSG(n == 0 || (min_z < -2.5f && max_z > 2.5f), "the links span z from %g to %g (the platforms: -5..5)",
-              min_z, max_z);
+    CHECK_MSG(n == 0 || (min_z < -2.5f && max_z > 2.5f), "the links span z from %g to %g (the platforms: -5..5)", min_z,
+              max_z);
 
     /* A second generation gives the same links (deterministic), under new ids. */
     before = links;
@@ -386,10 +389,11 @@ static void generation_gap(void) {
         nl_link_generation_report r = empty_report();
         CHECK_OK(nl_navmesh_generate_links(wide, id, NULL, NULL, NULL, &r));
         CHECK(r.jump_links == 0u && link_count(wide, id) == 0u);
-        CHECK_THAT(r.rejected_distance > 0u,
-                   "nl_link_generation_report.rejected_distance (\"A jump's gap too wide or too narrow\"): a gap wider than "
-                   "max_jump_gap between two facing edges is counted, so the report answers why there is no "
-                   "jump there");
+        CHECK_THAT(
+            r.rejected_distance > 0u,
+            "nl_link_generation_report.rejected_distance (\"A jump's gap too wide or too narrow\"): a gap wider than "
+            "max_jump_gap between two facing edges is counted, so the report answers why there is no "
+            "jump there");
         nl_world_destroy(wide);
     }
 
@@ -444,12 +448,15 @@ static void generation_ledge(void) {
         wrong_ends += !(l->start[0] >= -0.95f && l->start[0] <= -0.55f && fabsf(l->start[1] - 3.0f) <= 0.01f &&
                         l->end[0] > 0.6f && fabsf(l->end[1]) <= 0.01f);
         /* The apex is where the fall leaves the ground: 0.2 m past the rim (x = 0), at the start's height. */
-        bad_apex += !(fabsf(l->apex[0] - 0.2f) <= 0.05f && l->apex[1] == l->start[1] && fabsf(l->apex[2] - l->start[2]) <= 1e-3f);
+        bad_apex += !(fabsf(l->apex[0] - 0.2f) <= 0.05f && l->apex[1] == l->start[1] &&
+                      fabsf(l->apex[2] - l->start[2]) <= 1e-3f);
     }
     CHECK_MSG(wrong_kind == 0, "%d of %u links are not NL_LINK_DROP", wrong_kind, (unsigned)n);
     CHECK_MSG(wrong_way == 0, "%d drops are bidirectional (3 m > max_jump_up) or not generated/enabled", wrong_way);
-    CHECK_MSG(wrong_drop == 0, "%d drops: requirements.drop not 3 m floor to floor, rise not 0, length not the ends' or gap not from the rim",
-              wrong_drop);
+    CHECK_MSG(
+        wrong_drop == 0,
+        "%d drops: requirements.drop not 3 m floor to floor, rise not 0, length not the ends' or gap not from the rim",
+        wrong_drop);
     CHECK_MSG(wrong_ends == 0, "%d drops do not go from the block's edge down to the floor", wrong_ends);
     CHECK_MSG(bad_apex == 0, "%d drops: apex is not where the fall leaves the ground, 0.2 m past the rim", bad_apex);
     free(links);
@@ -462,7 +469,8 @@ static void generation_ledge(void) {
         CHECK_OK(nl_navmesh_generate_links(world, navmesh, &s, NULL, NULL, &report));
         links = list_links(world, navmesh, &n);
         CHECK(count_kind(links, n, NL_LINK_DROP) > 0u);
-        for (i = 0, wrong_way = 0; i < n; ++i) wrong_way += links[i].kind == NL_LINK_DROP && links[i].bidirectional != 1;
+        for (i = 0, wrong_way = 0; i < n; ++i)
+            wrong_way += links[i].kind == NL_LINK_DROP && links[i].bidirectional != 1;
         CHECK_MSG(wrong_way == 0, "max_jump_up 3.5: %d drops of ~3 m are still one-way", wrong_way);
         free(links);
     }
@@ -564,7 +572,8 @@ static void manual(void) {
     CHECK(n == generated + 2u);
     CHECK(n >= 2u && same_link_id(links[0].id, manual) && memcmp(&links[0], &got, sizeof got) == 0);
     CHECK(n >= 2u && same_link_id(links[1].id, plugin) && memcmp(&links[1], &got_plugin, sizeof got) == 0);
-    for (i = 2; i < n; ++i) CHECK_MSG(links[i].generated == 1, "link %u after the manual ones is not generated", (unsigned)i);
+    for (i = 2; i < n; ++i)
+        CHECK_MSG(links[i].generated == 1, "link %u after the manual ones is not generated", (unsigned)i);
     free(links);
     CHECK(nl_link_is_valid(world, manual) == 1 && nl_link_is_valid(world, plugin) == 1);
 
@@ -787,7 +796,7 @@ static void refusals(void) {
                 case 8: s.drop_steepness = 5.0f; break;
                 case 9: s.strict_forward_angle = 95.0f; break;
                 case 10: s.min_link_distance = 4.0f; break; /* not below max_jump_gap */
-                default: s.drop_angles[1] = 100.0f; break;   /* the index is named */
+                default: s.drop_angles[1] = 100.0f; break;  /* the index is named */
             }
             if (!CHECK_FAIL(nl_navmesh_generate_links(world, navmesh, &s, NULL, NULL, &r), NL_STATUS_INVALID_ARGUMENT,
                             bad[k].needle))
@@ -842,9 +851,12 @@ static void check_stale_everywhere(nl_world* world, nl_link_id id, const char* w
     got.size = sizeof got; /* the element size the library lays out with */
     CHECK_MSG(nl_link_is_valid(world, id) == 0 && nl_get_last_status() == NL_STATUS_SUCCESS,
               "nl_link_is_valid: %s is valid", what);
-    if (!CHECK_FAIL(nl_link_get(world, id, &got), NL_STATUS_INVALID_HANDLE, "link")) fprintf(stderr, "    (%s)\n", what);
-    CHECK_MSG(all_bytes((const unsigned char*)&got + sizeof(uint32_t), sizeof got - sizeof(uint32_t), 0xab), "nl_link_get wrote out_link for %s", what);
-    if (!CHECK_FAIL(nl_link_update(world, id, &def), NL_STATUS_INVALID_HANDLE, "link")) fprintf(stderr, "    (%s)\n", what);
+    if (!CHECK_FAIL(nl_link_get(world, id, &got), NL_STATUS_INVALID_HANDLE, "link"))
+        fprintf(stderr, "    (%s)\n", what);
+    CHECK_MSG(all_bytes((const unsigned char*)&got + sizeof(uint32_t), sizeof got - sizeof(uint32_t), 0xab),
+              "nl_link_get wrote out_link for %s", what);
+    if (!CHECK_FAIL(nl_link_update(world, id, &def), NL_STATUS_INVALID_HANDLE, "link"))
+        fprintf(stderr, "    (%s)\n", what);
     if (!CHECK_FAIL(nl_link_remove(world, id), NL_STATUS_INVALID_HANDLE, "link")) fprintf(stderr, "    (%s)\n", what);
 }
 
@@ -867,7 +879,8 @@ static void ids_never_come_back(void) {
         if (!NL_SUCCEEDED(nl_link_remove(world, id))) break;
     }
     CHECK_MSG(i == (1u << 20) + 8u, "add/remove stopped after %u rounds", (unsigned)i);
-    CHECK_MSG(same_slot >= (1u << 20) - 2u, "the slot was reused %u times only; the test is vacuous", (unsigned)same_slot);
+    CHECK_MSG(same_slot >= (1u << 20) - 2u, "the slot was reused %u times only; the test is vacuous",
+              (unsigned)same_slot);
     CHECK(came_back == 0u);
     CHECK_OK(nl_link_add(world, navmesh, &def, &live));
     CHECK(nl_link_is_valid(world, first) == 0);
@@ -943,7 +956,8 @@ static void lists(void) {
         one.size = sizeof one; /* the element size the library lays out with */
         count = 77u;
         CHECK_OK(nl_navmesh_get_links(world, navmesh, &one, 1, &count));
-        CHECK(count == 0u && all_bytes((const unsigned char*)&one + sizeof(uint32_t), sizeof one - sizeof(uint32_t), 0xab));
+        CHECK(count == 0u &&
+              all_bytes((const unsigned char*)&one + sizeof(uint32_t), sizeof one - sizeof(uint32_t), 0xab));
     }
 
     CHECK_OK(nl_navmesh_generate_links(world, navmesh, NULL, NULL, NULL, NULL));
@@ -962,10 +976,12 @@ static void lists(void) {
     buffer[0].size = sizeof *buffer;
     CHECK_FAIL(nl_navmesh_get_links(world, navmesh, buffer, n - 1u, &count), NL_STATUS_BUFFER_TOO_SMALL, "");
     CHECK(count == n);
-    CHECK(all_bytes((const unsigned char*)buffer + sizeof(uint32_t), (n + 1u) * sizeof *buffer - sizeof(uint32_t), 0xab));
+    CHECK(
+        all_bytes((const unsigned char*)buffer + sizeof(uint32_t), (n + 1u) * sizeof *buffer - sizeof(uint32_t), 0xab));
     count = 0;
     CHECK_FAIL(nl_navmesh_get_links(world, navmesh, buffer, 0, &count), NL_STATUS_BUFFER_TOO_SMALL, "");
-    CHECK(count == n && all_bytes((const unsigned char*)buffer + sizeof(uint32_t), sizeof *buffer - sizeof(uint32_t), 0xab));
+    CHECK(count == n &&
+          all_bytes((const unsigned char*)buffer + sizeof(uint32_t), sizeof *buffer - sizeof(uint32_t), 0xab));
     /* Exact, and larger: n entries written, nothing past them. */
     count = 0;
     CHECK_OK(nl_navmesh_get_links(world, navmesh, buffer, n, &count));
@@ -1053,7 +1069,8 @@ static void json(void) {
     memset(buffer, 0x5a, n + 2u);
     length = 0;
     CHECK_FAIL(nl_navmesh_save_links_json(world, navmesh, buffer, n, &length), NL_STATUS_BUFFER_TOO_SMALL, "");
-    CHECK_THAT(length == n, "nl_navmesh_save_links_json: out_length receives the length even when the buffer is too small");
+    CHECK_THAT(length == n,
+               "nl_navmesh_save_links_json: out_length receives the length even when the buffer is too small");
     CHECK(all_bytes(buffer, n + 2u, 0x5a));
     CHECK_FAIL(nl_navmesh_save_links_json(world, navmesh, buffer, 1, &length), NL_STATUS_BUFFER_TOO_SMALL, "");
     CHECK(all_bytes(buffer, n + 2u, 0x5a));
@@ -1116,8 +1133,9 @@ static void json(void) {
     check_load_refused(world, navmesh, LINKS_HEAD "[{\"kind\": \"manual\", \"end\": [6, 0, 0]}]}",
                        NL_STATUS_INVALID_ARGUMENT, "links[0].start");
     check_load_refused(world, navmesh,
-                       LINKS_HEAD "[{\"kind\": \"manual\", \"start\": [-6, 0, 0], \"end\": [6, 0, 0]},"
-                                  " {\"kind\": \"drop\", \"start\": [-6, 0, 0]}]}",
+                       LINKS_HEAD
+                       "[{\"kind\": \"manual\", \"start\": [-6, 0, 0], \"end\": [6, 0, 0]},"
+                       " {\"kind\": \"drop\", \"start\": [-6, 0, 0]}]}",
                        NL_STATUS_INVALID_ARGUMENT, "links[1].end");
     check_load_refused(world, navmesh, LINKS_HEAD "[{\"start\": [-6, 0, 0], \"end\": [6, 0, 0]}]}",
                        NL_STATUS_INVALID_ARGUMENT, "links[0].kind");
@@ -1127,17 +1145,20 @@ static void json(void) {
     check_load_refused(world, navmesh, LINKS_HEAD "[{\"kind\": \"manual\", \"start\": [-6, 0], \"end\": [6, 0, 0]}]}",
                        NL_STATUS_INVALID_ARGUMENT, "links[0].start");
     check_load_refused(world, navmesh,
-                       LINKS_HEAD "[{\"kind\": \"manual\", \"start\": [-6, 0, 0], \"end\": [6, 0, 0], "
-                                  "\"cost_modifier\": -1}]}",
+                       LINKS_HEAD
+                       "[{\"kind\": \"manual\", \"start\": [-6, 0, 0], \"end\": [6, 0, 0], "
+                       "\"cost_modifier\": -1}]}",
                        NL_STATUS_INVALID_ARGUMENT, "links[0].cost_modifier");
     check_load_refused(world, navmesh,
-                       LINKS_HEAD "[{\"kind\": \"manual\", \"start\": [-6, 0, 0], \"end\": [6, 0, 0], "
-                                  "\"bidirectional\": 1}]}",
+                       LINKS_HEAD
+                       "[{\"kind\": \"manual\", \"start\": [-6, 0, 0], \"end\": [6, 0, 0], "
+                       "\"bidirectional\": 1}]}",
                        NL_STATUS_INVALID_ARGUMENT, "links[0].bidirectional");
     /* The path named is the file's: the key is "requires". */
     check_load_refused(world, navmesh,
-                       LINKS_HEAD "[{\"kind\": \"manual\", \"start\": [-6, 0, 0], \"end\": [6, 0, 0], "
-                                  "\"requires\": {\"gap\": \"wide\"}}]}",
+                       LINKS_HEAD
+                       "[{\"kind\": \"manual\", \"start\": [-6, 0, 0], \"end\": [6, 0, 0], "
+                       "\"requires\": {\"gap\": \"wide\"}}]}",
                        NL_STATUS_INVALID_ARGUMENT, "links[0].requires.gap");
     check_load_refused(world, navmesh, LINKS_HEAD "{}}", NL_STATUS_INVALID_ARGUMENT, "links");
     {
@@ -1161,8 +1182,8 @@ static void json(void) {
         CHECK(count == 1u);
         l = list_links(world, navmesh, &n_loaded);
         if (CHECK(n_loaded == 1u)) {
-            CHECK(l[0].kind == NL_LINK_MANUAL && l[0].bidirectional == 0 && l[0].enabled == 1 &&
-                  l[0].generated == 0 && l[0].cost_modifier == 1.0f && l[0].user_data == 0u);
+            CHECK(l[0].kind == NL_LINK_MANUAL && l[0].bidirectional == 0 && l[0].enabled == 1 && l[0].generated == 0 &&
+                  l[0].cost_modifier == 1.0f && l[0].user_data == 0u);
             CHECK(l[0].apex[0] == -6.0f && l[0].apex[1] == 0.5f && l[0].apex[2] == 0.0f);
             CHECK(l[0].start_polygon != NL_NO_POLYGON && l[0].end_polygon != NL_NO_POLYGON);
         }
@@ -1363,7 +1384,8 @@ static void cancel(void) {
     {
         progress_log log = new_progress_log();
         log.cancel_at_call = 1;
-        CHECK_FAIL(nl_navmesh_generate_links(world, navmesh, NULL, record_progress, &log, NULL), NL_STATUS_CANCELLED, "");
+        CHECK_FAIL(nl_navmesh_generate_links(world, navmesh, NULL, record_progress, &log, NULL), NL_STATUS_CANCELLED,
+                   "");
         CHECK(log.calls == 1);
         CHECK(link_count(world, navmesh) == n0);
     }
@@ -1429,7 +1451,8 @@ static void update_in_box(void) {
     CHECK(n_now == n_original && r.jump_links == full.jump_links);
     CHECK_MSG(r.rays_cast < full.rays_cast, "an update cast %llu rays, the full generation %llu",
               (unsigned long long)r.rays_cast, (unsigned long long)full.rays_cast);
-    for (i = 0; i < n_now && i < n_original; ++i) CHECK_MSG(same_fields(&now[i], &original[i], 1), "link %u changed", (unsigned)i);
+    for (i = 0; i < n_now && i < n_original; ++i)
+        CHECK_MSG(same_fields(&now[i], &original[i], 1), "link %u changed", (unsigned)i);
     CHECK(n_now > 0u && same_link_id(now[0].id, manual) && nl_link_is_valid(world, manual) == 1);
     for (i = 1; i < n_original; ++i) CHECK(nl_link_is_valid(world, original[i].id) == 0);
     free(now);
@@ -1457,7 +1480,8 @@ static void update_in_box(void) {
     now = list_links(world, navmesh, &n_now);
     CHECK(n_now == n_original);
     for (i = 0; i < n_now && i < n_original; ++i)
-        CHECK_MSG(same_fields(&now[i], &original[i], 1), "after the wall went, link %u differs from the original", (unsigned)i);
+        CHECK_MSG(same_fields(&now[i], &original[i], 1), "after the wall went, link %u differs from the original",
+                  (unsigned)i);
     free(now);
 
     /* Removing the navmesh forgets its generation. */
@@ -1504,9 +1528,10 @@ static void navmesh_removed_during_generation(void) {
     {
         const nl_status st = nl_navmesh_generate_links(world, job.navmesh, NULL, remove_navmesh_late, &job, NULL);
         CHECK(job.done && job.removed == NL_STATUS_SUCCESS);
-        CHECK_THAT(st == (NL_STATUS_FAILURE | NL_STATUS_INVALID_HANDLE) || st == NL_STATUS_SUCCESS,
-                   "nl_navmesh_generate_links: a navmesh removed during the generation is INVALID_HANDLE (or a success whose "
-                   "links went with the navmesh)");
+        CHECK_THAT(
+            st == (NL_STATUS_FAILURE | NL_STATUS_INVALID_HANDLE) || st == NL_STATUS_SUCCESS,
+            "nl_navmesh_generate_links: a navmesh removed during the generation is INVALID_HANDLE (or a success whose "
+            "links went with the navmesh)");
     }
     CHECK(nl_navmesh_is_valid(world, job.navmesh) == 0);
     /* "Removes a navmesh and its links": no link of the removed navmesh may be reachable afterwards. The
@@ -1635,8 +1660,7 @@ static void threads(void) {
         CHECK_MSG(jobs[i].failures == 0, "reader %d: %d lists failed", i, jobs[i].failures);
         CHECK_MSG(jobs[i].inconsistent == 0, "reader %d: %d of %d lists were not one generation's links", i,
                   jobs[i].inconsistent, jobs[i].lists);
-        CHECK_MSG(jobs[i].get_differs == 0, "reader %d: %d listed links read back differently", i,
-                  jobs[i].get_differs);
+        CHECK_MSG(jobs[i].get_differs == 0, "reader %d: %d listed links read back differently", i, jobs[i].get_differs);
         CHECK(jobs[i].lists >= 20);
     }
     CHECK(nl_link_is_valid(world, manual_id) == 1);

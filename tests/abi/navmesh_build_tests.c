@@ -52,8 +52,8 @@ static void check_box_navmesh(const nl_world* world, nl_navmesh_id id, nl_agent_
               "%s: %u polygons, %u vertices, %u boundary edges", label, (unsigned)info.polygon_count,
               (unsigned)info.vertex_count, (unsigned)info.boundary_edge_count);
     CHECK_MSG(same_agent(info.agent_type, agent), "%s: info.agent is (%g %g %g %g), the def's (%g %g %g %g)", label,
-              info.agent_type.radius, info.agent_type.height, info.agent_type.max_climb, info.agent_type.max_slope, agent.radius,
-              agent.height, agent.max_climb, agent.max_slope);
+              info.agent_type.radius, info.agent_type.height, info.agent_type.max_climb, info.agent_type.max_slope,
+              agent.radius, agent.height, agent.max_climb, agent.max_slope);
     /* On the top, inside the box, reaching near its edges (less the agent's radius). */
     CHECK_MSG(info.bounds_min[0] >= -10.0f && info.bounds_max[0] <= 10.0f && info.bounds_min[2] >= -10.0f &&
                   info.bounds_max[2] <= 10.0f && info.bounds_min[0] < -8.0f && info.bounds_max[0] > 8.0f &&
@@ -163,7 +163,8 @@ static void recast(void) {
             {
                 const char* made_for = navmesh_made_for(world, id);
                 CHECK_MSG(strstr(made_for, "\"cell_size\":0.25") && strstr(made_for, "\"vertices_per_polygon\":3") &&
-                              strstr(made_for, "\"cell_height\":0.2") && strstr(made_for, "\"partition\":\"watershed\""),
+                              strstr(made_for, "\"cell_height\":0.2") &&
+                              strstr(made_for, "\"partition\":\"watershed\""),
                           "the recorded settings: %s", made_for);
             }
             /* An empty string is not a JSON object. */
@@ -280,9 +281,14 @@ static nl_mesh_id add_quad(nl_world* world, float x0, float z0, float x1, float 
 /* A closed crate: x and z in [x0, x0 + side], y in [0, height], every face out. */
 static nl_mesh_id add_crate(nl_world* world, float x0, float z0, float side, float height, uint32_t flags) {
     const float x1 = x0 + side, z1 = z0 + side;
-    const float v[24] = {x0, 0, z0, x1, 0, z0, x1, 0, z1, x0, 0, z1, x0, height, z0, x1, height, z0, x1, height, z1, x0, height, z1};
-    static const uint32_t t[36] = {4, 7, 6, 4, 6, 5, /* top, up */ 0, 1, 2, 0, 2, 3, /* bottom, down */
-                                   0, 4, 5, 0, 5, 1, 1, 5, 6, 1, 6, 2, 2, 6, 7, 2, 7, 3, 3, 7, 4, 3, 4, 0};
+    const float v[24] = {x0, 0,      z0, x1, 0,      z0, x1, 0,      z1, x0, 0,      z1,
+                         x0, height, z0, x1, height, z0, x1, height, z1, x0, height, z1};
+    static const uint32_t t[36] = {4, 7, 6, 4, 6, 5, /* top, up */ 0,
+                                   1, 2, 0, 2, 3, /* bottom, down */
+                                   0, 4, 5, 0, 5, 1, 1,
+                                   5, 6, 1, 6, 2, 2, 6,
+                                   7, 2, 7, 3, 3, 7, 4,
+                                   3, 4, 0};
     nl_mesh_def def = nl_default_mesh_def();
     nl_mesh_id id = {0u, 0u};
     def.vertices = v;
@@ -345,7 +351,8 @@ static void winding(void) {
     nl_world* world = make_world(2);
     /* Wound clockwise (fronts down): nothing to walk on, and the message says why and what to set. */
     nl_mesh_id floor = add_quad(world, -10, -10, 10, 10, 0, 1, 0, 0, NULL);
-    CHECK_BUILD_FAILS(world, &def, NL_STATUS_NOT_FOUND, "2 of the level's 2 triangles would be flat enough turned over");
+    CHECK_BUILD_FAILS(world, &def, NL_STATUS_NOT_FOUND,
+                      "2 of the level's 2 triangles would be flat enough turned over");
     CHECK_BUILD_FAILS(world, &def, NL_STATUS_NOT_FOUND, "NL_MESH_CLOCKWISE");
     CHECK_OK(nl_mesh_remove(world, floor));
     /* The same triangles flagged clockwise are turned over and walked on; the flag is kept. */
@@ -508,6 +515,6 @@ static void level_hash_of_the_built_level(void) {
     nl_world_destroy(world);
 }
 
-ABI_SECTION(navmesh_build, ABI_CASE(defaults), ABI_CASE(recast), ABI_CASE(winding), ABI_CASE(turned_over_warning), ABI_CASE(mesh_roles),
-            ABI_CASE(mesh_areas), ABI_CASE(build_progress),
+ABI_SECTION(navmesh_build, ABI_CASE(defaults), ABI_CASE(recast), ABI_CASE(winding), ABI_CASE(turned_over_warning),
+            ABI_CASE(mesh_roles), ABI_CASE(mesh_areas), ABI_CASE(build_progress),
             ABI_CASE(level_hash_of_the_built_level));

@@ -40,13 +40,9 @@ uint32_t plugin_count(const nl_world* world) {
     return count;
 }
 
-int same_navmesh(nl_navmesh_id a, nl_navmesh_id b) {
-    return a.index1 == b.index1 && a.revision == b.revision;
-}
+int same_navmesh(nl_navmesh_id a, nl_navmesh_id b) { return a.index1 == b.index1 && a.revision == b.revision; }
 
-int same_plugin(nl_plugin_id a, nl_plugin_id b) {
-    return a.index1 == b.index1 && a.revision == b.revision;
-}
+int same_plugin(nl_plugin_id a, nl_plugin_id b) { return a.index1 == b.index1 && a.revision == b.revision; }
 
 int same_agent(nl_agent_type a, nl_agent_type b) {
     return a.radius == b.radius && a.height == b.height && a.max_climb == b.max_climb && a.max_slope == b.max_slope;
@@ -224,8 +220,8 @@ int check_navmesh_structure(const nl_world* world, nl_navmesh_id id, const char*
                               equal3(edge->end, xyz + 3 * poly->vertices[(edge->edge + 1) % poly->vertex_count]),
                           "%s: boundary edge %u ends are not its polygon's corners %u, %u", label, (unsigned)e,
                           (unsigned)edge->edge, (unsigned)(edge->edge + 1));
-        bad += !CHECK_MSG(equal3(edge->normal, poly->normal), "%s: boundary edge %u normal is not its polygon's",
-                          label, (unsigned)e);
+        bad += !CHECK_MSG(equal3(edge->normal, poly->normal), "%s: boundary edge %u normal is not its polygon's", label,
+                          (unsigned)e);
         along[0] = edge->end[0] - edge->start[0];
         along[1] = edge->end[1] - edge->start[1];
         along[2] = edge->end[2] - edge->start[2];
@@ -249,7 +245,7 @@ int check_navmesh_structure(const nl_world* world, nl_navmesh_id id, const char*
    triangles) covering the four quadrants, the outline of 8 unit edges with outward pointing straight
    away from the square, area ids by quadrant (`areas` NULL: all 0). */
 void check_grid_navmesh(const nl_world* world, nl_navmesh_id id, uint32_t polygons, const uint8_t* areas,
-                               const char* label) {
+                        const char* label) {
     const nl_navmesh_info info = navmesh_info(world, id);
     uint32_t vertex_count = 0, edge_count = 0, i, j;
     float* xyz;
@@ -323,10 +319,10 @@ void check_grid_navmesh(const nl_world* world, nl_navmesh_id id, uint32_t polygo
             nl_nav_polygon poly = nl_nav_polygon_init();
             CHECK_MSG((ox != 0.0f) != (oz != 0.0f), "%s: boundary edge %u (mid %g %g) is not on the outline", label,
                       (unsigned)i, mx, mz);
-            CHECK_MSG(near3(e->outward, ox, 0.0f, oz, TOL), "%s: edge %u outward (%g %g %g), expected (%g 0 %g)",
-                      label, (unsigned)i, e->outward[0], e->outward[1], e->outward[2], ox, oz);
-            CHECK_MSG(e->outward[0] * mx + e->outward[2] * mz > 0.0f, "%s: edge %u outward points to the centre",
-                      label, (unsigned)i);
+            CHECK_MSG(near3(e->outward, ox, 0.0f, oz, TOL), "%s: edge %u outward (%g %g %g), expected (%g 0 %g)", label,
+                      (unsigned)i, e->outward[0], e->outward[1], e->outward[2], ox, oz);
+            CHECK_MSG(e->outward[0] * mx + e->outward[2] * mz > 0.0f, "%s: edge %u outward points to the centre", label,
+                      (unsigned)i);
             CHECK_MSG(fabsf(length3(e->outward) - 1.0f) <= TOL, "%s: edge %u outward is not unit", label, (unsigned)i);
             CHECK_MSG(e->normal[0] == 0.0f && e->normal[1] == 1.0f && e->normal[2] == 0.0f,
                       "%s: edge %u normal (%g %g %g)", label, (unsigned)i, e->normal[0], e->normal[1], e->normal[2]);
@@ -381,7 +377,7 @@ nl_mesh_id add_floor_box(nl_world* world) {
 }
 
 void check_build_fails(nl_world* world, const nl_navmesh_build_def* def, nl_status detail, const char* needle,
-                              const char* file, int line) {
+                       const char* file, int line) {
     const uint32_t before = navmesh_count(world);
     nl_navmesh_id out = {77u, 77u};
     const nl_status status = nl_navmesh_build(world, def, &out);

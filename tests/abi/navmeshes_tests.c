@@ -251,8 +251,7 @@ static void add_variants(void) {
 
     /* Extreme but valid: squares of 1000 km and a weld tolerance of 1e-30 m (exact duplicates only). Run
        first in a child (isolated_weld); here only if that did not crash. */
-    if (CHECK_MSG(weld_in_child >= 0,
-                  "a weld tolerance of 1e-30 m on 1000 km squares crashed (in a child)")) {
+    if (CHECK_MSG(weld_in_child >= 0, "a weld tolerance of 1e-30 m on 1000 km squares crashed (in a child)")) {
         float huge[72];
         int k;
         for (k = 0; k < 72; ++k) huge[k] = soup[k] * 1.0e6f;
@@ -344,10 +343,10 @@ static void add_variants(void) {
     /* Repairs: a polygon of no area is dropped; an edge of three polygons connects none of them. */
     {
         static const float vertices[] = {
-            -1.0f, GRID_Y, -1.0f, 0.0f, GRID_Y, -1.0f, 1.0f, GRID_Y, -1.0f, -1.0f, GRID_Y, 0.0f, 0.0f, GRID_Y, 0.0f,
-            1.0f,  GRID_Y, 0.0f,  -1.0f, GRID_Y, 1.0f, 0.0f, GRID_Y, 1.0f, 1.0f, GRID_Y, 1.0f,
-            0.5f,  1.5f,   -0.5f, /* 9: above quadrant 1 */
-            -0.5f, GRID_Y, -1.0f, /* 10: on the edge 0-1 */
+            -1.0f,  GRID_Y, -1.0f,  0.0f,   GRID_Y, -1.0f,  1.0f,   GRID_Y, -1.0f, -1.0f,
+            GRID_Y, 0.0f,   0.0f,   GRID_Y, 0.0f,   1.0f,   GRID_Y, 0.0f,   -1.0f, GRID_Y,
+            1.0f,   0.0f,   GRID_Y, 1.0f,   1.0f,   GRID_Y, 1.0f,   0.5f,   1.5f,  -0.5f, /* 9: above quadrant 1 */
+            -0.5f,  GRID_Y, -1.0f,                                                        /* 10: on the edge 0-1 */
         };
         uint32_t indices[16 + 3 + 3];
         static const uint8_t counts[6] = {4, 4, 4, 4, 3, 3};
@@ -380,14 +379,14 @@ static void add_variants(void) {
 /* The grid with height detail: quadrants 0-2 flat (two triangles each), quadrant 3 a pyramid rising
    to 0.75 m over its centre (four triangles). */
 static const float k_detail_vertices[30] = {
-    -1.0f, GRID_Y, -1.0f, 0.0f, GRID_Y, -1.0f, 1.0f, GRID_Y, -1.0f, -1.0f, GRID_Y, 0.0f, 0.0f, GRID_Y, 0.0f,
-    1.0f,  GRID_Y, 0.0f,  -1.0f, GRID_Y, 1.0f, 0.0f, GRID_Y, 1.0f, 1.0f, GRID_Y, 1.0f, 0.5f, 0.75f, 0.5f,
+    -1.0f, GRID_Y, -1.0f, 0.0f,  GRID_Y, -1.0f, 1.0f, GRID_Y, -1.0f, -1.0f, GRID_Y, 0.0f, 0.0f, GRID_Y, 0.0f,
+    1.0f,  GRID_Y, 0.0f,  -1.0f, GRID_Y, 1.0f,  0.0f, GRID_Y, 1.0f,  1.0f,  GRID_Y, 1.0f, 0.5f, 0.75f,  0.5f,
 };
 
 static const uint32_t k_detail_triangles[30] = {
-    0, 3, 4, 0, 4, 1,                    /* quadrant 0 */
-    1, 4, 5, 1, 5, 2,                    /* quadrant 1 */
-    3, 6, 7, 3, 7, 4,                    /* quadrant 2 */
+    0, 3, 4, 0, 4, 1,                   /* quadrant 0 */
+    1, 4, 5, 1, 5, 2,                   /* quadrant 1 */
+    3, 6, 7, 3, 7, 4,                   /* quadrant 2 */
     4, 7, 9, 7, 8, 9, 8, 5, 9, 5, 4, 9, /* quadrant 3: the bump */
 };
 
@@ -455,8 +454,7 @@ static void detail(void) {
 }
 
 /* One refused nl_navmesh_add: INVALID_ARGUMENT naming `needle`, nothing added, out_id untouched. */
-#define CHECK_REJECTED_NAVMESH(world, def, needle) \
-    check_rejected_navmesh((world), (def), (needle), __FILE__, __LINE__)
+#define CHECK_REJECTED_NAVMESH(world, def, needle) check_rejected_navmesh((world), (def), (needle), __FILE__, __LINE__)
 
 static void check_rejected_navmesh(nl_world* world, const nl_navmesh_def* def, const char* needle, const char* file,
                                    int line) {
@@ -698,7 +696,8 @@ static void find_nearest(void) {
     };
     nl_nav_point out[6];
     int q;
-    CHECK_MSG(far_in_child == 1, "nl_navmesh_find_nearest: half extents 1e9 over 1 cm squares find the polygon below (%s)",
+    CHECK_MSG(far_in_child == 1,
+              "nl_navmesh_find_nearest: half extents 1e9 over 1 cm squares find the polygon below (%s)",
               far_in_child < 0 ? "crashed, or a sanitizer stopped it" : "wrong answer");
     world = make_world(1);
 
@@ -720,8 +719,9 @@ static void find_nearest(void) {
     CHECK_NEAR(out[2].distance, 0.5f, TOL);
     CHECK(out[3].found == 0);
     CHECK(out[3].polygon == NL_NO_POLYGON);
-    CHECK_THAT(out[3].beyond_box == 1 && near3(out[3].point, 1.0f, GRID_Y, 1.0f, TOL),
-               "nl_navmesh_find_nearest: a point whose box holds no polygon gets the navmesh's nearest point beyond it");
+    CHECK_THAT(
+        out[3].beyond_box == 1 && near3(out[3].point, 1.0f, GRID_Y, 1.0f, TOL),
+        "nl_navmesh_find_nearest: a point whose box holds no polygon gets the navmesh's nearest point beyond it");
     CHECK_NEAR(out[3].distance, sqrtf(32.0f), 1e-4);
     CHECK(out[4].found == 1);
     CHECK_NEAR(out[4].distance, 1.5f, TOL);
@@ -791,7 +791,10 @@ static void find_nearest(void) {
     /* Bad half extents: zero, negative, NaN, infinite, null. Nothing written. */
     {
         static const float bad_extents[][3] = {
-            {0.0f, 1.0f, 1.0f}, {1.0f, 0.0f, 1.0f}, {1.0f, 1.0f, -1.0f}, {-1.0f, -1.0f, -1.0f},
+            {0.0f, 1.0f, 1.0f},
+            {1.0f, 0.0f, 1.0f},
+            {1.0f, 1.0f, -1.0f},
+            {-1.0f, -1.0f, -1.0f},
         };
         float extents[3];
         size_t b;
@@ -1052,7 +1055,8 @@ static void check_bad_navmesh_id(nl_world* world, nl_navmesh_id id, const char* 
                   "nl_navmesh_find_nearest", "nl_navmesh_find_nearest", file, line);
     check_fail_at(nl_navmesh_find_nearest(world, id, point, 0, half, &nearest), NL_STATUS_INVALID_HANDLE,
                   "nl_navmesh_find_nearest", "nl_navmesh_find_nearest (count 0)", file, line);
-    check_at(info.vertex_count == 0xabababab && all_bytes((const unsigned char*)&poly + sizeof(uint32_t), sizeof poly - sizeof(uint32_t), 0xab) &&
+    check_at(info.vertex_count == 0xabababab &&
+                 all_bytes((const unsigned char*)&poly + sizeof(uint32_t), sizeof poly - sizeof(uint32_t), 0xab) &&
                  all_bytes(&edge, sizeof edge, 0xab) && all_bytes(&nearest, sizeof nearest, 0xab) &&
                  all_bytes(xyz, sizeof xyz, 0xab) && count == 0xdeadbeefu,
              file, line, "an output was written for a bad navmesh id");
@@ -1195,5 +1199,5 @@ static void threads(void) {
 }
 
 ABI_SECTION(navmeshes, ABI_CASE(defaults), ABI_CASE(add_grid), ABI_CASE(add_variants), ABI_CASE(detail),
-            ABI_CASE(rejections), ABI_CASE(find_nearest), ABI_CASE(find_nearest_batches), ABI_CASE(lists), ABI_CASE(ids),
-            ABI_CASE(threads));
+            ABI_CASE(rejections), ABI_CASE(find_nearest), ABI_CASE(find_nearest_batches), ABI_CASE(lists),
+            ABI_CASE(ids), ABI_CASE(threads));

@@ -45,9 +45,7 @@ static void set3(float* p, float x, float y, float z) {
 }
 
 static int same_link(nl_link_id a, nl_link_id b) { return a.index1 == b.index1 && a.revision == b.revision; }
-static int same_ticket(nl_path_ticket a, nl_path_ticket b) {
-    return a.index1 == b.index1 && a.revision == b.revision;
-}
+static int same_ticket(nl_path_ticket a, nl_path_ticket b) { return a.index1 == b.index1 && a.revision == b.revision; }
 
 /* A world with one batch thread and `path_workers` path workers; exits the test if it cannot be made. */
 static nl_world* path_world(int32_t path_workers) {
@@ -201,7 +199,7 @@ static void sleep_ms(long ms) {
 /* What a callback saw. Written by one thread at a time in the tests that read it without atomics
    (the main thread, or a thread joined before the read). */
 typedef struct call_log {
-    nl_world* world;       /* polled from the callback when set */
+    nl_world* world; /* polled from the callback when set */
     int calls;
     nl_path_ticket ticket;
     nl_path_outcome outcome;
@@ -786,7 +784,8 @@ static void queue_manual(void) {
     CHECK(status == NL_STATUS_IN_PROGRESS);
     CHECK(nl_get_last_status() == NL_STATUS_IN_PROGRESS && nl_get_last_error_message()[0] == '\0');
     CHECK(!NL_FAILED(status) && !NL_SUCCEEDED(status));
-    CHECK(count == 0xdeadbeefu && result.outcome == 0xababababu && all_bytes((const unsigned char*)points + sizeof(uint32_t), sizeof points - sizeof(uint32_t), 0xab));
+    CHECK(count == 0xdeadbeefu && result.outcome == 0xababababu &&
+          all_bytes((const unsigned char*)points + sizeof(uint32_t), sizeof points - sizeof(uint32_t), 0xab));
 
     /* Two per call, in the order they were made, their callbacks here and now. */
     processed = 0xdeadbeefu;
@@ -802,7 +801,8 @@ static void queue_manual(void) {
                "a callback may poll its ticket, which is finished");
     st = queue_stats(s.world);
     CHECK(st.queued == 4u && st.running == 0u && st.unreleased == 6u && st.submitted == 6u && st.finished == 2u);
-    CHECK(poll_outcome(s.world, tickets[0]) == NL_PATH_COMPLETE && poll_outcome(s.world, tickets[1]) == NL_PATH_PARTIAL);
+    CHECK(poll_outcome(s.world, tickets[0]) == NL_PATH_COMPLETE &&
+          poll_outcome(s.world, tickets[1]) == NL_PATH_PARTIAL);
     CHECK(poll_outcome(s.world, tickets[2]) == NL_PATH_PENDING);
 
     /* The queued result is nl_path_find's, readable any number of times. */
@@ -819,7 +819,8 @@ static void queue_manual(void) {
         points[0].size = sizeof points[0]; /* the element size the library lays out with */
         CHECK_FAIL(nl_path_get_result(s.world, tickets[0], &result, points, 2, &count), NL_STATUS_BUFFER_TOO_SMALL,
                    "capacity");
-        CHECK(count == 4u && result.point_count == 4u && all_bytes((const unsigned char*)points + sizeof(uint32_t), sizeof points - sizeof(uint32_t), 0xab));
+        CHECK(count == 4u && result.point_count == 4u &&
+              all_bytes((const unsigned char*)points + sizeof(uint32_t), sizeof points - sizeof(uint32_t), 0xab));
         CHECK_OK(nl_path_get_result(s.world, tickets[0], &result, NULL, 0, &count));
         CHECK(count == 4u);
         status = nl_path_get_result(s.world, tickets[1], &result, points, MAX_POINTS, &count);
@@ -836,7 +837,8 @@ static void queue_manual(void) {
         if (pthread_create(&thread, NULL, cancel_on_thread, &c) == 0) {
             pthread_join(thread, NULL);
             CHECK(c.status == NL_STATUS_SUCCESS);
-            CHECK(logs[2].calls == 1 && logs[2].outcome == NL_PATH_CANCELLED && same_ticket(logs[2].ticket, tickets[2]));
+            CHECK(logs[2].calls == 1 && logs[2].outcome == NL_PATH_CANCELLED &&
+                  same_ticket(logs[2].ticket, tickets[2]));
             CHECK_THAT(pthread_equal(logs[2].thread, c.self) && !pthread_equal(logs[2].thread, g_main_thread),
                        "the callback of a request cancelled before it started runs on the cancelling thread");
         } else {
@@ -1051,8 +1053,8 @@ static void queue_workers(void) {
     for (i = 0; i < VARIANTS; ++i) {
         defs[i] = variant(&s, i);
         expected[i] = find(s.world, &defs[i]);
-        CHECK(NL_SUCCEEDED(expected[i].status) && (expected[i].result.outcome == NL_PATH_COMPLETE ||
-                                                   expected[i].result.outcome == NL_PATH_PARTIAL));
+        CHECK(NL_SUCCEEDED(expected[i].status) &&
+              (expected[i].result.outcome == NL_PATH_COMPLETE || expected[i].result.outcome == NL_PATH_PARTIAL));
     }
     CHECK(expected[0].result.links_used == 1u && expected[1].result.outcome == NL_PATH_PARTIAL &&
           expected[2].result.links_used == 1u && expected[3].result.links_used == 1u);
@@ -1135,9 +1137,12 @@ static void queue_workers(void) {
         for (i = 0; i < MANY; ++i) {
             const nl_path_outcome o = g_many.slots[i].callback_outcome;
             if (atomic_load(&g_many.slots[i].calls) != 1) ++wrong_calls;
-            if (o == NL_PATH_CANCELLED) ++cancelled;
-            else if (o == NL_PATH_COMPLETE || o == NL_PATH_PARTIAL) ++planned;
-            else ++others;
+            if (o == NL_PATH_CANCELLED)
+                ++cancelled;
+            else if (o == NL_PATH_COMPLETE || o == NL_PATH_PARTIAL)
+                ++planned;
+            else
+                ++others;
         }
         CHECK(refused == 0);
         CHECK_MSG(atomic_load(&g_many.completions) == MANY && wrong_calls == 0,
@@ -1217,8 +1222,8 @@ static void waiting(void) {
             CHECK_OK(nl_path_request(t.world, &def, &many[i]));
         }
         for (i = 0; i < WAITED; ++i) {
-            if (NL_FAILED(nl_path_wait(t.world, many[i], NL_PATH_WAIT_FOREVER, &outcome)) || outcome != NL_PATH_COMPLETE ||
-                poll_outcome(t.world, many[i]) != NL_PATH_COMPLETE)
+            if (NL_FAILED(nl_path_wait(t.world, many[i], NL_PATH_WAIT_FOREVER, &outcome)) ||
+                outcome != NL_PATH_COMPLETE || poll_outcome(t.world, many[i]) != NL_PATH_COMPLETE)
                 ++wrong;
             CHECK_OK(nl_path_release(t.world, many[i]));
         }
@@ -1246,7 +1251,8 @@ static void explain_shortfalls(void) {
     CHECK(why.reason == NL_PATH_SHORTFALL_LINK_BEYOND_BODY && why.limit == NL_LINK_LIMIT_JUMP_DISTANCE);
     CHECK(fabsf(why.needed - 1.2f) < 1e-3f && why.has == 1.0f);
     CHECK(same_link(why.link, s.jump) && why.reversed == 0);
-    CHECK_THAT(strstr(why.text, "it needs a jump of 1.2 m across, and the body jumps 1 m (max_jump_distance)") != NULL, why.text);
+    CHECK_THAT(strstr(why.text, "it needs a jump of 1.2 m across, and the body jumps 1 m (max_jump_distance)") != NULL,
+               why.text);
 
     /* Up the drop: a jump of 2 m up, the drop taken from its end. */
     def = jumper(s.navmesh, 5.5f, 9.5f);
@@ -1278,6 +1284,5 @@ static void explain_shortfalls(void) {
 }
 
 ABI_SECTION(paths, ABI_CASE(defaults), ABI_CASE(find_synchronous), ABI_CASE(costs_and_radius), ABI_CASE(bad_input),
-            ABI_CASE(explain_shortfalls),
-            ABI_CASE(queue_manual), ABI_CASE(snapshots), ABI_CASE(queue_workers),
+            ABI_CASE(explain_shortfalls), ABI_CASE(queue_manual), ABI_CASE(snapshots), ABI_CASE(queue_workers),
             ABI_CASE(waiting));

@@ -16,18 +16,18 @@
 
 /* The test builder's behaviour, chosen per build through its settings struct. */
 enum test_build_mode {
-    MODE_GRID,                  /* hands the grid to the sink and returns what the sink said */
-    MODE_SINK_TWICE,            /* hands it twice, returns the second answer */
-    MODE_SINK_TWICE_SUCCEED,    /* hands it twice, returns success whatever the sink said */
-    MODE_NO_SINK,               /* returns success without calling the sink */
-    MODE_SINK_THEN_FAIL,        /* hands it over, then fails (NOT_FOUND) */
-    MODE_BAD_INDEX,             /* hands over a grid with an index out of range, returns the sink's answer */
-    MODE_BAD_INDEX_SUCCEED,     /* the same, returning success anyway */
-    MODE_REPORT_ERROR,          /* set_error and INVALID_ARGUMENT, no sink */
-    MODE_NULL_NAVMESH,          /* calls the sink with NULL */
-    MODE_RECORD,                /* records the settings it used, then as MODE_GRID */
-    MODE_RECORD_NOT_OBJECT,     /* records a JSON array as its settings, then as MODE_GRID */
-    MODE_RECORD_NULL            /* records NULL (refused), then as MODE_GRID */
+    MODE_GRID,               /* hands the grid to the sink and returns what the sink said */
+    MODE_SINK_TWICE,         /* hands it twice, returns the second answer */
+    MODE_SINK_TWICE_SUCCEED, /* hands it twice, returns success whatever the sink said */
+    MODE_NO_SINK,            /* returns success without calling the sink */
+    MODE_SINK_THEN_FAIL,     /* hands it over, then fails (NOT_FOUND) */
+    MODE_BAD_INDEX,          /* hands over a grid with an index out of range, returns the sink's answer */
+    MODE_BAD_INDEX_SUCCEED,  /* the same, returning success anyway */
+    MODE_REPORT_ERROR,       /* set_error and INVALID_ARGUMENT, no sink */
+    MODE_NULL_NAVMESH,       /* calls the sink with NULL */
+    MODE_RECORD,             /* records the settings it used, then as MODE_GRID */
+    MODE_RECORD_NOT_OBJECT,  /* records a JSON array as its settings, then as MODE_GRID */
+    MODE_RECORD_NULL         /* records NULL (refused), then as MODE_GRID */
 };
 
 static const char k_recorded_settings[] = "{\"flavour\": \"vanilla\", \"scoops\": 2}";
@@ -38,11 +38,11 @@ typedef struct test_builder_settings {
 } test_builder_settings;
 
 typedef struct test_plugin_state {
-    int entries_ok;     /* entry calls that returned success */
-    int destroys;       /* destroy calls */
-    int entry_checks;   /* entry calls that saw the host table and a zero-filled info as promised */
+    int entries_ok;   /* entry calls that returned success */
+    int destroys;     /* destroy calls */
+    int entry_checks; /* entry calls that saw the host table and a zero-filled info as promised */
     int builds;
-    int build_checks;   /* builds that saw their state, the host table and level triangle counts */
+    int build_checks; /* builds that saw their state, the host table and level triangle counts */
     nl_status sink_status[2];
     uint32_t level_vertices, level_triangles;
     nl_status short_copy_status; /* get_level_triangles with a buffer one vertex short */
@@ -77,8 +77,8 @@ static nl_status test_build(void* state, const nl_plugin_host* host, const nl_na
     self->level_vertices = self->level_triangles = 0xdeadbeefu;
     self->short_copy_status = 0u;
     if (state == &g_plugin && host != NULL && host_table_ok(host->abi_version, host) &&
-        NL_SUCCEEDED(host->get_level_triangles(host->context, NULL, 0, &self->level_vertices, NULL, 0,
-                                               &self->level_triangles)))
+        NL_SUCCEEDED(
+            host->get_level_triangles(host->context, NULL, 0, &self->level_vertices, NULL, 0, &self->level_triangles)))
         ++self->build_checks;
     if (self->level_vertices > 1 && self->level_vertices < 100 && self->level_triangles < 100) {
         float vertices[300];
@@ -101,44 +101,41 @@ static nl_status test_build(void* state, const nl_plugin_host* host, const nl_na
     navmesh.agent_type = def->agent_type;
     self->record_status = 0u;
     switch (mode) {
-    case MODE_RECORD:
-        self->record_status = host->record_build_settings(host->context, k_recorded_settings, strlen(k_recorded_settings));
-        return self->sink_status[0] = sink(sink_context, &navmesh);
-    case MODE_RECORD_NOT_OBJECT:
-        self->record_status = host->record_build_settings(host->context, "[1, 2]", 6);
-        return self->sink_status[0] = sink(sink_context, &navmesh);
-    case MODE_RECORD_NULL:
-        self->record_status = host->record_build_settings(host->context, NULL, 4);
-        return self->sink_status[0] = sink(sink_context, &navmesh);
-    case MODE_GRID:
-        return self->sink_status[0] = sink(sink_context, &navmesh);
-    case MODE_SINK_TWICE:
-        self->sink_status[0] = sink(sink_context, &navmesh);
-        return self->sink_status[1] = sink(sink_context, &navmesh);
-    case MODE_SINK_TWICE_SUCCEED:
-        self->sink_status[0] = sink(sink_context, &navmesh);
-        self->sink_status[1] = sink(sink_context, &navmesh);
-        return NL_STATUS_SUCCESS;
-    case MODE_NO_SINK:
-        return NL_STATUS_SUCCESS;
-    case MODE_SINK_THEN_FAIL:
-        self->sink_status[0] = sink(sink_context, &navmesh);
-        host->set_error(host->context, "test builder: changed its mind after the sink");
-        return NL_STATUS_FAILURE | NL_STATUS_NOT_FOUND;
-    case MODE_BAD_INDEX:
-    case MODE_BAD_INDEX_SUCCEED:
-        memcpy(bad_quads, k_grid_quads, sizeof bad_quads);
-        bad_quads[6] = 99;
-        navmesh.indices = bad_quads;
-        status = self->sink_status[0] = sink(sink_context, &navmesh);
-        return mode == MODE_BAD_INDEX ? status : NL_STATUS_SUCCESS;
-    case MODE_REPORT_ERROR:
-        host->set_error(host->context, "test builder: setting 'flavour' must be 'vanilla'");
-        return NL_STATUS_FAILURE | NL_STATUS_INVALID_ARGUMENT;
-    case MODE_NULL_NAVMESH:
-        return self->sink_status[0] = sink(sink_context, NULL);
-    default:
-        return NL_STATUS_FAILURE | NL_STATUS_INTERNAL_ERROR;
+        case MODE_RECORD:
+            self->record_status =
+                host->record_build_settings(host->context, k_recorded_settings, strlen(k_recorded_settings));
+            return self->sink_status[0] = sink(sink_context, &navmesh);
+        case MODE_RECORD_NOT_OBJECT:
+            self->record_status = host->record_build_settings(host->context, "[1, 2]", 6);
+            return self->sink_status[0] = sink(sink_context, &navmesh);
+        case MODE_RECORD_NULL:
+            self->record_status = host->record_build_settings(host->context, NULL, 4);
+            return self->sink_status[0] = sink(sink_context, &navmesh);
+        case MODE_GRID: return self->sink_status[0] = sink(sink_context, &navmesh);
+        case MODE_SINK_TWICE:
+            self->sink_status[0] = sink(sink_context, &navmesh);
+            return self->sink_status[1] = sink(sink_context, &navmesh);
+        case MODE_SINK_TWICE_SUCCEED:
+            self->sink_status[0] = sink(sink_context, &navmesh);
+            self->sink_status[1] = sink(sink_context, &navmesh);
+            return NL_STATUS_SUCCESS;
+        case MODE_NO_SINK: return NL_STATUS_SUCCESS;
+        case MODE_SINK_THEN_FAIL:
+            self->sink_status[0] = sink(sink_context, &navmesh);
+            host->set_error(host->context, "test builder: changed its mind after the sink");
+            return NL_STATUS_FAILURE | NL_STATUS_NOT_FOUND;
+        case MODE_BAD_INDEX:
+        case MODE_BAD_INDEX_SUCCEED:
+            memcpy(bad_quads, k_grid_quads, sizeof bad_quads);
+            bad_quads[6] = 99;
+            navmesh.indices = bad_quads;
+            status = self->sink_status[0] = sink(sink_context, &navmesh);
+            return mode == MODE_BAD_INDEX ? status : NL_STATUS_SUCCESS;
+        case MODE_REPORT_ERROR:
+            host->set_error(host->context, "test builder: setting 'flavour' must be 'vanilla'");
+            return NL_STATUS_FAILURE | NL_STATUS_INVALID_ARGUMENT;
+        case MODE_NULL_NAVMESH: return self->sink_status[0] = sink(sink_context, NULL);
+        default: return NL_STATUS_FAILURE | NL_STATUS_INTERNAL_ERROR;
     }
 }
 
@@ -147,8 +144,8 @@ static int entry_preamble(uint32_t host_abi_version, const nl_plugin_host* host,
     /* The host zero-fills the info and sets its size. */
     if (host_table_ok(host_abi_version, host) && out_info->size == sizeof(nl_plugin_info) &&
         out_info->abi_version == 0 && out_info->name == NULL && out_info->version == NULL &&
-        out_info->description == NULL && out_info->kinds == 0 && out_info->state == NULL &&
-        out_info->destroy == NULL && out_info->navmesh_builder.build == NULL)
+        out_info->description == NULL && out_info->kinds == 0 && out_info->state == NULL && out_info->destroy == NULL &&
+        out_info->navmesh_builder.build == NULL)
         ++g_plugin.entry_checks;
     g_plugin.record_outside_status = host->record_build_settings(host->context, "{}", 2);
     out_info->abi_version = NL_PLUGIN_ABI_VERSION;
@@ -399,8 +396,9 @@ static void registered(void) {
     settings.mode = MODE_RECORD;
     CHECK_OK(nl_navmesh_build(world, &def, &id));
     CHECK(g_plugin.record_status == NL_STATUS_SUCCESS);
-    CHECK_THAT(strstr(navmesh_made_for(world, id), "\"builder_settings\":{\"flavour\":\"vanilla\",\"scoops\":2}") != NULL,
-               "a saved file says the settings the builder recorded");
+    CHECK_THAT(
+        strstr(navmesh_made_for(world, id), "\"builder_settings\":{\"flavour\":\"vanilla\",\"scoops\":2}") != NULL,
+        "a saved file says the settings the builder recorded");
     settings.mode = MODE_RECORD_NOT_OBJECT;
     {
         const uint32_t before = navmesh_count(world);

@@ -113,14 +113,15 @@ static void reachability(void) {
 
     CHECK_OK(nl_navmesh_get_reachable_polygons(world, navmesh, &able, 1, NULL, 0, &count));
     CHECK(count == 4);
-    CHECK_FAIL(nl_navmesh_get_reachable_polygons(world, navmesh, &able, 1, listed, 3, &count), NL_STATUS_BUFFER_TOO_SMALL,
-               "capacity is 3");
+    CHECK_FAIL(nl_navmesh_get_reachable_polygons(world, navmesh, &able, 1, listed, 3, &count),
+               NL_STATUS_BUFFER_TOO_SMALL, "capacity is 3");
     CHECK_OK(nl_navmesh_get_reachable_polygons(world, navmesh, &able, 1, listed, 8, &count));
     CHECK(count == 4 && listed[0] == 0 && listed[1] == 1 && listed[2] == 2 && listed[3] == 3);
 
     CHECK_OK(nl_navmesh_get_islands(world, navmesh, &able, islands, 6, &count, &island_count));
     CHECK(count == 6 && island_count == 3);
-    CHECK(islands[0] == 0 && islands[1] == 0 && islands[2] == 1 && islands[3] == 1 && islands[4] == 2 && islands[5] == 2);
+    CHECK(islands[0] == 0 && islands[1] == 0 && islands[2] == 1 && islands[3] == 1 && islands[4] == 2 &&
+          islands[5] == 2);
 
     /* Keeping out of area 0 leaves no island; a body standing in one still walks out. */
     {
@@ -142,7 +143,8 @@ static void reachability(void) {
         CHECK_INVALID(nl_navmesh_can_reach(world, navmesh, &able, &good, &bad, 1, answers), "to_polygons[0] is 6");
         CHECK_INVALID(nl_navmesh_can_reach(world, navmesh, &negative, &good, &good, 1, answers),
                       "filter->capabilities.max_drop_height");
-        CHECK_INVALID(nl_navmesh_get_reachable_polygons(world, navmesh, &walker, 9, NULL, 0, &count), "from_polygon is 9");
+        CHECK_INVALID(nl_navmesh_get_reachable_polygons(world, navmesh, &walker, 9, NULL, 0, &count),
+                      "from_polygon is 9");
     }
     nl_world_destroy(world);
 }
@@ -193,7 +195,8 @@ static void raycast(void) {
     const nl_navmesh_id navmesh = add_cells(world, rows, 3);
     /* Along row 0 to its far cell; down column 0 toward z = 4.5 (the missing cell of row 2 is a wall at
        z = 2); across row 1 into area 5. */
-    const nl_navmesh_ray rays[3] = {ray(0, 0.5f, 0.5f, 3.5f, 0.5f), ray(0, 0.5f, 0.5f, 0.5f, 4.5f), ray(4, 0.5f, 1.5f, 3.9f, 1.5f)};
+    const nl_navmesh_ray rays[3] = {ray(0, 0.5f, 0.5f, 3.5f, 0.5f), ray(0, 0.5f, 0.5f, 0.5f, 4.5f),
+                                    ray(4, 0.5f, 1.5f, 3.9f, 1.5f)};
     nl_navmesh_raycast_hit hits[3];
     uint32_t crossed[3 * 8];
     hits[0] = nl_navmesh_raycast_hit_init();
@@ -216,7 +219,7 @@ static void raycast(void) {
         CHECK_OK(nl_navmesh_raycast(world, navmesh, NULL, rays, 3, hits, two, 2));
         CHECK(hits[0].polygon_count == 4 && two[0] == 0 && two[1] == 1 && two[2] == 0 && two[3] == 4);
     }
-    {  /* A filter keeping out of area 5 makes it a wall at x = 3. */
+    { /* A filter keeping out of area 5 makes it a wall at x = 3. */
         const float costs[6] = {1, 1, 1, 1, 1, NL_AREA_EXCLUDED};
         nl_query_filter filter = nl_default_query_filter();
         filter.area_costs = costs;
@@ -225,13 +228,14 @@ static void raycast(void) {
         CHECK(hits[0].hit == 1 && near3(hits[0].point, 3.0f, 0.0f, 1.5f, TOL) &&
               near3(hits[0].wall_normal, -1.0f, 0.0f, 0.0f, TOL));
     }
-    {  /* A ray whose start is not over its polygon: the whole batch is refused, nothing written. */
+    { /* A ray whose start is not over its polygon: the whole batch is refused, nothing written. */
         nl_navmesh_ray bad[2];
         bad[0] = rays[0];
         bad[1] = ray(2, 0.5f, 0.5f, 1.0f, 1.0f);
         memset(hits, 0xab, sizeof hits);
         hits[0] = nl_navmesh_raycast_hit_init();
-        CHECK_INVALID(nl_navmesh_raycast(world, navmesh, NULL, bad, 2, hits, NULL, 0), "rays[1].start is not over rays[1].start_polygon 2");
+        CHECK_INVALID(nl_navmesh_raycast(world, navmesh, NULL, bad, 2, hits, NULL, 0),
+                      "rays[1].start is not over rays[1].start_polygon 2");
         CHECK(hits[0].hit == 0 && hits[0].t == 0.0f && all_bytes(&hits[1], sizeof hits[1], 0xab));
     }
     /* Two triangles overlapping across a shared edge run the same way (a host navmesh the builder
@@ -285,19 +289,22 @@ static void move_along_surface(void) {
     const float start[3] = {0.5f, 0.0f, 1.5f};
     nl_nav_point moved;
     uint32_t visited[16], count = 0;
-    {  /* Straight there. */
+    { /* Straight there. */
         const float target[3] = {2.5f, 0.0f, 0.5f};
         CHECK_OK(nl_navmesh_move_along_surface(world, navmesh, NULL, 4, start, target, &moved, visited, 16, &count));
-        CHECK(moved.found == 1 && near3(moved.point, 2.5f, 0.0f, 0.5f, TOL) && moved.polygon == 2 && moved.distance == 0.0f);
+        CHECK(moved.found == 1 && near3(moved.point, 2.5f, 0.0f, 0.5f, TOL) && moved.polygon == 2 &&
+              moved.distance == 0.0f);
         CHECK(count >= 2 && visited[0] == 4 && visited[count - 1] == 2);
         {
             const uint32_t all = count;
-            CHECK_FAIL(nl_navmesh_move_along_surface(world, navmesh, NULL, 4, start, target, &moved, visited, 1, &count),
-                       NL_STATUS_BUFFER_TOO_SMALL, "visited");
-            CHECK_THAT(count == all && visited[0] == 4, "a slide's out_count is how many it visited, also when they did not fit");
+            CHECK_FAIL(
+                nl_navmesh_move_along_surface(world, navmesh, NULL, 4, start, target, &moved, visited, 1, &count),
+                NL_STATUS_BUFFER_TOO_SMALL, "visited");
+            CHECK_THAT(count == all && visited[0] == 4,
+                       "a slide's out_count is how many it visited, also when they did not fit");
         }
     }
-    {  /* Into the missing cell: slides to the nearest point of its wall, z = 2 under the target. */
+    { /* Into the missing cell: slides to the nearest point of its wall, z = 2 under the target. */
         const float target[3] = {0.3f, 0.0f, 2.5f};
         CHECK_OK(nl_navmesh_move_along_surface(world, navmesh, NULL, 4, start, target, &moved, NULL, 0, NULL));
         CHECK_THAT(near3(moved.point, 0.3f, 0.0f, 2.0f, TOL) && moved.polygon == 4,
@@ -329,7 +336,8 @@ static void random_points(void) {
                  points[i].point[0] <= (float)(points[i].polygon < 4 ? points[i].polygon : 5) + 1.0f;
     }
     CHECK_THAT(inside, "every random point lies on its polygon");
-    for (i = 0; i < 5; ++i) CHECK_MSG(abs((int)per_polygon[i] - 4000) < 280, "polygon %u got %u points of 20000", i, per_polygon[i]);
+    for (i = 0; i < 5; ++i)
+        CHECK_MSG(abs((int)per_polygon[i] - 4000) < 280, "polygon %u got %u points of 20000", i, per_polygon[i]);
 
     /* The same seed, the same points; another seed, others. */
     CHECK_OK(nl_navmesh_random_points(world, navmesh, &def, again, kCount, &found));
@@ -355,8 +363,8 @@ static void random_points(void) {
         }
         CHECK_THAT(in_circle, "nl_navmesh_random_points: every point lies within the radius");
         CHECK(per_polygon[2] == 0 && per_polygon[3] == 0 && per_polygon[4] == 0);
-        CHECK_MSG(abs((int)per_polygon[0] - (int)per_polygon[1]) < 5 * 142, "cells 0 and 1 got %u and %u", per_polygon[0],
-                  per_polygon[1]);
+        CHECK_MSG(abs((int)per_polygon[0] - (int)per_polygon[1]) < 5 * 142, "cells 0 and 1 got %u and %u",
+                  per_polygon[0], per_polygon[1]);
     }
 
     /* Keeping out of area 2 and only what polygon 0 reaches: cells 0 and 1. */
@@ -374,7 +382,7 @@ static void random_points(void) {
         CHECK(found == 1000);
         for (i = 0; i < found; ++i) only_first_two = only_first_two && points[i].polygon < 2;
         CHECK_THAT(only_first_two, "random points keep to the polygons reachable from reachable_from");
-        def.reachable_from = 2;  /* in the excluded area: walks out both ways */
+        def.reachable_from = 2; /* in the excluded area: walks out both ways */
         CHECK_OK(nl_navmesh_random_points(world, navmesh, &def, points, 1000, &found));
         CHECK(found == 1000);
         /* A circle with no allowed polygon: none. */
@@ -394,7 +402,7 @@ static void random_points(void) {
 typedef struct query_job {
     nl_world* world;
     nl_navmesh_id navmesh;
-    float jump;       /* the body's jump distance: 0 never reaches, 3 reaches while the link is there */
+    float jump; /* the body's jump distance: 0 never reaches, 3 reaches while the link is there */
     int wrong, failures;
 } query_job;
 
@@ -406,7 +414,7 @@ static void* query_thread(void* arg) {
     for (i = 0; i < 2000; ++i) {
         uint8_t answers[2];
         uint32_t count = 0;
-        filter.capabilities.max_jump_height = (float)(i % 4);  /* four bodies of one class: one map */
+        filter.capabilities.max_jump_height = (float)(i % 4); /* four bodies of one class: one map */
         if (NL_FAILED(nl_navmesh_can_reach(job->world, job->navmesh, &filter, from, to, 2, answers)) ||
             NL_FAILED(nl_navmesh_get_reachable_polygons(job->world, job->navmesh, &filter, 1, NULL, 0, &count))) {
             ++job->failures;
@@ -432,7 +440,7 @@ static void threads(void) {
         jobs[i].wrong = jobs[i].failures = 0;
         started[i] = pthread_create(&ids[i], NULL, query_thread, &jobs[i]) == 0;
     }
-    for (i = 0; i < 200; ++i) {  /* the link comes and goes */
+    for (i = 0; i < 200; ++i) { /* the link comes and goes */
         nl_link_def def = nl_default_link_def();
         nl_link_id link;
         def.start[0] = 1.5f, def.start[2] = 0.5f;
@@ -442,8 +450,8 @@ static void threads(void) {
     for (i = 0; i < kThreads; ++i) {
         if (started[i]) pthread_join(ids[i], NULL);
         CHECK(started[i]);
-        CHECK_MSG(jobs[i].failures == 0 && jobs[i].wrong == 0, "thread %d: %d failures, %d wrong answers", i, jobs[i].failures,
-                  jobs[i].wrong);
+        CHECK_MSG(jobs[i].failures == 0 && jobs[i].wrong == 0, "thread %d: %d failures, %d wrong answers", i,
+                  jobs[i].failures, jobs[i].wrong);
     }
     nl_world_destroy(world);
 }

@@ -109,15 +109,14 @@ static void cast_rays(void) {
             const char* needle;
         };
         static const struct bad_ray bad[] = {
-            {1, 0, 0.0f, "rays[1]"}, /* NaN origin, value replaced below */
-            {2, 0, 1.0f, "rays[2]"}, /* infinite origin */
-            {0, 1, 0.0f, "rays[0]"}, /* zero direction */
-            {3, 1, 1.0f, "rays[3]"}, /* infinite direction */
-            {2, 1, 2.0f, "rays[2]"}, /* NaN direction */
-            {1, 2, 0.0f, "rays[1]"}, /* max_distance 0 */
-            {0, 2, -1.0f, "rays[0]"},
-            {3, 2, 2.0f, "rays[3]"}, /* max_distance NaN */
-            {2, 2, -3.0f, "rays[2]"}, /* -INFINITY */
+            {1, 0, 0.0f, "rays[1]"},                           /* NaN origin, value replaced below */
+            {2, 0, 1.0f, "rays[2]"},                           /* infinite origin */
+            {0, 1, 0.0f, "rays[0]"},                           /* zero direction */
+            {3, 1, 1.0f, "rays[3]"},                           /* infinite direction */
+            {2, 1, 2.0f, "rays[2]"},                           /* NaN direction */
+            {1, 2, 0.0f, "rays[1]"},                           /* max_distance 0 */
+            {0, 2, -1.0f, "rays[0]"}, {3, 2, 2.0f, "rays[3]"}, /* max_distance NaN */
+            {2, 2, -3.0f, "rays[2]"},                          /* -INFINITY */
         };
         size_t b;
         for (b = 0; b < sizeof bad / sizeof bad[0]; ++b) {
@@ -127,9 +126,12 @@ static void cast_rays(void) {
                 rays[bad[b].index].origin[1] = bad[b].value == 0.0f ? NAN : INFINITY;
             } else if (bad[b].field == 1) {
                 float* d = rays[bad[b].index].direction;
-                if (bad[b].value == 0.0f) d[0] = d[1] = d[2] = 0.0f;
-                else if (bad[b].value == 1.0f) d[2] = INFINITY;
-                else d[0] = NAN;
+                if (bad[b].value == 0.0f)
+                    d[0] = d[1] = d[2] = 0.0f;
+                else if (bad[b].value == 1.0f)
+                    d[2] = INFINITY;
+                else
+                    d[0] = NAN;
             } else {
                 float v = bad[b].value;
                 if (v == 2.0f) v = NAN;
@@ -139,7 +141,8 @@ static void cast_rays(void) {
             memset(hits, 0xab, sizeof hits);
             hits[0].size = sizeof hits[0]; /* the element size the library lays out with */
             CHECK_INVALID(nl_world_cast_rays(world, rays, 4, hits), bad[b].needle);
-            CHECK_MSG(all_bytes((const unsigned char*)hits + sizeof(uint32_t), sizeof hits - sizeof(uint32_t), 0xab), "hits written on failure (case %d)", (int)b);
+            CHECK_MSG(all_bytes((const unsigned char*)hits + sizeof(uint32_t), sizeof hits - sizeof(uint32_t), 0xab),
+                      "hits written on failure (case %d)", (int)b);
         }
     }
 
@@ -216,12 +219,12 @@ static void segments_blocked(void) {
     uint8_t blocked[7];
 
     CHECK_OK(nl_mesh_add(world, &def, &floor));
-    s[0] = segment(0.5f, 5.0f, 0.25f, 0.5f, -5.0f, 0.25f); /* through the floor */
-    s[1] = segment(0.5f, 5.0f, 0.25f, 3.0f, 6.0f, 2.0f);   /* above it */
-    s[2] = segment(0.5f, 1.0f, 0.25f, 0.5f, 1.0f, 0.25f);  /* zero length, on the floor */
-    s[3] = segment(0.5f, 5.0f, 0.25f, 0.5f, 1.5f, 0.25f);  /* stops short */
-    s[4] = segment(0.5f, -2.0f, 0.25f, 0.5f, 0.5f, 0.25f); /* below, stops short */
-    s[5] = segment(0.5f, -5.0f, 0.25f, 0.5f, 5.0f, 0.25f); /* through, from below */
+    s[0] = segment(0.5f, 5.0f, 0.25f, 0.5f, -5.0f, 0.25f);  /* through the floor */
+    s[1] = segment(0.5f, 5.0f, 0.25f, 3.0f, 6.0f, 2.0f);    /* above it */
+    s[2] = segment(0.5f, 1.0f, 0.25f, 0.5f, 1.0f, 0.25f);   /* zero length, on the floor */
+    s[3] = segment(0.5f, 5.0f, 0.25f, 0.5f, 1.5f, 0.25f);   /* stops short */
+    s[4] = segment(0.5f, -2.0f, 0.25f, 0.5f, 0.5f, 0.25f);  /* below, stops short */
+    s[5] = segment(0.5f, -5.0f, 0.25f, 0.5f, 5.0f, 0.25f);  /* through, from below */
     s[6] = segment(-20.0f, 5.0f, 0.0f, 20.0f, -5.0f, 0.0f); /* slanted, crosses at x = 8 */
     memset(blocked, 0xab, sizeof blocked);
     CHECK_OK(nl_world_segments_blocked(world, s, 7, blocked));
@@ -341,10 +344,10 @@ static void contract_edges(void) {
     r = down_ray(0.5f, 0.25f, 5.0f, INFINITY);
     r.direction[1] = -3.0e38f;
     CHECK_THAT(nl_world_cast_rays(world, &r, 1, &h) == NL_STATUS_SUCCESS && h.hit == 1,
-                "nl_world_cast_rays: a finite direction of length 3e38 is accepted");
+               "nl_world_cast_rays: a finite direction of length 3e38 is accepted");
     r.direction[1] = -1.0e-30f;
     CHECK_THAT(nl_world_cast_rays(world, &r, 1, &h) == NL_STATUS_SUCCESS && h.hit == 1,
-                "nl_world_cast_rays: a nonzero direction of length 1e-30 is accepted");
+               "nl_world_cast_rays: a nonzero direction of length 1e-30 is accepted");
 
     /* A mirroring transform (determinant < 0): the normal follows the world-space winding, whatever the
        flags. Mirrored in x, the floor's world-space triangles wind clockwise seen from above: normal -Y. */
@@ -368,8 +371,8 @@ static void contract_edges(void) {
         }
         CHECK_NEAR(hits[0].normal[1], -1.0f, TOL); /* static: from the uploaded world-space triangles */
         CHECK_THAT(fabsf(hits[1].normal[1] - hits[0].normal[1]) <= TOL,
-                    "nl_world_cast_rays: under a mirroring transform a NL_MESH_MOVABLE mesh reports the same normal "
-                    "as the same mesh added static");
+                   "nl_world_cast_rays: under a mirroring transform a NL_MESH_MOVABLE mesh reports the same normal "
+                   "as the same mesh added static");
     }
     nl_world_destroy(world);
 }
@@ -412,8 +415,7 @@ static int huge_ray_origin(nl_world* world) {
     nl_ray r = down_ray(1.0e19f, 0.25f, 5.0f, INFINITY);
     nl_ray_hit h = nl_ray_hit_init();
     const nl_status st = nl_world_cast_rays(world, &r, 1, &h);
-    return st == NL_STATUS_SUCCESS ? h.hit == 0
-                                   : strstr(nl_get_last_error_message(), "rays[0]") != NULL;
+    return st == NL_STATUS_SUCCESS ? h.hit == 0 : strstr(nl_get_last_error_message(), "rays[0]") != NULL;
 }
 
 static int huge_segment(nl_world* world) {
@@ -445,13 +447,12 @@ static void extreme_coordinates_in_child(void) {
     result = run_isolated(moderate_coordinates);
     CHECK_MSG(result == 1, "rays and segments with coordinates around 1e6..1e9 (%s)",
               result < 0 ? "crashed" : "wrong answer");
-    CHECK_THAT(run_isolated(huge_ray_origin) == 1,
-                "nl_world_cast_rays: an origin of 1e19 is refused, not a crash");
-    CHECK_THAT(run_isolated(huge_segment) == 1,
-                "nl_world_segments_blocked: ends at +-1e19 are refused, not a crash");
+    CHECK_THAT(run_isolated(huge_ray_origin) == 1, "nl_world_cast_rays: an origin of 1e19 is refused, not a crash");
+    CHECK_THAT(run_isolated(huge_segment) == 1, "nl_world_segments_blocked: ends at +-1e19 are refused, not a crash");
     CHECK_THAT(run_isolated(overflowing_segment) == 1,
-                "nl_world_segments_blocked: ends at +-3e38 are refused, not a crash");
+               "nl_world_segments_blocked: ends at +-3e38 are refused, not a crash");
 }
 
 ABI_SECTION(rays, ABI_CASE(cast_rays), ABI_CASE(ray_batches), ABI_CASE(segments_blocked),
-            ABI_CASE(queries_beside_edits_on_threads), ABI_CASE(contract_edges), ABI_CASE(extreme_coordinates_in_child));
+            ABI_CASE(queries_beside_edits_on_threads), ABI_CASE(contract_edges),
+            ABI_CASE(extreme_coordinates_in_child));

@@ -1,7 +1,8 @@
 /* The builders of scene.h. */
 #include "scene.h"
 
-nl_mesh_def mesh_def_of(const float* vertices, uint32_t vertex_count, const uint32_t* indices, uint32_t triangle_count) {
+nl_mesh_def mesh_def_of(const float* vertices, uint32_t vertex_count, const uint32_t* indices,
+                        uint32_t triangle_count) {
     nl_mesh_def def = nl_default_mesh_def();
     def.vertices = vertices;
     def.vertex_count = vertex_count;
@@ -10,8 +11,8 @@ nl_mesh_def mesh_def_of(const float* vertices, uint32_t vertex_count, const uint
     return def;
 }
 
-nl_navmesh_def navmesh_def_of(const float* vertices, uint32_t vertex_count, const uint32_t* indices, const uint8_t* corners,
-                              uint32_t polygon_count) {
+nl_navmesh_def navmesh_def_of(const float* vertices, uint32_t vertex_count, const uint32_t* indices,
+                              const uint8_t* corners, uint32_t polygon_count) {
     nl_navmesh_def def = nl_default_navmesh_def();
     def.vertices = vertices;
     def.vertex_count = vertex_count;

@@ -11,8 +11,8 @@
 nl_mesh_def mesh_def_of(const float* vertices, uint32_t vertex_count, const uint32_t* indices, uint32_t triangle_count);
 
 /* A navmesh def over caller-owned arrays; `corners` may be NULL (triangles). */
-nl_navmesh_def navmesh_def_of(const float* vertices, uint32_t vertex_count, const uint32_t* indices, const uint8_t* corners,
-                              uint32_t polygon_count);
+nl_navmesh_def navmesh_def_of(const float* vertices, uint32_t vertex_count, const uint32_t* indices,
+                              const uint8_t* corners, uint32_t polygon_count);
 
 /* Gives a navmesh def its height detail: triangles over each polygon, polygon p's from starts[p]. */
 void set_navmesh_detail(nl_navmesh_def* def, const float* vertices, uint32_t vertex_count, const uint32_t* triangles,

@@ -95,7 +95,7 @@ struct Options {
     std::vector<int> counts{100, 1000, 5000};
     bool nl1 = true, nl2 = true, dcrowd = true;
     uint32_t paths_per_step = 0;  // NavLink's agent_paths_per_step; 0: the world's default
-    bool verbose = false;  // NavLink's event counts, both sides' mean speed and distance left, on stderr
+    bool verbose = false;         // NavLink's event counts, both sides' mean speed and distance left, on stderr
 };
 
 bool fail(const std::string& level, const char* what) {
@@ -180,7 +180,8 @@ struct NavLinkSide {
         nl_world_get_agents(world, infos.data(), count, &count);
     }
     long waiting() const {
-        return std::count_if(infos.begin(), infos.end(), [](const nl_agent_info& a) { return a.state == NL_AGENT_WAITING; });
+        return std::count_if(infos.begin(), infos.end(),
+                             [](const nl_agent_info& a) { return a.state == NL_AGENT_WAITING; });
     }
     long moving() const {
         return std::count_if(infos.begin(), infos.end(), [](const nl_agent_info& a) {
@@ -212,7 +213,8 @@ struct DetourCrowdSide {
     DetourCrowdSide& operator=(const DetourCrowdSide&) = delete;
     ~DetourCrowdSide() { dtFreeCrowd(crowd); }
 
-    bool setup(const nl::bench::RecastLevel& level, const nl::bench::DetourMesh& detour, int count, const nl::bench::Destinations& where) {
+    bool setup(const nl::bench::RecastLevel& level, const nl::bench::DetourMesh& detour, int count,
+               const nl::bench::Destinations& where) {
         mesh = &detour;
         if (!crowd || !crowd->init(count, level.agent.radius, detour.mesh)) return fail(level.name, "dtCrowd::init");
         const dtCrowdAgentParams params = nl::bench::detour_crowd_agent(level);
@@ -308,9 +310,15 @@ bool run(nl::bench::RecastLevel& level, uint32_t seed, const Options& options) {
             const bool timed = s >= options.warm;
             for (int turn = 0; turn < 3; ++turn) {
                 switch ((s + turn) % 3) {
-                    case 0: if (options.nl1) nl1.step(options.dt, timed, where); break;
-                    case 1: if (options.nl2) nl2.step(options.dt, timed, where); break;
-                    default: if (options.dcrowd) dc.step(options.dt, timed, where); break;
+                    case 0:
+                        if (options.nl1) nl1.step(options.dt, timed, where);
+                        break;
+                    case 1:
+                        if (options.nl2) nl2.step(options.dt, timed, where);
+                        break;
+                    default:
+                        if (options.dcrowd) dc.step(options.dt, timed, where);
+                        break;
                 }
             }
         }
@@ -322,32 +330,34 @@ bool run(nl::bench::RecastLevel& level, uint32_t seed, const Options& options) {
         const double usd = options.dcrowd ? median(dc.step_ms) * 1000.0 / count : nan;
         const NavLinkSide& nl = options.nl1 ? nl1 : nl2;
         const bool any_nl = options.nl1 || options.nl2;
-        std::printf("%-18s %6d %6d %9s %9s %9s %7s %7s %7s %7s %6s %6s %6s %6s %6s %6s %7s %6s %5s\n", level.name.c_str(),
-                    level.solo.polygons->npolys, count, figure(us1).c_str(), figure(us2).c_str(), figure(usd).c_str(),
-                    figure(usd / us1).c_str(), figure(usd / us2).c_str(), figure(us1 / us2).c_str(),
-                    any_nl ? std::to_string(nl.arrivals).c_str() : "-",
-                    options.dcrowd ? std::to_string(dc.arrivals).c_str() : "-",
-                    any_nl ? std::to_string(nl.failures).c_str() : "-",
-                    any_nl ? std::to_string(nl.waiting()).c_str() : "-",
-                    options.dcrowd ? std::to_string(dc.waiting()).c_str() : "-",
-                    any_nl ? std::to_string(nl.moving()).c_str() : "-",
-                    options.dcrowd ? std::to_string(dc.moving()).c_str() : "-",
-                    figure(where.area(), "%.0f").c_str(),
-                    figure(100.0 * count * M_PI * level.agent.radius * level.agent.radius / where.area(), "%.0f%%").c_str(),
-                    options.nl1 && options.nl2 ? (same_agents(nl1, nl2) && nl1.arrivals == nl2.arrivals ? "yes" : "NO") : "-");
+        std::printf(
+            "%-18s %6d %6d %9s %9s %9s %7s %7s %7s %7s %6s %6s %6s %6s %6s %6s %7s %6s %5s\n", level.name.c_str(),
+            level.solo.polygons->npolys, count, figure(us1).c_str(), figure(us2).c_str(), figure(usd).c_str(),
+            figure(usd / us1).c_str(), figure(usd / us2).c_str(), figure(us1 / us2).c_str(),
+            any_nl ? std::to_string(nl.arrivals).c_str() : "-",
+            options.dcrowd ? std::to_string(dc.arrivals).c_str() : "-",
+            any_nl ? std::to_string(nl.failures).c_str() : "-", any_nl ? std::to_string(nl.waiting()).c_str() : "-",
+            options.dcrowd ? std::to_string(dc.waiting()).c_str() : "-",
+            any_nl ? std::to_string(nl.moving()).c_str() : "-",
+            options.dcrowd ? std::to_string(dc.moving()).c_str() : "-", figure(where.area(), "%.0f").c_str(),
+            figure(100.0 * count * M_PI * level.agent.radius * level.agent.radius / where.area(), "%.0f%%").c_str(),
+            options.nl1 && options.nl2 ? (same_agents(nl1, nl2) && nl1.arrivals == nl2.arrivals ? "yes" : "NO") : "-");
         std::fflush(stdout);
         if (options.verbose && any_nl)
-            std::fprintf(stderr, "  NavLink events (timed): path_ready=%ld link_started=%ld arrived=%ld failed=%ld replanned=%ld "
-                                 "(link_gone=%ld world_changed=%ld off_path=%ld)\n",
-                         nl.kinds[NL_AGENT_EVENT_PATH_READY], nl.kinds[NL_AGENT_EVENT_LINK_STARTED],
-                         nl.kinds[NL_AGENT_EVENT_ARRIVED], nl.kinds[NL_AGENT_EVENT_FAILED], nl.kinds[NL_AGENT_EVENT_REPLANNED],
-                         nl.reasons[NL_AGENT_REASON_LINK_GONE], nl.reasons[NL_AGENT_REASON_WORLD_CHANGED],
-                         nl.reasons[NL_AGENT_REASON_OFF_PATH]);
+            std::fprintf(
+                stderr,
+                "  NavLink events (timed): path_ready=%ld link_started=%ld arrived=%ld failed=%ld replanned=%ld "
+                "(link_gone=%ld world_changed=%ld off_path=%ld)\n",
+                nl.kinds[NL_AGENT_EVENT_PATH_READY], nl.kinds[NL_AGENT_EVENT_LINK_STARTED],
+                nl.kinds[NL_AGENT_EVENT_ARRIVED], nl.kinds[NL_AGENT_EVENT_FAILED], nl.kinds[NL_AGENT_EVENT_REPLANNED],
+                nl.reasons[NL_AGENT_REASON_LINK_GONE], nl.reasons[NL_AGENT_REASON_WORLD_CHANGED],
+                nl.reasons[NL_AGENT_REASON_OFF_PATH]);
         if (options.verbose) {
             const double nl1_mean = options.nl1 ? mean(nl1.step_ms) * 1000.0 / count : nan;
             const double nl2_mean = options.nl2 ? mean(nl2.step_ms) * 1000.0 / count : nan;
             const double dc_mean = options.dcrowd ? mean(dc.step_ms) * 1000.0 / count : nan;
-            std::fprintf(stderr, "  means over the timed steps (us per agent-step): NavLink 1t %s, 2t %s, DetourCrowd %s\n",
+            std::fprintf(stderr,
+                         "  means over the timed steps (us per agent-step): NavLink 1t %s, 2t %s, DetourCrowd %s\n",
                          figure(nl1_mean).c_str(), figure(nl2_mean).c_str(), figure(dc_mean).c_str());
             double nl_speed = 0, nl_left = 0, dc_speed = 0, dc_left = 0;
             for (const nl_agent_info& a : nl.infos) {
@@ -359,14 +369,16 @@ bool run(nl::bench::RecastLevel& level, uint32_t seed, const Options& options) {
                 dc_speed += dtVlen(ag->vel);
                 dc_left += std::sqrt(dtVdist2DSqr(ag->npos, ag->targetPos));
             }
-            if (any_nl) std::fprintf(stderr, "  at the end, NavLink: mean speed %.2f m/s, mean distance left %.1f m\n", nl_speed / count, nl_left / count);
+            if (any_nl)
+                std::fprintf(stderr, "  at the end, NavLink: mean speed %.2f m/s, mean distance left %.1f m\n",
+                             nl_speed / count, nl_left / count);
             if (options.dcrowd)
-                std::fprintf(stderr, "  at the end, DetourCrowd: mean speed %.2f m/s, mean distance left %.1f m\n", dc_speed / count,
-                             dc_left / count);
+                std::fprintf(stderr, "  at the end, DetourCrowd: mean speed %.2f m/s, mean distance left %.1f m\n",
+                             dc_speed / count, dc_left / count);
         }
         if (nl.refused + dc.refused > 0)
-            std::fprintf(stderr, "navlink-bench-agents: %s: destinations refused: NavLink %ld, Detour %ld\n", level.name.c_str(),
-                         nl.refused, dc.refused);
+            std::fprintf(stderr, "navlink-bench-agents: %s: destinations refused: NavLink %ld, Detour %ld\n",
+                         level.name.c_str(), nl.refused, dc.refused);
     }
     return true;
 }
@@ -437,12 +449,13 @@ int main(int argc, char** argv) {
         }
     }
     if (objs.empty() && fields.empty()) return usage();
-    std::printf("# steps=%d (after %d untimed) dt=%.3f; *_us: microseconds per agent-step; dc/nlN: DetourCrowd's time over "
-                "NavLink's on N threads\n",
-                options.steps, options.warm, options.dt);
-    std::printf("%-18s %6s %6s %9s %9s %9s %7s %7s %7s %7s %6s %6s %6s %6s %6s %6s %7s %6s %5s\n", "level", "polys", "agents",
-                "nl_1t_us", "nl_2t_us", "dcrowd_us", "dc/nl1", "dc/nl2", "nl1/nl2", "arr_nl", "arr_dc", "fail", "wait_nl",
-                "wait_dc", "mov_nl", "mov_dc", "area", "fill", "same");
+    std::printf(
+        "# steps=%d (after %d untimed) dt=%.3f; *_us: microseconds per agent-step; dc/nlN: DetourCrowd's time over "
+        "NavLink's on N threads\n",
+        options.steps, options.warm, options.dt);
+    std::printf("%-18s %6s %6s %9s %9s %9s %7s %7s %7s %7s %6s %6s %6s %6s %6s %6s %7s %6s %5s\n", "level", "polys",
+                "agents", "nl_1t_us", "nl_2t_us", "dcrowd_us", "dc/nl1", "dc/nl2", "nl1/nl2", "arr_nl", "arr_dc",
+                "fail", "wait_nl", "wait_dc", "mov_nl", "mov_dc", "area", "fill", "same");
     bool ok = true;
     uint32_t seed = 1;
     for (const std::string& path : objs) {
@@ -457,8 +470,8 @@ int main(int argc, char** argv) {
     for (const int blocks : fields) {
         try {
             const nl::levelgen::GeneratedLevel generated = nl::levelgen::generate_large_level(1, uint32_t(blocks));
-            nl::bench::RecastLevel level =
-                nl::bench::build_recast_level("large-" + std::to_string(blocks), generated.positions, generated.indices);
+            nl::bench::RecastLevel level = nl::bench::build_recast_level("large-" + std::to_string(blocks),
+                                                                         generated.positions, generated.indices);
             ok = run(level, seed++, options) && ok;
         } catch (const std::exception& e) {
             std::fprintf(stderr, "navlink-bench-agents: large-%d: %s\n", blocks, e.what());

@@ -63,11 +63,11 @@ namespace {
 using nl::test::CrowdScenario;
 
 constexpr float kDt = 1.0f / 30.0f;
-constexpr float kArrive = 0.1f;     // m, x-z
-constexpr float kProgress = 0.1f;   // m
-constexpr float kStuck = 5.0f;      // s
-constexpr float kStill = 0.1f;      // m/s
-constexpr float kSettling = 5.0f;   // s: bodies put down at random points on a level, some on others, part meanwhile
+constexpr float kArrive = 0.1f;    // m, x-z
+constexpr float kProgress = 0.1f;  // m
+constexpr float kStuck = 5.0f;     // s
+constexpr float kStill = 0.1f;     // m/s
+constexpr float kSettling = 5.0f;  // s: bodies put down at random points on a level, some on others, part meanwhile
 constexpr float kHalfExtents[3] = {2.0f, 4.0f, 2.0f};
 
 struct Outcome {
@@ -98,7 +98,8 @@ struct Tally {
             best.push_back(std::hypot(a.start.x() - a.goal.x(), a.start.z() - a.goal.z()));
             side.push_back(a.start.x() < 0 ? -1.0f : 1.0f);
             int k = 0;
-            for (const auto& b : s.agents) k += std::hypot(a.goal.x() - b.goal.x(), a.goal.z() - b.goal.z()) < 2 * s.radius;
+            for (const auto& b : s.agents)
+                k += std::hypot(a.goal.x() - b.goal.x(), a.goal.z() - b.goal.z()) < 2 * s.radius;
             tolerance.push_back(k > 1 ? s.radius * std::sqrt(float(k - 1) / 0.9069f) + 0.5f * s.radius : kArrive);
         }
         out.agents = int(n);
@@ -114,7 +115,8 @@ struct Tally {
             const float* p = &positions[3 * i];
             const float d = std::hypot(p[0] - s.agents[i].goal.x(), p[2] - s.agents[i].goal.z());
             const float speed = std::hypot(velocities[3 * i], velocities[3 * i + 2]);
-            const bool here = says_arrived[i] >= 0 ? says_arrived[i] == 1 : (d < kArrive || (d < tolerance[i] && speed < kStill));
+            const bool here =
+                says_arrived[i] >= 0 ? says_arrived[i] == 1 : (d < kArrive || (d < tolerance[i] && speed < kStill));
             if (here) arrived[i] = 1;
             if (d < best[i] - kProgress || arrived[i]) best[i] = std::min(best[i], d), since[i] = now;
             if (!arrived[i] && now - since[i] > kStuck) stuck[i] = 1;
@@ -176,9 +178,11 @@ bool run_navlink(const nl::bench::RecastLevel& level, const CrowdScenario& s, in
         agent.max_acceleration = s.max_acceleration;
         agent.user_data = i;
         std::memcpy(agent.position, s.agents[i].start.data(), sizeof agent.position);
-        ok = NL_SUCCEEDED(nl_agent_add(world, &agent, &ids[i])) && NL_SUCCEEDED(nl_agent_set_destination(world, ids[i], s.agents[i].goal.data()));
+        ok = NL_SUCCEEDED(nl_agent_add(world, &agent, &ids[i])) &&
+             NL_SUCCEEDED(nl_agent_set_destination(world, ids[i], s.agents[i].goal.data()));
     }
-    if (!ok) std::fprintf(stderr, "navlink-bench-crowds: %s: NavLink: %s\n", s.name.c_str(), nl_get_last_error_message());
+    if (!ok)
+        std::fprintf(stderr, "navlink-bench-crowds: %s: NavLink: %s\n", s.name.c_str(), nl_get_last_error_message());
     std::vector<float> positions(3 * n), velocities(3 * n);
     std::vector<int> says(n, 0);
     std::vector<nl_agent_info> infos(n, nl_agent_info_init());
@@ -228,7 +232,8 @@ bool run_detour_crowd(nl::bench::RecastLevel& level, const CrowdScenario& s, Tal
         dtPolyRef ref = 0, goal = 0;
         detour.query->findNearestPoly(s.agents[i].start.data(), kHalfExtents, &filter, &ref, nearest);
         detour.query->findNearestPoly(s.agents[i].goal.data(), kHalfExtents, &filter, &goal, target);
-        ok = ref && goal && crowd->addAgent(nearest, &params) == int(i) && crowd->requestMoveTarget(int(i), goal, target);
+        ok = ref && goal && crowd->addAgent(nearest, &params) == int(i) &&
+             crowd->requestMoveTarget(int(i), goal, target);
     }
     if (!ok) std::fprintf(stderr, "navlink-bench-crowds: %s: DetourCrowd would not take the agents\n", s.name.c_str());
     std::vector<float> positions(3 * n), velocities(3 * n);
@@ -250,9 +255,11 @@ std::string figure(float value, const char* format) {
 }
 
 void print(const char* side, const Outcome& o) {
-    std::printf("  %-11s %3d/%-3d arrived %3d stuck  all_by %6s s  deepest %.3f m  mean %.3f m  flow %5s /m/s  %6.2f us/agent-step\n",
-                side, o.arrived, o.agents, o.stuck, figure(o.all_by, "%.1f").c_str(), double(o.deepest), double(o.mean),
-                figure(o.flow, "%.2f").c_str(), o.us_step);
+    std::printf(
+        "  %-11s %3d/%-3d arrived %3d stuck  all_by %6s s  deepest %.3f m  mean %.3f m  flow %5s /m/s  %6.2f "
+        "us/agent-step\n",
+        side, o.arrived, o.agents, o.stuck, figure(o.all_by, "%.1f").c_str(), double(o.deepest), double(o.mean),
+        figure(o.flow, "%.2f").c_str(), o.us_step);
 }
 
 struct Case {
@@ -275,7 +282,14 @@ struct LevelTally {
     long overlaps = 0;
     float deepest = 0.0f;
 
-    LevelTally(size_t agents, float r, float h) : n(agents), radius(r), height(h), arrivals(agents, 0), best(agents, 1e9f), since(agents, 0.0f), stuck(agents, 0) {}
+    LevelTally(size_t agents, float r, float h)
+        : n(agents),
+          radius(r),
+          height(h),
+          arrivals(agents, 0),
+          best(agents, 1e9f),
+          since(agents, 0.0f),
+          stuck(agents, 0) {}
 
     // A new goal for agent i at `now`: its progress is measured afresh.
     void retarget(size_t i, float now) { best[i] = 1e9f, since[i] = now; }
@@ -302,13 +316,16 @@ struct LevelTally {
     void print(const char* side, double total_ms, int steps) const {
         long total = 0, never = 0;
         for (const long a : arrivals) total += a, never += a == 0;
-        std::printf("  %-11s %6ld arrivals %4ld/%-4zu never arrived %4ld stuck  deepest %.3f m  mean %.3f m  %6.2f us/agent-step\n",
-                    side, total, never, n, long(std::count(stuck.begin(), stuck.end(), 1)), double(deepest),
-                    overlaps ? overlap_sum / double(overlaps) : 0.0, 1000.0 * total_ms / double(steps) / double(n));
+        std::printf(
+            "  %-11s %6ld arrivals %4ld/%-4zu never arrived %4ld stuck  deepest %.3f m  mean %.3f m  %6.2f "
+            "us/agent-step\n",
+            side, total, never, n, long(std::count(stuck.begin(), stuck.end(), 1)), double(deepest),
+            overlaps ? overlap_sum / double(overlaps) : 0.0, 1000.0 * total_ms / double(steps) / double(n));
     }
 };
 
-void run_level(nl::bench::RecastLevel& level, float cover, float seconds, int threads, float give_up, bool navlink_only) {
+void run_level(nl::bench::RecastLevel& level, float cover, float seconds, int threads, float give_up,
+               bool navlink_only) {
     nl::bench::Destinations where;
     where.pm = level.solo.polygons.get();
     where.polygons = nl::bench::largest_connected_polygons(*level.solo.polygons);
@@ -317,19 +334,22 @@ void run_level(nl::bench::RecastLevel& level, float cover, float seconds, int th
     const size_t n = size_t(std::lround(cover * where.area() / (M_PI * r * r)));
     if (n < 2) return;
     const int steps = int(seconds / kDt);
-    std::printf("%s, %.0f%% covered (%zu agents, %.0f s, random destinations, a new one on arrival; NavLink's give up after "
-                "%.0f s in counterflow)\n",
-                level.name.c_str(), double(100 * cover), n, double(seconds), double(give_up));
+    std::printf(
+        "%s, %.0f%% covered (%zu agents, %.0f s, random destinations, a new one on arrival; NavLink's give up after "
+        "%.0f s in counterflow)\n",
+        level.name.c_str(), double(100 * cover), n, double(seconds), double(give_up));
     std::vector<float> positions(3 * n), velocities(3 * n), goals(3 * n);
     std::vector<uint32_t> trips(n, 1);
-    {   // NavLink
+    {  // NavLink
         nl_world_def def = nl_default_world_def();
         def.worker_count = threads;
         def.path_worker_count = 0;
         nl_world* world = nullptr;
         nl_navmesh_id navmesh{};
         uint32_t polygons = 0;
-        if (NL_FAILED(nl_world_create(&def, &world)) || !nl::bench::add_navlink_navmesh(world, level, &navmesh, &polygons)) return;
+        if (NL_FAILED(nl_world_create(&def, &world)) ||
+            !nl::bench::add_navlink_navmesh(world, level, &navmesh, &polygons))
+            return;
         std::vector<nl_agent_id> ids(n);
         LevelTally tally(n, r, level.agent.height);
         auto send = [&](size_t i, float now) {
@@ -367,7 +387,7 @@ void run_level(nl::bench::RecastLevel& level, float cover, float seconds, int th
         nl_world_destroy(world);
         tally.print("NavLink", total, steps);
     }
-    if (!navlink_only) {   // DetourCrowd, arriving within 0.1 m of its target (it has no arrival of its own)
+    if (!navlink_only) {  // DetourCrowd, arriving within 0.1 m of its target (it has no arrival of its own)
         nl::bench::DetourMesh detour;
         if (!nl::bench::build_detour(level, detour)) return;
         dtCrowd* crowd = dtAllocCrowd();
@@ -443,8 +463,10 @@ int main(int argc, char** argv) {
             std::istringstream list(argv[++i]);
             for (std::string percent; std::getline(list, percent, ',');) covers.push_back(std::stof(percent) / 100.0f);
         } else {
-            std::fprintf(stderr, "usage: navlink-bench-crowds [--threads 1|2] [--only NAME] [--seconds S] [--covers P,P,...] [--give-up G] "
-                                 "[--navlink-only] [LEVEL.obj...]\n");
+            std::fprintf(stderr,
+                         "usage: navlink-bench-crowds [--threads 1|2] [--only NAME] [--seconds S] [--covers P,P,...] "
+                         "[--give-up G] "
+                         "[--navlink-only] [LEVEL.obj...]\n");
             return 2;
         }
     }
@@ -469,16 +491,18 @@ int main(int argc, char** argv) {
         c.scenario.max_acceleration = 2.7f;
         cases.push_back(c);
     }
-    std::printf("navlink-bench-crowds: NavLink on %d thread%s against DetourCrowd, steps of 1/30 s, bodies of radius 0.6 m "
-                "unless said\n",
-                threads, threads == 1 ? "" : "s");
+    std::printf(
+        "navlink-bench-crowds: NavLink on %d thread%s against DetourCrowd, steps of 1/30 s, bodies of radius 0.6 m "
+        "unless said\n",
+        threads, threads == 1 ? "" : "s");
     int failures = 0;
     for (Case& c : cases) {
         const CrowdScenario& s = c.scenario;
         if (!only.empty() && s.name.find(only) == std::string::npos) continue;
         nl::levelgen::GeneratedLevel geometry;
         for (const auto& [lo, hi] : s.boxes) geometry.add_box({{lo.x(), lo.y(), lo.z()}, {hi.x(), hi.y(), hi.z()}});
-        nl::bench::RecastLevel level = nl::bench::build_recast_level(s.name, geometry.positions, geometry.indices, s.radius, c.cell_size);
+        nl::bench::RecastLevel level =
+            nl::bench::build_recast_level(s.name, geometry.positions, geometry.indices, s.radius, c.cell_size);
         Tally nl_tally(s, c.door), dc_tally(s, c.door);
         double dc_ms = 0.0;
         if (!run_navlink(level, s, threads, nl_tally) || !run_detour_crowd(level, s, dc_tally, dc_ms)) {
@@ -486,7 +510,8 @@ int main(int argc, char** argv) {
             continue;
         }
         const int steps = int(s.seconds / kDt);
-        const Outcome nl_outcome = nl_tally.finish(nl_tally.out.us_step, steps), dc_outcome = dc_tally.finish(dc_ms, steps);
+        const Outcome nl_outcome = nl_tally.finish(nl_tally.out.us_step, steps),
+                      dc_outcome = dc_tally.finish(dc_ms, steps);
         std::printf("%s (%zu agents, %.0f s)\n", s.name.c_str(), s.agents.size(), double(s.seconds));
         print("NavLink", nl_outcome);
         print("DetourCrowd", dc_outcome);

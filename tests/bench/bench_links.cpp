@@ -39,7 +39,7 @@ bool g_stages = false;
 // A level's geometry, from an OBJ file or generated.
 struct Source {
     std::string name;
-    std::string obj_path;                // empty: use `generated`
+    std::string obj_path;  // empty: use `generated`
     nl::levelgen::GeneratedLevel generated;
 };
 
@@ -63,7 +63,8 @@ bool load(const Source& source, int workers, World& out, uint32_t& triangles) {
     if (NL_FAILED(nl_world_create(&def, &out.world))) return fail(source, "world");
     nl_mesh_id mesh{};
     if (!source.obj_path.empty()) {
-        if (NL_FAILED(nl_mesh_add_obj_file(out.world, source.obj_path.c_str(), nullptr, &mesh))) return fail(source, "load");
+        if (NL_FAILED(nl_mesh_add_obj_file(out.world, source.obj_path.c_str(), nullptr, &mesh)))
+            return fail(source, "load");
     } else {
         nl_mesh_def def_mesh = nl_default_mesh_def();
         def_mesh.vertices = source.generated.positions.data();
@@ -79,7 +80,9 @@ bool load(const Source& source, int workers, World& out, uint32_t& triangles) {
     return true;
 }
 
-bool bits_equal(const nl::Vec3& a, const nl::Vec3& b) { return std::memcmp(a.data(), b.data(), 3 * sizeof(float)) == 0; }
+bool bits_equal(const nl::Vec3& a, const nl::Vec3& b) {
+    return std::memcmp(a.data(), b.data(), 3 * sizeof(float)) == 0;
+}
 bool bits_equal(float a, float b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 
 // What the reference must reproduce: count, kinds, ends bit for bit, bidirectional flags, in order.
@@ -121,10 +124,11 @@ Generation generate(const nl::NavMesh& navmesh, nl_world& world, nl::GenerationM
     for (int run = 0; run < runs; ++run) {
         nl::LinkGenerationReport report;
         const double start = nl::samples::now_ms();
-        std::vector<nl::Link> links = nl::generate_links(navmesh, world.core->level(), world.core->tasks(), settings, method, report,
-                                                         [](float, const char*) { return true; });
+        std::vector<nl::Link> links = nl::generate_links(navmesh, world.core->level(), world.core->tasks(), settings,
+                                                         method, report, [](float, const char*) { return true; });
         const double ms = nl::samples::now_ms() - start;
-        if (run > 0 && !identical(links, best.links)) throw std::runtime_error("two runs of the same generation differ");
+        if (run > 0 && !identical(links, best.links))
+            throw std::runtime_error("two runs of the same generation differ");
         if (ms < best.ms) {
             best.ms = ms;
             best.report = report;
@@ -151,7 +155,8 @@ uint64_t fingerprint(const std::vector<nl::Link>& links) {
         mix(flags, sizeof flags);
         mix(&l.cost_modifier, sizeof l.cost_modifier);
         mix(&l.user_data, sizeof l.user_data);
-        const float req[4] = {l.requirements.gap, l.requirements.rise, l.requirements.drop, l.requirements.clearance_width};
+        const float req[4] = {l.requirements.gap, l.requirements.rise, l.requirements.drop,
+                              l.requirements.clearance_width};
         mix(req, sizeof req);
         mix(&l.requirements.abilities, sizeof l.requirements.abilities);
         mix(&l.start_polygon, sizeof l.start_polygon);
@@ -163,15 +168,18 @@ uint64_t fingerprint(const std::vector<nl::Link>& links) {
 void print_stages(const std::string& level, const char* what, const Generation& b) {
     if (!g_stages) return;
     const nl::LinkGenerationReport& r = b.report;
-    std::fprintf(stderr,
-                 "  %s %s: total %.2f ms = edges %.2f + takeoff %.2f + jumps %.2f + drops %.2f + merge %.2f | groups %u "
-                 "takeoffs %u jump_candidates %u drop_candidates %u rays %llu box_queries %llu | rejected distance %u rise %u angle %u "
-                 "no_landing %u clearance %u duplicate %u wall %u not_ledge %u | links fingerprint %016llx\n",
-                 level.c_str(), what, r.milliseconds_total, r.milliseconds_edges, r.milliseconds_takeoff,
-                 r.milliseconds_jumps, r.milliseconds_drops, r.milliseconds_merge, r.groups, r.takeoff_points,
-                 r.jump_candidates, r.drop_candidates, static_cast<unsigned long long>(r.rays_cast), static_cast<unsigned long long>(r.box_queries), r.rejected_distance,
-                 r.rejected_rise, r.rejected_angle, r.rejected_no_landing, r.rejected_clearance, r.rejected_duplicate,
-                 r.rejected_wall, r.rejected_not_ledge, static_cast<unsigned long long>(fingerprint(b.links)));
+    std::fprintf(
+        stderr,
+        "  %s %s: total %.2f ms = edges %.2f + takeoff %.2f + jumps %.2f + drops %.2f + merge %.2f | groups %u "
+        "takeoffs %u jump_candidates %u drop_candidates %u rays %llu box_queries %llu | rejected distance %u rise %u "
+        "angle %u "
+        "no_landing %u clearance %u duplicate %u wall %u not_ledge %u | links fingerprint %016llx\n",
+        level.c_str(), what, r.milliseconds_total, r.milliseconds_edges, r.milliseconds_takeoff, r.milliseconds_jumps,
+        r.milliseconds_drops, r.milliseconds_merge, r.groups, r.takeoff_points, r.jump_candidates, r.drop_candidates,
+        static_cast<unsigned long long>(r.rays_cast), static_cast<unsigned long long>(r.box_queries),
+        r.rejected_distance, r.rejected_rise, r.rejected_angle, r.rejected_no_landing, r.rejected_clearance,
+        r.rejected_duplicate, r.rejected_wall, r.rejected_not_ledge,
+        static_cast<unsigned long long>(fingerprint(b.links)));
 }
 
 bool measure(const Source& source) {
@@ -198,10 +206,11 @@ bool measure(const Source& source) {
         const Generation reference = generate(*navmesh, *one.world, nl::GenerationMethod::BruteForce, 1);
         print_stages(source.name, "all pairs", reference);
         const bool same = same_link_set(reference.links, t1.links) && identical(t1.links, t2.links);
-        std::printf("level=%s tris=%u edges=%u samples=%u jump=%u drop=%u generate_ms_1t=%.1f generate_ms_2t=%.1f "
-                    "bruteforce_ms=%.1f same=%s\n",
-                    source.name.c_str(), triangles, t1.report.edges, t1.report.samples, t1.report.jump_links,
-                    t1.report.drop_links, t1.ms, t2.ms, reference.ms, same ? "yes" : "no");
+        std::printf(
+            "level=%s tris=%u edges=%u samples=%u jump=%u drop=%u generate_ms_1t=%.1f generate_ms_2t=%.1f "
+            "bruteforce_ms=%.1f same=%s\n",
+            source.name.c_str(), triangles, t1.report.edges, t1.report.samples, t1.report.jump_links,
+            t1.report.drop_links, t1.ms, t2.ms, reference.ms, same ? "yes" : "no");
         std::fflush(stdout);
         return same;
     } catch (const std::exception& e) {

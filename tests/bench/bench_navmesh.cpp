@@ -67,9 +67,11 @@ bool measure(const char* path) {
     }
     size_t found = 0;
     for (const nl_nav_point& p : out) found += p.found;
-    std::printf("level=%s tris=%u polys=%u vertices=%u portals=%u boundary_edges=%u build_ms=%.1f locate_us=%.3f found_pct=%.0f\n",
-                std::filesystem::path(path).stem().c_str(), mesh_info.triangle_count, info.polygon_count, info.vertex_count,
-                info.portal_count, info.boundary_edge_count, best_ms, 1000.0 * locate_ms / count, 100.0 * found / count);
+    std::printf(
+        "level=%s tris=%u polys=%u vertices=%u portals=%u boundary_edges=%u build_ms=%.1f locate_us=%.3f "
+        "found_pct=%.0f\n",
+        std::filesystem::path(path).stem().c_str(), mesh_info.triangle_count, info.polygon_count, info.vertex_count,
+        info.portal_count, info.boundary_edge_count, best_ms, 1000.0 * locate_ms / count, 100.0 * found / count);
     nl_world_destroy(world);
     return true;
 }

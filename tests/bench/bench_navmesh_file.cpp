@@ -31,7 +31,7 @@ namespace {
 
 struct Level {
     std::string name;
-    std::string obj;                 // a file, or
+    std::string obj;                         // a file, or
     nl::levelgen::GeneratedLevel generated;  // triangles made here
 };
 
@@ -62,13 +62,15 @@ uint32_t link_count(nl_world* world, nl_navmesh_id navmesh) {
 
 bool measure(const Level& level) {
     auto failed = [&](const char* what) {
-        std::fprintf(stderr, "navlink-bench-navmesh-file: %s: %s: %s\n", level.name.c_str(), what, nl_get_last_error_message());
+        std::fprintf(stderr, "navlink-bench-navmesh-file: %s: %s: %s\n", level.name.c_str(), what,
+                     nl_get_last_error_message());
         return false;
     };
     // Detour's data for the same polygon mesh.
     nl::bench::RecastLevel recast =
-        level.obj.empty() ? nl::bench::build_recast_level(level.name, level.generated.positions, level.generated.indices)
-                          : nl::bench::build_recast_level_from_obj(level.obj.c_str());
+        level.obj.empty()
+            ? nl::bench::build_recast_level(level.name, level.generated.positions, level.generated.indices)
+            : nl::bench::build_recast_level_from_obj(level.obj.c_str());
     nl::bench::DetourMesh detour;
     if (!nl::bench::build_detour(recast, detour)) {
         std::fprintf(stderr, "navlink-bench-navmesh-file: %s: Detour refused the polygon mesh\n", level.name.c_str());
@@ -77,7 +79,8 @@ bool measure(const Level& level) {
 
     nl_world* world = nullptr;
     nl_world* game = nullptr;
-    if (NL_FAILED(nl_world_create(nullptr, &world)) || NL_FAILED(nl_world_create(nullptr, &game))) return failed("world");
+    if (NL_FAILED(nl_world_create(nullptr, &world)) || NL_FAILED(nl_world_create(nullptr, &game)))
+        return failed("world");
     if (!add_level(world, level)) return failed("level");
     const int polygons = recast.solo.polygons->npolys;
     const int runs = level.generated.triangle_count() > 1000000 ? 1 : polygons < 1000 ? 20 : 3;
@@ -92,7 +95,8 @@ bool measure(const Level& level) {
         if (run > 0) nl_navmesh_remove(world, navmesh);
         navmesh = id;
     }
-    if (NL_FAILED(nl_navmesh_generate_links(world, navmesh, nullptr, nullptr, nullptr, nullptr))) return failed("links");
+    if (NL_FAILED(nl_navmesh_generate_links(world, navmesh, nullptr, nullptr, nullptr, nullptr)))
+        return failed("links");
     const std::vector<uint8_t> file = saved(world, navmesh);
     if (file.empty()) return failed("save");
 
@@ -114,9 +118,10 @@ bool measure(const Level& level) {
                       link_count(world, navmesh) == link_count(game, loaded) && saved(game, loaded) == file;
     const auto graph = game->core->navmeshes().path_graph(nl::Handle{loaded.index1, loaded.revision});
     const size_t memory = graph->navmesh().memory_bytes() + graph->link_index_bytes();
-    std::printf("%-18s %8u %6u %11zu %12d %11.3f %12zu %13.3f %9.1f %8.2f %9.4f %4s\n", level.name.c_str(), a.polygon_count,
-                link_count(world, navmesh), file.size(), detour.bytes, double(file.size()) / detour.bytes, memory,
-                double(memory) / detour.bytes, build_ms, load_ms, load_ms / build_ms, same ? "yes" : "NO");
+    std::printf("%-18s %8u %6u %11zu %12d %11.3f %12zu %13.3f %9.1f %8.2f %9.4f %4s\n", level.name.c_str(),
+                a.polygon_count, link_count(world, navmesh), file.size(), detour.bytes,
+                double(file.size()) / detour.bytes, memory, double(memory) / detour.bytes, build_ms, load_ms,
+                load_ms / build_ms, same ? "yes" : "NO");
     if (a.polygon_count != uint32_t(polygons))
         std::printf("  (note: Detour's data holds %d polygons, NavLink's navmesh %u)\n", polygons, a.polygon_count);
     nl_world_destroy(game);
@@ -141,18 +146,21 @@ int main(int argc, char** argv) {
         level.obj = argv[i];
         const char* slash = std::strrchr(argv[i], '/');
         level.name = slash ? slash + 1 : argv[i];
-        if (level.name.size() > 4 && level.name.compare(level.name.size() - 4, 4, ".obj") == 0) level.name.resize(level.name.size() - 4);
+        if (level.name.size() > 4 && level.name.compare(level.name.size() - 4, 4, ".obj") == 0)
+            level.name.resize(level.name.size() - 4);
         levels.push_back(std::move(level));
     }
     if (levels.empty()) {
         std::fprintf(stderr, "usage: navlink-bench-navmesh-file [--large N] LEVEL.obj...\n");
         return 2;
     }
-    std::printf("Baked navmesh files: bytes (of the file, and of the loaded navmesh plus link index in memory) against\n"
-                "Detour's navmesh data for the same Recast polygon mesh, load time against building the navmesh with\n"
-                "the Recast builder, in this run.\n");
+    std::printf(
+        "Baked navmesh files: bytes (of the file, and of the loaded navmesh plus link index in memory) against\n"
+        "Detour's navmesh data for the same Recast polygon mesh, load time against building the navmesh with\n"
+        "the Recast builder, in this run.\n");
     std::printf("%-18s %8s %6s %11s %12s %11s %12s %13s %9s %8s %9s %4s\n", "level", "polys", "links", "file_bytes",
-                "detour_bytes", "file/detour", "memory_bytes", "memory/detour", "build_ms", "load_ms", "load/build", "same");
+                "detour_bytes", "file/detour", "memory_bytes", "memory/detour", "build_ms", "load_ms", "load/build",
+                "same");
     bool ok = true;
     for (const Level& level : levels) {
         try {

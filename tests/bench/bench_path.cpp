@@ -66,7 +66,8 @@ float polyline_length(const float* xyz, int count) {
     for (int i = 1; i < count; ++i) {
         const float* a = xyz + 3 * (i - 1);
         const float* b = xyz + 3 * i;
-        length += std::sqrt((b[0] - a[0]) * (b[0] - a[0]) + (b[1] - a[1]) * (b[1] - a[1]) + (b[2] - a[2]) * (b[2] - a[2]));
+        length +=
+            std::sqrt((b[0] - a[0]) * (b[0] - a[0]) + (b[1] - a[1]) * (b[1] - a[1]) + (b[2] - a[2]) * (b[2] - a[2]));
     }
     return length;
 }
@@ -146,11 +147,13 @@ struct Exactness {
 // default costs, a path's cost is its length seen from above, what the funnel minimises.
 template <typename Request>
 Exactness exactness(const Level& level, Request request, std::vector<nl_path_point>& points) {
-    const auto graph = level.world->core->navmeshes().path_graph(nl::Handle{level.navmesh.index1, level.navmesh.revision});
+    const auto graph =
+        level.world->core->navmeshes().path_graph(nl::Handle{level.navmesh.index1, level.navmesh.revision});
     nl::PathQuery body;
     const nl_path_request_def sample = request(level, level.pairs[0]);
-    body.capabilities = nl::AgentCapabilities{sample.capabilities.max_jump_distance, sample.capabilities.max_jump_height,
-                                       sample.capabilities.max_drop_height, sample.capabilities.radius, sample.capabilities.abilities};
+    body.capabilities = nl::AgentCapabilities{sample.capabilities.max_jump_distance,
+                                              sample.capabilities.max_jump_height, sample.capabilities.max_drop_height,
+                                              sample.capabilities.radius, sample.capabilities.abilities};
     body.link_cost = sample.link_cost;
     const nl::test::ShortestPathReference reference(*graph, body);
     Exactness out;
@@ -172,8 +175,9 @@ Exactness exactness(const Level& level, Request request, std::vector<nl_path_poi
             ++out.missed;
             continue;
         }
-        const std::optional<double> cheapest = reference.length(nl::Vec3(result.start[0], result.start[1], result.start[2]),
-                                                                nl::Vec3(result.goal[0], result.goal[1], result.goal[2]));
+        const std::optional<double> cheapest =
+            reference.length(nl::Vec3(result.start[0], result.start[1], result.start[2]),
+                             nl::Vec3(result.goal[0], result.goal[1], result.goal[2]));
         if (!cheapest) continue;  // the reference finds no route (the search went where it sees none)
         ++out.pairs;
         // Without links, the length of the points themselves seen from above: measured here, apart
@@ -244,7 +248,8 @@ bool compare(const char* path, Level& level) {
             if (same_ends.complete) {
                 ++both_complete;
                 std::vector<float> corners(3 * count);
-                for (uint32_t k = 0; k < count; ++k) std::copy(points[k].position, points[k].position + 3, &corners[3 * k]);
+                for (uint32_t k = 0; k < count; ++k)
+                    std::copy(points[k].position, points[k].position + 3, &corners[3 * k]);
                 nl_length += polyline_length(corners.data(), int(count));  // as Detour's: straight between corners
                 nl_walked += result.length;
                 detour_length += same_ends.length;
@@ -263,14 +268,18 @@ bool compare(const char* path, Level& level) {
     const nl::Handle handle{level.navmesh.index1, level.navmesh.revision};
     const auto graph = level.world->core->navmeshes().path_graph(handle);
     const size_t nl_bytes = graph->navmesh().memory_bytes() + graph->link_index_bytes() + graph->search_index_bytes();
-    std::printf("level=%s polys=%u queries=%d nl_us=%.2f detour_us=%.2f ratio=%.2f complete=%d complete_ratio=%.2f rest_ratio=%.2f nl_len=%.4f detour_len=%.4f nl_walked=%.4f nl_bytes=%zu "
-                "detour_bytes=%d both_complete=%d nl_nodes=%.1f detour_nodes=%.1f exact_pairs=%d within_0.1%%=%.4f "
-                "worst_excess=%.4f%% exact_missed=%d",
-                level.name.c_str(), level.polygons, kPairs, 1000.0 * nl_ms / kPairs, 1000.0 * detour_ms / kPairs,
-                nl_ms / detour_ms, complete, nl_complete_ms / std::max(1e-12, detour_complete_ms),
-                (nl_ms - nl_complete_ms) / std::max(1e-12, detour_ms - detour_complete_ms), nl_length / std::max(1, both_complete), detour_length / std::max(1, both_complete),
-                nl_walked / std::max(1, both_complete), nl_bytes, detour.bytes, both_complete, nl_nodes / kPairs, detour_nodes / kPairs, walking.pairs,
-                double(walking.within) / std::max(1, walking.pairs), 100.0 * walking.worst_excess, walking.missed);
+    std::printf(
+        "level=%s polys=%u queries=%d nl_us=%.2f detour_us=%.2f ratio=%.2f complete=%d complete_ratio=%.2f "
+        "rest_ratio=%.2f nl_len=%.4f detour_len=%.4f nl_walked=%.4f nl_bytes=%zu "
+        "detour_bytes=%d both_complete=%d nl_nodes=%.1f detour_nodes=%.1f exact_pairs=%d within_0.1%%=%.4f "
+        "worst_excess=%.4f%% exact_missed=%d",
+        level.name.c_str(), level.polygons, kPairs, 1000.0 * nl_ms / kPairs, 1000.0 * detour_ms / kPairs,
+        nl_ms / detour_ms, complete, nl_complete_ms / std::max(1e-12, detour_complete_ms),
+        (nl_ms - nl_complete_ms) / std::max(1e-12, detour_ms - detour_complete_ms),
+        nl_length / std::max(1, both_complete), detour_length / std::max(1, both_complete),
+        nl_walked / std::max(1, both_complete), nl_bytes, detour.bytes, both_complete, nl_nodes / kPairs,
+        detour_nodes / kPairs, walking.pairs, double(walking.within) / std::max(1, walking.pairs),
+        100.0 * walking.worst_excess, walking.missed);
     std::fflush(stdout);
 
     // With the level's generated links, for a body that takes them: costs (walking seen from above
@@ -281,8 +290,9 @@ bool compare(const char* path, Level& level) {
         NL_SUCCEEDED(nl_navmesh_generate_links(level.world, level.navmesh, nullptr, nullptr, nullptr, nullptr))) {
         nl_navmesh_get_links(level.world, level.navmesh, nullptr, 0, &links);
         const Exactness linked = exactness(level, jumper_request_for, points);
-        std::printf(" links=%u linked_pairs=%d linked_within_0.1%%=%.4f linked_worst_excess=%.4f%% linked_missed=%d", links,
-                    linked.pairs, double(linked.within) / std::max(1, linked.pairs), 100.0 * linked.worst_excess, linked.missed);
+        std::printf(" links=%u linked_pairs=%d linked_within_0.1%%=%.4f linked_worst_excess=%.4f%% linked_missed=%d",
+                    links, linked.pairs, double(linked.within) / std::max(1, linked.pairs), 100.0 * linked.worst_excess,
+                    linked.missed);
     }
     std::printf("\n");
     std::fflush(stdout);
@@ -334,7 +344,9 @@ double queue_throughput(const Level& level, int workers) {
         for (int i = 0; i < requests; ++i) {
             nl_path_request_def r = request_for(level, level.pairs[i % kPairs]);
             r.navmesh = navmesh;
-            r.callback = [](void*, nl_path_ticket, nl_path_outcome) { finished.fetch_add(1, std::memory_order_release); };
+            r.callback = [](void*, nl_path_ticket, nl_path_outcome) {
+                finished.fetch_add(1, std::memory_order_release);
+            };
             nl_path_request(world, &r, &tickets[i]);
         }
         while (finished.load(std::memory_order_acquire) < requests) std::this_thread::yield();
@@ -369,8 +381,8 @@ int main(int argc, char** argv) {
     const Level& largest = *std::max_element(levels.begin(), levels.end(),
                                              [](const Level& a, const Level& b) { return a.polygons < b.polygons; });
     const double one = queue_throughput(largest, 1), two = queue_throughput(largest, 2);
-    std::printf("queue level=%s requests=%d workers1_per_s=%.0f workers2_per_s=%.0f speedup=%.2f\n", largest.name.c_str(),
-                4 * kPairs, one, two, two / one);
+    std::printf("queue level=%s requests=%d workers1_per_s=%.0f workers2_per_s=%.0f speedup=%.2f\n",
+                largest.name.c_str(), 4 * kPairs, one, two, two / one);
     for (Level& level : levels) nl_world_destroy(level.world);
     return 0;
 }

@@ -86,7 +86,8 @@ void reachability(const nl::bench::RecastLevel& recast, nl_world* world, nl_navm
     filter.capabilities.radius = recast.agent.radius;
     for (int i = 0; i < kPairs; ++i) {
         Located a, b;
-        if (!locate(world, navmesh, *recast.solo.polygons, rng, a) || !locate(world, navmesh, *recast.solo.polygons, rng, b))
+        if (!locate(world, navmesh, *recast.solo.polygons, rng, a) ||
+            !locate(world, navmesh, *recast.solo.polygons, rng, b))
             continue;
         uint8_t reachable = 1;
         nl_navmesh_can_reach(world, navmesh, &filter, &a.polygon, &b.polygon, 1, &reachable);
@@ -116,8 +117,8 @@ void reachability(const nl::bench::RecastLevel& recast, nl_world* world, nl_navm
             nl_path_find(world, &def, &result, points.data(), uint32_t(points.size()), &count);
             const double t2 = nl::samples::now_ms();
             int corridor_count = 0;
-            detour.query->findPath(base | a.polygon, base | b.polygon, a.point, b.point, &detour_filter, corridor.data(),
-                                   &corridor_count, kMaxPolys);
+            detour.query->findPath(base | a.polygon, base | b.polygon, a.point, b.point, &detour_filter,
+                                   corridor.data(), &corridor_count, kMaxPolys);
             const double t3 = nl::samples::now_ms();
             reach_best[i] = std::min(reach_best[i], t1 - t0);
             find_best[i] = std::min(find_best[i], t2 - t1);
@@ -127,10 +128,11 @@ void reachability(const nl::bench::RecastLevel& recast, nl_world* world, nl_navm
     double reach = 0.0, find = 0.0, detour_ms = 0.0;
     for (size_t i = 0; i < n; ++i) reach += reach_best[i], find += find_best[i], detour_ms += detour_best[i];
     const double per = n ? 1000.0 / double(n) : 0.0;
-    std::printf("reach level=%s polys=%u islands=%u map_build_ms=%.3f unreachable_pairs=%zu reach_us=%.3f path_find_us=%.2f "
-                "detour_find_path_us=%.2f path_find_ratio=%.4f detour_ratio=%.4f\n",
-                recast.name.c_str(), polygons, islands, build_ms, n, reach * per, find * per, detour_ms * per,
-                find > 0 ? reach / find : 0.0, detour_ms > 0 ? reach / detour_ms : 0.0);
+    std::printf(
+        "reach level=%s polys=%u islands=%u map_build_ms=%.3f unreachable_pairs=%zu reach_us=%.3f path_find_us=%.2f "
+        "detour_find_path_us=%.2f path_find_ratio=%.4f detour_ratio=%.4f\n",
+        recast.name.c_str(), polygons, islands, build_ms, n, reach * per, find * per, detour_ms * per,
+        find > 0 ? reach / find : 0.0, detour_ms > 0 ? reach / detour_ms : 0.0);
     std::fflush(stdout);
 }
 
@@ -188,7 +190,8 @@ void raycasts(const nl::bench::RecastLevel& recast, nl_world* world, nl_navmesh_
             if (path_count > 0) detour.query->getPolyHeight(path[path_count - 1], point, &height);
         }
         const double t1 = nl::samples::now_ms();
-        nl_navmesh_raycast(world, navmesh, nullptr, batch.data(), uint32_t(batch.size()), hits.data(), crossed.data(), 64);
+        nl_navmesh_raycast(world, navmesh, nullptr, batch.data(), uint32_t(batch.size()), hits.data(), crossed.data(),
+                           64);
         const double t2 = nl::samples::now_ms();
         for (size_t i = 0; i < rays.size(); ++i)
             nl_navmesh_raycast(world, navmesh, nullptr, &batch[i], 1, &hits[i], &crossed[64 * i], 64);
@@ -203,14 +206,16 @@ void raycasts(const nl::bench::RecastLevel& recast, nl_world* world, nl_navmesh_
         const bool detour_arrived = detour_t[i] == FLT_MAX;
         const float dx = rays[i].end[0] - rays[i].start.point[0], dz = rays[i].end[2] - rays[i].start.point[2];
         const float ray_length = std::sqrt(dx * dx + dz * dz);
-        if (detour_arrived ? !hits[i].hit : hits[i].hit && std::fabs(detour_t[i] - hits[i].t) * ray_length < 0.01f) ++agree;
+        if (detour_arrived ? !hits[i].hit : hits[i].hit && std::fabs(detour_t[i] - hits[i].t) * ray_length < 0.01f)
+            ++agree;
     }
     const double per = 1000.0 / double(rays.size());
-    std::printf("raycast level=%s rays=%zu nl_batch_us=%.3f nl_single_us=%.3f detour_us=%.3f detour_with_height_us=%.3f "
-                "ratio=%.3f height_ratio=%.3f single_height_ratio=%.3f agree=%.4f\n",
-                recast.name.c_str(), rays.size(), nl_batch * per, nl_single * per, detour_ms * per, detour_height_ms * per,
-                nl_batch / detour_ms, nl_batch / detour_height_ms, nl_single / detour_height_ms,
-                double(agree) / double(rays.size()));
+    std::printf(
+        "raycast level=%s rays=%zu nl_batch_us=%.3f nl_single_us=%.3f detour_us=%.3f detour_with_height_us=%.3f "
+        "ratio=%.3f height_ratio=%.3f single_height_ratio=%.3f agree=%.4f\n",
+        recast.name.c_str(), rays.size(), nl_batch * per, nl_single * per, detour_ms * per, detour_height_ms * per,
+        nl_batch / detour_ms, nl_batch / detour_height_ms, nl_single / detour_height_ms,
+        double(agree) / double(rays.size()));
     std::fflush(stdout);
 }
 
@@ -306,10 +311,11 @@ void large_grid(int side) {
         reach_ms = std::min(reach_ms, t1 - t0);
         search_ms = std::min(search_ms, t2 - t1);
     }
-    std::printf("reach level=grid%d polys=%u islands=%u map_build_ms=%.2f reachable=%u reach_us=%.3f "
-                "path_find_us=%.1f path_find_outcome=%u nodes=%u\n",
-                side, def.polygon_count, islands, build_ms, reachable, 1000.0 * reach_ms, 1000.0 * search_ms,
-                result.outcome, result.nodes_visited);
+    std::printf(
+        "reach level=grid%d polys=%u islands=%u map_build_ms=%.2f reachable=%u reach_us=%.3f "
+        "path_find_us=%.1f path_find_outcome=%u nodes=%u\n",
+        side, def.polygon_count, islands, build_ms, reachable, 1000.0 * reach_ms, 1000.0 * search_ms, result.outcome,
+        result.nodes_visited);
     std::fflush(stdout);
     nl_world_destroy(world);
 }
@@ -324,7 +330,8 @@ bool bench_level(const char* path) {
     nl_navmesh_id navmesh{};
     uint32_t polygons = 0;
     nl::bench::DetourMesh detour;
-    const bool ok = nl::bench::add_navlink_navmesh(world, recast, &navmesh, &polygons) && nl::bench::build_detour(recast, detour);
+    const bool ok =
+        nl::bench::add_navlink_navmesh(world, recast, &navmesh, &polygons) && nl::bench::build_detour(recast, detour);
     if (ok) {
         reachability(recast, world, navmesh, polygons, detour);
         raycasts(recast, world, navmesh, detour);

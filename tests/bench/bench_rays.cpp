@@ -73,13 +73,15 @@ bool measure(const char* path, uint32_t count) {
         std::vector<uint8_t> blocked(count);
         nl_world_cast_rays(world, batch.rays.data(), 1, hits.data());  // builds the BVH outside the timing
         closest[threads - 1] = best_ms([&] { nl_world_cast_rays(world, batch.rays.data(), count, hits.data()); });
-        occluded[threads - 1] = best_ms([&] { nl_world_segments_blocked(world, batch.segments.data(), count, blocked.data()); });
+        occluded[threads - 1] =
+            best_ms([&] { nl_world_segments_blocked(world, batch.segments.data(), count, blocked.data()); });
         nl_world_destroy(world);
     }
     auto mps = [&](double ms) { return count / ms / 1000.0; };
-    std::printf("level=%s tris=%u rays=%u closest_1t_mps=%.2f closest_2t_mps=%.2f occluded_1t_mps=%.2f occluded_2t_mps=%.2f\n",
-                std::filesystem::path(path).stem().c_str(), triangles, count, mps(closest[0]), mps(closest[1]),
-                mps(occluded[0]), mps(occluded[1]));
+    std::printf(
+        "level=%s tris=%u rays=%u closest_1t_mps=%.2f closest_2t_mps=%.2f occluded_1t_mps=%.2f occluded_2t_mps=%.2f\n",
+        std::filesystem::path(path).stem().c_str(), triangles, count, mps(closest[0]), mps(closest[1]),
+        mps(occluded[0]), mps(occluded[1]));
     return true;
 }
 

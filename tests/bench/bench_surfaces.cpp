@@ -181,7 +181,8 @@ struct Side {
         events.assign(count, nl_agent_event_init());
         if (count > 0) nl_world_get_agent_events(world, events.data(), count, &count);
         for (const nl_agent_event& e : events)
-            if (e.kind == NL_AGENT_EVENT_ARRIVED || e.kind == NL_AGENT_EVENT_FAILED) send(uint32_t(e.user_data), places);
+            if (e.kind == NL_AGENT_EVENT_ARRIVED || e.kind == NL_AGENT_EVENT_FAILED)
+                send(uint32_t(e.user_data), places);
     }
 
     // One frame: the move (moving side only: `t` set), then the step; each call's time added in ms.
@@ -276,8 +277,10 @@ bool run(const Platform& platform, uint32_t seed, const Options& o) {
             // Batch for batch, the order turning: a shared machine's interruptions fall on both alike.
             for (int side = 0; side < 2; ++side) {
                 for (int f = 0; f < o.frames; ++f) {
-                    if ((side + r) % 2 == 0) moving.frame(&t, places, move_ms, step_ms);
-                    else still.frame(nullptr, places, ignored, still_ms);
+                    if ((side + r) % 2 == 0)
+                        moving.frame(&t, places, move_ms, step_ms);
+                    else
+                        still.frame(nullptr, places, ignored, still_ms);
                 }
             }
             move_us.push_back(1000.0 * move_ms / o.frames);
@@ -313,7 +316,8 @@ bool run(const Platform& platform, uint32_t seed, const Options& o) {
     }
     int agree = 0;
     for (const auto& pair : pairs)
-        if (moving.find_path(&pair[0], &pair[3], result, points) && still.find_path(&pair[0], &pair[3], copy_result, copy_points))
+        if (moving.find_path(&pair[0], &pair[3], result, points) &&
+            still.find_path(&pair[0], &pair[3], copy_result, copy_points))
             agree += same_path(result, points, copy_result, copy_points);
     const Spread copy_path = nl::bench::spread(copy_us);
     row(platform.name, "path, moving", "-", nl::bench::spread(path_us), nan, copy_path.median);
@@ -365,15 +369,17 @@ bool run_links(const Platform& level, const Platform& platform, const Options& o
         level_us.push_back(1000.0 * (nl::samples::now_ms() - t0));
         level_links = report.jump_links + report.drop_links;
         t0 = nl::samples::now_ms();
-        if (NL_FAILED(nl_navmesh_generate_cross_links(ground.world, ground.navmesh, deck.navmesh, 0.25f, &settings, nullptr,
-                                                      nullptr, &report)))
+        if (NL_FAILED(nl_navmesh_generate_cross_links(ground.world, ground.navmesh, deck.navmesh, 0.25f, &settings,
+                                                      nullptr, nullptr, &report)))
             return fail(ground.name, "nl_navmesh_generate_cross_links");
         cross_us.push_back(1000.0 * (nl::samples::now_ms() - t0));
         cross_links = report.jump_links + report.drop_links;
     }
-    std::printf("# links: %s docked 1 m off the edge of %s (static, with dungeon.obj beside it): %u links of the level's own, %u between them; "
-                "/rebuild here is over the level's full generation\n",
-                platform.name.c_str(), level.name.c_str(), level_links, cross_links);
+    std::printf(
+        "# links: %s docked 1 m off the edge of %s (static, with dungeon.obj beside it): %u links of the level's own, "
+        "%u between them; "
+        "/rebuild here is over the level's full generation\n",
+        platform.name.c_str(), level.name.c_str(), level_links, cross_links);
     const Spread whole = nl::bench::spread(level_us);
     const double nan = std::nan("");
     row("links", "level, full", "-", whole, whole.median, nan);
@@ -411,9 +417,12 @@ int main(int argc, char** argv) {
         if (i + 1 >= argc) return usage();
         const char* value = argv[++i];
         const long n = std::strtol(value, nullptr, 10);
-        if (arg == "--repeats" && n >= 1 && n <= 1000) o.repeats = int(n);
-        else if (arg == "--frames" && n >= 1 && n <= 100000) o.frames = int(n);
-        else if (arg == "--paths" && n >= 1 && n <= 100000) o.paths = int(n);
+        if (arg == "--repeats" && n >= 1 && n <= 1000)
+            o.repeats = int(n);
+        else if (arg == "--frames" && n >= 1 && n <= 100000)
+            o.frames = int(n);
+        else if (arg == "--paths" && n >= 1 && n <= 100000)
+            o.paths = int(n);
         else if (arg == "--agents") {
             o.counts.clear();
             std::stringstream list(value);
@@ -428,11 +437,12 @@ int main(int argc, char** argv) {
             return usage();
         }
     }
-    std::printf("# repeats=%d frames=%d paths=%d; microseconds per call (min, median, max over the repeats); "
-                "/rebuild: median over the rebuild's; /static: median over the static copy's\n",
-                o.repeats, o.frames, o.paths);
-    std::printf("%-8s %-15s %6s %11s %11s %11s %9s %8s\n", "platform", "what", "agents", "min_us", "median_us", "max_us",
-                "/rebuild", "/static");
+    std::printf(
+        "# repeats=%d frames=%d paths=%d; microseconds per call (min, median, max over the repeats); "
+        "/rebuild: median over the rebuild's; /static: median over the static copy's\n",
+        o.repeats, o.frames, o.paths);
+    std::printf("%-8s %-15s %6s %11s %11s %11s %9s %8s\n", "platform", "what", "agents", "min_us", "median_us",
+                "max_us", "/rebuild", "/static");
     bool ok = true;
     uint32_t seed = 1;
     const std::vector<Platform> all = platforms();

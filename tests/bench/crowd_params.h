@@ -21,7 +21,8 @@ inline dtCrowdAgentParams detour_crowd_agent(const RecastLevel& level) {
     params.collisionQueryRange = params.radius * 12.0f;
     params.pathOptimizationRange = params.radius * 30.0f;
     params.separationWeight = 2.0f;  // unused: separation is off, as in RecastDemo's default
-    params.updateFlags = DT_CROWD_ANTICIPATE_TURNS | DT_CROWD_OPTIMIZE_VIS | DT_CROWD_OPTIMIZE_TOPO | DT_CROWD_OBSTACLE_AVOIDANCE;
+    params.updateFlags =
+        DT_CROWD_ANTICIPATE_TURNS | DT_CROWD_OPTIMIZE_VIS | DT_CROWD_OPTIMIZE_TOPO | DT_CROWD_OBSTACLE_AVOIDANCE;
     params.obstacleAvoidanceType = 0;
     params.queryFilterType = 0;
     return params;

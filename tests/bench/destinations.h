@@ -33,7 +33,8 @@ struct Destinations {
             int n = 0;
             while (n < pm->nvp && poly[n] != RC_MESH_NULL_IDX) ++n;
             for (int k = 1; k + 1 < n; ++k) {
-                const unsigned short *a = &pm->verts[3 * poly[0]], *b = &pm->verts[3 * poly[k]], *c = &pm->verts[3 * poly[k + 1]];
+                const unsigned short *a = &pm->verts[3 * poly[0]], *b = &pm->verts[3 * poly[k]],
+                                     *c = &pm->verts[3 * poly[k + 1]];
                 const double abx = b[0] - a[0], abz = b[2] - a[2], acx = c[0] - a[0], acz = c[2] - a[2];
                 total += 0.5 * std::fabs(abx * acz - abz * acx) * pm->cs * pm->cs;
             }

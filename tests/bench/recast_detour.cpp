@@ -133,7 +133,8 @@ std::vector<int> largest_connected_polygons(const rcPolyMesh& pm) {
             const unsigned short* poly = &pm.polys[size_t(p) * 2 * pm.nvp];
             for (int j = 0; j < pm.nvp && poly[j] != RC_MESH_NULL_IDX; ++j) {
                 const unsigned short next = poly[pm.nvp + j];
-                if (next == RC_MESH_NULL_IDX || (next & 0x8000) || part[next] >= 0) continue;  // no neighbour, or a tile portal
+                if (next == RC_MESH_NULL_IDX || (next & 0x8000) || part[next] >= 0)
+                    continue;  // no neighbour, or a tile portal
                 part[next] = id;
                 stack.push_back(next);
             }

@@ -52,8 +52,7 @@ bool build_detour(RecastLevel& level, DetourMesh& out);
 // Adds the polygon mesh to `world` as a navmesh of the level's agent type; false (with NavLink's
 // last error on stderr) when nl_navmesh_add fails or NavLink keeps another polygon count than Recast
 // made (the benchmarks compare polygon for polygon).
-bool add_navlink_navmesh(nl_world* world, const RecastLevel& level, nl_navmesh_id* out_navmesh,
-                         uint32_t* out_polygons);
+bool add_navlink_navmesh(nl_world* world, const RecastLevel& level, nl_navmesh_id* out_navmesh, uint32_t* out_polygons);
 
 // A random point of polygon `polygon` (a random fan triangle, a uniform point in it), half a metre
 // up so that both sides have to snap it down.

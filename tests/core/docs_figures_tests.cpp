@@ -43,15 +43,18 @@ double stated(const std::string& file, const std::string& pattern) {
 }  // namespace
 
 TEST_CASE("the figures the documentation states are the code's") {
-    CHECK(stated("docs/pathfinding.md", R"(cancellation is checked every (\d+) expansions)") == nl::kCancelCheckExpansions);
+    CHECK(stated("docs/pathfinding.md", R"(cancellation is checked every (\d+) expansions)") ==
+          nl::kCancelCheckExpansions);
     CHECK(stated("docs/architecture.md", R"(at most (\d+) at once)") == nl::HandleTag::kCount);
-    CHECK(stated("docs/queries.md", R"(When links join more than (\d+) islands)") == nl::ReachabilityMap::kMaxClosureIslands);
-    const double closure_mib = double(nl::ReachabilityMap::kMaxClosureIslands) * nl::ReachabilityMap::kMaxClosureIslands / 8.0 /
-                               (1024.0 * 1024.0);
+    CHECK(stated("docs/queries.md", R"(When links join more than (\d+) islands)") ==
+          nl::ReachabilityMap::kMaxClosureIslands);
+    const double closure_mib = double(nl::ReachabilityMap::kMaxClosureIslands) *
+                               nl::ReachabilityMap::kMaxClosureIslands / 8.0 / (1024.0 * 1024.0);
     CHECK(stated("docs/queries.md", R"(the closure would pass (\d+) MiB)") == closure_mib);
     CHECK(stated("sdk/path/reachability.h", R"(kMaxClosureIslands\^2 bits \((\d+) MiB\))") == closure_mib);
     CHECK(stated("capi/include/navlink/queries.h", R"(so thin that (\d+) tries per point)") == nl::kTriesPerPoint);
-    CHECK(stated("capi/include/navlink/navmesh.h", R"(may have at most (\d+) detail vertices)") == nl::kMaxDetailVertices);
+    CHECK(stated("capi/include/navlink/navmesh.h", R"(may have at most (\d+) detail vertices)") ==
+          nl::kMaxDetailVertices);
     CHECK(stated("capi/include/navlink/navmesh.h", R"(besides its corners, and (\d+) detail triangles)") ==
           nl::kMaxDetailTriangles);
 }
@@ -82,8 +85,10 @@ TEST_CASE("a generated jump's gap reads as much narrower than built as pathfindi
         least_short = std::min(least_short, double(gaps[row] - straightest));
         most_short = std::max(most_short, double(gaps[row] - straightest));
     }
-    const double stated_least = stated("docs/pathfinding.md", R"(a gap reads ([\d.]+) to [\d.]+ cm narrower than built)") / 100.0;
-    const double stated_most = stated("docs/pathfinding.md", R"(a gap reads [\d.]+ to ([\d.]+) cm narrower than built)") / 100.0;
+    const double stated_least =
+        stated("docs/pathfinding.md", R"(a gap reads ([\d.]+) to [\d.]+ cm narrower than built)") / 100.0;
+    const double stated_most =
+        stated("docs/pathfinding.md", R"(a gap reads [\d.]+ to ([\d.]+) cm narrower than built)") / 100.0;
     CHECK(least_short >= stated_least - 1e-3);
     CHECK(most_short <= stated_most + 1e-3);
 }

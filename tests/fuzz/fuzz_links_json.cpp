@@ -17,7 +17,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         return id;
     }();
     uint32_t count = 0;
-    const nl_status status = nl_navmesh_load_links_json(world, navmesh, reinterpret_cast<const char*>(data), size, 0, &count);
+    const nl_status status =
+        nl_navmesh_load_links_json(world, navmesh, reinterpret_cast<const char*>(data), size, 0, &count);
     nl::fuzz::require_reasoned(status);
     if (NL_FAILED(status)) return 0;
 
@@ -26,6 +27,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     std::string saved(length + 1, '\0');
     if (NL_FAILED(nl_navmesh_save_links_json(world, navmesh, saved.data(), saved.size(), &length))) __builtin_trap();
     uint32_t reloaded = 0;
-    if (NL_FAILED(nl_navmesh_load_links_json(world, navmesh, saved.data(), length, 0, &reloaded)) || reloaded != count) __builtin_trap();
+    if (NL_FAILED(nl_navmesh_load_links_json(world, navmesh, saved.data(), length, 0, &reloaded)) || reloaded != count)
+        __builtin_trap();
     return 0;
 }

@@ -23,8 +23,10 @@ void check_point_location(const nl::NavMesh& mesh) {
         const nl::Vec3 point = mesh.vertex(v) + nl::Vec3(0.25f, 0.5f, -0.25f);
         // The huge box visits every polygon: once is enough.
         for (size_t b = 0; b < (v == 0 ? 3 : 2); ++b) {
-            const nl::NavPoint fast = mesh.find_nearest(point, boxes[b]), slow = mesh.find_nearest_brute_force(point, boxes[b]);
-            if (fast.found != slow.found || fast.polygon != slow.polygon || !(fast.point == slow.point)) __builtin_trap();
+            const nl::NavPoint fast = mesh.find_nearest(point, boxes[b]),
+                               slow = mesh.find_nearest_brute_force(point, boxes[b]);
+            if (fast.found != slow.found || fast.polygon != slow.polygon || !(fast.point == slow.point))
+                __builtin_trap();
         }
     }
 }
@@ -49,8 +51,9 @@ void check_paths(const nl::PathGraph& graph) {
             const bool reaches = map->reaches(start.polygon, goal.polygon);
             if ((result.outcome == nl::PathOutcome::Complete) != reaches) {
                 // The input that did it is kept as a crash artifact; this says which pair.
-                fprintf(stderr, "fuzz_navmesh_add: from polygon %u to %u: outcome %u, but the map says %s\n", start.polygon,
-                        goal.polygon, uint32_t(result.outcome), reaches ? "it reaches" : "it does not reach");
+                fprintf(stderr, "fuzz_navmesh_add: from polygon %u to %u: outcome %u, but the map says %s\n",
+                        start.polygon, goal.polygon, uint32_t(result.outcome),
+                        reaches ? "it reaches" : "it does not reach");
                 __builtin_trap();
             }
         }

@@ -29,7 +29,8 @@ nl_navmesh_file_info described(const void* data, size_t size, nl_status& status)
     status = nl_navmesh_file_describe(data, size, &info, nullptr, 0, &length);
     if (NL_SUCCEEDED(status)) {
         std::vector<char> json(length + 1);
-        if (NL_FAILED(nl_navmesh_file_describe(data, size, nullptr, json.data(), json.size(), &length))) __builtin_trap();
+        if (NL_FAILED(nl_navmesh_file_describe(data, size, nullptr, json.data(), json.size(), &length)))
+            __builtin_trap();
     }
     return info;
 }
@@ -57,7 +58,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     nl_navmesh_id again{};
     if (NL_FAILED(nl_navmesh_load(world, saved.data(), saved.size(), nullptr, &again))) __builtin_trap();
     const nl_navmesh_file_info reread = described(saved.data(), saved.size(), status);
-    if (NL_FAILED(status) || reread.link_count != info.link_count || reread.polygon_count > info.polygon_count) __builtin_trap();
+    if (NL_FAILED(status) || reread.link_count != info.link_count || reread.polygon_count > info.polygon_count)
+        __builtin_trap();
     if (NL_FAILED(nl_navmesh_remove(world, navmesh)) || NL_FAILED(nl_navmesh_remove(world, again))) __builtin_trap();
     return 0;
 }

@@ -18,9 +18,10 @@ constexpr double kMaxBuiltCells = 100000.0;
 void add_level(nl_world* world) {
     // The floor, then a 2 m x 2 m block 1 m high, as 2 + 10 triangles facing out.
     static const float vertices[] = {0, 0, 0, kLevelSide, 0, 0, kLevelSide, 0, kLevelSide, 0, 0, kLevelSide,
-                                     3, 0, 3, 5, 0, 3, 5, 0, 5, 3, 0, 5, 3, 1, 3, 5, 1, 3, 5, 1, 5, 3, 1, 5};
-    static const uint32_t indices[] = {0, 2, 1, 0, 3, 2,  8,  10, 9, 8, 11, 10, 4, 5, 9, 4, 9, 8,
-                                       5, 6, 10, 5, 10, 9, 6, 7, 11, 6, 11, 10, 7, 4, 8, 7, 8, 11};
+                                     3, 0, 3, 5,          0, 3, 5,          0, 5,          3, 0, 5,
+                                     3, 1, 3, 5,          1, 3, 5,          1, 5,          3, 1, 5};
+    static const uint32_t indices[] = {0, 2, 1,  0, 3,  2, 8, 10, 9,  8, 11, 10, 4, 5, 9, 4, 9, 8,
+                                       5, 6, 10, 5, 10, 9, 6, 7,  11, 6, 11, 10, 7, 4, 8, 7, 8, 11};
     nl_mesh_def def = nl_default_mesh_def();
     def.vertices = vertices;
     def.vertex_count = sizeof vertices / sizeof(float) / 3;

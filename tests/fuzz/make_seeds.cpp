@@ -30,9 +30,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-void write(const fs::path& path, const std::string& bytes) {
-    std::ofstream(path, std::ios::binary) << bytes;
-}
+void write(const fs::path& path, const std::string& bytes) { std::ofstream(path, std::ios::binary) << bytes; }
 
 // Faces [first, first + count) of `mesh` as an OBJ text, vertices renumbered, lines ending `eol`.
 std::string obj_piece(const nl::TriangleMesh& mesh, size_t first, size_t count, const char* eol) {
@@ -45,7 +43,8 @@ std::string obj_piece(const nl::TriangleMesh& mesh, size_t first, size_t count, 
             const auto [it, added] = renumbered.emplace(v, uint32_t(renumbered.size() + 1));
             if (added) {
                 const nl::Vec3& p = mesh.vertices[v];
-                vertices += "v " + std::to_string(p.x()) + " " + std::to_string(p.y()) + " " + std::to_string(p.z()) + eol;
+                vertices +=
+                    "v " + std::to_string(p.x()) + " " + std::to_string(p.y()) + " " + std::to_string(p.z()) + eol;
             }
             faces += " " + std::to_string(it->second);
         }
@@ -65,7 +64,9 @@ std::string upward_triangles(const nl::TriangleMesh& mesh) {
         if (!(n.y() > 0.7f * n.norm())) continue;
         for (int k = 0; k < 3; ++k) {
             const auto [it, added] = renumbered.emplace(t[k], uint32_t(renumbered.size()));
-            if (added) vertices.insert(vertices.end(), {mesh.vertices[t[k]].x(), mesh.vertices[t[k]].y(), mesh.vertices[t[k]].z()});
+            if (added)
+                vertices.insert(vertices.end(),
+                                {mesh.vertices[t[k]].x(), mesh.vertices[t[k]].y(), mesh.vertices[t[k]].z()});
             triangles.push_back(it->second);
         }
     }
@@ -98,7 +99,8 @@ void write_navmesh_file(const fs::path& path, const std::string& file) {
     std::memcpy(&inflated_size, file.data() + 32, 8);
     std::string body(inflated_size, '\0');
     uLongf got = body.size();
-    if (uncompress(reinterpret_cast<Bytef*>(body.data()), &got, reinterpret_cast<const Bytef*>(file.data() + 40), file.size() - 40) != Z_OK)
+    if (uncompress(reinterpret_cast<Bytef*>(body.data()), &got, reinterpret_cast<const Bytef*>(file.data() + 40),
+                   file.size() - 40) != Z_OK)
         return;
     std::string plain = file.substr(0, 32) + body;
     const uint64_t size = plain.size();
@@ -157,7 +159,8 @@ bool write_quad_file(const fs::path& dir) {
     if (NL_FAILED(nl_world_create(nullptr, &world))) return false;
     const nl::test::CellNavmesh cells({"..1.", ".2..", "...."}, 0.4f);
     nl_navmesh_id navmesh{};
-    const bool ok = NL_SUCCEEDED(nl_navmesh_add(world, &cells.def, &navmesh)) && save_navmesh_file(world, navmesh, dir / "quad-map.nlnav");
+    const bool ok = NL_SUCCEEDED(nl_navmesh_add(world, &cells.def, &navmesh)) &&
+                    save_navmesh_file(world, navmesh, dir / "quad-map.nlnav");
     if (!ok) std::fprintf(stderr, "navlink-fuzz-seeds: navmesh file: %s\n", nl_get_last_error_message());
     nl_world_destroy(world);
     return ok;
@@ -202,7 +205,8 @@ int main(int argc, char** argv) {
         return 2;
     }
     const fs::path out = argv[1];
-    for (const char* target : {"obj", "navmesh_add", "links_json", "navmesh_file"}) fs::create_directories(out / target);
+    for (const char* target : {"obj", "navmesh_add", "links_json", "navmesh_file"})
+        fs::create_directories(out / target);
     write(out / "navmesh_add" / "quad-map.bin", quad_map());
     if (!write_links(out / "links_json", out / "navmesh_file") || !write_quad_file(out / "navmesh_file") ||
         !write_built_file(out / "navmesh_file"))

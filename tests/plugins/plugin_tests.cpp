@@ -111,7 +111,8 @@ TEST_CASE("plugin load failures: missing file, not a library, no entry symbol, v
     CHECK(last_error().find("nl_plugin_entry") != std::string::npos);
 
     CHECK(nl_plugin_load(w.world, TEST_PLUGIN_TOO_NEW_PATH, &id) == (NL_STATUS_FAILURE | NL_STATUS_VERSION_MISMATCH));
-    CHECK(nl_plugin_load(w.world, TEST_PLUGIN_BAD_ANSWER_PATH, &id) == (NL_STATUS_FAILURE | NL_STATUS_VERSION_MISMATCH));
+    CHECK(nl_plugin_load(w.world, TEST_PLUGIN_BAD_ANSWER_PATH, &id) ==
+          (NL_STATUS_FAILURE | NL_STATUS_VERSION_MISMATCH));
     CHECK(last_error().find("answered ABI version 2") != std::string::npos);
 
     CHECK(nl_plugin_load(w.world, nullptr, &id) == (NL_STATUS_FAILURE | NL_STATUS_INVALID_ARGUMENT));
@@ -225,8 +226,8 @@ TEST_CASE("the climb link kind, loaded as a plugin, links the foot of a wall to 
         CHECK(l.generated == 1);
         CHECK(l.bidirectional == 1);
         CHECK(l.requirements.abilities == 1u);
-        CHECK(l.start[1] < 0.6f);   // on the floor
-        CHECK(l.end[1] > 2.3f);     // on top of the block
+        CHECK(l.start[1] < 0.6f);  // on the floor
+        CHECK(l.end[1] > 2.3f);    // on top of the block
         // A climb asks for the ability, not for a jump's height (requirements_as_given = 1), so a
         // body that cannot jump climbs it; its length is still the ends'.
         CHECK(l.requirements.rise == 0.0f);
@@ -276,12 +277,14 @@ TEST_CASE("plugin settings that are too deep, beyond a double or not an object a
         {"{\"climb\": [1, 2]}", {"\"climb\" must be a JSON object", "not an array of 2 values"}},
         {"{\"not_loaded\": \"x\"}", {"\"not_loaded\" must be a JSON object"}},
         // Settings for a kind no loaded plugin provides would change nothing: a misspelling is named.
-        {"{\"clmb\": {\"max_height\": 3}}", {"no loaded link-kind plugin provides the kind \"clmb\"", "(loaded: 'climb')"}},
+        {"{\"clmb\": {\"max_height\": 3}}",
+         {"no loaded link-kind plugin provides the kind \"clmb\"", "(loaded: 'climb')"}},
     };
     for (const Case& c : cases) {
         CAPTURE(c.json.substr(0, 60));
         s.generate(c.json.c_str(), kInvalid);
-        for (const std::string& m : c.mentions) CHECK_MESSAGE(s.generate_error.find(m) != std::string::npos, s.generate_error);
+        for (const std::string& m : c.mentions)
+            CHECK_MESSAGE(s.generate_error.find(m) != std::string::npos, s.generate_error);
         CHECK(s.generate_error.size() < 300);
         uint32_t count = 0;
         nl_navmesh_get_links(s.world, s.navmesh, nullptr, 0, &count);
@@ -303,7 +306,8 @@ TEST_CASE("plugin settings for a plugin that is not loaded are refused, naming w
     settings.plugin_settings_json_length = sizeof climb - 1;
     CHECK(nl_navmesh_generate_cross_links(s.world, s.navmesh, s.navmesh, 0.5f, &settings, nullptr, nullptr, nullptr) ==
           (NL_STATUS_FAILURE | NL_STATUS_INVALID_ARGUMENT));
-    CHECK_MESSAGE(std::string(nl_get_last_error_message()).find("no loaded link-kind plugin provides the kind \"climb\"") !=
-                      std::string::npos,
-                  nl_get_last_error_message());
+    CHECK_MESSAGE(
+        std::string(nl_get_last_error_message()).find("no loaded link-kind plugin provides the kind \"climb\"") !=
+            std::string::npos,
+        nl_get_last_error_message());
 }

@@ -50,7 +50,8 @@ static nl_status build(void* state, const nl_plugin_host* host, const nl_navmesh
             const float* c = vertices + 3 * indices[3 * t + 2];
             const float e1[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
             const float e2[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
-            const float n[3] = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2], e1[0] * e2[1] - e1[1] * e2[0]};
+            const float n[3] = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
+                                e1[0] * e2[1] - e1[1] * e2[0]};
             const float length = sqrtf(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
             if (length > 0.0f && n[1] / length >= min_up) {
                 memmove(indices + 3 * kept, indices + 3 * t, 3 * sizeof(uint32_t));

@@ -86,13 +86,19 @@ TEST_CASE("recast: bad agent types are INVALID_ARGUMENT naming the field") {
         const char* field;
     };
     const Case cases[] = {
-        {{-0.1f, 2.0f, 0.9f, 45.0f}, "agent_type.radius"},   {{nan, 2.0f, 0.9f, 45.0f}, "agent_type.radius"},
-        {{inf, 2.0f, 0.9f, 45.0f}, "agent_type.radius"},     {{0.6f, 0.0f, 0.9f, 45.0f}, "agent_type.height"},
-        {{0.6f, -2.0f, 0.9f, 45.0f}, "agent_type.height"},   {{0.6f, 2.0f, -0.5f, 45.0f}, "agent_type.max_climb"},
-        {{0.6f, 2.0f, nan, 45.0f}, "agent_type.max_climb"},  {{0.6f, 2.0f, 0.9f, 90.0f}, "agent_type.max_slope"},
-        {{0.6f, 2.0f, 0.9f, -1.0f}, "agent_type.max_slope"}, {{0.6f, 2.0f, 0.9f, nan}, "agent_type.max_slope"},
+        {{-0.1f, 2.0f, 0.9f, 45.0f}, "agent_type.radius"},
+        {{nan, 2.0f, 0.9f, 45.0f}, "agent_type.radius"},
+        {{inf, 2.0f, 0.9f, 45.0f}, "agent_type.radius"},
+        {{0.6f, 0.0f, 0.9f, 45.0f}, "agent_type.height"},
+        {{0.6f, -2.0f, 0.9f, 45.0f}, "agent_type.height"},
+        {{0.6f, 2.0f, -0.5f, 45.0f}, "agent_type.max_climb"},
+        {{0.6f, 2.0f, nan, 45.0f}, "agent_type.max_climb"},
+        {{0.6f, 2.0f, 0.9f, 90.0f}, "agent_type.max_slope"},
+        {{0.6f, 2.0f, 0.9f, -1.0f}, "agent_type.max_slope"},
+        {{0.6f, 2.0f, 0.9f, nan}, "agent_type.max_slope"},
         // Beyond what Recast can represent at the default cell size.
-        {{100.0f, 2.0f, 0.9f, 45.0f}, "agent_type.radius"},  {{0.6f, 100.0f, 0.9f, 45.0f}, "agent_type.height"},
+        {{100.0f, 2.0f, 0.9f, 45.0f}, "agent_type.radius"},
+        {{0.6f, 100.0f, 0.9f, 45.0f}, "agent_type.height"},
     };
     for (const Case& c : cases) {
         CAPTURE(c.field);
@@ -140,7 +146,8 @@ TEST_CASE("recast: a floor with more walkable cells than Recast indexes names th
     FakeHost floor = QuadLevel().floor(0, 0, 1250, 1250, 0).host();
     for (const char* partition : {"watershed", "monotone"}) {
         CAPTURE(partition);
-        const BuildOutcome out = run_build(floor, json_build_def(std::string("{\"partition\": \"") + partition + "\"}"));
+        const BuildOutcome out =
+            run_build(floor, json_build_def(std::string("{\"partition\": \"") + partition + "\"}"));
         CHECK(out.status == kInvalid);
         CHECK(out.sink_calls == 0);
         CAPTURE(out.error);

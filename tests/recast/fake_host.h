@@ -68,7 +68,7 @@ struct BuildOutcome {
     nl_status status = 0;
     int sink_calls = 0;
     CapturedMesh mesh;
-    std::string error;    // the host's last set_error message, "" if none
+    std::string error;  // the host's last set_error message, "" if none
     double milliseconds = 0.0;
 };
 
@@ -78,8 +78,7 @@ nl_navmesh_build_def default_build_def();
 nl_navmesh_build_def json_build_def(const std::string& json);  // borrows json
 
 // Gets the builder through plugin_entry and runs one build on `host`. The sink returns sink_status.
-BuildOutcome run_build(FakeHost& host, const nl_navmesh_build_def& def,
-                       nl_status sink_status = NL_STATUS_SUCCESS);
+BuildOutcome run_build(FakeHost& host, const nl_navmesh_build_def& def, nl_status sink_status = NL_STATUS_SUCCESS);
 
 // The shared level of that stem ("nav_test"), or an empty path when the levels are not here.
 std::filesystem::path shared_level(const std::string& stem);

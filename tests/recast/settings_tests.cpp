@@ -110,7 +110,8 @@ TEST_CASE("recast settings struct: bad size or field is INVALID_ARGUMENT naming 
         const char* field;
     };
     const Case cases[] = {
-        {"size too small", [](nl_recast_settings& s) { s.size = offsetof(nl_recast_settings, reserved); }, "settings.size"},
+        {"size too small", [](nl_recast_settings& s) { s.size = offsetof(nl_recast_settings, reserved); },
+         "settings.size"},
         {"size zero", [](nl_recast_settings& s) { s.size = 0; }, "settings.size"},
         {"cell_size 0", [](nl_recast_settings& s) { s.cell_size = 0; }, "settings.cell_size"},
         {"cell_height NaN", [](nl_recast_settings& s) { s.cell_height = std::nanf(""); }, "settings.cell_height"},
@@ -183,11 +184,15 @@ TEST_CASE("recast settings JSON: malformed, unknown, mistyped or out-of-range va
         {R"({"filter_low_hanging_obstacles": "yes"})", kInvalid, {"settings_json: filter_low_hanging_obstacles"}},
         {R"({"cell_size": 1e400})", kInvalid, {"settings_json: cell_size is 1e400", "beyond the range"}},
         {R"({"edge_max_error": -1E+999})", kInvalid, {"settings_json: edge_max_error"}},
-        {"{\"vertices_per_polygon\": " + std::string(100000, '[') + std::string(100000, ']') + "}", kInvalid,
+        {"{\"vertices_per_polygon\": " + std::string(100000, '[') + std::string(100000, ']') + "}",
+         kInvalid,
          {"settings_json: vertices_per_polygon[0]", "64 levels"}},
-        {"{\"vertices_per_polygon\": [" + repeated("7, ", 100000) + "7]}", kInvalid,
+        {"{\"vertices_per_polygon\": [" + repeated("7, ", 100000) + "7]}",
+         kInvalid,
          {"settings_json: vertices_per_polygon", "an array of 100001 values"}},
-        {"{\"partition\": \"" + repeated("voronoi", 100000) + "\"}", kInvalid, {"settings_json: partition", "(got \"voronoivoronoi", "...\")"}},
+        {"{\"partition\": \"" + repeated("voronoi", 100000) + "\"}",
+         kInvalid,
+         {"settings_json: partition", "(got \"voronoivoronoi", "...\")"}},
         {"{\"" + repeated("cell", 100000) + "\": 1}", kInvalid, {"settings_json: unknown key \"cellcell"}},
         {R"([0.3, 0.2])", kInvalid, {"settings_json", "object"}},
         {R"("cell_size")", kInvalid, {"settings_json", "object"}},

@@ -72,12 +72,14 @@ TEST_CASE("bad arguments, files and JSON give one line and exit status 2") {
         {{"generate", "/nonexistent/level.obj", "--out", "x.json"}, "cannot open '/nonexistent/level.obj'"},
         {{"generate", "bad_level.obj", "--out", "x.json"}, "bad_level.obj:4:"},
         {{"generate", "level.obj", "--out", "x.json", "--navmesh", "concave.obj"}, "concave.obj"},
-        {{"generate", "level.obj", "--out", "x.json", "--agent", "/nonexistent.json"}, "cannot open '/nonexistent.json'"},
+        {{"generate", "level.obj", "--out", "x.json", "--agent", "/nonexistent.json"},
+         "cannot open '/nonexistent.json'"},
         {{"generate", "level.obj", "--out", "x.json", "--agent", "."}, "is a directory"},
         {{"generate", "level.obj", "--out", "x.json", "--agent", "broken.json"},
          "broken.json:1:12: not valid JSON: unexpected end of input"},
         {{"generate", "level.obj", "--out", "x.json", "--agent", "list.json"}, "must be a JSON object"},
-        {{"generate", "level.obj", "--out", "x.json", "--agent", "negative_radius.json"}, "radius must be a number > 0"},
+        {{"generate", "level.obj", "--out", "x.json", "--agent", "negative_radius.json"},
+         "radius must be a number > 0"},
         {{"generate", "level.obj", "--out", "x.json", "--agent", "text_radius.json"}, "radius must be a number"},
         {{"generate", "level.obj", "--out", "x.json", "--agent", "wings.json"}, "unknown key \"wings\""},
         {{"generate", "level.obj", "--out", "x.json", "--agent", "negative_abilities.json"},
@@ -113,8 +115,10 @@ TEST_CASE("bad arguments, files and JSON give one line and exit status 2") {
          "slope.json: max_slope must be a number >= 0 and <= 89.9 (got 95)"},
         {{"generate", "bad_level.obj", "--out", "x.json"},
          "loading the level: bad_level.obj:4: vertex index 9 is past the last one (3)"},
-        {{"generate", "flat.obj", "--out", "x.json"}, "loading the level: flat.obj: faces: all 1 triangles are degenerate"},
-        {{"generate", "far.obj", "--out", "x.json"}, "loading the level: far.obj: vertex 3: z = 3e+09 is beyond the coordinate limit"},
+        {{"generate", "flat.obj", "--out", "x.json"},
+         "loading the level: flat.obj: faces: all 1 triangles are degenerate"},
+        {{"generate", "far.obj", "--out", "x.json"},
+         "loading the level: far.obj: vertex 3: z = 3e+09 is beyond the coordinate limit"},
         {{"simulate", "--out-dir", "level.obj"}, "--out-dir 'level.obj' is a file, not a folder"},
         {{"generate", "level.obj", "--out", "."}, "cannot write '.': it is a folder"},
         {with(path, {"--from", "1,0,1", "--to", "2,0,2", "--png", "/nonexistent/p.png"}),
@@ -152,7 +156,8 @@ TEST_CASE("generate --plugin loads a link-kind plugin; settings for one not load
     check_one_line_error({{"generate", "block.obj", "--out", "links.json", "--plugin", "missing.so"}, "missing.so"},
                          dir);
     const ProgramRun run = navlink(
-        {"generate", "block.obj", "--out", "links.json", "--settings", "climb.json", "--plugin", CLIMB_PLUGIN_PATH}, dir);
+        {"generate", "block.obj", "--out", "links.json", "--settings", "climb.json", "--plugin", CLIMB_PLUGIN_PATH},
+        dir);
     REQUIRE_MESSAGE(run.exit_code == 0, run.err);
     const auto links = nl::test::parse_json_file(dir + "/links.json").at("links");
     size_t climbs = 0;

@@ -85,9 +85,11 @@ struct SimulatedArrival {
 inline SimulatedArrival simulated_arrival(const std::string& out, const std::string& agent) {
     std::smatch m;
     REQUIRE_MESSAGE(
-        std::regex_search(out, m,
-                          std::regex("\n" + agent +
-                                     R"( +\| (arrived|on its way|failed: [a-z ]+?) +([0-9.]+) s +\([^)]*\) +([0-9.]+) m +[0-9.]+ m  (.*), \d+ replans(, waited ([0-9.]+) s)?)")),
+        std::regex_search(
+            out, m,
+            std::regex(
+                "\n" + agent +
+                R"( +\| (arrived|on its way|failed: [a-z ]+?) +([0-9.]+) s +\([^)]*\) +([0-9.]+) m +[0-9.]+ m  (.*), \d+ replans(, waited ([0-9.]+) s)?)")),
         out);
     return {m[1], std::stod(m[2]), std::stod(m[3]), m[4], m[6].matched ? std::stod(m[6]) : 0.0};
 }

@@ -63,7 +63,8 @@ TEST_CASE("navlink level writes the generated level as OBJ, with its markers") {
     CHECK(nl::test::read_file(files.dir + "/other.obj") != obj);  // another seed, another level
 }
 
-TEST_CASE("navlink generate on the generated level: links file, report and picture agree, links are where the level says") {
+TEST_CASE(
+    "navlink generate on the generated level: links file, report and picture agree, links are where the level says") {
     GeneratedLevelFiles files("generate");
     const ProgramRun run = navlink({"generate", "level.obj", "--out", "links.json", "--png", "view.png"}, files.dir);
     REQUIRE_MESSAGE(run.exit_code == 0, run.err);
@@ -81,8 +82,8 @@ TEST_CASE("navlink generate on the generated level: links file, report and pictu
     CHECK(std::stoul(m[1]) == links.at("links").size());
     CHECK(std::stoul(m[2]) == counts.jump);
     CHECK(std::stoul(m[3]) == counts.drop);
-    for (const char* line : {"rejected:", "body touches the level", "walking is about as short", "drop too deep", "time (ms):",
-                             "navmesh", "links total", "exact body tests"})
+    for (const char* line : {"rejected:", "body touches the level", "walking is about as short", "drop too deep",
+                             "time (ms):", "navmesh", "links total", "exact body tests"})
         CHECK_MESSAGE(run.out.find(line) != std::string::npos, line);
     CHECK(nl::test::is_png(files.dir + "/view.png", 1600));
 
@@ -125,7 +126,8 @@ TEST_CASE("navlink generate on the generated level: links file, report and pictu
 TEST_CASE("navlink generate reads settings and agent files: shorter links leave the second gap unjumped") {
     GeneratedLevelFiles files("generate_settings");
     nl::test::write_file(files.dir + "/short.json", R"({"max_jump_gap": 2.5, "recast": {"cell_size": 0.25}})");
-    const ProgramRun run = navlink({"generate", "level.obj", "--settings", "short.json", "--out", "links.json"}, files.dir);
+    const ProgramRun run =
+        navlink({"generate", "level.obj", "--settings", "short.json", "--out", "links.json"}, files.dir);
     REQUIRE_MESSAGE(run.exit_code == 0, run.err);
     const json links = nl::test::parse_json_file(files.dir + "/links.json");
     CHECK(!jumps_across(links, files.level, 0).empty());  // 1.4 to 1.8 m
@@ -134,8 +136,9 @@ TEST_CASE("navlink generate reads settings and agent files: shorter links leave 
     // A thinner body: its navmesh reaches closer to the rims, so the same gap is a shorter jump end to
     // end (the gap itself, rim to rim, is the same).
     write_agent(files.dir + "/thin.json", R"({"name": "thin", "radius": 0.3})");
-    REQUIRE(navlink({"generate", "level.obj", "--agent", "thin.json", "--out", "thin.json.links"}, files.dir).exit_code ==
-            0);
+    REQUIRE(
+        navlink({"generate", "level.obj", "--agent", "thin.json", "--out", "thin.json.links"}, files.dir).exit_code ==
+        0);
     REQUIRE(navlink({"generate", "level.obj", "--out", "default.links"}, files.dir).exit_code == 0);
     auto shortest = [&](const std::string& file, const char* what) {
         float best = 1e9f;
@@ -161,7 +164,8 @@ TEST_CASE("navlink generate and path with a navmesh handed over as OBJ (--navmes
     }
     obj += "f 1 2 3 4\nf 5 6 7 8\n";
     nl::test::write_file(files.dir + "/nav.obj", obj);
-    const ProgramRun generate = navlink({"generate", "level.obj", "--navmesh", "nav.obj", "--out", "links.json"}, files.dir);
+    const ProgramRun generate =
+        navlink({"generate", "level.obj", "--navmesh", "nav.obj", "--out", "links.json"}, files.dir);
     REQUIRE_MESSAGE(generate.exit_code == 0, generate.err);
     CHECK(generate.out.find("navmesh: 2 polygons, 8 boundary edges (nav.obj)") != std::string::npos);
     const json links = nl::test::parse_json_file(files.dir + "/links.json");
@@ -188,7 +192,8 @@ TEST_CASE("navlink path --json: each demo agent's route is complete, continuous 
                 R"({"name": "walker", "max_jump_distance": 0, "max_jump_height": 0, "max_drop_height": 0})");
     write_agent(files.dir + "/short.json",
                 R"({"max_jump_distance": 2.0, "max_jump_height": 1.0, "max_drop_height": 0})");
-    write_agent(files.dir + "/long.json", R"({"max_jump_distance": 3.5, "max_jump_height": 1.5, "max_drop_height": 4})");
+    write_agent(files.dir + "/long.json",
+                R"({"max_jump_distance": 3.5, "max_jump_height": 1.5, "max_drop_height": 4})");
     const std::string from = "2,0,3", to = "33.91,-1.03,3.5";  // the level's start and goal markers
 
     std::map<std::string, json> paths;
@@ -272,9 +277,9 @@ TEST_CASE("navlink path exits 1 when the goal cannot be reached, and says why") 
     for (size_t k = 0; k < 3; ++k) squared += std::pow(last[k].get<float>() - to[k].get<float>(), 2.0f);
     CHECK(partial.at("ends_from_goal").get<float>() == doctest::Approx(std::sqrt(squared)).epsilon(1e-4));
     CHECK(partial.at("ends_from_goal").get<float>() > 1.0f);
-    run = navlink({"path", "level.obj", "--links", "links.json", "--from", "2,0,3", "--to", on_p2, "--agent",
-                   "walker.json"},
-                  files.dir);
+    run = navlink(
+        {"path", "level.obj", "--links", "links.json", "--from", "2,0,3", "--to", on_p2, "--agent", "walker.json"},
+        files.dir);
     CHECK(run.out.find("partial: it ends ") != std::string::npos);
     CHECK(run.out.find("arrive") == std::string::npos);
 
@@ -333,7 +338,8 @@ TEST_CASE("navlink demo prints a route for each of its three agents and writes i
     CHECK(nl::test::is_png(dir + "/fresh/deeper/demo.png", 1600));
 }
 
-TEST_CASE("navlink simulate: the three bodies arrive as agents, each by the links it can take, and the tracks are drawn") {
+TEST_CASE(
+    "navlink simulate: the three bodies arrive as agents, each by the links it can take, and the tracks are drawn") {
     const std::string dir = nl::test::scratch_dir("simulate");
     const ProgramRun run = navlink({"simulate"}, dir);
     REQUIRE_MESSAGE(run.exit_code == 0, run.err);
@@ -350,7 +356,8 @@ TEST_CASE("navlink simulate: the three bodies arrive as agents, each by the link
     CHECK(long_jumper.seconds < short_jumper.seconds);  // the shorter route, as navlink demo plans it
     CHECK(short_jumper.seconds < walker.seconds);
     // Each take-off is printed as it happens, with the trajectory the agent flies.
-    CHECK(std::regex_search(run.out, std::regex(R"(\n +[0-9.]+ s  long jumper +drops +from \([^)]*\) to \([^)]*\) in [0-9.]+ s\n)")));
+    CHECK(std::regex_search(
+        run.out, std::regex(R"(\n +[0-9.]+ s  long jumper +drops +from \([^)]*\) to \([^)]*\) in [0-9.]+ s\n)")));
     CHECK(nl::test::is_png(dir + "/simulate.png", 1600));
 
     // Another step rate moves the agents along the same routes.
@@ -393,21 +400,26 @@ TEST_CASE("navlink generate says when a level looks wound clockwise, and --clock
 
     const ProgramRun unflagged = navlink({"generate", "clockwise.obj", "--out", "unflagged.json"}, files.dir);
     REQUIRE_MESSAGE(unflagged.exit_code == 0, unflagged.err);
-    CHECK(unflagged.err.find("warning: the navmesh was built on 1 mesh that looks wound clockwise") != std::string::npos);
+    CHECK(unflagged.err.find("warning: the navmesh was built on 1 mesh that looks wound clockwise") !=
+          std::string::npos);
     CHECK(unflagged.err.find("pass --clockwise") != std::string::npos);
 
-    const ProgramRun flagged = navlink({"generate", "clockwise.obj", "--clockwise", "--out", "flagged.json"}, files.dir);
+    const ProgramRun flagged =
+        navlink({"generate", "clockwise.obj", "--clockwise", "--out", "flagged.json"}, files.dir);
     REQUIRE_MESSAGE(flagged.exit_code == 0, flagged.err);
     CHECK(flagged.err.find("wound clockwise") == std::string::npos);
     // Read as wound clockwise, it is the level as given: the same navmesh and links.
-    CHECK(flagged.out.substr(flagged.out.find("navmesh:"), 40) == as_given.out.substr(as_given.out.find("navmesh:"), 40));
-    CHECK(nl::test::read_file(files.dir + "/flagged.json").size() == nl::test::read_file(files.dir + "/given.json").size());
+    CHECK(flagged.out.substr(flagged.out.find("navmesh:"), 40) ==
+          as_given.out.substr(as_given.out.find("navmesh:"), 40));
+    CHECK(nl::test::read_file(files.dir + "/flagged.json").size() ==
+          nl::test::read_file(files.dir + "/given.json").size());
 }
 
 namespace {
 
 // LEVEL.obj's vertices, each (x, y, z) written as `rewrite` gives it.
-std::string with_vertices(const std::string& obj, const std::function<std::array<double, 3>(double, double, double)>& rewrite) {
+std::string with_vertices(const std::string& obj,
+                          const std::function<std::array<double, 3>(double, double, double)>& rewrite) {
     std::istringstream lines(obj);
     std::ostringstream out;
     out << std::setprecision(10);
@@ -430,7 +442,8 @@ std::string navmesh_line(const ProgramRun& run) { return run.out.substr(run.out.
 // The default level written in centimetres, and with z up (Blender's own frame): generate builds on
 // each, warns of what it looks like and names the option; with --units cm or --up z it is the level
 // in metres with y up, the same navmesh and links, and nothing is said.
-TEST_CASE("navlink generate says when a level looks given in centimetres or with z up, and --units and --up read it so") {
+TEST_CASE(
+    "navlink generate says when a level looks given in centimetres or with z up, and --units and --up read it so") {
     GeneratedLevelFiles files("level_frame");
     const std::string obj = nl::test::read_file(files.dir + "/level.obj");
     nl::test::write_file(files.dir + "/cm.obj", with_vertices(obj, [](double x, double y, double z) {
@@ -446,7 +459,8 @@ TEST_CASE("navlink generate says when a level looks given in centimetres or with
     REQUIRE_MESSAGE(as_given.exit_code == 0, as_given.err);
     CHECK(as_given.err.find("warning") == std::string::npos);
 
-    const ProgramRun cm_unsaid = navlink({"generate", "cm.obj", "--settings", "coarse.json", "--out", "cm_unsaid.json"}, files.dir);
+    const ProgramRun cm_unsaid =
+        navlink({"generate", "cm.obj", "--settings", "coarse.json", "--out", "cm_unsaid.json"}, files.dir);
     REQUIRE_MESSAGE(cm_unsaid.exit_code == 0, cm_unsaid.err);
     CHECK_MESSAGE(cm_unsaid.err.find("warning: the level's walls are ") != std::string::npos, cm_unsaid.err);
     CHECK(cm_unsaid.err.find("are its units metres?") != std::string::npos);
@@ -459,14 +473,16 @@ TEST_CASE("navlink generate says when a level looks given in centimetres or with
 
     const ProgramRun z_unsaid = navlink({"generate", "z_up.obj", "--out", "z_unsaid.json"}, files.dir);
     REQUIRE_MESSAGE(z_unsaid.exit_code == 0, z_unsaid.err);
-    CHECK_MESSAGE(z_unsaid.err.find("warning: the level looks as if z were its up axis") != std::string::npos, z_unsaid.err);
+    CHECK_MESSAGE(z_unsaid.err.find("warning: the level looks as if z were its up axis") != std::string::npos,
+                  z_unsaid.err);
     CHECK(z_unsaid.err.find("pass --up z") != std::string::npos);
     CHECK(navmesh_line(z_unsaid) != navmesh_line(as_given));
     const ProgramRun z_up = navlink({"generate", "z_up.obj", "--up", "z", "--out", "z_up.json"}, files.dir);
     REQUIRE_MESSAGE(z_up.exit_code == 0, z_up.err);
     CHECK(z_up.err.find("warning") == std::string::npos);
     CHECK(navmesh_line(z_up) == navmesh_line(as_given));
-    CHECK(nl::test::read_file(files.dir + "/z_up.json").size() == nl::test::read_file(files.dir + "/given.json").size());
+    CHECK(nl::test::read_file(files.dir + "/z_up.json").size() ==
+          nl::test::read_file(files.dir + "/given.json").size());
 
     const ProgramRun bad_units = navlink({"generate", "cm.obj", "--units", "furlong", "--out", "bad.json"}, files.dir);
     CHECK(bad_units.exit_code != 0);
@@ -493,33 +509,44 @@ TEST_CASE("navlink path says why a path falls short, and when the body is wider 
     const ProgramRun generated = navlink({"generate", "level.obj", "--out", "links.json"}, dir);
     REQUIRE_MESSAGE(generated.exit_code == 0, generated.err);
 
-    const ProgramRun short_drop =
-        navlink({"path", "level.obj", "--links", "links.json", "--agent", "drops_4.json", "--from", "3,4.2,0", "--to", "15,0,0"}, dir);
+    const ProgramRun short_drop = navlink({"path", "level.obj", "--links", "links.json", "--agent", "drops_4.json",
+                                           "--from", "3,4.2,0", "--to", "15,0,0"},
+                                          dir);
     CHECK(short_drop.exit_code == 1);
     CHECK_MESSAGE(short_drop.out.find("why: a drop at (") != std::string::npos, short_drop.out);
-    CHECK(std::regex_search(short_drop.out, std::regex(R"(it needs a drop of 4\.[0-4]\d? m, and the body drops 4 m \(max_drop_height\) \(link #\d+;)")));
-    const ProgramRun no_links = navlink({"path", "level.obj", "--agent", "drops_4.json", "--from", "3,4.2,0", "--to", "15,0,0"}, dir);
-    CHECK_MESSAGE(no_links.out.find("the navmesh has no links: generate or load them (--links LINKS.json)") != std::string::npos,
-                  no_links.out);
-    const ProgramRun json_out = navlink(
-        {"path", "level.obj", "--links", "links.json", "--agent", "drops_4.json", "--from", "3,4.2,0", "--to", "15,0,0", "--json"}, dir);
+    CHECK(std::regex_search(
+        short_drop.out,
+        std::regex(R"(it needs a drop of 4\.[0-4]\d? m, and the body drops 4 m \(max_drop_height\) \(link #\d+;)")));
+    const ProgramRun no_links =
+        navlink({"path", "level.obj", "--agent", "drops_4.json", "--from", "3,4.2,0", "--to", "15,0,0"}, dir);
+    CHECK_MESSAGE(
+        no_links.out.find("the navmesh has no links: generate or load them (--links LINKS.json)") != std::string::npos,
+        no_links.out);
+    const ProgramRun json_out = navlink({"path", "level.obj", "--links", "links.json", "--agent", "drops_4.json",
+                                         "--from", "3,4.2,0", "--to", "15,0,0", "--json"},
+                                        dir);
     const json parsed = json::parse(json_out.out);
     CHECK(parsed.at("why").get<std::string>().find("(max_drop_height)") != std::string::npos);
     CHECK(parsed.at("why_link").get<long>() >= 0);
 
     // Built for the body, the navmesh leaves the corridor out, and says so.
-    const ProgramRun built_wide = navlink({"path", "level.obj", "--agent", "wide.json", "--from", "40,0,0", "--to", "60,0,0"}, dir);
+    const ProgramRun built_wide =
+        navlink({"path", "level.obj", "--agent", "wide.json", "--from", "40,0,0", "--to", "60,0,0"}, dir);
     CHECK(built_wide.exit_code == 1);
-    CHECK_MESSAGE(built_wide.out.find("(built for a body of radius 1 m, it leaves out passages narrower than 2 m)") != std::string::npos,
+    CHECK_MESSAGE(built_wide.out.find("(built for a body of radius 1 m, it leaves out passages narrower than 2 m)") !=
+                      std::string::npos,
                   built_wide.out);
     // Baked for the default body (radius 0.6 m), planned for a wider one.
     const ProgramRun baked = navlink({"bake", "level.obj", "--out", "level.nlnav"}, dir);
     REQUIRE_MESSAGE(baked.exit_code == 0, baked.err);
-    const ProgramRun wide = navlink({"path", "level.nlnav", "--agent", "wide.json", "--from", "40,0,0", "--to", "60,0,0"}, dir);
+    const ProgramRun wide =
+        navlink({"path", "level.nlnav", "--agent", "wide.json", "--from", "40,0,0", "--to", "60,0,0"}, dir);
     CHECK(wide.exit_code == 1);
-    CHECK_MESSAGE(wide.out.find("the body (radius 1.00 m) is wider than the navmesh's (0.60 m): it keeps 0.40 m more from walls") !=
-                      std::string::npos,
-                  wide.out);
+    CHECK_MESSAGE(
+        wide.out.find(
+            "the body (radius 1.00 m) is wider than the navmesh's (0.60 m): it keeps 0.40 m more from walls") !=
+            std::string::npos,
+        wide.out);
     CHECK(wide.out.find("why: the body (radius 1 m) is too wide for the passages on the way") != std::string::npos);
     const ProgramRun fits = navlink({"path", "level.nlnav", "--from", "40,0,0", "--to", "60,0,0"}, dir);
     CHECK(fits.exit_code == 0);
@@ -536,19 +563,23 @@ TEST_CASE("navlink simulate LEVEL and navlink-viewer --from --to exit 0 only whe
     level.add_box({{0, 0, -3}, {6, 4.2f, 3}});
     nl::test::write_file(dir + "/tower.obj", level.to_obj());
 
-    const ProgramRun floor = navlink({"simulate", "tower.obj", "--from", "15,0,0", "--to", "10,0,7", "--seconds", "30"}, dir);
+    const ProgramRun floor =
+        navlink({"simulate", "tower.obj", "--from", "15,0,0", "--to", "10,0,7", "--seconds", "30"}, dir);
     CHECK_MESSAGE(floor.exit_code == 0, floor.out << floor.err);
     CHECK(floor.out.find("NavLink simulate: tower.obj") != std::string::npos);
     CHECK(floor.out.find("not every agent arrived") == std::string::npos);
-    const ProgramRun down = navlink({"simulate", "tower.obj", "--from", "3,4.2,0", "--to", "15,0,0", "--seconds", "20"}, dir);
+    const ProgramRun down =
+        navlink({"simulate", "tower.obj", "--from", "3,4.2,0", "--to", "15,0,0", "--seconds", "20"}, dir);
     CHECK_MESSAGE(down.exit_code == 1, down.out << down.err);
     CHECK(down.out.find("not every agent arrived") != std::string::npos);
-    const ProgramRun generated_only = navlink({"simulate", "tower.obj", "--from", "15,0,0", "--to", "10,0,7", "--platforms"}, dir);
+    const ProgramRun generated_only =
+        navlink({"simulate", "tower.obj", "--from", "15,0,0", "--to", "10,0,7", "--platforms"}, dir);
     CHECK(generated_only.exit_code == 2);
     CHECK(generated_only.err.find("--platforms is for the generated default level") != std::string::npos);
 
     const auto viewer = [&](const std::string& from, const std::string& to) {
-        return nl::test::run_program({NAVLINK_VIEWER_PATH, "tower.obj", "--headless", "--frames", dir, "--from", from, "--to", to}, dir);
+        return nl::test::run_program(
+            {NAVLINK_VIEWER_PATH, "tower.obj", "--headless", "--frames", dir, "--from", from, "--to", to}, dir);
     };
     const ProgramRun viewer_floor = viewer("15,0,0", "10,0,7");
     CHECK_MESSAGE(viewer_floor.exit_code == 0, viewer_floor.out << viewer_floor.err);
@@ -568,14 +599,16 @@ TEST_CASE("the README's demo output is what navlink demo prints") {
     const ProgramRun run = navlink({"demo"}, dir);
     REQUIRE_MESSAGE(run.exit_code == 0, run.err);
     const std::string readme = nl::test::read_file(std::string(NAVLINK_SOURCE_DIR) + "/README.md");
-    const auto without_times = [](const std::string& text) { return std::regex_replace(text, std::regex(R"( in \d+ ms)"), ""); };
+    const auto without_times = [](const std::string& text) {
+        return std::regex_replace(text, std::regex(R"( in \d+ ms)"), "");
+    };
     const std::string printed = without_times(run.out), shown = without_times(readme);
     std::istringstream lines(printed);
     int compared = 0;
     for (std::string line; std::getline(lines, line);) {
         const bool row = std::regex_search(line, std::regex(R"(^(walker|short jumper|long jumper) .*\| )"));
-        const bool count = line.rfind("NavLink demo:", 0) == 0 || line.rfind("  navmesh:", 0) == 0 || line.rfind("  links:", 0) == 0 ||
-                           line.rfind("  route:", 0) == 0;
+        const bool count = line.rfind("NavLink demo:", 0) == 0 || line.rfind("  navmesh:", 0) == 0 ||
+                           line.rfind("  links:", 0) == 0 || line.rfind("  route:", 0) == 0;
         if (!row && !count) continue;
         CHECK_MESSAGE(shown.find(line + "\n") != std::string::npos, "README.md does not show: " << line);
         ++compared;
@@ -585,7 +618,8 @@ TEST_CASE("the README's demo output is what navlink demo prints") {
 
 // Links from another level are refused saying so; links for another body are refused naming
 // --any-body, and load with a warning with it.
-TEST_CASE("navlink path says when links were made for another level, and --any-body loads links made for another body") {
+TEST_CASE(
+    "navlink path says when links were made for another level, and --any-body loads links made for another body") {
     GeneratedLevelFiles files("links_elsewhere");
     nl::levelgen::GeneratedLevel tower;
     tower.add_box({{-10, -1, -10}, {20, 0, 10}});
@@ -594,15 +628,19 @@ TEST_CASE("navlink path says when links were made for another level, and --any-b
     nl::test::write_file(files.dir + "/thin.json", R"({"radius": 0.4})");
     REQUIRE(navlink({"generate", "level.obj", "--out", "links.json"}, files.dir).exit_code == 0);
 
-    const ProgramRun elsewhere = navlink({"path", "tower.obj", "--links", "links.json", "--from", "15,0,0", "--to", "10,0,7"}, files.dir);
+    const ProgramRun elsewhere =
+        navlink({"path", "tower.obj", "--links", "links.json", "--from", "15,0,0", "--to", "10,0,7"}, files.dir);
     CHECK(elsewhere.exit_code == 2);
-    CHECK_MESSAGE(elsewhere.err.find("these links were made for another level (level hash ") != std::string::npos, elsewhere.err);
+    CHECK_MESSAGE(elsewhere.err.find("these links were made for another level (level hash ") != std::string::npos,
+                  elsewhere.err);
 
-    const std::vector<std::string> thin = {"path", "level.obj", "--links", "links.json", "--agent", "thin.json", "--from", "2,0,3",
-                                           "--to", "33.9,-1,3.5"};
+    const std::vector<std::string> thin = {"path",      "level.obj", "--links", "links.json", "--agent",
+                                           "thin.json", "--from",    "2,0,3",   "--to",       "33.9,-1,3.5"};
     const ProgramRun refused = navlink(thin, files.dir);
     CHECK(refused.exit_code == 2);
-    CHECK_MESSAGE(refused.err.find("load them anyway with NL_LINKS_LOAD_ANY_BODY (navlink: --any-body)") != std::string::npos, refused.err);
+    CHECK_MESSAGE(
+        refused.err.find("load them anyway with NL_LINKS_LOAD_ANY_BODY (navlink: --any-body)") != std::string::npos,
+        refused.err);
     std::vector<std::string> any_body = thin;
     any_body.push_back("--any-body");
     const ProgramRun loaded = navlink(any_body, files.dir);
@@ -621,7 +659,9 @@ TEST_CASE("navlink path prints the route in one line, consecutive walking merged
     REQUIRE(std::regex_search(walker.out, route, std::regex(R"(\n  route: (.*)\n)")));
     CHECK_MESSAGE(std::regex_match(route[1].str(), std::regex(R"(walk [0-9.]+)")), route[1].str());
     CHECK(std::count(walker.out.begin(), walker.out.end(), '\n') > 6);  // many corners in the table above it
-    const ProgramRun jumper = navlink({"path", "level.obj", "--links", "links.json", "--from", "2,0,3", "--to", "33.9,-1,3.5"}, files.dir);
+    const ProgramRun jumper =
+        navlink({"path", "level.obj", "--links", "links.json", "--from", "2,0,3", "--to", "33.9,-1,3.5"}, files.dir);
     REQUIRE(std::regex_search(jumper.out, route, std::regex(R"(\n  route: (.*)\n)")));
-    CHECK_MESSAGE(std::regex_search(route[1].str(), std::regex(R"(^walk [0-9.]+, (jump|drop) [0-9.]+, walk )")), route[1].str());
+    CHECK_MESSAGE(std::regex_search(route[1].str(), std::regex(R"(^walk [0-9.]+, (jump|drop) [0-9.]+, walk )")),
+                  route[1].str());
 }

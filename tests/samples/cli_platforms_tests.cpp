@@ -20,7 +20,9 @@ double first_time_of(const std::string& out, const std::string& pattern) {
 
 }  // namespace
 
-TEST_CASE("navlink simulate --platforms: every passenger arrives, waiting for the shuttle and the lift, and the platforms are drawn") {
+TEST_CASE(
+    "navlink simulate --platforms: every passenger arrives, waiting for the shuttle and the lift, and the platforms "
+    "are drawn") {
     const std::string dir = nl::test::scratch_dir("simulate_platforms");
     const ProgramRun run = navlink({"simulate", "--platforms"}, dir);
     REQUIRE_MESSAGE(run.exit_code == 0, run.err);

@@ -92,7 +92,8 @@ TEST_CASE("navlink generate and path on every shared level") {
         REQUIRE_MESSAGE(bake.exit_code == 0, bake.err);
         const ProgramRun info = navlink({"info", "level.nlnav"}, dir);
         CHECK_MESSAGE(info.exit_code == 0, info.err);
-        CHECK_MESSAGE(info.out.find("links: " + std::to_string(links.at("links").size()) + " (") != std::string::npos, info.out);
+        CHECK_MESSAGE(info.out.find("links: " + std::to_string(links.at("links").size()) + " (") != std::string::npos,
+                      info.out);
         CHECK_MESSAGE(info.out.find("\"builder\":\"recast\"") != std::string::npos, info.out);
         const ProgramRun baked = navlink({"path", "level.nlnav", "--from", xyz(a), "--to", xyz(b), "--json"}, dir);
         CHECK_MESSAGE(baked.exit_code == 0, baked.err);

@@ -38,7 +38,9 @@ double waited_at(const NavigationAgent& agent, size_t link) {
 
 }  // namespace
 
-TEST_CASE("passengers ride the platforms: they wait for the shuttle and the lift, get on and off by the gangways, and arrive") {
+TEST_CASE(
+    "passengers ride the platforms: they wait for the shuttle and the lift, get on and off by the gangways, and "
+    "arrive") {
     PlatformsScene scene = build_platforms_scene(1);
     REQUIRE(scene.agents.size() == 4);
     REQUIRE(scene.platforms.size() == 3);
@@ -80,7 +82,7 @@ TEST_CASE("an agent that arrived on the turning disc rides it: it stays where it
     const float radius = std::hypot(before[0] - axis[0], before[2] - axis[2]);
     scene.tree->run_until([] { return false; }, kDelta, 4.0);  // a quarter of a turn
     const Vec3 after = rider.position();
-    CHECK(std::hypot(after[0] - before[0], after[2] - before[2]) > 1.0);          // carried round
+    CHECK(std::hypot(after[0] - before[0], after[2] - before[2]) > 1.0);  // carried round
     CHECK(std::hypot(after[0] - axis[0], after[2] - axis[2]) == doctest::Approx(radius).epsilon(0.01));  // on the disc
     CHECK(rider.arrived());
 }

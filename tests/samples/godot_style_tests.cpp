@@ -52,8 +52,9 @@ void check_crowded_arrival(const DemoScene& scene) {
         bool stopped_by_crowd = false;
         for (const NavigationAgent* b : scene.agents) {
             const float reach = radius + b->profile().capabilities.radius + slack;
-            stopped_by_crowd = stopped_by_crowd || (b != a && horizontal_distance(a->position(), b->position()) < reach &&
-                                                    horizontal_distance(b->position(), scene.target) <= own + slack);
+            stopped_by_crowd =
+                stopped_by_crowd || (b != a && horizontal_distance(a->position(), b->position()) < reach &&
+                                     horizontal_distance(b->position(), scene.target) <= own + slack);
         }
         CHECK((own < 0.1f + kPushed || stopped_by_crowd));
         CHECK(own <= radius * std::sqrt((group - 1.0f) / 0.9069f) + slack);

@@ -64,7 +64,8 @@ struct Png {
         for (int c = 0; c < 3; ++c) {
             std::vector<int> values;
             for (int dy = -2; dy <= 2; ++dy)
-                for (int dx = -2; dx <= 2; ++dx) values.push_back(at(static_cast<int>(p.x) + dx, static_cast<int>(p.y) + dy)[c]);
+                for (int dx = -2; dx <= 2; ++dx)
+                    values.push_back(at(static_cast<int>(p.x) + dx, static_cast<int>(p.y) + dy)[c]);
             std::nth_element(values.begin(), values.begin() + 12, values.end());
             out[c] = values[12];
         }
@@ -159,7 +160,9 @@ TEST_CASE("pictures cut roofs away: the floor under dungeon's roof is drawn as o
     REQUIRE(cut_png.width == 1600);
     REQUIRE(cut_png.height == picture.view.height);
     const float above = picture.level.info.bounds_max[1] + 1.0f;
-    auto top = [&](const nl_nav_polygon& p) { return top_surface(picture.world.get(), p.centre[0], p.centre[2], above); };
+    auto top = [&](const nl_nav_polygon& p) {
+        return top_surface(picture.world.get(), p.centre[0], p.centre[2], above);
+    };
     size_t pairs = 0, matching = 0, roof_shown_before = 0;
     for (uint32_t p = 0; p < nav.polygons.size(); ++p) {
         const nl_nav_polygon& under = nav.polygons[p];
@@ -228,15 +231,16 @@ TEST_CASE("navlink demo draws one arrow per ledge run of drops, and says how man
     const json links = nl::test::parse_json_file(dir + "/demo.links.json");
     const size_t drops = nl::test::count_kinds(links).drop;
     std::smatch m;
-    REQUIRE_MESSAGE(std::regex_search(run.out, m, std::regex(R"(drops: (\d+) \((\d+) arrows\); (\d+) islands? for the walker)")),
-                    run.out);
+    REQUIRE_MESSAGE(
+        std::regex_search(run.out, m, std::regex(R"(drops: (\d+) \((\d+) arrows\); (\d+) islands? for the walker)")),
+        run.out);
     CHECK(std::stoul(m[1]) == drops);
     const unsigned long arrows = std::stoul(m[2]);
     MESSAGE(drops << " drops drawn as " << arrows << " arrows; " << m[3] << " islands for the walker");
-    CHECK(drops > 30);                 // the default level's ledges
-    CHECK(arrows >= 4);                // every ledge keeps an arrow...
-    CHECK(arrows * 3 <= drops);        // ...and a ledge's row of drops is one
-    CHECK(std::stoul(m[3]) >= 2);      // the walker cannot cross the gaps: the platforms are islands
+    CHECK(drops > 30);             // the default level's ledges
+    CHECK(arrows >= 4);            // every ledge keeps an arrow...
+    CHECK(arrows * 3 <= drops);    // ...and a ledge's row of drops is one
+    CHECK(std::stoul(m[3]) >= 2);  // the walker cannot cross the gaps: the platforms are islands
 }
 
 TEST_CASE("--link-numbers draws each link's number beside it, and only there") {
@@ -261,7 +265,8 @@ TEST_CASE("--link-numbers draws each link's number beside it, and only there") {
     const json links = nl::test::parse_json_file(dir + "/links.json");
     for (const auto& l : links.at("links"))
         for (const char* key : {"start", "end", "apex"}) {
-            const float p[3] = {l.at(key).at(0).get<float>(), l.at(key).at(1).get<float>(), l.at(key).at(2).get<float>()};
+            const float p[3] = {l.at(key).at(0).get<float>(), l.at(key).at(1).get<float>(),
+                                l.at(key).at(2).get<float>()};
             link_points.push_back(camera.project(p));
         }
     size_t changed = 0, near_a_link = 0;

@@ -54,14 +54,13 @@ struct Options {
     double stall = 60;
 };
 
-
 float random_in(std::mt19937& rng, float lo, float hi) { return std::uniform_real_distribution<float>(lo, hi)(rng); }
 
 // The shared setup: a world, the level's navmesh and its generated links, polygon centres to aim at.
 struct Soak {
     nl_world* world = nullptr;
     nl_navmesh_id navmesh{};
-    nl_navmesh_id island{};                // 4 x 4 m, beside the level, joined to it by two cross links
+    nl_navmesh_id island{};                          // 4 x 4 m, beside the level, joined to it by two cross links
     std::array<float, 3> shore{}, island_landing{};  // the cross links' ends, on the level and the island
     std::vector<std::array<float, 3>> centres;
     std::atomic<bool> stop{false};
@@ -120,8 +119,8 @@ void step_crowd(Soak& s, Worker& me, const Options& o, Tally& tally, std::atomic
     std::mt19937 rng(21);
     std::vector<nl_agent_event> events;
     std::vector<nl_agent_info> infos;
-    const Clock::time_point end = Clock::now() + std::chrono::duration_cast<Clock::duration>(
-                                                     std::chrono::duration<double>(o.seconds));
+    const Clock::time_point end =
+        Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(o.seconds));
     for (uint64_t step = 0; step < o.steps && Clock::now() < end && soak.count() == 0; ++step) {
         me.doing = "nl_world_step";
         expect(nl_world_step(s.world, 1.0f / 30.0f), "nl_world_step");
@@ -130,13 +129,16 @@ void step_crowd(Soak& s, Worker& me, const Options& o, Tally& tally, std::atomic
         expect(nl_world_get_agent_events(s.world, nullptr, 0, &count), "nl_world_get_agent_events (count)");
         events.assign(count, nl_agent_event_init());
         // Other threads cannot step: the events stay until this thread's next step.
-        if (count && expect(nl_world_get_agent_events(s.world, events.data(), count, &count), "nl_world_get_agent_events")) {
+        if (count &&
+            expect(nl_world_get_agent_events(s.world, events.data(), count, &count), "nl_world_get_agent_events")) {
             for (const nl_agent_event& e : events) {
                 if (e.kind == NL_AGENT_EVENT_ARRIVED) ++tally.arrivals;
-                if (e.kind == NL_AGENT_EVENT_FAILED) ++tally.failures, ++tally.failed_because[e.reason <= NL_AGENT_REASON_CROWD ? e.reason : 0];
+                if (e.kind == NL_AGENT_EVENT_FAILED)
+                    ++tally.failures, ++tally.failed_because[e.reason <= NL_AGENT_REASON_CROWD ? e.reason : 0];
                 if (e.kind == NL_AGENT_EVENT_LINK_STARTED) ++tally.take_offs;
                 if (e.kind == NL_AGENT_EVENT_LINK_FINISHED) ++tally.landings;
-                if (e.kind == NL_AGENT_EVENT_REPLANNED) ++tally.replans[e.reason <= NL_AGENT_REASON_CROWD ? e.reason : 0];
+                if (e.kind == NL_AGENT_EVENT_REPLANNED)
+                    ++tally.replans[e.reason <= NL_AGENT_REASON_CROWD ? e.reason : 0];
                 if (e.kind == NL_AGENT_EVENT_WAITING) ++tally.waits;
                 if (e.kind == NL_AGENT_EVENT_WAITING && e.reason != NL_AGENT_REASON_CROWD)
                     fail("a WAITING event with reason " + std::to_string(e.reason));
@@ -244,7 +246,8 @@ bool add_island(Soak& s) {
     s.shore = s.centres.front();
     for (const auto& c : s.centres)
         if (c[0] < s.shore[0]) s.shore = c;
-    const float x0 = s.shore[0] - 20.0f, x1 = s.shore[0] - 16.0f, y = s.shore[1], z0 = s.shore[2] - 2.0f, z1 = s.shore[2] + 2.0f;
+    const float x0 = s.shore[0] - 20.0f, x1 = s.shore[0] - 16.0f, y = s.shore[1], z0 = s.shore[2] - 2.0f,
+                z1 = s.shore[2] + 2.0f;
     const float vertices[12] = {x0, y, z0, x0, y, z1, x1, y, z1, x1, y, z0};  // counter-clockwise from above
     const uint32_t indices[6] = {0, 1, 2, 0, 2, 3};
     nl_navmesh_def def = nl_default_navmesh_def();
@@ -258,7 +261,8 @@ bool add_island(Soak& s) {
     const float points[9] = {x0, y, z0, x1, y, z1, s.island_landing[0], y, s.island_landing[2]};
     const float box[3] = {1.0f, 2.0f, 1.0f};  // set_destination's reach, and more
     nl_nav_point found[3];
-    if (!expect(nl_navmesh_find_nearest(s.world, s.navmesh, points, 3, box, found), "nl_navmesh_find_nearest")) return false;
+    if (!expect(nl_navmesh_find_nearest(s.world, s.navmesh, points, 3, box, found), "nl_navmesh_find_nearest"))
+        return false;
     for (const nl_nav_point& p : found)
         if (p.found) fail("the island lies on the level's navmesh: a destination there is not looked for across");
     return true;
@@ -296,7 +300,8 @@ void send_across(Soak& s, Worker& me, std::atomic<uint64_t>& sent) {
         // NOT_FOUND: the editor removed the cross link to the island (or the agent stands on the
         // island, and the way back is gone); INVALID_HANDLE: the agent was removed meanwhile.
         const nl_status status = nl_agent_set_destination(s.world, agent, to.data());
-        if (expect(status, "nl_agent_set_destination (on the island)", {NL_STATUS_NOT_FOUND, NL_STATUS_INVALID_HANDLE})) {
+        if (expect(status, "nl_agent_set_destination (on the island)",
+                   {NL_STATUS_NOT_FOUND, NL_STATUS_INVALID_HANDLE})) {
             if (NL_SUCCEEDED(status)) ++sent;
             if (status == (NL_STATUS_FAILURE | NL_STATUS_NOT_FOUND)) {
                 me.doing = "nl_link_add (joining the island again)";
@@ -400,11 +405,16 @@ Options parse(int argc, char** argv) {
     for (int i = 1; i + 1 < argc; i += 2) {
         const std::string name = argv[i];
         const char* value = argv[i + 1];
-        if (name == "--agents") o.agents = uint32_t(std::strtoul(value, nullptr, 10));
-        else if (name == "--steps") o.steps = std::strtoull(value, nullptr, 10);
-        else if (name == "--seconds") o.seconds = std::strtod(value, nullptr);
-        else if (name == "--workers") o.workers = int32_t(std::strtol(value, nullptr, 10));
-        else if (name == "--stall") o.stall = std::strtod(value, nullptr);
+        if (name == "--agents")
+            o.agents = uint32_t(std::strtoul(value, nullptr, 10));
+        else if (name == "--steps")
+            o.steps = std::strtoull(value, nullptr, 10);
+        else if (name == "--seconds")
+            o.seconds = std::strtod(value, nullptr);
+        else if (name == "--workers")
+            o.workers = int32_t(std::strtol(value, nullptr, 10));
+        else if (name == "--stall")
+            o.stall = std::strtod(value, nullptr);
         else {
             std::fprintf(stderr, "navlink-agents-soak: unknown option %s\n", name.c_str());
             std::exit(2);
@@ -431,7 +441,8 @@ int main(int argc, char** argv) {
     if (!expect(nl_navmesh_build(s.world, &build, &s.navmesh), "nl_navmesh_build")) return 1;
     nl_link_generation_report report{};
     report.size = sizeof report;
-    expect(nl_navmesh_generate_links(s.world, s.navmesh, nullptr, nullptr, nullptr, &report), "nl_navmesh_generate_links");
+    expect(nl_navmesh_generate_links(s.world, s.navmesh, nullptr, nullptr, nullptr, &report),
+           "nl_navmesh_generate_links");
     nl_navmesh_info info{};
     info.size = sizeof info;
     expect(nl_navmesh_get_info(s.world, s.navmesh, &info), "nl_navmesh_get_info");
@@ -465,7 +476,8 @@ int main(int argc, char** argv) {
         requester{"the path requester"}, ferryman{"the island sender"};
     const Clock::time_point start = Clock::now();
     std::thread watchdog([&] {
-        nl::test::watch_workers("navlink-agents-soak", s.stop, {&stepper, &editor, &churner, &requester, &ferryman}, o.stall);
+        nl::test::watch_workers("navlink-agents-soak", s.stop, {&stepper, &editor, &churner, &requester, &ferryman},
+                                o.stall);
     });
     std::thread t_across(send_across, std::ref(s), std::ref(ferryman), std::ref(sent_across));
     std::thread t_edit(edit_links, std::ref(s), std::ref(editor), std::ref(edits));
@@ -479,25 +491,28 @@ int main(int argc, char** argv) {
     std::printf("  %llu steps (%llu agent-steps) in %.1f s with %llu link edits meanwhile\n",
                 (unsigned long long)steps_done.load(), (unsigned long long)tally.agent_steps, seconds,
                 (unsigned long long)edits.load());
-    std::printf("  %llu arrivals, %llu failures, %llu take-offs, %llu landings; replans: %llu destination, %llu link "
-                "gone, %llu world changed, %llu off path, %llu capabilities\n",
-                (unsigned long long)tally.arrivals, (unsigned long long)tally.failures,
-                (unsigned long long)tally.take_offs, (unsigned long long)tally.landings,
-                (unsigned long long)tally.replans[NL_AGENT_REASON_DESTINATION_SET],
-                (unsigned long long)tally.replans[NL_AGENT_REASON_LINK_GONE],
-                (unsigned long long)tally.replans[NL_AGENT_REASON_WORLD_CHANGED],
-                (unsigned long long)tally.replans[NL_AGENT_REASON_OFF_PATH],
-                (unsigned long long)tally.replans[NL_AGENT_REASON_CAPABILITIES_CHANGED]);
-    std::printf("  failures: %llu no path, %llu navmesh removed, %llu given up in counterflow, %llu other; %llu waits for room\n",
-                (unsigned long long)tally.failed_because[NL_AGENT_REASON_NO_PATH],
-                (unsigned long long)tally.failed_because[NL_AGENT_REASON_NAVMESH_REMOVED],
-                (unsigned long long)tally.failed_because[NL_AGENT_REASON_CROWD],
-                (unsigned long long)(tally.failures - tally.failed_because[NL_AGENT_REASON_NO_PATH] -
-                                     tally.failed_because[NL_AGENT_REASON_NAVMESH_REMOVED] -
-                                     tally.failed_because[NL_AGENT_REASON_CROWD]),
-                (unsigned long long)tally.waits);
+    std::printf(
+        "  %llu arrivals, %llu failures, %llu take-offs, %llu landings; replans: %llu destination, %llu link "
+        "gone, %llu world changed, %llu off path, %llu capabilities\n",
+        (unsigned long long)tally.arrivals, (unsigned long long)tally.failures, (unsigned long long)tally.take_offs,
+        (unsigned long long)tally.landings, (unsigned long long)tally.replans[NL_AGENT_REASON_DESTINATION_SET],
+        (unsigned long long)tally.replans[NL_AGENT_REASON_LINK_GONE],
+        (unsigned long long)tally.replans[NL_AGENT_REASON_WORLD_CHANGED],
+        (unsigned long long)tally.replans[NL_AGENT_REASON_OFF_PATH],
+        (unsigned long long)tally.replans[NL_AGENT_REASON_CAPABILITIES_CHANGED]);
+    std::printf(
+        "  failures: %llu no path, %llu navmesh removed, %llu given up in counterflow, %llu other; %llu waits for "
+        "room\n",
+        (unsigned long long)tally.failed_because[NL_AGENT_REASON_NO_PATH],
+        (unsigned long long)tally.failed_because[NL_AGENT_REASON_NAVMESH_REMOVED],
+        (unsigned long long)tally.failed_because[NL_AGENT_REASON_CROWD],
+        (unsigned long long)(tally.failures - tally.failed_because[NL_AGENT_REASON_NO_PATH] -
+                             tally.failed_because[NL_AGENT_REASON_NAVMESH_REMOVED] -
+                             tally.failed_because[NL_AGENT_REASON_CROWD]),
+        (unsigned long long)tally.waits);
     // A hundred steps give the crowd time to reach links the editor changes.
-    if (steps_done >= 100 && tally.replans[NL_AGENT_REASON_LINK_GONE] + tally.replans[NL_AGENT_REASON_WORLD_CHANGED] == 0)
+    if (steps_done >= 100 &&
+        tally.replans[NL_AGENT_REASON_LINK_GONE] + tally.replans[NL_AGENT_REASON_WORLD_CHANGED] == 0)
         fail("the link edits never reached an agent's path");
     if (steps_done >= 100 && tally.take_offs == 0) fail("no agent took a link");
     std::printf("  %llu agents sent to the island (a destination on another navmesh, over cross links)\n",

@@ -26,7 +26,8 @@ void churn(const char* kind, int count, double max_bytes_per_cycle, const std::f
         const long long before = heap_in_use();
         for (int i = 0; i < count; ++i) {
             if (!cycle()) {
-                std::fprintf(stderr, "navlink-churn-memory: %s: a call failed: %s\n", kind, nl_get_last_error_message());
+                std::fprintf(stderr, "navlink-churn-memory: %s: a call failed: %s\n", kind,
+                             nl_get_last_error_message());
                 ++failures;
                 return;
             }
@@ -56,14 +57,16 @@ int main() {
 
     churn("navmesh add/remove", 50000, 2.0, [&] {
         nl_navmesh_id id{};
-        return nl_navmesh_add(world, &cells.def, &id) == NL_STATUS_SUCCESS && nl_navmesh_remove(world, id) == NL_STATUS_SUCCESS;
+        return nl_navmesh_add(world, &cells.def, &id) == NL_STATUS_SUCCESS &&
+               nl_navmesh_remove(world, id) == NL_STATUS_SUCCESS;
     });
     churn("link add/remove", 50000, 2.0, [&] {
         nl_link_def link = nl_default_link_def();
         link.start[0] = 0.5f, link.start[2] = 0.5f;
         link.end[0] = 3.5f, link.end[2] = 3.5f;
         nl_link_id id{};
-        return nl_link_add(world, navmesh, &link, &id) == NL_STATUS_SUCCESS && nl_link_remove(world, id) == NL_STATUS_SUCCESS;
+        return nl_link_add(world, navmesh, &link, &id) == NL_STATUS_SUCCESS &&
+               nl_link_remove(world, id) == NL_STATUS_SUCCESS;
     });
     const float floor[] = {0, 0, 0, 0, 0, 4, 4, 0, 0};
     const uint32_t triangle[] = {0, 1, 2};
@@ -84,7 +87,8 @@ int main() {
         nl_path_budget one = nl_default_path_budget();
         one.max_requests = 1;
         return nl_path_request(world, &request, &ticket) == NL_STATUS_SUCCESS &&
-               nl_path_process(world, &one, &done) == NL_STATUS_SUCCESS && nl_path_release(world, ticket) == NL_STATUS_SUCCESS;
+               nl_path_process(world, &one, &done) == NL_STATUS_SUCCESS &&
+               nl_path_release(world, ticket) == NL_STATUS_SUCCESS;
     });
     // Released before anything plans them (no path workers, no nl_path_process): nothing may stay.
     churn("path request/release, never planned", 50000, 2.0, [&] {
@@ -93,7 +97,8 @@ int main() {
         request.start[0] = 0.5f, request.start[2] = 0.5f;
         request.goal[0] = 3.5f, request.goal[2] = 3.5f;
         nl_path_ticket ticket{};
-        return nl_path_request(world, &request, &ticket) == NL_STATUS_SUCCESS && nl_path_release(world, ticket) == NL_STATUS_SUCCESS;
+        return nl_path_request(world, &request, &ticket) == NL_STATUS_SUCCESS &&
+               nl_path_release(world, ticket) == NL_STATUS_SUCCESS;
     });
     nl_world_destroy(world);
     std::printf("failures=%d\n", failures);

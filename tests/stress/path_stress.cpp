@@ -49,7 +49,8 @@ nl_navmesh_id add_navmesh(nl_world* world) {
     for (std::string& row : rows) row[kSide / 2] = '#';
     const nl::test::CellNavmesh cells(rows, 0.0f);
     nl_navmesh_id id{};
-    if (nl_navmesh_add(world, &cells.def, &id) != NL_STATUS_SUCCESS) fail(std::string("nl_navmesh_add: ") + nl_get_last_error_message());
+    if (nl_navmesh_add(world, &cells.def, &id) != NL_STATUS_SUCCESS)
+        fail(std::string("nl_navmesh_add: ") + nl_get_last_error_message());
     return id;
 }
 
@@ -67,7 +68,8 @@ void edit_links(nl_world* world, nl_navmesh_id navmesh, const std::atomic<bool>&
             def.end[0] = kSide / 2 + 1.5f, def.end[2] = z;
             def.bidirectional = uint8_t(rng() % 2);
             nl_link_id id{};
-            if (nl_link_add(world, navmesh, &def, &id) != NL_STATUS_SUCCESS) fail(std::string("nl_link_add: ") + nl_get_last_error_message());
+            if (nl_link_add(world, navmesh, &def, &id) != NL_STATUS_SUCCESS)
+                fail(std::string("nl_link_add: ") + nl_get_last_error_message());
             live.push_back(id);
         } else if (rng() % 2 == 0) {
             nl_link def = nl_link_init();
@@ -134,8 +136,8 @@ int main() {
     std::thread editor(edit_links, world, navmesh, std::cref(stop_editing), std::ref(edits));
     std::vector<std::thread> submitters;
     for (int t = 0; t < kSubmitters; ++t)
-        submitters.emplace_back(submit, world, navmesh, std::ref(slots), t * (kRequests / kSubmitters), kRequests / kSubmitters,
-                                unsigned(100 + t));
+        submitters.emplace_back(submit, world, navmesh, std::ref(slots), t * (kRequests / kSubmitters),
+                                kRequests / kSubmitters, unsigned(100 + t));
     for (std::thread& t : submitters) t.join();
 
     // Every request finishes: wait for the queue to drain (bounded, so a lost request fails the test).
@@ -161,7 +163,8 @@ int main() {
     for (int i = 0; i < kRequests; ++i) {
         Slot& slot = slots[i];
         const int completions = slot.completions.load(std::memory_order_acquire);
-        if (completions != 1) fail("request " + std::to_string(i) + " finished " + std::to_string(completions) + " times");
+        if (completions != 1)
+            fail("request " + std::to_string(i) + " finished " + std::to_string(completions) + " times");
         const uint32_t outcome = slot.outcome.load();
         if (outcome > NL_PATH_FAILED) continue;
         ++by_outcome[outcome];
@@ -180,9 +183,12 @@ int main() {
         nl_path_result result{};
         result.size = sizeof result;
         uint32_t count = 0;
-        const nl_status status = nl_path_get_result(world, slot.ticket, &result, points.data(), uint32_t(points.size()), &count);
-        if (NL_FAILED(status) || result.outcome != outcome) fail("request " + std::to_string(i) + ": result disagrees with its callback");
-        if (outcome == NL_PATH_COMPLETE && (count < 2 || std::fabs(points[count - 1].position[0] - result.goal[0]) > 1e-4f))
+        const nl_status status =
+            nl_path_get_result(world, slot.ticket, &result, points.data(), uint32_t(points.size()), &count);
+        if (NL_FAILED(status) || result.outcome != outcome)
+            fail("request " + std::to_string(i) + ": result disagrees with its callback");
+        if (outcome == NL_PATH_COMPLETE &&
+            (count < 2 || std::fabs(points[count - 1].position[0] - result.goal[0]) > 1e-4f))
             fail("request " + std::to_string(i) + ": a complete path that does not end at the goal");
         if (nl_path_release(world, slot.ticket) != NL_STATUS_SUCCESS) fail("nl_path_release failed");
     }
@@ -190,8 +196,9 @@ int main() {
     if (stats.unreleased != 0) fail(std::to_string(stats.unreleased) + " tickets left unreleased");
     nl_world_destroy(world);
 
-    std::printf("requests=%d seconds=%.2f link_edits=%d complete=%d partial=%d no_path=%d cancelled=%d failed=%d failures=%d\n",
-                kRequests, seconds, edits, by_outcome[NL_PATH_COMPLETE], by_outcome[NL_PATH_PARTIAL],
-                by_outcome[NL_PATH_NO_PATH], by_outcome[NL_PATH_CANCELLED], by_outcome[NL_PATH_FAILED], failures.load());
+    std::printf(
+        "requests=%d seconds=%.2f link_edits=%d complete=%d partial=%d no_path=%d cancelled=%d failed=%d failures=%d\n",
+        kRequests, seconds, edits, by_outcome[NL_PATH_COMPLETE], by_outcome[NL_PATH_PARTIAL],
+        by_outcome[NL_PATH_NO_PATH], by_outcome[NL_PATH_CANCELLED], by_outcome[NL_PATH_FAILED], failures.load());
     return failures.load() == 0 ? 0 : 1;
 }

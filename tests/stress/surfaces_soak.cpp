@@ -71,7 +71,9 @@ float random_in(std::mt19937& rng, float lo, float hi) { return std::uniform_rea
 
 // Where moving surface `s` is `t` seconds in, computed from t alone (never accumulated).
 RigidPose pose_at(int s, double t) {
-    if (s == 0) return RigidPose::at(float(20.0 + 10.0 * std::sin(0.5 * t)), 3.0f, -20.0f, 0.0f, float(0.04 * std::sin(1.3 * t)));
+    if (s == 0)
+        return RigidPose::at(float(20.0 + 10.0 * std::sin(0.5 * t)), 3.0f, -20.0f, 0.0f,
+                             float(0.04 * std::sin(1.3 * t)));
     if (s == 1) return RigidPose::at(0.0f, 1.5f, 20.0f, float(std::fmod(0.8 * t, 2.0 * M_PI)));
     return RigidPose::at(-25.0f, float(1.0 + 3.0 * (1.0 - std::cos(0.9 * t))), 0.0f, 0.0f);
 }
@@ -81,7 +83,7 @@ struct Soak {
     nl_mesh_id meshes[kSurfaces]{};
     nl_navmesh_id navmeshes[kSurfaces + 1]{};
     float box_min[kSurfaces + 1][3]{}, box_max[kSurfaces + 1][3]{};  // each navmesh's, in its own space
-    std::vector<nl_agent_id> agents;  // never removed: the path threads read them
+    std::vector<nl_agent_id> agents;                                 // never removed: the path threads read them
     std::vector<int> agent_surfaces;
     std::atomic<bool> stop{false};
     Clock::time_point start = Clock::now();
@@ -129,7 +131,8 @@ nl::levelgen::GeneratedLevel disc_mesh(float radius, uint32_t sides) {
         level.positions.insert(level.positions.end(), {radius * std::cos(a), -0.5f, radius * std::sin(a)});
     }
     for (uint32_t k = 0; k < sides; ++k) {
-        const uint32_t top = 2 + 2 * k, bottom = top + 1, next_top = 2 + 2 * ((k + 1) % sides), next_bottom = next_top + 1;
+        const uint32_t top = 2 + 2 * k, bottom = top + 1, next_top = 2 + 2 * ((k + 1) % sides),
+                       next_bottom = next_top + 1;
         level.indices.insert(level.indices.end(), {0, next_top, top, 1, bottom, next_bottom});
         level.indices.insert(level.indices.end(), {top, next_top, next_bottom, top, next_bottom, bottom});
     }
@@ -153,7 +156,8 @@ bool set_up(Soak& s, const Options& o) {
     lift.add_box({{0, -0.5f, 0}, {6, 0, 6}});
     nl_mesh_id floor_mesh{};
     if (!add_mesh(s, floor, 0, &floor_mesh) || !add_mesh(s, shuttle, NL_MESH_MOVABLE, &s.meshes[0]) ||
-        !add_mesh(s, disc_mesh(6.0f, 24), NL_MESH_MOVABLE, &s.meshes[1]) || !add_mesh(s, lift, NL_MESH_MOVABLE, &s.meshes[2]))
+        !add_mesh(s, disc_mesh(6.0f, 24), NL_MESH_MOVABLE, &s.meshes[1]) ||
+        !add_mesh(s, lift, NL_MESH_MOVABLE, &s.meshes[2]))
         return false;
 
     nl_navmesh_build_def build = nl_default_navmesh_build_def();
@@ -190,7 +194,8 @@ bool set_up(Soak& s, const Options& o) {
         std::memcpy(s.box_max[k], info.bounds_max, sizeof info.bounds_max);
     }
     for (int k = 0; k < kSurfaces; ++k)
-        if (!expect(nl_mesh_set_transform(s.world, s.meshes[k], pose_at(k, 0.0).m), "nl_mesh_set_transform")) return false;
+        if (!expect(nl_mesh_set_transform(s.world, s.meshes[k], pose_at(k, 0.0).m), "nl_mesh_set_transform"))
+            return false;
     return true;
 }
 
@@ -250,7 +255,8 @@ void check_path(const Soak& s, int surface, const nl_path_result& result, const 
                  std::to_string(p.carrier_position[2]) + ")");
         if (k == 0) continue;
         const nl_path_point& q = points[k - 1];
-        const float in_world = distance(p.position, q.position), on_surface = distance(p.carrier_position, q.carrier_position);
+        const float in_world = distance(p.position, q.position),
+                    on_surface = distance(p.carrier_position, q.carrier_position);
         if (std::fabs(in_world - on_surface) > 1e-3f)
             fail(std::string("a path on the ") + kNames[surface] + " has a segment of " + std::to_string(on_surface) +
                  " m on the surface and " + std::to_string(in_world) + " m in the world");
@@ -291,7 +297,8 @@ void read_beside(Soak& s, Worker& me, std::mt19937& rng, const nl_path_request_d
     me.doing = "nl_agent_get_corners";
     const size_t k = s.agents.empty() ? 0 : rng() % s.agents.size();
     uint32_t count = 0;
-    if (!s.agents.empty() && expect(nl_agent_get_corners(s.world, s.agents[k], points.data(), uint32_t(points.size()), &count),
+    if (!s.agents.empty() &&
+        expect(nl_agent_get_corners(s.world, s.agents[k], points.data(), uint32_t(points.size()), &count),
                "nl_agent_get_corners", {NL_STATUS_BUFFER_TOO_SMALL})) {
         for (uint32_t c = 0; c < count; ++c)
             if (!s.inside(s.agent_surfaces[k], points[c].carrier_position))
@@ -324,8 +331,8 @@ void request_paths(Soak& s, Worker& me, unsigned seed, PathTally& tally) {
             me.doing = "nl_path_find";
             nl_path_result result = nl_path_result_init();
             uint32_t count = 0;
-            if (expect(nl_path_find(s.world, &def, &result, points.data(), uint32_t(points.size()), &count), "nl_path_find",
-                       {NL_STATUS_BUFFER_TOO_SMALL})) {
+            if (expect(nl_path_find(s.world, &def, &result, points.data(), uint32_t(points.size()), &count),
+                       "nl_path_find", {NL_STATUS_BUFFER_TOO_SMALL})) {
                 ++tally.found;
                 check_path(s, surface, result, points, count, tally);
             }
@@ -380,7 +387,8 @@ void step_agents(Soak& s, Worker& me, const Options& o, AgentTally& tally) {
         uint32_t count = 0;
         expect(nl_world_get_agent_events(s.world, nullptr, 0, &count), "nl_world_get_agent_events (count)");
         events.assign(count, nl_agent_event_init());
-        if (count && expect(nl_world_get_agent_events(s.world, events.data(), count, &count), "nl_world_get_agent_events")) {
+        if (count &&
+            expect(nl_world_get_agent_events(s.world, events.data(), count, &count), "nl_world_get_agent_events")) {
             for (const nl_agent_event& e : events) {
                 if (e.kind == NL_AGENT_EVENT_ARRIVED) ++tally.arrivals;
                 if (e.kind == NL_AGENT_EVENT_FAILED) ++tally.failures;
@@ -413,9 +421,10 @@ void step_agents(Soak& s, Worker& me, const Options& o, AgentTally& tally) {
                      std::to_string(a.carrier_position[0]) + ", " + std::to_string(a.carrier_position[1]) + ", " +
                      std::to_string(a.carrier_position[2]) + ") in its space, state " + std::to_string(a.state));
             tally.placed += surface < kSurfaces && history;
-            if (surface < kSurfaces && history && !placed_by_a_move(s, surface, a.position, a.carrier_position, first, after))
-                fail(std::string("an agent on the ") + kNames[surface] + " at (" + std::to_string(a.position[0]) + ", " +
-                     std::to_string(a.position[1]) + ", " + std::to_string(a.position[2]) +
+            if (surface < kSurfaces && history &&
+                !placed_by_a_move(s, surface, a.position, a.carrier_position, first, after))
+                fail(std::string("an agent on the ") + kNames[surface] + " at (" + std::to_string(a.position[0]) +
+                     ", " + std::to_string(a.position[1]) + ", " + std::to_string(a.position[2]) +
                      ") is not its surface position moved to where the surface was during the read (moves " +
                      std::to_string(first) + " to " + std::to_string(after) + ")");
             if (surface == kSurfaces && distance(a.position, a.carrier_position) != 0.0f)
@@ -432,10 +441,14 @@ Options parse(int argc, char** argv) {
     for (int i = 1; i + 1 < argc; i += 2) {
         const std::string name = argv[i];
         const char* value = argv[i + 1];
-        if (name == "--seconds") o.seconds = std::strtod(value, nullptr);
-        else if (name == "--agents") o.agents = uint32_t(std::strtoul(value, nullptr, 10));
-        else if (name == "--workers") o.workers = int32_t(std::strtol(value, nullptr, 10));
-        else if (name == "--stall") o.stall = std::strtod(value, nullptr);
+        if (name == "--seconds")
+            o.seconds = std::strtod(value, nullptr);
+        else if (name == "--agents")
+            o.agents = uint32_t(std::strtoul(value, nullptr, 10));
+        else if (name == "--workers")
+            o.workers = int32_t(std::strtol(value, nullptr, 10));
+        else if (name == "--stall")
+            o.stall = std::strtod(value, nullptr);
         else {
             std::fprintf(stderr, "usage: navlink-surfaces-soak [--seconds S] [--agents N] [--workers N] [--stall S]\n");
             std::exit(2);
@@ -470,8 +483,9 @@ int main(int argc, char** argv) {
         if (placed < o.agents)
             fail(std::string("only ") + std::to_string(placed) + " agents could be placed on the " + kNames[surface]);
     }
-    std::printf("navlink-surfaces-soak: %u agents on each of the shuttle, disc, lift and floor, %d workers, 2 path workers\n",
-                o.agents, o.workers);
+    std::printf(
+        "navlink-surfaces-soak: %u agents on each of the shuttle, disc, lift and floor, %d workers, 2 path workers\n",
+        o.agents, o.workers);
 
     std::atomic<uint64_t> moves{0};
     std::atomic<bool> joined{false};  // the watchdog also sees the threads finish their last requests
@@ -481,7 +495,8 @@ int main(int argc, char** argv) {
     Worker requesters[4] = {{"path requester 1"}, {"path requester 2"}, {"path requester 3"}, {"path requester 4"}};
     std::thread watchdog([&] {
         nl::test::watch_workers("navlink-surfaces-soak", joined,
-                                {&stepper, &mover, &requesters[0], &requesters[1], &requesters[2], &requesters[3]}, o.stall);
+                                {&stepper, &mover, &requesters[0], &requesters[1], &requesters[2], &requesters[3]},
+                                o.stall);
     });
     std::thread t_move(move_surfaces, std::ref(s), std::ref(mover), std::ref(moves));
     std::vector<std::thread> t_paths;
@@ -494,17 +509,20 @@ int main(int argc, char** argv) {
     joined = true;
     watchdog.join();
 
-    std::printf("  %llu steps in %.1f s, %llu surface moves meanwhile; %llu agents checked on their navmesh, %llu on a "
-                "moving one where the surface was during the read; %llu arrivals, %llu failures\n",
-                (unsigned long long)agents.steps, s.seconds(), (unsigned long long)moves.load(),
-                (unsigned long long)agents.checked, (unsigned long long)agents.placed, (unsigned long long)agents.arrivals,
-                (unsigned long long)agents.failures);
-    std::printf("  paths: %llu found at once, %llu queued, %llu checked, %llu with an end off the moved navmesh; %llu "
-                "agent corners checked beside them\n",
-                (unsigned long long)paths.found.load(), (unsigned long long)paths.queued.load(),
-                (unsigned long long)paths.checked.load(), (unsigned long long)paths.off.load(),
-                (unsigned long long)paths.corners.load());
-    if (agents.steps >= 10 && o.agents > 0 && (agents.checked == 0 || agents.placed == 0)) fail("no agent was ever checked");
+    std::printf(
+        "  %llu steps in %.1f s, %llu surface moves meanwhile; %llu agents checked on their navmesh, %llu on a "
+        "moving one where the surface was during the read; %llu arrivals, %llu failures\n",
+        (unsigned long long)agents.steps, s.seconds(), (unsigned long long)moves.load(),
+        (unsigned long long)agents.checked, (unsigned long long)agents.placed, (unsigned long long)agents.arrivals,
+        (unsigned long long)agents.failures);
+    std::printf(
+        "  paths: %llu found at once, %llu queued, %llu checked, %llu with an end off the moved navmesh; %llu "
+        "agent corners checked beside them\n",
+        (unsigned long long)paths.found.load(), (unsigned long long)paths.queued.load(),
+        (unsigned long long)paths.checked.load(), (unsigned long long)paths.off.load(),
+        (unsigned long long)paths.corners.load());
+    if (agents.steps >= 10 && o.agents > 0 && (agents.checked == 0 || agents.placed == 0))
+        fail("no agent was ever checked");
     if (agents.steps >= 10 && paths.checked == 0) fail("no path on a moving navmesh was checked");
     nl_world_destroy(s.world);
     if (soak.count()) {

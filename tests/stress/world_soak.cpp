@@ -45,14 +45,13 @@ bool expect(nl_status status, const char* call, std::initializer_list<nl_status>
 }
 using Worker = nl::test::SoakWorker;
 
-
 struct Round {
     nl_world* world = nullptr;
     std::atomic<uint64_t> logged{0};  // failures the world's log callback received
-    nl_navmesh_id navmesh{};     // built by Recast from the level, for the default Recast agent
-    nl_navmesh_id thin{};        // built for a thinner agent: a second navmesh to generate
-    nl_mesh_id platform{};       // movable
-    nl_mesh_id crate{};          // static, moved anyway (its vertices are uploaded again)
+    nl_navmesh_id navmesh{};          // built by Recast from the level, for the default Recast agent
+    nl_navmesh_id thin{};             // built for a thinner agent: a second navmesh to generate
+    nl_mesh_id platform{};            // movable
+    nl_mesh_id crate{};               // static, moved anyway (its vertices are uploaded again)
     std::atomic<bool> stop{false};
 };
 
@@ -82,7 +81,8 @@ void query(nl_world* world, std::mt19937& rng) {
     expect(nl_world_cast_rays(world, rays.data(), uint32_t(rays.size()), hits.data()), "nl_world_cast_rays");
     std::vector<nl_segment> segments(64);
     for (nl_segment& s : segments) {
-        s = nl_segment{{random_in(rng, -2, 38), 1, random_in(rng, -2, 12)}, {random_in(rng, -2, 38), 1, random_in(rng, -2, 12)}};
+        s = nl_segment{{random_in(rng, -2, 38), 1, random_in(rng, -2, 12)},
+                       {random_in(rng, -2, 38), 1, random_in(rng, -2, 12)}};
     }
     std::vector<uint8_t> blocked(segments.size());
     expect(nl_world_segments_blocked(world, segments.data(), uint32_t(segments.size()), blocked.data()),
@@ -126,7 +126,8 @@ void generate(Round& r, Worker& me, nl_navmesh_id navmesh, nl_navmesh_id other) 
                    "nl_navmesh_generate_links");
         } else {
             me.doing = "nl_navmesh_generate_links";
-            expect(nl_navmesh_generate_links(r.world, navmesh, &settings, nullptr, nullptr, nullptr), "nl_navmesh_generate_links");
+            expect(nl_navmesh_generate_links(r.world, navmesh, &settings, nullptr, nullptr, nullptr),
+                   "nl_navmesh_generate_links");
         }
         ++me.steps;
     }
@@ -159,7 +160,8 @@ void edit_level(Round& r, Worker& me) {
         if (added.size() < 4 && rng() % 2) {
             me.doing = "nl_mesh_add";
             const float x = random_in(rng, 0, 30), z = random_in(rng, 0, 8);
-            added.push_back(add_box(r.world, {{x, 20, z}, {x + 0.5f, 20.5f, z + 0.5f}}, rng() % 2 ? NL_MESH_MOVABLE : 0));
+            added.push_back(
+                add_box(r.world, {{x, 20, z}, {x + 0.5f, 20.5f, z + 0.5f}}, rng() % 2 ? NL_MESH_MOVABLE : 0));
         } else if (!added.empty()) {
             me.doing = "nl_mesh_remove";
             expect(nl_mesh_remove(r.world, added.back()), "nl_mesh_remove");
@@ -223,7 +225,8 @@ void edit_links(Round& r, Worker& me) {
                 status = nl_navmesh_save_links_json(r.world, r.navmesh, json.data(), json.size(), &length);
             }
             if (expect(status, "nl_navmesh_save_links_json")) {
-                expect(nl_navmesh_load_links_json(r.world, r.navmesh, json.data(), length, 0, nullptr), "nl_navmesh_load_links_json");
+                expect(nl_navmesh_load_links_json(r.world, r.navmesh, json.data(), length, 0, nullptr),
+                       "nl_navmesh_load_links_json");
                 live.clear();
             }
         }
@@ -305,7 +308,8 @@ void request_paths(Round& r, Worker& me, unsigned seed) {
                     nl_path_result result{};
                     result.size = sizeof result;
                     uint32_t count = 0;
-                    expect(nl_path_get_result(r.world, tickets[k], &result, points.data(), uint32_t(points.size()), &count),
+                    expect(nl_path_get_result(r.world, tickets[k], &result, points.data(), uint32_t(points.size()),
+                                              &count),
                            "nl_path_get_result", {NL_STATUS_BUFFER_TOO_SMALL});
                 }
                 expect(nl_path_release(r.world, tickets[k]), "nl_path_release");
@@ -361,7 +365,8 @@ void churn_navmeshes(Round& r, Worker& me) {
     for (const auto& c : done) {
         const auto until = Clock::now() + std::chrono::seconds(60);
         while (c->calls.load() == 0 && Clock::now() < until) std::this_thread::sleep_for(std::chrono::milliseconds(1));
-        if (c->calls.load() != 1) fail("a request on a removed navmesh called back " + std::to_string(c->calls.load()) + " times");
+        if (c->calls.load() != 1)
+            fail("a request on a removed navmesh called back " + std::to_string(c->calls.load()) + " times");
     }
 }
 
@@ -395,14 +400,18 @@ void destroy_with_requests_queued(Round& r) {
         def.callback = on_done;
         def.user = &c;
         nl_path_ticket ticket{};
-        if (expect(nl_path_request(r.world, &def, &ticket), "nl_path_request (before destroy)")) ++accepted;
-        else c.calls = 1;
+        if (expect(nl_path_request(r.world, &def, &ticket), "nl_path_request (before destroy)"))
+            ++accepted;
+        else
+            c.calls = 1;
     }
     nl_world_destroy(r.world);
     r.world = nullptr;
     int wrong = 0;
     for (const Completion& c : done) wrong += c.calls.load() != 1;
-    if (wrong) fail(std::to_string(wrong) + " of " + std::to_string(accepted) + " requests queued at destroy did not call back once");
+    if (wrong)
+        fail(std::to_string(wrong) + " of " + std::to_string(accepted) +
+             " requests queued at destroy did not call back once");
 }
 
 // Runs one round; aborts the process when a thread stalls.
@@ -448,8 +457,8 @@ void run_round(int32_t workers, double seconds, double stall_seconds) {
             all_done = all_done && finished;
             if (steps != last[i] || finished) last[i] = steps, moved[i] = now;
             if (std::chrono::duration<double>(now - moved[i]).count() > stall_seconds) {
-                std::fprintf(stderr, "navlink-world-soak: workers=%d: thread '%s' made no progress for %.0f s, in %s\n", workers,
-                             workers_state[i]->name, stall_seconds, workers_state[i]->doing.load());
+                std::fprintf(stderr, "navlink-world-soak: workers=%d: thread '%s' made no progress for %.0f s, in %s\n",
+                             workers, workers_state[i]->name, stall_seconds, workers_state[i]->doing.load());
                 stalled = true;
             }
         }
@@ -467,8 +476,10 @@ void run_round(int32_t workers, double seconds, double stall_seconds) {
         counts += std::string(" ") + w->name + "=" + std::to_string(w->steps.load());
     }
     destroy_with_requests_queued(r);
-    std::printf("workers=%d logged=%llu seconds=%.1f steps=%llu:%s\n", workers, static_cast<unsigned long long>(r.logged.load()), std::chrono::duration<double>(Clock::now() - begin).count(),
-                static_cast<unsigned long long>(total), counts.c_str());
+    std::printf("workers=%d logged=%llu seconds=%.1f steps=%llu:%s\n", workers,
+                static_cast<unsigned long long>(r.logged.load()),
+                std::chrono::duration<double>(Clock::now() - begin).count(), static_cast<unsigned long long>(total),
+                counts.c_str());
     for (const auto& w : workers_state) {
         if (w->steps == 0) fail(std::string("thread '") + w->name + "' did nothing");
     }
@@ -481,8 +492,10 @@ int main(int argc, char** argv) {
     std::vector<int32_t> worker_counts = {2, NL_WORKERS_AUTO, 1, 3};
     for (int i = 1; i + 1 < argc; i += 2) {
         const std::string option = argv[i];
-        if (option == "--seconds") seconds = std::atof(argv[i + 1]);
-        else if (option == "--stall") stall = std::atof(argv[i + 1]);
+        if (option == "--seconds")
+            seconds = std::atof(argv[i + 1]);
+        else if (option == "--stall")
+            stall = std::atof(argv[i + 1]);
         else if (option == "--workers") {
             worker_counts.clear();
             for (const char* p = argv[i + 1]; *p;) {

@@ -49,7 +49,8 @@ NavMeshInput input_of(const nl_navmesh_def& def) {
     in.indices.assign(def.indices, def.indices + index_count);
     if (def.areas) in.areas.assign(def.areas, def.areas + def.polygon_count);
     in.weld_tolerance = def.weld_tolerance;
-    in.agent_type = AgentType{def.agent_type.radius, def.agent_type.height, def.agent_type.max_climb, def.agent_type.max_slope};
+    in.agent_type =
+        AgentType{def.agent_type.radius, def.agent_type.height, def.agent_type.max_climb, def.agent_type.max_slope};
     if (def.detail_triangle_starts) {
         in.detail_starts.assign(def.detail_triangle_starts, def.detail_triangle_starts + def.polygon_count + 1);
         for (uint32_t i = 0; i < def.detail_vertex_count; ++i)
@@ -81,7 +82,8 @@ public:
         nl_navmesh_build_def def{};
         def.size = sizeof def;
         def.builder = description_.name.c_str();
-        def.agent_type = nl_agent_type{request.agent_type.radius, request.agent_type.height, request.agent_type.max_climb, request.agent_type.max_slope};
+        def.agent_type = nl_agent_type{request.agent_type.radius, request.agent_type.height,
+                                       request.agent_type.max_climb, request.agent_type.max_slope};
         def.settings = request.builder_settings;
         def.settings_json = request.settings_json;
         def.settings_json_length = request.settings_json_length;
@@ -128,13 +130,15 @@ private:
     }
 
     // As the C layer's host table (capi/src/plugin_host.cpp): counts always, both buffers or none.
-    static nl_status level_triangles(void* context, float* vertices, uint32_t vertex_capacity, uint32_t* out_vertex_count,
-                                     uint32_t* indices, uint32_t triangle_capacity, uint32_t* out_triangle_count) {
+    static nl_status level_triangles(void* context, float* vertices, uint32_t vertex_capacity,
+                                     uint32_t* out_vertex_count, uint32_t* indices, uint32_t triangle_capacity,
+                                     uint32_t* out_triangle_count) {
         const TriangleMesh level = static_cast<Call*>(context)->world->level().world_triangles();
         if (out_vertex_count) *out_vertex_count = static_cast<uint32_t>(level.vertices.size());
         if (out_triangle_count) *out_triangle_count = static_cast<uint32_t>(level.triangles.size());
         if (vertex_capacity == 0 && triangle_capacity == 0) return NL_STATUS_SUCCESS;
-        if (!vertices || !indices || level.vertices.size() > vertex_capacity || level.triangles.size() > triangle_capacity)
+        if (!vertices || !indices || level.vertices.size() > vertex_capacity ||
+            level.triangles.size() > triangle_capacity)
             return NL_STATUS_FAILURE | NL_STATUS_BUFFER_TOO_SMALL;
         for (size_t i = 0; i < level.vertices.size(); ++i)
             for (int k = 0; k < 3; ++k) vertices[3 * i + k] = level.vertices[i][k];

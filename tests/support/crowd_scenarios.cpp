@@ -48,12 +48,14 @@ NavMeshInput rooms_with_door(float half, float door, float wall, float radius) {
 
 CrowdScenario one_point(int count, float distance, bool quarter) {
     CrowdScenario s;
-    s.name = count == 2 ? (quarter ? "one point, 2 at 90 degrees" : "one point, 2 head-on") : "one point, " + std::to_string(count) + " in a ring";
+    s.name = count == 2 ? (quarter ? "one point, 2 at 90 degrees" : "one point, 2 head-on")
+                        : "one point, " + std::to_string(count) + " in a ring";
     const float half = distance + 4.0f;
     s.navmesh = open_floor(half, s.radius);
     s.boxes = {{Vec3(-half, -1.0f, -half), Vec3(half, 0.0f, half)}};
     for (int k = 0; k < count; ++k) {
-        const float angle = (count == 2 && quarter) ? float(k) * float(M_PI) / 2 : 2.0f * float(M_PI) * float(k) / float(count);
+        const float angle =
+            (count == 2 && quarter) ? float(k) * float(M_PI) / 2 : 2.0f * float(M_PI) * float(k) / float(count);
         s.agents.push_back({Vec3(distance * std::cos(angle), 0.0f, distance * std::sin(angle)), Vec3::Zero()});
     }
     s.seconds = 10.0f + float(count);
@@ -85,8 +87,9 @@ CrowdScenario door_counterflow(int per_side, float door, bool both_ways, float r
 
 CrowdScenario corridor(int per_end, float width, bool crossing) {
     CrowdScenario s;
-    s.name = std::string(crossing ? "corridors crossing at 90 degrees, " : "corridor counterflow, ") + std::to_string(per_end) +
-             " per end, " + std::to_string(int(width * 10) / 10) + "." + std::to_string(int(width * 10) % 10) + " m wide";
+    s.name = std::string(crossing ? "corridors crossing at 90 degrees, " : "corridor counterflow, ") +
+             std::to_string(per_end) + " per end, " + std::to_string(int(width * 10) / 10) + "." +
+             std::to_string(int(width * 10) % 10) + " m wide";
     const float half_length = 15.0f, half_width = width / 2, r = s.radius;
     // The floor: a strip along x (and one along z), raised over nothing: its edges bound it.
     s.boxes = {{Vec3(-half_length, -1.0f, -half_width), Vec3(half_length, 0.0f, half_width)}};
@@ -110,7 +113,8 @@ CrowdScenario corridor(int per_end, float width, bool crossing) {
         const float sign = end == 0 ? -1.0f : 1.0f;
         for (int k = 0; k < per_end; ++k) {
             const float along = sign * (first - spacing * float(k / across));
-            const float side = across > 1 ? -half_width + r + (width - 2 * r) * float(k % across) / float(across - 1) : 0.0f;
+            const float side =
+                across > 1 ? -half_width + r + (width - 2 * r) * float(k % across) / float(across - 1) : 0.0f;
             s.agents.push_back({Vec3(along, 0.0f, side), Vec3(-along, 0.0f, side)});
             if (crossing) s.agents.push_back({Vec3(side, 0.0f, along), Vec3(side, 0.0f, -along)});
         }

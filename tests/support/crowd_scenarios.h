@@ -19,7 +19,7 @@ struct CrowdAgent {
 
 struct CrowdScenario {
     std::string name;
-    NavMeshInput navmesh;           // y = 0, eroded by `radius`
+    NavMeshInput navmesh;  // y = 0, eroded by `radius`
     // The same place as level geometry (boxes: a floor 1 m thick, its top at y = 0, and walls 2.5 m
     // high), for a navmesh built by Recast (the crowd bench, beside DetourCrowd).
     std::vector<std::pair<Vec3, Vec3>> boxes;
@@ -27,7 +27,7 @@ struct CrowdScenario {
     float max_speed = 3.5f;         // m/s, nl_default_agent_def's
     float max_acceleration = 8.0f;  // m/s^2
     std::vector<CrowdAgent> agents;
-    float seconds = 60.0f;          // everyone arrives within this
+    float seconds = 60.0f;  // everyone arrives within this
 };
 
 // An open floor `half` metres each way from the origin.
@@ -48,7 +48,7 @@ CrowdScenario corridor(int per_end, float width, bool crossing);
 
 // What a run of a scenario measured.
 struct CrowdOutcome {
-    int arrived = 0;            // agents that reached ARRIVED at least once
+    int arrived = 0;  // agents that reached ARRIVED at least once
     int never_arrived = 0;
     int stuck = 0;              // agents that went 5 s WALKING without getting 0.1 m nearer their goal
     float all_arrived_at = -1;  // seconds, -1 if not all did

@@ -5,7 +5,6 @@
 #include <limits>
 #include <sstream>
 
-
 namespace nl::test {
 namespace {
 
@@ -92,10 +91,13 @@ std::string describe_link(const Link& l) {
     std::ostringstream s;
     s.precision(4);
     s << std::fixed;
-    s << (l.kind == LinkKind::Jump ? "jump" : l.kind == LinkKind::Drop ? "drop" : "link") << " (" << l.start.x() << ", "
-      << l.start.y() << ", " << l.start.z() << ") -> (" << l.end.x() << ", " << l.end.y() << ", " << l.end.z() << ")"
-      << (l.bidirectional ? " <->" : " ->") << " apex (" << l.apex.x() << ", " << l.apex.y() << ", " << l.apex.z()
-      << ") gap " << l.requirements.gap << " rise " << l.requirements.rise << " drop " << l.requirements.drop;
+    s << (l.kind == LinkKind::Jump   ? "jump"
+          : l.kind == LinkKind::Drop ? "drop"
+                                     : "link")
+      << " (" << l.start.x() << ", " << l.start.y() << ", " << l.start.z() << ") -> (" << l.end.x() << ", " << l.end.y()
+      << ", " << l.end.z() << ")" << (l.bidirectional ? " <->" : " ->") << " apex (" << l.apex.x() << ", " << l.apex.y()
+      << ", " << l.apex.z() << ") gap " << l.requirements.gap << " rise " << l.requirements.rise << " drop "
+      << l.requirements.drop;
     s << " length " << l.requirements.length;
     s << " width " << l.requirements.clearance_width;
     return s.str();
@@ -126,7 +128,8 @@ void CheckTally::add(const Link& link, const LinkCheck& c) {
     end_not_on_floor += c.end_not_on_floor;
     wrong_figures += c.wrong_figures;
     inconclusive += c.inconclusive;
-    if (c.touches && touching.size() < 12) touching.push_back(describe_link(link) + "\n      " + c.describe());
+    if (c.touches && touching.size() < 12)
+        touching.push_back(describe_link(link) + "\n      " + c.describe());
     else if (c.verdict != LinkVerdict::Ok && c.verdict != LinkVerdict::Inconclusive && failures.size() < 12)
         failures.push_back(describe_link(link) + "\n      " + c.describe());
 }
@@ -148,9 +151,9 @@ void CheckTally::add(const CheckTally& o) {
 
 std::string CheckTally::line() const {
     std::ostringstream s;
-    s << links << " links: " << ok << " ok; " << touches << " touch, " << end_not_on_floor << " with an end off the floor, "
-      << wrong_figures << " with wrong figures, " << inconclusive << " inconclusive (" << inconclusive_pieces
-      << " pieces); " << cylinder_tests << " cylinder-triangle tests";
+    s << links << " links: " << ok << " ok; " << touches << " touch, " << end_not_on_floor
+      << " with an end off the floor, " << wrong_figures << " with wrong figures, " << inconclusive << " inconclusive ("
+      << inconclusive_pieces << " pieces); " << cylinder_tests << " cylinder-triangle tests";
     return s.str();
 }
 
@@ -206,7 +209,7 @@ std::optional<double> IndependentLinkChecker::floor_below(double x, double z, do
 }
 
 std::optional<double> IndependentLinkChecker::floor_below(const std::vector<uint32_t>& among, double x, double z,
-                                                         double top, double reach) const {
+                                                          double top, double reach) const {
     std::optional<double> best;
     const Vec2d p(x, z);
     for (uint32_t i : among) {
@@ -364,7 +367,8 @@ IndependentLinkChecker::SweepResult IndependentLinkChecker::sweep(const Path& pa
     };
     double walked = 0.0;
     for (const Piece& piece : path.pieces) {
-        const double s0 = std::max(walked, keep_from) - walked, s1 = std::min(walked + piece.length(), keep_to) - walked;
+        const double s0 = std::max(walked, keep_from) - walked,
+                     s1 = std::min(walked + piece.length(), keep_to) - walked;
         const double base = walked;
         walked += piece.length();
         if (s1 <= s0) continue;
@@ -471,8 +475,10 @@ LinkCheck IndependentLinkChecker::check(const Link& link) const {
         std::ostringstream m;
         m.precision(3);
         m << std::fixed << which << " at y " << y;
-        if (std::isnan(floor)) m << " has no floor within 2 m below";
-        else m << " is " << (y - floor) << " m above the floor under it (y " << floor << ")";
+        if (std::isnan(floor))
+            m << " has no floor within 2 m below";
+        else
+            m << " is " << (y - floor) << " m above the floor under it (y " << floor << ")";
         out.problems.push_back(m.str());
         out.end_not_on_floor = true;
     };
@@ -528,14 +534,16 @@ LinkCheck IndependentLinkChecker::check(const Link& link) const {
     if (std::fabs(q.length - out.length) > tol_.length_tolerance) wrong("length (end to end)", q.length, out.length);
     if (jump) {
         const double expected_apex = std::max(s.y(), e.y()) + settings_.jump_arc_height;
-        if (std::fabs(link.apex.y() - expected_apex) > tol_.apex_tolerance) wrong("apex height", link.apex.y(), expected_apex);
+        if (std::fabs(link.apex.y() - expected_apex) > tol_.apex_tolerance)
+            wrong("apex height", link.apex.y(), expected_apex);
     }
     // The settings' limits, on the figures the spec says they apply to.
     const double lt = tol_.limit_tolerance;
     if (jump) {
         if (std::isfinite(out.gap) && out.gap > settings_.max_jump_gap + tol_.gap_tolerance)
             wrong("gap beyond max_jump_gap", q.gap, out.gap);
-        if (std::max(out.rise, out.drop) > settings_.max_jump_up + lt) wrong("rise beyond max_jump_up", q.rise + q.drop, std::max(out.rise, out.drop));
+        if (std::max(out.rise, out.drop) > settings_.max_jump_up + lt)
+            wrong("rise beyond max_jump_up", q.rise + q.drop, std::max(out.rise, out.drop));
     } else {
         if (out.drop > settings_.max_drop_distance + lt) wrong("drop beyond max_drop_distance", q.drop, out.drop);
         if (out.drop <= agent_.max_climb - lt) wrong("drop no deeper than max_climb (walked)", q.drop, out.drop);
@@ -603,7 +611,8 @@ LinkCheck IndependentLinkChecker::check(const Link& link) const {
                         // inconclusive wider body is not counted against the link.
                         const double recorded = q.clearance_width;
                         if (recorded > 2.0 * (k - 0.25) * r + 1e-4) {
-                            if (wider.result == Sweep::Touches) wrong("clearance_width (a body that wide touches)", recorded, out.clearance_width);
+                            if (wider.result == Sweep::Touches)
+                                wrong("clearance_width (a body that wide touches)", recorded, out.clearance_width);
                             else {
                                 out.inconclusive = true;
                                 out.inconclusive_pieces += wider.inconclusive_pieces;
@@ -620,21 +629,28 @@ LinkCheck IndependentLinkChecker::check(const Link& link) const {
                     const double k = recorded < 3.0 * r - 1e-3 ? 1.5 : 2.0;
                     const SweepResult spare = sweep_both(k * r, 0.005);
                     out.cylinder_tests += spare.tests;
-                    if (spare.result == Sweep::Clear) wrong("clearance_width (a wider body is clear)", recorded, out.clearance_width);
+                    if (spare.result == Sweep::Clear)
+                        wrong("clearance_width (a wider body is clear)", recorded, out.clearance_width);
                 }
             }
         }
         if (q.clearance_width <= 0.0f) wrong("clearance_width of a kept link", q.clearance_width, out.clearance_width);
         const double ratio = q.clearance_width / (2.0 * r);
-        if (q.clearance_width > 0.0f && std::fabs(ratio - 1.0) > 1e-3 && std::fabs(ratio - 1.5) > 1e-3 && std::fabs(ratio - 2.0) > 1e-3)
+        if (q.clearance_width > 0.0f && std::fabs(ratio - 1.0) > 1e-3 && std::fabs(ratio - 1.5) > 1e-3 &&
+            std::fabs(ratio - 2.0) > 1e-3)
             wrong("clearance_width not 2, 3 or 4 radii", q.clearance_width, out.clearance_width);
     }
 
-    if (out.touches) out.verdict = LinkVerdict::Touches;
-    else if (out.end_not_on_floor) out.verdict = LinkVerdict::EndNotOnFloor;
-    else if (out.wrong_figures) out.verdict = LinkVerdict::WrongFigures;
-    else if (out.inconclusive) out.verdict = LinkVerdict::Inconclusive;
-    else out.verdict = LinkVerdict::Ok;
+    if (out.touches)
+        out.verdict = LinkVerdict::Touches;
+    else if (out.end_not_on_floor)
+        out.verdict = LinkVerdict::EndNotOnFloor;
+    else if (out.wrong_figures)
+        out.verdict = LinkVerdict::WrongFigures;
+    else if (out.inconclusive)
+        out.verdict = LinkVerdict::Inconclusive;
+    else
+        out.verdict = LinkVerdict::Ok;
     return out;
 }
 

@@ -60,21 +60,21 @@ struct UprightCylinder {
 bool cylinder_meets_triangle(const UprightCylinder& cylinder, const Vec3d& a, const Vec3d& b, const Vec3d& c);
 
 struct CheckerTolerances {
-    double sample_step = 0.05;        // longest piece of path before subdivision (metres of path)
-    double finest_step = 0.002;       // pieces are not halved below this; then "inconclusive"
-    double touch_margin = 0.0005;     // a body this close to a triangle (padded by it) "touches"
-    double clear_margin = 0.001;      // "clear" means the body padded by this touches nothing (the
-                                      // spec's 1 mm: a generator refusing within 1 mm keeps only these)
-    double margin_band = 0.01;        // metres of path not judged on either side of each margin cut:
-                                      // the generator's and the checker's path lengths differ slightly
-    double floor_tolerance = 0.01;    // an end this close to the floor under it is on the floor
-    double gap_tolerance = 0.05;      // recorded gap vs the rims found (the spec's +- 0.05)
-    double height_tolerance = 0.02;   // recorded rise / drop vs floor to floor
-    double length_tolerance = 0.01;   // recorded length vs end to end
-    double apex_tolerance = 0.02;     // a jump's apex vs the documented arc's top
-    double limit_tolerance = 0.02;    // figures this far past a setting's limit are still within it
-    double rim_step = 0.02;           // the checker's rim search: steps, then bisection to 1 mm
-    bool check_width = true;          // also test 1.5 r and 2 r against clearance_width
+    double sample_step = 0.05;       // longest piece of path before subdivision (metres of path)
+    double finest_step = 0.002;      // pieces are not halved below this; then "inconclusive"
+    double touch_margin = 0.0005;    // a body this close to a triangle (padded by it) "touches"
+    double clear_margin = 0.001;     // "clear" means the body padded by this touches nothing (the
+                                     // spec's 1 mm: a generator refusing within 1 mm keeps only these)
+    double margin_band = 0.01;       // metres of path not judged on either side of each margin cut:
+                                     // the generator's and the checker's path lengths differ slightly
+    double floor_tolerance = 0.01;   // an end this close to the floor under it is on the floor
+    double gap_tolerance = 0.05;     // recorded gap vs the rims found (the spec's +- 0.05)
+    double height_tolerance = 0.02;  // recorded rise / drop vs floor to floor
+    double length_tolerance = 0.01;  // recorded length vs end to end
+    double apex_tolerance = 0.02;    // a jump's apex vs the documented arc's top
+    double limit_tolerance = 0.02;   // figures this far past a setting's limit are still within it
+    double rim_step = 0.02;          // the checker's rim search: steps, then bisection to 1 mm
+    bool check_width = true;         // also test 1.5 r and 2 r against clearance_width
 };
 
 enum class LinkVerdict { Ok, Touches, EndNotOnFloor, WrongFigures, Inconclusive, NotChecked };
@@ -82,29 +82,29 @@ const char* verdict_name(LinkVerdict verdict);
 
 // Where a body met a triangle: the first cut (along the path) whose static cylinder touches.
 struct BodyTouch {
-    uint32_t triangle = 0;      // index into the TriangleMesh's triangles
+    uint32_t triangle = 0;  // index into the TriangleMesh's triangles
     Vec3d path_point = Vec3d::Zero();
-    double along = 0.0;         // fraction of the path's length from the start
-    double radius = 0.0;        // radius of the body that touched
+    double along = 0.0;   // fraction of the path's length from the start
+    double radius = 0.0;  // radius of the body that touched
 };
 
 struct LinkCheck {
     LinkVerdict verdict = LinkVerdict::Ok;  // the worst of the flags below, in the enum's order
-    bool touches = false;                    // the agent's body (radius r) touches the level
-    bool inconclusive = false;               // some piece was neither proven clear nor touching
+    bool touches = false;                   // the agent's body (radius r) touches the level
+    bool inconclusive = false;              // some piece was neither proven clear nor touching
     bool end_not_on_floor = false;
-    bool wrong_figures = false;              // see `problems`
-    std::optional<BodyTouch> touch;          // the first touch of the radius-r body
-    uint32_t inconclusive_pieces = 0;        // over every radius tested
-    std::vector<std::string> problems;       // each wrong figure or off-floor end, in words
+    bool wrong_figures = false;         // see `problems`
+    std::optional<BodyTouch> touch;     // the first touch of the radius-r body
+    uint32_t inconclusive_pieces = 0;   // over every radius tested
+    std::vector<std::string> problems;  // each wrong figure or off-floor end, in words
 
     // What the checker found on its own (NaN when it could not tell).
     double start_floor_y = 0.0, end_floor_y = 0.0;
     double rim_start = 0.0, rim_end = 0.0;  // from each end to its rim, horizontally (jumps: both)
     double gap = 0.0, rise = 0.0, drop = 0.0, length = 0.0;
     double path_length = 0.0;
-    float clearance_width = 0.0f;           // 2 x the widest of r, 1.5 r, 2 r proven clear (0: none)
-    uint64_t cylinder_tests = 0;             // exact cylinder-triangle tests run
+    float clearance_width = 0.0f;  // 2 x the widest of r, 1.5 r, 2 r proven clear (0: none)
+    uint64_t cylinder_tests = 0;   // exact cylinder-triangle tests run
 
     std::string describe() const;
 };
@@ -155,7 +155,8 @@ private:
 
     Path documented_path(const Link& link, const LinkCheck& found) const;
     std::vector<uint32_t> candidates(const Path& path, double widest_radius) const;
-    std::optional<double> floor_below(const std::vector<uint32_t>& among, double x, double z, double top, double reach) const;
+    std::optional<double> floor_below(const std::vector<uint32_t>& among, double x, double z, double top,
+                                      double reach) const;
     // Distance from (x0, z0) along the unit horizontal `heading` to the first point with no ground
     // within a step below `floor_y` (bisected to 1 mm); NaN if none within `limit`.
     double rim_along(const std::vector<uint32_t>& among, const Eigen::Vector2d& from, const Eigen::Vector2d& heading,

@@ -137,7 +137,8 @@ void ShortestPathReference::build(const PathQuery& query, const LinkSnapshot& li
     std::sort(bends.begin(), bends.end(), [](const Vec3& a, const Vec3& b) {
         return std::make_tuple(a.x(), a.y(), a.z()) < std::make_tuple(b.x(), b.y(), b.z());
     });
-    bends.erase(std::unique(bends.begin(), bends.end(), [](const Vec3& a, const Vec3& b) { return a == b; }), bends.end());
+    bends.erase(std::unique(bends.begin(), bends.end(), [](const Vec3& a, const Vec3& b) { return a == b; }),
+                bends.end());
     for (const Vec3& b : bends) {
         for (Node& node : nodes_at(b)) nodes_.push_back(std::move(node));
     }
@@ -162,7 +163,8 @@ void ShortestPathReference::build(const PathQuery& query, const LinkSnapshot& li
                 on_floor(point, floor);
                 if (std::find(floor.begin(), floor.end(), polygon) != floor.end()) {
                     for (std::vector<uint32_t>& group : groups(node.at, floor)) {
-                        if (std::find(group.begin(), group.end(), polygon) != group.end()) node.polygons = std::move(group);
+                        if (std::find(group.begin(), group.end(), polygon) != group.end())
+                            node.polygons = std::move(group);
                     }
                 }
                 nodes_.push_back(std::move(node));
@@ -185,14 +187,16 @@ void ShortestPathReference::build(const PathQuery& query, const LinkSnapshot& li
     sees_.assign(nodes_.size() * nodes_.size(), -1);
 }
 
-void ShortestPathReference::containing(const Flat& q, const std::vector<uint32_t>* among, std::vector<uint32_t>& out) const {
+void ShortestPathReference::containing(const Flat& q, const std::vector<uint32_t>* among,
+                                       std::vector<uint32_t>& out) const {
     out.clear();
     const uint32_t count = among ? uint32_t(among->size()) : navmesh_.polygon_count();
     for (uint32_t i = 0; i < count; ++i) {
         const uint32_t p = among ? (*among)[i] : i;
         if (!open_[p]) continue;
         const double* box = &box_[4 * size_t(p)];
-        if (q.x < box[0] - kOnEdge || q.z < box[1] - kOnEdge || q.x > box[2] + kOnEdge || q.z > box[3] + kOnEdge) continue;
+        if (q.x < box[0] - kOnEdge || q.z < box[1] - kOnEdge || q.x > box[2] + kOnEdge || q.z > box[3] + kOnEdge)
+            continue;
         const uint32_t n = first_[p + 1] - first_[p];
         bool in = true;
         for (uint32_t k = 0; k < n && in; ++k) {
@@ -210,7 +214,8 @@ void ShortestPathReference::on_floor(const Vec3& point, std::vector<uint32_t>& o
     containing({double(point.x()), double(point.z())}, nullptr, below_or_above);
     out.clear();
     for (const uint32_t p : below_or_above) {
-        if (std::fabs(navmesh_.surface_height(p, point.x(), point.z()) - point.y()) <= navmesh_.agent().max_climb) out.push_back(p);
+        if (std::fabs(navmesh_.surface_height(p, point.x(), point.z()) - point.y()) <= navmesh_.agent().max_climb)
+            out.push_back(p);
     }
 }
 
@@ -224,7 +229,8 @@ bool ShortestPathReference::crosses_at(uint32_t p, uint32_t k, const Flat& x) co
 }
 
 void ShortestPathReference::reached_from(const std::vector<uint32_t>& before, const std::vector<uint32_t>& after,
-                                         const std::vector<uint32_t>& at_x, const Flat& x, std::vector<uint32_t>& out) const {
+                                         const std::vector<uint32_t>& at_x, const Flat& x,
+                                         std::vector<uint32_t>& out) const {
     // Through the polygons round x, across shared edges whose openings hold x: round a corner where
     // polygons meet, never across a corner where two touch alone, never onto another floor.
     std::vector<uint32_t> reached(before), frontier(before);
@@ -232,7 +238,8 @@ void ShortestPathReference::reached_from(const std::vector<uint32_t>& before, co
     while (!frontier.empty()) {
         const uint32_t p = frontier.back();
         frontier.pop_back();
-        if (std::find(after.begin(), after.end(), p) != after.end() && std::find(out.begin(), out.end(), p) == out.end())
+        if (std::find(after.begin(), after.end(), p) != after.end() &&
+            std::find(out.begin(), out.end(), p) == out.end())
             out.push_back(p);
         for (uint32_t k = 0; k < navmesh_.corner_count(p); ++k) {
             const uint32_t q = navmesh_.neighbour(p, k);
@@ -245,7 +252,8 @@ void ShortestPathReference::reached_from(const std::vector<uint32_t>& before, co
     }
 }
 
-std::vector<std::vector<uint32_t>> ShortestPathReference::groups(const Flat& x, const std::vector<uint32_t>& polygons) const {
+std::vector<std::vector<uint32_t>> ShortestPathReference::groups(const Flat& x,
+                                                                 const std::vector<uint32_t>& polygons) const {
     std::vector<std::vector<uint32_t>> out;
     std::vector<uint32_t> left(polygons), group;
     while (!left.empty()) {
@@ -315,7 +323,8 @@ bool ShortestPathReference::walk_joins(const Flat& a, const std::vector<uint32_t
                 const Opening& o = openings_[first_[p] + k];
                 for (const Flat& e : {c, d}) cuts.push_back(((e.x - a.x) * dx + (e.z - a.z) * dz) / length2);
                 if (o.open) {
-                    for (const Flat& e : {o.left, o.right}) cuts.push_back(((e.x - a.x) * dx + (e.z - a.z) * dz) / length2);
+                    for (const Flat& e : {o.left, o.right})
+                        cuts.push_back(((e.x - a.x) * dx + (e.z - a.z) * dz) / length2);
                 }
                 continue;
             }
@@ -357,13 +366,16 @@ bool ShortestPathReference::walkable(const Vec3& from, const Vec3& to) const {
     return false;
 }
 
-std::optional<double> ShortestPathReference::length(const Vec3& start, const Vec3& goal, std::vector<Vec3>* bends) const {
+std::optional<double> ShortestPathReference::length(const Vec3& start, const Vec3& goal,
+                                                    std::vector<Vec3>* bends) const {
     if (bends) bends->clear();
     // Nodes: the graph's [0, n), then the start's groups, then the goal's.
     const std::vector<Node> starts = nodes_at(start), goals = nodes_at(goal);
     const uint32_t n = uint32_t(nodes_.size()), first_goal = n + uint32_t(starts.size());
     const uint32_t total = first_goal + uint32_t(goals.size());
-    auto node = [&](uint32_t i) -> const Node& { return i < n ? nodes_[i] : i < first_goal ? starts[i - n] : goals[i - first_goal]; };
+    auto node = [&](uint32_t i) -> const Node& {
+        return i < n ? nodes_[i] : i < first_goal ? starts[i - n] : goals[i - first_goal];
+    };
     const Flat goal_at{double(goal.x()), double(goal.z())};
     auto distance = [](const Flat& a, const Flat& b) { return std::hypot(b.x - a.x, b.z - a.z); };
     auto estimate = [&](uint32_t i) { return cheapest_rate_ * distance(node(i).at, goal_at); };
@@ -391,7 +403,8 @@ std::optional<double> ShortestPathReference::length(const Vec3& start, const Vec
         const Entry e = open.top();
         open.pop();
         if (done[e.node]) continue;
-        if (!e.checked && !walk_joins(node(e.parent).at, node(e.parent).polygons, node(e.node).at, node(e.node).polygons))
+        if (!e.checked &&
+            !walk_joins(node(e.parent).at, node(e.parent).polygons, node(e.node).at, node(e.node).polygons))
             continue;
         done[e.node] = 1;
         best[e.node] = e.g;

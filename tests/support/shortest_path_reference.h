@@ -109,23 +109,24 @@ private:
     void reached_from(const std::vector<uint32_t>& before, const std::vector<uint32_t>& after,
                       const std::vector<uint32_t>& at_x, const Flat& x, std::vector<uint32_t>& out) const;
     // Whether the straight walk from a (in the polygons `from`) to b (ending in one of `to`) is allowed.
-    bool walk_joins(const Flat& a, const std::vector<uint32_t>& from, const Flat& b, const std::vector<uint32_t>& to) const;
+    bool walk_joins(const Flat& a, const std::vector<uint32_t>& from, const Flat& b,
+                    const std::vector<uint32_t>& to) const;
     bool nodes_see(uint32_t i, uint32_t j) const;
     std::vector<Node> nodes_at(const Vec3& point) const;
 
     const NavMesh& navmesh_;
     float margin_ = 0.0f;
-    double walk_rate_ = 1.0;     // cost per metre walked
-    double cheapest_rate_ = 1.0;  // the smallest cost per metre of walking or any usable link
+    double walk_rate_ = 1.0;       // cost per metre walked
+    double cheapest_rate_ = 1.0;   // the smallest cost per metre of walking or any usable link
     std::vector<uint32_t> first_;  // per polygon + 1: offsets into flat_ and openings_ (edge_index order)
     std::vector<Flat> flat_;       // corners seen from above
     std::vector<Opening> openings_;
-    std::vector<uint8_t> open_;    // per polygon: not excluded
-    std::vector<double> box_;      // per polygon: min x, min z, max x, max z
-    std::vector<Node> nodes_;      // bend points, then take-off and landing points
+    std::vector<uint8_t> open_;  // per polygon: not excluded
+    std::vector<double> box_;    // per polygon: min x, min z, max x, max z
+    std::vector<Node> nodes_;    // bend points, then take-off and landing points
     std::vector<LinkEdge> link_edges_;
     std::vector<std::vector<uint32_t>> links_from_;  // per node: its link_edges_
-    mutable std::vector<int8_t> sees_;  // nodes_ x nodes_: -1 not yet known, 0 no, 1 yes
+    mutable std::vector<int8_t> sees_;               // nodes_ x nodes_: -1 not yet known, 0 no, 1 yes
 };
 
 }  // namespace nl::test

@@ -66,7 +66,8 @@ double sampled_distance(const nl::SweptCylinder& b, const std::array<Eigen::Vect
                 const double y = b.low + (b.high - b.low) * h / 16.0;
                 for (double radial : {0.0, 0.5, 1.0}) {
                     if (radial < 1.0 && h != 0 && h != 16) continue;  // the caps' insides only at the ends
-                    const Eigen::Vector3d q = c + Eigen::Vector3d(radial * b.radius * std::cos(angle), y, radial * b.radius * std::sin(angle));
+                    const Eigen::Vector3d q = c + Eigen::Vector3d(radial * b.radius * std::cos(angle), y,
+                                                                  radial * b.radius * std::sin(angle));
                     best = std::min(best, (q - closest_on_triangle(q, t)).norm());
                 }
             }
@@ -74,6 +75,5 @@ double sampled_distance(const nl::SweptCylinder& b, const std::array<Eigen::Vect
     }
     return best;
 }
-
 
 }  // namespace nl::test

@@ -58,7 +58,8 @@ struct GapLevel {
         in.agent_type.radius = r;
         in.agent_type.height = 2.0f;
         navmesh = world->add_navmesh(in);
-        if (generate) report = world->generate_links(navmesh, nl::LinkSettings{}, {}, [](float, const char*) { return true; });
+        if (generate)
+            report = world->generate_links(navmesh, nl::LinkSettings{}, {}, [](float, const char*) { return true; });
     }
 
     Handle add_agent(const Vec3& at, float jump = 0.0f, uint64_t user = 0) {
@@ -83,7 +84,8 @@ struct GapLevel {
             if (each_step) each_step(i);
             bool done = true;
             for (const nl::AgentInfo& a : world->agents().infos())
-                done = done && (a.state == AgentState::Arrived || a.state == AgentState::Failed || a.state == AgentState::Idle);
+                done = done &&
+                       (a.state == AgentState::Arrived || a.state == AgentState::Failed || a.state == AgentState::Idle);
             if (done) break;
         }
         return all;
@@ -161,7 +163,8 @@ TEST_CASE("a body on a generated link never meets the level: segments through it
                 ++flying_steps;
                 // The body's axis from its last position to this one, at three heights above its feet.
                 std::vector<nl::Segment> axis;
-                for (float h : {0.35f, 1.0f, 1.9f}) axis.push_back(nl::Segment{before[k] + Vec3(0, h, 0), a.position + Vec3(0, h, 0)});
+                for (float h : {0.35f, 1.0f, 1.9f})
+                    axis.push_back(nl::Segment{before[k] + Vec3(0, h, 0), a.position + Vec3(0, h, 0)});
                 std::vector<uint8_t> hit(axis.size());
                 level.segments_blocked(axis.data(), uint32_t(axis.size()), hit.data());
                 for (uint8_t b : hit) blocked += b;
@@ -184,9 +187,8 @@ TEST_CASE("a link removed while an agent walks toward it: it plans again before 
     g.world->step(1.0f / 30.0f);
     g.world->navmeshes().remove_link(link);
     bool flew = false;
-    const auto events = g.run(20.0f, 1.0f / 30.0f, [&](int) {
-        flew = flew || g.world->agents().info(agent).state == AgentState::Jumping;
-    });
+    const auto events = g.run(20.0f, 1.0f / 30.0f,
+                              [&](int) { flew = flew || g.world->agents().info(agent).state == AgentState::Jumping; });
     CHECK_FALSE(flew);
     CHECK(count_events(events, agent, AgentEventKind::Replanned) >= 1);
     CHECK(count_events(events, agent, AgentEventKind::LinkStarted) == 0);
@@ -232,7 +234,8 @@ TEST_CASE("results are the same bit for bit on 1 and 2 threads after 1,000 steps
             g.world->step(1.0f / 60.0f);
             if (step % 250 == 0) {
                 for (size_t k = 0; k < agents.size(); k += 7)
-                    g.world->agents().set_destination(g.world->navmeshes(), agents[k], Vec3(k % 2 ? 2.0f : 8.0f, 0.0f, z(rng)));
+                    g.world->agents().set_destination(g.world->navmeshes(), agents[k],
+                                                      Vec3(k % 2 ? 2.0f : 8.0f, 0.0f, z(rng)));
             }
         }
         std::vector<float> state;
@@ -254,7 +257,8 @@ TEST_CASE("two agents walking head-on through a corridor pass each other without
     g.world->agents().set_destination(g.world->navmeshes(), b, Vec3(1.0f, 0.0f, 9.0f));
     float closest = 1e9f;
     g.run(20.0f, 1.0f / 30.0f, [&](int) {
-        closest = std::min(closest, distance_xz(g.world->agents().info(a).position, g.world->agents().info(b).position));
+        closest =
+            std::min(closest, distance_xz(g.world->agents().info(a).position, g.world->agents().info(b).position));
     });
     CHECK(g.world->agents().info(a).state == AgentState::Arrived);
     CHECK(g.world->agents().info(b).state == AgentState::Arrived);
@@ -405,8 +409,9 @@ TEST_CASE("on a Recast navmesh the body never pops: no step moves it farther tha
     CHECK(worst_drop < 8.0f);
 }
 
-TEST_CASE("bodies on a landing never hold a link forever: two jumpers crossing a two-way link both arrive, "
-          "and one standing on a landing does not stop the jump") {
+TEST_CASE(
+    "bodies on a landing never hold a link forever: two jumpers crossing a two-way link both arrive, "
+    "and one standing on a landing does not stop the jump") {
     GapLevel g(1, false);
     add_jump(g, true);
     // The two ends of the link, one jumper heading each way (the walk round by the bridge is longer).
@@ -420,7 +425,9 @@ TEST_CASE("bodies on a landing never hold a link forever: two jumpers crossing a
     });
     CHECK(g.world->agents().info(east).state == AgentState::Arrived);
     CHECK(g.world->agents().info(west).state == AgentState::Arrived);
-    CHECK(count_events(events, east, AgentEventKind::LinkStarted) + count_events(events, west, AgentEventKind::LinkStarted) == 2);
+    CHECK(count_events(events, east, AgentEventKind::LinkStarted) +
+              count_events(events, west, AgentEventKind::LinkStarted) ==
+          2);
     CHECK(crossing_in_air == 0);  // one after the other: two bodies never cross in the air
 
     GapLevel h(1, false);
@@ -448,7 +455,7 @@ TEST_CASE("a path that starts on a take-off takes the link; stopped in the air, 
     REQUIRE(stopped);
     const nl::AgentInfo after = g.world->agents().info(on_takeoff);
     CHECK(after.state == AgentState::Idle);  // not WALKING with nowhere to go
-    CHECK(after.position.x() > 6.0f);      // it landed across the gap
+    CHECK(after.position.x() > 6.0f);        // it landed across the gap
     CHECK(after.link.is_null());
     CHECK(count_events(events, on_takeoff, AgentEventKind::LinkFinished) == 1);
 }
@@ -498,9 +505,11 @@ TEST_CASE("a two-way link made one-way is not taken against its way; new capabil
 TEST_CASE("a body wider than its navmesh's is said once per radius, with the margin it keeps") {
     std::vector<std::string> warnings;
     nl::WorldSettings settings;
-    settings.logger = nl::Logger([&](nl::LogLevel level, std::optional<nl::ErrorCode>, const std::string& message) {
-        if (level == nl::LogLevel::Warning) warnings.push_back(message);
-    }, nl::LogLevel::Warning);
+    settings.logger = nl::Logger(
+        [&](nl::LogLevel level, std::optional<nl::ErrorCode>, const std::string& message) {
+            if (level == nl::LogLevel::Warning) warnings.push_back(message);
+        },
+        nl::LogLevel::Warning);
     nl::World world(std::move(settings));
     nl::NavMeshInput in;
     add_polygon(in, {{0, 0}, {0, 10}, {10, 10}, {10, 0}});
@@ -528,7 +537,9 @@ TEST_CASE("a body wider than its navmesh's is said once per radius, with the mar
     CHECK(warnings.size() == 2);
 }
 
-TEST_CASE("an agent's corners start where it is: a straight walk is two points, and in the air the first is the link it flies") {
+TEST_CASE(
+    "an agent's corners start where it is: a straight walk is two points, and in the air the first is the link it "
+    "flies") {
     GapLevel g;
     const Handle walker = g.add_agent(Vec3(1.0f, 0.0f, 2.0f));
     g.world->agents().set_destination(g.world->navmeshes(), walker, Vec3(3.0f, 0.0f, 5.0f));

@@ -73,7 +73,8 @@ Run run(const CrowdScenario& s, int workers) {
                 ++overlaps;
             }
         }
-        if (r.outcome.all_arrived_at < 0 && std::count(arrived.begin(), arrived.end(), 1) == long(n)) r.outcome.all_arrived_at = now;
+        if (r.outcome.all_arrived_at < 0 && std::count(arrived.begin(), arrived.end(), 1) == long(n))
+            r.outcome.all_arrived_at = now;
         r.last = infos;
     }
     r.outcome.arrived = int(std::count(arrived.begin(), arrived.end(), 1));
@@ -87,8 +88,9 @@ Run run(const CrowdScenario& s, int workers) {
 void check(const CrowdScenario& s) {
     const Run one = run(s, 1), two = run(s, 2);
     const CrowdOutcome& o = one.outcome;
-    MESSAGE(s.name << ": " << o.arrived << " of " << s.agents.size() << " arrived (all by " << o.all_arrived_at << " s), "
-                   << o.stuck << " stuck, deepest overlap " << o.deepest_overlap << " m, mean " << o.mean_overlap << " m");
+    MESSAGE(s.name << ": " << o.arrived << " of " << s.agents.size() << " arrived (all by " << o.all_arrived_at
+                   << " s), " << o.stuck << " stuck, deepest overlap " << o.deepest_overlap << " m, mean "
+                   << o.mean_overlap << " m");
     REQUIRE(one.last.size() == two.last.size());
     for (size_t i = 0; i < one.last.size(); ++i) {
         CHECK(one.last[i].position == two.last[i].position);
@@ -96,9 +98,9 @@ void check(const CrowdScenario& s) {
     }
     for (size_t i = 0; i < one.last.size(); ++i)
         if (one.last[i].state != AgentState::Arrived)
-            MESSAGE("agent " << i << " ends " << int(one.last[i].state) << " reason " << int(one.last[i].reason) << " at "
-                              << one.last[i].position.transpose() << " speed " << one.last[i].velocity.norm() << ", sent to "
-                              << s.agents[i].goal.transpose());
+            MESSAGE("agent " << i << " ends " << int(one.last[i].state) << " reason " << int(one.last[i].reason)
+                             << " at " << one.last[i].position.transpose() << " speed " << one.last[i].velocity.norm()
+                             << ", sent to " << s.agents[i].goal.transpose());
     CHECK(o.never_arrived == 0);
     CHECK(o.stuck == 0);
     CHECK(o.deepest_overlap <= 0.05f);
@@ -106,11 +108,17 @@ void check(const CrowdScenario& s) {
 
 }  // namespace
 
-TEST_CASE("crowd: two agents sent head-on to one point both arrive, touching at most") { check(nl::test::one_point(2, 8.0f)); }
+TEST_CASE("crowd: two agents sent head-on to one point both arrive, touching at most") {
+    check(nl::test::one_point(2, 8.0f));
+}
 
-TEST_CASE("crowd: two agents sent to one point at 90 degrees both arrive") { check(nl::test::one_point(2, 8.0f, true)); }
+TEST_CASE("crowd: two agents sent to one point at 90 degrees both arrive") {
+    check(nl::test::one_point(2, 8.0f, true));
+}
 
-TEST_CASE("crowd: eight agents in a ring sent to their centre all arrive around it") { check(nl::test::one_point(8, 8.0f)); }
+TEST_CASE("crowd: eight agents in a ring sent to their centre all arrive around it") {
+    check(nl::test::one_point(8, 8.0f));
+}
 
 TEST_CASE("crowd: twenty-four agents sent to one point all arrive around it") { check(nl::test::one_point(24, 10.0f)); }
 
@@ -122,14 +130,17 @@ TEST_CASE("crowd: ten on each side of a 2 m door all get through in counterflow"
     check(nl::test::door_counterflow(10, 2.0f));
 }
 
-TEST_CASE("crowd: twenty through a 2 m door one way all get through") { check(nl::test::door_counterflow(20, 2.0f, false)); }
+TEST_CASE("crowd: twenty through a 2 m door one way all get through") {
+    check(nl::test::door_counterflow(20, 2.0f, false));
+}
 
 TEST_CASE("crowd: a hundred and forty at a door in counterflow move the same on 1 and 2 threads") {
     // 70 a side: more than two of the step's 64-agent shares, so two threads really share them.
     CrowdScenario s = nl::test::door_counterflow(70, 2.0f);
     s.seconds = 20.0f;  // not all get through in that time: this compares the threads
     const Run one = run(s, 1), two = run(s, 2);
-    MESSAGE(s.name << ": " << one.outcome.arrived << " arrived in 20 s, deepest overlap " << one.outcome.deepest_overlap << " m");
+    MESSAGE(s.name << ": " << one.outcome.arrived << " arrived in 20 s, deepest overlap " << one.outcome.deepest_overlap
+                   << " m");
     REQUIRE(one.last.size() == 140);
     for (size_t i = 0; i < one.last.size(); ++i) {
         CHECK(one.last[i].position == two.last[i].position);
@@ -186,7 +197,8 @@ NarrowRun head_on_in_narrow_corridor(const float give_up[2], float seconds) {
 }
 
 size_t count_events(const std::vector<nl::AgentEvent>& events, nl::AgentEventKind kind, nl::AgentReason reason) {
-    return size_t(std::count_if(events.begin(), events.end(), [&](const nl::AgentEvent& e) { return e.kind == kind && e.reason == reason; }));
+    return size_t(std::count_if(events.begin(), events.end(),
+                                [&](const nl::AgentEvent& e) { return e.kind == kind && e.reason == reason; }));
 }
 
 }  // namespace
@@ -205,8 +217,10 @@ TEST_CASE("crowd: two head-on in a corridor too narrow to pass say they wait for
             // A host reads every wait for room as WAITING with the reason CROWD; and a body that reads
             // WALKING is walking (slower than 0.1 m/s for at most a second: turning, starting).
             if (a.state == AgentState::Waiting && a.reason == nl::AgentReason::Crowd) waited = true;
-            if (a.state == AgentState::Walking && std::hypot(a.velocity.x(), a.velocity.z()) < 0.1f) standing_walking += kDt;
-            else standing_walking = 0.0f;
+            if (a.state == AgentState::Walking && std::hypot(a.velocity.x(), a.velocity.z()) < 0.1f)
+                standing_walking += kDt;
+            else
+                standing_walking = 0.0f;
             longest = std::max(longest, standing_walking);
         }
         CHECK(waited);
@@ -254,7 +268,8 @@ TEST_CASE("crowd: a queue through a door, all one way, never gives up however lo
         for (const nl::AgentEvent& e : world.agents().events()) {
             waits += e.kind == nl::AgentEventKind::Waiting;
             failures += e.kind == nl::AgentEventKind::Failed;
-            if (e.kind == nl::AgentEventKind::Failed) MESSAGE("failed: reason " << int(e.reason) << " at " << step * kDt);
+            if (e.kind == nl::AgentEventKind::Failed)
+                MESSAGE("failed: reason " << int(e.reason) << " at " << step * kDt);
             arrivals += e.kind == nl::AgentEventKind::Arrived;
         }
     }

@@ -19,7 +19,8 @@ using nl::Vec3;
 // An axis-aligned box as a closed triangle mesh.
 nl::TriangleMesh box(const Vec3& lo, const Vec3& hi) {
     nl::TriangleMesh m;
-    for (int i = 0; i < 8; ++i) m.vertices.emplace_back(i & 1 ? hi.x() : lo.x(), i & 2 ? hi.y() : lo.y(), i & 4 ? hi.z() : lo.z());
+    for (int i = 0; i < 8; ++i)
+        m.vertices.emplace_back(i & 1 ? hi.x() : lo.x(), i & 2 ? hi.y() : lo.y(), i & 4 ? hi.z() : lo.z());
     const int faces[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
     for (const auto& f : faces) {
         m.triangles.push_back({uint32_t(f[0]), uint32_t(f[1]), uint32_t(f[2])});
@@ -80,9 +81,9 @@ TEST_CASE("a pole that will cross a flight when the body passes blocks it, thoug
     const float half = 0.5f * j.flight.duration(), speed = 4.0f;
     // At x = 2, coming along +z at 4 m/s: at the middle of the flight it stands in the arc.
     const nl::Handle pole = j.add_pole(at(Vec3(2, 0, -speed * half)));
-    REQUIRE(speed * half > 1.0f);  // now it is more than 1 m off the arc
-    CHECK(j.clear({}));                                            // as it stands now: clear
-    CHECK_FALSE(j.clear({j.motion(pole, Vec3(0, 0, speed))}));     // as it will be: blocked
+    REQUIRE(speed * half > 1.0f);                                     // now it is more than 1 m off the arc
+    CHECK(j.clear({}));                                               // as it stands now: clear
+    CHECK_FALSE(j.clear({j.motion(pole, Vec3(0, 0, speed))}));        // as it will be: blocked
     CHECK_FALSE(j.clear({j.motion(pole, Vec3(0, 0, speed))}, true));  // the link's proof does not cover it
     // Moving the other way, it is further off the arc when the body passes.
     CHECK(j.clear({j.motion(pole, Vec3(0, 0, -speed))}));
@@ -115,7 +116,8 @@ TEST_CASE("an arm turning into a flight blocks it when it will stand across the 
 TEST_CASE("mesh motions are read from two steps and carried on: a turning, travelling mesh is placed exactly") {
     auto tasks = nl::make_tbb_task_system(1);
     nl::Level level(*tasks);
-    const nl::Handle disc = level.add_mesh(box(Vec3(-1, -0.1f, -1), Vec3(1, 0, 1)), at(Vec3(5, 0, 0)), nl::kMeshMovable, 0);
+    const nl::Handle disc =
+        level.add_mesh(box(Vec3(-1, -0.1f, -1), Vec3(1, 0, 1)), at(Vec3(5, 0, 0)), nl::kMeshMovable, 0);
     nl::MeshMotions motions;
     motions.remember(level.movable_meshes(), 0.1f);
     // Over 0.1 s: 0.2 m along z and 0.05 rad about +y.

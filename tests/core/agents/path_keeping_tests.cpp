@@ -25,7 +25,9 @@ struct Rooms {
     nl::World world{nl::WorldSettings{}};
     nl::Handle handle;
     nl::HeldPtr<const nl::NavMesh> navmesh;
-    Rooms() : handle(world.add_navmesh(nl::test::rooms_with_door(10.0f, 2.0f, 0.5f, 0.6f))), navmesh(world.navmeshes().navmesh(handle)) {}
+    Rooms()
+        : handle(world.add_navmesh(nl::test::rooms_with_door(10.0f, 2.0f, 0.5f, 0.6f))),
+          navmesh(world.navmeshes().navmesh(handle)) {}
 };
 
 // A walker at `at` on its way along `points` toward points[next].
@@ -61,7 +63,8 @@ void move_alone(Agent& a, const nl::NavMesh& navmesh) {
 TEST_CASE("path keeping: pushed 3 m off its leg, an agent that still sees the point it heads for keeps its path") {
     Rooms rooms;
     // Its leg runs along z = 0 to (-2, 0, 0); it stands 3 m aside (more than its radius and a metre).
-    Agent a = walker(*rooms.navmesh, Vec3(-5.0f, 0.0f, 3.0f), {Vec3(-8.0f, 0.0f, 0.0f), Vec3(-2.0f, 0.0f, 0.0f), Vec3(8.0f, 0.0f, 0.0f)}, 1);
+    Agent a = walker(*rooms.navmesh, Vec3(-5.0f, 0.0f, 3.0f),
+                     {Vec3(-8.0f, 0.0f, 0.0f), Vec3(-2.0f, 0.0f, 0.0f), Vec3(8.0f, 0.0f, 0.0f)}, 1);
     const Vec3 before = a.position;
     move_alone(a, *rooms.navmesh);
     CHECK_FALSE(a.off_path);
@@ -75,7 +78,8 @@ TEST_CASE("path keeping: pushed 3 m off its leg, an agent that still sees the po
 TEST_CASE("path keeping: pushed where a wall hides the point it heads for, an agent plans again") {
     Rooms rooms;
     // Heading through the door for (8, 0, 0), from 3 m aside of its leg: the wall is between.
-    Agent a = walker(*rooms.navmesh, Vec3(-5.0f, 0.0f, 3.0f), {Vec3(-8.0f, 0.0f, 0.0f), Vec3(-2.0f, 0.0f, 0.0f), Vec3(8.0f, 0.0f, 0.0f)}, 2);
+    Agent a = walker(*rooms.navmesh, Vec3(-5.0f, 0.0f, 3.0f),
+                     {Vec3(-8.0f, 0.0f, 0.0f), Vec3(-2.0f, 0.0f, 0.0f), Vec3(8.0f, 0.0f, 0.0f)}, 2);
     move_alone(a, *rooms.navmesh);
     CHECK(a.off_path);
 }
@@ -83,13 +87,15 @@ TEST_CASE("path keeping: pushed where a wall hides the point it heads for, an ag
 TEST_CASE("path keeping: a corner an agent can see past is behind it: it heads straight for the next") {
     Rooms rooms;
     // Pushed to where (-2, 0, 0) is in sight, the detour corner (-5, 0, -3) is no longer on its way.
-    Agent a = walker(*rooms.navmesh, Vec3(-6.0f, 0.0f, 1.0f), {Vec3(-8.0f, 0.0f, 0.0f), Vec3(-5.0f, 0.0f, -3.0f), Vec3(-2.0f, 0.0f, 0.0f)}, 1);
+    Agent a = walker(*rooms.navmesh, Vec3(-6.0f, 0.0f, 1.0f),
+                     {Vec3(-8.0f, 0.0f, 0.0f), Vec3(-5.0f, 0.0f, -3.0f), Vec3(-2.0f, 0.0f, 0.0f)}, 1);
     move_alone(a, *rooms.navmesh);
     CHECK_FALSE(a.off_path);
     CHECK(a.next == 2);
     // Behind the wall's end, the corner of the door stays a corner: from (-5, 0, 3), (3, 0, 0) through
     // the door is out of sight and the corner at the door's mouth is kept.
-    Agent b = walker(*rooms.navmesh, Vec3(-5.0f, 0.0f, 3.0f), {Vec3(-8.0f, 0.0f, 3.0f), Vec3(-1.0f, 0.0f, 0.3f), Vec3(3.0f, 0.0f, -6.0f)}, 1);
+    Agent b = walker(*rooms.navmesh, Vec3(-5.0f, 0.0f, 3.0f),
+                     {Vec3(-8.0f, 0.0f, 3.0f), Vec3(-1.0f, 0.0f, 0.3f), Vec3(3.0f, 0.0f, -6.0f)}, 1);
     move_alone(b, *rooms.navmesh);
     CHECK(b.next == 1);
 }

@@ -54,7 +54,7 @@ std::string square_file() {
 TEST_CASE("a write through a symbolic link writes the file it leads to, and the link stays") {
     TempFolder tmp;
     write_file_bytes(tmp / "real.nlnav", "old");
-    fs::create_symlink("real.nlnav", tmp / "link.nlnav");        // relative, as ln -s makes it
+    fs::create_symlink("real.nlnav", tmp / "link.nlnav");         // relative, as ln -s makes it
     fs::create_symlink(tmp / "link.nlnav", tmp / "chain.nlnav");  // absolute, to another link
     write_file_bytes(tmp / "chain.nlnav", "new bytes");
     CHECK(fs::is_symlink(tmp / "chain.nlnav"));
@@ -113,7 +113,9 @@ TEST_CASE("a navmesh file is read from a pipe no further than its header says, w
             }
             if (fd < 0) return;
             ::fcntl(fd, F_SETFL, 0);  // blocking writes from here on
-            auto write_all = [&](const std::string& bytes) { return ::write(fd, bytes.data(), bytes.size()) == ssize_t(bytes.size()); };
+            auto write_all = [&](const std::string& bytes) {
+                return ::write(fd, bytes.data(), bytes.size()) == ssize_t(bytes.size());
+            };
             bool open = write_all(prefix);
             const std::string more(4096, 'x');
             while (open && endless) open = write_all(more);
@@ -134,10 +136,13 @@ TEST_CASE("a navmesh file is read from a pipe no further than its header says, w
     const std::string whole = read_from_writer(file, false, message);
     CHECK(message.empty());
     CHECK(whole == file);
-    CHECK(read_navmesh_file(reinterpret_cast<const uint8_t*>(whole.data()), whole.size()).navmesh.polygon_sizes.size() == 1);
+    CHECK(
+        read_navmesh_file(reinterpret_cast<const uint8_t*>(whole.data()), whole.size()).navmesh.polygon_sizes.size() ==
+        1);
     // The file, then bytes without end: refused once one byte past it is read.
     read_from_writer(file, true, message);
-    CHECK(message.find("goes on past the " + std::to_string(file.size()) + " bytes its header says") != std::string::npos);
+    CHECK(message.find("goes on past the " + std::to_string(file.size()) + " bytes its header says") !=
+          std::string::npos);
     // A header that says the file is larger than any navmesh file, then bytes without end: refused
     // before anything past the header is read.
     std::string forged = file.substr(0, kNavMeshFileHeaderBytes);

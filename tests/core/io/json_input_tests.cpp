@@ -51,8 +51,10 @@ struct Navmesh {
 
 // A links file whose first link's `field` is `value`.
 std::string links_with(const std::string& field, const std::string& value) {
-    return "{\"format\": \"navlink-links\", \"version\": 1, \"links\": [{\"kind\": \"manual\", \"start\": [0.5, 0, 0.5], "
-           "\"end\": [1.5, 0, 0.5], \"" + field + "\": " + value + "}]}";
+    return "{\"format\": \"navlink-links\", \"version\": 1, \"links\": [{\"kind\": \"manual\", \"start\": [0.5, 0, "
+           "0.5], "
+           "\"end\": [1.5, 0, 0.5], \"" +
+           field + "\": " + value + "}]}";
 }
 
 constexpr nl::ErrorCode kInvalid = nl::ErrorCode::InvalidArgument;
@@ -93,7 +95,8 @@ TEST_CASE("links JSON: too deep or beyond a double is named by its path") {
     CHECK(last_error.size() < kShortMessage);
     CHECK(n.load(links_with("cost_modifier", "-2e400"), last_error) == kInvalid);
     CHECK(last_error.find("links JSON: links[0].cost_modifier is -2e400") != std::string::npos);
-    CHECK(n.load("{\"format\": \"navlink-links\", \"version\": 1, \"links\": [{\"start\": [0, 1e999, 0]}]}", last_error) == kInvalid);
+    CHECK(n.load("{\"format\": \"navlink-links\", \"version\": 1, \"links\": [{\"start\": [0, 1e999, 0]}]}",
+                 last_error) == kInvalid);
     CHECK(last_error.find("links[0].start[1]") != std::string::npos);
     // The same file with a sane value loads.
     CHECK(n.load(links_with("cost_modifier", "2"), last_error) == nl::ErrorCode::Internal);

@@ -79,7 +79,8 @@ TEST_CASE("a baked navmesh loads as the same polygons and links, bit for bit, an
     CHECK(c.portal_count() == a.portal_count());
     CHECK(c.boundary_edge_count() == a.boundary_edge_count());
     float worst = 0.0f;
-    for (uint32_t v = 0; v < a.vertex_count(); ++v) worst = std::max(worst, (a.vertex(v) - c.vertex(v)).cwiseAbs().maxCoeff());
+    for (uint32_t v = 0; v < a.vertex_count(); ++v)
+        worst = std::max(worst, (a.vertex(v) - c.vertex(v)).cwiseAbs().maxCoeff());
     MESSAGE(a.polygon_count() << " polygons, " << a.vertex_count() << " vertices: " << b.file.size()
                               << " bytes; worst coordinate error " << worst * 1000.0f << " mm");
     CHECK(worst == 0.0f);
@@ -92,7 +93,8 @@ TEST_CASE("a baked navmesh loads as the same polygons and links, bit for bit, an
         CHECK(c.area(p) == a.area(p));
     }
 
-    const std::vector<nl::StoredLink> before = nl::test::links_of(*b.world, b.navmesh), after = nl::test::links_of(*other, loaded);
+    const std::vector<nl::StoredLink> before = nl::test::links_of(*b.world, b.navmesh),
+                                      after = nl::test::links_of(*other, loaded);
     REQUIRE(after.size() == before.size());
     for (size_t i = 0; i < before.size(); ++i) {
         const nl::Link &x = before[i].link, &y = after[i].link;
@@ -176,15 +178,20 @@ TEST_CASE("a baked file says what it was made for: the body, the builder, the le
     with_plugins.links.plugins = "[]";
     const std::vector<uint8_t> listed = nl::write_navmesh_file(mesh, {}, with_plugins, false);
     std::string message;
-    CHECK(nl::test::code_of([&] { nl::read_navmesh_file(listed.data(), listed.size()); }, &message) == nl::ErrorCode::Parse);
+    CHECK(nl::test::code_of([&] { nl::read_navmesh_file(listed.data(), listed.size()); }, &message) ==
+          nl::ErrorCode::Parse);
     CHECK_MESSAGE(message.find("the link-kind plugins are not a JSON object") != std::string::npos, message);
     // Whatever bytes a file names its builder with, describing it says so in valid JSON (the fuzzer
     // found a name that is not UTF-8 made the description fail).
     nl::NavMeshProvenance odd = b.world->navmeshes().made_for(b.navmesh);
-    odd.builder = "r\xb3" "cast";
+    odd.builder =
+        "r\xb3"
+        "cast";
     const std::vector<uint8_t> file = nl::write_navmesh_file(mesh, {}, odd, false);
     const std::string json = nl::made_for_json(nl::read_navmesh_file(file.data(), file.size()));
-    CHECK_MESSAGE(json.find("r\xef\xbf\xbd" "cast") != std::string::npos, json);
+    CHECK_MESSAGE(json.find("r\xef\xbf\xbd"
+                            "cast") != std::string::npos,
+                  json);
 }
 
 TEST_CASE("a truncated, corrupted, foreign or future navmesh file is refused with the reason") {
@@ -203,13 +210,14 @@ TEST_CASE("a truncated, corrupted, foreign or future navmesh file is refused wit
     for (size_t at = nl::kNavMeshFileHeaderBytes; at < good.size(); at += 131) {
         std::vector<uint8_t> bad = good;
         bad[at] ^= 0x10;
-        CHECK(nl::test::code_of([&] { nl::read_navmesh_file(bad.data(), bad.size()); }, &message) == nl::ErrorCode::Parse);
+        CHECK(nl::test::code_of([&] { nl::read_navmesh_file(bad.data(), bad.size()); }, &message) ==
+              nl::ErrorCode::Parse);
         CHECK_MESSAGE(message.find("corrupted") != std::string::npos, message);
     }
     // Not a navmesh file at all; a links JSON file.
     const std::string json = nl::test::save_links_json(*b.world, b.navmesh);
-    CHECK(nl::test::code_of([&] { nl::read_navmesh_file(reinterpret_cast<const uint8_t*>(json.data()), json.size()); }, &message) ==
-          nl::ErrorCode::VersionMismatch);
+    CHECK(nl::test::code_of([&] { nl::read_navmesh_file(reinterpret_cast<const uint8_t*>(json.data()), json.size()); },
+                            &message) == nl::ErrorCode::VersionMismatch);
     CHECK_MESSAGE(message.find("not a NavLink navmesh file") != std::string::npos, message);
     // A future version.
     std::vector<uint8_t> future = good;
@@ -254,7 +262,8 @@ TEST_CASE("a file whose link no longer fits is refused with the link named, and 
 TEST_CASE("navmesh coordinates are kept on the 1/1024 m grid, and a file holds them exactly at any size") {
     for (const float size : {3.0f, 500.0f, 2.0e4f, 9.0e6f}) {
         nl::NavMeshInput in;
-        in.vertices = {{-size, 1, -size}, {-size, 1, size}, {size, 2, size}, {size, 2, -size}, {0.3337f * size, 1.5f, 0.1f}};
+        in.vertices = {
+            {-size, 1, -size}, {-size, 1, size}, {size, 2, size}, {size, 2, -size}, {0.3337f * size, 1.5f, 0.1f}};
         in.indices = {0, 1, 4, 1, 2, 4, 2, 3, 4, 3, 0, 4};
         in.polygon_sizes = {3, 3, 3, 3};
         const auto mesh = nl::build_navmesh(in);
@@ -266,21 +275,23 @@ TEST_CASE("navmesh coordinates are kept on the 1/1024 m grid, and a file holds t
         const std::vector<uint8_t> file = nl::write_navmesh_file(*mesh, {}, {}, false);
         const nl::NavMeshFile read = nl::read_navmesh_file(file.data(), file.size());
         const float across = 2.0f * size;
-        MESSAGE(across << " m across: " << file.size() << " bytes, vertices moved onto the grid by at most " << snapped * 1000.0f << " mm");
+        MESSAGE(across << " m across: " << file.size() << " bytes, vertices moved onto the grid by at most "
+                       << snapped * 1000.0f << " mm");
         CHECK(snapped <= std::ldexp(1.0f, -11));
-        for (size_t v = 0; v < read.navmesh.vertices.size(); ++v) CHECK(read.navmesh.vertices[v] == mesh->vertex(uint32_t(v)));
+        for (size_t v = 0; v < read.navmesh.vertices.size(); ++v)
+            CHECK(read.navmesh.vertices[v] == mesh->vertex(uint32_t(v)));
         CHECK(read.quantum == std::ldexp(1.0f, -10));
     }
 }
 
-TEST_CASE("a links file says the body its links were made for: another body's navmesh refuses it, or takes it when asked") {
+TEST_CASE(
+    "a links file says the body its links were made for: another body's navmesh refuses it, or takes it when asked") {
     Baked b;
     nl::AgentType narrow;
     narrow.radius = 0.3f;
     const Handle other = nl::test::build_recast_navmesh(*b.world, narrow);
     const auto mesh = b.world->navmeshes().navmesh(b.navmesh);
-    const nl::LinksFileProvenance made_for{mesh->agent(),
-                                    b.world->navmeshes().made_for(b.navmesh).links};
+    const nl::LinksFileProvenance made_for{mesh->agent(), b.world->navmeshes().made_for(b.navmesh).links};
     std::vector<nl::Link> links;
     for (const nl::StoredLink& l : nl::test::links_of(*b.world, b.navmesh)) links.push_back(l.link);
     const std::string json = nl::links_to_json(links, &made_for);
@@ -290,10 +301,12 @@ TEST_CASE("a links file says the body its links were made for: another body's na
     CHECK(file.made_for->made_with.settings == made_for.made_with.settings);
     nl::LinksFileProvenance plugged = made_for;
     plugged.made_with.plugins = R"({"rope":{"plugin":"ropes","settings":{},"version":"1"}})";
-    CHECK(nl::read_links_json(nl::links_to_json(links, &plugged)).made_for->made_with.plugins == plugged.made_with.plugins);
+    CHECK(nl::read_links_json(nl::links_to_json(links, &plugged)).made_for->made_with.plugins ==
+          plugged.made_with.plugins);
 
     std::string message;
-    CHECK(nl::test::code_of([&] { b.world->load_links_file(other, file, false); }, &message) == nl::ErrorCode::InvalidArgument);
+    CHECK(nl::test::code_of([&] { b.world->load_links_file(other, file, false); }, &message) ==
+          nl::ErrorCode::InvalidArgument);
     CHECK_MESSAGE(message.find("radius 0.6 m") != std::string::npos, message);
     CHECK_MESSAGE(message.find("radius 0.3 m") != std::string::npos, message);
     CHECK(nl::test::links_of(*b.world, other).empty());  // nothing loaded

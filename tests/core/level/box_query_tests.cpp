@@ -106,7 +106,8 @@ TEST_CASE("boxes_empty agrees with every triangle, for static and movable meshes
         std::uniform_int_distribution<size_t> any_triangle(0, world.triangles.size() - 1);
         for (int i = 0; i < 3000; ++i) {
             if (i % 2) {
-                boxes.push_back(random_box(rng, 0.5f * (bounds.min + bounds.max), 0.5f * (bounds.max - bounds.min).maxCoeff(), 2.0f));
+                boxes.push_back(random_box(rng, 0.5f * (bounds.min + bounds.max),
+                                           0.5f * (bounds.max - bounds.min).maxCoeff(), 2.0f));
                 continue;
             }
             // Near a surface: the cases that are decided by a few centimetres.
@@ -121,7 +122,8 @@ TEST_CASE("boxes_empty agrees with every triangle, for static and movable meshes
         for (size_t i = 0; i < boxes.size(); ++i) {
             bool touched = false;
             for (const nl::Triangle& t : world.triangles)
-                if (nl::triangle_overlaps_box(world.vertices[t[0]], world.vertices[t[1]], world.vertices[t[2]], boxes[i])) {
+                if (nl::triangle_overlaps_box(world.vertices[t[0]], world.vertices[t[1]], world.vertices[t[2]],
+                                              boxes[i])) {
                     touched = true;
                     break;
                 }
@@ -137,7 +139,8 @@ TEST_CASE("boxes_empty agrees with every triangle, for static and movable meshes
         std::vector<nl::Segment> inside;
         for (size_t i = 0; i < boxes.size(); ++i)
             if (empty[i])
-                for (int s = 0; s < 8; ++s) inside.push_back(nl::Segment{point_in(rng, boxes[i]), point_in(rng, boxes[i])});
+                for (int s = 0; s < 8; ++s)
+                    inside.push_back(nl::Segment{point_in(rng, boxes[i]), point_in(rng, boxes[i])});
         std::vector<uint8_t> blocked(inside.size());
         level.segments_blocked(inside.data(), static_cast<uint32_t>(inside.size()), blocked.data());
         int blocked_count = 0;
@@ -146,7 +149,8 @@ TEST_CASE("boxes_empty agrees with every triangle, for static and movable meshes
     }
 }
 
-TEST_CASE("static_triangles gives the corners of the triangle each ray hit; nothing for misses, movable or removed meshes") {
+TEST_CASE(
+    "static_triangles gives the corners of the triangle each ray hit; nothing for misses, movable or removed meshes") {
     nl::TriangleMesh mesh = nl::test::to_triangle_mesh(nl::levelgen::generate_default_level(5));
     mesh.triangles.insert(mesh.triangles.begin(), {0, 0, 1});  // degenerate: dropped, so kept != input
     nl::Transform moved = nl::Transform::Identity();
@@ -159,9 +163,11 @@ TEST_CASE("static_triangles gives the corners of the triangle each ray hit; noth
         const nl::Handle h = level.add_mesh(mesh, moved, flags, 0);
         const nl::Aabb b = level.info(h).bounds;
         std::mt19937 rng(3);
-        std::uniform_real_distribution<float> ux(b.min.x() - 2.0f, b.max.x() + 2.0f), uz(b.min.z() - 2.0f, b.max.z() + 2.0f);
+        std::uniform_real_distribution<float> ux(b.min.x() - 2.0f, b.max.x() + 2.0f),
+            uz(b.min.z() - 2.0f, b.max.z() + 2.0f);
         std::vector<nl::Ray> rays;
-        for (int i = 0; i < 2000; ++i) rays.push_back(nl::Ray{Vec3(ux(rng), b.max.y() + 1.0f, uz(rng)), Vec3(0, -1, 0), 1000.0f});
+        for (int i = 0; i < 2000; ++i)
+            rays.push_back(nl::Ray{Vec3(ux(rng), b.max.y() + 1.0f, uz(rng)), Vec3(0, -1, 0), 1000.0f});
         std::vector<nl::RayHit> hits(rays.size());
         level.cast_rays(rays.data(), uint32_t(rays.size()), hits.data());
         std::vector<std::optional<std::array<Vec3, 3>>> corners(hits.size());

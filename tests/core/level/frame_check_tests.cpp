@@ -77,7 +77,9 @@ TEST_CASE("frame: a flat floor has no walls and is never taken for other units o
     CHECK_FALSE(nl::looks_z_up(e));
 }
 
-TEST_CASE("frame: every shared level as given says nothing; in other units or z up it is told, the closed rooms' axis excepted") {
+TEST_CASE(
+    "frame: every shared level as given says nothing; in other units or z up it is told, the closed rooms' axis "
+    "excepted") {
     const std::vector<std::string> closed_rooms = {"dotrecast_convex.obj", "dotrecast_house.obj"};
     const auto levels = nl::test::shared_levels();
     if (levels.empty() && !nl::test::levels_required()) return;
@@ -87,8 +89,10 @@ TEST_CASE("frame: every shared level as given says nothing; in other units or z 
         const TriangleMesh level = nl::read_obj_file(path.string());
         check_as_given(level);
         const nl::FrameEstimate e = estimate(given_z_up(level));
-        MESSAGE(path.filename().string() << " given z up: floor " << e.floor_y_up << " m2 with y up, " << e.floor_z_up << " m2 with z up");
-        const bool closed = std::find(closed_rooms.begin(), closed_rooms.end(), path.filename().string()) != closed_rooms.end();
+        MESSAGE(path.filename().string() << " given z up: floor " << e.floor_y_up << " m2 with y up, " << e.floor_z_up
+                                         << " m2 with z up");
+        const bool closed =
+            std::find(closed_rooms.begin(), closed_rooms.end(), path.filename().string()) != closed_rooms.end();
         CHECK(nl::looks_z_up(e) == !closed);
     }
 }

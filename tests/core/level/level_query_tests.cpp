@@ -32,8 +32,8 @@ struct Tally {
         if (mismatches++ == 0) first_mismatch = what;
     }
     void check(const std::string& label) const {
-        INFO(label, ": ", queries, " queries, ", agree, " agree, ", edge_ties, " edge ties; first mismatch: ",
-             first_mismatch);
+        INFO(label, ": ", queries, " queries, ", agree, " agree, ", edge_ties,
+             " edge ties; first mismatch: ", first_mismatch);
         CHECK(mismatches == 0);
         CHECK(edge_ties * 1000 <= queries);  // ties are rare, or the comparison is too lax to mean anything
         CHECK(agree + edge_ties == queries);
@@ -52,7 +52,9 @@ std::vector<nl::Ray> random_rays(const nl::Aabb& box, uint32_t seed, int random_
     std::normal_distribution<float> gauss(0.0f, 1.0f);
     const Vec3 lo = box.min - 0.1f * (box.max - box.min);
     const Vec3 size = 1.2f * (box.max - box.min);
-    auto point = [&] { return Vec3(lo.x() + unit(rng) * size.x(), lo.y() + unit(rng) * size.y(), lo.z() + unit(rng) * size.z()); };
+    auto point = [&] {
+        return Vec3(lo.x() + unit(rng) * size.x(), lo.y() + unit(rng) * size.y(), lo.z() + unit(rng) * size.z());
+    };
     std::vector<nl::Ray> rays;
     for (int i = 0; i < random_count; ++i) {
         Vec3 d(gauss(rng), gauss(rng), gauss(rng));
@@ -67,7 +69,8 @@ std::vector<nl::Ray> random_rays(const nl::Aabb& box, uint32_t seed, int random_
     return rays;
 }
 
-Tally compare_rays(const nl::TriangleMesh& world, const std::vector<nl::Ray>& rays, const std::vector<nl::RayHit>& hits) {
+Tally compare_rays(const nl::TriangleMesh& world, const std::vector<nl::Ray>& rays,
+                   const std::vector<nl::RayHit>& hits) {
     Tally tally;
     for (size_t i = 0; i < rays.size(); ++i) {
         const nl::Ray& ray = rays[i];
@@ -79,7 +82,8 @@ Tally compare_rays(const nl::TriangleMesh& world, const std::vector<nl::Ray>& ra
         const double tol = 1e-4 * (1.0 + (ref ? ref->distance : 0.0));
         // Embree's own triangle, widened a little: does it really lie where Embree says?
         std::optional<nl::test::ReferenceHit> own;
-        if (got.hit) own = nl::test::intersect_triangle(world, got.triangle, ray.origin, ray.direction, 1e30, kEdgeTolerance);
+        if (got.hit)
+            own = nl::test::intersect_triangle(world, got.triangle, ray.origin, ray.direction, 1e30, kEdgeTolerance);
         const bool own_consistent = own && std::fabs(own->distance - got.distance) <= tol;
 
         if (got.hit && !own_consistent) {
@@ -91,23 +95,31 @@ Tally compare_rays(const nl::TriangleMesh& world, const std::vector<nl::Ray>& ra
                        (got.distance < ref->distance && own->edge_margin < kEdgeTolerance)) {
                 ++tally.edge_ties;
             } else {
-                tally.mismatch(where.str() + ": distances " + std::to_string(got.distance) + " vs " + std::to_string(ref->distance));
+                tally.mismatch(where.str() + ": distances " + std::to_string(got.distance) + " vs " +
+                               std::to_string(ref->distance));
             }
         } else if (got.hit && !ref) {
-            if (own->edge_margin < kEdgeTolerance) ++tally.edge_ties;
-            else tally.mismatch(where.str() + ": Embree hit, reference missed");
+            if (own->edge_margin < kEdgeTolerance)
+                ++tally.edge_ties;
+            else
+                tally.mismatch(where.str() + ": Embree hit, reference missed");
         } else if (!got.hit && ref) {
-            if (ref->edge_margin < kEdgeTolerance) ++tally.edge_ties;
-            else tally.mismatch(where.str() + ": Embree missed, reference hit at " + std::to_string(ref->distance));
+            if (ref->edge_margin < kEdgeTolerance)
+                ++tally.edge_ties;
+            else
+                tally.mismatch(where.str() + ": Embree missed, reference hit at " + std::to_string(ref->distance));
         } else {
             ++tally.agree;
         }
         if (got.hit && own_consistent) {
             // Point and normal follow from the triangle.
             const nl::Triangle& t = world.triangles[got.triangle];
-            const Vec3 n = (world.vertices[t[1]] - world.vertices[t[0]]).cross(world.vertices[t[2]] - world.vertices[t[0]]).normalized();
+            const Vec3 n = (world.vertices[t[1]] - world.vertices[t[0]])
+                               .cross(world.vertices[t[2]] - world.vertices[t[0]])
+                               .normalized();
             if ((got.normal - n).norm() > 1e-3f) tally.mismatch(where.str() + ": normal differs");
-            if ((got.point - (ray.origin + ray.direction * got.distance)).norm() > 1e-3f) tally.mismatch(where.str() + ": point differs");
+            if ((got.point - (ray.origin + ray.direction * got.distance)).norm() > 1e-3f)
+                tally.mismatch(where.str() + ": point differs");
         }
     }
     return tally;
@@ -117,7 +129,10 @@ std::vector<nl::Segment> random_segments(const nl::Aabb& box, uint32_t seed, int
     std::mt19937 rng(seed);
     std::uniform_real_distribution<float> unit(0.0f, 1.0f);
     const Vec3 size = box.max - box.min;
-    auto point = [&] { return Vec3(box.min.x() + unit(rng) * size.x(), box.min.y() + unit(rng) * size.y(), box.min.z() + unit(rng) * size.z()); };
+    auto point = [&] {
+        return Vec3(box.min.x() + unit(rng) * size.x(), box.min.y() + unit(rng) * size.y(),
+                    box.min.z() + unit(rng) * size.z());
+    };
     std::vector<nl::Segment> segments;
     for (int i = 0; i < count; ++i) {
         const Vec3 from = point();
@@ -128,20 +143,25 @@ std::vector<nl::Segment> random_segments(const nl::Aabb& box, uint32_t seed, int
     return segments;
 }
 
-Tally compare_segments(const nl::TriangleMesh& world, const std::vector<nl::Segment>& segments, const std::vector<uint8_t>& blocked) {
+Tally compare_segments(const nl::TriangleMesh& world, const std::vector<nl::Segment>& segments,
+                       const std::vector<uint8_t>& blocked) {
     Tally tally;
     for (size_t i = 0; i < segments.size(); ++i) {
         const auto ref = nl::test::segment_occlusion(world, segments[i].from, segments[i].to);
         ++tally.queries;
-        if ((blocked[i] != 0) == ref.blocked) ++tally.agree;
-        else if (ref.least_edge_margin < kEdgeTolerance || ref.least_end_distance < kEdgeTolerance) ++tally.edge_ties;
-        else tally.mismatch("segment " + std::to_string(i) + (blocked[i] ? ": Embree blocked, reference clear" : ": Embree clear, reference blocked"));
+        if ((blocked[i] != 0) == ref.blocked)
+            ++tally.agree;
+        else if (ref.least_edge_margin < kEdgeTolerance || ref.least_end_distance < kEdgeTolerance)
+            ++tally.edge_ties;
+        else
+            tally.mismatch("segment " + std::to_string(i) +
+                           (blocked[i] ? ": Embree blocked, reference clear" : ": Embree clear, reference blocked"));
     }
     return tally;
 }
 
-void check_level_against_reference(const std::string& label, const nl::TriangleMesh& mesh, const nl::Transform& transform,
-                                   uint32_t flags, int ray_count) {
+void check_level_against_reference(const std::string& label, const nl::TriangleMesh& mesh,
+                                   const nl::Transform& transform, uint32_t flags, int ray_count) {
     auto tasks = nl::make_tbb_task_system(2);
     nl::Level level(*tasks);
     const nl::Handle h = level.add_mesh(mesh, transform, flags, 0);
@@ -214,8 +234,10 @@ TEST_CASE("queries match the reference under a transform, for static and movable
 TEST_CASE("results are identical with 1 and 2 threads") {
     const auto gen = nl::levelgen::generate_field_level(3, 20, 20);
     nl::TriangleMesh mesh;
-    for (size_t i = 0; i < gen.positions.size(); i += 3) mesh.vertices.emplace_back(gen.positions[i], gen.positions[i + 1], gen.positions[i + 2]);
-    for (size_t i = 0; i < gen.indices.size(); i += 3) mesh.triangles.push_back({gen.indices[i], gen.indices[i + 1], gen.indices[i + 2]});
+    for (size_t i = 0; i < gen.positions.size(); i += 3)
+        mesh.vertices.emplace_back(gen.positions[i], gen.positions[i + 1], gen.positions[i + 2]);
+    for (size_t i = 0; i < gen.indices.size(); i += 3)
+        mesh.triangles.push_back({gen.indices[i], gen.indices[i + 1], gen.indices[i + 2]});
 
     std::vector<std::vector<nl::RayHit>> hits;
     std::vector<std::vector<uint8_t>> blocked;

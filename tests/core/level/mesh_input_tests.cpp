@@ -47,7 +47,7 @@ TEST_CASE("validation keeps good triangles and maps kept ones back to their inpu
     TriangleMesh m = quad();
     m.vertices.push_back(Vec3(2, 0, 0));
     m.triangles.insert(m.triangles.begin() + 1, {0, 1, 4});  // collinear: zero area
-    m.triangles.push_back({1, 1, 2});                         // repeated index
+    m.triangles.push_back({1, 1, 2});                        // repeated index
     const nl::ValidatedTriangles v = nl::validate_mesh(m);
     CHECK(v.degenerate_count == 2);
     REQUIRE(v.kept.size() == 2);
@@ -127,8 +127,12 @@ TEST_CASE("OBJ: negative (relative) indices resolve to earlier vertices") {
 TEST_CASE("OBJ: malformed files are parse errors with the reason") {
     CHECK(code_of([] { nl::read_obj_text(""); }) == ErrorCode::Parse);
     // A binary file says so, not "no faces".
-    CHECK(message_of([] { nl::read_obj_text(std::string_view("\x7f" "ELF\x02\x01\x01\0\0v 1 2 3\n", 15), "ls.obj"); }) ==
-          "ls.obj: not a text file (a NUL byte at offset 7): an OBJ file is text");
+    CHECK(message_of([] {
+              nl::read_obj_text(std::string_view("\x7f"
+                                                 "ELF\x02\x01\x01\0\0v 1 2 3\n",
+                                                 15),
+                                "ls.obj");
+          }) == "ls.obj: not a text file (a NUL byte at offset 7): an OBJ file is text");
     CHECK(code_of([] { nl::read_obj_text("v 0 0 0\nv 1 0 0\nv 0 0 1\n"); }) == ErrorCode::Parse);
     CHECK(code_of([] { nl::read_obj_text("v 0 0 0\nv 1 0 0\nv 0 0 1\nf 1 2 9\n"); }) == ErrorCode::Parse);
     CHECK(code_of([] { nl::read_obj_text("v 0 0 0\nv 1 0 0\nv 0 0 1\nf 1 2 0\n"); }) == ErrorCode::Parse);
@@ -157,7 +161,9 @@ TEST_CASE("coordinates beyond the limit are refused, and huge scales are not mis
     m.vertices[3].z() = 2e9f;
     // The core names the field; a caller that knows the input by another name puts it in front.
     CHECK(message_of([&] { nl::validate_mesh(m); }).rfind("vertices[3].z", 0) == 0);
-    CHECK(message_of([&] { nl::naming_fields("def->", [&] { nl::validate_mesh(m); }); }).rfind("def->vertices[3].z", 0) == 0);
+    CHECK(message_of([&] {
+              nl::naming_fields("def->", [&] { nl::validate_mesh(m); });
+          }).rfind("def->vertices[3].z", 0) == 0);
     Eigen::Matrix4f big = Eigen::Matrix4f::Identity() * 1e13f;
     big(3, 3) = 1.0f;
     CHECK_NOTHROW(nl::validate_transform(big, "t"));
@@ -182,7 +188,8 @@ TEST_CASE("OBJ: every line ending tinyobjloader knows ends a line for the check 
     for (const char* eol : {"\n", "\r\n", "\r"}) {
         CAPTURE(eol);
         std::string text;
-        for (const char* line : {"# level", "v 0 0 0", "v 1 0 0", "v 0 2 1", "f 1 2 3"}) text += std::string(line) + eol;
+        for (const char* line : {"# level", "v 0 0 0", "v 1 0 0", "v 0 2 1", "f 1 2 3"})
+            text += std::string(line) + eol;
         const TriangleMesh m = nl::read_obj_text(text);
         REQUIRE(m.vertices.size() == 3);
         CHECK(m.vertices[2] == Vec3(0, 2, 1));
@@ -227,5 +234,6 @@ TEST_CASE("OBJ: a file that fails while it is read is an I/O error, not a parse 
     // Reading /proc/self/mem from offset 0 fails (EIO): the address is not mapped.
     if (!std::ifstream("/proc/self/mem")) return;  // no /proc here
     CHECK(code_of([] { nl::read_obj_file("/proc/self/mem"); }) == ErrorCode::Io);
-    CHECK(message_of([] { nl::read_obj_file("/proc/self/mem"); }).find("cannot read '/proc/self/mem'") != std::string::npos);
+    CHECK(message_of([] { nl::read_obj_file("/proc/self/mem"); }).find("cannot read '/proc/self/mem'") !=
+          std::string::npos);
 }

@@ -100,8 +100,8 @@ TEST_CASE("bodies_clear agrees with the exact test against every triangle, for s
         nl::TriangleMesh world = mesh;
         for (Vec3& v : world.vertices) v = moved * v;
         std::mt19937 rng(flags + 9);
-        std::uniform_real_distribution<float> x(bounds.min.x(), bounds.max.x()), y(bounds.min.y() - 1.0f, bounds.max.y() + 1.0f),
-            z(bounds.min.z(), bounds.max.z()), step(-2.0f, 2.0f);
+        std::uniform_real_distribution<float> x(bounds.min.x(), bounds.max.x()),
+            y(bounds.min.y() - 1.0f, bounds.max.y() + 1.0f), z(bounds.min.z(), bounds.max.z()), step(-2.0f, 2.0f);
         std::vector<nl::BodyStretch> stretches;
         for (int i = 0; i < 1500; ++i) {
             nl::SweptCylinder body;
@@ -122,7 +122,8 @@ TEST_CASE("bodies_clear agrees with the exact test against every triangle, for s
                 nl::SweptCylinder body = stretches[i].body;
                 while (expected > 0) {
                     body.radius = radii[expected - 1];
-                    if (nl::proven_apart(body, tri, nl::body_margin(body.from.cwiseAbs().cwiseMax(body.to.cwiseAbs())))) break;
+                    if (nl::proven_apart(body, tri, nl::body_margin(body.from.cwiseAbs().cwiseMax(body.to.cwiseAbs()))))
+                        break;
                     --expected;
                 }
             }

@@ -30,7 +30,9 @@ TriangleMesh turned_over(TriangleMesh mesh) {
     return mesh;
 }
 
-nl::WindingEstimate estimate(const TriangleMesh& mesh) { return nl::estimate_winding(mesh, 0, mesh.triangles.size(), 45.0f, 2.0f); }
+nl::WindingEstimate estimate(const TriangleMesh& mesh) {
+    return nl::estimate_winding(mesh, 0, mesh.triangles.size(), 45.0f, 2.0f);
+}
 
 }  // namespace
 
@@ -47,7 +49,8 @@ TEST_CASE("winding: the default level looks turned over only when it is") {
 
 TEST_CASE("winding: a terrain's floor is all on one side") {
     nl::levelgen::GeneratedLevel terrain;
-    terrain.add_ground_grid(0.0f, 0.0f, 20.0f, 20.0f, 1.0f, [](float x, float z) { return 0.3f * std::sin(x) * std::cos(0.5f * z); });
+    terrain.add_ground_grid(0.0f, 0.0f, 20.0f, 20.0f, 1.0f,
+                            [](float x, float z) { return 0.3f * std::sin(x) * std::cos(0.5f * z); });
     const TriangleMesh mesh = mesh_of(terrain);
     const nl::WindingEstimate given = estimate(mesh);
     CHECK(given.floor_as_given == doctest::Approx(400.0f).epsilon(0.05));
@@ -56,7 +59,8 @@ TEST_CASE("winding: a terrain's floor is all on one side") {
     CHECK(nl::looks_turned_over(estimate(turned_over(mesh))));
 }
 
-TEST_CASE("winding: a tall box, or a room seen from inside, measures alike both ways and is never taken for turned over") {
+TEST_CASE(
+    "winding: a tall box, or a room seen from inside, measures alike both ways and is never taken for turned over") {
     nl::levelgen::GeneratedLevel box;
     box.add_box({{0.0f, 0.0f, 0.0f}, {6.0f, 3.0f, 4.0f}});
     const TriangleMesh outside = mesh_of(box), inside = turned_over(outside);
@@ -85,9 +89,11 @@ TEST_CASE("winding: no shared level looks turned over as given, and the open one
         CAPTURE(path.filename().string());
         const TriangleMesh level = nl::read_obj_file(path.string());
         const nl::WindingEstimate given = estimate(level), turned = estimate(turned_over(level));
-        MESSAGE(path.filename().string() << ": floor as given " << given.floor_as_given << " m2, turned over " << given.floor_turned_over << " m2");
+        MESSAGE(path.filename().string() << ": floor as given " << given.floor_as_given << " m2, turned over "
+                                         << given.floor_turned_over << " m2");
         CHECK_FALSE(nl::looks_turned_over(given));
-        const bool closed = std::find(closed_rooms.begin(), closed_rooms.end(), path.filename().string()) != closed_rooms.end();
+        const bool closed =
+            std::find(closed_rooms.begin(), closed_rooms.end(), path.filename().string()) != closed_rooms.end();
         CHECK(nl::looks_turned_over(turned) == !closed);
     }
 }

@@ -35,7 +35,7 @@ struct Generated {
 };
 
 Generated generate(const std::vector<Box>& boxes, const nl::LinkSettings& settings = {},
-           nl::GenerationMethod method = nl::GenerationMethod::Indexed, int threads = 2) {
+                   nl::GenerationMethod method = nl::GenerationMethod::Indexed, int threads = 2) {
     nl::levelgen::GeneratedLevel level;
     for (const Box& b : boxes) level.add_box(b);
     const nl::test::RecastWorld w = nl::test::recast_world(level, threads);

@@ -34,7 +34,9 @@ std::unique_ptr<nl::World> load(const LevelSource& source, int workers) {
     return world;
 }
 
-bool bits_equal(const nl::Vec3& a, const nl::Vec3& b) { return std::memcmp(a.data(), b.data(), 3 * sizeof(float)) == 0; }
+bool bits_equal(const nl::Vec3& a, const nl::Vec3& b) {
+    return std::memcmp(a.data(), b.data(), 3 * sizeof(float)) == 0;
+}
 bool bits_equal(float a, float b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 
 bool identical(const nl::Link& a, const nl::Link& b) {
@@ -42,15 +44,18 @@ bool identical(const nl::Link& a, const nl::Link& b) {
     return a.kind == b.kind && bits_equal(a.start, b.start) && bits_equal(a.end, b.end) && bits_equal(a.apex, b.apex) &&
            a.bidirectional == b.bidirectional && a.generated == b.generated && a.enabled == b.enabled &&
            bits_equal(a.cost_modifier, b.cost_modifier) && a.user_data == b.user_data && bits_equal(x.gap, y.gap) &&
-           bits_equal(x.rise, y.rise) && bits_equal(x.drop, y.drop) && bits_equal(x.clearance_width, y.clearance_width) &&
-           x.abilities == y.abilities && a.start_polygon == b.start_polygon && a.end_polygon == b.end_polygon;
+           bits_equal(x.rise, y.rise) && bits_equal(x.drop, y.drop) &&
+           bits_equal(x.clearance_width, y.clearance_width) && x.abilities == y.abilities &&
+           a.start_polygon == b.start_polygon && a.end_polygon == b.end_polygon;
 }
 
 std::string describe(const nl::Link& l) {
     std::ostringstream s;
     s.precision(9);
-    s << (l.kind == nl::LinkKind::Jump ? "jump" : l.kind == nl::LinkKind::Drop ? "drop" : "other") << " ("
-      << l.start.transpose() << ") -> (" << l.end.transpose() << ")" << (l.bidirectional ? " both ways" : "")
+    s << (l.kind == nl::LinkKind::Jump   ? "jump"
+          : l.kind == nl::LinkKind::Drop ? "drop"
+                                         : "other")
+      << " (" << l.start.transpose() << ") -> (" << l.end.transpose() << ")" << (l.bidirectional ? " both ways" : "")
       << " clearance " << l.requirements.clearance_width << " polygons " << l.start_polygon << " -> " << l.end_polygon;
     return s.str();
 }
@@ -58,7 +63,8 @@ std::string describe(const nl::Link& l) {
 // Empty if equal, else what differs first.
 std::string difference(const std::vector<nl::Link>& a, const std::vector<nl::Link>& b) {
     for (size_t i = 0; i < std::min(a.size(), b.size()); ++i) {
-        if (!identical(a[i], b[i])) return "link " + std::to_string(i) + ": " + describe(a[i]) + " vs " + describe(b[i]);
+        if (!identical(a[i], b[i]))
+            return "link " + std::to_string(i) + ": " + describe(a[i]) + " vs " + describe(b[i]);
     }
     if (a.size() != b.size()) return std::to_string(a.size()) + " links vs " + std::to_string(b.size());
     return {};
@@ -129,9 +135,9 @@ TEST_CASE("link generation equals the all-pairs reference and is the same on 1 a
     REQUIRE(level.triangle_count() > 3000);
     REQUIRE(level.triangle_count() < 10000);
     uint32_t jumps = 0, drops = 0;
-    check_against_reference(LevelSource{"large-4 (seed 7, " + std::to_string(level.triangle_count()) + " triangles)", "",
-                                        &level},
-                            jumps, drops);
+    check_against_reference(
+        LevelSource{"large-4 (seed 7, " + std::to_string(level.triangle_count()) + " triangles)", "", &level}, jumps,
+        drops);
     CHECK(jumps > 0);
     CHECK(drops > 0);
 }

@@ -45,12 +45,11 @@ using nl::Vec3;
 using nl::levelgen::Box;
 
 // |a - b| <= tolerance, saying both values when it fails.
-#define CHECK_NEAR(a, b, tolerance)                                                                   \
+#define CHECK_NEAR(a, b, tolerance)                                                                          \
     CHECK_MESSAGE(std::fabs(double(a) - double(b)) <= double(tolerance), #a " = ", double(a), ", expected ", \
                   double(b), " +- ", double(tolerance))
 
 namespace {
-
 
 // ---------------------------------------------------------------------------------------------
 // Generating a level
@@ -60,7 +59,7 @@ struct Generated {
     std::vector<Link> links;
     nl::LinkGenerationReport report;
     nl::LinkSettings settings;
-    nl::TriangleMesh triangles;                   // world space, as the level holds them
+    nl::TriangleMesh triangles;  // world space, as the level holds them
     nl::AgentType agent;
     std::shared_ptr<const nl::NavMesh> navmesh;  // outlives the world (walks are measured on it)
 
@@ -74,20 +73,21 @@ struct Generated {
           << report.rejected_distance << ", rise " << report.rejected_rise << ", angle " << report.rejected_angle
           << ", no landing " << report.rejected_no_landing << ", clearance " << report.rejected_clearance
           << ", duplicate " << report.rejected_duplicate;
-        s << ", walkable " << report.rejected_walkable << ", too shallow " << report.rejected_too_shallow << ", too deep "
-          << report.rejected_too_deep;
+        s << ", walkable " << report.rejected_walkable << ", too shallow " << report.rejected_too_shallow
+          << ", too deep " << report.rejected_too_deep;
         // The first 40 links (NAVLINK_TEST_ALL_LINKS=1 lists them all).
         const size_t shown = std::getenv("NAVLINK_TEST_ALL_LINKS") ? links.size() : std::min<size_t>(links.size(), 40);
         for (size_t i = 0; i < shown; ++i) s << "\n  " << nl::test::describe_link(links[i]);
-        if (links.size() > shown) s << "\n  ... and " << links.size() - shown << " more (NAVLINK_TEST_ALL_LINKS=1 lists them)";
+        if (links.size() > shown)
+            s << "\n  ... and " << links.size() - shown << " more (NAVLINK_TEST_ALL_LINKS=1 lists them)";
         return s.str();
     }
 };
 
 // Builds the navmesh with Recast's defaults and generates links with `settings`. `add` registers the
 // level's geometry.
-Generated generate_in_world(const std::string& name, const std::function<void(nl::World&)>& add, const nl::LinkSettings& settings,
-                 nl::GenerationMethod method, int threads) {
+Generated generate_in_world(const std::string& name, const std::function<void(nl::World&)>& add,
+                            const nl::LinkSettings& settings, nl::GenerationMethod method, int threads) {
     const auto world = nl::test::make_world(threads);
     add(*world);
     const nl::Handle navmesh = nl::test::build_recast_navmesh(*world);
@@ -104,7 +104,7 @@ Generated generate_in_world(const std::string& name, const std::function<void(nl
 }
 
 Generated generate(const std::string& name, const std::vector<Box>& boxes, const nl::LinkSettings& settings = {},
-           nl::GenerationMethod method = nl::GenerationMethod::Indexed, int threads = 2) {
+                   nl::GenerationMethod method = nl::GenerationMethod::Indexed, int threads = 2) {
     return generate_in_world(
         name,
         [&](nl::World& world) {
@@ -116,7 +116,7 @@ Generated generate(const std::string& name, const std::vector<Box>& boxes, const
 }
 
 Generated generate_for_obj(const std::string& path, const nl::LinkSettings& settings = {},
-               nl::GenerationMethod method = nl::GenerationMethod::Indexed, int threads = 2) {
+                           nl::GenerationMethod method = nl::GenerationMethod::Indexed, int threads = 2) {
     return generate_in_world(
         path, [&](nl::World& world) { nl::test::add_obj_file(world, path); }, settings, method, threads);
 }
@@ -196,9 +196,9 @@ float heading_off(const Link& l, const Vec3& axis) {
 struct Side {
     std::string name;
     Vec3 outward;
-    float rim;          // x or z of the rim
-    bool along_x;       // rim is an x coordinate
-    float from, to;     // extent of the ledge along it (z for an x rim, x for a z rim)
+    float rim;       // x or z of the rim
+    bool along_x;    // rim is an x coordinate
+    float from, to;  // extent of the ledge along it (z for an x rim, x for a z rim)
 };
 const Side kDeckSides[] = {{"+x", Vec3(1, 0, 0), 6.0f, true, 0.0f, 10.0f},
                            {"-x", Vec3(-1, 0, 0), 0.0f, true, 0.0f, 10.0f},
@@ -257,14 +257,15 @@ bool identical(const Link& a, const Link& b) {
     const nl::LinkRequirements &x = a.requirements, &y = b.requirements;
     return a.kind == b.kind && bits_equal(a.start, b.start) && bits_equal(a.end, b.end) && bits_equal(a.apex, b.apex) &&
            a.bidirectional == b.bidirectional && a.generated == b.generated && bits_equal(x.gap, y.gap) &&
-           bits_equal(x.rise, y.rise) && bits_equal(x.drop, y.drop) && bits_equal(x.clearance_width, y.clearance_width) &&
-           bits_equal(x.length, y.length) && a.start_polygon == b.start_polygon &&
-           a.end_polygon == b.end_polygon;
+           bits_equal(x.rise, y.rise) && bits_equal(x.drop, y.drop) &&
+           bits_equal(x.clearance_width, y.clearance_width) && bits_equal(x.length, y.length) &&
+           a.start_polygon == b.start_polygon && a.end_polygon == b.end_polygon;
 }
 std::string difference(const std::vector<Link>& a, const std::vector<Link>& b) {
     for (size_t i = 0; i < std::min(a.size(), b.size()); ++i)
         if (!identical(a[i], b[i]))
-            return "link " + std::to_string(i) + ": " + nl::test::describe_link(a[i]) + " vs " + nl::test::describe_link(b[i]);
+            return "link " + std::to_string(i) + ": " + nl::test::describe_link(a[i]) + " vs " +
+                   nl::test::describe_link(b[i]);
     if (a.size() != b.size()) return std::to_string(a.size()) + " links vs " + std::to_string(b.size());
     return {};
 }
@@ -329,7 +330,8 @@ std::vector<NamedLevel> all_procedural_levels() {
     out.push_back({"2 m gap, low ceiling", with(two_platforms(2.0f), {kLowCeiling}), {}});
     out.push_back({"2 m gap, full wall", with(two_platforms(2.0f), {kFullWall}), {}});
     out.push_back({"0.8 m step", deck(0.8f), {}});
-    for (float h : {1.0f, 1.5f, 3.0f, 4.5f, 5.0f, 5.3f}) out.push_back({std::to_string(h).substr(0, 3) + " m ledge", deck(h), {}});
+    for (float h : {1.0f, 1.5f, 3.0f, 4.5f, 5.0f, 5.3f})
+        out.push_back({std::to_string(h).substr(0, 3) + " m ledge", deck(h), {}});
     for (int g = 1; g <= 8; ++g) out.push_back({std::to_string(g) + " m gap", two_platforms(float(g)), {}});
     out.push_back({"6 m gap, max_jump_gap 6", two_platforms(6.0f), with_max_jump_gap(6.0f)});
     for (float r : {0.5f, 1.0f, 1.5f, 2.0f, 2.5f})
@@ -345,14 +347,16 @@ std::vector<NamedLevel> all_procedural_levels() {
 // rim over nothing has take-off points and never a drop); the report's ratio is printed too.
 void print_figures(const Generated& b, const nl::test::CheckTally& t) {
     std::map<std::pair<long, long>, int> starts;
-    for (const Link& l : b.of(LinkKind::Drop)) ++starts[{std::lround(l.start.x() * 1000), std::lround(l.start.z() * 1000)}];
+    for (const Link& l : b.of(LinkKind::Drop))
+        ++starts[{std::lround(l.start.x() * 1000), std::lround(l.start.z() * 1000)}];
     const double per_start = starts.empty() ? 0.0 : double(b.report.drop_links) / double(starts.size());
     const double per_takeoff = b.report.takeoff_points ? double(b.report.drop_links) / b.report.takeoff_points : 0.0;
     // Jumps a body could walk about as quickly (the walk rule's figure).
     uint32_t walkable = 0;
     for (const Link& l : b.of(LinkKind::Jump)) {
         const double length = (flat(l.end) - flat(l.start)).norm();
-        walkable += walk_length(b.navmesh, l.start, l.end) <= walk_factor(b.settings) * length + walk_distance(b.settings);
+        walkable +=
+            walk_length(b.navmesh, l.start, l.end) <= walk_factor(b.settings) * length + walk_distance(b.settings);
     }
     MESSAGE(b.name, ": ", b.links.size(), " links (", b.report.jump_links, " jumps, ", walkable, " of them walkable; ",
             b.report.drop_links, " drops); ", b.report.takeoff_points, " take-off points, ", starts.size(),
@@ -371,9 +375,7 @@ TEST_CASE("independent checker: the exact cylinder-triangle test") {
     using V = nl::test::Vec3d;
     const UprightCylinder c{0.0, 0.0, 1.0, 3.0, 0.6};  // r 0.6, y in [1, 3]
     // A wall face: the plane x = d, spanning the slab.
-    auto wall = [&](double d) {
-        return cylinder_meets_triangle(c, V(d, 0, -5), V(d, 0, 5), V(d, 5, 0));
-    };
+    auto wall = [&](double d) { return cylinder_meets_triangle(c, V(d, 0, -5), V(d, 0, 5), V(d, 5, 0)); };
     CHECK(wall(0.599));
     CHECK(wall(0.6));  // touching is a hit
     CHECK_FALSE(wall(0.601));
@@ -397,7 +399,7 @@ TEST_CASE("independent checker: the exact cylinder-triangle test") {
     CHECK_FALSE(cylinder_meets_triangle(c, V(0.43, 2, 0.43), V(4, 2, 0.43), V(0.43, 2, 4)));
     // A vertical triangle seen edge-on from above, in line with the axis but past it.
     CHECK_FALSE(cylinder_meets_triangle(c, V(1, 0, 0), V(2, 0, 0), V(1.5, 5, 0)));
-    CHECK(cylinder_meets_triangle(c, V(0.3, 0, 0), V(2, 0, 0), V(1.5, 5, 0)));  // x 0.54 at y = 1
+    CHECK(cylinder_meets_triangle(c, V(0.3, 0, 0), V(2, 0, 0), V(1.5, 5, 0)));        // x 0.54 at y = 1
     CHECK_FALSE(cylinder_meets_triangle(c, V(0.5, 0, 0), V(2, 0, 0), V(1.5, 5, 0)));  // x 0.7 at y = 1
 }
 
@@ -406,7 +408,7 @@ TEST_CASE("independent checker: hand-made links over a gap with a bar, a floor a
     nl::levelgen::GeneratedLevel level;
     // The bar covers z in [-1, 4] only, the pole stands at z in [7.0, 7.1].
     for (const Box& b : with(two_platforms(2.0f), {Box{{10.95f, 1.75f, -1}, {11.05f, 1.85f, 4}},
-                                                    Box{{10.95f, kDeep, 7.0f}, {11.05f, 5.0f, 7.1f}}}))
+                                                   Box{{10.95f, kDeep, 7.0f}, {11.05f, 5.0f, 7.1f}}}))
         level.add_box(b);
     nl::TriangleMesh mesh;
     for (uint32_t v = 0; v < level.vertex_count(); ++v)
@@ -505,7 +507,7 @@ TEST_CASE("independent checker: hand-made drops off a 3 m ledge, under a beam an
     drop.start = Vec3(5.3f, 3.0f, 5.0f);
     drop.end = Vec3(8.0f, 0.0f, 5.0f);
     drop.apex = Vec3(6.2f, 3.0f, 5.0f);  // where the fall leaves the ground: 0.2 m past the rim
-    drop.requirements.gap = 2.0f;  // rim (x = 6) to landing
+    drop.requirements.gap = 2.0f;        // rim (x = 6) to landing
     drop.requirements.drop = 3.0f;
     drop.requirements.clearance_width = 2.4f;
     drop.requirements.length = 2.7f;
@@ -583,7 +585,8 @@ TEST_CASE("a 0.4 m beam 1.8-2.0 m above a 2.2 m ledge's floor just past its rim:
 // =============================================================================================
 // 2. A body overlapping a solid is refused, whether or not a line crosses a face.
 
-TEST_CASE("a drop beside a tall block: refused when the block's face is closer than the radius, kept at radius + 0.3 m") {
+TEST_CASE(
+    "a drop beside a tall block: refused when the block's face is closer than the radius, kept at radius + 0.3 m") {
     // deck(4.5); a block 10 m tall stands on the lower floor against the deck's +x face (x in [6, 12],
     // past where the fall lands), its face z = face parallel to a straight-out drop. Placed so, the
     // part of the path checked (10 % cut at each end: the cut falls past x = 6 on a fall this long)
@@ -656,7 +659,9 @@ TEST_CASE("a drop beside a tall block: refused when the block's face is closer t
 // =============================================================================================
 // Controls and blockers around a 2 m gap.
 
-TEST_CASE("around a 2 m gap: a 0.3 m wall beside the jump and a block 4.5 m above keep it; a low ceiling or a full wall stop it") {
+TEST_CASE(
+    "around a 2 m gap: a 0.3 m wall beside the jump and a block 4.5 m above keep it; a low ceiling or a full wall stop "
+    "it") {
     const Generated control = generate("2 m gap", two_platforms(2.0f));
     const size_t control_jumps = crossing_jumps(control, 2.0f).size();
     REQUIRE(control_jumps >= 3);
@@ -710,7 +715,9 @@ TEST_CASE("around a 2 m gap: a 0.3 m wall beside the jump and a block 4.5 m abov
 // =============================================================================================
 // 3, 4. Ends on the real floor; drops along every ledge too high to walk, floor to floor.
 
-TEST_CASE("ledges of 1.0, 1.5, 3, 5 and 5.3 m under max_drop_distance 5: drops along the whole ledge up to 5 m, none at 5.3 m") {
+TEST_CASE(
+    "ledges of 1.0, 1.5, 3, 5 and 5.3 m under max_drop_distance 5: drops along the whole ledge up to 5 m, none at 5.3 "
+    "m") {
     for (float h : {1.0f, 1.5f, 3.0f, 5.0f, 5.3f}) {
         const Generated b = generate(std::to_string(h).substr(0, 3) + " m ledge", deck(h));
         CAPTURE(h);
@@ -728,7 +735,8 @@ TEST_CASE("ledges of 1.0, 1.5, 3, 5 and 5.3 m under max_drop_distance 5: drops a
                     CHECK(l.requirements.rise == 0.0f);
                     // One-way unless an agent can jump back up (docs: drop <= max_jump_up); 1.5 m
                     // is that limit exactly, so it is not asserted either way.
-                    if (std::fabs(h - b.settings.max_jump_up) > 0.1f) CHECK(l.bidirectional == (h < b.settings.max_jump_up));
+                    if (std::fabs(h - b.settings.max_jump_up) > 0.1f)
+                        CHECK(l.bidirectional == (h < b.settings.max_jump_up));
                 }
             }
         } else {
@@ -762,7 +770,7 @@ TEST_CASE("gaps of 1 to 8 m: jumps exactly up to max_jump_gap (rim to rim), gap 
         if (gap <= settings.max_jump_gap) {
             CHECK(jumps.size() >= 3);  // MUST
             for (const Link& l : jumps) {
-                CHECK_NEAR(l.requirements.gap, gap, 0.05);  // rim to rim
+                CHECK_NEAR(l.requirements.gap, gap, 0.05);                                // rim to rim
                 CHECK(l.requirements.gap < (flat(l.end) - flat(l.start)).norm() - 0.5f);  // not end to end
                 CHECK_NEAR(l.requirements.length, (flat(l.end) - flat(l.start)).norm(), 0.01);
             }
@@ -842,11 +850,13 @@ TEST_CASE("one drop per way down: a straight ledge over one floor; a ledge over 
             landings[{std::lround(l.start.x() * 1000), std::lround(l.start.z() * 1000)}].push_back(l.end.y());
         bool both = false;
         for (auto& entry : landings) {
-            const double x = entry.first.first / 1000.0, z = entry.first.second / 1000.0;  // (clang 14 captures no bindings)
+            const double x = entry.first.first / 1000.0,
+                         z = entry.first.second / 1000.0;  // (clang 14 captures no bindings)
             std::vector<float>& ys = entry.second;
             std::sort(ys.begin(), ys.end());
             for (size_t i = 1; i < ys.size(); ++i)
-                CHECK_MESSAGE(ys[i] - ys[i - 1] > 0.5f, "two drops from one take-off onto one floor, at x ", x, " z ", z);
+                CHECK_MESSAGE(ys[i] - ys[i - 1] > 0.5f, "two drops from one take-off onto one floor, at x ", x, " z ",
+                              z);
             both = both || (ys.size() >= 2 && ys.back() - ys.front() > 1.5f);
         }
         CHECK(both);  // MUST: a take-off whose probes reach both floors keeps a drop to each
@@ -870,12 +880,10 @@ TEST_CASE("no jump where walking is about as short: across a pit's corner; a lon
             CHECK_MESSAGE(walk > 0.9 * (factor * length + extra), nl::test::describe_link(l), ": walk ", walk,
                           " m for a ", length, " m jump");
             // In particular none across the corner: ends on two adjacent sides of the pit.
-            auto side = [](const Vec3& p) {
-                return p.x() < 0 ? 0 : p.x() > 3 ? 1 : p.z() < 0 ? 2 : p.z() > 3 ? 3 : 4;
-            };
+            auto side = [](const Vec3& p) { return p.x() < 0 ? 0 : p.x() > 3 ? 1 : p.z() < 0 ? 2 : p.z() > 3 ? 3 : 4; };
             const int a = side(l.start), c = side(l.end);
-            CHECK_MESSAGE((a / 2 == c / 2 || a == 4 || c == 4), "a jump across the pit's corner: ",
-                          nl::test::describe_link(l));
+            CHECK_MESSAGE((a / 2 == c / 2 || a == 4 || c == 4),
+                          "a jump across the pit's corner: ", nl::test::describe_link(l));
         }
         CHECK(b.report.rejected_walkable > 0);
         print_figures(b, expect_checked(b));

@@ -21,7 +21,6 @@ nl::Aabb aabb_of(const Box& b) {
     return box;
 }
 
-
 struct Scene {
     std::unique_ptr<nl::World> world = nl::test::make_world(2);
     nl::Handle navmesh;
@@ -38,7 +37,9 @@ struct Scene {
                          const nl::Transform& transform = nl::Transform::Identity()) {
         return nl::test::add_level(*world, boxes, flags, transform);
     }
-    nl::LinkGenerationReport generate_all() { return world->generate_links(navmesh, nl::LinkSettings{}, {}, nl::test::keep_going); }
+    nl::LinkGenerationReport generate_all() {
+        return world->generate_links(navmesh, nl::LinkSettings{}, {}, nl::test::keep_going);
+    }
     nl::LinkGenerationReport update(const Box& box) { return update_links_in_box_raw(aabb_of(box)); }
     nl::LinkGenerationReport update_links_in_box_raw(const nl::Aabb& box) {
         return world->update_links_in_box(navmesh, box, nl::test::keep_going);
@@ -75,8 +76,8 @@ struct Scene {
         CHECK(partial.rejected_wall == full.rejected_wall);
         // Work is rays plus box queries (each stands for a stretch of sweep segments). A full generation
         // already skips the segments of clear stretches, so the update's saving is mostly probes.
-        MESSAGE(what, ": update cast ", partial.rays_cast, " rays and ", partial.box_queries, " box queries, a full generation ",
-                full.rays_cast, " and ", full.box_queries);
+        MESSAGE(what, ": update cast ", partial.rays_cast, " rays and ", partial.box_queries,
+                " box queries, a full generation ", full.rays_cast, " and ", full.box_queries);
         CHECK((partial.rays_cast + partial.box_queries) * 2 < full.rays_cast + full.box_queries);
     }
 
@@ -132,8 +133,10 @@ TEST_CASE("a movable crate moved along a platform edge: the update over both pla
     crate.add_box(at_origin);
     float before[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, platform.min[0] + 0.3f, platform.max[1], 1.5f, 1};
     float after[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, platform.min[0] + 0.3f, platform.max[1], 4.5f, 1};
-    const nl::Handle id = s.add_boxes(crate, nl::kMeshMovable, nl::Transform(Eigen::Map<const Eigen::Matrix4f>(before)));
-    const Box first{{before[12] - 0.6f, before[13], before[14] - 0.6f}, {before[12] + 0.6f, before[13] + 1.8f, before[14] + 0.6f}};
+    const nl::Handle id =
+        s.add_boxes(crate, nl::kMeshMovable, nl::Transform(Eigen::Map<const Eigen::Matrix4f>(before)));
+    const Box first{{before[12] - 0.6f, before[13], before[14] - 0.6f},
+                    {before[12] + 0.6f, before[13] + 1.8f, before[14] + 0.6f}};
     s.check_update_equals_full(first, "crate placed");
 
     s.world->level().set_transform(id, nl::Transform(Eigen::Map<const Eigen::Matrix4f>(after)));

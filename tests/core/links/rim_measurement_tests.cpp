@@ -20,11 +20,11 @@ using nl::levelgen::GeneratedLevel;
 
 namespace {
 
-constexpr float kDeck = 1.3f;        // deck tops, over a floor at 0: within max_jump_up, so drops work both ways
-constexpr float kStepDown = 0.95f;   // what a rim probe counts as ground: within climb (0.9) + 5 cm below
-constexpr float kRimStep = 0.25f;    // the rim search's step
+constexpr float kDeck = 1.3f;       // deck tops, over a floor at 0: within max_jump_up, so drops work both ways
+constexpr float kStepDown = 0.95f;  // what a rim probe counts as ground: within climb (0.9) + 5 cm below
+constexpr float kRimStep = 0.25f;   // the rim search's step
 constexpr float kHalving = kRimStep / 16.0f;  // and its last interval
-constexpr float kPastRim = 0.2f;     // a drop's fall leaves the ground this far past its rim
+constexpr float kPastRim = 0.2f;              // a drop's fall leaves the ground this far past its rim
 
 // A level described in its own frame (heights known everywhere), built turned by `yaw` about the origin.
 struct RimLevel {
@@ -79,12 +79,16 @@ void add_face(GeneratedLevel& level, const std::vector<Vec3>& corners, const Vec
     const Vec3 normal = (corners[1] - corners[0]).cross(corners[2] - corners[0]);
     const bool outward = normal.dot(corners[0] - inside) > 0.0f;
     for (uint32_t k = 1; k + 1 < corners.size(); ++k) {
-        if (outward) level.indices.insert(level.indices.end(), {base, base + k, base + k + 1});
-        else level.indices.insert(level.indices.end(), {base, base + k + 1, base + k});
+        if (outward)
+            level.indices.insert(level.indices.end(), {base, base + k, base + k + 1});
+        else
+            level.indices.insert(level.indices.end(), {base, base + k + 1, base + k});
     }
 }
 
-bool inside_box(const Box& b, float x, float z) { return x >= b.min[0] && x <= b.max[0] && z >= b.min[2] && z <= b.max[2]; }
+bool inside_box(const Box& b, float x, float z) {
+    return x >= b.min[0] && x <= b.max[0] && z >= b.min[2] && z <= b.max[2];
+}
 
 // A 30 m floor at height 0 and deck boxes on it; the deck boxes' tops are the surfaces above the floor.
 RimLevel boxes_level(const std::vector<Box>& decks, float yaw) {
@@ -144,8 +148,8 @@ RimLevel bevelled_level(float yaw) {
 std::vector<Link> generate(const RimLevel& r, const nl::LinkSettings& settings = {}) {
     const nl::test::RecastWorld w = nl::test::recast_world(r.level, 2);
     nl::LinkGenerationReport report;
-    return nl::generate_links(*w.mesh, w.world->level(), w.world->tasks(), settings, nl::GenerationMethod::Indexed, report,
-                              nl::test::keep_going);
+    return nl::generate_links(*w.mesh, w.world->level(), w.world->tasks(), settings, nl::GenerationMethod::Indexed,
+                              report, nl::test::keep_going);
 }
 
 Vec3 flat(const Vec3& v) { return Vec3(v.x(), 0.0f, v.z()); }

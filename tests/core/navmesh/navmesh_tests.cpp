@@ -229,9 +229,11 @@ TEST_CASE("a level polygon's surface is exactly its height: point location's pru
     for (int i = 0; i < 2000; ++i) {
         const nl::Vec3 point(x(random), 0.5f, z(random));
         for (uint32_t p = 0; p < mesh->polygon_count(); ++p) {
-            if (mesh->over_polygon(p, point.x(), point.z())) CHECK(mesh->surface_height(p, point.x(), point.z()) == 3.0f);
+            if (mesh->over_polygon(p, point.x(), point.z()))
+                CHECK(mesh->surface_height(p, point.x(), point.z()) == 3.0f);
         }
-        const nl::NavPoint fast = mesh->find_nearest(point, nl::Vec3(2, 4, 2)), slow = mesh->find_nearest_brute_force(point, nl::Vec3(2, 4, 2));
+        const nl::NavPoint fast = mesh->find_nearest(point, nl::Vec3(2, 4, 2)),
+                           slow = mesh->find_nearest_brute_force(point, nl::Vec3(2, 4, 2));
         CHECK(fast.polygon == slow.polygon);
     }
 }
@@ -241,8 +243,9 @@ TEST_CASE("point location's ranking does not depend on the order it meets polygo
     // skipping by bounds must allow for that, or the answer depends on which polygon came first.
     NavMeshInput in;
     in.agent_type.max_climb = 0.5f;
-    in.vertices = {Vec3(0, 0, 0), Vec3(100, 0, -50), Vec3(1, 0, 0),                     // the skinny triangle
-                   Vec3(-1.8f, 1, -0.5f), Vec3(-1.8f, 1, 0.5f), Vec3(-0.8f, 1, 0.5f), Vec3(-0.8f, 1, -0.5f)};  // a floor 0.8 m off
+    in.vertices = {Vec3(0, 0, 0),         Vec3(100, 0, -50),    Vec3(1, 0, 0),  // the skinny triangle
+                   Vec3(-1.8f, 1, -0.5f), Vec3(-1.8f, 1, 0.5f), Vec3(-0.8f, 1, 0.5f),
+                   Vec3(-0.8f, 1, -0.5f)};  // a floor 0.8 m off
     in.indices = {0, 1, 2, 3, 4, 5, 6};
     in.polygon_sizes = {3, 4};
     in.weld_tolerance = 0.0f;

@@ -49,7 +49,8 @@ TEST_CASE("platform: a lock taken again by the thread that holds it is refused, 
             outer_exclusive ? mutex.lock() : mutex.lock_shared();
             CHECK(mutex.held_by_this_thread());
             std::string message;
-            CHECK(test::code_of([&] { inner_exclusive ? mutex.lock() : mutex.lock_shared(); }, &message) == ErrorCode::Internal);
+            CHECK(test::code_of([&] { inner_exclusive ? mutex.lock() : mutex.lock_shared(); }, &message) ==
+                  ErrorCode::Internal);
             CHECK(message.find("holds the lock of the things") != std::string::npos);
             CHECK(mutex.held_by_this_thread());  // the refusal let go of nothing
             outer_exclusive ? mutex.unlock() : mutex.unlock_shared();

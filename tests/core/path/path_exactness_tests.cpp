@@ -89,7 +89,8 @@ double xz_length(const nl::PathResult& result) {
 }
 
 std::string describe(const nl::PathResult& result) {
-    std::string s = "outcome " + std::to_string(uint32_t(result.outcome)) + ", cost " + std::to_string(result.cost) + ":";
+    std::string s =
+        "outcome " + std::to_string(uint32_t(result.outcome)) + ", cost " + std::to_string(result.cost) + ":";
     for (const nl::PathPoint& p : result.points)
         s += " (" + std::to_string(p.position.x()) + ", " + std::to_string(p.position.z()) + ")" +
              (p.segment ? "[link " + std::to_string(p.segment) + "]" : "");
@@ -110,26 +111,27 @@ std::vector<Vec3> cell_points(const std::vector<std::string>& rows, std::mt19937
     for (uint32_t r = 0; r < rows.size(); ++r) {
         for (uint32_t c = 0; c < rows[r].size(); ++c) {
             if (rows[r][c] == '.')
-                points.emplace_back(c + 0.25f + 0.5f * float(random() % 100) / 100.0f, 0.0f, r + 0.25f + 0.5f * float(random() % 100) / 100.0f);
+                points.emplace_back(c + 0.25f + 0.5f * float(random() % 100) / 100.0f, 0.0f,
+                                    r + 0.25f + 0.5f * float(random() % 100) / 100.0f);
         }
     }
     return points;
 }
 
 struct Tally {
-    int pairs = 0;   // with a route
-    int none = 0;    // without (both agree)
-    int within = 0;  // within 0.1%
-    int links = 0;   // paths the search takes a link on
-    double worst = 0.0;     // the search's largest excess over the reference, relative
-    double cheaper = 0.0;   // the most the search's is below the reference's (>= 0), absolute
-    double off_cost = 0.0;  // without links: the most the search's cost and its path's x-z length differ
+    int pairs = 0;                   // with a route
+    int none = 0;                    // without (both agree)
+    int within = 0;                  // within 0.1%
+    int links = 0;                   // paths the search takes a link on
+    double worst = 0.0;              // the search's largest excess over the reference, relative
+    double cheaper = 0.0;            // the most the search's is below the reference's (>= 0), absolute
+    double off_cost = 0.0;           // without links: the most the search's cost and its path's x-z length differ
     double nodes_per_polygon = 0.0;  // the exact search's interval nodes per polygon it entered, at most
 
     void report(const std::string& what) const {
         MESSAGE(what, ": search within 0.1% of the reference on ", within, " of ", pairs, " pairs (", none,
-                " more without a route in both, ", links, " paths over links); worst +", 100.0 * worst, "%, at most ", cheaper,
-                " below it");
+                " more without a route in both, ", links, " paths over links); worst +", 100.0 * worst, "%, at most ",
+                cheaper, " below it");
         if (links == 0) MESSAGE(what, ": the search's cost and its path's x-z length apart by at most ", off_cost);
         MESSAGE(what, ": at most ", nodes_per_polygon, " search nodes per polygon entered");
     }
@@ -164,14 +166,17 @@ void compare(const Map& map, const nl::PathQuery& query, const std::vector<Vec3>
         alone.goal = goal;
         nl::CorridorSearch exact;
         nl::find_shortest_corridor(*graph, alone, graph->navmesh().find_nearest(start, query.search_half_extents),
-                                   graph->navmesh().find_nearest(goal, query.search_half_extents), 1.0f, nullptr, exact);
+                                   graph->navmesh().find_nearest(goal, query.search_half_extents), 1.0f, nullptr,
+                                   exact);
         CHECK(exact.reached_goal);
-        tally.nodes_per_polygon = std::max(tally.nodes_per_polygon, double(exact.search_nodes) / std::max(1u, exact.nodes_visited));
+        tally.nodes_per_polygon =
+            std::max(tally.nodes_per_polygon, double(exact.search_nodes) / std::max(1u, exact.nodes_visited));
         if (result.links_used > 0) ++tally.links;
         const double found = by_cost ? double(result.cost) : xz_length(result);
         CHECK(found >= *cheapest - 1e-4);
         tally.cheaper = std::max(tally.cheaper, *cheapest - found);
-        if (result.links_used == 0) tally.off_cost = std::max(tally.off_cost, std::fabs(double(result.cost) - xz_length(result)));
+        if (result.links_used == 0)
+            tally.off_cost = std::max(tally.off_cost, std::fabs(double(result.cost) - xz_length(result)));
         const double excess = found / std::max(*cheapest, 1e-6) - 1.0;
         CHECK(excess <= 1e-3);
         tally.worst = std::max(tally.worst, excess);
@@ -186,7 +191,8 @@ TEST_CASE("the shortest walk reference: straight, round one corner, round a pill
     const nl::test::ShortestPathReference around_corner(corner.graph()->navmesh());
     CHECK(*around_corner.length(Vec3(0.5f, 0, 0.5f), Vec3(2.5f, 0, 0.5f)) == doctest::Approx(2.0).epsilon(1e-9));
     // Round the reflex corner (2, 1): twice sqrt(1.5^2 + 0.5^2).
-    CHECK(*around_corner.length(Vec3(0.5f, 0, 0.5f), Vec3(2.5f, 0, 2.5f)) == doctest::Approx(2 * std::sqrt(2.5)).epsilon(1e-9));
+    CHECK(*around_corner.length(Vec3(0.5f, 0, 0.5f), Vec3(2.5f, 0, 2.5f)) ==
+          doctest::Approx(2 * std::sqrt(2.5)).epsilon(1e-9));
     CHECK_FALSE(around_corner.walkable(Vec3(0.5f, 0, 0.5f), Vec3(2.5f, 0, 2.5f)));
     CHECK(around_corner.walkable(Vec3(0.0f, 0, 0.0f), Vec3(3.0f, 0, 0.0f)));  // along the outline
 
@@ -197,11 +203,13 @@ TEST_CASE("the shortest walk reference: straight, round one corner, round a pill
           doctest::Approx(2 * std::sqrt(2.5) + 1).epsilon(1e-9));
 
     Map apart({"..#.."});
-    CHECK_FALSE(nl::test::ShortestPathReference(apart.graph()->navmesh()).length(Vec3(0.5f, 0, 0.5f), Vec3(4.5f, 0, 0.5f)));
+    CHECK_FALSE(
+        nl::test::ShortestPathReference(apart.graph()->navmesh()).length(Vec3(0.5f, 0, 0.5f), Vec3(4.5f, 0, 0.5f)));
 
     // Two cells touching at a corner alone: no way between them.
     Map diagonal({".#", "#."});
-    CHECK_FALSE(nl::test::ShortestPathReference(diagonal.graph()->navmesh()).length(Vec3(0.5f, 0, 0.5f), Vec3(1.5f, 0, 1.5f)));
+    CHECK_FALSE(
+        nl::test::ShortestPathReference(diagonal.graph()->navmesh()).length(Vec3(0.5f, 0, 0.5f), Vec3(1.5f, 0, 1.5f)));
 }
 
 TEST_CASE("the shortest walk reference: a wider body crosses portals within their narrowed openings") {
@@ -213,7 +221,8 @@ TEST_CASE("the shortest walk reference: a wider body crosses portals within thei
     CHECK(reference.margin() == doctest::Approx(0.25f));
     std::vector<Vec3> bends;
     const double expected = std::hypot(1.5, 0.25) + std::hypot(0.25, 0.25) + std::hypot(0.25, 1.5);
-    CHECK(*reference.length(Vec3(0.5f, 0, 0.5f), Vec3(2.5f, 0, 2.5f), &bends) == doctest::Approx(expected).epsilon(1e-6));
+    CHECK(*reference.length(Vec3(0.5f, 0, 0.5f), Vec3(2.5f, 0, 2.5f), &bends) ==
+          doctest::Approx(expected).epsilon(1e-6));
     REQUIRE(bends.size() == 2);
     CHECK(bends[0].x() == doctest::Approx(2.0f));
     CHECK(bends[0].z() == doctest::Approx(0.75f));
@@ -221,12 +230,15 @@ TEST_CASE("the shortest walk reference: a wider body crosses portals within thei
     CHECK(bends[1].z() == doctest::Approx(1.0f));
     // Past the corner closer than the margin: not for this body, fine for a thin one.
     CHECK_FALSE(reference.walkable(Vec3(0.5f, 0, 0.9f), Vec3(2.1f, 0, 0.9f)));
-    CHECK(nl::test::ShortestPathReference(corner.graph()->navmesh()).walkable(Vec3(0.5f, 0, 0.9f), Vec3(2.1f, 0, 0.9f)));
+    CHECK(
+        nl::test::ShortestPathReference(corner.graph()->navmesh()).walkable(Vec3(0.5f, 0, 0.9f), Vec3(2.1f, 0, 0.9f)));
 
     // A one-cell passage closes for a margin of half a cell or more.
     Map passage({"...", "#.#", "..."});
-    CHECK(nl::test::ShortestPathReference(*passage.graph(), body(0.45f)).length(Vec3(1.5f, 0, 0.5f), Vec3(1.5f, 0, 2.5f)));
-    CHECK_FALSE(nl::test::ShortestPathReference(*passage.graph(), body(0.5f)).length(Vec3(1.5f, 0, 0.5f), Vec3(1.5f, 0, 2.5f)));
+    CHECK(nl::test::ShortestPathReference(*passage.graph(), body(0.45f))
+              .length(Vec3(1.5f, 0, 0.5f), Vec3(1.5f, 0, 2.5f)));
+    CHECK_FALSE(
+        nl::test::ShortestPathReference(*passage.graph(), body(0.5f)).length(Vec3(1.5f, 0, 0.5f), Vec3(1.5f, 0, 2.5f)));
 }
 
 TEST_CASE("the shortest walk reference: its bend points are every place a cheapest route turns") {
@@ -236,7 +248,9 @@ TEST_CASE("the shortest walk reference: its bend points are every place a cheape
         const std::vector<std::string> rows = random_rows(random);
         Map m(rows);
         const std::vector<Vec3> points = cell_points(rows, random);
-        for (int i = 0; i < 6; ++i) m.link(points[random() % points.size()], points[random() % points.size()], float(random() % 2), i % 2 == 0, 0.5f + float(i % 3));
+        for (int i = 0; i < 6; ++i)
+            m.link(points[random() % points.size()], points[random() % points.size()], float(random() % 2), i % 2 == 0,
+                   0.5f + float(i % 3));
         const auto graph = m.graph();
         for (const float radius : {0.0f, 0.3f, 0.55f}) {
             nl::PathQuery query = body(radius);
@@ -246,7 +260,8 @@ TEST_CASE("the shortest walk reference: its bend points are every place a cheape
             for (int k = 0; k < 25; ++k) {
                 const Vec3 start = points[random() % points.size()], goal = points[random() % points.size()];
                 const std::optional<double> a = bends_only.length(start, goal), b = every_vertex.length(start, goal);
-                INFO("trial ", trial, " radius ", radius, " from (", start.x(), ", ", start.z(), ") to (", goal.x(), ", ", goal.z(), ")");
+                INFO("trial ", trial, " radius ", radius, " from (", start.x(), ", ", start.z(), ") to (", goal.x(),
+                     ", ", goal.z(), ")");
                 REQUIRE(a.has_value() == b.has_value());
                 if (a) CHECK(*a == doctest::Approx(*b).epsilon(1e-9));
             }
@@ -287,7 +302,8 @@ TEST_CASE("on random maps turned, scaled and moved the search is the shortest wa
     // reaches the next only within rounding, and must still bend there (dungeon lost such ways).
     const float c = std::cos(0.3f), s = std::sin(0.3f);
     const auto place = [&](const Vec3& v) {
-        return Vec3(1.984375f + 0.7312f * (c * v.x() - s * v.z()), v.y(), -31.2412f + 0.7312f * (s * v.x() + c * v.z()));
+        return Vec3(1.984375f + 0.7312f * (c * v.x() - s * v.z()), v.y(),
+                    -31.2412f + 0.7312f * (s * v.x() + c * v.z()));
     };
     random_map_trials(2030, 12, place, "turned, scaled and moved", 1500,
                       [](int index, Map& m, const std::vector<Vec3>& points, std::mt19937& random, Tally& tally) {
@@ -316,18 +332,19 @@ TEST_CASE("on random maps with links a wider body's cost is the cheapest route's
     // Links as above, some too narrow for the wider bodies (clearance 0.8 m against 2 x radius).
     const float modifiers[] = {0.5f, 1.0f, 2.0f};
     const float radii[] = {0.3f, 0.45f, 0.55f};
-    random_map_trials(2029, 6, kAsBuilt, "links, margin 0.3 to 0.55", 500,
-                      [&](int index, Map& m, const std::vector<Vec3>& points, std::mt19937& random, Tally& tally) {
-                          for (int l = 0; l < 12; ++l) {
-                              const Vec3 from = points[random() % points.size()], to = points[random() % points.size()];
-                              m.link(from, to, float(random() % 2), random() % 3 == 0, modifiers[random() % 3],
-                                     nl::LinkKind::Jump, random() % 3 == 0 ? 0.8f : 0.0f);
-                          }
-                          nl::PathQuery query = body(radii[index % 3]);
-                          query.link_cost = 0.3f;
-                          compare(m, query, points, 200, true, random, tally,
-                                  "trial " + std::to_string(index) + " radius " + std::to_string(query.capabilities.radius));
-                      });
+    random_map_trials(
+        2029, 6, kAsBuilt, "links, margin 0.3 to 0.55", 500,
+        [&](int index, Map& m, const std::vector<Vec3>& points, std::mt19937& random, Tally& tally) {
+            for (int l = 0; l < 12; ++l) {
+                const Vec3 from = points[random() % points.size()], to = points[random() % points.size()];
+                m.link(from, to, float(random() % 2), random() % 3 == 0, modifiers[random() % 3], nl::LinkKind::Jump,
+                       random() % 3 == 0 ? 0.8f : 0.0f);
+            }
+            nl::PathQuery query = body(radii[index % 3]);
+            query.link_cost = 0.3f;
+            compare(m, query, points, 200, true, random, tally,
+                    "trial " + std::to_string(index) + " radius " + std::to_string(query.capabilities.radius));
+        });
 }
 
 TEST_CASE("on random maps a wider body's path is the shortest walk through narrowed portals") {
@@ -342,17 +359,21 @@ TEST_CASE("on random maps a wider body's path is the shortest walk through narro
 
 // What walking a path costs on a cell map with these area costs, seen from above, each stretch
 // along a cell border at the dearer side's rate: at least what the planner counts for it.
-double dearest_side_cost(const std::vector<std::string>& rows, const std::vector<float>& costs, const nl::PathResult& path) {
+double dearest_side_cost(const std::vector<std::string>& rows, const std::vector<float>& costs,
+                         const nl::PathResult& path) {
     auto rate_at = [&](double x, double z) {
         float rate = 0.0f;
         const bool on_x = std::fabs(x - std::round(x)) < 1e-6, on_z = std::fabs(z - std::round(z)) < 1e-6;
         for (int dx = on_x ? -1 : 0; dx <= 0; ++dx) {
             for (int dz = on_z ? -1 : 0; dz <= 0; ++dz) {
-                const long c = on_x ? std::lround(x) + dx : long(std::floor(x)), r = on_z ? std::lround(z) + dz : long(std::floor(z));
+                const long c = on_x ? std::lround(x) + dx : long(std::floor(x)),
+                           r = on_z ? std::lround(z) + dz : long(std::floor(z));
                 if (r < 0 || r >= long(rows.size()) || c < 0 || c >= long(rows[r].size())) continue;
                 const char cell = rows[r][c];
-                if (cell == '.') rate = std::max(rate, costs[0]);
-                else if (cell >= '0' && cell <= '9') rate = std::max(rate, costs[size_t(cell - '0')]);
+                if (cell == '.')
+                    rate = std::max(rate, costs[0]);
+                else if (cell >= '0' && cell <= '9')
+                    rate = std::max(rate, costs[size_t(cell - '0')]);
             }
         }
         return rate;
@@ -370,13 +391,16 @@ double dearest_side_cost(const std::vector<std::string>& rows, const std::vector
         const double length = std::hypot(double(b.x()) - a.x(), double(b.z()) - a.z());
         for (size_t k = 1; k < cuts.size(); ++k) {
             const double t = 0.5 * (cuts[k - 1] + cuts[k]);
-            cost += (cuts[k] - cuts[k - 1]) * length * rate_at(a.x() + t * (b.x() - a.x()), a.z() + t * (b.z() - a.z()));
+            cost +=
+                (cuts[k] - cuts[k - 1]) * length * rate_at(a.x() + t * (b.x() - a.x()), a.z() + t * (b.z() - a.z()));
         }
     }
     return cost;
 }
 
-TEST_CASE("on random maps with areas of different costs a path costs at most the dearest rate over the cheapest times the cheapest route") {
+TEST_CASE(
+    "on random maps with areas of different costs a path costs at most the dearest rate over the cheapest times the "
+    "cheapest route") {
     // The bound issue 20 asks for where no exact search applies: between the shortest walk at the
     // cheapest rate, which no route undercuts, and that walk at the dearest rate, which the planner's
     // choice never exceeds (it takes the corridor search's path only when that is cheaper).
@@ -399,7 +423,8 @@ TEST_CASE("on random maps with areas of different costs a path costs at most the
             query.area_costs = costs;
             const nl::PathResult result = plan(*graph, query, start, goal);
             const std::optional<double> shortest = reference.length(start, goal);
-            INFO("map ", index, " from (", start.x(), ", ", start.z(), ") to (", goal.x(), ", ", goal.z(), "): ", describe(result));
+            INFO("map ", index, " from (", start.x(), ", ", start.z(), ") to (", goal.x(), ", ", goal.z(),
+                 "): ", describe(result));
             REQUIRE((result.outcome == nl::PathOutcome::Complete) == shortest.has_value());
             if (!shortest) continue;
             ++pairs;
@@ -439,7 +464,8 @@ TEST_CASE("in a hall of pillars on grid lines the exact search's nodes stay a fe
         query.start = start, query.goal = goal;
         nl::CorridorSearch exact;
         nl::find_shortest_corridor(*graph, query, graph->navmesh().find_nearest(start, query.search_half_extents),
-                                   graph->navmesh().find_nearest(goal, query.search_half_extents), 1.0f, nullptr, exact);
+                                   graph->navmesh().find_nearest(goal, query.search_half_extents), 1.0f, nullptr,
+                                   exact);
         REQUIRE(exact.reached_goal);
         most = std::max(most, double(exact.search_nodes) / exact.nodes_visited);
         const std::optional<double> cheapest = reference.length(start, goal);
@@ -535,6 +561,7 @@ TEST_CASE("a wider body goes round a passage closed to it") {
     REQUIRE(result.outcome == nl::PathOutcome::Complete);
     CHECK(xz_length(result) == doctest::Approx(expected).epsilon(1e-5));
     std::vector<Vec3> bends;
-    CHECK(*nl::test::ShortestPathReference(*graph, wide).length(start, goal, &bends) == doctest::Approx(expected).epsilon(1e-6));
+    CHECK(*nl::test::ShortestPathReference(*graph, wide).length(start, goal, &bends) ==
+          doctest::Approx(expected).epsilon(1e-6));
     CHECK(bends.size() == 4);
 }

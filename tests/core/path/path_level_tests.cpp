@@ -46,15 +46,18 @@ struct LevelWithLinks {
         }
         bool passes(float min_x, float max_x, float min_z, float max_z) const {
             for (const nl::PathPoint& p : points())
-                if (p.position[0] >= min_x && p.position[0] <= max_x && p.position[2] >= min_z && p.position[2] <= max_z)
+                if (p.position[0] >= min_x && p.position[0] <= max_x && p.position[2] >= min_z &&
+                    p.position[2] <= max_z)
                     return true;
             return false;
         }
         std::string describe() const {
-            std::string s = "outcome " + std::to_string(uint32_t(result.outcome)) + ", length " + std::to_string(result.length) + ":";
+            std::string s = "outcome " + std::to_string(uint32_t(result.outcome)) + ", length " +
+                            std::to_string(result.length) + ":";
             for (const nl::PathPoint& p : points())
                 s += " (" + std::to_string(p.position[0]) + ", " + std::to_string(p.position[1]) + ", " +
-                     std::to_string(p.position[2]) + ")" + (p.segment ? " then link kind " + std::to_string(p.segment) : "");
+                     std::to_string(p.position[2]) + ")" +
+                     (p.segment ? " then link kind " + std::to_string(p.segment) : "");
             return s;
         }
     };
@@ -115,11 +118,11 @@ TEST_CASE("a runner jumps the gap; a walker, or a jumper too short for it, goes 
     // Platform A (top 0) and B (top 1.2) 2 m apart over a pit; round the back a bridge at 0 joins A
     // and a flight of stairs up to B.
     std::vector<Box> boxes = {
-        {{0, -1, 0}, {10, 0, 10}},     // A
+        {{0, -1, 0}, {10, 0, 10}},        // A
         {{12, 0.2f, 0}, {22, 1.2f, 10}},  // B
-        {{0, -1, 20}, {22, 0, 23}},    // the bridge
-        {{0, -1, 10}, {3, 0, 20}},     // A to the bridge
-        {{-5, -31, -5}, {27, -30, 28}},  // the pit's floor, beyond any drop
+        {{0, -1, 20}, {22, 0, 23}},       // the bridge
+        {{0, -1, 10}, {3, 0, 20}},        // A to the bridge
+        {{-5, -31, -5}, {27, -30, 28}},   // the pit's floor, beyond any drop
     };
     for (int step = 0; step < 4; ++step) {
         const float z1 = 20.0f - 2.5f * step, top = 0.3f * (step + 1);
@@ -127,7 +130,8 @@ TEST_CASE("a runner jumps the gap; a walker, or a jumper too short for it, goes 
     }
     LevelWithLinks level(boxes);
     uint32_t jumps = 0;
-    for (const nl::Link& l : level.links) jumps += l.kind == nl::LinkKind::Jump && l.start[0] < 12.5f && l.end[0] > 9.5f;
+    for (const nl::Link& l : level.links)
+        jumps += l.kind == nl::LinkKind::Jump && l.start[0] < 12.5f && l.end[0] > 9.5f;
     REQUIRE(jumps > 0);
 
     const float from[3] = {5, 0, 5}, to[3] = {17, 1.2f, 5};
@@ -206,8 +210,8 @@ TEST_CASE("one navmesh serves two agent sizes: the wide one avoids the narrow co
     // Two rooms over a pit, joined by a 1.2 m corridor and by a 4 m way round; the navmesh is built
     // for a 0.3 m radius.
     const std::vector<Box> boxes = {
-        {{0, -1, 0}, {10, 0, 10}},       {{0, -1, 20}, {10, 0, 30}}, {{4.4f, -1, 10}, {5.6f, 0, 20}},
-        {{14, -1, 0}, {18, 0, 30}},      {{10, -1, 0}, {14, 0, 4}},  {{10, -1, 26}, {14, 0, 30}},
+        {{0, -1, 0}, {10, 0, 10}},      {{0, -1, 20}, {10, 0, 30}}, {{4.4f, -1, 10}, {5.6f, 0, 20}},
+        {{14, -1, 0}, {18, 0, 30}},     {{10, -1, 0}, {14, 0, 4}},  {{10, -1, 26}, {14, 0, 30}},
         {{-5, -31, -5}, {23, -30, 35}},
     };
     LevelWithLinks level(boxes, 0.3f);
@@ -291,18 +295,19 @@ TEST_CASE("on every shared level, paths stay on the navmesh, end where asked, an
                 CHECK(points.front().position[k] == sync.start[k]);
                 CHECK(points.back().position[k] == sync.goal[k]);
             }
-            const float straight = std::sqrt(std::pow(sync.goal[0] - sync.start[0], 2.0f) +
-                                             std::pow(sync.goal[1] - sync.start[1], 2.0f) +
-                                             std::pow(sync.goal[2] - sync.start[2], 2.0f));
+            const float straight =
+                std::sqrt(std::pow(sync.goal[0] - sync.start[0], 2.0f) + std::pow(sync.goal[1] - sync.start[1], 2.0f) +
+                          std::pow(sync.goal[2] - sync.start[2], 2.0f));
             CHECK(sync.length >= straight - 1e-3f);
             // Walked segments run over the navmesh: points along them lie over some polygon.
             for (size_t k = 0; k + 1 < count; ++k) {
                 CHECK(points[k].segment == nl::kSegmentWalk);  // no links on these navmeshes
                 for (float t : {0.25f, 0.5f, 0.75f}) {
                     float probe[3];
-                    for (int a = 0; a < 3; ++a) probe[a] = points[k].position[a] + t * (points[k + 1].position[a] - points[k].position[a]);
-                    CHECK_MESSAGE(over_navmesh(*navmesh_ptr, probe), "segment ", k, " leaves the navmesh at (", probe[0], ", ",
-                                  probe[1], ", ", probe[2], ")");
+                    for (int a = 0; a < 3; ++a)
+                        probe[a] = points[k].position[a] + t * (points[k + 1].position[a] - points[k].position[a]);
+                    CHECK_MESSAGE(over_navmesh(*navmesh_ptr, probe), "segment ", k, " leaves the navmesh at (",
+                                  probe[0], ", ", probe[1], ", ", probe[2], ")");
                 }
             }
         }

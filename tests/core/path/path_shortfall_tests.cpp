@@ -108,7 +108,8 @@ TEST_CASE("shortfall: a gap wider than the body jumps is named with its width") 
 
 TEST_CASE("shortfall: a body too wide for the corridor on the way says so; one that fits gets there") {
     // Two rooms joined by a corridor 1.6 m wide: the navmesh (radius 0.6) leaves 0.4 m of it.
-    const Level rooms({{{-10, -1, -10}, {30, 0, 10}}, {{9, 0, -10}, {11, 3, -0.8f}}, {{9, 0, 0.8f}, {11, 3, 10}}}, false);
+    const Level rooms({{{-10, -1, -10}, {30, 0, 10}}, {{9, 0, -10}, {11, 3, -0.8f}}, {{9, 0, 0.8f}, {11, 3, 10}}},
+                      false);
     const nl::Vec3 from(0, 0, 0), to(20, 0, 0);
     const auto wide = rooms.explain(from, to, body(0, 0, 0, 1.0f));
     CHECK(wide.report.why == nl::PathShortfall::BodyTooWide);
@@ -128,6 +129,7 @@ TEST_CASE("shortfall: an island no link reaches is not connected, whatever the b
     const Level level(boxes, true);
     const auto explained = level.explain(kOnTower, nl::Vec3(70, 0, 0), body(10, 10, 10));
     CHECK(explained.report.why == nl::PathShortfall::NotConnected);
-    CHECK(explained.text == "no passage or link leads to the goal, whatever the body could do (built for a body of radius 0.6 m, "
-                            "it leaves out passages narrower than 1.2 m)");
+    CHECK(explained.text ==
+          "no passage or link leads to the goal, whatever the body could do (built for a body of radius 0.6 m, "
+          "it leaves out passages narrower than 1.2 m)");
 }

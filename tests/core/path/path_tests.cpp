@@ -49,7 +49,8 @@ struct Path {
     nl::PathResult result;
 
     std::string describe() const {
-        std::string s = "outcome " + std::to_string(uint32_t(result.outcome)) + ", length " + std::to_string(result.length) + ":";
+        std::string s =
+            "outcome " + std::to_string(uint32_t(result.outcome)) + ", length " + std::to_string(result.length) + ":";
         for (const nl::PathPoint& p : result.points)
             s += " (" + std::to_string(p.position[0]) + ", " + std::to_string(p.position[1]) + ", " +
                  std::to_string(p.position[2]) + ")" + (p.segment ? "[link " + std::to_string(p.segment) + "]" : "");
@@ -172,7 +173,8 @@ TEST_CASE("area costs steer the path and NL_AREA_EXCLUDED keeps it out") {
     def.area_costs = {1.0f, 1.0f, 0.0f};
     const Path avoided = find(map, def);
     CHECK(avoided.result.length > 8.0f);
-    for (const nl::PathPoint& p : avoided.result.points) CHECK_FALSE((p.position[2] > 2.0f && p.position[2] < 3.0f && p.position[0] < 4.0f));
+    for (const nl::PathPoint& p : avoided.result.points)
+        CHECK_FALSE((p.position[2] > 2.0f && p.position[2] < 3.0f && p.position[0] < 4.0f));
 }
 
 TEST_CASE("an unreachable goal gives a partial path to the nearest reachable point, or no path") {
@@ -222,7 +224,8 @@ TEST_CASE("a partial path ends at the nearest point the body reaches, over the l
             CHECK(p->result.links_used == (drops ? 1u : 0u));
         }
         REQUIRE(first.result.points.size() == again.result.points.size());
-        for (size_t i = 0; i < first.result.points.size(); ++i) CHECK(first.result.points[i].position == again.result.points[i].position);
+        for (size_t i = 0; i < first.result.points.size(); ++i)
+            CHECK(first.result.points[i].position == again.result.points[i].position);
         CHECK(first.result.cost == again.result.cost);
         // A straight walk when no link is taken: its cost is its length.
         if (!drops) CHECK(first.result.cost == doctest::Approx(std::hypot(1.5f, 1.3f)));
@@ -348,7 +351,7 @@ TEST_CASE("a manual link may ask only for an ability: requirements taken as give
     nl::PathQuery def = map.request(0.5f, 0.5f, 5.5f, 0.5f);
     def.accept_partial = false;
     CHECK(find(map, def).result.outcome == nl::PathOutcome::NoPath);  // no ability
-    def.capabilities.abilities = 0x2;                                      // and no jump at all
+    def.capabilities.abilities = 0x2;                                 // and no jump at all
     CHECK(find(map, def).result.outcome == nl::PathOutcome::Complete);
 
     // The same link measured from its ends asks for a 1.2 m jump as well.
@@ -368,8 +371,9 @@ TEST_CASE("ability bits and clearance width filter links") {
     needs.abilities = 0x4;
     needs.clearance_width = 1.0f;
     // Not as given (nl_link_def's default): gap, rise and drop measured from the ends.
-    map.world->add_link(map.navmesh, map.link(2.9f, 4.1f, static_cast<nl::LinkKind>(uint32_t(nl::LinkKind::FirstPluginKind) + 5),
-                                              false, needs));
+    map.world->add_link(
+        map.navmesh,
+        map.link(2.9f, 4.1f, static_cast<nl::LinkKind>(uint32_t(nl::LinkKind::FirstPluginKind) + 5), false, needs));
     nl::PathQuery def = map.request(0.5f, 0.5f, 5.5f, 0.5f);
     def.accept_partial = false;
     def.capabilities.max_jump_distance = 2.0f;  // the gap is computed from the ends: 1.2 m

@@ -45,7 +45,7 @@ nl::AgentCapabilities body(float max_drop = 0.0f, float radius = 0.0f) {
     nl::AgentCapabilities a;
     a.radius = radius;
     a.max_drop_height = max_drop;
-    a.max_jump_height = max_drop;  // two-way drops climbed back are jumps of the same height
+    a.max_jump_height = max_drop;                         // two-way drops climbed back are jumps of the same height
     a.max_jump_distance = max_drop > 0.0f ? 1.0f : 0.0f;  // over their gap
     return a;
 }
@@ -139,14 +139,10 @@ TEST_CASE("an excluded area is a wall to walk into but a body standing in it wal
 
 TEST_CASE("a passage narrower than a wider body is closed to it") {
     // A 1 m passage between two rooms; the navmesh was built for a radius of 0.
-    Map m({"...",
-           "...",
-           "#.#",
-           "...",
-           "..."});
+    Map m({"...", "...", "#.#", "...", "..."});
     // Polygons 0-5 the first room, 6 the passage, 7-12 the second room.
     CHECK(m.graph()->reachability(body(0.0f, 0.4f), {})->reaches(0, 12));  // needs 0.8 m
-    const auto wide = m.graph()->reachability(body(0.0f, 0.6f), {});           // needs 1.2 m
+    const auto wide = m.graph()->reachability(body(0.0f, 0.6f), {});       // needs 1.2 m
     CHECK_FALSE(wide->reaches(0, 12));
     CHECK_FALSE(wide->reaches(0, 6));
 

@@ -39,7 +39,9 @@ public:
     nl::HostScheduler scheduler() {
         nl::HostScheduler s;
         s.worker_count = static_cast<int>(workers_);
-        s.enqueue = [this](nl::HostTask& task, uint32_t count, uint32_t min_range) { return enqueue(task, count, min_range); };
+        s.enqueue = [this](nl::HostTask& task, uint32_t count, uint32_t min_range) {
+            return enqueue(task, count, min_range);
+        };
         s.finish = [this](void* handle) { finish(static_cast<Job*>(handle)); };
         return s;
     }
@@ -88,8 +90,7 @@ private:
     void finish(Job* job) {
         ++finishes;
         std::unique_lock lock(mutex_);
-        while (run_one(lock, job)) {
-        }
+        while (run_one(lock, job)) {}
         done_.wait(lock, [&] { return job->done == job->chunks; });
         jobs_.erase(std::find(jobs_.begin(), jobs_.end(), job));
         delete job;
@@ -119,7 +120,8 @@ nl::HostScheduler inline_scheduler(std::atomic<int>& enqueues, std::atomic<int>&
     s.worker_count = 1;
     s.enqueue = [&enqueues](nl::HostTask& task, uint32_t count, uint32_t min_range) -> void* {
         ++enqueues;
-        for (uint32_t begin = 0; begin < count; begin += min_range) task.run(begin, std::min(count, begin + min_range), 0);
+        for (uint32_t begin = 0; begin < count; begin += min_range)
+            task.run(begin, std::min(count, begin + min_range), 0);
         return nullptr;
     };
     s.finish = [&finishes](void*) { ++finishes; };
@@ -131,7 +133,8 @@ nl::HostScheduler broken_scheduler(std::vector<std::pair<uint32_t, int64_t>> ran
     nl::HostScheduler s;
     s.worker_count = 2;
     s.enqueue = [ranges, worker](nl::HostTask& task, uint32_t count, uint32_t) -> void* {
-        for (auto [begin, end_from_count] : ranges) task.run(begin, static_cast<uint32_t>(count + end_from_count), worker);
+        for (auto [begin, end_from_count] : ranges)
+            task.run(begin, static_cast<uint32_t>(count + end_from_count), worker);
         return nullptr;
     };
     s.finish = [](void*) {};
@@ -227,7 +230,8 @@ TEST_CASE("host task system: a body may run parallel_for again (nested), on the 
         // The caller waits (up to 10 s) until a pool thread has taken an outer range, so that nested
         // loops really start on the pool's threads however fast the caller would be alone.
         if (t_worker == 0)
-            for (int wait = 0; wait < 10000 && nested_on_pool == 0; ++wait) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+            for (int wait = 0; wait < 10000 && nested_on_pool == 0; ++wait)
+                std::this_thread::sleep_for(std::chrono::milliseconds(1));
         for (uint32_t o = begin; o < end; ++o) {
             if (t_worker != 0) ++nested_on_pool;  // this enqueue and finish run on a pool thread
             tasks->parallel_for(kInner, 50, [&](uint32_t b, uint32_t e) {
@@ -290,8 +294,7 @@ TEST_CASE("host task system: a host that breaks the contract fails the call, nam
         try {
             tasks->parallel_for(100, 10, [&](uint32_t, uint32_t end) {
                 uint32_t seen = largest_end;
-                while (end > seen && !largest_end.compare_exchange_weak(seen, end)) {
-                }
+                while (end > seen && !largest_end.compare_exchange_weak(seen, end)) {}
             });
             FAIL("the broken host was not noticed (", needle, ")");
         } catch (const nl::Error& e) {
@@ -300,10 +303,10 @@ TEST_CASE("host task system: a host that breaks the contract fails the call, nam
         }
         CHECK(largest_end <= 100);  // a range past the end is never run
     };
-    fails_with(broken_scheduler({{0, 0}, {0, 0}}, 0), "ran 200 items of a task of 100");          // twice
-    fails_with(broken_scheduler({{0, -1}}, 0), "ran 99 items of a task of 100");                  // one left out
+    fails_with(broken_scheduler({{0, 0}, {0, 0}}, 0), "ran 200 items of a task of 100");           // twice
+    fails_with(broken_scheduler({{0, -1}}, 0), "ran 99 items of a task of 100");                   // one left out
     fails_with(broken_scheduler({{0, 1}}, 0), "ran items [0, 101) on worker 0 of a task of 100");  // past the end
-    fails_with(broken_scheduler({{50, -50}, {0, 0}}, 0), "ran items [50, 50)");                   // an empty range
+    fails_with(broken_scheduler({{50, -50}, {0, 0}}, 0), "ran items [50, 50)");                    // an empty range
     fails_with(broken_scheduler({{0, 0}}, 2), "on worker 2 of a task of 100 items with 2 workers");
 }
 

@@ -115,10 +115,11 @@ TEST_CASE("a mesh that carries a navmesh takes rigid transforms only, and is not
     Transform scaled = placed;
     scaled.scale(2.0f);
     check_refused([&] { p.world->set_mesh_transform(p.mesh, scaled); }, nl::ErrorCode::InvalidArgument,
-                           "transform is not a rotation and a translation");
+                  "transform is not a rotation and a translation");
     Transform mirrored = placed;
     mirrored.scale(Vec3(-1, 1, 1));
-    check_refused([&] { p.world->set_mesh_transform(p.mesh, mirrored); }, nl::ErrorCode::InvalidArgument, "not a rotation");
+    check_refused([&] { p.world->set_mesh_transform(p.mesh, mirrored); }, nl::ErrorCode::InvalidArgument,
+                  "not a rotation");
     CHECK(p.world->level().info(p.mesh).transform.isApprox(placed));  // nothing moved
     const auto frame = p.world->navmeshes().frame(p.navmesh);
     CHECK(frame->moves() == 0);
@@ -137,15 +138,17 @@ TEST_CASE("a navmesh is placed only on a movable mesh with a rigid transform") {
     const Handle fixed = p.world->level().add_mesh(nl::test::to_triangle_mesh(ground), Transform::Identity(), 0, 0);
     Transform stretched = Transform::Identity();
     stretched.scale(Vec3(1, 1, 3));
-    const Handle squashed = p.world->level().add_mesh(nl::test::to_triangle_mesh(ground), stretched, nl::kMeshMovable, 0);
+    const Handle squashed =
+        p.world->level().add_mesh(nl::test::to_triangle_mesh(ground), stretched, nl::kMeshMovable, 0);
     nl::NavMeshInput in;
     in.vertices = {{-1, 0, -1}, {-1, 0, 1}, {1, 0, 1}, {1, 0, -1}};
     in.indices = {0, 1, 2, 3};
     in.polygon_sizes = {4};
     const size_t before = p.world->navmeshes().handles().size();
-    check_refused([&] { p.world->add_navmesh(in, fixed); }, nl::ErrorCode::InvalidArgument, "carrier is not a movable mesh");
+    check_refused([&] { p.world->add_navmesh(in, fixed); }, nl::ErrorCode::InvalidArgument,
+                  "carrier is not a movable mesh");
     check_refused([&] { p.world->add_navmesh(in, squashed); }, nl::ErrorCode::InvalidArgument,
-                           "carrier's transform is not a rotation");
+                  "carrier's transform is not a rotation");
     check_refused([&] { p.world->add_navmesh(in, Handle{7, 3}); }, nl::ErrorCode::InvalidHandle, "carrier");
     CHECK(p.world->navmeshes().handles().size() == before);
     // A second navmesh on the same mesh shares its frame: one move places both.
@@ -171,8 +174,9 @@ TEST_CASE("links on a moving navmesh are kept in its space and read in the world
     CHECK(distance(seen.end, later * Vec3(3, 0, 0)) < 1e-4f);
     // The generator proves links against the level as it stands: on a moving surface they would hold
     // at one placement only, so it refuses rather than promise that.
-    check_refused([&] { p.world->generate_links(p.navmesh, nl::LinkSettings{}, {}, [](float, const char*) { return true; }); },
-                           nl::ErrorCode::InvalidArgument, "rides a moving mesh");
+    check_refused(
+        [&] { p.world->generate_links(p.navmesh, nl::LinkSettings{}, {}, [](float, const char*) { return true; }); },
+        nl::ErrorCode::InvalidArgument, "rides a moving mesh");
 }
 
 TEST_CASE("an idle agent on a turning platform stays where it stood on it: within 1 mm after 10,000 steps") {
@@ -212,7 +216,8 @@ TEST_CASE("a destination set on a moving surface sticks to it: the agent arrives
     }
     REQUIRE(info.state == AgentState::Arrived);
     const Vec3 target_now = platform_pose(t, 0.4, 1.5) * target_local;
-    MESSAGE("arrived after " << t << " s, " << distance(info.position, target_now) * 100.0f << " cm from the destination "
+    MESSAGE("arrived after " << t << " s, " << distance(info.position, target_now) * 100.0f
+                             << " cm from the destination "
                              << "(which travelled " << distance(target_now, platform_pose(0.0, 0.4, 1.5) * target_local)
                              << " m meanwhile)");
     CHECK(distance(info.position, target_now) < 0.05f);
@@ -296,7 +301,7 @@ struct Ferry {
         box.add_box({{-2, -0.5f, -2}, {2, 0, 2}});
         shuttle = world->level().add_mesh(nl::test::to_triangle_mesh(box), at(kFarDock), nl::kMeshMovable, 0);
         nl::NavMeshInput both;
-        both.vertices = {{0.3f, 0, 0.3f}, {0.3f, 0, 5.7f}, {5.7f, 0, 5.7f}, {5.7f, 0, 0.3f},
+        both.vertices = {{0.3f, 0, 0.3f},  {0.3f, 0, 5.7f},  {5.7f, 0, 5.7f},  {5.7f, 0, 0.3f},
                          {16.3f, 0, 0.3f}, {16.3f, 0, 5.7f}, {21.7f, 0, 5.7f}, {21.7f, 0, 0.3f}};
         both.indices = {0, 1, 2, 3, 4, 5, 6, 7};
         both.polygon_sizes = {4, 4};
@@ -308,7 +313,8 @@ struct Ferry {
         top.polygon_sizes = {4};
         top.agent_type.radius = 0.3f;
         deck = world->add_navmesh(top, shuttle);
-        if (gangways) leave = add_cross(deck, Vec3(15.4f, 0, 3), ledges, Vec3(16.6f, 0, 3));  // placed docked at the far ledge
+        if (gangways)
+            leave = add_cross(deck, Vec3(15.4f, 0, 3), ledges, Vec3(16.6f, 0, 3));  // placed docked at the far ledge
         world->set_mesh_transform(shuttle, at(near_dock));
         if (gangways) board = add_cross(ledges, Vec3(5.6f, 0, 3), deck, Vec3(6.6f, 0, 3));
     }
@@ -328,7 +334,8 @@ struct Ferry {
 
 }  // namespace
 
-TEST_CASE("a ferry carries every agent across the chasm: they wait at the take-off, ride, and get off on the far side") {
+TEST_CASE(
+    "a ferry carries every agent across the chasm: they wait at the take-off, ride, and get off on the far side") {
     Ferry f;
     const Vec3 goal(20, 0, 3);
     std::vector<Handle> agents;
@@ -365,7 +372,8 @@ TEST_CASE("a ferry carries every agent across the chasm: they wait at the take-o
         f.world->level().segments_blocked(bodies.data(), uint32_t(bodies.size()), blocked.data());
         for (uint8_t b : blocked) inside += b;
     }
-    MESSAGE("arrived " << arrived << " of " << agents.size() << " by t = " << t << " s; steps spent waiting at the dock: " << waited);
+    MESSAGE("arrived " << arrived << " of " << agents.size() << " by t = " << t
+                       << " s; steps spent waiting at the dock: " << waited);
     CHECK(arrived == int(agents.size()));
     CHECK(waited > 0);  // the ferry was away when the first came: they waited for it
     CHECK(inside == 0);
@@ -378,7 +386,8 @@ TEST_CASE("a ferry carries every agent across the chasm: they wait at the take-o
     }
 }
 
-TEST_CASE("a jump onto a moving surface aims where the landing will be: the body lands on the link's end on the surface") {
+TEST_CASE(
+    "a jump onto a moving surface aims where the landing will be: the body lands on the link's end on the surface") {
     Ferry f;
     // The shuttle slides along the near ledge's edge (z) at 1.5 m/s while a jumper jumps on from 1.5 m
     // away; the link tolerates the slide, so it holds while the shuttle passes.
@@ -422,7 +431,9 @@ TEST_CASE("a jump onto a moving surface aims where the landing will be: the body
     CHECK(landed);
 }
 
-TEST_CASE("links between a ledge and a platform are generated for where the platform stands, kept per stop, and ferry jumpers") {
+TEST_CASE(
+    "links between a ledge and a platform are generated for where the platform stands, kept per stop, and ferry "
+    "jumpers") {
     // The shuttle docks 1 m off each ledge: a gap a jumper crosses, and the generator proves.
     Ferry f(false, 9.0f, 13.0f);
     nl::LinkSettings settings;
@@ -439,7 +450,8 @@ TEST_CASE("links between a ledge and a platform are generated for where the plat
         for (const nl::StoredLink& s : *links) n += s.link.crosses() && f.world->link_holds(from, s.link);
         return n;
     };
-    const nl::LinkGenerationReport near = f.world->generate_cross_links(f.ledges, f.deck, settings, 0.25f, nl::test::keep_going);
+    const nl::LinkGenerationReport near =
+        f.world->generate_cross_links(f.ledges, f.deck, settings, 0.25f, nl::test::keep_going);
     const size_t on_near = cross_count(f.ledges, f.deck), off_near = cross_count(f.deck, f.ledges);
     MESSAGE("docked at the near ledge: " << on_near << " links onto the shuttle, " << off_near << " off it ("
                                          << near.jump_links << " jumps, " << near.drop_links << " drops)");
@@ -558,18 +570,21 @@ TEST_CASE("removing the platform's navmesh removes the cross links onto it; an a
     f.world->step(1.0f / 30.0f);
     f.world->step(1.0f / 30.0f);
     // No way across any more: it went as near as it could and failed, saying why.
-    for (int k = 0; k < 60 && f.world->agents().info(agent).state != AgentState::Failed; ++k) f.world->step(1.0f / 30.0f);
+    for (int k = 0; k < 60 && f.world->agents().info(agent).state != AgentState::Failed; ++k)
+        f.world->step(1.0f / 30.0f);
     CHECK(f.world->agents().info(agent).state == AgentState::Failed);
     CHECK(f.world->agents().info(agent).reason == nl::AgentReason::NoPath);
     f.world->remove_mesh(f.shuttle);  // nothing rides it now
 }
 
-TEST_CASE("a body that comes down on another platform than the one it aimed at lands on that platform: found by a ray down") {
+TEST_CASE(
+    "a body that comes down on another platform than the one it aimed at lands on that platform: found by a ray down") {
     Ferry f;
     // A second shuttle, out of the way, with a navmesh for the same body.
     nl::levelgen::GeneratedLevel box;
     box.add_box({{-2, -0.5f, -2}, {2, 0, 2}});
-    const Handle spare = f.world->level().add_mesh(nl::test::to_triangle_mesh(box), Ferry::at(30.0f), nl::kMeshMovable, 0);
+    const Handle spare =
+        f.world->level().add_mesh(nl::test::to_triangle_mesh(box), Ferry::at(30.0f), nl::kMeshMovable, 0);
     nl::NavMeshInput top;
     top.vertices = {{-1.7f, 0, -1.7f}, {-1.7f, 0, 1.7f}, {1.7f, 0, 1.7f}, {1.7f, 0, -1.7f}};
     top.indices = {0, 1, 2, 3};
@@ -642,7 +657,8 @@ ApproachRun jump_onto_approaching_shuttle(const std::function<void(Ferry&, const
         furnish(f, &p);
         f.world->step(float(dt));
         for (const nl::AgentEvent& e : f.world->agents().events())
-            if (e.kind == nl::AgentEventKind::LinkStarted && e.link == link && out.took_off < 0.0) out.took_off = k * dt;
+            if (e.kind == nl::AgentEventKind::LinkStarted && e.link == link && out.took_off < 0.0)
+                out.took_off = k * dt;
         // The body (0.3 m wide, 0.3 to 1.8 m above its feet) against the level as it is now.
         const Vec3 at = f.world->agents().info(jumper).position;
         nl::BodyStretch body;
@@ -659,7 +675,8 @@ ApproachRun jump_onto_approaching_shuttle(const std::function<void(Ferry&, const
 
 }  // namespace
 
-TEST_CASE("a jump aimed where a moving surface will be is swept again: it waits while that flight would meet the level") {
+TEST_CASE(
+    "a jump aimed where a moving surface will be is swept again: it waits while that flight would meet the level") {
     const ApproachRun open = jump_onto_approaching_shuttle([](Ferry&, const Transform*) {});
     const ApproachRun blocked = jump_onto_approaching_shuttle([](Ferry& f, const Transform* pose) {
         if (pose) return;
@@ -669,7 +686,8 @@ TEST_CASE("a jump aimed where a moving surface will be is swept again: it waits 
         level.add_box({{6.45f, -1.0f, 2.25f}, {6.75f, 3.0f, 2.55f}});
         f.world->level().add_mesh(nl::test::to_triangle_mesh(level), Transform::Identity(), 0, 0);
     });
-    MESSAGE("took off at " << open.took_off << " s with nothing in the way, at " << blocked.took_off << " s beside the pole");
+    MESSAGE("took off at " << open.took_off << " s with nothing in the way, at " << blocked.took_off
+                           << " s beside the pole");
     CHECK(open.took_off > 0.0);
     CHECK(blocked.took_off > open.took_off + 0.1);  // it waited while its aimed flight met the pole
     CHECK(open.inside == 0);
@@ -678,7 +696,9 @@ TEST_CASE("a jump aimed where a moving surface will be is swept again: it waits 
     CHECK(blocked.on_deck);
 }
 
-TEST_CASE("a jump onto a moving surface is checked against the level as it will be: a post riding the shuttle holds it back") {
+TEST_CASE(
+    "a jump onto a moving surface is checked against the level as it will be: a post riding the shuttle holds it "
+    "back") {
     // A thin post rides on the shuttle (another movable mesh, moved with it). Seen from the shuttle,
     // a jumper taking off early flies across the deck from its far side, through where the post
     // stands; once the shuttle stops, the post is 1.4 m off the arc. Where the post is at take-off,
@@ -692,9 +712,11 @@ TEST_CASE("a jump onto a moving surface is checked against the level as it will 
         }
         nl::levelgen::GeneratedLevel level;
         level.add_box({{-1.45f, 0.0f, 1.35f}, {-1.35f, 3.0f, 1.45f}});  // on the deck, in its space
-        pole = f.world->level().add_mesh(nl::test::to_triangle_mesh(level), Ferry::at(Ferry::kNearDock), nl::kMeshMovable, 0);
+        pole = f.world->level().add_mesh(nl::test::to_triangle_mesh(level), Ferry::at(Ferry::kNearDock),
+                                         nl::kMeshMovable, 0);
     });
-    MESSAGE("took off at " << open.took_off << " s with no post, at " << held.took_off << " s with the post riding the shuttle");
+    MESSAGE("took off at " << open.took_off << " s with no post, at " << held.took_off
+                           << " s with the post riding the shuttle");
     CHECK(held.took_off > open.took_off + 0.1);  // it waited while its flight would have met the post
     CHECK(held.inside == 0);
     CHECK(held.on_deck);

@@ -183,12 +183,14 @@ TEST_CASE("links round-trip through JSON; bad files are refused and change nothi
     CHECK(load(broken) == nl::ErrorCode::Parse);
     CHECK(load("{\"format\": \"navlink-links\", \"version\": 9, \"links\": []}") == nl::ErrorCode::VersionMismatch);
     std::string message;
-    CHECK(load("{\"format\": \"navlink-links\", \"version\": 1, \"links\": [{\"kind\": \"jump\", \"start\": [0, 0], \"end\": [1, 0, 1]}]}",
+    CHECK(load("{\"format\": \"navlink-links\", \"version\": 1, \"links\": [{\"kind\": \"jump\", \"start\": [0, 0], "
+               "\"end\": [1, 0, 1]}]}",
                &message) == nl::ErrorCode::InvalidArgument);
     CHECK(message.find("links[0].start") != std::string::npos);
-    CHECK(load("{\"format\": \"navlink-links\", \"version\": 1, \"links\": [{\"kind\": \"manual\", \"start\": [0, 0, 0], "
-               "\"end\": [1, 0, 1], \"cost_modifier\": 1e39}]}",
-               &message) == nl::ErrorCode::InvalidArgument);  // beyond float: would become infinite
+    CHECK(
+        load("{\"format\": \"navlink-links\", \"version\": 1, \"links\": [{\"kind\": \"manual\", \"start\": [0, 0, 0], "
+             "\"end\": [1, 0, 1], \"cost_modifier\": 1e39}]}",
+             &message) == nl::ErrorCode::InvalidArgument);  // beyond float: would become infinite
     CHECK(message.find("links[0].cost_modifier") != std::string::npos);
     CHECK(f.links().size() == before.size());  // nothing changed by the failures
 }
@@ -244,7 +246,8 @@ TEST_CASE("a cancelled generation changes nothing; progress runs from 0 to 1") {
     settings.max_jump_gap = 8.0f;  // would change the links
     Seen cancelled;
     cancelled.cancel_after = 3;
-    CHECK(nl::test::code_of([&] { f.world->generate_links(f.navmesh, settings, {}, progress_of(cancelled)); }) == nl::ErrorCode::Cancelled);
+    CHECK(nl::test::code_of([&] { f.world->generate_links(f.navmesh, settings, {}, progress_of(cancelled)); }) ==
+          nl::ErrorCode::Cancelled);
     CHECK(f.links().size() == before);
 
     settings.max_jump_gap = -2.0f;

@@ -116,8 +116,9 @@ TEST_CASE("removing a navmesh takes its links, its last generation and its path 
     for (Handle id : ids) CHECK_FALSE(s.world->navmeshes().contains_link(id));
     CHECK(nl::test::code_of([&] { s.world->navmeshes().links(s.navmesh); }) == nl::ErrorCode::InvalidHandle);
     CHECK(nl::test::code_of([&] { s.world->navmeshes().path_graph(s.navmesh); }) == nl::ErrorCode::InvalidHandle);
-    CHECK(nl::test::code_of([&] { s.world->update_links_in_box(s.navmesh, nl::Aabb{}, [](float, const char*) { return true; }); }) ==
-          nl::ErrorCode::InvalidHandle);
+    CHECK(nl::test::code_of([&] {
+              s.world->update_links_in_box(s.navmesh, nl::Aabb{}, [](float, const char*) { return true; });
+          }) == nl::ErrorCode::InvalidHandle);
     CHECK(nl::test::code_of([&] { s.world->navmeshes().remove_link(manual); }) == nl::ErrorCode::InvalidHandle);
     // Readers that held them keep them.
     CHECK(snapshot->size() == ids.size());
@@ -147,7 +148,8 @@ TEST_CASE("an update continues the last generation; removing the generated links
     nl::Aabb box;
     box.min = Vec3(4.5f, -1.0f, 0.0f);
     box.max = Vec3(5.5f, 3.0f, 4.0f);
-    CHECK(nl::test::code_of([&] { s.world->update_links_in_box(s.navmesh, box, everything); }) == nl::ErrorCode::NotFound);
+    CHECK(nl::test::code_of([&] { s.world->update_links_in_box(s.navmesh, box, everything); }) ==
+          nl::ErrorCode::NotFound);
     s.generate();
     const auto full = s.world->navmeshes().links(s.navmesh);
     s.world->update_links_in_box(s.navmesh, box, everything);
@@ -156,10 +158,12 @@ TEST_CASE("an update continues the last generation; removing the generated links
     for (size_t i = 0; i < full->size(); ++i) CHECK((*updated)[i].link.start == (*full)[i].link.start);
 
     CHECK(s.world->navmeshes().remove_generated_links(s.navmesh) == full->size());
-    CHECK(nl::test::code_of([&] { s.world->update_links_in_box(s.navmesh, box, everything); }) == nl::ErrorCode::NotFound);
+    CHECK(nl::test::code_of([&] { s.world->update_links_in_box(s.navmesh, box, everything); }) ==
+          nl::ErrorCode::NotFound);
     s.generate();
     s.world->load_links(s.navmesh, {s.manual(3.5f, 6.5f)});
-    CHECK(nl::test::code_of([&] { s.world->update_links_in_box(s.navmesh, box, everything); }) == nl::ErrorCode::NotFound);
+    CHECK(nl::test::code_of([&] { s.world->update_links_in_box(s.navmesh, box, everything); }) ==
+          nl::ErrorCode::NotFound);
     const auto loaded = s.world->navmeshes().links(s.navmesh);
     CHECK(loaded->size() == 1);
 }
@@ -169,7 +173,9 @@ TEST_CASE("a generation asked for from inside another's progress callback is ref
     const Handle other = s.world->add_navmesh(platform_tops(0.4f));
     std::string nested;
     s.generate([&](float, const char*) {
-        if (nested.empty()) nested = nl::test::message_of([&] { s.world->generate_links(other, {}, {}, [](float, const char*) { return true; }); });
+        if (nested.empty())
+            nested = nl::test::message_of(
+                [&] { s.world->generate_links(other, {}, {}, [](float, const char*) { return true; }); });
         return true;
     });
     CHECK(nested.find("from inside another generation") != std::string::npos);
@@ -186,7 +192,9 @@ TEST_CASE("no generation of either kind runs from inside another's progress call
     auto cross = [&] { s.world->generate_cross_links(other, s.navmesh, nl::LinkSettings{}, 0.25f, everything); };
     auto own = [&] { s.world->generate_links(other, {}, {}, everything); };
     auto update = [&] { s.world->update_links_in_box(s.navmesh, box, everything); };
-    auto refused = [](const std::string& message) { return message.find("from inside another generation") != std::string::npos; };
+    auto refused = [](const std::string& message) {
+        return message.find("from inside another generation") != std::string::npos;
+    };
 
     std::string cross_inside_own;
     s.generate([&](float, const char*) {
@@ -197,7 +205,8 @@ TEST_CASE("no generation of either kind runs from inside another's progress call
 
     std::vector<std::string> inside_cross;
     s.world->generate_cross_links(s.navmesh, other, nl::LinkSettings{}, 0.25f, [&](float, const char*) {
-        if (inside_cross.empty()) inside_cross = {nl::test::message_of(own), nl::test::message_of(update), nl::test::message_of(cross)};
+        if (inside_cross.empty())
+            inside_cross = {nl::test::message_of(own), nl::test::message_of(update), nl::test::message_of(cross)};
         return true;
     });
     REQUIRE(inside_cross.size() == 3);
@@ -212,21 +221,22 @@ TEST_CASE("failures name the field in the core's terms; a caller puts its own na
     Scene s;
     const std::string off = nl::test::message_of([&] { s.world->add_link(s.navmesh, s.manual(3.5f, 60.0f)); });
     CHECK(off.rfind("end is not within 1 m of the navmesh", 0) == 0);
-    const std::string named = nl::test::message_of([&] {
-        nl::naming_fields("def->", [&] { s.world->add_link(s.navmesh, s.manual(3.5f, 60.0f)); });
-    });
+    const std::string named = nl::test::message_of(
+        [&] { nl::naming_fields("def->", [&] { s.world->add_link(s.navmesh, s.manual(3.5f, 60.0f)); }); });
     CHECK(named.rfind("def->end is not within", 0) == 0);
     nl::NavMeshInput bad = platform_tops();
     bad.vertices[3].y() = NAN;
     CHECK(nl::test::message_of([&] { s.world->add_navmesh(bad); }).rfind("vertices[3].y", 0) == 0);
     nl::LinkSettings settings;
     settings.max_jump_gap = -1.0f;
-    CHECK(nl::test::message_of([&] { s.world->generate_links(s.navmesh, settings, {}, [](float, const char*) { return true; }); })
-              .rfind("max_jump_gap is -1", 0) == 0);
+    CHECK(nl::test::message_of([&] {
+              s.world->generate_links(s.navmesh, settings, {}, [](float, const char*) { return true; });
+          }).rfind("max_jump_gap is -1", 0) == 0);
     // A stale id is not about a field: no name goes in front of it.
     const Handle stale{99, 1};
-    CHECK(nl::test::message_of([&] { nl::naming_fields("def->", [&] { s.world->add_link(stale, s.manual(3.5f, 6.5f)); }); })
-              .rfind("navmesh {99, 1}", 0) == 0);
+    CHECK(nl::test::message_of([&] {
+              nl::naming_fields("def->", [&] { s.world->add_link(stale, s.manual(3.5f, 6.5f)); });
+          }).rfind("navmesh {99, 1}", 0) == 0);
 }
 
 namespace {
@@ -300,7 +310,8 @@ TEST_CASE("C++ plugins: a link kind's links are placed and generated with the re
     const auto after = s.world->navmeshes().links(s.navmesh);
     CHECK(after->size() == links->size());  // nothing changed
 
-    CHECK(nl::test::code_of([&] { s.world->plugins().add(std::make_unique<Ropes>()); }) == nl::ErrorCode::InvalidArgument);
+    CHECK(nl::test::code_of([&] { s.world->plugins().add(std::make_unique<Ropes>()); }) ==
+          nl::ErrorCode::InvalidArgument);
 
     auto tops_plugin = std::make_unique<Tops>();
     Tops& tops = *tops_plugin;
@@ -330,7 +341,8 @@ TEST_CASE("C++ plugins: a link kind's links are placed and generated with the re
     CHECK(nl::test::code_of([&] { s.world->build_navmesh(request); }) == nl::ErrorCode::Internal);
     CHECK(s.world->navmeshes().handles().size() == navmeshes);
     request.builder = "nobody";
-    CHECK(nl::test::message_of([&] { s.world->build_navmesh(request); }) == "no navmesh builder named 'nobody' (loaded: 'tops')");
+    CHECK(nl::test::message_of([&] { s.world->build_navmesh(request); }) ==
+          "no navmesh builder named 'nobody' (loaded: 'tops')");
 }
 
 TEST_CASE("the path graph is built once per moment of the links, and an edit makes the next one") {
@@ -342,7 +354,7 @@ TEST_CASE("the path graph is built once per moment of the links, and an edit mak
     const auto second = r.path_graph(s.navmesh);
     CHECK(second != first);
     CHECK(second->links_ptr()->size() == 1);
-    CHECK(first->links_ptr()->empty());  // a search that started before keeps what it read
+    CHECK(first->links_ptr()->empty());                              // a search that started before keeps what it read
     CHECK(second->search_index_ptr() == first->search_index_ptr());  // the navmesh's, built once
     CHECK(r.path_graph(s.navmesh) == second);
     r.remove_link(rope);
@@ -362,9 +374,9 @@ TEST_CASE("waiting for a path: without workers the waiting thread plans, with th
     std::string refused;
     std::vector<Handle> tickets;
     for (int i = 0; i < 3; ++i) {
-        tickets.push_back(queue.submit(s.world->navmeshes().path_graph(s.navmesh), query, [&](Handle t, nl::PathOutcome) {
-            refused = nl::test::message_of([&] { queue.wait(t, 0s); });
-        }));
+        tickets.push_back(queue.submit(
+            s.world->navmeshes().path_graph(s.navmesh), query,
+            [&](Handle t, nl::PathOutcome) { refused = nl::test::message_of([&] { queue.wait(t, 0s); }); }));
     }
     CHECK(queue.wait(tickets[1], 0s) == nl::PathOutcome::Pending);  // a zero timeout only looks
     CHECK(queue.poll(tickets[0]) == nl::PathOutcome::Pending);
@@ -383,7 +395,8 @@ TEST_CASE("waiting for a path: without workers the waiting thread plans, with th
     const Handle navmesh = threaded->add_navmesh(platform_tops());
     threaded->level().add_mesh(two_platforms(), nl::Transform::Identity(), 0, 0);
     std::vector<Handle> many;
-    for (int i = 0; i < 64; ++i) many.push_back(threaded->paths().submit(threaded->navmeshes().path_graph(navmesh), query, nullptr));
+    for (int i = 0; i < 64; ++i)
+        many.push_back(threaded->paths().submit(threaded->navmeshes().path_graph(navmesh), query, nullptr));
     for (Handle t : many) {
         const nl::PathOutcome outcome = threaded->paths().wait(t, forever);
         CHECK(outcome == nl::PathOutcome::Complete);
@@ -402,7 +415,8 @@ TEST_CASE("the path queue: a search-work budget, and finished requests taken onc
     nl::PathQueue& queue = s.world->paths();
     int users[3] = {0, 1, 2};
     std::vector<Handle> tickets;
-    for (int& u : users) tickets.push_back(queue.submit(s.world->navmeshes().path_graph(s.navmesh), query, nullptr, &u));
+    for (int& u : users)
+        tickets.push_back(queue.submit(s.world->navmeshes().path_graph(s.navmesh), query, nullptr, &u));
 
     nl::ProcessBudget one_node;
     one_node.max_search_nodes = 1;  // the first search crosses it: one request per call
@@ -423,7 +437,8 @@ TEST_CASE("the path queue: a search-work budget, and finished requests taken onc
     CHECK(queue.take_finished(8, finished) == 0);
     CHECK(finished.empty());
     // A small capacity leaves the rest for the next call.
-    for (int& u : users) tickets.push_back(queue.submit(s.world->navmeshes().path_graph(s.navmesh), query, nullptr, &u));
+    for (int& u : users)
+        tickets.push_back(queue.submit(s.world->navmeshes().path_graph(s.navmesh), query, nullptr, &u));
     CHECK(queue.process(nl::ProcessBudget{}) == 3);
     CHECK(queue.take_finished(2, finished) == 1);
     CHECK(finished.size() == 2);

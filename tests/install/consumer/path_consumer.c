@@ -14,8 +14,8 @@ static int failed(const char* what) {
 
 /* Two 8 x 8 m platforms at the same height, x in [0, 8] and [9.5, 17.5]. */
 static const float platform_vertices[] = {
-    0.0f, 0.0f, 0.0f,  0.0f, 0.0f, 8.0f,  8.0f, 0.0f, 8.0f,  8.0f, 0.0f, 0.0f,
-    9.5f, 0.0f, 0.0f,  9.5f, 0.0f, 8.0f,  17.5f, 0.0f, 8.0f, 17.5f, 0.0f, 0.0f,
+    0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 8.0f, 8.0f,  0.0f, 8.0f, 8.0f,  0.0f, 0.0f,
+    9.5f, 0.0f, 0.0f, 9.5f, 0.0f, 8.0f, 17.5f, 0.0f, 8.0f, 17.5f, 0.0f, 0.0f,
 };
 /* Counter-clockwise seen from above: the faces point up. */
 static const uint32_t platform_indices[] = {0, 1, 2, 0, 2, 3, 4, 5, 6, 4, 6, 7};
