@@ -15,6 +15,7 @@ packages=(
   dpkg-dev  # dpkg-shlibdeps: the Debian package's Depends (cpack -G DEB, docs/shipping.md)
   ccache  # scripts/test.sh compiles through it: a second run, or a fresh clone, rebuilds nothing unchanged
   python3-clang  # libclang for Python: bindings/generate reads the public headers with it
+  clang-format  # the one house style (.clang-format); the test source_format checks it
 )
 # The Rust binding's test needs cargo; a toolchain from rustup (not a Debian package) serves as well, so
 # Debian's cargo (with its rustc) is added only when no cargo is on the PATH.
