@@ -7,8 +7,8 @@
 
 #include "drop_runs.h"
 #include "island_colors.h"
+#include "map_marker.h"
 #include "palette.h"
-#include "scene_renderer.h"
 
 namespace nl::picture {
 namespace {

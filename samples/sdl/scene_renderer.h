@@ -6,6 +6,7 @@
 #include <SDL2/SDL.h>
 
 #include "camera.h"
+#include "map_marker.h"
 #include "scene.h"
 
 namespace nl::picture {
@@ -16,16 +17,6 @@ Camera scene_camera(const Scene& scene, const ViewSettings& view);
 // The picture height that fits the level at `view.width` (and the legend), for pictures whose
 // proportions are free (PNG files); a window keeps its own size.
 int fitted_height(const Scene& scene, const ViewSettings& view);
-
-// The map's rectangle in a picture: the level's bounding box as the camera shows it.
-SDL_FRect map_rect(const Scene& scene, const Camera& camera);
-
-// Where point `p` is marked: where it is, or, for a point off the map (`*off_map` set, if given),
-// kOffMapInset pixels inside the map's edge nearest it, with an arrow of kOffMapArrow pixels
-// pointing its way.
-constexpr float kOffMapInset = 14.0f;
-constexpr float kOffMapArrow = 18.0f;
-SDL_FPoint point_marker(const Scene& scene, const Camera& camera, const float p[3], bool* off_map = nullptr);
 
 void draw_scene(SDL_Renderer* renderer, const Scene& scene, const ViewSettings& view);
 
