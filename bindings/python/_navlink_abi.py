@@ -462,7 +462,8 @@ NavmeshInfo._fields_ = [("size", c_uint32), ("vertex_count", c_uint32), ("polygo
                          ("welded_vertex_count", c_uint32), ("flipped_polygon_count", c_uint32),
                          ("dropped_polygon_count", c_uint32), ("non_manifold_edge_count", c_uint32),
                          ("agent_type", AgentType), ("bounds_min", c_float * 3), ("bounds_max", c_float * 3),
-                         ("carrier", MeshId), ("turned_over_mesh_count", c_uint32), ("build_warnings", c_uint32)]
+                         ("carrier", MeshId), ("turned_over_mesh_count", c_uint32), ("build_warnings", c_uint32),
+                         ("t_junction_corner_count", c_uint32), ("unjoined_t_junction_count", c_uint32)]
 NavPolygon._fields_ = [("size", c_uint32), ("vertex_count", c_uint32), ("vertices", c_uint32 * 16),
                         ("neighbours", c_uint32 * 16), ("area", c_uint32), ("normal", c_float * 3),
                         ("centre", c_float * 3)]

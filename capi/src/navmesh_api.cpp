@@ -105,6 +105,8 @@ void navmesh_get_info(const World& world, nl_navmesh_id navmesh, nl_navmesh_info
     info.flipped_polygon_count = mesh->repairs().flipped_polygons;
     info.dropped_polygon_count = mesh->repairs().dropped_polygons;
     info.non_manifold_edge_count = mesh->repairs().non_manifold_edges;
+    info.t_junction_corner_count = mesh->repairs().t_junction_corners;
+    info.unjoined_t_junction_count = mesh->repairs().t_junctions_left;
     info.agent_type = to_c(mesh->agent());
     const nl::Aabb bounds = pose.world_box(mesh->bounds());
     copy_point(info.bounds_min, bounds.min);

@@ -18,14 +18,14 @@
 namespace nl {
 namespace {
 
+using Json = nlohmann::json;
+
 uint64_t parse_hex_hash(const Json& value) {
     const std::string text = value.is_string() ? value.get<std::string>() : std::string();
     if (text.size() != 16 || text.find_first_not_of("0123456789abcdefABCDEF") != std::string::npos)
         fail(ErrorCode::InvalidArgument, "links JSON.made_for.level_hash must be a string of 16 hex digits");
     return std::stoull(text, nullptr, 16);
 }
-
-using Json = nlohmann::json;
 
 Json point(const Vec3& v) { return Json::array({v.x(), v.y(), v.z()}); }
 

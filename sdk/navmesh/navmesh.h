@@ -48,6 +48,8 @@ struct NavMeshRepairs {
     uint32_t flipped_polygons = 0;
     uint32_t dropped_polygons = 0;
     uint32_t non_manifold_edges = 0;
+    uint32_t t_junction_corners = 0;  // corners inserted where an edge met others at T-junctions (t_junctions.h)
+    uint32_t t_junctions_left = 0;    // edges left unjoined: their polygon had no room for the corners
 };
 
 struct NavPoint {

@@ -5,6 +5,7 @@
 #include <numeric>
 
 #include "level/mesh_validation.h"
+#include "navmesh/t_junctions.h"
 #include "navmesh/vertex_welder.h"
 #include "util/error.h"
 
@@ -18,6 +19,7 @@ public:
         validate();
         weld();
         make_polygons();
+        join_t_junctions_of_polygons();
         connect();
         finish();
         return std::move(mesh_);
@@ -233,6 +235,35 @@ private:
         constexpr double kTwoPi = 6.283185307179586;
         if (std::fabs(turning) > kTwoPi + 0.1)
             fail_field(ErrorCode::InvalidArgument, "indices: polygon ", p, " crosses itself");
+    }
+
+    // Edges that meet others at T-junctions get those corners (t_junctions.h), so that connect() pairs them.
+    // The tolerance is the weld's, but at least the navmesh grid's rounding of a corner on a straight edge;
+    // a weld tolerance of 0 takes the polygons' topology as given, and joins nothing either.
+    void join_t_junctions_of_polygons() {
+        if (in_.weld_tolerance == 0.0f) return;
+        NavMesh& m = *mesh_;
+        const float tolerance = std::max(in_.weld_tolerance, float(1.5 * std::ldexp(1.0, kNavMeshGridExponent)));
+        JoinedPolygons joined =
+            join_t_junctions(m.vertices_, m.first_corner_, m.corners_, tolerance, kMaxPolygonVertices);
+        m.repairs_.t_junction_corners = joined.inserted;
+        m.repairs_.t_junctions_left = joined.left_open;
+        if (joined.inserted == 0) return;
+        for (uint32_t p = 0; p < m.polygon_count(); ++p) {
+            const uint32_t before = m.first_corner_[p + 1] - m.first_corner_[p];
+            const uint32_t after = joined.first_corner[p + 1] - joined.first_corner[p];
+            if (after == before) continue;
+            for (uint32_t slot = joined.first_corner[p]; slot < joined.first_corner[p + 1]; ++slot)
+                m.polygon_bounds_[p].grow(m.vertices_[joined.corners[slot]]);
+            if (m.detail_.empty()) continue;
+            // A detail triangle names a corner by its index, then its own vertices after the corners.
+            for (uint32_t t = m.detail_[p].first_triangle; t < m.detail_[p + 1].first_triangle; ++t)
+                for (uint8_t& local : m.detail_triangles_[t])
+                    local = local < before ? joined.moved_corner[m.first_corner_[p] + local]
+                                           : static_cast<uint8_t>(local + (after - before));
+        }
+        m.first_corner_ = std::move(joined.first_corner);
+        m.corners_ = std::move(joined.corners);
     }
 
     // Portals, boundary edges and non-manifold edges, from the edges sorted by their vertex pair.

@@ -113,7 +113,9 @@ _Static_assert(offsetof(nl_navmesh_info, vertex_count) == 4 && offsetof(nl_navme
                    offsetof(nl_navmesh_info, non_manifold_edge_count) == 32 &&
                    offsetof(nl_navmesh_info, agent_type) == 36 && offsetof(nl_navmesh_info, bounds_min) == 52 &&
                    offsetof(nl_navmesh_info, bounds_max) == 64 &&
-                   offsetof(nl_navmesh_info, turned_over_mesh_count) == 84 && sizeof(nl_navmesh_info) == 92,
+                   offsetof(nl_navmesh_info, turned_over_mesh_count) == 84 &&
+                   offsetof(nl_navmesh_info, t_junction_corner_count) == 92 &&
+                   offsetof(nl_navmesh_info, unjoined_t_junction_count) == 96 && sizeof(nl_navmesh_info) == 100,
                "nl_navmesh_info");
 _Static_assert(offsetof(nl_recast_settings, cell_size) == 4 && offsetof(nl_recast_settings, cell_height) == 8 &&
                    offsetof(nl_recast_settings, region_min_size) == 12 &&

@@ -268,6 +268,30 @@ static void add_variants(void) {
         def.weld_tolerance = 0.001f;
     }
 
+    /* A T-junction, as at a tile border: one quad on the left, two on the right whose shared corner lies on
+       the left quad's edge. The corner joins that edge (counted) and the three connect; with a weld
+       tolerance of 0 the polygons are taken as given and the left quad stays apart. */
+    {
+        static const float tee[] = {0, 0, 0, 0, 0, 2, 2, 0, 2, 2, 0, 0, 2, 0, 1, 4, 0, 2, 4, 0, 1, 4, 0, 0};
+        static const uint32_t tee_quads[] = {0, 1, 2, 3, 4, 2, 5, 6, 3, 4, 6, 7};
+        static const uint8_t tee_counts[] = {4, 4, 4};
+        nl_navmesh_def t = nl_default_navmesh_def();
+        t.vertices = tee;
+        t.vertex_count = 8;
+        t.indices = tee_quads;
+        t.polygon_vertex_counts = tee_counts;
+        t.polygon_count = 3;
+        CHECK_OK(nl_navmesh_add(world, &t, &id));
+        info = navmesh_info(world, id);
+        CHECK_MSG(info.t_junction_corner_count == 1 && info.unjoined_t_junction_count == 0 && info.portal_count == 3,
+                  "%u corners joined, %u left, %u portals", (unsigned)info.t_junction_corner_count,
+                  (unsigned)info.unjoined_t_junction_count, (unsigned)info.portal_count);
+        t.weld_tolerance = 0.0f;
+        CHECK_OK(nl_navmesh_add(world, &t, &id));
+        info = navmesh_info(world, id);
+        CHECK(info.t_junction_corner_count == 0 && info.portal_count == 1);
+    }
+
     /* Clockwise input: turned over, counted, with the same topology and areas. */
     {
         uint32_t clockwise[16];

@@ -49,8 +49,12 @@ typedef struct nl_navmesh_def {
     const uint8_t* areas;                 /**< Optional area id per polygon; NULL means area 0. Borrowed. */
     float weld_tolerance;                 /**< Vertices closer than this (metres, 0..1) become one, so
                                                polygons that only touch (Unity repeats vertices per
-                                               triangle) are connected. Default 0.001; 0 welds exact
-                                               duplicates only. */
+                                               triangle) are connected, and a vertex this near an
+                                               edge of another polygon's outline, between its ends,
+                                               becomes a corner of it (a T-junction, as at tile
+                                               borders: the polygons then connect). Default 0.001
+                                               (at least the 1/1024 m grid's rounding is allowed);
+                                               0 welds exact duplicates only and joins nothing. */
     nl_agent_type agent_type;             /**< The agent type this navmesh was made for. */
     /* Optional height detail, as Recast's detail mesh: triangles over each polygon that follow the
        surface more closely than the polygon does, used for point location. All NULL/0 means the
@@ -80,8 +84,9 @@ NL_API nl_navmesh_def nl_default_navmesh_def(void);
 /** Adds a navmesh from the host's polygons; everything is copied. The polygons are cleaned up as a
  *  host's navmesh usually needs: coincident vertices are welded (weld_tolerance); polygons wound
  *  clockwise seen from above are turned over so that every normal points up; polygons that welding
- *  collapses or that have no area are dropped; an edge shared by three or more polygons connects none
- *  of them. nl_navmesh_get_info counts each repair. Adjacency (portals) and boundary edges are built.
+ *  collapses or that have no area are dropped; edges that meet others at T-junctions get their corners;
+ *  an edge shared by three or more polygons connects none of them. nl_navmesh_get_info counts each
+ *  repair. Adjacency (portals) and boundary edges are built.
  *  Returns SUCCESS, or a failure with INVALID_ARGUMENT (null pointer, zero counts, a coordinate not
  *  finite or beyond NL_COORDINATE_LIMIT, an index out of range, a polygon with fewer than 3 or more
  *  than NL_MAX_POLYGON_VERTICES corners, a polygon not convex seen from above (navmesh polygons are
@@ -131,6 +136,13 @@ typedef struct nl_navmesh_info {
                                             with its level (each also said in a warning in the log).
                                             0 for a navmesh added from polygons or loaded from a
                                             file. Added in 0.3. */
+    uint32_t t_junction_corner_count;  /**< Corners inserted where a polygon's edge met the edges of
+                                            others at T-junctions (a tile border, Unity's exported
+                                            triangulation), so that they connect: each vertex within
+                                            weld_tolerance of another polygon's outline edge, strictly
+                                            between its ends, joins that edge. Added in 0.3. */
+    uint32_t unjoined_t_junction_count; /**< Such edges left as walls: their polygon would have had
+                                             more than NL_MAX_POLYGON_VERTICES corners. Added in 0.3. */
 } nl_navmesh_info;
 
 /** nl_navmesh_info.build_warnings: a build succeeded on a level that looks given wrong. */

@@ -154,13 +154,14 @@ extern "C" {
 
     /// Adds a navmesh from the host's polygons; everything is copied. The polygons are cleaned up as a host's navmesh
     /// usually needs: coincident vertices are welded (weld_tolerance); polygons wound clockwise seen from above are
-    /// turned over so that every normal points up; polygons that welding collapses or that have no area are dropped; an
-    /// edge shared by three or more polygons connects none of them. nl_navmesh_get_info counts each repair. Adjacency
-    /// (portals) and boundary edges are built. Returns SUCCESS, or a failure with INVALID_ARGUMENT (null pointer, zero
-    /// counts, a coordinate not finite or beyond NL_COORDINATE_LIMIT, an index out of range, a polygon with fewer than
-    /// 3 or more than NL_MAX_POLYGON_VERTICES corners, a polygon not convex seen from above (navmesh polygons are 2.5D:
-    /// convex in x-z, heights free, as Recast's), a negative or NaN tolerance or agent field, bad detail data, every
-    /// polygon degenerate: the item is named and nothing is added), OUT_OF_MEMORY. Thread-safe.
+    /// turned over so that every normal points up; polygons that welding collapses or that have no area are dropped;
+    /// edges that meet others at T-junctions get their corners; an edge shared by three or more polygons connects none
+    /// of them. nl_navmesh_get_info counts each repair. Adjacency (portals) and boundary edges are built. Returns
+    /// SUCCESS, or a failure with INVALID_ARGUMENT (null pointer, zero counts, a coordinate not finite or beyond
+    /// NL_COORDINATE_LIMIT, an index out of range, a polygon with fewer than 3 or more than NL_MAX_POLYGON_VERTICES
+    /// corners, a polygon not convex seen from above (navmesh polygons are 2.5D: convex in x-z, heights free, as
+    /// Recast's), a negative or NaN tolerance or agent field, bad detail data, every polygon degenerate: the item is
+    /// named and nothing is added), OUT_OF_MEMORY. Thread-safe.
     pub fn nl_navmesh_add(world: *mut nl_world, def: *const nl_navmesh_def, out_id: *mut nl_navmesh_id) -> nl_status;
 
     /// Removes a navmesh and its links, and the cross links of other navmeshes that land on it. Queries already running

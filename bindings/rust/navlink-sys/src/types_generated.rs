@@ -332,7 +332,9 @@ pub struct nl_navmesh_def {
     /// Optional area id per polygon; NULL means area 0. Borrowed.
     pub areas: *const u8,
     /// Vertices closer than this (metres, 0..1) become one, so polygons that only touch (Unity repeats vertices per
-    /// triangle) are connected. Default 0.001; 0 welds exact duplicates only.
+    /// triangle) are connected, and a vertex this near an edge of another polygon's outline, between its ends, becomes
+    /// a corner of it (a T-junction, as at tile borders: the polygons then connect). Default 0.001 (at least the 1/1024
+    /// m grid's rounding is allowed); 0 welds exact duplicates only and joins nothing.
     pub weld_tolerance: f32,
     /// The agent type this navmesh was made for.
     pub agent_type: nl_agent_type,
@@ -388,6 +390,12 @@ pub struct nl_navmesh_info {
     /// NL_BUILD_WARNING_* bits: what nl_navmesh_build found wrong with its level (each also said in a warning in the
     /// log). 0 for a navmesh added from polygons or loaded from a file. Added in 0.3.
     pub build_warnings: u32,
+    /// Corners inserted where a polygon's edge met the edges of others at T-junctions (a tile border, Unity's exported
+    /// triangulation), so that they connect: each vertex within weld_tolerance of another polygon's outline edge,
+    /// strictly between its ends, joins that edge. Added in 0.3.
+    pub t_junction_corner_count: u32,
+    /// Such edges left as walls: their polygon would have had more than NL_MAX_POLYGON_VERTICES corners. Added in 0.3.
+    pub unjoined_t_junction_count: u32,
 }
 
 /// The header's inline initialiser (NL_DEFINE_OUTPUT_INIT; the library does not export it): a

@@ -141,6 +141,13 @@ plain_struct! {
         /// NL_BUILD_WARNING_* bits: what nl_navmesh_build found wrong with its level (each also said in a warning in
         /// the log). 0 for a navmesh added from polygons or loaded from a file. Added in 0.3.
         build_warnings: BuildWarnings,
+        /// Corners inserted where a polygon's edge met the edges of others at T-junctions (a tile border, Unity's
+        /// exported triangulation), so that they connect: each vertex within weld_tolerance of another polygon's
+        /// outline edge, strictly between its ends, joins that edge. Added in 0.3.
+        t_junction_corner_count: u32,
+        /// Such edges left as walls: their polygon would have had more than NL_MAX_POLYGON_VERTICES corners. Added in
+        /// 0.3.
+        unjoined_t_junction_count: u32,
     }
 }
 

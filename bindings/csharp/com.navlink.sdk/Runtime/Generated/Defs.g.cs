@@ -128,7 +128,10 @@ namespace NavLink
         /// <summary>Optional area id per polygon; NULL means area 0. Borrowed.</summary>
         public IntPtr Areas;
         /// <summary>Vertices closer than this (metres, 0..1) become one, so polygons that only touch (Unity repeats
-        /// vertices per triangle) are connected. Default 0.001; 0 welds exact duplicates only.</summary>
+        /// vertices per triangle) are connected, and a vertex this near an edge of another polygon's outline, between
+        /// its ends, becomes a corner of it (a T-junction, as at tile borders: the polygons then connect). Default
+        /// 0.001 (at least the 1/1024 m grid's rounding is allowed); 0 welds exact duplicates only and joins
+        /// nothing.</summary>
         public float WeldTolerance;
         /// <summary>The agent type this navmesh was made for.</summary>
         public AgentType AgentType;

@@ -96,6 +96,13 @@ namespace NavLink
         /// <summary>NL_BUILD_WARNING_* bits: what nl_navmesh_build found wrong with its level (each also said in a
         /// warning in the log). 0 for a navmesh added from polygons or loaded from a file. Added in 0.3.</summary>
         public BuildWarnings BuildWarnings;
+        /// <summary>Corners inserted where a polygon's edge met the edges of others at T-junctions (a tile border,
+        /// Unity's exported triangulation), so that they connect: each vertex within weld_tolerance of another
+        /// polygon's outline edge, strictly between its ends, joins that edge. Added in 0.3.</summary>
+        public uint TJunctionCornerCount;
+        /// <summary>Such edges left as walls: their polygon would have had more than NL_MAX_POLYGON_VERTICES corners.
+        /// Added in 0.3.</summary>
+        public uint UnjoinedTJunctionCount;
     }
 
     /// <summary>One polygon: corners counter-clockwise seen from above, and the neighbour across each edge. May grow:
