@@ -17,8 +17,7 @@ uint64_t edge_key(uint32_t a, uint32_t b) { return (uint64_t(std::min(a, b)) << 
 // The ends of unmatched edges in square x-z cells, to find those near an edge.
 class EndGrid {
 public:
-    EndGrid(const std::vector<Vec3>& vertices, const std::vector<uint32_t>& ends, float cell)
-        : vertices_(vertices), cell_(cell) {
+    EndGrid(const std::vector<Vec3>& vertices, const std::vector<uint32_t>& ends, float cell) : cell_(cell) {
         for (uint32_t v : ends) cells_[key(cell_of(vertices[v].x()), cell_of(vertices[v].z()))].push_back(v);
     }
 
@@ -38,7 +37,6 @@ private:
     int64_t cell_of(float v) const { return static_cast<int64_t>(std::floor(double(v) / cell_)); }
     static uint64_t key(int64_t cx, int64_t cz) { return (uint64_t(cx) << 32) ^ uint64_t(uint32_t(cz)); }
 
-    const std::vector<Vec3>& vertices_;
     double cell_;
     std::unordered_map<uint64_t, std::vector<uint32_t>> cells_;
 };

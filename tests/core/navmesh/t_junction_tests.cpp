@@ -104,7 +104,8 @@ TEST_CASE("many rows meet one edge: every corner joins while the polygon has roo
 
 TEST_CASE("corners beside the edge's line or above its height do not join it") {
     // 5 mm higher, or 5 mm along x, with a 1 mm tolerance: a step and a gap, not a border.
-    for (const auto& [lift, shift] : {std::pair{0.005f, 0.0f}, std::pair{0.0f, 0.005f}}) {
+    for (const std::pair<float, float>& off : {std::pair{0.005f, 0.0f}, std::pair{0.0f, 0.005f}}) {
+        const float lift = off.first, shift = off.second;
         CAPTURE(lift);
         CAPTURE(shift);
         const auto navmesh = nl::build_navmesh(two_tiles(2, lift, shift));
