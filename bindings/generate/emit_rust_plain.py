@@ -78,10 +78,14 @@ def _fail(struct, field, why):
                      "Rust type is found)" % (struct["name"], field["name"], why))
 
 
+def _bookkeeping(name):
+    """`size` and `reserved*`: the fields that version a struct or pad it, not its content."""
+    return name == "size" or name.startswith("reserved")
+
+
 def _is_alias(struct, types):
     """A header struct the crate uses as navlink-sys's under a Rust name: no `size`, no `reserved`, no function."""
-    names = [f["name"] for f in struct["fields"]]
-    return "size" not in names and not any(n.startswith("reserved") for n in names) and not types.has_function(struct)
+    return not any(_bookkeeping(f["name"]) for f in struct["fields"]) and not types.has_function(struct)
 
 
 class Plain:
@@ -107,7 +111,7 @@ class Plain:
         """The fields a plain struct does not have: `size`, `reserved*`, a pointer and its `_length`."""
         pointers = {f["name"] for f in struct["fields"] if "*" in f["type"] and not f["function"]}
         return [f["name"] for f in struct["fields"]
-                if f["name"] == "size" or f["name"].startswith("reserved") or f["name"] in pointers
+                if _bookkeeping(f["name"]) or f["name"] in pointers
                 or any(f["name"] == p + "_length" for p in pointers)]
 
     def _element(self, struct, field, c_type):

@@ -5,6 +5,7 @@
 #include <numeric>
 
 #include "level/mesh_validation.h"
+#include "navmesh/edge_pairs.h"
 #include "navmesh/t_junctions.h"
 #include "navmesh/vertex_welder.h"
 #include "util/error.h"
@@ -269,23 +270,7 @@ private:
     // Portals, boundary edges and non-manifold edges, from the edges sorted by their vertex pair.
     void connect() {
         NavMesh& m = *mesh_;
-        struct EdgeRef {
-            uint64_t key;
-            uint32_t slot;  // index into corners_ of the edge's first corner
-            uint32_t polygon;
-        };
-        std::vector<EdgeRef> edges;
-        edges.reserve(m.corners_.size());
-        for (uint32_t p = 0; p < m.polygon_count(); ++p) {
-            const uint32_t n = m.corner_count(p);
-            for (uint32_t k = 0; k < n; ++k) {
-                const uint32_t a = m.corner(p, k), b = m.corner(p, (k + 1) % n);
-                const uint64_t key = (uint64_t(std::min(a, b)) << 32) | std::max(a, b);
-                edges.push_back({key, m.first_corner_[p] + k, p});
-            }
-        }
-        std::sort(edges.begin(), edges.end(),
-                  [](const EdgeRef& x, const EdgeRef& y) { return x.key != y.key ? x.key < y.key : x.slot < y.slot; });
+        const std::vector<KeyedEdge> edges = edges_by_vertex_pair(m.first_corner_, m.corners_);
         m.neighbours_.assign(m.corners_.size(), kNoPolygon);
         m.on_outline_.assign(m.vertices_.size(), 0);
         for (size_t i = 0; i < edges.size();) {

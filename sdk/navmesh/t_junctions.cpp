@@ -4,15 +4,10 @@
 #include <cmath>
 #include <unordered_map>
 
+#include "navmesh/edge_pairs.h"
+
 namespace nl {
 namespace {
-
-struct Edge {
-    uint64_t key;  // the vertex pair, smaller first
-    uint32_t slot;
-};
-
-uint64_t edge_key(uint32_t a, uint32_t b) { return (uint64_t(std::min(a, b)) << 32) | std::max(a, b); }
 
 // The ends of unmatched edges in square x-z cells, to find those near an edge.
 class EndGrid {
@@ -51,13 +46,7 @@ JoinedPolygons join_t_junctions(const std::vector<Vec3>& vertices, const std::ve
     };
 
     // The unmatched edges: a key met once.
-    std::vector<Edge> edges;
-    edges.reserve(corners.size());
-    for (uint32_t p = 0; p < polygons; ++p)
-        for (uint32_t slot = first_corner[p]; slot < first_corner[p + 1]; ++slot)
-            edges.push_back({edge_key(corners[slot], next_corner(slot, p)), slot});
-    std::sort(edges.begin(), edges.end(),
-              [](const Edge& x, const Edge& y) { return x.key != y.key ? x.key < y.key : x.slot < y.slot; });
+    const std::vector<KeyedEdge> edges = edges_by_vertex_pair(first_corner, corners);
     std::vector<uint8_t> unmatched(corners.size(), 0);
     std::vector<uint32_t> ends;
     double length_sum = 0.0;
@@ -77,18 +66,11 @@ JoinedPolygons join_t_junctions(const std::vector<Vec3>& vertices, const std::ve
     }
 
     JoinedPolygons out;
+    if (unmatched_count == 0) return out;
     out.moved_corner.resize(corners.size());
     out.first_corner.reserve(first_corner.size());
     out.corners.reserve(corners.size());
     out.first_corner.push_back(0);
-    if (unmatched_count == 0) {
-        out.first_corner = first_corner;
-        out.corners = corners;
-        for (uint32_t p = 0; p < polygons; ++p)
-            for (uint32_t slot = first_corner[p]; slot < first_corner[p + 1]; ++slot)
-                out.moved_corner[slot] = static_cast<uint8_t>(slot - first_corner[p]);
-        return out;
-    }
     std::sort(ends.begin(), ends.end());
     ends.erase(std::unique(ends.begin(), ends.end()), ends.end());
     const float cell = std::max(float(length_sum / unmatched_count), 4.0f * tolerance + 1e-3f);

@@ -13,7 +13,8 @@
 
 namespace nl {
 
-// The polygons' corners with the inserted ones, and where each old corner went.
+// The polygons' corners with the inserted ones, and where each old corner went: meaningful only when
+// `inserted` is not 0 (otherwise the polygons stay as they are, and the lists may be left empty).
 struct JoinedPolygons {
     std::vector<uint32_t> first_corner;  // polygon_count + 1 offsets into corners
     std::vector<uint32_t> corners;
