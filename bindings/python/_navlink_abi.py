@@ -456,14 +456,17 @@ NavmeshDef._fields_ = [("size", c_uint32), ("vertices", POINTER(c_float)), ("ver
                         ("areas", POINTER(c_uint8)), ("weld_tolerance", c_float), ("agent_type", AgentType),
                         ("detail_vertices", POINTER(c_float)), ("detail_vertex_count", c_uint32),
                         ("detail_triangles", POINTER(c_uint32)), ("detail_triangle_count", c_uint32),
-                        ("detail_triangle_starts", POINTER(c_uint32)), ("carrier", MeshId)]
+                        ("detail_triangle_starts", POINTER(c_uint32)), ("carrier", MeshId), ("tile_width", c_float),
+                        ("tile_origin_x", c_float), ("tile_origin_z", c_float), ("tile_x", c_int32),
+                        ("tile_z", c_int32)]
 NavmeshInfo._fields_ = [("size", c_uint32), ("vertex_count", c_uint32), ("polygon_count", c_uint32),
                          ("portal_count", c_uint32), ("boundary_edge_count", c_uint32),
                          ("welded_vertex_count", c_uint32), ("flipped_polygon_count", c_uint32),
                          ("dropped_polygon_count", c_uint32), ("non_manifold_edge_count", c_uint32),
                          ("agent_type", AgentType), ("bounds_min", c_float * 3), ("bounds_max", c_float * 3),
                          ("carrier", MeshId), ("turned_over_mesh_count", c_uint32), ("build_warnings", c_uint32),
-                         ("t_junction_corner_count", c_uint32), ("unjoined_t_junction_count", c_uint32)]
+                         ("t_junction_corner_count", c_uint32), ("unjoined_t_junction_count", c_uint32),
+                         ("tile_count", c_uint32), ("tile_width", c_float), ("tile_origin", c_float * 2)]
 NavPolygon._fields_ = [("size", c_uint32), ("vertex_count", c_uint32), ("vertices", c_uint32 * 16),
                         ("neighbours", c_uint32 * 16), ("area", c_uint32), ("normal", c_float * 3),
                         ("centre", c_float * 3)]
@@ -578,7 +581,9 @@ RecastSettings._fields_ = [("size", c_uint32), ("cell_size", c_float), ("cell_he
                             ("vertices_per_polygon", c_uint32), ("detail_sample_distance", c_float),
                             ("detail_sample_max_error", c_float), ("partition", c_uint32),
                             ("filter_low_hanging_obstacles", c_uint8), ("filter_ledge_spans", c_uint8),
-                            ("filter_walkable_low_height_spans", c_uint8), ("reserved", c_uint8)]
+                            ("filter_walkable_low_height_spans", c_uint8), ("reserved", c_uint8),
+                            ("tile_size", c_uint32), ("tile_border", c_uint32)]
+PluginTaskFn = CFUNCTYPE(None, c_void_p, c_uint32)
 HostLogFn = CFUNCTYPE(None, c_void_p, c_uint32, c_char_p)
 HostSetErrorFn = CFUNCTYPE(None, c_void_p, c_char_p)
 HostGetLevelTrianglesFn = CFUNCTYPE(c_uint32, c_void_p, POINTER(c_float), c_uint32, POINTER(c_uint32), POINTER(c_uint32), c_uint32, POINTER(c_uint32))
@@ -590,6 +595,7 @@ HostSegmentsBlockedFn = CFUNCTYPE(c_uint32, c_void_p, POINTER(Segment), c_uint32
 HostRecordBuildSettingsFn = CFUNCTYPE(c_uint32, c_void_p, c_char_p, c_size_t)
 HostGetBuildTrianglesFn = CFUNCTYPE(c_uint32, c_void_p, POINTER(c_float), c_uint32, POINTER(c_uint32), POINTER(c_uint32), POINTER(c_uint8), c_uint32, POINTER(c_uint32))
 HostReportBuildProgressFn = CFUNCTYPE(c_uint32, c_void_p, c_float, c_char_p)
+HostRunTasksFn = CFUNCTYPE(c_uint32, c_void_p, c_uint32, PluginTaskFn, c_void_p)
 PluginHost._fields_ = [("size", c_uint32), ("abi_version", c_uint32), ("context", c_void_p), ("log", HostLogFn),
                         ("set_error", HostSetErrorFn), ("get_level_triangles", HostGetLevelTrianglesFn),
                         ("navmesh_get_boundary_edges", HostNavmeshGetBoundaryEdgesFn),
@@ -598,7 +604,7 @@ PluginHost._fields_ = [("size", c_uint32), ("abi_version", c_uint32), ("context"
                         ("segments_blocked", HostSegmentsBlockedFn),
                         ("record_build_settings", HostRecordBuildSettingsFn),
                         ("get_build_triangles", HostGetBuildTrianglesFn),
-                        ("report_build_progress", HostReportBuildProgressFn)]
+                        ("report_build_progress", HostReportBuildProgressFn), ("run_tasks", HostRunTasksFn)]
 NavmeshSinkFn = CFUNCTYPE(c_uint32, c_void_p, POINTER(NavmeshDef))
 NavmeshBuildFn = CFUNCTYPE(c_uint32, c_void_p, POINTER(PluginHost), POINTER(NavmeshBuildDef), NavmeshSinkFn, c_void_p)
 NavmeshBuilder._fields_ = [("build", NavmeshBuildFn)]

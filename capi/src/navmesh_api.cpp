@@ -1,4 +1,5 @@
 #include <cstddef>
+#include <cmath>
 #include <cstring>
 
 #include "entry_guard.h"
@@ -71,6 +72,16 @@ NavMeshInput navmesh_input_from_def(const nl_navmesh_def& given) {
     if (def.areas) in.areas.assign(def.areas, def.areas + def.polygon_count);
     in.weld_tolerance = def.weld_tolerance;
     in.agent_type = to_core(def.agent_type);
+    if (def.tile_width != 0.0f) {
+        // Checked here, where the field's name is known; the builder checks the grid again.
+        if (!(std::isfinite(def.tile_width) && def.tile_width > 0.0f))
+            fail_field(ErrorCode::InvalidArgument, "tile_width is ", def.tile_width,
+                       " (must be > 0, or 0: not a tile)");
+        if (!std::isfinite(def.tile_origin_x) || !std::isfinite(def.tile_origin_z))
+            fail_field(ErrorCode::InvalidArgument, "tile_origin_x and tile_origin_z must be finite");
+        in.tiles.grid = TileGrid{def.tile_origin_x, def.tile_origin_z, def.tile_width};
+        in.tiles.tiles.push_back(TileCoord{def.tile_x, def.tile_z});
+    }
 
     const bool any_detail = def.detail_vertices || def.detail_triangles || def.detail_triangle_starts ||
                             def.detail_vertex_count || def.detail_triangle_count;
@@ -107,6 +118,10 @@ void navmesh_get_info(const World& world, nl_navmesh_id navmesh, nl_navmesh_info
     info.non_manifold_edge_count = mesh->repairs().non_manifold_edges;
     info.t_junction_corner_count = mesh->repairs().t_junction_corners;
     info.unjoined_t_junction_count = mesh->repairs().t_junctions_left;
+    info.tile_count = static_cast<uint32_t>(mesh->tiles().tiles.size());
+    info.tile_width = mesh->tiles().grid.tile_width;
+    info.tile_origin[0] = mesh->tiles().grid.origin_x;
+    info.tile_origin[1] = mesh->tiles().grid.origin_z;
     info.agent_type = to_c(mesh->agent());
     const nl::Aabb bounds = pose.world_box(mesh->bounds());
     copy_point(info.bounds_min, bounds.min);

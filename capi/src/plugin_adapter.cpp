@@ -10,6 +10,7 @@
 #include "level/level_hash.h"
 #include "host_input.h"
 #include "mapping.h"
+#include "navmesh/tile_join.h"
 
 namespace nl::capi {
 namespace {
@@ -95,29 +96,50 @@ void CPlugin::start(nl_plugin_entry_fn* entry, const std::string& origin) {
 }
 
 // What a builder hands back through the sink: the navmesh, validated and built (the builder is told
-// when it was refused), or why it was refused.
+// when it was refused), or its tiles, kept to be joined when it returns; or why it was refused.
 struct BuildSink {
     int calls = 0;
     std::shared_ptr<const NavMesh> navmesh;
+    std::vector<NavMeshInput> tiles;
     std::exception_ptr error;
 
     static nl_status receive(void* context, const nl_navmesh_def* def) {
         auto& self = *static_cast<BuildSink*>(context);
-        if (++self.calls > 1) {
-            take_plugin_error();
-            return NL_STATUS_FAILURE | NL_STATUS_INVALID_ARGUMENT;
-        }
+        ++self.calls;
         try {
             require(def, "navmesh");
-            self.navmesh = naming_fields("def->", [&] { return build_navmesh(navmesh_input_from_def(*def)); });
+            NavMeshInput input = naming_fields("def->", [&] { return navmesh_input_from_def(*def); });
+            if (input.tiles.grid.tiled()) {
+                if (self.navmesh) fail(ErrorCode::InvalidArgument, "a tile was handed over after a solo navmesh");
+                self.tiles.push_back(std::move(input));
+                return NL_STATUS_SUCCESS;
+            }
+            if (self.calls > 1) {
+                take_plugin_error();
+                return NL_STATUS_FAILURE | NL_STATUS_INVALID_ARGUMENT;
+            }
+            self.navmesh = naming_fields("def->", [&] { return build_navmesh(input); });
             return NL_STATUS_SUCCESS;
         } catch (const Error& e) {
             self.error = std::current_exception();
             return NL_STATUS_FAILURE | to_status(e.code());
+        } catch (const std::bad_alloc&) {
+            self.error = std::current_exception();
+            return NL_STATUS_FAILURE | NL_STATUS_OUT_OF_MEMORY;
         } catch (...) {
             self.error = std::current_exception();
             return NL_STATUS_FAILURE | NL_STATUS_INTERNAL_ERROR;
         }
+    }
+
+    // The tiles joined into one navmesh (tile_join.h).
+    void join_tiles_handed() {
+        std::vector<const NavMeshInput*> given;
+        given.reserve(tiles.size());
+        for (const NavMeshInput& tile : tiles) given.push_back(&tile);
+        const NavMeshInput joined = join_tiles(given);
+        tiles.clear();
+        navmesh = build_navmesh(joined);
     }
 };
 
@@ -164,12 +186,20 @@ BuiltNavMesh CPlugin::build(World&, const NavMeshBuildRequest& request) {
             fail(ErrorCode::Internal, "builder '", name, "' made a navmesh that was refused: ", e.what());
         }
     }
-    if (sink.calls > 1)
+    if (sink.calls > 1 && sink.tiles.empty())
         fail(ErrorCode::Internal, "builder '", name, "' handed over ", sink.calls, " navmeshes, not one");
     if (NL_FAILED(status))
         throw Error(to_error_code(status),
                     concat("builder '", name, "': ", reason.empty() ? nl_status_string(status) : reason));
     if (sink.calls == 0) fail(ErrorCode::Internal, "builder '", name, "' succeeded without handing over a navmesh");
+    if (!sink.tiles.empty()) {
+        try {
+            sink.join_tiles_handed();
+        } catch (const Error& e) {
+            if (e.code() == ErrorCode::OutOfMemory) throw;
+            fail(ErrorCode::Internal, "builder '", name, "' made tiles that were refused: ", e.what());
+        }
+    }
     const uint64_t built_from = running.handed ? level_hash(*running.handed) : 0;
     return {std::move(sink.navmesh), std::move(running.settings_used), built_from};
 }
@@ -240,6 +270,14 @@ void record_build_settings(void* context, std::string_view settings_json) {
         fail(ErrorCode::InvalidArgument,
              "record_build_settings was called outside a navmesh build of this plugin on this thread");
     running_build->settings_used.assign(settings_json);
+}
+
+void run_build_tasks(void* context, uint32_t count, FunctionRef<void(uint32_t index)> task) {
+    if (!running_build || &running_build->builder != context)
+        fail(ErrorCode::InvalidArgument, "run_tasks was called outside a navmesh build of this plugin on this thread");
+    world_of_plugin(context).tasks().parallel_for(count, 1, [&](uint32_t begin, uint32_t end) {
+        for (uint32_t i = begin; i < end; ++i) task(i);
+    });
 }
 
 World& world_of_plugin(void* context) { return static_cast<CPlugin*>(context)->world(); }

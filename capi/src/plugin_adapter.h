@@ -48,5 +48,8 @@ bool report_build_progress(void* context, float fraction, const char* stage);
 // Keeps what the build running on this thread for the plugin `context` says it used (checked when
 // the build ends); InvalidArgument outside such a build.
 void record_build_settings(void* context, std::string_view settings_json);
+// For the build running on this thread, calls task(i) for i in 0..count-1 on the world's task system;
+// throws InvalidArgument outside a build of this plugin on this thread.
+void run_build_tasks(void* context, uint32_t count, FunctionRef<void(uint32_t index)> task);
 
 }  // namespace nl::capi

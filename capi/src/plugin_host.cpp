@@ -99,6 +99,13 @@ nl_status host_record_build_settings(void* context, const char* settings_json, s
     });
 }
 
+nl_status host_run_tasks(void* context, uint32_t count, nl_plugin_task_fn* task, void* user) {
+    return for_plugin(context, "run_tasks", [&] {
+        if (!task) fail(ErrorCode::InvalidArgument, "task is NULL");
+        run_build_tasks(context, count, [&](uint32_t index) { task(user, index); });
+    });
+}
+
 nl_status host_boundary_edges(void* context, nl_navmesh_id navmesh, nl_boundary_edge* out, uint32_t capacity,
                               uint32_t* count) {
     return for_plugin(context, "navmesh_get_boundary_edges",
@@ -149,6 +156,7 @@ nl_plugin_host make_plugin_host(void* context) {
     host.record_build_settings = host_record_build_settings;
     host.get_build_triangles = host_get_build_triangles;
     host.report_build_progress = host_report_build_progress;
+    host.run_tasks = host_run_tasks;
     return host;
 }
 

@@ -17,7 +17,8 @@ nl_status host_record_build_settings(const nl_plugin_host& host, const std::stri
     return host.record_build_settings(host.context, settings_json.c_str(), settings_json.size());
 }
 
-HostLogContext::HostLogContext(const nl_plugin_host& host) : rcContext(true), host_(host) {
+HostLogContext::HostLogContext(const nl_plugin_host& host, Forwarding forwarding)
+    : rcContext(true), host_(host), forwarding_(forwarding) {
     enableTimer(false);  // Recast's timers are RecastDemo's profiling; nothing here reads them
 }
 
@@ -26,11 +27,21 @@ void HostLogContext::doLog(rcLogCategory category, const char* message, int leng
     try {
         std::string text(message, length > 0 ? static_cast<size_t>(length) : 0);
         if (category == RC_LOG_ERROR) last_error_ = text;
-        const std::string line = "recast: " + text;
-        host_log(host_, category == RC_LOG_ERROR ? NL_LOG_ERROR : NL_LOG_WARNING, line.c_str());
+        std::string line = "recast: " + text;
+        const nl_log_level level = category == RC_LOG_ERROR ? NL_LOG_ERROR : NL_LOG_WARNING;
+        if (forwarding_ == Forwarding::Kept) {
+            kept_.emplace_back(level, std::move(line));
+        } else {
+            host_log(host_, level, line.c_str());
+        }
     } catch (...) {
         // Out of memory while logging: drop the message, Recast's own return value still reports it.
     }
+}
+
+void HostLogContext::forward_kept() noexcept {
+    for (const auto& [level, line] : kept_) host_log(host_, level, line.c_str());
+    kept_.clear();
 }
 
 }  // namespace nl::recast

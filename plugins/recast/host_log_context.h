@@ -3,6 +3,8 @@
 #pragma once
 
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <Recast.h>
 
@@ -12,17 +14,24 @@ namespace nl::recast {
 
 class HostLogContext : public rcContext {
 public:
-    explicit HostLogContext(const nl_plugin_host& host);
+    // Kept: the lines wait for forward_kept(), for a context used on a task thread, where the host's
+    // functions must not be called.
+    enum class Forwarding { Immediate, Kept };
+    explicit HostLogContext(const nl_plugin_host& host, Forwarding forwarding = Forwarding::Immediate);
 
     // Recast's last error message in this build, or "".
     const std::string& last_error() const { return last_error_; }
+    // Logs the kept lines, in order, and forgets them; call it on the build's thread.
+    void forward_kept() noexcept;
 
 protected:
     void doLog(rcLogCategory category, const char* message, int length) override;
 
 private:
     const nl_plugin_host& host_;
+    Forwarding forwarding_;
     std::string last_error_;
+    std::vector<std::pair<nl_log_level, std::string>> kept_;
 };
 
 // Calls host.log / host.set_error when the host's table has them; never throws.

@@ -4,14 +4,21 @@
 
 namespace nl::recast {
 
-NavMeshExport::NavMeshExport(const rcPolyMesh& pm, const rcPolyMeshDetail& dm) {
+NavMeshExport::NavMeshExport(const rcPolyMesh& pm, const rcPolyMeshDetail& dm, const TilePlace* tile) {
     // Vertices: grid coordinates to world space.
     vertices_.reserve(static_cast<size_t>(pm.nverts) * 3);
+    if (tile) tile_ = *tile;
     for (int i = 0; i < pm.nverts; ++i) {
         const unsigned short* v = &pm.verts[i * 3];
-        vertices_.push_back(pm.bmin[0] + v[0] * pm.cs);
-        vertices_.push_back(pm.bmin[1] + v[1] * pm.ch);
-        vertices_.push_back(pm.bmin[2] + v[2] * pm.cs);
+        if (tile) {
+            vertices_.push_back(static_cast<float>(tile->origin_x + double(tile->first_cell_x + v[0]) * pm.cs));
+            vertices_.push_back(pm.bmin[1] + v[1] * pm.ch);
+            vertices_.push_back(static_cast<float>(tile->origin_z + double(tile->first_cell_z + v[2]) * pm.cs));
+        } else {
+            vertices_.push_back(pm.bmin[0] + v[0] * pm.cs);
+            vertices_.push_back(pm.bmin[1] + v[1] * pm.ch);
+            vertices_.push_back(pm.bmin[2] + v[2] * pm.cs);
+        }
     }
 
     // Polygons: nvp corners (padded with RC_MESH_NULL_IDX), then nvp neighbour entries, per polygon.
@@ -28,7 +35,7 @@ NavMeshExport::NavMeshExport(const rcPolyMesh& pm, const rcPolyMeshDetail& dm) {
         }
         if (count < 3) fail(NL_STATUS_INTERNAL_ERROR, "Recast made polygon ", p, " with ", count, " corners");
         vertex_counts_.push_back(static_cast<uint8_t>(count));
-        // NavLink's area a is Recast's a + 1 (solo_mesh.cpp): Recast's 0 is "not walkable".
+        // NavLink's area a is Recast's a + 1 (recast_pipeline.h): Recast's 0 is "not walkable".
         areas_.push_back(static_cast<uint8_t>(pm.areas[p] - 1));
     }
 
@@ -77,6 +84,11 @@ nl_navmesh_def NavMeshExport::def(const nl_agent_type& agent) const {
     d.detail_triangles = detail_triangles_.data();
     d.detail_triangle_count = static_cast<uint32_t>(detail_triangles_.size() / 3);
     d.detail_triangle_starts = detail_triangle_starts_.data();
+    d.tile_width = tile_.tile_width;
+    d.tile_origin_x = static_cast<float>(tile_.origin_x);
+    d.tile_origin_z = static_cast<float>(tile_.origin_z);
+    d.tile_x = tile_.tile_x;
+    d.tile_z = tile_.tile_z;
     return d;
 }
 

@@ -10,6 +10,7 @@
 #include "navmesh_export.h"
 #include "recast_settings.h"
 #include "solo_mesh.h"
+#include "tiled_mesh.h"
 
 namespace nl::recast {
 namespace {
@@ -24,7 +25,13 @@ constexpr const char kVersion[] = NL_RECAST_STRINGIFY(NL_VERSION_MAJOR) "." NL_R
 
 constexpr const char kName[] = "recast";
 constexpr const char kDescription[] =
-    "Builds a navmesh from the level with Recast (solo mesh, as RecastDemo), settings nl_recast_settings or JSON";
+    "Builds a navmesh from the level with Recast (solo mesh or tiles, as RecastDemo), settings nl_recast_settings or "
+    "JSON";
+
+// The sink refused a tile: its status ends the build, with the reason the host already holds.
+struct SinkRefused {
+    nl_status status;
+};
 
 nl_status report(const nl_plugin_host& host, nl_status status, const char* message) noexcept {
     host_set_error(host, message);
@@ -46,15 +53,27 @@ nl_status build(void* /*plugin_state*/, const nl_plugin_host* host, const nl_nav
         const LevelTriangles level = fetch_level_triangles(*host);
 
         HostLogContext context(*host);
-        const SoloMesh mesh = build_solo_mesh(context, level, settings, def->agent_type, progress);
-        progress.report(0.98f, "handing over the navmesh");
-        const NavMeshExport navmesh(*mesh.polygons, *mesh.detail);
-        const nl_navmesh_def navmesh_def = navmesh.def(def->agent_type);
         const nl_status recorded = host_record_build_settings(*host, settings_to_json(settings));
         if (NL_FAILED(recorded))
             fail(recorded & ~NL_STATUS_FAILURE, "the host refused the record of the settings used");
+        if (settings.tile_size > 0) {
+            // The sink reports its own failures; the first one is the build's.
+            build_tiled_mesh(context, *host, level, settings, def->agent_type, progress,
+                             [&](const NavMeshExport& tile) {
+                                 const nl_navmesh_def tile_def = tile.def(def->agent_type);
+                                 const nl_status handed = sink(sink_context, &tile_def);
+                                 if (NL_FAILED(handed)) throw SinkRefused{handed};
+                             });
+            return NL_STATUS_SUCCESS;
+        }
+        const RecastPolygons mesh = build_solo_mesh(context, level, settings, def->agent_type, progress);
+        progress.report(0.98f, "handing over the navmesh");
+        const NavMeshExport navmesh(*mesh.polygons, *mesh.detail);
+        const nl_navmesh_def navmesh_def = navmesh.def(def->agent_type);
         // The sink reports its own failures; its status is the build's.
         return sink(sink_context, &navmesh_def);
+    } catch (const SinkRefused& refused) {
+        return refused.status;
     } catch (const BuildFailure& e) {
         return report(*host, e.status(), e.what());
     } catch (const std::bad_alloc&) {
@@ -85,6 +104,8 @@ nl_recast_settings default_settings() noexcept {
     s.filter_ledge_spans = 1;
     s.filter_walkable_low_height_spans = 1;
     s.reserved = 0;
+    s.tile_size = 0;
+    s.tile_border = 0;
     return s;
 }
 

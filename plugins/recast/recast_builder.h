@@ -1,7 +1,7 @@
 // The Recast navmesh builder, a plugin compiled into libnavlink.so and registered in every world with
-// nl_plugin_register(world, nl::recast::plugin_entry, ...). It builds one solo (single-tile) navmesh
-// from the level's triangles, as RecastDemo's Sample_SoloMesh does, and hands it to the host as an
-// nl_navmesh_def. Stateless: any number of builds may run at once.
+// nl_plugin_register(world, nl::recast::plugin_entry, ...). It builds one solo navmesh from the level's
+// triangles, as RecastDemo's Sample_SoloMesh does, or square tiles of it, as Sample_TileMesh does, and
+// hands them to the host as nl_navmesh_defs. Stateless: any number of builds may run at once.
 #pragma once
 
 #include <cstdint>

@@ -31,6 +31,7 @@ enum class Kind {
     Integer,    // JSON integer (uint32_t field)
     Partition,  // "watershed" / "monotone" / "layers" or 0 / 1 / 2 (uint32_t field)
     Flag,       // JSON boolean (uint8_t field)
+    Cells,      // JSON integer (uint32_t field): tile_size 0 or 16..4096, tile_border 0..4096
 };
 
 struct Field {
@@ -55,6 +56,8 @@ constexpr Field kFields[] = {
     NL_RECAST_FIELD(filter_low_hanging_obstacles, Flag),
     NL_RECAST_FIELD(filter_ledge_spans, Flag),
     NL_RECAST_FIELD(filter_walkable_low_height_spans, Flag),
+    NL_RECAST_FIELD(tile_size, Cells),
+    NL_RECAST_FIELD(tile_border, Cells),
 };
 #undef NL_RECAST_FIELD
 
@@ -66,6 +69,20 @@ uint32_t& uint_field(nl_recast_settings& s, const Field& f) {
 }
 uint8_t& flag_field(nl_recast_settings& s, const Field& f) {
     return *reinterpret_cast<uint8_t*>(reinterpret_cast<unsigned char*>(&s) + f.offset);
+}
+
+constexpr int64_t kMaxTileCells = 4096;
+constexpr int64_t kMinTileCells = 16;
+
+// What is wrong with a tile's cell count, or "" if nothing.
+std::string cells_problem(const std::string& name, int64_t v) {
+    std::ostringstream out;
+    if (v < 0 || v > kMaxTileCells) {
+        out << "must be in 0.." << kMaxTileCells << " cells (got " << v << ")";
+    } else if (name == "tile_size" && v != 0 && v < kMinTileCells) {
+        out << "must be 0 (one solo mesh) or " << kMinTileCells << ".." << kMaxTileCells << " cells (got " << v << ")";
+    }
+    return out.str();
 }
 
 const char* partition_name(uint32_t p) {
@@ -122,6 +139,7 @@ std::string field_problem(nl_recast_settings& s, const Field& f) {
             if (v > 1) out << "must be 0 or 1 (got " << v << ")";
             break;
         }
+        case Kind::Cells: return cells_problem(f.name, uint_field(s, f));
     }
     return out.str();
 }
@@ -187,6 +205,18 @@ void apply_json_value(nl_recast_settings& s, const Field& f, const nlohmann::jso
             if (!v.is_boolean()) fail(NL_STATUS_INVALID_ARGUMENT, where, " must be true or false, not ", json_type(v));
             flag_field(s, f) = v.get<bool>() ? 1 : 0;
             return;
+        case Kind::Cells: {
+            if (!v.is_number_integer())
+                fail(NL_STATUS_INVALID_ARGUMENT, where, " must be an integer, not ", nl::json_excerpt(v));
+            int64_t n = 0;
+            if (!integer_in(v, 0, kMaxTileCells, &n))
+                fail(NL_STATUS_INVALID_ARGUMENT, where, " must be in 0..", kMaxTileCells, " cells (got ",
+                     nl::json_excerpt(v), ")");
+            const std::string problem = cells_problem(f.name, n);
+            if (!problem.empty()) fail(NL_STATUS_INVALID_ARGUMENT, where, " ", problem);
+            uint_field(s, f) = static_cast<uint32_t>(n);
+            return;
+        }
     }
 }
 
@@ -258,6 +288,7 @@ std::string settings_to_json(const nl_recast_settings& settings) {
             case Kind::Integer: out[f.name] = uint_field(s, f); break;
             case Kind::Partition: out[f.name] = partition_name(uint_field(s, f)); break;
             case Kind::Flag: out[f.name] = flag_field(s, f) != 0; break;
+            case Kind::Cells: out[f.name] = uint_field(s, f); break;
         }
     }
     return out.dump();

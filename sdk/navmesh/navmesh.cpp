@@ -40,7 +40,7 @@ size_t NavMesh::memory_bytes() const {
     auto bytes = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
     return bytes(vertices_) + bytes(first_corner_) + bytes(corners_) + bytes(neighbours_) + bytes(areas_) +
            bytes(on_outline_) + bytes(polygon_bounds_) + bytes(detail_vertices_) + bytes(detail_triangles_) +
-           bytes(detail_) + bytes(boundary_) + grid_.memory_bytes();
+           bytes(detail_) + bytes(boundary_) + grid_.memory_bytes() + bytes(polygon_tiles_) + bytes(tiles_.tiles);
 }
 
 bool NavMesh::over_polygon(uint32_t p, float x, float z) const {

@@ -11,6 +11,7 @@
 #include "level/geometry.h"
 #include "navmesh/navmesh_grid.h"
 #include "navmesh/polygon_grid.h"
+#include "navmesh/tiles.h"
 
 namespace nl {
 
@@ -108,6 +109,10 @@ public:
     const AgentType& agent() const { return agent_; }
     const Aabb& bounds() const { return bounds_; }
     const NavMeshRepairs& repairs() const { return repairs_; }
+    // The tiles it was joined from (tile_join.h), in row order; a solo navmesh has no grid and none.
+    const TileLayout& tiles() const { return tiles_; }
+    // Polygon p's tile, an index into tiles().tiles; 0 for a solo navmesh.
+    uint32_t tile_of(uint32_t p) const { return polygon_tiles_.empty() ? 0 : polygon_tiles_[p]; }
 
     // The navmesh point for `point` among the polygons overlapping `point +- half_extents`: on the
     // polygon straight below or above it within the agent's max_climb if there is one (as Detour's
@@ -170,6 +175,8 @@ private:
     AgentType agent_;
     Aabb bounds_;
     NavMeshRepairs repairs_;
+    TileLayout tiles_;
+    std::vector<uint32_t> polygon_tiles_;  // per polygon when tiled
 };
 
 }  // namespace nl

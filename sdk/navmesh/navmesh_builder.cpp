@@ -71,6 +71,37 @@ private:
             fail_field(ErrorCode::InvalidArgument, "weld_tolerance is ", in_.weld_tolerance, " (must be 0..1 m)");
         naming_fields("agent_type.", [&] { validate_agent(in_.agent_type); });
         validate_detail();
+        validate_tiles();
+    }
+
+    void validate_tiles() const {
+        const TileGrid& grid = in_.tiles.grid;
+        if (!grid.tiled() && in_.tiles.tiles.empty() && in_.polygon_tiles.empty() && in_.on_tile_border.empty()) return;
+        if (!(std::isfinite(grid.tile_width) && grid.tile_width > 0.0f && grid.tile_width <= kCoordinateLimit))
+            fail_field(ErrorCode::InvalidArgument, "tile_width is ", grid.tile_width, " (must be > 0 m)");
+        if (!std::isfinite(grid.origin_x) || !std::isfinite(grid.origin_z) ||
+            std::fabs(grid.origin_x) > kCoordinateLimit || std::fabs(grid.origin_z) > kCoordinateLimit)
+            fail_field(ErrorCode::InvalidArgument, "tile_origin is not finite or beyond the coordinate limit");
+        if (in_.tiles.tiles.empty()) fail_field(ErrorCode::InvalidArgument, "tiles: a tile grid but no tile");
+        for (size_t t = 0; t + 1 < in_.tiles.tiles.size(); ++t)
+            if (!(in_.tiles.tiles[t] < in_.tiles.tiles[t + 1]))
+                fail_field(ErrorCode::InvalidArgument, "tiles[", t + 1, "] is out of row order or given twice");
+        if (!in_.polygon_tiles.empty() && in_.polygon_tiles.size() != input_polygon_count())
+            fail_field(ErrorCode::InvalidArgument, "polygon_tiles has ", in_.polygon_tiles.size(), " entries for ",
+                       input_polygon_count(), " polygons");
+        for (size_t p = 0; p < in_.polygon_tiles.size(); ++p)
+            if (in_.polygon_tiles[p] >= in_.tiles.tiles.size())
+                fail_field(ErrorCode::InvalidArgument, "polygon_tiles[", p, "] = ", in_.polygon_tiles[p],
+                           " is out of range (", in_.tiles.tiles.size(), " tiles)");
+        if (in_.polygon_tiles.empty() && in_.tiles.tiles.size() != 1)
+            fail_field(ErrorCode::InvalidArgument, "polygon_tiles: ", in_.tiles.tiles.size(),
+                       " tiles but no polygon's tile");
+        if (!in_.on_tile_border.empty() && in_.on_tile_border.size() != in_.vertices.size())
+            fail_field(ErrorCode::InvalidArgument, "on_tile_border has ", in_.on_tile_border.size(), " entries for ",
+                       in_.vertices.size(), " vertices");
+        if (!(in_.tile_border_height_tolerance >= 0.0f && in_.tile_border_height_tolerance <= 100.0f))
+            fail_field(ErrorCode::InvalidArgument, "tile_border_height_tolerance is ",
+                       in_.tile_border_height_tolerance);
     }
 
     void validate_detail() const {
@@ -123,6 +154,9 @@ private:
             mesh_->vertices_.push_back(on_grid[i]);
         }
         for (uint32_t i = 0; i < representative.size(); ++i) remap_[i] = remap_[representative[i]];
+        if (in_.on_tile_border.empty()) return;
+        on_tile_border_.assign(mesh_->vertices_.size(), 0);
+        for (uint32_t i = 0; i < remap_.size(); ++i) on_tile_border_[remap_[i]] |= in_.on_tile_border[i];
     }
 
     void make_polygons() {
@@ -168,6 +202,7 @@ private:
             }
             m.first_corner_.push_back(static_cast<uint32_t>(m.corners_.size()));
             m.areas_.push_back(in_.areas.empty() ? 0 : in_.areas[p]);
+            if (!in_.polygon_tiles.empty()) m.polygon_tiles_.push_back(in_.polygon_tiles[p]);
             if (has_detail) {
                 // Each triangle corner as a byte: a corner of the polygon where the detail vertex lies
                 // over it (the same x and z on the grid; its height is then the corner's, as Detour
@@ -240,11 +275,17 @@ private:
 
     // Edges that meet others at T-junctions get those corners (t_junctions.h), so that connect() pairs them.
     // The tolerance is the weld's, but at least the navmesh grid's rounding of a corner on a straight edge;
-    // a weld tolerance of 0 takes the polygons' topology as given, and joins nothing either.
+    // a weld tolerance of 0 takes the polygons' topology as given, and joins nothing either, but along
+    // the lines between tiles (tile_join.h), where heights may differ by the body's climb.
     void join_t_junctions_of_polygons() {
-        if (in_.weld_tolerance == 0.0f) return;
+        if (in_.weld_tolerance == 0.0f && on_tile_border_.empty()) return;
         NavMesh& m = *mesh_;
-        const float tolerance = std::max(in_.weld_tolerance, float(1.5 * std::ldexp(1.0, kNavMeshGridExponent)));
+        const float on_grid = float(1.5 * std::ldexp(1.0, kNavMeshGridExponent));
+        TJunctionTolerance tolerance;
+        tolerance.anywhere = in_.weld_tolerance == 0.0f ? 0.0f : std::max(in_.weld_tolerance, on_grid);
+        tolerance.on_tile_border = &on_tile_border_;
+        tolerance.tile_border = on_grid;
+        tolerance.tile_border_height = in_.tile_border_height_tolerance;
         JoinedPolygons joined =
             join_t_junctions(m.vertices_, m.first_corner_, m.corners_, tolerance, kMaxPolygonVertices);
         m.repairs_.t_junction_corners = joined.inserted;
@@ -307,16 +348,18 @@ private:
             m.bounds_.grow(box.max);
         }
         m.agent_ = in_.agent_type;
+        m.tiles_ = in_.tiles;
         m.grid_.build(m.polygon_bounds_, m.bounds_);
         // A navmesh lives long and is never edited: give back what the building left spare.
         auto fit = [](auto&... arrays) { (arrays.shrink_to_fit(), ...); };
         fit(m.vertices_, m.first_corner_, m.corners_, m.neighbours_, m.areas_, m.on_outline_, m.polygon_bounds_,
-            m.detail_vertices_, m.detail_triangles_, m.detail_, m.boundary_);
+            m.detail_vertices_, m.detail_triangles_, m.detail_, m.boundary_, m.polygon_tiles_);
     }
 
     const NavMeshInput& in_;
     std::shared_ptr<NavMesh> mesh_ = std::make_shared<NavMesh>();
     std::vector<uint32_t> remap_;
+    std::vector<uint8_t> on_tile_border_;  // per welded vertex
     std::vector<uint32_t> boundary_slots_;
 };
 
@@ -342,6 +385,8 @@ NavMeshInput input_of(const NavMesh& m) {
     in.areas = m.areas_;
     in.weld_tolerance = 0.0f;
     in.agent_type = m.agent_;
+    in.tiles = m.tiles_;
+    in.polygon_tiles = m.polygon_tiles_;
     if (!m.detail_.empty()) {
         // Global detail vertices again: each polygon's own, and the corners its triangles use
         // (which the builder turns back into corners).

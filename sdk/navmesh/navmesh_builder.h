@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "navmesh/navmesh.h"
+#include "navmesh/tiles.h"
 
 namespace nl {
 
@@ -19,6 +20,14 @@ struct NavMeshInput {
     std::vector<Vec3> detail_vertices;
     std::vector<uint32_t> detail_indices;  // 3 per detail triangle
     std::vector<uint32_t> detail_starts;   // polygon_count + 1 offsets in triangles; empty = no detail
+    // Tiles: one tile (its grid and coordinate) as a builder or host hands it, or those join_tiles
+    // joined (tile_join.h), with each polygon's index into tiles.tiles; solo: no grid, both empty.
+    TileLayout tiles;
+    std::vector<uint32_t> polygon_tiles;
+    // From join_tiles: per vertex, 1 on a line between tiles, and how far two tiles' border corners may
+    // be apart in height and still be joined as T-junctions.
+    std::vector<uint8_t> on_tile_border;
+    float tile_border_height_tolerance = 0.0f;
 };
 
 // Throws InvalidArgument naming the bad field of the input ("vertices[3].y", "agent_type.radius": a

@@ -39,8 +39,13 @@ private:
 }  // namespace
 
 JoinedPolygons join_t_junctions(const std::vector<Vec3>& vertices, const std::vector<uint32_t>& first_corner,
-                                const std::vector<uint32_t>& corners, float tolerance, uint32_t max_corners) {
+                                const std::vector<uint32_t>& corners, const TJunctionTolerance& tolerance,
+                                uint32_t max_corners) {
     const uint32_t polygons = static_cast<uint32_t>(first_corner.size() - 1);
+    const auto on_border = [&](uint32_t v) {
+        return tolerance.on_tile_border && !tolerance.on_tile_border->empty() && (*tolerance.on_tile_border)[v];
+    };
+    const float widest = std::max(tolerance.anywhere, tolerance.tile_border);
     auto next_corner = [&](uint32_t slot, uint32_t p) {
         return slot + 1 < first_corner[p + 1] ? corners[slot + 1] : corners[first_corner[p]];
     };
@@ -73,7 +78,7 @@ JoinedPolygons join_t_junctions(const std::vector<Vec3>& vertices, const std::ve
     out.first_corner.push_back(0);
     std::sort(ends.begin(), ends.end());
     ends.erase(std::unique(ends.begin(), ends.end()), ends.end());
-    const float cell = std::max(float(length_sum / unmatched_count), 4.0f * tolerance + 1e-3f);
+    const float cell = std::max(float(length_sum / unmatched_count), 4.0f * widest + 1e-3f);
     const EndGrid grid(vertices, ends, cell);
 
     // The vertices on one edge, ordered along it.
@@ -85,19 +90,26 @@ JoinedPolygons join_t_junctions(const std::vector<Vec3>& vertices, const std::ve
         const Vec3& pb = vertices[b];
         const double dx = double(pb.x()) - pa.x(), dz = double(pb.z()) - pa.z();
         const double length = std::hypot(dx, dz);
-        if (length <= 2.0 * tolerance) return;
-        grid.near(std::min(pa.x(), pb.x()) - tolerance, std::min(pa.z(), pb.z()) - tolerance,
-                  std::max(pa.x(), pb.x()) + tolerance, std::max(pa.z(), pb.z()) + tolerance, near);
+        const bool edge_on_border = on_border(a) && on_border(b);
+        const float reach = edge_on_border ? widest : tolerance.anywhere;
+        if (reach <= 0.0f || length <= 2.0 * reach) return;
+        grid.near(std::min(pa.x(), pb.x()) - reach, std::min(pa.z(), pb.z()) - reach, std::max(pa.x(), pb.x()) + reach,
+                  std::max(pa.z(), pb.z()) + reach, near);
         for (uint32_t v : near) {
             if (v == a || v == b) continue;
+            const bool across_tiles = edge_on_border && on_border(v);
+            const double within = across_tiles ? widest : tolerance.anywhere;
+            const double within_height =
+                across_tiles ? std::max(tolerance.anywhere, tolerance.tile_border_height) : tolerance.anywhere;
+            if (within <= 0.0) continue;
             const Vec3& q = vertices[v];
             const double qx = double(q.x()) - pa.x(), qz = double(q.z()) - pa.z();
             const double along = (qx * dx + qz * dz) / length;  // metres from a
             const double across = std::fabs(qx * dz - qz * dx) / length;
-            if (along <= tolerance || along >= length - tolerance || across > tolerance) continue;
+            if (along <= within || along >= length - within || across > within) continue;
             const double t = along / length;
             const double height = pa.y() + t * (double(pb.y()) - pa.y());
-            if (std::fabs(q.y() - height) > tolerance) continue;
+            if (std::fabs(q.y() - height) > within_height) continue;
             on_edge.push_back({t, v});
         }
         std::sort(on_edge.begin(), on_edge.end());

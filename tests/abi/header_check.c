@@ -115,7 +115,9 @@ _Static_assert(offsetof(nl_navmesh_info, vertex_count) == 4 && offsetof(nl_navme
                    offsetof(nl_navmesh_info, bounds_max) == 64 &&
                    offsetof(nl_navmesh_info, turned_over_mesh_count) == 84 &&
                    offsetof(nl_navmesh_info, t_junction_corner_count) == 92 &&
-                   offsetof(nl_navmesh_info, unjoined_t_junction_count) == 96 && sizeof(nl_navmesh_info) == 100,
+                   offsetof(nl_navmesh_info, unjoined_t_junction_count) == 96 &&
+                   offsetof(nl_navmesh_info, tile_count) == 100 && offsetof(nl_navmesh_info, tile_width) == 104 &&
+                   offsetof(nl_navmesh_info, tile_origin) == 108 && sizeof(nl_navmesh_info) == 116,
                "nl_navmesh_info");
 _Static_assert(offsetof(nl_recast_settings, cell_size) == 4 && offsetof(nl_recast_settings, cell_height) == 8 &&
                    offsetof(nl_recast_settings, region_min_size) == 12 &&
@@ -129,7 +131,8 @@ _Static_assert(offsetof(nl_recast_settings, cell_size) == 4 && offsetof(nl_recas
                    offsetof(nl_recast_settings, filter_low_hanging_obstacles) == 44 &&
                    offsetof(nl_recast_settings, filter_ledge_spans) == 45 &&
                    offsetof(nl_recast_settings, filter_walkable_low_height_spans) == 46 &&
-                   offsetof(nl_recast_settings, reserved) == 47,
+                   offsetof(nl_recast_settings, reserved) == 47 && offsetof(nl_recast_settings, tile_size) == 48 &&
+                   offsetof(nl_recast_settings, tile_border) == 52 && sizeof(nl_recast_settings) == 56,
                "nl_recast_settings");
 #if UINTPTR_MAX == 0xffffffffffffffffu
 _Static_assert(offsetof(nl_navmesh_def, vertices) == 8 && offsetof(nl_navmesh_def, vertex_count) == 16 &&
@@ -141,7 +144,9 @@ _Static_assert(offsetof(nl_navmesh_def, vertices) == 8 && offsetof(nl_navmesh_de
                    offsetof(nl_navmesh_def, detail_vertex_count) == 88 &&
                    offsetof(nl_navmesh_def, detail_triangles) == 96 &&
                    offsetof(nl_navmesh_def, detail_triangle_count) == 104 &&
-                   offsetof(nl_navmesh_def, detail_triangle_starts) == 112,
+                   offsetof(nl_navmesh_def, detail_triangle_starts) == 112 &&
+                   offsetof(nl_navmesh_def, carrier) == 120 && offsetof(nl_navmesh_def, tile_width) == 128 &&
+                   offsetof(nl_navmesh_def, tile_z) == 144 && sizeof(nl_navmesh_def) == 152,
                "nl_navmesh_def on LP64");
 _Static_assert(offsetof(nl_navmesh_build_def, builder) == 8 && offsetof(nl_navmesh_build_def, agent_type) == 16 &&
                    offsetof(nl_navmesh_build_def, settings) == 32 &&

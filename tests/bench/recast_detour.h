@@ -21,7 +21,7 @@ struct RecastLevel {
     std::string name;
     nl_recast_settings settings = nl_default_recast_settings();
     nl_agent_type agent = nl_default_agent_type();
-    nl::recast::SoloMesh solo;
+    nl::recast::RecastPolygons solo;
 };
 
 // Throws what the OBJ reader and the Recast pipeline throw. `radius`: the agent type's (0: the

@@ -9,6 +9,7 @@
 #include "generated_mesh.h"
 #include "io/link_json.h"
 #include "io/obj_reader.h"
+#include "navmesh/tile_join.h"
 #include "navlink/plugin.h"
 #include "recast_builder.h"
 #include "util/error.h"
@@ -51,6 +52,10 @@ NavMeshInput input_of(const nl_navmesh_def& def) {
     in.weld_tolerance = def.weld_tolerance;
     in.agent_type =
         AgentType{def.agent_type.radius, def.agent_type.height, def.agent_type.max_climb, def.agent_type.max_slope};
+    if (def.tile_width > 0.0f) {
+        in.tiles.grid = TileGrid{def.tile_origin_x, def.tile_origin_z, def.tile_width};
+        in.tiles.tiles.push_back(TileCoord{def.tile_x, def.tile_z});
+    }
     if (def.detail_triangle_starts) {
         in.detail_starts.assign(def.detail_triangle_starts, def.detail_triangle_starts + def.polygon_count + 1);
         for (uint32_t i = 0; i < def.detail_vertex_count; ++i)
@@ -77,7 +82,7 @@ public:
     NavMeshBuilder* navmesh_builder() noexcept override { return this; }
 
     BuiltNavMesh build(World& world, const NavMeshBuildRequest& request) override {
-        Call call{&world, {}, nullptr, {}, {}};
+        Call call{&world, {}, nullptr, {}, {}, {}};
         const nl_plugin_host host = table(&call);
         nl_navmesh_build_def def{};
         def.size = sizeof def;
@@ -90,6 +95,11 @@ public:
         const nl_status status = info_.navmesh_builder.build(info_.state, &host, &def, &Call::receive, &call);
         if (call.error) std::rethrow_exception(call.error);
         if (NL_FAILED(status)) fail(code_of(status), call.reason);
+        if (!call.tiles.empty()) {
+            std::vector<const NavMeshInput*> tiles;
+            for (const NavMeshInput& tile : call.tiles) tiles.push_back(&tile);
+            call.navmesh = build_navmesh(join_tiles(tiles));
+        }
         return {std::move(call.navmesh), std::move(call.settings_used)};
     }
 
@@ -101,9 +111,15 @@ private:
         std::exception_ptr error;
         std::string settings_used;
 
+        std::vector<NavMeshInput> tiles;  // a tiled build's, joined when it returns
+
         static nl_status receive(void* context, const nl_navmesh_def* def) {
             auto& self = *static_cast<Call*>(context);
             try {
+                if (def->tile_width > 0.0f) {
+                    self.tiles.push_back(input_of(*def));
+                    return NL_STATUS_SUCCESS;
+                }
                 self.navmesh = build_navmesh(input_of(*def));
                 return NL_STATUS_SUCCESS;
             } catch (...) {
@@ -124,6 +140,13 @@ private:
         h.get_level_triangles = &level_triangles;
         h.record_build_settings = [](void* context, const char* json, size_t length) {
             static_cast<Call*>(context)->settings_used.assign(json, length);
+            return NL_STATUS_SUCCESS;
+        };
+        // As the C layer's: the tasks on the world's task system.
+        h.run_tasks = [](void* context, uint32_t count, nl_plugin_task_fn* task, void* user) {
+            static_cast<Call*>(context)->world->tasks().parallel_for(count, 1, [&](uint32_t begin, uint32_t end) {
+                for (uint32_t i = begin; i < end; ++i) task(user, i);
+            });
             return NL_STATUS_SUCCESS;
         };
         return h;
@@ -172,11 +195,15 @@ void add_recast_builder(World& world) {
     if (!world.plugins().find_navmesh_builder("recast")) world.plugins().add(std::make_unique<RecastBuilder>());
 }
 
-Handle build_recast_navmesh(World& world, const AgentType& agent) {
+Handle build_recast_navmesh(World& world, const AgentType& agent, const std::string& settings_json) {
     add_recast_builder(world);
     NavMeshBuildRequest request;
     request.builder = "recast";
     request.agent_type = agent;
+    if (!settings_json.empty()) {
+        request.settings_json = settings_json.c_str();
+        request.settings_json_length = settings_json.size();
+    }
     return world.build_navmesh(request);
 }
 

@@ -31,9 +31,10 @@ Handle add_obj_file(World& world, const std::filesystem::path& path);
 // under its name, "recast", as a C++ plugin: once per world, later calls do nothing.
 void add_recast_builder(World& world);
 // Builds a navmesh for `agent` from the world's level with the Recast builder and its default
-// settings, and adds it: the navmesh nl_navmesh_build makes with nl_default_navmesh_build_def().
-// Throws as World::build_navmesh; a failure of the builder is an nl::Error with its code and reason.
-Handle build_recast_navmesh(World& world, const AgentType& agent = AgentType{});
+// settings (those in `settings_json` changed: {"tile_size": 32} builds tiles), and adds it: the
+// navmesh nl_navmesh_build makes with nl_default_navmesh_build_def(). Throws as
+// World::build_navmesh; a failure of the builder is an nl::Error with its code and reason.
+Handle build_recast_navmesh(World& world, const AgentType& agent = AgentType{}, const std::string& settings_json = "");
 
 // A world of `workers` threads holding `level` and the navmesh the Recast builder makes of it
 // (default agent and settings): what the link generator's tests start from.

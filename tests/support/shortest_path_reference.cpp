@@ -447,4 +447,13 @@ std::optional<double> ShortestPathReference::length(const Vec3& start, const Vec
     return best[reached];
 }
 
+double xz_length(const PathResult& result) {
+    double length = 0.0;
+    for (size_t i = 1; i < result.points.size(); ++i) {
+        const Vec3 d = result.points[i].position - result.points[i - 1].position;
+        length += std::hypot(double(d.x()), double(d.z()));
+    }
+    return length;
+}
+
 }  // namespace nl::test

@@ -129,4 +129,8 @@ private:
     mutable std::vector<int8_t> sees_;               // nodes_ x nodes_: -1 not yet known, 0 no, 1 yes
 };
 
+// The x-z length a path walks, what the reference's length is without links: the sum of its
+// points' distances seen from above.
+double xz_length(const PathResult& result);
+
 }  // namespace nl::test

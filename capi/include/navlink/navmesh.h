@@ -76,6 +76,17 @@ typedef struct nl_navmesh_def {
                                                is in that mesh's own space, and the navmesh follows
                                                the mesh: nl_mesh_set_transform moves it (no rebuild).
                                                Added in 0.3. */
+    /* A tile of a tiled navmesh (tile_width > 0): one square of a grid on the x-z plane, tile
+       (tile_x, tile_z) spanning x in [tile_origin_x + tile_x * tile_width, ... + tile_width] and z
+       alike. A builder hands a tiled navmesh tile by tile (nl_navmesh_builder.build); the host joins
+       them along the lines between tiles: corners two tiles share on a line (the same x and z) become
+       one within the agent's max_climb in height, and the edges there are joined as T-junctions. Added
+       in 0.3. */
+    float tile_width;                     /**< Metres; 0 (default): not a tile. */
+    float tile_origin_x;                  /**< x of tile (0, 0)'s lower corner. */
+    float tile_origin_z;                  /**< z of tile (0, 0)'s lower corner. */
+    int32_t tile_x;                       /**< The tile's column. */
+    int32_t tile_z;                       /**< The tile's row. */
 } nl_navmesh_def;
 
 /** A def with no geometry, weld tolerance 0.001 and the default agent type. Thread-safe. */
@@ -143,6 +154,10 @@ typedef struct nl_navmesh_info {
                                             between its ends, joins that edge. Added in 0.3. */
     uint32_t unjoined_t_junction_count; /**< Such edges left as walls: their polygon would have had
                                              more than NL_MAX_POLYGON_VERTICES corners. Added in 0.3. */
+    uint32_t tile_count;               /**< Tiles it was joined from (nl_navmesh_def.tile_width); 0 for a
+                                            solo navmesh. Added in 0.3. */
+    float tile_width;                  /**< Their side, metres; 0 for a solo navmesh. Added in 0.3. */
+    float tile_origin[2];              /**< x and z of tile (0, 0)'s lower corner. Added in 0.3. */
 } nl_navmesh_info;
 
 /** nl_navmesh_info.build_warnings: a build succeeded on a level that looks given wrong. */

@@ -25,6 +25,9 @@ extern "C" {
 /** The name of the entry function a plugin library exports. */
 #define NL_PLUGIN_ENTRY_SYMBOL "nl_plugin_entry"
 
+/** One task of nl_plugin_host.run_tasks: the work numbered `index`, with the user pointer given. */
+typedef void nl_plugin_task_fn(void* user, uint32_t index);
+
 /** Functions the host offers a plugin. `context` is passed back as the first argument of each. Valid
  *  for as long as the plugin is loaded. */
 typedef struct nl_plugin_host {
@@ -97,6 +100,15 @@ typedef struct nl_plugin_host {
      *  thread. Call it often enough that a cancel is prompt (the Recast builder: between Recast's
      *  steps and every 64k triangles rasterised). Present when `size` covers it (added in 0.3). */
     nl_status (*report_build_progress)(void* context, float fraction, const char* stage);
+
+    /** For a navmesh builder: calls task(user, i) once for every i in 0..count-1 on the world's task
+     *  system (the host's own scheduler when it gave one), several at once on as many threads as it
+     *  has, and returns when all have returned. A task must not call this table's functions, throw,
+     *  or wait for another task; it reports its own failure through `user`. Call it from build, on
+     *  the thread that called build. Returns SUCCESS, or a failure with INVALID_ARGUMENT (task NULL;
+     *  called outside a build of this plugin on this thread). Present when `size` covers it (added
+     *  in 0.3); without it, run the tasks one after another. */
+    nl_status (*run_tasks)(void* context, uint32_t count, nl_plugin_task_fn* task, void* user);
 } nl_plugin_host;
 
 /** The area get_build_triangles gives an obstacle's triangles. */
@@ -108,7 +120,9 @@ typedef nl_status nl_navmesh_sink_fn(void* sink_context, const nl_navmesh_def* n
 /** What a navmesh-builder plugin provides. */
 typedef struct nl_navmesh_builder {
     /** Builds a navmesh for def->agent from the host's level triangles, with the builder's settings
-     *  (def->settings and/or def->settings_json), and hands it to `sink` exactly once on success.
+     *  (def->settings and/or def->settings_json), and hands it to `sink` exactly once on success; or,
+     *  a tiled navmesh, each tile that has polygons once (tile_width > 0, one grid, each tile once),
+     *  on the thread that called build.
      *  Returns what the sink returned, or its own failure (NOT_FOUND: no walkable surface;
      *  INVALID_ARGUMENT / PARSE_ERROR: bad settings, the field named through host->set_error). */
     nl_status (*build)(void* plugin_state, const nl_plugin_host* host, const nl_navmesh_build_def* def,

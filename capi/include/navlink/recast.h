@@ -5,8 +5,9 @@
  * `reserved`), "partition" also as "watershed", "monotone" or "layers", the filters as booleans.
  *
  * Recast's own limits, refused with INVALID_ARGUMENT naming the setting to change: agent height at
- * most 255 cell heights, radius at most 127 cell sizes, the level at most 65,535 cells per side and
- * 2^27 cells in all, and at most 8,191 cell heights tall.
+ * most 255 cell heights, radius at most 127 cell sizes, a solo mesh's level at most 65,535 cells per
+ * side, 2^27 cells in all and 2^24 walkable cells (a tiled build, tile_size > 0, has no limit on the
+ * level's width: each tile is a Recast build of its own), and at most 8,191 cell heights tall.
  */
 #ifndef NAVLINK_RECAST_H
 #define NAVLINK_RECAST_H
@@ -39,6 +40,17 @@ typedef struct nl_recast_settings {
     uint8_t filter_ledge_spans;               /**< 1 (default): no walkable spans at ledges. */
     uint8_t filter_walkable_low_height_spans; /**< 1 (default): no spans with less headroom than height. */
     uint8_t reserved;                         /**< Set to 0; ignored. */
+    uint32_t tile_size;               /**< Tile side in cells: 0 (default) builds one solo mesh; 16..4096
+                                           builds square tiles (Recast's tiled pipeline, as RecastDemo's
+                                           Sample_TileMesh) in parallel on the world's task system and
+                                           joins them into one navmesh (nl_navmesh_def.tile_width):
+                                           levels of any width, the same navmesh for any thread count.
+                                           Added in 0.3. */
+    uint32_t tile_border;             /**< Cells of level each tile is voxelised with beyond its sides, so
+                                           that erosion and regions see its neighbours: 0 (default) is
+                                           the agent's radius in cells + 3, as RecastDemo; otherwise
+                                           at least the radius in cells + 1 and at most tile_size.
+                                           Added in 0.3. */
 } nl_recast_settings;
 
 /** Recast's usual defaults. Thread-safe; never fails. */

@@ -147,7 +147,8 @@ TEST_CASE("a baked file says what it was made for: the body, the builder, the le
     CHECK(read.made_for.builder == "recast");
     // Built with no settings given, it records every setting it used.
     const nlohmann::json used = nlohmann::json::parse(read.made_for.builder_settings);
-    CHECK(used.size() == 13);
+    CHECK(used.size() == 15);
+    CHECK(used["tile_size"] == 0);
     CHECK(used["cell_size"] == 0.3);
     CHECK(used["partition"] == "watershed");
     CHECK(used["filter_ledge_spans"] == true);

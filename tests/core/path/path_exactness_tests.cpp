@@ -79,15 +79,6 @@ nl::PathResult plan(const nl::PathGraph& graph, nl::PathQuery query, const Vec3&
 }
 
 // The path's length seen from above (a link's chord counted as walked: for paths without links).
-double xz_length(const nl::PathResult& result) {
-    double length = 0.0;
-    for (size_t i = 1; i < result.points.size(); ++i) {
-        const Vec3 d = result.points[i].position - result.points[i - 1].position;
-        length += std::hypot(double(d.x()), double(d.z()));
-    }
-    return length;
-}
-
 std::string describe(const nl::PathResult& result) {
     std::string s =
         "outcome " + std::to_string(uint32_t(result.outcome)) + ", cost " + std::to_string(result.cost) + ":";
@@ -172,11 +163,11 @@ void compare(const Map& map, const nl::PathQuery& query, const std::vector<Vec3>
         tally.nodes_per_polygon =
             std::max(tally.nodes_per_polygon, double(exact.search_nodes) / std::max(1u, exact.nodes_visited));
         if (result.links_used > 0) ++tally.links;
-        const double found = by_cost ? double(result.cost) : xz_length(result);
+        const double found = by_cost ? double(result.cost) : nl::test::xz_length(result);
         CHECK(found >= *cheapest - 1e-4);
         tally.cheaper = std::max(tally.cheaper, *cheapest - found);
         if (result.links_used == 0)
-            tally.off_cost = std::max(tally.off_cost, std::fabs(double(result.cost) - xz_length(result)));
+            tally.off_cost = std::max(tally.off_cost, std::fabs(double(result.cost) - nl::test::xz_length(result)));
         const double excess = found / std::max(*cheapest, 1e-6) - 1.0;
         CHECK(excess <= 1e-3);
         tally.worst = std::max(tally.worst, excess);
@@ -436,7 +427,7 @@ TEST_CASE(
             const double walk = dearest_side_cost(rows, costs, plan(*graph, walker, start, goal));
             CHECK(result.cost <= walk * (1.0 + 1e-4) + 1e-4);
             worst = std::max(worst, result.cost / std::max(*shortest, 1e-6));
-            bent_by_costs += xz_length(result) > *shortest * (1.0 + 1e-3) ? 1 : 0;
+            bent_by_costs += nl::test::xz_length(result) > *shortest * (1.0 + 1e-3) ? 1 : 0;
         }
     }
     MESSAGE(pairs, " pairs; ", bent_by_costs, " paths longer than the shortest walk to pay less; cost at most ", worst,
@@ -533,7 +524,7 @@ TEST_CASE("a link is taken when it is cheaper than walking round, not when its c
             // The jump would cost 1 + 20.5 + 1.
             CHECK(result.links_used == 0);
             CHECK(result.cost == doctest::Approx(round).epsilon(1e-5));
-            CHECK(xz_length(result) == doctest::Approx(round).epsilon(1e-5));
+            CHECK(nl::test::xz_length(result) == doctest::Approx(round).epsilon(1e-5));
             CHECK(*reference.length(start, goal) == doctest::Approx(round).epsilon(1e-6));
         }
     }
@@ -548,7 +539,7 @@ TEST_CASE("a wider body goes round a passage closed to it") {
     // A thin body goes straight through the narrow gap.
     const nl::PathResult thin = plan(*graph, body(0.0f), start, goal);
     REQUIRE(thin.outcome == nl::PathOutcome::Complete);
-    CHECK(xz_length(thin) == doctest::Approx(4.0).epsilon(1e-6));
+    CHECK(nl::test::xz_length(thin) == doctest::Approx(4.0).epsilon(1e-6));
     // A body 0.55 m wider closes it (1 m < 2 x 0.55 m) and goes round the wall's end at column 4:
     // the portal into (5, 1) at x = 5 opens from z = 1 to 1.45 (0.55 m from the outline vertex
     // (5, 2)), the one into (5, 2) at z = 2 from x = 5.55; so it bends at (5, 1.45), (5.55, 2),
@@ -559,7 +550,7 @@ TEST_CASE("a wider body goes round a passage closed to it") {
     const std::string searched = describe(result);
     INFO(searched);
     REQUIRE(result.outcome == nl::PathOutcome::Complete);
-    CHECK(xz_length(result) == doctest::Approx(expected).epsilon(1e-5));
+    CHECK(nl::test::xz_length(result) == doctest::Approx(expected).epsilon(1e-5));
     std::vector<Vec3> bends;
     CHECK(*nl::test::ShortestPathReference(*graph, wide).length(start, goal, &bends) ==
           doctest::Approx(expected).epsilon(1e-6));

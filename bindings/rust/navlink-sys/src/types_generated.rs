@@ -353,6 +353,16 @@ pub struct nl_navmesh_def {
     /// above is in that mesh's own space, and the navmesh follows the mesh: nl_mesh_set_transform moves it (no
     /// rebuild). Added in 0.3.
     pub carrier: nl_mesh_id,
+    /// Metres; 0 (default): not a tile.
+    pub tile_width: f32,
+    /// x of tile (0, 0)'s lower corner.
+    pub tile_origin_x: f32,
+    /// z of tile (0, 0)'s lower corner.
+    pub tile_origin_z: f32,
+    /// The tile's column.
+    pub tile_x: i32,
+    /// The tile's row.
+    pub tile_z: i32,
 }
 
 /// Sizes of a navmesh and what was repaired when it was added.
@@ -396,6 +406,12 @@ pub struct nl_navmesh_info {
     pub t_junction_corner_count: u32,
     /// Such edges left as walls: their polygon would have had more than NL_MAX_POLYGON_VERTICES corners. Added in 0.3.
     pub unjoined_t_junction_count: u32,
+    /// Tiles it was joined from (nl_navmesh_def.tile_width); 0 for a solo navmesh. Added in 0.3.
+    pub tile_count: u32,
+    /// Their side, metres; 0 for a solo navmesh. Added in 0.3.
+    pub tile_width: f32,
+    /// x and z of tile (0, 0)'s lower corner. Added in 0.3.
+    pub tile_origin: [f32; 2],
 }
 
 /// The header's inline initialiser (NL_DEFINE_OUTPUT_INIT; the library does not export it): a
@@ -1395,7 +1411,19 @@ pub struct nl_recast_settings {
     pub filter_walkable_low_height_spans: u8,
     /// Set to 0; ignored.
     pub reserved: u8,
+    /// Tile side in cells: 0 (default) builds one solo mesh; 16..4096 builds square tiles (Recast's tiled pipeline, as
+    /// RecastDemo's Sample_TileMesh) in parallel on the world's task system and joins them into one navmesh
+    /// (nl_navmesh_def.tile_width): levels of any width, the same navmesh for any thread count. Added in 0.3.
+    pub tile_size: u32,
+    /// Cells of level each tile is voxelised with beyond its sides, so that erosion and regions see its neighbours: 0
+    /// (default) is the agent's radius in cells + 3, as RecastDemo; otherwise at least the radius in cells + 1 and at
+    /// most tile_size. Added in 0.3.
+    pub tile_border: u32,
 }
+
+/// One task of nl_plugin_host.run_tasks: the work numbered `index`, with the user pointer given. (`nl_plugin_task_fn*`;
+/// `None` is NULL.)
+pub type nl_plugin_task_fn = Option<unsafe extern "C" fn(user: *mut c_void, index: u32)>;
 
 /// Functions the host offers a plugin. `context` is passed back as the first argument of each. Valid for as long as the
 /// plugin is loaded.
@@ -1502,6 +1530,18 @@ pub struct nl_plugin_host {
         fraction: f32,
         stage: *const c_char,
     ) -> nl_status>,
+    /// For a navmesh builder: calls task(user, i) once for every i in 0..count-1 on the world's task system (the host's
+    /// own scheduler when it gave one), several at once on as many threads as it has, and returns when all have
+    /// returned. A task must not call this table's functions, throw, or wait for another task; it reports its own
+    /// failure through `user`. Call it from build, on the thread that called build. Returns SUCCESS, or a failure with
+    /// INVALID_ARGUMENT (task NULL; called outside a build of this plugin on this thread). Present when `size` covers
+    /// it (added in 0.3); without it, run the tasks one after another.
+    pub run_tasks: Option<unsafe extern "C" fn(
+        context: *mut c_void,
+        count: u32,
+        task: nl_plugin_task_fn,
+        user: *mut c_void,
+    ) -> nl_status>,
 }
 
 impl Default for nl_plugin_host {
@@ -1523,9 +1563,10 @@ pub type nl_navmesh_sink_fn = Option<unsafe extern "C" fn(
 #[derive(Clone, Copy, Debug, Default)]
 pub struct nl_navmesh_builder {
     /// Builds a navmesh for def->agent from the host's level triangles, with the builder's settings (def->settings
-    /// and/or def->settings_json), and hands it to `sink` exactly once on success. Returns what the sink returned, or
-    /// its own failure (NOT_FOUND: no walkable surface; INVALID_ARGUMENT / PARSE_ERROR: bad settings, the field named
-    /// through host->set_error).
+    /// and/or def->settings_json), and hands it to `sink` exactly once on success; or, a tiled navmesh, each tile that
+    /// has polygons once (tile_width > 0, one grid, each tile once), on the thread that called build. Returns what the
+    /// sink returned, or its own failure (NOT_FOUND: no walkable surface; INVALID_ARGUMENT / PARSE_ERROR: bad settings,
+    /// the field named through host->set_error).
     pub build: Option<unsafe extern "C" fn(
         plugin_state: *mut c_void,
         host: *const nl_plugin_host,

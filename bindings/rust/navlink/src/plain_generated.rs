@@ -148,6 +148,12 @@ plain_struct! {
         /// Such edges left as walls: their polygon would have had more than NL_MAX_POLYGON_VERTICES corners. Added in
         /// 0.3.
         unjoined_t_junction_count: u32,
+        /// Tiles it was joined from (nl_navmesh_def.tile_width); 0 for a solo navmesh. Added in 0.3.
+        tile_count: u32,
+        /// Their side, metres; 0 for a solo navmesh. Added in 0.3.
+        tile_width: f32,
+        /// x and z of tile (0, 0)'s lower corner. Added in 0.3.
+        tile_origin: [f32; 2],
     }
 }
 
@@ -691,5 +697,13 @@ plain_struct! {
         filter_ledge_spans: bool,
         /// 1 (default): no spans with less headroom than height.
         filter_walkable_low_height_spans: bool,
+        /// Tile side in cells: 0 (default) builds one solo mesh; 16..4096 builds square tiles (Recast's tiled pipeline,
+        /// as RecastDemo's Sample_TileMesh) in parallel on the world's task system and joins them into one navmesh
+        /// (nl_navmesh_def.tile_width): levels of any width, the same navmesh for any thread count. Added in 0.3.
+        tile_size: u32,
+        /// Cells of level each tile is voxelised with beyond its sides, so that erosion and regions see its neighbours:
+        /// 0 (default) is the agent's radius in cells + 3, as RecastDemo; otherwise at least the radius in cells + 1
+        /// and at most tile_size. Added in 0.3.
+        tile_border: u32,
     }
 }

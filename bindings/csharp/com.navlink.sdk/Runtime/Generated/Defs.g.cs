@@ -150,6 +150,16 @@ namespace NavLink
         /// coordinate above is in that mesh's own space, and the navmesh follows the mesh: nl_mesh_set_transform moves
         /// it (no rebuild). Added in 0.3.</summary>
         public MeshId Carrier;
+        /// <summary>Metres; 0 (default): not a tile.</summary>
+        public float TileWidth;
+        /// <summary>x of tile (0, 0)'s lower corner.</summary>
+        public float TileOriginX;
+        /// <summary>z of tile (0, 0)'s lower corner.</summary>
+        public float TileOriginZ;
+        /// <summary>The tile's column.</summary>
+        public int TileX;
+        /// <summary>The tile's row.</summary>
+        public int TileZ;
     }
 
     /// <summary>How to build a navmesh. Get one from nl_default_navmesh_build_def(). (nl_navmesh_build_def)</summary>
@@ -484,5 +494,14 @@ namespace NavLink
         public byte FilterWalkableLowHeightSpans;
         /// <summary>Set to 0; ignored.</summary>
         public byte Reserved;
+        /// <summary>Tile side in cells: 0 (default) builds one solo mesh; 16..4096 builds square tiles (Recast's tiled
+        /// pipeline, as RecastDemo's Sample_TileMesh) in parallel on the world's task system and joins them into one
+        /// navmesh (nl_navmesh_def.tile_width): levels of any width, the same navmesh for any thread count. Added in
+        /// 0.3.</summary>
+        public uint TileSize;
+        /// <summary>Cells of level each tile is voxelised with beyond its sides, so that erosion and regions see its
+        /// neighbours: 0 (default) is the agent's radius in cells + 3, as RecastDemo; otherwise at least the radius in
+        /// cells + 1 and at most tile_size. Added in 0.3.</summary>
+        public uint TileBorder;
     }
 }

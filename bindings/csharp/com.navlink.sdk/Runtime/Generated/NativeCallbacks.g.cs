@@ -69,6 +69,11 @@ namespace NavLink
         [UnmanagedFunctionPointer(CallingConvention.Cdecl)]
         public delegate void PathCallback(IntPtr user, PathTicket ticket, PathOutcome outcome);
 
+        /// <summary>One task of nl_plugin_host.run_tasks: the work numbered <c>index</c>, with the user pointer given.
+        /// (nl_plugin_task_fn)</summary>
+        [UnmanagedFunctionPointer(CallingConvention.Cdecl)]
+        public delegate void PluginTaskFn(IntPtr user, uint index);
+
         /// <summary>Logs through the world's log callback. (nl_plugin_host.log)</summary>
         [UnmanagedFunctionPointer(CallingConvention.Cdecl)]
         public delegate void HostLogFn(IntPtr context, LogLevel level, IntPtr message);
@@ -151,14 +156,26 @@ namespace NavLink
         [UnmanagedFunctionPointer(CallingConvention.Cdecl)]
         public delegate StatusCode HostReportBuildProgressFn(IntPtr context, float fraction, IntPtr stage);
 
+        /// <summary>For a navmesh builder: calls task(user, i) once for every i in 0..count-1 on the world's task
+        /// system (the host's own scheduler when it gave one), several at once on as many threads as it has, and
+        /// returns when all have returned. A task must not call this table's functions, throw, or wait for another
+        /// task; it reports its own failure through <c>user</c>. Call it from build, on the thread that called build.
+        /// Returns SUCCESS, or a failure with INVALID_ARGUMENT (task NULL; called outside a build of this plugin on
+        /// this thread). Present when <c>size</c> covers it (added in 0.3); without it, run the tasks one after
+        /// another. (nl_plugin_host.run_tasks)</summary>
+        [UnmanagedFunctionPointer(CallingConvention.Cdecl)]
+        public delegate StatusCode HostRunTasksFn(IntPtr context, uint count, IntPtr task, IntPtr user);
+
         /// <summary>Receives a built navmesh; the host copies it before returning. (nl_navmesh_sink_fn)</summary>
         [UnmanagedFunctionPointer(CallingConvention.Cdecl)]
         public delegate StatusCode NavmeshSinkFn(IntPtr sinkContext, IntPtr navmesh);
 
         /// <summary>Builds a navmesh for def-&gt;agent from the host's level triangles, with the builder's settings
-        /// (def-&gt;settings and/or def-&gt;settings_json), and hands it to <c>sink</c> exactly once on success.
-        /// Returns what the sink returned, or its own failure (NOT_FOUND: no walkable surface; INVALID_ARGUMENT /
-        /// PARSE_ERROR: bad settings, the field named through host-&gt;set_error). (nl_navmesh_builder.build)</summary>
+        /// (def-&gt;settings and/or def-&gt;settings_json), and hands it to <c>sink</c> exactly once on success; or, a
+        /// tiled navmesh, each tile that has polygons once (tile_width &gt; 0, one grid, each tile once), on the thread
+        /// that called build. Returns what the sink returned, or its own failure (NOT_FOUND: no walkable surface;
+        /// INVALID_ARGUMENT / PARSE_ERROR: bad settings, the field named through host-&gt;set_error).
+        /// (nl_navmesh_builder.build)</summary>
         [UnmanagedFunctionPointer(CallingConvention.Cdecl)]
         public delegate StatusCode NavmeshBuildFn(IntPtr pluginState, IntPtr host, IntPtr def, IntPtr sink,
                                                   IntPtr sinkContext);

@@ -61,7 +61,7 @@ namespace NavLink
 
     /// <summary>Sizes of a navmesh and what was repaired when it was added. (nl_navmesh_info)</summary>
     [StructLayout(LayoutKind.Sequential)]
-    public partial struct NavmeshInfo
+    public unsafe partial struct NavmeshInfo
     {
         /// <summary>Set by the caller to sizeof(nl_navmesh_info).</summary>
         public uint Size;
@@ -103,6 +103,12 @@ namespace NavLink
         /// <summary>Such edges left as walls: their polygon would have had more than NL_MAX_POLYGON_VERTICES corners.
         /// Added in 0.3.</summary>
         public uint UnjoinedTJunctionCount;
+        /// <summary>Tiles it was joined from (nl_navmesh_def.tile_width); 0 for a solo navmesh. Added in 0.3.</summary>
+        public uint TileCount;
+        /// <summary>Their side, metres; 0 for a solo navmesh. Added in 0.3.</summary>
+        public float TileWidth;
+        /// <summary>x and z of tile (0, 0)'s lower corner. Added in 0.3.</summary>
+        public fixed float TileOrigin[2];
     }
 
     /// <summary>One polygon: corners counter-clockwise seen from above, and the neighbour across each edge. May grow:

@@ -73,6 +73,14 @@ namespace NavLink
         /// (the Recast builder: between Recast's steps and every 64k triangles rasterised). Present when <c>size</c>
         /// covers it (added in 0.3). (NativeCallbacks.HostReportBuildProgressFn)</summary>
         public IntPtr ReportBuildProgress;
+        /// <summary>For a navmesh builder: calls task(user, i) once for every i in 0..count-1 on the world's task
+        /// system (the host's own scheduler when it gave one), several at once on as many threads as it has, and
+        /// returns when all have returned. A task must not call this table's functions, throw, or wait for another
+        /// task; it reports its own failure through <c>user</c>. Call it from build, on the thread that called build.
+        /// Returns SUCCESS, or a failure with INVALID_ARGUMENT (task NULL; called outside a build of this plugin on
+        /// this thread). Present when <c>size</c> covers it (added in 0.3); without it, run the tasks one after
+        /// another. (NativeCallbacks.HostRunTasksFn)</summary>
+        public IntPtr RunTasks;
     }
 
     /// <summary>What a navmesh-builder plugin provides. (nl_navmesh_builder)</summary>
@@ -80,9 +88,10 @@ namespace NavLink
     public partial struct NavmeshBuilder
     {
         /// <summary>Builds a navmesh for def-&gt;agent from the host's level triangles, with the builder's settings
-        /// (def-&gt;settings and/or def-&gt;settings_json), and hands it to <c>sink</c> exactly once on success.
-        /// Returns what the sink returned, or its own failure (NOT_FOUND: no walkable surface; INVALID_ARGUMENT /
-        /// PARSE_ERROR: bad settings, the field named through host-&gt;set_error).
+        /// (def-&gt;settings and/or def-&gt;settings_json), and hands it to <c>sink</c> exactly once on success; or, a
+        /// tiled navmesh, each tile that has polygons once (tile_width &gt; 0, one grid, each tile once), on the thread
+        /// that called build. Returns what the sink returned, or its own failure (NOT_FOUND: no walkable surface;
+        /// INVALID_ARGUMENT / PARSE_ERROR: bad settings, the field named through host-&gt;set_error).
         /// (NativeCallbacks.NavmeshBuildFn)</summary>
         public IntPtr Build;
     }

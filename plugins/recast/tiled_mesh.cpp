@@ -1,0 +1,236 @@
+#include "tiled_mesh.h"
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <new>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "build_failure.h"
+#include "host_table.h"
+
+namespace nl::recast {
+namespace {
+
+// Tiles built between two progress reports: a cancel waits for at most this many.
+constexpr uint32_t kTilesPerGroup = 32;
+
+struct TileGrid {
+    float bmin[3];
+    float bmax[3];
+    int tile_size;  // cells
+    int border;     // cells
+    float cs;
+    int tiles_x;
+    int tiles_z;
+
+    double tile_width() const { return double(tile_size) * cs; }
+    uint32_t tile_count() const { return uint32_t(tiles_x) * uint32_t(tiles_z); }
+};
+
+// Recast's config for tile (tx, tz): the tile and its border, tile_size + 2 border cells a side.
+rcConfig tile_config(const TileGrid& grid, const nl_recast_settings& s, const nl_agent_type& agent, int tx, int tz) {
+    const double pad = double(grid.border) * grid.cs;
+    const float lo[3] = {float(grid.bmin[0] + tx * grid.tile_width() - pad), grid.bmin[1],
+                         float(grid.bmin[2] + tz * grid.tile_width() - pad)};
+    const float hi[3] = {float(grid.bmin[0] + (tx + 1) * grid.tile_width() + pad), grid.bmax[1],
+                         float(grid.bmin[2] + (tz + 1) * grid.tile_width() + pad)};
+    rcConfig cfg = make_config(s, agent, lo, hi);
+    cfg.tileSize = grid.tile_size;
+    cfg.borderSize = grid.border;
+    cfg.width = grid.tile_size + 2 * grid.border;
+    cfg.height = grid.tile_size + 2 * grid.border;
+    return cfg;
+}
+
+// Each tile's triangles (those whose box, seen from above, reaches into the tile or its border), as
+// offsets into one array: tile t's are triangles[first[t] .. first[t + 1]).
+struct TileTriangles {
+    std::vector<uint32_t> first;
+    std::vector<int> triangles;
+};
+
+TileTriangles triangles_by_tile(const LevelTriangles& level, const TileGrid& grid) {
+    const double width = grid.tile_width();
+    const double pad = double(grid.border) * grid.cs;
+    auto range = [&](float lo, float hi, float origin, int tiles, int& a, int& b) {
+        a = std::clamp(int(std::floor((double(lo) - origin - pad) / width)), 0, tiles - 1);
+        b = std::clamp(int(std::floor((double(hi) - origin + pad) / width)), 0, tiles - 1);
+    };
+    TileTriangles out;
+    out.first.assign(size_t(grid.tile_count()) + 1, 0);
+    for (int pass = 0; pass < 2; ++pass) {
+        std::vector<uint32_t> next;
+        if (pass == 1) {
+            for (size_t t = 1; t < out.first.size(); ++t) out.first[t] += out.first[t - 1];
+            out.triangles.resize(out.first.back());
+            next.assign(out.first.begin(), out.first.end() - 1);
+        }
+        for (int t = 0; t < level.triangle_count(); ++t) {
+            float lo_x = INFINITY, hi_x = -INFINITY, lo_z = INFINITY, hi_z = -INFINITY;
+            for (int k = 0; k < 3; ++k) {
+                const float* v = &level.vertices[3 * size_t(level.indices[3 * size_t(t) + k])];
+                lo_x = std::min(lo_x, v[0]);
+                hi_x = std::max(hi_x, v[0]);
+                lo_z = std::min(lo_z, v[2]);
+                hi_z = std::max(hi_z, v[2]);
+            }
+            int x0, x1, z0, z1;
+            range(lo_x, hi_x, grid.bmin[0], grid.tiles_x, x0, x1);
+            range(lo_z, hi_z, grid.bmin[2], grid.tiles_z, z0, z1);
+            for (int z = z0; z <= z1; ++z)
+                for (int x = x0; x <= x1; ++x) {
+                    const size_t tile = size_t(z) * grid.tiles_x + x;
+                    if (pass == 0) {
+                        ++out.first[tile + 1];
+                    } else {
+                        out.triangles[next[tile]++] = t;
+                    }
+                }
+        }
+    }
+    return out;
+}
+
+// What building one tile came to: its polygons, none, or the failure to report.
+struct TileResult {
+    std::optional<NavMeshExport> tile;
+    nl_status failure = NL_STATUS_SUCCESS;
+    std::string message;
+    std::unique_ptr<HostLogContext> log;
+};
+
+struct TileJob {
+    const nl_plugin_host* host;
+    const LevelTriangles* level;
+    const TileGrid* grid;
+    const TileTriangles* by_tile;
+    const std::vector<unsigned char>* areas;
+    const nl_recast_settings* settings;
+    const nl_agent_type* agent;
+    uint32_t first_tile;
+    std::vector<TileResult>* results;
+
+    void build(uint32_t index) const noexcept {
+        TileResult& result = (*results)[index];
+        const uint32_t tile = first_tile + index;
+        const int tx = int(tile % uint32_t(grid->tiles_x)), tz = int(tile / uint32_t(grid->tiles_x));
+        try {
+            result.log = std::make_unique<HostLogContext>(*host, HostLogContext::Forwarding::Kept);
+            const uint32_t first = by_tile->first[tile], count = by_tile->first[tile + 1] - first;
+            if (count == 0) return;
+            std::vector<int> tris;
+            std::vector<unsigned char> tile_areas;
+            tris.reserve(size_t(count) * 3);
+            tile_areas.reserve(count);
+            bool walkable = false;
+            for (uint32_t i = first; i < first + count; ++i) {
+                const int t = by_tile->triangles[i];
+                for (int k = 0; k < 3; ++k) tris.push_back(int(level->indices[3 * size_t(t) + k]));
+                tile_areas.push_back((*areas)[size_t(t)]);
+                walkable = walkable || tile_areas.back() != RC_NULL_AREA;
+            }
+            if (!walkable) return;
+            const rcConfig cfg = tile_config(*grid, *settings, *agent, tx, tz);
+            const RecastPolygons polygons = build_polygons(*result.log, *level, tris.data(), tile_areas.data(),
+                                                           int(count), cfg, *settings, *agent, nullptr);
+            TilePlace place;
+            place.origin_x = grid->bmin[0];
+            place.origin_z = grid->bmin[2];
+            place.first_cell_x = int64_t(tx) * grid->tile_size;
+            place.first_cell_z = int64_t(tz) * grid->tile_size;
+            place.tile_width = float(grid->tile_width());
+            place.tile_x = tx;
+            place.tile_z = tz;
+            result.tile.emplace(*polygons.polygons, *polygons.detail, &place);
+        } catch (const BuildFailure& e) {
+            // A tile where nothing is walkable is an empty tile, not a failure.
+            if ((e.status() & NL_STATUS_NOT_FOUND) == 0) {
+                result.failure = e.status();
+                result.message = e.what();
+            }
+        } catch (const std::bad_alloc&) {
+            result.failure = NL_STATUS_FAILURE | NL_STATUS_OUT_OF_MEMORY;
+        } catch (...) {
+            result.failure = NL_STATUS_FAILURE | NL_STATUS_INTERNAL_ERROR;
+            result.message = "unknown exception";
+        }
+    }
+
+    static void run(void* job, uint32_t index) { static_cast<const TileJob*>(job)->build(index); }
+};
+
+TileGrid plan_grid(const LevelTriangles& level, const nl_recast_settings& s, const nl_agent_type& agent) {
+    TileGrid grid{};
+    rcCalcBounds(level.vertices.data(), level.vertex_count(), grid.bmin, grid.bmax);
+    grid.cs = s.cell_size;
+    grid.tile_size = int(s.tile_size);
+    const int radius_cells = int(std::ceil(double(agent.radius) / s.cell_size));
+    grid.border = s.tile_border ? int(s.tile_border) : radius_cells + 3;
+    if (s.tile_border && (grid.border < radius_cells + 1 || grid.border > grid.tile_size))
+        fail(NL_STATUS_INVALID_ARGUMENT, "tile_border of ", s.tile_border,
+             " cells must be at least the agent's radius (", radius_cells, " cells) + 1 and at most tile_size (",
+             s.tile_size, "); 0 gives radius + 3");
+    const double width = grid.tile_width();
+    const double tiles_x = std::max(1.0, std::ceil((double(grid.bmax[0]) - grid.bmin[0]) / width));
+    const double tiles_z = std::max(1.0, std::ceil((double(grid.bmax[2]) - grid.bmin[2]) / width));
+    if (tiles_x * tiles_z > kMaxTiles)
+        fail(NL_STATUS_INVALID_ARGUMENT, "tile_size ", s.tile_size, " cells of ", s.cell_size, " m makes ", tiles_x,
+             " x ", tiles_z, " tiles; one build makes at most ", kMaxTiles, " (raise tile_size)");
+    grid.tiles_x = int(tiles_x);
+    grid.tiles_z = int(tiles_z);
+    return grid;
+}
+
+}  // namespace
+
+void build_tiled_mesh(HostLogContext& context, const nl_plugin_host& host, const LevelTriangles& level,
+                      const nl_recast_settings& s, const nl_agent_type& agent, const BuildProgress& progress,
+                      const std::function<void(const NavMeshExport& tile)>& hand) {
+    if (level.triangle_count() == 0) no_walkable_surface(agent, "the level has no triangles");
+    const TileGrid grid = plan_grid(level, s, agent);
+    // The slope and the grid's limits are checked once, on the first tile's config.
+    const rcConfig first = tile_config(grid, s, agent, 0, 0);
+    progress.report(0.03f, "marking walkable triangles");
+    const std::vector<unsigned char> areas = walkable_areas(context, level, first, agent);
+    progress.report(0.05f, "sorting the level's triangles into tiles");
+    const TileTriangles by_tile = triangles_by_tile(level, grid);
+
+    const uint32_t tiles = grid.tile_count();
+    uint32_t handed = 0;
+    std::vector<TileResult> results;
+    for (uint32_t group = 0; group < tiles; group += kTilesPerGroup) {
+        progress.report(0.05f + 0.9f * float(group) / float(tiles), "building tiles");
+        const uint32_t count = std::min(kTilesPerGroup, tiles - group);
+        results.clear();
+        results.resize(count);
+        TileJob job{&host, &level, &grid, &by_tile, &areas, &s, &agent, group, &results};
+        if (NL_RECAST_HOST_OFFERS(host, run_tasks)) {
+            const nl_status ran = host.run_tasks(host.context, count, &TileJob::run, &job);
+            if (NL_FAILED(ran)) fail(ran & ~NL_STATUS_FAILURE, "the host's run_tasks failed");
+        } else {
+            for (uint32_t i = 0; i < count; ++i) job.build(i);
+        }
+        // In row order, whichever thread built them.
+        for (uint32_t i = 0; i < count; ++i) {
+            TileResult& result = results[i];
+            if (result.log) result.log->forward_kept();
+            if (NL_FAILED(result.failure)) {
+                const uint32_t tile = group + i;
+                fail(result.failure & ~NL_STATUS_FAILURE, "tile (", tile % uint32_t(grid.tiles_x), ", ",
+                     tile / uint32_t(grid.tiles_x), "): ", result.message.empty() ? "out of memory" : result.message);
+            }
+            if (result.tile) {
+                hand(*result.tile);
+                ++handed;
+            }
+        }
+    }
+    if (handed == 0)
+        no_walkable_surface(agent, "none of the " + std::to_string(tiles) +
+                                       " tiles holds a walkable region after erosion and region_min_size");
+}
+
+}  // namespace nl::recast

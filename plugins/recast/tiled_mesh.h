@@ -1,0 +1,25 @@
+// The level in square tiles (RecastDemo's Sample_TileMesh): each tile one Recast build over the
+// triangles within it and a border, built in parallel on the host's task system (run_tasks) and handed
+// over in row order, so that the navmesh the host joins is the same for any thread count.
+#pragma once
+
+#include <functional>
+
+#include "navmesh_export.h"
+#include "recast_pipeline.h"
+
+namespace nl::recast {
+
+// Builds every tile of the level's grid (settings.tile_size cells a side, from the level's lower
+// corner) and calls `hand` with each that has polygons, in row order (z, then x), on this thread.
+// Throws BuildFailure: NOT_FOUND when no tile has a walkable surface (or walkable_areas finds none),
+// INVALID_ARGUMENT for a tile_border out of range or a grid of more than kMaxTiles tiles, CANCELLED from
+// `progress` (asked between groups of tiles), and a tile's OUT_OF_MEMORY or INTERNAL_ERROR naming it.
+void build_tiled_mesh(HostLogContext& context, const nl_plugin_host& host, const LevelTriangles& level,
+                      const nl_recast_settings& settings, const nl_agent_type& agent, const BuildProgress& progress,
+                      const std::function<void(const NavMeshExport& tile)>& hand);
+
+// The most tiles one build makes.
+constexpr double kMaxTiles = double(1 << 22);
+
+}  // namespace nl::recast
