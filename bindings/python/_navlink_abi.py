@@ -96,6 +96,7 @@ class AgentReason(enum.IntEnum):
     NAVMESH_REMOVED = 6
     CAPABILITIES_CHANGED = 7
     CROWD = 8
+    TILE_UNLOADED = 9
 
 
 class TrajectoryKind(enum.IntEnum):
@@ -207,6 +208,7 @@ AGENT_REASON_NO_PATH = AgentReason.NO_PATH
 AGENT_REASON_NAVMESH_REMOVED = AgentReason.NAVMESH_REMOVED
 AGENT_REASON_CAPABILITIES_CHANGED = AgentReason.CAPABILITIES_CHANGED
 AGENT_REASON_CROWD = AgentReason.CROWD
+AGENT_REASON_TILE_UNLOADED = AgentReason.TILE_UNLOADED
 TRAJECTORY_NONE = TrajectoryKind.NONE
 TRAJECTORY_ARC = TrajectoryKind.ARC
 TRAJECTORY_FALL = TrajectoryKind.FALL
@@ -309,6 +311,10 @@ class NavPoint(_Struct):
 
 class NavmeshBuildDef(_Struct):
     """How to build a navmesh. Get one from nl_default_navmesh_build_def(). (nl_navmesh_build_def)"""
+
+
+class TileCoord(_Struct):
+    """A tile's place in its grid: tile (x, z) spans x in [origin_x + x * tile_width, + tile_width] and z alike (nl_navmesh_info.tile_origin, tile_width). (nl_tile_coord)"""
 
 
 class LinkRequirements(_Struct):
@@ -478,6 +484,7 @@ ProgressFn = CFUNCTYPE(c_int32, c_void_p, c_float, c_char_p)
 NavmeshBuildDef._fields_ = [("size", c_uint32), ("builder", c_char_p), ("agent_type", AgentType),
                              ("settings", c_void_p), ("settings_json", c_char_p), ("settings_json_length", c_size_t),
                              ("carrier", MeshId), ("progress", ProgressFn), ("progress_user", c_void_p)]
+TileCoord._fields_ = [("x", c_int32), ("z", c_int32)]
 LinkRequirements._fields_ = [("gap", c_float), ("rise", c_float), ("drop", c_float), ("clearance_width", c_float),
                               ("abilities", c_uint64), ("length", c_float), ("reserved", c_uint32)]
 Link._fields_ = [("size", c_uint32), ("kind", c_uint32), ("id", LinkId), ("navmesh", NavmeshId),
@@ -638,8 +645,9 @@ C_STRUCTS = {
     "nl_mesh_def": MeshDef, "nl_mesh_info": MeshInfo, "nl_ray": Ray, "nl_ray_hit": RayHit, "nl_segment": Segment,
     "nl_agent_type": AgentType, "nl_navmesh_def": NavmeshDef, "nl_navmesh_info": NavmeshInfo,
     "nl_nav_polygon": NavPolygon, "nl_boundary_edge": BoundaryEdge, "nl_nav_point": NavPoint,
-    "nl_navmesh_build_def": NavmeshBuildDef, "nl_link_requirements": LinkRequirements, "nl_link": Link,
-    "nl_link_def": LinkDef, "nl_link_settings": LinkSettings, "nl_link_generation_report": LinkGenerationReport,
+    "nl_navmesh_build_def": NavmeshBuildDef, "nl_tile_coord": TileCoord,
+    "nl_link_requirements": LinkRequirements, "nl_link": Link, "nl_link_def": LinkDef,
+    "nl_link_settings": LinkSettings, "nl_link_generation_report": LinkGenerationReport,
     "nl_navmesh_load_def": NavmeshLoadDef, "nl_navmesh_file_info": NavmeshFileInfo,
     "nl_agent_capabilities": AgentCapabilities, "nl_path_request_def": PathRequestDef,
     "nl_path_point": PathPoint, "nl_path_result": PathResultInfo, "nl_path_shortfall": PathShortfallInfo,
@@ -756,6 +764,9 @@ PROTOTYPES: Dict[str, Tuple[Any, List[Any]]] = {
     "nl_world_get_navmeshes": (c_uint32, [c_void_p, POINTER(NavmeshId), c_uint32, POINTER(c_uint32)]),
     "nl_default_navmesh_build_def": (NavmeshBuildDef, []),
     "nl_navmesh_build": (c_uint32, [c_void_p, POINTER(NavmeshBuildDef), POINTER(NavmeshId)]),
+    "nl_navmesh_add_tile": (c_uint32, [c_void_p, NavmeshId, POINTER(NavmeshDef)]),
+    "nl_navmesh_remove_tile": (c_uint32, [c_void_p, NavmeshId, TileCoord]),
+    "nl_navmesh_get_tiles": (c_uint32, [c_void_p, NavmeshId, POINTER(TileCoord), c_uint32, POINTER(c_uint32)]),
     "nl_default_link_def": (LinkDef, []),
     "nl_link_add": (c_uint32, [c_void_p, NavmeshId, POINTER(LinkDef), POINTER(LinkId)]),
     "nl_link_update": (c_uint32, [c_void_p, LinkId, POINTER(LinkDef)]),

@@ -22,7 +22,9 @@ namespace {
 static_assert(uint32_t(nl::AgentState::Failed) == NL_AGENT_FAILED &&
                   uint32_t(nl::AgentState::Waiting) == NL_AGENT_WAITING,
               "core and header disagree on agent states");
-static_assert(uint32_t(nl::AgentReason::Crowd) == NL_AGENT_REASON_CROWD, "core and header disagree on agent reasons");
+static_assert(uint32_t(nl::AgentReason::Crowd) == NL_AGENT_REASON_CROWD &&
+                  uint32_t(nl::AgentReason::TileUnloaded) == NL_AGENT_REASON_TILE_UNLOADED,
+              "core and header disagree on agent reasons");
 static_assert(uint32_t(nl::AgentEventKind::Waiting) == NL_AGENT_EVENT_WAITING, "core and header disagree on events");
 
 nl_trajectory_kind trajectory_kind(nl::MotionKind kind) {

@@ -1,5 +1,6 @@
 #include "plugin_adapter.h"
 
+#include <algorithm>
 #include <cstring>
 #include <exception>
 #include <filesystem>
@@ -100,7 +101,7 @@ void CPlugin::start(nl_plugin_entry_fn* entry, const std::string& origin) {
 struct BuildSink {
     int calls = 0;
     std::shared_ptr<const NavMesh> navmesh;
-    std::vector<NavMeshInput> tiles;
+    TileInputs tiles;
     std::exception_ptr error;
 
     static nl_status receive(void* context, const nl_navmesh_def* def) {
@@ -111,7 +112,7 @@ struct BuildSink {
             NavMeshInput input = naming_fields("def->", [&] { return navmesh_input_from_def(*def); });
             if (input.tiles.grid.tiled()) {
                 if (self.navmesh) fail(ErrorCode::InvalidArgument, "a tile was handed over after a solo navmesh");
-                self.tiles.push_back(std::move(input));
+                self.tiles.push_back(std::make_shared<const NavMeshInput>(std::move(input)));
                 return NL_STATUS_SUCCESS;
             }
             if (self.calls > 1) {
@@ -132,14 +133,11 @@ struct BuildSink {
         }
     }
 
-    // The tiles joined into one navmesh (tile_join.h).
+    // The tiles joined into one navmesh (tile_join.h); the tiles kept in row order.
     void join_tiles_handed() {
-        std::vector<const NavMeshInput*> given;
-        given.reserve(tiles.size());
-        for (const NavMeshInput& tile : tiles) given.push_back(&tile);
-        const NavMeshInput joined = join_tiles(given);
-        tiles.clear();
-        navmesh = build_navmesh(joined);
+        navmesh = build_navmesh(join_tiles(tiles));
+        std::sort(tiles.begin(), tiles.end(),
+                  [](const auto& a, const auto& b) { return a->tiles.tiles.front() < b->tiles.tiles.front(); });
     }
 };
 
@@ -201,7 +199,7 @@ BuiltNavMesh CPlugin::build(World&, const NavMeshBuildRequest& request) {
         }
     }
     const uint64_t built_from = running.handed ? level_hash(*running.handed) : 0;
-    return {std::move(sink.navmesh), std::move(running.settings_used), built_from};
+    return {std::move(sink.navmesh), std::move(running.settings_used), built_from, std::move(sink.tiles)};
 }
 
 // What a link-kind plugin hands back through the sink: each link read and given to `accept`, whose

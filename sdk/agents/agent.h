@@ -31,7 +31,8 @@ enum class AgentReason : uint32_t {
     NoPath = 5,          // the destination cannot be reached (it went as near as it could)
     NavMeshRemoved = 6,  // its navmesh was removed
     CapabilitiesChanged = 7,
-    Crowd = 8,  // other bodies are in its way: waiting for room, or given up (give_up_seconds)
+    Crowd = 8,         // other bodies are in its way: waiting for room, or given up (give_up_seconds)
+    TileUnloaded = 9,  // the tile it stands on was removed: it waits until it is back
 };
 
 enum class AgentEventKind : uint32_t {
@@ -41,7 +42,8 @@ enum class AgentEventKind : uint32_t {
     Arrived = 4,
     Failed = 5,
     Replanned = 6,
-    Waiting = 7,  // it stopped for room (reason Crowd): stuck among other bodies, or giving way
+    Waiting = 7,  // it stopped for room (reason Crowd: stuck among other bodies, or giving way), or for
+                  // its tile (reason TileUnloaded)
 };
 
 struct AgentDef {

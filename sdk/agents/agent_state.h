@@ -51,6 +51,11 @@ struct Agent {
     Handle landing_navmesh;
     Handle link;
     uint32_t landing_polygon = 0;
+    // The navmesh `polygon` and `landing_polygon` index: its navmesh's tiles may change under its
+    // handle (World::add_tile), and the indices with them.
+    std::shared_ptr<const NavMesh> stands_on;
+    // It stood on a tile that was removed: it waits (TileUnloaded) until a tile holds it again.
+    bool awaiting_tile = false;
     bool at_takeoff = false;
     bool off_path = false;  // pushed too far off its path in the last move
     // Giving way (docs/agents.md, "Passing in narrow places"): how long it has walked without

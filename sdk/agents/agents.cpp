@@ -138,6 +138,7 @@ Handle Agents::add(const NavMeshRegistry& navmeshes, const AgentDef& def) {
     body.frame = navmeshes.frame(def.navmesh);
     body.polygon =
         locate(*navmesh, pose_of(body.frame), def.position, def.capabilities.radius, "position", body.position);
+    body.stands_on = navmesh;
     std::unique_lock lock(mutex_);
     // Nothing may throw once the id is taken. Grown geometrically: adding n agents one by one
     // copies O(n) bodies in all, not O(n^2).
@@ -238,6 +239,8 @@ void Agents::teleport(const NavMeshRegistry& navmeshes, Handle agent, const Vec3
     stop_giving_way(a);  // sent, stopped or put elsewhere: whatever held it up is behind it
     a.put_on_surface(on_navmesh);
     a.polygon = polygon;
+    a.stands_on = mesh;
+    a.awaiting_tile = false;
     a.velocity = Vec3::Zero();
     a.at_takeoff = false;
     a.link = Handle{};

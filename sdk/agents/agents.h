@@ -107,6 +107,7 @@ private:
     // The phases of step() (agents_step.cpp), in order, and what they share.
     struct Step;
     void check_against_world(Step& s);
+    bool stand_on_navmesh_now(Agent& a, const PathGraph& now);
     void plan_asked_paths(Step& s);
     void move(Step& s);
     void separate(Step& s);

@@ -101,14 +101,19 @@ void Agents::check_against_world(Step& s) {
         a.step_events.reserve(8);  // a step emits a few per agent: the parallel move never allocates for them
         if (a.state == AgentState::Failed) {
             // One that failed for another reason says so too: its NO_PATH no longer says why it stands.
-            if (a.reason != AgentReason::NavMeshRemoved && !s.graph_of(a.def.navmesh))
-                a.fail(AgentReason::NavMeshRemoved);
+            const std::shared_ptr<const PathGraph> graph = s.graph_of(a.def.navmesh);
+            if (a.reason != AgentReason::NavMeshRemoved && !graph) a.fail(AgentReason::NavMeshRemoved);
+            if (graph && a.stands_on != graph->navmesh_ptr()) stand_on_navmesh_now(a, *graph);
             continue;
         }
         s.current[i] = s.graph_of(a.def.navmesh);
         if (!s.current[i]) {
             a.motion.reset();
             a.fail(AgentReason::NavMeshRemoved);
+            continue;
+        }
+        if (a.stands_on != s.current[i]->navmesh_ptr() && !stand_on_navmesh_now(a, *s.current[i])) {
+            s.current[i] = nullptr;  // on no tile: it stands where it is, outside every phase, till one holds it
             continue;
         }
         if (a.motion) continue;  // in the air: it lands first
@@ -146,13 +151,63 @@ void Agents::check_against_world(Step& s) {
     }
 }
 
+// Its navmesh changed under its handle (tiles added or removed): its polygons are found again on the
+// new one. One in the air lands on the nearest polygon to its landing point; one on the ground stands
+// where it is, unless no tile holds that place any more: then it waits there, out of the step, until one
+// does (false), and plans again when it does.
+bool Agents::stand_on_navmesh_now(Agent& a, const PathGraph& now) {
+    const NavMesh& navmesh = now.navmesh();
+    if (a.motion) {
+        const NavPoint landing = navmesh.find_nearest_anywhere(a.motion->to(), Vec3(0.5f, 1.0f, 0.5f));
+        a.landing_polygon = a.polygon = landing.polygon;
+        a.stands_on = now.navmesh_ptr();
+        return true;
+    }
+    NavPoint here;
+    if (navmesh.tiles().holds_point(a.position.x(), a.position.z()))
+        here = navmesh.find_nearest(a.position, Vec3(2.0f, 2.0f, 2.0f));
+    if (!here.found) {
+        if (a.state == AgentState::Failed) {
+            a.awaiting_tile = true;  // stands on nothing: no phase moves it
+            a.polygon = kNoPolygon;
+        } else if (!a.awaiting_tile) {
+            a.awaiting_tile = true;
+            a.path.clear();
+            a.graph.reset();
+            a.wants_path = false;
+            a.at_takeoff = false;
+            a.velocity = Vec3::Zero();
+            a.polygon = kNoPolygon;
+            a.state = AgentState::Waiting;
+            a.reason = AgentReason::TileUnloaded;
+            a.emit(AgentEventKind::Waiting, AgentReason::TileUnloaded);
+        }
+        return false;
+    }
+    a.put_on_surface(here.point);
+    a.polygon = here.polygon;
+    a.stands_on = now.navmesh_ptr();
+    if (a.awaiting_tile) {
+        a.awaiting_tile = false;
+        if (a.state == AgentState::Failed) {
+            // Still failed: a host's new destination or capabilities send it on.
+        } else if (a.has_destination) {
+            a.ask_path(AgentReason::WorldChanged, next_path_order_);
+            a.emit(AgentEventKind::Replanned, AgentReason::WorldChanged);
+        } else {
+            a.state = AgentState::Idle;
+        }
+    }
+    return true;
+}
+
 // 2. The paths asked for, at most max_paths_per_step, planned in parallel on the navmeshes as they are
 // now.
 void Agents::plan_asked_paths(Step& s) {
     std::vector<uint32_t> asking;
     for (uint32_t i = 0; i < agents_.size(); ++i) {
         const Agent& a = agents_[i];
-        if (a.wants_path && !a.motion && a.state != AgentState::Failed) asking.push_back(i);
+        if (a.wants_path && !a.motion && a.state != AgentState::Failed && !a.awaiting_tile) asking.push_back(i);
     }
     // Agents with no path to walk meanwhile (a new destination, a link gone at the take-off) first,
     // then the oldest request.
@@ -283,7 +338,7 @@ void Agents::separate(Step& s) {
     std::vector<std::vector<OverlapBody>> spaces(s.crowds.size());
     for (size_t i = 0; i < agents_.size(); ++i) {
         Agent& a = agents_[i];
-        if (a.motion || a.landing_navmesh != Handle{}) continue;
+        if (a.motion || a.landing_navmesh != Handle{} || a.awaiting_tile) continue;
         const std::shared_ptr<const PathGraph> graph = s.current[i] ? s.current[i] : s.graph_of(a.def.navmesh);
         if (!graph) continue;  // its navmesh was removed: it stands nowhere
         // One at a take-off holds its place (it takes off from there); a walker gives one share, a
@@ -467,6 +522,7 @@ void Agents::land_across(Agent& a, Handle navmesh, const std::shared_ptr<const P
     a.landing_offset = feet.y() - on.point.y();
     a.walked_since_landing = 0.0f;
     a.polygon = on.polygon;
+    a.stands_on = graph->navmesh_ptr();
     a.path.clear();
     a.graph.reset();
     a.next = 0;

@@ -195,4 +195,11 @@ NavMeshInput join_tiles(const std::vector<const NavMeshInput*>& given) {
     return out;
 }
 
+NavMeshInput join_tiles(const TileInputs& tiles) {
+    std::vector<const NavMeshInput*> given;
+    given.reserve(tiles.size());
+    for (const auto& tile : tiles) given.push_back(tile.get());
+    return join_tiles(given);
+}
+
 }  // namespace nl

@@ -5,6 +5,7 @@
 // rest as T-junctions (t_junctions.h), within the body's max_climb in height.
 #pragma once
 
+#include <memory>
 #include <vector>
 
 #include "navmesh/navmesh_builder.h"
@@ -19,5 +20,10 @@ namespace nl {
 // x and z (on the navmesh grid) within the agent's max_climb in height, at the height of the first
 // tile in row order.
 NavMeshInput join_tiles(const std::vector<const NavMeshInput*>& tiles);
+
+// The tiles a tiled navmesh is joined from, each as it was built or handed over (its place in
+// tiles.tiles[0]), in row order: what adding or removing one joins again.
+using TileInputs = std::vector<std::shared_ptr<const NavMeshInput>>;
+NavMeshInput join_tiles(const TileInputs& tiles);
 
 }  // namespace nl

@@ -2,6 +2,7 @@
 // (Recast's tiled pipeline) and joined to its neighbours along the lines between them.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <tuple>
@@ -27,6 +28,14 @@ struct TileGrid {
     // The lines between tiles: tile (x, z) spans [line_x(x), line_x(x + 1)] in x.
     double line_x(int32_t x) const { return double(origin_x) + double(x) * tile_width; }
     double line_z(int32_t z) const { return double(origin_z) + double(z) * tile_width; }
+    // The tile (x, z) lies in; on a line between two, the higher one. Saturates far off the grid.
+    TileCoord tile_at(float x, float z) const {
+        auto index = [&](double v, float origin) {
+            const double i = std::floor((v - origin) / tile_width);
+            return static_cast<int32_t>(std::clamp(i, -2147483648.0, 2147483647.0));
+        };
+        return TileCoord{index(x, origin_x), index(z, origin_z)};
+    }
     friend bool operator==(const TileGrid& a, const TileGrid& b) {
         return a.origin_x == b.origin_x && a.origin_z == b.origin_z && a.tile_width == b.tile_width;
     }
@@ -38,6 +47,11 @@ struct TileGrid {
 struct TileLayout {
     TileGrid grid;
     std::vector<TileCoord> tiles;
+
+    // Whether the tile at `coord` is one of them.
+    bool holds(const TileCoord& coord) const { return std::binary_search(tiles.begin(), tiles.end(), coord); }
+    // Whether the point (x, z) lies on a tile it holds; true for a solo navmesh (no grid).
+    bool holds_point(float x, float z) const { return !grid.tiled() || holds(grid.tile_at(x, z)); }
 };
 
 }  // namespace nl

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <shared_mutex>
 
+#include "links/link_placement.h"
+
 namespace nl {
 namespace {
 
@@ -45,10 +47,11 @@ std::shared_ptr<CarrierFrame> NavMeshRegistry::frame_of_mesh(Handle mesh) const 
 }
 
 Handle NavMeshRegistry::add(std::shared_ptr<const NavMesh> navmesh, Handle carrier, const Transform& to_world,
-                            NavMeshProvenance made_for) {
+                            NavMeshProvenance made_for, TileInputs tiles) {
     Entry e;
     e.navmesh = std::move(navmesh);
     e.made_for = std::move(made_for);
+    e.tiles = std::move(tiles);
     std::unique_lock lock(mutex_);
     if (carrier != Handle{}) {
         e.frame = frame_of_mesh(carrier);
@@ -96,6 +99,61 @@ void NavMeshRegistry::remove(Handle navmesh) {
     // allocate, the navmesh is gone all the same, and a link left behind never holds.
     navmeshes_.for_each(
         [&](Handle, Entry& other) { erase_links(other, [&](const Link& l) { return l.landing_navmesh == navmesh; }); });
+}
+
+TileInputs NavMeshRegistry::tile_inputs(Handle navmesh) const {
+    std::shared_lock lock(mutex_);
+    return entry(navmesh).tiles;
+}
+
+namespace {
+
+// A link end on `navmesh` placed again: parked (kNoPolygon) when its tile is not loaded or it is off
+// the navmesh, so that no path takes it.
+uint32_t placed_again(const NavMesh& navmesh, const Vec3& point, uint32_t was) {
+    if (!navmesh.tiles().holds_point(point.x(), point.z())) return kNoPolygon;
+    Link probe;
+    probe.start = probe.end = point;
+    probe.start_polygon = probe.end_polygon = was;
+    try {
+        place_saved_link(navmesh, probe);
+    } catch (const Error& e) {
+        if (e.code() != ErrorCode::InvalidArgument) throw;
+        return kNoPolygon;
+    }
+    return probe.start_polygon;
+}
+
+}  // namespace
+
+void NavMeshRegistry::replace_tiles(Handle navmesh, TileInputs tiles, std::shared_ptr<const NavMesh> joined) {
+    std::unique_lock lock(mutex_);
+    Entry& e = entry(navmesh);
+    // Placed first, stored after: a failure to allocate leaves the navmesh as it was.
+    std::vector<std::pair<Link*, std::pair<uint32_t, uint32_t>>> placed;
+    for (Handle id : e.link_ids) {
+        Link& l = links_.find(id)->link;
+        const uint32_t start = placed_again(*joined, l.start, l.start_polygon);
+        const uint32_t end = l.crosses() ? l.end_polygon : placed_again(*joined, l.end, l.end_polygon);
+        placed.push_back({&l, {start, end}});
+    }
+    navmeshes_.for_each([&](Handle, Entry& other) {
+        for (Handle id : other.link_ids) {
+            Link& l = links_.find(id)->link;
+            if (l.landing_navmesh != navmesh) continue;
+            placed.push_back({&l, {l.start_polygon, placed_again(*joined, l.end, l.end_polygon)}});
+            other.snapshot.reset();
+        }
+    });
+    for (auto& [link, ends] : placed) {
+        link->start_polygon = ends.first;
+        link->end_polygon = ends.second;
+    }
+    e.navmesh = std::move(joined);
+    e.tiles = std::move(tiles);
+    e.snapshot.reset();
+    e.path_graph.reset();
+    e.last = LastGeneration{};
 }
 
 bool NavMeshRegistry::contains(Handle navmesh) const {
@@ -306,6 +364,10 @@ HeldPtr<const PathGraph> NavMeshRegistry::path_graph(Handle navmesh) const {
         const Entry& e = entry(navmesh);
         snapshot = snapshot_of(e);
         if (e.path_graph && e.path_graph->links_ptr() == snapshot) return e.path_graph;
+        // Read again with the snapshot: tiles added or removed meanwhile publish another navmesh.
+        mesh = e.navmesh;
+        frame = e.frame;
+        index = e.path_graph ? e.path_graph->search_index_ptr() : nullptr;
     }
     // Built outside the lock: requests on other navmeshes, and edits, go on meanwhile.
     auto graph = std::make_shared<const PathGraph>(std::move(mesh), snapshot, std::move(frame), std::move(index));

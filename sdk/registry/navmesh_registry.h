@@ -19,6 +19,7 @@
 #include "links/link_snapshot.h"
 #include "navmesh/provenance.h"
 #include "navmesh/navmesh.h"
+#include "navmesh/tile_join.h"
 #include "navmesh/carrier_pose.h"
 #include "path/path_graph.h"
 #include "util/function_ref.h"
@@ -43,8 +44,10 @@ public:
     // Navmeshes. Lookups throw InvalidHandle for a null, removed or foreign handle.
     // `carrier`: the movable mesh the navmesh rides (null: none), the navmesh in its space, placed at
     // `to_world` now; navmeshes on one mesh share its frame.
+    // `tiles`: for a tiled navmesh, the tiles it was joined from (tile_join.h).
     Handle add(std::shared_ptr<const NavMesh> navmesh, Handle carrier = Handle{},
-               const Transform& to_world = Transform::Identity(), NavMeshProvenance made_for = {});
+               const Transform& to_world = Transform::Identity(), NavMeshProvenance made_for = {},
+               TileInputs tiles = {});
     // Removes the navmesh, its links, its last generation and its path graph together, and the cross
     // links of other navmeshes that land on it. Readers that
     // hold its navmesh, a snapshot or a graph keep them; a generation that finishes later keeps nothing.
@@ -67,6 +70,16 @@ public:
     Handle riding(Handle mesh, const AgentType& body) const;
     // Places the navmeshes that ride `mesh` (if any) at `to_world`; nothing else changes.
     void move_carrier(Handle mesh, const Transform& to_world);
+
+    // Tiles of a tiled navmesh: those it was joined from (empty for a solo navmesh).
+    TileInputs tile_inputs(Handle navmesh) const;
+    // Publishes `joined`, the navmesh joined from `tiles`, in the navmesh's place, as one step: every
+    // link with an end is placed on it again, those with an end on a tile it lacks (or off it) parked,
+    // out of every path, until a later navmesh holds both ends; the cross links of other navmeshes
+    // that land on it likewise. Its last generation is forgotten (an update in a box needs a new
+    // generation). Readers holding the old navmesh, a snapshot or a graph keep them. Call it under the
+    // navmesh's generation turn, with `tiles` made from what tile_inputs gave under that turn.
+    void replace_tiles(Handle navmesh, TileInputs tiles, std::shared_ptr<const NavMesh> joined);
 
     // Links. Each edit publishes: the next snapshot reader sees it.
     Handle add_link(Handle navmesh, const Link& link);
@@ -150,6 +163,7 @@ private:
         LastGeneration last;
         NavMeshProvenance made_for;
         std::shared_ptr<std::mutex> generation_turn = std::make_shared<std::mutex>();
+        TileInputs tiles;  // a tiled navmesh's, in row order
     };
     struct LinkEntry {
         Handle navmesh;

@@ -13,6 +13,7 @@
 
 #include "links/link.h"
 #include "navmesh/navmesh_builder.h"
+#include "navmesh/tile_join.h"
 #include "util/function_ref.h"
 #include "util/handle.h"
 
@@ -44,6 +45,9 @@ struct BuiltNavMesh {
     // level_hash() of the triangles it built from, as it was handed them; 0: not said (the world then
     // hashes the level as it is when the build returns).
     uint64_t level_hash = 0;
+    // For a navmesh built in tiles: the tiles it was joined from, in row order (what adding and
+    // removing tiles joins again).
+    TileInputs tiles;
 };
 
 class NavMeshBuilder {

@@ -50,11 +50,14 @@ Transform World::carrier_placement(Handle carrier) const {
     return info.transform;
 }
 
-Handle World::add_on_carrier(std::shared_ptr<const NavMesh> navmesh, Handle carrier, NavMeshProvenance made_for) {
+Handle World::add_on_carrier(std::shared_ptr<const NavMesh> navmesh, Handle carrier, NavMeshProvenance made_for,
+                             TileInputs tiles) {
     if (carrier == Handle{})
-        return navmeshes_.add(std::move(navmesh), Handle{}, Transform::Identity(), std::move(made_for));
+        return navmeshes_.add(std::move(navmesh), Handle{}, Transform::Identity(), std::move(made_for),
+                              std::move(tiles));
     std::lock_guard lock(carrier_moves_);
-    return navmeshes_.add(std::move(navmesh), carrier, carrier_placement(carrier), std::move(made_for));
+    return navmeshes_.add(std::move(navmesh), carrier, carrier_placement(carrier), std::move(made_for),
+                          std::move(tiles));
 }
 
 Handle World::add_navmesh(const NavMeshInput& input, Handle carrier) {
@@ -64,7 +67,67 @@ Handle World::add_navmesh(const NavMeshInput& input, Handle carrier) {
     }
     std::shared_ptr<const NavMesh> navmesh = nl::build_navmesh(input);
     log_repairs(*navmesh);
-    return add_on_carrier(std::move(navmesh), carrier);
+    // A host's tile is a tiled navmesh of one tile, which add_tile grows.
+    TileInputs tiles;
+    if (input.tiles.grid.tiled() && input.tiles.tiles.size() == 1)
+        tiles.push_back(std::make_shared<NavMeshInput>(input));
+    return add_on_carrier(std::move(navmesh), carrier, {}, std::move(tiles));
+}
+
+namespace {
+
+// The tiles of a tiled navmesh; InvalidArgument for a solo one.
+TileInputs tiles_of(const NavMeshRegistry& navmeshes, Handle navmesh) {
+    TileInputs tiles = navmeshes.tile_inputs(navmesh);
+    if (tiles.empty())
+        fail(ErrorCode::InvalidArgument,
+             "the navmesh is not tiled: it was built, added or loaded whole (build it with a tile size, or add a "
+             "tile)");
+    return tiles;
+}
+
+std::string describe(const TileGrid& g) {
+    return concat("tiles of ", g.tile_width, " m from (", g.origin_x, ", ", g.origin_z, ")");
+}
+
+}  // namespace
+
+void World::add_tile(Handle navmesh, const NavMeshInput& tile) {
+    const auto turn = navmeshes_.take_generation_turn(navmesh);
+    TileInputs tiles = tiles_of(navmeshes_, navmesh);
+    const NavMeshInput& first = *tiles.front();
+    if (!tile.tiles.grid.tiled() || tile.tiles.tiles.size() != 1)
+        fail_field(ErrorCode::InvalidArgument, "tile_width: the def is not a tile (tile_width is 0)");
+    if (tile.tiles.grid != first.tiles.grid)
+        fail_field(ErrorCode::InvalidArgument, "tile_width: the tile is on another grid (", describe(tile.tiles.grid),
+                   ") than the navmesh's (", describe(first.tiles.grid), ")");
+    if (!same_body(tile.agent_type, first.agent_type) || tile.agent_type.max_climb != first.agent_type.max_climb ||
+        tile.agent_type.max_slope != first.agent_type.max_slope)
+        fail_field(ErrorCode::InvalidArgument, "agent_type: the tile was made for another agent type than the navmesh");
+    const TileCoord at = tile.tiles.tiles.front();
+    const auto place = std::lower_bound(tiles.begin(), tiles.end(), at,
+                                        [](const auto& t, const TileCoord& c) { return t->tiles.tiles.front() < c; });
+    if (place != tiles.end() && (*place)->tiles.tiles.front() == at)
+        fail_field(ErrorCode::InvalidArgument, "tile_x, tile_z: tile (", at.x, ", ", at.z,
+                   ") is loaded already: remove it first");
+    nl::build_navmesh(tile);  // its own polygons checked, named as the caller gave them
+    tiles.insert(place, std::make_shared<NavMeshInput>(tile));
+    std::shared_ptr<const NavMesh> joined = nl::build_navmesh(join_tiles(tiles));
+    navmeshes_.replace_tiles(navmesh, std::move(tiles), std::move(joined));
+}
+
+void World::remove_tile(Handle navmesh, TileCoord coord) {
+    const auto turn = navmeshes_.take_generation_turn(navmesh);
+    TileInputs tiles = tiles_of(navmeshes_, navmesh);
+    const auto found =
+        std::find_if(tiles.begin(), tiles.end(), [&](const auto& t) { return t->tiles.tiles.front() == coord; });
+    if (found == tiles.end()) fail(ErrorCode::NotFound, "no tile (", coord.x, ", ", coord.z, ") is loaded");
+    if (tiles.size() == 1)
+        fail(ErrorCode::InvalidArgument, "tile (", coord.x, ", ", coord.z,
+             ") is the navmesh's last: remove the navmesh instead");
+    tiles.erase(found);
+    std::shared_ptr<const NavMesh> joined = nl::build_navmesh(join_tiles(tiles));
+    navmeshes_.replace_tiles(navmesh, std::move(tiles), std::move(joined));
 }
 
 Handle World::add_agent(AgentDef def) {
@@ -191,7 +254,7 @@ Handle World::build_navmesh(const NavMeshBuildRequest& request) {
     made_for.level_hash = built.level_hash != 0 ? built.level_hash : level_hash(triangles);
     forwarded.progress(1.0f, "adding the navmesh");
     fail_if_cancelled();
-    return add_on_carrier(std::move(navmesh), request.carrier, std::move(made_for));
+    return add_on_carrier(std::move(navmesh), request.carrier, std::move(made_for), std::move(built.tiles));
 }
 
 Handle World::load_navmesh(const NavMeshFile& file, Handle carrier) {

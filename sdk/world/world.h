@@ -92,6 +92,20 @@ public:
     // polygons, as add_navmesh), InvalidHandle (the carrier).
     Handle load_navmesh(const NavMeshFile& file, Handle carrier = Handle{});
 
+    // Tiles of a tiled navmesh (built in tiles, or added from a tile), each change one step for
+    // everything else (NavMeshRegistry::replace_tiles): paths in flight finish on the navmesh they
+    // started on; agents standing on a removed tile wait (AgentReason::TileUnloaded) until it is back,
+    // those whose path crossed it plan again; a link with an end on a removed tile is out of every path
+    // until the tile is back. The navmesh is joined again from its tiles (tile_join.h) whatever the
+    // order they came in. Adds `tile` (its place in tile.tiles, on the navmesh's grid, for its agent
+    // type). Throws InvalidArgument: a navmesh that is not tiled, a tile of another grid or agent type,
+    // a tile loaded already at that place (remove it first), the tile's polygons (as add_navmesh);
+    // InvalidHandle for a navmesh removed meanwhile.
+    void add_tile(Handle navmesh, const NavMeshInput& tile);
+    // Removes the tile at `coord`. Throws NotFound when no tile is loaded there, InvalidArgument for a
+    // navmesh that is not tiled or for its last tile (remove the navmesh instead).
+    void remove_tile(Handle navmesh, TileCoord coord);
+
     // Moves a mesh, and the navmeshes that ride it with it (no rebuild, no new snapshot). A mesh that
     // carries a navmesh takes rigid transforms only (InvalidArgument otherwise, nothing moved).
     void set_mesh_transform(Handle mesh, const Transform& transform);
@@ -177,7 +191,8 @@ private:
     void place_host_link(Handle navmesh, Link& link) const;
     // The carrier's transform now, checked as a navmesh's placement; needs carrier_moves_ held.
     Transform carrier_placement(Handle carrier) const;
-    Handle add_on_carrier(std::shared_ptr<const NavMesh> navmesh, Handle carrier, NavMeshProvenance made_for = {});
+    Handle add_on_carrier(std::shared_ptr<const NavMesh> navmesh, Handle carrier, NavMeshProvenance made_for = {},
+                          TileInputs tiles = {});
 
     HandleTag handle_tag_;  // released last, after every handle it tagged
     Logger logger_;

@@ -95,12 +95,8 @@ public:
         const nl_status status = info_.navmesh_builder.build(info_.state, &host, &def, &Call::receive, &call);
         if (call.error) std::rethrow_exception(call.error);
         if (NL_FAILED(status)) fail(code_of(status), call.reason);
-        if (!call.tiles.empty()) {
-            std::vector<const NavMeshInput*> tiles;
-            for (const NavMeshInput& tile : call.tiles) tiles.push_back(&tile);
-            call.navmesh = build_navmesh(join_tiles(tiles));
-        }
-        return {std::move(call.navmesh), std::move(call.settings_used)};
+        if (!call.tiles.empty()) call.navmesh = build_navmesh(join_tiles(call.tiles));
+        return {std::move(call.navmesh), std::move(call.settings_used), 0, std::move(call.tiles)};
     }
 
 private:
@@ -111,13 +107,13 @@ private:
         std::exception_ptr error;
         std::string settings_used;
 
-        std::vector<NavMeshInput> tiles;  // a tiled build's, joined when it returns
+        TileInputs tiles;  // a tiled build's (row order: the builder hands them so), joined when it returns
 
         static nl_status receive(void* context, const nl_navmesh_def* def) {
             auto& self = *static_cast<Call*>(context);
             try {
                 if (def->tile_width > 0.0f) {
-                    self.tiles.push_back(input_of(*def));
+                    self.tiles.push_back(std::make_shared<const NavMeshInput>(input_of(*def)));
                     return NL_STATUS_SUCCESS;
                 }
                 self.navmesh = build_navmesh(input_of(*def));

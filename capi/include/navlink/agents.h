@@ -38,9 +38,10 @@ typedef uint32_t nl_agent_reason;
                                                     beyond its body now: found at the first step after the
                                                     change or at the take-off, never in the air. An agent
                                                     whose path holds keeps it (new links serve its next plan). */
-#define NL_AGENT_REASON_WORLD_CHANGED 3u       /**< Its navmesh changed under it. Not emitted today: a navmesh
-                                                    never changes under its id, and one on a moving surface
-                                                    moves whole, its agents with it (nothing to replan). */
+#define NL_AGENT_REASON_WORLD_CHANGED 3u       /**< Its navmesh changed under it: tiles were added or removed
+                                                    (nl_navmesh_add_tile, nl_navmesh_remove_tile), or a tile
+                                                    it waited for is back. One on a moving surface moves
+                                                    whole, its agents with it (nothing to replan). */
 #define NL_AGENT_REASON_OFF_PATH 4u            /**< Pushed too far off its path (REPLANNED), or teleported (the
                                                     next PATH_READY's reason). */
 #define NL_AGENT_REASON_NO_PATH 5u             /**< The destination cannot be reached (it went as near as it could). */
@@ -50,6 +51,11 @@ typedef uint32_t nl_agent_reason;
                                                     WAITING event; nl_agent_info reads WAITING with this
                                                     reason meanwhile), or it gave its destination up after
                                                     nl_agent_def.give_up_seconds in counterflow (FAILED).
+                                                    Added in 0.3. */
+#define NL_AGENT_REASON_TILE_UNLOADED 9u       /**< The tile it stands on was removed (nl_navmesh_remove_tile):
+                                                    it waits where it stood (the WAITING event; nl_agent_info
+                                                    reads WAITING with this reason) until a tile holds it
+                                                    again, then plans again (REPLANNED, WORLD_CHANGED).
                                                     Added in 0.3. */
 
 /** How to add an agent. Get one from nl_default_agent_def(). */
@@ -267,7 +273,8 @@ typedef uint32_t nl_agent_event_kind;
 #define NL_AGENT_EVENT_WAITING 7u        /**< It stopped for room (reason NL_AGENT_REASON_CROWD): stuck
                                               among other bodies for 0.75 s, or giving way to one; its
                                               nl_agent_info reads WAITING, reason CROWD, until it walks
-                                              on. Said once per wait. Added in 0.3. */
+                                              on; or for its tile (reason TILE_UNLOADED). Said once per
+                                              wait. Added in 0.3. */
 
 /** An array element that may grow: set `size` of the first (nl_agent_event_init). */
 typedef struct nl_agent_event {

@@ -338,6 +338,53 @@ NL_API nl_navmesh_build_def nl_default_navmesh_build_def(void);
  *  @param[out] out_id  Receives the navmesh's id. */
 NL_API nl_status nl_navmesh_build(nl_world* world, const nl_navmesh_build_def* def, nl_navmesh_id* out_id);
 
+/* Tiles. A tiled navmesh (built with nl_recast_settings.tile_size, or added from a tile: an
+   nl_navmesh_def with tile_width > 0) is joined from square tiles of one grid; tiles come and go at run
+   time, each change one step for everything else: path requests already running finish on the navmesh
+   they started on; an agent standing on a removed tile waits (NL_AGENT_EVENT_WAITING, reason
+   NL_AGENT_REASON_TILE_UNLOADED) until a tile holds it again, and one whose path crossed a removed
+   tile plans again (REPLANNED, reason WORLD_CHANGED); a link with an end on a removed tile is out of
+   every path until the tile is back. Tiles join the same whatever the order they come in. Added in 0.3. */
+
+/** A tile's place in its grid: tile (x, z) spans x in [origin_x + x * tile_width, + tile_width] and z
+ *  alike (nl_navmesh_info.tile_origin, tile_width). */
+typedef struct nl_tile_coord {
+    int32_t x;
+    int32_t z;
+} nl_tile_coord;
+
+/** Adds a tile to a tiled navmesh: `def` is a tile (tile_width > 0) of the navmesh's grid, made for its
+ *  agent type; its polygons are copied. The navmesh is joined again with it (nl_navmesh_def's tile
+ *  fields say how). Returns SUCCESS, or a failure with INVALID_ARGUMENT (a navmesh that is not tiled, a
+ *  def that is not a tile or on another grid or for another agent type, a tile already loaded at its
+ *  place: remove it first; its polygons, as nl_navmesh_add; nothing changed), INVALID_HANDLE,
+ *  OUT_OF_MEMORY. Thread-safe; waits for a link generation of the navmesh running meanwhile. Added in 0.3.
+ *  @param[in] world  The world.
+ *  @param[in] navmesh  The tiled navmesh.
+ *  @param[in] def  The tile. */
+NL_API nl_status nl_navmesh_add_tile(nl_world* world, nl_navmesh_id navmesh, const nl_navmesh_def* def);
+
+/** Removes the tile at `tile` from a tiled navmesh. Returns SUCCESS, or a failure with NOT_FOUND (no
+ *  tile loaded there: removed twice), INVALID_ARGUMENT (a navmesh that is not tiled; its last tile:
+ *  remove the navmesh instead), INVALID_HANDLE, OUT_OF_MEMORY; nothing changed on a failure.
+ *  Thread-safe; waits for a link generation of the navmesh running meanwhile. Added in 0.3.
+ *  @param[in] world  The world.
+ *  @param[in] navmesh  The tiled navmesh.
+ *  @param[in] tile  The tile to remove. */
+NL_API nl_status nl_navmesh_remove_tile(nl_world* world, nl_navmesh_id navmesh, nl_tile_coord tile);
+
+/** Copies the coordinates of the loaded tiles, in row order (z, then x), into `out_tiles`
+ *  (caller-owned, `capacity` entries), with the two-call pattern of nl_world_get_meshes; a solo navmesh
+ *  has none. Returns SUCCESS, or a failure with BUFFER_TOO_SMALL, INVALID_HANDLE or INVALID_ARGUMENT.
+ *  Thread-safe. Added in 0.3.
+ *  @param[in] world  The world.
+ *  @param[in] navmesh  The navmesh.
+ *  @param[out,opt] out_tiles  Receives the tiles, or NULL to count only.
+ *  @param[in] capacity  Entries `out_tiles` has room for.
+ *  @param[out] out_count  Receives the number of tiles. */
+NL_API nl_status nl_navmesh_get_tiles(const nl_world* world, nl_navmesh_id navmesh, nl_tile_coord* out_tiles,
+                                      uint32_t capacity, uint32_t* out_count);
+
 #ifdef __cplusplus
 } /* extern "C" */
 #endif

@@ -24,6 +24,8 @@ using nl::Vec3;
 
 namespace {
 
+using Tiles = std::vector<const nl::NavMeshInput*>;
+
 // A tile of 4 m at (x, z) on a grid from the origin: quads given as their x-z corners at one height.
 nl::NavMeshInput tile(int32_t x, int32_t z, const std::vector<std::vector<Vec3>>& quads) {
     nl::NavMeshInput in;
@@ -90,7 +92,7 @@ TEST_CASE("two tiles join along their border: shared corners welded, T-junctions
     CHECK(navmesh->boundary_edge_count() == 3 + 2 * 2);
 
     // A path across the border is the straight line.
-    nl::NavMeshInput solo_input = nl::join_tiles({&left, &right});
+    nl::NavMeshInput solo_input = nl::join_tiles(Tiles{&left, &right});
     auto world = nl::test::make_world(1);
     const nl::Handle id = world->add_navmesh(solo_input);
     const auto graph = world->navmeshes().path_graph(id);
@@ -138,21 +140,21 @@ TEST_CASE("joining tiles does not depend on the order they come in") {
 TEST_CASE("tiles that cannot be joined are refused, naming the tile") {
     const nl::NavMeshInput a = tile(0, 0, {square(0, 0, 4, 4, 0.0f)});
     const nl::NavMeshInput twice = tile(0, 0, {square(0, 0, 4, 4, 0.0f)});
-    CHECK(nl::test::message_of([&] { nl::join_tiles({&a, &twice}); }).find("given twice") != std::string::npos);
+    CHECK(nl::test::message_of([&] { nl::join_tiles(Tiles{&a, &twice}); }).find("given twice") != std::string::npos);
     nl::NavMeshInput other_grid = tile(1, 0, {square(4, 0, 8, 4, 0.0f)});
     other_grid.tiles.grid.tile_width = 5.0f;
     CHECK(nl::test::message_of([&] {
-              nl::join_tiles({&a, &other_grid});
+              nl::join_tiles(Tiles{&a, &other_grid});
           }).find("another tile grid") != std::string::npos);
     nl::NavMeshInput other_body = tile(1, 0, {square(4, 0, 8, 4, 0.0f)});
     other_body.agent_type.radius = 0.3f;
     CHECK(nl::test::message_of([&] {
-              nl::join_tiles({&a, &other_body});
+              nl::join_tiles(Tiles{&a, &other_body});
           }).find("another agent type") != std::string::npos);
     nl::NavMeshInput solo = tile(1, 0, {square(4, 0, 8, 4, 0.0f)});
     solo.tiles = nl::TileLayout{};
-    CHECK(nl::test::message_of([&] { nl::join_tiles({&a, &solo}); }).find("is not a tile") != std::string::npos);
-    CHECK(nl::test::message_of([&] { nl::join_tiles({}); }).find("none given") != std::string::npos);
+    CHECK(nl::test::message_of([&] { nl::join_tiles(Tiles{&a, &solo}); }).find("is not a tile") != std::string::npos);
+    CHECK(nl::test::message_of([&] { nl::join_tiles(Tiles{}); }).find("none given") != std::string::npos);
 }
 
 namespace {

@@ -272,7 +272,10 @@ public:
     const nl::PluginDescription& description() const noexcept override { return description_; }
     nl::NavMeshBuilder* navmesh_builder() noexcept override { return this; }
     nl::BuiltNavMesh build(nl::World&, const nl::NavMeshBuildRequest& request) override {
-        return {nl::build_navmesh(platform_tops(request.agent_type.radius)), settings_used};
+        nl::BuiltNavMesh built;
+        built.navmesh = nl::build_navmesh(platform_tops(request.agent_type.radius));
+        built.settings_used = settings_used;
+        return built;
     }
     std::string settings_used;
 

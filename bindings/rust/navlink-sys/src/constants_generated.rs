@@ -222,8 +222,8 @@ pub const NL_AGENT_REASON_DESTINATION_SET: nl_agent_reason = 1;
 /// A link of its path was removed, disabled, moved, or is beyond its body now: found at the first step after the change
 /// or at the take-off, never in the air. An agent whose path holds keeps it (new links serve its next plan).
 pub const NL_AGENT_REASON_LINK_GONE: nl_agent_reason = 2;
-/// Its navmesh changed under it. Not emitted today: a navmesh never changes under its id, and one on a moving surface
-/// moves whole, its agents with it (nothing to replan).
+/// Its navmesh changed under it: tiles were added or removed (nl_navmesh_add_tile, nl_navmesh_remove_tile), or a tile
+/// it waited for is back. One on a moving surface moves whole, its agents with it (nothing to replan).
 pub const NL_AGENT_REASON_WORLD_CHANGED: nl_agent_reason = 3;
 /// Pushed too far off its path (REPLANNED), or teleported (the next PATH_READY's reason).
 pub const NL_AGENT_REASON_OFF_PATH: nl_agent_reason = 4;
@@ -235,6 +235,10 @@ pub const NL_AGENT_REASON_CAPABILITIES_CHANGED: nl_agent_reason = 7;
 /// Other bodies are in its way: it waits for room (the WAITING event; nl_agent_info reads WAITING with this reason
 /// meanwhile), or it gave its destination up after nl_agent_def.give_up_seconds in counterflow (FAILED). Added in 0.3.
 pub const NL_AGENT_REASON_CROWD: nl_agent_reason = 8;
+/// The tile it stands on was removed (nl_navmesh_remove_tile): it waits where it stood (the WAITING event;
+/// nl_agent_info reads WAITING with this reason) until a tile holds it again, then plans again (REPLANNED,
+/// WORLD_CHANGED). Added in 0.3.
+pub const NL_AGENT_REASON_TILE_UNLOADED: nl_agent_reason = 9;
 
 /// How a link is being taken: the trajectory the generator checked, with its timing, for a host that animates the body.
 pub type nl_trajectory_kind = u32;
@@ -262,7 +266,8 @@ pub const NL_AGENT_EVENT_FAILED: nl_agent_event_kind = 5;
 /// It asked for a new path (`reason`; `link` for LINK_GONE).
 pub const NL_AGENT_EVENT_REPLANNED: nl_agent_event_kind = 6;
 /// It stopped for room (reason NL_AGENT_REASON_CROWD): stuck among other bodies for 0.75 s, or giving way to one; its
-/// nl_agent_info reads WAITING, reason CROWD, until it walks on. Said once per wait. Added in 0.3.
+/// nl_agent_info reads WAITING, reason CROWD, until it walks on; or for its tile (reason TILE_UNLOADED). Said once per
+/// wait. Added in 0.3.
 pub const NL_AGENT_EVENT_WAITING: nl_agent_event_kind = 7;
 
 /// Plugin kinds (bits of nl_plugin_description.kinds and nl_plugin_info.kinds).

@@ -261,6 +261,31 @@ extern "C" {
         out_id: *mut nl_navmesh_id,
     ) -> nl_status;
 
+    /// Adds a tile to a tiled navmesh: `def` is a tile (tile_width > 0) of the navmesh's grid, made for its agent type;
+    /// its polygons are copied. The navmesh is joined again with it (nl_navmesh_def's tile fields say how). Returns
+    /// SUCCESS, or a failure with INVALID_ARGUMENT (a navmesh that is not tiled, a def that is not a tile or on another
+    /// grid or for another agent type, a tile already loaded at its place: remove it first; its polygons, as
+    /// nl_navmesh_add; nothing changed), INVALID_HANDLE, OUT_OF_MEMORY. Thread-safe; waits for a link generation of the
+    /// navmesh running meanwhile. Added in 0.3.
+    pub fn nl_navmesh_add_tile(world: *mut nl_world, navmesh: nl_navmesh_id, def: *const nl_navmesh_def) -> nl_status;
+
+    /// Removes the tile at `tile` from a tiled navmesh. Returns SUCCESS, or a failure with NOT_FOUND (no tile loaded
+    /// there: removed twice), INVALID_ARGUMENT (a navmesh that is not tiled; its last tile: remove the navmesh
+    /// instead), INVALID_HANDLE, OUT_OF_MEMORY; nothing changed on a failure. Thread-safe; waits for a link generation
+    /// of the navmesh running meanwhile. Added in 0.3.
+    pub fn nl_navmesh_remove_tile(world: *mut nl_world, navmesh: nl_navmesh_id, tile: nl_tile_coord) -> nl_status;
+
+    /// Copies the coordinates of the loaded tiles, in row order (z, then x), into `out_tiles` (caller-owned, `capacity`
+    /// entries), with the two-call pattern of nl_world_get_meshes; a solo navmesh has none. Returns SUCCESS, or a
+    /// failure with BUFFER_TOO_SMALL, INVALID_HANDLE or INVALID_ARGUMENT. Thread-safe. Added in 0.3.
+    pub fn nl_navmesh_get_tiles(
+        world: *const nl_world,
+        navmesh: nl_navmesh_id,
+        out_tiles: *mut nl_tile_coord,
+        capacity: u32,
+        out_count: *mut u32,
+    ) -> nl_status;
+
     /// A manual link from (0,0,0) to (0,0,0), one-way, enabled, cost modifier 1, requirements measured from its ends
     /// (requirements_as_given 0). Thread-safe.
     pub fn nl_default_link_def() -> nl_link_def;

@@ -530,6 +530,15 @@ pub struct nl_navmesh_build_def {
     pub progress_user: *mut c_void,
 }
 
+/// A tile's place in its grid: tile (x, z) spans x in \[origin_x + x * tile_width, + tile_width\] and z alike
+/// (nl_navmesh_info.tile_origin, tile_width).
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct nl_tile_coord {
+    pub x: i32,
+    pub z: i32,
+}
+
 /// What taking a link asks of an agent, going from its start to its end. Going the other way over a bidirectional link
 /// swaps rise and drop.
 #[repr(C)]

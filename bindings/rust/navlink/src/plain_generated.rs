@@ -201,6 +201,12 @@ plain_struct! {
     }
 }
 
+/// A tile's place in its grid: tile (x, z) spans x in \[origin_x + x * tile_width, + tile_width\] and z alike
+/// (nl_navmesh_info.tile_origin, tile_width).
+///
+/// navlink-sys's `nl_tile_coord` (no `size`, no `reserved`: nothing to leave out).
+pub type TileCoord = sys::nl_tile_coord;
+
 plain_struct! {
     /// What taking a link asks of an agent, going from its start to its end. Going the other way over a bidirectional
     /// link swaps rise and drop.

@@ -212,8 +212,9 @@ namespace NavLink
         /// after the change or at the take-off, never in the air. An agent whose path holds keeps it (new links serve
         /// its next plan).</summary>
         LinkGone = 2u,
-        /// <summary>Its navmesh changed under it. Not emitted today: a navmesh never changes under its id, and one on a
-        /// moving surface moves whole, its agents with it (nothing to replan).</summary>
+        /// <summary>Its navmesh changed under it: tiles were added or removed (nl_navmesh_add_tile,
+        /// nl_navmesh_remove_tile), or a tile it waited for is back. One on a moving surface moves whole, its agents
+        /// with it (nothing to replan).</summary>
         WorldChanged = 3u,
         /// <summary>Pushed too far off its path (REPLANNED), or teleported (the next PATH_READY's reason).</summary>
         OffPath = 4u,
@@ -226,6 +227,10 @@ namespace NavLink
         /// this reason meanwhile), or it gave its destination up after nl_agent_def.give_up_seconds in counterflow
         /// (FAILED). Added in 0.3.</summary>
         Crowd = 8u,
+        /// <summary>The tile it stands on was removed (nl_navmesh_remove_tile): it waits where it stood (the WAITING
+        /// event; nl_agent_info reads WAITING with this reason) until a tile holds it again, then plans again
+        /// (REPLANNED, WORLD_CHANGED). Added in 0.3.</summary>
+        TileUnloaded = 9u,
     }
 
     /// <summary>How a link is being taken: the trajectory the generator checked, with its timing, for a host that
@@ -258,8 +263,8 @@ namespace NavLink
         /// <summary>It asked for a new path (<c>reason</c>; <c>link</c> for LINK_GONE).</summary>
         Replanned = 6u,
         /// <summary>It stopped for room (reason NL_AGENT_REASON_CROWD): stuck among other bodies for 0.75 s, or giving
-        /// way to one; its nl_agent_info reads WAITING, reason CROWD, until it walks on. Said once per wait. Added in
-        /// 0.3.</summary>
+        /// way to one; its nl_agent_info reads WAITING, reason CROWD, until it walks on; or for its tile (reason
+        /// TILE_UNLOADED). Said once per wait. Added in 0.3.</summary>
         Waiting = 7u,
     }
 

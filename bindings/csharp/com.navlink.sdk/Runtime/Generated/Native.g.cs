@@ -261,6 +261,30 @@ namespace NavLink
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         public static extern StatusCode nl_navmesh_build(IntPtr world, NavmeshBuildDef* def, NavmeshId* outId);
 
+        /// <summary>Adds a tile to a tiled navmesh: <c>def</c> is a tile (tile_width &gt; 0) of the navmesh's grid,
+        /// made for its agent type; its polygons are copied. The navmesh is joined again with it (nl_navmesh_def's tile
+        /// fields say how). Returns SUCCESS, or a failure with INVALID_ARGUMENT (a navmesh that is not tiled, a def
+        /// that is not a tile or on another grid or for another agent type, a tile already loaded at its place: remove
+        /// it first; its polygons, as nl_navmesh_add; nothing changed), INVALID_HANDLE, OUT_OF_MEMORY. Thread-safe;
+        /// waits for a link generation of the navmesh running meanwhile. Added in 0.3.</summary>
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        public static extern StatusCode nl_navmesh_add_tile(IntPtr world, NavmeshId navmesh, NavmeshDef* def);
+
+        /// <summary>Removes the tile at <c>tile</c> from a tiled navmesh. Returns SUCCESS, or a failure with NOT_FOUND
+        /// (no tile loaded there: removed twice), INVALID_ARGUMENT (a navmesh that is not tiled; its last tile: remove
+        /// the navmesh instead), INVALID_HANDLE, OUT_OF_MEMORY; nothing changed on a failure. Thread-safe; waits for a
+        /// link generation of the navmesh running meanwhile. Added in 0.3.</summary>
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        public static extern StatusCode nl_navmesh_remove_tile(IntPtr world, NavmeshId navmesh, TileCoord tile);
+
+        /// <summary>Copies the coordinates of the loaded tiles, in row order (z, then x), into <c>out_tiles</c>
+        /// (caller-owned, <c>capacity</c> entries), with the two-call pattern of nl_world_get_meshes; a solo navmesh
+        /// has none. Returns SUCCESS, or a failure with BUFFER_TOO_SMALL, INVALID_HANDLE or INVALID_ARGUMENT.
+        /// Thread-safe. Added in 0.3.</summary>
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        public static extern StatusCode nl_navmesh_get_tiles(IntPtr world, NavmeshId navmesh, TileCoord* outTiles,
+                                                             uint capacity, uint* outCount);
+
         /// <summary>A manual link from (0,0,0) to (0,0,0), one-way, enabled, cost modifier 1, requirements measured
         /// from its ends (requirements_as_given 0). Thread-safe.</summary>
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]

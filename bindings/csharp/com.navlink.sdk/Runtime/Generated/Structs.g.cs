@@ -72,6 +72,15 @@ namespace NavLink
         public fixed byte Reserved[2];
     }
 
+    /// <summary>A tile's place in its grid: tile (x, z) spans x in [origin_x + x * tile_width, + tile_width] and z
+    /// alike (nl_navmesh_info.tile_origin, tile_width). (nl_tile_coord)</summary>
+    [StructLayout(LayoutKind.Sequential)]
+    public partial struct TileCoord
+    {
+        public int X;
+        public int Z;
+    }
+
     /// <summary>What taking a link asks of an agent, going from its start to its end. Going the other way over a
     /// bidirectional link swaps rise and drop. (nl_link_requirements)</summary>
     [StructLayout(LayoutKind.Sequential)]

@@ -1,0 +1,232 @@
+// Tiles in and out of a tiled navmesh at run time (World::add_tile, World::remove_tile), each one step
+// for everything else. What must hold: tiles loaded again in any order give the navmesh they made
+// before, bit for bit; a path graph taken before a change still answers; a link with an end on a removed
+// tile is out of every path until the tile is back; an agent on a removed tile waits with a reason and
+// goes on when it is back; bad requests change nothing.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "core_errors.h"
+#include "core_world.h"
+#include "level_generator.h"
+#include "path/path_planner.h"
+
+using nl::Vec3;
+
+namespace {
+
+// A floor 60 x 12 m in tiles of 32 cells (9.6 m): seven columns, two rows.
+struct Corridor {
+    std::unique_ptr<nl::World> world = nl::test::make_world(2);
+    nl::Handle navmesh;
+
+    Corridor() {
+        nl::levelgen::GeneratedLevel floor;
+        floor.add_box(nl::levelgen::Box{{0.0f, -1.0f, 0.0f}, {60.0f, 0.0f, 12.0f}});
+        nl::test::add_level(*world, floor);
+        navmesh = nl::test::build_recast_navmesh(*world, nl::AgentType{}, "{\"tile_size\": 32}");
+    }
+    std::shared_ptr<const nl::NavMesh> mesh() const { return world->navmeshes().navmesh(navmesh); }
+    nl::TileCoord tile_at(float x, float z) const { return mesh()->tiles().grid.tile_at(x, z); }
+    nl::PathResult plan(const Vec3& start, const Vec3& goal) const {
+        nl::PathQuery query;
+        query.start = start;
+        query.goal = goal;
+        nl::PathResult result;
+        const auto graph = world->navmeshes().path_graph(navmesh);
+        nl::plan_path(*graph, query, nullptr, result);
+        return result;
+    }
+};
+
+bool same_navmesh(const nl::NavMesh& a, const nl::NavMesh& b) {
+    if (a.vertex_count() != b.vertex_count() || a.polygon_count() != b.polygon_count()) return false;
+    for (uint32_t v = 0; v < a.vertex_count(); ++v)
+        if (a.vertex(v) != b.vertex(v)) return false;
+    for (uint32_t p = 0; p < a.polygon_count(); ++p)
+        for (uint32_t k = 0; k < a.corner_count(p); ++k)
+            if (a.corner(p, k) != b.corner(p, k) || a.neighbour(p, k) != b.neighbour(p, k)) return false;
+    return a.tiles().tiles == b.tiles().tiles;
+}
+
+bool has_event(const nl::World& world, nl::AgentEventKind kind, nl::AgentReason reason) {
+    const auto events = world.agents().events();
+    return std::any_of(events.begin(), events.end(),
+                       [&](const nl::AgentEvent& e) { return e.kind == kind && e.reason == reason; });
+}
+
+}  // namespace
+
+TEST_CASE("tiles removed and added again in any order give the navmesh they made, bit for bit") {
+    Corridor c;
+    const auto whole = c.mesh();
+    const nl::TileInputs tiles = c.world->navmeshes().tile_inputs(c.navmesh);
+    REQUIRE(tiles.size() == 14);
+    std::mt19937 random(5);
+    for (int round = 0; round < 3; ++round) {
+        // Half the tiles out, in a random order, then back in another.
+        std::vector<nl::TileCoord> out;
+        for (const auto& t : tiles) out.push_back(t->tiles.tiles.front());
+        std::shuffle(out.begin(), out.end(), random);
+        out.resize(7);
+        for (const nl::TileCoord& t : out) c.world->remove_tile(c.navmesh, t);
+        CHECK(c.mesh()->tiles().tiles.size() == 7);
+        std::shuffle(out.begin(), out.end(), random);
+        for (const nl::TileCoord& t : out) {
+            const auto input =
+                std::find_if(tiles.begin(), tiles.end(), [&](const auto& i) { return i->tiles.tiles.front() == t; });
+            c.world->add_tile(c.navmesh, **input);
+        }
+        CHECK(same_navmesh(*c.mesh(), *whole));
+    }
+}
+
+TEST_CASE("a removed tile cuts the paths through it; a graph taken before answers as before") {
+    Corridor c;
+    const auto before = c.world->navmeshes().path_graph(c.navmesh);
+    const Vec3 start(3, 0, 6), goal(57, 0, 6);
+    REQUIRE(c.plan(start, goal).outcome == nl::PathOutcome::Complete);
+    const nl::TileCoord middle = c.tile_at(30, 6);
+    const nl::TileCoord middle_other_row = c.tile_at(30, 11);
+    c.world->remove_tile(c.navmesh, middle);
+    CHECK(c.plan(start, goal).outcome == nl::PathOutcome::Complete);  // round through the other row
+    c.world->remove_tile(c.navmesh, middle_other_row);
+    CHECK(c.plan(start, goal).outcome != nl::PathOutcome::Complete);
+    // A request that started before the change finishes on the navmesh it started on.
+    nl::PathQuery query;
+    query.start = start;
+    query.goal = goal;
+    nl::PathResult result;
+    nl::plan_path(*before, query, nullptr, result);
+    CHECK(result.outcome == nl::PathOutcome::Complete);
+}
+
+TEST_CASE("a link with an end on a removed tile is out of every path until the tile is back") {
+    Corridor c;
+    // A link from one end of the floor to the other, cheaper than walking.
+    nl::Link link;
+    link.kind = nl::LinkKind::Jump;
+    link.start = Vec3(3, 0, 6);
+    link.end = Vec3(57, 0, 6);
+    link.apex = Vec3(30, 2, 6);
+    link.cost_modifier = 0.1f;
+    nl::settle_host_requirements(link, true);
+    c.world->add_link(c.navmesh, link);
+    auto uses_link = [&] {
+        nl::PathQuery query;
+        query.start = Vec3(3, 0, 5);
+        query.goal = Vec3(57, 0, 5);
+        query.capabilities.max_jump_distance = 100.0f;
+        query.capabilities.max_jump_height = 10.0f;
+        query.capabilities.max_drop_height = 10.0f;
+        nl::PathResult result;
+        const auto graph = c.world->navmeshes().path_graph(c.navmesh);
+        nl::plan_path(*graph, query, nullptr, result);
+        return result.outcome == nl::PathOutcome::Complete && result.links_used == 1;
+    };
+    REQUIRE(uses_link());
+    const nl::TileCoord landing = c.tile_at(57, 6);
+    const nl::TileInputs tiles = c.world->navmeshes().tile_inputs(c.navmesh);
+    const auto landing_tile =
+        *std::find_if(tiles.begin(), tiles.end(), [&](const auto& t) { return t->tiles.tiles.front() == landing; });
+    c.world->remove_tile(c.navmesh, landing);
+    CHECK_FALSE(uses_link());
+    CHECK(nl::test::links_of(*c.world, c.navmesh).size() == 1);  // kept, parked
+    c.world->add_tile(c.navmesh, *landing_tile);
+    CHECK(uses_link());
+}
+
+TEST_CASE("an agent on a removed tile waits with a reason, and walks on when the tile is back") {
+    Corridor c;
+    nl::AgentDef def;
+    def.navmesh = c.navmesh;
+    def.position = Vec3(5, 0, 6);
+    const nl::Handle agent = c.world->add_agent(def);
+    c.world->agents().set_destination(c.world->navmeshes(), agent, Vec3(55, 0, 6));
+    for (int i = 0; i < 10; ++i) c.world->step(0.1f);
+    const nl::TileCoord under = c.tile_at(c.world->agents().info(agent).position.x(), 6);
+    const nl::TileInputs tiles = c.world->navmeshes().tile_inputs(c.navmesh);
+    const auto its_tile =
+        *std::find_if(tiles.begin(), tiles.end(), [&](const auto& t) { return t->tiles.tiles.front() == under; });
+    c.world->remove_tile(c.navmesh, under);
+    c.world->step(0.1f);
+    CHECK(has_event(*c.world, nl::AgentEventKind::Waiting, nl::AgentReason::TileUnloaded));
+    const Vec3 stood = c.world->agents().info(agent).position;
+    for (int i = 0; i < 20; ++i) c.world->step(0.1f);
+    const nl::AgentInfo waiting = c.world->agents().info(agent);
+    CHECK(waiting.state == nl::AgentState::Waiting);
+    CHECK(waiting.reason == nl::AgentReason::TileUnloaded);
+    CHECK((waiting.position - stood).norm() < 1e-4f);
+    c.world->add_tile(c.navmesh, *its_tile);
+    c.world->step(0.1f);
+    CHECK(has_event(*c.world, nl::AgentEventKind::Replanned, nl::AgentReason::WorldChanged));
+    bool arrived = false;
+    for (int i = 0; i < 400 && !arrived; ++i) {
+        c.world->step(0.1f);
+        arrived = c.world->agents().info(agent).state == nl::AgentState::Arrived;
+    }
+    CHECK(arrived);
+}
+
+TEST_CASE("an agent whose path crosses a removed tile plans again; agents elsewhere keep walking") {
+    Corridor c;
+    nl::AgentDef def;
+    def.navmesh = c.navmesh;
+    def.position = Vec3(5, 0, 3);
+    const nl::Handle crossing = c.world->add_agent(def);
+    c.world->agents().set_destination(c.world->navmeshes(), crossing, Vec3(55, 0, 3));
+    for (int i = 0; i < 5; ++i) c.world->step(0.1f);
+    c.world->remove_tile(c.navmesh, c.tile_at(30, 3));
+    c.world->step(0.1f);
+    CHECK(has_event(*c.world, nl::AgentEventKind::Replanned, nl::AgentReason::WorldChanged));
+    bool arrived = false;
+    for (int i = 0; i < 400 && !arrived; ++i) {
+        c.world->step(0.1f);
+        arrived = c.world->agents().info(crossing).state == nl::AgentState::Arrived;
+    }
+    CHECK(arrived);  // round through the other row
+}
+
+TEST_CASE("tile requests that cannot be met are refused and change nothing") {
+    Corridor c;
+    const auto before = c.mesh();
+    const nl::TileInputs tiles = c.world->navmeshes().tile_inputs(c.navmesh);
+    // Added twice.
+    std::string message;
+    CHECK(nl::test::code_of([&] { c.world->add_tile(c.navmesh, *tiles.front()); }, &message) ==
+          nl::ErrorCode::InvalidArgument);
+    CHECK(message.find("loaded already") != std::string::npos);
+    // Removed twice.
+    const nl::TileCoord first = tiles.front()->tiles.tiles.front();
+    c.world->remove_tile(c.navmesh, first);
+    CHECK(nl::test::code_of([&] { c.world->remove_tile(c.navmesh, first); }, &message) == nl::ErrorCode::NotFound);
+    c.world->add_tile(c.navmesh, *tiles.front());
+    CHECK(same_navmesh(*c.mesh(), *before));
+    // Another grid, another body.
+    nl::NavMeshInput shifted = *tiles[1];
+    shifted.tiles.grid.origin_x += 0.5f;
+    c.world->remove_tile(c.navmesh, tiles[1]->tiles.tiles.front());
+    CHECK(nl::test::code_of([&] { c.world->add_tile(c.navmesh, shifted); }, &message) ==
+          nl::ErrorCode::InvalidArgument);
+    CHECK(message.find("another grid") != std::string::npos);
+    nl::NavMeshInput wider = *tiles[1];
+    wider.agent_type.radius = 1.0f;
+    CHECK(nl::test::code_of([&] { c.world->add_tile(c.navmesh, wider); }, &message) == nl::ErrorCode::InvalidArgument);
+    CHECK(message.find("another agent type") != std::string::npos);
+    c.world->add_tile(c.navmesh, *tiles[1]);
+    CHECK(same_navmesh(*c.mesh(), *before));
+    // The last tile; a solo navmesh; a removed navmesh.
+    for (size_t t = 1; t < tiles.size(); ++t) c.world->remove_tile(c.navmesh, tiles[t]->tiles.tiles.front());
+    CHECK(nl::test::code_of([&] { c.world->remove_tile(c.navmesh, first); }, &message) ==
+          nl::ErrorCode::InvalidArgument);
+    CHECK(message.find("last") != std::string::npos);
+    const nl::Handle solo = nl::test::build_recast_navmesh(*c.world);
+    CHECK(nl::test::code_of([&] { c.world->remove_tile(solo, first); }, &message) == nl::ErrorCode::InvalidArgument);
+    CHECK(message.find("not tiled") != std::string::npos);
+    c.world->navmeshes().remove(c.navmesh);
+    CHECK(nl::test::code_of([&] { c.world->add_tile(c.navmesh, *tiles[1]); }) == nl::ErrorCode::InvalidHandle);
+}
