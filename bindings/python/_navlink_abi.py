@@ -309,12 +309,12 @@ class NavPoint(_Struct):
     """Where a point lies on a navmesh. (nl_nav_point)"""
 
 
+class TileCoord(_Struct):
+    """A tile's place in its grid: tile (x, z) spans x in [origin_x + x * tile_width, + tile_width] and z alike (nl_navmesh_info.tile_origin, tile_width). Added in 0.3. (nl_tile_coord)"""
+
+
 class NavmeshBuildDef(_Struct):
     """How to build a navmesh. Get one from nl_default_navmesh_build_def(). (nl_navmesh_build_def)"""
-
-
-class TileCoord(_Struct):
-    """A tile's place in its grid: tile (x, z) spans x in [origin_x + x * tile_width, + tile_width] and z alike (nl_navmesh_info.tile_origin, tile_width). (nl_tile_coord)"""
 
 
 class LinkRequirements(_Struct):
@@ -481,10 +481,12 @@ BoundaryEdge._fields_ = [("start", c_float * 3), ("end", c_float * 3), ("outward
 NavPoint._fields_ = [("point", c_float * 3), ("distance", c_float), ("polygon", c_uint32), ("found", c_uint8),
                       ("beyond_box", c_uint8), ("reserved", c_uint8 * 2)]
 ProgressFn = CFUNCTYPE(c_int32, c_void_p, c_float, c_char_p)
+TileCoord._fields_ = [("x", c_int32), ("z", c_int32)]
 NavmeshBuildDef._fields_ = [("size", c_uint32), ("builder", c_char_p), ("agent_type", AgentType),
                              ("settings", c_void_p), ("settings_json", c_char_p), ("settings_json_length", c_size_t),
-                             ("carrier", MeshId), ("progress", ProgressFn), ("progress_user", c_void_p)]
-TileCoord._fields_ = [("x", c_int32), ("z", c_int32)]
+                             ("carrier", MeshId), ("progress", ProgressFn), ("progress_user", c_void_p),
+                             ("tile_origin_x", c_float), ("tile_origin_z", c_float), ("tile_width", c_float),
+                             ("first_tile", TileCoord), ("tile_columns", c_uint32), ("tile_rows", c_uint32)]
 LinkRequirements._fields_ = [("gap", c_float), ("rise", c_float), ("drop", c_float), ("clearance_width", c_float),
                               ("abilities", c_uint64), ("length", c_float), ("reserved", c_uint32)]
 Link._fields_ = [("size", c_uint32), ("kind", c_uint32), ("id", LinkId), ("navmesh", NavmeshId),
@@ -645,7 +647,7 @@ C_STRUCTS = {
     "nl_mesh_def": MeshDef, "nl_mesh_info": MeshInfo, "nl_ray": Ray, "nl_ray_hit": RayHit, "nl_segment": Segment,
     "nl_agent_type": AgentType, "nl_navmesh_def": NavmeshDef, "nl_navmesh_info": NavmeshInfo,
     "nl_nav_polygon": NavPolygon, "nl_boundary_edge": BoundaryEdge, "nl_nav_point": NavPoint,
-    "nl_navmesh_build_def": NavmeshBuildDef, "nl_tile_coord": TileCoord,
+    "nl_tile_coord": TileCoord, "nl_navmesh_build_def": NavmeshBuildDef,
     "nl_link_requirements": LinkRequirements, "nl_link": Link, "nl_link_def": LinkDef,
     "nl_link_settings": LinkSettings, "nl_link_generation_report": LinkGenerationReport,
     "nl_navmesh_load_def": NavmeshLoadDef, "nl_navmesh_file_info": NavmeshFileInfo,
@@ -766,6 +768,7 @@ PROTOTYPES: Dict[str, Tuple[Any, List[Any]]] = {
     "nl_navmesh_build": (c_uint32, [c_void_p, POINTER(NavmeshBuildDef), POINTER(NavmeshId)]),
     "nl_navmesh_add_tile": (c_uint32, [c_void_p, NavmeshId, POINTER(NavmeshDef)]),
     "nl_navmesh_remove_tile": (c_uint32, [c_void_p, NavmeshId, TileCoord]),
+    "nl_navmesh_build_tiles": (c_uint32, [c_void_p, NavmeshId, POINTER(NavmeshBuildDef), POINTER(c_float), POINTER(c_float)]),
     "nl_navmesh_get_tiles": (c_uint32, [c_void_p, NavmeshId, POINTER(TileCoord), c_uint32, POINTER(c_uint32)]),
     "nl_default_link_def": (LinkDef, []),
     "nl_link_add": (c_uint32, [c_void_p, NavmeshId, POINTER(LinkDef), POINTER(LinkId)]),

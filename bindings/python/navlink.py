@@ -749,6 +749,27 @@ def _filter_def(query_filter: Optional[QueryFilter]) -> Tuple[Any, Any]:
     return byref(d), (d, costs)
 
 
+class NavmeshTile(NamedTuple):
+    """Where a host's navmesh polygons go as one tile of a tiled navmesh (nl_navmesh_def's tile fields): tile
+    (x, z) of a grid of squares `width` metres wide on the x-z plane whose tile (0, 0) has its lower corner at
+    `origin` (x, z); the tile spans x in [origin[0] + x * width, + width] and z alike. A navmesh's grid is
+    navmesh_info(...).tile_width and tile_origin (a build with RecastSettings.tile_size makes one)."""
+    x: int
+    z: int
+    width: float
+    origin: Tuple[float, float] = (0.0, 0.0)
+
+
+TileLike = Union[TileCoord, Tuple[int, int], NavmeshTile]  # a tile's place: TileCoord, (x, z) or a NavmeshTile
+
+
+def _tile_coord(tile: TileLike) -> TileCoord:
+    if isinstance(tile, TileCoord):
+        return tile
+    x, z = tile[0], tile[1]
+    return TileCoord(x, z)
+
+
 class FinishedPath(NamedTuple):
     """A request that finished, as World.take_finished_paths reports it."""
     ticket: PathTicket
@@ -1140,15 +1161,9 @@ class World:
         stage) -> bool, called on this thread with fractions from 0 to 1; False cancels the build
         (NavLinkError with STATUS_CANCELLED, nothing added); an exception it raises cancels the build and
         is raised here."""
-        d = lib.nl_default_navmesh_build_def()
-        d.agent_type = agent_type if agent_type is not None else default_agent_type()
+        d = self._build_def(agent_type, recast, settings_json, builder)
         if carrier is not None:
             d.carrier = carrier
-        d.builder = builder.encode() if builder is not None else None
-        d.settings = ctypes.addressof(recast) if recast is not None else None
-        if settings_json is not None:
-            data = settings_json.encode()
-            d.settings_json, d.settings_json_length = data, len(data)
         navmesh = NavmeshId()
 
         def build(progress_fn: Any, progress_user: Any) -> int:
@@ -1157,18 +1172,46 @@ class World:
         _with_progress(progress, build)
         return navmesh
 
+    @staticmethod
+    def _build_def(agent_type: Optional[AgentType], recast: Optional[RecastSettings], settings_json: Optional[str],
+                   builder: Optional[str]) -> NavmeshBuildDef:
+        """An nl_navmesh_build_def of these (build_navmesh, build_tiles); it holds what it points to."""
+        d = lib.nl_default_navmesh_build_def()
+        d.agent_type = agent_type if agent_type is not None else default_agent_type()
+        d.builder = builder.encode() if builder is not None else None
+        d.settings = ctypes.addressof(recast) if recast is not None else None
+        if settings_json is not None:
+            data = settings_json.encode()
+            d.settings_json, d.settings_json_length = data, len(data)
+        return d
+
     def add_navmesh(self, vertices: FloatValues, indices: IndexValues,
                     polygon_vertex_counts: Optional[ByteValues] = None, areas: Optional[ByteValues] = None,
                     weld_tolerance: Optional[float] = None, agent_type: Optional[AgentType] = None,
                     detail: Optional[Tuple[FloatValues, IndexValues, IndexValues]] = None,
-                    carrier: Optional[MeshId] = None) -> NavmeshId:
+                    carrier: Optional[MeshId] = None, tile: Optional[NavmeshTile] = None) -> NavmeshId:
         """The host's navmesh (copied, repaired). vertices and indices as add_mesh takes them (rows of x y z
         first; indices: each polygon's corners, polygon after polygon); polygon_vertex_counts: corners per
         polygon (bytes), None when every polygon is a triangle; areas: an area id (byte) per polygon or
         None. detail: (vertices, triangles, triangle_starts: polygon count + 1 of them) or None. Lists
         (flat or of rows) or buffers, read in place or converted once as add_mesh reads them. carrier: a
         MeshId of an MESH_MOVABLE mesh the navmesh rides, or None; with one, the coordinates are in that
-        mesh's own space and set_mesh_transform moves the navmesh with the mesh."""
+        mesh's own space and set_mesh_transform moves the navmesh with it. tile: a NavmeshTile to add the
+        polygons as that tile of a grid: the navmesh is then tiled, of that one tile, and add_tile grows it."""
+        d, keep = self._navmesh_def(vertices, indices, polygon_vertex_counts, areas, weld_tolerance, agent_type,
+                                    detail, tile)
+        if carrier is not None:
+            d.carrier = carrier
+        navmesh = NavmeshId()
+        _check(lib.nl_navmesh_add(self.pointer, byref(d), byref(navmesh)))
+        return navmesh
+
+    @staticmethod
+    def _navmesh_def(vertices: FloatValues, indices: IndexValues, polygon_vertex_counts: Optional[ByteValues],
+                     areas: Optional[ByteValues], weld_tolerance: Optional[float], agent_type: Optional[AgentType],
+                     detail: Optional[Tuple[FloatValues, IndexValues, IndexValues]],
+                     tile: Optional[NavmeshTile]) -> Tuple[NavmeshDef, list]:
+        """An nl_navmesh_def over the arrays, and the arrays it points into (to keep alive for the call)."""
         d = lib.nl_default_navmesh_def()
         v = _c_array("vertices", vertices, c_float, group=3, wider_rows=True)
         i = _c_array("indices", indices, c_uint32)
@@ -1202,11 +1245,10 @@ class World:
             d.detail_vertices, d.detail_vertex_count = _pointer(dv, c_float), dv.count // 3
             d.detail_triangles, d.detail_triangle_count = _pointer(dt, c_uint32), dt.count // 3
             d.detail_triangle_starts = _pointer(ds, c_uint32)
-        if carrier is not None:
-            d.carrier = carrier
-        navmesh = NavmeshId()
-        _check(lib.nl_navmesh_add(self.pointer, byref(d), byref(navmesh)))
-        return navmesh
+        if tile is not None:
+            d.tile_x, d.tile_z, d.tile_width = tile.x, tile.z, tile.width
+            d.tile_origin_x, d.tile_origin_z = tile.origin[0], tile.origin[1]
+        return d, keep
 
     def remove_navmesh(self, navmesh: NavmeshId) -> None:
         _check(lib.nl_navmesh_remove(self.pointer, navmesh))
@@ -1232,6 +1274,56 @@ class World:
 
     def boundary_edges(self, navmesh: NavmeshId) -> List[BoundaryEdge]:
         return _two_call(lambda b, c, n: lib.nl_navmesh_get_boundary_edges(self.pointer, navmesh, b, c, n), BoundaryEdge)
+
+    # --- tiles of a tiled navmesh (built with RecastSettings.tile_size, or added with a NavmeshTile) ---
+
+    def add_tile(self, navmesh: NavmeshId, tile: NavmeshTile, vertices: FloatValues, indices: IndexValues,
+                 polygon_vertex_counts: Optional[ByteValues] = None, areas: Optional[ByteValues] = None,
+                 weld_tolerance: Optional[float] = None, agent_type: Optional[AgentType] = None,
+                 detail: Optional[Tuple[FloatValues, IndexValues, IndexValues]] = None,
+                 carrier: Optional[MeshId] = None) -> None:
+        """Adds the host's polygons (as add_navmesh takes them) as the tile `tile` of a tiled navmesh: on its
+        grid (tile.width and tile.origin as navmesh_info(navmesh).tile_width and tile_origin), made for its
+        agent type, in the space of its carrier (`carrier`: the navmesh's, None for one that rides none), at a
+        place no tile holds; the navmesh is joined again with it. NavLinkError with STATUS_INVALID_ARGUMENT
+        otherwise (a navmesh that is not tiled, another grid, agent type or carrier, a tile loaded there
+        already: remove it first), nothing changed."""
+        d, keep = self._navmesh_def(vertices, indices, polygon_vertex_counts, areas, weld_tolerance, agent_type,
+                                    detail, tile)
+        if carrier is not None:
+            d.carrier = carrier
+        _check(lib.nl_navmesh_add_tile(self.pointer, navmesh, byref(d)))
+
+    def remove_tile(self, navmesh: NavmeshId, tile: TileLike) -> None:
+        """Removes the tile at `tile` ((x, z), a TileCoord or a NavmeshTile) from a tiled navmesh. NavLinkError
+        with STATUS_NOT_FOUND when no tile is loaded there (removed twice), STATUS_INVALID_ARGUMENT for a navmesh
+        that is not tiled or its last tile (remove the navmesh instead); nothing changed."""
+        _check(lib.nl_navmesh_remove_tile(self.pointer, navmesh, _tile_coord(tile)))
+
+    def build_tiles(self, navmesh: NavmeshId, box_min: Point, box_max: Point, agent_type: Optional[AgentType] = None,
+                    recast: Optional[RecastSettings] = None, settings_json: Optional[str] = None,
+                    builder: Optional[str] = None, progress: Optional[ProgressHandler] = None) -> None:
+        """Builds again, from the level as it is now, the tiles of a tiled navmesh's grid whose squares overlap
+        the box [box_min, box_max] seen from above (y is not read), with a builder plugin ("recast" when None)
+        and its settings as build_navmesh takes them: they must make tiles of the navmesh's width (the same
+        tile_size and cell_size it was built with), and agent_type (None: the default one) must be the
+        navmesh's. In one step a tile loaded there is replaced, one that comes out with no walkable surface is
+        removed, the others are added. NavLinkError with STATUS_INVALID_ARGUMENT for a navmesh that is not
+        tiled, a box not finite or with min > max (or of more than 2^22 tiles), another agent type, settings
+        making another tile width, or no tile left; the builder's failures; STATUS_CANCELLED from progress (as
+        build_navmesh's); nothing changed on a failure."""
+        d = self._build_def(agent_type, recast, settings_json, builder)
+        lo, hi = _point(box_min, "box_min"), _point(box_max, "box_max")
+
+        def build(progress_fn: Any, progress_user: Any) -> int:
+            d.progress, d.progress_user = progress_fn, progress_user
+            return lib.nl_navmesh_build_tiles(self.pointer, navmesh, byref(d), lo, hi)
+        _with_progress(progress, build)
+
+    def tiles(self, navmesh: NavmeshId) -> List[Tuple[int, int]]:
+        """The loaded tiles' places as (x, z), in row order (z, then x); [] for a navmesh that is not tiled."""
+        return [(t.x, t.z) for t in _two_call(lambda b, c, n: lib.nl_navmesh_get_tiles(self.pointer, navmesh, b, c, n),
+                                              TileCoord)]
 
     def find_nearest(self, navmesh: NavmeshId, points: Union[Sequence[Sequence[float]], FloatValues],
                      half_extents: Point) -> List[NavPoint]:

@@ -39,6 +39,10 @@ BOX_INDICES = [0, 4, 6, 0, 6, 2, 1, 3, 7, 1, 7, 5, 0, 1, 5, 0, 5, 4, 2, 6, 7, 2,
 FLOOR = [-5, 0, -5, 5, 0, -5, 5, 0, 5, -5, 0, 5]
 QUAD = [0, 2, 1, 0, 3, 2]
 WEST, EAST = (-6.0, 0.0, 0.0), (6.0, 0.0, 0.0)
+# A flat floor in tiles (tests/core/world/tile_streaming_tests.cpp's corridor, shorter): a 40 x 1 x 12 m box, top
+# y = 0, and two points near its ends.
+TILED_FLOOR_LO, TILED_FLOOR_HI = (0, -1, 0), (40, 0, 12)
+WEST_OF_TILED_FLOOR, EAST_OF_TILED_FLOOR = (2, 0, 3), (38, 0, 3)
 # The moving surface: an 8 x 4 m movable box (top y = 0 in its own space) carrying a 7.2 x 3.2 m navmesh quad,
 # then moved 10 m along x and turned 90 degrees about y: its x axis goes to the world's -z, its z axis to x.
 RAFT_LO, RAFT_HI = (-4, -1, -2), (4, 0, 2)
@@ -437,6 +441,88 @@ class NavmeshTest(NavLinkTestCase):
             self.assertFails(nl.STATUS_INVALID_ARGUMENT, "polygon", world.polygon, navmesh, 99)
             indices[2] = 40
             self.assertFails(nl.STATUS_INVALID_ARGUMENT, "indices", world.add_navmesh, vertices, indices)
+
+    def test_tiles_out_and_in_again(self):
+        """A 40 x 12 m floor built in tiles of 32 cells (9.6 m): the tiles listed are info's, in row order; one
+        removed leaves a hole and is gone from the list, removed again it is not found; built again from the level
+        in a box around its centre it is back (tile_size 64 refused, nothing changed); removed once more, a
+        hand-made quad added as that tile fills the hole and joins its neighbours (a path crosses it)."""
+        with nl.World() as world:
+            add_box(world, TILED_FLOOR_LO, TILED_FLOOR_HI)
+            recast = nl.default_recast_settings()
+            self.assertEqual((recast.tile_size, recast.tile_border), (0, 0), "solo by default")
+            recast.tile_size = 32
+            navmesh = world.build_navmesh(recast=recast)
+            info = world.navmesh_info(navmesh)
+            tiles = world.tiles(navmesh)
+            self.assertGreater(len(tiles), 1)
+            self.assertEqual(len(tiles), info.tile_count)
+            self.assertEqual(tiles, sorted(tiles, key=lambda t: (t[1], t[0])), "row order: z, then x")
+            self.assertAlmostEqual(info.tile_width, 32 * recast.cell_size, places=4)
+            width, origin = info.tile_width, tuple(info.tile_origin)
+            # The tile under the floor's middle, and the quad of it the agent stands on (the floor eroded 0.6 m).
+            middle = (20.0, 0.0, 3.0)
+            tile = (int(math.floor((middle[0] - origin[0]) / width)), int(math.floor((middle[2] - origin[1]) / width)))
+            self.assertIn(tile, tiles)
+            self.assertIsNotNone(polygon_at(world, navmesh, middle))
+            west, east = WEST_OF_TILED_FLOOR, EAST_OF_TILED_FLOOR
+            self.assertEqual(world.find_path(nl.PathQuery(navmesh, west, east, walker())).outcome, nl.PATH_COMPLETE)
+
+            world.remove_tile(navmesh, tile)
+            after = world.tiles(navmesh)
+            self.assertEqual(len(after), len(tiles) - 1)
+            self.assertEqual(after, [t for t in tiles if t != tile])
+            self.assertEqual(world.navmesh_info(navmesh).tile_count, len(after))
+            self.assertIsNone(polygon_at(world, navmesh, middle), "a hole where the tile was")
+            self.assertFails(nl.STATUS_NOT_FOUND, "no tile", world.remove_tile, navmesh, tile)
+            self.assertFails(nl.STATUS_NOT_FOUND, "no tile", world.remove_tile, navmesh, nl.TileCoord(*tile))
+            self.assertEqual(world.tiles(navmesh), after, "a refused removal changes nothing")
+
+            # The tile built again from the level, with the same settings, in a small box around its centre.
+            centre = (origin[0] + (tile[0] + 0.5) * width, 0.0, origin[1] + (tile[1] + 0.5) * width)
+            box_min, box_max = (centre[0] - 0.5, -1.0, centre[2] - 0.5), (centre[0] + 0.5, 1.0, centre[2] + 0.5)
+            world.build_tiles(navmesh, box_min, box_max, recast=recast)
+            self.assertEqual(world.tiles(navmesh), tiles, "the built tile is back in its place")
+            self.assertEqual(world.navmesh_info(navmesh).tile_count, len(tiles))
+            self.assertIsNotNone(polygon_at(world, navmesh, middle), "the built tile fills the hole")
+            self.assertEqual(world.find_path(nl.PathQuery(navmesh, west, east, walker())).outcome, nl.PATH_COMPLETE,
+                             "the built tile joins its neighbours")
+            # Settings making tiles of another width (64 cells) are refused, and change nothing.
+            rebuilt = (world.navmesh_info(navmesh).polygon_count, world.navmesh_vertices(navmesh))
+            wider = nl.default_recast_settings()
+            wider.tile_size = 64
+            self.assertFails(nl.STATUS_INVALID_ARGUMENT, "makes tiles of", world.build_tiles, navmesh, box_min, box_max,
+                             recast=wider)
+            self.assertEqual(world.tiles(navmesh), tiles, "a refused build changes no tile")
+            self.assertEqual(world.navmesh_info(navmesh).tile_count, len(tiles))
+            self.assertEqual((world.navmesh_info(navmesh).polygon_count, world.navmesh_vertices(navmesh)), rebuilt,
+                             "a refused build changes no polygon")
+            self.assertEqual(world.find_path(nl.PathQuery(navmesh, west, east, walker())).outcome, nl.PATH_COMPLETE)
+            world.remove_tile(navmesh, tile)
+            self.assertEqual(world.tiles(navmesh), after)
+
+            # The host's tile: one quad over the tile's square within the eroded floor, on the navmesh's grid.
+            x0, z0 = max(origin[0] + tile[0] * width, 0.6), max(origin[1] + tile[1] * width, 0.6)
+            x1, z1 = min(origin[0] + (tile[0] + 1) * width, 39.4), min(origin[1] + (tile[1] + 1) * width, 11.4)
+            quad = [x0, 0, z0, x0, 0, z1, x1, 0, z1, x1, 0, z0]
+            place = nl.NavmeshTile(tile[0], tile[1], width, origin)
+            world.add_tile(navmesh, place, quad, [0, 1, 2, 3], [4])
+            self.assertEqual(world.tiles(navmesh), tiles)
+            self.assertEqual(world.navmesh_info(navmesh).tile_count, len(tiles))
+            self.assertIsNotNone(polygon_at(world, navmesh, middle), "the hand-made tile fills the hole")
+            self.assertEqual(world.find_path(nl.PathQuery(navmesh, west, east, walker())).outcome, nl.PATH_COMPLETE,
+                             "the tile joins its neighbours")
+            self.assertFails(nl.STATUS_INVALID_ARGUMENT, "loaded already", world.add_tile, navmesh, place, quad,
+                             [0, 1, 2, 3], [4])
+            self.assertFails(nl.STATUS_INVALID_ARGUMENT, "another grid", world.add_tile, navmesh,
+                             place._replace(x=99, width=width * 2), quad, [0, 1, 2, 3], [4])
+            self.assertFails(nl.STATUS_INVALID_ARGUMENT, "not a tile", world.add_tile, navmesh, place._replace(width=0), quad,
+                             [0, 1, 2, 3], [4])
+            # A solo navmesh has no tiles and takes none.
+            solo = world.add_navmesh(FLOOR, QUAD)
+            self.assertEqual((world.tiles(solo), world.navmesh_info(solo).tile_count), ([], 0))
+            self.assertFails(nl.STATUS_INVALID_ARGUMENT, "not tiled", world.remove_tile, solo, (0, 0))
+            self.assertEqual(nl.AgentReason.TILE_UNLOADED, nl.AGENT_REASON_TILE_UNLOADED)
 
 
     def test_navmesh_on_a_moving_surface(self):

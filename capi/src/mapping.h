@@ -10,6 +10,7 @@
 #include "links/link.h"
 #include "navmesh/carrier_pose.h"
 #include "path/path_query.h"
+#include "world/plugin.h"
 
 namespace nl::capi {
 
@@ -25,6 +26,10 @@ inline auto progress_of(nl_progress_fn* progress, void* user) {
 
 // A navmesh def (nl_navmesh_add, a builder's sink), read whole; build_navmesh checks the rest.
 NavMeshInput navmesh_input_from_def(const nl_navmesh_def& def);
+
+// A build def (nl_navmesh_build, nl_navmesh_build_tiles), read whole over the defaults; its tile
+// fields are the world's to set.
+NavMeshBuildRequest build_request_from_def(const nl_navmesh_build_def& def);
 
 // A link def (nl_link_add, nl_link_update, a link-kind plugin's sink); the link is not yet placed on
 // a navmesh (World does that).

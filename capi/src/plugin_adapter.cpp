@@ -136,8 +136,7 @@ struct BuildSink {
     // The tiles joined into one navmesh (tile_join.h); the tiles kept in row order.
     void join_tiles_handed() {
         navmesh = build_navmesh(join_tiles(tiles));
-        std::sort(tiles.begin(), tiles.end(),
-                  [](const auto& a, const auto& b) { return a->tiles.tiles.front() < b->tiles.tiles.front(); });
+        sort_in_row_order(tiles);
     }
 };
 
@@ -170,6 +169,14 @@ BuiltNavMesh CPlugin::build(World&, const NavMeshBuildRequest& request) {
     def.settings = request.builder_settings;
     def.settings_json = request.settings_json;
     def.settings_json_length = request.settings_json_length;
+    if (request.only_tiles.asked()) {
+        def.tile_origin_x = request.only_tiles.grid.origin_x;
+        def.tile_origin_z = request.only_tiles.grid.origin_z;
+        def.tile_width = request.only_tiles.grid.tile_width;
+        def.first_tile = nl_tile_coord{request.only_tiles.first.x, request.only_tiles.first.z};
+        def.tile_columns = request.only_tiles.columns;
+        def.tile_rows = request.only_tiles.rows;
+    }
     BuildSink sink;
     take_plugin_error();
     const nl_status status = info_.navmesh_builder.build(info_.state, &host_, &def, &BuildSink::receive, &sink);
@@ -189,6 +196,12 @@ BuiltNavMesh CPlugin::build(World&, const NavMeshBuildRequest& request) {
     if (NL_FAILED(status))
         throw Error(to_error_code(status),
                     concat("builder '", name, "': ", reason.empty() ? nl_status_string(status) : reason));
+    if (request.only_tiles.asked()) {
+        // Some tiles, maybe none: the world puts them in the navmesh.
+        if (sink.navmesh) fail(ErrorCode::Internal, "builder '", name, "' handed over a solo navmesh for tiles");
+        sort_in_row_order(sink.tiles);
+        return {nullptr, std::move(running.settings_used), 0, std::move(sink.tiles)};
+    }
     if (sink.calls == 0) fail(ErrorCode::Internal, "builder '", name, "' succeeded without handing over a navmesh");
     if (!sink.tiles.empty()) {
         try {

@@ -23,6 +23,29 @@ using nl::capi::to_id;
 
 }  // namespace
 
+namespace nl::capi {
+
+NavMeshBuildRequest build_request_from_def(const nl_navmesh_build_def& given) {
+    const nl_navmesh_build_def def =
+        read_growable(given, nl_default_navmesh_build_def(), kFirstSize<nl_navmesh_build_def>, "def");
+    if (def.tile_origin_x != 0.0f || def.tile_origin_z != 0.0f || def.tile_width != 0.0f || def.first_tile.x != 0 ||
+        def.first_tile.z != 0 || def.tile_columns != 0 || def.tile_rows != 0)
+        fail_field(ErrorCode::InvalidArgument,
+                   "tile_origin_x, tile_origin_z, tile_width, first_tile, tile_columns and tile_rows are set by the "
+                   "world for its builder: leave them 0 (nl_navmesh_build_tiles takes a box)");
+    NavMeshBuildRequest request;
+    request.builder = def.builder ? def.builder : "recast";
+    request.agent_type = to_core(def.agent_type);
+    request.builder_settings = def.settings;
+    request.settings_json = def.settings_json;
+    request.settings_json_length = def.settings_json_length;
+    request.carrier = to_handle(def.carrier);
+    if (def.progress) request.progress = progress_of(def.progress, def.progress_user);
+    return request;
+}
+
+}  // namespace nl::capi
+
 extern "C" {
 
 NL_API nl_navmesh_build_def nl_default_navmesh_build_def(void) {
@@ -38,16 +61,8 @@ NL_API nl_status nl_navmesh_build(nl_world* world, const nl_navmesh_build_def* d
         nl::World& w = deref(world);
         require(def, "def");
         require(out_id, "out_id");
-        const nl_navmesh_build_def settings = nl::capi::read_growable(
-            *def, nl_default_navmesh_build_def(), nl::capi::kFirstSize<nl_navmesh_build_def>, "def");
-        nl::NavMeshBuildRequest request;
-        request.builder = settings.builder ? settings.builder : "recast";
-        request.agent_type = nl::capi::to_core(settings.agent_type);
-        request.builder_settings = settings.settings;
-        request.settings_json = settings.settings_json;
-        request.settings_json_length = settings.settings_json_length;
-        request.carrier = to_handle(settings.carrier);
-        if (settings.progress) request.progress = nl::capi::progress_of(settings.progress, settings.progress_user);
+        const nl::NavMeshBuildRequest request =
+            nl::naming_fields("def->", [&] { return nl::capi::build_request_from_def(*def); });
         const auto start = std::chrono::steady_clock::now();
         *out_id = to_id<nl_navmesh_id>(nl::naming_fields("def->", [&] { return w.build_navmesh(request); }));
         const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();

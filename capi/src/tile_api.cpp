@@ -16,13 +16,34 @@ NL_API nl_status nl_navmesh_add_tile(nl_world* world, nl_navmesh_id navmesh, con
     return guarded("nl_navmesh_add_tile", world, [&] {
         nl::World& w = deref(world);
         require(def, "def");
-        nl::naming_fields("def->", [&] { w.add_tile(to_handle(navmesh), nl::capi::navmesh_input_from_def(*def)); });
+        const nl_navmesh_def full =
+            nl::capi::read_growable(*def, nl_default_navmesh_def(), nl::capi::kFirstSize<nl_navmesh_def>, "def");
+        nl::naming_fields("def->", [&] {
+            w.add_tile(to_handle(navmesh), nl::capi::navmesh_input_from_def(*def), to_handle(full.carrier));
+        });
     });
 }
 
 NL_API nl_status nl_navmesh_remove_tile(nl_world* world, nl_navmesh_id navmesh, nl_tile_coord tile) {
     return guarded("nl_navmesh_remove_tile", world, [&] {
         deref(world).remove_tile(to_handle(navmesh), nl::TileCoord{tile.x, tile.z});
+    });
+}
+
+NL_API nl_status nl_navmesh_build_tiles(nl_world* world, nl_navmesh_id navmesh, const nl_navmesh_build_def* def,
+                                        const float* box_min, const float* box_max) {
+    return guarded("nl_navmesh_build_tiles", world, [&] {
+        nl::World& w = deref(world);
+        require(def, "def");
+        require(box_min, "box_min");
+        require(box_max, "box_max");
+        nl::Aabb box;
+        box.min = nl::capi::read_position(box_min, "box_min");
+        box.max = nl::capi::read_position(box_max, "box_max");
+        if (box.min.x() > box.max.x() || box.min.z() > box.max.z())
+            nl::fail(nl::ErrorCode::InvalidArgument, "box_min is beyond box_max in x or z");
+        nl::naming_fields("def->",
+                          [&] { w.build_tiles(to_handle(navmesh), nl::capi::build_request_from_def(*def), box); });
     });
 }
 

@@ -56,14 +56,17 @@ nl_status build(void* /*plugin_state*/, const nl_plugin_host* host, const nl_nav
         const nl_status recorded = host_record_build_settings(*host, settings_to_json(settings));
         if (NL_FAILED(recorded))
             fail(recorded & ~NL_STATUS_FAILURE, "the host refused the record of the settings used");
+        if (asks_for_tiles(*def) && settings.tile_size == 0)
+            fail(NL_STATUS_INVALID_ARGUMENT, "tiles of ", def->tile_width,
+                 " m were asked for, but the settings' tile_size is 0 (one solo mesh): build with the settings the "
+                 "navmesh was built with");
         if (settings.tile_size > 0) {
             // The sink reports its own failures; the first one is the build's.
-            build_tiled_mesh(context, *host, level, settings, def->agent_type, progress,
-                             [&](const NavMeshExport& tile) {
-                                 const nl_navmesh_def tile_def = tile.def(def->agent_type);
-                                 const nl_status handed = sink(sink_context, &tile_def);
-                                 if (NL_FAILED(handed)) throw SinkRefused{handed};
-                             });
+            build_tiled_mesh(context, *host, level, settings, *def, progress, [&](const NavMeshExport& tile) {
+                const nl_navmesh_def tile_def = tile.def(def->agent_type);
+                const nl_status handed = sink(sink_context, &tile_def);
+                if (NL_FAILED(handed)) throw SinkRefused{handed};
+            });
             return NL_STATUS_SUCCESS;
         }
         const RecastPolygons mesh = build_solo_mesh(context, level, settings, def->agent_type, progress);

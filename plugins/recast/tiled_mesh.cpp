@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <memory>
 #include <new>
 #include <optional>
@@ -17,26 +18,34 @@ namespace {
 // Tiles built between two progress reports: a cancel waits for at most this many.
 constexpr uint32_t kTilesPerGroup = 32;
 
+// The tiles a build makes: a block of tiles_x by tiles_z from tile (first_x, first_z) of the grid from
+// origin (the level's lower corner, or the navmesh's grid for some of its tiles).
 struct TileGrid {
-    float bmin[3];
+    double origin[2];  // x, z of tile (0, 0)'s lower corner
+    float bmin[3];     // the level's bounds: its height range is every tile's
     float bmax[3];
     int tile_size;  // cells
     int border;     // cells
     float cs;
+    int first_x = 0;
+    int first_z = 0;
     int tiles_x;
     int tiles_z;
 
     double tile_width() const { return double(tile_size) * cs; }
     uint32_t tile_count() const { return uint32_t(tiles_x) * uint32_t(tiles_z); }
+    // The grid coordinates of the block's tile `index` (row by row).
+    int tile_x(uint32_t index) const { return first_x + int(index % uint32_t(tiles_x)); }
+    int tile_z(uint32_t index) const { return first_z + int(index / uint32_t(tiles_x)); }
 };
 
 // Recast's config for tile (tx, tz): the tile and its border, tile_size + 2 border cells a side.
 rcConfig tile_config(const TileGrid& grid, const nl_recast_settings& s, const nl_agent_type& agent, int tx, int tz) {
     const double pad = double(grid.border) * grid.cs;
-    const float lo[3] = {float(grid.bmin[0] + tx * grid.tile_width() - pad), grid.bmin[1],
-                         float(grid.bmin[2] + tz * grid.tile_width() - pad)};
-    const float hi[3] = {float(grid.bmin[0] + (tx + 1) * grid.tile_width() + pad), grid.bmax[1],
-                         float(grid.bmin[2] + (tz + 1) * grid.tile_width() + pad)};
+    const float lo[3] = {float(grid.origin[0] + tx * grid.tile_width() - pad), grid.bmin[1],
+                         float(grid.origin[1] + tz * grid.tile_width() - pad)};
+    const float hi[3] = {float(grid.origin[0] + (tx + 1) * grid.tile_width() + pad), grid.bmax[1],
+                         float(grid.origin[1] + (tz + 1) * grid.tile_width() + pad)};
     rcConfig cfg = make_config(s, agent, lo, hi);
     cfg.tileSize = grid.tile_size;
     cfg.borderSize = grid.border;
@@ -55,9 +64,12 @@ struct TileTriangles {
 TileTriangles triangles_by_tile(const LevelTriangles& level, const TileGrid& grid) {
     const double width = grid.tile_width();
     const double pad = double(grid.border) * grid.cs;
-    auto range = [&](float lo, float hi, float origin, int tiles, int& a, int& b) {
-        a = std::clamp(int(std::floor((double(lo) - origin - pad) / width)), 0, tiles - 1);
-        b = std::clamp(int(std::floor((double(hi) - origin + pad) / width)), 0, tiles - 1);
+    // The block's tiles a triangle's box reaches, as indices within the block; a > b: none.
+    auto range = [&](float lo, float hi, double origin, int first, int tiles, int& a, int& b) {
+        const double from = std::floor((double(lo) - origin - pad) / width) - first;
+        const double to = std::floor((double(hi) - origin + pad) / width) - first;
+        a = int(std::clamp(from, 0.0, double(tiles)));
+        b = int(std::clamp(to, -1.0, double(tiles - 1)));
     };
     TileTriangles out;
     out.first.assign(size_t(grid.tile_count()) + 1, 0);
@@ -78,8 +90,8 @@ TileTriangles triangles_by_tile(const LevelTriangles& level, const TileGrid& gri
                 hi_z = std::max(hi_z, v[2]);
             }
             int x0, x1, z0, z1;
-            range(lo_x, hi_x, grid.bmin[0], grid.tiles_x, x0, x1);
-            range(lo_z, hi_z, grid.bmin[2], grid.tiles_z, z0, z1);
+            range(lo_x, hi_x, grid.origin[0], grid.first_x, grid.tiles_x, x0, x1);
+            range(lo_z, hi_z, grid.origin[1], grid.first_z, grid.tiles_z, z0, z1);
             for (int z = z0; z <= z1; ++z)
                 for (int x = x0; x <= x1; ++x) {
                     const size_t tile = size_t(z) * grid.tiles_x + x;
@@ -116,7 +128,7 @@ struct TileJob {
     void build(uint32_t index) const noexcept {
         TileResult& result = (*results)[index];
         const uint32_t tile = first_tile + index;
-        const int tx = int(tile % uint32_t(grid->tiles_x)), tz = int(tile / uint32_t(grid->tiles_x));
+        const int tx = grid->tile_x(tile), tz = grid->tile_z(tile);
         try {
             result.log = std::make_unique<HostLogContext>(*host, HostLogContext::Forwarding::Kept);
             const uint32_t first = by_tile->first[tile], count = by_tile->first[tile + 1] - first;
@@ -137,8 +149,8 @@ struct TileJob {
             const RecastPolygons polygons = build_polygons(*result.log, *level, tris.data(), tile_areas.data(),
                                                            int(count), cfg, *settings, *agent, nullptr);
             TilePlace place;
-            place.origin_x = grid->bmin[0];
-            place.origin_z = grid->bmin[2];
+            place.origin_x = grid->origin[0];
+            place.origin_z = grid->origin[1];
             place.first_cell_x = int64_t(tx) * grid->tile_size;
             place.first_cell_z = int64_t(tz) * grid->tile_size;
             place.tile_width = float(grid->tile_width());
@@ -162,9 +174,12 @@ struct TileJob {
     static void run(void* job, uint32_t index) { static_cast<const TileJob*>(job)->build(index); }
 };
 
-TileGrid plan_grid(const LevelTriangles& level, const nl_recast_settings& s, const nl_agent_type& agent) {
+TileGrid plan_grid(const LevelTriangles& level, const nl_recast_settings& s, const nl_navmesh_build_def& def) {
+    const nl_agent_type& agent = def.agent_type;
     TileGrid grid{};
     rcCalcBounds(level.vertices.data(), level.vertex_count(), grid.bmin, grid.bmax);
+    grid.origin[0] = grid.bmin[0];
+    grid.origin[1] = grid.bmin[2];
     grid.cs = s.cell_size;
     grid.tile_size = int(s.tile_size);
     const int radius_cells = int(std::ceil(double(agent.radius) / s.cell_size));
@@ -174,6 +189,25 @@ TileGrid plan_grid(const LevelTriangles& level, const nl_recast_settings& s, con
              " cells must be at least the agent's radius (", radius_cells, " cells) + 1 and at most tile_size (",
              s.tile_size, "); 0 gives radius + 3");
     const double width = grid.tile_width();
+    if (asks_for_tiles(def)) {
+        // Some tiles of a navmesh's grid: its origin, and its width, which the settings must make.
+        if (float(width) != def.tile_width)
+            fail(NL_STATUS_INVALID_ARGUMENT, "tile_size ", s.tile_size, " cells of ", s.cell_size, " m makes tiles of ",
+                 float(width), " m; the navmesh's are ", def.tile_width,
+                 " m (build with the settings it was built with)");
+        if (!std::isfinite(def.tile_origin_x) || !std::isfinite(def.tile_origin_z))
+            fail(NL_STATUS_INVALID_ARGUMENT, "tile_origin_x and tile_origin_z must be finite");
+        if (double(def.tile_columns) * def.tile_rows > kMaxTiles)
+            fail(NL_STATUS_INVALID_ARGUMENT, def.tile_columns, " x ", def.tile_rows,
+                 " tiles asked; one build makes at most ", kMaxTiles);
+        grid.origin[0] = def.tile_origin_x;
+        grid.origin[1] = def.tile_origin_z;
+        grid.first_x = def.first_tile.x;
+        grid.first_z = def.first_tile.z;
+        grid.tiles_x = int(def.tile_columns);
+        grid.tiles_z = int(def.tile_rows);
+        return grid;
+    }
     const double tiles_x = std::max(1.0, std::ceil((double(grid.bmax[0]) - grid.bmin[0]) / width));
     const double tiles_z = std::max(1.0, std::ceil((double(grid.bmax[2]) - grid.bmin[2]) / width));
     if (tiles_x * tiles_z > kMaxTiles)
@@ -186,15 +220,31 @@ TileGrid plan_grid(const LevelTriangles& level, const nl_recast_settings& s, con
 
 }  // namespace
 
+bool asks_for_tiles(const nl_navmesh_build_def& def) {
+    return def.size >= offsetof(nl_navmesh_build_def, tile_rows) + sizeof def.tile_rows && def.tile_columns > 0 &&
+           def.tile_rows > 0;
+}
+
 void build_tiled_mesh(HostLogContext& context, const nl_plugin_host& host, const LevelTriangles& level,
-                      const nl_recast_settings& s, const nl_agent_type& agent, const BuildProgress& progress,
+                      const nl_recast_settings& s, const nl_navmesh_build_def& def, const BuildProgress& progress,
                       const std::function<void(const NavMeshExport& tile)>& hand) {
-    if (level.triangle_count() == 0) no_walkable_surface(agent, "the level has no triangles");
-    const TileGrid grid = plan_grid(level, s, agent);
+    const nl_agent_type& agent = def.agent_type;
+    const bool some = asks_for_tiles(def);
+    if (level.triangle_count() == 0) {
+        if (some) return;  // nothing there: no tile
+        no_walkable_surface(agent, "the level has no triangles");
+    }
+    const TileGrid grid = plan_grid(level, s, def);
     // The slope and the grid's limits are checked once, on the first tile's config.
-    const rcConfig first = tile_config(grid, s, agent, 0, 0);
+    const rcConfig first = tile_config(grid, s, agent, grid.first_x, grid.first_z);
     progress.report(0.03f, "marking walkable triangles");
-    const std::vector<unsigned char> areas = walkable_areas(context, level, first, agent);
+    std::vector<unsigned char> areas;
+    try {
+        areas = walkable_areas(context, level, first, agent);
+    } catch (const BuildFailure& e) {
+        if (some && (e.status() & NL_STATUS_NOT_FOUND)) return;  // nothing walkable: no tile
+        throw;
+    }
     progress.report(0.05f, "sorting the level's triangles into tiles");
     const TileTriangles by_tile = triangles_by_tile(level, grid);
 
@@ -219,8 +269,8 @@ void build_tiled_mesh(HostLogContext& context, const nl_plugin_host& host, const
             if (result.log) result.log->forward_kept();
             if (NL_FAILED(result.failure)) {
                 const uint32_t tile = group + i;
-                fail(result.failure & ~NL_STATUS_FAILURE, "tile (", tile % uint32_t(grid.tiles_x), ", ",
-                     tile / uint32_t(grid.tiles_x), "): ", result.message.empty() ? "out of memory" : result.message);
+                fail(result.failure & ~NL_STATUS_FAILURE, "tile (", grid.tile_x(tile), ", ", grid.tile_z(tile),
+                     "): ", result.message.empty() ? "out of memory" : result.message);
             }
             if (result.tile) {
                 hand(*result.tile);
@@ -228,7 +278,7 @@ void build_tiled_mesh(HostLogContext& context, const nl_plugin_host& host, const
             }
         }
     }
-    if (handed == 0)
+    if (handed == 0 && !some)
         no_walkable_surface(agent, "none of the " + std::to_string(tiles) +
                                        " tiles holds a walkable region after erosion and region_min_size");
 }

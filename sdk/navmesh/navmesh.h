@@ -33,6 +33,10 @@ struct AgentType {
 // Whether one body fits both (navmeshes eroded by the same radius, with the same headroom): a link
 // or an agent made for one serves the other.
 inline bool same_body(const AgentType& a, const AgentType& b) { return a.radius == b.radius && a.height == b.height; }
+// Whether two navmeshes were made for the very same agent type: tiles of one navmesh must be.
+inline bool same_agent_type(const AgentType& a, const AgentType& b) {
+    return same_body(a, b) && a.max_climb == b.max_climb && a.max_slope == b.max_slope;
+}
 
 struct BoundaryEdge {
     Vec3 start;  // in the polygon's counter-clockwise order

@@ -93,8 +93,7 @@ NavMeshInput join_tiles(const std::vector<const NavMeshInput*>& given) {
             fail_field(ErrorCode::InvalidArgument, "tiles[", i, "] (", at.x, ", ", at.z,
                        ") is on another tile grid than tile (", first.tiles.tiles[0].x, ", ", first.tiles.tiles[0].z,
                        ")");
-        if (!same_body(tile.agent_type, first.agent_type) || tile.agent_type.max_climb != first.agent_type.max_climb ||
-            tile.agent_type.max_slope != first.agent_type.max_slope)
+        if (!same_agent_type(tile.agent_type, first.agent_type))
             fail_field(ErrorCode::InvalidArgument, "tiles[", i, "] (", at.x, ", ", at.z,
                        ") was built for another agent type than tile (", first.tiles.tiles[0].x, ", ",
                        first.tiles.tiles[0].z, ")");
@@ -200,6 +199,11 @@ NavMeshInput join_tiles(const TileInputs& tiles) {
     given.reserve(tiles.size());
     for (const auto& tile : tiles) given.push_back(tile.get());
     return join_tiles(given);
+}
+
+void sort_in_row_order(TileInputs& tiles) {
+    std::sort(tiles.begin(), tiles.end(),
+              [](const auto& a, const auto& b) { return a->tiles.tiles.front() < b->tiles.tiles.front(); });
 }
 
 }  // namespace nl

@@ -25,5 +25,7 @@ NavMeshInput join_tiles(const std::vector<const NavMeshInput*>& tiles);
 // tiles.tiles[0]), in row order: what adding or removing one joins again.
 using TileInputs = std::vector<std::shared_ptr<const NavMeshInput>>;
 NavMeshInput join_tiles(const TileInputs& tiles);
+// Sorts tiles in row order of their places.
+void sort_in_row_order(TileInputs& tiles);
 
 }  // namespace nl

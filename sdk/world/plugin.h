@@ -34,6 +34,15 @@ struct NavMeshBuildRequest {
     // Told of the build's progress (fraction 0..1, never going back; the stage's name); false
     // cancels the build. Empty: nobody asks.
     std::function<bool(float fraction, const char* stage)> progress;
+    // Only these tiles of this grid (World::build_tiles), columns and rows > 0; otherwise the whole
+    // navmesh (every tile of a tiled build).
+    struct Tiles {
+        TileGrid grid;
+        TileCoord first;
+        uint32_t columns = 0;
+        uint32_t rows = 0;
+        bool asked() const { return columns > 0 && rows > 0; }
+    } only_tiles;
 };
 
 // What a builder hands back.
@@ -46,7 +55,8 @@ struct BuiltNavMesh {
     // hashes the level as it is when the build returns).
     uint64_t level_hash = 0;
     // For a navmesh built in tiles: the tiles it was joined from, in row order (what adding and
-    // removing tiles joins again).
+    // removing tiles joins again). For a request of only_tiles: those tiles that have polygons, and
+    // no navmesh.
     TileInputs tiles;
 };
 

@@ -92,7 +92,17 @@ std::string describe(const TileGrid& g) {
 
 }  // namespace
 
-void World::add_tile(Handle navmesh, const NavMeshInput& tile) {
+void World::add_tile(Handle navmesh, const NavMeshInput& tile, Handle carrier) {
+    if (carrier != Handle{}) carrier_placement(carrier);  // a bad id is named as nl_navmesh_add names it
+    {
+        const auto frame = navmeshes_.frame(navmesh);
+        if (carrier != (frame ? frame->mesh() : Handle{}))
+            fail_field(ErrorCode::InvalidArgument, "carrier: not the mesh the navmesh rides (",
+                       frame ? "a tile's polygons are in its carrier's space: give the navmesh's carrier"
+                             : "the navmesh rides none: give the null id",
+                       ")");
+    }
+    nl::build_navmesh(tile);  // its own polygons and agent checked first, named as the caller gave them
     const auto turn = navmeshes_.take_generation_turn(navmesh);
     TileInputs tiles = tiles_of(navmeshes_, navmesh);
     const NavMeshInput& first = *tiles.front();
@@ -101,8 +111,7 @@ void World::add_tile(Handle navmesh, const NavMeshInput& tile) {
     if (tile.tiles.grid != first.tiles.grid)
         fail_field(ErrorCode::InvalidArgument, "tile_width: the tile is on another grid (", describe(tile.tiles.grid),
                    ") than the navmesh's (", describe(first.tiles.grid), ")");
-    if (!same_body(tile.agent_type, first.agent_type) || tile.agent_type.max_climb != first.agent_type.max_climb ||
-        tile.agent_type.max_slope != first.agent_type.max_slope)
+    if (!same_agent_type(tile.agent_type, first.agent_type))
         fail_field(ErrorCode::InvalidArgument, "agent_type: the tile was made for another agent type than the navmesh");
     const TileCoord at = tile.tiles.tiles.front();
     const auto place = std::lower_bound(tiles.begin(), tiles.end(), at,
@@ -110,8 +119,57 @@ void World::add_tile(Handle navmesh, const NavMeshInput& tile) {
     if (place != tiles.end() && (*place)->tiles.tiles.front() == at)
         fail_field(ErrorCode::InvalidArgument, "tile_x, tile_z: tile (", at.x, ", ", at.z,
                    ") is loaded already: remove it first");
-    nl::build_navmesh(tile);  // its own polygons checked, named as the caller gave them
     tiles.insert(place, std::make_shared<NavMeshInput>(tile));
+    std::shared_ptr<const NavMesh> joined = nl::build_navmesh(join_tiles(tiles));
+    navmeshes_.replace_tiles(navmesh, std::move(tiles), std::move(joined));
+}
+
+void World::build_tiles(Handle navmesh, NavMeshBuildRequest request, const Aabb& box) {
+    NavMeshBuilder* builder = plugins_.find_navmesh_builder(request.builder);
+    if (!builder)
+        fail(ErrorCode::NotFound, "no navmesh builder named '", request.builder,
+             "' (loaded: ", listed_names(plugins_.navmesh_builder_names()), ")");
+    if (!within_coordinate_limit(box.min) || !within_coordinate_limit(box.max) || box.min.x() > box.max.x() ||
+        box.min.z() > box.max.z())
+        fail(ErrorCode::InvalidArgument, "the box is not finite, beyond the coordinate limit, or has min > max");
+    naming_fields("agent_type.", [&] { validate_agent(request.agent_type); });
+    const auto turn = navmeshes_.take_generation_turn(navmesh);
+    TileInputs tiles = tiles_of(navmeshes_, navmesh);
+    const NavMeshInput& first = *tiles.front();
+    if (!same_agent_type(request.agent_type, first.agent_type))
+        fail_field(ErrorCode::InvalidArgument, "agent_type: not the navmesh's agent type");
+    const TileGrid& grid = first.tiles.grid;
+    const TileCoord lo = grid.tile_at(box.min.x(), box.min.z()), hi = grid.tile_at(box.max.x(), box.max.z());
+    const double columns = double(hi.x) - lo.x + 1.0, rows = double(hi.z) - lo.z + 1.0;
+    if (columns * rows > double(1 << 22))
+        fail(ErrorCode::InvalidArgument, "the box holds ", columns, " x ", rows, " tiles; at most 2^22 at once");
+    {
+        const auto frame = navmeshes_.frame(navmesh);
+        request.carrier =
+            frame ? frame->mesh() : Handle{};  // the level it was built from: its carrier's, or the static one
+    }
+    request.only_tiles = NavMeshBuildRequest::Tiles{grid, lo, uint32_t(columns), uint32_t(rows)};
+    BuiltNavMesh built = builder->build(*this, request);
+    for (const auto& tile : built.tiles) {
+        const TileCoord at = tile->tiles.tiles.front();
+        if (tile->tiles.grid != grid || at.x < lo.x || at.x > hi.x || at.z < lo.z || at.z > hi.z)
+            fail(ErrorCode::Internal, "builder '", request.builder, "' handed over tile (", at.x, ", ", at.z, ") of ",
+                 describe(tile->tiles.grid), ", not one asked for");
+    }
+    // The tiles outside the box stay; those in it are what the builder made of them now.
+    const auto in_box = [&](const auto& t) {
+        const TileCoord at = t->tiles.tiles.front();
+        return at.x >= lo.x && at.x <= hi.x && at.z >= lo.z && at.z <= hi.z;
+    };
+    const size_t loaded = tiles.size();
+    tiles.erase(std::remove_if(tiles.begin(), tiles.end(), in_box), tiles.end());
+    if (tiles.size() == loaded && built.tiles.empty()) return;  // nothing there, before or now
+    tiles.insert(tiles.end(), built.tiles.begin(), built.tiles.end());
+    sort_in_row_order(tiles);
+    if (tiles.empty())
+        fail(ErrorCode::InvalidArgument,
+             "no tile would be left: the box held every tile, and none has a walkable "
+             "surface now (remove the navmesh instead)");
     std::shared_ptr<const NavMesh> joined = nl::build_navmesh(join_tiles(tiles));
     navmeshes_.replace_tiles(navmesh, std::move(tiles), std::move(joined));
 }

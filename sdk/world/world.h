@@ -101,10 +101,19 @@ public:
     // type). Throws InvalidArgument: a navmesh that is not tiled, a tile of another grid or agent type,
     // a tile loaded already at that place (remove it first), the tile's polygons (as add_navmesh);
     // InvalidHandle for a navmesh removed meanwhile.
-    void add_tile(Handle navmesh, const NavMeshInput& tile);
+    // `carrier`: the mesh the tile's polygons are in the space of, which must be the navmesh's carrier
+    // (null for a navmesh that rides none): InvalidHandle (about "carrier") for a stale one,
+    // InvalidArgument for another.
+    void add_tile(Handle navmesh, const NavMeshInput& tile, Handle carrier = Handle{});
     // Removes the tile at `coord`. Throws NotFound when no tile is loaded there, InvalidArgument for a
     // navmesh that is not tiled or for its last tile (remove the navmesh instead).
     void remove_tile(Handle navmesh, TileCoord coord);
+    // Builds the tiles of the navmesh's grid that overlap `box` (x-z) with the builder of `request`
+    // (only_tiles is set from the navmesh), and puts them in as one step: loaded tiles there are
+    // replaced, those that come out empty removed. Throws InvalidArgument (a navmesh that is not
+    // tiled, a box not finite or of more than 2^22 tiles, another agent type, tiles of another width
+    // from the builder, no tile left), NotFound (no such builder), Cancelled, the builder's failures.
+    void build_tiles(Handle navmesh, NavMeshBuildRequest request, const Aabb& box);
 
     // Moves a mesh, and the navmeshes that ride it with it (no rebuild, no new snapshot). A mesh that
     // carries a navmesh takes rigid transforms only (InvalidArgument otherwise, nothing moved).

@@ -77,6 +77,43 @@ nl_navmesh_def quad_navmesh_def(void) {
     return def;
 }
 
+nl_navmesh_def tile_navmesh_def(int32_t tile_x, int32_t tile_z) {
+    static float vertices[TILE_ROWS][TILE_COLUMNS][12], detail[TILE_ROWS][TILE_COLUMNS][12];
+    nl_navmesh_def def;
+    float* v;
+    float* d;
+    float x0, z0, x1, z1;
+    int k;
+    if (tile_x < 0 || tile_x >= TILE_COLUMNS || tile_z < 0 || tile_z >= TILE_ROWS) fixture_failed("no such tile");
+    v = vertices[tile_z][tile_x];
+    d = detail[tile_z][tile_x];
+    x0 = TILE_ORIGIN_X + (float)tile_x * TILE_WIDTH;
+    z0 = TILE_ORIGIN_Z + (float)tile_z * TILE_WIDTH;
+    x1 = x0 + TILE_WIDTH;
+    z1 = z0 + TILE_WIDTH;
+    {
+        /* As k_quad: (x0, z0), (x0, z1), (x1, z1), (x1, z0). */
+        const float corners[12] = {x0, 0, z0, x0, 0, z1, x1, 0, z1, x1, 0, z0};
+        memcpy(v, corners, sizeof corners);
+    }
+    for (k = 0; k < 12; ++k) d[k] = k % 3 == 1 ? 0.1f : v[k];
+    def = navmesh_def_of(v, 4, k_quad_indices, k_quad_corners, 1);
+    def.areas = k_quad_area;
+    set_navmesh_detail(&def, d, 4, k_quad_detail_triangles, 2, k_quad_detail_starts);
+    def.tile_width = TILE_WIDTH;
+    def.tile_origin_x = TILE_ORIGIN_X;
+    def.tile_origin_z = TILE_ORIGIN_Z;
+    def.tile_x = tile_x;
+    def.tile_z = tile_z;
+    return def;
+}
+
+uint32_t navmesh_tiles(const world_fixture* f, nl_navmesh_id id, nl_tile_coord* out, uint32_t capacity) {
+    uint32_t count = 0;
+    if (NL_FAILED(nl_navmesh_get_tiles(f->world, id, out, capacity, &count))) fixture_failed("nl_navmesh_get_tiles");
+    return count;
+}
+
 nl_link_def gap_link_def(void) {
     nl_link_def def = nl_default_link_def();
     def.start[0] = -2.5f;
@@ -209,6 +246,13 @@ static void build_world(world_fixture* f) {
             NL_FAILED(nl_agent_get_info(f->world, f->flyer, &info)) || !in_the_air(info.state))
             fixture_failed("the walker's path");
     }
+    {
+        /* The tiled navmesh: a host's tile (a navmesh of one tile), then the tile beside it. */
+        const nl_navmesh_def first = tile_navmesh_def(0, 0), second = tile_navmesh_def(1, 0);
+        if (NL_FAILED(nl_navmesh_add(f->world, &first, &f->tiled)) ||
+            NL_FAILED(nl_navmesh_add_tile(f->world, f->tiled, &second)))
+            fixture_failed("the tiled navmesh");
+    }
 }
 
 /* ---------------------------------------------------------------------------------------------
@@ -279,26 +323,32 @@ static void put_each(blob* s, nl_world* w, world_list_fn* list, id_call_fn* desc
     }
 }
 
-/* Every link of every navmesh. */
-static void put_links(blob* s, nl_world* w) {
+/* The status of listing the navmeshes, then what `put_one` writes for each (at most 16). */
+typedef void put_navmesh_fn(blob* s, nl_world* w, nl_navmesh_id id);
+static void put_each_navmesh(blob* s, nl_world* w, put_navmesh_fn* put_one) {
     aligned_buffer ids;
     uint32_t i, n = 0;
     memset(ids.bytes, 0, sizeof ids.bytes);
     put_status(s, get_navmeshes(w, ids.bytes, 16, &n));
     for (i = 0; i < n && i < 16; ++i) {
         raw_id id;
-        uint32_t count = 0;
-        nl_link* links;
         memcpy(&id, ids.bytes + i * sizeof id, sizeof id);
-        put_status(s, nl_navmesh_get_links(w, AS(nl_navmesh_id, id), NULL, 0, &count));
-        links = (nl_link*)calloc(count + 1u, sizeof *links);
-        if (!links) exit(2);
-        links[0] = nl_link_init();
-        put_status(s, nl_navmesh_get_links(w, AS(nl_navmesh_id, id), links, count, &count));
-        put(s, &count, sizeof count);
-        put(s, links, count * sizeof *links);
-        free(links);
+        put_one(s, w, AS(nl_navmesh_id, id));
     }
+}
+
+/* A navmesh's links (put_each_navmesh: every link of every navmesh). */
+static void put_links(blob* s, nl_world* w, nl_navmesh_id id) {
+    uint32_t count = 0;
+    nl_link* links;
+    put_status(s, nl_navmesh_get_links(w, id, NULL, 0, &count));
+    links = (nl_link*)calloc(count + 1u, sizeof *links);
+    if (!links) exit(2);
+    links[0] = nl_link_init();
+    put_status(s, nl_navmesh_get_links(w, id, links, count, &count));
+    put(s, &count, sizeof count);
+    put(s, links, count * sizeof *links);
+    free(links);
 }
 
 /* A path's result and points, from the done ticket or planned now. */
@@ -358,6 +408,16 @@ static void put_link_and_rays(blob* s, const world_fixture* f) {
     put(s, hits, sizeof hits);
 }
 
+/* The tiles a navmesh has loaded (put_each_navmesh: those of every navmesh). */
+static void put_tiles(blob* s, nl_world* w, nl_navmesh_id id) {
+    nl_tile_coord tiles[64];
+    uint32_t count = 0;
+    memset(tiles, 0, sizeof tiles);
+    put_status(s, nl_navmesh_get_tiles(w, id, tiles, 64, &count));
+    put(s, &count, sizeof count);
+    put(s, tiles, sizeof tiles);
+}
+
 /* Every agent's info, corners and trajectory, and the last step's events. */
 static void put_agents(blob* s, const world_fixture* f) {
     nl_agent_info infos[8];
@@ -394,21 +454,22 @@ static void put_agents(blob* s, const world_fixture* f) {
 static void fingerprint(world_fixture* f) {
     blob all = {NULL, 0, 0}, s = {NULL, 0, 0};
     int k;
-    for (k = 0; k < 9; ++k) {
-        static const char* names[9] = {"meshes",     "navmeshes",   "links",          "plugins",
-                                       "path queue", "done ticket", "the known path", "the manual link and rays",
-                                       "agents"};
+    for (k = 0; k < 10; ++k) {
+        static const char* names[10] = {"meshes",     "navmeshes",   "links",          "plugins",
+                                        "path queue", "done ticket", "the known path", "the manual link and rays",
+                                        "agents",     "tiles"};
         s.size = 0;
         switch (k) {
             case 0: put_each(&s, f->world, get_meshes, mesh_get_info_call, sizeof(nl_mesh_info)); break;
             case 1: put_each(&s, f->world, get_navmeshes, navmesh_get_info_call, sizeof(nl_navmesh_info)); break;
-            case 2: put_links(&s, f->world); break;
+            case 2: put_each_navmesh(&s, f->world, put_links); break;
             case 3: put_each(&s, f->world, get_plugins, description_call, sizeof(nl_plugin_description)); break;
             case 4: put_queue(&s, f); break;
             case 5: put_path(&s, f, done_ticket_path); break;
             case 6: put_path(&s, f, known_path); break;
             case 7: put_link_and_rays(&s, f); break;
-            default: put_agents(&s, f); break;
+            case 8: put_agents(&s, f); break;
+            default: put_each_navmesh(&s, f->world, put_tiles); break;
         }
         section(&all, names[k], &s);
     }
@@ -497,8 +558,15 @@ static void setup_worlds(void) {
             A.pending_ticket.index1 != A.stale_ticket.index1 || A.link.index1 != B.link.index1 ||
             (A.link.revision & 0xfffffu) != (B.link.revision & 0xfffffu) || A.agent.index1 != A.stale_agent.index1 ||
             A.agent.index1 != B.agent.index1 || (A.agent.revision & 0xfffffu) != (B.agent.revision & 0xfffffu) ||
-            A.flyer.index1 != B.flyer.index1 || A.agent_events == 0u)
+            A.flyer.index1 != B.flyer.index1 || A.agent_events == 0u || A.tiled.index1 != B.tiled.index1 ||
+            (A.tiled.revision & 0xfffffu) != (B.tiled.revision & 0xfffffu))
             fixture_failed("stale and foreign ids do not share slots with live ones");
+        {
+            nl_tile_coord tiles[4];
+            if (navmesh_tiles(&A, A.tiled, tiles, 4) != 2u || tiles[0].x != 0 || tiles[0].z != 0 || tiles[1].x != 1 ||
+                tiles[1].z != 0 || navmesh_info(&A, A.tiled).tile_count != 2u)
+                fixture_failed("the tiled navmesh does not hold tiles (0, 0) and (1, 0)");
+        }
     }
     refresh_worlds();
 }
@@ -579,9 +647,14 @@ const def_function* g_def;
 
 void def_refuses(const void* def, nl_status detail, const char* needle) {
     unsigned char out[16];
+    nl_status status;
     fill(out, sizeof out);
-    EXPECT_FAILURE(g_def->no_world ? NULL : A.world, g_def->call(A.world, def, out), detail, needle);
+    status = g_def->call(A.world, def, out);
+    EXPECT_FAILURE(g_def->no_world ? NULL : A.world, status, detail, needle);
     EXPECT_UNTOUCHED(out, g_def->out_size, "out_id");
+    /* Accepted where it must be refused (the case failed): undone, so that the cases after it start
+       from the worlds as they were, not from its leftovers. */
+    if (NL_SUCCEEDED(status)) g_def->undo(out);
 }
 
 void def_accepts(const void* def) {
@@ -934,8 +1007,9 @@ void world_list_cases(const char* function, const char* out_name, size_t item_si
 }
 
 static navmesh_list_fn* g_navmesh_list;
+static nl_navmesh_id g_navmesh_listed; /* the navmesh of A the list cases list from */
 static nl_status call_navmesh_list(void* out, uint32_t capacity, uint32_t* count) {
-    return g_navmesh_list(A.world, A.navmesh, out, capacity, count);
+    return g_navmesh_list(A.world, g_navmesh_listed, out, capacity, count);
 }
 /* A 16-entry buffer: the id case checks it stays untouched, and the count too. */
 static nl_status navmesh_list_id_call(nl_world* w, raw_id id, void* out) {
@@ -949,9 +1023,15 @@ static nl_status navmesh_list_id_call(nl_world* w, raw_id id, void* out) {
 
 void navmesh_list_cases(const char* function, const char* out_name, size_t item_size, uint32_t expected,
                         navmesh_list_fn* call) {
+    navmesh_list_cases_on(function, out_name, item_size, expected, call, A.navmesh, B.navmesh);
+}
+
+void navmesh_list_cases_on(const char* function, const char* out_name, size_t item_size, uint32_t expected,
+                           navmesh_list_fn* call, nl_navmesh_id live, nl_navmesh_id foreign) {
     const id_function f = {function, "navmesh", out_name, 16 * item_size, 0, 0, navmesh_list_id_call, 1};
     g_navmesh_list = call;
-    id_cases(&f, RAW(A.navmesh), RAW(A.stale_navmesh), RAW(B.navmesh));
+    g_navmesh_listed = live;
+    id_cases(&f, RAW(live), RAW(A.stale_navmesh), RAW(foreign));
     list_cases(function, out_name, item_size, expected, call_navmesh_list);
 }
 

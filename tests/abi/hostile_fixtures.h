@@ -67,7 +67,8 @@ typedef struct world_fixture {
     nl_plugin_id plugin;                                      /* the built-in Recast builder */
     nl_path_ticket done_ticket, pending_ticket, stale_ticket; /* pending took stale_ticket's */
     nl_agent_id agent, flyer, stale_agent; /* agent walks (took stale_agent's slot); flyer is in the air */
-    uint32_t agent_events;                 /* the events of the fixture's last step */
+    nl_navmesh_id tiled;   /* a host's tiled navmesh: tiles (0, 0) and (1, 0) of tile_navmesh_def's grid */
+    uint32_t agent_events; /* the events of the fixture's last step */
     unsigned char* fingerprint;
     size_t fingerprint_size;
 } world_fixture;
@@ -81,6 +82,19 @@ extern const hostile_fixture hostile_worlds;
 /* The top of the movable box (the lift), handed over as a navmesh: one quad, counter-clockwise from
    above, with its height detail. */
 nl_navmesh_def quad_navmesh_def(void);
+/* The tiled navmesh's grid: tiles of TILE_WIDTH m from (TILE_ORIGIN_X, TILE_ORIGIN_Z), beyond the
+   lift (x 60 and up), TILE_COLUMNS by TILE_ROWS of them with polygons at hand. */
+#define TILE_WIDTH 8.0f
+#define TILE_ORIGIN_X 60.0f
+#define TILE_ORIGIN_Z -4.0f
+#define TILE_COLUMNS 4
+#define TILE_ROWS 2
+/* Tile (tile_x, tile_z) of that grid (0 <= tile_x < TILE_COLUMNS, 0 <= tile_z < TILE_ROWS; others
+   are fixture_failed): one quad filling its square, counter-clockwise from above, with its height
+   detail, as quad_navmesh_def. Its arrays are the fixture's, for the life of the child. */
+nl_navmesh_def tile_navmesh_def(int32_t tile_x, int32_t tile_z);
+/* The tiles a navmesh of `f` has loaded (at most `capacity`); fixture_failed if they cannot be read. */
+uint32_t navmesh_tiles(const world_fixture* f, nl_navmesh_id id, nl_tile_coord* out, uint32_t capacity);
 /* The manual link across the gap, 1.5 m inside each rim. */
 nl_link_def gap_link_def(void);
 /* From one platform to the other for an agent that jumps 6 m: it takes a link. */
@@ -318,6 +332,9 @@ typedef nl_status navmesh_list_fn(const nl_world* world, nl_navmesh_id navmesh, 
                                   uint32_t* out_count);
 void navmesh_list_cases(const char* function, const char* out_name, size_t item_size, uint32_t expected,
                         navmesh_list_fn* call);
+/* The same from another of A's navmeshes (`live`; `foreign` is B's in its slot). */
+void navmesh_list_cases_on(const char* function, const char* out_name, size_t item_size, uint32_t expected,
+                           navmesh_list_fn* call, nl_navmesh_id live, nl_navmesh_id foreign);
 
 /* A navmesh's savers (nl_navmesh_save_links_json, nl_navmesh_save): they write into a caller's
    buffer with the two-call pattern and a size_t length (the list cases of uint32_t counts do not

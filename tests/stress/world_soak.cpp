@@ -1,9 +1,10 @@
-// navlink-world-soak: NavLink's thread-safe entry points at once, from eight threads, for a bounded
+// navlink-world-soak: NavLink's thread-safe entry points at once, from ten threads, for a bounded
 // time, with each of several worker counts. Two generators (full generations, box updates, and generations whose
 // progress callback tries to generate the other navmesh: refused, never waited for), moves of a movable
 // and of a static mesh with ray and segment queries after each, meshes added and removed (also from
 // OBJ text), manual link edits, JSON saves and loads, queued and synchronous path requests with
 // nl_path_process and point location beside them, navmeshes added and removed with requests on them,
+// tiles of a tiled navmesh removed and built again while requests plan and agents walk on it,
 // a log callback receiving the failures; at the end of each round the world is destroyed with
 // requests still queued.
 //
@@ -15,6 +16,7 @@
 //
 //   navlink-world-soak [--seconds S] [--stall S] [--workers N,N,...]
 #include <navlink/navlink.h>
+#include <navlink/recast.h>
 
 #include <atomic>
 #include <chrono>
@@ -50,6 +52,7 @@ struct Round {
     std::atomic<uint64_t> logged{0};  // failures the world's log callback received
     nl_navmesh_id navmesh{};          // built by Recast from the level, for the default Recast agent
     nl_navmesh_id thin{};             // built for a thinner agent: a second navmesh to generate
+    nl_navmesh_id tiled{};            // built in tiles, streamed out and in again while paths and agents use it
     nl_mesh_id platform{};            // movable
     nl_mesh_id crate{};               // static, moved anyway (its vertices are uploaded again)
     std::atomic<bool> stop{false};
@@ -253,13 +256,13 @@ nl_path_request_def request_on(nl_navmesh_id navmesh, std::mt19937& rng, float x
 }
 
 // Queued requests with callbacks (some cancelled or released at once) and synchronous ones.
-void request_paths(Round& r, Worker& me, unsigned seed) {
+void request_paths(Round& r, Worker& me, unsigned seed, nl_navmesh_id navmesh) {
     std::mt19937 rng(seed);
     std::vector<std::unique_ptr<Completion>> done;
     std::vector<nl_path_ticket> tickets;
     std::vector<nl_path_point> points(256, nl_path_point_init());
     for (uint64_t i = 0; !r.stop; ++i) {
-        nl_path_request_def def = request_on(r.navmesh, rng, 36, 10);
+        nl_path_request_def def = request_on(navmesh, rng, 36, 10);
         if (i % 4 == 0) {
             me.doing = "nl_path_find";
             nl_path_result result{};
@@ -296,7 +299,7 @@ void request_paths(Round& r, Worker& me, unsigned seed) {
             for (float& p : points) p = random_in(rng, 0, 12);
             const float half[3] = {2, 4, 2};
             nl_nav_point near[16];
-            expect(nl_navmesh_find_nearest(r.world, r.navmesh, points, 16, half, near), "nl_navmesh_find_nearest");
+            expect(nl_navmesh_find_nearest(r.world, navmesh, points, 16, half, near), "nl_navmesh_find_nearest");
         }
         // Read back and release the older half now and then, so tickets do not pile up.
         if (tickets.size() > 64) {
@@ -370,6 +373,62 @@ void churn_navmeshes(Round& r, Worker& me) {
     }
 }
 
+// Tiles of the tiled navmesh removed and built again (nl_navmesh_build_tiles over the tile), one at a
+// time, while requests plan on it and agents walk on it.
+void stream_tiles(Round& r, Worker& me) {
+    std::mt19937 rng(16);
+    nl_recast_settings settings = nl_default_recast_settings();
+    settings.tile_size = 32;
+    nl_navmesh_build_def build = nl_default_navmesh_build_def();
+    build.settings = &settings;
+    std::vector<nl_tile_coord> tiles(256);
+    while (!r.stop) {
+        me.doing = "nl_navmesh_get_tiles";
+        uint32_t count = 0;
+        if (!expect(nl_navmesh_get_tiles(r.world, r.tiled, tiles.data(), uint32_t(tiles.size()), &count),
+                    "nl_navmesh_get_tiles"))
+            continue;
+        nl_navmesh_info info = nl_navmesh_info_init();
+        if (!expect(nl_navmesh_get_info(r.world, r.tiled, &info), "nl_navmesh_get_info (tiled)")) continue;
+        const nl_tile_coord tile = tiles[rng() % count];
+        me.doing = "nl_navmesh_remove_tile";
+        expect(nl_navmesh_remove_tile(r.world, r.tiled, tile), "nl_navmesh_remove_tile", {NL_STATUS_INVALID_ARGUMENT});
+        std::this_thread::sleep_for(std::chrono::milliseconds(rng() % 20));
+        me.doing = "nl_navmesh_build_tiles";
+        const float centre[3] = {info.tile_origin[0] + (float(tile.x) + 0.5f) * info.tile_width, 0.0f,
+                                 info.tile_origin[1] + (float(tile.z) + 0.5f) * info.tile_width};
+        expect(nl_navmesh_build_tiles(r.world, r.tiled, &build, centre, centre), "nl_navmesh_build_tiles");
+        ++me.steps;
+    }
+}
+
+// Agents walking on the tiled navmesh while its tiles come and go: destinations anywhere on it (NOT_FOUND
+// where a tile is out), world steps.
+void walk_on_tiles(Round& r, Worker& me) {
+    std::mt19937 rng(17);
+    std::vector<nl_agent_id> agents;
+    for (int k = 0; k < 8; ++k) {
+        nl_agent_def def = nl_default_agent_def();
+        def.navmesh = r.tiled;
+        def.position[0] = 2.0f + 4.0f * float(k % 4), def.position[2] = 2.0f + 3.0f * float(k / 4);
+        nl_agent_id id{};
+        me.doing = "nl_agent_add";
+        if (expect(nl_agent_add(r.world, &def, &id), "nl_agent_add", {NL_STATUS_NOT_FOUND})) agents.push_back(id);
+    }
+    for (uint64_t i = 0; !r.stop; ++i) {
+        if (i % 20 == 0) {
+            for (nl_agent_id id : agents) {
+                const float goal[3] = {random_in(rng, 0, 36), 0.0f, random_in(rng, 0, 10)};
+                me.doing = "nl_agent_set_destination";
+                expect(nl_agent_set_destination(r.world, id, goal), "nl_agent_set_destination", {NL_STATUS_NOT_FOUND});
+            }
+        }
+        me.doing = "nl_world_step";
+        expect(nl_world_step(r.world, 0.05f), "nl_world_step");
+        ++me.steps;
+    }
+}
+
 void on_log(void* user, nl_log_level, nl_status, const char*) { static_cast<Round*>(user)->logged.fetch_add(1); }
 
 bool set_up(Round& r, int32_t workers) {
@@ -386,8 +445,13 @@ bool set_up(Round& r, int32_t workers) {
     const nl_navmesh_build_def build = nl_default_navmesh_build_def();
     nl_navmesh_build_def thin = nl_default_navmesh_build_def();
     thin.agent_type.radius = 0.3f;
+    nl_recast_settings tile_settings = nl_default_recast_settings();
+    tile_settings.tile_size = 32;
+    nl_navmesh_build_def tiled = nl_default_navmesh_build_def();
+    tiled.settings = &tile_settings;
     return expect(nl_navmesh_build(r.world, &build, &r.navmesh), "nl_navmesh_build") &&
-           expect(nl_navmesh_build(r.world, &thin, &r.thin), "nl_navmesh_build (thin)");
+           expect(nl_navmesh_build(r.world, &thin, &r.thin), "nl_navmesh_build (thin)") &&
+           expect(nl_navmesh_build(r.world, &tiled, &r.tiled), "nl_navmesh_build (tiled)");
 }
 
 // Requests queued as the world goes: each still calls back exactly once (as cancelled or finished).
@@ -434,8 +498,10 @@ void run_round(int32_t workers, double seconds, double stall_seconds) {
     start("platform mover", [](Round& r, Worker& w) { move_platform(r, w); });
     start("level editor", [](Round& r, Worker& w) { edit_level(r, w); });
     start("link editor", [](Round& r, Worker& w) { edit_links(r, w); });
-    start("requester 1", [](Round& r, Worker& w) { request_paths(r, w, 21); });
-    start("requester 2", [](Round& r, Worker& w) { request_paths(r, w, 22); });
+    start("requester 1", [](Round& r, Worker& w) { request_paths(r, w, 21, r.navmesh); });
+    start("requester 2", [](Round& r, Worker& w) { request_paths(r, w, 22, r.tiled); });
+    start("tile streamer", [](Round& r, Worker& w) { stream_tiles(r, w); });
+    start("walkers on tiles", [](Round& r, Worker& w) { walk_on_tiles(r, w); });
     start("navmesh churn", [](Round& r, Worker& w) { churn_navmeshes(r, w); });
 
     const auto begin = Clock::now();

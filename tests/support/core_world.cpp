@@ -92,9 +92,19 @@ public:
         def.settings = request.builder_settings;
         def.settings_json = request.settings_json;
         def.settings_json_length = request.settings_json_length;
+        const auto& only = request.only_tiles;
+        if (only.asked()) {
+            def.tile_origin_x = only.grid.origin_x;
+            def.tile_origin_z = only.grid.origin_z;
+            def.tile_width = only.grid.tile_width;
+            def.first_tile = nl_tile_coord{only.first.x, only.first.z};
+            def.tile_columns = only.columns;
+            def.tile_rows = only.rows;
+        }
         const nl_status status = info_.navmesh_builder.build(info_.state, &host, &def, &Call::receive, &call);
         if (call.error) std::rethrow_exception(call.error);
         if (NL_FAILED(status)) fail(code_of(status), call.reason);
+        if (only.asked()) return {nullptr, std::move(call.settings_used), 0, std::move(call.tiles)};
         if (!call.tiles.empty()) call.navmesh = build_navmesh(join_tiles(call.tiles));
         return {std::move(call.navmesh), std::move(call.settings_used), 0, std::move(call.tiles)};
     }

@@ -146,6 +146,102 @@ namespace NavLink.Tests
                 }
             });
 
+            check.Run("tiles out and in again", () =>
+            {
+                // A 40 x 12 m floor (top y = 0) built in tiles of 32 cells (9.6 m); the tile under (20, 0, 3) goes and
+                // comes back built again from the level (BuildTiles), goes again and comes back as a hand-made quad,
+                // the floor eroded 0.6 m within the tile's square.
+                using (var world = new World())
+                {
+                    TestLevels.AddBox(world, 0, -1, 0, 40, 0, 12);
+                    RecastSettings recast = World.DefaultRecastSettings();
+                    check.That(recast.TileSize == 0 && recast.TileBorder == 0, "solo by default: tile size " + recast.TileSize);
+                    recast.TileSize = 32;
+                    NavmeshId navmesh = world.BuildNavmesh(World.DefaultAgentType(), recast);
+                    NavmeshInfo info = world.GetNavmeshInfo(navmesh);
+                    TileCoord[] tiles = world.GetTiles(navmesh);
+                    check.That(tiles.Length > 1 && tiles.Length == info.TileCount,
+                               tiles.Length + " tiles listed, info says " + info.TileCount);
+                    check.That(tiles.SequenceEqual(tiles.OrderBy(t => t.Z).ThenBy(t => t.X)), "row order: z, then x");
+                    check.Near(info.TileWidth, 32 * recast.CellSize, 1e-4f, "the tile width");
+                    float width = info.TileWidth, originX, originZ;
+                    unsafe
+                    {
+                        originX = info.TileOrigin[0];
+                        originZ = info.TileOrigin[1];
+                    }
+                    Vec3 middle = new Vec3(20, 0, 3), near = new Vec3(0.4f, 0.3f, 0.4f);
+                    Vec3 west = new Vec3(2, 0, 3), east = new Vec3(38, 0, 3);
+                    var tile = new TileCoord((int)Math.Floor((middle.X - originX) / width), (int)Math.Floor((middle.Z - originZ) / width));
+                    check.That(tiles.Contains(tile), "the tile under " + middle + ", " + tile + ", is loaded");
+                    check.That(world.FindNearest(navmesh, new[] {middle}, near)[0].Found == 1, "the floor under it is walkable");
+                    check.That(world.FindPath(new PathQuery(navmesh, west, east, TestLevels.Walker())).Outcome == PathOutcome.Complete,
+                               "a path from end to end");
+
+                    world.RemoveTile(navmesh, tile);
+                    TileCoord[] after = world.GetTiles(navmesh);
+                    check.That(after.Length == tiles.Length - 1 && after.SequenceEqual(tiles.Where(t => t != tile)),
+                               "the tile is gone from the list: " + after.Length + " of " + tiles.Length);
+                    check.That(world.GetNavmeshInfo(navmesh).TileCount == after.Length, "info counts the tiles left");
+                    check.That(world.FindNearest(navmesh, new[] {middle}, near)[0].Found == 0, "a hole where the tile was");
+                    check.Throws(StatusCode.NotFound, "no tile", () => world.RemoveTile(navmesh, tile), "the tile removed twice");
+                    check.That(world.GetTiles(navmesh).SequenceEqual(after), "a refused removal changes nothing");
+
+                    // The tile built again from the level, with the same settings, in a small box around its centre.
+                    var centre = new Vec3(originX + (tile.X + 0.5f) * width, 0, originZ + (tile.Z + 0.5f) * width);
+                    Vec3 boxMin = new Vec3(centre.X - 0.5f, -1, centre.Z - 0.5f), boxMax = new Vec3(centre.X + 0.5f, 1, centre.Z + 0.5f);
+                    world.BuildTiles(navmesh, World.DefaultAgentType(), boxMin, boxMax, recast);
+                    check.That(world.GetTiles(navmesh).SequenceEqual(tiles), "the built tile is back in its place");
+                    check.That(world.GetNavmeshInfo(navmesh).TileCount == tiles.Length, "info counts the built tile");
+                    check.That(world.FindNearest(navmesh, new[] {middle}, near)[0].Found == 1, "the built tile fills the hole");
+                    check.That(world.FindPath(new PathQuery(navmesh, west, east, TestLevels.Walker())).Outcome == PathOutcome.Complete,
+                               "the built tile joins its neighbours: a path from end to end");
+                    // Settings making tiles of another width (64 cells) are refused, and change nothing.
+                    uint polygons = world.GetNavmeshInfo(navmesh).PolygonCount;
+                    Vec3[] vertices = world.GetNavmeshVertices(navmesh);
+                    RecastSettings wider = World.DefaultRecastSettings();
+                    wider.TileSize = 64;
+                    check.Throws(StatusCode.InvalidArgument, "makes tiles of",
+                                 () => world.BuildTiles(navmesh, World.DefaultAgentType(), boxMin, boxMax, wider), "tiles of 64 cells");
+                    check.That(world.GetTiles(navmesh).SequenceEqual(tiles), "a refused build changes no tile");
+                    check.That(world.GetNavmeshInfo(navmesh).TileCount == tiles.Length, "info's count unchanged");
+                    check.That(world.GetNavmeshInfo(navmesh).PolygonCount == polygons &&
+                               world.GetNavmeshVertices(navmesh).SequenceEqual(vertices), "a refused build changes no polygon");
+                    check.That(world.FindPath(new PathQuery(navmesh, west, east, TestLevels.Walker())).Outcome == PathOutcome.Complete,
+                               "a path from end to end still");
+                    world.RemoveTile(navmesh, tile);
+                    check.That(world.GetTiles(navmesh).SequenceEqual(after), "the built tile removed again");
+
+                    // The host's tile: one quad on the navmesh's grid.
+                    float x0 = Math.Max(originX + tile.X * width, 0.6f), z0 = Math.Max(originZ + tile.Z * width, 0.6f);
+                    float x1 = Math.Min(originX + (tile.X + 1) * width, 39.4f), z1 = Math.Min(originZ + (tile.Z + 1) * width, 11.4f);
+                    NavmeshInput quad = Quad(new[] {x0, 0, z0, x0, 0, z1, x1, 0, z1, x1, 0, z0});
+                    quad.TileWidth = width;
+                    quad.TileOriginX = originX;
+                    quad.TileOriginZ = originZ;
+                    quad.TileX = tile.X;
+                    quad.TileZ = tile.Z;
+                    world.AddTile(navmesh, quad);
+                    check.That(world.GetTiles(navmesh).SequenceEqual(tiles), "the hand-made tile is back in its place");
+                    check.That(world.GetNavmeshInfo(navmesh).TileCount == tiles.Length, "info counts it");
+                    check.That(world.FindNearest(navmesh, new[] {middle}, near)[0].Found == 1, "the hand-made tile fills the hole");
+                    check.That(world.FindPath(new PathQuery(navmesh, west, east, TestLevels.Walker())).Outcome == PathOutcome.Complete,
+                               "the tile joins its neighbours: a path from end to end");
+                    check.Throws(StatusCode.InvalidArgument, "loaded already", () => world.AddTile(navmesh, quad), "a tile added twice");
+                    quad.TileWidth = 2 * width;
+                    quad.TileX = 99;
+                    check.Throws(StatusCode.InvalidArgument, "another grid", () => world.AddTile(navmesh, quad), "a tile of another grid");
+                    NavmeshInput noTile = Quad(new[] {x0, 0, z0, x0, 0, z1, x1, 0, z1, x1, 0, z0});
+                    check.Throws(StatusCode.InvalidArgument, "not a tile", () => world.AddTile(navmesh, noTile), "polygons that are not a tile");
+                    // A solo navmesh has no tiles and takes none.
+                    NavmeshId solo = world.AddNavmesh(Quad(new float[] {-5, 0, -5, -5, 0, 5, 5, 0, 5, 5, 0, -5}));
+                    check.That(world.GetTiles(solo).Length == 0 && world.GetNavmeshInfo(solo).TileCount == 0, "a solo navmesh lists no tiles");
+                    check.Throws(StatusCode.InvalidArgument, "not tiled", () => world.RemoveTile(solo, new TileCoord(0, 0)),
+                                 "removing a tile of a solo navmesh");
+                    check.That((uint)AgentReason.TileUnloaded == 9u, "AgentReason.TileUnloaded");
+                }
+            });
+
             check.Run("navmesh on a moving surface", () =>
             {
                 using (var world = new World())

@@ -290,6 +290,13 @@ NL_API nl_status nl_world_get_navmeshes(const nl_world* world, nl_navmesh_id* ou
  *  with CANCELLED and changes nothing. Called on the thread that made the call. */
 typedef int32_t nl_progress_fn(void* user, float fraction, const char* stage);
 
+/** A tile's place in its grid: tile (x, z) spans x in [origin_x + x * tile_width, + tile_width] and z
+ *  alike (nl_navmesh_info.tile_origin, tile_width). Added in 0.3. */
+typedef struct nl_tile_coord {
+    int32_t x;
+    int32_t z;
+} nl_tile_coord;
+
 /** How to build a navmesh. Get one from nl_default_navmesh_build_def(). */
 typedef struct nl_navmesh_build_def {
     uint32_t size;              /**< sizeof(nl_navmesh_build_def). */
@@ -311,6 +318,19 @@ typedef struct nl_navmesh_build_def {
                                      builder reports its stages; Recast's rasterisation in steps),
                                      and can cancel it. Added in 0.3. */
     void* progress_user;        /**< Passed back to `progress`; not dereferenced. */
+    /* Which tiles: set by nl_navmesh_build_tiles for the builder (a host leaves them 0 for
+       nl_navmesh_build, which builds every tile of a tiled build, and nl_navmesh_build_tiles refuse
+       any other value with INVALID_ARGUMENT). With tile_columns and tile_rows > 0,
+       a builder builds only the tiles (x, z), first_tile.x <= x < first_tile.x + tile_columns and z
+       alike with tile_rows, of the grid of tile_width from (tile_origin_x, tile_origin_z), hands over
+       those that have polygons (none is a success), and fails with INVALID_ARGUMENT when its settings
+       make tiles of another width. Added in 0.3. */
+    float tile_origin_x;
+    float tile_origin_z;
+    float tile_width;
+    nl_tile_coord first_tile;
+    uint32_t tile_columns;
+    uint32_t tile_rows;
 } nl_navmesh_build_def;
 
 /** Builder "recast", default agent type, default settings. Thread-safe; never fails. */
@@ -346,19 +366,13 @@ NL_API nl_status nl_navmesh_build(nl_world* world, const nl_navmesh_build_def* d
    tile plans again (REPLANNED, reason WORLD_CHANGED); a link with an end on a removed tile is out of
    every path until the tile is back. Tiles join the same whatever the order they come in. Added in 0.3. */
 
-/** A tile's place in its grid: tile (x, z) spans x in [origin_x + x * tile_width, + tile_width] and z
- *  alike (nl_navmesh_info.tile_origin, tile_width). */
-typedef struct nl_tile_coord {
-    int32_t x;
-    int32_t z;
-} nl_tile_coord;
-
 /** Adds a tile to a tiled navmesh: `def` is a tile (tile_width > 0) of the navmesh's grid, made for its
- *  agent type; its polygons are copied. The navmesh is joined again with it (nl_navmesh_def's tile
- *  fields say how). Returns SUCCESS, or a failure with INVALID_ARGUMENT (a navmesh that is not tiled, a
- *  def that is not a tile or on another grid or for another agent type, a tile already loaded at its
- *  place: remove it first; its polygons, as nl_navmesh_add; nothing changed), INVALID_HANDLE,
- *  OUT_OF_MEMORY. Thread-safe; waits for a link generation of the navmesh running meanwhile. Added in 0.3.
+ *  agent type, with def->carrier the navmesh's carrier (the null id for one that rides none); its
+ *  polygons are copied. The navmesh is joined again with it (nl_navmesh_def's tile fields say how).
+ *  Returns SUCCESS, or a failure with INVALID_ARGUMENT (its polygons or agent type, as nl_navmesh_add;
+ *  a navmesh that is not tiled; a def that is not a tile, or on another grid, or for another agent
+ *  type, or with another carrier; a tile already loaded at its place: remove it first; nothing
+ *  changed), INVALID_HANDLE (the navmesh; def->carrier), OUT_OF_MEMORY. Thread-safe; waits for a link generation of the navmesh running meanwhile. Added in 0.3.
  *  @param[in] world  The world.
  *  @param[in] navmesh  The tiled navmesh.
  *  @param[in] def  The tile. */
@@ -372,6 +386,29 @@ NL_API nl_status nl_navmesh_add_tile(nl_world* world, nl_navmesh_id navmesh, con
  *  @param[in] navmesh  The tiled navmesh.
  *  @param[in] tile  The tile to remove. */
 NL_API nl_status nl_navmesh_remove_tile(nl_world* world, nl_navmesh_id navmesh, nl_tile_coord tile);
+
+/** Builds the tiles of a tiled navmesh's grid whose squares overlap the box [box_min, box_max] seen
+ *  from above, from the level as it is now, with the builder and settings of `def` (whose tiles must
+ *  have the navmesh's width: the same tile_size and cell_size as it was built with), and puts them in
+ *  the navmesh as one step (as nl_navmesh_add_tile): a tile loaded there is replaced, one that comes out
+ *  with no walkable surface is removed, the others are added. What a streaming host calls for the tiles
+ *  around a player, and an editor after changing the level there. def->agent_type must be the navmesh's;
+ *  def->carrier is ignored (the navmesh's own is built on) and the tile fields must be 0 (the navmesh's
+ *  grid is used). Returns SUCCESS, or a
+ *  failure with INVALID_ARGUMENT (a navmesh that is not tiled; a box not finite or with min > max, or
+ *  of more than 2^22 tiles; another agent type; settings making another tile width; no tile would be
+ *  left; def's tile fields not 0), INVALID_HANDLE, CANCELLED (from def->progress), the builder's failures,
+ *  OUT_OF_MEMORY;
+ *  nothing changed on a failure. Thread-safe; waits for a link generation of the navmesh running
+ *  meanwhile. Added in 0.3.
+ *  @param[in] world  The world.
+ *  @param[in] navmesh  The tiled navmesh.
+ *  @param[in] def  The builder, its settings and the agent type.
+ *  @param[in] box_min  The box's lower corner, x y z (y is not used, but must be finite and within
+ *                      NL_COORDINATE_LIMIT as x and z).
+ *  @param[in] box_max  The box's upper corner. */
+NL_API nl_status nl_navmesh_build_tiles(nl_world* world, nl_navmesh_id navmesh, const nl_navmesh_build_def* def,
+                                        const float* box_min, const float* box_max);
 
 /** Copies the coordinates of the loaded tiles, in row order (z, then x), into `out_tiles`
  *  (caller-owned, `capacity` entries), with the two-call pattern of nl_world_get_meshes; a solo navmesh

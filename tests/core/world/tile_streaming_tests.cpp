@@ -230,3 +230,72 @@ TEST_CASE("tile requests that cannot be met are refused and change nothing") {
     c.world->navmeshes().remove(c.navmesh);
     CHECK(nl::test::code_of([&] { c.world->add_tile(c.navmesh, *tiles[1]); }) == nl::ErrorCode::InvalidHandle);
 }
+
+namespace {
+
+nl::NavMeshBuildRequest tiles_request(const std::string& json) {
+    nl::NavMeshBuildRequest request;
+    request.builder = "recast";
+    request.settings_json = json.c_str();  // borrowed: the caller keeps `json`
+    request.settings_json_length = json.size();
+    return request;
+}
+
+nl::Aabb box_xz(float x0, float z0, float x1, float z1) {
+    nl::Aabb box;
+    box.min = Vec3(x0, -10, z0);
+    box.max = Vec3(x1, 10, z1);
+    return box;
+}
+
+}  // namespace
+
+TEST_CASE("tiles built again in a box: the same tiles from the same level, the box's alone from a changed one") {
+    Corridor c;
+    const auto whole = c.mesh();
+    const nl::TileInputs before = c.world->navmeshes().tile_inputs(c.navmesh);
+    const std::string json = "{\"tile_size\": 32}";
+    // A tile removed and built again: the navmesh it made.
+    const nl::TileCoord t = c.tile_at(30, 3);
+    c.world->remove_tile(c.navmesh, t);
+    c.world->build_tiles(c.navmesh, tiles_request(json), box_xz(30, 3, 30, 3));
+    CHECK(same_navmesh(*c.mesh(), *whole));
+
+    // A wall across the corridor in that tile: only the tiles its box reaches are built again.
+    nl::levelgen::GeneratedLevel wall;
+    wall.add_box(nl::levelgen::Box{{30.0f, 0.0f, 0.0f}, {31.0f, 3.0f, 12.0f}});
+    nl::test::add_level(*c.world, wall);
+    c.world->build_tiles(c.navmesh, tiles_request(json), box_xz(30, 0, 31, 12));
+    const nl::TileInputs after = c.world->navmeshes().tile_inputs(c.navmesh);
+    REQUIRE(after.size() == before.size());
+    int rebuilt = 0;
+    for (size_t i = 0; i < after.size(); ++i) rebuilt += after[i] != before[i] ? 1 : 0;
+    CHECK(rebuilt == 2);  // the column the wall stands in, both rows
+    CHECK(c.plan(Vec3(3, 0, 6), Vec3(57, 0, 6)).outcome != nl::PathOutcome::Complete);
+
+    // A box over nothing builds no tile and changes nothing.
+    const auto walled = c.mesh();
+    c.world->build_tiles(c.navmesh, tiles_request(json), box_xz(200, 200, 210, 210));
+    CHECK(c.mesh() == walled);
+}
+
+TEST_CASE("tiles built with other settings or for another body are refused") {
+    Corridor c;
+    const auto before = c.mesh();
+    std::string message;
+    CHECK(nl::test::code_of(
+              [&] { c.world->build_tiles(c.navmesh, tiles_request("{\"tile_size\": 64}"), box_xz(0, 0, 5, 5)); },
+              &message) == nl::ErrorCode::InvalidArgument);
+    CHECK(message.find("makes tiles of") != std::string::npos);
+    CHECK(nl::test::code_of([&] { c.world->build_tiles(c.navmesh, tiles_request("{}"), box_xz(0, 0, 5, 5)); },
+                            &message) == nl::ErrorCode::InvalidArgument);
+    CHECK(message.find("tile_size is 0") != std::string::npos);
+    nl::NavMeshBuildRequest wider = tiles_request("{\"tile_size\": 32}");
+    const std::string keep = "{\"tile_size\": 32}";
+    wider.settings_json = keep.c_str();
+    wider.agent_type.radius = 1.0f;
+    CHECK(nl::test::code_of([&] { c.world->build_tiles(c.navmesh, wider, box_xz(0, 0, 5, 5)); }, &message) ==
+          nl::ErrorCode::InvalidArgument);
+    CHECK(message.find("agent type") != std::string::npos);
+    CHECK(c.mesh() == before);
+}

@@ -20,6 +20,19 @@ namespace NavLink
         /// with one, the coordinates are in that mesh's own space and World.SetMeshTransform moves the navmesh
         /// with it.</summary>
         public MeshId Carrier;
+        /// <summary>Metres; 0 (default): not a tile. Above 0 the polygons are the tile (TileX, TileZ) of a grid
+        /// of squares this wide on the x-z plane whose tile (0, 0) has its lower corner at (TileOriginX,
+        /// TileOriginZ): it spans x in [TileOriginX + TileX * TileWidth, + TileWidth] and z alike (World.AddTile;
+        /// a navmesh's grid is NavmeshInfo.TileWidth and TileOrigin).</summary>
+        public float TileWidth;
+        /// <summary>x of tile (0, 0)'s lower corner.</summary>
+        public float TileOriginX;
+        /// <summary>z of tile (0, 0)'s lower corner.</summary>
+        public float TileOriginZ;
+        /// <summary>The tile's column.</summary>
+        public int TileX;
+        /// <summary>The tile's row.</summary>
+        public int TileZ;
 
         public NavmeshInput()
         {

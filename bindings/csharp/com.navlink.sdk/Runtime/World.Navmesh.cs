@@ -23,11 +23,47 @@ namespace NavLink
                                              string builder = null, MeshId carrier = default(MeshId),
                                              ProgressHandler progress = null)
         {
+            NavmeshId id = default(NavmeshId);
+            WithBuildDef(agentType, recast, settingsJson, builder, carrier, progress, (world, def) =>
+            {
+                NavmeshId built;
+                StatusCode status = Native.nl_navmesh_build(world, def, &built);
+                id = built;
+                return status;
+            });
+            return id;
+        }
+
+        /// <summary>Builds again, from the level as it is now, the tiles of a tiled navmesh's grid whose squares
+        /// overlap the box [boxMin, boxMax] seen from above (y is not read), with a builder plugin ("recast" when
+        /// builder is null) and its settings as BuildNavmesh takes them: they must make tiles of the navmesh's
+        /// width (the same TileSize and CellSize it was built with), and agentType must be the navmesh's. In one
+        /// step a tile loaded there is replaced, one that comes out with no walkable surface is removed, the
+        /// others are added. NavLinkException with InvalidArgument for a navmesh that is not tiled, a box not
+        /// finite or with min &gt; max (or of more than 2^22 tiles), another agent type, settings making another
+        /// tile width, or no tile left; the builder's failures; Cancelled from progress (as BuildNavmesh's);
+        /// nothing changed on a failure.</summary>
+        public unsafe void BuildTiles(NavmeshId navmesh, AgentType agentType, Vec3 boxMin, Vec3 boxMax,
+                                      RecastSettings? recast = null, string settingsJson = null, string builder = null,
+                                      ProgressHandler progress = null)
+        {
+            Vec3 lo = boxMin, hi = boxMax;  // not captured: they stay put on the stack
+            float* min = (float*)&lo, max = (float*)&hi;
+            WithBuildDef(agentType, recast, settingsJson, builder, default(MeshId), progress,
+                         (world, def) => Native.nl_navmesh_build_tiles(world, navmesh, def, min, max));
+        }
+
+        private unsafe delegate StatusCode NavmeshBuildDefCall(IntPtr world, NavmeshBuildDef* def);
+
+        // Lays the build out as an nl_navmesh_build_def over its pinned strings and makes the call with it, in the
+        // world, with progress's scope (BuildNavmesh, BuildTiles).
+        private unsafe void WithBuildDef(AgentType agentType, RecastSettings? recast, string settingsJson, string builder,
+                                         MeshId carrier, ProgressHandler progress, NavmeshBuildDefCall call)
+        {
             NavmeshBuildDef def = Native.nl_default_navmesh_build_def();
             RecastSettings settings = recast ?? default(RecastSettings);
             byte[] json = settingsJson == null ? null : System.Text.Encoding.UTF8.GetBytes(settingsJson);
             byte[] name = Utf8.EncodeZ(builder);
-            NavmeshId id;
             fixed (byte* j = json)
             fixed (byte* n = name)
             using (var scope = new ProgressScope(progress))
@@ -43,17 +79,33 @@ namespace NavLink
                 def.Carrier = carrier;
                 def.Progress = scope.Function;
                 def.ProgressUser = scope.User;
-                scope.Check(Native.nl_navmesh_build(w.Pointer, &def, &id));
+                scope.Check(call(w.Pointer, &def));
             }
+        }
+
+        /// <summary>Adds the host's navmesh (copied and repaired as nl_navmesh_add says). With input.TileWidth
+        /// &gt; 0 the polygons are one tile of a grid: the navmesh is then tiled, of that one tile, and AddTile
+        /// grows it.</summary>
+        public unsafe NavmeshId AddNavmesh(NavmeshInput input)
+        {
+            NavmeshId id = default(NavmeshId);
+            WithNavmeshDef(input, "input", (world, def) =>
+            {
+                NavmeshId added;
+                StatusCode status = Native.nl_navmesh_add(world, def, &added);
+                id = added;
+                return status;
+            });
             return id;
         }
 
-        /// <summary>Adds the host's navmesh (copied and repaired as nl_navmesh_add says).</summary>
-        public unsafe NavmeshId AddNavmesh(NavmeshInput input)
+        private unsafe delegate StatusCode NavmeshDefCall(IntPtr world, NavmeshDef* def);
+
+        // Lays `input` out as an nl_navmesh_def over its pinned arrays and makes the call with it, in the world.
+        private unsafe void WithNavmeshDef(NavmeshInput input, string name, NavmeshDefCall call)
         {
-            if (input == null) throw new ArgumentNullException("input");
+            if (input == null) throw new ArgumentNullException(name);
             NavmeshDef def = Native.nl_default_navmesh_def();
-            NavmeshId id;
             fixed (float* v = input.Vertices)
             fixed (uint* i = input.Indices)
             fixed (byte* c = input.PolygonVertexCounts)
@@ -78,9 +130,13 @@ namespace NavLink
                 def.DetailTriangleCount = (uint)(input.DetailTriangles == null ? 0 : input.DetailTriangles.Length / 3);
                 def.DetailTriangleStarts = (IntPtr)ds;
                 def.Carrier = input.Carrier;
-                Status.Check(Native.nl_navmesh_add(w.Pointer, &def, &id));
+                def.TileWidth = input.TileWidth;
+                def.TileOriginX = input.TileOriginX;
+                def.TileOriginZ = input.TileOriginZ;
+                def.TileX = input.TileX;
+                def.TileZ = input.TileZ;
+                Status.Check(call(w.Pointer, &def));
             }
-            return id;
         }
 
         public void RemoveNavmesh(NavmeshId navmesh)
@@ -125,6 +181,35 @@ namespace NavLink
                 IntPtr world = w.Pointer;
                 return ListTwoCall<BoundaryEdge>((buffer, capacity, count) =>
                     Native.nl_navmesh_get_boundary_edges(world, navmesh, (BoundaryEdge*)buffer, capacity, count));
+            }
+        }
+
+        /// <summary>Adds the host's polygons as a tile of a tiled navmesh (one built with RecastSettings.TileSize,
+        /// or added from a tile): tile.TileWidth, TileOriginX and TileOriginZ must be the navmesh's grid
+        /// (NavmeshInfo.TileWidth, TileOrigin), tile.AgentType its agent type, and no tile loaded at (TileX,
+        /// TileZ); the navmesh is joined again with it. NavLinkException with InvalidArgument otherwise (also for
+        /// a navmesh that is not tiled, and for a Carrier that is not the navmesh's), nothing changed.</summary>
+        public unsafe void AddTile(NavmeshId navmesh, NavmeshInput tile)
+        {
+            WithNavmeshDef(tile, "tile", (world, def) => Native.nl_navmesh_add_tile(world, navmesh, def));
+        }
+
+        /// <summary>Removes the tile at that place from a tiled navmesh. NavLinkException with NotFound when no tile
+        /// is loaded there (removed twice), InvalidArgument for a navmesh that is not tiled or its last tile
+        /// (remove the navmesh instead); nothing changed.</summary>
+        public void RemoveTile(NavmeshId navmesh, TileCoord tile)
+        {
+            using (var w = Enter()) Status.Check(Native.nl_navmesh_remove_tile(w.Pointer, navmesh, tile));
+        }
+
+        /// <summary>The loaded tiles' places in row order (z, then x); none for a navmesh that is not tiled.</summary>
+        public unsafe TileCoord[] GetTiles(NavmeshId navmesh)
+        {
+            using (var w = Enter())
+            {
+                IntPtr world = w.Pointer;
+                return ListTwoCall<TileCoord>((buffer, capacity, count) =>
+                    Native.nl_navmesh_get_tiles(world, navmesh, (TileCoord*)buffer, capacity, count));
             }
         }
 

@@ -261,12 +261,13 @@ extern "C" {
         out_id: *mut nl_navmesh_id,
     ) -> nl_status;
 
-    /// Adds a tile to a tiled navmesh: `def` is a tile (tile_width > 0) of the navmesh's grid, made for its agent type;
-    /// its polygons are copied. The navmesh is joined again with it (nl_navmesh_def's tile fields say how). Returns
-    /// SUCCESS, or a failure with INVALID_ARGUMENT (a navmesh that is not tiled, a def that is not a tile or on another
-    /// grid or for another agent type, a tile already loaded at its place: remove it first; its polygons, as
-    /// nl_navmesh_add; nothing changed), INVALID_HANDLE, OUT_OF_MEMORY. Thread-safe; waits for a link generation of the
-    /// navmesh running meanwhile. Added in 0.3.
+    /// Adds a tile to a tiled navmesh: `def` is a tile (tile_width > 0) of the navmesh's grid, made for its agent type,
+    /// with def->carrier the navmesh's carrier (the null id for one that rides none); its polygons are copied. The
+    /// navmesh is joined again with it (nl_navmesh_def's tile fields say how). Returns SUCCESS, or a failure with
+    /// INVALID_ARGUMENT (its polygons or agent type, as nl_navmesh_add; a navmesh that is not tiled; a def that is not
+    /// a tile, or on another grid, or for another agent type, or with another carrier; a tile already loaded at its
+    /// place: remove it first; nothing changed), INVALID_HANDLE (the navmesh; def->carrier), OUT_OF_MEMORY.
+    /// Thread-safe; waits for a link generation of the navmesh running meanwhile. Added in 0.3.
     pub fn nl_navmesh_add_tile(world: *mut nl_world, navmesh: nl_navmesh_id, def: *const nl_navmesh_def) -> nl_status;
 
     /// Removes the tile at `tile` from a tiled navmesh. Returns SUCCESS, or a failure with NOT_FOUND (no tile loaded
@@ -274,6 +275,25 @@ extern "C" {
     /// instead), INVALID_HANDLE, OUT_OF_MEMORY; nothing changed on a failure. Thread-safe; waits for a link generation
     /// of the navmesh running meanwhile. Added in 0.3.
     pub fn nl_navmesh_remove_tile(world: *mut nl_world, navmesh: nl_navmesh_id, tile: nl_tile_coord) -> nl_status;
+
+    /// Builds the tiles of a tiled navmesh's grid whose squares overlap the box \[box_min, box_max\] seen from above,
+    /// from the level as it is now, with the builder and settings of `def` (whose tiles must have the navmesh's width:
+    /// the same tile_size and cell_size as it was built with), and puts them in the navmesh as one step (as
+    /// nl_navmesh_add_tile): a tile loaded there is replaced, one that comes out with no walkable surface is removed,
+    /// the others are added. What a streaming host calls for the tiles around a player, and an editor after changing
+    /// the level there. def->agent_type must be the navmesh's; def->carrier is ignored (the navmesh's own is built on)
+    /// and the tile fields must be 0 (the navmesh's grid is used). Returns SUCCESS, or a failure with INVALID_ARGUMENT
+    /// (a navmesh that is not tiled; a box not finite or with min > max, or of more than 2^22 tiles; another agent
+    /// type; settings making another tile width; no tile would be left; def's tile fields not 0), INVALID_HANDLE,
+    /// CANCELLED (from def->progress), the builder's failures, OUT_OF_MEMORY; nothing changed on a failure.
+    /// Thread-safe; waits for a link generation of the navmesh running meanwhile. Added in 0.3.
+    pub fn nl_navmesh_build_tiles(
+        world: *mut nl_world,
+        navmesh: nl_navmesh_id,
+        def: *const nl_navmesh_build_def,
+        box_min: *const f32,
+        box_max: *const f32,
+    ) -> nl_status;
 
     /// Copies the coordinates of the loaded tiles, in row order (z, then x), into `out_tiles` (caller-owned, `capacity`
     /// entries), with the two-call pattern of nl_world_get_meshes; a solo navmesh has none. Returns SUCCESS, or a

@@ -502,6 +502,15 @@ pub struct nl_nav_point {
 /// Called on the thread that made the call. (`nl_progress_fn*`; `None` is NULL.)
 pub type nl_progress_fn = Option<unsafe extern "C" fn(user: *mut c_void, fraction: f32, stage: *const c_char) -> i32>;
 
+/// A tile's place in its grid: tile (x, z) spans x in \[origin_x + x * tile_width, + tile_width\] and z alike
+/// (nl_navmesh_info.tile_origin, tile_width). Added in 0.3.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct nl_tile_coord {
+    pub x: i32,
+    pub z: i32,
+}
+
 /// How to build a navmesh. Get one from nl_default_navmesh_build_def().
 #[repr(C)]
 #[derive(Clone, Copy, Debug)]
@@ -528,15 +537,12 @@ pub struct nl_navmesh_build_def {
     pub progress: nl_progress_fn,
     /// Passed back to `progress`; not dereferenced.
     pub progress_user: *mut c_void,
-}
-
-/// A tile's place in its grid: tile (x, z) spans x in \[origin_x + x * tile_width, + tile_width\] and z alike
-/// (nl_navmesh_info.tile_origin, tile_width).
-#[repr(C)]
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct nl_tile_coord {
-    pub x: i32,
-    pub z: i32,
+    pub tile_origin_x: f32,
+    pub tile_origin_z: f32,
+    pub tile_width: f32,
+    pub first_tile: nl_tile_coord,
+    pub tile_columns: u32,
+    pub tile_rows: u32,
 }
 
 /// What taking a link asks of an agent, going from its start to its end. Going the other way over a bidirectional link

@@ -163,6 +163,10 @@ c_enum! {
         /// `AgentState::Waiting` with this reason meanwhile), or it gave its destination up after
         /// `AgentDef::give_up_seconds` (`AgentState::Failed`).
         Crowd = sys::NL_AGENT_REASON_CROWD,
+        /// The tile it stands on was removed (`World::remove_tile`): it waits where it stood
+        /// (`AgentEventKind::Waiting`; `AgentInfo` reads `AgentState::Waiting` with this reason) until a tile
+        /// holds it again, then plans again.
+        TileUnloaded = sys::NL_AGENT_REASON_TILE_UNLOADED,
     }
 }
 
@@ -176,8 +180,8 @@ c_enum! {
         Failed = sys::NL_AGENT_EVENT_FAILED,
         Replanned = sys::NL_AGENT_EVENT_REPLANNED,
         /// It stopped for room (`AgentReason::Crowd`): stuck among other bodies for 0.75 s, or giving way
-        /// to one; its `AgentInfo` reads `AgentState::Waiting`, reason `Crowd`, until it walks on. Said
-        /// once per wait.
+        /// to one; its `AgentInfo` reads `AgentState::Waiting`, reason `Crowd`, until it walks on; or for its
+        /// tile (`AgentReason::TileUnloaded`). Said once per wait.
         Waiting = sys::NL_AGENT_EVENT_WAITING,
     }
 }

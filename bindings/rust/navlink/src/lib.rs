@@ -40,7 +40,7 @@ pub use kinds::{
 pub use level::{MeshFlags, MeshOptions};
 pub use callbacks::Progress;
 pub use links::{default_link_def, default_link_settings, link_settings_from_json, LinkDefExt, LinkExt, LinksLoadOptions};
-pub use navmesh::{default_agent_type, default_recast_settings, BuildWarnings, NavmeshBuild, NavmeshDetail, NavmeshInput};
+pub use navmesh::{default_agent_type, default_recast_settings, BuildWarnings, NavmeshBuild, NavmeshDetail, NavmeshInput, NavmeshTile};
 pub use navmesh_files::{describe_navmesh_file, NavmeshLoadOptions};
 pub use paths::{default_agent_capabilities, FinishedPath, PathBudget, PathQuery, PathRequest, PathResult, PathShortfall};
 pub use plugins::PluginSummary;

@@ -3,7 +3,7 @@ use crate::callbacks::{with_progress, Progress};
 use crate::error::{check, Result};
 use crate::level::c_string;
 use crate::list::two_call;
-use crate::types::{AgentType, BoundaryEdge, MeshId, NavPoint, NavPolygon, NavmeshId, NavmeshInfo, RecastSettings};
+use crate::types::{AgentType, BoundaryEdge, MeshId, NavPoint, NavPolygon, NavmeshId, NavmeshInfo, RecastSettings, TileCoord};
 use crate::world::World;
 use navlink_sys as sys;
 use std::ops::{BitOr, BitOrAssign};
@@ -100,8 +100,32 @@ pub struct NavmeshInput<'a> {
     pub agent_type: AgentType,
     pub detail: Option<NavmeshDetail<'a>>,
     /// A movable mesh (`MeshFlags::MOVABLE`) the navmesh rides: the coordinates above are then in that mesh's
-    /// own space, and `set_mesh_transform` moves the navmesh with it. `None`: world space, fixed.
+    /// own space, and `set_mesh_transform` moves the navmesh with it. `None`: world space, fixed. For
+    /// `World::add_tile`, the navmesh's own carrier (another is refused).
     pub carrier: Option<MeshId>,
+    /// The polygons are this tile of a grid (`World::add_tile`; `add_navmesh` then makes a tiled navmesh of this
+    /// one tile, which `add_tile` grows). `None`: not a tile.
+    pub tile: Option<NavmeshTile>,
+}
+
+/// Where a host's polygons go as one tile of a tiled navmesh (`nl_navmesh_def`'s tile fields): the tile
+/// `coord` of a grid of squares `width` metres wide on the x-z plane whose tile (0, 0) has its lower corner at
+/// `origin` (x, z). Tile (x, z) spans x in `[origin[0] + x * width, + width]` and z alike.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct NavmeshTile {
+    /// The tile's column (`x`) and row (`z`).
+    pub coord: TileCoord,
+    /// The squares' side, metres (> 0).
+    pub width: f32,
+    /// x and z of tile (0, 0)'s lower corner.
+    pub origin: [f32; 2],
+}
+
+impl NavmeshTile {
+    /// The tile at `coord` of a navmesh's grid (`NavmeshInfo::tile_width`, `tile_origin`).
+    pub fn on_grid_of(info: &NavmeshInfo, coord: TileCoord) -> Self {
+        NavmeshTile { coord, width: info.tile_width, origin: info.tile_origin }
+    }
 }
 
 impl<'a> NavmeshInput<'a> {
@@ -117,6 +141,7 @@ impl<'a> NavmeshInput<'a> {
             agent_type: def.agent_type,
             detail: None,
             carrier: None,
+            tile: None,
         }
     }
 }
@@ -144,46 +169,52 @@ impl World {
     }
 
     fn build_navmesh_reporting(&self, build: &NavmeshBuild<'_>, progress: Option<Progress<'_>>) -> Result<NavmeshId> {
-        let builder = build.builder.map(|b| c_string(b.as_bytes(), "builder")).transpose()?;
-        let mut def = unsafe { sys::nl_default_navmesh_build_def() };
-        def.agent_type = build.agent_type;
-        def.builder = builder.as_ref().map_or(ptr::null(), |b| b.as_ptr());
-        let recast = build.recast.map(|r| r.to_c(unsafe { sys::nl_default_recast_settings() }));
-        def.settings = recast.as_ref().map_or(ptr::null(), |r| r as *const sys::nl_recast_settings as *const c_void);
-        if let Some(json) = build.settings_json {
-            // A non-null pointer even for "", which is not a JSON object: the library says so.
-            def.settings_json = if json.is_empty() { b"\0".as_ptr().cast() } else { json.as_ptr().cast() };
-            def.settings_json_length = json.len();
-        }
-        def.carrier = build.carrier.unwrap_or_default();
         let mut id = NavmeshId::default();
-        with_progress(progress, |function, user| {
-            def.progress = function;
-            def.progress_user = user;
-            unsafe { sys::nl_navmesh_build(self.raw(), &def, &mut id) }
-        })?;
+        with_build_def(build, progress, |def| unsafe { sys::nl_navmesh_build(self.raw(), def, &mut id) })?;
         Ok(id)
+    }
+
+    /// Builds again, from the level as it is now, the tiles of a tiled navmesh's grid whose squares overlap the
+    /// box `[box_min, box_max]` seen from above (y is not read), with `build`'s builder and settings as
+    /// `build_navmesh` takes them: they must make tiles of the navmesh's width (the same `tile_size` and
+    /// `cell_size` it was built with), and `build.agent_type` must be the navmesh's; `build.carrier` is not read
+    /// (the navmesh's level is). In one step a tile loaded there is replaced, one that comes out with no walkable
+    /// surface is removed, the others are added. An `Error` with INVALID_ARGUMENT for a navmesh that is not tiled,
+    /// a box not finite or with min > max (or of more than 2^22 tiles), another agent type, settings making another
+    /// tile width, or no tile left; the builder's failures; nothing changed on a failure.
+    pub fn build_tiles(&self, navmesh: NavmeshId, build: &NavmeshBuild<'_>, box_min: [f32; 3], box_max: [f32; 3]) -> Result<()> {
+        self.build_tiles_reporting(navmesh, build, box_min, box_max, None)
+    }
+
+    /// `build_tiles`, telling `progress` of the build as `build_navmesh_with_progress` does: returning false
+    /// cancels it (an `Error` with CANCELLED, nothing changed), and a panic in `progress` resumes here.
+    pub fn build_tiles_with_progress(
+        &self,
+        navmesh: NavmeshId,
+        build: &NavmeshBuild<'_>,
+        box_min: [f32; 3],
+        box_max: [f32; 3],
+        progress: Progress<'_>,
+    ) -> Result<()> {
+        self.build_tiles_reporting(navmesh, build, box_min, box_max, Some(progress))
+    }
+
+    fn build_tiles_reporting(
+        &self,
+        navmesh: NavmeshId,
+        build: &NavmeshBuild<'_>,
+        box_min: [f32; 3],
+        box_max: [f32; 3],
+        progress: Option<Progress<'_>>,
+    ) -> Result<()> {
+        with_build_def(build, progress, |def| unsafe {
+            sys::nl_navmesh_build_tiles(self.raw(), navmesh, def, box_min.as_ptr(), box_max.as_ptr())
+        })
     }
 
     /// Adds the host's navmesh (copied, repaired as nl_navmesh_add says).
     pub fn add_navmesh(&self, input: &NavmeshInput<'_>) -> Result<NavmeshId> {
-        let mut def = unsafe { sys::nl_default_navmesh_def() };
-        def.vertices = input.vertices.as_ptr();
-        def.vertex_count = (input.vertices.len() / 3) as u32;
-        def.indices = input.indices.as_ptr();
-        def.polygon_vertex_counts = input.polygon_vertex_counts.map_or(ptr::null(), |c| c.as_ptr());
-        def.polygon_count = input.polygon_vertex_counts.map_or(input.indices.len() / 3, |c| c.len()) as u32;
-        def.areas = input.areas.map_or(ptr::null(), |a| a.as_ptr());
-        def.weld_tolerance = input.weld_tolerance;
-        def.agent_type = input.agent_type;
-        if let Some(detail) = &input.detail {
-            def.detail_vertices = detail.vertices.as_ptr();
-            def.detail_vertex_count = (detail.vertices.len() / 3) as u32;
-            def.detail_triangles = detail.triangles.as_ptr();
-            def.detail_triangle_count = (detail.triangles.len() / 3) as u32;
-            def.detail_triangle_starts = detail.triangle_starts.as_ptr();
-        }
-        def.carrier = input.carrier.unwrap_or_default();
+        let def = navmesh_def(input);
         let mut id = NavmeshId::default();
         check(unsafe { sys::nl_navmesh_add(self.raw(), &def, &mut id) })?;
         Ok(id)
@@ -222,6 +253,28 @@ impl World {
         })
     }
 
+    /// Adds the host's polygons as a tile (`tile.tile`, which must be `Some`) of a tiled navmesh: one built with
+    /// `RecastSettings::tile_size`, or added from a tile. The tile must be on the navmesh's grid
+    /// (`NavmeshTile::on_grid_of` its info), made for its agent type, at a place no tile holds; the navmesh is
+    /// joined again with it. An `Error` with INVALID_ARGUMENT otherwise (also for a navmesh that is not tiled),
+    /// nothing changed.
+    pub fn add_tile(&self, navmesh: NavmeshId, tile: &NavmeshInput<'_>) -> Result<()> {
+        let def = navmesh_def(tile);
+        check(unsafe { sys::nl_navmesh_add_tile(self.raw(), navmesh, &def) }).map(drop)
+    }
+
+    /// Removes the tile at `tile` from a tiled navmesh. An `Error` with NOT_FOUND (`ErrorKind::NotFound`) when
+    /// no tile is loaded there (removed twice), INVALID_ARGUMENT for a navmesh that is not tiled or its last tile
+    /// (remove the navmesh instead); nothing changed.
+    pub fn remove_tile(&self, navmesh: NavmeshId, tile: TileCoord) -> Result<()> {
+        check(unsafe { sys::nl_navmesh_remove_tile(self.raw(), navmesh, tile) }).map(drop)
+    }
+
+    /// The loaded tiles' places in row order (z, then x); empty for a navmesh that is not tiled.
+    pub fn tiles(&self, navmesh: NavmeshId) -> Result<Vec<TileCoord>> {
+        two_call(|buffer, capacity, count| unsafe { sys::nl_navmesh_get_tiles(self.raw(), navmesh, buffer, capacity, count) })
+    }
+
     /// The navmesh point nearest each query point within the box `point +- half_extents`.
     pub fn find_nearest(&self, navmesh: NavmeshId, points: &[[f32; 3]], half_extents: [f32; 3]) -> Result<Vec<NavPoint>> {
         let mut out = vec![sys::nl_nav_point::default(); points.len()];
@@ -241,4 +294,59 @@ impl World {
     pub fn navmeshes(&self) -> Result<Vec<NavmeshId>> {
         two_call(|buffer, capacity, count| unsafe { sys::nl_world_get_navmeshes(self.raw(), buffer, capacity, count) })
     }
+}
+
+/// `build` as an `nl_navmesh_build_def` (its builder's name and settings alive for the call), with `progress`'s
+/// pair, handed to `call` (`build_navmesh`, `build_tiles`).
+fn with_build_def(
+    build: &NavmeshBuild<'_>,
+    progress: Option<Progress<'_>>,
+    call: impl FnOnce(&sys::nl_navmesh_build_def) -> u32,
+) -> Result<()> {
+    let builder = build.builder.map(|b| c_string(b.as_bytes(), "builder")).transpose()?;
+    let mut def = unsafe { sys::nl_default_navmesh_build_def() };
+    def.agent_type = build.agent_type;
+    def.builder = builder.as_ref().map_or(ptr::null(), |b| b.as_ptr());
+    let recast = build.recast.map(|r| r.to_c(unsafe { sys::nl_default_recast_settings() }));
+    def.settings = recast.as_ref().map_or(ptr::null(), |r| r as *const sys::nl_recast_settings as *const c_void);
+    if let Some(json) = build.settings_json {
+        // A non-null pointer even for "", which is not a JSON object: the library says so.
+        def.settings_json = if json.is_empty() { b"\0".as_ptr().cast() } else { json.as_ptr().cast() };
+        def.settings_json_length = json.len();
+    }
+    def.carrier = build.carrier.unwrap_or_default();
+    with_progress(progress, |function, user| {
+        def.progress = function;
+        def.progress_user = user;
+        call(&def)
+    })
+}
+
+/// `input` as an `nl_navmesh_def`, pointing into its slices (which outlive the def's use in the call).
+fn navmesh_def(input: &NavmeshInput<'_>) -> sys::nl_navmesh_def {
+    let mut def = unsafe { sys::nl_default_navmesh_def() };
+    def.vertices = input.vertices.as_ptr();
+    def.vertex_count = (input.vertices.len() / 3) as u32;
+    def.indices = input.indices.as_ptr();
+    def.polygon_vertex_counts = input.polygon_vertex_counts.map_or(ptr::null(), |c| c.as_ptr());
+    def.polygon_count = input.polygon_vertex_counts.map_or(input.indices.len() / 3, |c| c.len()) as u32;
+    def.areas = input.areas.map_or(ptr::null(), |a| a.as_ptr());
+    def.weld_tolerance = input.weld_tolerance;
+    def.agent_type = input.agent_type;
+    if let Some(detail) = &input.detail {
+        def.detail_vertices = detail.vertices.as_ptr();
+        def.detail_vertex_count = (detail.vertices.len() / 3) as u32;
+        def.detail_triangles = detail.triangles.as_ptr();
+        def.detail_triangle_count = (detail.triangles.len() / 3) as u32;
+        def.detail_triangle_starts = detail.triangle_starts.as_ptr();
+    }
+    def.carrier = input.carrier.unwrap_or_default();
+    if let Some(tile) = &input.tile {
+        def.tile_width = tile.width;
+        def.tile_origin_x = tile.origin[0];
+        def.tile_origin_z = tile.origin[1];
+        def.tile_x = tile.coord.x;
+        def.tile_z = tile.coord.z;
+    }
+    def
 }

@@ -202,7 +202,7 @@ plain_struct! {
 }
 
 /// A tile's place in its grid: tile (x, z) spans x in \[origin_x + x * tile_width, + tile_width\] and z alike
-/// (nl_navmesh_info.tile_origin, tile_width).
+/// (nl_navmesh_info.tile_origin, tile_width). Added in 0.3.
 ///
 /// navlink-sys's `nl_tile_coord` (no `size`, no `reserved`: nothing to leave out).
 pub type TileCoord = sys::nl_tile_coord;

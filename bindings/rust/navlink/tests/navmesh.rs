@@ -4,9 +4,9 @@ mod common;
 
 use common::*;
 use navlink::{
-    default_agent_type, default_link_def, default_link_settings, default_recast_settings, status, AgentType, BuildWarnings, Link, LinkDef,
-    LinkDefExt, LinkExt, LinkSettings, MeshFlags, MeshId, MeshOptions, NavmeshBuild, NavmeshId, NavmeshInput, PathOutcome, PathQuery, World,
-    NO_POLYGON,
+    default_agent_type, default_link_def, default_link_settings, default_recast_settings, status, AgentReason, AgentType, BuildWarnings,
+    ErrorKind, Link, LinkDef, LinkDefExt, LinkExt, LinkSettings, MeshFlags, MeshId, MeshOptions, NavmeshBuild, NavmeshId, NavmeshInput,
+    NavmeshTile, PathOutcome, PathQuery, RecastSettings, TileCoord, World, NO_POLYGON,
 };
 
 #[test]
@@ -83,6 +83,94 @@ fn navmesh_from_the_host() {
     assert_fails(world.polygon(navmesh, 99), status::INVALID_ARGUMENT, "polygon");
     indices[2] = 40;
     assert_fails(world.add_navmesh(&NavmeshInput::triangles(&vertices, &indices)), status::INVALID_ARGUMENT, "indices");
+}
+
+/// A 40 x 1 x 12 m floor (top y = 0) built in tiles of 32 cells (9.6 m): the tiles listed are the info's, in row
+/// order; the tile under (20, 0, 3) removed leaves a hole and is gone from the list, removed again it is not
+/// found; built again from the level in a box around its centre it is back (tile_size 64 refused, nothing
+/// changed); removed once more, a hand-made quad added as that tile (the floor eroded 0.6 m within the tile's
+/// square) fills the hole and joins its neighbours.
+#[test]
+fn tiles_out_and_in_again() {
+    let world = World::new().unwrap();
+    add_box(&world, [0.0, -1.0, 0.0], [40.0, 0.0, 12.0]);
+    let defaults = default_recast_settings();
+    assert_eq!((defaults.tile_size, defaults.tile_border), (0, 0), "solo by default");
+    let recast = RecastSettings { tile_size: 32, ..defaults };
+    let navmesh = world.build_navmesh(&NavmeshBuild { recast: Some(recast), ..NavmeshBuild::new(default_agent_type()) }).unwrap();
+    let info = world.navmesh_info(navmesh).unwrap();
+    let tiles = world.tiles(navmesh).unwrap();
+    assert!(tiles.len() > 1, "{:?}", tiles);
+    assert_eq!(tiles.len() as u32, info.tile_count);
+    let mut row_order = tiles.clone();
+    row_order.sort_by_key(|t| (t.z, t.x));
+    assert_eq!(tiles, row_order, "row order: z, then x");
+    assert!((info.tile_width - 32.0 * recast.cell_size).abs() < 1e-4, "{}", info.tile_width);
+    let (width, origin) = (info.tile_width, info.tile_origin);
+    let middle = [20.0, 0.0, 3.0];
+    let tile = TileCoord { x: ((middle[0] - origin[0]) / width).floor() as i32, z: ((middle[2] - origin[1]) / width).floor() as i32 };
+    assert!(tiles.contains(&tile), "{:?} in {:?}", tile, tiles);
+    let on_navmesh = |point: [f32; 3]| world.find_nearest(navmesh, &[point], [0.4, 0.3, 0.4]).unwrap()[0].found;
+    let end_to_end = || world.find_path(&PathQuery::new(navmesh, [2.0, 0.0, 3.0], [38.0, 0.0, 3.0], walker())).unwrap().outcome();
+    assert!(on_navmesh(middle));
+    assert_eq!(end_to_end(), PathOutcome::Complete);
+
+    world.remove_tile(navmesh, tile).unwrap();
+    let after = world.tiles(navmesh).unwrap();
+    assert_eq!(after.len(), tiles.len() - 1);
+    assert_eq!(after, tiles.iter().copied().filter(|t| *t != tile).collect::<Vec<_>>());
+    assert_eq!(world.navmesh_info(navmesh).unwrap().tile_count as usize, after.len());
+    assert!(!on_navmesh(middle), "a hole where the tile was");
+    let twice = world.remove_tile(navmesh, tile);
+    assert_eq!(twice.as_ref().map_err(|e| e.kind()), Err(ErrorKind::NotFound));
+    assert_fails(twice, status::NOT_FOUND, "no tile");
+    assert_eq!(world.tiles(navmesh).unwrap(), after, "a refused removal changes nothing");
+
+    // The tile built again from the level, with the same settings, in a small box around its centre.
+    let centre = [origin[0] + (tile.x as f32 + 0.5) * width, 0.0, origin[1] + (tile.z as f32 + 0.5) * width];
+    let (box_min, box_max) = ([centre[0] - 0.5, -1.0, centre[2] - 0.5], [centre[0] + 0.5, 1.0, centre[2] + 0.5]);
+    let same = NavmeshBuild { recast: Some(recast), ..NavmeshBuild::new(default_agent_type()) };
+    world.build_tiles(navmesh, &same, box_min, box_max).unwrap();
+    assert_eq!(world.tiles(navmesh).unwrap(), tiles, "the built tile is back in its place");
+    assert_eq!(world.navmesh_info(navmesh).unwrap().tile_count as usize, tiles.len());
+    assert!(on_navmesh(middle), "the built tile fills the hole");
+    assert_eq!(end_to_end(), PathOutcome::Complete, "the built tile joins its neighbours");
+    // Settings making tiles of another width (64 cells) are refused, and change nothing.
+    let rebuilt = (world.navmesh_info(navmesh).unwrap().polygon_count, world.navmesh_vertices(navmesh).unwrap());
+    let wider = NavmeshBuild { recast: Some(RecastSettings { tile_size: 64, ..defaults }), ..same };
+    let refused = world.build_tiles(navmesh, &wider, box_min, box_max);
+    assert_eq!(refused.as_ref().map_err(|e| e.kind()), Err(ErrorKind::InvalidArgument));
+    assert_fails(refused, status::INVALID_ARGUMENT, "makes tiles of");
+    assert_eq!(world.tiles(navmesh).unwrap(), tiles, "a refused build changes no tile");
+    assert_eq!(world.navmesh_info(navmesh).unwrap().tile_count as usize, tiles.len());
+    assert_eq!((world.navmesh_info(navmesh).unwrap().polygon_count, world.navmesh_vertices(navmesh).unwrap()), rebuilt);
+    assert_eq!(end_to_end(), PathOutcome::Complete);
+    world.remove_tile(navmesh, tile).unwrap();
+    assert_eq!(world.tiles(navmesh).unwrap(), after);
+
+    // The host's tile: one quad on the navmesh's grid.
+    let (x0, z0) = ((origin[0] + tile.x as f32 * width).max(0.6), (origin[1] + tile.z as f32 * width).max(0.6));
+    let (x1, z1) = ((origin[0] + (tile.x + 1) as f32 * width).min(39.4), (origin[1] + (tile.z + 1) as f32 * width).min(11.4));
+    let corners = [x0, 0.0, z0, x0, 0.0, z1, x1, 0.0, z1, x1, 0.0, z0];
+    let place = NavmeshTile::on_grid_of(&info, tile);
+    assert_eq!(place, NavmeshTile { coord: tile, width, origin });
+    let hand_made = NavmeshInput { tile: Some(place), ..quad(&corners) };
+    world.add_tile(navmesh, &hand_made).unwrap();
+    assert_eq!(world.tiles(navmesh).unwrap(), tiles);
+    assert_eq!(world.navmesh_info(navmesh).unwrap().tile_count as usize, tiles.len());
+    assert!(on_navmesh(middle), "the hand-made tile fills the hole");
+    assert_eq!(end_to_end(), PathOutcome::Complete, "the tile joins its neighbours");
+    assert_fails(world.add_tile(navmesh, &hand_made), status::INVALID_ARGUMENT, "loaded already");
+    let elsewhere = NavmeshTile { coord: TileCoord { x: 99, z: 0 }, width: 2.0 * width, origin };
+    let on_another_grid = NavmeshInput { tile: Some(elsewhere), ..quad(&corners) };
+    assert_fails(world.add_tile(navmesh, &on_another_grid), status::INVALID_ARGUMENT, "another grid");
+    assert_fails(world.add_tile(navmesh, &quad(&corners)), status::INVALID_ARGUMENT, "not a tile");
+    // A solo navmesh has no tiles and takes none.
+    let solo = world.add_navmesh(&quad(&[-5.0, 0.0, -5.0, -5.0, 0.0, 5.0, 5.0, 0.0, 5.0, 5.0, 0.0, -5.0])).unwrap();
+    assert_eq!((world.tiles(solo).unwrap(), world.navmesh_info(solo).unwrap().tile_count), (vec![], 0));
+    assert_fails(world.remove_tile(solo, TileCoord { x: 0, z: 0 }), status::INVALID_ARGUMENT, "not tiled");
+    assert_eq!(AgentReason::from_raw(navlink::sys::NL_AGENT_REASON_TILE_UNLOADED), AgentReason::TileUnloaded);
+    assert_eq!(AgentReason::TileUnloaded.to_raw(), 9);
 }
 
 /// The moving surface: an 8 x 4 m movable box (top y = 0 in its own space) carrying a 7.2 x 3.2 m navmesh

@@ -189,6 +189,12 @@ namespace NavLink
         public IntPtr Progress;
         /// <summary>Passed back to <c>progress</c>; not dereferenced.</summary>
         public IntPtr ProgressUser;
+        public float TileOriginX;
+        public float TileOriginZ;
+        public float TileWidth;
+        public TileCoord FirstTile;
+        public uint TileColumns;
+        public uint TileRows;
     }
 
     /// <summary>A link to add, or the new state of one to update. Get one from nl_default_link_def().

@@ -73,7 +73,7 @@ namespace NavLink
     }
 
     /// <summary>A tile's place in its grid: tile (x, z) spans x in [origin_x + x * tile_width, + tile_width] and z
-    /// alike (nl_navmesh_info.tile_origin, tile_width). (nl_tile_coord)</summary>
+    /// alike (nl_navmesh_info.tile_origin, tile_width). Added in 0.3. (nl_tile_coord)</summary>
     [StructLayout(LayoutKind.Sequential)]
     public partial struct TileCoord
     {

@@ -40,6 +40,22 @@ namespace NavLink
         }
     }
 
+    public partial struct TileCoord : IEquatable<TileCoord>
+    {
+        public TileCoord(int x, int z)
+        {
+            X = x;
+            Z = z;
+        }
+
+        public bool Equals(TileCoord o) { return X == o.X && Z == o.Z; }
+        public override bool Equals(object o) { return o is TileCoord && Equals((TileCoord)o); }
+        public override int GetHashCode() { return X * 31 + Z; }
+        public static bool operator ==(TileCoord a, TileCoord b) { return a.Equals(b); }
+        public static bool operator !=(TileCoord a, TileCoord b) { return !a.Equals(b); }
+        public override string ToString() { return "(" + X + ", " + Z + ")"; }
+    }
+
     public unsafe partial struct AgentTrajectory
     {
         /// <summary>Points[k], k in 0..3 (C's float[4][3], x y z of each point in turn). For TrajectoryKind.Fall;
