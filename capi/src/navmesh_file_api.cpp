@@ -28,7 +28,14 @@ constexpr uint32_t kKnownLoadFlags = NL_NAVMESH_LOAD_SAME_LEVEL;
 std::vector<uint8_t> saved_file(const nl::World& w, nl_navmesh_id navmesh) {
     const nl::NavMeshRegistry::Saved saved = w.navmeshes().saved(to_handle(navmesh));
     std::vector<nl::Link> links;
-    for (const nl::StoredLink& l : *saved.links) links.push_back(l.link);
+    for (const nl::StoredLink& l : *saved.links) {
+        // The file holds the navmesh as it is now: a link off its loaded tiles would not load back.
+        if (l.link.start_polygon == nl::kNoPolygon || l.link.end_polygon == nl::kNoPolygon)
+            fail(ErrorCode::InvalidArgument, "link {", l.id.index1 & nl::kHandleSlotMask, ", ", l.id.revision,
+                 "} has an end on a tile that is not loaded: save with every tile its links reach loaded (or "
+                 "remove the link)");
+        links.push_back(l.link);
+    }
     return nl::write_navmesh_file(*saved.navmesh, links, saved.made_for, saved.rides_carrier);
 }
 

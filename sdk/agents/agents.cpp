@@ -296,6 +296,11 @@ AgentInfo info_of(const Agent& a) {
     // Walking without getting anywhere (pressed in a crowd, queueing at a door): waiting for room.
     info.state = a.waiting_for_room ? AgentState::Waiting : a.state;
     info.reason = a.waiting_for_room ? AgentReason::Crowd : a.reason;
+    // On a tile that was removed, whatever the host asked since (a new destination waits for it too).
+    if (a.awaiting_tile && a.state != AgentState::Failed) {
+        info.state = AgentState::Waiting;
+        info.reason = AgentReason::TileUnloaded;
+    }
     info.position = pose.world_point(a.position);
     info.velocity = pose.world_vector(a.velocity);
     info.polygon = a.polygon;

@@ -103,7 +103,7 @@ void Agents::check_against_world(Step& s) {
             // One that failed for another reason says so too: its NO_PATH no longer says why it stands.
             const std::shared_ptr<const PathGraph> graph = s.graph_of(a.def.navmesh);
             if (a.reason != AgentReason::NavMeshRemoved && !graph) a.fail(AgentReason::NavMeshRemoved);
-            if (graph && a.stands_on != graph->navmesh_ptr()) stand_on_navmesh_now(a, *graph);
+            if (graph && (a.stands_on != graph->navmesh_ptr() || a.awaiting_tile)) stand_on_navmesh_now(a, *graph);
             continue;
         }
         s.current[i] = s.graph_of(a.def.navmesh);
@@ -112,7 +112,8 @@ void Agents::check_against_world(Step& s) {
             a.fail(AgentReason::NavMeshRemoved);
             continue;
         }
-        if (a.stands_on != s.current[i]->navmesh_ptr() && !stand_on_navmesh_now(a, *s.current[i])) {
+        if ((a.stands_on != s.current[i]->navmesh_ptr() || a.awaiting_tile) &&
+            !stand_on_navmesh_now(a, *s.current[i])) {
             s.current[i] = nullptr;  // on no tile: it stands where it is, outside every phase, till one holds it
             continue;
         }
@@ -158,15 +159,18 @@ void Agents::check_against_world(Step& s) {
 bool Agents::stand_on_navmesh_now(Agent& a, const PathGraph& now) {
     const NavMesh& navmesh = now.navmesh();
     if (a.motion) {
+        // Its polygons stay indices of this navmesh until it lands; then it is placed on the ground as
+        // any other (stands_on still differs): on the surface, or waiting if no tile holds it.
         const NavPoint landing = navmesh.find_nearest_anywhere(a.motion->to(), Vec3(0.5f, 1.0f, 0.5f));
         a.landing_polygon = a.polygon = landing.polygon;
-        a.stands_on = now.navmesh_ptr();
+        a.stands_on.reset();
         return true;
     }
     NavPoint here;
     if (navmesh.tiles().holds_point(a.position.x(), a.position.z()))
         here = navmesh.find_nearest(a.position, Vec3(2.0f, 2.0f, 2.0f));
     if (!here.found) {
+        a.stands_on = now.navmesh_ptr();  // not the old one's memory: awaiting_tile brings it back here
         if (a.state == AgentState::Failed) {
             a.awaiting_tile = true;  // stands on nothing: no phase moves it
             a.polygon = kNoPolygon;
@@ -400,8 +404,10 @@ void Agents::take_off(Step& s) {
         if (usable && a.next + 1 < a.path.size())
             usable = (motion.from() - point.position).norm() < kSameEnd &&
                      (motion.to() - a.path[a.next + 1].position).norm() < kSameEnd;
-        // A cross link whose landing navmesh was removed meanwhile leads nowhere: plan again.
+        // A cross link whose landing navmesh was removed meanwhile leads nowhere, nor a link parked
+        // with an end on a tile not loaded: plan again.
         if (usable && link.crosses() && !s.graph_of(link.landing_navmesh)) usable = false;
+        if (usable && (link.start_polygon == kNoPolygon || link.end_polygon == kNoPolygon)) usable = false;
         if (!usable) {
             a.at_takeoff = false;
             a.link = Handle{};

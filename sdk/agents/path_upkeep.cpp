@@ -29,7 +29,9 @@ PathUpkeep check_path(const Agent& agent, const PathGraph& now, LinkLookup& link
         if (point.segment == kSegmentWalk) continue;
         const Link* planned = links.find(*agent.graph, point.link);
         const Link* current = links.find(now, point.link);
-        const bool serves = planned && current && current->enabled && current->start == planned->start &&
+        // A link parked with an end on a tile not loaded (kNoPolygon) serves no path.
+        const bool serves = planned && current && current->enabled && current->start_polygon != kNoPolygon &&
+                            current->end_polygon != kNoPolygon && current->start == planned->start &&
                             current->end == planned->end && (!point.reversed || current->bidirectional) &&
                             can_take(*current, point.reversed, agent.def.capabilities);
         if (!serves) return {PathUpkeep::LinkGone, point.link};

@@ -1,5 +1,6 @@
 // Whether an agent's path still holds when its navmesh's links change: the links it has yet to take
-// must still exist, be enabled, lie where they lay and be within its body. An agent whose path holds
+// must still exist, be enabled, lie where they lay (not parked off a removed tile) and be within its
+// body. An agent whose path holds
 // keeps it (new links serve from its next plan); one whose path lost a link plans again.
 #pragma once
 

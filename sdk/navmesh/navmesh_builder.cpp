@@ -83,6 +83,15 @@ private:
             std::fabs(grid.origin_x) > kCoordinateLimit || std::fabs(grid.origin_z) > kCoordinateLimit)
             fail_field(ErrorCode::InvalidArgument, "tile_origin is not finite or beyond the coordinate limit");
         if (in_.tiles.tiles.empty()) fail_field(ErrorCode::InvalidArgument, "tiles: a tile grid but no tile");
+        for (size_t t = 0; t < in_.tiles.tiles.size(); ++t) {
+            const TileCoord& at = in_.tiles.tiles[t];
+            const double far = std::max({std::fabs(grid.line_x(at.x)), std::fabs(grid.line_x(int64_t(at.x) + 1)),
+                                         std::fabs(grid.line_z(at.z)), std::fabs(grid.line_z(int64_t(at.z) + 1))});
+            if (std::fabs(double(at.x)) > kMaxTileIndex || std::fabs(double(at.z)) > kMaxTileIndex ||
+                !(far <= kCoordinateLimit))
+                fail_field(ErrorCode::InvalidArgument, "tile_x, tile_z: tile (", at.x, ", ", at.z,
+                           ") lies beyond the coordinate limit (or its index beyond 2^30)");
+        }
         for (size_t t = 0; t + 1 < in_.tiles.tiles.size(); ++t)
             if (!(in_.tiles.tiles[t] < in_.tiles.tiles[t + 1]))
                 fail_field(ErrorCode::InvalidArgument, "tiles[", t + 1, "] is out of row order or given twice");

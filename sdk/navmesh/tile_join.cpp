@@ -120,10 +120,10 @@ NavMeshInput join_tiles(const std::vector<const NavMeshInput*>& given) {
         const TileCoord& at = out.tiles.tiles[rank];
         for (const Vec3& given_vertex : tile.vertices) {
             const Vec3 v = on_navmesh_grid(given_vertex);
-            const bool on_line = std::fabs(v.x() - grid.line_x(at.x)) <= kOnBorder ||
-                                 std::fabs(v.x() - grid.line_x(at.x + 1)) <= kOnBorder ||
-                                 std::fabs(v.z() - grid.line_z(at.z)) <= kOnBorder ||
-                                 std::fabs(v.z() - grid.line_z(at.z + 1)) <= kOnBorder;
+            // Far from the origin, the tile width's float rounding adds up over the tiles to the line.
+            auto near = [](double a, double line) { return std::fabs(a - line) <= kOnBorder + 1e-7 * std::fabs(line); };
+            const bool on_line = near(v.x(), grid.line_x(at.x)) || near(v.x(), grid.line_x(int64_t(at.x) + 1)) ||
+                                 near(v.z(), grid.line_z(at.z)) || near(v.z(), grid.line_z(int64_t(at.z) + 1));
             if (on_line)
                 border.push_back(BorderCorner{std::llround(double(v.x()) * unit), std::llround(double(v.z()) * unit),
                                               v.y(), static_cast<uint32_t>(all.size())});

@@ -10,6 +10,9 @@
 
 namespace nl {
 
+// The largest tile index (either way) a navmesh holds: x + 1 never overflows.
+constexpr double kMaxTileIndex = double(1 << 30);
+
 struct TileCoord {
     int32_t x = 0;
     int32_t z = 0;
@@ -26,8 +29,8 @@ struct TileGrid {
 
     bool tiled() const { return tile_width > 0.0f; }
     // The lines between tiles: tile (x, z) spans [line_x(x), line_x(x + 1)] in x.
-    double line_x(int32_t x) const { return double(origin_x) + double(x) * tile_width; }
-    double line_z(int32_t z) const { return double(origin_z) + double(z) * tile_width; }
+    double line_x(int64_t x) const { return double(origin_x) + double(x) * tile_width; }
+    double line_z(int64_t z) const { return double(origin_z) + double(z) * tile_width; }
     // The tile (x, z) lies in; on a line between two, the higher one. Saturates far off the grid.
     TileCoord tile_at(float x, float z) const {
         auto index = [&](double v, float origin) {

@@ -174,11 +174,24 @@ std::vector<Handle> NavMeshRegistry::handles() const {
     return out;
 }
 
+Link NavMeshRegistry::placed_on_current(const Entry& e, Link link) const {
+    // A link is placed by its writer outside the lock; tiles added or removed meanwhile replaced the
+    // navmesh it was placed on. Where a tile may have changed, its ends are placed again here (kept
+    // where they still lie, parked off the loaded tiles). A navmesh without tiles never changes.
+    if (!e.tiles.empty()) link.start_polygon = placed_again(*e.navmesh, link.start, link.start_polygon);
+    if (!link.crosses()) {
+        if (!e.tiles.empty()) link.end_polygon = placed_again(*e.navmesh, link.end, link.end_polygon);
+    } else if (const Entry* landing = navmeshes_.find(link.landing_navmesh); landing && !landing->tiles.empty()) {
+        link.end_polygon = placed_again(*landing->navmesh, link.end, link.end_polygon);
+    }
+    return link;
+}
+
 Handle NavMeshRegistry::insert_link(Handle navmesh, Entry& e, const Link& link) {
     // Room first (grown geometrically: one more each time copied the list on every add), so that a
     // failure leaves no link without its place in the list.
     if (e.link_ids.size() == e.link_ids.capacity()) e.link_ids.reserve(2 * e.link_ids.size() + 8);
-    const Handle id = links_.insert(LinkEntry{navmesh, on_navmesh_grid(link)});
+    const Handle id = links_.insert(LinkEntry{navmesh, placed_on_current(e, on_navmesh_grid(link))});
     e.link_ids.push_back(id);
     e.snapshot.reset();
     return id;
@@ -194,9 +207,10 @@ void NavMeshRegistry::update_link(Handle link, const Link& replacement) {
     LinkEntry* found = links_.find(link);
     if (!found) fail_stale("link", link);
     const bool generated = found->link.generated;
-    found->link = on_navmesh_grid(replacement);
+    Entry& e = entry(found->navmesh);
+    found->link = placed_on_current(e, on_navmesh_grid(replacement));
     found->link.generated = generated;
-    entry(found->navmesh).snapshot.reset();
+    e.snapshot.reset();
 }
 
 void NavMeshRegistry::remove_link(Handle link) {

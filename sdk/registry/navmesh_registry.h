@@ -180,6 +180,9 @@ private:
     template <typename Goes>
     void erase_links(Entry& e, Goes&& goes);
     Handle insert_link(Handle navmesh, Entry& e, const Link& link);
+    // The link with its ends placed on the navmeshes as they are now (where tiles may have changed
+    // since its writer placed it). Needs the lock.
+    Link placed_on_current(const Entry& e, Link link) const;
 
     mutable SharedMutex mutex_{"the navmeshes"};
     SlotMap<Entry> navmeshes_;

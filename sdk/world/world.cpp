@@ -65,16 +65,63 @@ Handle World::add_navmesh(const NavMeshInput& input, Handle carrier) {
         std::lock_guard lock(carrier_moves_);
         carrier_placement(carrier);  // a bad carrier before the polygons' work
     }
-    std::shared_ptr<const NavMesh> navmesh = nl::build_navmesh(input);
-    log_repairs(*navmesh);
-    // A host's tile is a tiled navmesh of one tile, which add_tile grows.
+    // A host's tile is a tiled navmesh of one tile, which add_tile grows: joined as every tiled navmesh is,
+    // so that it is the navmesh its tiles make whatever came and went.
     TileInputs tiles;
-    if (input.tiles.grid.tiled() && input.tiles.tiles.size() == 1)
+    if (input.tiles.grid.tiled() && input.tiles.tiles.size() == 1) {
+        nl::build_navmesh(input);  // the tile's own fields, named as the caller gave them
         tiles.push_back(std::make_shared<NavMeshInput>(input));
+    }
+    std::shared_ptr<const NavMesh> navmesh = nl::build_navmesh(tiles.empty() ? input : join_tiles(tiles));
+    log_repairs(*navmesh);
     return add_on_carrier(std::move(navmesh), carrier, {}, std::move(tiles));
 }
 
 namespace {
+
+// A builder's run as the caller sees it: progress within 0..1 and never going back, whatever the
+// builder reports, and a stop remembered: a builder that goes on after it still adds nothing.
+class GuardedBuild {
+public:
+    explicit GuardedBuild(const NavMeshBuildRequest& request) : forwarded_(request), caller_(request.progress) {
+        forwarded_.progress = [this](float fraction, const char* stage) {
+            if (cancelled_) return false;
+            if (std::isfinite(fraction)) reached_ = std::clamp(fraction, reached_, 1.0f);
+            cancelled_ = caller_ && !caller_(reached_, stage ? stage : "building");
+            return !cancelled_;
+        };
+        report(0.0f, "starting");
+    }
+    GuardedBuild(const GuardedBuild&) = delete;
+    GuardedBuild& operator=(const GuardedBuild&) = delete;
+
+    BuiltNavMesh run(NavMeshBuilder& builder, World& world) {
+        BuiltNavMesh built;
+        try {
+            built = builder.build(world, forwarded_);
+        } catch (const Error&) {
+            fail_if_cancelled();  // a builder stopped by the callback may say so in its own words
+            throw;
+        }
+        fail_if_cancelled();
+        return built;
+    }
+    // Tells the caller (throws Cancelled when it asks to stop).
+    void report(float fraction, const char* stage) {
+        forwarded_.progress(fraction, stage);
+        fail_if_cancelled();
+    }
+
+private:
+    void fail_if_cancelled() const {
+        if (cancelled_) fail(ErrorCode::Cancelled, "the navmesh build was cancelled by its progress callback");
+    }
+
+    NavMeshBuildRequest forwarded_;
+    std::function<bool(float, const char*)> caller_;
+    bool cancelled_ = false;
+    float reached_ = 0.0f;
+};
 
 // The tiles of a tiled navmesh; InvalidArgument for a solo one.
 TileInputs tiles_of(const NavMeshRegistry& navmeshes, Handle navmesh) {
@@ -139,17 +186,25 @@ void World::build_tiles(Handle navmesh, NavMeshBuildRequest request, const Aabb&
     if (!same_agent_type(request.agent_type, first.agent_type))
         fail_field(ErrorCode::InvalidArgument, "agent_type: not the navmesh's agent type");
     const TileGrid& grid = first.tiles.grid;
-    const TileCoord lo = grid.tile_at(box.min.x(), box.min.z()), hi = grid.tile_at(box.max.x(), box.max.z());
-    const double columns = double(hi.x) - lo.x + 1.0, rows = double(hi.z) - lo.z + 1.0;
-    if (columns * rows > double(1 << 22))
-        fail(ErrorCode::InvalidArgument, "the box holds ", columns, " x ", rows, " tiles; at most 2^22 at once");
+    // Counted in doubles first: a box far off a grid of small tiles is refused, not clamped.
+    const double x0 = std::floor((double(box.min.x()) - grid.origin_x) / grid.tile_width),
+                 x1 = std::floor((double(box.max.x()) - grid.origin_x) / grid.tile_width),
+                 z0 = std::floor((double(box.min.z()) - grid.origin_z) / grid.tile_width),
+                 z1 = std::floor((double(box.max.z()) - grid.origin_z) / grid.tile_width);
+    const double columns = x1 - x0 + 1.0, rows = z1 - z0 + 1.0;
+    if (columns * rows > double(1 << 22) || std::fabs(x0) > kMaxTileIndex || std::fabs(x1) > kMaxTileIndex ||
+        std::fabs(z0) > kMaxTileIndex || std::fabs(z1) > kMaxTileIndex)
+        fail(ErrorCode::InvalidArgument, "the box holds ", columns, " x ", rows, " tiles from tile (", x0, ", ", z0,
+             "); at most 2^22 at once, with indices within 2^30");
+    const TileCoord lo{int32_t(x0), int32_t(z0)}, hi{int32_t(x1), int32_t(z1)};
     {
         const auto frame = navmeshes_.frame(navmesh);
         request.carrier =
             frame ? frame->mesh() : Handle{};  // the level it was built from: its carrier's, or the static one
     }
     request.only_tiles = NavMeshBuildRequest::Tiles{grid, lo, uint32_t(columns), uint32_t(rows)};
-    BuiltNavMesh built = builder->build(*this, request);
+    GuardedBuild guarded(request);
+    BuiltNavMesh built = guarded.run(*builder, *this);
     for (const auto& tile : built.tiles) {
         const TileCoord at = tile->tiles.tiles.front();
         if (tile->tiles.grid != grid || at.x < lo.x || at.x > hi.x || at.z < lo.z || at.z > hi.z)
@@ -170,6 +225,7 @@ void World::build_tiles(Handle navmesh, NavMeshBuildRequest request, const Aabb&
         fail(ErrorCode::InvalidArgument,
              "no tile would be left: the box held every tile, and none has a walkable "
              "surface now (remove the navmesh instead)");
+    guarded.report(1.0f, "joining the tiles");
     std::shared_ptr<const NavMesh> joined = nl::build_navmesh(join_tiles(tiles));
     navmeshes_.replace_tiles(navmesh, std::move(tiles), std::move(joined));
 }
@@ -271,34 +327,12 @@ Handle World::build_navmesh(const NavMeshBuildRequest& request) {
         std::lock_guard lock(carrier_moves_);
         carrier_placement(request.carrier);
     }
-    // The caller sees progress within 0..1 and never going back, whatever the builder reports, and a
-    // stop is remembered: a builder that goes on after it still adds nothing.
-    bool cancelled = false;
-    float reached = 0.0f;
-    NavMeshBuildRequest forwarded = request;
-    forwarded.progress = [&](float fraction, const char* stage) {
-        if (cancelled) return false;
-        if (std::isfinite(fraction)) reached = std::clamp(fraction, reached, 1.0f);
-        cancelled = request.progress && !request.progress(reached, stage ? stage : "building");
-        return !cancelled;
-    };
-    auto fail_if_cancelled = [&] {
-        if (cancelled) fail(ErrorCode::Cancelled, "the navmesh build was cancelled by its progress callback");
-    };
-    forwarded.progress(0.0f, "starting");
-    fail_if_cancelled();
+    GuardedBuild guarded(request);
     // Said before the build: a level in the wrong units can take long to build, or fail for it.
     const BuildTriangles triangles = level_->triangles_to_build(request.carrier);
     NavMeshProvenance made_for;
     warn_of_level(triangles, request.agent_type, made_for);
-    BuiltNavMesh built;
-    try {
-        built = builder->build(*this, forwarded);
-    } catch (const Error&) {
-        fail_if_cancelled();  // a builder stopped by the callback may say so in its own words
-        throw;
-    }
-    fail_if_cancelled();
+    BuiltNavMesh built = guarded.run(*builder, *this);
     if (!built.navmesh)
         fail(ErrorCode::Internal, "builder '", request.builder, "' succeeded without handing over a navmesh");
     made_for.builder = request.builder;
@@ -310,8 +344,7 @@ Handle World::build_navmesh(const NavMeshBuildRequest& request) {
     std::shared_ptr<const NavMesh> navmesh = std::move(built.navmesh);
     log_repairs(*navmesh);
     made_for.level_hash = built.level_hash != 0 ? built.level_hash : level_hash(triangles);
-    forwarded.progress(1.0f, "adding the navmesh");
-    fail_if_cancelled();
+    guarded.report(1.0f, "adding the navmesh");
     return add_on_carrier(std::move(navmesh), request.carrier, std::move(made_for), std::move(built.tiles));
 }
 

@@ -8,6 +8,7 @@
 #include "io/json_input.h"
 #include "io/link_json.h"
 #include "links/link_generation.h"
+#include "level/level_hash.h"
 #include "level/mesh_validation.h"
 #include "links/link_placement.h"
 #include "util/excerpt.h"
@@ -82,6 +83,7 @@ std::pair<Handle, Link> World::link_in_world(Handle link) const {
 }
 
 bool World::link_holds(Handle navmesh, const Link& link) const {
+    if (link.start_polygon == kNoPolygon || link.end_polygon == kNoPolygon) return false;  // parked: a tile is out
     return !link.crosses() || cross_link_holds(link, navmesh_pose(navmesh), navmesh_pose(link.landing_navmesh));
 }
 
@@ -186,10 +188,11 @@ void World::check_plugin_settings(const PluginSettings& settings) const {
 LinkGenerationReport World::generate_links(Handle navmesh, const LinkSettings& settings, PluginSettings plugin_settings,
                                            GenerationProgress progress) {
     check_plugin_settings(plugin_settings);
-    const std::shared_ptr<const NavMesh> mesh = navmeshes_.navmesh(navmesh);
     refuse_generation_on_carrier(navmesh);
-    auto generation = std::make_shared<LinkGeneration>(mesh, settings, GenerationMethod::Indexed);
     const NavMeshRegistry::GenerationTurn one_at_a_time = navmeshes_.take_generation_turn(navmesh);
+    // Read under the turn: tiles added or removed before it was ours replaced the navmesh.
+    const std::shared_ptr<const NavMesh> mesh = navmeshes_.navmesh(navmesh);
+    auto generation = std::make_shared<LinkGeneration>(mesh, settings, GenerationMethod::Indexed);
     LinkGenerationReport report;
     std::vector<Link> links = generation->run(*level_, *tasks_, report, progress);
     PluginLinks extra = plugin_links(navmesh, *mesh, plugin_settings, report);

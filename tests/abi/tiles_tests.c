@@ -327,4 +327,40 @@ static void agent_waits_for_its_tile(void) {
     nl_world_destroy(f.world);
 }
 
-ABI_SECTION(tiles, ABI_CASE(built_in_tiles), ABI_CASE(removed_tiles_cut_the_path), ABI_CASE(agent_waits_for_its_tile));
+/* A link with an end on a removed tile is parked: it no longer holds (nl_link.holds 0), the navmesh is
+   not saved (the file would not load back), and once the tile is built again it holds where it was. */
+static void link_parked_while_its_tile_is_out(void) {
+    tiled_floor f = make_floor(TILE_CELLS);
+    const nl_tile_coord far_end = tile_at(&f.info, 36.0f, 6.0f);
+    const float centre[3] = {36.0f, 0.0f, 6.0f};
+    nl_recast_settings settings = nl_default_recast_settings();
+    nl_navmesh_build_def build = nl_default_navmesh_build_def();
+    nl_link_def def = nl_default_link_def();
+    nl_link link = nl_link_init();
+    nl_link_id id;
+    size_t size = 0;
+    def.kind = NL_LINK_MANUAL;
+    def.start[0] = 4.0f, def.start[2] = 6.0f;
+    def.end[0] = 36.0f, def.end[2] = 6.0f;
+    CHECK_OK(nl_link_add(f.world, f.navmesh, &def, &id));
+    CHECK_OK(nl_link_get(f.world, id, &link));
+    CHECK_THAT(link.holds == 1u, "a link with both ends on loaded tiles holds");
+    CHECK_OK(nl_navmesh_save(f.world, f.navmesh, NULL, 0, &size));
+
+    CHECK_OK(nl_navmesh_remove_tile(f.world, f.navmesh, far_end));
+    CHECK_OK(nl_link_get(f.world, id, &link));
+    CHECK_THAT(link.holds == 0u, "its end's tile out, the link is parked: holds 0");
+    CHECK_FAIL(nl_navmesh_save(f.world, f.navmesh, NULL, 0, &size), NL_STATUS_INVALID_ARGUMENT, "not loaded");
+
+    settings.tile_size = TILE_CELLS;
+    build.settings = &settings;
+    CHECK_OK(nl_navmesh_build_tiles(f.world, f.navmesh, &build, centre, centre));
+    CHECK_OK(nl_link_get(f.world, id, &link));
+    CHECK_THAT(link.holds == 1u, "its tile built again, the link holds");
+    CHECK_NEAR(link.end[0], 36.0f, 0.01f);
+    CHECK_OK(nl_navmesh_save(f.world, f.navmesh, NULL, 0, &size));
+    nl_world_destroy(f.world);
+}
+
+ABI_SECTION(tiles, ABI_CASE(built_in_tiles), ABI_CASE(removed_tiles_cut_the_path), ABI_CASE(agent_waits_for_its_tile),
+            ABI_CASE(link_parked_while_its_tile_is_out));

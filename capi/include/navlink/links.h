@@ -69,8 +69,9 @@ typedef struct nl_link {
                                         for a link within `navmesh`. Added in 0.3. */
     float tolerance;           /**< A cross link's: how far its end may move, seen from its start,
                                     before it stops holding; 0 for other links. */
-    uint8_t holds;             /**< 1 if the link can be taken as the navmeshes stand now: always for a
-                                    link within one navmesh; for a cross link, while its end is within
+    uint8_t holds;             /**< 1 if the link can be taken as the navmeshes stand now: for a link
+                                    within one navmesh, while both its ends' tiles are loaded (always on
+                                    a solo navmesh); for a cross link, also while its end is within
                                     `tolerance` of where it was, seen from its start. */
     uint8_t reserved3[3];
 } nl_link;

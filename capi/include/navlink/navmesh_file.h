@@ -24,7 +24,8 @@ extern "C" {
  *  always receives the file's size; a NULL buffer only measures (two-call pattern).
  *  Returns SUCCESS, or a failure with BUFFER_TOO_SMALL (nothing written), INVALID_HANDLE,
  *  INVALID_ARGUMENT (out_size NULL; buffer NULL with a capacity; a navmesh with cross links: a file
- *  holds one navmesh's own links). Thread-safe.
+ *  holds one navmesh's own links; a tiled navmesh with a link whose end's tile is not loaded: the file
+ *  holds the tiles loaded, and the link would not load back). Thread-safe.
  *  @param[in] world  The world.
  *  @param[in] navmesh  The navmesh to save.
  *  @param[out,opt] buffer  Receives the file, or NULL to measure only.

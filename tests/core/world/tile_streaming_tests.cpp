@@ -299,3 +299,27 @@ TEST_CASE("tiles built with other settings or for another body are refused") {
     CHECK(message.find("agent type") != std::string::npos);
     CHECK(c.mesh() == before);
 }
+
+TEST_CASE("a host's tiled navmesh grown from one tile and back is the navmesh its first tile made") {
+    // Two 4 m tiles of one quad each, at slightly different heights (joined within the climb).
+    auto quad_tile = [](int32_t x, float y) {
+        nl::NavMeshInput in;
+        in.tiles.grid = nl::TileGrid{0.0f, 0.0f, 4.0f};
+        in.tiles.tiles.push_back(nl::TileCoord{x, 0});
+        const float x0 = 4.0f * float(x);
+        in.vertices = {Vec3(x0, y, 0), Vec3(x0, y, 4), Vec3(x0 + 4, y, 4), Vec3(x0 + 4, y, 0)};
+        in.indices = {0, 1, 2, 3};
+        in.polygon_sizes = {4};
+        return in;
+    };
+    auto world = nl::test::make_world(1);
+    const nl::Handle navmesh = world->add_navmesh(quad_tile(0, 0.0f));
+    const auto alone = world->navmeshes().navmesh(navmesh);
+    CHECK(alone->tiles().tiles.size() == 1);
+    world->add_tile(navmesh, quad_tile(1, 0.2f));
+    const auto grown = world->navmeshes().navmesh(navmesh);
+    CHECK(grown->portal_count() == 1);
+    world->remove_tile(navmesh, nl::TileCoord{1, 0});
+    const auto back = world->navmeshes().navmesh(navmesh);
+    CHECK(same_navmesh(*back, *alone));
+}

@@ -482,7 +482,8 @@ extern "C" {
     /// navmesh file into `buffer` (caller-owned, `capacity` bytes). `*out_size` always receives the file's size; a NULL
     /// buffer only measures (two-call pattern). Returns SUCCESS, or a failure with BUFFER_TOO_SMALL (nothing written),
     /// INVALID_HANDLE, INVALID_ARGUMENT (out_size NULL; buffer NULL with a capacity; a navmesh with cross links: a file
-    /// holds one navmesh's own links). Thread-safe.
+    /// holds one navmesh's own links; a tiled navmesh with a link whose end's tile is not loaded: the file holds the
+    /// tiles loaded, and the link would not load back). Thread-safe.
     pub fn nl_navmesh_save(
         world: *const nl_world,
         navmesh: nl_navmesh_id,

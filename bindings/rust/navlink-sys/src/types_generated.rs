@@ -602,8 +602,9 @@ pub struct nl_link {
     pub landing_navmesh: nl_navmesh_id,
     /// A cross link's: how far its end may move, seen from its start, before it stops holding; 0 for other links.
     pub tolerance: f32,
-    /// 1 if the link can be taken as the navmeshes stand now: always for a link within one navmesh; for a cross link,
-    /// while its end is within `tolerance` of where it was, seen from its start.
+    /// 1 if the link can be taken as the navmeshes stand now: for a link within one navmesh, while both its ends' tiles
+    /// are loaded (always on a solo navmesh); for a cross link, also while its end is within `tolerance` of where it
+    /// was, seen from its start.
     pub holds: u8,
     pub reserved3: [u8; 3],
 }

@@ -261,8 +261,9 @@ plain_struct! {
         landing_navmesh: NavmeshId,
         /// A cross link's: how far its end may move, seen from its start, before it stops holding; 0 for other links.
         tolerance: f32,
-        /// 1 if the link can be taken as the navmeshes stand now: always for a link within one navmesh; for a cross
-        /// link, while its end is within `tolerance` of where it was, seen from its start.
+        /// 1 if the link can be taken as the navmeshes stand now: for a link within one navmesh, while both its ends'
+        /// tiles are loaded (always on a solo navmesh); for a cross link, also while its end is within `tolerance` of
+        /// where it was, seen from its start.
         holds: bool,
     }
 }

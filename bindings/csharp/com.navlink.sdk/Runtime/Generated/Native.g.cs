@@ -458,7 +458,8 @@ namespace NavLink
         /// settings) as a navmesh file into <c>buffer</c> (caller-owned, <c>capacity</c> bytes). <c>*out_size</c>
         /// always receives the file's size; a NULL buffer only measures (two-call pattern). Returns SUCCESS, or a
         /// failure with BUFFER_TOO_SMALL (nothing written), INVALID_HANDLE, INVALID_ARGUMENT (out_size NULL; buffer
-        /// NULL with a capacity; a navmesh with cross links: a file holds one navmesh's own links).
+        /// NULL with a capacity; a navmesh with cross links: a file holds one navmesh's own links; a tiled navmesh with
+        /// a link whose end's tile is not loaded: the file holds the tiles loaded, and the link would not load back).
         /// Thread-safe.</summary>
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         public static extern StatusCode nl_navmesh_save(IntPtr world, NavmeshId navmesh, byte* buffer, UIntPtr capacity,

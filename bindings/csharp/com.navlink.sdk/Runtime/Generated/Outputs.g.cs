@@ -166,8 +166,9 @@ namespace NavLink
         /// <summary>A cross link's: how far its end may move, seen from its start, before it stops holding; 0 for other
         /// links.</summary>
         public float Tolerance;
-        /// <summary>1 if the link can be taken as the navmeshes stand now: always for a link within one navmesh; for a
-        /// cross link, while its end is within <c>tolerance</c> of where it was, seen from its start.</summary>
+        /// <summary>1 if the link can be taken as the navmeshes stand now: for a link within one navmesh, while both
+        /// its ends' tiles are loaded (always on a solo navmesh); for a cross link, also while its end is within
+        /// <c>tolerance</c> of where it was, seen from its start.</summary>
         public byte Holds;
         public fixed byte Reserved3[3];
     }
