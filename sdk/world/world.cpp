@@ -133,22 +133,39 @@ TileInputs tiles_of(const NavMeshRegistry& navmeshes, Handle navmesh) {
     return tiles;
 }
 
+// The movable mesh a navmesh rides; null for one that rides none.
+Handle carrier_of(const NavMeshRegistry& navmeshes, Handle navmesh) {
+    const auto frame = navmeshes.frame(navmesh);
+    return frame ? frame->mesh() : Handle{};
+}
+
 std::string describe(const TileGrid& g) {
     return concat("tiles of ", g.tile_width, " m from (", g.origin_x, ", ", g.origin_z, ")");
 }
 
 }  // namespace
 
+NavMeshBuilder& World::builder_named(const std::string& name) const {
+    NavMeshBuilder* builder = plugins_.find_navmesh_builder(name);
+    if (!builder)
+        fail(ErrorCode::NotFound, "no navmesh builder named '", name,
+             "' (loaded: ", listed_names(plugins_.navmesh_builder_names()), ")");
+    return *builder;
+}
+
+void World::publish_tiles(Handle navmesh, TileInputs tiles) {
+    std::shared_ptr<const NavMesh> joined = nl::build_navmesh(join_tiles(tiles));
+    navmeshes_.replace_tiles(navmesh, std::move(tiles), std::move(joined));
+}
+
 void World::add_tile(Handle navmesh, const NavMeshInput& tile, Handle carrier) {
     if (carrier != Handle{}) carrier_placement(carrier);  // a bad id is named as nl_navmesh_add names it
-    {
-        const auto frame = navmeshes_.frame(navmesh);
-        if (carrier != (frame ? frame->mesh() : Handle{}))
-            fail_field(ErrorCode::InvalidArgument, "carrier: not the mesh the navmesh rides (",
-                       frame ? "a tile's polygons are in its carrier's space: give the navmesh's carrier"
-                             : "the navmesh rides none: give the null id",
-                       ")");
-    }
+    const Handle rides = carrier_of(navmeshes_, navmesh);
+    if (carrier != rides)
+        fail_field(ErrorCode::InvalidArgument, "carrier: not the mesh the navmesh rides (",
+                   rides != Handle{} ? "a tile's polygons are in its carrier's space: give the navmesh's carrier"
+                                     : "the navmesh rides none: give the null id",
+                   ")");
     nl::build_navmesh(tile);  // its own polygons and agent checked first, named as the caller gave them
     const auto turn = navmeshes_.take_generation_turn(navmesh);
     TileInputs tiles = tiles_of(navmeshes_, navmesh);
@@ -167,15 +184,11 @@ void World::add_tile(Handle navmesh, const NavMeshInput& tile, Handle carrier) {
         fail_field(ErrorCode::InvalidArgument, "tile_x, tile_z: tile (", at.x, ", ", at.z,
                    ") is loaded already: remove it first");
     tiles.insert(place, std::make_shared<NavMeshInput>(tile));
-    std::shared_ptr<const NavMesh> joined = nl::build_navmesh(join_tiles(tiles));
-    navmeshes_.replace_tiles(navmesh, std::move(tiles), std::move(joined));
+    publish_tiles(navmesh, std::move(tiles));
 }
 
 void World::build_tiles(Handle navmesh, NavMeshBuildRequest request, const Aabb& box) {
-    NavMeshBuilder* builder = plugins_.find_navmesh_builder(request.builder);
-    if (!builder)
-        fail(ErrorCode::NotFound, "no navmesh builder named '", request.builder,
-             "' (loaded: ", listed_names(plugins_.navmesh_builder_names()), ")");
+    NavMeshBuilder& builder = builder_named(request.builder);
     if (!within_coordinate_limit(box.min) || !within_coordinate_limit(box.max) || box.min.x() > box.max.x() ||
         box.min.z() > box.max.z())
         fail(ErrorCode::InvalidArgument, "the box is not finite, beyond the coordinate limit, or has min > max");
@@ -197,25 +210,20 @@ void World::build_tiles(Handle navmesh, NavMeshBuildRequest request, const Aabb&
         fail(ErrorCode::InvalidArgument, "the box holds ", columns, " x ", rows, " tiles from tile (", x0, ", ", z0,
              "); at most 2^22 at once, with indices within 2^30");
     const TileCoord lo{int32_t(x0), int32_t(z0)}, hi{int32_t(x1), int32_t(z1)};
-    {
-        const auto frame = navmeshes_.frame(navmesh);
-        request.carrier =
-            frame ? frame->mesh() : Handle{};  // the level it was built from: its carrier's, or the static one
-    }
+    request.carrier = carrier_of(navmeshes_, navmesh);  // the level it was built from: its carrier's, or the static one
     request.only_tiles = NavMeshBuildRequest::Tiles{grid, lo, uint32_t(columns), uint32_t(rows)};
     GuardedBuild guarded(request);
-    BuiltNavMesh built = guarded.run(*builder, *this);
-    for (const auto& tile : built.tiles) {
-        const TileCoord at = tile->tiles.tiles.front();
-        if (tile->tiles.grid != grid || at.x < lo.x || at.x > hi.x || at.z < lo.z || at.z > hi.z)
-            fail(ErrorCode::Internal, "builder '", request.builder, "' handed over tile (", at.x, ", ", at.z, ") of ",
-                 describe(tile->tiles.grid), ", not one asked for");
-    }
-    // The tiles outside the box stay; those in it are what the builder made of them now.
+    BuiltNavMesh built = guarded.run(builder, *this);
     const auto in_box = [&](const auto& t) {
         const TileCoord at = t->tiles.tiles.front();
         return at.x >= lo.x && at.x <= hi.x && at.z >= lo.z && at.z <= hi.z;
     };
+    for (const auto& tile : built.tiles) {
+        if (tile->tiles.grid != grid || !in_box(tile))
+            fail(ErrorCode::Internal, "builder '", request.builder, "' handed over tile (", tile->tiles.tiles.front().x,
+                 ", ", tile->tiles.tiles.front().z, ") of ", describe(tile->tiles.grid), ", not one asked for");
+    }
+    // The tiles outside the box stay; those in it are what the builder made of them now.
     const size_t loaded = tiles.size();
     tiles.erase(std::remove_if(tiles.begin(), tiles.end(), in_box), tiles.end());
     if (tiles.size() == loaded && built.tiles.empty()) return;  // nothing there, before or now
@@ -226,8 +234,7 @@ void World::build_tiles(Handle navmesh, NavMeshBuildRequest request, const Aabb&
              "no tile would be left: the box held every tile, and none has a walkable "
              "surface now (remove the navmesh instead)");
     guarded.report(1.0f, "joining the tiles");
-    std::shared_ptr<const NavMesh> joined = nl::build_navmesh(join_tiles(tiles));
-    navmeshes_.replace_tiles(navmesh, std::move(tiles), std::move(joined));
+    publish_tiles(navmesh, std::move(tiles));
 }
 
 void World::remove_tile(Handle navmesh, TileCoord coord) {
@@ -240,8 +247,7 @@ void World::remove_tile(Handle navmesh, TileCoord coord) {
         fail(ErrorCode::InvalidArgument, "tile (", coord.x, ", ", coord.z,
              ") is the navmesh's last: remove the navmesh instead");
     tiles.erase(found);
-    std::shared_ptr<const NavMesh> joined = nl::build_navmesh(join_tiles(tiles));
-    navmeshes_.replace_tiles(navmesh, std::move(tiles), std::move(joined));
+    publish_tiles(navmesh, std::move(tiles));
 }
 
 Handle World::add_agent(AgentDef def) {
@@ -319,10 +325,7 @@ std::string settings_record(const std::string& name, const std::string& said) {
 }  // namespace
 
 Handle World::build_navmesh(const NavMeshBuildRequest& request) {
-    NavMeshBuilder* builder = plugins_.find_navmesh_builder(request.builder);
-    if (!builder)
-        fail(ErrorCode::NotFound, "no navmesh builder named '", request.builder,
-             "' (loaded: ", listed_names(plugins_.navmesh_builder_names()), ")");
+    NavMeshBuilder& builder = builder_named(request.builder);
     if (request.carrier != Handle{}) {
         std::lock_guard lock(carrier_moves_);
         carrier_placement(request.carrier);
@@ -332,7 +335,7 @@ Handle World::build_navmesh(const NavMeshBuildRequest& request) {
     const BuildTriangles triangles = level_->triangles_to_build(request.carrier);
     NavMeshProvenance made_for;
     warn_of_level(triangles, request.agent_type, made_for);
-    BuiltNavMesh built = guarded.run(*builder, *this);
+    BuiltNavMesh built = guarded.run(builder, *this);
     if (!built.navmesh)
         fail(ErrorCode::Internal, "builder '", request.builder, "' succeeded without handing over a navmesh");
     made_for.builder = request.builder;

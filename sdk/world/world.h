@@ -200,6 +200,10 @@ private:
     void place_host_link(Handle navmesh, Link& link) const;
     // The carrier's transform now, checked as a navmesh's placement; needs carrier_moves_ held.
     Transform carrier_placement(Handle carrier) const;
+    // The navmesh builder plugin called `name`; NotFound naming those loaded.
+    NavMeshBuilder& builder_named(const std::string& name) const;
+    // Joins `tiles` (under the navmesh's generation turn) and publishes the navmesh they make in its place.
+    void publish_tiles(Handle navmesh, TileInputs tiles);
     Handle add_on_carrier(std::shared_ptr<const NavMesh> navmesh, Handle carrier, NavMeshProvenance made_for = {},
                           TileInputs tiles = {});
 
