@@ -22,6 +22,72 @@ std::pair<uint32_t, uint32_t> vertices_of(const NavMesh& m, const BoundaryEdge& 
     return {m.corner(e.polygon, e.edge), m.corner(e.polygon, (e.edge + 1) % m.corner_count(e.polygon))};
 }
 
+// Whether a vertex lies on a line between tiles.
+bool on_tile_line(const TileGrid& grid, const Vec3& v) {
+    if (!grid.tiled()) return false;
+    const auto on_line = [&](float c, float origin) {
+        const double k = (double(c) - origin) / grid.tile_width;
+        return std::fabs(k - std::round(k)) * grid.tile_width <= 1e-3;
+    };
+    return on_line(v.x(), grid.origin_x) || on_line(v.z(), grid.origin_z);
+}
+
+// A tiled navmesh's boundary is cut where it crosses a line between tiles: the pieces of one straight
+// outline are joined again into one edge (`run`, the pieces in order), so that a ledge is sampled and
+// ranked as the solo navmesh's is, whatever the tile size. On a solo navmesh every run is one edge.
+struct Run {
+    std::vector<uint32_t> pieces;
+    Vec3 start, end;
+    float length() const { return (end - start).norm(); }
+};
+
+std::vector<Run> straight_runs(const NavMesh& m, const std::vector<BoundaryEdge>& edges) {
+    const TileGrid& grid = m.tiles().grid;
+    std::vector<uint32_t> next(edges.size(), UINT32_MAX), previous(edges.size(), UINT32_MAX);
+    if (grid.tiled()) {
+        std::unordered_map<uint32_t, std::vector<uint32_t>> starting_at;
+        for (uint32_t i = 0; i < edges.size(); ++i) starting_at[vertices_of(m, edges[i]).first].push_back(i);
+        for (uint32_t i = 0; i < edges.size(); ++i) {
+            const uint32_t joint = vertices_of(m, edges[i]).second;
+            const auto found = starting_at.find(joint);
+            if (found == starting_at.end() || found->second.size() != 1 || !on_tile_line(grid, m.vertex(joint)))
+                continue;
+            const uint32_t j = found->second.front();
+            const Vec3 a = (edges[i].end - edges[i].start).normalized(),
+                       b = (edges[j].end - edges[j].start).normalized();
+            if (j == i || a.dot(b) < 0.9999f || edges[i].outward.dot(edges[j].outward) < 0.9999f) continue;
+            next[i] = j;
+            previous[j] = i;
+        }
+    }
+    std::vector<Run> runs;
+    std::vector<uint8_t> taken(edges.size(), 0);
+    for (uint32_t i = 0; i < edges.size(); ++i) {
+        if (previous[i] != UINT32_MAX || taken[i]) continue;
+        Run run;
+        for (uint32_t e = i; e != UINT32_MAX && !taken[e]; e = next[e]) {
+            taken[e] = 1;
+            run.pieces.push_back(e);
+        }
+        run.start = edges[run.pieces.front()].start;
+        run.end = edges[run.pieces.back()].end;
+        runs.push_back(std::move(run));
+    }
+    for (uint32_t i = 0; i < edges.size(); ++i)  // a ring of pieces (never straight: none in practice)
+        if (!taken[i]) runs.push_back(Run{{i}, edges[i].start, edges[i].end});
+    return runs;
+}
+
+// The piece of `run` that the point `t` of the way along it lies on.
+uint32_t piece_at(const Run& run, const std::vector<BoundaryEdge>& edges, float t) {
+    float along = t * run.length();
+    for (uint32_t piece : run.pieces) {
+        along -= (edges[piece].end - edges[piece].start).norm();
+        if (along <= 0.0f) return piece;
+    }
+    return run.pieces.back();
+}
+
 }  // namespace
 
 EdgeSampling sample_edges(const NavMesh& navmesh, const LinkSettings& s) {
@@ -34,27 +100,29 @@ EdgeSampling sample_edges(const NavMesh& navmesh, const LinkSettings& s) {
     double planned = 0.0;
     for (const BoundaryEdge& e : edges)
         planned += std::max(1.0, std::round(double((e.end - e.start).norm()) / s.sample_spacing));
+    const std::vector<Run> runs = straight_runs(navmesh, edges);
     if (planned > kMaxEdgeSamples)
         fail(ErrorCode::InvalidArgument, "sample_spacing ", s.sample_spacing, " m would give ", planned,
              " take-off samples along this navmesh's boundary (at most ", kMaxEdgeSamples, "): raise it");
 
     std::vector<uint32_t> short_edges;
-    for (uint32_t i = 0; i < edges.size(); ++i) {
-        const BoundaryEdge& e = edges[i];
+    for (const Run& run : runs) {
+        const uint32_t i = run.pieces.front();  // the run's edge, as ranking knows it
         Vec3 outward;
-        if (!horizontal_outward(e, outward)) {
-            ++out.dropped_edges;
+        if (!horizontal_outward(edges[i], outward)) {
+            out.dropped_edges += static_cast<uint32_t>(run.pieces.size());
             continue;
         }
-        const float length = (e.end - e.start).norm();
+        const float length = run.length();
         if (length < s.min_edge_length) {
-            short_edges.push_back(i);
+            short_edges.insert(short_edges.end(), run.pieces.begin(), run.pieces.end());
             continue;
         }
         const auto count = std::max(1u, static_cast<uint32_t>(std::lround(length / s.sample_spacing)));
         for (uint32_t k = 0; k < count; ++k) {
             const float t = (k + 0.5f) / count;
-            out.samples.push_back(EdgeSample{e.start + t * (e.end - e.start), outward, e.normal, e.polygon, i});
+            const BoundaryEdge& on = edges[piece_at(run, edges, t)];
+            out.samples.push_back(EdgeSample{run.start + t * (run.end - run.start), outward, on.normal, on.polygon, i});
         }
     }
 

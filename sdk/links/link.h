@@ -4,9 +4,11 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <optional>
 
 #include "level/geometry.h"
 #include "navmesh/navmesh_grid.h"
+#include "navmesh/tiles.h"
 #include "util/handle.h"
 
 namespace nl {
@@ -48,6 +50,11 @@ struct Link {
     LinkRequirements requirements;
     uint32_t start_polygon = 0xffffffffu;
     uint32_t end_polygon = 0xffffffffu;
+    // On a tiled navmesh: the tiles of the polygons the ends were first placed on (an end near a line
+    // between tiles may lie in one tile's square and on the other's polygon). Kept while a tile is out
+    // and the end parked, so that the link is out exactly while one of these tiles is; unset until the
+    // end is placed on a tiled navmesh.
+    std::optional<TileCoord> start_tile, end_tile;
 
     // A link from one surface to another: the navmesh its end is on (the end in that navmesh's
     // space, end_polygon one of its polygons; the start on the link's own navmesh). Null: both ends

@@ -4,6 +4,7 @@
 #include <shared_mutex>
 
 #include "links/link_placement.h"
+#include "links/tile_links.h"
 
 namespace nl {
 namespace {
@@ -108,10 +109,12 @@ TileInputs NavMeshRegistry::tile_inputs(Handle navmesh) const {
 
 namespace {
 
-// A link end on `navmesh` placed again: parked (kNoPolygon) when its tile is not loaded or it is off
-// the navmesh, so that no path takes it.
-uint32_t placed_again(const NavMesh& navmesh, const Vec3& point, uint32_t was) {
-    if (!navmesh.tiles().holds_point(point.x(), point.z())) return kNoPolygon;
+// A link end on `navmesh` placed again: parked (kNoPolygon) while the tile it belongs to (`tile`, else
+// the one its point lies in) is not loaded, or when it is off the navmesh, so that no path takes it.
+// The tile of the polygon it is placed on becomes its tile if it had none.
+uint32_t placed_again(const NavMesh& navmesh, const Vec3& point, uint32_t was, std::optional<TileCoord>& tile) {
+    const TileLayout& layout = navmesh.tiles();
+    if (tile ? !layout.holds(*tile) : !layout.holds_point(point.x(), point.z())) return kNoPolygon;
     Link probe;
     probe.start = probe.end = point;
     probe.start_polygon = probe.end_polygon = was;
@@ -121,39 +124,42 @@ uint32_t placed_again(const NavMesh& navmesh, const Vec3& point, uint32_t was) {
         if (e.code() != ErrorCode::InvalidArgument) throw;
         return kNoPolygon;
     }
+    if (!tile && layout.grid.tiled()) tile = layout.tiles[navmesh.tile_of(probe.start_polygon)];
     return probe.start_polygon;
 }
 
 }  // namespace
 
-void NavMeshRegistry::replace_tiles(Handle navmesh, TileInputs tiles, std::shared_ptr<const NavMesh> joined) {
+void NavMeshRegistry::replace_tiles(Handle navmesh, TileInputs tiles, std::shared_ptr<const NavMesh> joined,
+                                    const TileLinks* regenerated) {
     std::unique_lock lock(mutex_);
     Entry& e = entry(navmesh);
     // Placed first, stored after: a failure to allocate leaves the navmesh as it was.
-    std::vector<std::pair<Link*, std::pair<uint32_t, uint32_t>>> placed;
+    std::vector<std::pair<Link*, Link>> placed;
     for (Handle id : e.link_ids) {
         Link& l = links_.find(id)->link;
-        const uint32_t start = placed_again(*joined, l.start, l.start_polygon);
-        const uint32_t end = l.crosses() ? l.end_polygon : placed_again(*joined, l.end, l.end_polygon);
-        placed.push_back({&l, {start, end}});
+        Link again = l;
+        again.start_polygon = placed_again(*joined, l.start, l.start_polygon, again.start_tile);
+        if (!l.crosses()) again.end_polygon = placed_again(*joined, l.end, l.end_polygon, again.end_tile);
+        placed.push_back({&l, again});
     }
     navmeshes_.for_each([&](Handle, Entry& other) {
         for (Handle id : other.link_ids) {
             Link& l = links_.find(id)->link;
             if (l.landing_navmesh != navmesh) continue;
-            placed.push_back({&l, {l.start_polygon, placed_again(*joined, l.end, l.end_polygon)}});
+            Link again = l;
+            again.end_polygon = placed_again(*joined, l.end, l.end_polygon, again.end_tile);
+            placed.push_back({&l, again});
             other.snapshot.reset();
         }
     });
-    for (auto& [link, ends] : placed) {
-        link->start_polygon = ends.first;
-        link->end_polygon = ends.second;
-    }
+    for (auto& [link, again] : placed) *link = again;
     e.navmesh = std::move(joined);
     e.tiles = std::move(tiles);
     e.snapshot.reset();
     e.path_graph.reset();
-    e.last = LastGeneration{};
+    if (!e.last.tile_settings) e.last = LastGeneration{};
+    if (regenerated) replace_tile_links(navmesh, e, *regenerated);  // placed on the navmesh just published
 }
 
 bool NavMeshRegistry::contains(Handle navmesh) const {
@@ -178,11 +184,12 @@ Link NavMeshRegistry::placed_on_current(const Entry& e, Link link) const {
     // A link is placed by its writer outside the lock; tiles added or removed meanwhile replaced the
     // navmesh it was placed on. Where a tile may have changed, its ends are placed again here (kept
     // where they still lie, parked off the loaded tiles). A navmesh without tiles never changes.
-    if (!e.tiles.empty()) link.start_polygon = placed_again(*e.navmesh, link.start, link.start_polygon);
+    if (!e.tiles.empty())
+        link.start_polygon = placed_again(*e.navmesh, link.start, link.start_polygon, link.start_tile);
     if (!link.crosses()) {
-        if (!e.tiles.empty()) link.end_polygon = placed_again(*e.navmesh, link.end, link.end_polygon);
+        if (!e.tiles.empty()) link.end_polygon = placed_again(*e.navmesh, link.end, link.end_polygon, link.end_tile);
     } else if (const Entry* landing = navmeshes_.find(link.landing_navmesh); landing && !landing->tiles.empty()) {
-        link.end_polygon = placed_again(*landing->navmesh, link.end, link.end_polygon);
+        link.end_polygon = placed_again(*landing->navmesh, link.end, link.end_polygon, link.end_tile);
     }
     return link;
 }
@@ -344,6 +351,27 @@ void NavMeshRegistry::store_generation(Handle navmesh, LastGeneration last, cons
     }
     e.last = std::move(last);
     e.made_for.links = std::move(made_with);
+}
+
+void NavMeshRegistry::replace_tile_links(Handle navmesh, Entry& e, const TileLinks& regenerated) {
+    const TileGrid& grid = e.navmesh->tiles().grid;
+    erase_links(e, [&](const Link& l) {
+        return generated_within(l) && (l.kind == LinkKind::Jump || l.kind == LinkKind::Drop) &&
+               std::binary_search(regenerated.owners.begin(), regenerated.owners.end(), owner_tile(grid, l));
+    });
+    e.link_ids.reserve(e.link_ids.size() + regenerated.links.size());
+    for (Link l : regenerated.links) {
+        l.generated = true;
+        insert_link(navmesh, e, l);
+    }
+}
+
+bool NavMeshRegistry::store_tile_links(Handle navmesh, const LinkSettings* from, const TileLinks& regenerated) {
+    std::unique_lock lock(mutex_);
+    Entry* e = navmeshes_.find(navmesh);
+    if (!e || e->last.tile_settings.get() != from) return false;
+    replace_tile_links(navmesh, *e, regenerated);
+    return true;
 }
 
 bool NavMeshRegistry::store_update(Handle navmesh, const LinkGeneration* from, const std::vector<Link>& generated) {

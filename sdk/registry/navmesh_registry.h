@@ -34,6 +34,16 @@ namespace nl {
 struct LastGeneration {
     std::shared_ptr<LinkGeneration> generation;  // null: none, or forgotten since
     PluginSettings plugin_settings;
+    // A tiled navmesh's generation (generation is null): what the links of the tiles that arrive, and
+    // of the tiles within reach of them, are generated with (tile_links.h).
+    std::shared_ptr<const LinkSettings> tile_settings;
+};
+
+// Generated jumps and drops of a tiled navmesh, by the tiles that own them (tile_links.h): `links`
+// replaces the generated jumps and drops those tiles own.
+struct TileLinks {
+    std::vector<TileCoord> owners;  // in row order
+    std::vector<Link> links;
 };
 
 class NavMeshRegistry {
@@ -76,10 +86,12 @@ public:
     // Publishes `joined`, the navmesh joined from `tiles`, in the navmesh's place, as one step: every
     // link with an end is placed on it again, those with an end on a tile it lacks (or off it) parked,
     // out of every path, until a later navmesh holds both ends; the cross links of other navmeshes
-    // that land on it likewise. Its last generation is forgotten (an update in a box needs a new
-    // generation). Readers holding the old navmesh, a snapshot or a graph keep them. Call it under the
-    // navmesh's generation turn, with `tiles` made from what tile_inputs gave under that turn.
-    void replace_tiles(Handle navmesh, TileInputs tiles, std::shared_ptr<const NavMesh> joined);
+    // that land on it likewise; `regenerated` (if any) replaces the generated links of its tiles. A
+    // tiled generation (LastGeneration::tile_settings) is kept, any other forgotten (an update in a box
+    // needs a new generation). Readers holding the old navmesh, a snapshot or a graph keep them. Call it
+    // under the navmesh's generation turn, with `tiles` made from what tile_inputs gave under that turn.
+    void replace_tiles(Handle navmesh, TileInputs tiles, std::shared_ptr<const NavMesh> joined,
+                       const TileLinks* regenerated = nullptr);
 
     // Links. Each edit publishes: the next snapshot reader sees it.
     Handle add_link(Handle navmesh, const Link& link);
@@ -143,6 +155,9 @@ public:
     // An update's result: stored only while `from` is still the navmesh's last generation (not
     // forgotten by a removal or a load meanwhile); returns whether it was.
     bool store_update(Handle navmesh, const LinkGeneration* from, const std::vector<Link>& generated);
+    // A tiled update's result (the tiles' links again): stored only while `from` is still the
+    // navmesh's tiled generation's settings; returns whether it was.
+    bool store_tile_links(Handle navmesh, const LinkSettings* from, const TileLinks& regenerated);
 
     // Replaces the generated cross links from `navmesh` to `landing` that `replaced` picks with
     // `links` (generated cross links from one to the other); every other link stays. Throws
@@ -180,6 +195,8 @@ private:
     template <typename Goes>
     void erase_links(Entry& e, Goes&& goes);
     Handle insert_link(Handle navmesh, Entry& e, const Link& link);
+    // Replaces the generated jumps and drops of the tiles `regenerated` names; needs the lock alone.
+    void replace_tile_links(Handle navmesh, Entry& e, const TileLinks& regenerated);
     // The link with its ends placed on the navmeshes as they are now (where tiles may have changed
     // since its writer placed it). Needs the lock.
     Link placed_on_current(const Entry& e, Link link) const;

@@ -10,6 +10,7 @@
 #include "io/navmesh_file.h"
 #include "level/level_hash.h"
 #include "links/link_placement.h"
+#include "links/tile_links.h"
 
 namespace nl {
 
@@ -153,9 +154,22 @@ NavMeshBuilder& World::builder_named(const std::string& name) const {
     return *builder;
 }
 
-void World::publish_tiles(Handle navmesh, TileInputs tiles) {
+void World::publish_tiles(Handle navmesh, TileInputs tiles, const std::vector<TileCoord>& arrived) {
     std::shared_ptr<const NavMesh> joined = nl::build_navmesh(join_tiles(tiles));
-    navmeshes_.replace_tiles(navmesh, std::move(tiles), std::move(joined));
+    const LastGeneration last = navmeshes_.last_generation(navmesh);
+    if (!last.tile_settings || arrived.empty()) {
+        navmeshes_.replace_tiles(navmesh, std::move(tiles), std::move(joined));
+        return;
+    }
+    // Links were generated on the navmesh: the tiles that arrived, and those within reach of them, have
+    // theirs generated again over the tiles as they are now (tile_links.h), published with the navmesh.
+    TileLinks regenerated;
+    regenerated.owners =
+        tiles_within_reach(joined->tiles().grid, joined->tiles().tiles, arrived, tile_link_reach(*last.tile_settings));
+    LinkGenerationReport report;
+    regenerated.links = generate_tile_links(tiles, regenerated.owners, *level_, *tasks_, *last.tile_settings, report,
+                                            [](float, const char*) { return true; });
+    navmeshes_.replace_tiles(navmesh, std::move(tiles), std::move(joined), &regenerated);
 }
 
 void World::add_tile(Handle navmesh, const NavMeshInput& tile, Handle carrier) {
@@ -184,7 +198,7 @@ void World::add_tile(Handle navmesh, const NavMeshInput& tile, Handle carrier) {
         fail_field(ErrorCode::InvalidArgument, "tile_x, tile_z: tile (", at.x, ", ", at.z,
                    ") is loaded already: remove it first");
     tiles.insert(place, std::make_shared<NavMeshInput>(tile));
-    publish_tiles(navmesh, std::move(tiles));
+    publish_tiles(navmesh, std::move(tiles), {at});
 }
 
 void World::build_tiles(Handle navmesh, NavMeshBuildRequest request, const Aabb& box) {
@@ -234,7 +248,9 @@ void World::build_tiles(Handle navmesh, NavMeshBuildRequest request, const Aabb&
              "no tile would be left: the box held every tile, and none has a walkable "
              "surface now (remove the navmesh instead)");
     guarded.report(1.0f, "joining the tiles");
-    publish_tiles(navmesh, std::move(tiles));
+    std::vector<TileCoord> arrived;
+    for (const auto& tile : built.tiles) arrived.push_back(tile->tiles.tiles.front());
+    publish_tiles(navmesh, std::move(tiles), arrived);
 }
 
 void World::remove_tile(Handle navmesh, TileCoord coord) {
@@ -247,7 +263,7 @@ void World::remove_tile(Handle navmesh, TileCoord coord) {
         fail(ErrorCode::InvalidArgument, "tile (", coord.x, ", ", coord.z,
              ") is the navmesh's last: remove the navmesh instead");
     tiles.erase(found);
-    publish_tiles(navmesh, std::move(tiles));
+    publish_tiles(navmesh, std::move(tiles), {});
 }
 
 Handle World::add_agent(AgentDef def) {

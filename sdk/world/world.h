@@ -202,8 +202,10 @@ private:
     Transform carrier_placement(Handle carrier) const;
     // The navmesh builder plugin called `name`; NotFound naming those loaded.
     NavMeshBuilder& builder_named(const std::string& name) const;
-    // Joins `tiles` (under the navmesh's generation turn) and publishes the navmesh they make in its place.
-    void publish_tiles(Handle navmesh, TileInputs tiles);
+    // Joins `tiles` (under the navmesh's generation turn) and publishes the navmesh they make in its
+    // place, with the links of the tiles within reach of those that `arrived` generated again if the
+    // navmesh's links were generated tile by tile.
+    void publish_tiles(Handle navmesh, TileInputs tiles, const std::vector<TileCoord>& arrived);
     Handle add_on_carrier(std::shared_ptr<const NavMesh> navmesh, Handle carrier, NavMeshProvenance made_for = {},
                           TileInputs tiles = {});
 

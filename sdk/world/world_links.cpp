@@ -11,6 +11,7 @@
 #include "level/level_hash.h"
 #include "level/mesh_validation.h"
 #include "links/link_placement.h"
+#include "links/tile_links.h"
 #include "util/excerpt.h"
 #include "world/world.h"
 
@@ -192,12 +193,22 @@ LinkGenerationReport World::generate_links(Handle navmesh, const LinkSettings& s
     const NavMeshRegistry::GenerationTurn one_at_a_time = navmeshes_.take_generation_turn(navmesh);
     // Read under the turn: tiles added or removed before it was ours replaced the navmesh.
     const std::shared_ptr<const NavMesh> mesh = navmeshes_.navmesh(navmesh);
-    auto generation = std::make_shared<LinkGeneration>(mesh, settings, GenerationMethod::Indexed);
+    LastGeneration last;
     LinkGenerationReport report;
-    std::vector<Link> links = generation->run(*level_, *tasks_, report, progress);
+    std::vector<Link> links;
+    if (mesh->tiles().grid.tiled()) {
+        // A tile at a time, as the tiles that arrive later get theirs (tile_links.h).
+        last.tile_settings = std::make_shared<const LinkSettings>(settings);
+        links = generate_tile_links(navmeshes_.tile_inputs(navmesh), mesh->tiles().tiles, *level_, *tasks_, settings,
+                                    report, progress);
+    } else {
+        last.generation = std::make_shared<LinkGeneration>(mesh, settings, GenerationMethod::Indexed);
+        links = last.generation->run(*level_, *tasks_, report, progress);
+    }
     PluginLinks extra = plugin_links(navmesh, *mesh, plugin_settings, report);
     links.insert(links.end(), extra.links.begin(), extra.links.end());
-    navmeshes_.store_generation(navmesh, LastGeneration{std::move(generation), std::move(plugin_settings)}, links,
+    last.plugin_settings = std::move(plugin_settings);
+    navmeshes_.store_generation(navmesh, std::move(last), links,
                                 LinkProvenance{link_settings_to_json(settings), std::move(extra.made_with)});
     return report;
 }
@@ -210,11 +221,24 @@ LinkGenerationReport World::update_links_in_box(Handle navmesh, const Aabb& box,
              "the box's corners must be finite, within the coordinate limit, and min <= max");
     const NavMeshRegistry::GenerationTurn one_at_a_time = navmeshes_.take_generation_turn(navmesh);
     const LastGeneration last = navmeshes_.last_generation(navmesh);
-    if (!last.generation)
+    if (!last.generation && !last.tile_settings)
         fail(ErrorCode::NotFound,
              "the navmesh has no generation to update (never generated, or its generated links were "
              "removed or replaced by a JSON load since): generate its links first");
     LinkGenerationReport report;
+    if (last.tile_settings) {
+        // The tiles whose links can see into the box have theirs generated again; plugin links stay.
+        const std::shared_ptr<const NavMesh> tiled = navmeshes_.navmesh(navmesh);
+        TileLinks regenerated;
+        regenerated.owners =
+            tiles_within_reach(tiled->tiles().grid, tiled->tiles().tiles, box, tile_link_reach(*last.tile_settings));
+        regenerated.links = generate_tile_links(navmeshes_.tile_inputs(navmesh), regenerated.owners, *level_, *tasks_,
+                                                *last.tile_settings, report, progress);
+        if (!navmeshes_.store_tile_links(navmesh, last.tile_settings.get(), regenerated))
+            fail(ErrorCode::NotFound,
+                 "the navmesh's generated links were removed or replaced by a JSON load during the update");
+        return report;
+    }
     std::vector<Link> links = last.generation->update(box, *level_, *tasks_, report, progress);
     const PluginLinks extra = plugin_links(navmesh, *mesh, last.plugin_settings, report);
     links.insert(links.end(), extra.links.begin(), extra.links.end());
