@@ -24,27 +24,6 @@ Link canonical(Link l) {
     return l;
 }
 
-void add(LinkGenerationReport& total, const LinkGenerationReport& one) {
-    for (uint32_t LinkGenerationReport::*count :
-         {&LinkGenerationReport::edges, &LinkGenerationReport::groups, &LinkGenerationReport::samples,
-          &LinkGenerationReport::takeoff_points, &LinkGenerationReport::jump_candidates,
-          &LinkGenerationReport::drop_candidates, &LinkGenerationReport::rejected_wall,
-          &LinkGenerationReport::rejected_not_ledge, &LinkGenerationReport::rejected_distance,
-          &LinkGenerationReport::rejected_rise, &LinkGenerationReport::rejected_angle,
-          &LinkGenerationReport::rejected_no_landing, &LinkGenerationReport::rejected_clearance,
-          &LinkGenerationReport::rejected_duplicate, &LinkGenerationReport::rejected_walkable,
-          &LinkGenerationReport::rejected_too_shallow, &LinkGenerationReport::rejected_too_deep})
-        total.*count += one.*count;
-    for (uint64_t LinkGenerationReport::*count :
-         {&LinkGenerationReport::rays_cast, &LinkGenerationReport::box_queries, &LinkGenerationReport::body_tests})
-        total.*count += one.*count;
-    for (double LinkGenerationReport::*ms :
-         {&LinkGenerationReport::milliseconds_edges, &LinkGenerationReport::milliseconds_takeoff,
-          &LinkGenerationReport::milliseconds_jumps, &LinkGenerationReport::milliseconds_drops,
-          &LinkGenerationReport::milliseconds_merge, &LinkGenerationReport::milliseconds_total})
-        total.*ms += one.*ms;
-}
-
 // The x-z distance from a tile's square to a box.
 double apart(const TileGrid& grid, const TileCoord& t, double min_x, double max_x, double min_z, double max_z) {
     const double dx = std::max({0.0, grid.line_x(t.x) - max_x, min_x - grid.line_x(int64_t(t.x) + 1)});
@@ -102,35 +81,34 @@ std::vector<Link> generate_tile_links(const TileInputs& loaded, const std::vecto
     std::vector<TileCoord> coords;
     for (const auto& t : loaded) coords.push_back(t->tiles.tiles.front());
     std::sort(coords.begin(), coords.end());
-    std::vector<TileCoord> sorted_owners = owners;
-    std::sort(sorted_owners.begin(), sorted_owners.end());
-    const float reach = tile_link_reach(settings);
+    std::vector<TileCoord> kept;  // the owners that are loaded: the others own nothing
+    for (const TileCoord& owner : owners)
+        if (std::binary_search(coords.begin(), coords.end(), owner)) kept.push_back(owner);
+    std::sort(kept.begin(), kept.end());
+    kept.erase(std::unique(kept.begin(), kept.end()), kept.end());
+    if (kept.empty()) return {};
+    // One generation over every tile within reach of an owner: an owner's links are those a generation
+    // over its own reach finds, and a wider one finds the same (links_tests: a tile at a time and all
+    // at once agree bit for bit), so the owners near each other share the work.
+    const std::vector<TileCoord> near = tiles_within_reach(grid, coords, kept, tile_link_reach(settings));
+    std::vector<const NavMeshInput*> inputs;
+    for (const auto& t : loaded)
+        if (std::binary_search(near.begin(), near.end(), t->tiles.tiles.front())) inputs.push_back(t.get());
+    const std::shared_ptr<const NavMesh> neighbourhood = build_navmesh(join_tiles(inputs));
+    LinkGeneration generation(neighbourhood, settings, GenerationMethod::Indexed);
+    const TileLayout& layout = neighbourhood->tiles();
     std::vector<Link> out;
-    for (size_t n = 0; n < sorted_owners.size(); ++n) {
-        const TileCoord owner = sorted_owners[n];
-        if (!std::binary_search(coords.begin(), coords.end(), owner)) continue;  // not loaded: it owns nothing
-        const std::vector<TileCoord> near = tiles_within_reach(grid, coords, {owner}, reach);
-        std::vector<const NavMeshInput*> inputs;
-        for (const auto& t : loaded)
-            if (std::binary_search(near.begin(), near.end(), t->tiles.tiles.front())) inputs.push_back(t.get());
-        const std::shared_ptr<const NavMesh> neighbourhood = build_navmesh(join_tiles(inputs));
-        // Each tile's share of the progress, in order.
-        auto within = [&](float fraction, const char* stage) {
-            return progress((float(n) + fraction) / float(sorted_owners.size()), stage);
-        };
-        LinkGeneration generation(neighbourhood, settings, GenerationMethod::Indexed);
-        LinkGenerationReport one;
-        const TileLayout& layout = neighbourhood->tiles();
-        for (const Link& found : generation.run(level, tasks, one, within)) {
-            Link l = canonical(found);
-            l.start_tile = layout.tiles[neighbourhood->tile_of(l.start_polygon)];
-            l.end_tile = layout.tiles[neighbourhood->tile_of(l.end_polygon)];
-            if (owner_tile(grid, l) != owner) continue;
-            (l.kind == LinkKind::Drop ? report.drop_links : report.jump_links) += 1;
-            out.push_back(l);
-        }
-        add(report, one);
+    for (const Link& found : generation.run(level, tasks, report, progress)) {
+        Link l = canonical(found);
+        l.start_tile = layout.tiles[neighbourhood->tile_of(l.start_polygon)];
+        l.end_tile = layout.tiles[neighbourhood->tile_of(l.end_polygon)];
+        if (std::binary_search(kept.begin(), kept.end(), *l.start_tile)) out.push_back(l);
     }
+    std::stable_sort(out.begin(), out.end(),
+                     [](const Link& a, const Link& b) { return *a.start_tile < *b.start_tile; });
+    report.jump_links = static_cast<uint32_t>(
+        std::count_if(out.begin(), out.end(), [](const Link& l) { return l.kind != LinkKind::Drop; }));
+    report.drop_links = static_cast<uint32_t>(out.size()) - report.jump_links;
     return out;
 }
 

@@ -27,11 +27,11 @@ std::vector<TileCoord> tiles_within_reach(const TileGrid& grid, const std::vecto
 std::vector<TileCoord> tiles_within_reach(const TileGrid& grid, const std::vector<TileCoord>& loaded, const Aabb& box,
                                           float reach);
 
-// The generated links that the tiles `owners` own, each tile's generated over the navmesh joined from
-// the tiles of `loaded` within tile_link_reach of it (the level's geometry as it is now, the body of
-// the tiles' agent type); in row order of their tiles, each tile's in generation order. A bidirectional
-// link starts at its lower end in (x, z, y) order, whichever tile's generation found it. `report`
-// counts every tile's generation (the links: those kept). Throws as generate_links.
+// The generated links that the tiles `owners` own, each tile's as a generation over the navmesh joined
+// from the tiles of `loaded` within tile_link_reach of it finds them (the level's geometry as it is
+// now, the body of the tiles' agent type); in row order of their tiles, each tile's in generation
+// order. A bidirectional jump starts at its lower end in (x, z, y) order, whichever end the generation
+// found first. `report` is the generation's (the links: those kept). Throws as generate_links.
 std::vector<Link> generate_tile_links(const TileInputs& loaded, const std::vector<TileCoord>& owners,
                                       const Level& level, TaskSystem& tasks, const LinkSettings& settings,
                                       LinkGenerationReport& report, GenerationProgress progress);
