@@ -21,7 +21,8 @@ namespace nl {
 namespace {
 
 constexpr uint8_t kMagic[8] = {0x89, 'N', 'L', 'N', 'A', 'V', 0x0D, 0x0A};
-constexpr char kMade[4] = {'M', 'A', 'D', 'E'}, kGeometry[4] = {'G', 'E', 'O', 'M'}, kLinks[4] = {'L', 'I', 'N', 'K'};
+constexpr char kMade[4] = {'M', 'A', 'D', 'E'}, kGeometry[4] = {'G', 'E', 'O', 'M'}, kLinks[4] = {'L', 'I', 'N', 'K'},
+               kTile[4] = {'T', 'I', 'L', 'E'};
 
 enum LinkFlags : uint8_t { kBidirectional = 1, kGenerated = 2, kEnabled = 4 };
 enum MadeFlags : uint8_t { kRidesCarrier = 1 };
@@ -162,6 +163,27 @@ void write_made_for(ByteWriter& out, const AgentType& agent, const NavMeshProven
     }
     out.text(made_for.links.plugins);
     out.text(NAVLINK_CORE_VERSION);
+}
+
+void write_tile_coord(ByteWriter& out, const TileCoord& t) {
+    out.signed_varint(t.x);
+    out.signed_varint(t.z);
+}
+
+void write_tile(ByteWriter& out, const NavMeshInput& tile, const std::vector<Link>& links, uint64_t content_hash) {
+    const TileGrid& grid = tile.tiles.grid;
+    for (float v : {grid.origin_x, grid.origin_z, grid.tile_width}) out.f32(v);
+    write_tile_coord(out, tile.tiles.tiles.front());
+    out.u64(content_hash);
+    out.f32(tile.weld_tolerance);
+    out.varint(links.size());
+    for (size_t i = 0; i < links.size(); ++i) {
+        if (!links[i].start_tile || !links[i].end_tile)
+            fail(ErrorCode::InvalidArgument, "links[", i, "] has no start or end tile: a tile's file holds the links ",
+                 "placed on its navmesh");
+        write_tile_coord(out, *links[i].start_tile);
+        write_tile_coord(out, *links[i].end_tile);
+    }
 }
 
 void write_section(ByteWriter& out, const char tag[4], ByteWriter& payload_writer) {
@@ -348,6 +370,39 @@ void read_made_for(ByteReader& in, NavMeshFile& out) {
     out.writer = in.text("the writer's version");
 }
 
+TileCoord read_tile_coord(ByteReader& in, const char* which) {
+    TileCoord t;
+    for (int32_t* c : {&t.x, &t.z}) {
+        const int64_t v = in.signed_varint(which);
+        if (std::fabs(double(v)) > kMaxTileIndex)
+            fail(ErrorCode::Parse, in.context(), ": ", which, " has an index of ", v, " (at most 2^30 either way)");
+        *c = static_cast<int32_t>(v);
+    }
+    return t;
+}
+
+void read_tile(ByteReader& in, NavMeshFile& out) {
+    TileGrid grid;
+    for (float* v : {&grid.origin_x, &grid.origin_z, &grid.tile_width}) *v = in.f32("the tile grid");
+    if (!std::isfinite(grid.origin_x) || !std::isfinite(grid.origin_z) || !(grid.tile_width > 0.0f) ||
+        !std::isfinite(grid.tile_width) || !within_coordinate_limit(Vec3(grid.origin_x, 0.0f, grid.origin_z)))
+        fail(ErrorCode::Parse, in.context(), ": a grid of tiles ", grid.tile_width, " m wide from (", grid.origin_x,
+             ", ", grid.origin_z, ") (must be finite, wider than 0, within the coordinate limit)");
+    out.navmesh.tiles = TileLayout{grid, {read_tile_coord(in, "the tile")}};
+    out.content_hash = in.u64("the content hash");
+    out.navmesh.weld_tolerance = in.f32("the weld tolerance");
+    if (!(out.navmesh.weld_tolerance >= 0.0f && out.navmesh.weld_tolerance <= 1.0f))
+        fail(ErrorCode::Parse, in.context(), ": a weld tolerance of ", out.navmesh.weld_tolerance, " m (0..1)");
+    const uint64_t count = in.varint("the link count");
+    if (count != out.links.size())
+        fail(ErrorCode::Parse, in.context(), ": tiles for ", count, " links, the LINK section has ", out.links.size());
+    for (Link& l : out.links) {
+        l.start_tile = read_tile_coord(in, "a link's start tile");
+        l.end_tile = read_tile_coord(in, "a link's end tile");
+    }
+    out.is_tile = true;
+}
+
 std::string tag_name(const uint8_t* tag) {
     std::string name;
     for (int i = 0; i < 4; ++i) name += (tag[i] >= 0x20 && tag[i] < 0x7f) ? char(tag[i]) : '?';
@@ -374,19 +429,23 @@ uint32_t navmesh_file_checksum(const uint8_t* data, size_t size) {
         crc32_z(crc32_z(0L, Z_NULL, 0), data + kNavMeshFileHeaderBytes, size - kNavMeshFileHeaderBytes));
 }
 
-std::vector<uint8_t> write_navmesh_file(const NavMesh& navmesh, const std::vector<Link>& links,
-                                        const NavMeshProvenance& made_for, bool rides_carrier) {
-    const NavMeshInput input = input_of(navmesh);
+namespace {
+
+// The file: MADE, GEOM, LINK, and TILE when `tile_hash` is given (a tile's file).
+std::vector<uint8_t> write_file(const NavMeshInput& input, const std::vector<Link>& links,
+                                const NavMeshProvenance& made_for, bool rides_carrier, const uint64_t* tile_hash) {
     Quantiser q;
-    ByteWriter made, geometry, link_section;
-    write_made_for(made, navmesh.agent(), made_for, rides_carrier);
+    ByteWriter made, geometry, link_section, tile;
+    write_made_for(made, input.agent_type, made_for, rides_carrier);
     write_geometry(geometry, input, q);
     write_links(link_section, links, q);
+    if (tile_hash) write_tile(tile, input, links, *tile_hash);
 
     ByteWriter sections;
     write_section(sections, kMade, made);
     write_section(sections, kGeometry, geometry);
     write_section(sections, kLinks, link_section);
+    if (tile_hash) write_section(sections, kTile, tile);
     // Deflated whole when that is smaller (it is, but for the smallest navmeshes).
     const std::vector<uint8_t>& body = sections.bytes();
     uLongf packed_size = compressBound(body.size());
@@ -397,7 +456,7 @@ std::vector<uint8_t> write_navmesh_file(const NavMesh& navmesh, const std::vecto
     ByteWriter out;
     for (uint8_t b : kMagic) out.u8(b);
     out.u32(kNavMeshFileVersion);
-    out.u32(3);
+    out.u32(tile_hash ? 4 : 3);
     out.u64(0);  // the file's bytes, below
     out.u32(0);  // the checksum, below
     out.u32(deflate ? kDeflated : 0u);
@@ -411,6 +470,24 @@ std::vector<uint8_t> write_navmesh_file(const NavMesh& navmesh, const std::vecto
     out.patch_u64(16, out.size());
     out.patch_u32(24, navmesh_file_checksum(out.bytes().data(), out.size()));
     return std::move(out.bytes());
+}
+
+}  // namespace
+
+std::vector<uint8_t> write_navmesh_file(const NavMesh& navmesh, const std::vector<Link>& links,
+                                        const NavMeshProvenance& made_for, bool rides_carrier) {
+    NavMeshInput input = input_of(navmesh);
+    input.agent_type = navmesh.agent();
+    return write_file(input, links, made_for, rides_carrier, nullptr);
+}
+
+std::vector<uint8_t> write_tile_file(const NavMeshInput& tile, const std::vector<Link>& links,
+                                     const NavMeshProvenance& made_for, uint64_t content_hash) {
+    if (!tile.tiles.grid.tiled() || tile.tiles.tiles.size() != 1)
+        fail(ErrorCode::InvalidArgument, "a tile's file holds one tile of a tiled navmesh");
+    std::vector<Link> saved = links;
+    for (Link& l : saved) l.start_polygon = l.end_polygon = kNoPolygon;  // placed where it is loaded
+    return write_file(tile, saved, made_for, false, &content_hash);
 }
 
 std::string read_navmesh_file_bytes(const std::string& path) {
@@ -458,7 +535,7 @@ NavMeshFile read_navmesh_file(const uint8_t* data, size_t size) {
         header = ByteReader(body.data(), body.size(), "navmesh file");
     }
 
-    bool made = false, geometry = false, links = false;
+    bool made = false, geometry = false, links = false, tile = false;
     Quantiser q;
     for (uint32_t s = 0; s < sections; ++s) {
         header.need(16, "a section header");
@@ -480,6 +557,10 @@ NavMeshFile read_navmesh_file(const uint8_t* data, size_t size) {
             if (!geometry) fail(ErrorCode::Parse, "navmesh file: the LINK section comes before GEOM");
             read_links(in, out.links, q);
             seen = &links;
+        } else if (tag == "TILE") {
+            if (!links) fail(ErrorCode::Parse, "navmesh file: the TILE section comes before LINK");
+            read_tile(in, out);
+            seen = &tile;
         } else {
             continue;  // a section of a later writer of this version: not needed to read the navmesh
         }
@@ -496,7 +577,7 @@ NavMeshFile read_navmesh_file(const uint8_t* data, size_t size) {
              : !geometry ? "GEOM"
                          : "LINK",
              " section is missing");
-    out.navmesh.weld_tolerance = 0.0f;
+    if (!tile) out.navmesh.weld_tolerance = 0.0f;  // a tile's is its own (TILE); a navmesh's is welded
     out.quantum = std::ldexp(1.0f, kNavMeshGridExponent);
     return out;
 }

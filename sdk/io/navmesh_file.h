@@ -5,7 +5,9 @@
 // (u32) and flags (u32; 1: the rest is deflated by zlib, its inflated size in its first 8 bytes).
 // Then sections, each a tag (4 ASCII bytes), 4 reserved bytes, its payload's bytes (u64) and the
 // payload: MADE (the agent type and what it was made with), GEOM (the polygons and their detail)
-// and LINK (the links). A reader skips sections it does not know.
+// and LINK (the links); a tile's file (write_tile_file) has a TILE section after them: the grid, the
+// tile's place, its content hash, its weld tolerance and each link's start and end tiles. A reader skips
+// sections it does not know.
 //
 // Coordinates are fixed point: whole quanta of the navmesh grid (2^-10 m, navmesh_grid.h, stated in
 // GEOM) from the navmesh's lowest corner. Navmeshes keep every coordinate on that grid, so the file
@@ -41,13 +43,23 @@ struct NavMeshFile {
     uint32_t version = 0;
     float quantum = 0.0f;  // metres (2^-10)
     std::string writer;    // the NavLink version that wrote it
+    // A tile's file: `navmesh` is one tile of a tiled navmesh (navmesh.tiles: its grid and place), the
+    // links are those it owns (their polygons not saved: kNoPolygon), each with its start and end tiles.
+    bool is_tile = false;
+    uint64_t content_hash = 0;  // of everything the tile was made from (a tile's file only)
 };
 
 // The file for `navmesh` and its `links` (none may be a cross link: InvalidArgument).
 std::vector<uint8_t> write_navmesh_file(const NavMesh& navmesh, const std::vector<Link>& links,
                                         const NavMeshProvenance& made_for, bool rides_carrier);
 
-// Reads a file written by write_navmesh_file, checking everything but what building it checks
+// The file of one tile of a tiled navmesh: `tile` as it was built or handed over (its place in
+// tile.tiles), the links it owns (link_tiles.h; their start_tile and end_tile set, no cross link), and
+// the hash of what it was made from. InvalidArgument for a link without its tiles.
+std::vector<uint8_t> write_tile_file(const NavMeshInput& tile, const std::vector<Link>& links,
+                                     const NavMeshProvenance& made_for, uint64_t content_hash);
+
+// Reads a file written by write_navmesh_file or write_tile_file, checking everything but what building it checks
 // (build_navmesh) and placing its links (place_saved_link). Throws VersionMismatch (not a navmesh
 // file, or a newer version) or Parse (truncated, corrupted: the section and what is wrong named).
 // Whatever the file says, allocates no more than a fixed multiple of what its bytes inflate to

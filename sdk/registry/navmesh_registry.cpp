@@ -286,6 +286,23 @@ bool generated_within(const Link& l) { return l.generated && !l.crosses(); }
 
 }  // namespace
 
+NavMeshRegistry::SavedTile NavMeshRegistry::saved_tile(Handle navmesh, TileCoord coord) const {
+    std::shared_lock lock(mutex_);
+    const Entry& e = entry(navmesh);
+    SavedTile out;
+    for (const auto& t : e.tiles)
+        if (t->tiles.tiles.front() == coord) out.tile = t;
+    if (!out.tile) fail(ErrorCode::NotFound, "no tile (", coord.x, ", ", coord.z, ") is loaded");
+    const TileGrid& grid = e.navmesh->tiles().grid;
+    for (Handle id : e.link_ids) {
+        const Link& l = links_.find(id)->link;
+        if (generated_within(l) && owner_tile(grid, l) == coord) out.links.push_back(l);
+    }
+    out.made_for = e.made_for;
+    out.rides_carrier = e.frame != nullptr;
+    return out;
+}
+
 void NavMeshRegistry::store_cross_links(Handle navmesh, Handle landing, FunctionRef<bool(const Link&)> replaced,
                                         const std::vector<Link>& links) {
     std::unique_lock lock(mutex_);

@@ -117,6 +117,15 @@ public:
         bool rides_carrier = false;
     };
     Saved saved(Handle navmesh) const;
+    // One tile of a tiled navmesh and the generated links it owns (tile_links.h), read together.
+    // Throws NotFound when no tile is loaded at `coord`.
+    struct SavedTile {
+        std::shared_ptr<const NavMeshInput> tile;
+        std::vector<Link> links;
+        NavMeshProvenance made_for;
+        bool rides_carrier = false;
+    };
+    SavedTile saved_tile(Handle navmesh, TileCoord coord) const;
 
     // Generations and updates of one navmesh run one at a time, from reading its last generation to
     // storing its links, so a later one never loses to an earlier one: hold a turn for that span. A

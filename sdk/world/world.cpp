@@ -154,11 +154,12 @@ NavMeshBuilder& World::builder_named(const std::string& name) const {
     return *builder;
 }
 
-void World::publish_tiles(Handle navmesh, TileInputs tiles, const std::vector<TileCoord>& arrived) {
+void World::publish_tiles(Handle navmesh, TileInputs tiles, const std::vector<TileCoord>& arrived,
+                          const TileLinks* given) {
     std::shared_ptr<const NavMesh> joined = nl::build_navmesh(join_tiles(tiles));
     const LastGeneration last = navmeshes_.last_generation(navmesh);
-    if (!last.tile_settings || arrived.empty()) {
-        navmeshes_.replace_tiles(navmesh, std::move(tiles), std::move(joined));
+    if (given || !last.tile_settings || arrived.empty()) {
+        navmeshes_.replace_tiles(navmesh, std::move(tiles), std::move(joined), given);
         return;
     }
     // Links were generated on the navmesh: the tiles that arrived, and those within reach of them, have
@@ -181,6 +182,10 @@ void World::add_tile(Handle navmesh, const NavMeshInput& tile, Handle carrier) {
                                      : "the navmesh rides none: give the null id",
                    ")");
     nl::build_navmesh(tile);  // its own polygons and agent checked first, named as the caller gave them
+    insert_tile(navmesh, tile, nullptr);
+}
+
+void World::insert_tile(Handle navmesh, const NavMeshInput& tile, const TileLinks* given) {
     const auto turn = navmeshes_.take_generation_turn(navmesh);
     TileInputs tiles = tiles_of(navmeshes_, navmesh);
     const NavMeshInput& first = *tiles.front();
@@ -198,7 +203,7 @@ void World::add_tile(Handle navmesh, const NavMeshInput& tile, Handle carrier) {
         fail_field(ErrorCode::InvalidArgument, "tile_x, tile_z: tile (", at.x, ", ", at.z,
                    ") is loaded already: remove it first");
     tiles.insert(place, std::make_shared<NavMeshInput>(tile));
-    publish_tiles(navmesh, std::move(tiles), {at});
+    publish_tiles(navmesh, std::move(tiles), {at}, given);
 }
 
 void World::build_tiles(Handle navmesh, NavMeshBuildRequest request, const Aabb& box) {
@@ -263,7 +268,9 @@ void World::remove_tile(Handle navmesh, TileCoord coord) {
         fail(ErrorCode::InvalidArgument, "tile (", coord.x, ", ", coord.z,
              ") is the navmesh's last: remove the navmesh instead");
     tiles.erase(found);
-    publish_tiles(navmesh, std::move(tiles), {});
+    // Its generated links go with it (they come back with it: from its file, or generated again).
+    const TileLinks none{{coord}, {}};
+    publish_tiles(navmesh, std::move(tiles), {}, &none);
 }
 
 Handle World::add_agent(AgentDef def) {
@@ -386,12 +393,19 @@ Handle World::load_navmesh(const NavMeshFile& file, Handle carrier) {
             throw Error(e.code(), concat("the file's ", what, e.what()));
         }
     };
-    std::shared_ptr<const NavMesh> navmesh = in_the_file("navmesh: ", [&] { return nl::build_navmesh(file.navmesh); });
+    // A tile's file: a tiled navmesh of that tile (add_tile_file adds the others).
+    TileInputs tiles;
+    if (file.is_tile) tiles.push_back(std::make_shared<NavMeshInput>(file.navmesh));
+    std::shared_ptr<const NavMesh> navmesh =
+        in_the_file("navmesh: ", [&] { return nl::build_navmesh(tiles.empty() ? file.navmesh : join_tiles(tiles)); });
     log_repairs(*navmesh);
     std::vector<Link> links = file.links;
     for (size_t i = 0; i < links.size(); ++i)
-        in_the_file(concat("links[", i, "]."), [&] { place_saved_link(*navmesh, links[i]); });
-    const Handle h = add_on_carrier(std::move(navmesh), carrier, file.made_for);
+        if (!file.is_tile ||
+            (links[i].start_tile == links[i].end_tile && *links[i].end_tile == navmesh->tiles().tiles[0]))
+            in_the_file(concat("links[", i, "]."), [&] { place_saved_link(*navmesh, links[i]); });
+    // (a tile's link to another tile is parked until that tile is added)
+    const Handle h = add_on_carrier(std::move(navmesh), carrier, file.made_for, std::move(tiles));
     try {
         navmeshes_.replace_links(h, links, file.made_for.links);
     } catch (...) {

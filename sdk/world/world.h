@@ -108,6 +108,19 @@ public:
     // Removes the tile at `coord`. Throws NotFound when no tile is loaded there, InvalidArgument for a
     // navmesh that is not tiled or for its last tile (remove the navmesh instead).
     void remove_tile(Handle navmesh, TileCoord coord);
+    // Baked tiles (tile_bake.cpp). The file of the tile at `coord` (navmesh_file.h, write_tile_file):
+    // its polygons as built or handed over, the generated links it owns, what it was made for, and
+    // its content hash (tile_content_hash). Throws NotFound (no tile there), InvalidArgument (a
+    // navmesh that is not tiled, or rides a moving mesh: save it whole).
+    std::vector<uint8_t> save_tile(Handle navmesh, TileCoord coord) const;
+    // Adds the tile a tile's file holds, with its links, as add_tile (no link is generated: they come
+    // with it). Throws InvalidArgument as add_tile, and for a file that is not a tile's, or a tile
+    // made with another builder, builder settings or link settings than the navmesh.
+    void add_tile_file(Handle navmesh, const NavMeshFile& file);
+    // The hash of everything the tile at `coord` of the navmesh's grid is made from as the world holds
+    // it now: the level's triangles in the columns its links and its neighbours' polygons can reach,
+    // the builder and its settings, the link settings and the body. Never 0.
+    uint64_t tile_content_hash(Handle navmesh, TileCoord coord) const;
     // Builds the tiles of the navmesh's grid that overlap `box` (x-z) with the builder of `request`
     // (only_tiles is set from the navmesh), and puts them in as one step: loaded tiles there are
     // replaced, those that come out empty removed. Throws InvalidArgument (a navmesh that is not
@@ -205,7 +218,12 @@ private:
     // Joins `tiles` (under the navmesh's generation turn) and publishes the navmesh they make in its
     // place, with the links of the tiles within reach of those that `arrived` generated again if the
     // navmesh's links were generated tile by tile.
-    void publish_tiles(Handle navmesh, TileInputs tiles, const std::vector<TileCoord>& arrived);
+    // `given`: the links of tiles given with them (a baked tile's; a removed tile's: none), which
+    // replace those tiles' generated links instead of a generation.
+    void publish_tiles(Handle navmesh, TileInputs tiles, const std::vector<TileCoord>& arrived,
+                       const TileLinks* given = nullptr);
+    // add_tile after its caller's own checks, with the tile's links if given.
+    void insert_tile(Handle navmesh, const NavMeshInput& tile, const TileLinks* given);
     Handle add_on_carrier(std::shared_ptr<const NavMesh> navmesh, Handle carrier, NavMeshProvenance made_for = {},
                           TileInputs tiles = {});
 

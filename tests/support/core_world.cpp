@@ -252,4 +252,14 @@ NavMeshInput cell_navmesh(const std::vector<std::string>& rows, float agent_radi
     return in;
 }
 
+bool same_navmesh(const NavMesh& a, const NavMesh& b) {
+    if (a.vertex_count() != b.vertex_count() || a.polygon_count() != b.polygon_count()) return false;
+    for (uint32_t v = 0; v < a.vertex_count(); ++v)
+        if (a.vertex(v) != b.vertex(v)) return false;
+    for (uint32_t p = 0; p < a.polygon_count(); ++p)
+        for (uint32_t k = 0; k < a.corner_count(p); ++k)
+            if (a.corner(p, k) != b.corner(p, k) || a.neighbour(p, k) != b.neighbour(p, k)) return false;
+    return a.tiles().tiles == b.tiles().tiles;
+}
+
 }  // namespace nl::test

@@ -59,4 +59,7 @@ size_t load_links_json(World& world, Handle navmesh, const std::string& json);
 // nl_navmesh_add makes of cell_navmesh.h's CellNavmesh def.
 NavMeshInput cell_navmesh(const std::vector<std::string>& rows, float agent_radius);
 
+// Whether two navmeshes are the same, bit for bit: vertices, corners, neighbours and tiles.
+bool same_navmesh(const NavMesh& a, const NavMesh& b);
+
 }  // namespace nl::test

@@ -43,16 +43,6 @@ struct Corridor {
     }
 };
 
-bool same_navmesh(const nl::NavMesh& a, const nl::NavMesh& b) {
-    if (a.vertex_count() != b.vertex_count() || a.polygon_count() != b.polygon_count()) return false;
-    for (uint32_t v = 0; v < a.vertex_count(); ++v)
-        if (a.vertex(v) != b.vertex(v)) return false;
-    for (uint32_t p = 0; p < a.polygon_count(); ++p)
-        for (uint32_t k = 0; k < a.corner_count(p); ++k)
-            if (a.corner(p, k) != b.corner(p, k) || a.neighbour(p, k) != b.neighbour(p, k)) return false;
-    return a.tiles().tiles == b.tiles().tiles;
-}
-
 bool has_event(const nl::World& world, nl::AgentEventKind kind, nl::AgentReason reason) {
     const auto events = world.agents().events();
     return std::any_of(events.begin(), events.end(),
@@ -81,7 +71,7 @@ TEST_CASE("tiles removed and added again in any order give the navmesh they made
                 std::find_if(tiles.begin(), tiles.end(), [&](const auto& i) { return i->tiles.tiles.front() == t; });
             c.world->add_tile(c.navmesh, **input);
         }
-        CHECK(same_navmesh(*c.mesh(), *whole));
+        CHECK(nl::test::same_navmesh(*c.mesh(), *whole));
     }
 }
 
@@ -205,7 +195,7 @@ TEST_CASE("tile requests that cannot be met are refused and change nothing") {
     c.world->remove_tile(c.navmesh, first);
     CHECK(nl::test::code_of([&] { c.world->remove_tile(c.navmesh, first); }, &message) == nl::ErrorCode::NotFound);
     c.world->add_tile(c.navmesh, *tiles.front());
-    CHECK(same_navmesh(*c.mesh(), *before));
+    CHECK(nl::test::same_navmesh(*c.mesh(), *before));
     // Another grid, another body.
     nl::NavMeshInput shifted = *tiles[1];
     shifted.tiles.grid.origin_x += 0.5f;
@@ -218,7 +208,7 @@ TEST_CASE("tile requests that cannot be met are refused and change nothing") {
     CHECK(nl::test::code_of([&] { c.world->add_tile(c.navmesh, wider); }, &message) == nl::ErrorCode::InvalidArgument);
     CHECK(message.find("another agent type") != std::string::npos);
     c.world->add_tile(c.navmesh, *tiles[1]);
-    CHECK(same_navmesh(*c.mesh(), *before));
+    CHECK(nl::test::same_navmesh(*c.mesh(), *before));
     // The last tile; a solo navmesh; a removed navmesh.
     for (size_t t = 1; t < tiles.size(); ++t) c.world->remove_tile(c.navmesh, tiles[t]->tiles.tiles.front());
     CHECK(nl::test::code_of([&] { c.world->remove_tile(c.navmesh, first); }, &message) ==
@@ -259,7 +249,7 @@ TEST_CASE("tiles built again in a box: the same tiles from the same level, the b
     const nl::TileCoord t = c.tile_at(30, 3);
     c.world->remove_tile(c.navmesh, t);
     c.world->build_tiles(c.navmesh, tiles_request(json), box_xz(30, 3, 30, 3));
-    CHECK(same_navmesh(*c.mesh(), *whole));
+    CHECK(nl::test::same_navmesh(*c.mesh(), *whole));
 
     // A wall across the corridor in that tile: only the tiles its box reaches are built again.
     nl::levelgen::GeneratedLevel wall;
@@ -321,5 +311,5 @@ TEST_CASE("a host's tiled navmesh grown from one tile and back is the navmesh it
     CHECK(grown->portal_count() == 1);
     world->remove_tile(navmesh, nl::TileCoord{1, 0});
     const auto back = world->navmeshes().navmesh(navmesh);
-    CHECK(same_navmesh(*back, *alone));
+    CHECK(nl::test::same_navmesh(*back, *alone));
 }
