@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <limits>
 #include <vector>
 
 #include "path/link_filter.h"
@@ -514,8 +515,10 @@ private:
         const double side = cross(first - node.root, along);
         const Flat to_root = node.root - first;
         const double size2 = (to_root.x * to_root.x + to_root.z * to_root.z) * (along.x * along.x + along.z * along.z);
-        if (side * side > 1e-24 * size2) {
-            view.scale = side > 0.0 ? 1.0 : -1.0;
+        // A root lies beyond the entry edge, on the side away from this polygon (polygons lie on the
+        // negative side of their edges), or on the edge's line.
+        if (side > 0.0 && side * side > 1e-24 * size2) {
+            view.scale = 1.0;
             if (node.a_turn != kNoNode)
                 view.g_a = node.g + rate_ * distance(node.root, node.a), view.a_turn = node.a_turn;
             if (node.b_turn != kNoNode)
@@ -525,13 +528,19 @@ private:
             if (view.b_turn != kNoNode && !may_bend(view.b_turn, view.g_b, arrival, node.b)) view.g_b = kInfinity;
             return true;
         }
-        // The root on the entry edge's line: a corner of this polygon the walk bends at, from which
-        // all of it is in view; a root elsewhere on the line sees nothing through.
+        // The root on the entry edge's line: a corner of this polygon the walk bends at, or a start or
+        // a landing located on the edge itself, from which all of it is in view; a root elsewhere on
+        // the line sees nothing through. A point located on an edge lies on it within the rounding of
+        // its coordinates, on either side: one that far on this polygon's side counts as on the line
+        // (else the view from it would be the cone behind it, and the walk would bend at the edge's
+        // ends: a start on a portal took the long way round).
         const Flat ab = node.b - node.a;
         const double t = std::clamp(((node.root - node.a).x * ab.x + (node.root - node.a).z * ab.z) /
                                         std::max(ab.x * ab.x + ab.z * ab.z, 1e-300),
                                     0.0, 1.0);
-        return distance(node.a + t * ab, node.root) <= 1e-6 * (1.0 + std::sqrt(std::sqrt(size2)));
+        const double rounding = 4.0 * std::numeric_limits<float>::epsilon() *
+                                std::max({1.0, std::fabs(node.root.x), std::fabs(node.root.z)});
+        return distance(node.a + t * ab, node.root) <= 1e-6 * (1.0 + std::sqrt(std::sqrt(size2))) + rounding;
     }
 
     void expand(uint32_t index) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace nl {
 namespace {
@@ -19,6 +20,17 @@ bool same_xz(const Vec3& a, const Vec3& b) {
     return dx * dx + dz * dz < 1e-12f;
 }
 
+// Whether p lies on the segment a b seen from above, within the rounding of coordinates that large.
+bool on_segment(const Vec3& p, const Vec3& a, const Vec3& b) {
+    const double abx = double(b.x()) - a.x(), abz = double(b.z()) - a.z();
+    const double apx = double(p.x()) - a.x(), apz = double(p.z()) - a.z();
+    const double t = std::clamp((apx * abx + apz * abz) / std::max(abx * abx + abz * abz, 1e-300), 0.0, 1.0);
+    const double dx = apx - t * abx, dz = apz - t * abz;
+    const double rounding =
+        1e-5 + 4.0 * std::numeric_limits<float>::epsilon() * std::max({std::fabs(p.x()), std::fabs(p.z())});
+    return dx * dx + dz * dz <= rounding * rounding;
+}
+
 }  // namespace
 
 void pull_string(const Vec3& start, const Vec3& end, const std::vector<PortalSpan>& portals,
@@ -31,9 +43,15 @@ void pull_string(const Vec3& start, const Vec3& end, const std::vector<PortalSpa
         return i == 0 ? start : i + 1 == count ? end : portals[i - 1].right;
     };
 
-    out.push_back({start, 0});
+    // A start on the first portals (located on an edge: a tile's border, most often) stands in the
+    // polygons beyond them too, and the funnel starts there: from a start on a portal, both sides of
+    // the funnel would lie along the portal's line, and the first portal end met on that line would
+    // turn it (a walk out to the portal's end and back: undulating.obj's tiles, 41 m for 14).
+    uint32_t first = 1;
+    while (first + 1 < count && on_segment(start, portals[first - 1].left, portals[first - 1].right)) ++first;
+    out.push_back({start, first - 1});
     Vec3 apex = start, left = start, right = start;
-    uint32_t apex_index = 0, left_index = 0, right_index = 0;
+    uint32_t apex_index = first - 1, left_index = first - 1, right_index = first - 1;
     // A side of the funnel crossed the other: that side's end is a corner of the path, and the
     // funnel starts again from it (the loop resumes at the portal after it).
     auto turn_at = [&](const Vec3& corner, uint32_t corner_index) {
@@ -42,7 +60,7 @@ void pull_string(const Vec3& start, const Vec3& end, const std::vector<PortalSpa
         out.push_back({corner, corner_index});
         return corner_index;
     };
-    for (uint32_t i = 1; i < count; ++i) {
+    for (uint32_t i = first; i < count; ++i) {
         const Vec3& next_left = left_of(i);
         const Vec3& next_right = right_of(i);
         // Narrow the funnel from the right, unless that crosses the left side.
