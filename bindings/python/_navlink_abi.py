@@ -530,7 +530,9 @@ NavmeshFileInfo._fields_ = [("size", c_uint32), ("version", c_uint32), ("file_si
                              ("agent_type", AgentType), ("vertex_count", c_uint32), ("polygon_count", c_uint32),
                              ("detail_triangle_count", c_uint32), ("link_count", c_uint32),
                              ("generated_link_count", c_uint32), ("rides_carrier", c_uint32), ("quantum", c_float),
-                             ("reserved", c_uint32), ("level_hash", c_uint64)]
+                             ("reserved", c_uint32), ("level_hash", c_uint64), ("content_hash", c_uint64),
+                             ("tile", TileCoord), ("tile_width", c_float), ("tile_origin_x", c_float),
+                             ("tile_origin_z", c_float), ("is_tile", c_uint32)]
 AgentCapabilities._fields_ = [("max_jump_distance", c_float), ("max_jump_height", c_float),
                                ("max_drop_height", c_float), ("radius", c_float), ("abilities", c_uint64)]
 PathCallback = CFUNCTYPE(None, c_void_p, PathTicket, c_uint32)
@@ -790,6 +792,11 @@ PROTOTYPES: Dict[str, Tuple[Any, List[Any]]] = {
     "nl_navmesh_load_links_json": (c_uint32, [c_void_p, NavmeshId, c_char_p, c_size_t, c_uint32, POINTER(c_uint32)]),
     "nl_navmesh_save": (c_uint32, [c_void_p, NavmeshId, c_void_p, c_size_t, POINTER(c_size_t)]),
     "nl_navmesh_save_file": (c_uint32, [c_void_p, NavmeshId, c_char_p]),
+    "nl_navmesh_save_tile": (c_uint32, [c_void_p, NavmeshId, TileCoord, c_void_p, c_size_t, POINTER(c_size_t)]),
+    "nl_navmesh_save_tile_file": (c_uint32, [c_void_p, NavmeshId, TileCoord, c_char_p]),
+    "nl_navmesh_add_tile_bytes": (c_uint32, [c_void_p, NavmeshId, c_void_p, c_size_t]),
+    "nl_navmesh_add_tile_file": (c_uint32, [c_void_p, NavmeshId, c_char_p]),
+    "nl_navmesh_get_tile_hash": (c_uint32, [c_void_p, NavmeshId, TileCoord, POINTER(c_uint64)]),
     "nl_default_navmesh_load_def": (NavmeshLoadDef, []),
     "nl_navmesh_load": (c_uint32, [c_void_p, c_void_p, c_size_t, POINTER(NavmeshLoadDef), POINTER(NavmeshId)]),
     "nl_navmesh_load_file": (c_uint32, [c_void_p, c_char_p, POINTER(NavmeshLoadDef), POINTER(NavmeshId)]),

@@ -1287,7 +1287,8 @@ class World:
         agent type, in the space of its carrier (`carrier`: the navmesh's, None for one that rides none), at a
         place no tile holds; the navmesh is joined again with it. NavLinkError with STATUS_INVALID_ARGUMENT
         otherwise (a navmesh that is not tiled, another grid, agent type or carrier, a tile loaded there
-        already: remove it first), nothing changed."""
+        already: remove it first), nothing changed. A tile's file (save_tile) is added with add_tile_bytes or
+        add_tile_file."""
         d, keep = self._navmesh_def(vertices, indices, polygon_vertex_counts, areas, weld_tolerance, agent_type,
                                     detail, tile)
         if carrier is not None:
@@ -1608,7 +1609,8 @@ class World:
         return d
 
     def load_navmesh(self, data: ByteValues, carrier: Optional[MeshId] = None, same_level: bool = False) -> NavmeshId:
-        """Adds the navmesh and its links held in a navmesh file's bytes (new ids); returns its NavmeshId.
+        """Adds the navmesh and its links held in a navmesh file's bytes (new ids); returns its NavmeshId. A tile's
+        file (save_tile) makes a tiled navmesh of that one tile, which add_tile_bytes grows.
         carrier: the MESH_MOVABLE mesh it rides now, for a file whose navmesh rode one
         (NavmeshFileInfo.rides_carrier), else None. same_level: refuse (STATUS_INVALID_ARGUMENT) a file baked
         from other level geometry than the world holds now. STATUS_VERSION_MISMATCH (not a NavLink navmesh
@@ -1626,6 +1628,53 @@ class World:
         navmesh = NavmeshId()
         _check(lib.nl_navmesh_load_file(self.pointer, os.fsencode(path), byref(d), byref(navmesh)))
         return navmesh
+
+    def save_tile(self, navmesh: NavmeshId, tile: TileLike) -> bytes:
+        """One tile ((x, z), a TileCoord or a NavmeshTile) of a tiled navmesh as a tile's file's bytes: the tile's
+        polygons as built or added, the generated links it owns (those that start on it, wherever they end), what
+        it was made for, and its content hash (tile_hash); host links are not in it (save_navmesh saves a whole
+        navmesh with them). Load the first tile of a world with load_navmesh (a tiled navmesh of that tile) and
+        the others with add_tile_bytes, in any order: the navmesh and links are those the tiles were saved from.
+        NavLinkError with STATUS_NOT_FOUND when no tile is loaded there, STATUS_INVALID_ARGUMENT for a navmesh
+        that is not tiled or rides a movable mesh (save it whole)."""
+        coord = _tile_coord(tile)
+        while True:
+            size = c_size_t()
+            _check(lib.nl_navmesh_save_tile(self.pointer, navmesh, coord, None, 0, byref(size)))
+            buffer = ctypes.create_string_buffer(size.value)
+            status = lib.nl_navmesh_save_tile(self.pointer, navmesh, coord, buffer, len(buffer), byref(size))
+            if _buffer_too_small(status):
+                continue  # the tile or its links changed between the two calls
+            _check(status)
+            return buffer.raw[:size.value]
+
+    def save_tile_file(self, navmesh: NavmeshId, tile: TileLike, path: Union[str, "os.PathLike[str]"]) -> None:
+        """save_tile written to the file at `path`, whole or not at all. STATUS_IO_ERROR: cannot write."""
+        _check(lib.nl_navmesh_save_tile_file(self.pointer, navmesh, _tile_coord(tile), os.fsencode(path)))
+
+    def add_tile_bytes(self, navmesh: NavmeshId, data: ByteValues) -> None:
+        """Adds the tile a tile's file's bytes (any buffer; save_tile) hold to a tiled navmesh, with its links, as
+        add_tile adds a tile; no link is generated: a link to a tile not loaded waits, out of every path, until
+        that tile is added. STATUS_VERSION_MISMATCH (not a NavLink navmesh file, or a newer format),
+        STATUS_PARSE_ERROR (truncated or corrupted), STATUS_INVALID_ARGUMENT (a whole navmesh's file; a tile of
+        another grid or agent type, or made with another builder, builder settings or link settings than the
+        navmesh; a tile already loaded there; polygons or links that do not fit); nothing changed on failure."""
+        file = _c_array("data", data, c_uint8)
+        _check(lib.nl_navmesh_add_tile_bytes(self.pointer, navmesh, file.items, file.count))
+
+    def add_tile_file(self, navmesh: NavmeshId, path: Union[str, "os.PathLike[str]"]) -> None:
+        """add_tile_bytes from the file at `path`; also STATUS_NOT_FOUND (no such file), STATUS_IO_ERROR."""
+        _check(lib.nl_navmesh_add_tile_file(self.pointer, navmesh, os.fsencode(path)))
+
+    def tile_hash(self, navmesh: NavmeshId, tile: TileLike) -> int:
+        """The content hash of the tile at `tile` of a tiled navmesh's grid (loaded or not), from what the world
+        holds now: the level's triangles in the columns the tile, its links and its neighbours' borders reach,
+        the builder and its settings, the link settings and the body. A tile's file records the hash it was saved
+        with (NavmeshFileInfo.content_hash): a bake skips a tile whose hash it holds. Never 0.
+        STATUS_INVALID_ARGUMENT for a navmesh that is not tiled."""
+        value = c_uint64()
+        _check(lib.nl_navmesh_get_tile_hash(self.pointer, navmesh, _tile_coord(tile), byref(value)))
+        return value.value
 
     # --- paths ---
 

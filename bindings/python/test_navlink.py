@@ -524,6 +524,66 @@ class NavmeshTest(NavLinkTestCase):
             self.assertFails(nl.STATUS_INVALID_ARGUMENT, "not tiled", world.remove_tile, solo, (0, 0))
             self.assertEqual(nl.AgentReason.TILE_UNLOADED, nl.AGENT_REASON_TILE_UNLOADED)
 
+    def test_tiles_saved_and_loaded_as_tiles_files(self):
+        """The gap level built in tiles of 32 cells (9.6 m), its links generated (the jumps start on one tile and
+        land on another): every tile saved as a tile's file and described (a tile, its place, the world's content
+        hash for it); the first tile's bytes loaded in a second world with the same level and the others added
+        make the same tiles and links; one tile once through a file; a tile added twice refused."""
+        with nl.World() as world, tempfile.TemporaryDirectory() as tmp:
+            add_gap_level(world)
+            recast = nl.default_recast_settings()
+            recast.tile_size = 32
+            navmesh = world.build_navmesh(recast=recast)
+            world.generate_links(navmesh)
+            info = world.navmesh_info(navmesh)
+            tiles = world.tiles(navmesh)
+            link_count = len(world.links(navmesh))
+            self.assertGreater(len(tiles), 1)
+            self.assertGreater(link_count, 0)
+
+            files = [world.save_tile(navmesh, tile) for tile in tiles]
+            tile_links = 0
+            for tile, data in zip(tiles, files):
+                self.assertIsInstance(data, bytes)
+                described, _ = nl.describe_navmesh_file(data)
+                self.assertEqual((described.is_tile, (described.tile.x, described.tile.z)), (1, tile))
+                tile_hash = world.tile_hash(navmesh, tile)
+                self.assertNotEqual(tile_hash, 0)
+                self.assertEqual(described.content_hash, tile_hash, "tile %s" % (tile,))
+                self.assertEqual(world.tile_hash(navmesh, nl.TileCoord(*tile)), tile_hash)
+                self.assertEqual((described.tile_width, described.tile_origin_x, described.tile_origin_z),
+                                 (info.tile_width, info.tile_origin[0], info.tile_origin[1]))
+                self.assertEqual(described.file_size, len(data))
+                tile_links += described.link_count
+            self.assertEqual(tile_links, link_count, "each generated link in the file of the tile it starts on")
+            whole, _ = nl.describe_navmesh_file(world.save_navmesh(navmesh))
+            self.assertEqual((whole.is_tile, whole.content_hash), (0, 0), "a whole navmesh's file is no tile's")
+
+            with nl.World() as other:
+                add_gap_level(other)
+                loaded = other.load_navmesh(files[0])
+                self.assertEqual(other.tiles(loaded), [tiles[0]], "the first tile's file makes a navmesh of that tile")
+                for data in files[1:]:
+                    other.add_tile_bytes(loaded, data)
+                self.assertEqual(other.tiles(loaded), tiles)
+                self.assertEqual(len(other.links(loaded)), link_count)
+                self.assertEqual(other.navmesh_info(loaded).polygon_count, info.polygon_count)
+
+                # Once through a file: the tile with the most links, saved to a file, removed and added back from it.
+                most = max(range(len(tiles)), key=lambda k: nl.describe_navmesh_file(files[k])[0].link_count)
+                path = os.path.join(tmp, "tile.nlnav")
+                world.save_tile_file(navmesh, tiles[most], path)
+                with open(path, "rb") as f:
+                    self.assertEqual(f.read(), files[most])
+                other.remove_tile(loaded, tiles[most])
+                self.assertEqual(len(other.tiles(loaded)), len(tiles) - 1)
+                other.add_tile_file(loaded, path)
+                self.assertEqual(other.tiles(loaded), tiles)
+                self.assertEqual(len(other.links(loaded)), link_count, "its links back with it")
+
+                self.assertFails(nl.STATUS_INVALID_ARGUMENT, "loaded already", other.add_tile_bytes, loaded, files[most])
+                self.assertEqual((other.tiles(loaded), len(other.links(loaded))), (tiles, link_count), "nothing changed")
+
 
     def test_navmesh_on_a_moving_surface(self):
         """A navmesh that rides a movable mesh (its carrier): given in the mesh's space, answered in the world

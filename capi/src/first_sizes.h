@@ -48,7 +48,8 @@ template <>
 inline constexpr size_t kFirstSize<nl_navmesh_def> = offsetof(nl_navmesh_def, detail_triangle_starts) +
                                                      sizeof(const uint32_t*);
 template <>
-inline constexpr size_t kFirstSize<nl_navmesh_file_info> = sizeof(nl_navmesh_file_info);
+inline constexpr size_t kFirstSize<nl_navmesh_file_info> = offsetof(nl_navmesh_file_info, level_hash) +
+                                                           sizeof(uint64_t);
 template <>
 inline constexpr size_t kFirstSize<nl_navmesh_info> = offsetof(nl_navmesh_info, bounds_max) + 3 * sizeof(float);
 template <>

@@ -89,6 +89,57 @@ NL_API nl_status nl_navmesh_save_file(const nl_world* world, nl_navmesh_id navme
     });
 }
 
+NL_API nl_status nl_navmesh_save_tile(const nl_world* world, nl_navmesh_id navmesh, nl_tile_coord tile, void* buffer,
+                                      size_t capacity, size_t* out_size) {
+    return guarded("nl_navmesh_save_tile", world, [&] {
+        const nl::World& w = deref(world);
+        require(out_size, "out_size");
+        if (!buffer && capacity > 0) fail(ErrorCode::InvalidArgument, "buffer is null but capacity is ", capacity);
+        const std::vector<uint8_t> file = w.save_tile(to_handle(navmesh), nl::TileCoord{tile.x, tile.z});
+        *out_size = file.size();
+        if (!buffer) return;
+        if (file.size() > capacity)
+            fail(ErrorCode::BufferTooSmall, "capacity is ", capacity, " but ", file.size(), " bytes are needed");
+        std::memcpy(buffer, file.data(), file.size());
+    });
+}
+
+NL_API nl_status nl_navmesh_save_tile_file(const nl_world* world, nl_navmesh_id navmesh, nl_tile_coord tile,
+                                           const char* path) {
+    return guarded("nl_navmesh_save_tile_file", world, [&] {
+        const nl::World& w = deref(world);
+        require(path, "path");
+        const std::vector<uint8_t> file = w.save_tile(to_handle(navmesh), nl::TileCoord{tile.x, tile.z});
+        nl::write_file_bytes(path, std::string_view(reinterpret_cast<const char*>(file.data()), file.size()));
+    });
+}
+
+NL_API nl_status nl_navmesh_add_tile_bytes(nl_world* world, nl_navmesh_id navmesh, const void* data, size_t size) {
+    return guarded("nl_navmesh_add_tile_bytes", world,
+                   [&] { deref(world).add_tile_file(to_handle(navmesh), read_file(data, size)); });
+}
+
+NL_API nl_status nl_navmesh_add_tile_file(nl_world* world, nl_navmesh_id navmesh, const char* path) {
+    return guarded("nl_navmesh_add_tile_file", world, [&] {
+        nl::World& w = deref(world);
+        require(path, "path");
+        const std::string bytes = nl::read_navmesh_file_bytes(path);
+        try {
+            w.add_tile_file(to_handle(navmesh), read_file(bytes.data(), bytes.size()));
+        } catch (const nl::Error& e) {
+            throw nl::Error(e.code(), nl::concat(path, ": ", e.what()));  // which file, for a host adding many
+        }
+    });
+}
+
+NL_API nl_status nl_navmesh_get_tile_hash(const nl_world* world, nl_navmesh_id navmesh, nl_tile_coord tile,
+                                          uint64_t* out_hash) {
+    return guarded("nl_navmesh_get_tile_hash", world, [&] {
+        require(out_hash, "out_hash");
+        *out_hash = deref(world).tile_content_hash(to_handle(navmesh), nl::TileCoord{tile.x, tile.z});
+    });
+}
+
 NL_API nl_navmesh_load_def nl_default_navmesh_load_def(void) {
     nl_navmesh_load_def def;
     std::memset(&def, 0, sizeof def);
@@ -149,6 +200,15 @@ NL_API nl_status nl_navmesh_file_describe(const void* data, size_t size, nl_navm
             info.rides_carrier = file.rides_carrier;
             info.quantum = file.quantum;
             info.level_hash = file.made_for.level_hash;
+            if (file.is_tile) {
+                const nl::TileLayout& t = file.navmesh.tiles;
+                info.is_tile = 1;
+                info.content_hash = file.content_hash;
+                info.tile = nl_tile_coord{t.tiles.front().x, t.tiles.front().z};
+                info.tile_width = t.grid.tile_width;
+                info.tile_origin_x = t.grid.origin_x;
+                info.tile_origin_z = t.grid.origin_z;
+            }
             nl::capi::write_growable(out_info, info, nl::capi::kFirstSize<nl_navmesh_file_info>, "out_info");
         }
         if (made_for_json) std::memcpy(made_for_json, json.c_str(), json.size() + 1);

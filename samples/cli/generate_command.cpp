@@ -1,6 +1,8 @@
 // navlink generate and navlink bake: navmesh, links, report (and a picture); generate writes the
 // links as JSON, bake the navmesh and its links as a baked navmesh file.
 #include <cstdio>
+#include <cstdlib>
+#include <optional>
 
 #include "arguments.h"
 #include "generation_report_text.h"
@@ -8,6 +10,7 @@
 #include "generation_settings.h"
 #include "help_text.h"
 #include "island_colors.h"
+#include "json_text.h"
 #include "link_files.h"
 #include "level_frame_options.h"
 #include "navigable_level.h"
@@ -17,12 +20,34 @@
 #include "picture_export.h"
 #include "sample_error.h"
 #include "text_file.h"
+#include "tile_bake.h"
 
 namespace nl::cli {
 
 namespace {
 
 enum class Output { LinksJson, NavMeshFile };
+
+// --tile-size N (bake only): cells per tile side, 16..4096 as nl_recast_settings.tile_size.
+std::optional<int> tile_size_option(const samples::Arguments& args, bool bake) {
+    const auto given = args.value("tile-size");
+    if (!given) return std::nullopt;
+    if (!bake) throw samples::SampleError("--tile-size is for navlink bake (a folder of tiles)");
+    char* end = nullptr;
+    const long cells = std::strtol(given->c_str(), &end, 10);
+    if (end == given->c_str() || *end != '\0' || cells < 16 || cells > 4096)
+        throw samples::SampleError("--tile-size must be a whole number of cells from 16 to 4096 (got '" + *given +
+                                   "')");
+    return static_cast<int>(cells);
+}
+
+// The builder's settings JSON with its tile size set.
+std::string with_tile_size(const std::string& recast_json, int cells) {
+    nlohmann::json settings = recast_json.empty() ? nlohmann::json::object()
+                                                  : samples::parse_json_text(recast_json, "the \"recast\" settings");
+    settings["tile_size"] = cells;
+    return settings.dump();
+}
 
 int generate(int argc, char** argv, Output output) {
     const bool bake = output == Output::NavMeshFile;
@@ -35,15 +60,17 @@ int generate(int argc, char** argv, Output output) {
                                                             {"png", true},
                                                             {"oblique", false},
                                                             {"link-numbers", false},
-                                                            {"roofs", false}}));
+                                                            {"roofs", false},
+                                                            {"tile-size", true}}));
     if (args.wants_help()) {
         std::fputs(bake ? kBakeHelp : kGenerateHelp, stdout);
         return 0;
     }
     args.expect_positional(1, "LEVEL.obj");
     const std::string out = args.required("out");
+    const std::optional<int> tile_size = tile_size_option(args, bake);
     // Every output is checked before the work, so a bad --png fails before --out is written.
-    samples::check_writable_file(out);
+    if (!tile_size) samples::check_writable_file(out);
     if (const auto png = args.value("png")) samples::check_writable_file(*png);
     // Read every input before the slow work, so a bad file fails at once.
     const samples::AgentProfile agent =
@@ -54,14 +81,18 @@ int generate(int argc, char** argv, Output output) {
         throw samples::SampleError(*args.value("agent") + ": " + agent.first_capability_key +
                                    " is a capability: capabilities choose links when a path is planned (navlink path "
                                    "--agent); generate reads only the body (radius, height, max_climb, max_slope)");
-    const samples::GenerationSettings settings = args.has("settings")
-                                                     ? samples::read_generation_settings_file(*args.value("settings"))
-                                                     : samples::GenerationSettings();
+    samples::GenerationSettings settings = args.has("settings")
+                                               ? samples::read_generation_settings_file(*args.value("settings"))
+                                               : samples::GenerationSettings();
+    if (tile_size) settings.recast_json = with_tile_size(settings.recast_json, *tile_size);
 
     NavigableLevel level(args.positional()[0], args.value("navmesh"), agent.body, settings.recast_json, args.has("png"),
                          args.value("plugin"), level_frame(args));
     const nl_link_generation_report report = level.generate_links(settings.links);
-    if (bake)
+    TileBakeWritten tiles;
+    if (tile_size)
+        tiles = write_tile_bake(level.world(), level.navmesh(), out);
+    else if (bake)
         samples::save_navmesh_file(level.world(), level.navmesh(), out);
     else
         samples::write_text_file(out, samples::links_json(level.world(), level.navmesh()));
@@ -72,7 +103,12 @@ int generate(int argc, char** argv, Output output) {
                 contents.boundary_edges.size(),
                 args.has("navmesh") ? args.value("navmesh")->c_str() : "built by recast");
     print_generation_report(stdout, report, contents.links, level.times());
-    std::printf("wrote %s\n", out.c_str());
+    if (tile_size)
+        std::printf("wrote %s: %zu tiles written (%llu bytes), %zu kept (the same content hash), %zu stale removed\n",
+                    out.c_str(), tiles.written, static_cast<unsigned long long>(tiles.bytes), tiles.kept,
+                    tiles.removed);
+    else
+        std::printf("wrote %s\n", out.c_str());
     if (const auto png = args.value("png")) {
         PictureRequest request;
         request.path = *png;

@@ -18,6 +18,7 @@
 #include "path_plan.h"
 #include "picture_export.h"
 #include "sample_error.h"
+#include "tile_bake.h"
 
 namespace nl::cli {
 
@@ -58,8 +59,9 @@ int run_path(int argc, char** argv) {
     }
     args.expect_positional(1, "LEVEL.obj or NAVMESH.nlnav");
     const std::string& input = args.positional()[0];
+    const bool tiles = is_tile_bake(input);
     const bool baked =
-        samples::is_navmesh_file(input) ||
+        tiles || samples::is_navmesh_file(input) ||
         (input.size() > 6 && input.compare(input.size() - 6, 6, ".nlnav") == 0);  // a damaged one: say why
     float from[3], to[3];
     samples::parse_point(args.required("from"), "--from", from);
@@ -86,7 +88,8 @@ int run_path(int argc, char** argv) {
                 throw samples::SampleError(std::string("--") + level_only + " needs LEVEL.obj: " +
                                            args.positional()[0] + " is a baked navmesh file, planned over as it is");
         samples::World world;
-        const nl_navmesh_id navmesh = samples::load_navmesh_file(world.get(), args.positional()[0]);
+        const nl_navmesh_id navmesh =
+            tiles ? load_tile_bake(world.get(), input) : samples::load_navmesh_file(world.get(), args.positional()[0]);
         if (const auto links = args.value("links")) load_links_option(args, world.get(), navmesh, *links);
         const samples::PlannedPath path =
             samples::find_path(world.get(), navmesh, from, to, agent.capabilities, search);

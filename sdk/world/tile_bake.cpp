@@ -15,6 +15,9 @@ uint64_t World::tile_content_hash(Handle navmesh, TileCoord coord) const {
     const std::shared_ptr<const NavMesh> mesh = navmeshes_.navmesh(navmesh);
     const TileGrid& grid = mesh->tiles().grid;
     if (!grid.tiled()) fail(ErrorCode::InvalidArgument, "the navmesh is not tiled");
+    if (std::fabs(double(coord.x)) > kMaxTileIndex || std::fabs(double(coord.z)) > kMaxTileIndex)
+        fail(ErrorCode::InvalidArgument, "tile (", coord.x, ", ", coord.z,
+             ") is beyond the grid's tiles (indices within 2^30 either way)");
     const NavMeshProvenance made_for = navmeshes_.made_for(navmesh);
     LinkSettings links;
     if (!made_for.links.settings.empty()) apply_settings_json(made_for.links.settings, links);
@@ -44,24 +47,29 @@ std::vector<uint8_t> World::save_tile(Handle navmesh, TileCoord coord) const {
     const std::shared_ptr<const NavMesh> mesh = navmeshes_.navmesh(navmesh);
     if (!mesh->tiles().grid.tiled())
         fail(ErrorCode::InvalidArgument, "the navmesh is not tiled: save it whole (nl_navmesh_save)");
-    const NavMeshRegistry::SavedTile saved = navmeshes_.saved_tile(navmesh, coord);
-    if (saved.rides_carrier)
+    if (navmeshes_.frame(navmesh))
         fail(ErrorCode::InvalidArgument,
              "the navmesh rides a moving mesh: its tiles are not baked one by one (save it whole)");
+    const NavMeshRegistry::SavedTile saved = navmeshes_.saved_tile(navmesh, coord);
     return write_tile_file(*saved.tile, saved.links, saved.made_for, tile_content_hash(navmesh, coord));
 }
 
 void World::add_tile_file(Handle navmesh, const NavMeshFile& file) {
     if (!file.is_tile)
         fail(ErrorCode::InvalidArgument, "the file holds a whole navmesh, not a tile (load it as a navmesh)");
+    {
+        const std::shared_ptr<const NavMesh> mesh = navmeshes_.navmesh(navmesh);
+        if (!mesh->tiles().grid.tiled())
+            fail(ErrorCode::InvalidArgument, "the navmesh is not tiled: a tile's file is added to a tiled one");
+    }
     const NavMeshProvenance ours = navmeshes_.made_for(navmesh);
     const NavMeshProvenance& theirs = file.made_for;
     if (ours.builder != theirs.builder || ours.builder_settings != theirs.builder_settings ||
         ours.links.settings != theirs.links.settings || ours.links.plugins != theirs.links.plugins)
-        fail(ErrorCode::InvalidArgument, "the tile was made with another ",
-             ours.builder != theirs.builder                     ? "builder"
-             : ours.builder_settings != theirs.builder_settings ? "builder settings"
-                                                                : "link settings",
+        fail(ErrorCode::InvalidArgument, "the tile was made with ",
+             ours.builder != theirs.builder                     ? "another builder"
+             : ours.builder_settings != theirs.builder_settings ? "other builder settings"
+                                                                : "other link settings",
              " than the navmesh's tiles: bake them together");
     try {
         // Its own polygons and the links within it checked first; a link to another tile waits, parked,
@@ -79,7 +87,10 @@ void World::add_tile_file(Handle navmesh, const NavMeshFile& file) {
         insert_tile(navmesh, file.navmesh, &given);
     } catch (const Error& e) {
         if (e.code() != ErrorCode::InvalidArgument) throw;
-        throw Error(e.code(), concat("the file's tile: ", e.what()));
+        // A refusal about a tile def's field (add_tile's words) is about the file's tile here.
+        std::string why = e.what();
+        if (e.starts_with_field() && why.find(": ") != std::string::npos) why = why.substr(why.find(": ") + 2);
+        throw Error(e.code(), concat("the file's tile: ", why));
     }
 }
 

@@ -102,7 +102,12 @@ _Static_assert(offsetof(nl_navmesh_file_info, size) == 0 && offsetof(nl_navmesh_
                    offsetof(nl_navmesh_file_info, generated_link_count) == 48 &&
                    offsetof(nl_navmesh_file_info, rides_carrier) == 52 &&
                    offsetof(nl_navmesh_file_info, quantum) == 56 && offsetof(nl_navmesh_file_info, reserved) == 60 &&
-                   offsetof(nl_navmesh_file_info, level_hash) == 64 && sizeof(nl_navmesh_file_info) == 72,
+                   offsetof(nl_navmesh_file_info, level_hash) == 64 &&
+                   offsetof(nl_navmesh_file_info, content_hash) == 72 && offsetof(nl_navmesh_file_info, tile) == 80 &&
+                   offsetof(nl_navmesh_file_info, tile_width) == 88 &&
+                   offsetof(nl_navmesh_file_info, tile_origin_x) == 92 &&
+                   offsetof(nl_navmesh_file_info, tile_origin_z) == 96 &&
+                   offsetof(nl_navmesh_file_info, is_tile) == 100 && sizeof(nl_navmesh_file_info) == 104,
                "nl_navmesh_file_info layout");
 _Static_assert(offsetof(nl_navmesh_info, vertex_count) == 4 && offsetof(nl_navmesh_info, polygon_count) == 8 &&
                    offsetof(nl_navmesh_info, portal_count) == 12 &&

@@ -1052,6 +1052,11 @@ static nl_status saver_id_call(nl_world* w, raw_id id, void* out) {
 
 void saver_cases(const char* function, const char* out_name, navmesh_saver* saver, const unsigned char* expected,
                  size_t needed, size_t terminator) {
+    saver_cases_on(function, out_name, saver, expected, needed, terminator, A.navmesh, B.navmesh);
+}
+
+void saver_cases_on(const char* function, const char* out_name, navmesh_saver* saver, const unsigned char* expected,
+                    size_t needed, size_t terminator, nl_navmesh_id live, nl_navmesh_id foreign) {
     const id_function f = {function, "navmesh", "buffer", 16, 0, 0, saver_id_call, 1};
     const size_t room = needed + terminator + 64;
     unsigned char* buffer = (unsigned char*)malloc(room);
@@ -1060,20 +1065,20 @@ void saver_cases(const char* function, const char* out_name, navmesh_saver* save
     g_saver = saver;
     g_save_buffer = buffer;
     g_save_room = room;
-    id_cases(&f, RAW(A.navmesh), RAW(A.stale_navmesh), RAW(B.navmesh));
+    id_cases(&f, RAW(live), RAW(A.stale_navmesh), RAW(foreign));
     CASE(function, "%s NULL", out_name) {
         fill(buffer, room);
-        EXPECT_INVALID(A.world, saver(A.world, A.navmesh, buffer, room, NULL), out_name);
+        EXPECT_INVALID(A.world, saver(A.world, live, buffer, room, NULL), out_name);
         EXPECT_UNTOUCHED(buffer, room, "buffer");
     }
     CASE(function, "buffer NULL (allowed with capacity 0: measures)") {
         fill(&length, sizeof length);
-        EXPECT_OK(saver(A.world, A.navmesh, NULL, 0, &length));
+        EXPECT_OK(saver(A.world, live, NULL, 0, &length));
         EXPECT(length == needed, "%s = %u, expected %u", out_name, (unsigned)length, (unsigned)needed);
     }
     CASE(function, "capacity huge (buffer NULL)") {
         fill(&length, sizeof length);
-        EXPECT_INVALID(A.world, saver(A.world, A.navmesh, NULL, SIZE_MAX, &length), "buffer");
+        EXPECT_INVALID(A.world, saver(A.world, live, NULL, SIZE_MAX, &length), "buffer");
         EXPECT_UNTOUCHED(&length, sizeof length, out_name);
     }
     {
@@ -1086,8 +1091,8 @@ void saver_cases(const char* function, const char* out_name, navmesh_saver* save
             CASE(function, "%s", what[k]) {
                 fill(buffer, room);
                 fill(&length, sizeof length);
-                EXPECT_FAILURE(A.world, saver(A.world, A.navmesh, buffer, too_small[k], &length),
-                               NL_STATUS_BUFFER_TOO_SMALL, "capacity");
+                EXPECT_FAILURE(A.world, saver(A.world, live, buffer, too_small[k], &length), NL_STATUS_BUFFER_TOO_SMALL,
+                               "capacity");
                 EXPECT_UNTOUCHED(buffer, room, "buffer");
                 EXPECT(length == needed, "%s = %u, expected the %u needed", out_name, (unsigned)length,
                        (unsigned)needed);
@@ -1096,7 +1101,7 @@ void saver_cases(const char* function, const char* out_name, navmesh_saver* save
     }
     CASE(function, "capacity huge (64 bytes to spare: nothing written past the end)") {
         fill(buffer, room);
-        EXPECT_OK(saver(A.world, A.navmesh, buffer, room, &length));
+        EXPECT_OK(saver(A.world, live, buffer, room, &length));
         EXPECT(length == needed, "%s = %u, expected %u", out_name, (unsigned)length, (unsigned)needed);
         EXPECT(memcmp(buffer, expected, needed + terminator) == 0, "other bytes written");
         EXPECT_UNTOUCHED(buffer + needed + terminator, 64, "the bytes past the end");

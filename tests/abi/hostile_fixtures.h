@@ -344,6 +344,10 @@ typedef nl_status navmesh_saver(const nl_world* world, nl_navmesh_id navmesh, vo
                                 size_t* out_length);
 void saver_cases(const char* function, const char* out_name, navmesh_saver* saver, const unsigned char* expected,
                  size_t needed, size_t terminator);
+/* The same on another of A's navmeshes (`live`; `foreign` is B's in its slot): a tile's saver saves
+   from the tiled navmesh. */
+void saver_cases_on(const char* function, const char* out_name, navmesh_saver* saver, const unsigned char* expected,
+                    size_t needed, size_t terminator, nl_navmesh_id live, nl_navmesh_id foreign);
 
 /* ---------------------------------------------------------------------------------------------
  * Files: a folder of the child's own, and the paths every loader refuses

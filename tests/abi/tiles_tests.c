@@ -8,7 +8,15 @@
  *
  * The floor is a box 40 x 1 x 12 m, its top at y = 0, x in [0, 40], z in [0, 12]: at Recast's default
  * cell size (0.3 m) a tile_size of 32 cells makes tiles of 9.6 m, five columns and two rows of them.
+ *
+ * Baked tiles (navmesh_file.h): a level of platforms with jumps between them built in tiles, its links
+ * generated, every tile saved on its own (nl_navmesh_save_tile, nl_navmesh_save_tile_file) and loaded
+ * into a second world in a shuffled order (nl_navmesh_load for the first, nl_navmesh_add_tile_bytes or
+ * nl_navmesh_add_tile_file for the rest): the navmesh, its links and a path over them as they were.
  */
+/* mkdtemp() for the tiles' files; strict C11 otherwise. */
+#define _POSIX_C_SOURCE 200809L
+
 #include "abi_test.h"
 #include "navmesh_scene.h"
 #include "scene.h"
@@ -362,5 +370,313 @@ static void link_parked_while_its_tile_is_out(void) {
     nl_world_destroy(f.world);
 }
 
+/* ---------------------------------------------------------------------------------------------
+ * Baked tiles
+ * ------------------------------------------------------------------------------------------- */
+
+/* Four platforms in a row, 8 x 6 m (x from 10 k to 10 k + 8, z in [0, 6]) with gaps of 2 m, the second
+   and fourth 0.5 m higher (tops at y = 0 and 0.5), over a floor 3 m below the first: jumps between the
+   platforms, drops to the floor. At 20 cells of 0.3 m the tiles are 6 m: seven columns and two rows
+   from the floor's corner (-2, -2), so every jump starts on one tile and lands on another. */
+static nl_world* make_platforms(void) {
+    nl_world* world = make_world(2);
+    static const float floor_lo[3] = {-2.0f, -4.0f, -2.0f}, floor_hi[3] = {40.0f, -3.0f, 8.0f};
+    nl_mesh_id mesh;
+    int k;
+    for (k = 0; k < 4; ++k) {
+        const float rise = k % 2 ? 0.5f : 0.0f;
+        const float lo[3] = {10.0f * (float)k, -1.0f + rise, 0.0f}, hi[3] = {10.0f * (float)k + 8.0f, rise, 6.0f};
+        CHECK_OK(add_box_mesh(world, lo, hi, 0u, &mesh));
+    }
+    CHECK_OK(add_box_mesh(world, floor_lo, floor_hi, 0u, &mesh));
+    return world;
+}
+
+/* Every link of a navmesh by what it is, sorted (malloc'ed, `count` of them). */
+typedef struct link_key {
+    uint32_t kind;
+    float start[3], end[3], apex[3];
+    uint8_t bidirectional, generated, holds, pad;
+} link_key;
+
+static int compare_keys(const void* a, const void* b) { return memcmp(a, b, sizeof(link_key)); }
+
+static link_key* link_keys(const nl_world* world, nl_navmesh_id navmesh, uint32_t* count) {
+    nl_link* links;
+    link_key* keys;
+    uint32_t n = 0, i;
+    *count = 0;
+    if (!CHECK_OK(nl_navmesh_get_links(world, navmesh, NULL, 0, &n))) return NULL;
+    links = (nl_link*)calloc(n + 1u, sizeof *links);
+    keys = (link_key*)calloc(n + 1u, sizeof *keys);
+    if (!links || !keys) {
+        fprintf(stderr, "out of memory\n");
+        exit(2);
+    }
+    links[0] = nl_link_init();
+    if (!CHECK_OK(nl_navmesh_get_links(world, navmesh, links, n, &n))) n = 0;
+    for (i = 0; i < n; ++i) {
+        keys[i].kind = (uint32_t)links[i].kind;
+        memcpy(keys[i].start, links[i].start, sizeof keys[i].start);
+        memcpy(keys[i].end, links[i].end, sizeof keys[i].end);
+        memcpy(keys[i].apex, links[i].apex, sizeof keys[i].apex);
+        keys[i].bidirectional = links[i].bidirectional;
+        keys[i].generated = links[i].generated;
+        keys[i].holds = links[i].holds;
+    }
+    qsort(keys, n, sizeof *keys, compare_keys);
+    free(links);
+    *count = n;
+    return keys;
+}
+
+/* A path from the first platform to the fourth for a body that jumps and drops. */
+static nl_path_result across_platforms(nl_world* world, nl_navmesh_id navmesh) {
+    nl_path_request_def def = nl_default_path_request_def();
+    nl_path_result result = nl_path_result_init();
+    uint32_t count = 0;
+    def.navmesh = navmesh;
+    def.start[0] = 2.0f, def.start[2] = 3.0f;
+    def.goal[0] = 36.0f, def.goal[1] = 0.5f, def.goal[2] = 3.0f;
+    def.capabilities.max_jump_distance = 6.0f;
+    def.capabilities.max_jump_height = 1.5f;
+    def.capabilities.max_drop_height = 4.0f;
+    CHECK_OK(nl_path_find(world, &def, &result, NULL, 0, &count));
+    return result;
+}
+
+/* The navmesh `loaded` of `world` is `original`'s of `source`: info, tiles, vertices, every link, the path
+   across, and every tile's hash. */
+static void check_same_navmesh(nl_world* source, nl_navmesh_id original, nl_world* world, nl_navmesh_id loaded,
+                               const char* label) {
+    const nl_navmesh_info a = navmesh_info(source, original), b = navmesh_info(world, loaded);
+    nl_tile_coord tiles_a[MAX_TILES], tiles_b[MAX_TILES];
+    uint32_t count_a = 0, count_b = 0, links_a = 0, links_b = 0, i, va = 0, vb = 0;
+    float* vertices_a = navmesh_vertices(source, original, &va);
+    float* vertices_b = navmesh_vertices(world, loaded, &vb);
+    link_key* keys_a;
+    link_key* keys_b;
+    nl_path_result pa, pb;
+    CHECK_MSG(b.polygon_count == a.polygon_count && b.vertex_count == a.vertex_count &&
+                  b.portal_count == a.portal_count && b.boundary_edge_count == a.boundary_edge_count,
+              "%s: %u polygons, %u vertices, %u portals, %u boundary edges; the original's %u, %u, %u, %u", label,
+              (unsigned)b.polygon_count, (unsigned)b.vertex_count, (unsigned)b.portal_count,
+              (unsigned)b.boundary_edge_count, (unsigned)a.polygon_count, (unsigned)a.vertex_count,
+              (unsigned)a.portal_count, (unsigned)a.boundary_edge_count);
+    CHECK_MSG(b.tile_count == a.tile_count && b.tile_width == a.tile_width && b.tile_origin[0] == a.tile_origin[0] &&
+                  b.tile_origin[1] == a.tile_origin[1],
+              "%s: %u tiles of %g m from (%g, %g); the original's %u of %g m from (%g, %g)", label,
+              (unsigned)b.tile_count, (double)b.tile_width, (double)b.tile_origin[0], (double)b.tile_origin[1],
+              (unsigned)a.tile_count, (double)a.tile_width, (double)a.tile_origin[0], (double)a.tile_origin[1]);
+    CHECK_MSG(memcmp(b.bounds_min, a.bounds_min, sizeof a.bounds_min) == 0 &&
+                  memcmp(b.bounds_max, a.bounds_max, sizeof a.bounds_max) == 0 &&
+                  same_agent(a.agent_type, b.agent_type),
+              "%s: other bounds or agent type", label);
+    CHECK(NL_SUCCEEDED(nl_navmesh_get_tiles(source, original, tiles_a, MAX_TILES, &count_a)) &&
+          NL_SUCCEEDED(nl_navmesh_get_tiles(world, loaded, tiles_b, MAX_TILES, &count_b)));
+    CHECK_MSG(count_a == count_b && memcmp(tiles_a, tiles_b, count_a * sizeof *tiles_a) == 0,
+              "%s: the tiles listed differ (%u, the original's %u)", label, (unsigned)count_b, (unsigned)count_a);
+    CHECK_MSG(vertices_a && vertices_b && va == vb && memcmp(vertices_a, vertices_b, 3u * va * sizeof(float)) == 0,
+              "%s: the vertices are not the original's, bit for bit", label);
+    free(vertices_a);
+    free(vertices_b);
+    keys_a = link_keys(source, original, &links_a);
+    keys_b = link_keys(world, loaded, &links_b);
+    CHECK_MSG(links_a == links_b && links_a > 0u, "%s: %u links, the original %u", label, (unsigned)links_b,
+              (unsigned)links_a);
+    for (i = 0; i < links_a && i < links_b; ++i) {
+        if (!CHECK_MSG(memcmp(&keys_a[i], &keys_b[i], sizeof keys_a[i]) == 0,
+                       "%s: link %u (by kind and place): kind %u (%g, %g, %g) -> (%g, %g, %g), holds %u; the "
+                       "original's kind %u (%g, %g, %g) -> (%g, %g, %g), holds %u",
+                       label, (unsigned)i, (unsigned)keys_b[i].kind, (double)keys_b[i].start[0],
+                       (double)keys_b[i].start[1], (double)keys_b[i].start[2], (double)keys_b[i].end[0],
+                       (double)keys_b[i].end[1], (double)keys_b[i].end[2], (unsigned)keys_b[i].holds,
+                       (unsigned)keys_a[i].kind, (double)keys_a[i].start[0], (double)keys_a[i].start[1],
+                       (double)keys_a[i].start[2], (double)keys_a[i].end[0], (double)keys_a[i].end[1],
+                       (double)keys_a[i].end[2], (unsigned)keys_a[i].holds))
+            break;
+    }
+    for (i = 0; i < links_b; ++i)
+        if (!CHECK_MSG(keys_b[i].holds == 1u, "%s: link %u is parked with every tile loaded", label, (unsigned)i))
+            break;
+    free(keys_a);
+    free(keys_b);
+    pa = across_platforms(source, original);
+    pb = across_platforms(world, loaded);
+    CHECK_MSG(pa.outcome == NL_PATH_COMPLETE && pa.links_used >= 3u,
+              "%s: the original's path across the platforms: outcome %u, %u links", label, (unsigned)pa.outcome,
+              (unsigned)pa.links_used);
+    CHECK_MSG(pb.outcome == pa.outcome && pb.links_used == pa.links_used && pb.length == pa.length &&
+                  pb.point_count == pa.point_count,
+              "%s: the path across: outcome %u, %u links, %.6f m, %u points; the original's %u, %u, %.6f m, %u", label,
+              (unsigned)pb.outcome, (unsigned)pb.links_used, (double)pb.length, (unsigned)pb.point_count,
+              (unsigned)pa.outcome, (unsigned)pa.links_used, (double)pa.length, (unsigned)pa.point_count);
+    /* The same level, the same provenance: each tile hashes as in the world it was saved from. */
+    for (i = 0; i < count_a && i < MAX_TILES; ++i) {
+        uint64_t ha = 0, hb = 0;
+        CHECK_OK(nl_navmesh_get_tile_hash(source, original, tiles_a[i], &ha));
+        CHECK_OK(nl_navmesh_get_tile_hash(world, loaded, tiles_a[i], &hb));
+        if (!CHECK_MSG(ha == hb && ha != 0u, "%s: tile (%d, %d) hashes %016llx; in the original %016llx", label,
+                       (int)tiles_a[i].x, (int)tiles_a[i].z, (unsigned long long)hb, (unsigned long long)ha))
+            break;
+    }
+}
+
+/* 0 .. n-1 in an order shuffled by a fixed seed (Fisher-Yates over xorshift32). */
+static void shuffled(uint32_t* order, uint32_t n, uint32_t seed) {
+    uint32_t i, x = seed;
+    for (i = 0; i < n; ++i) order[i] = i;
+    for (i = n; i > 1u; --i) {
+        uint32_t j, t;
+        x ^= x << 13, x ^= x >> 17, x ^= x << 5;
+        j = x % i;
+        t = order[i - 1u], order[i - 1u] = order[j], order[j] = t;
+    }
+}
+
+/* The platforms built in tiles with their links generated; every tile saved with the two-call pattern
+   and described; a second world with the same level loads the first tile of a shuffled order
+   (nl_navmesh_load) and adds the rest (nl_navmesh_add_tile_bytes): the navmesh, its links and a path
+   over them are the original's, and each tile saved again is the file it came from. The same through
+   files (nl_navmesh_save_tile_file, nl_navmesh_load_file, nl_navmesh_add_tile_file) in a third world. */
+static void baked_tiles_load_in_any_order(void) {
+    nl_world* world = make_platforms();
+    nl_world* second = make_platforms();
+    nl_world* third = make_platforms();
+    nl_recast_settings settings = nl_default_recast_settings();
+    nl_navmesh_build_def build = nl_default_navmesh_build_def();
+    nl_link_generation_report report;
+    nl_navmesh_info info;
+    nl_navmesh_id navmesh = {0u, 0u}, loaded = {0u, 0u}, from_files = {0u, 0u};
+    nl_tile_coord tiles[MAX_TILES];
+    unsigned char* files[MAX_TILES];
+    size_t sizes[MAX_TILES];
+    uint32_t order[MAX_TILES], count = 0, i, owning = 0, generated = 0;
+    char folder[64], path[128];
+    memset(&report, 0, sizeof report);
+    report.size = sizeof report;
+    settings.tile_size = 20u;
+    build.settings = &settings;
+    CHECK_OK(nl_navmesh_build(world, &build, &navmesh));
+    CHECK_OK(nl_navmesh_generate_links(world, navmesh, NULL, NULL, NULL, &report));
+    info = navmesh_info(world, navmesh);
+    CHECK_NEAR(info.tile_width, 6.0f, 1e-4f);
+    CHECK(NL_SUCCEEDED(nl_navmesh_get_tiles(world, navmesh, tiles, MAX_TILES, &count)));
+    CHECK_MSG(count >= 8u && count == info.tile_count, "%u tiles (info: %u)", (unsigned)count,
+              (unsigned)info.tile_count);
+    CHECK_MSG(report.jump_links > 0u && report.drop_links > 0u, "%u jumps and %u drops generated",
+              (unsigned)report.jump_links, (unsigned)report.drop_links);
+    if (count == 0u || count > MAX_TILES) count = 0u;
+
+    /* Every tile saved (measured, then written) and described. */
+    for (i = 0; i < count; ++i) {
+        nl_navmesh_file_info described;
+        uint64_t hash = 0;
+        size_t measured = 0, written = 0;
+        files[i] = NULL;
+        sizes[i] = 0;
+        CHECK_OK(nl_navmesh_save_tile(world, navmesh, tiles[i], NULL, 0, &measured));
+        files[i] = (unsigned char*)malloc(measured ? measured : 1u);
+        if (!files[i]) exit(2);
+        CHECK_OK(nl_navmesh_save_tile(world, navmesh, tiles[i], files[i], measured, &written));
+        CHECK_MSG(written == measured && measured > 0u, "tile (%d, %d): %u bytes measured, %u written", (int)tiles[i].x,
+                  (int)tiles[i].z, (unsigned)measured, (unsigned)written);
+        sizes[i] = written;
+        memset(&described, 0, sizeof described);
+        described.size = sizeof described;
+        CHECK_OK(nl_navmesh_file_describe(files[i], sizes[i], &described, NULL, 0, NULL));
+        CHECK_OK(nl_navmesh_get_tile_hash(world, navmesh, tiles[i], &hash));
+        CHECK_MSG(described.is_tile == 1u && described.tile.x == tiles[i].x && described.tile.z == tiles[i].z,
+                  "tile (%d, %d): is_tile %u, tile (%d, %d)", (int)tiles[i].x, (int)tiles[i].z,
+                  (unsigned)described.is_tile, (int)described.tile.x, (int)described.tile.z);
+        CHECK_MSG(described.content_hash == hash && hash != 0u,
+                  "tile (%d, %d): content_hash %016llx, nl_navmesh_get_tile_hash %016llx", (int)tiles[i].x,
+                  (int)tiles[i].z, (unsigned long long)described.content_hash, (unsigned long long)hash);
+        CHECK_MSG(described.tile_width == info.tile_width && described.tile_origin_x == info.tile_origin[0] &&
+                      described.tile_origin_z == info.tile_origin[1] && described.file_size == sizes[i],
+                  "tile (%d, %d): tiles of %g m from (%g, %g), %u bytes", (int)tiles[i].x, (int)tiles[i].z,
+                  (double)described.tile_width, (double)described.tile_origin_x, (double)described.tile_origin_z,
+                  (unsigned)described.file_size);
+        CHECK(described.generated_link_count == described.link_count);
+        owning += described.link_count > 0u;
+        generated += described.link_count;
+    }
+    {
+        /* Each generated link is in the file of one tile: the one it starts on. */
+        uint32_t link_count = 0;
+        CHECK_OK(nl_navmesh_get_links(world, navmesh, NULL, 0, &link_count));
+        CHECK_MSG(generated == link_count && owning >= 2u, "%u links in the tiles' files (%u tiles own some); %u links",
+                  (unsigned)generated, (unsigned)owning, (unsigned)link_count);
+    }
+
+    /* The second world: the first tile of a shuffled order loaded, the rest added from their bytes. */
+    shuffled(order, count, 20240607u);
+    if (count > 0u) {
+        nl_tile_coord got[MAX_TILES];
+        uint32_t got_count = 0;
+        CHECK_OK(nl_navmesh_load(second, files[order[0]], sizes[order[0]], NULL, &loaded));
+        CHECK(NL_SUCCEEDED(nl_navmesh_get_tiles(second, loaded, got, MAX_TILES, &got_count)) && got_count == 1u &&
+              got[0].x == tiles[order[0]].x && got[0].z == tiles[order[0]].z);
+        for (i = 1; i < count; ++i)
+            CHECK_OK(nl_navmesh_add_tile_bytes(second, loaded, files[order[i]], sizes[order[i]]));
+        check_same_navmesh(world, navmesh, second, loaded, "loaded from bytes");
+        /* Each tile saved again is the file it was loaded from. */
+        for (i = 0; i < count; ++i) {
+            size_t size = 0;
+            unsigned char* again = (unsigned char*)malloc(sizes[i] + 1u);
+            if (!again) exit(2);
+            CHECK_OK(nl_navmesh_save_tile(second, loaded, tiles[i], again, sizes[i] + 1u, &size));
+            CHECK_MSG(size == sizes[i] && memcmp(again, files[i], size) == 0,
+                      "tile (%d, %d) saved again from the loaded navmesh differs", (int)tiles[i].x, (int)tiles[i].z);
+            free(again);
+        }
+    }
+
+    /* The third world, through files: saved with nl_navmesh_save_tile_file (the bytes of
+       nl_navmesh_save_tile), loaded in another shuffled order. */
+    snprintf(folder, sizeof folder, "/tmp/navlink-abi-tiles-XXXXXX");
+    CHECK(mkdtemp(folder) != NULL);
+    for (i = 0; i < count; ++i) {
+        FILE* f;
+        unsigned char* read = (unsigned char*)malloc(sizes[i] + 1u);
+        size_t got = 0;
+        if (!read) exit(2);
+        snprintf(path, sizeof path, "%s/tile_%d_%d.nltile", folder, (int)tiles[i].x, (int)tiles[i].z);
+        CHECK_OK(nl_navmesh_save_tile_file(world, navmesh, tiles[i], path));
+        f = fopen(path, "rb");
+        if (f) {
+            got = fread(read, 1, sizes[i] + 1u, f);
+            fclose(f);
+        }
+        CHECK_MSG(got == sizes[i] && memcmp(read, files[i], got) == 0, "%s: %u bytes, not nl_navmesh_save_tile's %u",
+                  path, (unsigned)got, (unsigned)sizes[i]);
+        free(read);
+    }
+    shuffled(order, count, 7u);
+    for (i = 0; i < count; ++i) {
+        snprintf(path, sizeof path, "%s/tile_%d_%d.nltile", folder, (int)tiles[order[i]].x, (int)tiles[order[i]].z);
+        if (i == 0)
+            CHECK_OK(nl_navmesh_load_file(third, path, NULL, &from_files));
+        else
+            CHECK_OK(nl_navmesh_add_tile_file(third, from_files, path));
+    }
+    if (count > 0u) {
+        check_same_navmesh(world, navmesh, third, from_files, "loaded from files");
+        /* A tile's file again: loaded already, nothing changed. */
+        snprintf(path, sizeof path, "%s/tile_%d_%d.nltile", folder, (int)tiles[0].x, (int)tiles[0].z);
+        CHECK_INVALID(nl_navmesh_add_tile_file(third, from_files, path), "loaded already");
+        CHECK(navmesh_info(third, from_files).tile_count == count);
+    }
+    for (i = 0; i < count; ++i) {
+        snprintf(path, sizeof path, "%s/tile_%d_%d.nltile", folder, (int)tiles[i].x, (int)tiles[i].z);
+        CHECK(remove(path) == 0);
+        free(files[i]);
+    }
+    CHECK(remove(folder) == 0);
+    nl_world_destroy(third);
+    nl_world_destroy(second);
+    nl_world_destroy(world);
+}
+
 ABI_SECTION(tiles, ABI_CASE(built_in_tiles), ABI_CASE(removed_tiles_cut_the_path), ABI_CASE(agent_waits_for_its_tile),
-            ABI_CASE(link_parked_while_its_tile_is_out));
+            ABI_CASE(link_parked_while_its_tile_is_out), ABI_CASE(baked_tiles_load_in_any_order));

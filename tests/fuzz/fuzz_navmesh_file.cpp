@@ -7,19 +7,9 @@
 #include <cstring>
 #include <vector>
 
-#include <zlib.h>
-
 #include "fuzz_support.h"
 
 namespace {
-
-constexpr size_t kHeaderBytes = 32;
-
-void fix_checksum(std::vector<uint8_t>& file) {
-    if (file.size() < kHeaderBytes || (file[31] & 1u)) return;
-    const uLong crc = crc32_z(crc32_z(0L, Z_NULL, 0), file.data() + kHeaderBytes, file.size() - kHeaderBytes);
-    for (int i = 0; i < 4; ++i) file[24 + i] = static_cast<uint8_t>(crc >> (8 * i));
-}
 
 nl_navmesh_file_info described(const void* data, size_t size, nl_status& status) {
     nl_navmesh_file_info info;
@@ -40,7 +30,7 @@ nl_navmesh_file_info described(const void* data, size_t size, nl_status& status)
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     nl_world* world = nl::fuzz::shared_world();
     std::vector<uint8_t> file(data, data + size);
-    fix_checksum(file);
+    nl::fuzz::fix_checksum(file);
     nl_status status;
     const nl_navmesh_file_info info = described(file.data(), file.size(), status);
     nl::fuzz::require_reasoned(status);

@@ -9,7 +9,9 @@
 //   navmesh_file/ navmesh files saved by nl_navmesh_save: the links target's navmesh with each
 //                 count of those links, a map of quads with areas, and a navmesh the Recast
 //                 builder built with generated links; each also with its body inflated (the flag
-//                 cleared), so that mutations reach the sections' fields
+//                 cleared), so that mutations reach the sections' fields; and two tiles' files
+//   tile_file/    every tile's file (nl_navmesh_save_tile) of the tiled navmesh fuzz_support.h's
+//                 add_tile_fixture makes, with its links
 #include <navlink/navlink.h>
 
 #include <cstdio>
@@ -23,6 +25,7 @@
 #include <zlib.h>
 
 #include "cell_navmesh.h"
+#include "fuzz_support.h"
 #include "io/obj_reader.h"
 #include "navmesh_bytes.h"
 
@@ -171,19 +174,7 @@ bool write_quad_file(const fs::path& dir) {
 bool write_built_file(const fs::path& dir) {
     nl_world* world = nullptr;
     if (NL_FAILED(nl_world_create(nullptr, &world))) return false;
-    bool ok = true;
-    for (float x0 : {0.0f, 5.0f}) {
-        const float x1 = x0 + 4.0f;
-        const float v[] = {x0, 0, 0, x0, 0, 4, x1, 0, 4, x1, 0, 0};
-        const uint32_t quad[] = {0, 1, 2, 0, 2, 3};
-        nl_mesh_def mesh = nl_default_mesh_def();
-        mesh.vertices = v;
-        mesh.vertex_count = 4;
-        mesh.indices = quad;
-        mesh.triangle_count = 2;
-        nl_mesh_id id{};
-        ok = ok && NL_SUCCEEDED(nl_mesh_add(world, &mesh, &id));
-    }
+    bool ok = nl::fuzz::add_two_pads(world);
     nl_navmesh_build_def build = nl_default_navmesh_build_def();
     build.settings_json = R"({"cell_size": 0.25})";
     build.settings_json_length = std::strlen(build.settings_json);
@@ -197,6 +188,30 @@ bool write_built_file(const fs::path& dir) {
     return ok;
 }
 
+// Tiles' files (nl_navmesh_save_tile) of the same two pads in tiles of 16 cells of 0.25 m, with their
+// links: the seeds of the tile_file target (whose own navmesh is these tiles) and of navmesh_file.
+bool write_tile_files(const fs::path& dir, const fs::path& navmesh_file_dir) {
+    nl_world* world = nullptr;
+    if (NL_FAILED(nl_world_create(nullptr, &world))) return false;
+    nl_navmesh_id navmesh{};
+    bool ok = nl::fuzz::add_tile_fixture(world, navmesh);
+    uint32_t count = 0;
+    nl_tile_coord tiles[64];
+    ok = ok && NL_SUCCEEDED(nl_navmesh_get_tiles(world, navmesh, tiles, 64, &count));
+    for (uint32_t i = 0; ok && i < count; ++i) {
+        size_t size = 0;
+        ok = NL_SUCCEEDED(nl_navmesh_save_tile(world, navmesh, tiles[i], nullptr, 0, &size));
+        std::string file(size, '\0');
+        ok = ok && NL_SUCCEEDED(nl_navmesh_save_tile(world, navmesh, tiles[i], file.data(), size, &size));
+        const std::string name = "tile_" + std::to_string(tiles[i].x) + "_" + std::to_string(tiles[i].z) + ".nltile";
+        if (ok) write_navmesh_file(dir / name, file);
+        if (ok && i < 2) write_navmesh_file(navmesh_file_dir / name, file);
+    }
+    if (!ok) std::fprintf(stderr, "navlink-fuzz-seeds: tiles' files: %s\n", nl_get_last_error_message());
+    nl_world_destroy(world);
+    return ok;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -205,11 +220,11 @@ int main(int argc, char** argv) {
         return 2;
     }
     const fs::path out = argv[1];
-    for (const char* target : {"obj", "navmesh_add", "links_json", "navmesh_file"})
+    for (const char* target : {"obj", "navmesh_add", "links_json", "navmesh_file", "tile_file"})
         fs::create_directories(out / target);
     write(out / "navmesh_add" / "quad-map.bin", quad_map());
     if (!write_links(out / "links_json", out / "navmesh_file") || !write_quad_file(out / "navmesh_file") ||
-        !write_built_file(out / "navmesh_file"))
+        !write_built_file(out / "navmesh_file") || !write_tile_files(out / "tile_file", out / "navmesh_file"))
         return 1;
     for (int i = 2; i < argc; ++i) {
         const std::string name = fs::path(argv[i]).stem().string();

@@ -665,3 +665,55 @@ TEST_CASE("navlink path prints the route in one line, consecutive walking merged
     CHECK_MESSAGE(std::regex_search(route[1].str(), std::regex(R"(^walk [0-9.]+, (jump|drop) [0-9.]+, walk )")),
                   route[1].str());
 }
+
+// A world baked in tiles: one file per tile and an index; info lists them with their hashes; a bake
+// again keeps every tile; path plans over the tiles as over the level built in the same tiles with
+// the same links; a tile's file changed on disk is refused by name.
+TEST_CASE("navlink bake --tile-size writes a tile per file and an index; info lists them; path plans over them") {
+    GeneratedLevelFiles files("tile_bake");
+    const ProgramRun baked = navlink({"bake", "level.obj", "--tile-size", "32", "--out", "tiles"}, files.dir);
+    REQUIRE_MESSAGE(baked.exit_code == 0, baked.err);
+    const json index = nl::test::parse_json_file(files.dir + "/tiles/index.json");
+    CHECK(index.at("format") == "navlink-tiles");
+    const size_t tiles = index.at("tiles").size();
+    CHECK(tiles >= 9);
+    for (const json& t : index.at("tiles")) {
+        CHECK(std::filesystem::is_regular_file(files.dir + "/tiles/" + t.at("file").get<std::string>()));
+        CHECK(t.at("hash").get<std::string>().size() == 16);
+    }
+    CHECK(baked.out.find(std::to_string(tiles) + " tiles written") != std::string::npos);
+    const ProgramRun again = navlink({"bake", "level.obj", "--tile-size", "32", "--out", "tiles"}, files.dir);
+    CHECK_MESSAGE(again.out.find("0 tiles written (0 bytes), " + std::to_string(tiles) + " kept") != std::string::npos,
+                  again.out);
+
+    const ProgramRun info = navlink({"info", "tiles"}, files.dir);
+    REQUIRE_MESSAGE(info.exit_code == 0, info.err);
+    CHECK(info.out.find("NavLink tile bake, " + std::to_string(tiles) + " tiles") != std::string::npos);
+    for (const json& t : index.at("tiles")) CHECK(info.out.find(t.at("hash").get<std::string>()) != std::string::npos);
+
+    // The same route over the tiles as over the level built in tiles of 32 with its links.
+    nl::test::write_file(files.dir + "/tiled.json", R"({"recast": {"tile_size": 32}})");
+    REQUIRE(
+        navlink({"generate", "level.obj", "--settings", "tiled.json", "--out", "links.json"}, files.dir).exit_code ==
+        0);
+    const std::string from = "2,0,3", to = "33.91,-1.03,3.5";
+    const ProgramRun over_tiles = navlink({"path", "tiles", "--from", from, "--to", to, "--json"}, files.dir);
+    const ProgramRun over_level = navlink({"path", "level.obj", "--settings", "tiled.json", "--links", "links.json",
+                                           "--from", from, "--to", to, "--json"},
+                                          files.dir);
+    REQUIRE_MESSAGE(over_tiles.exit_code == 0, over_tiles.err);
+    REQUIRE_MESSAGE(over_level.exit_code == 0, over_level.err);
+    const json a = json::parse(over_tiles.out), b = json::parse(over_level.out);
+    CHECK(a.at("outcome") == "complete");
+    CHECK(a.at("points") == b.at("points"));
+    CHECK(a.at("length") == b.at("length"));
+
+    // A tile's file changed on disk: refused, naming it.
+    const std::string victim = files.dir + "/tiles/" + index.at("tiles")[0].at("file").get<std::string>();
+    std::string bytes = nl::test::read_file(victim);
+    bytes[bytes.size() / 2] ^= 0x20;
+    nl::test::write_file(victim, bytes);
+    const ProgramRun damaged = navlink({"path", "tiles", "--from", from, "--to", to}, files.dir);
+    CHECK(damaged.exit_code == 2);
+    CHECK_MESSAGE(damaged.err.find("corrupted") != std::string::npos, damaged.err);
+}

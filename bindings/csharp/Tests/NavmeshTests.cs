@@ -1,4 +1,5 @@
 using System;
+using System.IO;
 using System.Linq;
 using NavLink;
 
@@ -239,6 +240,89 @@ namespace NavLink.Tests
                     check.Throws(StatusCode.InvalidArgument, "not tiled", () => world.RemoveTile(solo, new TileCoord(0, 0)),
                                  "removing a tile of a solo navmesh");
                     check.That((uint)AgentReason.TileUnloaded == 9u, "AgentReason.TileUnloaded");
+                }
+            });
+
+            check.Run("tiles saved and loaded as tiles' files", () =>
+            {
+                // The gap level built in tiles of 32 cells (9.6 m), its links generated (the jumps start on one tile and
+                // land on another); every tile saved and described; the first tile's bytes loaded in a second world with
+                // the same level and the others added make the same tiles and links.
+                string dir = Path.Combine(Path.GetTempPath(), "navlink-csharp-" + Guid.NewGuid().ToString("N"));
+                Directory.CreateDirectory(dir);
+                try
+                {
+                    using (var world = new World())
+                    {
+                        TestLevels.AddGapLevel(world);
+                        RecastSettings recast = World.DefaultRecastSettings();
+                        recast.TileSize = 32;
+                        NavmeshId navmesh = world.BuildNavmesh(World.DefaultAgentType(), recast);
+                        world.GenerateLinks(navmesh);
+                        NavmeshInfo info = world.GetNavmeshInfo(navmesh);
+                        TileCoord[] tiles = world.GetTiles(navmesh);
+                        int linkCount = world.GetLinks(navmesh).Length;
+                        check.That(tiles.Length > 1 && linkCount > 0, tiles.Length + " tiles, " + linkCount + " links");
+                        float originX, originZ;
+                        unsafe
+                        {
+                            originX = info.TileOrigin[0];
+                            originZ = info.TileOrigin[1];
+                        }
+
+                        var files = new byte[tiles.Length][];
+                        long tileLinks = 0;
+                        for (int k = 0; k < tiles.Length; ++k)
+                        {
+                            files[k] = world.SaveTile(navmesh, tiles[k]);
+                            NavmeshFileInfo described = World.DescribeNavmeshFile(files[k]);
+                            check.That(described.IsTile == 1 && described.Tile == tiles[k],
+                                       "tile " + tiles[k] + "'s file describes tile " + described.Tile + ", is_tile " + described.IsTile);
+                            ulong hash = world.GetTileHash(navmesh, tiles[k]);
+                            check.That(hash != 0 && described.ContentHash == hash,
+                                       "tile " + tiles[k] + "'s content hash " + described.ContentHash.ToString("x16") + ", the world's " +
+                                       hash.ToString("x16"));
+                            check.That(described.TileWidth == info.TileWidth && described.TileOriginX == originX &&
+                                       described.TileOriginZ == originZ && described.FileSize == (ulong)files[k].Length,
+                                       "tile " + tiles[k] + "'s grid and size");
+                            tileLinks += described.LinkCount;
+                        }
+                        check.That(tileLinks == linkCount, "the tiles' files hold " + tileLinks + " links of " + linkCount);
+                        check.That(World.DescribeNavmeshFile(world.SaveNavmesh(navmesh)).IsTile == 0, "a whole navmesh's file is no tile's");
+
+                        using (var other = new World())
+                        {
+                            TestLevels.AddGapLevel(other);
+                            NavmeshId loaded = other.LoadNavmesh(files[0]);
+                            check.That(other.GetTiles(loaded).SequenceEqual(new[] {tiles[0]}), "the first tile's file makes a navmesh of that tile");
+                            for (int k = 1; k < tiles.Length; ++k) other.AddTileBytes(loaded, files[k]);
+                            check.That(other.GetTiles(loaded).SequenceEqual(tiles), "the same tiles loaded");
+                            check.That(other.GetLinks(loaded).Length == linkCount,
+                                       other.GetLinks(loaded).Length + " links loaded, " + linkCount + " saved");
+                            check.That(other.GetNavmeshInfo(loaded).PolygonCount == info.PolygonCount, "the same polygon count");
+
+                            // Once through a file: the tile with the most links, saved to a file, removed and added back from it.
+                            int most = Enumerable.Range(0, tiles.Length)
+                                                 .OrderByDescending(k => World.DescribeNavmeshFile(files[k]).LinkCount).First();
+                            string file = Path.Combine(dir, "tile.nlnav");
+                            world.SaveTileFile(navmesh, tiles[most], file);
+                            check.That(File.ReadAllBytes(file).SequenceEqual(files[most]), "the tile's file holds its bytes");
+                            other.RemoveTile(loaded, tiles[most]);
+                            check.That(other.GetTiles(loaded).Length == tiles.Length - 1, "the tile removed");
+                            other.AddTileFile(loaded, file);
+                            check.That(other.GetTiles(loaded).SequenceEqual(tiles), "the tile added from the file");
+                            check.That(other.GetLinks(loaded).Length == linkCount, "its links back with it");
+
+                            check.Throws(StatusCode.InvalidArgument, "loaded already", () => other.AddTileBytes(loaded, files[most]),
+                                         "a tile's file added twice");
+                            check.That(other.GetTiles(loaded).SequenceEqual(tiles) && other.GetLinks(loaded).Length == linkCount,
+                                       "a refused tile changes nothing");
+                        }
+                    }
+                }
+                finally
+                {
+                    Directory.Delete(dir, true);
                 }
             });
 

@@ -265,6 +265,9 @@ NL_DEFINE_OUTPUT_INIT(nl_link_generation_report, nl_link_generation_report_init)
 
 /** Generates the navmesh's jump and drop links against the level geometry, and the links of every
  *  loaded link-kind plugin, and replaces its generated links with them; manual links are untouched.
+ *  On a tiled navmesh each tile's links are those of a generation over the tiles within link reach of
+ *  it (they start on it and end on any of them), and the tiles added or built later get theirs with
+ *  these settings (nl_navmesh_add_tile); plugin links are generated over the whole navmesh.
  *  A plugin's refused link (a wrong kind, an end off the navmesh) fails the call with INTERNAL_ERROR
  *  and the plugin's name. `settings` is borrowed (NULL = defaults); `progress`
  *  is optional (`user` is passed back to it); `out_report` is optional (caller-owned, `size` set).
@@ -326,7 +329,8 @@ NL_API nl_status nl_navmesh_generate_cross_links(nl_world* world, nl_navmesh_id 
  *  Probes and sweeps that touch the box are cast again, everything else is reused, and the result
  *  equals what nl_navmesh_generate_links with the same settings would give now. Link-kind plugins
  *  keep no cache: their links are generated again in full. The navmesh itself must be the same (a
- *  rebuilt navmesh is a new one: generate its links in full).
+ *  rebuilt navmesh is a new one: generate its links in full). On a tiled navmesh the tiles whose links
+ *  can reach into the box have theirs generated again; the plugins' links stay as they are.
  *  Returns SUCCESS, or a failure with NOT_FOUND (never generated, or the generated links were removed or
  *  replaced by a JSON load since or meanwhile: nothing is stored), INVALID_HANDLE, INVALID_ARGUMENT
  *  (a null, non-finite or inverted box; also when called from inside a generation or update, as

@@ -364,7 +364,14 @@ NL_API nl_status nl_navmesh_build(nl_world* world, const nl_navmesh_build_def* d
    they started on; an agent standing on a removed tile waits (NL_AGENT_EVENT_WAITING, reason
    NL_AGENT_REASON_TILE_UNLOADED) until a tile holds it again, and every agent with a path on the
    navmesh plans again (REPLANNED, reason WORLD_CHANGED); a link with an end on a removed tile is out of
-   every path until the tile is back. Tiles join the same whatever the order they come in. Added in 0.3. */
+   every path until the tile is back. Tiles join the same whatever the order they come in.
+   Links across tiles: a tile owns the generated links that start on its polygons, wherever they end
+   (any tile within link reach, not only a neighbour). Once links were generated on a tiled navmesh
+   (nl_navmesh_generate_links), a tile added or built has its links, and those of the tiles within link
+   reach of it, generated again over the tiles loaded then, and no others; a tile removed takes its
+   own generated links with it; a tile from a tile's file (nl_navmesh_add_tile_bytes) brings its
+   links. So a link exists exactly while the tiles of both its ends are loaded, whatever the order they
+   came in (docs/tiles.md, "Links across tiles"). Added in 0.3. */
 
 /** Adds a tile to a tiled navmesh: `def` is a tile (tile_width > 0) of the navmesh's grid, made for its
  *  agent type, with def->carrier the navmesh's carrier (the null id for one that rides none); its
@@ -378,7 +385,7 @@ NL_API nl_status nl_navmesh_build(nl_world* world, const nl_navmesh_build_def* d
  *  @param[in] def  The tile. */
 NL_API nl_status nl_navmesh_add_tile(nl_world* world, nl_navmesh_id navmesh, const nl_navmesh_def* def);
 
-/** Removes the tile at `tile` from a tiled navmesh. Returns SUCCESS, or a failure with NOT_FOUND (no
+/** Removes the tile at `tile` from a tiled navmesh, with the generated links it owns. Returns SUCCESS, or a failure with NOT_FOUND (no
  *  tile loaded there: removed twice), INVALID_ARGUMENT (a navmesh that is not tiled; its last tile:
  *  remove the navmesh instead), INVALID_HANDLE, OUT_OF_MEMORY; nothing changed on a failure.
  *  Thread-safe; waits for a link generation of the navmesh running meanwhile. Added in 0.3.

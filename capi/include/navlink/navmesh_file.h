@@ -44,6 +44,69 @@ NL_API nl_status nl_navmesh_save(const nl_world* world, nl_navmesh_id navmesh, v
  *  @param[in] path  The file to write. */
 NL_API nl_status nl_navmesh_save_file(const nl_world* world, nl_navmesh_id navmesh, const char* path);
 
+/** Writes one tile of a tiled navmesh as a tile's file (a navmesh file with a TILE section, docs/tiles.md,
+ *  "Baked tiles"): the tile's polygons as built or added, the generated links it owns (those that start
+ *  on it, wherever they end), what it was made for, and its content hash (nl_navmesh_get_tile_hash).
+ *  Host links are not in it (nl_navmesh_save saves a whole navmesh with them). Load the first tile of
+ *  a world with nl_navmesh_load (a tiled navmesh of that tile) and the others with
+ *  nl_navmesh_add_tile_bytes, in any order: the navmesh and links are those the tiles were saved from,
+ *  bit for bit. `*out_size` always receives the file's size; a NULL buffer only measures.
+ *  Returns SUCCESS, or a failure with BUFFER_TOO_SMALL (nothing written), NOT_FOUND (no tile loaded
+ *  there), INVALID_HANDLE, INVALID_ARGUMENT (out_size NULL; buffer NULL with a capacity; a navmesh that
+ *  is not tiled, or rides a movable mesh: save it whole). Thread-safe. Added in 0.3.
+ *  @param[in] world  The world.
+ *  @param[in] navmesh  The tiled navmesh.
+ *  @param[in] tile  The tile to save.
+ *  @param[out,opt] buffer  Receives the file, or NULL to measure only.
+ *  @param[in] capacity  The bytes `buffer` has room for.
+ *  @param[out] out_size  Receives the file's size. */
+NL_API nl_status nl_navmesh_save_tile(const nl_world* world, nl_navmesh_id navmesh, nl_tile_coord tile, void* buffer,
+                                      size_t capacity, size_t* out_size);
+
+/** The same, written to the file at `path` (NUL-terminated, borrowed) as nl_navmesh_save_file writes.
+ *  Also IO_ERROR. Thread-safe. Added in 0.3.
+ *  @param[in] world  The world.
+ *  @param[in] navmesh  The tiled navmesh.
+ *  @param[in] tile  The tile to save.
+ *  @param[in] path  The file to write. */
+NL_API nl_status nl_navmesh_save_tile_file(const nl_world* world, nl_navmesh_id navmesh, nl_tile_coord tile,
+                                           const char* path);
+
+/** Adds the tile a tile's file holds (`data`, `size` bytes, borrowed) to a tiled navmesh, with its
+ *  links, as nl_navmesh_add_tile adds a tile (one step for paths and agents); no link is generated: a
+ *  link to a tile not loaded waits, out of every path, until that tile is added, and the links of the
+ *  loaded tiles that land on this one come into use. Returns SUCCESS, or a failure with VERSION_MISMATCH
+ *  or PARSE_ERROR (as nl_navmesh_load), INVALID_ARGUMENT (null data with a size; a whole navmesh's file;
+ *  a tile of another grid or agent type, or made with another builder, builder settings or link
+ *  settings than the navmesh; a tile already loaded there; polygons or links that do not fit, named),
+ *  INVALID_HANDLE, OUT_OF_MEMORY; nothing changed on a failure. Thread-safe; waits for a link
+ *  generation of the navmesh running meanwhile. Added in 0.3.
+ *  @param[in] world  The world.
+ *  @param[in] navmesh  The tiled navmesh.
+ *  @param[in] data  The tile's file, `size` bytes.
+ *  @param[in] size  The bytes of `data`. */
+NL_API nl_status nl_navmesh_add_tile_bytes(nl_world* world, nl_navmesh_id navmesh, const void* data, size_t size);
+
+/** The same, from the file at `path` (NUL-terminated, borrowed), read as nl_navmesh_load_file reads.
+ *  Also NOT_FOUND (no such file), IO_ERROR. Thread-safe. Added in 0.3.
+ *  @param[in] world  The world.
+ *  @param[in] navmesh  The tiled navmesh.
+ *  @param[in] path  The tile's file. */
+NL_API nl_status nl_navmesh_add_tile_file(nl_world* world, nl_navmesh_id navmesh, const char* path);
+
+/** The content hash of the tile at `tile` of a tiled navmesh's grid (loaded or not), from what the world
+ *  holds now: the level's triangles in the columns the tile, its links and its neighbours' borders reach,
+ *  the builder and its settings, the link settings and the body. A bake keeps a tile's file by it and
+ *  skips a tile whose hash it holds; a tile's file records the hash it was saved with. Never 0.
+ *  Returns SUCCESS, or a failure with INVALID_HANDLE, INVALID_ARGUMENT (out_hash NULL; a navmesh that
+ *  is not tiled). Thread-safe. Added in 0.3.
+ *  @param[in] world  The world.
+ *  @param[in] navmesh  The tiled navmesh.
+ *  @param[in] tile  The tile.
+ *  @param[out] out_hash  Receives the hash. */
+NL_API nl_status nl_navmesh_get_tile_hash(const nl_world* world, nl_navmesh_id navmesh, nl_tile_coord tile,
+                                          uint64_t* out_hash);
+
 /** Refuse a file baked from other level geometry than the world holds now (see nl_navmesh_load_def). */
 #define NL_NAVMESH_LOAD_SAME_LEVEL 0x1u
 
@@ -62,7 +125,9 @@ NL_API nl_navmesh_load_def nl_default_navmesh_load_def(void);
 
 /** Adds the navmesh and its links held in a navmesh file (`data`, `size` bytes, borrowed), as
  *  nl_navmesh_add and nl_link_add would, with new ids (links in the file's order); what it was made
- *  for travels with it (nl_navmesh_save writes it again). `def` may be NULL (the defaults).
+ *  for travels with it (nl_navmesh_save writes it again). A tile's file (nl_navmesh_save_tile) makes a
+ *  tiled navmesh of that one tile: add the others with nl_navmesh_add_tile_bytes. `def` may be NULL
+ *  (the defaults).
  *  Nothing in the world changes unless everything loads. Whatever the file says, the loader allocates
  *  no more than a fixed multiple of what its bytes inflate to (deflate's limit: 1032 times `size`).
  *  Returns SUCCESS, or a failure with VERSION_MISMATCH (not a NavLink navmesh file, or a newer format
@@ -104,6 +169,13 @@ typedef struct nl_navmesh_file_info {
     float quantum;                  /**< Metres per step of its fixed-point coordinates (1/1024). */
     uint32_t reserved;
     uint64_t level_hash;            /**< Of the level triangles it was built from; 0: handed over by the host. */
+    /* A tile's file (nl_navmesh_save_tile); all 0 for a whole navmesh's. Added in 0.3. */
+    uint64_t content_hash;          /**< Of everything the tile was made from (nl_navmesh_get_tile_hash). */
+    nl_tile_coord tile;             /**< The tile's place in its grid. */
+    float tile_width;               /**< Metres; 0: a whole navmesh's file. */
+    float tile_origin_x;            /**< The grid's origin (nl_navmesh_info.tile_origin). */
+    float tile_origin_z;
+    uint32_t is_tile;               /**< 1: a tile's file. */
 } nl_navmesh_file_info;
 
 /** Reads a navmesh file (`data`, `size` bytes, borrowed) without loading it: fills `out_info`

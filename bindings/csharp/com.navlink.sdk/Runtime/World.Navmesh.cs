@@ -188,7 +188,8 @@ namespace NavLink
         /// or added from a tile): tile.TileWidth, TileOriginX and TileOriginZ must be the navmesh's grid
         /// (NavmeshInfo.TileWidth, TileOrigin), tile.AgentType its agent type, and no tile loaded at (TileX,
         /// TileZ); the navmesh is joined again with it. NavLinkException with InvalidArgument otherwise (also for
-        /// a navmesh that is not tiled, and for a Carrier that is not the navmesh's), nothing changed.</summary>
+        /// a navmesh that is not tiled, and for a Carrier that is not the navmesh's), nothing changed. A tile's
+        /// file (SaveTile) is added with AddTileBytes or AddTileFile.</summary>
         public unsafe void AddTile(NavmeshId navmesh, NavmeshInput tile)
         {
             WithNavmeshDef(tile, "tile", (world, def) => Native.nl_navmesh_add_tile(world, navmesh, def));

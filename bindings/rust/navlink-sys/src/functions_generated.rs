@@ -270,10 +270,10 @@ extern "C" {
     /// Thread-safe; waits for a link generation of the navmesh running meanwhile. Added in 0.3.
     pub fn nl_navmesh_add_tile(world: *mut nl_world, navmesh: nl_navmesh_id, def: *const nl_navmesh_def) -> nl_status;
 
-    /// Removes the tile at `tile` from a tiled navmesh. Returns SUCCESS, or a failure with NOT_FOUND (no tile loaded
-    /// there: removed twice), INVALID_ARGUMENT (a navmesh that is not tiled; its last tile: remove the navmesh
-    /// instead), INVALID_HANDLE, OUT_OF_MEMORY; nothing changed on a failure. Thread-safe; waits for a link generation
-    /// of the navmesh running meanwhile. Added in 0.3.
+    /// Removes the tile at `tile` from a tiled navmesh, with the generated links it owns. Returns SUCCESS, or a failure
+    /// with NOT_FOUND (no tile loaded there: removed twice), INVALID_ARGUMENT (a navmesh that is not tiled; its last
+    /// tile: remove the navmesh instead), INVALID_HANDLE, OUT_OF_MEMORY; nothing changed on a failure. Thread-safe;
+    /// waits for a link generation of the navmesh running meanwhile. Added in 0.3.
     pub fn nl_navmesh_remove_tile(world: *mut nl_world, navmesh: nl_navmesh_id, tile: nl_tile_coord) -> nl_status;
 
     /// Builds the tiles of a tiled navmesh's grid whose squares overlap the box \[box_min, box_max\] seen from above,
@@ -370,21 +370,23 @@ extern "C" {
     pub fn nl_link_settings_from_json(json: *const c_char, length: usize, settings: *mut nl_link_settings) -> nl_status;
 
     /// Generates the navmesh's jump and drop links against the level geometry, and the links of every loaded link-kind
-    /// plugin, and replaces its generated links with them; manual links are untouched. A plugin's refused link (a wrong
-    /// kind, an end off the navmesh) fails the call with INTERNAL_ERROR and the plugin's name. `settings` is borrowed
-    /// (NULL = defaults); `progress` is optional (`user` is passed back to it); `out_report` is optional (caller-owned,
-    /// `size` set). Returns SUCCESS, or a failure with INVALID_HANDLE (also when the navmesh was removed while the
-    /// links were being generated: nothing is stored), INVALID_ARGUMENT (a setting, named; also a sample_spacing that
-    /// would put more than 4,000,000 take-off samples on this navmesh's boundary; plugin_settings_json nested deeper
-    /// than 64 levels, or with a value that is not an object, or naming a kind no loaded link-kind plugin provides: the
-    /// key named, with the kinds loaded), PARSE_ERROR (malformed plugin_settings_json, found before any work),
-    /// CANCELLED (progress returned 0: the navmesh's links are as they were), OUT_OF_MEMORY. Generations and updates of
-    /// one navmesh run one after the other; other navmeshes' run at the same time. From inside a generation, update or
-    /// cross-link generation (its progress callback, a link-kind plugin) links cannot be generated or updated, on any
-    /// navmesh and of either kind (nl_navmesh_generate_links, nl_navmesh_update_links_in_box,
-    /// nl_navmesh_generate_cross_links): such a call fails with INVALID_ARGUMENT (two threads each doing so for the
-    /// other's navmesh would wait for each other forever). Thread-safe; parallel over the world's workers; the result
-    /// does not depend on their number.
+    /// plugin, and replaces its generated links with them; manual links are untouched. On a tiled navmesh each tile's
+    /// links are those of a generation over the tiles within link reach of it (they start on it and end on any of
+    /// them), and the tiles added or built later get theirs with these settings (nl_navmesh_add_tile); plugin links are
+    /// generated over the whole navmesh. A plugin's refused link (a wrong kind, an end off the navmesh) fails the call
+    /// with INTERNAL_ERROR and the plugin's name. `settings` is borrowed (NULL = defaults); `progress` is optional
+    /// (`user` is passed back to it); `out_report` is optional (caller-owned, `size` set). Returns SUCCESS, or a
+    /// failure with INVALID_HANDLE (also when the navmesh was removed while the links were being generated: nothing is
+    /// stored), INVALID_ARGUMENT (a setting, named; also a sample_spacing that would put more than 4,000,000 take-off
+    /// samples on this navmesh's boundary; plugin_settings_json nested deeper than 64 levels, or with a value that is
+    /// not an object, or naming a kind no loaded link-kind plugin provides: the key named, with the kinds loaded),
+    /// PARSE_ERROR (malformed plugin_settings_json, found before any work), CANCELLED (progress returned 0: the
+    /// navmesh's links are as they were), OUT_OF_MEMORY. Generations and updates of one navmesh run one after the
+    /// other; other navmeshes' run at the same time. From inside a generation, update or cross-link generation (its
+    /// progress callback, a link-kind plugin) links cannot be generated or updated, on any navmesh and of either kind
+    /// (nl_navmesh_generate_links, nl_navmesh_update_links_in_box, nl_navmesh_generate_cross_links): such a call fails
+    /// with INVALID_ARGUMENT (two threads each doing so for the other's navmesh would wait for each other forever).
+    /// Thread-safe; parallel over the world's workers; the result does not depend on their number.
     pub fn nl_navmesh_generate_links(
         world: *mut nl_world,
         navmesh: nl_navmesh_id,
@@ -425,11 +427,12 @@ extern "C" {
     /// must hold every change (for a moved mesh, its bounds before and after). Probes and sweeps that touch the box are
     /// cast again, everything else is reused, and the result equals what nl_navmesh_generate_links with the same
     /// settings would give now. Link-kind plugins keep no cache: their links are generated again in full. The navmesh
-    /// itself must be the same (a rebuilt navmesh is a new one: generate its links in full). Returns SUCCESS, or a
-    /// failure with NOT_FOUND (never generated, or the generated links were removed or replaced by a JSON load since or
-    /// meanwhile: nothing is stored), INVALID_HANDLE, INVALID_ARGUMENT (a null, non-finite or inverted box; also when
-    /// called from inside a generation or update, as nl_navmesh_generate_links says), CANCELLED (nothing changed).
-    /// Thread-safe.
+    /// itself must be the same (a rebuilt navmesh is a new one: generate its links in full). On a tiled navmesh the
+    /// tiles whose links can reach into the box have theirs generated again; the plugins' links stay as they are.
+    /// Returns SUCCESS, or a failure with NOT_FOUND (never generated, or the generated links were removed or replaced
+    /// by a JSON load since or meanwhile: nothing is stored), INVALID_HANDLE, INVALID_ARGUMENT (a null, non-finite or
+    /// inverted box; also when called from inside a generation or update, as nl_navmesh_generate_links says), CANCELLED
+    /// (nothing changed). Thread-safe.
     pub fn nl_navmesh_update_links_in_box(
         world: *mut nl_world,
         navmesh: nl_navmesh_id,
@@ -498,15 +501,74 @@ extern "C" {
     /// is, or leads to, a directory, a device, a socket or a pipe: left as it was). Thread-safe.
     pub fn nl_navmesh_save_file(world: *const nl_world, navmesh: nl_navmesh_id, path: *const c_char) -> nl_status;
 
+    /// Writes one tile of a tiled navmesh as a tile's file (a navmesh file with a TILE section, docs/tiles.md, "Baked
+    /// tiles"): the tile's polygons as built or added, the generated links it owns (those that start on it, wherever
+    /// they end), what it was made for, and its content hash (nl_navmesh_get_tile_hash). Host links are not in it
+    /// (nl_navmesh_save saves a whole navmesh with them). Load the first tile of a world with nl_navmesh_load (a tiled
+    /// navmesh of that tile) and the others with nl_navmesh_add_tile_bytes, in any order: the navmesh and links are
+    /// those the tiles were saved from, bit for bit. `*out_size` always receives the file's size; a NULL buffer only
+    /// measures. Returns SUCCESS, or a failure with BUFFER_TOO_SMALL (nothing written), NOT_FOUND (no tile loaded
+    /// there), INVALID_HANDLE, INVALID_ARGUMENT (out_size NULL; buffer NULL with a capacity; a navmesh that is not
+    /// tiled, or rides a movable mesh: save it whole). Thread-safe. Added in 0.3.
+    pub fn nl_navmesh_save_tile(
+        world: *const nl_world,
+        navmesh: nl_navmesh_id,
+        tile: nl_tile_coord,
+        buffer: *mut c_void,
+        capacity: usize,
+        out_size: *mut usize,
+    ) -> nl_status;
+
+    /// The same, written to the file at `path` (NUL-terminated, borrowed) as nl_navmesh_save_file writes. Also
+    /// IO_ERROR. Thread-safe. Added in 0.3.
+    pub fn nl_navmesh_save_tile_file(
+        world: *const nl_world,
+        navmesh: nl_navmesh_id,
+        tile: nl_tile_coord,
+        path: *const c_char,
+    ) -> nl_status;
+
+    /// Adds the tile a tile's file holds (`data`, `size` bytes, borrowed) to a tiled navmesh, with its links, as
+    /// nl_navmesh_add_tile adds a tile (one step for paths and agents); no link is generated: a link to a tile not
+    /// loaded waits, out of every path, until that tile is added, and the links of the loaded tiles that land on this
+    /// one come into use. Returns SUCCESS, or a failure with VERSION_MISMATCH or PARSE_ERROR (as nl_navmesh_load),
+    /// INVALID_ARGUMENT (null data with a size; a whole navmesh's file; a tile of another grid or agent type, or made
+    /// with another builder, builder settings or link settings than the navmesh; a tile already loaded there; polygons
+    /// or links that do not fit, named), INVALID_HANDLE, OUT_OF_MEMORY; nothing changed on a failure. Thread-safe;
+    /// waits for a link generation of the navmesh running meanwhile. Added in 0.3.
+    pub fn nl_navmesh_add_tile_bytes(
+        world: *mut nl_world,
+        navmesh: nl_navmesh_id,
+        data: *const c_void,
+        size: usize,
+    ) -> nl_status;
+
+    /// The same, from the file at `path` (NUL-terminated, borrowed), read as nl_navmesh_load_file reads. Also NOT_FOUND
+    /// (no such file), IO_ERROR. Thread-safe. Added in 0.3.
+    pub fn nl_navmesh_add_tile_file(world: *mut nl_world, navmesh: nl_navmesh_id, path: *const c_char) -> nl_status;
+
+    /// The content hash of the tile at `tile` of a tiled navmesh's grid (loaded or not), from what the world holds now:
+    /// the level's triangles in the columns the tile, its links and its neighbours' borders reach, the builder and its
+    /// settings, the link settings and the body. A bake keeps a tile's file by it and skips a tile whose hash it holds;
+    /// a tile's file records the hash it was saved with. Never 0. Returns SUCCESS, or a failure with INVALID_HANDLE,
+    /// INVALID_ARGUMENT (out_hash NULL; a navmesh that is not tiled). Thread-safe. Added in 0.3.
+    pub fn nl_navmesh_get_tile_hash(
+        world: *const nl_world,
+        navmesh: nl_navmesh_id,
+        tile: nl_tile_coord,
+        out_hash: *mut u64,
+    ) -> nl_status;
+
     /// The null carrier and no flags. Thread-safe; never fails.
     pub fn nl_default_navmesh_load_def() -> nl_navmesh_load_def;
 
     /// Adds the navmesh and its links held in a navmesh file (`data`, `size` bytes, borrowed), as nl_navmesh_add and
     /// nl_link_add would, with new ids (links in the file's order); what it was made for travels with it
-    /// (nl_navmesh_save writes it again). `def` may be NULL (the defaults). Nothing in the world changes unless
-    /// everything loads. Whatever the file says, the loader allocates no more than a fixed multiple of what its bytes
-    /// inflate to (deflate's limit: 1032 times `size`). Returns SUCCESS, or a failure with VERSION_MISMATCH (not a
-    /// NavLink navmesh file, or a newer format version), PARSE_ERROR (truncated or corrupted: the section and what is
+    /// (nl_navmesh_save writes it again). A tile's file (nl_navmesh_save_tile) makes a tiled navmesh of that one tile:
+    /// add the others with nl_navmesh_add_tile_bytes. `def` may be NULL (the defaults). Nothing in the world changes
+    /// unless everything loads. Whatever the file says, the loader allocates no more than a fixed multiple of what its
+    /// bytes inflate to (deflate's limit: 1032 times `size`). Returns SUCCESS, or a failure with VERSION_MISMATCH (not
+    /// a NavLink navmesh file, or a newer format version), PARSE_ERROR (truncated or corrupted: the section and what is
     /// wrong named), INVALID_ARGUMENT (null data with a size, null out_id, bad def size or flags, a carrier for a file
     /// that rode none or none for one that did, NL_NAVMESH_LOAD_SAME_LEVEL and the level differs, polygons or links
     /// that do not fit, named as "links\[3\].start"), INVALID_HANDLE (the carrier), OUT_OF_MEMORY. Thread-safe.

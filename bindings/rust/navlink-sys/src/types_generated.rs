@@ -832,6 +832,17 @@ pub struct nl_navmesh_file_info {
     pub reserved: u32,
     /// Of the level triangles it was built from; 0: handed over by the host.
     pub level_hash: u64,
+    /// Of everything the tile was made from (nl_navmesh_get_tile_hash).
+    pub content_hash: u64,
+    /// The tile's place in its grid.
+    pub tile: nl_tile_coord,
+    /// Metres; 0: a whole navmesh's file.
+    pub tile_width: f32,
+    /// The grid's origin (nl_navmesh_info.tile_origin).
+    pub tile_origin_x: f32,
+    pub tile_origin_z: f32,
+    /// 1: a tile's file.
+    pub is_tile: u32,
 }
 
 impl Default for nl_navmesh_file_info {

@@ -257,7 +257,7 @@ impl World {
     /// `RecastSettings::tile_size`, or added from a tile. The tile must be on the navmesh's grid
     /// (`NavmeshTile::on_grid_of` its info), made for its agent type, at a place no tile holds; the navmesh is
     /// joined again with it. An `Error` with INVALID_ARGUMENT otherwise (also for a navmesh that is not tiled),
-    /// nothing changed.
+    /// nothing changed. A tile's file (`save_tile`) is added with `add_tile_bytes` or `add_tile_file`.
     pub fn add_tile(&self, navmesh: NavmeshId, tile: &NavmeshInput<'_>) -> Result<()> {
         let def = navmesh_def(tile);
         check(unsafe { sys::nl_navmesh_add_tile(self.raw(), navmesh, &def) }).map(drop)

@@ -446,6 +446,17 @@ plain_struct! {
         quantum: f32,
         /// Of the level triangles it was built from; 0: handed over by the host.
         level_hash: u64,
+        /// Of everything the tile was made from (nl_navmesh_get_tile_hash).
+        content_hash: u64,
+        /// The tile's place in its grid.
+        tile: TileCoord,
+        /// Metres; 0: a whole navmesh's file.
+        tile_width: f32,
+        /// The grid's origin (nl_navmesh_info.tile_origin).
+        tile_origin_x: f32,
+        tile_origin_z: f32,
+        /// 1: a tile's file.
+        is_tile: bool,
     }
 }
 

@@ -4,9 +4,9 @@ mod common;
 
 use common::*;
 use navlink::{
-    default_agent_type, default_link_def, default_link_settings, default_recast_settings, status, AgentReason, AgentType, BuildWarnings,
-    ErrorKind, Link, LinkDef, LinkDefExt, LinkExt, LinkSettings, MeshFlags, MeshId, MeshOptions, NavmeshBuild, NavmeshId, NavmeshInput,
-    NavmeshTile, PathOutcome, PathQuery, RecastSettings, TileCoord, World, NO_POLYGON,
+    default_agent_type, default_link_def, default_link_settings, default_recast_settings, describe_navmesh_file, status, AgentReason,
+    AgentType, BuildWarnings, ErrorKind, Link, LinkDef, LinkDefExt, LinkExt, LinkSettings, MeshFlags, MeshId, MeshOptions, NavmeshBuild,
+    NavmeshId, NavmeshInput, NavmeshLoadOptions, NavmeshTile, PathOutcome, PathQuery, RecastSettings, TileCoord, World, NO_POLYGON,
 };
 
 #[test]
@@ -171,6 +171,66 @@ fn tiles_out_and_in_again() {
     assert_fails(world.remove_tile(solo, TileCoord { x: 0, z: 0 }), status::INVALID_ARGUMENT, "not tiled");
     assert_eq!(AgentReason::from_raw(navlink::sys::NL_AGENT_REASON_TILE_UNLOADED), AgentReason::TileUnloaded);
     assert_eq!(AgentReason::TileUnloaded.to_raw(), 9);
+}
+
+/// The gap level built in tiles of 32 cells (9.6 m), its links generated (the jumps start on one tile and land on
+/// another): every tile saved as a tile's file and described (a tile, its place, the world's content hash for it);
+/// the first tile's bytes loaded in a second world with the same level and the others added make the same tiles
+/// and links; one tile once through a file; a tile added twice refused.
+#[test]
+fn tiles_saved_and_loaded_as_tiles_files() {
+    let world = World::new().unwrap();
+    add_gap_level(&world);
+    let recast = RecastSettings { tile_size: 32, ..default_recast_settings() };
+    let navmesh = world.build_navmesh(&NavmeshBuild { recast: Some(recast), ..NavmeshBuild::new(default_agent_type()) }).unwrap();
+    world.generate_links(navmesh, None, None, None).unwrap();
+    let info = world.navmesh_info(navmesh).unwrap();
+    let tiles = world.tiles(navmesh).unwrap();
+    let link_count = world.links(navmesh).unwrap().len();
+    assert!(tiles.len() > 1 && link_count > 0, "{} tiles, {} links", tiles.len(), link_count);
+
+    let files: Vec<Vec<u8>> = tiles.iter().map(|&tile| world.save_tile(navmesh, tile).unwrap()).collect();
+    let mut tile_links = 0;
+    for (&tile, file) in tiles.iter().zip(&files) {
+        let (described, _) = describe_navmesh_file(file).unwrap();
+        assert!(described.is_tile && described.tile == tile, "{:?}: {:?}", tile, described);
+        let hash = world.tile_hash(navmesh, tile).unwrap();
+        assert!(hash != 0 && described.content_hash == hash, "{:?}: {:#x}, the world's {:#x}", tile, described.content_hash, hash);
+        assert_eq!((described.tile_width, [described.tile_origin_x, described.tile_origin_z]), (info.tile_width, info.tile_origin));
+        assert_eq!(described.file_size, file.len() as u64);
+        tile_links += described.link_count as usize;
+    }
+    assert_eq!(tile_links, link_count, "each generated link in the file of the tile it starts on");
+    let (whole, _) = describe_navmesh_file(&world.save_navmesh(navmesh).unwrap()).unwrap();
+    assert!(!whole.is_tile && whole.content_hash == 0, "a whole navmesh's file is no tile's: {:?}", whole);
+
+    let other = World::new().unwrap();
+    add_gap_level(&other);
+    let loaded = other.load_navmesh(&files[0], &NavmeshLoadOptions::default()).unwrap();
+    assert_eq!(other.tiles(loaded).unwrap(), vec![tiles[0]], "the first tile's file makes a navmesh of that tile");
+    for file in &files[1..] {
+        other.add_tile_bytes(loaded, file).unwrap();
+    }
+    assert_eq!(other.tiles(loaded).unwrap(), tiles);
+    assert_eq!(other.links(loaded).unwrap().len(), link_count);
+    assert_eq!(other.navmesh_info(loaded).unwrap().polygon_count, info.polygon_count);
+
+    // Once through a file: the tile with the most links, saved to a file, removed and added back from it.
+    let most = (0..tiles.len()).max_by_key(|&k| describe_navmesh_file(&files[k]).unwrap().0.link_count).unwrap();
+    let dir = TempDir::new("tile-files");
+    let path = dir.0.join("tile.nlnav");
+    world.save_tile_file(navmesh, tiles[most], &path).unwrap();
+    assert_eq!(std::fs::read(&path).unwrap(), files[most]);
+    other.remove_tile(loaded, tiles[most]).unwrap();
+    assert_eq!(other.tiles(loaded).unwrap().len(), tiles.len() - 1);
+    other.add_tile_file(loaded, &path).unwrap();
+    assert_eq!(other.tiles(loaded).unwrap(), tiles);
+    assert_eq!(other.links(loaded).unwrap().len(), link_count, "its links back with it");
+
+    let twice = other.add_tile_bytes(loaded, &files[most]);
+    assert_eq!(twice.as_ref().map_err(|e| e.kind()), Err(ErrorKind::InvalidArgument));
+    assert_fails(twice, status::INVALID_ARGUMENT, "loaded already");
+    assert_eq!((other.tiles(loaded).unwrap(), other.links(loaded).unwrap().len()), (tiles, link_count), "nothing changed");
 }
 
 /// The moving surface: an 8 x 4 m movable box (top y = 0 in its own space) carrying a 7.2 x 3.2 m navmesh

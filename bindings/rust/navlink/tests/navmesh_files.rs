@@ -166,23 +166,6 @@ impl<'a> JsonReader<'a> {
     }
 }
 
-/// A temporary folder, removed on drop.
-struct TempDir(std::path::PathBuf);
-
-impl TempDir {
-    fn new(name: &str) -> TempDir {
-        let dir = std::env::temp_dir().join(format!("navlink-rust-{}-{}", name, std::process::id()));
-        std::fs::create_dir_all(&dir).expect("a temporary folder");
-        TempDir(dir)
-    }
-}
-
-impl Drop for TempDir {
-    fn drop(&mut self) {
-        let _ = std::fs::remove_dir_all(&self.0);
-    }
-}
-
 #[test]
 fn baked_navmesh_file() {
     let world = World::new().unwrap();

@@ -272,10 +272,11 @@ namespace NavLink
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         public static extern StatusCode nl_navmesh_add_tile(IntPtr world, NavmeshId navmesh, NavmeshDef* def);
 
-        /// <summary>Removes the tile at <c>tile</c> from a tiled navmesh. Returns SUCCESS, or a failure with NOT_FOUND
-        /// (no tile loaded there: removed twice), INVALID_ARGUMENT (a navmesh that is not tiled; its last tile: remove
-        /// the navmesh instead), INVALID_HANDLE, OUT_OF_MEMORY; nothing changed on a failure. Thread-safe; waits for a
-        /// link generation of the navmesh running meanwhile. Added in 0.3.</summary>
+        /// <summary>Removes the tile at <c>tile</c> from a tiled navmesh, with the generated links it owns. Returns
+        /// SUCCESS, or a failure with NOT_FOUND (no tile loaded there: removed twice), INVALID_ARGUMENT (a navmesh that
+        /// is not tiled; its last tile: remove the navmesh instead), INVALID_HANDLE, OUT_OF_MEMORY; nothing changed on
+        /// a failure. Thread-safe; waits for a link generation of the navmesh running meanwhile. Added in
+        /// 0.3.</summary>
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         public static extern StatusCode nl_navmesh_remove_tile(IntPtr world, NavmeshId navmesh, TileCoord tile);
 
@@ -364,10 +365,13 @@ namespace NavLink
         public static extern StatusCode nl_link_settings_from_json(byte* json, UIntPtr length, LinkSettings* settings);
 
         /// <summary>Generates the navmesh's jump and drop links against the level geometry, and the links of every
-        /// loaded link-kind plugin, and replaces its generated links with them; manual links are untouched. A plugin's
-        /// refused link (a wrong kind, an end off the navmesh) fails the call with INTERNAL_ERROR and the plugin's
-        /// name. <c>settings</c> is borrowed (NULL = defaults); <c>progress</c> is optional (<c>user</c> is passed back
-        /// to it); <c>out_report</c> is optional (caller-owned, <c>size</c> set). Returns SUCCESS, or a failure with
+        /// loaded link-kind plugin, and replaces its generated links with them; manual links are untouched. On a tiled
+        /// navmesh each tile's links are those of a generation over the tiles within link reach of it (they start on it
+        /// and end on any of them), and the tiles added or built later get theirs with these settings
+        /// (nl_navmesh_add_tile); plugin links are generated over the whole navmesh. A plugin's refused link (a wrong
+        /// kind, an end off the navmesh) fails the call with INTERNAL_ERROR and the plugin's name. <c>settings</c> is
+        /// borrowed (NULL = defaults); <c>progress</c> is optional (<c>user</c> is passed back to it);
+        /// <c>out_report</c> is optional (caller-owned, <c>size</c> set). Returns SUCCESS, or a failure with
         /// INVALID_HANDLE (also when the navmesh was removed while the links were being generated: nothing is stored),
         /// INVALID_ARGUMENT (a setting, named; also a sample_spacing that would put more than 4,000,000 take-off
         /// samples on this navmesh's boundary; plugin_settings_json nested deeper than 64 levels, or with a value that
@@ -413,10 +417,12 @@ namespace NavLink
         /// that touch the box are cast again, everything else is reused, and the result equals what
         /// nl_navmesh_generate_links with the same settings would give now. Link-kind plugins keep no cache: their
         /// links are generated again in full. The navmesh itself must be the same (a rebuilt navmesh is a new one:
-        /// generate its links in full). Returns SUCCESS, or a failure with NOT_FOUND (never generated, or the generated
-        /// links were removed or replaced by a JSON load since or meanwhile: nothing is stored), INVALID_HANDLE,
-        /// INVALID_ARGUMENT (a null, non-finite or inverted box; also when called from inside a generation or update,
-        /// as nl_navmesh_generate_links says), CANCELLED (nothing changed). Thread-safe.</summary>
+        /// generate its links in full). On a tiled navmesh the tiles whose links can reach into the box have theirs
+        /// generated again; the plugins' links stay as they are. Returns SUCCESS, or a failure with NOT_FOUND (never
+        /// generated, or the generated links were removed or replaced by a JSON load since or meanwhile: nothing is
+        /// stored), INVALID_HANDLE, INVALID_ARGUMENT (a null, non-finite or inverted box; also when called from inside
+        /// a generation or update, as nl_navmesh_generate_links says), CANCELLED (nothing changed).
+        /// Thread-safe.</summary>
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         public static extern StatusCode nl_navmesh_update_links_in_box(IntPtr world, NavmeshId navmesh, float* boxMin,
                                                                        float* boxMax, IntPtr progress, IntPtr user,
@@ -473,19 +479,68 @@ namespace NavLink
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         public static extern StatusCode nl_navmesh_save_file(IntPtr world, NavmeshId navmesh, byte* path);
 
+        /// <summary>Writes one tile of a tiled navmesh as a tile's file (a navmesh file with a TILE section,
+        /// docs/tiles.md, "Baked tiles"): the tile's polygons as built or added, the generated links it owns (those
+        /// that start on it, wherever they end), what it was made for, and its content hash (nl_navmesh_get_tile_hash).
+        /// Host links are not in it (nl_navmesh_save saves a whole navmesh with them). Load the first tile of a world
+        /// with nl_navmesh_load (a tiled navmesh of that tile) and the others with nl_navmesh_add_tile_bytes, in any
+        /// order: the navmesh and links are those the tiles were saved from, bit for bit. <c>*out_size</c> always
+        /// receives the file's size; a NULL buffer only measures. Returns SUCCESS, or a failure with BUFFER_TOO_SMALL
+        /// (nothing written), NOT_FOUND (no tile loaded there), INVALID_HANDLE, INVALID_ARGUMENT (out_size NULL; buffer
+        /// NULL with a capacity; a navmesh that is not tiled, or rides a movable mesh: save it whole). Thread-safe.
+        /// Added in 0.3.</summary>
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        public static extern StatusCode nl_navmesh_save_tile(IntPtr world, NavmeshId navmesh, TileCoord tile,
+                                                             byte* buffer, UIntPtr capacity, UIntPtr* outSize);
+
+        /// <summary>The same, written to the file at <c>path</c> (NUL-terminated, borrowed) as nl_navmesh_save_file
+        /// writes. Also IO_ERROR. Thread-safe. Added in 0.3.</summary>
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        public static extern StatusCode nl_navmesh_save_tile_file(IntPtr world, NavmeshId navmesh, TileCoord tile,
+                                                                  byte* path);
+
+        /// <summary>Adds the tile a tile's file holds (<c>data</c>, <c>size</c> bytes, borrowed) to a tiled navmesh,
+        /// with its links, as nl_navmesh_add_tile adds a tile (one step for paths and agents); no link is generated: a
+        /// link to a tile not loaded waits, out of every path, until that tile is added, and the links of the loaded
+        /// tiles that land on this one come into use. Returns SUCCESS, or a failure with VERSION_MISMATCH or
+        /// PARSE_ERROR (as nl_navmesh_load), INVALID_ARGUMENT (null data with a size; a whole navmesh's file; a tile of
+        /// another grid or agent type, or made with another builder, builder settings or link settings than the
+        /// navmesh; a tile already loaded there; polygons or links that do not fit, named), INVALID_HANDLE,
+        /// OUT_OF_MEMORY; nothing changed on a failure. Thread-safe; waits for a link generation of the navmesh running
+        /// meanwhile. Added in 0.3.</summary>
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        public static extern StatusCode nl_navmesh_add_tile_bytes(IntPtr world, NavmeshId navmesh, byte* data,
+                                                                  UIntPtr size);
+
+        /// <summary>The same, from the file at <c>path</c> (NUL-terminated, borrowed), read as nl_navmesh_load_file
+        /// reads. Also NOT_FOUND (no such file), IO_ERROR. Thread-safe. Added in 0.3.</summary>
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        public static extern StatusCode nl_navmesh_add_tile_file(IntPtr world, NavmeshId navmesh, byte* path);
+
+        /// <summary>The content hash of the tile at <c>tile</c> of a tiled navmesh's grid (loaded or not), from what
+        /// the world holds now: the level's triangles in the columns the tile, its links and its neighbours' borders
+        /// reach, the builder and its settings, the link settings and the body. A bake keeps a tile's file by it and
+        /// skips a tile whose hash it holds; a tile's file records the hash it was saved with. Never 0. Returns
+        /// SUCCESS, or a failure with INVALID_HANDLE, INVALID_ARGUMENT (out_hash NULL; a navmesh that is not tiled).
+        /// Thread-safe. Added in 0.3.</summary>
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        public static extern StatusCode nl_navmesh_get_tile_hash(IntPtr world, NavmeshId navmesh, TileCoord tile,
+                                                                 ulong* outHash);
+
         /// <summary>The null carrier and no flags. Thread-safe; never fails.</summary>
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         public static extern NavmeshLoadDef nl_default_navmesh_load_def();
 
         /// <summary>Adds the navmesh and its links held in a navmesh file (<c>data</c>, <c>size</c> bytes, borrowed),
         /// as nl_navmesh_add and nl_link_add would, with new ids (links in the file's order); what it was made for
-        /// travels with it (nl_navmesh_save writes it again). <c>def</c> may be NULL (the defaults). Nothing in the
-        /// world changes unless everything loads. Whatever the file says, the loader allocates no more than a fixed
-        /// multiple of what its bytes inflate to (deflate's limit: 1032 times <c>size</c>). Returns SUCCESS, or a
-        /// failure with VERSION_MISMATCH (not a NavLink navmesh file, or a newer format version), PARSE_ERROR
-        /// (truncated or corrupted: the section and what is wrong named), INVALID_ARGUMENT (null data with a size, null
-        /// out_id, bad def size or flags, a carrier for a file that rode none or none for one that did,
-        /// NL_NAVMESH_LOAD_SAME_LEVEL and the level differs, polygons or links that do not fit, named as
+        /// travels with it (nl_navmesh_save writes it again). A tile's file (nl_navmesh_save_tile) makes a tiled
+        /// navmesh of that one tile: add the others with nl_navmesh_add_tile_bytes. <c>def</c> may be NULL (the
+        /// defaults). Nothing in the world changes unless everything loads. Whatever the file says, the loader
+        /// allocates no more than a fixed multiple of what its bytes inflate to (deflate's limit: 1032 times
+        /// <c>size</c>). Returns SUCCESS, or a failure with VERSION_MISMATCH (not a NavLink navmesh file, or a newer
+        /// format version), PARSE_ERROR (truncated or corrupted: the section and what is wrong named), INVALID_ARGUMENT
+        /// (null data with a size, null out_id, bad def size or flags, a carrier for a file that rode none or none for
+        /// one that did, NL_NAVMESH_LOAD_SAME_LEVEL and the level differs, polygons or links that do not fit, named as
         /// "links[3].start"), INVALID_HANDLE (the carrier), OUT_OF_MEMORY. Thread-safe.</summary>
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         public static extern StatusCode nl_navmesh_load(IntPtr world, byte* data, UIntPtr size, NavmeshLoadDef* def,

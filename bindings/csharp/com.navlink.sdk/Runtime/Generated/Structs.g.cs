@@ -130,6 +130,17 @@ namespace NavLink
         public uint Reserved;
         /// <summary>Of the level triangles it was built from; 0: handed over by the host.</summary>
         public ulong LevelHash;
+        /// <summary>Of everything the tile was made from (nl_navmesh_get_tile_hash).</summary>
+        public ulong ContentHash;
+        /// <summary>The tile's place in its grid.</summary>
+        public TileCoord Tile;
+        /// <summary>Metres; 0: a whole navmesh's file.</summary>
+        public float TileWidth;
+        /// <summary>The grid's origin (nl_navmesh_info.tile_origin).</summary>
+        public float TileOriginX;
+        public float TileOriginZ;
+        /// <summary>1: a tile's file.</summary>
+        public uint IsTile;
     }
 
     /// <summary>One straight walk for nl_navmesh_raycast. (nl_navmesh_ray)</summary>

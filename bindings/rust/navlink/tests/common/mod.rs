@@ -106,6 +106,24 @@ pub fn assert_fails<T: std::fmt::Debug>(result: Result<T, Error>, bit: u32, part
     assert!(error.message().contains(part), "message '{}' lacks '{}'", error.message(), part);
 }
 
+/// A temporary folder, removed on drop.
+pub struct TempDir(pub PathBuf);
+
+impl TempDir {
+    /// `name`: unique among the tests of one test binary (they run at once).
+    pub fn new(name: &str) -> TempDir {
+        let dir = std::env::temp_dir().join(format!("navlink-rust-{}-{}", name, std::process::id()));
+        std::fs::create_dir_all(&dir).expect("a temporary folder");
+        TempDir(dir)
+    }
+}
+
+impl Drop for TempDir {
+    fn drop(&mut self) {
+        let _ = std::fs::remove_dir_all(&self.0);
+    }
+}
+
 /// A world whose log callback keeps every message it is given, and those messages.
 pub fn world_keeping_log() -> (World, Arc<Mutex<Vec<String>>>) {
     let logged = Arc::new(Mutex::new(Vec::<String>::new()));
