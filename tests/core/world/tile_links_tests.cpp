@@ -118,6 +118,38 @@ TEST_CASE("the links of a block of tiles are the same whatever order the tiles c
     }
 }
 
+TEST_CASE("tiles built one by one in any order end with the same links") {
+    // nl_navmesh_build_tiles of one tile's square at a time, from one tile, in random orders.
+    Tiled t(nl::levelgen::generate_default_level(3), 32);
+    t.world->generate_links(t.navmesh, nl::LinkSettings{}, {}, nl::test::keep_going);
+    const std::vector<Key> whole = keys(t.links());
+    const std::vector<nl::TileCoord> tiles = t.mesh()->tiles().tiles;
+    REQUIRE(tiles.size() >= 9);
+    const std::string json = "{\"tile_size\": 32}";
+    nl::NavMeshBuildRequest request;
+    request.builder = "recast";
+    request.settings_json = json.c_str();
+    request.settings_json_length = json.size();
+    std::mt19937 random(19);
+    for (int round = 0; round < 2; ++round) {
+        std::vector<nl::TileCoord> order = tiles;
+        std::shuffle(order.begin(), order.end(), random);
+        for (size_t n = 1; n < order.size(); ++n) t.world->remove_tile(t.navmesh, order[n]);
+        const nl::TileGrid grid = t.grid();
+        for (size_t n = 1; n < order.size(); ++n) {
+            // A box inside the tile's square: that tile alone.
+            const float x = float(grid.line_x(order[n].x)) + 0.25f * grid.tile_width;
+            const float z = float(grid.line_z(order[n].z)) + 0.25f * grid.tile_width;
+            nl::Aabb box;
+            box.min = Vec3(x, -10.0f, z);
+            box.max = Vec3(x + 0.5f * grid.tile_width, 10.0f, z + 0.5f * grid.tile_width);
+            t.world->build_tiles(t.navmesh, request, box);
+        }
+        REQUIRE(t.mesh()->tiles().tiles == tiles);
+        CHECK(keys(t.links()) == whole);
+    }
+}
+
 TEST_CASE("a link exists exactly while both its end tiles are loaded") {
     Tiled t(nl::levelgen::generate_default_level(3), 32);
     t.world->generate_links(t.navmesh, nl::LinkSettings{}, {}, nl::test::keep_going);
