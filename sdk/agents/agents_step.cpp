@@ -126,7 +126,11 @@ void Agents::check_against_world(Step& s) {
                 a.emit(AgentEventKind::Replanned, AgentReason::OffPath);
             }
         } else if (a.graph && a.graph != s.current[i] && !a.wants_path && a.state != AgentState::Arrived) {
-            const PathUpkeep upkeep = check_path(a, *s.current[i], links);
+            // Tiles changed under its handle: a path over tiles that stayed as they were is kept, on the
+            // new navmesh, and its links checked there; any other is planned again.
+            const bool carried = a.graph->navmesh_ptr() != s.current[i]->navmesh_ptr() &&
+                                 carry_path_over(a, a.graph->navmesh(), s.current[i]->navmesh());
+            const PathUpkeep upkeep = check_path(a, *s.current[i], links, carried);
             if (upkeep.verdict == PathUpkeep::Holds) {
                 a.graph = s.current[i];
             } else if (upkeep.verdict == PathUpkeep::LinkGone) {

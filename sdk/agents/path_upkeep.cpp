@@ -21,9 +21,10 @@ const Link* LinkLookup::find(const PathGraph& graph, Handle link) {
     return found == known->second.end() ? nullptr : found->second;
 }
 
-PathUpkeep check_path(const Agent& agent, const PathGraph& now, LinkLookup& links) {
+PathUpkeep check_path(const Agent& agent, const PathGraph& now, LinkLookup& links, bool carried_over) {
     // Polygon indices of another navmesh mean nothing: the path and the polygon it stands on go.
-    if (!agent.graph || agent.graph->navmesh_ptr() != now.navmesh_ptr()) return {PathUpkeep::NavMeshChanged, {}};
+    if (!agent.graph || (agent.graph->navmesh_ptr() != now.navmesh_ptr() && !carried_over))
+        return {PathUpkeep::NavMeshChanged, {}};
     for (size_t k = agent.next; k < agent.path.size(); ++k) {
         const PathPoint& point = agent.path[k];
         if (point.segment == kSegmentWalk) continue;
@@ -37,6 +38,43 @@ PathUpkeep check_path(const Agent& agent, const PathGraph& now, LinkLookup& link
         if (!serves) return {PathUpkeep::LinkGone, point.link};
     }
     return {};
+}
+
+namespace {
+
+// Whether every tile whose square meets the x-z bounds of a and b is the same in both navmeshes.
+bool same_tiles_between(const Vec3& a, const Vec3& b, const NavMesh& before, const NavMesh& now) {
+    const TileGrid& grid = now.tiles().grid;
+    constexpr float kRim = 1e-3f;  // a stretch along a line between tiles touches both
+    const TileCoord lo = grid.tile_at(std::min(a.x(), b.x()) - kRim, std::min(a.z(), b.z()) - kRim);
+    const TileCoord hi = grid.tile_at(std::max(a.x(), b.x()) + kRim, std::max(a.z(), b.z()) + kRim);
+    if (double(hi.x) - lo.x > 64.0 || double(hi.z) - lo.z > 64.0) return false;  // a long way: plan it again
+    for (int32_t z = lo.z; z <= hi.z; ++z)
+        for (int32_t x = lo.x; x <= hi.x; ++x)
+            if (before.tile_fingerprint(TileCoord{x, z}) != now.tile_fingerprint(TileCoord{x, z})) return false;
+    return true;
+}
+
+}  // namespace
+
+bool carry_path_over(Agent& agent, const NavMesh& before, const NavMesh& now) {
+    if (!now.tiles().grid.tiled() || before.tiles().grid != now.tiles().grid) return false;
+    if (agent.next > agent.path.size()) return false;
+    Vec3 from = agent.position;
+    for (size_t k = agent.next; k < agent.path.size(); ++k) {
+        const Vec3& to = agent.path[k].carrier_position;
+        if (!same_tiles_between(from, to, before, now)) return false;
+        from = to;
+    }
+    std::vector<uint32_t> placed;
+    placed.reserve(agent.path.size() - agent.next);
+    for (size_t k = agent.next; k < agent.path.size(); ++k) {
+        const NavPoint on = now.find_nearest(agent.path[k].carrier_position, Vec3(0.5f, 1.0f, 0.5f));
+        if (!on.found) return false;
+        placed.push_back(on.polygon);
+    }
+    for (size_t k = agent.next; k < agent.path.size(); ++k) agent.path[k].polygon = placed[k - agent.next];
+    return true;
 }
 
 }  // namespace nl

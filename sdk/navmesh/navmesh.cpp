@@ -40,7 +40,14 @@ size_t NavMesh::memory_bytes() const {
     auto bytes = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
     return bytes(vertices_) + bytes(first_corner_) + bytes(corners_) + bytes(neighbours_) + bytes(areas_) +
            bytes(on_outline_) + bytes(polygon_bounds_) + bytes(detail_vertices_) + bytes(detail_triangles_) +
-           bytes(detail_) + bytes(boundary_) + grid_.memory_bytes() + bytes(polygon_tiles_) + bytes(tiles_.tiles);
+           bytes(detail_) + bytes(boundary_) + grid_.memory_bytes() + bytes(polygon_tiles_) + bytes(tiles_.tiles) +
+           bytes(tile_fingerprints_);
+}
+
+uint64_t NavMesh::tile_fingerprint(const TileCoord& coord) const {
+    const auto at = std::lower_bound(tiles_.tiles.begin(), tiles_.tiles.end(), coord);
+    if (at == tiles_.tiles.end() || *at != coord || tile_fingerprints_.empty()) return 0;
+    return tile_fingerprints_[size_t(at - tiles_.tiles.begin())];
 }
 
 bool NavMesh::over_polygon(uint32_t p, float x, float z) const {

@@ -117,6 +117,10 @@ public:
     const TileLayout& tiles() const { return tiles_; }
     // Polygon p's tile, an index into tiles().tiles; 0 for a solo navmesh.
     uint32_t tile_of(uint32_t p) const { return polygon_tiles_.empty() ? 0 : polygon_tiles_[p]; }
+    // A fingerprint of the polygons of the tile at `coord` as joined (their corners' coordinates, in
+    // order): equal in two navmeshes when that tile's polygons are the same in both (a neighbour that
+    // changed can move its border corners: then it differs). 0 when the tile is not loaded.
+    uint64_t tile_fingerprint(const TileCoord& coord) const;
 
     // The navmesh point for `point` among the polygons overlapping `point +- half_extents`: on the
     // polygon straight below or above it within the agent's max_climb if there is one (as Detour's
@@ -180,7 +184,8 @@ private:
     Aabb bounds_;
     NavMeshRepairs repairs_;
     TileLayout tiles_;
-    std::vector<uint32_t> polygon_tiles_;  // per polygon when tiled
+    std::vector<uint32_t> polygon_tiles_;      // per polygon when tiled
+    std::vector<uint64_t> tile_fingerprints_;  // per tile of tiles_, when tiled
 };
 
 }  // namespace nl

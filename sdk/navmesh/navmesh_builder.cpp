@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numeric>
 
+#include "level/level_hash.h"
 #include "level/mesh_validation.h"
 #include "navmesh/edge_pairs.h"
 #include "navmesh/t_junctions.h"
@@ -358,11 +359,27 @@ private:
         }
         m.agent_ = in_.agent_type;
         m.tiles_ = in_.tiles;
+        fingerprint_tiles(m);
         m.grid_.build(m.polygon_bounds_, m.bounds_);
         // A navmesh lives long and is never edited: give back what the building left spare.
         auto fit = [](auto&... arrays) { (arrays.shrink_to_fit(), ...); };
         fit(m.vertices_, m.first_corner_, m.corners_, m.neighbours_, m.areas_, m.on_outline_, m.polygon_bounds_,
             m.detail_vertices_, m.detail_triangles_, m.detail_, m.boundary_, m.polygon_tiles_);
+    }
+
+    // Each tile's polygons as joined, hashed (FNV-1a over each polygon's corner count and its corners'
+    // coordinate bits, polygon after polygon): what tells an agent its path's tiles did not change.
+    static void fingerprint_tiles(NavMesh& m) {
+        if (m.polygon_tiles_.empty()) return;
+        std::vector<Fnv1a64> h(m.tiles_.tiles.size());
+        for (uint32_t p = 0; p + 1 < m.first_corner_.size(); ++p) {
+            Fnv1a64& hash = h[m.polygon_tiles_[p]];
+            hash.word(m.first_corner_[p + 1] - m.first_corner_[p]);
+            for (uint32_t k = m.first_corner_[p]; k < m.first_corner_[p + 1]; ++k)
+                for (int axis = 0; axis < 3; ++axis) hash.number(m.vertices_[m.corners_[k]][axis]);
+        }
+        m.tile_fingerprints_.resize(h.size());
+        for (size_t t = 0; t < h.size(); ++t) m.tile_fingerprints_[t] = h[t].value();
     }
 
     const NavMeshInput& in_;

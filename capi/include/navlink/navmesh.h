@@ -362,8 +362,8 @@ NL_API nl_status nl_navmesh_build(nl_world* world, const nl_navmesh_build_def* d
    nl_navmesh_def with tile_width > 0) is joined from square tiles of one grid; tiles come and go at run
    time, each change one step for everything else: path requests already running finish on the navmesh
    they started on; an agent standing on a removed tile waits (NL_AGENT_EVENT_WAITING, reason
-   NL_AGENT_REASON_TILE_UNLOADED) until a tile holds it again, and every agent with a path on the
-   navmesh plans again (REPLANNED, reason WORLD_CHANGED); a link with an end on a removed tile is out of
+   NL_AGENT_REASON_TILE_UNLOADED) until a tile holds it again, and every agent whose path touches a
+   changed tile plans again (REPLANNED, reason WORLD_CHANGED; the others keep their paths); a link with an end on a removed tile is out of
    every path until the tile is back. Tiles join the same whatever the order they come in.
    Links across tiles: a tile owns the generated links that start on its polygons, wherever they end
    (any tile within link reach, not only a neighbour). Once links were generated on a tiled navmesh

@@ -181,6 +181,38 @@ TEST_CASE("an agent whose path crosses a removed tile plans again; agents elsewh
     CHECK(arrived);  // round through the other row
 }
 
+TEST_CASE("an agent whose path keeps off the changed tiles keeps its path; one over them plans again") {
+    Corridor c;
+    nl::AgentDef def;
+    def.navmesh = c.navmesh;
+    def.position = Vec3(3, 0, 3);
+    const nl::Handle west = c.world->add_agent(def);  // along the first row, in the three western tiles
+    c.world->agents().set_destination(c.world->navmeshes(), west, Vec3(25, 0, 3));
+    def.position = Vec3(35, 0, 3);
+    const nl::Handle east = c.world->add_agent(def);  // along the first row, to the eastern end
+    c.world->agents().set_destination(c.world->navmeshes(), east, Vec3(58, 0, 3));
+    for (int i = 0; i < 5; ++i) c.world->step(0.1f);
+    auto replanned = [&](nl::Handle agent) {
+        const auto events = c.world->agents().events();
+        return std::any_of(events.begin(), events.end(), [&](const nl::AgentEvent& e) {
+            return e.agent == agent && e.kind == nl::AgentEventKind::Replanned;
+        });
+    };
+    // A tile on the east agent's way (it goes round through the other row), far from the west's.
+    c.world->remove_tile(c.navmesh, c.tile_at(50, 3));
+    c.world->step(0.1f);
+    CHECK_FALSE(replanned(west));
+    CHECK(replanned(east));
+    bool arrived = false;
+    for (int i = 0; i < 400 && !arrived; ++i) {
+        c.world->step(0.1f);
+        CHECK_FALSE(replanned(west));
+        arrived = c.world->agents().info(west).state == nl::AgentState::Arrived &&
+                  c.world->agents().info(east).state == nl::AgentState::Arrived;
+    }
+    CHECK(arrived);
+}
+
 TEST_CASE("tile requests that cannot be met are refused and change nothing") {
     Corridor c;
     const auto before = c.mesh();
