@@ -40,4 +40,10 @@ GenerationSettings read_generation_settings_file(const std::string& path) {
     return parse_generation_settings(read_text_file(path), path);
 }
 
+std::string with_tile_size(const std::string& recast_json, uint32_t tile_size) {
+    nlohmann::json json = recast_json.empty() ? nlohmann::json::object() : nlohmann::json::parse(recast_json);
+    json["tile_size"] = tile_size;
+    return json.dump();
+}
+
 }  // namespace nl::samples

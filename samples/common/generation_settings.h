@@ -28,4 +28,8 @@ GenerationSettings parse_generation_settings(const std::string& text, const std:
 
 GenerationSettings read_generation_settings_file(const std::string& path);
 
+// The builder's settings object `recast_json` (empty: the defaults) with "tile_size" set to
+// `tile_size` cells: the navmesh built in tiles of that side (navlink/recast.h).
+std::string with_tile_size(const std::string& recast_json, uint32_t tile_size);
+
 }  // namespace nl::samples

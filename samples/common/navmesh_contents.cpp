@@ -13,6 +13,15 @@ std::vector<nl_link> read_links(const nl_world* world, nl_navmesh_id navmesh) {
     return links;
 }
 
+std::vector<nl_tile_coord> read_tiles(const nl_world* world, nl_navmesh_id navmesh) {
+    uint32_t count = 0;
+    check(nl_navmesh_get_tiles(world, navmesh, nullptr, 0, &count), "listing the tiles");
+    std::vector<nl_tile_coord> tiles(count);
+    check(nl_navmesh_get_tiles(world, navmesh, tiles.data(), count, &count), "listing the tiles");
+    tiles.resize(count);
+    return tiles;
+}
+
 NavmeshContents read_navmesh_contents(const nl_world* world, nl_navmesh_id navmesh) {
     NavmeshContents out;
     uint32_t count = 0;
@@ -32,6 +41,12 @@ NavmeshContents read_navmesh_contents(const nl_world* world, nl_navmesh_id navme
     check(nl_navmesh_get_boundary_edges(world, navmesh, out.boundary_edges.data(), count, &count),
           "reading the navmesh outline");
     out.links = read_links(world, navmesh);
+    if (info.tile_width > 0.0f) {
+        out.tile_width = info.tile_width;
+        out.tile_origin[0] = info.tile_origin[0];
+        out.tile_origin[1] = info.tile_origin[1];
+        out.tiles = read_tiles(world, navmesh);
+    }
     return out;
 }
 

@@ -12,6 +12,7 @@ namespace {
 
 constexpr float kFrameTime = 1.0f / 60.0f;
 constexpr float kPlayLimit = 120.0f;  // seconds of the agents' walk to the destination at most
+constexpr size_t kTileFrames = 3;     // frames shot as streaming changes the tiles, at most
 
 // Writes the session's scene as DIR/frame_NN.png, numbered in order, and says what it shows.
 struct FrameShooter {
@@ -30,13 +31,19 @@ struct FrameShooter {
 };
 
 // Steps the agents in frames of 1/60 s until none is on its way, shooting a frame when the first
-// jump and the first drop are half flown and when every agent has stopped. True if every agent
-// arrived.
+// jump and the first drop are half flown, when streaming changes the tiles (the first few times) and
+// when every agent has stopped. True if every chosen agent arrived.
 bool play_agents(ViewerSession& session, FrameShooter& shoot) {
     bool shot_jump = false, shot_drop = false;
+    size_t tile_frames = 0, tile_changes = session.tile_changes();
     float time = 0.0f;
     for (; session.agents_moving() && time < kPlayLimit; time += kFrameTime) {
         session.advance(kFrameTime);
+        if (session.tile_changes() != tile_changes && tile_frames < kTileFrames) {
+            ++tile_frames;
+            shoot("tiles streamed " + change_text(session.last_tile_change()));
+        }
+        tile_changes = session.tile_changes();
         for (size_t i = 0; i < session.agents().size(); ++i) {
             const nl_agent_info& info = session.crowd().info(i);
             const bool half = info.link_progress >= 0.5f;
@@ -52,8 +59,16 @@ bool play_agents(ViewerSession& session, FrameShooter& shoot) {
     shoot("the agents after " + std::to_string(static_cast<int>(time)) + " s");
     bool all_arrived = true;
     for (size_t i = 0; i < session.agents().size(); ++i)
-        all_arrived = all_arrived && session.crowd().info(i).state == NL_AGENT_ARRIVED;
+        all_arrived = all_arrived && (!session.selected(i) || session.arrived(i));
     std::printf("agents: %s\n", all_arrived ? "every agent arrived" : "not every agent arrived");
+    if (const TileStreamer* tiles = session.streaming() ? session.streamer() : nullptr) {
+        const TileStreamer::Counts& c = tiles->counts();
+        std::printf(
+            "tiles: at most %zu of %zu loaded at once, within %g m of %s; %zu removed (saved first), %zu added "
+            "(%zu from saved bytes, %zu built again)\n",
+            c.most_loaded, tiles->total(), double(session.stream_radius()), session.followed().c_str(), c.removed,
+            c.added_from_bytes + c.built, c.added_from_bytes, c.built);
+    }
     return all_arrived;
 }
 
@@ -61,7 +76,8 @@ bool play_agents(ViewerSession& session, FrameShooter& shoot) {
 
 int run_headless_trip(ViewerSession& session, const ViewSettings& view, const std::string& dir) {
     FrameShooter shoot{session, view, dir};
-    shoot("all agents to the destination");
+    shoot((session.all_agents() ? std::string("all agents") : session.followed()) + " to the destination" +
+          (session.streaming() ? ", the tiles streamed around " + session.followed() : std::string()));
     return play_agents(session, shoot) ? 0 : 1;
 }
 

@@ -15,8 +15,11 @@ namespace nl::picture {
 // one drawn under it (an unreachable destination is an outcome, not a failure).
 int run_headless_script(ViewerSession& session, ViewSettings view, const std::string& dir);
 
-// The agents' trip from the start to the destination the host gave (navlink-viewer --from --to),
-// its frames written as above. Returns 0 when every agent arrived, 1 when one did not.
+// The agents' trip from the start to the destination the host gave (navlink-viewer --from --to; or
+// with tile streaming on, to the level's own destination), its frames written as above, with a frame
+// for each of the first few changes of the tiles streaming, and a line saying how many tiles were
+// loaded at most and how many were removed and added. Returns 0 when every chosen agent arrived, 1
+// when one did not.
 int run_headless_trip(ViewerSession& session, const ViewSettings& view, const std::string& dir);
 
 }  // namespace nl::picture

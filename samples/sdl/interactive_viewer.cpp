@@ -15,7 +15,8 @@ const char* const kViewerKeys =
     "  left click: destination (the agents walk there)    right click or shift-click: start (they stand there)\n"
     "  1 2 3: walker / short jumper / long jumper    A: all agents at once\n"
     "  L level  N navmesh  B boundary edges  K links  P paths  M agents  G legend  O oblique/top-down\n"
-    "  R roofs (cut away above the navmesh, or drawn)  I link numbers  X grid\n"
+    "  R roofs (cut away above the navmesh, or drawn)  I link numbers  X grid  E tile borders\n"
+    "  T tile streaming (a tiled navmesh: only the tiles around the chosen agent loaded)\n"
     "  S: save viewer.png    Q or Escape: quit\n";
 
 namespace {
@@ -41,6 +42,8 @@ bool handle_key(SDL_Keycode key, ViewerSession& session, ViewSettings& view) {
         case SDLK_r: l.roofs = !l.roofs; break;
         case SDLK_i: l.link_numbers = !l.link_numbers; break;
         case SDLK_x: l.grid = !l.grid; break;
+        case SDLK_e: l.tile_borders = !l.tile_borders; break;
+        case SDLK_t: session.set_streaming(!session.streaming()); break;
         case SDLK_s:
             session.wait_for_paths();  // save what was asked for, not a picture mid-planning
             session.update();

@@ -9,6 +9,7 @@
 #include "island_colors.h"
 #include "map_marker.h"
 #include "palette.h"
+#include "tile_borders.h"
 
 namespace nl::picture {
 namespace {
@@ -72,9 +73,10 @@ float grid_step(float pixels_per_metre) {
 }
 
 float grid_height(const Scene& scene) {
-    if (!scene.navmesh || scene.navmesh->polygons.empty()) return scene.level->info.bounds_min[1];
+    const samples::NavmeshContents* navmesh = scene.level_navmesh();
+    if (!navmesh || navmesh->polygons.empty()) return scene.level->info.bounds_min[1];
     std::vector<float> heights;
-    for (const nl_nav_polygon& polygon : scene.navmesh->polygons) heights.push_back(polygon.centre[1]);
+    for (const nl_nav_polygon& polygon : navmesh->polygons) heights.push_back(polygon.centre[1]);
     std::nth_element(heights.begin(), heights.begin() + static_cast<long>(heights.size() / 2), heights.end());
     return heights[heights.size() / 2];
 }
@@ -131,6 +133,13 @@ void draw_legend(Canvas& canvas, const Scene& scene, const ViewSettings& view, c
                          std::to_string(scene.navmesh->polygons.size()) + " walkable polygons");
         }
         w.swatch_line(palette::kBoundary, std::to_string(scene.navmesh->boundary_edges.size()) + " boundary edges");
+        if (scene.navmesh->tiled() && view.layers.tile_borders)
+            w.swatch_line(palette::kTileBorder, tile_borders_text(*scene.navmesh));
+        for (size_t from = 0; from < scene.streaming.size();) {  // a note a line, each line ending '\n'
+            const size_t end = std::min(scene.streaming.find('\n', from), scene.streaming.size());
+            w.note(scene.streaming.substr(from, end - from));
+            from = end + 1;
+        }
 
         uint32_t counts[4] = {0, 0, 0, 0};
         uint32_t one_way = 0;

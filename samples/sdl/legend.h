@@ -18,8 +18,8 @@ constexpr float kRoundLengths[] = {1.0f, 2.0f, 5.0f, 10.0f, 20.0f, 50.0f, 100.0f
 // Metres between grid lines: the shortest round length at least 64 pixels long.
 float grid_step(float pixels_per_metre);
 
-// The height the grid lies at (seen from an angle, it matters): the navmesh's median polygon height,
-// or without a navmesh the level's lowest.
+// The height the grid lies at (seen from an angle, it matters): the navmesh's median polygon height
+// (the whole navmesh's, while tiles of it are streamed out), or without a navmesh the level's lowest.
 float grid_height(const Scene& scene);
 
 // The heights the level's colour ramp spans (dark to light): the level's, up to the slice's top

@@ -31,6 +31,10 @@ constexpr Rgba kGrid{255, 255, 255, 46};
 constexpr Rgba kGridLabel{200, 205, 212, 255};
 constexpr Rgba kOffMap{255, 70, 200, 255};    // a start or goal off the map: its marker at the edge
 constexpr Rgba kNoIsland{150, 150, 150, 90};  // a navmesh polygon in an area the body keeps out of
+// A tiled navmesh's tiles: their squares (thin, faint) and the navmesh's edges along the lines
+// between them (the same colour, solid).
+constexpr Rgba kTileBorder{130, 160, 255, 230};
+constexpr Rgba kTileSquare{130, 160, 255, 110};
 
 // Reachability islands: the first is the navmesh's usual green, the others hues apart from it and
 // from the links' colours, with the navmesh fill's transparency.

@@ -62,14 +62,23 @@ struct SceneIslands {
 };
 
 struct Scene {
+    // The navmesh the level's drawing goes by (roofs cut away, the grid's height): the whole one.
+    const samples::NavmeshContents* level_navmesh() const { return whole_navmesh ? whole_navmesh : navmesh; }
+
     const samples::Level* level = nullptr;              // required
     const samples::NavmeshContents* navmesh = nullptr;  // optional
     const SceneIslands* islands = nullptr;              // optional: navmesh polygons coloured by island
+    // Optional: the navmesh with every tile loaded while tiles of `navmesh` are streamed out, so that
+    // the level is drawn as it is without streaming: the roofs cut away above it and the grid's height.
+    const samples::NavmeshContents* whole_navmesh = nullptr;
     std::vector<ScenePlatform> platforms;
     std::vector<PathLayer> paths;
     std::vector<ScenePoint> points;  // start, goal, ...
     std::vector<SceneAgent> agents;
     std::string title;
+    // The viewer's tile streaming, notes in the legend, one a line ("streaming: 6 of 24 tiles loaded,\n...");
+    // empty: none.
+    std::string streaming;
 };
 
 struct Layers {
@@ -83,6 +92,7 @@ struct Layers {
     bool grid = true;           // metre lines with x and z labels at the map's edges
     bool link_numbers = false;  // each link's index in the navmesh's list (LINKS.json, path output)
     bool roofs = false;         // draw level surfaces above the navmesh too (none cut away)
+    bool tile_borders = true;   // a tiled navmesh's loaded tiles outlined (a solo navmesh has none)
 };
 
 struct ViewSettings {

@@ -14,6 +14,7 @@
 #include "legend.h"
 #include "link_shape.h"
 #include "palette.h"
+#include "tile_borders.h"
 
 namespace nl::picture {
 namespace {
@@ -406,6 +407,17 @@ void draw_grid(Canvas& canvas, const Camera& camera, const Scene& scene) {
 
 SDL_FPoint projected_point(const Camera& camera, const std::array<float, 3>& p) { return camera.project(p.data()); }
 
+// A tiled navmesh's loaded tiles: each square outlined thin along the tile lines (seen from an angle,
+// at the grid's height), and the navmesh's edges on those lines over it at their own heights.
+void draw_tile_borders(Canvas& canvas, const Camera& camera, const Scene& scene, const samples::NavmeshContents& nav) {
+    const TileBorders borders =
+        tile_borders(nav, grid_height(scene), scene.level->info.bounds_min, scene.level->info.bounds_max);
+    for (const auto& side : borders.squares)
+        canvas.line(projected_point(camera, side[0]), projected_point(camera, side[1]), 1.0f, palette::kTileSquare);
+    for (const auto& seam : borders.seams)
+        canvas.line(projected_point(camera, seam[0]), projected_point(camera, seam[1]), 2.0f, palette::kTileBorder);
+}
+
 void draw_agents(Canvas& canvas, const Camera& camera, const Scene& scene) {
     for (const SceneAgent& agent : scene.agents) {
         std::vector<SDL_FPoint> track;
@@ -455,8 +467,9 @@ void draw_scene(SDL_Renderer* renderer, const Scene& scene, const ViewSettings& 
     const Camera camera = scene_camera(scene, view);
 
     // Roofs cut away: level surfaces above the navmesh under them (height_slice.h).
-    const std::optional<HeightSlice> slice =
-        scene.navmesh && !view.layers.roofs ? std::optional<HeightSlice>(std::in_place, *scene.navmesh) : std::nullopt;
+    const std::optional<HeightSlice> slice = scene.level_navmesh() && !view.layers.roofs
+                                                 ? std::optional<HeightSlice>(std::in_place, *scene.level_navmesh())
+                                                 : std::nullopt;
     std::vector<Surface> surfaces;
     if (view.layers.level) {
         collect_level(scene, camera, slice ? &*slice : nullptr, surfaces);
@@ -467,6 +480,8 @@ void draw_scene(SDL_Renderer* renderer, const Scene& scene, const ViewSettings& 
         collect_navmesh(platform.navmesh, nullptr, camera, view.layers, surfaces);
     draw_surfaces(canvas, surfaces);
     if (view.layers.grid) draw_grid(canvas, camera, scene);
+    if (view.layers.tile_borders && scene.navmesh && scene.navmesh->tiled())
+        draw_tile_borders(canvas, camera, scene, *scene.navmesh);
     if (view.layers.links) {
         const bool behind_paths = view.layers.paths && !scene.paths.empty();
         if (scene.navmesh) draw_links(canvas, camera, *scene.navmesh, behind_paths, view.layers.link_numbers);

@@ -19,6 +19,10 @@ bool on_its_way(nl_agent_state state) {
     return state == NL_AGENT_WALKING || state == NL_AGENT_WAITING || samples::in_the_air(state);
 }
 
+bool parked_on_unloaded_tile(const nl_agent_info& info) {
+    return info.state == NL_AGENT_WAITING && info.reason == NL_AGENT_REASON_TILE_UNLOADED;
+}
+
 // The curve the agent flies, as the library describes it to a host that animates the body.
 std::vector<Point3> flight_curve(const nl_agent_trajectory& t) {
     switch (t.kind) {
@@ -52,6 +56,15 @@ bool ViewerAgents::send(size_t index, const Point& destination) {
     return moved(index, nl_agent_set_destination(world_, ids_.at(index), destination.data()), "go there");
 }
 
+bool ViewerAgents::redirect(size_t index, const Point& destination) {
+    if (NL_FAILED(nl_agent_set_destination(world_, ids_.at(index), destination.data()))) {
+        std::printf("%s cannot go there: %s\n", profiles_[index].name.c_str(), nl_get_last_error_message());
+        return false;
+    }
+    read_back();
+    return true;
+}
+
 bool ViewerAgents::teleport(size_t index, const Point& position) {
     return moved(index, nl_agent_teleport(world_, ids_.at(index), position.data()), "stand there");
 }
@@ -68,7 +81,7 @@ bool ViewerAgents::moved(size_t index, nl_status status, const char* what) {
 
 bool ViewerAgents::moving() const {
     for (const nl_agent_info& info : infos_)
-        if (on_its_way(info.state)) return true;
+        if (on_its_way(info.state) && !parked_on_unloaded_tile(info)) return true;
     return false;
 }
 
@@ -127,7 +140,9 @@ std::string ViewerAgents::status() const {
     for (const nl_agent_info& info : infos_) {
         if (!on_its_way(info.state) && info.state != NL_AGENT_FAILED) continue;
         char text[96];
-        if (samples::in_the_air(info.state))
+        if (parked_on_unloaded_tile(info))
+            std::snprintf(text, sizeof text, "%s waiting for its tile", profiles_[info.user_data].name.c_str());
+        else if (samples::in_the_air(info.state))
             std::snprintf(text, sizeof text, "%s %s %.0f%%", profiles_[info.user_data].name.c_str(),
                           samples::agent_state_name(info.state), 100.0f * info.link_progress);
         else

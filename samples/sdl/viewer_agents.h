@@ -23,14 +23,19 @@ public:
 
     // Sends agent `index` to `destination`; false (and a line on stdout) when it is off the navmesh.
     bool send(size_t index, const Point& destination);
+    // The same on its way (a waypoint of a longer way): its track goes on.
+    bool redirect(size_t index, const Point& destination);
     // Puts agent `index` at `position` and forgets its track; false (and a line) off the navmesh.
     bool teleport(size_t index, const Point& position);
     // Advances the world by `dt` seconds when an agent is on its way, or always when `surfaces_move`
     // (platforms carry the agents standing on them); true if one moved. Prints each take-off,
     // arrival and failure.
     bool step(float dt, bool surfaces_move = false);
+    // Whether an agent is on its way (one waiting on a tile that was unloaded is not: stepping the
+    // world does not bring it on, loading its tile does).
     bool moving() const;
     const nl_agent_info& info(size_t index) const { return infos_.at(index); }
+    float time() const { return time_; }  // seconds stepped
 
     // Where each agent is, its track, and in the air the trajectory it flies.
     std::vector<SceneAgent> scene_agents() const;

@@ -1,5 +1,6 @@
 #include "viewer_session.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -11,6 +12,7 @@
 #include "platform_picture.h"
 #include "sample_error.h"
 #include "scene_renderer.h"
+#include "world_agents.h"
 
 namespace nl::picture {
 
@@ -29,17 +31,23 @@ ViewerSession::ViewerSession(const ViewerOptions& options) : agents_(samples::de
         generated = levelgen::generate_default_level(options.seed);
         level_ = samples::add_generated_level(world_.get(), generated, "generated default level (seed " + seed + ")");
     }
-    navmesh_ = samples::build_navmesh(world_.get(), agents_[0].body, "");
+    navmesh_ = samples::build_navmesh(world_.get(), agents_[0].body, options.settings.recast_json);
     if (options.links_path) {
         samples::load_links_file(world_.get(), navmesh_, *options.links_path);
     } else {
-        const nl_link_settings settings = nl_default_link_settings();
-        samples::check(nl_navmesh_generate_links(world_.get(), navmesh_, &settings, nullptr, nullptr, nullptr),
-                       "generating links");
+        samples::check(
+            nl_navmesh_generate_links(world_.get(), navmesh_, &options.settings.links, nullptr, nullptr, nullptr),
+            "generating links");
     }
     contents_ = samples::read_navmesh_contents(world_.get(), navmesh_);
     paths_.resize(agents_.size());
+    routes_.resize(agents_.size());
     current_ = agents_.size() - 1;
+    if (options.agent) {
+        current_ = *options.agent % agents_.size();
+        all_agents_ = false;
+    }
+    stream_radius_ = options.stream_radius;
     read_islands();
     if (platforms_level_) {
         add_passengers();
@@ -54,6 +62,8 @@ ViewerSession::ViewerSession(const ViewerOptions& options) : agents_(samples::de
         start_ = {c[0], c[1], c[2]};
     }
     crowd_.emplace(world_.get(), navmesh_, agents_, std::vector<Point>(agents_.size(), start_));
+    // Every tile is loaded now: the ones streaming brings back.
+    if (contents_.tiled()) streamer_.emplace(world_.get(), navmesh_, options.settings.recast_json, agents_[0].body);
     // Send the agents to the level's goal marker, or to the polygon farthest from the start.
     if (const levelgen::Marker* m = generated.marker("goal")) {
         set_destination({m->position[0], m->position[1], m->position[2]});
@@ -163,19 +173,37 @@ void ViewerSession::for_selected(Visit visit) {
         if (all_agents_ || i == current_) visit(i);
 }
 
+template <typename Change>
+void ViewerSession::with_every_tile(Change change) {
+    if (!streaming_) {
+        change();
+        return;
+    }
+    // Path requests made now plan over every tile (a request reads the navmesh of the moment).
+    if (!streamer_->load_all().empty()) read_navmesh();
+    change();
+    whole_ = contents_;
+    plan_routes();
+    stream();
+}
+
 bool ViewerSession::set_start(const Point& start) {
-    start_ = start;
     bool all = true;
-    for_selected([&](size_t i) { all = crowd_->teleport(i, start) && all; });
-    request_paths();
+    with_every_tile([&] {
+        start_ = start;
+        for_selected([&](size_t i) { all = crowd_->teleport(i, start) && all; });
+        request_paths();
+    });
     return all;
 }
 
 bool ViewerSession::set_destination(const Point& destination) {
-    destination_ = destination;
     bool all = true;
-    for_selected([&](size_t i) { all = crowd_->send(i, destination) && all; });
-    request_paths();
+    with_every_tile([&] {
+        destination_ = destination;
+        for_selected([&](size_t i) { all = crowd_->send(i, destination) && all; });
+        request_paths();
+    });
     return all;
 }
 
@@ -184,15 +212,140 @@ void ViewerSession::read_islands() {
 }
 
 void ViewerSession::select_agent(size_t index) {
-    current_ = index % agents_.size();
+    with_every_tile([&] {
+        current_ = index % agents_.size();
+        all_agents_ = false;
+        request_paths();
+    });
     read_islands();
-    all_agents_ = false;
-    request_paths();
 }
 
 void ViewerSession::toggle_all_agents() {
-    all_agents_ = !all_agents_;
-    request_paths();
+    with_every_tile([&] {
+        all_agents_ = !all_agents_;
+        request_paths();
+    });
+}
+
+void ViewerSession::read_navmesh() {
+    contents_ = samples::read_navmesh_contents(world_.get(), navmesh_);
+    read_islands();
+}
+
+std::string ViewerSession::followed() const { return all_agents_ ? "the agents" : "the " + agents_[current_].name; }
+
+bool ViewerSession::set_streaming(bool on) {
+    if (on == streaming_) return true;
+    if (!streamer_) {
+        std::printf("tile streaming: %s\n", platforms_.empty()
+                                                ? "the navmesh is not tiled (build it in tiles: --tile-size N)"
+                                                : "not with the moving platforms");
+        return false;
+    }
+    streaming_ = on;
+    if (on) {
+        whole_ = contents_;
+        std::printf("tile streaming on: the tiles within %g m of %s stay loaded, of %zu tiles of %g m\n",
+                    double(stream_radius_), followed().c_str(), streamer_->total(), double(streamer_->tile_width()));
+        plan_routes();
+        stream();
+        return true;
+    }
+    if (!streamer_->load_all().empty()) read_navmesh();
+    // Sent along their way by waypoints: now to the destination itself.
+    for (size_t i = 0; i < agents_.size(); ++i)
+        if (routes_[i] && !routes_[i]->done) crowd_->redirect(i, routes_[i]->destination);
+    routes_.assign(agents_.size(), std::nullopt);
+    std::printf("tile streaming off: every tile loaded (%zu)\n", streamer_->total());
+    return true;
+}
+
+void ViewerSession::plan_routes() {
+    std::vector<bool> en_route(agents_.size(), false);
+    for (size_t i = 0; i < agents_.size(); ++i) en_route[i] = routes_[i] && !routes_[i]->done;
+    routes_.assign(agents_.size(), std::nullopt);
+    if (!destination_) return;
+    for_selected([&](size_t i) {
+        const nl_agent_info& info = crowd_->info(i);
+        const bool stopped = info.state == NL_AGENT_ARRIVED || info.state == NL_AGENT_FAILED;
+        if (!info.has_destination || (stopped && !en_route[i])) return;
+        samples::PlannedPath path =
+            samples::find_path(world_.get(), navmesh_, info.position, destination_->data(), agents_[i].capabilities);
+        if (path.result.outcome != NL_PATH_COMPLETE && path.result.outcome != NL_PATH_PARTIAL) return;
+        StreamedRoute route;
+        route.points = std::move(path.points);
+        route.destination = *destination_;
+        route.partial = path.result.outcome == NL_PATH_PARTIAL;
+        routes_[i] = std::move(route);
+    });
+}
+
+bool ViewerSession::stream() {
+    std::vector<TileStreamer::Point> centres;
+    for_selected([&](size_t i) {
+        const float* p = crowd_->info(i).position;
+        centres.push_back({p[0], p[1], p[2]});
+    });
+    const TileStreamer::Change change = streamer_->follow(centres, stream_radius_);
+    if (!change.empty()) {
+        read_navmesh();
+        ++tile_changes_;
+        last_tile_change_ = change;
+        std::printf("%7.2f s  tiles %s: %zu of %zu loaded\n", double(crowd_->time()), change_text(change).c_str(),
+                    streamer_->loaded_count(), streamer_->total());
+    }
+    steer_along_routes();
+    return !change.empty();
+}
+
+// Each chosen agent on a route: to the farthest point of it the loaded tiles hold, a little inside
+// them (so that the tiles beyond come within range before it gets there), and to the destination
+// once they hold the rest of the way.
+void ViewerSession::steer_along_routes() {
+    const float margin = std::min(1.0f, 0.25f * stream_radius_);
+    for (size_t i = 0; i < agents_.size(); ++i) {
+        if (!routes_[i] || routes_[i]->done) continue;
+        StreamedRoute& route = *routes_[i];
+        const nl_agent_info& info = crowd_->info(i);
+        if (samples::in_the_air(info.state)) continue;  // it lands first
+        const bool stopped = info.state == NL_AGENT_ARRIVED || info.state == NL_AGENT_IDLE ||
+                             info.state == NL_AGENT_FAILED ||
+                             (info.state == NL_AGENT_WAITING && info.reason == NL_AGENT_REASON_TILE_UNLOADED);
+        advance_on_route(route, info.position);
+        const std::optional<Waypoint> waypoint = waypoint_on_route(route, *streamer_, margin);
+        if (waypoint && waypoint->final) {
+            // The destination itself, or where a route that falls short of it ends (the agent goes as
+            // near as it can) when the tiles loaded do not hold the destination.
+            const float* d = route.destination.data();
+            const float* end = route.points.back().position;
+            crowd_->redirect(i, streamer_->holds(d[0], d[2], 0.0f) ? route.destination : Point{end[0], end[1], end[2]});
+            route.done = true;
+            continue;
+        }
+        const bool further =
+            waypoint && (!route.waypoint || std::hypot((*route.waypoint)[0] - waypoint->point[0],
+                                                       (*route.waypoint)[1] - waypoint->point[1],
+                                                       (*route.waypoint)[2] - waypoint->point[2]) > 0.5f);
+        if (further) {
+            // Tried once per place: a waypoint refused (said on stdout) is not tried again each frame.
+            crowd_->redirect(i, waypoint->point);
+            route.waypoint = waypoint->point;
+        } else if (stopped) {
+            std::printf("%s: the tiles loaded hold no more of its way\n", agents_[i].name.c_str());
+            route.done = true;
+        }
+    }
+}
+
+bool ViewerSession::arrived(size_t index) const {
+    return crowd_->info(index).state == NL_AGENT_ARRIVED && !(routes_[index] && routes_[index]->partial);
+}
+
+bool ViewerSession::agents_moving() const {
+    if (crowd_->moving()) return true;
+    for (const auto& route : routes_)
+        if (route && !route->done) return true;
+    return false;
 }
 
 void ViewerSession::cancel_pending() {
@@ -201,7 +354,10 @@ void ViewerSession::cancel_pending() {
 }
 
 bool ViewerSession::advance(float dt) {
-    if (platforms_.empty()) return crowd_->step(dt);
+    if (platforms_.empty()) {
+        const bool moved = crowd_->step(dt);
+        return (streaming_ && stream()) || moved;
+    }
     time_ += dt;
     samples::move_platforms(world_.get(), platforms_, time_);
     // The gangways onto the platforms are links of the ground: their ends have moved with them.
@@ -253,8 +409,15 @@ Scene ViewerSession::scene() const {
     Scene scene;
     scene.level = &level_;
     scene.navmesh = &contents_;
+    if (streaming_) scene.whole_navmesh = &whole_;
     scene.islands = &islands_;
     scene.title = level_.name + "  |  agent: " + (all_agents_ ? std::string("all") : agents_[current_].name);
+    if (streaming_) {
+        char text[128];
+        std::snprintf(text, sizeof text, "streaming: %zu of %zu tiles loaded,\n(those within %g m of %s)",
+                      streamer_->loaded_count(), streamer_->total(), double(stream_radius_), followed().c_str());
+        scene.streaming = text;
+    }
     for (size_t i = 0; i < agents_.size(); ++i) {
         if (!paths_[i]) continue;
         const samples::PlannedPath& p = *paths_[i];
@@ -304,6 +467,8 @@ std::string ViewerSession::status() const {
         out += text;
     }
     if (waiting()) out += "; planning...";
+    if (streaming_)
+        out += "; tiles " + std::to_string(streamer_->loaded_count()) + "/" + std::to_string(streamer_->total());
     const std::string moving = crowd_->status();
     if (!moving.empty()) out += "; " + moving;
     return out;

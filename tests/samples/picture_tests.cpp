@@ -1,7 +1,8 @@
 // The pictures as a user reads them, checked pixel by pixel at places computed with the pictures' own
 // camera (samples/sdl): roofs cut away above the navmesh, a start off the map marked at its edge, the
-// drop arrows counted, link numbers where the links are; and the viewer's clicks in a level with a
-// roof, which pick the navmesh polygon under the cursor, and its script on every shared level.
+// drop arrows counted, link numbers where the links are, a tiled navmesh's tile borders; and the
+// viewer's clicks in a level with a roof, which pick the navmesh polygon under the cursor, its script
+// on every shared level, and its tiles streamed around an agent walking across a tiled level.
 #include <navlink/navlink.h>
 
 #include <algorithm>
@@ -29,6 +30,7 @@
 #include "palette.h"
 #include "scene_renderer.h"
 #include "shared_levels.h"
+#include "tile_borders.h"
 #include "world.h"
 
 using nl::test::navlink;
@@ -328,4 +330,91 @@ TEST_CASE("the viewer's headless script runs on every shared level") {
         CHECK(run.out.find("right click on the start picked") != std::string::npos);
         CHECK(nl::test::is_png(dir + "/frame_00.png", 1600));
     }
+}
+
+TEST_CASE("a tiled navmesh's picture draws the borders of its tiles over it; a solo navmesh's draws none") {
+    const std::string dir = nl::test::scratch_dir("picture_tiles");
+    REQUIRE(navlink({"level", "--out", "level.obj"}, dir).exit_code == 0);
+    nl::test::write_file(dir + "/tiles.json", R"({"recast": {"tile_size": 32}})");
+    const ProgramRun tiled = navlink(
+        {"generate", "level.obj", "--settings", "tiles.json", "--out", "tiled.json", "--png", "tiled.png"}, dir);
+    REQUIRE_MESSAGE(tiled.exit_code == 0, tiled.err);
+    const ProgramRun solo = navlink({"generate", "level.obj", "--out", "solo.json", "--png", "solo.png"}, dir);
+    REQUIRE_MESSAGE(solo.exit_code == 0, solo.err);
+    const Png tiled_png(dir + "/tiled.png"), solo_png(dir + "/solo.png");
+
+    // The CLI's tiled navmesh, built here the same way: where its tiles meet, its edges lie on the
+    // lines between them.
+    PictureCamera picture(dir + "/level.obj");
+    const nl_navmesh_id navmesh =
+        nl::samples::build_navmesh(picture.world.get(), nl_default_agent_type(), R"({"tile_size": 32})");
+    const nl::samples::NavmeshContents nav = nl::samples::read_navmesh_contents(picture.world.get(), navmesh);
+    REQUIRE(nav.tiled());
+    CHECK(nav.tile_width == doctest::Approx(32 * 0.3f));
+    REQUIRE(nav.tiles.size() > 4);
+    REQUIRE(tiled_png.height == picture.view.height);
+    const nl::picture::TileBorders borders = nl::picture::tile_borders(
+        nav, picture.level.info.bounds_min[1], picture.level.info.bounds_min, picture.level.info.bounds_max);
+    CHECK(nl::picture::tile_borders_text(nav) ==
+          "tile borders (" + std::to_string(nav.tiles.size()) + " tiles of 9.6 m)");
+    const nl::picture::Rgba blue = nl::picture::palette::kTileBorder;
+    const Color border{blue.r, blue.g, blue.b};
+    size_t seams = 0, drawn = 0, drawn_solo = 0;
+    for (const auto& seam : borders.seams) {
+        if (std::hypot(seam[1][0] - seam[0][0], seam[1][2] - seam[0][2]) < 1.0f) continue;
+        const float middle[3] = {0.5f * (seam[0][0] + seam[1][0]), 0.5f * (seam[0][1] + seam[1][1]),
+                                 0.5f * (seam[0][2] + seam[1][2])};
+        const SDL_FPoint at = picture.pixel(middle);
+        INFO("seam at (" << middle[0] << ", " << middle[2] << "): tiled " << text(tiled_png.at(at)) << ", solo "
+                         << text(solo_png.at(at)));
+        ++seams;
+        drawn += difference(tiled_png.at(at), border) <= 40;
+        drawn_solo += difference(solo_png.at(at), border) <= 40;
+    }
+    MESSAGE(seams << " navmesh edges along tile lines: " << drawn << " drawn in the tile borders' colour, "
+                  << drawn_solo << " so in the solo navmesh's picture");
+    REQUIRE(seams >= 8);
+    CHECK(drawn >= seams * 3 / 4);  // a link drawn over a border hides it
+    CHECK(drawn_solo == 0);
+}
+
+TEST_CASE("the viewer streams the tiles around an agent walking across a tiled level: it arrives, few tiles loaded") {
+    const std::string dir = nl::test::scratch_dir("viewer_stream_tiles");
+    const ProgramRun run = nl::test::run_program({NAVLINK_VIEWER_PATH, "--headless", "--tile-size", "32",
+                                                  "--stream-tiles", "6", "--agent", "3", "--frames", dir},
+                                                 dir);
+    INFO(run.out << run.err);
+    CHECK(run.exit_code == 0);
+    CHECK(run.out.find("\nagents: every agent arrived") != std::string::npos);
+    std::smatch m;
+    REQUIRE(std::regex_search(run.out, m,
+                              std::regex(R"(tiles: at most (\d+) of (\d+) loaded at once, within 6 m of the long )"
+                                         R"(jumper; (\d+) removed \(saved first\), (\d+) added \((\d+) from saved )"
+                                         R"(bytes, (\d+) built again\))")));
+    const unsigned long most = std::stoul(m[1]), total = std::stoul(m[2]), removed = std::stoul(m[3]),
+                        added = std::stoul(m[4]), from_bytes = std::stoul(m[5]);
+    CHECK(total >= 12);            // the generated level in tiles of 9.6 m
+    CHECK(most < total);           // never every tile at once
+    CHECK(most * 3 <= total * 2);  // ... nor nearly
+    CHECK(from_bytes == added);    // each came back as it was saved, with its links
+    // Along the way, after the first step (at 0 s the tiles out of range go): each change a line
+    // with the tiles loaded then, never more than the most.
+    const std::regex change(R"(\n +([0-9.]+) s  tiles ([-+(), 0-9]+): (\d+) of (\d+) loaded)");
+    size_t came = 0, went = 0;
+    for (std::sregex_iterator it(run.out.begin(), run.out.end(), change), end; it != end; ++it) {
+        CHECK(std::stoul((*it)[3]) <= most);
+        CHECK(std::stoul((*it)[4]) == total);
+        if (std::stof((*it)[1]) <= 0.0f) continue;
+        const std::string tiles = (*it)[2];
+        came += std::count(tiles.begin(), tiles.end(), '+');
+        went += std::count(tiles.begin(), tiles.end(), '-');
+    }
+    MESSAGE("at most " << most << " of " << total << " tiles loaded; " << removed << " removed, " << added
+                       << " added; on the way " << came << " came in and " << went << " went out");
+    CHECK(came > 2);
+    CHECK(went > 2);
+    CHECK(came == added);
+    // The frames show the tiles coming in; the last is a PNG.
+    CHECK(run.out.find("frame_01.png: tiles streamed +(") != std::string::npos);
+    CHECK(nl::test::is_png(dir + "/frame_01.png", 1600));
 }
