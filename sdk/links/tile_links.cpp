@@ -50,12 +50,27 @@ TileCoord owner_tile(const TileGrid& grid, const Link& link) {
 
 std::vector<TileCoord> tiles_within_reach(const TileGrid& grid, const std::vector<TileCoord>& loaded,
                                           const std::vector<TileCoord>& around, float reach) {
+    // Each loaded tile looks for the tiles of `around` in the block of tiles its reach can meet (every
+    // tile against every other was quadratic: 15 s of a 4 km world's 21 s link generation).
+    std::vector<TileCoord> sorted = around;
+    std::sort(sorted.begin(), sorted.end());
+    const int64_t span = int64_t(std::ceil(double(reach) / grid.tile_width)) + 1;
+    const bool few = double(2 * span + 1) * double(2 * span + 1) > double(sorted.size());
     std::vector<TileCoord> out;
     for (const TileCoord& t : loaded) {
-        const bool near = std::any_of(around.begin(), around.end(), [&](const TileCoord& a) {
+        const auto within = [&](const TileCoord& a) {
             return apart(grid, t, grid.line_x(a.x), grid.line_x(int64_t(a.x) + 1), grid.line_z(a.z),
                          grid.line_z(int64_t(a.z) + 1)) <= reach;
-        });
+        };
+        // Fewer tiles around than in the block: each of them.
+        bool near = few && std::any_of(sorted.begin(), sorted.end(), within);
+        for (int64_t dz = -span; dz <= span && !near && !few; ++dz)
+            for (int64_t dx = -span; dx <= span && !near; ++dx) {
+                const int64_t x = t.x + dx, z = t.z + dz;
+                if (std::fabs(double(x)) > kMaxTileIndex || std::fabs(double(z)) > kMaxTileIndex) continue;
+                const TileCoord a{int32_t(x), int32_t(z)};
+                near = std::binary_search(sorted.begin(), sorted.end(), a) && within(a);
+            }
         if (near) out.push_back(t);
     }
     std::sort(out.begin(), out.end());

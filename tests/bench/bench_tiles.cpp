@@ -1,5 +1,6 @@
 // navlink-bench-tiles [--world-km K] [--tile-size N] [--reps N] [--pairs N] [--max-pair-distance M]
-//                     [--swaps N] [--detour-nodes N] [--no-breakdown] [--smoke] [[--levels] LEVEL.obj...]:
+//                     [--swaps N] [--detour-nodes N] [--queue-batch N] [--no-breakdown] [--no-links] [--smoke]
+//                     [[--levels] LEVEL.obj...]:
 // NavLink's tiled navmesh against Detour's multi-tile dtNavMesh, built from the same level with the
 // same Recast settings (nl_recast_settings with tile_size, default agent type), measured in one run.
 //
@@ -37,20 +38,54 @@
 //      dtNavMesh::removeTile + addTile of its prebuilt data (each 5 times, median); and
 //      nl_navmesh_build_tiles of a box in the tile, against building its Detour data again (Recast) and
 //      swapping it in; and NavLink's remove + add against that Detour rebuild.
+//   5. the tiled navmesh with its links, each size in a child process of its own (the bench run again
+//      with --child-world K or --child-level LEVEL, before 1 to 4, so that nothing else is resident):
+//      a world with every worker (NL_WORKERS_AUTO) holds the level; nl_navmesh_build, then
+//      nl_navmesh_generate_links (default settings: each tile's links over the tiles within reach,
+//      docs/tiles.md); their times, the link count, and the process's RSS (/proc/self/statm, after
+//      malloc_trim; also without) before the build, after it and after the links, as bytes per tile, with
+//      the peak (getrusage's maxrss) and nl_navmesh_save_tile's bytes per tile (every tile, or up to
+//      1,024 spread over them, fewer when one takes long: about 15 s in all). For the generated world, worlds of a quarter and a half of its tiles (whole
+//      tiles a side) first, so that the bytes per tile can be seen to stay flat; and how many tiles 24 GB
+//      holds at the whole world's peak per tile.
+//   6. in the child of the whole level, its links generated, with path workers (NL_WORKERS_AUTO): the
+//      tiles of 4, each taken out and put back with its links, first with the path queue idle, then busy:
+//      --queue-batch (64) requests submitted from the main thread before the tile's changes and kept in
+//      flight (each request's callback, on a path worker, counts its outcome, releases it and submits
+//      the next; jumps and drops allowed, ends drawn within 4 tiles of the tile). Timed (medians over
+//      the tiles): nl_navmesh_save_tile; nl_navmesh_remove_tile + nl_navmesh_add_tile_bytes of those
+//      bytes (its links come with it); nl_navmesh_remove_tile + nl_navmesh_build_tiles of the tile (its
+//      links and those of the tiles within reach generated again); the requests finished during each,
+//      every outcome (an end off the navmesh is expected while its tile is out; no path, cancelled,
+//      failed or a refused request are not), and the links and polygons before and after (the same);
+//      as ratios to 4's Detour removeTile + addTile and Recast rebuild of the same tiles. Also the queue's
+//      pace on a navmesh that does not change (300 ms, before the first tile) against during the changes,
+//      and, with the queue idle, how long the first nl_path_request after a change takes (it builds the
+//      new navmesh's path graph on the submitting thread) and the next, and how long the busy batch,
+//      submitted on the navmesh just changed, waits for its first request done.
+//      --no-links leaves 5 and 6 out.
 // --smoke: a world of 0.1 km, 1 repetition, 200 pairs, 2 swaps: what ctest runs.
 #include <DetourCommon.h>
 #include <DetourNavMesh.h>
 #include <DetourNavMeshQuery.h>
 
+#include <malloc.h>
+#include <sys/resource.h>
+#include <unistd.h>
+
 #include <algorithm>
+#include <atomic>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <map>
 #include <memory>
 #include <random>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "build_progress.h"
@@ -81,8 +116,22 @@ struct Options {
     int swaps = 8;
     int detour_nodes = 2048;
     bool breakdown = true;
+    bool links_sections = true;  // 5 and 6, in child processes
+    int queue_batch = 64;        // 6: path requests kept in flight while tiles change
     std::vector<std::string> objs;
+    // A child process (5 and 6 of one level): --child-world K or --child-level PATH, --child-streaming.
+    double child_world_km = 0.0;
+    std::string child_level;
+    bool child_streaming = false;
 };
+
+// Figures by name, as a child process prints them on one line ("NLCHILD name=value ...").
+using Figures = std::map<std::string, double>;
+
+double figure(const Figures& f, const char* name) {
+    const auto it = f.find(name);
+    return it == f.end() ? NAN : it->second;
+}
 
 struct LevelInput {
     std::string name;
@@ -162,10 +211,10 @@ struct WorldDeleter {
 using WorldPtr = std::unique_ptr<nl_world, WorldDeleter>;
 
 // A world holding the level as one static mesh, its scene committed (one ray cast) before any timing.
-WorldPtr make_nl_world(const LevelInput& level, int workers) {
+WorldPtr make_nl_world(const LevelInput& level, int workers, int path_workers = 0) {
     nl_world_def def = nl_default_world_def();
     def.worker_count = workers;
-    def.path_worker_count = 0;
+    def.path_worker_count = path_workers;
     nl_world* created = nullptr;
     if (NL_FAILED(nl_world_create(&def, &created))) return nullptr;
     WorldPtr world(created);
@@ -384,6 +433,10 @@ struct Row {
     // 4. tiles in and out, medians in ms
     int swaps = 0;
     double nl_remove = NAN, nl_add = NAN, nl_swap = NAN, detour_swap = NAN, nl_rebuild = NAN, detour_rebuild = NAN;
+    // 5. the tiled navmesh with its links, a world per size (child processes), smallest first
+    std::vector<Figures> sizes;
+    // 6. tiles in and out with links while paths are queued (the child of the whole level)
+    Figures streaming;
 };
 
 bool measure(const LevelInput& input, const Options& options, Row& row) {
@@ -675,6 +728,402 @@ bool measure(const LevelInput& input, const Options& options, Row& row) {
     return true;
 }
 
+// 5 and 6 run in a child process per level and size (the bench run again with --child-world or
+// --child-level), so that its RSS and peak are the tiled navmesh's alone.
+
+// Resident bytes now (/proc/self/statm), after handing the allocator's free pages back (malloc_trim)
+// unless `raw`.
+double rss_bytes(bool raw = false) {
+    if (!raw) malloc_trim(0);
+    long pages = 0, resident = 0;
+    if (FILE* f = std::fopen("/proc/self/statm", "r")) {
+        if (std::fscanf(f, "%ld %ld", &pages, &resident) != 2) resident = 0;
+        std::fclose(f);
+    }
+    return double(resident) * double(sysconf(_SC_PAGESIZE));
+}
+
+double peak_rss_bytes() {
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    return double(usage.ru_maxrss) * 1024.0;  // kilobytes on Linux
+}
+
+uint32_t link_count(nl_world* world, nl_navmesh_id navmesh) {
+    uint32_t count = 0;
+    nl_navmesh_get_links(world, navmesh, nullptr, 0, &count);
+    return count;
+}
+
+// The tiles table 4 takes out and puts back: --swaps of them, drawn with seed 777.
+std::vector<nl_tile_coord> tiles_to_swap(nl_world* world, nl_navmesh_id navmesh, int swaps) {
+    uint32_t loaded = 0;
+    nl_navmesh_get_tiles(world, navmesh, nullptr, 0, &loaded);
+    std::vector<nl_tile_coord> coords(loaded);
+    nl_navmesh_get_tiles(world, navmesh, coords.data(), loaded, &loaded);
+    std::mt19937 rng(777);
+    std::shuffle(coords.begin(), coords.end(), rng);
+    coords.resize(std::min<size_t>(coords.size(), size_t(std::max(0, swaps))));
+    if (loaded < 2) coords.clear();  // a navmesh's last tile cannot be removed
+    return coords;
+}
+
+// Path requests kept in flight: the main thread submits a batch, and each request's callback (on a
+// path worker) counts its outcome, releases it and submits the next from the pool while `flowing`.
+struct Flow {
+    nl_world* world = nullptr;
+    std::vector<nl_path_request_def> pool;
+    std::atomic<uint64_t> next{0};
+    std::atomic<bool> flowing{false};
+    std::atomic<uint64_t> outcomes[NL_PATH_FAILED + 2]{};  // the last: any other value
+    std::atomic<uint64_t> refused{0};                      // nl_path_request failed
+};
+
+void submit_one(Flow& flow) {
+    const nl_path_request_def& def = flow.pool[flow.next.fetch_add(1) % flow.pool.size()];
+    nl_path_ticket ticket{};
+    if (NL_FAILED(nl_path_request(flow.world, &def, &ticket))) flow.refused.fetch_add(1);
+}
+
+void flow_finished(void* user, nl_path_ticket ticket, nl_path_outcome outcome) {
+    Flow& flow = *static_cast<Flow*>(user);
+    flow.outcomes[std::min<nl_path_outcome>(outcome, NL_PATH_FAILED + 1)].fetch_add(1);
+    nl_path_release(flow.world, ticket);
+    if (flow.flowing.load()) submit_one(flow);
+}
+
+nl_path_queue_stats queue_stats(nl_world* world) {
+    nl_path_queue_stats stats = nl_path_queue_stats_init();
+    nl_path_get_queue_stats(world, &stats);
+    return stats;
+}
+
+// Stops the flow and waits until every request's callback has returned.
+void drain(Flow& flow) {
+    flow.flowing.store(false);
+    for (;;) {
+        const nl_path_queue_stats stats = queue_stats(flow.world);
+        if (stats.finished == stats.submitted && stats.unreleased == 0) return;
+        std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    }
+}
+
+// 6: the tiles of table 4 out and in again with their links, idle and then with the path queue busy.
+bool stream_tiles(const std::string& name, const Options& options, nl_world* world, nl_navmesh_id navmesh,
+                  const nl_navmesh_build_def& build, Figures& f) {
+    nl_navmesh_info info = nl_navmesh_info_init();
+    nl_navmesh_get_info(world, navmesh, &info);
+    const std::vector<nl_tile_coord> coords = tiles_to_swap(world, navmesh, options.swaps);
+    f["s_tiles"] = double(coords.size());
+    f["path_workers"] = queue_stats(world).workers;
+    f["links_start"] = link_count(world, navmesh);
+    f["polygons_start"] = info.polygon_count;
+    if (coords.empty() || queue_stats(world).workers == 0) return true;
+
+    nl_agent_capabilities jumper = nl_default_agent_capabilities();
+    jumper.max_jump_distance = 4.0f, jumper.max_jump_height = 1.5f, jumper.max_drop_height = 5.0f;
+    Flow flow;
+    flow.world = world;
+    // Per mode (0 idle, 1 busy): each op's times over the tiles, and the requests finished meanwhile.
+    enum Op { kSave, kRemove, kAdd, kSwap, kRemoveAgain, kBuild, kRebuild, kOps };
+    static const char* const kOpNames[kOps] = {"save", "remove", "add", "swap", "rremove", "build", "rebuild"};
+    std::vector<double> ms[2][kOps], done[2][kOps];
+    std::vector<double> request_ms[2][2];  // the first and the next request after a change: submit, wait
+    std::vector<double> first_done_ms;     // the busy batch's first request done
+    std::vector<unsigned char> bytes;
+    for (size_t i = 0; i < coords.size(); ++i) {
+        const nl_tile_coord at = coords[i];
+        const float centre[3] = {info.tile_origin[0] + (float(at.x) + 0.5f) * info.tile_width, 0.0f,
+                                 info.tile_origin[1] + (float(at.z) + 0.5f) * info.tile_width};
+        // Requests between points within 4 tiles of it, drawn while it is loaded: those with an end on
+        // it find that end off the navmesh while it is out.
+        nl_random_points_def around = nl_default_random_points_def();
+        std::copy(centre, centre + 3, around.centre);
+        around.radius = 4.0f * info.tile_width;
+        around.seed = 1000 + i;
+        std::vector<nl_nav_point> points(512);
+        uint32_t found = 0;
+        if (NL_FAILED(
+                nl_navmesh_random_points(world, navmesh, &around, points.data(), uint32_t(points.size()), &found)) ||
+            found < 2) {
+            fail_nl(name, "nl_navmesh_random_points");
+            return false;
+        }
+        flow.pool.clear();
+        for (uint32_t k = 0; k + 1 < found; k += 2) {
+            nl_path_request_def def = nl_default_path_request_def();
+            def.navmesh = navmesh;
+            std::copy(points[k].point, points[k].point + 3, def.start);
+            std::copy(points[k + 1].point, points[k + 1].point + 3, def.goal);
+            def.capabilities = jumper;
+            def.callback = flow_finished;
+            def.user = &flow;
+            flow.pool.push_back(def);
+        }
+        if (i == 0) {
+            // The queue's pace on a navmesh that does not change: 100 ms to warm up (the body's
+            // reachability map), then requests finished over 300 ms.
+            flow.flowing.store(true);
+            for (int b = 0; b < options.queue_batch; ++b) submit_one(flow);
+            std::this_thread::sleep_for(std::chrono::milliseconds(100));
+            const uint64_t before = queue_stats(world).finished;
+            const double t0 = nl::samples::now_ms();
+            std::this_thread::sleep_for(std::chrono::milliseconds(300));
+            f["steady_per_s"] = double(queue_stats(world).finished - before) * 1000.0 / (nl::samples::now_ms() - t0);
+            drain(flow);
+        }
+        const float box_min[3] = {centre[0] - 0.25f, info.bounds_min[1], centre[2] - 0.25f};
+        const float box_max[3] = {centre[0] + 0.25f, info.bounds_max[1], centre[2] + 0.25f};
+        for (int busy = 0; busy < 2; ++busy) {
+            std::fprintf(stderr, "%s: tile (%d, %d) out and in with its links, %s\n", name.c_str(), at.x, at.z,
+                         busy ? "paths queued" : "idle");
+            if (busy) {
+                flow.flowing.store(true);
+                // The navmesh changed just before (the tile built again, idle): how long until the
+                // first of the batch is done.
+                const uint64_t before = queue_stats(world).finished;
+                for (int b = 0; b < options.queue_batch; ++b) submit_one(flow);
+                const double t0 = nl::samples::now_ms();
+                while (queue_stats(world).finished == before && nl::samples::now_ms() - t0 < 600000.0)
+                    std::this_thread::sleep_for(std::chrono::microseconds(50));
+                first_done_ms.push_back(nl::samples::now_ms() - t0);
+            }
+            double op_ms[kOps] = {}, op_done[kOps] = {};
+            auto timed = [&](Op op, auto&& call) {
+                const uint64_t before = queue_stats(world).finished;
+                const double t0 = nl::samples::now_ms();
+                const nl_status status = call();
+                op_ms[op] = nl::samples::now_ms() - t0;
+                op_done[op] = double(queue_stats(world).finished - before);
+                return NL_SUCCEEDED(status);
+            };
+            size_t size = 0;
+            const bool ok =
+                timed(kSave,
+                      [&] {
+                          nl_status status = nl_navmesh_save_tile(world, navmesh, at, nullptr, 0, &size);
+                          if (NL_FAILED(status)) return status;
+                          bytes.resize(size);
+                          return nl_navmesh_save_tile(world, navmesh, at, bytes.data(), bytes.size(), &size);
+                      }) &&
+                timed(kRemove, [&] { return nl_navmesh_remove_tile(world, navmesh, at); }) &&
+                timed(kAdd, [&] { return nl_navmesh_add_tile_bytes(world, navmesh, bytes.data(), size); }) &&
+                timed(kRemoveAgain, [&] { return nl_navmesh_remove_tile(world, navmesh, at); }) &&
+                timed(kBuild, [&] { return nl_navmesh_build_tiles(world, navmesh, &build, box_min, box_max); });
+            if (!busy && ok) {
+                // The tile is back (built again): a request now builds the path graph of the new navmesh
+                // on the thread that submits it; the next one finds it.
+                nl_path_request_def def = flow.pool[0];
+                def.callback = nullptr, def.user = nullptr;
+                for (int k = 0; k < 2; ++k) {
+                    nl_path_ticket ticket{};
+                    nl_path_outcome outcome = NL_PATH_PENDING;
+                    const double t0 = nl::samples::now_ms();
+                    if (NL_FAILED(nl_path_request(world, &def, &ticket))) {
+                        fail_nl(name, "nl_path_request");
+                        return false;
+                    }
+                    const double t1 = nl::samples::now_ms();
+                    nl_path_wait(world, ticket, NL_PATH_WAIT_FOREVER, &outcome);
+                    request_ms[k][0].push_back(t1 - t0), request_ms[k][1].push_back(nl::samples::now_ms() - t1);
+                    nl_path_release(world, ticket);
+                }
+            }
+            if (busy) drain(flow);
+            std::fprintf(stderr, "%s: tile (%d, %d) %s: RSS %.1f MB, peak %.1f MB\n", name.c_str(), at.x, at.z,
+                         busy ? "paths queued" : "idle", rss_bytes() / (1024.0 * 1024.0),
+                         peak_rss_bytes() / (1024.0 * 1024.0));
+            if (!ok) {
+                fail_nl(name, "a tile out and in with its links");
+                return false;
+            }
+            op_ms[kSwap] = op_ms[kRemove] + op_ms[kAdd], op_done[kSwap] = op_done[kRemove] + op_done[kAdd];
+            op_ms[kRebuild] = op_ms[kRemoveAgain] + op_ms[kBuild];
+            op_done[kRebuild] = op_done[kRemoveAgain] + op_done[kBuild];
+            for (int op = 0; op < kOps; ++op) ms[busy][op].push_back(op_ms[op]), done[busy][op].push_back(op_done[op]);
+        }
+    }
+    for (int busy = 0; busy < 2; ++busy)
+        for (int op = 0; op < kOps; ++op) {
+            const std::string key = std::string(busy ? "busy_" : "idle_") + kOpNames[op];
+            f[key + "_ms"] = median(ms[busy][op]);
+            if (busy) f[key + "_done"] = median(done[busy][op]);
+        }
+    double during = 0.0, during_ms = 0.0;  // requests finished during the busy ops, all tiles
+    for (int op : {kSave, kSwap, kRebuild})
+        for (size_t k = 0; k < coords.size(); ++k) during += done[1][op][k], during_ms += ms[1][op][k];
+    f["paths_during"] = during;
+    f["first_submit_ms"] = median(request_ms[0][0]), f["first_wait_ms"] = median(request_ms[0][1]);
+    f["next_submit_ms"] = median(request_ms[1][0]), f["next_wait_ms"] = median(request_ms[1][1]);
+    f["first_done_ms"] = median(first_done_ms);
+    f["first_done_max_ms"] = *std::max_element(first_done_ms.begin(), first_done_ms.end());
+    f["during_per_s"] = during * 1000.0 / during_ms;
+    const nl_path_queue_stats stats = queue_stats(world);
+    f["paths_submitted"] = double(stats.submitted);
+    f["paths_finished"] = double(stats.finished);
+    static const char* const kOutcomes[] = {"pending",  "complete",  "partial", "no_path", "start_off",
+                                            "goal_off", "cancelled", "failed",  "other"};
+    for (uint32_t k = 0; k <= NL_PATH_FAILED + 1; ++k) f[std::string("out_") + kOutcomes[k]] = double(flow.outcomes[k]);
+    f["out_refused"] = double(flow.refused);
+    info = nl_navmesh_info_init();
+    nl_navmesh_get_info(world, navmesh, &info);
+    f["links_end"] = link_count(world, navmesh);
+    f["polygons_end"] = info.polygon_count;
+    return true;
+}
+
+// A child process: one level (a generated world of --child-world km, or --child-level's OBJ) built in
+// tiles on a world with every worker, its links generated; prints its figures on one line.
+int run_child(const Options& options) {
+    const LevelInput input =
+        options.child_level.empty() ? make_world(options.child_world_km) : read_level(options.child_level);
+    Figures f;
+    f["triangles"] = input.triangle_count();
+    const WorldPtr world_ptr = make_nl_world(input, NL_WORKERS_AUTO, options.child_streaming ? NL_WORKERS_AUTO : 0);
+    nl_world* world = world_ptr.get();
+    if (!world) {
+        fail_nl(input.name, "world");
+        return 1;
+    }
+    f["workers"] = nl_world_get_worker_count(world);
+    f["rss_before"] = rss_bytes();
+
+    nl_recast_settings settings = nl_default_recast_settings();
+    settings.tile_size = options.tile_size;
+    nl_navmesh_build_def build = nl_default_navmesh_build_def();
+    build.settings = &settings;
+    nl_navmesh_id navmesh{};
+    std::fprintf(stderr, "%s (child): build\n", input.name.c_str());
+    double t0 = nl::samples::now_ms();
+    if (NL_FAILED(nl_navmesh_build(world, &build, &navmesh))) {
+        fail_nl(input.name, "nl_navmesh_build");
+        return 1;
+    }
+    f["build_s"] = (nl::samples::now_ms() - t0) / 1000.0;
+    nl_navmesh_info info = nl_navmesh_info_init();
+    nl_navmesh_get_info(world, navmesh, &info);
+    f["tiles"] = info.tile_count;
+    f["polygons"] = info.polygon_count;
+    f["rss_navmesh_raw"] = rss_bytes(true);
+    f["rss_navmesh"] = rss_bytes();
+
+    std::fprintf(stderr, "%s (child): links\n", input.name.c_str());
+    nl_link_generation_report report = nl_link_generation_report_init();
+    t0 = nl::samples::now_ms();
+    if (NL_FAILED(nl_navmesh_generate_links(world, navmesh, nullptr, nullptr, nullptr, &report))) {
+        fail_nl(input.name, "nl_navmesh_generate_links");
+        return 1;
+    }
+    f["links_s"] = (nl::samples::now_ms() - t0) / 1000.0;
+    f["links_generation_ms"] = report.milliseconds_total;
+    f["links"] = link_count(world, navmesh);
+    f["rss_links_raw"] = rss_bytes(true);
+    f["rss_links"] = rss_bytes();
+    f["peak"] = peak_rss_bytes();
+
+    // Baked: every tile's file, or up to 1,024 of them spread over the row order, fewer when saving one
+    // takes long (about 15 s in all, 16 at least: the first, timed alone, says).
+    uint32_t loaded = 0;
+    nl_navmesh_get_tiles(world, navmesh, nullptr, 0, &loaded);
+    std::vector<nl_tile_coord> coords(loaded);
+    nl_navmesh_get_tiles(world, navmesh, coords.data(), loaded, &loaded);
+    std::vector<unsigned char> bytes;
+    auto save = [&](nl_tile_coord at, size_t& size) {
+        if (NL_FAILED(nl_navmesh_save_tile(world, navmesh, at, nullptr, 0, &size))) return false;
+        bytes.resize(size);
+        return NL_SUCCEEDED(nl_navmesh_save_tile(world, navmesh, at, bytes.data(), bytes.size(), &size));
+    };
+    size_t size = 0;
+    t0 = nl::samples::now_ms();
+    if (coords.empty() || !save(coords[coords.size() / 2], size)) {
+        fail_nl(input.name, "nl_navmesh_save_tile");
+        return 1;
+    }
+    const double one_ms = std::max(1e-3, nl::samples::now_ms() - t0);
+    const size_t count = std::min(coords.size(), std::clamp<size_t>(size_t(15000.0 / one_ms), 16, 1024));
+    const size_t stride = std::max<size_t>(1, coords.size() / count);
+    double baked = 0.0, sampled = 0.0;
+    t0 = nl::samples::now_ms();
+    for (size_t i = 0; i < coords.size(); i += stride) {
+        if (!save(coords[i], size)) {
+            fail_nl(input.name, "nl_navmesh_save_tile");
+            return 1;
+        }
+        baked += double(size), ++sampled;
+    }
+    f["save_tile_ms"] = sampled ? (nl::samples::now_ms() - t0) / sampled : NAN;
+    f["baked"] = sampled ? baked / sampled : NAN;
+    f["baked_sampled"] = sampled;
+    f["peak_baked"] = peak_rss_bytes();
+    f["rss_baked"] = rss_bytes();
+
+    if (options.child_streaming && !stream_tiles(input.name, options, world, navmesh, build, f)) return 1;
+    f["peak_end"] = peak_rss_bytes();
+    f["rss_end"] = rss_bytes();
+    std::printf("NLCHILD");
+    for (const auto& [key, value] : f) std::printf(" %s=%.17g", key.c_str(), value);
+    std::printf("\n");
+    std::fflush(stdout);
+    return 0;
+}
+
+std::string shell_quoted(const std::string& s) {
+    std::string q = "'";
+    for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return q + "'";
+}
+
+// Runs the bench again as a child process with `args`, and reads the figures it prints.
+bool run_child_process(const std::string& args, Figures& out) {
+    const std::string command = shell_quoted(std::filesystem::read_symlink("/proc/self/exe").string()) + " " + args;
+    FILE* pipe = popen(command.c_str(), "r");
+    if (!pipe) return false;
+    std::string line;
+    bool found = false;
+    for (int c; (c = std::fgetc(pipe)) != EOF;) {
+        if (c != '\n') {
+            line += char(c);
+            continue;
+        }
+        if (line.rfind("NLCHILD ", 0) == 0) {
+            found = true;
+            size_t at = 8;
+            while (at < line.size()) {
+                size_t end = line.find(' ', at);
+                if (end == std::string::npos) end = line.size();
+                const std::string token = line.substr(at, end - at);
+                const size_t eq = token.find('=');
+                if (eq != std::string::npos) out[token.substr(0, eq)] = std::strtod(token.c_str() + eq + 1, nullptr);
+                at = end + 1;
+            }
+        }
+        line.clear();
+    }
+    const int status = pclose(pipe);
+    if (!found || status != 0) std::fprintf(stderr, "navlink-bench-tiles: child failed: %s\n", command.c_str());
+    return found && status == 0;
+}
+
+// The children of one level: `sizes` (each its km, NAN for an OBJ level, and its arguments; smallest
+// first; the last is the whole level and also runs 6).
+bool run_children(const std::vector<std::pair<double, std::string>>& sizes, const Options& options, Row& row) {
+    bool ok = true;
+    const std::string common = " --tile-size " + std::to_string(options.tile_size) + " --swaps " +
+                               std::to_string(options.swaps) + " --queue-batch " + std::to_string(options.queue_batch);
+    for (size_t i = 0; i < sizes.size(); ++i) {
+        Figures f;
+        const bool last = i + 1 == sizes.size();
+        if (!run_child_process(sizes[i].second + common + (last ? " --child-streaming" : ""), f)) {
+            ok = false;
+            continue;
+        }
+        f["km"] = sizes[i].first;
+        row.sizes.push_back(f);
+        if (last) row.streaming = f;
+    }
+    return ok;
+}
+
 void print_tables(const std::vector<Row>& rows, const Options& options) {
     std::printf("\nLevels (tile_size %u cells of 0.3 m: tiles of %.1f m)\n", options.tile_size,
                 options.tile_size * 0.3);
@@ -729,13 +1178,120 @@ void print_tables(const std::vector<Row>& rows, const Options& options) {
         std::printf("%-16s %5d %9.3f %9.3f %9.3f %9.4f %9.0f %10.3f %10.3f %9.2f %14.2f\n", r.name.c_str(), r.swaps,
                     r.nl_remove, r.nl_add, r.nl_swap, r.detour_swap, r.nl_swap / r.detour_swap, r.nl_rebuild,
                     r.detour_rebuild, r.nl_rebuild / r.detour_rebuild, r.nl_swap / r.detour_rebuild);
+
+    if (!options.links_sections) return;
+    const double mb = 1.0 / (1024.0 * 1024.0);
+    std::printf(
+        "\n5. The tiled navmesh with its links, a world per size (each in a child process: nl_navmesh_build on all\n"
+        "   workers, then nl_navmesh_generate_links, default settings). RSS (/proc/self/statm, after malloc_trim)\n"
+        "   before the build (the level held), after it, after the links; bytes per tile from their differences (raw:\n"
+        "   without malloc_trim); marg: per tile more than the size above; peak: getrusage's maxrss less RSS before;\n"
+        "   baked: nl_navmesh_save_tile's bytes\n");
+    std::printf("%-16s %6s %6s %9s %8s %8s %8s %9s %9s %9s %9s %8s %8s %8s %8s %8s %8s %8s\n", "level", "km", "tiles",
+                "polygons", "links", "build_s", "links_s", "before_MB", "navmsh_MB", "links_MB", "peak_MB", "nav_B/t",
+                "link_B/t", "total/t", "marg/t", "raw/t", "peak/t", "baked/t");
+    for (const Row& r : rows)
+        for (size_t k = 0; k < r.sizes.size(); ++k) {
+            const Figures& f = r.sizes[k];
+            const double tiles = std::max(1.0, figure(f, "tiles")), before = figure(f, "rss_before");
+            char km[16] = "-";  // an OBJ level's
+            if (std::isfinite(figure(f, "km"))) std::snprintf(km, sizeof km, "%.3f", figure(f, "km"));
+            // Per tile more than the size before: what the bytes per tile tend to, past fixed costs.
+            double marginal = NAN;
+            if (k > 0) {
+                const Figures& e = r.sizes[k - 1];
+                marginal = ((figure(f, "rss_links") - before) - (figure(e, "rss_links") - figure(e, "rss_before"))) /
+                           (figure(f, "tiles") - figure(e, "tiles"));
+            }
+            std::printf(
+                "%-16s %6s %6.0f %9.0f %8.0f %8.2f %8.2f %9.1f %9.1f %9.1f %9.1f %8.0f %8.0f %8.0f %8.0f %8.0f %8.0f "
+                "%8.0f\n",
+                r.name.c_str(), km, figure(f, "tiles"), figure(f, "polygons"), figure(f, "links"), figure(f, "build_s"),
+                figure(f, "links_s"), before * mb, figure(f, "rss_navmesh") * mb, figure(f, "rss_links") * mb,
+                figure(f, "peak") * mb, (figure(f, "rss_navmesh") - before) / tiles,
+                (figure(f, "rss_links") - figure(f, "rss_navmesh")) / tiles, (figure(f, "rss_links") - before) / tiles,
+                marginal, (figure(f, "rss_links_raw") - before) / tiles, (figure(f, "peak") - before) / tiles,
+                figure(f, "baked"));
+        }
+    for (const Row& r : rows) {
+        if (r.sizes.empty()) continue;
+        const Figures& f = r.sizes.back();
+        const double per_tile = (figure(f, "peak") - figure(f, "rss_before")) / std::max(1.0, figure(f, "tiles"));
+        const double tiles = 24e9 / per_tile, width = options.tile_size * nl_default_recast_settings().cell_size;
+        std::printf(
+            "  %s: at its peak per tile, 24 GB holds %.0f tiles: a square of %.1f km; links: %.2f s, of which the\n"
+            "    generation's report counts %.2f s; %.0f tiles' files sampled, %.2f ms each to save; peak %.1f MB\n"
+            "    after saving them; after 6: peak %.1f MB, RSS %.1f MB (%.1f MB before 6)\n",
+            r.name.c_str(), tiles, std::sqrt(tiles) * width / 1000.0, figure(f, "links_s"),
+            figure(f, "links_generation_ms") / 1000.0, figure(f, "baked_sampled"), figure(f, "save_tile_ms"),
+            figure(f, "peak_baked") * mb, figure(f, "peak_end") * mb, figure(f, "rss_end") * mb,
+            figure(f, "rss_baked") * mb);
+    }
+
+    std::printf(
+        "\n6. Tiles in and out with their links while paths are queued (the whole level, its links generated; the\n"
+        "   tiles of 4, ms, medians over them): swap = nl_navmesh_remove_tile + nl_navmesh_add_tile_bytes of the\n"
+        "   tile's nl_navmesh_save_tile bytes (save: writing them); rebuild = nl_navmesh_remove_tile (rrem) +\n"
+        "   nl_navmesh_build_tiles of it (its links and those of the tiles within reach generated again); busy: %d\n"
+        "   requests kept in flight on the path workers (ends within 4 tiles of the tile; each finished one "
+        "replaced);\n"
+        "   idle: none; done: requests finished during it (median); dt: 4's removeTile + addTile, and its Recast "
+        "rebuild\n",
+        options.queue_batch);
+    std::printf("%-16s %5s %7s %8s %8s %8s %8s %8s %9s %6s %8s %8s %8s %8s %8s %8s %8s %6s\n", "level", "tiles", "save",
+                "remove", "add", "swap", "idl_swap", "dt_swap", "swap/dt", "done", "rrem", "build", "rebuild",
+                "idl_reb", "dt_reb", "reb/dt", "swp/dtrb", "done");
+    for (const Row& r : rows) {
+        const Figures& f = r.streaming;
+        if (f.empty() || !(figure(f, "s_tiles") > 0)) continue;
+        std::printf(
+            "%-16s %5.0f %7.3f %8.3f %8.3f %8.3f %8.3f %8.4f %9.0f %6.0f %8.3f %8.3f %8.3f %8.3f %8.3f %8.2f %8.2f "
+            "%6.0f\n",
+            r.name.c_str(), figure(f, "s_tiles"), figure(f, "busy_save_ms"), figure(f, "busy_remove_ms"),
+            figure(f, "busy_add_ms"), figure(f, "busy_swap_ms"), figure(f, "idle_swap_ms"), r.detour_swap,
+            figure(f, "busy_swap_ms") / r.detour_swap, figure(f, "busy_swap_done"), figure(f, "busy_rremove_ms"),
+            figure(f, "busy_build_ms"), figure(f, "busy_rebuild_ms"), figure(f, "idle_rebuild_ms"), r.detour_rebuild,
+            figure(f, "busy_rebuild_ms") / r.detour_rebuild, figure(f, "busy_swap_ms") / r.detour_rebuild,
+            figure(f, "busy_rebuild_done"));
+    }
+    for (const Row& r : rows) {
+        const Figures& f = r.streaming;
+        if (f.empty() || !(figure(f, "s_tiles") > 0)) continue;
+        const double unexpected = figure(f, "out_no_path") + figure(f, "out_cancelled") + figure(f, "out_failed") +
+                                  figure(f, "out_pending") + figure(f, "out_other") + figure(f, "out_refused");
+        std::printf(
+            "  %s: %.0f path workers; requests finished per second: %.0f while the navmesh stays, %.0f during the busy "
+            "changes;\n    requests submitted %.0f, finished %.0f (%.0f during the busy changes): complete "
+            "%.0f, partial %.0f,\n    start off the navmesh %.0f, goal off %.0f (an end on the tile while it was "
+            "out);\n"
+            "    unexpected: %.0f (no path %.0f, cancelled %.0f, failed %.0f, refused %.0f)%s; links %.0f before, %.0f "
+            "after; polygons %.0f before, %.0f after%s\n",
+            r.name.c_str(), figure(f, "path_workers"), figure(f, "steady_per_s"), figure(f, "during_per_s"),
+            figure(f, "paths_submitted"), figure(f, "paths_finished"), figure(f, "paths_during"),
+            figure(f, "out_complete"), figure(f, "out_partial"), figure(f, "out_start_off"), figure(f, "out_goal_off"),
+            unexpected, figure(f, "out_no_path"), figure(f, "out_cancelled"), figure(f, "out_failed"),
+            figure(f, "out_refused"), unexpected > 0 ? " (!)" : "", figure(f, "links_start"), figure(f, "links_end"),
+            figure(f, "polygons_start"), figure(f, "polygons_end"),
+            figure(f, "links_start") != figure(f, "links_end") ||
+                    figure(f, "polygons_start") != figure(f, "polygons_end")
+                ? " (!)"
+                : "");
+        std::printf(
+            "    a request on the navmesh just changed (idle queue): nl_path_request %.3f ms (it builds the path "
+            "graph),\n    %.3f ms more until done; the next request: %.3f ms, %.3f ms more; the busy batch, submitted "
+            "on the\n    navmesh just changed: its first request done after %.3f ms (median; at most %.3f)\n",
+            figure(f, "first_submit_ms"), figure(f, "first_wait_ms"), figure(f, "next_submit_ms"),
+            figure(f, "next_wait_ms"), figure(f, "first_done_ms"), figure(f, "first_done_max_ms"));
+    }
 }
 
 int usage() {
-    std::fprintf(stderr,
-                 "usage: navlink-bench-tiles [--world-km K] [--tile-size N] [--reps N] [--pairs N] "
-                 "[--max-pair-distance M] [--swaps N] [--detour-nodes N] [--no-breakdown] [--smoke] "
-                 "[[--levels] LEVEL.obj...]\n");
+    std::fprintf(
+        stderr,
+        "usage: navlink-bench-tiles [--world-km K] [--tile-size N] [--reps N] [--pairs N] "
+        "[--max-pair-distance M] [--swaps N] [--detour-nodes N] [--queue-batch N] [--no-breakdown] [--no-links] "
+        "[--smoke] "
+        "[[--levels] LEVEL.obj...]\n");
     return 2;
 }
 
@@ -760,8 +1316,18 @@ int main(int argc, char** argv) {
             options.swaps = std::atoi(argv[++i]);
         } else if (arg == "--detour-nodes" && has_value) {
             options.detour_nodes = std::clamp(std::atoi(argv[++i]), 1, 65535);
+        } else if (arg == "--queue-batch" && has_value) {
+            options.queue_batch = std::max(1, std::atoi(argv[++i]));
         } else if (arg == "--no-breakdown") {
             options.breakdown = false;
+        } else if (arg == "--no-links") {
+            options.links_sections = false;
+        } else if (arg == "--child-world" && has_value) {
+            options.child_world_km = std::atof(argv[++i]);
+        } else if (arg == "--child-level" && has_value) {
+            options.child_level = argv[++i];
+        } else if (arg == "--child-streaming") {
+            options.child_streaming = true;
         } else if (arg == "--smoke") {
             options.world_km = 0.1, options.reps = 1, options.pairs = 200, options.swaps = 2;
         } else if (arg == "--levels") {
@@ -772,12 +1338,23 @@ int main(int argc, char** argv) {
             options.objs.push_back(arg);
         }
     }
+    if (options.child_world_km > 0.0 || !options.child_level.empty()) {
+        try {
+            return run_child(options);
+        } catch (const std::exception& e) {
+            std::fprintf(stderr, "navlink-bench-tiles (child): %s\n", e.what());
+            return 1;
+        }
+    }
     if (options.world_km <= 0.0 && options.objs.empty()) return usage();
 
     std::vector<Row> rows;
     bool ok = true;
-    auto run = [&](const LevelInput& level) {
+    // 5 and 6 first, in child processes (while this one holds no level), then 1 to 4 here.
+    auto run = [&](const std::vector<std::pair<double, std::string>>& children, auto make_level) {
         Row row;
+        if (options.links_sections) ok = run_children(children, options, row) && ok;
+        const LevelInput level = make_level();
         try {
             ok = measure(level, options, row) && ok;
             rows.push_back(row);
@@ -786,10 +1363,26 @@ int main(int argc, char** argv) {
             ok = false;
         }
     };
-    if (options.world_km > 0.0) run(make_world(options.world_km));
+    if (options.world_km > 0.0) {
+        // Worlds of a quarter and a half of the tiles (whole tiles a side), then the world itself.
+        const double width = options.tile_size * nl_default_recast_settings().cell_size;
+        const int side = int(std::ceil(options.world_km * 1000.0 / width));
+        std::vector<std::pair<double, std::string>> children;
+        for (double fraction : {0.5, std::sqrt(0.5)}) {
+            const int n = std::max(1, int(std::lround(side * fraction)));
+            const double km = (n * width - 0.5) / 1000.0;  // n tiles a side, the last a little narrower
+            if (n < side && (children.empty() || km > children.back().first))
+                children.emplace_back(km, "--child-world " + std::to_string(km));  // 6 decimals: exact
+        }
+        char whole[64];
+        std::snprintf(whole, sizeof whole, "--child-world %.17g", options.world_km);
+        children.emplace_back(options.world_km, whole);
+        run(children, [&] { return make_world(options.world_km); });
+    }
     for (const std::string& path : options.objs) {
         try {
-            run(read_level(path));
+            const std::string child = "--child-level " + shell_quoted(path);
+            run({{NAN, child}}, [&] { return read_level(path); });
         } catch (const std::exception& e) {
             std::fprintf(stderr, "navlink-bench-tiles: %s: %s\n", path.c_str(), e.what());
             ok = false;
