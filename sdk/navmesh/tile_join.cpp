@@ -79,6 +79,9 @@ NavMeshInput join_tiles(const std::vector<const NavMeshInput*>& given) {
         return std::make_tuple(given[a]->tiles.tiles[0], a) < std::make_tuple(given[b]->tiles.tiles[0], b);
     });
     const NavMeshInput& first = *given[order[0]];
+    // Its climb decides which border corners join: a NaN one (a damaged file's) would join none, and
+    // build_navmesh refuses it after the join anyway.
+    naming_fields("agent_type.", [&] { validate_agent(first.agent_type); });
     NavMeshInput out;
     out.tiles.grid = first.tiles.grid;
     out.agent_type = first.agent_type;
@@ -144,7 +147,7 @@ NavMeshInput join_tiles(const std::vector<const NavMeshInput*>& given) {
         size_t j = i;
         while (j < border.size() && border[j].x == border[i].x && border[j].z == border[i].z) ++j;
         for (size_t c = i; c < j;) {
-            size_t d = c;
+            size_t d = c + 1;  // the lowest is in its own cluster, whatever the heights compare as
             uint32_t keep = border[c].vertex;
             while (d < j && border[d].y - border[c].y <= climb) {
                 keep = std::min(keep, border[d].vertex);
