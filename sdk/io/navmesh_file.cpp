@@ -476,9 +476,7 @@ std::vector<uint8_t> write_file(const NavMeshInput& input, const std::vector<Lin
 
 std::vector<uint8_t> write_navmesh_file(const NavMesh& navmesh, const std::vector<Link>& links,
                                         const NavMeshProvenance& made_for, bool rides_carrier) {
-    NavMeshInput input = input_of(navmesh);
-    input.agent_type = navmesh.agent();
-    return write_file(input, links, made_for, rides_carrier, nullptr);
+    return write_file(input_of(navmesh), links, made_for, rides_carrier, nullptr);
 }
 
 std::vector<uint8_t> write_tile_file(const NavMeshInput& tile, const std::vector<Link>& links,

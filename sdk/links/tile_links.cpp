@@ -4,13 +4,12 @@
 #include <cmath>
 #include <tuple>
 
+#include "links/generation_stage.h"
 #include "links/link_generation.h"
 #include "navmesh/navmesh_builder.h"
 
 namespace nl {
 namespace {
-
-constexpr float kDegrees = 3.14159265358979f / 180.0f;
 
 // A jump is found from whichever of its ends the generation sampled first, which differs between two
 // tiles' generations: it is turned to start at its lower end in (x, z, y) order, so that one tile, and
@@ -39,7 +38,7 @@ float tile_link_reach(const LinkSettings& s) {
     // along the permissive forward angle) + walk_distance. Links within merge_distance of each other
     // are one, so that much more.
     const float pair_reach = 2.0f * s.max_jump_gap + 2.0f * s.falloff_distance + s.max_jump_up;
-    const float rim = s.falloff_distance / std::max(std::cos(s.permissive_forward_angle * kDegrees), 1e-3f);
+    const float rim = s.falloff_distance / std::max(std::cos(s.permissive_forward_angle * generation::kDegrees), 1e-3f);
     const float walk = s.walk_factor * (s.max_jump_gap + 2.0f * rim) + s.walk_distance;
     return std::max(pair_reach, walk) + s.merge_distance;
 }
