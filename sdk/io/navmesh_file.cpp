@@ -396,9 +396,16 @@ void read_tile(ByteReader& in, NavMeshFile& out) {
     const uint64_t count = in.varint("the link count");
     if (count != out.links.size())
         fail(ErrorCode::Parse, in.context(), ": tiles for ", count, " links, the LINK section has ", out.links.size());
-    for (Link& l : out.links) {
+    const TileCoord at = out.navmesh.tiles.tiles.front();
+    for (size_t i = 0; i < out.links.size(); ++i) {
+        Link& l = out.links[i];
         l.start_tile = read_tile_coord(in, "a link's start tile");
         l.end_tile = read_tile_coord(in, "a link's end tile");
+        // A tile's file holds the links its tile owns (tile_links.h): one owned by another tile would
+        // load with it and be lost when the tile is saved again.
+        if (*l.start_tile != at)
+            fail(ErrorCode::Parse, in.context(), ": link ", i, " starts on tile (", l.start_tile->x, ", ",
+                 l.start_tile->z, "), not on the file's tile (", at.x, ", ", at.z, ")");
     }
     out.is_tile = true;
 }

@@ -142,6 +142,17 @@ TEST_CASE("a file that is not a good tile of the navmesh is refused and changes 
     std::vector<uint8_t> flipped = file;
     flipped[flipped.size() / 2] ^= 0x10;
     CHECK_THROWS_AS(nl::read_navmesh_file(flipped.data(), flipped.size()), nl::Error);
+    // A link owned by another tile (tile_links.h): it would load with this tile and be lost saving it.
+    {
+        nl::NavMeshRegistry::SavedTile saved;
+        for (const nl::TileCoord& at : b.tiles())
+            if (saved = b.world->navmeshes().saved_tile(b.navmesh, at); !saved.links.empty()) break;
+        REQUIRE(!saved.links.empty());
+        const nl::TileCoord owner = *saved.links.front().start_tile;
+        saved.links.front().start_tile = nl::TileCoord{owner.x + 1, owner.z};
+        const std::vector<uint8_t> stray = nl::write_tile_file(*saved.tile, saved.links, saved.made_for, 0);
+        CHECK_THROWS_WITH_AS(read(stray), doctest::Contains("link 0 starts on tile"), nl::Error);
+    }
     // A whole navmesh's file.
     const nl::NavMeshRegistry::Saved whole = b.world->navmeshes().saved(b.navmesh);
     const std::vector<uint8_t> solo = nl::write_navmesh_file(*whole.navmesh, {}, whole.made_for, false);
