@@ -607,6 +607,7 @@ HostRecordBuildSettingsFn = CFUNCTYPE(c_uint32, c_void_p, c_char_p, c_size_t)
 HostGetBuildTrianglesFn = CFUNCTYPE(c_uint32, c_void_p, POINTER(c_float), c_uint32, POINTER(c_uint32), POINTER(c_uint32), POINTER(c_uint8), c_uint32, POINTER(c_uint32))
 HostReportBuildProgressFn = CFUNCTYPE(c_uint32, c_void_p, c_float, c_char_p)
 HostRunTasksFn = CFUNCTYPE(c_uint32, c_void_p, c_uint32, PluginTaskFn, c_void_p)
+HostGetBuildTrianglesInColumnsFn = CFUNCTYPE(c_uint32, c_void_p, POINTER(c_double), POINTER(c_float), c_uint32, POINTER(c_uint32), POINTER(c_uint32), POINTER(c_uint8), c_uint32, POINTER(c_uint32), POINTER(c_float))
 PluginHost._fields_ = [("size", c_uint32), ("abi_version", c_uint32), ("context", c_void_p), ("log", HostLogFn),
                         ("set_error", HostSetErrorFn), ("get_level_triangles", HostGetLevelTrianglesFn),
                         ("navmesh_get_boundary_edges", HostNavmeshGetBoundaryEdgesFn),
@@ -615,7 +616,8 @@ PluginHost._fields_ = [("size", c_uint32), ("abi_version", c_uint32), ("context"
                         ("segments_blocked", HostSegmentsBlockedFn),
                         ("record_build_settings", HostRecordBuildSettingsFn),
                         ("get_build_triangles", HostGetBuildTrianglesFn),
-                        ("report_build_progress", HostReportBuildProgressFn), ("run_tasks", HostRunTasksFn)]
+                        ("report_build_progress", HostReportBuildProgressFn), ("run_tasks", HostRunTasksFn),
+                        ("get_build_triangles_in_columns", HostGetBuildTrianglesInColumnsFn)]
 NavmeshSinkFn = CFUNCTYPE(c_uint32, c_void_p, POINTER(NavmeshDef))
 NavmeshBuildFn = CFUNCTYPE(c_uint32, c_void_p, POINTER(PluginHost), POINTER(NavmeshBuildDef), NavmeshSinkFn, c_void_p)
 NavmeshBuilder._fields_ = [("build", NavmeshBuildFn)]

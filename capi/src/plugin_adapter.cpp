@@ -156,7 +156,13 @@ struct RunningBuild {
     const CPlugin& builder;
     const NavMeshBuildRequest& request;
     std::string settings_used;             // what the builder recorded (host->record_build_settings)
-    std::optional<BuildTriangles> handed;  // the level as the builder was shown it
+    std::optional<BuildTriangles> handed;  // the level as the builder was shown it, unless the request had it
+    struct ColumnsRead {
+        Columns columns;
+        BuildTriangles triangles;
+        Aabb bounds;
+    };
+    std::optional<ColumnsRead> columns_read;  // the last columns the builder read of it
     RunningBuild* outer;
 };
 
@@ -211,7 +217,7 @@ BuiltNavMesh CPlugin::build(World&, const NavMeshBuildRequest& request) {
             fail(ErrorCode::Internal, "builder '", name, "' made tiles that were refused: ", e.what());
         }
     }
-    const uint64_t built_from = running.handed ? level_hash(*running.handed) : 0;
+    const uint64_t built_from = request.level ? request.level_hash : running.handed ? level_hash(*running.handed) : 0;
     return {std::move(sink.navmesh), std::move(running.settings_used), built_from, std::move(sink.tiles)};
 }
 
@@ -257,8 +263,10 @@ void CPlugin::propose(World&, Handle navmesh, const std::string& settings_json, 
 void with_level_triangles(void* context, FunctionRef<void(const BuildTriangles&)> use) {
     const Level& level = world_of_plugin(context).level();
     if (running_build) {
+        const NavMeshBuildRequest& request = running_build->request;
+        if (request.level) return use(*request.level);
         std::optional<BuildTriangles>& handed = running_build->handed;
-        if (!handed) handed = level.triangles_to_build(running_build->request.carrier);
+        if (!handed) handed = level.triangles_to_build(request.carrier);
         use(*handed);
         return;
     }
@@ -266,6 +274,25 @@ void with_level_triangles(void* context, FunctionRef<void(const BuildTriangles&)
     all.mesh = level.world_triangles();
     all.areas.assign(all.mesh.triangles.size(), 0);
     use(all);
+}
+
+void with_build_triangles_in_columns(void* context, const Columns& columns,
+                                     FunctionRef<void(const BuildTriangles&, const Aabb& bounds)> use) {
+    if (!running_build || &running_build->builder != context)
+        fail(ErrorCode::InvalidArgument,
+             "get_build_triangles_in_columns was called outside a navmesh build of this plugin on this thread");
+    auto& read = running_build->columns_read;
+    const auto same = [&](const Columns& c) {
+        return c.min_x == columns.min_x && c.min_z == columns.min_z && c.max_x == columns.max_x &&
+               c.max_z == columns.max_z;
+    };
+    if (!read || !same(read->columns)) {
+        Aabb bounds;
+        BuildTriangles triangles = world_of_plugin(context).level().triangles_to_build_in_columns(
+            running_build->request.carrier, columns, bounds);
+        read = RunningBuild::ColumnsRead{columns, std::move(triangles), bounds};
+    }
+    use(read->triangles, read->bounds);
 }
 
 bool report_build_progress(void* context, float fraction, const char* stage) {

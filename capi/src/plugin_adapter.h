@@ -42,6 +42,11 @@ const std::string& name_of_plugin(void* context);
 // the copy) sees the same level and the navmesh records the hash of what it was built from;
 // otherwise every mesh in the world, each triangle of area 0.
 void with_level_triangles(void* context, FunctionRef<void(const BuildTriangles&)> use);
+// Calls `use` with what the build running on this thread for the plugin `context` is for, only the
+// triangles that meet `columns` (Level::triangles_to_build_in_columns), and the bounds of all of it;
+// gathered once per build for the same columns. InvalidArgument outside such a build.
+void with_build_triangles_in_columns(void* context, const Columns& columns,
+                                     FunctionRef<void(const BuildTriangles&, const Aabb& bounds)> use);
 // Hands a builder's progress to the build running on this thread for the plugin `context`; false
 // when its caller asked to stop. InvalidArgument outside such a build.
 bool report_build_progress(void* context, float fraction, const char* stage);

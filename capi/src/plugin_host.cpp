@@ -47,28 +47,37 @@ void host_set_error(void*, const char* message) {
     } catch (...) {}
 }
 
+// Copies `level` out in the two-call pattern into the plugin's buffers; `areas` may be null
+// (get_level_triangles). BUFFER_TOO_SMALL when they are short.
+nl_status copy_out(const BuildTriangles& level, float* vertices, uint32_t vertex_capacity, uint32_t* out_vertex_count,
+                   uint32_t* indices, uint8_t* areas, bool areas_asked, uint32_t triangle_capacity,
+                   uint32_t* out_triangle_count) {
+    const TriangleMesh& mesh = level.mesh;
+    if (out_vertex_count) *out_vertex_count = static_cast<uint32_t>(mesh.vertices.size());
+    if (out_triangle_count) *out_triangle_count = static_cast<uint32_t>(mesh.triangles.size());
+    if (vertex_capacity == 0 && triangle_capacity == 0) return NL_STATUS_SUCCESS;
+    if (!vertices || !indices || (areas_asked && !areas) || mesh.vertices.size() > vertex_capacity ||
+        mesh.triangles.size() > triangle_capacity)
+        return NL_STATUS_FAILURE | NL_STATUS_BUFFER_TOO_SMALL;
+    for (size_t i = 0; i < mesh.vertices.size(); ++i) Eigen::Map<Vec3>(vertices + 3 * i) = mesh.vertices[i];
+    for (size_t t = 0; t < mesh.triangles.size(); ++t)
+        for (int k = 0; k < 3; ++k) indices[3 * t + k] = mesh.triangles[t][k];
+    if (areas_asked) std::copy(level.areas.begin(), level.areas.end(), areas);
+    return NL_STATUS_SUCCESS;
+}
+
 // The two-call copy of what a build is for; `areas` may be null (get_level_triangles).
 nl_status copy_build_triangles(void* context, const char* query, float* vertices, uint32_t vertex_capacity,
                                uint32_t* out_vertex_count, uint32_t* indices, uint8_t* areas, bool areas_asked,
                                uint32_t triangle_capacity, uint32_t* out_triangle_count) {
-    nl_status status = NL_STATUS_SUCCESS;
-    auto copy_out = [&](const BuildTriangles& level) {
-        const TriangleMesh& mesh = level.mesh;
-        if (out_vertex_count) *out_vertex_count = static_cast<uint32_t>(mesh.vertices.size());
-        if (out_triangle_count) *out_triangle_count = static_cast<uint32_t>(mesh.triangles.size());
-        if (vertex_capacity == 0 && triangle_capacity == 0) return;
-        if (!vertices || !indices || (areas_asked && !areas) || mesh.vertices.size() > vertex_capacity ||
-            mesh.triangles.size() > triangle_capacity) {
-            status = NL_STATUS_FAILURE | NL_STATUS_BUFFER_TOO_SMALL;
-            return;
-        }
-        for (size_t i = 0; i < mesh.vertices.size(); ++i) Eigen::Map<Vec3>(vertices + 3 * i) = mesh.vertices[i];
-        for (size_t t = 0; t < mesh.triangles.size(); ++t)
-            for (int k = 0; k < 3; ++k) indices[3 * t + k] = mesh.triangles[t][k];
-        if (areas_asked) std::copy(level.areas.begin(), level.areas.end(), areas);
-    };
-    const nl_status ran = for_plugin(context, query, [&] { with_level_triangles(context, copy_out); });
-    return NL_FAILED(ran) ? ran : status;
+    nl_status copied = NL_STATUS_SUCCESS;
+    const nl_status ran = for_plugin(context, query, [&] {
+        with_level_triangles(context, [&](const BuildTriangles& level) {
+            copied = copy_out(level, vertices, vertex_capacity, out_vertex_count, indices, areas, areas_asked,
+                              triangle_capacity, out_triangle_count);
+        });
+    });
+    return NL_FAILED(ran) ? ran : copied;
 }
 
 nl_status host_get_level_triangles(void* context, float* vertices, uint32_t vertex_capacity, uint32_t* out_vertex_count,
@@ -82,6 +91,29 @@ nl_status host_get_build_triangles(void* context, float* vertices, uint32_t vert
                                    uint32_t* out_triangle_count) {
     return copy_build_triangles(context, "get_build_triangles", vertices, vertex_capacity, out_vertex_count, indices,
                                 areas, true, triangle_capacity, out_triangle_count);
+}
+
+nl_status host_get_build_triangles_in_columns(void* context, const double* columns, float* vertices,
+                                              uint32_t vertex_capacity, uint32_t* out_vertex_count, uint32_t* indices,
+                                              uint8_t* areas, uint32_t triangle_capacity, uint32_t* out_triangle_count,
+                                              float* out_bounds) {
+    nl_status copied = NL_STATUS_SUCCESS;
+    const nl_status ran = for_plugin(context, "get_build_triangles_in_columns", [&] {
+        if (!columns) fail(ErrorCode::InvalidArgument, "columns is NULL");
+        const Columns asked{columns[0], columns[1], columns[2], columns[3]};
+        with_build_triangles_in_columns(context, asked, [&](const BuildTriangles& level, const Aabb& bounds) {
+            if (out_bounds) {
+                const bool none = bounds.empty();
+                for (int axis = 0; axis < 3; ++axis) {
+                    out_bounds[axis] = none ? 0.0f : bounds.min[axis];
+                    out_bounds[3 + axis] = none ? 0.0f : bounds.max[axis];
+                }
+            }
+            copied = copy_out(level, vertices, vertex_capacity, out_vertex_count, indices, areas, true,
+                              triangle_capacity, out_triangle_count);
+        });
+    });
+    return NL_FAILED(ran) ? ran : copied;
 }
 
 nl_status host_report_build_progress(void* context, float fraction, const char* stage) {
@@ -157,6 +189,7 @@ nl_plugin_host make_plugin_host(void* context) {
     host.get_build_triangles = host_get_build_triangles;
     host.report_build_progress = host_report_build_progress;
     host.run_tasks = host_run_tasks;
+    host.get_build_triangles_in_columns = host_get_build_triangles_in_columns;
     return host;
 }
 

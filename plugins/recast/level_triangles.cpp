@@ -20,6 +20,10 @@ void check(const LevelTriangles& level) {
         if (!std::isfinite(level.vertices[i]))
             fail(NL_STATUS_INVALID_ARGUMENT, "level vertex ", i / 3, " has a coordinate that is not finite");
     }
+    if (level.whole_bounds)
+        for (float v : *level.whole_bounds)
+            if (!std::isfinite(v))
+                fail(NL_STATUS_INTERNAL_ERROR, "get_build_triangles_in_columns gave bounds that are not finite");
     for (size_t i = 0; i < level.indices.size(); ++i) {
         if (level.indices[i] >= vertex_count)
             fail(NL_STATUS_INTERNAL_ERROR, "get_level_triangles gave index ", level.indices[i], " of triangle ", i / 3,
@@ -29,16 +33,25 @@ void check(const LevelTriangles& level) {
 
 }  // namespace
 
-LevelTriangles fetch_level_triangles(const nl_plugin_host& host) {
+LevelTriangles fetch_level_triangles(const nl_plugin_host& host, const std::optional<std::array<double, 4>>& columns) {
+    const bool in_columns = columns && NL_RECAST_HOST_OFFERS(host, get_build_triangles_in_columns);
     const bool with_areas = NL_RECAST_HOST_OFFERS(host, get_build_triangles);
     if (!with_areas && !NL_RECAST_HOST_OFFERS(host, get_level_triangles))
         fail(NL_STATUS_INVALID_ARGUMENT, "the host offers no get_level_triangles");
-    const char* const query = with_areas ? "get_build_triangles" : "get_level_triangles";
+    const char* const query = in_columns   ? "get_build_triangles_in_columns"
+                              : with_areas ? "get_build_triangles"
+                                           : "get_level_triangles";
     LevelTriangles level;
+    if (in_columns) level.whole_bounds.emplace();
     auto copy = [&](uint32_t vertex_capacity, uint32_t* vertex_count, uint32_t triangle_capacity,
                     uint32_t* triangle_count) {
         float* const vertices = vertex_capacity ? level.vertices.data() : nullptr;
         uint32_t* const indices = triangle_capacity ? level.indices.data() : nullptr;
+        if (in_columns)
+            return host.get_build_triangles_in_columns(host.context, columns->data(), vertices, vertex_capacity,
+                                                       vertex_count, indices,
+                                                       triangle_capacity ? level.areas.data() : nullptr,
+                                                       triangle_capacity, triangle_count, level.whole_bounds->data());
         if (with_areas)
             return host.get_build_triangles(host.context, vertices, vertex_capacity, vertex_count, indices,
                                             triangle_capacity ? level.areas.data() : nullptr, triangle_capacity,

@@ -50,7 +50,7 @@ nl_status build(void* /*plugin_state*/, const nl_plugin_host* host, const nl_nav
         const nl_recast_settings settings = resolve_settings(*def);
         const BuildProgress progress(*host);
         progress.report(0.0f, "reading the level");
-        const LevelTriangles level = fetch_level_triangles(*host);
+        const LevelTriangles level = fetch_level_triangles(*host, columns_to_read(settings, *def));
 
         HostLogContext context(*host);
         const nl_status recorded = host_record_build_settings(*host, settings_to_json(settings));

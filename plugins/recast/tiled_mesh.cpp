@@ -39,6 +39,11 @@ struct TileGrid {
     int tile_z(uint32_t index) const { return first_z + int(index / uint32_t(tiles_x)); }
 };
 
+// A tile's border in cells: the settings', or the agent's radius + 3 as RecastDemo's.
+int border_cells(const nl_recast_settings& s, const nl_agent_type& agent) {
+    return s.tile_border ? int(s.tile_border) : int(std::ceil(double(agent.radius) / s.cell_size)) + 3;
+}
+
 // Recast's config for tile (tx, tz): the tile and its border, tile_size + 2 border cells a side.
 rcConfig tile_config(const TileGrid& grid, const nl_recast_settings& s, const nl_agent_type& agent, int tx, int tz) {
     const double pad = double(grid.border) * grid.cs;
@@ -177,13 +182,18 @@ struct TileJob {
 TileGrid plan_grid(const LevelTriangles& level, const nl_recast_settings& s, const nl_navmesh_build_def& def) {
     const nl_agent_type& agent = def.agent_type;
     TileGrid grid{};
-    rcCalcBounds(level.vertices.data(), level.vertex_count(), grid.bmin, grid.bmax);
+    if (level.whole_bounds) {
+        std::copy_n(level.whole_bounds->data(), 3, grid.bmin);
+        std::copy_n(level.whole_bounds->data() + 3, 3, grid.bmax);
+    } else if (level.vertex_count() > 0) {
+        rcCalcBounds(level.vertices.data(), level.vertex_count(), grid.bmin, grid.bmax);
+    }
     grid.origin[0] = grid.bmin[0];
     grid.origin[1] = grid.bmin[2];
     grid.cs = s.cell_size;
     grid.tile_size = int(s.tile_size);
     const int radius_cells = int(std::ceil(double(agent.radius) / s.cell_size));
-    grid.border = s.tile_border ? int(s.tile_border) : radius_cells + 3;
+    grid.border = border_cells(s, agent);
     if (s.tile_border && (grid.border < radius_cells + 1 || grid.border > grid.tile_size))
         fail(NL_STATUS_INVALID_ARGUMENT, "tile_border of ", s.tile_border,
              " cells must be at least the agent's radius (", radius_cells, " cells) + 1 and at most tile_size (",
@@ -220,6 +230,21 @@ TileGrid plan_grid(const LevelTriangles& level, const nl_recast_settings& s, con
 
 }  // namespace
 
+std::optional<std::array<double, 4>> columns_to_read(const nl_recast_settings& s, const nl_navmesh_build_def& def) {
+    if (s.tile_size == 0 || !asks_for_tiles(def)) return std::nullopt;
+    const double width = double(s.tile_size) * s.cell_size;
+    // A cell more than the border, so that rounding never leaves out a triangle a tile would take.
+    const double pad = double(border_cells(s, def.agent_type) + 1) * s.cell_size;
+    const std::array<double, 4> columns{
+        def.tile_origin_x + double(def.first_tile.x) * width - pad,
+        def.tile_origin_z + double(def.first_tile.z) * width - pad,
+        def.tile_origin_x + double(int64_t(def.first_tile.x) + def.tile_columns) * width + pad,
+        def.tile_origin_z + double(int64_t(def.first_tile.z) + def.tile_rows) * width + pad};
+    for (double c : columns)
+        if (!std::isfinite(c)) return std::nullopt;  // the whole level: plan_grid names what is wrong
+    return columns;
+}
+
 bool asks_for_tiles(const nl_navmesh_build_def& def) {
     return def.size >= offsetof(nl_navmesh_build_def, tile_rows) + sizeof def.tile_rows && def.tile_columns > 0 &&
            def.tile_rows > 0;
@@ -230,11 +255,9 @@ void build_tiled_mesh(HostLogContext& context, const nl_plugin_host& host, const
                       const std::function<void(const NavMeshExport& tile)>& hand) {
     const nl_agent_type& agent = def.agent_type;
     const bool some = asks_for_tiles(def);
-    if (level.triangle_count() == 0) {
-        if (some) return;  // nothing there: no tile
-        no_walkable_surface(agent, "the level has no triangles");
-    }
-    const TileGrid grid = plan_grid(level, s, def);
+    if (level.triangle_count() == 0 && !some) no_walkable_surface(agent, "the level has no triangles");
+    const TileGrid grid = plan_grid(level, s, def);  // the settings checked against the tiles asked for
+    if (level.triangle_count() == 0) return;         // nothing there: no tile
     // The slope and the grid's limits are checked once, on the first tile's config.
     const rcConfig first = tile_config(grid, s, agent, grid.first_x, grid.first_z);
     progress.report(0.03f, "marking walkable triangles");

@@ -3,7 +3,9 @@
 // over in row order, so that the navmesh the host joins is the same for any thread count.
 #pragma once
 
+#include <array>
 #include <functional>
+#include <optional>
 
 #include "navmesh_export.h"
 #include "recast_pipeline.h"
@@ -20,6 +22,11 @@ namespace nl::recast {
 void build_tiled_mesh(HostLogContext& context, const nl_plugin_host& host, const LevelTriangles& level,
                       const nl_recast_settings& settings, const nl_navmesh_build_def& def,
                       const BuildProgress& progress, const std::function<void(const NavMeshExport& tile)>& hand);
+
+// The columns of the level (min x, min z, max x, max z) that the tiles `def` asks for read: those
+// tiles and their borders. Nothing when `def` asks for the whole level (or its grid is not finite).
+std::optional<std::array<double, 4>> columns_to_read(const nl_recast_settings& settings,
+                                                     const nl_navmesh_build_def& def);
 
 // Whether `def` asks for some tiles of a navmesh's grid (nl_navmesh_build_tiles), not a whole navmesh.
 bool asks_for_tiles(const nl_navmesh_build_def& def);

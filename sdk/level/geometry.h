@@ -4,6 +4,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -56,6 +57,24 @@ struct Aabb {
         max = max.cwiseMax(p);
     }
     bool empty() const { return (min.array() > max.array()).any(); }
+};
+
+// A triangle's corners in the order its mesh's placement gives them: a mirroring transform turns a
+// triangle over, so its corners are swapped to keep its front facing the same way.
+inline Triangle wound_as_placed(Triangle t, bool mirrored) {
+    if (mirrored) std::swap(t[1], t[2]);
+    return t;
+}
+
+// Columns of the ground plan, every height: what a tile and its border read of the level. A triangle
+// meets them when its bounds seen from above do (compared in double: tile lines are).
+struct Columns {
+    double min_x = 0.0, min_z = 0.0, max_x = 0.0, max_z = 0.0;
+
+    bool met_by(const Vec3& a, const Vec3& b, const Vec3& c) const {
+        return double(std::min({a.x(), b.x(), c.x()})) <= max_x && double(std::max({a.x(), b.x(), c.x()})) >= min_x &&
+               double(std::min({a.z(), b.z(), c.z()})) <= max_z && double(std::max({a.z(), b.z(), c.z()})) >= min_z;
+    }
 };
 
 // The box, in the space `t` maps to, that holds `box` mapped by `t`.

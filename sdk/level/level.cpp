@@ -336,10 +336,8 @@ void append_in_world(const TriangleMesh& object, const Transform& transform, Tri
     const bool mirrored = transform.linear().determinant() < 0.0f;
     for (const Vec3& v : object.vertices) out.vertices.push_back(transform * v);
     for (const Triangle& t : object.triangles) {
-        if (mirrored)
-            out.triangles.push_back({t[0] + base, t[2] + base, t[1] + base});
-        else
-            out.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
+        const Triangle placed = wound_as_placed(t, mirrored);
+        out.triangles.push_back({placed[0] + base, placed[1] + base, placed[2] + base});
     }
 }
 
@@ -349,8 +347,6 @@ void append_for_build(Handle mesh, const TriangleMesh& object, const Transform& 
     append_in_world(object, transform, out.mesh);
     out.areas.resize(out.mesh.triangles.size(), area);
 }
-
-uint8_t build_area(uint32_t flags, uint8_t area) { return (flags & kMeshObstacle) ? kObstacleArea : area; }
 
 }  // namespace
 

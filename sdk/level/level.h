@@ -39,6 +39,8 @@ enum MeshFlags : uint32_t {
 // The area a navmesh builder gives a mesh's walkable triangles: 0..kMaxMeshArea (kObstacleArea
 // marks an obstacle's triangles in a builder's input).
 constexpr uint32_t kMaxMeshArea = kObstacleArea - 1u;
+// What a builder's input says of a mesh's triangles: its area, or kObstacleArea for an obstacle's.
+inline uint8_t build_area(uint32_t flags, uint8_t area) { return (flags & kMeshObstacle) ? kObstacleArea : area; }
 
 // The frame a host's vertices are given in; NavLink's own is metres with y up. Vertices are brought
 // into it when a mesh is registered, before its transform (which, as every other position, is in
@@ -160,6 +162,11 @@ public:
     // carries its mesh's area, or kObstacleArea for an obstacle's. Throws InvalidHandle, or
     // InvalidArgument for a surface that is not movable or is left out of navmesh builds.
     BuildTriangles triangles_to_build(Handle carrier) const;
+    // What triangles_to_build gives, only the triangles that meet `columns` (in the same order, each
+    // with its area, with only the vertices they use), found through Embree's point queries rather
+    // than by reading the level: what a build or a content hash of some tiles reads. `out_bounds`:
+    // the bounds of every vertex triangles_to_build gives (what places a tile grid's heights).
+    BuildTriangles triangles_to_build_in_columns(Handle carrier, const Columns& columns, Aabb& out_bounds) const;
     // For each hit, the corners of its triangle (RayHit::mesh, RayHit::primitive) if it is a static
     // mesh's, in world space, exactly as Embree tests them; nothing for a miss, a movable mesh (Embree
     // tests those in their own space) or a mesh removed since the hit. Parallel over the batch.

@@ -15,9 +15,6 @@ namespace nl {
 // shared, and a level of area-0 triangles hashes as its corners alone. Never 0 (0 means "not built
 // from the level").
 uint64_t level_hash(const BuildTriangles& level);
-// The same over the triangles whose x-z bounds meet the columns [min_x, max_x] x [min_z, max_z] (all
-// heights), in the level's order: what a tile was built from.
-uint64_t level_hash_in_columns(const BuildTriangles& level, double min_x, double min_z, double max_x, double max_z);
 
 // 64-bit FNV-1a, fed a word, a number's bits or a text at a time: the level hash's, and what a tile's
 // content hash adds to it. Its value is never 0.

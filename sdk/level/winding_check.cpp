@@ -34,49 +34,66 @@ WindingEstimate estimate_winding(const TriangleMesh& mesh, size_t first, size_t 
         std::max(kLeastColumnSpacing, std::max(max_x - min_x, max_z - min_z) / float(kWindingColumns));
     const uint32_t nx = uint32_t(std::floor((max_x - min_x) / spacing)) + 1,
                    nz = uint32_t(std::floor((max_z - min_z) / spacing)) + 1;
-    std::vector<std::vector<Crossing>> columns(size_t(nx) * nz);
     const float walkable = walkable_normal_y(max_slope_degrees);
-    for (size_t t = first; t < first + count; ++t) {
-        const Vec3& a = mesh.vertices[mesh.triangles[t][0]];
-        const Vec3& b = mesh.vertices[mesh.triangles[t][1]];
-        const Vec3& c = mesh.vertices[mesh.triangles[t][2]];
-        const Vec3 normal = (b - a).cross(c - a);
-        const float length = normal.norm();
-        // Seen from above (twice its signed area): a wall has none and no column meets it.
-        const float area = normal.y();
-        if (!(length > 0.0f) || area == 0.0f) continue;
-        const int8_t floor = normal.y() >= walkable * length ? 1 : -normal.y() >= walkable * length ? -1 : 0;
-        const float lo_x = std::min({a.x(), b.x(), c.x()}), hi_x = std::max({a.x(), b.x(), c.x()});
-        const float lo_z = std::min({a.z(), b.z(), c.z()}), hi_z = std::max({a.z(), b.z(), c.z()});
-        const uint32_t i0 = uint32_t(std::max(0.0f, std::ceil((lo_x - min_x) / spacing - 0.5f)));
-        const uint32_t k0 = uint32_t(std::max(0.0f, std::ceil((lo_z - min_z) / spacing - 0.5f)));
-        for (uint32_t i = i0; i < nx; ++i) {
-            const float x = min_x + (float(i) + 0.5f) * spacing;
-            if (x > hi_x) break;
-            for (uint32_t k = k0; k < nz; ++k) {
-                const float z = min_z + (float(k) + 0.5f) * spacing;
-                if (z > hi_z) break;
-                // Barycentric weights seen from above (the signed areas of the sub-triangles).
-                const float u = (b.z() - c.z()) * (x - c.x()) + (c.x() - b.x()) * (z - c.z());
-                const float v = (c.z() - a.z()) * (x - c.x()) + (a.x() - c.x()) * (z - c.z());
-                const float whole = (b.z() - c.z()) * (a.x() - c.x()) + (c.x() - b.x()) * (a.z() - c.z());
-                const float s = whole < 0.0f ? -1.0f : 1.0f;
-                const float w = whole - u - v;
-                if (s * u < 0.0f || s * v < 0.0f || s * w < 0.0f) continue;
-                const float y = (u * a.y() + v * b.y() + w * c.y()) / whole;
-                columns[size_t(i) * nz + k].push_back({y, floor});
+    // Where a triangle meets a column, in two passes (count, then fill) into one array in triangle
+    // order: a vector per column was most of the estimate's time.
+    std::vector<uint32_t> first_crossing(size_t(nx) * nz + 1, 0);
+    std::vector<Crossing> crossings;
+    for (int pass = 0; pass < 2; ++pass) {
+        std::vector<uint32_t> next;
+        if (pass == 1) {
+            for (size_t j = 1; j < first_crossing.size(); ++j) first_crossing[j] += first_crossing[j - 1];
+            crossings.resize(first_crossing.back());
+            next.assign(first_crossing.begin(), first_crossing.end() - 1);
+        }
+        for (size_t t = first; t < first + count; ++t) {
+            const Vec3& a = mesh.vertices[mesh.triangles[t][0]];
+            const Vec3& b = mesh.vertices[mesh.triangles[t][1]];
+            const Vec3& c = mesh.vertices[mesh.triangles[t][2]];
+            const Vec3 normal = (b - a).cross(c - a);
+            const float length = normal.norm();
+            // Seen from above (twice its signed area): a wall has none and no column meets it.
+            const float area = normal.y();
+            if (!(length > 0.0f) || area == 0.0f) continue;
+            const int8_t floor = normal.y() >= walkable * length ? 1 : -normal.y() >= walkable * length ? -1 : 0;
+            const float lo_x = std::min({a.x(), b.x(), c.x()}), hi_x = std::max({a.x(), b.x(), c.x()});
+            const float lo_z = std::min({a.z(), b.z(), c.z()}), hi_z = std::max({a.z(), b.z(), c.z()});
+            const uint32_t i0 = uint32_t(std::max(0.0f, std::ceil((lo_x - min_x) / spacing - 0.5f)));
+            const uint32_t k0 = uint32_t(std::max(0.0f, std::ceil((lo_z - min_z) / spacing - 0.5f)));
+            for (uint32_t i = i0; i < nx; ++i) {
+                const float x = min_x + (float(i) + 0.5f) * spacing;
+                if (x > hi_x) break;
+                for (uint32_t k = k0; k < nz; ++k) {
+                    const float z = min_z + (float(k) + 0.5f) * spacing;
+                    if (z > hi_z) break;
+                    // Barycentric weights seen from above (the signed areas of the sub-triangles).
+                    const float u = (b.z() - c.z()) * (x - c.x()) + (c.x() - b.x()) * (z - c.z());
+                    const float v = (c.z() - a.z()) * (x - c.x()) + (a.x() - c.x()) * (z - c.z());
+                    const float whole = (b.z() - c.z()) * (a.x() - c.x()) + (c.x() - b.x()) * (a.z() - c.z());
+                    const float s = whole < 0.0f ? -1.0f : 1.0f;
+                    const float w = whole - u - v;
+                    if (s * u < 0.0f || s * v < 0.0f || s * w < 0.0f) continue;
+                    const size_t column = size_t(i) * nz + k;
+                    if (pass == 0) {
+                        ++first_crossing[column + 1];
+                    } else {
+                        crossings[next[column]++] = {(u * a.y() + v * b.y() + w * c.y()) / whole, floor};
+                    }
+                }
             }
         }
     }
     const float cell = spacing * spacing;
-    for (std::vector<Crossing>& column : columns) {
-        std::sort(column.begin(), column.end(), [](const Crossing& p, const Crossing& q) { return p.y < q.y; });
-        for (size_t j = 0; j < column.size(); ++j) {
+    for (size_t c = 0; c + 1 < first_crossing.size(); ++c) {
+        const auto column = crossings.begin() + first_crossing[c];
+        const size_t size = first_crossing[c + 1] - first_crossing[c];
+        std::sort(column, column + size, [](const Crossing& p, const Crossing& q) { return p.y < q.y; });
+        for (size_t j = 0; j < size; ++j) {
             // Free above it up to the next surface of the mesh (one a hair above is the same surface,
             // met twice on a shared edge).
             size_t above = j + 1;
-            while (above < column.size() && column[above].y - column[j].y < 1e-3f) ++above;
-            if (above < column.size() && column[above].y - column[j].y < height) continue;
+            while (above < size && column[above].y - column[j].y < 1e-3f) ++above;
+            if (above < size && column[above].y - column[j].y < height) continue;
             if (column[j].floor > 0) out.floor_as_given += cell;
             if (column[j].floor < 0) out.floor_turned_over += cell;
             j = above - 1;  // the rest met on this height are the same surface

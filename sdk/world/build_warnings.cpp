@@ -2,11 +2,15 @@
 // level that looks given in other units than metres or with z up. Each is a plausible wrong answer
 // the build would otherwise give in silence (issue 33); none fails the build.
 #include <cmath>
+#include <cstring>
 #include <iomanip>
+#include <mutex>
+#include <map>
 #include <sstream>
 #include <string>
 
 #include "level/frame_check.h"
+#include "level/level_hash.h"
 #include "level/winding_check.h"
 #include "world/world.h"
 
@@ -23,13 +27,47 @@ std::string figure(float x) {
 
 }  // namespace
 
-void World::warn_of_level(const BuildTriangles& triangles, const AgentType& agent, NavMeshProvenance& made_for) const {
-    made_for.turned_over_meshes = warn_turned_over(triangles, agent);
-    made_for.warnings =
-        warn_of_frame(triangles, agent) | (made_for.turned_over_meshes.empty() ? 0u : uint32_t(kWarnedClockwise));
+namespace {
+
+// The estimate in `known` under `key`, or `measure()`'s, kept there for the next build (`known`
+// emptied first when it holds `most`).
+template <typename Key, typename Estimate, typename Measure>
+Estimate remembered(std::mutex& mutex, std::map<Key, Estimate>& known, size_t most, const Key& key, Measure&& measure) {
+    {
+        std::lock_guard lock(mutex);
+        if (const auto found = known.find(key); found != known.end()) return found->second;
+    }
+    const Estimate measured = measure();  // outside the lock: builds on other threads go on
+    std::lock_guard lock(mutex);
+    if (known.size() >= most) known.clear();
+    known.emplace(key, measured);
+    return measured;
 }
 
-std::vector<Handle> World::warn_turned_over(const BuildTriangles& triangles, const AgentType& agent) const {
+// A key for triangles [first, end) of `level`, as winding_estimates_ keeps them: their corners'
+// bits a word at a time (the level hash goes a byte at a time, for files; this one is never stored).
+uint64_t corners_key(const BuildTriangles& level, size_t first, size_t end) {
+    uint64_t h = 14695981039346656037ull;
+    for (size_t i = first; i < end; ++i)
+        for (uint32_t corner : level.mesh.triangles[i])
+            for (int axis = 0; axis < 3; ++axis) {
+                uint32_t bits;
+                std::memcpy(&bits, &level.mesh.vertices[corner][axis], 4);
+                h = (h ^ bits) * 1099511628211ull;
+            }
+    return h;
+}
+
+}  // namespace
+
+void World::warn_of_level(const BuildTriangles& triangles, uint64_t hash, const AgentType& agent,
+                          NavMeshProvenance& made_for) {
+    made_for.turned_over_meshes = warn_turned_over(triangles, agent);
+    made_for.warnings =
+        warn_of_frame(triangles, hash, agent) | (made_for.turned_over_meshes.empty() ? 0u : uint32_t(kWarnedClockwise));
+}
+
+std::vector<Handle> World::warn_turned_over(const BuildTriangles& triangles, const AgentType& agent) {
     std::vector<Handle> turned;
     std::string said;
     float as_given = 0.0f, turned_over = 0.0f;
@@ -38,8 +76,12 @@ std::vector<Handle> World::warn_turned_over(const BuildTriangles& triangles, con
         const size_t end = triangles.mesh_end(k);
         // An obstacle is never walked on, whichever way it faces.
         if (end == starts[k].first || triangles.areas[starts[k].first] == kObstacleArea) continue;
-        const WindingEstimate e =
-            estimate_winding(triangles.mesh, starts[k].first, end - starts[k].first, agent.max_slope, agent.height);
+        const auto key = std::make_tuple(starts[k].mesh.packed(), corners_key(triangles, starts[k].first, end),
+                                         agent.max_slope, agent.height);
+        const WindingEstimate e = remembered(estimates_mutex_, winding_estimates_, kMaxEstimates, key, [&] {
+            return estimate_winding(triangles.mesh, starts[k].first, end - starts[k].first, agent.max_slope,
+                                    agent.height);
+        });
         if (!looks_turned_over(e)) continue;
         turned.push_back(starts[k].mesh);
         as_given += e.floor_as_given;
@@ -60,7 +102,7 @@ std::vector<Handle> World::warn_turned_over(const BuildTriangles& triangles, con
     return turned;
 }
 
-uint32_t World::warn_of_frame(const BuildTriangles& triangles, const AgentType& agent) const {
+uint32_t World::warn_of_frame(const BuildTriangles& triangles, uint64_t hash, const AgentType& agent) {
     // Only meshes that did not say their units are measured for them, and only those that did not
     // say their up axis for it.
     std::vector<uint32_t> sized, floors;
@@ -78,7 +120,15 @@ uint32_t World::warn_of_frame(const BuildTriangles& triangles, const AgentType& 
             if (frame.up == UpAxis::NotSaid && triangles.areas[t] != kObstacleArea) floors.push_back(uint32_t(t));
         }
     }
-    const FrameEstimate e = estimate_frame(triangles.mesh, sized, floors, agent.max_slope, agent.height);
+    Fnv1a64 measured;  // which triangles are measured for what: the meshes' frames say
+    for (const auto* list : {&sized, &floors}) {
+        measured.word(uint32_t(list->size()));
+        for (uint32_t t : *list) measured.word(t);
+    }
+    const FrameEstimate e =
+        remembered(estimates_mutex_, frame_estimates_, kMaxEstimates,
+                   std::make_tuple(hash, measured.value(), agent.max_slope, agent.height),
+                   [&] { return estimate_frame(triangles.mesh, sized, floors, agent.max_slope, agent.height); });
     logger_.log(LogLevel::Debug,
                 concat("the level's frame, measured for the agent: floor with y up ", std::lround(e.floor_y_up),
                        " m2, with z up ", std::lround(e.floor_z_up), " m2; walls ", figure(e.wall_height), " m tall; ",

@@ -43,6 +43,10 @@ struct NavMeshBuildRequest {
         uint32_t rows = 0;
         bool asked() const { return columns > 0 && rows > 0; }
     } only_tiles;
+    // The triangles the world gathered for this build already (Level::triangles_to_build) and their
+    // level_hash, borrowed for the build; null: the builder's host gathers them when asked.
+    const BuildTriangles* level = nullptr;
+    uint64_t level_hash = 0;
 };
 
 // What a builder hands back.

@@ -25,9 +25,10 @@ uint64_t World::tile_content_hash(Handle navmesh, TileCoord coord) const {
     // triangles within its border, which is never wider than a tile.
     const double reach =
         (made_for.links.settings.empty() ? 0.0 : double(tile_link_reach(links))) + 2.0 * double(grid.tile_width);
-    const uint64_t triangles = level_hash_in_columns(
-        level_->triangles_to_build(Handle{}), grid.line_x(coord.x) - reach, grid.line_z(coord.z) - reach,
-        grid.line_x(int64_t(coord.x) + 1) + reach, grid.line_z(int64_t(coord.z) + 1) + reach);
+    const Columns columns{grid.line_x(coord.x) - reach, grid.line_z(coord.z) - reach,
+                          grid.line_x(int64_t(coord.x) + 1) + reach, grid.line_z(int64_t(coord.z) + 1) + reach};
+    Aabb level_bounds;
+    const uint64_t triangles = level_hash(level_->triangles_to_build_in_columns(Handle{}, columns, level_bounds));
     Fnv1a64 h;
     h.word(static_cast<uint32_t>(triangles >> 32));
     h.word(static_cast<uint32_t>(triangles));

@@ -353,11 +353,15 @@ Handle World::build_navmesh(const NavMeshBuildRequest& request) {
         std::lock_guard lock(carrier_moves_);
         carrier_placement(request.carrier);
     }
-    GuardedBuild guarded(request);
     // Said before the build: a level in the wrong units can take long to build, or fail for it.
     const BuildTriangles triangles = level_->triangles_to_build(request.carrier);
+    const uint64_t built_from = level_hash(triangles);
     NavMeshProvenance made_for;
-    warn_of_level(triangles, request.agent_type, made_for);
+    warn_of_level(triangles, built_from, request.agent_type, made_for);
+    NavMeshBuildRequest shown = request;  // the builder is shown what was just read, not a second copy
+    shown.level = &triangles;
+    shown.level_hash = built_from;
+    GuardedBuild guarded(shown);
     BuiltNavMesh built = guarded.run(builder, *this);
     if (!built.navmesh)
         fail(ErrorCode::Internal, "builder '", request.builder, "' succeeded without handing over a navmesh");
@@ -369,7 +373,7 @@ Handle World::build_navmesh(const NavMeshBuildRequest& request) {
     }
     std::shared_ptr<const NavMesh> navmesh = std::move(built.navmesh);
     log_repairs(*navmesh);
-    made_for.level_hash = built.level_hash != 0 ? built.level_hash : level_hash(triangles);
+    made_for.level_hash = built.level_hash != 0 ? built.level_hash : built_from;
     guarded.report(1.0f, "adding the navmesh");
     return add_on_carrier(std::move(navmesh), request.carrier, std::move(made_for), std::move(built.tiles));
 }

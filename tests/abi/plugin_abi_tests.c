@@ -10,6 +10,7 @@
 
 #include <navlink/plugin.h>
 
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -27,7 +28,8 @@ enum test_build_mode {
     MODE_NULL_NAVMESH,       /* calls the sink with NULL */
     MODE_RECORD,             /* records the settings it used, then as MODE_GRID */
     MODE_RECORD_NOT_OBJECT,  /* records a JSON array as its settings, then as MODE_GRID */
-    MODE_RECORD_NULL         /* records NULL (refused), then as MODE_GRID */
+    MODE_RECORD_NULL,        /* records NULL (refused), then as MODE_GRID */
+    MODE_COLUMNS             /* reads the level in columns (get_build_triangles_in_columns), then as MODE_GRID */
 };
 
 static const char k_recorded_settings[] = "{\"flavour\": \"vanilla\", \"scoops\": 2}";
@@ -49,6 +51,11 @@ typedef struct test_plugin_state {
     nl_agent_type agent;
     nl_status record_status;         /* record_build_settings in the last build */
     nl_status record_outside_status; /* record_build_settings from the entry function */
+    /* MODE_COLUMNS: get_build_triangles_in_columns over all of the level, its -x side, nothing (far
+       away), NULL, NaN and min > max columns, a short buffer; and from the entry function. */
+    nl_status columns_status[7], columns_outside_status;
+    uint32_t columns_triangles[3], columns_vertices[3];
+    float columns_bounds[6];
 } test_plugin_state;
 
 static test_plugin_state g_plugin;
@@ -111,6 +118,29 @@ static nl_status test_build(void* state, const nl_plugin_host* host, const nl_na
         case MODE_RECORD_NULL:
             self->record_status = host->record_build_settings(host->context, NULL, 4);
             return self->sink_status[0] = sink(sink_context, &navmesh);
+        case MODE_COLUMNS: {
+            static const double all[4] = {-1e4, -1e4, 1e4, 1e4}, minus_x[4] = {-20.0, -20.0, -10.0, 20.0},
+                                far[4] = {1e4, 1e4, 2e4, 2e4}, not_finite[4] = {0.0, 0.0, 1.0, NAN},
+                                crossed[4] = {1.0, 0.0, -1.0, 1.0};
+            const double* asked[3] = {all, minus_x, far};
+            float vertices[3 * 16];
+            uint32_t indices[3 * 16], vertex_count = 0, triangle_count = 0, k;
+            uint8_t areas[16];
+            for (k = 0; k < 3; ++k) {
+                self->columns_status[k] = host->get_build_triangles_in_columns(
+                    host->context, asked[k], vertices, 16, &self->columns_vertices[k], indices, areas, 16,
+                    &self->columns_triangles[k], k == 0 ? self->columns_bounds : NULL);
+            }
+            self->columns_status[3] = host->get_build_triangles_in_columns(
+                host->context, NULL, vertices, 16, &vertex_count, indices, areas, 16, &triangle_count, NULL);
+            self->columns_status[4] = host->get_build_triangles_in_columns(
+                host->context, not_finite, vertices, 16, &vertex_count, indices, areas, 16, &triangle_count, NULL);
+            self->columns_status[5] = host->get_build_triangles_in_columns(
+                host->context, crossed, vertices, 16, &vertex_count, indices, areas, 16, &triangle_count, NULL);
+            self->columns_status[6] = host->get_build_triangles_in_columns(
+                host->context, all, vertices, 16, &vertex_count, indices, areas, 11, &triangle_count, NULL);
+            return self->sink_status[0] = sink(sink_context, &navmesh);
+        }
         case MODE_GRID: return self->sink_status[0] = sink(sink_context, &navmesh);
         case MODE_SINK_TWICE:
             self->sink_status[0] = sink(sink_context, &navmesh);
@@ -148,6 +178,12 @@ static int entry_preamble(uint32_t host_abi_version, const nl_plugin_host* host,
         out_info->navmesh_builder.build == NULL)
         ++g_plugin.entry_checks;
     g_plugin.record_outside_status = host->record_build_settings(host->context, "{}", 2);
+    {
+        static const double all[4] = {-1e4, -1e4, 1e4, 1e4};
+        uint32_t vertex_count = 0, triangle_count = 0;
+        g_plugin.columns_outside_status = host->get_build_triangles_in_columns(
+            host->context, all, NULL, 0, &vertex_count, NULL, NULL, 0, &triangle_count, NULL);
+    }
     out_info->abi_version = NL_PLUGIN_ABI_VERSION;
     out_info->version = "2.5.1";
     out_info->description = "C test builder: a 2 x 2 grid";
@@ -413,6 +449,30 @@ static void registered(void) {
     CHECK_THAT(strstr(navmesh_made_for(world, id), "\"builder_settings\":null") != NULL,
                "a build that recorded nothing, given a settings struct, says no settings");
 
+    /* The level in columns: the box (8 vertices, 12 triangles; x and z from -10 to 10, y from 0 to
+       1) whole with its bounds; its -x side (every triangle but the +x face's two, which stay at
+       x = 10), nothing far away; refusals of NULL, NaN and crossed columns, and outside a build; a
+       buffer short of a triangle. */
+    CHECK(g_plugin.columns_outside_status == (NL_STATUS_FAILURE | NL_STATUS_INVALID_ARGUMENT));
+    settings.mode = MODE_COLUMNS;
+    CHECK_OK(nl_navmesh_build(world, &def, &id));
+    CHECK(g_plugin.columns_status[0] == NL_STATUS_SUCCESS && g_plugin.columns_status[1] == NL_STATUS_SUCCESS &&
+          g_plugin.columns_status[2] == NL_STATUS_SUCCESS);
+    CHECK_MSG(g_plugin.columns_triangles[0] == 12 && g_plugin.columns_vertices[0] == 8 &&
+                  g_plugin.columns_triangles[1] == 10 && g_plugin.columns_vertices[1] == 8 &&
+                  g_plugin.columns_triangles[2] == 0 && g_plugin.columns_vertices[2] == 0,
+              "columns gave %u/%u, %u/%u, %u/%u triangles/vertices", (unsigned)g_plugin.columns_triangles[0],
+              (unsigned)g_plugin.columns_vertices[0], (unsigned)g_plugin.columns_triangles[1],
+              (unsigned)g_plugin.columns_vertices[1], (unsigned)g_plugin.columns_triangles[2],
+              (unsigned)g_plugin.columns_vertices[2]);
+    CHECK(g_plugin.columns_bounds[0] == -10.0f && g_plugin.columns_bounds[1] == 0.0f &&
+          g_plugin.columns_bounds[2] == -10.0f && g_plugin.columns_bounds[3] == 10.0f &&
+          g_plugin.columns_bounds[4] == 1.0f && g_plugin.columns_bounds[5] == 10.0f);
+    CHECK(g_plugin.columns_status[3] == (NL_STATUS_FAILURE | NL_STATUS_INVALID_ARGUMENT));
+    CHECK(g_plugin.columns_status[4] == (NL_STATUS_FAILURE | NL_STATUS_INVALID_ARGUMENT));
+    CHECK(g_plugin.columns_status[5] == (NL_STATUS_FAILURE | NL_STATUS_INVALID_ARGUMENT));
+    CHECK(g_plugin.columns_status[6] == (NL_STATUS_FAILURE | NL_STATUS_BUFFER_TOO_SMALL));
+
     /* Still works after all the failures. */
     settings.mode = MODE_GRID;
     CHECK_OK(nl_navmesh_build(world, &def, &id));
@@ -420,7 +480,7 @@ static void registered(void) {
     def.settings = NULL;
     def.builder = "c-test-builder-2";
     CHECK_OK(nl_navmesh_build(world, &def, &id));
-    CHECK(navmesh_count(world) == 5);
+    CHECK(navmesh_count(world) == 6);
 
     /* Destroying the world destroys each plugin state the entry made, once. */
     nl_world_destroy(world);

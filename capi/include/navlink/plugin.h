@@ -109,6 +109,24 @@ typedef struct nl_plugin_host {
      *  called outside a build of this plugin on this thread). Present when `size` covers it (added
      *  in 0.3); without it, run the tasks one after another. */
     nl_status (*run_tasks)(void* context, uint32_t count, nl_plugin_task_fn* task, void* user);
+
+    /** For a navmesh builder building some tiles: what get_build_triangles gives, only the triangles
+     *  whose bounds seen from above meet the columns columns[0] <= x <= columns[2], columns[1] <= z
+     *  <= columns[3] (every height, in the build's space), in the same order and with the same
+     *  areas, with only the vertices they use; the host finds them in its spatial index rather than
+     *  copying the level, so a tile of a large world reads what lies around it. `out_bounds` (6
+     *  floats: min x, y, z, then max x, y, z; may be NULL) receives the bounds of every vertex
+     *  get_build_triangles gives, so that the tiles' heights can be placed as a build of the whole
+     *  level places them (all zero for an empty level). `columns`: 4 doubles, borrowed for the call.
+     *  Two calls as get_build_triangles (the counts and the bounds written by both); within one build,
+     *  calls with the same columns see the same triangles. None meets them: counts 0 and SUCCESS.
+     *  Returns SUCCESS, or a failure with BUFFER_TOO_SMALL (nothing copied) or INVALID_ARGUMENT
+     *  (columns NULL, not finite, or min > max; called outside a navmesh build of this plugin on this
+     *  thread). Present when `size` covers it (added in 0.3); without it, read get_build_triangles. */
+    nl_status (*get_build_triangles_in_columns)(void* context, const double* columns, float* vertices,
+                                                uint32_t vertex_capacity, uint32_t* out_vertex_count,
+                                                uint32_t* indices, uint8_t* areas, uint32_t triangle_capacity,
+                                                uint32_t* out_triangle_count, float* out_bounds);
 } nl_plugin_host;
 
 /** The area get_build_triangles gives an obstacle's triangles. */

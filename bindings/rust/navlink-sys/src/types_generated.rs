@@ -1569,6 +1569,29 @@ pub struct nl_plugin_host {
         task: nl_plugin_task_fn,
         user: *mut c_void,
     ) -> nl_status>,
+    /// For a navmesh builder building some tiles: what get_build_triangles gives, only the triangles whose bounds seen
+    /// from above meet the columns columns\[0\] <= x <= columns\[2\], columns\[1\] <= z <= columns\[3\] (every height,
+    /// in the build's space), in the same order and with the same areas, with only the vertices they use; the host
+    /// finds them in its spatial index rather than copying the level, so a tile of a large world reads what lies around
+    /// it. `out_bounds` (6 floats: min x, y, z, then max x, y, z; may be NULL) receives the bounds of every vertex
+    /// get_build_triangles gives, so that the tiles' heights can be placed as a build of the whole level places them
+    /// (all zero for an empty level). `columns`: 4 doubles, borrowed for the call. Two calls as get_build_triangles
+    /// (the counts and the bounds written by both); within one build, calls with the same columns see the same
+    /// triangles. None meets them: counts 0 and SUCCESS. Returns SUCCESS, or a failure with BUFFER_TOO_SMALL (nothing
+    /// copied) or INVALID_ARGUMENT (columns NULL, not finite, or min > max; called outside a navmesh build of this
+    /// plugin on this thread). Present when `size` covers it (added in 0.3); without it, read get_build_triangles.
+    pub get_build_triangles_in_columns: Option<unsafe extern "C" fn(
+        context: *mut c_void,
+        columns: *const f64,
+        vertices: *mut f32,
+        vertex_capacity: u32,
+        out_vertex_count: *mut u32,
+        indices: *mut u32,
+        areas: *mut u8,
+        triangle_capacity: u32,
+        out_triangle_count: *mut u32,
+        out_bounds: *mut f32,
+    ) -> nl_status>,
 }
 
 impl Default for nl_plugin_host {

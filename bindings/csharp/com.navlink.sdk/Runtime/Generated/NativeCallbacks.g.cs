@@ -166,6 +166,26 @@ namespace NavLink
         [UnmanagedFunctionPointer(CallingConvention.Cdecl)]
         public delegate StatusCode HostRunTasksFn(IntPtr context, uint count, IntPtr task, IntPtr user);
 
+        /// <summary>For a navmesh builder building some tiles: what get_build_triangles gives, only the triangles whose
+        /// bounds seen from above meet the columns columns[0] &lt;= x &lt;= columns[2], columns[1] &lt;= z &lt;=
+        /// columns[3] (every height, in the build's space), in the same order and with the same areas, with only the
+        /// vertices they use; the host finds them in its spatial index rather than copying the level, so a tile of a
+        /// large world reads what lies around it. <c>out_bounds</c> (6 floats: min x, y, z, then max x, y, z; may be
+        /// NULL) receives the bounds of every vertex get_build_triangles gives, so that the tiles' heights can be
+        /// placed as a build of the whole level places them (all zero for an empty level). <c>columns</c>: 4 doubles,
+        /// borrowed for the call. Two calls as get_build_triangles (the counts and the bounds written by both); within
+        /// one build, calls with the same columns see the same triangles. None meets them: counts 0 and SUCCESS.
+        /// Returns SUCCESS, or a failure with BUFFER_TOO_SMALL (nothing copied) or INVALID_ARGUMENT (columns NULL, not
+        /// finite, or min &gt; max; called outside a navmesh build of this plugin on this thread). Present when
+        /// <c>size</c> covers it (added in 0.3); without it, read get_build_triangles.
+        /// (nl_plugin_host.get_build_triangles_in_columns)</summary>
+        [UnmanagedFunctionPointer(CallingConvention.Cdecl)]
+        public unsafe delegate StatusCode HostGetBuildTrianglesInColumnsFn(IntPtr context, double* columns,
+                                                                           float* vertices, uint vertexCapacity,
+                                                                           uint* outVertexCount, uint* indices,
+                                                                           byte* areas, uint triangleCapacity,
+                                                                           uint* outTriangleCount, float* outBounds);
+
         /// <summary>Receives a built navmesh; the host copies it before returning. (nl_navmesh_sink_fn)</summary>
         [UnmanagedFunctionPointer(CallingConvention.Cdecl)]
         public delegate StatusCode NavmeshSinkFn(IntPtr sinkContext, IntPtr navmesh);
