@@ -404,6 +404,11 @@ bool NavMeshRegistry::store_update(Handle navmesh, const LinkGeneration* from, c
     return true;
 }
 
+bool NavMeshRegistry::has_path_graph(Handle navmesh) const {
+    std::shared_lock lock(mutex_);
+    return entry(navmesh).path_graph != nullptr;
+}
+
 HeldPtr<const PathGraph> NavMeshRegistry::path_graph(Handle navmesh) const {
     std::shared_ptr<const NavMesh> mesh;
     std::shared_ptr<const LinkSnapshot> snapshot;

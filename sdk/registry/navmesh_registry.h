@@ -176,6 +176,9 @@ public:
 
     // The graph searches read: the navmesh and its links as they are now, built once per snapshot.
     HeldPtr<const PathGraph> path_graph(Handle navmesh) const;
+    // Whether a graph was built for the navmesh since it was added (paths were asked for on it),
+    // whatever snapshot it was built for. Throws InvalidHandle.
+    bool has_path_graph(Handle navmesh) const;
 
 private:
     struct Entry {

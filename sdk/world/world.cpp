@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <new>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -158,19 +159,29 @@ void World::publish_tiles(Handle navmesh, TileInputs tiles, const std::vector<Ti
                           const TileLinks* given) {
     std::shared_ptr<const NavMesh> joined = nl::build_navmesh(join_tiles(tiles));
     const LastGeneration last = navmeshes_.last_generation(navmesh);
+    // Paths were asked for on the navmesh: the new one's graph is built below, by the thread that
+    // changed the tiles (a host's streaming), not by the next path request (a game's frame).
+    const bool searched = navmeshes_.has_path_graph(navmesh);
     if (given || !last.tile_settings || arrived.empty()) {
         navmeshes_.replace_tiles(navmesh, std::move(tiles), std::move(joined), given);
-        return;
+    } else {
+        // Links were generated on the navmesh: the tiles that arrived, and those within reach of them,
+        // have theirs generated again over the tiles as they are now (tile_links.h), published with
+        // the navmesh.
+        TileLinks regenerated;
+        regenerated.owners = tiles_within_reach(joined->tiles().grid, joined->tiles().tiles, arrived,
+                                                tile_link_reach(*last.tile_settings));
+        LinkGenerationReport report;
+        regenerated.links = generate_tile_links(tiles, regenerated.owners, *level_, *tasks_, *last.tile_settings,
+                                                report, [](float, const char*) { return true; });
+        navmeshes_.replace_tiles(navmesh, std::move(tiles), std::move(joined), &regenerated);
     }
-    // Links were generated on the navmesh: the tiles that arrived, and those within reach of them, have
-    // theirs generated again over the tiles as they are now (tile_links.h), published with the navmesh.
-    TileLinks regenerated;
-    regenerated.owners =
-        tiles_within_reach(joined->tiles().grid, joined->tiles().tiles, arrived, tile_link_reach(*last.tile_settings));
-    LinkGenerationReport report;
-    regenerated.links = generate_tile_links(tiles, regenerated.owners, *level_, *tasks_, *last.tile_settings, report,
-                                            [](float, const char*) { return true; });
-    navmeshes_.replace_tiles(navmesh, std::move(tiles), std::move(joined), &regenerated);
+    if (!searched) return;
+    try {
+        navmeshes_.path_graph(navmesh);
+    } catch (const std::bad_alloc&) {
+        // The tiles are published; the next path request builds the graph, and says what failed.
+    }
 }
 
 void World::add_tile(Handle navmesh, const NavMeshInput& tile, Handle carrier) {

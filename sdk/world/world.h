@@ -226,7 +226,8 @@ private:
     // place, with the links of the tiles within reach of those that `arrived` generated again if the
     // navmesh's links were generated tile by tile.
     // `given`: the links of tiles given with them (a baked tile's; a removed tile's: none), which
-    // replace those tiles' generated links instead of a generation.
+    // replace those tiles' generated links instead of a generation. When paths were asked for on the
+    // navmesh, the new navmesh's path graph is built before returning.
     void publish_tiles(Handle navmesh, TileInputs tiles, const std::vector<TileCoord>& arrived,
                        const TileLinks* given = nullptr);
     // add_tile after its caller's own checks, with the tile's links if given.

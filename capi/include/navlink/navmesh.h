@@ -364,7 +364,10 @@ NL_API nl_status nl_navmesh_build(nl_world* world, const nl_navmesh_build_def* d
    they started on; an agent standing on a removed tile waits (NL_AGENT_EVENT_WAITING, reason
    NL_AGENT_REASON_TILE_UNLOADED) until a tile holds it again, and every agent whose path touches a
    changed tile plans again (REPLANNED, reason WORLD_CHANGED; the others keep their paths); a link with an end on a removed tile is out of
-   every path until the tile is back. Tiles join the same whatever the order they come in.
+   every path until the tile is back. Tiles join the same whatever the order they come in. A change
+   joins every loaded tile again (its cost grows with the navmesh, not the tile: docs/tiles.md); on a
+   navmesh paths were asked for, it also builds the new navmesh's path graph before returning, so the
+   next nl_path_request does not.
    Links across tiles: a tile owns the generated links that start on its polygons, wherever they end
    (any tile within link reach, not only a neighbour). Once links were generated on a tiled navmesh
    (nl_navmesh_generate_links), a tile added or built has its links, and those of the tiles within link

@@ -95,6 +95,23 @@ TEST_CASE("a removed tile cuts the paths through it; a graph taken before answer
     CHECK(result.outcome == nl::PathOutcome::Complete);
 }
 
+TEST_CASE("a tile change builds the new navmesh's path graph when paths were asked for, and none otherwise") {
+    Corridor searched, never;
+    searched.plan(Vec3(3, 0, 6), Vec3(57, 0, 6));
+    REQUIRE(searched.world->navmeshes().has_path_graph(searched.navmesh));
+    REQUIRE(!never.world->navmeshes().has_path_graph(never.navmesh));
+    for (Corridor* c : {&searched, &never}) c->world->remove_tile(c->navmesh, c->tile_at(30, 6));
+    // Ready for the next request, on the navmesh the change published (the graph before it went with it).
+    CHECK(searched.world->navmeshes().has_path_graph(searched.navmesh));
+    const auto graph = searched.world->navmeshes().path_graph(searched.navmesh);
+    CHECK(graph->navmesh_ptr() == searched.mesh());
+    CHECK(!never.world->navmeshes().has_path_graph(never.navmesh));
+    for (Corridor* c : {&searched, &never}) c->world->remove_tile(c->navmesh, c->tile_at(40, 6));
+    const auto again = searched.world->navmeshes().path_graph(searched.navmesh);
+    CHECK(again->navmesh_ptr() == searched.mesh());
+    CHECK(!never.world->navmeshes().has_path_graph(never.navmesh));
+}
+
 TEST_CASE("a link with an end on a removed tile is out of every path until the tile is back") {
     Corridor c;
     // A link from one end of the floor to the other, cheaper than walking.
