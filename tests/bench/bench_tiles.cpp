@@ -60,8 +60,8 @@
 //      failed or a refused request are not), and the links and polygons before and after (the same);
 //      as ratios to 4's Detour removeTile + addTile and Recast rebuild of the same tiles. Also the queue's
 //      pace on a navmesh that does not change (300 ms, before the first tile) against during the changes,
-//      and, with the queue idle, how long the first nl_path_request after a change takes (it builds the
-//      new navmesh's path graph on the submitting thread) and the next, and how long the busy batch,
+//      and, with the queue idle, how long the first nl_path_request after a change takes (the change
+//      built the new navmesh's path graph: paths were asked for on it) and the next, and how long the busy batch,
 //      submitted on the navmesh just changed, waits for its first request done.
 //      --no-links leaves 5 and 6 out.
 // --smoke: a world of 0.1 km, 1 repetition, 200 pairs, 2 swaps: what ctest runs.
@@ -911,8 +911,8 @@ bool stream_tiles(const std::string& name, const Options& options, nl_world* wor
                 timed(kRemoveAgain, [&] { return nl_navmesh_remove_tile(world, navmesh, at); }) &&
                 timed(kBuild, [&] { return nl_navmesh_build_tiles(world, navmesh, &build, box_min, box_max); });
             if (!busy && ok) {
-                // The tile is back (built again): a request now builds the path graph of the new navmesh
-                // on the thread that submits it; the next one finds it.
+                // The tile is back (built again), and the change built the new navmesh's path graph
+                // (paths were asked for on it): the first request finds it, as the next does.
                 nl_path_request_def def = flow.pool[0];
                 def.callback = nullptr, def.user = nullptr;
                 for (int k = 0; k < 2; ++k) {
@@ -1277,7 +1277,7 @@ void print_tables(const std::vector<Row>& rows, const Options& options) {
                 ? " (!)"
                 : "");
         std::printf(
-            "    a request on the navmesh just changed (idle queue): nl_path_request %.3f ms (it builds the path "
+            "    a request on the navmesh just changed (idle queue): nl_path_request %.3f ms (the change built the "
             "graph),\n    %.3f ms more until done; the next request: %.3f ms, %.3f ms more; the busy batch, submitted "
             "on the\n    navmesh just changed: its first request done after %.3f ms (median; at most %.3f)\n",
             figure(f, "first_submit_ms"), figure(f, "first_wait_ms"), figure(f, "next_submit_ms"),
