@@ -282,11 +282,7 @@ void with_build_triangles_in_columns(void* context, const Columns& columns,
         fail(ErrorCode::InvalidArgument,
              "get_build_triangles_in_columns was called outside a navmesh build of this plugin on this thread");
     auto& read = running_build->columns_read;
-    const auto same = [&](const Columns& c) {
-        return c.min_x == columns.min_x && c.min_z == columns.min_z && c.max_x == columns.max_x &&
-               c.max_z == columns.max_z;
-    };
-    if (!read || !same(read->columns)) {
+    if (!read || !(read->columns == columns)) {
         Aabb bounds;
         BuildTriangles triangles = world_of_plugin(context).level().triangles_to_build_in_columns(
             running_build->request.carrier, columns, bounds);

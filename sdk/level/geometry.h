@@ -75,6 +75,9 @@ struct Columns {
         return double(std::min({a.x(), b.x(), c.x()})) <= max_x && double(std::max({a.x(), b.x(), c.x()})) >= min_x &&
                double(std::min({a.z(), b.z(), c.z()})) <= max_z && double(std::max({a.z(), b.z(), c.z()})) >= min_z;
     }
+    friend bool operator==(const Columns& p, const Columns& q) {
+        return p.min_x == q.min_x && p.min_z == q.min_z && p.max_x == q.max_x && p.max_z == q.max_z;
+    }
 };
 
 // The box, in the space `t` maps to, that holds `box` mapped by `t`.

@@ -373,7 +373,7 @@ BuildTriangles Level::triangles_to_build(Handle carrier) const {
         return out;
     }
     meshes_.for_each([&](Handle handle, const Mesh& m) {
-        if (!(m.flags & (kMeshMovable | kMeshNotInNavMesh)))
+        if (read_by_static_builds(m.flags))
             append_for_build(handle, m.object, m.transform, build_area(m.flags, m.area), out);
     });
     return out;

@@ -39,6 +39,9 @@ enum MeshFlags : uint32_t {
 // The area a navmesh builder gives a mesh's walkable triangles: 0..kMaxMeshArea (kObstacleArea
 // marks an obstacle's triangles in a builder's input).
 constexpr uint32_t kMaxMeshArea = kObstacleArea - 1u;
+// Whether a static build reads a mesh of these flags (Level::triangles_to_build): not a movable one
+// (a navmesh over it would stay behind when it moves), not one left out of navmesh builds.
+inline bool read_by_static_builds(uint32_t flags) { return !(flags & (kMeshMovable | kMeshNotInNavMesh)); }
 // What a builder's input says of a mesh's triangles: its area, or kObstacleArea for an obstacle's.
 inline uint8_t build_area(uint32_t flags, uint8_t area) { return (flags & kMeshObstacle) ? kObstacleArea : area; }
 

@@ -74,7 +74,7 @@ BuildTriangles Level::triangles_to_build_in_columns(Handle carrier, const Column
     const auto lock = lock_committed();
     std::vector<uint8_t> built(static_geometry_owner_.size(), 0);
     meshes_.for_each([&](Handle, const Mesh& m) {
-        if (m.flags & (kMeshMovable | kMeshNotInNavMesh)) return;
+        if (!read_by_static_builds(m.flags)) return;
         out_bounds.grow(m.world_bounds.min);
         out_bounds.grow(m.world_bounds.max);
         built[m.geometry_id] = 1;
@@ -104,7 +104,7 @@ BuildTriangles Level::triangles_to_build_in_columns(Handle carrier, const Column
     std::sort(q.found.begin(), q.found.end());
     q.found.erase(std::unique(q.found.begin(), q.found.end()), q.found.end());
     meshes_.for_each([&](Handle h, const Mesh& m) {
-        if (m.flags & (kMeshMovable | kMeshNotInNavMesh)) return;
+        if (!read_by_static_builds(m.flags)) return;
         auto first = std::lower_bound(q.found.begin(), q.found.end(), std::make_pair(m.geometry_id, 0u));
         if (first == q.found.end() || first->first != m.geometry_id) return;
         out.mesh_starts.push_back({h, out.mesh.triangles.size()});

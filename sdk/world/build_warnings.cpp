@@ -104,31 +104,31 @@ std::vector<Handle> World::warn_turned_over(const BuildTriangles& triangles, con
 
 uint32_t World::warn_of_frame(const BuildTriangles& triangles, uint64_t hash, const AgentType& agent) {
     // Only meshes that did not say their units are measured for them, and only those that did not
-    // say their up axis for it.
-    std::vector<uint32_t> sized, floors;
+    // say their up axis for it: what the estimate reads is the level (its hash) and, per mesh, those two.
     const auto& starts = triangles.mesh_starts;
+    std::vector<MeshFrame> frames(starts.size());
+    Fnv1a64 said;
     for (size_t k = 0; k < starts.size(); ++k) {
-        const size_t end = triangles.mesh_end(k);
-        MeshFrame frame;
         try {
-            frame = level_->info(starts[k].mesh).frame;
+            frames[k] = level_->info(starts[k].mesh).frame;
         } catch (const Error& e) {
             if (e.code() != ErrorCode::InvalidHandle) throw;  // removed since: measured as not said
         }
-        for (size_t t = starts[k].first; t < end; ++t) {
-            if (frame.metres_per_unit == 0.0f) sized.push_back(uint32_t(t));
-            if (frame.up == UpAxis::NotSaid && triangles.areas[t] != kObstacleArea) floors.push_back(uint32_t(t));
-        }
+        said.word(uint32_t(starts[k].first));
+        said.word(uint32_t(frames[k].metres_per_unit == 0.0f) | uint32_t(frames[k].up == UpAxis::NotSaid) << 1);
     }
-    Fnv1a64 measured;  // which triangles are measured for what: the meshes' frames say
-    for (const auto* list : {&sized, &floors}) {
-        measured.word(uint32_t(list->size()));
-        for (uint32_t t : *list) measured.word(t);
-    }
-    const FrameEstimate e =
-        remembered(estimates_mutex_, frame_estimates_, kMaxEstimates,
-                   std::make_tuple(hash, measured.value(), agent.max_slope, agent.height),
-                   [&] { return estimate_frame(triangles.mesh, sized, floors, agent.max_slope, agent.height); });
+    const auto measure = [&] {
+        std::vector<uint32_t> sized, floors;
+        for (size_t k = 0; k < starts.size(); ++k)
+            for (size_t t = starts[k].first; t < triangles.mesh_end(k); ++t) {
+                if (frames[k].metres_per_unit == 0.0f) sized.push_back(uint32_t(t));
+                if (frames[k].up == UpAxis::NotSaid && triangles.areas[t] != kObstacleArea)
+                    floors.push_back(uint32_t(t));
+            }
+        return estimate_frame(triangles.mesh, sized, floors, agent.max_slope, agent.height);
+    };
+    const FrameEstimate e = remembered(estimates_mutex_, frame_estimates_, kMaxEstimates,
+                                       std::make_tuple(hash, said.value(), agent.max_slope, agent.height), measure);
     logger_.log(LogLevel::Debug,
                 concat("the level's frame, measured for the agent: floor with y up ", std::lround(e.floor_y_up),
                        " m2, with z up ", std::lround(e.floor_z_up), " m2; walls ", figure(e.wall_height), " m tall; ",

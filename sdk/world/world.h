@@ -252,7 +252,7 @@ private:
     std::set<std::pair<uint64_t, float>> wide_bodies_warned_;  // (Handle::packed(), radius)
     // The estimates behind a build's warnings, by what each was made from: per mesh, its winding
     // (the mesh, the hash of its triangles as built, the body's max slope and height); per level, its
-    // frame (the level's hash, which of its triangles were measured, the body). A build does not
+    // frame (the level's hash, which of its meshes said their units and up axis, the body). A build does not
     // measure what did not change again (the house level of 4,500 triangles: 7 ms a build). Owned
     // by warn_turned_over and warn_of_frame, under this mutex; each emptied past kMaxEstimates.
     std::mutex estimates_mutex_;

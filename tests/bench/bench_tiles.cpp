@@ -439,6 +439,19 @@ struct Row {
     Figures streaming;
 };
 
+// The tiles table 4 takes out and puts back: --swaps of them, drawn with seed 777.
+std::vector<nl_tile_coord> tiles_to_swap(nl_world* world, nl_navmesh_id navmesh, int swaps) {
+    uint32_t loaded = 0;
+    nl_navmesh_get_tiles(world, navmesh, nullptr, 0, &loaded);
+    std::vector<nl_tile_coord> coords(loaded);
+    nl_navmesh_get_tiles(world, navmesh, coords.data(), loaded, &loaded);
+    std::mt19937 rng(777);
+    std::shuffle(coords.begin(), coords.end(), rng);
+    coords.resize(std::min<size_t>(coords.size(), size_t(std::max(0, swaps))));
+    if (loaded < 2) coords.clear();  // a navmesh's last tile cannot be removed
+    return coords;
+}
+
 bool measure(const LevelInput& input, const Options& options, Row& row) {
     row.name = input.name;
     row.triangles = input.triangle_count();
@@ -639,14 +652,7 @@ bool measure(const LevelInput& input, const Options& options, Row& row) {
     }
 
     // 4. Tiles in and out.
-    uint32_t loaded = 0;
-    nl_navmesh_get_tiles(one, navmesh, nullptr, 0, &loaded);
-    std::vector<nl_tile_coord> coords(loaded);
-    nl_navmesh_get_tiles(one, navmesh, coords.data(), loaded, &loaded);
-    std::mt19937 rng(777);
-    std::shuffle(coords.begin(), coords.end(), rng);
-    coords.resize(std::min<size_t>(coords.size(), size_t(std::max(0, options.swaps))));
-    if (loaded < 2) coords.clear();  // a navmesh's last tile cannot be removed
+    const std::vector<nl_tile_coord> coords = tiles_to_swap(one, navmesh, options.swaps);
     std::vector<double> nl_remove, nl_add, nl_swap, detour_swap, nl_rebuild, detour_rebuild;
     dtNavMesh& mesh = *tiles->navmesh.mesh;
     for (const nl_tile_coord& at : coords) {
@@ -753,19 +759,6 @@ uint32_t link_count(nl_world* world, nl_navmesh_id navmesh) {
     uint32_t count = 0;
     nl_navmesh_get_links(world, navmesh, nullptr, 0, &count);
     return count;
-}
-
-// The tiles table 4 takes out and puts back: --swaps of them, drawn with seed 777.
-std::vector<nl_tile_coord> tiles_to_swap(nl_world* world, nl_navmesh_id navmesh, int swaps) {
-    uint32_t loaded = 0;
-    nl_navmesh_get_tiles(world, navmesh, nullptr, 0, &loaded);
-    std::vector<nl_tile_coord> coords(loaded);
-    nl_navmesh_get_tiles(world, navmesh, coords.data(), loaded, &loaded);
-    std::mt19937 rng(777);
-    std::shuffle(coords.begin(), coords.end(), rng);
-    coords.resize(std::min<size_t>(coords.size(), size_t(std::max(0, swaps))));
-    if (loaded < 2) coords.clear();  // a navmesh's last tile cannot be removed
-    return coords;
 }
 
 // Path requests kept in flight: the main thread submits a batch, and each request's callback (on a
